@@ -1,0 +1,44 @@
+!> Messages and progress output of long runs, on standard error so that
+!> standard output stays for summaries.
+module base_log
+  use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+  use base_kinds, only: wp
+  implicit none (type, external)
+  private
+  public :: log_info, log_warning, log_error, log_progress, set_verbosity, verbosity
+
+  integer :: verbosity = 1   !< 0 quiet, 1 normal, 2 verbose; set once from the command line
+
+contains
+
+  subroutine set_verbosity(level)
+    integer, intent(in) :: level
+    verbosity = level
+  end subroutine set_verbosity
+
+  subroutine log_info(message)
+    character(len=*), intent(in) :: message
+    if (verbosity >= 1) write (error_unit, '(a)') message
+  end subroutine log_info
+
+  subroutine log_warning(message)
+    character(len=*), intent(in) :: message
+    write (error_unit, '(a)') 'warning: '//message
+  end subroutine log_warning
+
+  subroutine log_error(message)
+    character(len=*), intent(in) :: message
+    write (error_unit, '(a)') 'error: '//message
+  end subroutine log_error
+
+  !> One progress line, at most about every tenth of the run.
+  subroutine log_progress(label, done, total)
+    character(len=*), intent(in) :: label
+    real(wp), intent(in) :: done, total
+    if (verbosity >= 1 .and. total > 0) then
+      write (error_unit, '(a, ": ", f5.1, " %")') label, 100*min(1.0_wp, done/total)
+      flush (error_unit)
+    end if
+    flush (output_unit)
+  end subroutine log_progress
+end module base_log
