@@ -1,0 +1,4 @@
+program slidesim
+  implicit none (type, external)
+  print '(a)', 'slidesim'
+end program slidesim
