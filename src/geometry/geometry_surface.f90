@@ -1,0 +1,94 @@
+!> The surface seam: a parametrised surface r(u, v) with partial derivatives.
+!>
+!> Every surface (elementary, spline, placed) extends surface_t and fills one
+!> evaluation record, surface_point_t, with r and its partials up to the order
+!> asked for (0..3). Evaluation takes the surface intent(in) and keeps no cache.
+module geometry_surface
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  implicit none (type, external)
+  private
+  public :: surface_t, surface_point_t
+
+  !> r(u,v) and its partial derivatives, filled up to the order asked for.
+  !> Entries above `order` stay zero.
+  type :: surface_point_t
+    integer  :: order = 0
+    real(wp) :: r(3) = 0
+    real(wp) :: ru(3) = 0, rv(3) = 0
+    real(wp) :: ruu(3) = 0, ruv(3) = 0, rvv(3) = 0
+    real(wp) :: ruuu(3) = 0, ruuv(3) = 0, ruvv(3) = 0, rvvv(3) = 0
+  end type surface_point_t
+
+  !> A parametrised surface. Only `evaluate` is deferred; the domain and
+  !> periodicity queries default to an unbounded, non-periodic surface.
+  type, abstract :: surface_t
+  contains
+    procedure(evaluate_i), deferred :: evaluate
+    procedure :: in_domain => surface_in_domain
+    procedure :: domain => surface_domain
+    procedure :: periodic_u => surface_periodic_u
+    procedure :: periodic_v => surface_periodic_v
+    procedure :: describe => surface_describe
+  end type surface_t
+
+  abstract interface
+    !> Fills p with r and its partials up to `order` (0..3) at (u, v).
+    pure subroutine evaluate_i(self, u, v, order, p, status)
+      import :: surface_t, surface_point_t, status_t, wp
+      class(surface_t), intent(in) :: self
+      real(wp), intent(in) :: u, v
+      integer, intent(in) :: order          ! 0..3
+      type(surface_point_t), intent(out) :: p
+      type(status_t), intent(out) :: status
+    end subroutine evaluate_i
+  end interface
+
+contains
+
+  !> Whether (u, v) lies in the parameter domain (default: inside the box of
+  !> `domain`, any value in a periodic direction).
+  pure logical function surface_in_domain(self, u, v) result(inside)
+    class(surface_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    real(wp) :: u_min, u_max, v_min, v_max
+    call self%domain(u_min, u_max, v_min, v_max)
+    inside = (self%periodic_u() .or. (u >= u_min .and. u <= u_max)) .and. &
+             (self%periodic_v() .or. (v >= v_min .and. v <= v_max))
+  end function surface_in_domain
+
+  !> The parameter box (default: unbounded, +-huge).
+  pure subroutine surface_domain(self, u_min, u_max, v_min, v_max)
+    class(surface_t), intent(in) :: self
+    real(wp), intent(out) :: u_min, u_max, v_min, v_max
+    associate (unused => self)   ! the default ignores the surface
+    end associate
+    u_min = -huge(1.0_wp); u_max = huge(1.0_wp)
+    v_min = -huge(1.0_wp); v_max = huge(1.0_wp)
+  end subroutine surface_domain
+
+  !> Whether r is periodic in u over [u_min, u_max] (default: no).
+  pure logical function surface_periodic_u(self) result(periodic)
+    class(surface_t), intent(in) :: self
+    associate (unused => self)   ! the default ignores the surface
+    end associate
+    periodic = .false.
+  end function surface_periodic_u
+
+  !> Whether r is periodic in v over [v_min, v_max] (default: no).
+  pure logical function surface_periodic_v(self) result(periodic)
+    class(surface_t), intent(in) :: self
+    associate (unused => self)   ! the default ignores the surface
+    end associate
+    periodic = .false.
+  end function surface_periodic_v
+
+  !> A short human-readable name of the surface.
+  pure function surface_describe(self) result(text)
+    class(surface_t), intent(in) :: self
+    character(len=:), allocatable :: text
+    associate (unused => self)   ! the default ignores the surface
+    end associate
+    text = 'surface'
+  end function surface_describe
+end module geometry_surface
