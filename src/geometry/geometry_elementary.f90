@@ -1,0 +1,448 @@
+!> The elementary surfaces of thesis 3.5.2.1 and the paraboloid with a
+!> singular apex of thesis 3.5.1, with exact partial derivatives to third order.
+!>
+!> Each type has a public constructor of the type's own name that validates its
+!> arguments and returns a status naming the offending value:
+!>
+!>     s = ellipsoid_t(a, b, c, status)
+!>
+!> Evaluation is valid for every real (u, v); the parameter box reported by
+!> `domain` is what a simulation should stay in (or wrap, where periodic).
+module geometry_elementary
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT
+  use base_constants, only: half_pi, two_pi
+  use base_vector, only: cross
+  use geometry_surface, only: surface_t, surface_point_t
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  implicit none (type, external)
+  private
+  public :: plane_t, ellipsoid_t, paraboloid_t, elliptic_cylinder_t, apex_paraboloid_t
+
+  !> Plane through A, B, C: r = r_A + u r_u + v r_v with unit r_u towards B and
+  !> unit r_v towards C, thesis (3.55)-(3.56). u, v are lengths (m) along
+  !> those (in general not orthogonal) directions.
+  type, extends(surface_t) :: plane_t
+    private
+    real(wp) :: origin(3) = 0        ! r_A, m
+    real(wp) :: e_u(3) = [1, 0, 0]   ! unit vector A -> B
+    real(wp) :: e_v(3) = [0, 1, 0]   ! unit vector A -> C
+  contains
+    procedure :: evaluate => plane_evaluate
+    procedure :: describe => plane_describe
+  end type plane_t
+
+  !> Ellipsoid r = [a cos v cos u, b cos v sin u, c sin v], thesis (3.57);
+  !> u in [0, 2 pi] periodic, v in [-pi/2, pi/2] (r_u = 0 at the poles).
+  type, extends(surface_t) :: ellipsoid_t
+    private
+    real(wp) :: a = 1, b = 1, c = 1  ! semi-axes, m
+  contains
+    procedure :: evaluate => ellipsoid_evaluate
+    procedure :: domain => ellipsoid_domain
+    procedure :: periodic_u => ellipsoid_periodic_u
+    procedure :: describe => ellipsoid_describe
+  end type ellipsoid_t
+
+  !> Paraboloid r = [u, v, c u^2/a^2 + v^2/b^2], thesis (3.58), implemented
+  !> literally: c multiplies only the u^2 term, so c = +1 gives the elliptic
+  !> and c = -1 the hyperbolic paraboloid (a saddle). u, v in R (m).
+  type, extends(surface_t) :: paraboloid_t
+    private
+    real(wp) :: a = 1, b = 1         ! m; curvatures 2/a^2 and 2/b^2 at the apex (1/m)
+    real(wp) :: c = 1                ! +1 elliptic, -1 hyperbolic
+  contains
+    procedure :: evaluate => paraboloid_evaluate
+    procedure :: describe => paraboloid_describe
+  end type paraboloid_t
+
+  !> Elliptic cylinder r = [a cos v, b sin v, u], thesis (3.59);
+  !> u in R (m), v in [0, 2 pi] periodic.
+  type, extends(surface_t) :: elliptic_cylinder_t
+    private
+    real(wp) :: a = 1, b = 1         ! semi-axes, m
+  contains
+    procedure :: evaluate => cylinder_evaluate
+    procedure :: domain => cylinder_domain
+    procedure :: periodic_v => cylinder_periodic_v
+    procedure :: describe => cylinder_describe
+  end type elliptic_cylinder_t
+
+  !> Paraboloid with a singular apex r = [a cos(u) v, b sin(u) v, v^2]
+  !> (thesis 3.5.1); u in [0, 2 pi] periodic, v in R; r_u = 0 at v = 0.
+  !> The same shape as paraboloid_t(a, b, +1): x^2/a^2 + y^2/b^2 = z.
+  type, extends(surface_t) :: apex_paraboloid_t
+    private
+    real(wp) :: a = 1, b = 1         ! m (the shape z = x^2/a^2 + y^2/b^2; v in m)
+  contains
+    procedure :: evaluate => apex_evaluate
+    procedure :: domain => apex_domain
+    procedure :: periodic_u => apex_periodic_u
+    procedure :: describe => apex_describe
+  end type apex_paraboloid_t
+
+  interface plane_t
+    module procedure new_plane
+  end interface plane_t
+  interface ellipsoid_t
+    module procedure new_ellipsoid
+  end interface ellipsoid_t
+  interface paraboloid_t
+    module procedure new_paraboloid
+  end interface paraboloid_t
+  interface elliptic_cylinder_t
+    module procedure new_cylinder
+  end interface elliptic_cylinder_t
+  interface apex_paraboloid_t
+    module procedure new_apex_paraboloid
+  end interface apex_paraboloid_t
+
+  !> Relative distance below which two of the plane's points count as coincident.
+  real(wp), parameter :: coincident_tol = 1e-12_wp
+  !> sin(angle) between A->B and A->C below which the points count as collinear.
+  real(wp), parameter :: collinear_tol = 1e-10_wp
+
+contains
+
+  ! ---------------------------------------------------------------- constructors
+
+  !> Plane through the points A, B, C (m), thesis (3.55)-(3.56). Fails if a
+  !> point is not finite, two points coincide or the three are collinear.
+  function new_plane(point_a, point_b, point_c, status) result(s)
+    real(wp), intent(in) :: point_a(3), point_b(3), point_c(3)
+    type(status_t), intent(out) :: status
+    type(plane_t) :: s
+    real(wp) :: ab(3), ac(3), scale
+    if (.not. all(ieee_is_finite(point_a))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'plane: point A = ' // vec_text(point_a) // &
+                      ' is not finite')
+      return
+    end if
+    if (.not. all(ieee_is_finite(point_b))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'plane: point B = ' // vec_text(point_b) // &
+                      ' is not finite')
+      return
+    end if
+    if (.not. all(ieee_is_finite(point_c))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'plane: point C = ' // vec_text(point_c) // &
+                      ' is not finite')
+      return
+    end if
+    ab = point_b - point_a
+    ac = point_c - point_a
+    scale = max(norm2(point_a), norm2(point_b), norm2(point_c))
+    if (norm2(ab) <= coincident_tol*scale) then
+      call set_status(status, STATUS_INVALID_INPUT, 'plane: points A = ' // vec_text(point_a) // &
+                      ' and B = ' // vec_text(point_b) // ' coincide; need three distinct points')
+      return
+    end if
+    if (norm2(ac) <= coincident_tol*scale) then
+      call set_status(status, STATUS_INVALID_INPUT, 'plane: points A = ' // vec_text(point_a) // &
+                      ' and C = ' // vec_text(point_c) // ' coincide; need three distinct points')
+      return
+    end if
+    s%origin = point_a
+    s%e_u = ab/norm2(ab)
+    s%e_v = ac/norm2(ac)
+    if (norm2(cross(s%e_u, s%e_v)) <= collinear_tol) then
+      call set_status(status, STATUS_INVALID_INPUT, 'plane: points A = ' // vec_text(point_a) // &
+                      ', B = ' // vec_text(point_b) // ', C = ' // vec_text(point_c) // &
+                      ' are collinear; they must span a plane')
+      return
+    end if
+    status%code = STATUS_OK
+  end function new_plane
+
+  !> Ellipsoid with semi-axes a, b, c (m), thesis (3.57).
+  function new_ellipsoid(a, b, c, status) result(s)
+    real(wp), intent(in) :: a, b, c
+    type(status_t), intent(out) :: status
+    type(ellipsoid_t) :: s
+    call check_positive('ellipsoid', 'a', a, status); if (.not. status%ok()) return
+    call check_positive('ellipsoid', 'b', b, status); if (.not. status%ok()) return
+    call check_positive('ellipsoid', 'c', c, status); if (.not. status%ok()) return
+    s%a = a; s%b = b; s%c = c
+  end function new_ellipsoid
+
+  !> Paraboloid (3.58) with a, b > 0 (m) and c = +1 (elliptic) or -1 (hyperbolic).
+  function new_paraboloid(a, b, c, status) result(s)
+    real(wp), intent(in) :: a, b, c
+    type(status_t), intent(out) :: status
+    type(paraboloid_t) :: s
+    call check_positive('paraboloid', 'a', a, status); if (.not. status%ok()) return
+    call check_positive('paraboloid', 'b', b, status); if (.not. status%ok()) return
+    if (c /= 1 .and. c /= -1) then
+      call set_status(status, STATUS_INVALID_INPUT, 'paraboloid: c = ' // num_text(c) // &
+                      ' is not allowed; use +1 (elliptic) or -1 (hyperbolic)')
+      return
+    end if
+    s%a = a; s%b = b; s%c = c
+  end function new_paraboloid
+
+  !> Elliptic cylinder with semi-axes a, b (m), thesis (3.59).
+  function new_cylinder(a, b, status) result(s)
+    real(wp), intent(in) :: a, b
+    type(status_t), intent(out) :: status
+    type(elliptic_cylinder_t) :: s
+    call check_positive('elliptic cylinder', 'a', a, status); if (.not. status%ok()) return
+    call check_positive('elliptic cylinder', 'b', b, status); if (.not. status%ok()) return
+    s%a = a; s%b = b
+  end function new_cylinder
+
+  !> Paraboloid with singular apex, a, b > 0 (m).
+  function new_apex_paraboloid(a, b, status) result(s)
+    real(wp), intent(in) :: a, b
+    type(status_t), intent(out) :: status
+    type(apex_paraboloid_t) :: s
+    call check_positive('apex paraboloid', 'a', a, status); if (.not. status%ok()) return
+    call check_positive('apex paraboloid', 'b', b, status); if (.not. status%ok()) return
+    s%a = a; s%b = b
+  end function new_apex_paraboloid
+
+  pure subroutine check_positive(surface, name, x, status)
+    character(len=*), intent(in) :: surface, name
+    real(wp), intent(in) :: x
+    type(status_t), intent(out) :: status
+    if (.not. ieee_is_finite(x)) then
+      call set_status(status, STATUS_INVALID_INPUT, surface // ': ' // name // ' = ' // &
+                      num_text(x) // ' is not finite; it must be a finite length > 0 (m)')
+    else if (x <= 0) then
+      call set_status(status, STATUS_INVALID_INPUT, surface // ': ' // name // ' = ' // &
+                      num_text(x) // ' is not allowed; it must be > 0 (m)')
+    end if
+  end subroutine check_positive
+
+  ! ------------------------------------------------------------------ evaluation
+
+  !> Common check of the requested order; sets p%order.
+  pure subroutine start_evaluation(order, p, status)
+    integer, intent(in) :: order
+    type(surface_point_t), intent(inout) :: p
+    type(status_t), intent(inout) :: status
+    character(len=12) :: buffer
+    if (order < 0 .or. order > 3) then
+      write (buffer, '(i0)') order
+      call set_status(status, STATUS_INVALID_INPUT, 'surface evaluation: order = ' // &
+                      trim(buffer) // ' is not allowed; use 0..3')
+      return
+    end if
+    p%order = order
+  end subroutine start_evaluation
+
+  !> thesis (3.55)-(3.56); all second and third partials vanish.
+  pure subroutine plane_evaluate(self, u, v, order, p, status)
+    class(plane_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    call start_evaluation(order, p, status); if (.not. status%ok()) return
+    p%r = self%origin + u*self%e_u + v*self%e_v
+    if (order >= 1) then
+      p%ru = self%e_u
+      p%rv = self%e_v
+    end if
+  end subroutine plane_evaluate
+
+  !> thesis (3.57) and its partials.
+  pure subroutine ellipsoid_evaluate(self, u, v, order, p, status)
+    class(ellipsoid_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    real(wp) :: cu, su, cv, sv
+    call start_evaluation(order, p, status); if (.not. status%ok()) return
+    associate (a => self%a, b => self%b, c => self%c)
+      cu = cos(u); su = sin(u); cv = cos(v); sv = sin(v)
+      p%r = [a*cv*cu, b*cv*su, c*sv]
+      if (order >= 1) then
+        p%ru = [-a*cv*su, b*cv*cu, 0.0_wp]
+        p%rv = [-a*sv*cu, -b*sv*su, c*cv]
+      end if
+      if (order >= 2) then
+        p%ruu = [-a*cv*cu, -b*cv*su, 0.0_wp]
+        p%ruv = [a*sv*su, -b*sv*cu, 0.0_wp]
+        p%rvv = [-a*cv*cu, -b*cv*su, -c*sv]
+      end if
+      if (order >= 3) then
+        p%ruuu = [a*cv*su, -b*cv*cu, 0.0_wp]
+        p%ruuv = [a*sv*cu, b*sv*su, 0.0_wp]
+        p%ruvv = [a*cv*su, -b*cv*cu, 0.0_wp]
+        p%rvvv = [a*sv*cu, b*sv*su, -c*cv]
+      end if
+    end associate
+  end subroutine ellipsoid_evaluate
+
+  !> thesis (3.58) and its partials; third partials vanish.
+  pure subroutine paraboloid_evaluate(self, u, v, order, p, status)
+    class(paraboloid_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    real(wp) :: ka, kb
+    call start_evaluation(order, p, status); if (.not. status%ok()) return
+    ka = self%c/self%a**2
+    kb = 1/self%b**2
+    p%r = [u, v, ka*u**2 + kb*v**2]
+    if (order >= 1) then
+      p%ru = [1.0_wp, 0.0_wp, 2*ka*u]
+      p%rv = [0.0_wp, 1.0_wp, 2*kb*v]
+    end if
+    if (order >= 2) then
+      p%ruu = [0.0_wp, 0.0_wp, 2*ka]
+      p%rvv = [0.0_wp, 0.0_wp, 2*kb]
+    end if
+  end subroutine paraboloid_evaluate
+
+  !> thesis (3.59) and its partials.
+  pure subroutine cylinder_evaluate(self, u, v, order, p, status)
+    class(elliptic_cylinder_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    real(wp) :: cv, sv
+    call start_evaluation(order, p, status); if (.not. status%ok()) return
+    cv = cos(v); sv = sin(v)
+    p%r = [self%a*cv, self%b*sv, u]
+    if (order >= 1) then
+      p%ru = [0.0_wp, 0.0_wp, 1.0_wp]
+      p%rv = [-self%a*sv, self%b*cv, 0.0_wp]
+    end if
+    if (order >= 2) p%rvv = [-self%a*cv, -self%b*sv, 0.0_wp]
+    if (order >= 3) p%rvvv = [self%a*sv, -self%b*cv, 0.0_wp]
+  end subroutine cylinder_evaluate
+
+  !> r = [a cos(u) v, b sin(u) v, v^2] (thesis 3.5.1) and its partials.
+  pure subroutine apex_evaluate(self, u, v, order, p, status)
+    class(apex_paraboloid_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    real(wp) :: cu, su
+    call start_evaluation(order, p, status); if (.not. status%ok()) return
+    associate (a => self%a, b => self%b)
+      cu = cos(u); su = sin(u)
+      p%r = [a*cu*v, b*su*v, v**2]
+      if (order >= 1) then
+        p%ru = [-a*su*v, b*cu*v, 0.0_wp]
+        p%rv = [a*cu, b*su, 2*v]
+      end if
+      if (order >= 2) then
+        p%ruu = [-a*cu*v, -b*su*v, 0.0_wp]
+        p%ruv = [-a*su, b*cu, 0.0_wp]
+        p%rvv = [0.0_wp, 0.0_wp, 2.0_wp]
+      end if
+      if (order >= 3) then
+        p%ruuu = [a*su*v, -b*cu*v, 0.0_wp]
+        p%ruuv = [-a*cu, -b*su, 0.0_wp]
+      end if
+    end associate
+  end subroutine apex_evaluate
+
+  ! ------------------------------------------------------- domains and names
+
+  pure logical function ellipsoid_periodic_u(self) result(periodic)
+    class(ellipsoid_t), intent(in) :: self
+    associate (unused => self)   ! periodic for every instance of the type
+    end associate
+    periodic = .true.
+  end function ellipsoid_periodic_u
+
+  pure logical function cylinder_periodic_v(self) result(periodic)
+    class(elliptic_cylinder_t), intent(in) :: self
+    associate (unused => self)   ! periodic for every instance of the type
+    end associate
+    periodic = .true.
+  end function cylinder_periodic_v
+
+  pure logical function apex_periodic_u(self) result(periodic)
+    class(apex_paraboloid_t), intent(in) :: self
+    associate (unused => self)   ! periodic for every instance of the type
+    end associate
+    periodic = .true.
+  end function apex_periodic_u
+
+  pure subroutine ellipsoid_domain(self, u_min, u_max, v_min, v_max)
+    class(ellipsoid_t), intent(in) :: self
+    real(wp), intent(out) :: u_min, u_max, v_min, v_max
+    associate (unused => self)   ! the same box for every ellipsoid
+    end associate
+    u_min = 0; u_max = two_pi
+    v_min = -half_pi; v_max = half_pi
+  end subroutine ellipsoid_domain
+
+  pure subroutine cylinder_domain(self, u_min, u_max, v_min, v_max)
+    class(elliptic_cylinder_t), intent(in) :: self
+    real(wp), intent(out) :: u_min, u_max, v_min, v_max
+    associate (unused => self)   ! the same box for every cylinder
+    end associate
+    u_min = -huge(1.0_wp); u_max = huge(1.0_wp)
+    v_min = 0; v_max = two_pi
+  end subroutine cylinder_domain
+
+  pure subroutine apex_domain(self, u_min, u_max, v_min, v_max)
+    class(apex_paraboloid_t), intent(in) :: self
+    real(wp), intent(out) :: u_min, u_max, v_min, v_max
+    associate (unused => self)   ! the same box for every apex paraboloid
+    end associate
+    u_min = 0; u_max = two_pi
+    v_min = -huge(1.0_wp); v_max = huge(1.0_wp)
+  end subroutine apex_domain
+
+  pure function plane_describe(self) result(text)
+    class(plane_t), intent(in) :: self
+    character(len=:), allocatable :: text
+    text = 'plane through ' // vec_text(self%origin) // ' spanned by ' // vec_text(self%e_u) // &
+           ' and ' // vec_text(self%e_v)
+  end function plane_describe
+
+  pure function ellipsoid_describe(self) result(text)
+    class(ellipsoid_t), intent(in) :: self
+    character(len=:), allocatable :: text
+    text = 'ellipsoid a = ' // num_text(self%a) // ' m, b = ' // num_text(self%b) // &
+           ' m, c = ' // num_text(self%c) // ' m'
+  end function ellipsoid_describe
+
+  pure function paraboloid_describe(self) result(text)
+    class(paraboloid_t), intent(in) :: self
+    character(len=:), allocatable :: text
+    if (self%c > 0) then
+      text = 'elliptic paraboloid'
+    else
+      text = 'hyperbolic paraboloid'
+    end if
+    text = text // ' a = ' // num_text(self%a) // ' m, b = ' // num_text(self%b) // ' m'
+  end function paraboloid_describe
+
+  pure function cylinder_describe(self) result(text)
+    class(elliptic_cylinder_t), intent(in) :: self
+    character(len=:), allocatable :: text
+    text = 'elliptic cylinder a = ' // num_text(self%a) // ' m, b = ' // num_text(self%b) // ' m'
+  end function cylinder_describe
+
+  pure function apex_describe(self) result(text)
+    class(apex_paraboloid_t), intent(in) :: self
+    character(len=:), allocatable :: text
+    text = 'paraboloid with singular apex a = ' // num_text(self%a) // ' m, b = ' // &
+           num_text(self%b) // ' m'
+  end function apex_describe
+
+  !> A number in short readable form (g0 drops trailing zeros of reals).
+  pure function num_text(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=40) :: buffer
+    write (buffer, '(g0)') x
+    text = trim(adjustl(buffer))
+  end function num_text
+
+  pure function vec_text(x) result(text)
+    real(wp), intent(in) :: x(3)
+    character(len=:), allocatable :: text
+    text = '(' // num_text(x(1)) // ', ' // num_text(x(2)) // ', ' // num_text(x(3)) // ')'
+  end function vec_text
+end module geometry_elementary
