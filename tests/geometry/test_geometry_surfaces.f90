@@ -8,6 +8,8 @@ program test_geometry_surfaces
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_elementary, only: plane_t, ellipsoid_t, paraboloid_t, elliptic_cylinder_t, &
                                  apex_paraboloid_t
+  use geometry_placed_surface, only: placed_surface_t
+  use base_vector, only: rotation_xyz
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan
   use testing, only: check, check_close, check_close_array, finish_tests
   implicit none (type, external)
@@ -26,6 +28,7 @@ program test_geometry_surfaces
   type(paraboloid_t) :: elliptic, hyperbolic
   type(elliptic_cylinder_t) :: cylinder
   type(apex_paraboloid_t) :: apex
+  type(placed_surface_t) :: placed_ellipsoid, placed_apex
 
   plane = plane_t([1.0_wp, -2.0_wp, 0.5_wp], [3.0_wp, -1.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 2.0_wp], status)
   call check(status%ok(), 'plane constructor: ' // status%text())
@@ -46,6 +49,16 @@ program test_geometry_surfaces
   call check_partials(hyperbolic, -2.0_wp, 2.0_wp, -2.0_wp, 2.0_wp, 'hyperbolic paraboloid')
   call check_partials(cylinder, -3.0_wp, 3.0_wp, 0.0_wp, two_pi, 'elliptic cylinder')
   call check_partials(apex, 0.0_wp, two_pi, -1.5_wp, 1.5_wp, 'apex paraboloid')
+
+  placed_ellipsoid = placed_surface_t(ellipsoid, [1.0_wp, -2.0_wp, 3.0_wp], status, &
+                                      angles=[0.3_wp, -0.7_wp, 1.1_wp])
+  call check(status%ok(), 'placed ellipsoid constructor: ' // status%text())
+  placed_apex = placed_surface_t(apex, [0.5_wp, 0.0_wp, -1.0_wp], status, &
+                                 rotation=rotation_xyz([-0.2_wp, 0.4_wp, 2.5_wp]))
+  call check(status%ok(), 'placed apex paraboloid constructor: ' // status%text())
+  call check_partials(placed_ellipsoid, 0.0_wp, two_pi, -1.5_wp, 1.5_wp, 'placed ellipsoid')
+  call check_partials(placed_apex, 0.0_wp, two_pi, -1.5_wp, 1.5_wp, 'placed apex paraboloid')
+  call check_placed()
 
   call check_order_contract()
   call check_shapes()
@@ -174,6 +187,36 @@ contains
     call check(index(ellipsoid%describe(), 'ellipsoid') == 1, 'describe: ' // ellipsoid%describe())
     call check(abs(pi - 3.141592653589793_wp) < 1e-15_wp, 'pi')
   end subroutine check_domains
+
+  !> r = origin + R r_base, partials rotated, domain and periodicity forwarded,
+  !> bad placements refused.
+  subroutine check_placed()
+    type(surface_point_t) :: p, q
+    type(status_t) :: st
+    type(placed_surface_t) :: bad
+    real(wp) :: r(3, 3), u_min, u_max, v_min, v_max
+    r = rotation_xyz([0.3_wp, -0.7_wp, 1.1_wp])
+    call ellipsoid%evaluate(0.9_wp, -0.4_wp, 3, q, st)
+    call placed_ellipsoid%evaluate(0.9_wp, -0.4_wp, 3, p, st)
+    ! rtol/atol 1e-14: one 3x3 product of O(1) numbers
+    call check_close_array(p%r, [1.0_wp, -2.0_wp, 3.0_wp] + matmul(r, q%r), 1e-14_wp, 1e-14_wp, &
+                           'placed r = origin + R r')
+    call check_close_array(p%ruvv, matmul(r, q%ruvv), 1e-14_wp, 1e-14_wp, 'placed r_uvv = R r_uvv')
+    call check(p%order == 3, 'placed order')
+    call placed_ellipsoid%domain(u_min, u_max, v_min, v_max)
+    call check(u_max == two_pi .and. v_min == -half_pi, 'placed domain forwarded')
+    call check(placed_ellipsoid%periodic_u() .and. .not. placed_ellipsoid%periodic_v(), &
+               'placed periodicity forwarded')
+    call check(.not. placed_ellipsoid%in_domain(0.0_wp, 2.0_wp), 'placed in_domain forwarded')
+    call check(index(placed_apex%describe(), 'placed paraboloid with singular apex') == 1, &
+               'placed describe: ' // placed_apex%describe())
+    r = reshape([1, 0, 0, 0, 1, 0, 0, 0, -1], [3, 3])
+    bad = placed_surface_t(ellipsoid, [0.0_wp, 0.0_wp, 0.0_wp], st, rotation=r)
+    call expect_error(st, 'det R = -1', 'placed reflection refused')
+    r(3, 3) = 1.1_wp
+    bad = placed_surface_t(ellipsoid, [0.0_wp, 0.0_wp, 0.0_wp], st, rotation=r)
+    call expect_error(st, 'not a proper rotation', 'placed non-orthogonal matrix refused')
+  end subroutine check_placed
 
   !> Every constructor refuses bad values with a message naming the value.
   subroutine check_invalid_input()
