@@ -1,0 +1,86 @@
+!> Explicit interfaces of our FITPACK surface routines (external subroutines
+!> with Dierckx's original names and calling sequences; every real is real64).
+!> Public: surfit, regrid, parsur, bispev, parder, surev and the helpers they
+!> share. The curve routines and common kernels are in fitpack_interfaces.
+module fitpack_surface_interfaces
+  implicit none (type, external)
+  private
+  public :: bispev, parder, fpbisp
+  public :: regrid, fpregr, fpgrre
+
+  interface
+    subroutine bispev(tx, nx, ty, ny, c, kx, ky, x, mx, y, my, z, wrk, lwrk, iwrk, kwrk, ier)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: nx, ny, kx, ky, mx, my, lwrk, kwrk
+      real(real64), intent(in) :: tx(nx), ty(ny), c((nx - kx - 1)*(ny - ky - 1)), x(mx), y(my)
+      real(real64), intent(out) :: z(mx*my)
+      real(real64), intent(inout) :: wrk(lwrk)
+      integer, intent(inout) :: iwrk(kwrk)
+      integer, intent(out) :: ier
+    end subroutine bispev
+
+    subroutine parder(tx, nx, ty, ny, c, kx, ky, nux, nuy, x, mx, y, my, z, wrk, lwrk, iwrk, kwrk, ier)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: nx, ny, kx, ky, nux, nuy, mx, my, lwrk, kwrk
+      real(real64), intent(in) :: tx(nx), ty(ny), c((nx - kx - 1)*(ny - ky - 1)), x(mx), y(my)
+      real(real64), intent(out) :: z(mx*my)
+      real(real64), intent(inout) :: wrk(lwrk)
+      integer, intent(inout) :: iwrk(kwrk)
+      integer, intent(out) :: ier
+    end subroutine parder
+
+    pure subroutine fpbisp(tx, nx, ty, ny, c, kx, ky, x, mx, y, my, z, wx, wy, lx, ly)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: nx, ny, kx, ky, mx, my
+      real(real64), intent(in) :: tx(nx), ty(ny), c((nx - kx - 1)*(ny - ky - 1)), x(mx), y(my)
+      real(real64), intent(out) :: z(mx*my), wx(mx, kx + 1), wy(my, ky + 1)
+      integer, intent(out) :: lx(mx), ly(my)
+    end subroutine fpbisp
+
+    subroutine regrid(iopt, mx, x, my, y, z, xb, xe, yb, ye, kx, ky, s, nxest, nyest, nx, tx, ny, ty, &
+                      c, fp, wrk, lwrk, iwrk, kwrk, ier)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: iopt, mx, my, kx, ky, nxest, nyest, lwrk, kwrk
+      real(real64), intent(in) :: x(mx), y(my), z(mx*my), xb, xe, yb, ye, s
+      integer, intent(inout) :: nx, ny
+      real(real64), intent(inout) :: tx(nxest), ty(nyest)
+      real(real64), intent(inout) :: c((nxest - kx - 1)*(nyest - ky - 1))
+      real(real64), intent(out) :: fp
+      real(real64), intent(inout) :: wrk(lwrk)
+      integer, intent(inout) :: iwrk(kwrk)
+      integer, intent(out) :: ier
+    end subroutine regrid
+
+    subroutine fpregr(iopt, x, mx, y, my, z, mz, xb, xe, yb, ye, kx, ky, s, nxest, nyest, tol, maxit, &
+                      nx, tx, ny, ty, c, fp, fp0, fpold, reducx, reducy, fpintx, fpinty, &
+                      lastdi, nplusx, nplusy, nrx, nry, nrdatx, nrdaty, wrk, lwrk, ier)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: iopt, mx, my, mz, kx, ky, nxest, nyest, maxit, lwrk
+      real(real64), intent(in) :: x(mx), y(my), z(mz), xb, xe, yb, ye, s, tol
+      integer, intent(inout) :: nx, ny, lastdi, nplusx, nplusy, nrx(mx), nry(my), nrdatx(nxest), nrdaty(nyest)
+      real(real64), intent(inout) :: tx(nxest), ty(nyest), c((nxest - kx - 1)*(nyest - ky - 1))
+      real(real64), intent(inout) :: fp, fp0, fpold, reducx, reducy, fpintx(nxest), fpinty(nyest)
+      real(real64), intent(inout) :: wrk(lwrk)
+      integer, intent(inout) :: ier
+    end subroutine fpregr
+
+    subroutine fpgrre(ifsx, ifsy, ifbx, ifby, x, mx, y, my, z, mz, kx, ky, tx, nx, ty, ny, p, c, fp, &
+                      fpx, fpy, spx, spy, right, q, ax, ay, bx, by, nrx, nry)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(inout) :: ifsx, ifsy, ifbx, ifby
+      integer, intent(in) :: mx, my, mz, kx, ky, nx, ny
+      real(real64), intent(in) :: x(mx), y(my), z(mz), tx(nx), ty(ny), p
+      real(real64), intent(inout) :: c(*)
+      real(real64), intent(out) :: fp
+      real(real64), intent(inout) :: fpx(nx), fpy(ny), spx(mx, kx + 1), spy(my, ky + 1), right(*), q(*)
+      real(real64), intent(inout) :: ax(nx, kx + 2), ay(ny, ky + 2), bx(nx, kx + 2), by(ny, ky + 2)
+      integer, intent(inout) :: nrx(mx), nry(my)
+    end subroutine fpgrre
+  end interface
+end module fitpack_surface_interfaces

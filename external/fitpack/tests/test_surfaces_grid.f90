@@ -1,0 +1,172 @@
+!> regrid, bispev and parder against the genuine FITPACK (scipy 1.10.1 tables
+!> tests/reference/fitpack/surfaces_regrid.txt and surfaces_eval.txt, made by
+!> scripts/reference/fitpack_surfaces.py). First argument: the reference folder.
+program test_surfaces_grid
+  use, intrinsic :: iso_fortran_env, only: real64
+  use fitpack_reference_io, only: reference_table_t, load_table, get_reals, get_int, get_real, has_key
+  use fitpack_surface_interfaces, only: regrid, bispev, parder
+  implicit none (type, external)
+  ! unique results (s = 0): the same linear system solved by the same rotations
+  ! in another order of operations: agreement to rounding, 1e-10 relative.
+  real(real64), parameter :: rtol_unique = 1.0e-10_real64
+  ! chosen knots (s > 0): knot values are data points or midpoints, 1e-12;
+  ! coefficients and fp come out of the p-iteration, 1e-8 relative (issue 3).
+  real(real64), parameter :: rtol_knots = 1.0e-12_real64, rtol_smooth = 1.0e-8_real64
+  ! evaluation of given coefficients: a few dozen roundings, 1e-12 relative to
+  ! the largest value of the same quantity.
+  real(real64), parameter :: rtol_eval = 1.0e-12_real64
+  character(len=1024) :: folder
+  integer :: failures = 0, checks = 0
+  call get_command_argument(1, folder)
+  if (len_trim(folder) == 0) folder = 'tests/reference/fitpack'
+  call regrid_cases(trim(folder)//'/surfaces_regrid.txt')
+  call eval_cases(trim(folder)//'/surfaces_eval.txt')
+  print '(a, i0, a, i0, a)', 'test_surfaces_grid: ', checks, ' checks, ', failures, ' failed'
+  if (failures > 0) error stop 1
+contains
+  subroutine check(cond, what)
+    logical, intent(in) :: cond
+    character(len=*), intent(in) :: what
+    checks = checks + 1
+    if (.not. cond) then
+      failures = failures + 1
+      print '(a)', 'FAIL: '//what
+    end if
+  end subroutine check
+
+  !> max |a - b| <= rtol * max |b| (+ atol)
+  subroutine check_array(a, b, rtol, atol, what)
+    real(real64), intent(in) :: a(:), b(:), rtol, atol
+    character(len=*), intent(in) :: what
+    real(real64) :: err, scale
+    checks = checks + 1
+    if (size(a) /= size(b)) then
+      failures = failures + 1
+      print '(a, 2(1x, i0))', 'FAIL: '//what//' sizes', size(a), size(b)
+      return
+    end if
+    if (size(a) == 0) return
+    err = maxval(abs(a - b))
+    scale = maxval(abs(b))
+    if (.not. (err <= rtol*scale + atol)) then
+      failures = failures + 1
+      print '(a, 2es12.3)', 'FAIL: '//what//' max error, scale', err, scale
+    end if
+  end subroutine check_array
+
+  subroutine regrid_cases(path)
+    character(len=*), intent(in) :: path
+    type(reference_table_t) :: tab
+    logical :: ok, found
+    integer :: ic, kx, ky, nxest, nyest, mx, my, ier_ref, nx, ny, ier, lwrk, kwrk, nc
+    real(real64) :: s, fp, fp_ref, rtol
+    real(real64), allocatable :: bbox(:), x(:), y(:), z(:), tx(:), ty(:), c(:), wrk(:), &
+      tx_ref(:), ty_ref(:), c_ref(:)
+    integer, allocatable :: iwrk(:)
+    character(len=:), allocatable :: name
+    call load_table(path, tab, ok)
+    call check(ok, 'load '//path)
+    if (.not. ok) return
+    do ic = 1, tab%n_cases
+      name = trim(tab%case_names(ic))
+      call get_int(tab, name, 'kx', kx, found)
+      call get_int(tab, name, 'ky', ky, found)
+      call get_int(tab, name, 'nxest', nxest, found)
+      call get_int(tab, name, 'nyest', nyest, found)
+      call get_real(tab, name, 's', s, found)
+      call get_reals(tab, name, 'bbox', bbox, found)
+      call get_reals(tab, name, 'x', x, found)
+      call get_reals(tab, name, 'y', y, found)
+      call get_reals(tab, name, 'z', z, found)
+      call get_int(tab, name, 'ier', ier_ref, found)
+      call get_real(tab, name, 'fp', fp_ref, found)
+      mx = size(x)
+      my = size(y)
+      lwrk = 4 + nxest*(my + 2*kx + 5) + nyest*(2*ky + 5) + mx*(kx + 1) + my*(ky + 1) + max(my, nxest)
+      kwrk = 3 + mx + my + nxest + nyest
+      allocate (tx(nxest), ty(nyest), c((nxest - kx - 1)*(nyest - ky - 1)), wrk(lwrk), iwrk(kwrk))
+      tx = 0; ty = 0; c = 0
+      call regrid(0, mx, x, my, y, z, bbox(1), bbox(2), bbox(3), bbox(4), kx, ky, s, nxest, nyest, &
+        nx, tx, ny, ty, c, fp, wrk, lwrk, iwrk, kwrk, ier)
+      call check(ier == ier_ref, name//': ier')
+      if (ier /= ier_ref) print '(a, 2(1x, i0))', '  ier got, expected', ier, ier_ref
+      if (ier_ref /= 10 .and. ier == ier_ref) then
+        call get_reals(tab, name, 'tx', tx_ref, found)
+        call get_reals(tab, name, 'ty', ty_ref, found)
+        call get_reals(tab, name, 'c', c_ref, found)
+        call check(nx == size(tx_ref) .and. ny == size(ty_ref), name//': number of knots')
+        if (nx == size(tx_ref) .and. ny == size(ty_ref)) then
+          call check_array(tx(1:nx), tx_ref, rtol_knots, 0.0_real64, name//': tx')
+          call check_array(ty(1:ny), ty_ref, rtol_knots, 0.0_real64, name//': ty')
+          nc = (nx - kx - 1)*(ny - ky - 1)
+          rtol = merge(rtol_unique, rtol_smooth, s == 0)
+          call check_array(c(1:nc), c_ref, rtol, 0.0_real64, name//': c')
+          ! fp of an interpolant is 0 by definition; else relative
+          call check(abs(fp - fp_ref) <= rtol*abs(fp_ref), name//': fp')
+          if (.not. abs(fp - fp_ref) <= rtol*abs(fp_ref)) print '(a, 2es24.16)', '  fp', fp, fp_ref
+        else
+          print '(a, 4(1x, i0))', '  nx, ny got / expected', nx, ny, size(tx_ref), size(ty_ref)
+        end if
+      end if
+      deallocate (tx, ty, c, wrk, iwrk)
+    end do
+  end subroutine regrid_cases
+
+  subroutine eval_cases(path)
+    character(len=*), intent(in) :: path
+    type(reference_table_t) :: tab
+    logical :: ok, found
+    integer :: ic, kx, ky, nux, nuy, mx, my, ier, lwrk, kwrk
+    real(real64), allocatable :: tx(:), ty(:), c(:), x(:), y(:), z(:), zr(:), wrk(:)
+    integer, allocatable :: iwrk(:)
+    character(len=:), allocatable :: name
+    character(len=8) :: key
+    call load_table(path, tab, ok)
+    call check(ok, 'load '//path)
+    if (.not. ok) return
+    do ic = 1, tab%n_cases
+      name = trim(tab%case_names(ic))
+      call get_int(tab, name, 'kx', kx, found)
+      call get_int(tab, name, 'ky', ky, found)
+      call get_reals(tab, name, 'tx', tx, found)
+      call get_reals(tab, name, 'ty', ty, found)
+      call get_reals(tab, name, 'c', c, found)
+      call get_reals(tab, name, 'x', x, found)
+      call get_reals(tab, name, 'y', y, found)
+      mx = size(x)
+      my = size(y)
+      lwrk = size(c) + mx*(kx + 1) + my*(ky + 1)
+      kwrk = mx + my
+      allocate (z(mx*my), wrk(lwrk), iwrk(kwrk))
+      call bispev(tx, size(tx), ty, size(ty), c, kx, ky, x, mx, y, my, z, wrk, lwrk, iwrk, kwrk, ier)
+      call check(ier == 0, name//': bispev ier')
+      call get_reals(tab, name, 'z', zr, found)
+      call check_array(z, zr, rtol_eval, 0.0_real64, name//': bispev')
+      do nux = 0, kx - 1
+        do nuy = 0, ky - 1
+          write (key, '(a, i0, i0)') 'd', nux, nuy
+          call parder(tx, size(tx), ty, size(ty), c, kx, ky, nux, nuy, x, mx, y, my, z, wrk, lwrk, &
+            iwrk, kwrk, ier)
+          call check(ier == 0, name//': parder ier '//trim(key))
+          if (nux + nuy == 0) then
+            call check_array(z, zr, rtol_eval, 0.0_real64, name//': parder 00')
+          else
+            call get_reals(tab, name, trim(key), zr, found)
+            call check(found, name//': has '//trim(key))
+            ! differencing loses about a digit per order
+            call check_array(z, zr, rtol_eval*10.0_real64**(nux + nuy), 0.0_real64, name//': parder '//trim(key))
+          end if
+        end do
+      end do
+      ! invalid input: derivative order kx, decreasing points, small workspace
+      call parder(tx, size(tx), ty, size(ty), c, kx, ky, kx, 0, x, mx, y, my, z, wrk, lwrk, iwrk, kwrk, ier)
+      call check(ier == 10, name//': parder nux = kx gives ier 10')
+      call bispev(tx, size(tx), ty, size(ty), c, kx, ky, x(mx:1:-1), mx, y, my, z, wrk, lwrk, iwrk, kwrk, ier)
+      call check(ier == 10, name//': bispev decreasing x gives ier 10')
+      call bispev(tx, size(tx), ty, size(ty), c, kx, ky, x, mx, y, my, z, wrk, mx, iwrk, kwrk, ier)
+      call check(ier == 10, name//': bispev small lwrk gives ier 10')
+      deallocate (z, wrk, iwrk)
+      if (.false.) print *, has_key(tab, name, 'x')
+    end do
+  end subroutine eval_cases
+end program test_surfaces_grid

@@ -1,0 +1,284 @@
+#!/usr/bin/python3
+"""Reference tables for slidesim's FITPACK surface routines (surfit, regrid,
+bispev, parder) from the genuine Fortran FITPACK in Debian's python3-scipy 1.10.1.
+
+Run with /usr/bin/python3 from the repository root:
+    /usr/bin/python3 scripts/reference/fitpack_surfaces.py
+Writes tests/reference/fitpack/surfaces_{regrid,eval,surfit}.txt.
+
+Table format (the curve tables' one, read by
+external/fitpack/tests/support/fitpack_reference_io.f90): '#' lines are
+comments; 'case <name>' ... 'end' holds one case; inside, '<key> <count>' is
+followed by <count> numbers. Reals are written as Python repr (17 significant
+digits), so they read back exactly.
+
+Entry points (scipy 1.10.1, genuine netlib Fortran compiled double precision):
+  surfit  -> scipy.interpolate.dfitpack.surfit_smth (iopt=0) and surfit_lsq
+             (iopt=-1), bbox and nxest/nyest always given explicitly;
+  regrid  -> dfitpack.regrid_smth (iopt=0, nxest=mx+kx+1, nyest=my+ky+1);
+  bispev  -> dfitpack.bispev;  parder -> dfitpack.parder.
+"""
+import os
+import sys
+
+import numpy as np
+import scipy
+from scipy.interpolate import dfitpack
+
+OUT = os.path.join("tests", "reference", "fitpack")
+
+
+FILES = {}
+
+
+def header(group):
+    return [
+        "# slidesim FITPACK surface reference tables: " + group,
+        "# made by scripts/reference/fitpack_surfaces.py with scipy %s "
+        "(Debian python3-scipy, genuine Fortran FITPACK, double precision), numpy %s"
+        % (scipy.__version__, np.__version__),
+        "# format: 'case <name>' ... 'end'; inside, '<key> <count>' then <count> numbers,",
+        "# one per line (reals as Python repr: exact round trip; integers as integers).",
+    ]
+
+
+class Table:
+    """One case; cases are grouped into files surfaces_<group>.txt by name prefix."""
+
+    def __init__(self, name, description):
+        self.group = name.split("_")[0]
+        self.name = name
+        self.lines = ["#", "# " + name + ":"]
+        for line in description.strip().splitlines():
+            self.lines.append("#   " + line.strip())
+        self.lines.append("case " + name)
+
+    def int(self, name, values):
+        vals = np.atleast_1d(np.asarray(values)).ravel()
+        self.lines.append("%s %d" % (name, vals.size))
+        self.lines.extend("%d" % int(v) for v in vals)
+
+    def real(self, name, values):
+        vals = np.atleast_1d(np.asarray(values, dtype=float)).ravel()
+        self.lines.append("%s %d" % (name, vals.size))
+        self.lines.extend(repr(float(v)) for v in vals)
+
+    def write(self):
+        FILES.setdefault(self.group, header(self.group))
+        FILES[self.group].extend(self.lines + ["end"])
+
+
+def write_files():
+    for group, lines in FILES.items():
+        path = os.path.join(OUT, "surfaces_%s.txt" % group)
+        with open(path, "w") as f:
+            f.write("\n".join(lines) + "\n")
+        print("wrote", path)
+
+
+def grid_data(mx, my, seed, noise, bbox=(0.0, 1.0, 0.0, 1.0), uneven=False):
+    rng = np.random.default_rng(seed)
+    xb, xe, yb, ye = bbox
+    x = np.linspace(xb, xe, mx)
+    y = np.linspace(yb, ye, my)
+    if uneven:
+        x[1:-1] += (rng.random(mx - 2) - 0.5) * 0.5 * (xe - xb) / (mx - 1)
+        y[1:-1] += (rng.random(my - 2) - 0.5) * 0.5 * (ye - yb) / (my - 1)
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    z = np.sin(2.0 * X + 0.5) * np.cos(1.5 * Y) + 0.3 * X * Y
+    z = z + noise * rng.standard_normal(z.shape)
+    return x, y, z
+
+
+def regrid_case(name, description, mx, my, kx, ky, s, seed, noise, bbox_data=(0, 1, 0, 1),
+                bbox=None, uneven=False, duplicate=False):
+    x, y, z = grid_data(mx, my, seed, noise, bbox_data, uneven)
+    if duplicate:
+        x[3] = x[2]
+    if bbox is None:
+        bbox = (x[0], x[-1], y[0], y[-1])
+    xb, xe, yb, ye = bbox
+    nx, tx, ny, ty, c, fp, ier = dfitpack.regrid_smth(x, y, z.ravel(), xb, xe, yb, ye, kx, ky, s)
+    t = Table("regrid_" + name, description +
+              "\nregrid iopt=0 through dfitpack.regrid_smth: nxest=mx+kx+1, nyest=my+ky+1")
+    t.int("kx", kx); t.int("ky", ky)
+    t.real("s", s); t.real("bbox", [xb, xe, yb, ye])
+    t.int("nxest", mx + kx + 1); t.int("nyest", my + ky + 1)
+    t.real("x", x); t.real("y", y); t.real("z", z.ravel())
+    t.int("ier", ier); t.real("fp", fp)
+    t.real("tx", tx[:nx]); t.real("ty", ty[:ny])
+    t.real("c", c[:(nx - kx - 1) * (ny - ky - 1)])
+    t.write()
+    return tx[:nx], ty[:ny], c[:(nx - kx - 1) * (ny - ky - 1)]
+
+
+def evaluation_case(name, description, tx, ty, c, kx, ky, xe, ye):
+    t = Table("eval_" + name, description +
+              "\nbispev and parder (all 0<=nux<kx, 0<=nuy<ky) through dfitpack; "
+              "evaluation points include points outside the knot range (clamped)")
+    t.int("kx", kx); t.int("ky", ky)
+    t.real("tx", tx); t.real("ty", ty); t.real("c", c)
+    t.real("x", xe); t.real("y", ye)
+    z, ier = dfitpack.bispev(tx, ty, c, kx, ky, xe, ye)
+    t.int("ier", ier); t.real("z", z.ravel())
+    for nux in range(kx):
+        for nuy in range(ky):
+            if nux == 0 and nuy == 0:
+                continue
+            d, ier = dfitpack.parder(tx, ty, c, kx, ky, nux, nuy, xe, ye)
+            assert ier == 0
+            t.real("d%d%d" % (nux, nuy), d.ravel())
+    t.write()
+
+
+def scattered_data(m, seed, noise, kind="smooth"):
+    rng = np.random.default_rng(seed)
+    x = rng.random(m)
+    y = rng.random(m)
+    z = np.sin(5.0 * x + 0.3) * np.cos(4.0 * y) + 0.5 * x * y
+    z = z + noise * rng.standard_normal(m)
+    return x, y, z
+
+
+def lwrk2_for(m, kx, ky, nxest, nyest):
+    # generous: surfit asks for more (ier > 10) only when this is too small
+    u = nxest - kx - 1
+    v = nyest - ky - 1
+    km = max(kx, ky) + 1
+    ne = max(nxest, nyest)
+    bx, by = kx * v + ky + 1, ky * u + kx + 1
+    b1, b2 = (bx, bx + v - ky) if bx <= by else (by, by + u - kx)
+    return u * v * (b2 + 1) + b2
+
+
+def surfit_case(name, description, x, y, z, w, bbox, kx, ky, s, nxest, nyest, eps=1e-16):
+    xb, xe, yb, ye = bbox
+    m = len(x)
+    lwrk2 = lwrk2_for(m, kx, ky, nxest, nyest)
+    nx, tx, ny, ty, c, fp, wrk1, ier = dfitpack.surfit_smth(
+        x, y, z, w, xb, xe, yb, ye, kx, ky, s, nxest, nyest, eps, lwrk2)
+    t = Table("surfit_" + name, description +
+              "\nsurfit iopt=0 through dfitpack.surfit_smth (explicit bbox, nxest, nyest, eps)")
+    t.int("iopt", 0)
+    t.int("kx", kx); t.int("ky", ky)
+    t.real("s", s); t.real("eps", eps); t.real("bbox", [xb, xe, yb, ye])
+    t.int("nxest", nxest); t.int("nyest", nyest)
+    t.real("x", x); t.real("y", y); t.real("z", z); t.real("w", w)
+    t.int("ier", ier); t.real("fp", fp)
+    if ier != 10:
+        t.real("tx", tx[:nx]); t.real("ty", ty[:ny])
+        t.real("c", c[:(nx - kx - 1) * (ny - ky - 1)])
+    t.write()
+    return ier
+
+
+def surfit_lsq_case(name, description, x, y, z, w, bbox, kx, ky, txi, tyi, eps=1e-16):
+    xb, xe, yb, ye = bbox
+    tx = np.concatenate([[xb] * (kx + 1), txi, [xe] * (kx + 1)])
+    ty = np.concatenate([[yb] * (ky + 1), tyi, [ye] * (ky + 1)])
+    nx, ny = len(tx), len(ty)
+    nmax = max(nx, ny)
+    txp = np.zeros(nmax); txp[:nx] = tx
+    typ = np.zeros(nmax); typ[:ny] = ty
+    lwrk2 = lwrk2_for(len(x), kx, ky, nx, ny)
+    tx2, ty2, c, fp, ier = dfitpack.surfit_lsq(x, y, z, nx, txp, ny, typ, w, xb, xe, yb, ye,
+                                               kx, ky, eps, lwrk2)
+    t = Table("surfit_" + name, description +
+              "\nsurfit iopt=-1 through dfitpack.surfit_lsq (nxest=nx, nyest=ny)")
+    t.int("iopt", -1)
+    t.int("kx", kx); t.int("ky", ky)
+    t.real("s", 0.0); t.real("eps", eps); t.real("bbox", [xb, xe, yb, ye])
+    t.int("nxest", nx); t.int("nyest", ny)
+    t.real("x", x); t.real("y", y); t.real("z", z); t.real("w", w)
+    t.int("ier", ier); t.real("fp", fp)
+    t.real("tx", tx2[:nx]); t.real("ty", ty2[:ny])
+    t.real("c", c[:(nx - kx - 1) * (ny - ky - 1)])
+    t.write()
+    return ier
+
+
+def main():
+    os.makedirs(OUT, exist_ok=True)
+    # ---- regrid -----------------------------------------------------------
+    tx, ty, c = regrid_case("interp_k33", "grid 9 x 7, exact data, s = 0 (interpolation)",
+                            9, 7, 3, 3, 0.0, 1, 0.0, uneven=True)
+    regrid_case("interp_k24", "grid 8 x 9, exact data, s = 0, even and odd degrees",
+                8, 9, 2, 4, 0.0, 2, 0.0, uneven=True)
+    regrid_case("smooth_k33", "grid 21 x 17, noisy data, bicubic, s = 0.05",
+                21, 17, 3, 3, 0.05, 3, 0.02)
+    regrid_case("smooth_k15", "grid 15 x 19, noisy data, kx=1, ky=5, s = 0.02",
+                15, 19, 1, 5, 0.02, 4, 0.01, uneven=True)
+    regrid_case("smooth_k42_bbox", "grid 18 x 16, noisy data, kx=4, ky=2, s = 0.01, bbox wider than the data",
+                18, 16, 4, 2, 0.01, 5, 0.01, bbox_data=(0.1, 0.9, 0.2, 1.0), bbox=(0.0, 1.0, 0.0, 1.2))
+    regrid_case("poly", "grid 10 x 10, s large: least-squares polynomial (ier = -2)",
+                10, 10, 3, 3, 100.0, 6, 0.01)
+    regrid_case("invalid_bbox", "xb > x(1): ier = 10", 10, 10, 3, 3, 0.1, 6, 0.01,
+                bbox=(0.05, 1.0, 0.0, 1.0))
+    regrid_case("invalid_order", "x not strictly increasing (x(4) = x(3)): ier = 10", 10, 10, 3, 3, 0.1, 6, 0.01,
+                duplicate=True)
+    # ---- bispev / parder ----------------------------------------------------
+    xe = np.array([-0.1, 0.0, 0.13, 0.5, 0.5, 0.77, 1.0, 1.2])
+    ye = np.array([-0.2, 0.0, 0.31, 0.66, 0.9, 1.0, 1.1])
+    tx, ty, c = regrid_case("interp_k55", "grid 10 x 11, exact data, s = 0, degree 5 (for parder to third order)",
+                            10, 11, 5, 5, 0.0, 7, 0.0, uneven=True)
+    evaluation_case("k55", "the quintic interpolant of regrid_interp_k55", tx, ty, c, 5, 5, xe, ye)
+    tx, ty, c = regrid_case("smooth_k32", "grid 20 x 20, noisy, kx=3, ky=2, s = 0.03",
+                            20, 20, 3, 2, 0.03, 8, 0.01)
+    evaluation_case("k32", "the spline of regrid_smooth_k32", tx, ty, c, 3, 2, xe, ye)
+    # ---- surfit -----------------------------------------------------------
+    bbox = (0.0, 1.0, 0.0, 1.0)
+    x, y, z = scattered_data(80, 11, 0.01)
+    w = np.ones_like(x)
+    surfit_case("smooth_k33", "80 scattered noisy points, bicubic, s = 0.01", x, y, z, w, bbox, 3, 3, 0.01, 12, 12)
+    surfit_case("smooth_k33_s2", "same data, bicubic, s = 0.05", x, y, z, w, bbox, 3, 3, 0.05, 12, 12)
+    surfit_case("smooth_k12", "same data, kx=1, ky=2, s = 0.004", x, y, z, w, bbox, 1, 2, 0.004, 14, 14)
+    surfit_case("smooth_k53", "same data, kx=5, ky=3, s = 0.005", x, y, z, w, bbox, 5, 3, 0.005, 14, 12)
+    rng = np.random.default_rng(12)
+    wv = 0.5 + rng.random(len(x)) * 2.0
+    surfit_case("weights_k33", "same data with weights in [0.5, 2.5], bicubic, s = 0.05",
+                x, y, z, wv, bbox, 3, 3, 0.05, 12, 12)
+    surfit_case("poly", "same data, s large: least-squares polynomial (ier = -2)",
+                x, y, z, w, bbox, 3, 3, 10.0, 12, 12)
+    surfit_case("small_s", "same data, s = 1e-5 (nearly interpolating: knots run out, ier = 1 or 4/5)",
+                x, y, z, w, bbox, 3, 3, 1e-5, 9, 9)
+    x2, y2, z2 = scattered_data(200, 13, 0.02)
+    surfit_case("smooth_k22_200", "200 scattered points, biquadratic, s = 0.1, bbox wider than data",
+                x2, y2, z2, np.ones_like(x2), (-0.1, 1.1, -0.2, 1.0 + 1e-9 + y2.max() - y2.max()), 2, 2, 0.1, 15, 15)
+    # nearly collinear: points close to the line y = 0.3 + 0.4 x
+    rng = np.random.default_rng(21)
+    xc = np.sort(rng.random(40))
+    yc = 0.3 + 0.4 * xc + 1e-3 * rng.standard_normal(40)
+    zc = np.sin(9.0 * xc) + 0.1 * yc
+    txi = np.array([0.3, 0.6]); tyi = np.array([0.25, 0.5, 0.75])
+    surfit_lsq_case("collinear_lsq", "40 points near the line y = 0.3 + 0.4 x, given knots: rank-deficient (ier < -2), minimum-norm solution",
+                    xc, yc, zc, np.ones_like(xc), bbox, 3, 3, txi, tyi)
+    surfit_case("collinear_smooth", "40 points near the line y = 0.3 + 0.4 x, s = 1e-4: knots added until rank-deficient",
+                xc, yc, zc, np.ones_like(xc), bbox, 3, 3, 1e-4, 11, 11)
+    surfit_lsq_case("lsq_k33", "80 scattered points, given interior knots, bicubic (iopt = -1)",
+                    x, y, z, w, bbox, 3, 3, np.array([0.35, 0.7]), np.array([0.5]))
+    surfit_lsq_case("lsq_k24_w", "80 scattered points, given knots, kx=2, ky=4, weights",
+                    x, y, z, wv, bbox, 2, 4, np.array([0.25, 0.5, 0.75]), np.array([0.4]))
+    surfit_case("invalid_bbox", "a point outside the bbox: ier = 10", x, y, z, w, (0.0, 0.9, 0.0, 1.0), 3, 3, 0.05, 12, 12)
+    w0 = w.copy(); w0[5] = 0.0
+    surfit_case("invalid_weight", "a zero weight: ier = 10", x, y, z, w0, bbox, 3, 3, 0.05, 12, 12)
+    surfit_case("interp_nest_small", "s = 0 with nxest = nyest = 12: knots run out (ier = 1)",
+                x, y, z, w, bbox, 3, 3, 0.0, 12, 12)
+    surfit_case("interp_rank", "s = 0 with nxest = nyest = 20: more coefficients than data, minimum-norm "
+                "interpolant (ier = -rank)", x, y, z, w, bbox, 3, 3, 0.0, 20, 20)
+    surfit_lsq_case("collinear_lsq_k22", "40 points near the line y = 0.3 + 0.4 x, given knots, biquadratic: "
+                    "rank-deficient (ier < -2)", xc, yc, zc, np.ones_like(xc), bbox, 2, 2,
+                    np.array([0.2, 0.4, 0.6, 0.8]), np.array([0.3, 0.5, 0.7]))
+    # thesis 3.5.3.3: paraboloids (3.58), 13 x 13 points, degree 5, s = 0.05
+    for i, (a2, h) in enumerate([(3.0, 2.0), (0.5, 0.5)]):
+        u = np.linspace(-h, h, 13)
+        U, V = np.meshgrid(u, u, indexing="ij")
+        zp = (U ** 2 + V ** 2) / a2
+        surfit_case("thesis_paraboloid%d" % (i + 1),
+                    "thesis 3.5.3.3: paraboloid (3.58) c = 1, a^2 = b^2 = %g on [-%g, %g]^2, 13 x 13 points, "
+                    "kx = ky = 5, s = 0.05" % (a2, h, h),
+                    U.ravel(), V.ravel(), zp.ravel(), np.ones(169), (-h, h, -h, h), 5, 5, 0.05, 20, 20)
+
+
+if __name__ == "__main__":
+    main()
+    write_files()
