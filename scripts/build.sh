@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Configures and builds slidesim in build/ (Release). Extra arguments go to cmake's
+# configure step, e.g. -DCMAKE_BUILD_TYPE=Debug.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${SLIDESIM_BUILD_DIR:-$root/build}
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=${SLIDESIM_BUILD_TYPE:-Release} "$@" >/dev/null
+cmake --build "$build" -j "$(nproc)"

@@ -1,0 +1,328 @@
+!> The text of one namelist input (a file, or the built-in default), read once and
+!> kept so that every group is read from the same lines and the text can be stored
+!> in the result file; plus the checks every group reader uses, each producing a
+!> message that names the file, the group, the variable, the value and what is
+!> allowed.
+module io_input
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_IO
+  implicit none (type, external)
+  private
+  public :: input_text_t, load_input_file, input_from_text, line_length
+  public :: check_known_groups, namelist_read_error, group_present, lower
+  public :: check_finite, check_positive, check_nonnegative, check_range, check_choice, &
+            check_finite_vector, format_real, format_vector, invalid
+
+  integer, parameter :: line_length = 512
+
+  type :: input_text_t
+    character(len=:), allocatable :: name        !< file path, or '<built-in default>'
+    character(len=line_length), allocatable :: lines(:)
+  contains
+    procedure :: text => input_text
+  end type input_text_t
+
+contains
+
+  subroutine load_input_file(path, input, status)
+    character(len=*), intent(in) :: path
+    type(input_text_t), intent(out) :: input
+    type(status_t), intent(inout) :: status
+    integer :: unit, ios, n
+    character(len=line_length) :: line
+    character(len=256) :: msg
+    logical :: exists
+
+    input%name = path
+    inquire (file=path, exist=exists)
+    if (.not. exists) then
+      call set_status(status, STATUS_IO, 'input file "'//path//'" does not exist')
+      return
+    end if
+    open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      call set_status(status, STATUS_IO, 'cannot open input file "'//path//'": '//trim(msg))
+      return
+    end if
+    n = 0
+    do
+      read (unit, '(a)', iostat=ios) line
+      if (ios /= 0) exit
+      n = n + 1
+    end do
+    allocate (input%lines(n))
+    rewind (unit)
+    do n = 1, size(input%lines)
+      read (unit, '(a)') input%lines(n)
+    end do
+    close (unit)
+  end subroutine load_input_file
+
+  !> Splits `text` at new-line characters.
+  pure subroutine input_from_text(name, text, input)
+    character(len=*), intent(in) :: name, text
+    type(input_text_t), intent(out) :: input
+    integer :: i, start, n
+
+    input%name = name
+    n = count([(text(i:i) == new_line('a'), i=1, len(text))]) + 1
+    allocate (input%lines(n))
+    start = 1
+    n = 0
+    do i = 1, len(text) + 1
+      if (i > len(text)) then
+        n = n + 1
+        input%lines(n) = text(start:)
+      else if (text(i:i) == new_line('a')) then
+        n = n + 1
+        input%lines(n) = text(start:i - 1)
+        start = i + 1
+      end if
+    end do
+  end subroutine input_from_text
+
+  pure function input_text(self) result(text)
+    class(input_text_t), intent(in) :: self
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ''
+    do i = 1, size(self%lines)
+      text = text//trim(self%lines(i))//new_line('a')
+    end do
+  end function input_text
+
+  !> Group names ('&name') that open a namelist group in the input, lower case.
+  pure logical function group_present(input, group)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group
+    integer :: i
+    character(len=line_length) :: line
+    group_present = .false.
+    do i = 1, size(input%lines)
+      line = adjustl(lower(input%lines(i)))
+      if (line(1:1) /= '&') cycle
+      if (first_word(line(2:)) == lower(group)) group_present = .true.
+    end do
+  end function group_present
+
+  !> Every group in the input must be one the scenario reads.
+  subroutine check_known_groups(input, allowed, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: allowed(:)
+    type(status_t), intent(inout) :: status
+    integer :: i, j
+    character(len=line_length) :: line
+    character(len=:), allocatable :: group, list
+    logical :: known
+
+    do i = 1, size(input%lines)
+      line = adjustl(lower(input%lines(i)))
+      if (line(1:1) /= '&') cycle
+      group = first_word(line(2:))
+      if (group == '' .or. group == 'end') cycle
+      known = .false.
+      do j = 1, size(allowed)
+        if (group == trim(allowed(j))) known = .true.
+      end do
+      if (.not. known) then
+        list = ''
+        do j = 1, size(allowed)
+          list = list//' &'//trim(allowed(j))
+        end do
+        call set_status(status, STATUS_INVALID_INPUT, input%name//': line '//itoa(i)// &
+                        ': unknown namelist group &'//group//'; this scenario reads'//list)
+        return
+      end if
+    end do
+  end subroutine check_known_groups
+
+  !> Turns a failed namelist read into a message naming the file, the group and,
+  !> for an unknown or malformed variable, the variable and the allowed ones.
+  subroutine namelist_read_error(input, group, iomsg, allowed, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group, iomsg
+    character(len=*), intent(in) :: allowed(:)
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: list, detail
+    integer :: j, k
+
+    list = ''
+    do j = 1, size(allowed)
+      list = list//' '//trim(allowed(j))
+    end do
+    k = index(iomsg, 'Cannot match namelist object name')
+    if (k > 0) then
+      detail = 'unknown variable "'//trim(adjustl(iomsg(k + 33:)))//'"; allowed:'//list
+    else
+      detail = trim(iomsg)//' (check the spelling, the type and the number of values); allowed:'//list
+    end if
+    call set_status(status, STATUS_INVALID_INPUT, input%name//': &'//group//': '//detail)
+  end subroutine namelist_read_error
+
+  !> The common message of every failed check.
+  subroutine invalid(input, group, variable, value, allowed, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group, variable, value, allowed
+    type(status_t), intent(inout) :: status
+    call set_status(status, STATUS_INVALID_INPUT, input%name//': &'//group//': '//variable// &
+                    ' = '//value//' is not allowed: '//allowed)
+  end subroutine invalid
+
+  subroutine check_finite(input, group, variable, value, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group, variable
+    real(wp), intent(in) :: value
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok()) return
+    if (.not. ieee_is_finite(value)) &
+      call invalid(input, group, variable, format_real(value), 'must be a finite number', status)
+  end subroutine check_finite
+
+  subroutine check_finite_vector(input, group, variable, value, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group, variable
+    real(wp), intent(in) :: value(:)
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok()) return
+    if (.not. all(ieee_is_finite(value))) &
+      call invalid(input, group, variable, format_vector(value), 'all components must be finite', status)
+  end subroutine check_finite_vector
+
+  !> value > 0 and finite; `unit` is shown in the message.
+  subroutine check_positive(input, group, variable, value, unit, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group, variable, unit
+    real(wp), intent(in) :: value
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok()) return
+    if (.not. (ieee_is_finite(value) .and. value > 0)) &
+      call invalid(input, group, variable, format_real(value), 'must be a finite number > 0 ('//unit//')', status)
+  end subroutine check_positive
+
+  subroutine check_nonnegative(input, group, variable, value, unit, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group, variable, unit
+    real(wp), intent(in) :: value
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok()) return
+    if (.not. (ieee_is_finite(value) .and. value >= 0)) &
+      call invalid(input, group, variable, format_real(value), 'must be a finite number >= 0 ('//unit//')', status)
+  end subroutine check_nonnegative
+
+  subroutine check_range(input, group, variable, value, lower, upper, unit, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group, variable, unit
+    real(wp), intent(in) :: value, lower, upper
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok()) return
+    if (.not. (ieee_is_finite(value) .and. value >= lower .and. value <= upper)) &
+      call invalid(input, group, variable, format_real(value), 'must lie in ['//format_real(lower)// &
+                   ', '//format_real(upper)//'] ('//unit//')', status)
+  end subroutine check_range
+
+  !> A keyword among `choices` (compared in lower case, trailing blanks ignored).
+  subroutine check_choice(input, group, variable, value, choices, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group, variable, value
+    character(len=*), intent(in) :: choices(:)
+    type(status_t), intent(inout) :: status
+    integer :: j
+    character(len=:), allocatable :: list
+    if (.not. status%ok()) return
+    do j = 1, size(choices)
+      if (lower(trim(value)) == trim(choices(j))) return
+    end do
+    list = ''
+    do j = 1, size(choices)
+      list = list//' '//trim(choices(j))
+    end do
+    call invalid(input, group, variable, "'"//trim(value)//"'", 'must be one of'//list, status)
+  end subroutine check_choice
+
+  !> The shortest text that reads back as x (so messages show what was typed).
+  pure function format_real(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=40) :: buffer
+    real(wp) :: back
+    integer :: digits, ios, e
+    do digits = 1, 17
+      write (buffer, '(es40.' // digit_text(digits - 1) // ')') x
+      read (buffer, *, iostat=ios) back
+      if (ios == 0 .and. back == x) exit
+    end do
+    text = trim(adjustl(buffer))
+    if (.not. (abs(x) < huge(x))) then   ! NaN or Inf: as the compiler writes them
+      return
+    end if
+    ! Plain notation for moderate magnitudes: 2.5E+00 -> 2.5, 1.0E-03 stays.
+    e = exponent10(x)
+    if (e >= -3 .and. e <= 6) then
+      write (buffer, '(f40.' // digit_text(max(digits - 1 - e, 1)) // ')') x
+      text = trim(adjustl(buffer))
+      do while (len(text) > 2 .and. text(len(text):len(text)) == '0' .and. &
+                text(len(text) - 1:len(text) - 1) /= '.')
+        text = text(:len(text) - 1)
+      end do
+    end if
+  end function format_real
+
+  pure integer function exponent10(x)
+    real(wp), intent(in) :: x
+    if (x == 0) then
+      exponent10 = 0
+    else
+      exponent10 = floor(log10(abs(x)))
+    end if
+  end function exponent10
+
+  pure function digit_text(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    character(len=8) :: buffer
+    write (buffer, '(i0)') i
+    text = trim(buffer)
+  end function digit_text
+
+  pure function format_vector(x) result(text)
+    real(wp), intent(in) :: x(:)
+    character(len=:), allocatable :: text
+    integer :: i
+    text = '['
+    do i = 1, size(x)
+      text = text//format_real(x(i))
+      if (i < size(x)) text = text//', '
+    end do
+    text = text//']'
+  end function format_vector
+
+  pure function itoa(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    character(len=16) :: buffer
+    write (buffer, '(i0)') i
+    text = trim(buffer)
+  end function itoa
+
+  pure function lower(text) result(low)
+    character(len=*), intent(in) :: text
+    character(len=len(text)) :: low
+    integer :: i, c
+    low = text
+    do i = 1, len(text)
+      c = iachar(text(i:i))
+      if (c >= iachar('A') .and. c <= iachar('Z')) low(i:i) = achar(c + 32)
+    end do
+  end function lower
+
+  pure function first_word(text) result(word)
+    character(len=*), intent(in) :: text
+    character(len=:), allocatable :: word
+    integer :: i
+    do i = 1, len(text)
+      if (text(i:i) == ' ' .or. text(i:i) == '/' .or. text(i:i) == ',') exit
+    end do
+    word = text(:i - 1)
+  end function first_word
+end module io_input

@@ -1,0 +1,161 @@
+!> A point mass sliding on a surface under gravity, in surface coordinates.
+!>
+!> State y = [u, v, u', v', W] with W the work done on the mass by friction (J,
+!> negative), integrated alongside so that energy + |W| can be checked. With
+!> w = r_u u' + r_v v' the velocity and h = r_uu u'^2 + 2 r_uv u'v' + r_vv v'^2,
+!> Newton's law m (r_u u'' + r_v v'' + h) = m g + N n + F_friction projected on
+!> r_u and r_v gives u'', v''; projected on the normal n it gives the normal force
+!> N = m n.(h - g) (as thesis eq. 4.12 does for the water). Friction is tangential,
+!> so N does not depend on it and Coulomb friction stays explicit.
+module kinetostatics_point_mass
+  use base_kinds, only: wp
+  use base_vector, only: cross
+  use base_status, only: status_t, set_status, STATUS_DOMAIN, STATUS_INVALID_INPUT
+  use numerics_ode, only: ode_system_t
+  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_darboux, only: darboux_frame_t, darboux_frame
+  implicit none (type, external)
+  private
+  public :: point_mass_t, point_mass_state_t, FRICTION_NONE, FRICTION_VISCOUS, FRICTION_COULOMB
+
+  integer, parameter :: FRICTION_NONE = 0, FRICTION_VISCOUS = 1, FRICTION_COULOMB = 2
+
+  type, extends(ode_system_t) :: point_mass_t
+    class(surface_t), allocatable :: surface
+    real(wp) :: mass = 1                 ! kg
+    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -9.80665_wp]   ! m/s^2
+    integer :: friction = FRICTION_NONE
+    real(wp) :: viscous_coefficient = 0  ! N s/m: F = -c w
+    real(wp) :: friction_coefficient = 0 ! 1: F = -mu |N| w/|w|
+    !> Coulomb friction uses w/sqrt(|w|^2 + v_eps^2): smooth through w = 0, and
+    !> within (v_eps/|w|)^2/2 relative of the exact law while the mass slides.
+    real(wp) :: regularization_speed = 1e-9_wp   ! m/s
+    real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0   ! Darboux frame parameters (3.38, 3.41)
+  contains
+    procedure :: rhs => point_mass_rhs
+    procedure :: state => point_mass_state
+  end type point_mass_t
+
+  !> Everything a user wants to see at one instant.
+  type :: point_mass_state_t
+    real(wp) :: position(3), velocity(3), acceleration(3)   ! m, m/s, m/s^2
+    real(wp) :: speed                                       ! m/s
+    real(wp) :: normal_force                                ! N, along the frame's z
+    real(wp) :: friction_force(3)                           ! N
+    real(wp) :: kinetic_energy, potential_energy            ! J (potential -m g.r)
+    real(wp) :: frame(3, 3)                                 ! Darboux frame, columns x, y, z
+  end type point_mass_state_t
+
+contains
+
+  !> The accelerations and forces at one state; the one place the dynamics live.
+  pure subroutine dynamics(self, y, p, normal, udd, vdd, normal_force, friction, status)
+    class(point_mass_t), intent(in) :: self
+    real(wp), intent(in) :: y(:)
+    type(surface_point_t), intent(out) :: p
+    real(wp), intent(out) :: normal(3), udd, vdd, normal_force, friction(3)
+    type(status_t), intent(inout) :: status
+    real(wp) :: w(3), h(3), rhs(3), e, f, g, det, bu, bv, speed, n(3), n_norm
+    type(darboux_frame_t) :: frame
+
+    if (.not. self%surface%in_domain(y(1), y(2))) then
+      call set_status(status, STATUS_DOMAIN, 'the mass left the surface''s parameter domain at (u, v) = (' &
+                      //real_text(y(1))//', '//real_text(y(2))//')')
+      return
+    end if
+    call self%surface%evaluate(y(1), y(2), 2, p, status)
+    if (.not. status%ok()) return
+    n = cross(p%ru, p%rv)
+    n_norm = norm2(n)
+    if (n_norm > 1e-12_wp*dot_product(p%rv, p%rv)) then
+      normal = sign(1.0_wp, self%sigma)*n/n_norm    ! thesis (3.38)
+    else
+      ! r_u x r_v = 0: the frame's singular-point rule (3.39-3.40) gives the normal.
+      call darboux_frame(p, self%sigma, self%alpha_u, self%alpha_v, frame, status)
+      if (.not. status%ok()) return
+      normal = frame%R(:, 3)
+    end if
+
+    w = p%ru*y(3) + p%rv*y(4)
+    h = p%ruu*y(3)**2 + 2*p%ruv*y(3)*y(4) + p%rvv*y(4)**2
+    normal_force = self%mass*dot_product(normal, h - self%gravity)
+
+    select case (self%friction)
+    case (FRICTION_VISCOUS)
+      friction = -self%viscous_coefficient*w
+    case (FRICTION_COULOMB)
+      speed = sqrt(dot_product(w, w) + self%regularization_speed**2)
+      friction = -self%friction_coefficient*abs(normal_force)*w/speed
+    case default
+      friction = 0
+    end select
+
+    rhs = self%gravity + friction/self%mass - h
+    e = dot_product(p%ru, p%ru)
+    f = dot_product(p%ru, p%rv)
+    g = dot_product(p%rv, p%rv)
+    bu = dot_product(p%ru, rhs)
+    bv = dot_product(p%rv, rhs)
+    det = e*g - f*f
+    if (e <= 1e-24_wp*g) then
+      ! Singular point r_u = 0 (the apex of a polar parametrization): u'' does not
+      ! move the mass, so take u'' = 0 and v'' from the r_v component.
+      udd = 0
+      vdd = bv/g
+    else
+      udd = (g*bu - f*bv)/det
+      vdd = (e*bv - f*bu)/det
+    end if
+  end subroutine dynamics
+
+  subroutine point_mass_rhs(self, t, y, ydot, status)
+    class(point_mass_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(out) :: ydot(:)
+    type(status_t), intent(inout) :: status
+    type(surface_point_t) :: p
+    real(wp) :: normal(3), udd, vdd, normal_force, friction(3)
+
+    associate (unused => t)   ! autonomous: no explicit time dependence
+    end associate
+    call dynamics(self, y, p, normal, udd, vdd, normal_force, friction, status)
+    if (.not. status%ok()) then
+      ydot = 0
+      return
+    end if
+    ydot(1) = y(3)
+    ydot(2) = y(4)
+    ydot(3) = udd
+    ydot(4) = vdd
+    ydot(5) = dot_product(friction, p%ru*y(3) + p%rv*y(4))   ! friction power, W
+  end subroutine point_mass_rhs
+
+  subroutine point_mass_state(self, y, state, status)
+    class(point_mass_t), intent(in) :: self
+    real(wp), intent(in) :: y(:)
+    type(point_mass_state_t), intent(out) :: state
+    type(status_t), intent(inout) :: status
+    type(surface_point_t) :: p
+    type(darboux_frame_t) :: frame
+    real(wp) :: normal(3), udd, vdd
+
+    call dynamics(self, y, p, normal, udd, vdd, state%normal_force, state%friction_force, status)
+    if (.not. status%ok()) return
+    call darboux_frame(p, self%sigma, self%alpha_u, self%alpha_v, frame, status)
+    state%frame = frame%R
+    state%position = p%r
+    state%velocity = p%ru*y(3) + p%rv*y(4)
+    state%acceleration = p%ru*udd + p%rv*vdd + p%ruu*y(3)**2 + 2*p%ruv*y(3)*y(4) + p%rvv*y(4)**2
+    state%speed = norm2(state%velocity)
+    state%kinetic_energy = 0.5_wp*self%mass*dot_product(state%velocity, state%velocity)
+    state%potential_energy = -self%mass*dot_product(self%gravity, p%r)
+  end subroutine point_mass_state
+
+  pure function real_text(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=32) :: buffer
+    write (buffer, '(g0.8)') x
+    text = trim(adjustl(buffer))
+  end function real_text
+end module kinetostatics_point_mass

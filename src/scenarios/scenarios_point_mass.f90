@@ -1,0 +1,237 @@
+!> Scenario `point_mass`: a point mass sliding under gravity on an elementary
+!> surface placed anywhere in space, optionally with viscous or Coulomb friction.
+module scenarios_point_mass
+  use, intrinsic :: iso_fortran_env, only: output_unit
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_log, only: log_progress, log_info
+  use numerics_ode, only: ode_integrator_t, ode_stats_t
+  use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t, &
+                                      FRICTION_NONE, FRICTION_VISCOUS, FRICTION_COULOMB
+  use io_input, only: input_text_t, check_known_groups, invalid, format_real
+  use io_run_config, only: run_config_t
+  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_surface_config, only: read_surface_config
+  use io_point_mass_config, only: point_mass_config_t, read_point_mass_config
+  use io_hdf5, only: result_file_t
+  implicit none (type, external)
+  private
+  public :: run_point_mass, build_point_mass, point_mass_groups
+
+  character(len=*), parameter :: point_mass_groups(4) = [character(len=10) :: &
+    'run', 'solver', 'surface', 'point_mass']
+
+  !> Time series of one run, preallocated for every output time.
+  type :: series_t
+    integer :: n = 0
+    real(wp), allocatable :: time(:), u(:), v(:), du(:), dv(:), speed(:), normal_force(:), &
+      kinetic(:), potential(:), friction_work(:)
+    real(wp), allocatable :: position(:, :), velocity(:, :), acceleration(:, :), friction_force(:, :)
+    real(wp), allocatable :: frame(:, :, :)
+  end type series_t
+
+contains
+
+  !> Reads and checks every input group and builds the model; nothing is written.
+  subroutine build_point_mass(input, solver, model, y0, status)
+    type(input_text_t), intent(in) :: input
+    type(solver_config_t), intent(out) :: solver
+    type(point_mass_t), intent(out) :: model
+    real(wp), intent(out) :: y0(5)
+    type(status_t), intent(inout) :: status
+    type(point_mass_config_t) :: config
+
+    call check_known_groups(input, point_mass_groups, status)
+    if (status%ok()) call read_solver_config(input, solver, status)
+    if (status%ok()) call read_surface_config(input, model%surface, status)
+    if (status%ok()) call read_point_mass_config(input, config, status)
+    if (.not. status%ok()) return
+    if (.not. model%surface%in_domain(config%u0, config%v0)) then
+      call invalid(input, 'point_mass', 'u0, v0', format_real(config%u0)//', '//format_real(config%v0), &
+                   'the start must lie in the parameter domain of the '//model%surface%describe(), status)
+      return
+    end if
+    model%mass = config%mass
+    model%gravity = config%gravity
+    select case (config%friction)
+    case ('viscous'); model%friction = FRICTION_VISCOUS
+    case ('coulomb'); model%friction = FRICTION_COULOMB
+    case default; model%friction = FRICTION_NONE
+    end select
+    model%viscous_coefficient = config%viscous_coefficient
+    model%friction_coefficient = config%friction_coefficient
+    model%regularization_speed = config%regularization_speed
+    model%sigma = config%sigma
+    model%alpha_u = config%alpha_u
+    model%alpha_v = config%alpha_v
+    y0 = [config%u0, config%v0, config%du0, config%dv0, 0.0_wp]
+  end subroutine build_point_mass
+
+  subroutine run_point_mass(input, run, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(status_t), intent(inout) :: status
+    type(solver_config_t) :: solver
+    type(point_mass_t), target :: model
+    type(ode_integrator_t) :: integrator
+    type(result_file_t) :: file
+    type(series_t) :: series
+    type(status_t) :: run_status, write_status
+    real(wp) :: y0(5), y(5), t, t_out, cpu_start, cpu_end
+    integer :: n_out, k, next_report
+
+    call build_point_mass(input, solver, model, y0, status)
+    if (.not. status%ok()) return
+
+    ! Open the result file before any work, so an unwritable path stops the run now.
+    call file%create(trim(run%output), status)
+    if (.not. status%ok()) return
+
+    n_out = nint(solver%duration/solver%output_step)
+    call allocate_series(series, n_out + 1)
+    call cpu_time(cpu_start)
+    call log_info('point_mass: '//model%surface%describe()//', '//format_real(solver%duration)// &
+                  ' s, output every '//format_real(solver%output_step)//' s')
+    call record(model, 0.0_wp, y0, series, run_status)
+    if (run_status%ok()) call integrator%start(model, 0.0_wp, y0, solver%options, run_status)
+    next_report = max(1, n_out/10)
+    k = 0
+    do while (run_status%ok() .and. k < n_out)
+      k = k + 1
+      t_out = min(k*solver%output_step, solver%duration)
+      call integrator%advance(t_out, t, y, run_status)
+      if (.not. run_status%ok()) exit
+      call record(model, t, y, series, run_status)
+      if (mod(k, next_report) == 0) call log_progress('point_mass', t, solver%duration)
+    end do
+    call cpu_time(cpu_end)
+    if (.not. run_status%ok()) call prefix_status(run_status, 'point_mass: run stopped at t = '// &
+                                                  format_real(series%time(max(series%n, 1)))//' s')
+
+    call write_series(file, input, run, series, integrator%statistics(), cpu_end - cpu_start, write_status)
+    if (run_status%ok()) then
+      call file%finish(write_status%ok(), write_status%text(), write_status)
+    else
+      call file%finish(.false., run_status%text(), write_status)
+    end if
+    call print_summary(model, series, integrator%statistics(), cpu_end - cpu_start, file%final_path(), &
+                       run_status)
+    if (.not. run_status%ok()) then
+      status = run_status
+    else if (.not. write_status%ok()) then
+      status = write_status
+    end if
+  end subroutine run_point_mass
+
+  subroutine allocate_series(s, n)
+    type(series_t), intent(out) :: s
+    integer, intent(in) :: n
+    allocate (s%time(n), s%u(n), s%v(n), s%du(n), s%dv(n), s%speed(n), s%normal_force(n), &
+              s%kinetic(n), s%potential(n), s%friction_work(n))
+    allocate (s%position(3, n), s%velocity(3, n), s%acceleration(3, n), s%friction_force(3, n))
+    allocate (s%frame(3, 3, n))
+  end subroutine allocate_series
+
+  subroutine record(model, t, y, s, status)
+    type(point_mass_t), intent(in) :: model
+    real(wp), intent(in) :: t, y(:)
+    type(series_t), intent(inout) :: s
+    type(status_t), intent(inout) :: status
+    type(point_mass_state_t) :: state
+    integer :: i
+
+    call model%state(y, state, status)
+    if (.not. status%ok()) return
+    s%n = s%n + 1
+    i = s%n
+    s%time(i) = t
+    s%u(i) = y(1); s%v(i) = y(2); s%du(i) = y(3); s%dv(i) = y(4)
+    s%friction_work(i) = y(5)
+    s%position(:, i) = state%position
+    s%velocity(:, i) = state%velocity
+    s%acceleration(:, i) = state%acceleration
+    s%speed(i) = state%speed
+    s%normal_force(i) = state%normal_force
+    s%friction_force(:, i) = state%friction_force
+    s%kinetic(i) = state%kinetic_energy
+    s%potential(i) = state%potential_energy
+    s%frame(:, :, i) = state%frame
+  end subroutine record
+
+  subroutine write_series(file, input, run, s, stats, cpu, status)
+    type(result_file_t), intent(inout) :: file
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(series_t), intent(in) :: s
+    type(ode_stats_t), intent(in) :: stats
+    real(wp), intent(in) :: cpu
+    type(status_t), intent(inout) :: status
+    integer :: n
+    character(len=*), parameter :: g = '/point_mass/'
+
+    n = s%n
+    call file%set_attribute('/', 'scenario', 'point_mass', status)
+    call file%set_attribute('/', 'title', trim(run%title), status)
+    call file%write_text('/input/namelist', input%text(), 'the input namelist text of this run', status)
+    call file%write_text('/input/source', input%name, 'where the input came from', status)
+    call file%write_vector(g//'time', s%time(:n), 's', 'time', status)
+    call file%write_vector(g//'u', s%u(:n), 'surface parameter', 'surface coordinate u', status)
+    call file%write_vector(g//'v', s%v(:n), 'surface parameter', 'surface coordinate v', status)
+    call file%write_vector(g//'du', s%du(:n), 'surface parameter/s', 'rate of u', status)
+    call file%write_vector(g//'dv', s%dv(:n), 'surface parameter/s', 'rate of v', status)
+    call file%write_matrix(g//'position', s%position(:, :n), 'm', 'position (3 x n)', status)
+    call file%write_matrix(g//'velocity', s%velocity(:, :n), 'm/s', 'velocity (3 x n)', status)
+    call file%write_matrix(g//'acceleration', s%acceleration(:, :n), 'm/s^2', 'acceleration (3 x n)', status)
+    call file%write_vector(g//'speed', s%speed(:n), 'm/s', 'speed |velocity|', status)
+    call file%write_vector(g//'normal_force', s%normal_force(:n), 'N', &
+                           'normal force along the Darboux frame z axis (positive pushes the mass to the side of z)', status)
+    call file%write_matrix(g//'friction_force', s%friction_force(:, :n), 'N', 'friction force (3 x n)', status)
+    call file%write_vector(g//'kinetic_energy', s%kinetic(:n), 'J', 'kinetic energy', status)
+    call file%write_vector(g//'potential_energy', s%potential(:n), 'J', 'potential energy -m g.r', status)
+    call file%write_vector(g//'energy', s%kinetic(:n) + s%potential(:n), 'J', 'kinetic + potential energy', status)
+    call file%write_vector(g//'friction_work', s%friction_work(:n), 'J', &
+                           'work done on the mass by friction since t = 0 (<= 0)', status)
+    call file%write_array3(g//'frame', s%frame(:, :, :n), '1', &
+                           'Darboux frame (3 x 3 x n): columns x, y, z in world coordinates', status)
+    call file%write_integers('/statistics/steps', [int(stats%steps)], '1', 'integrator steps', status)
+    call file%write_integers('/statistics/rhs_evaluations', [int(stats%rhs_evaluations)], '1', &
+                             'right-hand-side evaluations', status)
+    call file%write_integers('/statistics/error_test_failures', [int(stats%error_test_failures)], '1', &
+                             'error test failures', status)
+    call file%write_vector('/statistics/cpu_time', [cpu], 's', 'CPU time of the integration', status)
+  end subroutine write_series
+
+  subroutine print_summary(model, s, stats, cpu, path, run_status)
+    type(point_mass_t), intent(in) :: model
+    type(series_t), intent(in) :: s
+    type(ode_stats_t), intent(in) :: stats
+    real(wp), intent(in) :: cpu
+    character(len=*), intent(in) :: path
+    type(status_t), intent(in) :: run_status
+    real(wp) :: e0, drift
+    integer :: n
+
+    n = s%n
+    if (n < 1) return
+    e0 = s%kinetic(1) + s%potential(1)
+    drift = maxval(abs(s%kinetic(:n) + s%potential(:n) - s%friction_work(:n) - e0))
+    write (output_unit, '(a)') 'slidesim point_mass on '//model%surface%describe()
+    write (output_unit, '(a, f0.4, a)') '  simulated time       ', s%time(n), ' s'
+    write (output_unit, '(a, 3f12.5, a)') '  final position      ', s%position(:, n), ' m'
+    write (output_unit, '(a, f12.5, a)') '  final speed         ', s%speed(n), ' m/s'
+    write (output_unit, '(a, 2f12.5, a)') '  normal force min/max', minval(s%normal_force(:n)), &
+      maxval(s%normal_force(:n)), ' N'
+    write (output_unit, '(a, es12.3, a)') '  friction work       ', s%friction_work(n), ' J'
+    write (output_unit, '(a, es12.3, a)') '  energy balance error', drift/max(abs(e0), s%kinetic(1), &
+      maxval(s%kinetic(:n)), tiny(1.0_wp)), ' (relative)'
+    write (output_unit, '(a, i0, a, i0, a)') '  integrator          ', stats%steps, ' steps, ', &
+      stats%rhs_evaluations, ' right-hand sides'
+    write (output_unit, '(a, es10.3, a, es10.3, a)') '  CPU time            ', cpu, ' s (', &
+      cpu/max(s%time(n), tiny(1.0_wp)), ' s per simulated second)'
+    if (run_status%ok()) then
+      write (output_unit, '(a)') '  results             '//path
+    else
+      write (output_unit, '(a)') '  results (INCOMPLETE) '//path
+    end if
+  end subroutine print_summary
+end module scenarios_point_mass
