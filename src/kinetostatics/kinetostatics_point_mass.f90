@@ -70,7 +70,10 @@ contains
     if (n_norm > 1e-12_wp*dot_product(p%rv, p%rv)) then
       normal = sign(1.0_wp, self%sigma)*n/n_norm    ! thesis (3.38)
     else
-      ! r_u x r_v = 0: the frame's singular-point rule (3.39-3.40) gives the normal.
+      ! r_u x r_v = 0: the frame's singular-point rule (3.39-3.40) gives the
+      ! normal; its rates need third partials, so evaluate once more to order 3.
+      call self%surface%evaluate(y(1), y(2), 3, p, status)
+      if (.not. status%ok()) return
       call darboux_frame(p, self%sigma, self%alpha_u, self%alpha_v, frame, status)
       if (.not. status%ok()) return
       normal = frame%R(:, 3)
@@ -140,6 +143,8 @@ contains
     real(wp) :: normal(3), udd, vdd
 
     call dynamics(self, y, p, normal, udd, vdd, state%normal_force, state%friction_force, status)
+    if (.not. status%ok()) return
+    call self%surface%evaluate(y(1), y(2), 3, p, status)   ! order 3: singular points need it
     if (.not. status%ok()) return
     call darboux_frame(p, self%sigma, self%alpha_u, self%alpha_v, frame, status)
     state%frame = frame%R
