@@ -5,7 +5,7 @@
 module io_hdf5
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
   use hdf5, only: hid_t, hsize_t, h5open_f, h5fcreate_f, h5fclose_f, H5F_ACC_TRUNC_F, &
-                  h5gcreate_f, h5gclose_f, h5lexists_f
+                  h5gcreate_f, h5gclose_f, h5lexists_f, h5eset_auto_f
   use h5lt, only: h5ltmake_dataset_double_f, h5ltset_attribute_string_f, &
                   h5ltmake_dataset_string_f, h5ltmake_dataset_int_f
   use base_kinds, only: wp
@@ -55,6 +55,7 @@ contains
       call set_status(status, STATUS_IO, 'cannot initialise the HDF5 library')
       return
     end if
+    call h5eset_auto_f(0, hdferr)   ! failures come back as statuses, not as HDF5's stack dumps
     call h5fcreate_f(self%temporary_path, H5F_ACC_TRUNC_F, self%file_id, hdferr)
     if (hdferr /= 0) then
       self%file_id = -1
