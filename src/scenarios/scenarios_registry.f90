@@ -3,14 +3,13 @@
 module scenarios_registry
   use, intrinsic :: iso_fortran_env, only: output_unit
   use base_status, only: status_t
+  use base_version, only: slidesim_version
   use io_input, only: input_text_t, load_input_file, input_from_text, check_choice
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
   implicit none (type, external)
   private
   public :: run_input_file, run_default, run_input, print_scenarios, default_input, slidesim_version
-
-  character(len=*), parameter :: slidesim_version = '0.1.0'
 
   character(len=*), parameter :: scenario_names(1) = [character(len=16) :: 'point_mass']
   character(len=*), parameter :: scenario_summaries(1) = [character(len=72) :: &
