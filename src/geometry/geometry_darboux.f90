@@ -26,6 +26,19 @@
 !> the ellipsoid and at the apex of the apex paraboloid approached from v > 0.)
 !> Its rates c, d are (A.5)-(A.7), the u and v derivatives of that field; they
 !> need r_uvv and r_vvv, so a singular point must be evaluated to order 3.
+!> The rule (3.40) gives the surface normal only where the v-curve's curvature
+!> vector is normal to the surface, and its rates c, d are the derivatives of
+!> the field (3.40), which equal the limits of the regular rates only where
+!> the v-curves are lines of curvature (e.g. a circular apex paraboloid, a
+!> sphere's poles); on the apex paraboloid with a /= b they differ.
+!> The optional rule SINGULAR_RULE_LIMIT instead takes the limit of (3.38) at
+!> a pole-type singularity, where r_u = 0 along the whole line v = v0
+!> (so r_uu = r_uuu = 0 there): with delta = v - v0,
+!>     r_u x r_v = delta [r_uv x r_v + delta (r_uvv x r_v/2 + r_uv x r_vv) + ...],
+!> so z_D = +-sigma (r_uv x r_v)/|...| with rates from the bracket's
+!> derivatives r_uuv x r_v (in u) and r_uvv x r_v/2 + r_uv x r_vv (in v). The
+!> sign is the one of the side (3.40) points to. Frame and rates are then the
+!> limits of the regular ones (to O(delta) at points below the threshold).
 !> x_D is (3.41) projected onto the plane normal to z_D (it differs from it
 !> only by O(singular_tol)), so the frame stays orthonormal.
 !>
@@ -41,6 +54,10 @@ module geometry_darboux
   implicit none (type, external)
   private
   public :: darboux_frame_t, darboux_frame, singular_tol
+  public :: SINGULAR_RULE_THESIS, SINGULAR_RULE_LIMIT
+
+  !> Singular-point rules: (3.40) with appendix A (default), or the limit of (3.38).
+  integer, parameter :: SINGULAR_RULE_THESIS = 1, SINGULAR_RULE_LIMIT = 2
 
   !> |r_u| <= singular_tol |r_v| selects the singular-point rule (see above).
   real(wp), parameter :: singular_tol = sqrt(epsilon(1.0_wp))
@@ -50,7 +67,7 @@ module geometry_darboux
     real(wp) :: r(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
     !> Rates (3.45): x_u, x_v, z_u, z_v, y_u, y_v (1/unit of u or v).
     real(wp) :: a(3) = 0, b(3) = 0, c(3) = 0, d(3) = 0, e(3) = 0, f(3) = 0
-    !> The singular-point rule (3.40) was used.
+    !> A singular-point rule was used (|r_u| <= singular_tol |r_v|).
     logical :: singular = .false.
     !> The second derivatives below are filled (order-3 point, regular).
     logical :: second_order = .false.
@@ -65,15 +82,18 @@ contains
   !> points and for the second derivatives). sigma /= 0 orients z_D (3.38);
   !> alpha_u, alpha_v choose x_D (3.41). Fails (STATUS_DOMAIN) where r_u and r_v
   !> are parallel or both zero, where x_D is undefined (alpha_u r_u + alpha_v r_v
-  !> = 0) or where the rule (3.40) is undefined (r_vv parallel to r_v).
-  pure subroutine darboux_frame(p, sigma, alpha_u, alpha_v, frame, status)
+  !> = 0) or where the singular rule is undefined (r_vv parallel to r_v for
+  !> (3.40), r_uv parallel to r_v for the limit rule). singular_rule selects
+  !> SINGULAR_RULE_THESIS (default) or SINGULAR_RULE_LIMIT (see above).
+  pure subroutine darboux_frame(p, sigma, alpha_u, alpha_v, frame, status, singular_rule)
     type(surface_point_t), intent(in) :: p
     real(wp), intent(in) :: sigma, alpha_u, alpha_v
     type(darboux_frame_t), intent(out) :: frame
     type(status_t), intent(out) :: status
-    real(wp) :: w(3), wu(3), wv(3), wuu(3), wuv(3), wvv(3)
+    integer, intent(in), optional :: singular_rule
+    real(wp) :: w(3), wu(3), wv(3), wuu(3), wuv(3), wvv(3), w340(3)
     real(wp) :: x(3), y(3), z(3), norm_ru, norm_rv
-    logical :: second
+    logical :: second, limit_rule
 
     wuu = 0; wuv = 0; wvv = 0
     if (p%order < 2) then
@@ -84,6 +104,14 @@ contains
     if (sigma == 0) then
       call set_status(status, STATUS_INVALID_INPUT, 'Darboux frame: sigma = 0 is not allowed')
       return
+    end if
+    limit_rule = .false.
+    if (present(singular_rule)) then
+      if (singular_rule /= SINGULAR_RULE_THESIS .and. singular_rule /= SINGULAR_RULE_LIMIT) then
+        call set_status(status, STATUS_INVALID_INPUT, 'Darboux frame: unknown singular_rule')
+        return
+      end if
+      limit_rule = singular_rule == SINGULAR_RULE_LIMIT
     end if
     norm_ru = norm2(p%ru)
     norm_rv = norm2(p%rv)
@@ -107,7 +135,7 @@ contains
         wvv = sigma*(cross(p%ruvv, p%rv) + 2*cross(p%ruv, p%rvv) + cross(p%ru, p%rvvv))
       end if
     else
-      ! thesis (3.40), (A.1); rates (A.3), (A.5)-(A.7)
+      ! thesis (3.40), (A.1); rates (A.3), (A.5)-(A.7); or the limit rule
       if (norm_rv == 0) then
         call set_status(status, STATUS_DOMAIN, &
                         'Darboux frame: r_u = 0 and r_v = 0; the frame is undefined')
@@ -118,16 +146,31 @@ contains
                         'needs the surface point evaluated to order 3')
         return
       end if
-      w = sigma*cross(p%rv, cross(p%rv, p%rvv))
-      if (norm2(w) <= singular_tol*abs(sigma)*norm_rv**2*norm2(p%rvv)) then
-        call set_status(status, STATUS_DOMAIN, 'Darboux frame: singular point (r_u = 0) where ' // &
-                        'r_vv is parallel to r_v; the rule (3.40) is undefined')
-        return
+      w340 = sigma*cross(p%rv, cross(p%rv, p%rvv))
+      if (limit_rule) then
+        w = sigma*cross(p%ruv, p%rv)
+        if (norm2(w) <= singular_tol*abs(sigma)*norm2(p%ruv)*norm_rv) then
+          call set_status(status, STATUS_DOMAIN, 'Darboux frame: singular point (r_u = 0) where ' // &
+                          'r_uv is parallel to r_v; the limit of the normal is undefined')
+          return
+        end if
+        wu = sigma*cross(p%ruuv, p%rv)
+        wv = sigma*(cross(p%ruvv, p%rv)/2 + cross(p%ruv, p%rvv))
+        if (dot_product(w, w340) < 0) then
+          w = -w; wu = -wu; wv = -wv
+        end if
+      else
+        w = w340
+        if (norm2(w) <= singular_tol*abs(sigma)*norm_rv**2*norm2(p%rvv)) then
+          call set_status(status, STATUS_DOMAIN, 'Darboux frame: singular point (r_u = 0) where ' // &
+                          'r_vv is parallel to r_v; the rule (3.40) is undefined')
+          return
+        end if
+        wu = sigma*(cross(p%ruv, cross(p%rv, p%rvv)) + &
+                    cross(p%rv, cross(p%ruv, p%rvv) + cross(p%rv, p%ruvv)))   ! c_1 of (A.3)
+        wv = sigma*(cross(p%rvv, cross(p%rv, p%rvv)) + &
+                    cross(p%rv, cross(p%rv, p%rvvv)))                          ! d_1 of (A.3)
       end if
-      wu = sigma*(cross(p%ruv, cross(p%rv, p%rvv)) + &
-                  cross(p%rv, cross(p%ruv, p%rvv) + cross(p%rv, p%ruvv)))   ! c_1 of (A.3)
-      wv = sigma*(cross(p%rvv, cross(p%rv, p%rvv)) + &
-                  cross(p%rv, cross(p%rv, p%rvvv)))                          ! d_1 of (A.3)
     end if
     call unit_and_derivatives(w, wu, wv, wuu, wuv, wvv, second, z, frame%c, frame%d, &
                               frame%c_u, frame%c_v, frame%d_v)

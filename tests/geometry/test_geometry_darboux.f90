@@ -4,8 +4,8 @@
 !> scattered points, and the singular-point rule at the apex of the apex
 !> paraboloid and the poles of a sphere.
 !> A test surface with r_u = 0 along v = 0 and r_uvv /= 0 there, to exercise
-!> every term of the singular rates (A.3) (also r_vvv /= 0):
-!> r = [v cos u + k v^2 cos 2u, v sin u, v^2 + m v^3].
+!> every term of the singular rates (r_uvv with a normal part, r_vvv /= 0):
+!> r = [v cos u + k v^2 cos 2u, v sin u, v^2 (1 + q cos 2u) + m v^3].
 module test_geometry_darboux_surfaces
   use base_kinds, only: wp
   use base_status, only: status_t
@@ -15,7 +15,7 @@ module test_geometry_darboux_surfaces
   public :: twisted_apex_t
 
   type, extends(surface_t) :: twisted_apex_t
-    real(wp) :: k = 0.3_wp, m = 0.5_wp
+    real(wp) :: k = 0.3_wp, m = 0.5_wp, q = 0.4_wp
   contains
     procedure :: evaluate => twisted_evaluate
   end type twisted_apex_t
@@ -28,20 +28,21 @@ contains
     integer, intent(in) :: order
     type(surface_point_t), intent(out) :: p
     type(status_t), intent(out) :: status
-    real(wp) :: cu, su, c2, s2, k
+    real(wp) :: cu, su, c2, s2, k, g, gu, guu, guuu
     status%code = 0
     k = self%k
     cu = cos(u); su = sin(u); c2 = cos(2*u); s2 = sin(2*u)
+    g = 1 + self%q*c2; gu = -2*self%q*s2; guu = -4*self%q*c2; guuu = 8*self%q*s2
     p%order = order
-    p%r = [v*cu + k*v**2*c2, v*su, v**2 + self%m*v**3]
-    p%ru = [-v*su - 2*k*v**2*s2, v*cu, 0.0_wp]
-    p%rv = [cu + 2*k*v*c2, su, 2*v + 3*self%m*v**2]
-    p%ruu = [-v*cu - 4*k*v**2*c2, -v*su, 0.0_wp]
-    p%ruv = [-su - 4*k*v*s2, cu, 0.0_wp]
-    p%rvv = [2*k*c2, 0.0_wp, 2 + 6*self%m*v]
-    p%ruuu = [v*su + 8*k*v**2*s2, -v*cu, 0.0_wp]
-    p%ruuv = [-cu - 8*k*v*c2, -su, 0.0_wp]
-    p%ruvv = [-4*k*s2, 0.0_wp, 0.0_wp]
+    p%r = [v*cu + k*v**2*c2, v*su, v**2*g + self%m*v**3]
+    p%ru = [-v*su - 2*k*v**2*s2, v*cu, v**2*gu]
+    p%rv = [cu + 2*k*v*c2, su, 2*v*g + 3*self%m*v**2]
+    p%ruu = [-v*cu - 4*k*v**2*c2, -v*su, v**2*guu]
+    p%ruv = [-su - 4*k*v*s2, cu, 2*v*gu]
+    p%rvv = [2*k*c2, 0.0_wp, 2*g + 6*self%m*v]
+    p%ruuu = [v*su + 8*k*v**2*s2, -v*cu, v**2*guuu]
+    p%ruuv = [-cu - 8*k*v*c2, -su, 2*v*guu]
+    p%ruvv = [-4*k*s2, 0.0_wp, 2*gu]
     p%rvvv = [0.0_wp, 0.0_wp, 6*self%m]
   end subroutine twisted_evaluate
 end module test_geometry_darboux_surfaces
@@ -56,7 +57,8 @@ program test_geometry_darboux
                                  apex_paraboloid_t
   use geometry_placed_surface, only: placed_surface_t
   use geometry_differential, only: unit_normal
-  use geometry_darboux, only: darboux_frame_t, darboux_frame, singular_tol
+  use geometry_darboux, only: darboux_frame_t, darboux_frame, singular_tol, SINGULAR_RULE_LIMIT, &
+                              SINGULAR_RULE_THESIS
   use test_geometry_darboux_surfaces, only: twisted_apex_t
   use testing, only: check, check_close, check_close_array, finish_tests
   implicit none (type, external)
@@ -102,6 +104,10 @@ program test_geometry_darboux
   call check_apex_singular()
   call check_twisted_singular()
   call check_sphere_poles()
+  call check_limit_rule(apex, 0.0_wp, 1.0_wp, 'limit rule, apex paraboloid a /= b')
+  call check_limit_rule(twisted, 0.0_wp, 1.0_wp, 'limit rule, twisted apex')
+  call check_limit_rule(ellipsoid, half_pi, -1.0_wp, 'limit rule, ellipsoid north pole')
+  call check_limit_rule(ellipsoid, -half_pi, 1.0_wp, 'limit rule, ellipsoid south pole')
   call check_errors()
 
   call finish_tests('test_geometry_darboux')
@@ -309,6 +315,41 @@ contains
     end do
   end subroutine check_sphere_poles
 
+  !> SINGULAR_RULE_LIMIT: frame and all rates at the singular line v = v0 are
+  !> the limits of the regular ones approached from the side `inward`; the
+  !> regular frame at distance 1e-7 differs by O(1e-7 S) <= 1e-6, hence 1e-5.
+  subroutine check_limit_rule(s, v0, inward, name)
+    class(surface_t), intent(in) :: s
+    real(wp), intent(in) :: v0, inward
+    character(len=*), intent(in) :: name
+    type(surface_point_t) :: p
+    type(darboux_frame_t) :: fr, near, thesis
+    real(wp) :: u, sigma
+    integer :: k
+    character(len=60) :: at
+    do k = 1, n_points
+      u = two_pi*modulo(0.15_wp + k*0.6180339887498949_wp, 1.0_wp)
+      sigma = merge(1.0_wp, -0.5_wp, modulo(k, 3) /= 0)
+      write (at, '(a, f8.4, a, f5.1)') ' at u = ', u, ', sigma = ', sigma
+      call s%evaluate(u, v0, 3, p, st)
+      call darboux_frame(p, sigma, 0.3_wp, 1.0_wp, fr, st, singular_rule=SINGULAR_RULE_LIMIT)
+      call check(st%ok() .and. fr%singular, name // ': singular' // at // ' ' // st%text())
+      call darboux_frame(p, sigma, 0.3_wp, 1.0_wp, thesis, st, singular_rule=SINGULAR_RULE_THESIS)
+      call check(dot_product(fr%r(:, 3), thesis%r(:, 3)) > 0, name // ': same side as (3.40)' // at)
+      call check_close_array(reshape(matmul(transpose(fr%r), fr%r), [9]), &
+                             [1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], &
+                             0.0_wp, exact_tol, name // ': R^T R = I' // at)
+      call s%evaluate(u, v0 + inward*1e-7_wp, 3, p, st)
+      call darboux_frame(p, sigma, 0.3_wp, 1.0_wp, near, st)
+      call check(st%ok() .and. .not. near%singular, name // ': regular nearby' // at)
+      call check_close_array(reshape(fr%r, [9]), reshape(near%r, [9]), 0.0_wp, 1e-5_wp, &
+                             name // ': frame is the limit' // at)
+      call check_close_array([fr%a, fr%b, fr%c, fr%d, fr%e, fr%f], &
+                             [near%a, near%b, near%c, near%d, near%e, near%f], 0.0_wp, 1e-5_wp, &
+                             name // ': rates a-f are the limit' // at)
+    end do
+  end subroutine check_limit_rule
+
   subroutine check_errors()
     type(surface_point_t) :: p
     type(darboux_frame_t) :: fr
@@ -334,5 +375,7 @@ contains
     call darboux_frame(p, 1.0_wp, 1.0_wp, 0.0_wp, fr, st)
     call check(st%code == STATUS_DOMAIN .and. index(st%text(), 'x_D') > 0, &
                'singular point with alpha_v = 0 refused: ' // st%text())
+    call darboux_frame(p, 1.0_wp, 1.0_wp, 1.0_wp, fr, st, singular_rule=7)
+    call check(st%code == STATUS_INVALID_INPUT, 'unknown singular_rule refused: ' // st%text())
   end subroutine check_errors
 end program test_geometry_darboux
