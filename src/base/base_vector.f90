@@ -72,7 +72,10 @@ contains
   !> Cardan angles: R = Rx(a1) Ry(a2) Rz(a3) (rotations about the moving x, y', z'').
   pure function rotation_xyz(angles) result(r)
     real(wp), intent(in) :: angles(3)
-    real(wp) :: r(3, 3)
-    r = matmul(rot_x(angles(1)), matmul(rot_y(angles(2)), rot_z(angles(3))))
+    real(wp) :: r(3, 3), rx(3, 3), ry(3, 3), rz(3, 3)
+    rx = rot_x(angles(1))
+    ry = rot_y(angles(2))
+    rz = rot_z(angles(3))
+    r = matmul(rx, matmul(ry, rz))
   end function rotation_xyz
 end module base_vector
