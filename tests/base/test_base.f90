@@ -1,0 +1,47 @@
+!> Vectors, rotations and the status convention.
+program test_base
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_status, only: status_t, set_status, prefix_status, STATUS_SOLVER
+  use base_vector, only: cross, skew, unit_vector, rot_x, rot_y, rot_z, rotation_xyz, identity3, outer3
+  use testing, only: check, check_close, check_close_array, finish_tests
+  implicit none (type, external)
+
+  real(wp), parameter :: tol = 1e-15_wp   ! a few roundings of O(1) numbers
+  real(wp) :: a(3), b(3), r(3, 3), angles(3), s(3, 3), rx(3, 3), ry(3, 3), rz(3, 3)
+  type(status_t) :: status
+
+  a = [0.3_wp, -1.2_wp, 2.0_wp]
+  b = [1.5_wp, 0.4_wp, -0.7_wp]
+  s = skew(a)
+  call check_close_array(cross(a, b), matmul(s, b), 0.0_wp, tol, 'skew(a) b = a x b')
+  call check_close(dot_product(cross(a, b), a), 0.0_wp, 0.0_wp, 4*tol, 'a x b is normal to a')
+  call check_close_array(cross([1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp]), [0.0_wp, 0.0_wp, 1.0_wp], &
+                         0.0_wp, 0.0_wp, 'e1 x e2 = e3')
+  call check_close(norm2(unit_vector(a)), 1.0_wp, tol, 0.0_wp, 'unit vector')
+  call check(all(unit_vector([0.0_wp, 0.0_wp, 0.0_wp]) == 0), 'zero stays zero')
+  call check_close_array(reshape(outer3(a, b), [9]), [&
+                         a*b(1), a*b(2), a*b(3)], 0.0_wp, 0.0_wp, 'outer product columns')
+
+  ! Rotations: orthonormal, determinant 1, a quarter turn about z maps x to y.
+  rx = rot_x(pi/2); ry = rot_y(pi/2); rz = rot_z(pi/2)
+  call check_close_array(rz(:, 1), [0.0_wp, 1.0_wp, 0.0_wp], 0.0_wp, tol, 'Rz(90) x = y')
+  call check_close_array(rx(:, 2), [0.0_wp, 0.0_wp, 1.0_wp], 0.0_wp, tol, 'Rx(90) y = z')
+  call check_close_array(ry(:, 3), [1.0_wp, 0.0_wp, 0.0_wp], 0.0_wp, tol, 'Ry(90) z = x')
+  angles = [0.4_wp, -1.1_wp, 2.3_wp]
+  r = rotation_xyz(angles)
+  call check_close_array(reshape(matmul(transpose(r), r), [9]), reshape(identity3(), [9]), 0.0_wp, 4*tol, &
+                         'R^T R = I')
+  rx = rot_x(angles(1)); ry = rot_y(angles(2)); rz = rot_z(angles(3))
+  s = matmul(matmul(rx, ry), rz)
+  call check_close_array(reshape(r, [9]), reshape(s, [9]), 0.0_wp, 4*tol, 'Cardan order x, y, z')
+  ! Rotation of a cross product: R(a x b) = (R a) x (R b) (proper rotation).
+  call check_close_array(matmul(r, cross(a, b)), cross(matmul(r, a), matmul(r, b)), 0.0_wp, 20*tol, &
+                         'rotations keep handedness')
+
+  call check(status%ok() .and. status%text() == 'ok', 'fresh status is ok')
+  call set_status(status, STATUS_SOLVER, 'diverged')
+  call prefix_status(status, 'loop 2')
+  call check(.not. status%ok() .and. status%text() == 'loop 2: diverged', 'message with context: '//status%text())
+  call finish_tests('test_base')
+end program test_base
