@@ -179,7 +179,7 @@ contains
   !> Minimizes 0.5 sum r(p)^2, m residuals, within lower <= p <= upper (use
   !> -huge/huge where unbounded). p: in the start (moved into the box if outside),
   !> out the optimum.
-  subroutine solve_least_squares(problem, m, p, lower, upper, options, result, status)
+  recursive subroutine solve_least_squares(problem, m, p, lower, upper, options, result, status)
     class(least_squares_problem_t), intent(inout), target :: problem
     integer, intent(in) :: m
     real(wp), intent(inout) :: p(:)

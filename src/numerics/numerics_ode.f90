@@ -120,6 +120,7 @@ module numerics_ode
     integer(c_int), allocatable :: roots_found(:)
     integer :: n = 0
     real(wp) :: t = 0                           !< time of the state in y
+    type(ode_stats_t) :: before_restarts        !< counts of the runs before CVodeReInit (which zeroes them)
   contains
     procedure :: start => ode_start
     procedure :: advance => ode_advance
@@ -160,11 +161,22 @@ contains
     real(wp), intent(in) :: t0, y0(:)
     type(ode_options_t), intent(in) :: options
     type(status_t), intent(out) :: status
+
+    call self%destroy()
+    call set_up(self, system, t0, y0, options, status)
+    if (.not. status%ok()) call self%destroy()   ! never leave a half-made integrator
+  end subroutine ode_start
+
+  subroutine set_up(self, system, t0, y0, options, status)
+    class(ode_integrator_t), intent(inout), target :: self
+    class(ode_system_t), intent(inout), target :: system
+    real(wp), intent(in) :: t0, y0(:)
+    type(ode_options_t), intent(in) :: options
+    type(status_t), intent(out) :: status
     integer(c_int) :: flag, lmm
     integer :: nroots
     real(c_double), pointer :: v(:)
 
-    call self%destroy()
     nroots = system%root_count()
     call check_options(size(y0), nroots, options, status)
     if (.not. status%ok()) return
@@ -252,7 +264,7 @@ contains
       call cvode_status(flag, 'CVodeRootInit', t0, self%link, status)
       if (.not. status%ok()) return
     end if
-  end subroutine ode_start
+  end subroutine set_up
 
   !> Integrates toward t_out. Returns the time reached `t` (t_out unless a root
   !> or the stop time came first, or on failure the last time reached) and y(t).
@@ -329,6 +341,7 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'ODE restart: y0 has the wrong size or is not finite')
       return
     end if
+    self%before_restarts = self%statistics()
     v => FN_VGetArrayPointer(self%y)
     v = y0
     self%t = t0
@@ -351,7 +364,8 @@ contains
     call cvode_status(flag, 'CVodeSetStopTime', self%t, self%link, status)
   end subroutine ode_set_stop_time
 
-  !> Counters since start (CVODE keeps them across restarts).
+  !> Counters since start, summed over restarts; last_step and last_order are
+  !> those of the latest step.
   function ode_statistics(self) result(stats)
     class(ode_integrator_t), intent(in) :: self
     type(ode_stats_t) :: stats
@@ -360,21 +374,24 @@ contains
     real(c_double) :: h(1)
 
     if (.not. c_associated(self%cvode)) return
+    stats = self%before_restarts
     flag = FCVodeGetNumSteps(self%cvode, count)
-    stats%steps = count(1)
+    stats%steps = stats%steps + count(1)
     flag = FCVodeGetNumRhsEvals(self%cvode, count)
     extra = 0
     if (associated(self%linear_solver)) flag = FCVodeGetNumLinRhsEvals(self%cvode, extra)
-    stats%rhs_evaluations = count(1) + extra(1)
+    stats%rhs_evaluations = stats%rhs_evaluations + count(1) + extra(1)
     flag = FCVodeGetNumErrTestFails(self%cvode, count)
-    stats%error_test_failures = count(1)
+    stats%error_test_failures = stats%error_test_failures + count(1)
     flag = FCVodeGetNumNonlinSolvConvFails(self%cvode, count)
-    stats%nonlinear_failures = count(1)
+    stats%nonlinear_failures = stats%nonlinear_failures + count(1)
     count = 0
     if (self%link%root_count > 0) flag = FCVodeGetNumGEvals(self%cvode, count)
-    stats%root_evaluations = count(1)
+    stats%root_evaluations = stats%root_evaluations + count(1)
+    h = 0
     flag = FCVodeGetLastStep(self%cvode, h)
     stats%last_step = h(1)
+    order = 0
     flag = FCVodeGetLastOrder(self%cvode, order)
     stats%last_order = order(1)
   end function ode_statistics
@@ -396,6 +413,7 @@ contains
     if (allocated(self%link)) deallocate (self%link)
     if (allocated(self%roots_found)) deallocate (self%roots_found)
     self%n = 0
+    self%before_restarts = ode_stats_t()
   end subroutine ode_destroy
 
   subroutine ode_finalize(self)

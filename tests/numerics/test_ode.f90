@@ -99,7 +99,7 @@ contains
 end module test_ode_systems
 
 program test_ode
-  use base_kinds, only: wp, int64
+  use base_kinds, only: wp
   use base_constants, only: pi
   use base_status, only: status_t, STATUS_SOLVER, STATUS_DOMAIN, STATUS_INVALID_INPUT, &
     STATUS_INTERNAL
@@ -231,6 +231,7 @@ contains
     type(ode_integrator_t) :: ode
     type(ode_options_t) :: options
     type(status_t) :: status
+    type(ode_stats_t) :: first, last
     real(wp) :: t, y(2), t_ref, v1
     logical :: found
     integer :: index(1), k
@@ -245,10 +246,16 @@ contains
       call check(status%ok() .and. found .and. index(1) == -1, 'ball impact found')
       call check_close(t, t_ref, 0.0_wp, t_tol, 'bounce time vs closed form')
       call check_close(y(2), -e**(k - 1)*v1, 1e-9_wp, 0.0_wp, 'impact speed vs closed form')
+      if (k == 1) first = ode%statistics()
       call ode%restart(t, [0.0_wp, -e*y(2)], status)
       call check(status%ok(), 'ball restart: '//status%text())
       t_ref = t_ref + 2*e**k*v1/ball%gravity
     end do
+    ! CVodeReInit zeroes CVODE's counters; the integrator's statistics must sum the
+    ! six flights (each needs a similar number of steps), not show the last one only.
+    last = ode%statistics()
+    call check(last%steps > 2*first%steps .and. last%rhs_evaluations > 2*first%rhs_evaluations .and. &
+      last%root_evaluations > 2*first%root_evaluations, 'statistics summed over restarts')
   end subroutine bouncing_ball
 
   !> max_steps = 5 cannot reach t = 10: CVODE's CV_TOO_MUCH_WORK with its message.
