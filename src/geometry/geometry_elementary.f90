@@ -14,6 +14,7 @@ module geometry_elementary
   use base_constants, only: half_pi, two_pi
   use base_vector, only: cross
   use geometry_surface, only: surface_t, surface_point_t
+  use base_text, only: format_real, format_vector
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none (type, external)
   private
@@ -114,17 +115,17 @@ contains
     type(plane_t) :: s
     real(wp) :: ab(3), ac(3), scale
     if (.not. all(ieee_is_finite(point_a))) then
-      call set_status(status, STATUS_INVALID_INPUT, 'plane: point A = ' // vec_text(point_a) // &
+      call set_status(status, STATUS_INVALID_INPUT, 'plane: point A = ' // format_vector(point_a) // &
                       ' is not finite')
       return
     end if
     if (.not. all(ieee_is_finite(point_b))) then
-      call set_status(status, STATUS_INVALID_INPUT, 'plane: point B = ' // vec_text(point_b) // &
+      call set_status(status, STATUS_INVALID_INPUT, 'plane: point B = ' // format_vector(point_b) // &
                       ' is not finite')
       return
     end if
     if (.not. all(ieee_is_finite(point_c))) then
-      call set_status(status, STATUS_INVALID_INPUT, 'plane: point C = ' // vec_text(point_c) // &
+      call set_status(status, STATUS_INVALID_INPUT, 'plane: point C = ' // format_vector(point_c) // &
                       ' is not finite')
       return
     end if
@@ -132,21 +133,21 @@ contains
     ac = point_c - point_a
     scale = max(norm2(point_a), norm2(point_b), norm2(point_c))
     if (norm2(ab) <= coincident_tol*scale) then
-      call set_status(status, STATUS_INVALID_INPUT, 'plane: points A = ' // vec_text(point_a) // &
-                      ' and B = ' // vec_text(point_b) // ' coincide; need three distinct points')
+      call set_status(status, STATUS_INVALID_INPUT, 'plane: points A = ' // format_vector(point_a) // &
+                      ' and B = ' // format_vector(point_b) // ' coincide; need three distinct points')
       return
     end if
     if (norm2(ac) <= coincident_tol*scale) then
-      call set_status(status, STATUS_INVALID_INPUT, 'plane: points A = ' // vec_text(point_a) // &
-                      ' and C = ' // vec_text(point_c) // ' coincide; need three distinct points')
+      call set_status(status, STATUS_INVALID_INPUT, 'plane: points A = ' // format_vector(point_a) // &
+                      ' and C = ' // format_vector(point_c) // ' coincide; need three distinct points')
       return
     end if
     s%origin = point_a
     s%e_u = ab/norm2(ab)
     s%e_v = ac/norm2(ac)
     if (norm2(cross(s%e_u, s%e_v)) <= collinear_tol) then
-      call set_status(status, STATUS_INVALID_INPUT, 'plane: points A = ' // vec_text(point_a) // &
-                      ', B = ' // vec_text(point_b) // ', C = ' // vec_text(point_c) // &
+      call set_status(status, STATUS_INVALID_INPUT, 'plane: points A = ' // format_vector(point_a) // &
+                      ', B = ' // format_vector(point_b) // ', C = ' // format_vector(point_c) // &
                       ' are collinear; they must span a plane')
       return
     end if
@@ -172,7 +173,7 @@ contains
     call check_positive('paraboloid', 'a', a, status); if (.not. status%ok()) return
     call check_positive('paraboloid', 'b', b, status); if (.not. status%ok()) return
     if (c /= 1 .and. c /= -1) then
-      call set_status(status, STATUS_INVALID_INPUT, 'paraboloid: c = ' // num_text(c) // &
+      call set_status(status, STATUS_INVALID_INPUT, 'paraboloid: c = ' // format_real(c) // &
                       ' is not allowed; use +1 (elliptic) or -1 (hyperbolic)')
       return
     end if
@@ -205,10 +206,10 @@ contains
     type(status_t), intent(out) :: status
     if (.not. ieee_is_finite(x)) then
       call set_status(status, STATUS_INVALID_INPUT, surface // ': ' // name // ' = ' // &
-                      num_text(x) // ' is not finite; it must be a finite length > 0 (m)')
+                      format_real(x) // ' is not finite; it must be a finite length > 0 (m)')
     else if (x <= 0) then
       call set_status(status, STATUS_INVALID_INPUT, surface // ': ' // name // ' = ' // &
-                      num_text(x) // ' is not allowed; it must be > 0 (m)')
+                      format_real(x) // ' is not allowed; it must be > 0 (m)')
     end if
   end subroutine check_positive
 
@@ -396,15 +397,15 @@ contains
   pure function plane_describe(self) result(text)
     class(plane_t), intent(in) :: self
     character(len=:), allocatable :: text
-    text = 'plane through ' // vec_text(self%origin) // ' spanned by ' // vec_text(self%e_u) // &
-           ' and ' // vec_text(self%e_v)
+    text = 'plane through ' // format_vector(self%origin) // ' spanned by ' // format_vector(self%e_u) // &
+           ' and ' // format_vector(self%e_v)
   end function plane_describe
 
   pure function ellipsoid_describe(self) result(text)
     class(ellipsoid_t), intent(in) :: self
     character(len=:), allocatable :: text
-    text = 'ellipsoid a = ' // num_text(self%a) // ' m, b = ' // num_text(self%b) // &
-           ' m, c = ' // num_text(self%c) // ' m'
+    text = 'ellipsoid a = ' // format_real(self%a) // ' m, b = ' // format_real(self%b) // &
+           ' m, c = ' // format_real(self%c) // ' m'
   end function ellipsoid_describe
 
   pure function paraboloid_describe(self) result(text)
@@ -415,34 +416,20 @@ contains
     else
       text = 'hyperbolic paraboloid'
     end if
-    text = text // ' a = ' // num_text(self%a) // ' m, b = ' // num_text(self%b) // ' m'
+    text = text // ' a = ' // format_real(self%a) // ' m, b = ' // format_real(self%b) // ' m'
   end function paraboloid_describe
 
   pure function cylinder_describe(self) result(text)
     class(elliptic_cylinder_t), intent(in) :: self
     character(len=:), allocatable :: text
-    text = 'elliptic cylinder a = ' // num_text(self%a) // ' m, b = ' // num_text(self%b) // ' m'
+    text = 'elliptic cylinder a = ' // format_real(self%a) // ' m, b = ' // format_real(self%b) // ' m'
   end function cylinder_describe
 
   pure function apex_describe(self) result(text)
     class(apex_paraboloid_t), intent(in) :: self
     character(len=:), allocatable :: text
-    text = 'paraboloid with singular apex a = ' // num_text(self%a) // ' m, b = ' // &
-           num_text(self%b) // ' m'
+    text = 'paraboloid with singular apex a = ' // format_real(self%a) // ' m, b = ' // &
+           format_real(self%b) // ' m'
   end function apex_describe
 
-  !> A number in short readable form (g0 drops trailing zeros of reals).
-  pure function num_text(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=40) :: buffer
-    write (buffer, '(g0)') x
-    text = trim(adjustl(buffer))
-  end function num_text
-
-  pure function vec_text(x) result(text)
-    real(wp), intent(in) :: x(3)
-    character(len=:), allocatable :: text
-    text = '(' // num_text(x(1)) // ', ' // num_text(x(2)) // ', ' // num_text(x(3)) // ')'
-  end function vec_text
 end module geometry_elementary

@@ -7,6 +7,7 @@ module io_input
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_IO
+  use base_text, only: format_real, format_vector, lower
   implicit none (type, external)
   private
   public :: input_text_t, load_input_file, input_from_text, line_length
@@ -240,63 +241,6 @@ contains
     call invalid(input, group, variable, "'"//trim(value)//"'", 'must be one of'//list, status)
   end subroutine check_choice
 
-  !> The shortest text that reads back as x (so messages show what was typed).
-  pure function format_real(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=40) :: buffer
-    real(wp) :: back
-    integer :: digits, ios, e
-    do digits = 1, 17
-      write (buffer, '(es40.' // digit_text(digits - 1) // ')') x
-      read (buffer, *, iostat=ios) back
-      if (ios == 0 .and. back == x) exit
-    end do
-    text = trim(adjustl(buffer))
-    if (.not. (abs(x) < huge(x))) then   ! NaN or Inf: as the compiler writes them
-      return
-    end if
-    ! Plain notation for moderate magnitudes: 2.5E+00 -> 2.5, 1.0E-03 stays.
-    e = exponent10(x)
-    if (e >= -3 .and. e <= 6) then
-      write (buffer, '(f40.' // digit_text(max(digits - 1 - e, 1)) // ')') x
-      text = trim(adjustl(buffer))
-      do while (len(text) > 2 .and. text(len(text):len(text)) == '0' .and. &
-                text(len(text) - 1:len(text) - 1) /= '.')
-        text = text(:len(text) - 1)
-      end do
-    end if
-  end function format_real
-
-  pure integer function exponent10(x)
-    real(wp), intent(in) :: x
-    if (x == 0) then
-      exponent10 = 0
-    else
-      exponent10 = floor(log10(abs(x)))
-    end if
-  end function exponent10
-
-  pure function digit_text(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=8) :: buffer
-    write (buffer, '(i0)') i
-    text = trim(buffer)
-  end function digit_text
-
-  pure function format_vector(x) result(text)
-    real(wp), intent(in) :: x(:)
-    character(len=:), allocatable :: text
-    integer :: i
-    text = '['
-    do i = 1, size(x)
-      text = text//format_real(x(i))
-      if (i < size(x)) text = text//', '
-    end do
-    text = text//']'
-  end function format_vector
-
   pure function itoa(i) result(text)
     integer, intent(in) :: i
     character(len=:), allocatable :: text
@@ -304,17 +248,6 @@ contains
     write (buffer, '(i0)') i
     text = trim(buffer)
   end function itoa
-
-  pure function lower(text) result(low)
-    character(len=*), intent(in) :: text
-    character(len=len(text)) :: low
-    integer :: i, c
-    low = text
-    do i = 1, len(text)
-      c = iachar(text(i:i))
-      if (c >= iachar('A') .and. c <= iachar('Z')) low(i:i) = achar(c + 32)
-    end do
-  end function lower
 
   pure function first_word(text) result(word)
     character(len=*), intent(in) :: text

@@ -1,0 +1,79 @@
+!> Numbers and words as text for messages: the shortest form that reads back
+!> exactly, so a message shows the value as the user typed it.
+module base_text
+  use base_kinds, only: wp
+  implicit none (type, external)
+  private
+  public :: format_real, format_vector, lower
+
+contains
+
+  !> The shortest text that reads back as x (so messages show what was typed).
+  pure function format_real(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=40) :: buffer
+    real(wp) :: back
+    integer :: digits, ios, e
+    do digits = 1, 17
+      write (buffer, '(es40.' // digit_text(digits - 1) // ')') x
+      read (buffer, *, iostat=ios) back
+      if (ios == 0 .and. back == x) exit
+    end do
+    text = trim(adjustl(buffer))
+    if (.not. (abs(x) < huge(x))) then   ! NaN or Inf: as the compiler writes them
+      return
+    end if
+    ! Plain notation for moderate magnitudes: 2.5E+00 -> 2.5, 1.0E-03 stays.
+    e = exponent10(x)
+    if (e >= -3 .and. e <= 6) then
+      write (buffer, '(f40.' // digit_text(max(digits - 1 - e, 1)) // ')') x
+      text = trim(adjustl(buffer))
+      do while (len(text) > 2 .and. text(len(text):len(text)) == '0' .and. &
+                text(len(text) - 1:len(text) - 1) /= '.')
+        text = text(:len(text) - 1)
+      end do
+    end if
+  end function format_real
+
+  pure integer function exponent10(x)
+    real(wp), intent(in) :: x
+    if (x == 0) then
+      exponent10 = 0
+    else
+      exponent10 = floor(log10(abs(x)))
+    end if
+  end function exponent10
+
+  pure function digit_text(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    character(len=8) :: buffer
+    write (buffer, '(i0)') i
+    text = trim(buffer)
+  end function digit_text
+
+  pure function format_vector(x) result(text)
+    real(wp), intent(in) :: x(:)
+    character(len=:), allocatable :: text
+    integer :: i
+    text = '['
+    do i = 1, size(x)
+      text = text//format_real(x(i))
+      if (i < size(x)) text = text//', '
+    end do
+    text = text//']'
+  end function format_vector
+
+  pure function lower(text) result(low)
+    character(len=*), intent(in) :: text
+    character(len=len(text)) :: low
+    integer :: i, c
+    low = text
+    do i = 1, len(text)
+      c = iachar(text(i:i))
+      if (c >= iachar('A') .and. c <= iachar('Z')) low(i:i) = achar(c + 32)
+    end do
+  end function lower
+
+end module base_text
