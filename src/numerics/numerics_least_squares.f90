@@ -236,8 +236,9 @@ contains
     type(least_squares_options_t), intent(in) :: options
     type(least_squares_result_t), intent(inout) :: result
     type(status_t), intent(out) :: status
-    real(wp), allocatable :: r(:), gradient(:)
-    integer :: n, i
+    real(wp), allocatable :: r(:), gradient(:), p_before(:), r_before(:)
+    logical, allocatable :: at_bound_before(:)
+    integer :: n, i, pass
     logical :: snapped
 
     n = size(p)
@@ -253,59 +254,73 @@ contains
     active%p = start_inside(p, lower, upper, active%kind)
     allocate (result%at_bound(n))
     result%at_bound = active%kind == KIND_FIXED
-    where (active%kind == KIND_FIXED) active%p = lower
 
-    call run_minpack(options, r, result, status)
-    if (.not. status%ok()) then
-      p = active%p
-      return
-    end if
+    call fit_free(options, r, result, status)
+    if (status%ok()) call original_jacobian(options, r, result, status)
 
-    ! Put optima that sit (nearly) on a bound, with the gradient pushing outward,
-    ! exactly on it, and fit the others again.
-    call original_jacobian(options, r, result, status)
-    if (.not. status%ok()) return
-    gradient = matmul(r, active%jac)   ! d(0.5 sum r^2)/dp
-    snapped = .false.
-    do i = 1, n
-      if (result%at_bound(i)) cycle
-      if (has_lower(active%kind(i))) then
-        if (active%p(i) - lower(i) <= options%bound_tolerance*max(1.0_wp, abs(lower(i))) &
-            .and. gradient(i) >= 0) then
-          active%p(i) = lower(i)
-          result%at_bound(i) = .true.
-          snapped = .true.
+    ! Put optima that sit (nearly) on a bound, with the gradient pushing outward
+    ! (Kuhn-Tucker), exactly on it and fit the others again; repeated because a
+    ! parameter may reach its bound only once another one is held.
+    do pass = 1, n
+      if (.not. status%ok()) exit
+      gradient = matmul(r, active%jac)   ! d(0.5 sum r^2)/dp
+      p_before = active%p
+      r_before = r
+      at_bound_before = result%at_bound
+      snapped = .false.
+      do i = 1, n
+        if (result%at_bound(i)) cycle
+        if (has_lower(active%kind(i))) then
+          if (active%p(i) - lower(i) <= options%bound_tolerance*max(1.0_wp, abs(lower(i))) &
+              .and. gradient(i) >= 0) then
+            active%p(i) = lower(i)
+            result%at_bound(i) = .true.
+          end if
         end if
-      end if
-      if (has_upper(active%kind(i)) .and. .not. result%at_bound(i)) then
-        if (upper(i) - active%p(i) <= options%bound_tolerance*max(1.0_wp, abs(upper(i))) &
-            .and. gradient(i) <= 0) then
-          active%p(i) = upper(i)
-          result%at_bound(i) = .true.
-          snapped = .true.
+        if (has_upper(active%kind(i)) .and. .not. result%at_bound(i)) then
+          if (upper(i) - active%p(i) <= options%bound_tolerance*max(1.0_wp, abs(upper(i))) &
+              .and. gradient(i) <= 0) then
+            active%p(i) = upper(i)
+            result%at_bound(i) = .true.
+          end if
         end if
-      end if
-    end do
-    if (snapped) then
-      if (.not. all(result%at_bound)) then
-        call run_minpack(options, r, result, status)
-      else
-        call evaluate_residuals(active%p, r, status)
-        result%evaluations = result%evaluations + 1
-      end if
-      if (.not. status%ok()) then
-        p = active%p
-        return
+        snapped = snapped .or. result%at_bound(i)
+      end do
+      if (.not. snapped) exit
+      call fit_free(options, r, result, status)
+      if (.not. status%ok()) exit
+      ! Moving downhill onto a bound cannot raise the cost beyond rounding; if it
+      ! did, the snap was wrong: keep the fit from before it.
+      if (sum(r**2) > sum(r_before**2)*(1 + 100*epsilon(1.0_wp)) + tiny(1.0_wp)) then
+        active%p = p_before
+        r = r_before
+        result%at_bound = at_bound_before
+        call original_jacobian(options, r, result, status)
+        exit
       end if
       call original_jacobian(options, r, result, status)
-      if (.not. status%ok()) return
-    end if
+    end do
 
     p = active%p
+    if (.not. status%ok()) return
     result%cost = 0.5_wp*sum(r**2)
     result%residual_norm = sqrt(sum(r**2))
     call covariance(m, r, result)
   end subroutine solve_active
+
+  !> Fits the parameters not at a bound (or only evaluates r if none is left).
+  subroutine fit_free(options, r, result, status)
+    type(least_squares_options_t), intent(in) :: options
+    real(wp), intent(inout) :: r(:)
+    type(least_squares_result_t), intent(inout) :: result
+    type(status_t), intent(out) :: status
+    if (all(result%at_bound)) then
+      call evaluate_residuals(active%p, r, status)
+      result%evaluations = result%evaluations + 1
+    else
+      call run_minpack(options, r, result, status)
+    end if
+  end subroutine fit_free
 
   !> One MINPACK solve over the parameters not at a bound, from active%p.
   !> On return active%p and r are at MINPACK's final point.

@@ -311,7 +311,7 @@ contains
     type(exp_fit_t) :: problem
     type(least_squares_result_t) :: result
     type(status_t) :: status
-    real(wp) :: p(3), e(21), s_ee, s_e, s_ey, s_y, det, a_ref, c_ref
+    real(wp) :: p(3), e(21), s_ee, s_e, s_ey, s_y, det, a_ref, c_ref, s2, cov(2, 2)
 
     problem = exp_problem()
     p = [1.0_wp, 1.5_wp, 0.0_wp]
@@ -335,6 +335,15 @@ contains
       name()//'zero covariance row and column for k')
     call check(result%standard_error(2) == 0 .and. result%standard_error(1) > 0, &
       name()//'standard errors: zero for k, positive for A')
+    ! With k held, the model is linear in (A, c): covariance s^2 (X^T X)^(-1) with
+    ! X = [exp(-0.8 t), 1] and s^2 = sum r^2 / (21 - 2). Relative 1e-9: the
+    ! central-difference Jacobian (LMDIF) is accurate to ~eps^(2/3) ~ 4e-11
+    ! relative, and s^2 is stationary at the optimum (known to ~1e-10).
+    s2 = sum((a_ref*e + c_ref - problem%y)**2)/(21 - 2)
+    cov = s2/det*reshape([21.0_wp, -s_e, -s_e, s_ee], [2, 2])
+    call check_close_array([result%covariance(1, 1), result%covariance(3, 1), result%covariance(1, 3), &
+      result%covariance(3, 3)], [cov(1, 1), cov(2, 1), cov(1, 2), cov(2, 2)], 1e-9_wp, 0.0_wp, &
+      name()//'covariance of (A, c) with k held at its bound')
   end subroutine exponential_fit_on_a_bound
 
   !> y = a + b x: the fit and its covariance s^2 (X^T X)^(-1), s^2 = sum r^2/(m - 2),
@@ -342,8 +351,8 @@ contains
   subroutine line_covariance()
     ! The fit is linear, so the optimum is found to rounding (~1e-14) after one
     ! Gauss-Newton step; differences of a linear model are exact up to rounding
-    ! eps/h ~ 1e-11 relative; 1e-8 leaves room for both.
-    real(wp), parameter :: rtol = 1e-8_wp
+    ! eps/h ~ 1e-11 relative; 1e-9 leaves room for both.
+    real(wp), parameter :: rtol = 1e-9_wp
     type(line_t) :: problem
     type(least_squares_result_t) :: result
     type(status_t) :: status
@@ -419,5 +428,11 @@ contains
                              result, status)
     call check(status%ok() .and. p(1) == 0.3_wp .and. result%at_bound(1), 'fixed parameter kept')
     call check_close(p(2), 0.09_wp, 0.0_wp, 1e-9_wp, 'fixed parameter: the other one fitted')
+    p = [0.0_wp, 0.0_wp]
+    call solve_least_squares(problem, 2, p, [0.3_wp, 0.1_wp], [0.3_wp, 0.1_wp], least_squares_options_t(), &
+                             result, status)
+    call check(status%ok() .and. all(p == [0.3_wp, 0.1_wp]) .and. all(result%at_bound), &
+      'all parameters fixed: nothing to fit, ok')
+    call check_close(result%cost, 0.5_wp*(0.1_wp**2 + 0.7_wp**2), 1e-14_wp, 0.0_wp, 'all fixed: cost')
   end subroutine failures
 end program test_least_squares
