@@ -280,6 +280,13 @@ contains
     call check(t > 0 .and. t < 10, 'time reached is returned on failure')
     ! The state returned is the solution at the time reached (rtol 1e-10 solve).
     call check_close(y(1), cos(2*t), 0.0_wp, 1e-8_wp, 'state at failure is the solution at t')
+
+    ! Tolerances below what double precision can deliver: CV_TOO_MUCH_ACC.
+    options = ode_options_t(rtol=0, atol=1e-30_wp)
+    call ode%start(system, 0.0_wp, [1.0_wp, 0.0_wp], options, status)
+    call ode%advance(10.0_wp, t, y, status)
+    call check(status%code == STATUS_SOLVER .and. index(status%text(), 'CV_TOO_MUCH_ACC') > 0, &
+      'too much accuracy named: '//status%text())
   end subroutine too_much_work
 
   !> y' = -1 from y = 1 leaves y > 0.5 at t = 0.5: the system's own status returns.
@@ -297,6 +304,11 @@ contains
     call check(status%text() == 'test system: y left the domain y > 0.5', &
       'message of the system comes back unchanged: '//status%text())
     call check(t <= 0.5_wp + 1e-9_wp .and. t > 0, 'stopped before leaving the domain')
+
+    ! Outside the domain from the start: CVODE's first call fails, same status.
+    call ode%start(system, 0.0_wp, [0.4_wp], options, status)
+    call ode%advance(2.0_wp, t, y, status)
+    call check(status%code == STATUS_DOMAIN .and. t == 0, 'status of a failing first call comes back')
   end subroutine system_status_comes_back
 
   subroutine stop_time_and_misuse()
