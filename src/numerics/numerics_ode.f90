@@ -17,6 +17,8 @@
 !>
 !> An integrator is not copyable: CVODE keeps the address of its link record.
 !> Keep one variable per integration; `destroy` (or going out of scope) frees it.
+!> The system is reached through a pointer: declare it `target` (or allocate it)
+!> and keep it alive while the integrator is used.
 module numerics_ode
   use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_int, c_long, c_double, &
     c_char, c_null_char, c_loc, c_funloc, c_f_pointer, c_associated
