@@ -207,7 +207,7 @@ pure subroutine fpdisc(t, n, k2, b, nest)
     do j = 1, k2
       jk = j
       prod = h(j)
-      do i = j, k
+      do i = 1, k
         jk = jk + 1
         prod = prod*h(jk)*fac
       end do

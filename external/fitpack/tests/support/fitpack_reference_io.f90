@@ -11,6 +11,7 @@ module fitpack_reference_io
   implicit none (type, external)
   private
   public :: reference_table_t, load_table, get_reals, get_int, get_real, has_key
+  public :: reference_path, expect, expect_close, expect_close_array, finish_checks
 
   type :: entry_t
     integer :: case_index = 0
@@ -24,6 +25,8 @@ module fitpack_reference_io
     type(entry_t), allocatable :: entries(:)
     integer :: n_entries = 0
   end type reference_table_t
+
+  integer :: n_checks = 0, n_failures = 0
 
 contains
 
@@ -153,4 +156,72 @@ contains
     call get_real(table, case_name, key, r, found)
     value = nint(r)
   end subroutine get_int
+
+  !> Path of table file `name` in the folder given as the first command-line argument.
+  function reference_path(name) result(path)
+    character(len=*), intent(in) :: name
+    character(len=:), allocatable :: path
+    character(len=1024) :: folder
+    integer :: length
+    call get_command_argument(1, folder, length)
+    if (length == 0) folder = 'tests/reference/fitpack'
+    path = trim(folder)//'/'//name
+  end function reference_path
+
+  !> Counts a check; prints what failed.
+  subroutine expect(condition, what)
+    logical, intent(in) :: condition
+    character(len=*), intent(in) :: what
+    n_checks = n_checks + 1
+    if (.not. condition) then
+      n_failures = n_failures + 1
+      print '(a)', 'FAIL: '//what
+    end if
+  end subroutine expect
+
+  !> |x - ref| <= atol + rtol |ref|
+  subroutine expect_close(x, ref, rtol, atol, what)
+    real(real64), intent(in) :: x, ref, rtol, atol
+    character(len=*), intent(in) :: what
+    n_checks = n_checks + 1
+    if (.not. (abs(x - ref) <= atol + rtol*abs(ref))) then
+      n_failures = n_failures + 1
+      print '(a, 3(a, es24.16))', 'FAIL: '//what, '  got ', x, '  expected ', ref, '  diff ', x - ref
+    end if
+  end subroutine expect_close
+
+  !> Element-wise |x - ref| <= atol + rtol |ref|; sizes must agree.
+  subroutine expect_close_array(x, ref, rtol, atol, what)
+    real(real64), intent(in) :: x(:), ref(:), rtol, atol
+    character(len=*), intent(in) :: what
+    integer :: i, worst
+    real(real64) :: excess, worst_excess
+    n_checks = n_checks + 1
+    if (size(x) /= size(ref)) then
+      n_failures = n_failures + 1
+      print '(a, 2i8)', 'FAIL: '//what//' size differs', size(x), size(ref)
+      return
+    end if
+    worst = 0
+    worst_excess = 0
+    do i = 1, size(x)
+      excess = abs(x(i) - ref(i)) - (atol + rtol*abs(ref(i)))
+      if (.not. (excess <= worst_excess)) then
+        worst = i
+        worst_excess = excess
+      end if
+    end do
+    if (worst > 0) then
+      n_failures = n_failures + 1
+      print '(a, i6, 3(a, es24.16))', 'FAIL: '//what//' at ', worst, '  got ', x(worst), &
+        '  expected ', ref(worst), '  diff ', x(worst) - ref(worst)
+    end if
+  end subroutine expect_close_array
+
+  !> Prints the summary and stops with status 1 if any check failed.
+  subroutine finish_checks(name)
+    character(len=*), intent(in) :: name
+    print '(a, i0, a, i0, a)', trim(name)//': ', n_checks - n_failures, ' of ', n_checks, ' checks passed'
+    if (n_failures > 0) error stop 1
+  end subroutine finish_checks
 end module fitpack_reference_io
