@@ -1,0 +1,410 @@
+!> Cross-sections s(u, v) = [0, s_y, s_z] of a tube in its moving frame
+!> (thesis 3.64-3.72, appendix C.3-C.4), with partial derivatives in u and v
+!> to total order 3.
+!>
+!> Orientation (thesis 4.2): a circle of radius r is s = [0, -r cos v, -r sin v];
+!> with the horizon pointing up, z of the frame points up, y to the left of the
+!> direction of travel, and v = pi/2 is the bottom of the tube.
+!>
+!> Variable sections blend n sections along u with logistic functions
+!> (3.69-3.72). The growth constant (3.72) is printed with the opposite sign;
+!> here xi = ln(0.99/0.01)/(u_99 - midpoint), so that Lambda(u_99) = 0.99 and
+!> the blend goes from section 0 to section n-1 as u grows (checked in tests).
+!> The weights are those of (3.69): w_0 = 1 - L_0, w_j = L_{j-1} (1 - L_j),
+!> w_{n-1} = L_{n-2}; they sum to 1 only where neighbouring transitions do not
+!> overlap (the sum is 1 + sum_j L_j (1 - L_{j-1})), so transitions should be
+!> separated by more than their widths.
+!>
+!> The open flume (the measured slide of chapter 4: a semicircle of radius
+!> 0.52 m with two straight walls of 0.164 m) is the same construction in v:
+!> the two wall lines and the circle, each extended beyond its joint, blended
+!> by logistic weights centred on the joints (v = 0 and v = pi). The result is
+!> C-infinity; it equals the exact profile to rounding outside the transition
+!> zones (|v - joint| > ~6 widths) and deviates from it by at most about
+!> r dv^2/2 inside (0.65 mm for the default 0.99-width dv = 0.05 rad).
+module geometry_cross_section
+  use base_kinds, only: wp
+  use base_constants, only: pi, two_pi
+  use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT
+  implicit none (type, external)
+  private
+  public :: cross_section_t, section_point_t, section_holder_t
+  public :: circle_section_t, ellipse_section_t, flume_section_t, blended_section_t
+  public :: logistic, logistic_rate, blend_weights, new_blended_section
+
+  !> s(:, i, j) = d^(i+j) [s_y, s_z] / du^i dv^j for i + j <= order.
+  type :: section_point_t
+    integer :: order = 0
+    real(wp) :: s(2, 0:3, 0:3) = 0
+  end type section_point_t
+
+  type, abstract :: cross_section_t
+  contains
+    procedure(section_evaluate_i), deferred :: evaluate
+    procedure(section_range_i), deferred :: v_range
+    procedure :: periodic => section_not_periodic
+    procedure :: extent => section_extent
+  end type cross_section_t
+
+  abstract interface
+    pure subroutine section_evaluate_i(self, u, v, order, p, status)
+      import :: cross_section_t, section_point_t, status_t, wp
+      class(cross_section_t), intent(in) :: self
+      real(wp), intent(in) :: u, v
+      integer, intent(in) :: order
+      type(section_point_t), intent(out) :: p
+      type(status_t), intent(out) :: status
+    end subroutine section_evaluate_i
+    pure subroutine section_range_i(self, v_min, v_max)
+      import :: cross_section_t, wp
+      class(cross_section_t), intent(in) :: self
+      real(wp), intent(out) :: v_min, v_max
+    end subroutine section_range_i
+  end interface
+
+  type :: section_holder_t
+    class(cross_section_t), allocatable :: section
+  end type section_holder_t
+
+  !> Circle s = [0, -r cos v, -r sin v] (thesis 4.2), v in [v_min, v_max] (rad).
+  type, extends(cross_section_t) :: circle_section_t
+    real(wp) :: radius = 0.5_wp          ! m
+    real(wp) :: v_min = 0, v_max = two_pi
+  contains
+    procedure :: evaluate => circle_evaluate
+    procedure :: v_range => circle_range
+    procedure :: periodic => circle_periodic
+  end type circle_section_t
+
+  !> Ellipse s = [0, -a cos v, -b sin v]: half-width a (m), half-height b (m).
+  type, extends(cross_section_t) :: ellipse_section_t
+    real(wp) :: a = 0.5_wp, b = 0.5_wp
+    real(wp) :: v_min = 0, v_max = two_pi
+  contains
+    procedure :: evaluate => ellipse_evaluate
+    procedure :: v_range => ellipse_range
+    procedure :: periodic => ellipse_periodic
+  end type ellipse_section_t
+
+  !> Open flume: semicircle of radius `radius` (v in [0, pi], bottom at pi/2)
+  !> continued by straight vertical walls of length `wall`; v in
+  !> [-wall/radius, pi + wall/radius] (the walls are parametrised at the same
+  !> speed r). `transition` is the 0.99-width of the logistic joints, rad.
+  type, extends(cross_section_t) :: flume_section_t
+    real(wp) :: radius = 0.52_wp         ! m
+    real(wp) :: wall = 0.164_wp          ! m
+    real(wp) :: transition = 0.05_wp     ! rad
+  contains
+    procedure :: evaluate => flume_evaluate
+    procedure :: v_range => flume_range
+  end type flume_section_t
+
+  !> n sections blended along u (3.69): transition j (between sections j-1 and
+  !> j) has its midpoint midpoint(j) and growth constant rate(j) (3.72).
+  type, extends(cross_section_t) :: blended_section_t
+    type(section_holder_t), allocatable :: sections(:)
+    real(wp), allocatable :: midpoint(:), rate(:)
+  contains
+    procedure :: evaluate => blended_evaluate
+    procedure :: v_range => blended_range
+    procedure :: periodic => blended_periodic
+    procedure :: extent => blended_extent
+  end type blended_section_t
+
+  integer, parameter :: binom(0:3, 0:3) = reshape([1, 0, 0, 0, 1, 1, 0, 0, 1, 2, 1, 0, 1, 3, 3, 1], [4, 4])
+
+contains
+
+  pure logical function section_not_periodic(self) result(periodic)
+    class(cross_section_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    periodic = .false.
+  end function section_not_periodic
+
+  !> Largest distance |s| of the section from the centerline at u (m), sampled
+  !> at 181 values of v (used to check that the tube does not fold).
+  pure function section_extent(self, u) result(r)
+    class(cross_section_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp) :: r
+    real(wp) :: a, b
+    type(section_point_t) :: p
+    type(status_t) :: st
+    integer :: i
+    call self%v_range(a, b)
+    r = 0
+    do i = 0, 180
+      call self%evaluate(u, a + (b - a)*i/180.0_wp, 0, p, st)
+      if (st%ok()) r = max(r, norm2(p%s(:, 0, 0)))
+    end do
+  end function section_extent
+
+  ! ---------------------------------------------------------------- logistic
+
+  !> Growth constant xi of the logistic function (3.71-3.72), chosen so that
+  !> Lambda(u_99) = 0.99 (sign: see the module header); 1/unit of u.
+  pure real(wp) function logistic_rate(midpoint, u_99) result(xi)
+    real(wp), intent(in) :: midpoint, u_99
+    xi = log(0.99_wp/0.01_wp)/(u_99 - midpoint)
+  end function logistic_rate
+
+  !> Lambda(u) = 1/(1 + exp(-xi (u - midpoint))) (3.70) and its derivatives
+  !> (C.38-C.40): lam(k) = d^k Lambda/du^k, k = 0..3. Evaluated without overflow.
+  pure subroutine logistic(u, midpoint, xi, lam)
+    real(wp), intent(in) :: u, midpoint, xi
+    real(wp), intent(out) :: lam(0:3)
+    real(wp) :: t, e, l, q
+    t = xi*(u - midpoint)
+    if (t >= 0) then
+      e = exp(-min(t, 700.0_wp))
+      l = 1/(1 + e)
+      q = e/(1 + e)          ! 1 - Lambda without cancellation
+    else
+      e = exp(max(t, -700.0_wp))
+      l = e/(1 + e)
+      q = 1/(1 + e)
+    end if
+    lam(0) = l
+    lam(1) = xi*l*q                                ! (C.38)
+    lam(2) = xi**2*l*q*(q - l)                     ! (C.39): 1 - 2 Lambda = q - l
+    lam(3) = xi**3*l*q*(1 - 6*l*q)                 ! (C.40): 1 - 6 L + 6 L^2 = 1 - 6 L q
+  end subroutine logistic
+
+  !> Blend weights of (3.69)/(3.79) and their derivatives from the n-1
+  !> logistic functions: lam(0:3, j) for transition j = 1..n-1;
+  !> w(0:3, j) for section/patch j = 1..n.
+  pure subroutine blend_weights(lam, w)
+    real(wp), intent(in) :: lam(0:, :)
+    real(wp), intent(out) :: w(0:, :)
+    integer :: n, j, k, m
+    real(wp) :: a(0:3), b(0:3)
+    n = size(w, 2)
+    w = 0
+    if (n == 1) then
+      w(0, 1) = 1
+      return
+    end if
+    w(0, 1) = 1 - lam(0, 1)
+    w(1:3, 1) = -lam(1:3, 1)
+    do j = 2, n - 1
+      a = lam(0:3, j - 1)
+      b(0) = 1 - lam(0, j); b(1:3) = -lam(1:3, j)
+      do k = 0, 3
+        do m = 0, k
+          w(k, j) = w(k, j) + binom(m, k)*a(m)*b(k - m)
+        end do
+      end do
+    end do
+    w(0:3, n) = lam(0:3, n - 1)
+  end subroutine blend_weights
+
+  ! ------------------------------------------------------------------ circle
+
+  pure subroutine circle_evaluate(self, u, v, order, p, status)
+    class(circle_section_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(section_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    associate (unused => u)
+    end associate
+    call ellipse_terms(self%radius, self%radius, v, order, p)
+    status%code = STATUS_OK
+  end subroutine circle_evaluate
+
+  pure subroutine ellipse_terms(a, b, v, order, p)
+    real(wp), intent(in) :: a, b, v
+    integer, intent(in) :: order
+    type(section_point_t), intent(out) :: p
+    real(wp) :: c, s
+    c = cos(v); s = sin(v)
+    p%order = order
+    p%s(:, 0, 0) = [-a*c, -b*s]
+    if (order >= 1) p%s(:, 0, 1) = [a*s, -b*c]
+    if (order >= 2) p%s(:, 0, 2) = [a*c, b*s]
+    if (order >= 3) p%s(:, 0, 3) = [-a*s, b*c]
+  end subroutine ellipse_terms
+
+  pure subroutine circle_range(self, v_min, v_max)
+    class(circle_section_t), intent(in) :: self
+    real(wp), intent(out) :: v_min, v_max
+    v_min = self%v_min; v_max = self%v_max
+  end subroutine circle_range
+
+  pure logical function circle_periodic(self) result(periodic)
+    class(circle_section_t), intent(in) :: self
+    periodic = abs(self%v_max - self%v_min - two_pi) < 1e-12_wp
+  end function circle_periodic
+
+  pure subroutine ellipse_evaluate(self, u, v, order, p, status)
+    class(ellipse_section_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(section_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    associate (unused => u)
+    end associate
+    call ellipse_terms(self%a, self%b, v, order, p)
+    status%code = STATUS_OK
+  end subroutine ellipse_evaluate
+
+  pure subroutine ellipse_range(self, v_min, v_max)
+    class(ellipse_section_t), intent(in) :: self
+    real(wp), intent(out) :: v_min, v_max
+    v_min = self%v_min; v_max = self%v_max
+  end subroutine ellipse_range
+
+  pure logical function ellipse_periodic(self) result(periodic)
+    class(ellipse_section_t), intent(in) :: self
+    periodic = abs(self%v_max - self%v_min - two_pi) < 1e-12_wp
+  end function ellipse_periodic
+
+  ! ------------------------------------------------------------------- flume
+
+  pure subroutine flume_evaluate(self, u, v, order, p, status)
+    class(flume_section_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(section_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    real(wp) :: lam(0:3, 2), w(0:3, 3), part(2, 0:3, 3), xi, r
+    integer :: k, m, j
+    associate (unused => u)
+    end associate
+    r = self%radius
+    xi = logistic_rate(0.0_wp, self%transition)
+    call logistic(v, 0.0_wp, xi, lam(:, 1))
+    call logistic(v, pi, xi, lam(:, 2))
+    call blend_weights(lam, w)
+    part = 0
+    ! wall 1 (v < 0, going up at y = -r), the circle, wall 2 (v > pi, at y = +r)
+    part(:, 0, 1) = [-r, -r*v];        part(:, 1, 1) = [0.0_wp, -r]
+    part(:, 0, 2) = [-r*cos(v), -r*sin(v)]
+    part(:, 1, 2) = [r*sin(v), -r*cos(v)]
+    part(:, 2, 2) = [r*cos(v), r*sin(v)]
+    part(:, 3, 2) = [-r*sin(v), r*cos(v)]
+    part(:, 0, 3) = [r, r*(v - pi)];   part(:, 1, 3) = [0.0_wp, r]
+    p%order = order
+    do k = 0, order
+      do j = 1, 3
+        do m = 0, k
+          p%s(:, 0, k) = p%s(:, 0, k) + binom(m, k)*w(m, j)*part(:, k - m, j)
+        end do
+      end do
+    end do
+    status%code = STATUS_OK
+  end subroutine flume_evaluate
+
+  pure subroutine flume_range(self, v_min, v_max)
+    class(flume_section_t), intent(in) :: self
+    real(wp), intent(out) :: v_min, v_max
+    v_min = -self%wall/self%radius
+    v_max = pi + self%wall/self%radius
+  end subroutine flume_range
+
+  ! ----------------------------------------------------------------- blended
+
+  !> n >= 2 sections joined by n-1 transitions (midpoint(j), u_99(j)), in
+  !> increasing order of u; all sections must share their v-range.
+  function new_blended_section(sections, midpoint, u_99, status) result(b)
+    type(section_holder_t), intent(in) :: sections(:)
+    real(wp), intent(in) :: midpoint(:), u_99(:)
+    type(status_t), intent(out) :: status
+    type(blended_section_t) :: b
+    real(wp) :: a0, b0, a1, b1
+    integer :: j
+    if (size(sections) < 2 .or. size(midpoint) /= size(sections) - 1 .or. &
+        size(u_99) /= size(sections) - 1) then
+      call set_status(status, STATUS_INVALID_INPUT, 'blended section: need n >= 2 sections ' // &
+                      'and n-1 transitions (midpoint, u_99)')
+      return
+    end if
+    do j = 1, size(midpoint)
+      if (.not. u_99(j) > midpoint(j)) then
+        call set_status(status, STATUS_INVALID_INPUT, 'blended section: each 0.99 point must ' // &
+                        'lie after its midpoint (u_99 > midpoint)')
+        return
+      end if
+      if (j > 1) then
+        if (.not. midpoint(j) > midpoint(j - 1)) then
+          call set_status(status, STATUS_INVALID_INPUT, 'blended section: transition midpoints ' // &
+                          'must increase')
+          return
+        end if
+      end if
+    end do
+    call sections(1)%section%v_range(a0, b0)
+    do j = 2, size(sections)
+      call sections(j)%section%v_range(a1, b1)
+      if (abs(a1 - a0) > 1e-12_wp .or. abs(b1 - b0) > 1e-12_wp) then
+        call set_status(status, STATUS_INVALID_INPUT, 'blended section: all sections must ' // &
+                        'have the same v-range')
+        return
+      end if
+    end do
+    b%sections = sections
+    b%midpoint = midpoint
+    b%rate = [(logistic_rate(midpoint(j), u_99(j)), j=1, size(midpoint))]
+  end function new_blended_section
+
+  !> (3.69) with derivatives (C.28-C.36, here by Leibniz' rule on the weights).
+  pure subroutine blended_evaluate(self, u, v, order, p, status)
+    class(blended_section_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(section_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    integer, parameter :: max_sections = 16
+    real(wp) :: lam(0:3, max_sections), w(0:3, max_sections)
+    type(section_point_t) :: q
+    integer :: n, j, k, m, l
+    n = size(self%sections)
+    if (n > max_sections) then
+      call set_status(status, STATUS_INVALID_INPUT, 'blended section: at most 16 sections')
+      return
+    end if
+    do j = 1, n - 1
+      call logistic(u, self%midpoint(j), self%rate(j), lam(:, j))
+    end do
+    call blend_weights(lam(:, 1:n - 1), w(:, 1:n))
+    p%order = order
+    do j = 1, n
+      call self%sections(j)%section%evaluate(u, v, order, q, status)
+      if (.not. status%ok()) return
+      do k = 0, order              ! u-order
+        do l = 0, order - k        ! v-order
+          do m = 0, k
+            p%s(:, k, l) = p%s(:, k, l) + binom(m, k)*w(m, j)*q%s(:, k - m, l)
+          end do
+        end do
+      end do
+    end do
+  end subroutine blended_evaluate
+
+  pure subroutine blended_range(self, v_min, v_max)
+    class(blended_section_t), intent(in) :: self
+    real(wp), intent(out) :: v_min, v_max
+    call self%sections(1)%section%v_range(v_min, v_max)
+  end subroutine blended_range
+
+  pure logical function blended_periodic(self) result(periodic)
+    class(blended_section_t), intent(in) :: self
+    integer :: j
+    periodic = .true.
+    do j = 1, size(self%sections)
+      periodic = periodic .and. self%sections(j)%section%periodic()
+    end do
+  end function blended_periodic
+
+  pure function blended_extent(self, u) result(r)
+    class(blended_section_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp) :: r
+    integer :: j
+    r = 0
+    do j = 1, size(self%sections)
+      r = max(r, self%sections(j)%section%extent(u))
+    end do
+  end function blended_extent
+end module geometry_cross_section

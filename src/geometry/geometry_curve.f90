@@ -1,0 +1,291 @@
+!> The curve seam: a parametrised space curve c(u) with derivatives to 4th order.
+!>
+!> Tube surfaces (thesis 3.64, appendix C) need the centerline to 4th order:
+!> the 3rd u-derivative of the tangent axis x = c_u/|c_u| (C.6) contains c_uuuu.
+!> A horizon field h(u) is a curve too (only derivatives to 3rd order are used).
+!>
+!> Concrete analytic curves (line, helix/circle arc, constant vector) live here;
+!> spline curves plug in through geometry_spline_centerline. Arc length
+!> (thesis 2.1) and its inverse are provided for every curve by composite
+!> Gauss-Legendre quadrature of |c_u| and a safeguarded Newton iteration.
+module geometry_curve
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, STATUS_OK, STATUS_DOMAIN, STATUS_NOT_CONVERGED
+  implicit none (type, external)
+  private
+  public :: curve_t, curve_point_t, line_curve_t, helix_curve_t, constant_curve_t, polynomial_curve_t
+  public :: curve_max_order
+
+  integer, parameter :: curve_max_order = 4
+
+  !> c(u) and its u-derivatives: d(:, k) = d^k c / du^k, filled up to `order`.
+  type :: curve_point_t
+    integer :: order = 0
+    real(wp) :: d(3, 0:curve_max_order) = 0
+  end type curve_point_t
+
+  type, abstract :: curve_t
+  contains
+    procedure(curve_evaluate_i), deferred :: evaluate
+    procedure(curve_domain_i), deferred :: domain
+    procedure :: arc_length => curve_arc_length
+    procedure :: total_length => curve_total_length
+    procedure :: parameter_at_length => curve_parameter_at_length
+  end type curve_t
+
+  abstract interface
+    !> Fills p with c(u) and its derivatives up to `order` (0..4).
+    pure subroutine curve_evaluate_i(self, u, order, p, status)
+      import :: curve_t, curve_point_t, status_t, wp
+      class(curve_t), intent(in) :: self
+      real(wp), intent(in) :: u
+      integer, intent(in) :: order
+      type(curve_point_t), intent(out) :: p
+      type(status_t), intent(out) :: status
+    end subroutine curve_evaluate_i
+    !> The parameter interval [u_min, u_max] of the curve.
+    pure subroutine curve_domain_i(self, u_min, u_max)
+      import :: curve_t, wp
+      class(curve_t), intent(in) :: self
+      real(wp), intent(out) :: u_min, u_max
+    end subroutine curve_domain_i
+  end interface
+
+  !> Straight line c(u) = origin + u direction, u in [u_min, u_max].
+  type, extends(curve_t) :: line_curve_t
+    real(wp) :: origin(3) = 0          ! m
+    real(wp) :: direction(3) = [1, 0, 0]  ! m per unit of u
+    real(wp) :: u_min = 0, u_max = 1
+  contains
+    procedure :: evaluate => line_evaluate
+    procedure :: domain => line_domain
+  end type line_curve_t
+
+  !> Helix about the z-axis through `center`:
+  !> c(u) = center + [R cos(phase + u), R sin(phase + u), pitch u], u in rad;
+  !> pitch = 0 gives a circle arc. Curvature R/(R^2 + pitch^2).
+  type, extends(curve_t) :: helix_curve_t
+    real(wp) :: center(3) = 0
+    real(wp) :: radius = 1             ! m
+    real(wp) :: pitch = 0              ! m per rad (rise per turn / 2 pi)
+    real(wp) :: phase = 0              ! rad
+    real(wp) :: u_min = 0, u_max = 1   ! rad
+  contains
+    procedure :: evaluate => helix_evaluate
+    procedure :: domain => helix_domain
+  end type helix_curve_t
+
+  !> A constant vector (the usual horizon field h = [0, 0, 1]).
+  type, extends(curve_t) :: constant_curve_t
+    real(wp) :: value(3) = [0, 0, 1]
+    real(wp) :: u_min = -huge(1.0_wp), u_max = huge(1.0_wp)
+  contains
+    procedure :: evaluate => constant_evaluate
+    procedure :: domain => constant_domain
+  end type constant_curve_t
+
+  !> Polynomial c(u) = sum_k coef(:, k) u^k, k = 0..5, u in [u_min, u_max]
+  !> (a curve of varying curvature with exactly known derivatives).
+  type, extends(curve_t) :: polynomial_curve_t
+    real(wp) :: coef(3, 0:5) = 0
+    real(wp) :: u_min = 0, u_max = 1
+  contains
+    procedure :: evaluate => polynomial_evaluate
+    procedure :: domain => polynomial_domain
+  end type polynomial_curve_t
+
+  ! 8-point Gauss-Legendre nodes and weights on [-1, 1].
+  real(wp), parameter :: gl_x(8) = [-0.9602898564975363_wp, -0.7966664774136267_wp, &
+    -0.5255324099163290_wp, -0.1834346424956498_wp, 0.1834346424956498_wp, &
+    0.5255324099163290_wp, 0.7966664774136267_wp, 0.9602898564975363_wp]
+  real(wp), parameter :: gl_w(8) = [0.1012285362903763_wp, 0.2223810344533745_wp, &
+    0.3137066458778873_wp, 0.3626837833783620_wp, 0.3626837833783620_wp, &
+    0.3137066458778873_wp, 0.2223810344533745_wp, 0.1012285362903763_wp]
+  !> Sub-intervals of the whole domain for the arc-length quadrature.
+  integer, parameter :: arc_panels = 256
+
+contains
+
+  pure subroutine line_evaluate(self, u, order, p, status)
+    class(line_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(curve_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    p%order = min(max(order, 0), curve_max_order)
+    p%d(:, 0) = self%origin + u*self%direction
+    if (order >= 1) p%d(:, 1) = self%direction
+    status%code = STATUS_OK
+  end subroutine line_evaluate
+
+  pure subroutine line_domain(self, u_min, u_max)
+    class(line_curve_t), intent(in) :: self
+    real(wp), intent(out) :: u_min, u_max
+    u_min = self%u_min; u_max = self%u_max
+  end subroutine line_domain
+
+  pure subroutine helix_evaluate(self, u, order, p, status)
+    class(helix_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(curve_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    real(wp) :: cs, sn
+    integer :: k
+    p%order = min(max(order, 0), curve_max_order)
+    cs = self%radius*cos(self%phase + u)
+    sn = self%radius*sin(self%phase + u)
+    p%d(:, 0) = self%center + [cs, sn, self%pitch*u]
+    ! d/du [R cos, R sin] = [-R sin, R cos]: each derivative turns by 90 degrees
+    if (p%order >= 1) p%d(:, 1) = [-sn, cs, self%pitch]
+    do k = 2, p%order
+      p%d(1:2, k) = [-p%d(2, k - 1), p%d(1, k - 1)]
+    end do
+    status%code = STATUS_OK
+  end subroutine helix_evaluate
+
+  pure subroutine helix_domain(self, u_min, u_max)
+    class(helix_curve_t), intent(in) :: self
+    real(wp), intent(out) :: u_min, u_max
+    u_min = self%u_min; u_max = self%u_max
+  end subroutine helix_domain
+
+  pure subroutine constant_evaluate(self, u, order, p, status)
+    class(constant_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(curve_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    p%order = min(max(order, 0), curve_max_order)
+    p%d(:, 0) = self%value
+    associate (unused => u)   ! a constant does not depend on u
+    end associate
+    status%code = STATUS_OK
+  end subroutine constant_evaluate
+
+  pure subroutine constant_domain(self, u_min, u_max)
+    class(constant_curve_t), intent(in) :: self
+    real(wp), intent(out) :: u_min, u_max
+    u_min = self%u_min; u_max = self%u_max
+  end subroutine constant_domain
+
+  pure subroutine polynomial_evaluate(self, u, order, p, status)
+    class(polynomial_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(curve_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    integer :: k, j, i
+    real(wp) :: f
+    p%order = min(max(order, 0), curve_max_order)
+    do k = 0, p%order
+      do j = k, 5
+        f = 1                        ! j!/(j-k)!
+        do i = 0, k - 1
+          f = f*(j - i)
+        end do
+        p%d(:, k) = p%d(:, k) + f*self%coef(:, j)*u**(j - k)
+      end do
+    end do
+    status%code = STATUS_OK
+  end subroutine polynomial_evaluate
+
+  pure subroutine polynomial_domain(self, u_min, u_max)
+    class(polynomial_curve_t), intent(in) :: self
+    real(wp), intent(out) :: u_min, u_max
+    u_min = self%u_min; u_max = self%u_max
+  end subroutine polynomial_domain
+
+  !> Arc length from u0 to u1 (thesis 2.1), m; negative if u1 < u0.
+  !> Composite 8-point Gauss-Legendre on panels of the whole domain
+  !> (1/arc_panels of it each), so s(u) is the same function wherever it is
+  !> asked for and exact to ~1e-13 relative for smooth curves.
+  pure function curve_arc_length(self, u0, u1) result(s)
+    class(curve_t), intent(in) :: self
+    real(wp), intent(in) :: u0, u1
+    real(wp) :: s
+    real(wp) :: a, b, lo, hi, width, pa, pb
+    integer :: i0, i1, i
+    real(wp) :: sign_
+    call self%domain(lo, hi)
+    a = min(u0, u1); b = max(u0, u1)
+    sign_ = merge(1.0_wp, -1.0_wp, u1 >= u0)
+    s = 0
+    if (b <= a) return
+    if (hi > huge(1.0_wp)/4 .or. lo < -huge(1.0_wp)/4 .or. hi <= lo) then
+      s = sign_*panel(a, b)
+      return
+    end if
+    width = (hi - lo)/arc_panels
+    i0 = floor((a - lo)/width)
+    i1 = floor((b - lo)/width)
+    do i = i0, i1
+      pa = max(a, lo + i*width)
+      pb = min(b, lo + (i + 1)*width)
+      if (pb > pa) s = s + panel(pa, pb)
+    end do
+    s = sign_*s
+  contains
+    pure real(wp) function panel(x0, x1) result(q)
+      real(wp), intent(in) :: x0, x1
+      type(curve_point_t) :: p
+      type(status_t) :: st
+      integer :: k
+      q = 0
+      do k = 1, 8
+        call self%evaluate(0.5_wp*(x0 + x1) + 0.5_wp*(x1 - x0)*gl_x(k), 1, p, st)
+        q = q + gl_w(k)*norm2(p%d(:, 1))
+      end do
+      q = 0.5_wp*(x1 - x0)*q
+    end function panel
+  end function curve_arc_length
+
+  !> Length of the whole curve, m.
+  pure function curve_total_length(self) result(s)
+    class(curve_t), intent(in) :: self
+    real(wp) :: s
+    real(wp) :: lo, hi
+    call self%domain(lo, hi)
+    s = self%arc_length(lo, hi)
+  end function curve_total_length
+
+  !> The parameter u at which the arc length from u_min equals `length` (m):
+  !> Newton on s(u) - length with ds/du = |c_u|, kept inside a bracket.
+  pure subroutine curve_parameter_at_length(self, length, u, status)
+    class(curve_t), intent(in) :: self
+    real(wp), intent(in) :: length
+    real(wp), intent(out) :: u
+    type(status_t), intent(out) :: status
+    real(wp) :: lo, hi, total, a, b, f, speed
+    type(curve_point_t) :: p
+    integer :: it
+    call self%domain(lo, hi)
+    total = self%arc_length(lo, hi)
+    u = lo
+    if (length < 0 .or. length > total*(1 + 1e-12_wp)) then
+      call set_status(status, STATUS_DOMAIN, 'arc length outside the curve [0, total length]')
+      return
+    end if
+    a = lo; b = hi
+    u = lo + (hi - lo)*length/max(total, tiny(1.0_wp))
+    do it = 1, 60
+      f = self%arc_length(lo, u) - length
+      if (abs(f) <= 1e-12_wp*max(total, 1.0_wp)) return
+      if (f > 0) then
+        b = u
+      else
+        a = u
+      end if
+      call self%evaluate(u, 1, p, status)
+      if (.not. status%ok()) return
+      speed = norm2(p%d(:, 1))
+      if (speed > 0) then
+        u = u - f/speed
+      else
+        u = 0.5_wp*(a + b)
+      end if
+      if (u <= a .or. u >= b) u = 0.5_wp*(a + b)
+    end do
+    call set_status(status, STATUS_NOT_CONVERGED, 'parameter at arc length: no convergence')
+  end subroutine curve_parameter_at_length
+end module geometry_curve

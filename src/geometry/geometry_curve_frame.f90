@@ -1,0 +1,150 @@
+!> The moving frame of a centerline from a horizon vector field (thesis 2.12,
+!> 3.60-3.63, appendix C.1), its u-derivatives to third order, and the
+!> centerline curvature chi and its derivative chi_u (thesis 4.8-4.9).
+!>
+!>   x = c_u/|c_u|,  y = (h x x)/|h x x|,  z = x x y
+!>
+!> The derivatives are not the expanded expressions C.4-C.15 but the same
+!> quantities computed by two rules that are easy to check: for e = a/|a|
+!> with L = |a| (L L' = a.a', L'^2 + L L'' = a'.a' + a.a'',
+!> 3 L' L'' + L L''' = 3 a'.a'' + a.a'''),
+!>   e' = (a' - L' e)/L,  e'' = (a'' - 2 L' e' - L'' e)/L,
+!>   e''' = (a''' - 3 L' e'' - 3 L'' e' - L''' e)/L,
+!> and Leibniz' rule for the cross products h x x and x x y (C.7-C.9, C.13-C.15;
+!> note C.14 as printed lacks "x y" in its first term: z_uu = x_uu x y + ...).
+!> The third derivative of x needs c_uuuu (C.6).
+module geometry_curve_frame
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, STATUS_DOMAIN, STATUS_INVALID_INPUT
+  use base_vector, only: cross
+  use geometry_curve, only: curve_t, curve_point_t
+  implicit none (type, external)
+  private
+  public :: curve_frame_t, curve_frame_from_points, curve_frame_at, normalized_derivatives
+  public :: centerline_curvature, horizon_parallel_tol
+
+  !> Smallest allowed sine of the angle between the horizon and the tangent;
+  !> below it the y-axis (3.62) is numerically undefined.
+  real(wp), parameter :: horizon_parallel_tol = 1e-6_wp
+
+  !> Axes of the frame and their u-derivatives: x(:, k) = d^k x/du^k, k <= order.
+  type :: curve_frame_t
+    integer :: order = 0
+    real(wp) :: x(3, 0:3) = 0, y(3, 0:3) = 0, z(3, 0:3) = 0
+    real(wp) :: chi = 0      ! centerline curvature, 1/m (4.8); needs order >= 1
+    real(wp) :: chi_u = 0    ! d chi/du, 1/(m unit of u) (4.9); needs order >= 2
+  end type curve_frame_t
+
+contains
+
+  !> Unit vector e = a/|a| and its derivatives to order n (<= 3) from those of a.
+  pure subroutine normalized_derivatives(a, n, e, length)
+    real(wp), intent(in) :: a(3, 0:3)
+    integer, intent(in) :: n
+    real(wp), intent(out) :: e(3, 0:3)
+    real(wp), intent(out) :: length(0:3)
+    real(wp) :: l
+    e = 0; length = 0
+    l = norm2(a(:, 0))
+    length(0) = l
+    e(:, 0) = a(:, 0)/l
+    if (n < 1) return
+    length(1) = dot_product(e(:, 0), a(:, 1))
+    e(:, 1) = (a(:, 1) - length(1)*e(:, 0))/l
+    if (n < 2) return
+    length(2) = (dot_product(a(:, 0), a(:, 2)) + dot_product(a(:, 1), a(:, 1)) - length(1)**2)/l
+    e(:, 2) = (a(:, 2) - 2*length(1)*e(:, 1) - length(2)*e(:, 0))/l
+    if (n < 3) return
+    length(3) = (3*dot_product(a(:, 1), a(:, 2)) + dot_product(a(:, 0), a(:, 3)) &
+                 - 3*length(1)*length(2))/l
+    e(:, 3) = (a(:, 3) - 3*length(1)*e(:, 2) - 3*length(2)*e(:, 1) - length(3)*e(:, 0))/l
+  end subroutine normalized_derivatives
+
+  !> Leibniz' rule for a x b to order n.
+  pure subroutine cross_derivatives(a, b, n, c)
+    real(wp), intent(in) :: a(3, 0:3), b(3, 0:3)
+    integer, intent(in) :: n
+    real(wp), intent(out) :: c(3, 0:3)
+    integer, parameter :: binom(0:3, 0:3) = reshape([1, 0, 0, 0, 1, 1, 0, 0, 1, 2, 1, 0, 1, 3, 3, 1], [4, 4])
+    integer :: k, j
+    c = 0
+    do k = 0, n
+      do j = 0, k
+        c(:, k) = c(:, k) + binom(j, k)*cross(a(:, j), b(:, k - j))
+      end do
+    end do
+  end subroutine cross_derivatives
+
+  !> Curvature chi = |c_u x c_uu|/|c_u|^3 (4.8) and, if c holds c_uuu, its
+  !> derivative chi_u (4.9). chi_u is set to 0 where c_u x c_uu vanishes
+  !> (a straight piece, or the inflection of an S-bend, where |.| has a kink).
+  pure subroutine centerline_curvature(c, chi, chi_u)
+    type(curve_point_t), intent(in) :: c
+    real(wp), intent(out) :: chi, chi_u
+    real(wp) :: q(3), dq(3), nq, sp, sp3
+    chi = 0; chi_u = 0
+    if (c%order < 2) return
+    q = cross(c%d(:, 1), c%d(:, 2))
+    nq = norm2(q)
+    sp = norm2(c%d(:, 1))
+    sp3 = sp**3
+    chi = nq/sp3
+    if (c%order < 3 .or. nq <= 1e-14_wp*sp3*max(sp, 1.0_wp)) return
+    dq = cross(c%d(:, 1), c%d(:, 3))
+    ! (4.9): (|q|_u |c_u|^3 - |q| (|c_u|^3)_u)/|c_u|^6, |q|_u = q.q_u/|q|,
+    ! (|c_u|^3)_u = 3 (c_u . c_uu) |c_u|
+    chi_u = (dot_product(q, dq)/nq*sp3 - nq*3*dot_product(c%d(:, 1), c%d(:, 2))*sp)/sp3**2
+  end subroutine centerline_curvature
+
+  !> The frame (3.60-3.63) and its derivatives to `order` (0..3) from the
+  !> centerline point c (needs derivatives to order+1) and the horizon h
+  !> (needs derivatives to `order`). chi needs order >= 1, chi_u order >= 2.
+  pure subroutine curve_frame_from_points(c, h, order, f, status)
+    type(curve_point_t), intent(in) :: c, h
+    integer, intent(in) :: order
+    type(curve_frame_t), intent(out) :: f
+    type(status_t), intent(out) :: status
+    real(wp) :: w(3, 0:3), lx(0:3), lw(0:3), speed, hn
+    character(len=40) :: buf
+    if (order < 0 .or. order > 3) then
+      call set_status(status, STATUS_INVALID_INPUT, 'curve frame: order must be 0..3')
+      return
+    end if
+    f%order = order
+    speed = norm2(c%d(:, 1))
+    if (.not. speed > 0) then
+      call set_status(status, STATUS_DOMAIN, 'curve frame: centerline tangent c_u is zero')
+      return
+    end if
+    call normalized_derivatives(c%d(:, 1:4), order, f%x, lx)
+    call cross_derivatives(h%d(:, 0:3), f%x, order, w)
+    hn = norm2(h%d(:, 0))
+    if (.not. norm2(w(:, 0)) > horizon_parallel_tol*hn) then
+      write (buf, '(es12.4)') norm2(w(:, 0))/max(hn, tiny(1.0_wp))
+      call set_status(status, STATUS_DOMAIN, 'curve frame: horizon vector is parallel to the ' // &
+                      'centerline tangent (sine of angle ' // trim(adjustl(buf)) // ')')
+      return
+    end if
+    call normalized_derivatives(w, order, f%y, lw)
+    call cross_derivatives(f%x, f%y, order, f%z)
+    if (order >= 1) call centerline_curvature(c, f%chi, f%chi_u)
+    if (order < 2) f%chi_u = 0
+  end subroutine curve_frame_from_points
+
+  !> The frame at u of a centerline and a horizon field.
+  pure subroutine curve_frame_at(centerline, horizon, u, order, f, status, c)
+    class(curve_t), intent(in) :: centerline, horizon
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(curve_frame_t), intent(out) :: f
+    type(status_t), intent(out) :: status
+    type(curve_point_t), intent(out), optional :: c   ! the centerline point used
+    type(curve_point_t) :: cp, hp
+    call centerline%evaluate(u, order + 1, cp, status)
+    if (.not. status%ok()) return
+    call horizon%evaluate(u, order, hp, status)
+    if (.not. status%ok()) return
+    call curve_frame_from_points(cp, hp, order, f, status)
+    if (present(c)) c = cp
+  end subroutine curve_frame_at
+end module geometry_curve_frame

@@ -1,0 +1,212 @@
+!> Tube surfaces r(u, v) = c(u) + R_T(u) s(u, v) = c + y s_y + z s_z
+!> (thesis 3.64, 3.66, appendix C.2): a cross-section s carried along a
+!> centerline c by the horizon-vector frame of geometry_curve_frame.
+!>
+!> Partial derivatives to third order by Leibniz' rule,
+!>   d^(i+j) r/du^i dv^j = [j = 0] c^(i) + sum_{a = y, z} sum_m C(i, m) a^(m) s_a^(i-m, j),
+!> which is (C.17-C.25) for all i + j <= 3 (the printed C.22 has y_u for y_uu
+!> in its third term, C.23 is r_uuv, and C.24 is r_uvv).
+!> The parameter u is the centerline's; the arc length s(u) along the
+!> centerline and its inverse are available (thesis 2.1).
+module geometry_tube
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_curve, only: curve_t, curve_point_t
+  use geometry_curve_frame, only: curve_frame_t, curve_frame_from_points
+  use geometry_cross_section, only: cross_section_t, section_point_t
+  implicit none (type, external)
+  private
+  public :: tube_surface_t, new_tube_surface
+
+  type, extends(surface_t) :: tube_surface_t
+    class(curve_t), allocatable :: centerline
+    class(curve_t), allocatable :: horizon
+    class(cross_section_t), allocatable :: section
+  contains
+    procedure :: evaluate => tube_evaluate
+    procedure :: domain => tube_domain
+    procedure :: periodic_v => tube_periodic_v
+    procedure :: describe => tube_describe
+    procedure :: frame => tube_frame
+    procedure :: arc_length => tube_arc_length
+    procedure :: length => tube_length
+    procedure :: parameter_at_length => tube_parameter_at_length
+    procedure :: check => tube_check
+  end type tube_surface_t
+
+  integer, parameter :: binom(0:3, 0:3) = reshape([1, 0, 0, 0, 1, 1, 0, 0, 1, 2, 1, 0, 1, 3, 3, 1], [4, 4])
+
+contains
+
+  !> A tube from its centerline, horizon field and cross-section. The horizon
+  !> must be defined wherever the centerline is.
+  function new_tube_surface(centerline, horizon, section, status) result(t)
+    class(curve_t), intent(in) :: centerline, horizon
+    class(cross_section_t), intent(in) :: section
+    type(status_t), intent(out) :: status
+    type(tube_surface_t) :: t
+    real(wp) :: a, b, ha, hb
+    call centerline%domain(a, b)
+    call horizon%domain(ha, hb)
+    if (.not. b > a) then
+      call set_status(status, STATUS_INVALID_INPUT, 'tube surface: empty centerline domain')
+      return
+    end if
+    if (ha > a .or. hb < b) then
+      call set_status(status, STATUS_INVALID_INPUT, 'tube surface: the horizon field does not ' // &
+                      'cover the centerline domain')
+      return
+    end if
+    allocate (t%centerline, source=centerline)
+    allocate (t%horizon, source=horizon)
+    allocate (t%section, source=section)
+  end function new_tube_surface
+
+  pure subroutine tube_evaluate(self, u, v, order, p, status)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    type(curve_point_t) :: c, h
+    type(curve_frame_t) :: f
+    type(section_point_t) :: s
+    real(wp) :: d(3, 0:3, 0:3)
+    integer :: i, j, m
+    if (order < 0 .or. order > 3) then
+      call set_status(status, STATUS_INVALID_INPUT, 'tube surface: order must be 0..3')
+      return
+    end if
+    call self%centerline%evaluate(u, order + 1, c, status)
+    if (.not. status%ok()) return
+    call self%horizon%evaluate(u, order, h, status)
+    if (.not. status%ok()) return
+    call curve_frame_from_points(c, h, order, f, status)
+    if (.not. status%ok()) return
+    call self%section%evaluate(u, v, order, s, status)
+    if (.not. status%ok()) return
+    d = 0
+    do i = 0, order
+      d(:, i, 0) = c%d(:, i)
+      do j = 0, order - i
+        do m = 0, i
+          d(:, i, j) = d(:, i, j) + binom(m, i)*(f%y(:, m)*s%s(1, i - m, j) + f%z(:, m)*s%s(2, i - m, j))
+        end do
+      end do
+    end do
+    p%order = order
+    p%r = d(:, 0, 0)
+    if (order >= 1) then
+      p%ru = d(:, 1, 0); p%rv = d(:, 0, 1)
+    end if
+    if (order >= 2) then
+      p%ruu = d(:, 2, 0); p%ruv = d(:, 1, 1); p%rvv = d(:, 0, 2)
+    end if
+    if (order >= 3) then
+      p%ruuu = d(:, 3, 0); p%ruuv = d(:, 2, 1); p%ruvv = d(:, 1, 2); p%rvvv = d(:, 0, 3)
+    end if
+  end subroutine tube_evaluate
+
+  pure subroutine tube_domain(self, u_min, u_max, v_min, v_max)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(out) :: u_min, u_max, v_min, v_max
+    call self%centerline%domain(u_min, u_max)
+    call self%section%v_range(v_min, v_max)
+  end subroutine tube_domain
+
+  pure logical function tube_periodic_v(self) result(periodic)
+    class(tube_surface_t), intent(in) :: self
+    periodic = self%section%periodic()
+  end function tube_periodic_v
+
+  pure function tube_describe(self) result(text)
+    class(tube_surface_t), intent(in) :: self
+    character(len=:), allocatable :: text
+    character(len=32) :: buf
+    write (buf, '(f0.3)') self%centerline%total_length()
+    text = 'tube surface (centerline length ' // trim(buf) // ' m)'
+  end function tube_describe
+
+  !> The centerline frame at u with derivatives to `order`, chi and chi_u.
+  pure subroutine tube_frame(self, u, order, f, status, c)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(curve_frame_t), intent(out) :: f
+    type(status_t), intent(out) :: status
+    type(curve_point_t), intent(out), optional :: c
+    type(curve_point_t) :: cp, hp
+    call self%centerline%evaluate(u, order + 1, cp, status)
+    if (.not. status%ok()) return
+    call self%horizon%evaluate(u, order, hp, status)
+    if (.not. status%ok()) return
+    call curve_frame_from_points(cp, hp, order, f, status)
+    if (present(c)) c = cp
+  end subroutine tube_frame
+
+  !> Arc length of the centerline from its start to u, m.
+  pure real(wp) function tube_arc_length(self, u) result(s)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp) :: a, b
+    call self%centerline%domain(a, b)
+    s = self%centerline%arc_length(a, u)
+  end function tube_arc_length
+
+  !> Length of the whole centerline, m.
+  pure real(wp) function tube_length(self) result(s)
+    class(tube_surface_t), intent(in) :: self
+    s = self%centerline%total_length()
+  end function tube_length
+
+  !> u at arc length s (m) from the start of the centerline.
+  pure subroutine tube_parameter_at_length(self, s, u, status)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: s
+    real(wp), intent(out) :: u
+    type(status_t), intent(out) :: status
+    call self%centerline%parameter_at_length(s, u, status)
+  end subroutine tube_parameter_at_length
+
+  !> Checks the whole tube before it is used, at n_samples values of u: the
+  !> frame exists (horizon not parallel to the tangent) and the centerline's
+  !> radius of curvature 1/chi stays above the section's extent (else the tube
+  !> folds onto itself). The message says where (u, arc length, point).
+  subroutine tube_check(self, n_samples, status)
+    class(tube_surface_t), intent(in) :: self
+    integer, intent(in) :: n_samples
+    type(status_t), intent(inout) :: status
+    real(wp) :: a, b, u, extent, worst_ratio, worst_u, worst_chi, worst_extent
+    type(curve_frame_t) :: f
+    type(curve_point_t) :: c
+    type(status_t) :: st
+    integer :: i
+    character(len=200) :: buf
+    call self%centerline%domain(a, b)
+    worst_ratio = 0; worst_u = a; worst_chi = 0; worst_extent = 0
+    do i = 0, n_samples - 1
+      u = a + (b - a)*i/real(max(n_samples - 1, 1), wp)
+      call self%frame(u, 1, f, st, c)
+      if (.not. st%ok()) then
+        write (buf, '(a, es12.5, a, f0.3, a, 3(f0.3, 1x), a)') ' at u = ', u, ' (arc length ', &
+          self%arc_length(u), ' m, point ', c%d(:, 0), ')'
+        status = st
+        call prefix_status(status, 'tube surface' // trim(buf))
+        return
+      end if
+      extent = self%section%extent(u)
+      if (f%chi*extent > worst_ratio) then
+        worst_ratio = f%chi*extent; worst_u = u; worst_chi = f%chi; worst_extent = extent
+      end if
+    end do
+    if (worst_ratio >= 1) then
+      call self%centerline%evaluate(worst_u, 0, c, st)
+      write (buf, '(a, f0.4, a, f0.4, a, es12.5, a, f0.3, a, 3(f0.3, 1x), a)') &
+        'radius of curvature ', 1/worst_chi, ' m below the cross-section extent ', worst_extent, &
+        ' m at u = ', worst_u, ' (arc length ', self%arc_length(worst_u), ' m, point ', c%d(:, 0), &
+        '): the tube would fold onto itself'
+      call set_status(status, STATUS_INVALID_INPUT, 'tube surface: ' // trim(buf))
+    end if
+  end subroutine tube_check
+end module geometry_tube
