@@ -1,0 +1,351 @@
+!> Rigid offset, revolute, prismatic and spherical joints as kinetostatic
+!> transmission elements (thesis 3.2, (3.3)-(3.7)); all vectors in world
+!> coordinates (see kinetostatics_state).
+!>
+!> With p the world vector from the input to the output origin and n a joint
+!> axis in world coordinates (both carried by the input frame):
+!>     offset:     v_o = v_i + w_i x p,  a_o = a_i + al_i x p + w_i x (w_i x p)
+!>     revolute:   w_o = w_i + n q',     al_o = al_i + n q'' + w_i x n q'
+!>     prismatic:  p = n q, v_o = v_i + w_i x p + n q',
+!>                 a_o = a_i + al_i x p + w_i x (w_i x p) + 2 w_i x n q' + n q''
+!> and forces back: f_i += f_o, tau_i += tau_o + p x f_o, Q = n.tau_o (revolute)
+!> or n.f_o (prismatic): the transposed maps, so that power is conserved (3.6).
+module kinetostatics_joints
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  use base_vector, only: cross, rot_x, rot_y, rot_z
+  use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t, axis_rotation
+  implicit none (type, external)
+  private
+  public :: rigid_offset_t, revolute_t, prismatic_t, spherical_t
+  public :: new_rigid_offset, new_revolute, new_prismatic, new_spherical
+
+  !> K_out = K_in moved by `offset` (m, input coordinates) and turned by `rotation`.
+  type, extends(element_t) :: rigid_offset_t
+    integer :: frame_in = 0, frame_out = 0
+    real(wp) :: offset(3) = 0
+    real(wp) :: rotation(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+    real(wp) :: p(3) = 0       ! world offset at the last position
+  contains
+    procedure :: position => offset_position
+    procedure :: velocity => offset_velocity
+    procedure :: acceleration => offset_acceleration
+    procedure :: force => offset_force
+  end type rigid_offset_t
+
+  !> K_out = K_in turned by q (rad) about `axis` (unit, input coordinates).
+  type, extends(element_t) :: revolute_t
+    integer :: frame_in = 0, frame_out = 0, variable = 0
+    real(wp) :: axis(3) = [0, 0, 1]
+    real(wp) :: n(3) = 0
+  contains
+    procedure :: position => revolute_position
+    procedure :: velocity => revolute_velocity
+    procedure :: acceleration => revolute_acceleration
+    procedure :: force => revolute_force
+  end type revolute_t
+
+  !> K_out = K_in shifted by q (m) along `axis` (unit, input coordinates).
+  type, extends(element_t) :: prismatic_t
+    integer :: frame_in = 0, frame_out = 0, variable = 0
+    real(wp) :: axis(3) = [1, 0, 0]
+    real(wp) :: n(3) = 0, p(3) = 0
+  contains
+    procedure :: position => prismatic_position
+    procedure :: velocity => prismatic_velocity
+    procedure :: acceleration => prismatic_acceleration
+    procedure :: force => prismatic_force
+  end type prismatic_t
+
+  !> Spherical joint with Cardan angles: R_out = R_in Rx(q1) Ry(q2) Rz(q3),
+  !> i.e. three revolutes about x, the new y and the newest z.
+  type, extends(element_t) :: spherical_t
+    integer :: frame_in = 0, frame_out = 0, variables(3) = 0
+    real(wp) :: n(3, 3) = 0          ! the three world axes, columns
+    real(wp) :: w1(3) = 0, w2(3) = 0 ! angular velocities after the first and second turn
+  contains
+    procedure :: position => spherical_position
+    procedure :: velocity => spherical_velocity
+    procedure :: acceleration => spherical_acceleration
+    procedure :: force => spherical_force
+  end type spherical_t
+
+contains
+
+  function new_rigid_offset(name, frame_in, frame_out, offset, rotation) result(e)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame_in, frame_out
+    real(wp), intent(in) :: offset(3)
+    real(wp), intent(in), optional :: rotation(3, 3)
+    type(rigid_offset_t) :: e
+    e%name = name
+    e%frame_in = frame_in
+    e%frame_out = frame_out
+    e%offset = offset
+    if (present(rotation)) e%rotation = rotation
+  end function new_rigid_offset
+
+  function new_revolute(name, frame_in, frame_out, variable, axis) result(e)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame_in, frame_out, variable
+    real(wp), intent(in) :: axis(3)
+    type(revolute_t) :: e
+    e%name = name
+    e%frame_in = frame_in
+    e%frame_out = frame_out
+    e%variable = variable
+    e%axis = axis/norm2(axis)
+  end function new_revolute
+
+  function new_prismatic(name, frame_in, frame_out, variable, axis) result(e)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame_in, frame_out, variable
+    real(wp), intent(in) :: axis(3)
+    type(prismatic_t) :: e
+    e%name = name
+    e%frame_in = frame_in
+    e%frame_out = frame_out
+    e%variable = variable
+    e%axis = axis/norm2(axis)
+  end function new_prismatic
+
+  function new_spherical(name, frame_in, frame_out, variables) result(e)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame_in, frame_out, variables(3)
+    type(spherical_t) :: e
+    e%name = name
+    e%frame_in = frame_in
+    e%frame_out = frame_out
+    e%variables = variables
+  end function new_spherical
+
+  ! ------------------------------------------------------------ rigid offset
+
+  pure subroutine offset_position(self, frames, scalars, status)
+    class(rigid_offset_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t), intent(inout) :: status
+    associate (unused => scalars, unused_status => status)
+    end associate
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      self%p = matmul(i%rot, self%offset)
+      o%rot = matmul(i%rot, self%rotation)
+      o%r = i%r + self%p
+    end associate
+  end subroutine offset_position
+
+  pure subroutine offset_velocity(self, frames, scalars)
+    class(rigid_offset_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    associate (unused => scalars)
+    end associate
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      o%omega = i%omega
+      o%v = i%v + cross(i%omega, self%p)
+    end associate
+  end subroutine offset_velocity
+
+  pure subroutine offset_acceleration(self, frames, scalars)
+    class(rigid_offset_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    associate (unused => scalars)
+    end associate
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      o%alpha = i%alpha
+      o%a = i%a + cross(i%alpha, self%p) + cross(i%omega, cross(i%omega, self%p))
+    end associate
+  end subroutine offset_acceleration
+
+  pure subroutine offset_force(self, frames, scalars, inertia, applied)
+    class(rigid_offset_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    logical, intent(in) :: inertia, applied
+    real(wp) :: f(3), t(3)
+    associate (unused => scalars, unused_i => inertia, unused_a => applied)
+    end associate
+    f = frames(self%frame_out)%force
+    t = frames(self%frame_out)%torque
+    frames(self%frame_in)%force = frames(self%frame_in)%force + f
+    frames(self%frame_in)%torque = frames(self%frame_in)%torque + t + cross(self%p, f)
+  end subroutine offset_force
+
+  ! ---------------------------------------------------------------- revolute
+
+  pure subroutine revolute_position(self, frames, scalars, status)
+    class(revolute_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t), intent(inout) :: status
+    associate (unused_status => status)
+    end associate
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      self%n = matmul(i%rot, self%axis)
+      o%rot = matmul(i%rot, axis_rotation(self%axis, scalars(self%variable)%q))
+      o%r = i%r
+    end associate
+  end subroutine revolute_position
+
+  pure subroutine revolute_velocity(self, frames, scalars)
+    class(revolute_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      o%omega = i%omega + self%n*scalars(self%variable)%qd
+      o%v = i%v
+    end associate
+  end subroutine revolute_velocity
+
+  pure subroutine revolute_acceleration(self, frames, scalars)
+    class(revolute_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    associate (i => frames(self%frame_in), o => frames(self%frame_out), s => scalars(self%variable))
+      o%alpha = i%alpha + self%n*s%qdd + cross(i%omega, self%n)*s%qd
+      o%a = i%a
+    end associate
+  end subroutine revolute_acceleration
+
+  pure subroutine revolute_force(self, frames, scalars, inertia, applied)
+    class(revolute_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    logical, intent(in) :: inertia, applied
+    real(wp) :: f(3), t(3)
+    associate (unused_i => inertia, unused_a => applied)
+    end associate
+    f = frames(self%frame_out)%force
+    t = frames(self%frame_out)%torque
+    frames(self%frame_in)%force = frames(self%frame_in)%force + f
+    frames(self%frame_in)%torque = frames(self%frame_in)%torque + t
+    scalars(self%variable)%force = scalars(self%variable)%force + dot_product(self%n, t)
+  end subroutine revolute_force
+
+  ! --------------------------------------------------------------- prismatic
+
+  pure subroutine prismatic_position(self, frames, scalars, status)
+    class(prismatic_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t), intent(inout) :: status
+    associate (unused_status => status)
+    end associate
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      self%n = matmul(i%rot, self%axis)
+      self%p = self%n*scalars(self%variable)%q
+      o%rot = i%rot
+      o%r = i%r + self%p
+    end associate
+  end subroutine prismatic_position
+
+  pure subroutine prismatic_velocity(self, frames, scalars)
+    class(prismatic_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      o%omega = i%omega
+      o%v = i%v + cross(i%omega, self%p) + self%n*scalars(self%variable)%qd
+    end associate
+  end subroutine prismatic_velocity
+
+  pure subroutine prismatic_acceleration(self, frames, scalars)
+    class(prismatic_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    associate (i => frames(self%frame_in), o => frames(self%frame_out), s => scalars(self%variable))
+      o%alpha = i%alpha
+      o%a = i%a + cross(i%alpha, self%p) + cross(i%omega, cross(i%omega, self%p)) &
+            + 2*cross(i%omega, self%n)*s%qd + self%n*s%qdd
+    end associate
+  end subroutine prismatic_acceleration
+
+  pure subroutine prismatic_force(self, frames, scalars, inertia, applied)
+    class(prismatic_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    logical, intent(in) :: inertia, applied
+    real(wp) :: f(3), t(3)
+    associate (unused_i => inertia, unused_a => applied)
+    end associate
+    f = frames(self%frame_out)%force
+    t = frames(self%frame_out)%torque
+    frames(self%frame_in)%force = frames(self%frame_in)%force + f
+    frames(self%frame_in)%torque = frames(self%frame_in)%torque + t + cross(self%p, f)
+    scalars(self%variable)%force = scalars(self%variable)%force + dot_product(self%n, f)
+  end subroutine prismatic_force
+
+  ! --------------------------------------------------------------- spherical
+
+  pure subroutine spherical_position(self, frames, scalars, status)
+    class(spherical_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: ra(3, 3), rb(3, 3)
+    associate (unused_status => status)
+    end associate
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      ra = matmul(i%rot, rot_x(scalars(self%variables(1))%q))
+      rb = matmul(ra, rot_y(scalars(self%variables(2))%q))
+      self%n(:, 1) = i%rot(:, 1)
+      self%n(:, 2) = ra(:, 2)
+      self%n(:, 3) = rb(:, 3)
+      o%rot = matmul(rb, rot_z(scalars(self%variables(3))%q))
+      o%r = i%r
+    end associate
+  end subroutine spherical_position
+
+  pure subroutine spherical_velocity(self, frames, scalars)
+    class(spherical_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      self%w1 = i%omega + self%n(:, 1)*scalars(self%variables(1))%qd
+      self%w2 = self%w1 + self%n(:, 2)*scalars(self%variables(2))%qd
+      o%omega = self%w2 + self%n(:, 3)*scalars(self%variables(3))%qd
+      o%v = i%v
+    end associate
+  end subroutine spherical_velocity
+
+  !> Each axis turns with the frame before its own turn: d n_k/dt = w_(k-1) x n_k.
+  pure subroutine spherical_acceleration(self, frames, scalars)
+    class(spherical_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    real(wp) :: qd(3), qdd(3)
+    integer :: k
+    do k = 1, 3
+      qd(k) = scalars(self%variables(k))%qd
+      qdd(k) = scalars(self%variables(k))%qdd
+    end do
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      self%w1 = i%omega + self%n(:, 1)*qd(1)
+      self%w2 = self%w1 + self%n(:, 2)*qd(2)
+      o%alpha = i%alpha + self%n(:, 1)*qdd(1) + cross(i%omega, self%n(:, 1))*qd(1) &
+                + self%n(:, 2)*qdd(2) + cross(self%w1, self%n(:, 2))*qd(2) &
+                + self%n(:, 3)*qdd(3) + cross(self%w2, self%n(:, 3))*qd(3)
+      o%a = i%a
+    end associate
+  end subroutine spherical_acceleration
+
+  pure subroutine spherical_force(self, frames, scalars, inertia, applied)
+    class(spherical_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    logical, intent(in) :: inertia, applied
+    real(wp) :: f(3), t(3)
+    integer :: k
+    associate (unused_i => inertia, unused_a => applied)
+    end associate
+    f = frames(self%frame_out)%force
+    t = frames(self%frame_out)%torque
+    frames(self%frame_in)%force = frames(self%frame_in)%force + f
+    frames(self%frame_in)%torque = frames(self%frame_in)%torque + t
+    do k = 1, 3
+      scalars(self%variables(k))%force = scalars(self%variables(k))%force + dot_product(self%n(:, k), t)
+    end do
+  end subroutine spherical_force
+end module kinetostatics_joints

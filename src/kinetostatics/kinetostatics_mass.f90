@@ -1,0 +1,190 @@
+!> Leaf elements (thesis 3.2.4): the mass element with its d'Alembert forces
+!> (3.23) and gravity, and a constant applied force/torque at a frame.
+!>
+!> Mass element on frame K with mass m, inertia tensor Theta about the centre of
+!> mass S (in K's coordinates) and S at s = R s_local from K's origin:
+!>     f   = -m (a + alpha x s + omega x (omega x s))                     (3.23)
+!>     tau = -(Theta_w alpha + omega x Theta_w omega) + s x f,  Theta_w = R Theta R^T
+!> plus, when applied forces are on, the weight m g at S (tau += s x m g).
+!> The d'Alembert wrench's power is -dT/dt and the weight's -dV/dt (the test
+!> checks both), which is what makes the inverse-dynamics residuals right.
+module kinetostatics_mass
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
+  use base_vector, only: cross
+  use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
+  implicit none (type, external)
+  private
+  public :: mass_element_t, new_mass_element, applied_force_t, new_applied_force
+
+  type, extends(element_t) :: mass_element_t
+    integer :: frame = 0
+    real(wp) :: mass = 0                  ! kg
+    real(wp) :: inertia(3, 3) = 0         ! kg m^2, about S, K coordinates
+    real(wp) :: com(3) = 0                ! m, S in K coordinates
+    real(wp) :: gravity(3) = 0            ! m/s^2
+    real(wp) :: s(3) = 0, inertia_w(3, 3) = 0   ! world, last position
+  contains
+    procedure :: position => mass_position
+    procedure :: velocity => mass_nothing
+    procedure :: acceleration => mass_nothing
+    procedure :: force => mass_force
+    procedure :: energy => mass_energy
+  end type mass_element_t
+
+  !> A constant force (N) and torque (N m) at a frame's origin, in world
+  !> coordinates, or in the frame's coordinates if `body_fixed`.
+  type, extends(element_t) :: applied_force_t
+    integer :: frame = 0
+    real(wp) :: force_value(3) = 0, torque_value(3) = 0
+    logical :: body_fixed = .false.
+  contains
+    procedure :: position => applied_position
+    procedure :: velocity => applied_nothing
+    procedure :: acceleration => applied_nothing
+    procedure :: force => applied_force
+  end type applied_force_t
+
+contains
+
+  !> Checks m > 0 and Theta symmetric positive semidefinite with the triangle
+  !> inequalities of principal moments (a point mass, Theta = 0, is allowed).
+  function new_mass_element(name, frame, mass, inertia, com, gravity, status) result(e)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame
+    real(wp), intent(in) :: mass, inertia(3, 3), com(3), gravity(3)
+    type(status_t), intent(inout) :: status
+    type(mass_element_t) :: e
+    real(wp) :: tr, scale
+    character(len=24) :: text
+    e%name = name
+    e%frame = frame
+    e%mass = mass
+    e%inertia = inertia
+    e%com = com
+    e%gravity = gravity
+    write (text, '(es12.5)') mass
+    if (.not. (mass > 0) .or. mass > huge(mass)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'mass element '''//name//''': mass = '// &
+                      trim(adjustl(text))//' kg; it must be positive and finite')
+      return
+    end if
+    scale = max(maxval(abs(inertia)), tiny(1.0_wp))
+    tr = inertia(1, 1) + inertia(2, 2) + inertia(3, 3)
+    if (maxval(abs(inertia - transpose(inertia))) > 1e-12_wp*scale .or. &
+        minval([inertia(1, 1), inertia(2, 2), inertia(3, 3)]) < 0 .or. &
+        2*maxval([inertia(1, 1), inertia(2, 2), inertia(3, 3)]) > tr*(1 + 1e-12_wp) .or. &
+        .not. all(abs(inertia) <= huge(inertia))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'mass element '''//name//''': the inertia tensor '// &
+        'must be symmetric with non-negative moments obeying the triangle inequality (I_k <= I_l + I_m)')
+    end if
+  end function new_mass_element
+
+  pure subroutine mass_position(self, frames, scalars, status)
+    class(mass_element_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t), intent(inout) :: status
+    associate (unused => scalars, unused_status => status)
+    end associate
+    associate (k => frames(self%frame))
+      self%s = matmul(k%rot, self%com)
+      self%inertia_w = matmul(k%rot, matmul(self%inertia, transpose(k%rot)))
+    end associate
+  end subroutine mass_position
+
+  pure subroutine mass_nothing(self, frames, scalars)
+    class(mass_element_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    associate (unused => self, unused_f => frames, unused_s => scalars)
+    end associate
+  end subroutine mass_nothing
+
+  pure subroutine mass_force(self, frames, scalars, inertia, applied)
+    class(mass_element_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    logical, intent(in) :: inertia, applied
+    real(wp) :: f(3), t(3)
+    associate (unused => scalars)
+    end associate
+    associate (k => frames(self%frame), s => self%s)
+      if (inertia) then
+        f = -self%mass*(k%a + cross(k%alpha, s) + cross(k%omega, cross(k%omega, s)))     ! (3.23)
+        t = -(matmul(self%inertia_w, k%alpha) + cross(k%omega, matmul(self%inertia_w, k%omega))) &
+            + cross(s, f)
+        k%force = k%force + f
+        k%torque = k%torque + t
+      end if
+      if (applied) then
+        f = self%mass*self%gravity
+        k%force = k%force + f
+        k%torque = k%torque + cross(s, f)
+      end if
+    end associate
+  end subroutine mass_force
+
+  !> T = m |v_S|^2/2 + omega.Theta_w omega/2, V = -m g.r_S.
+  pure subroutine mass_energy(self, frames, kinetic, potential)
+    class(mass_element_t), intent(in) :: self
+    type(frame_state_t), intent(in) :: frames(:)
+    real(wp), intent(out) :: kinetic, potential
+    real(wp) :: vs(3)
+    associate (k => frames(self%frame))
+      vs = k%v + cross(k%omega, self%s)
+      kinetic = 0.5_wp*self%mass*dot_product(vs, vs) + &
+                0.5_wp*dot_product(k%omega, matmul(self%inertia_w, k%omega))
+      potential = -self%mass*dot_product(self%gravity, k%r + self%s)
+    end associate
+  end subroutine mass_energy
+
+  function new_applied_force(name, frame, force, torque, body_fixed) result(e)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame
+    real(wp), intent(in) :: force(3), torque(3)
+    logical, intent(in) :: body_fixed
+    type(applied_force_t) :: e
+    e%name = name
+    e%frame = frame
+    e%force_value = force
+    e%torque_value = torque
+    e%body_fixed = body_fixed
+  end function new_applied_force
+
+  pure subroutine applied_position(self, frames, scalars, status)
+    class(applied_force_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t), intent(inout) :: status
+    associate (unused => self, unused_f => frames, unused_s => scalars, unused_status => status)
+    end associate
+  end subroutine applied_position
+
+  pure subroutine applied_nothing(self, frames, scalars)
+    class(applied_force_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    associate (unused => self, unused_f => frames, unused_s => scalars)
+    end associate
+  end subroutine applied_nothing
+
+  pure subroutine applied_force(self, frames, scalars, inertia, applied)
+    class(applied_force_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    logical, intent(in) :: inertia, applied
+    associate (unused => scalars, unused_i => inertia)
+    end associate
+    if (.not. applied) return
+    associate (k => frames(self%frame))
+      if (self%body_fixed) then
+        k%force = k%force + matmul(k%rot, self%force_value)
+        k%torque = k%torque + matmul(k%rot, self%torque_value)
+      else
+        k%force = k%force + self%force_value
+        k%torque = k%torque + self%torque_value
+      end if
+    end associate
+  end subroutine applied_force
+end module kinetostatics_mass

@@ -1,0 +1,112 @@
+!> State objects of the kinetostatic method (thesis 3.1) and the seam every
+!> transmission element implements (thesis 3.2).
+!>
+!> A frame state holds, all in world (ground, K_0) coordinates: the orientation
+!> R (columns = the frame's axes), the position r of its origin, the angular
+!> velocity omega and linear velocity v of the origin, their time derivatives
+!> alpha and a (thesis (3.1)), and the torque (about the origin) and force acting
+!> there (the wrench of (3.2)). A scalar state holds a joint variable or a
+!> measurement: value, rate, second rate and generalized force (for a measurement
+!> the generalized force is its cut force lambda, thesis 3.1).
+!>
+!> An element maps its input states forward at position, velocity and
+!> acceleration level ((3.3)-(3.5)) and pushes the forces of its outputs back to
+!> its inputs with the transposed Jacobian ((3.7)); forces are *added* to the
+!> inputs, so several elements can load one frame. Leaf elements (mass, force)
+!> have no outputs and add forces only. The force pass can switch off inertia
+!> (d'Alembert forces) and applied forces independently: this is what the f + 1
+!> inverse-dynamics passes of thesis 3.4 need.
+module kinetostatics_state
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  implicit none (type, external)
+  private
+  public :: frame_state_t, scalar_state_t, element_t, element_box_t, axis_rotation
+
+  type :: frame_state_t
+    real(wp) :: rot(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])  ! columns x, y, z
+    real(wp) :: r(3) = 0        ! m
+    real(wp) :: omega(3) = 0    ! rad/s
+    real(wp) :: v(3) = 0        ! m/s
+    real(wp) :: alpha(3) = 0    ! rad/s^2
+    real(wp) :: a(3) = 0        ! m/s^2
+    real(wp) :: torque(3) = 0   ! N m, about the origin
+    real(wp) :: force(3) = 0    ! N
+  end type frame_state_t
+
+  type :: scalar_state_t
+    real(wp) :: q = 0      ! rad or m (measurements: their unit)
+    real(wp) :: qd = 0     ! per s
+    real(wp) :: qdd = 0    ! per s^2
+    real(wp) :: force = 0  ! N m, N, or the cut force of a measurement
+  end type scalar_state_t
+
+  type, abstract :: element_t
+    character(len=:), allocatable :: name
+  contains
+    procedure(position_i), deferred :: position
+    procedure(motion_i), deferred :: velocity
+    procedure(motion_i), deferred :: acceleration
+    procedure(force_i), deferred :: force
+    procedure :: energy => element_energy
+  end type element_t
+
+  type :: element_box_t
+    class(element_t), allocatable :: e
+  end type element_box_t
+
+  abstract interface
+    !> Output positions from input positions; may store geometry for later levels.
+    pure subroutine position_i(self, frames, scalars, status)
+      import :: element_t, frame_state_t, scalar_state_t, status_t
+      class(element_t), intent(inout) :: self
+      type(frame_state_t), intent(inout) :: frames(:)
+      type(scalar_state_t), intent(inout) :: scalars(:)
+      type(status_t), intent(inout) :: status
+    end subroutine position_i
+
+    !> Velocity (or acceleration) level, after `position` at the same positions.
+    pure subroutine motion_i(self, frames, scalars)
+      import :: element_t, frame_state_t, scalar_state_t
+      class(element_t), intent(inout) :: self
+      type(frame_state_t), intent(inout) :: frames(:)
+      type(scalar_state_t), intent(inout) :: scalars(:)
+    end subroutine motion_i
+
+    !> Adds J^T (output forces) to the inputs; leaves add their own forces.
+    pure subroutine force_i(self, frames, scalars, inertia, applied)
+      import :: element_t, frame_state_t, scalar_state_t
+      class(element_t), intent(inout) :: self
+      type(frame_state_t), intent(inout) :: frames(:)
+      type(scalar_state_t), intent(inout) :: scalars(:)
+      logical, intent(in) :: inertia, applied
+    end subroutine force_i
+  end interface
+
+contains
+
+  !> Kinetic and potential energy (J); zero unless the element carries mass.
+  pure subroutine element_energy(self, frames, kinetic, potential)
+    class(element_t), intent(in) :: self
+    type(frame_state_t), intent(in) :: frames(:)
+    real(wp), intent(out) :: kinetic, potential
+    associate (unused => self, unused_frames => frames)
+    end associate
+    kinetic = 0
+    potential = 0
+  end subroutine element_energy
+
+  !> Rotation by `angle` (rad) about the unit vector e (Rodrigues).
+  pure function axis_rotation(e, angle) result(r)
+    real(wp), intent(in) :: e(3), angle
+    real(wp) :: r(3, 3), c, s, k(3, 3)
+    integer :: i
+    c = cos(angle)
+    s = sin(angle)
+    k = reshape([0.0_wp, e(3), -e(2), -e(3), 0.0_wp, e(1), e(2), -e(1), 0.0_wp], [3, 3])
+    r = s*k + (1 - c)*matmul(k, k)
+    do i = 1, 3
+      r(i, i) = r(i, i) + 1
+    end do
+  end function axis_rotation
+end module kinetostatics_state

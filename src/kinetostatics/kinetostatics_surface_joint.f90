@@ -1,0 +1,256 @@
+!> The surface joint (thesis 3.5.1): input frame K_1 and surface parameters
+!> (u, v) -> the Darboux frame K_D at r(u, v) on a surface given in K_1.
+!>
+!> Position (3.43): R_D = R_1 [x_D y_D z_D], r_D = r_1 + R_1 r(u, v).
+!> Velocity (3.53): with the frame rates a..f of (3.45) the relative angular
+!> velocity in K_1 coordinates is W_u u' + W_v v' with (from (3.44))
+!>     W_u = (z.e) x + (x.c) y + (y.a) z,   W_v = (z.f) x + (x.d) y + (y.b) z,
+!> so  omega_D = omega_1 + R_1 (W_u u' + W_v v'),
+!>     v_D = v_1 + omega_1 x p + R_1 (r_u u' + r_v v'),  p = R_1 r.
+!> Acceleration (appendix B, written with the u/v derivatives of W):
+!>     alpha_D = alpha_1 + R_1 (W_u u'' + W_v v'' + W_u' u' + W_v' v') + omega_1 x R_1 (W_u u' + W_v v')
+!>     a_D = a_1 + alpha_1 x p + omega_1 x (omega_1 x p) + 2 omega_1 x R_1 (r_u u' + r_v v')
+!>           + R_1 (r_u u'' + r_v v'' + r_uu u'^2 + 2 r_uv u' v' + r_vv v'^2)       (B.10), (B.11)
+!> with W_u' = W_u,u u' + W_u,v v' from the second derivatives of the frame
+!> axes (geometry_darboux). This replaces (B.2)-(B.9), whose printed form
+!> carries conversion errors (B.2 has dots missing; B.4 r_vv for r_uv); the test
+!> compares every level with finite differences of the level below.
+!> Force (3.54): f_1 += f_D, tau_1 += tau_D + p x f_D,
+!>     Q_u = (R_1 W_u).tau_D + (R_1 r_u).f_D,  Q_v likewise.
+!>
+!> Singular points (r_u = 0, rule (3.40)): geometry_darboux gives the frame and
+!> its first rates but not the second derivatives. There W_u,u ... W_v,v are
+!> taken from one-sided three-point differences of W_u, W_v (step h = 1e-4 in
+!> the parameter, towards the inside of the domain): error O(h^2) ~ 1e-8
+!> relative, only at the isolated singular points themselves.
+module kinetostatics_surface_joint
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, prefix_status, STATUS_DOMAIN
+  use base_vector, only: cross
+  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_darboux, only: darboux_frame_t, darboux_frame
+  use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
+  implicit none (type, external)
+  private
+  public :: surface_joint_t, new_surface_joint
+
+  type, extends(element_t) :: surface_joint_t
+    class(surface_t), allocatable :: surface
+    integer :: frame_in = 0, frame_out = 0, var_u = 0, var_v = 0
+    real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0   ! (3.38), (3.41)
+    ! geometry at the last position (world coordinates unless noted)
+    type(surface_point_t) :: point
+    type(darboux_frame_t) :: frame
+    real(wp) :: p(3) = 0                        ! R_1 r
+    real(wp) :: gu(3) = 0, gv(3) = 0            ! R_1 W_u, R_1 W_v
+    real(wp) :: tu(3) = 0, tv(3) = 0            ! R_1 r_u, R_1 r_v
+    real(wp) :: guu(3) = 0, guv(3) = 0, gvu(3) = 0, gvv(3) = 0   ! R_1 W_u,u ...
+    real(wp) :: huu(3) = 0, huv(3) = 0, hvv(3) = 0               ! R_1 r_uu ...
+    real(wp) :: w_rel(3) = 0, omega_rel(3) = 0  ! relative velocities (world) at the last velocity pass
+  contains
+    procedure :: position => sj_position
+    procedure :: velocity => sj_velocity
+    procedure :: acceleration => sj_acceleration
+    procedure :: force => sj_force
+  end type surface_joint_t
+
+contains
+
+  function new_surface_joint(name, frame_in, frame_out, var_u, var_v, surface, sigma, alpha_u, alpha_v) &
+      result(e)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame_in, frame_out, var_u, var_v
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: sigma, alpha_u, alpha_v
+    type(surface_joint_t) :: e
+    e%name = name
+    e%frame_in = frame_in
+    e%frame_out = frame_out
+    e%var_u = var_u
+    e%var_v = var_v
+    allocate (e%surface, source=surface)
+    e%sigma = sigma
+    e%alpha_u = alpha_u
+    e%alpha_v = alpha_v
+  end function new_surface_joint
+
+  !> W_u, W_v (K_1 coordinates) from a Darboux frame.
+  pure subroutine angular_rates(fr, wu, wv)
+    type(darboux_frame_t), intent(in) :: fr
+    real(wp), intent(out) :: wu(3), wv(3)
+    associate (x => fr%r(:, 1), y => fr%r(:, 2), z => fr%r(:, 3))
+      wu = dot_product(z, fr%e)*x + dot_product(x, fr%c)*y + dot_product(y, fr%a)*z
+      wv = dot_product(z, fr%f)*x + dot_product(x, fr%d)*y + dot_product(y, fr%b)*z
+    end associate
+  end subroutine angular_rates
+
+  pure subroutine sj_position(self, frames, scalars, status)
+    class(surface_joint_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: u, v, wu(3), wv(3), wuu(3), wuv(3), wvu(3), wvv(3)
+    character(len=24) :: tu, tv
+
+    u = scalars(self%var_u)%q
+    v = scalars(self%var_v)%q
+    if (.not. self%surface%in_domain(u, v)) then
+      write (tu, '(es12.5)') u
+      write (tv, '(es12.5)') v
+      call set_status(status, STATUS_DOMAIN, 'surface joint '''//self%name//''': (u, v) = ('// &
+                      trim(adjustl(tu))//', '//trim(adjustl(tv))//') left the parameter domain of the '// &
+                      self%surface%describe())
+      return
+    end if
+    call self%surface%evaluate(u, v, 3, self%point, status)
+    if (status%ok()) call darboux_frame(self%point, self%sigma, self%alpha_u, self%alpha_v, self%frame, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'surface joint '''//self%name//'''')
+      return
+    end if
+    call angular_rates(self%frame, wu, wv)
+    if (self%frame%second_order) then
+      call rate_derivatives(self%frame, wuu, wuv, wvu, wvv)
+    else
+      call singular_rate_derivatives(self, u, v, wuu, wuv, wvu, wvv, status)
+      if (.not. status%ok()) return
+    end if
+    associate (i => frames(self%frame_in), o => frames(self%frame_out), pt => self%point)
+      self%p = matmul(i%rot, pt%r)
+      self%gu = matmul(i%rot, wu)
+      self%gv = matmul(i%rot, wv)
+      self%tu = matmul(i%rot, pt%ru)
+      self%tv = matmul(i%rot, pt%rv)
+      self%guu = matmul(i%rot, wuu)
+      self%guv = matmul(i%rot, wuv)
+      self%gvu = matmul(i%rot, wvu)
+      self%gvv = matmul(i%rot, wvv)
+      self%huu = matmul(i%rot, pt%ruu)
+      self%huv = matmul(i%rot, pt%ruv)
+      self%hvv = matmul(i%rot, pt%rvv)
+      o%rot = matmul(i%rot, self%frame%r)
+      o%r = i%r + self%p
+    end associate
+  end subroutine sj_position
+
+  !> u and v derivatives of W_u and W_v (product rule on the definitions above).
+  pure subroutine rate_derivatives(fr, wuu, wuv, wvu, wvv)
+    type(darboux_frame_t), intent(in) :: fr
+    real(wp), intent(out) :: wuu(3), wuv(3), wvu(3), wvv(3)
+    associate (x => fr%r(:, 1), y => fr%r(:, 2), z => fr%r(:, 3), a => fr%a, b => fr%b, &
+               c => fr%c, d => fr%d, e => fr%e, f => fr%f)
+      wuu = (dot_product(c, e) + dot_product(z, fr%e_u))*x + dot_product(z, e)*a &
+          + (dot_product(a, c) + dot_product(x, fr%c_u))*y + dot_product(x, c)*e &
+          + (dot_product(e, a) + dot_product(y, fr%a_u))*z + dot_product(y, a)*c
+      wuv = (dot_product(d, e) + dot_product(z, fr%e_v))*x + dot_product(z, e)*b &
+          + (dot_product(b, c) + dot_product(x, fr%c_v))*y + dot_product(x, c)*f &
+          + (dot_product(f, a) + dot_product(y, fr%a_v))*z + dot_product(y, a)*d
+      wvu = (dot_product(c, f) + dot_product(z, fr%f_u))*x + dot_product(z, f)*a &
+          + (dot_product(a, d) + dot_product(x, fr%d_u))*y + dot_product(x, d)*e &
+          + (dot_product(e, b) + dot_product(y, fr%b_u))*z + dot_product(y, b)*c
+      wvv = (dot_product(d, f) + dot_product(z, fr%f_v))*x + dot_product(z, f)*b &
+          + (dot_product(b, d) + dot_product(x, fr%d_v))*y + dot_product(x, d)*f &
+          + (dot_product(f, b) + dot_product(y, fr%b_v))*z + dot_product(y, b)*d
+    end associate
+  end subroutine rate_derivatives
+
+  !> At a singular point: one-sided three-point differences of W_u, W_v (see
+  !> the module comment), stepping to the side that stays in the domain.
+  pure subroutine singular_rate_derivatives(self, u, v, wuu, wuv, wvu, wvv, status)
+    class(surface_joint_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    real(wp), intent(out) :: wuu(3), wuv(3), wvu(3), wvv(3)
+    type(status_t), intent(inout) :: status
+    real(wp), parameter :: h0 = 1e-4_wp
+    real(wp) :: w0u(3), w0v(3), w1u(3), w1v(3), w2u(3), w2v(3), h
+    call rates_at(self, u, v, w0u, w0v, status)
+    h = h0
+    if (.not. self%surface%in_domain(u + 2*h, v)) h = -h0
+    call rates_at(self, u + h, v, w1u, w1v, status)
+    call rates_at(self, u + 2*h, v, w2u, w2v, status)
+    wuu = (-3*w0u + 4*w1u - w2u)/(2*h)
+    wvu = (-3*w0v + 4*w1v - w2v)/(2*h)
+    h = h0
+    if (.not. self%surface%in_domain(u, v + 2*h)) h = -h0
+    call rates_at(self, u, v + h, w1u, w1v, status)
+    call rates_at(self, u, v + 2*h, w2u, w2v, status)
+    wuv = (-3*w0u + 4*w1u - w2u)/(2*h)
+    wvv = (-3*w0v + 4*w1v - w2v)/(2*h)
+    if (.not. status%ok()) call prefix_status(status, 'surface joint '''//self%name//''' at a singular point')
+  end subroutine singular_rate_derivatives
+
+  pure subroutine rates_at(self, u, v, wu, wv, status)
+    class(surface_joint_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    real(wp), intent(out) :: wu(3), wv(3)
+    type(status_t), intent(inout) :: status
+    type(surface_point_t) :: pt
+    type(darboux_frame_t) :: fr
+    type(status_t) :: local
+    wu = 0
+    wv = 0
+    if (.not. status%ok()) return
+    call self%surface%evaluate(u, v, 3, pt, local)
+    if (local%ok()) call darboux_frame(pt, self%sigma, self%alpha_u, self%alpha_v, fr, local)
+    if (.not. local%ok()) then
+      status = local
+      return
+    end if
+    call angular_rates(fr, wu, wv)
+  end subroutine rates_at
+
+  pure subroutine sj_velocity(self, frames, scalars)
+    class(surface_joint_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    real(wp) :: ud, vd
+    ud = scalars(self%var_u)%qd
+    vd = scalars(self%var_v)%qd
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      self%omega_rel = self%gu*ud + self%gv*vd          ! (3.53)
+      self%w_rel = self%tu*ud + self%tv*vd              ! (3.52)
+      o%omega = i%omega + self%omega_rel
+      o%v = i%v + cross(i%omega, self%p) + self%w_rel
+    end associate
+  end subroutine sj_velocity
+
+  pure subroutine sj_acceleration(self, frames, scalars)
+    class(surface_joint_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    real(wp) :: ud, vd, udd, vdd, omega_rel(3), w_rel(3)
+    ud = scalars(self%var_u)%qd
+    vd = scalars(self%var_v)%qd
+    udd = scalars(self%var_u)%qdd
+    vdd = scalars(self%var_v)%qdd
+    omega_rel = self%gu*ud + self%gv*vd
+    w_rel = self%tu*ud + self%tv*vd
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      ! (B.1) with the rate derivatives in place of (B.2)-(B.9)
+      o%alpha = i%alpha + self%gu*udd + self%gv*vdd &
+                + (self%guu*ud + self%guv*vd)*ud + (self%gvu*ud + self%gvv*vd)*vd &
+                + cross(i%omega, omega_rel)
+      ! (B.10), (B.11)
+      o%a = i%a + cross(i%alpha, self%p) + cross(i%omega, cross(i%omega, self%p)) &
+            + 2*cross(i%omega, w_rel) + self%tu*udd + self%tv*vdd &
+            + self%huu*ud**2 + 2*self%huv*ud*vd + self%hvv*vd**2
+    end associate
+  end subroutine sj_acceleration
+
+  pure subroutine sj_force(self, frames, scalars, inertia, applied)
+    class(surface_joint_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    logical, intent(in) :: inertia, applied
+    real(wp) :: f(3), t(3)
+    associate (unused_i => inertia, unused_a => applied)
+    end associate
+    f = frames(self%frame_out)%force
+    t = frames(self%frame_out)%torque
+    ! (3.54)
+    frames(self%frame_in)%force = frames(self%frame_in)%force + f
+    frames(self%frame_in)%torque = frames(self%frame_in)%torque + t + cross(self%p, f)
+    scalars(self%var_u)%force = scalars(self%var_u)%force + dot_product(self%gu, t) + dot_product(self%tu, f)
+    scalars(self%var_v)%force = scalars(self%var_v)%force + dot_product(self%gv, t) + dot_product(self%tv, f)
+  end subroutine sj_force
+end module kinetostatics_surface_joint
