@@ -7,6 +7,7 @@ module fitpack_surface_interfaces
   private
   public :: bispev, parder, fpbisp
   public :: regrid, fpregr, fpgrre
+  public :: surfit, fpsurf, fporde, fprank
 
   interface
     subroutine bispev(tx, nx, ty, ny, c, kx, ky, x, mx, y, my, z, wrk, lwrk, iwrk, kwrk, ier)
@@ -82,5 +83,52 @@ module fitpack_surface_interfaces
       real(real64), intent(inout) :: ax(nx, kx + 2), ay(ny, ky + 2), bx(nx, kx + 2), by(ny, ky + 2)
       integer, intent(inout) :: nrx(mx), nry(my)
     end subroutine fpgrre
+
+    subroutine surfit(iopt, m, x, y, z, w, xb, xe, yb, ye, kx, ky, s, nxest, nyest, nmax, eps, nx, tx, &
+                      ny, ty, c, fp, wrk1, lwrk1, wrk2, lwrk2, iwrk, kwrk, ier)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: iopt, m, kx, ky, nxest, nyest, nmax, lwrk1, lwrk2, kwrk
+      real(real64), intent(in) :: x(m), y(m), z(m), w(m), xb, xe, yb, ye, s, eps
+      integer, intent(inout) :: nx, ny
+      real(real64), intent(inout) :: tx(nmax), ty(nmax)
+      real(real64), intent(inout) :: c((nxest - kx - 1)*(nyest - ky - 1))
+      real(real64), intent(out) :: fp
+      real(real64), intent(inout) :: wrk1(lwrk1), wrk2(lwrk2)
+      integer, intent(inout) :: iwrk(kwrk)
+      integer, intent(out) :: ier
+    end subroutine surfit
+
+    subroutine fpsurf(iopt, m, x, y, z, w, xb, xe, yb, ye, kxx, kyy, s, nxest, nyest, eta, tol, maxit, &
+                      nmax, nx0, tx, ny0, ty, c, fp, fp0, wrk, lwrk, ier)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: iopt, m, kxx, kyy, nxest, nyest, maxit, nmax, lwrk
+      real(real64), intent(in) :: x(m), y(m), z(m), w(m), xb, xe, yb, ye, s, eta, tol
+      integer, intent(inout) :: nx0, ny0
+      real(real64), intent(inout) :: tx(nmax), ty(nmax), c(*)
+      real(real64), intent(out) :: fp
+      real(real64), intent(inout) :: fp0, wrk(lwrk)
+      integer, intent(inout) :: ier
+    end subroutine fpsurf
+
+    pure subroutine fporde(x, y, m, kx, ky, tx, nx, ty, ny, nummer, index, nreg)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: m, kx, ky, nx, ny, nreg
+      real(real64), intent(in) :: x(m), y(m), tx(nx), ty(ny)
+      integer, intent(out) :: nummer(m), index(nreg)
+    end subroutine fporde
+
+    pure subroutine fprank(a, f, n, m, na, tol, c, sq, rank, aa, ff, h)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: n, m, na
+      real(real64), intent(inout) :: a(na, m), f(n)
+      real(real64), intent(in) :: tol
+      real(real64), intent(out) :: c(n), sq
+      integer, intent(out) :: rank
+      real(real64), intent(out) :: aa(n, m), ff(n), h(m)
+    end subroutine fprank
   end interface
 end module fitpack_surface_interfaces
