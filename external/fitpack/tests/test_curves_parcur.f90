@@ -1,0 +1,115 @@
+!> parcur and clocur against the genuine FITPACK (tables made by
+!> scripts/reference/fitpack_curves.py).
+program test_curves_parcur
+  use, intrinsic :: iso_fortran_env, only: real64
+  use fitpack_interfaces, only: parcur, clocur
+  use fitpack_reference_io
+  implicit none (type, external)
+  type(reference_table_t) :: tab
+  logical :: ok
+  integer :: ic
+
+  call load_table(reference_path('curves_parcur.txt'), tab, ok)
+  call expect(ok, 'read curves_parcur.txt')
+  if (ok) then
+    call expect(tab%n_cases >= 20, 'enough parcur cases')
+    do ic = 1, tab%n_cases
+      call run_case(trim(tab%case_names(ic)), .false.)
+    end do
+  end if
+  call load_table(reference_path('curves_clocur.txt'), tab, ok)
+  call expect(ok, 'read curves_clocur.txt')
+  if (ok) then
+    do ic = 1, tab%n_cases
+      call run_case(trim(tab%case_names(ic)), .true.)
+    end do
+  end if
+  call finish_checks('fitpack parcur/clocur')
+
+contains
+
+  subroutine run_case(name, closed)
+    character(len=*), intent(in) :: name
+    logical, intent(in) :: closed
+    real(real64), allocatable :: u(:), x(:), w(:), tin(:), tref(:), cref(:), uref(:), t(:), c(:), wrk(:)
+    integer, allocatable :: iwrk(:)
+    real(real64) :: s, s_first, ub, ue, fp, fpref, rtol_c, scale
+    integer :: iopt, ipar, idim, k, nest, lwrk, n, ier, ierref, nref, m, j, nc
+    character(len=8) :: key
+    logical :: f
+
+    call get_int(tab, name, 'iopt', iopt, f)
+    call get_int(tab, name, 'ipar', ipar, f)
+    call get_int(tab, name, 'idim', idim, f)
+    call get_int(tab, name, 'k', k, f)
+    call get_int(tab, name, 'nest', nest, f)
+    call get_real(tab, name, 's', s, f)
+    call get_reals(tab, name, 'u', u, f)
+    call get_reals(tab, name, 'x', x, f)
+    call get_reals(tab, name, 'w', w, f)
+    call get_int(tab, name, 'ier', ierref, f)
+    m = size(u)
+    ub = 0
+    ue = 0
+    if (.not. closed) then
+      call get_real(tab, name, 'ub', ub, f)
+      call get_real(tab, name, 'ue', ue, f)
+      lwrk = m*(k + 1) + nest*(6 + idim + 3*k)
+    else
+      lwrk = m*(k + 1) + nest*(7 + idim + 5*k)
+    end if
+    nc = nest*idim
+    allocate (t(nest), c(nc), wrk(lwrk), iwrk(nest))
+    t = 0
+    c = 0
+    wrk = 0
+    iwrk = 0
+    n = 0
+    fp = 0
+    if (iopt == -1) then
+      call get_int(tab, name, 'n_in', n, f)
+      call get_reals(tab, name, 't_in', tin, f)
+      t(1:n) = tin
+    end if
+    if (has_key(tab, name, 's_first')) then
+      call get_real(tab, name, 's_first', s_first, f)
+      call parcur(0, ipar, idim, m, u, size(x), x, w, ub, ue, k, s_first, nest, n, t, nc, c, fp, &
+                  wrk, lwrk, iwrk, ier)
+    end if
+    if (closed) then
+      call clocur(iopt, ipar, idim, m, u, size(x), x, w, k, s, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
+    else
+      call parcur(iopt, ipar, idim, m, u, size(x), x, w, ub, ue, k, s, nest, n, t, nc, c, fp, &
+                  wrk, lwrk, iwrk, ier)
+    end if
+    call expect(ier == ierref, name//': ier')
+    if (ier /= ierref) print '(a, 2i6)', '   ier got/expected ', ier, ierref
+    if (ierref == 10 .or. ier /= ierref) return
+    if (has_key(tab, name, 'u_out') .and. ipar == 0) then
+      call get_reals(tab, name, 'u_out', uref, f)
+      ! chord-length parameters: sums of square roots, rounding only
+      call expect_close_array(u, uref, 1e-13_real64, 1e-14_real64, name//': chord-length parameters')
+    end if
+    call get_int(tab, name, 'n', nref, f)
+    call expect(n == nref, name//': number of knots')
+    if (n /= nref) then
+      print '(a, 2i6)', '   n got/expected ', n, nref
+      return
+    end if
+    call get_reals(tab, name, 't', tref, f)
+    call get_real(tab, name, 'fp', fpref, f)
+    ! knots are parameter values or their midpoints (periodic: shifted by the period)
+    call expect_close_array(t(1:n), tref, 1e-12_real64, 1e-12_real64*maxval(abs(tref)), name//': knots')
+    ! unique results to 1e-10, p-iteration results to 1e-8; atol from the largest coefficient
+    rtol_c = 1e-8_real64
+    if (iopt == -1 .or. s == 0 .or. ier == -1 .or. ier == -2) rtol_c = 1e-10_real64
+    do j = 1, idim
+      write (key, '(a, i0)') 'c', j
+      call get_reals(tab, name, trim(key), cref, f)
+      scale = maxval(abs(cref))
+      call expect_close_array(c(n*(j - 1) + 1:n*(j - 1) + n - k - 1), cref, rtol_c, rtol_c*scale, &
+                              name//': coefficients '//trim(key))
+    end do
+    call expect_close(fp, fpref, rtol_c, rtol_c*sum(x**2)*1e-6_real64, name//': fp')
+  end subroutine run_case
+end program test_curves_parcur
