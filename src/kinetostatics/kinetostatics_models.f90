@@ -1,0 +1,233 @@
+!> Ready-made mechanisms built from the elements: simple and double pendulum,
+!> four-bar linkage (a loop closed by two plane-point measurements) and the
+!> sled (a bar on a surface, closed like the rider's legs in thesis (4.27)).
+!> Scenarios, tests and benchmarks build their models here.
+module kinetostatics_models
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_darboux, only: darboux_frame_t, darboux_frame
+  use kinetostatics_joints, only: new_rigid_offset, new_revolute
+  use kinetostatics_surface_joint, only: new_surface_joint
+  use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT
+  use kinetostatics_mass, only: new_mass_element
+  use kinetostatics_mechanism, only: mechanism_t
+  implicit none (type, external)
+  private
+  public :: pendulum_params_t, build_pendulum, fourbar_params_t, build_fourbar, fourbar_assembly
+  public :: sled_params_t, build_sled
+
+  !> One or two links hanging from the ground, turning about the ground's y axis;
+  !> link k carries a mass at distance length(k) along its -z axis.
+  type :: pendulum_params_t
+    integer :: links = 1
+    real(wp) :: length(2) = 1        ! m
+    real(wp) :: mass(2) = 1          ! kg
+    real(wp) :: inertia(2) = 0       ! kg m^2 about the centre of mass (axis y and x)
+    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -9.80665_wp]   ! m/s^2
+  end type pendulum_params_t
+
+  !> Planar four-bar (revolutes about z): crank A-B (length a, angle q from x),
+  !> coupler B-C (b), rocker D-C (c), ground A-D (d along x). Uniform rods.
+  type :: fourbar_params_t
+    real(wp) :: a = 0.2_wp, b = 0.6_wp, c = 0.5_wp, d = 0.7_wp       ! m
+    real(wp) :: mass(3) = [0.5_wp, 1.0_wp, 0.8_wp]                   ! kg: crank, coupler, rocker
+    real(wp) :: gravity(3) = [0.0_wp, -9.80665_wp, 0.0_wp]           ! m/s^2
+  end type fourbar_params_t
+
+  !> A rigid bar (length L, centre of mass at L/2 on its axis) on a surface.
+  type :: sled_params_t
+    real(wp) :: length = 0.5_wp                 ! m
+    real(wp) :: mass = 10                       ! kg
+    real(wp) :: inertia(3, 3) = reshape([0.02_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.25_wp, 0.0_wp, &
+                                         0.0_wp, 0.0_wp, 0.25_wp], [3, 3])   ! kg m^2, bar frame
+    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -9.80665_wp]
+    real(wp) :: mu = 0, viscous = 0             ! Coulomb (1) and viscous (N s/m) at both contacts
+    real(wp) :: regularization_speed = 1e-6_wp  ! m/s
+    real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0
+  end type sled_params_t
+
+contains
+
+  !> q = [theta_1(, theta_2)] (rad): absolute angle of link 1, relative angle of link 2.
+  subroutine build_pendulum(p, m, status)
+    type(pendulum_params_t), intent(in) :: p
+    type(mechanism_t), intent(out) :: m
+    type(status_t), intent(inout) :: status
+    integer :: f1, f2, f3, t1, t2, k
+    real(wp) :: inertia(3, 3)
+    character(len=1) :: c
+    if (p%links < 1 .or. p%links > 2) then
+      call set_status(status, STATUS_INVALID_INPUT, 'pendulum: links must be 1 or 2')
+      return
+    end if
+    f1 = m%add_frame('link1')
+    t1 = m%add_scalar('theta1')
+    call m%add_element(new_revolute('hinge1', 1, f1, t1, [0.0_wp, 1.0_wp, 0.0_wp]))
+    do k = 1, p%links
+      inertia = 0
+      inertia(1, 1) = p%inertia(k)
+      inertia(2, 2) = p%inertia(k)
+      write (c, '(i1)') k
+      if (k == 1) then
+        call m%add_element(new_mass_element('bob1', f1, p%mass(1), inertia, [0.0_wp, 0.0_wp, -p%length(1)], &
+                                            p%gravity, status))
+      else
+        f2 = m%add_frame('elbow')
+        call m%add_element(new_rigid_offset('link1_rod', f1, f2, [0.0_wp, 0.0_wp, -p%length(1)]))
+        f3 = m%add_frame('link2')
+        t2 = m%add_scalar('theta2')
+        call m%add_element(new_revolute('hinge2', f2, f3, t2, [0.0_wp, 1.0_wp, 0.0_wp]))
+        call m%add_element(new_mass_element('bob2', f3, p%mass(2), inertia, [0.0_wp, 0.0_wp, -p%length(2)], &
+                                            p%gravity, status))
+      end if
+    end do
+    if (p%links == 1) then
+      call m%set_coordinates([t1])
+    else
+      call m%set_coordinates([t1, t2])
+    end if
+    call m%finalize(status)
+  end subroutine build_pendulum
+
+  !> The dependent angles (coupler relative to crank, rocker absolute) for the
+  !> crank angle q by intersecting two circles; branch +1 or -1 (C above or
+  !> below the line B-D). Fails if the loop cannot be assembled.
+  subroutine fourbar_assembly(p, q, branch, beta, status)
+    type(fourbar_params_t), intent(in) :: p
+    real(wp), intent(in) :: q
+    integer, intent(in) :: branch
+    real(wp), intent(out) :: beta(2)
+    type(status_t), intent(inout) :: status
+    real(wp) :: b(2), dd(2), e, x, y2, cpt(2), u(2)
+    beta = 0
+    b = p%a*[cos(q), sin(q)]
+    dd = [p%d, 0.0_wp] - b
+    e = norm2(dd)
+    if (e > p%b + p%c .or. e < abs(p%b - p%c) .or. e == 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'four-bar: the loop cannot be assembled at this crank '// &
+                      'angle (|B - D| outside [|b - c|, b + c])')
+      return
+    end if
+    x = (p%b**2 - p%c**2 + e**2)/(2*e)
+    y2 = max(p%b**2 - x**2, 0.0_wp)
+    u = dd/e
+    cpt = b + x*u + branch*sqrt(y2)*[-u(2), u(1)]
+    beta(1) = atan2(cpt(2) - b(2), cpt(1) - b(1)) - q
+    beta(2) = atan2(cpt(2), cpt(1) - p%d)
+  end subroutine fourbar_assembly
+
+  !> q = [crank angle]; beta = [coupler angle relative to the crank, rocker angle]
+  !> start from beta0; loop 'coupler-rocker' closes C (coupler end) on the two
+  !> planes x = 0 and y = 0 of the rocker's end frame.
+  subroutine build_fourbar(p, beta0, m, status)
+    type(fourbar_params_t), intent(in) :: p
+    real(wp), intent(in) :: beta0(2)
+    type(mechanism_t), intent(out) :: m
+    type(status_t), intent(inout) :: status
+    integer :: crank, b_end, coupler, c_coupler, d_pivot, rocker, c_rocker, q, b1, b2, g1, g2
+    real(wp), parameter :: z(3) = [0.0_wp, 0.0_wp, 1.0_wp]
+    crank = m%add_frame('crank')
+    q = m%add_scalar('crank_angle')
+    call m%add_element(new_revolute('A', 1, crank, q, z))
+    call m%add_element(new_mass_element('crank_mass', crank, p%mass(1), rod(p%mass(1), p%a), &
+                                        [p%a/2, 0.0_wp, 0.0_wp], p%gravity, status))
+    b_end = m%add_frame('B')
+    call m%add_element(new_rigid_offset('crank_rod', crank, b_end, [p%a, 0.0_wp, 0.0_wp]))
+    coupler = m%add_frame('coupler')
+    b1 = m%add_scalar('coupler_angle', beta0(1))
+    call m%add_element(new_revolute('B_joint', b_end, coupler, b1, z))
+    call m%add_element(new_mass_element('coupler_mass', coupler, p%mass(2), rod(p%mass(2), p%b), &
+                                        [p%b/2, 0.0_wp, 0.0_wp], p%gravity, status))
+    c_coupler = m%add_frame('C_coupler')
+    call m%add_element(new_rigid_offset('coupler_rod', coupler, c_coupler, [p%b, 0.0_wp, 0.0_wp]))
+    d_pivot = m%add_frame('D')
+    call m%add_element(new_rigid_offset('ground_link', 1, d_pivot, [p%d, 0.0_wp, 0.0_wp]))
+    rocker = m%add_frame('rocker')
+    b2 = m%add_scalar('rocker_angle', beta0(2))
+    call m%add_element(new_revolute('D_joint', d_pivot, rocker, b2, z))
+    call m%add_element(new_mass_element('rocker_mass', rocker, p%mass(3), rod(p%mass(3), p%c), &
+                                        [p%c/2, 0.0_wp, 0.0_wp], p%gravity, status))
+    c_rocker = m%add_frame('C_rocker')
+    call m%add_element(new_rigid_offset('rocker_rod', rocker, c_rocker, [p%c, 0.0_wp, 0.0_wp]))
+    g1 = m%add_scalar('closure_x')
+    g2 = m%add_scalar('closure_y')
+    call m%add_element(new_measurement('C_x', MEASURE_PLANE_POINT, c_rocker, c_coupler, g1, &
+                                       axis_i=[1.0_wp, 0.0_wp, 0.0_wp]))
+    call m%add_element(new_measurement('C_y', MEASURE_PLANE_POINT, c_rocker, c_coupler, g2, &
+                                       axis_i=[0.0_wp, 1.0_wp, 0.0_wp]))
+    call m%add_loop('coupler-rocker', [g1, g2], [0.0_wp, 0.0_wp], [b1, b2], status)
+    call m%set_coordinates([q])
+    call m%finalize(status)
+  end subroutine build_fourbar
+
+  !> Uniform thin rod along x: inertia diag(0, m l^2/12, m l^2/12) about its centre.
+  pure function rod(mass, length) result(inertia)
+    real(wp), intent(in) :: mass, length
+    real(wp) :: inertia(3, 3)
+    inertia = 0
+    inertia(2, 2) = mass*length**2/12
+    inertia(3, 3) = inertia(2, 2)
+  end function rod
+
+  !> q = [u, v, phi]: rear contact (surface joint 'rear') and the bar's heading
+  !> about the normal; beta = [pitch, u2, v2]: the pitch revolute (about y)
+  !> and the front contact (surface joint 'front'), closed by three plane-point
+  !> measurements with the planes of the front Darboux frame (thesis (4.27)).
+  !> beta starts from the projection of the front end onto the surface's
+  !> tangent plane at (u0, v0), pitch 0.
+  subroutine build_sled(p, surface, q0, m, status)
+    type(sled_params_t), intent(in) :: p
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: q0(3)
+    type(mechanism_t), intent(out) :: m
+    type(status_t), intent(inout) :: status
+    integer :: d1, heading, bar, front, d2, su, sv, sphi, spitch, su2, sv2, gx, gy, gz
+    type(surface_point_t) :: pt
+    type(darboux_frame_t) :: fr
+    real(wp) :: dvec(3), e11, e12, e22, b1, b2, det, du, dv
+
+    call surface%evaluate(q0(1), q0(2), 3, pt, status)
+    if (status%ok()) call darboux_frame(pt, p%sigma, p%alpha_u, p%alpha_v, fr, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'sled start')
+      return
+    end if
+    dvec = p%length*(cos(q0(3))*fr%r(:, 1) + sin(q0(3))*fr%r(:, 2))
+    e11 = dot_product(pt%ru, pt%ru); e12 = dot_product(pt%ru, pt%rv); e22 = dot_product(pt%rv, pt%rv)
+    b1 = dot_product(pt%ru, dvec); b2 = dot_product(pt%rv, dvec)
+    det = e11*e22 - e12**2
+    du = (e22*b1 - e12*b2)/det
+    dv = (e11*b2 - e12*b1)/det
+
+    d1 = m%add_frame('rear_contact')
+    su = m%add_scalar('u', q0(1))
+    sv = m%add_scalar('v', q0(2))
+    call m%add_element(new_surface_joint('rear', 1, d1, su, sv, surface, p%sigma, p%alpha_u, p%alpha_v))
+    heading = m%add_frame('heading')
+    sphi = m%add_scalar('phi', q0(3))
+    call m%add_element(new_revolute('yaw', d1, heading, sphi, [0.0_wp, 0.0_wp, 1.0_wp]))
+    bar = m%add_frame('bar')
+    spitch = m%add_scalar('pitch', 0.0_wp)
+    call m%add_element(new_revolute('pitch', heading, bar, spitch, [0.0_wp, 1.0_wp, 0.0_wp]))
+    call m%add_element(new_mass_element('bar_mass', bar, p%mass, p%inertia, [p%length/2, 0.0_wp, 0.0_wp], &
+                                        p%gravity, status))
+    front = m%add_frame('bar_front')
+    call m%add_element(new_rigid_offset('bar_rod', bar, front, [p%length, 0.0_wp, 0.0_wp]))
+    d2 = m%add_frame('front_contact')
+    su2 = m%add_scalar('u2', q0(1) + du)
+    sv2 = m%add_scalar('v2', q0(2) + dv)
+    call m%add_element(new_surface_joint('front', 1, d2, su2, sv2, surface, p%sigma, p%alpha_u, p%alpha_v))
+    gx = m%add_scalar('front_x')
+    gy = m%add_scalar('front_y')
+    gz = m%add_scalar('front_z')
+    call m%add_element(new_measurement('front_x', MEASURE_PLANE_POINT, d2, front, gx, axis_i=[1.0_wp, 0.0_wp, 0.0_wp]))
+    call m%add_element(new_measurement('front_y', MEASURE_PLANE_POINT, d2, front, gy, axis_i=[0.0_wp, 1.0_wp, 0.0_wp]))
+    call m%add_element(new_measurement('front_z', MEASURE_PLANE_POINT, d2, front, gz, axis_i=[0.0_wp, 0.0_wp, 1.0_wp]))
+    call m%add_loop('front contact', [gx, gy, gz], [0.0_wp, 0.0_wp, 0.0_wp], [spitch, su2, sv2], status)
+    call m%add_contact('rear', d1, p%mu, p%viscous, p%regularization_speed)
+    call m%add_contact('front', d2, p%mu, p%viscous, p%regularization_speed)
+    call m%set_coordinates([su, sv, sphi])
+    call m%finalize(status)
+  end subroutine build_sled
+end module kinetostatics_models
