@@ -1,0 +1,318 @@
+!> Slides from standard elements: straight (length, slope), curve (radius,
+!> turning angle, direction, slope), helix (radius, turns, drop, direction) and
+!> run-out (length, slope), joined with continuous tangent.
+!>
+!> The centerline is built from the horizontal curvature kappa(sigma) and the
+!> gradient g(sigma) = -dz/dsigma as functions of the horizontal arc length
+!> sigma (the curve parameter u = sigma, m). Each element has constant kappa
+!> (0, +-1/R) and g (tan of its slope). At each joint both change over a
+!> transition of horizontal length L by the septic smoothstep
+!>   S(t) = 35 t^4 - 84 t^5 + 70 t^6 - 20 t^7  (C3: S', S'', S''' vanish at 0 and 1)
+!> — a clothoid-like transition (kappa varies smoothly instead of jumping), so
+!> the centerline is C4 and the tube's third partials are continuous. L is the
+!> transition length given by the user, shortened to the shorter neighbour;
+!> L = 0 gives sharp joints (continuous tangent, curvature jumps).
+!> Heading psi = int kappa and height z = z0 - int g are closed-form; x and y
+!> are int [cos psi, sin psi] dsigma, tabulated at nodes every 0.5 m and
+!> completed by 8-point Gauss-Legendre from the nearest node (no allocation,
+!> exact to ~1e-14 m). Derivatives are closed-form:
+!>   c' = [cos psi, sin psi, -g], c'' = [-k sin psi, k cos psi, -g'],
+!>   c''' = [-k^2 cos psi - k' sin psi, -k^2 sin psi + k' cos psi, -g''],
+!>   c'''' = [k^3 sin psi - 3 k k' cos psi - k'' sin psi,
+!>            -k^3 cos psi - 3 k k' sin psi + k'' cos psi, -g'''].
+!> The horizon field of a slide is the vertical [0, 0, 1].
+module geometry_slide_elements
+  use base_kinds, only: wp
+  use base_constants, only: pi, two_pi
+  use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT
+  use geometry_curve, only: curve_t, curve_point_t
+  implicit none (type, external)
+  private
+  public :: slide_element_t, element_chain_curve_t, new_element_chain, slide_points
+  public :: element_kinds
+
+  character(len=*), parameter :: element_kinds(4) = [character(len=8) :: 'straight', 'curve', 'helix', 'runout']
+
+  !> One element as given in the input. Angles in degrees, lengths in m;
+  !> slope is the downhill angle (deg, > 0 going down).
+  type :: slide_element_t
+    character(len=8) :: kind = 'straight'
+    real(wp) :: length = 0          ! m, horizontal (straight, runout)
+    real(wp) :: slope_deg = 0       ! deg, downhill positive (straight, curve, runout)
+    real(wp) :: radius = 0          ! m, horizontal (curve, helix)
+    real(wp) :: angle_deg = 0       ! deg, turning angle (curve)
+    character(len=5) :: direction = 'left'   ! 'left' or 'right' (curve, helix)
+    real(wp) :: turns = 0           ! full turns (helix)
+    real(wp) :: drop = 0            ! m, height lost over the helix
+  end type slide_element_t
+
+  type, extends(curve_t) :: element_chain_curve_t
+    real(wp) :: start(3) = 0                ! m, first point
+    real(wp) :: heading0 = 0                ! rad, initial heading from +x
+    real(wp), allocatable :: kappa(:)       ! 1/m per element (left positive)
+    real(wp), allocatable :: grad(:)        ! gradient tan(slope) per element
+    real(wp), allocatable :: joint(:)       ! m, sigma of each joint (middle of its transition)
+    real(wp), allocatable :: width(:)       ! m, transition length at each joint
+    real(wp), allocatable :: ends(:)        ! m, sigma at the end of each element
+    real(wp), allocatable :: node_xy(:, :)  ! m, x, y at sigma = k*node_step
+    real(wp) :: node_step = 0.5_wp
+    real(wp) :: total = 0                   ! m, horizontal length
+  contains
+    procedure :: evaluate => chain_evaluate
+    procedure :: domain => chain_domain
+    procedure :: element_at => chain_element_at
+  end type element_chain_curve_t
+
+  real(wp), parameter :: gl_x(8) = [-0.9602898564975363_wp, -0.7966664774136267_wp, &
+    -0.5255324099163290_wp, -0.1834346424956498_wp, 0.1834346424956498_wp, &
+    0.5255324099163290_wp, 0.7966664774136267_wp, 0.9602898564975363_wp]
+  real(wp), parameter :: gl_w(8) = [0.1012285362903763_wp, 0.2223810344533745_wp, &
+    0.3137066458778873_wp, 0.3626837833783620_wp, 0.3626837833783620_wp, &
+    0.3137066458778873_wp, 0.2223810344533745_wp, 0.1012285362903763_wp]
+
+contains
+
+  !> The chain of `elements` starting at `start` (m) with heading `heading_deg`
+  !> (deg from +x towards +y), with transitions of horizontal length
+  !> `transition` (m, >= 0). Checks every element; the message names it.
+  function new_element_chain(elements, start, heading_deg, transition, status) result(c)
+    type(slide_element_t), intent(in) :: elements(:)
+    real(wp), intent(in) :: start(3), heading_deg, transition
+    type(status_t), intent(out) :: status
+    type(element_chain_curve_t) :: c
+    integer :: n, i, k, nn
+    real(wp) :: len_h(size(elements)), sgn, a, b, xy(2), s
+    character(len=16) :: idx
+    n = size(elements)
+    if (n < 1) then
+      call set_status(status, STATUS_INVALID_INPUT, 'slide elements: no elements given')
+      return
+    end if
+    if (.not. transition >= 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'slide elements: transition length must be >= 0 m')
+      return
+    end if
+    allocate (c%kappa(n), c%grad(n), c%ends(n))
+    do i = 1, n
+      write (idx, '(i0)') i
+      associate (e => elements(i))
+        sgn = 1
+        if (e%kind == 'curve' .or. e%kind == 'helix') then
+          if (e%direction == 'right') then
+            sgn = -1
+          else if (e%direction /= 'left') then
+            call fail('direction must be ''left'' or ''right''')
+            return
+          end if
+          if (.not. e%radius > 0) then
+            call fail('radius must be > 0 m')
+            return
+          end if
+        end if
+        select case (e%kind)
+        case ('straight', 'runout')
+          if (.not. e%length > 0) then
+            call fail('length must be > 0 m')
+            return
+          end if
+          if (.not. abs(e%slope_deg) < 60) then
+            call fail('slope must lie in (-60, 60) deg')
+            return
+          end if
+          len_h(i) = e%length
+          c%kappa(i) = 0
+          c%grad(i) = tan(e%slope_deg*pi/180)
+        case ('curve')
+          if (.not. (e%angle_deg > 0 .and. e%angle_deg <= 720)) then
+            call fail('turning angle must lie in (0, 720] deg')
+            return
+          end if
+          if (.not. abs(e%slope_deg) < 60) then
+            call fail('slope must lie in (-60, 60) deg')
+            return
+          end if
+          len_h(i) = e%radius*e%angle_deg*pi/180
+          c%kappa(i) = sgn/e%radius
+          c%grad(i) = tan(e%slope_deg*pi/180)
+        case ('helix')
+          if (.not. e%turns > 0) then
+            call fail('turns must be > 0')
+            return
+          end if
+          len_h(i) = two_pi*e%radius*e%turns
+          c%kappa(i) = sgn/e%radius
+          c%grad(i) = e%drop/len_h(i)
+          if (.not. abs(c%grad(i)) < tan(60*pi/180)) then
+            call fail('drop per horizontal length must correspond to a slope below 60 deg')
+            return
+          end if
+        case default
+          call fail('kind must be one of straight, curve, helix, runout')
+          return
+        end select
+      end associate
+    end do
+    c%start = start
+    c%heading0 = heading_deg*pi/180
+    c%ends(1) = len_h(1)
+    do i = 2, n
+      c%ends(i) = c%ends(i - 1) + len_h(i)
+    end do
+    c%total = c%ends(n)
+    allocate (c%joint(n - 1), c%width(n - 1))
+    do i = 1, n - 1
+      c%joint(i) = c%ends(i)
+      c%width(i) = min(transition, len_h(i), len_h(i + 1))
+    end do
+    ! x, y at the nodes by Gauss-Legendre over each node interval
+    nn = ceiling(c%total/c%node_step)
+    allocate (c%node_xy(2, 0:nn))
+    c%node_xy(:, 0) = start(1:2)
+    do k = 1, nn
+      a = (k - 1)*c%node_step
+      b = k*c%node_step
+      xy = 0
+      do i = 1, 8
+        s = 0.5_wp*(a + b) + 0.5_wp*(b - a)*gl_x(i)
+        xy = xy + gl_w(i)*direction_xy(c, s)
+      end do
+      c%node_xy(:, k) = c%node_xy(:, k - 1) + 0.5_wp*(b - a)*xy
+    end do
+
+  contains
+    subroutine fail(what)
+      character(len=*), intent(in) :: what
+      call set_status(status, STATUS_INVALID_INPUT, 'slide element ' // trim(idx) // ' (' // &
+                      trim(elements(i)%kind) // '): ' // what)
+    end subroutine fail
+  end function new_element_chain
+
+  !> Smoothstep S(t) and its t-derivatives (d(0:3)) and its integral P(t) =
+  !> int_0^t S, with S = 0 for t < 0 and 1 for t > 1 (P continued).
+  pure subroutine smoothstep(t, d, integral)
+    real(wp), intent(in) :: t
+    real(wp), intent(out) :: d(0:3), integral
+    d = 0
+    if (t <= 0) then
+      integral = 0
+    else if (t >= 1) then
+      d(0) = 1
+      integral = t - 0.5_wp
+    else
+      d(0) = t**4*(35 - 84*t + 70*t**2 - 20*t**3)
+      d(1) = 140*t**3*(1 - t)**3
+      d(2) = 420*t**2*(1 - t)**2*(1 - 2*t)
+      d(3) = 840*t*(1 - t)*((1 - 2*t)**2 - t*(1 - t))
+      integral = t**5*(7 - 14*t + 10*t**2 - 2.5_wp*t**3)
+    end if
+  end subroutine smoothstep
+
+  !> psi, kappa and its derivatives (k(0:2)), g and its derivatives (g(0:3)),
+  !> and the integral of g from 0 (m) at sigma.
+  pure subroutine profile(c, sigma, psi, k, g, gint)
+    class(element_chain_curve_t), intent(in) :: c
+    real(wp), intent(in) :: sigma
+    real(wp), intent(out) :: psi, k(0:3), g(0:3), gint
+    real(wp) :: d(0:3), p, t, w, dk, dg, ipart
+    integer :: j, m
+    k = 0; g = 0
+    k(0) = c%kappa(1); g(0) = c%grad(1)
+    psi = c%heading0 + c%kappa(1)*sigma
+    gint = c%grad(1)*sigma
+    do j = 1, size(c%joint)
+      w = c%width(j)
+      dk = c%kappa(j + 1) - c%kappa(j)
+      dg = c%grad(j + 1) - c%grad(j)
+      if (w > 0) then
+        t = (sigma - c%joint(j) + w/2)/w
+        call smoothstep(t, d, p)
+        ipart = w*p                       ! int_{-inf}^{sigma} S
+        do m = 0, 3
+          k(m) = k(m) + dk*d(m)/w**m
+          g(m) = g(m) + dg*d(m)/w**m
+        end do
+      else
+        ipart = max(sigma - c%joint(j), 0.0_wp)
+        if (sigma >= c%joint(j)) then
+          k(0) = k(0) + dk
+          g(0) = g(0) + dg
+        end if
+      end if
+      psi = psi + dk*ipart
+      gint = gint + dg*ipart
+    end do
+  end subroutine profile
+
+  pure function direction_xy(c, sigma) result(xy)
+    class(element_chain_curve_t), intent(in) :: c
+    real(wp), intent(in) :: sigma
+    real(wp) :: xy(2)
+    real(wp) :: psi, k(0:3), g(0:3), gint
+    call profile(c, sigma, psi, k, g, gint)
+    xy = [cos(psi), sin(psi)]
+  end function direction_xy
+
+  pure subroutine chain_evaluate(self, u, order, p, status)
+    class(element_chain_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(curve_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    real(wp) :: psi, k(0:3), g(0:3), gint, cs, sn, xy(2), s, a
+    integer :: node, i
+      call profile(self, u, psi, k, g, gint)
+      node = nint(u/self%node_step)
+      node = max(0, min(node, ubound(self%node_xy, 2)))
+      a = node*self%node_step
+      xy = 0
+      do i = 1, 8
+        s = 0.5_wp*(a + u) + 0.5_wp*(u - a)*gl_x(i)
+        xy = xy + gl_w(i)*direction_xy(self, s)
+      end do
+      p%order = min(max(order, 0), 4)
+      p%d(1:2, 0) = self%node_xy(:, node) + 0.5_wp*(u - a)*xy
+      p%d(3, 0) = self%start(3) - gint
+      cs = cos(psi); sn = sin(psi)
+      if (order >= 1) p%d(:, 1) = [cs, sn, -g(0)]
+      if (order >= 2) p%d(:, 2) = [-k(0)*sn, k(0)*cs, -g(1)]
+      if (order >= 3) p%d(:, 3) = [-k(0)**2*cs - k(1)*sn, -k(0)**2*sn + k(1)*cs, -g(2)]
+      if (order >= 4) p%d(:, 4) = [k(0)**3*sn - 3*k(0)*k(1)*cs - k(2)*sn, &
+                                   -k(0)**3*cs - 3*k(0)*k(1)*sn + k(2)*cs, -g(3)]
+    status%code = STATUS_OK
+  end subroutine chain_evaluate
+
+  pure subroutine chain_domain(self, u_min, u_max)
+    class(element_chain_curve_t), intent(in) :: self
+    real(wp), intent(out) :: u_min, u_max
+    u_min = 0; u_max = self%total
+  end subroutine chain_domain
+
+  !> Index of the element that contains sigma (1..n).
+  pure integer function chain_element_at(self, sigma) result(i)
+    class(element_chain_curve_t), intent(in) :: self
+    real(wp), intent(in) :: sigma
+    do i = 1, size(self%ends) - 1
+      if (sigma <= self%ends(i)) return
+    end do
+    i = size(self%ends)
+  end function chain_element_at
+
+  !> Points of the centerline every ~`spacing` m of horizontal length (at
+  !> least one per element end) and the horizon vector at each, for fitting.
+  subroutine slide_points(chain, spacing, points, horizon, sigma)
+    type(element_chain_curve_t), intent(in) :: chain
+    real(wp), intent(in) :: spacing
+    real(wp), allocatable, intent(out) :: points(:, :), horizon(:, :), sigma(:)
+    integer :: n, i
+    type(curve_point_t) :: p
+    type(status_t) :: st
+    n = max(2, ceiling(chain%total/spacing) + 1)
+    allocate (points(3, n), horizon(3, n), sigma(n))
+    do i = 1, n
+      sigma(i) = chain%total*(i - 1)/real(n - 1, wp)
+      call chain%evaluate(sigma(i), 0, p, st)
+      points(:, i) = p%d(:, 0)
+      horizon(:, i) = [0.0_wp, 0.0_wp, 1.0_wp]
+    end do
+  end subroutine slide_points
+end module geometry_slide_elements
