@@ -8,6 +8,7 @@ module fitpack_surface_interfaces
   public :: bispev, parder, fpbisp
   public :: regrid, fpregr, fpgrre
   public :: surfit, fpsurf, fporde, fprank
+  public :: parsur, fppasu, fpgrpa, surev, fpsuev
 
   interface
     subroutine bispev(tx, nx, ty, ny, c, kx, ky, x, mx, y, my, z, wrk, lwrk, iwrk, kwrk, ier)
@@ -130,5 +131,63 @@ module fitpack_surface_interfaces
       integer, intent(out) :: rank
       real(real64), intent(out) :: aa(n, m), ff(n), h(m)
     end subroutine fprank
+
+    subroutine parsur(iopt, ipar, idim, mu, u, mv, v, f, s, nuest, nvest, nu, tu, nv, tv, c, fp, wrk, lwrk, &
+                      iwrk, kwrk, ier)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: iopt, ipar(2), idim, mu, mv, nuest, nvest, lwrk, kwrk
+      real(real64), intent(in) :: u(mu), v(mv), f(mu*mv*idim), s
+      integer, intent(inout) :: nu, nv
+      real(real64), intent(inout) :: tu(nuest), tv(nvest), c((nuest - 4)*(nvest - 4)*idim)
+      real(real64), intent(out) :: fp
+      real(real64), intent(inout) :: wrk(lwrk)
+      integer, intent(inout) :: iwrk(kwrk)
+      integer, intent(out) :: ier
+    end subroutine parsur
+
+    subroutine fppasu(iopt, ipar, idim, u, mu, v, mv, f, s, nuest, nvest, tol, maxit, nu, tu, nv, tv, c, fp, &
+                      fp0, fpold, reducu, reducv, fpintu, fpintv, lastdi, nplusu, nplusv, nru, nrv, &
+                      nrdatu, nrdatv, ier)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: iopt, ipar(2), idim, mu, mv, nuest, nvest, maxit
+      real(real64), intent(in) :: u(mu), v(mv), f(mu*mv*idim), s, tol
+      integer, intent(inout) :: nu, nv, lastdi, nplusu, nplusv, nru(mu), nrv(mv), nrdatu(nuest), nrdatv(nvest)
+      real(real64), intent(inout) :: tu(nuest), tv(nvest), c((nuest - 4)*(nvest - 4)*idim)
+      real(real64), intent(inout) :: fp, fp0, fpold, reducu, reducv, fpintu(nuest), fpintv(nvest)
+      integer, intent(inout) :: ier
+    end subroutine fppasu
+
+    subroutine fpgrpa(ipar, idim, u, mu, v, mv, f, tu, nu, tv, nv, p, c, fp, fpintu, fpintv, nru, nrv)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: ipar(2), idim, mu, mv, nu, nv
+      real(real64), intent(in) :: u(mu), v(mv), f(mu*mv*idim), tu(nu), tv(nv), p
+      real(real64), intent(inout) :: c(*)
+      real(real64), intent(out) :: fp
+      real(real64), intent(inout) :: fpintu(nu), fpintv(nv)
+      integer, intent(inout) :: nru(mu), nrv(mv)
+    end subroutine fpgrpa
+
+    subroutine surev(idim, tu, nu, tv, nv, c, u, mu, v, mv, f, mf, wrk, lwrk, iwrk, kwrk, ier)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: idim, nu, nv, mu, mv, mf, lwrk, kwrk
+      real(real64), intent(in) :: tu(nu), tv(nv), c((nu - 4)*(nv - 4)*idim), u(mu), v(mv)
+      real(real64), intent(out) :: f(mf)
+      real(real64), intent(inout) :: wrk(lwrk)
+      integer, intent(inout) :: iwrk(kwrk)
+      integer, intent(out) :: ier
+    end subroutine surev
+
+    pure subroutine fpsuev(idim, tu, nu, tv, nv, c, u, mu, v, mv, f, wu, wv, lu, lv)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: idim, nu, nv, mu, mv
+      real(real64), intent(in) :: tu(nu), tv(nv), c((nu - 4)*(nv - 4)*idim), u(mu), v(mv)
+      real(real64), intent(out) :: f(mu*mv*idim), wu(mu, 4), wv(mv, 4)
+      integer, intent(out) :: lu(mu), lv(mv)
+    end subroutine fpsuev
   end interface
 end module fitpack_surface_interfaces
