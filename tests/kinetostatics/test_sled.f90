@@ -1,0 +1,164 @@
+!> The sled: a bar on a surface with a rear surface joint (q = u, v, phi) and a
+!> front surface joint closed by three plane-point conditions (beta = pitch,
+!> u2, v2), like the rider's legs (thesis 4.27).
+program test_sled
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_status, only: status_t
+  use testing, only: check, check_close, finish_tests
+  use geometry_surface, only: surface_t
+  use geometry_elementary, only: plane_t, paraboloid_t
+  use numerics_ode, only: ode_integrator_t, ode_options_t, ODE_BDF
+  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_models, only: sled_params_t, build_sled
+  implicit none (type, external)
+
+  real(wp), parameter :: g = 9.80665_wp
+
+  call incline(0.0_wp)
+  call incline(0.7_wp)
+  call bowl(0.0_wp)
+  call bowl(0.15_wp)
+  call finish_tests('test_sled')
+
+contains
+
+  !> On a plane inclined by theta with Coulomb mu the bar slides straight down
+  !> with u'' = g (sin theta - mu cos theta) whatever its heading phi.
+  subroutine incline(phi)
+    real(wp), intent(in) :: phi
+    real(wp), parameter :: theta = 20*pi/180, mu = 0.2_wp
+    type(sled_params_t) :: p
+    class(surface_t), allocatable :: plane
+    type(mechanism_ode_t), target :: sys
+    type(ode_integrator_t) :: integ
+    type(ode_options_t) :: opt
+    type(status_t) :: st
+    real(wp) :: qdd(3), acc, y(6), t, res, q0(3), qd0(3)
+    character(len=8) :: label
+
+    write (label, '(f4.2)') phi
+    plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [cos(theta), 0.0_wp, -sin(theta)], [0.0_wp, 1.0_wp, 0.0_wp], st)
+    p%mu = mu
+    q0 = [0.5_wp, 0.2_wp, phi]
+    qd0 = [1.0_wp, 0.0_wp, 0.0_wp]
+    call build_sled(p, plane, q0, sys%mechanism, st)
+    call sys%mechanism%check_start(q0, st)
+    call check(st%ok(), 'sled on the incline starts: '//st%text())
+    associate (m => sys%mechanism)
+      call check(m%closure_residual() <= 1e-10_wp, 'incline: closed at the start')
+      call check_close(m%scalars(m%scalar_index('pitch'))%q, 0.0_wp, 0.0_wp, 1e-12_wp, 'incline: pitch 0 on a plane')
+      call m%evaluate(q0, qd0, res, st)
+      call check(st%ok(), 'incline: evaluate: '//st%text())
+      qdd = m%qdd
+      acc = g*(sin(theta) - mu*cos(theta))
+      ! exact algebra; the only approximation is the regularization
+      ! (eps/|w|)^2/2 = 5e-13 relative
+      call check_close(qdd(1), acc, 1e-8_wp, 0.0_wp, 'incline: u'''' = g (sin theta - mu cos theta), phi = '//label)
+      call check(abs(qdd(2)) <= 1e-8_wp*g .and. abs(qdd(3)) <= 1e-8_wp*g, &
+                 'incline: v'''' = phi'''' = 0, phi = '//label)
+      call check_close(m%contacts(1)%normal_force + m%contacts(2)%normal_force, p%mass*g*cos(theta), 1e-10_wp, &
+                       0.0_wp, 'incline: N_rear + N_front = m g cos theta')
+      call check_close(m%contacts(1)%normal_force, m%contacts(2)%normal_force, 1e-10_wp, 0.0_wp, &
+                       'incline: centre of mass halfway: equal normal forces')
+      call check(res <= 1e-10_wp*p%mass*g, 'incline: inverse dynamics with the friction found has zero residual')
+    end associate
+    opt%rtol = 1e-10_wp
+    opt%atol = 1e-12_wp
+    y = [q0, qd0]
+    call integ%start(sys, 0.0_wp, y, opt, st)
+    call integ%advance(1.0_wp, t, y, st)
+    call check(st%ok(), 'incline: integrated 1 s: '//st%text())
+    ! constant acceleration: Adams integrates a quadratic exactly up to rounding
+    call check_close(y(1), q0(1) + qd0(1) + acc/2, 1e-8_wp, 0.0_wp, 'incline: u(1 s) = u0 + u0'' + a/2')
+    call check_close(y(4), qd0(1) + acc, 1e-8_wp, 0.0_wp, 'incline: u''(1 s) = u0'' + a')
+  end subroutine incline
+
+  !> In a paraboloid bowl: without friction energy is conserved (drift < 1e-8
+  !> of the energy scale m g L + T0 over 10 s) and the loop stays closed; with
+  !> friction energy only decreases. M is symmetric positive definite and
+  !> q'.M q'/2 equals the bodies' kinetic energy.
+  subroutine bowl(mu)
+    real(wp), intent(in) :: mu
+    type(sled_params_t) :: p
+    class(surface_t), allocatable :: surface
+    type(mechanism_ode_t), target :: sys
+    type(ode_integrator_t) :: integ
+    type(ode_options_t) :: opt
+    type(status_t) :: st
+    real(wp) :: y(6), t, e0, e, e_prev, drift, worst, scale, tk, vk, res, chol(3, 3), q0(3), qd0(3)
+    integer :: k, i, j
+    logical :: decreasing, spd
+    character(len=8) :: label
+
+    write (label, '(f4.2)') mu
+    surface = paraboloid_t(2.0_wp, 2.5_wp, 1.0_wp, st)
+    p%mu = mu
+    q0 = [1.0_wp, 0.0_wp, 0.3_wp]
+    qd0 = [0.0_wp, 1.2_wp, 0.5_wp]
+    call build_sled(p, surface, q0, sys%mechanism, st)
+    call sys%mechanism%check_start(q0, st)
+    call check(st%ok(), 'sled in the bowl starts: '//st%text())
+    associate (m => sys%mechanism)
+      call m%evaluate(q0, qd0, res, st)
+      call check(res <= 1e-10_wp*p%mass*g, 'bowl: inverse-dynamics residual zero at the computed q'''', mu = '//label)
+      call check(maxval(abs(m%mass - transpose(m%mass))) <= 1e-13_wp*maxval(abs(m%mass)), 'bowl: M symmetric')
+      chol = m%mass
+      spd = .true.
+      do j = 1, 3   ! Cholesky by hand: positive pivots <=> positive definite
+        chol(j, j) = chol(j, j) - sum(chol(j, 1:j - 1)**2)
+        spd = spd .and. chol(j, j) > 0
+        if (.not. spd) exit
+        chol(j, j) = sqrt(chol(j, j))
+        do i = j + 1, 3
+          chol(i, j) = (chol(i, j) - sum(chol(i, 1:j - 1)*chol(j, 1:j - 1)))/chol(j, j)
+        end do
+      end do
+      call check(spd, 'bowl: M positive definite')
+      call m%set_velocities(qd0)
+      call m%energy(tk, vk)
+      call check_close(0.5_wp*dot_product(qd0, matmul(m%mass, qd0)), tk, 1e-12_wp, 0.0_wp, &
+                       'bowl: q''.M q''/2 = kinetic energy (M through the closed loop)')
+      scale = p%mass*g*p%length + tk
+      e0 = tk + vk
+    end associate
+    opt%rtol = 1e-11_wp
+    opt%atol = 1e-11_wp
+    if (mu > 0) then
+      ! the rear contact comes to rest near t = 2.8 s and then sticks: the
+      ! regularized friction is stiff there (see kinetostatics_mechanism), BDF
+      opt%method = ODE_BDF
+      opt%rtol = 1e-8_wp
+      opt%atol = 1e-10_wp
+    end if
+    y = [q0, qd0]
+    call integ%start(sys, 0.0_wp, y, opt, st)
+    drift = 0
+    worst = 0
+    e_prev = e0
+    decreasing = .true.
+    do k = 1, 100
+      call integ%advance(0.1_wp*k, t, y, st)
+      if (.not. st%ok()) exit
+      call sys%mechanism%set_positions(y(1:3), st)
+      call sys%mechanism%set_velocities(y(4:6))
+      call sys%mechanism%energy(tk, vk)
+      e = tk + vk
+      worst = max(worst, sys%mechanism%closure_residual())
+      drift = max(drift, abs(e - e0))
+      decreasing = decreasing .and. e <= e_prev + 1e-9_wp*scale
+      e_prev = e
+    end do
+    call check(st%ok(), 'bowl: integrated 10 s: '//st%text())
+    if (mu > 0) print '(a, 6es11.3, a, i0)', '  sled with friction at 10 s: ', y, ', rhs ', sys%rhs_count
+    call check(worst <= 1e-10_wp, 'bowl: closure residual below 1e-10 all along')
+    if (mu == 0) then
+      call check(drift <= 1e-8_wp*scale, 'bowl, frictionless: energy drift below 1e-8 over 10 s')
+      print '(a, es10.2, a, es10.2, a, i0)', '  sled in the bowl: closure ', worst, ', energy drift ', drift/scale, &
+        ', rhs ', sys%rhs_count
+    else
+      call check(decreasing .and. e_prev < e0 - 1e-3_wp*scale, 'bowl, mu = '//label//': energy decreases')
+    end if
+  end subroutine bowl
+end program test_sled
