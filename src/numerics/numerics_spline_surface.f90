@@ -1,0 +1,569 @@
+!> Spline surfaces over our FITPACK (external/fitpack): a scalar surface
+!> z = s(x,y) fitted to scattered data (surfit) or to a grid (regrid), or a
+!> parametric surface r(u,v) in 3-D fitted to a grid of points (parsur, bicubic,
+!> optionally periodic in u and/or v). One call evaluates the value and all
+!> partial derivatives up to third order, without allocation.
+!>
+!> Fitting translates FITPACK's ier in one place (ier_status) into status_t;
+!> least-squares polynomials (ier = -2), interpolants (-1) and rank-deficient
+!> minimum-norm solutions (ier < -2) are accepted fits.
+module numerics_spline_surface
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT, STATUS_DOMAIN, &
+    STATUS_SOLVER, STATUS_NOT_CONVERGED, STATUS_INTERNAL
+  use fitpack_surface_interfaces, only: surfit, regrid, parsur
+  implicit none (type, external)
+  private
+  public :: spline_surface_t, spline_surface_eval_t
+  public :: fit_scattered, fit_grid, fit_parametric
+
+  integer, parameter :: max_degree = 5
+
+  !> Value and partial derivatives at one point. For a scalar surface only the
+  !> first component is used (f(1) = z, fu(1) = dz/dx, ...); for a parametric
+  !> surface all three (f = r, fu = r_u, fuv = r_uv, ...). Partials of order
+  !> above the degree are zero.
+  type :: spline_surface_eval_t
+    integer :: dim = 1
+    real(wp) :: f(3) = 0
+    real(wp) :: fu(3) = 0, fv(3) = 0
+    real(wp) :: fuu(3) = 0, fuv(3) = 0, fvv(3) = 0
+    real(wp) :: fuuu(3) = 0, fuuv(3) = 0, fuvv(3) = 0, fvvv(3) = 0
+  end type spline_surface_eval_t
+
+  !> A tensor-product B-spline surface with knots tu, tv, degrees ku, kv and
+  !> coefficients c(i, j, l) (i along u, j along v, l = 1..dim).
+  type :: spline_surface_t
+    private
+    integer :: dim = 0
+    integer :: ku = 0, kv = 0
+    logical :: periodic(2) = .false.
+    real(wp), allocatable :: tu(:), tv(:)
+    real(wp), allocatable :: c(:, :, :)
+    real(wp) :: fp = 0
+    integer :: ier = 0
+  contains
+    procedure :: evaluate
+    procedure :: domain
+    procedure :: is_fitted
+    procedure :: dimension => surface_dimension
+    procedure :: degrees
+    procedure :: residual
+    procedure :: fitpack_ier
+    procedure :: knots_u
+    procedure :: knots_v
+    procedure :: coefficients
+  end type spline_surface_t
+
+contains
+
+  !> Smoothing spline z = s(x,y) of degrees kx, ky (1..5) to scattered data
+  !> (FITPACK surfit, iopt = 0): sum (w (z - s))^2 <= smoothing within 0.1 %.
+  !> weights default to 1; bbox = [xb, xe, yb, ye] defaults to the data range.
+  function fit_scattered(x, y, z, smoothing, kx, ky, status, weights, bbox) result(surf)
+    real(wp), intent(in) :: x(:), y(:), z(:)
+    real(wp), intent(in) :: smoothing
+    integer, intent(in) :: kx, ky
+    type(status_t), intent(out) :: status
+    real(wp), intent(in), optional :: weights(:), bbox(4)
+    type(spline_surface_t) :: surf
+    real(wp), allocatable :: w(:), tx(:), ty(:), c(:), wrk1(:), wrk2(:)
+    integer, allocatable :: iwrk(:)
+    real(wp) :: box(4), fp
+    integer :: m, nxest, nyest, nmax, nx, ny, ier, lwrk1, lwrk2, kwrk, attempt
+    real(wp), parameter :: eps = 1.0e-16_wp   ! FITPACK's suggested rank threshold for real64
+    m = size(x)
+    if (size(y) /= m .or. size(z) /= m) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_scattered: x, y and z differ in size')
+      return
+    end if
+    if (.not. degrees_ok(kx, ky, status, 'fit_scattered')) return
+    if (m < (kx + 1)*(ky + 1)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_scattered: fewer data points than (kx+1)(ky+1)')
+      return
+    end if
+    if (.not. (all(abs(x) <= huge(x)) .and. all(abs(y) <= huge(y)) .and. all(abs(z) <= huge(z)))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_scattered: data not finite')
+      return
+    end if
+    if (.not. (smoothing >= 0 .and. smoothing <= huge(smoothing))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_scattered: smoothing factor must be finite and >= 0')
+      return
+    end if
+    allocate (w(m))
+    w = 1
+    if (present(weights)) then
+      if (size(weights) /= m) then
+        call set_status(status, STATUS_INVALID_INPUT, 'fit_scattered: weights differ in size from the data')
+        return
+      end if
+      if (.not. all(weights > 0 .and. weights <= huge(weights))) then
+        call set_status(status, STATUS_INVALID_INPUT, 'fit_scattered: weights must be positive and finite')
+        return
+      end if
+      w = weights
+    end if
+    box = [minval(x), maxval(x), minval(y), maxval(y)]
+    if (present(bbox)) box = bbox
+    if (.not. (box(1) < box(2) .and. box(3) < box(4))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_scattered: empty bounding box (all x or all y equal?)')
+      return
+    end if
+    if (any(x < box(1)) .or. any(x > box(2)) .or. any(y < box(3)) .or. any(y > box(4))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_scattered: data outside the bounding box')
+      return
+    end if
+    ! FITPACK's suggestion for the knot storage; enlarged when it runs out
+    nxest = max(kx + 1 + ceiling(sqrt(m/2.0_wp)), 2*(kx + 1))
+    nyest = max(ky + 1 + ceiling(sqrt(m/2.0_wp)), 2*(ky + 1))
+    if (smoothing == 0) then
+      nxest = max(nxest, kx + 1 + ceiling(sqrt(real(m, wp))) + 2)
+      nyest = max(nyest, ky + 1 + ceiling(sqrt(real(m, wp))) + 2)
+    end if
+    lwrk2 = 0
+    do attempt = 1, 4
+      nmax = max(nxest, nyest)
+      call surfit_workspace(m, kx, ky, nxest, nyest, lwrk1, lwrk2, kwrk)
+      if (allocated(tx)) deallocate (tx, ty, c, wrk1, wrk2, iwrk)
+      allocate (tx(nmax), ty(nmax), c((nxest - kx - 1)*(nyest - ky - 1)), wrk1(lwrk1), wrk2(lwrk2), &
+        iwrk(kwrk))
+      tx = 0
+      ty = 0
+      c = 0
+      call surfit(0, m, x, y, z, w, box(1), box(2), box(3), box(4), kx, ky, smoothing, nxest, nyest, nmax, &
+        eps, nx, tx, ny, ty, c, fp, wrk1, lwrk1, wrk2, lwrk2, iwrk, kwrk, ier)
+      if (ier > 10) then
+        lwrk2 = ier       ! the size surfit asks for
+      else if (ier == 1 .and. attempt < 4) then
+        nxest = 2*nxest
+        nyest = 2*nyest
+        lwrk2 = 0
+      else
+        exit
+      end if
+    end do
+    call ier_status(ier, 'fit_scattered (surfit)', status)
+    if (.not. status%ok()) return
+    call store(surf, 1, kx, ky, [.false., .false.], tx(1:nx), ty(1:ny), c, fp, ier)
+  end function fit_scattered
+
+  !> Smoothing spline z = s(x,y) on the grid x(1..mx) x y(1..my) (strictly
+  !> increasing), z(i,j) = value at (x(i), y(j)) (FITPACK regrid, iopt = 0).
+  function fit_grid(x, y, z, smoothing, kx, ky, status) result(surf)
+    real(wp), intent(in) :: x(:), y(:), z(:, :)
+    real(wp), intent(in) :: smoothing
+    integer, intent(in) :: kx, ky
+    type(status_t), intent(out) :: status
+    type(spline_surface_t) :: surf
+    real(wp), allocatable :: zz(:), tx(:), ty(:), c(:), wrk(:)
+    integer, allocatable :: iwrk(:)
+    integer :: mx, my, nxest, nyest, nx, ny, lwrk, kwrk, ier
+    real(wp) :: fp
+    mx = size(x)
+    my = size(y)
+    if (size(z, 1) /= mx .or. size(z, 2) /= my) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_grid: z must have shape (size(x), size(y))')
+      return
+    end if
+    if (.not. degrees_ok(kx, ky, status, 'fit_grid')) return
+    if (mx <= kx .or. my <= ky) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_grid: need more grid lines than the degree in each direction')
+      return
+    end if
+    if (any(x(2:) <= x(:mx - 1)) .or. any(y(2:) <= y(:my - 1))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_grid: x and y must be strictly increasing')
+      return
+    end if
+    if (.not. (all(abs(z) <= huge(z)) .and. smoothing >= 0 .and. smoothing <= huge(smoothing))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_grid: data not finite or smoothing factor < 0')
+      return
+    end if
+    nxest = mx + kx + 1
+    nyest = my + ky + 1
+    lwrk = 4 + nxest*(my + 2*kx + 5) + nyest*(2*ky + 5) + mx*(kx + 1) + my*(ky + 1) + max(my, nxest)
+    kwrk = 3 + mx + my + nxest + nyest
+    allocate (tx(nxest), ty(nyest), c((nxest - kx - 1)*(nyest - ky - 1)), wrk(lwrk), iwrk(kwrk))
+    zz = reshape(transpose(z), [mx*my])     ! regrid's layout: y fastest
+    call regrid(0, mx, x, my, y, zz, x(1), x(mx), y(1), y(my), kx, ky, smoothing, nxest, nyest, nx, tx, &
+      ny, ty, c, fp, wrk, lwrk, iwrk, kwrk, ier)
+    call ier_status(ier, 'fit_grid (regrid)', status)
+    if (.not. status%ok()) return
+    call store(surf, 1, kx, ky, [.false., .false.], tx(1:nx), ty(1:ny), c, fp, ier)
+  end function fit_grid
+
+  !> Bicubic parametric surface r(u,v) through/near points(:, i, j) = r(u(i),
+  !> v(j)) (FITPACK parsur, iopt = 0). periodic(1) (periodic(2)): the surface
+  !> closes in u (v) with period u(mu)-u(1) (v(mv)-v(1)); then the points of the
+  !> last grid line must equal those of the first.
+  function fit_parametric(u, v, points, smoothing, periodic, status) result(surf)
+    real(wp), intent(in) :: u(:), v(:), points(:, :, :)
+    real(wp), intent(in) :: smoothing
+    logical, intent(in) :: periodic(2)
+    type(status_t), intent(out) :: status
+    type(spline_surface_t) :: surf
+    real(wp), allocatable :: f(:), tu(:), tv(:), c(:), wrk(:)
+    integer, allocatable :: iwrk(:)
+    integer :: mu, mv, nuest, nvest, nu, nv, lwrk, kwrk, ier, ipar(2), i, j, l
+    real(wp) :: fp
+    mu = size(u)
+    mv = size(v)
+    if (size(points, 1) /= 3 .or. size(points, 2) /= mu .or. size(points, 3) /= mv) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_parametric: points must have shape (3, size(u), size(v))')
+      return
+    end if
+    if (mu < 4 .or. mv < 4) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_parametric: need at least 4 grid lines in u and in v')
+      return
+    end if
+    if (any(u(2:) <= u(:mu - 1)) .or. any(v(2:) <= v(:mv - 1))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_parametric: u and v must be strictly increasing')
+      return
+    end if
+    if (.not. (all(abs(points) <= huge(points)) .and. smoothing >= 0 .and. smoothing <= huge(smoothing))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'fit_parametric: points not finite or smoothing factor < 0')
+      return
+    end if
+    ipar = merge(1, 0, periodic)
+    nuest = mu + 4 + 2*ipar(1)
+    nvest = mv + 4 + 2*ipar(2)
+    lwrk = 4 + nuest*(mv*3 + 11 + 4*ipar(1)) + nvest*(11 + 4*ipar(2)) + 4*(mu + mv) + &
+      max(3*mu*mv + 2*ipar(1)*3*mv + 2*ipar(2)*3*mu, nuest*mv)
+    lwrk = lwrk + 4*(mu + mv) + 64 + nuest*mv*3 + 3*mu*mv
+    kwrk = 3 + mu + mv + nuest + nvest
+    allocate (f(3*mu*mv), tu(nuest), tv(nvest), c(3*(nuest - 4)*(nvest - 4)), wrk(lwrk), iwrk(kwrk))
+    do l = 1, 3
+      do i = 1, mu
+        do j = 1, mv
+          f(mu*mv*(l - 1) + mv*(i - 1) + j) = points(l, i, j)
+        end do
+      end do
+    end do
+    call parsur(0, ipar, 3, mu, u, mv, v, f, smoothing, nuest, nvest, nu, tu, nv, tv, c, fp, wrk, lwrk, &
+      iwrk, kwrk, ier)
+    call ier_status(ier, 'fit_parametric (parsur)', status)
+    if (.not. status%ok()) return
+    call store(surf, 3, 3, 3, periodic, tu(1:nu), tv(1:nv), c, fp, ier)
+  end function fit_parametric
+
+  !> Value and all partial derivatives up to third order at (u, v). Outside
+  !> the domain of a non-periodic direction the surface is evaluated at the
+  !> nearest boundary point and status is STATUS_DOMAIN; periodic directions
+  !> wrap around. Allocates nothing (except a message on failure).
+  pure subroutine evaluate(self, u, v, p, status)
+    class(spline_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    type(spline_surface_eval_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    real(wp) :: du(0:3, max_degree + 1), dv(0:3, max_degree + 1), uu, vv, s(0:3, 0:3)
+    integer :: lu, lv, i, j, l, a, b, nu, nv
+    logical :: outside
+    if (self%dim == 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline surface: evaluated before a successful fit')
+      return
+    end if
+    p%dim = self%dim
+    nu = size(self%tu)
+    nv = size(self%tv)
+    outside = .false.
+    call locate(self%tu, self%ku, self%periodic(1), u, uu, lu, outside)
+    call locate(self%tv, self%kv, self%periodic(2), v, vv, lv, outside)
+    call basis_derivatives(self%tu, self%ku, uu, lu, du)
+    call basis_derivatives(self%tv, self%kv, vv, lv, dv)
+    do l = 1, self%dim
+      s = 0
+      do i = 1, self%ku + 1
+        do j = 1, self%kv + 1
+          associate (cij => self%c(lu - self%ku - 1 + i, lv - self%kv - 1 + j, l))
+            do a = 0, 3
+              do b = 0, 3 - a
+                s(a, b) = s(a, b) + du(a, i)*dv(b, j)*cij
+              end do
+            end do
+          end associate
+        end do
+      end do
+      p%f(l) = s(0, 0)
+      p%fu(l) = s(1, 0)
+      p%fv(l) = s(0, 1)
+      p%fuu(l) = s(2, 0)
+      p%fuv(l) = s(1, 1)
+      p%fvv(l) = s(0, 2)
+      p%fuuu(l) = s(3, 0)
+      p%fuuv(l) = s(2, 1)
+      p%fuvv(l) = s(1, 2)
+      p%fvvv(l) = s(0, 3)
+    end do
+    if (outside) call set_status(status, STATUS_DOMAIN, &
+      'spline surface: point outside the parameter domain, evaluated at the nearest boundary point')
+  end subroutine evaluate
+
+  !> [umin, umax, vmin, vmax] of the spline (x, y for a scalar surface).
+  pure function domain(self) result(box)
+    class(spline_surface_t), intent(in) :: self
+    real(wp) :: box(4)
+    box = 0
+    if (self%dim == 0) return
+    box = [self%tu(self%ku + 1), self%tu(size(self%tu) - self%ku), &
+           self%tv(self%kv + 1), self%tv(size(self%tv) - self%kv)]
+  end function domain
+
+  elemental logical function is_fitted(self)
+    class(spline_surface_t), intent(in) :: self
+    is_fitted = self%dim > 0
+  end function is_fitted
+
+  !> 1 for z = s(x,y), 3 for a parametric surface r(u,v).
+  elemental integer function surface_dimension(self)
+    class(spline_surface_t), intent(in) :: self
+    surface_dimension = self%dim
+  end function surface_dimension
+
+  pure function degrees(self) result(k)
+    class(spline_surface_t), intent(in) :: self
+    integer :: k(2)
+    k = [self%ku, self%kv]
+  end function degrees
+
+  !> FITPACK's fp: the weighted sum of squared residuals of the fit.
+  elemental real(wp) function residual(self)
+    class(spline_surface_t), intent(in) :: self
+    residual = self%fp
+  end function residual
+
+  !> FITPACK's ier of the fit (0, -1 interpolant, -2 polynomial, < -2 rank).
+  elemental integer function fitpack_ier(self)
+    class(spline_surface_t), intent(in) :: self
+    fitpack_ier = self%ier
+  end function fitpack_ier
+
+  pure function knots_u(self) result(t)
+    class(spline_surface_t), intent(in) :: self
+    real(wp), allocatable :: t(:)
+    if (allocated(self%tu)) then
+      t = self%tu
+    else
+      allocate (t(0))
+    end if
+  end function knots_u
+
+  pure function knots_v(self) result(t)
+    class(spline_surface_t), intent(in) :: self
+    real(wp), allocatable :: t(:)
+    if (allocated(self%tv)) then
+      t = self%tv
+    else
+      allocate (t(0))
+    end if
+  end function knots_v
+
+  !> The B-spline coefficients c(i, j, l): i along u (x), j along v (y),
+  !> l = 1..dim; FITPACK's layout is c(:, :, l) flattened with j fastest.
+  pure function coefficients(self) result(c)
+    class(spline_surface_t), intent(in) :: self
+    real(wp), allocatable :: c(:, :, :)
+    if (allocated(self%c)) then
+      c = self%c
+    else
+      allocate (c(0, 0, 0))
+    end if
+  end function coefficients
+
+  ! ---------------------------------------------------------------- private
+
+  logical function degrees_ok(kx, ky, status, where)
+    integer, intent(in) :: kx, ky
+    type(status_t), intent(inout) :: status
+    character(len=*), intent(in) :: where
+    degrees_ok = kx >= 1 .and. kx <= max_degree .and. ky >= 1 .and. ky <= max_degree
+    if (.not. degrees_ok) call set_status(status, STATUS_INVALID_INPUT, where//': degrees must be 1..5')
+  end function degrees_ok
+
+  !> FITPACK ier -> status, for surfit, regrid and parsur.
+  subroutine ier_status(ier, where, status)
+    integer, intent(in) :: ier
+    character(len=*), intent(in) :: where
+    type(status_t), intent(inout) :: status
+    character(len=16) :: num
+    write (num, '(i0)') ier
+    select case (ier)
+    case (0, -1, -2)
+      status%code = STATUS_OK          ! smoothing spline, interpolant, polynomial
+    case (:-3)
+      status%code = STATUS_OK          ! rank deficient: minimum-norm solution of rank -ier
+    case (1)
+      call set_status(status, STATUS_SOLVER, where//': the knot storage ran out before fp <= s; '// &
+        'the result would be a least-squares spline with fp > s (smoothing factor too small?)')
+    case (2)
+      call set_status(status, STATUS_NOT_CONVERGED, where//': the smoothing parameter iteration '// &
+        'left its theory: smoothing factor too small')
+    case (3)
+      call set_status(status, STATUS_NOT_CONVERGED, where//': 20 smoothing parameter iterations '// &
+        'without reaching fp = s (smoothing factor too small?)')
+    case (4)
+      call set_status(status, STATUS_SOLVER, where//': no more knots can be added: more coefficients '// &
+        'than data points (smoothing factor too small)')
+    case (5)
+      call set_status(status, STATUS_SOLVER, where//': no more knots can be added: a new knot would '// &
+        'split an interval more unevenly than 10:1 (smoothing factor too small or data clustered)')
+    case (10)
+      call set_status(status, STATUS_INVALID_INPUT, where//': FITPACK rejected the input (ier = 10)')
+    case default
+      call set_status(status, STATUS_INTERNAL, where//': workspace too small (ier = '//trim(num)//')')
+    end select
+  end subroutine ier_status
+
+  subroutine surfit_workspace(m, kx, ky, nxest, nyest, lwrk1, lwrk2, kwrk)
+    integer, intent(in) :: m, kx, ky, nxest, nyest
+    integer, intent(out) :: lwrk1, kwrk
+    integer, intent(inout) :: lwrk2
+    integer :: u, v, km1, km2, ne, bx, by, b1, b2
+    u = nxest - kx - 1
+    v = nyest - ky - 1
+    km1 = max(kx, ky) + 1
+    km2 = km1 + 1
+    ne = max(nxest, nyest)
+    bx = kx*v + ky + 1
+    by = ky*u + kx + 1
+    if (bx <= by) then
+      b1 = bx
+      b2 = b1 + v - ky
+    else
+      b1 = by
+      b2 = b1 + u - kx
+    end if
+    lwrk1 = u*v*(2 + b1 + b2) + 2*(u + v + km2*ne + km1*m) + b2 + 1
+    lwrk2 = max(lwrk2, u*v*(b2 + 1) + b2)
+    kwrk = m + (nxest - 2*kx - 1)*(nyest - 2*ky - 1)
+  end subroutine surfit_workspace
+
+  !> Keeps knots and coefficients; c in FITPACK's layout (y fastest, for
+  !> dim = 3 one block per coordinate) is unpacked to c(i, j, l).
+  subroutine store(surf, dim, ku, kv, periodic, tu, tv, c, fp, ier)
+    type(spline_surface_t), intent(inout) :: surf
+    integer, intent(in) :: dim, ku, kv, ier
+    logical, intent(in) :: periodic(2)
+    real(wp), intent(in) :: tu(:), tv(:), c(:), fp
+    integer :: ncu, ncv, i, j, l
+    surf%dim = dim
+    surf%ku = ku
+    surf%kv = kv
+    surf%periodic = periodic
+    surf%tu = tu
+    surf%tv = tv
+    surf%fp = fp
+    surf%ier = ier
+    ncu = size(tu) - ku - 1
+    ncv = size(tv) - kv - 1
+    allocate (surf%c(ncu, ncv, dim))
+    do l = 1, dim
+      do i = 1, ncu
+        do j = 1, ncv
+          surf%c(i, j, l) = c(ncu*ncv*(l - 1) + ncv*(i - 1) + j)
+        end do
+      end do
+    end do
+  end subroutine store
+
+  !> Knot interval t(l) <= x' < t(l+1), k+1 <= l <= n-k-1, of x clamped to
+  !> (or, periodic, wrapped into) [t(k+1), t(n-k)], by bisection.
+  pure subroutine locate(t, k, periodic, x, xc, l, outside)
+    real(wp), intent(in) :: t(:), x
+    integer, intent(in) :: k
+    logical, intent(in) :: periodic
+    real(wp), intent(out) :: xc
+    integer, intent(out) :: l
+    logical, intent(inout) :: outside
+    real(wp) :: tb, te
+    integer :: lo, hi, mid, n
+    n = size(t)
+    tb = t(k + 1)
+    te = t(n - k)
+    xc = x
+    if (periodic) then
+      if (xc < tb .or. xc > te) xc = tb + modulo(xc - tb, te - tb)
+    else if (xc < tb) then
+      xc = tb
+      outside = outside .or. x < tb - 1.0e-12_wp*(te - tb)
+    else if (xc > te) then
+      xc = te
+      outside = outside .or. x > te + 1.0e-12_wp*(te - tb)
+    end if
+    lo = k + 1
+    hi = n - k
+    ! invariant t(lo) <= xc < t(hi) (or xc = te with hi = n-k)
+    do while (hi - lo > 1)
+      mid = (lo + hi)/2
+      if (xc >= t(mid)) then
+        lo = mid
+      else
+        hi = mid
+      end if
+    end do
+    l = lo
+  end subroutine locate
+
+  !> d(r, i): r-th derivative (r = 0..3) of the k+1 B-splines of degree k that
+  !> do not vanish on [t(l), t(l+1)), at x: the triangular table of the
+  !> Cox-de Boor recurrence, then derivatives as differences of the lower
+  !> degree B-splines (de Boor, A Practical Guide to Splines, X.(15)).
+  pure subroutine basis_derivatives(t, k, x, l, d)
+    real(wp), intent(in) :: t(:), x
+    integer, intent(in) :: k, l
+    real(wp), intent(out) :: d(0:3, max_degree + 1)
+    real(wp) :: nd(0:max_degree, 0:max_degree), left(max_degree), right(max_degree), saved, temp
+    real(wp) :: a(0:1, 0:max_degree), dsum
+    integer :: j, r, kk, s1, s2, rk, pk, j1, j2, jj, nder
+    ! nd(j, r): B-spline values of degree r (lower triangle: knot differences)
+    nd(0, 0) = 1
+    do j = 1, k
+      left(j) = x - t(l + 1 - j)
+      right(j) = t(l + j) - x
+      saved = 0
+      do r = 0, j - 1
+        nd(j, r) = right(r + 1) + left(j - r)
+        temp = nd(r, j - 1)/nd(j, r)
+        nd(r, j) = saved + right(r + 1)*temp
+        saved = left(j - r)*temp
+      end do
+      nd(j, j) = saved
+    end do
+    d = 0
+    do r = 0, k
+      d(0, r + 1) = nd(r, k)
+    end do
+    nder = min(3, k)
+    do r = 0, k
+      s1 = 0
+      s2 = 1
+      a(0, 0) = 1
+      do kk = 1, nder
+        dsum = 0
+        rk = r - kk
+        pk = k - kk
+        if (r >= kk) then
+          a(s2, 0) = a(s1, 0)/nd(pk + 1, rk)
+          dsum = a(s2, 0)*nd(rk, pk)
+        end if
+        j1 = merge(1, -rk, rk >= -1)
+        j2 = merge(kk - 1, k - r, r - 1 <= pk)
+        do jj = j1, j2
+          a(s2, jj) = (a(s1, jj) - a(s1, jj - 1))/nd(pk + 1, rk + jj)
+          dsum = dsum + a(s2, jj)*nd(rk + jj, pk)
+        end do
+        if (r <= pk) then
+          a(s2, kk) = -a(s1, kk - 1)/nd(pk + 1, r)
+          dsum = dsum + a(s2, kk)*nd(r, pk)
+        end if
+        d(kk, r + 1) = dsum
+        j = s1
+        s1 = s2
+        s2 = j
+      end do
+    end do
+    r = k
+    do kk = 1, nder
+      d(kk, 1:k + 1) = d(kk, 1:k + 1)*r
+      r = r*(k - kk)
+    end do
+  end subroutine basis_derivatives
+end module numerics_spline_surface

@@ -1,0 +1,400 @@
+!> numerics_spline_surface: fits from scattered data, a grid and a parametric
+!> grid; one-call evaluation of the value and all partials to third order,
+!> checked against FITPACK's own evaluators (bispev, parder, surev) and against
+!> central differences at scattered points; the thesis's paraboloids
+!> (section 3.5.3.3); statuses for invalid input and points outside.
+program test_spline_surface
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_status, only: status_t, STATUS_OK, STATUS_INVALID_INPUT, STATUS_DOMAIN
+  use numerics_spline_surface, only: spline_surface_t, spline_surface_eval_t, fit_scattered, fit_grid, &
+    fit_parametric
+  use fitpack_surface_interfaces, only: bispev, parder
+  use testing, only: check, check_close, finish_tests
+  implicit none (type, external)
+
+  call scattered_surface()
+  call grid_surface()
+  call parametric_tube()
+  call thesis_paraboloids()
+  call failures_as_statuses()
+  call finish_tests('test_spline_surface')
+
+contains
+
+  !> Deterministic points in [0,1]^2 (a 2-D Halton sequence).
+  pure function halton(i, base) result(h)
+    integer, intent(in) :: i, base
+    real(wp) :: h, f
+    integer :: n
+    h = 0
+    f = 1
+    n = i
+    do while (n > 0)
+      f = f/base
+      h = h + f*mod(n, base)
+      n = n/base
+    end do
+  end function halton
+
+  !> The ten partials (order a in u, b in v) of an evaluation record, coordinate l.
+  pure real(wp) function partial(p, a, b, l)
+    type(spline_surface_eval_t), intent(in) :: p
+    integer, intent(in) :: a, b, l
+    select case (10*a + b)
+    case (0); partial = p%f(l)
+    case (10); partial = p%fu(l)
+    case (1); partial = p%fv(l)
+    case (20); partial = p%fuu(l)
+    case (11); partial = p%fuv(l)
+    case (2); partial = p%fvv(l)
+    case (30); partial = p%fuuu(l)
+    case (21); partial = p%fuuv(l)
+    case (12); partial = p%fuvv(l)
+    case (3); partial = p%fvvv(l)
+    case default; partial = 0
+    end select
+  end function partial
+
+  !> Each partial of order 1..3 against the central difference of the partial
+  !> one order lower, at points at least 2h away from every knot (where the
+  !> differenced partial is smooth). Error: h^2/6 |next derivative| plus
+  !> rounding eps |f|/h; with h = 1e-5 of the domain both stay below 1e-7 of
+  !> the partial's scale, so tol = 1e-6 * scale.
+  subroutine check_partials_fd(surf, what, npts)
+    type(spline_surface_t), intent(in) :: surf
+    character(len=*), intent(in) :: what
+    integer, intent(in) :: npts
+    type(spline_surface_eval_t) :: p0, pp, pm
+    type(status_t) :: st
+    real(wp) :: box(4), u, v, h(2), fd, scale(0:3, 0:3)
+    real(wp), allocatable :: tu(:), tv(:)
+    integer :: i, a, b, l, dir, tested
+    character(len=80) :: label
+    box = surf%domain()
+    tu = surf%knots_u()
+    tv = surf%knots_v()
+    h = 1.0e-5_wp*[box(2) - box(1), box(4) - box(3)]
+    ! scale of each partial over the test points
+    scale = 0
+    do i = 1, npts
+      u = box(1) + (box(2) - box(1))*(0.02_wp + 0.96_wp*halton(i, 2))
+      v = box(3) + (box(4) - box(3))*(0.02_wp + 0.96_wp*halton(i, 3))
+      call surf%evaluate(u, v, p0, st)
+      do a = 0, 3
+        do b = 0, 3 - a
+          do l = 1, surf%dimension()
+            scale(a, b) = max(scale(a, b), abs(partial(p0, a, b, l)))
+          end do
+        end do
+      end do
+    end do
+    tested = 0
+    do i = 1, npts
+      u = box(1) + (box(2) - box(1))*(0.02_wp + 0.96_wp*halton(i, 2))
+      v = box(3) + (box(4) - box(3))*(0.02_wp + 0.96_wp*halton(i, 3))
+      if (minval(abs(tu - u)) < 2*h(1) .or. minval(abs(tv - v)) < 2*h(2)) cycle
+      tested = tested + 1
+      call surf%evaluate(u, v, p0, st)
+      call check(st%ok(), what//': evaluate status')
+      do a = 0, 3
+        do b = 0, 3 - a
+          if (a + b == 0) cycle
+          ! difference along u if a > 0, else along v
+          dir = merge(1, 2, a > 0)
+          if (dir == 1) then
+            call surf%evaluate(u + h(1), v, pp, st)
+            call surf%evaluate(u - h(1), v, pm, st)
+          else
+            call surf%evaluate(u, v + h(2), pp, st)
+            call surf%evaluate(u, v - h(2), pm, st)
+          end if
+          do l = 1, surf%dimension()
+            if (dir == 1) then
+              fd = (partial(pp, a - 1, b, l) - partial(pm, a - 1, b, l))/(2*h(1))
+            else
+              fd = (partial(pp, a, b - 1, l) - partial(pm, a, b - 1, l))/(2*h(2))
+            end if
+            write (label, '(a, ": d", i0, i0, " coordinate ", i0, " point ", i0)') what, a, b, l, i
+            call check_close(partial(p0, a, b, l), fd, 0.0_wp, 1.0e-6_wp*max(scale(a, b), 1.0_wp), trim(label))
+          end do
+        end do
+      end do
+    end do
+    call check(tested >= npts/2, what//': enough points away from knots')
+  end subroutine check_partials_fd
+
+  !> The record's value and partials against FITPACK's bispev/parder on the
+  !> same knots and coefficients (orders below the degree: parder needs
+  !> nux < kx), at scattered points: same B-splines by another recurrence,
+  !> rounding only, 1e-11 of the partial's scale.
+  subroutine check_against_parder(surf, what)
+    type(spline_surface_t), intent(in) :: surf
+    character(len=*), intent(in) :: what
+    type(spline_surface_eval_t) :: p
+    type(status_t) :: st
+    real(wp), allocatable :: tx(:), ty(:), c3(:, :, :), c(:)
+    real(wp) :: box(4), x, y, z(1), wrk(2000), scale
+    integer :: iwrk(10), ier, k(2), a, b, i, ncx, ncy, ix, iy
+    character(len=64) :: label
+    box = surf%domain()
+    tx = surf%knots_u()
+    ty = surf%knots_v()
+    k = surf%degrees()
+    c3 = surf%coefficients()
+    ncx = size(c3, 1)
+    ncy = size(c3, 2)
+    call check(ncx == size(tx) - k(1) - 1 .and. ncy == size(ty) - k(2) - 1, what//': coefficient shape')
+    allocate (c(ncx*ncy))
+    do ix = 1, ncx
+      do iy = 1, ncy
+        c(ncy*(ix - 1) + iy) = c3(ix, iy, 1)
+      end do
+    end do
+    scale = maxval(abs(c))
+    do i = 1, 7
+      x = box(1) + (box(2) - box(1))*halton(i + 3, 2)
+      y = box(3) + (box(4) - box(3))*halton(i + 3, 3)
+      call surf%evaluate(x, y, p, st)
+      call check(st%code == STATUS_OK, what//': status')
+      call bispev(tx, size(tx), ty, size(ty), c, k(1), k(2), [x], 1, [y], 1, z, wrk, 2000, iwrk, 10, ier)
+      call check_close(p%f(1), z(1), 0.0_wp, 1.0e-12_wp*scale, what//': value = bispev')
+      do a = 0, min(3, k(1) - 1)
+        do b = 0, min(3 - a, k(2) - 1)
+          if (a + b == 0) cycle
+          call parder(tx, size(tx), ty, size(ty), c, k(1), k(2), a, b, [x], 1, [y], 1, z, wrk, 2000, iwrk, &
+            10, ier)
+          write (label, '(a, i0, i0)') ': partial = parder ', a, b
+          ! derivative coefficients grow like (degree / knot spacing)^order
+          call check_close(partial(p, a, b, 1), z(1), 0.0_wp, &
+            1.0e-11_wp*scale*(k(1)*(size(tx) - 2*k(1)))**a*(k(2)*(size(ty) - 2*k(2)))**b/ &
+            ((box(2) - box(1))**a*(box(4) - box(3))**b), what//trim(label))
+        end do
+      end do
+    end do
+  end subroutine check_against_parder
+
+  subroutine scattered_surface()
+    integer, parameter :: m = 150
+    real(wp) :: x(m), y(m), z(m)
+    type(spline_surface_t) :: surf
+    type(status_t) :: st
+    type(spline_surface_eval_t) :: p
+    integer :: i
+    real(wp) :: box(4), err
+    do i = 1, m
+      x(i) = halton(i, 2)
+      y(i) = halton(i, 3)
+      z(i) = sin(3*x(i))*cos(2*y(i)) + 0.5_wp*x(i)*y(i) + 0.01_wp*sin(97.0_wp*i)
+    end do
+    surf = fit_scattered(x, y, z, 0.015_wp, 3, 3, st)
+    call check(st%ok(), 'scattered: fit status ok: '//st%text())
+    if (.not. st%ok()) return
+    call check(surf%dimension() == 1, 'scattered: scalar surface')
+    call check(abs(surf%residual() - 0.015_wp) <= 0.001_wp*0.015_wp, 'scattered: fp within 0.1 % of s')
+    box = surf%domain()
+    call check(all(abs(box - [minval(x), maxval(x), minval(y), maxval(y)]) == 0), 'scattered: domain is the data box')
+    ! residual sum recomputed from the evaluations equals FITPACK's fp (1e-10:
+    ! sums of 150 squares of rounding-level differences)
+    err = 0
+    do i = 1, m
+      call surf%evaluate(x(i), y(i), p, st)
+      err = err + (z(i) - p%f(1))**2
+    end do
+    call check_close(err, surf%residual(), 1.0e-10_wp, 0.0_wp, 'scattered: fp from evaluations')
+    call check_values_bispev(surf, 'scattered')
+    call check_partials_fd(surf, 'scattered bicubic', 40)
+    ! weights and bbox, quintic in x, quadratic in y
+    surf = fit_scattered(x, y, z, 0.02_wp, 5, 2, st, weights=[(1.0_wp + 0.5_wp*halton(i, 5), i = 1, m)], &
+      bbox=[-0.1_wp, 1.1_wp, -0.05_wp, 1.0_wp])
+    call check(st%ok(), 'scattered k=(5,2): fit status ok: '//st%text())
+    if (.not. st%ok()) return
+    call check(all(surf%domain() == [-0.1_wp, 1.1_wp, -0.05_wp, 1.0_wp]), 'scattered k=(5,2): domain is the bbox')
+    call check_values_bispev(surf, 'scattered k=(5,2)')
+    call check_partials_fd(surf, 'scattered k=(5,2)', 40)
+  end subroutine scattered_surface
+
+  subroutine check_values_bispev(surf, what)
+    type(spline_surface_t), intent(in) :: surf
+    character(len=*), intent(in) :: what
+    call check_against_parder(surf, what)
+  end subroutine check_values_bispev
+
+  subroutine grid_surface()
+    integer, parameter :: mx = 12, my = 10
+    real(wp) :: x(mx), y(my), z(mx, my)
+    type(spline_surface_t) :: surf
+    type(status_t) :: st
+    type(spline_surface_eval_t) :: p
+    integer :: i, j
+    real(wp) :: err
+    x = [(real(i - 1, wp)/(mx - 1), i = 1, mx)]
+    y = [(2*real(j - 1, wp)/(my - 1), j = 1, my)]
+    do i = 1, mx
+      do j = 1, my
+        z(i, j) = exp(-x(i))*sin(2*y(j)) + x(i)**2
+      end do
+    end do
+    ! interpolation (s = 0) with degree 5: third partials are meaningful
+    surf = fit_grid(x, y, z, 0.0_wp, 5, 5, st)
+    call check(st%ok(), 'grid: fit status ok: '//st%text())
+    if (.not. st%ok()) return
+    call check(surf%fitpack_ier() == -1, 'grid s=0: interpolating spline (ier = -1)')
+    err = 0
+    do i = 1, mx
+      do j = 1, my
+        call surf%evaluate(x(i), y(j), p, st)
+        err = max(err, abs(p%f(1) - z(i, j)))
+      end do
+    end do
+    ! interpolation conditions hold to rounding of the solve
+    call check(err <= 1.0e-12_wp, 'grid s=0: interpolates the grid')
+    call check_values_bispev(surf, 'grid quintic')
+    call check_partials_fd(surf, 'grid quintic', 40)
+    ! smoothing, bicubic
+    surf = fit_grid(x, y, z + 0.01_wp*sin(31.0_wp*spread(x, 2, my) + 17.0_wp*spread(y, 1, mx)), 0.005_wp, 3, 3, st)
+    call check(st%ok(), 'grid smoothing: status ok: '//st%text())
+    if (st%ok()) then
+      call check(abs(surf%residual() - 0.005_wp) <= 0.001_wp*0.005_wp, 'grid smoothing: fp within 0.1 % of s')
+      call check_partials_fd(surf, 'grid bicubic', 40)
+    end if
+  end subroutine grid_surface
+
+  !> A closed tube, periodic in u: wrap-around, C^2 at the seam and partials.
+  subroutine parametric_tube()
+    integer, parameter :: mu = 21, mv = 9
+    real(wp) :: u(mu), v(mv), pts(3, mu, mv), a
+    type(spline_surface_t) :: surf
+    type(status_t) :: st
+    type(spline_surface_eval_t) :: p, q
+    integer :: i, j, l
+    real(wp) :: box(4), err
+    u = [(real(i - 1, wp)/(mu - 1), i = 1, mu)]
+    v = [(real(j - 1, wp)/(mv - 1), j = 1, mv)]
+    do i = 1, mu
+      do j = 1, mv
+        a = 2*pi*u(i)
+        pts(:, i, j) = [(1 + 0.3_wp*v(j))*cos(a), (1 + 0.3_wp*v(j))*sin(a) + 0.1_wp*sin(2*a), 2*v(j)]
+      end do
+    end do
+    surf = fit_parametric(u, v, pts, 0.0_wp, [.true., .false.], st)
+    call check(st%ok(), 'tube: fit status ok: '//st%text())
+    if (.not. st%ok()) return
+    call check(surf%dimension() == 3, 'tube: three coordinates')
+    box = surf%domain()
+    call check(all(box == [0.0_wp, 1.0_wp, 0.0_wp, 1.0_wp]), 'tube: domain')
+    err = 0
+    do i = 1, mu
+      do j = 1, mv
+        call surf%evaluate(u(i), v(j), p, st)
+        err = max(err, maxval(abs(p%f - pts(:, i, j))))
+      end do
+    end do
+    call check(err <= 1.0e-12_wp, 'tube s=0: interpolates the points')
+    ! periodic in u: evaluation at u and u + 1 agree (wrap, no domain status);
+    ! at the seam from both sides value and first two u-partials agree (C^2)
+    call surf%evaluate(0.3_wp, 0.4_wp, p, st)
+    call surf%evaluate(1.3_wp, 0.4_wp, q, st)
+    call check(st%ok(), 'tube: u beyond the period wraps without a status')
+    call check(maxval(abs(p%f - q%f)) + maxval(abs(p%fuuu - q%fuuu)) <= 1.0e-12_wp, 'tube: periodic wrap')
+    call surf%evaluate(1.0e-9_wp, 0.6_wp, p, st)
+    call surf%evaluate(1.0_wp - 1.0e-9_wp, 0.6_wp, q, st)
+    do l = 1, 3
+      ! 1e-9 apart: values differ by |r_u| 2e-9, u-partials by |r_uuu| 2e-9
+      call check_close(p%f(l), q%f(l), 0.0_wp, 1.0e-7_wp, 'tube: C0 at the seam')
+      call check_close(p%fu(l), q%fu(l), 0.0_wp, 1.0e-6_wp, 'tube: C1 at the seam')
+      call check_close(p%fuu(l), q%fuu(l), 0.0_wp, 1.0e-5_wp, 'tube: C2 at the seam')
+    end do
+    call check_partials_fd(surf, 'tube', 40)
+  end subroutine parametric_tube
+
+  !> Thesis 3.5.3.3: paraboloids (3.58) z = (u^2 + v^2)/a^2 (c = 1, a = b),
+  !> a^2 = 3 on [-2, 2]^2 and a^2 = 0.5 on [-0.5, 0.5]^2, 13 x 13 points,
+  !> degree 5, s = 0.05 via surfit. A paraboloid is a polynomial of degree 2:
+  !> surfit's least-squares polynomial (ier = -2) reproduces it, so all
+  !> partials to third order equal the analytic ones (z_u = 2u/a^2,
+  !> z_uu = 2/a^2, the rest 0) to rounding: 1e-9 absolute for |z| <= 3.
+  subroutine thesis_paraboloids()
+    real(wp) :: x(169), y(169), z(169), a2(2), half(2), grid(13), u, v
+    type(spline_surface_t) :: surf
+    type(status_t) :: st
+    type(spline_surface_eval_t) :: p
+    integer :: k, i, j, n
+    character(len=32) :: tag
+    a2 = [3.0_wp, 0.5_wp]
+    half = [2.0_wp, 0.5_wp]
+    do k = 1, 2
+      write (tag, '(a, i0)') 'thesis paraboloid ', k
+      grid = [(-half(k) + 2*half(k)*(i - 1)/12.0_wp, i = 1, 13)]
+      n = 0
+      do i = 1, 13
+        do j = 1, 13
+          n = n + 1
+          x(n) = grid(i)
+          y(n) = grid(j)
+          z(n) = (x(n)**2 + y(n)**2)/a2(k)      ! thesis (3.58)
+        end do
+      end do
+      surf = fit_scattered(x, y, z, 0.05_wp, 5, 5, st)
+      call check(st%ok(), trim(tag)//': fit status ok: '//st%text())
+      if (.not. st%ok()) cycle
+      call check(all(surf%degrees() == [5, 5]), trim(tag)//': degree 5')
+      call check(surf%residual() <= 0.05_wp, trim(tag)//': fp <= s')
+      do i = 1, 25
+        u = -half(k) + 2*half(k)*halton(i, 2)
+        v = -half(k) + 2*half(k)*halton(i, 3)
+        call surf%evaluate(u, v, p, st)
+        call check(st%ok(), trim(tag)//': evaluate status')
+        call check_close(p%f(1), (u**2 + v**2)/a2(k), 0.0_wp, 1.0e-9_wp, trim(tag)//': z')
+        call check_close(p%fu(1), 2*u/a2(k), 0.0_wp, 1.0e-9_wp, trim(tag)//': z_u')
+        call check_close(p%fv(1), 2*v/a2(k), 0.0_wp, 1.0e-9_wp, trim(tag)//': z_v')
+        call check_close(p%fuu(1), 2/a2(k), 0.0_wp, 1.0e-8_wp, trim(tag)//': z_uu')
+        call check_close(p%fvv(1), 2/a2(k), 0.0_wp, 1.0e-8_wp, trim(tag)//': z_vv')
+        call check_close(p%fuv(1), 0.0_wp, 0.0_wp, 1.0e-8_wp, trim(tag)//': z_uv')
+        call check_close(p%fuuu(1), 0.0_wp, 0.0_wp, 1.0e-7_wp, trim(tag)//': z_uuu')
+        call check_close(p%fuuv(1), 0.0_wp, 0.0_wp, 1.0e-7_wp, trim(tag)//': z_uuv')
+        call check_close(p%fuvv(1), 0.0_wp, 0.0_wp, 1.0e-7_wp, trim(tag)//': z_uvv')
+        call check_close(p%fvvv(1), 0.0_wp, 0.0_wp, 1.0e-7_wp, trim(tag)//': z_vvv')
+      end do
+    end do
+  end subroutine thesis_paraboloids
+
+  subroutine failures_as_statuses()
+    real(wp) :: x(20), y(20), z(20), g(5), zz(5, 5), pts(3, 5, 5)
+    type(spline_surface_t) :: surf
+    type(status_t) :: st
+    type(spline_surface_eval_t) :: p
+    integer :: i
+    x = [(halton(i, 2), i = 1, 20)]
+    y = [(halton(i, 3), i = 1, 20)]
+    z = x + y
+    surf = fit_scattered(x, y, z, -1.0_wp, 3, 3, st)
+    call check(st%code == STATUS_INVALID_INPUT, 'negative smoothing is invalid input')
+    surf = fit_scattered(x, y, z, 0.1_wp, 6, 3, st)
+    call check(st%code == STATUS_INVALID_INPUT, 'degree 6 is invalid input')
+    surf = fit_scattered(x(1:10), y(1:10), z(1:10), 0.1_wp, 3, 3, st)
+    call check(st%code == STATUS_INVALID_INPUT, 'fewer points than (kx+1)(ky+1) is invalid input')
+    surf = fit_scattered(x, y, z, 0.1_wp, 3, 3, st, weights=[(0.0_wp, i = 1, 20)])
+    call check(st%code == STATUS_INVALID_INPUT, 'zero weights are invalid input')
+    surf = fit_scattered(x, y, z, 0.1_wp, 3, 3, st, bbox=[0.2_wp, 1.0_wp, 0.0_wp, 1.0_wp])
+    call check(st%code == STATUS_INVALID_INPUT, 'points outside the bbox are invalid input')
+    call check(len(st%text()) > 10, 'invalid input has a message')
+    call check(.not. surf%is_fitted(), 'a failed fit leaves no surface')
+    call surf%evaluate(0.5_wp, 0.5_wp, p, st)
+    call check(st%code == STATUS_INVALID_INPUT, 'evaluating an unfitted surface is refused')
+    g = [0.0_wp, 0.25_wp, 0.5_wp, 0.5_wp, 1.0_wp]
+    zz = 1
+    surf = fit_grid(g, g, zz, 0.0_wp, 3, 3, st)
+    call check(st%code == STATUS_INVALID_INPUT, 'grid not strictly increasing is invalid input')
+    pts = 0
+    surf = fit_parametric(g, g, pts, 0.0_wp, [.false., .false.], st)
+    call check(st%code == STATUS_INVALID_INPUT, 'parametric grid not increasing is invalid input')
+    g = [0.0_wp, 0.25_wp, 0.5_wp, 0.75_wp, 1.0_wp]
+    zz = spread(g, 2, 5)
+    surf = fit_grid(g, g, zz, 0.0_wp, 3, 3, st)
+    call check(st%ok(), 'small grid fit ok')
+    call surf%evaluate(1.5_wp, 0.5_wp, p, st)
+    call check(st%code == STATUS_DOMAIN, 'a point outside the domain gives STATUS_DOMAIN')
+    call check_close(p%f(1), 1.0_wp, 0.0_wp, 1.0e-12_wp, 'outside: value at the nearest boundary point')
+  end subroutine failures_as_statuses
+end program test_spline_surface
