@@ -2,45 +2,53 @@
 module io_surface_config
   use base_kinds, only: wp
   use base_constants, only: pi
-  use base_status, only: status_t, prefix_status
+  use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_t
   use geometry_elementary, only: plane_t, ellipsoid_t, paraboloid_t, elliptic_cylinder_t, &
                                  apex_paraboloid_t
   use geometry_placed_surface, only: placed_surface_t
   use io_input, only: input_text_t, namelist_read_error, check_positive, check_choice, &
-                      check_finite_vector, lower
+                      check_finite_vector, lower, load_input_file
+  use io_geometry_config, only: read_geometry_config
   implicit none (type, external)
   private
   public :: read_surface_config, surface_kinds
 
-  character(len=*), parameter :: surface_kinds(6) = [character(len=21) :: 'plane', 'ellipsoid', &
-    'elliptic_paraboloid', 'hyperbolic_paraboloid', 'elliptic_cylinder', 'apex_paraboloid']
+  character(len=*), parameter :: surface_kinds(10) = [character(len=21) :: 'plane', 'ellipsoid', &
+    'elliptic_paraboloid', 'hyperbolic_paraboloid', 'elliptic_cylinder', 'apex_paraboloid', &
+    'tube', 'slide', 'blended', 'bspline']
 
 contains
 
   !> Builds the surface described by &surface, placed by `origin` and the Cardan
-  !> angles `angles_deg` (r -> origin + Rx Ry Rz r).
+  !> angles `angles_deg` (r -> origin + Rx Ry Rz r). The kinds tube, slide,
+  !> blended and bspline are described by the geometry groups (&centerline,
+  !> &cross_section, &slide_elements, &blended; io_geometry_config) of the file
+  !> `geometry_file` (a path relative to the working directory).
   subroutine read_surface_config(input, built_surface, status)
     type(input_text_t), intent(in) :: input
     class(surface_t), allocatable, intent(out) :: built_surface
     type(status_t), intent(inout) :: status
     character(len=24) :: kind
+    character(len=256) :: geometry_file
+    type(input_text_t) :: geometry_input
     real(wp) :: a, b, c, point_a(3), point_b(3), point_c(3), origin(3), angles_deg(3)
     class(surface_t), allocatable :: local
     type(status_t) :: built
     character(len=256) :: msg
     integer :: ios
     character(len=*), parameter :: g = 'surface'
-    namelist /surface/ kind, a, b, c, point_a, point_b, point_c, origin, angles_deg
+    namelist /surface/ kind, a, b, c, point_a, point_b, point_c, origin, angles_deg, geometry_file
 
     kind = 'plane'
+    geometry_file = ''
     a = 1; b = 1; c = 1
     point_a = [0, 0, 0]; point_b = [1, 0, 0]; point_c = [0, 1, 0]
     origin = 0; angles_deg = 0
     read (input%lines, nml=surface, iostat=ios, iomsg=msg)
     if (ios > 0) then
-      call namelist_read_error(input, g, msg, [character(len=10) :: 'kind', 'a', 'b', 'c', 'point_a', &
-                               'point_b', 'point_c', 'origin', 'angles_deg'], status)
+      call namelist_read_error(input, g, msg, [character(len=13) :: 'kind', 'a', 'b', 'c', 'point_a', &
+                               'point_b', 'point_c', 'origin', 'angles_deg', 'geometry_file'], status)
       return
     end if
     call check_choice(input, g, 'kind', kind, surface_kinds, status)
@@ -67,6 +75,14 @@ contains
     case ('apex_paraboloid')
       call check_semi_axes(2)
       if (status%ok()) local = apex_paraboloid_t(a, b, built)
+    case ('tube', 'slide', 'blended', 'bspline')
+      if (len_trim(geometry_file) == 0) then
+        call set_status(status, STATUS_INVALID_INPUT, input%name//': &'//g//': kind = '''// &
+                        trim(lower(adjustl(kind)))//''' needs geometry_file = ''<file with the geometry groups>''')
+      else
+        call load_input_file(trim(geometry_file), geometry_input, status)
+        if (status%ok()) call read_geometry_config(geometry_input, local, status, kind=lower(adjustl(kind)))
+      end if
     end select
     if (.not. status%ok()) return
     if (.not. built%ok()) then

@@ -7,13 +7,15 @@ module scenarios_registry
   use io_input, only: input_text_t, load_input_file, input_from_text, check_choice
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
+  use scenarios_geometry, only: run_geometry
   implicit none (type, external)
   private
   public :: run_input_file, run_default, run_input, print_scenarios, default_input, slidesim_version
 
-  character(len=*), parameter :: scenario_names(1) = [character(len=16) :: 'point_mass']
-  character(len=*), parameter :: scenario_summaries(1) = [character(len=72) :: &
-    'a point mass sliding on an elementary surface (plane, ellipsoid, ...)']
+  character(len=*), parameter :: scenario_names(2) = [character(len=16) :: 'point_mass', 'geometry']
+  character(len=*), parameter :: scenario_summaries(2) = [character(len=72) :: &
+    'a point mass sliding on an elementary surface (plane, ellipsoid, ...)', &
+    'build a tube, slide or blended surface; write grid, centerline, frames']
 
   !> The built-in default: a point mass sliding down an inclined half-pipe (an
   !> elliptic cylinder of radius 0.5 m whose axis falls 10 degrees), started off the
@@ -81,6 +83,8 @@ contains
     select case (trim(run%scenario))
     case ('point_mass')
       call run_point_mass(input, run, status)
+    case ('geometry')
+      call run_geometry(input, run, status)
     end select
   end subroutine run_input
 end module scenarios_registry

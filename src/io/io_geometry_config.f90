@@ -1,0 +1,489 @@
+!> Geometry input: &geometry, &centerline, &cross_section, &slide_elements and
+!> &blended build a tube, a slide from standard elements, or a blended surface.
+!> Every value is checked before anything is built; the whole surface is then
+!> checked (frame defined everywhere, no folding) before it is returned.
+!> See docs/geometry.md for every variable with unit, default and range.
+module io_geometry_config
+  use base_kinds, only: wp
+  use base_constants, only: pi, two_pi
+  use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
+  use geometry_surface, only: surface_t
+  use geometry_curve, only: curve_t, line_curve_t, helix_curve_t, constant_curve_t
+  use geometry_curve_frame, only: horizon_parallel_tol
+  use geometry_cross_section, only: cross_section_t, section_holder_t, circle_section_t, &
+    ellipse_section_t, flume_section_t, blended_section_t, new_blended_section
+  use geometry_tube, only: tube_surface_t, new_tube_surface
+  use geometry_slide_elements, only: slide_element_t, element_chain_curve_t, new_element_chain
+  use geometry_blended_surface, only: blended_surface_t, blend_patch_t, new_blended_surface
+  use geometry_elementary, only: plane_t, ellipsoid_t, paraboloid_t, elliptic_cylinder_t
+  use geometry_placed_surface, only: placed_surface_t
+  use io_input, only: input_text_t, namelist_read_error, check_positive, check_nonnegative, &
+    check_finite, check_finite_vector, check_choice, check_range, invalid, format_real, &
+    format_vector, lower
+  implicit none (type, external)
+  private
+  public :: read_geometry_config, geometry_groups, geometry_kinds, profile_self_intersection
+
+  character(len=*), parameter :: geometry_groups(5) = [character(len=14) :: 'geometry', 'centerline', &
+    'cross_section', 'slide_elements', 'blended']
+  character(len=*), parameter :: geometry_kinds(4) = [character(len=8) :: 'tube', 'slide', 'blended', 'bspline']
+
+  integer, parameter :: max_points = 2000, max_sections = 8, max_elements = 40, max_patches = 8
+  integer, parameter :: max_profile = 400
+
+contains
+
+  !> Builds the surface described by the geometry groups of `input`. If `kind`
+  !> is given it replaces &geometry kind (used by &surface kind = 'slide', ...).
+  subroutine read_geometry_config(input, surface, status, kind)
+    type(input_text_t), intent(in) :: input
+    class(surface_t), allocatable, intent(out) :: surface
+    type(status_t), intent(inout) :: status
+    character(len=*), intent(in), optional :: kind
+    character(len=16) :: gkind
+    integer :: check_samples
+    class(curve_t), allocatable :: centerline
+    class(cross_section_t), allocatable :: section
+    type(constant_curve_t) :: horizon
+    type(tube_surface_t) :: tube
+    type(status_t) :: built
+    real(wp) :: horizon_vector(3)
+
+    call read_geometry_group(input, gkind, check_samples, status)
+    if (present(kind)) gkind = kind
+    if (.not. status%ok()) return
+    select case (trim(gkind))
+    case ('tube', 'slide')
+      if (gkind == 'tube') then
+        call read_centerline(input, centerline, horizon_vector, status)
+      else
+        call read_slide_elements(input, centerline, status)
+        horizon_vector = [0.0_wp, 0.0_wp, 1.0_wp]
+      end if
+      if (.not. status%ok()) return
+      call read_cross_section(input, centerline, section, status)
+      if (.not. status%ok()) return
+      horizon = constant_curve_t(value=horizon_vector)
+      tube = new_tube_surface(centerline, horizon, section, built)
+      if (built%ok()) call tube%check(check_samples, built)
+      if (.not. built%ok()) then
+        status = built
+        call prefix_status(status, input%name // ': &' // trim(merge('centerline    ', 'slide_elements', &
+                           gkind == 'tube')) // ' with &cross_section')
+        return
+      end if
+      allocate (surface, source=tube)
+    case ('blended')
+      call read_blended(input, surface, status)
+    case ('bspline')
+      call set_status(status, STATUS_INVALID_INPUT, input%name // ': &geometry: kind = ''bspline'' ' // &
+                      'is not available yet: it needs the spline surface layer (numerics_spline_surface)')
+    end select
+  end subroutine read_geometry_config
+
+  subroutine read_geometry_group(input, kind, check_samples, status)
+    type(input_text_t), intent(in) :: input
+    character(len=16), intent(out) :: kind
+    integer, intent(out) :: check_samples
+    type(status_t), intent(inout) :: status
+    character(len=256) :: msg
+    integer :: ios
+    namelist /geometry/ kind, check_samples
+    kind = 'slide'
+    check_samples = 2000
+    read (input%lines, nml=geometry, iostat=ios, iomsg=msg)
+    if (ios > 0) then
+      call namelist_read_error(input, 'geometry', msg, [character(len=13) :: 'kind', 'check_samples'], status)
+      return
+    end if
+    kind = lower(adjustl(kind))
+    call check_choice(input, 'geometry', 'kind', kind, geometry_kinds, status)
+    if (status%ok() .and. (check_samples < 10 .or. check_samples > 1000000)) &
+      call invalid(input, 'geometry', 'check_samples', format_real(real(check_samples, wp)), &
+                   'must lie in [10, 1000000]', status)
+  end subroutine read_geometry_group
+
+  !> &centerline: kind = 'line' | 'helix' | 'points', and the horizon vector.
+  subroutine read_centerline(input, curve, horizon_out, status)
+    type(input_text_t), intent(in) :: input
+    class(curve_t), allocatable, intent(out) :: curve
+    real(wp), intent(out) :: horizon_out(3)
+    type(status_t), intent(inout) :: status
+    character(len=8) :: kind
+    real(wp) :: start(3), end(3), center(3), radius, rise_per_turn, turns, phase_deg, horizon(3)
+    real(wp) :: points(3, max_points), smoothing
+    integer :: n_points, degree, ios, i
+    character(len=256) :: msg
+    character(len=*), parameter :: g = 'centerline'
+    real(wp) :: t(3), d
+    namelist /centerline/ kind, start, end, center, radius, rise_per_turn, turns, phase_deg, horizon, &
+      n_points, points, smoothing, degree
+    kind = 'line'
+    start = [0, 0, 0]; end = [10, 0, 0]
+    center = 0; radius = 5; rise_per_turn = 0; turns = 0.25_wp; phase_deg = -90
+    horizon = [0, 0, 1]
+    n_points = 0; points = 0; smoothing = 0; degree = 5
+    read (input%lines, nml=centerline, iostat=ios, iomsg=msg)
+    if (ios > 0) then
+      call namelist_read_error(input, g, msg, [character(len=13) :: 'kind', 'start', 'end', 'center', &
+        'radius', 'rise_per_turn', 'turns', 'phase_deg', 'horizon', 'n_points', 'points', 'smoothing', &
+        'degree'], status)
+      return
+    end if
+    kind = lower(adjustl(kind))
+    call check_choice(input, g, 'kind', kind, [character(len=6) :: 'line', 'helix', 'points'], status)
+    call check_finite_vector(input, g, 'horizon', horizon, status)
+    if (status%ok() .and. .not. norm2(horizon) > 0) &
+      call invalid(input, g, 'horizon', format_vector(horizon), 'must be a non-zero vector', status)
+    if (.not. status%ok()) return
+    horizon_out = horizon
+    select case (trim(kind))
+    case ('line')
+      call check_finite_vector(input, g, 'start', start, status)
+      call check_finite_vector(input, g, 'end', end, status)
+      if (status%ok() .and. .not. norm2(end - start) > 0) &
+        call invalid(input, g, 'end', format_vector(end), 'must differ from start', status)
+      if (.not. status%ok()) return
+      t = (end - start)/norm2(end - start)
+      if (norm2(cross3(horizon/norm2(horizon), t)) < horizon_parallel_tol) then
+        call invalid(input, g, 'horizon', format_vector(horizon), &
+                     'must not be parallel to the centerline tangent ' // format_vector(t), status)
+        return
+      end if
+      curve = line_curve_t(origin=start, direction=(end - start)/norm2(end - start), u_min=0.0_wp, &
+                                u_max=norm2(end - start))
+    case ('helix')
+      call check_finite_vector(input, g, 'center', center, status)
+      call check_positive(input, g, 'radius', radius, 'm', status)
+      call check_finite(input, g, 'rise_per_turn', rise_per_turn, status)
+      call check_positive(input, g, 'turns', turns, '1', status)
+      call check_finite(input, g, 'phase_deg', phase_deg, status)
+      if (.not. status%ok()) return
+      curve = helix_curve_t(center=center, radius=radius, pitch=rise_per_turn/two_pi, &
+                                 phase=phase_deg*pi/180, u_min=0.0_wp, u_max=two_pi*turns)
+    case ('points')
+      if (n_points < 4 .or. n_points > max_points) then
+        call invalid(input, g, 'n_points', format_real(real(n_points, wp)), 'too few centerline points: ' // &
+                     'need at least 4 (and at most 2000) points', status)
+        return
+      end if
+      call check_finite_vector(input, g, 'points', reshape(points(:, 1:n_points), [3*n_points]), status)
+      if (.not. status%ok()) return
+      d = maxval(norm2(points(:, 2:n_points) - points(:, 1:n_points - 1), dim=1))
+      do i = 2, n_points
+        if (norm2(points(:, i) - points(:, i - 1)) <= 1e-9_wp*max(d, 1.0_wp)) then
+          call invalid(input, g, 'points(:, ' // itoa(i) // ')', format_vector(points(:, i)), &
+                       'duplicate consecutive centerline point (equal to points(:, ' // itoa(i - 1) // '))', status)
+          return
+        end if
+        t = (points(:, i) - points(:, i - 1))/norm2(points(:, i) - points(:, i - 1))
+        if (norm2(cross3(horizon/norm2(horizon), t)) < horizon_parallel_tol) then
+          call invalid(input, g, 'horizon', format_vector(horizon), 'is parallel to the centerline ' // &
+                       'between points ' // itoa(i - 1) // ' and ' // itoa(i), status)
+          return
+        end if
+      end do
+      call check_nonnegative(input, g, 'smoothing', smoothing, 'm^2', status)
+      if (status%ok() .and. (degree < 3 .or. degree > 5)) &
+        call invalid(input, g, 'degree', format_real(real(degree, wp)), 'must be 3, 4 or 5', status)
+      if (.not. status%ok()) return
+      call set_status(status, STATUS_INVALID_INPUT, input%name // ': &centerline: kind = ''points'' ' // &
+                      'needs the spline curve layer (numerics_spline_curve), not available in this build')
+    end select
+  end subroutine read_centerline
+
+  !> &slide_elements: the slide as a chain of standard elements.
+  subroutine read_slide_elements(input, centerline, status)
+    type(input_text_t), intent(in) :: input
+    class(curve_t), allocatable, intent(out) :: centerline
+    type(status_t), intent(inout) :: status
+    integer :: n_elements, ios, i
+    character(len=8) :: kind(max_elements)
+    character(len=5) :: direction(max_elements)
+    real(wp) :: length(max_elements), slope_deg(max_elements), radius(max_elements), &
+      angle_deg(max_elements), turns(max_elements), drop(max_elements)
+    real(wp) :: start(3), heading_deg, transition_length
+    type(slide_element_t) :: e(max_elements)
+    type(element_chain_curve_t) :: chain
+    type(status_t) :: built
+    character(len=256) :: msg
+    character(len=*), parameter :: g = 'slide_elements'
+    namelist /slide_elements/ n_elements, kind, length, slope_deg, radius, angle_deg, direction, turns, &
+      drop, start, heading_deg, transition_length
+    n_elements = 0
+    kind = 'straight'; direction = 'left'
+    length = 0; slope_deg = 0; radius = 0; angle_deg = 0; turns = 0; drop = 0
+    start = [0, 0, 0]; heading_deg = 0; transition_length = 2
+    read (input%lines, nml=slide_elements, iostat=ios, iomsg=msg)
+    if (ios > 0) then
+      call namelist_read_error(input, g, msg, [character(len=17) :: 'n_elements', 'kind', 'length', &
+        'slope_deg', 'radius', 'angle_deg', 'direction', 'turns', 'drop', 'start', 'heading_deg', &
+        'transition_length'], status)
+      return
+    end if
+    if (n_elements < 1 .or. n_elements > max_elements) then
+      call invalid(input, g, 'n_elements', format_real(real(n_elements, wp)), 'must lie in [1, 40]', status)
+      return
+    end if
+    call check_finite_vector(input, g, 'start', start, status)
+    call check_finite(input, g, 'heading_deg', heading_deg, status)
+    call check_nonnegative(input, g, 'transition_length', transition_length, 'm', status)
+    do i = 1, n_elements
+      kind(i) = lower(adjustl(kind(i)))
+      direction(i) = lower(adjustl(direction(i)))
+      call check_choice(input, g, 'kind(' // itoa(i) // ')', kind(i), [character(len=8) :: 'straight', &
+                        'curve', 'helix', 'runout'], status)
+      if (.not. status%ok()) return
+      select case (trim(kind(i)))
+      case ('straight', 'runout')
+        call check_positive(input, g, 'length(' // itoa(i) // ')', length(i), 'm', status)
+        call check_range(input, g, 'slope_deg(' // itoa(i) // ')', slope_deg(i), -45.0_wp, 45.0_wp, 'deg', status)
+      case ('curve')
+        call check_positive(input, g, 'radius(' // itoa(i) // ')', radius(i), 'm', status)
+        call check_range(input, g, 'angle_deg(' // itoa(i) // ')', angle_deg(i), 1e-6_wp, 720.0_wp, 'deg', status)
+        call check_range(input, g, 'slope_deg(' // itoa(i) // ')', slope_deg(i), -45.0_wp, 45.0_wp, 'deg', status)
+        call check_choice(input, g, 'direction(' // itoa(i) // ')', direction(i), &
+                          [character(len=5) :: 'left', 'right'], status)
+      case ('helix')
+        call check_positive(input, g, 'radius(' // itoa(i) // ')', radius(i), 'm', status)
+        call check_positive(input, g, 'turns(' // itoa(i) // ')', turns(i), '1', status)
+        call check_finite(input, g, 'drop(' // itoa(i) // ')', drop(i), status)
+        call check_choice(input, g, 'direction(' // itoa(i) // ')', direction(i), &
+                          [character(len=5) :: 'left', 'right'], status)
+        if (status%ok() .and. abs(drop(i)) > two_pi*radius(i)*turns(i)) &
+          call invalid(input, g, 'drop(' // itoa(i) // ')', format_real(drop(i)), &
+                       'the helix would be steeper than 45 deg (|drop| <= 2 pi radius turns)', status)
+      end select
+      if (.not. status%ok()) return
+      e(i) = slide_element_t(kind=kind(i), length=length(i), slope_deg=slope_deg(i), radius=radius(i), &
+                             angle_deg=angle_deg(i), direction=direction(i), turns=turns(i), drop=drop(i))
+    end do
+    chain = new_element_chain(e(1:n_elements), start, heading_deg, transition_length, built)
+    if (.not. built%ok()) then
+      status = built
+      call prefix_status(status, input%name // ': &' // g)
+      return
+    end if
+    allocate (centerline, source=chain)
+  end subroutine read_slide_elements
+
+  !> &cross_section: n_sections sections (circle, ellipse, flume) blended along
+  !> the centerline; transitions given in arc length along the centerline (m).
+  subroutine read_cross_section(input, centerline, section, status)
+    type(input_text_t), intent(in) :: input
+    class(curve_t), intent(in) :: centerline
+    class(cross_section_t), allocatable, intent(out) :: section
+    type(status_t), intent(inout) :: status
+    integer :: n_sections, ios, i
+    character(len=8) :: kind(max_sections)
+    real(wp) :: radius(max_sections), half_width(max_sections), half_height(max_sections), &
+      wall(max_sections), joint_width_deg(max_sections)
+    real(wp) :: transition_midpoint(max_sections - 1), transition_end(max_sections - 1)
+    real(wp) :: u_mid(max_sections - 1), u_end(max_sections - 1), total
+    type(section_holder_t) :: parts(max_sections)
+    type(blended_section_t) :: blend
+    type(status_t) :: built
+    character(len=256) :: msg
+    character(len=*), parameter :: g = 'cross_section'
+    namelist /cross_section/ n_sections, kind, radius, half_width, half_height, wall, joint_width_deg, &
+      transition_midpoint, transition_end
+    n_sections = 1
+    kind = 'circle'; radius = 0.5_wp; half_width = 0.5_wp; half_height = 0.5_wp
+    wall = 0.164_wp; joint_width_deg = 0.05_wp*180/pi
+    transition_midpoint = 0; transition_end = 0
+    read (input%lines, nml=cross_section, iostat=ios, iomsg=msg)
+    if (ios > 0) then
+      call namelist_read_error(input, g, msg, [character(len=19) :: 'n_sections', 'kind', 'radius', &
+        'half_width', 'half_height', 'wall', 'joint_width_deg', 'transition_midpoint', 'transition_end'], status)
+      return
+    end if
+    if (n_sections < 1 .or. n_sections > max_sections) then
+      call invalid(input, g, 'n_sections', format_real(real(n_sections, wp)), 'must lie in [1, 8]', status)
+      return
+    end if
+    do i = 1, n_sections
+      kind(i) = lower(adjustl(kind(i)))
+      call check_choice(input, g, 'kind(' // itoa(i) // ')', kind(i), &
+                        [character(len=7) :: 'circle', 'ellipse', 'flume', 'profile'], status)
+      if (.not. status%ok()) return
+      select case (trim(kind(i)))
+      case ('circle')
+        call check_positive(input, g, 'radius(' // itoa(i) // ')', radius(i), 'm', status)
+        if (status%ok()) allocate (parts(i)%section, source=circle_section_t(radius=radius(i)))
+      case ('ellipse')
+        call check_positive(input, g, 'half_width(' // itoa(i) // ')', half_width(i), 'm', status)
+        call check_positive(input, g, 'half_height(' // itoa(i) // ')', half_height(i), 'm', status)
+        if (status%ok()) allocate (parts(i)%section, &
+                                   source=ellipse_section_t(a=half_width(i), b=half_height(i)))
+      case ('flume')
+        call check_positive(input, g, 'radius(' // itoa(i) // ')', radius(i), 'm', status)
+        call check_positive(input, g, 'wall(' // itoa(i) // ')', wall(i), 'm', status)
+        call check_range(input, g, 'joint_width_deg(' // itoa(i) // ')', joint_width_deg(i), 0.1_wp, 20.0_wp, &
+                         'deg', status)
+        if (status%ok()) allocate (parts(i)%section, source=flume_section_t(radius=radius(i), wall=wall(i), &
+                                   transition=joint_width_deg(i)*pi/180))
+      case ('profile')
+        call set_status(status, STATUS_INVALID_INPUT, input%name // ': &cross_section: kind(' // itoa(i) // &
+                        ') = ''profile'' needs the spline curve layer (numerics_spline_curve), ' // &
+                        'not available in this build')
+      end select
+      if (.not. status%ok()) return
+    end do
+    if (n_sections == 1) then
+      call move_alloc(parts(1)%section, section)
+      return
+    end if
+    total = centerline%total_length()
+    do i = 1, n_sections - 1
+      call check_range(input, g, 'transition_midpoint(' // itoa(i) // ')', transition_midpoint(i), 0.0_wp, &
+                       total, 'm of arc length along the centerline', status)
+      if (status%ok() .and. .not. (transition_end(i) > transition_midpoint(i) .and. transition_end(i) <= total)) &
+        call invalid(input, g, 'transition_end(' // itoa(i) // ')', format_real(transition_end(i)), &
+                     'must lie after transition_midpoint(' // itoa(i) // ') and within the centerline (' // &
+                     format_real(total) // ' m)', status)
+      if (status%ok() .and. i > 1) then
+        if (.not. transition_midpoint(i) - transition_midpoint(i - 1) >= &
+            (transition_end(i) - transition_midpoint(i)) + (transition_end(i - 1) - transition_midpoint(i - 1))) &
+          call invalid(input, g, 'transition_midpoint(' // itoa(i) // ')', format_real(transition_midpoint(i)), &
+                       'transitions must not overlap (midpoints at least the sum of the two half-widths apart)', &
+                       status)
+      end if
+      if (.not. status%ok()) return
+      call centerline%parameter_at_length(transition_midpoint(i), u_mid(i), built)
+      if (built%ok()) call centerline%parameter_at_length(transition_end(i), u_end(i), built)
+      if (.not. built%ok()) then
+        status = built
+        call prefix_status(status, input%name // ': &' // g)
+        return
+      end if
+    end do
+    blend = new_blended_section(parts(1:n_sections), u_mid(1:n_sections - 1), u_end(1:n_sections - 1), built)
+    if (.not. built%ok()) then
+      status = built
+      call prefix_status(status, input%name // ': &' // g)
+      return
+    end if
+    allocate (section, source=blend)
+  end subroutine read_cross_section
+
+  !> &blended: n_patches elementary surfaces, each placed and cut to a range
+  !> of its own parameters, blended along u (thesis 3.73-3.79).
+  subroutine read_blended(input, surface, status)
+    type(input_text_t), intent(in) :: input
+    class(surface_t), allocatable, intent(out) :: surface
+    type(status_t), intent(inout) :: status
+    integer :: n_patches, ios, i
+    character(len=24) :: kind(max_patches)
+    real(wp) :: a(max_patches), b(max_patches), c(max_patches), origin(3, max_patches), &
+      angles_deg(3, max_patches), u_min(max_patches), u_max(max_patches), v_min(max_patches), &
+      v_max(max_patches), transition(max_patches - 1), midpoint(max_patches - 1), u_99(max_patches - 1)
+    logical :: swap_uv(max_patches)
+    type(blend_patch_t) :: patches(max_patches)
+    type(blended_surface_t) :: blend
+    class(surface_t), allocatable :: base
+    type(status_t) :: built
+    character(len=256) :: msg
+    character(len=*), parameter :: g = 'blended'
+    namelist /blended/ n_patches, kind, a, b, c, origin, angles_deg, u_min, u_max, v_min, v_max, swap_uv, &
+      transition, midpoint, u_99
+    n_patches = 0
+    kind = 'plane'; a = 1; b = 1; c = 1; origin = 0; angles_deg = 0
+    u_min = 0; u_max = 1; v_min = 0; v_max = 1; swap_uv = .false.
+    transition = 0; midpoint = -huge(1.0_wp); u_99 = -huge(1.0_wp)
+    read (input%lines, nml=blended, iostat=ios, iomsg=msg)
+    if (ios > 0) then
+      call namelist_read_error(input, g, msg, [character(len=10) :: 'n_patches', 'kind', 'a', 'b', 'c', &
+        'origin', 'angles_deg', 'u_min', 'u_max', 'v_min', 'v_max', 'swap_uv', 'transition', 'midpoint', &
+        'u_99'], status)
+      return
+    end if
+    if (n_patches < 2 .or. n_patches > max_patches) then
+      call invalid(input, g, 'n_patches', format_real(real(n_patches, wp)), 'must lie in [2, 8]', status)
+      return
+    end if
+    do i = 1, n_patches
+      kind(i) = lower(adjustl(kind(i)))
+      call check_choice(input, g, 'kind(' // itoa(i) // ')', kind(i), [character(len=21) :: 'ellipsoid', &
+                        'elliptic_paraboloid', 'hyperbolic_paraboloid', 'elliptic_cylinder'], status)
+      call check_positive(input, g, 'a(' // itoa(i) // ')', a(i), 'm', status)
+      call check_positive(input, g, 'b(' // itoa(i) // ')', b(i), 'm', status)
+      if (kind(i) == 'ellipsoid') call check_positive(input, g, 'c(' // itoa(i) // ')', c(i), 'm', status)
+      call check_finite_vector(input, g, 'origin(:, ' // itoa(i) // ')', origin(:, i), status)
+      call check_finite_vector(input, g, 'angles_deg(:, ' // itoa(i) // ')', angles_deg(:, i), status)
+      if (status%ok() .and. .not. u_max(i) > u_min(i)) &
+        call invalid(input, g, 'u_max(' // itoa(i) // ')', format_real(u_max(i)), 'must exceed u_min', status)
+      if (status%ok() .and. v_max(i) == v_min(i)) &
+        call invalid(input, g, 'v_max(' // itoa(i) // ')', format_real(v_max(i)), 'must differ from v_min', status)
+      if (i < n_patches) call check_nonnegative(input, g, 'transition(' // itoa(i) // ')', transition(i), &
+                                                'patch parameter units', status)
+      if (.not. status%ok()) return
+      select case (trim(kind(i)))
+      case ('ellipsoid'); base = ellipsoid_t(a(i), b(i), c(i), built)
+      case ('elliptic_paraboloid'); base = paraboloid_t(a(i), b(i), 1.0_wp, built)
+      case ('hyperbolic_paraboloid'); base = paraboloid_t(a(i), b(i), -1.0_wp, built)
+      case default; base = elliptic_cylinder_t(a(i), b(i), built)
+      end select
+      allocate (patches(i)%surface, source=placed_surface_t(base, origin(:, i), built, &
+                                                            angles=angles_deg(:, i)*pi/180))
+      patches(i)%u_min = u_min(i); patches(i)%u_max = u_max(i)
+      patches(i)%v_min = v_min(i); patches(i)%v_max = v_max(i)
+      patches(i)%swap_uv = swap_uv(i)
+    end do
+    if (any(midpoint(1:n_patches - 1) /= -huge(1.0_wp))) then
+      blend = new_blended_surface(patches(1:n_patches), transition(1:n_patches - 1), built, &
+                                  midpoint=midpoint(1:n_patches - 1), u_99=u_99(1:n_patches - 1))
+    else
+      blend = new_blended_surface(patches(1:n_patches), transition(1:n_patches - 1), built)
+    end if
+    if (.not. built%ok()) then
+      status = built
+      call prefix_status(status, input%name // ': &' // g)
+      return
+    end if
+    allocate (surface, source=blend)
+  end subroutine read_blended
+
+  !> Index of the first segment of the polyline (y, z) that crosses a later,
+  !> non-adjacent segment (0: no self-intersection).
+  pure integer function profile_self_intersection(y, z) result(first)
+    real(wp), intent(in) :: y(:), z(:)
+    integer :: i, j, n
+    n = size(y)
+    first = 0
+    do i = 1, n - 1
+      do j = i + 2, n - 1
+        if (segments_cross([y(i), z(i)], [y(i + 1), z(i + 1)], [y(j), z(j)], [y(j + 1), z(j + 1)])) then
+          first = i
+          return
+        end if
+      end do
+    end do
+  end function profile_self_intersection
+
+  pure logical function segments_cross(p1, p2, q1, q2) result(crosses)
+    real(wp), intent(in) :: p1(2), p2(2), q1(2), q2(2)
+    real(wp) :: d1, d2, d3, d4
+    d1 = orient(q1, q2, p1); d2 = orient(q1, q2, p2)
+    d3 = orient(p1, p2, q1); d4 = orient(p1, p2, q2)
+    crosses = (d1*d2 < 0) .and. (d3*d4 < 0)
+  end function segments_cross
+
+  pure real(wp) function orient(a, b, c)
+    real(wp), intent(in) :: a(2), b(2), c(2)
+    orient = (b(1) - a(1))*(c(2) - a(2)) - (b(2) - a(2))*(c(1) - a(1))
+  end function orient
+
+  pure function cross3(a, b) result(c)
+    real(wp), intent(in) :: a(3), b(3)
+    real(wp) :: c(3)
+    c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
+  end function cross3
+
+  pure function itoa(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    character(len=12) :: buf
+    write (buf, '(i0)') i
+    text = trim(buf)
+  end function itoa
+end module io_geometry_config

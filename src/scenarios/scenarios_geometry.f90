@@ -1,0 +1,150 @@
+!> Scenario `geometry`: builds a surface from the geometry groups (a tube, a
+!> slide from standard elements, a blended surface) and writes to HDF5 a
+!> surface grid for plotting and, for tubes and slides, the centerline, the
+!> frames along it, the curvature chi, its derivative chi_u and the arc length.
+!> Layout and units: docs/geometry.md.
+module scenarios_geometry
+  use, intrinsic :: iso_fortran_env, only: output_unit
+  use base_kinds, only: wp
+  use base_status, only: status_t, prefix_status
+  use base_log, only: log_info
+  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_curve, only: curve_point_t
+  use geometry_curve_frame, only: curve_frame_t
+  use geometry_tube, only: tube_surface_t
+  use io_input, only: input_text_t, check_known_groups, namelist_read_error, invalid, format_real
+  use io_run_config, only: run_config_t
+  use io_geometry_config, only: read_geometry_config, geometry_groups
+  use io_hdf5, only: result_file_t
+  implicit none (type, external)
+  private
+  public :: run_geometry, geometry_scenario_groups
+
+  character(len=*), parameter :: geometry_scenario_groups(7) = [character(len=14) :: 'run', &
+    geometry_groups, 'grid']
+
+contains
+
+  subroutine run_geometry(input, run, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(status_t), intent(inout) :: status
+    class(surface_t), allocatable :: surface
+    type(result_file_t) :: file
+    type(status_t) :: work
+    integer :: n_u, n_v, n_frames
+
+    call check_known_groups(input, geometry_scenario_groups, status)
+    if (status%ok()) call read_grid(input, n_u, n_v, n_frames, status)
+    if (status%ok()) call read_geometry_config(input, surface, status)
+    if (.not. status%ok()) return
+    call file%create(trim(run%output), status)
+    if (.not. status%ok()) return
+    call log_info('geometry: ' // surface%describe())
+
+    call file%set_attribute('/', 'scenario', 'geometry', work)
+    call file%set_attribute('/', 'title', trim(run%title), work)
+    call file%write_text('/input/namelist', input%text(), 'the input namelist text of this run', work)
+    call file%write_text('/input/source', input%name, 'where the input came from', work)
+    call file%set_attribute('/', 'surface', surface%describe(), work)
+    if (work%ok()) call write_grid(file, surface, n_u, n_v, work)
+    select type (surface)
+    type is (tube_surface_t)
+      if (work%ok()) call write_centerline(file, surface, n_frames, work)
+    end select
+    if (.not. work%ok()) call prefix_status(work, 'geometry')
+    call file%finish(work%ok(), work%text(), work)
+    if (work%ok()) then
+      write (output_unit, '(a)') 'geometry: ' // surface%describe() // ' written to ' // file%final_path()
+    else
+      status = work
+    end if
+  end subroutine run_geometry
+
+  !> &grid: resolution of the written surface grid and of the centerline samples.
+  subroutine read_grid(input, n_u_out, n_v_out, n_frames_out, status)
+    type(input_text_t), intent(in) :: input
+    integer, intent(out) :: n_u_out, n_v_out, n_frames_out
+    type(status_t), intent(inout) :: status
+    integer :: n_u, n_v, n_frames, ios
+    character(len=256) :: msg
+    namelist /grid/ n_u, n_v, n_frames
+    n_u = 400; n_v = 48; n_frames = 400
+    read (input%lines, nml=grid, iostat=ios, iomsg=msg)
+    if (ios > 0) then
+      call namelist_read_error(input, 'grid', msg, [character(len=8) :: 'n_u', 'n_v', 'n_frames'], status)
+      return
+    end if
+    if (n_u < 2 .or. n_u > 100000) call invalid(input, 'grid', 'n_u', format_real(real(n_u, wp)), &
+                                                'must lie in [2, 100000]', status)
+    if (status%ok() .and. (n_v < 2 .or. n_v > 10000)) call invalid(input, 'grid', 'n_v', &
+                                                format_real(real(n_v, wp)), 'must lie in [2, 10000]', status)
+    if (status%ok() .and. (n_frames < 2 .or. n_frames > 100000)) call invalid(input, 'grid', 'n_frames', &
+                                                format_real(real(n_frames, wp)), 'must lie in [2, 100000]', status)
+    n_u_out = n_u; n_v_out = n_v; n_frames_out = n_frames
+  end subroutine read_grid
+
+  subroutine write_grid(file, surface, n_u, n_v, status)
+    type(result_file_t), intent(inout) :: file
+    class(surface_t), intent(in) :: surface
+    integer, intent(in) :: n_u, n_v
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: x(:, :), y(:, :), z(:, :), u(:), v(:)
+    real(wp) :: u_min, u_max, v_min, v_max
+    type(surface_point_t) :: p
+    integer :: i, j
+    call surface%domain(u_min, u_max, v_min, v_max)
+    allocate (x(n_v, n_u), y(n_v, n_u), z(n_v, n_u))
+    u = [(u_min + (u_max - u_min)*i/real(n_u - 1, wp), i=0, n_u - 1)]
+    v = [(v_min + (v_max - v_min)*j/real(n_v - 1, wp), j=0, n_v - 1)]
+    do i = 1, n_u
+      do j = 1, n_v
+        call surface%evaluate(u(i), v(j), 0, p, status)
+        if (.not. status%ok()) return
+        x(j, i) = p%r(1); y(j, i) = p%r(2); z(j, i) = p%r(3)
+      end do
+    end do
+    call file%write_vector('/geometry/surface/u', u, 'surface parameter', 'grid values of u', status)
+    call file%write_vector('/geometry/surface/v', v, 'surface parameter', 'grid values of v', status)
+    call file%write_matrix('/geometry/surface/x', x, 'm', 'x of r(u, v); Fortran (n_v, n_u), h5py (n_u, n_v)', status)
+    call file%write_matrix('/geometry/surface/y', y, 'm', 'y of r(u, v); Fortran (n_v, n_u), h5py (n_u, n_v)', status)
+    call file%write_matrix('/geometry/surface/z', z, 'm', 'z of r(u, v); Fortran (n_v, n_u), h5py (n_u, n_v)', status)
+  end subroutine write_grid
+
+  subroutine write_centerline(file, tube, n, status)
+    type(result_file_t), intent(inout) :: file
+    type(tube_surface_t), intent(in) :: tube
+    integer, intent(in) :: n
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: u(:), s(:), points(:, :), xa(:, :), ya(:, :), za(:, :), chi(:), chi_u(:), &
+      tangent_speed(:)
+    real(wp) :: u_min, u_max, v_min, v_max
+    type(curve_frame_t) :: f
+    type(curve_point_t) :: c
+    integer :: i
+    call tube%domain(u_min, u_max, v_min, v_max)
+    allocate (u(n), s(n), points(3, n), xa(3, n), ya(3, n), za(3, n), chi(n), chi_u(n), tangent_speed(n))
+    do i = 1, n
+      u(i) = u_min + (u_max - u_min)*(i - 1)/real(n - 1, wp)
+      call tube%frame(u(i), 2, f, status, c)
+      if (.not. status%ok()) return
+      s(i) = tube%arc_length(u(i))
+      points(:, i) = c%d(:, 0)
+      tangent_speed(i) = norm2(c%d(:, 1))
+      xa(:, i) = f%x(:, 0); ya(:, i) = f%y(:, 0); za(:, i) = f%z(:, 0)
+      chi(i) = f%chi; chi_u(i) = f%chi_u
+    end do
+    call file%write_vector('/geometry/centerline/u', u, 'curve parameter', &
+                           'centerline parameter u (horizontal arc length in m for slides)', status)
+    call file%write_vector('/geometry/centerline/arc_length', s, 'm', 'arc length s(u) from the start', status)
+    call file%write_matrix('/geometry/centerline/points', points, 'm', 'c(u) (3 x n)', status)
+    call file%write_vector('/geometry/centerline/speed', tangent_speed, 'm/curve parameter', '|c_u| = ds/du', status)
+    call file%write_matrix('/geometry/centerline/frame_x', xa, '1', 'frame x axis (tangent, 3.61) (3 x n)', status)
+    call file%write_matrix('/geometry/centerline/frame_y', ya, '1', 'frame y axis (3.62) (3 x n)', status)
+    call file%write_matrix('/geometry/centerline/frame_z', za, '1', 'frame z axis (3.63) (3 x n)', status)
+    call file%write_vector('/geometry/centerline/chi', chi, '1/m', 'centerline curvature chi (4.8)', status)
+    call file%write_vector('/geometry/centerline/chi_u', chi_u, '1/(m curve parameter)', &
+                           'd chi/du (4.9)', status)
+    call file%write_vector('/geometry/centerline/length', [tube%length()], 'm', 'total centerline length', status)
+  end subroutine write_centerline
+end module scenarios_geometry
