@@ -8,14 +8,16 @@ module scenarios_registry
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
   use scenarios_geometry, only: run_geometry
+  use scenarios_water, only: run_water
   implicit none (type, external)
   private
   public :: run_input_file, run_default, run_input, print_scenarios, default_input, slidesim_version
 
-  character(len=*), parameter :: scenario_names(2) = [character(len=16) :: 'point_mass', 'geometry']
-  character(len=*), parameter :: scenario_summaries(2) = [character(len=72) :: &
+  character(len=*), parameter :: scenario_names(3) = [character(len=16) :: 'point_mass', 'geometry', 'water']
+  character(len=*), parameter :: scenario_summaries(3) = [character(len=72) :: &
     'a point mass sliding on an elementary surface (plane, ellipsoid, ...)', &
-    'build a tube, slide or blended surface; write grid, centerline, frames']
+    'build a tube, slide or blended surface; write grid, centerline, frames', &
+    'stationary water flow down a tube slide: streamline, height, width, edges']
 
   !> The built-in default: a point mass sliding down an inclined half-pipe (an
   !> elliptic cylinder of radius 0.5 m whose axis falls 10 degrees), started off the
@@ -85,6 +87,8 @@ contains
       call run_point_mass(input, run, status)
     case ('geometry')
       call run_geometry(input, run, status)
+    case ('water')
+      call run_water(input, run, status)
     end select
   end subroutine run_input
 end module scenarios_registry

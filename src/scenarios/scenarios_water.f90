@@ -1,0 +1,299 @@
+!> Scenario `water`: the stationary water flow down a tube slide (thesis 4.2):
+!> the streamline, water height, width and edges, a table over arc length and
+!> a report at stations. The slide is a tube from &surface (kind = 'tube' or
+!> 'slide' with geometry_file) or a closed-form tube from &channel.
+module scenarios_water
+  use, intrinsic :: iso_fortran_env, only: output_unit
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_log, only: log_info
+  use geometry_surface, only: surface_t
+  use geometry_tube, only: tube_surface_t
+  use numerics_ode, only: ode_stats_t
+  use water_channel, only: analytic_tube_t
+  use water_tube_channel, only: new_tube_channel
+  use water_streamline, only: streamline_t, CORRECTION_FULL, CORRECTION_NO_RADIUS
+  use water_flow, only: water_series_t, water_table_t, water_initial_state, simulate_water, &
+    water_table, outcome_name, OUTCOME_END, OUTCOME_DURATION
+  use io_input, only: input_text_t, check_known_groups, group_present, invalid, format_real
+  use io_run_config, only: run_config_t
+  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_surface_config, only: read_surface_config
+  use io_water_config, only: water_config_t, read_water_config, read_channel_config
+  use io_hdf5, only: result_file_t
+  implicit none (type, external)
+  private
+  public :: run_water, build_water, water_groups
+
+  character(len=*), parameter :: water_groups(5) = [character(len=8) :: 'run', 'solver', 'surface', &
+    'channel', 'water']
+
+contains
+
+  !> Reads and checks every input group, builds the model and its start state;
+  !> nothing is written.
+  subroutine build_water(input, solver, config, model, y0, status)
+    type(input_text_t), intent(in) :: input
+    type(solver_config_t), intent(out) :: solver
+    type(water_config_t), intent(out) :: config
+    type(streamline_t), intent(out) :: model
+    real(wp), intent(out) :: y0(7)
+    type(status_t), intent(inout) :: status
+    class(surface_t), allocatable :: surface
+    type(analytic_tube_t) :: tube
+    real(wp) :: u_min, u_max, v_min, v_max, total
+    integer :: i
+
+    y0 = 0
+    call check_known_groups(input, water_groups, status)
+    if (status%ok()) call read_solver_config(input, solver, status)
+    if (.not. status%ok()) return
+    if (group_present(input, 'surface') .and. group_present(input, 'channel')) then
+      call set_status(status, STATUS_INVALID_INPUT, input%name//': give the slide either by &surface ' // &
+                      '(a tube or slide) or by &channel, not both')
+      return
+    end if
+    if (group_present(input, 'surface')) then
+      call read_surface_config(input, surface, status)
+      if (.not. status%ok()) return
+      select type (surface)
+      type is (tube_surface_t)
+        allocate (model%channel, source=new_tube_channel(surface))
+      class default
+        call set_status(status, STATUS_INVALID_INPUT, input%name//': &surface: the water needs a tube ' // &
+                        '(kind = ''tube'' or ''slide''), not a '//surface%describe())
+        return
+      end select
+    else
+      call read_channel_config(input, tube, status)
+      if (.not. status%ok()) return
+      allocate (model%channel, source=tube)
+    end if
+    call read_water_config(input, config, status)
+    if (.not. status%ok()) return
+
+    model%mass = config%mass
+    model%gravity = config%gravity
+    model%f1 = config%f1; model%f2 = config%f2; model%f3 = config%f3
+    model%correction = config%correction
+    model%flow_rate = config%flow_rate
+    model%min_speed = config%min_speed
+    model%min_criticality = config%min_criticality
+
+    call model%channel%u_range(u_min, u_max)
+    call model%channel%v_range(v_min, v_max)
+    if (config%start%u0 < u_min .or. config%start%u0 >= u_max) then
+      call invalid(input, 'water', 'u0', format_real(config%start%u0), 'the start must lie on the slide, ' // &
+                   'u in ['//format_real(u_min)//', '//format_real(u_max)//')', status)
+      return
+    end if
+    if (config%start%v0 < v_min .or. config%start%v0 > v_max .or. config%start%v_left > v_max .or. &
+        config%start%v_right < v_min) then
+      call invalid(input, 'water', 'v0 (or v_left0, v_right0)', format_real(config%start%v0), &
+                   'the start must lie inside the cross-section, v in ['//format_real(v_min)//', '// &
+                   format_real(v_max)//'] rad', status)
+      return
+    end if
+    total = model%channel%arc_length(u_max)
+    allocate (model%stations(size(config%stations)))
+    do i = 1, size(config%stations)
+      if (config%stations(i) > total) then
+        call invalid(input, 'water', 'stations', format_real(config%stations(i)), &
+                     'stations must lie on the slide (arc length <= '//format_real(total)//' m)', status)
+        return
+      end if
+      call model%channel%parameter_at_length(config%stations(i), model%stations(i), status)
+      if (.not. status%ok()) return
+    end do
+    call water_initial_state(model, config%start, y0, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, input%name//': &water: start')
+      status%code = STATUS_INVALID_INPUT
+    end if
+  end subroutine build_water
+
+  subroutine run_water(input, run, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(status_t), intent(inout) :: status
+    type(solver_config_t) :: solver
+    type(water_config_t) :: config
+    type(streamline_t), target :: model
+    type(water_series_t) :: series
+    type(water_table_t) :: table
+    type(result_file_t) :: file
+    type(status_t) :: run_status, write_status
+    real(wp) :: y0(7), cpu_start, cpu_end
+
+    call build_water(input, solver, config, model, y0, status)
+    if (.not. status%ok()) return
+    call file%create(trim(run%output), status)
+    if (.not. status%ok()) return
+    call log_info('water: '//model%channel%describe()//', Q = '//format_real(model%flow_rate)//' m^3/s')
+    call cpu_time(cpu_start)
+    call simulate_water(model, y0, solver%options, solver%duration, solver%output_step, series, &
+                        run_status, edges=config%edges)
+    call water_table(series, model, config%table_step, table)
+    call cpu_time(cpu_end)
+    call write_results(file, input, run, model, config, series, table, cpu_end - cpu_start, write_status)
+    if (run_status%ok()) then
+      call file%finish(write_status%ok(), write_status%text(), write_status)
+    else
+      call file%finish(.false., run_status%text(), write_status)
+    end if
+    call print_summary(model, series, cpu_end - cpu_start, file%final_path(), run_status)
+    if (.not. run_status%ok()) then
+      status = run_status
+    else if (.not. write_status%ok()) then
+      status = write_status
+    end if
+  end subroutine run_water
+
+  subroutine write_results(file, input, run, model, config, s, table, cpu, status)
+    type(result_file_t), intent(inout) :: file
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(streamline_t), intent(in) :: model
+    type(water_config_t), intent(in) :: config
+    type(water_series_t), intent(in) :: s
+    type(water_table_t), intent(in) :: table
+    real(wp), intent(in) :: cpu
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: g = '/water/', t = '/water/table/', st = '/water/stations/'
+    integer :: n, i
+    character(len=16) :: mode
+
+    n = s%n
+    call file%set_attribute('/', 'scenario', 'water', status)
+    call file%set_attribute('/', 'title', trim(run%title), status)
+    call file%write_text('/input/namelist', input%text(), 'the input namelist text of this run', status)
+    call file%write_text('/input/source', input%name, 'where the input came from', status)
+    call file%write_vector(g//'time', s%time(:n), 's', 'time', status)
+    call file%write_vector(g//'arc_length', s%arc_length(:n), 'm', &
+                           'arc length of the centerline at the water point (from the slide start)', status)
+    call file%write_vector(g//'u', s%u(:n), 'surface parameter', 'surface coordinate u (along the slide)', status)
+    call file%write_vector(g//'v', s%v(:n), 'rad', 'surface coordinate v (across; pi/2 = bottom)', status)
+    call file%write_vector(g//'du', s%du(:n), 'surface parameter/s', 'rate of u', status)
+    call file%write_vector(g//'dv', s%dv(:n), 'rad/s', 'rate of v', status)
+    call file%write_matrix(g//'position', s%position(:, :n), 'm', 'streamline point (3 x n)', status)
+    call file%write_matrix(g//'velocity', s%velocity(:, :n), 'm/s', 'water velocity (3 x n)', status)
+    call file%write_vector(g//'speed', s%speed(:n), 'm/s', 'water speed w', status)
+    call file%write_vector(g//'height', s%height(:n), 'm', 'water height h (4.24)', status)
+    call file%write_vector(g//'width', s%width(:n), 'm', 'water width b (4.19, 4.47)', status)
+    call file%write_vector(g//'area', s%area(:n), 'm^2', 'water cross-section area A (F.1, 4.45)', status)
+    call file%write_vector(g//'radius', s%radius(:n), 'm', &
+                           'equivalent circle radius R (4.15); 0 for non-circular sections', status)
+    call file%write_vector(g//'beta', s%beta(:n), 'rad', 'angle between flow and centerline (+ towards +v)', &
+                           status)
+    call file%write_vector(g//'alpha', s%alpha(:n), 'rad', 'central angle of the water (4.19)', status)
+    call file%write_vector(g//'normal_force', s%normal_force(:n), 'N', &
+                           'normal force on the 1 kg streamline mass (4.12)', status)
+    call file%write_vector(g//'friction_force', s%friction_force(:n), 'N', 'friction F_R (4.7)', status)
+    call file%write_vector(g//'curvature', s%curvature(:n), '1/m', 'centerline curvature chi (4.8)', status)
+    call file%write_vector(g//'froude', s%froude(:n), '1', 'Froude number sqrt(m b w^2/(N A))', status)
+    call file%write_vector(g//'kinetic_energy', s%kinetic(:n), 'J', 'kinetic energy of the 1 kg mass', status)
+    call file%write_vector(g//'potential_energy', s%potential(:n), 'J', 'potential energy -m g.r', status)
+    call file%write_vector(g//'energy', s%kinetic(:n) + s%potential(:n), 'J', 'kinetic + potential energy', &
+                           status)
+    call file%write_vector(g//'friction_work', s%friction_work(:n), 'J', &
+                           'work done by friction since the start (<= 0)', status)
+    call file%write_vector(g//'correction_work', s%correction_work(:n), 'J', &
+                           'work done by the Saint-Venant term since the start', status)
+    call file%write_matrix(g//'left_edge', s%left_edge(:, :n), 'surface parameters', &
+                           'left water edge (u, v) (2 x n), towards +v (4.25)', status)
+    call file%write_matrix(g//'right_edge', s%right_edge(:, :n), 'surface parameters', &
+                           'right water edge (u, v) (2 x n) (4.26)', status)
+    call file%write_matrix(g//'left_point', s%left_point(:, :n), 'm', 'left water edge point (3 x n)', status)
+    call file%write_matrix(g//'right_point', s%right_point(:, :n), 'm', 'right water edge point (3 x n)', status)
+    call file%set_attribute('/water', 'outcome', outcome_name(s%outcome), status)
+    call file%set_attribute('/water', 'flow_rate_m3_per_s', format_real(s%flow_rate), status)
+    mode = 'off'
+    if (model%correction == CORRECTION_FULL) mode = 'full'
+    if (model%correction == CORRECTION_NO_RADIUS) mode = 'no_radius'
+    call file%set_attribute('/water', 'correction', trim(mode), status)
+    call file%set_attribute('/water', 'friction_f1_f2_f3', format_real(model%f1)//' '//format_real(model%f2)// &
+                            ' '//format_real(model%f3), status)
+
+    call file%write_vector(t//'arc_length', table%arc_length, 'm', 'centerline arc length', status)
+    call file%write_vector(t//'u', table%u, 'surface parameter', 'u at that arc length', status)
+    call file%write_vector(t//'time', table%time, 's', 'time the water point passes', status)
+    call file%write_vector(t//'v', table%v, 'rad', 'v of the water middle', status)
+    call file%write_vector(t//'speed', table%speed, 'm/s', 'water speed', status)
+    call file%write_vector(t//'height', table%height, 'm', 'water height', status)
+    call file%write_vector(t//'width', table%width, 'm', 'water width', status)
+    call file%write_vector(t//'beta', table%beta, 'rad', 'flow angle to the centerline', status)
+    call file%write_vector(t//'v_left', table%v_left, 'rad', 'v of the left edge', status)
+    call file%write_vector(t//'v_right', table%v_right, 'rad', 'v of the right edge', status)
+
+    if (size(s%stations) > 0) then
+      call file%write_vector(st//'arc_length', config%stations, 'm', 'station arc length (input)', status)
+      call file%write_vector(st//'u', s%stations%u, 'surface parameter', 'u of the station', status)
+      call file%write_vector(st//'time', s%stations%time, 's', 'time the water passes', status)
+      call file%write_vector(st//'v', s%stations%v, 'rad', 'v of the streamline', status)
+      call file%write_vector(st//'v_middle', s%stations%v_middle, 'rad', &
+                             'v of the middle between the edges (as measured, 4.32)', status)
+      call file%write_vector(st//'v_left', s%stations%v_left, 'rad', 'v of the left edge', status)
+      call file%write_vector(st//'v_right', s%stations%v_right, 'rad', 'v of the right edge', status)
+      call file%write_vector(st//'speed', s%stations%speed, 'm/s', 'water speed', status)
+      call file%write_vector(st//'height', s%stations%height, 'm', 'water height', status)
+      call file%write_vector(st//'width', s%stations%width, 'm', 'water width', status)
+      call file%write_integers(st//'reached', [(merge(1, 0, s%stations(i)%reached), i = 1, size(s%stations))], &
+                               '1', '1 if the water reached the station', status)
+    end if
+    call write_stats(file, s%stats, cpu, status)
+  end subroutine write_results
+
+  subroutine write_stats(file, stats, cpu, status)
+    type(result_file_t), intent(inout) :: file
+    type(ode_stats_t), intent(in) :: stats
+    real(wp), intent(in) :: cpu
+    type(status_t), intent(inout) :: status
+    call file%write_integers('/statistics/steps', [int(stats%steps)], '1', 'integrator steps', status)
+    call file%write_integers('/statistics/rhs_evaluations', [int(stats%rhs_evaluations)], '1', &
+                             'right-hand-side evaluations', status)
+    call file%write_integers('/statistics/error_test_failures', [int(stats%error_test_failures)], '1', &
+                             'error test failures', status)
+    call file%write_vector('/statistics/cpu_time', [cpu], 's', 'CPU time of the water computation', status)
+  end subroutine write_stats
+
+  subroutine print_summary(model, s, cpu, path, run_status)
+    type(streamline_t), intent(in) :: model
+    type(water_series_t), intent(in) :: s
+    real(wp), intent(in) :: cpu
+    character(len=*), intent(in) :: path
+    type(status_t), intent(in) :: run_status
+    integer :: n, i
+    n = s%n
+    if (n < 1) return
+    write (output_unit, '(a)') 'slidesim water in '//model%channel%describe()
+    write (output_unit, '(a, es11.4, a)') '  flow rate           ', s%flow_rate, ' m^3/s'
+    write (output_unit, '(a, f0.4, a, f0.3, a, a)') '  flow time           ', s%time(n), ' s over ', &
+      s%arc_length(n) - s%arc_length(1), ' m of slide, stopped at: ', outcome_name(s%outcome)
+    write (output_unit, '(a, 2f9.4, a)') '  speed min/max       ', minval(s%speed(:n)), maxval(s%speed(:n)), ' m/s'
+    write (output_unit, '(a, 2f9.5, a)') '  height min/max      ', minval(s%height(:n)), maxval(s%height(:n)), ' m'
+    write (output_unit, '(a, 2f9.4, a)') '  v min/max           ', minval(s%v(:n)), maxval(s%v(:n)), ' rad'
+    write (output_unit, '(a, i0, a, i0, a)') '  integrator          ', s%stats%steps, ' steps, ', &
+      s%stats%rhs_evaluations, ' right-hand sides'
+    write (output_unit, '(a, es10.3, a)') '  CPU time            ', cpu, ' s'
+    if (size(s%stations) > 0) then
+      write (output_unit, '(a)') '  station  arc length    time   v middle   v edges (right, left)   speed   height' &
+        //'   width'
+      write (output_unit, '(a)') '                  m       s        rad        rad        rad        m/s       m' &
+        //'       m'
+      do i = 1, size(s%stations)
+        if (s%stations(i)%reached) then
+          write (output_unit, '(2x, i5, f12.3, f9.4, 3f11.4, f9.4, 2f9.5)') i, s%stations(i)%arc_length, &
+            s%stations(i)%time, s%stations(i)%v_middle, s%stations(i)%v_right, s%stations(i)%v_left, &
+            s%stations(i)%speed, s%stations(i)%height, s%stations(i)%width
+        else
+          write (output_unit, '(2x, i5, a)') i, '   (not reached)'
+        end if
+      end do
+    end if
+    if (run_status%ok() .and. (s%outcome == OUTCOME_END .or. s%outcome == OUTCOME_DURATION)) then
+      write (output_unit, '(a)') '  results             '//path
+    else
+      write (output_unit, '(a)') '  results (INCOMPLETE) '//path
+    end if
+  end subroutine print_summary
+end module scenarios_water
