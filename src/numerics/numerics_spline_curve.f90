@@ -1,0 +1,610 @@
+!> Parametric spline curves r(u) in 1..10 dimensions over our FITPACK
+!> (external/fitpack): fitted with a smoothing factor (parcur), closed
+!> (clocur), or with prescribed derivatives at the ends (concur, thesis
+!> 2.54-2.67). Evaluation returns the point and all derivatives up to a given
+!> order without allocating; arc length by Gauss-Legendre quadrature per knot
+!> span and its inverse by safeguarded Newton iteration.
+!>
+!> FITPACK's ier is translated in one place (ier_status). Interpolants
+!> (ier = -1) and least-squares polynomials (ier = -2) are accepted fits; for
+!> ier = 1..3 FITPACK still returns a usable approximation, which is kept, but
+!> the status reports why it does not meet the smoothing factor.
+module numerics_spline_curve
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT, STATUS_SOLVER, &
+    STATUS_NOT_CONVERGED, STATUS_INTERNAL
+  use fitpack_interfaces, only: parcur, clocur, concur
+  implicit none (type, external)
+  private
+  public :: spline_curve_t
+
+  integer, parameter :: max_degree = 5, max_dimension = 10
+
+  !> 10-point Gauss-Legendre rule on [-1, 1] (positive nodes; symmetric).
+  real(wp), parameter :: gl_x(5) = [0.1488743389816312108848260_wp, 0.4333953941292471907992659_wp, &
+                                    0.6794095682990244062343274_wp, 0.8650633666889845107320967_wp, &
+                                    0.9739065285171717200779640_wp]
+  real(wp), parameter :: gl_w(5) = [0.2955242247147528701738930_wp, 0.2692667193099963550912269_wp, &
+                                    0.2190863625159820439955349_wp, 0.1494513491505805931457763_wp, &
+                                    0.0666713443086881375935688_wp]
+
+  !> A B-spline curve: knots t(1..n), degree k, coefficients c(1..dim, 1..n-k-1).
+  !> Closed curves are periodic with period t(n-k) - t(k+1).
+  type :: spline_curve_t
+    private
+    real(wp), allocatable :: knots(:)
+    real(wp), allocatable :: coefficients(:, :)
+    integer :: degree = 0
+    integer :: dimension = 0
+    logical :: periodic = .false.
+    real(wp) :: fp = 0                     !< weighted residual sum of squares of the fit
+    integer :: ier = 0                     !< FITPACK's ier of the fit
+    real(wp), allocatable :: cumulative(:) !< arc length at the knots t(k+1..n-k)
+  contains
+    procedure :: fit
+    procedure :: set
+    procedure :: evaluate
+    procedure :: arc_length
+    procedure :: parameter_at_length
+    procedure :: total_length
+    procedure :: domain
+    procedure :: is_fitted
+    procedure :: is_periodic
+    procedure :: get_degree
+    procedure :: get_dimension
+    procedure :: get_knots
+    procedure :: get_coefficients
+    procedure :: residual
+    procedure :: fitpack_ier
+  end type spline_curve_t
+
+contains
+
+  !> Fits a spline curve of the given degree (1..5) to points(dim, m).
+  !> smoothing is FITPACK's s >= 0 (0 interpolates): sum_i (w_i |p_i - r(u_i)|)**2 <= s.
+  !> parameters: u_i, strictly increasing (default: chord length scaled to [0,1]).
+  !> weights: w_i > 0 (default 1). start_derivatives(dim, nb), end_derivatives(dim, ne):
+  !> column j is the (j-1)-th derivative prescribed at the first / last parameter
+  !> (position first); needs an odd degree and nb, ne <= (degree+1)/2 (concur).
+  !> periodic: closed curve (clocur); the first and last point must coincide.
+  subroutine fit(self, points, smoothing, degree, status, parameters, weights, start_derivatives, &
+                 end_derivatives, periodic)
+    class(spline_curve_t), intent(inout) :: self
+    real(wp), intent(in) :: points(:, :)
+    real(wp), intent(in) :: smoothing
+    integer, intent(in) :: degree
+    type(status_t), intent(out) :: status
+    real(wp), intent(in), optional :: parameters(:)
+    real(wp), intent(in), optional :: weights(:)
+    real(wp), intent(in), optional :: start_derivatives(:, :)
+    real(wp), intent(in), optional :: end_derivatives(:, :)
+    logical, intent(in), optional :: periodic
+
+    real(wp), allocatable :: u(:), x(:), w(:), xx(:), t(:), c(:), wrk(:), db(:), de(:), cp(:)
+    integer, allocatable :: iwrk(:)
+    integer :: idim, m, k, nest, nc, lwrk, n, ier, ipar, nb, ne, i, l, np
+    real(wp) :: fp, ub, ue, scale
+    logical :: closed, constrained
+
+    idim = size(points, 1)
+    m = size(points, 2)
+    k = degree
+    closed = .false.
+    if (present(periodic)) closed = periodic
+    nb = 0
+    ne = 0
+    if (present(start_derivatives)) nb = size(start_derivatives, 2)
+    if (present(end_derivatives)) ne = size(end_derivatives, 2)
+    constrained = nb > 0 .or. ne > 0
+
+    ! validation at the boundary; FITPACK's own checks then only catch what we missed
+    if (idim < 1 .or. idim > max_dimension) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: the dimension must be 1..10')
+      return
+    end if
+    if (k < 1 .or. k > max_degree) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: the degree must be 1..5')
+      return
+    end if
+    if (m < k + 1 .or. (closed .and. m < 3)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: fewer points than degree + 1')
+      return
+    end if
+    if (.not. (smoothing >= 0) .or. smoothing > huge(1.0_wp)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: the smoothing factor must be >= 0')
+      return
+    end if
+    if (.not. all(abs(points) <= huge(1.0_wp))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: points must be finite')
+      return
+    end if
+    if (present(parameters)) then
+      if (size(parameters) /= m) then
+        call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: one parameter per point needed')
+        return
+      end if
+      if (.not. all(parameters(2:m) > parameters(1:m - 1)) .or. &
+          .not. all(abs(parameters) <= huge(1.0_wp))) then
+        call set_status(status, STATUS_INVALID_INPUT, &
+                        'spline curve fit: parameters must be finite and strictly increasing')
+        return
+      end if
+    end if
+    if (present(weights)) then
+      if (size(weights) /= m) then
+        call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: one weight per point needed')
+        return
+      end if
+      if (.not. all(weights > 0) .or. .not. all(weights <= huge(1.0_wp))) then
+        call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: weights must be positive and finite')
+        return
+      end if
+    end if
+    if (constrained) then
+      if (closed) then
+        call set_status(status, STATUS_INVALID_INPUT, &
+                        'spline curve fit: end derivatives cannot be prescribed for a closed curve')
+        return
+      end if
+      if (mod(k, 2) == 0) then
+        call set_status(status, STATUS_INVALID_INPUT, &
+                        'spline curve fit: end derivatives need an odd degree (1, 3 or 5)')
+        return
+      end if
+      if (nb > (k + 1)/2 .or. ne > (k + 1)/2) then
+        call set_status(status, STATUS_INVALID_INPUT, &
+                        'spline curve fit: at most (degree+1)/2 derivatives (from the position on) per end')
+        return
+      end if
+      if (present(start_derivatives)) then
+        if (size(start_derivatives, 1) /= idim) then
+          call set_status(status, STATUS_INVALID_INPUT, &
+                          'spline curve fit: start derivatives must have the dimension of the points')
+          return
+        end if
+      end if
+      if (present(end_derivatives)) then
+        if (size(end_derivatives, 1) /= idim) then
+          call set_status(status, STATUS_INVALID_INPUT, &
+                          'spline curve fit: end derivatives must have the dimension of the points')
+          return
+        end if
+      end if
+    end if
+
+    allocate (u(m), x(idim*m), w(m))
+    x = reshape(points, [idim*m])
+    w = 1
+    if (present(weights)) w = weights
+    ipar = 0
+    if (present(parameters)) then
+      u = parameters
+      ipar = 1
+    else if (constrained) then
+      ! concur needs parameters: chord length scaled to [0,1] as parcur's ipar = 0
+      u(1) = 0
+      do i = 2, m
+        u(i) = u(i - 1) + norm2(points(:, i) - points(:, i - 1))
+      end do
+      if (.not. all(u(2:m) > u(1:m - 1))) then
+        call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: consecutive points coincide')
+        return
+      end if
+      u(2:m) = u(2:m)/u(m)
+      u(m) = 1
+    end if
+    if (closed) then
+      scale = maxval(abs(points))
+      if (any(abs(points(:, m) - points(:, 1)) > 1e-12_wp*max(scale, 1.0_wp))) then
+        call set_status(status, STATUS_INVALID_INPUT, &
+                        'spline curve fit: a closed curve needs its last point equal to its first')
+        return
+      end if
+      x(idim*(m - 1) + 1:idim*m) = x(1:idim)
+    end if
+
+    ! storage for the interpolating spline, so that ier = 1 cannot happen
+    if (closed) then
+      nest = m + 2*k
+      lwrk = m*(k + 1) + nest*(7 + idim + 5*k)
+    else
+      nest = m + k + 1 + max(0, nb - 1) + max(0, ne - 1)
+      lwrk = m*(k + 1) + nest*(6 + idim + 3*k)
+    end if
+    nc = nest*idim
+    allocate (t(nest), c(nc), wrk(lwrk), iwrk(nest))
+    t = 0
+    c = 0
+    n = 0
+    fp = 0
+    if (closed) then
+      call clocur(0, ipar, idim, m, u, idim*m, x, w, k, smoothing, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
+    else if (constrained) then
+      allocate (db(max(1, idim*nb)), de(max(1, idim*ne)), xx(idim*m))
+      np = 2*(k + 1)*idim
+      allocate (cp(np))
+      db = 0
+      de = 0
+      do l = 1, nb
+        db(idim*(l - 1) + 1:idim*l) = start_derivatives(:, l)
+      end do
+      do l = 1, ne
+        de(idim*(l - 1) + 1:idim*l) = end_derivatives(:, l)
+      end do
+      call concur(0, idim, m, u, idim*m, x, xx, w, nb, db, size(db), ne, de, size(de), k, smoothing, nest, n, t, &
+                  nc, c, np, cp, fp, wrk, lwrk, iwrk, ier)
+    else
+      ub = 0
+      ue = 1
+      if (ipar == 1) then
+        ub = u(1)
+        ue = u(m)
+      end if
+      call parcur(0, ipar, idim, m, u, idim*m, x, w, ub, ue, k, smoothing, nest, n, t, nc, c, fp, &
+                  wrk, lwrk, iwrk, ier)
+    end if
+    call ier_status(ier, status)
+    if (ier == 10) return
+
+    self%degree = k
+    self%dimension = idim
+    self%periodic = closed
+    self%fp = fp
+    self%ier = ier
+    self%knots = t(1:n)
+    if (allocated(self%coefficients)) deallocate (self%coefficients)
+    allocate (self%coefficients(idim, n - k - 1))
+    do l = 1, idim
+      self%coefficients(l, :) = c(n*(l - 1) + 1:n*(l - 1) + n - k - 1)
+    end do
+    call tabulate_length(self)
+  end subroutine fit
+
+  !> FITPACK's ier -> status (the one place where ier is read).
+  pure subroutine ier_status(ier, status)
+    integer, intent(in) :: ier
+    type(status_t), intent(inout) :: status
+    select case (ier)
+    case (0, -1, -2)
+      status%code = STATUS_OK
+    case (1)
+      call set_status(status, STATUS_SOLVER, 'spline curve fit: FITPACK ran out of knot storage (ier = 1); '// &
+                      'the least-squares spline returned has fp > s')
+    case (2)
+      call set_status(status, STATUS_NOT_CONVERGED, 'spline curve fit: the smoothing factor is too small '// &
+                      'for FITPACK to find the smoothing parameter (ier = 2); approximation returned')
+    case (3)
+      call set_status(status, STATUS_NOT_CONVERGED, 'spline curve fit: FITPACK reached its 20 iterations '// &
+                      'for the smoothing parameter (ier = 3); the smoothing factor may be too small')
+    case (10)
+      call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: FITPACK rejected the input (ier = 10): '// &
+                      'check parameter order, weights, degree and the number of points')
+    case default
+      call set_status(status, STATUS_INTERNAL, 'spline curve fit: unexpected FITPACK ier')
+    end select
+  end subroutine ier_status
+
+  !> Sets the curve from a B-spline representation: knots(1..n), coefficients(dim, n-degree-1).
+  !> For a periodic curve the knots and the last degree coefficients must repeat
+  !> as FITPACK's periodic representation has them.
+  subroutine set(self, knots, coefficients, degree, status, periodic)
+    class(spline_curve_t), intent(inout) :: self
+    real(wp), intent(in) :: knots(:), coefficients(:, :)
+    integer, intent(in) :: degree
+    type(status_t), intent(out) :: status
+    logical, intent(in), optional :: periodic
+    integer :: n, k
+    n = size(knots)
+    k = degree
+    if (k < 1 .or. k > max_degree) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline curve: the degree must be 1..5')
+      return
+    end if
+    if (size(coefficients, 1) < 1 .or. size(coefficients, 1) > max_dimension) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline curve: the dimension must be 1..10')
+      return
+    end if
+    if (n < 2*k + 2 .or. size(coefficients, 2) /= n - k - 1) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline curve: need n >= 2k+2 knots and n-k-1 coefficients')
+      return
+    end if
+    if (.not. all(knots(2:n) >= knots(1:n - 1)) .or. .not. (knots(n - k) > knots(k + 1))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline curve: knots must be non-decreasing, domain non-empty')
+      return
+    end if
+    self%knots = knots
+    self%coefficients = coefficients
+    self%degree = k
+    self%dimension = size(coefficients, 1)
+    self%periodic = .false.
+    if (present(periodic)) self%periodic = periodic
+    self%fp = 0
+    self%ier = 0
+    call tabulate_length(self)
+  end subroutine set
+
+  !> Knot interval l, t(l) <= u < t(l+1), k+1 <= l <= n-k-1, by bisection.
+  pure integer function find_interval(t, k, u) result(l)
+    real(wp), intent(in) :: t(:), u
+    integer, intent(in) :: k
+    integer :: lo, hi, mid
+    lo = k + 1
+    hi = size(t) - k - 1
+    if (u >= t(hi)) then
+      l = hi
+      return
+    end if
+    do while (hi - lo > 1)
+      mid = (lo + hi)/2
+      if (u >= t(mid)) then
+        lo = mid
+      else
+        hi = mid
+      end if
+    end do
+    l = lo
+    if (u >= t(hi)) l = hi
+  end function find_interval
+
+  !> The parameter mapped into the domain: clamped for open curves (as FITPACK's
+  !> evaluators), reduced by the period for closed ones.
+  pure real(wp) function in_domain(self, u) result(v)
+    class(spline_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp) :: a, b
+    a = self%knots(self%degree + 1)
+    b = self%knots(size(self%knots) - self%degree)
+    if (self%periodic) then
+      v = a + modulo(u - a, b - a)
+      if (v >= b) v = a
+    else
+      v = min(max(u, a), b)
+    end if
+  end function in_domain
+
+  !> derivatives(:, j) = j-th derivative of r at u, j = 0..nd (zero above the
+  !> degree). derivatives must have at least dimension rows and nd+1 columns.
+  !> A point on an interior knot gets the right-hand derivatives. No allocation.
+  pure subroutine evaluate(self, u, derivatives, nd)
+    class(spline_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp), intent(out) :: derivatives(:, 0:)
+    integer, intent(in) :: nd
+    real(wp) :: v(max_dimension, max_degree + 1), basis(max_degree + 1, 0:max_degree), hh(max_degree + 1)
+    real(wp) :: x, f, ak, fac
+    integer :: k, k1, l, lk, d, i, j, jd, li, lj, idim
+    derivatives = 0
+    if (.not. allocated(self%knots)) return
+    k = self%degree
+    k1 = k + 1
+    idim = self%dimension
+    x = in_domain(self, u)
+    l = find_interval(self%knots, k, x)
+    lk = l - k1
+    associate (t => self%knots)
+      ! Cox-de Boor triangle: basis(1..d+1, d) are the degree-d B-splines at x (thesis 2.35)
+      basis(1, 0) = 1
+      do d = 1, k
+        hh(1:d) = basis(1:d, d - 1)
+        basis(1, d) = 0
+        do i = 1, d
+          li = l + i
+          lj = li - d
+          if (t(li) == t(lj)) then
+            basis(i + 1, d) = 0
+          else
+            f = hh(i)/(t(li) - t(lj))
+            basis(i, d) = basis(i, d) + f*(t(li) - x)
+            basis(i + 1, d) = f*(x - t(lj))
+          end if
+        end do
+      end do
+      v(1:idim, 1:k1) = self%coefficients(1:idim, lk + 1:lk + k1)
+      do jd = 0, min(nd, k)
+        if (jd > 0) then
+          ! coefficients of the jd-th derivative (de Boor's difference formula)
+          ak = k - jd + 1
+          do i = 1, k1 - jd
+            fac = t(lk + i + k1) - t(lk + i + jd)
+            if (fac > 0) then
+              v(1:idim, i) = ak*(v(1:idim, i + 1) - v(1:idim, i))/fac
+            end if
+          end do
+        end if
+        do j = 1, idim
+          derivatives(j, jd) = sum(v(j, 1:k1 - jd)*basis(1:k1 - jd, k - jd))
+        end do
+      end do
+    end associate
+  end subroutine evaluate
+
+  !> |r'(x)| (one coordinate sum), for the arc-length integrand.
+  pure real(wp) function speed(self, x) result(sp)
+    class(spline_curve_t), intent(in) :: self
+    real(wp), intent(in) :: x
+    real(wp) :: d(max_dimension, 0:1)
+    call self%evaluate(x, d, 1)
+    sp = norm2(d(1:self%dimension, 1))
+  end function speed
+
+  !> Arc length from a to b inside one knot span (10-point Gauss-Legendre).
+  pure real(wp) function span_length(self, a, b) result(s)
+    class(spline_curve_t), intent(in) :: self
+    real(wp), intent(in) :: a, b
+    real(wp) :: mid, half
+    integer :: i
+    mid = 0.5_wp*(a + b)
+    half = 0.5_wp*(b - a)
+    s = 0
+    do i = 1, 5
+      s = s + gl_w(i)*(speed(self, mid - half*gl_x(i)) + speed(self, mid + half*gl_x(i)))
+    end do
+    s = s*half
+  end function span_length
+
+  subroutine tabulate_length(self)
+    type(spline_curve_t), intent(inout) :: self
+    integer :: k, n, l
+    k = self%degree
+    n = size(self%knots)
+    if (allocated(self%cumulative)) deallocate (self%cumulative)
+    allocate (self%cumulative(k + 1:n - k))
+    self%cumulative(k + 1) = 0
+    do l = k + 1, n - k - 1
+      self%cumulative(l + 1) = self%cumulative(l)
+      if (self%knots(l + 1) > self%knots(l)) &
+        self%cumulative(l + 1) = self%cumulative(l) + span_length(self, self%knots(l), self%knots(l + 1))
+    end do
+  end subroutine tabulate_length
+
+  !> Arc length from the start of the domain to u (for a closed curve, u may
+  !> lie outside one period: whole periods count once each; open curves clamp u).
+  pure real(wp) function arc_length(self, u) result(s)
+    class(spline_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp) :: x, a, b
+    integer :: l, k
+    s = 0
+    if (.not. allocated(self%knots)) return
+    k = self%degree
+    a = self%knots(k + 1)
+    b = self%knots(size(self%knots) - k)
+    x = in_domain(self, u)
+    l = find_interval(self%knots, k, x)
+    s = self%cumulative(l) + span_length(self, self%knots(l), x)
+    if (self%periodic) s = s + floor((u - a)/(b - a))*self%total_length()
+  end function arc_length
+
+  !> Total arc length over the domain (one period for a closed curve).
+  pure real(wp) function total_length(self) result(s)
+    class(spline_curve_t), intent(in) :: self
+    s = 0
+    if (allocated(self%cumulative)) s = self%cumulative(ubound(self%cumulative, 1))
+  end function total_length
+
+  !> The parameter u with arc_length(u) = s: the knot span from the table, then
+  !> Newton on the span's arc length with bisection as safeguard. s is clamped
+  !> to [0, total] for open curves and reduced by the total for closed ones.
+  pure real(wp) function parameter_at_length(self, s) result(u)
+    class(spline_curve_t), intent(in) :: self
+    real(wp), intent(in) :: s
+    real(wp) :: total, target, lo, hi, g, dg, a, b, shift, start
+    integer :: k, l, lo_i, hi_i, mid, it
+    u = 0
+    if (.not. allocated(self%knots)) return
+    k = self%degree
+    a = self%knots(k + 1)
+    b = self%knots(size(self%knots) - k)
+    total = self%total_length()
+    shift = 0
+    if (self%periodic .and. total > 0) then
+      shift = floor(s/total)*(b - a)
+      target = s - floor(s/total)*total
+    else
+      target = min(max(s, 0.0_wp), total)
+    end if
+    if (total <= 0) then
+      u = a
+      return
+    end if
+    ! span: largest l with cumulative(l) <= target
+    lo_i = k + 1
+    hi_i = size(self%knots) - k
+    do while (hi_i - lo_i > 1)
+      mid = (lo_i + hi_i)/2
+      if (self%cumulative(mid) <= target) then
+        lo_i = mid
+      else
+        hi_i = mid
+      end if
+    end do
+    l = lo_i
+    lo = self%knots(l)
+    hi = self%knots(l + 1)
+    start = lo
+    target = target - self%cumulative(l)
+    u = lo + (hi - lo)*target/max(self%cumulative(l + 1) - self%cumulative(l), tiny(1.0_wp))
+    u = min(max(u, lo), hi)
+    do it = 1, 60
+      g = span_length(self, start, u) - target
+      if (abs(g) <= 4*epsilon(1.0_wp)*total) exit
+      if (g > 0) then
+        hi = u
+      else
+        lo = u
+      end if
+      dg = speed(self, u)
+      if (dg > 0) then
+        u = u - g/dg
+      else
+        u = 0.5_wp*(lo + hi)
+      end if
+      if (.not. (u > lo .and. u < hi)) u = 0.5_wp*(lo + hi)
+      if (hi - lo <= 4*epsilon(1.0_wp)*max(abs(lo), abs(hi))) exit
+    end do
+    u = u + shift
+  end function parameter_at_length
+
+  !> [t(k+1), t(n-k)]: the parameter range of the curve.
+  pure function domain(self) result(d)
+    class(spline_curve_t), intent(in) :: self
+    real(wp) :: d(2)
+    d = 0
+    if (.not. allocated(self%knots)) return
+    d = [self%knots(self%degree + 1), self%knots(size(self%knots) - self%degree)]
+  end function domain
+
+  pure logical function is_fitted(self)
+    class(spline_curve_t), intent(in) :: self
+    is_fitted = allocated(self%knots)
+  end function is_fitted
+
+  pure logical function is_periodic(self)
+    class(spline_curve_t), intent(in) :: self
+    is_periodic = self%periodic
+  end function is_periodic
+
+  pure integer function get_degree(self)
+    class(spline_curve_t), intent(in) :: self
+    get_degree = self%degree
+  end function get_degree
+
+  pure integer function get_dimension(self)
+    class(spline_curve_t), intent(in) :: self
+    get_dimension = self%dimension
+  end function get_dimension
+
+  !> The knots t(1..n) (empty before a fit).
+  pure function get_knots(self) result(t)
+    class(spline_curve_t), intent(in) :: self
+    real(wp), allocatable :: t(:)
+    if (allocated(self%knots)) then
+      t = self%knots
+    else
+      allocate (t(0))
+    end if
+  end function get_knots
+
+  !> The coefficients c(1..dim, 1..n-k-1) (empty before a fit).
+  pure function get_coefficients(self) result(c)
+    class(spline_curve_t), intent(in) :: self
+    real(wp), allocatable :: c(:, :)
+    if (allocated(self%coefficients)) then
+      c = self%coefficients
+    else
+      allocate (c(0, 0))
+    end if
+  end function get_coefficients
+
+  !> Weighted residual sum of squares fp of the fit.
+  pure real(wp) function residual(self)
+    class(spline_curve_t), intent(in) :: self
+    residual = self%fp
+  end function residual
+
+  !> FITPACK's ier of the last fit (0, -1 interpolating, -2 polynomial, 1..3 see status).
+  pure integer function fitpack_ier(self)
+    class(spline_curve_t), intent(in) :: self
+    fitpack_ier = self%ier
+  end function fitpack_ier
+end module numerics_spline_curve
