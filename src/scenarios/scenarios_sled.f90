@@ -1,0 +1,50 @@
+!> Scenario `sled`: a rigid bar sliding on a surface, rear end on a surface
+!> joint (q = u, v, phi), front end held on the surface by a second surface
+!> joint and three plane-point closure conditions (beta = pitch, u2, v2), as
+!> the rider's legs in thesis (4.27); gravity and Coulomb/viscous friction at
+!> both contacts.
+module scenarios_sled
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  use geometry_surface, only: surface_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_models, only: build_sled
+  use io_input, only: input_text_t, check_known_groups, invalid, format_real
+  use io_run_config, only: run_config_t
+  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_surface_config, only: read_surface_config
+  use io_mechanism_config, only: sled_config_t, read_sled_config
+  use scenarios_pendulum, only: run_mechanism
+  implicit none (type, external)
+  private
+  public :: run_sled, sled_groups
+
+  character(len=*), parameter :: sled_groups(4) = [character(len=8) :: 'run', 'solver', 'surface', 'sled']
+
+contains
+
+  subroutine run_sled(input, run, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(status_t), intent(inout) :: status
+    type(solver_config_t) :: solver
+    type(sled_config_t) :: config
+    class(surface_t), allocatable :: surface
+    type(mechanism_ode_t), target :: sys
+
+    call check_known_groups(input, sled_groups, status)
+    if (status%ok()) call read_solver_config(input, solver, status)
+    if (status%ok()) call read_surface_config(input, surface, status)
+    if (status%ok()) call read_sled_config(input, config, status)
+    if (.not. status%ok()) return
+    if (.not. surface%in_domain(config%q0(1), config%q0(2))) then
+      call invalid(input, 'sled', 'u0, v0', format_real(config%q0(1))//', '//format_real(config%q0(2)), &
+                   'the start must lie in the parameter domain of the '//surface%describe(), status)
+      return
+    end if
+    call build_sled(config%params, surface, config%q0, sys%mechanism, status)
+    if (.not. status%ok()) return
+    call run_mechanism('sled', input, run, solver, sys, [config%q0, config%qd0], &
+                       [character(len=18) :: 'surface parameter', 'surface parameter', 'rad'], status)
+  end subroutine run_sled
+end module scenarios_sled
