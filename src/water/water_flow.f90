@@ -373,7 +373,11 @@ contains
     s%u(i) = y(1); s%v(i) = y(2); s%du(i) = y(3); s%dv(i) = y(4)
     s%height(i) = y(5)
     s%friction_work(i) = y(6); s%correction_work(i) = y(7)
-    s%arc_length(i) = model%channel%arc_length(y(1))
+    if (i == 1) then
+      s%arc_length(i) = model%channel%arc_length(y(1))
+    else   ! incremental: samples lie centimetres apart
+      s%arc_length(i) = s%arc_length(i - 1) + arc_increment(model%channel, s%u(i - 1), y(1))
+    end if
     s%position(:, i) = q%position
     s%velocity(:, i) = q%velocity
     s%speed(i) = q%speed
@@ -440,6 +444,27 @@ contains
       mix = (1 - lam)*x(k) + lam*x(k + 1)
     end function mix
   end subroutine water_table
+
+  !> Centerline arc length between u_a and u_b by 5-point Gauss-Legendre
+  !> (exact to rounding over the few centimetres between samples).
+  function arc_increment(channel, u_a, u_b) result(ds)
+    class(channel_t), intent(in) :: channel
+    real(wp), intent(in) :: u_a, u_b
+    real(wp) :: ds
+    real(wp), parameter :: x(5) = [0.0_wp, -0.5384693101056831_wp, 0.5384693101056831_wp, &
+                                   -0.9061798459386640_wp, 0.9061798459386640_wp]
+    real(wp), parameter :: wt(5) = [0.5688888888888889_wp, 0.4786286704993665_wp, 0.4786286704993665_wp, &
+                                    0.2369268850561891_wp, 0.2369268850561891_wp]
+    real(wp) :: c(3, 0:3), mid, half
+    type(status_t) :: st
+    integer :: j
+    mid = (u_a + u_b)/2; half = (u_b - u_a)/2
+    ds = 0
+    do j = 1, 5
+      call channel%centerline(mid + half*x(j), c, st)
+      ds = ds + half*wt(j)*norm2(c(:, 1))
+    end do
+  end function arc_increment
 
   pure function real_text(x) result(text)
     real(wp), intent(in) :: x
