@@ -17,6 +17,7 @@ module io_geometry_config
   use geometry_blended_surface, only: blended_surface_t, blend_patch_t, new_blended_surface
   use geometry_elementary, only: plane_t, ellipsoid_t, paraboloid_t, elliptic_cylinder_t
   use geometry_placed_surface, only: placed_surface_t
+  use geometry_bspline_surface, only: bspline_surface_t, bspline_from_csv
   use io_input, only: input_text_t, namelist_read_error, check_positive, check_nonnegative, &
     check_finite, check_finite_vector, check_choice, check_range, invalid, format_real, &
     format_vector, lower
@@ -24,8 +25,8 @@ module io_geometry_config
   private
   public :: read_geometry_config, geometry_groups, geometry_kinds, profile_self_intersection
 
-  character(len=*), parameter :: geometry_groups(5) = [character(len=14) :: 'geometry', 'centerline', &
-    'cross_section', 'slide_elements', 'blended']
+  character(len=*), parameter :: geometry_groups(6) = [character(len=14) :: 'geometry', 'centerline', &
+    'cross_section', 'slide_elements', 'blended', 'bspline']
   character(len=*), parameter :: geometry_kinds(4) = [character(len=8) :: 'tube', 'slide', 'blended', 'bspline']
 
   integer, parameter :: max_points = 2000, max_sections = 8, max_elements = 40, max_patches = 8
@@ -76,8 +77,7 @@ contains
     case ('blended')
       call read_blended(input, surface, status)
     case ('bspline')
-      call set_status(status, STATUS_INVALID_INPUT, input%name // ': &geometry: kind = ''bspline'' ' // &
-                      'is not available yet: it needs the spline surface layer (numerics_spline_surface)')
+      call read_bspline(input, surface, status)
     end select
   end subroutine read_geometry_config
 
@@ -442,6 +442,48 @@ contains
     end if
     allocate (surface, source=blend)
   end subroutine read_blended
+
+  !> &bspline: a free-form B-spline surface fitted to points from a CSV file.
+  subroutine read_bspline(input, surface, status)
+    type(input_text_t), intent(in) :: input
+    class(surface_t), allocatable, intent(out) :: surface
+    type(status_t), intent(inout) :: status
+    character(len=256) :: file, msg
+    character(len=12) :: layout
+    real(wp) :: smoothing
+    integer :: degree, ios
+    logical :: periodic_u, periodic_v, exists
+    type(bspline_surface_t) :: b
+    character(len=*), parameter :: g = 'bspline'
+    namelist /bspline/ file, layout, smoothing, degree, periodic_u, periodic_v
+    file = ''; layout = 'scattered'; smoothing = 0; degree = 3
+    periodic_u = .false.; periodic_v = .false.
+    read (input%lines, nml=bspline, iostat=ios, iomsg=msg)
+    if (ios > 0) then
+      call namelist_read_error(input, g, msg, [character(len=10) :: 'file', 'layout', 'smoothing', 'degree', &
+                               'periodic_u', 'periodic_v'], status)
+      return
+    end if
+    layout = lower(adjustl(layout))
+    call check_choice(input, g, 'layout', layout, [character(len=10) :: 'scattered', 'grid', 'parametric'], status)
+    call check_nonnegative(input, g, 'smoothing', smoothing, 'm^2 (sum of squared residuals)', status)
+    if (status%ok() .and. (degree < 1 .or. degree > 5)) &
+      call invalid(input, g, 'degree', format_real(real(degree, wp)), 'must lie in [1, 5]', status)
+    if (status%ok() .and. layout /= 'parametric' .and. (periodic_u .or. periodic_v)) &
+      call invalid(input, g, 'periodic_u, periodic_v', 'true', 'only a parametric surface can be periodic', status)
+    if (.not. status%ok()) return
+    inquire (file=trim(file), exist=exists)
+    if (len_trim(file) == 0 .or. .not. exists) then
+      call invalid(input, g, 'file', '''' // trim(file) // '''', 'must name an existing CSV file', status)
+      return
+    end if
+    call bspline_from_csv(trim(file), trim(layout), smoothing, degree, [periodic_u, periodic_v], b, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, input%name // ': &' // g)
+      return
+    end if
+    allocate (surface, source=b)
+  end subroutine read_bspline
 
   !> Index of the first segment of the polyline (y, z) that crosses a later,
   !> non-adjacent segment (0: no self-intersection).

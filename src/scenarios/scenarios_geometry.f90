@@ -20,7 +20,7 @@ module scenarios_geometry
   private
   public :: run_geometry, geometry_scenario_groups
 
-  character(len=*), parameter :: geometry_scenario_groups(7) = [character(len=14) :: 'run', &
+  character(len=*), parameter :: geometry_scenario_groups(8) = [character(len=14) :: 'run', &
     geometry_groups, 'grid']
 
 contains
