@@ -14,7 +14,8 @@ digits), so they read back exactly.
 
 Entry points (scipy 1.10.1, genuine netlib Fortran compiled double precision):
   surfit  -> scipy.interpolate.dfitpack.surfit_smth (iopt=0) and surfit_lsq
-             (iopt=-1), bbox and nxest/nyest always given explicitly;
+             (iopt=-1), bisplrep(task=1) for iopt=1; bbox and nxest/nyest
+             always given explicitly;
   regrid  -> dfitpack.regrid_smth (iopt=0, nxest=mx+kx+1, nyest=my+ky+1);
   bispev  -> dfitpack.bispev;  parder -> dfitpack.parder.
 """
@@ -23,7 +24,7 @@ import sys
 
 import numpy as np
 import scipy
-from scipy.interpolate import dfitpack
+from scipy.interpolate import bisplrep, dfitpack
 
 OUT = os.path.join("tests", "reference", "fitpack")
 
@@ -172,6 +173,27 @@ def surfit_case(name, description, x, y, z, w, bbox, kx, ky, s, nxest, nyest, ep
     return ier
 
 
+def surfit_continue_case(name, description, x, y, z, w, bbox, kx, ky, s_first, s, nxest, nyest):
+    """iopt = 1: bisplrep(task=0, s_first) then bisplrep(task=1, s), which hands
+    surfit the knots and work array (fp0) of the first call."""
+    xb, xe, yb, ye = bbox
+    bisplrep(x, y, z, w, xb, xe, yb, ye, kx, ky, task=0, s=s_first, nxest=nxest, nyest=nyest, full_output=1)
+    tck, fp, ier, msg = bisplrep(x, y, z, w, xb, xe, yb, ye, kx, ky, task=1, s=s, nxest=nxest, nyest=nyest,
+                                 full_output=1)
+    t = Table("surfit_" + name, description +
+              "\nsurfit iopt=0 with s_first, then iopt=1 with s, through bisplrep(task=0), bisplrep(task=1)")
+    t.int("iopt", 1)
+    t.int("kx", kx); t.int("ky", ky)
+    t.real("s_first", s_first)
+    t.real("s", s); t.real("eps", 1e-16); t.real("bbox", [xb, xe, yb, ye])
+    t.int("nxest", nxest); t.int("nyest", nyest)
+    t.real("x", x); t.real("y", y); t.real("z", z); t.real("w", w)
+    t.int("ier", ier); t.real("fp", fp)
+    t.real("tx", tck[0]); t.real("ty", tck[1])
+    t.real("c", tck[2][:(len(tck[0]) - kx - 1) * (len(tck[1]) - ky - 1)])
+    t.write()
+
+
 def surfit_lsq_case(name, description, x, y, z, w, bbox, kx, ky, txi, tyi, eps=1e-16):
     xb, xe, yb, ye = bbox
     tx = np.concatenate([[xb] * (kx + 1), txi, [xe] * (kx + 1)])
@@ -237,6 +259,8 @@ def main():
     wv = 0.5 + rng.random(len(x)) * 2.0
     surfit_case("weights_k33", "same data with weights in [0.5, 2.5], bicubic, s = 0.05",
                 x, y, z, wv, bbox, 3, 3, 0.05, 12, 12)
+    surfit_continue_case("continue", "same data, bicubic: s = 0.05 from scratch, then continued (iopt = 1) "
+                         "to s = 0.005", x, y, z, w, bbox, 3, 3, 0.05, 0.005, 14, 14)
     surfit_case("poly", "same data, s large: least-squares polynomial (ier = -2)",
                 x, y, z, w, bbox, 3, 3, 10.0, 12, 12)
     surfit_case("small_s", "same data, s = 1e-5 (nearly interpolating: knots run out, ier = 1 or 4/5)",

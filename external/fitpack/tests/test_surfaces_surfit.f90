@@ -6,7 +6,7 @@
 !> First argument: the reference folder.
 program test_surfaces_surfit
   use, intrinsic :: iso_fortran_env, only: real64
-  use fitpack_reference_io, only: reference_table_t, load_table, get_reals, get_int, get_real
+  use fitpack_reference_io, only: reference_table_t, load_table, get_reals, get_int, get_real, has_key
   use fitpack_surface_interfaces, only: surfit, bispev
   implicit none (type, external)
   ! unique results (given knots, or s = 0): the same system by rotations in
@@ -59,7 +59,7 @@ contains
     logical :: ok, found
     integer :: ic, iopt, kx, ky, nxest, nyest, nmax, m, ier_ref, nx, ny, ier, lwrk1, lwrk2, kwrk, nc, &
       u, v, km1, km2, ne, bx, by, b1, b2
-    real(real64) :: s, eps, fp, fp_ref, rtol
+    real(real64) :: s, eps, fp, fp_ref, rtol, s_first
     real(real64), allocatable :: bbox(:), x(:), y(:), z(:), w(:), tx(:), ty(:), c(:), wrk1(:), wrk2(:), &
       tx_ref(:), ty_ref(:), c_ref(:)
     integer, allocatable :: iwrk(:)
@@ -113,6 +113,13 @@ contains
         ny = size(ty_ref)
         tx(1:nx) = tx_ref
         ty(1:ny) = ty_ref
+      end if
+      if (has_key(tab, name, 's_first')) then
+        ! continuation: a first fit from scratch, then iopt = 1 with its knots and wrk1
+        call get_real(tab, name, 's_first', s_first, found)
+        call surfit(0, m, x, y, z, w, bbox(1), bbox(2), bbox(3), bbox(4), kx, ky, s_first, nxest, nyest, nmax, &
+          eps, nx, tx, ny, ty, c, fp, wrk1, lwrk1, wrk2, lwrk2, iwrk, kwrk, ier)
+        call check(ier <= 0, name//': first fit')
       end if
       call surfit(iopt, m, x, y, z, w, bbox(1), bbox(2), bbox(3), bbox(4), kx, ky, s, nxest, nyest, nmax, &
         eps, nx, tx, ny, ty, c, fp, wrk1, lwrk1, wrk2, lwrk2, iwrk, kwrk, ier)
