@@ -290,7 +290,8 @@ contains
           call set_status(status, STATUS_DOMAIN, 'the flow approaches critical (1 - 1/Fr^2 = ' // &
                           real_text(model%min_criticality)//') at t = '//real_text(t)//' s, u = '// &
                           real_text(y(1))//': the Saint-Venant correction is singular at Fr = 1; ' // &
-                          'switch it off or raise the flow rate')
+                          'the water is too slow for shallow supercritical flow here; ' // &
+                          'switch the correction off (correction = ''off'') to go on')
         else
           cycle   ! only stations
         end if

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# The water scenario stops on bad input before any work: exit status 1, a
+# message naming the file, &water, the variable, its value and what is
+# allowed, and no result file.
+set -u
+slidesim=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0; checks=0
+
+expect() {
+  local name=$1 want=$2; shift 2
+  checks=$((checks + 1))
+  (cd "$work" && "$slidesim" -q "$name.nml" >"$name.out" 2>"$name.err")
+  local got=$?
+  local ok=1
+  [ "$got" = "$want" ] || { echo "FAIL $name: exit status $got, expected $want"; ok=0; }
+  for needle in "$@"; do
+    grep -qF -- "$needle" "$work/$name.err" || { echo "FAIL $name: message lacks '$needle'"; ok=0; }
+  done
+  if ls "$work"/*.h5 "$work"/*.h5.tmp >/dev/null 2>&1; then
+    echo "FAIL $name: a result file was left behind"; ok=0; rm -f "$work"/*.h5 "$work"/*.h5.tmp
+  fi
+  if [ $ok = 0 ]; then failures=$((failures + 1)); echo "  message: $(cat "$work/$name.err")"; fi
+}
+
+head="&run scenario = 'water', output = 'w.h5' /
+&channel kind = 'straight', incline_deg = 10, length = 20 /"
+mk() { printf "%s\n%s\n" "$head" "$2" > "$work/$1.nml"; }
+
+mk negative_f1 "&water f1 = -0.01 /"
+expect negative_f1 1 negative_f1.nml '&water' 'f1 = -0.01' '>= 0'
+mk negative_f3 "&water f3 = -1 /"
+expect negative_f3 1 negative_f3.nml '&water' 'f3 = -1' '>= 0'
+mk zero_q "&water flow_rate = 0 /"
+expect zero_q 1 zero_q.nml '&water' 'flow_rate = 0' '> 0'
+mk negative_q "&water flow_rate = -0.004, start = 'height', height0 = 0.01 /"
+expect negative_q 1 '&water' 'flow_rate = -0.004'
+mk zero_speed "&water start = 'speed', speed0 = 0 /"
+expect zero_speed 1 '&water' 'speed0 = 0' '> 0'
+mk start_off_slide "&water u0 = 25 /"
+expect start_off_slide 1 '&water' 'u0 = 25' 'on the slide'
+mk height_over_tube "&water start = 'height', height0 = 1.2 /"
+expect height_over_tube 1 '&water' 'start height' 'inside the section'
+mk edges_swapped "&water v_left0 = 1.2, v_right0 = 1.9 /"
+expect edges_swapped 1 '&water' 'v_left0, v_right0' 'larger v'
+mk bad_correction "&water correction = 'partial' /"
+expect bad_correction 1 '&water' "'partial'" 'full no_radius off'
+mk unknown_variable "&water flowrate = 0.004 /"
+expect unknown_variable 1 '&water' 'flowrate' 'allowed:'
+mk station_off_slide "&water stations = 5.0, 30.0 /"
+expect station_off_slide 1 '&water' 'stations = 30' 'on the slide'
+mk stations_decreasing "&water stations = 5.0, 3.0 /"
+expect stations_decreasing 1 '&water' 'stations(2)' 'increase'
+printf "&run scenario = 'water', output = 'w.h5' /\n&channel kind = 'helix', radius = 0.5, helix_radius = 0.4 /\n&water /\n" > "$work/folding_helix.nml"
+expect folding_helix 1 '&channel' 'helix_radius = 0.4' 'folds'
+printf "&run scenario = 'water', output = 'w.h5' /\n&surface kind = 'ellipsoid' /\n&water /\n" > "$work/not_a_tube.nml"
+expect not_a_tube 1 '&surface' 'needs a tube'
+
+echo "$((checks - failures)) passed, $failures failed"
+[ $failures = 0 ]

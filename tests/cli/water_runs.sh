@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# The water scenario end to end: a complete run writes the /water datasets a
+# user expects; a stalled flow and a flow approaching critical (Fr -> 1) stop
+# with a clear message, exit status 2 and a result file marked incomplete that
+# keeps what was computed.
+set -u
+slidesim=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0; checks=0
+fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+
+cat > "$work/ok.nml" <<'NML'
+&run scenario = 'water', output = 'ok.h5' /
+&solver duration = 30, output_step = 0.01 /
+&channel kind = 's_bend', length = 30 /
+&water flow_rate = 0.004, stations = 5.0, 10.0, 29.0 /
+NML
+cat > "$work/stall.nml" <<'NML'
+&run scenario = 'water', output = 'stall.h5' /
+&solver duration = 60, output_step = 0.05 /
+&channel kind = 'straight', incline_deg = 0.0, length = 200 /
+&water flow_rate = 0.004, start = 'speed', speed0 = 1.0, correction = 'off', f1 = 1.0 /
+NML
+cat > "$work/critical.nml" <<'NML'
+&run scenario = 'water', output = 'critical.h5' /
+&solver duration = 60, output_step = 0.05 /
+&channel kind = 'straight', incline_deg = 0.0, length = 200 /
+&water flow_rate = 0.004, start = 'speed', speed0 = 1.0, correction = 'full' /
+NML
+
+checks=$((checks + 1))
+(cd "$work" && "$slidesim" -q ok.nml >ok.out 2>ok.err); got=$?
+[ $got = 0 ] || fail "ok: exit status $got ($(cat "$work/ok.err"))"
+h5dump -a /status "$work/ok.h5" | grep -q '"complete"' || fail "ok: file not marked complete"
+for d in time arc_length u v position speed height width area radius beta normal_force friction_force \
+         left_edge right_edge energy friction_work table/arc_length table/v table/speed stations/v_middle; do
+  h5ls "$work/ok.h5/water/$d" >/dev/null 2>&1 || fail "ok: /water/$d missing"
+done
+h5dump -H -d /water/position "$work/ok.h5" | grep -q 'DATASPACE  SIMPLE { ( [0-9]*, 3 )' || fail "ok: position is not 3 x n"
+grep -q 'end of slide' "$work/ok.out" || fail "ok: summary does not say the water reached the end"
+grep -qE '^ +3 +29\.000' "$work/ok.out" || fail "ok: station table missing"
+
+for name in stall critical; do
+  checks=$((checks + 1))
+  (cd "$work" && "$slidesim" -q "$name.nml" >"$name.out" 2>"$name.err"); got=$?
+  [ $got = 2 ] || fail "$name: exit status $got, expected 2"
+  [ -f "$work/$name.h5" ] || { fail "$name: no result file kept"; continue; }
+  h5dump -a /status "$work/$name.h5" | grep -q '"incomplete"' || fail "$name: file not marked incomplete"
+  n=$(h5dump -H -d /water/time "$work/$name.h5" | grep -o 'DATASPACE  SIMPLE { ( [0-9]*' | grep -o '[0-9]*$')
+  [ "${n:-0}" -ge 10 ] || fail "$name: computed samples not kept"
+  grep -q 'INCOMPLETE' "$work/$name.out" || fail "$name: summary does not say INCOMPLETE"
+done
+grep -q 'stalled' "$work/stall.err" || fail "stall: message does not say the water stalled"
+h5dump -a /status_message "$work/stall.h5" | grep -q 'stalled' || fail "stall: status_message lacks the reason"
+grep -q 'approaches critical' "$work/critical.err" || fail "critical: message does not name critical flow"
+grep -q "correction = 'off'" "$work/critical.err" || fail "critical: message does not say what to do"
+
+echo "$((checks - failures)) passed, $failures failed"
+[ $failures = 0 ]
