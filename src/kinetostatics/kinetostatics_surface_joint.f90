@@ -18,11 +18,15 @@
 !> Force (3.54): f_1 += f_D, tau_1 += tau_D + p x f_D,
 !>     Q_u = (R_1 W_u).tau_D + (R_1 r_u).f_D,  Q_v likewise.
 !>
-!> Singular points (r_u = 0, rule (3.40)): geometry_darboux gives the frame and
-!> its first rates but not the second derivatives. There W_u,u ... W_v,v are
-!> taken from one-sided three-point differences of W_u, W_v (step h = 1e-4 in
-!> the parameter, towards the inside of the domain): error O(h^2) ~ 1e-8
-!> relative, only at the isolated singular points themselves.
+!> Singular points (r_u = 0, rule (3.40)): the frame is the rule's, which is
+!> the limit of the regular frame. Its rates from (A.3)-(A.7) are not used:
+!> they differentiate the rule's field r_v x (r_v x r_vv), which equals the
+!> normal only on the singular line, so they differ from the limit of the
+!> regular rates (at the apex of the apex paraboloid by O(1); test_elements
+!> shows it). W_u, W_v and their derivatives are instead extrapolated from the
+!> regular side along v (off the singular line): X(v0) = 2 X(v0 + h) - X(v0 + 2h),
+!> h = +-1e-4 towards the inside of the domain, error O(h^2) ~ 1e-8 relative,
+!> used only at the singular points themselves (|r_u| <= 1.5e-8 |r_v|).
 module kinetostatics_surface_joint
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, prefix_status, STATUS_DOMAIN
@@ -108,11 +112,11 @@ contains
       call prefix_status(status, 'surface joint '''//self%name//'''')
       return
     end if
-    call angular_rates(self%frame, wu, wv)
-    if (self%frame%second_order) then
+    if (.not. self%frame%singular) then
+      call angular_rates(self%frame, wu, wv)
       call rate_derivatives(self%frame, wuu, wuv, wvu, wvv)
     else
-      call singular_rate_derivatives(self, u, v, wuu, wuv, wvu, wvv, status)
+      call singular_rates(self, u, v, wu, wv, wuu, wuv, wvu, wvv, status)
       if (.not. status%ok()) return
     end if
     associate (i => frames(self%frame_in), o => frames(self%frame_out), pt => self%point)
@@ -154,50 +158,46 @@ contains
     end associate
   end subroutine rate_derivatives
 
-  !> At a singular point: one-sided three-point differences of W_u, W_v (see
-  !> the module comment), stepping to the side that stays in the domain.
-  pure subroutine singular_rate_derivatives(self, u, v, wuu, wuv, wvu, wvv, status)
+  !> At a singular point: W_u, W_v and their derivatives extrapolated from the
+  !> regular side, X(v0) = 2 X(v0 + s h) - X(v0 + 2 s h) (see the module comment).
+  pure subroutine singular_rates(self, u, v, wu, wv, wuu, wuv, wvu, wvv, status)
     class(surface_joint_t), intent(in) :: self
     real(wp), intent(in) :: u, v
-    real(wp), intent(out) :: wuu(3), wuv(3), wvu(3), wvv(3)
+    real(wp), intent(out) :: wu(3), wv(3), wuu(3), wuv(3), wvu(3), wvv(3)
     type(status_t), intent(inout) :: status
     real(wp), parameter :: h0 = 1e-4_wp
-    real(wp) :: w0u(3), w0v(3), w1u(3), w1v(3), w2u(3), w2v(3), h
-    call rates_at(self, u, v, w0u, w0v, status)
-    h = h0
-    if (.not. self%surface%in_domain(u + 2*h, v)) h = -h0
-    call rates_at(self, u + h, v, w1u, w1v, status)
-    call rates_at(self, u + 2*h, v, w2u, w2v, status)
-    wuu = (-3*w0u + 4*w1u - w2u)/(2*h)
-    wvu = (-3*w0v + 4*w1v - w2v)/(2*h)
+    real(wp) :: x1(3, 6), x2(3, 6), h
     h = h0
     if (.not. self%surface%in_domain(u, v + 2*h)) h = -h0
-    call rates_at(self, u, v + h, w1u, w1v, status)
-    call rates_at(self, u, v + 2*h, w2u, w2v, status)
-    wuv = (-3*w0u + 4*w1u - w2u)/(2*h)
-    wvv = (-3*w0v + 4*w1v - w2v)/(2*h)
-    if (.not. status%ok()) call prefix_status(status, 'surface joint '''//self%name//''' at a singular point')
-  end subroutine singular_rate_derivatives
+    call regular_rates_at(self, u, v + h, x1, status)
+    call regular_rates_at(self, u, v + 2*h, x2, status)
+    x1 = 2*x1 - x2
+    wu = x1(:, 1); wv = x1(:, 2); wuu = x1(:, 3); wuv = x1(:, 4); wvu = x1(:, 5); wvv = x1(:, 6)
+    if (.not. status%ok()) call prefix_status(status, 'surface joint '''//self%name//''' near a singular point')
+  end subroutine singular_rates
 
-  pure subroutine rates_at(self, u, v, wu, wv, status)
+  !> W_u, W_v and their four derivatives at a regular point (columns).
+  pure subroutine regular_rates_at(self, u, v, x, status)
     class(surface_joint_t), intent(in) :: self
     real(wp), intent(in) :: u, v
-    real(wp), intent(out) :: wu(3), wv(3)
+    real(wp), intent(out) :: x(3, 6)
     type(status_t), intent(inout) :: status
     type(surface_point_t) :: pt
     type(darboux_frame_t) :: fr
     type(status_t) :: local
-    wu = 0
-    wv = 0
+    x = 0
     if (.not. status%ok()) return
     call self%surface%evaluate(u, v, 3, pt, local)
     if (local%ok()) call darboux_frame(pt, self%sigma, self%alpha_u, self%alpha_v, fr, local)
+    if (local%ok() .and. .not. fr%second_order) call set_status(local, STATUS_DOMAIN, &
+      'no regular point within 2e-4 of the singular point')
     if (.not. local%ok()) then
       status = local
       return
     end if
-    call angular_rates(fr, wu, wv)
-  end subroutine rates_at
+    call angular_rates(fr, x(:, 1), x(:, 2))
+    call rate_derivatives(fr, x(:, 3), x(:, 4), x(:, 5), x(:, 6))
+  end subroutine regular_rates_at
 
   pure subroutine sj_velocity(self, frames, scalars)
     class(surface_joint_t), intent(inout) :: self

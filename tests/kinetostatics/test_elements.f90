@@ -8,7 +8,7 @@ program test_elements
   use base_vector, only: cross, rot_x, rot_y, rot_z
   use testing, only: check, check_close, finish_tests
   use geometry_surface, only: surface_t
-  use geometry_elementary, only: ellipsoid_t, paraboloid_t, elliptic_cylinder_t
+  use geometry_elementary, only: ellipsoid_t, paraboloid_t, elliptic_cylinder_t, apex_paraboloid_t
   use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
   use kinetostatics_joints, only: new_rigid_offset, new_revolute, new_prismatic, new_spherical
   use kinetostatics_surface_joint, only: new_surface_joint
@@ -60,6 +60,7 @@ program test_elements
     call check(status%ok(), 'surfaces built')
   end do
   call mass_checks()
+  call singular_point()
   call finish_tests('test_elements')
 
 contains
@@ -285,4 +286,35 @@ contains
     m = new_mass_element('rod', 1, 1.0_wp, inertia, [0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], st)
     call check(.not. st%ok() .and. index(st%text(), 'rod') > 0, 'inertia violating I1 <= I2 + I3 is refused')
   end subroutine mass_checks
+  !> At the apex of the apex paraboloid (r_u = 0, rule (3.40)) the joint's
+  !> velocity and acceleration maps join those of the regular neighbourhood:
+  !> compared with v = 1e-7 (regular), they differ by O(1e-7) plus the O(h^2)
+  !> = 1e-8 of the one-sided differences used there, so 1e-5 relative is safe
+  !> while a wrong rate or sign would be O(1).
+  subroutine singular_point()
+    class(surface_t), allocatable :: apex
+    class(element_t), allocatable :: joint
+    type(frame_state_t) :: frames(2)
+    type(scalar_state_t) :: scalars(2)
+    type(status_t) :: st
+    real(wp) :: out(3, 4, 2), v(2)
+    integer :: k
+    apex = apex_paraboloid_t(0.8_wp, 1.2_wp, st)
+    allocate (joint, source=new_surface_joint('apex', 1, 2, 1, 2, apex, 1.0_wp, 1.0_wp, 1.0_wp))
+    v = [0.0_wp, 1e-7_wp]
+    do k = 1, 2
+      scalars(1) = scalar_state_t(0.7_wp, 0.3_wp, 0.1_wp, 0.0_wp)
+      scalars(2) = scalar_state_t(v(k), 0.5_wp, -0.2_wp, 0.0_wp)
+      call joint%position(frames, scalars, st)
+      call check(st%ok(), 'surface joint at and near the apex: '//st%text())
+      call joint%velocity(frames, scalars)
+      call joint%acceleration(frames, scalars)
+      out(:, 1, k) = frames(2)%omega
+      out(:, 2, k) = frames(2)%v
+      out(:, 3, k) = frames(2)%alpha
+      out(:, 4, k) = frames(2)%a
+    end do
+    call check(maxval(abs(out(:, :, 1) - out(:, :, 2))) <= 1e-5_wp*maxval(abs(out(:, :, 2))), &
+               'surface joint at a singular point: velocity and acceleration maps continuous')
+  end subroutine singular_point
 end program test_elements
