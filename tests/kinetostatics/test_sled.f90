@@ -24,6 +24,13 @@ program test_sled
 
 contains
 
+  pure function unit(i) result(e)
+    integer, intent(in) :: i
+    real(wp) :: e(3)
+    e = 0
+    e(i) = 1
+  end function unit
+
   !> On a plane inclined by theta with Coulomb mu the bar slides straight down
   !> with u'' = g (sin theta - mu cos theta) whatever its heading phi.
   subroutine incline(phi)
@@ -87,7 +94,8 @@ contains
     type(ode_integrator_t) :: integ
     type(ode_options_t) :: opt
     type(status_t) :: st
-    real(wp) :: y(6), t, e0, e, e_prev, drift, worst, scale, tk, vk, res, chol(3, 3), q0(3), qd0(3)
+    real(wp) :: y(6), t, e0, e, e_prev, drift, worst, scale, tk, vk, res, chol(3, 3), q0(3), qd0(3), &
+                mpol(3, 3), tij
     integer :: k, i, j
     logical :: decreasing, spd
     character(len=8) :: label
@@ -116,6 +124,25 @@ contains
         end do
       end do
       call check(spd, 'bowl: M positive definite')
+      ! M entry by entry from the kinetic energy of the bodies (polarization):
+      ! M_ij = T(e_i + e_j) - T(e_i) - T(e_j), M_ii = 2 T(e_i); independent of
+      ! the force passes, rounding only
+      do i = 1, 3
+        do j = 1, 3
+          call m%set_velocities(unit(i) + unit(j))
+          call m%energy(tk, vk)
+          tij = tk
+          call m%set_velocities(unit(i))
+          call m%energy(tk, vk)
+          tij = tij - tk
+          call m%set_velocities(unit(j))
+          call m%energy(tk, vk)
+          tij = tij - tk
+          mpol(i, j) = tij
+        end do
+      end do
+      call check(maxval(abs(mpol - m%mass)) <= 1e-12_wp*maxval(abs(m%mass)), &
+                 'bowl: M from the f+1 passes = M from the kinetic energy (through the closed loop)')
       call m%set_velocities(qd0)
       call m%energy(tk, vk)
       call check_close(0.5_wp*dot_product(qd0, matmul(m%mass, qd0)), tk, 1e-12_wp, 0.0_wp, &
