@@ -36,9 +36,9 @@ subroutine fpsurf(iopt, m, x, y, z, w, xb, xe, yb, ye, kxx, kyy, s, nxest, nyest
   x1 = xe
   y0 = yb
   y1 = ye
+  allocate (u(m), v(m), tu(nmax), tv(nmax))
   u = x
   v = y
-  allocate (tu(nmax), tv(nmax))
   tu = tx
   tv = ty
   ichang = -1
@@ -59,6 +59,10 @@ subroutine fpsurf(iopt, m, x, y, z, w, xb, xe, yb, ye, kxx, kyy, s, nxest, nyest
   nminy = 2*ky1
   acc = 0
   fpms = 0
+  nyy = 1
+  nxx = 1
+  nk1x = 0
+  nk1y = 0
   ncof = 0
   rank = 0
   iband = 0
@@ -432,11 +436,14 @@ contains
     real(real64), allocatable :: tmp(:)
     real(real64) :: st
     integer :: it
+    allocate (tmp(m))
     tmp = u
     u = v
     v = tmp
     st = x0; x0 = y0; y0 = st
     st = x1; x1 = y1; y1 = st
+    deallocate (tmp)
+    allocate (tmp(nmax))
     tmp = tu
     tu = tv
     tv = tmp

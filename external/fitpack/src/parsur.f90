@@ -114,6 +114,7 @@ subroutine fppasu(iopt, ipar, idim, u, mu, v, mv, f, s, nuest, nvest, tol, maxit
   nue = min(nmaxu, nuest)
   nve = min(nmaxv, nvest)
   ! data, with the two lines of a periodic direction averaged
+  allocate (ff(size(f)))
   ff = f
   if (ipar(1) == 1) then
     do ll = 1, idim

@@ -348,7 +348,7 @@ subroutine fpgrre(ifsx, ifsy, ifbx, ifby, x, mx, y, my, z, mz, kx, ky, tx, nx, t
   real(real64), intent(inout) :: ax(nx, kx + 2), ay(ny, ky + 2), bx(nx, kx + 2), by(ny, ky + 2)
   integer, intent(inout) :: nrx(mx), nry(my)
   real(real64) :: h(7), pinv, term, fac, cs, sn
-  integer :: kx1, ky1, nk1x, nk1y, ibandx, ibandy, i, j, l, it, iz, numx, numy, nroldx, nroldy, &
+  integer :: kx1, ky1, nk1x, nk1y, ibandx, ibandy, i, j, l, iz, numx, numy, nroldx, nroldy, &
     k1, k2, l1, l2
   kx1 = kx + 1
   ky1 = ky + 1
