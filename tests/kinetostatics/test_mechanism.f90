@@ -180,6 +180,16 @@ contains
     call check(sys%mechanism%closure_residual() <= 1e-10_wp, 'four-bar: closure at the start')
     call check_close(sys%mechanism%scalars(sys%mechanism%beta(1))%q, beta0(1), 1e-10_wp, 1e-10_wp, &
                      'four-bar: closure gives the assembled coupler angle')
+    ! far from the solution Newton's few steps do not suffice: HYBRJ closes it
+    block
+      type(mechanism_t) :: far
+      call build_fourbar(p, beta0 + [0.6_wp, -0.5_wp], far, st)
+      call far%check_start([0.3_wp], st)
+      call check(st%ok() .and. far%hybrj_solves == 1, 'four-bar: HYBRJ closes the loop from 0.6 rad away: '// &
+                 st%text())
+      call check_close(far%scalars(far%beta(2))%q, beta0(2), 1e-10_wp, 1e-10_wp, &
+                       'four-bar: HYBRJ finds the assembled rocker angle')
+    end block
     ! M = q'.M q' consistency with the kinetic energy through the loop
     qd = 2.0_wp
     call sys%mechanism%evaluate([0.3_wp], qd, res, st)
