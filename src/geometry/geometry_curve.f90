@@ -10,11 +10,13 @@
 !> Gauss-Legendre quadrature of |c_u| and a safeguarded Newton iteration.
 module geometry_curve
   use base_kinds, only: wp
-  use base_status, only: status_t, set_status, STATUS_OK, STATUS_DOMAIN, STATUS_NOT_CONVERGED
+  use base_status, only: status_t, set_status, prefix_status, STATUS_OK, STATUS_DOMAIN, &
+                         STATUS_NOT_CONVERGED, STATUS_INVALID_INPUT
+  use numerics_spline_curve, only: spline_curve_t
   implicit none (type, external)
   private
   public :: curve_t, curve_point_t, line_curve_t, helix_curve_t, constant_curve_t, polynomial_curve_t
-  public :: curve_max_order
+  public :: curve_max_order, spline_centerline_t, new_spline_centerline
 
   integer, parameter :: curve_max_order = 4
 
@@ -93,6 +95,21 @@ module geometry_curve
     procedure :: evaluate => polynomial_evaluate
     procedure :: domain => polynomial_domain
   end type polynomial_curve_t
+
+  !> A spline curve (numerics_spline_curve, FITPACK parcur/concur) on the
+  !> curve seam: the fitted centerline or horizon field of a tube. Derivatives
+  !> above the spline's degree are zero (a quintic gives c_uuuu, which the
+  !> tube's third partials need; a cubic gives c_uuuu = 0 piecewise).
+  !> Arc length and its inverse come from the spline's own table.
+  type, extends(curve_t) :: spline_centerline_t
+    type(spline_curve_t) :: spline
+  contains
+    procedure :: evaluate => spline_evaluate
+    procedure :: domain => spline_domain
+    procedure :: arc_length => spline_arc_length
+    procedure :: total_length => spline_total_length
+    procedure :: parameter_at_length => spline_parameter_at_length
+  end type spline_centerline_t
 
   ! 8-point Gauss-Legendre nodes and weights on [-1, 1].
   real(wp), parameter :: gl_x(8) = [-0.9602898564975363_wp, -0.7966664774136267_wp, &
@@ -195,6 +212,106 @@ contains
     real(wp), intent(out) :: u_min, u_max
     u_min = self%u_min; u_max = self%u_max
   end subroutine polynomial_domain
+
+  !> Fits a spline curve of `degree` (3..5) to points(3, m) with FITPACK's
+  !> smoothing factor (m^2; 0 interpolates). The parameter is the cumulative
+  !> chord length (m), so u is close to the arc length. start_tangent and
+  !> end_tangent (optional, odd degree) prescribe the end directions; they
+  !> are scaled to unit length (d c/du of a chord-length parameter).
+  !> `parameters` replaces the chord length (e.g. to fit a horizon field
+  !> sampled at the centerline's parameters).
+  function new_spline_centerline(points, smoothing, degree, status, start_tangent, end_tangent, &
+                                 parameters) result(c)
+    real(wp), intent(in) :: points(:, :)
+    real(wp), intent(in) :: smoothing
+    integer, intent(in) :: degree
+    type(status_t), intent(out) :: status
+    real(wp), intent(in), optional :: start_tangent(3), end_tangent(3)
+    real(wp), intent(in), optional :: parameters(:)
+    type(spline_centerline_t) :: c
+    real(wp), allocatable :: u(:)
+    real(wp) :: db(3, 2), de(3, 2)
+    integer :: m, i
+    m = size(points, 2)
+    if (size(points, 1) /= 3 .or. m < degree + 1) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline centerline: need points(3, m) with m > degree')
+      return
+    end if
+    allocate (u(m))
+    u(1) = 0
+    do i = 2, m
+      u(i) = u(i - 1) + norm2(points(:, i) - points(:, i - 1))
+    end do
+    if (present(parameters)) then
+      if (size(parameters) /= m) then
+        call set_status(status, STATUS_INVALID_INPUT, 'spline centerline: one parameter per point needed')
+        return
+      end if
+      u = parameters
+    end if
+    if (present(start_tangent) .or. present(end_tangent)) then
+      db(:, 1) = points(:, 1); de(:, 1) = points(:, m)
+      if (present(start_tangent)) db(:, 2) = start_tangent/norm2(start_tangent)
+      if (present(end_tangent)) de(:, 2) = end_tangent/norm2(end_tangent)
+      if (present(start_tangent) .and. present(end_tangent)) then
+        call c%spline%fit(points, smoothing, degree, status, parameters=u, start_derivatives=db, &
+                          end_derivatives=de)
+      else if (present(start_tangent)) then
+        call c%spline%fit(points, smoothing, degree, status, parameters=u, start_derivatives=db, &
+                          end_derivatives=de(:, 1:1))
+      else
+        call c%spline%fit(points, smoothing, degree, status, parameters=u, start_derivatives=db(:, 1:1), &
+                          end_derivatives=de)
+      end if
+    else
+      call c%spline%fit(points, smoothing, degree, status, parameters=u)
+    end if
+    if (.not. status%ok()) call prefix_status(status, 'spline centerline')
+  end function new_spline_centerline
+
+  pure subroutine spline_evaluate(self, u, order, p, status)
+    class(spline_centerline_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(curve_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    p%order = min(max(order, 0), curve_max_order)
+    call self%spline%evaluate(u, p%d(:, 0:p%order), p%order)
+    status%code = STATUS_OK
+  end subroutine spline_evaluate
+
+  pure subroutine spline_domain(self, u_min, u_max)
+    class(spline_centerline_t), intent(in) :: self
+    real(wp), intent(out) :: u_min, u_max
+    real(wp) :: d(2)
+    d = self%spline%domain()
+    u_min = d(1); u_max = d(2)
+  end subroutine spline_domain
+
+  pure function spline_arc_length(self, u0, u1) result(s)
+    class(spline_centerline_t), intent(in) :: self
+    real(wp), intent(in) :: u0, u1
+    real(wp) :: s
+    s = self%spline%arc_length(u1) - self%spline%arc_length(u0)
+  end function spline_arc_length
+
+  pure function spline_total_length(self) result(s)
+    class(spline_centerline_t), intent(in) :: self
+    real(wp) :: s
+    s = self%spline%total_length()
+  end function spline_total_length
+
+  pure subroutine spline_parameter_at_length(self, length, u, status)
+    class(spline_centerline_t), intent(in) :: self
+    real(wp), intent(in) :: length
+    real(wp), intent(out) :: u
+    type(status_t), intent(out) :: status
+    real(wp) :: total
+    total = self%spline%total_length()
+    u = self%spline%parameter_at_length(length)
+    if (length < 0 .or. length > total*(1 + 1e-12_wp)) &
+      call set_status(status, STATUS_DOMAIN, 'arc length outside the curve [0, total length]')
+  end subroutine spline_parameter_at_length
 
   !> Arc length from u0 to u1 (thesis 2.1), m; negative if u1 < u0.
   !> Composite 8-point Gauss-Legendre on panels of the whole domain
