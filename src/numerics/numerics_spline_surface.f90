@@ -44,6 +44,7 @@ module numerics_spline_surface
     integer :: ier = 0
   contains
     procedure :: evaluate
+    procedure :: evaluate_grid
     procedure :: domain
     procedure :: is_fitted
     procedure :: dimension => surface_dimension
@@ -254,7 +255,7 @@ contains
     real(wp), intent(in) :: u, v
     type(spline_surface_eval_t), intent(out) :: p
     type(status_t), intent(out) :: status
-    real(wp) :: du(0:3, max_degree + 1), dv(0:3, max_degree + 1), uu, vv, s(0:3, 0:3)
+    real(wp) :: du(0:3, max_degree + 1), dv(0:3, max_degree + 1), uu, vv, s(0:3, 0:3), w(0:3)
     integer :: lu, lv, i, j, l, a, b, nu, nv
     logical :: outside
     if (self%dim == 0) then
@@ -271,15 +272,16 @@ contains
     call basis_derivatives(self%tv, self%kv, vv, lv, dv)
     do l = 1, self%dim
       s = 0
-      do i = 1, self%ku + 1
-        do j = 1, self%kv + 1
-          associate (cij => self%c(lu - self%ku - 1 + i, lv - self%kv - 1 + j, l))
-            do a = 0, 3
-              do b = 0, 3 - a
-                s(a, b) = s(a, b) + du(a, i)*dv(b, j)*cij
-              end do
-            end do
-          end associate
+      do j = 1, self%kv + 1
+        ! w(a) = sum_i du(a, i) c(i, j): the u-partials of coefficient column j
+        w = 0
+        do i = 1, self%ku + 1
+          w = w + du(:, i)*self%c(lu - self%ku - 1 + i, lv - self%kv - 1 + j, l)
+        end do
+        do a = 0, 3
+          do b = 0, 3 - a
+            s(a, b) = s(a, b) + w(a)*dv(b, j)
+          end do
         end do
       end do
       p%f(l) = s(0, 0)
@@ -296,6 +298,69 @@ contains
     if (outside) call set_status(status, STATUS_DOMAIN, &
       'spline surface: point outside the parameter domain, evaluated at the nearest boundary point')
   end subroutine evaluate
+
+  !> evaluate() on the grid u(1..nu) x v(1..nv): p(i, j) at (u(i), v(j)). The
+  !> B-splines and their derivatives are computed once per grid line (kept in
+  !> automatic arrays on the stack, no heap allocation). status as evaluate's,
+  !> STATUS_DOMAIN if any point lies outside.
+  pure subroutine evaluate_grid(self, u, v, p, status)
+    class(spline_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u(:), v(:)
+    type(spline_surface_eval_t), intent(out) :: p(:, :)
+    type(status_t), intent(out) :: status
+    real(wp) :: du(0:3, max_degree + 1), dv(0:3, max_degree + 1, size(v)), uu, vv, s(0:3, 0:3), w(0:3)
+    integer :: lv(size(v)), lu, i, j, ii, jj, l, a, b, ku1, kv1
+    logical :: outside
+    if (self%dim == 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline surface: evaluated before a successful fit')
+      return
+    end if
+    if (size(p, 1) /= size(u) .or. size(p, 2) /= size(v)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'spline surface: evaluate_grid needs p(size(u), size(v))')
+      return
+    end if
+    outside = .false.
+    ku1 = self%ku + 1
+    kv1 = self%kv + 1
+    do j = 1, size(v)
+      call locate(self%tv, self%kv, self%periodic(2), v(j), vv, lv(j), outside)
+      call basis_derivatives(self%tv, self%kv, vv, lv(j), dv(:, :, j))
+    end do
+    do i = 1, size(u)
+      call locate(self%tu, self%ku, self%periodic(1), u(i), uu, lu, outside)
+      call basis_derivatives(self%tu, self%ku, uu, lu, du)
+      do j = 1, size(v)
+        p(i, j)%dim = self%dim
+        do l = 1, self%dim
+          s = 0
+          do jj = 1, kv1
+            ! w(a) = sum_i du(a, i) c(i, jj): the u-partials of coefficient column jj
+            w = 0
+            do ii = 1, ku1
+              w = w + du(:, ii)*self%c(lu - ku1 + ii, lv(j) - kv1 + jj, l)
+            end do
+            do a = 0, 3
+              do b = 0, 3 - a
+                s(a, b) = s(a, b) + w(a)*dv(b, jj, j)
+              end do
+            end do
+          end do
+          p(i, j)%f(l) = s(0, 0)
+          p(i, j)%fu(l) = s(1, 0)
+          p(i, j)%fv(l) = s(0, 1)
+          p(i, j)%fuu(l) = s(2, 0)
+          p(i, j)%fuv(l) = s(1, 1)
+          p(i, j)%fvv(l) = s(0, 2)
+          p(i, j)%fuuu(l) = s(3, 0)
+          p(i, j)%fuuv(l) = s(2, 1)
+          p(i, j)%fuvv(l) = s(1, 2)
+          p(i, j)%fvvv(l) = s(0, 3)
+        end do
+      end do
+    end do
+    if (outside) call set_status(status, STATUS_DOMAIN, &
+      'spline surface: grid points outside the parameter domain, evaluated at the nearest boundary points')
+  end subroutine evaluate_grid
 
   !> [umin, umax, vmin, vmax] of the spline (x, y for a scalar surface).
   pure function domain(self) result(box)

@@ -250,6 +250,7 @@ contains
     ! interpolation conditions hold to rounding of the solve
     call check(err <= 1.0e-12_wp, 'grid s=0: interpolates the grid')
     call check_values_bispev(surf, 'grid quintic')
+    call check_grid_evaluation(surf, 'grid quintic')
     call check_partials_fd(surf, 'grid quintic', 40)
     ! smoothing, bicubic
     surf = fit_grid(x, y, z + 0.01_wp*sin(31.0_wp*spread(x, 2, my) + 17.0_wp*spread(y, 1, mx)), 0.005_wp, 3, 3, st)
@@ -306,7 +307,42 @@ contains
       call check_close(p%fuu(l), q%fuu(l), 0.0_wp, 1.0e-5_wp, 'tube: C2 at the seam')
     end do
     call check_partials_fd(surf, 'tube', 40)
+    call check_grid_evaluation(surf, 'tube')
   end subroutine parametric_tube
+
+  !> evaluate_grid equals evaluate point by point (same sums in the same
+  !> order: equal to the last bit, checked to 1e-15 of the scale).
+  subroutine check_grid_evaluation(surf, what)
+    type(spline_surface_t), intent(in) :: surf
+    character(len=*), intent(in) :: what
+    type(spline_surface_eval_t) :: pg(7, 5), p
+    type(status_t) :: st
+    real(wp) :: box(4), u(7), v(5), err, scale
+    integer :: i, j, a, b, l
+    box = surf%domain()
+    u = box(1) + (box(2) - box(1))*[(halton(i, 5), i = 1, 7)]
+    v = box(3) + (box(4) - box(3))*[(halton(j, 7), j = 1, 5)]
+    call surf%evaluate_grid(u, v, pg, st)
+    call check(st%ok(), what//': evaluate_grid status')
+    err = 0
+    scale = 0
+    do i = 1, 7
+      do j = 1, 5
+        call surf%evaluate(u(i), v(j), p, st)
+        do a = 0, 3
+          do b = 0, 3 - a
+            do l = 1, surf%dimension()
+              err = max(err, abs(partial(pg(i, j), a, b, l) - partial(p, a, b, l)))
+              scale = max(scale, abs(partial(p, a, b, l)))
+            end do
+          end do
+        end do
+      end do
+    end do
+    call check(err <= 1.0e-15_wp*scale, what//': evaluate_grid equals evaluate')
+    call surf%evaluate_grid(u, [v, box(4) + 1], pg(:, 1:6 - 1), st)
+    call check(st%code == STATUS_INVALID_INPUT, what//': evaluate_grid rejects a wrong shape')
+  end subroutine check_grid_evaluation
 
   !> Thesis 3.5.3.3: paraboloids (3.58) z = (u^2 + v^2)/a^2 (c = 1, a = b),
   !> a^2 = 3 on [-2, 2]^2 and a^2 = 0.5 on [-0.5, 0.5]^2, 13 x 13 points,
