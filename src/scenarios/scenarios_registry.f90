@@ -7,17 +7,24 @@ module scenarios_registry
   use io_input, only: input_text_t, load_input_file, input_from_text, check_choice
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
+  use scenarios_pendulum, only: run_pendulum
+  use scenarios_fourbar, only: run_fourbar
+  use scenarios_sled, only: run_sled
   use scenarios_geometry, only: run_geometry
   use scenarios_water, only: run_water
   implicit none (type, external)
   private
   public :: run_input_file, run_default, run_input, print_scenarios, default_input, slidesim_version
 
-  character(len=*), parameter :: scenario_names(3) = [character(len=16) :: 'point_mass', 'geometry', 'water']
-  character(len=*), parameter :: scenario_summaries(3) = [character(len=72) :: &
+  character(len=*), parameter :: scenario_names(6) = [character(len=16) :: 'point_mass', 'geometry', 'water', &
+    'pendulum', 'fourbar', 'sled']
+  character(len=*), parameter :: scenario_summaries(6) = [character(len=72) :: &
     'a point mass sliding on an elementary surface (plane, ellipsoid, ...)', &
     'build a tube, slide or blended surface; write grid, centerline, frames', &
-    'stationary water flow down a tube slide: streamline, height, width, edges']
+    'stationary water flow down a tube slide: streamline, height, width, edges', &
+    'a simple or double pendulum (multibody core)', &
+    'a four-bar linkage closed by plane-point measurements', &
+    'a bar sliding on a surface on two surface joints, closed like the rider']
 
   !> The built-in default: a point mass sliding down an inclined half-pipe (an
   !> elliptic cylinder of radius 0.5 m whose axis falls 10 degrees), started off the
@@ -85,6 +92,12 @@ contains
     select case (trim(run%scenario))
     case ('point_mass')
       call run_point_mass(input, run, status)
+    case ('pendulum')
+      call run_pendulum(input, run, status)
+    case ('fourbar')
+      call run_fourbar(input, run, status)
+    case ('sled')
+      call run_sled(input, run, status)
     case ('geometry')
       call run_geometry(input, run, status)
     case ('water')
