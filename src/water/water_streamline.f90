@@ -125,7 +125,8 @@ contains
     integer :: i
     associate (unused => t)
     end associate
-    g(ROOT_END) = self%u_end - y(1)
+    g(ROOT_END) = 1   ! no end given (huge u_end): a constant keeps the root search finite
+    if (self%u_end < huge(1.0_wp)/2) g(ROOT_END) = self%u_end - y(1)
     g(ROOT_TURN) = y(3)
     call water_point(self, y, wp_, st)
     if (st%ok()) then
