@@ -174,20 +174,36 @@ Outputs: ier, n, fp, t(1:n), c(1:n-k-1).""")
     tab.case('bad_given_knots', iopt=-1, k=3, s=0.0, nest=len(tin), lwrk=20 * 4 + len(tin) * 16,
              xb=x[0], xe=x[-1], x=x, y=y, w=w, n_in=len(tin), t_in=tin, ier=10)
     _check_bad_given(x, y, w, tin)
-    # s so small that the p-iteration gives up (ier = 2 / 3) where it can be provoked
+    # the p-iteration gives up (ier = 2: f(p) out of order; ier = 3: maxit) on random
+    # small data sets with badly scaled s; searched with a separate generator
+    search = np.random.RandomState(5)
     found = {}
-    for trial in range(400):
-        m = 30
-        xx = np.sort(rng.uniform(0, 1, m))
-        yy = rng.normal(0, 1, m)
-        kk = int(rng.randint(1, 6))
-        s = 10.0 ** rng.uniform(-14, -3)
+    for trial in range(20000):
+        m = int(search.randint(8, 40))
+        kk = int(search.randint(1, 6))
+        xx = np.sort(search.uniform(0, 1, m))
+        if np.any(np.diff(xx) <= 1e-3):
+            continue
+        yy = search.normal(0, 1, m) * 10**search.uniform(-3, 3)
+        if search.rand() < 0.5:
+            yy = np.round(yy, 0)
+        s = 10.0**search.uniform(-16, 1) * np.sum(yy**2)
         nest = m + kk + 1
         n, t, c, fp, ier, state, lwrk, xb, xe = curfit_call(0, xx, yy, np.ones(m), kk, s, nest)
         if ier in (2, 3) and ier not in found:
             found[ier] = True
             tab.case('provoked_ier%d' % ier, iopt=0, k=kk, s=s, nest=nest, lwrk=lwrk, xb=xb, xe=xe,
                      x=xx, y=yy, w=np.ones(m), ier=ier, n=n, fp=fp, t=t[:n], c=c[:n - kk - 1])
+        if len(found) == 2:
+            break
+    assert len(found) == 2, found
+    # iopt = -1 without interior knots: the least-squares polynomial (ier = -2)
+    x, y = data_1d(20, noisy=True)
+    w = np.ones_like(x)
+    tck, fp, ier, msg = splrep(x, y, w, k=3, t=[], full_output=1)
+    t, c, _ = tck
+    tab.case('given_no_interior', iopt=-1, k=3, s=0.0, nest=8, xb=x[0], xe=x[-1], x=x, y=y, w=w,
+             n_in=8, t_in=t, ier=ier, n=8, fp=fp, t=t, c=c[:4])
     tab.write()
 
 

@@ -24,6 +24,7 @@ program test_curves_parcur
       call run_case(trim(tab%case_names(ic)), .true.)
     end do
   end if
+  call netlib_input_checks()
   call finish_checks('fitpack parcur/clocur')
 
 contains
@@ -112,4 +113,50 @@ contains
     end do
     call expect_close(fp, fpref, rtol_c, rtol_c*sum(x**2)*1e-6_real64, name//': fp')
   end subroutine run_case
+
+  !> Conditions under which netlib's parcur and clocur return ier = 10 (scipy's
+  !> glue raises before returning them, so they have no reference table).
+  subroutine netlib_input_checks()
+    integer, parameter :: m = 20, idim = 2, k = 3, nest = 40, nc = nest*idim
+    integer, parameter :: lwrk = m*(k + 1) + nest*(7 + idim + 5*k)
+    real(real64) :: u(m), x(idim*m), w(m), t(nest), c(nc), wrk(lwrk), fp, ub, ue
+    integer :: iwrk(nest), n, ier, i
+    do i = 1, m
+      u(i) = real(i - 1, real64)/(m - 1)
+      x(2*i - 1) = cos(6.283185307179586_real64*u(i))
+      x(2*i) = sin(6.283185307179586_real64*u(i))
+    end do
+    x(2*m - 1:2*m) = x(1:2)
+    w = 1
+    ub = 0
+    ue = 1
+    call parcur(0, 2, idim, m, u, idim*m, x, w, ub, ue, k, 0.1_real64, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'parcur: ipar = 2 gives ier 10')
+    call parcur(0, 1, 11, m, u, idim*m, x, w, ub, ue, k, 0.1_real64, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'parcur: idim = 11 gives ier 10')
+    ub = 0.1_real64
+    call parcur(0, 1, idim, m, u, idim*m, x, w, ub, ue, k, 0.1_real64, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'parcur: ub > u(1) gives ier 10')
+    ub = 0
+    call parcur(0, 1, idim, m, u, idim*m, x, w, ub, ue, k, 0.1_real64, nest, n, t, nc - 1, c, fp, wrk, lwrk, &
+                iwrk, ier)
+    call expect(ier == 10, 'parcur: nc < nest*idim gives ier 10')
+    call parcur(0, 1, idim, m, u, idim*m, x, w, ub, ue, k, 0.1_real64, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 0, 'parcur: valid input accepted')
+    call clocur(0, 1, idim, m, u, idim*m, x, w, k, 0.1_real64, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 0, 'clocur: valid input accepted')
+    x(2*m) = x(2*m) + 1e-9_real64
+    call clocur(0, 1, idim, m, u, idim*m, x, w, k, 0.1_real64, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'clocur: last point different from the first gives ier 10')
+    x(2*m) = x(2)
+    u(4) = u(3)
+    call clocur(0, 1, idim, m, u, idim*m, x, w, k, 0.1_real64, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'clocur: repeated parameter gives ier 10')
+    call parcur(0, 1, idim, m, u, idim*m, x, w, ub, ue, k, 0.1_real64, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'parcur: repeated parameter gives ier 10')
+    ! chord length with all points equal: no parametrization
+    x = 1
+    call parcur(0, 0, idim, m, u, idim*m, x, w, ub, ue, k, 0.1_real64, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'parcur: coincident points with ipar = 0 give ier 10')
+  end subroutine netlib_input_checks
 end program test_curves_parcur

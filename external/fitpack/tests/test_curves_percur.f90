@@ -16,6 +16,8 @@ program test_curves_percur
       call run_case(trim(tab%case_names(ic)))
     end do
   end if
+  call netlib_input_checks()
+  call continuation_consistency()
   call finish_checks('fitpack percur')
 
 contains
@@ -81,4 +83,79 @@ contains
     call expect_close(fp, fpref, rtol_c, rtol_c*sum((w*y)**2)*1e-6_real64, name//': fp')
   end subroutine run_case
 
+
+  !> Conditions under which netlib's percur returns ier = 10 (scipy's wrapper
+  !> intercepts most of them before FITPACK, so they have no reference table).
+  subroutine netlib_input_checks()
+    integer, parameter :: m = 16, k = 3, nest = 30, lwrk = m*(k + 1) + nest*(8 + 5*k)
+    real(real64) :: x(m), y(m), w(m), t(nest), c(nest), wrk(lwrk), fp
+    integer :: iwrk(nest), n, ier, i
+    do i = 1, m
+      x(i) = 6.283185307179586_real64*(i - 1)/(m - 1)
+    end do
+    y = sin(x)
+    y(m) = y(1)
+    w = 1
+    call percur(0, m, x, y, w, 6, 0.1_real64, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'percur: k = 6 gives ier 10')
+    call percur(0, m, x, y, w, k, -0.1_real64, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'percur: s < 0 gives ier 10')
+    call percur(0, m, x, y, w, k, 0.1_real64, nest, n, t, c, fp, wrk, lwrk - 1, iwrk, ier)
+    call expect(ier == 10, 'percur: lwrk too small gives ier 10')
+    call percur(0, m, x, y, w, k, 0.1_real64, 7, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'percur: nest < 2k+2 gives ier 10')
+    w(3) = 0
+    call percur(0, m, x, y, w, k, 0.1_real64, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'percur: w <= 0 gives ier 10')
+    w(3) = 1
+    w(m) = 0
+    call percur(0, m, x, y, w, k, 0.1_real64, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 0, 'percur: the weight of the last point is not used')
+    w(m) = 1
+    ! given knots: too many in one data gap (periodic Schoenberg-Whitney fails)
+    n = 13
+    t(k + 2:n - k - 1) = [1.0_real64, 1.01_real64, 1.02_real64, 1.03_real64, 1.04_real64]
+    call percur(-1, m, x, y, w, k, 0.0_real64, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'percur: given knots violating Schoenberg-Whitney give ier 10')
+    n = 8
+    call percur(-1, m, x, y, w, k, 0.0_real64, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'percur: given n <= 2k+2 gives ier 10')
+    n = 10
+    t(5:6) = [2.0_real64, 4.0_real64]
+    call percur(-1, m, x, y, w, k, 0.0_real64, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 0, 'percur: valid given knots accepted')
+    x(5) = x(4)
+    call percur(0, m, x, y, w, k, 0.1_real64, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 10, 'percur: repeated x gives ier 10')
+  end subroutine netlib_input_checks
+
+  !> iopt = 1 with the same s reproduces the iopt = 0 fit exactly (same knots, the
+  !> same p-iteration); with a smaller s it keeps the knots and meets the new s.
+  subroutine continuation_consistency()
+    integer, parameter :: m = 60, k = 3, nest = m + 2*k, lwrk = m*(k + 1) + nest*(8 + 5*k)
+    real(real64) :: x(m), y(m), w(m), t(nest), c(nest), wrk(lwrk), fp, t0(nest), c0(nest), fp0
+    integer :: iwrk(nest), n, ier, i, n0
+    do i = 1, m
+      x(i) = 6.283185307179586_real64*((i - 1)/real(m - 1, real64))**1.1_real64
+      y(i) = sin(x(i)) + 0.3_real64*cos(2*x(i)) + 0.05_real64*sin(37.0_real64*i)
+    end do
+    y(m) = y(1)
+    w = 1
+    call percur(0, m, x, y, w, k, 0.1_real64, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    n0 = n
+    t0 = t
+    c0 = c
+    fp0 = fp
+    call percur(1, m, x, y, w, k, 0.1_real64, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 0 .and. n == n0, 'percur: iopt=1 with the same s keeps n')
+    if (n == n0) then
+      call expect(all(t(1:n) == t0(1:n)), 'percur: iopt=1 with the same s repeats the knots')
+      call expect(all(c(1:n - k - 1) == c0(1:n - k - 1)), 'percur: iopt=1 with the same s repeats the coefficients')
+      call expect(fp == fp0, 'percur: iopt=1 with the same s repeats fp')
+      if (fp /= fp0) print *, fp, fp0
+    end if
+    call percur(1, m, x, y, w, k, 0.03_real64, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    call expect(ier == 0 .and. n >= n0 .and. abs(fp - 0.03_real64) < 0.001_real64*0.03_real64, &
+                'percur: iopt=1 with a smaller s meets it with at least the old knots')
+  end subroutine continuation_consistency
 end program test_curves_percur
