@@ -8,7 +8,8 @@ module io_geometry_config
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_t
-  use geometry_curve, only: curve_t, line_curve_t, helix_curve_t, constant_curve_t
+  use geometry_curve, only: curve_t, curve_point_t, line_curve_t, helix_curve_t, constant_curve_t, &
+                            spline_centerline_t, new_spline_centerline
   use geometry_curve_frame, only: horizon_parallel_tol
   use geometry_cross_section, only: cross_section_t, section_holder_t, circle_section_t, &
     ellipse_section_t, flume_section_t, blended_section_t, new_blended_section
@@ -111,23 +112,26 @@ contains
     type(status_t), intent(inout) :: status
     character(len=8) :: kind
     real(wp) :: start(3), end(3), center(3), radius, rise_per_turn, turns, phase_deg, horizon(3)
-    real(wp) :: points(3, max_points), smoothing
+    real(wp) :: points(3, max_points), smoothing, start_tangent(3), end_tangent(3)
     integer :: n_points, degree, ios, i
     character(len=256) :: msg
     character(len=*), parameter :: g = 'centerline'
     real(wp) :: t(3), d
+    type(spline_centerline_t) :: fitted
+    type(status_t) :: built
     namelist /centerline/ kind, start, end, center, radius, rise_per_turn, turns, phase_deg, horizon, &
-      n_points, points, smoothing, degree
+      n_points, points, smoothing, degree, start_tangent, end_tangent
     kind = 'line'
     start = [0, 0, 0]; end = [10, 0, 0]
     center = 0; radius = 5; rise_per_turn = 0; turns = 0.25_wp; phase_deg = -90
     horizon = [0, 0, 1]
     n_points = 0; points = 0; smoothing = 0; degree = 5
+    start_tangent = 0; end_tangent = 0
     read (input%lines, nml=centerline, iostat=ios, iomsg=msg)
     if (ios > 0) then
       call namelist_read_error(input, g, msg, [character(len=13) :: 'kind', 'start', 'end', 'center', &
         'radius', 'rise_per_turn', 'turns', 'phase_deg', 'horizon', 'n_points', 'points', 'smoothing', &
-        'degree'], status)
+        'degree', 'start_tangent', 'end_tangent'], status)
       return
     end if
     kind = lower(adjustl(kind))
@@ -186,9 +190,28 @@ contains
       call check_nonnegative(input, g, 'smoothing', smoothing, 'm^2', status)
       if (status%ok() .and. (degree < 3 .or. degree > 5)) &
         call invalid(input, g, 'degree', format_real(real(degree, wp)), 'must be 3, 4 or 5', status)
+      call check_finite_vector(input, g, 'start_tangent', start_tangent, status)
+      call check_finite_vector(input, g, 'end_tangent', end_tangent, status)
+      if (status%ok() .and. mod(degree, 2) == 0 .and. (any(start_tangent /= 0) .or. any(end_tangent /= 0))) &
+        call invalid(input, g, 'degree', format_real(real(degree, wp)), &
+                     'must be odd (3 or 5) when end tangents are given', status)
       if (.not. status%ok()) return
-      call set_status(status, STATUS_INVALID_INPUT, input%name // ': &centerline: kind = ''points'' ' // &
-                      'needs the spline curve layer (numerics_spline_curve), not available in this build')
+      if (any(start_tangent /= 0) .and. any(end_tangent /= 0)) then
+        fitted = new_spline_centerline(points(:, 1:n_points), smoothing, degree, built, &
+                                       start_tangent=start_tangent, end_tangent=end_tangent)
+      else if (any(start_tangent /= 0)) then
+        fitted = new_spline_centerline(points(:, 1:n_points), smoothing, degree, built, start_tangent=start_tangent)
+      else if (any(end_tangent /= 0)) then
+        fitted = new_spline_centerline(points(:, 1:n_points), smoothing, degree, built, end_tangent=end_tangent)
+      else
+        fitted = new_spline_centerline(points(:, 1:n_points), smoothing, degree, built)
+      end if
+      if (.not. built%ok()) then
+        status = built
+        call prefix_status(status, input%name // ': &' // g)
+        return
+      end if
+      allocate (curve, source=fitted)
     end select
   end subroutine read_centerline
 
@@ -202,23 +225,26 @@ contains
     character(len=5) :: direction(max_elements)
     real(wp) :: length(max_elements), slope_deg(max_elements), radius(max_elements), &
       angle_deg(max_elements), turns(max_elements), drop(max_elements)
-    real(wp) :: start(3), heading_deg, transition_length
+    real(wp) :: start(3), heading_deg, transition_length, fit_spacing, smoothing
+    character(len=8) :: centerline_kind
+    integer :: degree
     type(slide_element_t) :: e(max_elements)
     type(element_chain_curve_t) :: chain
     type(status_t) :: built
     character(len=256) :: msg
     character(len=*), parameter :: g = 'slide_elements'
     namelist /slide_elements/ n_elements, kind, length, slope_deg, radius, angle_deg, direction, turns, &
-      drop, start, heading_deg, transition_length
+      drop, start, heading_deg, transition_length, centerline_kind, fit_spacing, smoothing, degree
     n_elements = 0
     kind = 'straight'; direction = 'left'
     length = 0; slope_deg = 0; radius = 0; angle_deg = 0; turns = 0; drop = 0
     start = [0, 0, 0]; heading_deg = 0; transition_length = 2
+    centerline_kind = 'fitted'; fit_spacing = 0.5_wp; smoothing = 0; degree = 5
     read (input%lines, nml=slide_elements, iostat=ios, iomsg=msg)
     if (ios > 0) then
       call namelist_read_error(input, g, msg, [character(len=17) :: 'n_elements', 'kind', 'length', &
         'slope_deg', 'radius', 'angle_deg', 'direction', 'turns', 'drop', 'start', 'heading_deg', &
-        'transition_length'], status)
+        'transition_length', 'centerline_kind', 'fit_spacing', 'smoothing', 'degree'], status)
       return
     end if
     if (n_elements < 1 .or. n_elements > max_elements) then
@@ -228,6 +254,12 @@ contains
     call check_finite_vector(input, g, 'start', start, status)
     call check_finite(input, g, 'heading_deg', heading_deg, status)
     call check_nonnegative(input, g, 'transition_length', transition_length, 'm', status)
+    centerline_kind = lower(adjustl(centerline_kind))
+    call check_choice(input, g, 'centerline_kind', centerline_kind, [character(len=6) :: 'fitted', 'exact'], status)
+    call check_range(input, g, 'fit_spacing', fit_spacing, 0.05_wp, 5.0_wp, 'm', status)
+    call check_nonnegative(input, g, 'smoothing', smoothing, 'm^2', status)
+    if (status%ok() .and. degree /= 3 .and. degree /= 5) &
+      call invalid(input, g, 'degree', format_real(real(degree, wp)), 'must be 3 or 5', status)
     do i = 1, n_elements
       kind(i) = lower(adjustl(kind(i)))
       direction(i) = lower(adjustl(direction(i)))
@@ -258,14 +290,48 @@ contains
       e(i) = slide_element_t(kind=kind(i), length=length(i), slope_deg=slope_deg(i), radius=radius(i), &
                              angle_deg=angle_deg(i), direction=direction(i), turns=turns(i), drop=drop(i))
     end do
+    if (.not. status%ok()) return
     chain = new_element_chain(e(1:n_elements), start, heading_deg, transition_length, built)
     if (.not. built%ok()) then
       status = built
       call prefix_status(status, input%name // ': &' // g)
       return
     end if
-    allocate (centerline, source=chain)
+    if (centerline_kind == 'exact') then
+      allocate (centerline, source=chain)
+    else
+      call fit_chain(chain, fit_spacing, smoothing, degree, centerline, built)
+      if (.not. built%ok()) then
+        status = built
+        call prefix_status(status, input%name // ': &' // g)
+      end if
+    end if
   end subroutine read_slide_elements
+
+  !> The thesis's way: points of the element chain every ~spacing m of
+  !> horizontal length, fitted by a spline (parcur/concur) with the chain's
+  !> end tangents prescribed.
+  subroutine fit_chain(chain, spacing, smoothing, degree, centerline, status)
+    type(element_chain_curve_t), intent(in) :: chain
+    real(wp), intent(in) :: spacing, smoothing
+    integer, intent(in) :: degree
+    class(curve_t), allocatable, intent(out) :: centerline
+    type(status_t), intent(out) :: status
+    real(wp), allocatable :: pts(:, :)
+    type(curve_point_t) :: p, q
+    type(spline_centerline_t) :: fitted
+    integer :: n, i
+    n = max(degree + 1, ceiling(chain%total/spacing) + 1)
+    allocate (pts(3, n))
+    do i = 1, n
+      call chain%evaluate(chain%total*(i - 1)/real(n - 1, wp), 0, p, status)
+      pts(:, i) = p%d(:, 0)
+    end do
+    call chain%evaluate(0.0_wp, 1, p, status)
+    call chain%evaluate(chain%total, 1, q, status)
+    fitted = new_spline_centerline(pts, smoothing, degree, status, start_tangent=p%d(:, 1), end_tangent=q%d(:, 1))
+    if (status%ok()) allocate (centerline, source=fitted)
+  end subroutine fit_chain
 
   !> &cross_section: n_sections sections (circle, ellipse, flume) blended along
   !> the centerline; transitions given in arc length along the centerline (m).
