@@ -25,12 +25,14 @@
 module geometry_cross_section
   use base_kinds, only: wp
   use base_constants, only: pi, two_pi
-  use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT
+  use base_status, only: status_t, set_status, prefix_status, STATUS_OK, STATUS_INVALID_INPUT
+  use numerics_spline_curve, only: spline_curve_t
   implicit none (type, external)
   private
   public :: cross_section_t, section_point_t, section_holder_t
   public :: circle_section_t, ellipse_section_t, flume_section_t, blended_section_t
   public :: logistic, logistic_rate, blend_weights, new_blended_section
+  public :: profile_section_t, new_profile_section, polyline_self_intersection
 
   !> s(:, i, j) = d^(i+j) [s_y, s_z] / du^i dv^j for i + j <= order.
   type :: section_point_t
@@ -98,6 +100,18 @@ module geometry_cross_section
     procedure :: evaluate => flume_evaluate
     procedure :: v_range => flume_range
   end type flume_section_t
+
+  !> A profile given as points (y, z) in the frame, fitted by a spline curve
+  !> (parcur; clocur if the first and last point coincide); v is the
+  !> cumulative chord length of the points (m).
+  type, extends(cross_section_t) :: profile_section_t
+    type(spline_curve_t) :: spline
+    logical :: closed = .false.
+  contains
+    procedure :: evaluate => profile_evaluate
+    procedure :: v_range => profile_range
+    procedure :: periodic => profile_periodic
+  end type profile_section_t
 
   !> n sections blended along u (3.69): transition j (between sections j-1 and
   !> j) has its midpoint midpoint(j) and growth constant rate(j) (3.72).
@@ -302,6 +316,106 @@ contains
     v_min = -self%wall/self%radius
     v_max = pi + self%wall/self%radius
   end subroutine flume_range
+
+  ! ----------------------------------------------------------------- profile
+
+  !> Index of the first segment of the polyline (y, z) that crosses a later,
+  !> non-adjacent segment (0: none). For a closed polyline (last point = first)
+  !> the first and last segments are adjacent.
+  pure integer function polyline_self_intersection(y, z) result(first)
+    real(wp), intent(in) :: y(:), z(:)
+    integer :: i, j, n
+    logical :: closed
+    n = size(y)
+    first = 0
+    closed = n > 3 .and. y(1) == y(n) .and. z(1) == z(n)
+    do i = 1, n - 1
+      do j = i + 2, n - 1
+        if (closed .and. i == 1 .and. j == n - 1) cycle
+        if (cross_2d([y(i), z(i)], [y(i + 1), z(i + 1)], [y(j), z(j)], [y(j + 1), z(j + 1)])) then
+          first = i
+          return
+        end if
+      end do
+    end do
+  contains
+    pure logical function cross_2d(p1, p2, q1, q2)
+      real(wp), intent(in) :: p1(2), p2(2), q1(2), q2(2)
+      cross_2d = orient(q1, q2, p1)*orient(q1, q2, p2) < 0 .and. orient(p1, p2, q1)*orient(p1, p2, q2) < 0
+    end function cross_2d
+    pure real(wp) function orient(a, b, c)
+      real(wp), intent(in) :: a(2), b(2), c(2)
+      orient = (b(1) - a(1))*(c(2) - a(2)) - (b(2) - a(2))*(c(1) - a(1))
+    end function orient
+  end function polyline_self_intersection
+
+  !> A profile through (or, with smoothing > 0, near) the points (y(i), z(i))
+  !> (m) with a spline of `degree` (3..5). Rejects fewer than degree+1 points,
+  !> repeated consecutive points and a self-intersecting polyline.
+  function new_profile_section(y, z, smoothing, degree, status) result(s)
+    real(wp), intent(in) :: y(:), z(:), smoothing
+    integer, intent(in) :: degree
+    type(status_t), intent(out) :: status
+    type(profile_section_t) :: s
+    real(wp), allocatable :: pts(:, :), v(:)
+    integer :: n, i, k
+    character(len=40) :: buf
+    n = size(y)
+    if (size(z) /= n .or. n < degree + 1) then
+      call set_status(status, STATUS_INVALID_INPUT, 'profile section: need at least degree + 1 points')
+      return
+    end if
+    allocate (pts(2, n), v(n))
+    pts(1, :) = y; pts(2, :) = z
+    v(1) = 0
+    do i = 2, n
+      v(i) = v(i - 1) + norm2(pts(:, i) - pts(:, i - 1))
+      if (.not. v(i) > v(i - 1)) then
+        write (buf, '(i0)') i
+        call set_status(status, STATUS_INVALID_INPUT, 'profile section: point ' // trim(buf) // &
+                        ' repeats the point before it')
+        return
+      end if
+    end do
+    k = polyline_self_intersection(y, z)
+    if (k > 0) then
+      write (buf, '(i0, a, i0)') k, ' and ', k + 1
+      call set_status(status, STATUS_INVALID_INPUT, 'profile section: the profile intersects itself ' // &
+                      '(the segment between points ' // trim(buf) // ' crosses a later one)')
+      return
+    end if
+    s%closed = n > 3 .and. y(1) == y(n) .and. z(1) == z(n)
+    call s%spline%fit(pts, smoothing, degree, status, parameters=v, periodic=s%closed)
+    if (.not. status%ok()) call prefix_status(status, 'profile section')
+  end function new_profile_section
+
+  pure subroutine profile_evaluate(self, u, v, order, p, status)
+    class(profile_section_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(section_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    real(wp) :: d(2, 0:3)
+    associate (unused => u)
+    end associate
+    p%order = order
+    call self%spline%evaluate(v, d(:, 0:order), order)
+    p%s(:, 0, 0:order) = d(:, 0:order)
+    status%code = STATUS_OK
+  end subroutine profile_evaluate
+
+  pure subroutine profile_range(self, v_min, v_max)
+    class(profile_section_t), intent(in) :: self
+    real(wp), intent(out) :: v_min, v_max
+    real(wp) :: d(2)
+    d = self%spline%domain()
+    v_min = d(1); v_max = d(2)
+  end subroutine profile_range
+
+  pure logical function profile_periodic(self) result(periodic)
+    class(profile_section_t), intent(in) :: self
+    periodic = self%closed
+  end function profile_periodic
 
   ! ----------------------------------------------------------------- blended
 

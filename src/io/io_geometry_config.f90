@@ -12,7 +12,8 @@ module io_geometry_config
                             spline_centerline_t, new_spline_centerline
   use geometry_curve_frame, only: horizon_parallel_tol
   use geometry_cross_section, only: cross_section_t, section_holder_t, circle_section_t, &
-    ellipse_section_t, flume_section_t, blended_section_t, new_blended_section
+    ellipse_section_t, flume_section_t, blended_section_t, new_blended_section, profile_section_t, &
+    new_profile_section, polyline_self_intersection
   use geometry_tube, only: tube_surface_t, new_tube_surface
   use geometry_slide_elements, only: slide_element_t, element_chain_curve_t, new_element_chain
   use geometry_blended_surface, only: blended_surface_t, blend_patch_t, new_blended_surface
@@ -24,7 +25,7 @@ module io_geometry_config
     format_vector, lower
   implicit none (type, external)
   private
-  public :: read_geometry_config, geometry_groups, geometry_kinds, profile_self_intersection
+  public :: read_geometry_config, geometry_groups, geometry_kinds
 
   character(len=*), parameter :: geometry_groups(6) = [character(len=14) :: 'geometry', 'centerline', &
     'cross_section', 'slide_elements', 'blended', 'bspline']
@@ -346,21 +347,26 @@ contains
       wall(max_sections), joint_width_deg(max_sections)
     real(wp) :: transition_midpoint(max_sections - 1), transition_end(max_sections - 1)
     real(wp) :: u_mid(max_sections - 1), u_end(max_sections - 1), total
+    real(wp) :: profile_y(max_profile), profile_z(max_profile), profile_smoothing
+    integer :: n_profile, profile_degree, k
     type(section_holder_t) :: parts(max_sections)
     type(blended_section_t) :: blend
+    type(profile_section_t) :: profile
     type(status_t) :: built
     character(len=256) :: msg
     character(len=*), parameter :: g = 'cross_section'
     namelist /cross_section/ n_sections, kind, radius, half_width, half_height, wall, joint_width_deg, &
-      transition_midpoint, transition_end
+      transition_midpoint, transition_end, n_profile, profile_y, profile_z, profile_smoothing, profile_degree
     n_sections = 1
     kind = 'circle'; radius = 0.5_wp; half_width = 0.5_wp; half_height = 0.5_wp
     wall = 0.164_wp; joint_width_deg = 0.05_wp*180/pi
     transition_midpoint = 0; transition_end = 0
+    n_profile = 0; profile_y = 0; profile_z = 0; profile_smoothing = 0; profile_degree = 5
     read (input%lines, nml=cross_section, iostat=ios, iomsg=msg)
     if (ios > 0) then
       call namelist_read_error(input, g, msg, [character(len=19) :: 'n_sections', 'kind', 'radius', &
-        'half_width', 'half_height', 'wall', 'joint_width_deg', 'transition_midpoint', 'transition_end'], status)
+        'half_width', 'half_height', 'wall', 'joint_width_deg', 'transition_midpoint', 'transition_end', &
+        'n_profile', 'profile_y', 'profile_z', 'profile_smoothing', 'profile_degree'], status)
       return
     end if
     if (n_sections < 1 .or. n_sections > max_sections) then
@@ -389,9 +395,38 @@ contains
         if (status%ok()) allocate (parts(i)%section, source=flume_section_t(radius=radius(i), wall=wall(i), &
                                    transition=joint_width_deg(i)*pi/180))
       case ('profile')
-        call set_status(status, STATUS_INVALID_INPUT, input%name // ': &cross_section: kind(' // itoa(i) // &
-                        ') = ''profile'' needs the spline curve layer (numerics_spline_curve), ' // &
-                        'not available in this build')
+        if (n_profile < 4 .or. n_profile > max_profile) then
+          call invalid(input, g, 'n_profile', format_real(real(n_profile, wp)), &
+                       'a profile needs 4 to 400 points (profile_y, profile_z)', status)
+          return
+        end if
+        call check_finite_vector(input, g, 'profile_y', profile_y(1:n_profile), status)
+        call check_finite_vector(input, g, 'profile_z', profile_z(1:n_profile), status)
+        call check_nonnegative(input, g, 'profile_smoothing', profile_smoothing, 'm^2', status)
+        if (status%ok() .and. (profile_degree < 3 .or. profile_degree > 5)) &
+          call invalid(input, g, 'profile_degree', format_real(real(profile_degree, wp)), 'must be 3, 4 or 5', status)
+        if (.not. status%ok()) return
+        do k = 2, n_profile
+          if (profile_y(k) == profile_y(k - 1) .and. profile_z(k) == profile_z(k - 1)) then
+            call invalid(input, g, 'profile_y(' // itoa(k) // '), profile_z(' // itoa(k) // ')', &
+                         format_vector([profile_y(k), profile_z(k)]), 'repeats the point before it', status)
+            return
+          end if
+        end do
+        k = polyline_self_intersection(profile_y(1:n_profile), profile_z(1:n_profile))
+        if (k > 0) then
+          call invalid(input, g, 'profile_y, profile_z', 'points ' // itoa(k) // ' to ' // itoa(k + 1), &
+                       'the profile intersects itself (this segment crosses a later one)', status)
+          return
+        end if
+        profile = new_profile_section(profile_y(1:n_profile), profile_z(1:n_profile), profile_smoothing, &
+                                      profile_degree, built)
+        if (.not. built%ok()) then
+          status = built
+          call prefix_status(status, input%name // ': &' // g)
+          return
+        end if
+        allocate (parts(i)%section, source=profile)
       end select
       if (.not. status%ok()) return
     end do
@@ -550,36 +585,6 @@ contains
     end if
     allocate (surface, source=b)
   end subroutine read_bspline
-
-  !> Index of the first segment of the polyline (y, z) that crosses a later,
-  !> non-adjacent segment (0: no self-intersection).
-  pure integer function profile_self_intersection(y, z) result(first)
-    real(wp), intent(in) :: y(:), z(:)
-    integer :: i, j, n
-    n = size(y)
-    first = 0
-    do i = 1, n - 1
-      do j = i + 2, n - 1
-        if (segments_cross([y(i), z(i)], [y(i + 1), z(i + 1)], [y(j), z(j)], [y(j + 1), z(j + 1)])) then
-          first = i
-          return
-        end if
-      end do
-    end do
-  end function profile_self_intersection
-
-  pure logical function segments_cross(p1, p2, q1, q2) result(crosses)
-    real(wp), intent(in) :: p1(2), p2(2), q1(2), q2(2)
-    real(wp) :: d1, d2, d3, d4
-    d1 = orient(q1, q2, p1); d2 = orient(q1, q2, p2)
-    d3 = orient(p1, p2, q1); d4 = orient(p1, p2, q2)
-    crosses = (d1*d2 < 0) .and. (d3*d4 < 0)
-  end function segments_cross
-
-  pure real(wp) function orient(a, b, c)
-    real(wp), intent(in) :: a(2), b(2), c(2)
-    orient = (b(1) - a(1))*(c(2) - a(2)) - (b(2) - a(2))*(c(1) - a(1))
-  end function orient
 
   pure function cross3(a, b) result(c)
     real(wp), intent(in) :: a(3), b(3)
