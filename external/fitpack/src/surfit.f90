@@ -145,8 +145,9 @@ end subroutine fporde
 !> right-hand side adds to sq. The remaining rank x n trapezoidal system B c = g
 !> has the minimum-norm solution c = B' v with (R R') v = g, where B = R U,
 !> R upper triangular, is obtained by rotating the columns of the dropped
-!> unknowns into the kept triangle. a and f are overwritten. Work: aa(n,m),
-!> ff(n), h(m).
+!> unknowns into the kept triangle. sq also receives, per dropped row, the
+!> change of its squared residual when its small diagonal is restored. a and
+!> f are overwritten. Work: aa(n,m), ff(n), h(m).
 pure subroutine fprank(a, f, n, m, na, tol, c, sq, rank, aa, ff, h)
   use, intrinsic :: iso_fortran_env, only: real64
   use fitpack_interfaces, only: fpgivs, fprota
@@ -259,11 +260,27 @@ pure subroutine fprank(a, f, n, m, na, tol, c, sq, rank, aa, ff, h)
     end do
     ff(kk) = store/aa(kk, 1)
   end do
-  ! c = B' v
-  do kk = 1, rank
-    i = keep(kk)
-    do j = 1, min(m, n - i + 1)
-      c(i + j - 1) = c(i + j - 1) + a(i, j)*ff(kk)
+  ! c = B' v, each c(i) summed from row i upwards
+  do i = 1, n
+    store = 0
+    do j = 1, min(i, m)
+      ii = i + 1 - j
+      if (.not. kept(ii)) cycle
+      store = store + a(ii, j)*ff(pos(ii))
     end do
+    c(i) = store
+  end do
+  ! a dropped row i reads d c(i) + sum_j a(i,j) c(i+j-1) = f(i) with its small
+  ! diagonal d set to zero; restoring d changes the row's squared residual by
+  ! d c(i) (d c(i) - 2 (f(i) - sum_j a(i,j) c(i+j-1))), which is added to sq
+  ! (as the genuine routine does: checked against scipy 1.10.1's surfit)
+  do i = 1, n
+    if (kept(i)) cycle
+    store = 0
+    do j = 2, min(m, n - i + 1)
+      store = store + a(i, j)*c(i + j - 1)
+    end do
+    yi = a(i, 1)*c(i)
+    sq = sq + yi*(yi - 2*(f(i) - store))
   end do
 end subroutine fprank
