@@ -66,7 +66,9 @@ contains
   !> weights: w_i > 0 (default 1). start_derivatives(dim, nb), end_derivatives(dim, ne):
   !> column j is the (j-1)-th derivative prescribed at the first / last parameter
   !> (position first); needs an odd degree and nb, ne <= (degree+1)/2 (concur).
+  !> Without parameters the derivatives refer to the chord-length parameter on [0,1].
   !> periodic: closed curve (clocur); the first and last point must coincide.
+  !> The storage allows the interpolating spline, so FITPACK's ier = 1 cannot occur.
   subroutine fit(self, points, smoothing, degree, status, parameters, weights, start_derivatives, &
                  end_derivatives, periodic)
     class(spline_curve_t), intent(inout) :: self
@@ -363,8 +365,10 @@ contains
   end function in_domain
 
   !> derivatives(:, j) = j-th derivative of r at u, j = 0..nd (zero above the
-  !> degree). derivatives must have at least dimension rows and nd+1 columns.
-  !> A point on an interior knot gets the right-hand derivatives. No allocation.
+  !> degree); derivatives should have dimension rows and nd+1 columns (only
+  !> what fits is filled). Open curves clamp u to the domain (as FITPACK's
+  !> evaluators), closed ones reduce it by the period. A point on an interior
+  !> knot gets the right-hand derivatives. No allocation.
   pure subroutine evaluate(self, u, derivatives, nd)
     class(spline_curve_t), intent(in) :: self
     real(wp), intent(in) :: u
@@ -377,7 +381,7 @@ contains
     if (.not. allocated(self%knots)) return
     k = self%degree
     k1 = k + 1
-    idim = self%dimension
+    idim = min(self%dimension, size(derivatives, 1))
     x = in_domain(self, u)
     l = find_interval(self%knots, k, x)
     lk = l - k1
@@ -400,7 +404,7 @@ contains
         end do
       end do
       v(1:idim, 1:k1) = self%coefficients(1:idim, lk + 1:lk + k1)
-      do jd = 0, min(nd, k)
+      do jd = 0, min(nd, k, ubound(derivatives, 2))
         if (jd > 0) then
           ! coefficients of the jd-th derivative (de Boor's difference formula)
           ak = k - jd + 1
