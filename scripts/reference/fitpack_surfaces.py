@@ -292,6 +292,27 @@ def main():
     surfit_lsq_case("collinear_lsq_k22", "40 points near the line y = 0.3 + 0.4 x, given knots, biquadratic: "
                     "rank-deficient (ier < -2)", xc, yc, zc, np.ones_like(xc), bbox, 2, 2,
                     np.array([0.2, 0.4, 0.6, 0.8]), np.array([0.3, 0.5, 0.7]))
+    # more knots in y than in x: surfit swaps x and y to narrow the band
+    rng = np.random.default_rng(5)
+    xs = rng.random(60)
+    ys = rng.random(60)
+    zs = np.sin(2 * xs) + np.sin(9 * ys) + 0.01 * rng.standard_normal(60)
+    surfit_case("swap_k33", "60 points varying faster in y: knots mostly in y, x and y swapped internally, s = 0.003",
+                xs, ys, zs, np.ones(60), bbox, 3, 3, 0.003, 12, 14)
+    # clustered data: the smoothing spline itself is rank deficient
+    rng = np.random.default_rng(9)
+    xq = np.r_[rng.random(30) * 0.02, rng.random(10)]
+    yq = rng.random(40)
+    zq = np.sin(40 * xq) + yq
+    surfit_case("cluster_rank", "30 of 40 points in x < 0.02, s = 1e-5: rank-deficient smoothing spline (ier < -2)",
+                xq, yq, zq, np.ones(40), bbox, 3, 3, 1e-5, 15, 15)
+    # s = 0, bilinear, 18 noisy points: knots added until more coefficients than data (ier = 4)
+    rng = np.random.default_rng(0)
+    x4 = rng.random(18)
+    y4 = rng.random(18)
+    z4 = np.sin(5 * x4) * np.cos(4 * y4) + 0.1 * rng.standard_normal(18)
+    surfit_case("more_coef_than_data", "18 noisy points, kx = ky = 1, s = 0: ier = 4",
+                x4, y4, z4, np.ones(18), bbox, 1, 1, 0.0, 16, 16)
     # thesis 3.5.3.3: paraboloids (3.58), 13 x 13 points, degree 5, s = 0.05
     for i, (a2, h) in enumerate([(3.0, 2.0), (0.5, 0.5)]):
         u = np.linspace(-h, h, 13)
