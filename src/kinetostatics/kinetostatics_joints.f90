@@ -180,11 +180,13 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     type(status_t), intent(inout) :: status
+    real(wp) :: turn(3, 3)
     associate (unused_status => status)
     end associate
+    turn = axis_rotation(self%axis, scalars(self%variable)%q)
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
       self%n = matmul(i%rot, self%axis)
-      o%rot = matmul(i%rot, axis_rotation(self%axis, scalars(self%variable)%q))
+      o%rot = matmul(i%rot, turn)
       o%r = i%r
     end associate
   end subroutine revolute_position
@@ -284,16 +286,19 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: ra(3, 3), rb(3, 3)
+    real(wp) :: ra(3, 3), rb(3, 3), t1(3, 3), t2(3, 3), t3(3, 3)
     associate (unused_status => status)
     end associate
+    t1 = rot_x(scalars(self%variables(1))%q)
+    t2 = rot_y(scalars(self%variables(2))%q)
+    t3 = rot_z(scalars(self%variables(3))%q)
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
-      ra = matmul(i%rot, rot_x(scalars(self%variables(1))%q))
-      rb = matmul(ra, rot_y(scalars(self%variables(2))%q))
+      ra = matmul(i%rot, t1)
+      rb = matmul(ra, t2)
       self%n(:, 1) = i%rot(:, 1)
       self%n(:, 2) = ra(:, 2)
       self%n(:, 3) = rb(:, 3)
-      o%rot = matmul(rb, rot_z(scalars(self%variables(3))%q))
+      o%rot = matmul(rb, t3)
       o%r = i%r
     end associate
   end subroutine spherical_position

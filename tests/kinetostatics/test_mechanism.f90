@@ -9,6 +9,8 @@ program test_mechanism
   use numerics_ode, only: ode_integrator_t, ode_options_t
   use kinetostatics_mechanism, only: mechanism_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_joints, only: new_revolute, new_rigid_offset
+  use kinetostatics_mass, only: new_mass_element, new_applied_force
   use kinetostatics_models, only: pendulum_params_t, build_pendulum, fourbar_params_t, build_fourbar, &
     fourbar_assembly
   implicit none (type, external)
@@ -19,6 +21,7 @@ program test_mechanism
   call pendulum_energy(2)
   call double_pendulum_mass_matrix()
   call fourbar_run()
+  call applied_force()
   call bad_inputs()
   call finish_tests('test_mechanism')
 
@@ -220,6 +223,44 @@ contains
     call check(drift <= 1e-9_wp*scale, 'four-bar: energy conserved to 1e-9')
     print '(a, es10.2, a, es10.2)', '  four-bar: closure residual ', worst, ', relative energy drift ', drift/scale
   end subroutine fourbar_run
+
+  !> A constant horizontal force F on the bob (an applied-force element at the
+  !> bob's frame) holds the pendulum at tan(theta) = -F/(m g): q'' = 0 there
+  !> (to rounding: 1e-13 rad/s^2 against terms of size g/L ~ 10).
+  subroutine applied_force()
+    type(pendulum_params_t) :: p
+    type(mechanism_t) :: m
+    type(status_t) :: st
+    real(wp) :: qdd(1), theta_eq
+    integer :: bob
+    call build_pendulum_with_force(p, 2.0_wp, m, bob, st)
+    theta_eq = -atan(2.0_wp/9.80665_wp)   ! theta > 0 swings the bob towards -x
+    call m%dynamics([theta_eq], [0.0_wp], qdd, st)
+    call check(st%ok(), 'pendulum with an applied force: '//st%text())
+    call check(abs(qdd(1)) <= 1e-13_wp, 'applied force element: equilibrium at tan(theta) = F/(m g)')
+    call m%dynamics([theta_eq - 0.1_wp], [0.0_wp], qdd, st)
+    call check(qdd(1) > 0, 'applied force element: restoring beyond the equilibrium')
+  end subroutine applied_force
+
+  !> The simple pendulum plus a rigid offset to the bob and a force +F x there.
+  subroutine build_pendulum_with_force(p, force, m, bob, status)
+    type(pendulum_params_t), intent(in) :: p
+    real(wp), intent(in) :: force
+    type(mechanism_t), intent(out) :: m
+    integer, intent(out) :: bob
+    type(status_t), intent(inout) :: status
+    integer :: link, t1
+    link = m%add_frame('link1')
+    t1 = m%add_scalar('theta1')
+    call m%add_element(new_revolute('hinge1', 1, link, t1, [0.0_wp, 1.0_wp, 0.0_wp]))
+    call m%add_element(new_mass_element('bob1', link, p%mass(1), reshape([(0.0_wp, bob = 1, 9)], [3, 3]), &
+                                        [0.0_wp, 0.0_wp, -p%length(1)], p%gravity, status))
+    bob = m%add_frame('bob')
+    call m%add_element(new_rigid_offset('rod', link, bob, [0.0_wp, 0.0_wp, -p%length(1)]))
+    call m%add_element(new_applied_force('push', bob, [force, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], .false.))
+    call m%set_coordinates([t1])
+    call m%finalize(status)
+  end subroutine build_pendulum_with_force
 
   subroutine bad_inputs()
     type(fourbar_params_t) :: p

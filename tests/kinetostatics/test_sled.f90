@@ -18,6 +18,7 @@ program test_sled
 
   call incline(0.0_wp)
   call incline(0.7_wp)
+  call viscous_plane()
   call bowl(0.0_wp)
   call bowl(0.15_wp)
   call finish_tests('test_sled')
@@ -70,6 +71,10 @@ contains
       call check_close(m%contacts(1)%normal_force, m%contacts(2)%normal_force, 1e-10_wp, 0.0_wp, &
                        'incline: centre of mass halfway: equal normal forces')
       call check(res <= 1e-10_wp*p%mass*g, 'incline: inverse dynamics with the friction found has zero residual')
+      ! the cut force of the plane-point condition along the front normal z_D2
+      ! is the force on the bar's front end along that normal: N_front
+      call check_close(m%lambda(3), m%contacts(2)%normal_force, 1e-10_wp, 0.0_wp, &
+                       'incline: cut force of front_z = normal force at the front contact')
     end associate
     opt%rtol = 1e-10_wp
     opt%atol = 1e-12_wp
@@ -81,6 +86,33 @@ contains
     call check_close(y(1), q0(1) + qd0(1) + acc/2, 1e-8_wp, 0.0_wp, 'incline: u(1 s) = u0 + u0'' + a/2')
     call check_close(y(4), qd0(1) + acc, 1e-8_wp, 0.0_wp, 'incline: u''(1 s) = u0'' + a')
   end subroutine incline
+
+  !> On a horizontal plane with viscous friction c at both contacts the bar
+  !> translating along its axis slows as u' = u0' exp(-2 c t/m).
+  subroutine viscous_plane()
+    type(sled_params_t) :: p
+    class(surface_t), allocatable :: plane
+    type(mechanism_ode_t), target :: sys
+    type(ode_integrator_t) :: integ
+    type(ode_options_t) :: opt
+    type(status_t) :: st
+    real(wp) :: y(6), t
+    plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], st)
+    p%viscous = 3
+    y = [0.0_wp, 0.0_wp, 0.0_wp, 2.0_wp, 0.0_wp, 0.0_wp]
+    call build_sled(p, plane, y(1:3), sys%mechanism, st)
+    call sys%mechanism%check_start(y(1:3), st)
+    opt%rtol = 1e-11_wp
+    opt%atol = 1e-13_wp
+    call integ%start(sys, 0.0_wp, y, opt, st)
+    call integ%advance(1.5_wp, t, y, st)
+    call check(st%ok(), 'viscous plane: integrated: '//st%text())
+    ! rtol 1e-11 over ~100 steps of a smooth exponential
+    call check_close(y(4), 2*exp(-2*p%viscous*1.5_wp/p%mass), 1e-8_wp, 0.0_wp, &
+                     'viscous friction: u'' = u0'' exp(-2 c t/m)')
+    call check_close(y(1), 2*p%mass/(2*p%viscous)*(1 - exp(-2*p%viscous*1.5_wp/p%mass)), 1e-8_wp, 0.0_wp, &
+                     'viscous friction: u = u0'' m/(2c) (1 - exp(-2 c t/m))')
+  end subroutine viscous_plane
 
   !> In a paraboloid bowl: without friction energy is conserved (drift < 1e-8
   !> of the energy scale m g L + T0 over 10 s) and the loop stays closed; with
