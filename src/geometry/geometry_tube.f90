@@ -182,15 +182,15 @@ contains
     type(curve_point_t) :: c
     type(status_t) :: st
     integer :: i
-    character(len=200) :: buf
+    character(len=300) :: buf
     call self%centerline%domain(a, b)
     worst_ratio = 0; worst_u = a; worst_chi = 0; worst_extent = 0
     do i = 0, n_samples - 1
       u = a + (b - a)*i/real(max(n_samples - 1, 1), wp)
       call self%frame(u, 1, f, st, c)
       if (.not. st%ok()) then
-        write (buf, '(a, es12.5, a, f0.3, a, 3(f0.3, 1x), a)') ' at u = ', u, ' (arc length ', &
-          self%arc_length(u), ' m, point ', c%d(:, 0), ')'
+        buf = ' at u = ' // num(u) // ' (arc length ' // num(self%arc_length(u)) // ' m, point [' // &
+              num(c%d(1, 0)) // ', ' // num(c%d(2, 0)) // ', ' // num(c%d(3, 0)) // '] m)'
         status = st
         call prefix_status(status, 'tube surface' // trim(buf))
         return
@@ -202,11 +202,19 @@ contains
     end do
     if (worst_ratio >= 1) then
       call self%centerline%evaluate(worst_u, 0, c, st)
-      write (buf, '(a, f0.4, a, f0.4, a, es12.5, a, f0.3, a, 3(f0.3, 1x), a)') &
-        'radius of curvature ', 1/worst_chi, ' m below the cross-section extent ', worst_extent, &
-        ' m at u = ', worst_u, ' (arc length ', self%arc_length(worst_u), ' m, point ', c%d(:, 0), &
-        '): the tube would fold onto itself'
+      buf = 'radius of curvature ' // num(1/worst_chi) // ' m below the cross-section extent ' // &
+            num(worst_extent) // ' m at u = ' // num(worst_u) // ' (arc length ' // &
+            num(self%arc_length(worst_u)) // ' m, point [' // num(c%d(1, 0)) // ', ' // num(c%d(2, 0)) // &
+            ', ' // num(c%d(3, 0)) // '] m): the tube would fold onto itself'
       call set_status(status, STATUS_INVALID_INPUT, 'tube surface: ' // trim(buf))
     end if
+  contains
+    pure function num(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=24) :: b
+      write (b, '(f12.4)') x
+      text = trim(adjustl(b))
+    end function num
   end subroutine tube_check
 end module geometry_tube
