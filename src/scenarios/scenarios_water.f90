@@ -205,6 +205,9 @@ contains
                            'right water edge (u, v) (2 x n) (4.26)', status)
     call file%write_matrix(g//'left_point', s%left_point(:, :n), 'm', 'left water edge point (3 x n)', status)
     call file%write_matrix(g//'right_point', s%right_point(:, :n), 'm', 'right water edge point (3 x n)', status)
+    call file%write_integers(g//'edge_solved', s%edge_solved(:n), '1', &
+                             '1: edges solved (4.25-4.26); 0: circle estimate (edge beyond the surface, or edges off)', &
+                             status)
     call file%set_attribute('/water', 'outcome', outcome_name(s%outcome), status)
     call file%set_attribute('/water', 'flow_rate_m3_per_s', format_real(s%flow_rate), status)
     mode = 'off'
@@ -275,6 +278,8 @@ contains
     write (output_unit, '(a, i0, a, i0, a)') '  integrator          ', s%stats%steps, ' steps, ', &
       s%stats%rhs_evaluations, ' right-hand sides'
     write (output_unit, '(a, es10.3, a)') '  CPU time            ', cpu, ' s'
+    if (s%edge_failures > 0) write (output_unit, '(a, i0, a)') '  water edges         ', s%edge_failures, &
+      ' samples with the circle estimate (foot beyond the surface); first '//s%edge_message
     if (size(s%stations) > 0) then
       write (output_unit, '(a)') '  station  arc length    time   v middle   v edges (right, left)   speed   height' &
         //'   width'

@@ -50,6 +50,9 @@ module water_flow
     real(wp), allocatable :: normal_force(:), friction_force(:), curvature(:), froude(:)
     real(wp), allocatable :: kinetic(:), potential(:), friction_work(:), correction_work(:)
     real(wp), allocatable :: left_edge(:, :), right_edge(:, :), left_point(:, :), right_point(:, :)
+    integer, allocatable :: edge_solved(:)    ! 1: edges from (4.25-4.26); 0: circle estimate
+    integer :: edge_failures = 0
+    character(len=:), allocatable :: edge_message   ! the first edge failure
     type(water_station_t), allocatable :: stations(:)
     integer :: outcome = OUTCOME_ERROR
     character(len=:), allocatable :: message
@@ -348,7 +351,9 @@ contains
               s%velocity(3, n), s%speed(n), s%height(n), s%width(n), s%area(n), s%radius(n), &
               s%beta(n), s%alpha(n), s%normal_force(n), s%friction_force(n), s%curvature(n), &
               s%froude(n), s%kinetic(n), s%potential(n), s%friction_work(n), s%correction_work(n), &
-              s%left_edge(2, n), s%right_edge(2, n), s%left_point(3, n), s%right_point(3, n))
+              s%left_edge(2, n), s%right_edge(2, n), s%left_point(3, n), s%right_point(3, n), &
+              s%edge_solved(n))
+    s%edge_solved = 0
     s%left_edge = 0; s%right_edge = 0; s%left_point = 0; s%right_point = 0
   end subroutine allocate_series
 
@@ -392,9 +397,16 @@ contains
     if (with_edges) then
       call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
                        s%right_point(:, i), st)
+      s%edge_solved(i) = merge(1, 0, st%ok())
       if (.not. st%ok()) then
-        call prefix_status(st, 'at t = '//real_text(t)//' s')
-        if (status%ok()) status = st
+        ! Near the ends of the slide the foot of an edge can lie beyond the
+        ! surface; keep the circle estimate v -+ (b/2)/|r_v| at the same u, flagged.
+        s%left_edge(:, i) = [y(1), y(2) + 0.5_wp*q%width/norm2(q%p%rv)]
+        s%right_edge(:, i) = [y(1), y(2) - 0.5_wp*q%width/norm2(q%p%rv)]
+        s%left_point(:, i) = q%position + 0.5_wp*q%width*q%y_w
+        s%right_point(:, i) = q%position - 0.5_wp*q%width*q%y_w
+        if (s%edge_failures == 0) s%edge_message = 'at t = '//real_text(t)//' s: '//st%text()
+        s%edge_failures = s%edge_failures + 1
       end if
     end if
   end subroutine record
