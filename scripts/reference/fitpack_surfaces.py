@@ -313,6 +313,16 @@ def main():
     z4 = np.sin(5 * x4) * np.cos(4 * y4) + 0.1 * rng.standard_normal(18)
     surfit_case("more_coef_than_data", "18 noisy points, kx = ky = 1, s = 0: ier = 4",
                 x4, y4, z4, np.ones(18), bbox, 1, 1, 0.0, 16, 16)
+    # 34 of 40 points in x < 0.01: new knots would split intervals worse than 10:1 (ier = 5),
+    # with more knot storage the p-iteration leaves its theory (ier = 2)
+    rng = np.random.default_rng(0)
+    x5 = np.r_[rng.random(34) * 0.01, rng.random(6)]
+    y5 = rng.random(40)
+    z5 = np.sin(30 * x5) + np.cos(20 * y5) + 0.01 * rng.standard_normal(40)
+    surfit_case("no_more_knots", "34 of 40 points in x < 0.01, s = 0.01, nxest = nyest = 12: ier = 5",
+                x5, y5, z5, np.ones(40), bbox, 3, 3, 0.01, 12, 12)
+    surfit_case("s_too_small", "the same data, nxest = nyest = 20: ier = 2",
+                x5, y5, z5, np.ones(40), bbox, 3, 3, 0.01, 20, 20)
     # thesis 3.5.3.3: paraboloids (3.58), 13 x 13 points, degree 5, s = 0.05
     for i, (a2, h) in enumerate([(3.0, 2.0), (0.5, 0.5)]):
         u = np.linspace(-h, h, 13)
