@@ -23,7 +23,8 @@ subroutine fpcurve_core(iopt, idim, m, u, mx, x, w, ub, ue, ib, ie, k, s, nest, 
 
   real(real64), parameter :: half = 0.5_real64, con1 = 0.1_real64, con9 = 0.9_real64, &
                              con4 = 0.04_real64
-  real(real64) :: h(7), xi(10), rhs(nest, 10)
+  real(real64) :: h(7), xi(10)
+  real(real64), allocatable :: rhs(:, :)   ! smoothing right-hand sides (heap: nest can be large)
   real(real64) :: acc, fp0, fpold, fpms, fpart, term, fac, store, rn, p, p1, p2, p3, f1, f2, f3, &
                   pinv, piv, cs, sn, ui, wi
   integer :: nmin, nmax, ib1, ie1, nk1, nfree, nrint, nplus, npl1, iter, it, i, l, &
@@ -168,6 +169,7 @@ subroutine fpcurve_core(iopt, idim, m, u, mx, x, w, ub, ue, ib, ie, k, s, nest, 
   nfree = nk1 - ib - ie
   n8 = n - nmin
   call fpdisc(t, n, k2, b, nest)
+  allocate (rhs(nest, idim))
   p1 = 0
   f1 = fp0 - s
   p3 = -1

@@ -29,7 +29,8 @@ subroutine fpperiodic_core(iopt, idim, m, u, mx, x, w, k, s, nest, tol, maxit, k
 
   real(real64), parameter :: half = 0.5_real64, con1 = 0.1_real64, con9 = 0.9_real64, &
                              con4 = 0.04_real64
-  real(real64) :: h(7), h1(8), h2(8), xi(10), c1(10), rhs(nest, 10), sol(nest)
+  real(real64) :: h(7), h1(8), h2(8), xi(10), c1(10)
+  real(real64), allocatable :: rhs(:, :), sol(:)   ! heap: nest can be large
   real(real64) :: acc, per, fp0, fpold, fpms, fpart, term, store, rn, p, p1, p2, p3, f1, f2, f3, &
                   pinv, piv, cs, sn, ui, wi, d1
   integer :: m1, nmin, nmax, nk1, n7, n10, n11, n8, nrint, nplus, npl1, iter, it, i, j, l, l5, &
@@ -38,6 +39,7 @@ subroutine fpperiodic_core(iopt, idim, m, u, mx, x, w, k, s, nest, tol, maxit, k
 
   m1 = m - 1
   nmin = 2*k1
+  allocate (sol(nest))
   per = u(m) - u(1)
   fp0 = 0
   fpold = 0
@@ -255,6 +257,7 @@ subroutine fpperiodic_core(iopt, idim, m, u, mx, x, w, k, s, nest, tol, maxit, k
 
   ! smoothing: find p with f(p) = fp(p) - s = 0
   call fpdisc(t, n, k2, b, nest)
+  allocate (rhs(nest, idim))
   nk1 = n - k1
   n7 = nk1 - k
   n10 = n7 - k
@@ -459,8 +462,8 @@ contains
 
   !> Rotates the row (h1: band part starting at column lstart, h2: border
   !> part) into the bordered triangle [gb gd] with nband band columns of
-  !> width bw and nb border columns; right-hand sides xi against r (column
-  !> stride ldr... one column per coordinate).
+  !> width bw and nb border columns; right-hand sides xi(1..idim) against r,
+  !> one column per coordinate (leading dimension n for z, nest for rhs).
   subroutine rotate_bordered_row(lstart, nband, bw, nb, gb, gd, r)
     integer, intent(in) :: lstart, nband, bw, nb
     real(real64), intent(inout) :: gb(nest, bw), gd(nest, nb), r(*)
