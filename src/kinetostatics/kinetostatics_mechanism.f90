@@ -757,6 +757,11 @@ contains
       end do
       if (consistent) exit
     end do
+    if (.not. consistent) then
+      call set_status(status, STATUS_DOMAIN, 'Coulomb friction: no consistent signs of the normal forces '// &
+                      '(the friction law has no unique solution here, a Painleve-type paradox)')
+      return
+    end if
     qdd = self%block_rhs(1:self%f)
     self%qdd = qdd
     do k = 1, nc

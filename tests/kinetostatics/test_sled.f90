@@ -16,8 +16,9 @@ program test_sled
 
   real(wp), parameter :: g = 9.80665_wp
 
-  call incline(0.0_wp)
-  call incline(0.7_wp)
+  call incline(0.0_wp, 1.0_wp)
+  call incline(0.7_wp, 1.0_wp)
+  call incline(0.3_wp, -1.0_wp)
   call viscous_plane()
   call bowl(0.0_wp)
   call bowl(0.15_wp)
@@ -33,9 +34,11 @@ contains
   end function unit
 
   !> On a plane inclined by theta with Coulomb mu the bar slides straight down
-  !> with u'' = g (sin theta - mu cos theta) whatever its heading phi.
-  subroutine incline(phi)
-    real(wp), intent(in) :: phi
+  !> with u'' = g (sin theta - mu cos theta) whatever its heading phi. With
+  !> sigma = -1 the Darboux z axes point into the plane, N comes out negative
+  !> and the friction, |N|-proportional, must be the same.
+  subroutine incline(phi, sigma)
+    real(wp), intent(in) :: phi, sigma
     real(wp), parameter :: theta = 20*pi/180, mu = 0.2_wp
     type(sled_params_t) :: p
     class(surface_t), allocatable :: plane
@@ -44,11 +47,12 @@ contains
     type(ode_options_t) :: opt
     type(status_t) :: st
     real(wp) :: qdd(3), acc, y(6), t, res, q0(3), qd0(3)
-    character(len=8) :: label
+    character(len=20) :: label
 
-    write (label, '(f4.2)') phi
+    write (label, '(f4.2, a, f4.1)') phi, ', sigma ', sigma
     plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [cos(theta), 0.0_wp, -sin(theta)], [0.0_wp, 1.0_wp, 0.0_wp], st)
     p%mu = mu
+    p%sigma = sigma
     q0 = [0.5_wp, 0.2_wp, phi]
     qd0 = [1.0_wp, 0.0_wp, 0.0_wp]
     call build_sled(p, plane, q0, sys%mechanism, st)
@@ -66,7 +70,7 @@ contains
       call check_close(qdd(1), acc, 1e-8_wp, 0.0_wp, 'incline: u'''' = g (sin theta - mu cos theta), phi = '//label)
       call check(abs(qdd(2)) <= 1e-8_wp*g .and. abs(qdd(3)) <= 1e-8_wp*g, &
                  'incline: v'''' = phi'''' = 0, phi = '//label)
-      call check_close(m%contacts(1)%normal_force + m%contacts(2)%normal_force, p%mass*g*cos(theta), 1e-10_wp, &
+      call check_close(sigma*(m%contacts(1)%normal_force + m%contacts(2)%normal_force), p%mass*g*cos(theta), 1e-10_wp, &
                        0.0_wp, 'incline: N_rear + N_front = m g cos theta')
       call check_close(m%contacts(1)%normal_force, m%contacts(2)%normal_force, 1e-10_wp, 0.0_wp, &
                        'incline: centre of mass halfway: equal normal forces')
