@@ -170,11 +170,12 @@ subroutine fpadpo(idim, t, n, c, nc, k, cp, np, cc, t1, t2)
   integer, intent(in) :: idim, n, nc, k, np
   real(real64), intent(in) :: t(n), cp(np)
   real(real64), intent(inout) :: c(nc), cc(nc), t1(n), t2(n)
-  real(real64) :: c1(n), c2(n)
+  real(real64), allocatable :: c1(:), c2(:)   ! heap: n can be large
   integer :: j, k1, k2, nn, nn2, l, ll, nk1
   k1 = k + 1
   k2 = 2*k1
   nk1 = n - k1
+  allocate (c1(n), c2(n))
   do j = 1, idim
     t1(1:k1) = t(1)
     t1(k1 + 1:k2) = t(n)
