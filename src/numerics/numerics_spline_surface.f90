@@ -227,9 +227,7 @@ contains
     ipar = merge(1, 0, periodic)
     nuest = mu + 4 + 2*ipar(1)
     nvest = mv + 4 + 2*ipar(2)
-    lwrk = 4 + nuest*(mv*3 + 11 + 4*ipar(1)) + nvest*(11 + 4*ipar(2)) + 4*(mu + mv) + &
-      max(3*mu*mv + 2*ipar(1)*3*mv + 2*ipar(2)*3*mu, nuest*mv)
-    lwrk = lwrk + 4*(mu + mv) + 64 + nuest*mv*3 + 3*mu*mv
+    lwrk = 4 + nuest*(mv*3 + 11 + 4*ipar(1)) + nvest*(11 + 4*ipar(2)) + 4*(mu + mv) + max(nuest, mv)*3
     kwrk = 3 + mu + mv + nuest + nvest
     allocate (f(3*mu*mv), tu(nuest), tv(nvest), c(3*(nuest - 4)*(nvest - 4)), wrk(lwrk), iwrk(kwrk))
     do l = 1, 3

@@ -12,7 +12,9 @@
 !> Coefficients: c((nu-4)*(nv-4)*(l-1)+(nv-4)*(i-1)+j); on a periodic
 !> direction the last three coefficient lines repeat the first three.
 !> lwrk >= 4+nuest*(mv*idim+11+4*ipar(1))+nvest*(11+4*ipar(2))+4*(mu+mv)
-!>         +max(nuest,mv)*idim,  kwrk >= 3+mu+mv+nuest+nvest.
+!>         +max(nuest,mv)*idim,  kwrk >= 3+mu+mv+nuest+nvest (checked as
+!> Dierckx's rules; wrk/iwrk keep fp0, the knot counts and residual sums for
+!> iopt = 1, while the grid solver allocates its own arrays).
 subroutine parsur(iopt, ipar, idim, mu, u, mv, v, f, s, nuest, nvest, nu, tu, nv, tv, c, fp, wrk, lwrk, &
                   iwrk, kwrk, ier)
   use, intrinsic :: iso_fortran_env, only: real64

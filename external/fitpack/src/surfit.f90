@@ -26,7 +26,10 @@
 !> lwrk1 >= u v (2+b1+b2) + 2 (u+v+km2 ne+km1 m) + b2 + 1 with u = nxest-kx-1,
 !> v = nyest-ky-1, km1 = max(kx,ky)+1, km2 = km1+1, ne = max(nxest,nyest),
 !> bx = kx v+ky+1, by = ky u+kx+1, b1 = min(bx,by), b2 = bx+v-ky if bx <= by
-!> else by+u-kx (Dierckx's formula); lwrk2 >= u v (b2+1) + b2.
+!> else by+u-kx (Dierckx's formula); lwrk2 >= u v (b2+1) + b2. The sizes are
+!> checked as the original does (so ier = 10 and ier > 10 come out the same);
+!> wrk1(1) keeps fp0 for iopt = 1, wrk2 is fprank's workspace, and the band
+!> matrices and panel lists are allocated inside fpsurf.
 subroutine surfit(iopt, m, x, y, z, w, xb, xe, yb, ye, kx, ky, s, nxest, nyest, nmax, eps, nx, tx, &
                   ny, ty, c, fp, wrk1, lwrk1, wrk2, lwrk2, iwrk, kwrk, ier)
   use, intrinsic :: iso_fortran_env, only: real64
