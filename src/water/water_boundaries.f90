@@ -8,7 +8,7 @@
 !>     (r_D - r_wL).x_D = 0,  (r_D - r_wL).y_D = 0          (4.25), (4.26)
 !> solved by HYBRJ with the analytic Jacobian
 !>     d/du [(r_D - q).x_D] = r_u.x_D + (r_D - q).x_D,u  (x_D,u = frame%a), ...
-!> started from the streamline point moved by +-(b/2)/|r_v| in v.
+!> started from the streamline point moved by +-(b/2) y_w in the tangent plane.
 !> The left edge lies towards +y_w, i.e. towards larger v.
 module water_boundaries
   use base_kinds, only: wp
@@ -43,15 +43,19 @@ contains
     type(edge_system_t) :: sys
     type(nonlinear_options_t) :: options
     type(nonlinear_result_t) :: result
-    real(wp) :: dv, uv(2), base(3)
+    real(wp) :: d(2), uv(2), base(3), e, f, g, det, bu, bv
     type(surface_point_t) :: p
 
     options%xtol = 1e-12_wp
     options%residual_tolerance = 1e-10_wp
     sys%channel => channel
     base = q%position + q%height*q%z_m
-    dv = 0.5_wp*q%width/norm2(q%p%rv)
-    uv = [q%u, q%v + dv]
+    ! first guess: the offset (b/2) y_w in the tangent plane, mapped to (du, dv)
+    e = dot_product(q%p%ru, q%p%ru); f = dot_product(q%p%ru, q%p%rv); g = dot_product(q%p%rv, q%p%rv)
+    bu = 0.5_wp*q%width*dot_product(q%p%ru, q%y_w); bv = 0.5_wp*q%width*dot_product(q%p%rv, q%y_w)
+    det = e*g - f*f
+    d = [(g*bu - f*bv)/det, (e*bv - f*bu)/det]
+    uv = [q%u, q%v] + d
     sys%target = base + 0.5_wp*q%width*q%y_w
     call solve_nonlinear(sys, uv, options, result, status)
     if (.not. status%ok()) then
@@ -61,7 +65,7 @@ contains
     left = uv
     call channel%evaluate(uv(1), uv(2), 0, p, status)
     left_point = p%r
-    uv = [q%u, q%v - dv]
+    uv = [q%u, q%v] - d
     sys%target = base - 0.5_wp*q%width*q%y_w
     call solve_nonlinear(sys, uv, options, result, status)
     if (.not. status%ok()) then
