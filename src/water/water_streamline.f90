@@ -217,6 +217,10 @@ contains
     q%friction = self%f1 + q%chi*self%f2                          ! (4.7)
     if (q%chi_s > 0) q%friction = q%friction + q%chi_s*self%f3
     q%friction = q%friction*q%speed**2
+    if (-dot_product(q%y_m, q%velocity) <= 1e-3_wp*q%speed) then
+      call set_status(status, STATUS_DOMAIN, 'the water flows across the slide or back (beta >= 90 deg)')
+      return
+    end if
     tb = dot_product(q%x_m, q%velocity)/(-dot_product(q%y_m, q%velocity))   ! tan(beta) (4.14)
     q%beta = atan2(dot_product(q%x_m, q%velocity), -dot_product(q%y_m, q%velocity))
 
