@@ -4,7 +4,7 @@
 program test_surfaces_grid
   use, intrinsic :: iso_fortran_env, only: real64
   use fitpack_reference_io, only: reference_table_t, load_table, get_reals, get_int, get_real, has_key
-  use fitpack_surface_interfaces, only: regrid, bispev, parder
+  use fitpack_surface_interfaces, only: regrid, bispev, parder, surfit
   implicit none (type, external)
   ! unique results (s = 0): the same linear system solved by the same rotations
   ! in another order of operations: agreement to rounding, 1e-10 relative.
@@ -21,6 +21,7 @@ program test_surfaces_grid
   if (len_trim(folder) == 0) folder = 'tests/reference/fitpack'
   call regrid_cases(trim(folder)//'/surfaces_regrid.txt')
   call eval_cases(trim(folder)//'/surfaces_eval.txt')
+  call given_knots_and_continuation(trim(folder)//'/surfaces_regrid.txt')
   print '(a, i0, a, i0, a)', 'test_surfaces_grid: ', checks, ' checks, ', failures, ' failed'
   if (failures > 0) error stop 1
 contains
@@ -169,4 +170,84 @@ contains
       if (.false.) print *, has_key(tab, name, 'x')
     end do
   end subroutine eval_cases
+
+  !> What must hold where scipy cannot reach regrid:
+  !>  - iopt = -1 on the knots of regrid_smooth_k33: the least-squares spline on
+  !>    a grid is unique, so it equals surfit's (iopt = -1) on the same points;
+  !>  - iopt = 1 continuing from s1 to s2 < s1 keeps the old knots and reaches
+  !>    |fp - s2| < 0.001 s2, with at least as many knots.
+  subroutine given_knots_and_continuation(path)
+    character(len=*), intent(in) :: path
+    character(len=*), parameter :: name = 'regrid_smooth_k33'
+    type(reference_table_t) :: tab
+    logical :: ok, found
+    integer :: mx, my, nxest, nyest, nx, ny, ier, lwrk, kwrk, i, j, m, nx2, ny2, nc, nmax, lwrk1, lwrk2
+    real(real64) :: fp, fp2, s1, s2
+    real(real64), allocatable :: bbox(:), x(:), y(:), z(:), tx(:), ty(:), c(:), wrk(:), tx_ref(:), ty_ref(:), &
+      xs(:), ys(:), w(:), tx2(:), ty2(:), c2(:), wrk1(:), wrk2(:), tx_first(:)
+    integer, allocatable :: iwrk(:), iwrk2(:)
+    call load_table(path, tab, ok)
+    if (.not. ok) return
+    call get_reals(tab, name, 'bbox', bbox, found)
+    call get_reals(tab, name, 'x', x, found)
+    call get_reals(tab, name, 'y', y, found)
+    call get_reals(tab, name, 'z', z, found)
+    call get_reals(tab, name, 'tx', tx_ref, found)
+    call get_reals(tab, name, 'ty', ty_ref, found)
+    mx = size(x)
+    my = size(y)
+    nxest = mx + 4
+    nyest = my + 4
+    lwrk = 4 + nxest*(my + 11) + nyest*11 + mx*4 + my*4 + max(my, nxest)
+    kwrk = 3 + mx + my + nxest + nyest
+    allocate (tx(nxest), ty(nyest), c((nxest - 4)*(nyest - 4)), wrk(lwrk), iwrk(kwrk))
+    nx = size(tx_ref)
+    ny = size(ty_ref)
+    tx(1:nx) = tx_ref
+    ty(1:ny) = ty_ref
+    call regrid(-1, mx, x, my, y, z, bbox(1), bbox(2), bbox(3), bbox(4), 3, 3, 0.0_real64, nxest, nyest, &
+      nx, tx, ny, ty, c, fp, wrk, lwrk, iwrk, kwrk, ier)
+    call check(ier == 0, 'regrid iopt=-1: ier')
+    m = mx*my
+    allocate (xs(m), ys(m), w(m))
+    do i = 1, mx
+      do j = 1, my
+        xs(my*(i - 1) + j) = x(i)
+        ys(my*(i - 1) + j) = y(j)
+      end do
+    end do
+    w = 1
+    nmax = max(nx, ny)
+    allocate (tx2(nmax), ty2(nmax), c2((nx - 4)*(ny - 4)))
+    tx2 = 0
+    ty2 = 0
+    tx2(1:nx) = tx_ref
+    ty2(1:ny) = ty_ref
+    nx2 = nx
+    ny2 = ny
+    lwrk1 = 100000
+    lwrk2 = 100000
+    allocate (wrk1(lwrk1), wrk2(lwrk2), iwrk2(m + 1000))
+    call surfit(-1, m, xs, ys, z, w, bbox(1), bbox(2), bbox(3), bbox(4), 3, 3, 0.0_real64, nx, ny, nmax, &
+      1.0e-16_real64, nx2, tx2, ny2, ty2, c2, fp2, wrk1, lwrk1, wrk2, lwrk2, iwrk2, m + 1000, ier)
+    call check(ier == 0, 'surfit iopt=-1 on the grid points: ier')
+    nc = (nx - 4)*(ny - 4)
+    ! one unique least-squares solution by two rotation orders: rounding, 1e-10
+    call check_array(c(1:nc), c2(1:nc), 1.0e-10_real64, 0.0_real64, 'regrid iopt=-1 equals surfit iopt=-1')
+    call check(abs(fp - fp2) <= 1.0e-10_real64*fp2, 'regrid iopt=-1: fp equals surfit''s')
+    ! continuation
+    s1 = 0.1_real64
+    s2 = 0.03_real64
+    call regrid(0, mx, x, my, y, z, bbox(1), bbox(2), bbox(3), bbox(4), 3, 3, s1, nxest, nyest, &
+      nx, tx, ny, ty, c, fp, wrk, lwrk, iwrk, kwrk, ier)
+    call check(ier == 0 .and. abs(fp - s1) < 1.0e-3_real64*s1, 'regrid s1: fp = s1')
+    tx_first = tx(1:nx)
+    nx2 = nx
+    ny2 = ny
+    call regrid(1, mx, x, my, y, z, bbox(1), bbox(2), bbox(3), bbox(4), 3, 3, s2, nxest, nyest, &
+      nx, tx, ny, ty, c, fp, wrk, lwrk, iwrk, kwrk, ier)
+    call check(ier == 0 .and. abs(fp - s2) < 1.0e-3_real64*s2, 'regrid iopt=1 to s2: fp = s2')
+    call check(nx >= nx2 .and. ny >= ny2, 'regrid iopt=1: no knots lost')
+    call check(all([(any(abs(tx(1:nx) - tx_first(i)) == 0), i = 1, nx2)]), 'regrid iopt=1: old x knots kept')
+  end subroutine given_knots_and_continuation
 end program test_surfaces_grid
