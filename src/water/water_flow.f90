@@ -286,7 +286,8 @@ contains
                           real_text(model%min_speed)//' m/s) at t = '//real_text(t)//' s, u = '//real_text(y(1)))
         else if (root_index(ROOT_TURN) /= 0) then
           series%outcome = OUTCOME_TURN
-          call set_status(status, STATUS_DOMAIN, 'the water turned back (u'' = 0) at t = ' // &
+          call set_status(status, STATUS_DOMAIN, 'the water turns across the slide or back ' // &
+                          '(angle to the centerline beyond 89.4 deg) at t = ' // &
                           real_text(t)//' s, u = '//real_text(y(1)))
         else if (root_index(ROOT_CRITICAL) /= 0) then
           series%outcome = OUTCOME_CRITICAL

@@ -115,7 +115,8 @@ contains
   end function streamline_root_count
 
   !> g1 = u_end - u (end of slide), g2 = w - min_speed (stall), g3 = criticality
-  !> - min_criticality (approach to Fr = 1), g4 = u' (turning back), then u - u_i.
+  !> - min_criticality (approach to Fr = 1), g4 = cos(beta) - 0.01 (turning across
+  !> or back; R of (4.15) is singular at beta = 90 deg), then u - u_i.
   subroutine streamline_roots(self, t, y, g)
     class(streamline_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
@@ -130,6 +131,7 @@ contains
     g(ROOT_TURN) = y(3)
     call water_point(self, y, wp_, st)
     if (st%ok()) then
+      g(ROOT_TURN) = -dot_product(wp_%y_m, wp_%x_w) - 0.01_wp   ! cos(beta) - 0.01: turning across
       g(ROOT_STALL) = wp_%speed - self%min_speed
       if (self%correction == CORRECTION_OFF) then
         g(ROOT_CRITICAL) = 1
