@@ -158,6 +158,7 @@ contains
       call surf%evaluate(x, y, p, st)
       call check(st%code == STATUS_OK, what//': status')
       call bispev(tx, size(tx), ty, size(ty), c, k(1), k(2), [x], 1, [y], 1, z, wrk, 2000, iwrk, 10, ier)
+      call check(ier == 0, what//': bispev ier')
       call check_close(p%f(1), z(1), 0.0_wp, 1.0e-12_wp*scale, what//': value = bispev')
       do a = 0, min(3, k(1) - 1)
         do b = 0, min(3 - a, k(2) - 1)
@@ -165,6 +166,7 @@ contains
           call parder(tx, size(tx), ty, size(ty), c, k(1), k(2), a, b, [x], 1, [y], 1, z, wrk, 2000, iwrk, &
             10, ier)
           write (label, '(a, i0, i0)') ': partial = parder ', a, b
+          call check(ier == 0, what//trim(label)//' ier')
           ! derivative coefficients grow like (degree / knot spacing)^order
           call check_close(partial(p, a, b, 1), z(1), 0.0_wp, &
             1.0e-11_wp*scale*(k(1)*(size(tx) - 2*k(1)))**a*(k(2)*(size(ty) - 2*k(2)))**b/ &

@@ -212,6 +212,14 @@ contains
     call check(abs(fp - s) <= 1.0e-3_real64*s, 'torus: |fp - s| < 0.001 s')
     call seam_check(tu, nu, tv, nv, c, 1, 'torus u')
     call seam_check(tu, nu, tv, nv, c, 2, 'torus v')
+    ! continuation (iopt = 1) to a smaller s keeps the knots and reaches it
+    i = nu
+    j = nv
+    call parsur(1, [1, 1], 3, mu, u, mv, v, f, s/2, nuest, nvest, nu, tu, nv, tv, c, fp, wrk, lwrk, iwrk, &
+      kwrk, ier)
+    call check(ier <= 0 .and. abs(fp - s/2) <= 1.0e-3_real64*s/2, 'torus iopt=1: |fp - s| < 0.001 s')
+    call check(nu >= i .and. nv >= j, 'torus iopt=1: no knots lost')
+    call seam_check(tu, nu, tv, nv, c, 1, 'torus iopt=1 u')
   end subroutine periodic_torus
 
   function mask_lines(mu, mv) result(mask)
@@ -235,8 +243,8 @@ contains
     real(real64), intent(in) :: tu(:), tv(:), c(:)
     integer, intent(in) :: nu, nv, dir
     character(len=*), intent(in) :: tag
-    real(real64) :: a(5), b(5), w(200), other(5), scale
-    integer :: iw(20), ier, l, nd, nc, k
+    real(real64) :: a(5), b(5), w(4000), other(5), scale
+    integer :: iw(20), ier, ier2, l, nd, nc, k
     character(len=8) :: what
     nc = (nu - 4)*(nv - 4)
     do k = 1, 5
@@ -249,18 +257,19 @@ contains
     do l = 1, 3
       do nd = 0, 2
         if (dir == 1) then
-          call parder(tu, nu, tv, nv, c(nc*(l - 1) + 1:nc*l), 3, 3, nd, 0, [tu(4)], 1, other, 5, a, w, 200, &
+          call parder(tu, nu, tv, nv, c(nc*(l - 1) + 1:nc*l), 3, 3, nd, 0, [tu(4)], 1, other, 5, a, w, 4000, &
             iw, 20, ier)
           call parder(tu, nu, tv, nv, c(nc*(l - 1) + 1:nc*l), 3, 3, nd, 0, [tu(nu - 3)], 1, other, 5, b, w, &
-            200, iw, 20, ier)
+            4000, iw, 20, ier2)
         else
-          call parder(tu, nu, tv, nv, c(nc*(l - 1) + 1:nc*l), 3, 3, 0, nd, other, 5, [tv(4)], 1, a, w, 200, &
+          call parder(tu, nu, tv, nv, c(nc*(l - 1) + 1:nc*l), 3, 3, 0, nd, other, 5, [tv(4)], 1, a, w, 4000, &
             iw, 20, ier)
           call parder(tu, nu, tv, nv, c(nc*(l - 1) + 1:nc*l), 3, 3, 0, nd, other, 5, [tv(nv - 3)], 1, b, w, &
-            200, iw, 20, ier)
+            4000, iw, 20, ier2)
         end if
-        scale = max(maxval(abs(a)), 1.0_real64)
         write (what, '(a, i0, a, i0)') 'l', l, ' d', nd
+        call check(ier == 0 .and. ier2 == 0, tag//': parder at the seam '//trim(what))
+        scale = max(maxval(abs(a)), 1.0_real64)
         call check(maxval(abs(a - b)) <= 1.0e-9_real64*scale, tag//': C2 across the seam '//trim(what))
       end do
     end do
