@@ -135,6 +135,8 @@ module kinetostatics_mechanism
     integer :: closure_solves = 0, hybrj_solves = 0
     ! work arrays
     real(wp), allocatable :: jbeta(:, :), jlu(:, :), work_r(:), gq(:)
+    real(wp), allocatable :: x_r(:), start_r(:), res_r(:), work_f(:), work_c(:)   ! (gfortran puts
+                                                                                  ! automatic arrays on the heap)
     real(wp), allocatable :: chol(:, :), g_mat(:, :), p_mat(:, :), h_mat(:, :), n0(:), block(:, :), &
       block_rhs(:), mu_s(:)
     integer, allocatable :: ipiv(:), ipiv_block(:), coulomb(:)
@@ -295,6 +297,8 @@ contains
     nc = size(self%coulomb)
     allocate (self%lambda(self%r), self%qdd(self%f), self%mass(self%f, self%f), self%bias(self%f))
     allocate (self%jbeta(self%r, self%r), self%jlu(self%r, self%r), self%work_r(self%r), self%gq(self%f))
+    allocate (self%x_r(self%r), self%start_r(self%r), self%res_r(self%r), self%work_f(self%f), &
+              self%work_c(size(self%contacts)))
     allocate (self%chol(self%f, self%f), self%g_mat(nc, self%f), self%p_mat(self%f, nc), &
               self%h_mat(nc, nc), self%n0(nc), self%block(self%f + nc, self%f + nc), &
               self%block_rhs(self%f + nc), self%mu_s(nc))
@@ -469,7 +473,6 @@ contains
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: q(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: x(self%r), start(self%r), res(self%r)
     type(nonlinear_result_t) :: result
     type(status_t) :: solve_status
     integer :: k, it, info
@@ -483,6 +486,7 @@ contains
       return
     end if
     self%closure_solves = self%closure_solves + 1
+    associate (x => self%x_r, start => self%start_r, res => self%res_r)
     do k = 1, self%r
       start(k) = self%scalars(self%beta(k))%q
     end do
@@ -534,6 +538,7 @@ contains
         return
       end if
     end if
+    end associate
     call factor_closure(self, status)
     if (.not. status%ok()) call prefix_status(status, 'closure')
   end subroutine set_positions
@@ -654,7 +659,7 @@ contains
     real(wp), intent(in) :: q(:), qd(:)
     real(wp), intent(out) :: qdd(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: nvec(size(self%contacts)), zero(self%f), unit(self%f), w(3), s_old
+    real(wp) :: w(3), s_old
     integer :: i, c, k, nc, info, it
     logical :: consistent
 
@@ -669,14 +674,16 @@ contains
         ct%load = -ct%viscous*w
       end associate
     end do
-    zero = 0
-    call self%set_accelerations(zero)
+    self%work_f = 0
+    call self%set_accelerations(self%work_f)
     call self%inverse_dynamics(.true., .true.)
     self%bias = self%gq
     nc = size(self%coulomb)
     if (nc > 0) then
-      call self%normal_forces(nvec)
-      self%n0 = nvec(self%coulomb)
+      call self%normal_forces(self%work_c)
+      do k = 1, nc
+        self%n0(k) = self%work_c(self%coulomb(k))
+      end do
     end if
 
     ! M column by column: q'' = e_i with all velocities zero, applied forces off
@@ -689,17 +696,23 @@ contains
       self%contacts(c)%load = 0
     end do
     do i = 1, self%f
-      unit = 0
-      unit(i) = 1
-      call self%set_accelerations(unit)
+      self%work_f = 0
+      self%work_f(i) = 1
+      call self%set_accelerations(self%work_f)
       call self%inverse_dynamics(.true., .false.)
       self%mass(:, i) = -self%gq
       if (nc > 0) then
-        call self%normal_forces(nvec)
-        self%g_mat(:, i) = nvec(self%coulomb)
+        call self%normal_forces(self%work_c)
+        do k = 1, nc
+          self%g_mat(k, i) = self%work_c(self%coulomb(k))
+        end do
       end if
     end do
-    self%chol = 0.5_wp*(self%mass + transpose(self%mass))
+    do i = 1, self%f   ! symmetric part, element-wise (no temporary)
+      do k = 1, self%f
+        self%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
+      end do
+    end do
     call dpotrf('L', self%f, self%chol, self%f, info)
     if (info /= 0) then
       call set_status(status, STATUS_DOMAIN, 'the mass matrix is not positive definite: generalized '// &
@@ -722,8 +735,10 @@ contains
       self%contacts(self%coulomb(k))%load = -self%contacts(self%coulomb(k))%direction
       call self%inverse_dynamics(.false., .false.)
       self%p_mat(:, k) = self%gq
-      call self%normal_forces(nvec)
-      self%h_mat(:, k) = nvec(self%coulomb)
+      call self%normal_forces(self%work_c)
+      do c = 1, nc
+        self%h_mat(c, k) = self%work_c(self%coulomb(c))
+      end do
     end do
     do k = 1, nc
       self%mu_s(k) = self%contacts(self%coulomb(k))%mu
