@@ -47,10 +47,9 @@ contains
     integer :: check_samples
     class(curve_t), allocatable :: centerline
     class(cross_section_t), allocatable :: section
-    type(constant_curve_t) :: horizon
+    class(curve_t), allocatable :: horizon
     type(tube_surface_t) :: tube
     type(status_t) :: built
-    real(wp) :: horizon_vector(3)
 
     call read_geometry_group(input, gkind, check_samples, status)
     if (present(kind)) gkind = kind
@@ -58,15 +57,14 @@ contains
     select case (trim(gkind))
     case ('tube', 'slide')
       if (gkind == 'tube') then
-        call read_centerline(input, centerline, horizon_vector, status)
+        call read_centerline(input, centerline, horizon, status)
       else
         call read_slide_elements(input, centerline, status)
-        horizon_vector = [0.0_wp, 0.0_wp, 1.0_wp]
+        if (status%ok()) allocate (horizon, source=constant_curve_t(value=[0.0_wp, 0.0_wp, 1.0_wp]))
       end if
       if (.not. status%ok()) return
       call read_cross_section(input, centerline, section, status)
       if (.not. status%ok()) return
-      horizon = constant_curve_t(value=horizon_vector)
       tube = new_tube_surface(centerline, horizon, section, built)
       if (built%ok()) call tube%check(check_samples, built)
       if (.not. built%ok()) then
@@ -105,15 +103,18 @@ contains
                    'must lie in [10, 1000000]', status)
   end subroutine read_geometry_group
 
-  !> &centerline: kind = 'line' | 'helix' | 'points', and the horizon vector.
+  !> &centerline: kind = 'line' | 'helix' | 'points', and the horizon field
+  !> (a constant vector, or for points one horizon vector per point, fitted).
   subroutine read_centerline(input, curve, horizon_out, status)
     type(input_text_t), intent(in) :: input
     class(curve_t), allocatable, intent(out) :: curve
-    real(wp), intent(out) :: horizon_out(3)
+    class(curve_t), allocatable, intent(out) :: horizon_out
     type(status_t), intent(inout) :: status
     character(len=8) :: kind
     real(wp) :: start(3), end(3), center(3), radius, rise_per_turn, turns, phase_deg, horizon(3)
     real(wp) :: points(3, max_points), smoothing, start_tangent(3), end_tangent(3)
+    real(wp) :: horizon_points(3, max_points), chord(max_points)
+    type(spline_centerline_t) :: horizon_fit
     integer :: n_points, degree, ios, i
     character(len=256) :: msg
     character(len=*), parameter :: g = 'centerline'
@@ -121,18 +122,18 @@ contains
     type(spline_centerline_t) :: fitted
     type(status_t) :: built
     namelist /centerline/ kind, start, end, center, radius, rise_per_turn, turns, phase_deg, horizon, &
-      n_points, points, smoothing, degree, start_tangent, end_tangent
+      n_points, points, smoothing, degree, start_tangent, end_tangent, horizon_points
     kind = 'line'
     start = [0, 0, 0]; end = [10, 0, 0]
     center = 0; radius = 5; rise_per_turn = 0; turns = 0.25_wp; phase_deg = -90
     horizon = [0, 0, 1]
     n_points = 0; points = 0; smoothing = 0; degree = 5
-    start_tangent = 0; end_tangent = 0
+    start_tangent = 0; end_tangent = 0; horizon_points = 0
     read (input%lines, nml=centerline, iostat=ios, iomsg=msg)
     if (ios > 0) then
       call namelist_read_error(input, g, msg, [character(len=13) :: 'kind', 'start', 'end', 'center', &
         'radius', 'rise_per_turn', 'turns', 'phase_deg', 'horizon', 'n_points', 'points', 'smoothing', &
-        'degree', 'start_tangent', 'end_tangent'], status)
+        'degree', 'start_tangent', 'end_tangent', 'horizon_points'], status)
       return
     end if
     kind = lower(adjustl(kind))
@@ -141,7 +142,7 @@ contains
     if (status%ok() .and. .not. norm2(horizon) > 0) &
       call invalid(input, g, 'horizon', format_vector(horizon), 'must be a non-zero vector', status)
     if (.not. status%ok()) return
-    horizon_out = horizon
+    allocate (horizon_out, source=constant_curve_t(value=horizon))
     select case (trim(kind))
     case ('line')
       call check_finite_vector(input, g, 'start', start, status)
@@ -182,7 +183,19 @@ contains
           return
         end if
         t = (points(:, i) - points(:, i - 1))/norm2(points(:, i) - points(:, i - 1))
-        if (norm2(cross3(horizon/norm2(horizon), t)) < horizon_parallel_tol) then
+        if (any(horizon_points(:, 1:n_points) /= 0)) then
+          if (.not. (norm2(horizon_points(:, i)) > 0 .and. norm2(horizon_points(:, i - 1)) > 0)) then
+            call invalid(input, g, 'horizon_points(:, ' // itoa(merge(i, i - 1, norm2(horizon_points(:, i)) == 0)) &
+                         // ')', '0', 'every horizon point must be a non-zero vector', status)
+            return
+          end if
+          if (norm2(cross3(horizon_points(:, i)/norm2(horizon_points(:, i)), t)) < horizon_parallel_tol .or. &
+              norm2(cross3(horizon_points(:, i - 1)/norm2(horizon_points(:, i - 1)), t)) < horizon_parallel_tol) then
+            call invalid(input, g, 'horizon_points(:, ' // itoa(i) // ')', format_vector(horizon_points(:, i)), &
+                         'is parallel to the centerline between points ' // itoa(i - 1) // ' and ' // itoa(i), status)
+            return
+          end if
+        else if (norm2(cross3(horizon/norm2(horizon), t)) < horizon_parallel_tol) then
           call invalid(input, g, 'horizon', format_vector(horizon), 'is parallel to the centerline ' // &
                        'between points ' // itoa(i - 1) // ' and ' // itoa(i), status)
           return
@@ -213,6 +226,22 @@ contains
         return
       end if
       allocate (curve, source=fitted)
+      if (any(horizon_points(:, 1:n_points) /= 0)) then
+        ! the horizon field over the centerline's parameter (chord length of the points)
+        chord(1) = 0
+        do i = 2, n_points
+          chord(i) = chord(i - 1) + norm2(points(:, i) - points(:, i - 1))
+        end do
+        horizon_fit = new_spline_centerline(horizon_points(:, 1:n_points), 0.0_wp, min(degree, 5), built, &
+                                            parameters=chord(1:n_points))
+        if (.not. built%ok()) then
+          status = built
+          call prefix_status(status, input%name // ': &' // g // ': horizon_points')
+          return
+        end if
+        deallocate (horizon_out)
+        allocate (horizon_out, source=horizon_fit)
+      end if
     end select
   end subroutine read_centerline
 
