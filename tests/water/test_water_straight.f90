@@ -54,11 +54,12 @@ program test_water_straight
   use water_streamline, only: streamline_t, water_point_t, water_point, CORRECTION_OFF, &
     CORRECTION_FULL, default_f1
   use water_flow, only: water_start_t, water_series_t, water_initial_state, simulate_water, &
-    START_HEIGHT_SPEED, START_SPEED, OUTCOME_DURATION, OUTCOME_END
+    START_HEIGHT_SPEED, START_SPEED, START_EDGES, OUTCOME_DURATION, OUTCOME_END
   implicit none (type, external)
 
 
   call tanh_law()
+  call edges_start()
   call continuity_and_gvf()
   call radius_rate()
   call end_of_slide()
@@ -87,6 +88,7 @@ contains
     call water_initial_state(model, start, y0, st)
     call check(st%ok(), 'tanh: start')
     opt%rtol = 1e-12_wp; opt%atol = 1e-12_wp
+    model%stations = [5.0_wp, 20.0_wp, 60.0_wp]   ! u = arc length on the straight tube
     call simulate_water(model, y0, opt, 20.0_wp, 0.1_wp, s, st, edges=.false.)
     call check(st%ok() .and. s%outcome == OUTCOME_DURATION, 'tanh: ran 20 s')
     w_inf = sqrt(model%mass*g*sin(theta)/default_f1)
@@ -102,9 +104,39 @@ contains
     ! no lateral force on the bottom line: v moves only by integration error (atol 1e-12 per step)
     call check(verr <= 1e-9_wp, 'the water stays at the bottom v = pi/2')
     call check_close(s%speed(s%n), w_inf, 1e-3_wp, 0.0_wp, 'speed approaches sqrt(m g sin/f1) after 20 s')
+    ! stations by root finding: the distance x(t) = (w_inf^2/a) ln(cosh(a t/w_inf + c)/cosh(c)),
+    ! a = g sin(theta), c = atanh(w0/w_inf), reaches s_i at t_i
+    do i = 1, size(s%stations)
+      call check(s%stations(i)%reached, 'station reached')
+      ref = w_inf**2/(g*sin(theta))*log(cosh(g*sin(theta)*s%stations(i)%time/w_inf + atanh(w0/w_inf)) &
+            /cosh(atanh(w0/w_inf)))
+      ! 1e-8 m: root located to CVODE's root tolerance, path integrated at rtol 1e-12
+      call check_close(ref, model%stations(i), 1e-9_wp, 1e-8_wp, 'station time matches the closed-form distance')
+      call check_close(s%stations(i)%arc_length, model%stations(i), 1e-12_wp, 1e-12_wp, 'station arc length')
+    end do
     print '(a, es10.2, a, es10.2, a, f8.4, a, f8.4)', '  tanh law: max rel error ', err, ' v err', verr, ', w(20 s) ', &
       s%speed(s%n), ', w_inf ', w_inf
   end subroutine tanh_law
+
+  !> Start from the edges of the first section (4.33): v0 = (v1 + v2)/2 and
+  !> w0 = Q/(0.5 r^2 ((v2 - v1) - sin(v2 - v1))).
+  subroutine edges_start()
+    type(streamline_t), target :: model
+    type(water_start_t) :: start
+    type(status_t) :: st
+    type(water_point_t) :: q
+    real(wp) :: y0(7), d
+    call make(model, CORRECTION_FULL)
+    model%flow_rate = 0.004_wp
+    start%mode = START_EDGES; start%v_left = 1.9_wp; start%v_right = 1.1_wp
+    call water_initial_state(model, start, y0, st)
+    call check(st%ok(), 'edges start')
+    call water_point(model, y0, q, st)
+    d = start%v_left - start%v_right
+    call check_close(y0(2), 1.5_wp, 1e-15_wp, 0.0_wp, 'start in the middle of the edges (4.33)')
+    call check_close(q%speed, model%flow_rate/(0.5_wp*r**2*(d - sin(d))), 1e-12_wp, 0.0_wp, 'w0 = Q/A (4.33)')
+    call check_close(q%width, 2*r*sin(d/2), 1e-12_wp, 0.0_wp, 'start width = chord between the edges')
+  end subroutine edges_start
 
   subroutine continuity_and_gvf()
     type(streamline_t), target :: model
