@@ -13,6 +13,10 @@ program multibody_bench
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: pendulum_params_t, build_pendulum, fourbar_params_t, build_fourbar, &
     fourbar_assembly, sled_params_t, build_sled
+  use io_input, only: input_text_t, load_input_file
+  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_surface_config, only: read_surface_config
+  use io_mechanism_config, only: sled_config_t, read_sled_config
   implicit none (type, external)
 
   integer, parameter :: repeats = 5
@@ -25,6 +29,7 @@ program multibody_bench
   call run_case('sled, incline, Coulomb 0.2, 2 s, rtol 1e-10', 4)
   call run_case('sled, paraboloid bowl, 10 s, rtol 1e-10', 5)
   call run_case('sled, bowl, Coulomb 0.15, BDF 1e-8, 10 s', 6)
+  call run_case('sled, demo slide, Coulomb 0.05, 8 s, 1e-10', 7)
 
 contains
 
@@ -40,6 +45,9 @@ contains
     type(sled_params_t) :: sp
     class(surface_t), allocatable :: surface
     real(wp) :: beta0(2)
+    type(input_text_t) :: input
+    type(solver_config_t) :: solver
+    type(sled_config_t) :: sled
     options%rtol = 1e-12_wp
     options%atol = 1e-12_wp
     select case (which)
@@ -56,6 +64,16 @@ contains
       call build_fourbar(fp, beta0, sys%mechanism, status)
       y0 = [0.3_wp, 12.0_wp]
       duration = 5
+    case (7)   ! the sled input on the demo slide (run from the repository root)
+      call load_input_file('inputs/sled/demo_slide.nml', input, status)
+      if (status%ok()) call read_solver_config(input, solver, status)
+      if (status%ok()) call read_surface_config(input, surface, status)
+      if (status%ok()) call read_sled_config(input, sled, status)
+      if (.not. status%ok()) return
+      options = solver%options
+      duration = solver%duration
+      y0 = [sled%q0, sled%qd0]
+      call build_sled(sled%params, surface, sled%q0, sys%mechanism, status)
     case default
       options%rtol = 1e-10_wp
       options%atol = 1e-10_wp

@@ -13,7 +13,8 @@ failures=0; checks=0
 for input in "$root"/inputs/pendulum/*.nml "$root"/inputs/fourbar/*.nml "$root"/inputs/sled/*.nml; do
   name=$(basename "$input" .nml)
   checks=$((checks + 1))
-  if ! (cd "$work" && "$slidesim" -q -o "$name.h5" "$input" >"$name.out" 2>"$name.err"); then
+  # from the repository root: inputs may name other files relative to it
+  if ! (cd "$root" && "$slidesim" -q -o "$work/$name.h5" "$input" >"$work/$name.out" 2>"$work/$name.err"); then
     echo "FAIL $input: exit status non-zero: $(cat "$work/$name.err")"; failures=$((failures + 1)); continue
   fi
   scenario=$(h5dump -a /scenario "$work/$name.h5" 2>/dev/null | grep -o '"[a-z_]*"' | tr -d '"' | tail -1)
