@@ -28,7 +28,7 @@ if command -v h5ls > /dev/null && [ -f demo.h5 ]; then
 fi
 "$slidesim" -q inputs/demo_slide/point_mass.nml -o pm.h5 > pm.txt 2> pm.err || fail "point mass on demo slide: $(cat pm.err)"
 grep -q 'energy balance error' pm.txt || fail "no point-mass summary"
-for f in tube_blend_fig3_11 helix_tube flume blend_paraboloids blend_cylinders points_tube; do
+for f in tube_blend_fig3_11 helix_tube flume blend_paraboloids blend_cylinders points_tube bspline_bump; do
   "$slidesim" -q "inputs/geometry/$f.nml" -o "$f.h5" > /dev/null 2> "$f.err" || fail "$f: $(cat "$f.err")"
 done
 echo "geometry_run: $failures failed"
