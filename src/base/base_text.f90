@@ -1,6 +1,7 @@
 !> Numbers and words as text for messages: the shortest form that reads back
 !> exactly, so a message shows the value as the user typed it.
 module base_text
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
   use base_kinds, only: wp
   implicit none (type, external)
   private
@@ -15,15 +16,20 @@ contains
     character(len=40) :: buffer
     real(wp) :: back
     integer :: digits, ios, e
+    if (ieee_is_nan(x)) then
+      text = 'NaN'
+      return
+    else if (.not. ieee_is_finite(x)) then
+      text = merge(' Inf', '-Inf', x > 0)
+      text = trim(adjustl(text))
+      return
+    end if
     do digits = 1, 17
       write (buffer, '(es40.' // digit_text(digits - 1) // ')') x
       read (buffer, *, iostat=ios) back
       if (ios == 0 .and. back == x) exit
     end do
     text = trim(adjustl(buffer))
-    if (.not. (abs(x) < huge(x))) then   ! NaN or Inf: as the compiler writes them
-      return
-    end if
     ! Plain notation for moderate magnitudes: 2.5E+00 -> 2.5, 1.0E-03 stays.
     e = exponent10(x)
     if (e >= -3 .and. e <= 6) then
