@@ -1,7 +1,7 @@
 !> The point-mass model, unchanged, on the demo slide (inputs/demo_slide,
 !> &surface kind = 'slide'): frictionless, it conserves energy to 1e-8
 !> relative and stays in the surface's parameter domain; and on the other
-!> geometry kinds through &surface kind = 'tube' / 'blended'.
+!> geometry kinds through &surface kind = 'tube' / 'blended' / 'bspline'.
 program test_slide_elements_point_mass
   use base_kinds, only: wp
   use base_status, only: status_t
@@ -31,6 +31,10 @@ program test_slide_elements_point_mass
   ! Blend of three paraboloids.
   call slide_energy('&surface kind = ''blended'', geometry_file = ''inputs/geometry/blend_paraboloids.nml'' /' &
                     // nl // '&point_mass u0 = 3.5, v0 = 0.5, du0 = 0.3, dv0 = 0.1 /', 1.0_wp, 'blended paraboloids')
+
+  ! B-spline bump from a CSV grid.
+  call slide_energy('&surface kind = ''bspline'', geometry_file = ''inputs/geometry/bspline_bump.nml'' /' &
+                    // nl // '&point_mass u0 = -1.0, v0 = 0.3, du0 = 0.5, dv0 = 0.2 /', 1.0_wp, 'B-spline bump')
 
   call finish_tests('test_slide_elements_point_mass')
 
