@@ -20,7 +20,7 @@ module scenarios_registry
     'pendulum', 'fourbar', 'sled']
   character(len=*), parameter :: scenario_summaries(6) = [character(len=72) :: &
     'a point mass sliding on an elementary surface (plane, ellipsoid, ...)', &
-    'build a tube, slide or blended surface; write grid, centerline, frames', &
+    'build a tube, slide, blended or B-spline surface; write grid and frames', &
     'stationary water flow down a tube slide: streamline, height, width, edges', &
     'a simple or double pendulum (multibody core)', &
     'a four-bar linkage closed by plane-point measurements', &
