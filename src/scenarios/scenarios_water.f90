@@ -162,6 +162,7 @@ contains
     character(len=*), parameter :: g = '/water/', t = '/water/table/', st = '/water/stations/'
     integer :: n, i
     character(len=16) :: mode
+    real(wp), allocatable :: col(:)   ! a contiguous station column
 
     n = s%n
     call file%set_attribute('/', 'scenario', 'water', status)
@@ -230,16 +231,25 @@ contains
 
     if (size(s%stations) > 0) then
       call file%write_vector(st//'arc_length', config%stations, 'm', 'station arc length (input)', status)
-      call file%write_vector(st//'u', s%stations%u, 'surface parameter', 'u of the station', status)
-      call file%write_vector(st//'time', s%stations%time, 's', 'time the water passes', status)
-      call file%write_vector(st//'v', s%stations%v, 'rad', 'v of the streamline', status)
-      call file%write_vector(st//'v_middle', s%stations%v_middle, 'rad', &
+      col = s%stations%u
+      call file%write_vector(st//'u', col, 'surface parameter', 'u of the station', status)
+      col = s%stations%time
+      call file%write_vector(st//'time', col, 's', 'time the water passes', status)
+      col = s%stations%v
+      call file%write_vector(st//'v', col, 'rad', 'v of the streamline', status)
+      col = s%stations%v_middle
+      call file%write_vector(st//'v_middle', col, 'rad', &
                              'v of the middle between the edges (as measured, 4.32)', status)
-      call file%write_vector(st//'v_left', s%stations%v_left, 'rad', 'v of the left edge', status)
-      call file%write_vector(st//'v_right', s%stations%v_right, 'rad', 'v of the right edge', status)
-      call file%write_vector(st//'speed', s%stations%speed, 'm/s', 'water speed', status)
-      call file%write_vector(st//'height', s%stations%height, 'm', 'water height', status)
-      call file%write_vector(st//'width', s%stations%width, 'm', 'water width', status)
+      col = s%stations%v_left
+      call file%write_vector(st//'v_left', col, 'rad', 'v of the left edge', status)
+      col = s%stations%v_right
+      call file%write_vector(st//'v_right', col, 'rad', 'v of the right edge', status)
+      col = s%stations%speed
+      call file%write_vector(st//'speed', col, 'm/s', 'water speed', status)
+      col = s%stations%height
+      call file%write_vector(st//'height', col, 'm', 'water height', status)
+      col = s%stations%width
+      call file%write_vector(st//'width', col, 'm', 'water width', status)
       call file%write_integers(st//'reached', [(merge(1, 0, s%stations(i)%reached), i = 1, size(s%stations))], &
                                '1', '1 if the water reached the station', status)
     end if
