@@ -76,6 +76,8 @@ def main():
         a2.set_ylabel("chi_u [1/(m unit of u)]")
         a2.grid(True)
     fig.tight_layout()
+    if cl is not None:
+        fig.subplots_adjust(wspace=0.35)   # room for the 3-D axis labels
     if args.output:
         fig.savefig(args.output, dpi=150)
         print(f"wrote {args.output}")
