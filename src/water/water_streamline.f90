@@ -316,11 +316,25 @@ contains
     dv = (e*bv - f*bu)/det
   end subroutine velocity_from_angle
 
+  !> A number for messages: 6 significant digits, plain where that reads well.
   pure function real_text(x) result(text)
     real(wp), intent(in) :: x
     character(len=:), allocatable :: text
     character(len=32) :: buffer
-    write (buffer, '(g0.8)') x
-    text = trim(adjustl(buffer))
+    integer :: k
+    if (abs(x) >= 1e-3_wp .and. abs(x) < 1e6_wp) then
+      write (buffer, '(f0.6)') x
+      k = len_trim(buffer)
+      do while (k > 1 .and. buffer(k:k) == '0')
+        k = k - 1
+      end do
+      if (buffer(k:k) == '.') k = k - 1
+      text = buffer(:k)
+      if (text(1:1) == '.') text = '0'//text
+      if (text(1:2) == '-.') text = '-0'//text(2:)
+    else
+      write (buffer, '(es12.5)') x
+      text = trim(adjustl(buffer))
+    end if
   end function real_text
 end module water_streamline
