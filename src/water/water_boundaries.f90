@@ -27,9 +27,15 @@ module water_boundaries
   type, extends(nonlinear_system_t) :: edge_system_t
     class(channel_t), pointer :: channel => null()
     real(wp) :: target(3) = 0
+    ! HYBRJ asks for the residual and the Jacobian at the same point: keep the
+    ! last evaluation (surface point and frame) to serve both
+    real(wp) :: x_last(2) = huge(1.0_wp)
+    type(surface_point_t) :: p_last
+    type(darboux_frame_t) :: frame_last
   contains
     procedure :: residual => edge_residual
     procedure :: jacobian => edge_jacobian
+    procedure :: point => edge_point
   end type edge_system_t
 
 contains
@@ -77,19 +83,31 @@ contains
     right_point = p%r
   end subroutine water_edges
 
+  !> Surface point and Darboux frame (sigma = 1, alpha_u = 0, alpha_v = 1) at x,
+  !> reused when x is the last point asked for.
+  subroutine edge_point(self, x, status)
+    class(edge_system_t), intent(inout) :: self
+    real(wp), intent(in) :: x(:)
+    type(status_t), intent(inout) :: status
+    if (all(x == self%x_last)) return
+    call self%channel%evaluate(x(1), x(2), 2, self%p_last, status)
+    if (.not. status%ok()) return
+    call darboux_frame(self%p_last, 1.0_wp, 0.0_wp, 1.0_wp, self%frame_last, status)
+    if (.not. status%ok()) return
+    self%x_last = x
+  end subroutine edge_point
+
   subroutine edge_residual(self, x, f, status)
     class(edge_system_t), intent(inout) :: self
     real(wp), intent(in) :: x(:)
     real(wp), intent(out) :: f(:)
     type(status_t), intent(inout) :: status
-    type(surface_point_t) :: p
-    type(darboux_frame_t) :: frame
-    call self%channel%evaluate(x(1), x(2), 2, p, status)
+    call self%point(x, status)
     if (.not. status%ok()) return
-    call darboux_frame(p, 1.0_wp, 0.0_wp, 1.0_wp, frame, status)
-    if (.not. status%ok()) return
-    f(1) = dot_product(p%r - self%target, frame%r(:, 1))
-    f(2) = dot_product(p%r - self%target, frame%r(:, 2))
+    associate (p => self%p_last, frame => self%frame_last)
+      f(1) = dot_product(p%r - self%target, frame%r(:, 1))
+      f(2) = dot_product(p%r - self%target, frame%r(:, 2))
+    end associate
   end subroutine edge_residual
 
   subroutine edge_jacobian(self, x, jac, status)
@@ -97,17 +115,15 @@ contains
     real(wp), intent(in) :: x(:)
     real(wp), intent(out) :: jac(:, :)
     type(status_t), intent(inout) :: status
-    type(surface_point_t) :: p
-    type(darboux_frame_t) :: frame
     real(wp) :: d(3)
-    call self%channel%evaluate(x(1), x(2), 2, p, status)
+    call self%point(x, status)
     if (.not. status%ok()) return
-    call darboux_frame(p, 1.0_wp, 0.0_wp, 1.0_wp, frame, status)
-    if (.not. status%ok()) return
-    d = p%r - self%target
-    jac(1, 1) = dot_product(p%ru, frame%r(:, 1)) + dot_product(d, frame%a)
-    jac(1, 2) = dot_product(p%rv, frame%r(:, 1)) + dot_product(d, frame%b)
-    jac(2, 1) = dot_product(p%ru, frame%r(:, 2)) + dot_product(d, frame%e)
-    jac(2, 2) = dot_product(p%rv, frame%r(:, 2)) + dot_product(d, frame%f)
+    associate (p => self%p_last, frame => self%frame_last)
+      d = p%r - self%target
+      jac(1, 1) = dot_product(p%ru, frame%r(:, 1)) + dot_product(d, frame%a)
+      jac(1, 2) = dot_product(p%rv, frame%r(:, 1)) + dot_product(d, frame%b)
+      jac(2, 1) = dot_product(p%ru, frame%r(:, 2)) + dot_product(d, frame%e)
+      jac(2, 2) = dot_product(p%rv, frame%r(:, 2)) + dot_product(d, frame%f)
+    end associate
   end subroutine edge_jacobian
 end module water_boundaries
