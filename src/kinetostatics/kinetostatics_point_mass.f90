@@ -33,6 +33,8 @@ module kinetostatics_point_mass
     real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0   ! Darboux frame parameters (3.38, 3.41)
   contains
     procedure :: rhs => point_mass_rhs
+    procedure :: root_count => point_mass_root_count
+    procedure :: roots => point_mass_roots
     procedure :: state => point_mass_state
   end type point_mass_t
 
@@ -132,6 +134,35 @@ contains
     ydot(4) = vdd
     ydot(5) = dot_product(friction, p%ru*y(3) + p%rv*y(4))   ! friction power, W
   end subroutine point_mass_rhs
+
+  !> Four root functions: the distances to the edges u_min, u_max, v_min, v_max
+  !> of the parameter domain (1 where a direction is periodic or unbounded), so a
+  !> run stops exactly where the mass reaches an edge.
+  integer function point_mass_root_count(self) result(n)
+    class(point_mass_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    n = 4
+  end function point_mass_root_count
+
+  subroutine point_mass_roots(self, t, y, g)
+    class(point_mass_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(out) :: g(:)
+    real(wp) :: u_min, u_max, v_min, v_max
+    associate (unused => t)
+    end associate
+    call self%surface%domain(u_min, u_max, v_min, v_max)
+    g = 1
+    if (.not. self%surface%periodic_u()) then
+      if (u_min > -huge(u_min)) g(1) = y(1) - u_min
+      if (u_max < huge(u_max)) g(2) = u_max - y(1)
+    end if
+    if (.not. self%surface%periodic_v()) then
+      if (v_min > -huge(v_min)) g(3) = y(2) - v_min
+      if (v_max < huge(v_max)) g(4) = v_max - y(2)
+    end if
+  end subroutine point_mass_roots
 
   subroutine point_mass_state(self, y, state, status)
     class(point_mass_t), intent(in) :: self

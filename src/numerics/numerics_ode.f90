@@ -13,7 +13,9 @@
 !> Every CVODE return flag is translated to a status in one place
 !> (`cvode_status`); a status set by the system's right-hand side (for example
 !> "left the parameter domain") is returned unchanged instead of CVODE's generic
-!> "right-hand side failed".
+!> "right-hand side failed". A STATUS_DOMAIN from the right-hand side is treated
+!> as recoverable: a trial step that overshot the domain is retried with a
+!> smaller one, and only if CVODE cannot get on is that status returned.
 !>
 !> An integrator is not copyable: CVODE keeps the address of its link record.
 !> Keep one variable per integration; `destroy` (or going out of scope) frees it.
@@ -24,7 +26,7 @@ module numerics_ode
     c_char, c_null_char, c_loc, c_funloc, c_f_pointer, c_associated
   use base_kinds, only: wp, int64
   use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT, &
-    STATUS_SOLVER, STATUS_INTERNAL
+    STATUS_SOLVER, STATUS_INTERNAL, STATUS_DOMAIN
   use fsundials_context_mod, only: FSUNContext_Create, FSUNContext_Free
   use fsundials_nvector_mod, only: N_Vector, FN_VDestroy, FN_VGetArrayPointer
   use fsundials_matrix_mod, only: SUNMatrix, FSUNMatDestroy
@@ -105,6 +107,7 @@ module numerics_ode
   type :: ode_link_t
     class(ode_system_t), pointer :: system => null()
     type(status_t) :: system_status
+    type(status_t) :: recoverable_status   !< the last STATUS_DOMAIN of a trial step
     integer :: root_count = 0
     character(len=512) :: cvode_message = ''
   end type ode_link_t
@@ -309,6 +312,7 @@ contains
 
     self%link%system_status%code = STATUS_OK
     if (allocated(self%link%system_status%message)) deallocate (self%link%system_status%message)
+    self%link%recoverable_status%code = STATUS_OK
     self%link%cvode_message = ''
     flag = FCVode(self%cvode, t_out, self%y, t_reached, CV_NORMAL)
     call cvode_status(flag, 'CVode', t_reached(1), self%link, status)
@@ -567,6 +571,10 @@ contains
       status = link%system_status   ! the system said why; keep its status as it is
       return
     end if
+    if (.not. link%recoverable_status%ok()) then
+      status = link%recoverable_status   ! CVODE gave up retrying steps the system refused
+      return
+    end if
     write (time, '(es23.15)') t
     status%code = code
     status%message = call_name//' failed at t = '//trim(adjustl(time))//': '//name// &
@@ -599,7 +607,15 @@ contains
     ierr = -1
     if (.not. link%system_status%ok()) return
     call link%system%rhs(t, yv, ydotv, link%system_status)
-    if (link%system_status%ok()) ierr = 0
+    if (link%system_status%ok()) then
+      ierr = 0
+    else if (link%system_status%code == STATUS_DOMAIN) then
+      ! Recoverable: CVODE retries with a smaller step; remember why in case it gives up.
+      call move_alloc(link%system_status%message, link%recoverable_status%message)
+      link%recoverable_status%code = STATUS_DOMAIN
+      link%system_status%code = STATUS_OK
+      ierr = 1
+    end if
   end function cvode_rhs
 
   !> CVRootFn: g(t, y) for all root functions.

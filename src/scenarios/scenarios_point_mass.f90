@@ -3,7 +3,7 @@
 module scenarios_point_mass
   use, intrinsic :: iso_fortran_env, only: output_unit
   use base_kinds, only: wp
-  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_status, only: status_t, set_status, prefix_status, STATUS_DOMAIN
   use base_log, only: log_progress, log_info
   use numerics_ode, only: ode_integrator_t, ode_stats_t
   use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t, &
@@ -79,6 +79,7 @@ contains
     type(status_t) :: run_status, write_status
     real(wp) :: y0(5), y(5), t, t_out, cpu_start, cpu_end
     integer :: n_out, k, next_report
+    logical :: at_edge
 
     call build_point_mass(input, solver, model, y0, status)
     if (.not. status%ok()) return
@@ -99,9 +100,14 @@ contains
     do while (run_status%ok() .and. k < n_out)
       k = k + 1
       t_out = min(k*solver%output_step, solver%duration)
-      call integrator%advance(t_out, t, y, run_status)
+      call integrator%advance(t_out, t, y, run_status, root_found=at_edge)
       if (.not. run_status%ok()) exit
       call record(model, t, y, series, run_status)
+      if (at_edge .and. run_status%ok()) then
+        call set_status(run_status, STATUS_DOMAIN, 'the mass reached the edge of the surface''s parameter '// &
+                        'domain at (u, v) = ('//format_real(y(1))//', '//format_real(y(2))//')')
+        exit
+      end if
       if (mod(k, next_report) == 0) call log_progress('point_mass', t, solver%duration)
     end do
     call cpu_time(cpu_end)
