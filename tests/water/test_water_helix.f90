@@ -117,8 +117,19 @@ contains
     call check_close(q%radius_rate, 0.0_wp, 0.0_wp, 1e-12_wp, 'steady: dR/dt = 0 in the model')
     model%u_end = 2*pi
     opt%rtol = 1e-12_wp; opt%atol = 1e-12_wp
-    call simulate_water(model, y0, opt, 100.0_wp, 0.05_wp, s, st, edges=.false.)
+    call simulate_water(model, y0, opt, 100.0_wp, 0.05_wp, s, st)
     call check(st%ok() .and. s%outcome == OUTCOME_END, 'helix: one full turn')
+    ! helical symmetry: the edges (4.25-4.26) keep their v and their u-offset
+    ! from the streamline (HYBRJ to 1e-10 m residual, path to 1e-12)
+    call check(all(s%edge_solved(:s%n) == 1), 'helix: edges solved at every sample')
+    call check(maxval(s%left_edge(2, :s%n)) - minval(s%left_edge(2, :s%n)) <= 1e-8_wp .and. &
+               maxval(s%right_edge(2, :s%n)) - minval(s%right_edge(2, :s%n)) <= 1e-8_wp, &
+               'helix: steady edges')
+    call check(maxval(s%left_edge(1, :s%n) - s%u(:s%n)) - minval(s%left_edge(1, :s%n) - s%u(:s%n)) &
+               <= 1e-8_wp, 'helix: steady edge offset along u')
+    call check(all(s%right_edge(2, :s%n) < s%v(:s%n)) .and. all(s%left_edge(2, :s%n) > s%v(:s%n)), &
+               'left edge at larger v, right edge at smaller v')
+    call check(maxval(s%height(:s%n)) - minval(s%height(:s%n)) <= 1e-10_wp, 'helix: steady height')
     dv = maxval(abs(s%v(:s%n) - v_star))
     dw = maxval(abs(s%speed(:s%n) - w_star))/w_star
     ! issue bounds: 1e-6 rad and 1e-8 relative; integration at rtol 1e-12
