@@ -131,7 +131,7 @@ contains
     start_tangent = 0; end_tangent = 0; horizon_points = 0
     read (input%lines, nml=centerline, iostat=ios, iomsg=msg)
     if (ios > 0) then
-      call namelist_read_error(input, g, msg, [character(len=13) :: 'kind', 'start', 'end', 'center', &
+      call namelist_read_error(input, g, msg, [character(len=14) :: 'kind', 'start', 'end', 'center', &
         'radius', 'rise_per_turn', 'turns', 'phase_deg', 'horizon', 'n_points', 'points', 'smoothing', &
         'degree', 'start_tangent', 'end_tangent', 'horizon_points'], status)
       return

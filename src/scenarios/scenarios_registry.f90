@@ -18,7 +18,7 @@ module scenarios_registry
 
   character(len=*), parameter :: scenario_names(6) = [character(len=16) :: 'point_mass', 'geometry', 'water', &
     'pendulum', 'fourbar', 'sled']
-  character(len=*), parameter :: scenario_summaries(6) = [character(len=72) :: &
+  character(len=*), parameter :: scenario_summaries(6) = [character(len=80) :: &
     'a point mass sliding on an elementary surface (plane, ellipsoid, ...)', &
     'build a tube, slide, blended or B-spline surface; write grid and frames', &
     'stationary water flow down a tube slide: streamline, height, width, edges', &

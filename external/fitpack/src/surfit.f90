@@ -50,6 +50,7 @@ subroutine surfit(iopt, m, x, y, z, w, xb, xe, yb, ye, kx, ky, s, nxest, nyest, 
     ib1, jb1, ib3, lwest, kwest, i
   ier = 10
   fp = 0
+  if (kwrk > 0) iwrk(1) = 0   ! kept in the calling sequence; the panel lists live inside fpsurf
   if (eps <= 0 .or. eps >= 1) return
   if (kx <= 0 .or. kx > 5) return
   kx1 = kx + 1
