@@ -84,5 +84,8 @@ contains
     solver%options%rtol = 1e-12_wp; solver%options%atol = 1e-12_wp
     call simulate_water(model, y0, solver%options, solver%duration, 0.01_wp, s, st, edges=.false.)
     call check(st%ok() .and. s%outcome == OUTCOME_END, 'demo slide: the water reaches the end')
+    ! the arc length summed sample by sample (3-point Gauss) against the whole quadrature
+    call check(abs(s%arc_length(s%n) - model%channel%arc_length(s%u(s%n))) <= 1e-9_wp*s%arc_length(s%n), &
+               'demo slide: incremental arc length')
   end subroutine run
 end program test_water_demo_slide
