@@ -28,7 +28,7 @@ program slidesim
       print '(a)', 'slidesim '//slidesim_version
       stop
     case ('--default-input')
-      print '(a)', default_input
+      print '(a)', default_input()
       stop
     case ('-q', '--quiet')
       call set_verbosity(0)

@@ -602,6 +602,7 @@ contains
     if (status%ok() .and. layout /= 'parametric' .and. (periodic_u .or. periodic_v)) &
       call invalid(input, g, 'periodic_u, periodic_v', 'true', 'only a parametric surface can be periodic', status)
     if (.not. status%ok()) return
+    file = input%resolve_path(file)   ! relative to the geometry file's folder
     inquire (file=trim(file), exist=exists)
     if (len_trim(file) == 0 .or. .not. exists) then
       call invalid(input, g, 'file', '''' // trim(file) // '''', 'must name an existing CSV file', status)

@@ -8,6 +8,7 @@ module io_input
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_IO
   use base_text, only: format_real, format_vector, lower
+  use io_builtin_inputs, only: builtin_input, builtin_input_names
   implicit none (type, external)
   private
   public :: input_text_t, load_input_file, input_from_text, line_length
@@ -16,16 +17,21 @@ module io_input
             check_finite_vector, format_real, format_vector, invalid
 
   integer, parameter :: line_length = 512
+  character(len=*), parameter :: builtin_prefix = 'builtin:'
 
   type :: input_text_t
-    character(len=:), allocatable :: name        !< file path, or '<built-in default>'
+    character(len=:), allocatable :: name        !< file path, or 'builtin:<name>'
+    character(len=:), allocatable :: folder      !< the file's folder ('' for text), ends in '/'
     character(len=line_length), allocatable :: lines(:)
   contains
     procedure :: text => input_text
+    procedure :: resolve_path => input_resolve_path
   end type input_text_t
 
 contains
 
+  !> Reads an input file, or a built-in input named 'builtin:<name>' (the
+  !> files of inputs/ compiled into the program; see io_builtin_inputs).
   subroutine load_input_file(path, input, status)
     character(len=*), intent(in) :: path
     type(input_text_t), intent(out) :: input
@@ -33,9 +39,21 @@ contains
     integer :: unit, ios, n
     character(len=line_length) :: line
     character(len=256) :: msg
+    character(len=:), allocatable :: text
     logical :: exists
 
+    if (index(path, builtin_prefix) == 1) then
+      call builtin_input(path(len(builtin_prefix) + 1:), text, exists)
+      if (.not. exists) then
+        call set_status(status, STATUS_IO, 'there is no built-in input "'//path//'"; built in are: '// &
+                        builtin_input_names())
+        return
+      end if
+      call input_from_text(path, text, input)
+      return
+    end if
     input%name = path
+    input%folder = path(:index(path, '/', back=.true.))
     inquire (file=path, exist=exists)
     if (.not. exists) then
       call set_status(status, STATUS_IO, 'input file "'//path//'" does not exist')
@@ -67,6 +85,7 @@ contains
     integer :: i, start, n
 
     input%name = name
+    input%folder = ''
     n = count([(text(i:i) == new_line('a'), i=1, len(text))]) + 1
     allocate (input%lines(n))
     start = 1
@@ -82,6 +101,19 @@ contains
       end if
     end do
   end subroutine input_from_text
+
+  !> A path named inside this input: relative paths are taken from the input
+  !> file's folder (from the working folder for inputs given as text); absolute
+  !> and 'builtin:' paths stay as they are.
+  pure function input_resolve_path(self, path) result(resolved)
+    class(input_text_t), intent(in) :: self
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable :: resolved
+    resolved = trim(adjustl(path))
+    if (len(resolved) == 0) return
+    if (resolved(1:1) == '/' .or. index(resolved, builtin_prefix) == 1) return
+    if (allocated(self%folder)) resolved = self%folder//resolved
+  end function input_resolve_path
 
   pure function input_text(self) result(text)
     class(input_text_t), intent(in) :: self

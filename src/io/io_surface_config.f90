@@ -80,7 +80,7 @@ contains
         call set_status(status, STATUS_INVALID_INPUT, input%name//': &'//g//': kind = '''// &
                         trim(lower(adjustl(kind)))//''' needs geometry_file = ''<file with the geometry groups>''')
       else
-        call load_input_file(trim(geometry_file), geometry_input, status)
+        call load_input_file(input%resolve_path(geometry_file), geometry_input, status)
         if (status%ok()) call read_geometry_config(geometry_input, local, status, kind=lower(adjustl(kind)))
       end if
     end select

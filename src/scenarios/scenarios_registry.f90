@@ -4,7 +4,8 @@ module scenarios_registry
   use, intrinsic :: iso_fortran_env, only: output_unit
   use base_status, only: status_t
   use base_version, only: slidesim_version
-  use io_input, only: input_text_t, load_input_file, input_from_text, check_choice
+  use io_input, only: input_text_t, load_input_file, check_choice
+  use io_builtin_inputs, only: builtin_input
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
   use scenarios_pendulum, only: run_pendulum
@@ -26,32 +27,6 @@ module scenarios_registry
     'a four-bar linkage closed by plane-point measurements', &
     'a bar sliding on a surface on two surface joints, closed like the rider']
 
-  !> The built-in default: a point mass sliding down an inclined half-pipe (an
-  !> elliptic cylinder of radius 0.5 m whose axis falls 10 degrees), started off the
-  !> bottom with a sideways push, with Coulomb friction mu = 0.05.
-  character(len=*), parameter :: nl = new_line('a')
-  character(len=*), parameter :: default_input = &
-    '! slidesim built-in default input (print it with: slidesim --default-input)'//nl// &
-    '&run'//nl// &
-    '  scenario = ''point_mass'''//nl// &
-    '  output = ''slidesim_default.h5'''//nl// &
-    '  title = ''point mass in an inclined half-pipe'''//nl// &
-    '/'//nl// &
-    '&solver'//nl// &
-    '  method = ''adams'', rtol = 1e-10, atol = 1e-10'//nl// &
-    '  duration = 5.0, output_step = 0.01'//nl// &
-    '/'//nl// &
-    '&surface'//nl// &
-    '  kind = ''elliptic_cylinder'', a = 0.5, b = 0.5'//nl// &
-    '  ! axis (u) horizontal along x, then tipped 10 degrees down'//nl// &
-    '  angles_deg = 0.0, 100.0, 0.0'//nl// &
-    '/'//nl// &
-    '&point_mass'//nl// &
-    '  mass = 1.0'//nl// &
-    '  u0 = 0.0, v0 = 0.3, du0 = 2.0, dv0 = 3.0'//nl// &
-    '  friction = ''coulomb'', friction_coefficient = 0.05'//nl// &
-    '/'
-
 contains
 
   subroutine print_scenarios()
@@ -70,13 +45,19 @@ contains
     if (status%ok()) call run_input(input, status, output)
   end subroutine run_input_file
 
+  !> Runs the built-in default input, inputs/default.nml compiled into the program.
   subroutine run_default(status, output)
     type(status_t), intent(inout) :: status
     character(len=*), intent(in), optional :: output
-    type(input_text_t) :: input
-    call input_from_text('<built-in default>', default_input, input)
-    call run_input(input, status, output)
+    call run_input_file('builtin:default', status, output)
   end subroutine run_default
+
+  !> The text of the built-in default input (for --default-input).
+  function default_input() result(text)
+    character(len=:), allocatable :: text
+    logical :: found
+    call builtin_input('default', text, found)
+  end function default_input
 
   subroutine run_input(input, status, output)
     type(input_text_t), intent(in) :: input
