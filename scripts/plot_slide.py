@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Draw a slide (or any surface) in 3-D from the HDF5 file of the `geometry` scenario.
 
     scripts/plot_slide.py demo_slide_geometry.h5 [-o slide.png] [--frames 25] [--no-show]
