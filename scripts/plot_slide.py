@@ -12,6 +12,8 @@ import argparse
 import sys
 
 import h5py
+import os
+
 import numpy as np
 import matplotlib
 
@@ -22,6 +24,9 @@ def main():
     parser.add_argument("--frames", type=int, default=25, help="number of frames drawn along the centerline")
     parser.add_argument("--no-show", action="store_true", help="do not open a window")
     args = parser.parse_args()
+    if not args.output and not os.environ.get("DISPLAY"):
+        # no screen to show it on: write a picture next to the result file
+        args.output = os.path.splitext(args.file)[0] + ".png"
     if args.no_show or args.output:
         matplotlib.use("Agg")
     import matplotlib.pyplot as plt
