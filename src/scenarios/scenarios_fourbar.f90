@@ -10,7 +10,7 @@ module scenarios_fourbar
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_mechanism_config, only: fourbar_config_t, read_fourbar_config
-  use scenarios_pendulum, only: run_mechanism
+  use scenarios_mechanism, only: run_mechanism
   implicit none (type, external)
   private
   public :: run_fourbar, fourbar_groups

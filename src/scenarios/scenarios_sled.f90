@@ -14,7 +14,7 @@ module scenarios_sled
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_config, only: read_surface_config
   use io_mechanism_config, only: sled_config_t, read_sled_config
-  use scenarios_pendulum, only: run_mechanism
+  use scenarios_mechanism, only: run_mechanism
   implicit none (type, external)
   private
   public :: run_sled, sled_groups
