@@ -17,6 +17,7 @@ program multibody_bench
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_config, only: read_surface_config
   use io_mechanism_config, only: sled_config_t, read_sled_config
+  use bench_timing, only: median
   implicit none (type, external)
 
   integer, parameter :: repeats = 5
@@ -126,24 +127,7 @@ contains
       print '(a44, 2x, a)', label, 'FAILED: '//status%text()
       return
     end if
-    call sort(cpu)
-    print '(a44, es14.3, i12, i10, i10)', label, cpu((repeats + 1)/2), int(stats%rhs_evaluations), &
+    print '(a44, es14.3, i12, i10, i10)', label, median(cpu), int(stats%rhs_evaluations), &
       int(stats%steps), hybrj
   end subroutine run_case
-
-  pure subroutine sort(x)
-    real(wp), intent(inout) :: x(:)
-    integer :: i, j
-    real(wp) :: tmp
-    do i = 2, size(x)
-      tmp = x(i)
-      j = i - 1
-      do while (j >= 1)
-        if (x(j) <= tmp) exit
-        x(j + 1) = x(j)
-        j = j - 1
-      end do
-      x(j + 1) = tmp
-    end do
-  end subroutine sort
 end program multibody_bench

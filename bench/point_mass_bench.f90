@@ -9,6 +9,7 @@ program point_mass_bench
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t
   use scenarios_point_mass, only: build_point_mass
+  use bench_timing, only: median
   implicit none (type, external)
 
   integer, parameter :: repeats = 7
@@ -47,19 +48,4 @@ program point_mass_bench
       stats%rhs_evaluations, stats%steps
   end do
 
-contains
-
-  real(wp) function median(x)
-    real(wp), intent(in) :: x(:)
-    real(wp) :: s(size(x)), tmp
-    integer :: a, b
-    s = x
-    do a = 2, size(s)
-      do b = a, 2, -1
-        if (s(b) >= s(b - 1)) exit
-        tmp = s(b); s(b) = s(b - 1); s(b - 1) = tmp
-      end do
-    end do
-    median = s((size(s) + 1)/2)
-  end function median
 end program point_mass_bench

@@ -17,6 +17,7 @@ program tube_bench
   use geometry_tube, only: tube_surface_t, new_tube_surface
   use io_input, only: input_text_t, load_input_file, input_from_text
   use io_geometry_config, only: read_geometry_config
+  use bench_timing, only: median
   implicit none (type, external)
 
   integer, parameter :: n_calls = 200000, repeats = 7
@@ -73,23 +74,6 @@ contains
       call cpu_time(t1)
       times(r) = (t1 - t0)/n_calls*1e9_wp
     end do
-    call sort(times)
-    print '(a52, f14.1, a, es10.2)', label, times((repeats + 1)/2), '   checksum ', sink
+    print '(a52, f14.1, a, es10.2)', label, median(times), '   checksum ', sink
   end subroutine time_it
-
-  subroutine sort(x)
-    real(wp), intent(inout) :: x(:)
-    integer :: i, j
-    real(wp) :: t
-    do i = 2, size(x)
-      t = x(i)
-      j = i - 1
-      do while (j >= 1)
-        if (x(j) <= t) exit
-        x(j + 1) = x(j)
-        j = j - 1
-      end do
-      x(j + 1) = t
-    end do
-  end subroutine sort
 end program tube_bench
