@@ -45,8 +45,8 @@ module numerics_nonlinear
   end interface
 
   type :: nonlinear_options_t
-    real(wp) :: xtol = 1e-10_wp                 !< HYBRJ: relative error between iterates
-    real(wp) :: factor = 100                    !< HYBRJ: initial step bound factor
+    real(wp) :: xtol = 1e-10_wp                 !< HYBRJ: relative error between iterates (thesis 4.4.3: 1e-8; tighter here so loops close to 1e-10)
+    real(wp) :: factor = 100                    !< HYBRJ: initial step bound factor (as the thesis)
     integer :: max_evaluations = 1000           !< HYBRJ maxfev (residual evaluations)
     real(wp) :: residual_tolerance = 1e-10_wp   !< failure if max|f| exceeds this at the end
   end type nonlinear_options_t
