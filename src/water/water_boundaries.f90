@@ -6,13 +6,27 @@
 !> point (u_e, v_e) whose Darboux frame (sigma = 1, alpha_u = 0, alpha_v = 1)
 !> sees r_wL (r_wR) straight along its normal:
 !>     (r_D - r_wL).x_D = 0,  (r_D - r_wL).y_D = 0          (4.25), (4.26)
-!> solved by HYBRJ with the analytic Jacobian
+!> with the analytic Jacobian
 !>     d/du [(r_D - q).x_D] = r_u.x_D + (r_D - q).x_D,u  (x_D,u = frame%a), ...
-!> started from the streamline point moved by +-(b/2) y_w in the tangent plane.
+!>
+!> Solver: plain Newton steps with that Jacobian from the caller's guess (at
+!> output times the previous output's edges, moved with the streamline), which
+!> converge in two or three surface evaluations; HYBRJ from the tangent-plane
+!> guess (the streamline point moved by +-(b/2) y_w) only when Newton does not
+!> converge. Both stop on the same test: a step (scaled by the Jacobian's
+!> column norms, as HYBRJ's mode 1) below xtol times the scaled x, and
+!> max|f| <= residual_tolerance.
+!>
+!> Near the ends of a slide an edge's foot can lie beyond the surface (the flow
+!> runs at an angle beta to the centerline, so one edge leads the streamline
+!> in u). Fitted slides end there (their evaluation holds the end value), so
+!> no solver can find the foot; this is reported as STATUS_DOMAIN ("beyond the
+!> end of the slide") when Newton's iterates leave [u_min, u_max] and HYBRJ
+!> fails too. Any other failure keeps the solver's own status.
 !> The left edge lies towards +y_w, i.e. towards larger v.
 module water_boundaries
   use base_kinds, only: wp
-  use base_status, only: status_t, prefix_status
+  use base_status, only: status_t, set_status, prefix_status, STATUS_DOMAIN
   use geometry_surface, only: surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use numerics_nonlinear, only: nonlinear_system_t, nonlinear_options_t, nonlinear_result_t, &
@@ -21,7 +35,14 @@ module water_boundaries
   use water_streamline, only: water_point_t
   implicit none (type, external)
   private
-  public :: water_edges, edge_system_t
+  public :: water_edges, edge_system_t, edge_xtol, edge_residual_tolerance
+
+  !> Convergence test of both solvers: xtol relative (~7e-9 m on a 67 m slide,
+  !> u being arc length there); the residual (m) still <= 1e-10.
+  real(wp), parameter :: edge_xtol = 1e-10_wp, edge_residual_tolerance = 1e-10_wp
+  !> Newton steps before falling back to HYBRJ: from a warm start two or three
+  !> suffice (quadratic convergence from ~1e-5 m); more means a poor start.
+  integer, parameter :: max_newton = 8
 
   !> Foot of the normal from `target` onto the channel surface, in (u, v).
   type, extends(nonlinear_system_t) :: edge_system_t
@@ -41,47 +62,104 @@ module water_boundaries
 contains
 
   !> Left and right edges [u, v] and their points for the water point q.
-  subroutine water_edges(channel, q, left, right, left_point, right_point, status)
+  !> left_guess/right_guess: starts for Newton (e.g. the previous output's
+  !> edges moved with the streamline); without them the tangent-plane guess.
+  subroutine water_edges(channel, q, left, right, left_point, right_point, status, left_guess, right_guess)
     class(channel_t), intent(in), target :: channel
     type(water_point_t), intent(in) :: q
     real(wp), intent(out) :: left(2), right(2), left_point(3), right_point(3)
     type(status_t), intent(out) :: status
-    type(edge_system_t) :: sys
-    type(nonlinear_options_t) :: options
-    type(nonlinear_result_t) :: result
-    real(wp) :: d(2), uv(2), base(3), e, f, g, det, bu, bv
-    type(surface_point_t) :: p
+    real(wp), intent(in), optional :: left_guess(2), right_guess(2)
+    real(wp) :: d(2), base(3), e, f, g, det, bu, bv
 
-    options%xtol = 1e-10_wp   ! relative: ~1e-8 m on a 70 m slide; residual still <= 1e-10 m
-    options%residual_tolerance = 1e-10_wp
-    sys%channel => channel
     base = q%position + q%height*q%z_m
-    ! first guess: the offset (b/2) y_w in the tangent plane, mapped to (du, dv)
+    ! tangent-plane guess: the offset (b/2) y_w mapped to (du, dv)
     e = dot_product(q%p%ru, q%p%ru); f = dot_product(q%p%ru, q%p%rv); g = dot_product(q%p%rv, q%p%rv)
     bu = 0.5_wp*q%width*dot_product(q%p%ru, q%y_w); bv = 0.5_wp*q%width*dot_product(q%p%rv, q%y_w)
     det = e*g - f*f
     d = [(g*bu - f*bv)/det, (e*bv - f*bu)/det]
-    uv = [q%u, q%v] + d
-    sys%target = base + 0.5_wp*q%width*q%y_w
-    call solve_nonlinear(sys, uv, options, result, status)
+    if (present(left_guess)) then
+      call one_edge(channel, base + 0.5_wp*q%width*q%y_w, left_guess, [q%u, q%v] + d, left, left_point, status)
+    else
+      call one_edge(channel, base + 0.5_wp*q%width*q%y_w, [q%u, q%v] + d, [q%u, q%v] + d, left, left_point, &
+                    status)
+    end if
     if (.not. status%ok()) then
       call prefix_status(status, 'left water edge (4.25)')
       return
     end if
-    left = uv
-    call channel%evaluate(uv(1), uv(2), 0, p, status)
-    left_point = p%r
-    uv = [q%u, q%v] - d
-    sys%target = base - 0.5_wp*q%width*q%y_w
-    call solve_nonlinear(sys, uv, options, result, status)
-    if (.not. status%ok()) then
-      call prefix_status(status, 'right water edge (4.26)')
-      return
+    if (present(right_guess)) then
+      call one_edge(channel, base - 0.5_wp*q%width*q%y_w, right_guess, [q%u, q%v] - d, right, right_point, &
+                    status)
+    else
+      call one_edge(channel, base - 0.5_wp*q%width*q%y_w, [q%u, q%v] - d, [q%u, q%v] - d, right, right_point, &
+                    status)
     end if
-    right = uv
-    call channel%evaluate(uv(1), uv(2), 0, p, status)
-    right_point = p%r
+    if (.not. status%ok()) call prefix_status(status, 'right water edge (4.26)')
   end subroutine water_edges
+
+  !> The foot x = (u, v) of the normal through `target` and its point: Newton
+  !> from `start`, HYBRJ from `fallback` if Newton does not converge.
+  subroutine one_edge(channel, target, start, fallback, x, point, status)
+    class(channel_t), intent(in), target :: channel
+    real(wp), intent(in) :: target(3), start(2), fallback(2)
+    real(wp), intent(out) :: x(2), point(3)
+    type(status_t), intent(out) :: status
+    type(edge_system_t) :: sys
+    type(nonlinear_options_t) :: options
+    type(nonlinear_result_t) :: result
+    type(status_t) :: st
+    real(wp) :: f(2), jac(2, 2), dx(2), scale(2), det, u_min, u_max, u_out
+    integer :: it
+    logical :: outside
+
+    sys%channel => channel
+    sys%target = target
+    call channel%u_range(u_min, u_max)
+    outside = .false.; u_out = 0
+    x = start
+    do it = 1, max_newton
+      call sys%residual(x, f, st)
+      if (st%ok()) call sys%jacobian(x, jac, st)
+      if (.not. st%ok()) exit
+      det = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+      if (.not. abs(det) > 0) exit
+      dx = -[jac(2, 2)*f(1) - jac(1, 2)*f(2), jac(1, 1)*f(2) - jac(2, 1)*f(1)]/det
+      scale = [norm2(jac(:, 1)), norm2(jac(:, 2))]
+      if (maxval(abs(f)) <= edge_residual_tolerance .and. &
+          norm2(scale*dx) <= edge_xtol*norm2(scale*x)) then
+        point = sys%p_last%r   ! at x; x + dx differs by far less than xtol
+        return
+      end if
+      x = x + dx
+      if (.not. all(abs(x) <= huge(x))) exit
+      if (x(1) < u_min .or. x(1) > u_max) then
+        outside = .true.; u_out = x(1)
+      end if
+    end do
+
+    x = fallback
+    options%xtol = edge_xtol
+    options%residual_tolerance = edge_residual_tolerance
+    sys%x_last = huge(1.0_wp)
+    call solve_nonlinear(sys, x, options, result, status)
+    if (status%ok()) then
+      call channel%evaluate(x(1), x(2), 0, sys%p_last, status)
+      point = sys%p_last%r
+    else if (outside .or. x(1) < u_min .or. x(1) > u_max) then
+      if (.not. outside) u_out = x(1)
+      call set_status(status, STATUS_DOMAIN, 'the foot lies beyond the end of the slide (u = ' // &
+                      number(u_out)//' outside ['//number(u_min)//', '//number(u_max)//'])')
+    end if
+  end subroutine one_edge
+
+  pure function number(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=24) :: buffer
+    write (buffer, '(g0.8)') x
+    text = trim(adjustl(buffer))
+  end function number
 
   !> Surface point and Darboux frame (sigma = 1, alpha_u = 0, alpha_v = 1) at x,
   !> reused when x is the last point asked for.

@@ -51,8 +51,10 @@ module water_flow
     real(wp), allocatable :: kinetic(:), potential(:), friction_work(:), correction_work(:)
     real(wp), allocatable :: left_edge(:, :), right_edge(:, :), left_point(:, :), right_point(:, :)
     integer, allocatable :: edge_solved(:)    ! 1: edges from (4.25-4.26); 0: circle estimate
-    integer :: edge_failures = 0
+    integer :: edge_failures = 0                     ! samples where the edge solve failed
     character(len=:), allocatable :: edge_message   ! the first edge failure
+    integer :: edge_beyond = 0                       ! samples with an edge beyond the slide's end
+    real(wp) :: edge_beyond_from = 0                 ! m, arc length of the first of them
     type(water_station_t), allocatable :: stations(:)
     integer :: outcome = OUTCOME_ERROR
     character(len=:), allocatable :: message
@@ -367,6 +369,7 @@ contains
     type(water_point_t) :: q
     type(status_t) :: st
     integer :: i
+    real(wp) :: lam, here(2), guess_l(2), guess_r(2)
     st%code = 0
     call water_point(model, y, q, st)
     if (.not. st%ok()) then
@@ -396,8 +399,29 @@ contains
     s%kinetic(i) = 0.5_wp*model%mass*q%speed**2
     s%potential(i) = -model%mass*dot_product(model%gravity, q%position)
     if (with_edges) then
-      call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
-                       s%right_point(:, i), st)
+      if (i >= 2) then
+        if (s%edge_solved(i - 1) == 1) then
+          ! warm start: the previous output's edges, moved with the streamline
+          ! (offsets extrapolated linearly in time from the two last outputs)
+          lam = 0
+          if (i >= 3) then
+            if (s%edge_solved(i - 2) == 1 .and. s%time(i - 1) > s%time(i - 2)) &
+              lam = (t - s%time(i - 1))/(s%time(i - 1) - s%time(i - 2))
+          end if
+          here = [y(1), y(2)]
+          guess_l = here + offset(s%left_edge, i - 1) + lam*(offset(s%left_edge, i - 1) - offset(s%left_edge, i - 2))
+          guess_r = here + offset(s%right_edge, i - 1) + lam*(offset(s%right_edge, i - 1) - &
+                                                             offset(s%right_edge, i - 2))
+          call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
+                           s%right_point(:, i), st, guess_l, guess_r)
+        else
+          call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
+                           s%right_point(:, i), st)
+        end if
+      else
+        call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
+                         s%right_point(:, i), st)
+      end if
       s%edge_solved(i) = merge(1, 0, st%ok())
       if (.not. st%ok()) then
         ! Near the ends of the slide the foot of an edge can lie beyond the
@@ -406,10 +430,25 @@ contains
         s%right_edge(:, i) = [y(1), y(2) - 0.5_wp*q%width/norm2(q%p%rv)]
         s%left_point(:, i) = q%position + 0.5_wp*q%width*q%y_w
         s%right_point(:, i) = q%position - 0.5_wp*q%width*q%y_w
-        if (s%edge_failures == 0) s%edge_message = 'at t = '//real_text(t)//' s: '//st%text()
-        s%edge_failures = s%edge_failures + 1
+        if (st%code == STATUS_DOMAIN) then   ! the foot is beyond the end of the slide
+          if (s%edge_beyond == 0) s%edge_beyond_from = s%arc_length(i)
+          s%edge_beyond = s%edge_beyond + 1
+        else
+          if (s%edge_failures == 0) s%edge_message = 'at t = '//real_text(t)//' s: '//st%text()
+          s%edge_failures = s%edge_failures + 1
+        end if
       end if
     end if
+
+  contains
+
+    !> Edge minus streamline (u, v) at sample k (k >= 1).
+    pure function offset(edge, k) result(d)
+      real(wp), intent(in) :: edge(:, :)
+      integer, intent(in) :: k
+      real(wp) :: d(2)
+      d = edge(:, max(k, 1)) - [s%u(max(k, 1)), s%v(max(k, 1))]
+    end function offset
   end subroutine record
 
   !> The water every `step` metres of centerline arc length, interpolated
