@@ -18,6 +18,7 @@ program test_spline_surface
   call parametric_tube()
   call thesis_paraboloids()
   call failures_as_statuses()
+  call grid_equals_pointwise()
   call finish_tests('test_spline_surface')
 
 contains
@@ -345,6 +346,140 @@ contains
     call surf%evaluate_grid(u, [v, box(4) + 1], pg(:, 1:6 - 1), st)
     call check(st%code == STATUS_INVALID_INPUT, what//': evaluate_grid rejects a wrong shape')
   end subroutine check_grid_evaluation
+
+  !> evaluate_grid against evaluate point by point for degrees (kx, ky) across
+  !> 1..5 (scalar, fit_grid) and bicubic parametric surfaces (fit_parametric,
+  !> plain and periodic in v), on non-square grids holding the domain ends,
+  !> every interior knot (where partials of order >= the degree jump, so both
+  !> must choose the same knot interval) and points in between.
+  subroutine grid_equals_pointwise()
+    integer, parameter :: mx = 11, my = 8
+    integer, parameter :: degs(2, 7) = reshape([1, 1, 1, 5, 2, 3, 3, 3, 4, 2, 5, 1, 5, 5], [2, 7])
+    real(wp) :: x(mx), y(my), z(mx, my), pts(3, mx, my), a
+    type(spline_surface_t) :: surf
+    type(status_t) :: st
+    integer :: i, j, k
+    character(len=40) :: tag
+    ! uneven data spacing: uneven knots
+    x = [(real(i - 1, wp)/(mx - 1) + 0.03_wp*sin(real(i, wp)), i = 1, mx)]
+    x(1) = 0
+    x(mx) = 1
+    y = [(2*(real(j - 1, wp)/(my - 1))**1.3_wp, j = 1, my)]
+    do i = 1, mx
+      do j = 1, my
+        z(i, j) = exp(-x(i))*sin(2*y(j)) + x(i)**2*y(j) + 0.05_wp*cos(7*x(i)*y(j))
+      end do
+    end do
+    do k = 1, size(degs, 2)
+      write (tag, '(a, i0, ",", i0, a)') 'grid = pointwise, scalar k=(', degs(1, k), degs(2, k), ')'
+      surf = fit_grid(x, y, z, 0.0_wp, degs(1, k), degs(2, k), st)
+      call check(st%ok(), trim(tag)//': fit status ok: '//st%text())
+      if (st%ok()) call compare_grid_pointwise(surf, trim(tag))
+    end do
+    do i = 1, mx
+      do j = 1, my
+        a = 2*pi*y(j)/2
+        pts(:, i, j) = [(1 + 0.4_wp*x(i))*cos(a), (1 + 0.4_wp*x(i))*sin(a), 3*x(i) + 0.2_wp*sin(a)]
+      end do
+    end do
+    surf = fit_parametric(x, y, pts, 0.0_wp, [.false., .true.], st)
+    call check(st%ok(), 'grid = pointwise, parametric periodic in v: fit status ok: '//st%text())
+    if (st%ok()) call compare_grid_pointwise(surf, 'grid = pointwise, parametric periodic in v')
+    pts(3, :, :) = pts(3, :, :) + 0.3_wp*spread(y, 1, mx)**2
+    surf = fit_parametric(x, y, pts, 0.01_wp, [.false., .false.], st)
+    call check(st%ok(), 'grid = pointwise, parametric smoothing: fit status ok: '//st%text())
+    if (st%ok()) call compare_grid_pointwise(surf, 'grid = pointwise, parametric smoothing')
+  end subroutine grid_equals_pointwise
+
+  !> One evaluate_grid call against evaluate at every grid point, every
+  !> partial and coordinate. Both form the same sums in the same order, so
+  !> they agree to the last bit; rtol 1e-13 of the partial's largest magnitude
+  !> over the grid leaves room only for a compiler's different rounding (e.g.
+  !> fused multiply-adds), not for a wrong term or a wrong knot interval. The
+  !> records start as garbage: every component must be overwritten, the
+  !> unused ones of a scalar surface with zero.
+  subroutine compare_grid_pointwise(surf, what)
+    type(spline_surface_t), intent(in) :: surf
+    character(len=*), intent(in) :: what
+    type(spline_surface_eval_t), allocatable :: pg(:, :)
+    type(spline_surface_eval_t) :: p
+    type(status_t) :: st
+    real(wp), allocatable :: tu(:), tv(:), u(:), v(:), scale(:, :, :), err(:, :, :)
+    real(wp) :: box(4), ref
+    integer :: i, j, a, b, l, dim, k(2), n
+    logical :: all_ok, zero_ok
+    character(len=120) :: label
+    box = surf%domain()
+    k = surf%degrees()
+    dim = surf%dimension()
+    tu = surf%knots_u()
+    tv = surf%knots_v()
+    ! distinct knots in the domain (ends included), then points in between
+    u = [tu(k(1) + 1:size(tu) - k(1)), (box(1) + (box(2) - box(1))*halton(i, 2), i = 1, 6)]
+    n = 3
+    if (size(tv) - 2*k(2) + n == size(u)) n = 4
+    v = [tv(k(2) + 1:size(tv) - k(2)), (box(3) + (box(4) - box(3))*halton(j, 3), j = 1, n)]
+    allocate (pg(size(u), size(v)), scale(0:3, 0:3, 3), err(0:3, 0:3, 3))
+    do j = 1, size(v)
+      do i = 1, size(u)
+        pg(i, j) = garbage()
+      end do
+    end do
+    call surf%evaluate_grid(u, v, pg, st)
+    call check(st%ok(), what//': evaluate_grid status')
+    scale = 0
+    err = 0
+    zero_ok = .true.
+    do j = 1, size(v)
+      do i = 1, size(u)
+        call surf%evaluate(u(i), v(j), p, st)
+        call check(st%ok(), what//': evaluate status')
+        zero_ok = zero_ok .and. pg(i, j)%dim == dim
+        do a = 0, 3
+          do b = 0, 3 - a
+            do l = 1, 3
+              ref = partial(p, a, b, l)
+              if (l > dim) then
+                zero_ok = zero_ok .and. partial(pg(i, j), a, b, l) == 0
+              else
+                scale(a, b, l) = max(scale(a, b, l), abs(ref))
+                err(a, b, l) = max(err(a, b, l), abs(partial(pg(i, j), a, b, l) - ref))
+              end if
+            end do
+          end do
+        end do
+      end do
+    end do
+    call check(zero_ok, what//': dim recorded, unused components zero')
+    all_ok = .true.
+    do a = 0, 3
+      do b = 0, 3 - a
+        do l = 1, dim
+          if (err(a, b, l) <= 1.0e-13_wp*scale(a, b, l)) cycle
+          all_ok = .false.
+          write (label, '(a, ": d", i0, i0, " coordinate ", i0, ": error ", es9.2, " of scale ", es9.2)') &
+            what, a, b, l, err(a, b, l), scale(a, b, l)
+          call check(.false., trim(label))
+        end do
+      end do
+    end do
+    call check(all_ok, what//': evaluate_grid equals evaluate to 1e-13 relative')
+  end subroutine compare_grid_pointwise
+
+  pure function garbage() result(p)
+    type(spline_surface_eval_t) :: p
+    p%dim = -7
+    p%f = 7
+    p%fu = 7
+    p%fv = 7
+    p%fuu = 7
+    p%fuv = 7
+    p%fvv = 7
+    p%fuuu = 7
+    p%fuuv = 7
+    p%fuvv = 7
+    p%fvvv = 7
+  end function garbage
 
   !> Thesis 3.5.3.3: paraboloids (3.58) z = (u^2 + v^2)/a^2 (c = 1, a = b),
   !> a^2 = 3 on [-2, 2]^2 and a^2 = 0.5 on [-0.5, 0.5]^2, 13 x 13 points,
