@@ -288,8 +288,10 @@ contains
     write (output_unit, '(a, i0, a, i0, a)') '  integrator          ', s%stats%steps, ' steps, ', &
       s%stats%rhs_evaluations, ' right-hand sides'
     write (output_unit, '(a, es10.3, a)') '  CPU time            ', cpu, ' s'
+    if (s%edge_beyond > 0) write (output_unit, '(a, i0, a, f0.3, a)') '  water edges         ', s%edge_beyond, &
+      ' samples from arc length ', s%edge_beyond_from, ' m: an edge beyond the slide''s end (circle estimate)'
     if (s%edge_failures > 0) write (output_unit, '(a, i0, a)') '  water edges         ', s%edge_failures, &
-      ' samples with the circle estimate (foot beyond the surface); first '//s%edge_message
+      ' samples where the edge solve failed (circle estimate); first '//s%edge_message
     if (size(s%stations) > 0) then
       write (output_unit, '(a)') '  station  arc length    time   v middle   v edges (right, left)   speed   height' &
         //'   width'

@@ -11,7 +11,7 @@ module water_flow
   use water_channel, only: channel_t
   use water_section, only: circle_segment, circle_height_for_area, profile_water
   use water_streamline, only: streamline_t, water_point_t, water_point, velocity_from_angle, &
-    ROOT_END, ROOT_STALL, ROOT_CRITICAL, ROOT_TURN, ROOT_FIRST_STATION
+    ROOT_END, ROOT_STALL, ROOT_CRITICAL, ROOT_TURN, ROOT_LIFT, ROOT_FIRST_STATION
   use water_boundaries, only: water_edges
   implicit none (type, external)
   private
@@ -19,11 +19,11 @@ module water_flow
   public :: water_initial_state, simulate_water, water_table
   public :: START_EDGES, START_HEIGHT, START_SPEED, START_HEIGHT_SPEED
   public :: OUTCOME_END, OUTCOME_DURATION, OUTCOME_STALL, OUTCOME_TURN, OUTCOME_CRITICAL, &
-    OUTCOME_ERROR, outcome_name
+    OUTCOME_ERROR, OUTCOME_LIFT, outcome_name
 
   integer, parameter :: START_EDGES = 1, START_HEIGHT = 2, START_SPEED = 3, START_HEIGHT_SPEED = 4
   integer, parameter :: OUTCOME_END = 1, OUTCOME_DURATION = 2, OUTCOME_STALL = 3, OUTCOME_TURN = 4, &
-                        OUTCOME_CRITICAL = 5, OUTCOME_ERROR = 6
+                        OUTCOME_CRITICAL = 5, OUTCOME_ERROR = 6, OUTCOME_LIFT = 7
 
   !> How the water enters at u0 (thesis 4.33 or given values).
   type :: water_start_t
@@ -80,6 +80,7 @@ contains
     case (OUTCOME_STALL); text = 'stalled'
     case (OUTCOME_TURN); text = 'turned back'
     case (OUTCOME_CRITICAL); text = 'near critical flow'
+    case (OUTCOME_LIFT); text = 'lifted off'
     case default; text = 'error'
     end select
   end function outcome_name
@@ -262,6 +263,13 @@ contains
       call prefix_status(status, 'water at the start')
       return
     end if
+    ! a root needs a sign change: water that starts without contact is caught here
+    if (.not. series%normal_force(1) > 0) then
+      series%outcome = OUTCOME_LIFT
+      call set_status(status, STATUS_DOMAIN, lift_message(0.0_wp, y0))
+      series%message = status%text()
+      return
+    end if
     call integrator%start(model, 0.0_wp, y0, opts, status)
     if (.not. status%ok()) return
     series%outcome = OUTCOME_DURATION
@@ -291,6 +299,9 @@ contains
           call set_status(status, STATUS_DOMAIN, 'the water turns across the slide or back ' // &
                           '(angle to the centerline beyond 89.4 deg) at t = ' // &
                           real_text(t)//' s, u = '//real_text(y(1)))
+        else if (root_index(ROOT_LIFT) /= 0) then
+          series%outcome = OUTCOME_LIFT
+          call set_status(status, STATUS_DOMAIN, lift_message(t, y))
         else if (root_index(ROOT_CRITICAL) /= 0) then
           series%outcome = OUTCOME_CRITICAL
           call set_status(status, STATUS_DOMAIN, 'the flow approaches critical (1 - 1/Fr^2 = ' // &
@@ -312,7 +323,7 @@ contains
       end if
     end do outer
     if (series%outcome == OUTCOME_STALL .or. series%outcome == OUTCOME_TURN .or. &
-        series%outcome == OUTCOME_CRITICAL) then
+        series%outcome == OUTCOME_CRITICAL .or. series%outcome == OUTCOME_LIFT) then
       ! keep the message set at the root (record may have reset status)
       if (status%ok()) call set_status(status, STATUS_DOMAIN, outcome_name(series%outcome))
     end if
@@ -320,6 +331,14 @@ contains
     series%stats = integrator%statistics()
 
   contains
+
+    function lift_message(ts, ys) result(text)
+      real(wp), intent(in) :: ts, ys(:)
+      character(len=:), allocatable :: text
+      text = 'the water lifts off the slide surface (normal force (4.12) down to 0: the surface would ' // &
+             'have to pull it) at t = '//real_text(ts)//' s, u = '//real_text(ys(1))//', v = '// &
+             real_text(ys(2))//' rad; the streamline model holds only while the water is pressed on the slide'
+    end function lift_message
 
     subroutine station(i, ts, ys)
       integer, intent(in) :: i

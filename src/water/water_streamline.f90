@@ -52,12 +52,12 @@ module water_streamline
   private
   public :: streamline_t, water_point_t, water_point, velocity_from_angle
   public :: CORRECTION_FULL, CORRECTION_NO_RADIUS, CORRECTION_OFF
-  public :: ROOT_END, ROOT_STALL, ROOT_CRITICAL, ROOT_TURN, ROOT_FIRST_STATION
+  public :: ROOT_END, ROOT_STALL, ROOT_CRITICAL, ROOT_TURN, ROOT_LIFT, ROOT_FIRST_STATION
   public :: default_f1, default_f2, default_f3
 
   integer, parameter :: CORRECTION_FULL = 1, CORRECTION_NO_RADIUS = 2, CORRECTION_OFF = 3
-  integer, parameter :: ROOT_END = 1, ROOT_STALL = 2, ROOT_CRITICAL = 3, ROOT_TURN = 4, &
-                        ROOT_FIRST_STATION = 5
+  integer, parameter :: ROOT_END = 1, ROOT_STALL = 2, ROOT_CRITICAL = 3, ROOT_TURN = 4, ROOT_LIFT = 5, &
+                        ROOT_FIRST_STATION = 6
   !> Identified friction parameters, thesis table 4.3.
   real(wp), parameter :: default_f1 = 0.0274748_wp   ! kg/m
   real(wp), parameter :: default_f2 = 0.138285_wp    ! kg
@@ -116,7 +116,14 @@ contains
 
   !> g1 = u_end - u (end of slide), g2 = w - min_speed (stall), g3 = criticality
   !> - min_criticality (approach to Fr = 1), g4 = cos(beta) - 0.01 (turning across
-  !> or back; R of (4.15) is singular at beta = 90 deg), then u - u_i.
+  !> or back; R of (4.15) is singular at beta = 90 deg), g5 = N/m (lift-off: the
+  !> normal force (4.12) turns negative, the surface would have to pull the
+  !> water), then u - u_i.
+  !> Lift-off is a root, not a check at output times: N depends continuously on
+  !> the state (u, v, u', v') through r_uu, r_uv, r_vv, so its sign change is an
+  !> event in time that root finding locates to the integrator's accuracy, while
+  !> a check every output_step would stop up to one step late (centimetres of
+  !> flight computed as if on the surface) and miss a short dip between outputs.
   subroutine streamline_roots(self, t, y, g)
     class(streamline_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
@@ -133,13 +140,14 @@ contains
     if (st%ok()) then
       g(ROOT_TURN) = -dot_product(wp_%y_m, wp_%x_w) - 0.01_wp   ! cos(beta) - 0.01: turning across
       g(ROOT_STALL) = wp_%speed - self%min_speed
+      g(ROOT_LIFT) = wp_%normal_force/self%mass    ! m/s^2
       if (self%correction == CORRECTION_OFF) then
         g(ROOT_CRITICAL) = 1
       else
         g(ROOT_CRITICAL) = wp_%criticality - self%min_criticality
       end if
     else
-      g(ROOT_STALL) = 1; g(ROOT_CRITICAL) = 1
+      g(ROOT_STALL) = 1; g(ROOT_CRITICAL) = 1; g(ROOT_LIFT) = 1
     end if
     if (allocated(self%stations)) then
       do i = 1, size(self%stations)
