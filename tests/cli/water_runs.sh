@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The water scenario end to end: a complete run writes the /water datasets a
-# user expects; a stalled flow and a flow approaching critical (Fr -> 1) stop
-# with a clear message, exit status 2 and a result file marked incomplete that
-# keeps what was computed.
+# user expects; a stalled flow, a flow approaching critical (Fr -> 1), water
+# lifting off the surface (shot across a horizontal tube, over the side wall)
+# and water turning back (shot up a climbing helix) stop with a clear message,
+# exit status 2 and a result file marked incomplete that keeps what was
+# computed.
 set -u
 slidesim=$1
 work=$(mktemp -d)
@@ -28,6 +30,18 @@ cat > "$work/critical.nml" <<'NML'
 &channel kind = 'straight', incline_deg = 0.0, length = 200 /
 &water flow_rate = 0.004, start = 'speed', speed0 = 1.0, correction = 'full' /
 NML
+cat > "$work/lift.nml" <<'NML'
+&run scenario = 'water', output = 'lift.h5' /
+&solver duration = 10, output_step = 0.005 /
+&channel kind = 'straight', incline_deg = 0.0, length = 50 /
+&water flow_rate = 0.004, start = 'speed', speed0 = 5.0, beta0 = 1.2, correction = 'off' /
+NML
+cat > "$work/turn.nml" <<'NML'
+&run scenario = 'water', output = 'turn.h5' /
+&solver duration = 30, output_step = 0.01 /
+&channel kind = 'helix', pitch = -0.3, helix_radius = 3.0, turns = 2 /
+&water flow_rate = 0.004, start = 'speed', speed0 = 4.0, correction = 'off' /
+NML
 
 checks=$((checks + 1))
 (cd "$work" && "$slidesim" -q ok.nml >ok.out 2>ok.err); got=$?
@@ -41,7 +55,7 @@ h5dump -H -d /water/position "$work/ok.h5" | grep -q 'DATASPACE  SIMPLE { ( [0-9
 grep -q 'end of slide' "$work/ok.out" || fail "ok: summary does not say the water reached the end"
 grep -qE '^ +3 +29\.000' "$work/ok.out" || fail "ok: station table missing"
 
-for name in stall critical; do
+for name in stall critical lift turn; do
   checks=$((checks + 1))
   (cd "$work" && "$slidesim" -q "$name.nml" >"$name.out" 2>"$name.err"); got=$?
   [ $got = 2 ] || fail "$name: exit status $got, expected 2"
@@ -55,6 +69,23 @@ grep -q 'stalled' "$work/stall.err" || fail "stall: message does not say the wat
 h5dump -a /status_message "$work/stall.h5" | grep -q 'stalled' || fail "stall: status_message lacks the reason"
 grep -q 'approaches critical' "$work/critical.err" || fail "critical: message does not name critical flow"
 grep -q "correction = 'off'" "$work/critical.err" || fail "critical: message does not say what to do"
+grep -q 'lifts off' "$work/lift.err" || fail "lift: message does not say the water lifts off"
+h5dump -a /status_message "$work/lift.h5" | grep -q 'lifts off' || fail "lift: status_message lacks the reason"
+grep -q 'stopped at: lifted off' "$work/lift.out" || fail "lift: summary does not name the stop"
+h5dump -a /water/outcome "$work/lift.h5" | grep -q '"lifted off"' || fail "lift: /water outcome is not 'lifted off'"
+grep -q 'turns across the slide or back' "$work/turn.err" || fail "turn: message does not say the water turns back"
+h5dump -a /status_message "$work/turn.h5" | grep -q 'turns across' || fail "turn: status_message lacks the reason"
+h5dump -a /water/outcome "$work/turn.h5" | grep -q '"turned back"' || fail "turn: /water outcome is not 'turned back'"
+
+# the default run (the demo slide): near the end the flow runs at an angle to
+# the centerline, so the leading edge's foot lies beyond the slide's end for
+# the last samples; the summary says so in one plain line (no solver message)
+checks=$((checks + 1))
+(cd "$work" && "$slidesim" -q >default.out 2>default.err); got=$?
+[ $got = 0 ] || fail "default: exit status $got ($(cat "$work/default.err"))"
+grep -qE "water edges +[0-9]+ samples from arc length 66\.9[0-9]* m: an edge beyond the slide's end" "$work/default.out" \
+  || fail "default: summary lacks the plain line about the edge beyond the end"
+grep -q 'HYBRJ' "$work/default.out" && fail "default: summary shows a solver message"
 
 echo "$((checks - failures)) passed, $failures failed"
 [ $failures = 0 ]
