@@ -627,67 +627,52 @@ contains
   end subroutine locate
 
   !> d(r, i): r-th derivative (r = 0..3) of the k+1 B-splines of degree k that
-  !> do not vanish on [t(l), t(l+1)), at x: the triangular table of the
-  !> Cox-de Boor recurrence, then derivatives as differences of the lower
-  !> degree B-splines (de Boor, A Practical Guide to Splines, X.(15)).
+  !> do not vanish on [t(l), t(l+1)), at x. The Cox-de Boor recurrence gives
+  !> the values of degrees 0..k; the m-th derivative of degree k then follows
+  !> from the values of degree k-m by m steps of
+  !>   B'_{i,p} = p (B_{i,p-1}/(t_{i+p} - t_i) - B_{i+1,p-1}/(t_{i+p+1} - t_{i+1}))
+  !> applied to the (m-1)-th derivatives of degree p-1 (de Boor, A Practical
+  !> Guide to Splines, X.(12)). Every denominator is one of the k(k+1)/2 knot
+  !> spans of the recurrence, each inverted once.
   pure subroutine basis_derivatives(t, k, x, l, d)
     real(wp), intent(in) :: t(:), x
     integer, intent(in) :: k, l
     real(wp), intent(out) :: d(0:3, max_degree + 1)
-    real(wp) :: nd(0:max_degree, 0:max_degree), left(max_degree), right(max_degree), saved, temp
-    real(wp) :: a(0:1, 0:max_degree), dsum
-    integer :: j, r, kk, s1, s2, rk, pk, j1, j2, jj, nder
-    ! nd(j, r): B-spline values of degree r (lower triangle: knot differences)
+    ! nd(r, p): the B-spline of degree p starting at knot l-p+r, r = 0..p;
+    ! inv(p, r) = 1/(t(l+r+1) - t(l+r+1-p)), positive since the span holds
+    ! [t(l), t(l+1)]
+    real(wp) :: nd(0:max_degree, 0:max_degree), inv(max_degree, 0:max_degree - 1)
+    real(wp) :: left(max_degree), right(max_degree), b(0:max_degree), q(0:max_degree - 1), saved, temp
+    integer :: j, r, m, p
     nd(0, 0) = 1
     do j = 1, k
       left(j) = x - t(l + 1 - j)
       right(j) = t(l + j) - x
       saved = 0
       do r = 0, j - 1
-        nd(j, r) = right(r + 1) + left(j - r)
-        temp = nd(r, j - 1)/nd(j, r)
+        inv(j, r) = 1/(t(l + r + 1) - t(l + r + 1 - j))
+        temp = nd(r, j - 1)*inv(j, r)
         nd(r, j) = saved + right(r + 1)*temp
         saved = left(j - r)*temp
       end do
       nd(j, j) = saved
     end do
     d = 0
-    do r = 0, k
-      d(0, r + 1) = nd(r, k)
-    end do
-    nder = min(3, k)
-    do r = 0, k
-      s1 = 0
-      s2 = 1
-      a(0, 0) = 1
-      do kk = 1, nder
-        dsum = 0
-        rk = r - kk
-        pk = k - kk
-        if (r >= kk) then
-          a(s2, 0) = a(s1, 0)/nd(pk + 1, rk)
-          dsum = a(s2, 0)*nd(rk, pk)
-        end if
-        j1 = merge(1, -rk, rk >= -1)
-        j2 = merge(kk - 1, k - r, r - 1 <= pk)
-        do jj = j1, j2
-          a(s2, jj) = (a(s1, jj) - a(s1, jj - 1))/nd(pk + 1, rk + jj)
-          dsum = dsum + a(s2, jj)*nd(rk + jj, pk)
+    d(0, 1:k + 1) = nd(0:k, k)
+    do m = 1, min(3, k)
+      ! b: the (p-k+m)-th derivatives of the B-splines of degree p
+      b(0:k - m) = nd(0:k - m, k - m)
+      do p = k - m + 1, k
+        do r = 0, p - 1
+          q(r) = p*b(r)*inv(p, r)
         end do
-        if (r <= pk) then
-          a(s2, kk) = -a(s1, kk - 1)/nd(pk + 1, r)
-          dsum = dsum + a(s2, kk)*nd(r, pk)
-        end if
-        d(kk, r + 1) = dsum
-        j = s1
-        s1 = s2
-        s2 = j
+        b(0) = -q(0)
+        do r = 1, p - 1
+          b(r) = q(r - 1) - q(r)
+        end do
+        b(p) = q(p - 1)
       end do
-    end do
-    r = k
-    do kk = 1, nder
-      d(kk, 1:k + 1) = d(kk, 1:k + 1)*r
-      r = r*(k - kk)
+      d(m, 1:k + 1) = b(0:k)
     end do
   end subroutine basis_derivatives
 end module numerics_spline_surface
