@@ -2,7 +2,9 @@
 !> grid; one-call evaluation of the value and all partials to third order,
 !> checked against FITPACK's own evaluators (bispev, parder, surev) and against
 !> central differences at scattered points; the thesis's paraboloids
-!> (section 3.5.3.3); statuses for invalid input and points outside.
+!> (section 3.5.3.3); statuses for invalid input and points outside;
+!> evaluate_grid against evaluate point by point (degrees 1..5, parametric,
+!> grids through knots and domain ends).
 program test_spline_surface
   use base_kinds, only: wp
   use base_constants, only: pi
