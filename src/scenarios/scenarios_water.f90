@@ -207,7 +207,8 @@ contains
     call file%write_matrix(g//'left_point', s%left_point(:, :n), 'm', 'left water edge point (3 x n)', status)
     call file%write_matrix(g//'right_point', s%right_point(:, :n), 'm', 'right water edge point (3 x n)', status)
     call file%write_integers(g//'edge_solved', s%edge_solved(:n), '1', &
-                             '1: edges solved (4.25-4.26); 0: circle estimate (edge beyond the surface, or edges off)', &
+                             '1: edges solved (4.25-4.26); 0: circle estimate (edge beyond the slide''s end, ' // &
+                             'failed, or edges off)', &
                              status)
     call file%set_attribute('/water', 'outcome', outcome_name(s%outcome), status)
     call file%set_attribute('/water', 'flow_rate_m3_per_s', format_real(s%flow_rate), status)
