@@ -53,9 +53,9 @@ program slidesim
   if (status%code /= STATUS_OK) then
     call log_error(status%text())
     select case (status%code)
-    case (STATUS_INVALID_INPUT); error stop 1, quiet=.true.
-    case (STATUS_IO); error stop 3, quiet=.true.
-    case default; error stop 2, quiet=.true.
+    case (STATUS_INVALID_INPUT); stop 1, quiet=.true.
+    case (STATUS_IO); stop 3, quiet=.true.
+    case default; stop 2, quiet=.true.
     end select
   end if
 
@@ -87,6 +87,6 @@ contains
   subroutine usage_error(message)
     character(len=*), intent(in) :: message
     call log_error(message//' (see slidesim --help)')
-    error stop 1, quiet=.true.
+    stop 1, quiet=.true.
   end subroutine usage_error
 end program slidesim

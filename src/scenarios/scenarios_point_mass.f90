@@ -222,7 +222,7 @@ contains
     e0 = s%kinetic(1) + s%potential(1)
     drift = maxval(abs(s%kinetic(:n) + s%potential(:n) - s%friction_work(:n) - e0))
     write (output_unit, '(a)') 'slidesim point_mass on '//model%surface%describe()
-    write (output_unit, '(a, f0.4, a)') '  simulated time       ', s%time(n), ' s'
+    write (output_unit, '(a, f10.4, a)') '  simulated time      ', s%time(n), ' s'
     write (output_unit, '(a, 3f12.5, a)') '  final position      ', s%position(:, n), ' m'
     write (output_unit, '(a, f12.5, a)') '  final speed         ', s%speed(n), ' m/s'
     write (output_unit, '(a, 2f12.5, a)') '  normal force min/max', minval(s%normal_force(:n)), &
@@ -232,8 +232,12 @@ contains
       maxval(s%kinetic(:n)), tiny(1.0_wp)), ' (relative)'
     write (output_unit, '(a, i0, a, i0, a)') '  integrator          ', stats%steps, ' steps, ', &
       stats%rhs_evaluations, ' right-hand sides'
-    write (output_unit, '(a, es10.3, a, es10.3, a)') '  CPU time            ', cpu, ' s (', &
-      cpu/max(s%time(n), tiny(1.0_wp)), ' s per simulated second)'
+    if (s%time(n) > 0) then
+      write (output_unit, '(a, es10.3, a, es10.3, a)') '  CPU time            ', cpu, ' s (', &
+        cpu/s%time(n), ' s per simulated second)'
+    else
+      write (output_unit, '(a, es10.3, a)') '  CPU time            ', cpu, ' s'
+    end if
     if (run_status%ok()) then
       write (output_unit, '(a)') '  results             '//path
     else
