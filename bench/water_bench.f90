@@ -17,6 +17,7 @@ program water_bench
   use water_streamline, only: streamline_t
   use water_flow, only: water_series_t, simulate_water
   use scenarios_water, only: build_water
+  use bench_timing, only: median
   implicit none (type, external)
 
   integer, parameter :: repeats = 7
@@ -71,19 +72,4 @@ program water_bench
   print '(a, i0, a, i0, a)', '  (', s%stats%steps, ' steps, ', s%stats%rhs_evaluations, ' right-hand sides)'
   print '(a)', '  thesis: 1.0 s CPU for 22.3 s of flow (i7-8700); goal here: <= 0.05 s'
 
-contains
-
-  real(wp) function median(x)
-    real(wp), intent(in) :: x(:)
-    real(wp) :: v(size(x)), tmp
-    integer :: a, b
-    v = x
-    do a = 2, size(v)
-      do b = a, 2, -1
-        if (v(b) >= v(b - 1)) exit
-        tmp = v(b); v(b) = v(b - 1); v(b - 1) = tmp
-      end do
-    end do
-    median = v((size(v) + 1)/2)
-  end function median
 end program water_bench
