@@ -5,7 +5,7 @@ module base_text
   use base_kinds, only: wp
   implicit none (type, external)
   private
-  public :: format_real, format_vector, lower
+  public :: format_real, format_vector, format_integer, lower
 
 contains
 
@@ -82,4 +82,11 @@ contains
     end do
   end function lower
 
+  pure function format_integer(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    character(len=16) :: buffer
+    write (buffer, '(i0)') i
+    text = trim(buffer)
+  end function format_integer
 end module base_text

@@ -5,6 +5,7 @@
 !> See docs/geometry.md for every variable with unit, default and range.
 module io_geometry_config
   use base_kinds, only: wp
+  use base_text, only: format_integer
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_t
@@ -99,7 +100,7 @@ contains
     kind = lower(adjustl(kind))
     call check_choice(input, 'geometry', 'kind', kind, geometry_kinds, status)
     if (status%ok() .and. (check_samples < 10 .or. check_samples > 1000000)) &
-      call invalid(input, 'geometry', 'check_samples', format_real(real(check_samples, wp)), &
+      call invalid(input, 'geometry', 'check_samples', format_integer(check_samples), &
                    'must lie in [10, 1000000]', status)
   end subroutine read_geometry_group
 
@@ -169,7 +170,7 @@ contains
                                  phase=phase_deg*pi/180, u_min=0.0_wp, u_max=two_pi*turns)
     case ('points')
       if (n_points < 4 .or. n_points > max_points) then
-        call invalid(input, g, 'n_points', format_real(real(n_points, wp)), 'too few centerline points: ' // &
+        call invalid(input, g, 'n_points', format_integer(n_points), 'too few centerline points: ' // &
                      'need at least 4 (and at most 2000) points', status)
         return
       end if
@@ -203,11 +204,11 @@ contains
       end do
       call check_nonnegative(input, g, 'smoothing', smoothing, 'm^2', status)
       if (status%ok() .and. (degree < 3 .or. degree > 5)) &
-        call invalid(input, g, 'degree', format_real(real(degree, wp)), 'must be 3, 4 or 5', status)
+        call invalid(input, g, 'degree', format_integer(degree), 'must be 3, 4 or 5', status)
       call check_finite_vector(input, g, 'start_tangent', start_tangent, status)
       call check_finite_vector(input, g, 'end_tangent', end_tangent, status)
       if (status%ok() .and. mod(degree, 2) == 0 .and. (any(start_tangent /= 0) .or. any(end_tangent /= 0))) &
-        call invalid(input, g, 'degree', format_real(real(degree, wp)), &
+        call invalid(input, g, 'degree', format_integer(degree), &
                      'must be odd (3 or 5) when end tangents are given', status)
       if (.not. status%ok()) return
       if (any(start_tangent /= 0) .and. any(end_tangent /= 0)) then
@@ -278,7 +279,7 @@ contains
       return
     end if
     if (n_elements < 1 .or. n_elements > max_elements) then
-      call invalid(input, g, 'n_elements', format_real(real(n_elements, wp)), 'must lie in [1, 40]', status)
+      call invalid(input, g, 'n_elements', format_integer(n_elements), 'must lie in [1, 40]', status)
       return
     end if
     call check_finite_vector(input, g, 'start', start, status)
@@ -289,7 +290,7 @@ contains
     call check_range(input, g, 'fit_spacing', fit_spacing, 0.05_wp, 5.0_wp, 'm', status)
     call check_nonnegative(input, g, 'smoothing', smoothing, 'm^2', status)
     if (status%ok() .and. degree /= 3 .and. degree /= 5) &
-      call invalid(input, g, 'degree', format_real(real(degree, wp)), 'must be 3 or 5', status)
+      call invalid(input, g, 'degree', format_integer(degree), 'must be 3 or 5', status)
     do i = 1, n_elements
       kind(i) = lower(adjustl(kind(i)))
       direction(i) = lower(adjustl(direction(i)))
@@ -399,7 +400,7 @@ contains
       return
     end if
     if (n_sections < 1 .or. n_sections > max_sections) then
-      call invalid(input, g, 'n_sections', format_real(real(n_sections, wp)), 'must lie in [1, 8]', status)
+      call invalid(input, g, 'n_sections', format_integer(n_sections), 'must lie in [1, 8]', status)
       return
     end if
     do i = 1, n_sections
@@ -425,7 +426,7 @@ contains
                                    transition=joint_width_deg(i)*pi/180))
       case ('profile')
         if (n_profile < 4 .or. n_profile > max_profile) then
-          call invalid(input, g, 'n_profile', format_real(real(n_profile, wp)), &
+          call invalid(input, g, 'n_profile', format_integer(n_profile), &
                        'a profile needs 4 to 400 points (profile_y, profile_z)', status)
           return
         end if
@@ -433,7 +434,7 @@ contains
         call check_finite_vector(input, g, 'profile_z', profile_z(1:n_profile), status)
         call check_nonnegative(input, g, 'profile_smoothing', profile_smoothing, 'm^2', status)
         if (status%ok() .and. (profile_degree < 3 .or. profile_degree > 5)) &
-          call invalid(input, g, 'profile_degree', format_real(real(profile_degree, wp)), 'must be 3, 4 or 5', status)
+          call invalid(input, g, 'profile_degree', format_integer(profile_degree), 'must be 3, 4 or 5', status)
         if (.not. status%ok()) return
         do k = 2, n_profile
           if (profile_y(k) == profile_y(k - 1) .and. profile_z(k) == profile_z(k - 1)) then
@@ -528,7 +529,7 @@ contains
       return
     end if
     if (n_patches < 2 .or. n_patches > max_patches) then
-      call invalid(input, g, 'n_patches', format_real(real(n_patches, wp)), 'must lie in [2, 8]', status)
+      call invalid(input, g, 'n_patches', format_integer(n_patches), 'must lie in [2, 8]', status)
       return
     end if
     do i = 1, n_patches
@@ -598,7 +599,7 @@ contains
     call check_choice(input, g, 'layout', layout, [character(len=10) :: 'scattered', 'grid', 'parametric'], status)
     call check_nonnegative(input, g, 'smoothing', smoothing, 'm^2 (sum of squared residuals)', status)
     if (status%ok() .and. (degree < 1 .or. degree > 5)) &
-      call invalid(input, g, 'degree', format_real(real(degree, wp)), 'must lie in [1, 5]', status)
+      call invalid(input, g, 'degree', format_integer(degree), 'must lie in [1, 5]', status)
     if (status%ok() .and. layout /= 'parametric' .and. (periodic_u .or. periodic_v)) &
       call invalid(input, g, 'periodic_u, periodic_v', 'true', 'only a parametric surface can be periodic', status)
     if (.not. status%ok()) return

@@ -66,10 +66,20 @@ contains
     end if
     n = 0
     do
-      read (unit, '(a)', iostat=ios) line
+      read (unit, '(a)', iostat=ios, iomsg=msg) line
       if (ios /= 0) exit
       n = n + 1
     end do
+    if (ios > 0) then
+      close (unit)
+      call set_status(status, STATUS_IO, 'cannot read input file "'//path//'" (is it a folder?): '//trim(msg))
+      return
+    end if
+    if (n == 0) then
+      close (unit)
+      call set_status(status, STATUS_IO, 'input file "'//path//'" is empty')
+      return
+    end if
     allocate (input%lines(n))
     rewind (unit)
     do n = 1, size(input%lines)
@@ -139,7 +149,21 @@ contains
     end do
   end function group_present
 
-  !> Every group in the input must be one the scenario reads.
+  !> How many groups named `group` the input opens.
+  pure integer function group_count(input, group)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group
+    integer :: i
+    character(len=line_length) :: line
+    group_count = 0
+    do i = 1, size(input%lines)
+      line = adjustl(lower(input%lines(i)))
+      if (line(1:1) /= '&') cycle
+      if (first_word(line(2:)) == lower(group)) group_count = group_count + 1
+    end do
+  end function group_count
+
+  !> Every group in the input must be one the scenario reads, and appear once.
   subroutine check_known_groups(input, allowed, status)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: allowed(:)
@@ -154,6 +178,11 @@ contains
       if (line(1:1) /= '&') cycle
       group = first_word(line(2:))
       if (group == '' .or. group == 'end') cycle
+      if (group_count(input, group) > 1) then
+        call set_status(status, STATUS_INVALID_INPUT, input%name//': line '//itoa(i)//': &'//group// &
+                        ' appears more than once; give each group once')
+        return
+      end if
       known = .false.
       do j = 1, size(allowed)
         if (group == trim(allowed(j))) known = .true.
@@ -186,7 +215,15 @@ contains
     end do
     k = index(iomsg, 'Cannot match namelist object name')
     if (k > 0) then
-      detail = 'unknown variable "'//trim(adjustl(iomsg(k + 33:)))//'"; allowed:'//list
+      detail = trim(adjustl(iomsg(k + 33:)))
+      if (verify(detail(1:1), 'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_') /= 0) then
+        ! Not a name: a value the variable's type cannot take (a text for a number,
+        ! too many values, a missing comma), which the reader then took for a name.
+        detail = 'cannot read a value near "'//detail//'" (check its type: a number, a quoted text, '// &
+                 'the number of values); allowed variables:'//list
+      else
+        detail = 'unknown variable "'//detail//'"; allowed:'//list
+      end if
     else
       detail = trim(iomsg)//' (check the spelling, the type and the number of values); allowed:'//list
     end if
@@ -229,8 +266,12 @@ contains
     real(wp), intent(in) :: value
     type(status_t), intent(inout) :: status
     if (.not. status%ok()) return
-    if (.not. (ieee_is_finite(value) .and. value > 0)) &
+    ! Fortran's .and. does not short-circuit: compare only finite values (NaN traps in Debug).
+    if (.not. ieee_is_finite(value)) then
       call invalid(input, group, variable, format_real(value), 'must be a finite number > 0 ('//unit//')', status)
+    else if (value <= 0) then
+      call invalid(input, group, variable, format_real(value), 'must be a finite number > 0 ('//unit//')', status)
+    end if
   end subroutine check_positive
 
   subroutine check_nonnegative(input, group, variable, value, unit, status)
@@ -239,8 +280,11 @@ contains
     real(wp), intent(in) :: value
     type(status_t), intent(inout) :: status
     if (.not. status%ok()) return
-    if (.not. (ieee_is_finite(value) .and. value >= 0)) &
+    if (.not. ieee_is_finite(value)) then
       call invalid(input, group, variable, format_real(value), 'must be a finite number >= 0 ('//unit//')', status)
+    else if (value < 0) then
+      call invalid(input, group, variable, format_real(value), 'must be a finite number >= 0 ('//unit//')', status)
+    end if
   end subroutine check_nonnegative
 
   subroutine check_range(input, group, variable, value, lower, upper, unit, status)
@@ -249,9 +293,13 @@ contains
     real(wp), intent(in) :: value, lower, upper
     type(status_t), intent(inout) :: status
     if (.not. status%ok()) return
-    if (.not. (ieee_is_finite(value) .and. value >= lower .and. value <= upper)) &
+    if (.not. ieee_is_finite(value)) then
       call invalid(input, group, variable, format_real(value), 'must lie in ['//format_real(lower)// &
                    ', '//format_real(upper)//'] ('//unit//')', status)
+    else if (value < lower .or. value > upper) then
+      call invalid(input, group, variable, format_real(value), 'must lie in ['//format_real(lower)// &
+                   ', '//format_real(upper)//'] ('//unit//')', status)
+    end if
   end subroutine check_range
 
   !> A keyword among `choices` (compared in lower case, trailing blanks ignored).

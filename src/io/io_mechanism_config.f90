@@ -3,6 +3,7 @@
 !> (layout in docs/outputs_multibody.md).
 module io_mechanism_config
   use base_kinds, only: wp
+  use base_text, only: format_integer
   use base_constants, only: standard_gravity
   use base_status, only: status_t
   use numerics_ode, only: ode_stats_t
@@ -57,7 +58,10 @@ contains
                                'gravity', 'theta0', 'dtheta0'], status)
       return
     end if
-    if (links < 1 .or. links > 2) call invalid(input, g, 'links', format_real(real(links, wp)), 'must be 1 or 2', status)
+    if (links < 1 .or. links > 2) then
+      call invalid(input, g, 'links', format_integer(links), 'must be 1 or 2', status)
+      return
+    end if
     do k = 1, links
       call check_positive(input, g, 'length('//achar(48 + k)//')', length(k), 'm', status)
       call check_positive(input, g, 'mass('//achar(48 + k)//')', mass(k), 'kg', status)
@@ -106,7 +110,7 @@ contains
     call check_finite(input, g, 'crank0', crank0, status)
     call check_finite(input, g, 'dcrank0', dcrank0, status)
     if (status%ok() .and. abs(branch) /= 1) &
-      call invalid(input, g, 'branch', format_real(real(branch, wp)), 'must be +1 or -1', status)
+      call invalid(input, g, 'branch', format_integer(branch), 'must be +1 or -1', status)
     if (.not. status%ok()) return
     config%params = fourbar_params_t(a, b, c, d, mass, gravity)
     config%crank0 = crank0

@@ -1,6 +1,7 @@
 !> &solver: the ODE integrator's settings and the simulated time span.
 module io_solver_config
   use base_kinds, only: wp
+  use base_text, only: format_integer
   use base_status, only: status_t
   use numerics_ode, only: ode_options_t, ODE_ADAMS, ODE_BDF
   use io_input, only: input_text_t, namelist_read_error, check_positive, check_range, &
@@ -50,7 +51,7 @@ contains
     call check_nonnegative(input, g, 'initial_step', initial_step, 's', status)
     call check_nonnegative(input, g, 'max_step', max_step, 's', status)
     if (status%ok() .and. max_steps < 1) &
-      call invalid(input, g, 'max_steps', format_real(real(max_steps, wp)), 'must be an integer >= 1', status)
+      call invalid(input, g, 'max_steps', format_integer(max_steps), 'must be an integer >= 1', status)
     if (status%ok() .and. output_step > duration) &
       call invalid(input, g, 'output_step', format_real(output_step), &
                    'must not exceed duration = '//format_real(duration)//' s', status)

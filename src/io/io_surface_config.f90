@@ -81,6 +81,8 @@ contains
                         trim(lower(adjustl(kind)))//''' needs geometry_file = ''<file with the geometry groups>''')
       else
         call load_input_file(input%resolve_path(geometry_file), geometry_input, status)
+        if (.not. status%ok()) call prefix_status(status, input%name//': &'//g//': geometry_file = '''// &
+                                                  trim(geometry_file)//'''')
         if (status%ok()) call read_geometry_config(geometry_input, local, status, kind=lower(adjustl(kind)))
       end if
     end select

@@ -6,6 +6,7 @@
 module scenarios_geometry
   use, intrinsic :: iso_fortran_env, only: output_unit
   use base_kinds, only: wp
+  use base_text, only: format_integer
   use base_status, only: status_t, prefix_status
   use base_log, only: log_info
   use geometry_surface, only: surface_t, surface_point_t
@@ -75,12 +76,12 @@ contains
       call namelist_read_error(input, 'grid', msg, [character(len=8) :: 'n_u', 'n_v', 'n_frames'], status)
       return
     end if
-    if (n_u < 2 .or. n_u > 100000) call invalid(input, 'grid', 'n_u', format_real(real(n_u, wp)), &
+    if (n_u < 2 .or. n_u > 100000) call invalid(input, 'grid', 'n_u', format_integer(n_u), &
                                                 'must lie in [2, 100000]', status)
     if (status%ok() .and. (n_v < 2 .or. n_v > 10000)) call invalid(input, 'grid', 'n_v', &
-                                                format_real(real(n_v, wp)), 'must lie in [2, 10000]', status)
+                                                format_integer(n_v), 'must lie in [2, 10000]', status)
     if (status%ok() .and. (n_frames < 2 .or. n_frames > 100000)) call invalid(input, 'grid', 'n_frames', &
-                                                format_real(real(n_frames, wp)), 'must lie in [2, 100000]', status)
+                                                format_integer(n_frames), 'must lie in [2, 100000]', status)
     n_u_out = n_u; n_v_out = n_v; n_frames_out = n_frames
   end subroutine read_grid
 

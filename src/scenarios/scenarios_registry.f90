@@ -2,9 +2,9 @@
 !> point that reads an input, checks &run and runs the scenario it names.
 module scenarios_registry
   use, intrinsic :: iso_fortran_env, only: output_unit
-  use base_status, only: status_t
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_version, only: slidesim_version
-  use io_input, only: input_text_t, load_input_file, check_choice
+  use io_input, only: input_text_t, load_input_file, check_choice, group_present, invalid
   use io_builtin_inputs, only: builtin_input
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
@@ -28,6 +28,28 @@ module scenarios_registry
     'a bar sliding on a surface on two surface joints, closed like the rider']
 
 contains
+
+  !> The result file must be creatable before any work starts: its folder exists
+  !> and is writable, and the name is not a folder.
+  subroutine check_output_path(input, path, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: path
+    type(status_t), intent(inout) :: status
+    integer :: unit, ios
+    logical :: is_folder
+    inquire (file=trim(path)//'/.', exist=is_folder)
+    if (is_folder) then
+      call invalid(input, 'run', 'output', "'"//trim(path)//"'", 'is a folder; name a file', status)
+      return
+    end if
+    open (newunit=unit, file=trim(path)//'.tmp', status='replace', action='write', iostat=ios)
+    if (ios /= 0) then
+      call invalid(input, 'run', 'output', "'"//trim(path)//"'", &
+                   'cannot be written (does its folder exist, and is it writable?)', status)
+      return
+    end if
+    close (unit, status='delete')
+  end subroutine check_output_path
 
   subroutine print_scenarios()
     integer :: i
@@ -65,10 +87,16 @@ contains
     character(len=*), intent(in), optional :: output
     type(run_config_t) :: run
 
+    if (.not. group_present(input, 'run')) then
+      call set_status(status, STATUS_INVALID_INPUT, input%name//': no &run group; every input names its '// &
+                      'scenario there (slidesim --default-input prints a complete example)')
+      return
+    end if
     call read_run_config(input, run, status)
     if (.not. status%ok()) return
     if (present(output)) run%output = output
     call check_choice(input, 'run', 'scenario', run%scenario, scenario_names, status)
+    if (status%ok()) call check_output_path(input, run%output, status)
     if (.not. status%ok()) return
     select case (trim(run%scenario))
     case ('point_mass')

@@ -5,7 +5,7 @@ set -u
 slidesim=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-failures=0; checks=0
+failures=0; checks=0; nan_cases=0
 
 # expect NAME STATUS NEEDLE... : runs $work/NAME.nml, checks the exit status, that
 # every needle appears in the message, and that no result file was left.
@@ -56,7 +56,31 @@ printf "&run output = 'x.h5' /\n&surface kind = 'ellipsoid' /\n&point_mass v0 = 
 expect outside_domain 1 outside_domain.nml '&point_mass' 'u0, v0' 'parameter domain'
 
 printf "&run output = '%s/no/such/folder/x.h5' /\n%s\n%s\n" "$work" "$base_surface" "$base_mass" > "$work/unwritable.nml"
-expect unwritable 3 'no/such/folder/x.h5' 'cannot create'
+expect unwritable 1 unwritable.nml '&run' 'output' 'no/such/folder/x.h5' 'cannot be written'
+
+mkdir -p "$work/a_folder"
+printf "&run output = 'a_folder' /\n%s\n%s\n" "$base_surface" "$base_mass" > "$work/folder_output.nml"
+expect folder_output 1 folder_output.nml '&run' output a_folder 'is a folder'
+
+: > "$work/empty.nml"
+expect empty 3 empty.nml 'is empty'
+
+printf "&surface kind = 'plane' /\n" > "$work/no_run.nml"
+expect no_run 1 no_run.nml 'no &run group'
+
+printf "&run output = 'x.h5' /\n%s\n%s\n&point_mass mass = 2 /\n" "$base_surface" "$base_mass" > "$work/repeated.nml"
+expect repeated 1 repeated.nml '&point_mass' 'more than once'
+
+printf "&run output = 'x.h5' /\n&surface kind = 'ellipsoid', a = 'two' /\n" > "$work/wrong_type.nml"
+expect wrong_type 1 wrong_type.nml '&surface' "'two'" 'cannot read a value'
+
+for bad in "mass = NaN" "friction_coefficient = -Inf" "gravity = 0, NaN, 0"; do
+  name=nan_$((++nan_cases))
+  printf "&run output = 'x.h5' /\n%s\n&point_mass %s /\n" "$base_surface" "$bad" > "$work/$name.nml"
+  expect $name 1 $name.nml '&point_mass' "${bad%% =*}"
+done
+printf "&run output = 'x.h5' /\n%s\n%s\n&solver rtol = NaN /\n" "$base_surface" "$base_mass" > "$work/nan_rtol.nml"
+expect nan_rtol 1 nan_rtol.nml '&solver' 'rtol = NaN'
 
 checks=$((checks + 1))
 (cd "$work" && "$slidesim" missing.nml >/dev/null 2>"$work/missing.err"); got=$?
