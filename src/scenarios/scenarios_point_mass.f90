@@ -80,6 +80,8 @@ contains
     real(wp) :: y0(5), y(5), t, t_out, cpu_start, cpu_end
     integer :: n_out, k, next_report
     logical :: at_edge
+    integer :: edge(4)
+    character(len=:), allocatable :: outcome
 
     call build_point_mass(input, solver, model, y0, status)
     if (.not. status%ok()) return
@@ -95,17 +97,23 @@ contains
                   ' s, output every '//format_real(solver%output_step)//' s')
     call record(model, 0.0_wp, y0, series, run_status)
     if (run_status%ok()) call integrator%start(model, 0.0_wp, y0, solver%options, run_status)
+    outcome = 'the end of the simulated time'
     next_report = max(1, n_out/10)
     k = 0
     do while (run_status%ok() .and. k < n_out)
       k = k + 1
       t_out = min(k*solver%output_step, solver%duration)
-      call integrator%advance(t_out, t, y, run_status, root_found=at_edge)
+      call integrator%advance(t_out, t, y, run_status, root_found=at_edge, root_index=edge)
       if (.not. run_status%ok()) exit
       call record(model, t, y, series, run_status)
       if (at_edge .and. run_status%ok()) then
-        call set_status(run_status, STATUS_DOMAIN, 'the mass reached the edge of the surface''s parameter '// &
-                        'domain at (u, v) = ('//format_real(y(1))//', '//format_real(y(2))//')')
+        if (any(edge(1:2) /= 0)) then
+          ! An end in u (along a slide): the ride is over, not a failure.
+          outcome = 'reached the end of the surface at u = '//format_real(y(1))//' (t = '//format_real(t)//' s)'
+        else
+          call set_status(run_status, STATUS_DOMAIN, 'the mass reached the edge of the surface''s parameter '// &
+                          'domain at (u, v) = ('//format_real(y(1))//', '//format_real(y(2))//')')
+        end if
         exit
       end if
       if (mod(k, next_report) == 0) call log_progress('point_mass', t, solver%duration)
@@ -116,12 +124,16 @@ contains
 
     call write_series(file, input, run, series, integrator%statistics(), cpu_end - cpu_start, write_status)
     if (run_status%ok()) then
-      call file%finish(write_status%ok(), write_status%text(), write_status)
+      if (write_status%ok()) then
+        call file%finish(.true., 'ok: '//outcome, write_status)
+      else
+        call file%finish(.false., write_status%text(), write_status)
+      end if
     else
       call file%finish(.false., run_status%text(), write_status)
     end if
     call print_summary(model, series, integrator%statistics(), cpu_end - cpu_start, file%final_path(), &
-                       run_status)
+                       run_status, outcome)
     if (.not. run_status%ok()) then
       status = run_status
     else if (.not. write_status%ok()) then
@@ -207,13 +219,14 @@ contains
     call file%write_vector('/statistics/cpu_time', [cpu], 's', 'CPU time of the integration', status)
   end subroutine write_series
 
-  subroutine print_summary(model, s, stats, cpu, path, run_status)
+  subroutine print_summary(model, s, stats, cpu, path, run_status, outcome)
     type(point_mass_t), intent(in) :: model
     type(series_t), intent(in) :: s
     type(ode_stats_t), intent(in) :: stats
     real(wp), intent(in) :: cpu
     character(len=*), intent(in) :: path
     type(status_t), intent(in) :: run_status
+    character(len=*), intent(in) :: outcome
     real(wp) :: e0, drift
     integer :: n
 
@@ -223,6 +236,7 @@ contains
     drift = maxval(abs(s%kinetic(:n) + s%potential(:n) - s%friction_work(:n) - e0))
     write (output_unit, '(a)') 'slidesim point_mass on '//model%surface%describe()
     write (output_unit, '(a, f10.4, a)') '  simulated time      ', s%time(n), ' s'
+    if (run_status%ok()) write (output_unit, '(a)') '  stopped at          '//outcome
     write (output_unit, '(a, 3f12.5, a)') '  final position      ', s%position(:, n), ' m'
     write (output_unit, '(a, f12.5, a)') '  final speed         ', s%speed(n), ' m/s'
     write (output_unit, '(a, 2f12.5, a)') '  normal force min/max', minval(s%normal_force(:n)), &

@@ -6,8 +6,8 @@ module scenarios_water
   use, intrinsic :: iso_fortran_env, only: output_unit
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
-  use base_log, only: log_info
-  use geometry_surface, only: surface_t
+  use base_log, only: log_info, log_warning
+  use geometry_surface, only: surface_t, surface_point_t
   use geometry_tube, only: tube_surface_t
   use numerics_ode, only: ode_stats_t
   use water_channel, only: analytic_tube_t
@@ -41,7 +41,9 @@ contains
     type(status_t), intent(inout) :: status
     class(surface_t), allocatable :: surface
     type(analytic_tube_t) :: tube
-    real(wp) :: u_min, u_max, v_min, v_max, total
+    real(wp) :: u_min, u_max, v_min, v_max, total, start_speed
+    type(surface_point_t) :: start_point
+    real(wp), parameter :: plausible_speed = 30   ! m/s
     integer :: i
 
     y0 = 0
@@ -109,7 +111,16 @@ contains
     if (.not. status%ok()) then
       call prefix_status(status, input%name//': &water: start')
       status%code = STATUS_INVALID_INPUT
+      return
     end if
+    ! Water in a slide runs at a few m/s; a start far beyond that is almost
+    ! always a unit mistake (flow_rate in l/s instead of m^3/s, a height in mm).
+    call model%channel%evaluate(y0(1), y0(2), 1, start_point, status)
+    if (.not. status%ok()) return
+    start_speed = norm2(y0(3)*start_point%ru + y0(4)*start_point%rv)
+    if (start_speed > plausible_speed) call log_warning(input%name//': &water: the start speed is '// &
+      format_real(start_speed)//' m/s, far above the few m/s of water in a slide; check flow_rate (m^3/s) '// &
+      'and the start height (m)')
   end subroutine build_water
 
   subroutine run_water(input, run, status)
@@ -281,15 +292,15 @@ contains
     if (n < 1) return
     write (output_unit, '(a)') 'slidesim water in '//model%channel%describe()
     write (output_unit, '(a, es11.4, a)') '  flow rate           ', s%flow_rate, ' m^3/s'
-    write (output_unit, '(a, f0.4, a, f0.3, a, a)') '  flow time           ', s%time(n), ' s over ', &
+    write (output_unit, '(a, f10.4, a, f10.3, a, a)') '  flow time           ', s%time(n), ' s over ', &
       s%arc_length(n) - s%arc_length(1), ' m of slide, stopped at: ', outcome_name(s%outcome)
-    write (output_unit, '(a, 2f9.4, a)') '  speed min/max       ', minval(s%speed(:n)), maxval(s%speed(:n)), ' m/s'
-    write (output_unit, '(a, 2f9.5, a)') '  height min/max      ', minval(s%height(:n)), maxval(s%height(:n)), ' m'
-    write (output_unit, '(a, 2f9.4, a)') '  v min/max           ', minval(s%v(:n)), maxval(s%v(:n)), ' rad'
+    write (output_unit, '(a, 2g13.6, a)') '  speed min/max       ', minval(s%speed(:n)), maxval(s%speed(:n)), ' m/s'
+    write (output_unit, '(a, 2g13.6, a)') '  height min/max      ', minval(s%height(:n)), maxval(s%height(:n)), ' m'
+    write (output_unit, '(a, 2f13.4, a)') '  v min/max           ', minval(s%v(:n)), maxval(s%v(:n)), ' rad'
     write (output_unit, '(a, i0, a, i0, a)') '  integrator          ', s%stats%steps, ' steps, ', &
       s%stats%rhs_evaluations, ' right-hand sides'
     write (output_unit, '(a, es10.3, a)') '  CPU time            ', cpu, ' s'
-    if (s%edge_beyond > 0) write (output_unit, '(a, i0, a, f0.3, a)') '  water edges         ', s%edge_beyond, &
+    if (s%edge_beyond > 0) write (output_unit, '(a, i0, a, f10.3, a)') '  water edges         ', s%edge_beyond, &
       ' samples from arc length ', s%edge_beyond_from, ' m: an edge beyond the slide''s end (circle estimate)'
     if (s%edge_failures > 0) write (output_unit, '(a, i0, a)') '  water edges         ', s%edge_failures, &
       ' samples where the edge solve failed (circle estimate); first '//s%edge_message

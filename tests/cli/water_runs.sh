@@ -83,7 +83,7 @@ h5dump -a /water/outcome "$work/turn.h5" | grep -q '"turned back"' || fail "turn
 checks=$((checks + 1))
 (cd "$work" && "$slidesim" -q >default.out 2>default.err); got=$?
 [ $got = 0 ] || fail "default: exit status $got ($(cat "$work/default.err"))"
-grep -qE "water edges +[0-9]+ samples from arc length 66\.9[0-9]* m: an edge beyond the slide's end" "$work/default.out" \
+grep -qE "water edges +[0-9]+ samples from arc length +66\.9[0-9]* m: an edge beyond the slide's end" "$work/default.out" \
   || fail "default: summary lacks the plain line about the edge beyond the end"
 grep -q 'HYBRJ' "$work/default.out" && fail "default: summary shows a solver message"
 
