@@ -30,6 +30,8 @@ contains
       if (ios == 0 .and. back == x) exit
     end do
     text = trim(adjustl(buffer))
+    e = index(text, '.E')
+    if (e > 0) text = text(:e)//'0'//text(e + 1:)   ! 1.E-14 -> 1.0E-14
     ! Plain notation for moderate magnitudes: 2.5E+00 -> 2.5, 1.0E-03 stays.
     e = exponent10(x)
     if (e >= -3 .and. e <= 6) then
