@@ -11,7 +11,7 @@ module fitpack_reference_io
   implicit none (type, external)
   private
   public :: reference_table_t, load_table, get_reals, get_int, get_real, has_key
-  public :: reference_path, expect, expect_close, expect_close_array, finish_checks
+  public :: reference_path, expect, expect_close, expect_close_array, expect_coefficients, finish_checks
 
   type :: entry_t
     integer :: case_index = 0
@@ -217,6 +217,20 @@ contains
         '  expected ', ref(worst), '  diff ', x(worst) - ref(worst)
     end if
   end subroutine expect_close_array
+
+  !> Coefficients against the genuine ones, each relative to itself:
+  !> |x(i) - ref(i)| <= rtol |ref(i)| + 64 epsilon max |ref|. The floor covers only
+  !> coefficients that are themselves at rounding level of the largest one (a
+  !> coefficient of size ~eps*max|c| has no correct digits in either program);
+  !> 64 ulps of the largest coefficient is what a few dozen rotations can leave.
+  subroutine expect_coefficients(x, ref, rtol, what)
+    real(real64), intent(in) :: x(:), ref(:), rtol
+    character(len=*), intent(in) :: what
+    real(real64) :: floor
+    floor = 0
+    if (size(ref) > 0) floor = 64*epsilon(1.0_real64)*maxval(abs(ref))
+    call expect_close_array(x, ref, rtol, floor, what)
+  end subroutine expect_coefficients
 
   !> Prints the summary and stops with status 1 if any check failed.
   subroutine finish_checks(name)
