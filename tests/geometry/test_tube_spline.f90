@@ -2,7 +2,8 @@
 !> numerics_spline_curve): collinear points give the analytic cylinder (1e-10);
 !> a helix through points has the helix curvature R/(R^2 + c^2) within the
 !> fit's accuracy; a 90 degree curve element fitted from its points stays on
-!> its circle within the fit's accuracy; prescribed end tangents are met;
+!> its circle over its whole circular part within the fit's accuracy
+!> (measured by halving the spacing); prescribed end tangents are met;
 !> tube partials on a spline centerline and spline horizon field against
 !> central differences.
 program test_tube_spline
@@ -27,8 +28,9 @@ program test_tube_spline
   type(curve_point_t) :: c
   type(element_chain_curve_t) :: chain
   type(slide_element_t) :: e(2)
-  real(wp) :: pts(3, 101), hpts(3, 101), u, v, r0, rr, cc, worst, a, b, phi, center(2)
-  integer :: i, j
+  real(wp) :: pts(3, 241), hpts(3, 101), u, v, r0, rr, cc, worst, a, b, phi, center(2)
+  real(wp) :: sig(241), uu(241), errs(3), sigma0, s
+  integer :: i, j, k, n
 
   up = constant_curve_t(value=[0.0_wp, 0.0_wp, 1.0_wp])
 
@@ -68,7 +70,7 @@ program test_tube_spline
     pts(:, i) = [rr*cos(phi), rr*sin(phi), cc*phi]
     hpts(:, i) = [0.2_wp*cos(phi), 0.1_wp, 1.0_wp]          ! a wobbling horizon field
   end do
-  helix = new_spline_centerline(pts, 0.0_wp, 5, st)
+  helix = new_spline_centerline(pts(:, 1:101), 0.0_wp, 5, st)
   call check(st%ok(), 'helix fit')
   call helix%domain(a, b)
   worst = 0
@@ -86,35 +88,67 @@ program test_tube_spline
   ! --- tube partials on a spline centerline with a spline horizon field
   ! the horizon field is sampled at the centerline's points: fit it over the
   ! centerline's parameters (cumulative chord length of the centerline points)
-  horizon = new_spline_centerline(hpts, 0.0_wp, 5, st, parameters=chord(pts))
+  horizon = new_spline_centerline(hpts, 0.0_wp, 5, st, parameters=chord(pts(:, 1:101)))
   call check(st%ok(), 'horizon fit')
   tube = new_tube_surface(helix, horizon, circle_section_t(radius=0.5_wp), st)
   call check(st%ok(), 'spline tube built')
   call fd_tube(tube, 'spline centerline and horizon')
 
-  ! --- a 90 degree curve element (sharp joints) fitted from its points
+  ! --- a 90 degree curve element (R = 6 m after a 4 m straight, joined by a
+  ! 2 m transition as on every slide) fitted from its points like fit_chain
+  ! does (quintic, interpolating, the chain's unit end tangents). By design the
+  ! chain is on its circle exactly from the end of the transition, sigma0 =
+  ! 4 m + 2 m/2 (the smoothstep has reached 1), to the element's end; the
+  ! circle's centre is the chain's point at sigma0 plus R times its left
+  ! normal. The whole circular part is checked: every point sampled at
+  ! sigma >= sigma0 (8 per point spacing; u mapped linearly from sigma within
+  ! each spacing), with the transition zone sigma < sigma0 the only part left
+  ! out. Fit accuracy: the interior interpolation error C h^6 max|c^(6)| with
+  ! |c^(6)| = 1/R^5 = 1.3e-4 1/m^5 and h = 0.224 m is <= 1.6e-8 m (C < 1);
+  ! the largest error, though, sits within a spacing of the end, where the unit
+  ! end tangent differs from dc/du (u = chord length, |dc/du| = 1 + h^2/(24 R^2)).
+  ! Measured by halving h: 3.0e-8, 1.9e-9, 1.2e-10 m for h = 0.224, 0.112,
+  ! 0.056 m (fourth order). The test asks for exactly that: worst(h) <= 1e-7 m
+  ! (the stated accuracy at the 0.22 m spacing; a fit off the circle, a wrong
+  ! centre or a transition reaching past sigma0 gives >= 1e-5 m) and an error
+  ! that falls by more than 12 per halving (h^4 gives 16, h^3 would give 8).
   e(1) = slide_element_t(kind='straight', length=4.0_wp)
   e(2) = slide_element_t(kind='curve', radius=6.0_wp, angle_deg=90.0_wp, direction='left')
-  chain = new_element_chain(e, [0.0_wp, 0.0_wp, 0.0_wp], 0.0_wp, 0.0_wp, st)
-  do i = 1, 61
-    call chain%evaluate(chain%total*(i - 1)/60.0_wp, 0, c, st)
-    pts(:, i) = c%d(:, 0)
+  chain = new_element_chain(e, [0.0_wp, 0.0_wp, 0.0_wp], 0.0_wp, 2.0_wp, st)
+  call check(st%ok(), 'curve element chain: ' // st%text())
+  sigma0 = 4.0_wp + 2.0_wp/2
+  call chain%evaluate(sigma0, 1, c, st)
+  center = c%d(1:2, 0) + 6*[-c%d(2, 1), c%d(1, 1)]/norm2(c%d(1:2, 1))
+  do k = 1, 3
+    n = 60*2**(k - 1) + 1
+    do i = 1, n
+      sig(i) = chain%total*(i - 1)/real(n - 1, wp)
+      call chain%evaluate(sig(i), 0, c, st)
+      pts(:, i) = c%d(:, 0)
+    end do
+    uu(1:n) = chord(pts(:, 1:n))
+    curve = new_spline_centerline(pts(:, 1:n), 0.0_wp, 5, st, start_tangent=[1.0_wp, 0.0_wp, 0.0_wp], &
+                                  end_tangent=[0.0_wp, 1.0_wp, 0.0_wp])
+    call check(st%ok(), 'curve element fit: ' // st%text())
+    errs(k) = 0
+    do i = 1, n - 1
+      if (sig(i + 1) <= sigma0) cycle
+      do j = 0, 8
+        s = sig(i) + (sig(i + 1) - sig(i))*j/8.0_wp
+        if (s < sigma0) cycle
+        u = uu(i) + (uu(i + 1) - uu(i))*(s - sig(i))/(sig(i + 1) - sig(i))
+        call curve%evaluate(u, 0, c, st)
+        errs(k) = max(errs(k), abs(norm2(c%d(1:2, 0) - center) - 6))
+      end do
+    end do
   end do
-  curve = new_spline_centerline(pts(:, 1:61), 0.0_wp, 5, st, start_tangent=[1.0_wp, 0.0_wp, 0.0_wp], &
+  call check(errs(1) <= 1e-7_wp, '90 deg curve element: fitted centerline on its circle (1e-7 m at h = 0.22 m)')
+  call check(errs(2) < errs(1)/12 .and. errs(3) < errs(2)/12, &
+             '90 deg curve element: distance from the circle converges (> 12 per halving of h)')
+  ! the end tangents on the fit with the coarsest spacing (as in the slides)
+  curve = new_spline_centerline(pts(:, 1:241:4), 0.0_wp, 5, st, start_tangent=[1.0_wp, 0.0_wp, 0.0_wp], &
                                 end_tangent=[0.0_wp, 1.0_wp, 0.0_wp])
-  call check(st%ok(), 'curve element fit: ' // st%text())
-  center = [4.0_wp, 6.0_wp]
   call curve%domain(a, b)
-  worst = 0
-  do i = 0, 200
-    u = a + (b - a)*i/200.0_wp
-    call curve%evaluate(u, 1, c, st)
-    if (c%d(1, 0) > 4.0_wp + 1.0_wp) worst = max(worst, abs(norm2(c%d(1:2, 0) - center) - 6))
-  end do
-  ! fit accuracy: the points are 0.16 m apart and the curvature jumps at the
-  ! joint (the fit smooths it over a few point spacings); 1 m past the joint
-  ! the interpolant is on the circle to ~1e-5 m; require 1 mm
-  call check(worst < 1e-3_wp, '90 deg curve element: fitted centerline on its circle (1 mm)')
   call curve%evaluate(a, 1, c, st)
   call check_close_array(c%d(:, 1)/norm2(c%d(:, 1)), [1.0_wp, 0.0_wp, 0.0_wp], 0.0_wp, 1e-10_wp, 'start tangent')
   call curve%evaluate(b, 1, c, st)
