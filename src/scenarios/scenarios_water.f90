@@ -14,7 +14,7 @@ module scenarios_water
   use water_tube_channel, only: new_tube_channel
   use water_streamline, only: streamline_t, CORRECTION_FULL, CORRECTION_NO_RADIUS
   use water_flow, only: water_series_t, water_table_t, water_initial_state, simulate_water, &
-    water_table, outcome_name, OUTCOME_END, OUTCOME_DURATION
+    water_table, outcome_name, OUTCOME_END, OUTCOME_DURATION, START_EDGES
   use io_input, only: input_text_t, check_known_groups, group_present, invalid, format_real
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
@@ -89,9 +89,17 @@ contains
                    'u in ['//format_real(u_min)//', '//format_real(u_max)//')', status)
       return
     end if
-    if (config%start%v0 < v_min .or. config%start%v0 > v_max .or. config%start%v_left > v_max .or. &
-        config%start%v_right < v_min) then
-      call invalid(input, 'water', 'v0 (or v_left0, v_right0)', format_real(config%start%v0), &
+    ! the start edges (start = 'edges') or the water middle v0 (other starts)
+    ! must lie on an open section's surface; the message names what was given
+    if (config%start%mode == START_EDGES) then
+      if (config%start%v_left > v_max .or. config%start%v_right < v_min) then
+        call invalid(input, 'water', 'v_left0, v_right0', format_real(config%start%v_left)//', '// &
+                     format_real(config%start%v_right), 'the start edges must lie inside the cross-section, '// &
+                     'v in ['//format_real(v_min)//', '//format_real(v_max)//'] rad', status)
+        return
+      end if
+    else if (config%start%v0 < v_min .or. config%start%v0 > v_max) then
+      call invalid(input, 'water', 'v0', format_real(config%start%v0), &
                    'the start must lie inside the cross-section, v in ['//format_real(v_min)//', '// &
                    format_real(v_max)//'] rad', status)
       return

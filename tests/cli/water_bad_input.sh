@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The water scenario stops on bad input before any work: exit status 1, a
 # message naming the file, &water, the variable, its value and what is
-# allowed, and no result file.
+# allowed, and no result file. One check per input; a check with several
+# failed conditions counts once, so the tally is checks = passed + failed.
 set -u
 slidesim=$1
 work=$(mktemp -d)
@@ -52,6 +53,41 @@ mk station_off_slide "&water stations = 5.0, 30.0 /"
 expect station_off_slide 1 '&water' 'stations = 30' 'on the slide'
 mk stations_decreasing "&water stations = 5.0, 3.0 /"
 expect stations_decreasing 1 '&water' 'stations(2)' 'increase'
+# NaN and Inf (gfortran reads both in a namelist): every message names the
+# input file, the group, the variable and the value as given
+for case in "flow_rate NaN" "flow_rate Inf" "f1 NaN" "f1 -Inf" "speed0 NaN" "speed0 Infinity"; do
+  set -- $case
+  var=$1; value=$2; shown=$value
+  [ "$value" = Infinity ] && shown=Inf
+  name="${var}_${value#-}"
+  extra=""
+  [ "$var" = speed0 ] && extra="start = 'speed', "
+  mk "$name" "&water $extra$var = $value /"
+  expect "$name" 1 "$name.nml" '&water' "$var = $shown" 'finite'
+done
+for value in NaN Inf; do
+  name="rtol_$value"
+  printf "&run scenario = 'water', output = 'w.h5' /\n&solver rtol = %s /\n&channel kind = 'straight' /\n&water /\n" \
+    "$value" > "$work/$name.nml"
+  expect "$name" 1 "$name.nml" '&solver' "rtol = $value"
+done
+
+# a start outside an open flume's section (v in [-wall/r, pi + wall/r] =
+# [-0.3154, 3.4570] rad): the water middle v0, or the start edges
+cat > "$work/flume_geometry.nml" <<'NML'
+&geometry kind = 'slide' /
+&slide_elements n_elements = 1, kind = 'straight', length = 20.0, slope_deg = 8.0 /
+&cross_section kind = 'flume', radius = 0.52, wall = 0.164 /
+NML
+flume="&run scenario = 'water', output = 'w.h5' /
+&surface kind = 'slide', geometry_file = 'flume_geometry.nml' /"
+printf "%s\n%s\n" "$flume" "&water start = 'speed', speed0 = 1.5, v0 = 4.0 /" > "$work/flume_v0_above.nml"
+expect flume_v0_above 1 flume_v0_above.nml '&water' 'v0 = 4.0' 'inside the cross-section' '3.45697'
+printf "%s\n%s\n" "$flume" "&water start = 'height', height0 = 0.02, v0 = -0.5 /" > "$work/flume_v0_below.nml"
+expect flume_v0_below 1 flume_v0_below.nml '&water' 'v0 = -0.5' 'inside the cross-section' '-0.31538'
+printf "%s\n%s\n" "$flume" "&water v_left0 = 3.6, v_right0 = 3.0 /" > "$work/flume_edges_outside.nml"
+expect flume_edges_outside 1 flume_edges_outside.nml '&water' 'v_left0, v_right0 = 3.6, 3.0' 'inside the cross-section'
+
 printf "&run scenario = 'water', output = 'w.h5' /\n&channel kind = 'helix', radius = 0.5, helix_radius = 0.4 /\n&water /\n" > "$work/folding_helix.nml"
 expect folding_helix 1 '&channel' 'helix_radius = 0.4' 'folds'
 printf "&run scenario = 'water', output = 'w.h5' /\n&surface kind = 'ellipsoid' /\n&water /\n" > "$work/not_a_tube.nml"

@@ -9,8 +9,14 @@ set -u
 slidesim=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-failures=0; checks=0
-fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+# Tally: `begin` opens a check; `fail` prints every failed condition but
+# counts a check as failed once, so checks = passed + failed always.
+failures=0; checks=0; current_failed=0
+begin() { checks=$((checks + 1)); current_failed=0; }
+fail() {
+  echo "FAIL $1"
+  if [ $current_failed = 0 ]; then failures=$((failures + 1)); current_failed=1; fi
+}
 
 cat > "$work/ok.nml" <<'NML'
 &run scenario = 'water', output = 'ok.h5' /
@@ -43,7 +49,7 @@ cat > "$work/turn.nml" <<'NML'
 &water flow_rate = 0.004, start = 'speed', speed0 = 4.0, correction = 'off' /
 NML
 
-checks=$((checks + 1))
+begin
 (cd "$work" && "$slidesim" -q ok.nml >ok.out 2>ok.err); got=$?
 [ $got = 0 ] || fail "ok: exit status $got ($(cat "$work/ok.err"))"
 h5dump -a /status "$work/ok.h5" | grep -q '"complete"' || fail "ok: file not marked complete"
@@ -56,7 +62,7 @@ grep -q 'end of slide' "$work/ok.out" || fail "ok: summary does not say the wate
 grep -qE '^ +3 +29\.000' "$work/ok.out" || fail "ok: station table missing"
 
 for name in stall critical lift turn; do
-  checks=$((checks + 1))
+  begin
   (cd "$work" && "$slidesim" -q "$name.nml" >"$name.out" 2>"$name.err"); got=$?
   [ $got = 2 ] || fail "$name: exit status $got, expected 2"
   [ -f "$work/$name.h5" ] || { fail "$name: no result file kept"; continue; }
@@ -65,14 +71,18 @@ for name in stall critical lift turn; do
   [ "${n:-0}" -ge 10 ] || fail "$name: computed samples not kept"
   grep -q 'INCOMPLETE' "$work/$name.out" || fail "$name: summary does not say INCOMPLETE"
 done
+begin
 grep -q 'stalled' "$work/stall.err" || fail "stall: message does not say the water stalled"
 h5dump -a /status_message "$work/stall.h5" | grep -q 'stalled' || fail "stall: status_message lacks the reason"
+begin
 grep -q 'approaches critical' "$work/critical.err" || fail "critical: message does not name critical flow"
 grep -q "correction = 'off'" "$work/critical.err" || fail "critical: message does not say what to do"
+begin
 grep -q 'lifts off' "$work/lift.err" || fail "lift: message does not say the water lifts off"
 h5dump -a /status_message "$work/lift.h5" | grep -q 'lifts off' || fail "lift: status_message lacks the reason"
 grep -q 'stopped at: lifted off' "$work/lift.out" || fail "lift: summary does not name the stop"
 h5dump -a /water/outcome "$work/lift.h5" | grep -q '"lifted off"' || fail "lift: /water outcome is not 'lifted off'"
+begin
 grep -q 'turns across the slide or back' "$work/turn.err" || fail "turn: message does not say the water turns back"
 h5dump -a /status_message "$work/turn.h5" | grep -q 'turns across' || fail "turn: status_message lacks the reason"
 h5dump -a /water/outcome "$work/turn.h5" | grep -q '"turned back"' || fail "turn: /water outcome is not 'turned back'"
@@ -80,7 +90,7 @@ h5dump -a /water/outcome "$work/turn.h5" | grep -q '"turned back"' || fail "turn
 # the default run (the demo slide): near the end the flow runs at an angle to
 # the centerline, so the leading edge's foot lies beyond the slide's end for
 # the last samples; the summary says so in one plain line (no solver message)
-checks=$((checks + 1))
+begin
 (cd "$work" && "$slidesim" -q >default.out 2>default.err); got=$?
 [ $got = 0 ] || fail "default: exit status $got ($(cat "$work/default.err"))"
 grep -qE "water edges +[0-9]+ samples from arc length +66\.9[0-9]* m: an edge beyond the slide's end" "$work/default.out" \
