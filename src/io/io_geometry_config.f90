@@ -34,6 +34,10 @@ module io_geometry_config
 
   integer, parameter :: max_points = 2000, max_sections = 8, max_elements = 40, max_patches = 8
   integer, parameter :: max_profile = 400
+  !> Default of the list variables before reading: an entry still equal to it
+  !> was not given, so counts (n_points, n_elements, ...) can be checked against
+  !> the lists; replaced by the documented default afterwards.
+  real(wp), parameter :: unset = -huge(1.0_wp)
 
 contains
 
@@ -116,7 +120,8 @@ contains
     real(wp) :: points(3, max_points), smoothing, start_tangent(3), end_tangent(3)
     real(wp) :: horizon_points(3, max_points), chord(max_points)
     type(spline_centerline_t) :: horizon_fit
-    integer :: n_points, degree, ios, i
+    integer :: n_points, degree, ios, i, n_given
+    logical :: have_horizon_points
     character(len=256) :: msg
     character(len=*), parameter :: g = 'centerline'
     real(wp) :: t(3), d
@@ -128,8 +133,8 @@ contains
     start = [0, 0, 0]; end = [10, 0, 0]
     center = 0; radius = 5; rise_per_turn = 0; turns = 0.25_wp; phase_deg = -90
     horizon = [0, 0, 1]
-    n_points = 0; points = 0; smoothing = 0; degree = 5
-    start_tangent = 0; end_tangent = 0; horizon_points = 0
+    n_points = 0; points = unset; smoothing = 0; degree = 5
+    start_tangent = 0; end_tangent = 0; horizon_points = unset
     read (input%lines, nml=centerline, iostat=ios, iomsg=msg)
     if (ios > 0) then
       call namelist_read_error(input, g, msg, [character(len=14) :: 'kind', 'start', 'end', 'center', &
@@ -169,11 +174,31 @@ contains
       curve = helix_curve_t(center=center, radius=radius, pitch=rise_per_turn/two_pi, &
                                  phase=phase_deg*pi/180, u_min=0.0_wp, u_max=two_pi*turns)
     case ('points')
-      if (n_points < 4 .or. n_points > max_points) then
+      if (n_points < 4) then
         call invalid(input, g, 'n_points', format_integer(n_points), 'too few centerline points: ' // &
-                     'need at least 4 (and at most 2000) points', status)
+                     'need at least 4', status)
         return
       end if
+      if (n_points > max_points) then
+        call invalid(input, g, 'n_points', format_integer(n_points), 'more than the limit of ' // &
+                     itoa(max_points) // ' centerline points', status)
+        return
+      end if
+      n_given = count_given(reshape(points, [size(points)]))
+      if (mod(n_given, 3) /= 0) then
+        call invalid(input, g, 'points', itoa(n_given) // ' numbers', 'give 3 coordinates (x, y, z) per point', &
+                     status)
+        return
+      end if
+      call check_list_length(input, g, 'n_points', n_points, 'points', n_given/3, 'points', status)
+      n_given = count_given(reshape(horizon_points, [size(horizon_points)]))
+      have_horizon_points = n_given > 0
+      if (status%ok() .and. have_horizon_points .and. n_given /= 3*n_points) &
+        call invalid(input, g, 'horizon_points', itoa(n_given) // ' numbers', 'give one horizon vector ' // &
+                     '(3 numbers) per centerline point: ' // itoa(3*n_points) // ' numbers for n_points = ' // &
+                     itoa(n_points), status)
+      if (.not. status%ok()) return
+      where (horizon_points == unset) horizon_points = 0
       call check_finite_vector(input, g, 'points', reshape(points(:, 1:n_points), [3*n_points]), status)
       if (.not. status%ok()) return
       d = maxval(norm2(points(:, 2:n_points) - points(:, 1:n_points - 1), dim=1))
@@ -184,7 +209,7 @@ contains
           return
         end if
         t = (points(:, i) - points(:, i - 1))/norm2(points(:, i) - points(:, i - 1))
-        if (any(horizon_points(:, 1:n_points) /= 0)) then
+        if (have_horizon_points) then
           if (.not. (norm2(horizon_points(:, i)) > 0 .and. norm2(horizon_points(:, i - 1)) > 0)) then
             call invalid(input, g, 'horizon_points(:, ' // itoa(merge(i, i - 1, norm2(horizon_points(:, i)) == 0)) &
                          // ')', '0', 'every horizon point must be a non-zero vector', status)
@@ -227,7 +252,7 @@ contains
         return
       end if
       allocate (curve, source=fitted)
-      if (any(horizon_points(:, 1:n_points) /= 0)) then
+      if (have_horizon_points) then
         ! the horizon field over the centerline's parameter (chord length of the points)
         chord(1) = 0
         do i = 2, n_points
@@ -264,11 +289,12 @@ contains
     type(status_t) :: built
     character(len=256) :: msg
     character(len=*), parameter :: g = 'slide_elements'
+    character(len=:), allocatable :: lim
     namelist /slide_elements/ n_elements, kind, length, slope_deg, radius, angle_deg, direction, turns, &
       drop, start, heading_deg, transition_length, centerline_kind, fit_spacing, smoothing, degree
     n_elements = 0
-    kind = 'straight'; direction = 'left'
-    length = 0; slope_deg = 0; radius = 0; angle_deg = 0; turns = 0; drop = 0
+    kind = ''; direction = ''
+    length = unset; slope_deg = unset; radius = unset; angle_deg = unset; turns = unset; drop = unset
     start = [0, 0, 0]; heading_deg = 0; transition_length = 2
     centerline_kind = 'fitted'; fit_spacing = 0.25_wp; smoothing = 0; degree = 5
     read (input%lines, nml=slide_elements, iostat=ios, iomsg=msg)
@@ -282,6 +308,23 @@ contains
       call invalid(input, g, 'n_elements', format_integer(n_elements), 'must lie in [1, 40]', status)
       return
     end if
+    call check_list_length(input, g, 'n_elements', n_elements, 'kind', count_given_text(kind), 'elements', status)
+    lim = 'n_elements = ' // itoa(n_elements)
+    call check_at_most(input, g, 'direction', count_given_text(direction), n_elements, lim, status)
+    call check_at_most(input, g, 'length', count_given(length), n_elements, lim, status)
+    call check_at_most(input, g, 'slope_deg', count_given(slope_deg), n_elements, lim, status)
+    call check_at_most(input, g, 'radius', count_given(radius), n_elements, lim, status)
+    call check_at_most(input, g, 'angle_deg', count_given(angle_deg), n_elements, lim, status)
+    call check_at_most(input, g, 'turns', count_given(turns), n_elements, lim, status)
+    call check_at_most(input, g, 'drop', count_given(drop), n_elements, lim, status)
+    if (.not. status%ok()) return
+    where (direction == '') direction = 'left'
+    where (length == unset) length = 0
+    where (slope_deg == unset) slope_deg = 0
+    where (radius == unset) radius = 0
+    where (angle_deg == unset) angle_deg = 0
+    where (turns == unset) turns = 0
+    where (drop == unset) drop = 0
     call check_finite_vector(input, g, 'start', start, status)
     call check_finite(input, g, 'heading_deg', heading_deg, status)
     call check_nonnegative(input, g, 'transition_length', transition_length, 'm', status)
@@ -385,13 +428,14 @@ contains
     type(status_t) :: built
     character(len=256) :: msg
     character(len=*), parameter :: g = 'cross_section'
+    character(len=:), allocatable :: lim
     namelist /cross_section/ n_sections, kind, radius, half_width, half_height, wall, joint_width_deg, &
       transition_midpoint, transition_end, n_profile, profile_y, profile_z, profile_smoothing, profile_degree
     n_sections = 1
-    kind = 'circle'; radius = 0.5_wp; half_width = 0.5_wp; half_height = 0.5_wp
-    wall = 0.164_wp; joint_width_deg = 0.05_wp*180/pi
-    transition_midpoint = 0; transition_end = 0
-    n_profile = 0; profile_y = 0; profile_z = 0; profile_smoothing = 0; profile_degree = 5
+    kind = ''; radius = unset; half_width = unset; half_height = unset
+    wall = unset; joint_width_deg = unset
+    transition_midpoint = unset; transition_end = unset
+    n_profile = 0; profile_y = unset; profile_z = unset; profile_smoothing = 0; profile_degree = 5
     read (input%lines, nml=cross_section, iostat=ios, iomsg=msg)
     if (ios > 0) then
       call namelist_read_error(input, g, msg, [character(len=19) :: 'n_sections', 'kind', 'radius', &
@@ -403,6 +447,26 @@ contains
       call invalid(input, g, 'n_sections', format_integer(n_sections), 'must lie in [1, 8]', status)
       return
     end if
+    if (n_sections == 1 .and. count_given_text(kind) == 0) kind(1) = 'circle'
+    call check_list_length(input, g, 'n_sections', n_sections, 'kind', count_given_text(kind), 'sections', status)
+    lim = 'n_sections = ' // itoa(n_sections)
+    call check_at_most(input, g, 'radius', count_given(radius), n_sections, lim, status)
+    call check_at_most(input, g, 'half_width', count_given(half_width), n_sections, lim, status)
+    call check_at_most(input, g, 'half_height', count_given(half_height), n_sections, lim, status)
+    call check_at_most(input, g, 'wall', count_given(wall), n_sections, lim, status)
+    call check_at_most(input, g, 'joint_width_deg', count_given(joint_width_deg), n_sections, lim, status)
+    call check_exactly(input, g, 'transition_midpoint', count_given(transition_midpoint), n_sections - 1, &
+                       'n_sections', n_sections, status)
+    call check_exactly(input, g, 'transition_end', count_given(transition_end), n_sections - 1, &
+                       'n_sections', n_sections, status)
+    if (.not. status%ok()) return
+    where (radius == unset) radius = 0.5_wp
+    where (half_width == unset) half_width = 0.5_wp
+    where (half_height == unset) half_height = 0.5_wp
+    where (wall == unset) wall = 0.164_wp
+    where (joint_width_deg == unset) joint_width_deg = 0.05_wp*180/pi
+    where (transition_midpoint == unset) transition_midpoint = 0
+    where (transition_end == unset) transition_end = 0
     do i = 1, n_sections
       kind(i) = lower(adjustl(kind(i)))
       call check_choice(input, g, 'kind(' // itoa(i) // ')', kind(i), &
@@ -425,11 +489,21 @@ contains
         if (status%ok()) allocate (parts(i)%section, source=flume_section_t(radius=radius(i), wall=wall(i), &
                                    transition=joint_width_deg(i)*pi/180))
       case ('profile')
-        if (n_profile < 4 .or. n_profile > max_profile) then
+        if (n_profile < 4) then
           call invalid(input, g, 'n_profile', format_integer(n_profile), &
-                       'a profile needs 4 to 400 points (profile_y, profile_z)', status)
+                       'too few profile points: need at least 4 (profile_y, profile_z)', status)
           return
         end if
+        if (n_profile > max_profile) then
+          call invalid(input, g, 'n_profile', format_integer(n_profile), &
+                       'more than the limit of ' // itoa(max_profile) // ' profile points', status)
+          return
+        end if
+        call check_list_length(input, g, 'n_profile', n_profile, 'profile_y', count_given(profile_y), &
+                               'points', status)
+        call check_list_length(input, g, 'n_profile', n_profile, 'profile_z', count_given(profile_z), &
+                               'points', status)
+        if (.not. status%ok()) return
         call check_finite_vector(input, g, 'profile_y', profile_y(1:n_profile), status)
         call check_finite_vector(input, g, 'profile_z', profile_z(1:n_profile), status)
         call check_nonnegative(input, g, 'profile_smoothing', profile_smoothing, 'm^2', status)
@@ -515,12 +589,13 @@ contains
     type(status_t) :: built
     character(len=256) :: msg
     character(len=*), parameter :: g = 'blended'
+    character(len=:), allocatable :: lim
     namelist /blended/ n_patches, kind, a, b, c, origin, angles_deg, u_min, u_max, v_min, v_max, swap_uv, &
       transition, midpoint, u_99
     n_patches = 0
-    kind = 'plane'; a = 1; b = 1; c = 1; origin = 0; angles_deg = 0
-    u_min = 0; u_max = 1; v_min = 0; v_max = 1; swap_uv = .false.
-    transition = 0; midpoint = -huge(1.0_wp); u_99 = -huge(1.0_wp)
+    kind = ''; a = unset; b = unset; c = unset; origin = unset; angles_deg = unset
+    u_min = unset; u_max = unset; v_min = unset; v_max = unset; swap_uv = .false.
+    transition = unset; midpoint = unset; u_99 = unset
     read (input%lines, nml=blended, iostat=ios, iomsg=msg)
     if (ios > 0) then
       call namelist_read_error(input, g, msg, [character(len=10) :: 'n_patches', 'kind', 'a', 'b', 'c', &
@@ -532,6 +607,34 @@ contains
       call invalid(input, g, 'n_patches', format_integer(n_patches), 'must lie in [2, 8]', status)
       return
     end if
+    call check_list_length(input, g, 'n_patches', n_patches, 'kind', count_given_text(kind), 'patches', status)
+    lim = 'n_patches = ' // itoa(n_patches)
+    call check_at_most(input, g, 'a', count_given(a), n_patches, lim, status)
+    call check_at_most(input, g, 'b', count_given(b), n_patches, lim, status)
+    call check_at_most(input, g, 'c', count_given(c), n_patches, lim, status)
+    call check_at_most(input, g, 'origin', count_given_columns(origin), n_patches, lim, status)
+    call check_at_most(input, g, 'angles_deg', count_given_columns(angles_deg), n_patches, lim, status)
+    call check_at_most(input, g, 'u_min', count_given(u_min), n_patches, lim, status)
+    call check_at_most(input, g, 'u_max', count_given(u_max), n_patches, lim, status)
+    call check_at_most(input, g, 'v_min', count_given(v_min), n_patches, lim, status)
+    call check_at_most(input, g, 'v_max', count_given(v_max), n_patches, lim, status)
+    call check_at_most(input, g, 'transition', count_given(transition), n_patches - 1, &
+                       'n_patches - 1 = ' // itoa(n_patches - 1) // ' transitions', status)
+    if (count_given(midpoint) > 0 .or. count_given(u_99) > 0) then
+      call check_exactly(input, g, 'midpoint', count_given(midpoint), n_patches - 1, 'n_patches', n_patches, status)
+      call check_exactly(input, g, 'u_99', count_given(u_99), n_patches - 1, 'n_patches', n_patches, status)
+    end if
+    if (.not. status%ok()) return
+    where (a == unset) a = 1
+    where (b == unset) b = 1
+    where (c == unset) c = 1
+    where (origin == unset) origin = 0
+    where (angles_deg == unset) angles_deg = 0
+    where (u_min == unset) u_min = 0
+    where (u_max == unset) u_max = 1
+    where (v_min == unset) v_min = 0
+    where (v_max == unset) v_max = 1
+    where (transition == unset) transition = 0
     do i = 1, n_patches
       kind(i) = lower(adjustl(kind(i)))
       call check_choice(input, g, 'kind(' // itoa(i) // ')', kind(i), [character(len=21) :: 'ellipsoid', &
@@ -560,7 +663,7 @@ contains
       patches(i)%v_min = v_min(i); patches(i)%v_max = v_max(i)
       patches(i)%swap_uv = swap_uv(i)
     end do
-    if (any(midpoint(1:n_patches - 1) /= -huge(1.0_wp))) then
+    if (count_given(midpoint) > 0) then
       blend = new_blended_surface(patches(1:n_patches), transition(1:n_patches - 1), built, &
                                   midpoint=midpoint(1:n_patches - 1), u_99=u_99(1:n_patches - 1))
     else
@@ -616,6 +719,89 @@ contains
     end if
     allocate (surface, source=b)
   end subroutine read_bspline
+
+  !> Number of entries of a list given in the input: the index of the last
+  !> entry that is not `unset` (entries after it were not given).
+  pure integer function count_given(a) result(n)
+    real(wp), intent(in) :: a(:)
+    do n = size(a), 1, -1
+      if (a(n) /= unset) return
+    end do
+    n = 0
+  end function count_given
+
+  !> The same for a list of vectors a(:, i): the last column with any entry given.
+  pure integer function count_given_columns(a) result(n)
+    real(wp), intent(in) :: a(:, :)
+    do n = size(a, 2), 1, -1
+      if (any(a(:, n) /= unset)) return
+    end do
+    n = 0
+  end function count_given_columns
+
+  !> The same for a list of words (default blank).
+  pure integer function count_given_text(a) result(n)
+    character(len=*), intent(in) :: a(:)
+    do n = size(a), 1, -1
+      if (len_trim(a(n)) > 0) return
+    end do
+    n = 0
+  end function count_given_text
+
+  !> `count_name` = n must equal the number `given` of `what` in list `list_name`.
+  subroutine check_list_length(input, g, count_name, n, list_name, given, what, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: g, count_name, list_name, what
+    integer, intent(in) :: n, given
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok() .or. given == n) return
+    if (given < n) then
+      call invalid(input, g, count_name, format_integer(n), 'only ' // itoa(given) // ' ' // noun(what, given) // &
+                   ' given in ' // list_name, status)
+    else
+      call invalid(input, g, count_name, format_integer(n), itoa(given) // ' ' // noun(what, given) // &
+                   ' given in ' // list_name // '; ' // count_name // ' must equal their number', status)
+    end if
+  end subroutine check_list_length
+
+  !> List `list_name` of transitions (`given` entries) needs exactly `want`:
+  !> one per transition between the `count_name` = n parts.
+  subroutine check_exactly(input, g, list_name, given, want, count_name, n, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: g, list_name, count_name
+    integer, intent(in) :: given, want, n
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok() .or. given == want) return
+    call invalid(input, g, list_name, itoa(given) // ' values', 'needs exactly ' // itoa(want) // &
+                 ', one per transition (' // count_name // ' - 1 with ' // count_name // ' = ' // itoa(n) // ')', status)
+  end subroutine check_exactly
+
+  !> List `list_name` (`given` entries) must not go past `limit` entries
+  !> (`what` names the limit, e.g. 'n_elements = 8').
+  subroutine check_at_most(input, g, list_name, given, limit, what, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: g, list_name, what
+    integer, intent(in) :: given, limit
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok() .or. given <= limit) return
+    call invalid(input, g, list_name, itoa(given) // ' values', 'more values than ' // what, status)
+  end subroutine check_at_most
+
+  !> 'points were' or, for one, 'point was' ('patches' -> 'patch').
+  pure function noun(plural, k) result(text)
+    character(len=*), intent(in) :: plural
+    integer, intent(in) :: k
+    character(len=:), allocatable :: text
+    integer :: n
+    n = len(plural)
+    if (k /= 1) then
+      text = plural // ' were'
+    else if (n > 4 .and. plural(max(1, n - 3):) == 'ches') then
+      text = plural(:n - 2) // ' was'
+    else
+      text = plural(:n - 1) // ' was'
+    end if
+  end function noun
 
   pure function cross3(a, b) result(c)
     real(wp), intent(in) :: a(3), b(3)

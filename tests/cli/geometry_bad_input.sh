@@ -34,6 +34,26 @@ printf "%s\n%s\n&centerline kind = 'points', n_points = 3, points = 0,0,0, 1,0,0
   "$run" "$tube" "$circle" > "$work/too_few_points.nml"
 expect too_few_points 1 too_few_points.nml '&centerline' n_points 'too few centerline points'
 
+printf "%s\n%s\n&centerline kind = 'points', n_points = 2500 /\n%s\n" "$run" "$tube" "$circle" > "$work/too_many_points.nml"
+expect too_many_points 1 too_many_points.nml '&centerline' 'n_points = 2500' 'more than the limit of 2000 centerline points'
+
+printf "%s\n%s\n&centerline kind = 'points', n_points = 6, points = 0,0,0, 1,0,0, 2,0,0, 3,0,0 /\n%s\n" \
+  "$run" "$tube" "$circle" > "$work/points_missing.nml"
+expect points_missing 1 points_missing.nml '&centerline' 'n_points = 6' 'only 4 points were given in points'
+
+printf "%s\n%s\n&centerline kind = 'points', n_points = 4, points = 0,0,0, 1,0,0, 2,0,0, 3,0,0, 4,0,0 /\n%s\n" \
+  "$run" "$tube" "$circle" > "$work/points_extra.nml"
+expect points_extra 1 points_extra.nml '&centerline' 'n_points = 4' '5 points were given in points'
+
+printf "%s\n%s\n&centerline kind = 'points', n_points = 4, points = 0,0,0, 1,0,0, 2,0,0, 3,0 /\n%s\n" \
+  "$run" "$tube" "$circle" > "$work/points_partial.nml"
+expect points_partial 1 points_partial.nml '&centerline' 'points = 11 numbers' '3 coordinates (x, y, z) per point'
+
+printf "%s\n%s\n&centerline kind = 'points', n_points = 4, points = 0,0,0, 1,0,0, 2,0,0, 3,0,0, horizon_points = 0,0,1, 0,0,1 /\n%s\n" \
+  "$run" "$tube" "$circle" > "$work/horizon_points_missing.nml"
+expect horizon_points_missing 1 horizon_points_missing.nml '&centerline' 'horizon_points = 6 numbers' \
+  'one horizon vector (3 numbers) per centerline point: 12 numbers for n_points = 4'
+
 printf "%s\n%s\n&centerline kind = 'points', n_points = 5, points = 0,0,0, 1,0,0, 1,0,0, 2,0,0, 3,0,0 /\n%s\n" \
   "$run" "$tube" "$circle" > "$work/duplicate_points.nml"
 expect duplicate_points 1 duplicate_points.nml '&centerline' 'points(:, 3)' 'duplicate consecutive'
@@ -71,6 +91,42 @@ $run
 &slide_elements n_elements = 2, kind = 'straight', 'curve', length = 3.0, 0.0, radius = 0.0, 0.0, angle_deg = 0.0, 90.0 /
 NML
 expect element_radius_zero 1 element_radius_zero.nml '&slide_elements' 'radius(2)' '> 0'
+
+cat > "$work/elements_missing.nml" <<NML
+$run
+&slide_elements n_elements = 3, kind = 'straight', 'curve', length = 3.0, 0.0, radius = 0.0, 6.0, angle_deg = 0.0, 90.0 /
+NML
+expect elements_missing 1 elements_missing.nml '&slide_elements' 'n_elements = 3' 'only 2 elements were given in kind'
+
+cat > "$work/element_values_extra.nml" <<NML
+$run
+&slide_elements n_elements = 2, kind = 'straight', 'curve', length = 3.0, 0.0, 4.0, radius = 0.0, 6.0, angle_deg = 0.0, 90.0 /
+NML
+expect element_values_extra 1 element_values_extra.nml '&slide_elements' 'length = 3 values' 'more values than n_elements = 2'
+
+printf "%s\n%s\n&centerline kind = 'line' /\n&cross_section n_sections = 2, kind = 'circle', radius = 0.5, 1.0 /\n" \
+  "$run" "$tube" > "$work/sections_missing.nml"
+expect sections_missing 1 sections_missing.nml '&cross_section' 'n_sections = 2' 'only 1 section was given in kind'
+
+printf "%s\n%s\n&centerline kind = 'line' /\n&cross_section kind = 'circle', radius = 0.5, 0.6 /\n" \
+  "$run" "$tube" > "$work/section_values_extra.nml"
+expect section_values_extra 1 section_values_extra.nml '&cross_section' 'radius = 2 values' 'more values than n_sections = 1'
+
+printf "%s\n%s\n&centerline kind = 'line' /\n&cross_section n_sections = 2, kind = 'circle', 'circle', radius = 0.5, 1.0, transition_midpoint = 4, 6, transition_end = 5 /\n" \
+  "$run" "$tube" > "$work/transitions_extra.nml"
+expect transitions_extra 1 transitions_extra.nml '&cross_section' 'transition_midpoint = 2 values' 'needs exactly 1'
+
+printf "%s\n%s\n&centerline kind = 'line' /\n&cross_section kind = 'profile', n_profile = 6, profile_y = 0, 1, 1, 0, profile_z = 0, 0, 1, 1 /\n" \
+  "$run" "$tube" > "$work/profile_missing.nml"
+expect profile_missing 1 profile_missing.nml '&cross_section' 'n_profile = 6' 'only 4 points were given in profile_y'
+
+printf "%s\n&geometry kind = 'blended' /\n&blended n_patches = 3, kind = 'elliptic_cylinder', 'elliptic_cylinder' /\n" \
+  "$run" > "$work/patches_missing.nml"
+expect patches_missing 1 patches_missing.nml '&blended' 'n_patches = 3' 'only 2 patches were given in kind'
+
+printf "%s\n&geometry kind = 'blended' /\n&blended n_patches = 2, kind = 'elliptic_cylinder', 'elliptic_cylinder', u_max = 1, 2, 3 /\n" \
+  "$run" > "$work/patch_values_extra.nml"
+expect patch_values_extra 1 patch_values_extra.nml '&blended' 'u_max = 3 values' 'more values than n_patches = 2'
 
 cat > "$work/unknown_element.nml" <<NML
 $run
