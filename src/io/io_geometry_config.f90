@@ -296,7 +296,7 @@ contains
     kind = ''; direction = ''
     length = unset; slope_deg = unset; radius = unset; angle_deg = unset; turns = unset; drop = unset
     start = [0, 0, 0]; heading_deg = 0; transition_length = 2
-    centerline_kind = 'fitted'; fit_spacing = 0.25_wp; smoothing = 0; degree = 5
+    centerline_kind = 'fitted'; fit_spacing = 0.125_wp; smoothing = 0; degree = 5
     read (input%lines, nml=slide_elements, iostat=ios, iomsg=msg)
     if (ios > 0) then
       call namelist_read_error(input, g, msg, [character(len=17) :: 'n_elements', 'kind', 'length', &
