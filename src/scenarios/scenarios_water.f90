@@ -302,8 +302,8 @@ contains
     write (output_unit, '(a, es11.4, a)') '  flow rate           ', s%flow_rate, ' m^3/s'
     write (output_unit, '(a, f10.4, a, f10.3, a, a)') '  flow time           ', s%time(n), ' s over ', &
       s%arc_length(n) - s%arc_length(1), ' m of slide, stopped at: ', outcome_name(s%outcome)
-    write (output_unit, '(a, 2g13.6, a)') '  speed min/max       ', minval(s%speed(:n)), maxval(s%speed(:n)), ' m/s'
-    write (output_unit, '(a, 2g13.6, a)') '  height min/max      ', minval(s%height(:n)), maxval(s%height(:n)), ' m'
+    write (output_unit, '(a, 2f13.4, a)') '  speed min/max       ', minval(s%speed(:n)), maxval(s%speed(:n)), ' m/s'
+    write (output_unit, '(a, 2f13.5, a)') '  height min/max      ', minval(s%height(:n)), maxval(s%height(:n)), ' m'
     write (output_unit, '(a, 2f13.4, a)') '  v min/max           ', minval(s%v(:n)), maxval(s%v(:n)), ' rad'
     write (output_unit, '(a, i0, a, i0, a)') '  integrator          ', s%stats%steps, ' steps, ', &
       s%stats%rhs_evaluations, ' right-hand sides'
