@@ -98,8 +98,15 @@ def regrid_case(name, description, mx, my, kx, ky, s, seed, noise, bbox_data=(0,
         x[3] = x[2]
     if bbox is None:
         bbox = (x[0], x[-1], y[0], y[-1])
+    return regrid_data_case(name, description, x, y, z, bbox, kx, ky, s)
+
+
+def regrid_data_case(name, description, x, y, z, bbox, kx, ky, s, ier_expected=None):
+    mx, my = len(x), len(y)
     xb, xe, yb, ye = bbox
     nx, tx, ny, ty, c, fp, ier = dfitpack.regrid_smth(x, y, z.ravel(), xb, xe, yb, ye, kx, ky, s)
+    if ier_expected is not None:
+        assert ier == ier_expected, (name, ier, ier_expected)
     t = Table("regrid_" + name, description +
               "\nregrid iopt=0 through dfitpack.regrid_smth: nxest=mx+kx+1, nyest=my+ky+1")
     t.int("kx", kx); t.int("ky", ky)
@@ -111,6 +118,91 @@ def regrid_case(name, description, mx, my, kx, ky, s, seed, noise, bbox_data=(0,
     t.real("c", c[:(nx - kx - 1) * (ny - ky - 1)])
     t.write()
     return tx[:nx], ty[:ny], c[:(nx - kx - 1) * (ny - ky - 1)]
+
+
+# ---- regrid ier = 2 and 3 -------------------------------------------------------
+# The p-iteration gives up (ier = 3: maxit = 20 reached; ier = 2: f(p) out of the
+# order theory promises) only for particular data and s. Such cases were found by
+# a random search over small grids (run `fitpack_surfaces.py --search-regrid`:
+# it prints seed, trial and ier); the draws below replay trial `trial` of seed
+# `seed` without calling FITPACK for the earlier trials, so the table needs no
+# search. (Some random grids crash scipy 1.10.1's regrid_smth outright: the search
+# runs every call in a forked child.)
+def regrid_search_draw(search, lo):
+    mx = int(search.randint(5, 14))
+    my = int(search.randint(5, 14))
+    kx = int(search.randint(1, 6))
+    ky = int(search.randint(1, 6))
+    x = np.sort(search.uniform(0, 1, mx))
+    y = np.sort(search.uniform(0, 1, my))
+    z = search.normal(0, 1, (mx, my)) * 10 ** search.uniform(-3, 3)
+    rounded = search.rand() < 0.5
+    srel = 10.0 ** search.uniform(lo, 0)
+    usable = mx > kx and my > ky and np.all(np.diff(x) > 1e-3) and np.all(np.diff(y) > 1e-3)
+    if rounded:
+        z = np.round(z, 0)
+    return usable, x, y, z, kx, ky, srel * np.sum(z ** 2)
+
+
+def regrid_replay(seed, lo, trial):
+    search = np.random.RandomState(seed)
+    for _ in range(trial + 1):
+        draw = regrid_search_draw(search, lo)
+    assert draw[0]
+    return draw[1:]
+
+
+def regrid_sensitivity(x, y, z, kx, ky, s, samples=8):
+    """Largest relative change of fp (and of the coefficients) when z is perturbed
+    at 1e-15 relative: a case the genuine FITPACK itself cannot reproduce to 1e-8
+    under such perturbations is rounding-chaotic and unfit as a reference."""
+    def fit(zz):
+        nx, tx, ny, ty, c, fp, ier = dfitpack.regrid_smth(x, y, zz.ravel(), x[0], x[-1], y[0], y[-1], kx, ky, s)
+        return nx, ny, c[:(nx - kx - 1) * (ny - ky - 1)], fp, ier
+    nx0, ny0, c0, fp0, ier0 = fit(z)
+    pert = np.random.RandomState(99)
+    dfp = dc = 0.0
+    for _ in range(samples):
+        nx, ny, c, fp, ier = fit(z * (1 + 1e-15 * pert.uniform(-1, 1, z.shape)))
+        if (nx, ny, ier) != (nx0, ny0, ier0):
+            return ier0, np.inf, np.inf
+        dfp = max(dfp, abs(fp - fp0) / abs(fp0))
+        big = np.abs(c0) > 1e-8 * np.max(np.abs(c0))
+        if np.any(big):
+            dc = max(dc, np.max(np.abs(c - c0)[big] / np.abs(c0[big])))
+    return ier0, dfp, dc
+
+
+def regrid_search(seeds=range(1, 6), lo=-14.0, trials=4000):
+    import pickle
+
+    def forked(args):
+        r, w = os.pipe()
+        pid = os.fork()
+        if pid == 0:
+            os.close(r)
+            ier = dfitpack.regrid_smth(args[0], args[1], args[2].ravel(), args[0][0], args[0][-1],
+                                       args[1][0], args[1][-1], *args[3:])[-1]
+            out = regrid_sensitivity(*args) if ier in (1, 2, 3) else (ier, 0.0, 0.0)
+            with os.fdopen(w, "wb") as f:
+                f.write(pickle.dumps(out))
+            os._exit(0)
+        os.close(w)
+        with os.fdopen(r, "rb") as f:
+            data = f.read()
+        os.waitpid(pid, 0)
+        return pickle.loads(data) if data else (None, 0.0, 0.0)
+
+    for seed in seeds:
+        search = np.random.RandomState(seed)
+        for trial in range(trials):
+            usable, x, y, z, kx, ky, s = regrid_search_draw(search, lo)
+            if not usable:
+                continue
+            ier, dfp, dc = forked((x, y, z, kx, ky, s))
+            if ier in (1, 2, 3):
+                print("seed", seed, "trial", trial, "ier", ier, "mx my kx ky", len(x), len(y), kx, ky,
+                      "s/sum z^2 %.3g" % (s / np.sum(z ** 2)), "sensitivity fp %.2g c %.2g" % (dfp, dc))
 
 
 def evaluation_case(name, description, tx, ty, c, kx, ky, xe, ye):
@@ -238,6 +330,22 @@ def main():
                 bbox=(0.05, 1.0, 0.0, 1.0))
     regrid_case("invalid_order", "x not strictly increasing (x(4) = x(3)): ier = 10", 10, 10, 3, 3, 0.1, 6, 0.01,
                 duplicate=True)
+    # p-iteration failures, replayed from the search (see regrid_search_draw)
+    # (only cases the genuine FITPACK reproduces to 1e-11 when z is perturbed at
+    # 1e-15: most ier = 3 and all ier = 2 cases found are rounding-chaotic, fp
+    # changing by 1e-8 up to 6000 % or ier changing under such perturbations;
+    # regrid_search prints it. Hence no ier = 2 case for regrid: seeds 2, 5, 6, 7
+    # found six, none stable - ier itself changes under the perturbation or fp
+    # moves by 3800 %.)
+    for name, seed, trial, ier in [("maxit_a", 1, 1263, 3), ("maxit_b", 1, 1835, 3), ("maxit_c", 1, 1963, 3)]:
+        x, y, z, kx, ky, s = regrid_replay(seed, -14.0, trial)
+        regrid_data_case(name, "random %d x %d grid (search seed %d, trial %d), kx=%d, ky=%d, s = %.3g: ier = %d"
+                         % (len(x), len(y), seed, trial, kx, ky, s, ier),
+                         x, y, z, (x[0], x[-1], y[0], y[-1]), kx, ky, s, ier_expected=ier)
+    # ier = 1 (nxest, nyest too small) cannot be reached: regrid_smth and
+    # RectBivariateSpline fix nxest = mx+kx+1, nyest = my+ky+1, with which the
+    # knots reach interpolation (ier = -1) before storage runs out; the test
+    # checks ier = 1 by what must hold instead.
     # ---- bispev / parder ----------------------------------------------------
     xe = np.array([-0.1, 0.0, 0.13, 0.5, 0.5, 0.77, 1.0, 1.2])
     ye = np.array([-0.2, 0.0, 0.31, 0.66, 0.9, 1.0, 1.1])
@@ -335,5 +443,8 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
-    write_files()
+    if "--search-regrid" in sys.argv:
+        regrid_search(seeds=[int(a) for a in sys.argv[2:]] or range(1, 6))
+    else:
+        main()
+        write_files()

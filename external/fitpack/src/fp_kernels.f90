@@ -338,6 +338,10 @@ end subroutine fpchep
 !> fpint among those holding data (nrdata > 0), at the data point in its middle.
 !> istart is the index in x of the first point after the left boundary minus 1
 !> offset convention of the originals (1 for curfit).
+!> When no interval holding data has a positive residual sum (all of fp sits on
+!> knots or in empty intervals), no knot can be placed: t, n and the counts are
+!> left unchanged and the caller ends with ier = 2 (the original writes outside
+!> its arrays there and returns a corrupt knot vector).
 pure subroutine fpknot(x, m, t, n, fpint, nrdata, nrint, nest, istart)
   use, intrinsic :: iso_fortran_env, only: real64
   implicit none (type, external)
@@ -363,6 +367,7 @@ pure subroutine fpknot(x, m, t, n, fpint, nrdata, nrint, nest, istart)
     end if
     jbegin = jbegin + jpoint + 1
   end do
+  if (number == 0) return
   ihalf = maxpt/2 + 1
   nrx = maxbeg + ihalf
   next = number + 1

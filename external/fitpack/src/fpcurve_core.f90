@@ -27,7 +27,7 @@ subroutine fpcurve_core(iopt, idim, m, u, mx, x, w, ub, ue, ib, ie, k, s, nest, 
   real(real64), allocatable :: rhs(:, :)   ! smoothing right-hand sides (heap: nest can be large)
   real(real64) :: acc, fp0, fpold, fpms, fpart, term, fac, store, rn, p, p1, p2, p3, f1, f2, f3, &
                   pinv, piv, cs, sn, ui, wi
-  integer :: nmin, nmax, ib1, ie1, nk1, nfree, nrint, nplus, npl1, iter, it, i, l, &
+  integer :: nold, nmin, nmax, ib1, ie1, nk1, nfree, nrint, nplus, npl1, iter, it, i, l, &
              d, ich1, ich3, n8, lp, new
   logical :: restart
 
@@ -151,7 +151,17 @@ subroutine fpcurve_core(iopt, idim, m, u, mx, x, w, ub, ue, ib, ie, k, s, nest, 
     end do
     fpint(nrint) = fpart
     do lp = 1, nplus
+      nold = n
       call fpknot(u, m, t, n, fpint, nrdata, nrint, nest, 1)
+      if (n == nold) then
+        ! no interval holding data carries residual: s is too small for
+        ! these data; the least-squares spline on the present knots stands
+        if (lp == 1) then
+          ier = 2
+          return
+        end if
+        exit
+      end if
       if (n == nmax) then
         call interpolation_knots()
         iter = 0

@@ -33,7 +33,7 @@ subroutine fpperiodic_core(iopt, idim, m, u, mx, x, w, k, s, nest, tol, maxit, k
   real(real64), allocatable :: rhs(:, :), sol(:)   ! heap: nest can be large
   real(real64) :: acc, per, fp0, fpold, fpms, fpart, term, store, rn, p, p1, p2, p3, f1, f2, f3, &
                   pinv, piv, cs, sn, ui, wi, d1
-  integer :: m1, nmin, nmax, nk1, n7, n10, n11, n8, nrint, nplus, npl1, iter, it, i, j, l, l5, &
+  integer :: nold, m1, nmin, nmax, nk1, n7, n10, n11, n8, nrint, nplus, npl1, iter, it, i, j, l, l5, &
              d, ich1, ich3, lp, mm, new, jper, cf
   logical :: restart, interpolate_now
 
@@ -242,7 +242,17 @@ subroutine fpperiodic_core(iopt, idim, m, u, mx, x, w, k, s, nest, tol, maxit, k
     fpint(nrint) = fpint(nrint) + fpart
     interpolate_now = .false.
     do lp = 1, nplus
+      nold = n
       call fpknot(u, m, t, n, fpint, nrdata, nrint, nest, 1)
+      if (n == nold) then
+        ! no interval holding data carries residual: s is too small for
+        ! these data; the least-squares spline on the present knots stands
+        if (lp == 1) then
+          ier = 2
+          return
+        end if
+        exit
+      end if
       if (n == nmax) then
         interpolate_now = .true.
         exit

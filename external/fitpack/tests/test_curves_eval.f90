@@ -112,8 +112,7 @@ contains
     end block
     call expect(ier == 0 .and. nn == n + 1, name//': insert ier, nn')
     call expect_close_array(tt(1:nn), ttref(1:nn), 1e-15_real64, 0.0_real64, name//': insert knots')
-    call expect_close_array(cc(1:nn - k - 1), ccref(1:nn - k - 1), 1e-14_real64, 1e-14_real64*scale, &
-                            name//': insert coefficients')
+    call expect_coefficients(cc(1:nn - k - 1), ccref(1:nn - k - 1), 1e-14_real64, name//': insert coefficients')
     ! integrals
     call get_reals(tab, name, 'ab', ab, f)
     call get_reals(tab, name, 'integrals', iref, f)

@@ -58,6 +58,17 @@ contains
       call percur(0, size(x), x, y, w, k, s_first, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
     end if
     call percur(iopt, size(x), x, y, w, k, s, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
+    if (has_key(tab, name, 'genuine_corrupt')) then
+      ! the original writes outside its arrays here (no interval holding data
+      ! carries residual) and returns unordered knots; what must hold for ours:
+      ! a valid spline, either smoothing (|fp - s| <= 0.001 s) or ier = 2 with the
+      ! least-squares spline on its knots (fp > s)
+      call expect(all(t(2:n) >= t(1:n - 1)) .and. all(abs(c(1:n - k - 1)) <= huge(1.0_real64)) &
+                  .and. abs(fp) <= huge(1.0_real64), name//': ordered knots, finite coefficients and fp')
+      call expect((ier == 0 .and. abs(fp - s) <= 1e-3_real64*s) .or. (ier == 2 .and. fp > s), &
+                  name//': smoothing spline or ier 2')
+      return
+    end if
     call expect(ier == ierref, name//': ier')
     if (ier /= ierref) print '(a, 2i6)', '   ier got/expected ', ier, ierref
     if (ierref == 10 .or. ier /= ierref) return
