@@ -178,7 +178,7 @@ Outputs: ier, n, fp, t(1:n), c(1:n-k-1).""")
     # small data sets with badly scaled s; searched with a separate generator
     search = np.random.RandomState(5)
     found = {}
-    for trial in range(20000):
+    for trial in range(60000):
         m = int(search.randint(8, 40))
         kk = int(search.randint(1, 6))
         xx = np.sort(search.uniform(0, 1, m))
@@ -191,6 +191,21 @@ Outputs: ier, n, fp, t(1:n), c(1:n-k-1).""")
         nest = m + kk + 1
         n, t, c, fp, ier, state, lwrk, xb, xe = curfit_call(0, xx, yy, np.ones(m), kk, s, nest)
         if ier in (2, 3) and ier not in found:
+            # only cases the genuine curfit reproduces to 1e-11 when y is perturbed
+            # at 1e-15 (the ier = 2 case this table held before moved our fp by
+            # 1.4e-3 when compiled with -march=x86-64-v3 -ffp-contract=fast:
+            # rounding-chaotic, no reference). Even the stable ier = 2 case now
+            # chosen moves one coefficient of ours by 1.5e-7 under that FMA build;
+            # the default x86-64-v2 build matches to 1e-8.
+            pert = np.random.RandomState(99)
+            stable = True
+            for _ in range(8):
+                out = curfit_call(0, xx, yy * (1 + 1e-15 * pert.uniform(-1, 1, m)), np.ones(m), kk, s, nest)
+                if out[4] != ier or out[0] != n or not abs(out[3] - fp) <= 1e-11 * abs(fp):
+                    stable = False
+                    break
+            if not stable:
+                continue
             found[ier] = True
             tab.case('provoked_ier%d' % ier, iopt=0, k=kk, s=s, nest=nest, lwrk=lwrk, xb=xb, xe=xe,
                      x=xx, y=yy, w=np.ones(m), ier=ier, n=n, fp=fp, t=t[:n], c=c[:n - kk - 1])
