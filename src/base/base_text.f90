@@ -5,7 +5,7 @@ module base_text
   use base_kinds, only: wp
   implicit none (type, external)
   private
-  public :: format_real, format_vector, format_integer, lower
+  public :: format_real, format_short, format_vector, format_integer, lower
 
 contains
 
@@ -83,6 +83,31 @@ contains
       if (c >= iachar('A') .and. c <= iachar('Z')) low(i:i) = achar(c + 32)
     end do
   end function lower
+
+  !> A computed number for messages: 6 significant digits, plain where that
+  !> reads well (0.001 <= |x| < 1e6), else exponent form.
+  pure function format_short(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=32) :: buffer
+    integer :: k
+    if (ieee_is_nan(x) .or. .not. ieee_is_finite(x)) then
+      text = format_real(x)
+    else if (abs(x) >= 1e-3_wp .and. abs(x) < 1e6_wp) then
+      write (buffer, '(f0.6)') x
+      k = len_trim(buffer)
+      do while (k > 1 .and. buffer(k:k) == '0')
+        k = k - 1
+      end do
+      if (buffer(k:k) == '.') k = k - 1
+      text = buffer(:k)
+      if (text(1:1) == '.') text = '0'//text
+      if (text(1:2) == '-.') text = '-0'//text(2:)
+    else
+      write (buffer, '(es12.5)') x
+      text = trim(adjustl(buffer))
+    end if
+  end function format_short
 
   pure function format_integer(i) result(text)
     integer, intent(in) :: i

@@ -181,12 +181,12 @@ contains
       end if
       if (n_points > max_points) then
         call invalid(input, g, 'n_points', format_integer(n_points), 'more than the limit of ' // &
-                     itoa(max_points) // ' centerline points', status)
+                     format_integer(max_points) // ' centerline points', status)
         return
       end if
       n_given = count_given(reshape(points, [size(points)]))
       if (mod(n_given, 3) /= 0) then
-        call invalid(input, g, 'points', itoa(n_given) // ' numbers', 'give 3 coordinates (x, y, z) per point', &
+        call invalid(input, g, 'points', format_integer(n_given) // ' numbers', 'give 3 coordinates (x, y, z) per point', &
                      status)
         return
       end if
@@ -194,9 +194,9 @@ contains
       n_given = count_given(reshape(horizon_points, [size(horizon_points)]))
       have_horizon_points = n_given > 0
       if (status%ok() .and. have_horizon_points .and. n_given /= 3*n_points) &
-        call invalid(input, g, 'horizon_points', itoa(n_given) // ' numbers', 'give one horizon vector ' // &
-                     '(3 numbers) per centerline point: ' // itoa(3*n_points) // ' numbers for n_points = ' // &
-                     itoa(n_points), status)
+        call invalid(input, g, 'horizon_points', format_integer(n_given) // ' numbers', 'give one horizon vector ' // &
+                     '(3 numbers) per centerline point: ' // format_integer(3*n_points) // ' numbers for n_points = ' // &
+                     format_integer(n_points), status)
       if (.not. status%ok()) return
       where (horizon_points == unset) horizon_points = 0
       call check_finite_vector(input, g, 'points', reshape(points(:, 1:n_points), [3*n_points]), status)
@@ -204,26 +204,27 @@ contains
       d = maxval(norm2(points(:, 2:n_points) - points(:, 1:n_points - 1), dim=1))
       do i = 2, n_points
         if (norm2(points(:, i) - points(:, i - 1)) <= 1e-9_wp*max(d, 1.0_wp)) then
-          call invalid(input, g, 'points(:, ' // itoa(i) // ')', format_vector(points(:, i)), &
-                       'duplicate consecutive centerline point (equal to points(:, ' // itoa(i - 1) // '))', status)
+          call invalid(input, g, 'points(:, ' // format_integer(i) // ')', format_vector(points(:, i)), &
+                       'duplicate consecutive centerline point (equal to points(:, ' // format_integer(i - 1) // '))', status)
           return
         end if
         t = (points(:, i) - points(:, i - 1))/norm2(points(:, i) - points(:, i - 1))
         if (have_horizon_points) then
           if (.not. (norm2(horizon_points(:, i)) > 0 .and. norm2(horizon_points(:, i - 1)) > 0)) then
-            call invalid(input, g, 'horizon_points(:, ' // itoa(merge(i, i - 1, norm2(horizon_points(:, i)) == 0)) &
+            call invalid(input, g, 'horizon_points(:, ' // format_integer(merge(i, i - 1, norm2(horizon_points(:, i)) == 0)) &
                          // ')', '0', 'every horizon point must be a non-zero vector', status)
             return
           end if
           if (norm2(cross3(horizon_points(:, i)/norm2(horizon_points(:, i)), t)) < horizon_parallel_tol .or. &
               norm2(cross3(horizon_points(:, i - 1)/norm2(horizon_points(:, i - 1)), t)) < horizon_parallel_tol) then
-            call invalid(input, g, 'horizon_points(:, ' // itoa(i) // ')', format_vector(horizon_points(:, i)), &
-                         'is parallel to the centerline between points ' // itoa(i - 1) // ' and ' // itoa(i), status)
+            call invalid(input, g, 'horizon_points(:, ' // format_integer(i) // ')', format_vector(horizon_points(:, i)), &
+                         'is parallel to the centerline between points ' // format_integer(i - 1) // &
+                         ' and ' // format_integer(i), status)
             return
           end if
         else if (norm2(cross3(horizon/norm2(horizon), t)) < horizon_parallel_tol) then
           call invalid(input, g, 'horizon', format_vector(horizon), 'is parallel to the centerline ' // &
-                       'between points ' // itoa(i - 1) // ' and ' // itoa(i), status)
+                       'between points ' // format_integer(i - 1) // ' and ' // format_integer(i), status)
           return
         end if
       end do
@@ -309,7 +310,7 @@ contains
       return
     end if
     call check_list_length(input, g, 'n_elements', n_elements, 'kind', count_given_text(kind), 'elements', status)
-    lim = 'n_elements = ' // itoa(n_elements)
+    lim = 'n_elements = ' // format_integer(n_elements)
     call check_at_most(input, g, 'direction', count_given_text(direction), n_elements, lim, status)
     call check_at_most(input, g, 'length', count_given(length), n_elements, lim, status)
     call check_at_most(input, g, 'slope_deg', count_given(slope_deg), n_elements, lim, status)
@@ -337,27 +338,27 @@ contains
     do i = 1, n_elements
       kind(i) = lower(adjustl(kind(i)))
       direction(i) = lower(adjustl(direction(i)))
-      call check_choice(input, g, 'kind(' // itoa(i) // ')', kind(i), [character(len=8) :: 'straight', &
+      call check_choice(input, g, 'kind(' // format_integer(i) // ')', kind(i), [character(len=8) :: 'straight', &
                         'curve', 'helix', 'runout'], status)
       if (.not. status%ok()) return
       select case (trim(kind(i)))
       case ('straight', 'runout')
-        call check_positive(input, g, 'length(' // itoa(i) // ')', length(i), 'm', status)
-        call check_range(input, g, 'slope_deg(' // itoa(i) // ')', slope_deg(i), -45.0_wp, 45.0_wp, 'deg', status)
+        call check_positive(input, g, 'length(' // format_integer(i) // ')', length(i), 'm', status)
+        call check_range(input, g, 'slope_deg(' // format_integer(i) // ')', slope_deg(i), -45.0_wp, 45.0_wp, 'deg', status)
       case ('curve')
-        call check_positive(input, g, 'radius(' // itoa(i) // ')', radius(i), 'm', status)
-        call check_range(input, g, 'angle_deg(' // itoa(i) // ')', angle_deg(i), 1e-6_wp, 720.0_wp, 'deg', status)
-        call check_range(input, g, 'slope_deg(' // itoa(i) // ')', slope_deg(i), -45.0_wp, 45.0_wp, 'deg', status)
-        call check_choice(input, g, 'direction(' // itoa(i) // ')', direction(i), &
+        call check_positive(input, g, 'radius(' // format_integer(i) // ')', radius(i), 'm', status)
+        call check_range(input, g, 'angle_deg(' // format_integer(i) // ')', angle_deg(i), 1e-6_wp, 720.0_wp, 'deg', status)
+        call check_range(input, g, 'slope_deg(' // format_integer(i) // ')', slope_deg(i), -45.0_wp, 45.0_wp, 'deg', status)
+        call check_choice(input, g, 'direction(' // format_integer(i) // ')', direction(i), &
                           [character(len=5) :: 'left', 'right'], status)
       case ('helix')
-        call check_positive(input, g, 'radius(' // itoa(i) // ')', radius(i), 'm', status)
-        call check_positive(input, g, 'turns(' // itoa(i) // ')', turns(i), '1', status)
-        call check_finite(input, g, 'drop(' // itoa(i) // ')', drop(i), status)
-        call check_choice(input, g, 'direction(' // itoa(i) // ')', direction(i), &
+        call check_positive(input, g, 'radius(' // format_integer(i) // ')', radius(i), 'm', status)
+        call check_positive(input, g, 'turns(' // format_integer(i) // ')', turns(i), '1', status)
+        call check_finite(input, g, 'drop(' // format_integer(i) // ')', drop(i), status)
+        call check_choice(input, g, 'direction(' // format_integer(i) // ')', direction(i), &
                           [character(len=5) :: 'left', 'right'], status)
         if (status%ok() .and. abs(drop(i)) > two_pi*radius(i)*turns(i)) &
-          call invalid(input, g, 'drop(' // itoa(i) // ')', format_real(drop(i)), &
+          call invalid(input, g, 'drop(' // format_integer(i) // ')', format_real(drop(i)), &
                        'the helix would be steeper than 45 deg (|drop| <= 2 pi radius turns)', status)
       end select
       if (.not. status%ok()) return
@@ -449,7 +450,7 @@ contains
     end if
     if (n_sections == 1 .and. count_given_text(kind) == 0) kind(1) = 'circle'
     call check_list_length(input, g, 'n_sections', n_sections, 'kind', count_given_text(kind), 'sections', status)
-    lim = 'n_sections = ' // itoa(n_sections)
+    lim = 'n_sections = ' // format_integer(n_sections)
     call check_at_most(input, g, 'radius', count_given(radius), n_sections, lim, status)
     call check_at_most(input, g, 'half_width', count_given(half_width), n_sections, lim, status)
     call check_at_most(input, g, 'half_height', count_given(half_height), n_sections, lim, status)
@@ -469,22 +470,22 @@ contains
     where (transition_end == unset) transition_end = 0
     do i = 1, n_sections
       kind(i) = lower(adjustl(kind(i)))
-      call check_choice(input, g, 'kind(' // itoa(i) // ')', kind(i), &
+      call check_choice(input, g, 'kind(' // format_integer(i) // ')', kind(i), &
                         [character(len=7) :: 'circle', 'ellipse', 'flume', 'profile'], status)
       if (.not. status%ok()) return
       select case (trim(kind(i)))
       case ('circle')
-        call check_positive(input, g, 'radius(' // itoa(i) // ')', radius(i), 'm', status)
+        call check_positive(input, g, 'radius(' // format_integer(i) // ')', radius(i), 'm', status)
         if (status%ok()) allocate (parts(i)%section, source=circle_section_t(radius=radius(i)))
       case ('ellipse')
-        call check_positive(input, g, 'half_width(' // itoa(i) // ')', half_width(i), 'm', status)
-        call check_positive(input, g, 'half_height(' // itoa(i) // ')', half_height(i), 'm', status)
+        call check_positive(input, g, 'half_width(' // format_integer(i) // ')', half_width(i), 'm', status)
+        call check_positive(input, g, 'half_height(' // format_integer(i) // ')', half_height(i), 'm', status)
         if (status%ok()) allocate (parts(i)%section, &
                                    source=ellipse_section_t(a=half_width(i), b=half_height(i)))
       case ('flume')
-        call check_positive(input, g, 'radius(' // itoa(i) // ')', radius(i), 'm', status)
-        call check_positive(input, g, 'wall(' // itoa(i) // ')', wall(i), 'm', status)
-        call check_range(input, g, 'joint_width_deg(' // itoa(i) // ')', joint_width_deg(i), 0.1_wp, 20.0_wp, &
+        call check_positive(input, g, 'radius(' // format_integer(i) // ')', radius(i), 'm', status)
+        call check_positive(input, g, 'wall(' // format_integer(i) // ')', wall(i), 'm', status)
+        call check_range(input, g, 'joint_width_deg(' // format_integer(i) // ')', joint_width_deg(i), 0.1_wp, 20.0_wp, &
                          'deg', status)
         if (status%ok()) allocate (parts(i)%section, source=flume_section_t(radius=radius(i), wall=wall(i), &
                                    transition=joint_width_deg(i)*pi/180))
@@ -496,7 +497,7 @@ contains
         end if
         if (n_profile > max_profile) then
           call invalid(input, g, 'n_profile', format_integer(n_profile), &
-                       'more than the limit of ' // itoa(max_profile) // ' profile points', status)
+                       'more than the limit of ' // format_integer(max_profile) // ' profile points', status)
           return
         end if
         call check_list_length(input, g, 'n_profile', n_profile, 'profile_y', count_given(profile_y), &
@@ -512,14 +513,14 @@ contains
         if (.not. status%ok()) return
         do k = 2, n_profile
           if (profile_y(k) == profile_y(k - 1) .and. profile_z(k) == profile_z(k - 1)) then
-            call invalid(input, g, 'profile_y(' // itoa(k) // '), profile_z(' // itoa(k) // ')', &
+            call invalid(input, g, 'profile_y(' // format_integer(k) // '), profile_z(' // format_integer(k) // ')', &
                          format_vector([profile_y(k), profile_z(k)]), 'repeats the point before it', status)
             return
           end if
         end do
         k = polyline_self_intersection(profile_y(1:n_profile), profile_z(1:n_profile))
         if (k > 0) then
-          call invalid(input, g, 'profile_y, profile_z', 'points ' // itoa(k) // ' to ' // itoa(k + 1), &
+          call invalid(input, g, 'profile_y, profile_z', 'points ' // format_integer(k) // ' to ' // format_integer(k + 1), &
                        'the profile intersects itself (this segment crosses a later one)', status)
           return
         end if
@@ -540,16 +541,16 @@ contains
     end if
     total = centerline%total_length()
     do i = 1, n_sections - 1
-      call check_range(input, g, 'transition_midpoint(' // itoa(i) // ')', transition_midpoint(i), 0.0_wp, &
+      call check_range(input, g, 'transition_midpoint(' // format_integer(i) // ')', transition_midpoint(i), 0.0_wp, &
                        total, 'm of arc length along the centerline', status)
       if (status%ok() .and. .not. (transition_end(i) > transition_midpoint(i) .and. transition_end(i) <= total)) &
-        call invalid(input, g, 'transition_end(' // itoa(i) // ')', format_real(transition_end(i)), &
-                     'must lie after transition_midpoint(' // itoa(i) // ') and within the centerline (' // &
+        call invalid(input, g, 'transition_end(' // format_integer(i) // ')', format_real(transition_end(i)), &
+                     'must lie after transition_midpoint(' // format_integer(i) // ') and within the centerline (' // &
                      format_real(total) // ' m)', status)
       if (status%ok() .and. i > 1) then
         if (.not. transition_midpoint(i) - transition_midpoint(i - 1) >= &
             (transition_end(i) - transition_midpoint(i)) + (transition_end(i - 1) - transition_midpoint(i - 1))) &
-          call invalid(input, g, 'transition_midpoint(' // itoa(i) // ')', format_real(transition_midpoint(i)), &
+          call invalid(input, g, 'transition_midpoint(' // format_integer(i) // ')', format_real(transition_midpoint(i)), &
                        'transitions must not overlap (midpoints at least the sum of the two half-widths apart)', &
                        status)
       end if
@@ -608,7 +609,7 @@ contains
       return
     end if
     call check_list_length(input, g, 'n_patches', n_patches, 'kind', count_given_text(kind), 'patches', status)
-    lim = 'n_patches = ' // itoa(n_patches)
+    lim = 'n_patches = ' // format_integer(n_patches)
     call check_at_most(input, g, 'a', count_given(a), n_patches, lim, status)
     call check_at_most(input, g, 'b', count_given(b), n_patches, lim, status)
     call check_at_most(input, g, 'c', count_given(c), n_patches, lim, status)
@@ -619,7 +620,7 @@ contains
     call check_at_most(input, g, 'v_min', count_given(v_min), n_patches, lim, status)
     call check_at_most(input, g, 'v_max', count_given(v_max), n_patches, lim, status)
     call check_at_most(input, g, 'transition', count_given(transition), n_patches - 1, &
-                       'n_patches - 1 = ' // itoa(n_patches - 1) // ' transitions', status)
+                       'n_patches - 1 = ' // format_integer(n_patches - 1) // ' transitions', status)
     if (count_given(midpoint) > 0 .or. count_given(u_99) > 0) then
       call check_exactly(input, g, 'midpoint', count_given(midpoint), n_patches - 1, 'n_patches', n_patches, status)
       call check_exactly(input, g, 'u_99', count_given(u_99), n_patches - 1, 'n_patches', n_patches, status)
@@ -637,18 +638,18 @@ contains
     where (transition == unset) transition = 0
     do i = 1, n_patches
       kind(i) = lower(adjustl(kind(i)))
-      call check_choice(input, g, 'kind(' // itoa(i) // ')', kind(i), [character(len=21) :: 'ellipsoid', &
+      call check_choice(input, g, 'kind(' // format_integer(i) // ')', kind(i), [character(len=21) :: 'ellipsoid', &
                         'elliptic_paraboloid', 'hyperbolic_paraboloid', 'elliptic_cylinder'], status)
-      call check_positive(input, g, 'a(' // itoa(i) // ')', a(i), 'm', status)
-      call check_positive(input, g, 'b(' // itoa(i) // ')', b(i), 'm', status)
-      if (kind(i) == 'ellipsoid') call check_positive(input, g, 'c(' // itoa(i) // ')', c(i), 'm', status)
-      call check_finite_vector(input, g, 'origin(:, ' // itoa(i) // ')', origin(:, i), status)
-      call check_finite_vector(input, g, 'angles_deg(:, ' // itoa(i) // ')', angles_deg(:, i), status)
+      call check_positive(input, g, 'a(' // format_integer(i) // ')', a(i), 'm', status)
+      call check_positive(input, g, 'b(' // format_integer(i) // ')', b(i), 'm', status)
+      if (kind(i) == 'ellipsoid') call check_positive(input, g, 'c(' // format_integer(i) // ')', c(i), 'm', status)
+      call check_finite_vector(input, g, 'origin(:, ' // format_integer(i) // ')', origin(:, i), status)
+      call check_finite_vector(input, g, 'angles_deg(:, ' // format_integer(i) // ')', angles_deg(:, i), status)
       if (status%ok() .and. .not. u_max(i) > u_min(i)) &
-        call invalid(input, g, 'u_max(' // itoa(i) // ')', format_real(u_max(i)), 'must exceed u_min', status)
+        call invalid(input, g, 'u_max(' // format_integer(i) // ')', format_real(u_max(i)), 'must exceed u_min', status)
       if (status%ok() .and. v_max(i) == v_min(i)) &
-        call invalid(input, g, 'v_max(' // itoa(i) // ')', format_real(v_max(i)), 'must differ from v_min', status)
-      if (i < n_patches) call check_nonnegative(input, g, 'transition(' // itoa(i) // ')', transition(i), &
+        call invalid(input, g, 'v_max(' // format_integer(i) // ')', format_real(v_max(i)), 'must differ from v_min', status)
+      if (i < n_patches) call check_nonnegative(input, g, 'transition(' // format_integer(i) // ')', transition(i), &
                                                 'patch parameter units', status)
       if (.not. status%ok()) return
       select case (trim(kind(i)))
@@ -756,10 +757,10 @@ contains
     type(status_t), intent(inout) :: status
     if (.not. status%ok() .or. given == n) return
     if (given < n) then
-      call invalid(input, g, count_name, format_integer(n), 'only ' // itoa(given) // ' ' // noun(what, given) // &
+      call invalid(input, g, count_name, format_integer(n), 'only ' // format_integer(given) // ' ' // noun(what, given) // &
                    ' given in ' // list_name, status)
     else
-      call invalid(input, g, count_name, format_integer(n), itoa(given) // ' ' // noun(what, given) // &
+      call invalid(input, g, count_name, format_integer(n), format_integer(given) // ' ' // noun(what, given) // &
                    ' given in ' // list_name // '; ' // count_name // ' must equal their number', status)
     end if
   end subroutine check_list_length
@@ -772,8 +773,8 @@ contains
     integer, intent(in) :: given, want, n
     type(status_t), intent(inout) :: status
     if (.not. status%ok() .or. given == want) return
-    call invalid(input, g, list_name, itoa(given) // ' values', 'needs exactly ' // itoa(want) // &
-                 ', one per transition (' // count_name // ' - 1 with ' // count_name // ' = ' // itoa(n) // ')', status)
+    call invalid(input, g, list_name, format_integer(given) // ' values', 'needs exactly ' // format_integer(want) // &
+                 ', one per transition (' // count_name // ' - 1 with ' // count_name // ' = ' // format_integer(n) // ')', status)
   end subroutine check_exactly
 
   !> List `list_name` (`given` entries) must not go past `limit` entries
@@ -784,7 +785,7 @@ contains
     integer, intent(in) :: given, limit
     type(status_t), intent(inout) :: status
     if (.not. status%ok() .or. given <= limit) return
-    call invalid(input, g, list_name, itoa(given) // ' values', 'more values than ' // what, status)
+    call invalid(input, g, list_name, format_integer(given) // ' values', 'more values than ' // what, status)
   end subroutine check_at_most
 
   !> 'points were' or, for one, 'point was' ('patches' -> 'patch').
@@ -808,12 +809,4 @@ contains
     real(wp) :: c(3)
     c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
   end function cross3
-
-  pure function itoa(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=12) :: buf
-    write (buf, '(i0)') i
-    text = trim(buf)
-  end function itoa
 end module io_geometry_config

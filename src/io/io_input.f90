@@ -7,7 +7,7 @@ module io_input
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_IO
-  use base_text, only: format_real, format_vector, lower
+  use base_text, only: format_real, format_vector, lower, format_integer
   use io_builtin_inputs, only: builtin_input, builtin_input_names
   implicit none (type, external)
   private
@@ -179,7 +179,7 @@ contains
       group = first_word(line(2:))
       if (group == '' .or. group == 'end') cycle
       if (group_count(input, group) > 1) then
-        call set_status(status, STATUS_INVALID_INPUT, input%name//': line '//itoa(i)//': &'//group// &
+        call set_status(status, STATUS_INVALID_INPUT, input%name//': line '//format_integer(i)//': &'//group// &
                         ' appears more than once; give each group once')
         return
       end if
@@ -192,7 +192,7 @@ contains
         do j = 1, size(allowed)
           list = list//' &'//trim(allowed(j))
         end do
-        call set_status(status, STATUS_INVALID_INPUT, input%name//': line '//itoa(i)// &
+        call set_status(status, STATUS_INVALID_INPUT, input%name//': line '//format_integer(i)// &
                         ': unknown namelist group &'//group//'; this scenario reads'//list)
         return
       end if
@@ -321,13 +321,6 @@ contains
     call invalid(input, group, variable, "'"//trim(value)//"'", 'must be one of'//list, status)
   end subroutine check_choice
 
-  pure function itoa(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=16) :: buffer
-    write (buffer, '(i0)') i
-    text = trim(buffer)
-  end function itoa
 
   pure function first_word(text) result(word)
     character(len=*), intent(in) :: text

@@ -2,6 +2,7 @@
 !> given) and the water model's parameters, start and outputs (docs/water.md).
 module io_water_config
   use base_kinds, only: wp
+  use base_text, only: format_integer
   use base_constants, only: pi, standard_gravity
   use base_status, only: status_t
   use io_input, only: input_text_t, namelist_read_error, check_positive, check_nonnegative, &
@@ -150,7 +151,7 @@ contains
     end if
     do i = 2, n
       if (.not. stations(i) > stations(i - 1)) then
-        call invalid(input, g, 'stations('//itoa(i)//')', format_real(stations(i)), &
+        call invalid(input, g, 'stations('//format_integer(i)//')', format_real(stations(i)), &
                      'stations must increase along the slide', status)
         return
       end if
@@ -177,12 +178,4 @@ contains
     config%table_step = table_step
     config%edges = edges
   end subroutine read_water_config
-
-  pure function itoa(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=16) :: buffer
-    write (buffer, '(i0)') i
-    text = trim(buffer)
-  end function itoa
 end module io_water_config

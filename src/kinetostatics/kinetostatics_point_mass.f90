@@ -9,6 +9,7 @@
 !> so N does not depend on it and Coulomb friction stays explicit.
 module kinetostatics_point_mass
   use base_kinds, only: wp
+  use base_text, only: format_short
   use base_vector, only: cross
   use base_status, only: status_t, set_status, STATUS_DOMAIN, STATUS_INVALID_INPUT
   use numerics_ode, only: ode_system_t
@@ -62,7 +63,7 @@ contains
 
     if (.not. self%surface%in_domain(y(1), y(2))) then
       call set_status(status, STATUS_DOMAIN, 'the mass left the surface''s parameter domain at (u, v) = (' &
-                      //real_text(y(1))//', '//real_text(y(2))//')')
+                      //format_short(y(1))//', '//format_short(y(2))//')')
       return
     end if
     call self%surface%evaluate(y(1), y(2), 2, p, status)
@@ -186,12 +187,4 @@ contains
     state%kinetic_energy = 0.5_wp*self%mass*dot_product(state%velocity, state%velocity)
     state%potential_energy = -self%mass*dot_product(self%gravity, p%r)
   end subroutine point_mass_state
-
-  pure function real_text(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=32) :: buffer
-    write (buffer, '(g0.8)') x
-    text = trim(adjustl(buffer))
-  end function real_text
 end module kinetostatics_point_mass

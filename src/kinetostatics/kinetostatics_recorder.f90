@@ -4,6 +4,7 @@
 !> inverse-dynamics residual (a consistency check of every recorded state).
 module kinetostatics_recorder
   use base_kinds, only: wp
+  use base_text, only: format_short
   use base_status, only: status_t, prefix_status
   use numerics_ode, only: ode_integrator_t, ode_options_t, ode_stats_t
   use kinetostatics_mass, only: mass_element_t
@@ -136,12 +137,6 @@ contains
     cpu = cpu1 - cpu0
     stats = integrator%statistics()
     if (.not. status%ok()) call prefix_status(status, 'run stopped after t = '// &
-                                              trim(real_text(series%time(max(series%n, 1))))//' s')
+                                              trim(format_short(series%time(max(series%n, 1))))//' s')
   end subroutine integrate_mechanism
-
-  pure function real_text(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=24) :: text
-    write (text, '(g0.6)') x
-  end function real_text
 end module kinetostatics_recorder

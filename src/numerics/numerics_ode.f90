@@ -25,6 +25,7 @@ module numerics_ode
   use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_int, c_long, c_double, &
     c_char, c_null_char, c_loc, c_funloc, c_f_pointer, c_associated
   use base_kinds, only: wp, int64
+  use base_text, only: format_integer
   use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT, &
     STATUS_SOLVER, STATUS_INTERNAL, STATUS_DOMAIN
   use fsundials_context_mod, only: FSUNContext_Create, FSUNContext_Free
@@ -578,18 +579,11 @@ contains
     write (time, '(es23.15)') t
     status%code = code
     status%message = call_name//' failed at t = '//trim(adjustl(time))//': '//name// &
-      ' ('//int_text(int(flag))//'), '//meaning
+      ' ('//format_integer(int(flag))//'), '//meaning
     if (len_trim(link%cvode_message) > 0) &
       status%message = status%message//'; CVODE says: '//trim(link%cvode_message)
   end subroutine cvode_status
 
-  pure function int_text(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=16) :: buffer
-    write (buffer, '(i0)') i
-    text = trim(buffer)
-  end function int_text
 
   ! ------------------------------------------------- C callbacks (no allocation)
 

@@ -3,6 +3,7 @@
 !> the report at stations, and the table of the water over arc length.
 module water_flow
   use base_kinds, only: wp
+  use base_text, only: format_short
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, &
     STATUS_DOMAIN
@@ -281,7 +282,7 @@ contains
         call integrator%advance(t_out, t, y, status, root_found, root_index)
         if (.not. status%ok()) then
           series%outcome = OUTCOME_ERROR
-          call prefix_status(status, 'water stopped at t = '//real_text(t)//' s')
+          call prefix_status(status, 'water stopped at t = '//format_short(t)//' s')
           exit outer
         end if
         if (.not. root_found) exit
@@ -293,20 +294,20 @@ contains
         else if (root_index(ROOT_STALL) /= 0) then
           series%outcome = OUTCOME_STALL
           call set_status(status, STATUS_DOMAIN, 'the water stalled (speed below ' // &
-                          real_text(model%min_speed)//' m/s) at t = '//real_text(t)//' s, u = '//real_text(y(1)))
+                          format_short(model%min_speed)//' m/s) at t = '//format_short(t)//' s, u = '//format_short(y(1)))
         else if (root_index(ROOT_TURN) /= 0) then
           series%outcome = OUTCOME_TURN
           call set_status(status, STATUS_DOMAIN, 'the water turns across the slide or back ' // &
                           '(angle to the centerline beyond 89.4 deg) at t = ' // &
-                          real_text(t)//' s, u = '//real_text(y(1)))
+                          format_short(t)//' s, u = '//format_short(y(1)))
         else if (root_index(ROOT_LIFT) /= 0) then
           series%outcome = OUTCOME_LIFT
           call set_status(status, STATUS_DOMAIN, lift_message(t, y))
         else if (root_index(ROOT_CRITICAL) /= 0) then
           series%outcome = OUTCOME_CRITICAL
           call set_status(status, STATUS_DOMAIN, 'the flow approaches critical (1 - 1/Fr^2 = ' // &
-                          real_text(model%min_criticality)//') at t = '//real_text(t)//' s, u = '// &
-                          real_text(y(1))//': the Saint-Venant correction is singular at Fr = 1; ' // &
+                          format_short(model%min_criticality)//') at t = '//format_short(t)//' s, u = '// &
+                          format_short(y(1))//': the Saint-Venant correction is singular at Fr = 1; ' // &
                           'the water is too slow for shallow supercritical flow here; ' // &
                           'switch the correction off (correction = ''off'') to go on')
         else
@@ -336,8 +337,8 @@ contains
       real(wp), intent(in) :: ts, ys(:)
       character(len=:), allocatable :: text
       text = 'the water lifts off the slide surface (normal force (4.12) down to 0: the surface would ' // &
-             'have to pull it) at t = '//real_text(ts)//' s, u = '//real_text(ys(1))//', v = '// &
-             real_text(ys(2))//' rad; the streamline model holds only while the water is pressed on the slide'
+             'have to pull it) at t = '//format_short(ts)//' s, u = '//format_short(ys(1))//', v = '// &
+             format_short(ys(2))//' rad; the streamline model holds only while the water is pressed on the slide'
     end function lift_message
 
     subroutine station(i, ts, ys)
@@ -453,7 +454,7 @@ contains
           if (s%edge_beyond == 0) s%edge_beyond_from = s%arc_length(i)
           s%edge_beyond = s%edge_beyond + 1
         else
-          if (s%edge_failures == 0) s%edge_message = 'at t = '//real_text(t)//' s: '//st%text()
+          if (s%edge_failures == 0) s%edge_message = 'at t = '//format_short(t)//' s: '//st%text()
           s%edge_failures = s%edge_failures + 1
         end if
       end if
@@ -536,26 +537,4 @@ contains
       ds = ds + half*wt(j)*norm2(c(:, 1))
     end do
   end function arc_increment
-
-  !> A number for messages: 6 significant digits, plain where that reads well.
-  pure function real_text(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=32) :: buffer
-    integer :: k
-    if (abs(x) >= 1e-3_wp .and. abs(x) < 1e6_wp) then
-      write (buffer, '(f0.6)') x
-      k = len_trim(buffer)
-      do while (k > 1 .and. buffer(k:k) == '0')
-        k = k - 1
-      end do
-      if (buffer(k:k) == '.') k = k - 1
-      text = buffer(:k)
-      if (text(1:1) == '.') text = '0'//text
-      if (text(1:2) == '-.') text = '-0'//text(2:)
-    else
-      write (buffer, '(es12.5)') x
-      text = trim(adjustl(buffer))
-    end if
-  end function real_text
 end module water_flow

@@ -41,6 +41,7 @@
 !> = [y_w.(g - a_hat); dw/dt - x_w.a_hat].
 module water_streamline
   use base_kinds, only: wp
+  use base_text, only: format_short
   use base_constants, only: standard_gravity
   use base_status, only: status_t, set_status, STATUS_DOMAIN, STATUS_INVALID_INPUT
   use base_vector, only: cross
@@ -194,7 +195,7 @@ contains
     call self%channel%v_range(v_min, v_max)
     if (v < v_min .or. v > v_max) then
       call set_status(status, STATUS_DOMAIN, 'the water left the slide surface across its rim at v = ' &
-                      //real_text(v))
+                      //format_short(v))
       return
     end if
     call self%channel%evaluate(u, v, 2, q%p, status)
@@ -323,26 +324,4 @@ contains
     du = (g*bu - f*bv)/det
     dv = (e*bv - f*bu)/det
   end subroutine velocity_from_angle
-
-  !> A number for messages: 6 significant digits, plain where that reads well.
-  pure function real_text(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=32) :: buffer
-    integer :: k
-    if (abs(x) >= 1e-3_wp .and. abs(x) < 1e6_wp) then
-      write (buffer, '(f0.6)') x
-      k = len_trim(buffer)
-      do while (k > 1 .and. buffer(k:k) == '0')
-        k = k - 1
-      end do
-      if (buffer(k:k) == '.') k = k - 1
-      text = buffer(:k)
-      if (text(1:1) == '.') text = '0'//text
-      if (text(1:2) == '-.') text = '-0'//text(2:)
-    else
-      write (buffer, '(es12.5)') x
-      text = trim(adjustl(buffer))
-    end if
-  end function real_text
 end module water_streamline
