@@ -10,6 +10,7 @@
 !> centerline and its inverse are available (thesis 2.1).
 module geometry_tube
   use base_kinds, only: wp
+  use base_text, only: format_short, format_vector
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_curve, only: curve_t, curve_point_t
@@ -189,8 +190,8 @@ contains
       u = a + (b - a)*i/real(max(n_samples - 1, 1), wp)
       call self%frame(u, 1, f, st, c)
       if (.not. st%ok()) then
-        buf = ' at u = ' // num(u) // ' (arc length ' // num(self%arc_length(u)) // ' m, point [' // &
-              num(c%d(1, 0)) // ', ' // num(c%d(2, 0)) // ', ' // num(c%d(3, 0)) // '] m)'
+        buf = ' at u = ' // format_short(u) // ' (arc length ' // format_short(self%arc_length(u)) // ' m, point [' // &
+              format_short(c%d(1, 0)) // ', ' // format_short(c%d(2, 0)) // ', ' // format_short(c%d(3, 0)) // '] m)'
         status = st
         call prefix_status(status, 'tube surface' // trim(buf))
         return
@@ -202,19 +203,11 @@ contains
     end do
     if (worst_ratio >= 1) then
       call self%centerline%evaluate(worst_u, 0, c, st)
-      buf = 'radius of curvature ' // num(1/worst_chi) // ' m below the cross-section extent ' // &
-            num(worst_extent) // ' m at u = ' // num(worst_u) // ' (arc length ' // &
-            num(self%arc_length(worst_u)) // ' m, point [' // num(c%d(1, 0)) // ', ' // num(c%d(2, 0)) // &
-            ', ' // num(c%d(3, 0)) // '] m): the tube would fold onto itself'
+      buf = 'radius of curvature ' // format_short(1/worst_chi) // ' m below the cross-section extent ' // &
+            format_short(worst_extent) // ' m at u = ' // format_short(worst_u) // ' (arc length ' // &
+            format_short(self%arc_length(worst_u)) // ' m, point ' // format_vector(c%d(:, 0)) // &
+            ' m): the tube would fold onto itself'
       call set_status(status, STATUS_INVALID_INPUT, 'tube surface: ' // trim(buf))
     end if
-  contains
-    pure function num(x) result(text)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
-      character(len=24) :: b
-      write (b, '(f12.4)') x
-      text = trim(adjustl(b))
-    end function num
   end subroutine tube_check
 end module geometry_tube

@@ -26,6 +26,7 @@
 !> The left edge lies towards +y_w, i.e. towards larger v.
 module water_boundaries
   use base_kinds, only: wp
+  use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_DOMAIN
   use geometry_surface, only: surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
@@ -149,17 +150,9 @@ contains
     else if (outside .or. x(1) < u_min .or. x(1) > u_max) then
       if (.not. outside) u_out = x(1)
       call set_status(status, STATUS_DOMAIN, 'the foot lies beyond the end of the slide (u = ' // &
-                      number(u_out)//' outside ['//number(u_min)//', '//number(u_max)//'])')
+                      format_short(u_out)//' outside ['//format_short(u_min)//', '//format_short(u_max)//'])')
     end if
   end subroutine one_edge
-
-  pure function number(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=24) :: buffer
-    write (buffer, '(g0.8)') x
-    text = trim(adjustl(buffer))
-  end function number
 
   !> Surface point and Darboux frame (sigma = 1, alpha_u = 0, alpha_v = 1) at x,
   !> reused when x is the last point asked for.
