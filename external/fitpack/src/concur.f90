@@ -96,6 +96,9 @@ subroutine concur(iopt, idim, m, u, mx, x, xx, w, ib, db, nb, ie, de, ne, k, s, 
 end subroutine concur
 
 !> Dierckx's fpcons: the concur engine (fpcurve_core with ib, ie zero coefficients).
+!> The p-iteration steps use the single-precision constants like its sibling
+!> fppara (parcur), so that concur without constraints is parcur; scipy does not
+!> wrap concur, so this cannot be measured against the genuine fpcons.
 subroutine fpcons(iopt, idim, m, u, mx, x, w, ib, ie, k, s, nest, tol, maxit, k1, k2, n, t, nc, c, fp, &
                   fpint, z, a, b, g, q, nrdata, ier)
   use, intrinsic :: iso_fortran_env, only: real64
@@ -106,7 +109,7 @@ subroutine fpcons(iopt, idim, m, u, mx, x, w, ib, ie, k, s, nest, tol, maxit, k1
   real(real64), intent(inout) :: t(nest), c(nc), fp, fpint(nest), z(nc)
   real(real64), intent(inout) :: a(nest, k1), b(nest, k2), g(nest, k2), q(m, k1)
   external :: fpcurve_core
-  call fpcurve_core(iopt, idim, m, u, mx, x, w, u(1), u(m), ib, ie, k, s, nest, tol, maxit, k1, k2, n, t, &
+  call fpcurve_core(iopt, idim, m, u, mx, x, w, u(1), u(m), ib, ie, k, s, nest, tol, maxit, .true., k1, k2, n, t, &
                     nc, c, fp, fpint, z, a, b, g, q, nrdata, ier)
 end subroutine fpcons
 

@@ -71,6 +71,6 @@ subroutine fpcurf(iopt, x, y, w, m, xb, xe, k, s, nest, tol, maxit, k1, k2, n, t
   real(real64), intent(inout) :: t(nest), c(nest), fp, fpint(nest), z(nest)
   real(real64), intent(inout) :: a(nest, k1), b(nest, k2), g(nest, k2), q(m, k1)
   external :: fpcurve_core
-  call fpcurve_core(iopt, 1, m, x, m, y, w, xb, xe, 0, 0, k, s, nest, tol, maxit, k1, k2, n, t, &
+  call fpcurve_core(iopt, 1, m, x, m, y, w, xb, xe, 0, 0, k, s, nest, tol, maxit, .false., k1, k2, n, t, &
                     nest, c, fp, fpint, z, a, b, g, q, nrdata, ier)
 end subroutine fpcurf

@@ -8,21 +8,28 @@
 !> Knots are added (fpknot) while the least-squares spline has fp > s; then the
 !> smoothing parameter p is found by rational interpolation (fprati) until
 !> |fp - s| < tol*s, at most maxit iterations. Coefficients: c(n*(j-1)+i).
+!> single_steps: the p-iteration's one-sided steps (p*con4, p/con4, the
+!> con1/con9 mixes) use the single-precision values of 0.1, 0.9 and 0.04, as the
+!> genuine fppara of scipy's double-precision FITPACK does (it assigns them from
+!> default-real literals; parcur and concur pass true); its fpcurf holds them
+!> exact (curfit passes false). Measured against the reference tables: the other
+!> choice moves results that take these steps by 1e-12..1e-9 relative.
 !> Work arrays as in the originals: fpint(nest), z(nc), a(nest,k1),
 !> b(nest,k2), g(nest,k2), q(m,k1), nrdata(nest).
-subroutine fpcurve_core(iopt, idim, m, u, mx, x, w, ub, ue, ib, ie, k, s, nest, tol, maxit, &
+subroutine fpcurve_core(iopt, idim, m, u, mx, x, w, ub, ue, ib, ie, k, s, nest, tol, maxit, single_steps, &
                         k1, k2, n, t, nc, c, fp, fpint, z, a, b, g, q, nrdata, ier)
-  use, intrinsic :: iso_fortran_env, only: real64
+  use, intrinsic :: iso_fortran_env, only: real32, real64
   use fitpack_interfaces, only: fpbspl, fpgivs, fprota, fpback, fprati, fpdisc, fpknot
   implicit none (type, external)
   integer, intent(in) :: iopt, idim, m, mx, ib, ie, k, nest, maxit, k1, k2, nc
+  logical, intent(in) :: single_steps
   real(real64), intent(in) :: u(m), x(mx), w(m), ub, ue, s, tol
   integer, intent(inout) :: n, nrdata(nest), ier
   real(real64), intent(inout) :: t(nest), c(nc), fp, fpint(nest), z(nc)
   real(real64), intent(inout) :: a(nest, k1), b(nest, k2), g(nest, k2), q(m, k1)
 
-  real(real64), parameter :: half = 0.5_real64, con1 = 0.1_real64, con9 = 0.9_real64, &
-                             con4 = 0.04_real64
+  real(real64), parameter :: half = 0.5_real64
+  real(real64) :: con1, con9, con4
   real(real64) :: h(7), xi(10)
   real(real64), allocatable :: rhs(:, :)   ! smoothing right-hand sides (heap: nest can be large)
   real(real64) :: acc, fp0, fpold, fpms, fpart, term, fac, store, rn, p, p1, p2, p3, f1, f2, f3, &
@@ -31,6 +38,15 @@ subroutine fpcurve_core(iopt, idim, m, u, mx, x, w, ub, ue, ib, ie, k, s, nest, 
              d, ich1, ich3, n8, lp, new
   logical :: restart
 
+  if (single_steps) then
+    con1 = real(0.1_real32, real64)
+    con9 = real(0.9_real32, real64)
+    con4 = real(0.04_real32, real64)
+  else
+    con1 = 0.1_real64
+    con9 = 0.9_real64
+    con4 = 0.04_real64
+  end if
   nmin = 2*k1
   ib1 = max(0, ib - 1)
   ie1 = max(0, ie - 1)

@@ -17,7 +17,7 @@
 !> g1(nest,k2), g2(nest,k1), q(m,k1), nrdata(nest).
 subroutine fpperiodic_core(iopt, idim, m, u, mx, x, w, k, s, nest, tol, maxit, k1, k2, n, t, nc, c, &
                            fp, fpint, z, a1, a2, b, g1, g2, q, nrdata, ier)
-  use, intrinsic :: iso_fortran_env, only: real64
+  use, intrinsic :: iso_fortran_env, only: real32, real64
   use fitpack_interfaces, only: fpbspl, fpgivs, fprota, fpbacp, fprati, fpdisc, fpknot
   implicit none (type, external)
   integer, intent(in) :: iopt, idim, m, mx, k, nest, maxit, k1, k2, nc
@@ -27,8 +27,14 @@ subroutine fpperiodic_core(iopt, idim, m, u, mx, x, w, k, s, nest, tol, maxit, k
   real(real64), intent(inout) :: a1(nest, k1), a2(nest, k), b(nest, k2), g1(nest, k2), g2(nest, k1), &
                                  q(m, k1)
 
-  real(real64), parameter :: half = 0.5_real64, con1 = 0.1_real64, con9 = 0.9_real64, &
-                             con4 = 0.04_real64
+  ! The p-iteration's one-sided steps (p*con4, p/con4, the con1/con9 mixes) use
+  ! the single-precision values of 0.1, 0.9 and 0.04, as the genuine fpperi and
+  ! fpclos of scipy's double-precision FITPACK do (they assign them from
+  ! default-real literals). Measured: with exact constants clocur closed_maxit_a/b
+  ! (ier = 3) end 6e-8..4e-7 from the genuine fp and percur's smoothing cases
+  ! 1e-12..7e-11; with these every case agrees to rounding (1e-13).
+  real(real64), parameter :: half = 0.5_real64, con1 = real(0.1_real32, real64), &
+                             con9 = real(0.9_real32, real64), con4 = real(0.04_real32, real64)
   real(real64) :: h(7), h1(8), h2(8), xi(10), c1(10)
   real(real64), allocatable :: rhs(:, :), sol(:)   ! heap: nest can be large
   real(real64) :: acc, per, fp0, fpold, fpms, fpart, term, store, rn, p, p1, p2, p3, f1, f2, f3, &

@@ -3,7 +3,7 @@
 !> the swap of the coordinates works on internal copies.
 subroutine fpsurf(iopt, m, x, y, z, w, xb, xe, yb, ye, kxx, kyy, s, nxest, nyest, eta, tol, maxit, &
                   nmax, nx0, tx, ny0, ty, c, fp, fp0, wrk, lwrk, ier)
-  use, intrinsic :: iso_fortran_env, only: real64
+  use, intrinsic :: iso_fortran_env, only: real32, real64
   use fitpack_interfaces, only: fpbspl, fpgivs, fprota, fpback, fpdisc, fprati
   use fitpack_surface_interfaces, only: fporde, fprank
   implicit none (type, external)
@@ -14,7 +14,12 @@ subroutine fpsurf(iopt, m, x, y, z, w, xb, xe, yb, ye, kxx, kyy, s, nxest, nyest
   real(real64), intent(out) :: fp
   real(real64), intent(inout) :: fp0, wrk(lwrk)
   integer, intent(inout) :: ier
-  real(real64), parameter :: con1 = 0.1_real64, con9 = 0.9_real64, con4 = 0.04_real64, ten = 10
+  ! The p-iteration's one-sided steps use the single-precision values of 0.1,
+  ! 0.9 and 0.04, as the genuine fpsurf of scipy's double-precision FITPACK does
+  ! (default-real literals). Measured: with exact constants the smoothing
+  ! reference cases differ by 2e-11..2e-10; with these they agree to 1e-13.
+  real(real64), parameter :: con1 = real(0.1_real32, real64), con9 = real(0.9_real32, real64), &
+                             con4 = real(0.04_real32, real64), ten = 10
   ! current orientation (swapped when ichang > 0)
   real(real64), allocatable :: u(:), v(:), tu(:), tv(:)
   real(real64), allocatable :: a(:, :), q(:, :), f(:), ff(:), spx(:, :), spy(:, :), bx(:, :), by(:, :), &

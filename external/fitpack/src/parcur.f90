@@ -94,6 +94,6 @@ subroutine fppara(iopt, idim, m, u, mx, x, w, ub, ue, k, s, nest, tol, maxit, k1
   real(real64), intent(inout) :: t(nest), c(nc), fp, fpint(nest), z(nc)
   real(real64), intent(inout) :: a(nest, k1), b(nest, k2), g(nest, k2), q(m, k1)
   external :: fpcurve_core
-  call fpcurve_core(iopt, idim, m, u, mx, x, w, ub, ue, 0, 0, k, s, nest, tol, maxit, k1, k2, n, t, &
+  call fpcurve_core(iopt, idim, m, u, mx, x, w, ub, ue, 0, 0, k, s, nest, tol, maxit, .true., k1, k2, n, t, &
                     nc, c, fp, fpint, z, a, b, g, q, nrdata, ier)
 end subroutine fppara

@@ -95,7 +95,7 @@ end subroutine parsur
 subroutine fppasu(iopt, ipar, idim, u, mu, v, mv, f, s, nuest, nvest, tol, maxit, nu, tu, nv, tv, c, fp, &
                   fp0, fpold, reducu, reducv, fpintu, fpintv, lastdi, nplusu, nplusv, nru, nrv, &
                   nrdatu, nrdatv, ier)
-  use, intrinsic :: iso_fortran_env, only: real64
+  use, intrinsic :: iso_fortran_env, only: real32, real64
   use fitpack_interfaces, only: fpknot, fprati
   use fitpack_surface_interfaces, only: fpgrpa
   implicit none (type, external)
@@ -105,7 +105,12 @@ subroutine fppasu(iopt, ipar, idim, u, mu, v, mv, f, s, nuest, nvest, tol, maxit
   real(real64), intent(inout) :: tu(nuest), tv(nvest), c((nuest - 4)*(nvest - 4)*idim)
   real(real64), intent(inout) :: fp, fp0, fpold, reducu, reducv, fpintu(nuest), fpintv(nvest)
   integer, intent(inout) :: ier
-  real(real64), parameter :: con1 = 0.1_real64, con9 = 0.9_real64, con4 = 0.04_real64
+  ! The p-iteration's one-sided steps use the single-precision values of 0.1,
+  ! 0.9 and 0.04 like those of its sibling fpregr (regrid), so that non-periodic
+  ! parsur stays regrid; scipy does not wrap parsur, so this cannot be measured
+  ! against the genuine fppasu.
+  real(real64), parameter :: con1 = real(0.1_real32, real64), con9 = real(0.9_real32, real64), &
+                             con4 = real(0.04_real32, real64)
   real(real64), allocatable :: ff(:)
   real(real64) :: acc, fpms, p, p1, p2, p3, f1, f2, f3, rn
   integer :: nmaxu, nmaxv, nue, nve, iter, l, nplu, nplv, npl1, nrintu, nrintv, ich1, ich3, i, j, ll, &

@@ -99,7 +99,7 @@ end subroutine regrid
 subroutine fpregr(iopt, x, mx, y, my, z, mz, xb, xe, yb, ye, kx, ky, s, nxest, nyest, tol, maxit, &
                   nx, tx, ny, ty, c, fp, fp0, fpold, reducx, reducy, fpintx, fpinty, &
                   lastdi, nplusx, nplusy, nrx, nry, nrdatx, nrdaty, wrk, lwrk, ier)
-  use, intrinsic :: iso_fortran_env, only: real64
+  use, intrinsic :: iso_fortran_env, only: real32, real64
   use fitpack_interfaces, only: fpknot, fprati
   use fitpack_surface_interfaces, only: fpgrre
   implicit none (type, external)
@@ -110,7 +110,14 @@ subroutine fpregr(iopt, x, mx, y, my, z, mz, xb, xe, yb, ye, kx, ky, s, nxest, n
   real(real64), intent(inout) :: fp, fp0, fpold, reducx, reducy, fpintx(nxest), fpinty(nyest)
   real(real64), intent(inout) :: wrk(lwrk)
   integer, intent(inout) :: ier
-  real(real64), parameter :: con1 = 0.1_real64, con9 = 0.9_real64, con4 = 0.04_real64
+  ! The p-iteration's one-sided steps (p*con4, p/con4, the con1/con9 mixes) use
+  ! the single-precision values of 0.1, 0.9 and 0.04, as the genuine fpregr of
+  ! scipy's double-precision FITPACK does (it assigns them from default-real
+  ! literals). Measured: with exact constants regrid_maxit_b/c (ier = 3) end
+  ! 2.3e-7 from the genuine fp (every p of the sequence follows from p = 1 and
+  ! the rounded 0.04 at the third iteration); with these they agree bit for bit.
+  real(real64), parameter :: con1 = real(0.1_real32, real64), con9 = real(0.9_real32, real64), &
+                             con4 = real(0.04_real32, real64)
   real(real64) :: acc, fpms, p, p1, p2, p3, f1, f2, f3, rn
   integer :: kx1, ky1, kx2, ky2, nminx, nminy, nmaxx, nmaxy, nxe, nye, mpm, iter, i, j, l, &
     nplx, nply, npl1, nrintx, nrinty, ifsx, ifsy, ifbx, ifby, ich1, ich3
