@@ -11,7 +11,7 @@ module fitpack_interfaces
   implicit none (type, external)
   private
   public :: fpbspl, fpgivs, fprota, fpback, fpbacp, fprati, fpdisc, fpchec, fpchep, fpknot
-  public :: fpader, fpinst, fpintb, fpcuro
+  public :: fpader, fpinst, fpintb, fpcuro, fp_smoothing_step
   public :: curfit, percur, parcur, clocur, concur
   public :: splev, splder, curev, cualde, spalde, insert, splint, sproot
 
@@ -56,6 +56,17 @@ module fitpack_interfaces
       real(real64), intent(in) :: p2, f2
       real(real64) :: p
     end function fprati
+
+    subroutine fp_smoothing_step(fpms, acc, accept_tie, iter, maxit, single_steps, p, p1, f1, p3, f3, &
+                                 ich1, ich3, step)
+      import :: real64
+      real(real64), intent(in) :: fpms, acc
+      logical, intent(in) :: accept_tie, single_steps
+      integer, intent(in) :: iter, maxit
+      real(real64), intent(inout) :: p, p1, f1, p3, f3
+      integer, intent(inout) :: ich1, ich3
+      integer, intent(out) :: step
+    end subroutine fp_smoothing_step
 
     pure subroutine fpdisc(t, n, k2, b, nest)
       import :: real64

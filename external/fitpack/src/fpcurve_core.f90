@@ -7,9 +7,11 @@
 !> scratch; 1: continue with the knots, fpint and nrdata of the previous call.
 !> Knots are added (fpknot) while the least-squares spline has fp > s; then the
 !> smoothing parameter p is found by rational interpolation (fprati) until
-!> |fp - s| < tol*s, at most maxit iterations. Coefficients: c(n*(j-1)+i).
-!> single_steps: the p-iteration's one-sided steps (p*con4, p/con4, the
-!> con1/con9 mixes) use the single-precision values of 0.1, 0.9 and 0.04, as the
+!> |fp - s| < tol*s, at most maxit iterations (each step: fp_smoothing_step).
+!> Coefficients: c(n*(j-1)+i).
+!> single_steps (passed to fp_smoothing_step): the p-iteration's one-sided
+!> steps (p*con4, p/con4, the con1/con9 mixes) use the single-precision values
+!> of 0.1, 0.9 and 0.04, as the
 !> genuine fppara of scipy's double-precision FITPACK does (it assigns them from
 !> default-real literals; parcur and concur pass true); its fpcurf holds them
 !> exact (curfit passes false). Measured against the reference tables: the other
@@ -18,8 +20,8 @@
 !> b(nest,k2), g(nest,k2), q(m,k1), nrdata(nest).
 subroutine fpcurve_core(iopt, idim, m, u, mx, x, w, ub, ue, ib, ie, k, s, nest, tol, maxit, single_steps, &
                         k1, k2, n, t, nc, c, fp, fpint, z, a, b, g, q, nrdata, ier)
-  use, intrinsic :: iso_fortran_env, only: real32, real64
-  use fitpack_interfaces, only: fpbspl, fpgivs, fprota, fpback, fprati, fpdisc, fpknot
+  use, intrinsic :: iso_fortran_env, only: real64
+  use fitpack_interfaces, only: fpbspl, fpgivs, fprota, fpback, fpdisc, fpknot, fp_smoothing_step
   implicit none (type, external)
   integer, intent(in) :: iopt, idim, m, mx, ib, ie, k, nest, maxit, k1, k2, nc
   logical, intent(in) :: single_steps
@@ -29,24 +31,14 @@ subroutine fpcurve_core(iopt, idim, m, u, mx, x, w, ub, ue, ib, ie, k, s, nest, 
   real(real64), intent(inout) :: a(nest, k1), b(nest, k2), g(nest, k2), q(m, k1)
 
   real(real64), parameter :: half = 0.5_real64
-  real(real64) :: con1, con9, con4
   real(real64) :: h(7), xi(10)
   real(real64), allocatable :: rhs(:, :)   ! smoothing right-hand sides (heap: nest can be large)
-  real(real64) :: acc, fp0, fpold, fpms, fpart, term, fac, store, rn, p, p1, p2, p3, f1, f2, f3, &
+  real(real64) :: acc, fp0, fpold, fpms, fpart, term, fac, store, rn, p, p1, p3, f1, f3, &
                   pinv, piv, cs, sn, ui, wi
   integer :: nold, nmin, nmax, ib1, ie1, nk1, nfree, nrint, nplus, npl1, iter, it, i, l, &
-             d, ich1, ich3, n8, lp, new
+             d, ich1, ich3, step, n8, lp, new
   logical :: restart
 
-  if (single_steps) then
-    con1 = real(0.1_real32, real64)
-    con9 = real(0.9_real32, real64)
-    con4 = real(0.04_real32, real64)
-  else
-    con1 = 0.1_real64
-    con9 = 0.9_real64
-    con4 = 0.04_real64
-  end if
   nmin = 2*k1
   ib1 = max(0, ib - 1)
   ie1 = max(0, ie - 1)
@@ -228,41 +220,10 @@ subroutine fpcurve_core(iopt, idim, m, u, mx, x, w, ub, ue, ib, ie, k, s, nest, 
       fp = fp + residual2(it, l)
     end do
     fpms = fp - s
-    if (abs(fpms) < acc) return
-    if (iter == maxit) then
-      ier = 3
-      return
-    end if
-    p2 = p
-    f2 = fpms
-    if (ich3 == 0) then
-      if (f2 - f3 <= acc) then
-        ! initial p too large
-        p3 = p2
-        f3 = f2
-        p = p*con4
-        if (p <= p1) p = p1*con9 + p2*con1
-        cycle
-      end if
-      if (f2 < 0) ich3 = 1
-    end if
-    if (ich1 == 0) then
-      if (f1 - f2 <= acc) then
-        ! initial p too small
-        p1 = p2
-        f1 = f2
-        p = p/con4
-        if (p3 < 0) cycle
-        if (p >= p3) p = p2*con1 + p3*con9
-        cycle
-      end if
-      if (f2 > 0) ich1 = 1
-    end if
-    if (f2 >= f1 .or. f2 <= f3) then
-      ier = 2
-      return
-    end if
-    p = fprati(p1, f1, p2, f2, p3, f3)
+    call fp_smoothing_step(fpms, acc, .false., iter, maxit, single_steps, p, p1, f1, p3, f3, ich1, ich3, step)
+    if (step < 0) cycle
+    if (step > 0) ier = step
+    return
   end do
 
 contains

@@ -17,8 +17,8 @@
 !> g1(nest,k2), g2(nest,k1), q(m,k1), nrdata(nest).
 subroutine fpperiodic_core(iopt, idim, m, u, mx, x, w, k, s, nest, tol, maxit, k1, k2, n, t, nc, c, &
                            fp, fpint, z, a1, a2, b, g1, g2, q, nrdata, ier)
-  use, intrinsic :: iso_fortran_env, only: real32, real64
-  use fitpack_interfaces, only: fpbspl, fpgivs, fprota, fpbacp, fprati, fpdisc, fpknot
+  use, intrinsic :: iso_fortran_env, only: real64
+  use fitpack_interfaces, only: fpbspl, fpgivs, fprota, fpbacp, fpdisc, fpknot, fp_smoothing_step
   implicit none (type, external)
   integer, intent(in) :: iopt, idim, m, mx, k, nest, maxit, k1, k2, nc
   real(real64), intent(in) :: u(m), x(mx), w(m), s, tol
@@ -27,20 +27,20 @@ subroutine fpperiodic_core(iopt, idim, m, u, mx, x, w, k, s, nest, tol, maxit, k
   real(real64), intent(inout) :: a1(nest, k1), a2(nest, k), b(nest, k2), g1(nest, k2), g2(nest, k1), &
                                  q(m, k1)
 
-  ! The p-iteration's one-sided steps (p*con4, p/con4, the con1/con9 mixes) use
+  ! The p-iteration's one-sided steps (fp_smoothing_step: p*con4, p/con4, the con1/con9 mixes) use
   ! the single-precision values of 0.1, 0.9 and 0.04, as the genuine fpperi and
   ! fpclos of scipy's double-precision FITPACK do (they assign them from
   ! default-real literals). Measured: with exact constants clocur closed_maxit_a/b
   ! (ier = 3) end 6e-8..4e-7 from the genuine fp and percur's smoothing cases
   ! 1e-12..7e-11; with these every case agrees to rounding (1e-13).
-  real(real64), parameter :: half = 0.5_real64, con1 = real(0.1_real32, real64), &
-                             con9 = real(0.9_real32, real64), con4 = real(0.04_real32, real64)
+  real(real64), parameter :: half = 0.5_real64
+  logical, parameter :: single_steps = .true.
   real(real64) :: h(7), h1(8), h2(8), xi(10), c1(10)
   real(real64), allocatable :: rhs(:, :), sol(:)   ! heap: nest can be large
-  real(real64) :: acc, per, fp0, fpold, fpms, fpart, term, store, rn, p, p1, p2, p3, f1, f2, f3, &
+  real(real64) :: acc, per, fp0, fpold, fpms, fpart, term, store, rn, p, p1, p3, f1, f3, &
                   pinv, piv, cs, sn, ui, wi, d1
   integer :: nold, m1, nmin, nmax, nk1, n7, n10, n11, n8, nrint, nplus, npl1, iter, it, i, j, l, l5, &
-             d, ich1, ich3, lp, mm, new, jper, cf
+             d, ich1, ich3, step, lp, mm, new, jper, cf
   logical :: restart, interpolate_now
 
   m1 = m - 1
@@ -359,39 +359,10 @@ subroutine fpperiodic_core(iopt, idim, m, u, mx, x, w, k, s, nest, tol, maxit, k
       fp = fp + residual2(it, l)
     end do
     fpms = fp - s
-    if (abs(fpms) < acc) return
-    if (iter == maxit) then
-      ier = 3
-      return
-    end if
-    p2 = p
-    f2 = fpms
-    if (ich3 == 0) then
-      if (f2 - f3 <= acc) then
-        p3 = p2
-        f3 = f2
-        p = p*con4
-        if (p <= p1) p = p1*con9 + p2*con1
-        cycle
-      end if
-      if (f2 < 0) ich3 = 1
-    end if
-    if (ich1 == 0) then
-      if (f1 - f2 <= acc) then
-        p1 = p2
-        f1 = f2
-        p = p/con4
-        if (p3 < 0) cycle
-        if (p >= p3) p = p2*con1 + p3*con9
-        cycle
-      end if
-      if (f2 > 0) ich1 = 1
-    end if
-    if (f2 >= f1 .or. f2 <= f3) then
-      ier = 2
-      return
-    end if
-    p = fprati(p1, f1, p2, f2, p3, f3)
+    call fp_smoothing_step(fpms, acc, .false., iter, maxit, single_steps, p, p1, f1, p3, f3, ich1, ich3, step)
+    if (step < 0) cycle
+    if (step > 0) ier = step
+    return
   end do
 
 contains

@@ -3,8 +3,8 @@
 !> the swap of the coordinates works on internal copies.
 subroutine fpsurf(iopt, m, x, y, z, w, xb, xe, yb, ye, kxx, kyy, s, nxest, nyest, eta, tol, maxit, &
                   nmax, nx0, tx, ny0, ty, c, fp, fp0, wrk, lwrk, ier)
-  use, intrinsic :: iso_fortran_env, only: real32, real64
-  use fitpack_interfaces, only: fpbspl, fpgivs, fprota, fpback, fpdisc, fprati
+  use, intrinsic :: iso_fortran_env, only: real64
+  use fitpack_interfaces, only: fpbspl, fpgivs, fprota, fpback, fpdisc, fp_smoothing_step
   use fitpack_surface_interfaces, only: fporde, fprank
   implicit none (type, external)
   integer, intent(in) :: iopt, m, kxx, kyy, nxest, nyest, maxit, nmax, lwrk
@@ -14,12 +14,12 @@ subroutine fpsurf(iopt, m, x, y, z, w, xb, xe, yb, ye, kxx, kyy, s, nxest, nyest
   real(real64), intent(out) :: fp
   real(real64), intent(inout) :: fp0, wrk(lwrk)
   integer, intent(inout) :: ier
-  ! The p-iteration's one-sided steps use the single-precision values of 0.1,
+  ! The p-iteration's one-sided steps (fp_smoothing_step) use the single-precision values of 0.1,
   ! 0.9 and 0.04, as the genuine fpsurf of scipy's double-precision FITPACK does
   ! (default-real literals). Measured: with exact constants the smoothing
   ! reference cases differ by 2e-11..2e-10; with these they agree to 1e-13.
-  real(real64), parameter :: con1 = real(0.1_real32, real64), con9 = real(0.9_real32, real64), &
-                             con4 = real(0.04_real32, real64), ten = 10
+  logical, parameter :: single_steps = .true.
+  real(real64), parameter :: ten = 10
   ! current orientation (swapped when ichang > 0)
   real(real64), allocatable :: u(:), v(:), tu(:), tv(:)
   real(real64), allocatable :: a(:, :), q(:, :), f(:), ff(:), spx(:, :), spy(:, :), bx(:, :), by(:, :), &
@@ -27,9 +27,9 @@ subroutine fpsurf(iopt, m, x, y, z, w, xb, xe, yb, ye, kxx, kyy, s, nxest, nyest
   integer, allocatable :: index(:), nummer(:)
   integer :: kx, ky, kx1, ky1, kx2, ky2, nx, ny, nxe, nye, nminx, nminy, ichang, iter, nxx, nyy, nrint, &
     nreg, ncof, nk1x, nk1y, iband, iband1, iband3, iband4, num, num1, lx, ly, l1, l2, jrot, in, i, j, &
-    i1, j1, irot, l, rank, jxy, ich1, ich3, lwest, nc, ncmax, i2, ibb
+    i1, j1, irot, l, rank, jxy, ich1, ich3, step, lwest, nc, ncmax, i2, ibb
   real(real64) :: x0, x1, y0, y1, acc, fpms, wi, zi, hxi, piv, cs, sn, dmax, sigma, sq, store, fpmax, &
-    arg, fac1, fac2, p, p1, p2, p3, f1, f2, f3, pinv, rn, hx(6), hy(6)
+    arg, fac1, fac2, p, p1, p3, f1, f3, pinv, rn, hx(6), hy(6)
   logical :: rankdef
   kx = kxx
   ky = kyy
@@ -355,44 +355,11 @@ subroutine fpsurf(iopt, m, x, y, z, w, xb, xe, yb, ye, kxx, kyy, s, nxest, nyest
       end do
     end do
     fpms = fp - s
-    if (abs(fpms) <= acc) then
-      call finish(.true.)
-      return
-    end if
-    if (iter == maxit) then
-      ier = 3
-      call finish(.false.)
-      return
-    end if
-    p2 = p
-    f2 = fpms
-    if (ich3 == 0) then
-      if (f2 - f3 <= acc) then
-        p3 = p2
-        f3 = f2
-        p = p*con4
-        if (p <= p1) p = p1*con9 + p2*con1
-        cycle
-      end if
-      if (f2 < 0) ich3 = 1
-    end if
-    if (ich1 == 0) then
-      if (f1 - f2 <= acc) then
-        p1 = p2
-        f1 = f2
-        p = p/con4
-        if (p3 < 0) cycle
-        if (p >= p3) p = p2*con1 + p3*con9
-        cycle
-      end if
-      if (f2 > 0) ich1 = 1
-    end if
-    if (f2 >= f1 .or. f2 <= f3) then
-      ier = 2
-      call finish(.false.)
-      return
-    end if
-    p = fprati(p1, f1, p2, f2, p3, f3)
+    call fp_smoothing_step(fpms, acc, .true., iter, maxit, single_steps, p, p1, f1, p3, f3, ich1, ich3, step)
+    if (step < 0) cycle
+    if (step > 0) ier = step
+    call finish(step == 0)
+    return
   end do
 contains
   real(real64) function value_at(ip, jr)

@@ -95,8 +95,8 @@ end subroutine parsur
 subroutine fppasu(iopt, ipar, idim, u, mu, v, mv, f, s, nuest, nvest, tol, maxit, nu, tu, nv, tv, c, fp, &
                   fp0, fpold, reducu, reducv, fpintu, fpintv, lastdi, nplusu, nplusv, nru, nrv, &
                   nrdatu, nrdatv, ier)
-  use, intrinsic :: iso_fortran_env, only: real32, real64
-  use fitpack_interfaces, only: fpknot, fprati
+  use, intrinsic :: iso_fortran_env, only: real64
+  use fitpack_interfaces, only: fpknot, fp_smoothing_step
   use fitpack_surface_interfaces, only: fpgrpa
   implicit none (type, external)
   integer, intent(in) :: iopt, ipar(2), idim, mu, mv, nuest, nvest, maxit
@@ -105,15 +105,14 @@ subroutine fppasu(iopt, ipar, idim, u, mu, v, mv, f, s, nuest, nvest, tol, maxit
   real(real64), intent(inout) :: tu(nuest), tv(nvest), c((nuest - 4)*(nvest - 4)*idim)
   real(real64), intent(inout) :: fp, fp0, fpold, reducu, reducv, fpintu(nuest), fpintv(nvest)
   integer, intent(inout) :: ier
-  ! The p-iteration's one-sided steps use the single-precision values of 0.1,
+  ! The p-iteration's one-sided steps (fp_smoothing_step) use the single-precision values of 0.1,
   ! 0.9 and 0.04 like those of its sibling fpregr (regrid), so that non-periodic
   ! parsur stays regrid; scipy does not wrap parsur, so this cannot be measured
   ! against the genuine fppasu.
-  real(real64), parameter :: con1 = real(0.1_real32, real64), con9 = real(0.9_real32, real64), &
-                             con4 = real(0.04_real32, real64)
+  logical, parameter :: single_steps = .true.
   real(real64), allocatable :: ff(:)
-  real(real64) :: acc, fpms, p, p1, p2, p3, f1, f2, f3, rn
-  integer :: nmaxu, nmaxv, nue, nve, iter, l, nplu, nplv, npl1, nrintu, nrintv, ich1, ich3, i, j, ll, &
+  real(real64) :: acc, fpms, p, p1, p3, f1, f3, rn
+  integer :: nmaxu, nmaxv, nue, nve, iter, l, nplu, nplv, npl1, nrintu, nrintv, ich1, ich3, step, i, j, ll, &
     i1, i2
   logical :: accepted
   nmaxu = mu + 4 + 2*ipar(1)
@@ -238,39 +237,10 @@ subroutine fppasu(iopt, ipar, idim, u, mu, v, mv, f, s, nuest, nvest, tol, maxit
   do iter = 1, maxit
     call fpgrpa(ipar, idim, u, mu, v, mv, ff, tu, nu, tv, nv, p, c, fp, fpintu, fpintv, nru, nrv)
     fpms = fp - s
-    if (abs(fpms) < acc) return
-    if (iter == maxit) then
-      ier = 3
-      return
-    end if
-    p2 = p
-    f2 = fpms
-    if (ich3 == 0) then
-      if (f2 - f3 <= acc) then
-        p3 = p2
-        f3 = f2
-        p = p*con4
-        if (p <= p1) p = p1*con9 + p2*con1
-        cycle
-      end if
-      if (f2 < 0) ich3 = 1
-    end if
-    if (ich1 == 0) then
-      if (f1 - f2 <= acc) then
-        p1 = p2
-        f1 = f2
-        p = p/con4
-        if (p3 < 0) cycle
-        if (p >= p3) p = p2*con1 + p3*con9
-        cycle
-      end if
-      if (f2 > 0) ich1 = 1
-    end if
-    if (f2 >= f1 .or. f2 <= f3) then
-      ier = 2
-      return
-    end if
-    p = fprati(p1, f1, p2, f2, p3, f3)
+    call fp_smoothing_step(fpms, acc, .false., iter, maxit, single_steps, p, p1, f1, p3, f3, ich1, ich3, step)
+    if (step < 0) cycle
+    if (step > 0) ier = step
+    return
   end do
 contains
   logical function add_in_u()

@@ -99,8 +99,8 @@ end subroutine regrid
 subroutine fpregr(iopt, x, mx, y, my, z, mz, xb, xe, yb, ye, kx, ky, s, nxest, nyest, tol, maxit, &
                   nx, tx, ny, ty, c, fp, fp0, fpold, reducx, reducy, fpintx, fpinty, &
                   lastdi, nplusx, nplusy, nrx, nry, nrdatx, nrdaty, wrk, lwrk, ier)
-  use, intrinsic :: iso_fortran_env, only: real32, real64
-  use fitpack_interfaces, only: fpknot, fprati
+  use, intrinsic :: iso_fortran_env, only: real64
+  use fitpack_interfaces, only: fpknot, fp_smoothing_step
   use fitpack_surface_interfaces, only: fpgrre
   implicit none (type, external)
   integer, intent(in) :: iopt, mx, my, mz, kx, ky, nxest, nyest, maxit, lwrk
@@ -110,17 +110,16 @@ subroutine fpregr(iopt, x, mx, y, my, z, mz, xb, xe, yb, ye, kx, ky, s, nxest, n
   real(real64), intent(inout) :: fp, fp0, fpold, reducx, reducy, fpintx(nxest), fpinty(nyest)
   real(real64), intent(inout) :: wrk(lwrk)
   integer, intent(inout) :: ier
-  ! The p-iteration's one-sided steps (p*con4, p/con4, the con1/con9 mixes) use
+  ! The p-iteration's one-sided steps (fp_smoothing_step: p*con4, p/con4, the con1/con9 mixes) use
   ! the single-precision values of 0.1, 0.9 and 0.04, as the genuine fpregr of
   ! scipy's double-precision FITPACK does (it assigns them from default-real
   ! literals). Measured: with exact constants regrid_maxit_b/c (ier = 3) end
   ! 2.3e-7 from the genuine fp (every p of the sequence follows from p = 1 and
   ! the rounded 0.04 at the third iteration); with these they agree bit for bit.
-  real(real64), parameter :: con1 = real(0.1_real32, real64), con9 = real(0.9_real32, real64), &
-                             con4 = real(0.04_real32, real64)
-  real(real64) :: acc, fpms, p, p1, p2, p3, f1, f2, f3, rn
+  logical, parameter :: single_steps = .true.
+  real(real64) :: acc, fpms, p, p1, p3, f1, f3, rn
   integer :: kx1, ky1, kx2, ky2, nminx, nminy, nmaxx, nmaxy, nxe, nye, mpm, iter, i, j, l, &
-    nplx, nply, npl1, nrintx, nrinty, ifsx, ifsy, ifbx, ifby, ich1, ich3
+    nplx, nply, npl1, nrintx, nrinty, ifsx, ifsy, ifbx, ifby, ich1, ich3, step
   integer :: lsx, lsy, lri, lq, lax, lay, lbx, lby
   logical :: knots_loop_done
   kx1 = kx + 1
@@ -256,41 +255,10 @@ subroutine fpregr(iopt, x, mx, y, my, z, mz, xb, xe, yb, ye, kx, ky, s, nxest, n
   do iter = 1, maxit
     call fit(p)
     fpms = fp - s
-    if (abs(fpms) < acc) return
-    if (iter == maxit) then
-      ier = 3
-      return
-    end if
-    p2 = p
-    f2 = fpms
-    if (ich3 == 0) then
-      if (f2 - f3 <= acc) then
-        ! the first p was too large
-        p3 = p2
-        f3 = f2
-        p = p*con4
-        if (p <= p1) p = p1*con9 + p2*con1
-        cycle
-      end if
-      if (f2 < 0) ich3 = 1
-    end if
-    if (ich1 == 0) then
-      if (f1 - f2 <= acc) then
-        ! the first p was too small
-        p1 = p2
-        f1 = f2
-        p = p/con4
-        if (p3 < 0) cycle
-        if (p >= p3) p = p2*con1 + p3*con9
-        cycle
-      end if
-      if (f2 > 0) ich1 = 1
-    end if
-    if (f2 >= f1 .or. f2 <= f3) then
-      ier = 2
-      return
-    end if
-    p = fprati(p1, f1, p2, f2, p3, f3)
+    call fp_smoothing_step(fpms, acc, .false., iter, maxit, single_steps, p, p1, f1, p3, f3, ich1, ich3, step)
+    if (step < 0) cycle
+    if (step > 0) ier = step
+    return
   end do
 contains
   logical function add_in_x()
