@@ -5,7 +5,7 @@
 !> lwrk >= m*(k+1) + nest*(7+idim+5*k); iwrk(nest). ier as percur.
 subroutine clocur(iopt, ipar, idim, m, u, mx, x, w, k, s, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
   use, intrinsic :: iso_fortran_env, only: real64
-  use fitpack_interfaces, only: fpchep
+  use fitpack_interfaces, only: fp_periodic_given_knots
   implicit none (type, external)
   integer, intent(in) :: iopt, ipar, idim, m, mx, k, nest, nc, lwrk
   real(real64), intent(inout) :: u(m)
@@ -16,8 +16,8 @@ subroutine clocur(iopt, ipar, idim, m, u, mx, x, w, k, s, nest, n, t, nc, c, fp,
   external :: fpclos
   real(real64), parameter :: tol = 0.001_real64
   integer, parameter :: maxit = 20
-  real(real64) :: dist, per
-  integer :: i, i1, i2, j, j1, j2, k1, k2, lwest, ncc, nmin, ifp, iz, ia1, ia2, ib, ig1, ig2, iq
+  real(real64) :: dist
+  integer :: i, i1, i2, j, k1, k2, lwest, ncc, nmin, ifp, iz, ia1, ia2, ib, ig1, ig2, iq
 
   ier = 10
   if (iopt < -1 .or. iopt > 1) return
@@ -64,22 +64,7 @@ subroutine clocur(iopt, ipar, idim, m, u, mx, x, w, k, s, nest, n, t, nc, c, fp,
   end do
   if (iopt < 0) then
     if (n <= nmin .or. n > nest) return
-    per = u(m) - u(1)
-    j1 = k1
-    t(j1) = u(1)
-    i1 = n - k
-    t(i1) = u(m)
-    j2 = j1
-    i2 = i1
-    do i = 1, k
-      i1 = i1 + 1
-      i2 = i2 - 1
-      j1 = j1 + 1
-      j2 = j2 - 1
-      t(j2) = t(i2) - per
-      t(i1) = t(j1) + per
-    end do
-    call fpchep(u, m, t, n, k, ier)
+    call fp_periodic_given_knots(u, m, k, n, t, ier)
     if (ier /= 0) return
   else
     if (s < 0) return

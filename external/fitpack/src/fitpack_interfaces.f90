@@ -11,7 +11,7 @@ module fitpack_interfaces
   implicit none (type, external)
   private
   public :: fpbspl, fpgivs, fprota, fpback, fpbacp, fprati, fpdisc, fpchec, fpchep, fpknot
-  public :: fpader, fpinst, fpintb, fpcuro, fp_smoothing_step
+  public :: fpader, fpinst, fpintb, fpcuro, fp_smoothing_step, fp_periodic_given_knots
   public :: curfit, percur, parcur, clocur, concur
   public :: splev, splder, curev, cualde, spalde, insert, splint, sproot
 
@@ -88,6 +88,14 @@ module fitpack_interfaces
       real(real64), intent(in) :: x(m), t(n)
       integer, intent(out) :: ier
     end subroutine fpchep
+
+    pure subroutine fp_periodic_given_knots(u, m, k, n, t, ier)
+      import :: real64
+      integer, intent(in) :: m, k, n
+      real(real64), intent(in) :: u(m)
+      real(real64), intent(inout) :: t(n)
+      integer, intent(out) :: ier
+    end subroutine fp_periodic_given_knots
 
     pure subroutine fpknot(x, m, t, n, fpint, nrdata, nrint, nest, istart)
       import :: real64

@@ -9,6 +9,7 @@ module fitpack_surface_interfaces
   public :: regrid, fpregr, fpgrre
   public :: surfit, fpsurf, fporde, fprank
   public :: parsur, fppasu, fpgrpa, surev, fpsuev
+  public :: fp_grid_knots_to_add, fp_grid_add_first
 
   interface
     subroutine bispev(tx, nx, ty, ny, c, kx, ky, x, mx, y, my, z, wrk, lwrk, iwrk, kwrk, ier)
@@ -189,5 +190,20 @@ module fitpack_surface_interfaces
       real(real64), intent(out) :: f(mu*mv*idim), wu(mu, 4), wv(mv, 4)
       integer, intent(out) :: lu(mu), lv(mv)
     end subroutine fpsuev
+
+    pure function fp_grid_knots_to_add(nplus, reduc, fpms, acc) result(npl)
+      use, intrinsic :: iso_fortran_env, only: real64
+      implicit none
+      integer, intent(in) :: nplus
+      real(real64), intent(in) :: reduc, fpms, acc
+      integer :: npl
+    end function fp_grid_knots_to_add
+
+    pure function fp_grid_add_first(npl_first, npl_second, lastdi, first_full, second_full) result(first)
+      implicit none
+      integer, intent(in) :: npl_first, npl_second, lastdi
+      logical, intent(in) :: first_full, second_full
+      logical :: first
+    end function fp_grid_add_first
   end interface
 end module fitpack_surface_interfaces

@@ -516,3 +516,34 @@ contains
     end do
   end function residual2
 end subroutine fpperiodic_core
+
+!> Given interior knots (iopt = -1 of percur and clocur): t(k+1) = u(1),
+!> t(n-k) = u(m) and the k knots beyond each end by periodicity with period
+!> u(m) - u(1); then the knots are checked (fpchep; ier = 0 or 10).
+pure subroutine fp_periodic_given_knots(u, m, k, n, t, ier)
+  use, intrinsic :: iso_fortran_env, only: real64
+  use fitpack_interfaces, only: fpchep
+  implicit none (type, external)
+  integer, intent(in) :: m, k, n
+  real(real64), intent(in) :: u(m)
+  real(real64), intent(inout) :: t(n)
+  integer, intent(out) :: ier
+  real(real64) :: per
+  integer :: i, i1, i2, j1, j2
+  per = u(m) - u(1)
+  j1 = k + 1
+  t(j1) = u(1)
+  i1 = n - k
+  t(i1) = u(m)
+  j2 = j1
+  i2 = i1
+  do i = 1, k
+    i1 = i1 + 1
+    i2 = i2 - 1
+    j1 = j1 + 1
+    j2 = j2 - 1
+    t(j2) = t(i2) - per
+    t(i1) = t(j1) + per
+  end do
+  call fpchep(u, m, t, n, k, ier)
+end subroutine fp_periodic_given_knots

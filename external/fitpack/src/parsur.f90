@@ -97,7 +97,7 @@ subroutine fppasu(iopt, ipar, idim, u, mu, v, mv, f, s, nuest, nvest, tol, maxit
                   nrdatu, nrdatv, ier)
   use, intrinsic :: iso_fortran_env, only: real64
   use fitpack_interfaces, only: fpknot, fp_smoothing_step
-  use fitpack_surface_interfaces, only: fpgrpa
+  use fitpack_surface_interfaces, only: fpgrpa, fp_grid_knots_to_add, fp_grid_add_first
   implicit none (type, external)
   integer, intent(in) :: iopt, ipar(2), idim, mu, mv, nuest, nvest, maxit
   real(real64), intent(in) :: u(mu), v(mv), f(mu*mv*idim), s, tol
@@ -111,8 +111,8 @@ subroutine fppasu(iopt, ipar, idim, u, mu, v, mv, f, s, nuest, nvest, tol, maxit
   ! against the genuine fppasu.
   logical, parameter :: single_steps = .true.
   real(real64), allocatable :: ff(:)
-  real(real64) :: acc, fpms, p, p1, p3, f1, f3, rn
-  integer :: nmaxu, nmaxv, nue, nve, iter, l, nplu, nplv, npl1, nrintu, nrintv, ich1, ich3, step, i, j, ll, &
+  real(real64) :: acc, fpms, p, p1, p3, f1, f3
+  integer :: nmaxu, nmaxv, nue, nve, iter, l, nplu, nplv, nrintu, nrintv, ich1, ich3, step, i, j, ll, &
     i1, i2
   logical :: accepted
   nmaxu = mu + 4 + 2*ipar(1)
@@ -196,20 +196,10 @@ subroutine fppasu(iopt, ipar, idim, u, mu, v, mv, f, s, nuest, nvest, tol, maxit
     if (lastdi > 0) reducv = fpold - fp
     fpold = fp
     nplu = 1
-    if (nu /= 8) then
-      npl1 = nplusu*2
-      rn = nplusu
-      if (reducu > acc) npl1 = int(rn*fpms/reducu)
-      nplu = min(nplusu*2, max(npl1, nplusu/2, 1))
-    end if
+    if (nu /= 8) nplu = fp_grid_knots_to_add(nplusu, reducu, fpms, acc)
     nplv = 1
-    if (nv /= 8) then
-      npl1 = nplusv*2
-      rn = nplusv
-      if (reducv > acc) npl1 = int(rn*fpms/reducv)
-      nplv = min(nplusv*2, max(npl1, nplusv/2, 1))
-    end if
-    if (add_in_u()) then
+    if (nv /= 8) nplv = fp_grid_knots_to_add(nplusv, reducv, fpms, acc)
+    if (fp_grid_add_first(nplu, nplv, lastdi, nu == nue, nv == nve)) then
       lastdi = -1
       nplusu = nplu
       do l = 1, nplusu
@@ -243,17 +233,6 @@ subroutine fppasu(iopt, ipar, idim, u, mu, v, mv, f, s, nuest, nvest, tol, maxit
     return
   end do
 contains
-  logical function add_in_u()
-    if (nplu < nplv) then
-      add_in_u = .true.
-    else if (nplu == nplv) then
-      add_in_u = lastdi >= 0
-    else
-      add_in_u = .false.
-    end if
-    if (add_in_u .and. nu == nue) add_in_u = .false.
-    if (.not. add_in_u .and. nv == nve) add_in_u = .true.
-  end function add_in_u
 
   pure subroutine set_boundary(t, n, tb, te, per)
     integer, intent(in) :: n, per

@@ -4,7 +4,7 @@
 !> s = 0 needs nest >= m+2k. ier as curfit (-2: the constant is good enough).
 subroutine percur(iopt, m, x, y, w, k, s, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
   use, intrinsic :: iso_fortran_env, only: real64
-  use fitpack_interfaces, only: fpchep
+  use fitpack_interfaces, only: fp_periodic_given_knots
   implicit none (type, external)
   integer, intent(in) :: iopt, m, k, nest, lwrk
   real(real64), intent(in) :: x(m), y(m), w(m), s
@@ -14,8 +14,7 @@ subroutine percur(iopt, m, x, y, w, k, s, nest, n, t, c, fp, wrk, lwrk, iwrk, ie
   external :: fpperi
   real(real64), parameter :: tol = 0.001_real64
   integer, parameter :: maxit = 20
-  real(real64) :: per
-  integer :: i, i1, i2, j1, j2, k1, k2, lwest, nmin, ifp, iz, ia1, ia2, ib, ig1, ig2, iq
+  integer :: i, k1, k2, lwest, nmin, ifp, iz, ia1, ia2, ib, ig1, ig2, iq
 
   ier = 10
   if (k <= 0 .or. k > 5) return
@@ -31,22 +30,7 @@ subroutine percur(iopt, m, x, y, w, k, s, nest, n, t, c, fp, wrk, lwrk, iwrk, ie
   end do
   if (iopt < 0) then
     if (n <= nmin .or. n > nest) return
-    per = x(m) - x(1)
-    j1 = k1
-    t(j1) = x(1)
-    i1 = n - k
-    t(i1) = x(m)
-    j2 = j1
-    i2 = i1
-    do i = 1, k
-      i1 = i1 + 1
-      i2 = i2 - 1
-      j1 = j1 + 1
-      j2 = j2 - 1
-      t(j2) = t(i2) - per
-      t(i1) = t(j1) + per
-    end do
-    call fpchep(x, m, t, n, k, ier)
+    call fp_periodic_given_knots(x, m, k, n, t, ier)
     if (ier /= 0) return
   else
     if (s < 0) return

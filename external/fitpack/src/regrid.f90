@@ -101,7 +101,7 @@ subroutine fpregr(iopt, x, mx, y, my, z, mz, xb, xe, yb, ye, kx, ky, s, nxest, n
                   lastdi, nplusx, nplusy, nrx, nry, nrdatx, nrdaty, wrk, lwrk, ier)
   use, intrinsic :: iso_fortran_env, only: real64
   use fitpack_interfaces, only: fpknot, fp_smoothing_step
-  use fitpack_surface_interfaces, only: fpgrre
+  use fitpack_surface_interfaces, only: fpgrre, fp_grid_knots_to_add, fp_grid_add_first
   implicit none (type, external)
   integer, intent(in) :: iopt, mx, my, mz, kx, ky, nxest, nyest, maxit, lwrk
   real(real64), intent(in) :: x(mx), y(my), z(mz), xb, xe, yb, ye, s, tol
@@ -117,9 +117,9 @@ subroutine fpregr(iopt, x, mx, y, my, z, mz, xb, xe, yb, ye, kx, ky, s, nxest, n
   ! 2.3e-7 from the genuine fp (every p of the sequence follows from p = 1 and
   ! the rounded 0.04 at the third iteration); with these they agree bit for bit.
   logical, parameter :: single_steps = .true.
-  real(real64) :: acc, fpms, p, p1, p3, f1, f3, rn
+  real(real64) :: acc, fpms, p, p1, p3, f1, f3
   integer :: kx1, ky1, kx2, ky2, nminx, nminy, nmaxx, nmaxy, nxe, nye, mpm, iter, i, j, l, &
-    nplx, nply, npl1, nrintx, nrinty, ifsx, ifsy, ifbx, ifby, ich1, ich3, step
+    nplx, nply, nrintx, nrinty, ifsx, ifsy, ifbx, ifby, ich1, ich3, step
   integer :: lsx, lsy, lri, lq, lax, lay, lbx, lby
   logical :: knots_loop_done
   kx1 = kx + 1
@@ -211,20 +211,10 @@ subroutine fpregr(iopt, x, mx, y, my, z, mz, xb, xe, yb, ye, kx, ky, s, nxest, n
     if (lastdi > 0) reducy = fpold - fp
     fpold = fp
     nplx = 1
-    if (nx /= nminx) then
-      npl1 = nplusx*2
-      rn = nplusx
-      if (reducx > acc) npl1 = int(rn*fpms/reducx)
-      nplx = min(nplusx*2, max(npl1, nplusx/2, 1))
-    end if
+    if (nx /= nminx) nplx = fp_grid_knots_to_add(nplusx, reducx, fpms, acc)
     nply = 1
-    if (ny /= nminy) then
-      npl1 = nplusy*2
-      rn = nplusy
-      if (reducy > acc) npl1 = int(rn*fpms/reducy)
-      nply = min(nplusy*2, max(npl1, nplusy/2, 1))
-    end if
-    if (add_in_x()) then
+    if (ny /= nminy) nply = fp_grid_knots_to_add(nplusy, reducy, fpms, acc)
+    if (fp_grid_add_first(nplx, nply, lastdi, nx == nxe, ny == nye)) then
       lastdi = -1
       nplusx = nplx
       ifsx = 0
@@ -261,19 +251,6 @@ subroutine fpregr(iopt, x, mx, y, my, z, mz, xb, xe, yb, ye, kx, ky, s, nxest, n
     return
   end do
 contains
-  logical function add_in_x()
-    ! more knots needed in x, or a tie after the last addition in y; a full
-    ! direction hands over to the other
-    if (nplx < nply) then
-      add_in_x = .true.
-    else if (nplx == nply) then
-      add_in_x = lastdi >= 0
-    else
-      add_in_x = .false.
-    end if
-    if (add_in_x .and. nx == nxe) add_in_x = .false.
-    if (.not. add_in_x .and. ny == nye) add_in_x = .true.
-  end function add_in_x
 
   subroutine fit(pp)
     real(real64), intent(in) :: pp
