@@ -5,7 +5,7 @@
 !> lwrk >= m*(k+1) + nest*(7+idim+5*k); iwrk(nest). ier as percur.
 subroutine clocur(iopt, ipar, idim, m, u, mx, x, w, k, s, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
   use, intrinsic :: iso_fortran_env, only: real64
-  use fitpack_interfaces, only: fp_periodic_given_knots
+  use fitpack_interfaces, only: fp_periodic_knot_checks
   implicit none (type, external)
   integer, intent(in) :: iopt, ipar, idim, m, mx, k, nest, nc, lwrk
   real(real64), intent(inout) :: u(m)
@@ -62,15 +62,8 @@ subroutine clocur(iopt, ipar, idim, m, u, mx, x, w, k, s, nest, n, t, nc, c, fp,
   do i = 1, m - 1
     if (u(i) >= u(i + 1) .or. w(i) <= 0) return
   end do
-  if (iopt < 0) then
-    if (n <= nmin .or. n > nest) return
-    call fp_periodic_given_knots(u, m, k, n, t, ier)
-    if (ier /= 0) return
-  else
-    if (s < 0) return
-    if (s == 0 .and. nest < m + 2*k) return
-    ier = 0
-  end if
+  call fp_periodic_knot_checks(iopt, u, m, k, s, nest, n, t, ier)
+  if (ier /= 0) return
   ifp = 1
   iz = ifp + nest
   ia1 = iz + ncc

@@ -11,7 +11,7 @@ module fitpack_interfaces
   implicit none (type, external)
   private
   public :: fpbspl, fpgivs, fprota, fpback, fpbacp, fprati, fpdisc, fpchec, fpchep, fpknot
-  public :: fpader, fpinst, fpintb, fpcuro, fp_smoothing_step, fp_periodic_given_knots
+  public :: fpader, fpinst, fpintb, fpcuro, fp_smoothing_step, fp_periodic_knot_checks
   public :: curfit, percur, parcur, clocur, concur
   public :: splev, splder, curev, cualde, spalde, insert, splint, sproot
 
@@ -89,13 +89,13 @@ module fitpack_interfaces
       integer, intent(out) :: ier
     end subroutine fpchep
 
-    pure subroutine fp_periodic_given_knots(u, m, k, n, t, ier)
+    pure subroutine fp_periodic_knot_checks(iopt, u, m, k, s, nest, n, t, ier)
       import :: real64
-      integer, intent(in) :: m, k, n
-      real(real64), intent(in) :: u(m)
-      real(real64), intent(inout) :: t(n)
+      integer, intent(in) :: iopt, m, k, nest, n
+      real(real64), intent(in) :: u(m), s
+      real(real64), intent(inout) :: t(nest)
       integer, intent(out) :: ier
-    end subroutine fp_periodic_given_knots
+    end subroutine fp_periodic_knot_checks
 
     pure subroutine fpknot(x, m, t, n, fpint, nrdata, nrint, nest, istart)
       import :: real64

@@ -517,19 +517,29 @@ contains
   end function residual2
 end subroutine fpperiodic_core
 
-!> Given interior knots (iopt = -1 of percur and clocur): t(k+1) = u(1),
-!> t(n-k) = u(m) and the k knots beyond each end by periodicity with period
-!> u(m) - u(1); then the knots are checked (fpchep; ier = 0 or 10).
-pure subroutine fp_periodic_given_knots(u, m, k, n, t, ier)
+!> The last input checks of percur and clocur (ier = 0 if passed, else 10).
+!> iopt = -1, given interior knots t(k+2..n-k-1): 2k+2 < n <= nest; then
+!> t(k+1) = u(1), t(n-k) = u(m) and the k knots beyond each end by
+!> periodicity with period u(m) - u(1), and the knots checked (fpchep).
+!> iopt >= 0: s >= 0, and nest >= m + 2k for interpolation (s = 0).
+pure subroutine fp_periodic_knot_checks(iopt, u, m, k, s, nest, n, t, ier)
   use, intrinsic :: iso_fortran_env, only: real64
   use fitpack_interfaces, only: fpchep
   implicit none (type, external)
-  integer, intent(in) :: m, k, n
-  real(real64), intent(in) :: u(m)
-  real(real64), intent(inout) :: t(n)
+  integer, intent(in) :: iopt, m, k, nest, n
+  real(real64), intent(in) :: u(m), s
+  real(real64), intent(inout) :: t(nest)
   integer, intent(out) :: ier
   real(real64) :: per
   integer :: i, i1, i2, j1, j2
+  ier = 10
+  if (iopt >= 0) then
+    if (s < 0) return
+    if (s == 0 .and. nest < m + 2*k) return
+    ier = 0
+    return
+  end if
+  if (n <= 2*(k + 1) .or. n > nest) return
   per = u(m) - u(1)
   j1 = k + 1
   t(j1) = u(1)
@@ -546,4 +556,4 @@ pure subroutine fp_periodic_given_knots(u, m, k, n, t, ier)
     t(i1) = t(j1) + per
   end do
   call fpchep(u, m, t, n, k, ier)
-end subroutine fp_periodic_given_knots
+end subroutine fp_periodic_knot_checks

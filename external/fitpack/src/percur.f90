@@ -4,7 +4,7 @@
 !> s = 0 needs nest >= m+2k. ier as curfit (-2: the constant is good enough).
 subroutine percur(iopt, m, x, y, w, k, s, nest, n, t, c, fp, wrk, lwrk, iwrk, ier)
   use, intrinsic :: iso_fortran_env, only: real64
-  use fitpack_interfaces, only: fp_periodic_given_knots
+  use fitpack_interfaces, only: fp_periodic_knot_checks
   implicit none (type, external)
   integer, intent(in) :: iopt, m, k, nest, lwrk
   real(real64), intent(in) :: x(m), y(m), w(m), s
@@ -28,15 +28,8 @@ subroutine percur(iopt, m, x, y, w, k, s, nest, n, t, c, fp, wrk, lwrk, iwrk, ie
   do i = 1, m - 1
     if (x(i) >= x(i + 1) .or. w(i) <= 0) return
   end do
-  if (iopt < 0) then
-    if (n <= nmin .or. n > nest) return
-    call fp_periodic_given_knots(x, m, k, n, t, ier)
-    if (ier /= 0) return
-  else
-    if (s < 0) return
-    if (s == 0 .and. nest < m + 2*k) return
-    ier = 0
-  end if
+  call fp_periodic_knot_checks(iopt, x, m, k, s, nest, n, t, ier)
+  if (ier /= 0) return
   ifp = 1
   iz = ifp + nest
   ia1 = iz + nest
