@@ -33,11 +33,17 @@ module kinetostatics_joints
     procedure :: force => offset_force
   end type rigid_offset_t
 
-  !> K_out = K_in turned by q (rad) about `axis` (unit, input coordinates).
-  type, extends(element_t) :: revolute_t
+  !> What the revolute and the prismatic joint share: one joint variable and
+  !> an `axis` (unit, input coordinates; set by the constructor), n = the axis
+  !> in world coordinates at the last position.
+  type, abstract, extends(element_t) :: axis_joint_t
     integer :: frame_in = 0, frame_out = 0, variable = 0
-    real(wp) :: axis(3) = [0, 0, 1]
+    real(wp) :: axis(3) = 0
     real(wp) :: n(3) = 0
+  end type axis_joint_t
+
+  !> K_out = K_in turned by q (rad) about `axis`.
+  type, extends(axis_joint_t) :: revolute_t
   contains
     procedure :: position => revolute_position
     procedure :: velocity => revolute_velocity
@@ -45,11 +51,9 @@ module kinetostatics_joints
     procedure :: force => revolute_force
   end type revolute_t
 
-  !> K_out = K_in shifted by q (m) along `axis` (unit, input coordinates).
-  type, extends(element_t) :: prismatic_t
-    integer :: frame_in = 0, frame_out = 0, variable = 0
-    real(wp) :: axis(3) = [1, 0, 0]
-    real(wp) :: n(3) = 0, p(3) = 0
+  !> K_out = K_in shifted by q (m) along `axis`.
+  type, extends(axis_joint_t) :: prismatic_t
+    real(wp) :: p(3) = 0       ! world offset n q at the last position
   contains
     procedure :: position => prismatic_position
     procedure :: velocity => prismatic_velocity
@@ -90,11 +94,7 @@ contains
     integer, intent(in) :: frame_in, frame_out, variable
     real(wp), intent(in) :: axis(3)
     type(revolute_t) :: e
-    e%name = name
-    e%frame_in = frame_in
-    e%frame_out = frame_out
-    e%variable = variable
-    e%axis = axis/norm2(axis)
+    call set_axis_joint(e, name, frame_in, frame_out, variable, axis)
   end function new_revolute
 
   function new_prismatic(name, frame_in, frame_out, variable, axis) result(e)
@@ -102,12 +102,20 @@ contains
     integer, intent(in) :: frame_in, frame_out, variable
     real(wp), intent(in) :: axis(3)
     type(prismatic_t) :: e
+    call set_axis_joint(e, name, frame_in, frame_out, variable, axis)
+  end function new_prismatic
+
+  pure subroutine set_axis_joint(e, name, frame_in, frame_out, variable, axis)
+    class(axis_joint_t), intent(inout) :: e
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame_in, frame_out, variable
+    real(wp), intent(in) :: axis(3)
     e%name = name
     e%frame_in = frame_in
     e%frame_out = frame_out
     e%variable = variable
     e%axis = axis/norm2(axis)
-  end function new_prismatic
+  end subroutine set_axis_joint
 
   function new_spherical(name, frame_in, frame_out, variables) result(e)
     character(len=*), intent(in) :: name
@@ -143,7 +151,7 @@ contains
     end associate
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
       o%omega = i%omega
-      o%v = i%v + cross(i%omega, self%p)
+      o%v = carried_velocity(i, self%p)
     end associate
   end subroutine offset_velocity
 
@@ -155,7 +163,7 @@ contains
     end associate
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
       o%alpha = i%alpha
-      o%a = i%a + cross(i%alpha, self%p) + cross(i%omega, cross(i%omega, self%p))
+      o%a = carried_acceleration(i, self%p)
     end associate
   end subroutine offset_acceleration
 
@@ -167,10 +175,7 @@ contains
     real(wp) :: f(3), t(3)
     associate (unused => scalars, unused_i => inertia, unused_a => applied)
     end associate
-    f = frames(self%frame_out)%force
-    t = frames(self%frame_out)%torque
-    frames(self%frame_in)%force = frames(self%frame_in)%force + f
-    frames(self%frame_in)%torque = frames(self%frame_in)%torque + t + cross(self%p, f)
+    call pass_wrench_back(frames, self%frame_in, self%frame_out, f, t, self%p)
   end subroutine offset_force
 
   ! ---------------------------------------------------------------- revolute
@@ -196,7 +201,7 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
-      o%omega = i%omega + self%n*scalars(self%variable)%qd
+      o%omega = turned_omega(i%omega, self%n, scalars(self%variable)%qd)
       o%v = i%v
     end associate
   end subroutine revolute_velocity
@@ -206,7 +211,7 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     associate (i => frames(self%frame_in), o => frames(self%frame_out), s => scalars(self%variable))
-      o%alpha = i%alpha + self%n*s%qdd + cross(i%omega, self%n)*s%qd
+      o%alpha = turned_alpha(i%alpha, i%omega, self%n, s%qd, s%qdd)
       o%a = i%a
     end associate
   end subroutine revolute_acceleration
@@ -219,10 +224,7 @@ contains
     real(wp) :: f(3), t(3)
     associate (unused_i => inertia, unused_a => applied)
     end associate
-    f = frames(self%frame_out)%force
-    t = frames(self%frame_out)%torque
-    frames(self%frame_in)%force = frames(self%frame_in)%force + f
-    frames(self%frame_in)%torque = frames(self%frame_in)%torque + t
+    call pass_wrench_back(frames, self%frame_in, self%frame_out, f, t)
     scalars(self%variable)%force = scalars(self%variable)%force + dot_product(self%n, t)
   end subroutine revolute_force
 
@@ -249,7 +251,7 @@ contains
     type(scalar_state_t), intent(inout) :: scalars(:)
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
       o%omega = i%omega
-      o%v = i%v + cross(i%omega, self%p) + self%n*scalars(self%variable)%qd
+      o%v = carried_velocity(i, self%p) + self%n*scalars(self%variable)%qd
     end associate
   end subroutine prismatic_velocity
 
@@ -259,8 +261,7 @@ contains
     type(scalar_state_t), intent(inout) :: scalars(:)
     associate (i => frames(self%frame_in), o => frames(self%frame_out), s => scalars(self%variable))
       o%alpha = i%alpha
-      o%a = i%a + cross(i%alpha, self%p) + cross(i%omega, cross(i%omega, self%p)) &
-            + 2*cross(i%omega, self%n)*s%qd + self%n*s%qdd
+      o%a = carried_acceleration(i, self%p) + 2*cross(i%omega, self%n)*s%qd + self%n*s%qdd
     end associate
   end subroutine prismatic_acceleration
 
@@ -272,10 +273,7 @@ contains
     real(wp) :: f(3), t(3)
     associate (unused_i => inertia, unused_a => applied)
     end associate
-    f = frames(self%frame_out)%force
-    t = frames(self%frame_out)%torque
-    frames(self%frame_in)%force = frames(self%frame_in)%force + f
-    frames(self%frame_in)%torque = frames(self%frame_in)%torque + t + cross(self%p, f)
+    call pass_wrench_back(frames, self%frame_in, self%frame_out, f, t, self%p)
     scalars(self%variable)%force = scalars(self%variable)%force + dot_product(self%n, f)
   end subroutine prismatic_force
 
@@ -308,9 +306,9 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
-      self%w1 = i%omega + self%n(:, 1)*scalars(self%variables(1))%qd
-      self%w2 = self%w1 + self%n(:, 2)*scalars(self%variables(2))%qd
-      o%omega = self%w2 + self%n(:, 3)*scalars(self%variables(3))%qd
+      self%w1 = turned_omega(i%omega, self%n(:, 1), scalars(self%variables(1))%qd)
+      self%w2 = turned_omega(self%w1, self%n(:, 2), scalars(self%variables(2))%qd)
+      o%omega = turned_omega(self%w2, self%n(:, 3), scalars(self%variables(3))%qd)
       o%v = i%v
     end associate
   end subroutine spherical_velocity
@@ -320,18 +318,18 @@ contains
     class(spherical_t), intent(inout) :: self
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
-    real(wp) :: qd(3), qdd(3)
+    real(wp) :: qd(3), qdd(3), alpha1(3), alpha2(3)
     integer :: k
     do k = 1, 3
       qd(k) = scalars(self%variables(k))%qd
       qdd(k) = scalars(self%variables(k))%qdd
     end do
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
-      self%w1 = i%omega + self%n(:, 1)*qd(1)
-      self%w2 = self%w1 + self%n(:, 2)*qd(2)
-      o%alpha = i%alpha + self%n(:, 1)*qdd(1) + cross(i%omega, self%n(:, 1))*qd(1) &
-                + self%n(:, 2)*qdd(2) + cross(self%w1, self%n(:, 2))*qd(2) &
-                + self%n(:, 3)*qdd(3) + cross(self%w2, self%n(:, 3))*qd(3)
+      self%w1 = turned_omega(i%omega, self%n(:, 1), qd(1))
+      self%w2 = turned_omega(self%w1, self%n(:, 2), qd(2))
+      alpha1 = turned_alpha(i%alpha, i%omega, self%n(:, 1), qd(1), qdd(1))
+      alpha2 = turned_alpha(alpha1, self%w1, self%n(:, 2), qd(2), qdd(2))
+      o%alpha = turned_alpha(alpha2, self%w2, self%n(:, 3), qd(3), qdd(3))
       o%a = i%a
     end associate
   end subroutine spherical_acceleration
@@ -345,12 +343,60 @@ contains
     integer :: k
     associate (unused_i => inertia, unused_a => applied)
     end associate
-    f = frames(self%frame_out)%force
-    t = frames(self%frame_out)%torque
-    frames(self%frame_in)%force = frames(self%frame_in)%force + f
-    frames(self%frame_in)%torque = frames(self%frame_in)%torque + t
+    call pass_wrench_back(frames, self%frame_in, self%frame_out, f, t)
     do k = 1, 3
       scalars(self%variables(k))%force = scalars(self%variables(k))%force + dot_product(self%n(:, k), t)
     end do
   end subroutine spherical_force
+  ! ----------------------------------------------------------- shared pieces
+
+  !> Velocity of the point at world offset p from the origin of frame i,
+  !> carried rigidly with it: v_i + w_i x p (module header).
+  pure function carried_velocity(i, p) result(v)
+    type(frame_state_t), intent(in) :: i
+    real(wp), intent(in) :: p(3)
+    real(wp) :: v(3)
+    v = i%v + cross(i%omega, p)
+  end function carried_velocity
+
+  !> Its acceleration: a_i + al_i x p + w_i x (w_i x p).
+  pure function carried_acceleration(i, p) result(a)
+    type(frame_state_t), intent(in) :: i
+    real(wp), intent(in) :: p(3)
+    real(wp) :: a(3)
+    a = i%a + cross(i%alpha, p) + cross(i%omega, cross(i%omega, p))
+  end function carried_acceleration
+
+  !> Angular velocity after a turn at rate qd about the world axis n: w + n q'.
+  pure function turned_omega(omega, n, qd) result(w)
+    real(wp), intent(in) :: omega(3), n(3), qd
+    real(wp) :: w(3)
+    w = omega + n*qd
+  end function turned_omega
+
+  !> Angular acceleration after that turn, n carried by a frame turning with
+  !> omega: al + n q'' + (omega x n) q'.
+  pure function turned_alpha(alpha, omega, n, qd, qdd) result(al)
+    real(wp), intent(in) :: alpha(3), omega(3), n(3), qd, qdd
+    real(wp) :: al(3)
+    al = alpha + n*qdd + cross(omega, n)*qd
+  end function turned_alpha
+
+  !> The force back-map (3.6): f and t, the wrench on the output frame, are
+  !> added to the input frame, t about its origin, i.e. plus p x f when the
+  !> output origin sits at the world offset p from it.
+  pure subroutine pass_wrench_back(frames, frame_in, frame_out, f, t, p)
+    type(frame_state_t), intent(inout) :: frames(:)
+    integer, intent(in) :: frame_in, frame_out
+    real(wp), intent(out) :: f(3), t(3)
+    real(wp), intent(in), optional :: p(3)
+    f = frames(frame_out)%force
+    t = frames(frame_out)%torque
+    frames(frame_in)%force = frames(frame_in)%force + f
+    if (present(p)) then
+      frames(frame_in)%torque = frames(frame_in)%torque + t + cross(p, f)
+    else
+      frames(frame_in)%torque = frames(frame_in)%torque + t
+    end if
+  end subroutine pass_wrench_back
 end module kinetostatics_joints
