@@ -72,12 +72,9 @@ contains
       if (.not. status%ok()) return
       tube = new_tube_surface(centerline, horizon, section, built)
       if (built%ok()) call tube%check(check_samples, built)
-      if (.not. built%ok()) then
-        status = built
-        call prefix_status(status, input%name // ': &' // trim(merge('centerline    ', 'slide_elements', &
-                           gkind == 'tube')) // ' with &cross_section')
-        return
-      end if
+      call take_build_failure(input, trim(merge('centerline    ', 'slide_elements', gkind == 'tube')) // &
+                              ' with &cross_section', built, status)
+      if (.not. status%ok()) return
       allocate (surface, source=tube)
     case ('blended')
       call read_blended(input, surface, status)
@@ -103,9 +100,7 @@ contains
     end if
     kind = lower(adjustl(kind))
     call check_choice(input, 'geometry', 'kind', kind, geometry_kinds, status)
-    if (status%ok() .and. (check_samples < 10 .or. check_samples > 1000000)) &
-      call invalid(input, 'geometry', 'check_samples', format_integer(check_samples), &
-                   'must lie in [10, 1000000]', status)
+    call check_integer_in(input, 'geometry', 'check_samples', check_samples, 10, 1000000, status)
   end subroutine read_geometry_group
 
   !> &centerline: kind = 'line' | 'helix' | 'points', and the horizon field
@@ -247,11 +242,8 @@ contains
       else
         fitted = new_spline_centerline(points(:, 1:n_points), smoothing, degree, built)
       end if
-      if (.not. built%ok()) then
-        status = built
-        call prefix_status(status, input%name // ': &' // g)
-        return
-      end if
+      call take_build_failure(input, g, built, status)
+      if (.not. status%ok()) return
       allocate (curve, source=fitted)
       if (have_horizon_points) then
         ! the horizon field over the centerline's parameter (chord length of the points)
@@ -261,11 +253,8 @@ contains
         end do
         horizon_fit = new_spline_centerline(horizon_points(:, 1:n_points), 0.0_wp, min(degree, 5), built, &
                                             parameters=chord(1:n_points))
-        if (.not. built%ok()) then
-          status = built
-          call prefix_status(status, input%name // ': &' // g // ': horizon_points')
-          return
-        end if
+        call take_build_failure(input, g // ': horizon_points', built, status)
+        if (.not. status%ok()) return
         deallocate (horizon_out)
         allocate (horizon_out, source=horizon_fit)
       end if
@@ -305,12 +294,8 @@ contains
         'transition_length', 'centerline_kind', 'fit_spacing', 'smoothing', 'degree'], status)
       return
     end if
-    if (n_elements < 1 .or. n_elements > max_elements) then
-      call invalid(input, g, 'n_elements', format_integer(n_elements), 'must lie in [1, 40]', status)
-      return
-    end if
-    call check_list_length(input, g, 'n_elements', n_elements, 'kind', count_given_text(kind), 'elements', status)
-    lim = 'n_elements = ' // format_integer(n_elements)
+    call check_part_count(input, g, 'n_elements', n_elements, 1, max_elements, kind, 'elements', lim, status)
+    if (.not. status%ok()) return
     call check_at_most(input, g, 'direction', count_given_text(direction), n_elements, lim, status)
     call check_at_most(input, g, 'length', count_given(length), n_elements, lim, status)
     call check_at_most(input, g, 'slope_deg', count_given(slope_deg), n_elements, lim, status)
@@ -367,19 +352,13 @@ contains
     end do
     if (.not. status%ok()) return
     chain = new_element_chain(e(1:n_elements), start, heading_deg, transition_length, built)
-    if (.not. built%ok()) then
-      status = built
-      call prefix_status(status, input%name // ': &' // g)
-      return
-    end if
+    call take_build_failure(input, g, built, status)
+    if (.not. status%ok()) return
     if (centerline_kind == 'exact') then
       allocate (centerline, source=chain)
     else
       call fit_chain(chain, fit_spacing, smoothing, degree, centerline, built)
-      if (.not. built%ok()) then
-        status = built
-        call prefix_status(status, input%name // ': &' // g)
-      end if
+      call take_build_failure(input, g, built, status)
     end if
   end subroutine read_slide_elements
 
@@ -444,13 +423,9 @@ contains
         'n_profile', 'profile_y', 'profile_z', 'profile_smoothing', 'profile_degree'], status)
       return
     end if
-    if (n_sections < 1 .or. n_sections > max_sections) then
-      call invalid(input, g, 'n_sections', format_integer(n_sections), 'must lie in [1, 8]', status)
-      return
-    end if
     if (n_sections == 1 .and. count_given_text(kind) == 0) kind(1) = 'circle'
-    call check_list_length(input, g, 'n_sections', n_sections, 'kind', count_given_text(kind), 'sections', status)
-    lim = 'n_sections = ' // format_integer(n_sections)
+    call check_part_count(input, g, 'n_sections', n_sections, 1, max_sections, kind, 'sections', lim, status)
+    if (.not. status%ok()) return
     call check_at_most(input, g, 'radius', count_given(radius), n_sections, lim, status)
     call check_at_most(input, g, 'half_width', count_given(half_width), n_sections, lim, status)
     call check_at_most(input, g, 'half_height', count_given(half_height), n_sections, lim, status)
@@ -526,11 +501,8 @@ contains
         end if
         profile = new_profile_section(profile_y(1:n_profile), profile_z(1:n_profile), profile_smoothing, &
                                       profile_degree, built)
-        if (.not. built%ok()) then
-          status = built
-          call prefix_status(status, input%name // ': &' // g)
-          return
-        end if
+        call take_build_failure(input, g, built, status)
+        if (.not. status%ok()) return
         allocate (parts(i)%section, source=profile)
       end select
       if (.not. status%ok()) return
@@ -557,18 +529,12 @@ contains
       if (.not. status%ok()) return
       call centerline%parameter_at_length(transition_midpoint(i), u_mid(i), built)
       if (built%ok()) call centerline%parameter_at_length(transition_end(i), u_end(i), built)
-      if (.not. built%ok()) then
-        status = built
-        call prefix_status(status, input%name // ': &' // g)
-        return
-      end if
+      call take_build_failure(input, g, built, status)
+      if (.not. status%ok()) return
     end do
     blend = new_blended_section(parts(1:n_sections), u_mid(1:n_sections - 1), u_end(1:n_sections - 1), built)
-    if (.not. built%ok()) then
-      status = built
-      call prefix_status(status, input%name // ': &' // g)
-      return
-    end if
+    call take_build_failure(input, g, built, status)
+    if (.not. status%ok()) return
     allocate (section, source=blend)
   end subroutine read_cross_section
 
@@ -604,12 +570,8 @@ contains
         'u_99'], status)
       return
     end if
-    if (n_patches < 2 .or. n_patches > max_patches) then
-      call invalid(input, g, 'n_patches', format_integer(n_patches), 'must lie in [2, 8]', status)
-      return
-    end if
-    call check_list_length(input, g, 'n_patches', n_patches, 'kind', count_given_text(kind), 'patches', status)
-    lim = 'n_patches = ' // format_integer(n_patches)
+    call check_part_count(input, g, 'n_patches', n_patches, 2, max_patches, kind, 'patches', lim, status)
+    if (.not. status%ok()) return
     call check_at_most(input, g, 'a', count_given(a), n_patches, lim, status)
     call check_at_most(input, g, 'b', count_given(b), n_patches, lim, status)
     call check_at_most(input, g, 'c', count_given(c), n_patches, lim, status)
@@ -670,11 +632,8 @@ contains
     else
       blend = new_blended_surface(patches(1:n_patches), transition(1:n_patches - 1), built)
     end if
-    if (.not. built%ok()) then
-      status = built
-      call prefix_status(status, input%name // ': &' // g)
-      return
-    end if
+    call take_build_failure(input, g, built, status)
+    if (.not. status%ok()) return
     allocate (surface, source=blend)
   end subroutine read_blended
 
@@ -702,8 +661,7 @@ contains
     layout = lower(adjustl(layout))
     call check_choice(input, g, 'layout', layout, [character(len=10) :: 'scattered', 'grid', 'parametric'], status)
     call check_nonnegative(input, g, 'smoothing', smoothing, 'm^2 (sum of squared residuals)', status)
-    if (status%ok() .and. (degree < 1 .or. degree > 5)) &
-      call invalid(input, g, 'degree', format_integer(degree), 'must lie in [1, 5]', status)
+    call check_integer_in(input, g, 'degree', degree, 1, 5, status)
     if (status%ok() .and. layout /= 'parametric' .and. (periodic_u .or. periodic_v)) &
       call invalid(input, g, 'periodic_u, periodic_v', 'true', 'only a parametric surface can be periodic', status)
     if (.not. status%ok()) return
@@ -787,6 +745,44 @@ contains
     if (.not. status%ok() .or. given <= limit) return
     call invalid(input, g, list_name, format_integer(given) // ' values', 'more values than ' // what, status)
   end subroutine check_at_most
+
+  !> The count `count_name` = n of the parts of group g (elements, sections,
+  !> patches) must lie in [low, high] and equal the number of entries of its
+  !> `kind` list; `lim` ('n_elements = 3') then names the limit for check_at_most.
+  subroutine check_part_count(input, g, count_name, n, low, high, kind, what, lim, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: g, count_name, kind(:), what
+    integer, intent(in) :: n, low, high
+    character(len=:), allocatable, intent(out) :: lim
+    type(status_t), intent(inout) :: status
+    call check_integer_in(input, g, count_name, n, low, high, status)
+    if (.not. status%ok()) return
+    call check_list_length(input, g, count_name, n, 'kind', count_given_text(kind), what, status)
+    lim = count_name // ' = ' // format_integer(n)
+  end subroutine check_part_count
+
+  !> Integer `variable` = value of group g must lie in [low, high].
+  subroutine check_integer_in(input, g, variable, value, low, high, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: g, variable
+    integer, intent(in) :: value, low, high
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok() .or. (value >= low .and. value <= high)) return
+    call invalid(input, g, variable, format_integer(value), 'must lie in [' // format_integer(low) // ', ' // &
+                 format_integer(high) // ']', status)
+  end subroutine check_integer_in
+
+  !> A build step of group `place` failed (`built` not ok): its status,
+  !> prefixed with the file and '&' // place, becomes `status`.
+  subroutine take_build_failure(input, place, built, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: place
+    type(status_t), intent(in) :: built
+    type(status_t), intent(inout) :: status
+    if (built%ok()) return
+    status = built
+    call prefix_status(status, input%name // ': &' // place)
+  end subroutine take_build_failure
 
   !> 'points were' or, for one, 'point was' ('patches' -> 'patch').
   pure function noun(plural, k) result(text)
