@@ -3,7 +3,8 @@
 !> scripts/reference/fitpack_surfaces.py). First argument: the reference folder.
 program test_surfaces_grid
   use, intrinsic :: iso_fortran_env, only: real64
-  use fitpack_reference_io, only: reference_table_t, load_table, get_reals, get_int, get_real, has_key
+  use fitpack_reference_io, only: reference_table_t, load_table, get_reals, get_int, get_real, has_key, &
+    expect, expect_close_scaled, expect_coefficients, finish_checks
   use fitpack_surface_interfaces, only: regrid, bispev, parder, surfit
   implicit none (type, external)
   ! unique results (s = 0): the same linear system solved by the same rotations
@@ -16,71 +17,17 @@ program test_surfaces_grid
   ! the largest value of the same quantity.
   real(real64), parameter :: rtol_eval = 1.0e-12_real64
   character(len=1024) :: folder
-  integer :: failures = 0, checks = 0
   call get_command_argument(1, folder)
   if (len_trim(folder) == 0) folder = 'tests/reference/fitpack'
   call regrid_cases(trim(folder)//'/surfaces_regrid.txt')
   call eval_cases(trim(folder)//'/surfaces_eval.txt')
   call given_knots_and_continuation(trim(folder)//'/surfaces_regrid.txt')
   call storage_too_small(trim(folder)//'/surfaces_regrid.txt')
-  print '(a, i0, a, i0, a)', 'test_surfaces_grid: ', checks, ' checks, ', failures, ' failed'
-  if (failures > 0) error stop 1
+  call finish_checks('test_surfaces_grid')
 contains
-  subroutine check(cond, what)
-    logical, intent(in) :: cond
-    character(len=*), intent(in) :: what
-    checks = checks + 1
-    if (.not. cond) then
-      failures = failures + 1
-      print '(a)', 'FAIL: '//what
-    end if
-  end subroutine check
-
-  !> max |a - b| <= rtol * max |b| (+ atol)
-  subroutine check_array(a, b, rtol, atol, what)
-    real(real64), intent(in) :: a(:), b(:), rtol, atol
-    character(len=*), intent(in) :: what
-    real(real64) :: err, scale
-    checks = checks + 1
-    if (size(a) /= size(b)) then
-      failures = failures + 1
-      print '(a, 2(1x, i0))', 'FAIL: '//what//' sizes', size(a), size(b)
-      return
-    end if
-    if (size(a) == 0) return
-    err = maxval(abs(a - b))
-    scale = maxval(abs(b))
-    if (.not. (err <= rtol*scale + atol)) then
-      failures = failures + 1
-      print '(a, 2es12.3)', 'FAIL: '//what//' max error, scale', err, scale
-    end if
-  end subroutine check_array
 
 
-  !> Each coefficient relative to itself: |a(i) - b(i)| <= rtol |b(i)| + 64 epsilon max |b|.
-  !> The floor covers only coefficients at rounding level of the largest one (no
-  !> correct digits in either program); 64 ulps is what a few dozen rotations leave.
-  subroutine check_coefficients(a, b, rtol, what)
-    real(real64), intent(in) :: a(:), b(:), rtol
-    character(len=*), intent(in) :: what
-    real(real64) :: floor, excess(size(b))
-    integer :: worst
-    checks = checks + 1
-    if (size(a) /= size(b)) then
-      failures = failures + 1
-      print '(a, 2(1x, i0))', 'FAIL: '//what//' sizes', size(a), size(b)
-      return
-    end if
-    if (size(a) == 0) return
-    floor = 64*epsilon(1.0_real64)*maxval(abs(b))
-    excess = abs(a - b) - (rtol*abs(b) + floor)
-    worst = maxloc(excess, 1)
-    if (.not. all(excess <= 0)) then
-      failures = failures + 1
-      print '(a, i0, 3es24.16)', 'FAIL: '//what//' worst at ', worst, a(worst), b(worst), &
-        abs(a(worst) - b(worst))/abs(b(worst))
-    end if
-  end subroutine check_coefficients
+
   subroutine regrid_cases(path)
     character(len=*), intent(in) :: path
     type(reference_table_t) :: tab
@@ -92,7 +39,7 @@ contains
     integer, allocatable :: iwrk(:)
     character(len=:), allocatable :: name
     call load_table(path, tab, ok)
-    call check(ok, 'load '//path)
+    call expect(ok, 'load '//path)
     if (.not. ok) return
     do ic = 1, tab%n_cases
       name = trim(tab%case_names(ic))
@@ -115,24 +62,24 @@ contains
       tx = 0; ty = 0; c = 0
       call regrid(0, mx, x, my, y, z, bbox(1), bbox(2), bbox(3), bbox(4), kx, ky, s, nxest, nyest, &
         nx, tx, ny, ty, c, fp, wrk, lwrk, iwrk, kwrk, ier)
-      call check(ier == ier_ref, name//': ier')
+      call expect(ier == ier_ref, name//': ier')
       if (ier /= ier_ref) print '(a, 2(1x, i0))', '  ier got, expected', ier, ier_ref
       if (ier_ref /= 10 .and. ier == ier_ref) then
         call get_reals(tab, name, 'tx', tx_ref, found)
         call get_reals(tab, name, 'ty', ty_ref, found)
         call get_reals(tab, name, 'c', c_ref, found)
-        call check(nx == size(tx_ref) .and. ny == size(ty_ref), name//': number of knots')
+        call expect(nx == size(tx_ref) .and. ny == size(ty_ref), name//': number of knots')
         if (nx == size(tx_ref) .and. ny == size(ty_ref)) then
-          call check_array(tx(1:nx), tx_ref, rtol_knots, 0.0_real64, name//': tx')
-          call check_array(ty(1:ny), ty_ref, rtol_knots, 0.0_real64, name//': ty')
+          call expect_close_scaled(tx(1:nx), tx_ref, rtol_knots, 0.0_real64, name//': tx')
+          call expect_close_scaled(ty(1:ny), ty_ref, rtol_knots, 0.0_real64, name//': ty')
           nc = (nx - kx - 1)*(ny - ky - 1)
           rtol = merge(rtol_unique, rtol_smooth, s == 0)
           ! (regrid_maxit_b/c, ier = 3, take the p-iteration's one-sided steps:
           ! with exactly 0.04 instead of genuine's single-precision value they
           ! miss by 2.3e-7)
-          call check_coefficients(c(1:nc), c_ref, rtol, name//': c')
+          call expect_coefficients(c(1:nc), c_ref, rtol, name//': c')
           ! fp of an interpolant is 0 by definition; else relative
-          call check(abs(fp - fp_ref) <= rtol*abs(fp_ref), name//': fp')
+          call expect(abs(fp - fp_ref) <= rtol*abs(fp_ref), name//': fp')
           if (.not. abs(fp - fp_ref) <= rtol*abs(fp_ref)) print '(a, 2es24.16)', '  fp', fp, fp_ref
         else
           print '(a, 4(1x, i0))', '  nx, ny got / expected', nx, ny, size(tx_ref), size(ty_ref)
@@ -152,7 +99,7 @@ contains
     character(len=:), allocatable :: name
     character(len=8) :: key
     call load_table(path, tab, ok)
-    call check(ok, 'load '//path)
+    call expect(ok, 'load '//path)
     if (.not. ok) return
     do ic = 1, tab%n_cases
       name = trim(tab%case_names(ic))
@@ -169,32 +116,32 @@ contains
       kwrk = mx + my
       allocate (z(mx*my), wrk(lwrk), iwrk(kwrk))
       call bispev(tx, size(tx), ty, size(ty), c, kx, ky, x, mx, y, my, z, wrk, lwrk, iwrk, kwrk, ier)
-      call check(ier == 0, name//': bispev ier')
+      call expect(ier == 0, name//': bispev ier')
       call get_reals(tab, name, 'z', zr, found)
-      call check_array(z, zr, rtol_eval, 0.0_real64, name//': bispev')
+      call expect_close_scaled(z, zr, rtol_eval, 0.0_real64, name//': bispev')
       do nux = 0, kx - 1
         do nuy = 0, ky - 1
           write (key, '(a, i0, i0)') 'd', nux, nuy
           call parder(tx, size(tx), ty, size(ty), c, kx, ky, nux, nuy, x, mx, y, my, z, wrk, lwrk, &
             iwrk, kwrk, ier)
-          call check(ier == 0, name//': parder ier '//trim(key))
+          call expect(ier == 0, name//': parder ier '//trim(key))
           if (nux + nuy == 0) then
-            call check_array(z, zr, rtol_eval, 0.0_real64, name//': parder 00')
+            call expect_close_scaled(z, zr, rtol_eval, 0.0_real64, name//': parder 00')
           else
             call get_reals(tab, name, trim(key), zr, found)
-            call check(found, name//': has '//trim(key))
+            call expect(found, name//': has '//trim(key))
             ! differencing loses about a digit per order
-            call check_array(z, zr, rtol_eval*10.0_real64**(nux + nuy), 0.0_real64, name//': parder '//trim(key))
+            call expect_close_scaled(z, zr, rtol_eval*10.0_real64**(nux + nuy), 0.0_real64, name//': parder '//trim(key))
           end if
         end do
       end do
       ! invalid input: derivative order kx, decreasing points, small workspace
       call parder(tx, size(tx), ty, size(ty), c, kx, ky, kx, 0, x, mx, y, my, z, wrk, lwrk, iwrk, kwrk, ier)
-      call check(ier == 10, name//': parder nux = kx gives ier 10')
+      call expect(ier == 10, name//': parder nux = kx gives ier 10')
       call bispev(tx, size(tx), ty, size(ty), c, kx, ky, x(mx:1:-1), mx, y, my, z, wrk, lwrk, iwrk, kwrk, ier)
-      call check(ier == 10, name//': bispev decreasing x gives ier 10')
+      call expect(ier == 10, name//': bispev decreasing x gives ier 10')
       call bispev(tx, size(tx), ty, size(ty), c, kx, ky, x, mx, y, my, z, wrk, mx, iwrk, kwrk, ier)
-      call check(ier == 10, name//': bispev small lwrk gives ier 10')
+      call expect(ier == 10, name//': bispev small lwrk gives ier 10')
       deallocate (z, wrk, iwrk)
       if (.false.) print *, has_key(tab, name, 'x')
     end do
@@ -236,7 +183,7 @@ contains
     ty(1:ny) = ty_ref
     call regrid(-1, mx, x, my, y, z, bbox(1), bbox(2), bbox(3), bbox(4), 3, 3, 0.0_real64, nxest, nyest, &
       nx, tx, ny, ty, c, fp, wrk, lwrk, iwrk, kwrk, ier)
-    call check(ier == 0, 'regrid iopt=-1: ier')
+    call expect(ier == 0, 'regrid iopt=-1: ier')
     m = mx*my
     allocate (xs(m), ys(m), w(m))
     do i = 1, mx
@@ -259,25 +206,25 @@ contains
     allocate (wrk1(lwrk1), wrk2(lwrk2), iwrk2(m + 1000))
     call surfit(-1, m, xs, ys, z, w, bbox(1), bbox(2), bbox(3), bbox(4), 3, 3, 0.0_real64, nx, ny, nmax, &
       1.0e-16_real64, nx2, tx2, ny2, ty2, c2, fp2, wrk1, lwrk1, wrk2, lwrk2, iwrk2, m + 1000, ier)
-    call check(ier == 0, 'surfit iopt=-1 on the grid points: ier')
+    call expect(ier == 0, 'surfit iopt=-1 on the grid points: ier')
     nc = (nx - 4)*(ny - 4)
     ! one unique least-squares solution by two rotation orders: rounding, 1e-10
-    call check_array(c(1:nc), c2(1:nc), 1.0e-10_real64, 0.0_real64, 'regrid iopt=-1 equals surfit iopt=-1')
-    call check(abs(fp - fp2) <= 1.0e-10_real64*fp2, 'regrid iopt=-1: fp equals surfit''s')
+    call expect_close_scaled(c(1:nc), c2(1:nc), 1.0e-10_real64, 0.0_real64, 'regrid iopt=-1 equals surfit iopt=-1')
+    call expect(abs(fp - fp2) <= 1.0e-10_real64*fp2, 'regrid iopt=-1: fp equals surfit''s')
     ! continuation
     s1 = 0.1_real64
     s2 = 0.03_real64
     call regrid(0, mx, x, my, y, z, bbox(1), bbox(2), bbox(3), bbox(4), 3, 3, s1, nxest, nyest, &
       nx, tx, ny, ty, c, fp, wrk, lwrk, iwrk, kwrk, ier)
-    call check(ier == 0 .and. abs(fp - s1) < 1.0e-3_real64*s1, 'regrid s1: fp = s1')
+    call expect(ier == 0 .and. abs(fp - s1) < 1.0e-3_real64*s1, 'regrid s1: fp = s1')
     tx_first = tx(1:nx)
     nx2 = nx
     ny2 = ny
     call regrid(1, mx, x, my, y, z, bbox(1), bbox(2), bbox(3), bbox(4), 3, 3, s2, nxest, nyest, &
       nx, tx, ny, ty, c, fp, wrk, lwrk, iwrk, kwrk, ier)
-    call check(ier == 0 .and. abs(fp - s2) < 1.0e-3_real64*s2, 'regrid iopt=1 to s2: fp = s2')
-    call check(nx >= nx2 .and. ny >= ny2, 'regrid iopt=1: no knots lost')
-    call check(all([(any(abs(tx(1:nx) - tx_first(i)) == 0), i = 1, nx2)]), 'regrid iopt=1: old x knots kept')
+    call expect(ier == 0 .and. abs(fp - s2) < 1.0e-3_real64*s2, 'regrid iopt=1 to s2: fp = s2')
+    call expect(nx >= nx2 .and. ny >= ny2, 'regrid iopt=1: no knots lost')
+    call expect(all([(any(abs(tx(1:nx) - tx_first(i)) == 0), i = 1, nx2)]), 'regrid iopt=1: old x knots kept')
   end subroutine given_knots_and_continuation
   !> regrid ier = 1, which scipy 1.10.1 cannot reach (regrid_smth and
   !> RectBivariateSpline fix nxest = mx+kx+1, nyest = my+ky+1): on the data of
@@ -309,8 +256,8 @@ contains
     allocate (tx(nest), ty(nest), c((nest - 4)**2), wrk(lwrk), iwrk(kwrk), tx2(nest), ty2(nest), c2((nest - 4)**2))
     call regrid(0, mx, x, my, y, z, bbox(1), bbox(2), bbox(3), bbox(4), 3, 3, s, nest, nest, &
       nx, tx, ny, ty, c, fp, wrk, lwrk, iwrk, kwrk, ier)
-    call check(ier == 1, 'regrid nxest, nyest too small: ier 1')
-    call check(nx == nest .and. ny == nest .and. fp > s, 'regrid ier 1: storage full, fp > s')
+    call expect(ier == 1, 'regrid nxest, nyest too small: ier 1')
+    call expect(nx == nest .and. ny == nest .and. fp > s, 'regrid ier 1: storage full, fp > s')
     if (nx /= nest .or. ny /= nest) return
     tx2 = tx
     ty2 = ty
@@ -318,10 +265,10 @@ contains
     ny2 = ny
     call regrid(-1, mx, x, my, y, z, bbox(1), bbox(2), bbox(3), bbox(4), 3, 3, s, nest, nest, &
       nx2, tx2, ny2, ty2, c2, fp2, wrk, lwrk, iwrk, kwrk, ier)
-    call check(ier == 0, 'regrid ier 1: iopt=-1 on its knots: ier')
+    call expect(ier == 0, 'regrid ier 1: iopt=-1 on its knots: ier')
     nc = (nx - 4)*(ny - 4)
     ! the same least-squares system solved twice by the same code: rounding only
-    call check_coefficients(c(1:nc), c2(1:nc), 1.0e-12_real64, 'regrid ier 1 = least squares on its knots: c')
-    call check(abs(fp - fp2) <= 1.0e-12_real64*fp2, 'regrid ier 1 = least squares on its knots: fp')
+    call expect_coefficients(c(1:nc), c2(1:nc), 1.0e-12_real64, 'regrid ier 1 = least squares on its knots: c')
+    call expect(abs(fp - fp2) <= 1.0e-12_real64*fp2, 'regrid ier 1 = least squares on its knots: fp')
   end subroutine storage_too_small
 end program test_surfaces_grid

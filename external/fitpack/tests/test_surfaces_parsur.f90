@@ -11,11 +11,11 @@
 program test_surfaces_parsur
   use, intrinsic :: iso_fortran_env, only: real64
   use fitpack_surface_interfaces, only: parsur, surev, regrid, bispev, parder
+  use fitpack_reference_io, only: expect, expect_close_scaled, expect_coefficients, finish_checks
   implicit none (type, external)
   real(real64), parameter :: pi = acos(-1.0_real64)
   ! same algorithm, dense instead of banded rotations: rounding only
   real(real64), parameter :: rtol_same = 1.0e-10_real64
-  integer :: failures = 0, checks = 0
   call against_regrid(0.0_real64)
   call against_regrid(0.02_real64)
   call three_coordinates()
@@ -23,39 +23,10 @@ program test_surfaces_parsur
   call periodic_tube(0.05_real64)
   call periodic_torus()
   call invalid()
-  print '(a, i0, a, i0, a)', 'test_surfaces_parsur: ', checks, ' checks, ', failures, ' failed'
-  if (failures > 0) error stop 1
+  call finish_checks('test_surfaces_parsur')
 contains
-  subroutine check(cond, what)
-    logical, intent(in) :: cond
-    character(len=*), intent(in) :: what
-    checks = checks + 1
-    if (.not. cond) then
-      failures = failures + 1
-      print '(a)', 'FAIL: '//what
-    end if
-  end subroutine check
 
-  logical function close_rel(a, b, rtol)
-    real(real64), intent(in) :: a(:), b(:), rtol
-    close_rel = size(a) == size(b)
-    if (close_rel .and. size(a) > 0) close_rel = maxval(abs(a - b)) <= rtol*maxval(abs(b))
-    if (.not. close_rel .and. size(a) == size(b)) print '(a, 2es12.3)', '  max error, scale', &
-      maxval(abs(a - b)), maxval(abs(b))
-  end function close_rel
 
-  !> Each coefficient relative to itself, |a(i) - b(i)| <= rtol |b(i)| + 64 epsilon max |b|:
-  !> the floor only covers coefficients at rounding level of the largest one.
-  logical function close_coef(a, b, rtol)
-    real(real64), intent(in) :: a(:), b(:), rtol
-    real(real64) :: floor
-    close_coef = size(a) == size(b)
-    if (.not. close_coef .or. size(a) == 0) return
-    floor = 64*epsilon(1.0_real64)*maxval(abs(b))
-    close_coef = all(abs(a - b) <= rtol*abs(b) + floor)
-    if (.not. close_coef) print '(a, es12.3)', '  worst relative error', &
-      maxval(abs(a - b)/max(abs(b), tiny(1.0_real64)))
-  end function close_coef
 
   subroutine grid(mu, mv, u, v)
     integer, intent(in) :: mu, mv
@@ -99,15 +70,15 @@ contains
     allocate (tx(nuest), ty(nvest), cr((nuest - 4)*(nvest - 4)), wr(lwr), iwr(kwr))
     call regrid(0, mu, u, mv, v, f, u(1), u(mu), v(1), v(mv), 3, 3, s, nuest, nvest, nx, tx, ny, ty, cr, &
       fpr, wr, lwr, iwr, kwr, ierr)
-    call check(ier == ierr, trim(tag)//': ier')
-    call check(nu == nx .and. nv == ny, trim(tag)//': number of knots')
+    call expect(ier == ierr, trim(tag)//': ier')
+    call expect(nu == nx .and. nv == ny, trim(tag)//': number of knots')
     if (nu /= nx .or. nv /= ny) return
-    call check(close_rel(tu(1:nu), tx(1:nx), 1.0e-14_real64), trim(tag)//': u knots')
-    call check(close_rel(tv(1:nv), ty(1:ny), 1.0e-14_real64), trim(tag)//': v knots')
-    call check(close_coef(c(1:(nu - 4)*(nv - 4)), cr(1:(nu - 4)*(nv - 4)), rtol_same), trim(tag)//': coefficients')
-    call check(abs(fp - fpr) <= rtol_same*max(fpr, 1.0e-300_real64) .or. (fp == 0 .and. fpr == 0), &
+    call expect_close_scaled(tu(1:nu), tx(1:nx), 1.0e-14_real64, 0.0_real64, trim(tag)//': u knots')
+    call expect_close_scaled(tv(1:nv), ty(1:ny), 1.0e-14_real64, 0.0_real64, trim(tag)//': v knots')
+    call expect_coefficients(c(1:(nu - 4)*(nv - 4)), cr(1:(nu - 4)*(nv - 4)), rtol_same, trim(tag)//': coefficients')
+    call expect(abs(fp - fpr) <= rtol_same*max(fpr, 1.0e-300_real64) .or. (fp == 0 .and. fpr == 0), &
       trim(tag)//': fp')
-    if (s > 0) call check(abs(fp - s) <= 1.0e-3_real64*s, trim(tag)//': |fp - s| < 0.001 s')
+    if (s > 0) call expect(abs(fp - s) <= 1.0e-3_real64*s, trim(tag)//': |fp - s| < 0.001 s')
   end subroutine against_regrid
 
   subroutine three_coordinates()
@@ -133,23 +104,23 @@ contains
     allocate (tu(nuest), tv(nvest), c(3*(nuest - 4)*(nvest - 4)), wrk(lwrk), iwrk(kwrk))
     call parsur(0, [0, 0], 3, mu, u, mv, v, f, 0.0_real64, nuest, nvest, nu, tu, nv, tv, c, fp, wrk, lwrk, &
       iwrk, kwrk, ier)
-    call check(ier == -1, '3-D s=0: ier = -1')
+    call expect(ier == -1, '3-D s=0: ier = -1')
     nc = (nu - 4)*(nv - 4)
     allocate (fe(3*mu*mv))
     call surev(3, tu, nu, tv, nv, c, u, mu, v, mv, fe, 3*mu*mv, wrk, lwrk, iwrk, kwrk, ier)
-    call check(ier == 0, '3-D: surev ier')
+    call expect(ier == 0, '3-D: surev ier')
     ! interpolation: the data back to rounding of the solve
-    call check(close_rel(fe, f, 1.0e-12_real64), '3-D s=0: surev interpolates the data')
+    call expect_close_scaled(fe, f, 1.0e-12_real64, 0.0_real64, '3-D s=0: surev interpolates the data')
     lwr = 4 + nuest*(mv + 11) + nvest*11 + mu*4 + mv*4 + max(mv, nuest)
     kwr = 3 + mu + mv + nuest + nvest
     allocate (tx(nuest), ty(nvest), cr(nc), wr(lwr), iwr(kwr), z(mu*mv))
     do l = 1, 3
       call regrid(0, mu, u, mv, v, f(mu*mv*(l - 1) + 1:mu*mv*l), u(1), u(mu), v(1), v(mv), 3, 3, 0.0_real64, &
         nuest, nvest, nx, tx, ny, ty, cr, fpr, wr, lwr, iwr, kwr, ierr)
-      call check(nx == nu .and. ny == nv, '3-D: regrid knots per coordinate')
-      call check(close_coef(c(nc*(l - 1) + 1:nc*l), cr(1:nc), rtol_same), '3-D: coordinate equals regrid')
+      call expect(nx == nu .and. ny == nv, '3-D: regrid knots per coordinate')
+      call expect_coefficients(c(nc*(l - 1) + 1:nc*l), cr(1:nc), rtol_same, '3-D: coordinate equals regrid')
       call bispev(tu, nu, tv, nv, c(nc*(l - 1) + 1:nc*l), 3, 3, u, mu, v, mv, z, wr, lwr, iwr, kwr, ierr)
-      call check(close_rel(fe(mu*mv*(l - 1) + 1:mu*mv*l), z, 1.0e-14_real64), '3-D: surev equals bispev')
+      call expect_close_scaled(fe(mu*mv*(l - 1) + 1:mu*mv*l), z, 1.0e-14_real64, 0.0_real64, '3-D: surev equals bispev')
     end do
   end subroutine three_coordinates
 
@@ -181,15 +152,15 @@ contains
     allocate (tu(nuest), tv(nvest), c(3*(nuest - 4)*(nvest - 4)), wrk(lwrk), iwrk(kwrk), fe(3*mu*mv))
     call parsur(0, [1, 0], 3, mu, u, mv, v, f, s, nuest, nvest, nu, tu, nv, tv, c, fp, wrk, lwrk, iwrk, &
       kwrk, ier)
-    call check(ier <= 0, trim(tag)//': ier <= 0')
+    call expect(ier <= 0, trim(tag)//': ier <= 0')
     if (s == 0) then
-      call check(ier == -1, trim(tag)//': interpolating (ier = -1)')
+      call expect(ier == -1, trim(tag)//': interpolating (ier = -1)')
       call surev(3, tu, nu, tv, nv, c, u, mu, v, mv, fe, 3*mu*mv, wrk, lwrk, iwrk, kwrk, ier)
       ! the data of line u(mu) were averaged with line u(1): compare lines 1..mu-1
-      call check(close_rel(pack(fe, mask_lines(mu, mv)), pack(f, mask_lines(mu, mv)), 1.0e-12_real64), &
+      call expect_close_scaled(pack(fe, mask_lines(mu, mv)), pack(f, mask_lines(mu, mv)), 1.0e-12_real64, 0.0_real64, &
         trim(tag)//': interpolates')
     else
-      call check(abs(fp - s) <= 1.0e-3_real64*s .or. ier == -2, trim(tag)//': |fp - s| < 0.001 s')
+      call expect(abs(fp - s) <= 1.0e-3_real64*s .or. ier == -2, trim(tag)//': |fp - s| < 0.001 s')
     end if
     call seam_check(tu, nu, tv, nv, c, 1, trim(tag))
   end subroutine periodic_tube
@@ -221,8 +192,8 @@ contains
     allocate (tu(nuest), tv(nvest), c(3*(nuest - 4)*(nvest - 4)), wrk(lwrk), iwrk(kwrk))
     call parsur(0, [1, 1], 3, mu, u, mv, v, f, s, nuest, nvest, nu, tu, nv, tv, c, fp, wrk, lwrk, iwrk, &
       kwrk, ier)
-    call check(ier <= 0, 'torus: ier <= 0')
-    call check(abs(fp - s) <= 1.0e-3_real64*s, 'torus: |fp - s| < 0.001 s')
+    call expect(ier <= 0, 'torus: ier <= 0')
+    call expect(abs(fp - s) <= 1.0e-3_real64*s, 'torus: |fp - s| < 0.001 s')
     call seam_check(tu, nu, tv, nv, c, 1, 'torus u')
     call seam_check(tu, nu, tv, nv, c, 2, 'torus v')
     ! continuation (iopt = 1) to a smaller s keeps the knots and reaches it
@@ -230,8 +201,8 @@ contains
     j = nv
     call parsur(1, [1, 1], 3, mu, u, mv, v, f, s/2, nuest, nvest, nu, tu, nv, tv, c, fp, wrk, lwrk, iwrk, &
       kwrk, ier)
-    call check(ier <= 0 .and. abs(fp - s/2) <= 1.0e-3_real64*s/2, 'torus iopt=1: |fp - s| < 0.001 s')
-    call check(nu >= i .and. nv >= j, 'torus iopt=1: no knots lost')
+    call expect(ier <= 0 .and. abs(fp - s/2) <= 1.0e-3_real64*s/2, 'torus iopt=1: |fp - s| < 0.001 s')
+    call expect(nu >= i .and. nv >= j, 'torus iopt=1: no knots lost')
     call seam_check(tu, nu, tv, nv, c, 1, 'torus iopt=1 u')
   end subroutine periodic_torus
 
@@ -281,9 +252,9 @@ contains
             4000, iw, 20, ier2)
         end if
         write (what, '(a, i0, a, i0)') 'l', l, ' d', nd
-        call check(ier == 0 .and. ier2 == 0, tag//': parder at the seam '//trim(what))
+        call expect(ier == 0 .and. ier2 == 0, tag//': parder at the seam '//trim(what))
         scale = max(maxval(abs(a)), 1.0_real64)
-        call check(maxval(abs(a - b)) <= 1.0e-9_real64*scale, tag//': C2 across the seam '//trim(what))
+        call expect(maxval(abs(a - b)) <= 1.0e-9_real64*scale, tag//': C2 across the seam '//trim(what))
       end do
     end do
   end subroutine seam_check
@@ -295,20 +266,20 @@ contains
     v = u
     f = 1
     call parsur(0, [0, 0], 4, 5, u, 5, v, f, 0.1_real64, 20, 20, nu, tu, nv, tv, c, fp, wrk, 2000, iwrk, 100, ier)
-    call check(ier == 10, 'parsur idim = 4 gives ier 10')
+    call expect(ier == 10, 'parsur idim = 4 gives ier 10')
     call parsur(0, [0, 2], 3, 5, u, 5, v, f, 0.1_real64, 20, 20, nu, tu, nv, tv, c, fp, wrk, 2000, iwrk, 100, ier)
-    call check(ier == 10, 'parsur ipar = 2 gives ier 10')
+    call expect(ier == 10, 'parsur ipar = 2 gives ier 10')
     call parsur(0, [0, 0], 3, 5, u, 5, v, f, -1.0_real64, 20, 20, nu, tu, nv, tv, c, fp, wrk, 2000, iwrk, 100, ier)
-    call check(ier == 10, 'parsur s < 0 gives ier 10')
+    call expect(ier == 10, 'parsur s < 0 gives ier 10')
     call parsur(0, [0, 0], 3, 5, u(5:1:-1), 5, v, f, 0.1_real64, 20, 20, nu, tu, nv, tv, c, fp, wrk, 2000, iwrk, &
       100, ier)
-    call check(ier == 10, 'parsur decreasing u gives ier 10')
+    call expect(ier == 10, 'parsur decreasing u gives ier 10')
     call parsur(0, [0, 0], 3, 5, u, 5, v, f, 0.0_real64, 8, 20, nu, tu, nv, tv, c, fp, wrk, 2000, iwrk, 100, ier)
-    call check(ier == 10, 'parsur s = 0 with nuest < mu+4 gives ier 10')
+    call expect(ier == 10, 'parsur s = 0 with nuest < mu+4 gives ier 10')
     tu(1:9) = [1, 1, 1, 1, 3, 5, 5, 5, 5]
     call surev(3, tu, 9, tu, 9, c, u, 5, v, 5, fe, 74, wrk, 2000, iwrk, 100, ier)
-    call check(ier == 10, 'surev mf too small gives ier 10')
+    call expect(ier == 10, 'surev mf too small gives ier 10')
     call surev(3, tu, 9, tu, 9, c, u(5:1:-1), 5, v, 5, fe, 75, wrk, 2000, iwrk, 100, ier)
-    call check(ier == 10, 'surev decreasing u gives ier 10')
+    call expect(ier == 10, 'surev decreasing u gives ier 10')
   end subroutine invalid
 end program test_surfaces_parsur

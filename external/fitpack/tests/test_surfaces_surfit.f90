@@ -6,7 +6,8 @@
 !> First argument: the reference folder.
 program test_surfaces_surfit
   use, intrinsic :: iso_fortran_env, only: real64
-  use fitpack_reference_io, only: reference_table_t, load_table, get_reals, get_int, get_real, has_key
+  use fitpack_reference_io, only: reference_table_t, load_table, get_reals, get_int, get_real, has_key, &
+    expect, expect_close_scaled, expect_coefficients, finish_checks
   use fitpack_surface_interfaces, only: surfit, bispev
   implicit none (type, external)
   ! unique results (given knots, or s = 0): the same system by rotations in
@@ -16,68 +17,14 @@ program test_surfaces_surfit
   ! coefficients and fp come from the p-iteration, 1e-8 (issue 3).
   real(real64), parameter :: rtol_knots = 1.0e-12_real64, rtol_smooth = 1.0e-8_real64
   character(len=1024) :: folder
-  integer :: failures = 0, checks = 0
   call get_command_argument(1, folder)
   if (len_trim(folder) == 0) folder = 'tests/reference/fitpack'
   call surfit_cases(trim(folder)//'/surfaces_surfit.txt')
-  print '(a, i0, a, i0, a)', 'test_surfaces_surfit: ', checks, ' checks, ', failures, ' failed'
-  if (failures > 0) error stop 1
+  call finish_checks('test_surfaces_surfit')
 contains
-  subroutine check(cond, what)
-    logical, intent(in) :: cond
-    character(len=*), intent(in) :: what
-    checks = checks + 1
-    if (.not. cond) then
-      failures = failures + 1
-      print '(a)', 'FAIL: '//what
-    end if
-  end subroutine check
-
-  !> max |a - b| <= rtol * max |b|
-  subroutine check_array(a, b, rtol, what)
-    real(real64), intent(in) :: a(:), b(:), rtol
-    character(len=*), intent(in) :: what
-    real(real64) :: err, scale
-    checks = checks + 1
-    if (size(a) /= size(b)) then
-      failures = failures + 1
-      print '(a, 2(1x, i0))', 'FAIL: '//what//' sizes', size(a), size(b)
-      return
-    end if
-    if (size(a) == 0) return
-    err = maxval(abs(a - b))
-    scale = maxval(abs(b))
-    if (.not. (err <= rtol*scale)) then
-      failures = failures + 1
-      print '(a, 2es12.3)', 'FAIL: '//what//' max error, scale', err, scale
-    end if
-  end subroutine check_array
 
 
-  !> Each coefficient relative to itself: |a(i) - b(i)| <= rtol |b(i)| + 64 epsilon max |b|.
-  !> The floor covers only coefficients at rounding level of the largest one (no
-  !> correct digits in either program); 64 ulps is what a few dozen rotations leave.
-  subroutine check_coefficients(a, b, rtol, what)
-    real(real64), intent(in) :: a(:), b(:), rtol
-    character(len=*), intent(in) :: what
-    real(real64) :: floor, excess(size(b))
-    integer :: worst
-    checks = checks + 1
-    if (size(a) /= size(b)) then
-      failures = failures + 1
-      print '(a, 2(1x, i0))', 'FAIL: '//what//' sizes', size(a), size(b)
-      return
-    end if
-    if (size(a) == 0) return
-    floor = 64*epsilon(1.0_real64)*maxval(abs(b))
-    excess = abs(a - b) - (rtol*abs(b) + floor)
-    worst = maxloc(excess, 1)
-    if (.not. all(excess <= 0)) then
-      failures = failures + 1
-      print '(a, i0, 3es24.16)', 'FAIL: '//what//' worst at ', worst, a(worst), b(worst), &
-        abs(a(worst) - b(worst))/abs(b(worst))
-    end if
-  end subroutine check_coefficients
+
   subroutine surfit_cases(path)
     character(len=*), intent(in) :: path
     type(reference_table_t) :: tab
@@ -90,7 +37,7 @@ contains
     integer, allocatable :: iwrk(:)
     character(len=:), allocatable :: name
     call load_table(path, tab, ok)
-    call check(ok, 'load '//path)
+    call expect(ok, 'load '//path)
     if (.not. ok) return
     do ic = 1, tab%n_cases
       name = trim(tab%case_names(ic))
@@ -144,26 +91,26 @@ contains
         call get_real(tab, name, 's_first', s_first, found)
         call surfit(0, m, x, y, z, w, bbox(1), bbox(2), bbox(3), bbox(4), kx, ky, s_first, nxest, nyest, nmax, &
           eps, nx, tx, ny, ty, c, fp, wrk1, lwrk1, wrk2, lwrk2, iwrk, kwrk, ier)
-        call check(ier <= 0, name//': first fit')
+        call expect(ier <= 0, name//': first fit')
       end if
       call surfit(iopt, m, x, y, z, w, bbox(1), bbox(2), bbox(3), bbox(4), kx, ky, s, nxest, nyest, nmax, &
         eps, nx, tx, ny, ty, c, fp, wrk1, lwrk1, wrk2, lwrk2, iwrk, kwrk, ier)
-      call check(ier == ier_ref, name//': ier')
+      call expect(ier == ier_ref, name//': ier')
       if (ier /= ier_ref) print '(a, 2(1x, i0))', '  ier got, expected', ier, ier_ref
       if (ier_ref /= 10) then
-        call check(nx == size(tx_ref) .and. ny == size(ty_ref), name//': number of knots')
+        call expect(nx == size(tx_ref) .and. ny == size(ty_ref), name//': number of knots')
         if (nx == size(tx_ref) .and. ny == size(ty_ref)) then
-          call check_array(tx(1:nx), tx_ref, rtol_knots, name//': tx')
-          call check_array(ty(1:ny), ty_ref, rtol_knots, name//': ty')
+          call expect_close_scaled(tx(1:nx), tx_ref, rtol_knots, 0.0_real64, name//': tx')
+          call expect_close_scaled(ty(1:ny), ty_ref, rtol_knots, 0.0_real64, name//': ty')
           nc = (nx - kx - 1)*(ny - ky - 1)
           rtol = merge(rtol_unique, rtol_smooth, iopt == -1 .or. s == 0)
-          call check_coefficients(c(1:nc), c_ref, rtol, name//': c')
+          call expect_coefficients(c(1:nc), c_ref, rtol, name//': c')
           ! fp to the same relative tolerance as the coefficients, rank-deficient
           ! cases included (an exact zero fp of an interpolant must come out zero).
           ! Rank-deficient fp includes, per dropped row, the change of its squared
           ! residual when its small diagonal is restored (fprank): leaving that term
           ! out moves fp of surfit_cluster_rank by 1.2e-5 relative, which this catches.
-          call check(abs(fp - fp_ref) <= rtol*abs(fp_ref), name//': fp')
+          call expect(abs(fp - fp_ref) <= rtol*abs(fp_ref), name//': fp')
           if (.not. abs(fp - fp_ref) <= rtol*abs(fp_ref)) print '(a, 2es24.16)', '  fp', fp, fp_ref
         else
           print '(a, 4(1x, i0))', '  nx, ny got / expected', nx, ny, size(tx_ref), size(ty_ref)

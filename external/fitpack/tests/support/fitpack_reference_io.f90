@@ -11,7 +11,8 @@ module fitpack_reference_io
   implicit none (type, external)
   private
   public :: reference_table_t, load_table, get_reals, get_int, get_real, has_key
-  public :: reference_path, expect, expect_close, expect_close_array, expect_coefficients, finish_checks
+  public :: reference_path, expect, expect_close, expect_close_array, expect_close_scaled, &
+            expect_coefficients, finish_checks
 
   type :: entry_t
     integer :: case_index = 0
@@ -217,6 +218,17 @@ contains
         '  expected ', ref(worst), '  diff ', x(worst) - ref(worst)
     end if
   end subroutine expect_close_array
+
+  !> max |x - ref| <= rtol max |ref| + atol: for quantities whose small entries
+  !> carry no digits of their own (knots near zero, values of one evaluation).
+  subroutine expect_close_scaled(x, ref, rtol, atol, what)
+    real(real64), intent(in) :: x(:), ref(:), rtol, atol
+    character(len=*), intent(in) :: what
+    real(real64) :: scale
+    scale = 0
+    if (size(ref) > 0) scale = maxval(abs(ref))
+    call expect_close_array(x, ref, 0.0_real64, rtol*scale + atol, what)
+  end subroutine expect_close_scaled
 
   !> Coefficients against the genuine ones, each relative to itself:
   !> |x(i) - ref(i)| <= rtol |ref(i)| + 64 epsilon max |ref|. The floor covers only
