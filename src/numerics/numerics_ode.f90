@@ -275,7 +275,10 @@ contains
   !> Integrates toward t_out. Returns the time reached `t` (t_out unless a root
   !> or the stop time came first, or on failure the last time reached) and y(t).
   !> root_index(i) is +1/-1 when root function i crossed zero rising/falling at t.
-  subroutine ode_advance(self, t_out, t, y, status, root_found, root_index)
+  !> With `work_limit_reached` present, CVODE's max_steps limit is not a
+  !> failure: the call returns at the time reached with the flag set, and the
+  !> caller may call again toward the same t_out (the driver works in chunks).
+  subroutine ode_advance(self, t_out, t, y, status, root_found, root_index, work_limit_reached)
     class(ode_integrator_t), intent(inout) :: self
     real(wp), intent(in) :: t_out
     real(wp), intent(out) :: t
@@ -283,11 +286,13 @@ contains
     type(status_t), intent(out) :: status
     logical, intent(out), optional :: root_found
     integer, intent(out), optional :: root_index(:)
+    logical, intent(out), optional :: work_limit_reached
     integer(c_int) :: flag
     real(c_double) :: t_reached(1)
     real(c_double), pointer :: v(:)
 
     if (present(root_found)) root_found = .false.
+    if (present(work_limit_reached)) work_limit_reached = .false.
     if (present(root_index)) root_index = 0
     t = self%t
     if (.not. c_associated(self%cvode)) then
@@ -316,6 +321,10 @@ contains
     self%link%recoverable_status%code = STATUS_OK
     self%link%cvode_message = ''
     flag = FCVode(self%cvode, t_out, self%y, t_reached, CV_NORMAL)
+    if (flag == CV_TOO_MUCH_WORK .and. present(work_limit_reached)) then
+      work_limit_reached = .true.
+      flag = CV_SUCCESS
+    end if
     call cvode_status(flag, 'CVode', t_reached(1), self%link, status)
 
     self%t = t_reached(1)
