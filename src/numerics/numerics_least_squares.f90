@@ -27,6 +27,7 @@ module numerics_least_squares
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT, &
     STATUS_SOLVER, STATUS_NOT_CONVERGED, STATUS_INTERNAL
+  use numerics_linear_algebra, only: normal_matrix_inverse
   implicit none (type, external)
   private
   public :: least_squares_problem_t, ls_residuals_i
@@ -135,22 +136,6 @@ module numerics_least_squares
       real(wp), intent(inout) :: qtf(n), wa1(n), wa2(n), wa3(n), wa4(m)
     end subroutine lmder
 
-    !> LAPACK
-    subroutine dgeqrf(m, n, a, lda, tau, work, lwork, info)
-      import :: wp
-      integer, intent(in) :: m, n, lda, lwork
-      real(wp), intent(inout) :: a(lda, *)
-      real(wp), intent(out) :: tau(*), work(*)
-      integer, intent(out) :: info
-    end subroutine dgeqrf
-
-    subroutine dtrtri(uplo, diag, n, a, lda, info)
-      import :: wp
-      character, intent(in) :: uplo, diag
-      integer, intent(in) :: n, lda
-      real(wp), intent(inout) :: a(lda, *)
-      integer, intent(out) :: info
-    end subroutine dtrtri
   end interface
 
 contains
@@ -485,15 +470,15 @@ contains
     end do
   end subroutine original_jacobian
 
-  !> s^2 (J^T J)^(-1) over the free parameters, by QR: (J^T J)^(-1) = R^(-1) R^(-T).
+  !> s^2 (J^T J)^(-1) over the free parameters (numerics_linear_algebra, by QR).
   subroutine covariance(m, r, result)
     integer, intent(in) :: m
     real(wp), intent(in) :: r(:)
     type(least_squares_result_t), intent(inout) :: result
-    real(wp), allocatable :: a(:, :), tau(:), work(:), rinv(:, :), cov_free(:, :)
+    real(wp), allocatable :: cov_free(:, :)
     integer, allocatable :: free(:)
-    real(wp) :: s2, query(1)
-    integer :: n, nf, info, i, j
+    type(status_t) :: status
+    integer :: n, nf, i
 
     n = size(active%p)
     allocate (result%covariance(n, n), result%standard_error(n))
@@ -511,27 +496,14 @@ contains
       result%standard_error(free) = huge(1.0_wp)
       return
     end if
-    s2 = sum(r**2)/(m - nf)
-    a = active%jac(:, free)
-    allocate (tau(nf))
-    call dgeqrf(m, nf, a, m, tau, query, -1, info)
-    allocate (work(max(1, int(query(1)))))
-    call dgeqrf(m, nf, a, m, tau, work, size(work), info)
-    rinv = a(1:nf, 1:nf)
-    do j = 1, nf
-      rinv(j + 1:nf, j) = 0
-    end do
-    if (info == 0) then
-      if (minval(abs([(rinv(i, i), i=1, nf)])) <= &
-          nf*epsilon(1.0_wp)*maxval(abs([(rinv(i, i), i=1, nf)]))) info = 1
-    end if
-    if (info == 0) call dtrtri('U', 'N', nf, rinv, nf, info)
-    if (info /= 0) then   ! rank-deficient: some parameters are not identifiable
+    allocate (cov_free(nf, nf))
+    call normal_matrix_inverse(active%jac(:, free), cov_free, status)
+    if (.not. status%ok()) then   ! rank-deficient: some parameters are not identifiable
       result%covariance(free, free) = huge(1.0_wp)
       result%standard_error(free) = huge(1.0_wp)
       return
     end if
-    cov_free = s2*matmul(rinv, transpose(rinv))
+    cov_free = sum(r**2)/(m - nf)*cov_free
     result%covariance(free, free) = cov_free
     result%standard_error(free) = sqrt([(cov_free(i, i), i=1, nf)])
     result%covariance_valid = .true.

@@ -1,0 +1,308 @@
+!> Dense linear algebra over LAPACK: LU (dgetrf/dgetrs/dgecon), Cholesky
+!> (dpotrf/dpotrs), QR (dgeqrf) and the inverse of a triangular factor (dtrtri).
+!>
+!> Every LAPACK call of slidesim goes through this module, and LAPACK's `info` is
+!> translated here, once, right after each call (see `translate_info`):
+!>   info < 0  an argument was illegal: a bug in the caller  -> STATUS_INTERNAL
+!>   info > 0  the matrix is singular / not positive definite -> STATUS_DOMAIN,
+!>             and `failed_index` (optional) returns info, the offending pivot
+!>             or column, so a caller can name what it means (a coordinate, ...).
+!> Arrays are `contiguous` assumed-shape (no copies, no allocation): the LU and
+!> Cholesky routines run inside right-hand sides. Workspace is automatic (stack).
+module numerics_linear_algebra
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, STATUS_OK, STATUS_DOMAIN, STATUS_INTERNAL
+  implicit none (type, external)
+  private
+  public :: lu_factor, lu_solve, lu_reciprocal_condition, one_norm
+  public :: cholesky_factor, cholesky_solve
+  public :: qr_factor, triangular_inverse, normal_matrix_inverse
+
+  !> Solve A x = b (or A^T x = b) with the LU factors of lu_factor; b is
+  !> overwritten by x. One right-hand side (vector) or several (columns).
+  interface lu_solve
+    module procedure lu_solve_vector, lu_solve_matrix
+  end interface lu_solve
+
+  !> Solve A x = b with the Cholesky factor of cholesky_factor; b is overwritten.
+  interface cholesky_solve
+    module procedure cholesky_solve_vector, cholesky_solve_matrix
+  end interface cholesky_solve
+
+  interface
+    subroutine dgetrf(m, n, a, lda, ipiv, info)
+      import :: wp
+      integer, intent(in) :: m, n, lda
+      real(wp), intent(inout) :: a(lda, *)
+      integer, intent(out) :: ipiv(*), info
+    end subroutine dgetrf
+    subroutine dgetrs(trans, n, nrhs, a, lda, ipiv, b, ldb, info)
+      import :: wp
+      character, intent(in) :: trans
+      integer, intent(in) :: n, nrhs, lda, ldb, ipiv(*)
+      real(wp), intent(in) :: a(lda, *)
+      real(wp), intent(inout) :: b(ldb, *)
+      integer, intent(out) :: info
+    end subroutine dgetrs
+    subroutine dgecon(norm, n, a, lda, anorm, rcond, work, iwork, info)
+      import :: wp
+      character, intent(in) :: norm
+      integer, intent(in) :: n, lda
+      real(wp), intent(in) :: a(lda, *), anorm
+      real(wp), intent(out) :: rcond
+      real(wp), intent(inout) :: work(*)
+      integer, intent(inout) :: iwork(*)
+      integer, intent(out) :: info
+    end subroutine dgecon
+    subroutine dpotrf(uplo, n, a, lda, info)
+      import :: wp
+      character, intent(in) :: uplo
+      integer, intent(in) :: n, lda
+      real(wp), intent(inout) :: a(lda, *)
+      integer, intent(out) :: info
+    end subroutine dpotrf
+    subroutine dpotrs(uplo, n, nrhs, a, lda, b, ldb, info)
+      import :: wp
+      character, intent(in) :: uplo
+      integer, intent(in) :: n, nrhs, lda, ldb
+      real(wp), intent(in) :: a(lda, *)
+      real(wp), intent(inout) :: b(ldb, *)
+      integer, intent(out) :: info
+    end subroutine dpotrs
+    subroutine dgeqrf(m, n, a, lda, tau, work, lwork, info)
+      import :: wp
+      integer, intent(in) :: m, n, lda, lwork
+      real(wp), intent(inout) :: a(lda, *)
+      real(wp), intent(out) :: tau(*), work(*)
+      integer, intent(out) :: info
+    end subroutine dgeqrf
+    subroutine dtrtri(uplo, diag, n, a, lda, info)
+      import :: wp
+      character, intent(in) :: uplo, diag
+      integer, intent(in) :: n, lda
+      real(wp), intent(inout) :: a(lda, *)
+      integer, intent(out) :: info
+    end subroutine dtrtri
+  end interface
+
+contains
+
+  !> The one translation of LAPACK's info (see the module comment).
+  pure subroutine translate_info(routine, info, singular_text, status, failed_index)
+    character(len=*), intent(in) :: routine, singular_text
+    integer, intent(in) :: info
+    type(status_t), intent(inout) :: status
+    integer, intent(out), optional :: failed_index
+    character(len=12) :: number
+    if (present(failed_index)) failed_index = max(0, info)
+    if (info == 0) return
+    write (number, '(i0)') abs(info)
+    if (info < 0) then
+      call set_status(status, STATUS_INTERNAL, routine//': argument '//trim(number)//' is illegal')
+    else
+      call set_status(status, STATUS_DOMAIN, routine//': '//singular_text//' (at '//trim(number)//')')
+    end if
+  end subroutine translate_info
+
+  !> PA = LU of the square matrix a, in place. A zero pivot U(k,k) = 0 (the
+  !> matrix is exactly singular) sets STATUS_DOMAIN and failed_index = k; the
+  !> factors are then complete but must not be used for solving.
+  subroutine lu_factor(a, ipiv, status, failed_index)
+    real(wp), intent(inout), contiguous :: a(:, :)
+    integer, intent(out), contiguous :: ipiv(:)
+    type(status_t), intent(inout) :: status
+    integer, intent(out), optional :: failed_index
+    integer :: info
+    if (size(a, 1) /= size(a, 2) .or. size(ipiv) < size(a, 1)) then
+      call set_status(status, STATUS_INTERNAL, 'lu_factor: a must be square and ipiv as long as a side')
+      if (present(failed_index)) failed_index = 0
+      return
+    end if
+    if (size(a, 1) == 0) then
+      if (present(failed_index)) failed_index = 0
+      return
+    end if
+    call dgetrf(size(a, 1), size(a, 2), a, size(a, 1), ipiv, info)
+    call translate_info('dgetrf', info, 'the matrix is singular, a zero pivot', status, failed_index)
+  end subroutine lu_factor
+
+  subroutine lu_solve_vector(lu, ipiv, b, status, transpose)
+    real(wp), intent(in), contiguous :: lu(:, :)
+    integer, intent(in), contiguous :: ipiv(:)
+    real(wp), intent(inout), contiguous :: b(:)
+    type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: transpose
+    integer :: info
+    if (size(lu, 1) == 0) return
+    call dgetrs(trans_flag(transpose), size(lu, 1), 1, lu, size(lu, 1), ipiv, b, size(b), info)
+    call translate_info('dgetrs', info, '', status)
+  end subroutine lu_solve_vector
+
+  subroutine lu_solve_matrix(lu, ipiv, b, status, transpose)
+    real(wp), intent(in), contiguous :: lu(:, :)
+    integer, intent(in), contiguous :: ipiv(:)
+    real(wp), intent(inout), contiguous :: b(:, :)
+    type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: transpose
+    integer :: info
+    if (size(lu, 1) == 0 .or. size(b, 2) == 0) return
+    call dgetrs(trans_flag(transpose), size(lu, 1), size(b, 2), lu, size(lu, 1), ipiv, b, &
+                size(b, 1), info)
+    call translate_info('dgetrs', info, '', status)
+  end subroutine lu_solve_matrix
+
+  pure character function trans_flag(transpose)
+    logical, intent(in), optional :: transpose
+    trans_flag = 'N'
+    if (present(transpose)) then
+      if (transpose) trans_flag = 'T'
+    end if
+  end function trans_flag
+
+  !> max_j sum_i |a_ij|, the 1-norm that lu_reciprocal_condition needs of the
+  !> matrix before factoring.
+  pure real(wp) function one_norm(a)
+    real(wp), intent(in) :: a(:, :)
+    integer :: j
+    one_norm = 0
+    do j = 1, size(a, 2)
+      one_norm = max(one_norm, sum(abs(a(:, j))))
+    end do
+  end function one_norm
+
+  !> Estimate of 1 / (||A||_1 ||A^-1||_1) from the LU factors and ||A||_1.
+  subroutine lu_reciprocal_condition(lu, anorm, rcond, status)
+    real(wp), intent(in), contiguous :: lu(:, :)
+    real(wp), intent(in) :: anorm
+    real(wp), intent(out) :: rcond
+    type(status_t), intent(inout) :: status
+    real(wp) :: work(4*max(1, size(lu, 1)))
+    integer :: iwork(max(1, size(lu, 1))), info
+    rcond = 1
+    if (size(lu, 1) == 0) return
+    call dgecon('1', size(lu, 1), lu, size(lu, 1), anorm, rcond, work, iwork, info)
+    call translate_info('dgecon', info, '', status)
+  end subroutine lu_reciprocal_condition
+
+  !> A = L L^T of the symmetric matrix a (lower triangle used), L in the lower
+  !> triangle. Not positive definite: STATUS_DOMAIN and failed_index = the
+  !> first column k whose leading k x k minor is not positive definite.
+  subroutine cholesky_factor(a, status, failed_index)
+    real(wp), intent(inout), contiguous :: a(:, :)
+    type(status_t), intent(inout) :: status
+    integer, intent(out), optional :: failed_index
+    integer :: info
+    if (size(a, 1) /= size(a, 2)) then
+      call set_status(status, STATUS_INTERNAL, 'cholesky_factor: a must be square')
+      if (present(failed_index)) failed_index = 0
+      return
+    end if
+    if (size(a, 1) == 0) then
+      if (present(failed_index)) failed_index = 0
+      return
+    end if
+    call dpotrf('L', size(a, 1), a, size(a, 1), info)
+    call translate_info('dpotrf', info, 'the matrix is not positive definite', status, failed_index)
+  end subroutine cholesky_factor
+
+  subroutine cholesky_solve_vector(l, b, status)
+    real(wp), intent(in), contiguous :: l(:, :)
+    real(wp), intent(inout), contiguous :: b(:)
+    type(status_t), intent(inout) :: status
+    integer :: info
+    if (size(l, 1) == 0) return
+    call dpotrs('L', size(l, 1), 1, l, size(l, 1), b, size(b), info)
+    call translate_info('dpotrs', info, '', status)
+  end subroutine cholesky_solve_vector
+
+  subroutine cholesky_solve_matrix(l, b, status)
+    real(wp), intent(in), contiguous :: l(:, :)
+    real(wp), intent(inout), contiguous :: b(:, :)
+    type(status_t), intent(inout) :: status
+    integer :: info
+    if (size(l, 1) == 0 .or. size(b, 2) == 0) return
+    call dpotrs('L', size(l, 1), size(b, 2), l, size(l, 1), b, size(b, 1), info)
+    call translate_info('dpotrs', info, '', status)
+  end subroutine cholesky_solve_matrix
+
+  !> A = Q R of the m x n matrix a (m >= n) in place: R in the upper triangle,
+  !> Q as Householder vectors below it and in tau(n). Allocates its workspace
+  !> (not for inner loops).
+  subroutine qr_factor(a, tau, status)
+    real(wp), intent(inout), contiguous :: a(:, :)
+    real(wp), intent(out), contiguous :: tau(:)
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: work(:)
+    real(wp) :: query(1)
+    integer :: m, n, info
+    m = size(a, 1)
+    n = size(a, 2)
+    if (m < n .or. size(tau) < n) then
+      call set_status(status, STATUS_INTERNAL, 'qr_factor: needs m >= n and tau of size n')
+      return
+    end if
+    if (n == 0) return
+    call dgeqrf(m, n, a, m, tau, query, -1, info)
+    call translate_info('dgeqrf (workspace query)', info, '', status)
+    if (.not. status%ok()) return
+    allocate (work(max(1, int(query(1)))))
+    call dgeqrf(m, n, a, m, tau, work, size(work), info)
+    call translate_info('dgeqrf', info, '', status)
+  end subroutine qr_factor
+
+  !> The inverse of the upper triangular n x n matrix r, in place (the strict
+  !> lower triangle is left as it is). An exactly zero diagonal entry:
+  !> STATUS_DOMAIN, failed_index = its index.
+  subroutine triangular_inverse(r, status, failed_index)
+    real(wp), intent(inout), contiguous :: r(:, :)
+    type(status_t), intent(inout) :: status
+    integer, intent(out), optional :: failed_index
+    integer :: info
+    if (size(r, 1) /= size(r, 2)) then
+      call set_status(status, STATUS_INTERNAL, 'triangular_inverse: r must be square')
+      return
+    end if
+    if (size(r, 1) == 0) return
+    call dtrtri('U', 'N', size(r, 1), r, size(r, 1), info)
+    call translate_info('dtrtri', info, 'the triangular matrix is singular, a zero diagonal', &
+                        status, failed_index)
+  end subroutine triangular_inverse
+
+  !> (J^T J)^(-1) of the m x n matrix j (m >= n) through QR, J = Q R,
+  !> (J^T J)^(-1) = R^(-1) R^(-T), without forming J^T J (which would square the
+  !> condition number). Numerically rank-deficient (a diagonal entry of R below
+  !> n eps max|R_kk|): STATUS_DOMAIN naming the first such column (the column
+  !> order of j, since no pivoting is done).
+  subroutine normal_matrix_inverse(j, inverse, status)
+    real(wp), intent(in) :: j(:, :)
+    real(wp), intent(out) :: inverse(:, :)
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: a(:, :), tau(:), rinv(:, :)
+    real(wp) :: diagonal(size(j, 2))
+    integer :: n, k
+    character(len=12) :: number
+    n = size(j, 2)
+    inverse = 0
+    if (n == 0) return
+    a = j
+    allocate (tau(n))
+    call qr_factor(a, tau, status)
+    if (.not. status%ok()) return
+    diagonal = [(abs(a(k, k)), k=1, n)]
+    do k = 1, n
+      if (diagonal(k) <= n*epsilon(1.0_wp)*maxval(diagonal)) then
+        write (number, '(i0)') k
+        call set_status(status, STATUS_DOMAIN, 'normal_matrix_inverse: J is rank-deficient, column ' &
+          //trim(number)//' depends on the earlier ones')
+        return
+      end if
+    end do
+    rinv = a(1:n, 1:n)
+    do k = 1, n
+      rinv(k + 1:n, k) = 0
+    end do
+    call triangular_inverse(rinv, status)
+    if (.not. status%ok()) return
+    inverse = matmul(rinv, transpose(rinv))
+  end subroutine normal_matrix_inverse
+end module numerics_linear_algebra

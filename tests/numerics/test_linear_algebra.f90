@@ -1,0 +1,126 @@
+!> numerics_linear_algebra: LU, Cholesky, QR and the normal-matrix inverse against
+!> matrices with known answers, and the translation of LAPACK's info.
+program test_linear_algebra
+  use base_kinds, only: wp
+  use base_status, only: status_t, STATUS_DOMAIN
+  use numerics_linear_algebra, only: lu_factor, lu_solve, lu_reciprocal_condition, one_norm, &
+    cholesky_factor, cholesky_solve, normal_matrix_inverse, triangular_inverse
+  use testing, only: check, check_close, check_close_array, finish_tests
+  implicit none (type, external)
+
+  ! rtol 1e-12: 4x4 systems with condition numbers below 1e3, solved in double precision
+  real(wp), parameter :: tol = 1e-12_wp
+
+  call lu_systems()
+  call lu_singular()
+  call condition_estimate()
+  call cholesky_systems()
+  call normal_inverse()
+  call finish_tests('test_linear_algebra')
+
+contains
+
+  !> A 4 x 4 matrix with a unit lower / upper structure whose solution is known.
+  function sample_matrix() result(a)
+    real(wp) :: a(4, 4)
+    a = reshape([4.0_wp, 1.0_wp, -2.0_wp, 0.5_wp, &
+                 1.0_wp, 5.0_wp, 0.0_wp, 1.0_wp, &
+                 0.0_wp, -1.0_wp, 6.0_wp, 2.0_wp, &
+                 3.0_wp, 0.0_wp, 1.0_wp, 7.0_wp], [4, 4])
+  end function sample_matrix
+
+  subroutine lu_systems()
+    real(wp) :: a(4, 4), lu(4, 4), x(4), b(4), bm(4, 2)
+    integer :: ipiv(4), failed
+    type(status_t) :: status
+    a = sample_matrix()
+    x = [1.0_wp, -2.0_wp, 0.5_wp, 3.0_wp]
+    lu = a
+    call lu_factor(lu, ipiv, status, failed)
+    call check(status%ok() .and. failed == 0, 'lu_factor of a regular matrix: '//status%text())
+    b = matmul(a, x)
+    call lu_solve(lu, ipiv, b, status)
+    call check_close_array(b, x, tol, tol, 'lu_solve: A x = b')
+    b = matmul(transpose(a), x)
+    call lu_solve(lu, ipiv, b, status, transpose=.true.)
+    call check_close_array(b, x, tol, tol, 'lu_solve: A^T x = b')
+    bm(:, 1) = matmul(a, x)
+    bm(:, 2) = matmul(a, 2*x)
+    call lu_solve(lu, ipiv, bm, status)
+    call check_close_array(bm(:, 2), 2*x, tol, tol, 'lu_solve: two right-hand sides')
+    call check(status%ok(), 'lu_solve status ok')
+  end subroutine lu_systems
+
+  subroutine lu_singular()
+    real(wp) :: a(3, 3)
+    integer :: ipiv(3), failed
+    type(status_t) :: status
+    ! third column = first + second: exactly singular in binary arithmetic
+    a = reshape([1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 1.0_wp, 1.0_wp, 0.0_wp], [3, 3])
+    call lu_factor(a, ipiv, status, failed)
+    call check(status%code == STATUS_DOMAIN, 'singular matrix: STATUS_DOMAIN')
+    call check(failed == 3, 'singular matrix: the zero pivot is the third')
+    call check(index(status%text(), 'dgetrf') > 0, 'message names the routine: '//status%text())
+  end subroutine lu_singular
+
+  subroutine condition_estimate()
+    real(wp) :: a(3, 3), lu(3, 3), rcond
+    integer :: ipiv(3)
+    type(status_t) :: status
+    ! diagonal: ||A||_1 ||A^-1||_1 = 100 * 1 exactly, and dgecon is exact for diagonals
+    a = 0
+    a(1, 1) = 100
+    a(2, 2) = 1
+    a(3, 3) = 10
+    lu = a
+    call lu_factor(lu, ipiv, status)
+    call check_close(one_norm(a), 100.0_wp, 0.0_wp, 0.0_wp, 'one_norm of the diagonal')
+    call lu_reciprocal_condition(lu, one_norm(a), rcond, status)
+    call check(status%ok(), 'dgecon status')
+    call check_close(rcond, 0.01_wp, tol, 0.0_wp, 'reciprocal condition of diag(100, 1, 10)')
+  end subroutine condition_estimate
+
+  subroutine cholesky_systems()
+    real(wp) :: a(4, 4), l(4, 4), x(4), b(4), s(2, 2)
+    integer :: failed
+    type(status_t) :: status
+    a = sample_matrix()
+    a = matmul(transpose(a), a)   ! symmetric positive definite
+    x = [0.25_wp, -1.0_wp, 2.0_wp, 1.5_wp]
+    l = a
+    call cholesky_factor(l, status, failed)
+    call check(status%ok() .and. failed == 0, 'cholesky_factor of A^T A: '//status%text())
+    b = matmul(a, x)
+    call cholesky_solve(l, b, status)
+    ! rtol 1e-11: A^T A squares the condition number of the sample matrix (< 1e3)
+    call check_close_array(b, x, 1e-11_wp, 1e-11_wp, 'cholesky_solve: A x = b')
+    s = reshape([1.0_wp, 2.0_wp, 2.0_wp, 1.0_wp], [2, 2])   ! eigenvalues 3 and -1
+    call cholesky_factor(s, status, failed)
+    call check(status%code == STATUS_DOMAIN .and. failed == 2, &
+               'indefinite matrix: STATUS_DOMAIN at column 2: '//status%text())
+  end subroutine cholesky_systems
+
+  subroutine normal_inverse()
+    real(wp) :: j(5, 2), inverse(2, 2), expected(2, 2), jtj(2, 2), r(2, 2)
+    type(status_t) :: status
+    integer :: i, failed
+    ! a line fit's design matrix: (J^T J)^-1 in closed form from the 2 x 2 inverse
+    j(:, 1) = 1
+    j(:, 2) = [(0.5_wp*i, i=0, 4)]
+    jtj = matmul(transpose(j), j)
+    expected = reshape([jtj(2, 2), -jtj(2, 1), -jtj(1, 2), jtj(1, 1)], [2, 2]) &
+               /(jtj(1, 1)*jtj(2, 2) - jtj(1, 2)*jtj(2, 1))
+    call normal_matrix_inverse(j, inverse, status)
+    call check(status%ok(), 'normal_matrix_inverse: '//status%text())
+    call check_close_array(reshape(inverse, [4]), reshape(expected, [4]), tol, tol, &
+                           '(J^T J)^-1 of a line fit')
+    j(:, 2) = 3*j(:, 1)   ! rank 1
+    call normal_matrix_inverse(j, inverse, status)
+    call check(status%code == STATUS_DOMAIN .and. index(status%text(), 'column 2') > 0, &
+               'rank-deficient J refused naming column 2: '//status%text())
+    r = reshape([2.0_wp, 0.0_wp, 1.0_wp, 0.0_wp], [2, 2])
+    status = status_t()
+    call triangular_inverse(r, status, failed)
+    call check(status%code == STATUS_DOMAIN .and. failed == 2, 'singular triangle: zero diagonal at 2')
+  end subroutine normal_inverse
+end program test_linear_algebra
