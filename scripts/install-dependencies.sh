@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Installs what slidesim needs from Debian's packages (Debian 12): compiler, CMake,
 # LAPACK, MINPACK, SUNDIALS, HDF5 and, for the Python scripts, numpy, h5py,
-# matplotlib and scipy (Debian's scipy 1.10.1 regenerates the FITPACK tables).
+# matplotlib and scipy (Debian's scipy 1.10.1 regenerates the FITPACK tables),
+# pint (the tests parse the units in result files).
 # Idempotent: installs only what is missing.
 set -euo pipefail
 
 packages=(gfortran cmake make liblapack-dev libblas-dev minpack-dev
           libsundials-dev libsundials-fortran-dev libhdf5-dev hdf5-tools
-          python3 python3-numpy python3-h5py python3-matplotlib python3-scipy)
+          python3 python3-numpy python3-h5py python3-matplotlib python3-scipy python3-pint)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -33,8 +33,8 @@ def main(argv):
         speed = g["speed"][:]
         height = g["height"][:]
         xyz = np.asarray(g["position"][:])
-        left = np.asarray(g["left_edge"][:])
-        right = np.asarray(g["right_edge"][:])
+        left = np.stack([g["left_edge_u"][:], g["left_edge_v"][:]], axis=1)
+        right = np.stack([g["right_edge_u"][:], g["right_edge_v"][:]], axis=1)
         lp = np.asarray(g["left_point"][:])
         rp = np.asarray(g["right_point"][:])
         stations = None

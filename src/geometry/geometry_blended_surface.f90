@@ -41,6 +41,7 @@ module geometry_blended_surface
     procedure :: evaluate => blended_evaluate
     procedure :: domain => blended_domain
     procedure :: describe => blended_describe
+    procedure :: parameter_units => blended_parameter_units
     procedure :: weights => blended_weights
   end type blended_surface_t
 
@@ -208,4 +209,25 @@ contains
     write (buf, '(i0)') size(self%patches)
     text = 'blended surface of ' // trim(buf) // ' patches'
   end function blended_describe
+
+  !> u is the patches' own u (shifted), in their unit when they agree; v is
+  !> scaled to [0, 1].
+  pure subroutine blended_parameter_units(self, u_units, v_units)
+    class(blended_surface_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    character(len=:), allocatable :: patch_u, patch_v, first
+    integer :: j
+    v_units = '1'
+    do j = 1, size(self%patches)
+      call self%patches(j)%surface%parameter_units(patch_u, patch_v)
+      if (self%patches(j)%swap_uv) patch_u = patch_v
+      if (j == 1) first = patch_u
+      if (patch_u /= first) then
+        u_units = '1'
+        return
+      end if
+    end do
+    u_units = first
+    if (size(self%patches) == 0) u_units = '1'
+  end subroutine blended_parameter_units
 end module geometry_blended_surface

@@ -28,6 +28,7 @@ module geometry_bspline_surface
     procedure :: periodic_u => bspline_periodic_u
     procedure :: periodic_v => bspline_periodic_v
     procedure :: describe => bspline_describe
+    procedure :: parameter_units => bspline_parameter_units
   end type bspline_surface_t
 
 contains
@@ -261,4 +262,15 @@ contains
     end do
     u = work(1:n)
   end function unique_sorted
+
+  !> A graph's u, v are x, y (m); a parametric fit's are its own numbers.
+  pure subroutine bspline_parameter_units(self, u_units, v_units)
+    class(bspline_surface_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    if (self%graph) then
+      u_units = 'm'; v_units = 'm'
+    else
+      u_units = '1'; v_units = '1'
+    end if
+  end subroutine bspline_parameter_units
 end module geometry_bspline_surface

@@ -46,6 +46,7 @@ module geometry_cross_section
     procedure(section_range_i), deferred :: v_range
     procedure :: periodic => section_not_periodic
     procedure :: extent => section_extent
+    procedure :: parameter_unit => section_parameter_unit
   end type cross_section_t
 
   abstract interface
@@ -111,6 +112,7 @@ module geometry_cross_section
     procedure :: evaluate => profile_evaluate
     procedure :: v_range => profile_range
     procedure :: periodic => profile_periodic
+    procedure :: parameter_unit => profile_parameter_unit
   end type profile_section_t
 
   !> n sections blended along u (3.69): transition j (between sections j-1 and
@@ -123,6 +125,7 @@ module geometry_cross_section
     procedure :: v_range => blended_range
     procedure :: periodic => blended_periodic
     procedure :: extent => blended_extent
+    procedure :: parameter_unit => blended_parameter_unit
   end type blended_section_t
 
   integer, parameter :: binom(0:3, 0:3) = reshape([1, 0, 0, 0, 1, 1, 0, 0, 1, 2, 1, 0, 1, 3, 3, 1], [4, 4])
@@ -521,4 +524,36 @@ contains
       r = max(r, self%sections(j)%section%extent(u))
     end do
   end function blended_extent
+
+  !> The unit of v (UDUNITS/pint text): an angle for the circle, ellipse and
+  !> flume (whose walls run at the circle's speed).
+  pure function section_parameter_unit(self) result(unit)
+    class(cross_section_t), intent(in) :: self
+    character(len=:), allocatable :: unit
+    associate (unused => self)
+    end associate
+    unit = 'rad'
+  end function section_parameter_unit
+
+  !> v is the chord length of the profile's points (m).
+  pure function profile_parameter_unit(self) result(unit)
+    class(profile_section_t), intent(in) :: self
+    character(len=:), allocatable :: unit
+    associate (unused => self)
+    end associate
+    unit = 'm'
+  end function profile_parameter_unit
+
+  !> The sections' common unit, or dimensionless if they differ.
+  pure function blended_parameter_unit(self) result(unit)
+    class(blended_section_t), intent(in) :: self
+    character(len=:), allocatable :: unit
+    integer :: j
+    unit = '1'
+    if (size(self%sections) == 0) return
+    unit = self%sections(1)%section%parameter_unit()
+    do j = 2, size(self%sections)
+      if (self%sections(j)%section%parameter_unit() /= unit) unit = '1'
+    end do
+  end function blended_parameter_unit
 end module geometry_cross_section

@@ -33,6 +33,7 @@ module geometry_curve
     procedure :: arc_length => curve_arc_length
     procedure :: total_length => curve_total_length
     procedure :: parameter_at_length => curve_parameter_at_length
+    procedure :: parameter_unit => curve_parameter_unit
   end type curve_t
 
   abstract interface
@@ -61,6 +62,7 @@ module geometry_curve
   contains
     procedure :: evaluate => line_evaluate
     procedure :: domain => line_domain
+    procedure :: parameter_unit => line_parameter_unit
   end type line_curve_t
 
   !> Helix about the z-axis through `center`:
@@ -75,6 +77,7 @@ module geometry_curve
   contains
     procedure :: evaluate => helix_evaluate
     procedure :: domain => helix_domain
+    procedure :: parameter_unit => helix_parameter_unit
   end type helix_curve_t
 
   !> A constant vector (the usual horizon field h = [0, 0, 1]).
@@ -109,6 +112,7 @@ module geometry_curve
     procedure :: arc_length => spline_arc_length
     procedure :: total_length => spline_total_length
     procedure :: parameter_at_length => spline_parameter_at_length
+    procedure :: parameter_unit => spline_parameter_unit
   end type spline_centerline_t
 
   ! 8-point Gauss-Legendre nodes and weights on [-1, 1].
@@ -405,4 +409,38 @@ contains
     end do
     call set_status(status, STATUS_NOT_CONVERGED, 'parameter at arc length: no convergence')
   end subroutine curve_parameter_at_length
+
+  !> The unit of the parameter u (UDUNITS/pint text); default dimensionless.
+  pure function curve_parameter_unit(self) result(unit)
+    class(curve_t), intent(in) :: self
+    character(len=:), allocatable :: unit
+    associate (unused => self)
+    end associate
+    unit = '1'
+  end function curve_parameter_unit
+
+  !> m when the direction is a unit vector (u is then the length along the line).
+  pure function line_parameter_unit(self) result(unit)
+    class(line_curve_t), intent(in) :: self
+    character(len=:), allocatable :: unit
+    unit = '1'
+    if (abs(norm2(self%direction) - 1) <= 1e-12_wp) unit = 'm'
+  end function line_parameter_unit
+
+  pure function helix_parameter_unit(self) result(unit)
+    class(helix_curve_t), intent(in) :: self
+    character(len=:), allocatable :: unit
+    associate (unused => self)
+    end associate
+    unit = 'rad'
+  end function helix_parameter_unit
+
+  !> The cumulative chord length of the fitted points (m).
+  pure function spline_parameter_unit(self) result(unit)
+    class(spline_centerline_t), intent(in) :: self
+    character(len=:), allocatable :: unit
+    associate (unused => self)
+    end associate
+    unit = 'm'
+  end function spline_parameter_unit
 end module geometry_curve

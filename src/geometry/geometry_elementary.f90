@@ -31,6 +31,7 @@ module geometry_elementary
   contains
     procedure :: evaluate => plane_evaluate
     procedure :: describe => plane_describe
+    procedure :: parameter_units => plane_parameter_units
   end type plane_t
 
   !> Ellipsoid r = [a cos v cos u, b cos v sin u, c sin v], thesis (3.57);
@@ -43,6 +44,7 @@ module geometry_elementary
     procedure :: domain => ellipsoid_domain
     procedure :: periodic_u => ellipsoid_periodic_u
     procedure :: describe => ellipsoid_describe
+    procedure :: parameter_units => ellipsoid_parameter_units
   end type ellipsoid_t
 
   !> Paraboloid r = [u, v, c u^2/a^2 + v^2/b^2], thesis (3.58), implemented
@@ -55,6 +57,7 @@ module geometry_elementary
   contains
     procedure :: evaluate => paraboloid_evaluate
     procedure :: describe => paraboloid_describe
+    procedure :: parameter_units => paraboloid_parameter_units
   end type paraboloid_t
 
   !> Elliptic cylinder r = [a cos v, b sin v, u], thesis (3.59);
@@ -67,6 +70,7 @@ module geometry_elementary
     procedure :: domain => cylinder_domain
     procedure :: periodic_v => cylinder_periodic_v
     procedure :: describe => cylinder_describe
+    procedure :: parameter_units => cylinder_parameter_units
   end type elliptic_cylinder_t
 
   !> Paraboloid with a singular apex r = [a cos(u) v, b sin(u) v, v^2]
@@ -80,6 +84,7 @@ module geometry_elementary
     procedure :: domain => apex_domain
     procedure :: periodic_u => apex_periodic_u
     procedure :: describe => apex_describe
+    procedure :: parameter_units => apex_parameter_units
   end type apex_paraboloid_t
 
   interface plane_t
@@ -432,4 +437,44 @@ contains
            format_real(self%b) // ' m'
   end function apex_describe
 
+
+  pure subroutine plane_parameter_units(self, u_units, v_units)
+    class(plane_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    associate (unused => self)
+    end associate
+    u_units = 'm'; v_units = 'm'
+  end subroutine plane_parameter_units
+
+  pure subroutine ellipsoid_parameter_units(self, u_units, v_units)
+    class(ellipsoid_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    associate (unused => self)
+    end associate
+    u_units = 'rad'; v_units = 'rad'
+  end subroutine ellipsoid_parameter_units
+
+  pure subroutine paraboloid_parameter_units(self, u_units, v_units)
+    class(paraboloid_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    associate (unused => self)
+    end associate
+    u_units = 'm'; v_units = 'm'
+  end subroutine paraboloid_parameter_units
+
+  pure subroutine cylinder_parameter_units(self, u_units, v_units)
+    class(elliptic_cylinder_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    associate (unused => self)
+    end associate
+    u_units = 'm'; v_units = 'rad'
+  end subroutine cylinder_parameter_units
+
+  pure subroutine apex_parameter_units(self, u_units, v_units)
+    class(apex_paraboloid_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    associate (unused => self)
+    end associate
+    u_units = 'rad'; v_units = 'm'
+  end subroutine apex_parameter_units
 end module geometry_elementary

@@ -25,6 +25,7 @@ module geometry_placed_surface
     procedure :: periodic_u => placed_periodic_u
     procedure :: periodic_v => placed_periodic_v
     procedure :: describe => placed_describe
+    procedure :: parameter_units => placed_parameter_units
     procedure :: origin_of => placed_origin
     procedure :: rotation_of => placed_rotation
   end type placed_surface_t
@@ -170,4 +171,10 @@ contains
     real(wp) :: rotation(3, 3)
     rotation = self%rotation
   end function placed_rotation
+
+  pure subroutine placed_parameter_units(self, u_units, v_units)
+    class(placed_surface_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    call self%base%parameter_units(u_units, v_units)
+  end subroutine placed_parameter_units
 end module geometry_placed_surface

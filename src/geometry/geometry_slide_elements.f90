@@ -60,6 +60,7 @@ module geometry_slide_elements
   contains
     procedure :: evaluate => chain_evaluate
     procedure :: domain => chain_domain
+    procedure :: parameter_unit => chain_parameter_unit
     procedure :: element_at => chain_element_at
   end type element_chain_curve_t
 
@@ -315,4 +316,13 @@ contains
       horizon(:, i) = [0.0_wp, 0.0_wp, 1.0_wp]
     end do
   end subroutine slide_points
+
+  !> u is the horizontal arc length sigma (m).
+  pure function chain_parameter_unit(self) result(unit)
+    class(element_chain_curve_t), intent(in) :: self
+    character(len=:), allocatable :: unit
+    associate (unused => self)
+    end associate
+    unit = 'm'
+  end function chain_parameter_unit
 end module geometry_slide_elements

@@ -30,6 +30,7 @@ module geometry_surface
     procedure :: periodic_u => surface_periodic_u
     procedure :: periodic_v => surface_periodic_v
     procedure :: describe => surface_describe
+    procedure :: parameter_units => surface_parameter_units
   end type surface_t
 
   abstract interface
@@ -91,4 +92,14 @@ contains
     end associate
     text = 'surface'
   end function surface_describe
+
+  !> The units of u and v (UDUNITS/pint text: 'm', 'rad', '1'), for result
+  !> files; the default is a dimensionless parameter.
+  pure subroutine surface_parameter_units(self, u_units, v_units)
+    class(surface_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    associate (unused => self)   ! the default ignores the surface
+    end associate
+    u_units = '1'; v_units = '1'
+  end subroutine surface_parameter_units
 end module geometry_surface

@@ -29,6 +29,7 @@ module geometry_tube
     procedure :: domain => tube_domain
     procedure :: periodic_v => tube_periodic_v
     procedure :: describe => tube_describe
+    procedure :: parameter_units => tube_parameter_units
     procedure :: frame => tube_frame
     procedure :: arc_length => tube_arc_length
     procedure :: length => tube_length
@@ -210,4 +211,12 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'tube surface: ' // trim(buf))
     end if
   end subroutine tube_check
+
+  !> u is the centerline's parameter, v the cross-section's.
+  pure subroutine tube_parameter_units(self, u_units, v_units)
+    class(tube_surface_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    u_units = self%centerline%parameter_unit()
+    v_units = self%section%parameter_unit()
+  end subroutine tube_parameter_units
 end module geometry_tube

@@ -1,31 +1,76 @@
-!> HDF5 result files: written under a temporary name and renamed when closed, so
-!> a file with the final name is always a finished one (complete, or marked
-!> incomplete with what was computed). Every dataset carries a `units` and a
-!> `description` attribute; the root carries `status` and `status_message`.
+!> HDF5 result files, written the way h5py, xarray and ParaView users expect
+!> (the layout and its version: docs/outputs.md).
+!>
+!> Life cycle: `create` opens `<path>.tmp`; `finish` marks the root attribute
+!> `status` complete or incomplete, closes and renames to `<path>`, so a file
+!> with the final name is always a finished one.
+!>
+!> Conventions every writer here keeps, so no caller has to:
+!> - strings (attributes and text datasets) are scalar variable-length UTF-8,
+!>   so h5py returns `str` (`f.attrs['status'] == 'complete'`);
+!> - numbers are numbers: `set_attribute` takes text, a real, a real array or
+!>   an integer; `write_scalar`/`write_count` make scalar datasets (shape ());
+!> - every dataset has `units` (UDUNITS and pint syntax: 'm', 'm/s', 'm/s^2',
+!>   'rad', '1', 'J', 'kg m^2') and `description`;
+!> - arrays are stored as in Fortran: values(3, n) is read by h5py as (n, 3),
+!>   so the sample index (time, arc length) is numpy axis 0;
+!> - `make_scale` turns a 1-d dataset into a dimension scale and `attach_scale`
+!>   attaches it to every dataset written under a group whose numpy axis (0 by
+!>   default) has the scale's length, so xarray and HDFView show coordinates;
+!> - `write_provenance` writes what made the file (version, git commit,
+!>   compiler and flags, UTC time, host, the input text and its SHA-256).
 module io_hdf5
-  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_loc
   use hdf5, only: hid_t, hsize_t, h5open_f, h5fcreate_f, h5fclose_f, H5F_ACC_TRUNC_F, &
-                  h5gcreate_f, h5gclose_f, h5lexists_f, h5eset_auto_f
-  use h5lt, only: h5ltmake_dataset_double_f, h5ltset_attribute_string_f, &
-                  h5ltmake_dataset_string_f, h5ltmake_dataset_int_f
+                  h5gcreate_f, h5gclose_f, h5lexists_f, h5eset_auto_f, h5oopen_f, h5oclose_f, &
+                  h5screate_f, h5screate_simple_f, h5sclose_f, H5S_SCALAR_F, &
+                  h5tcopy_f, h5tset_size_f, h5tset_cset_f, h5tclose_f, H5T_STRING, H5T_CSET_UTF8_F, &
+                  H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, &
+                  h5acreate_f, h5awrite_f, h5aclose_f, h5aexists_f, h5adelete_f, &
+                  h5dcreate_f, h5dwrite_f, h5dclose_f, h5dopen_f
+  use h5ds, only: h5dsset_scale_f, h5dsattach_scale_f
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, STATUS_IO
+  use base_sha256, only: sha256_hex
+  use base_version, only: slidesim_version, slidesim_compiler, slidesim_compiler_options
+  use base_build_commit, only: slidesim_git_commit
+  use io_provenance, only: utc_timestamp, host_name
   implicit none (type, external)
   private
-  public :: result_file_t
+  public :: result_file_t, result_layout_version, units_per_second
+
+  !> Version of the layout in docs/outputs.md: raised when an existing name,
+  !> shape or unit changes; new groups and datasets do not raise it.
+  integer, parameter :: result_layout_version = 1
+
+  !> A dataset written so far: its shape (Fortran order) for attach_scale.
+  type :: written_t
+    character(len=:), allocatable :: name
+    integer(hsize_t), allocatable :: shape(:)
+    logical, allocatable :: scaled(:)    ! per Fortran dimension: a scale is attached
+    logical :: is_scale = .false.
+  end type written_t
 
   type :: result_file_t
     private
     integer(hid_t) :: file_id = -1
     character(len=:), allocatable :: path, temporary_path
+    type(written_t), allocatable :: written(:)
+    integer :: n_written = 0
   contains
     procedure :: create => result_file_create
+    procedure :: write_provenance => result_file_write_provenance
     procedure :: write_vector => result_file_write_vector
     procedure :: write_matrix => result_file_write_matrix
     procedure :: write_array3 => result_file_write_array3
     procedure :: write_integers => result_file_write_integers
+    procedure :: write_scalar => result_file_write_scalar
+    procedure :: write_count => result_file_write_count
     procedure :: write_text => result_file_write_text
-    procedure :: set_attribute => result_file_set_attribute
+    procedure, private :: set_attribute_text, set_attribute_real, set_attribute_reals, set_attribute_integer
+    generic :: set_attribute => set_attribute_text, set_attribute_real, set_attribute_reals, set_attribute_integer
+    procedure :: make_scale => result_file_make_scale
+    procedure :: attach_scale => result_file_attach_scale
     procedure :: finish => result_file_finish
     procedure :: is_open => result_file_is_open
     procedure :: final_path => result_file_final_path
@@ -50,6 +95,7 @@ contains
 
     self%path = trim(path)
     self%temporary_path = self%path//'.tmp'
+    self%n_written = 0
     call h5open_f(hdferr)
     if (hdferr /= 0) then
       call set_status(status, STATUS_IO, 'cannot initialise the HDF5 library')
@@ -63,7 +109,7 @@ contains
                       '" (does its folder exist, and is it writable?)')
       return
     end if
-    call h5ltset_attribute_string_f(self%file_id, '/', 'status', 'running', hdferr)
+    call write_string_attribute(self%file_id, '/', 'status', 'running', hdferr)
   end subroutine result_file_create
 
   logical function result_file_is_open(self)
@@ -76,6 +122,41 @@ contains
     character(len=:), allocatable :: path
     path = self%path
   end function result_file_final_path
+
+  !> The root attributes saying what made the file, and the input: scenario,
+  !> title, layout_version, slidesim_version, git_commit, compiler,
+  !> compiler_options, created_utc, host, input_sha256 (of the bytes of
+  !> /input/namelist); the datasets /input/namelist and /input/source.
+  subroutine result_file_write_provenance(self, scenario, title, input_source, input_text, status)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: scenario, title, input_source, input_text
+    type(status_t), intent(inout) :: status
+    call self%set_attribute('/', 'scenario', scenario, status)
+    call self%set_attribute('/', 'title', title, status)
+    call self%set_attribute('/', 'layout_version', result_layout_version, status)
+    call self%set_attribute('/', 'slidesim_version', slidesim_version, status)
+    call self%set_attribute('/', 'git_commit', slidesim_git_commit(), status)
+    call self%set_attribute('/', 'compiler', slidesim_compiler, status)
+    call self%set_attribute('/', 'compiler_options', slidesim_compiler_options, status)
+    call self%set_attribute('/', 'created_utc', utc_timestamp(), status)
+    call self%set_attribute('/', 'host', host_name(), status)
+    call self%set_attribute('/', 'input_sha256', sha256_hex(input_text), status)
+    call self%write_text('/input/namelist', input_text, 'the input namelist text of this run', status)
+    call self%write_text('/input/source', input_source, 'where the input came from (a path, '// &
+                         '<built-in default> or builtin:<name>)', status)
+  end subroutine result_file_write_provenance
+
+  !> The unit of a rate or, with power = 2, of an acceleration:
+  !> 'm' -> 'm/s' (or 'm/s^2'), '1' -> '1/s'.
+  pure function units_per_second(units, power) result(rate)
+    character(len=*), intent(in) :: units
+    integer, intent(in), optional :: power
+    character(len=:), allocatable :: rate
+    rate = units//'/s'
+    if (present(power)) then
+      if (power == 2) rate = units//'/s^2'
+    end if
+  end function units_per_second
 
   !> Creates the groups along `name` ("/a/b/dataset") that do not exist yet.
   subroutine ensure_groups(file_id, name, hdferr)
@@ -99,89 +180,289 @@ contains
     end do
   end subroutine ensure_groups
 
-  subroutine describe(self, name, units, description, hdferr, status)
+  !> The one dataset writer: `shape` in Fortran order (size 0: a scalar),
+  !> `buffer` the values in memory type `type_id`; then units and description.
+  subroutine write_dataset(self, name, type_id, shape, buffer, units, description, status)
     class(result_file_t), intent(inout) :: self
     character(len=*), intent(in) :: name, units, description
-    integer, intent(inout) :: hdferr
+    integer(hid_t), intent(in) :: type_id
+    integer(hsize_t), intent(in) :: shape(:)
+    type(c_ptr), intent(in) :: buffer
     type(status_t), intent(inout) :: status
-    integer :: err
-    if (hdferr == 0) call h5ltset_attribute_string_f(self%file_id, name, 'units', units, err)
-    if (hdferr == 0) hdferr = err
-    if (hdferr == 0) call h5ltset_attribute_string_f(self%file_id, name, 'description', description, err)
-    if (hdferr == 0) hdferr = err
-    if (hdferr /= 0) call set_status(status, STATUS_IO, 'cannot write dataset "'//name// &
-                                     '" to "'//self%temporary_path//'"')
-  end subroutine describe
+    integer(hid_t) :: space_id, dataset_id
+    integer :: hdferr, err
+
+    if (.not. status%ok() .or. self%file_id < 0) return
+    call ensure_groups(self%file_id, name, hdferr)
+    if (hdferr == 0) then
+      if (size(shape) == 0) then
+        call h5screate_f(H5S_SCALAR_F, space_id, hdferr)
+      else
+        call h5screate_simple_f(size(shape), shape, space_id, hdferr)
+      end if
+    end if
+    if (hdferr == 0) then
+      call h5dcreate_f(self%file_id, name, type_id, space_id, dataset_id, hdferr)
+      if (hdferr == 0) then
+        call h5dwrite_f(dataset_id, type_id, buffer, hdferr)
+        call h5dclose_f(dataset_id, err)
+      end if
+      call h5sclose_f(space_id, err)
+    end if
+    if (hdferr == 0) call write_string_attribute(self%file_id, name, 'units', units, hdferr)
+    if (hdferr == 0) call write_string_attribute(self%file_id, name, 'description', description, hdferr)
+    if (hdferr /= 0) then
+      call set_status(status, STATUS_IO, 'cannot write dataset "'//name//'" to "'//self%temporary_path//'"')
+      return
+    end if
+    call remember(self, name, shape)
+  end subroutine write_dataset
+
+  subroutine remember(self, name, shape)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: name
+    integer(hsize_t), intent(in) :: shape(:)
+    type(written_t), allocatable :: grown(:)
+    if (.not. allocated(self%written)) allocate (self%written(64))
+    if (self%n_written == size(self%written)) then
+      allocate (grown(2*size(self%written)))
+      grown(:self%n_written) = self%written
+      call move_alloc(grown, self%written)
+    end if
+    self%n_written = self%n_written + 1
+    self%written(self%n_written) = written_t(name, shape, spread(.false., 1, size(shape)), .false.)
+  end subroutine remember
 
   subroutine result_file_write_vector(self, name, values, units, description, status)
     class(result_file_t), intent(inout) :: self
     character(len=*), intent(in) :: name, units, description
-    real(wp), intent(in) :: values(:)
+    real(wp), intent(in), target, contiguous :: values(:)
     type(status_t), intent(inout) :: status
-    integer :: hdferr
-    call ensure_groups(self%file_id, name, hdferr)
-    if (hdferr == 0) call h5ltmake_dataset_double_f(self%file_id, name, 1, &
-                                                    [int(size(values), hsize_t)], values, hdferr)
-    call describe(self, name, units, description, hdferr, status)
+    call write_dataset(self, name, H5T_NATIVE_DOUBLE, shape(values, kind=hsize_t), c_loc(values), units, &
+                       description, status)
   end subroutine result_file_write_vector
 
   !> A matrix as stored in Fortran: values(3, n) is read by h5py as shape (n, 3).
   subroutine result_file_write_matrix(self, name, values, units, description, status)
     class(result_file_t), intent(inout) :: self
     character(len=*), intent(in) :: name, units, description
-    real(wp), intent(in) :: values(:, :)
+    real(wp), intent(in), target, contiguous :: values(:, :)
     type(status_t), intent(inout) :: status
-    integer :: hdferr
-    call ensure_groups(self%file_id, name, hdferr)
-    if (hdferr == 0) call h5ltmake_dataset_double_f(self%file_id, name, 2, &
-                                                    int(shape(values), hsize_t), values, hdferr)
-    call describe(self, name, units, description, hdferr, status)
+    call write_dataset(self, name, H5T_NATIVE_DOUBLE, shape(values, kind=hsize_t), c_loc(values), units, &
+                       description, status)
   end subroutine result_file_write_matrix
 
   subroutine result_file_write_array3(self, name, values, units, description, status)
     class(result_file_t), intent(inout) :: self
     character(len=*), intent(in) :: name, units, description
-    real(wp), intent(in) :: values(:, :, :)
+    real(wp), intent(in), target, contiguous :: values(:, :, :)
     type(status_t), intent(inout) :: status
-    integer :: hdferr
-    call ensure_groups(self%file_id, name, hdferr)
-    if (hdferr == 0) call h5ltmake_dataset_double_f(self%file_id, name, 3, &
-                                                    int(shape(values), hsize_t), values, hdferr)
-    call describe(self, name, units, description, hdferr, status)
+    call write_dataset(self, name, H5T_NATIVE_DOUBLE, shape(values, kind=hsize_t), c_loc(values), units, &
+                       description, status)
   end subroutine result_file_write_array3
 
   subroutine result_file_write_integers(self, name, values, units, description, status)
     class(result_file_t), intent(inout) :: self
     character(len=*), intent(in) :: name, units, description
-    integer, intent(in) :: values(:)
+    integer, intent(in), target, contiguous :: values(:)
     type(status_t), intent(inout) :: status
-    integer :: hdferr
-    call ensure_groups(self%file_id, name, hdferr)
-    if (hdferr == 0) call h5ltmake_dataset_int_f(self%file_id, name, 1, &
-                                                 [int(size(values), hsize_t)], values, hdferr)
-    call describe(self, name, units, description, hdferr, status)
+    call write_dataset(self, name, H5T_NATIVE_INTEGER, shape(values, kind=hsize_t), c_loc(values), units, &
+                       description, status)
   end subroutine result_file_write_integers
 
+  !> A real scalar dataset (h5py shape ()).
+  subroutine result_file_write_scalar(self, name, value, units, description, status)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: name, units, description
+    real(wp), intent(in) :: value
+    type(status_t), intent(inout) :: status
+    real(wp), target :: copy
+    integer(hsize_t) :: no_shape(0)
+    copy = value
+    call write_dataset(self, name, H5T_NATIVE_DOUBLE, no_shape, c_loc(copy), units, description, status)
+  end subroutine result_file_write_scalar
+
+  !> An integer scalar dataset (h5py shape ()), e.g. a count of steps.
+  subroutine result_file_write_count(self, name, value, units, description, status)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: name, units, description
+    integer, intent(in) :: value
+    type(status_t), intent(inout) :: status
+    integer, target :: copy
+    integer(hsize_t) :: no_shape(0)
+    copy = value
+    call write_dataset(self, name, H5T_NATIVE_INTEGER, no_shape, c_loc(copy), units, description, status)
+  end subroutine result_file_write_count
+
+  !> A text as a scalar variable-length UTF-8 string dataset (units '').
   subroutine result_file_write_text(self, name, text, description, status)
     class(result_file_t), intent(inout) :: self
     character(len=*), intent(in) :: name, text, description
     type(status_t), intent(inout) :: status
-    integer :: hdferr
-    call ensure_groups(self%file_id, name, hdferr)
-    if (hdferr == 0) call h5ltmake_dataset_string_f(self%file_id, name, text, hdferr)
-    call describe(self, name, '', description, hdferr, status)
+    character(kind=c_char), allocatable, target :: buffer(:)
+    type(c_ptr), target :: pointers(1)
+    integer(hid_t) :: type_id
+    integer(hsize_t) :: no_shape(0)
+    integer :: hdferr, err
+    if (.not. status%ok() .or. self%file_id < 0) return
+    call c_string(text, buffer)
+    pointers(1) = c_loc(buffer)
+    call utf8_string_type(type_id, hdferr)
+    if (hdferr /= 0) then
+      call set_status(status, STATUS_IO, 'cannot write dataset "'//name//'" to "'//self%temporary_path//'"')
+      return
+    end if
+    call write_dataset(self, name, type_id, no_shape, c_loc(pointers), '', description, status)
+    call h5tclose_f(type_id, err)
   end subroutine result_file_write_text
 
-  !> A string attribute on an existing object ('/' for the file).
-  subroutine result_file_set_attribute(self, object, name, value, status)
+  !> A text attribute on an existing object ('/' for the file).
+  subroutine set_attribute_text(self, object, name, value, status)
     class(result_file_t), intent(inout) :: self
     character(len=*), intent(in) :: object, name, value
     type(status_t), intent(inout) :: status
     integer :: hdferr
-    call h5ltset_attribute_string_f(self%file_id, object, name, value, hdferr)
+    if (.not. status%ok() .or. self%file_id < 0) return
+    call write_string_attribute(self%file_id, object, name, value, hdferr)
+    call attribute_status(self, object, name, hdferr, status)
+  end subroutine set_attribute_text
+
+  !> A real scalar attribute (the unit belongs in its name, e.g. flow_rate_m3_per_s).
+  subroutine set_attribute_real(self, object, name, value, status)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: object, name
+    real(wp), intent(in) :: value
+    type(status_t), intent(inout) :: status
+    real(wp), target :: copy
+    integer(hsize_t) :: no_shape(0)
+    integer :: hdferr
+    if (.not. status%ok() .or. self%file_id < 0) return
+    copy = value
+    call write_attribute(self%file_id, object, name, H5T_NATIVE_DOUBLE, no_shape, c_loc(copy), hdferr)
+    call attribute_status(self, object, name, hdferr, status)
+  end subroutine set_attribute_real
+
+  !> A real array attribute (h5py shape (n,)).
+  subroutine set_attribute_reals(self, object, name, values, status)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: object, name
+    real(wp), intent(in), target, contiguous :: values(:)
+    type(status_t), intent(inout) :: status
+    integer :: hdferr
+    if (.not. status%ok() .or. self%file_id < 0) return
+    call write_attribute(self%file_id, object, name, H5T_NATIVE_DOUBLE, shape(values, kind=hsize_t), &
+                         c_loc(values), hdferr)
+    call attribute_status(self, object, name, hdferr, status)
+  end subroutine set_attribute_reals
+
+  !> An integer scalar attribute.
+  subroutine set_attribute_integer(self, object, name, value, status)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: object, name
+    integer, intent(in) :: value
+    type(status_t), intent(inout) :: status
+    integer, target :: copy
+    integer(hsize_t) :: no_shape(0)
+    integer :: hdferr
+    if (.not. status%ok() .or. self%file_id < 0) return
+    copy = value
+    call write_attribute(self%file_id, object, name, H5T_NATIVE_INTEGER, no_shape, c_loc(copy), hdferr)
+    call attribute_status(self, object, name, hdferr, status)
+  end subroutine set_attribute_integer
+
+  subroutine attribute_status(self, object, name, hdferr, status)
+    class(result_file_t), intent(in) :: self
+    character(len=*), intent(in) :: object, name
+    integer, intent(in) :: hdferr
+    type(status_t), intent(inout) :: status
     if (hdferr /= 0) call set_status(status, STATUS_IO, 'cannot write attribute "'//name// &
                                      '" of "'//object//'" in "'//self%temporary_path//'"')
-  end subroutine result_file_set_attribute
+  end subroutine attribute_status
+
+  !> Makes the 1-d dataset `name` a dimension scale (named after its last
+  !> path component), to be attached with attach_scale.
+  subroutine result_file_make_scale(self, name, status)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: name
+    type(status_t), intent(inout) :: status
+    integer(hid_t) :: dataset_id
+    integer :: hdferr, err, k
+    if (.not. status%ok() .or. self%file_id < 0) return
+    k = find_written(self, name)
+    if (k == 0) then
+      call set_status(status, STATUS_IO, 'dimension scale "'//name//'" was not written')
+      return
+    end if
+    call h5dopen_f(self%file_id, name, dataset_id, hdferr)
+    if (hdferr == 0) then
+      call h5dsset_scale_f(dataset_id, hdferr, name(index(name, '/', back=.true.) + 1:))
+      call h5dclose_f(dataset_id, err)
+    end if
+    if (hdferr /= 0) then
+      call set_status(status, STATUS_IO, 'cannot make "'//name//'" a dimension scale in "'// &
+                      self%temporary_path//'"')
+      return
+    end if
+    self%written(k)%is_scale = .true.
+  end subroutine result_file_make_scale
+
+  !> Attaches the dimension scale `scale` to every dataset written so far
+  !> under the group `under` (and its subgroups) whose numpy axis `axis`
+  !> (default 0, the first index in h5py; the last in Fortran) has the
+  !> scale's length and no scale yet: attach a subgroup's own scale first
+  !> (/water/table/arc_length before /water/time). Scales are left alone
+  !> (HDF5 does not attach scales to scales).
+  subroutine result_file_attach_scale(self, scale, under, status, axis)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: scale, under
+    type(status_t), intent(inout) :: status
+    integer, intent(in), optional :: axis
+    integer(hid_t) :: scale_id, dataset_id
+    integer :: hdferr, err, k, s, numpy_axis, fortran_dim
+    character(len=:), allocatable :: prefix
+    if (.not. status%ok() .or. self%file_id < 0) return
+    numpy_axis = 0
+    if (present(axis)) numpy_axis = axis
+    s = find_written(self, scale)
+    if (s == 0) then
+      call set_status(status, STATUS_IO, 'dimension scale "'//scale//'" was not written')
+      return
+    end if
+    if (.not. self%written(s)%is_scale) then
+      call set_status(status, STATUS_IO, '"'//scale//'" is not a dimension scale (make_scale first)')
+      return
+    end if
+    prefix = under
+    if (prefix(len(prefix):) /= '/') prefix = prefix//'/'
+    call h5dopen_f(self%file_id, scale, scale_id, hdferr)
+    do k = 1, self%n_written
+      if (hdferr /= 0) exit
+      associate (w => self%written(k))
+        if (w%is_scale .or. index(w%name, prefix) /= 1) cycle
+        if (size(w%shape) <= numpy_axis) cycle
+        fortran_dim = size(w%shape) - numpy_axis
+        if (w%scaled(fortran_dim) .or. w%shape(fortran_dim) /= self%written(s)%shape(1)) cycle
+        call h5dopen_f(self%file_id, w%name, dataset_id, hdferr)
+        if (hdferr /= 0) exit
+        ! the Fortran binding numbers dimensions as C (numpy) does, from 1
+        call h5dsattach_scale_f(dataset_id, scale_id, numpy_axis + 1, hdferr)
+        call h5dclose_f(dataset_id, err)
+        w%scaled(fortran_dim) = .true.
+      end associate
+    end do
+    call h5dclose_f(scale_id, err)
+    if (hdferr /= 0) call set_status(status, STATUS_IO, 'cannot attach the dimension scale "'//scale// &
+                                     '" under "'//under//'" in "'//self%temporary_path//'"')
+  end subroutine result_file_attach_scale
+
+  integer function find_written(self, name) result(k)
+    class(result_file_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    do k = self%n_written, 1, -1
+      if (self%written(k)%name == name) return
+    end do
+    k = 0
+  end function find_written
 
   !> Marks the file complete (or incomplete, with the reason), closes it and
   !> renames it to its final name.
@@ -190,16 +471,18 @@ contains
     logical, intent(in) :: complete
     character(len=*), intent(in) :: message
     type(status_t), intent(inout) :: status
-    integer :: hdferr
+    integer :: hdferr, err
 
     if (self%file_id < 0) return
     if (complete) then
-      call h5ltset_attribute_string_f(self%file_id, '/', 'status', 'complete', hdferr)
+      call write_string_attribute(self%file_id, '/', 'status', 'complete', hdferr)
     else
-      call h5ltset_attribute_string_f(self%file_id, '/', 'status', 'incomplete', hdferr)
+      call write_string_attribute(self%file_id, '/', 'status', 'incomplete', hdferr)
     end if
-    call h5ltset_attribute_string_f(self%file_id, '/', 'status_message', message, hdferr)
-    call h5fclose_f(self%file_id, hdferr)
+    call write_string_attribute(self%file_id, '/', 'status_message', message, err)
+    if (hdferr == 0) hdferr = err
+    call h5fclose_f(self%file_id, err)
+    if (hdferr == 0) hdferr = err
     self%file_id = -1
     if (hdferr /= 0) then
       call set_status(status, STATUS_IO, 'cannot close the result file "'//self%temporary_path//'"')
@@ -209,4 +492,74 @@ contains
       call set_status(status, STATUS_IO, 'cannot rename "'//self%temporary_path//'" to "'// &
                       self%path//'"')
   end subroutine result_file_finish
+
+  !> The memory and file type of our strings: variable length, UTF-8.
+  subroutine utf8_string_type(type_id, hdferr)
+    integer(hid_t), intent(out) :: type_id
+    integer, intent(out) :: hdferr
+    call h5tcopy_f(H5T_STRING, type_id, hdferr)
+    if (hdferr == 0) call h5tset_cset_f(type_id, H5T_CSET_UTF8_F, hdferr)
+  end subroutine utf8_string_type
+
+  !> `text` with a terminating NUL, as the C library reads variable-length strings.
+  pure subroutine c_string(text, buffer)
+    character(len=*), intent(in) :: text
+    character(kind=c_char), allocatable, intent(out) :: buffer(:)
+    integer :: i
+    allocate (buffer(len(text) + 1))
+    do i = 1, len(text)
+      buffer(i) = text(i:i)
+    end do
+    buffer(len(text) + 1) = c_null_char
+  end subroutine c_string
+
+  !> A scalar variable-length UTF-8 string attribute (replaced if present).
+  subroutine write_string_attribute(file_id, object, name, value, hdferr)
+    integer(hid_t), intent(in) :: file_id
+    character(len=*), intent(in) :: object, name, value
+    integer, intent(out) :: hdferr
+    character(kind=c_char), allocatable, target :: buffer(:)
+    type(c_ptr), target :: pointers(1)
+    integer(hid_t) :: type_id
+    integer(hsize_t) :: no_shape(0)
+    integer :: err
+    call c_string(value, buffer)
+    pointers(1) = c_loc(buffer)
+    call utf8_string_type(type_id, hdferr)
+    if (hdferr /= 0) return
+    call write_attribute(file_id, object, name, type_id, no_shape, c_loc(pointers), hdferr)
+    call h5tclose_f(type_id, err)
+  end subroutine write_string_attribute
+
+  !> The one attribute writer: `shape` in Fortran order (size 0: a scalar).
+  subroutine write_attribute(file_id, object, name, type_id, shape, buffer, hdferr)
+    integer(hid_t), intent(in) :: file_id, type_id
+    character(len=*), intent(in) :: object, name
+    integer(hsize_t), intent(in) :: shape(:)
+    type(c_ptr), intent(in) :: buffer
+    integer, intent(out) :: hdferr
+    integer(hid_t) :: object_id, space_id, attribute_id
+    logical :: exists
+    integer :: err
+    call h5oopen_f(file_id, object, object_id, hdferr)
+    if (hdferr /= 0) return
+    call h5aexists_f(object_id, name, exists, hdferr)
+    if (hdferr == 0 .and. exists) call h5adelete_f(object_id, name, hdferr)
+    if (hdferr == 0) then
+      if (size(shape) == 0) then
+        call h5screate_f(H5S_SCALAR_F, space_id, hdferr)
+      else
+        call h5screate_simple_f(size(shape), shape, space_id, hdferr)
+      end if
+      if (hdferr == 0) then
+        call h5acreate_f(object_id, name, type_id, space_id, attribute_id, hdferr)
+        if (hdferr == 0) then
+          call h5awrite_f(attribute_id, type_id, buffer, hdferr)
+          call h5aclose_f(attribute_id, err)
+        end if
+        call h5sclose_f(space_id, err)
+      end if
+    end if
+    call h5oclose_f(object_id, err)
+  end subroutine write_attribute
 end module io_hdf5

@@ -1,6 +1,6 @@
 !> Input groups of the multibody scenarios (&pendulum, &fourbar, &sled) with
 !> their checks, and the writer of a mechanism's time series into a result file
-!> (layout in docs/outputs_multibody.md).
+!> (layout in docs/outputs.md).
 module io_mechanism_config
   use base_kinds, only: wp
   use base_text, only: format_integer
@@ -11,7 +11,7 @@ module io_mechanism_config
   use kinetostatics_recorder, only: mechanism_series_t
   use io_input, only: input_text_t, namelist_read_error, check_positive, check_nonnegative, &
     check_finite, check_finite_vector, check_range, invalid, format_real
-  use io_hdf5, only: result_file_t
+  use io_hdf5, only: result_file_t, units_per_second
   implicit none (type, external)
   private
   public :: pendulum_config_t, read_pendulum_config, fourbar_config_t, read_fourbar_config
@@ -187,46 +187,54 @@ contains
     config%qd0 = [du0, dv0, dphi0]
   end subroutine read_sled_config
 
-  !> Writes /<scenario>/... (see docs/outputs_multibody.md).
-  subroutine write_mechanism_series(file, scenario, input, title, s, stats, cpu, q_units, status)
+  !> Writes /<scenario>/... (see docs/outputs.md).
+  subroutine write_mechanism_series(file, scenario, input, title, s, stats, cpu, q_units, beta_units, status)
     type(result_file_t), intent(inout) :: file
     character(len=*), intent(in) :: scenario, title
     type(input_text_t), intent(in) :: input
     type(mechanism_series_t), intent(in) :: s
     type(ode_stats_t), intent(in) :: stats
     real(wp), intent(in) :: cpu
-    character(len=*), intent(in) :: q_units(:)
+    character(len=*), intent(in) :: q_units(:)      ! of each generalized coordinate
+    character(len=*), intent(in) :: beta_units(:)   ! of each dependent coordinate
     type(status_t), intent(inout) :: status
-    character(len=:), allocatable :: g, b
+    character(len=:), allocatable :: g, b, residual_units
     integer :: n, k
 
     n = s%n
     g = '/'//scenario//'/'
-    call file%set_attribute('/', 'scenario', scenario, status)
-    call file%set_attribute('/', 'title', trim(title), status)
-    call file%write_text('/input/namelist', input%text(), 'the input namelist text of this run', status)
-    call file%write_text('/input/source', input%name, 'where the input came from', status)
+    call file%write_provenance(scenario, trim(title), input%name, input%text(), status)
     call file%write_vector(g//'time', s%time(:n), 's', 'output times', status)
     do k = 1, s%f
       b = g//'coordinates/'//trim(s%q_names(k))
       call file%write_vector(b//'/value', s%q(k, :n), trim(q_units(k)), 'generalized coordinate', status)
-      call file%write_vector(b//'/rate', s%qd(k, :n), trim(q_units(k))//'/s', 'its time derivative', status)
-      call file%write_vector(b//'/acceleration', s%qdd(k, :n), trim(q_units(k))//'/s^2', &
+      call file%write_vector(b//'/rate', s%qd(k, :n), units_per_second(trim(q_units(k))), 'its time derivative', &
+                             status)
+      call file%write_vector(b//'/acceleration', s%qdd(k, :n), units_per_second(trim(q_units(k)), 2), &
                              'its second time derivative', status)
     end do
     do k = 1, s%r
       call file%write_vector(g//'dependent/'//trim(s%beta_names(k)), s%beta(k, :n), &
-                             'rad or surface parameter', 'dependent coordinate fixed by the closure', status)
+                             trim(beta_units(k)), 'dependent coordinate fixed by the closure', status)
       call file%write_vector(g//'cut_forces/'//trim(s%closure_names(k)), s%lambda(k, :n), &
-                             'N (plane-point measurements)', 'cut force lambda of the closure measurement', status)
+                             'N', 'cut force lambda of the closure measurement (plane-point)', status)
     end do
     if (s%r > 0) call file%write_vector(g//'closure_residual', s%closure(:n), 'm', &
                                         'max |g - target| over the closure measurements', status)
     call file%write_vector(g//'kinetic_energy', s%kinetic(:n), 'J', 'kinetic energy of all bodies', status)
     call file%write_vector(g//'potential_energy', s%potential(:n), 'J', 'potential energy -m g.r_S', status)
     call file%write_vector(g//'energy', s%kinetic(:n) + s%potential(:n), 'J', 'kinetic + potential', status)
-    call file%write_vector(g//'dynamics_residual', s%residual(:n), 'N or N m', &
-      'max |Q_bar| of the inverse dynamics at the recorded state (a consistency check, ~0)', status)
+    ! generalized forces are N m along angles and N along lengths
+    if (all(q_units == 'rad')) then
+      residual_units = 'N m'
+    else if (all(q_units == 'm')) then
+      residual_units = 'N'
+    else
+      residual_units = '1'
+    end if
+    call file%write_vector(g//'dynamics_residual', s%residual(:n), residual_units, &
+      'max |Q_bar| of the inverse dynamics at the recorded state (a consistency check, ~0); '// &
+      'units 1: the coordinates mix angles (N m) and lengths (N)', status)
     do k = 1, s%nb
       b = g//'bodies/'//trim(s%body_names(k))
       call file%write_matrix(b//'/position', s%body_r(:, k, :n), 'm', 'origin of the body frame (3 x n)', status)
@@ -244,9 +252,13 @@ contains
                              'normal force on the body along the surface normal z_D', status)
       call file%write_matrix(b//'/friction_force', s%friction(:, k, :n), 'N', 'friction force (3 x n)', status)
     end do
-    call file%write_integers('/statistics/steps', [int(stats%steps)], '1', 'integrator steps', status)
-    call file%write_integers('/statistics/rhs_evaluations', [int(stats%rhs_evaluations)], '1', &
-                             'right-hand-side evaluations', status)
-    call file%write_vector('/statistics/cpu_time', [cpu], 's', 'CPU time of the integration', status)
+    if (n > 0) then
+      call file%make_scale(g//'time', status)
+      call file%attach_scale(g//'time', g, status)
+    end if
+    call file%write_count('/statistics/steps', int(stats%steps), '1', 'integrator steps', status)
+    call file%write_count('/statistics/rhs_evaluations', int(stats%rhs_evaluations), '1', &
+                          'right-hand-side evaluations', status)
+    call file%write_scalar('/statistics/cpu_time', cpu, 's', 'CPU time of the integration', status)
   end subroutine write_mechanism_series
 end module io_mechanism_config

@@ -9,7 +9,7 @@ module scenarios_geometry
   use base_text, only: format_integer
   use base_status, only: status_t, prefix_status
   use base_log, only: log_info
-  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_surface, only: surface_t
   use geometry_curve, only: curve_point_t
   use geometry_curve_frame, only: curve_frame_t
   use geometry_tube, only: tube_surface_t
@@ -17,6 +17,7 @@ module scenarios_geometry
   use io_run_config, only: run_config_t
   use io_geometry_config, only: read_geometry_config, geometry_groups
   use io_hdf5, only: result_file_t
+  use io_surface_grid, only: write_surface_grid, evenly_spaced
   implicit none (type, external)
   private
   public :: run_geometry, geometry_scenario_groups
@@ -43,10 +44,7 @@ contains
     if (.not. status%ok()) return
     call log_info('geometry: ' // surface%describe())
 
-    call file%set_attribute('/', 'scenario', 'geometry', work)
-    call file%set_attribute('/', 'title', trim(run%title), work)
-    call file%write_text('/input/namelist', input%text(), 'the input namelist text of this run', work)
-    call file%write_text('/input/source', input%name, 'where the input came from', work)
+    call file%write_provenance('geometry', trim(run%title), input%name, input%text(), work)
     call file%set_attribute('/', 'surface', surface%describe(), work)
     if (work%ok()) call write_grid(file, surface, n_u, n_v, work)
     select type (surface)
@@ -90,26 +88,10 @@ contains
     class(surface_t), intent(in) :: surface
     integer, intent(in) :: n_u, n_v
     type(status_t), intent(inout) :: status
-    real(wp), allocatable :: x(:, :), y(:, :), z(:, :), u(:), v(:)
     real(wp) :: u_min, u_max, v_min, v_max
-    type(surface_point_t) :: p
-    integer :: i, j
     call surface%domain(u_min, u_max, v_min, v_max)
-    allocate (x(n_v, n_u), y(n_v, n_u), z(n_v, n_u))
-    u = [(u_min + (u_max - u_min)*i/real(n_u - 1, wp), i=0, n_u - 1)]
-    v = [(v_min + (v_max - v_min)*j/real(n_v - 1, wp), j=0, n_v - 1)]
-    do i = 1, n_u
-      do j = 1, n_v
-        call surface%evaluate(u(i), v(j), 0, p, status)
-        if (.not. status%ok()) return
-        x(j, i) = p%r(1); y(j, i) = p%r(2); z(j, i) = p%r(3)
-      end do
-    end do
-    call file%write_vector('/geometry/surface/u', u, 'surface parameter', 'grid values of u', status)
-    call file%write_vector('/geometry/surface/v', v, 'surface parameter', 'grid values of v', status)
-    call file%write_matrix('/geometry/surface/x', x, 'm', 'x of r(u, v); Fortran (n_v, n_u), h5py (n_u, n_v)', status)
-    call file%write_matrix('/geometry/surface/y', y, 'm', 'y of r(u, v); Fortran (n_v, n_u), h5py (n_u, n_v)', status)
-    call file%write_matrix('/geometry/surface/z', z, 'm', 'z of r(u, v); Fortran (n_v, n_u), h5py (n_u, n_v)', status)
+    call write_surface_grid(file, surface, evenly_spaced(u_min, u_max, n_u), evenly_spaced(v_min, v_max, n_v), &
+                            status)
   end subroutine write_grid
 
   subroutine write_centerline(file, tube, n, status)
@@ -123,7 +105,15 @@ contains
     type(curve_frame_t) :: f
     type(curve_point_t) :: c
     integer :: i
+    character(len=:), allocatable :: speed_units, chi_u_units
     call tube%domain(u_min, u_max, v_min, v_max)
+    select case (tube%centerline%parameter_unit())   ! units of ds/du and d chi/du
+    case ('m'); speed_units = '1'; chi_u_units = '1/m^2'
+    case ('1'); speed_units = 'm'; chi_u_units = '1/m'
+    case default
+      speed_units = 'm/'//tube%centerline%parameter_unit()
+      chi_u_units = '1/(m '//tube%centerline%parameter_unit()//')'
+    end select
     allocate (u(n), s(n), points(3, n), xa(3, n), ya(3, n), za(3, n), chi(n), chi_u(n), tangent_speed(n))
     do i = 1, n
       u(i) = u_min + (u_max - u_min)*(i - 1)/real(n - 1, wp)
@@ -135,17 +125,18 @@ contains
       xa(:, i) = f%x(:, 0); ya(:, i) = f%y(:, 0); za(:, i) = f%z(:, 0)
       chi(i) = f%chi; chi_u(i) = f%chi_u
     end do
-    call file%write_vector('/geometry/centerline/u', u, 'curve parameter', &
+    call file%write_vector('/geometry/centerline/u', u, tube%centerline%parameter_unit(), &
                            'centerline parameter u (horizontal arc length in m for slides)', status)
     call file%write_vector('/geometry/centerline/arc_length', s, 'm', 'arc length s(u) from the start', status)
     call file%write_matrix('/geometry/centerline/points', points, 'm', 'c(u) (3 x n)', status)
-    call file%write_vector('/geometry/centerline/speed', tangent_speed, 'm/curve parameter', '|c_u| = ds/du', status)
+    call file%write_vector('/geometry/centerline/speed', tangent_speed, speed_units, '|c_u| = ds/du', status)
     call file%write_matrix('/geometry/centerline/frame_x', xa, '1', 'frame x axis (tangent, 3.61) (3 x n)', status)
     call file%write_matrix('/geometry/centerline/frame_y', ya, '1', 'frame y axis (3.62) (3 x n)', status)
     call file%write_matrix('/geometry/centerline/frame_z', za, '1', 'frame z axis (3.63) (3 x n)', status)
     call file%write_vector('/geometry/centerline/chi', chi, '1/m', 'centerline curvature chi (4.8)', status)
-    call file%write_vector('/geometry/centerline/chi_u', chi_u, '1/(m curve parameter)', &
-                           'd chi/du (4.9)', status)
-    call file%write_vector('/geometry/centerline/length', [tube%length()], 'm', 'total centerline length', status)
+    call file%write_vector('/geometry/centerline/chi_u', chi_u, chi_u_units, 'd chi/du (4.9)', status)
+    call file%write_scalar('/geometry/centerline/length', tube%length(), 'm', 'total centerline length', status)
+    call file%make_scale('/geometry/centerline/arc_length', status)
+    call file%attach_scale('/geometry/centerline/arc_length', '/geometry/centerline', status)
   end subroutine write_centerline
 end module scenarios_geometry

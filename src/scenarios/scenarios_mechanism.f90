@@ -13,6 +13,8 @@ module scenarios_mechanism
   use io_solver_config, only: solver_config_t
   use io_mechanism_config, only: write_mechanism_series
   use io_hdf5, only: result_file_t
+  use io_surface_grid, only: write_surface_grid_around
+  use geometry_surface, only: surface_t
   implicit none (type, external)
   private
   public :: run_mechanism
@@ -20,15 +22,16 @@ module scenarios_mechanism
 contains
 
   !> The common run of a multibody scenario from y0 = [q0, q0'].
-  subroutine run_mechanism(scenario, input, run, solver, sys, y0, q_units, status)
+  subroutine run_mechanism(scenario, input, run, solver, sys, y0, q_units, beta_units, status, surface)
     character(len=*), intent(in) :: scenario
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
     type(solver_config_t), intent(in) :: solver
     type(mechanism_ode_t), intent(inout), target :: sys
     real(wp), intent(in) :: y0(:)
-    character(len=*), intent(in) :: q_units(:)
+    character(len=*), intent(in) :: q_units(:), beta_units(:)   ! units of the q and of the dependent beta
     type(status_t), intent(inout) :: status
+    class(surface_t), intent(in), optional :: surface   ! the surface of the contacts, written as a grid
     type(result_file_t) :: file
     type(mechanism_series_t) :: series
     type(ode_stats_t) :: stats
@@ -47,7 +50,11 @@ contains
     call integrate_mechanism(sys, y0, solver%options, solver%duration, solver%output_step, series, stats, &
                              cpu, run_status)
     if (.not. run_status%ok()) call prefix_status(run_status, scenario)
-    call write_mechanism_series(file, scenario, input, run%title, series, stats, cpu, q_units, write_status)
+    call write_mechanism_series(file, scenario, input, run%title, series, stats, cpu, q_units, beta_units, &
+                                write_status)
+    ! the grid around the first contact's path (u, v are its first two coordinates)
+    if (present(surface)) call write_surface_grid_around(file, surface, series%q(1, :series%n), &
+                                                         series%q(2, :series%n), write_status)
     if (run_status%ok()) then
       call file%finish(write_status%ok(), write_status%text(), write_status)
     else

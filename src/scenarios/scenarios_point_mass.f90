@@ -13,7 +13,8 @@ module scenarios_point_mass
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_config, only: read_surface_config
   use io_point_mass_config, only: point_mass_config_t, read_point_mass_config
-  use io_hdf5, only: result_file_t
+  use io_hdf5, only: result_file_t, units_per_second
+  use io_surface_grid, only: write_surface_grid_around
   implicit none (type, external)
   private
   public :: run_point_mass, build_point_mass, point_mass_groups
@@ -122,7 +123,7 @@ contains
     if (.not. run_status%ok()) call prefix_status(run_status, 'point_mass: run stopped at t = '// &
                                                   format_real(series%time(max(series%n, 1)))//' s')
 
-    call write_series(file, input, run, series, integrator%statistics(), cpu_end - cpu_start, write_status)
+    call write_series(file, input, run, model, series, integrator%statistics(), cpu_end - cpu_start, write_status)
     if (run_status%ok()) then
       if (write_status%ok()) then
         call file%finish(.true., 'ok: '//outcome, write_status)
@@ -176,27 +177,27 @@ contains
     s%frame(:, :, i) = state%frame
   end subroutine record
 
-  subroutine write_series(file, input, run, s, stats, cpu, status)
+  subroutine write_series(file, input, run, model, s, stats, cpu, status)
     type(result_file_t), intent(inout) :: file
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
+    type(point_mass_t), intent(in) :: model
     type(series_t), intent(in) :: s
     type(ode_stats_t), intent(in) :: stats
     real(wp), intent(in) :: cpu
     type(status_t), intent(inout) :: status
     integer :: n
     character(len=*), parameter :: g = '/point_mass/'
+    character(len=:), allocatable :: uu, vu   ! units of u and v of this surface
 
     n = s%n
-    call file%set_attribute('/', 'scenario', 'point_mass', status)
-    call file%set_attribute('/', 'title', trim(run%title), status)
-    call file%write_text('/input/namelist', input%text(), 'the input namelist text of this run', status)
-    call file%write_text('/input/source', input%name, 'where the input came from', status)
+    call model%surface%parameter_units(uu, vu)
+    call file%write_provenance('point_mass', trim(run%title), input%name, input%text(), status)
     call file%write_vector(g//'time', s%time(:n), 's', 'time', status)
-    call file%write_vector(g//'u', s%u(:n), 'surface parameter', 'surface coordinate u', status)
-    call file%write_vector(g//'v', s%v(:n), 'surface parameter', 'surface coordinate v', status)
-    call file%write_vector(g//'du', s%du(:n), 'surface parameter/s', 'rate of u', status)
-    call file%write_vector(g//'dv', s%dv(:n), 'surface parameter/s', 'rate of v', status)
+    call file%write_vector(g//'u', s%u(:n), uu, 'surface coordinate u', status)
+    call file%write_vector(g//'v', s%v(:n), vu, 'surface coordinate v', status)
+    call file%write_vector(g//'du', s%du(:n), units_per_second(uu), 'rate of u', status)
+    call file%write_vector(g//'dv', s%dv(:n), units_per_second(vu), 'rate of v', status)
     call file%write_matrix(g//'position', s%position(:, :n), 'm', 'position (3 x n)', status)
     call file%write_matrix(g//'velocity', s%velocity(:, :n), 'm/s', 'velocity (3 x n)', status)
     call file%write_matrix(g//'acceleration', s%acceleration(:, :n), 'm/s^2', 'acceleration (3 x n)', status)
@@ -211,12 +212,17 @@ contains
                            'work done on the mass by friction since t = 0 (<= 0)', status)
     call file%write_array3(g//'frame', s%frame(:, :, :n), '1', &
                            'Darboux frame (3 x 3 x n): columns x, y, z in world coordinates', status)
-    call file%write_integers('/statistics/steps', [int(stats%steps)], '1', 'integrator steps', status)
-    call file%write_integers('/statistics/rhs_evaluations', [int(stats%rhs_evaluations)], '1', &
-                             'right-hand-side evaluations', status)
-    call file%write_integers('/statistics/error_test_failures', [int(stats%error_test_failures)], '1', &
-                             'error test failures', status)
-    call file%write_vector('/statistics/cpu_time', [cpu], 's', 'CPU time of the integration', status)
+    if (n > 0) then
+      call file%make_scale(g//'time', status)
+      call file%attach_scale(g//'time', g, status)
+      call write_surface_grid_around(file, model%surface, s%u(:n), s%v(:n), status)
+    end if
+    call file%write_count('/statistics/steps', int(stats%steps), '1', 'integrator steps', status)
+    call file%write_count('/statistics/rhs_evaluations', int(stats%rhs_evaluations), '1', &
+                          'right-hand-side evaluations', status)
+    call file%write_count('/statistics/error_test_failures', int(stats%error_test_failures), '1', &
+                          'error test failures', status)
+    call file%write_scalar('/statistics/cpu_time', cpu, 's', 'CPU time of the integration', status)
   end subroutine write_series
 
   subroutine print_summary(model, s, stats, cpu, path, run_status, outcome)

@@ -31,6 +31,8 @@ contains
     type(sled_config_t) :: config
     class(surface_t), allocatable :: surface
     type(mechanism_ode_t), target :: sys
+    character(len=:), allocatable :: u_units, v_units
+    character(len=8) :: q_units(3), beta_units(3)
 
     call check_known_groups(input, sled_groups, status)
     if (status%ok()) call read_solver_config(input, solver, status)
@@ -44,7 +46,10 @@ contains
     end if
     call build_sled(config%params, surface, config%q0, sys%mechanism, status)
     if (.not. status%ok()) return
-    call run_mechanism('sled', input, run, solver, sys, [config%q0, config%qd0], &
-                       [character(len=18) :: 'surface parameter', 'surface parameter', 'rad'], status)
+    call surface%parameter_units(u_units, v_units)
+    q_units(1) = u_units; q_units(2) = v_units; q_units(3) = 'rad'   ! u, v, phi
+    beta_units(1) = 'rad'; beta_units(2) = u_units; beta_units(3) = v_units   ! pitch, u2, v2
+    call run_mechanism('sled', input, run, solver, sys, [config%q0, config%qd0], q_units, beta_units, status, &
+                       surface=surface)
   end subroutine run_sled
 end module scenarios_sled

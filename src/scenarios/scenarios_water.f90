@@ -10,7 +10,7 @@ module scenarios_water
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_tube, only: tube_surface_t
   use numerics_ode, only: ode_stats_t
-  use water_channel, only: analytic_tube_t
+  use water_channel, only: analytic_tube_t, channel_t
   use water_tube_channel, only: new_tube_channel
   use water_streamline, only: streamline_t, CORRECTION_FULL, CORRECTION_NO_RADIUS
   use water_flow, only: water_series_t, water_table_t, water_initial_state, simulate_water, &
@@ -20,13 +20,23 @@ module scenarios_water
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_config, only: read_surface_config
   use io_water_config, only: water_config_t, read_water_config, read_channel_config
-  use io_hdf5, only: result_file_t
+  use io_hdf5, only: result_file_t, units_per_second
+  use io_surface_grid, only: write_surface_grid, evenly_spaced
   implicit none (type, external)
   private
   public :: run_water, build_water, water_groups
 
   character(len=*), parameter :: water_groups(5) = [character(len=8) :: 'run', 'solver', 'surface', &
     'channel', 'water']
+  integer, parameter :: grid_n_u = 400, grid_n_v = 48   ! the written surface grid
+
+  !> A channel seen as a surface, to write the grid it ran on.
+  type, extends(surface_t) :: channel_surface_t
+    class(channel_t), allocatable :: channel
+  contains
+    procedure :: evaluate => channel_surface_evaluate
+    procedure :: parameter_units => channel_surface_units
+  end type channel_surface_t
 
 contains
 
@@ -181,20 +191,19 @@ contains
     character(len=*), parameter :: g = '/water/', t = '/water/table/', st = '/water/stations/'
     integer :: n, i
     character(len=16) :: mode
+    character(len=:), allocatable :: uu, vu   ! units of u and v of this channel
     real(wp), allocatable :: col(:)   ! a contiguous station column
 
     n = s%n
-    call file%set_attribute('/', 'scenario', 'water', status)
-    call file%set_attribute('/', 'title', trim(run%title), status)
-    call file%write_text('/input/namelist', input%text(), 'the input namelist text of this run', status)
-    call file%write_text('/input/source', input%name, 'where the input came from', status)
+    call model%channel%parameter_units(uu, vu)
+    call file%write_provenance('water', trim(run%title), input%name, input%text(), status)
     call file%write_vector(g//'time', s%time(:n), 's', 'time', status)
     call file%write_vector(g//'arc_length', s%arc_length(:n), 'm', &
                            'arc length of the centerline at the water point (from the slide start)', status)
-    call file%write_vector(g//'u', s%u(:n), 'surface parameter', 'surface coordinate u (along the slide)', status)
-    call file%write_vector(g//'v', s%v(:n), 'rad', 'surface coordinate v (across; pi/2 = bottom)', status)
-    call file%write_vector(g//'du', s%du(:n), 'surface parameter/s', 'rate of u', status)
-    call file%write_vector(g//'dv', s%dv(:n), 'rad/s', 'rate of v', status)
+    call file%write_vector(g//'u', s%u(:n), uu, 'surface coordinate u (along the slide)', status)
+    call file%write_vector(g//'v', s%v(:n), vu, 'surface coordinate v (across; pi/2 = bottom)', status)
+    call file%write_vector(g//'du', s%du(:n), units_per_second(uu), 'rate of u', status)
+    call file%write_vector(g//'dv', s%dv(:n), units_per_second(vu), 'rate of v', status)
     call file%write_matrix(g//'position', s%position(:, :n), 'm', 'streamline point (3 x n)', status)
     call file%write_matrix(g//'velocity', s%velocity(:, :n), 'm/s', 'water velocity (3 x n)', status)
     call file%write_vector(g//'speed', s%speed(:n), 'm/s', 'water speed w', status)
@@ -219,10 +228,11 @@ contains
                            'work done by friction since the start (<= 0)', status)
     call file%write_vector(g//'correction_work', s%correction_work(:n), 'J', &
                            'work done by the Saint-Venant term since the start', status)
-    call file%write_matrix(g//'left_edge', s%left_edge(:, :n), 'surface parameters', &
-                           'left water edge (u, v) (2 x n), towards +v (4.25)', status)
-    call file%write_matrix(g//'right_edge', s%right_edge(:, :n), 'surface parameters', &
-                           'right water edge (u, v) (2 x n) (4.26)', status)
+    call file%write_vector(g//'left_edge_u', s%left_edge(1, :n), uu, 'u of the left water edge, towards +v (4.25)', &
+                           status)
+    call file%write_vector(g//'left_edge_v', s%left_edge(2, :n), vu, 'v of the left water edge (4.25)', status)
+    call file%write_vector(g//'right_edge_u', s%right_edge(1, :n), uu, 'u of the right water edge (4.26)', status)
+    call file%write_vector(g//'right_edge_v', s%right_edge(2, :n), vu, 'v of the right water edge (4.26)', status)
     call file%write_matrix(g//'left_point', s%left_point(:, :n), 'm', 'left water edge point (3 x n)', status)
     call file%write_matrix(g//'right_point', s%right_point(:, :n), 'm', 'right water edge point (3 x n)', status)
     call file%write_integers(g//'edge_solved', s%edge_solved(:n), '1', &
@@ -230,40 +240,43 @@ contains
                              'failed, or edges off)', &
                              status)
     call file%set_attribute('/water', 'outcome', outcome_name(s%outcome), status)
-    call file%set_attribute('/water', 'flow_rate_m3_per_s', format_real(s%flow_rate), status)
+    call file%set_attribute('/water', 'flow_rate_m3_per_s', s%flow_rate, status)
     mode = 'off'
     if (model%correction == CORRECTION_FULL) mode = 'full'
     if (model%correction == CORRECTION_NO_RADIUS) mode = 'no_radius'
     call file%set_attribute('/water', 'correction', trim(mode), status)
-    call file%set_attribute('/water', 'friction_f1_f2_f3', format_real(model%f1)//' '//format_real(model%f2)// &
-                            ' '//format_real(model%f3), status)
+    call file%set_attribute('/water', 'friction_f1_f2_f3', [model%f1, model%f2, model%f3], status)
 
     call file%write_vector(t//'arc_length', table%arc_length, 'm', 'centerline arc length', status)
-    call file%write_vector(t//'u', table%u, 'surface parameter', 'u at that arc length', status)
+    call file%write_vector(t//'u', table%u, uu, 'u at that arc length', status)
     call file%write_vector(t//'time', table%time, 's', 'time the water point passes', status)
-    call file%write_vector(t//'v', table%v, 'rad', 'v of the water middle', status)
+    call file%write_vector(t//'v', table%v, vu, 'v of the water middle', status)
     call file%write_vector(t//'speed', table%speed, 'm/s', 'water speed', status)
     call file%write_vector(t//'height', table%height, 'm', 'water height', status)
     call file%write_vector(t//'width', table%width, 'm', 'water width', status)
     call file%write_vector(t//'beta', table%beta, 'rad', 'flow angle to the centerline', status)
-    call file%write_vector(t//'v_left', table%v_left, 'rad', 'v of the left edge', status)
-    call file%write_vector(t//'v_right', table%v_right, 'rad', 'v of the right edge', status)
+    call file%write_vector(t//'v_left', table%v_left, vu, 'v of the left edge', status)
+    call file%write_vector(t//'v_right', table%v_right, vu, 'v of the right edge', status)
+    if (size(table%arc_length) > 0) then
+      call file%make_scale(t//'arc_length', status)
+      call file%attach_scale(t//'arc_length', t, status)
+    end if
 
     if (size(s%stations) > 0) then
       call file%write_vector(st//'arc_length', config%stations, 'm', 'station arc length (input)', status)
       col = s%stations%u
-      call file%write_vector(st//'u', col, 'surface parameter', 'u of the station', status)
+      call file%write_vector(st//'u', col, uu, 'u of the station', status)
       col = s%stations%time
       call file%write_vector(st//'time', col, 's', 'time the water passes', status)
       col = s%stations%v
-      call file%write_vector(st//'v', col, 'rad', 'v of the streamline', status)
+      call file%write_vector(st//'v', col, vu, 'v of the streamline', status)
       col = s%stations%v_middle
-      call file%write_vector(st//'v_middle', col, 'rad', &
+      call file%write_vector(st//'v_middle', col, vu, &
                              'v of the middle between the edges (as measured, 4.32)', status)
       col = s%stations%v_left
-      call file%write_vector(st//'v_left', col, 'rad', 'v of the left edge', status)
+      call file%write_vector(st//'v_left', col, vu, 'v of the left edge', status)
       col = s%stations%v_right
-      call file%write_vector(st//'v_right', col, 'rad', 'v of the right edge', status)
+      call file%write_vector(st//'v_right', col, vu, 'v of the right edge', status)
       col = s%stations%speed
       call file%write_vector(st//'speed', col, 'm/s', 'water speed', status)
       col = s%stations%height
@@ -272,21 +285,62 @@ contains
       call file%write_vector(st//'width', col, 'm', 'water width', status)
       call file%write_integers(st//'reached', [(merge(1, 0, s%stations(i)%reached), i = 1, size(s%stations))], &
                                '1', '1 if the water reached the station', status)
+      call file%make_scale(st//'arc_length', status)
+      call file%attach_scale(st//'arc_length', st, status)
     end if
+    if (n > 0) then
+      call file%make_scale(g//'time', status)
+      call file%attach_scale(g//'time', '/water', status)
+    end if
+    call write_channel_grid(file, model%channel, status)
     call write_stats(file, s%stats, cpu, status)
   end subroutine write_results
+
+  !> The slide surface the water ran on: the whole u range, across the
+  !> section (a closed tube's full turn).
+  subroutine write_channel_grid(file, channel, status)
+    type(result_file_t), intent(inout) :: file
+    class(channel_t), intent(in) :: channel
+    type(status_t), intent(inout) :: status
+    type(channel_surface_t) :: surface
+    real(wp) :: u_min, u_max, v_min, v_max
+    real(wp), parameter :: full_turn = 2*acos(-1.0_wp)
+    call channel%u_range(u_min, u_max)
+    call channel%v_range(v_min, v_max)
+    if (v_min < -full_turn .or. v_max > 2*full_turn) then   ! a closed tube (+-huge): one turn
+      v_min = 0; v_max = full_turn
+    end if
+    allocate (surface%channel, source=channel)
+    call write_surface_grid(file, surface, evenly_spaced(u_min, u_max, grid_n_u), &
+                            evenly_spaced(v_min, v_max, grid_n_v), status)
+  end subroutine write_channel_grid
+
+  pure subroutine channel_surface_evaluate(self, u, v, order, p, status)
+    class(channel_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    call self%channel%evaluate(u, v, order, p, status)
+  end subroutine channel_surface_evaluate
+
+  pure subroutine channel_surface_units(self, u_units, v_units)
+    class(channel_surface_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    call self%channel%parameter_units(u_units, v_units)
+  end subroutine channel_surface_units
 
   subroutine write_stats(file, stats, cpu, status)
     type(result_file_t), intent(inout) :: file
     type(ode_stats_t), intent(in) :: stats
     real(wp), intent(in) :: cpu
     type(status_t), intent(inout) :: status
-    call file%write_integers('/statistics/steps', [int(stats%steps)], '1', 'integrator steps', status)
-    call file%write_integers('/statistics/rhs_evaluations', [int(stats%rhs_evaluations)], '1', &
-                             'right-hand-side evaluations', status)
-    call file%write_integers('/statistics/error_test_failures', [int(stats%error_test_failures)], '1', &
-                             'error test failures', status)
-    call file%write_vector('/statistics/cpu_time', [cpu], 's', 'CPU time of the water computation', status)
+    call file%write_count('/statistics/steps', int(stats%steps), '1', 'integrator steps', status)
+    call file%write_count('/statistics/rhs_evaluations', int(stats%rhs_evaluations), '1', &
+                          'right-hand-side evaluations', status)
+    call file%write_count('/statistics/error_test_failures', int(stats%error_test_failures), '1', &
+                          'error test failures', status)
+    call file%write_scalar('/statistics/cpu_time', cpu, 's', 'CPU time of the water computation', status)
   end subroutine write_stats
 
   subroutine print_summary(model, s, cpu, path, run_status)

@@ -52,6 +52,8 @@ module water_channel
     procedure :: arc_length => channel_arc_length
     procedure :: parameter_at_length => channel_parameter_at_length
     procedure :: describe => channel_describe
+    !> Units of u and v for result files (UDUNITS/pint text).
+    procedure :: parameter_units => channel_parameter_units
   end type channel_t
 
   abstract interface
@@ -104,6 +106,7 @@ module water_channel
     procedure :: circle_radius => tube_circle_radius
     procedure :: arc_length => tube_arc_length
     procedure :: describe => tube_describe
+    procedure :: parameter_units => tube_parameter_units
   end type analytic_tube_t
 
 contains
@@ -429,4 +432,21 @@ contains
     case default; text = 'straight circular tube'
     end select
   end function tube_describe
+
+  pure subroutine channel_parameter_units(self, u_units, v_units)
+    class(channel_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    associate (unused => self)
+    end associate
+    u_units = '1'; v_units = '1'
+  end subroutine channel_parameter_units
+
+  !> u: m along the straight and the S-bend, rad around the helix; v: rad.
+  pure subroutine tube_parameter_units(self, u_units, v_units)
+    class(analytic_tube_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    u_units = merge('rad', 'm  ', self%kind == TUBE_HELIX)
+    u_units = trim(u_units)
+    v_units = 'rad'
+  end subroutine tube_parameter_units
 end module water_channel

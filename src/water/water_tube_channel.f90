@@ -26,6 +26,7 @@ module water_tube_channel
     procedure :: arc_length => tc_arc_length
     procedure :: parameter_at_length => tc_parameter_at_length
     procedure :: describe => tc_describe
+    procedure :: parameter_units => tc_parameter_units
   end type tube_channel_t
 
 contains
@@ -114,4 +115,10 @@ contains
     character(len=:), allocatable :: text
     text = self%tube%describe()
   end function tc_describe
+
+  pure subroutine tc_parameter_units(self, u_units, v_units)
+    class(tube_channel_t), intent(in) :: self
+    character(len=:), allocatable, intent(out) :: u_units, v_units
+    call self%tube%parameter_units(u_units, v_units)
+  end subroutine tc_parameter_units
 end module water_tube_channel

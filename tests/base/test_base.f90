@@ -1,8 +1,9 @@
-!> Vectors, rotations and the status convention.
+!> Vectors, rotations, the status convention and SHA-256.
 program test_base
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_SOLVER
+  use base_sha256, only: sha256_hex
   use base_vector, only: cross, skew, unit_vector, rot_x, rot_y, rot_z, rotation_xyz, identity3, outer3
   use testing, only: check, check_close, check_close_array, finish_tests
   implicit none (type, external)
@@ -43,5 +44,17 @@ program test_base
   call set_status(status, STATUS_SOLVER, 'diverged')
   call prefix_status(status, 'loop 2')
   call check(.not. status%ok() .and. status%text() == 'loop 2: diverged', 'message with context: '//status%text())
+  ! SHA-256: the test vectors of FIPS 180-2 appendix B; 55 and 64 bytes (values
+  ! from Python's hashlib) sit at the one-block padding limit and a full block.
+  call check(sha256_hex('') == 'e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855', 'sha256 empty')
+  call check(sha256_hex('abc') == 'ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad', 'sha256 abc')
+  call check(sha256_hex('abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq') == &
+             '248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1', 'sha256 two blocks (56 bytes)')
+  call check(sha256_hex(repeat('a', 1000000)) == 'cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0', &
+             'sha256 one million a')
+  call check(sha256_hex(repeat('a', 55)) == '9f4390f8d30c2dd92ec9f095b65e2b9ae9b0a925a5258e241c9f1e910f734318', &
+             'sha256 55 bytes')
+  call check(sha256_hex(repeat('a', 64)) == 'ffe054fe7ae0cb6dc65c3af9b61d5209f439851db43d0ba5997337df154668eb', &
+             'sha256 64 bytes')
   call finish_tests('test_base')
 end program test_base

@@ -1,8 +1,11 @@
 !> Input text handling, the checks' messages, and the HDF5 result file life cycle
 !> (temporary name, rename on finish, units attributes, status marks).
 program test_io
-  use hdf5, only: hid_t, hsize_t, h5open_f, h5fopen_f, h5fclose_f, H5F_ACC_RDONLY_F
-  use h5lt, only: h5ltread_dataset_double_f, h5ltget_attribute_string_f
+  use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_f_pointer
+  use hdf5, only: hid_t, hsize_t, h5open_f, h5fopen_f, h5fclose_f, H5F_ACC_RDONLY_F, h5aopen_by_name_f, &
+                  h5aget_type_f, h5tis_variable_str_f, h5tget_cset_f, h5aread_f, h5tclose_f, h5aclose_f, &
+                  H5T_CSET_UTF8_F
+  use h5lt, only: h5ltread_dataset_double_f
   use base_kinds, only: wp
   use base_status, only: status_t, STATUS_INVALID_INPUT
   use io_input, only: input_text_t, input_from_text, check_positive, check_choice, format_real, &
@@ -57,8 +60,7 @@ contains
     character(len=*), parameter :: path = 'build_test_io_result.h5'
     integer(hid_t) :: id
     integer :: err
-    real(wp) :: back(3, 2)
-    character(len=32) :: text
+    real(wp) :: back(3, 2), scalar(1)
     logical :: exists
 
     call file%create(path, status)
@@ -67,6 +69,16 @@ contains
     call check(exists, 'written under the temporary name while open')
     call file%write_matrix('/group/sub/values', reshape([1.0_wp, 2.0_wp, 3.0_wp, 4.0_wp, 5.0_wp, 6.0_wp], [3, 2]), &
                            'm', 'six numbers', status)
+    call file%write_vector('/group/sub/time', [0.0_wp, 0.5_wp], 's', 'two times', status)
+    call file%write_scalar('/group/scalar', 2.5_wp, 'N', 'one number', status)
+    call file%set_attribute('/group', 'ratio', 0.25_wp, status)
+    call file%set_attribute('/group', 'label', 'ä text', status)
+    call file%make_scale('/group/sub/time', status)
+    call file%attach_scale('/group/sub/time', '/group', status)
+    call check(status%ok(), 'writers: '//status%text())
+    call file%attach_scale('/group/sub/values', '/group', status)
+    call check(index(status%text(), 'not a dimension scale') > 0, 'attach of a non-scale refused: '//status%text())
+    status = status_t()
     call file%finish(.false., 'stopped early on purpose', status)
     call check(status%ok(), 'finish: '//status%text())
     inquire (file=path//'.tmp', exist=exists)
@@ -79,12 +91,12 @@ contains
     call h5ltread_dataset_double_f(id, '/group/sub/values', back, [3_hsize_t, 2_hsize_t], err)
     call check_close_array(reshape(back, [6]), [1.0_wp, 2.0_wp, 3.0_wp, 4.0_wp, 5.0_wp, 6.0_wp], 0.0_wp, 0.0_wp, &
                            'values read back')
-    text = ''
-    call h5ltget_attribute_string_f(id, '/group/sub/values', 'units', text, err)
-    call check(text(1:1) == 'm' .and. err == 0, 'units attribute')
-    text = ''
-    call h5ltget_attribute_string_f(id, '/', 'status', text, err)
-    call check(text(1:10) == 'incomplete', 'status marked incomplete: '//text)
+    call h5ltread_dataset_double_f(id, '/group/scalar', scalar, [1_hsize_t], err)
+    call check(err == 0 .and. scalar(1) == 2.5_wp, 'scalar read back')
+    call check(read_text_attribute(id, '/group/sub/values', 'units') == 'm', 'units attribute')
+    call check(read_text_attribute(id, '/', 'status') == 'incomplete', 'status marked incomplete: '// &
+               read_text_attribute(id, '/', 'status'))
+    call check(read_text_attribute(id, '/group', 'label') == 'ä text', 'UTF-8 text read back')
     call h5fclose_f(id, err)
     open (newunit=err, file=path)
     close (err, status='delete')
@@ -93,4 +105,37 @@ contains
     call check(.not. status%ok() .and. index(status%text(), 'no/such/folder/x.h5') > 0, &
                'unwritable path reported: '//status%text())
   end subroutine result_file_life_cycle
+
+  !> A text attribute, checked to be a scalar variable-length UTF-8 string.
+  function read_text_attribute(file_id, object, name) result(text)
+    integer(hid_t), intent(in) :: file_id
+    character(len=*), intent(in) :: object, name
+    character(len=:), allocatable :: text
+    integer(hid_t) :: attribute_id, type_id
+    type(c_ptr), target :: pointer(1)
+    type(c_ptr) :: buffer
+    character(kind=c_char), pointer :: chars(:)
+    logical :: variable
+    integer :: err, cset, n
+    text = '(unreadable)'
+    call h5aopen_by_name_f(file_id, object, name, attribute_id, err)
+    if (err /= 0) return
+    call h5aget_type_f(attribute_id, type_id, err)
+    call h5tis_variable_str_f(type_id, variable, err)
+    call h5tget_cset_f(type_id, cset, err)
+    if (variable .and. cset == H5T_CSET_UTF8_F) then
+      buffer = c_loc(pointer)
+      call h5aread_f(attribute_id, type_id, buffer, err)
+      call c_f_pointer(pointer(1), chars, [4096])
+      n = 0
+      do while (chars(n + 1) /= c_null_char)   ! read up to the terminating NUL only
+        n = n + 1
+      end do
+      text = transfer(chars(:n), repeat(' ', n))
+    else
+      text = '(not a variable-length UTF-8 string)'
+    end if
+    call h5tclose_f(type_id, err)
+    call h5aclose_f(attribute_id, err)
+  end function read_text_attribute
 end program test_io

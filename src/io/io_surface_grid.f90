@@ -1,0 +1,90 @@
+!> The surface a run used, as a grid in every result file that has geometry:
+!> /geometry/surface/{u, v, x, y, z}, u and v dimension scales, x, y, z of
+!> h5py shape (n_u, n_v) (Fortran (n_v, n_u)): what the plot scripts draw and
+!> the XDMF file shows as a structured grid.
+module io_surface_grid
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  use geometry_surface, only: surface_t, surface_point_t
+  use io_hdf5, only: result_file_t
+  implicit none (type, external)
+  private
+  public :: write_surface_grid, write_surface_grid_around, evenly_spaced, surface_grid_group
+
+  character(len=*), parameter :: surface_grid_group = '/geometry/surface'
+
+contains
+
+  !> n evenly spaced values from a to b.
+  pure function evenly_spaced(a, b, n) result(values)
+    real(wp), intent(in) :: a, b
+    integer, intent(in) :: n
+    real(wp) :: values(n)
+    integer :: i
+    values = [(a + (b - a)*i/real(max(n - 1, 1), wp), i=0, n - 1)]
+  end function evenly_spaced
+
+  !> Evaluates `surface` on the grid u x v and writes it.
+  subroutine write_surface_grid(file, surface, u, v, status)
+    type(result_file_t), intent(inout) :: file
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: u(:), v(:)
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: x(:, :), y(:, :), z(:, :)
+    character(len=:), allocatable :: u_units, v_units
+    type(surface_point_t) :: p
+    integer :: i, j
+    character(len=*), parameter :: g = surface_grid_group
+    if (.not. status%ok()) return
+    allocate (x(size(v), size(u)), y(size(v), size(u)), z(size(v), size(u)))
+    do i = 1, size(u)
+      do j = 1, size(v)
+        call surface%evaluate(u(i), v(j), 0, p, status)
+        if (.not. status%ok()) return
+        x(j, i) = p%r(1); y(j, i) = p%r(2); z(j, i) = p%r(3)
+      end do
+    end do
+    call surface%parameter_units(u_units, v_units)
+    call file%write_vector(g//'/u', u, u_units, 'grid values of the surface parameter u', status)
+    call file%write_vector(g//'/v', v, v_units, 'grid values of the surface parameter v', status)
+    call file%write_matrix(g//'/x', x, 'm', 'x of r(u, v); h5py shape (n_u, n_v)', status)
+    call file%write_matrix(g//'/y', y, 'm', 'y of r(u, v); h5py shape (n_u, n_v)', status)
+    call file%write_matrix(g//'/z', z, 'm', 'z of r(u, v); h5py shape (n_u, n_v)', status)
+    call file%make_scale(g//'/u', status)
+    call file%make_scale(g//'/v', status)
+    call file%attach_scale(g//'/u', g, status, axis=0)
+    call file%attach_scale(g//'/v', g, status, axis=1)
+  end subroutine write_surface_grid
+
+  !> The surface around a path (u_path, v_path) on it: its whole parameter
+  !> box where that is finite (a closed tube, an ellipsoid), else the path's
+  !> box with a margin; 60 x 60 points.
+  subroutine write_surface_grid_around(file, surface, u_path, v_path, status)
+    type(result_file_t), intent(inout) :: file
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: u_path(:), v_path(:)
+    type(status_t), intent(inout) :: status
+    integer, parameter :: n = 60
+    real(wp) :: box(4), u_low, u_high, v_low, v_high
+    if (size(u_path) == 0) return
+    call surface%domain(box(1), box(2), box(3), box(4))
+    call around_path(u_path, box(1), box(2), u_low, u_high)
+    call around_path(v_path, box(3), box(4), v_low, v_high)
+    call write_surface_grid(file, surface, evenly_spaced(u_low, u_high, n), evenly_spaced(v_low, v_high, n), &
+                            status)
+  end subroutine write_surface_grid_around
+
+  pure subroutine around_path(path, low, high, from, to)
+    real(wp), intent(in) :: path(:), low, high
+    real(wp), intent(out) :: from, to
+    real(wp), parameter :: unbounded = 1e6_wp   ! a domain reaching beyond this is drawn around the path
+    real(wp) :: margin
+    if (low >= -unbounded .and. high <= unbounded) then
+      from = low; to = high
+      return
+    end if
+    margin = 0.25_wp*(maxval(path) - minval(path)) + 0.5_wp
+    from = max(low, minval(path) - margin)
+    to = min(high, maxval(path) + margin)
+  end subroutine around_path
+end module io_surface_grid

@@ -1,0 +1,178 @@
+"""Checks slidesim result files against the conventions and the layout tables
+of docs/outputs.md (run by result_conventions.sh).
+
+    check_results.py DOCS_OUTPUTS_MD FILE.h5 [FILE.h5 ...]
+
+For every file: strings are variable-length UTF-8 (h5py gives str); no
+attribute holds a number as text; every dataset has `units` (parsed by pint)
+and `description`; /statistics and documented scalars have shape (); every
+dataset of a scenario group has a dimension scale on axis 0 (and the surface
+grid on axis 1); the provenance attributes are present, `input_sha256` is the
+SHA-256 of /input/namelist. Against the docs: every dataset in the file is
+documented, with the documented shape (rank and fixed sizes) and units (where
+the docs give a fixed unit), and every documented dataset not marked
+"(when ...)" exists. Prints one line per failure; exit status 1 if any.
+"""
+import hashlib
+import re
+import sys
+
+import h5py
+import numpy as np
+import pint
+
+UNITS = pint.UnitRegistry()
+MULTIBODY = ('pendulum', 'fourbar', 'sled')
+# attributes the HDF5 dimension-scale API writes itself (fixed-length ASCII by its specification)
+DS_ATTRIBUTES = ('CLASS', 'NAME', 'REFERENCE_LIST', 'DIMENSION_LIST')
+NUMBER = r'[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?'
+PROVENANCE = ('scenario', 'title', 'status', 'status_message', 'layout_version', 'slidesim_version',
+              'git_commit', 'compiler', 'compiler_options', 'created_utc', 'host', 'input_sha256')
+failures = []
+
+
+def fail(path, message):
+    failures.append(f"{path}: {message}")
+
+
+def parse_docs(path):
+    """The dataset rows of docs/outputs.md: (regex, shape, units, required)."""
+    rows = []
+    for line in open(path, encoding='utf-8'):
+        row = line.strip()[1:-1] if line.startswith('| `/') else None
+        cells = [c.strip() for c in re.split(r'(?<!\\)\|', row)] if row else None
+        if not cells or len(cells) != 4:
+            continue
+        names = re.findall(r'`(/[^`]+)`', cells[0])
+        shape = cells[1]
+        units = [u.strip() for u in cells[2].split(',')]
+        required = '(when' not in cells[3]
+        for k, name in enumerate(names):
+            pattern = '^' + re.sub(r'<[a-z]+>', '[^/]+', re.escape(name).replace('\\<', '<').replace('\\>', '>')) + '$'
+            unit = units[k] if len(units) == len(names) else units[0]
+            rows.append((name, re.compile(pattern), shape, unit, required, cells[3]))
+    return rows
+
+
+def applies(row_name, scenario):
+    """Whether a docs row can occur in a file of this scenario."""
+    head = row_name.split('/')[1]
+    if head == '<s>':
+        return scenario in MULTIBODY
+    if head in ('input', 'statistics', 'geometry'):
+        return True
+    return head == scenario
+
+
+def shape_matches(doc_shape, shape):
+    dims = [d.strip() for d in doc_shape.strip('()').split(',') if d.strip()]
+    if len(dims) != len(shape):
+        return False
+    return all(not d.isdigit() or int(d) == s for d, s in zip(dims, shape))
+
+
+def check_string(path, where, value_dtype, value):
+    info = h5py.check_string_dtype(value_dtype)
+    if info is None:
+        return
+    if info.length is not None or info.encoding != 'utf-8':
+        fail(path, f"{where}: string is not variable-length UTF-8 ({info})")
+
+
+def check_file(path, rows):
+    f = h5py.File(path, 'r')
+    scenario = f.attrs.get('scenario')
+    if not isinstance(scenario, str):
+        fail(path, f"root attribute scenario is {scenario!r}, not a str")
+        return
+    # provenance and root attributes
+    for key in PROVENANCE:
+        if key not in f.attrs:
+            fail(path, f"root attribute {key} missing")
+    if f.attrs.get('status') not in ('complete', 'incomplete'):
+        fail(path, f"status is {f.attrs.get('status')!r}")
+    if not isinstance(f.attrs.get('layout_version'), (np.integer, int)):
+        fail(path, f"layout_version is not an integer: {f.attrs.get('layout_version')!r}")
+    if not re.fullmatch(r'\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ', str(f.attrs.get('created_utc'))):
+        fail(path, f"created_utc is not ISO 8601 UTC: {f.attrs.get('created_utc')!r}")
+    if not re.fullmatch(r'([0-9a-f]{40}(-dirty)?|unknown)', str(f.attrs.get('git_commit'))):
+        fail(path, f"git_commit is {f.attrs.get('git_commit')!r}")
+    text = f['/input/namelist'][()]
+    if hashlib.sha256(text).hexdigest() != f.attrs.get('input_sha256'):
+        fail(path, "input_sha256 is not the SHA-256 of /input/namelist")
+
+    # every attribute anywhere: strings vlen UTF-8, no numbers as text
+    def attributes(name, obj):
+        for key, value in obj.attrs.items():
+            if key in DS_ATTRIBUTES:
+                continue
+            where = f"/{name} attribute {key}" if name else f"/ attribute {key}"
+            check_string(path, where, obj.attrs.get_id(key).dtype, value)
+            if isinstance(value, bytes):
+                fail(path, f"{where}: read as bytes, not str")
+            if isinstance(value, str) and key not in ('units', 'description', 'title', 'status_message') \
+                    and re.fullmatch(rf'\s*{NUMBER}(\s+{NUMBER})*\s*', value):
+                fail(path, f"{where}: a number stored as text ({value!r})")
+    attributes('', f)
+    f.visititems(attributes)
+
+    datasets = {}
+    f.visititems(lambda name, obj: datasets.__setitem__('/' + name, obj) if isinstance(obj, h5py.Dataset) else None)
+    documented = [r for r in rows if applies(r[0], scenario)]
+    for name, d in sorted(datasets.items()):
+        check_string(path, name, d.dtype, None)
+        if 'units' not in d.attrs or 'description' not in d.attrs:
+            fail(path, f"{name}: no units or description attribute")
+            continue
+        units = d.attrs['units']
+        is_text = h5py.check_string_dtype(d.dtype) is not None
+        if is_text:
+            if units != '':
+                fail(path, f"{name}: a text dataset with units {units!r}")
+        else:
+            try:
+                UNITS.parse_units(units) if units != '1' else UNITS('1')
+            except Exception as error:   # pint raises several kinds
+                fail(path, f"{name}: units {units!r} not parsed by pint ({error})")
+        group = name.split('/')[1]
+        if name.startswith('/statistics/') and d.shape != ():
+            fail(path, f"{name}: shape {d.shape}, expected a scalar ()")
+        # dimension scales on the sample axis of every scenario dataset
+        if group not in ('input', 'statistics') and d.ndim >= 1 and not h5py.h5ds.is_scale(d.id):
+            if len(d.dims[0]) == 0:
+                fail(path, f"{name}: no dimension scale on axis 0")
+            if name.startswith('/geometry/surface/') and d.ndim == 2 and len(d.dims[1]) == 0:
+                fail(path, f"{name}: no dimension scale on axis 1")
+        # against the docs
+        match = [r for r in documented if r[1].match(name)]
+        if not match:
+            fail(path, f"{name}: not in docs/outputs.md")
+            continue
+        row_name, _, doc_shape, doc_units, _, _ = match[0]
+        if not shape_matches(doc_shape, d.shape):
+            fail(path, f"{name}: shape {d.shape}, docs/outputs.md says {doc_shape}")
+        fixed = not (doc_units.startswith('(') or doc_units == '—')
+        if fixed and doc_units != units:
+            fail(path, f"{name}: units {units!r}, docs/outputs.md says {doc_units!r}")
+        if doc_units == '—' and not is_text:
+            fail(path, f"{name}: docs/outputs.md says text, the file has {d.dtype}")
+    for row in documented:
+        if row[4] and not any(row[1].match(n) for n in datasets):
+            fail(path, f"documented {row[0]} missing")
+    f.close()
+
+
+def main():
+    rows = parse_docs(sys.argv[1])
+    if len(rows) < 50:
+        sys.exit(f"only {len(rows)} dataset rows parsed from {sys.argv[1]}: table format changed?")
+    for path in sys.argv[2:]:
+        check_file(path, rows)
+    for line in failures:
+        print('FAIL ' + line)
+    print(f"{len(sys.argv) - 2} files checked against {len(rows)} documented datasets, {len(failures)} failures")
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == '__main__':
+    main()
