@@ -10,6 +10,8 @@ module io_run_config
     character(len=64) :: scenario = 'point_mass'
     character(len=512) :: output = ''      !< default: <scenario>.h5 in the current folder
     character(len=256) :: title = ''
+    !> --summary-json FILE: the printed summary's numbers as JSON; empty or not allocated: none
+    character(len=:), allocatable :: summary_json
   end type run_config_t
 
 contains
