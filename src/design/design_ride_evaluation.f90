@@ -1,0 +1,248 @@
+!> What a rider feels and whether it stays within the user's limits: the felt
+!> specific force, the tipping lever arm (thesis 4.7, METHOD-PART2 E.3) and
+!> limits with units, each judged over a recorded ride with where (arc length)
+!> it is worst. Pure functions on plain arrays, so the rider scenario and the
+!> design loop (identification, sweeps, optimisation) share them.
+!>
+!> Felt specific force: f = (a - g)/|g| in a body frame's axes (columns of
+!> `axes`), in multiples of the gravity magnitude |g| ("in g"): lying still on
+!> level ground it is +1 along the slide normal (pressed onto the slide).
+!>
+!> Tipping lever arm (E.3): l = (M_r . e_long)/(F_r . n), the slide's reaction
+!> moment about the body's long axis over the reaction's normal component, at
+!> the contact's Darboux frame; the body would tip when |l| exceeds half its
+!> width. A reaction that does not press (F_r . n <= 0) has no lever arm:
+!> huge() is returned (the contact lifts off, which the rider reports itself).
+!>
+!> Limits: a quantity (limit_quantities), a minimum and/or a maximum, and the
+!> unit they are given in. Values are converted to the quantity's report unit
+!> (limit_report_units): speeds m/s, felt accelerations g, lengths m, forces N,
+!> angles degrees. A unit of the wrong kind is refused with the list of units
+!> the quantity accepts.
+module design_ride_evaluation
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_text, only: format_short, lower
+  implicit none (type, external)
+  private
+  public :: felt_acceleration, tipping_lever_arm
+  public :: ride_limit_t, limit_verdict_t, new_ride_limit, evaluate_limit, limit_quantities, &
+    limit_report_unit, limit_units_allowed, series_extreme
+
+  character(len=*), parameter :: limit_quantities(9) = [character(len=25) :: 'speed', 'exit_speed', &
+    'acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal', 'lever_arm', &
+    'normal_force', 'wall_angle', 'wall_distance']
+
+  integer, parameter :: DIM_SPEED = 1, DIM_ACCELERATION = 2, DIM_LENGTH = 3, DIM_FORCE = 4, DIM_ANGLE = 5
+  integer, parameter :: quantity_dimension(9) = [DIM_SPEED, DIM_SPEED, DIM_ACCELERATION, DIM_ACCELERATION, &
+    DIM_ACCELERATION, DIM_LENGTH, DIM_FORCE, DIM_ANGLE, DIM_LENGTH]
+  character(len=*), parameter :: report_units(5) = [character(len=5) :: 'm s-1', 'g', 'm', 'N', 'deg']
+  character(len=*), parameter :: units_allowed(5) = [character(len=48) :: &
+    "'m s-1', 'm/s', 'km h-1', 'km/h'", &
+    "'g' (multiples of |gravity|), 'm s-2', 'm/s^2'", &
+    "'m', 'cm', 'mm'", &
+    "'N', 'kN'", &
+    "'deg', 'degree', 'rad'"]
+
+  !> One limit, in the quantity's report unit.
+  type :: ride_limit_t
+    character(len=:), allocatable :: quantity
+    logical :: has_minimum = .false., has_maximum = .false.
+    real(wp) :: minimum = -huge(1.0_wp), maximum = huge(1.0_wp)   ! report unit
+    character(len=:), allocatable :: unit                        ! as the user gave it
+    real(wp) :: given_minimum = 0, given_maximum = 0             ! in the user's unit
+  end type ride_limit_t
+
+  type :: limit_verdict_t
+    logical :: exceeded = .false.
+    real(wp) :: worst = 0             ! report unit: the value furthest beyond (or nearest to) the limit
+    real(wp) :: worst_where = 0       ! m of arc length
+    real(wp) :: first_where = -1      ! m of arc length where first exceeded (-1: never)
+    real(wp) :: excess = 0            ! report unit, > 0 when exceeded
+  end type limit_verdict_t
+
+contains
+
+  !> (a - g)/|g| in the axes (columns) of a frame.
+  pure function felt_acceleration(a, gravity, axes) result(f)
+    real(wp), intent(in) :: a(3), gravity(3), axes(3, 3)
+    real(wp) :: f(3)
+    f = matmul(a - gravity, axes)/norm2(gravity)
+  end function felt_acceleration
+
+  !> l = (M_r . e_long)/(F_r . n) (E.3), huge() if F_r . n <= 0.
+  pure real(wp) function tipping_lever_arm(reaction_force, reaction_moment, long_axis, normal) result(l)
+    real(wp), intent(in) :: reaction_force(3), reaction_moment(3), long_axis(3), normal(3)
+    real(wp) :: pressing
+    pressing = dot_product(reaction_force, normal)
+    if (pressing > 0) then
+      l = dot_product(reaction_moment, long_axis)/pressing
+    else
+      l = huge(1.0_wp)
+    end if
+  end function tipping_lever_arm
+
+  pure integer function quantity_index(quantity) result(k)
+    character(len=*), intent(in) :: quantity
+    do k = 1, size(limit_quantities)
+      if (trim(limit_quantities(k)) == lower(trim(adjustl(quantity)))) return
+    end do
+    k = 0
+  end function quantity_index
+
+  pure function limit_report_unit(quantity) result(unit)
+    character(len=*), intent(in) :: quantity
+    character(len=:), allocatable :: unit
+    integer :: k
+    k = quantity_index(quantity)
+    unit = ''
+    if (k > 0) unit = trim(report_units(quantity_dimension(k)))
+  end function limit_report_unit
+
+  pure function limit_units_allowed(quantity) result(text)
+    character(len=*), intent(in) :: quantity
+    character(len=:), allocatable :: text
+    integer :: k
+    k = quantity_index(quantity)
+    text = ''
+    if (k > 0) text = trim(units_allowed(quantity_dimension(k)))
+  end function limit_units_allowed
+
+  !> Factor from `unit` to the report unit of dimension `dim`; 0 if the unit
+  !> does not measure that dimension. `gravity_magnitude` (m/s^2) defines 'g'.
+  pure real(wp) function unit_factor(dim, unit, gravity_magnitude) result(f)
+    integer, intent(in) :: dim
+    character(len=*), intent(in) :: unit
+    real(wp), intent(in) :: gravity_magnitude
+    character(len=:), allocatable :: u
+    u = trim(adjustl(unit))
+    f = 0
+    select case (dim)
+    case (DIM_SPEED)
+      select case (u)
+      case ('m s-1', 'm/s'); f = 1
+      case ('km h-1', 'km/h'); f = 1/3.6_wp
+      end select
+    case (DIM_ACCELERATION)
+      select case (u)
+      case ('g'); f = 1
+      case ('m s-2', 'm/s^2', 'm/s2'); f = 1/gravity_magnitude
+      end select
+    case (DIM_LENGTH)
+      select case (u)
+      case ('m'); f = 1
+      case ('cm'); f = 0.01_wp
+      case ('mm'); f = 0.001_wp
+      end select
+    case (DIM_FORCE)
+      select case (u)
+      case ('N'); f = 1
+      case ('kN'); f = 1000
+      end select
+    case (DIM_ANGLE)
+      select case (u)
+      case ('deg', 'degree', 'degrees'); f = 1
+      case ('rad'); f = 180/pi
+      end select
+    end select
+  end function unit_factor
+
+  !> A limit from what the user gave; `problem` is empty when it is valid,
+  !> else says what is wrong (unknown quantity, unit of the wrong kind, no
+  !> bound, minimum above maximum).
+  pure subroutine new_ride_limit(quantity, unit, minimum, has_minimum, maximum, has_maximum, &
+                                 gravity_magnitude, limit, problem)
+    character(len=*), intent(in) :: quantity, unit
+    real(wp), intent(in) :: minimum, maximum, gravity_magnitude
+    logical, intent(in) :: has_minimum, has_maximum
+    type(ride_limit_t), intent(out) :: limit
+    character(len=:), allocatable, intent(out) :: problem
+    integer :: k
+    real(wp) :: f
+    problem = ''
+    k = quantity_index(quantity)
+    if (k == 0) then
+      problem = 'unknown quantity '''//trim(quantity)//'''; known are: '//quantity_list()
+      return
+    end if
+    f = unit_factor(quantity_dimension(k), unit, gravity_magnitude)
+    if (f == 0) then
+      problem = 'unit '''//trim(unit)//''' does not measure '//trim(limit_quantities(k))//'; use '// &
+                trim(units_allowed(quantity_dimension(k)))
+      return
+    end if
+    if (.not. (has_minimum .or. has_maximum)) then
+      problem = trim(limit_quantities(k))//' has neither a minimum nor a maximum'
+      return
+    end if
+    limit%quantity = trim(limit_quantities(k))
+    limit%unit = trim(adjustl(unit))
+    limit%has_minimum = has_minimum
+    limit%has_maximum = has_maximum
+    if (has_minimum) then
+      limit%given_minimum = minimum
+      limit%minimum = minimum*f
+    end if
+    if (has_maximum) then
+      limit%given_maximum = maximum
+      limit%maximum = maximum*f
+    end if
+    if (has_minimum .and. has_maximum .and. .not. limit%minimum <= limit%maximum) &
+      problem = trim(limit_quantities(k))//': the minimum '//format_short(minimum)//' lies above the maximum '// &
+                format_short(maximum)
+  end subroutine new_ride_limit
+
+  pure function quantity_list() result(text)
+    character(len=:), allocatable :: text
+    integer :: k
+    text = ''
+    do k = 1, size(limit_quantities)
+      if (k > 1) text = text//', '
+      text = text//trim(limit_quantities(k))
+    end do
+  end function quantity_list
+
+  !> Judges `values` (report unit) recorded at arc lengths `where` against
+  !> the limit. When nothing exceeds, worst is the value closest to a bound.
+  pure subroutine evaluate_limit(limit, values, where, verdict)
+    type(ride_limit_t), intent(in) :: limit
+    real(wp), intent(in) :: values(:), where(:)
+    type(limit_verdict_t), intent(out) :: verdict
+    real(wp) :: margin, best
+    integer :: i
+    best = huge(1.0_wp)
+    do i = 1, size(values)
+      margin = huge(1.0_wp)
+      if (limit%has_maximum) margin = min(margin, limit%maximum - values(i))
+      if (limit%has_minimum) margin = min(margin, values(i) - limit%minimum)
+      if (margin < best) then
+        best = margin
+        verdict%worst = values(i)
+        verdict%worst_where = where(i)
+      end if
+      if (margin < 0 .and. verdict%first_where < 0) verdict%first_where = where(i)
+    end do
+    verdict%exceeded = best < 0
+    if (verdict%exceeded) verdict%excess = -best
+  end subroutine evaluate_limit
+
+  !> The largest (or smallest) of `values` and the arc length where.
+  pure subroutine series_extreme(values, where, largest, value, at)
+    real(wp), intent(in) :: values(:), where(:)
+    logical, intent(in) :: largest
+    real(wp), intent(out) :: value, at
+    integer :: i
+    if (size(values) == 0) then
+      value = 0
+      at = 0
+      return
+    end if
+    if (largest) then
+      i = maxloc(values, dim=1)
+    else
+      i = minloc(values, dim=1)
+    end if
+    value = values(i)
+    at = where(i)
+  end subroutine series_extreme
+end module design_ride_evaluation
