@@ -24,6 +24,12 @@
 !> end of the slide") when Newton's iterates leave [u_min, u_max] and HYBRJ
 !> fails too. Any other failure keeps the solver's own status.
 !> The left edge lies towards +y_w, i.e. towards larger v.
+!>
+!> Rates of the edges along the motion (for the water field's C1
+!> interpolation): with F(x, q) = [(r_D - q).x_D; (r_D - q).y_D] = 0 and
+!> dF/dq = -[x_D; y_D], the foot moves at dx/dt = J^-1 [x_D.q'; y_D.q'] (J the
+!> Jacobian above at the solution), where the target moves at
+!> q' = r' + h' z_w + h z_w' +- (b'/2) y_w +- (b/2) y_w'.
 module water_boundaries
   use base_kinds, only: wp
   use base_text, only: format_short
@@ -33,7 +39,7 @@ module water_boundaries
   use numerics_nonlinear, only: nonlinear_system_t, nonlinear_options_t, nonlinear_result_t, &
                                 solve_nonlinear
   use water_channel, only: channel_t
-  use water_streamline, only: water_point_t
+  use water_streamline, only: water_point_t, water_rates_t
   implicit none (type, external)
   private
   public :: water_edges, edge_system_t, edge_xtol, edge_residual_tolerance
@@ -65,13 +71,18 @@ contains
   !> Left and right edges [u, v] and their points for the water point q.
   !> left_guess/right_guess: starts for Newton (e.g. the previous output's
   !> edges moved with the streamline); without them the tangent-plane guess.
-  subroutine water_edges(channel, q, left, right, left_point, right_point, status, left_guess, right_guess)
+  !> With `rates` (water_point_rates at q), left_rate and right_rate are the
+  !> edges' d[u, v]/dt along the motion.
+  subroutine water_edges(channel, q, left, right, left_point, right_point, status, left_guess, right_guess, &
+                         rates, left_rate, right_rate)
     class(channel_t), intent(in), target :: channel
     type(water_point_t), intent(in) :: q
     real(wp), intent(out) :: left(2), right(2), left_point(3), right_point(3)
     type(status_t), intent(out) :: status
     real(wp), intent(in), optional :: left_guess(2), right_guess(2)
-    real(wp) :: d(2), base(3), e, f, g, det, bu, bv
+    type(water_rates_t), intent(in), optional :: rates
+    real(wp), intent(out), optional :: left_rate(2), right_rate(2)
+    real(wp) :: d(2), base(3), e, f, g, det, bu, bv, base_rate(3), side_rate(3)
 
     base = q%position + q%height*q%z_m
     ! tangent-plane guess: the offset (b/2) y_w mapped to (du, dv)
@@ -79,11 +90,17 @@ contains
     bu = 0.5_wp*q%width*dot_product(q%p%ru, q%y_w); bv = 0.5_wp*q%width*dot_product(q%p%rv, q%y_w)
     det = e*g - f*f
     d = [(g*bu - f*bv)/det, (e*bv - f*bu)/det]
+    base_rate = 0; side_rate = 0
+    if (present(rates)) then
+      base_rate = q%velocity + q%height_rate*q%z_m + q%height*rates%z_m
+      side_rate = 0.5_wp*rates%width*q%y_w + 0.5_wp*q%width*rates%y_w
+    end if
     if (present(left_guess)) then
-      call one_edge(channel, base + 0.5_wp*q%width*q%y_w, left_guess, [q%u, q%v] + d, left, left_point, status)
+      call one_edge(channel, base + 0.5_wp*q%width*q%y_w, left_guess, [q%u, q%v] + d, left, left_point, status, &
+                    base_rate + side_rate, left_rate)
     else
       call one_edge(channel, base + 0.5_wp*q%width*q%y_w, [q%u, q%v] + d, [q%u, q%v] + d, left, left_point, &
-                    status)
+                    status, base_rate + side_rate, left_rate)
     end if
     if (.not. status%ok()) then
       call prefix_status(status, 'left water edge (4.25)')
@@ -91,21 +108,23 @@ contains
     end if
     if (present(right_guess)) then
       call one_edge(channel, base - 0.5_wp*q%width*q%y_w, right_guess, [q%u, q%v] - d, right, right_point, &
-                    status)
+                    status, base_rate - side_rate, right_rate)
     else
       call one_edge(channel, base - 0.5_wp*q%width*q%y_w, [q%u, q%v] - d, [q%u, q%v] - d, right, right_point, &
-                    status)
+                    status, base_rate - side_rate, right_rate)
     end if
     if (.not. status%ok()) call prefix_status(status, 'right water edge (4.26)')
   end subroutine water_edges
 
   !> The foot x = (u, v) of the normal through `target` and its point: Newton
-  !> from `start`, HYBRJ from `fallback` if Newton does not converge.
-  subroutine one_edge(channel, target, start, fallback, x, point, status)
+  !> from `start`, HYBRJ from `fallback` if Newton does not converge; with
+  !> x_rate present, the foot's rate for a target moving at target_rate.
+  subroutine one_edge(channel, target, start, fallback, x, point, status, target_rate, x_rate)
     class(channel_t), intent(in), target :: channel
-    real(wp), intent(in) :: target(3), start(2), fallback(2)
+    real(wp), intent(in) :: target(3), start(2), fallback(2), target_rate(3)
     real(wp), intent(out) :: x(2), point(3)
     type(status_t), intent(out) :: status
+    real(wp), intent(out), optional :: x_rate(2)
     type(edge_system_t) :: sys
     type(nonlinear_options_t) :: options
     type(nonlinear_result_t) :: result
@@ -130,6 +149,7 @@ contains
       if (maxval(abs(f)) <= edge_residual_tolerance .and. &
           norm2(scale*dx) <= edge_xtol*norm2(scale*x)) then
         point = sys%p_last%r   ! at x; x + dx differs by far less than xtol
+        if (present(x_rate)) call foot_rate(jac)
         return
       end if
       x = x + dx
@@ -145,13 +165,25 @@ contains
     sys%x_last = huge(1.0_wp)
     call solve_nonlinear(sys, x, options, result, status)
     if (status%ok()) then
-      call channel%evaluate(x(1), x(2), 0, sys%p_last, status)
+      call sys%jacobian(x, jac, status)   ! evaluates the surface and frame at x
       point = sys%p_last%r
+      if (status%ok() .and. present(x_rate)) call foot_rate(jac)
     else if (outside .or. x(1) < u_min .or. x(1) > u_max) then
       if (.not. outside) u_out = x(1)
       call set_status(status, STATUS_DOMAIN, 'the foot lies beyond the end of the slide (u = ' // &
                       format_short(u_out)//' outside ['//format_short(u_min)//', '//format_short(u_max)//'])')
     end if
+
+  contains
+
+    !> dx/dt = J^-1 [x_D.q'; y_D.q'] with J and the frame at the solution x.
+    subroutine foot_rate(jacobian)
+      real(wp), intent(in) :: jacobian(2, 2)
+      real(wp) :: b(2), dj
+      b = [dot_product(sys%frame_last%r(:, 1), target_rate), dot_product(sys%frame_last%r(:, 2), target_rate)]
+      dj = jacobian(1, 1)*jacobian(2, 2) - jacobian(1, 2)*jacobian(2, 1)
+      x_rate = [jacobian(2, 2)*b(1) - jacobian(1, 2)*b(2), jacobian(1, 1)*b(2) - jacobian(2, 1)*b(1)]/dj
+    end subroutine foot_rate
   end subroutine one_edge
 
   !> Surface point and Darboux frame (sigma = 1, alpha_u = 0, alpha_v = 1) at x,

@@ -12,7 +12,7 @@ module water_flow
   use water_channel, only: channel_t
   use water_section, only: circle_segment, circle_height_for_area, profile_water
   use water_streamline, only: streamline_t, water_point_t, water_point, velocity_from_angle, &
-    ROOT_END, ROOT_STALL, ROOT_CRITICAL, ROOT_TURN, ROOT_LIFT, ROOT_FIRST_STATION
+    water_rates_t, water_point_rates, ROOT_END, ROOT_STALL, ROOT_CRITICAL, ROOT_TURN, ROOT_LIFT, ROOT_FIRST_STATION
   use water_boundaries, only: water_edges
   implicit none (type, external)
   private
@@ -52,6 +52,12 @@ module water_flow
     real(wp), allocatable :: kinetic(:), potential(:), friction_work(:), correction_work(:)
     real(wp), allocatable :: left_edge(:, :), right_edge(:, :), left_point(:, :), right_point(:, :)
     integer, allocatable :: edge_solved(:)    ! 1: edges from (4.25-4.26); 0: circle estimate
+    ! rates along the motion, for the water field's C1 interpolation
+    real(wp), allocatable :: acceleration(:, :)      ! m/s^2 (3 x n)
+    real(wp), allocatable :: speed_rate(:), height_rate(:), width_rate(:)   ! m/s^2, m/s, m/s
+    real(wp), allocatable :: x_m(:, :), z_m(:, :), x_m_rate(:, :), z_m_rate(:, :)   ! K_M axes, 1/s
+    real(wp), allocatable :: centerline_speed(:)     ! |c_u|, m per unit of u
+    real(wp), allocatable :: left_edge_rate(:, :), right_edge_rate(:, :)   ! d[u, v]/dt (2 x n)
     integer :: edge_failures = 0                     ! samples where the edge solve failed
     character(len=:), allocatable :: edge_message   ! the first edge failure
     integer :: edge_beyond = 0                       ! samples with an edge beyond the slide's end
@@ -375,9 +381,12 @@ contains
               s%beta(n), s%alpha(n), s%normal_force(n), s%friction_force(n), s%curvature(n), &
               s%froude(n), s%kinetic(n), s%potential(n), s%friction_work(n), s%correction_work(n), &
               s%left_edge(2, n), s%right_edge(2, n), s%left_point(3, n), s%right_point(3, n), &
-              s%edge_solved(n))
+              s%edge_solved(n), s%acceleration(3, n), s%speed_rate(n), s%height_rate(n), s%width_rate(n), &
+              s%x_m(3, n), s%z_m(3, n), s%x_m_rate(3, n), s%z_m_rate(3, n), s%centerline_speed(n), &
+              s%left_edge_rate(2, n), s%right_edge_rate(2, n))
     s%edge_solved = 0
     s%left_edge = 0; s%right_edge = 0; s%left_point = 0; s%right_point = 0
+    s%left_edge_rate = 0; s%right_edge_rate = 0
   end subroutine allocate_series
 
   subroutine record(model, t, y, s, with_edges, status)
@@ -387,11 +396,14 @@ contains
     logical, intent(in) :: with_edges
     type(status_t), intent(inout) :: status
     type(water_point_t) :: q
+    type(water_rates_t) :: rates
     type(status_t) :: st
     integer :: i
-    real(wp) :: lam, here(2), guess_l(2), guess_r(2)
+    real(wp) :: lam, here(2), guess_l(2), guess_r(2), c(3, 0:3)
     st%code = 0
     call water_point(model, y, q, st)
+    if (st%ok()) call water_point_rates(model, y, q, rates, st)
+    if (st%ok()) call model%channel%centerline(y(1), c, st)
     if (.not. st%ok()) then
       if (status%ok()) status = st
       return
@@ -418,6 +430,11 @@ contains
     s%froude(i) = q%froude
     s%kinetic(i) = 0.5_wp*model%mass*q%speed**2
     s%potential(i) = -model%mass*dot_product(model%gravity, q%position)
+    s%acceleration(:, i) = q%acceleration
+    s%speed_rate(i) = q%speed_rate; s%height_rate(i) = q%height_rate; s%width_rate(i) = rates%width
+    s%x_m(:, i) = q%x_m; s%z_m(:, i) = q%z_m
+    s%x_m_rate(:, i) = rates%x_m; s%z_m_rate(:, i) = rates%z_m
+    s%centerline_speed(i) = norm2(c(:, 1))
     if (with_edges) then
       if (i >= 2) then
         if (s%edge_solved(i - 1) == 1) then
@@ -433,14 +450,17 @@ contains
           guess_r = here + offset(s%right_edge, i - 1) + lam*(offset(s%right_edge, i - 1) - &
                                                              offset(s%right_edge, i - 2))
           call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
-                           s%right_point(:, i), st, guess_l, guess_r)
+                           s%right_point(:, i), st, guess_l, guess_r, rates=rates, &
+                           left_rate=s%left_edge_rate(:, i), right_rate=s%right_edge_rate(:, i))
         else
           call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
-                           s%right_point(:, i), st)
+                           s%right_point(:, i), st, rates=rates, &
+                           left_rate=s%left_edge_rate(:, i), right_rate=s%right_edge_rate(:, i))
         end if
       else
         call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
-                         s%right_point(:, i), st)
+                         s%right_point(:, i), st, rates=rates, &
+                         left_rate=s%left_edge_rate(:, i), right_rate=s%right_edge_rate(:, i))
       end if
       s%edge_solved(i) = merge(1, 0, st%ok())
       if (.not. st%ok()) then

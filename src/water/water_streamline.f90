@@ -52,6 +52,7 @@ module water_streamline
   implicit none (type, external)
   private
   public :: streamline_t, water_point_t, water_point, velocity_from_angle
+  public :: water_rates_t, water_point_rates
   public :: CORRECTION_FULL, CORRECTION_NO_RADIUS, CORRECTION_OFF
   public :: ROOT_END, ROOT_STALL, ROOT_CRITICAL, ROOT_TURN, ROOT_LIFT, ROOT_FIRST_STATION
   public :: default_f1, default_f2, default_f3
@@ -106,6 +107,14 @@ module water_streamline
     real(wp) :: udd = 0, vdd = 0                    ! (4.23)
     real(wp) :: acceleration(3) = 0                 ! m/s^2
   end type water_point_t
+
+  !> Time derivatives, along the motion, of what the water field interpolates
+  !> and of the frame K_w (for the rates of the edges).
+  type :: water_rates_t
+    real(wp) :: x_m(3) = 0, z_m(3) = 0       ! 1/s, d/dt of the K_M axes
+    real(wp) :: x_w(3) = 0, y_w(3) = 0       ! 1/s, d/dt of the K_w axes
+    real(wp) :: width = 0                    ! m/s, db/dt
+  end type water_rates_t
 
 contains
 
@@ -299,6 +308,45 @@ contains
     q%vdd = (mat(1, 1)*rhs(2) - mat(2, 1)*rhs(1))/det
     q%acceleration = q%p%ru*q%udd + q%p%rv*q%vdd + q%a_hat
   end subroutine water_point
+
+  !> The rates d/dt along the motion at the water point q (from water_point at
+  !> state y, same model). With r_u' = r_uu u' + r_uv v' and r_v' = r_uv u' + r_vv v':
+  !>   x_M' = (r_v' - x_M (x_M.r_v'))/|r_v|,  n = r_u x r_v, n' = r_u' x r_v + r_u x r_v',
+  !>   z_M' = (n' - z_M (z_M.n'))/|n|,  x_w' = (a - x_w (x_w.a))/w,
+  !>   y_w' = z_M' x x_w + z_M x x_w',
+  !>   circle: b^2 = 8 R h - 4 h^2, so b' = 4 (R' h + (R - h) h')/b (R' from F.5);
+  !>   other profiles: b' by central differences of b along the motion,
+  !>   b(y + d y') - b(y - d y') over 2 d with d moving the point 1e-5 m.
+  !> Checked against differences along the motion in test_water_field.
+  pure subroutine water_point_rates(self, y, q, rates, status)
+    class(streamline_t), intent(in) :: self
+    real(wp), intent(in) :: y(:)
+    type(water_point_t), intent(in) :: q
+    type(water_rates_t), intent(out) :: rates
+    type(status_t), intent(inout) :: status
+    real(wp) :: ru_dot(3), rv_dot(3), n(3), n_dot(3), ydot(size(y)), delta
+    type(water_point_t) :: q_plus, q_minus
+
+    ru_dot = q%p%ruu*y(3) + q%p%ruv*y(4)
+    rv_dot = q%p%ruv*y(3) + q%p%rvv*y(4)
+    rates%x_m = (rv_dot - q%x_m*dot_product(q%x_m, rv_dot))/norm2(q%p%rv)
+    n = cross(q%p%ru, q%p%rv)
+    n_dot = cross(ru_dot, q%p%rv) + cross(q%p%ru, rv_dot)
+    rates%z_m = (n_dot - q%z_m*dot_product(q%z_m, n_dot))/norm2(n)
+    rates%x_w = (q%acceleration - q%x_w*dot_product(q%x_w, q%acceleration))/q%speed
+    rates%y_w = cross(rates%z_m, q%x_w) + cross(q%z_m, rates%x_w)
+    if (q%radius > 0) then
+      rates%width = 4*(q%radius_rate*q%height + (q%radius - q%height)*q%height_rate)/q%width
+    else
+      ydot = 0
+      ydot(1:5) = [y(3), y(4), q%udd, q%vdd, q%height_rate]
+      delta = 1e-5_wp/q%speed
+      call water_point(self, y + delta*ydot, q_plus, status)
+      if (status%ok()) call water_point(self, y - delta*ydot, q_minus, status)
+      if (.not. status%ok()) return
+      rates%width = (q_plus%width - q_minus%width)/(2*delta)
+    end if
+  end subroutine water_point_rates
 
   !> Surface rates (u', v') of speed w at angle beta from the centerline
   !> (x_w = sin(beta) x_M - cos(beta) y_M), least squares in the tangent plane.
