@@ -32,6 +32,7 @@
 !> are made orthonormal again at each query (their interpolation error is
 !> O(h^4)).
 module water_field
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_vector, only: cross
@@ -45,7 +46,7 @@ module water_field
   integer, parameter :: WATER_INSIDE = 0        !< inside the computed range: values filled
   integer, parameter :: WATER_BEFORE_START = 1  !< before the first sample (upstream of the inflow)
   integer, parameter :: WATER_AFTER_END = 2     !< after the last sample (the run's end or stop)
-  integer, parameter :: WATER_NOT_COMPUTED = 3  !< no water there at all (empty field, no edges solved)
+  integer, parameter :: WATER_NOT_COMPUTED = 3  !< no water there at all (empty field, no edges solved, a NaN query)
 
   ! rows of the node tables
   integer, parameter :: row_time = 1, row_arc = 2, row_v = 3, row_position = 4, row_velocity = 7, &
@@ -298,9 +299,9 @@ contains
     integer, intent(out) :: location, i
     integer :: lo, hi, mid
     i = 1
-    if (n < 2) then
+    if (n < 2 .or. ieee_is_nan(x)) then   ! no comparison with a NaN (it traps in Debug builds)
       location = WATER_NOT_COMPUTED
-    else if (.not. x >= nodes(1)) then   ! also a NaN query: not inside
+    else if (x < nodes(1)) then
       location = WATER_BEFORE_START
     else if (x > nodes(n)) then
       location = WATER_AFTER_END

@@ -347,7 +347,7 @@ contains
     call check(w%location == WATER_BEFORE_START, 'before the start by arc length')
     nan = ieee_nan()
     call field%at_u(nan, w)
-    call check(w%location /= WATER_INSIDE, 'a NaN query is not inside')
+    call check(w%location == WATER_NOT_COMPUTED, 'a NaN query: not computed')
     call empty%at_u(1.0_wp, w)
     call check(w%location == WATER_NOT_COMPUTED, 'an empty field: not computed')
     call empty%edges_at_u(1.0_wp, ep)
