@@ -1,6 +1,9 @@
 !> Bounded nonlinear least squares, min 0.5 sum r_i(p)^2 with lower <= p <= upper,
-!> over MINPACK's Levenberg-Marquardt codes: LMDIF (forward-difference Jacobian)
-!> or, when the problem provides one, LMDER (analytic Jacobian).
+!> over MINPACK's Levenberg-Marquardt code LMDER, with the problem's analytic
+!> Jacobian or, when it has none, forward differences exactly as LMDIF forms
+!> them (step sqrt(max(epsfcn, eps)) |z_j|, or that root itself if z_j = 0) but
+!> evaluated here as one batch of points (`residuals_batch`), which a problem
+!> may evaluate in parallel. LMDER with these differences is LMDIF.
 !>
 !> Bounds are held exactly by a smooth change of variables p = P(z); MINPACK
 !> works on the unconstrained z:
@@ -9,39 +12,64 @@
 !>   upper only:       p = u - z^2 / (1 + sqrt(1 + z^2))
 !>   neither:          p = z
 !>   l == u:           p is fixed at l and not estimated.
-!> Every p MINPACK ever evaluates is inside the bounds. LMDER gets the chain rule
-!> dr/dz = dr/dp dP/dz. Because dP/dz = 0 on a bound, a start on a bound is moved
-!> inside (by 1e-3 of the range or of max(1, |bound|)), and an optimum on a bound
-!> is approached only slowly in z; therefore after the first solve every parameter
-!> within bound_tolerance of a bound whose gradient points out of the box (the
-!> Kuhn-Tucker sign) is put exactly on the bound and the others are fitted again.
+!> Every p the problem is ever evaluated at is inside the bounds. Analytic
+!> Jacobians get the chain rule dr/dz = dr/dp dP/dz. Because dP/dz = 0 on a
+!> bound, a start on a bound is moved inside (by 1e-3 of the range or of
+!> max(1, |bound|)), and an optimum on a bound is approached only slowly in z;
+!> therefore after the first solve every parameter within bound_tolerance of a
+!> bound whose gradient points out of the box (the Kuhn-Tucker sign) is put
+!> exactly on the bound and the others are fitted again.
+!>
+!> A failed evaluation is a rejected step, not the end of the fit. When the
+!> residuals fail at a trial point (a status STATUS_DOMAIN, STATUS_SOLVER or
+!> STATUS_NOT_CONVERGED: the model cannot be run there), LMDER is handed
+!> residuals whose norm is 1e3 max(1, the largest norm seen so far), at least
+!> ten times the norm at its current point. LMDER then computes an actual
+!> reduction of -1, rejects the step (ratio < 1e-4: x stays) and shrinks its
+!> trust region to a tenth (MINPACK's factor p1 when fnorm1 >= 10 fnorm), and
+!> tries a shorter step. If the region shrinks below xtol the fit ends at the
+!> last accepted point (info 2). Failures are counted (rejected_evaluations)
+!> and the last reason kept (last_rejection). A failure at the start point, a
+!> failure of a difference point and its mirror, and any other status
+!> (invalid input, i/o, internal) end the fit with that status, unchanged.
 !>
 !> The covariance is s^2 (J^T J)^(-1) in the original parameters, J = dr/dp at the
-!> optimum over the parameters not at a bound, s^2 = sum r^2 / (m - n_free);
+!> optimum over the parameters not at a bound (central differences that stay
+!> inside the bounds, or the analytic Jacobian), s^2 = sum r^2 / (m - n_free);
 !> parameters at a bound have zero rows and columns and at_bound = .true.
+!> If the model fails on both sides of the optimum in some parameter, there
+!> is no covariance (covariance_valid = .false.), the fit stands.
 !>
-!> MINPACK's callbacks carry no user data: the problem is reached through the
-!> module variable `active` during one call of solve_least_squares (nested calls
-!> are refused with STATUS_INTERNAL); not thread-safe.
+!> Re-entrant and thread-safe. MINPACK's callbacks carry no user data: each
+!> call of solve_least_squares keeps its fit in a local record (`fit_t`) and
+!> pushes it on a per-thread stack (`top`, OpenMP threadprivate) around each
+!> MINPACK call; the callbacks work on the top record. A residual that runs
+!> another fit, a closure solve (numerics_nonlinear) or an integration inside
+!> pushes its own record above; each thread has its own stack. `top` is the
+!> same on return as on entry. Debian's libminpack keeps no writable static
+!> data (only DATA constants), so MINPACK itself may run in several threads.
 module numerics_least_squares
   use base_kinds, only: wp
-  use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT, &
-    STATUS_SOLVER, STATUS_NOT_CONVERGED, STATUS_INTERNAL
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, &
+    STATUS_SOLVER, STATUS_NOT_CONVERGED, STATUS_INTERNAL, STATUS_DOMAIN
   use numerics_linear_algebra, only: normal_matrix_inverse
   implicit none (type, external)
   private
   public :: least_squares_problem_t, ls_residuals_i
   public :: least_squares_options_t, least_squares_result_t, solve_least_squares
+  public :: is_rejectable
 
   type, abstract :: least_squares_problem_t
   contains
     procedure(ls_residuals_i), deferred :: residuals
+    procedure :: residuals_batch => ls_residuals_batch
     procedure :: has_jacobian => ls_has_jacobian
     procedure :: jacobian => ls_jacobian
   end type least_squares_problem_t
 
   abstract interface
-    !> r(p), size m. Leave `status` ok or set an error: the fit stops and returns it.
+    !> r(p), size m. Leave `status` ok or set an error (see the module comment
+    !> for which errors reject a step and which end the fit).
     subroutine ls_residuals_i(self, p, r, status)
       import :: least_squares_problem_t, wp, status_t
       class(least_squares_problem_t), intent(inout) :: self
@@ -55,8 +83,8 @@ module numerics_least_squares
     real(wp) :: ftol = 1e-10_wp          !< relative reduction of the sum of squares
     real(wp) :: xtol = 1e-10_wp          !< relative change of the (transformed) parameters
     real(wp) :: gtol = 1e-10_wp          !< cosine between r and the Jacobian's columns
-    integer :: max_evaluations = 10000   !< residual evaluations per MINPACK call (maxfev)
-    real(wp) :: epsfcn = 0               !< LMDIF: relative error of the residuals (0 = machine precision)
+    integer :: max_evaluations = 10000   !< residual evaluations per MINPACK call (maxfev), differences included
+    real(wp) :: epsfcn = 0               !< relative error of the residuals for the difference step (0 = machine precision)
     real(wp) :: factor = 100             !< initial step bound factor
     real(wp) :: bound_tolerance = 1e-6_wp   !< relative distance at which an optimum is put on its bound
   end type least_squares_options_t
@@ -64,8 +92,10 @@ module numerics_least_squares
   type :: least_squares_result_t
     real(wp) :: cost = huge(1.0_wp)           !< 0.5 sum r^2 at the optimum
     real(wp) :: residual_norm = huge(1.0_wp)  !< sqrt(sum r^2)
-    integer :: evaluations = 0                !< residual evaluations, all stages
-    integer :: jacobian_evaluations = 0       !< analytic Jacobian evaluations
+    integer :: evaluations = 0                !< residual evaluations, all stages, differences included
+    integer :: jacobian_evaluations = 0       !< Jacobians (analytic or by differences)
+    integer :: rejected_evaluations = 0       !< evaluations that failed and were rejected as steps
+    character(len=:), allocatable :: last_rejection   !< the reason of the last one
     integer :: info = 0                       !< MINPACK info of the last solve
     logical :: covariance_valid = .false.     !< false if m <= n_free or J^T J is singular
     real(wp), allocatable :: covariance(:, :) !< n x n, original parameters (huge if not valid)
@@ -76,33 +106,39 @@ module numerics_least_squares
   integer, parameter :: KIND_FREE = 0, KIND_LOWER = 1, KIND_UPPER = 2, KIND_BOTH = 3, &
                         KIND_FIXED = 4
 
-  !> The fit in progress: problem, transformation and work arrays (allocated once
-  !> per solve, so the callbacks allocate nothing).
-  type :: ls_call_t
+  !> One fit in progress: problem, transformation, work arrays and the fit it is
+  !> nested in (see the module comment). A local variable of solve_least_squares.
+  type :: fit_t
     class(least_squares_problem_t), pointer :: problem => null()
     type(status_t) :: status
     integer :: m = 0
     integer :: n_free = 0
+    logical :: started = .false.              !< the start point has been evaluated
+    real(wp) :: largest_norm = 0              !< largest ||r|| of a successful evaluation
+    real(wp) :: epsfcn = 0
+    integer :: evaluations = 0                !< of this MINPACK call (differences included)
+    integer :: max_evaluations = 0
+    logical :: budget_spent = .false.         !< stopped because evaluations reached max_evaluations
+    logical :: jacobian_ok = .false.          !< jac holds dr/dp at p (see original_jacobian)
+    integer :: rejected = 0
+    character(len=:), allocatable :: last_rejection
     integer, allocatable :: kind(:)
     integer, allocatable :: free(:)           !< parameter index of each MINPACK unknown
     real(wp), allocatable :: lower(:), upper(:)
     real(wp), allocatable :: p(:)             !< current parameters (all of them)
     real(wp), allocatable :: dpdz(:)          !< dP/dz of each parameter
     real(wp), allocatable :: jac(:, :)        !< m x n, dr/dp
-  end type ls_call_t
+    real(wp), allocatable :: points(:, :)     !< n x n_free difference points
+    real(wp), allocatable :: values(:, :)     !< m x n_free their residuals
+    type(status_t), allocatable :: statuses(:)
+    type(fit_t), pointer :: below => null()
+  end type fit_t
 
-  type(ls_call_t), target :: active
-  logical :: busy = .false.
+  !> The innermost fit in progress on this thread.
+  type(fit_t), pointer :: top => null()
+  !$omp threadprivate(top)
 
   abstract interface
-    subroutine lmdif_fcn_i(m, n, x, fvec, iflag)
-      import :: wp
-      integer, intent(in) :: m, n
-      real(wp), intent(in) :: x(n)
-      real(wp), intent(inout) :: fvec(m)
-      integer, intent(inout) :: iflag
-    end subroutine lmdif_fcn_i
-
     subroutine lmder_fcn_i(m, n, x, fvec, fjac, ldfjac, iflag)
       import :: wp
       integer, intent(in) :: m, n, ldfjac
@@ -114,17 +150,6 @@ module numerics_least_squares
 
   interface
     !> MINPACK (original Fortran 77), libminpack.
-    subroutine lmdif(fcn, m, n, x, fvec, ftol, xtol, gtol, maxfev, epsfcn, diag, mode, factor, &
-                     nprint, info, nfev, fjac, ldfjac, ipvt, qtf, wa1, wa2, wa3, wa4)
-      import :: wp, lmdif_fcn_i
-      procedure(lmdif_fcn_i) :: fcn
-      integer, intent(in) :: m, n, maxfev, mode, nprint, ldfjac
-      real(wp), intent(inout) :: x(n), fvec(m), diag(n), fjac(ldfjac, n)
-      real(wp), intent(in) :: ftol, xtol, gtol, epsfcn, factor
-      integer, intent(out) :: info, nfev, ipvt(n)
-      real(wp), intent(inout) :: qtf(n), wa1(n), wa2(n), wa3(n), wa4(m)
-    end subroutine lmdif
-
     subroutine lmder(fcn, m, n, x, fvec, fjac, ldfjac, ftol, xtol, gtol, maxfev, diag, mode, &
                      factor, nprint, info, nfev, njev, ipvt, qtf, wa1, wa2, wa3, wa4)
       import :: wp, lmder_fcn_i
@@ -135,12 +160,11 @@ module numerics_least_squares
       integer, intent(out) :: info, nfev, njev, ipvt(n)
       real(wp), intent(inout) :: qtf(n), wa1(n), wa2(n), wa3(n), wa4(m)
     end subroutine lmder
-
   end interface
 
 contains
 
-  !> Default: no analytic Jacobian (LMDIF differences are used).
+  !> Default: no analytic Jacobian (differences are used).
   logical function ls_has_jacobian(self)
     class(least_squares_problem_t), intent(in) :: self
     associate (unused => self)
@@ -161,9 +185,31 @@ contains
       'least squares: has_jacobian is true but jacobian is not overridden')
   end subroutine ls_jacobian
 
+  !> r(:, k) = r(p(:, k)) for independent points k, each with its own status
+  !> (ok on entry). The default evaluates them one after the other; a problem
+  !> may override it to evaluate them in parallel, giving the same numbers.
+  recursive subroutine ls_residuals_batch(self, p, r, statuses)
+    class(least_squares_problem_t), intent(inout) :: self
+    real(wp), intent(in) :: p(:, :)
+    real(wp), intent(out) :: r(:, :)
+    type(status_t), intent(inout) :: statuses(:)
+    integer :: k
+    do k = 1, size(p, 2)
+      call self%residuals(p(:, k), r(:, k), statuses(k))
+    end do
+  end subroutine ls_residuals_batch
+
+  !> Whether a failed evaluation with this status may be rejected as a step
+  !> (the model cannot be run at that point) rather than end the fit.
+  elemental logical function is_rejectable(status)
+    type(status_t), intent(in) :: status
+    is_rejectable = status%code == STATUS_DOMAIN .or. status%code == STATUS_SOLVER .or. &
+                    status%code == STATUS_NOT_CONVERGED
+  end function is_rejectable
+
   !> Minimizes 0.5 sum r(p)^2, m residuals, within lower <= p <= upper (use
   !> -huge/huge where unbounded). p: in the start (moved into the box if outside),
-  !> out the optimum.
+  !> out the optimum (or the last accepted point if status is not ok).
   recursive subroutine solve_least_squares(problem, m, p, lower, upper, options, result, status)
     class(least_squares_problem_t), intent(inout), target :: problem
     integer, intent(in) :: m
@@ -172,18 +218,81 @@ contains
     type(least_squares_options_t), intent(in) :: options
     type(least_squares_result_t), intent(out) :: result
     type(status_t), intent(out) :: status
+    type(fit_t), target :: fit
+    real(wp), allocatable :: r(:), gradient(:), p_before(:), r_before(:)
+    logical, allocatable :: at_bound_before(:)
+    integer :: n, i, pass
+    logical :: snapped
 
-    if (busy) then
-      call set_status(status, STATUS_INTERNAL, 'solve_least_squares: called again from inside a' &
-        //' residual or Jacobian (MINPACK has no user data)')
-      return
-    end if
     call check_input(m, p, lower, upper, options, status)
     if (.not. status%ok()) return
-    busy = .true.
-    call solve_active(problem, m, p, lower, upper, options, result, status)
-    nullify (active%problem)
-    busy = .false.
+    n = size(p)
+    fit%problem => problem
+    fit%m = m
+    fit%epsfcn = options%epsfcn
+    fit%lower = lower
+    fit%upper = upper
+    fit%kind = bound_kind(lower, upper)
+    allocate (fit%dpdz(n), fit%jac(m, n), r(m), gradient(n))
+    fit%dpdz = 0
+    ! The start goes into the box, off the bounds (dP/dz = 0 there).
+    fit%p = start_inside(p, lower, upper, fit%kind)
+    allocate (result%at_bound(n))
+    result%at_bound = fit%kind == KIND_FIXED
+
+    call fit_free(fit, options, r, result, status)
+    if (status%ok()) call original_jacobian(fit, options, r, result, status)
+
+    ! Put optima that sit (nearly) on a bound, with the gradient pushing outward
+    ! (Kuhn-Tucker), exactly on it and fit the others again; repeated because a
+    ! parameter may reach its bound only once another one is held.
+    do pass = 1, n
+      if (.not. status%ok() .or. .not. fit%jacobian_ok) exit
+      gradient = matmul(r, fit%jac)   ! d(0.5 sum r^2)/dp
+      p_before = fit%p
+      r_before = r
+      at_bound_before = result%at_bound
+      snapped = .false.
+      do i = 1, n
+        if (result%at_bound(i)) cycle
+        if (has_lower(fit%kind(i))) then
+          if (fit%p(i) - lower(i) <= options%bound_tolerance*max(1.0_wp, abs(lower(i))) &
+              .and. gradient(i) >= 0) then
+            fit%p(i) = lower(i)
+            result%at_bound(i) = .true.
+          end if
+        end if
+        if (has_upper(fit%kind(i)) .and. .not. result%at_bound(i)) then
+          if (upper(i) - fit%p(i) <= options%bound_tolerance*max(1.0_wp, abs(upper(i))) &
+              .and. gradient(i) <= 0) then
+            fit%p(i) = upper(i)
+            result%at_bound(i) = .true.
+          end if
+        end if
+        snapped = snapped .or. result%at_bound(i)
+      end do
+      if (.not. snapped) exit
+      call fit_free(fit, options, r, result, status)
+      if (.not. status%ok()) exit
+      ! Moving downhill onto a bound cannot raise the cost beyond rounding; if it
+      ! did, the snap was wrong: keep the fit from before it.
+      if (sum(r**2) > sum(r_before**2)*(1 + 100*epsilon(1.0_wp)) + tiny(1.0_wp)) then
+        fit%p = p_before
+        r = r_before
+        result%at_bound = at_bound_before
+        call original_jacobian(fit, options, r, result, status)
+        exit
+      end if
+      call original_jacobian(fit, options, r, result, status)
+    end do
+
+    p = fit%p
+    result%rejected_evaluations = fit%rejected
+    if (allocated(fit%last_rejection)) result%last_rejection = fit%last_rejection
+    if (.not. status%ok()) return
+    result%cost = 0.5_wp*sum(r**2)
+    result%residual_norm = sqrt(sum(r**2))
+    call covariance(fit, m, r, result)
   end subroutine solve_least_squares
 
   subroutine check_input(m, p, lower, upper, options, status)
@@ -213,103 +322,25 @@ contains
     end if
   end subroutine check_input
 
-  subroutine solve_active(problem, m, p, lower, upper, options, result, status)
-    class(least_squares_problem_t), intent(inout), target :: problem
-    integer, intent(in) :: m
-    real(wp), intent(inout) :: p(:)
-    real(wp), intent(in) :: lower(:), upper(:)
-    type(least_squares_options_t), intent(in) :: options
-    type(least_squares_result_t), intent(inout) :: result
-    type(status_t), intent(out) :: status
-    real(wp), allocatable :: r(:), gradient(:), p_before(:), r_before(:)
-    logical, allocatable :: at_bound_before(:)
-    integer :: n, i, pass
-    logical :: snapped
-
-    n = size(p)
-    active = ls_call_t()   ! frees what the previous fit left
-    active%problem => problem
-    active%m = m
-    active%lower = lower
-    active%upper = upper
-    active%kind = bound_kind(lower, upper)
-    allocate (active%dpdz(n), active%jac(m, n), r(m), gradient(n))
-    active%dpdz = 0
-    ! The start goes into the box, off the bounds (dP/dz = 0 there).
-    active%p = start_inside(p, lower, upper, active%kind)
-    allocate (result%at_bound(n))
-    result%at_bound = active%kind == KIND_FIXED
-
-    call fit_free(options, r, result, status)
-    if (status%ok()) call original_jacobian(options, r, result, status)
-
-    ! Put optima that sit (nearly) on a bound, with the gradient pushing outward
-    ! (Kuhn-Tucker), exactly on it and fit the others again; repeated because a
-    ! parameter may reach its bound only once another one is held.
-    do pass = 1, n
-      if (.not. status%ok()) exit
-      gradient = matmul(r, active%jac)   ! d(0.5 sum r^2)/dp
-      p_before = active%p
-      r_before = r
-      at_bound_before = result%at_bound
-      snapped = .false.
-      do i = 1, n
-        if (result%at_bound(i)) cycle
-        if (has_lower(active%kind(i))) then
-          if (active%p(i) - lower(i) <= options%bound_tolerance*max(1.0_wp, abs(lower(i))) &
-              .and. gradient(i) >= 0) then
-            active%p(i) = lower(i)
-            result%at_bound(i) = .true.
-          end if
-        end if
-        if (has_upper(active%kind(i)) .and. .not. result%at_bound(i)) then
-          if (upper(i) - active%p(i) <= options%bound_tolerance*max(1.0_wp, abs(upper(i))) &
-              .and. gradient(i) <= 0) then
-            active%p(i) = upper(i)
-            result%at_bound(i) = .true.
-          end if
-        end if
-        snapped = snapped .or. result%at_bound(i)
-      end do
-      if (.not. snapped) exit
-      call fit_free(options, r, result, status)
-      if (.not. status%ok()) exit
-      ! Moving downhill onto a bound cannot raise the cost beyond rounding; if it
-      ! did, the snap was wrong: keep the fit from before it.
-      if (sum(r**2) > sum(r_before**2)*(1 + 100*epsilon(1.0_wp)) + tiny(1.0_wp)) then
-        active%p = p_before
-        r = r_before
-        result%at_bound = at_bound_before
-        call original_jacobian(options, r, result, status)
-        exit
-      end if
-      call original_jacobian(options, r, result, status)
-    end do
-
-    p = active%p
-    if (.not. status%ok()) return
-    result%cost = 0.5_wp*sum(r**2)
-    result%residual_norm = sqrt(sum(r**2))
-    call covariance(m, r, result)
-  end subroutine solve_active
-
   !> Fits the parameters not at a bound (or only evaluates r if none is left).
-  subroutine fit_free(options, r, result, status)
+  recursive subroutine fit_free(fit, options, r, result, status)
+    type(fit_t), intent(inout), target :: fit
     type(least_squares_options_t), intent(in) :: options
     real(wp), intent(inout) :: r(:)
     type(least_squares_result_t), intent(inout) :: result
     type(status_t), intent(out) :: status
     if (all(result%at_bound)) then
-      call evaluate_residuals(active%p, r, status)
+      call evaluate_residuals(fit, fit%p, r, status)
       result%evaluations = result%evaluations + 1
     else
-      call run_minpack(options, r, result, status)
+      call run_minpack(fit, options, r, result, status)
     end if
   end subroutine fit_free
 
-  !> One MINPACK solve over the parameters not at a bound, from active%p.
-  !> On return active%p and r are at MINPACK's final point.
-  subroutine run_minpack(options, r, result, status)
+  !> One MINPACK solve over the parameters not at a bound, from fit%p.
+  !> On return fit%p and r are at MINPACK's final point.
+  recursive subroutine run_minpack(fit, options, r, result, status)
+    type(fit_t), intent(inout), target :: fit
     type(least_squares_options_t), intent(in) :: options
     real(wp), intent(inout) :: r(:)
     type(least_squares_result_t), intent(inout) :: result
@@ -318,160 +349,300 @@ contains
     integer, allocatable :: ipvt(:)
     integer :: m, nf, k, info, nfev, njev
 
-    m = active%m
-    active%free = pack([(k, k=1, size(active%p))], .not. result%at_bound)
-    nf = size(active%free)
-    active%n_free = nf
+    m = fit%m
+    fit%free = pack([(k, k=1, size(fit%p))], .not. result%at_bound)
+    nf = size(fit%free)
+    fit%n_free = nf
     allocate (z(nf), diag(nf), fjac(m, nf), qtf(nf), wa1(nf), wa2(nf), wa3(nf), wa4(m), ipvt(nf))
+    if (allocated(fit%points)) deallocate (fit%points, fit%values, fit%statuses)
+    allocate (fit%points(size(fit%p), nf), fit%values(m, nf), fit%statuses(nf))
     do k = 1, nf
-      associate (i => active%free(k))
-        z(k) = to_z(active%kind(i), active%lower(i), active%upper(i), active%p(i))
+      associate (i => fit%free(k))
+        z(k) = to_z(fit%kind(i), fit%lower(i), fit%upper(i), fit%p(i))
       end associate
     end do
     diag = 1
     r = 0
     fjac = 0
-    active%status = status_t()
-    njev = 0
+    fit%status = status_t()
+    fit%started = .false.
+    fit%evaluations = 0
+    fit%max_evaluations = options%max_evaluations
+    fit%budget_spent = .false.
+    fit%below => top
+    top => fit
     ! mode 1: MINPACK scales the unknowns by the column norms of the Jacobian.
-    if (active%problem%has_jacobian()) then
-      call lmder(lmder_callback, m, nf, z, r, fjac, m, options%ftol, options%xtol, options%gtol, &
-                 options%max_evaluations, diag, 1, options%factor, 0, info, nfev, njev, ipvt, &
-                 qtf, wa1, wa2, wa3, wa4)
-    else
-      call lmdif(lmdif_callback, m, nf, z, r, options%ftol, options%xtol, options%gtol, &
-                 options%max_evaluations, options%epsfcn, diag, 1, options%factor, 0, info, nfev, &
-                 fjac, m, ipvt, qtf, wa1, wa2, wa3, wa4)
-    end if
-    call set_parameters(z)
+    ! maxfev counts LMDER's calls for residuals only; the difference points are
+    ! counted here and stop the fit (iflag < 0) when the budget is spent.
+    call lmder(lmder_callback, m, nf, z, r, fjac, m, options%ftol, options%xtol, options%gtol, &
+               options%max_evaluations, diag, 1, options%factor, 0, info, nfev, njev, ipvt, &
+               qtf, wa1, wa2, wa3, wa4)
+    top => fit%below
+    call set_parameters(fit, z)
     result%info = info
-    result%evaluations = result%evaluations + nfev
+    result%evaluations = result%evaluations + fit%evaluations
     result%jacobian_evaluations = result%jacobian_evaluations + njev
+    if (info < 0 .and. fit%budget_spent) info = 5
 
-    ! The one translation of LMDIF/LMDER's info.
+    ! The one translation of LMDER's info.
     select case (info)
     case (:-1)
-      if (.not. active%status%ok()) then
-        status = active%status   ! the problem's own reason, unchanged
+      if (.not. fit%status%ok()) then
+        status = fit%status   ! the problem's own reason, unchanged
       else
-        call set_status(status, STATUS_INTERNAL, 'LMDIF/LMDER stopped by the callback without a status')
+        call set_status(status, STATUS_INTERNAL, 'LMDER stopped by the callback without a status')
       end if
     case (0)
-      call set_status(status, STATUS_INVALID_INPUT, 'LMDIF/LMDER info = 0: improper input parameters')
+      call set_status(status, STATUS_INVALID_INPUT, 'LMDER info = 0: improper input parameters')
     case (1:4)
       continue   ! converged: ftol (1), xtol (2), both (3) or gtol (4) satisfied
     case (5)
+      result%info = 5
       call set_status(status, STATUS_NOT_CONVERGED, &
-        'LMDIF/LMDER info = 5: max_evaluations reached before convergence')
+        'LMDER info = 5: max_evaluations reached before convergence')
     case (6:8)
       continue   ! ftol, xtol or gtol too small: converged to machine precision
     case default
-      call set_status(status, STATUS_SOLVER, 'LMDIF/LMDER returned an unknown info code')
+      call set_status(status, STATUS_SOLVER, 'LMDER returned an unknown info code')
     end select
+    ! MINPACK's final r belongs to its final z: a rejected trial (and its
+    ! stand-in residuals) never becomes the current point.
   end subroutine run_minpack
 
-  !> active%p from MINPACK's unknowns z (the fixed parameters stay as they are).
-  subroutine set_parameters(z)
+  !> fit%p from MINPACK's unknowns z (the fixed parameters stay as they are).
+  pure subroutine set_parameters(fit, z)
+    type(fit_t), intent(inout) :: fit
     real(wp), intent(in) :: z(:)
     integer :: k
     do k = 1, size(z)
-      associate (i => active%free(k))
-        call to_p(active%kind(i), active%lower(i), active%upper(i), z(k), active%p(i), active%dpdz(i))
+      associate (i => fit%free(k))
+        call to_p(fit%kind(i), fit%lower(i), fit%upper(i), z(k), fit%p(i), fit%dpdz(i))
       end associate
     end do
   end subroutine set_parameters
 
-  subroutine evaluate_residuals(p, r, status)
+  recursive subroutine evaluate_residuals(fit, p, r, status)
+    type(fit_t), intent(inout) :: fit
     real(wp), intent(in) :: p(:)
     real(wp), intent(out) :: r(:)
     type(status_t), intent(inout) :: status
-    call active%problem%residuals(p, r, status)
-    if (status%ok() .and. .not. all(abs(r) <= huge(r))) &
-      call set_status(status, STATUS_SOLVER, 'least squares: a residual is not finite')
+    call fit%problem%residuals(p, r, status)
+    call check_finite(r, status)
   end subroutine evaluate_residuals
 
-  subroutine lmdif_callback(m, n, x, fvec, iflag)
-    integer, intent(in) :: m, n
-    real(wp), intent(in) :: x(n)
-    real(wp), intent(inout) :: fvec(m)
-    integer, intent(inout) :: iflag
-    if (iflag <= 0) return   ! 0: a print request (nprint = 0, never made)
-    call set_parameters(x)
-    call evaluate_residuals(active%p, fvec, active%status)
-    if (.not. active%status%ok()) iflag = -1
-  end subroutine lmdif_callback
+  pure subroutine check_finite(r, status)
+    real(wp), intent(in) :: r(:)
+    type(status_t), intent(inout) :: status
+    if (status%ok() .and. .not. all(abs(r) <= huge(r))) &
+      call set_status(status, STATUS_SOLVER, 'least squares: a residual is not finite')
+  end subroutine check_finite
 
-  !> iflag 1: residuals; 2: dr/dz = dr/dp dP/dz over the free parameters.
-  subroutine lmder_callback(m, n, x, fvec, fjac, ldfjac, iflag)
+  !> iflag 1: residuals (a rejectable failure after the start becomes a rejected
+  !> step, see the module comment); 2: dr/dz over the free parameters.
+  recursive subroutine lmder_callback(m, n, x, fvec, fjac, ldfjac, iflag)
     integer, intent(in) :: m, n, ldfjac
     real(wp), intent(in) :: x(n)
     real(wp), intent(inout) :: fvec(m), fjac(ldfjac, n)
     integer, intent(inout) :: iflag
+    type(fit_t), pointer :: fit
+    type(status_t) :: status
     integer :: k
-    if (iflag <= 0) return
-    call set_parameters(x)
+
+    fit => top
+    if (iflag <= 0) return   ! 0: a print request (nprint = 0, never made)
+    if (iflag == 1 .and. fit%evaluations >= fit%max_evaluations) then
+      fit%budget_spent = .true.   ! differences count too, as in LMDIF
+      iflag = -1
+      return
+    end if
+    call set_parameters(fit, x)
     if (iflag == 1) then
-      call evaluate_residuals(active%p, fvec, active%status)
-    else
-      call active%problem%jacobian(active%p, active%jac, active%status)
-      if (active%status%ok()) then
+      call evaluate_residuals(fit, fit%p, fvec, status)
+      fit%evaluations = fit%evaluations + 1
+      if (status%ok()) then
+        fit%largest_norm = max(fit%largest_norm, norm2(fvec))
+      else if (fit%started .and. is_rejectable(status)) then
+        fit%rejected = fit%rejected + 1
+        fit%last_rejection = status%text()
+        fvec = 1e3_wp*max(1.0_wp, fit%largest_norm)/sqrt(real(m, wp))
+        status = status_t()
+      end if
+      fit%started = .true.
+    else if (fit%problem%has_jacobian()) then
+      call fit%problem%jacobian(fit%p, fit%jac, status)
+      if (status%ok()) then
         do k = 1, n
-          fjac(1:m, k) = active%jac(:, active%free(k))*active%dpdz(active%free(k))
+          fjac(1:m, k) = fit%jac(:, fit%free(k))*fit%dpdz(fit%free(k))
         end do
         if (.not. all(abs(fjac(1:m, 1:n)) <= huge(fjac))) &
-          call set_status(active%status, STATUS_SOLVER, 'least squares: the Jacobian is not finite')
+          call set_status(status, STATUS_SOLVER, 'least squares: the Jacobian is not finite')
       end if
+    else
+      call difference_jacobian(fit, x, fvec, fjac(1:m, 1:n), status)
     end if
-    if (.not. active%status%ok()) iflag = -1
+    if (.not. status%ok()) then
+      fit%status = status
+      iflag = -1
+    end if
   end subroutine lmder_callback
 
-  !> active%jac = dr/dp at active%p for the parameters not at a bound: the
+  !> dr/dz by forward differences as LMDIF's fdjac2 forms them, all columns
+  !> in one batch. A failed point is retried mirrored (backward difference).
+  recursive subroutine difference_jacobian(fit, z, r, fjac, status)
+    type(fit_t), intent(inout) :: fit
+    real(wp), intent(in) :: z(:), r(:)
+    real(wp), intent(out) :: fjac(:, :)
+    type(status_t), intent(inout) :: status
+    real(wp) :: eps, h(size(z)), zj(size(z))
+    integer :: j
+
+    eps = sqrt(max(fit%epsfcn, epsilon(1.0_wp)))
+    do j = 1, size(z)
+      h(j) = eps*abs(z(j))
+      if (h(j) == 0) h(j) = eps
+    end do
+    call batch_at(fit, z, h, status)
+    if (.not. status%ok()) return
+    do j = 1, size(z)
+      if (.not. fit%statuses(j)%ok()) then   ! mirror the step once
+        h(j) = -h(j)
+        zj = z
+        zj(j) = z(j) + h(j)
+        call set_parameters(fit, zj)
+        fit%statuses(j) = status_t()
+        call evaluate_residuals(fit, fit%p, fit%values(:, j), fit%statuses(j))
+        fit%evaluations = fit%evaluations + 1
+        if (.not. fit%statuses(j)%ok()) then
+          status = fit%statuses(j)
+          call prefix_status(status, 'least squares: difference Jacobian (both sides of an accepted point)')
+          return
+        end if
+      end if
+      fjac(:, j) = (fit%values(:, j) - r)/h(j)
+    end do
+    call set_parameters(fit, z)   ! restore p and dP/dz at z
+  end subroutine difference_jacobian
+
+  !> Residuals at z + h_j e_j for every column j, as one batch.
+  recursive subroutine batch_at(fit, z, h, status)
+    type(fit_t), intent(inout) :: fit
+    real(wp), intent(in) :: z(:), h(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: zj(size(z))
+    integer :: j
+    do j = 1, size(z)
+      zj = z
+      zj(j) = z(j) + h(j)
+      call set_parameters(fit, zj)
+      fit%points(:, j) = fit%p
+      fit%statuses(j) = status_t()
+    end do
+    call set_parameters(fit, z)
+    call fit%problem%residuals_batch(fit%points, fit%values, fit%statuses)
+    fit%evaluations = fit%evaluations + size(z)
+    do j = 1, size(z)
+      call check_finite(fit%values(:, j), fit%statuses(j))
+      if (.not. fit%statuses(j)%ok() .and. .not. is_rejectable(fit%statuses(j))) then
+        status = fit%statuses(j)
+        return
+      end if
+    end do
+  end subroutine batch_at
+
+  !> fit%jac = dr/dp at fit%p for the parameters not at a bound: the
   !> problem's Jacobian, or differences that stay inside the bounds (central with
-  !> h = eps^(1/3) max(1, |p|), one-sided with sqrt(eps) max(1, |p|) near a bound).
-  subroutine original_jacobian(options, r, result, status)
+  !> h = eps^(1/3) max(1, |p|), one-sided with sqrt(eps) max(1, |p|) near a
+  !> bound), all points in one batch. Where the model fails on one side (a
+  !> rejectable status) the other side gives a one-sided difference; where it
+  !> fails on both, jacobian_ok is false (no covariance, no snapping to bounds)
+  !> and the fit itself stands.
+  recursive subroutine original_jacobian(fit, options, r, result, status)
+    type(fit_t), intent(inout) :: fit
     type(least_squares_options_t), intent(in) :: options
     real(wp), intent(in) :: r(:)
     type(least_squares_result_t), intent(inout) :: result
     type(status_t), intent(out) :: status
-    real(wp), allocatable :: pp(:), rp(:), rm(:)
-    real(wp) :: h, eps
-    integer :: i
+    real(wp), allocatable :: points(:, :), values(:, :), h(:)
+    type(status_t), allocatable :: statuses(:)
+    logical, allocatable :: central(:)
+    integer, allocatable :: first(:)
+    real(wp) :: eps
+    integer :: i, n, count, a, b
 
-    if (active%problem%has_jacobian()) then
-      call active%problem%jacobian(active%p, active%jac, status)
+    fit%jacobian_ok = .true.
+    if (fit%problem%has_jacobian()) then
+      call fit%problem%jacobian(fit%p, fit%jac, status)
       result%jacobian_evaluations = result%jacobian_evaluations + 1
       return
     end if
+    n = size(fit%p)
     eps = max(options%epsfcn, epsilon(1.0_wp))
-    allocate (pp(size(active%p)), rp(size(r)), rm(size(r)))
-    active%jac = 0
-    do i = 1, size(active%p)
+    allocate (h(n), central(n), first(n), points(n, 2*n))
+    count = 0
+    fit%jac = 0
+    do i = 1, n
       if (result%at_bound(i)) cycle
-      pp = active%p
-      h = eps**(1.0_wp/3)*max(1.0_wp, abs(active%p(i)))
-      if (active%p(i) - h >= active%lower(i) .and. active%p(i) + h <= active%upper(i)) then
-        pp(i) = active%p(i) + h
-        call evaluate_residuals(pp, rp, status)
-        if (.not. status%ok()) return
-        pp(i) = active%p(i) - h
-        call evaluate_residuals(pp, rm, status)
-        if (.not. status%ok()) return
-        active%jac(:, i) = (rp - rm)/(2*h)
-        result%evaluations = result%evaluations + 2
+      first(i) = count + 1
+      h(i) = eps**(1.0_wp/3)*max(1.0_wp, abs(fit%p(i)))
+      central(i) = fit%p(i) - h(i) >= fit%lower(i) .and. fit%p(i) + h(i) <= fit%upper(i)
+      if (central(i)) then
+        points(:, count + 1) = fit%p
+        points(i, count + 1) = fit%p(i) + h(i)
+        points(:, count + 2) = fit%p
+        points(i, count + 2) = fit%p(i) - h(i)
+        count = count + 2
       else
-        h = sqrt(eps)*max(1.0_wp, abs(active%p(i)))
-        if (active%p(i) + h > active%upper(i)) h = -h
-        pp(i) = active%p(i) + h
-        call evaluate_residuals(pp, rp, status)
-        if (.not. status%ok()) return
-        active%jac(:, i) = (rp - r)/h
-        result%evaluations = result%evaluations + 1
+        h(i) = sqrt(eps)*max(1.0_wp, abs(fit%p(i)))
+        if (fit%p(i) + h(i) > fit%upper(i)) h(i) = -h(i)
+        points(:, count + 1) = fit%p
+        points(i, count + 1) = fit%p(i) + h(i)
+        count = count + 1
+      end if
+    end do
+    if (count == 0) return
+    allocate (values(size(r), count), statuses(count))
+    call fit%problem%residuals_batch(points(:, 1:count), values, statuses)
+    result%evaluations = result%evaluations + count
+    result%jacobian_evaluations = result%jacobian_evaluations + 1
+    do i = 1, count
+      call check_finite(values(:, i), statuses(i))
+      if (.not. statuses(i)%ok()) then
+        if (.not. is_rejectable(statuses(i))) then
+          status = statuses(i)
+          call prefix_status(status, 'least squares: Jacobian at the optimum')
+          return
+        end if
+        fit%rejected = fit%rejected + 1
+        fit%last_rejection = statuses(i)%text()
+      end if
+    end do
+    do i = 1, n
+      if (result%at_bound(i)) cycle
+      a = first(i)
+      if (.not. central(i)) then
+        if (statuses(a)%ok()) then
+          fit%jac(:, i) = (values(:, a) - r)/h(i)
+        else
+          fit%jacobian_ok = .false.
+        end if
+        cycle
+      end if
+      b = a + 1
+      if (statuses(a)%ok() .and. statuses(b)%ok()) then
+        fit%jac(:, i) = (values(:, a) - values(:, b))/(2*h(i))
+      else if (statuses(a)%ok()) then   ! one-sided: h^(1/3) steps give ~eps^(1/3) accuracy
+        fit%jac(:, i) = (values(:, a) - r)/h(i)
+      else if (statuses(b)%ok()) then
+        fit%jac(:, i) = (r - values(:, b))/h(i)
+      else
+        fit%jacobian_ok = .false.
       end if
     end do
   end subroutine original_jacobian
 
   !> s^2 (J^T J)^(-1) over the free parameters (numerics_linear_algebra, by QR).
-  subroutine covariance(m, r, result)
+  subroutine covariance(fit, m, r, result)
+    type(fit_t), intent(in) :: fit
     integer, intent(in) :: m
     real(wp), intent(in) :: r(:)
     type(least_squares_result_t), intent(inout) :: result
@@ -480,7 +651,7 @@ contains
     type(status_t) :: status
     integer :: n, nf, i
 
-    n = size(active%p)
+    n = size(fit%p)
     allocate (result%covariance(n, n), result%standard_error(n))
     result%covariance = 0
     result%standard_error = 0
@@ -491,13 +662,13 @@ contains
       result%covariance_valid = .true.
       return
     end if
-    if (m <= nf) then
+    if (m <= nf .or. .not. fit%jacobian_ok) then
       result%covariance(free, free) = huge(1.0_wp)
       result%standard_error(free) = huge(1.0_wp)
       return
     end if
     allocate (cov_free(nf, nf))
-    call normal_matrix_inverse(active%jac(:, free), cov_free, status)
+    call normal_matrix_inverse(fit%jac(:, free), cov_free, status)
     if (.not. status%ok()) then   ! rank-deficient: some parameters are not identifiable
       result%covariance(free, free) = huge(1.0_wp)
       result%standard_error(free) = huge(1.0_wp)

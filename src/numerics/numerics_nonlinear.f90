@@ -2,11 +2,16 @@
 !> method with the user's analytic Jacobian), as the thesis closes kinematic
 !> loops: relative step tolerance xtol and step bound factor as HYBRJ defines them.
 !>
-!> MINPACK's callbacks carry no user data. During one call of solve_nonlinear the
-!> system is reached through the module pointer `active`, set on entry and
-!> nullified before returning; a nested call (a residual that itself calls
-!> solve_nonlinear) is refused with STATUS_INTERNAL instead of corrupting it.
-!> Consequently solve_nonlinear is not thread-safe.
+!> Re-entrant and thread-safe. MINPACK's callbacks carry no user data, so every
+!> call of solve_nonlinear keeps its own record (a `solve_frame_t`, a local
+!> variable of that call: the system and the status its callbacks report) and
+!> pushes it on a per-thread stack (`top`, an OpenMP threadprivate pointer)
+!> for the duration of HYBRJ; the callback works on the top record. A residual
+!> that itself calls solve_nonlinear pushes its own record above and pops it
+!> before returning, so nesting works; each thread has its own stack, so
+!> several threads solve at once. This is per-call state, never left behind:
+!> `top` is the same on return as on entry, failures included. (Tied OpenMP
+!> tasks only; an untied task could resume on another thread's stack.)
 module numerics_nonlinear
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT, &
@@ -82,10 +87,17 @@ module numerics_nonlinear
     end subroutine hybrj
   end interface
 
-  !> The system of the solve in progress (see the module comment) and the status
-  !> its callbacks report.
-  class(nonlinear_system_t), pointer :: active => null()
-  type(status_t) :: active_status
+  !> One solve in progress: its system, the status its callbacks report, and the
+  !> solve it is nested in (see the module comment).
+  type :: solve_frame_t
+    class(nonlinear_system_t), pointer :: system => null()
+    type(status_t) :: status
+    type(solve_frame_t), pointer :: below => null()
+  end type solve_frame_t
+
+  !> The innermost solve in progress on this thread.
+  type(solve_frame_t), pointer :: top => null()
+  !$omp threadprivate(top)
 
 contains
 
@@ -103,13 +115,9 @@ contains
     integer :: n, info, nfev, njev
     character(len=:), allocatable :: what
     character(len=24) :: number
+    type(solve_frame_t), target :: frame
 
     n = size(x)
-    if (associated(active)) then
-      call set_status(status, STATUS_INTERNAL, &
-        'solve_nonlinear: called again from inside a residual or Jacobian (MINPACK has no user data)')
-      return
-    end if
     if (n < 1) then
       call set_status(status, STATUS_INVALID_INPUT, 'solve_nonlinear: no unknowns')
     else if (.not. all(abs(x) <= huge(x))) then
@@ -125,16 +133,15 @@ contains
     end if
     if (.not. status%ok()) return
 
-    active => system
-    active_status%code = STATUS_OK
-    if (allocated(active_status%message)) deallocate (active_status%message)
+    frame%system => system
+    call push(frame)
     f = 0
     fjac = 0
     diag = 1
     ! mode 1: HYBRJ scales the variables by the column norms of the Jacobian.
     call hybrj(hybrj_callback, n, x, f, fjac, n, options%xtol, options%max_evaluations, &
                diag, 1, options%factor, 0, info, nfev, njev, r, size(r), qtf, wa1, wa2, wa3, wa4)
-    nullify (active)
+    top => frame%below
 
     result%info = info
     result%evaluations = nfev
@@ -146,8 +153,8 @@ contains
     ! improve further; the answer is accepted if the residual is small anyway.
     select case (info)
     case (:-1)
-      if (.not. active_status%ok()) then
-        status = active_status   ! the system's own reason, unchanged
+      if (.not. frame%status%ok()) then
+        status = frame%status   ! the system's own reason, unchanged
       else
         call set_status(status, STATUS_INTERNAL, 'HYBRJ stopped by the callback without a status')
       end if
@@ -177,24 +184,35 @@ contains
     end if
   end subroutine solve_nonlinear
 
+  !> Puts the frame of a starting solve on this thread's stack (popped by
+  !> `top => frame%below` right after HYBRJ returns).
+  subroutine push(frame)
+    type(solve_frame_t), intent(inout), target :: frame
+    frame%below => top
+    top => frame
+  end subroutine push
+
   !> HYBRJ's fcn: iflag 1 = residual into fvec, 2 = Jacobian into fjac; a negative
-  !> iflag stops HYBRJ (the status is kept in active_status).
-  subroutine hybrj_callback(n, x, fvec, fjac, ldfjac, iflag)
+  !> iflag stops HYBRJ (the status is kept in the top frame). `recursive`: the
+  !> system may solve another system inside.
+  recursive subroutine hybrj_callback(n, x, fvec, fjac, ldfjac, iflag)
     integer, intent(in) :: n, ldfjac
     real(wp), intent(in) :: x(n)
     real(wp), intent(inout) :: fvec(n), fjac(ldfjac, n)
     integer, intent(inout) :: iflag
+    type(solve_frame_t), pointer :: frame
 
+    frame => top
     if (iflag == 1) then
-      call active%residual(x, fvec, active_status)
-      if (active_status%ok() .and. .not. all(abs(fvec) <= huge(fvec))) &
-        call set_status(active_status, STATUS_SOLVER, 'solve_nonlinear: the residual is not finite')
+      call frame%system%residual(x, fvec, frame%status)
+      if (frame%status%ok() .and. .not. all(abs(fvec) <= huge(fvec))) &
+        call set_status(frame%status, STATUS_SOLVER, 'solve_nonlinear: the residual is not finite')
     else if (iflag == 2) then
-      call active%jacobian(x, fjac(1:n, 1:n), active_status)
-      if (active_status%ok() .and. .not. all(abs(fjac(1:n, 1:n)) <= huge(fjac))) &
-        call set_status(active_status, STATUS_SOLVER, 'solve_nonlinear: the Jacobian is not finite')
+      call frame%system%jacobian(x, fjac(1:n, 1:n), frame%status)
+      if (frame%status%ok() .and. .not. all(abs(fjac(1:n, 1:n)) <= huge(fjac))) &
+        call set_status(frame%status, STATUS_SOLVER, 'solve_nonlinear: the Jacobian is not finite')
     end if
-    if (.not. active_status%ok()) iflag = -1
+    if (.not. frame%status%ok()) iflag = -1
   end subroutine hybrj_callback
 
   !> Compares the system's Jacobian at x with central differences (step

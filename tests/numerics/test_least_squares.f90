@@ -176,7 +176,7 @@ contains
 
   function name() result(text)
     character(len=:), allocatable :: text
-    text = merge('LMDER: ', 'LMDIF: ', analytic)
+    text = merge('analytic Jacobian: ', 'differences:       ', analytic)
   end function name
 
   function exp_problem() result(problem)
@@ -401,12 +401,36 @@ contains
     call check(status%code == STATUS_NOT_CONVERGED .and. result%info == 5, &
       'max_evaluations 3: info 5, not converged: '//status%text())
 
+    ! A model that cannot be run beyond p1 = 0.9: the failed trial points are
+    ! rejected steps, the fit goes on and ends at the domain's edge (the
+    ! constrained minimum is (0.9, 0.81), cost 0.005), where LMDER's trust
+    ! region has shrunk below xtol.
     problem%p1_domain = 0.9_wp
     p = [-1.2_wp, 1.0_wp]
     call solve_least_squares(problem, 2, p, [-big, -big], [big, big], least_squares_options_t(), &
                              result, status)
+    call check(status%ok(), 'failed trial points do not end the fit: '//status%text())
+    call check(result%rejected_evaluations > 0, 'failed trial points counted as rejected')
+    if (allocated(result%last_rejection)) then
+      call check(result%last_rejection == 'rosenbrock: p1 beyond its domain', &
+        'the reason of the last rejection kept: '//result%last_rejection)
+    else
+      call check(.false., 'the reason of the last rejection kept')
+    end if
+    ! The edge is reached to ~xtol (1e-10) in p1. Along the edge the fit stalls
+    ! short of the constrained minimum (0.9, 0.81): each LM step there leans
+    ! across the edge, is rejected, and the trust region shrinks below xtol.
+    ! Rejection is a safeguard, not a constraint (use bounds for constraints),
+    ! so only "at the edge, cost within 1e-5 of the edge's minimum" is claimed.
+    call check(p(1) <= 0.9_wp .and. p(1) > 0.9_wp - 1e-9_wp, 'fit ends at the domain''s edge')
+    call check(result%cost >= 0.005_wp .and. result%cost < 0.005_wp + 1e-5_wp, &
+               'cost near the edge''s minimum 0.005')
+    ! A failure at the start is not a step: the residuals' status comes back.
+    p = [1.2_wp, 1.0_wp]
+    call solve_least_squares(problem, 2, p, [-big, -big], [big, big], least_squares_options_t(), &
+                             result, status)
     call check(status%code == STATUS_DOMAIN .and. status%text() == 'rosenbrock: p1 beyond its domain', &
-      'the residuals'' status comes back unchanged: '//status%text())
+      'a failed start: the residuals'' status comes back unchanged: '//status%text())
 
     p = [0.0_wp, 0.0_wp]
     call solve_least_squares(problem, 2, p, [1.0_wp, -big], [0.0_wp, big], least_squares_options_t(), &
