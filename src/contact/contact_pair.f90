@@ -1,0 +1,229 @@
+!> Point contact between two surfaces on two moving bodies at position level
+!> (thesis 3.5.3, A.3 of METHOD-PART2.md): one description, "body A surface S1
+!> touches body B surface S2", expands into the elements, coordinates and the
+!> closed loop of the thesis.
+!>
+!> Body B is carried by body A through a regular relative chain:
+!>     K_A --S12(u12, v12)--> K_12 --prismatic z12 along z_12--> K_lift
+!>         --free rotation (a1, a2, a3)--> K_B
+!> S12 has the geometry and side of S1 ("where over surface 1 body B is"); the
+!> free rotation (kinetostatics_free_rotation) has its first axis along the
+!> normal z_12, so the spin about the normal is its unbounded first angle and
+!> the chart changes only when B tilts by more than chart_limit from the pose
+!> the chart was centred on. The contact frames are the Darboux frames
+!>     K_1D = S1(u1, v1) on K_A,   K_2D = S2(u2, v2) on K_B,
+!> and the loop closes them with the five conditions (3.86):
+!>     g1..g3 = x_1D, y_1D, z_1D . (r_2D - r_1D) = 0   (plane-point)
+!>     g4, g5 = z_1D . x_2D, z_1D . y_2D = 0            (plane-plane).
+!> Independent coordinates q = (u12, v12, a1, a2, a3); dependent
+!> beta = (u1, v1, u2, v2, z12). This partition is regular wherever the
+!> surfaces touch with a finite relative curvature: z12 moves the contact along
+!> the common normal, (u1, v1) and (u2, v2) along the two tangent planes.
+!>
+!> Sides: `side_1`, `side_2` (+1 or -1) orient each surface's normal (the
+!> surface joint's sigma, (3.38)) towards the other body, i.e. out of the body's
+!> material. The physical branch has antiparallel normals, z_1D . z_2D = -1;
+!> g4, g5 alone also admit parallel normals, so the branch is checked
+!> (`check_contact_branch`) after every closure that could have jumped.
+module contact_pair
+  use base_kinds, only: wp
+  use base_text, only: format_short
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
+  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_darboux, only: darboux_frame_t, darboux_frame
+  use kinetostatics_joints, only: new_prismatic
+  use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
+  use kinetostatics_free_rotation, only: free_rotation_t, new_free_rotation
+  use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT, MEASURE_PLANE_PLANE
+  use kinetostatics_mechanism, only: mechanism_t
+  use contact_surface_search, only: nearest_point, support_point
+  implicit none (type, external)
+  private
+  public :: contact_pair_t, add_contact_pair, place_contact_pair, check_contact_branch
+
+  !> What one contact expanded into: indices into the mechanism's frames,
+  !> scalars and elements.
+  type :: contact_pair_t
+    character(len=:), allocatable :: name
+    integer :: frame_a = 0, frame_b = 0                   ! the two bodies
+    integer :: frame_12 = 0, frame_lift = 0, frame_1d = 0, frame_2d = 0
+    integer :: u12 = 0, v12 = 0, z12 = 0, angles(3) = 0  ! relative chain
+    integer :: u1 = 0, v1 = 0, u2 = 0, v2 = 0            ! contact points
+    integer :: gaps(5) = 0                               ! closure measurements g1..g5
+    integer :: element_s1 = 0, element_s2 = 0, element_s12 = 0, element_rotation = 0
+    real(wp) :: side_1 = 1, side_2 = 1
+  contains
+    procedure :: coordinates => pair_coordinates
+    procedure :: dependents => pair_dependents
+  end type contact_pair_t
+
+contains
+
+  !> Independent coordinates of the pair: u12, v12 and the three angles.
+  pure function pair_coordinates(self) result(q)
+    class(contact_pair_t), intent(in) :: self
+    integer :: q(5)
+    q = [self%u12, self%v12, self%angles]
+  end function pair_coordinates
+
+  !> Dependent coordinates of its loop: u1, v1, u2, v2, z12.
+  pure function pair_dependents(self) result(beta)
+    class(contact_pair_t), intent(in) :: self
+    integer :: beta(5)
+    beta = [self%u1, self%v1, self%u2, self%v2, self%z12]
+  end function pair_dependents
+
+  !> Adds the contact `name` between surface_1 on the body frame `frame_a` and
+  !> surface_2 on body B, whose frame (named `body_b`) the chain creates. The
+  !> caller adds B's mass and everything carried by B afterwards, and lists
+  !> pair%coordinates() among the mechanism's coordinates.
+  subroutine add_contact_pair(m, name, frame_a, surface_1, side_1, body_b, surface_2, side_2, pair, status)
+    type(mechanism_t), intent(inout) :: m
+    character(len=*), intent(in) :: name, body_b
+    integer, intent(in) :: frame_a
+    class(surface_t), intent(in) :: surface_1, surface_2
+    real(wp), intent(in) :: side_1, side_2
+    type(contact_pair_t), intent(out) :: pair
+    type(status_t), intent(inout) :: status
+    real(wp), parameter :: ex(3) = [1, 0, 0], ey(3) = [0, 1, 0], ez(3) = [0, 0, 1]
+    real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+    integer :: k
+    character(len=2) :: digit
+    if (.not. status%ok()) return
+    if (abs(abs(side_1) - 1) > 0 .or. abs(abs(side_2) - 1) > 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'contact '''//name//''': the sides of its surfaces '// &
+                      'must be +1 or -1')
+      return
+    end if
+    pair%name = name
+    pair%side_1 = side_1
+    pair%side_2 = side_2
+    pair%frame_a = frame_a
+    ! relative chain: S12, lift along its normal, free rotation
+    pair%frame_12 = m%add_frame(name//'.12')
+    pair%u12 = m%add_scalar(name//'.u12')
+    pair%v12 = m%add_scalar(name//'.v12')
+    call m%add_element(new_surface_joint(name//'.s12', frame_a, pair%frame_12, pair%u12, pair%v12, surface_1, &
+                                         side_1, 1.0_wp, 0.0_wp))
+    pair%element_s12 = m%n_elements
+    pair%frame_lift = m%add_frame(name//'.lift')
+    pair%z12 = m%add_scalar(name//'.z12')
+    call m%add_element(new_prismatic(name//'.lift', pair%frame_12, pair%frame_lift, pair%z12, ez))
+    pair%frame_b = m%add_frame(body_b)
+    do k = 1, 3
+      write (digit, '(i1)') k
+      pair%angles(k) = m%add_scalar(name//'.a'//trim(digit))
+    end do
+    call m%add_element(new_free_rotation(name//'.turn', pair%frame_lift, pair%frame_b, pair%angles, ez, identity))
+    pair%element_rotation = m%n_elements
+    ! the two contact frames
+    pair%frame_1d = m%add_frame(name//'.1D')
+    pair%u1 = m%add_scalar(name//'.u1')
+    pair%v1 = m%add_scalar(name//'.v1')
+    call m%add_element(new_surface_joint(name//'.s1', frame_a, pair%frame_1d, pair%u1, pair%v1, surface_1, &
+                                         side_1, 1.0_wp, 0.0_wp))
+    pair%element_s1 = m%n_elements
+    pair%frame_2d = m%add_frame(name//'.2D')
+    pair%u2 = m%add_scalar(name//'.u2')
+    pair%v2 = m%add_scalar(name//'.v2')
+    call m%add_element(new_surface_joint(name//'.s2', pair%frame_b, pair%frame_2d, pair%u2, pair%v2, surface_2, &
+                                         side_2, 1.0_wp, 0.0_wp))
+    pair%element_s2 = m%n_elements
+    ! closure (3.86)
+    do k = 1, 5
+      write (digit, '(i1)') k
+      pair%gaps(k) = m%add_scalar(name//'.g'//trim(digit))
+    end do
+    call m%add_element(new_measurement(name//'.g1', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
+                                       pair%gaps(1), axis_i=ex))
+    call m%add_element(new_measurement(name//'.g2', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
+                                       pair%gaps(2), axis_i=ey))
+    call m%add_element(new_measurement(name//'.g3', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
+                                       pair%gaps(3), axis_i=ez))
+    call m%add_element(new_measurement(name//'.g4', MEASURE_PLANE_PLANE, pair%frame_1d, pair%frame_2d, &
+                                       pair%gaps(4), axis_i=ez, axis_j=ex))
+    call m%add_element(new_measurement(name//'.g5', MEASURE_PLANE_PLANE, pair%frame_1d, pair%frame_2d, &
+                                       pair%gaps(5), axis_i=ez, axis_j=ey))
+    call m%add_loop(name, pair%gaps, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], pair%dependents(), status)
+  end subroutine add_contact_pair
+
+  !> Start values of the pair from the poses of A and B (world rotation and
+  !> origin of each): the chain sits over the point of S1 nearest to B's
+  !> origin, its rotation chart is centred on B's orientation (angles zero),
+  !> and the contact points start at that point of S1 and at the support point
+  !> of S2 against S1's normal there; z12 then puts that support point onto
+  !> the tangent plane, i.e. moves B along the normal by `gap` (m, positive:
+  !> B was above the surface). The loop is closed afterwards by the mechanism
+  !> (set_positions / check_start), which makes the contact exact.
+  subroutine place_contact_pair(m, pair, rot_a, r_a, rot_b, r_b, gap, status)
+    type(mechanism_t), intent(inout) :: m
+    type(contact_pair_t), intent(in) :: pair
+    real(wp), intent(in) :: rot_a(3, 3), r_a(3), rot_b(3, 3), r_b(3)
+    real(wp), intent(out) :: gap
+    type(status_t), intent(inout) :: status
+    real(wp) :: p(3), rel(3, 3), n_b(3), u12, v12, u2, v2, c_b(3)
+    type(surface_point_t) :: pt1, pt2
+    type(darboux_frame_t) :: d12
+    class(surface_t), allocatable :: surface_1, surface_2
+    gap = 0
+    if (.not. status%ok()) return
+    call surface_of(m, pair%element_s1, surface_1)
+    call surface_of(m, pair%element_s2, surface_2)
+    associate (s1 => surface_1, s2 => surface_2)
+      p = matmul(transpose(rot_a), r_b - r_a)                ! B's origin in A's coordinates
+      call nearest_point(s1, p, u12, v12, status)
+      if (status%ok()) call s1%evaluate(u12, v12, 3, pt1, status)
+      if (status%ok()) call darboux_frame(pt1, pair%side_1, 1.0_wp, 0.0_wp, d12, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, 'contact '''//pair%name//''': placing body B over surface 1')
+        return
+      end if
+      rel = matmul(transpose(d12%r), matmul(transpose(rot_a), rot_b))   ! B relative to K_12
+      n_b = matmul(transpose(rel), [0.0_wp, 0.0_wp, 1.0_wp])           ! S1's normal in B's coordinates
+      call support_point(s2, n_b, u2, v2, status)
+      if (status%ok()) call s2%evaluate(u2, v2, 0, pt2, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, 'contact '''//pair%name//''': finding where body B touches')
+        return
+      end if
+      c_b = matmul(rel, pt2%r)                                ! support point relative to B's origin, K_12 axes
+      gap = dot_product(p - pt1%r, d12%r(:, 3)) + c_b(3)
+    end associate
+    m%scalars(pair%u12)%q = u12
+    m%scalars(pair%v12)%q = v12
+    m%scalars(pair%angles)%q = 0
+    m%scalars(pair%u1)%q = u12
+    m%scalars(pair%v1)%q = v12
+    m%scalars(pair%u2)%q = u2
+    m%scalars(pair%v2)%q = v2
+    m%scalars(pair%z12)%q = -c_b(3)
+    select type (turn => m%elements(pair%element_rotation)%e)
+    type is (free_rotation_t)
+      turn%ref_out = matmul(transpose(turn%ref_in), rel)
+    end select
+  end subroutine place_contact_pair
+
+  !> After a closure: the normals must be antiparallel (z_1D . z_2D < 0).
+  subroutine check_contact_branch(m, pair, status)
+    type(mechanism_t), intent(in) :: m
+    type(contact_pair_t), intent(in) :: pair
+    type(status_t), intent(inout) :: status
+    real(wp) :: c
+    if (.not. status%ok()) return
+    c = dot_product(m%frames(pair%frame_1d)%rot(:, 3), m%frames(pair%frame_2d)%rot(:, 3))
+    if (c > 0) call set_status(status, STATUS_DOMAIN, 'contact '''//pair%name//''' closed with parallel '// &
+      'normals (z_1D . z_2D = '//format_short(c)//'), the non-physical branch of (3.86): each side must '// &
+      'point its surface''s normal towards the other body')
+  end subroutine check_contact_branch
+
+  !> A copy of the surface of the surface joint at element k.
+  subroutine surface_of(m, k, surface)
+    type(mechanism_t), intent(in) :: m
+    integer, intent(in) :: k
+    class(surface_t), allocatable, intent(out) :: surface
+    select type (e => m%elements(k)%e)
+    type is (surface_joint_t)
+      allocate (surface, source=e%surface)
+    end select
+  end subroutine surface_of
+end module contact_pair

@@ -1,0 +1,132 @@
+!> Where a contact starts: the point of a surface nearest to a given point
+!> (to place the relative chain over surface 1) and the support point of a
+!> surface in a direction (where a convex body is extreme, hence touches first).
+!>
+!> Both search a grid of the parameter box when it is finite (21 x 21 samples;
+!> a periodic direction is sampled over one period) and then refine by Newton
+!> on the stationarity conditions, with steps clipped to the box. An unbounded
+!> direction (a plane) starts from 0, where Newton is exact for the plane.
+module contact_surface_search
+  use base_kinds, only: wp
+  use base_text, only: format_short
+  use base_status, only: status_t, set_status, STATUS_NOT_CONVERGED
+  use geometry_surface, only: surface_t, surface_point_t
+  implicit none (type, external)
+  private
+  public :: nearest_point, support_point
+
+  integer, parameter :: grid_samples = 21, newton_steps = 50
+  real(wp), parameter :: bounded_limit = 1e6_wp   ! a box edge beyond this counts as unbounded
+
+contains
+
+  !> (u, v) where r(u, v) is nearest to p (stationary distance, from the
+  !> nearest grid sample): (r - p).r_u = (r - p).r_v = 0.
+  subroutine nearest_point(surface, p, u, v, status)
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: p(3)
+    real(wp), intent(out) :: u, v
+    type(status_t), intent(inout) :: status
+    call search(surface, p, .true., u, v, status)
+  end subroutine nearest_point
+
+  !> (u, v) where d.r(u, v) is smallest (the point of a convex surface extreme
+  !> in the direction -d): d.r_u = d.r_v = 0.
+  subroutine support_point(surface, d, u, v, status)
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: d(3)
+    real(wp), intent(out) :: u, v
+    type(status_t), intent(inout) :: status
+    call search(surface, d, .false., u, v, status)
+  end subroutine support_point
+
+  subroutine search(surface, x, nearest, u, v, status)
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: x(3)
+    logical, intent(in) :: nearest
+    real(wp), intent(out) :: u, v
+    type(status_t), intent(inout) :: status
+    real(wp) :: box(4), best, value, uu, vv, f(2), jac(2, 2), det, du, dv, scale
+    type(surface_point_t) :: pt
+    type(status_t) :: local
+    integer :: i, j, it
+    logical :: bounded(2)
+    u = 0
+    v = 0
+    if (.not. status%ok()) return
+    call surface%domain(box(1), box(2), box(3), box(4))
+    bounded = [max(abs(box(1)), abs(box(2))) < bounded_limit, max(abs(box(3)), abs(box(4))) < bounded_limit]
+    if (bounded(1)) u = (box(1) + box(2))/2
+    if (bounded(2)) v = (box(3) + box(4))/2
+    if (all(bounded)) then
+      best = huge(1.0_wp)
+      do j = 0, grid_samples - 1
+        do i = 0, grid_samples - 1
+          uu = box(1) + (box(2) - box(1))*i/real(grid_samples - 1, wp)
+          vv = box(3) + (box(4) - box(3))*j/real(grid_samples - 1, wp)
+          call surface%evaluate(uu, vv, 0, pt, local)
+          if (.not. local%ok()) cycle
+          value = objective(pt)
+          if (value < best) then
+            best = value
+            u = uu
+            v = vv
+          end if
+        end do
+      end do
+    end if
+    scale = 1
+    do it = 1, newton_steps
+      call surface%evaluate(u, v, 2, pt, local)
+      if (.not. local%ok()) exit
+      if (nearest) then
+        f = [dot_product(pt%r - x, pt%ru), dot_product(pt%r - x, pt%rv)]
+        jac(1, 1) = dot_product(pt%ru, pt%ru) + dot_product(pt%r - x, pt%ruu)
+        jac(1, 2) = dot_product(pt%ru, pt%rv) + dot_product(pt%r - x, pt%ruv)
+        jac(2, 2) = dot_product(pt%rv, pt%rv) + dot_product(pt%r - x, pt%rvv)
+        scale = max(dot_product(pt%ru, pt%ru), dot_product(pt%rv, pt%rv))
+      else
+        f = [dot_product(x, pt%ru), dot_product(x, pt%rv)]
+        jac(1, 1) = dot_product(x, pt%ruu)
+        jac(1, 2) = dot_product(x, pt%ruv)
+        jac(2, 2) = dot_product(x, pt%rvv)
+        scale = norm2(x)*max(norm2(pt%ru), norm2(pt%rv))
+      end if
+      jac(2, 1) = jac(1, 2)
+      if (maxval(abs(f)) <= 1e-15_wp*scale) exit
+      det = jac(1, 1)*jac(2, 2) - jac(1, 2)**2
+      if (.not. (abs(det) > 0)) exit
+      du = -(jac(2, 2)*f(1) - jac(1, 2)*f(2))/det
+      dv = -(jac(1, 1)*f(2) - jac(1, 2)*f(1))/det
+      u = u + du
+      v = v + dv
+      if (bounded(1) .and. .not. surface%periodic_u()) u = min(max(u, box(1)), box(2))
+      if (bounded(2) .and. .not. surface%periodic_v()) v = min(max(v, box(3)), box(4))
+      if (abs(du) + abs(dv) <= 1e-15_wp*(1 + abs(u) + abs(v))) exit
+    end do
+    if (.not. local%ok()) then
+      status = local
+      return
+    end if
+    if (it > newton_steps) then
+      if ((bounded(1) .and. (u <= box(1) .or. u >= box(2))) .or. (bounded(2) .and. (v <= box(3) .or. v >= box(4)))) then
+        call set_status(status, STATUS_NOT_CONVERGED, 'the '//merge('nearest point', 'support point', nearest)// &
+          ' lies beyond the edge of the parameter domain of the '//surface%describe()//' (u, v) in ['// &
+          format_short(box(1))//', '//format_short(box(2))//'] x ['//format_short(box(3))//', '// &
+          format_short(box(4))//']')
+      else
+        call set_status(status, STATUS_NOT_CONVERGED, 'no '//merge('nearest point', 'support point', nearest)// &
+          ' found on the '//surface%describe())
+      end if
+    end if
+  contains
+    real(wp) function objective(q)
+      type(surface_point_t), intent(in) :: q
+      if (nearest) then
+        objective = norm2(q%r - x)
+      else
+        objective = dot_product(x, q%r)
+      end if
+    end function objective
+  end subroutine search
+end module contact_surface_search

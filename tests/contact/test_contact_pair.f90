@@ -1,0 +1,202 @@
+!> Position-level contact between two surfaces on two bodies (contact_pair):
+!> the egg of thesis 3.5.3.3 placed on a table closes onto its exact support
+!> height; the closed mechanism's velocities and accelerations against
+!> differences of its positions along random motions, and its force map's
+!> virtual power, for the egg on a plane and for a B-spline paraboloid in the
+!> bowl of a moving one; the parallel-normal branch and a contact that cannot
+!> close are refused with the contact's name.
+program test_contact_pair
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_status, only: status_t
+  use base_vector, only: rot_x, rot_y, rot_z
+  use testing, only: check, check_close, finish_tests
+  use element_checks, only: check_mechanism_motion
+  use geometry_surface, only: surface_t
+  use geometry_elementary, only: plane_t, ellipsoid_t
+  use geometry_bspline_surface, only: bspline_surface_t, bspline_scattered
+  use kinetostatics_joints, only: new_spherical, new_prismatic
+  use kinetostatics_mass, only: new_applied_force
+  use kinetostatics_mechanism, only: mechanism_t
+  use contact_pair, only: contact_pair_t, add_contact_pair, place_contact_pair, check_contact_branch
+  implicit none (type, external)
+
+  real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+  real(wp), parameter :: egg_a = 0.025_wp, egg_b = 0.033_wp     ! m, thesis 3.5.3.3
+  real(wp) :: tilt
+
+  tilt = 77*pi/180
+  call egg_on_table()
+  call paraboloid_in_moving_bowl()
+  call parallel_branch_refused()
+  call no_closure_named()
+  call finish_tests('test_contact_pair')
+
+contains
+
+  !> The egg with its long axis (body y) tilted by `tilt` from the vertical and
+  !> its lowest point on the equator v = 0 (away from the poles of (3.57)).
+  pure function egg_orientation(theta) result(r)
+    real(wp), intent(in) :: theta
+    real(wp) :: r(3, 3)
+    ! rows: world axes in body coordinates; world z = (sin, cos, 0) in the body
+    r(1, :) = [0.0_wp, 0.0_wp, 1.0_wp]
+    r(2, :) = [cos(theta), -sin(theta), 0.0_wp]
+    r(3, :) = [sin(theta), cos(theta), 0.0_wp]
+  end function egg_orientation
+
+  subroutine build_egg(m, pair, side_egg, status)
+    type(mechanism_t), intent(out) :: m
+    type(contact_pair_t), intent(out) :: pair
+    real(wp), intent(in) :: side_egg
+    type(status_t), intent(inout) :: status
+    type(plane_t) :: table
+    type(ellipsoid_t) :: egg
+    table = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], status)
+    egg = ellipsoid_t(egg_a, egg_b, egg_a, status)
+    call add_contact_pair(m, 'egg_on_table', 1, table, 1.0_wp, 'egg', egg, side_egg, pair, status)
+    call m%add_element(new_applied_force('push', pair%frame_b, [0.3_wp, -0.2_wp, 0.9_wp], &
+                                         [0.01_wp, 0.02_wp, -0.005_wp], .false.))
+    call m%add_element(new_applied_force('push_contact', pair%frame_2d, [-0.1_wp, 0.4_wp, 0.2_wp], &
+                                         [0.003_wp, -0.01_wp, 0.02_wp], .false.))
+    call m%set_coordinates(pair%coordinates())
+    call m%finalize(status)
+  end subroutine build_egg
+
+  subroutine egg_on_table()
+    type(mechanism_t) :: m
+    type(contact_pair_t) :: pair
+    type(status_t) :: st
+    real(wp) :: gap, height, q0(5), r0(3)
+    integer :: trial
+    call build_egg(m, pair, 1.0_wp, st)
+    call check(st%ok(), 'egg on table built: '//st%text())
+    r0 = [0.01_wp, -0.02_wp, 0.05_wp]
+    call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], egg_orientation(tilt), r0, gap, st)
+    q0 = m%scalars(pair%coordinates())%q
+    call m%check_start(q0, st)
+    call check_contact_branch(m, pair, st)
+    call check(st%ok(), 'egg closes at the start: '//st%text())
+    ! support height of the ellipsoid: sqrt(n^T A^2 n), n = world z in body axes
+    height = sqrt((egg_a*sin(tilt))**2 + (egg_b*cos(tilt))**2)
+    call check_close(m%frames(pair%frame_b)%r(3), height, 0.0_wp, 1e-15_wp, &
+                     'egg centre at its support height (exact to rounding)')
+    call check_close(gap, r0(3) - height, 0.0_wp, 1e-15_wp, 'placement reports the gap it closed')
+    call check(maxval(abs(m%frames(pair%frame_b)%r(1:2) - r0(1:2))) <= 1e-15_wp, &
+               'the closure moves the egg along the table normal only')
+    call check(maxval(abs(m%frames(pair%frame_b)%rot - egg_orientation(tilt))) <= 1e-15_wp, &
+               'the closure keeps the egg''s orientation')
+    call check(abs(m%frames(pair%frame_1d)%r(3)) <= 1e-15_wp .and. &
+               norm2(m%frames(pair%frame_1d)%r - m%frames(pair%frame_2d)%r) <= 1e-15_wp, &
+               'contact points coincide on the table')
+    call check_close(dot_product(m%frames(pair%frame_1d)%rot(:, 3), m%frames(pair%frame_2d)%rot(:, 3)), &
+                     -1.0_wp, 0.0_wp, 1e-15_wp, 'normals antiparallel')
+    do trial = 1, 3
+      call check_mechanism_motion('egg on table', m, q0, 0.3_wp, 0.4_wp*(trial - 2))
+    end do
+  end subroutine egg_on_table
+
+  !> A small B-spline paraboloid (table 3.2: a^2 = 0.5 on [-0.5, 0.5]^2, its
+  !> outside) in the bowl of the large one (a^2 = 3 on [-2, 2]^2, its inside),
+  !> the bowl itself turning and rising (spherical + prismatic from the ground).
+  subroutine paraboloid_in_moving_bowl()
+    type(mechanism_t) :: m
+    type(contact_pair_t) :: pair
+    type(status_t) :: st
+    type(bspline_surface_t) :: big, small
+    integer :: f1, f2, s(4), trial
+    real(wp) :: gap, q0(9)
+    big = quadratic_patch(3.0_wp, 2.0_wp, st)
+    small = quadratic_patch(0.5_wp, 0.5_wp, st)
+    f1 = m%add_frame('bowl_turn')
+    s(1) = m%add_scalar('b1', 0.1_wp)
+    s(2) = m%add_scalar('b2', -0.2_wp)
+    s(3) = m%add_scalar('b3', 0.3_wp)
+    call m%add_element(new_spherical('bowl_turn', 1, f1, s(1:3)))
+    f2 = m%add_frame('bowl')
+    s(4) = m%add_scalar('b4', 0.2_wp)
+    call m%add_element(new_prismatic('bowl_rise', f1, f2, s(4), [0.0_wp, 0.0_wp, 1.0_wp]))
+    call add_contact_pair(m, 'cup_in_bowl', f2, big, 1.0_wp, 'cup', small, -1.0_wp, pair, st)
+    call m%add_element(new_applied_force('push', pair%frame_b, [0.3_wp, -0.2_wp, 0.9_wp], &
+                                         [0.1_wp, 0.2_wp, -0.05_wp], .false.))
+    call m%add_element(new_applied_force('push_bowl', f2, [0.5_wp, 0.1_wp, -0.3_wp], &
+                                         [-0.1_wp, 0.05_wp, 0.2_wp], .false.))
+    call m%add_element(new_applied_force('push_contact', pair%frame_1d, [-0.1_wp, 0.4_wp, 0.2_wp], &
+                                         [0.03_wp, -0.1_wp, 0.2_wp], .true.))
+    call m%set_coordinates([s, pair%coordinates()])
+    call m%finalize(st)
+    call check(st%ok(), 'cup in bowl built: '//st%text())
+    ! the bowl's pose at q0 (spherical x-y-z, then the rise along its z)
+    associate (rb => matmul(rot_x(0.1_wp), matmul(rot_y(-0.2_wp), rot_z(0.3_wp))))
+      call place_contact_pair(m, pair, rb, 0.2_wp*rb(:, 3), matmul(rb, rot_x(0.15_wp)), &
+                              0.2_wp*rb(:, 3) + matmul(rb, [0.4_wp, -0.3_wp, 0.3_wp]), gap, st)
+    end associate
+    q0 = m%scalars([s, pair%coordinates()])%q
+    call m%check_start(q0, st)
+    call check_contact_branch(m, pair, st)
+    call check(st%ok(), 'cup in bowl closes at the start: '//st%text())
+    do trial = 1, 3
+      call check_mechanism_motion('cup in moving bowl', m, q0, 0.2_wp, 0.4_wp*(trial - 2))
+    end do
+  end subroutine paraboloid_in_moving_bowl
+
+  !> The egg with its normal pointing inwards: the loop closes (g4, g5 hold
+  !> for parallel normals too), the branch check refuses it.
+  subroutine parallel_branch_refused()
+    type(mechanism_t) :: m
+    type(contact_pair_t) :: pair
+    type(status_t) :: st
+    real(wp) :: gap
+    call build_egg(m, pair, -1.0_wp, st)
+    call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], egg_orientation(tilt), &
+                            [0.0_wp, 0.0_wp, 0.03_wp], gap, st)
+    call m%check_start(m%scalars(pair%coordinates())%q, st)
+    call check(st%ok(), 'egg with inward normal closes: '//st%text())
+    call check_contact_branch(m, pair, st)
+    call check(.not. st%ok() .and. index(st%text(), 'egg_on_table') > 0 .and. index(st%text(), 'parallel') > 0, &
+               'the parallel branch is refused naming the contact: '//st%text())
+  end subroutine parallel_branch_refused
+
+  !> A cup placed beyond the bowl's rim: its nearest point is on the rim, the
+  !> closure leaves the patch; the message names the contact.
+  subroutine no_closure_named()
+    type(mechanism_t) :: m
+    type(contact_pair_t) :: pair
+    type(status_t) :: st
+    type(bspline_surface_t) :: big, small
+    real(wp) :: gap
+    big = quadratic_patch(3.0_wp, 2.0_wp, st)
+    small = quadratic_patch(0.5_wp, 0.5_wp, st)
+    call add_contact_pair(m, 'cup_in_bowl', 1, big, 1.0_wp, 'cup', small, -1.0_wp, pair, st)
+    call m%set_coordinates(pair%coordinates())
+    call m%finalize(st)
+    call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], rot_x(1.2_wp), &
+                            [2.5_wp, 0.0_wp, 1.0_wp], gap, st)
+    call m%check_start(m%scalars(pair%coordinates())%q, st)
+    call check(.not. st%ok() .and. index(st%text(), 'cup_in_bowl') > 0 .and. index(st%text(), 'edge') > 0, &
+               'a body not over surface 1 is refused naming the contact: '//st%text())
+    ! over the rim: the closure runs off the bowl's patch
+    st = status_t()
+    call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], rot_y(-0.2_wp), &
+                            [1.74_wp, 0.0_wp, 1.3_wp], gap, st)
+    call m%check_start(m%scalars(pair%coordinates())%q, st)
+    call check(.not. st%ok() .and. index(st%text(), 'cup_in_bowl') > 0 .and. index(st%text(), 'off by') > 0, &
+               'a contact that cannot close is refused naming it and by how much: '//st%text())
+  end subroutine no_closure_named
+
+  !> z = (x^2 + y^2)/a2 on [-w, w]^2 by SURFIT (degree 5, 13 x 13, s = 0.05).
+  function quadratic_patch(a2, w, status) result(s)
+    real(wp), intent(in) :: a2, w
+    type(status_t), intent(inout) :: status
+    type(bspline_surface_t) :: s
+    real(wp) :: x(169), y(169)
+    integer :: i, j
+    do j = 1, 13
+      do i = 1, 13
+        x(i + 13*(j - 1)) = -w + 2*w*(i - 1)/12.0_wp
+        y(i + 13*(j - 1)) = -w + 2*w*(j - 1)/12.0_wp
+      end do
+    end do
+    s = bspline_scattered(x, y, (x**2 + y**2)/a2, 0.05_wp, 5, 5, status)
+  end function quadratic_patch
+end program test_contact_pair
