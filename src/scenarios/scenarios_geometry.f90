@@ -17,6 +17,7 @@ module scenarios_geometry
   use io_run_config, only: run_config_t
   use io_geometry_config, only: read_geometry_config, geometry_groups
   use io_hdf5, only: result_file_t
+  use io_summary, only: summary_t, engineering
   use io_surface_grid, only: write_surface_grid, evenly_spaced
   implicit none (type, external)
   private
@@ -35,6 +36,9 @@ contains
     type(result_file_t) :: file
     type(status_t) :: work
     integer :: n_u, n_v, n_frames
+    type(summary_t) :: summary
+    logical :: complete
+    character(len=:), allocatable :: message
 
     call check_known_groups(input, geometry_scenario_groups, status)
     if (status%ok()) call read_grid(input, n_u, n_v, n_frames, status)
@@ -47,17 +51,28 @@ contains
     call file%write_provenance('geometry', trim(run%title), input%name, input%text(), work)
     call file%set_attribute('/', 'surface', surface%describe(), work)
     if (work%ok()) call write_grid(file, surface, n_u, n_v, work)
+    call summary%start('geometry', 'slidesim geometry: '//surface%describe())
+    call summary%add_count('grid_n_u', 'surface grid along u', n_u, 'points')
+    call summary%add_count('grid_n_v', 'surface grid along v', n_v, 'points')
     select type (surface)
     type is (tube_surface_t)
-      if (work%ok()) call write_centerline(file, surface, n_frames, work)
+      if (work%ok()) call write_centerline(file, surface, n_frames, summary, work)
     end select
     if (.not. work%ok()) call prefix_status(work, 'geometry')
-    call file%finish(work%ok(), work%text(), work)
-    if (work%ok()) then
-      write (output_unit, '(a)') 'geometry: ' // surface%describe() // ' written to ' // file%final_path()
+    complete = work%ok()
+    message = work%text()
+    call file%finish(complete, message, work)
+    call summary%print()
+    if (complete) then
+      write (output_unit, '(a)') '  results                   '//file%final_path()
     else
-      status = work
+      write (output_unit, '(a)') '  results (INCOMPLETE)      '//file%final_path()
     end if
+    if (allocated(run%summary_json)) then
+      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, &
+                                                               file%final_path(), work)
+    end if
+    if (.not. work%ok()) status = work
   end subroutine run_geometry
 
   !> &grid: resolution of the written surface grid and of the centerline samples.
@@ -94,10 +109,12 @@ contains
                             status)
   end subroutine write_grid
 
-  subroutine write_centerline(file, tube, n, status)
+  !> The centerline samples, and its length, drop and curvature in the summary.
+  subroutine write_centerline(file, tube, n, summary, status)
     type(result_file_t), intent(inout) :: file
     type(tube_surface_t), intent(in) :: tube
     integer, intent(in) :: n
+    type(summary_t), intent(inout) :: summary
     type(status_t), intent(inout) :: status
     real(wp), allocatable :: u(:), s(:), points(:, :), xa(:, :), ya(:, :), za(:, :), chi(:), chi_u(:), &
       tangent_speed(:)
@@ -138,5 +155,9 @@ contains
     call file%write_scalar('/geometry/centerline/length', tube%length(), 'm', 'total centerline length', status)
     call file%make_scale('/geometry/centerline/arc_length', status)
     call file%attach_scale('/geometry/centerline/arc_length', '/geometry/centerline', status)
+    call summary%add('centerline_length', 'centerline length', tube%length(), 'm')
+    call summary%add('drop', 'height drop', points(3, 1) - points(3, n), 'm')
+    call summary%add('curvature_max', 'curvature max', maxval(chi), '1/m', '1/m (radius '// &
+                     engineering(1/max(maxval(chi), tiny(1.0_wp)))//' m)')
   end subroutine write_centerline
 end module scenarios_geometry

@@ -13,6 +13,7 @@ module scenarios_mechanism
   use io_solver_config, only: solver_config_t
   use io_mechanism_config, only: write_mechanism_series
   use io_hdf5, only: result_file_t
+  use io_summary, only: summary_t, degrees, engineering
   use io_surface_grid, only: write_surface_grid_around
   use geometry_surface, only: surface_t
   implicit none (type, external)
@@ -37,6 +38,8 @@ contains
     type(ode_stats_t) :: stats
     type(status_t) :: run_status, write_status
     real(wp) :: cpu
+    logical :: complete
+    character(len=:), allocatable :: message
 
     call sys%mechanism%check_start(y0(1:sys%mechanism%f), status)
     if (.not. status%ok()) then
@@ -55,12 +58,11 @@ contains
     ! the grid around the first contact's path (u, v are its first two coordinates)
     if (present(surface)) call write_surface_grid_around(file, surface, series%q(1, :series%n), &
                                                          series%q(2, :series%n), write_status)
-    if (run_status%ok()) then
-      call file%finish(write_status%ok(), write_status%text(), write_status)
-    else
-      call file%finish(.false., run_status%text(), write_status)
-    end if
-    call print_summary(scenario, series, stats, cpu, file%final_path(), run_status)
+    complete = run_status%ok() .and. write_status%ok()
+    message = write_status%text()
+    if (.not. run_status%ok()) message = run_status%text()
+    call file%finish(complete, message, write_status)
+    call report(scenario, series, stats, cpu, q_units, file%final_path(), run, complete, message, write_status)
     if (.not. run_status%ok()) then
       status = run_status
     else if (.not. write_status%ok()) then
@@ -68,39 +70,62 @@ contains
     end if
   end subroutine run_mechanism
 
-  subroutine print_summary(scenario, s, stats, cpu, path, run_status)
-    character(len=*), intent(in) :: scenario
+  !> The printed summary (angles in degrees) and, with --summary-json, the
+  !> same numbers as JSON (SI).
+  subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, status)
+    character(len=*), intent(in) :: scenario, path, message
     type(mechanism_series_t), intent(in) :: s
     type(ode_stats_t), intent(in) :: stats
     real(wp), intent(in) :: cpu
-    character(len=*), intent(in) :: path
-    type(status_t), intent(in) :: run_status
+    character(len=*), intent(in) :: q_units(:)
+    type(run_config_t), intent(in) :: run
+    logical, intent(in) :: complete
+    type(status_t), intent(inout) :: status
+    type(summary_t) :: summary
     real(wp) :: e0, scale
-    integer :: n, k
+    integer :: n, k, i
+    character(len=:), allocatable :: q, u
     n = s%n
     if (n < 1) return
     e0 = s%kinetic(1) + s%potential(1)
     scale = max(maxval(s%kinetic(:n)), maxval(abs(s%potential(:n) - s%potential(1))), tiny(1.0_wp))
-    write (output_unit, '(a)') 'slidesim '//scenario
-    write (output_unit, '(a, f0.4, a)') '  simulated time       ', s%time(n), ' s'
+    call summary%start(scenario, 'slidesim '//scenario)
+    call summary%add('simulated_time', 'simulated time', s%time(n), 's')
     do k = 1, s%f
-      write (output_unit, '(a, a12, es14.6, a, es14.6)') '  final ', s%q_names(k), s%q(k, n), '  rate ', s%qd(k, n)
+      q = trim(s%q_names(k))
+      u = trim(q_units(k))
+      if (u == 'rad') then
+        call summary%add(q//'_final', q//' final', s%q(k, n), u, 'deg', degrees)
+        call summary%add_range(q, q//' min / max', minval(s%q(k, :n)), maxval(s%q(k, :n)), u, 'deg', degrees)
+        call summary%add(q//'_rate_final', q//' rate final', s%qd(k, n), u//'/s', 'deg/s', degrees)
+        call summary%add(q//'_rate_max', q//' rate max', maxval(abs(s%qd(k, :n))), u//'/s', 'deg/s', degrees)
+      else
+        call summary%add(q//'_final', q//' final', s%q(k, n), u)
+        call summary%add_range(q, q//' min / max', minval(s%q(k, :n)), maxval(s%q(k, :n)), u)
+        call summary%add(q//'_rate_final', q//' rate final', s%qd(k, n), u//'/s')
+      end if
     end do
-    write (output_unit, '(a, es10.3, a)') '  energy change        ', &
-      (s%kinetic(n) + s%potential(n) - e0)/scale, ' (relative to the largest kinetic/potential change)'
-    if (s%r > 0) write (output_unit, '(a, es10.3, a)') '  closure residual max ', maxval(s%closure(:n)), ' m'
     do k = 1, s%nc
-      write (output_unit, '(a, a8, a, 2f12.4, a)') '  contact ', s%contact_names(k), ' normal force min/max', &
-        minval(s%normal(k, :n)), maxval(s%normal(k, :n)), ' N'
+      q = trim(s%contact_names(k))
+      call summary%add(q//'_speed_max', q//' speed max', maxval([(norm2(s%contact_v(:, k, i)), i=1, n)]), 'm/s', &
+                       'm/s ('//engineering(3.6_wp*maxval([(norm2(s%contact_v(:, k, i)), i=1, n)]))//' km/h)')
+      call summary%add_range(q//'_normal_force', q//' normal force min / max', minval(s%normal(k, :n)), &
+                             maxval(s%normal(k, :n)), 'N')
     end do
-    write (output_unit, '(a, i0, a, i0, a)') '  integrator           ', stats%steps, ' steps, ', &
-      stats%rhs_evaluations, ' right-hand sides'
-    write (output_unit, '(a, es10.3, a, es10.3, a)') '  CPU time             ', cpu, ' s (', &
-      cpu/max(s%time(n), tiny(1.0_wp)), ' s per simulated second)'
-    if (run_status%ok()) then
-      write (output_unit, '(a)') '  results              '//path
+    call summary%add('energy_change', 'energy change', (s%kinetic(n) + s%potential(n) - e0)/scale, '1', &
+                     '(relative to the largest kinetic/potential change)')
+    if (s%r > 0) call summary%add('closure_residual_max', 'closure residual max', maxval(s%closure(:n)), 'm')
+    call summary%add_count('steps', 'integrator', int(stats%steps), 'steps')
+    call summary%add_count('rhs_evaluations', 'right-hand sides', int(stats%rhs_evaluations), 'evaluations')
+    call summary%add('cpu_time', 'CPU time', cpu, 's')
+    call summary%print()
+    if (complete) then
+      write (output_unit, '(a)') '  results                   '//path
     else
-      write (output_unit, '(a)') '  results (INCOMPLETE) '//path
+      write (output_unit, '(a)') '  results (INCOMPLETE)      '//path
     end if
-  end subroutine print_summary
+    if (allocated(run%summary_json)) then
+      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
+    end if
+  end subroutine report
 end module scenarios_mechanism

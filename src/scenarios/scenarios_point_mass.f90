@@ -14,6 +14,7 @@ module scenarios_point_mass
   use io_surface_config, only: read_surface_config
   use io_point_mass_config, only: point_mass_config_t, read_point_mass_config
   use io_hdf5, only: result_file_t, units_per_second
+  use io_summary, only: summary_t, standard_g, engineering
   use io_surface_grid, only: write_surface_grid_around
   implicit none (type, external)
   private
@@ -82,7 +83,8 @@ contains
     integer :: n_out, k, next_report
     logical :: at_edge
     integer :: edge(4)
-    character(len=:), allocatable :: outcome
+    character(len=:), allocatable :: outcome, message
+    logical :: complete
 
     call build_point_mass(input, solver, model, y0, status)
     if (.not. status%ok()) return
@@ -124,17 +126,13 @@ contains
                                                   format_real(series%time(max(series%n, 1)))//' s')
 
     call write_series(file, input, run, model, series, integrator%statistics(), cpu_end - cpu_start, write_status)
-    if (run_status%ok()) then
-      if (write_status%ok()) then
-        call file%finish(.true., 'ok: '//outcome, write_status)
-      else
-        call file%finish(.false., write_status%text(), write_status)
-      end if
-    else
-      call file%finish(.false., run_status%text(), write_status)
-    end if
-    call print_summary(model, series, integrator%statistics(), cpu_end - cpu_start, file%final_path(), &
-                       run_status, outcome)
+    complete = run_status%ok() .and. write_status%ok()
+    message = 'ok: '//outcome
+    if (.not. write_status%ok()) message = write_status%text()
+    if (.not. run_status%ok()) message = run_status%text()
+    call file%finish(complete, message, write_status)
+    call report(model, series, integrator%statistics(), cpu_end - cpu_start, file%final_path(), run, complete, &
+                message, outcome, write_status)
     if (.not. run_status%ok()) then
       status = run_status
     else if (.not. write_status%ok()) then
@@ -225,43 +223,50 @@ contains
     call file%write_scalar('/statistics/cpu_time', cpu, 's', 'CPU time of the integration', status)
   end subroutine write_series
 
-  subroutine print_summary(model, s, stats, cpu, path, run_status, outcome)
+  !> The printed summary and, with --summary-json, the same numbers as JSON.
+  subroutine report(model, s, stats, cpu, path, run, complete, message, outcome, status)
     type(point_mass_t), intent(in) :: model
     type(series_t), intent(in) :: s
     type(ode_stats_t), intent(in) :: stats
     real(wp), intent(in) :: cpu
-    character(len=*), intent(in) :: path
-    type(status_t), intent(in) :: run_status
-    character(len=*), intent(in) :: outcome
-    real(wp) :: e0, drift
-    integer :: n
+    character(len=*), intent(in) :: path, message, outcome
+    type(run_config_t), intent(in) :: run
+    logical, intent(in) :: complete
+    type(status_t), intent(inout) :: status
+    type(summary_t) :: summary
+    real(wp) :: e0, drift, accel
+    integer :: n, i
 
     n = s%n
     if (n < 1) return
     e0 = s%kinetic(1) + s%potential(1)
     drift = maxval(abs(s%kinetic(:n) + s%potential(:n) - s%friction_work(:n) - e0))
-    write (output_unit, '(a)') 'slidesim point_mass on '//model%surface%describe()
-    write (output_unit, '(a, f10.4, a)') '  simulated time      ', s%time(n), ' s'
-    if (run_status%ok()) write (output_unit, '(a)') '  stopped at          '//outcome
-    write (output_unit, '(a, 3f12.5, a)') '  final position      ', s%position(:, n), ' m'
-    write (output_unit, '(a, f12.5, a)') '  final speed         ', s%speed(n), ' m/s'
-    write (output_unit, '(a, 2f12.5, a)') '  normal force min/max', minval(s%normal_force(:n)), &
-      maxval(s%normal_force(:n)), ' N'
-    write (output_unit, '(a, es12.3, a)') '  friction work       ', s%friction_work(n), ' J'
-    write (output_unit, '(a, es12.3, a)') '  energy balance error', drift/max(abs(e0), s%kinetic(1), &
-      maxval(s%kinetic(:n)), tiny(1.0_wp)), ' (relative)'
-    write (output_unit, '(a, i0, a, i0, a)') '  integrator          ', stats%steps, ' steps, ', &
-      stats%rhs_evaluations, ' right-hand sides'
-    if (s%time(n) > 0) then
-      write (output_unit, '(a, es10.3, a, es10.3, a)') '  CPU time            ', cpu, ' s (', &
-        cpu/s%time(n), ' s per simulated second)'
+    accel = maxval([(norm2(s%acceleration(:, i)), i=1, n)])
+    call summary%start('point_mass', 'slidesim point_mass on '//model%surface%describe())
+    call summary%add('simulated_time', 'simulated time', s%time(n), 's')
+    if (complete) call summary%add_text('outcome', 'stopped at', outcome)
+    call summary%add_vector('final_position', 'final position', s%position(:, n), 'm')
+    call summary%add('final_speed', 'final speed', s%speed(n), 'm/s')
+    call summary%add('max_speed', 'max speed', maxval(s%speed(:n)), 'm/s', 'm/s ('// &
+                     engineering(3.6_wp*maxval(s%speed(:n)))//' km/h)')
+    call summary%add('max_acceleration', 'max acceleration', accel, 'm/s^2', 'g', 1/standard_g)
+    call summary%add_range('normal_force', 'normal force min / max', minval(s%normal_force(:n)), &
+                           maxval(s%normal_force(:n)), 'N')
+    call summary%add('drop', 'height drop', s%position(3, 1) - s%position(3, n), 'm')
+    call summary%add('friction_work', 'friction work', s%friction_work(n), 'J')
+    call summary%add('energy_balance_error', 'energy balance error', drift/max(abs(e0), s%kinetic(1), &
+                     maxval(s%kinetic(:n)), tiny(1.0_wp)), '1', '(relative)')
+    call summary%add_count('steps', 'integrator', int(stats%steps), 'steps')
+    call summary%add_count('rhs_evaluations', 'right-hand sides', int(stats%rhs_evaluations), 'evaluations')
+    call summary%add('cpu_time', 'CPU time', cpu, 's')
+    call summary%print()
+    if (complete) then
+      write (output_unit, '(a)') '  results                   '//path
     else
-      write (output_unit, '(a, es10.3, a)') '  CPU time            ', cpu, ' s'
+      write (output_unit, '(a)') '  results (INCOMPLETE)      '//path
     end if
-    if (run_status%ok()) then
-      write (output_unit, '(a)') '  results             '//path
-    else
-      write (output_unit, '(a)') '  results (INCOMPLETE) '//path
+    if (allocated(run%summary_json)) then
+      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
     end if
-  end subroutine print_summary
+  end subroutine report
 end module scenarios_point_mass

@@ -14,13 +14,15 @@ module scenarios_water
   use water_tube_channel, only: new_tube_channel
   use water_streamline, only: streamline_t, CORRECTION_FULL, CORRECTION_NO_RADIUS
   use water_flow, only: water_series_t, water_table_t, water_initial_state, simulate_water, &
-    water_table, outcome_name, OUTCOME_END, OUTCOME_DURATION, START_EDGES
+    water_table, outcome_name, START_EDGES
   use io_input, only: input_text_t, check_known_groups, group_present, invalid, format_real
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_config, only: read_surface_config
   use io_water_config, only: water_config_t, read_water_config, read_channel_config
   use io_hdf5, only: result_file_t, units_per_second
+  use io_summary, only: summary_t, degrees
+  use base_text, only: format_short, format_integer
   use io_surface_grid, only: write_surface_grid, evenly_spaced
   implicit none (type, external)
   private
@@ -153,6 +155,8 @@ contains
     type(result_file_t) :: file
     type(status_t) :: run_status, write_status
     real(wp) :: y0(7), cpu_start, cpu_end
+    logical :: complete
+    character(len=:), allocatable :: message
 
     call build_water(input, solver, config, model, y0, status)
     if (.not. status%ok()) return
@@ -165,12 +169,11 @@ contains
     call water_table(series, model, config%table_step, table)
     call cpu_time(cpu_end)
     call write_results(file, input, run, model, config, series, table, cpu_end - cpu_start, write_status)
-    if (run_status%ok()) then
-      call file%finish(write_status%ok(), write_status%text(), write_status)
-    else
-      call file%finish(.false., run_status%text(), write_status)
-    end if
-    call print_summary(model, series, cpu_end - cpu_start, file%final_path(), run_status)
+    complete = run_status%ok() .and. write_status%ok()
+    message = write_status%text()
+    if (.not. run_status%ok()) message = run_status%text()
+    call file%finish(complete, message, write_status)
+    call report(model, series, cpu_end - cpu_start, file%final_path(), run, complete, message, write_status)
     if (.not. run_status%ok()) then
       status = run_status
     else if (.not. write_status%ok()) then
@@ -343,48 +346,88 @@ contains
     call file%write_scalar('/statistics/cpu_time', cpu, 's', 'CPU time of the water computation', status)
   end subroutine write_stats
 
-  subroutine print_summary(model, s, cpu, path, run_status)
+  !> The printed summary and, with --summary-json, the same numbers as JSON.
+  subroutine report(model, s, cpu, path, run, complete, message, status)
     type(streamline_t), intent(in) :: model
     type(water_series_t), intent(in) :: s
     real(wp), intent(in) :: cpu
-    character(len=*), intent(in) :: path
-    type(status_t), intent(in) :: run_status
+    character(len=*), intent(in) :: path, message
+    type(run_config_t), intent(in) :: run
+    logical, intent(in) :: complete
+    type(status_t), intent(inout) :: status
+    type(summary_t) :: summary
+    real(wp), allocatable :: table(:, :)
+    character(len=:), allocatable :: uu, vu
     integer :: n, i
     n = s%n
     if (n < 1) return
-    write (output_unit, '(a)') 'slidesim water in '//model%channel%describe()
-    write (output_unit, '(a, es11.4, a)') '  flow rate           ', s%flow_rate, ' m^3/s'
-    write (output_unit, '(a, f10.4, a, f10.3, a, a)') '  flow time           ', s%time(n), ' s over ', &
-      s%arc_length(n) - s%arc_length(1), ' m of slide, stopped at: ', outcome_name(s%outcome)
-    write (output_unit, '(a, 2f13.4, a)') '  speed min/max       ', minval(s%speed(:n)), maxval(s%speed(:n)), ' m/s'
-    write (output_unit, '(a, 2f13.5, a)') '  height min/max      ', minval(s%height(:n)), maxval(s%height(:n)), ' m'
-    write (output_unit, '(a, 2f13.4, a)') '  v min/max           ', minval(s%v(:n)), maxval(s%v(:n)), ' rad'
-    write (output_unit, '(a, i0, a, i0, a)') '  integrator          ', s%stats%steps, ' steps, ', &
-      s%stats%rhs_evaluations, ' right-hand sides'
-    write (output_unit, '(a, es10.3, a)') '  CPU time            ', cpu, ' s'
-    if (s%edge_beyond > 0) write (output_unit, '(a, i0, a, f10.3, a)') '  water edges         ', s%edge_beyond, &
-      ' samples from arc length ', s%edge_beyond_from, ' m: an edge beyond the slide''s end (circle estimate)'
-    if (s%edge_failures > 0) write (output_unit, '(a, i0, a)') '  water edges         ', s%edge_failures, &
-      ' samples where the edge solve failed (circle estimate); first '//s%edge_message
+    call model%channel%parameter_units(uu, vu)
+    call summary%start('water', 'slidesim water in '//model%channel%describe())
+    call summary%add('flow_rate', 'flow rate', s%flow_rate, 'm^3/s', 'l/s', 1000.0_wp)
+    call summary%add('flow_time', 'flow time', s%time(n), 's')
+    call summary%add('slide_length_covered', 'slide length covered', s%arc_length(n) - s%arc_length(1), 'm')
+    call summary%add_text('outcome', 'stopped at', outcome_name(s%outcome))
+    call summary%add_range('speed', 'speed min / max', minval(s%speed(:n)), maxval(s%speed(:n)), 'm/s')
+    call summary%add('final_speed', 'final speed', s%speed(n), 'm/s')
+    call summary%add_range('height', 'height min / max', minval(s%height(:n)), maxval(s%height(:n)), 'm', &
+                           'mm', 1000.0_wp)
+    call summary%add_range('width', 'width min / max', minval(s%width(:n)), maxval(s%width(:n)), 'm', 'mm', &
+                           1000.0_wp)
+    call summary%add_range('flow_angle', 'flow angle min / max', minval(s%beta(:n)), maxval(s%beta(:n)), &
+                           'rad', 'deg', degrees)
+    if (vu == 'rad') then
+      call summary%add_range('v', 'v min / max', minval(s%v(:n)), maxval(s%v(:n)), 'rad', &
+                             'deg (90 = bottom)', degrees)
+    else
+      call summary%add_range('v', 'v min / max', minval(s%v(:n)), maxval(s%v(:n)), vu)
+    end if
+    call summary%add_count('steps', 'integrator', int(s%stats%steps), 'steps')
+    call summary%add_count('rhs_evaluations', 'right-hand sides', int(s%stats%rhs_evaluations), 'evaluations')
+    call summary%add('cpu_time', 'CPU time', cpu, 's')
+    if (s%edge_beyond > 0) call summary%add_line('  water edges               '//format_integer(s%edge_beyond)// &
+      ' samples from arc length '//format_short(s%edge_beyond_from)// &
+      ' m: an edge beyond the slide''s end (circle estimate)')
+    if (s%edge_failures > 0) call summary%add_line('  water edges               '//format_integer(s%edge_failures)// &
+      ' samples where the edge solve failed (circle estimate); first '//s%edge_message)
+    if (size(s%stations) > 0) then
+      allocate (table(10, size(s%stations)))
+      do i = 1, size(s%stations)
+        associate (st => s%stations(i))
+          table(:, i) = [st%arc_length, st%time, st%v_middle, st%v_right, st%v_left, st%speed, st%height, &
+                         st%width, st%u, merge(1.0_wp, 0.0_wp, st%reached)]
+        end associate
+      end do
+      call summary%add_table('stations', [character(len=10) :: 'arc_length', 'time', 'v_middle', 'v_right', &
+                             'v_left', 'speed', 'height', 'width', 'u', 'reached'], &
+                             [character(len=4) :: 'm', 's', vu, vu, vu, 'm/s', 'm', 'm', uu, '1'], table)
+    end if
+    call summary%print()
     if (size(s%stations) > 0) then
       write (output_unit, '(a)') '  station  arc length    time   v middle   v edges (right, left)   speed   height' &
         //'   width'
-      write (output_unit, '(a)') '                  m       s        rad        rad        rad        m/s       m' &
-        //'       m'
+      write (output_unit, '(a)') '                  m        s'//column(vu)//column(vu)//column(vu)// &
+        '      m/s        m        m'
       do i = 1, size(s%stations)
         if (s%stations(i)%reached) then
-          write (output_unit, '(2x, i5, f12.3, f9.4, 3f11.4, f9.4, 2f9.5)') i, s%stations(i)%arc_length, &
-            s%stations(i)%time, s%stations(i)%v_middle, s%stations(i)%v_right, s%stations(i)%v_left, &
-            s%stations(i)%speed, s%stations(i)%height, s%stations(i)%width
+          write (output_unit, '(2x, i5, f12.3, f9.4, 3f11.4, f9.4, 2f9.5)') i, table(1:8, i)
         else
           write (output_unit, '(2x, i5, a)') i, '   (not reached)'
         end if
       end do
     end if
-    if (run_status%ok() .and. (s%outcome == OUTCOME_END .or. s%outcome == OUTCOME_DURATION)) then
-      write (output_unit, '(a)') '  results             '//path
+    if (complete) then
+      write (output_unit, '(a)') '  results                   '//path
     else
-      write (output_unit, '(a)') '  results (INCOMPLETE) '//path
+      write (output_unit, '(a)') '  results (INCOMPLETE)      '//path
     end if
-  end subroutine print_summary
+    if (allocated(run%summary_json)) then
+      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
+    end if
+  contains
+    pure function column(units) result(text)   ! a unit right-aligned in the 11 characters of f11.4
+      character(len=*), intent(in) :: units
+      character(len=11) :: text
+      text = repeat(' ', max(0, 11 - len(units)))//units
+    end function column
+  end subroutine report
 end module scenarios_water

@@ -80,7 +80,7 @@ grep -q "correction = 'off'" "$work/critical.err" || fail "critical: message doe
 begin
 grep -q 'lifts off' "$work/lift.err" || fail "lift: message does not say the water lifts off"
 h5dump -a /status_message "$work/lift.h5" | grep -q 'lifts off' || fail "lift: status_message lacks the reason"
-grep -q 'stopped at: lifted off' "$work/lift.out" || fail "lift: summary does not name the stop"
+grep -qE 'stopped at +lifted off' "$work/lift.out" || fail "lift: summary does not name the stop"
 h5dump -a /water/outcome "$work/lift.h5" | grep -q '"lifted off"' || fail "lift: /water outcome is not 'lifted off'"
 begin
 grep -q 'turns across the slide or back' "$work/turn.err" || fail "turn: message does not say the water turns back"

@@ -1,0 +1,152 @@
+"""Checks a --summary-json file against the HDF5 result of the same run.
+
+    check_summary_json.py SUMMARY.json RESULT.h5 PRINTED_SUMMARY.txt
+
+The JSON must load, name the scenario, status and result file of the HDF5
+file, give a pint-parsable unit for every number, hold the keys this scenario's
+summary promises (docs/outputs.md, "Summary JSON"), and each number must equal
+what the HDF5 file holds. Tolerance: values copied from the series are written
+as shortest round-trip decimals and compared exactly up to 1e-12 relative,
+which also covers quantities recomputed here with numpy (norms, differences,
+ratios: a few roundings). Prints failures; exit status 1 if any.
+"""
+import json
+import sys
+
+import h5py
+import numpy as np
+import pint
+
+failures = []
+RTOL = 1e-12
+
+
+def fail(message):
+    failures.append(message)
+
+
+def close(name, got, expected):
+    got = np.asarray(got, dtype=float)
+    expected = np.asarray(expected, dtype=float)
+    if got.shape != expected.shape or not np.allclose(got, expected, rtol=RTOL, atol=1e-300):
+        fail(f"{name}: JSON {got.tolist()} but the HDF5 file gives {expected.tolist()}")
+
+
+def main(json_path, h5_path, printed_path):
+    summary = json.load(open(json_path, encoding='utf-8'))
+    values, units = summary['values'], summary['units']
+    f = h5py.File(h5_path, 'r')
+    scenario = f.attrs['scenario']
+    if summary['scenario'] != scenario:
+        fail(f"scenario {summary['scenario']!r}, the file says {scenario!r}")
+    if summary['status'] != f.attrs['status'] or summary['status_message'] != f.attrs['status_message']:
+        fail(f"status {summary['status']!r}/{summary['status_message']!r} differs from the file's")
+    if summary['result_file'] != h5_path:
+        fail(f"result_file {summary['result_file']!r}, expected {h5_path!r}")
+    if summary['result_file'] not in open(printed_path, encoding='utf-8').read():
+        fail("the printed summary does not name the result file")
+    registry = pint.UnitRegistry()
+    for key, value in values.items():
+        if isinstance(value, str):
+            continue
+        if isinstance(value, list) and value and isinstance(value[0], dict):
+            keys = [f"{key}.{column}" for column in value[0]]
+        else:
+            keys = [key]
+        for k in keys:
+            if k not in units:
+                fail(f"{k}: no unit in the units map")
+            else:
+                try:
+                    registry.parse_units(units[k]) if units[k] != '1' else registry('1')
+                except Exception as error:   # pint raises several kinds
+                    fail(f"{k}: unit {units[k]!r} not parsed by pint ({error})")
+
+    def need(*keys):
+        missing = [k for k in keys if k not in values]
+        if missing:
+            fail(f"keys missing: {missing}")
+        return not missing
+
+    stats = ('steps', 'rhs_evaluations', 'cpu_time')
+    if scenario != 'geometry' and need(*stats):
+        close('steps', values['steps'], f['/statistics/steps'][()])
+        close('rhs_evaluations', values['rhs_evaluations'], f['/statistics/rhs_evaluations'][()])
+        close('cpu_time', values['cpu_time'], f['/statistics/cpu_time'][()])
+
+    if scenario == 'water':
+        g = f['/water']
+        if need('flow_rate', 'flow_time', 'slide_length_covered', 'outcome', 'speed_min', 'speed_max',
+                'final_speed', 'height_min', 'height_max', 'width_min', 'width_max', 'flow_angle_min',
+                'flow_angle_max', 'v_min', 'v_max'):
+            close('flow_rate', values['flow_rate'], g.attrs['flow_rate_m3_per_s'])
+            close('flow_time', values['flow_time'], g['time'][-1])
+            close('slide_length_covered', values['slide_length_covered'], g['arc_length'][-1] - g['arc_length'][0])
+            if values['outcome'] != g.attrs['outcome']:
+                fail(f"outcome {values['outcome']!r}, the file says {g.attrs['outcome']!r}")
+            for key, name in (('speed', 'speed'), ('height', 'height'), ('width', 'width'),
+                              ('flow_angle', 'beta'), ('v', 'v')):
+                close(key + '_min', values[key + '_min'], g[name][:].min())
+                close(key + '_max', values[key + '_max'], g[name][:].max())
+            close('final_speed', values['final_speed'], g['speed'][-1])
+        if 'stations' in g and need('stations'):
+            rows = values['stations']
+            for column in ('time', 'speed', 'height', 'width', 'v_middle', 'v_left', 'v_right', 'u'):
+                close('stations.' + column, [r[column] for r in rows], g['stations/' + column][:])
+            close('stations.arc_length', [r['arc_length'] for r in rows], g['stations/arc_length'][:])
+            close('stations.reached', [r['reached'] for r in rows], g['stations/reached'][:])
+    elif scenario == 'point_mass':
+        g = f['/point_mass']
+        if need('simulated_time', 'final_position', 'final_speed', 'max_speed', 'max_acceleration',
+                'normal_force_min', 'normal_force_max', 'drop', 'friction_work', 'energy_balance_error'):
+            close('simulated_time', values['simulated_time'], g['time'][-1])
+            close('final_position', values['final_position'], g['position'][-1])
+            close('final_speed', values['final_speed'], g['speed'][-1])
+            close('max_speed', values['max_speed'], g['speed'][:].max())
+            close('max_acceleration', values['max_acceleration'], np.linalg.norm(g['acceleration'][:], axis=1).max())
+            close('normal_force_min', values['normal_force_min'], g['normal_force'][:].min())
+            close('normal_force_max', values['normal_force_max'], g['normal_force'][:].max())
+            close('drop', values['drop'], g['position'][0, 2] - g['position'][-1, 2])
+            close('friction_work', values['friction_work'], g['friction_work'][-1])
+    elif scenario == 'geometry':
+        if need('grid_n_u', 'grid_n_v'):
+            close('grid_n_u', values['grid_n_u'], f['/geometry/surface/u'].shape[0])
+            close('grid_n_v', values['grid_n_v'], f['/geometry/surface/v'].shape[0])
+        if '/geometry/centerline' in f and need('centerline_length', 'drop', 'curvature_max'):
+            c = f['/geometry/centerline']
+            close('centerline_length', values['centerline_length'], c['length'][()])
+            close('drop', values['drop'], c['points'][0, 2] - c['points'][-1, 2])
+            close('curvature_max', values['curvature_max'], c['chi'][:].max())
+    else:
+        g = f['/' + scenario]
+        if need('simulated_time', 'energy_change'):
+            close('simulated_time', values['simulated_time'], g['time'][-1])
+            kinetic, potential = g['kinetic_energy'][:], g['potential_energy'][:]
+            scale = max(kinetic.max(), np.abs(potential - potential[0]).max())
+            close('energy_change', values['energy_change'],
+                  (kinetic[-1] + potential[-1] - kinetic[0] - potential[0]) / scale)
+        for q in g['coordinates']:
+            c = g['coordinates'][q]
+            if need(q + '_final', q + '_min', q + '_max', q + '_rate_final'):
+                close(q + '_final', values[q + '_final'], c['value'][-1])
+                close(q + '_min', values[q + '_min'], c['value'][:].min())
+                close(q + '_max', values[q + '_max'], c['value'][:].max())
+                close(q + '_rate_final', values[q + '_rate_final'], c['rate'][-1])
+            if c['value'].attrs['units'] == 'rad' and need(q + '_rate_max'):
+                close(q + '_rate_max', values[q + '_rate_max'], np.abs(c['rate'][:]).max())
+        if 'closure_residual' in g and need('closure_residual_max'):
+            close('closure_residual_max', values['closure_residual_max'], g['closure_residual'][:].max())
+        for contact in g.get('contacts', {}):
+            c = g['contacts'][contact]
+            if need(contact + '_speed_max', contact + '_normal_force_min', contact + '_normal_force_max'):
+                close(contact + '_speed_max', values[contact + '_speed_max'],
+                      np.linalg.norm(c['velocity'][:], axis=1).max())
+                close(contact + '_normal_force_min', values[contact + '_normal_force_min'], c['normal_force'][:].min())
+                close(contact + '_normal_force_max', values[contact + '_normal_force_max'], c['normal_force'][:].max())
+    for line in failures:
+        print(f"FAIL {json_path}: {line}")
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == '__main__':
+    main(*sys.argv[1:4])
