@@ -77,6 +77,7 @@ module geometry_cross_section
     procedure :: evaluate => circle_evaluate
     procedure :: v_range => circle_range
     procedure :: periodic => circle_periodic
+    procedure :: extent => circle_extent
   end type circle_section_t
 
   !> Ellipse s = [0, -a cos v, -b sin v]: half-width a (m), half-height b (m).
@@ -156,6 +157,16 @@ contains
       if (st%ok()) r = max(r, norm2(p%s(:, 0, 0)))
     end do
   end function section_extent
+
+  !> A circle's extent is its radius, on any arc of it (no sampling).
+  pure function circle_extent(self, u) result(r)
+    class(circle_section_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp) :: r
+    associate (unused => u)
+    end associate
+    r = self%radius
+  end function circle_extent
 
   ! ---------------------------------------------------------------- logistic
 

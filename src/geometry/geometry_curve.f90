@@ -15,7 +15,8 @@ module geometry_curve
   use numerics_spline_curve, only: spline_curve_t
   implicit none (type, external)
   private
-  public :: curve_t, curve_point_t, line_curve_t, helix_curve_t, constant_curve_t, polynomial_curve_t
+  public :: curve_t, curve_point_t, line_curve_t, helix_curve_t, constant_curve_t, polynomial_curve_t, &
+            s_bend_curve_t
   public :: curve_max_order, spline_centerline_t, new_spline_centerline
 
   integer, parameter :: curve_max_order = 4
@@ -63,22 +64,41 @@ module geometry_curve
     procedure :: evaluate => line_evaluate
     procedure :: domain => line_domain
     procedure :: parameter_unit => line_parameter_unit
+    procedure :: arc_length => line_arc_length
   end type line_curve_t
 
   !> Helix about the z-axis through `center`:
-  !> c(u) = center + [R cos(phase + u), R sin(phase + u), pitch u], u in rad;
-  !> pitch = 0 gives a circle arc. Curvature R/(R^2 + pitch^2).
+  !> c(u) = center + [R cos(phase + turn u), R sin(phase + turn u), pitch u], u in rad;
+  !> turn = +1 turns counter-clockwise seen from above, -1 clockwise; pitch = 0
+  !> gives a circle arc. Curvature R/(R^2 + pitch^2).
   type, extends(curve_t) :: helix_curve_t
     real(wp) :: center(3) = 0
     real(wp) :: radius = 1             ! m
     real(wp) :: pitch = 0              ! m per rad (rise per turn / 2 pi)
     real(wp) :: phase = 0              ! rad
+    real(wp) :: turn = 1               ! +1 or -1
     real(wp) :: u_min = 0, u_max = 1   ! rad
   contains
     procedure :: evaluate => helix_evaluate
     procedure :: domain => helix_domain
     procedure :: parameter_unit => helix_parameter_unit
+    procedure :: arc_length => helix_arc_length
   end type helix_curve_t
+
+  !> S-bend c(u) = origin + [u, a sin(k u), -q u] (u in m along x): left and
+  !> right curves alternating every pi/k of x, falling by q per metre;
+  !> a < 0 mirrors it (y -> -y).
+  type, extends(curve_t) :: s_bend_curve_t
+    real(wp) :: origin(3) = 0
+    real(wp) :: amplitude = 1          ! m (a)
+    real(wp) :: wavenumber = 0.5_wp    ! 1/m (k)
+    real(wp) :: slope = 0.1_wp         ! 1 (q, descent per m of x)
+    real(wp) :: u_min = 0, u_max = 10  ! m
+  contains
+    procedure :: evaluate => s_bend_evaluate
+    procedure :: domain => s_bend_domain
+    procedure :: parameter_unit => s_bend_parameter_unit
+  end type s_bend_curve_t
 
   !> A constant vector (the usual horizon field h = [0, 0, 1]).
   type, extends(curve_t) :: constant_curve_t
@@ -145,6 +165,14 @@ contains
     u_min = self%u_min; u_max = self%u_max
   end subroutine line_domain
 
+  !> |direction| (u1 - u0): the closed form of the quadrature.
+  pure function line_arc_length(self, u0, u1) result(s)
+    class(line_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u0, u1
+    real(wp) :: s
+    s = norm2(self%direction)*(u1 - u0)
+  end function line_arc_length
+
   pure subroutine helix_evaluate(self, u, order, p, status)
     class(helix_curve_t), intent(in) :: self
     real(wp), intent(in) :: u
@@ -154,16 +182,49 @@ contains
     real(wp) :: cs, sn
     integer :: k
     p%order = min(max(order, 0), curve_max_order)
-    cs = self%radius*cos(self%phase + u)
-    sn = self%radius*sin(self%phase + u)
+    cs = self%radius*cos(self%phase + self%turn*u)
+    sn = self%radius*sin(self%phase + self%turn*u)
     p%d(:, 0) = self%center + [cs, sn, self%pitch*u]
-    ! d/du [R cos, R sin] = [-R sin, R cos]: each derivative turns by 90 degrees
-    if (p%order >= 1) p%d(:, 1) = [-sn, cs, self%pitch]
+    ! d/du [R cos, R sin] = turn [-R sin, R cos]: each derivative turns by 90
+    ! degrees and takes a factor turn
+    if (p%order >= 1) p%d(:, 1) = [-self%turn*sn, self%turn*cs, self%pitch]
     do k = 2, p%order
-      p%d(1:2, k) = [-p%d(2, k - 1), p%d(1, k - 1)]
+      p%d(1:2, k) = self%turn*[-p%d(2, k - 1), p%d(1, k - 1)]
     end do
     status%code = STATUS_OK
   end subroutine helix_evaluate
+
+  !> sqrt(R^2 + pitch^2) (u1 - u0): the closed form of the quadrature.
+  pure function helix_arc_length(self, u0, u1) result(s)
+    class(helix_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u0, u1
+    real(wp) :: s
+    s = sqrt(self%radius**2 + self%pitch**2)*(u1 - u0)
+  end function helix_arc_length
+
+  pure subroutine s_bend_evaluate(self, u, order, p, status)
+    class(s_bend_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(curve_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    real(wp) :: a, k, cs, sn
+    p%order = min(max(order, 0), curve_max_order)
+    a = self%amplitude; k = self%wavenumber
+    cs = cos(k*u); sn = sin(k*u)
+    p%d(:, 0) = self%origin + [u, a*sn, -self%slope*u]
+    if (p%order >= 1) p%d(:, 1) = [1.0_wp, a*k*cs, -self%slope]
+    if (p%order >= 2) p%d(:, 2) = [0.0_wp, -a*k**2*sn, 0.0_wp]
+    if (p%order >= 3) p%d(:, 3) = [0.0_wp, -a*k**3*cs, 0.0_wp]
+    if (p%order >= 4) p%d(:, 4) = [0.0_wp, a*k**4*sn, 0.0_wp]
+    status%code = STATUS_OK
+  end subroutine s_bend_evaluate
+
+  pure subroutine s_bend_domain(self, u_min, u_max)
+    class(s_bend_curve_t), intent(in) :: self
+    real(wp), intent(out) :: u_min, u_max
+    u_min = self%u_min; u_max = self%u_max
+  end subroutine s_bend_domain
 
   pure subroutine helix_domain(self, u_min, u_max)
     class(helix_curve_t), intent(in) :: self
@@ -426,6 +487,14 @@ contains
     unit = '1'
     if (abs(norm2(self%direction) - 1) <= 1e-12_wp) unit = 'm'
   end function line_parameter_unit
+
+  pure function s_bend_parameter_unit(self) result(unit)
+    class(s_bend_curve_t), intent(in) :: self
+    character(len=:), allocatable :: unit
+    associate (unused => self)
+    end associate
+    unit = 'm'
+  end function s_bend_parameter_unit
 
   pure function helix_parameter_unit(self) result(unit)
     class(helix_curve_t), intent(in) :: self

@@ -13,12 +13,13 @@ module geometry_tube
   use base_text, only: format_short, format_vector
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_t, surface_point_t
-  use geometry_curve, only: curve_t, curve_point_t
+  use geometry_curve, only: curve_t, curve_point_t, line_curve_t, helix_curve_t, s_bend_curve_t, constant_curve_t
   use geometry_curve_frame, only: curve_frame_t, curve_frame_from_points
-  use geometry_cross_section, only: cross_section_t, section_point_t
+  use geometry_cross_section, only: cross_section_t, section_point_t, circle_section_t
   implicit none (type, external)
   private
   public :: tube_surface_t, new_tube_surface
+  public :: new_straight_tube, new_helix_tube, new_s_bend_tube
 
   type, extends(surface_t) :: tube_surface_t
     class(curve_t), allocatable :: centerline
@@ -26,6 +27,7 @@ module geometry_tube
     class(cross_section_t), allocatable :: section
   contains
     procedure :: evaluate => tube_evaluate
+    procedure :: evaluate_with_centerline => tube_evaluate_with_centerline
     procedure :: domain => tube_domain
     procedure :: periodic_v => tube_periodic_v
     procedure :: describe => tube_describe
@@ -65,13 +67,64 @@ contains
     allocate (t%section, source=section)
   end function new_tube_surface
 
+  ! ------------------------------------------------------------ closed-form tubes
+  ! Circular tubes around closed-form centerlines with the horizon [0, 0, 1]
+  ! (thesis 4.2: v = pi/2 at the bottom, v grows to the left): exact
+  ! derivatives to every order the tube needs, arc length in closed form for
+  ! the line and the helix.
+
+  !> Straight tube of radius r falling at `incline` (rad) below the horizontal
+  !> along +x: c = u [cos t, 0, -sin t], u in [0, length] (m, arc length).
+  function new_straight_tube(radius, incline, length, status) result(t)
+    real(wp), intent(in) :: radius, incline, length
+    type(status_t), intent(out) :: status
+    type(tube_surface_t) :: t
+    t = new_tube_surface(line_curve_t(direction=[cos(incline), 0.0_wp, -sin(incline)], u_min=0.0_wp, &
+                                      u_max=length), constant_curve_t(), circle_section_t(radius=radius), status)
+  end function new_straight_tube
+
+  !> Helical tube about the z-axis: c = [rho cos(s u), rho sin(s u), -p u],
+  !> u in [0, u_max] (rad), p the descent per radian, s = +1 counter-clockwise
+  !> seen from above, -1 clockwise.
+  function new_helix_tube(radius, helix_radius, pitch, turn_sense, u_max, status) result(t)
+    real(wp), intent(in) :: radius, helix_radius, pitch, turn_sense, u_max
+    type(status_t), intent(out) :: status
+    type(tube_surface_t) :: t
+    t = new_tube_surface(helix_curve_t(radius=helix_radius, pitch=-pitch, turn=sign(1.0_wp, turn_sense), &
+                                       u_min=0.0_wp, u_max=u_max), &
+                         constant_curve_t(), circle_section_t(radius=radius), status)
+  end function new_helix_tube
+
+  !> S-bend tube c = [u, a sin(k u), -q u], u in [0, length] (m of x).
+  function new_s_bend_tube(radius, amplitude, wavenumber, slope, length, status) result(t)
+    real(wp), intent(in) :: radius, amplitude, wavenumber, slope, length
+    type(status_t), intent(out) :: status
+    type(tube_surface_t) :: t
+    t = new_tube_surface(s_bend_curve_t(amplitude=amplitude, wavenumber=wavenumber, slope=slope, u_min=0.0_wp, &
+                                        u_max=length), constant_curve_t(), circle_section_t(radius=radius), status)
+  end function new_s_bend_tube
+
   pure subroutine tube_evaluate(self, u, v, order, p, status)
     class(tube_surface_t), intent(in) :: self
     real(wp), intent(in) :: u, v
     integer, intent(in) :: order
     type(surface_point_t), intent(out) :: p
     type(status_t), intent(out) :: status
-    type(curve_point_t) :: c, h
+    type(curve_point_t) :: c
+    call tube_evaluate_with_centerline(self, u, v, order, p, c, status)
+  end subroutine tube_evaluate
+
+  !> The surface point and, from the same evaluation, the centerline point c
+  !> with its derivatives to order + 1 (for the curvature, without evaluating
+  !> the centerline twice).
+  pure subroutine tube_evaluate_with_centerline(self, u, v, order, p, c, status)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    type(curve_point_t), intent(out) :: c
+    type(status_t), intent(out) :: status
+    type(curve_point_t) :: h
     type(curve_frame_t) :: f
     type(section_point_t) :: s
     real(wp) :: d(3, 0:3, 0:3)
@@ -108,7 +161,7 @@ contains
     if (order >= 3) then
       p%ruuu = d(:, 3, 0); p%ruuv = d(:, 2, 1); p%ruvv = d(:, 1, 2); p%rvvv = d(:, 0, 3)
     end if
-  end subroutine tube_evaluate
+  end subroutine tube_evaluate_with_centerline
 
   pure subroutine tube_domain(self, u_min, u_max, v_min, v_max)
     class(tube_surface_t), intent(in) :: self

@@ -7,7 +7,7 @@ module io_water_config
   use base_status, only: status_t
   use io_input, only: input_text_t, namelist_read_error, check_positive, check_nonnegative, &
     check_finite, check_finite_vector, check_choice, check_range, invalid, format_real, lower
-  use water_channel, only: analytic_tube_t, new_straight_tube, new_helix_tube, new_s_bend_tube
+  use geometry_tube, only: tube_surface_t, new_straight_tube, new_helix_tube, new_s_bend_tube
   use water_streamline, only: default_f1, default_f2, default_f3, CORRECTION_FULL, &
     CORRECTION_NO_RADIUS, CORRECTION_OFF
   use water_flow, only: water_start_t, START_EDGES, START_HEIGHT, START_SPEED, START_HEIGHT_SPEED
@@ -33,10 +33,11 @@ module io_water_config
 
 contains
 
-  !> &channel: kind = 'straight' | 'helix' | 's_bend' (circular tubes, closed form).
+  !> &channel: kind = 'straight' | 'helix' | 's_bend' (circular tubes around
+  !> closed-form centerlines, geometry_tube).
   subroutine read_channel_config(input, tube, status)
     type(input_text_t), intent(in) :: input
-    type(analytic_tube_t), intent(out) :: tube
+    type(tube_surface_t), intent(out) :: tube
     type(status_t), intent(inout) :: status
     character(len=16) :: kind
     real(wp) :: radius, incline_deg, length, helix_radius, pitch, turn_sense, turns, amplitude, &
@@ -74,11 +75,11 @@ contains
     if (.not. status%ok()) return
     select case (lower(adjustl(kind)))
     case ('helix')
-      tube = new_helix_tube(radius, helix_radius, pitch, turn_sense, 2*pi*turns)
+      tube = new_helix_tube(radius, helix_radius, pitch, turn_sense, 2*pi*turns, status)
     case ('s_bend')
-      tube = new_s_bend_tube(radius, amplitude, wavenumber, slope, length)
+      tube = new_s_bend_tube(radius, amplitude, wavenumber, slope, length, status)
     case default
-      tube = new_straight_tube(radius, incline_deg*pi/180, length)
+      tube = new_straight_tube(radius, incline_deg*pi/180, length, status)
     end select
   end subroutine read_channel_config
 

@@ -10,8 +10,7 @@ module scenarios_water
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_tube, only: tube_surface_t
   use numerics_ode, only: ode_stats_t
-  use water_channel, only: analytic_tube_t, channel_t
-  use water_tube_channel, only: new_tube_channel
+  use water_channel, only: channel_t, new_channel
   use water_streamline, only: streamline_t, CORRECTION_FULL, CORRECTION_NO_RADIUS
   use water_flow, only: water_series_t, water_table_t, water_initial_state, simulate_water, &
     water_table, outcome_name, START_EDGES
@@ -32,14 +31,6 @@ module scenarios_water
     'channel', 'water']
   integer, parameter :: grid_n_u = 400, grid_n_v = 48   ! the written surface grid
 
-  !> A channel seen as a surface, to write the grid it ran on.
-  type, extends(surface_t) :: channel_surface_t
-    class(channel_t), allocatable :: channel
-  contains
-    procedure :: evaluate => channel_surface_evaluate
-    procedure :: parameter_units => channel_surface_units
-  end type channel_surface_t
-
 contains
 
   !> Reads and checks every input group, builds the model and its start state;
@@ -52,7 +43,7 @@ contains
     real(wp), intent(out) :: y0(7)
     type(status_t), intent(inout) :: status
     class(surface_t), allocatable :: surface
-    type(analytic_tube_t) :: tube
+    type(tube_surface_t) :: tube
     real(wp) :: u_min, u_max, v_min, v_max, total, start_speed
     type(surface_point_t) :: start_point
     real(wp), parameter :: plausible_speed = 30   ! m/s
@@ -72,7 +63,7 @@ contains
       if (.not. status%ok()) return
       select type (surface)
       type is (tube_surface_t)
-        allocate (model%channel, source=new_tube_channel(surface))
+        allocate (model%channel, source=new_channel(surface))
       class default
         call set_status(status, STATUS_INVALID_INPUT, input%name//': &surface: the water needs a tube ' // &
                         '(kind = ''tube'' or ''slide''), not a '//surface%describe())
@@ -81,7 +72,7 @@ contains
     else
       call read_channel_config(input, tube, status)
       if (.not. status%ok()) return
-      allocate (model%channel, source=tube)
+      allocate (model%channel, source=new_channel(tube))
     end if
     call read_water_config(input, config, status)
     if (.not. status%ok()) return
@@ -305,7 +296,6 @@ contains
     type(result_file_t), intent(inout) :: file
     class(channel_t), intent(in) :: channel
     type(status_t), intent(inout) :: status
-    type(channel_surface_t) :: surface
     real(wp) :: u_min, u_max, v_min, v_max
     real(wp), parameter :: full_turn = 2*acos(-1.0_wp)
     call channel%u_range(u_min, u_max)
@@ -313,25 +303,9 @@ contains
     if (v_min < -full_turn .or. v_max > 2*full_turn) then   ! a closed tube (+-huge): one turn
       v_min = 0; v_max = full_turn
     end if
-    allocate (surface%channel, source=channel)
-    call write_surface_grid(file, surface, evenly_spaced(u_min, u_max, grid_n_u), &
+    call write_surface_grid(file, channel%tube, evenly_spaced(u_min, u_max, grid_n_u), &
                             evenly_spaced(v_min, v_max, grid_n_v), status)
   end subroutine write_channel_grid
-
-  pure subroutine channel_surface_evaluate(self, u, v, order, p, status)
-    class(channel_surface_t), intent(in) :: self
-    real(wp), intent(in) :: u, v
-    integer, intent(in) :: order
-    type(surface_point_t), intent(out) :: p
-    type(status_t), intent(out) :: status
-    call self%channel%evaluate(u, v, order, p, status)
-  end subroutine channel_surface_evaluate
-
-  pure subroutine channel_surface_units(self, u_units, v_units)
-    class(channel_surface_t), intent(in) :: self
-    character(len=:), allocatable, intent(out) :: u_units, v_units
-    call self%channel%parameter_units(u_units, v_units)
-  end subroutine channel_surface_units
 
   subroutine write_stats(file, stats, cpu, status)
     type(result_file_t), intent(inout) :: file

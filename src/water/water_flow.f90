@@ -399,11 +399,10 @@ contains
     type(water_rates_t) :: rates
     type(status_t) :: st
     integer :: i
-    real(wp) :: lam, here(2), guess_l(2), guess_r(2), c(3, 0:3)
+    real(wp) :: lam, here(2), guess_l(2), guess_r(2)
     st%code = 0
     call water_point(model, y, q, st)
     if (st%ok()) call water_point_rates(model, y, q, rates, st)
-    if (st%ok()) call model%channel%centerline(y(1), c, st)
     if (.not. st%ok()) then
       if (status%ok()) status = st
       return
@@ -434,7 +433,7 @@ contains
     s%speed_rate(i) = q%speed_rate; s%height_rate(i) = q%height_rate; s%width_rate(i) = rates%width
     s%x_m(:, i) = q%x_m; s%z_m(:, i) = q%z_m
     s%x_m_rate(:, i) = rates%x_m; s%z_m_rate(:, i) = rates%z_m
-    s%centerline_speed(i) = norm2(c(:, 1))
+    s%centerline_speed(i) = q%centerline_speed
     if (with_edges) then
       if (i >= 2) then
         if (s%edge_solved(i - 1) == 1) then

@@ -93,6 +93,7 @@ module water_streamline
     real(wp) :: normal_force = 0                    ! N (4.12)
     real(wp) :: friction = 0                        ! N (F_R, 4.7)
     real(wp) :: chi = 0, chi_s = 0                  ! 1/m, 1/m^2
+    real(wp) :: centerline_speed = 0                ! |c_u|, m per unit of u
     real(wp) :: beta = 0                            ! rad, flow vs centerline, + towards +v
     real(wp) :: radius = 0                          ! m, R (4.15); 0 for a profile
     real(wp) :: radius_rate = 0                     ! m/s (F.5)
@@ -207,7 +208,7 @@ contains
                       //format_short(v))
       return
     end if
-    call self%channel%evaluate(u, v, 2, q%p, status)
+    call self%channel%evaluate_with_curvature(u, v, q%p, q%chi, q%chi_s, q%centerline_speed, status)
     if (.not. status%ok()) return
     q%position = q%p%r
     q%velocity = q%p%ru*du + q%p%rv*dv
@@ -232,8 +233,6 @@ contains
     q%a_hat = q%p%ruu*du**2 + 2*q%p%ruv*du*dv + q%p%rvv*dv**2     ! (4.11)
     q%normal_force = m*dot_product(q%z_m, q%a_hat - self%gravity)  ! (4.12)
 
-    call self%channel%curvature(u, q%chi, q%chi_s, status)
-    if (.not. status%ok()) return
     q%friction = self%f1 + q%chi*self%f2                          ! (4.7)
     if (q%chi_s > 0) q%friction = q%friction + q%chi_s*self%f3
     q%friction = q%friction*q%speed**2

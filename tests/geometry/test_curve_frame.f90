@@ -8,7 +8,7 @@ program test_curve_frame
   use base_status, only: status_t, STATUS_DOMAIN
   use base_vector, only: cross
   use geometry_curve, only: curve_t, curve_point_t, helix_curve_t, line_curve_t, &
-                            constant_curve_t, polynomial_curve_t
+                            constant_curve_t, polynomial_curve_t, s_bend_curve_t
   use geometry_curve_frame, only: curve_frame_t, curve_frame_at
   use testing, only: check, check_close, check_close_array, finish_tests
   implicit none (type, external)
@@ -20,7 +20,8 @@ program test_curve_frame
   real(wp), parameter :: h = 1e-5_wp, fd_tol = 1e-7_wp
   real(wp), parameter :: u_points(7) = [0.13_wp, 0.71_wp, 1.37_wp, 2.05_wp, 2.9_wp, 3.6_wp, 4.4_wp]
 
-  type(helix_curve_t) :: helix, horizon_helix
+  type(helix_curve_t) :: helix, horizon_helix, clockwise
+  type(s_bend_curve_t) :: s_bend
   type(constant_curve_t) :: up, tilted
   type(polynomial_curve_t) :: poly
   type(line_curve_t) :: vertical
@@ -45,9 +46,19 @@ program test_curve_frame
   poly%coef(:, 5) = [-0.0005_wp, 0.0004_wp, 0.0002_wp]
   poly%u_min = 0; poly%u_max = 5
 
+  clockwise = helix_curve_t(center=[0.5_wp, 0.0_wp, 2.0_wp], radius=2.0_wp, pitch=-0.5_wp, phase=0.7_wp, &
+                            turn=-1.0_wp, u_min=0.0_wp, u_max=6.0_wp)
+  s_bend = s_bend_curve_t(amplitude=1.5_wp, wavenumber=0.4_wp, slope=0.1_wp, u_min=0.0_wp, u_max=20.0_wp)
   call check_curve(helix, 'helix')
+  call check_curve(clockwise, 'clockwise helix')
+  call check_curve(s_bend, 'S-bend')
   call check_curve(poly, 'polynomial')
+  ! a clockwise helix turns the other way: c_u x c_uu points down (seen from above, clockwise)
+  call check_clockwise()
   do i = 1, size(u_points)
+    call check_frame(clockwise, up, u_points(i), 'clockwise helix/up')
+    call check_frame(s_bend, up, u_points(i), 'S-bend/up')
+    call check_chi_u(s_bend, u_points(i))
     call check_frame(helix, up, u_points(i), 'helix/up')
     call check_frame(helix, horizon_helix, u_points(i), 'helix/varying horizon')
     call check_frame(poly, tilted, u_points(i), 'polynomial/tilted')
@@ -78,6 +89,14 @@ program test_curve_frame
   u = poly%arc_length(0.0_wp, 3.3_wp)
   call poly%parameter_at_length(u, rr, st)
   call check_close(rr, 3.3_wp, 0.0_wp, 1e-10_wp, 'polynomial: parameter at length inverts arc length')
+  ! the line's and the helix's closed-form arc length equal the quadrature of
+  ! |c_u| (rtol 1e-12: the rounding of 20000 sums)
+  call check_close(clockwise%arc_length(0.3_wp, 5.2_wp), quadrature(clockwise, 0.3_wp, 5.2_wp), 1e-12_wp, 0.0_wp, &
+                   'clockwise helix arc length = quadrature')
+  vertical = line_curve_t(origin=[1.0_wp, 2.0_wp, 3.0_wp], direction=[0.3_wp, -1.2_wp, 0.4_wp], &
+                          u_min=0.0_wp, u_max=2.0_wp)
+  call check_close(vertical%arc_length(0.2_wp, 1.7_wp), quadrature(vertical, 0.2_wp, 1.7_wp), 1e-12_wp, 0.0_wp, &
+                   'line arc length = quadrature')
 
   ! A vertical centerline with the horizon along it: clear error, no NaN.
   vertical = line_curve_t(origin=[0.0_wp, 0.0_wp, 0.0_wp], direction=[0.0_wp, 0.0_wp, -1.0_wp], &
@@ -143,6 +162,33 @@ contains
     ! chi = |x_u|/|c_u| (curvature is the turning rate of the tangent per metre)
     call check_close(f0%chi, norm2(f0%x(:, 1))/speed(c, u), 1e-12_wp, 0.0_wp, 'chi (4.8) = |x_u|/|c_u|')
   end subroutine check_chi_u
+
+  subroutine check_clockwise()
+    type(curve_point_t) :: p
+    real(wp) :: k3(3)
+    integer :: k
+    do k = 1, size(u_points)
+      call clockwise%evaluate(u_points(k), 2, p, st)
+      k3 = cross(p%d(:, 1), p%d(:, 2))
+      call check(k3(3) < 0, 'clockwise helix turns clockwise seen from above')
+      call helix%evaluate(u_points(k), 2, p, st)
+      k3 = cross(p%d(:, 1), p%d(:, 2))
+      call check(k3(3) > 0, 'helix (turn = +1) turns counter-clockwise')
+    end do
+  end subroutine check_clockwise
+
+  !> int |c_u| du by the composite Simpson rule on 20000 panels
+  real(wp) function quadrature(c, a, b)
+    class(curve_t), intent(in) :: c
+    real(wp), intent(in) :: a, b
+    integer, parameter :: n = 20000
+    integer :: k
+    quadrature = speed(c, a) + speed(c, b)
+    do k = 1, n - 1
+      quadrature = quadrature + merge(4, 2, mod(k, 2) == 1)*speed(c, a + (b - a)*k/n)
+    end do
+    quadrature = quadrature*(b - a)/(3*n)
+  end function quadrature
 
   real(wp) function speed(c, u)
     class(curve_t), intent(in) :: c

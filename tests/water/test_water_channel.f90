@@ -1,4 +1,5 @@
-!> The water's geometry: analytic tube partials against central differences,
+!> The water's geometry: the closed-form tubes (geometry_tube, seen through the
+!> water's channel adapter) with their partials against central differences,
 !> centerline curvature (4.8) and its rate (4.9) against closed forms and
 !> differences, the circular segment (F.1) with dA/dh = b (F.2) and
 !> dA/dR = R alpha - b (F.3), the profile area (4.45-4.47) against (F.1), and
@@ -9,20 +10,26 @@ program test_water_channel
   use base_status, only: status_t
   use geometry_surface, only: surface_point_t
   use testing, only: check, check_close, check_close_array, finish_tests
-  use water_channel, only: analytic_tube_t, new_straight_tube, new_helix_tube, new_s_bend_tube
+  use geometry_tube, only: new_straight_tube, new_helix_tube, new_s_bend_tube
+  use water_channel, only: channel_t, new_channel
   use water_section, only: circle_segment, circle_height_for_area, profile_water
   implicit none (type, external)
 
-  type(analytic_tube_t) :: tubes(4)
+  type(channel_t) :: tubes(4)
+  type(status_t) :: st
+  character(len=*), parameter :: names(4) = [character(len=24) :: 'straight tube', 'helix tube', &
+    'clockwise helix tube', 'S-bend tube']
   integer :: k
 
-  tubes(1) = new_straight_tube(0.5_wp, 0.3_wp, 10.0_wp)
-  tubes(2) = new_helix_tube(0.5_wp, 3.0_wp, 0.3_wp, 1.0_wp, 10.0_wp)
-  tubes(3) = new_helix_tube(0.4_wp, 2.0_wp, 0.5_wp, -1.0_wp, 10.0_wp)
-  tubes(4) = new_s_bend_tube(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 20.0_wp)
+  tubes(1) = new_channel(new_straight_tube(0.5_wp, 0.3_wp, 10.0_wp, st))
+  tubes(2) = new_channel(new_helix_tube(0.5_wp, 3.0_wp, 0.3_wp, 1.0_wp, 10.0_wp, st))
+  tubes(3) = new_channel(new_helix_tube(0.4_wp, 2.0_wp, 0.5_wp, -1.0_wp, 10.0_wp, st))
+  tubes(4) = new_channel(new_s_bend_tube(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 20.0_wp, st))
+  call check(st%ok(), 'closed-form tubes built')
   do k = 1, size(tubes)
-    call partials(tubes(k))
+    call partials(tubes(k), trim(names(k)))
   end do
+  call closed_forms()
   call curvature()
   call segment()
   call profile()
@@ -32,12 +39,14 @@ contains
 
   !> r_u, r_v, ..., r_vvv against central differences of the next lower order at
   !> scattered points (h = 1e-5: truncation ~h^2 |r'''| ~ 1e-9, rounding ~1e-11).
-  subroutine partials(t)
-    type(analytic_tube_t), intent(in) :: t
+  subroutine partials(t, name)
+    type(channel_t), intent(in) :: t
+    character(len=*), intent(in) :: name
     type(surface_point_t) :: p, pu1, pu2, pv1, pv2
     type(status_t) :: st
     real(wp), parameter :: h = 1e-5_wp, tol = 1e-7_wp
     real(wp) :: us(3) = [0.7_wp, 2.3_wp, 5.1_wp], vs(3) = [0.4_wp, 1.6_wp, 2.9_wp]
+    real(wp) :: chi, chi_s, chi1, chi_s1, speed
     integer :: i
     do i = 1, 3
       call t%evaluate(us(i), vs(i), 3, p, st)
@@ -46,22 +55,61 @@ contains
       call t%evaluate(us(i), vs(i) + h, 3, pv1, st)
       call t%evaluate(us(i), vs(i) - h, 3, pv2, st)
       call check(st%ok(), 'tube evaluation')
-      call check_close_array(p%ru, (pu1%r - pu2%r)/(2*h), 0.0_wp, tol, t%describe()//' r_u')
-      call check_close_array(p%rv, (pv1%r - pv2%r)/(2*h), 0.0_wp, tol, t%describe()//' r_v')
-      call check_close_array(p%ruu, (pu1%ru - pu2%ru)/(2*h), 0.0_wp, tol, t%describe()//' r_uu')
-      call check_close_array(p%ruv, (pv1%ru - pv2%ru)/(2*h), 0.0_wp, tol, t%describe()//' r_uv')
-      call check_close_array(p%rvv, (pv1%rv - pv2%rv)/(2*h), 0.0_wp, tol, t%describe()//' r_vv')
-      call check_close_array(p%ruuu, (pu1%ruu - pu2%ruu)/(2*h), 0.0_wp, tol, t%describe()//' r_uuu')
-      call check_close_array(p%ruuv, (pv1%ruu - pv2%ruu)/(2*h), 0.0_wp, tol, t%describe()//' r_uuv')
-      call check_close_array(p%ruvv, (pv1%ruv - pv2%ruv)/(2*h), 0.0_wp, tol, t%describe()//' r_uvv')
-      call check_close_array(p%rvvv, (pv1%rvv - pv2%rvv)/(2*h), 0.0_wp, tol, t%describe()//' r_vvv')
+      call check_close_array(p%ru, (pu1%r - pu2%r)/(2*h), 0.0_wp, tol, name//' r_u')
+      call check_close_array(p%rv, (pv1%r - pv2%r)/(2*h), 0.0_wp, tol, name//' r_v')
+      call check_close_array(p%ruu, (pu1%ru - pu2%ru)/(2*h), 0.0_wp, tol, name//' r_uu')
+      call check_close_array(p%ruv, (pv1%ru - pv2%ru)/(2*h), 0.0_wp, tol, name//' r_uv')
+      call check_close_array(p%rvv, (pv1%rv - pv2%rv)/(2*h), 0.0_wp, tol, name//' r_vv')
+      call check_close_array(p%ruuu, (pu1%ruu - pu2%ruu)/(2*h), 0.0_wp, tol, name//' r_uuu')
+      call check_close_array(p%ruuv, (pv1%ruu - pv2%ruu)/(2*h), 0.0_wp, tol, name//' r_uuv')
+      call check_close_array(p%ruvv, (pv1%ruv - pv2%ruv)/(2*h), 0.0_wp, tol, name//' r_uvv')
+      call check_close_array(p%rvvv, (pv1%rvv - pv2%rvv)/(2*h), 0.0_wp, tol, name//' r_vvv')
       ! the section is the circle of radius r about the centerline, v = pi/2 at the bottom
       call check_close(norm2(p%rv), t%radius, 1e-14_wp, 0.0_wp, 'circle radius |r_v| = r')
+      ! the integrator's path: the surface point and chi, chi_s from one
+      ! centerline evaluation equal the separate evaluations
+      call t%evaluate_with_curvature(us(i), vs(i), pu1, chi, chi_s, speed, st)
+      call t%curvature(us(i), chi1, chi_s1, st)
+      call check(all([pu1%r, pu1%ru, pu1%rv, pu1%ruu, pu1%ruv, pu1%rvv] == [p%r, p%ru, p%rv, p%ruu, p%ruv, p%rvv]) &
+                 .and. chi == chi1 .and. chi_s == chi_s1, name//': evaluate_with_curvature = evaluate + curvature')
+      call check_close(speed, (t%arc_length(us(i) + h) - t%arc_length(us(i) - h))/(2*h), 1e-9_wp, 0.0_wp, &
+                       name//': |c_u| = ds/du')
     end do
     call t%evaluate(1.0_wp, pi/2, 2, p, st)
     call check(dot_product(cross3(p%ru, p%rv), [0.0_wp, 0.0_wp, 1.0_wp]) > 0, &
-               t%describe()//': normal r_u x r_v points up (into the tube) at the bottom')
+               name//': normal r_u x r_v points up (into the tube) at the bottom')
   end subroutine partials
+
+  !> The closed forms the tubes are defined by (docs/water.md, &channel):
+  !> straight c = u [cos t, 0, -sin t]; helix c = [rho cos(s u), rho sin(s u), -p u];
+  !> S-bend c = [u, a sin(k u), -q u]; the bottom (v = pi/2) lies r below c.
+  subroutine closed_forms()
+    type(surface_point_t) :: p
+    real(wp) :: u, x(3), y(3), c(3, 0:3)
+    u = 2.0_wp
+    call tubes(1)%evaluate(u, pi/2, 0, p, st)
+    call check_close_array(p%r, u*[cos(0.3_wp), 0.0_wp, -sin(0.3_wp)] - 0.5_wp*[sin(0.3_wp), 0.0_wp, cos(0.3_wp)], &
+                           0.0_wp, 1e-14_wp, 'straight tube: bottom point')
+    call tubes(2)%centerline(u, c, st)
+    call check_close_array(c(:, 0), [3.0_wp*cos(u), 3.0_wp*sin(u), -0.3_wp*u], 0.0_wp, 1e-14_wp, &
+                           'helix tube: counter-clockwise centerline')
+    call tubes(3)%centerline(u, c, st)
+    call check_close_array(c(:, 0), [2.0_wp*cos(u), -2.0_wp*sin(u), -0.5_wp*u], 0.0_wp, 1e-14_wp, &
+                           'helix tube: clockwise centerline')
+    call check_close_array(c(:, 1), [-2.0_wp*sin(u), -2.0_wp*cos(u), -0.5_wp], 0.0_wp, 1e-14_wp, &
+                           'helix tube: clockwise tangent')
+    ! S-bend: the bottom is c - r z with the horizon frame x = c'/|c'|,
+    ! y = h x x/|h x x|, z = x x y (h = e_z)
+    x = [1.0_wp, 1.5_wp*0.4_wp*cos(0.4_wp*u), -0.1_wp]
+    x = x/norm2(x)
+    y = [-x(2), x(1), 0.0_wp]/norm2(x(1:2))
+    call tubes(4)%evaluate(u, pi/2, 0, p, st)
+    call check_close_array(p%r, [u, 1.5_wp*sin(0.4_wp*u), -0.1_wp*u] - 0.5_wp*cross3(x, y), 0.0_wp, 1e-14_wp, &
+                           'S-bend: bottom point')
+    ! arc length in closed form: straight u, helix sqrt(rho^2 + p^2) u
+    call check_close(tubes(1)%arc_length(u), u, 1e-15_wp, 0.0_wp, 'straight tube arc length')
+    call check_close(tubes(3)%arc_length(u), sqrt(2.0_wp**2 + 0.5_wp**2)*u, 1e-15_wp, 0.0_wp, 'helix arc length')
+  end subroutine closed_forms
 
   pure function cross3(a, b) result(c)
     real(wp), intent(in) :: a(3), b(3)

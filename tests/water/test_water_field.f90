@@ -24,8 +24,8 @@ program test_water_field
   use io_water_config, only: water_config_t
   use numerics_ode, only: ode_options_t
   use testing, only: check, finish_tests
-  use water_channel, only: new_s_bend_tube
-  use water_tube_channel, only: new_tube_channel
+  use geometry_tube, only: new_s_bend_tube
+  use water_channel, only: new_channel
   use water_streamline, only: streamline_t, water_point_t, water_point, water_rates_t, water_point_rates, &
     CORRECTION_FULL, CORRECTION_OFF
   use water_boundaries, only: water_edges
@@ -85,7 +85,7 @@ contains
     real(wp), intent(in) :: f2, f3
     type(water_start_t) :: start
     type(status_t) :: st
-    allocate (model%channel, source=new_s_bend_tube(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp))
+    allocate (model%channel, source=new_channel(new_s_bend_tube(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp, st)))
     model%correction = CORRECTION_FULL
     model%f2 = f2; model%f3 = f3
     start%mode = START_HEIGHT_SPEED; start%height = 0.02_wp; start%speed = 2; start%v0 = pi/2
@@ -116,7 +116,7 @@ contains
     th = 8*pi/180
     tube = new_tube_surface(line_curve_t(direction=[cos(th), 0.0_wp, -sin(th)], u_min=0.0_wp, u_max=20.0_wp), &
                             constant_curve_t(), flume_section_t(), st)
-    allocate (model%channel, source=new_tube_channel(tube))
+    allocate (model%channel, source=new_channel(tube))
     model%correction = CORRECTION_OFF
     model%flow_rate = 0.004_wp
     start%mode = START_SPEED; start%speed = 1.5_wp; start%v0 = pi/2; start%beta = 0.2_wp

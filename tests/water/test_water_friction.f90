@@ -18,7 +18,7 @@ module test_water_friction_support
   use base_status, only: status_t
   use geometry_curve_frame, only: curve_frame_t, curve_frame_at
   use geometry_curve, only: curve_point_t
-  use water_tube_channel, only: tube_channel_t
+  use water_channel, only: channel_t
   implicit none (type, external)
   private
   public :: frame_chi, frame_chi_s, frame_turn
@@ -28,7 +28,7 @@ contains
   !> chi = |x_u|/|c_u| with x the unit tangent of the curve frame (3.60): the
   !> derivative of the unit tangent by arc length, not |c' x c''|/|c'|^3 (4.8).
   function frame_chi(tc, u) result(chi)
-    type(tube_channel_t), intent(in) :: tc
+    class(channel_t), intent(in) :: tc
     real(wp), intent(in) :: u
     real(wp) :: chi
     type(curve_frame_t) :: f
@@ -41,7 +41,7 @@ contains
   !> The signed curvature, positive turning left, x_s . y = (x_u . y)/|c_u|
   !> (frame y to the left): its sign changes at an inflection.
   function frame_turn(tc, u) result(turn)
-    type(tube_channel_t), intent(in) :: tc
+    class(channel_t), intent(in) :: tc
     real(wp), intent(in) :: u
     real(wp) :: turn
     type(curve_frame_t) :: f
@@ -55,7 +55,7 @@ contains
   !> length of that piece from the curve's own quadrature; `estimate` is
   !> |D(delta) - D(2 delta)|, about 3 times the truncation error of D(delta).
   function frame_chi_s(tc, u, delta, estimate) result(chi_s)
-    type(tube_channel_t), intent(in) :: tc
+    class(channel_t), intent(in) :: tc
     real(wp), intent(in) :: u, delta
     real(wp), intent(out) :: estimate
     real(wp) :: chi_s, d2
@@ -77,8 +77,8 @@ program test_water_friction
   use io_water_config, only: water_config_t
   use numerics_ode, only: ode_options_t
   use testing, only: check, finish_tests
-  use water_channel, only: new_s_bend_tube
-  use water_tube_channel, only: tube_channel_t
+  use geometry_tube, only: new_s_bend_tube
+  use water_channel, only: new_channel
   use water_streamline, only: streamline_t, water_point_t, water_point, CORRECTION_FULL
   use water_flow, only: water_series_t, water_start_t, water_initial_state, simulate_water, &
     START_HEIGHT_SPEED, OUTCOME_END
@@ -163,8 +163,7 @@ contains
     solver%options%rtol = 1e-12_wp; solver%options%atol = 1e-12_wp
     call simulate_water(model, y0, solver%options, solver%duration, 0.0025_wp, s, st, edges=.false.)
     call check(st%ok() .and. s%outcome == OUTCOME_END, 'demo slide: the water reaches the end')
-    select type (tc => model%channel)
-    type is (tube_channel_t)
+    associate (tc => model%channel)
       n_pos = 0; n_neg = 0; worst = 0; est_max = 0; f3_share = 0
       do i = 1, s%n, 14
         chi_s = frame_chi_s(tc, s%u(i), delta, est)
@@ -192,9 +191,7 @@ contains
       print '(a, 2i5, a, es9.2, a, es9.2, a, f6.3)', '  demo slide: states chi_s > 0 / < 0:', n_pos, n_neg, &
         '; worst |F - F_ref|/tol', worst, '; largest difference estimate', est_max, &
         ' 1/m^2; largest f3 share of F_R', f3_share
-    class default
-      call check(.false., 'demo slide: the channel is a geometry tube')
-    end select
+    end associate
     ! intervals where the signed curvature (turn) or chi_s changes sign, chi_s
     ! from the same central differences. The fitted centerline ripples on its
     ! straights (curvature < 1e-4 1/m, docs/geometry.md), flipping both signs
@@ -203,13 +200,10 @@ contains
     ! 0.01 m sample), chi_s by > 1e-5 1/m^2 per sample (a smaller change bends
     ! F_R w by < f3 w^3 1e-5/dt, a trapezoid error < dt f3 w^3 1e-5/8 ~ 3e-7 J)
     allocate (turn(s%n), chi_s_all(s%n), rough(s%n))
-    select type (tc => model%channel)
-    type is (tube_channel_t)
-      do i = 1, s%n
-        turn(i) = frame_turn(tc, s%u(i))
-        chi_s_all(i) = frame_chi_s(tc, s%u(i), delta, est)
-      end do
-    end select
+    do i = 1, s%n
+      turn(i) = frame_turn(model%channel, s%u(i))
+      chi_s_all(i) = frame_chi_s(model%channel, s%u(i), delta, est)
+    end do
     rough = .false.
     rough(:s%n - 1) = (turn(:s%n - 1)*turn(2:) <= 0 .and. abs(turn(:s%n - 1) - turn(2:)) > 5e-4_wp) .or. &
                       (chi_s_all(:s%n - 1)*chi_s_all(2:) <= 0 .and. abs(chi_s_all(:s%n - 1) - chi_s_all(2:)) > 1e-5_wp)
@@ -230,7 +224,7 @@ contains
     real(wp) :: y0(7), chi, chi_s, w, f_ref, f_state, f_rec, err, worst, speed_u
     logical, allocatable :: rough(:)
     integer :: i, n_pos, n_neg
-    allocate (model%channel, source=new_s_bend_tube(0.5_wp, a, k, q, 30.0_wp))
+    allocate (model%channel, source=new_channel(new_s_bend_tube(0.5_wp, a, k, q, 30.0_wp, st)))
     model%correction = CORRECTION_FULL
     start%mode = START_HEIGHT_SPEED; start%height = 0.02_wp; start%speed = 2; start%v0 = pi/2
     call water_initial_state(model, start, y0, st)

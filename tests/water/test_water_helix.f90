@@ -22,7 +22,8 @@ program test_water_helix
   use base_vector, only: cross
   use numerics_ode, only: ode_options_t
   use testing, only: check, check_close, finish_tests
-  use water_channel, only: new_helix_tube
+  use geometry_tube, only: new_helix_tube
+  use water_channel, only: new_channel
   use water_streamline, only: streamline_t, water_point_t, water_point, CORRECTION_OFF, &
     CORRECTION_FULL, default_f1, default_f2
   use water_flow, only: water_series_t, simulate_water, OUTCOME_END
@@ -94,7 +95,8 @@ contains
   subroutine make(model, correction)
     type(streamline_t), intent(out) :: model
     integer, intent(in) :: correction
-    allocate (model%channel, source=new_helix_tube(r, rho, p, 1.0_wp, 4*pi))
+    type(status_t) :: st
+    allocate (model%channel, source=new_channel(new_helix_tube(r, rho, p, 1.0_wp, 4*pi, st)))
     model%correction = correction
   end subroutine make
 

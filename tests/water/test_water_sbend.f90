@@ -21,23 +21,44 @@
 !>   for bit, a run whose channel reports chi = chi_s = 0;
 !> - energy: kinetic + potential lost = work of friction (correction off), and
 !>   = work of friction + Saint-Venant term (correction on), to 1e-8;
-!> - the geometry layer's tube (helix centerline, circle) is the same channel
-!>   as the analytic helix tube; an open flume (non-circular) keeps A w = Q.
+!> - an open flume (non-circular) keeps A w = Q.
 module test_water_sbend_support
   use base_kinds, only: wp
   use base_status, only: status_t
-  use water_channel, only: analytic_tube_t
+  use geometry_surface, only: surface_point_t
+  use geometry_tube, only: new_s_bend_tube
+  use water_channel, only: channel_t, new_channel
   implicit none (type, external)
   private
-  public :: flat_tube_t
+  public :: flat_tube_t, s_bend_channel
 
   !> The same tube with the curvature terms switched off.
-  type, extends(analytic_tube_t) :: flat_tube_t
+  type, extends(channel_t) :: flat_tube_t
   contains
     procedure :: curvature => flat_curvature
+    procedure :: evaluate_with_curvature => flat_evaluate_with_curvature
   end type flat_tube_t
 
 contains
+
+  !> The S-bend tube c = [u, a sin(k u), -q u] of radius r, u in [0, length].
+  function s_bend_channel(radius, amplitude, wavenumber, slope, length) result(c)
+    real(wp), intent(in) :: radius, amplitude, wavenumber, slope, length
+    type(channel_t) :: c
+    type(status_t) :: st
+    c = new_channel(new_s_bend_tube(radius, amplitude, wavenumber, slope, length, st))
+    if (.not. st%ok()) error stop 'S-bend tube: '//st%text()
+  end function s_bend_channel
+
+  pure subroutine flat_evaluate_with_curvature(self, u, v, p, chi, chi_s, speed, status)
+    class(flat_tube_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    type(surface_point_t), intent(out) :: p
+    real(wp), intent(out) :: chi, chi_s, speed
+    type(status_t), intent(out) :: status
+    call self%channel_t%evaluate_with_curvature(u, v, p, chi, chi_s, speed, status)
+    chi = 0; chi_s = 0
+  end subroutine flat_evaluate_with_curvature
 
   pure subroutine flat_curvature(self, u, chi, chi_s, status)
     class(flat_tube_t), intent(in) :: self
@@ -62,12 +83,11 @@ program test_water_sbend
   use geometry_tube, only: tube_surface_t, new_tube_surface
   use numerics_ode, only: ode_options_t
   use testing, only: check, check_close, check_close_array, finish_tests
-  use water_channel, only: channel_t, analytic_tube_t, new_s_bend_tube, new_helix_tube
-  use water_tube_channel, only: tube_channel_t, new_tube_channel
+  use water_channel, only: channel_t, new_channel
   use water_streamline, only: streamline_t, CORRECTION_OFF, CORRECTION_FULL
   use water_flow, only: water_start_t, water_series_t, water_initial_state, simulate_water, &
     START_HEIGHT_SPEED, START_SPEED, OUTCOME_END
-  use test_water_sbend_support, only: flat_tube_t
+  use test_water_sbend_support, only: flat_tube_t, s_bend_channel
   implicit none (type, external)
 
   type(water_series_t) :: a, b
@@ -85,26 +105,25 @@ program test_water_sbend
   ! flat: the water slows down to near-critical flow before the end with the
   ! correction on, so it is off here
   call glide(0.0_wp, 3.0_wp, CORRECTION_OFF)
-  call run(new_s_bend_tube(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp), CORRECTION_FULL, 0.0274748_wp, &
+  call run(s_bend_channel(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp), CORRECTION_FULL, 0.0274748_wp, &
            0.138285_wp, 0.979822_wp, a)
   call energy(a, .true.)
 
   ! f2 = f3 = 0: exactly the run without curvature terms
-  call run(new_s_bend_tube(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp), CORRECTION_OFF, 0.0274748_wp, &
+  call run(s_bend_channel(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp), CORRECTION_OFF, 0.0274748_wp, &
            0.0_wp, 0.0_wp, a)
-  flat%analytic_tube_t = new_s_bend_tube(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp)
+  flat%channel_t = s_bend_channel(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp)
   call run(flat, CORRECTION_OFF, 0.0274748_wp, 0.0_wp, 0.0_wp, b)
   call check(a%n == b%n, 'f2 = f3 = 0: same samples')
   if (a%n == b%n) then
     call check(all(a%u(:a%n) == b%u(:b%n)) .and. all(a%v(:a%n) == b%v(:b%n)) .and. &
                all(a%speed(:a%n) == b%speed(:b%n)), 'f2 = f3 = 0: chi terms vanish exactly')
   end if
-  call run(new_s_bend_tube(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp), CORRECTION_OFF, 0.0274748_wp, &
+  call run(s_bend_channel(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp), CORRECTION_OFF, 0.0274748_wp, &
            0.138285_wp, 0.979822_wp, a)
   call check(maxval(abs(a%speed(:a%n) - b%speed(:a%n))) > 1e-3_wp, 'f2, f3 do slow the water')
   call energy(a, .false.)
 
-  call geometry_tube()
   call flume()
   call blended_flume()
   call finish_tests('test_water_sbend')
@@ -114,9 +133,9 @@ contains
   subroutine mirror(f3, tol)
     real(wp), intent(in) :: f3, tol
     real(wp) :: du, dv, dw, dh, de
-    call run(new_s_bend_tube(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp), CORRECTION_FULL, 0.0274748_wp, &
+    call run(s_bend_channel(0.5_wp, 1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp), CORRECTION_FULL, 0.0274748_wp, &
              0.138285_wp, f3, a)
-    call run(new_s_bend_tube(0.5_wp, -1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp), CORRECTION_FULL, 0.0274748_wp, &
+    call run(s_bend_channel(0.5_wp, -1.5_wp, 0.4_wp, 0.1_wp, 30.0_wp), CORRECTION_FULL, 0.0274748_wp, &
              0.138285_wp, f3, b)
     call check(a%outcome == OUTCOME_END .and. b%outcome == OUTCOME_END, 'S-bends run to their end')
     call check(a%n == b%n, 'mirror runs have the same samples')
@@ -145,9 +164,9 @@ contains
     integer :: i, j, n
     character(len=24) :: label
     write (label, '(a, f4.2, a)') 'S-bend (slope ', slope, ')'
-    call run(new_s_bend_tube(0.5_wp, 1.5_wp, k, slope, 30.0_wp), correction, 0.0274748_wp, &
+    call run(s_bend_channel(0.5_wp, 1.5_wp, k, slope, 30.0_wp), correction, 0.0274748_wp, &
              0.138285_wp, 0.979822_wp, a, speed=speed)
-    call run(new_s_bend_tube(0.5_wp, 1.5_wp, k, slope, 30.0_wp), correction, 0.0274748_wp, &
+    call run(s_bend_channel(0.5_wp, 1.5_wp, k, slope, 30.0_wp), correction, 0.0274748_wp, &
              0.138285_wp, 0.979822_wp, b, speed=speed, u0=half)
     call check(a%outcome == OUTCOME_END .and. b%outcome == OUTCOME_END, trim(label)//': both runs reach the end')
     ! same output times; the run started at L reaches the end first; its last
@@ -234,34 +253,6 @@ contains
     print '(a, l1, a, es10.2)', '  energy balance (correction ', with_correction, '): ', e_err
   end subroutine energy
 
-  !> geometry_tube with a helix centerline c = [rho cos u, rho sin u, -p u] and a
-  !> circle equals the analytic helix tube, partials and curvature included.
-  subroutine geometry_tube()
-    type(tube_surface_t) :: tube
-    type(tube_channel_t) :: tc
-    type(analytic_tube_t) :: ref
-    type(status_t) :: st
-    type(surface_point_t) :: p, q
-    real(wp) :: chi1, chi2, s1, s2
-    integer :: i
-    tube = new_tube_surface(helix_curve_t(radius=3.0_wp, pitch=-0.3_wp, u_min=0.0_wp, u_max=10.0_wp), &
-                            constant_curve_t(), circle_section_t(radius=0.5_wp), st)
-    call check(st%ok(), 'geometry tube built')
-    tc = new_tube_channel(tube)
-    ref = new_helix_tube(0.5_wp, 3.0_wp, 0.3_wp, 1.0_wp, 10.0_wp)
-    do i = 1, 4
-      call tc%evaluate(1.3_wp*i, 0.7_wp*i, 2, p, st)
-      call ref%evaluate(1.3_wp*i, 0.7_wp*i, 2, q, st)
-      call check_close_array([p%r, p%ru, p%rv, p%ruu, p%ruv, p%rvv], [q%r, q%ru, q%rv, q%ruu, q%ruv, q%rvv], &
-                             0.0_wp, 1e-13_wp, 'geometry tube = analytic helix tube')
-      call tc%curvature(1.3_wp*i, chi1, s1, st)
-      call ref%curvature(1.3_wp*i, chi2, s2, st)
-      call check_close(chi1, chi2, 1e-13_wp, 0.0_wp, 'geometry tube curvature')
-    end do
-    call check_close(tc%circle_radius(1.0_wp), 0.5_wp, 0.0_wp, 0.0_wp, 'circle radius seen through the seam')
-    call check_close(tc%arc_length(2.0_wp), ref%arc_length(2.0_wp), 1e-12_wp, 0.0_wp, 'arc length')
-  end subroutine geometry_tube
-
   !> A straight open flume (semicircle + walls): the water area comes from the
   !> profile (4.45-4.48); continuity A w = Q holds along the run.
   subroutine flume()
@@ -275,7 +266,7 @@ contains
     th = 8*pi/180
     tube = new_tube_surface(line_curve_t(direction=[cos(th), 0.0_wp, -sin(th)], u_min=0.0_wp, u_max=20.0_wp), &
                             constant_curve_t(), flume_section_t(), st)
-    allocate (model%channel, source=new_tube_channel(tube))
+    allocate (model%channel, source=new_channel(tube))
     call check(model%channel%circle_radius(0.0_wp) == 0, 'flume is not a circle')
     model%correction = CORRECTION_OFF
     model%flow_rate = 0.004_wp
@@ -310,7 +301,7 @@ contains
     call check(st%ok(), 'blended flume section')
     tube = new_tube_surface(line_curve_t(direction=[cos(th), 0.0_wp, -sin(th)], u_min=0.0_wp, u_max=20.0_wp), &
                             constant_curve_t(), blend, st)
-    allocate (model%channel, source=new_tube_channel(tube))
+    allocate (model%channel, source=new_channel(tube))
     call check(model%channel%section_varies(), 'blended section varies along u')
     model%correction = CORRECTION_FULL
     model%flow_rate = 0.004_wp

@@ -16,7 +16,8 @@ program test_water_stops
   use base_status, only: status_t, STATUS_DOMAIN
   use numerics_ode, only: ode_options_t
   use testing, only: check, check_close, finish_tests
-  use water_channel, only: new_straight_tube
+  use geometry_tube, only: new_straight_tube
+  use water_channel, only: new_channel
   use water_streamline, only: streamline_t, CORRECTION_OFF
   use water_flow, only: water_start_t, water_series_t, water_initial_state, simulate_water, &
     START_HEIGHT_SPEED, OUTCOME_LIFT, OUTCOME_TURN
@@ -34,7 +35,8 @@ contains
   subroutine make(model, incline)
     type(streamline_t), intent(out) :: model
     real(wp), intent(in) :: incline
-    allocate (model%channel, source=new_straight_tube(r, incline, 100.0_wp))
+    type(status_t) :: st
+    allocate (model%channel, source=new_channel(new_straight_tube(r, incline, 100.0_wp, st)))
     model%correction = CORRECTION_OFF
     model%f1 = 0; model%f2 = 0; model%f3 = 0
   end subroutine make

@@ -50,7 +50,8 @@ program test_water_straight
   use numerics_ode, only: ode_options_t, ode_integrator_t
   use test_water_straight_gvf, only: gvf_t, theta, r, g
   use testing, only: check, check_close, finish_tests
-  use water_channel, only: new_straight_tube
+  use geometry_tube, only: new_straight_tube
+  use water_channel, only: new_channel
   use water_streamline, only: streamline_t, water_point_t, water_point, CORRECTION_OFF, &
     CORRECTION_FULL, default_f1
   use water_flow, only: water_start_t, water_series_t, water_initial_state, simulate_water, &
@@ -70,7 +71,8 @@ contains
   subroutine make(model, correction)
     type(streamline_t), intent(out) :: model
     integer, intent(in) :: correction
-    allocate (model%channel, source=new_straight_tube(r, theta, 300.0_wp))
+    type(status_t) :: st
+    allocate (model%channel, source=new_channel(new_straight_tube(r, theta, 300.0_wp, st)))
     model%correction = correction
   end subroutine make
 
