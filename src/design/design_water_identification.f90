@@ -1,0 +1,491 @@
+!> Identification of the water's friction f1, f2, f3 from measurements (thesis
+!> 4.4.1, cost 4.34; METHOD-PART2 C).
+!>
+!> Measurements: at n sections (centerline arc length s_i) the middle of the
+!> flow v_i^M (4.32: the mean of the two edges' angles), and optionally on m
+!> segments [a_j, b_j] the speed w_j^M of balls carried by the flow.
+!> Simulated: a water run with f = [f1, f2, f3] from the measured start (4.33,
+!> the water_start_t of the setup), stopped at every section and segment
+!> point (root functions of the streamline), gives
+!>   v_i^SJ   the middle of the computed water band at section i: the mean of
+!>            the two edges' v (4.25-4.26) where the streamline crosses s_i
+!>            (MIDDLE_EDGES, what is measured), or the streamline's own v there
+!>            (MIDDLE_STREAMLINE, the thesis's wording);
+!>   w_j^SJ   the speed at the segment's midpoint (SPEED_MIDPOINT, as the
+!>            thesis), or the segment's length over the passage time between
+!>            its ends (SPEED_PASSAGE, as measured).
+!> Cost (4.34): F1 = 1/2 (1-w)/n sum (v^SJ - v^M)^2 + 1/2 w k1^2/m sum (w^SJ - w^M)^2
+!> (design_cost), minimised by LMDER within bounds held exactly
+!> (numerics_least_squares). Parameters may be held fixed (the start-value
+!> procedure C.5 fits one at a time) and residual groups restricted to a
+!> subset of sections and segments.
+!>
+!> Standard errors and correlations come from the covariance s^2 (J^T J)^-1
+!> at the optimum: it assumes the weighted residuals share one variance,
+!> i.e. that the weights match the measurement noise
+!> ((1-w)/n sigma_v^2 = w k1^2/m sigma_w^2); docs/identification.md says how to
+!> choose them.
+!>
+!> Every evaluation runs its own water model built from the setup, which it
+!> only reads: evaluations are independent and run in parallel (OpenMP,
+!> `threads`) for the difference Jacobian, with the same numbers as serially.
+module design_water_identification
+  use base_kinds, only: wp
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
+  use base_text, only: format_short, format_integer
+  use numerics_ode, only: ode_options_t
+  use numerics_least_squares, only: least_squares_problem_t, least_squares_options_t, &
+    least_squares_result_t, solve_least_squares
+  use water_streamline, only: streamline_t
+  use water_flow, only: water_start_t, water_series_t, water_initial_state, simulate_water
+  use design_cost, only: cost_group_t, new_cost_group, position_factor, speed_factor, group_part, &
+    group_rmse, group_mae, group_max_abs, append_residuals
+  implicit none (type, external)
+  private
+  public :: water_measurements_t, water_identification_t, water_fit_options_t, water_fit_t
+  public :: new_water_identification, simulate_measurements, water_cost_groups, fit_water_friction
+  public :: water_start_values, water_weight_sweep, water_start_values_t
+  public :: SPEED_MIDPOINT, SPEED_PASSAGE, MIDDLE_EDGES, MIDDLE_STREAMLINE
+
+  integer, parameter :: SPEED_MIDPOINT = 1, SPEED_PASSAGE = 2
+  integer, parameter :: MIDDLE_EDGES = 1, MIDDLE_STREAMLINE = 2
+
+  type :: water_measurements_t
+    real(wp), allocatable :: section_arc_length(:)   !< m, centerline arc length s_i, increasing
+    real(wp), allocatable :: section_v(:)            !< rad, measured middle v_i^M
+    real(wp), allocatable :: segment_start(:)        !< m, centerline arc length a_j
+    real(wp), allocatable :: segment_end(:)          !< m, b_j > a_j
+    real(wp), allocatable :: segment_speed(:)        !< m/s, w_j^M
+  end type water_measurements_t
+
+  !> Everything an evaluation needs; read-only during a fit.
+  type :: water_identification_t
+    type(streamline_t) :: model            !< channel, Q, gravity, correction (its f are replaced)
+    type(water_start_t) :: start           !< the measured start (4.33)
+    type(ode_options_t) :: ode             !< thesis: rtol 1e-10, atol 1e-9
+    real(wp) :: duration = 1000            !< s, a bound only: runs end at the slide's end
+    type(water_measurements_t) :: data
+    integer :: speed_kind = SPEED_MIDPOINT
+    integer :: middle_kind = MIDDLE_EDGES
+    integer :: threads = 1                 !< OpenMP threads for independent evaluations
+    ! derived by new_water_identification
+    real(wp), allocatable :: station_u(:)  !< increasing u of every place a run stops at
+    integer, allocatable :: section_station(:), mid_station(:), start_station(:), end_station(:)
+    real(wp) :: y0(7) = 0
+  end type water_identification_t
+
+  type :: water_fit_options_t
+    real(wp) :: weight = 0.8_wp          !< w of (4.34), thesis table 4.2's choice
+    real(wp) :: k1 = 1                   !< rad s/m
+    logical :: estimate(3) = .true.     !< which of f1, f2, f3 are fitted (the others stay)
+    real(wp) :: lower(3) = 0             !< bounds, held exactly (table 4.3: 0 and INF)
+    real(wp) :: upper(3) = huge(1.0_wp)
+    logical, allocatable :: use_section(:)   !< default: all
+    logical, allocatable :: use_segment(:)   !< default: all
+    type(least_squares_options_t) :: solver = least_squares_options_t(ftol=1e-8_wp, xtol=1e-8_wp, &
+                                                                      gtol=1e-10_wp, epsfcn=1e-10_wp)
+  end type water_fit_options_t
+
+  type :: water_fit_t
+    real(wp) :: f(3) = 0                    !< kg/m, kg, kg m
+    logical :: estimated(3) = .false.
+    logical :: at_bound(3) = .false.
+    real(wp) :: standard_error(3) = 0
+    real(wp) :: correlation(3, 3) = 0
+    logical :: covariance_valid = .false.
+    real(wp) :: weight = 0, k1 = 0
+    real(wp) :: cost = 0, position_part = 0, speed_part = 0   !< rad^2
+    real(wp) :: rmse_position = 0, mae_position = 0, max_position = 0   !< rad
+    real(wp) :: rmse_speed = 0, mae_speed = 0, max_speed = 0            !< m/s
+    real(wp), allocatable :: simulated_v(:), simulated_speed(:)   !< at every section / segment
+    real(wp), allocatable :: error_v(:), error_speed(:)           !< simulated - measured
+    integer :: evaluations = 0, rejected = 0, info = 0
+  end type water_fit_t
+
+  type :: water_start_values_t
+    real(wp) :: f1_energy = 0      !< step 1: energy balance (4.35), kg/m
+    real(wp) :: f1 = 0             !< step 1: fitted to the last segment's speed (f2 = f3 = 0)
+    real(wp) :: f2 = 0             !< step 2: fitted to the chosen sections (f3 = 0)
+    real(wp) :: f3 = 0             !< step 3: fitted to all sections
+    integer :: evaluations = 0
+  end type water_start_values_t
+
+  !> The least-squares problem of one fit: residuals of the used groups.
+  type, extends(least_squares_problem_t) :: water_fit_problem_t
+    type(water_identification_t) :: setup
+    type(water_fit_options_t) :: options
+  contains
+    procedure :: residuals => fit_residuals
+    procedure :: residuals_batch => fit_residuals_batch
+  end type water_fit_problem_t
+
+contains
+
+  !> Checks the measurements against the slide and places the stations.
+  subroutine new_water_identification(setup, status)
+    type(water_identification_t), intent(inout) :: setup
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: s(:), places(:)
+    real(wp) :: u_min, u_max, total
+    integer :: n, m, i, k
+
+    associate (d => setup%data)
+      if (.not. allocated(d%section_arc_length)) allocate (d%section_arc_length(0), d%section_v(0))
+      if (.not. allocated(d%segment_start)) allocate (d%segment_start(0), d%segment_end(0), d%segment_speed(0))
+      n = size(d%section_arc_length)
+      m = size(d%segment_start)
+      if (size(d%section_v) /= n .or. size(d%segment_end) /= m .or. size(d%segment_speed) /= m) then
+        call set_status(status, STATUS_INVALID_INPUT, 'water measurements: one value per section and segment')
+        return
+      end if
+      if (n + m == 0) then
+        call set_status(status, STATUS_INVALID_INPUT, 'water measurements: no sections and no segments')
+        return
+      end if
+      call setup%model%channel%u_range(u_min, u_max)
+      total = setup%model%channel%arc_length(u_max)
+      do i = 2, n
+        if (.not. d%section_arc_length(i) > d%section_arc_length(i - 1)) then
+          call set_status(status, STATUS_INVALID_INPUT, 'water measurements: section '//format_integer(i)// &
+            ' at '//format_short(d%section_arc_length(i))//' m does not lie after the one before it')
+          return
+        end if
+      end do
+      do i = 1, m
+        if (.not. d%segment_end(i) > d%segment_start(i)) then
+          call set_status(status, STATUS_INVALID_INPUT, 'water measurements: segment '//format_integer(i)// &
+            ' must end after its start')
+          return
+        end if
+      end do
+      ! every place a run stops at, in order along the slide
+      places = [d%section_arc_length, (d%segment_start + d%segment_end)/2, d%segment_start, d%segment_end]
+      if (any(places < 0) .or. any(places > total)) then
+        call set_status(status, STATUS_INVALID_INPUT, 'water measurements: every section and segment must '// &
+          'lie on the slide, arc length in [0, '//format_short(total)//'] m')
+        return
+      end if
+      s = unique_sorted(places)
+      allocate (setup%station_u(size(s)))
+      do k = 1, size(s)
+        call setup%model%channel%parameter_at_length(s(k), setup%station_u(k), status)
+        if (.not. status%ok()) return
+      end do
+      if (any(setup%station_u <= setup%start%u0)) then
+        call set_status(status, STATUS_INVALID_INPUT, 'water measurements: every section and segment must '// &
+          'lie downstream of the start u0 = '//format_short(setup%start%u0))
+        return
+      end if
+      setup%section_station = [(findloc(s, d%section_arc_length(i), dim=1), i=1, n)]
+      setup%mid_station = [(findloc(s, (d%segment_start(i) + d%segment_end(i))/2, dim=1), i=1, m)]
+      setup%start_station = [(findloc(s, d%segment_start(i), dim=1), i=1, m)]
+      setup%end_station = [(findloc(s, d%segment_end(i), dim=1), i=1, m)]
+    end associate
+    setup%model%stations = setup%station_u
+    call water_initial_state(setup%model, setup%start, setup%y0, status)
+    if (.not. status%ok()) call prefix_status(status, 'water identification: start')
+  end subroutine new_water_identification
+
+  pure function unique_sorted(x) result(s)
+    real(wp), intent(in) :: x(:)
+    real(wp), allocatable :: s(:)
+    real(wp) :: work(size(x)), t
+    integer :: i, j, n
+    work = x
+    do i = 2, size(work)   ! insertion sort: a few dozen places
+      t = work(i)
+      j = i - 1
+      do while (j >= 1)
+        if (work(j) <= t) exit
+        work(j + 1) = work(j)
+        j = j - 1
+      end do
+      work(j + 1) = t
+    end do
+    n = 0
+    do i = 1, size(work)
+      if (n > 0) then
+        if (work(i) == work(n)) cycle
+      end if
+      n = n + 1
+      work(n) = work(i)
+    end do
+    s = work(1:n)
+  end function unique_sorted
+
+  !> One water run with friction f: the simulated middle at every section and
+  !> the simulated speed on every segment. Reads the setup only (thread-safe).
+  !> A run that does not reach every station is a STATUS_DOMAIN failure.
+  subroutine simulate_measurements(setup, f, section_v, segment_speed, status)
+    type(water_identification_t), intent(in) :: setup
+    real(wp), intent(in) :: f(3)
+    real(wp), intent(out) :: section_v(:), segment_speed(:)
+    type(status_t), intent(out) :: status
+    type(streamline_t), target :: model
+    type(water_series_t) :: series
+    integer :: i, k
+
+    section_v = 0
+    segment_speed = 0
+    model = setup%model
+    model%f1 = f(1)
+    model%f2 = f(2)
+    model%f3 = f(3)
+    call simulate_water(model, setup%y0, setup%ode, setup%duration, setup%duration, series, status, &
+                        edges=.false.)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'water with f = '//format_short(f(1))//', '//format_short(f(2))//', '// &
+                         format_short(f(3)))
+      if (status%code == STATUS_INVALID_INPUT) status%code = STATUS_DOMAIN
+      return
+    end if
+    do k = 1, size(series%stations)
+      if (.not. series%stations(k)%reached) then
+        call set_status(status, STATUS_DOMAIN, 'the water with f = '//format_short(f(1))//', '// &
+          format_short(f(2))//', '//format_short(f(3))//' does not reach u = '// &
+          format_short(setup%station_u(k)))
+        return
+      end if
+    end do
+    do i = 1, size(section_v)
+      associate (st => series%stations(setup%section_station(i)))
+        if (setup%middle_kind == MIDDLE_EDGES) then
+          section_v(i) = st%v_middle
+        else
+          section_v(i) = st%v
+        end if
+      end associate
+    end do
+    do i = 1, size(segment_speed)
+      if (setup%speed_kind == SPEED_MIDPOINT) then
+        segment_speed(i) = series%stations(setup%mid_station(i))%speed
+      else
+        segment_speed(i) = (setup%data%segment_end(i) - setup%data%segment_start(i))/ &
+          (series%stations(setup%end_station(i))%time - series%stations(setup%start_station(i))%time)
+      end if
+    end do
+  end subroutine simulate_measurements
+
+  !> The two groups of (4.34) over the used sections and segments.
+  pure subroutine water_cost_groups(setup, options, section_v, segment_speed, groups)
+    type(water_identification_t), intent(in) :: setup
+    type(water_fit_options_t), intent(in) :: options
+    real(wp), intent(in) :: section_v(:), segment_speed(:)
+    type(cost_group_t), intent(out) :: groups(2)
+    logical :: use_section(size(section_v)), use_segment(size(segment_speed))
+    real(wp), allocatable :: ev(:), ew(:)
+    call used(options, size(section_v), size(segment_speed), use_section, use_segment)
+    ev = pack(section_v - setup%data%section_v, use_section)
+    ew = pack(segment_speed - setup%data%segment_speed, use_segment)
+    groups(1) = new_cost_group('position', 'rad', position_factor(options%weight, size(ev)), ev)
+    groups(2) = new_cost_group('speed', 'm s-1', speed_factor(options%weight, options%k1, size(ew)), ew)
+  end subroutine water_cost_groups
+
+  pure subroutine used(options, n, m, use_section, use_segment)
+    type(water_fit_options_t), intent(in) :: options
+    integer, intent(in) :: n, m
+    logical, intent(out) :: use_section(n), use_segment(m)
+    use_section = .true.
+    use_segment = .true.
+    if (allocated(options%use_section)) use_section = options%use_section
+    if (allocated(options%use_segment)) use_segment = options%use_segment
+  end subroutine used
+
+  subroutine evaluate(self, p, r, status)
+    class(water_fit_problem_t), intent(in) :: self
+    real(wp), intent(in) :: p(:)
+    real(wp), intent(out) :: r(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: sv(size(self%setup%data%section_v)), sw(size(self%setup%data%segment_speed))
+    type(cost_group_t) :: groups(2)
+    integer :: offset
+    r = 0
+    call simulate_measurements(self%setup, p, sv, sw, status)
+    if (.not. status%ok()) return
+    call water_cost_groups(self%setup, self%options, sv, sw, groups)
+    offset = 0
+    call append_residuals(groups(1), r, offset)
+    call append_residuals(groups(2), r, offset)
+  end subroutine evaluate
+
+  subroutine fit_residuals(self, p, r, status)
+    class(water_fit_problem_t), intent(inout) :: self
+    real(wp), intent(in) :: p(:)
+    real(wp), intent(out) :: r(:)
+    type(status_t), intent(inout) :: status
+    call evaluate(self, p, r, status)
+  end subroutine fit_residuals
+
+  !> Independent evaluations in `threads` OpenMP threads (each its own model).
+  subroutine fit_residuals_batch(self, p, r, statuses)
+    class(water_fit_problem_t), intent(inout) :: self
+    real(wp), intent(in) :: p(:, :)
+    real(wp), intent(out) :: r(:, :)
+    type(status_t), intent(inout) :: statuses(:)
+    integer :: k
+    !$omp parallel do num_threads(max(1, self%setup%threads)) schedule(dynamic, 1) &
+    !$omp if (self%setup%threads > 1 .and. size(p, 2) > 1)
+    do k = 1, size(p, 2)
+      call evaluate(self, p(:, k), r(:, k), statuses(k))
+    end do
+    !$omp end parallel do
+  end subroutine fit_residuals_batch
+
+  !> Fits the estimated friction parameters from f (the start; the others stay
+  !> as given) within the bounds. `fit` holds the optimum, its report and the
+  !> simulated measurements there.
+  subroutine fit_water_friction(setup, options, f, fit, status)
+    type(water_identification_t), intent(in) :: setup
+    type(water_fit_options_t), intent(in) :: options
+    real(wp), intent(in) :: f(3)
+    type(water_fit_t), intent(out) :: fit
+    type(status_t), intent(out) :: status
+    type(water_fit_problem_t) :: problem
+    type(least_squares_result_t) :: result
+    real(wp) :: p(3), lower(3), upper(3)
+    logical :: use_section(size(setup%data%section_v)), use_segment(size(setup%data%segment_speed))
+    integer :: m, i, j
+
+    problem%setup = setup
+    problem%options = options
+    call used(options, size(use_section), size(use_segment), use_section, use_segment)
+    m = count(use_section) + count(use_segment)
+    p = f
+    lower = merge(options%lower, f, options%estimate)
+    upper = merge(options%upper, f, options%estimate)
+    call solve_least_squares(problem, m, p, lower, upper, options%solver, result, status)
+    fit%f = p
+    fit%estimated = options%estimate
+    fit%evaluations = result%evaluations
+    fit%rejected = result%rejected_evaluations
+    fit%info = result%info
+    if (.not. status%ok()) then
+      call prefix_status(status, 'water friction identification')
+      return
+    end if
+    fit%at_bound = result%at_bound .and. options%estimate
+    fit%covariance_valid = result%covariance_valid
+    if (result%covariance_valid) then
+      fit%standard_error = result%standard_error
+      do j = 1, 3
+        do i = 1, 3
+          if (fit%standard_error(i) > 0 .and. fit%standard_error(j) > 0) &
+            fit%correlation(i, j) = result%covariance(i, j)/(fit%standard_error(i)*fit%standard_error(j))
+        end do
+      end do
+    end if
+    call report(setup, options, fit, status)
+    fit%evaluations = fit%evaluations + 1
+  end subroutine fit_water_friction
+
+  !> The simulated measurements, errors and figures at fit%f.
+  subroutine report(setup, options, fit, status)
+    type(water_identification_t), intent(in) :: setup
+    type(water_fit_options_t), intent(in) :: options
+    type(water_fit_t), intent(inout) :: fit
+    type(status_t), intent(inout) :: status
+    type(cost_group_t) :: groups(2)
+    allocate (fit%simulated_v(size(setup%data%section_v)), fit%simulated_speed(size(setup%data%segment_speed)))
+    call simulate_measurements(setup, fit%f, fit%simulated_v, fit%simulated_speed, status)
+    if (.not. status%ok()) return
+    fit%error_v = fit%simulated_v - setup%data%section_v
+    fit%error_speed = fit%simulated_speed - setup%data%segment_speed
+    call water_cost_groups(setup, options, fit%simulated_v, fit%simulated_speed, groups)
+    fit%weight = options%weight
+    fit%k1 = options%k1
+    fit%position_part = group_part(groups(1))
+    fit%speed_part = group_part(groups(2))
+    fit%cost = fit%position_part + fit%speed_part
+    fit%rmse_position = group_rmse(groups(1))
+    fit%mae_position = group_mae(groups(1))
+    fit%max_position = group_max_abs(groups(1))
+    fit%rmse_speed = group_rmse(groups(2))
+    fit%mae_speed = group_mae(groups(2))
+    fit%max_speed = group_max_abs(groups(2))
+  end subroutine report
+
+  !> The thesis's start values (C.5): (1) f1 from the energy balance over the
+  !> slide with the last segment's speed, m g dh = f1 w^2 s (4.35), then f1
+  !> fitted to that speed alone (f2 = f3 = 0); (2) f2 fitted to the sections
+  !> `curve_sections` (a curve; thesis: sections 15-20) with f1 held, f3 = 0;
+  !> (3) f3 fitted to all sections with f1, f2 held.
+  subroutine water_start_values(setup, options, curve_sections, values, status)
+    type(water_identification_t), intent(in) :: setup
+    type(water_fit_options_t), intent(in) :: options
+    logical, intent(in) :: curve_sections(:)
+    type(water_start_values_t), intent(out) :: values
+    type(status_t), intent(out) :: status
+    type(water_fit_options_t) :: step
+    type(water_fit_t) :: fit
+    real(wp) :: c0(3, 0:3), c1(3, 0:3), u_min, u_max, s, dh
+    integer :: n, m
+
+    n = size(setup%data%section_v)
+    m = size(setup%data%segment_speed)
+    if (m == 0 .or. n == 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'water start values: need sections and at least one segment')
+      return
+    end if
+    if (size(curve_sections) /= n .or. .not. any(curve_sections)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'water start values: choose at least one curve section')
+      return
+    end if
+    call setup%model%channel%u_range(u_min, u_max)
+    call setup%model%channel%centerline(setup%start%u0, c0, status)
+    if (status%ok()) call setup%model%channel%centerline(u_max, c1, status)
+    if (.not. status%ok()) return
+    s = setup%model%channel%arc_length(u_max) - setup%model%channel%arc_length(setup%start%u0)
+    dh = dot_product(c0(:, 0) - c1(:, 0), setup%model%gravity)/(-norm2(setup%model%gravity))
+    values%f1_energy = setup%model%mass*norm2(setup%model%gravity)*dh/(setup%data%segment_speed(m)**2*s)
+    if (.not. values%f1_energy > 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'water start values: the slide does not descend')
+      return
+    end if
+
+    step = options
+    step%estimate = [.true., .false., .false.]
+    step%use_section = spread(.false., 1, n)
+    step%use_segment = spread(.false., 1, m)
+    step%use_segment(m) = .true.
+    call fit_water_friction(setup, step, [values%f1_energy, 0.0_wp, 0.0_wp], fit, status)
+    values%evaluations = values%evaluations + fit%evaluations
+    if (.not. status%ok()) return
+    values%f1 = fit%f(1)
+
+    step%estimate = [.false., .true., .false.]
+    step%use_section = curve_sections
+    step%use_segment(m) = .false.
+    call fit_water_friction(setup, step, [values%f1, 0.0_wp, 0.0_wp], fit, status)
+    values%evaluations = values%evaluations + fit%evaluations
+    if (.not. status%ok()) return
+    values%f2 = fit%f(2)
+
+    step%estimate = [.false., .false., .true.]
+    step%use_section = spread(.true., 1, n)
+    call fit_water_friction(setup, step, [values%f1, values%f2, 0.0_wp], fit, status)
+    values%evaluations = values%evaluations + fit%evaluations
+    if (.not. status%ok()) return
+    values%f3 = fit%f(3)
+  end subroutine water_start_values
+
+  !> The fit for every weight w (table 4.2), each from the same start f.
+  subroutine water_weight_sweep(setup, options, weights, f, fits, status)
+    type(water_identification_t), intent(in) :: setup
+    type(water_fit_options_t), intent(in) :: options
+    real(wp), intent(in) :: weights(:), f(3)
+    type(water_fit_t), allocatable, intent(out) :: fits(:)
+    type(status_t), intent(out) :: status
+    type(water_fit_options_t) :: each
+    integer :: k
+    allocate (fits(size(weights)))
+    each = options
+    do k = 1, size(weights)
+      each%weight = weights(k)
+      call fit_water_friction(setup, each, f, fits(k), status)
+      if (.not. status%ok()) then
+        call prefix_status(status, 'weight w = '//format_short(weights(k)))
+        return
+      end if
+    end do
+  end subroutine water_weight_sweep
+end module design_water_identification
