@@ -8,9 +8,11 @@ program slidesim
   use base_log, only: log_error, set_verbosity
   use scenarios_registry, only: run_input_file, run_default, print_scenarios, slidesim_version, &
                                 default_input
+  use io_run_config, only: run_config_t
   implicit none (type, external)
 
   type(status_t) :: status
+  type(run_config_t) :: cli
   character(len=1024) :: arg
   character(len=:), allocatable :: input_path, output_path
   integer :: i, n
@@ -44,10 +46,12 @@ program slidesim
     end select
   end do
 
+  cli%output = ''
+  if (allocated(output_path)) cli%output = output_path
   if (allocated(input_path)) then
-    call run_input_file(input_path, status, output_path)
+    call run_input_file(input_path, status, cli)
   else
-    call run_default(status, output_path)
+    call run_default(status, cli)
   end if
 
   if (status%code /= STATUS_OK) then

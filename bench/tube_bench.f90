@@ -15,7 +15,7 @@ program tube_bench
   use geometry_curve, only: helix_curve_t, constant_curve_t
   use geometry_cross_section, only: circle_section_t
   use geometry_tube, only: tube_surface_t, new_tube_surface
-  use io_input, only: input_text_t, load_input_file, input_from_text
+  use io_input, only: input_text_t, load_input_file
   use io_geometry_config, only: read_geometry_config
   use bench_timing, only: median
   implicit none (type, external)
@@ -25,7 +25,6 @@ program tube_bench
   type(tube_surface_t) :: helix_tube
   type(input_text_t) :: input, exact_input
   type(status_t) :: status
-  integer :: i
 
   call load_input_file('inputs/demo_slide/slide.nml', input, status)
   if (status%ok()) call read_geometry_config(input, slide, status)
@@ -35,11 +34,8 @@ program tube_bench
   end if
   ! the same slide with the exact element centerline
   exact_input = input
-  do i = 1, size(exact_input%lines)
-    if (index(exact_input%lines(i), 'transition_length') > 0) &
-      exact_input%lines(i) = trim(exact_input%lines(i)) // ', centerline_kind = ''exact'''
-  end do
-  call read_geometry_config(exact_input, exact, status)
+  call exact_input%override('slide_elements%centerline_kind=''exact''', status)
+  if (status%ok()) call read_geometry_config(exact_input, exact, status)
   helix_tube = new_tube_surface(helix_curve_t(radius=4.0_wp, pitch=-0.4_wp, u_min=0.0_wp, u_max=two_pi), &
                                 constant_curve_t(), circle_section_t(radius=0.5_wp), status)
 

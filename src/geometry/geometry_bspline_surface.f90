@@ -9,14 +9,13 @@
 !> or do not start with a number (a header) are skipped.
 module geometry_bspline_surface
   use base_kinds, only: wp
-  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_IO
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_t, surface_point_t
   use numerics_spline_surface, only: spline_surface_t, spline_surface_eval_t, fit_scattered, fit_grid, &
                                      fit_parametric
   implicit none (type, external)
   private
-  public :: bspline_surface_t, bspline_scattered, bspline_grid, bspline_parametric, bspline_from_csv
-  public :: read_csv_columns
+  public :: bspline_surface_t, bspline_scattered, bspline_grid, bspline_parametric, bspline_from_table
 
   type, extends(surface_t) :: bspline_surface_t
     type(spline_surface_t) :: spline
@@ -133,73 +132,30 @@ contains
     end if
   end function bspline_describe
 
-  !> Reads the numeric rows of a CSV file with `ncol` columns.
-  subroutine read_csv_columns(path, ncol, data, status)
-    character(len=*), intent(in) :: path
-    integer, intent(in) :: ncol
-    real(wp), allocatable, intent(out) :: data(:, :)
-    type(status_t), intent(inout) :: status
-    integer :: unit, ios, n, pass, line_no
-    character(len=1024) :: line
-    character(len=256) :: msg
-    real(wp) :: row(ncol)
-    open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      call set_status(status, STATUS_IO, 'cannot open CSV file "' // path // '": ' // trim(msg))
-      return
-    end if
-    do pass = 1, 2
-      n = 0
-      line_no = 0
-      rewind (unit)
-      do
-        read (unit, '(a)', iostat=ios) line
-        if (ios /= 0) exit
-        line_no = line_no + 1
-        line = adjustl(line)
-        if (len_trim(line) == 0) cycle
-        if (index('+-.0123456789', line(1:1)) == 0) cycle      ! comment or header
-        read (line, *, iostat=ios) row
-        if (ios /= 0) then
-          write (msg, '(a, i0, a, i0, a)') 'line ', line_no, ': expected ', ncol, ' numbers separated by commas'
-          call set_status(status, STATUS_INVALID_INPUT, 'CSV file "' // path // '": ' // trim(msg))
-          close (unit)
-          return
-        end if
-        n = n + 1
-        if (pass == 2) data(:, n) = row
-      end do
-      if (pass == 1) allocate (data(ncol, n))
-    end do
-    close (unit)
-  end subroutine read_csv_columns
-
-  !> A B-spline surface from a CSV file: layout 'scattered' or 'grid' (x, y, z)
-  !> or 'parametric' (u, v, x, y, z). degree applies to scattered and grid
+  !> A B-spline surface from a table of points d(:, k) (a CSV file read and
+  !> checked by io_csv): layout 'scattered' or 'grid' (x, y, z) or
+  !> 'parametric' (u, v, x, y, z). degree applies to scattered and grid
   !> (parsur is bicubic).
-  subroutine bspline_from_csv(path, layout, smoothing, degree, periodic, surface, status)
-    character(len=*), intent(in) :: path, layout
+  subroutine bspline_from_table(layout, d, smoothing, degree, periodic, surface, status)
+    character(len=*), intent(in) :: layout
+    real(wp), intent(in) :: d(:, :)
     real(wp), intent(in) :: smoothing
     integer, intent(in) :: degree
     logical, intent(in) :: periodic(2)
     type(bspline_surface_t), intent(out) :: surface
     type(status_t), intent(inout) :: status
-    real(wp), allocatable :: d(:, :), xs(:), ys(:), z(:, :), pts(:, :, :)
+    real(wp), allocatable :: xs(:), ys(:), z(:, :), pts(:, :, :)
     integer :: k, i, j
     logical, allocatable :: filled(:, :)
     type(status_t) :: built
     select case (layout)
     case ('scattered')
-      call read_csv_columns(path, 3, d, status)
-      if (.not. status%ok()) return
       surface = bspline_scattered(d(1, :), d(2, :), d(3, :), smoothing, degree, degree, built)
     case ('grid', 'parametric')
-      call read_csv_columns(path, merge(3, 5, layout == 'grid'), d, status)
-      if (.not. status%ok()) return
       xs = unique_sorted(d(1, :))
       ys = unique_sorted(d(2, :))
       if (size(xs)*size(ys) /= size(d, 2)) then
-        call set_status(status, STATUS_INVALID_INPUT, 'CSV file "' // path // '": the points do not ' // &
+        call set_status(status, STATUS_INVALID_INPUT, 'the points do not ' // &
                         'fill a rectangular grid (number of points /= distinct first values x distinct second values)')
         return
       end if
@@ -216,7 +172,7 @@ contains
         end if
       end do
       if (.not. all(filled)) then
-        call set_status(status, STATUS_INVALID_INPUT, 'CSV file "' // path // '": grid points repeated or missing')
+        call set_status(status, STATUS_INVALID_INPUT, 'grid points repeated or missing')
         return
       end if
       if (layout == 'grid') then
@@ -228,11 +184,8 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'B-spline surface: layout must be scattered, grid or parametric')
       return
     end select
-    if (.not. built%ok()) then
-      status = built
-      call prefix_status(status, 'CSV file "' // path // '"')
-    end if
-  end subroutine bspline_from_csv
+    if (.not. built%ok()) status = built
+  end subroutine bspline_from_table
 
   pure function unique_sorted(x) result(u)
     real(wp), intent(in) :: x(:)

@@ -1,44 +1,91 @@
-!> The text of one namelist input (a file, or the built-in default), read once and
-!> kept so that every group is read from the same lines and the text can be stored
-!> in the result file; plus the checks every group reader uses, each producing a
-!> message that names the file, the group, the variable, the value and what is
-!> allowed.
+!> The text of one namelist input (a file, standard input, or a built-in input),
+!> read once, parsed into groups (io_namelist) and kept so that the text can be
+!> stored in the result file; command-line overrides (--set group%var=value);
+!> and the reader every input group is read through.
+!>
+!> A group is read by opening it with the names of its variables (any other
+!> name is refused) and asking for each variable with its type, size and
+!> range: a real in [low, high] (or > low), a whole number in [low, high], a
+!> logical, a quoted text of at most len characters (optionally one of a list
+!> of words). A variable not given keeps the caller's default. Every refusal
+!> names the place (file:line, or the --set argument), the group, the
+!> variable, the value as written and what is allowed, before any value is
+!> used.
 module io_input
+  use, intrinsic :: iso_fortran_env, only: input_unit, iostat_end, iostat_eor
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use base_kinds, only: wp
+  use base_kinds, only: wp, int64
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_IO
   use base_text, only: format_real, format_vector, lower, format_integer
+  use io_namelist, only: nml_group_t, nml_item_t, nml_value_t, parse_namelist, parse_assignment, &
+    read_real_token, read_integer_token, read_logical_token, shown_value, VALUE_TEXT, NUMBER_OK
   use io_builtin_inputs, only: builtin_input, builtin_input_names
   implicit none (type, external)
   private
-  public :: input_text_t, load_input_file, input_from_text, line_length
-  public :: check_known_groups, namelist_read_error, group_present, lower
-  public :: check_finite, check_positive, check_nonnegative, check_range, check_choice, &
-            check_finite_vector, format_real, format_vector, invalid
+  public :: input_text_t, load_input_file, input_from_text, stdin_name, read_text_file
+  public :: check_known_groups, group_present, lower, format_real, format_vector, invalid
+  public :: check_finite, check_positive, check_nonnegative, check_range, check_choice
+  public :: group_reader_t, open_group, bounds_t, in_range, above, mark_input_failure
 
-  integer, parameter :: line_length = 512
   character(len=*), parameter :: builtin_prefix = 'builtin:'
+  character(len=*), parameter :: stdin_name = '<stdin>'   !< the name of an input read from standard input
+  integer, parameter :: max_input_bytes = 64*1024*1024     !< larger is not a hand-written input
 
   type :: input_text_t
-    character(len=:), allocatable :: name        !< file path, or 'builtin:<name>'
+    character(len=:), allocatable :: name        !< file path, '<stdin>', or 'builtin:<name>'
     character(len=:), allocatable :: folder      !< the file's folder ('' for text), ends in '/'
-    character(len=line_length), allocatable :: lines(:)
+    character(len=:), allocatable :: raw         !< the text as read
+    character(len=:), allocatable :: overrides   !< the --set arguments applied, one per line
+    type(nml_group_t), allocatable :: groups(:)
   contains
     procedure :: text => input_text
     procedure :: resolve_path => input_resolve_path
+    procedure :: override => input_override
   end type input_text_t
+
+  !> What a real variable may be: low <= x <= high, or low < x <= high.
+  type :: bounds_t
+    real(wp) :: low = -huge(1.0_wp), high = huge(1.0_wp)
+    logical :: open_low = .false.
+    character(len=:), allocatable :: unit
+  contains
+    procedure :: allows => bounds_allow
+    procedure :: text => bounds_text
+  end type bounds_t
+
+  !> One group of an input, opened for reading with the names it may hold.
+  type :: group_reader_t
+    character(len=:), allocatable :: source      !< the input's name
+    character(len=:), allocatable :: group
+    integer :: line = 0                          !< where the group opens (0: not in the text)
+    logical :: present = .false.
+    type(nml_item_t), allocatable :: items(:)
+  contains
+    procedure :: has => reader_has
+    procedure :: where => reader_where
+    procedure :: written => reader_written
+    procedure :: invalid => reader_invalid
+    procedure :: refuse_given => reader_refuse_given
+    procedure, private :: get_real, get_real_vector, get_integer, get_logical, get_text
+    generic :: get => get_real, get_real_vector, get_integer, get_logical, get_text
+    procedure :: get_list => get_real_list
+    procedure, private :: parts_real, parts_text, parts_logical
+    generic :: get_parts => parts_real, parts_text, parts_logical
+    procedure :: get_columns => get_real_columns
+  end type group_reader_t
 
 contains
 
-  !> Reads an input file, or a built-in input named 'builtin:<name>' (the
-  !> files of inputs/ compiled into the program; see io_builtin_inputs).
+  ! ---------------------------------------------------------------- loading
+
+  !> Reads an input file, standard input ('-'), or a built-in input named
+  !> 'builtin:<name>' (the files of inputs/ compiled into the program; see
+  !> io_builtin_inputs), and parses it. A file that cannot be read is
+  !> STATUS_IO; a text that is not a valid namelist input is STATUS_INVALID_INPUT.
   subroutine load_input_file(path, input, status)
     character(len=*), intent(in) :: path
     type(input_text_t), intent(out) :: input
     type(status_t), intent(inout) :: status
-    integer :: unit, ios, n
-    character(len=line_length) :: line
-    character(len=256) :: msg
     character(len=:), allocatable :: text
     logical :: exists
 
@@ -49,68 +96,162 @@ contains
                         builtin_input_names())
         return
       end if
-      call input_from_text(path, text, input)
+      call input_from_text(path, text, input, status)
       return
     end if
-    input%name = path
+    if (path == '-') then
+      call read_unit(input_unit, stdin_name, text, status)
+      if (.not. status%ok()) return
+      call input_from_text(stdin_name, text, input, status)
+      return
+    end if
+    call read_text_file(path, 'input file', text, status)
+    if (.not. status%ok()) return
+    call input_from_text(path, text, input, status)
     input%folder = path(:index(path, '/', back=.true.))
-    inquire (file=path, exist=exists)
-    if (.not. exists) then
-      call set_status(status, STATUS_IO, 'input file "'//path//'" does not exist')
-      return
-    end if
-    open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      call set_status(status, STATUS_IO, 'cannot open input file "'//path//'": '//trim(msg))
-      return
-    end if
-    n = 0
-    do
-      read (unit, '(a)', iostat=ios, iomsg=msg) line
-      if (ios /= 0) exit
-      n = n + 1
-    end do
-    if (ios > 0) then
-      close (unit)
-      call set_status(status, STATUS_IO, 'cannot read input file "'//path//'" (is it a folder?): '//trim(msg))
-      return
-    end if
-    if (n == 0) then
-      close (unit)
-      call set_status(status, STATUS_IO, 'input file "'//path//'" is empty')
-      return
-    end if
-    allocate (input%lines(n))
-    rewind (unit)
-    do n = 1, size(input%lines)
-      read (unit, '(a)') input%lines(n)
-    end do
-    close (unit)
   end subroutine load_input_file
 
-  !> Splits `text` at new-line characters.
-  pure subroutine input_from_text(name, text, input)
-    character(len=*), intent(in) :: name, text
-    type(input_text_t), intent(out) :: input
-    integer :: i, start, n
+  !> The whole text of a file, read sequentially (pipes and /dev/stdin work:
+  !> nothing is rewound or sized); `what` names it in messages ('input file').
+  subroutine read_text_file(path, what, text, status)
+    character(len=*), intent(in) :: path, what
+    character(len=:), allocatable, intent(out) :: text
+    type(status_t), intent(inout) :: status
+    integer :: unit, ios
+    character(len=256) :: msg
+    logical :: exists
 
-    input%name = name
-    input%folder = ''
-    n = count([(text(i:i) == new_line('a'), i=1, len(text))]) + 1
-    allocate (input%lines(n))
-    start = 1
+    text = ''
+    inquire (file=path, exist=exists)
+    if (.not. exists) then
+      call set_status(status, STATUS_IO, what//' "'//path//'" does not exist')
+      return
+    end if
+    inquire (file=path//'/.', exist=exists)
+    if (exists) then
+      call set_status(status, STATUS_IO, what//' "'//path//'" is a folder, not a file')
+      return
+    end if
+    open (newunit=unit, file=path, status='old', action='read', form='formatted', access='sequential', &
+          iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      call set_status(status, STATUS_IO, 'cannot open '//what//' "'//path//'": '//trim(msg))
+      return
+    end if
+    call read_unit(unit, path, text, status)
+    close (unit)
+  end subroutine read_text_file
+
+  !> Reads lines of any length from an open unit until its end.
+  subroutine read_unit(unit, name, text, status)
+    integer, intent(in) :: unit
+    character(len=*), intent(in) :: name
+    character(len=:), allocatable, intent(out) :: text
+    type(status_t), intent(inout) :: status
+    character(len=4096) :: chunk
+    character(len=:), allocatable :: buffer
+    integer :: ios, got, n
+    character(len=256) :: msg
+
+    allocate (character(len=65536) :: buffer)
     n = 0
-    do i = 1, len(text) + 1
-      if (i > len(text)) then
-        n = n + 1
-        input%lines(n) = text(start:)
-      else if (text(i:i) == new_line('a')) then
-        n = n + 1
-        input%lines(n) = text(start:i - 1)
-        start = i + 1
+    do
+      read (unit, '(a)', advance='no', size=got, iostat=ios, iomsg=msg) chunk
+      if (ios /= 0 .and. ios /= iostat_eor .and. ios /= iostat_end) then
+        call set_status(status, STATUS_IO, 'cannot read input "'//name//'": '//trim(msg))
+        return
+      end if
+      if (ios == iostat_end) exit
+      call put(chunk(:got))
+      if (ios == iostat_eor) call put(new_line('a'))
+      if (n > max_input_bytes) then
+        call set_status(status, STATUS_INVALID_INPUT, 'input "'//name//'" is longer than '// &
+                        format_integer(max_input_bytes/1024/1024)//' MB: that is not a namelist input')
+        return
       end if
     end do
+    text = buffer(:n)
+
+  contains
+
+    subroutine put(piece)
+      character(len=*), intent(in) :: piece
+      character(len=:), allocatable :: longer
+      if (n + len(piece) > len(buffer)) then
+        allocate (character(len=2*len(buffer) + len(piece)) :: longer)
+        longer(:n) = buffer(:n)
+        call move_alloc(longer, buffer)
+      end if
+      buffer(n + 1:n + len(piece)) = piece
+      n = n + len(piece)
+    end subroutine put
+  end subroutine read_unit
+
+  !> An input from its text; `name` stands for it in messages.
+  subroutine input_from_text(name, text, input, status)
+    character(len=*), intent(in) :: name, text
+    type(input_text_t), intent(out) :: input
+    type(status_t), intent(inout) :: status
+    input%name = name
+    input%folder = ''
+    input%raw = text
+    input%overrides = ''
+    call parse_namelist(name, text, input%groups, status)
   end subroutine input_from_text
+
+  !> Applies one command-line override `group%variable=values` (or
+  !> `group%variable(i)=values`): it replaces what the text assigns to that
+  !> variable (or element), or adds it; the group is added if absent. Whether
+  !> the group and variable exist is checked where the group is read.
+  subroutine input_override(self, spec, status)
+    class(input_text_t), intent(inout) :: self
+    character(len=*), intent(in) :: spec
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: origin, group
+    type(nml_item_t) :: item
+    type(nml_group_t), allocatable :: longer(:)
+    type(nml_item_t), allocatable :: kept(:)
+    integer :: percent, g, i, n
+
+    origin = '--set '//spec
+    percent = index(spec, '%')
+    if (percent < 2) then
+      call set_status(status, STATUS_INVALID_INPUT, origin//': write --set group%variable=value, '// &
+                      'e.g. --set solver%rtol=1e-8')
+      return
+    end if
+    group = lower(trim(adjustl(spec(:percent - 1))))
+    if (verify(group, 'abcdefghijklmnopqrstuvwxyz0123456789_') /= 0) then
+      call set_status(status, STATUS_INVALID_INPUT, origin//': "'//group//'" is not a group name')
+      return
+    end if
+    call parse_assignment(origin, spec(percent + 1:), item, status)
+    if (.not. status%ok()) return
+    g = group_index(self, group)
+    if (g == 0) then
+      allocate (longer(size(self%groups) + 1))
+      longer(:size(self%groups)) = self%groups
+      longer(size(longer))%name = group
+      longer(size(longer))%line = 0
+      allocate (longer(size(longer))%items(0))
+      call move_alloc(longer, self%groups)
+      g = size(self%groups)
+    end if
+    associate (items => self%groups(g)%items)
+      ! a whole assignment replaces every earlier one of the variable; an element one the same element
+      allocate (kept(size(items) + 1))
+      n = 0
+      do i = 1, size(items)
+        if (items(i)%name == item%name .and. (item%rank == 0 .or. items(i)%subscript == item%subscript)) cycle
+        n = n + 1
+        kept(n) = items(i)
+      end do
+    end associate
+    n = n + 1
+    kept(n) = item
+    self%groups(g)%items = kept(:n)
+    self%overrides = self%overrides//'--set '//spec//new_line('a')
+  end subroutine input_override
 
   !> A path named inside this input: relative paths are taken from the input
   !> file's folder (from the working folder for inputs given as text); absolute
@@ -125,43 +266,58 @@ contains
     if (allocated(self%folder)) resolved = self%folder//resolved
   end function input_resolve_path
 
+  !> The text as read, followed by the command-line overrides (as comments).
   pure function input_text(self) result(text)
     class(input_text_t), intent(in) :: self
     character(len=:), allocatable :: text
-    integer :: i
-    text = ''
-    do i = 1, size(self%lines)
-      text = text//trim(self%lines(i))//new_line('a')
-    end do
+    text = self%raw
+    if (len(text) > 0) then
+      if (text(len(text):) /= new_line('a')) text = text//new_line('a')
+    end if
+    if (len(self%overrides) > 0) text = text//'! command-line overrides, applied to the groups above:'// &
+      new_line('a')//prefixed_lines('! ', self%overrides)
   end function input_text
 
-  !> Group names ('&name') that open a namelist group in the input, lower case.
+  pure function prefixed_lines(prefix, lines) result(text)
+    character(len=*), intent(in) :: prefix, lines
+    character(len=:), allocatable :: text
+    integer :: start, i
+    text = ''
+    start = 1
+    do i = 1, len(lines)
+      if (lines(i:i) == new_line('a')) then
+        text = text//prefix//lines(start:i)
+        start = i + 1
+      end if
+    end do
+  end function prefixed_lines
+
+  ! ----------------------------------------------------------------- groups
+
+  pure integer function group_index(input, group) result(g)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group
+    do g = 1, size(input%groups)
+      if (input%groups(g)%name == lower(group)) return
+    end do
+    g = 0
+  end function group_index
+
+  !> Is `word` (lower case) one of `list` (compared in lower case)?
+  pure logical function in_list(word, list)
+    character(len=*), intent(in) :: word, list(:)
+    integer :: j
+    in_list = .false.
+    do j = 1, size(list)
+      if (lower(trim(adjustl(list(j)))) == word) in_list = .true.
+    end do
+  end function in_list
+
   pure logical function group_present(input, group)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: group
-    integer :: i
-    character(len=line_length) :: line
-    group_present = .false.
-    do i = 1, size(input%lines)
-      line = adjustl(lower(input%lines(i)))
-      if (line(1:1) /= '&') cycle
-      if (first_word(line(2:)) == lower(group)) group_present = .true.
-    end do
+    group_present = group_index(input, group) > 0
   end function group_present
-
-  !> How many groups named `group` the input opens.
-  pure integer function group_count(input, group)
-    type(input_text_t), intent(in) :: input
-    character(len=*), intent(in) :: group
-    integer :: i
-    character(len=line_length) :: line
-    group_count = 0
-    do i = 1, size(input%lines)
-      line = adjustl(lower(input%lines(i)))
-      if (line(1:1) /= '&') cycle
-      if (first_word(line(2:)) == lower(group)) group_count = group_count + 1
-    end do
-  end function group_count
 
   !> Every group in the input must be one the scenario reads, and appear once.
   subroutine check_known_groups(input, allowed, status)
@@ -169,75 +325,680 @@ contains
     character(len=*), intent(in) :: allowed(:)
     type(status_t), intent(inout) :: status
     integer :: i, j
-    character(len=line_length) :: line
-    character(len=:), allocatable :: group, list
-    logical :: known
+    character(len=:), allocatable :: list
 
-    do i = 1, size(input%lines)
-      line = adjustl(lower(input%lines(i)))
-      if (line(1:1) /= '&') cycle
-      group = first_word(line(2:))
-      if (group == '' .or. group == 'end') cycle
-      if (group_count(input, group) > 1) then
-        call set_status(status, STATUS_INVALID_INPUT, input%name//': line '//format_integer(i)//': &'//group// &
-                        ' appears more than once; give each group once')
-        return
-      end if
-      known = .false.
-      do j = 1, size(allowed)
-        if (group == trim(allowed(j))) known = .true.
-      end do
-      if (.not. known) then
+    if (.not. status%ok()) return
+    do i = 1, size(input%groups)
+      associate (g => input%groups(i))
+        do j = 1, i - 1
+          if (input%groups(j)%name == g%name) then
+            call set_status(status, STATUS_INVALID_INPUT, group_where(input, g)//': &'//g%name// &
+                            ' appears more than once (also at line '//format_integer(input%groups(j)%line)// &
+                            '); give each group once')
+            return
+          end if
+        end do
+        if (in_list(g%name, allowed)) cycle
         list = ''
         do j = 1, size(allowed)
           list = list//' &'//trim(allowed(j))
         end do
-        call set_status(status, STATUS_INVALID_INPUT, input%name//': line '//format_integer(i)// &
-                        ': unknown namelist group &'//group//'; this scenario reads'//list)
+        call set_status(status, STATUS_INVALID_INPUT, group_where(input, g)//': unknown namelist group &'// &
+                        g%name//'; this scenario reads'//list)
         return
-      end if
+      end associate
     end do
   end subroutine check_known_groups
 
-  !> Turns a failed namelist read into a message naming the file, the group and,
-  !> for an unknown or malformed variable, the variable and the allowed ones.
-  subroutine namelist_read_error(input, group, iomsg, allowed, status)
+  !> 'file:line' of a group, or the --set argument that created it.
+  pure function group_where(input, g) result(where)
     type(input_text_t), intent(in) :: input
-    character(len=*), intent(in) :: group, iomsg
-    character(len=*), intent(in) :: allowed(:)
-    type(status_t), intent(inout) :: status
-    character(len=:), allocatable :: list, detail
-    integer :: j, k
-
-    list = ''
-    do j = 1, size(allowed)
-      list = list//' '//trim(allowed(j))
-    end do
-    k = index(iomsg, 'Cannot match namelist object name')
-    if (k > 0) then
-      detail = trim(adjustl(iomsg(k + 33:)))
-      if (verify(detail(1:1), 'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_') /= 0) then
-        ! Not a name: a value the variable's type cannot take (a text for a number,
-        ! too many values, a missing comma), which the reader then took for a name.
-        detail = 'cannot read a value near "'//detail//'" (check its type: a number, a quoted text, '// &
-                 'the number of values); allowed variables:'//list
-      else
-        detail = 'unknown variable "'//detail//'"; allowed:'//list
-      end if
+    type(nml_group_t), intent(in) :: g
+    character(len=:), allocatable :: where
+    if (g%line > 0) then
+      where = input%name//':'//format_integer(g%line)
+    else if (size(g%items) > 0) then
+      where = g%items(1)%origin
     else
-      detail = trim(iomsg)//' (check the spelling, the type and the number of values); allowed:'//list
+      where = input%name
     end if
-    call set_status(status, STATUS_INVALID_INPUT, input%name//': &'//group//': '//detail)
-  end subroutine namelist_read_error
+  end function group_where
 
-  !> The common message of every failed check.
+  ! ------------------------------------------------------------- the reader
+
+  !> Opens `group` of `input` for reading; every variable it assigns must be
+  !> one of `names`. An absent group reads as empty (every default kept).
+  subroutine open_group(input, group, names, reader, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group
+    character(len=*), intent(in) :: names(:)
+    type(group_reader_t), intent(out) :: reader
+    type(status_t), intent(inout) :: status
+    integer :: g, i, j
+    character(len=:), allocatable :: list
+
+    reader%source = input%name
+    reader%group = lower(group)
+    g = group_index(input, group)
+    if (g == 0) then
+      allocate (reader%items(0))
+      return
+    end if
+    reader%present = .true.
+    reader%line = input%groups(g)%line
+    reader%items = input%groups(g)%items
+    if (.not. status%ok()) return
+    do i = 1, size(reader%items)
+      if (in_list(reader%items(i)%name, names)) cycle
+      list = ''
+      do j = 1, size(names)
+        list = list//' '//trim(names(j))
+      end do
+      call set_status(status, STATUS_INVALID_INPUT, item_where(reader, reader%items(i), reader%items(i)%line)// &
+                      ': &'//reader%group//': unknown variable "'//reader%items(i)%name//'"; allowed:'//list)
+      return
+    end do
+  end subroutine open_group
+
+  pure logical function reader_has(self, name)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    integer :: i
+    reader_has = .false.
+    do i = 1, size(self%items)
+      if (self%items(i)%name == lower(name)) reader_has = .true.
+    end do
+  end function reader_has
+
+  !> 'file:line' of the first assignment of `name` (the first name in a list
+  !> such as 'u0, v0' or 'kind(2)'), or of the group, or the file.
+  pure function reader_where(self, name) result(where)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    character(len=:), allocatable :: where
+    character(len=:), allocatable :: first
+    integer :: i, cut
+    first = lower(trim(adjustl(name)))
+    cut = scan(first, '(, ')
+    if (cut > 0) first = first(:cut - 1)
+    do i = 1, size(self%items)
+      if (self%items(i)%name == first) then
+        where = item_where(self, self%items(i), self%items(i)%line)
+        return
+      end if
+    end do
+    if (self%line > 0) then
+      where = self%source//':'//format_integer(self%line)
+    else
+      where = self%source
+    end if
+  end function reader_where
+
+  !> The values of `name` as written (for messages), '' if not given.
+  pure function reader_written(self, name) result(text)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ''
+    do i = 1, size(self%items)
+      if (self%items(i)%name == lower(name)) then
+        text = shown_values(self%items(i))
+        return
+      end if
+    end do
+  end function reader_written
+
+  pure function item_where(self, item, line) result(where)
+    type(group_reader_t), intent(in) :: self
+    type(nml_item_t), intent(in) :: item
+    integer, intent(in) :: line
+    character(len=:), allocatable :: where
+    if (len(item%origin) > 0) then
+      where = item%origin
+    else
+      where = self%source//':'//format_integer(line)
+    end if
+  end function item_where
+
+  !> The common message of every refused value of this group.
+  subroutine reader_invalid(self, variable, value, allowed, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: variable, value, allowed
+    type(status_t), intent(inout) :: status
+    call set_status(status, STATUS_INVALID_INPUT, self%where(variable)//': &'//self%group//': '//variable// &
+                    ' = '//value//' is not allowed: '//allowed)
+  end subroutine reader_invalid
+
+  !> Refuses the first of `names` that the group gives: it is not used here,
+  !> for the reason `why` (e.g. "a helix does not use it").
+  subroutine reader_refuse_given(self, names, why, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: names(:), why
+    type(status_t), intent(inout) :: status
+    integer :: k
+    if (.not. status%ok()) return
+    do k = 1, size(names)
+      if (self%has(trim(names(k)))) then
+        call self%invalid(trim(names(k)), self%written(trim(names(k))), why, status)
+        return
+      end if
+    end do
+  end subroutine reader_refuse_given
+
+  !> The same message for a check made outside a reader (names the line of
+  !> the variable if the input assigns it).
   subroutine invalid(input, group, variable, value, allowed, status)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: group, variable, value, allowed
     type(status_t), intent(inout) :: status
-    call set_status(status, STATUS_INVALID_INPUT, input%name//': &'//group//': '//variable// &
-                    ' = '//value//' is not allowed: '//allowed)
+    type(group_reader_t) :: reader
+    integer :: g
+    reader%source = input%name
+    reader%group = lower(group)
+    g = group_index(input, group)
+    if (g > 0) then
+      reader%line = input%groups(g)%line
+      reader%items = input%groups(g)%items
+    else
+      allocate (reader%items(0))
+    end if
+    call reader%invalid(variable, value, allowed, status)
   end subroutine invalid
+
+  !> The values assigned to `name`, a variable of extents `dims` (none: a
+  !> scalar): the flat (column-major) index of every element given, its value
+  !> and the item it came from. A whole assignment fills from the first
+  !> element (every element if `exact`); a subscripted one exactly its
+  !> section. An element assigned twice in the text is refused; an override
+  !> (--set) replaces it. `limit` names the extent in messages.
+  subroutine gather(self, name, dims, exact, limit, positions, values, from, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name, limit
+    integer, intent(in) :: dims(:)
+    logical, intent(in) :: exact
+    integer, allocatable, intent(out) :: positions(:), from(:)
+    type(nml_value_t), allocatable, intent(out) :: values(:)
+    type(status_t), intent(inout) :: status
+    integer :: total, i, k, d, p, lo(2), hi(2), section, r
+    integer(int64) :: count
+    integer, allocatable :: owner(:), flat(:)
+    type(nml_value_t), allocatable :: slot(:)
+    character(len=:), allocatable :: here
+
+    allocate (positions(0), from(0), values(0))
+    if (.not. status%ok()) return
+    total = product(dims)
+    allocate (owner(total), slot(total))
+    owner = 0
+    do i = 1, size(self%items)
+      associate (item => self%items(i))
+        if (item%name /= lower(name)) cycle
+        here = item_where(self, item, item%line)//': &'//self%group//': '//item%name//item%subscript
+        count = sum(item%values%repeat)
+        if (item%rank == 0) then
+          if (count > total) then
+            if (size(dims) == 0) then
+              call set_status(status, STATUS_INVALID_INPUT, here//' = '//shown_values(item)// &
+                              ' is not allowed: a single value is expected, '//format_integer(int(min(count, 999999999_int64)))// &
+                              ' are given')
+            else
+              call set_status(status, STATUS_INVALID_INPUT, here//' = '//shown_values(item)// &
+                              ' is not allowed: '//format_integer(int(min(count, 999999999_int64)))// &
+                              ' values are more than '//limit)
+            end if
+            return
+          end if
+          if (exact .and. count /= total) then
+            call set_status(status, STATUS_INVALID_INPUT, here//' = '//shown_values(item)// &
+                            ' is not allowed: needs exactly '//format_integer(total)//' values, '// &
+                            format_integer(int(count))//' given')
+            return
+          end if
+          flat = [(k, k=1, int(count))]
+        else
+          if (size(dims) == 0) then
+            call set_status(status, STATUS_INVALID_INPUT, here//': '//item%name// &
+                            ' is a single value, not a list: write '//item%name//' = value')
+            return
+          end if
+          if (item%rank /= size(dims)) then
+            call set_status(status, STATUS_INVALID_INPUT, here//': '//item%name//' has '// &
+                            format_integer(size(dims))//' subscript(s), not '//format_integer(item%rank))
+            return
+          end if
+          lo = 1; hi = 1
+          do d = 1, item%rank
+            if (item%whole(d)) then
+              lo(d) = 1; hi(d) = dims(d)
+            else
+              lo(d) = item%low(d); hi(d) = item%high(d)
+            end if
+            if (lo(d) < 1 .or. hi(d) > dims(d) .or. lo(d) > hi(d)) then
+              call set_status(status, STATUS_INVALID_INPUT, here//': the subscript is not allowed: '// &
+                              'index '//format_integer(d)//' must lie in [1, '//format_integer(dims(d))//']')
+              if (len(limit) > 0) status%message = status%message//' ('//limit//')'
+              return
+            end if
+          end do
+          section = (hi(1) - lo(1) + 1)*(hi(2) - lo(2) + 1)
+          if (count /= section) then
+            call set_status(status, STATUS_INVALID_INPUT, here//' = '//shown_values(item)// &
+                            ' is not allowed: the section holds '//format_integer(section)//' values, '// &
+                            format_integer(int(min(count, 999999999_int64)))//' given')
+            return
+          end if
+          if (item%rank == 1) then
+            flat = [(k, k=lo(1), hi(1))]
+          else
+            flat = [((lo(1) + k - 1 + (d - 1)*dims(1), k=1, hi(1) - lo(1) + 1), d=lo(2), hi(2))]
+          end if
+        end if
+        p = 0
+        do k = 1, size(item%values)
+          do r = 1, int(item%values(k)%repeat)
+            p = p + 1
+            if (owner(flat(p)) /= 0 .and. len(item%origin) == 0) then
+              call set_status(status, STATUS_INVALID_INPUT, item_where(self, item, item%values(k)%line)// &
+                              ': &'//self%group//': '//element_name(name, dims, flat(p))// &
+                              ' is given twice (also at line '// &
+                              format_integer(self%items(owner(flat(p)))%line)//'); give it once')
+              return
+            end if
+            owner(flat(p)) = i
+            slot(flat(p)) = item%values(k)
+          end do
+        end do
+      end associate
+    end do
+    positions = pack([(k, k=1, total)], owner > 0)
+    from = owner(positions)
+    values = slot(positions)
+  end subroutine gather
+
+  pure function shown_values(item) result(text)
+    type(nml_item_t), intent(in) :: item
+    character(len=:), allocatable :: text
+    integer :: k
+    text = ''
+    do k = 1, min(size(item%values), 6)
+      if (k > 1) text = text//', '
+      if (item%values(k)%repeat > 1) text = text//format_integer(int(item%values(k)%repeat))//'*'
+      text = text//shown_value(item%values(k))
+    end do
+    if (size(item%values) > 6) text = text//', ... ('//format_integer(size(item%values))//' values)'
+  end function shown_values
+
+  !> 'x', 'x(3)' or 'x(1, 3)' for flat element p of a variable of extents dims.
+  pure function element_name(name, dims, p) result(text)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: dims(:), p
+    character(len=:), allocatable :: text
+    select case (size(dims))
+    case (0)
+      text = name
+    case (1)
+      text = name//'('//format_integer(p)//')'
+    case default
+      text = name//'('//format_integer(mod(p - 1, dims(1)) + 1)//', '//format_integer((p - 1)/dims(1) + 1)//')'
+    end select
+  end function element_name
+
+  !> Refuses value `v` of element `p`, which came from item `from`.
+  subroutine refuse(self, name, dims, p, from, v, allowed, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name, allowed
+    integer, intent(in) :: dims(:), p, from
+    type(nml_value_t), intent(in) :: v
+    type(status_t), intent(inout) :: status
+    call set_status(status, STATUS_INVALID_INPUT, item_where(self, self%items(from), v%line)//': &'// &
+                    self%group//': '//element_name(name, dims, p)//' = '//shown_value(v)// &
+                    ' is not allowed: '//allowed)
+  end subroutine refuse
+
+  !> Converts the values of elements `positions` to reals within `b`.
+  subroutine take_reals(self, name, dims, positions, values, from, b, x, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: dims(:), positions(:), from(:)
+    type(nml_value_t), intent(in) :: values(:)
+    type(bounds_t), intent(in) :: b
+    real(wp), intent(inout) :: x(:)
+    type(status_t), intent(inout) :: status
+    integer :: k, outcome
+    real(wp) :: value
+    do k = 1, size(positions)
+      call read_real_token(values(k), value, outcome)
+      if (outcome == NUMBER_OK) then
+        if (b%allows(value)) then
+          x(positions(k)) = value
+          cycle
+        end if
+      end if
+      call refuse(self, name, dims, positions(k), from(k), values(k), b%text(), status)
+      return
+    end do
+  end subroutine take_reals
+
+  subroutine get_real(self, name, x, b, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    real(wp), intent(inout) :: x
+    type(bounds_t), intent(in) :: b
+    type(status_t), intent(inout) :: status
+    integer, allocatable :: positions(:), from(:)
+    type(nml_value_t), allocatable :: values(:)
+    real(wp) :: one(1)
+    integer :: no_dims(0)
+    call gather(self, name, no_dims, .true., '', positions, values, from, status)
+    if (size(positions) == 0 .or. .not. status%ok()) return
+    one = x
+    call take_reals(self, name, no_dims, positions, values, from, b, one, status)
+    x = one(1)
+  end subroutine get_real
+
+  !> A vector of fixed length (gravity, origin): given whole with every
+  !> component, or element by element.
+  subroutine get_real_vector(self, name, x, b, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    real(wp), intent(inout) :: x(:)
+    type(bounds_t), intent(in) :: b
+    type(status_t), intent(inout) :: status
+    integer, allocatable :: positions(:), from(:)
+    type(nml_value_t), allocatable :: values(:)
+    call gather(self, name, [size(x)], .true., '', positions, values, from, status)
+    if (size(positions) == 0 .or. .not. status%ok()) return
+    call take_reals(self, name, [size(x)], positions, values, from, b, x, status)
+  end subroutine get_real_vector
+
+  !> A list of up to `most` values given without gaps (stations); `x` is
+  !> allocated to the number given (0 if the variable is not given).
+  subroutine get_real_list(self, name, x, most, b, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    real(wp), allocatable, intent(out) :: x(:)
+    integer, intent(in) :: most
+    type(bounds_t), intent(in) :: b
+    type(status_t), intent(inout) :: status
+    integer, allocatable :: positions(:), from(:)
+    type(nml_value_t), allocatable :: values(:)
+    real(wp), allocatable :: all(:)
+    integer :: k
+    allocate (x(0))
+    call gather(self, name, [most], .false., 'the limit of '//format_integer(most), positions, values, from, status)
+    if (size(positions) == 0 .or. .not. status%ok()) return
+    do k = 1, size(positions)
+      if (positions(k) /= k) then
+        call set_status(status, STATUS_INVALID_INPUT, self%where(name)//': &'//self%group//': '// &
+                        element_name(name, [most], k)//' is not given: list the values without gaps')
+        return
+      end if
+    end do
+    allocate (all(most))
+    all = 0
+    call take_reals(self, name, [most], positions, values, from, b, all, status)
+    if (status%ok()) x = all(:size(positions))
+  end subroutine get_real_list
+
+  !> Values per part (element, section, patch): x(i) for parts 1..size(x),
+  !> defaults kept where not given; `limit` names the count ('n_elements =
+  !> 3'); `given` tells which were given.
+  subroutine parts_real(self, name, x, b, limit, status, given)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name, limit
+    real(wp), intent(inout) :: x(:)
+    type(bounds_t), intent(in) :: b
+    type(status_t), intent(inout) :: status
+    logical, intent(out), optional :: given(:)
+    integer, allocatable :: positions(:), from(:)
+    type(nml_value_t), allocatable :: values(:)
+    if (present(given)) given = .false.
+    call gather(self, name, [size(x)], .false., limit, positions, values, from, status)
+    if (.not. status%ok()) return
+    call take_reals(self, name, [size(x)], positions, values, from, b, x, status)
+    if (present(given)) given(positions) = .true.
+  end subroutine parts_real
+
+  subroutine parts_text(self, name, x, limit, status, choices, given)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name, limit
+    character(len=*), intent(inout) :: x(:)
+    type(status_t), intent(inout) :: status
+    character(len=*), intent(in), optional :: choices(:)
+    logical, intent(out), optional :: given(:)
+    integer, allocatable :: positions(:), from(:)
+    type(nml_value_t), allocatable :: values(:)
+    integer :: k
+    if (present(given)) given = .false.
+    call gather(self, name, [size(x)], .false., limit, positions, values, from, status)
+    if (.not. status%ok()) return
+    do k = 1, size(positions)
+      call take_text(self, name, [size(x)], positions(k), from(k), values(k), x(positions(k)), status, choices)
+      if (.not. status%ok()) return
+    end do
+    if (present(given)) given(positions) = .true.
+  end subroutine parts_text
+
+  subroutine parts_logical(self, name, x, limit, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name, limit
+    logical, intent(inout) :: x(:)
+    type(status_t), intent(inout) :: status
+    integer, allocatable :: positions(:), from(:)
+    type(nml_value_t), allocatable :: values(:)
+    integer :: k
+    logical :: ok
+    call gather(self, name, [size(x)], .false., limit, positions, values, from, status)
+    if (.not. status%ok()) return
+    do k = 1, size(positions)
+      call read_logical_token(values(k), x(positions(k)), ok)
+      if (.not. ok) then
+        call refuse(self, name, [size(x)], positions(k), from(k), values(k), 'must be .true. or .false.', status)
+        return
+      end if
+    end do
+  end subroutine parts_logical
+
+  !> Columns of a matrix x(rows, columns) (points(3, n), origin(3, patches)):
+  !> a whole assignment gives complete columns in order; `n_given` is the
+  !> last column given, `given` (optional) tells which.
+  subroutine get_real_columns(self, name, x, b, limit, n_given, status, given)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name, limit
+    real(wp), intent(inout) :: x(:, :)
+    type(bounds_t), intent(in) :: b
+    integer, intent(out) :: n_given
+    type(status_t), intent(inout) :: status
+    logical, intent(out), optional :: given(:)
+    integer, allocatable :: positions(:), from(:)
+    type(nml_value_t), allocatable :: values(:)
+    real(wp) :: flat(size(x))
+    integer :: i, rows
+    n_given = 0
+    if (present(given)) given = .false.
+    rows = size(x, 1)
+    call gather(self, name, shape(x), .false., limit, positions, values, from, status)
+    if (.not. status%ok()) return
+    do i = 1, size(self%items)
+      if (self%items(i)%name /= lower(name) .or. self%items(i)%rank /= 0) cycle
+      if (mod(sum(self%items(i)%values%repeat), int(rows, int64)) /= 0) then
+        call set_status(status, STATUS_INVALID_INPUT, item_where(self, self%items(i), self%items(i)%line)// &
+                        ': &'//self%group//': '//name//' gives '// &
+                        format_integer(int(sum(self%items(i)%values%repeat)))//' numbers, not a multiple of '// &
+                        format_integer(rows)//' (one column of '//name//'('//format_integer(rows)//', :) each)')
+        return
+      end if
+    end do
+    flat = reshape(x, [size(x)])
+    call take_reals(self, name, shape(x), positions, values, from, b, flat, status)
+    if (.not. status%ok()) return
+    x = reshape(flat, shape(x))
+    if (size(positions) > 0) n_given = (maxval(positions) - 1)/rows + 1
+    if (present(given)) then
+      do i = 1, size(positions)
+        given((positions(i) - 1)/rows + 1) = .true.
+      end do
+    end if
+  end subroutine get_real_columns
+
+  subroutine get_integer(self, name, i, low, high, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    integer, intent(inout) :: i
+    integer, intent(in) :: low, high
+    type(status_t), intent(inout) :: status
+    integer, allocatable :: positions(:), from(:)
+    type(nml_value_t), allocatable :: values(:)
+    integer(int64) :: value
+    integer :: outcome, no_dims(0)
+    call gather(self, name, no_dims, .true., '', positions, values, from, status)
+    if (size(positions) == 0 .or. .not. status%ok()) return
+    call read_integer_token(values(1), value, outcome)
+    if (outcome == NUMBER_OK) then
+      if (value >= low .and. value <= high) then
+        i = int(value)
+        return
+      end if
+    end if
+    call refuse(self, name, no_dims, 1, from(1), values(1), 'must be a whole number in ['// &
+                format_integer(low)//', '//format_integer(high)//']', status)
+  end subroutine get_integer
+
+  subroutine get_logical(self, name, flag, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    logical, intent(inout) :: flag
+    type(status_t), intent(inout) :: status
+    integer, allocatable :: positions(:), from(:)
+    type(nml_value_t), allocatable :: values(:)
+    integer :: no_dims(0)
+    logical :: ok, value
+    call gather(self, name, no_dims, .true., '', positions, values, from, status)
+    if (size(positions) == 0 .or. .not. status%ok()) return
+    call read_logical_token(values(1), value, ok)
+    if (ok) then
+      flag = value
+    else
+      call refuse(self, name, no_dims, 1, from(1), values(1), 'must be .true. or .false.', status)
+    end if
+  end subroutine get_logical
+
+  !> A quoted text of at most len(x) characters; with `choices`, one of those
+  !> words (any case), returned in lower case.
+  subroutine get_text(self, name, x, status, choices)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    character(len=*), intent(inout) :: x
+    type(status_t), intent(inout) :: status
+    character(len=*), intent(in), optional :: choices(:)
+    integer, allocatable :: positions(:), from(:)
+    type(nml_value_t), allocatable :: values(:)
+    integer :: no_dims(0)
+    call gather(self, name, no_dims, .true., '', positions, values, from, status)
+    if (size(positions) == 0 .or. .not. status%ok()) return
+    call take_text(self, name, no_dims, 1, from(1), values(1), x, status, choices)
+  end subroutine get_text
+
+  subroutine take_text(self, name, dims, p, from, v, x, status, choices)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: dims(:), p, from
+    type(nml_value_t), intent(in) :: v
+    character(len=*), intent(inout) :: x
+    type(status_t), intent(inout) :: status
+    character(len=*), intent(in), optional :: choices(:)
+    character(len=:), allocatable :: list, word
+    integer :: j
+    if (present(choices)) then
+      list = ''
+      do j = 1, size(choices)
+        list = list//' '//trim(choices(j))
+      end do
+      word = lower(trim(adjustl(v%text)))
+      if (v%kind /= VALUE_TEXT .or. .not. any(choices == word)) then
+        call refuse(self, name, dims, p, from, v, 'must be one of'//list//' (in quotes)', status)
+        return
+      end if
+      x = word
+      return
+    end if
+    if (v%kind /= VALUE_TEXT) then
+      call refuse(self, name, dims, p, from, v, 'must be a text in quotes', status)
+    else if (len(v%text) > len(x)) then
+      call refuse(self, name, dims, p, from, v, 'is longer than the '//format_integer(len(x))// &
+                  ' characters allowed', status)
+    else
+      x = v%text
+    end if
+  end subroutine take_text
+
+  ! ----------------------------------------------------------------- bounds
+
+  !> low <= x <= high, in `unit` (shown in messages).
+  pure function in_range(low, high, unit) result(b)
+    real(wp), intent(in) :: low, high
+    character(len=*), intent(in) :: unit
+    type(bounds_t) :: b
+    b%low = low
+    b%high = high
+    b%unit = unit
+  end function in_range
+
+  !> low < x <= high, in `unit`.
+  pure function above(low, high, unit) result(b)
+    real(wp), intent(in) :: low, high
+    character(len=*), intent(in) :: unit
+    type(bounds_t) :: b
+    b = in_range(low, high, unit)
+    b%open_low = .true.
+  end function above
+
+  elemental logical function bounds_allow(self, x)
+    class(bounds_t), intent(in) :: self
+    real(wp), intent(in) :: x
+    bounds_allow = .false.
+    if (.not. ieee_is_finite(x)) return
+    if (x > self%high) return
+    if (self%open_low) then
+      bounds_allow = x > self%low
+    else
+      bounds_allow = x >= self%low
+    end if
+  end function bounds_allow
+
+  pure function bounds_text(self) result(text)
+    class(bounds_t), intent(in) :: self
+    character(len=:), allocatable :: text
+    if (self%open_low) then
+      text = 'must be a finite number > '//bound_text(self%low)//' and <= '//bound_text(self%high)
+    else
+      text = 'must be a finite number in ['//bound_text(self%low)//', '//bound_text(self%high)//']'
+    end if
+    if (allocated(self%unit)) then
+      if (len(self%unit) > 0) text = text//' ('//self%unit//')'
+    end if
+  end function bounds_text
+
+  !> A bound for messages: whole numbers plainly, others as format_real.
+  pure function bound_text(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    if (abs(x) < 1e7_wp .and. x == aint(x)) then
+      text = format_integer(int(x))
+    else
+      text = format_real(x)
+    end if
+  end function bound_text
+
+  ! ------------------------------------------ checks of values already read
+
+  !> A model that cannot be built from the input is bad input (exit status 1,
+  !> nothing written), whatever the builder's code, unless a file could not be read.
+  pure subroutine mark_input_failure(status)
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok() .and. status%code /= STATUS_IO) status%code = STATUS_INVALID_INPUT
+  end subroutine mark_input_failure
 
   subroutine check_finite(input, group, variable, value, status)
     type(input_text_t), intent(in) :: input
@@ -249,29 +1010,17 @@ contains
       call invalid(input, group, variable, format_real(value), 'must be a finite number', status)
   end subroutine check_finite
 
-  subroutine check_finite_vector(input, group, variable, value, status)
-    type(input_text_t), intent(in) :: input
-    character(len=*), intent(in) :: group, variable
-    real(wp), intent(in) :: value(:)
-    type(status_t), intent(inout) :: status
-    if (.not. status%ok()) return
-    if (.not. all(ieee_is_finite(value))) &
-      call invalid(input, group, variable, format_vector(value), 'all components must be finite', status)
-  end subroutine check_finite_vector
-
   !> value > 0 and finite; `unit` is shown in the message.
   subroutine check_positive(input, group, variable, value, unit, status)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: group, variable, unit
     real(wp), intent(in) :: value
     type(status_t), intent(inout) :: status
+    type(bounds_t) :: b
     if (.not. status%ok()) return
-    ! Fortran's .and. does not short-circuit: compare only finite values (NaN traps in Debug).
-    if (.not. ieee_is_finite(value)) then
+    b = above(0.0_wp, huge(1.0_wp), unit)
+    if (.not. b%allows(value)) &
       call invalid(input, group, variable, format_real(value), 'must be a finite number > 0 ('//unit//')', status)
-    else if (value <= 0) then
-      call invalid(input, group, variable, format_real(value), 'must be a finite number > 0 ('//unit//')', status)
-    end if
   end subroutine check_positive
 
   subroutine check_nonnegative(input, group, variable, value, unit, status)
@@ -279,27 +1028,22 @@ contains
     character(len=*), intent(in) :: group, variable, unit
     real(wp), intent(in) :: value
     type(status_t), intent(inout) :: status
+    type(bounds_t) :: b
     if (.not. status%ok()) return
-    if (.not. ieee_is_finite(value)) then
+    b = in_range(0.0_wp, huge(1.0_wp), unit)
+    if (.not. b%allows(value)) &
       call invalid(input, group, variable, format_real(value), 'must be a finite number >= 0 ('//unit//')', status)
-    else if (value < 0) then
-      call invalid(input, group, variable, format_real(value), 'must be a finite number >= 0 ('//unit//')', status)
-    end if
   end subroutine check_nonnegative
 
-  subroutine check_range(input, group, variable, value, lower, upper, unit, status)
+  subroutine check_range(input, group, variable, value, low, high, unit, status)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: group, variable, unit
-    real(wp), intent(in) :: value, lower, upper
+    real(wp), intent(in) :: value, low, high
     type(status_t), intent(inout) :: status
+    type(bounds_t) :: b
     if (.not. status%ok()) return
-    if (.not. ieee_is_finite(value)) then
-      call invalid(input, group, variable, format_real(value), 'must lie in ['//format_real(lower)// &
-                   ', '//format_real(upper)//'] ('//unit//')', status)
-    else if (value < lower .or. value > upper) then
-      call invalid(input, group, variable, format_real(value), 'must lie in ['//format_real(lower)// &
-                   ', '//format_real(upper)//'] ('//unit//')', status)
-    end if
+    b = in_range(low, high, unit)
+    if (.not. b%allows(value)) call invalid(input, group, variable, format_real(value), b%text(), status)
   end subroutine check_range
 
   !> A keyword among `choices` (compared in lower case, trailing blanks ignored).
@@ -311,24 +1055,11 @@ contains
     integer :: j
     character(len=:), allocatable :: list
     if (.not. status%ok()) return
-    do j = 1, size(choices)
-      if (lower(trim(value)) == trim(choices(j))) return
-    end do
+    if (any(choices == lower(trim(adjustl(value))))) return
     list = ''
     do j = 1, size(choices)
       list = list//' '//trim(choices(j))
     end do
     call invalid(input, group, variable, "'"//trim(value)//"'", 'must be one of'//list, status)
   end subroutine check_choice
-
-
-  pure function first_word(text) result(word)
-    character(len=*), intent(in) :: text
-    character(len=:), allocatable :: word
-    integer :: i
-    do i = 1, len(text)
-      if (text(i:i) == ' ' .or. text(i:i) == '/' .or. text(i:i) == ',') exit
-    end do
-    word = text(:i - 1)
-  end function first_word
 end module io_input

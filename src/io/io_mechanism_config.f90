@@ -3,14 +3,12 @@
 !> (layout in docs/outputs.md).
 module io_mechanism_config
   use base_kinds, only: wp
-  use base_text, only: format_integer
   use base_constants, only: standard_gravity
   use base_status, only: status_t
   use numerics_ode, only: ode_stats_t
   use kinetostatics_models, only: pendulum_params_t, fourbar_params_t, sled_params_t
   use kinetostatics_recorder, only: mechanism_series_t
-  use io_input, only: input_text_t, namelist_read_error, check_positive, check_nonnegative, &
-    check_finite, check_finite_vector, check_range, invalid, format_real
+  use io_input, only: input_text_t, group_reader_t, open_group, in_range, format_real, format_vector
   use io_hdf5, only: result_file_t, units_per_second
   implicit none (type, external)
   private
@@ -42,150 +40,109 @@ contains
     type(input_text_t), intent(in) :: input
     type(pendulum_config_t), intent(out) :: config
     type(status_t), intent(inout) :: status
-    integer :: links, ios, k
-    real(wp) :: length(2), mass(2), inertia(2), gravity(3), theta0(2), dtheta0(2)
-    character(len=256) :: msg
-    character(len=*), parameter :: g = 'pendulum'
-    namelist /pendulum/ links, length, mass, inertia, gravity, theta0, dtheta0
+    type(group_reader_t) :: r
+    integer :: n
+    character(len=*), parameter :: names(7) = [character(len=8) :: 'links', 'length', 'mass', 'inertia', &
+      'gravity', 'theta0', 'dtheta0']
 
-    links = 1
-    length = 1; mass = 1; inertia = 0
-    gravity = [0.0_wp, 0.0_wp, -standard_gravity]
-    theta0 = config%theta0; dtheta0 = config%dtheta0
-    read (input%lines, nml=pendulum, iostat=ios, iomsg=msg)
-    if (ios > 0) then
-      call namelist_read_error(input, g, msg, [character(len=8) :: 'links', 'length', 'mass', 'inertia', &
-                               'gravity', 'theta0', 'dtheta0'], status)
-      return
-    end if
-    if (links < 1 .or. links > 2) then
-      call invalid(input, g, 'links', format_integer(links), 'must be 1 or 2', status)
-      return
-    end if
-    do k = 1, links
-      call check_positive(input, g, 'length('//achar(48 + k)//')', length(k), 'm', status)
-      call check_positive(input, g, 'mass('//achar(48 + k)//')', mass(k), 'kg', status)
-      call check_nonnegative(input, g, 'inertia('//achar(48 + k)//')', inertia(k), 'kg m^2', status)
-      call check_finite(input, g, 'theta0('//achar(48 + k)//')', theta0(k), status)
-      call check_finite(input, g, 'dtheta0('//achar(48 + k)//')', dtheta0(k), status)
-    end do
-    call check_finite_vector(input, g, 'gravity', gravity, status)
+    config%params%links = 1
+    config%params%length = 1; config%params%mass = 1; config%params%inertia = 0
+    config%params%gravity = [0.0_wp, 0.0_wp, -standard_gravity]
+    call open_group(input, 'pendulum', names, r, status)
+    call r%get('links', config%params%links, 1, 2, status)
     if (.not. status%ok()) return
-    config%params%links = links
-    config%params%length = length
-    config%params%mass = mass
-    config%params%inertia = inertia
-    config%params%gravity = gravity
-    config%theta0 = theta0
-    config%dtheta0 = dtheta0
+    n = config%params%links
+    call r%get_parts('length', config%params%length(:n), in_range(1e-3_wp, 1e3_wp, 'm'), 'links = '//digit(n), &
+                     status)
+    call r%get_parts('mass', config%params%mass(:n), in_range(1e-6_wp, 1e6_wp, 'kg'), 'links = '//digit(n), status)
+    call r%get_parts('inertia', config%params%inertia(:n), in_range(0.0_wp, 1e6_wp, 'kg m^2'), &
+                     'links = '//digit(n), status)
+    call r%get_parts('theta0', config%theta0(:n), in_range(-100.0_wp, 100.0_wp, 'rad'), 'links = '//digit(n), status)
+    call r%get_parts('dtheta0', config%dtheta0(:n), in_range(-1e4_wp, 1e4_wp, 'rad/s'), 'links = '//digit(n), &
+                     status)
+    call r%get('gravity', config%params%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
   end subroutine read_pendulum_config
 
   subroutine read_fourbar_config(input, config, status)
     type(input_text_t), intent(in) :: input
     type(fourbar_config_t), intent(out) :: config
     type(status_t), intent(inout) :: status
-    real(wp) :: a, b, c, d, mass(3), gravity(3), crank0, dcrank0
-    integer :: branch, ios
-    character(len=256) :: msg
-    character(len=*), parameter :: g = 'fourbar'
-    namelist /fourbar/ a, b, c, d, mass, gravity, crank0, dcrank0, branch
+    type(group_reader_t) :: r
+    character(len=*), parameter :: names(9) = [character(len=8) :: 'a', 'b', 'c', 'd', 'mass', 'gravity', &
+      'crank0', 'dcrank0', 'branch']
 
-    a = config%params%a; b = config%params%b; c = config%params%c; d = config%params%d
-    mass = config%params%mass; gravity = config%params%gravity
-    crank0 = config%crank0; dcrank0 = config%dcrank0; branch = config%branch
-    read (input%lines, nml=fourbar, iostat=ios, iomsg=msg)
-    if (ios > 0) then
-      call namelist_read_error(input, g, msg, [character(len=8) :: 'a', 'b', 'c', 'd', 'mass', 'gravity', &
-                               'crank0', 'dcrank0', 'branch'], status)
-      return
-    end if
-    call check_positive(input, g, 'a', a, 'm', status)
-    call check_positive(input, g, 'b', b, 'm', status)
-    call check_positive(input, g, 'c', c, 'm', status)
-    call check_positive(input, g, 'd', d, 'm', status)
-    call check_positive(input, g, 'mass(1)', mass(1), 'kg', status)
-    call check_positive(input, g, 'mass(2)', mass(2), 'kg', status)
-    call check_positive(input, g, 'mass(3)', mass(3), 'kg', status)
-    call check_finite_vector(input, g, 'gravity', gravity, status)
-    call check_finite(input, g, 'crank0', crank0, status)
-    call check_finite(input, g, 'dcrank0', dcrank0, status)
-    if (status%ok() .and. abs(branch) /= 1) &
-      call invalid(input, g, 'branch', format_integer(branch), 'must be +1 or -1', status)
-    if (.not. status%ok()) return
-    config%params = fourbar_params_t(a, b, c, d, mass, gravity)
-    config%crank0 = crank0
-    config%dcrank0 = dcrank0
-    config%branch = branch
+    call open_group(input, 'fourbar', names, r, status)
+    call r%get('a', config%params%a, in_range(1e-3_wp, 1e3_wp, 'm'), status)
+    call r%get('b', config%params%b, in_range(1e-3_wp, 1e3_wp, 'm'), status)
+    call r%get('c', config%params%c, in_range(1e-3_wp, 1e3_wp, 'm'), status)
+    call r%get('d', config%params%d, in_range(1e-3_wp, 1e3_wp, 'm'), status)
+    call r%get('mass', config%params%mass, in_range(1e-6_wp, 1e6_wp, 'kg'), status)
+    call r%get('gravity', config%params%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
+    call r%get('crank0', config%crank0, in_range(-100.0_wp, 100.0_wp, 'rad'), status)
+    call r%get('dcrank0', config%dcrank0, in_range(-1e4_wp, 1e4_wp, 'rad/s'), status)
+    call r%get('branch', config%branch, -1, 1, status)
+    if (status%ok() .and. config%branch == 0) call r%invalid('branch', '0', 'must be +1 or -1', status)
   end subroutine read_fourbar_config
 
   subroutine read_sled_config(input, config, status)
     type(input_text_t), intent(in) :: input
     type(sled_config_t), intent(out) :: config
     type(status_t), intent(inout) :: status
-    real(wp) :: length, mass, inertia(3), gravity(3), mu, viscous, regularization_speed, sigma, &
-                alpha_u, alpha_v, u0, v0, phi0, du0, dv0, dphi0
-    integer :: ios, k
-    character(len=256) :: msg
-    character(len=*), parameter :: g = 'sled'
-    namelist /sled/ length, mass, inertia, gravity, mu, viscous, regularization_speed, sigma, alpha_u, &
-      alpha_v, u0, v0, phi0, du0, dv0, dphi0
+    real(wp) :: inertia(3), u0, v0, phi0, du0, dv0, dphi0
+    type(group_reader_t) :: r
+    integer :: k
+    character(len=*), parameter :: names(16) = [character(len=20) :: 'length', 'mass', 'inertia', 'gravity', &
+      'mu', 'viscous', 'regularization_speed', 'sigma', 'alpha_u', 'alpha_v', 'u0', 'v0', 'phi0', &
+      'du0', 'dv0', 'dphi0']
 
-    length = config%params%length; mass = config%params%mass
     inertia = [(config%params%inertia(k, k), k = 1, 3)]
-    gravity = config%params%gravity
-    mu = 0; viscous = 0; regularization_speed = config%params%regularization_speed
-    sigma = 1; alpha_u = 1; alpha_v = 0
+    config%params%mu = 0; config%params%viscous = 0
+    config%params%sigma = 1; config%params%alpha_u = 1; config%params%alpha_v = 0
     u0 = 0; v0 = 0; phi0 = 0; du0 = 0; dv0 = 0; dphi0 = 0
-    read (input%lines, nml=sled, iostat=ios, iomsg=msg)
-    if (ios > 0) then
-      call namelist_read_error(input, g, msg, [character(len=20) :: 'length', 'mass', 'inertia', 'gravity', &
-        'mu', 'viscous', 'regularization_speed', 'sigma', 'alpha_u', 'alpha_v', 'u0', 'v0', 'phi0', &
-        'du0', 'dv0', 'dphi0'], status)
-      return
-    end if
-    call check_positive(input, g, 'length', length, 'm', status)
-    call check_positive(input, g, 'mass', mass, 'kg', status)
-    call check_finite_vector(input, g, 'inertia', inertia, status)
-    if (status%ok() .and. (minval(inertia) < 0 .or. 2*maxval(inertia) > sum(inertia))) &
-      call invalid(input, g, 'inertia', format_real(inertia(1))//', '//format_real(inertia(2))//', '// &
-                   format_real(inertia(3)), 'principal moments (kg m^2) must be >= 0 and each at most the '// &
-                   'sum of the other two', status)
-    if (status%ok() .and. inertia(2) + inertia(3) <= 0) &
-      call invalid(input, g, 'inertia', format_real(inertia(1))//', '//format_real(inertia(2))//', '// &
-                   format_real(inertia(3)), 'the bar needs inertia about y or z (pitch and heading)', status)
-    call check_finite_vector(input, g, 'gravity', gravity, status)
-    call check_range(input, g, 'mu', mu, 0.0_wp, 10.0_wp, '1', status)
-    call check_nonnegative(input, g, 'viscous', viscous, 'N s/m', status)
-    call check_positive(input, g, 'regularization_speed', regularization_speed, 'm/s', status)
-    if (status%ok() .and. abs(sigma) /= 1) &
-      call invalid(input, g, 'sigma', format_real(sigma), 'must be +1 or -1 (side of the normal)', status)
-    call check_finite(input, g, 'alpha_u', alpha_u, status)
-    call check_finite(input, g, 'alpha_v', alpha_v, status)
-    if (status%ok() .and. alpha_u == 0 .and. alpha_v == 0) &
-      call invalid(input, g, 'alpha_u, alpha_v', '0, 0', 'at least one must be non-zero', status)
-    call check_finite(input, g, 'u0', u0, status)
-    call check_finite(input, g, 'v0', v0, status)
-    call check_finite(input, g, 'phi0', phi0, status)
-    call check_finite(input, g, 'du0', du0, status)
-    call check_finite(input, g, 'dv0', dv0, status)
-    call check_finite(input, g, 'dphi0', dphi0, status)
+    call open_group(input, 'sled', names, r, status)
+    call r%get('length', config%params%length, in_range(1e-3_wp, 100.0_wp, 'm'), status)
+    call r%get('mass', config%params%mass, in_range(1e-3_wp, 1e6_wp, 'kg'), status)
+    call r%get('inertia', inertia, in_range(0.0_wp, 1e6_wp, 'kg m^2'), status)
+    call r%get('gravity', config%params%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
+    call r%get('mu', config%params%mu, in_range(0.0_wp, 10.0_wp, '1'), status)
+    call r%get('viscous', config%params%viscous, in_range(0.0_wp, 1e6_wp, 'N s/m'), status)
+    call r%get('regularization_speed', config%params%regularization_speed, in_range(1e-12_wp, 1.0_wp, 'm/s'), &
+               status)
+    call r%get('sigma', config%params%sigma, in_range(-1.0_wp, 1.0_wp, '1'), status)
+    call r%get('alpha_u', config%params%alpha_u, in_range(-1e3_wp, 1e3_wp, '1'), status)
+    call r%get('alpha_v', config%params%alpha_v, in_range(-1e3_wp, 1e3_wp, '1'), status)
+    call r%get('u0', u0, in_range(-1e6_wp, 1e6_wp, 'surface parameter'), status)
+    call r%get('v0', v0, in_range(-1e6_wp, 1e6_wp, 'surface parameter'), status)
+    call r%get('phi0', phi0, in_range(-100.0_wp, 100.0_wp, 'rad'), status)
+    call r%get('du0', du0, in_range(-1e3_wp, 1e3_wp, 'surface parameter per s'), status)
+    call r%get('dv0', dv0, in_range(-1e3_wp, 1e3_wp, 'surface parameter per s'), status)
+    call r%get('dphi0', dphi0, in_range(-1e3_wp, 1e3_wp, 'rad/s'), status)
     if (.not. status%ok()) return
-    config%params%length = length
-    config%params%mass = mass
+    if (2*maxval(inertia) > sum(inertia)) then
+      call r%invalid('inertia', format_vector(inertia), 'principal moments (kg m^2) must be >= 0 and each at '// &
+                     'most the sum of the other two', status)
+    else if (inertia(2) + inertia(3) <= 0) then
+      call r%invalid('inertia', format_vector(inertia), 'the bar needs inertia about y or z (pitch and heading)', &
+                     status)
+    else if (abs(config%params%sigma) /= 1) then
+      call r%invalid('sigma', format_real(config%params%sigma), 'must be +1 or -1 (side of the normal)', status)
+    else if (config%params%alpha_u == 0 .and. config%params%alpha_v == 0) then
+      call r%invalid('alpha_u, alpha_v', '0, 0', 'at least one must be non-zero', status)
+    end if
+    if (.not. status%ok()) return
     config%params%inertia = 0
     do k = 1, 3
       config%params%inertia(k, k) = inertia(k)
     end do
-    config%params%gravity = gravity
-    config%params%mu = mu
-    config%params%viscous = viscous
-    config%params%regularization_speed = regularization_speed
-    config%params%sigma = sigma
-    config%params%alpha_u = alpha_u
-    config%params%alpha_v = alpha_v
     config%q0 = [u0, v0, phi0]
     config%qd0 = [du0, dv0, dphi0]
   end subroutine read_sled_config
+
+  pure function digit(k) result(text)
+    integer, intent(in) :: k
+    character(len=1) :: text
+    text = achar(48 + k)
+  end function digit
 
   !> Writes /<scenario>/... (see docs/outputs.md).
   subroutine write_mechanism_series(file, scenario, input, title, s, stats, cpu, q_units, beta_units, status)

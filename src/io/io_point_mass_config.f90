@@ -3,8 +3,7 @@ module io_point_mass_config
   use base_kinds, only: wp
   use base_constants, only: standard_gravity
   use base_status, only: status_t
-  use io_input, only: input_text_t, namelist_read_error, check_positive, check_nonnegative, &
-                      check_finite, check_finite_vector, check_choice, invalid, format_real, lower
+  use io_input, only: input_text_t, group_reader_t, open_group, in_range, format_real
   implicit none (type, external)
   private
   public :: point_mass_config_t, read_point_mass_config
@@ -27,47 +26,30 @@ contains
     type(input_text_t), intent(in) :: input
     type(point_mass_config_t), intent(out) :: config
     type(status_t), intent(inout) :: status
-    real(wp) :: mass, u0, v0, du0, dv0, gravity(3), viscous_coefficient, friction_coefficient, &
-                regularization_speed, sigma, alpha_u, alpha_v
-    character(len=16) :: friction
-    character(len=256) :: msg
-    integer :: ios
-    character(len=*), parameter :: g = 'point_mass'
-    namelist /point_mass/ mass, u0, v0, du0, dv0, gravity, friction, viscous_coefficient, &
-      friction_coefficient, regularization_speed, sigma, alpha_u, alpha_v
+    type(group_reader_t) :: r
+    character(len=*), parameter :: names(13) = [character(len=20) :: 'mass', 'u0', 'v0', 'du0', 'dv0', &
+      'gravity', 'friction', 'viscous_coefficient', 'friction_coefficient', 'regularization_speed', 'sigma', &
+      'alpha_u', 'alpha_v']
 
-    mass = config%mass; u0 = config%u0; v0 = config%v0; du0 = config%du0; dv0 = config%dv0
-    gravity = config%gravity; friction = config%friction
-    viscous_coefficient = config%viscous_coefficient
-    friction_coefficient = config%friction_coefficient
-    regularization_speed = config%regularization_speed
-    sigma = config%sigma; alpha_u = config%alpha_u; alpha_v = config%alpha_v
-    read (input%lines, nml=point_mass, iostat=ios, iomsg=msg)
-    if (ios > 0) then
-      call namelist_read_error(input, g, msg, [character(len=20) :: 'mass', 'u0', 'v0', 'du0', 'dv0', &
-        'gravity', 'friction', 'viscous_coefficient', 'friction_coefficient', &
-        'regularization_speed', 'sigma', 'alpha_u', 'alpha_v'], status)
-      return
-    end if
-    call check_positive(input, g, 'mass', mass, 'kg', status)
-    call check_finite(input, g, 'u0', u0, status)
-    call check_finite(input, g, 'v0', v0, status)
-    call check_finite(input, g, 'du0', du0, status)
-    call check_finite(input, g, 'dv0', dv0, status)
-    call check_finite_vector(input, g, 'gravity', gravity, status)
-    call check_choice(input, g, 'friction', friction, [character(len=7) :: 'none', 'viscous', 'coulomb'], status)
-    call check_nonnegative(input, g, 'viscous_coefficient', viscous_coefficient, 'N s/m', status)
-    call check_nonnegative(input, g, 'friction_coefficient', friction_coefficient, '1', status)
-    call check_positive(input, g, 'regularization_speed', regularization_speed, 'm/s', status)
-    call check_finite(input, g, 'alpha_u', alpha_u, status)
-    call check_finite(input, g, 'alpha_v', alpha_v, status)
-    if (status%ok() .and. abs(sigma) /= 1) &
-      call invalid(input, g, 'sigma', format_real(sigma), 'must be +1 or -1 (side of the normal)', status)
-    if (status%ok() .and. alpha_u == 0 .and. alpha_v == 0) &
-      call invalid(input, g, 'alpha_u, alpha_v', '0, 0', 'at least one must be non-zero', status)
+    call open_group(input, 'point_mass', names, r, status)
+    call r%get('mass', config%mass, in_range(1e-6_wp, 1e6_wp, 'kg'), status)
+    call r%get('u0', config%u0, in_range(-1e6_wp, 1e6_wp, 'surface parameter (m on a plane)'), status)
+    call r%get('v0', config%v0, in_range(-1e6_wp, 1e6_wp, 'surface parameter (m on a plane)'), status)
+    call r%get('du0', config%du0, in_range(-1e3_wp, 1e3_wp, 'surface parameter per s'), status)
+    call r%get('dv0', config%dv0, in_range(-1e3_wp, 1e3_wp, 'surface parameter per s'), status)
+    call r%get('gravity', config%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
+    call r%get('friction', config%friction, status, choices=[character(len=7) :: 'none', 'viscous', 'coulomb'])
+    call r%get('viscous_coefficient', config%viscous_coefficient, in_range(0.0_wp, 1e6_wp, 'N s/m'), status)
+    call r%get('friction_coefficient', config%friction_coefficient, in_range(0.0_wp, 10.0_wp, '1'), status)
+    call r%get('regularization_speed', config%regularization_speed, in_range(1e-12_wp, 1.0_wp, 'm/s'), status)
+    call r%get('sigma', config%sigma, in_range(-1.0_wp, 1.0_wp, '1'), status)
+    call r%get('alpha_u', config%alpha_u, in_range(-1e3_wp, 1e3_wp, '1'), status)
+    call r%get('alpha_v', config%alpha_v, in_range(-1e3_wp, 1e3_wp, '1'), status)
     if (.not. status%ok()) return
-
-    config = point_mass_config_t(mass, u0, v0, du0, dv0, gravity, lower(adjustl(friction)), &
-      viscous_coefficient, friction_coefficient, regularization_speed, sigma, alpha_u, alpha_v)
+    if (abs(config%sigma) /= 1) then
+      call r%invalid('sigma', format_real(config%sigma), 'must be +1 or -1 (side of the normal)', status)
+    else if (config%alpha_u == 0 .and. config%alpha_v == 0) then
+      call r%invalid('alpha_u, alpha_v', '0, 0', 'at least one must be non-zero', status)
+    end if
   end subroutine read_point_mass_config
 end module io_point_mass_config

@@ -1,19 +1,26 @@
-!> &solver: the ODE integrator's settings and the simulated time span.
+!> &solver: the ODE integrator's settings and the simulated time span; and
+!> the bound on the number of stored outputs (memory) every scenario checks
+!> before it starts.
 module io_solver_config
   use base_kinds, only: wp
-  use base_text, only: format_integer
+  use base_text, only: format_integer, format_short
   use base_status, only: status_t
   use numerics_ode, only: ode_options_t, ODE_ADAMS, ODE_BDF
-  use io_input, only: input_text_t, namelist_read_error, check_positive, check_range, &
-                      check_choice, check_nonnegative, invalid, format_real, lower
+  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, format_real, invalid
   implicit none (type, external)
   private
-  public :: solver_config_t, read_solver_config
+  public :: solver_config_t, read_solver_config, check_output_count, max_result_bytes, max_outputs
+
+  !> Most memory the stored time series of one run may take (refused above).
+  real(wp), parameter :: max_result_bytes = 2.0_wp*1024**3
+  !> Most output times of one run.
+  real(wp), parameter :: max_outputs = 1e7_wp
 
   type :: solver_config_t
     type(ode_options_t) :: options
-    real(wp) :: duration = 10       ! s
-    real(wp) :: output_step = 0.01_wp   ! s
+    real(wp) :: duration = 10           !< s
+    logical :: duration_given = .false. !< &solver duration was given (water: else up to the slide's end)
+    real(wp) :: output_step = 0.01_wp   !< s
   end type solver_config_t
 
 contains
@@ -22,48 +29,50 @@ contains
     type(input_text_t), intent(in) :: input
     type(solver_config_t), intent(out) :: config
     type(status_t), intent(inout) :: status
-    character(len=16) :: method
-    real(wp) :: rtol, atol, duration, output_step, initial_step, max_step
-    integer :: max_steps, ios
-    character(len=256) :: msg
-    namelist /solver/ method, rtol, atol, max_steps, initial_step, max_step, duration, output_step
-    character(len=*), parameter :: g = 'solver'
+    character(len=8) :: method
+    type(group_reader_t) :: r
+    character(len=*), parameter :: names(8) = [character(len=12) :: 'method', 'rtol', 'atol', 'max_steps', &
+      'initial_step', 'max_step', 'duration', 'output_step']
 
     method = 'adams'
-    rtol = config%options%rtol
-    atol = config%options%atol
-    max_steps = config%options%max_steps
-    initial_step = config%options%initial_step
-    max_step = config%options%max_step
-    duration = config%duration
-    output_step = config%output_step
-    read (input%lines, nml=solver, iostat=ios, iomsg=msg)
-    if (ios > 0) then
-      call namelist_read_error(input, g, msg, [character(len=12) :: 'method', 'rtol', 'atol', &
-                               'max_steps', 'initial_step', 'max_step', 'duration', 'output_step'], status)
+    call open_group(input, 'solver', names, r, status)
+    call r%get('method', method, status, choices=[character(len=5) :: 'adams', 'bdf'])
+    call r%get('rtol', config%options%rtol, in_range(1e-14_wp, 1e-2_wp, '1'), status)
+    call r%get('atol', config%options%atol, in_range(1e-16_wp, 1.0_wp, 'units of the state'), status)
+    call r%get('max_steps', config%options%max_steps, 1, 100000000, status)
+    call r%get('initial_step', config%options%initial_step, in_range(0.0_wp, 1e3_wp, 's'), status)
+    call r%get('max_step', config%options%max_step, in_range(0.0_wp, 1e6_wp, 's'), status)
+    call r%get('duration', config%duration, above(0.0_wp, 1e9_wp, 's'), status)
+    call r%get('output_step', config%output_step, in_range(1e-9_wp, 1e6_wp, 's'), status)
+    if (.not. status%ok()) return
+    config%duration_given = r%has('duration')
+    if (config%output_step > config%duration .and. config%duration_given) then
+      call r%invalid('output_step', format_real(config%output_step), &
+                     'must not exceed duration = '//format_real(config%duration)//' s', status)
       return
     end if
-    call check_choice(input, g, 'method', method, [character(len=5) :: 'adams', 'bdf'], status)
-    call check_range(input, g, 'rtol', rtol, 1e-14_wp, 1e-2_wp, '1', status)
-    call check_range(input, g, 'atol', atol, 1e-16_wp, 1.0_wp, 'units of the state', status)
-    call check_positive(input, g, 'duration', duration, 's', status)
-    call check_positive(input, g, 'output_step', output_step, 's', status)
-    call check_nonnegative(input, g, 'initial_step', initial_step, 's', status)
-    call check_nonnegative(input, g, 'max_step', max_step, 's', status)
-    if (status%ok() .and. max_steps < 1) &
-      call invalid(input, g, 'max_steps', format_integer(max_steps), 'must be an integer >= 1', status)
-    if (status%ok() .and. output_step > duration) &
-      call invalid(input, g, 'output_step', format_real(output_step), &
-                   'must not exceed duration = '//format_real(duration)//' s', status)
-    if (.not. status%ok()) return
-
-    config%options%method = merge(ODE_BDF, ODE_ADAMS, lower(adjustl(method)) == 'bdf')
-    config%options%rtol = rtol
-    config%options%atol = atol
-    config%options%max_steps = max_steps
-    config%options%initial_step = initial_step
-    config%options%max_step = max_step
-    config%duration = duration
-    config%output_step = output_step
+    config%options%method = merge(ODE_BDF, ODE_ADAMS, method == 'bdf')
   end subroutine read_solver_config
+
+  !> The outputs a run over `duration` stores, `values_per_output` numbers
+  !> each, must stay within max_outputs and max_result_bytes; the message
+  !> names duration and output_step. `what` names the run ('point_mass').
+  subroutine check_output_count(input, config, duration, values_per_output, what, status)
+    type(input_text_t), intent(in) :: input
+    type(solver_config_t), intent(in) :: config
+    real(wp), intent(in) :: duration
+    integer, intent(in) :: values_per_output
+    character(len=*), intent(in) :: what
+    type(status_t), intent(inout) :: status
+    real(wp) :: outputs, bytes
+    if (.not. status%ok()) return
+    outputs = duration/config%output_step + 2
+    bytes = outputs*values_per_output*8
+    if (outputs <= max_outputs .and. bytes <= max_result_bytes) return
+    call invalid(input, 'solver', 'output_step', format_real(config%output_step), 'with duration = '// &
+                   format_real(duration)//' s the '//what//' run would store '//format_short(outputs)// &
+                   ' outputs ('//format_short(bytes/1024**3)//' GB); at most '// &
+                   format_integer(nint(max_outputs))//' outputs and '// &
+                   format_short(max_result_bytes/1024**3)//' GB: raise output_step or shorten duration', status)
+  end subroutine check_output_count
 end module io_solver_config

@@ -7,9 +7,9 @@ module io_surface_config
   use geometry_elementary, only: plane_t, ellipsoid_t, paraboloid_t, elliptic_cylinder_t, &
                                  apex_paraboloid_t
   use geometry_placed_surface, only: placed_surface_t
-  use io_input, only: input_text_t, namelist_read_error, check_positive, check_choice, &
-                      check_finite_vector, lower, load_input_file
-  use io_geometry_config, only: read_geometry_config
+  use io_input, only: input_text_t, group_reader_t, open_group, in_range, load_input_file, group_present, &
+                      check_known_groups
+  use io_geometry_config, only: read_geometry_config, geometry_groups, geometry_file_groups
   implicit none (type, external)
   private
   public :: read_surface_config, surface_kinds
@@ -23,89 +23,144 @@ contains
   !> Builds the surface described by &surface, placed by `origin` and the Cardan
   !> angles `angles_deg` (r -> origin + Rx Ry Rz r). The kinds tube, slide,
   !> blended and bspline are described by the geometry groups (&centerline,
-  !> &cross_section, &slide_elements, &blended; io_geometry_config) of the file
-  !> `geometry_file` (a path relative to the working directory).
+  !> &cross_section, &slide_elements, &blended, &bspline; io_geometry_config),
+  !> given in this input or in the file `geometry_file` (relative to this
+  !> input's folder), not both.
   subroutine read_surface_config(input, built_surface, status)
     type(input_text_t), intent(in) :: input
     class(surface_t), allocatable, intent(out) :: built_surface
     type(status_t), intent(inout) :: status
     character(len=24) :: kind
-    character(len=256) :: geometry_file
+    character(len=4096) :: geometry_file
     type(input_text_t) :: geometry_input
     real(wp) :: a, b, c, point_a(3), point_b(3), point_c(3), origin(3), angles_deg(3)
     class(surface_t), allocatable :: local
     type(status_t) :: built
-    character(len=256) :: msg
-    integer :: ios
+    type(group_reader_t) :: r
+    integer :: i
     character(len=*), parameter :: g = 'surface'
-    namelist /surface/ kind, a, b, c, point_a, point_b, point_c, origin, angles_deg, geometry_file
 
     kind = 'plane'
     geometry_file = ''
     a = 1; b = 1; c = 1
     point_a = [0, 0, 0]; point_b = [1, 0, 0]; point_c = [0, 1, 0]
     origin = 0; angles_deg = 0
-    read (input%lines, nml=surface, iostat=ios, iomsg=msg)
-    if (ios > 0) then
-      call namelist_read_error(input, g, msg, [character(len=13) :: 'kind', 'a', 'b', 'c', 'point_a', &
-                               'point_b', 'point_c', 'origin', 'angles_deg', 'geometry_file'], status)
-      return
-    end if
-    call check_choice(input, g, 'kind', kind, surface_kinds, status)
-    call check_finite_vector(input, g, 'origin', origin, status)
-    call check_finite_vector(input, g, 'angles_deg', angles_deg, status)
+    call open_group(input, g, [character(len=13) :: 'kind', 'a', 'b', 'c', 'point_a', 'point_b', 'point_c', &
+                    'origin', 'angles_deg', 'geometry_file'], r, status)
+    call r%get('kind', kind, status, choices=surface_kinds)
+    call r%get('origin', origin, in_range(-1e6_wp, 1e6_wp, 'm'), status)
+    call r%get('angles_deg', angles_deg, in_range(-360.0_wp, 360.0_wp, 'deg'), status)
+    if (.not. status%ok()) return
+    ! a value the kind does not use is refused (it would be silently ignored)
+    if (kind == 'plane' .or. any(kind == geometry_kinds_here())) &
+      call r%refuse_given(['a', 'b', 'c'], 'kind = '''//trim(kind)//''' has no semi-axes a, b, c', status)
+    if (kind /= 'ellipsoid') call r%refuse_given(['c'], 'only an ellipsoid has a third semi-axis c', status)
+    if (kind /= 'plane') call r%refuse_given([character(len=7) :: 'point_a', 'point_b', 'point_c'], &
+                                             'only a plane is given by three points', status)
+    if (.not. any(kind == geometry_kinds_here())) call r%refuse_given([character(len=13) :: 'geometry_file'], &
+      'geometry_file describes a tube, slide, blended or bspline surface', status)
     if (.not. status%ok()) return
 
-    select case (lower(adjustl(kind)))
+    if (.not. any(kind == geometry_kinds_here())) then
+      do i = 1, size(geometry_groups)
+        if (group_present(input, geometry_groups(i))) then
+          call r%invalid('kind', ''''//trim(kind)//'''', 'this input has &'//trim(geometry_groups(i))// &
+                         ', which only a tube, slide, blended or bspline surface uses', status)
+          return
+        end if
+      end do
+    end if
+    select case (trim(kind))
     case ('plane')
-      call check_finite_vector(input, g, 'point_a', point_a, status)
-      call check_finite_vector(input, g, 'point_b', point_b, status)
-      call check_finite_vector(input, g, 'point_c', point_c, status)
+      call r%get('point_a', point_a, in_range(-1e6_wp, 1e6_wp, 'm'), status)
+      call r%get('point_b', point_b, in_range(-1e6_wp, 1e6_wp, 'm'), status)
+      call r%get('point_c', point_c, in_range(-1e6_wp, 1e6_wp, 'm'), status)
       if (status%ok()) local = plane_t(point_a, point_b, point_c, built)
     case ('ellipsoid')
-      call check_semi_axes(3)
+      call get_semi_axes(3)
       if (status%ok()) local = ellipsoid_t(a, b, c, built)
     case ('elliptic_paraboloid', 'hyperbolic_paraboloid')
-      call check_semi_axes(2)
-      if (status%ok()) local = paraboloid_t(a, b, merge(1.0_wp, -1.0_wp, &
-                                            lower(adjustl(kind)) == 'elliptic_paraboloid'), built)
+      call get_semi_axes(2)
+      if (status%ok()) local = paraboloid_t(a, b, merge(1.0_wp, -1.0_wp, kind == 'elliptic_paraboloid'), built)
     case ('elliptic_cylinder')
-      call check_semi_axes(2)
+      call get_semi_axes(2)
       if (status%ok()) local = elliptic_cylinder_t(a, b, built)
     case ('apex_paraboloid')
-      call check_semi_axes(2)
+      call get_semi_axes(2)
       if (status%ok()) local = apex_paraboloid_t(a, b, built)
     case ('tube', 'slide', 'blended', 'bspline')
+      call r%get('geometry_file', geometry_file, status)
+      if (.not. status%ok()) return
       if (len_trim(geometry_file) == 0) then
-        call set_status(status, STATUS_INVALID_INPUT, input%name//': &'//g//': kind = '''// &
-                        trim(lower(adjustl(kind)))//''' needs geometry_file = ''<file with the geometry groups>''')
+        if (.not. group_present(input, needed_group(kind))) then
+          call r%invalid('kind', ''''//trim(kind)//'''', 'needs its geometry: &'//needed_group(kind)// &
+                         ' in this input, or geometry_file = ''<file with the geometry groups>''', status)
+          return
+        end if
+        call read_geometry_config(input, local, status, kind=trim(kind))
       else
+        do i = 1, size(geometry_groups)
+          if (group_present(input, geometry_groups(i))) then
+            call r%invalid('geometry_file', ''''//trim(geometry_file)//'''', 'this input has its own &'// &
+                           trim(geometry_groups(i))//': give the geometry either here or in geometry_file, '// &
+                           'not both', status)
+            return
+          end if
+        end do
         call load_input_file(input%resolve_path(geometry_file), geometry_input, status)
-        if (.not. status%ok()) call prefix_status(status, input%name//': &'//g//': geometry_file = '''// &
-                                                  trim(geometry_file)//'''')
-        if (status%ok()) call read_geometry_config(geometry_input, local, status, kind=lower(adjustl(kind)))
+        call check_known_groups(geometry_input, geometry_file_groups, status)
+        if (.not. status%ok()) then
+          call prefix_status(status, r%where('geometry_file')//': &'//g//': geometry_file = '''// &
+                             trim(geometry_file)//'''')
+          return
+        end if
+        call read_geometry_config(geometry_input, local, status, kind=trim(kind))
       end if
     end select
     if (.not. status%ok()) return
     if (.not. built%ok()) then
       status = built
-      call prefix_status(status, input%name//': &'//g)
+      status%code = STATUS_INVALID_INPUT
+      call prefix_status(status, r%where('kind')//': &'//g)
       return
     end if
     if (all(origin == 0) .and. all(angles_deg == 0)) then
       call move_alloc(local, built_surface)
     else
       built_surface = placed_surface_t(local, origin, built, angles=angles_deg*pi/180)
-      if (.not. built%ok()) status = built
+      if (.not. built%ok()) then
+        status = built
+        status%code = STATUS_INVALID_INPUT
+        call prefix_status(status, r%where('origin')//': &'//g)
+      end if
     end if
 
   contains
 
-    subroutine check_semi_axes(n)
+    !> Semi-axes from 1 mm to 10 km: beyond, 1/a^2 and a^2 leave the range
+    !> the surface formulas are checked in.
+    subroutine get_semi_axes(n)
       integer, intent(in) :: n
-      call check_positive(input, g, 'a', a, 'm', status)
-      call check_positive(input, g, 'b', b, 'm', status)
-      if (n == 3) call check_positive(input, g, 'c', c, 'm', status)
-    end subroutine check_semi_axes
+      call r%get('a', a, in_range(1e-3_wp, 1e4_wp, 'm'), status)
+      call r%get('b', b, in_range(1e-3_wp, 1e4_wp, 'm'), status)
+      if (n == 3) call r%get('c', c, in_range(1e-3_wp, 1e4_wp, 'm'), status)
+    end subroutine get_semi_axes
+
   end subroutine read_surface_config
+
+  !> The group that describes a surface of this kind.
+  pure function needed_group(kind) result(group)
+    character(len=*), intent(in) :: kind
+    character(len=:), allocatable :: group
+    select case (trim(kind))
+    case ('tube'); group = 'centerline'
+    case ('slide'); group = 'slide_elements'
+    case default; group = trim(kind)
+    end select
+  end function needed_group
+
+  pure function geometry_kinds_here() result(kinds)
+    character(len=8) :: kinds(4)
+    kinds = [character(len=8) :: 'tube', 'slide', 'blended', 'bspline']
+  end function geometry_kinds_here
 end module io_surface_config

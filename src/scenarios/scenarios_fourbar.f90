@@ -6,7 +6,7 @@ module scenarios_fourbar
   use base_status, only: status_t, prefix_status
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: build_fourbar, fourbar_assembly
-  use io_input, only: input_text_t, check_known_groups
+  use io_input, only: input_text_t, check_known_groups, mark_input_failure
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_mechanism_config, only: fourbar_config_t, read_fourbar_config
@@ -36,9 +36,11 @@ contains
     call fourbar_assembly(config%params, config%crank0, config%branch, beta0, status)
     if (.not. status%ok()) then
       call prefix_status(status, input%name//': &fourbar: loop ''coupler-rocker''')
+      call mark_input_failure(status)
       return
     end if
     call build_fourbar(config%params, beta0, sys%mechanism, status)
+    call mark_input_failure(status)
     if (.not. status%ok()) return
     call run_mechanism('fourbar', input, run, solver, sys, [config%crank0, config%dcrank0], &
                        [character(len=4) :: 'rad'], [character(len=4) :: 'rad', 'rad'], status)

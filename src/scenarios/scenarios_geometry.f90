@@ -13,7 +13,7 @@ module scenarios_geometry
   use geometry_curve, only: curve_point_t
   use geometry_curve_frame, only: curve_frame_t
   use geometry_tube, only: tube_surface_t
-  use io_input, only: input_text_t, check_known_groups, namelist_read_error, invalid, format_real
+  use io_input, only: input_text_t, check_known_groups, group_reader_t, open_group, format_real
   use io_run_config, only: run_config_t
   use io_geometry_config, only: read_geometry_config, geometry_groups
   use io_hdf5, only: result_file_t
@@ -25,6 +25,8 @@ module scenarios_geometry
 
   character(len=*), parameter :: geometry_scenario_groups(8) = [character(len=14) :: 'run', &
     geometry_groups, 'grid']
+  !> most points of the written surface grid
+  real(wp), parameter :: max_grid_points = 2e7_wp
 
 contains
 
@@ -43,7 +45,7 @@ contains
     call check_known_groups(input, geometry_scenario_groups, status)
     if (status%ok()) call read_grid(input, n_u, n_v, n_frames, status)
     if (status%ok()) call read_geometry_config(input, surface, status)
-    if (.not. status%ok()) return
+    if (.not. status%ok() .or. run%check_only) return
     call file%create(trim(run%output), status)
     if (.not. status%ok()) return
     call log_info('geometry: ' // surface%describe())
@@ -76,26 +78,21 @@ contains
   end subroutine run_geometry
 
   !> &grid: resolution of the written surface grid and of the centerline samples.
-  subroutine read_grid(input, n_u_out, n_v_out, n_frames_out, status)
+  subroutine read_grid(input, n_u, n_v, n_frames, status)
     type(input_text_t), intent(in) :: input
-    integer, intent(out) :: n_u_out, n_v_out, n_frames_out
+    integer, intent(out) :: n_u, n_v, n_frames
     type(status_t), intent(inout) :: status
-    integer :: n_u, n_v, n_frames, ios
-    character(len=256) :: msg
-    namelist /grid/ n_u, n_v, n_frames
+    type(group_reader_t) :: r
     n_u = 400; n_v = 48; n_frames = 400
-    read (input%lines, nml=grid, iostat=ios, iomsg=msg)
-    if (ios > 0) then
-      call namelist_read_error(input, 'grid', msg, [character(len=8) :: 'n_u', 'n_v', 'n_frames'], status)
-      return
-    end if
-    if (n_u < 2 .or. n_u > 100000) call invalid(input, 'grid', 'n_u', format_integer(n_u), &
-                                                'must lie in [2, 100000]', status)
-    if (status%ok() .and. (n_v < 2 .or. n_v > 10000)) call invalid(input, 'grid', 'n_v', &
-                                                format_integer(n_v), 'must lie in [2, 10000]', status)
-    if (status%ok() .and. (n_frames < 2 .or. n_frames > 100000)) call invalid(input, 'grid', 'n_frames', &
-                                                format_integer(n_frames), 'must lie in [2, 100000]', status)
-    n_u_out = n_u; n_v_out = n_v; n_frames_out = n_frames
+    call open_group(input, 'grid', [character(len=8) :: 'n_u', 'n_v', 'n_frames'], r, status)
+    call r%get('n_u', n_u, 2, 100000, status)
+    call r%get('n_v', n_v, 2, 10000, status)
+    call r%get('n_frames', n_frames, 2, 100000, status)
+    ! x, y, z of every grid point are held in memory at once
+    if (status%ok() .and. real(n_u, wp)*n_v > max_grid_points) &
+      call r%invalid('n_u, n_v', format_integer(n_u)//', '//format_integer(n_v), 'the grid would have '// &
+                     format_real(real(n_u, wp)*n_v)//' points, more than '//format_real(max_grid_points)// &
+                     ' ('//format_integer(nint(max_grid_points*24/1024**2))//' MB of coordinates)', status)
   end subroutine read_grid
 
   subroutine write_grid(file, surface, n_u, n_v, status)

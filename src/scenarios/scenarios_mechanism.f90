@@ -8,9 +8,9 @@ module scenarios_mechanism
   use numerics_ode, only: ode_stats_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_recorder, only: mechanism_series_t, integrate_mechanism
-  use io_input, only: input_text_t, format_real
+  use io_input, only: input_text_t, format_real, mark_input_failure
   use io_run_config, only: run_config_t
-  use io_solver_config, only: solver_config_t
+  use io_solver_config, only: solver_config_t, check_output_count
   use io_mechanism_config, only: write_mechanism_series
   use io_hdf5, only: result_file_t
   use io_summary, only: summary_t, degrees, engineering
@@ -44,8 +44,13 @@ contains
     call sys%mechanism%check_start(y0(1:sys%mechanism%f), status)
     if (.not. status%ok()) then
       call prefix_status(status, input%name//': '//scenario)
+      call mark_input_failure(status)
       return
     end if
+    ! numbers stored per output time (mechanism_series_t; every element counted as a body)
+    call check_output_count(input, solver, solver%duration, 5 + 3*sys%mechanism%f + 2*sys%mechanism%r + &
+                            18*sys%mechanism%n_elements + 10*size(sys%mechanism%contacts), scenario, status)
+    if (.not. status%ok() .or. run%check_only) return
     call file%create(trim(run%output), status)
     if (.not. status%ok()) return
     call log_info(scenario//': '//format_real(solver%duration)//' s, output every '// &

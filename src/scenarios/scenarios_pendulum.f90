@@ -4,7 +4,7 @@ module scenarios_pendulum
   use base_status, only: status_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: build_pendulum
-  use io_input, only: input_text_t, check_known_groups
+  use io_input, only: input_text_t, check_known_groups, mark_input_failure
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_mechanism_config, only: pendulum_config_t, read_pendulum_config
@@ -30,6 +30,7 @@ contains
     if (status%ok()) call read_solver_config(input, solver, status)
     if (status%ok()) call read_pendulum_config(input, config, status)
     if (status%ok()) call build_pendulum(config%params, sys%mechanism, status)
+    call mark_input_failure(status)
     if (.not. status%ok()) return
     n = config%params%links
     call run_mechanism('pendulum', input, run, solver, sys, [config%theta0(1:n), config%dtheta0(1:n)], &

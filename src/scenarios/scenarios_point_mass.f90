@@ -8,10 +8,11 @@ module scenarios_point_mass
   use numerics_ode, only: ode_integrator_t, ode_stats_t
   use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t, &
                                       FRICTION_NONE, FRICTION_VISCOUS, FRICTION_COULOMB
-  use io_input, only: input_text_t, check_known_groups, invalid, format_real
+  use io_input, only: input_text_t, check_known_groups, invalid, format_real, mark_input_failure
   use io_run_config, only: run_config_t
-  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
   use io_surface_config, only: read_surface_config
+  use io_geometry_config, only: geometry_groups
   use io_point_mass_config, only: point_mass_config_t, read_point_mass_config
   use io_hdf5, only: result_file_t, units_per_second
   use io_summary, only: summary_t, standard_g, engineering
@@ -20,8 +21,10 @@ module scenarios_point_mass
   private
   public :: run_point_mass, build_point_mass, point_mass_groups
 
-  character(len=*), parameter :: point_mass_groups(4) = [character(len=10) :: &
-    'run', 'solver', 'surface', 'point_mass']
+  character(len=*), parameter :: point_mass_groups(10) = [character(len=14) :: &
+    'run', 'solver', 'surface', 'point_mass', geometry_groups]
+  !> numbers stored per output time (series_t)
+  integer, parameter :: values_per_output = 31
 
   !> Time series of one run, preallocated for every output time.
   type :: series_t
@@ -47,6 +50,7 @@ contains
     if (status%ok()) call read_solver_config(input, solver, status)
     if (status%ok()) call read_surface_config(input, model%surface, status)
     if (status%ok()) call read_point_mass_config(input, config, status)
+    call mark_input_failure(status)
     if (.not. status%ok()) return
     if (.not. model%surface%in_domain(config%u0, config%v0)) then
       call invalid(input, 'point_mass', 'u0, v0', format_real(config%u0)//', '//format_real(config%v0), &
@@ -87,7 +91,8 @@ contains
     logical :: complete
 
     call build_point_mass(input, solver, model, y0, status)
-    if (.not. status%ok()) return
+    call check_output_count(input, solver, solver%duration, values_per_output, 'point_mass', status)
+    if (.not. status%ok() .or. run%check_only) return
 
     ! Open the result file before any work, so an unwritable path stops the run now.
     call file%create(trim(run%output), status)

@@ -4,7 +4,7 @@ module scenarios_registry
   use, intrinsic :: iso_fortran_env, only: output_unit
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_version, only: slidesim_version
-  use io_input, only: input_text_t, load_input_file, check_choice, group_present, invalid
+  use io_input, only: input_text_t, load_input_file, group_present, invalid
   use io_builtin_inputs, only: builtin_input
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
@@ -58,20 +58,32 @@ contains
     end do
   end subroutine print_scenarios
 
-  subroutine run_input_file(path, status, output)
+  !> Reads the input at `path` ('-': standard input; 'builtin:<name>'),
+  !> applies the command-line overrides (--set group%variable=value) and runs
+  !> it. `cli` carries the command line's settings: output ('' = &run output),
+  !> check_only, summary_json.
+  subroutine run_input_file(path, status, cli, overrides)
     character(len=*), intent(in) :: path
     type(status_t), intent(inout) :: status
-    character(len=*), intent(in), optional :: output
+    type(run_config_t), intent(in), optional :: cli
+    character(len=*), intent(in), optional :: overrides(:)
     type(input_text_t) :: input
+    integer :: i
     call load_input_file(path, input, status)
-    if (status%ok()) call run_input(input, status, output)
+    if (present(overrides)) then
+      do i = 1, size(overrides)
+        if (status%ok()) call input%override(trim(overrides(i)), status)
+      end do
+    end if
+    if (status%ok()) call run_input(input, status, cli)
   end subroutine run_input_file
 
   !> Runs the built-in default input, inputs/default.nml compiled into the program.
-  subroutine run_default(status, output)
+  subroutine run_default(status, cli, overrides)
     type(status_t), intent(inout) :: status
-    character(len=*), intent(in), optional :: output
-    call run_input_file('builtin:default', status, output)
+    type(run_config_t), intent(in), optional :: cli
+    character(len=*), intent(in), optional :: overrides(:)
+    call run_input_file('builtin:default', status, cli, overrides)
   end subroutine run_default
 
   !> The text of the built-in default input (for --default-input).
@@ -81,22 +93,32 @@ contains
     call builtin_input('default', text, found)
   end function default_input
 
-  subroutine run_input(input, status, output)
+  subroutine run_input(input, status, cli)
     type(input_text_t), intent(in) :: input
     type(status_t), intent(inout) :: status
-    character(len=*), intent(in), optional :: output
+    type(run_config_t), intent(in), optional :: cli
     type(run_config_t) :: run
 
+    if (size(input%groups) == 0) then
+      call set_status(status, STATUS_INVALID_INPUT, input%name//': the input is empty: it has no namelist '// &
+                      'groups (slidesim --default-input prints a complete example)')
+      return
+    end if
     if (.not. group_present(input, 'run')) then
       call set_status(status, STATUS_INVALID_INPUT, input%name//': no &run group; every input names its '// &
                       'scenario there (slidesim --default-input prints a complete example)')
       return
     end if
-    call read_run_config(input, run, status)
+    if (present(cli)) then
+      run%check_only = cli%check_only
+      if (allocated(cli%summary_json)) run%summary_json = cli%summary_json
+    end if
+    call read_run_config(input, scenario_names, run, status)
     if (.not. status%ok()) return
-    if (present(output)) run%output = output
-    call check_choice(input, 'run', 'scenario', run%scenario, scenario_names, status)
-    if (status%ok()) call check_output_path(input, run%output, status)
+    if (present(cli)) then
+      if (len_trim(cli%output) > 0) run%output = cli%output
+    end if
+    call check_output_path(input, run%output, status)
     if (.not. status%ok()) return
     select case (trim(run%scenario))
     case ('point_mass')
@@ -112,5 +134,7 @@ contains
     case ('water')
       call run_water(input, run, status)
     end select
+    if (status%ok() .and. run%check_only) write (output_unit, '(a)') input%name//': input ok (scenario '// &
+      trim(run%scenario)//'; results would go to '//trim(run%output)//')'
   end subroutine run_input
 end module scenarios_registry

@@ -9,17 +9,19 @@ module scenarios_sled
   use geometry_surface, only: surface_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: build_sled
-  use io_input, only: input_text_t, check_known_groups, invalid, format_real
+  use io_input, only: input_text_t, check_known_groups, invalid, format_real, mark_input_failure
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_config, only: read_surface_config
   use io_mechanism_config, only: sled_config_t, read_sled_config
+  use io_geometry_config, only: geometry_groups
   use scenarios_mechanism, only: run_mechanism
   implicit none (type, external)
   private
   public :: run_sled, sled_groups
 
-  character(len=*), parameter :: sled_groups(4) = [character(len=8) :: 'run', 'solver', 'surface', 'sled']
+  character(len=*), parameter :: sled_groups(10) = [character(len=14) :: 'run', 'solver', 'surface', 'sled', &
+    geometry_groups]
 
 contains
 
@@ -45,6 +47,7 @@ contains
       return
     end if
     call build_sled(config%params, surface, config%q0, sys%mechanism, status)
+    call mark_input_failure(status)
     if (.not. status%ok()) return
     call surface%parameter_units(u_units, v_units)
     q_units(1) = u_units; q_units(2) = v_units; q_units(3) = 'rad'   ! u, v, phi

@@ -5,7 +5,7 @@
 module scenarios_water
   use, intrinsic :: iso_fortran_env, only: output_unit
   use base_kinds, only: wp
-  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use base_log, only: log_info, log_warning
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_tube, only: tube_surface_t
@@ -13,10 +13,11 @@ module scenarios_water
   use water_channel, only: channel_t, new_channel
   use water_streamline, only: streamline_t, CORRECTION_FULL, CORRECTION_NO_RADIUS
   use water_flow, only: water_series_t, water_table_t, water_initial_state, simulate_water, &
-    water_table, outcome_name, START_EDGES
-  use io_input, only: input_text_t, check_known_groups, group_present, invalid, format_real
+    water_table, outcome_name, OUTCOME_DURATION, START_EDGES
+  use io_input, only: input_text_t, check_known_groups, group_present, invalid, format_real, mark_input_failure
   use io_run_config, only: run_config_t
-  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
+  use io_geometry_config, only: geometry_groups
   use io_surface_config, only: read_surface_config
   use io_water_config, only: water_config_t, read_water_config, read_channel_config
   use io_hdf5, only: result_file_t, units_per_second
@@ -27,8 +28,16 @@ module scenarios_water
   private
   public :: run_water, build_water, water_groups
 
-  character(len=*), parameter :: water_groups(5) = [character(len=8) :: 'run', 'solver', 'surface', &
-    'channel', 'water']
+  character(len=*), parameter :: water_groups(11) = [character(len=14) :: 'run', 'solver', 'surface', &
+    'channel', 'water', geometry_groups]
+  !> Without &solver duration the water runs to the end of the slide; as a
+  !> safety bound it stops (failed) after this many times the time the slide
+  !> takes at min_speed.
+  real(wp), parameter :: safety_factor = 10
+  !> numbers stored per output time (water_series_t) and per table row (water_table_t)
+  integer, parameter :: values_per_output = 40, values_per_row = 10
+  !> most rows of the table over arc length
+  real(wp), parameter :: max_table_rows = 1e6_wp
   integer, parameter :: grid_n_u = 400, grid_n_v = 48   ! the written surface grid
 
 contains
@@ -60,6 +69,7 @@ contains
     end if
     if (group_present(input, 'surface')) then
       call read_surface_config(input, surface, status)
+      call mark_input_failure(status)
       if (.not. status%ok()) return
       select type (surface)
       type is (tube_surface_t)
@@ -108,6 +118,12 @@ contains
       return
     end if
     total = model%channel%arc_length(u_max)
+    if (total/config%table_step > max_table_rows) then
+      call invalid(input, 'water', 'table_step', format_real(config%table_step), 'the table over the '// &
+                   format_real(total)//' m of slide would have more than '//format_real(max_table_rows)// &
+                   ' rows; raise table_step', status)
+      return
+    end if
     allocate (model%stations(size(config%stations)))
     do i = 1, size(config%stations)
       if (config%stations(i) > total) then
@@ -116,6 +132,7 @@ contains
         return
       end if
       call model%channel%parameter_at_length(config%stations(i), model%stations(i), status)
+      call mark_input_failure(status)
       if (.not. status%ok()) return
     end do
     call water_initial_state(model, config%start, y0, status)
@@ -127,6 +144,7 @@ contains
     ! Water in a slide runs at a few m/s; a start far beyond that is almost
     ! always a unit mistake (flow_rate in l/s instead of m^3/s, a height in mm).
     call model%channel%evaluate(y0(1), y0(2), 1, start_point, status)
+    call mark_input_failure(status)
     if (.not. status%ok()) return
     start_speed = norm2(y0(3)*start_point%ru + y0(4)*start_point%rv)
     if (start_speed > plausible_speed) call log_warning(input%name//': &water: the start speed is '// &
@@ -145,23 +163,47 @@ contains
     type(water_table_t) :: table
     type(result_file_t) :: file
     type(status_t) :: run_status, write_status
-    real(wp) :: y0(7), cpu_start, cpu_end
+    real(wp) :: y0(7), cpu_start, cpu_end, t_end, total, u_min, u_max
     logical :: complete
-    character(len=:), allocatable :: message
+    character(len=:), allocatable :: message, done
 
     call build_water(input, solver, config, model, y0, status)
     if (.not. status%ok()) return
+    call model%channel%u_range(u_min, u_max)
+    total = model%channel%arc_length(u_max)
+    if (solver%duration_given) then
+      t_end = solver%duration
+      call check_output_count(input, solver, t_end, values_per_output, 'water', status)
+    else
+      t_end = safety_factor*total/config%min_speed
+    end if
+    if (.not. status%ok() .or. run%check_only) return
     call file%create(trim(run%output), status)
     if (.not. status%ok()) return
     call log_info('water: '//model%channel%describe()//', Q = '//format_real(model%flow_rate)//' m^3/s')
     call cpu_time(cpu_start)
-    call simulate_water(model, y0, solver%options, solver%duration, solver%output_step, series, &
+    call simulate_water(model, y0, solver%options, t_end, solver%output_step, series, &
                         run_status, edges=config%edges)
+    done = 'ok: '//outcome_name(series%outcome)
+    if (run_status%ok() .and. series%outcome == OUTCOME_DURATION) then
+      if (solver%duration_given) then
+        ! the user's bound: what was asked for, but say that the slide's end was not reached
+        done = 'ok: stopped at &solver duration = '//format_real(t_end)//' s, '// &
+               format_real(series%arc_length(series%n))//' m down the '//format_real(total)// &
+               ' m slide (its end not reached)'
+      else
+        call set_status(run_status, STATUS_DOMAIN, 'the water did not reach the end of the slide within t = '// &
+                        format_real(t_end)//' s ('//format_real(safety_factor)//' x slide length / min_speed), '// &
+                        'at '//format_real(series%arc_length(series%n))//' m of '//format_real(total)// &
+                        ' m; give &solver duration to bound the run')
+      end if
+    end if
     call water_table(series, model, config%table_step, table)
     call cpu_time(cpu_end)
     call write_results(file, input, run, model, config, series, table, cpu_end - cpu_start, write_status)
     complete = run_status%ok() .and. write_status%ok()
-    message = write_status%text()
+    message = done
+    if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
     call file%finish(complete, message, write_status)
     call report(model, series, cpu_end - cpu_start, file%final_path(), run, complete, message, write_status)

@@ -76,6 +76,9 @@ module water_flow
       beta(:), v_left(:), v_right(:)
   end type water_table_t
 
+  !> Most output samples of one run (about 320 bytes each): the memory bound.
+  integer, parameter :: max_samples = 6000000
+
 contains
 
   pure function outcome_name(outcome) result(text)
@@ -251,8 +254,9 @@ contains
     call model%channel%u_range(u_min, u_max)
     model%u_end = min(model%u_end, u_max)   ! the slide ends at the channel's end at the latest
     series%flow_rate = model%flow_rate
-    n_out = ceiling(duration/output_step - 1e-9_wp)
-    call allocate_series(series, n_out + 2)
+    n_out = ceiling(min(duration/output_step, real(max_samples, wp)) - 1e-9_wp)
+    ! the run may end long before duration (at the slide's end): grown in record as needed
+    call allocate_series(series, min(n_out + 2, 4096))
     nroots = model%root_count()
     allocate (root_index(nroots))
     allocate (series%stations(nroots - ROOT_FIRST_STATION + 1))
@@ -389,6 +393,37 @@ contains
     s%left_edge_rate = 0; s%right_edge_rate = 0
   end subroutine allocate_series
 
+  !> Twice the room for samples, the recorded ones kept.
+  subroutine grow_series(s)
+    type(water_series_t), intent(inout) :: s
+    type(water_series_t) :: g
+    integer :: n
+    n = s%n
+    call allocate_series(g, 2*size(s%time))
+    g%time(:n) = s%time(:n); g%u(:n) = s%u(:n); g%v(:n) = s%v(:n); g%du(:n) = s%du(:n); g%dv(:n) = s%dv(:n)
+    g%arc_length(:n) = s%arc_length(:n); g%position(:, :n) = s%position(:, :n)
+    g%velocity(:, :n) = s%velocity(:, :n); g%speed(:n) = s%speed(:n); g%height(:n) = s%height(:n)
+    g%width(:n) = s%width(:n); g%area(:n) = s%area(:n); g%radius(:n) = s%radius(:n); g%beta(:n) = s%beta(:n)
+    g%alpha(:n) = s%alpha(:n); g%normal_force(:n) = s%normal_force(:n)
+    g%friction_force(:n) = s%friction_force(:n); g%curvature(:n) = s%curvature(:n); g%froude(:n) = s%froude(:n)
+    g%kinetic(:n) = s%kinetic(:n); g%potential(:n) = s%potential(:n); g%friction_work(:n) = s%friction_work(:n)
+    g%correction_work(:n) = s%correction_work(:n); g%left_edge(:, :n) = s%left_edge(:, :n)
+    g%right_edge(:, :n) = s%right_edge(:, :n); g%left_point(:, :n) = s%left_point(:, :n)
+    g%right_point(:, :n) = s%right_point(:, :n); g%edge_solved(:n) = s%edge_solved(:n)
+    call move_alloc(g%time, s%time); call move_alloc(g%u, s%u); call move_alloc(g%v, s%v)
+    call move_alloc(g%du, s%du); call move_alloc(g%dv, s%dv); call move_alloc(g%arc_length, s%arc_length)
+    call move_alloc(g%position, s%position); call move_alloc(g%velocity, s%velocity)
+    call move_alloc(g%speed, s%speed); call move_alloc(g%height, s%height); call move_alloc(g%width, s%width)
+    call move_alloc(g%area, s%area); call move_alloc(g%radius, s%radius); call move_alloc(g%beta, s%beta)
+    call move_alloc(g%alpha, s%alpha); call move_alloc(g%normal_force, s%normal_force)
+    call move_alloc(g%friction_force, s%friction_force); call move_alloc(g%curvature, s%curvature)
+    call move_alloc(g%froude, s%froude); call move_alloc(g%kinetic, s%kinetic)
+    call move_alloc(g%potential, s%potential); call move_alloc(g%friction_work, s%friction_work)
+    call move_alloc(g%correction_work, s%correction_work); call move_alloc(g%left_edge, s%left_edge)
+    call move_alloc(g%right_edge, s%right_edge); call move_alloc(g%left_point, s%left_point)
+    call move_alloc(g%right_point, s%right_point); call move_alloc(g%edge_solved, s%edge_solved)
+  end subroutine grow_series
+
   subroutine record(model, t, y, s, with_edges, status)
     type(streamline_t), intent(in) :: model
     real(wp), intent(in) :: t, y(:)
@@ -407,7 +442,12 @@ contains
       if (status%ok()) status = st
       return
     end if
-    if (s%n >= size(s%time)) return
+    if (s%n >= max_samples) then
+      if (status%ok()) call set_status(status, STATUS_DOMAIN, 'more than '//format_short(real(max_samples, wp))// &
+        ' output samples (about 2 GB): raise &solver output_step or bound the run by &solver duration')
+      return
+    end if
+    if (s%n >= size(s%time)) call grow_series(s)
     s%n = s%n + 1
     i = s%n
     s%time(i) = t

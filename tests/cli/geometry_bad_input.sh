@@ -32,10 +32,10 @@ circle="&cross_section kind = 'circle', radius = 0.5 /"
 
 printf "%s\n%s\n&centerline kind = 'points', n_points = 3, points = 0,0,0, 1,0,0, 2,0,0 /\n%s\n" \
   "$run" "$tube" "$circle" > "$work/too_few_points.nml"
-expect too_few_points 1 too_few_points.nml '&centerline' n_points 'too few centerline points'
+expect too_few_points 1 too_few_points.nml:3 '&centerline' 'n_points = 3' 'must be a whole number in [4, 2000]'
 
 printf "%s\n%s\n&centerline kind = 'points', n_points = 2500 /\n%s\n" "$run" "$tube" "$circle" > "$work/too_many_points.nml"
-expect too_many_points 1 too_many_points.nml '&centerline' 'n_points = 2500' 'more than the limit of 2000 centerline points'
+expect too_many_points 1 too_many_points.nml:3 '&centerline' 'n_points = 2500' 'must be a whole number in [4, 2000]'
 
 printf "%s\n%s\n&centerline kind = 'points', n_points = 6, points = 0,0,0, 1,0,0, 2,0,0, 3,0,0 /\n%s\n" \
   "$run" "$tube" "$circle" > "$work/points_missing.nml"
@@ -47,7 +47,7 @@ expect points_extra 1 points_extra.nml '&centerline' 'n_points = 4' '5 points we
 
 printf "%s\n%s\n&centerline kind = 'points', n_points = 4, points = 0,0,0, 1,0,0, 2,0,0, 3,0 /\n%s\n" \
   "$run" "$tube" "$circle" > "$work/points_partial.nml"
-expect points_partial 1 points_partial.nml '&centerline' 'points = 11 numbers' '3 coordinates (x, y, z) per point'
+expect points_partial 1 points_partial.nml:3 '&centerline' 'points gives 11 numbers' 'not a multiple of 3'
 
 printf "%s\n%s\n&centerline kind = 'points', n_points = 4, points = 0,0,0, 1,0,0, 2,0,0, 3,0,0, horizon_points = 0,0,1, 0,0,1 /\n%s\n" \
   "$run" "$tube" "$circle" > "$work/horizon_points_missing.nml"
@@ -84,7 +84,7 @@ expect self_intersecting_profile 1 self_intersecting_profile.nml '&cross_section
 
 printf "%s\n%s\n&centerline kind = 'line' /\n&cross_section kind = 'circle', radius = -0.5 /\n" \
   "$run" "$tube" > "$work/negative_radius.nml"
-expect negative_radius 1 negative_radius.nml '&cross_section' 'radius(1)' '-0.5' '> 0'
+expect negative_radius 1 negative_radius.nml '&cross_section' 'radius(1) = -0.5' 'in [0.001, 100] (m)'
 
 cat > "$work/element_radius_zero.nml" <<NML
 $run
@@ -102,7 +102,7 @@ cat > "$work/element_values_extra.nml" <<NML
 $run
 &slide_elements n_elements = 2, kind = 'straight', 'curve', length = 3.0, 0.0, 4.0, radius = 0.0, 6.0, angle_deg = 0.0, 90.0 /
 NML
-expect element_values_extra 1 element_values_extra.nml '&slide_elements' 'length = 3 values' 'more values than n_elements = 2'
+expect element_values_extra 1 element_values_extra.nml '&slide_elements' 'length = 3.0, 0.0, 4.0' '3 values are more than n_elements = 2'
 
 printf "%s\n%s\n&centerline kind = 'line' /\n&cross_section n_sections = 2, kind = 'circle', radius = 0.5, 1.0 /\n" \
   "$run" "$tube" > "$work/sections_missing.nml"
@@ -110,11 +110,11 @@ expect sections_missing 1 sections_missing.nml '&cross_section' 'n_sections = 2'
 
 printf "%s\n%s\n&centerline kind = 'line' /\n&cross_section kind = 'circle', radius = 0.5, 0.6 /\n" \
   "$run" "$tube" > "$work/section_values_extra.nml"
-expect section_values_extra 1 section_values_extra.nml '&cross_section' 'radius = 2 values' 'more values than n_sections = 1'
+expect section_values_extra 1 section_values_extra.nml '&cross_section' 'radius = 0.5, 0.6' '2 values are more than n_sections = 1'
 
 printf "%s\n%s\n&centerline kind = 'line' /\n&cross_section n_sections = 2, kind = 'circle', 'circle', radius = 0.5, 1.0, transition_midpoint = 4, 6, transition_end = 5 /\n" \
   "$run" "$tube" > "$work/transitions_extra.nml"
-expect transitions_extra 1 transitions_extra.nml '&cross_section' 'transition_midpoint = 2 values' 'needs exactly 1'
+expect transitions_extra 1 transitions_extra.nml '&cross_section' 'transition_midpoint = 4, 6' 'more than n_sections - 1 = 1 transitions'
 
 printf "%s\n%s\n&centerline kind = 'line' /\n&cross_section kind = 'profile', n_profile = 6, profile_y = 0, 1, 1, 0, profile_z = 0, 0, 1, 1 /\n" \
   "$run" "$tube" > "$work/profile_missing.nml"
@@ -126,7 +126,7 @@ expect patches_missing 1 patches_missing.nml '&blended' 'n_patches = 3' 'only 2 
 
 printf "%s\n&geometry kind = 'blended' /\n&blended n_patches = 2, kind = 'elliptic_cylinder', 'elliptic_cylinder', u_max = 1, 2, 3 /\n" \
   "$run" > "$work/patch_values_extra.nml"
-expect patch_values_extra 1 patch_values_extra.nml '&blended' 'u_max = 3 values' 'more values than n_patches = 2'
+expect patch_values_extra 1 patch_values_extra.nml '&blended' 'u_max = 1, 2, 3' '3 values are more than n_patches = 2'
 
 cat > "$work/unknown_element.nml" <<NML
 $run

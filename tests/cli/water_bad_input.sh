@@ -30,15 +30,15 @@ head="&run scenario = 'water', output = 'w.h5' /
 mk() { printf "%s\n%s\n" "$head" "$2" > "$work/$1.nml"; }
 
 mk negative_f1 "&water f1 = -0.01 /"
-expect negative_f1 1 negative_f1.nml '&water' 'f1 = -0.01' '>= 0'
+expect negative_f1 1 negative_f1.nml '&water' 'f1 = -0.01' 'in [0, 1000] (kg/m)'
 mk negative_f3 "&water f3 = -1 /"
-expect negative_f3 1 negative_f3.nml '&water' 'f3 = -1' '>= 0'
+expect negative_f3 1 negative_f3.nml '&water' 'f3 = -1' 'in [0, 1000] (kg m)'
 mk zero_q "&water flow_rate = 0 /"
-expect zero_q 1 zero_q.nml '&water' 'flow_rate = 0' '> 0'
+expect zero_q 1 zero_q.nml '&water' 'flow_rate = 0' 'in [1.0E-06, 1] (m^3/s)'
 mk negative_q "&water flow_rate = -0.004, start = 'height', height0 = 0.01 /"
 expect negative_q 1 '&water' 'flow_rate = -0.004'
 mk zero_speed "&water start = 'speed', speed0 = 0 /"
-expect zero_speed 1 '&water' 'speed0 = 0' '> 0'
+expect zero_speed 1 '&water' 'speed0 = 0' 'in [0.001, 100] (m/s)'
 mk start_off_slide "&water u0 = 25 /"
 expect start_off_slide 1 '&water' 'u0 = 25' 'on the slide'
 mk height_over_tube "&water start = 'height', height0 = 1.2 /"

@@ -9,9 +9,11 @@ program test_blended_bspline
   use base_status, only: status_t
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_bspline_surface, only: bspline_surface_t, bspline_grid, bspline_scattered, &
-                                      bspline_parametric, bspline_from_csv
+                                      bspline_parametric, bspline_from_table
   use geometry_blended_surface, only: blended_surface_t, blend_patch_t, new_blended_surface
   use geometry_placed_surface, only: placed_surface_t
+  use io_csv, only: read_csv_table
+  use io_input, only: in_range
   use testing, only: check, check_close, check_close_array, finish_tests
   implicit none (type, external)
 
@@ -27,6 +29,7 @@ program test_blended_bspline
   type(surface_point_t) :: p
   real(wp) :: x(11), y(9), z(11, 9), xs(300), ys(300), zs(300), u(25), v(6), pts(3, 25, 6)
   real(wp) :: a, b, c, d, uu, vv, worst
+  real(wp), allocatable :: table(:, :)
   integer :: i, j, unit
 
   ! --- quadratic graph z = (x^2 + 2 y^2)/4 on a grid, quintic interpolation: exact
@@ -101,17 +104,20 @@ program test_blended_bspline
   end do
   close (unit)
   st = status_t()
-  call bspline_from_csv('test_blended_bspline_grid.csv', 'grid', 0.0_wp, 5, [.false., .false.], fromcsv, st)
+  call read_csv_table('test_blended_bspline_grid.csv', 3, 3, 1000, [(in_range(-1e3_wp, 1e3_wp, 'm'), i = 1, 3)], &
+                      table, st)
+  call check(st%ok() .and. size(table, 2) == 99, 'CSV read: '//st%text())
+  call bspline_from_table('grid', table, 0.0_wp, 5, [.false., .false.], fromcsv, st)
   call check(st%ok(), 'grid from CSV: ' // st%text())
   call fromcsv%evaluate(0.3_wp, -0.2_wp, 0, p, st)
   call check_close(p%r(3), (0.09_wp + 0.08_wp)/4, 0.0_wp, 1e-12_wp, 'grid from CSV reproduces the quadratic')
   st = status_t()
-  call bspline_from_csv('test_blended_bspline_grid.csv', 'scattered', 1e-8_wp, 3, [.false., .false.], fromcsv, st)
+  call bspline_from_table('scattered', table, 1e-8_wp, 3, [.false., .false.], fromcsv, st)
   call check(st%ok(), 'scattered from CSV: ' // st%text())
   open (newunit=unit, file='test_blended_bspline_grid.csv', status='old')
   close (unit, status='delete')
   st = status_t()
-  call bspline_from_csv('no_such_file.csv', 'grid', 0.0_wp, 3, [.false., .false.], fromcsv, st)
+  call read_csv_table('no_such_file.csv', 3, 3, 1000, [(in_range(-1e3_wp, 1e3_wp, 'm'), i = 1, 3)], table, st)
   call check(.not. st%ok() .and. index(st%text(), 'no_such_file.csv') > 0, 'missing CSV named: ' // st%text())
 
   ! --- blend of two B-spline patches (the grid graph and a copy raised by 5 cm)

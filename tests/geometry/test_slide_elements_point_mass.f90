@@ -61,8 +61,8 @@ contains
     logical :: inside, at_root, ended
 
     call input_from_text('<test>', '&run scenario = ''point_mass'' /' // nl // &
-                         '&solver method = ''adams'', rtol = 1e-12, atol = 1e-12 /' // nl // groups, input)
-    call build_point_mass(input, solver, model, y0, st)
+                         '&solver method = ''adams'', rtol = 1e-12, atol = 1e-12 /' // nl // groups, input, st)
+    if (st%ok()) call build_point_mass(input, solver, model, y0, st)
     call check(st%ok(), name // ': built: ' // st%text())
     if (.not. st%ok()) return
     call model%state(y0, state, st)

@@ -9,12 +9,13 @@ program test_io
   use base_kinds, only: wp
   use base_status, only: status_t, STATUS_INVALID_INPUT
   use io_input, only: input_text_t, input_from_text, check_positive, check_choice, format_real, &
-                      check_known_groups, group_present
+                      check_known_groups, group_present, group_reader_t, open_group, in_range
   use io_hdf5, only: result_file_t
   use testing, only: check, check_close_array, finish_tests
   implicit none (type, external)
 
   call input_text_and_checks()
+  call namelist_language()
   call number_formatting()
   call result_file_life_cycle()
   call finish_tests('test_io')
@@ -24,19 +25,20 @@ contains
   subroutine input_text_and_checks()
     type(input_text_t) :: input
     type(status_t) :: status
-    call input_from_text('case.nml', '&run'//new_line('a')//'/'//new_line('a')//'&Surface a=1 /', input)
-    call check(size(input%lines) == 3, 'input text split into lines')
+    character(len=1), parameter :: nl = new_line('a')
+    call input_from_text('case.nml', '&run'//nl//'/'//nl//'&Surface a=1 /', input, status)
+    call check(status%ok() .and. size(input%groups) == 2, 'input text parsed into groups: '//status%text())
     call check(group_present(input, 'surface'), 'group found case-insensitively')
     call check(.not. group_present(input, 'solver'), 'absent group not found')
     call check_known_groups(input, [character(len=8) :: 'run', 'surface'], status)
     call check(status%ok(), 'known groups accepted')
     call check_known_groups(input, [character(len=8) :: 'run'], status)
     call check(status%code == STATUS_INVALID_INPUT .and. index(status%text(), '&surface') > 0 &
-               .and. index(status%text(), 'case.nml') > 0, 'unknown group named: '//status%text())
+               .and. index(status%text(), 'case.nml:3') > 0, 'unknown group named with its line: '//status%text())
     status = status_t()
     call check_positive(input, 'surface', 'a', -2.5_wp, 'm', status)
-    call check(index(status%text(), 'case.nml: &surface: a = -2.5 is not allowed: must be a finite number > 0 (m)') > 0, &
-               'positive check message: '//status%text())
+    call check(index(status%text(), 'case.nml:3: &surface: a = -2.5 is not allowed: must be a finite number > 0 (m)') &
+               > 0, 'positive check message: '//status%text())
     status = status_t()
     call check_choice(input, 'surface', 'kind', 'Plane', [character(len=5) :: 'plane', 'torus'], status)
     call check(status%ok(), 'choices compare case-insensitively')
@@ -44,6 +46,140 @@ contains
     call check(index(status%text(), "kind = 'cone'") > 0 .and. index(status%text(), 'plane torus') > 0, &
                'choice message lists what is allowed: '//status%text())
   end subroutine input_text_and_checks
+
+  !> The lexer: what it reads, and every kind of text it refuses with the line.
+  subroutine namelist_language()
+    type(input_text_t) :: input
+    type(status_t) :: status
+    type(group_reader_t) :: r
+    character(len=1), parameter :: nl = new_line('a')
+    real(wp) :: x, v3(3), parts(4), columns(3, 4)
+    real(wp), allocatable :: list(:)
+    integer :: i, n_columns
+    logical :: flag
+    character(len=12) :: word
+    character(len=8) :: words(4)
+
+    call input_from_text('t.nml', '! a comment'//nl// &
+      '&g  x = 2.5e0, v3 = 3*1.5 ! the rest of the line'//nl// &
+      '   list = 1, 2,'//nl//'     3  , 4.0d1'//nl// &
+      '   word = ''it''''s'', flag = T'//nl// &
+      '   i = -7, parts(3) = 9, words(2:3) = "b", ''c'''//nl// &
+      '   columns(:, 2) = 1, 2, 3, columns(2, 4) = 8'//nl//'/'//nl, input, status)
+    call check(status%ok(), 'a valid input parses: '//status%text())
+    x = 0; v3 = 0; parts = -1; columns = 0; i = 0; flag = .false.; word = ''; words = 'z'
+    call open_group(input, 'g', [character(len=8) :: 'x', 'v3', 'list', 'word', 'flag', 'i', 'parts', 'words', &
+                    'columns'], r, status)
+    call r%get('x', x, in_range(0.0_wp, 10.0_wp, 'm'), status)
+    call r%get('v3', v3, in_range(0.0_wp, 10.0_wp, 'm'), status)
+    call r%get_list('list', list, 10, in_range(0.0_wp, 100.0_wp, 'm'), status)
+    call r%get('word', word, status)
+    call r%get('flag', flag, status)
+    call r%get('i', i, -10, 10, status)
+    call r%get_parts('parts', parts, in_range(0.0_wp, 10.0_wp, '1'), 'n = 4', status)
+    call r%get_parts('words', words, 'n = 4', status)
+    call r%get_columns('columns', columns, in_range(0.0_wp, 10.0_wp, 'm'), 'n = 4', n_columns, status)
+    call check(status%ok(), 'every value read: '//status%text())
+    call check(x == 2.5_wp .and. all(v3 == 1.5_wp), 'scalar and repeat count')
+    call check(size(list) == 4, 'list over two lines')
+    if (size(list) == 4) call check(all(list == [1.0_wp, 2.0_wp, 3.0_wp, 40.0_wp]), 'list values (d exponent)')
+    call check(word == 'it''s' .and. flag .and. i == -7, 'doubled quote, logical T, negative integer')
+    call check(all(parts == [-1.0_wp, -1.0_wp, 9.0_wp, -1.0_wp]), 'one element given, defaults kept')
+    call check(all(words == [character(len=8) :: 'z', 'b', 'c', 'z']), 'a section of texts')
+    call check(n_columns == 4 .and. all(columns(:, 2) == [1.0_wp, 2.0_wp, 3.0_wp]) .and. columns(2, 4) == 8, &
+               'columns by section and element')
+
+    ! refusals: file, line and what
+    call refused('&g x = 1'//nl//'  y = 2'//nl, 't.nml:2:', 'opened at line 1) is not closed', &
+                 'a file cut inside a group')
+    call refused('&g x = 0.866, 0.0, -', 't.nml:1:', 'cut short', 'a value cut at the end')
+    call refused('&g x = 1 /'//nl//'garbage here'//nl, 't.nml:2:', 'text outside a group', 'text between groups')
+    call refused('&g x = 1,, 2 /', 't.nml:1:', 'missing', 'a null value')
+    call refused('&g x = 3* /', 't.nml:1:', 'null', 'a repeated null value')
+    call refused('&g x = /', 't.nml:1:', 'without a value', 'no value')
+    call refused('&g x = ''open'//nl//'/', 't.nml:1:', 'not closed', 'an open quote')
+    call refused('&g x = 1'//nl//'&h y = 2 /', 't.nml:2:', 'before &h', 'a group inside a group')
+    call refused('&g x 1 /', 't.nml:1:', 'expected "="', 'no equals sign')
+    call refused('&g x = 1 /'//nl//'Name:'//achar(0)//'x', 't.nml:2:', 'not text', 'a binary file')
+    call refused('&g x(1,,2) = 2 /', 't.nml:1:', 'not understood', 'a bad subscript')
+    call refused('&g x(1 = 2 /', 't.nml:1:', 'without ")"', 'an open subscript')
+
+    ! refusals of values, by the reader
+    call value_refused('x = 1e308', 't.nml:1: &g: x = 1e308 is not allowed: must be a finite number in [0, 10] (m)')
+    call value_refused('x = -Inf', 'x = -Inf is not allowed')
+    call value_refused('x = NaN', 'x = NaN is not allowed')
+    call value_refused('x = 1e400', 'x = 1e400 is not allowed')
+    call value_refused('x = 2, 3', 'a single value is expected')
+    call value_refused('x = .true.', 'x = .true. is not allowed')
+    call value_refused('x = ''two''', "x = 'two' is not allowed")
+    call value_refused('i = 2147483648', 'i = 2147483648 is not allowed: must be a whole number in [-10, 10]')
+    call value_refused('i = 1e308', 'i = 1e308 is not allowed: must be a whole number')
+    call value_refused('i = 2.5', 'i = 2.5 is not allowed')
+    call value_refused('v3 = 1, 2', 'needs exactly 3 values, 2 given')
+    call value_refused('v3(4) = 1', 'index 1 must lie in [1, 3]')
+    call value_refused('list = 1, 2, -Inf', 'list(3) = -Inf is not allowed')
+    call value_refused('word = ''straight'//repeat('x', 292)//'''', 'is longer than the 12 characters allowed')
+    call value_refused('word = straight', 'must be a text in quotes')
+    call value_refused('flag = 1', 'flag = 1 is not allowed: must be .true. or .false.')
+    call value_refused('e308 = 1', 'unknown variable "e308"')
+    call value_refused('x = 1'//nl//'x = 2', 'x is given twice (also at line 1)')
+    call value_refused('parts = 1, 2, 3, 4, 5', '5 values are more than n = 4')
+
+    ! a command-line override replaces the text's value and is named in messages
+    call input_from_text('t.nml', '&g x = 1, list = 5 /', input, status)
+    call input%override('g%x=7', status)
+    call input%override('g%list(2)=6', status)
+    call check(status%ok(), 'overrides applied: '//status%text())
+    x = 0
+    call open_group(input, 'g', [character(len=8) :: 'x', 'list'], r, status)
+    call r%get('x', x, in_range(0.0_wp, 10.0_wp, 'm'), status)
+    call r%get_list('list', list, 10, in_range(0.0_wp, 100.0_wp, 'm'), status)
+    call check(status%ok() .and. x == 7, 'override replaces: '//status%text())
+    call check(size(list) == 2, 'override adds an element')
+    call input%override('g%x=70', status)
+    call open_group(input, 'g', [character(len=8) :: 'x', 'list'], r, status)
+    call r%get('x', x, in_range(0.0_wp, 10.0_wp, 'm'), status)
+    call check(index(status%text(), '--set g%x=70: &g: x = 70 is not allowed') == 1, &
+               'an overridden value is refused naming the --set argument: '//status%text())
+    status = status_t()
+    call input%override('gx=1', status)
+    call check(index(status%text(), 'group%variable=value') > 0, 'an override without % refused: '//status%text())
+    call check(index(input%text(), '! --set g%x=70') > 0, 'overrides kept with the text')
+
+  end subroutine namelist_language
+
+
+  subroutine refused(text, where, what, case)
+    character(len=*), intent(in) :: text, where, what, case
+    type(input_text_t) :: bad
+    type(status_t) :: st
+    call input_from_text('t.nml', text, bad, st)
+    call check(st%code == STATUS_INVALID_INPUT .and. index(st%text(), where) == 1 .and. &
+               index(st%text(), what) > 0, case//': '//st%text())
+  end subroutine refused
+
+  subroutine value_refused(assignment, message)
+    character(len=*), intent(in) :: assignment, message
+    type(input_text_t) :: bad
+    type(status_t) :: st
+    type(group_reader_t) :: rr
+    real(wp) :: xx, vv(3), pp(4)
+    real(wp), allocatable :: ll(:)
+    integer :: ii
+    logical :: ff
+    character(len=12) :: ww
+    call input_from_text('t.nml', '&g '//assignment//' /', bad, st)
+    call open_group(bad, 'g', [character(len=8) :: 'x', 'v3', 'list', 'word', 'flag', 'i', 'parts'], rr, st)
+    call rr%get('x', xx, in_range(0.0_wp, 10.0_wp, 'm'), st)
+    call rr%get('v3', vv, in_range(0.0_wp, 10.0_wp, 'm'), st)
+    call rr%get_list('list', ll, 10, in_range(0.0_wp, 100.0_wp, 'm'), st)
+    call rr%get('word', ww, st)
+    call rr%get('flag', ff, st)
+    call rr%get('i', ii, -10, 10, st)
+    call rr%get_parts('parts', pp, in_range(0.0_wp, 10.0_wp, '1'), 'n = 4', st)
+    call check(st%code == STATUS_INVALID_INPUT .and. index(st%text(), message) > 0, &
+               assignment(:min(len(assignment), 40))//' refused: '//st%text())
+  end subroutine value_refused
 
   subroutine number_formatting()
     call check(format_real(2.5_wp) == '2.5', 'format 2.5: '//format_real(2.5_wp))
