@@ -93,6 +93,8 @@ contains
     integer :: k
     if (ieee_is_nan(x) .or. .not. ieee_is_finite(x)) then
       text = format_real(x)
+    else if (x == 0) then
+      text = '0'
     else if (abs(x) >= 1e-3_wp .and. abs(x) < 1e6_wp) then
       write (buffer, '(f0.6)') x
       k = len_trim(buffer)

@@ -39,6 +39,7 @@ module geometry_tube
     procedure :: check => tube_check
   end type tube_surface_t
 
+  real(wp), parameter :: pi_half = 1.5707963267948966_wp
   integer, parameter :: binom(0:3, 0:3) = reshape([1, 0, 0, 0, 1, 1, 0, 0, 1, 2, 1, 0, 1, 3, 3, 1], [4, 4])
 
 contains
@@ -262,7 +263,9 @@ contains
             format_short(self%arc_length(worst_u)) // ' m, point ' // format_vector(c%d(:, 0)) // &
             ' m): the tube would fold onto itself'
       call set_status(status, STATUS_INVALID_INPUT, 'tube surface: ' // trim(buf))
+      return
     end if
+    call tube_check_clearance(self, status)
   end subroutine tube_check
 
   !> u is the centerline's parameter, v the cross-section's.
@@ -272,4 +275,64 @@ contains
     u_units = self%centerline%parameter_unit()
     v_units = self%section%parameter_unit()
   end subroutine tube_parameter_units
+
+  !> No part of the tube passes through another (the fold check above is
+  !> local): centerline points far apart along the tube, by more than
+  !> pi/2 (e_i + e_j) of arc length (e the cross-section extent), must lie
+  !> farther apart in space than e_i + e_j. Points that near along a curve
+  !> whose radius of curvature exceeds the extent (what the fold check
+  !> ensures) are always that far apart, so only a tube that comes back to
+  !> itself (a flat helix, a loop) fails. Samples every quarter of the
+  !> smallest extent (at most max_samples): an overlap deeper than about
+  !> that spacing is found.
+  subroutine tube_check_clearance(self, status)
+    class(tube_surface_t), intent(in) :: self
+    type(status_t), intent(inout) :: status
+    integer, parameter :: max_samples = 4000
+    real(wp), allocatable :: u(:), s(:), e(:), p(:, :)
+    real(wp) :: a, b, smallest, d
+    type(curve_point_t) :: c
+    type(status_t) :: st
+    integer :: n, i, j
+    call self%centerline%domain(a, b)
+    smallest = huge(1.0_wp)
+    do i = 0, 100
+      smallest = min(smallest, self%section%extent(a + (b - a)*i/100.0_wp))
+    end do
+    if (.not. smallest > 0) return
+    n = max(100, min(max_samples, ceiling(4*self%length()/smallest) + 1))
+    allocate (u(n), s(n), e(n), p(3, n))
+    do i = 1, n
+      u(i) = a + (b - a)*(i - 1)/real(n - 1, wp)
+      call self%centerline%evaluate(u(i), 0, c, st)
+      if (.not. st%ok()) return   ! reported by the frame check
+      p(:, i) = c%d(:, 0)
+      e(i) = self%section%extent(u(i))
+      if (i == 1) then
+        s(i) = 0
+      else
+        s(i) = s(i - 1) + self%centerline%arc_length(u(i - 1), u(i))
+      end if
+    end do
+    do i = 1, n
+      do j = i + 1, n
+        if (s(j) - s(i) <= pi_half*(e(i) + e(j))) cycle
+        d = norm2(p(:, j) - p(:, i))
+        if (d < (e(i) + e(j))*(1 - 1e-9_wp)) then
+          call set_status(status, STATUS_INVALID_INPUT, 'tube surface: the tube passes through itself: the '// &
+                          'centerline at arc length '//format_short(s(i))//' m (point '//short_point(p(:, i))// &
+                          ') and at '//format_short(s(j))//' m (point '//short_point(p(:, j))//') is '// &
+                          format_short(d)//' m apart, less than the cross-section extents '// &
+                          format_short(e(i))//' + '//format_short(e(j))//' m')
+          return
+        end if
+      end do
+    end do
+  end subroutine tube_check_clearance
+
+  pure function short_point(x) result(text)
+    real(wp), intent(in) :: x(3)
+    character(len=:), allocatable :: text
+    text = '['//format_short(x(1))//', '//format_short(x(2))//', '//format_short(x(3))//']'
+  end function short_point
 end module geometry_tube

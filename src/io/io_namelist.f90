@@ -74,12 +74,10 @@ contains
     type(cursor_t) :: c
     type(nml_group_t) :: group
     character(len=:), allocatable :: word
-    integer :: n
 
     allocate (groups(0))
     call check_characters(source, text, status)
     if (.not. status%ok()) return
-    n = 0
     do
       call skip_blanks(text, c)
       if (c%pos > len(text)) exit
@@ -102,8 +100,7 @@ contains
       group%line = c%line
       call read_group_body(source, text, c, group, status)
       if (.not. status%ok()) return
-      n = n + 1
-      call append_group(groups, group)
+      groups = [groups, group]
     end do
   end subroutine parse_namelist
 
@@ -171,7 +168,7 @@ contains
         call read_item(source, group%name, text, c, item, status)
         if (.not. status%ok()) return
         item%origin = ''
-        call append_item(group%items, item)
+        group%items = [group%items, item]
       end select
     end do
   end subroutine read_group_body
@@ -658,27 +655,4 @@ contains
     list(n) = value
   end subroutine push_value
 
-  subroutine append_item(list, item)
-    type(nml_item_t), allocatable, intent(inout) :: list(:)
-    type(nml_item_t), intent(in) :: item
-    type(nml_item_t), allocatable :: longer(:)
-    integer :: n
-    n = size(list)
-    allocate (longer(n + 1))
-    longer(:n) = list
-    longer(n + 1) = item
-    call move_alloc(longer, list)
-  end subroutine append_item
-
-  subroutine append_group(list, group)
-    type(nml_group_t), allocatable, intent(inout) :: list(:)
-    type(nml_group_t), intent(in) :: group
-    type(nml_group_t), allocatable :: longer(:)
-    integer :: n
-    n = size(list)
-    allocate (longer(n + 1))
-    longer(:n) = list
-    longer(n + 1) = group
-    call move_alloc(longer, list)
-  end subroutine append_group
 end module io_namelist

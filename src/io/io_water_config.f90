@@ -82,6 +82,8 @@ contains
       call r%get('incline_deg', incline_deg, in_range(0.0_wp, 89.0_wp, 'deg'), status)
       if (status%ok()) tube = new_straight_tube(radius, incline_deg*pi/180, length, built)
     end select
+    ! the fold and clearance checks of every tube (no turn passing through another)
+    if (status%ok() .and. built%ok()) call tube%check(2000, built)
     if (status%ok() .and. .not. built%ok()) then
       status = built
       status%code = STATUS_INVALID_INPUT
