@@ -34,8 +34,8 @@ module scenarios_water
   !> safety bound it stops (failed) after this many times the time the slide
   !> takes at min_speed.
   real(wp), parameter :: safety_factor = 10
-  !> numbers stored per output time (water_series_t) and per table row (water_table_t)
-  integer, parameter :: values_per_output = 40, values_per_row = 10
+  !> numbers stored per output time (water_series_t)
+  integer, parameter :: values_per_output = 64
   !> most rows of the table over arc length
   real(wp), parameter :: max_table_rows = 1e6_wp
   integer, parameter :: grid_n_u = 400, grid_n_v = 48   ! the written surface grid

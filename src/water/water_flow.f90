@@ -76,8 +76,12 @@ module water_flow
       beta(:), v_left(:), v_right(:)
   end type water_table_t
 
-  !> Most output samples of one run (about 320 bytes each): the memory bound.
-  integer, parameter :: max_samples = 6000000
+  !> Most output samples of one run (about 510 bytes each): the memory bound.
+  integer, parameter :: max_samples = 4000000
+
+  interface resize
+    module procedure resize_reals, resize_columns, resize_integers
+  end interface resize
 
 contains
 
@@ -377,51 +381,61 @@ contains
     end subroutine station
   end subroutine simulate_water
 
+  !> Room for n samples in every array of the series, the recorded ones kept
+  !> and the new room zero (first call: allocates). Every array of
+  !> water_series_t is listed here once, so growing keeps them all.
   subroutine allocate_series(s, n)
     type(water_series_t), intent(inout) :: s
     integer, intent(in) :: n
-    allocate (s%time(n), s%u(n), s%v(n), s%du(n), s%dv(n), s%arc_length(n), s%position(3, n), &
-              s%velocity(3, n), s%speed(n), s%height(n), s%width(n), s%area(n), s%radius(n), &
-              s%beta(n), s%alpha(n), s%normal_force(n), s%friction_force(n), s%curvature(n), &
-              s%froude(n), s%kinetic(n), s%potential(n), s%friction_work(n), s%correction_work(n), &
-              s%left_edge(2, n), s%right_edge(2, n), s%left_point(3, n), s%right_point(3, n), &
-              s%edge_solved(n), s%acceleration(3, n), s%speed_rate(n), s%height_rate(n), s%width_rate(n), &
-              s%x_m(3, n), s%z_m(3, n), s%x_m_rate(3, n), s%z_m_rate(3, n), s%centerline_speed(n), &
-              s%left_edge_rate(2, n), s%right_edge_rate(2, n))
-    s%edge_solved = 0
-    s%left_edge = 0; s%right_edge = 0; s%left_point = 0; s%right_point = 0
-    s%left_edge_rate = 0; s%right_edge_rate = 0
+    call resize(s%time, n); call resize(s%u, n); call resize(s%v, n); call resize(s%du, n)
+    call resize(s%dv, n); call resize(s%arc_length, n); call resize(s%position, 3, n)
+    call resize(s%velocity, 3, n); call resize(s%speed, n); call resize(s%height, n); call resize(s%width, n)
+    call resize(s%area, n); call resize(s%radius, n); call resize(s%beta, n); call resize(s%alpha, n)
+    call resize(s%normal_force, n); call resize(s%friction_force, n); call resize(s%curvature, n)
+    call resize(s%froude, n); call resize(s%kinetic, n); call resize(s%potential, n)
+    call resize(s%friction_work, n); call resize(s%correction_work, n); call resize(s%left_edge, 2, n)
+    call resize(s%right_edge, 2, n); call resize(s%left_point, 3, n); call resize(s%right_point, 3, n)
+    call resize(s%edge_solved, n); call resize(s%acceleration, 3, n); call resize(s%speed_rate, n)
+    call resize(s%height_rate, n); call resize(s%width_rate, n); call resize(s%x_m, 3, n)
+    call resize(s%z_m, 3, n); call resize(s%x_m_rate, 3, n); call resize(s%z_m_rate, 3, n)
+    call resize(s%centerline_speed, n); call resize(s%left_edge_rate, 2, n); call resize(s%right_edge_rate, 2, n)
   end subroutine allocate_series
+
+  !> x(:n) (or x(:, :n)), the first entries kept, new ones zero.
+  pure subroutine resize_reals(x, n)
+    real(wp), allocatable, intent(inout) :: x(:)
+    integer, intent(in) :: n
+    real(wp), allocatable :: y(:)
+    allocate (y(n))
+    y = 0
+    if (allocated(x)) y(:min(n, size(x))) = x(:min(n, size(x)))
+    call move_alloc(y, x)
+  end subroutine resize_reals
+
+  pure subroutine resize_columns(x, rows, n)
+    real(wp), allocatable, intent(inout) :: x(:, :)
+    integer, intent(in) :: rows, n
+    real(wp), allocatable :: y(:, :)
+    allocate (y(rows, n))
+    y = 0
+    if (allocated(x)) y(:, :min(n, size(x, 2))) = x(:, :min(n, size(x, 2)))
+    call move_alloc(y, x)
+  end subroutine resize_columns
+
+  pure subroutine resize_integers(x, n)
+    integer, allocatable, intent(inout) :: x(:)
+    integer, intent(in) :: n
+    integer, allocatable :: y(:)
+    allocate (y(n))
+    y = 0
+    if (allocated(x)) y(:min(n, size(x))) = x(:min(n, size(x)))
+    call move_alloc(y, x)
+  end subroutine resize_integers
 
   !> Twice the room for samples, the recorded ones kept.
   subroutine grow_series(s)
     type(water_series_t), intent(inout) :: s
-    type(water_series_t) :: g
-    integer :: n
-    n = s%n
-    call allocate_series(g, 2*size(s%time))
-    g%time(:n) = s%time(:n); g%u(:n) = s%u(:n); g%v(:n) = s%v(:n); g%du(:n) = s%du(:n); g%dv(:n) = s%dv(:n)
-    g%arc_length(:n) = s%arc_length(:n); g%position(:, :n) = s%position(:, :n)
-    g%velocity(:, :n) = s%velocity(:, :n); g%speed(:n) = s%speed(:n); g%height(:n) = s%height(:n)
-    g%width(:n) = s%width(:n); g%area(:n) = s%area(:n); g%radius(:n) = s%radius(:n); g%beta(:n) = s%beta(:n)
-    g%alpha(:n) = s%alpha(:n); g%normal_force(:n) = s%normal_force(:n)
-    g%friction_force(:n) = s%friction_force(:n); g%curvature(:n) = s%curvature(:n); g%froude(:n) = s%froude(:n)
-    g%kinetic(:n) = s%kinetic(:n); g%potential(:n) = s%potential(:n); g%friction_work(:n) = s%friction_work(:n)
-    g%correction_work(:n) = s%correction_work(:n); g%left_edge(:, :n) = s%left_edge(:, :n)
-    g%right_edge(:, :n) = s%right_edge(:, :n); g%left_point(:, :n) = s%left_point(:, :n)
-    g%right_point(:, :n) = s%right_point(:, :n); g%edge_solved(:n) = s%edge_solved(:n)
-    call move_alloc(g%time, s%time); call move_alloc(g%u, s%u); call move_alloc(g%v, s%v)
-    call move_alloc(g%du, s%du); call move_alloc(g%dv, s%dv); call move_alloc(g%arc_length, s%arc_length)
-    call move_alloc(g%position, s%position); call move_alloc(g%velocity, s%velocity)
-    call move_alloc(g%speed, s%speed); call move_alloc(g%height, s%height); call move_alloc(g%width, s%width)
-    call move_alloc(g%area, s%area); call move_alloc(g%radius, s%radius); call move_alloc(g%beta, s%beta)
-    call move_alloc(g%alpha, s%alpha); call move_alloc(g%normal_force, s%normal_force)
-    call move_alloc(g%friction_force, s%friction_force); call move_alloc(g%curvature, s%curvature)
-    call move_alloc(g%froude, s%froude); call move_alloc(g%kinetic, s%kinetic)
-    call move_alloc(g%potential, s%potential); call move_alloc(g%friction_work, s%friction_work)
-    call move_alloc(g%correction_work, s%correction_work); call move_alloc(g%left_edge, s%left_edge)
-    call move_alloc(g%right_edge, s%right_edge); call move_alloc(g%left_point, s%left_point)
-    call move_alloc(g%right_point, s%right_point); call move_alloc(g%edge_solved, s%edge_solved)
+    call allocate_series(s, 2*size(s%time))
   end subroutine grow_series
 
   subroutine record(model, t, y, s, with_edges, status)
