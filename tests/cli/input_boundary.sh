@@ -74,7 +74,7 @@ run_case grid_huge 1 'grid_huge.nml:4:' '&grid' 'n_u, n_v = 100000, 10000' 'more
 sed -e '/^&solver/,/^\//d' -e "s|'../demo_slide/slide.nml'|'$root/inputs/demo_slide/slide.nml'|" \
     -e "s|output = .*|output = 'water_to_end.h5'|" "$root/inputs/water/demo_slide.nml" > "$work/water_to_end.nml"
 run_case water_to_end 0
-grep -q 'stopped at: end of slide' "$work/water_to_end.out" || fail "water_to_end: did not run to the end: $(grep stopped "$work/water_to_end.out")"
+grep -q 'stopped at *end of slide' "$work/water_to_end.out" || fail "water_to_end: did not run to the end: $(grep stopped "$work/water_to_end.out")"
 ! grep -q 'not reached' "$work/water_to_end.out" || fail "water_to_end: stations not reached"
 # ... and a run bounded by duration says that the end was not reached
 sed -e "s|duration = 60.0|duration = 5.0|" -e "s|'../demo_slide/slide.nml'|'$root/inputs/demo_slide/slide.nml'|" \
