@@ -49,6 +49,7 @@ module io_hdf5
     integer(hsize_t), allocatable :: shape(:)
     logical, allocatable :: scaled(:)    ! per Fortran dimension: a scale is attached
     logical :: is_scale = .false.
+    logical :: is_real = .false.         ! a double-precision dataset (else integer or text)
   end type written_t
 
   type :: result_file_t
@@ -69,6 +70,9 @@ module io_hdf5
     procedure :: write_text => result_file_write_text
     procedure, private :: set_attribute_text, set_attribute_real, set_attribute_reals, set_attribute_integer
     generic :: set_attribute => set_attribute_text, set_attribute_real, set_attribute_reals, set_attribute_integer
+    procedure :: shape_of => result_file_shape_of
+    procedure :: names_in => result_file_names_in
+    procedure :: is_real => result_file_is_real
     procedure :: make_scale => result_file_make_scale
     procedure :: attach_scale => result_file_attach_scale
     procedure :: finish => result_file_finish
@@ -216,6 +220,7 @@ contains
       return
     end if
     call remember(self, name, shape)
+    self%written(self%n_written)%is_real = type_id == H5T_NATIVE_DOUBLE
   end subroutine write_dataset
 
   subroutine remember(self, name, shape)
@@ -230,7 +235,7 @@ contains
       call move_alloc(grown, self%written)
     end if
     self%n_written = self%n_written + 1
-    self%written(self%n_written) = written_t(name, shape, spread(.false., 1, size(shape)), .false.)
+    self%written(self%n_written) = written_t(name, shape, spread(.false., 1, size(shape)), .false., .false.)
   end subroutine remember
 
   subroutine result_file_write_vector(self, name, values, units, description, status)
@@ -454,6 +459,62 @@ contains
     if (hdferr /= 0) call set_status(status, STATUS_IO, 'cannot attach the dimension scale "'//scale// &
                                      '" under "'//under//'" in "'//self%temporary_path//'"')
   end subroutine result_file_attach_scale
+
+  !> The shape (h5py/C order) of a dataset written to this file; size 0 if
+  !> it was not written (or is a scalar).
+  function result_file_shape_of(self, name) result(dims)
+    class(result_file_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    integer, allocatable :: dims(:)
+    integer :: k
+    k = find_written(self, name)
+    if (k == 0) then
+      allocate (dims(0))
+    else
+      dims = int(self%written(k)%shape(size(self%written(k)%shape):1:-1))
+    end if
+  end function result_file_shape_of
+
+  !> Whether `name` was written as a double-precision dataset.
+  logical function result_file_is_real(self, name) result(is_real)
+    class(result_file_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    integer :: k
+    k = find_written(self, name)
+    is_real = .false.
+    if (k > 0) is_real = self%written(k)%is_real
+  end function result_file_is_real
+
+  !> The datasets written directly in `group` (not in its subgroups), in the
+  !> order they were written.
+  function result_file_names_in(self, group) result(names)
+    class(result_file_t), intent(in) :: self
+    character(len=*), intent(in) :: group
+    character(len=:), allocatable :: names(:)
+    character(len=:), allocatable :: prefix
+    integer :: k, n, width
+    prefix = group
+    if (prefix(len(prefix):) /= '/') prefix = prefix//'/'
+    n = 0; width = 1
+    do k = 1, self%n_written
+      if (in_group(self%written(k)%name)) then
+        n = n + 1; width = max(width, len(self%written(k)%name))
+      end if
+    end do
+    allocate (character(len=width) :: names(n))
+    n = 0
+    do k = 1, self%n_written
+      if (in_group(self%written(k)%name)) then
+        n = n + 1; names(n) = self%written(k)%name
+      end if
+    end do
+  contains
+    logical function in_group(name)
+      character(len=*), intent(in) :: name
+      in_group = index(name, prefix) == 1
+      if (in_group) in_group = index(name(len(prefix) + 1:), '/') == 0
+    end function in_group
+  end function result_file_names_in
 
   integer function find_written(self, name) result(k)
     class(result_file_t), intent(in) :: self

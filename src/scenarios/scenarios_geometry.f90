@@ -19,6 +19,7 @@ module scenarios_geometry
   use io_hdf5, only: result_file_t
   use io_summary, only: summary_t, engineering
   use io_surface_grid, only: write_surface_grid, evenly_spaced
+  use io_xdmf, only: xdmf_t, xdmf_path
   implicit none (type, external)
   private
   public :: run_geometry, geometry_scenario_groups
@@ -39,6 +40,7 @@ contains
     type(status_t) :: work
     integer :: n_u, n_v, n_frames
     type(summary_t) :: summary
+    type(xdmf_t) :: xdmf
     logical :: complete
     character(len=:), allocatable :: message
 
@@ -64,6 +66,12 @@ contains
     complete = work%ok()
     message = work%text()
     call file%finish(complete, message, work)
+    if (work%ok()) then
+      call xdmf%start(file%final_path())
+      call xdmf%surface(file, 'surface', '/geometry/surface')
+      call xdmf%polyline(file, 'centerline', '/geometry/centerline/points', '/geometry/centerline')
+      call xdmf%write(xdmf_path(file%final_path()), work)
+    end if
     call summary%print()
     if (complete) then
       write (output_unit, '(a)') '  results                   '//file%final_path()

@@ -15,6 +15,7 @@ module scenarios_mechanism
   use io_hdf5, only: result_file_t
   use io_summary, only: summary_t, degrees, engineering
   use io_surface_grid, only: write_surface_grid_around
+  use io_xdmf, only: xdmf_t, xdmf_path
   use geometry_surface, only: surface_t
   implicit none (type, external)
   private
@@ -67,6 +68,7 @@ contains
     message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
     call file%finish(complete, message, write_status)
+    if (write_status%ok() .and. series%n > 0) call write_xdmf(file, scenario, series, write_status)
     call report(scenario, series, stats, cpu, q_units, file%final_path(), run, complete, message, write_status)
     if (.not. run_status%ok()) then
       status = run_status
@@ -74,6 +76,36 @@ contains
       status = write_status
     end if
   end subroutine run_mechanism
+
+  !> The XDMF file next to the result: the surface (sled), each body's and
+  !> contact's path, the bodies and the contacts (joined: the sled's bar)
+  !> moving over time.
+  subroutine write_xdmf(file, scenario, s, status)
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: scenario
+    type(mechanism_series_t), intent(in) :: s
+    type(status_t), intent(inout) :: status
+    type(xdmf_t) :: xdmf
+    character(len=:), allocatable :: g
+    character(len=128) :: bodies(s%nb), contacts(s%nc)
+    integer :: k
+    g = '/'//scenario
+    call xdmf%start(file%final_path())
+    call xdmf%surface(file, 'surface', '/geometry/surface')
+    do k = 1, s%nb
+      bodies(k) = g//'/bodies/'//trim(s%body_names(k))//'/position'
+      call xdmf%polyline(file, 'path of '//trim(s%body_names(k)), trim(bodies(k)), &
+                         g//'/bodies/'//trim(s%body_names(k)))
+    end do
+    do k = 1, s%nc
+      contacts(k) = g//'/contacts/'//trim(s%contact_names(k))//'/position'
+      call xdmf%polyline(file, 'path of contact '//trim(s%contact_names(k)), trim(contacts(k)), &
+                         g//'/contacts/'//trim(s%contact_names(k)))
+    end do
+    if (s%nb > 0) call xdmf%moving_points(file, 'bodies', s%time(:s%n), bodies, .false.)
+    if (s%nc > 0) call xdmf%moving_points(file, 'contacts', s%time(:s%n), contacts, .true.)
+    call xdmf%write(xdmf_path(file%final_path()), status)
+  end subroutine write_xdmf
 
   !> The printed summary (angles in degrees) and, with --summary-json, the
   !> same numbers as JSON (SI).

@@ -17,6 +17,7 @@ module scenarios_point_mass
   use io_hdf5, only: result_file_t, units_per_second
   use io_summary, only: summary_t, standard_g, engineering
   use io_surface_grid, only: write_surface_grid_around
+  use io_xdmf, only: xdmf_t, xdmf_path
   implicit none (type, external)
   private
   public :: run_point_mass, build_point_mass, point_mass_groups
@@ -136,6 +137,7 @@ contains
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
     call file%finish(complete, message, write_status)
+    if (write_status%ok() .and. series%n > 0) call write_xdmf(file, series%time(:series%n), write_status)
     call report(model, series, integrator%statistics(), cpu_end - cpu_start, file%final_path(), run, complete, &
                 message, outcome, write_status)
     if (.not. run_status%ok()) then
@@ -227,6 +229,20 @@ contains
                           'error test failures', status)
     call file%write_scalar('/statistics/cpu_time', cpu, 's', 'CPU time of the integration', status)
   end subroutine write_series
+
+  !> The XDMF file next to the result: the surface, the path with its
+  !> fields, and the mass moving over time.
+  subroutine write_xdmf(file, time, status)
+    type(result_file_t), intent(in) :: file
+    real(wp), intent(in) :: time(:)
+    type(status_t), intent(inout) :: status
+    type(xdmf_t) :: xdmf
+    call xdmf%start(file%final_path())
+    call xdmf%surface(file, 'surface', '/geometry/surface')
+    call xdmf%polyline(file, 'path', '/point_mass/position', '/point_mass')
+    call xdmf%moving_points(file, 'mass', time, ['/point_mass/position'], .false.)
+    call xdmf%write(xdmf_path(file%final_path()), status)
+  end subroutine write_xdmf
 
   !> The printed summary and, with --summary-json, the same numbers as JSON.
   subroutine report(model, s, stats, cpu, path, run, complete, message, outcome, status)

@@ -24,6 +24,7 @@ module scenarios_water
   use io_summary, only: summary_t, degrees
   use base_text, only: format_short, format_integer
   use io_surface_grid, only: write_surface_grid, evenly_spaced
+  use io_xdmf, only: xdmf_t, xdmf_path
   implicit none (type, external)
   private
   public :: run_water, build_water, water_groups
@@ -206,6 +207,7 @@ contains
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
     call file%finish(complete, message, write_status)
+    if (write_status%ok()) call write_xdmf(file, write_status)
     call report(model, series, cpu_end - cpu_start, file%final_path(), run, complete, message, write_status)
     if (.not. run_status%ok()) then
       status = run_status
@@ -331,6 +333,20 @@ contains
     call write_channel_grid(file, model%channel, status)
     call write_stats(file, s%stats, cpu, status)
   end subroutine write_results
+
+  !> The XDMF file next to the result: the slide, the streamline with its
+  !> fields, and the water band with speed and height.
+  subroutine write_xdmf(file, status)
+    type(result_file_t), intent(in) :: file
+    type(status_t), intent(inout) :: status
+    type(xdmf_t) :: xdmf
+    call xdmf%start(file%final_path())
+    call xdmf%surface(file, 'slide surface', '/geometry/surface')
+    call xdmf%polyline(file, 'streamline', '/water/position', '/water')
+    call xdmf%band(file, 'water band', '/water/right_point', '/water/left_point', &
+                   [character(len=13) :: '/water/speed', '/water/height'])
+    call xdmf%write(xdmf_path(file%final_path()), status)
+  end subroutine write_xdmf
 
   !> The slide surface the water ran on: the whole u range, across the
   !> section (a closed tube's full turn).

@@ -1,0 +1,309 @@
+!> XDMF files for ParaView and VisIt next to a result file: XML that points at
+!> the datasets of the HDF5 file by path (nothing is copied), in the XDMF 2
+!> form that ParaView's "XDMF Reader" and VisIt read (checked with ParaView's
+!> own reader by tests/cli/xdmf_files.sh):
+!> - a surface grid as a structured grid (2DSMesh, X_Y_Z geometry);
+!> - paths (streamline, point-mass path, centerline, body and contact paths)
+!>   as one polyline each, with every real (n) and (n, 3) dataset of their
+!>   group as node scalars and vectors;
+!> - the water band as a 2 x n structured grid between the two edges
+!>   (JOIN of the edge datasets), with speed and height on its nodes;
+!> - moving points (bodies, contacts) as a temporal collection: at most
+!>   max_steps time steps (every k-th sample and the last), each a set of
+!>   points taken from the position datasets by hyperslabs (JOIN of rows).
+!> Layout: docs/outputs.md ("ParaView and VisIt").
+module io_xdmf
+  use base_kinds, only: wp
+  use base_text, only: format_integer, format_real
+  use base_status, only: status_t, set_status, STATUS_IO
+  use io_hdf5, only: result_file_t
+  implicit none (type, external)
+  private
+  public :: xdmf_t, xdmf_path
+
+  integer, parameter :: max_steps = 200   ! time steps of a temporal collection
+
+  type :: xdmf_t
+    private
+    character(len=:), allocatable :: xml, h5
+  contains
+    procedure :: start => xdmf_start
+    procedure :: surface => xdmf_surface
+    procedure :: polyline => xdmf_polyline
+    procedure :: band => xdmf_band
+    procedure :: moving_points => xdmf_moving_points
+    procedure :: write => xdmf_write
+  end type xdmf_t
+
+contains
+
+  !> The XDMF file next to a result: `<name>.xmf` for `<name>.h5`, else the
+  !> result's name with `.xmf` appended.
+  pure function xdmf_path(h5_path) result(path)
+    character(len=*), intent(in) :: h5_path
+    character(len=:), allocatable :: path
+    integer :: n
+    n = len_trim(h5_path)
+    if (n > 3) then
+      if (h5_path(n - 2:n) == '.h5') then
+        path = h5_path(:n - 3)//'.xmf'
+        return
+      end if
+    end if
+    path = h5_path(:n)//'.xmf'
+  end function xdmf_path
+
+  !> Begins the XML for the result file at `h5_path` (referenced by its file
+  !> name, so the two files can move together).
+  subroutine xdmf_start(self, h5_path)
+    class(xdmf_t), intent(inout) :: self
+    character(len=*), intent(in) :: h5_path
+    self%h5 = h5_path(index(h5_path, '/', back=.true.) + 1:)
+    ! no XML comment: ParaView's XDMF 2 reader reports an expression syntax error on some
+    self%xml = '<?xml version="1.0" ?>'//new_line('a')//'<Xdmf Version="2.0">'//new_line('a')//'<Domain>'// &
+               new_line('a')
+  end subroutine xdmf_start
+
+  !> The surface grid of io_surface_grid (group/x, y, z of shape (n_u, n_v)).
+  subroutine xdmf_surface(self, file, name, group)
+    class(xdmf_t), intent(inout) :: self
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: name, group
+    integer, allocatable :: dims(:)
+    dims = file%shape_of(group//'/x')
+    if (size(dims) /= 2) return
+    call add(self, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
+    call add(self, '  <Topology TopologyType="2DSMesh" Dimensions="'//dims_text(dims)//'"/>')
+    call add(self, '  <Geometry GeometryType="X_Y_Z">')
+    call add(self, '    '//data_item(self, file, group//'/x'))
+    call add(self, '    '//data_item(self, file, group//'/y'))
+    call add(self, '    '//data_item(self, file, group//'/z'))
+    call add(self, '  </Geometry>')
+    call add(self, '</Grid>')
+  end subroutine xdmf_surface
+
+  !> A polyline through the rows of `points` (shape (n, 3)) with the real
+  !> datasets of `group` of shape (n) or (n, 3) as node attributes.
+  subroutine xdmf_polyline(self, file, name, points, group)
+    class(xdmf_t), intent(inout) :: self
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: name, points, group
+    integer, allocatable :: dims(:), d(:)
+    character(len=:), allocatable :: names(:)
+    integer :: k
+    dims = file%shape_of(points)
+    if (size(dims) /= 2) return
+    if (dims(1) < 2) return
+    call add(self, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
+    call add(self, '  <Topology TopologyType="Polyline" NodesPerElement="'//format_integer(dims(1))// &
+             '" NumberOfElements="1"/>')
+    call add(self, '  <Geometry GeometryType="XYZ">')
+    call add(self, '    '//data_item(self, file, points))
+    call add(self, '  </Geometry>')
+    names = file%names_in(group)
+    do k = 1, size(names)
+      if (trim(names(k)) == points .or. .not. file%is_real(trim(names(k)))) cycle
+      d = file%shape_of(trim(names(k)))
+      if (size(d) == 0) cycle
+      if (d(1) /= dims(1)) cycle
+      if (size(d) == 1) then
+        call attribute(self, file, trim(names(k)), 'Scalar')
+      else if (size(d) == 2) then
+        if (d(2) == 3) call attribute(self, file, trim(names(k)), 'Vector')
+      end if
+    end do
+    call add(self, '</Grid>')
+  end subroutine xdmf_polyline
+
+  !> The band between two edges (shape (n, 3) each) as a 2 x n structured
+  !> grid; `fields` (shape (n)) on both edges' nodes.
+  subroutine xdmf_band(self, file, name, first_edge, second_edge, fields)
+    class(xdmf_t), intent(inout) :: self
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: name, first_edge, second_edge
+    character(len=*), intent(in) :: fields(:)
+    integer, allocatable :: dims(:)
+    integer :: k
+    dims = file%shape_of(first_edge)
+    if (size(dims) /= 2) return
+    if (dims(1) < 2) return
+    call add(self, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
+    call add(self, '  <Topology TopologyType="2DSMesh" Dimensions="2 '//format_integer(dims(1))//'"/>')
+    call add(self, '  <Geometry GeometryType="XYZ">')
+    call add(self, '    <DataItem ItemType="Function" Function="JOIN($0 ; $1)" Dimensions="'// &
+             format_integer(2*dims(1))//' 3">')
+    call add(self, '      '//data_item(self, file, first_edge))
+    call add(self, '      '//data_item(self, file, second_edge))
+    call add(self, '    </DataItem>')
+    call add(self, '  </Geometry>')
+    do k = 1, size(fields)
+      call add(self, '  <Attribute Name="'//base_name(trim(fields(k)))//'" AttributeType="Scalar" Center="Node">')
+      call add(self, '    <DataItem ItemType="Function" Function="JOIN($0 ; $0)" Dimensions="'// &
+               format_integer(2*dims(1))//'">')
+      call add(self, '      '//data_item(self, file, trim(fields(k))))
+      call add(self, '    </DataItem>')
+      call add(self, '  </Attribute>')
+    end do
+    call add(self, '</Grid>')
+  end subroutine xdmf_band
+
+  !> Points moving over time: a temporal collection; at each kept time step
+  !> one point per dataset in `points` (each of shape (n, 3)), joined by a
+  !> polyline when `connect`. No node fields: ParaView's XDMF 2 reader fails
+  !> to parse a JOIN of one-value hyperslabs (their values are on the paths).
+  subroutine xdmf_moving_points(self, file, name, time, points, connect)
+    class(xdmf_t), intent(inout) :: self
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: name
+    real(wp), intent(in) :: time(:)
+    character(len=*), intent(in) :: points(:)
+    logical, intent(in) :: connect
+    integer :: n, stride, i, k, m
+    character(len=:), allocatable :: join
+    n = size(time)
+    m = size(points)
+    if (n < 1 .or. m < 1) return
+    stride = (n + max_steps - 1)/max_steps
+    join = 'JOIN($0'
+    do k = 1, m - 1
+      join = join//' ; $'//format_integer(k)
+    end do
+    join = join//')'
+    call add(self, '<Grid Name="'//escaped(name)//'" GridType="Collection" CollectionType="Temporal">')
+    i = 1
+    do
+      call add(self, '  <Grid Name="'//escaped(name)//'" GridType="Uniform">')
+      call add(self, '    <Time Value="'//format_real(time(i))//'"/>')
+      if (connect .and. m > 1) then
+        call add(self, '    <Topology TopologyType="Polyline" NodesPerElement="'//format_integer(m)// &
+                 '" NumberOfElements="1"/>')
+      else
+        call add(self, '    <Topology TopologyType="Polyvertex" NodesPerElement="1" NumberOfElements="'// &
+                 format_integer(m)//'"/>')
+      end if
+      call add(self, '    <Geometry GeometryType="XYZ">')
+      call joined_rows(self, file, points, i, format_integer(m)//' 3', join)
+      call add(self, '    </Geometry>')
+      call add(self, '  </Grid>')
+      if (i == n) exit
+      i = min(i + stride, n)
+    end do
+    call add(self, '</Grid>')
+  end subroutine xdmf_moving_points
+
+  !> Row i of each dataset in `names`, joined (one dataset: the row itself;
+  !> XDMF's expression parser refuses a JOIN of one).
+  subroutine joined_rows(self, file, names, i, dimensions, join)
+    class(xdmf_t), intent(inout) :: self
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: names(:), dimensions, join
+    integer, intent(in) :: i
+    integer :: k
+    if (size(names) == 1) then
+      call add(self, '      '//row(self, file, trim(names(1)), i))
+      return
+    end if
+    call add(self, '      <DataItem ItemType="Function" Function="'//join//'" Dimensions="'//dimensions//'">')
+    do k = 1, size(names)
+      call add(self, '        '//row(self, file, trim(names(k)), i))
+    end do
+    call add(self, '      </DataItem>')
+  end subroutine joined_rows
+
+  !> Closes the XML and writes it to `path`.
+  subroutine xdmf_write(self, path, status)
+    class(xdmf_t), intent(inout) :: self
+    character(len=*), intent(in) :: path
+    type(status_t), intent(inout) :: status
+    integer :: unit, ios
+    character(len=256) :: msg
+    call add(self, '</Domain>')
+    call add(self, '</Xdmf>')
+    open (newunit=unit, file=path, status='replace', action='write', access='stream', form='unformatted', &
+          iostat=ios, iomsg=msg)
+    if (ios == 0) write (unit, iostat=ios, iomsg=msg) self%xml
+    if (ios == 0) close (unit, iostat=ios, iomsg=msg)
+    if (ios /= 0) call set_status(status, STATUS_IO, 'cannot write the XDMF file "'//path//'": '//trim(msg))
+  end subroutine xdmf_write
+
+  subroutine add(self, line)
+    class(xdmf_t), intent(inout) :: self
+    character(len=*), intent(in) :: line
+    self%xml = self%xml//line//new_line('a')
+  end subroutine add
+
+  !> A node attribute from a dataset (Scalar: shape (n); Vector: (n, 3)).
+  subroutine attribute(self, file, name, kind)
+    class(xdmf_t), intent(inout) :: self
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: name, kind
+    call add(self, '  <Attribute Name="'//base_name(name)//'" AttributeType="'//kind//'" Center="Node">')
+    call add(self, '    '//data_item(self, file, name))
+    call add(self, '  </Attribute>')
+  end subroutine attribute
+
+  !> The DataItem of a whole real dataset of the HDF5 file.
+  function data_item(self, file, name) result(text)
+    class(xdmf_t), intent(in) :: self
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: name
+    character(len=:), allocatable :: text
+    text = '<DataItem Dimensions="'//dims_text(file%shape_of(name))//'" NumberType="Float" Precision="8" '// &
+           'Format="HDF">'//escaped(self%h5)//':'//escaped(name)//'</DataItem>'
+  end function data_item
+
+  !> Row i (1-based) of a dataset of shape (n) or (n, 3), as a HyperSlab.
+  function row(self, file, name, i) result(text)
+    class(xdmf_t), intent(in) :: self
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    integer, allocatable :: dims(:)
+    character(len=*), parameter :: nl = new_line('a')
+    dims = file%shape_of(name)
+    if (size(dims) == 1) then
+      text = '<DataItem ItemType="HyperSlab" Dimensions="1" Type="HyperSlab">'//nl// &
+             '          <DataItem Dimensions="3 1" Format="XML">'//format_integer(i - 1)//' 1 1</DataItem>'//nl
+    else
+      text = '<DataItem ItemType="HyperSlab" Dimensions="1 '//format_integer(dims(2))//'" Type="HyperSlab">'//nl// &
+             '          <DataItem Dimensions="3 2" Format="XML">'//format_integer(i - 1)//' 0 1 1 1 '// &
+             format_integer(dims(2))//'</DataItem>'//nl
+    end if
+    text = text//'          '//data_item(self, file, name)//nl//'        </DataItem>'
+  end function row
+
+  pure function dims_text(dims) result(text)
+    integer, intent(in) :: dims(:)
+    character(len=:), allocatable :: text
+    integer :: k
+    text = ''
+    do k = 1, size(dims)
+      text = text//format_integer(dims(k))
+      if (k < size(dims)) text = text//' '
+    end do
+  end function dims_text
+
+  pure function base_name(path) result(name)
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable :: name
+    name = escaped(path(index(path, '/', back=.true.) + 1:))
+  end function base_name
+
+  !> Text safe inside XML attributes and elements.
+  pure function escaped(text) result(xml)
+    character(len=*), intent(in) :: text
+    character(len=:), allocatable :: xml
+    integer :: i
+    xml = ''
+    do i = 1, len(text)
+      select case (text(i:i))
+      case ('&'); xml = xml//'&amp;'
+      case ('<'); xml = xml//'&lt;'
+      case ('>'); xml = xml//'&gt;'
+      case ('"'); xml = xml//'&quot;'
+      case default; xml = xml//text(i:i)
+      end select
+    end do
+  end function escaped
+end module io_xdmf
