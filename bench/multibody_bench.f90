@@ -23,7 +23,7 @@ program multibody_bench
   integer, parameter :: repeats = 5
   real(wp), parameter :: theta = 20*pi/180
 
-  print '(a44, a14, a12, a10, a10)', 'case', 'CPU s/sim s', 'rhs evals', 'steps', 'hybrj'
+  print '(a44, a14, a12, a10, a10, a10, a8)', 'case', 'CPU s/sim s', 'rhs evals', 'steps', 'hybrj', 'roots', 'cached'
   call run_case('pendulum, simple, 20 s, rtol 1e-12', 1)
   call run_case('pendulum, double, 20 s, rtol 1e-12', 2)
   call run_case('fourbar, 5 s, rtol 1e-12', 3)
@@ -73,8 +73,8 @@ contains
       if (.not. status%ok()) return
       options = solver%options
       duration = solver%duration
-      y0 = [sled%q0, sled%qd0]
       call build_sled(sled%params, surface, sled%q0, sys%mechanism, status)
+      y0 = sys%initial_state(sled%q0, sled%qd0)
     case default
       options%rtol = 1e-10_wp
       options%atol = 1e-10_wp
@@ -95,6 +95,7 @@ contains
         end if
       end if
       call build_sled(sp, surface, y0(1:3), sys%mechanism, status)
+      y0 = sys%initial_state(y0(1:3), y0(4:6))
     end select
     if (status%ok()) call sys%mechanism%check_start(y0(1:sys%mechanism%f), status)
   end subroutine build
@@ -109,7 +110,7 @@ contains
     type(status_t) :: status
     real(wp), allocatable :: y0(:), y(:)
     real(wp) :: duration, t, start, finish, cpu(repeats)
-    integer :: r, hybrj
+    integer :: r, hybrj, root_calls, hits
     do r = 1, repeats
       call build(which, sys, y0, duration, options, status)
       if (.not. status%ok()) exit
@@ -122,12 +123,14 @@ contains
       cpu(r) = (finish - start)/duration
       stats = ode%statistics()
       hybrj = sys%mechanism%hybrj_solves
+      root_calls = sys%root_calls
+      hits = sys%root_cache_hits
     end do
     if (.not. status%ok()) then
       print '(a44, 2x, a)', label, 'FAILED: '//status%text()
       return
     end if
-    print '(a44, es14.3, i12, i10, i10)', label, median(cpu), int(stats%rhs_evaluations), &
-      int(stats%steps), hybrj
+    print '(a44, es14.3, i12, i10, i10, i10, i8)', label, median(cpu), int(stats%rhs_evaluations), &
+      int(stats%steps), hybrj, root_calls, hits
   end subroutine run_case
 end program multibody_bench

@@ -145,9 +145,9 @@ contains
   end function digit
 
   !> Writes /<scenario>/... (see docs/outputs.md).
-  subroutine write_mechanism_series(file, scenario, input, title, s, stats, cpu, q_units, beta_units, status)
+  subroutine write_mechanism_series(file, scenario, input, title, s, outcome, stats, cpu, q_units, beta_units, status)
     type(result_file_t), intent(inout) :: file
-    character(len=*), intent(in) :: scenario, title
+    character(len=*), intent(in) :: scenario, title, outcome
     type(input_text_t), intent(in) :: input
     type(mechanism_series_t), intent(in) :: s
     type(ode_stats_t), intent(in) :: stats
@@ -161,7 +161,11 @@ contains
     n = s%n
     g = '/'//scenario//'/'
     call file%write_provenance(scenario, trim(title), input%name, input%text(), status)
-    call file%write_vector(g//'time', s%time(:n), 's', 'output times', status)
+    call file%write_vector(g//'time', s%time(:n), 's', 'record times: the start, the output times and the events', &
+                           status)
+    call file%write_integers(g//'record_kind', s%kind(:n), '1', &
+                             'why each record was made: 1 start, 2 output time, 3 event', status)
+    call file%set_attribute(g, 'outcome', outcome, status)
     do k = 1, s%f
       b = g//'coordinates/'//trim(s%q_names(k))
       call file%write_vector(b//'/value', s%q(k, :n), trim(q_units(k)), 'generalized coordinate', status)
@@ -204,11 +208,25 @@ contains
     do k = 1, s%nc
       b = g//'contacts/'//trim(s%contact_names(k))
       call file%write_matrix(b//'/position', s%contact_r(:, k, :n), 'm', 'contact point (3 x n)', status)
-      call file%write_matrix(b//'/velocity', s%contact_v(:, k, :n), 'm/s', 'sliding velocity (3 x n)', status)
+      call file%write_matrix(b//'/velocity', s%slip(:, k, :n), 'm/s', &
+        'slip velocity: material velocity of the body relative to the surface at the contact point (3 x n)', status)
       call file%write_vector(b//'/normal_force', s%normal(k, :n), 'N', &
-                             'normal force on the body along the surface normal z_D', status)
-      call file%write_matrix(b//'/friction_force', s%friction(:, k, :n), 'N', 'friction force (3 x n)', status)
+                             'normal force, positive while the body presses on the surface', status)
+      call file%write_matrix(b//'/friction_force', s%friction(:, k, :n), 'N', &
+                             'force of the contact''s force laws on the body (3 x n)', status)
     end do
+    do k = 1, s%nl
+      b = g//'laws/'//trim(s%law_names(k))
+      call file%write_matrix(b//'/force', s%law_force(:, k, :n), 'N', &
+                             'force of the law (on the body, at a contact) (3 x n)', status)
+      call file%write_vector(b//'/power', s%law_power(k, :n), 'W', 'power of the law''s loads', status)
+      call file%write_vector(b//'/work', s%law_work(k, :n), 'J', &
+                             'work of the law''s loads since the start (integrated with the motion)', status)
+      call file%write_vector(b//'/active', s%law_active(k, :n), '1', '1 while the law acts, 0 when off', status)
+    end do
+    if (s%nl > 0) call file%write_vector(g//'energy_balance', s%kinetic(:n) + s%potential(:n) - &
+      s%kinetic(1) - s%potential(1) - sum(s%law_work(:, :n), dim=1), 'J', &
+      'E(t) - E(0) - (work of all force laws): zero up to the integrator''s error', status)
     if (n > 0) then
       call file%make_scale(g//'time', status)
       call file%attach_scale(g//'time', g, status)
@@ -216,6 +234,7 @@ contains
     call file%write_count('/statistics/steps', int(stats%steps), '1', 'integrator steps', status)
     call file%write_count('/statistics/rhs_evaluations', int(stats%rhs_evaluations), '1', &
                           'right-hand-side evaluations', status)
-    call file%write_scalar('/statistics/cpu_time', cpu, 's', 'CPU time of the integration', status)
+    call file%write_scalar('/statistics/cpu_time', cpu, 's', &
+                           'CPU time of the run through the integration driver (integration, events, records)', status)
   end subroutine write_mechanism_series
 end module io_mechanism_config

@@ -1,5 +1,6 @@
-!> Leaf elements (thesis 3.2.4): the mass element with its d'Alembert forces
-!> (3.23) and gravity, and a constant applied force/torque at a frame.
+!> The mass element (thesis 3.2.4), a leaf element with its d'Alembert forces
+!> (3.23) and gravity: gravity is applied here, once per mass; every other load
+!> is a force law (kinetostatics_force_law).
 !>
 !> Mass element on frame K with mass m, inertia tensor Theta about the centre of
 !> mass S (in K's coordinates) and S at s = R s_local from K's origin:
@@ -15,7 +16,7 @@ module kinetostatics_mass
   use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
   implicit none (type, external)
   private
-  public :: mass_element_t, new_mass_element, applied_force_t, new_applied_force
+  public :: mass_element_t, new_mass_element
 
   type, extends(element_t) :: mass_element_t
     integer :: frame = 0
@@ -31,19 +32,6 @@ module kinetostatics_mass
     procedure :: force => mass_force
     procedure :: energy => mass_energy
   end type mass_element_t
-
-  !> A constant force (N) and torque (N m) at a frame's origin, in world
-  !> coordinates, or in the frame's coordinates if `body_fixed`.
-  type, extends(element_t) :: applied_force_t
-    integer :: frame = 0
-    real(wp) :: force_value(3) = 0, torque_value(3) = 0
-    logical :: body_fixed = .false.
-  contains
-    procedure :: position => applied_position
-    procedure :: velocity => applied_nothing
-    procedure :: acceleration => applied_nothing
-    procedure :: force => applied_force
-  end type applied_force_t
 
 contains
 
@@ -138,53 +126,4 @@ contains
       potential = -self%mass*dot_product(self%gravity, k%r + self%s)
     end associate
   end subroutine mass_energy
-
-  function new_applied_force(name, frame, force, torque, body_fixed) result(e)
-    character(len=*), intent(in) :: name
-    integer, intent(in) :: frame
-    real(wp), intent(in) :: force(3), torque(3)
-    logical, intent(in) :: body_fixed
-    type(applied_force_t) :: e
-    e%name = name
-    e%frame = frame
-    e%force_value = force
-    e%torque_value = torque
-    e%body_fixed = body_fixed
-  end function new_applied_force
-
-  pure subroutine applied_position(self, frames, scalars, status)
-    class(applied_force_t), intent(inout) :: self
-    type(frame_state_t), intent(inout) :: frames(:)
-    type(scalar_state_t), intent(inout) :: scalars(:)
-    type(status_t), intent(inout) :: status
-    associate (unused => self, unused_f => frames, unused_s => scalars, unused_status => status)
-    end associate
-  end subroutine applied_position
-
-  pure subroutine applied_nothing(self, frames, scalars)
-    class(applied_force_t), intent(inout) :: self
-    type(frame_state_t), intent(inout) :: frames(:)
-    type(scalar_state_t), intent(inout) :: scalars(:)
-    associate (unused => self, unused_f => frames, unused_s => scalars)
-    end associate
-  end subroutine applied_nothing
-
-  pure subroutine applied_force(self, frames, scalars, inertia, applied)
-    class(applied_force_t), intent(inout) :: self
-    type(frame_state_t), intent(inout) :: frames(:)
-    type(scalar_state_t), intent(inout) :: scalars(:)
-    logical, intent(in) :: inertia, applied
-    associate (unused => scalars, unused_i => inertia)
-    end associate
-    if (.not. applied) return
-    associate (k => frames(self%frame))
-      if (self%body_fixed) then
-        k%force = k%force + matmul(k%rot, self%force_value)
-        k%torque = k%torque + matmul(k%rot, self%torque_value)
-      else
-        k%force = k%force + self%force_value
-        k%torque = k%torque + self%torque_value
-      end if
-    end associate
-  end subroutine applied_force
 end module kinetostatics_mass

@@ -1,5 +1,6 @@
 !> Mechanisms: transmission elements chained from the ground frame, closed
-!> loops, and the equations of motion in minimal coordinates (thesis 3.3, 3.4).
+!> loops, contacts, force laws, and the equations of motion in minimal
+!> coordinates (thesis 3.3, 3.4).
 !>
 !> Frames and scalars live in two arrays owned by the mechanism; frame 1 is the
 !> ground (fixed). Elements are evaluated in the order they were added (each
@@ -14,30 +15,37 @@
 !> the analytic Jacobian J_beta (one velocity pass per column, (3.21)), which
 !> converge in one or two steps from a warm start; if that does not reach the
 !> tolerance, by MINPACK's HYBRJ with the same Jacobian (the thesis's solver).
+!> A Newton iterate outside a surface's parameter domain during a run (warm
+!> start) ends the solve with STATUS_DOMAIN at once, the scalars left at that
+!> iterate: from a warm start the first Newton step is right to second order,
+!> so the solution lies outside too; the integrator shortens its step, and the
+!> root functions of the domain edges see where the joint went.
 !> Then beta' = -J_beta^-1 f^ (3.30), beta'' = -J_beta^-1 f^' (3.31), and the cut
 !> forces lambda = -J_beta^-T Q^_beta ((3.33): the printed form lacks the inverse).
+!>
+!> Loads: gravity acts in the mass elements (kinetostatics_mass); every other
+!> load is a force law (kinetostatics_force_law), evaluated once per state with
+!> the frames, scalars and contact kinematics (kinetostatics_contact).
 !>
 !> Equations of motion (3.34)-(3.36): the inverse dynamics Q_bar(q, q', q'')
 !> (generalized forces of d'Alembert + applied forces at the q's, loops closed
 !> by lambda) is affine in q'': Q_bar = Q_bar0 - M q''. f + 1 passes: one with
-!> q'' = 0 (everything on) gives Q_bar0 = -Q^, and one per coordinate with
-!> q'' = e_i, velocities zero and applied forces off gives the column -M e_i.
+!> q'' = 0 (inertia, gravity and the explicit laws) gives Q_bar0 = -Q^, and one
+!> per coordinate with q'' = e_i, velocities zero and applied forces off gives
+!> the column -M e_i.
 !>
-!> Friction at contacts (a contact is the output frame of a surface joint): the
-!> normal force N is the component along -z_D of the force the mechanism puts
-!> on that frame, N = -z_D . f_D (positive: pressed onto the surface); it
-!> depends on q'' and on the friction forces themselves, affinely:
-!> N = N0 + G q'' + H F. Viscous friction F = -c w is velocity-dependent and goes
-!> into Q_bar0. Coulomb friction (4.28), F_c = -mu |N_c| w_c/|w_c|, is solved
-!> exactly with the normal forces as extra unknowns:
-!>     [ M        -P D   ] [q'']   [Q_bar0]
-!>     [ -G    I - H D   ] [N  ] = [N0    ],   D = diag(mu_c s_c), s_c = sign N_c,
-!> where P(:, c) and H(:, c) come from one force pass with the unit load -w^_c at
-!> contact c; the signs are iterated until consistent (normally at once).
-!> w -> 0: w^ = w/sqrt(|w|^2 + eps^2) with eps = regularization_speed (default
-!> 1e-6 m/s): exact to (eps/|w|)^2/2 relative while sliding; a contact at rest
-!> feels a stiff viscous damping mu |N|/eps instead of stiction (sticking is not
-!> modelled).
+!> Normal forces and scaled laws: every contact's normal force N (rules in
+!> kinetostatics_contact) is linear in the loads of a force pass, so
+!> N = N0 + G q'' + sum_k H_k |N_c(k)|, where the last sum runs over the scaled
+!> laws k (load |N_c(k)| u_k with u_k from the law, e.g. Coulomb friction
+!> u = -mu w/|w| (4.28)). With s_j = sign N_j, P_k and H_k from one force pass
+!> with the unit load u_k alone, and the contacts j of the scaled laws as
+!> extra unknowns, the equations of motion are the exact block system
+!>     [ M            -sum_k P_k s_j(k) e_j(k)^T   ] [q'']   [Q_bar0]
+!>     [ -G_j   I - sum_k H_j,k s_j(k) e_j(k)^T    ] [N_j] = [N0_j  ],
+!> its signs iterated until consistent (normally at once; no consistent signs:
+!> a Painleve-type paradox, reported). The other contacts' N follow from the
+!> affine form. The law's power is |N| times its unit power.
 module kinetostatics_mechanism
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, prefix_status, STATUS_OK, STATUS_INVALID_INPUT, &
@@ -45,9 +53,14 @@ module kinetostatics_mechanism
   use numerics_nonlinear, only: nonlinear_system_t, nonlinear_options_t, nonlinear_result_t, &
     solve_nonlinear
   use kinetostatics_state, only: element_t, element_box_t, frame_state_t, scalar_state_t
+  use kinetostatics_surface_joint, only: surface_joint_t
+  use kinetostatics_contact, only: contact_t, contact_state_t, contact_kinematics, NORMAL_FRAME_FORCE, &
+    NORMAL_CUT_FORCE
+  use kinetostatics_force_law, only: force_law_t, force_law_box_t
   implicit none (type, external)
   private
-  public :: mechanism_t, contact_t, loop_t
+  public :: mechanism_t, loop_t, surface_edge_t
+  public :: LOADS_NONE, LOADS_EXPLICIT, LOADS_ALL
 
   interface
     subroutine dgetrf(m, n, a, lda, ipiv, info)
@@ -92,6 +105,9 @@ module kinetostatics_mechanism
   end interface
 
   integer, parameter :: ROLE_FIXED = 0, ROLE_Q = 1, ROLE_BETA = 2, ROLE_MEASURE = 3
+  !> Which law loads a force pass applies: none, the explicit laws, all laws
+  !> (scaled ones times |N|); a positive value k: the unit load of law k alone.
+  integer, parameter :: LOADS_NONE = 0, LOADS_EXPLICIT = -1, LOADS_ALL = -2
 
   type :: loop_t
     character(len=:), allocatable :: name
@@ -100,18 +116,18 @@ module kinetostatics_mechanism
     integer, allocatable :: dependents(:)     ! scalar indices of the dependent coordinates
   end type loop_t
 
-  type :: contact_t
-    character(len=:), allocatable :: name
-    integer :: frame = 0                      ! the Darboux frame (surface joint output)
-    real(wp) :: mu = 0                        ! Coulomb coefficient, 1
-    real(wp) :: viscous = 0                   ! N s/m
-    real(wp) :: regularization_speed = 1e-6_wp  ! m/s
-    ! at the last evaluation
-    real(wp) :: direction(3) = 0              ! w/sqrt(|w|^2 + eps^2)
-    real(wp) :: load(3) = 0                   ! N, force applied at the frame in the current pass
-    real(wp) :: normal_force = 0              ! N
-    real(wp) :: friction(3) = 0               ! N
-  end type contact_t
+  !> A finite, non-periodic edge of a surface joint's parameter domain. The
+  !> event is placed `margin` inside it (1e-7 of the domain's extent): the
+  !> state cannot be evaluated beyond the edge, so a step ending there fails
+  !> and is shortened; a step can end between the event and the edge.
+  type :: surface_edge_t
+    integer :: element = 0                    ! the surface joint
+    integer :: scalar = 0                     ! its u or v
+    real(wp) :: bound = 0                     ! the edge value
+    real(wp) :: margin = 0                    ! the event's distance from it
+    logical :: upper = .false.                ! bound is the maximum (else the minimum)
+    logical :: along_u = .true.               ! an edge in u (else in v)
+  end type surface_edge_t
 
   type, extends(nonlinear_system_t) :: mechanism_t
     type(frame_state_t), allocatable :: frames(:)
@@ -121,34 +137,48 @@ module kinetostatics_mechanism
     type(element_box_t), allocatable :: elements(:)
     type(loop_t), allocatable :: loops(:)
     type(contact_t), allocatable :: contacts(:)
-    integer :: n_frames = 0, n_scalars = 0, n_elements = 0, f = 0, r = 0
+    type(contact_state_t), allocatable :: contact_states(:)   ! kinematics at the last law evaluation
+    type(force_law_box_t), allocatable :: laws(:)
+    type(surface_edge_t), allocatable :: edges(:)
+    integer :: n_frames = 0, n_scalars = 0, n_elements = 0, n_laws = 0, f = 0, r = 0
     integer, allocatable :: q(:), beta(:), closure(:)
     real(wp), allocatable :: target(:)
     type(nonlinear_options_t) :: closure_options = nonlinear_options_t(xtol=1e-12_wp, &
       residual_tolerance=1e-8_wp)
     real(wp) :: closure_tolerance = 1e-10_wp   !< max |g - target| accepted (measurement units)
     logical :: ready = .false.
+    logical :: warm = .false.                  !< a closure has converged in this run (a warm start exists)
+    logical :: converged = .false.             !< beta holds it (else start_r does: the last solve failed)
     ! results of the last evaluation
     real(wp), allocatable :: lambda(:)        ! cut forces of the closure measurements
     real(wp), allocatable :: qdd(:)
     real(wp), allocatable :: mass(:, :), bias(:)   ! M and Q_bar0 = -Q^
+    real(wp), allocatable :: normal(:)        ! N of every contact (from the last dynamics)
+    real(wp), allocatable :: law_factor(:)    ! 1 for explicit laws, |N| for scaled ones
+    real(wp), allocatable :: law_power(:)     ! W, power of each law's loads
+    real(wp), allocatable :: law_roots(:)     ! root functions of the laws, at the last law evaluation
+    integer, allocatable :: law_root_start(:) ! first index of law k's roots in law_roots
     integer :: closure_solves = 0, hybrj_solves = 0
     ! work arrays
     real(wp), allocatable :: jbeta(:, :), jlu(:, :), work_r(:), gq(:)
     real(wp), allocatable :: x_r(:), start_r(:), res_r(:), work_f(:), work_c(:)   ! (gfortran puts
                                                                                   ! automatic arrays on the heap)
+    real(wp), allocatable :: unit_power(:)
     real(wp), allocatable :: chol(:, :), g_mat(:, :), p_mat(:, :), h_mat(:, :), n0(:), block(:, :), &
-      block_rhs(:), mu_s(:)
-    integer, allocatable :: ipiv(:), ipiv_block(:), coulomb(:)
+      block_rhs(:), signs(:)
+    integer, allocatable :: scaled_laws(:)    ! indices of the scaled laws
+    integer, allocatable :: block_row(:)      ! row (1..nb) of each scaled law's contact in the block
+    integer, allocatable :: block_contact(:)  ! contact of each block row
+    integer, allocatable :: ipiv(:), ipiv_block(:)
   contains
-    procedure :: add_frame, add_scalar, add_element, add_loop, add_contact, set_coordinates, finalize
-    procedure :: frame_index, scalar_index
+    procedure :: add_frame, add_scalar, add_element, add_loop, add_contact, add_law, set_coordinates, finalize
+    procedure :: frame_index, scalar_index, contact_index, law_index
     procedure :: residual => mechanism_residual
     procedure :: jacobian => mechanism_jacobian
     procedure :: position_pass, velocity_pass, acceleration_pass, force_pass
-    procedure :: set_positions, set_velocities, set_accelerations, inverse_dynamics
+    procedure :: set_positions, set_velocities, set_accelerations, inverse_dynamics, evaluate_laws
     procedure :: check_start
-    procedure :: dynamics, evaluate, energy, closure_residual, normal_forces
+    procedure :: dynamics, evaluate, energy, closure_residual, normal_forces, law_force
   end type mechanism_t
 
 contains
@@ -171,7 +201,7 @@ contains
     class(mechanism_t), intent(inout) :: self
     if (self%n_frames > 0) return
     allocate (self%frames(1), self%frame_names(1), self%scalars(0), self%scalar_names(0), self%role(0))
-    allocate (self%elements(0), self%loops(0), self%contacts(0))
+    allocate (self%elements(0), self%loops(0), self%contacts(0), self%laws(0))
     self%frame_names(1) = 'ground'
     self%n_frames = 1
   end subroutine ensure_ground
@@ -229,21 +259,56 @@ contains
     self%role(dependents) = ROLE_BETA
   end subroutine add_loop
 
-  !> Friction at the Darboux frame `frame` of a surface joint.
-  subroutine add_contact(self, name, frame, mu, viscous, regularization_speed)
+  !> A contact between the body carrying frame_a (1: the ground) and the body
+  !> carrying frame_b at the contact-point frame point_frame (origin at the
+  !> contact point, z along the surface normal); returns its index. The
+  !> normal force is N = -normal_sign z_F . f_F at frame F = normal_frame
+  !> (default: point_frame), or, if normal_measurement (a closure measurement's
+  !> scalar index) is given, N = normal_sign lambda of that measurement.
+  !> normal_sign (+1 or -1, default +1) makes N positive while the bodies
+  !> press on each other; n = normal_sign z points from A into B. One-sided
+  !> (default): N falling through zero is the lift-off event.
+  integer function add_contact(self, name, frame_a, frame_b, point_frame, normal_sign, normal_frame, &
+                               normal_measurement, one_sided) result(k)
     class(mechanism_t), intent(inout) :: self
     character(len=*), intent(in) :: name
-    integer, intent(in) :: frame
-    real(wp), intent(in) :: mu, viscous
-    real(wp), intent(in), optional :: regularization_speed
+    integer, intent(in) :: frame_a, frame_b, point_frame
+    real(wp), intent(in), optional :: normal_sign
+    integer, intent(in), optional :: normal_frame, normal_measurement
+    logical, intent(in), optional :: one_sided
     type(contact_t) :: c
+    call ensure_ground(self)
     c%name = name
-    c%frame = frame
-    c%mu = mu
-    c%viscous = viscous
-    if (present(regularization_speed)) c%regularization_speed = regularization_speed
+    c%frame_a = frame_a
+    c%frame_b = frame_b
+    c%point_frame = point_frame
+    c%normal_frame = point_frame
+    if (present(normal_sign)) c%normal_sign = normal_sign
+    if (present(normal_frame)) c%normal_frame = normal_frame
+    if (present(normal_measurement)) then
+      c%normal_rule = NORMAL_CUT_FORCE
+      c%normal_measurement = normal_measurement
+    end if
+    if (present(one_sided)) c%one_sided = one_sided
     self%contacts = [self%contacts, c]
-  end subroutine add_contact
+    k = size(self%contacts)
+  end function add_contact
+
+  !> Adds a force law (a copy of `law`); its index is n_laws afterwards.
+  subroutine add_law(self, law)
+    class(mechanism_t), intent(inout) :: self
+    class(force_law_t), intent(in) :: law
+    type(force_law_box_t), allocatable :: grown(:)
+    integer :: k
+    call ensure_ground(self)
+    allocate (grown(self%n_laws + 1))
+    do k = 1, self%n_laws
+      call move_alloc(self%laws(k)%law, grown(k)%law)
+    end do
+    allocate (grown(self%n_laws + 1)%law, source=law)
+    call move_alloc(grown, self%laws)
+    self%n_laws = self%n_laws + 1
+  end subroutine add_law
 
   subroutine set_coordinates(self, q)
     class(mechanism_t), intent(inout) :: self
@@ -270,11 +335,29 @@ contains
     k = 0
   end function scalar_index
 
+  integer function contact_index(self, name) result(k)
+    class(mechanism_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    do k = 1, size(self%contacts)
+      if (self%contacts(k)%name == name) return
+    end do
+    k = 0
+  end function contact_index
+
+  integer function law_index(self, name) result(k)
+    class(mechanism_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    do k = 1, self%n_laws
+      if (self%laws(k)%law%name == name) return
+    end do
+    k = 0
+  end function law_index
+
   !> Checks the structure and allocates every work array.
   subroutine finalize(self, status)
     class(mechanism_t), intent(inout) :: self
     type(status_t), intent(inout) :: status
-    integer :: k, nc
+    integer :: k, nc, ns, nb, nr
     if (.not. status%ok()) return
     call ensure_ground(self)
     if (.not. allocated(self%q)) allocate (self%q(0))
@@ -290,23 +373,135 @@ contains
       self%target = [self%target, self%loops(k)%targets]
     end do
     self%r = size(self%beta)
-    allocate (self%coulomb(0))
-    do k = 1, size(self%contacts)
-      if (self%contacts(k)%mu > 0) self%coulomb = [self%coulomb, k]
+    nc = size(self%contacts)
+    call check_contacts(self, status)
+    if (status%ok()) call check_laws(self, status)
+    if (.not. status%ok()) return
+    call find_edges(self)
+
+    ! scaled laws and the contacts whose normal forces the block system solves for
+    allocate (self%scaled_laws(0), self%block_contact(0))
+    do k = 1, self%n_laws
+      if (.not. self%laws(k)%law%scaled) cycle
+      self%scaled_laws = [self%scaled_laws, k]
+      if (.not. any(self%block_contact == self%laws(k)%law%contact)) &
+        self%block_contact = [self%block_contact, self%laws(k)%law%contact]
     end do
-    nc = size(self%coulomb)
+    ns = size(self%scaled_laws)
+    nb = size(self%block_contact)
+    allocate (self%block_row(ns))
+    do k = 1, ns
+      self%block_row(k) = findloc(self%block_contact, self%laws(self%scaled_laws(k))%law%contact, dim=1)
+    end do
+    allocate (self%law_root_start(self%n_laws + 1))
+    nr = 0
+    do k = 1, self%n_laws
+      self%law_root_start(k) = nr + 1
+      nr = nr + self%laws(k)%law%root_count()
+    end do
+    self%law_root_start(self%n_laws + 1) = nr + 1
+
     allocate (self%lambda(self%r), self%qdd(self%f), self%mass(self%f, self%f), self%bias(self%f))
     allocate (self%jbeta(self%r, self%r), self%jlu(self%r, self%r), self%work_r(self%r), self%gq(self%f))
-    allocate (self%x_r(self%r), self%start_r(self%r), self%res_r(self%r), self%work_f(self%f), &
-              self%work_c(size(self%contacts)))
-    allocate (self%chol(self%f, self%f), self%g_mat(nc, self%f), self%p_mat(self%f, nc), &
-              self%h_mat(nc, nc), self%n0(nc), self%block(self%f + nc, self%f + nc), &
-              self%block_rhs(self%f + nc), self%mu_s(nc))
-    allocate (self%ipiv(max(self%r, 1)), self%ipiv_block(self%f + nc))
+    allocate (self%x_r(self%r), self%start_r(self%r), self%res_r(self%r), self%work_f(self%f), self%work_c(nc))
+    allocate (self%contact_states(nc), self%normal(nc), self%law_factor(self%n_laws), self%law_power(self%n_laws), &
+              self%unit_power(self%n_laws), self%law_roots(nr))
+    allocate (self%chol(self%f, self%f), self%g_mat(nc, self%f), self%p_mat(self%f, ns), &
+              self%h_mat(nc, ns), self%n0(nc), self%block(self%f + nb, self%f + nb), &
+              self%block_rhs(self%f + nb), self%signs(nb))
+    allocate (self%ipiv(max(self%r, 1)), self%ipiv_block(self%f + nb))
     self%lambda = 0
     self%qdd = 0
+    self%normal = 0
+    self%law_factor = 1
+    self%law_power = 0
+    self%law_roots = 1
     self%ready = .true.
   end subroutine finalize
+
+  subroutine check_contacts(self, status)
+    class(mechanism_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
+    integer :: k
+    do k = 1, size(self%contacts)
+      associate (c => self%contacts(k))
+        if (.not. all([c%frame_a, c%frame_b, c%point_frame, c%normal_frame] >= 1 .and. &
+                      [c%frame_a, c%frame_b, c%point_frame, c%normal_frame] <= self%n_frames)) then
+          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': a frame index is not '// &
+                          'a frame of the mechanism')
+        else if (c%frame_a == c%frame_b) then
+          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': the two bodies must '// &
+                          'be different (frame_a = frame_b)')
+        else if (abs(c%normal_sign) /= 1) then
+          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': normal_sign must be +1 or -1')
+        else if (c%normal_rule == NORMAL_CUT_FORCE) then
+          c%normal_row = findloc(self%closure, c%normal_measurement, dim=1)
+          if (c%normal_row == 0) call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name// &
+            ''': its normal force must be the cut force of a closure measurement of a loop')
+        end if
+      end associate
+      if (.not. status%ok()) return
+    end do
+  end subroutine check_contacts
+
+  subroutine check_laws(self, status)
+    class(mechanism_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
+    integer :: k
+    do k = 1, self%n_laws
+      associate (law => self%laws(k)%law)
+        if (.not. allocated(law%name)) law%name = 'law'
+        if (.not. allocated(law%loads)) then
+          call set_status(status, STATUS_INVALID_INPUT, 'force law '''//law%name//''' has no loads '// &
+                          '(its constructor must allocate them)')
+        else if (law%contact < 0 .or. law%contact > size(self%contacts)) then
+          call set_status(status, STATUS_INVALID_INPUT, 'force law '''//law%name//''': contact index '// &
+                          'out of range')
+        else if (law%scaled .and. law%contact == 0) then
+          call set_status(status, STATUS_INVALID_INPUT, 'force law '''//law%name//''' scales with a '// &
+                          'normal force but names no contact')
+        end if
+      end associate
+      if (.not. status%ok()) return
+    end do
+  end subroutine check_laws
+
+  !> The finite, non-periodic edges of every surface joint's domain.
+  subroutine find_edges(self)
+    class(mechanism_t), intent(inout) :: self
+    real(wp) :: u_min, u_max, v_min, v_max
+    integer :: k
+    allocate (self%edges(0))
+    do k = 1, self%n_elements
+      select type (e => self%elements(k)%e)
+      type is (surface_joint_t)
+        call e%surface%domain(u_min, u_max, v_min, v_max)
+        if (.not. e%surface%periodic_u()) then
+          if (u_min > -huge(u_min)) self%edges = [self%edges, &
+            surface_edge_t(k, e%var_u, u_min, edge_margin(u_min, u_max), .false., .true.)]
+          if (u_max < huge(u_max)) self%edges = [self%edges, &
+            surface_edge_t(k, e%var_u, u_max, edge_margin(u_min, u_max), .true., .true.)]
+        end if
+        if (.not. e%surface%periodic_v()) then
+          if (v_min > -huge(v_min)) self%edges = [self%edges, &
+            surface_edge_t(k, e%var_v, v_min, edge_margin(v_min, v_max), .false., .false.)]
+          if (v_max < huge(v_max)) self%edges = [self%edges, &
+            surface_edge_t(k, e%var_v, v_max, edge_margin(v_min, v_max), .true., .false.)]
+        end if
+      end select
+    end do
+  end subroutine find_edges
+
+  pure real(wp) function edge_margin(low, high)
+    real(wp), intent(in) :: low, high
+    if (low > -huge(low) .and. high < huge(high)) then
+      edge_margin = 1e-7_wp*max(high - low, 1.0_wp)
+    else if (low > -huge(low)) then
+      edge_margin = 1e-7_wp*max(abs(low), 1.0_wp)
+    else
+      edge_margin = 1e-7_wp*max(abs(high), 1.0_wp)
+    end if
+  end function edge_margin
 
   ! ------------------------------------------------------------------ passes
 
@@ -337,11 +532,13 @@ contains
   end subroutine acceleration_pass
 
   !> Clears all forces, puts the cut forces lambda on the closure measurements
-  !> and the contact loads on their frames, and runs the elements backwards.
-  subroutine force_pass(self, inertia, applied, lambda)
+  !> and the laws' loads selected by `loads` (LOADS_*) on their frames, and
+  !> runs the elements backwards.
+  subroutine force_pass(self, inertia, applied, lambda, loads)
     class(mechanism_t), intent(inout) :: self
     logical, intent(in) :: inertia, applied
     real(wp), intent(in) :: lambda(:)
+    integer, intent(in) :: loads
     integer :: k
     do k = 1, self%n_frames
       self%frames(k)%torque = 0
@@ -351,15 +548,36 @@ contains
     do k = 1, self%r
       self%scalars(self%closure(k))%force = lambda(k)
     end do
-    do k = 1, size(self%contacts)
-      associate (c => self%contacts(k))
-        self%frames(c%frame)%force = self%frames(c%frame)%force + c%load
-      end associate
-    end do
+    select case (loads)
+    case (LOADS_NONE)
+    case (LOADS_EXPLICIT, LOADS_ALL)
+      do k = 1, self%n_laws
+        if (.not. self%laws(k)%law%active) cycle
+        if (self%laws(k)%law%scaled .and. loads == LOADS_EXPLICIT) cycle
+        call put_loads(self, k, self%law_factor(k))
+      end do
+    case default
+      call put_loads(self, loads, 1.0_wp)
+    end select
     do k = self%n_elements, 1, -1
       call self%elements(k)%e%force(self%frames, self%scalars, inertia, applied)
     end do
   end subroutine force_pass
+
+  subroutine put_loads(self, k, factor)
+    class(mechanism_t), intent(inout) :: self
+    integer, intent(in) :: k
+    real(wp), intent(in) :: factor
+    integer :: i
+    associate (loads => self%laws(k)%law%loads)
+      do i = 1, size(loads)
+        associate (fr => self%frames(loads(i)%frame))
+          fr%force = fr%force + factor*loads(i)%force
+          fr%torque = fr%torque + factor*loads(i)%torque
+        end associate
+      end do
+    end associate
+  end subroutine put_loads
 
   ! ------------------------------------------------------------ loop closure
 
@@ -487,15 +705,23 @@ contains
     end if
     self%closure_solves = self%closure_solves + 1
     associate (x => self%x_r, start => self%start_r, res => self%res_r)
-    do k = 1, self%r
-      start(k) = self%scalars(self%beta(k))%q
-    end do
+    ! the warm start: the last solution, kept in start_r after a failed solve
+    ! (whose scalars hold its last iterate); before any solution, the scalars
+    if (self%converged .or. .not. self%warm) then
+      do k = 1, self%r
+        start(k) = self%scalars(self%beta(k))%q
+      end do
+    end if
+    self%converged = .false.
     ! Newton from the warm start
     x = start
     converged = .false.
     do it = 1, 4
       call self%residual(x, res, status)
-      if (.not. status%ok()) exit
+      if (.not. status%ok()) then
+        if (status%code == STATUS_DOMAIN .and. self%warm) return   ! see the module comment
+        exit
+      end if
       if (maxval(abs(res)) <= 1e-3_wp*self%closure_tolerance) then
         converged = .true.
         exit
@@ -540,7 +766,12 @@ contains
     end if
     end associate
     call factor_closure(self, status)
-    if (.not. status%ok()) call prefix_status(status, 'closure')
+    if (.not. status%ok()) then
+      call prefix_status(status, 'closure')
+      return
+    end if
+    self%warm = .true.
+    self%converged = .true.
   end subroutine set_positions
 
   !> At the start: the loops must close from the given beta and J_beta must be
@@ -553,6 +784,8 @@ contains
     integer :: iwork(max(self%r, 1)), info, k
     character(len=16) :: num
     if (.not. status%ok()) return
+    self%warm = .false.
+    self%converged = .false.
     call self%set_positions(q, status)
     if (.not. status%ok()) then
       call prefix_status(status, 'at the start')
@@ -617,74 +850,112 @@ contains
   end subroutine set_accelerations
 
   !> Generalized forces at the q's (into gq) with the loops in equilibrium:
-  !> lambda = -J_beta^-T Q^_beta (3.32)-(3.33).
-  subroutine inverse_dynamics(self, inertia, applied)
+  !> lambda = -J_beta^-T Q^_beta (3.32)-(3.33). `loads` selects the laws' loads (LOADS_*).
+  subroutine inverse_dynamics(self, inertia, applied, loads)
     class(mechanism_t), intent(inout) :: self
     logical, intent(in) :: inertia, applied
+    integer, intent(in) :: loads
     integer :: k, info
     self%lambda = 0
-    call self%force_pass(inertia, applied, self%lambda)
+    call self%force_pass(inertia, applied, self%lambda, loads)
     if (self%r > 0) then
       do k = 1, self%r
         self%lambda(k) = self%scalars(self%beta(k))%force
       end do
       call dgetrs('T', self%r, 1, self%jlu, self%r, self%ipiv, self%lambda, self%r, info)
       self%lambda = -self%lambda
-      call self%force_pass(inertia, applied, self%lambda)
+      call self%force_pass(inertia, applied, self%lambda, loads)
     end if
     do k = 1, self%f
       self%gq(k) = self%scalars(self%q(k))%force
     end do
   end subroutine inverse_dynamics
 
-  !> Normal force at each contact after a force pass, N = -z_D . f_D.
+  !> Normal force of each contact after an inverse-dynamics pass (rules in
+  !> kinetostatics_contact).
   subroutine normal_forces(self, n)
     class(mechanism_t), intent(in) :: self
     real(wp), intent(out) :: n(:)
     integer :: k
     do k = 1, size(self%contacts)
-      associate (fr => self%frames(self%contacts(k)%frame))
-        n(k) = -dot_product(fr%rot(:, 3), fr%force)
+      associate (c => self%contacts(k))
+        if (c%normal_rule == NORMAL_CUT_FORCE) then
+          n(k) = c%normal_sign*self%lambda(c%normal_row)
+        else
+          associate (fr => self%frames(c%normal_frame))
+            n(k) = -c%normal_sign*dot_product(fr%rot(:, 3), fr%force)
+          end associate
+        end if
       end associate
     end do
   end subroutine normal_forces
 
+  !> With positions and velocities set: every contact's kinematics, every
+  !> active law's loads (scaled laws: per unit |N|) and unit power, and the
+  !> laws' root functions.
+  subroutine evaluate_laws(self, t, status)
+    class(mechanism_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    type(status_t), intent(inout) :: status
+    integer :: k, i
+    real(wp) :: p
+    do k = 1, size(self%contacts)
+      call contact_kinematics(self%contacts(k), self%frames, self%contact_states(k))
+    end do
+    do k = 1, self%n_laws
+      associate (law => self%laws(k)%law)
+        p = 0
+        if (law%active) then
+          call law%evaluate(t, self%frames, self%scalars, self%contact_states, status)
+          if (.not. status%ok()) then
+            call prefix_status(status, 'force law '''//law%name//'''')
+            return
+          end if
+          do i = 1, size(law%loads)
+            associate (ld => law%loads(i), fr => self%frames(law%loads(i)%frame))
+              p = p + dot_product(ld%force, fr%v) + dot_product(ld%torque, fr%omega)
+            end associate
+          end do
+        end if
+        self%unit_power(k) = p
+        if (self%law_root_start(k + 1) > self%law_root_start(k)) &
+          call law%roots(t, self%frames, self%scalars, self%contact_states, &
+                         self%law_roots(self%law_root_start(k):self%law_root_start(k + 1) - 1))
+      end associate
+    end do
+  end subroutine evaluate_laws
+
   ! ------------------------------------------------------ equations of motion
 
-  !> q'' from M(q) q'' + Q^(q, q') = Q_applied (3.36), with contact friction.
-  !> Leaves M in `mass`, Q_bar0 in `bias`, q'' in `qdd`. The velocity and
-  !> acceleration states are overwritten (use `evaluate` for a consistent state).
-  subroutine dynamics(self, q, qd, qdd, status)
+  !> q'' from M(q) q'' + Q^(q, q') = Q_applied (3.36), with every force law
+  !> and the normal forces of the contacts (see the module comment). Leaves M
+  !> in `mass`, Q_bar0 in `bias`, q'' in `qdd`, the normal forces in `normal`,
+  !> the laws' powers in `law_power`. The velocity and acceleration states are
+  !> overwritten (use `evaluate` for a consistent state).
+  subroutine dynamics(self, t, q, qd, qdd, status)
     class(mechanism_t), intent(inout) :: self
-    real(wp), intent(in) :: q(:), qd(:)
+    real(wp), intent(in) :: t, q(:), qd(:)
     real(wp), intent(out) :: qdd(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: w(3), s_old
-    integer :: i, c, k, nc, info, it
+    real(wp) :: s_old
+    integer :: i, j, k, c, nc, ns, nb, info, it
     logical :: consistent
 
     qdd = 0
+    nc = size(self%contacts)
+    ns = size(self%scaled_laws)
+    nb = size(self%block_contact)
     call self%set_positions(q, status)
     if (.not. status%ok()) return
     call self%set_velocities(qd)
-    do c = 1, size(self%contacts)
-      associate (ct => self%contacts(c))
-        w = self%frames(ct%frame)%v
-        ct%direction = w/sqrt(dot_product(w, w) + ct%regularization_speed**2)
-        ct%load = -ct%viscous*w
-      end associate
-    end do
+    call self%evaluate_laws(t, status)
+    if (.not. status%ok()) return
+    self%law_factor = 1
     self%work_f = 0
     call self%set_accelerations(self%work_f)
-    call self%inverse_dynamics(.true., .true.)
+    call self%inverse_dynamics(.true., .true., LOADS_EXPLICIT)
     self%bias = self%gq
-    nc = size(self%coulomb)
-    if (nc > 0) then
-      call self%normal_forces(self%work_c)
-      do k = 1, nc
-        self%n0(k) = self%work_c(self%coulomb(k))
-      end do
-    end if
+    if (nc > 0) call self%normal_forces(self%n0)
 
     ! M column by column: q'' = e_i with all velocities zero, applied forces off
     do k = 1, self%n_frames
@@ -692,21 +963,13 @@ contains
       self%frames(k)%v = 0
     end do
     self%scalars%qd = 0
-    do c = 1, size(self%contacts)
-      self%contacts(c)%load = 0
-    end do
     do i = 1, self%f
       self%work_f = 0
       self%work_f(i) = 1
       call self%set_accelerations(self%work_f)
-      call self%inverse_dynamics(.true., .false.)
+      call self%inverse_dynamics(.true., .false., LOADS_NONE)
       self%mass(:, i) = -self%gq
-      if (nc > 0) then
-        call self%normal_forces(self%work_c)
-        do k = 1, nc
-          self%g_mat(k, i) = self%work_c(self%coulomb(k))
-        end do
-      end if
+      if (nc > 0) call self%normal_forces(self%g_mat(:, i))
     end do
     do i = 1, self%f   ! symmetric part, element-wise (no temporary)
       do k = 1, self%f
@@ -720,104 +983,128 @@ contains
         'a mass without rotational inertia on a pure rotation)')
       return
     end if
-    if (nc == 0) then
-      qdd = self%bias
-      call dpotrs('L', self%f, 1, self%chol, self%f, qdd, self%f, info)
-      self%qdd = qdd
+    if (ns == 0) then
+      self%qdd = self%bias
+      call dpotrs('L', self%f, 1, self%chol, self%f, self%qdd, self%f, info)
+      qdd = self%qdd
+      call affine_normal_forces(self, qdd)
+      self%law_power = self%unit_power
       return
     end if
 
-    ! Coulomb friction: unit loads -w^ at each contact, then the block system
-    do k = 1, nc
-      do c = 1, size(self%contacts)
-        self%contacts(c)%load = 0
-      end do
-      self%contacts(self%coulomb(k))%load = -self%contacts(self%coulomb(k))%direction
-      call self%inverse_dynamics(.false., .false.)
+    ! scaled laws: their unit loads alone, then the block system
+    do k = 1, ns
+      call self%inverse_dynamics(.false., .false., self%scaled_laws(k))
       self%p_mat(:, k) = self%gq
-      call self%normal_forces(self%work_c)
-      do c = 1, nc
-        self%h_mat(c, k) = self%work_c(self%coulomb(c))
-      end do
+      call self%normal_forces(self%h_mat(:, k))
     end do
-    do k = 1, nc
-      self%mu_s(k) = self%contacts(self%coulomb(k))%mu
-    end do
+    self%signs = 1
     consistent = .false.
     do it = 1, 6
       self%block = 0
       self%block(1:self%f, 1:self%f) = self%mass
-      do k = 1, nc
-        self%block(1:self%f, self%f + k) = -self%p_mat(:, k)*self%mu_s(k)
-        self%block(self%f + 1:, self%f + k) = -self%h_mat(:, k)*self%mu_s(k)
-        self%block(self%f + k, self%f + k) = self%block(self%f + k, self%f + k) + 1
+      do j = 1, nb
+        self%block(self%f + j, 1:self%f) = -self%g_mat(self%block_contact(j), :)
+        self%block(self%f + j, self%f + j) = 1
       end do
-      self%block(self%f + 1:, 1:self%f) = -self%g_mat
+      do k = 1, ns
+        j = self%block_row(k)
+        self%block(1:self%f, self%f + j) = self%block(1:self%f, self%f + j) - self%p_mat(:, k)*self%signs(j)
+        do i = 1, nb
+          self%block(self%f + i, self%f + j) = self%block(self%f + i, self%f + j) &
+                                               - self%h_mat(self%block_contact(i), k)*self%signs(j)
+        end do
+      end do
       self%block_rhs(1:self%f) = self%bias
-      self%block_rhs(self%f + 1:) = self%n0
-      call dgetrf(self%f + nc, self%f + nc, self%block, self%f + nc, self%ipiv_block, info)
+      do j = 1, nb
+        self%block_rhs(self%f + j) = self%n0(self%block_contact(j))
+      end do
+      call dgetrf(self%f + nb, self%f + nb, self%block, self%f + nb, self%ipiv_block, info)
       if (info /= 0) then
-        call set_status(status, STATUS_DOMAIN, 'the equations of motion with Coulomb friction are singular')
+        call set_status(status, STATUS_DOMAIN, 'the equations of motion with friction proportional to '// &
+                        'the normal forces are singular')
         return
       end if
-      call dgetrs('N', self%f + nc, 1, self%block, self%f + nc, self%ipiv_block, self%block_rhs, &
-                  self%f + nc, info)
+      call dgetrs('N', self%f + nb, 1, self%block, self%f + nb, self%ipiv_block, self%block_rhs, &
+                  self%f + nb, info)
       consistent = .true.
-      do k = 1, nc
-        s_old = sign(1.0_wp, self%mu_s(k))
-        if (self%block_rhs(self%f + k)*s_old < 0) then
+      do j = 1, nb
+        s_old = self%signs(j)
+        if (self%block_rhs(self%f + j)*s_old < 0) then
           consistent = .false.
-          self%mu_s(k) = -self%mu_s(k)
+          self%signs(j) = -s_old
         end if
       end do
       if (consistent) exit
     end do
     if (.not. consistent) then
-      call set_status(status, STATUS_DOMAIN, 'Coulomb friction: no consistent signs of the normal forces '// &
-                      '(the friction law has no unique solution here, a Painleve-type paradox)')
+      call set_status(status, STATUS_DOMAIN, 'friction proportional to the normal forces: no consistent '// &
+                      'signs of the normal forces (the friction law has no unique solution here, a '// &
+                      'Painleve-type paradox)')
       return
     end if
     qdd = self%block_rhs(1:self%f)
     self%qdd = qdd
-    do k = 1, nc
-      self%contacts(self%coulomb(k))%normal_force = self%block_rhs(self%f + k)
+    call affine_normal_forces(self, qdd)
+    do k = 1, ns
+      j = self%block_row(k)
+      self%normal = self%normal + self%h_mat(:, k)*self%signs(j)*self%block_rhs(self%f + j)
+    end do
+    do j = 1, nb
+      self%normal(self%block_contact(j)) = self%block_rhs(self%f + j)
+    end do
+    self%law_power = self%unit_power
+    do k = 1, ns
+      c = self%laws(self%scaled_laws(k))%law%contact
+      self%law_factor(self%scaled_laws(k)) = abs(self%normal(c))
+      self%law_power(self%scaled_laws(k)) = abs(self%normal(c))*self%unit_power(self%scaled_laws(k))
     end do
   end subroutine dynamics
 
-  !> The complete state at (q, q'): accelerations, cut forces, normal and
-  !> friction forces of every contact; returns the inverse-dynamics residual
-  !> max |Q_bar| (zero up to rounding when everything is consistent).
-  subroutine evaluate(self, q, qd, residual, status)
+  !> N = N0 + G q'' for every contact (without the scaled laws' share).
+  subroutine affine_normal_forces(self, qdd)
     class(mechanism_t), intent(inout) :: self
-    real(wp), intent(in) :: q(:), qd(:)
+    real(wp), intent(in) :: qdd(:)
+    integer :: i
+    self%normal = self%n0
+    do i = 1, self%f   ! no matmul: its result would be a heap temporary
+      self%normal = self%normal + self%g_mat(:, i)*qdd(i)
+    end do
+  end subroutine affine_normal_forces
+
+  !> The complete state at (t, q, q'): accelerations, cut forces, every law's
+  !> loads and power, every contact's normal force; returns the inverse-
+  !> dynamics residual max |Q_bar| (zero up to rounding when everything is
+  !> consistent).
+  subroutine evaluate(self, t, q, qd, residual, status)
+    class(mechanism_t), intent(inout) :: self
+    real(wp), intent(in) :: t, q(:), qd(:)
     real(wp), intent(out) :: residual
     type(status_t), intent(inout) :: status
-    real(wp) :: qdd(self%f), nvec(size(self%contacts)), w(3)
-    integer :: c, k
+    real(wp) :: qdd(self%f)
+    integer :: c
     residual = huge(1.0_wp)
-    call self%dynamics(q, qd, qdd, status)
+    call self%dynamics(t, q, qd, qdd, status)
     if (.not. status%ok()) return
     call self%set_velocities(qd)
-    do c = 1, size(self%contacts)
-      associate (ct => self%contacts(c))
-        w = self%frames(ct%frame)%v
-        ct%load = -ct%viscous*w
-      end associate
-    end do
-    do k = 1, size(self%coulomb)
-      associate (ct => self%contacts(self%coulomb(k)))
-        ct%load = ct%load - ct%mu*abs(ct%normal_force)*ct%direction
-      end associate
-    end do
     call self%set_accelerations(qdd)
-    call self%inverse_dynamics(.true., .true.)
+    call self%inverse_dynamics(.true., .true., LOADS_ALL)
     residual = maxval(abs(self%gq))
-    call self%normal_forces(nvec)
+    call self%normal_forces(self%work_c)
     do c = 1, size(self%contacts)
-      self%contacts(c)%normal_force = nvec(c)
-      self%contacts(c)%friction = self%contacts(c)%load
+      self%contacts(c)%normal_force = self%work_c(c)
     end do
   end subroutine evaluate
+
+  !> Force of law k at the last evaluation (its first load, i.e. on body B
+  !> for a contact law), N.
+  pure function law_force(self, k) result(force)
+    class(mechanism_t), intent(in) :: self
+    integer, intent(in) :: k
+    real(wp) :: force(3)
+    force = 0
+    if (self%laws(k)%law%active) force = self%law_factor(k)*self%laws(k)%law%loads(1)%force
+  end function law_force
 
   !> Kinetic and potential energy of all mass elements at the current state (J).
   subroutine energy(self, kinetic, potential)

@@ -1,30 +1,138 @@
-!> A mechanism as an ODE system for numerics_ode: y = [q, q'], y' = [q', q'']
-!> with q'' from kinetostatics_mechanism's equations of motion (3.36).
+!> A mechanism as a model of the integration driver (numerics_event_driver):
+!> an ODE system with records and events.
 !>
-!> Events: root functions g_k(t, y) = y(event_index(k)) - event_value(k), i.e.
-!> a coordinate (index 1..f) or a rate (f+1..2f) crossing a value; the
-!> integrator stops there and says which one and in which direction.
+!> State y = [q, q', W]: the generalized coordinates, their rates, and one
+!> quadrature state per force law, W_k' = P_k (the law's power), so that
+!> E(t) - E(0) = sum_k W_k holds to the integrator's tolerance (E: kinetic +
+!> gravitational energy of the mass elements). Only `state_size`,
+!> `initial_state`, `rhs` and `record` know this layout.
+!>
+!> Root functions, in this order:
+!>   user crossings  y(event_index(k)) - event_value(k): a coordinate (1..f) or
+!>                   a rate (f+1..2f) crossing a value; action `event_action`
+!>                   (EVENT_RECORD by default);
+!>   domain edges    +-(s - bound) - margin for every finite, non-periodic
+!>                   edge of every surface joint (s its u or v, independent or
+!>                   dependent; margin 1e-7 of the domain, kinetostatics_mechanism):
+!>                   an edge in u reached is a normal end (the end of the
+!>                   slide, or back at its start: EVENT_STOP, `outcome` says
+!>                   which and where); an edge in v is a failure (STATUS_DOMAIN);
+!>   lift-off        N of every one-sided contact: falling through zero stops
+!>                   the run (EVENT_STOP, outcome 'lift-off ...');
+!>   force laws      each law's own (kinetostatics_force_law), handled by the
+!>                   law (e.g. switch itself and ask for a restart).
+!> Root values need the state at (t, y): the edges only the closure, the laws
+!> positions and velocities, lift-off the whole dynamics (N depends on q'').
+!> Every right-hand side stores the root values it implies together with
+!> (t, y). A root call at the same (t, y) takes them from there. CVODE calls
+!> the root functions at the end of each step, at y_n, while its last
+!> right-hand side was at the corrector's previous iterate: the same t_n and
+!> a state within the corrector's tolerance. There the stored values are
+!> used as long as every one is far from zero, |g_i| >= 1e-3 G_i with G_i
+!> the largest |g_i| met in the run, and the states differ by at most 1e-7
+!> relative: the error of such a value is the sensitivity of g to y times
+!> that difference, orders of magnitude below 1e-3 G_i, so no sign can be
+!> wrong. Near a root, or at any other (t, y), the root call evaluates the
+!> state itself, only to the level it needs: roots are located with exact
+!> values. User crossings are always taken from y itself. If an evaluation
+!> fails (a trial state beyond a domain edge), the edge roots come from the
+!> scalars as far as the closure got (beyond the edge: negative) and the
+!> others keep their last values, so the integrator locates the edge where
+!> the state leaves the domain.
 module kinetostatics_mechanism_ode
   use base_kinds, only: wp
-  use base_status, only: status_t
-  use numerics_ode, only: ode_system_t
+  use base_text, only: format_short
+  use base_status, only: status_t, set_status, STATUS_DOMAIN, STATUS_INVALID_INPUT
+  use numerics_event_driver, only: event_system_t, EVENT_IGNORE, EVENT_RECORD, EVENT_STOP
   use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_recorder, only: mechanism_series_t
   implicit none (type, external)
   private
   public :: mechanism_ode_t
 
-  type, extends(ode_system_t) :: mechanism_ode_t
+  type, extends(event_system_t) :: mechanism_ode_t
     type(mechanism_t) :: mechanism
+    type(mechanism_series_t) :: series
     integer, allocatable :: event_index(:)
     real(wp), allocatable :: event_value(:)
+    integer :: event_action = EVENT_RECORD
+    character(len=:), allocatable :: outcome   !< why the run ended, set by the stopping event
     integer :: rhs_count = 0
+    integer :: root_calls = 0, root_cache_hits = 0
+    ! root values of the last evaluation and the state they belong to
+    logical :: cached = .false.
+    real(wp) :: cache_t = 0
+    real(wp), allocatable :: cache_y(:), cache_g(:), work_ydot(:)
+    real(wp), allocatable :: root_scale(:)     ! largest |g_i| met in the run
   contains
+    procedure :: state_size, initial_state, check_start, start_series
     procedure :: rhs => mechanism_rhs
     procedure :: root_count => mechanism_root_count
     procedure :: roots => mechanism_roots
+    procedure :: record => mechanism_record
+    procedure :: handle_event => mechanism_handle_event
   end type mechanism_ode_t
 
 contains
+
+  integer function state_size(self) result(n)
+    class(mechanism_ode_t), intent(in) :: self
+    n = 2*self%mechanism%f + self%mechanism%n_laws
+  end function state_size
+
+  !> y0 = [q0, q0', 0]; also prepares the work arrays of the root functions.
+  function initial_state(self, q0, qd0) result(y0)
+    class(mechanism_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: q0(:), qd0(:)
+    real(wp), allocatable :: y0(:)
+    y0 = [q0, qd0, spread(0.0_wp, 1, self%mechanism%n_laws)]
+    call prepare(self)
+  end function initial_state
+
+  subroutine prepare(self)
+    class(mechanism_ode_t), intent(inout) :: self
+    if (allocated(self%cache_y)) then
+      if (size(self%cache_y) == self%state_size()) return
+      deallocate (self%cache_y, self%cache_g, self%work_ydot)
+    end if
+    allocate (self%cache_y(self%state_size()), self%cache_g(max(self%root_count(), 1)), &
+              self%work_ydot(self%state_size()), self%root_scale(max(self%root_count(), 1)))
+    self%cached = .false.
+    self%root_scale = 0
+  end subroutine prepare
+
+  !> Before a run: the loops close and are regular at q0 (mechanism%check_start)
+  !> and every one-sided contact presses (N > 0).
+  subroutine check_start(self, y0, status)
+    class(mechanism_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: y0(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: residual
+    integer :: f, k
+    if (.not. status%ok()) return
+    f = self%mechanism%f
+    call self%mechanism%check_start(y0(1:f), status)
+    if (.not. status%ok()) return
+    call self%mechanism%evaluate(0.0_wp, y0(1:f), y0(f + 1:2*f), residual, status)
+    if (.not. status%ok()) return
+    do k = 1, size(self%mechanism%contacts)
+      associate (c => self%mechanism%contacts(k))
+        if (c%one_sided .and. .not. c%normal_force > 0) then
+          call set_status(status, STATUS_INVALID_INPUT, 'at the start contact '''//c%name// &
+            ''' does not press (normal force '//format_short(c%normal_force)//' N): it would lift off at once')
+          return
+        end if
+      end associate
+    end do
+  end subroutine check_start
+
+  !> Empty series with room for `capacity` records (it grows when needed).
+  subroutine start_series(self, capacity)
+    class(mechanism_ode_t), intent(inout) :: self
+    integer, intent(in) :: capacity
+    call self%series%init(self%mechanism, capacity)
+    self%outcome = ''
+  end subroutine start_series
 
   subroutine mechanism_rhs(self, t, y, ydot, status)
     class(mechanism_ode_t), intent(inout) :: self
@@ -32,29 +140,203 @@ contains
     real(wp), intent(out) :: ydot(:)
     type(status_t), intent(inout) :: status
     integer :: f
-    associate (unused_t => t)
-    end associate
+    if (.not. allocated(self%cache_y)) call prepare(self)   ! once, if initial_state was not used
     f = self%mechanism%f
     self%rhs_count = self%rhs_count + 1
+    self%cached = .false.
     ydot(1:f) = y(f + 1:2*f)
-    call self%mechanism%dynamics(y(1:f), y(f + 1:2*f), ydot(f + 1:2*f), status)
+    call self%mechanism%dynamics(t, y(1:f), y(f + 1:2*f), ydot(f + 1:2*f), status)
+    if (.not. status%ok()) return
+    ydot(2*f + 1:) = self%mechanism%law_power
+    if (self%root_count() == 0) return
+    call root_values(self, y, 3)
+    self%cache_t = t
+    self%cache_y = y
+    self%cached = .true.
   end subroutine mechanism_rhs
 
   integer function mechanism_root_count(self) result(n)
     class(mechanism_ode_t), intent(in) :: self
-    n = 0
-    if (allocated(self%event_index)) n = size(self%event_index)
+    n = size(self%mechanism%edges) + count(self%mechanism%contacts%one_sided) + size(self%mechanism%law_roots)
+    if (allocated(self%event_index)) n = n + size(self%event_index)
   end function mechanism_root_count
+
+  !> Number of user crossings.
+  pure integer function n_user(self)
+    class(mechanism_ode_t), intent(in) :: self
+    n_user = 0
+    if (allocated(self%event_index)) n_user = size(self%event_index)
+  end function n_user
 
   subroutine mechanism_roots(self, t, y, g)
     class(mechanism_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
     real(wp), intent(out) :: g(:)
-    integer :: k
-    associate (unused_t => t)
-    end associate
-    do k = 1, size(self%event_index)
-      g(k) = y(self%event_index(k)) - self%event_value(k)
-    end do
+    type(status_t) :: status
+    integer :: f, level
+    self%root_calls = self%root_calls + 1
+    if (self%cached .and. t == self%cache_t) then
+      if (all(y == self%cache_y) .or. near_and_far_from_zero(self, y)) then
+        self%root_cache_hits = self%root_cache_hits + 1
+        call root_values(self, y, 0)   ! the user crossings from y itself
+        g = self%cache_g(1:size(g))
+        return
+      end if
+    end if
+    f = self%mechanism%f
+    level = 1
+    if (size(self%mechanism%law_roots) > 0) level = 2
+    if (any(self%mechanism%contacts%one_sided)) level = 3
+    select case (level)
+    case (3)
+      call self%mechanism%dynamics(t, y(1:f), y(f + 1:2*f), self%work_ydot(1:f), status)
+    case (2)
+      call self%mechanism%set_positions(y(1:f), status)
+      if (status%ok()) call self%mechanism%set_velocities(y(f + 1:2*f))
+      if (status%ok()) call self%mechanism%evaluate_laws(t, status)
+    case default
+      if (size(self%mechanism%edges) > 0) call self%mechanism%set_positions(y(1:f), status)
+    end select
+    if (status%ok()) then
+      call root_values(self, y, level)
+      self%cache_t = t
+      self%cache_y = y
+      self%cached = .true.
+    else
+      call root_values(self, y, 1)   ! edges from the scalars as far as the closure got
+      self%cached = .false.
+    end if
+    g = self%cache_g(1:size(g))
   end subroutine mechanism_roots
+
+  !> y within 1e-7 of the cached state and every stored root value far from
+  !> zero (see the module comment).
+  logical function near_and_far_from_zero(self, y) result(usable)
+    class(mechanism_ode_t), intent(in) :: self
+    real(wp), intent(in) :: y(:)
+    integer :: i
+    usable = maxval(abs(y - self%cache_y)) <= 1e-7_wp*max(maxval(abs(self%cache_y)), 1.0_wp)
+    if (.not. usable) return
+    do i = n_user(self) + 1, self%root_count()
+      if (abs(self%cache_g(i)) < 1e-3_wp*self%root_scale(i)) then
+        usable = .false.
+        return
+      end if
+    end do
+  end function near_and_far_from_zero
+
+  !> Fills cache_g from the mechanism's state: user crossings always, edges
+  !> from level 1, the laws' roots from level 2, lift-off from level 3 (the
+  !> others are kept); a full evaluation (level 3) updates the scales G_i.
+  subroutine root_values(self, y, level)
+    class(mechanism_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: y(:)
+    integer, intent(in) :: level
+    integer :: k, i
+    i = 0
+    do k = 1, n_user(self)
+      i = i + 1
+      self%cache_g(i) = y(self%event_index(k)) - self%event_value(k)
+    end do
+    if (level < 1) return
+    associate (m => self%mechanism)
+      do k = 1, size(m%edges)
+        i = i + 1
+        if (m%edges(k)%upper) then
+          self%cache_g(i) = m%edges(k)%bound - m%edges(k)%margin - m%scalars(m%edges(k)%scalar)%q
+        else
+          self%cache_g(i) = m%scalars(m%edges(k)%scalar)%q - m%edges(k)%bound - m%edges(k)%margin
+        end if
+      end do
+      do k = 1, size(m%contacts)
+        if (.not. m%contacts(k)%one_sided) cycle
+        i = i + 1
+        if (level >= 3) self%cache_g(i) = m%normal(k)
+      end do
+      if (level >= 2 .and. size(m%law_roots) > 0) self%cache_g(i + 1:i + size(m%law_roots)) = m%law_roots
+    end associate
+    if (level >= 3) self%root_scale = max(self%root_scale, abs(self%cache_g))
+  end subroutine root_values
+
+  !> Records the complete state (series of kinetostatics_recorder).
+  subroutine mechanism_record(self, t, y, kind, status)
+    class(mechanism_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    integer, intent(in) :: kind
+    type(status_t), intent(inout) :: status
+    integer :: f
+    f = self%mechanism%f
+    if (.not. allocated(self%series%time)) call self%start_series(100)
+    call self%series%record(self%mechanism, t, y(1:f), y(f + 1:2*f), y(2*f + 1:), kind, status)
+  end subroutine mechanism_record
+
+  subroutine mechanism_handle_event(self, t, y, fired, action, status)
+    class(mechanism_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    real(wp), intent(inout) :: y(:)
+    integer, intent(in) :: fired(:)
+    integer, intent(out) :: action
+    type(status_t), intent(inout) :: status
+    integer :: k, i, law_action
+    character(len=:), allocatable :: where
+    associate (unused => y)
+    end associate
+    self%cached = .false.
+    action = EVENT_IGNORE
+    where = ' at t = '//format_short(t)//' s'
+    i = 0
+    do k = 1, n_user(self)
+      i = i + 1
+      if (fired(i) /= 0) action = max(action, self%event_action)
+    end do
+    associate (m => self%mechanism)
+      do k = 1, size(m%edges)
+        i = i + 1
+        if (fired(i) /= -1) cycle
+        associate (e => m%edges(k), name => m%elements(m%edges(k)%element)%e%name)
+          if (.not. e%along_u) then
+            call set_status(status, STATUS_DOMAIN, 'surface joint '''//name//''' reached the edge v = '// &
+                            format_short(e%bound)//' of its surface''s parameter domain'//where)
+            return
+          end if
+          action = EVENT_STOP
+          if (e%upper) then
+            call add_outcome(self, 'end of slide: surface joint '''//name//''' reached its end u = '// &
+                             format_short(e%bound)//where)
+          else
+            call add_outcome(self, 'back at the start of the slide: surface joint '''//name// &
+                             ''' reached its start u = '//format_short(e%bound)//where)
+          end if
+        end associate
+      end do
+      do k = 1, size(m%contacts)
+        if (.not. m%contacts(k)%one_sided) cycle
+        i = i + 1
+        if (fired(i) /= -1) cycle
+        action = EVENT_STOP
+        call add_outcome(self, 'lift-off: the normal force of contact '''//m%contacts(k)%name// &
+                         ''' fell to zero'//where)
+      end do
+      do k = 1, m%n_laws
+        associate (first => m%law_root_start(k), last => m%law_root_start(k + 1) - 1)
+          if (last < first) cycle
+          if (all(fired(i + first:i + last) == 0)) cycle
+          call m%laws(k)%law%handle_event(t, fired(i + first:i + last), law_action, status)
+          if (.not. status%ok()) return
+          action = max(action, law_action)
+        end associate
+      end do
+    end associate
+  end subroutine mechanism_handle_event
+
+  subroutine add_outcome(self, text)
+    class(mechanism_ode_t), intent(inout) :: self
+    character(len=*), intent(in) :: text
+    if (.not. allocated(self%outcome)) self%outcome = ''
+    if (len(self%outcome) > 0) then
+      self%outcome = self%outcome//'; '//text
+    else
+      self%outcome = text
+    end if
+  end subroutine add_outcome
 end module kinetostatics_mechanism_ode

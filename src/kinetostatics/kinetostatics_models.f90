@@ -11,6 +11,7 @@ module kinetostatics_models
   use kinetostatics_surface_joint, only: new_surface_joint
   use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT
   use kinetostatics_mass, only: new_mass_element
+  use kinetostatics_force_laws, only: new_coulomb_friction, new_viscous_friction, new_normal_viscous_friction
   use kinetostatics_mechanism, only: mechanism_t
   implicit none (type, external)
   private
@@ -43,8 +44,19 @@ module kinetostatics_models
                                          0.0_wp, 0.0_wp, 0.25_wp], [3, 3])   ! kg m^2, bar frame
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -9.80665_wp]
     real(wp) :: mu = 0, viscous = 0             ! Coulomb (1) and viscous (N s/m) at both contacts
+    real(wp) :: normal_viscous = 0              ! s/m: F = -mu_n |N| w_t at both contacts (the egg's law)
     real(wp) :: regularization_speed = 1e-6_wp  ! m/s
+    !> Darboux frame parameters (3.38), (3.41); sigma must orient the normal
+    !> z_D towards the side of the surface the bar is on (N > 0 while pressed)
     real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0
+    !> Friction on the Darboux frames (the thesis's K_D of (4.28)) instead of on
+    !> the bar at the contact points: the same generalized forces while the
+    !> loops are closed (docs/multibody.md), kept to show that.
+    logical :: loads_on_darboux_frames = .false.
+    !> The front contact's normal force from the cut force of the closure
+    !> measurement front_z (the rider's heels and back, METHOD-PART2 B.3)
+    !> instead of the force on the front Darboux frame; the two are equal.
+    logical :: front_normal_from_cut_force = .false.
   end type sled_params_t
 
 contains
@@ -175,14 +187,22 @@ contains
   !> and the front contact (surface joint 'front'), closed by three plane-point
   !> measurements with the planes of the front Darboux frame (thesis (4.27)).
   !> beta starts from the projection of the front end onto the surface's
-  !> tangent plane at (u0, v0), pitch 0.
-  subroutine build_sled(p, surface, q0, m, status)
+  !> tangent plane at (u0, v0), pitch 0. Contacts 'rear' and 'front' between
+  !> the ground's surface and the bar (contact points: the two Darboux
+  !> frames); force laws 'rear_coulomb', 'front_coulomb' (mu > 0),
+  !> 'rear_viscous', 'front_viscous' (viscous > 0) and 'rear_normal_viscous',
+  !> 'front_normal_viscous' (normal_viscous > 0), in this order. With
+  !> finish = .false. the mechanism is left open for more laws or contacts
+  !> (then call m%finalize).
+  subroutine build_sled(p, surface, q0, m, status, finish)
     type(sled_params_t), intent(in) :: p
     class(surface_t), intent(in) :: surface
     real(wp), intent(in) :: q0(3)
     type(mechanism_t), intent(out) :: m
     type(status_t), intent(inout) :: status
-    integer :: d1, heading, bar, front, d2, su, sv, sphi, spitch, su2, sv2, gx, gy, gz
+    logical, intent(in), optional :: finish
+    integer :: d1, heading, bar, front, d2, su, sv, sphi, spitch, su2, sv2, gx, gy, gz, rear_contact, &
+               front_contact, front_body
     type(surface_point_t) :: pt
     type(darboux_frame_t) :: fr
     real(wp) :: dvec(3), e11, e12, e22, b1, b2, det, du, dv
@@ -225,9 +245,36 @@ contains
     call m%add_element(new_measurement('front_y', MEASURE_PLANE_POINT, d2, front, gy, axis_i=[0.0_wp, 1.0_wp, 0.0_wp]))
     call m%add_element(new_measurement('front_z', MEASURE_PLANE_POINT, d2, front, gz, axis_i=[0.0_wp, 0.0_wp, 1.0_wp]))
     call m%add_loop('front contact', [gx, gy, gz], [0.0_wp, 0.0_wp, 0.0_wp], [spitch, su2, sv2], status)
-    call m%add_contact('rear', d1, p%mu, p%viscous, p%regularization_speed)
-    call m%add_contact('front', d2, p%mu, p%viscous, p%regularization_speed)
+    ! contacts of the bar with the ground's surface: sigma orients the Darboux
+    ! z axes towards the side the bar is on, so N > 0 while it presses
+    if (p%loads_on_darboux_frames) then
+      rear_contact = m%add_contact('rear', 1, d1, d1)
+    else
+      rear_contact = m%add_contact('rear', 1, bar, d1)
+    end if
+    front_body = bar
+    if (p%loads_on_darboux_frames) front_body = d2
+    if (p%front_normal_from_cut_force) then
+      front_contact = m%add_contact('front', 1, front_body, d2, normal_measurement=gz)
+    else
+      front_contact = m%add_contact('front', 1, front_body, d2)
+    end if
+    if (p%mu > 0) then
+      call m%add_law(new_coulomb_friction('rear_coulomb', rear_contact, p%mu, p%regularization_speed, status))
+      call m%add_law(new_coulomb_friction('front_coulomb', front_contact, p%mu, p%regularization_speed, status))
+    end if
+    if (p%viscous > 0) then
+      call m%add_law(new_viscous_friction('rear_viscous', rear_contact, p%viscous, status))
+      call m%add_law(new_viscous_friction('front_viscous', front_contact, p%viscous, status))
+    end if
+    if (p%normal_viscous > 0) then
+      call m%add_law(new_normal_viscous_friction('rear_normal_viscous', rear_contact, p%normal_viscous, status))
+      call m%add_law(new_normal_viscous_friction('front_normal_viscous', front_contact, p%normal_viscous, status))
+    end if
     call m%set_coordinates([su, sv, sphi])
+    if (present(finish)) then
+      if (.not. finish) return
+    end if
     call m%finalize(status)
   end subroutine build_sled
 end module kinetostatics_models

@@ -42,7 +42,7 @@ contains
     call build_fourbar(config%params, beta0, sys%mechanism, status)
     call mark_input_failure(status)
     if (.not. status%ok()) return
-    call run_mechanism('fourbar', input, run, solver, sys, [config%crank0, config%dcrank0], &
+    call run_mechanism('fourbar', input, run, solver, sys, [config%crank0], [config%dcrank0], &
                        [character(len=4) :: 'rad'], [character(len=4) :: 'rad', 'rad'], status)
   end subroutine run_fourbar
 end module scenarios_fourbar

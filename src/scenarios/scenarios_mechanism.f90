@@ -1,13 +1,15 @@
-!> The run driver shared by the multibody scenarios (pendulum, fourbar, sled):
-!> check the start, open the result file, integrate and record, write, summarize.
+!> The run shared by the multibody scenarios (pendulum, fourbar, sled): check
+!> the start, open the result file, run through the integration driver
+!> (outputs, events, progress lines, runaway guards), write, summarize.
 module scenarios_mechanism
   use, intrinsic :: iso_fortran_env, only: output_unit
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status
   use base_log, only: log_info
   use numerics_ode, only: ode_stats_t
+  use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
-  use kinetostatics_recorder, only: mechanism_series_t, integrate_mechanism
+  use kinetostatics_recorder, only: mechanism_series_t
   use io_input, only: input_text_t, format_real, mark_input_failure
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, check_output_count
@@ -19,57 +21,86 @@ module scenarios_mechanism
   use geometry_surface, only: surface_t
   implicit none (type, external)
   private
-  public :: run_mechanism
+  public :: run_mechanism, mechanism_driver_options
+
+  !> Runaway guard of the multibody scenarios: a mean step below 1e-4 s after
+  !> the driver's guard_steps steps. Their regular runs take mean steps of
+  !> 1e-3 s or more (bench/multibody_bench: the four-bar at rtol 1e-12 the
+  !> smallest, 1.1e-3 s); a body at rest under regularized Coulomb friction
+  !> with Adams takes steps of a few microseconds (millions of them).
+  real(wp), parameter :: min_mean_step = 1e-4_wp
 
 contains
 
-  !> The common run of a multibody scenario from y0 = [q0, q0'].
-  subroutine run_mechanism(scenario, input, run, solver, sys, y0, q_units, beta_units, status, surface)
+  !> Driver options of a multibody scenario from its &solver.
+  function mechanism_driver_options(scenario, solver) result(options)
+    character(len=*), intent(in) :: scenario
+    type(solver_config_t), intent(in) :: solver
+    type(driver_options_t) :: options
+    options%ode = solver%options
+    options%t_end = solver%duration
+    options%output_step = solver%output_step
+    options%min_mean_step = min_mean_step
+    options%label = scenario
+  end function mechanism_driver_options
+
+  !> The common run of a multibody scenario from q0, q0'.
+  subroutine run_mechanism(scenario, input, run, solver, sys, q0, qd0, q_units, beta_units, status, surface)
     character(len=*), intent(in) :: scenario
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
     type(solver_config_t), intent(in) :: solver
     type(mechanism_ode_t), intent(inout), target :: sys
-    real(wp), intent(in) :: y0(:)
+    real(wp), intent(in) :: q0(:), qd0(:)
     character(len=*), intent(in) :: q_units(:), beta_units(:)   ! units of the q and of the dependent beta
     type(status_t), intent(inout) :: status
     class(surface_t), intent(in), optional :: surface   ! the surface of the contacts, written as a grid
     type(result_file_t) :: file
-    type(mechanism_series_t) :: series
-    type(ode_stats_t) :: stats
+    type(driver_result_t) :: result
     type(status_t) :: run_status, write_status
-    real(wp) :: cpu
+    real(wp), allocatable :: y0(:)
     logical :: complete
-    character(len=:), allocatable :: message
+    character(len=:), allocatable :: message, outcome
 
-    call sys%mechanism%check_start(y0(1:sys%mechanism%f), status)
+    y0 = sys%initial_state(q0, qd0)
+    call sys%check_start(y0, status)
     if (.not. status%ok()) then
       call prefix_status(status, input%name//': '//scenario)
       call mark_input_failure(status)
       return
     end if
     ! numbers stored per output time (mechanism_series_t; every element counted as a body)
-    call check_output_count(input, solver, solver%duration, 5 + 3*sys%mechanism%f + 2*sys%mechanism%r + &
-                            18*sys%mechanism%n_elements + 10*size(sys%mechanism%contacts), scenario, status)
+    call check_output_count(input, solver, solver%duration, 6 + 3*sys%mechanism%f + 2*sys%mechanism%r + &
+                            18*sys%mechanism%n_elements + 10*size(sys%mechanism%contacts) + &
+                            6*sys%mechanism%n_laws, scenario, status)
     if (.not. status%ok() .or. run%check_only) return
     call file%create(trim(run%output), status)
     if (.not. status%ok()) return
     call log_info(scenario//': '//format_real(solver%duration)//' s, output every '// &
                   format_real(solver%output_step)//' s')
-    call integrate_mechanism(sys, y0, solver%options, solver%duration, solver%output_step, series, stats, &
-                             cpu, run_status)
-    if (.not. run_status%ok()) call prefix_status(run_status, scenario)
-    call write_mechanism_series(file, scenario, input, run%title, series, stats, cpu, q_units, beta_units, &
-                                write_status)
+    call sys%start_series(nint(solver%duration/solver%output_step) + 2)
+    call drive(sys, y0, mechanism_driver_options(scenario, solver), result, run_status)
+    select case (result%outcome)
+    case (DRIVE_END_TIME)
+      outcome = 'the end of the simulated time'
+    case (DRIVE_EVENT_STOP)
+      outcome = sys%outcome
+    case default
+      outcome = 'failed: '//run_status%text()
+    end select
+    call write_mechanism_series(file, scenario, input, run%title, sys%series, outcome, result%stats, result%cpu, &
+                                q_units, beta_units, write_status)
     ! the grid around the first contact's path (u, v are its first two coordinates)
-    if (present(surface)) call write_surface_grid_around(file, surface, series%q(1, :series%n), &
-                                                         series%q(2, :series%n), write_status)
+    if (present(surface)) call write_surface_grid_around(file, surface, sys%series%q(1, :sys%series%n), &
+                                                         sys%series%q(2, :sys%series%n), write_status)
     complete = run_status%ok() .and. write_status%ok()
-    message = write_status%text()
+    message = 'ok: '//outcome
+    if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
     call file%finish(complete, message, write_status)
-    if (write_status%ok() .and. series%n > 0) call write_xdmf(file, scenario, series, write_status)
-    call report(scenario, series, stats, cpu, q_units, file%final_path(), run, complete, message, write_status)
+    if (write_status%ok() .and. sys%series%n > 0) call write_xdmf(file, scenario, sys%series, write_status)
+    call report(scenario, sys%series, result%stats, result%cpu, q_units, file%final_path(), run, complete, &
+                message, outcome, write_status)
     if (.not. run_status%ok()) then
       status = run_status
     else if (.not. write_status%ok()) then
@@ -109,8 +140,8 @@ contains
 
   !> The printed summary (angles in degrees) and, with --summary-json, the
   !> same numbers as JSON (SI).
-  subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, status)
-    character(len=*), intent(in) :: scenario, path, message
+  subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, outcome, status)
+    character(len=*), intent(in) :: scenario, path, message, outcome
     type(mechanism_series_t), intent(in) :: s
     type(ode_stats_t), intent(in) :: stats
     real(wp), intent(in) :: cpu
@@ -128,6 +159,7 @@ contains
     scale = max(maxval(s%kinetic(:n)), maxval(abs(s%potential(:n) - s%potential(1))), tiny(1.0_wp))
     call summary%start(scenario, 'slidesim '//scenario)
     call summary%add('simulated_time', 'simulated time', s%time(n), 's')
+    if (complete) call summary%add_text('outcome', 'stopped at', outcome)
     do k = 1, s%f
       q = trim(s%q_names(k))
       u = trim(q_units(k))
@@ -144,13 +176,19 @@ contains
     end do
     do k = 1, s%nc
       q = trim(s%contact_names(k))
-      call summary%add(q//'_speed_max', q//' speed max', maxval([(norm2(s%contact_v(:, k, i)), i=1, n)]), 'm/s', &
-                       'm/s ('//engineering(3.6_wp*maxval([(norm2(s%contact_v(:, k, i)), i=1, n)]))//' km/h)')
+      call summary%add(q//'_speed_max', q//' slip speed max', maxval([(norm2(s%slip(:, k, i)), i=1, n)]), 'm/s', &
+                       'm/s ('//engineering(3.6_wp*maxval([(norm2(s%slip(:, k, i)), i=1, n)]))//' km/h)')
       call summary%add_range(q//'_normal_force', q//' normal force min / max', minval(s%normal(k, :n)), &
                              maxval(s%normal(k, :n)), 'N')
     end do
     call summary%add('energy_change', 'energy change', (s%kinetic(n) + s%potential(n) - e0)/scale, '1', &
                      '(relative to the largest kinetic/potential change)')
+    if (s%nl > 0) then
+      call summary%add('law_work', 'work of the force laws', sum(s%law_work(:, n)), 'J')
+      call summary%add('energy_balance_error', 'energy balance error', &
+                       (s%kinetic(n) + s%potential(n) - e0 - sum(s%law_work(:, n)))/scale, '1', &
+                       '(E(t) - E(0) - work, same scale)')
+    end if
     if (s%r > 0) call summary%add('closure_residual_max', 'closure residual max', maxval(s%closure(:n)), 'm')
     call summary%add_count('steps', 'integrator', int(stats%steps), 'steps')
     call summary%add_count('rhs_evaluations', 'right-hand sides', int(stats%rhs_evaluations), 'evaluations')

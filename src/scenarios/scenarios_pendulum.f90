@@ -33,7 +33,7 @@ contains
     call mark_input_failure(status)
     if (.not. status%ok()) return
     n = config%params%links
-    call run_mechanism('pendulum', input, run, solver, sys, [config%theta0(1:n), config%dtheta0(1:n)], &
+    call run_mechanism('pendulum', input, run, solver, sys, config%theta0(1:n), config%dtheta0(1:n), &
                        [character(len=4) :: 'rad', 'rad'], [character(len=4) ::], status)
   end subroutine run_pendulum
 end module scenarios_pendulum

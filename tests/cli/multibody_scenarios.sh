@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The multibody scenarios end to end: every input in inputs/pendulum, fourbar,
-# sled runs (exit 0) and writes a result file with units on its datasets; bad
+# sled runs (exit 0) and writes a result file with units on its datasets; the
+# sled run past the end of the demo slide ends complete with 'end of slide'; bad
 # input stops with a message naming the group/variable or the loop, exit 1, no
 # result file.
 set -u
@@ -22,6 +23,20 @@ for input in "$root"/inputs/pendulum/*.nml "$root"/inputs/fourbar/*.nml "$root"/
     echo "FAIL $input: /$scenario/energy has no units attribute"; failures=$((failures + 1))
   fi
 done
+
+# the sled down the whole demo slide: the end of the slide is a normal end
+checks=$((checks + 1))
+sed "s/duration = 8.0/duration = 60.0/; s#'../demo_slide/slide.nml'#'$root/inputs/demo_slide/slide.nml'#" \
+  "$root/inputs/sled/demo_slide.nml" > "$work/end_of_slide.nml"
+if "$slidesim" -q -o "$work/end.h5" "$work/end_of_slide.nml" >"$work/end.out" 2>"$work/end.err"; then
+  status=$(h5dump -a /status "$work/end.h5" 2>/dev/null | grep -o '"[a-z]*"' | tail -1)
+  outcome=$(h5dump -a /sled/outcome "$work/end.h5" 2>/dev/null)
+  if [ "$status" != '"complete"' ] || ! echo "$outcome" | grep -q 'end of slide'; then
+    echo "FAIL end of slide: status $status, outcome $outcome"; failures=$((failures + 1))
+  fi
+else
+  echo "FAIL end of slide: exit status non-zero: $(cat "$work/end.err")"; failures=$((failures + 1))
+fi
 
 expect() {
   local name=$1; shift

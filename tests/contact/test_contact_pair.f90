@@ -16,7 +16,7 @@ program test_contact_pair
   use geometry_elementary, only: plane_t, ellipsoid_t
   use geometry_bspline_surface, only: bspline_surface_t, bspline_scattered
   use kinetostatics_joints, only: new_spherical, new_prismatic
-  use kinetostatics_mass, only: new_applied_force
+  use kinetostatics_force_laws, only: new_constant_load
   use kinetostatics_mechanism, only: mechanism_t
   use contact_pair, only: contact_pair_t, add_contact_pair, place_contact_pair, check_contact_branch
   implicit none (type, external)
@@ -55,10 +55,10 @@ contains
     table = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], status)
     egg = ellipsoid_t(egg_a, egg_b, egg_a, status)
     call add_contact_pair(m, 'egg_on_table', 1, table, 1.0_wp, 'egg', egg, side_egg, pair, status)
-    call m%add_element(new_applied_force('push', pair%frame_b, [0.3_wp, -0.2_wp, 0.9_wp], &
-                                         [0.01_wp, 0.02_wp, -0.005_wp], .false.))
-    call m%add_element(new_applied_force('push_contact', pair%frame_2d, [-0.1_wp, 0.4_wp, 0.2_wp], &
-                                         [0.003_wp, -0.01_wp, 0.02_wp], .false.))
+    call m%add_law(new_constant_load('push', pair%frame_b, [0.3_wp, -0.2_wp, 0.9_wp], &
+                                     [0.01_wp, 0.02_wp, -0.005_wp], .false.))
+    call m%add_law(new_constant_load('push_contact', pair%frame_2d, [-0.1_wp, 0.4_wp, 0.2_wp], &
+                                     [0.003_wp, -0.01_wp, 0.02_wp], .false.))
     call m%set_coordinates(pair%coordinates())
     call m%finalize(status)
   end subroutine build_egg
@@ -117,12 +117,12 @@ contains
     s(4) = m%add_scalar('b4', 0.2_wp)
     call m%add_element(new_prismatic('bowl_rise', f1, f2, s(4), [0.0_wp, 0.0_wp, 1.0_wp]))
     call add_contact_pair(m, 'cup_in_bowl', f2, big, 1.0_wp, 'cup', small, -1.0_wp, pair, st)
-    call m%add_element(new_applied_force('push', pair%frame_b, [0.3_wp, -0.2_wp, 0.9_wp], &
-                                         [0.1_wp, 0.2_wp, -0.05_wp], .false.))
-    call m%add_element(new_applied_force('push_bowl', f2, [0.5_wp, 0.1_wp, -0.3_wp], &
-                                         [-0.1_wp, 0.05_wp, 0.2_wp], .false.))
-    call m%add_element(new_applied_force('push_contact', pair%frame_1d, [-0.1_wp, 0.4_wp, 0.2_wp], &
-                                         [0.03_wp, -0.1_wp, 0.2_wp], .true.))
+    call m%add_law(new_constant_load('push', pair%frame_b, [0.3_wp, -0.2_wp, 0.9_wp], &
+                                     [0.1_wp, 0.2_wp, -0.05_wp], .false.))
+    call m%add_law(new_constant_load('push_bowl', f2, [0.5_wp, 0.1_wp, -0.3_wp], &
+                                     [-0.1_wp, 0.05_wp, 0.2_wp], .false.))
+    call m%add_law(new_constant_load('push_contact', pair%frame_1d, [-0.1_wp, 0.4_wp, 0.2_wp], &
+                                     [0.03_wp, -0.1_wp, 0.2_wp], .true.))
     call m%set_coordinates([s, pair%coordinates()])
     call m%finalize(st)
     call check(st%ok(), 'cup in bowl built: '//st%text())

@@ -10,7 +10,8 @@ program test_mechanism
   use kinetostatics_mechanism, only: mechanism_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_joints, only: new_revolute, new_rigid_offset
-  use kinetostatics_mass, only: new_mass_element, new_applied_force
+  use kinetostatics_mass, only: new_mass_element
+  use kinetostatics_force_laws, only: new_constant_load
   use kinetostatics_models, only: pendulum_params_t, build_pendulum, fourbar_params_t, build_fourbar, &
     fourbar_assembly
   implicit none (type, external)
@@ -147,7 +148,7 @@ contains
     do trial = 1, 4
       q = [0.3_wp*trial, -0.7_wp + 0.5_wp*trial]
       qd = [sin(1.0_wp*trial), cos(2.0_wp*trial)]
-      call m%dynamics(q, qd, qdd, st)
+      call m%dynamics(0.0_wp, q, qd, qdd, st)
       call check(st%ok(), 'double pendulum dynamics: '//st%text())
       c2 = cos(q(2))
       ref(1, 1) = p%inertia(1) + p%inertia(2) + p%mass(1)*p%length(1)**2 + &
@@ -195,7 +196,7 @@ contains
     end block
     ! M = q'.M q' consistency with the kinetic energy through the loop
     qd = 2.0_wp
-    call sys%mechanism%evaluate([0.3_wp], qd, res, st)
+    call sys%mechanism%evaluate(0.0_wp, [0.3_wp], qd, res, st)
     call sys%mechanism%set_velocities(qd)
     call sys%mechanism%energy(tk, vk)
     call check_close(0.5_wp*sys%mechanism%mass(1, 1)*qd(1)**2, tk, 1e-12_wp, 0.0_wp, &
@@ -224,7 +225,7 @@ contains
     print '(a, es10.2, a, es10.2)', '  four-bar: closure residual ', worst, ', relative energy drift ', drift/scale
   end subroutine fourbar_run
 
-  !> A constant horizontal force F on the bob (an applied-force element at the
+  !> A constant horizontal force F on the bob (a constant-load force law at the
   !> bob's frame) holds the pendulum at tan(theta) = -F/(m g): q'' = 0 there
   !> (to rounding: 1e-13 rad/s^2 against terms of size g/L ~ 10).
   subroutine applied_force()
@@ -235,11 +236,11 @@ contains
     integer :: bob
     call build_pendulum_with_force(p, 2.0_wp, m, bob, st)
     theta_eq = -atan(2.0_wp/9.80665_wp)   ! theta > 0 swings the bob towards -x
-    call m%dynamics([theta_eq], [0.0_wp], qdd, st)
+    call m%dynamics(0.0_wp, [theta_eq], [0.0_wp], qdd, st)
     call check(st%ok(), 'pendulum with an applied force: '//st%text())
-    call check(abs(qdd(1)) <= 1e-13_wp, 'applied force element: equilibrium at tan(theta) = F/(m g)')
-    call m%dynamics([theta_eq - 0.1_wp], [0.0_wp], qdd, st)
-    call check(qdd(1) > 0, 'applied force element: restoring beyond the equilibrium')
+    call check(abs(qdd(1)) <= 1e-13_wp, 'constant load: equilibrium at tan(theta) = F/(m g)')
+    call m%dynamics(0.0_wp, [theta_eq - 0.1_wp], [0.0_wp], qdd, st)
+    call check(qdd(1) > 0, 'constant load: restoring beyond the equilibrium')
   end subroutine applied_force
 
   !> The simple pendulum plus a rigid offset to the bob and a force +F x there.
@@ -257,7 +258,7 @@ contains
                                         [0.0_wp, 0.0_wp, -p%length(1)], p%gravity, status))
     bob = m%add_frame('bob')
     call m%add_element(new_rigid_offset('rod', link, bob, [0.0_wp, 0.0_wp, -p%length(1)]))
-    call m%add_element(new_applied_force('push', bob, [force, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], .false.))
+    call m%add_law(new_constant_load('push', bob, [force, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], .false.))
     call m%set_coordinates([t1])
     call m%finalize(status)
   end subroutine build_pendulum_with_force
@@ -289,7 +290,7 @@ contains
     st = status_t()
     pp%length(1) = 0
     call build_pendulum(pp, m, st)
-    call m%dynamics([0.1_wp], [0.0_wp], qdd, st)
+    call m%dynamics(0.0_wp, [0.1_wp], [0.0_wp], qdd, st)
     call check(.not. st%ok() .and. index(st%text(), 'theta1') > 0, &
                'a coordinate without inertia is named: '//st%text())
     st = status_t()

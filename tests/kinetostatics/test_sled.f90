@@ -1,6 +1,9 @@
 !> The sled: a bar on a surface with a rear surface joint (q = u, v, phi) and a
 !> front surface joint closed by three plane-point conditions (beta = pitch,
-!> u2, v2), like the rider's legs (thesis 4.27).
+!> u2, v2), like the rider's legs (thesis 4.27). Friction laws at its two
+!> contacts: exact Coulomb solve against the incline's closed form, the two
+!> normal-force rules, loads on the bar equal to loads on the Darboux frames,
+!> energy balance with the work integrals.
 program test_sled
   use base_kinds, only: wp
   use base_constants, only: pi
@@ -22,6 +25,8 @@ program test_sled
   call viscous_plane()
   call bowl(0.0_wp)
   call bowl(0.15_wp)
+  call darboux_loads_equal_body_loads()
+  call energy_balance()
   call finish_tests('test_sled')
 
 contains
@@ -46,13 +51,15 @@ contains
     type(ode_integrator_t) :: integ
     type(ode_options_t) :: opt
     type(status_t) :: st
-    real(wp) :: qdd(3), acc, y(6), t, res, q0(3), qd0(3)
+    real(wp) :: qdd(3), acc, t, res, q0(3), qd0(3)
+    real(wp), allocatable :: y(:)
     character(len=20) :: label
 
     write (label, '(f4.2, a, f4.1)') phi, ', sigma ', sigma
     plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [cos(theta), 0.0_wp, -sin(theta)], [0.0_wp, 1.0_wp, 0.0_wp], st)
     p%mu = mu
     p%sigma = sigma
+    p%front_normal_from_cut_force = sigma < 0   ! the other rule in one of the cases
     q0 = [0.5_wp, 0.2_wp, phi]
     qd0 = [1.0_wp, 0.0_wp, 0.0_wp]
     call build_sled(p, plane, q0, sys%mechanism, st)
@@ -61,7 +68,7 @@ contains
     associate (m => sys%mechanism)
       call check(m%closure_residual() <= 1e-10_wp, 'incline: closed at the start')
       call check_close(m%scalars(m%scalar_index('pitch'))%q, 0.0_wp, 0.0_wp, 1e-12_wp, 'incline: pitch 0 on a plane')
-      call m%evaluate(q0, qd0, res, st)
+      call m%evaluate(0.0_wp, q0, qd0, res, st)
       call check(st%ok(), 'incline: evaluate: '//st%text())
       qdd = m%qdd
       acc = g*(sin(theta) - mu*cos(theta))
@@ -70,19 +77,24 @@ contains
       call check_close(qdd(1), acc, 1e-8_wp, 0.0_wp, 'incline: u'''' = g (sin theta - mu cos theta), phi = '//label)
       call check(abs(qdd(2)) <= 1e-8_wp*g .and. abs(qdd(3)) <= 1e-8_wp*g, &
                  'incline: v'''' = phi'''' = 0, phi = '//label)
-      call check_close(sigma*(m%contacts(1)%normal_force + m%contacts(2)%normal_force), p%mass*g*cos(theta), 1e-10_wp, &
-                       0.0_wp, 'incline: N_rear + N_front = m g cos theta')
+      ! N > 0 presses along z_D: with sigma = -1 z_D points into the plane,
+      ! away from the bar, so the plane must pull (N < 0)
+      call check_close(sigma*(m%contacts(1)%normal_force + m%contacts(2)%normal_force), p%mass*g*cos(theta), &
+                       1e-10_wp, 0.0_wp, 'incline: N_rear + N_front = m g cos theta, '//label)
       call check_close(m%contacts(1)%normal_force, m%contacts(2)%normal_force, 1e-10_wp, 0.0_wp, &
                        'incline: centre of mass halfway: equal normal forces')
       call check(res <= 1e-10_wp*p%mass*g, 'incline: inverse dynamics with the friction found has zero residual')
       ! the cut force of the plane-point condition along the front normal z_D2
-      ! is the force on the bar's front end along that normal: N_front
+      ! is the force on the bar's front end along that normal: N_front (with
+      ! either rule for the front contact's normal force)
       call check_close(m%lambda(3), m%contacts(2)%normal_force, 1e-10_wp, 0.0_wp, &
-                       'incline: cut force of front_z = normal force at the front contact')
+                       'incline: cut force of front_z = normal force at the front contact, '//label)
+      call check_close(m%law_power(1), -abs(m%contacts(1)%normal_force)*mu*qd0(1), 1e-10_wp, 0.0_wp, &
+                       'incline: Coulomb power at the rear = -mu N |w|')
     end associate
     opt%rtol = 1e-10_wp
     opt%atol = 1e-12_wp
-    y = [q0, qd0]
+    y = sys%initial_state(q0, qd0)
     call integ%start(sys, 0.0_wp, y, opt, st)
     call integ%advance(1.0_wp, t, y, st)
     call check(st%ok(), 'incline: integrated 1 s: '//st%text())
@@ -100,11 +112,12 @@ contains
     type(ode_integrator_t) :: integ
     type(ode_options_t) :: opt
     type(status_t) :: st
-    real(wp) :: y(6), t
+    real(wp), allocatable :: y(:)
+    real(wp) :: t
     plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], st)
     p%viscous = 3
-    y = [0.0_wp, 0.0_wp, 0.0_wp, 2.0_wp, 0.0_wp, 0.0_wp]
-    call build_sled(p, plane, y(1:3), sys%mechanism, st)
+    call build_sled(p, plane, [0.0_wp, 0.0_wp, 0.0_wp], sys%mechanism, st)
+    y = sys%initial_state([0.0_wp, 0.0_wp, 0.0_wp], [2.0_wp, 0.0_wp, 0.0_wp])
     call sys%mechanism%check_start(y(1:3), st)
     opt%rtol = 1e-11_wp
     opt%atol = 1e-13_wp
@@ -116,6 +129,10 @@ contains
                      'viscous friction: u'' = u0'' exp(-2 c t/m)')
     call check_close(y(1), 2*p%mass/(2*p%viscous)*(1 - exp(-2*p%viscous*1.5_wp/p%mass)), 1e-8_wp, 0.0_wp, &
                      'viscous friction: u = u0'' m/(2c) (1 - exp(-2 c t/m))')
+    ! each contact's work: -c int w^2 dt = -c u0'^2 m/(4c) (1 - exp(-4 c t/m))
+    call check_close(y(7), -p%viscous*4*p%mass/(4*p%viscous)*(1 - exp(-4*p%viscous*1.5_wp/p%mass)), 1e-8_wp, &
+                     0.0_wp, 'viscous friction: work integral of the rear contact in closed form')
+    call check_close(y(8), y(7), 1e-10_wp, 0.0_wp, 'viscous friction: both contacts do the same work')
   end subroutine viscous_plane
 
   !> In a paraboloid bowl: without friction energy is conserved (drift < 1e-8
@@ -130,7 +147,8 @@ contains
     type(ode_integrator_t) :: integ
     type(ode_options_t) :: opt
     type(status_t) :: st
-    real(wp) :: y(6), t, e0, e, e_prev, drift, worst, scale, tk, vk, res, chol(3, 3), q0(3), qd0(3), &
+    real(wp), allocatable :: y(:)
+    real(wp) :: t, e0, e, e_prev, drift, worst, scale, tk, vk, res, chol(3, 3), q0(3), qd0(3), &
                 mpol(3, 3), tij
     integer :: k, i, j
     logical :: decreasing, spd
@@ -145,7 +163,7 @@ contains
     call sys%mechanism%check_start(q0, st)
     call check(st%ok(), 'sled in the bowl starts: '//st%text())
     associate (m => sys%mechanism)
-      call m%evaluate(q0, qd0, res, st)
+      call m%evaluate(0.0_wp, q0, qd0, res, st)
       call check(res <= 1e-10_wp*p%mass*g, 'bowl: inverse-dynamics residual zero at the computed q'''', mu = '//label)
       call check(maxval(abs(m%mass - transpose(m%mass))) <= 1e-13_wp*maxval(abs(m%mass)), 'bowl: M symmetric')
       chol = m%mass
@@ -195,7 +213,7 @@ contains
       opt%rtol = 1e-8_wp
       opt%atol = 1e-10_wp
     end if
-    y = [q0, qd0]
+    y = sys%initial_state(q0, qd0)
     call integ%start(sys, 0.0_wp, y, opt, st)
     drift = 0
     worst = 0
@@ -214,7 +232,7 @@ contains
       e_prev = e
     end do
     call check(st%ok(), 'bowl: integrated 10 s: '//st%text())
-    if (mu > 0) print '(a, 6es11.3, a, i0)', '  sled with friction at 10 s: ', y, ', rhs ', sys%rhs_count
+    if (mu > 0) print '(a, 6es11.3, a, i0)', '  sled with friction at 10 s: ', y(1:6), ', rhs ', sys%rhs_count
     call check(worst <= 1e-10_wp, 'bowl: closure residual below 1e-10 all along')
     if (mu == 0) then
       call check(drift <= 1e-8_wp*scale, 'bowl, frictionless: energy drift below 1e-8 over 10 s')
@@ -224,4 +242,116 @@ contains
       call check(decreasing .and. e_prev < e0 - 1e-3_wp*scale, 'bowl, mu = '//label//': energy decreases')
     end if
   end subroutine bowl
+  !> Friction at the body frames (material slip at the contact points, the
+  !> default) against friction at the Darboux frames (the thesis's form): the
+  !> bar rides on the rear Darboux frame (same origin, so same velocity and a
+  !> force there passes the revolutes unchanged), and at the front the closure
+  !> holds the bar's end on the front Darboux origin, so their velocities are
+  !> equal and the two loads differ only by a constraint force, which changes
+  !> the cut forces of front_x and front_y but not q'', N or the powers.
+  !> Equal to rounding at scattered states; trajectories equal to the
+  !> integrator's tolerance.
+  subroutine darboux_loads_equal_body_loads()
+    type(sled_params_t) :: p
+    class(surface_t), allocatable :: surface
+    type(mechanism_ode_t), target :: body, darboux
+    type(ode_integrator_t) :: integ_body, integ_darboux
+    type(ode_options_t) :: opt
+    type(status_t) :: st
+    real(wp), allocatable :: yb(:), yd(:)
+    real(wp) :: q0(3), qd0(3), q(3), qd(3), qdd_b(3), qdd_d(3), t, worst_qdd, worst_n, worst_p, r(6)
+    integer :: k
+    surface = paraboloid_t(2.0_wp, 2.5_wp, 1.0_wp, st)
+    p%mu = 0.15_wp
+    p%viscous = 0.8_wp
+    q0 = [1.0_wp, 0.0_wp, 0.3_wp]
+    qd0 = [0.0_wp, 1.2_wp, 0.5_wp]
+    call build_sled(p, surface, q0, body%mechanism, st)
+    p%loads_on_darboux_frames = .true.
+    call build_sled(p, surface, q0, darboux%mechanism, st)
+    call body%mechanism%check_start(q0, st)
+    call darboux%mechanism%check_start(q0, st)
+    call check(st%ok(), 'sled with loads on the body and on the Darboux frames builds: '//st%text())
+    worst_qdd = 0
+    worst_n = 0
+    worst_p = 0
+    do k = 1, 7
+      call random_number(r)
+      q = q0 + 0.2_wp*(r(1:3) - 0.5_wp)
+      qd = 2*(r(4:6) - 0.5_wp)
+      call body%mechanism%dynamics(0.0_wp, q, qd, qdd_b, st)
+      call darboux%mechanism%dynamics(0.0_wp, q, qd, qdd_d, st)
+      worst_qdd = max(worst_qdd, maxval(abs(qdd_b - qdd_d))/maxval(abs(qdd_b)))
+      worst_n = max(worst_n, maxval(abs(body%mechanism%normal - darboux%mechanism%normal))/(p%mass*g))
+      worst_p = max(worst_p, maxval(abs(body%mechanism%law_power - darboux%mechanism%law_power))/ &
+                             maxval(abs(body%mechanism%law_power)))
+    end do
+    call check(st%ok(), 'body and Darboux loads: dynamics at scattered states: '//st%text())
+    ! rounding of O(10) terms through the f + 1 passes and the block solve
+    call check(worst_qdd <= 1e-11_wp, 'friction on the bar at the contact points = on the Darboux frames: q''''')
+    call check(worst_n <= 1e-11_wp, 'friction on the bar at the contact points = on the Darboux frames: N')
+    call check(worst_p <= 1e-11_wp, 'friction on the bar at the contact points = on the Darboux frames: power')
+    ! 2 s of sliding (the rear end comes to rest near 2.8 s), Adams at rtol 1e-11
+    opt%rtol = 1e-11_wp
+    opt%atol = 1e-11_wp
+    yb = body%initial_state(q0, qd0)
+    yd = darboux%initial_state(q0, qd0)
+    call integ_body%start(body, 0.0_wp, yb, opt, st)
+    call integ_body%advance(2.0_wp, t, yb, st)
+    call integ_darboux%start(darboux, 0.0_wp, yd, opt, st)
+    call integ_darboux%advance(2.0_wp, t, yd, st)
+    call check(st%ok(), 'body and Darboux loads: integrated 2 s: '//st%text())
+    ! two runs of the same ODE whose right-hand sides differ by rounding: their
+    ! difference is bounded by the global errors, ~1e-9 here (rtol 1e-11 over ~500 steps)
+    call check(maxval(abs(yb - yd)) <= 1e-8_wp*maxval(abs(yb)), &
+               'friction on the bar = on the Darboux frames: the same motion over 2 s')
+    print '(a, es10.2, a, es10.2, a, es10.2)', '  body vs Darboux loads: q'''' ', worst_qdd, ', N ', worst_n, &
+      ', trajectory ', maxval(abs(yb - yd))/maxval(abs(yb))
+  end subroutine darboux_loads_equal_body_loads
+
+  !> Energy balance: E(t) - E(0) = sum of the laws' work integrals, with
+  !> Coulomb and viscous friction at both contacts, sliding in the bowl for
+  !> 2 s (Adams, rtol 1e-11), checked against the dissipated energy at every
+  !> 0.1 s.
+  subroutine energy_balance()
+    type(sled_params_t) :: p
+    class(surface_t), allocatable :: surface
+    type(mechanism_ode_t), target :: sys
+    type(ode_integrator_t) :: integ
+    type(ode_options_t) :: opt
+    type(status_t) :: st
+    real(wp), allocatable :: y(:)
+    real(wp) :: q0(3), qd0(3), t, tk, vk, e0, worst, dissipated
+    integer :: k
+    surface = paraboloid_t(2.0_wp, 2.5_wp, 1.0_wp, st)
+    p%mu = 0.1_wp
+    p%viscous = 0.5_wp
+    q0 = [1.0_wp, 0.0_wp, 0.3_wp]
+    qd0 = [0.0_wp, 1.2_wp, 0.5_wp]
+    call build_sled(p, surface, q0, sys%mechanism, st)
+    call sys%mechanism%check_start(q0, st)
+    y = sys%initial_state(q0, qd0)
+    call sys%mechanism%set_velocities(qd0)
+    call sys%mechanism%energy(tk, vk)
+    e0 = tk + vk
+    opt%rtol = 1e-11_wp
+    opt%atol = 1e-11_wp
+    call integ%start(sys, 0.0_wp, y, opt, st)
+    worst = 0
+    do k = 1, 20
+      call integ%advance(0.1_wp*k, t, y, st)
+      if (.not. st%ok()) exit
+      call sys%mechanism%set_positions(y(1:3), st)
+      call sys%mechanism%set_velocities(y(4:6))
+      call sys%mechanism%energy(tk, vk)
+      worst = max(worst, abs(tk + vk - e0 - sum(y(7:))))
+    end do
+    dissipated = -sum(y(7:))
+    call check(st%ok(), 'energy balance run: '//st%text())
+    call check(dissipated > 0 .and. all(y(7:) < 0), 'energy balance: friction dissipates')
+    ! the work states are integrated with the motion at rtol 1e-11
+    call check(worst <= 1e-8_wp*dissipated, 'energy balance: E(t) - E(0) = work of the friction laws to 1e-8')
+    print '(a, es10.2, a, es10.2, a)', '  energy balance: ', worst/dissipated, ' of the ', dissipated, &
+      ' J dissipated'
+  end subroutine energy_balance
 end program test_sled

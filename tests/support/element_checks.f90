@@ -17,8 +17,7 @@ module element_checks
   use base_vector, only: cross, rot_x, rot_y, rot_z
   use testing, only: check, check_close
   use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
-  use kinetostatics_mass, only: applied_force_t
-  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism, only: mechanism_t, LOADS_EXPLICIT
   implicit none (type, external)
   private
   public :: check_element, check_mechanism_motion, frame_motion, scalar_motion, motion_step, fd_tol, &
@@ -228,9 +227,9 @@ contains
   !> coordinates, q = q0 + amplitude (cubic of t): every frame's velocity and
   !> acceleration and every scalar's rate (dependent coordinates and
   !> measurements included) against differences of the closed positions; and
-  !> the generalized forces of the applied_force_t elements (inverse dynamics
-  !> with the loops' cut forces, inertia off, applied on) against their power,
-  !> Q.q' = sum f.v + tau.omega. Other applied forces (weights) must be absent.
+  !> the generalized forces of the explicit force laws (inverse dynamics with
+  !> the loops' cut forces, inertia and weights off) against their power,
+  !> Q.q' = sum f.v + tau.omega.
   subroutine check_mechanism_motion(label, m, q0, amplitude, t0)
     character(len=*), intent(in) :: label
     type(mechanism_t), intent(inout) :: m
@@ -279,21 +278,13 @@ contains
       print '(a, 2es10.2, 2i5)', '   max errors (velocity, acceleration) and where: ', maxval(abs(fd1 - ref1)), &
         maxval(abs(fd2 - ref2)), maxloc(abs(fd1 - ref1)), maxloc(abs(fd2 - ref2))
     end if
-    ! power of the applied loads through the closed loops
-    call m%inverse_dynamics(.false., .true.)
+    ! power of the explicit laws' loads through the closed loops
+    call m%evaluate_laws(t0, st)
+    call check(st%ok(), label//': force laws: '//st%text())
+    call m%inverse_dynamics(.false., .false., LOADS_EXPLICIT)
     power = 0
-    do i = 1, m%n_elements
-      select type (e => m%elements(i)%e)
-      type is (applied_force_t)
-        associate (fr => m%frames(e%frame))
-          if (e%body_fixed) then
-            power = power + dot_product(matmul(fr%rot, e%force_value), fr%v) + &
-                    dot_product(matmul(fr%rot, e%torque_value), fr%omega)
-          else
-            power = power + dot_product(e%force_value, fr%v) + dot_product(e%torque_value, fr%omega)
-          end if
-        end associate
-      end select
+    do i = 1, m%n_laws
+      if (.not. m%laws(i)%law%scaled) power = power + m%unit_power(i)
     end do
     call check_close(dot_product(m%gq, qd), power, power_tol, power_tol*max(1.0_wp, abs(power)), &
                      label//': virtual power Q.q'' = power of the applied loads at t = '//tt)

@@ -1,0 +1,156 @@
+!> The force-law seam: every applied load of a mechanism other than gravity
+!> (which stays in the mass elements, kinetostatics_mass) is a force law.
+!>
+!> A law is evaluated with the mechanism's state after the position and
+!> velocity passes — the time t, every frame (positions, velocities), every
+!> scalar (joint variables and their rates) and every contact's kinematics
+!> (kinetostatics_contact: point, normal, slip velocity) — and fills its
+!> `loads`: wrenches (force, and torque about the frame's origin, world
+!> coordinates) at frames of the mechanism. The mechanism adds them to the
+!> frames in its force passes, so they reach the generalized forces through the
+!> transposed Jacobians, and it computes the law's power sum(f.v + tau.omega)
+!> over the loaded frames, whose integral is the law's work.
+!>
+!> Two kinds:
+!>   explicit  (scaled = .false.) the loads depend on (t, q, q') only. Laws
+!>             must not read normal forces: they are unknown while the
+!>             accelerations are solved (contact%normal_force is the value of
+!>             the previous complete evaluation);
+!>   scaled    (scaled = .true.) the load is |N_c| times what `evaluate`
+!>             returns, N_c the normal force of the law's contact (Coulomb
+!>             friction: the unit load -mu w/|w|). The mechanism solves N and
+!>             q'' together, exactly (kinetostatics_mechanism).
+!>
+!> Events: a law may own root functions (`root_count`, `roots`, evaluated at
+!> the same state as `evaluate`) and decide at a root what happens
+!> (`handle_event`): switch itself on or off (`active`) and ask the driver to
+!> restart the integrator (EVENT_RESTART of numerics_event_driver), record,
+!> ignore, or stop. An inactive law has no loads and no power.
+!>
+!> To write a law outside this layer (the rider's water drag, the contact
+!> layer's laws): extend `force_law_t` (or `contact_law_t` for a load at a
+!> contact), allocate `loads` in its constructor with a fixed size, and
+!> implement `evaluate`; add it with mechanism%add_law.
+module kinetostatics_force_law
+  use base_kinds, only: wp
+  use base_vector, only: cross
+  use base_status, only: status_t
+  use numerics_event_driver, only: EVENT_IGNORE
+  use kinetostatics_state, only: frame_state_t, scalar_state_t
+  use kinetostatics_contact, only: contact_state_t
+  implicit none (type, external)
+  private
+  public :: frame_load_t, force_law_t, force_law_box_t, contact_law_t
+
+  !> A wrench at a frame's origin, world coordinates.
+  type :: frame_load_t
+    integer :: frame = 1
+    real(wp) :: force(3) = 0     ! N
+    real(wp) :: torque(3) = 0    ! N m, about the frame's origin
+  end type frame_load_t
+
+  type, abstract :: force_law_t
+    character(len=:), allocatable :: name
+    logical :: active = .true.
+    integer :: contact = 0       ! the contact the law acts at (0: none)
+    logical :: scaled = .false.  ! loads per unit |N| of `contact` (see the module comment)
+    type(frame_load_t), allocatable :: loads(:)   ! fixed size, set by the constructor
+  contains
+    procedure(law_evaluate_i), deferred :: evaluate
+    procedure :: root_count => law_root_count
+    procedure :: roots => law_roots
+    procedure :: handle_event => law_handle_event
+  end type force_law_t
+
+  type :: force_law_box_t
+    class(force_law_t), allocatable :: law
+  end type force_law_box_t
+
+  !> A law whose load acts at a contact point: on body B, and (for an
+  !> interaction of the two bodies) the opposite load on body A. loads(1) is
+  !> the load on B, loads(2) the one on A.
+  type, abstract, extends(force_law_t) :: contact_law_t
+  contains
+    procedure, non_overridable :: set_up_contact_law, set_contact_force, set_body_force
+  end type contact_law_t
+
+  abstract interface
+    !> Fills self%loads at the state given (a scaled law: per unit |N|).
+    pure subroutine law_evaluate_i(self, t, frames, scalars, contacts, status)
+      import :: force_law_t, wp, frame_state_t, scalar_state_t, contact_state_t, status_t
+      class(force_law_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+      type(frame_state_t), intent(in) :: frames(:)
+      type(scalar_state_t), intent(in) :: scalars(:)
+      type(contact_state_t), intent(in) :: contacts(:)
+      type(status_t), intent(inout) :: status
+    end subroutine law_evaluate_i
+  end interface
+
+contains
+
+  !> Number of root functions of the law; none by default.
+  integer function law_root_count(self) result(n)
+    class(force_law_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    n = 0
+  end function law_root_count
+
+  !> Root functions g(1:root_count) at the state given (as for evaluate).
+  pure subroutine law_roots(self, t, frames, scalars, contacts, g)
+    class(force_law_t), intent(in) :: self
+    real(wp), intent(in) :: t
+    type(frame_state_t), intent(in) :: frames(:)
+    type(scalar_state_t), intent(in) :: scalars(:)
+    type(contact_state_t), intent(in) :: contacts(:)
+    real(wp), intent(out) :: g(:)
+    associate (unused => self, unused_t => t, unused_f => frames, unused_s => scalars, unused_c => contacts)
+    end associate
+    g = 1
+  end subroutine law_roots
+
+  !> At a root of the law's functions (fired(i) = +1 rising, -1 falling, 0 not
+  !> this one): change the law and say what the driver does (EVENT_*).
+  subroutine law_handle_event(self, t, fired, action, status)
+    class(force_law_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    integer, intent(in) :: fired(:)
+    integer, intent(out) :: action
+    type(status_t), intent(inout) :: status
+    associate (unused => self, unused_t => t, unused_f => fired, unused_s => status)
+    end associate
+    action = EVENT_IGNORE
+  end subroutine law_handle_event
+
+  !> For constructors: name, contact index (from mechanism%add_contact), kind, two loads.
+  pure subroutine set_up_contact_law(self, name, contact, scaled)
+    class(contact_law_t), intent(inout) :: self
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: contact
+    logical, intent(in) :: scaled
+    self%name = name
+    self%contact = contact
+    self%scaled = scaled
+    if (allocated(self%loads)) deallocate (self%loads)
+    allocate (self%loads(2))
+  end subroutine set_up_contact_law
+
+  !> An interaction of the two bodies: force F on B at the contact point, -F on A.
+  pure subroutine set_contact_force(self, s, force)
+    class(contact_law_t), intent(inout) :: self
+    type(contact_state_t), intent(in) :: s
+    real(wp), intent(in) :: force(3)
+    self%loads(1) = frame_load_t(s%frame_b, force, cross(s%arm_b, force))
+    self%loads(2) = frame_load_t(s%frame_a, -force, -cross(s%arm_a, force))
+  end subroutine set_contact_force
+
+  !> A load from outside the two bodies (e.g. water drag): F on B at the contact point only.
+  pure subroutine set_body_force(self, s, force)
+    class(contact_law_t), intent(inout) :: self
+    type(contact_state_t), intent(in) :: s
+    real(wp), intent(in) :: force(3)
+    self%loads(1) = frame_load_t(s%frame_b, force, cross(s%arm_b, force))
+    self%loads(2) = frame_load_t(s%frame_a, [0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp])
+  end subroutine set_body_force
+end module kinetostatics_force_law

@@ -1,0 +1,241 @@
+!> The force laws of the core (the seam is kinetostatics_force_law):
+!>
+!>   coulomb_friction_t        F = -mu |N| w_t/sqrt(|w_t|^2 + eps^2)   (thesis 4.28)
+!>   viscous_friction_t        F = -c w_t (new_viscous_friction), or scaled by
+!>                             the normal force F = -mu |N| w_t with mu in s/m
+!>                             (new_normal_viscous_friction: the spinning egg's
+!>                             law, METHOD-PART2 A.4.3)
+!>   spring_damper_t           between a point of frame i and a point of frame j
+!>   constant_load_t           a constant wrench at a frame (world or body axes)
+!>
+!> The friction laws act at a contact (kinetostatics_contact) with w_t the
+!> tangential part of the material slip velocity w (its normal part vanishes
+!> while the contact holds; projecting keeps the friction exactly tangential),
+!> F on body B and -F on body A. Coulomb and the N-scaled viscous law are
+!> scaled laws: their load is |N| times a state-dependent vector, solved
+!> exactly together with q''.
+!> Coulomb friction near w = 0: eps = regularization_speed, exact to
+!> (eps/|w|)^2/2 relative while sliding; a contact at rest feels a stiff
+!> viscous damping mu |N|/eps instead of stiction (sticking is not modelled).
+module kinetostatics_force_laws
+  use base_kinds, only: wp
+  use base_text, only: format_short
+  use base_vector, only: cross
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
+  use kinetostatics_state, only: frame_state_t, scalar_state_t
+  use kinetostatics_contact, only: contact_state_t
+  use kinetostatics_force_law, only: force_law_t, contact_law_t, frame_load_t
+  implicit none (type, external)
+  private
+  public :: coulomb_friction_t, viscous_friction_t, spring_damper_t, constant_load_t
+  public :: new_coulomb_friction, new_normal_viscous_friction, new_viscous_friction, new_spring_damper, &
+    new_constant_load
+
+  type, extends(contact_law_t) :: coulomb_friction_t
+    real(wp) :: mu = 0                          ! 1
+    real(wp) :: regularization_speed = 1e-6_wp  ! m/s
+  contains
+    procedure :: evaluate => coulomb_evaluate
+  end type coulomb_friction_t
+
+  !> F = -coefficient w_t; scaled: times |N| (coefficient in s/m, else N s/m).
+  type, extends(contact_law_t) :: viscous_friction_t
+    real(wp) :: coefficient = 0
+  contains
+    procedure :: evaluate => viscous_evaluate
+  end type viscous_friction_t
+
+  !> Tension f = k (l - rest_length) + c l' along the line from the point on
+  !> frame i to the point on frame j (l their distance): -f e on j's point,
+  !> +f e on i's, e the unit vector from i's point to j's.
+  type, extends(force_law_t) :: spring_damper_t
+    integer :: frame_i = 0, frame_j = 0
+    real(wp) :: point_i(3) = 0, point_j(3) = 0  ! m, in the frames' own axes
+    real(wp) :: stiffness = 0                   ! N/m
+    real(wp) :: rest_length = 0                 ! m
+    real(wp) :: damping = 0                     ! N s/m
+  contains
+    procedure :: evaluate => spring_evaluate
+  end type spring_damper_t
+
+  !> A constant force and torque (about the frame's origin) at a frame, in
+  !> world axes, or in the frame's own axes if body_fixed.
+  type, extends(force_law_t) :: constant_load_t
+    integer :: frame = 0
+    real(wp) :: force_value(3) = 0, torque_value(3) = 0   ! N, N m
+    logical :: body_fixed = .false.
+  contains
+    procedure :: evaluate => constant_evaluate
+  end type constant_load_t
+
+contains
+
+  pure function tangential(s) result(w)
+    type(contact_state_t), intent(in) :: s
+    real(wp) :: w(3)
+    w = s%slip - dot_product(s%slip, s%normal)*s%normal
+  end function tangential
+
+  subroutine check_coefficient(law, what, value, unit, status)
+    character(len=*), intent(in) :: law, what, unit
+    real(wp), intent(in) :: value
+    type(status_t), intent(inout) :: status
+    if (.not. (value >= 0 .and. value < huge(value))) call set_status(status, STATUS_INVALID_INPUT, &
+      'force law '''//law//''': '//what//' = '//format_short(value)//' '//unit//'; it must be finite and >= 0')
+  end subroutine check_coefficient
+
+  !> Coulomb friction at contact `contact` (index from mechanism%add_contact).
+  function new_coulomb_friction(name, contact, mu, regularization_speed, status) result(law)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: contact
+    real(wp), intent(in) :: mu, regularization_speed
+    type(status_t), intent(inout) :: status
+    type(coulomb_friction_t) :: law
+    call law%set_up_contact_law(name, contact, scaled=.true.)
+    law%mu = mu
+    law%regularization_speed = regularization_speed
+    call check_coefficient(name, 'mu', mu, '', status)
+    if (.not. (regularization_speed > 0 .and. regularization_speed < huge(1.0_wp))) &
+      call set_status(status, STATUS_INVALID_INPUT, 'force law '''//name//''': regularization_speed = '// &
+                      format_short(regularization_speed)//' m/s; it must be finite and > 0')
+  end function new_coulomb_friction
+
+  pure subroutine coulomb_evaluate(self, t, frames, scalars, contacts, status)
+    class(coulomb_friction_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    type(frame_state_t), intent(in) :: frames(:)
+    type(scalar_state_t), intent(in) :: scalars(:)
+    type(contact_state_t), intent(in) :: contacts(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: w(3)
+    associate (unused_t => t, unused_f => frames, unused_s => scalars, unused_st => status)
+    end associate
+    w = tangential(contacts(self%contact))
+    call self%set_contact_force(contacts(self%contact), -self%mu*w/sqrt(dot_product(w, w) + &
+                                self%regularization_speed**2))
+  end subroutine coulomb_evaluate
+
+  !> Viscous friction F = -c w_t (c in N s/m).
+  function new_viscous_friction(name, contact, coefficient, status) result(law)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: contact
+    real(wp), intent(in) :: coefficient
+    type(status_t), intent(inout) :: status
+    type(viscous_friction_t) :: law
+    call law%set_up_contact_law(name, contact, scaled=.false.)
+    law%coefficient = coefficient
+    call check_coefficient(name, 'viscous coefficient', coefficient, 'N s/m', status)
+  end function new_viscous_friction
+
+  !> Viscous friction proportional to the normal force, F = -mu |N| w_t (mu in s/m).
+  function new_normal_viscous_friction(name, contact, mu, status) result(law)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: contact
+    real(wp), intent(in) :: mu
+    type(status_t), intent(inout) :: status
+    type(viscous_friction_t) :: law
+    call law%set_up_contact_law(name, contact, scaled=.true.)
+    law%coefficient = mu
+    call check_coefficient(name, 'mu', mu, 's/m', status)
+  end function new_normal_viscous_friction
+
+  pure subroutine viscous_evaluate(self, t, frames, scalars, contacts, status)
+    class(viscous_friction_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    type(frame_state_t), intent(in) :: frames(:)
+    type(scalar_state_t), intent(in) :: scalars(:)
+    type(contact_state_t), intent(in) :: contacts(:)
+    type(status_t), intent(inout) :: status
+    associate (unused_t => t, unused_f => frames, unused_s => scalars, unused_st => status)
+    end associate
+    call self%set_contact_force(contacts(self%contact), -self%coefficient*tangential(contacts(self%contact)))
+  end subroutine viscous_evaluate
+
+  !> A spring and damper between point_i on frame_i and point_j on frame_j
+  !> (points in the frames' own axes).
+  function new_spring_damper(name, frame_i, point_i, frame_j, point_j, stiffness, rest_length, damping, &
+                             status) result(law)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame_i, frame_j
+    real(wp), intent(in) :: point_i(3), point_j(3), stiffness, rest_length, damping
+    type(status_t), intent(inout) :: status
+    type(spring_damper_t) :: law
+    law%name = name
+    law%frame_i = frame_i
+    law%frame_j = frame_j
+    law%point_i = point_i
+    law%point_j = point_j
+    law%stiffness = stiffness
+    law%rest_length = rest_length
+    law%damping = damping
+    allocate (law%loads(2))
+    call check_coefficient(name, 'stiffness', stiffness, 'N/m', status)
+    call check_coefficient(name, 'rest length', rest_length, 'm', status)
+    call check_coefficient(name, 'damping', damping, 'N s/m', status)
+  end function new_spring_damper
+
+  pure subroutine spring_evaluate(self, t, frames, scalars, contacts, status)
+    class(spring_damper_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    type(frame_state_t), intent(in) :: frames(:)
+    type(scalar_state_t), intent(in) :: scalars(:)
+    type(contact_state_t), intent(in) :: contacts(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: arm_i(3), arm_j(3), d(3), dv(3), length, e(3), tension, f(3)
+    associate (unused_t => t, unused_s => scalars, unused_c => contacts)
+    end associate
+    associate (fi => frames(self%frame_i), fj => frames(self%frame_j))
+      arm_i = matmul(fi%rot, self%point_i)
+      arm_j = matmul(fj%rot, self%point_j)
+      d = fj%r + arm_j - fi%r - arm_i
+      dv = fj%v + cross(fj%omega, arm_j) - fi%v - cross(fi%omega, arm_i)
+      length = norm2(d)
+      if (length <= 1e-12_wp*max(self%rest_length, 1.0_wp)) then
+        if (self%rest_length > 0 .or. self%damping > 0) then
+          call set_status(status, STATUS_DOMAIN, 'spring '''//self%name//''': its two points coincide '// &
+                          '(no direction for the force)')
+          self%loads = frame_load_t()
+          return
+        end if
+        e = 0
+      else
+        e = d/length
+      end if
+      tension = self%stiffness*(length - self%rest_length) + self%damping*dot_product(e, dv)
+      f = -tension*e
+      self%loads(1) = frame_load_t(self%frame_j, f, cross(arm_j, f))
+      self%loads(2) = frame_load_t(self%frame_i, -f, -cross(arm_i, f))
+    end associate
+  end subroutine spring_evaluate
+
+  function new_constant_load(name, frame, force, torque, body_fixed) result(law)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame
+    real(wp), intent(in) :: force(3), torque(3)
+    logical, intent(in) :: body_fixed
+    type(constant_load_t) :: law
+    law%name = name
+    law%frame = frame
+    law%force_value = force
+    law%torque_value = torque
+    law%body_fixed = body_fixed
+    allocate (law%loads(1))
+  end function new_constant_load
+
+  pure subroutine constant_evaluate(self, t, frames, scalars, contacts, status)
+    class(constant_load_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    type(frame_state_t), intent(in) :: frames(:)
+    type(scalar_state_t), intent(in) :: scalars(:)
+    type(contact_state_t), intent(in) :: contacts(:)
+    type(status_t), intent(inout) :: status
+    associate (unused_t => t, unused_s => scalars, unused_c => contacts, unused_st => status)
+    end associate
+    if (self%body_fixed) then
+      self%loads(1) = frame_load_t(self%frame, matmul(frames(self%frame)%rot, self%force_value), &
+                                   matmul(frames(self%frame)%rot, self%torque_value))
+    else
+      self%loads(1) = frame_load_t(self%frame, self%force_value, self%torque_value)
+    end if
+  end subroutine constant_evaluate
+end module kinetostatics_force_laws
