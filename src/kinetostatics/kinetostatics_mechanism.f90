@@ -52,6 +52,8 @@ module kinetostatics_mechanism
     STATUS_NOT_CONVERGED, STATUS_DOMAIN
   use numerics_nonlinear, only: nonlinear_system_t, nonlinear_options_t, nonlinear_result_t, &
     solve_nonlinear
+  use numerics_linear_algebra, only: lu_factor, lu_solve, lu_reciprocal_condition, one_norm, cholesky_factor, &
+    cholesky_solve
   use kinetostatics_state, only: element_t, element_box_t, frame_state_t, scalar_state_t
   use kinetostatics_surface_joint, only: surface_joint_t
   use kinetostatics_contact, only: contact_t, contact_state_t, contact_kinematics, NORMAL_FRAME_FORCE, &
@@ -61,48 +63,6 @@ module kinetostatics_mechanism
   private
   public :: mechanism_t, loop_t, surface_edge_t
   public :: LOADS_NONE, LOADS_EXPLICIT, LOADS_ALL
-
-  interface
-    subroutine dgetrf(m, n, a, lda, ipiv, info)
-      import :: wp
-      integer, intent(in) :: m, n, lda
-      real(wp), intent(inout) :: a(lda, *)
-      integer, intent(out) :: ipiv(*), info
-    end subroutine dgetrf
-    subroutine dgetrs(trans, n, nrhs, a, lda, ipiv, b, ldb, info)
-      import :: wp
-      character, intent(in) :: trans
-      integer, intent(in) :: n, nrhs, lda, ldb, ipiv(*)
-      real(wp), intent(in) :: a(lda, *)
-      real(wp), intent(inout) :: b(ldb, *)
-      integer, intent(out) :: info
-    end subroutine dgetrs
-    subroutine dgecon(norm, n, a, lda, anorm, rcond, work, iwork, info)
-      import :: wp
-      character, intent(in) :: norm
-      integer, intent(in) :: n, lda
-      real(wp), intent(in) :: a(lda, *), anorm
-      real(wp), intent(out) :: rcond
-      real(wp), intent(inout) :: work(*)
-      integer, intent(inout) :: iwork(*)
-      integer, intent(out) :: info
-    end subroutine dgecon
-    subroutine dpotrf(uplo, n, a, lda, info)
-      import :: wp
-      character, intent(in) :: uplo
-      integer, intent(in) :: n, lda
-      real(wp), intent(inout) :: a(lda, *)
-      integer, intent(out) :: info
-    end subroutine dpotrf
-    subroutine dpotrs(uplo, n, nrhs, a, lda, b, ldb, info)
-      import :: wp
-      character, intent(in) :: uplo
-      integer, intent(in) :: n, nrhs, lda, ldb
-      real(wp), intent(in) :: a(lda, *)
-      real(wp), intent(inout) :: b(ldb, *)
-      integer, intent(out) :: info
-    end subroutine dpotrs
-  end interface
 
   integer, parameter :: ROLE_FIXED = 0, ROLE_Q = 1, ROLE_BETA = 2, ROLE_MEASURE = 3
   !> Which law loads a force pass applies: none, the explicit laws, all laws
@@ -638,13 +598,14 @@ contains
   subroutine factor_closure(self, status)
     class(mechanism_t), intent(inout) :: self
     type(status_t), intent(inout) :: status
-    integer :: info
+    type(status_t) :: lapack
+    integer :: zero_pivot
     call closure_jacobian(self, self%jbeta)
     self%jlu = self%jbeta
-    call dgetrf(self%r, self%r, self%jlu, self%r, self%ipiv, info)
-    if (info > 0) then
+    call lu_factor(self%jlu, self%ipiv, lapack, zero_pivot)
+    if (.not. lapack%ok()) then
       call set_status(status, STATUS_NOT_CONVERGED, 'the closure Jacobian is singular: '// &
-                      describe_dependent(self, info)//' does not move the closure measurements')
+                      describe_dependent(self, zero_pivot)//' does not move the closure measurements')
     end if
   end subroutine factor_closure
 
@@ -693,7 +654,7 @@ contains
     type(status_t), intent(inout) :: status
     type(nonlinear_result_t) :: result
     type(status_t) :: solve_status
-    integer :: k, it, info
+    integer :: k, it
     logical :: converged
 
     do k = 1, self%f
@@ -728,7 +689,7 @@ contains
       end if
       call factor_closure(self, solve_status)
       if (.not. solve_status%ok()) exit
-      call dgetrs('N', self%r, 1, self%jlu, self%r, self%ipiv, res, self%r, info)
+      call lu_solve(self%jlu, self%ipiv, res, status)
       x = x - res
     end do
     if (.not. converged) then
@@ -754,7 +715,7 @@ contains
         if (maxval(abs(res)) <= 1e-3_wp*self%closure_tolerance) exit
         call factor_closure(self, status)
         if (.not. status%ok()) return
-        call dgetrs('N', self%r, 1, self%jlu, self%r, self%ipiv, res, self%r, info)
+        call lu_solve(self%jlu, self%ipiv, res, status)
         x = x - res
         call self%residual(x, res, status)
         if (.not. status%ok()) return
@@ -780,8 +741,8 @@ contains
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: q(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: work(4*max(self%r, 1)), anorm, rcond
-    integer :: iwork(max(self%r, 1)), info, k
+    real(wp) :: rcond
+    integer :: i, k
     character(len=16) :: num
     if (.not. status%ok()) return
     self%warm = .false.
@@ -792,10 +753,9 @@ contains
       return
     end if
     if (self%r == 0) return
-    anorm = maxval(sum(abs(self%jbeta), dim=1))
-    call dgecon('1', self%r, self%jlu, self%r, anorm, rcond, work, iwork, info)
-    if (rcond < 1e-10_wp) then
-      k = minloc([(abs(self%jlu(info, info)), info = 1, self%r)], dim=1)   ! the weakest pivot
+    call lu_reciprocal_condition(self%jlu, one_norm(self%jbeta), rcond, status)
+    if (status%ok() .and. rcond < 1e-10_wp) then
+      k = minloc([(abs(self%jlu(i, i)), i = 1, self%r)], dim=1)   ! the weakest pivot
       write (num, '(es10.3)') rcond
       call set_status(status, STATUS_INVALID_INPUT, 'at the start the closure Jacobian is singular '// &
         '(reciprocal condition '//trim(adjustl(num))//'): '//describe_dependent(self, k)// &
@@ -807,7 +767,8 @@ contains
   subroutine set_velocities(self, qd)
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: qd(:)
-    integer :: k, info
+    type(status_t) :: lapack
+    integer :: k
     do k = 1, self%f
       self%scalars(self%q(k))%qd = qd(k)
     end do
@@ -819,7 +780,7 @@ contains
     do k = 1, self%r
       self%work_r(k) = self%scalars(self%closure(k))%qd
     end do
-    call dgetrs('N', self%r, 1, self%jlu, self%r, self%ipiv, self%work_r, self%r, info)
+    call lu_solve(self%jlu, self%ipiv, self%work_r, lapack)   ! sizes fixed at finalize: cannot fail
     do k = 1, self%r
       self%scalars(self%beta(k))%qd = -self%work_r(k)
     end do
@@ -830,7 +791,8 @@ contains
   subroutine set_accelerations(self, qdd)
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: qdd(:)
-    integer :: k, info
+    type(status_t) :: lapack
+    integer :: k
     do k = 1, self%f
       self%scalars(self%q(k))%qdd = qdd(k)
     end do
@@ -842,7 +804,7 @@ contains
     do k = 1, self%r
       self%work_r(k) = self%scalars(self%closure(k))%qdd
     end do
-    call dgetrs('N', self%r, 1, self%jlu, self%r, self%ipiv, self%work_r, self%r, info)
+    call lu_solve(self%jlu, self%ipiv, self%work_r, lapack)   ! sizes fixed at finalize: cannot fail
     do k = 1, self%r
       self%scalars(self%beta(k))%qdd = -self%work_r(k)
     end do
@@ -855,14 +817,15 @@ contains
     class(mechanism_t), intent(inout) :: self
     logical, intent(in) :: inertia, applied
     integer, intent(in) :: loads
-    integer :: k, info
+    type(status_t) :: lapack
+    integer :: k
     self%lambda = 0
     call self%force_pass(inertia, applied, self%lambda, loads)
     if (self%r > 0) then
       do k = 1, self%r
         self%lambda(k) = self%scalars(self%beta(k))%force
       end do
-      call dgetrs('T', self%r, 1, self%jlu, self%r, self%ipiv, self%lambda, self%r, info)
+      call lu_solve(self%jlu, self%ipiv, self%lambda, lapack, transpose=.true.)   ! cannot fail (sizes fixed)
       self%lambda = -self%lambda
       call self%force_pass(inertia, applied, self%lambda, loads)
     end if
@@ -938,7 +901,8 @@ contains
     real(wp), intent(out) :: qdd(:)
     type(status_t), intent(inout) :: status
     real(wp) :: s_old
-    integer :: i, j, k, c, nc, ns, nb, info, it
+    type(status_t) :: lapack
+    integer :: i, j, k, c, nc, ns, nb, it, column
     logical :: consistent
 
     qdd = 0
@@ -976,16 +940,16 @@ contains
         self%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
       end do
     end do
-    call dpotrf('L', self%f, self%chol, self%f, info)
-    if (info /= 0) then
+    call cholesky_factor(self%chol, lapack, column)
+    if (.not. lapack%ok()) then
       call set_status(status, STATUS_DOMAIN, 'the mass matrix is not positive definite: generalized '// &
-        'coordinate '''//trim(self%scalar_names(self%q(info)))//''' has no inertia (a massless body or '// &
+        'coordinate '''//trim(self%scalar_names(self%q(column)))//''' has no inertia (a massless body or '// &
         'a mass without rotational inertia on a pure rotation)')
       return
     end if
     if (ns == 0) then
       self%qdd = self%bias
-      call dpotrs('L', self%f, 1, self%chol, self%f, self%qdd, self%f, info)
+      call cholesky_solve(self%chol, self%qdd, status)
       qdd = self%qdd
       call affine_normal_forces(self, qdd)
       self%law_power = self%unit_power
@@ -1019,14 +983,13 @@ contains
       do j = 1, nb
         self%block_rhs(self%f + j) = self%n0(self%block_contact(j))
       end do
-      call dgetrf(self%f + nb, self%f + nb, self%block, self%f + nb, self%ipiv_block, info)
-      if (info /= 0) then
+      call lu_factor(self%block, self%ipiv_block, lapack)
+      if (.not. lapack%ok()) then
         call set_status(status, STATUS_DOMAIN, 'the equations of motion with friction proportional to '// &
                         'the normal forces are singular')
         return
       end if
-      call dgetrs('N', self%f + nb, 1, self%block, self%f + nb, self%ipiv_block, self%block_rhs, &
-                  self%f + nb, info)
+      call lu_solve(self%block, self%ipiv_block, self%block_rhs, status)
       consistent = .true.
       do j = 1, nb
         s_old = self%signs(j)
