@@ -7,7 +7,11 @@
 !>
 !> Bounds are held exactly by a smooth change of variables p = P(z); MINPACK
 !> works on the unconstrained z:
-!>   lower and upper:  p = l + (u - l) (1 + sin z)/2      (clamped to [l, u] against rounding)
+!>   lower and upper:  p = c + h sin((z - c)/h),  c = (l + u)/2, h = (u - l)/2
+!>                     (clamped to [l, u] against rounding; z = p at the middle
+!>                     of the box with dp/dz = 1 there, so z keeps the units and
+!>                     size of p and MINPACK's relative xtol means what it
+!>                     means for p: a start in the middle is not a start at 0)
 !>   lower only:       p = l + z^2 / (1 + sqrt(1 + z^2))  (= l + sqrt(z^2 + 1) - 1, never below l)
 !>   upper only:       p = u - z^2 / (1 + sqrt(1 + z^2))
 !>   neither:          p = z
@@ -734,11 +738,13 @@ contains
     integer, intent(in) :: kind
     real(wp), intent(in) :: lower, upper, z
     real(wp), intent(out) :: p, dpdz
-    real(wp) :: s
+    real(wp) :: s, c, h
     select case (kind)
     case (KIND_BOTH)
-      p = min(upper, max(lower, lower + (upper - lower)*(1 + sin(z))/2))
-      dpdz = (upper - lower)*cos(z)/2
+      c = (lower + upper)/2
+      h = (upper - lower)/2
+      p = min(upper, max(lower, c + h*sin((z - c)/h)))
+      dpdz = cos((z - c)/h)
     case (KIND_LOWER)
       s = sqrt(1 + z**2)
       p = lower + z**2/(1 + s)
@@ -760,10 +766,12 @@ contains
   pure real(wp) function to_z(kind, lower, upper, p) result(z)
     integer, intent(in) :: kind
     real(wp), intent(in) :: lower, upper, p
-    real(wp) :: w
+    real(wp) :: w, c, h
     select case (kind)
     case (KIND_BOTH)
-      z = asin(max(-1.0_wp, min(1.0_wp, 2*(p - lower)/(upper - lower) - 1)))
+      c = (lower + upper)/2
+      h = (upper - lower)/2
+      z = c + h*asin(max(-1.0_wp, min(1.0_wp, (p - c)/h)))
     case (KIND_LOWER)
       w = max(0.0_wp, p - lower)
       z = sqrt(w*(w + 2))   ! sqrt(1 + z^2) - 1 = w

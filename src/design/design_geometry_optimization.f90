@@ -1,0 +1,351 @@
+!> Geometry optimisation of a slide (thesis 4.7, eq. 4.49, table 4.12;
+!> METHOD-PART2 E; choices in docs/design.md).
+!>
+!> The slide is a circular tube around a centerline through points; some
+!> coordinates of some points are the design variables x, each with bounds
+!> that hold exactly (numerics_least_squares' change of variables, never a
+!> penalty). For a design x the slide is built (spline through the points,
+!> tube, check that it does not fold) and the cuboid (design_cuboid_ride)
+!> rides it from each start; the cost (4.49) is
+!>   F(x) = 1/2 sum_i [max_t |a_i(x)|]^2 + constraint terms
+!> and the tipping lever arm of every ride must stay at most lever_limit,
+!> measured by the tipping excess g_i = max_t e_i (design_cuboid_ride: <= 0
+!> exactly when the body stays pressed and |l| <= lever_limit; = l - l_max
+!> under the body's weight):
+!>   CONSTRAINT_PENALTY  the thesis's penalty: one residual per ride,
+!>                       factor max(0, g_i) (violation x factor, entering the
+!>                       squared cost);
+!>   CONSTRAINT_EXACT    the same residuals in an augmented Lagrangian,
+!>                       sqrt(rho) max(0, g_i + lambda_i/rho), with the
+!>                       multipliers updated between fits until every g_i is
+!>                       at most lever_tolerance;
+!>   CONSTRAINT_NONE     accelerations only.
+!> A design whose slide cannot be built or ridden (folding, a ride that does
+!> not reach the end) is a rejected step of the fit.
+!>
+!> All rides of one evaluation, and of all difference points, are
+!> independent: they run in `threads` OpenMP threads, with the same numbers.
+module design_geometry_optimization
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
+  use base_text, only: format_short, format_integer
+  use geometry_curve, only: spline_centerline_t, new_spline_centerline, constant_curve_t
+  use geometry_cross_section, only: circle_section_t
+  use geometry_tube, only: tube_surface_t, new_tube_surface
+  use numerics_least_squares, only: least_squares_problem_t, least_squares_options_t, &
+    least_squares_result_t, solve_least_squares
+  use design_cuboid_ride, only: cuboid_t, cuboid_start_t, cuboid_ride_options_t, cuboid_ride_t, ride_cuboid
+  implicit none (type, external)
+  private
+  public :: slide_design_t, optimization_setup_t, design_evaluation_t, optimization_result_t
+  public :: table_4_12_design, build_design_slide, evaluate_design, optimize_slide, design_points
+  public :: CONSTRAINT_PENALTY, CONSTRAINT_EXACT, CONSTRAINT_NONE
+
+  integer, parameter :: CONSTRAINT_NONE = 0, CONSTRAINT_PENALTY = 1, CONSTRAINT_EXACT = 2
+
+  !> A tube slide around a spline through points, and which coordinates move.
+  type :: slide_design_t
+    real(wp), allocatable :: points(:, :)     !< m, 3 x n: the start design
+    integer, allocatable :: point(:)          !< the point of each design variable (1-based)
+    integer, allocatable :: coordinate(:)     !< its coordinate (1 x, 2 y, 3 z)
+    real(wp), allocatable :: lower(:), upper(:)   !< m, bounds of the design variables
+    real(wp) :: radius = 0.7_wp               !< m, tube radius
+    real(wp) :: horizon(3) = [0.0_wp, 0.0_wp, 1.0_wp]
+    integer :: degree = 5                     !< of the interpolating spline (see docs/design.md)
+    real(wp) :: smoothing = 0                 !< FITPACK smoothing (m^2); 0 interpolates
+    integer :: check_samples = 400            !< folding check along the centerline
+  end type slide_design_t
+
+  type :: optimization_setup_t
+    type(slide_design_t) :: design
+    type(cuboid_t) :: body
+    real(wp), allocatable :: start_angles(:)  !< rad, one ride each (thesis: -30..30 deg)
+    real(wp) :: start_speed = 0.5_wp          !< m/s
+    real(wp) :: start_v = pi/2                !< rad, the bottom of the section at u = 0
+    type(cuboid_ride_options_t) :: ride
+    real(wp) :: lever_limit = 0.25_wp         !< m (half the body's width)
+    integer :: constraint = CONSTRAINT_PENALTY
+    real(wp) :: penalty_factor = 5e3_wp       !< 1/m x m/s^2 (thesis: 5.0e3)
+    real(wp) :: lever_tolerance = 1e-4_wp     !< m, CONSTRAINT_EXACT
+    real(wp) :: rho = 5e3_wp**2               !< augmented Lagrangian weight (the penalty factor squared)
+    integer :: max_outer = 8                  !< augmented Lagrangian updates
+    integer :: threads = 1
+    type(least_squares_options_t) :: solver = least_squares_options_t(ftol=1e-4_wp, xtol=1e-3_wp, &
+                                                                      gtol=0.0_wp, epsfcn=1e-8_wp)
+  end type optimization_setup_t
+
+  !> Every ride of one design.
+  type :: design_evaluation_t
+    real(wp), allocatable :: x(:)
+    type(cuboid_ride_t), allocatable :: rides(:)
+    real(wp) :: acceleration_cost = 0      !< 1/2 sum max|a|^2, (m/s^2)^2
+    real(wp) :: max_lever_arm = 0          !< m, over all rides (huge if a body lifts off)
+    real(wp) :: max_tipping_excess = 0     !< m, over all rides
+  end type design_evaluation_t
+
+  type :: optimization_result_t
+    real(wp), allocatable :: x(:)
+    real(wp), allocatable :: points(:, :)
+    type(design_evaluation_t) :: before, after
+    real(wp) :: cost_before = 0, cost_after = 0   !< the fit's cost (with constraint terms)
+    real(wp), allocatable :: multipliers(:)
+    integer :: evaluations = 0, rejected = 0, outer = 0, info = 0
+  end type optimization_result_t
+
+  type, extends(least_squares_problem_t) :: optimization_problem_t
+    type(optimization_setup_t) :: setup
+    real(wp), allocatable :: lambda(:)    !< augmented Lagrangian multipliers
+    integer :: mode = CONSTRAINT_PENALTY
+  contains
+    procedure :: residuals => problem_residuals
+    procedure :: residuals_batch => problem_residuals_batch
+  end type optimization_problem_t
+
+contains
+
+  !> Table 4.12's slide before optimisation: P0..P8, the five moving
+  !> coordinates P2.y, P3.y, P4.x, P5.y, P6.y and their bounds (4.49; the
+  !> lower bound printed as "u" is l).
+  function table_4_12_design() result(d)
+    type(slide_design_t) :: d
+    d%points = reshape([0.0_wp, 5.0_wp, 3.0_wp, 0.2_wp, 5.0_wp, 2.9_wp, 3.0_wp, 5.0_wp, 2.3_wp, &
+                        5.0_wp, 5.0_wp, 1.7_wp, 6.0_wp, 7.0_wp, 1.1_wp, 5.0_wp, 9.0_wp, 0.5_wp, &
+                        3.0_wp, 9.0_wp, 0.3_wp, 0.2_wp, 9.0_wp, 0.03_wp, 0.0_wp, 9.0_wp, 0.0_wp], [3, 9])
+    d%point = [3, 4, 5, 6, 7]
+    d%coordinate = [2, 2, 1, 2, 2]
+    d%lower = [4.0_wp, 4.0_wp, 5.0_wp, 8.0_wp, 8.0_wp]
+    d%upper = [6.0_wp, 6.0_wp, 7.0_wp, 10.0_wp, 10.0_wp]
+  end function table_4_12_design
+
+  !> The points with the design variables set to x.
+  pure function design_points(design, x) result(points)
+    type(slide_design_t), intent(in) :: design
+    real(wp), intent(in) :: x(:)
+    real(wp) :: points(3, size(design%points, 2))
+    integer :: k
+    points = design%points
+    do k = 1, size(x)
+      points(design%coordinate(k), design%point(k)) = x(k)
+    end do
+  end function design_points
+
+  !> The x of the start design.
+  pure function start_x(design) result(x)
+    type(slide_design_t), intent(in) :: design
+    real(wp) :: x(size(design%point))
+    integer :: k
+    do k = 1, size(x)
+      x(k) = design%points(design%coordinate(k), design%point(k))
+    end do
+  end function start_x
+
+  !> The tube slide of design x.
+  subroutine build_design_slide(design, x, slide, status)
+    type(slide_design_t), intent(in) :: design
+    real(wp), intent(in) :: x(:)
+    type(tube_surface_t), intent(out) :: slide
+    type(status_t), intent(out) :: status
+    type(spline_centerline_t) :: centerline
+    centerline = new_spline_centerline(design_points(design, x), design%smoothing, design%degree, status)
+    if (status%ok()) slide = new_tube_surface(centerline, constant_curve_t(value=design%horizon), &
+                                              circle_section_t(radius=design%radius), status)
+    if (status%ok()) call slide%check(design%check_samples, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'slide design')
+      if (status%code == STATUS_INVALID_INPUT) status%code = STATUS_DOMAIN
+    end if
+  end subroutine build_design_slide
+
+  !> Every ride of design x (rides(i) from start_angles(i)), in `threads` threads.
+  subroutine evaluate_design(setup, x, evaluation, status, keep_series)
+    type(optimization_setup_t), intent(in) :: setup
+    real(wp), intent(in) :: x(:)
+    type(design_evaluation_t), intent(out) :: evaluation
+    type(status_t), intent(out) :: status
+    logical, intent(in), optional :: keep_series
+    type(tube_surface_t) :: slide
+    type(status_t), allocatable :: statuses(:)
+    type(cuboid_ride_options_t) :: ride_options
+    integer :: i, n
+    n = size(setup%start_angles)
+    evaluation%x = x
+    allocate (evaluation%rides(n), statuses(n))
+    call build_design_slide(setup%design, x, slide, status)
+    if (.not. status%ok()) return
+    ride_options = setup%ride
+    ride_options%lever_limit = setup%lever_limit
+    if (present(keep_series)) ride_options%keep_series = keep_series
+    !$omp parallel do num_threads(max(1, setup%threads)) schedule(dynamic, 1) if (setup%threads > 1)
+    do i = 1, n
+      call ride_one(setup, slide, ride_options, i, evaluation%rides(i), statuses(i))
+    end do
+    !$omp end parallel do
+    do i = 1, n
+      if (.not. statuses(i)%ok()) then
+        status = statuses(i)
+        return
+      end if
+    end do
+    evaluation%acceleration_cost = 0.5_wp*sum(evaluation%rides%max_acceleration**2)
+    evaluation%max_lever_arm = maxval(evaluation%rides%max_lever_arm)
+    evaluation%max_tipping_excess = maxval(evaluation%rides%max_tipping_excess)
+  end subroutine evaluate_design
+
+  subroutine ride_one(setup, slide, options, i, ride, status)
+    type(optimization_setup_t), intent(in) :: setup
+    type(tube_surface_t), intent(in) :: slide
+    type(cuboid_ride_options_t), intent(in) :: options
+    integer, intent(in) :: i
+    type(cuboid_ride_t), intent(out) :: ride
+    type(status_t), intent(out) :: status
+    real(wp) :: u_min, u_max
+    call slide%centerline%domain(u_min, u_max)
+    call ride_cuboid(slide, setup%body, cuboid_start_t(u=u_min, v=setup%start_v, speed=setup%start_speed, &
+                     angle=setup%start_angles(i)), u_max, options, ride, status)
+    if (.not. status%ok()) call prefix_status(status, 'ride from '//format_short(setup%start_angles(i)*180/pi)// &
+                                              ' deg')
+  end subroutine ride_one
+
+  !> The residuals of an evaluated design: the maximum acceleration of each
+  !> ride, then one constraint residual per ride.
+  pure subroutine residuals_of(problem, evaluation, r)
+    class(optimization_problem_t), intent(in) :: problem
+    type(design_evaluation_t), intent(in) :: evaluation
+    real(wp), intent(out) :: r(:)
+    integer :: i, n
+    real(wp) :: g
+    n = size(evaluation%rides)
+    r(1:n) = evaluation%rides%max_acceleration
+    do i = 1, n
+      g = evaluation%rides(i)%max_tipping_excess
+      select case (problem%mode)
+      case (CONSTRAINT_PENALTY)
+        r(n + i) = sqrt(2*problem%setup%penalty_factor*max(0.0_wp, g))
+      case (CONSTRAINT_EXACT)
+        r(n + i) = sqrt(problem%setup%rho)*max(0.0_wp, g + problem%lambda(i)/problem%setup%rho)
+      end select
+    end do
+  end subroutine residuals_of
+
+  subroutine problem_residuals(self, p, r, status)
+    class(optimization_problem_t), intent(inout) :: self
+    real(wp), intent(in) :: p(:)
+    real(wp), intent(out) :: r(:)
+    type(status_t), intent(inout) :: status
+    type(design_evaluation_t) :: evaluation
+    r = 0
+    call evaluate_design(self%setup, p, evaluation, status)
+    if (status%ok()) call residuals_of(self, evaluation, r)
+  end subroutine problem_residuals
+
+  !> All rides of all points in one parallel loop.
+  subroutine problem_residuals_batch(self, p, r, statuses)
+    class(optimization_problem_t), intent(inout) :: self
+    real(wp), intent(in) :: p(:, :)
+    real(wp), intent(out) :: r(:, :)
+    type(status_t), intent(inout) :: statuses(:)
+    type(tube_surface_t), allocatable :: slides(:)
+    type(design_evaluation_t), allocatable :: evaluations(:)
+    type(status_t), allocatable :: ride_status(:, :)
+    type(cuboid_ride_options_t) :: ride_options
+    integer :: k, i, j, n, np
+    np = size(p, 2)
+    n = size(self%setup%start_angles)
+    allocate (slides(np), evaluations(np), ride_status(n, np))
+    ride_options = self%setup%ride
+    ride_options%lever_limit = self%setup%lever_limit
+    r = 0
+    do k = 1, np
+      call build_design_slide(self%setup%design, p(:, k), slides(k), statuses(k))
+      allocate (evaluations(k)%rides(n))
+      evaluations(k)%x = p(:, k)
+    end do
+    !$omp parallel do num_threads(max(1, self%setup%threads)) schedule(dynamic, 1) private(i, k) &
+    !$omp if (self%setup%threads > 1)
+    do j = 1, n*np
+      k = (j - 1)/n + 1
+      i = j - (k - 1)*n
+      if (statuses(k)%ok()) call ride_one(self%setup, slides(k), ride_options, i, evaluations(k)%rides(i), &
+                                          ride_status(i, k))
+    end do
+    !$omp end parallel do
+    do k = 1, np
+      if (.not. statuses(k)%ok()) cycle
+      do i = 1, n
+        if (.not. ride_status(i, k)%ok()) then
+          statuses(k) = ride_status(i, k)
+          exit
+        end if
+      end do
+      if (statuses(k)%ok()) call residuals_of(self, evaluations(k), r(:, k))
+    end do
+  end subroutine problem_residuals_batch
+
+  !> Optimises the design from its start points (table 4.12 "before").
+  subroutine optimize_slide(setup, result, status)
+    type(optimization_setup_t), intent(in) :: setup
+    type(optimization_result_t), intent(out) :: result
+    type(status_t), intent(out) :: status
+    type(optimization_problem_t) :: problem
+    type(least_squares_result_t) :: fit
+    real(wp), allocatable :: x(:), g(:)
+    integer :: n, outer
+
+    n = size(setup%start_angles)
+    if (n < 1) then
+      call set_status(status, STATUS_INVALID_INPUT, 'geometry optimisation: no rides (start_angles)')
+      return
+    end if
+    x = start_x(setup%design)
+    if (any(x < setup%design%lower) .or. any(x > setup%design%upper)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'geometry optimisation: the start design lies outside '// &
+                      'the bounds of its design variables')
+      return
+    end if
+    call evaluate_design(setup, x, result%before, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'the start design')
+      status%code = STATUS_INVALID_INPUT
+      return
+    end if
+    problem%setup = setup
+    problem%mode = setup%constraint
+    allocate (problem%lambda(n))
+    problem%lambda = 0
+    result%cost_before = cost_of(problem, result%before)
+    do outer = 1, merge(setup%max_outer, 1, setup%constraint == CONSTRAINT_EXACT)
+      result%outer = outer
+      call solve_least_squares(problem, 2*n, x, setup%design%lower, setup%design%upper, setup%solver, fit, status)
+      result%evaluations = result%evaluations + fit%evaluations
+      result%rejected = result%rejected + fit%rejected_evaluations
+      result%info = fit%info
+      if (.not. status%ok()) exit
+      if (setup%constraint /= CONSTRAINT_EXACT) exit
+      call evaluate_design(setup, x, result%after, status)
+      result%evaluations = result%evaluations + 1
+      if (.not. status%ok()) exit
+      g = result%after%rides%max_tipping_excess
+      if (all(g <= setup%lever_tolerance)) exit
+      problem%lambda = max(0.0_wp, problem%lambda + setup%rho*g)   ! first-order multiplier update
+    end do
+    result%x = x
+    result%points = design_points(setup%design, x)
+    result%multipliers = problem%lambda
+    if (.not. status%ok()) then
+      call prefix_status(status, 'geometry optimisation')
+      return
+    end if
+    call evaluate_design(setup, x, result%after, status)
+    result%evaluations = result%evaluations + 1
+    if (status%ok()) result%cost_after = cost_of(problem, result%after)
+  end subroutine optimize_slide
+
+  real(wp) function cost_of(problem, evaluation) result(f)
+    type(optimization_problem_t), intent(in) :: problem
+    type(design_evaluation_t), intent(in) :: evaluation
+    real(wp) :: r(2*size(evaluation%rides))
+    call residuals_of(problem, evaluation, r)
+    f = 0.5_wp*sum(r**2)
+  end function cost_of
+end module design_geometry_optimization
