@@ -12,8 +12,7 @@ program water_bench
   use base_status, only: status_t
   use numerics_ode, only: ode_integrator_t
   use io_input, only: input_text_t, load_input_file
-  use io_solver_config, only: solver_config_t
-  use io_water_config, only: water_config_t
+  use water_run, only: water_description_t, new_streamline
   use water_streamline, only: streamline_t
   use water_flow, only: water_series_t, simulate_water
   use scenarios_water, only: build_water
@@ -23,8 +22,7 @@ program water_bench
   integer, parameter :: repeats = 7
   real(wp), parameter :: thesis_cpu = 1.0_wp, thesis_flow = 22.3_wp   ! s, s
   type(input_text_t) :: input
-  type(solver_config_t) :: solver
-  type(water_config_t) :: config
+  type(water_description_t) :: description
   type(streamline_t), target :: model
   type(water_series_t) :: s
   type(status_t) :: status
@@ -37,13 +35,14 @@ program water_bench
   path = 'inputs/water/demo_slide.nml'
   if (command_argument_count() >= 1) call get_command_argument(1, path)
   call load_input_file(trim(path), input, status)
-  if (status%ok()) call build_water(input, solver, config, model, y0, status)
+  if (status%ok()) call build_water(input, description, status)
+  if (status%ok()) call new_streamline(description, model, y0, status)
   if (.not. status%ok()) then
     print '(a)', trim(path)//': '//status%text()
     error stop 1
   end if
-  solver%options%rtol = 1e-10_wp
-  solver%options%atol = 1e-9_wp
+  description%solver%ode%rtol = 1e-10_wp
+  description%solver%ode%atol = 1e-9_wp
   print '(a)', 'water on '//model%channel%describe()//', rtol 1e-10, atol 1e-9'
   print '(a34, 4a14)', 'variant', 'flow time s', 'CPU s', 'CPU s/22.3 s', 'thesis/ours'
   do variant = 1, 3
@@ -51,12 +50,12 @@ program water_bench
       call cpu_time(start)
       select case (variant)
       case (1)
-        call simulate_water(model, y0, solver%options, solver%duration, solver%duration, s, status, &
+        call simulate_water(model, y0, description%solver%ode, description%solver%time_bound, 1e3_wp, s, status, &
                             edges=.false.)
       case (2)
-        call simulate_water(model, y0, solver%options, solver%duration, 0.005_wp, s, status, edges=.false.)
+        call simulate_water(model, y0, description%solver%ode, description%solver%time_bound, 0.005_wp, s, status, edges=.false.)
       case default
-        call simulate_water(model, y0, solver%options, solver%duration, 0.005_wp, s, status, edges=.true.)
+        call simulate_water(model, y0, description%solver%ode, description%solver%time_bound, 0.005_wp, s, status, edges=.true.)
       end select
       call cpu_time(finish)
       cpu(r) = finish - start

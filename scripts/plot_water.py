@@ -33,10 +33,19 @@ def main(argv):
         speed = g["speed"][:]
         height = g["height"][:]
         xyz = np.asarray(g["position"][:])
-        left = np.stack([g["left_edge_u"][:], g["left_edge_v"][:]], axis=1)
-        right = np.stack([g["right_edge_u"][:], g["right_edge_v"][:]], axis=1)
-        lp = np.asarray(g["left_point"][:])
-        rp = np.asarray(g["right_point"][:])
+        # the edges at the samples (edges = .true.), else those of the table rows
+        edges = "left_edge_u" in g
+        if edges:
+            band_s = s
+            band_left = g["left_edge_v"][:]
+            band_right = g["right_edge_v"][:]
+            lp = np.asarray(g["left_point"][:])
+            rp = np.asarray(g["right_point"][:])
+        else:
+            band_s = g["table/arc_length"][:]
+            band_left = g["table/v_left"][:]
+            band_right = g["table/v_right"][:]
+            lp = rp = np.zeros((0, 3))
         stations = None
         if "stations" in g:
             stations = (g["stations/arc_length"][:], g["stations/v_middle"][:], g["stations/reached"][:])
@@ -46,15 +55,16 @@ def main(argv):
     outcome = outcome.decode() if isinstance(outcome, bytes) else str(outcome)
     # HDF5 stores the Fortran (3 x n) arrays as n x 3
     if xyz.shape[0] == 3 and xyz.shape[1] != 3:
-        xyz, lp, rp, left, right = xyz.T, lp.T, rp.T, left.T, right.T
+        xyz = xyz.T
+        if edges:
+            lp, rp = lp.T, rp.T
     deg = 180 / math.pi
-    edges = np.any(left != 0)
 
     fig = plt.figure(figsize=(13, 9))
     ax1 = fig.add_subplot(2, 2, 1)
     ax1.plot(s, (v - math.pi / 2) * deg, "b-", label="streamline (middle)")
-    if edges:
-        ax1.fill_between(s, (right[:, 1] - math.pi / 2) * deg, (left[:, 1] - math.pi / 2) * deg,
+    if len(band_s) > 0:
+        ax1.fill_between(band_s, (band_right - math.pi / 2) * deg, (band_left - math.pi / 2) * deg,
                          color="tab:blue", alpha=0.25, label="water band")
     if stations is not None:
         reached = stations[2] == 1

@@ -51,7 +51,7 @@ module water_field
   ! rows of the node tables
   integer, parameter :: row_time = 1, row_arc = 2, row_v = 3, row_position = 4, row_velocity = 7, &
                         row_speed = 10, row_height = 11, row_width = 12, row_x_m = 13, row_z_m = 16, &
-                        n_rows = 18
+                        row_du = 19, row_dv = 20, n_rows = 20
 
   !> The water's edges at the cross-section u (surface parameters).
   type :: water_edges_at_t
@@ -68,6 +68,7 @@ module water_field
     real(wp) :: arc_length = 0                     ! m, centerline arc length from the slide's start
     real(wp) :: time = 0                           ! s, when the water point passes
     real(wp) :: v = 0, dv_du = 0                   ! rad, rad per unit of u: the streamline
+    real(wp) :: du_dt = 0, dv_dt = 0               ! u-unit/s, rad/s: the surface rates of the water point
     real(wp) :: position(3) = 0                    ! m, streamline point
     real(wp) :: velocity(3) = 0                    ! m/s, water velocity (world)
     real(wp) :: speed = 0                          ! m/s
@@ -109,10 +110,13 @@ contains
   end function water_location_name
 
   !> The field of a completed run. Samples whose u does not increase (a record
-  !> repeated at a stop) are left out; edges only where they were solved.
-  function new_water_field(series, status) result(field)
+  !> repeated at a stop) are left out; edges only where they were solved: at
+  !> the samples, or, given left and right (rows u, v, du/dt, dv/dt of edge
+  !> points solved elsewhere, e.g. at the rows of the table), those instead.
+  function new_water_field(series, status, left, right) result(field)
     type(water_series_t), intent(in) :: series
     type(status_t), intent(out) :: status
+    real(wp), intent(in), optional :: left(:, :), right(:, :)
     type(water_field_t) :: field
     integer :: i, k, n
     integer, allocatable :: keep(:)
@@ -149,25 +153,32 @@ contains
       field%arc(k) = series%arc_length(i)
       field%value(:, k) = [series%time(i), series%arc_length(i), series%v(i), series%position(:, i), &
                            series%velocity(:, i), series%speed(i), series%height(i), series%width(i), &
-                           series%x_m(:, i), series%z_m(:, i)]
+                           series%x_m(:, i), series%z_m(:, i), series%du(i), series%dv(i)]
       field%slope(:, k) = [1.0_wp, series%centerline_speed(i)*series%du(i), series%dv(i), series%velocity(:, i), &
                            series%acceleration(:, i), series%speed_rate(i), series%height_rate(i), &
-                           series%width_rate(i), series%x_m_rate(:, i), series%z_m_rate(:, i)]/series%du(i)
+                           series%width_rate(i), series%x_m_rate(:, i), series%z_m_rate(:, i), series%udd(i), &
+                           series%vdd(i)]/series%du(i)
     end do
-    call edge_nodes(series%left_edge, series%left_edge_rate, field%left)
-    call edge_nodes(series%right_edge, series%right_edge_rate, field%right)
+    if (present(left) .and. present(right)) then
+      call edge_nodes(left(1:2, :), left(3:4, :), [(1, i = 1, size(left, 2))], field%left)
+      call edge_nodes(right(1:2, :), right(3:4, :), [(1, i = 1, size(right, 2))], field%right)
+    else
+      call edge_nodes(series%left_edge(:, :n), series%left_edge_rate(:, :n), series%edge_solved(:n), field%left)
+      call edge_nodes(series%right_edge(:, :n), series%right_edge_rate(:, :n), series%edge_solved(:n), field%right)
+    end if
 
   contains
 
-    !> (u, v, dv/du) of the solved edge samples whose u increases.
-    subroutine edge_nodes(edge, rate, nodes)
+    !> (u, v, dv/du) of the solved edge points whose u increases.
+    subroutine edge_nodes(edge, rate, solved, nodes)
       real(wp), intent(in) :: edge(:, :), rate(:, :)
+      integer, intent(in) :: solved(:)
       real(wp), allocatable, intent(out) :: nodes(:, :)
       integer :: j, m
-      allocate (nodes(3, n))
+      allocate (nodes(3, size(edge, 2)))
       m = 0
-      do j = 1, n
-        if (series%edge_solved(j) /= 1 .or. .not. rate(1, j) > 0) cycle
+      do j = 1, size(edge, 2)
+        if (solved(j) /= 1 .or. .not. rate(1, j) > 0) cycle
         if (m > 0) then
           if (.not. edge(1, j) > nodes(1, m)) cycle
         end if
@@ -260,6 +271,7 @@ contains
     water%time = val(row_time)
     water%arc_length = val(row_arc)
     water%v = val(row_v); water%dv_du = der(row_v)
+    water%du_dt = val(row_du); water%dv_dt = val(row_dv)
     water%position = val(row_position:row_position + 2)
     water%velocity = val(row_velocity:row_velocity + 2)
     water%speed = val(row_speed)

@@ -1,6 +1,27 @@
-!> Running the streamline: start values, integration to the end of the slide
-!> with root finding, the time series at output times (with the water edges),
-!> the report at stations, and the table of the water over arc length.
+!> Running the streamline: start values, and the run on the shared integration
+!> driver (numerics_event_driver) to the end of the slide: outputs every
+!> output_step (with the water edges), the report at stations, the run's own
+!> stops (stall, turning back, near-critical flow, lift-off) as events with
+!> messages, and a time bound (the user's, or a safety bound).
+!>
+!> How a run ends:
+!> - the end of the slide (root u = u_end): OUTCOME_END, status ok;
+!> - the caller's time bound `duration` (finite: the user asked for it):
+!>   OUTCOME_DURATION, status ok; the caller says so in its report;
+!> - a stop of the model (stall, turn, critical flow, lift-off): status
+!>   STATUS_DOMAIN with the message, the samples up to the stop kept;
+!> - the safety bound t_safety = 200 L/min_speed (L the slide's length from
+!>   the start to u_end), which no run can reach without a stop firing first:
+!>   while the water runs at w >= min_speed at an angle |beta| <= 89.4 deg
+!>   (cos beta >= 0.01) to the centerline, a section moves along at least
+!>   w cos(beta) |c_u|/(-y_M.r_u) >= 0.01 min_speed/2 (the factor, the
+!>   centerline's over the wall's speed at an offset, stays above 1/2 as long
+!>   as the tube does not fold: chi times the extent < 1). Reaching it is a
+!>   failure (OUTCOME_SAFETY_BOUND, STATUS_DOMAIN) that points to a bug or a
+!>   model the reasoning does not cover;
+!> - a failure of the integrator or the model (OUTCOME_ERROR).
+!> The model is not changed by a run (intent(in)); the run's own state lives
+!> in a local event system, so runs can go on in several threads at once.
 module water_flow
   use base_kinds, only: wp
   use base_text, only: format_short
@@ -8,23 +29,40 @@ module water_flow
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, &
     STATUS_DOMAIN
   use geometry_surface, only: surface_point_t
-  use numerics_ode, only: ode_integrator_t, ode_options_t, ode_stats_t
+  use numerics_ode, only: ode_options_t, ode_stats_t
+  use numerics_event_driver, only: event_system_t, driver_options_t, driver_result_t, drive, &
+    EVENT_IGNORE, EVENT_STOP, RECORD_START, DRIVE_END_TIME, DRIVE_EVENT_STOP
   use water_channel, only: channel_t
   use water_section, only: circle_segment, circle_height_for_area, profile_water
   use water_streamline, only: streamline_t, water_point_t, water_point, velocity_from_angle, &
-    water_rates_t, water_point_rates, ROOT_END, ROOT_STALL, ROOT_CRITICAL, ROOT_TURN, ROOT_LIFT, ROOT_FIRST_STATION
+    water_rates_t, water_point_rates, CORRECTION_OFF
   use water_boundaries, only: water_edges
   implicit none (type, external)
   private
-  public :: water_start_t, water_series_t, water_station_t, water_table_t
-  public :: water_initial_state, simulate_water, water_table
+  public :: water_start_t, water_series_t, water_station_t
+  public :: water_initial_state, simulate_water, safety_time_bound
   public :: START_EDGES, START_HEIGHT, START_SPEED, START_HEIGHT_SPEED
   public :: OUTCOME_END, OUTCOME_DURATION, OUTCOME_STALL, OUTCOME_TURN, OUTCOME_CRITICAL, &
-    OUTCOME_ERROR, OUTCOME_LIFT, outcome_name
+    OUTCOME_ERROR, OUTCOME_LIFT, OUTCOME_SAFETY_BOUND, outcome_name
+  public :: ROOT_END, ROOT_STALL, ROOT_CRITICAL, ROOT_TURN, ROOT_LIFT, ROOT_FIRST_STATION
 
   integer, parameter :: START_EDGES = 1, START_HEIGHT = 2, START_SPEED = 3, START_HEIGHT_SPEED = 4
   integer, parameter :: OUTCOME_END = 1, OUTCOME_DURATION = 2, OUTCOME_STALL = 3, OUTCOME_TURN = 4, &
-                        OUTCOME_CRITICAL = 5, OUTCOME_ERROR = 6, OUTCOME_LIFT = 7
+                        OUTCOME_CRITICAL = 5, OUTCOME_ERROR = 6, OUTCOME_LIFT = 7, OUTCOME_SAFETY_BOUND = 8
+  !> Root functions of a run: the end, the model's stops, then one per station.
+  integer, parameter :: ROOT_END = 1, ROOT_STALL = 2, ROOT_CRITICAL = 3, ROOT_TURN = 4, ROOT_LIFT = 5, &
+                        ROOT_FIRST_STATION = 6
+  !> cos(beta) at which the flow counts as turning across or back (89.4 deg;
+  !> R of (4.15) is singular at 90 deg)
+  real(wp), parameter :: turn_cosine = 0.01_wp
+  !> the safety bound in units of L/min_speed (see the module header)
+  real(wp), parameter :: safety_factor = 200
+  !> Most samples of one run (about 70 numbers, 560 bytes each: 2.2 GB)
+  integer, parameter :: max_samples = 4000000
+
+  interface resize
+    module procedure resize_reals, resize_columns, resize_integers
+  end interface resize
 
   !> How the water enters at u0 (thesis 4.33 or given values).
   type :: water_start_t
@@ -51,10 +89,12 @@ module water_flow
     real(wp), allocatable :: normal_force(:), friction_force(:), curvature(:), froude(:)
     real(wp), allocatable :: kinetic(:), potential(:), friction_work(:), correction_work(:)
     real(wp), allocatable :: left_edge(:, :), right_edge(:, :), left_point(:, :), right_point(:, :)
-    integer, allocatable :: edge_solved(:)    ! 1: edges from (4.25-4.26); 0: circle estimate
+    integer, allocatable :: edge_solved(:)    ! 1: edges from (4.25-4.26); 0: circle estimate (or not solved)
+    logical :: edges = .false.                 ! the edges were solved at the samples
     ! rates along the motion, for the water field's C1 interpolation
     real(wp), allocatable :: acceleration(:, :)      ! m/s^2 (3 x n)
     real(wp), allocatable :: speed_rate(:), height_rate(:), width_rate(:)   ! m/s^2, m/s, m/s
+    real(wp), allocatable :: udd(:), vdd(:)          ! u'', v'' (4.23)
     real(wp), allocatable :: x_m(:, :), z_m(:, :), x_m_rate(:, :), z_m_rate(:, :)   ! K_M axes, 1/s
     real(wp), allocatable :: centerline_speed(:)     ! |c_u|, m per unit of u
     real(wp), allocatable :: left_edge_rate(:, :), right_edge_rate(:, :)   ! d[u, v]/dt (2 x n)
@@ -67,21 +107,32 @@ module water_flow
     character(len=:), allocatable :: message
     type(ode_stats_t) :: stats
     real(wp) :: flow_rate = 0          ! m^3/s
+    real(wp) :: time_bound = 0         ! s, the bound the run had (the caller's or the safety bound)
+    real(wp) :: cpu = 0                ! s, process CPU time of the run (driver)
   end type water_series_t
 
-  !> The water over arc length along the centerline (linear interpolation of
-  !> the output samples, which lie a few cm apart).
-  type :: water_table_t
-    real(wp), allocatable :: arc_length(:), u(:), time(:), v(:), speed(:), height(:), width(:), &
-      beta(:), v_left(:), v_right(:)
-  end type water_table_t
-
-  !> Most output samples of one run (about 510 bytes each): the memory bound.
-  integer, parameter :: max_samples = 4000000
-
-  interface resize
-    module procedure resize_reals, resize_columns, resize_integers
-  end interface resize
+  !> The running water: the model (read only), what is recorded, and a cache
+  !> of the last water point (the root functions at an output time and the
+  !> record there see the same state, and a step's right-hand side may too).
+  type, extends(event_system_t) :: water_system_t
+    type(streamline_t), pointer :: model => null()
+    type(water_series_t), pointer :: series => null()
+    logical :: with_edges = .true.
+    real(wp) :: u_start = 0, u_end = 0
+    integer :: outcome = 0                       ! set by a model stop (or OUTCOME_ERROR)
+    character(len=:), allocatable :: message
+    logical :: cached = .false.
+    real(wp) :: cache_y(5) = 0
+    type(water_point_t) :: cache_q
+  contains
+    procedure :: rhs => system_rhs
+    procedure :: root_count => system_root_count
+    procedure :: roots => system_roots
+    procedure :: record => system_record
+    procedure :: handle_event => system_handle_event
+    procedure :: progress => system_progress
+    procedure :: point => system_point
+  end type water_system_t
 
 contains
 
@@ -95,6 +146,7 @@ contains
     case (OUTCOME_TURN); text = 'turned back'
     case (OUTCOME_CRITICAL); text = 'near critical flow'
     case (OUTCOME_LIFT); text = 'lifted off'
+    case (OUTCOME_SAFETY_BOUND); text = 'safety time bound'
     case default; text = 'error'
     end select
   end function outcome_name
@@ -234,152 +286,295 @@ contains
     end subroutine profile_height
   end subroutine water_initial_state
 
-  !> Integrates from y0 until the end of the slide (u = u_end), `duration`, or a
-  !> stop (stall, turning back, near-critical flow, an error). Records every
-  !> output_step and at the stations; solves the edges at every record if
-  !> `edges`. The series keeps what was computed; `status` says why it stopped
-  !> early (OK for the end of the slide and for the duration).
+  !> The safety bound on time of a run from u0 to u_end: 200 L/min_speed
+  !> (module header), L the centerline arc length between them.
+  function safety_time_bound(model, u0) result(t)
+    type(streamline_t), intent(in) :: model
+    real(wp), intent(in) :: u0
+    real(wp) :: t
+    real(wp) :: u_min, u_max
+    call model%channel%u_range(u_min, u_max)
+    t = safety_factor*(model%channel%arc_length(min(model%u_end, u_max)) - model%channel%arc_length(u0)) &
+        /model%min_speed
+  end function safety_time_bound
+
+  !> Integrates from y0 to the end of the slide (u = u_end, at the latest the
+  !> channel's end) on the shared driver. `duration`: the caller's bound on
+  !> time (huge(1.0): none, the safety bound applies). Records every
+  !> output_step; fills the stations at their roots; solves the edges at every
+  !> record if `edges`. The series keeps what was computed and why the run
+  !> ended (outcome, message); `status` is ok at the end of the slide and at
+  !> the caller's bound, else it says why the run stopped early. The model is
+  !> not changed.
   subroutine simulate_water(model, y0, options, duration, output_step, series, status, edges)
-    type(streamline_t), intent(inout), target :: model
+    type(streamline_t), intent(in), target :: model
     real(wp), intent(in) :: y0(:), duration, output_step
     type(ode_options_t), intent(in) :: options
-    type(water_series_t), intent(out) :: series
+    type(water_series_t), intent(out), target :: series
     type(status_t), intent(out) :: status
     logical, intent(in), optional :: edges
-    type(ode_integrator_t) :: integrator
-    type(ode_options_t) :: opts
-    real(wp) :: t, t_out, y(size(y0)), u_min, u_max
-    integer :: n_out, k, nroots, i
-    integer, allocatable :: root_index(:)
-    logical :: root_found, with_edges
+    type(water_system_t), target :: system
+    type(driver_options_t) :: opts
+    type(driver_result_t) :: result
+    real(wp) :: u_min, u_max, t_safety
+    integer :: nroots, i
 
-    with_edges = .true.
-    if (present(edges)) with_edges = edges
+    system%model => model
+    system%series => series
+    system%with_edges = .true.
+    if (present(edges)) system%with_edges = edges
+    series%edges = system%with_edges
     call model%channel%u_range(u_min, u_max)
-    model%u_end = min(model%u_end, u_max)   ! the slide ends at the channel's end at the latest
+    system%u_end = min(model%u_end, u_max)   ! the slide ends at the channel's end at the latest
+    system%u_start = y0(1)
     series%flow_rate = model%flow_rate
-    n_out = ceiling(min(duration/output_step, real(max_samples, wp)) - 1e-9_wp)
-    ! the run may end long before duration (at the slide's end): grown in record as needed
-    call allocate_series(series, min(n_out + 2, 4096))
-    nroots = model%root_count()
-    allocate (root_index(nroots))
+    call allocate_series(series, 1024)
+    nroots = system%root_count()
     allocate (series%stations(nroots - ROOT_FIRST_STATION + 1))
     do i = 1, size(series%stations)
       series%stations(i)%u = model%stations(i)
     end do
-    opts = options
-    if (allocated(opts%root_direction)) deallocate (opts%root_direction)
-    allocate (opts%root_direction(nroots))
-    opts%root_direction = -1
-    opts%root_direction(ROOT_FIRST_STATION:) = 1
 
-    call record(model, 0.0_wp, y0, series, with_edges, status)
-    if (.not. status%ok()) then
-      call prefix_status(status, 'water at the start')
-      return
-    end if
-    ! a root needs a sign change: water that starts without contact is caught here
-    if (.not. series%normal_force(1) > 0) then
-      series%outcome = OUTCOME_LIFT
-      call set_status(status, STATUS_DOMAIN, lift_message(0.0_wp, y0))
-      series%message = status%text()
-      return
-    end if
-    call integrator%start(model, 0.0_wp, y0, opts, status)
-    if (.not. status%ok()) return
-    series%outcome = OUTCOME_DURATION
-    k = 0
-    outer: do while (k < n_out)
-      k = k + 1
-      t_out = min(k*output_step, duration)
-      do
-        call integrator%advance(t_out, t, y, status, root_found, root_index)
-        if (.not. status%ok()) then
-          series%outcome = OUTCOME_ERROR
-          call prefix_status(status, 'water stopped at t = '//format_short(t)//' s')
-          exit outer
-        end if
-        if (.not. root_found) exit
-        do i = 1, size(series%stations)
-          if (root_index(ROOT_FIRST_STATION - 1 + i) /= 0) call station(i, t, y)
-        end do
-        if (root_index(ROOT_END) /= 0) then
-          series%outcome = OUTCOME_END
-        else if (root_index(ROOT_STALL) /= 0) then
-          series%outcome = OUTCOME_STALL
-          call set_status(status, STATUS_DOMAIN, 'the water stalled (speed below ' // &
-                          format_short(model%min_speed)//' m/s) at t = '//format_short(t)//' s, u = '//format_short(y(1)))
-        else if (root_index(ROOT_TURN) /= 0) then
-          series%outcome = OUTCOME_TURN
-          call set_status(status, STATUS_DOMAIN, 'the water turns across the slide or back ' // &
-                          '(angle to the centerline beyond 89.4 deg) at t = ' // &
-                          format_short(t)//' s, u = '//format_short(y(1)))
-        else if (root_index(ROOT_LIFT) /= 0) then
-          series%outcome = OUTCOME_LIFT
-          call set_status(status, STATUS_DOMAIN, lift_message(t, y))
-        else if (root_index(ROOT_CRITICAL) /= 0) then
-          series%outcome = OUTCOME_CRITICAL
-          call set_status(status, STATUS_DOMAIN, 'the flow approaches critical (1 - 1/Fr^2 = ' // &
-                          format_short(model%min_criticality)//') at t = '//format_short(t)//' s, u = '// &
-                          format_short(y(1))//': the Saint-Venant correction is singular at Fr = 1; ' // &
-                          'the water is too slow for shallow supercritical flow here; ' // &
-                          'switch the correction off (correction = ''off'') to go on')
-        else
-          cycle   ! only stations
-        end if
-        call record(model, t, y, series, with_edges, status)
-        if (series%outcome /= OUTCOME_END .and. status%ok()) status%code = STATUS_DOMAIN
-        exit outer
-      end do
-      call record(model, t, y, series, with_edges, status)
-      if (.not. status%ok()) then
-        series%outcome = OUTCOME_ERROR
-        exit outer
+    t_safety = safety_time_bound(model, y0(1))
+    opts%ode = options
+    if (allocated(opts%ode%root_direction)) deallocate (opts%ode%root_direction)
+    allocate (opts%ode%root_direction(nroots))
+    opts%ode%root_direction = -1                  ! the stops: falling through zero
+    opts%ode%root_direction(ROOT_FIRST_STATION:) = 1
+    opts%t_end = min(duration, t_safety)
+    opts%output_step = output_step
+    opts%label = 'water'
+    series%time_bound = opts%t_end
+    call drive(system, y0, opts, result, status)
+    series%stats = result%stats
+    series%cpu = result%cpu
+
+    if (system%outcome /= OUTCOME_ERROR .and. system%outcome /= 0) then
+      ! a stop of the model, decided at its event (or at the start)
+      series%outcome = system%outcome
+      if (allocated(system%message)) then
+        call set_status(status, STATUS_DOMAIN, system%message)
+      else
+        status%code = 0
       end if
-    end do outer
-    if (series%outcome == OUTCOME_STALL .or. series%outcome == OUTCOME_TURN .or. &
-        series%outcome == OUTCOME_CRITICAL .or. series%outcome == OUTCOME_LIFT) then
-      ! keep the message set at the root (record may have reset status)
-      if (status%ok()) call set_status(status, STATUS_DOMAIN, outcome_name(series%outcome))
+    else if (status%ok() .and. result%outcome == DRIVE_END_TIME) then
+      if (duration <= t_safety) then
+        series%outcome = OUTCOME_DURATION
+      else
+        series%outcome = OUTCOME_SAFETY_BOUND
+        call set_status(status, STATUS_DOMAIN, 'the water did not reach the end of the slide within the '// &
+                        'safety bound t = '//format_short(t_safety)//' s (200 x slide length / min_speed; '// &
+                        'see docs/water.md) at arc length '//format_short(series%arc_length(series%n))//' m')
+      end if
+    else if (status%ok() .and. result%outcome == DRIVE_EVENT_STOP) then
+      series%outcome = OUTCOME_END   ! the only event that stops without a model stop
+    else
+      series%outcome = OUTCOME_ERROR
     end if
     if (.not. status%ok()) series%message = status%text()
-    series%stats = integrator%statistics()
-
-  contains
-
-    function lift_message(ts, ys) result(text)
-      real(wp), intent(in) :: ts, ys(:)
-      character(len=:), allocatable :: text
-      text = 'the water lifts off the slide surface (normal force (4.12) down to 0: the surface would ' // &
-             'have to pull it) at t = '//format_short(ts)//' s, u = '//format_short(ys(1))//', v = '// &
-             format_short(ys(2))//' rad; the streamline model holds only while the water is pressed on the slide'
-    end function lift_message
-
-    subroutine station(i, ts, ys)
-      integer, intent(in) :: i
-      real(wp), intent(in) :: ts, ys(:)
-      type(water_point_t) :: q
-      type(status_t) :: st
-      real(wp) :: l(2), r(2), pl(3), pr(3)
-      call water_point(model, ys, q, st)
-      if (.not. st%ok()) return
-      series%stations(i)%reached = .true.
-      series%stations(i)%time = ts
-      series%stations(i)%v = ys(2)
-      series%stations(i)%speed = q%speed
-      series%stations(i)%height = q%height
-      series%stations(i)%width = q%width
-      series%stations(i)%arc_length = model%channel%arc_length(ys(1))
-      call water_edges(model%channel, q, l, r, pl, pr, st)
-      if (st%ok()) then
-        series%stations(i)%v_left = l(2)
-        series%stations(i)%v_right = r(2)
-        series%stations(i)%v_middle = (l(2) + r(2))/2
-      else
-        series%stations(i)%v_middle = ys(2)
-      end if
-    end subroutine station
   end subroutine simulate_water
+
+
+  !> The water point at y (the cached one if y(1:5) is the cached state).
+  subroutine system_point(self, y, q, status)
+    class(water_system_t), intent(inout) :: self
+    real(wp), intent(in) :: y(:)
+    type(water_point_t), intent(out) :: q
+    type(status_t), intent(inout) :: status
+    if (self%cached) then
+      if (all(y(1:5) == self%cache_y)) then
+        q = self%cache_q
+        return
+      end if
+    end if
+    call water_point(self%model, y, q, status)
+    self%cached = status%ok()
+    if (self%cached) then
+      self%cache_y = y(1:5)
+      self%cache_q = q
+    end if
+  end subroutine system_point
+
+  subroutine system_rhs(self, t, y, ydot, status)
+    class(water_system_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(out) :: ydot(:)
+    type(status_t), intent(inout) :: status
+    type(water_point_t) :: q
+    associate (unused => t)
+    end associate
+    call self%point(y, q, status)
+    if (.not. status%ok()) then
+      ydot = 0
+      return
+    end if
+    ydot(1) = y(3)
+    ydot(2) = y(4)
+    ydot(3) = q%udd
+    ydot(4) = q%vdd
+    ydot(5) = q%height_rate
+    ydot(6) = -q%friction*q%speed
+    ydot(7) = -q%kappa*q%speed
+  end subroutine system_rhs
+
+  integer function system_root_count(self) result(n)
+    class(water_system_t), intent(in) :: self
+    n = ROOT_FIRST_STATION - 1
+    if (allocated(self%model%stations)) n = n + size(self%model%stations)
+  end function system_root_count
+
+  !> g1 = u_end - u (end of slide), g2 = w - min_speed (stall), g3 = criticality
+  !> - min_criticality (approach to Fr = 1), g4 = cos(beta) - 0.01 (turning across
+  !> or back; R of (4.15) is singular at beta = 90 deg), g5 = N/m (lift-off: the
+  !> normal force (4.12) turns negative, the surface would have to pull the
+  !> water), then u - u_i for the stations.
+  !> Lift-off is a root, not a check at output times: N depends continuously on
+  !> the state (u, v, u', v') through r_uu, r_uv, r_vv, so its sign change is an
+  !> event in time that root finding locates to the integrator's accuracy, while
+  !> a check every output_step would stop up to one step late (centimetres of
+  !> flight computed as if on the surface) and miss a short dip between outputs.
+  subroutine system_roots(self, t, y, g)
+    class(water_system_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(out) :: g(:)
+    type(water_point_t) :: q
+    type(status_t) :: st
+    integer :: i
+    associate (unused => t)
+    end associate
+    g(ROOT_END) = self%u_end - y(1)
+    g(ROOT_TURN) = y(3)
+    call self%point(y, q, st)
+    if (st%ok()) then
+      g(ROOT_TURN) = -dot_product(q%y_m, q%x_w) - turn_cosine   ! cos(beta) - 0.01: turning across
+      g(ROOT_STALL) = q%speed - self%model%min_speed
+      g(ROOT_LIFT) = q%normal_force/self%model%mass    ! m/s^2
+      if (self%model%correction == CORRECTION_OFF) then
+        g(ROOT_CRITICAL) = 1
+      else
+        g(ROOT_CRITICAL) = q%criticality - self%model%min_criticality
+      end if
+    else
+      g(ROOT_STALL) = 1; g(ROOT_CRITICAL) = 1; g(ROOT_LIFT) = 1
+    end if
+    do i = 1, self%root_count() - ROOT_FIRST_STATION + 1
+      g(ROOT_FIRST_STATION - 1 + i) = y(1) - self%model%stations(i)
+    end do
+  end subroutine system_roots
+
+  !> Stations are filled here (no sample); the end and the model's stops end
+  !> the run (recorded by the driver) with their outcome and message.
+  subroutine system_handle_event(self, t, y, fired, action, status)
+    class(water_system_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    real(wp), intent(inout) :: y(:)
+    integer, intent(in) :: fired(:)
+    integer, intent(out) :: action
+    type(status_t), intent(inout) :: status
+    integer :: i
+    associate (unused => status)
+    end associate
+    do i = 1, size(fired) - ROOT_FIRST_STATION + 1
+      if (fired(ROOT_FIRST_STATION - 1 + i) /= 0) call station(self, i, t, y)
+    end do
+    action = EVENT_STOP
+    if (fired(ROOT_END) /= 0) then
+      self%outcome = 0   ! the end: status ok (simulate_water sets OUTCOME_END)
+    else if (fired(ROOT_STALL) /= 0) then
+      call stop_model(OUTCOME_STALL, 'the water stalled (speed below '//format_short(self%model%min_speed)// &
+                      ' m/s) at t = '//format_short(t)//' s, u = '//format_short(y(1)))
+    else if (fired(ROOT_TURN) /= 0) then
+      call stop_model(OUTCOME_TURN, 'the water turns across the slide or back (angle to the centerline '// &
+                      'beyond 89.4 deg) at t = '//format_short(t)//' s, u = '//format_short(y(1)))
+    else if (fired(ROOT_LIFT) /= 0) then
+      call stop_model(OUTCOME_LIFT, lift_message(t, y))
+    else if (fired(ROOT_CRITICAL) /= 0) then
+      call stop_model(OUTCOME_CRITICAL, 'the flow approaches critical (1 - 1/Fr^2 = '// &
+                      format_short(self%model%min_criticality)//') at t = '//format_short(t)//' s, u = '// &
+                      format_short(y(1))//': the Saint-Venant correction is singular at Fr = 1; '// &
+                      'the water is too slow for shallow supercritical flow here; '// &
+                      'switch the correction off (correction = ''off'') to go on')
+    else
+      action = EVENT_IGNORE   ! only stations
+    end if
+  contains
+    subroutine stop_model(outcome, message)
+      integer, intent(in) :: outcome
+      character(len=*), intent(in) :: message
+      self%outcome = outcome
+      self%message = message
+    end subroutine stop_model
+  end subroutine system_handle_event
+
+  pure function lift_message(t, y) result(text)
+    real(wp), intent(in) :: t, y(:)
+    character(len=:), allocatable :: text
+    text = 'the water lifts off the slide surface (normal force (4.12) down to 0: the surface would ' // &
+           'have to pull it) at t = '//format_short(t)//' s, u = '//format_short(y(1))//', v = '// &
+           format_short(y(2))//' rad; the streamline model holds only while the water is pressed on the slide'
+  end function lift_message
+
+  !> The station i reached at (t, y): the water there and its edges (4.25-4.26).
+  subroutine station(self, i, t, y)
+    class(water_system_t), intent(inout) :: self
+    integer, intent(in) :: i
+    real(wp), intent(in) :: t, y(:)
+    type(water_point_t) :: q
+    type(status_t) :: st
+    real(wp) :: l(2), r(2), pl(3), pr(3)
+    call self%point(y, q, st)
+    if (.not. st%ok()) return
+    associate (s => self%series%stations(i))
+      s%reached = .true.
+      s%time = t
+      s%v = y(2)
+      s%speed = q%speed
+      s%height = q%height
+      s%width = q%width
+      s%arc_length = self%model%channel%arc_length(y(1))
+      call water_edges(self%model%channel, q, l, r, pl, pr, st)
+      if (st%ok()) then
+        s%v_left = l(2)
+        s%v_right = r(2)
+        s%v_middle = (l(2) + r(2))/2
+      else
+        s%v_middle = y(2)
+      end if
+    end associate
+  end subroutine station
+
+  !> A sample at (t, y). At the start, water that is not pressed on the
+  !> surface (N <= 0) stops the run: a root needs a sign change.
+  subroutine system_record(self, t, y, kind, status)
+    class(water_system_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    integer, intent(in) :: kind
+    type(status_t), intent(inout) :: status
+    type(water_point_t) :: q
+    call self%point(y, q, status)
+    if (.not. status%ok()) return
+    call record(self%model, t, y, q, self%series, self%with_edges, status)
+    if (.not. status%ok()) return
+    if (kind == RECORD_START .and. .not. q%normal_force > 0) then
+      self%outcome = OUTCOME_LIFT
+      self%message = lift_message(t, y)
+      call set_status(status, STATUS_DOMAIN, self%message)
+    end if
+  end subroutine system_record
+
+  !> Progress lines of long runs: the fraction of the slide covered.
+  subroutine system_progress(self, t, y, t_start, t_end, fraction, text)
+    class(water_system_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:), t_start, t_end
+    real(wp), intent(out) :: fraction
+    character(len=:), allocatable, intent(out) :: text
+    associate (unused => t_start, unused_end => t_end)
+    end associate
+    fraction = (y(1) - self%u_start)/max(self%u_end - self%u_start, tiny(1.0_wp))
+    text = 't = '//format_short(t)//' s, u = '//format_short(y(1))
+  end subroutine system_progress
+
+  ! ------------------------------------------------------------ samples
 
   !> Room for n samples in every array of the series, the recorded ones kept
   !> and the new room zero (first call: allocates). Every array of
@@ -396,9 +591,10 @@ contains
     call resize(s%friction_work, n); call resize(s%correction_work, n); call resize(s%left_edge, 2, n)
     call resize(s%right_edge, 2, n); call resize(s%left_point, 3, n); call resize(s%right_point, 3, n)
     call resize(s%edge_solved, n); call resize(s%acceleration, 3, n); call resize(s%speed_rate, n)
-    call resize(s%height_rate, n); call resize(s%width_rate, n); call resize(s%x_m, 3, n)
-    call resize(s%z_m, 3, n); call resize(s%x_m_rate, 3, n); call resize(s%z_m_rate, 3, n)
-    call resize(s%centerline_speed, n); call resize(s%left_edge_rate, 2, n); call resize(s%right_edge_rate, 2, n)
+    call resize(s%height_rate, n); call resize(s%width_rate, n); call resize(s%udd, n); call resize(s%vdd, n)
+    call resize(s%x_m, 3, n); call resize(s%z_m, 3, n); call resize(s%x_m_rate, 3, n)
+    call resize(s%z_m_rate, 3, n); call resize(s%centerline_speed, n); call resize(s%left_edge_rate, 2, n)
+    call resize(s%right_edge_rate, 2, n)
   end subroutine allocate_series
 
   !> x(:n) (or x(:, :n)), the first entries kept, new ones zero.
@@ -438,20 +634,20 @@ contains
     call allocate_series(s, 2*size(s%time))
   end subroutine grow_series
 
-  subroutine record(model, t, y, s, with_edges, status)
+  !> Appends the sample (t, y) with the water point q (from water_point at y).
+  subroutine record(model, t, y, q, s, with_edges, status)
     type(streamline_t), intent(in) :: model
     real(wp), intent(in) :: t, y(:)
+    type(water_point_t), intent(in) :: q
     type(water_series_t), intent(inout) :: s
     logical, intent(in) :: with_edges
     type(status_t), intent(inout) :: status
-    type(water_point_t) :: q
     type(water_rates_t) :: rates
     type(status_t) :: st
     integer :: i
     real(wp) :: lam, here(2), guess_l(2), guess_r(2)
     st%code = 0
-    call water_point(model, y, q, st)
-    if (st%ok()) call water_point_rates(model, y, q, rates, st)
+    call water_point_rates(model, y, q, rates, st)
     if (.not. st%ok()) then
       if (status%ok()) status = st
       return
@@ -485,51 +681,52 @@ contains
     s%potential(i) = -model%mass*dot_product(model%gravity, q%position)
     s%acceleration(:, i) = q%acceleration
     s%speed_rate(i) = q%speed_rate; s%height_rate(i) = q%height_rate; s%width_rate(i) = rates%width
+    s%udd(i) = q%udd; s%vdd(i) = q%vdd
     s%x_m(:, i) = q%x_m; s%z_m(:, i) = q%z_m
     s%x_m_rate(:, i) = rates%x_m; s%z_m_rate(:, i) = rates%z_m
     s%centerline_speed(i) = q%centerline_speed
-    if (with_edges) then
-      if (i >= 2) then
-        if (s%edge_solved(i - 1) == 1) then
-          ! warm start: the previous output's edges, moved with the streamline
-          ! (offsets extrapolated linearly in time from the two last outputs)
-          lam = 0
-          if (i >= 3) then
-            if (s%edge_solved(i - 2) == 1 .and. s%time(i - 1) > s%time(i - 2)) &
-              lam = (t - s%time(i - 1))/(s%time(i - 1) - s%time(i - 2))
-          end if
-          here = [y(1), y(2)]
-          guess_l = here + offset(s%left_edge, i - 1) + lam*(offset(s%left_edge, i - 1) - offset(s%left_edge, i - 2))
-          guess_r = here + offset(s%right_edge, i - 1) + lam*(offset(s%right_edge, i - 1) - &
-                                                             offset(s%right_edge, i - 2))
-          call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
-                           s%right_point(:, i), st, guess_l, guess_r, rates=rates, &
-                           left_rate=s%left_edge_rate(:, i), right_rate=s%right_edge_rate(:, i))
-        else
-          call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
-                           s%right_point(:, i), st, rates=rates, &
-                           left_rate=s%left_edge_rate(:, i), right_rate=s%right_edge_rate(:, i))
+    if (.not. with_edges) return
+    if (i >= 2) then
+      if (s%edge_solved(i - 1) == 1) then
+        ! warm start: the previous output's edges, moved with the streamline
+        ! (offsets extrapolated linearly in time from the two last outputs)
+        lam = 0
+        if (i >= 3) then
+          if (s%edge_solved(i - 2) == 1 .and. s%time(i - 1) > s%time(i - 2)) &
+            lam = (t - s%time(i - 1))/(s%time(i - 1) - s%time(i - 2))
         end if
+        here = [y(1), y(2)]
+        guess_l = here + offset(s%left_edge, i - 1) + lam*(offset(s%left_edge, i - 1) - offset(s%left_edge, i - 2))
+        guess_r = here + offset(s%right_edge, i - 1) + lam*(offset(s%right_edge, i - 1) - &
+                                                           offset(s%right_edge, i - 2))
+        call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
+                         s%right_point(:, i), st, guess_l, guess_r, rates=rates, &
+                         left_rate=s%left_edge_rate(:, i), right_rate=s%right_edge_rate(:, i))
       else
         call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
                          s%right_point(:, i), st, rates=rates, &
                          left_rate=s%left_edge_rate(:, i), right_rate=s%right_edge_rate(:, i))
       end if
-      s%edge_solved(i) = merge(1, 0, st%ok())
-      if (.not. st%ok()) then
-        ! Near the ends of the slide the foot of an edge can lie beyond the
-        ! surface; keep the circle estimate v -+ (b/2)/|r_v| at the same u, flagged.
-        s%left_edge(:, i) = [y(1), y(2) + 0.5_wp*q%width/norm2(q%p%rv)]
-        s%right_edge(:, i) = [y(1), y(2) - 0.5_wp*q%width/norm2(q%p%rv)]
-        s%left_point(:, i) = q%position + 0.5_wp*q%width*q%y_w
-        s%right_point(:, i) = q%position - 0.5_wp*q%width*q%y_w
-        if (st%code == STATUS_DOMAIN) then   ! the foot is beyond the end of the slide
-          if (s%edge_beyond == 0) s%edge_beyond_from = s%arc_length(i)
-          s%edge_beyond = s%edge_beyond + 1
-        else
-          if (s%edge_failures == 0) s%edge_message = 'at t = '//format_short(t)//' s: '//st%text()
-          s%edge_failures = s%edge_failures + 1
-        end if
+    else
+      call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
+                       s%right_point(:, i), st, rates=rates, &
+                       left_rate=s%left_edge_rate(:, i), right_rate=s%right_edge_rate(:, i))
+    end if
+    s%edge_solved(i) = merge(1, 0, st%ok())
+    if (.not. st%ok()) then
+      ! Near the ends of the slide the foot of an edge can lie beyond the
+      ! surface; keep the circle estimate v -+ (b/2)/|r_v| at the same u, flagged.
+      s%left_edge(:, i) = [y(1), y(2) + 0.5_wp*q%width/norm2(q%p%rv)]
+      s%right_edge(:, i) = [y(1), y(2) - 0.5_wp*q%width/norm2(q%p%rv)]
+      s%left_point(:, i) = q%position + 0.5_wp*q%width*q%y_w
+      s%right_point(:, i) = q%position - 0.5_wp*q%width*q%y_w
+      s%left_edge_rate(:, i) = 0; s%right_edge_rate(:, i) = 0
+      if (st%code == STATUS_DOMAIN) then   ! the foot is beyond the end of the slide
+        if (s%edge_beyond == 0) s%edge_beyond_from = s%arc_length(i)
+        s%edge_beyond = s%edge_beyond + 1
+      else
+        if (s%edge_failures == 0) s%edge_message = 'at t = '//format_short(t)//' s: '//st%text()
+        s%edge_failures = s%edge_failures + 1
       end if
     end if
 
@@ -543,53 +740,6 @@ contains
       d = edge(:, max(k, 1)) - [s%u(max(k, 1)), s%v(max(k, 1))]
     end function offset
   end subroutine record
-
-  !> The water every `step` metres of centerline arc length, interpolated
-  !> linearly in u between the recorded samples (u grows monotonically).
-  subroutine water_table(s, model, step, table)
-    type(water_series_t), intent(in) :: s
-    type(streamline_t), intent(in) :: model
-    real(wp), intent(in) :: step
-    type(water_table_t), intent(out) :: table
-    integer :: n, m, j, k
-    real(wp) :: s0, s1, a, lam
-    associate (unused => model)
-    end associate
-    n = s%n
-    if (n < 2) then
-      allocate (table%arc_length(0), table%u(0), table%time(0), table%v(0), table%speed(0), &
-                table%height(0), table%width(0), table%beta(0), table%v_left(0), table%v_right(0))
-      return
-    end if
-    s0 = s%arc_length(1); s1 = s%arc_length(n)
-    m = max(int((s1 - s0)/step) + 1, 1)
-    allocate (table%arc_length(m), table%u(m), table%time(m), table%v(m), table%speed(m), &
-              table%height(m), table%width(m), table%beta(m), table%v_left(m), table%v_right(m))
-    k = 1
-    do j = 1, m
-      a = s0 + (j - 1)*step
-      do while (k < n - 1 .and. s%arc_length(k + 1) < a)
-        k = k + 1
-      end do
-      lam = (a - s%arc_length(k))/max(s%arc_length(k + 1) - s%arc_length(k), tiny(1.0_wp))
-      lam = min(max(lam, 0.0_wp), 1.0_wp)
-      table%arc_length(j) = a
-      table%u(j) = mix(s%u)
-      table%time(j) = mix(s%time)
-      table%v(j) = mix(s%v)
-      table%speed(j) = mix(s%speed)
-      table%height(j) = mix(s%height)
-      table%width(j) = mix(s%width)
-      table%beta(j) = mix(s%beta)
-      table%v_left(j) = (1 - lam)*s%left_edge(2, k) + lam*s%left_edge(2, k + 1)
-      table%v_right(j) = (1 - lam)*s%right_edge(2, k) + lam*s%right_edge(2, k + 1)
-    end do
-  contains
-    pure real(wp) function mix(x)
-      real(wp), intent(in) :: x(:)
-      mix = (1 - lam)*x(k) + lam*x(k + 1)
-    end function mix
-  end subroutine water_table
 
   !> Centerline arc length between u_a and u_b by 3-point Gauss-Legendre (exact
   !> for quintics; over the few centimetres between samples the error is far

@@ -46,7 +46,6 @@ module water_streamline
   use base_status, only: status_t, set_status, STATUS_DOMAIN, STATUS_INVALID_INPUT
   use base_vector, only: cross
   use geometry_surface, only: surface_point_t
-  use numerics_ode, only: ode_system_t
   use water_channel, only: channel_t
   use water_section, only: circle_segment, profile_water
   implicit none (type, external)
@@ -54,18 +53,18 @@ module water_streamline
   public :: streamline_t, water_point_t, water_point, velocity_from_angle
   public :: water_rates_t, water_point_rates
   public :: CORRECTION_FULL, CORRECTION_NO_RADIUS, CORRECTION_OFF
-  public :: ROOT_END, ROOT_STALL, ROOT_CRITICAL, ROOT_TURN, ROOT_LIFT, ROOT_FIRST_STATION
   public :: default_f1, default_f2, default_f3
 
   integer, parameter :: CORRECTION_FULL = 1, CORRECTION_NO_RADIUS = 2, CORRECTION_OFF = 3
-  integer, parameter :: ROOT_END = 1, ROOT_STALL = 2, ROOT_CRITICAL = 3, ROOT_TURN = 4, ROOT_LIFT = 5, &
-                        ROOT_FIRST_STATION = 6
   !> Identified friction parameters, thesis table 4.3.
   real(wp), parameter :: default_f1 = 0.0274748_wp   ! kg/m
   real(wp), parameter :: default_f2 = 0.138285_wp    ! kg
   real(wp), parameter :: default_f3 = 0.979822_wp    ! kg m
 
-  type, extends(ode_system_t) :: streamline_t
+  !> The model: the channel, the water's parameters, where the slide ends and
+  !> the report stations. Evaluated by water_point (pure); a run (water_flow)
+  !> never changes it.
+  type :: streamline_t
     class(channel_t), allocatable :: channel
     real(wp) :: mass = 1                                        ! kg (m_w)
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]  ! m/s^2
@@ -76,10 +75,6 @@ module water_streamline
     real(wp) :: min_speed = 0.05_wp           ! m/s: below it the water has stalled (root)
     real(wp) :: min_criticality = 0.02_wp     ! 1 - 1/Fr^2 below it: near critical (root)
     real(wp), allocatable :: stations(:)      ! u of report stations (roots)
-  contains
-    procedure :: rhs => streamline_rhs
-    procedure :: root_count => streamline_root_count
-    procedure :: roots => streamline_roots
   end type streamline_t
 
   !> Everything about the water at one state.
@@ -118,76 +113,6 @@ module water_streamline
   end type water_rates_t
 
 contains
-
-  integer function streamline_root_count(self) result(n)
-    class(streamline_t), intent(in) :: self
-    n = ROOT_FIRST_STATION - 1
-    if (allocated(self%stations)) n = n + size(self%stations)
-  end function streamline_root_count
-
-  !> g1 = u_end - u (end of slide), g2 = w - min_speed (stall), g3 = criticality
-  !> - min_criticality (approach to Fr = 1), g4 = cos(beta) - 0.01 (turning across
-  !> or back; R of (4.15) is singular at beta = 90 deg), g5 = N/m (lift-off: the
-  !> normal force (4.12) turns negative, the surface would have to pull the
-  !> water), then u - u_i.
-  !> Lift-off is a root, not a check at output times: N depends continuously on
-  !> the state (u, v, u', v') through r_uu, r_uv, r_vv, so its sign change is an
-  !> event in time that root finding locates to the integrator's accuracy, while
-  !> a check every output_step would stop up to one step late (centimetres of
-  !> flight computed as if on the surface) and miss a short dip between outputs.
-  subroutine streamline_roots(self, t, y, g)
-    class(streamline_t), intent(inout) :: self
-    real(wp), intent(in) :: t, y(:)
-    real(wp), intent(out) :: g(:)
-    type(water_point_t) :: wp_
-    type(status_t) :: st
-    integer :: i
-    associate (unused => t)
-    end associate
-    g(ROOT_END) = 1   ! no end given (huge u_end): a constant keeps the root search finite
-    if (self%u_end < huge(1.0_wp)/2) g(ROOT_END) = self%u_end - y(1)
-    g(ROOT_TURN) = y(3)
-    call water_point(self, y, wp_, st)
-    if (st%ok()) then
-      g(ROOT_TURN) = -dot_product(wp_%y_m, wp_%x_w) - 0.01_wp   ! cos(beta) - 0.01: turning across
-      g(ROOT_STALL) = wp_%speed - self%min_speed
-      g(ROOT_LIFT) = wp_%normal_force/self%mass    ! m/s^2
-      if (self%correction == CORRECTION_OFF) then
-        g(ROOT_CRITICAL) = 1
-      else
-        g(ROOT_CRITICAL) = wp_%criticality - self%min_criticality
-      end if
-    else
-      g(ROOT_STALL) = 1; g(ROOT_CRITICAL) = 1; g(ROOT_LIFT) = 1
-    end if
-    if (allocated(self%stations)) then
-      do i = 1, size(self%stations)
-        g(ROOT_FIRST_STATION - 1 + i) = y(1) - self%stations(i)
-      end do
-    end if
-  end subroutine streamline_roots
-
-  subroutine streamline_rhs(self, t, y, ydot, status)
-    class(streamline_t), intent(inout) :: self
-    real(wp), intent(in) :: t, y(:)
-    real(wp), intent(out) :: ydot(:)
-    type(status_t), intent(inout) :: status
-    type(water_point_t) :: q
-    associate (unused => t)
-    end associate
-    call water_point(self, y, q, status)
-    if (.not. status%ok()) then
-      ydot = 0
-      return
-    end if
-    ydot(1) = y(3)
-    ydot(2) = y(4)
-    ydot(3) = q%udd
-    ydot(4) = q%vdd
-    ydot(5) = q%height_rate
-    ydot(6) = -q%friction*q%speed
-    ydot(7) = -q%kappa*q%speed
-  end subroutine streamline_rhs
 
   !> The water at state y: the one place where the model lives.
   pure subroutine water_point(self, y, q, status)

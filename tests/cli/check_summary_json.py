@@ -69,10 +69,12 @@ def main(json_path, h5_path, printed_path):
         return not missing
 
     stats = ('steps', 'rhs_evaluations', 'cpu_time')
+    # each stage keeps its statistics in its own group (/water/statistics)
+    statistics = '/water/statistics' if '/water/statistics' in f else '/statistics'
     if scenario != 'geometry' and need(*stats):
-        close('steps', values['steps'], f['/statistics/steps'][()])
-        close('rhs_evaluations', values['rhs_evaluations'], f['/statistics/rhs_evaluations'][()])
-        close('cpu_time', values['cpu_time'], f['/statistics/cpu_time'][()])
+        close('steps', values['steps'], f[statistics + '/steps'][()])
+        close('rhs_evaluations', values['rhs_evaluations'], f[statistics + '/rhs_evaluations'][()])
+        close('cpu_time', values['cpu_time'], f[statistics + '/cpu_time'][()])
 
     if scenario == 'water':
         g = f['/water']

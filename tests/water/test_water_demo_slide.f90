@@ -10,8 +10,7 @@ program test_water_demo_slide
   use base_kinds, only: wp
   use base_status, only: status_t
   use io_input, only: input_text_t, load_input_file
-  use io_solver_config, only: solver_config_t
-  use io_water_config, only: water_config_t
+  use water_run, only: water_description_t, new_streamline
   use testing, only: check, finish_tests
   use water_streamline, only: streamline_t, CORRECTION_FULL, CORRECTION_OFF, CORRECTION_NO_RADIUS
   use water_flow, only: water_series_t, simulate_water, OUTCOME_END
@@ -70,19 +69,19 @@ contains
     integer, intent(in) :: correction
     type(water_series_t), intent(out) :: s
     type(input_text_t) :: input
-    type(solver_config_t) :: solver
-    type(water_config_t) :: config
+    type(water_description_t) :: description
     type(streamline_t), target :: model
     type(status_t) :: st
     real(wp) :: y0(7)
     call load_input_file('inputs/water/demo_slide.nml', input, st)
     call check(st%ok(), 'demo input read')
-    call build_water(input, solver, config, model, y0, st)
+    call build_water(input, description, st)
+    if (st%ok()) call new_streamline(description, model, y0, st)
     call check(st%ok(), 'demo model built: '//st%text())
     if (.not. st%ok()) return
     model%correction = correction
-    solver%options%rtol = 1e-12_wp; solver%options%atol = 1e-12_wp
-    call simulate_water(model, y0, solver%options, solver%duration, 0.01_wp, s, st, edges=.false.)
+    description%solver%ode%rtol = 1e-12_wp; description%solver%ode%atol = 1e-12_wp
+    call simulate_water(model, y0, description%solver%ode, description%solver%time_bound, 0.01_wp, s, st, edges=.false.)
     call check(st%ok() .and. s%outcome == OUTCOME_END, 'demo slide: the water reaches the end')
     ! the arc length summed sample by sample (3-point Gauss) against the whole quadrature
     call check(abs(s%arc_length(s%n) - model%channel%arc_length(s%u(s%n))) <= 1e-9_wp*s%arc_length(s%n), &

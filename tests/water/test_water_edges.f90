@@ -14,8 +14,7 @@ program test_water_edges
   use base_kinds, only: wp
   use base_status, only: status_t, STATUS_DOMAIN
   use io_input, only: input_text_t, load_input_file
-  use io_solver_config, only: solver_config_t
-  use io_water_config, only: water_config_t
+  use water_run, only: water_description_t, new_streamline
   use numerics_nonlinear, only: nonlinear_options_t, nonlinear_result_t, solve_nonlinear, check_jacobian
   use testing, only: check, finish_tests
   use water_streamline, only: streamline_t, water_point_t, water_point
@@ -25,8 +24,7 @@ program test_water_edges
   implicit none (type, external)
 
   type(input_text_t) :: input
-  type(solver_config_t) :: solver
-  type(water_config_t) :: config
+  type(water_description_t) :: description
   type(streamline_t), target :: model
   type(water_series_t) :: s
   type(status_t) :: st
@@ -40,11 +38,12 @@ program test_water_edges
   logical :: beyond_ok
 
   call load_input_file('inputs/water/demo_slide.nml', input, st)
-  if (st%ok()) call build_water(input, solver, config, model, y0, st)
+  if (st%ok()) call build_water(input, description, st)
+    if (st%ok()) call new_streamline(description, model, y0, st)
   call check(st%ok(), 'demo slide built: '//st%text())
   if (.not. st%ok()) call finish_tests('test_water_edges')
-  solver%options%rtol = 1e-10_wp; solver%options%atol = 1e-9_wp
-  call simulate_water(model, y0, solver%options, solver%duration, 0.005_wp, s, st, edges=.true.)
+  description%solver%ode%rtol = 1e-10_wp; description%solver%ode%atol = 1e-9_wp
+  call simulate_water(model, y0, description%solver%ode, description%solver%time_bound, 0.005_wp, s, st, edges=.true.)
   call check(st%ok() .and. s%outcome == OUTCOME_END, 'the water reaches the end')
   call check(s%edge_failures == 0, 'no edge solve failed')
   call model%channel%u_range(u_min, u_max)

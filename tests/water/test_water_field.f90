@@ -20,8 +20,7 @@ program test_water_field
   use geometry_cross_section, only: flume_section_t
   use geometry_tube, only: tube_surface_t, new_tube_surface
   use io_input, only: input_text_t, load_input_file
-  use io_solver_config, only: solver_config_t
-  use io_water_config, only: water_config_t
+  use water_run, only: water_description_t, new_streamline
   use numerics_ode, only: ode_options_t
   use testing, only: check, finish_tests
   use geometry_tube, only: new_s_bend_tube
@@ -97,11 +96,11 @@ contains
     type(streamline_t), intent(out) :: model
     real(wp), intent(out) :: y0(7)
     type(input_text_t) :: input
-    type(solver_config_t) :: solver
-    type(water_config_t) :: config
+    type(water_description_t) :: description
     type(status_t) :: st
     call load_input_file('inputs/water/demo_slide.nml', input, st)
-    if (st%ok()) call build_water(input, solver, config, model, y0, st)
+    if (st%ok()) call build_water(input, description, st)
+    if (st%ok()) call new_streamline(description, model, y0, st)
     call check(st%ok(), 'demo slide built: '//st%text())
     if (.not. st%ok()) call finish_tests('test_water_field')
   end subroutine make_demo

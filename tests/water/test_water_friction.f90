@@ -73,8 +73,7 @@ program test_water_friction
   use base_status, only: status_t
   use geometry_surface, only: surface_point_t
   use io_input, only: input_text_t, load_input_file
-  use io_solver_config, only: solver_config_t
-  use io_water_config, only: water_config_t
+  use water_run, only: water_description_t, new_streamline
   use numerics_ode, only: ode_options_t
   use testing, only: check, finish_tests
   use geometry_tube, only: new_s_bend_tube
@@ -145,8 +144,7 @@ contains
 
   subroutine demo_slide()
     type(input_text_t) :: input
-    type(solver_config_t) :: solver
-    type(water_config_t) :: config
+    type(water_description_t) :: description
     type(streamline_t), target :: model
     type(water_series_t) :: s
     type(status_t) :: st
@@ -157,11 +155,12 @@ contains
     call load_input_file('inputs/water/demo_slide.nml', input, st)
     call check(st%ok(), 'demo input read (run from the repository root)')
     if (.not. st%ok()) return
-    call build_water(input, solver, config, model, y0, st)
+    call build_water(input, description, st)
+    if (st%ok()) call new_streamline(description, model, y0, st)
     call check(st%ok(), 'demo model built: '//st%text())
     if (.not. st%ok()) return
-    solver%options%rtol = 1e-12_wp; solver%options%atol = 1e-12_wp
-    call simulate_water(model, y0, solver%options, solver%duration, 0.0025_wp, s, st, edges=.false.)
+    description%solver%ode%rtol = 1e-12_wp; description%solver%ode%atol = 1e-12_wp
+    call simulate_water(model, y0, description%solver%ode, description%solver%time_bound, 0.0025_wp, s, st, edges=.false.)
     call check(st%ok() .and. s%outcome == OUTCOME_END, 'demo slide: the water reaches the end')
     associate (tc => model%channel)
       n_pos = 0; n_neg = 0; worst = 0; est_max = 0; f3_share = 0

@@ -183,25 +183,26 @@ contains
   subroutine radius_rate()
     type(streamline_t), target :: model
     type(water_start_t) :: start
-    type(ode_integrator_t) :: integ
+    type(water_series_t) :: s
     type(ode_options_t) :: opt
     type(status_t) :: st
     type(water_point_t) :: q, qp, qm
-    real(wp) :: y0(7), y(7), yp(7), ym(7), t, dt, fd, worst
-    integer :: k
+    real(wp) :: y0(7), y(7), yp(7), ym(7), dt, fd, worst
+    integer :: k, i
 
     call make(model, CORRECTION_FULL)
     model%flow_rate = 0.004_wp
     start%mode = START_SPEED; start%speed = 2; start%v0 = pi/2; start%beta = 0.2_wp
     call water_initial_state(model, start, y0, st)
     opt%rtol = 1e-12_wp; opt%atol = 1e-13_wp
-    call integ%start(model, 0.0_wp, y0, opt, st)
     dt = 1e-4_wp
+    call simulate_water(model, y0, opt, 1.5_wp + 2*dt, dt, s, st, edges=.false.)
     worst = 0
     do k = 1, 5
-      call integ%advance(0.3_wp*k - dt, t, ym, st)
-      call integ%advance(0.3_wp*k, t, y, st)
-      call integ%advance(0.3_wp*k + dt, t, yp, st)
+      i = nint(0.3_wp*k/dt) + 1   ! the sample at t = 0.3 k s
+      y = [s%u(i), s%v(i), s%du(i), s%dv(i), s%height(i), 0.0_wp, 0.0_wp]
+      ym = [s%u(i - 1), s%v(i - 1), s%du(i - 1), s%dv(i - 1), s%height(i - 1), 0.0_wp, 0.0_wp]
+      yp = [s%u(i + 1), s%v(i + 1), s%du(i + 1), s%dv(i + 1), s%height(i + 1), 0.0_wp, 0.0_wp]
       call water_point(model, y, q, st)
       call water_point(model, yp, qp, st)
       call water_point(model, ym, qm, st)
