@@ -55,7 +55,7 @@ module kinetostatics_mechanism
   use numerics_linear_algebra, only: lu_factor, lu_solve, lu_reciprocal_condition, one_norm, cholesky_factor, &
     cholesky_solve
   use kinetostatics_state, only: element_t, element_box_t, frame_state_t, scalar_state_t
-  use kinetostatics_surface_joint, only: surface_joint_t
+  use kinetostatics_surface_joint, only: surface_joint_t, domain_edge_margin
   use kinetostatics_contact, only: contact_t, contact_state_t, contact_kinematics, NORMAL_FRAME_FORCE, &
     NORMAL_CUT_FORCE
   use kinetostatics_force_law, only: force_law_t, force_law_box_t
@@ -76,10 +76,8 @@ module kinetostatics_mechanism
     integer, allocatable :: dependents(:)     ! scalar indices of the dependent coordinates
   end type loop_t
 
-  !> A finite, non-periodic edge of a surface joint's parameter domain. The
-  !> event is placed `margin` inside it (1e-7 of the domain's extent): the
-  !> state cannot be evaluated beyond the edge, so a step ending there fails
-  !> and is shortened; a step can end between the event and the edge.
+  !> A finite, non-periodic edge of a surface joint's parameter domain; its
+  !> event is placed `margin` inside it (domain_edge_margin).
   type :: surface_edge_t
     integer :: element = 0                    ! the surface joint
     integer :: scalar = 0                     ! its u or v
@@ -438,30 +436,19 @@ contains
         call e%surface%domain(u_min, u_max, v_min, v_max)
         if (.not. e%surface%periodic_u()) then
           if (u_min > -huge(u_min)) self%edges = [self%edges, &
-            surface_edge_t(k, e%var_u, u_min, edge_margin(u_min, u_max), .false., .true.)]
+            surface_edge_t(k, e%var_u, u_min, domain_edge_margin(u_min, u_max), .false., .true.)]
           if (u_max < huge(u_max)) self%edges = [self%edges, &
-            surface_edge_t(k, e%var_u, u_max, edge_margin(u_min, u_max), .true., .true.)]
+            surface_edge_t(k, e%var_u, u_max, domain_edge_margin(u_min, u_max), .true., .true.)]
         end if
         if (.not. e%surface%periodic_v()) then
           if (v_min > -huge(v_min)) self%edges = [self%edges, &
-            surface_edge_t(k, e%var_v, v_min, edge_margin(v_min, v_max), .false., .false.)]
+            surface_edge_t(k, e%var_v, v_min, domain_edge_margin(v_min, v_max), .false., .false.)]
           if (v_max < huge(v_max)) self%edges = [self%edges, &
-            surface_edge_t(k, e%var_v, v_max, edge_margin(v_min, v_max), .true., .false.)]
+            surface_edge_t(k, e%var_v, v_max, domain_edge_margin(v_min, v_max), .true., .false.)]
         end if
       end select
     end do
   end subroutine find_edges
-
-  pure real(wp) function edge_margin(low, high)
-    real(wp), intent(in) :: low, high
-    if (low > -huge(low) .and. high < huge(high)) then
-      edge_margin = 1e-7_wp*max(high - low, 1.0_wp)
-    else if (low > -huge(low)) then
-      edge_margin = 1e-7_wp*max(abs(low), 1.0_wp)
-    else
-      edge_margin = 1e-7_wp*max(abs(high), 1.0_wp)
-    end if
-  end function edge_margin
 
   ! ------------------------------------------------------------------ passes
 

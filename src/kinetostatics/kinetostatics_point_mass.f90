@@ -7,21 +7,38 @@
 !> r_u and r_v gives u'', v''; projected on the normal n it gives the normal force
 !> N = m n.(h - g) (as thesis eq. 4.12 does for the water). Friction is tangential,
 !> so N does not depend on it and Coulomb friction stays explicit.
+!>
+!> The model runs through the integration driver (numerics_event_driver): it
+!> records its own series (point_mass_series_t) and decides at the edges of
+!> the surface's domain: an edge in u is the end of the ride (EVENT_STOP,
+!> `outcome`), an edge in v a failure (STATUS_DOMAIN). The events sit
+!> domain_edge_margin inside the edges (kinetostatics_surface_joint).
 module kinetostatics_point_mass
   use base_kinds, only: wp
   use base_text, only: format_short
   use base_vector, only: cross
   use base_status, only: status_t, set_status, STATUS_DOMAIN, STATUS_INVALID_INPUT
-  use numerics_ode, only: ode_system_t
+  use numerics_event_driver, only: event_system_t, EVENT_IGNORE, EVENT_STOP
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
+  use kinetostatics_surface_joint, only: domain_edge_margin
   implicit none (type, external)
   private
-  public :: point_mass_t, point_mass_state_t, FRICTION_NONE, FRICTION_VISCOUS, FRICTION_COULOMB
+  public :: point_mass_t, point_mass_state_t, point_mass_series_t, FRICTION_NONE, FRICTION_VISCOUS, &
+    FRICTION_COULOMB
 
   integer, parameter :: FRICTION_NONE = 0, FRICTION_VISCOUS = 1, FRICTION_COULOMB = 2
 
-  type, extends(ode_system_t) :: point_mass_t
+  !> Time series of a run: one entry per record (start, outputs, events).
+  type :: point_mass_series_t
+    integer :: n = 0
+    real(wp), allocatable :: time(:), u(:), v(:), du(:), dv(:), speed(:), normal_force(:), &
+      kinetic(:), potential(:), friction_work(:)
+    real(wp), allocatable :: position(:, :), velocity(:, :), acceleration(:, :), friction_force(:, :)
+    real(wp), allocatable :: frame(:, :, :)
+  end type point_mass_series_t
+
+  type, extends(event_system_t) :: point_mass_t
     class(surface_t), allocatable :: surface
     real(wp) :: mass = 1                 ! kg
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -9.80665_wp]   ! m/s^2
@@ -32,11 +49,16 @@ module kinetostatics_point_mass
     !> within (v_eps/|w|)^2/2 relative of the exact law while the mass slides.
     real(wp) :: regularization_speed = 1e-9_wp   ! m/s
     real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0   ! Darboux frame parameters (3.38, 3.41)
+    type(point_mass_series_t) :: series
+    character(len=:), allocatable :: outcome   ! why the run ended, set by the stopping event
   contains
     procedure :: rhs => point_mass_rhs
     procedure :: root_count => point_mass_root_count
     procedure :: roots => point_mass_roots
     procedure :: state => point_mass_state
+    procedure :: start_series => point_mass_start_series
+    procedure :: record => point_mass_record
+    procedure :: handle_event => point_mass_handle_event
   end type point_mass_t
 
   !> Everything a user wants to see at one instant.
@@ -137,8 +159,8 @@ contains
   end subroutine point_mass_rhs
 
   !> Four root functions: the distances to the edges u_min, u_max, v_min, v_max
-  !> of the parameter domain (1 where a direction is periodic or unbounded), so a
-  !> run stops exactly where the mass reaches an edge.
+  !> of the parameter domain less domain_edge_margin (1 where a direction is
+  !> periodic or unbounded), so a run stops where the mass reaches an edge.
   integer function point_mass_root_count(self) result(n)
     class(point_mass_t), intent(in) :: self
     associate (unused => self)
@@ -156,14 +178,105 @@ contains
     call self%surface%domain(u_min, u_max, v_min, v_max)
     g = 1
     if (.not. self%surface%periodic_u()) then
-      if (u_min > -huge(u_min)) g(1) = y(1) - u_min
-      if (u_max < huge(u_max)) g(2) = u_max - y(1)
+      if (u_min > -huge(u_min)) g(1) = y(1) - u_min - domain_edge_margin(u_min, u_max)
+      if (u_max < huge(u_max)) g(2) = u_max - domain_edge_margin(u_min, u_max) - y(1)
     end if
     if (.not. self%surface%periodic_v()) then
-      if (v_min > -huge(v_min)) g(3) = y(2) - v_min
-      if (v_max < huge(v_max)) g(4) = v_max - y(2)
+      if (v_min > -huge(v_min)) g(3) = y(2) - v_min - domain_edge_margin(v_min, v_max)
+      if (v_max < huge(v_max)) g(4) = v_max - domain_edge_margin(v_min, v_max) - y(2)
     end if
   end subroutine point_mass_roots
+
+  !> An edge in u ends the ride (the end of a slide, or back at its start);
+  !> an edge in v is a failure.
+  subroutine point_mass_handle_event(self, t, y, fired, action, status)
+    class(point_mass_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    real(wp), intent(inout) :: y(:)
+    integer, intent(in) :: fired(:)
+    integer, intent(out) :: action
+    type(status_t), intent(inout) :: status
+    action = EVENT_IGNORE
+    if (any(fired(3:4) == -1)) then
+      call set_status(status, STATUS_DOMAIN, 'the mass reached the edge of the surface''s parameter domain '// &
+                      'at (u, v) = ('//format_short(y(1))//', '//format_short(y(2))//')')
+    else if (any(fired(1:2) == -1)) then
+      action = EVENT_STOP
+      self%outcome = 'reached the end of the surface at u = '//format_short(y(1))//' (t = '//format_short(t)//' s)'
+    end if
+  end subroutine point_mass_handle_event
+
+  !> Empty series with room for `capacity` records (it grows when needed).
+  subroutine point_mass_start_series(self, capacity)
+    class(point_mass_t), intent(inout) :: self
+    integer, intent(in) :: capacity
+    call allocate_series(self%series, max(capacity, 2))
+    self%outcome = ''
+  end subroutine point_mass_start_series
+
+  subroutine allocate_series(s, n)
+    type(point_mass_series_t), intent(inout) :: s
+    integer, intent(in) :: n
+    allocate (s%time(n), s%u(n), s%v(n), s%du(n), s%dv(n), s%speed(n), s%normal_force(n), &
+              s%kinetic(n), s%potential(n), s%friction_work(n))
+    allocate (s%position(3, n), s%velocity(3, n), s%acceleration(3, n), s%friction_force(3, n))
+    allocate (s%frame(3, 3, n))
+  end subroutine allocate_series
+
+  !> Twice the room, the records so far kept.
+  subroutine grow(s)
+    type(point_mass_series_t), intent(inout) :: s
+    type(point_mass_series_t) :: old
+    integer :: n
+    n = s%n
+    call move_alloc(s%time, old%time); call move_alloc(s%u, old%u); call move_alloc(s%v, old%v)
+    call move_alloc(s%du, old%du); call move_alloc(s%dv, old%dv); call move_alloc(s%speed, old%speed)
+    call move_alloc(s%normal_force, old%normal_force); call move_alloc(s%kinetic, old%kinetic)
+    call move_alloc(s%potential, old%potential); call move_alloc(s%friction_work, old%friction_work)
+    call move_alloc(s%position, old%position); call move_alloc(s%velocity, old%velocity)
+    call move_alloc(s%acceleration, old%acceleration); call move_alloc(s%friction_force, old%friction_force)
+    call move_alloc(s%frame, old%frame)
+    call allocate_series(s, 2*size(old%time))
+    s%time(:n) = old%time(:n); s%u(:n) = old%u(:n); s%v(:n) = old%v(:n)
+    s%du(:n) = old%du(:n); s%dv(:n) = old%dv(:n); s%speed(:n) = old%speed(:n)
+    s%normal_force(:n) = old%normal_force(:n); s%kinetic(:n) = old%kinetic(:n)
+    s%potential(:n) = old%potential(:n); s%friction_work(:n) = old%friction_work(:n)
+    s%position(:, :n) = old%position(:, :n); s%velocity(:, :n) = old%velocity(:, :n)
+    s%acceleration(:, :n) = old%acceleration(:, :n); s%friction_force(:, :n) = old%friction_force(:, :n)
+    s%frame(:, :, :n) = old%frame(:, :, :n)
+  end subroutine grow
+
+  !> Appends the state at (t, y) to the series (whatever the record kind).
+  subroutine point_mass_record(self, t, y, kind, status)
+    class(point_mass_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    integer, intent(in) :: kind
+    type(status_t), intent(inout) :: status
+    type(point_mass_state_t) :: state
+    integer :: i
+    associate (unused => kind)
+    end associate
+    call self%state(y, state, status)
+    if (.not. status%ok()) return
+    if (.not. allocated(self%series%time)) call self%start_series(100)
+    if (self%series%n >= size(self%series%time)) call grow(self%series)
+    associate (s => self%series)
+      s%n = s%n + 1
+      i = s%n
+      s%time(i) = t
+      s%u(i) = y(1); s%v(i) = y(2); s%du(i) = y(3); s%dv(i) = y(4)
+      s%friction_work(i) = y(5)
+      s%position(:, i) = state%position
+      s%velocity(:, i) = state%velocity
+      s%acceleration(:, i) = state%acceleration
+      s%speed(i) = state%speed
+      s%normal_force(i) = state%normal_force
+      s%friction_force(:, i) = state%friction_force
+      s%kinetic(i) = state%kinetic_energy
+      s%potential(i) = state%potential_energy
+      s%frame(:, :, i) = state%frame
+    end associate
+  end subroutine point_mass_record
 
   subroutine point_mass_state(self, y, state, status)
     class(point_mass_t), intent(in) :: self

@@ -36,7 +36,7 @@ module kinetostatics_surface_joint
   use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
   implicit none (type, external)
   private
-  public :: surface_joint_t, new_surface_joint
+  public :: surface_joint_t, new_surface_joint, domain_edge_margin
 
   type, extends(element_t) :: surface_joint_t
     class(surface_t), allocatable :: surface
@@ -59,6 +59,23 @@ module kinetostatics_surface_joint
   end type surface_joint_t
 
 contains
+
+  !> How far inside an edge [low, high] of a parameter domain (a bound may be
+  !> +-huge) a run's event at that edge is placed: 1e-7 of the domain's
+  !> extent (of the finite bound's size, at least 1, when the other is
+  !> infinite). The surface cannot be evaluated beyond the edge, so an
+  !> integrator step ending there fails and is shortened; the event must lie
+  !> where a step can still end beyond it.
+  pure real(wp) function domain_edge_margin(low, high) result(margin)
+    real(wp), intent(in) :: low, high
+    if (low > -huge(low) .and. high < huge(high)) then
+      margin = 1e-7_wp*max(high - low, 1.0_wp)
+    else if (low > -huge(low)) then
+      margin = 1e-7_wp*max(abs(low), 1.0_wp)
+    else
+      margin = 1e-7_wp*max(abs(high), 1.0_wp)
+    end if
+  end function domain_edge_margin
 
   function new_surface_joint(name, frame_in, frame_out, var_u, var_v, surface, sigma, alpha_u, alpha_v) &
       result(e)

@@ -20,7 +20,7 @@ for name in pole steps; do
   [ -f "$work/$name.h5" ] || { fail "$name: no result file kept"; continue; }
   [ ! -f "$work/$name.h5.tmp" ] || fail "$name: temporary file left"
   h5dump -a /status "$work/$name.h5" | grep -q '"incomplete"' || fail "$name: file not marked incomplete"
-  h5dump -a /status_message "$work/$name.h5" | grep -q 'stopped at' || fail "$name: status_message lacks the reason"
+  h5dump -a /status_message "$work/$name.h5" | grep -qE 'stopped at|at t = ' || fail "$name: status_message lacks the reason"
   n=$(h5dump -H -d /point_mass/time "$work/$name.h5" | grep -o 'DATASPACE  SIMPLE { ( [0-9]*' | head -1 | grep -o '[0-9]*$')
   [ "${n:-0}" -ge 1 ] || fail "$name: no time samples kept"
 done
