@@ -214,10 +214,8 @@ contains
     real(wp), intent(in) :: t, y(:)
     real(wp), intent(out) :: ydot(:)
     type(status_t), intent(inout) :: status
-    associate (unused => t)
-    end associate
     ydot(1:2) = y(3:4)
-    call self%mechanism%dynamics(y(1:2), y(3:4), ydot(3:4), status)
+    call self%mechanism%dynamics(t, y(1:2), y(3:4), ydot(3:4), status)
   end subroutine cuboid_rhs
 
   integer function cuboid_root_count(self) result(n)
@@ -247,7 +245,7 @@ contains
     real(wp) :: residual, a, lever, pressing, rho(3), ac(3), f(3), m(3), theta(3, 3), rot(3, 3)
     associate (unused => kind)
     end associate
-    call self%mechanism%evaluate(y(1:2), y(3:4), residual, status)
+    call self%mechanism%evaluate(t, y(1:2), y(3:4), residual, status)
     if (.not. status%ok()) return
     associate (fr => self%mechanism%frames(self%frame), b => self%body)
       rot = fr%rot
