@@ -9,6 +9,7 @@ program slidesim
   use scenarios_registry, only: run_input_file, run_default, print_scenarios, slidesim_version, &
                                 default_input
   use io_run_config, only: run_config_t
+  use io_system, only: ignore_file_size_signal
   implicit none (type, external)
 
   type(status_t) :: status
@@ -17,6 +18,8 @@ program slidesim
   character(len=:), allocatable :: input_path, output_path
   integer :: i, n
 
+  ! a write beyond the file-size limit then fails and is reported (exit 3)
+  call ignore_file_size_signal()
   n = command_argument_count()
   i = 0
   do while (i < n)

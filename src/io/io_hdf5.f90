@@ -1,9 +1,16 @@
 !> HDF5 result files, written the way h5py, xarray and ParaView users expect
 !> (the layout and its version: docs/outputs.md).
 !>
-!> Life cycle: `create` opens `<path>.tmp`; `finish` marks the root attribute
-!> `status` complete or incomplete, closes and renames to `<path>`, so a file
-!> with the final name is always a finished one.
+!> Life cycle: `create` opens a new temporary file `<path>.<pid>.XXXXXX.tmp`
+!> (a unique name in the result's folder: two runs on one path never share
+!> it); `finish` marks the root attribute `status` complete or incomplete,
+!> closes and renames it to `<path>` in one step, so a file with the final
+!> name is always a finished one. A run killed on the way leaves only its
+!> temporary file. When a write fails (a full disk, the file-size limit) the
+!> temporary file is deleted and nothing is kept (STATUS_IO). Numbers that
+!> are not finite (NaN, Inf) are written but make `finish` mark the file
+!> incomplete, naming the first such dataset (STATUS_DOMAIN): no file marked
+!> complete holds one.
 !>
 !> Conventions every writer here keeps, so no caller has to:
 !> - strings (attributes and text datasets) are scalar variable-length UTF-8,
@@ -20,8 +27,9 @@
 !> - `write_provenance` writes what made the file (version, git commit,
 !>   compiler and flags, UTC time, host, the input text and its SHA-256).
 module io_hdf5
-  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_loc
-  use hdf5, only: hid_t, hsize_t, h5open_f, h5fcreate_f, h5fclose_f, H5F_ACC_TRUNC_F, &
+  use, intrinsic :: iso_c_binding, only: c_char, c_null_char, c_ptr, c_loc
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use hdf5, only: hid_t, hsize_t, h5open_f, h5dont_atexit_f, h5fcreate_f, h5fclose_f, H5F_ACC_TRUNC_F, &
                   h5gcreate_f, h5gclose_f, h5lexists_f, h5eset_auto_f, h5oopen_f, h5oclose_f, &
                   h5screate_f, h5screate_simple_f, h5sclose_f, H5S_SCALAR_F, &
                   h5tcopy_f, h5tset_size_f, h5tset_cset_f, h5tclose_f, H5T_STRING, H5T_CSET_UTF8_F, &
@@ -30,14 +38,15 @@ module io_hdf5
                   h5dcreate_f, h5dwrite_f, h5dclose_f, h5dopen_f
   use h5ds, only: h5dsset_scale_f, h5dsattach_scale_f
   use base_kinds, only: wp
-  use base_status, only: status_t, set_status, STATUS_IO
+  use base_status, only: status_t, set_status, STATUS_IO, STATUS_DOMAIN
   use base_sha256, only: sha256_hex
   use base_version, only: slidesim_version, slidesim_compiler, slidesim_compiler_options
   use base_build_commit, only: slidesim_git_commit
   use io_provenance, only: utc_timestamp, host_name
+  use io_system, only: create_unique_file, remove_file, rename_file, system_error_text, process_id
   implicit none (type, external)
   private
-  public :: result_file_t, result_layout_version, units_per_second
+  public :: result_file_t, result_layout_version, units_per_second, run_outcome
 
   !> Version of the layout in docs/outputs.md: raised when an existing name,
   !> shape or unit changes; new groups and datasets do not raise it.
@@ -58,6 +67,8 @@ module io_hdf5
     character(len=:), allocatable :: path, temporary_path
     type(written_t), allocatable :: written(:)
     integer :: n_written = 0
+    logical :: write_failed = .false.              !< a write failed: the file is not kept
+    character(len=:), allocatable :: nonfinite     !< the first dataset with NaN or Inf ('' none)
   contains
     procedure :: create => result_file_create
     procedure :: write_provenance => result_file_write_provenance
@@ -78,30 +89,35 @@ module io_hdf5
     procedure :: finish => result_file_finish
     procedure :: is_open => result_file_is_open
     procedure :: final_path => result_file_final_path
+    procedure :: temporary_name => result_file_temporary_name
   end type result_file_t
 
-  interface
-    function c_rename(old, new) bind(C, name='rename') result(rc)
-      import :: c_char, c_int
-      character(kind=c_char), intent(in) :: old(*), new(*)
-      integer(c_int) :: rc
-    end function c_rename
-  end interface
 
 contains
 
-  !> Opens `path`.tmp for writing; fails at once if the folder is not writable.
+  !> Opens a new temporary file next to `path` for writing; fails at once if
+  !> the folder is not writable.
   subroutine result_file_create(self, path, status)
     class(result_file_t), intent(inout) :: self
     character(len=*), intent(in) :: path
     type(status_t), intent(inout) :: status
     integer :: hdferr
+    character(len=:), allocatable :: error
 
     self%path = trim(path)
-    self%temporary_path = self%path//'.tmp'
     self%n_written = 0
+    self%write_failed = .false.
+    self%nonfinite = ''
+    call create_unique_file(self%path//'.'//format_pid(process_id()), '.tmp', self%temporary_path, error)
+    if (len(self%temporary_path) == 0) then
+      call set_status(status, STATUS_IO, 'cannot create a file next to the result file "'//self%path// &
+                      '": '//error//' (does its folder exist, and is it writable?)')
+      return
+    end if
+    call h5dont_atexit_f(hdferr)   ! fails harmlessly once the library is running
     call h5open_f(hdferr)
     if (hdferr /= 0) then
+      call remove_file(self%temporary_path)
       call set_status(status, STATUS_IO, 'cannot initialise the HDF5 library')
       return
     end if
@@ -109,6 +125,7 @@ contains
     call h5fcreate_f(self%temporary_path, H5F_ACC_TRUNC_F, self%file_id, hdferr)
     if (hdferr /= 0) then
       self%file_id = -1
+      call remove_file(self%temporary_path)
       call set_status(status, STATUS_IO, 'cannot create the result file "'//self%temporary_path// &
                       '" (does its folder exist, and is it writable?)')
       return
@@ -121,11 +138,21 @@ contains
     result_file_is_open = self%file_id >= 0
   end function result_file_is_open
 
+  !> The result file's name, or what happened to it if it was not kept.
   function result_file_final_path(self) result(path)
     class(result_file_t), intent(in) :: self
     character(len=:), allocatable :: path
     path = self%path
+    if (self%write_failed) path = 'none: '//self%path//' could not be written'
   end function result_file_final_path
+
+  !> The temporary file written while the file is open ('' before create).
+  function result_file_temporary_name(self) result(path)
+    class(result_file_t), intent(in) :: self
+    character(len=:), allocatable :: path
+    path = ''
+    if (allocated(self%temporary_path)) path = self%temporary_path
+  end function result_file_temporary_name
 
   !> The root attributes saying what made the file, and the input: scenario,
   !> title, layout_version, slidesim_version, git_commit, compiler,
@@ -186,17 +213,20 @@ contains
 
   !> The one dataset writer: `shape` in Fortran order (size 0: a scalar),
   !> `buffer` the values in memory type `type_id`; then units and description.
-  subroutine write_dataset(self, name, type_id, shape, buffer, units, description, status)
+  !> `finite` = .false.: the values hold NaN or Inf (see finish).
+  subroutine write_dataset(self, name, type_id, shape, buffer, units, description, status, finite)
     class(result_file_t), intent(inout) :: self
     character(len=*), intent(in) :: name, units, description
     integer(hid_t), intent(in) :: type_id
     integer(hsize_t), intent(in) :: shape(:)
     type(c_ptr), intent(in) :: buffer
     type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: finite
     integer(hid_t) :: space_id, dataset_id
     integer :: hdferr, err
 
     if (.not. status%ok() .or. self%file_id < 0) return
+    if (present(finite)) call note_finite(self, name, finite)
     call ensure_groups(self%file_id, name, hdferr)
     if (hdferr == 0) then
       if (size(shape) == 0) then
@@ -216,12 +246,34 @@ contains
     if (hdferr == 0) call write_string_attribute(self%file_id, name, 'units', units, hdferr)
     if (hdferr == 0) call write_string_attribute(self%file_id, name, 'description', description, hdferr)
     if (hdferr /= 0) then
-      call set_status(status, STATUS_IO, 'cannot write dataset "'//name//'" to "'//self%temporary_path//'"')
+      call write_failure(self, 'dataset "'//name//'"', status)
       return
     end if
     call remember(self, name, shape)
     self%written(self%n_written)%is_real = type_id == H5T_NATIVE_DOUBLE
   end subroutine write_dataset
+
+  !> Remembers the first dataset or attribute that is not finite.
+  subroutine note_finite(self, name, finite)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: name
+    logical, intent(in) :: finite
+    if (.not. finite .and. len(self%nonfinite) == 0) self%nonfinite = name
+  end subroutine note_finite
+
+  !> A write failed (a full disk, the file-size limit, an I/O error): the
+  !> file will not be kept; the message says what and why.
+  subroutine write_failure(self, what, status)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: what
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: why
+    self%write_failed = .true.
+    why = system_error_text()
+    if (len(why) > 0) why = ': '//why
+    call set_status(status, STATUS_IO, 'cannot write '//what//' to the result file "'//self%temporary_path// &
+                    '"'//why//' (is the disk full?); nothing is kept')
+  end subroutine write_failure
 
   subroutine remember(self, name, shape)
     class(result_file_t), intent(inout) :: self
@@ -244,7 +296,7 @@ contains
     real(wp), intent(in), target, contiguous :: values(:)
     type(status_t), intent(inout) :: status
     call write_dataset(self, name, H5T_NATIVE_DOUBLE, shape(values, kind=hsize_t), c_loc(values), units, &
-                       description, status)
+                       description, status, finite=all(ieee_is_finite(values)))
   end subroutine result_file_write_vector
 
   !> A matrix as stored in Fortran: values(3, n) is read by h5py as shape (n, 3).
@@ -254,7 +306,7 @@ contains
     real(wp), intent(in), target, contiguous :: values(:, :)
     type(status_t), intent(inout) :: status
     call write_dataset(self, name, H5T_NATIVE_DOUBLE, shape(values, kind=hsize_t), c_loc(values), units, &
-                       description, status)
+                       description, status, finite=all(ieee_is_finite(values)))
   end subroutine result_file_write_matrix
 
   subroutine result_file_write_array3(self, name, values, units, description, status)
@@ -263,7 +315,7 @@ contains
     real(wp), intent(in), target, contiguous :: values(:, :, :)
     type(status_t), intent(inout) :: status
     call write_dataset(self, name, H5T_NATIVE_DOUBLE, shape(values, kind=hsize_t), c_loc(values), units, &
-                       description, status)
+                       description, status, finite=all(ieee_is_finite(values)))
   end subroutine result_file_write_array3
 
   subroutine result_file_write_integers(self, name, values, units, description, status)
@@ -284,7 +336,8 @@ contains
     real(wp), target :: copy
     integer(hsize_t) :: no_shape(0)
     copy = value
-    call write_dataset(self, name, H5T_NATIVE_DOUBLE, no_shape, c_loc(copy), units, description, status)
+    call write_dataset(self, name, H5T_NATIVE_DOUBLE, no_shape, c_loc(copy), units, description, status, &
+                       finite=ieee_is_finite(value))
   end subroutine result_file_write_scalar
 
   !> An integer scalar dataset (h5py shape ()), e.g. a count of steps.
@@ -314,7 +367,7 @@ contains
     pointers(1) = c_loc(buffer)
     call utf8_string_type(type_id, hdferr)
     if (hdferr /= 0) then
-      call set_status(status, STATUS_IO, 'cannot write dataset "'//name//'" to "'//self%temporary_path//'"')
+      call write_failure(self, 'dataset "'//name//'"', status)
       return
     end if
     call write_dataset(self, name, type_id, no_shape, c_loc(pointers), '', description, status)
@@ -342,6 +395,7 @@ contains
     integer(hsize_t) :: no_shape(0)
     integer :: hdferr
     if (.not. status%ok() .or. self%file_id < 0) return
+    call note_finite(self, object//' attribute '//name, ieee_is_finite(value))
     copy = value
     call write_attribute(self%file_id, object, name, H5T_NATIVE_DOUBLE, no_shape, c_loc(copy), hdferr)
     call attribute_status(self, object, name, hdferr, status)
@@ -355,6 +409,7 @@ contains
     type(status_t), intent(inout) :: status
     integer :: hdferr
     if (.not. status%ok() .or. self%file_id < 0) return
+    call note_finite(self, object//' attribute '//name, all(ieee_is_finite(values)))
     call write_attribute(self%file_id, object, name, H5T_NATIVE_DOUBLE, shape(values, kind=hsize_t), &
                          c_loc(values), hdferr)
     call attribute_status(self, object, name, hdferr, status)
@@ -376,12 +431,11 @@ contains
   end subroutine set_attribute_integer
 
   subroutine attribute_status(self, object, name, hdferr, status)
-    class(result_file_t), intent(in) :: self
+    class(result_file_t), intent(inout) :: self
     character(len=*), intent(in) :: object, name
     integer, intent(in) :: hdferr
     type(status_t), intent(inout) :: status
-    if (hdferr /= 0) call set_status(status, STATUS_IO, 'cannot write attribute "'//name// &
-                                     '" of "'//object//'" in "'//self%temporary_path//'"')
+    if (hdferr /= 0) call write_failure(self, 'attribute "'//name//'" of "'//object//'"', status)
   end subroutine attribute_status
 
   !> Makes the 1-d dataset `name` a dimension scale (named after its last
@@ -526,33 +580,94 @@ contains
   end function find_written
 
   !> Marks the file complete (or incomplete, with the reason), closes it and
-  !> renames it to its final name.
-  subroutine result_file_finish(self, complete, message, status)
+  !> renames it to its final name. A file with a failed write is deleted
+  !> instead (STATUS_IO); a file asked to be complete that holds a number
+  !> that is not finite is marked incomplete (STATUS_DOMAIN naming the
+  !> dataset): `status` is then not ok.
+  subroutine result_file_finish(self, complete_asked, message, status)
     class(result_file_t), intent(inout) :: self
-    logical, intent(in) :: complete
+    logical, intent(in) :: complete_asked
     character(len=*), intent(in) :: message
     type(status_t), intent(inout) :: status
     integer :: hdferr, err
+    logical :: renamed, complete
+    character(len=:), allocatable :: text, error
 
     if (self%file_id < 0) return
+    complete = complete_asked
+    text = message
+    if (self%write_failed) then
+      call discard(self)
+      complete = .false.
+      if (status%code /= STATUS_IO) call set_status(status, STATUS_IO, 'cannot write the result file "'// &
+                                                    self%temporary_path//'"; nothing is kept')
+      return
+    end if
+    if (complete .and. len(self%nonfinite) > 0) then
+      complete = .false.
+      text = 'the results hold numbers that are not finite (NaN or Inf), first in '//self%nonfinite// &
+             '; they cannot be trusted'
+      call set_status(status, STATUS_DOMAIN, text)
+    end if
     if (complete) then
       call write_string_attribute(self%file_id, '/', 'status', 'complete', hdferr)
     else
       call write_string_attribute(self%file_id, '/', 'status', 'incomplete', hdferr)
     end if
-    call write_string_attribute(self%file_id, '/', 'status_message', message, err)
+    call write_string_attribute(self%file_id, '/', 'status_message', text, err)
     if (hdferr == 0) hdferr = err
     call h5fclose_f(self%file_id, err)
     if (hdferr == 0) hdferr = err
-    self%file_id = -1
     if (hdferr /= 0) then
-      call set_status(status, STATUS_IO, 'cannot close the result file "'//self%temporary_path//'"')
+      call write_failure(self, 'the status', status)
+      call discard(self)
+      complete = .false.
       return
     end if
-    if (c_rename(self%temporary_path//c_null_char, self%path//c_null_char) /= 0) &
-      call set_status(status, STATUS_IO, 'cannot rename "'//self%temporary_path//'" to "'// &
-                      self%path//'"')
+    self%file_id = -1
+    call rename_file(self%temporary_path, self%path, renamed, error)
+    if (.not. renamed) then
+      call remove_file(self%temporary_path)
+      complete = .false.
+      call set_status(status, STATUS_IO, 'cannot rename "'//self%temporary_path//'" to "'//self%path//'": '// &
+                      error//'; nothing is kept')
+    end if
   end subroutine result_file_finish
+
+  !> Closes what can be closed of a file that will not be kept and deletes
+  !> it. A file whose flush failed cannot be closed a second time (HDF5 1.10
+  !> crashes in H5F__close_cb), which is why create asks HDF5 not to close
+  !> files at exit (h5dont_atexit): every kept file is closed by finish.
+  subroutine discard(self)
+    class(result_file_t), intent(inout) :: self
+    integer :: err
+    if (self%file_id >= 0) call h5fclose_f(self%file_id, err)
+    self%file_id = -1
+    call remove_file(self%temporary_path)
+  end subroutine discard
+
+  !> The status a run ends with: a result file that could not be written
+  !> first (nothing was kept: exit 3), then the run's own failure (file kept
+  !> incomplete: exit 2), then a failure found while finishing the file.
+  pure function run_outcome(run_status, file_status) result(status)
+    type(status_t), intent(in) :: run_status, file_status
+    type(status_t) :: status
+    if (file_status%code == STATUS_IO) then
+      status = file_status
+    else if (.not. run_status%ok()) then
+      status = run_status
+    else
+      status = file_status
+    end if
+  end function run_outcome
+
+  pure function format_pid(pid) result(text)
+    integer, intent(in) :: pid
+    character(len=:), allocatable :: text
+    character(len=12) :: buffer
+    write (buffer, '(i0)') pid
+    text = trim(buffer)
+  end function format_pid
 
   !> The memory and file type of our strings: variable length, UTF-8.
   subroutine utf8_string_type(type_id, hdferr)

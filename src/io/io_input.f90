@@ -23,7 +23,7 @@ module io_input
   implicit none (type, external)
   private
   public :: input_text_t, load_input_file, input_from_text, stdin_name, read_text_file
-  public :: check_known_groups, group_present, lower, format_real, format_vector, invalid
+  public :: check_known_groups, group_present, lower, format_real, format_vector, invalid, where_given
   public :: check_finite, check_positive, check_nonnegative, check_range, check_choice
   public :: group_reader_t, open_group, bounds_t, in_range, above, mark_input_failure
 
@@ -493,6 +493,26 @@ contains
     character(len=*), intent(in) :: group, variable, value, allowed
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: reader
+    call unchecked_reader(input, group, reader)
+    call reader%invalid(variable, value, allowed, status)
+  end subroutine invalid
+
+  !> 'file:line' where the input assigns `variable` of `group` (or the
+  !> group's line, or the file's name), for messages made outside a reader.
+  function where_given(input, group, variable) result(where)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group, variable
+    character(len=:), allocatable :: where
+    type(group_reader_t) :: reader
+    call unchecked_reader(input, group, reader)
+    where = reader%where(variable)
+  end function where_given
+
+  !> A reader of `group` without the check of its names (for messages).
+  subroutine unchecked_reader(input, group, reader)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group
+    type(group_reader_t), intent(out) :: reader
     integer :: g
     reader%source = input%name
     reader%group = lower(group)
@@ -503,8 +523,7 @@ contains
     else
       allocate (reader%items(0))
     end if
-    call reader%invalid(variable, value, allowed, status)
-  end subroutine invalid
+  end subroutine unchecked_reader
 
   !> The values assigned to `name`, a variable of extents `dims` (none: a
   !> scalar): the flat (column-major) index of every element given, its value

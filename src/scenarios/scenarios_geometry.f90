@@ -66,6 +66,7 @@ contains
     complete = work%ok()
     message = work%text()
     call file%finish(complete, message, work)
+    complete = complete .and. work%ok()   ! finish refuses a file with NaN or Inf
     if (work%ok()) then
       call xdmf%start(file%final_path())
       call xdmf%surface(file, 'surface', '/geometry/surface')

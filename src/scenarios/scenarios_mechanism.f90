@@ -14,7 +14,7 @@ module scenarios_mechanism
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, check_output_count
   use io_mechanism_config, only: write_mechanism_series
-  use io_hdf5, only: result_file_t
+  use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t, degrees, engineering
   use io_surface_grid, only: write_surface_grid_around
   use io_xdmf, only: xdmf_t, xdmf_path
@@ -98,14 +98,11 @@ contains
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
     call file%finish(complete, message, write_status)
+    complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
     if (write_status%ok() .and. sys%series%n > 0) call write_xdmf(file, scenario, sys%series, write_status)
     call report(scenario, sys%series, result%stats, result%cpu, q_units, file%final_path(), run, complete, &
                 message, outcome, write_status)
-    if (.not. run_status%ok()) then
-      status = run_status
-    else if (.not. write_status%ok()) then
-      status = write_status
-    end if
+    if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
   end subroutine run_mechanism
 
   !> The XDMF file next to the result: the surface (sled), each body's and

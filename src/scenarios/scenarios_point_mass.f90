@@ -15,7 +15,7 @@ module scenarios_point_mass
   use io_surface_config, only: read_surface_config
   use io_geometry_config, only: geometry_groups
   use io_point_mass_config, only: point_mass_config_t, read_point_mass_config
-  use io_hdf5, only: result_file_t, units_per_second
+  use io_hdf5, only: result_file_t, run_outcome, units_per_second
   use io_summary, only: summary_t, standard_g, engineering
   use io_surface_grid, only: write_surface_grid_around
   use io_xdmf, only: xdmf_t, xdmf_path
@@ -116,15 +116,12 @@ contains
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
     call file%finish(complete, message, write_status)
+    complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
     if (write_status%ok() .and. model%series%n > 0) call write_xdmf(file, model%series%time(:model%series%n), &
                                                                     write_status)
     call report(model, model%series, result%stats, result%cpu, file%final_path(), run, complete, message, &
                 outcome, write_status)
-    if (.not. run_status%ok()) then
-      status = run_status
-    else if (.not. write_status%ok()) then
-      status = write_status
-    end if
+    if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
   end subroutine run_point_mass
 
   subroutine write_series(file, input, run, model, s, stats, cpu, status)

@@ -2,9 +2,11 @@
 !> point that reads an input, checks &run and runs the scenario it names.
 module scenarios_registry
   use, intrinsic :: iso_fortran_env, only: output_unit
-  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_IO
   use base_version, only: slidesim_version
-  use io_input, only: input_text_t, load_input_file, group_present, invalid
+  use base_text, only: format_integer
+  use io_input, only: input_text_t, load_input_file, group_present, where_given
+  use io_system, only: create_unique_file, remove_file, same_file, process_id
   use io_builtin_inputs, only: builtin_input
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
@@ -29,26 +31,40 @@ module scenarios_registry
 
 contains
 
-  !> The result file must be creatable before any work starts: its folder exists
-  !> and is writable, and the name is not a folder.
-  subroutine check_output_path(input, path, status)
+  !> The result file must be creatable before any work starts: its folder
+  !> exists and is writable (a file with a unique name is made there and
+  !> removed again: exit 3 if not), the name is not a folder (3), and it is
+  !> not the input file itself (1). `from_command_line`: the path came from -o.
+  subroutine check_output_path(input, path, from_command_line, status)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: path
+    logical, intent(in) :: from_command_line
     type(status_t), intent(inout) :: status
-    integer :: unit, ios
+    character(len=:), allocatable :: where, probe, error
     logical :: is_folder
+
+    if (from_command_line) then
+      where = '-o '//trim(path)
+    else
+      where = where_given(input, 'run', 'output')//': &run: output = '''//trim(path)//''''
+    end if
+    if (same_file(trim(path), input%name)) then
+      call set_status(status, STATUS_INVALID_INPUT, where//': the result file would overwrite the input file; '// &
+                      'name another file')
+      return
+    end if
     inquire (file=trim(path)//'/.', exist=is_folder)
     if (is_folder) then
-      call invalid(input, 'run', 'output', "'"//trim(path)//"'", 'is a folder; name a file', status)
+      call set_status(status, STATUS_IO, where//': cannot write the result file: it is a folder; name a file')
       return
     end if
-    open (newunit=unit, file=trim(path)//'.tmp', status='replace', action='write', iostat=ios)
-    if (ios /= 0) then
-      call invalid(input, 'run', 'output', "'"//trim(path)//"'", &
-                   'cannot be written (does its folder exist, and is it writable?)', status)
+    call create_unique_file(trim(path)//'.'//format_integer(process_id()), '.tmp', probe, error)
+    if (len(probe) == 0) then
+      call set_status(status, STATUS_IO, where//': cannot write the result file: '//error// &
+                      ' (does its folder exist, and is it writable?)')
       return
     end if
-    close (unit, status='delete')
+    call remove_file(probe)
   end subroutine check_output_path
 
   subroutine print_scenarios()
@@ -98,6 +114,7 @@ contains
     type(status_t), intent(inout) :: status
     type(run_config_t), intent(in), optional :: cli
     type(run_config_t) :: run
+    logical :: cli_output
 
     if (size(input%groups) == 0) then
       call set_status(status, STATUS_INVALID_INPUT, input%name//': the input is empty: it has no namelist '// &
@@ -115,10 +132,12 @@ contains
     end if
     call read_run_config(input, scenario_names, run, status)
     if (.not. status%ok()) return
+    cli_output = .false.
     if (present(cli)) then
-      if (len_trim(cli%output) > 0) run%output = cli%output
+      cli_output = len_trim(cli%output) > 0
+      if (cli_output) run%output = cli%output
     end if
-    call check_output_path(input, run%output, status)
+    call check_output_path(input, run%output, cli_output, status)
     if (.not. status%ok()) return
     select case (trim(run%scenario))
     case ('point_mass')

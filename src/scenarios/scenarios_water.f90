@@ -20,7 +20,7 @@ module scenarios_water
   use io_geometry_config, only: geometry_groups
   use io_surface_config, only: read_surface_config
   use io_water_config, only: water_config_t, read_water_config, read_channel_config
-  use io_hdf5, only: result_file_t
+  use io_hdf5, only: result_file_t, run_outcome
   use io_water_results, only: write_water_results
   use io_summary, only: summary_t, degrees
   use base_text, only: format_short, format_integer
@@ -183,13 +183,10 @@ contains
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
     call file%finish(complete, message, write_status)
+    complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
     if (write_status%ok()) call write_xdmf(file, description%edges, write_status)
     call report(description, result, file%final_path(), run, complete, message, write_status)
-    if (.not. run_status%ok()) then
-      status = run_status
-    else if (.not. write_status%ok()) then
-      status = write_status
-    end if
+    if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
   end subroutine run_water
 
   !> A run the user bounded by &solver duration that ended before the slide's end.

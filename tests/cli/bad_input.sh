@@ -56,11 +56,11 @@ printf "&run output = 'x.h5' /\n&surface kind = 'ellipsoid' /\n&point_mass v0 = 
 expect outside_domain 1 outside_domain.nml '&point_mass' 'u0, v0' 'parameter domain'
 
 printf "&run output = '%s/no/such/folder/x.h5' /\n%s\n%s\n" "$work" "$base_surface" "$base_mass" > "$work/unwritable.nml"
-expect unwritable 1 unwritable.nml '&run' 'output' 'no/such/folder/x.h5' 'cannot be written'
+expect unwritable 3 unwritable.nml:1 '&run' 'output' 'no/such/folder/x.h5' 'cannot write the result file: No such file or directory'
 
 mkdir -p "$work/a_folder"
 printf "&run output = 'a_folder' /\n%s\n%s\n" "$base_surface" "$base_mass" > "$work/folder_output.nml"
-expect folder_output 1 folder_output.nml '&run' output a_folder 'is a folder'
+expect folder_output 3 folder_output.nml:1 '&run' output a_folder 'is a folder'
 
 : > "$work/empty.nml"
 expect empty 1 empty.nml 'is empty'

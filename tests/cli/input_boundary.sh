@@ -83,6 +83,12 @@ run_case water_bounded 0
 h5dump -a /status_message "$work/water_bounded.h5" | grep -q 'its end not reached' || \
   fail "water_bounded: the status message does not say the slide's end was not reached"
 
+# builds that fail on the input are bad input (exit 1, no file), not a failed run
+printf "&run scenario = 'sled', output = 'sled_v0.h5' /\n&surface kind = 'plane' /\n&sled v0 = 1e308 /\n" > "$work/sled_v0.nml"
+run_case sled_v0 1 'sled_v0.nml:3:' '&sled' 'v0 = 1e308'
+printf "&run scenario = 'geometry', output = 'thin_helix.h5' /\n&geometry kind = 'tube' /\n&centerline kind = 'helix', radius = 0.001, turns = 1 /\n" > "$work/thin_helix.nml"
+run_case thin_helix 1 'thin_helix.nml' '&centerline with &cross_section' 'fold'
+
 # a parameter the element does not use, and a tube that passes through itself
 printf "&run scenario = 'geometry', output = 'helix_slope.h5' /\n&slide_elements n_elements = 1, kind = 'helix', radius = 2.0, turns = 2.0,\n  slope_deg = 10.0 /\n&cross_section radius = 0.5 /\n" > "$work/helix_slope.nml"
 run_case helix_slope 1 'helix_slope.nml:3:' '&slide_elements' 'slope_deg(1) = 10.0' 'a helix does not use slope_deg'

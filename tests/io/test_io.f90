@@ -2,12 +2,13 @@
 !> (temporary name, rename on finish, units attributes, status marks).
 program test_io
   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_f_pointer
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use hdf5, only: hid_t, hsize_t, h5open_f, h5fopen_f, h5fclose_f, H5F_ACC_RDONLY_F, h5aopen_by_name_f, &
                   h5aget_type_f, h5tis_variable_str_f, h5tget_cset_f, h5aread_f, h5tclose_f, h5aclose_f, &
                   H5T_CSET_UTF8_F
   use h5lt, only: h5ltread_dataset_double_f
   use base_kinds, only: wp
-  use base_status, only: status_t, STATUS_INVALID_INPUT
+  use base_status, only: status_t, STATUS_INVALID_INPUT, STATUS_IO, STATUS_DOMAIN
   use io_input, only: input_text_t, input_from_text, check_positive, check_choice, format_real, &
                       check_known_groups, group_present, group_reader_t, open_group, in_range
   use io_hdf5, only: result_file_t
@@ -198,11 +199,14 @@ contains
     integer :: err
     real(wp) :: back(3, 2), scalar(1)
     logical :: exists
+    character(len=:), allocatable :: temporary
 
     call file%create(path, status)
     call check(status%ok(), 'create: '//status%text())
-    inquire (file=path//'.tmp', exist=exists)
-    call check(exists, 'written under the temporary name while open')
+    temporary = file%temporary_name()
+    inquire (file=temporary, exist=exists)
+    call check(exists .and. index(temporary, path//'.') == 1 .and. index(temporary, '.tmp') == len(temporary) - 3, &
+               'written under a temporary name <path>.<pid>.XXXXXX.tmp while open: '//temporary)
     call file%write_matrix('/group/sub/values', reshape([1.0_wp, 2.0_wp, 3.0_wp, 4.0_wp, 5.0_wp, 6.0_wp], [3, 2]), &
                            'm', 'six numbers', status)
     call file%write_vector('/group/sub/time', [0.0_wp, 0.5_wp], 's', 'two times', status)
@@ -217,7 +221,7 @@ contains
     status = status_t()
     call file%finish(.false., 'stopped early on purpose', status)
     call check(status%ok(), 'finish: '//status%text())
-    inquire (file=path//'.tmp', exist=exists)
+    inquire (file=temporary, exist=exists)
     call check(.not. exists, 'temporary name gone after finish')
     inquire (file=path, exist=exists)
     call check(exists, 'final name present after finish')
@@ -238,8 +242,25 @@ contains
     close (err, status='delete')
 
     call file%create('no/such/folder/x.h5', status)
-    call check(.not. status%ok() .and. index(status%text(), 'no/such/folder/x.h5') > 0, &
+    call check(status%code == STATUS_IO .and. index(status%text(), 'no/such/folder/x.h5') > 0, &
                'unwritable path reported: '//status%text())
+
+    ! a NaN written keeps the file from being marked complete and names the dataset
+    status = status_t()
+    call file%create(path, status)
+    call file%write_vector('/a/finite', [1.0_wp, 2.0_wp], 'm', 'finite', status)
+    call file%write_vector('/a/not_finite', [1.0_wp, ieee_value(1.0_wp, ieee_quiet_nan)], 'm', 'a NaN', status)
+    call check(status%ok(), 'a NaN is written: '//status%text())
+    call file%finish(.true., 'ok', status)
+    call check(status%code == STATUS_DOMAIN .and. index(status%text(), '/a/not_finite') > 0, &
+               'a complete file with a NaN refused, naming the dataset: '//status%text())
+    call h5fopen_f(path, H5F_ACC_RDONLY_F, id, err)
+    call check(read_text_attribute(id, '/', 'status') == 'incomplete', 'file with a NaN marked incomplete')
+    call check(index(read_text_attribute(id, '/', 'status_message'), '/a/not_finite') > 0, &
+               'status_message names the dataset')
+    call h5fclose_f(id, err)
+    open (newunit=err, file=path)
+    close (err, status='delete')
   end subroutine result_file_life_cycle
 
   !> A text attribute, checked to be a scalar variable-length UTF-8 string.

@@ -1,0 +1,185 @@
+!> The few operating-system services the file boundary needs, through the C
+!> library (POSIX): a new file with a unique name (mkstemps), removing and
+!> renaming files, the text of the last system error, whether two paths name
+!> the same file (realpath), and ignoring SIGXFSZ so that a write beyond the
+!> file-size limit fails with an error we report instead of killing us.
+module io_system
+  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_funptr, c_intptr_t, &
+                                         c_associated, c_f_pointer, c_null_ptr, c_null_funptr
+  implicit none (type, external)
+  private
+  public :: create_unique_file, remove_file, rename_file, system_error_text, same_file, &
+            ignore_file_size_signal, process_id
+
+  integer(c_int), parameter :: sigxfsz = 25   !< Linux (x86-64, arm64)
+
+  interface
+    function c_mkstemps(template, suffix_length) bind(C, name='mkstemps') result(fd)
+      import :: c_char, c_int
+      character(kind=c_char), intent(inout) :: template(*)
+      integer(c_int), value :: suffix_length
+      integer(c_int) :: fd
+    end function c_mkstemps
+    function c_umask(mask) bind(C, name='umask') result(old)
+      import :: c_int
+      integer(c_int), value :: mask
+      integer(c_int) :: old
+    end function c_umask
+    function c_fchmod(fd, mode) bind(C, name='fchmod') result(rc)
+      import :: c_int
+      integer(c_int), value :: fd, mode
+      integer(c_int) :: rc
+    end function c_fchmod
+    function c_close(fd) bind(C, name='close') result(rc)
+      import :: c_int
+      integer(c_int), value :: fd
+      integer(c_int) :: rc
+    end function c_close
+    function c_unlink(path) bind(C, name='unlink') result(rc)
+      import :: c_char, c_int
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: rc
+    end function c_unlink
+    function c_rename(old, new) bind(C, name='rename') result(rc)
+      import :: c_char, c_int
+      character(kind=c_char), intent(in) :: old(*), new(*)
+      integer(c_int) :: rc
+    end function c_rename
+    function c_getpid() bind(C, name='getpid') result(pid)
+      import :: c_int
+      integer(c_int) :: pid
+    end function c_getpid
+    function c_errno_location() bind(C, name='__errno_location') result(p)
+      import :: c_ptr
+      type(c_ptr) :: p
+    end function c_errno_location
+    function c_strerror(errnum) bind(C, name='strerror') result(p)
+      import :: c_int, c_ptr
+      integer(c_int), value :: errnum
+      type(c_ptr) :: p
+    end function c_strerror
+    function c_realpath(path, resolved) bind(C, name='realpath') result(p)
+      import :: c_char, c_ptr
+      character(kind=c_char), intent(in) :: path(*)
+      type(c_ptr), value :: resolved
+      type(c_ptr) :: p
+    end function c_realpath
+    subroutine c_free(p) bind(C, name='free')
+      import :: c_ptr
+      type(c_ptr), value :: p
+    end subroutine c_free
+    function c_signal(signum, handler) bind(C, name='signal') result(old)
+      import :: c_int, c_funptr
+      integer(c_int), value :: signum
+      type(c_funptr), value :: handler
+      type(c_funptr) :: old
+    end function c_signal
+  end interface
+
+contains
+
+  !> Creates a new empty file `prefix`.XXXXXX`suffix` (XXXXXX replaced by
+  !> random characters, the name unique at creation) and returns its name;
+  !> '' if it could not be created (then `error` says why). Its permissions
+  !> are those of any new file (0666 less the umask), not mkstemps' 0600.
+  subroutine create_unique_file(prefix, suffix, path, error)
+    character(len=*), intent(in) :: prefix, suffix
+    character(len=:), allocatable, intent(out) :: path, error
+    character(kind=c_char) :: template(len(prefix) + len(suffix) + 8)   ! with .XXXXXX and the NUL
+    character(len=:), allocatable :: name
+    integer(c_int) :: fd, rc, mask
+    integer :: i
+    name = prefix//'.XXXXXX'//suffix
+    do i = 1, len(name)
+      template(i) = name(i:i)
+    end do
+    template(len(name) + 1) = c_null_char
+    path = ''
+    error = ''
+    fd = c_mkstemps(template, int(len(suffix), c_int))
+    if (fd < 0) then
+      error = system_error_text()
+      return
+    end if
+    mask = c_umask(0_c_int)
+    rc = c_umask(mask)
+    rc = c_fchmod(fd, iand(int(o'666', c_int), not(mask)))
+    rc = c_close(fd)
+    path = name
+    do i = 1, len(name)
+      path(i:i) = template(i)
+    end do
+  end subroutine create_unique_file
+
+  !> Removes a file; no error if it is not there.
+  subroutine remove_file(path)
+    character(len=*), intent(in) :: path
+    integer(c_int) :: rc
+    rc = c_unlink(path//c_null_char)
+  end subroutine remove_file
+
+  !> Renames atomically (within one file system); `error` says why not.
+  subroutine rename_file(old, new, ok, error)
+    character(len=*), intent(in) :: old, new
+    logical, intent(out) :: ok
+    character(len=:), allocatable, intent(out) :: error
+    ok = c_rename(old//c_null_char, new//c_null_char) == 0
+    error = ''
+    if (.not. ok) error = system_error_text()
+  end subroutine rename_file
+
+  !> The C library's text for the last error (errno), '' if none.
+  function system_error_text() result(text)
+    character(len=:), allocatable :: text
+    integer(c_int), pointer :: errno
+    call c_f_pointer(c_errno_location(), errno)
+    text = ''
+    if (errno /= 0) text = c_text(c_strerror(errno))
+  end function system_error_text
+
+  !> Do both paths name one existing file (after links and '..')?
+  logical function same_file(a, b)
+    character(len=*), intent(in) :: a, b
+    character(len=:), allocatable :: real_a, real_b
+    real_a = resolved(a)
+    real_b = resolved(b)
+    same_file = len(real_a) > 0 .and. real_a == real_b
+  end function same_file
+
+  function resolved(path) result(text)
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable :: text
+    type(c_ptr) :: p
+    text = ''
+    p = c_realpath(path//c_null_char, c_null_ptr)
+    if (.not. c_associated(p)) return
+    text = c_text(p)
+    call c_free(p)
+  end function resolved
+
+  !> A write beyond the file-size limit (ulimit -f) then fails with EFBIG,
+  !> reported like a full disk, instead of killing the program.
+  subroutine ignore_file_size_signal()
+    type(c_funptr) :: old
+    old = c_signal(sigxfsz, transfer(1_c_intptr_t, c_null_funptr))   ! SIG_IGN
+  end subroutine ignore_file_size_signal
+
+  integer function process_id()
+    process_id = int(c_getpid())
+  end function process_id
+
+  !> A C string as Fortran text.
+  function c_text(p) result(text)
+    type(c_ptr), intent(in) :: p
+    character(len=:), allocatable :: text
+    character(kind=c_char), pointer :: chars(:)
+    integer :: n
+    call c_f_pointer(p, chars, [65536])
+    n = 0
+    do while (chars(n + 1) /= c_null_char)
+      n = n + 1
+    end do
+    allocate (character(len=n) :: text)
+    text = transfer(chars(:n), text)
+  end function c_text
+end module io_system
