@@ -1,60 +1,110 @@
-!> The slidesim command: runs the scenario named in a namelist file (or the
-!> built-in default) and turns the outcome into a message and an exit status:
-!> 0 done; 1 bad command line or input (nothing written); 2 the run failed part
-!> way (the result file is kept, marked incomplete); 3 a file could not be
-!> read or written.
+!> The slidesim command: runs the scenario named in a namelist file (or
+!> standard input, or the built-in default) and turns the outcome into a
+!> message and an exit status: 0 done; 1 bad command line or input (nothing
+!> written); 2 the run failed part way (the result file is kept, marked
+!> incomplete); 3 a file could not be read or written.
+!>
+!> Options take their value as the next argument or after '=' (--output FILE,
+!> --output=FILE); '-' names standard input; '--' ends the options.
 program slidesim
   use base_status, only: status_t, STATUS_OK, STATUS_INVALID_INPUT, STATUS_IO
   use base_log, only: log_error, set_verbosity
   use scenarios_registry, only: run_input_file, run_default, print_scenarios, slidesim_version, &
-                                default_input
+                                default_input, scenario_template, scenario_names
   use io_run_config, only: run_config_t
   use io_system, only: ignore_file_size_signal
   implicit none (type, external)
 
   type(status_t) :: status
   type(run_config_t) :: cli
-  character(len=1024) :: arg
-  character(len=:), allocatable :: input_path, output_path
-  integer :: i, n
+  character(len=:), allocatable :: arg, option, value, input_path, template
+  character(len=:), allocatable :: overrides(:)
+  integer :: i, n, equals
+  logical :: options_ended, has_value, found
 
   ! a write beyond the file-size limit then fails and is reported (exit 3)
   call ignore_file_size_signal()
+  cli%output = ''
+  cli%summary_json = ''
+  allocate (character(len=1) :: overrides(0))
+  options_ended = .false.
   n = command_argument_count()
   i = 0
   do while (i < n)
     i = i + 1
-    call get_command_argument(i, arg)
-    select case (trim(arg))
+    arg = argument(i)
+    if (options_ended .or. arg == '-' .or. len(arg) == 0 .or. arg(1:1) /= '-') then
+      if (allocated(input_path)) call usage_error('only one input file can be given ("'//input_path// &
+                                                  '" and "'//arg//'")')
+      input_path = arg
+      cycle
+    end if
+    ! --option=value or --option value
+    equals = index(arg, '=')
+    has_value = equals > 0 .and. arg(1:2) == '--'
+    if (has_value) then
+      option = arg(:equals - 1)
+      value = arg(equals + 1:)
+    else
+      option = arg
+    end if
+    select case (option)
+    case ('--')
+      options_ended = .true.
     case ('-h', '--help')
+      call no_value()
       call print_help()
       stop
     case ('-V', '--version')
+      call no_value()
       print '(a)', 'slidesim '//slidesim_version
       stop
-    case ('--default-input')
-      print '(a)', default_input()
-      stop
     case ('-q', '--quiet')
+      call no_value()
       call set_verbosity(0)
     case ('-o', '--output')
-      if (i == n) call usage_error('option '//trim(arg)//' needs a file name')
-      i = i + 1
-      call get_command_argument(i, arg)
-      output_path = trim(arg)
+      call take_value()
+      if (len(value) == 0) call usage_error(option//' needs a file name')
+      cli%output = value
+    case ('--set')
+      call take_value()
+      if (index(value, '%') == 0 .or. index(value, '=') == 0) &
+        call usage_error('--set '//value//': write --set group%variable=value, e.g. --set solver%rtol=1e-8')
+      overrides = [character(len=max(len(overrides), len(value))) :: overrides, value]
+    case ('--check')
+      call no_value()
+      cli%check_only = .true.
+    case ('--summary-json')
+      call take_value()
+      if (len(value) == 0) call usage_error(option//' needs a file name')
+      cli%summary_json = value
+    case ('--default-input')
+      ! an optional scenario name: --default-input water, --default-input=water
+      if (.not. has_value .and. i < n) then
+        value = argument(i + 1)
+        if (value(1:min(1, len(value))) /= '-') then
+          i = i + 1
+          has_value = .true.
+        end if
+      end if
+      if (has_value) then
+        call scenario_template(value, template, found)
+        if (.not. found) call usage_error('--default-input '//value//': no such scenario; scenarios:'// &
+                                          scenario_list())
+        print '(a)', template
+      else
+        print '(a)', default_input()
+      end if
+      stop
     case default
-      if (arg(1:1) == '-') call usage_error('unknown option "'//trim(arg)//'"')
-      if (allocated(input_path)) call usage_error('only one input file can be given')
-      input_path = trim(arg)
+      call usage_error('unknown option "'//arg//'"')
     end select
   end do
 
-  cli%output = ''
-  if (allocated(output_path)) cli%output = output_path
   if (allocated(input_path)) then
-    call run_input_file(input_path, status, cli)
+    call run_input_file(input_path, status, cli, overrides)
   else
-    call run_default(status, cli)
+    call run_default(status, cli, overrides)
   end if
 
   if (status%code /= STATUS_OK) then
@@ -68,27 +118,66 @@ program slidesim
 
 contains
 
+  !> Command-line argument i, of any length.
+  function argument(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    integer :: length
+    call get_command_argument(i, length=length)
+    allocate (character(len=length) :: text)
+    if (length > 0) call get_command_argument(i, text)
+  end function argument
+
+  !> The option's value: after '=', or the next argument.
+  subroutine take_value()
+    if (has_value) return
+    if (i == n) call usage_error('option '//option//' needs a value')
+    i = i + 1
+    value = argument(i)
+  end subroutine take_value
+
+  subroutine no_value()
+    if (has_value) call usage_error('option '//option//' takes no value ("'//arg//'")')
+  end subroutine no_value
+
+  function scenario_list() result(text)
+    character(len=:), allocatable :: text
+    integer :: k
+    text = ''
+    do k = 1, size(scenario_names)
+      text = text//' '//trim(scenario_names(k))
+    end do
+  end function scenario_list
+
   subroutine print_help()
-    print '(a)', 'usage: slidesim [options] [input.nml]'
+    print '(a)', 'usage: slidesim [options] [input.nml | -]'
     print '(a)', ''
-    print '(a)', 'Runs the scenario named in &run of the namelist file input.nml and writes'
-    print '(a)', 'its results to an HDF5 file (&run output, default <scenario>.h5). Without'
-    print '(a)', 'an input file it runs the built-in default input. See docs/inputs.md for'
-    print '(a)', 'every input variable and docs/outputs.md for the result file layout.'
+    print '(a)', 'Runs the scenario named in &run of the namelist file input.nml (- reads it'
+    print '(a)', 'from standard input) and writes its results to an HDF5 file (&run output,'
+    print '(a)', 'default <scenario>.h5). Without an input file it runs the built-in default'
+    print '(a)', 'input. See docs/inputs.md for every input variable and docs/outputs.md for'
+    print '(a)', 'the result file layout. Options take their value as the next argument or'
+    print '(a)', 'after "=" (--output=FILE).'
     print '(a)', ''
     print '(a)', 'options:'
-    print '(a)', '  -o, --output FILE   write the results to FILE (overrides &run output)'
-    print '(a)', '  -q, --quiet         no progress messages'
-    print '(a)', '  --default-input     print the built-in default input (a template)'
-    print '(a)', '  -h, --help          this help'
-    print '(a)', '  -V, --version       the version'
+    print '(a)', '  -o, --output FILE         write the results to FILE (overrides &run output)'
+    print '(a)', '  --set GROUP%VAR=VALUE     set or replace a variable of the input, checked like'
+    print '(a)', '                            the file (repeatable): --set solver%rtol=1e-8'
+    print '(a)', '  --check                   read and check the input, build the models, write'
+    print '(a)', '                            nothing; prints "input ok"'
+    print '(a)', '  --summary-json FILE       also write the summary''s numbers as JSON to FILE'
+    print '(a)', '  --default-input [SCENARIO] print the built-in default input, or a commented'
+    print '(a)', '                            template of SCENARIO'
+    print '(a)', '  -q, --quiet               no progress messages'
+    print '(a)', '  -h, --help                this help'
+    print '(a)', '  -V, --version             the version'
     print '(a)', ''
     print '(a)', 'scenarios:'
     call print_scenarios()
     print '(a)', ''
     print '(a)', 'exit status: 0 done; 1 bad command line or input (nothing written);'
     print '(a)', '2 the run failed part way (result file kept, marked incomplete);'
-    print '(a)', '3 a file could not be read or written.'
+    print '(a)', '3 a file could not be read or written (nothing kept).'
   end subroutine print_help
 
   subroutine usage_error(message)

@@ -18,6 +18,7 @@ module scenarios_registry
   implicit none (type, external)
   private
   public :: run_input_file, run_default, run_input, print_scenarios, default_input, slidesim_version
+  public :: scenario_template, scenario_names
 
   character(len=*), parameter :: scenario_names(6) = [character(len=16) :: 'point_mass', 'geometry', 'water', &
     'pendulum', 'fourbar', 'sled']
@@ -101,6 +102,15 @@ contains
     character(len=*), intent(in), optional :: overrides(:)
     call run_input_file('builtin:default', status, cli, overrides)
   end subroutine run_default
+
+  !> The commented template of a scenario (inputs/templates/<scenario>.nml,
+  !> compiled in; for --default-input SCENARIO).
+  subroutine scenario_template(scenario, text, found)
+    character(len=*), intent(in) :: scenario
+    character(len=:), allocatable, intent(out) :: text
+    logical, intent(out) :: found
+    call builtin_input('template_'//scenario, text, found)
+  end subroutine scenario_template
 
   !> The text of the built-in default input (for --default-input).
   function default_input() result(text)
