@@ -1,0 +1,236 @@
+#!/usr/bin/env python3
+"""Mutation test of slidesim's input boundary (issue 12).
+
+Makes seeded, deterministic mutants of the shipped inputs (lines deleted,
+duplicated or cut, values replaced by NaN, Inf, 1e308, -1, 2147483648, texts,
+logicals, very long texts, names misspelt, group ends removed, files cut
+inside a group ...) and runs each through `slidesim --check`; a share of those
+that pass also runs fully, with a short duration. Every run must:
+
+  - end by itself (no signal, within the time limit);
+  - exit 0, 1, 2 or 3, with its documented meaning: 0 a complete result file
+    without NaN or Inf, 1 no file at all and a message naming the input file
+    and a line or a group, 2 a file marked incomplete, 3 no file kept;
+  - leave no temporary file.
+
+usage: mutants.py SLIDESIM ROOT [--count N] [--seed S] [--full-share F]
+"""
+import argparse
+import os
+import random
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+VALUES = ['NaN', 'Inf', '-Inf', '+Inf', 'nan', '1e308', '-1e308', '1e400', '1e-320', '0', '-1', '0.0',
+          '2147483648', '-2147483649', '99999999999999999999', '1.5', '2.5e3', '-0.0', "'text'", '.true.',
+          '.false.', 'T', 'x', "''", "'" + 'x' * 300 + "'", '1,2', '3*1.0', ',', '']
+TEXTS = ["'straight" + 'x' * 292 + "'", "'nonsense'", "''", '1.0', '.true.', 'plane', "'PLANE'", "'pl''ane'"]
+GARBAGE = ['garbage', '&', '/', '&end', '!', "'", '"', 'x = 1', '&run /', '=', '(', ')', '\x00', 'é',
+           '1 2 3', '$end']
+
+NUMBER = re.compile(r'(?<![\w.])[-+]?(\d+\.?\d*|\.\d+)([eEdD][-+]?\d+)?(?![\w.])')
+TEXT = re.compile(r"'[^']*'")
+NAME = re.compile(r'\b([a-z_][a-z0-9_]*)\s*(\([^)]*\))?\s*=')
+
+
+def mutate(text, rng):
+    """One mutation of the input text: (description, new text)."""
+    lines = text.split('\n')
+    content = [i for i, line in enumerate(lines) if line.strip() and not line.strip().startswith('!')]
+    i = rng.choice(content) if content else 0
+    kind = rng.choice(['delete', 'duplicate', 'cut', 'value', 'value', 'value', 'value', 'text', 'name',
+                       'end', 'garbage', 'swap', 'extra', 'long_line', 'empty', 'value_twice'])
+    line = lines[i]
+    if kind == 'delete':
+        del lines[i]
+    elif kind == 'duplicate':
+        lines.insert(i, line)
+    elif kind == 'cut':
+        cut = rng.randrange(len(text) + 1)
+        return f'cut at byte {cut}', text[:cut]
+    elif kind in ('value', 'value_twice'):
+        numbers = list(NUMBER.finditer(line))
+        if not numbers:
+            return mutate(text, rng)
+        m = rng.choice(numbers)
+        new = rng.choice(VALUES)
+        lines[i] = line[:m.start()] + new + line[m.end():]
+        if kind == 'value_twice':
+            others = [j for j in content if NUMBER.search(lines[j])]
+            j = rng.choice(others)
+            m2 = rng.choice(list(NUMBER.finditer(lines[j])))
+            lines[j] = lines[j][:m2.start()] + rng.choice(VALUES) + lines[j][m2.end():]
+        kind = f'value {m.group(0)} -> {new!r}'
+    elif kind == 'text':
+        texts = list(TEXT.finditer(line))
+        if not texts:
+            return mutate(text, rng)
+        m = rng.choice(texts)
+        new = rng.choice(TEXTS)
+        lines[i] = line[:m.start()] + new + line[m.end():]
+        kind = f'text {m.group(0)} -> {new[:20]!r}'
+    elif kind == 'name':
+        names = list(NAME.finditer(line))
+        if not names:
+            return mutate(text, rng)
+        m = rng.choice(names)
+        name = m.group(1)
+        k = rng.randrange(len(name))
+        new = name[:k] + name[k + 1:] if len(name) > 1 else name + 'x'
+        lines[i] = line[:m.start(1)] + new + line[m.end(1):]
+        kind = f'name {name} -> {new}'
+    elif kind == 'end':
+        ends = [j for j, l in enumerate(lines) if l.strip() == '/' or l.rstrip().endswith('/')]
+        if not ends:
+            return mutate(text, rng)
+        j = rng.choice(ends)
+        lines[j] = lines[j].rstrip()[:-1]
+        i = j
+    elif kind == 'garbage':
+        lines.insert(i, rng.choice(GARBAGE))
+    elif kind == 'swap':
+        if i + 1 < len(lines):
+            lines[i], lines[i + 1] = lines[i + 1], lines[i]
+    elif kind == 'extra':
+        numbers = list(NUMBER.finditer(line))
+        if not numbers:
+            return mutate(text, rng)
+        m = numbers[-1]
+        lines[i] = line[:m.end()] + ', ' + m.group(0) + line[m.end():]
+    elif kind == 'long_line':
+        lines[i] = line + ' ' * 600 + '! long'
+    elif kind == 'empty':
+        return 'empty file', ''
+    return f'{kind} at line {i + 1}', '\n'.join(lines)
+
+
+def non_finite(path):
+    """Names of the numeric datasets and attributes holding NaN or Inf."""
+    bad = []
+    with h5py.File(path, 'r') as f:
+        def visit(name, obj):
+            if isinstance(obj, h5py.Dataset) and obj.dtype.kind in 'fc' and not np.all(np.isfinite(obj[()])):
+                bad.append(name)
+            for key, value in obj.attrs.items():
+                a = np.asarray(value)
+                if a.dtype.kind in 'fc' and not np.all(np.isfinite(a)):
+                    bad.append(f'{name}@{key}')
+        f.visititems(visit)
+        status = f.attrs.get('status')
+    return (status.decode() if isinstance(status, bytes) else status), bad
+
+
+def names_the_input(message, name):
+    """An exit-1 message names the input file and a line of it, or a group,
+    or says why there is nothing to name (an empty input)."""
+    if name not in message:
+        return False
+    return bool(re.search(re.escape(name) + r':\d+:', message) or re.search(r'&[a-z_]+', message)
+                or 'is empty' in message)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument('slidesim')
+    parser.add_argument('root')
+    parser.add_argument('--count', type=int, default=int(os.environ.get('SLIDESIM_MUTANTS', 500)))
+    parser.add_argument('--seed', type=int, default=12)
+    parser.add_argument('--full-share', type=float, default=0.5)
+    parser.add_argument('--check-timeout', type=float, default=60)
+    parser.add_argument('--run-timeout', type=float, default=120)
+    args = parser.parse_args()
+    slidesim = os.path.abspath(args.slidesim)
+    rng = random.Random(args.seed)
+
+    work = tempfile.mkdtemp(prefix='slidesim_mutants_')
+    failures = []
+    counts = {}
+    try:
+        # the inputs tree copied, so that relative paths (geometry files, CSV) resolve
+        tree = os.path.join(work, 'inputs')
+        shutil.copytree(os.path.join(args.root, 'inputs'), tree)
+        originals = sorted(os.path.join(d, f) for d, _, fs in os.walk(tree) for f in fs if f.endswith('.nml'))
+        for number in range(args.count):
+            original = originals[number % len(originals)]
+            with open(original, encoding='utf-8') as f:
+                text = f.read()
+            what, mutant = mutate(text, rng)
+            folder = os.path.dirname(original)
+            name = f'mutant_{number:04d}.nml'
+            path = os.path.join(folder, name)
+            out = os.path.join(work, f'mutant_{number:04d}.h5')
+            with open(path, 'w', encoding='utf-8', errors='surrogateescape') as f:
+                f.write(mutant)
+            label = f'mutant {number} ({os.path.relpath(original, tree)}: {what})'
+
+            def run(extra, timeout, phase):
+                try:
+                    p = subprocess.run([slidesim, '-q', *extra, '-o', out, name], cwd=folder, capture_output=True,
+                                       timeout=timeout)
+                except subprocess.TimeoutExpired:
+                    failures.append(f'{label}, {phase}: no end within {timeout} s')
+                    return None, ''
+                err = p.stderr.decode('utf-8', 'replace')
+                if p.returncode < 0 or p.returncode > 3:
+                    failures.append(f'{label}, {phase}: exit status {p.returncode} (a signal?): {err[-300:]}')
+                    return None, err
+                counts[(phase, p.returncode)] = counts.get((phase, p.returncode), 0) + 1
+                kept = os.path.exists(out)
+                temporaries = [t for t in os.listdir(work) if t.startswith(os.path.basename(out) + '.')]
+                if temporaries:
+                    failures.append(f'{label}, {phase}: temporary files left: {temporaries}')
+                if p.returncode == 1:
+                    if kept:
+                        failures.append(f'{label}, {phase}: exit 1 but a result file was written')
+                    if not names_the_input(err, name):
+                        failures.append(f'{label}, {phase}: exit-1 message names no line or group: {err[:300]}')
+                elif p.returncode == 3:
+                    if kept:
+                        failures.append(f'{label}, {phase}: exit 3 but a result file was kept')
+                elif p.returncode == 2:
+                    if not kept:
+                        failures.append(f'{label}, {phase}: exit 2 but no result file')
+                    elif non_finite(out)[0] != 'incomplete':
+                        failures.append(f'{label}, {phase}: exit 2 but the file is not marked incomplete')
+                elif p.returncode == 0 and phase == 'run':
+                    if not kept:
+                        failures.append(f'{label}, {phase}: exit 0 but no result file')
+                    else:
+                        status, bad = non_finite(out)
+                        if status != 'complete':
+                            failures.append(f'{label}, {phase}: exit 0 but the file is {status!r}')
+                        if bad:
+                            failures.append(f'{label}, {phase}: NaN or Inf in a complete file: {bad[:5]}')
+                elif p.returncode == 0 and kept:
+                    failures.append(f'{label}, {phase}: --check wrote a result file')
+                if os.path.exists(out):
+                    os.remove(out)
+                return p.returncode, p.stdout.decode('utf-8', 'replace')
+
+            code, stdout = run(['--check'], args.check_timeout, 'check')
+            if code == 0 and rng.random() < args.full_share:
+                scenario = re.search(r'scenario (\w+)', stdout)
+                extra = []
+                if scenario and scenario.group(1) == 'geometry':
+                    extra = ['--set', 'grid%n_u=40', '--set', 'grid%n_v=12', '--set', 'grid%n_frames=40']
+                elif scenario:
+                    extra = ['--set', 'solver%duration=0.5']
+                run(extra, args.run_timeout, 'run')
+            os.remove(path)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    summary = ', '.join(f'{phase} exit {code}: {n}' for (phase, code), n in sorted(counts.items()))
+    print(f'{args.count} mutants (seed {args.seed}): {summary}')
+    for failure in failures:
+        print('FAIL ' + failure)
+    return 1 if failures else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
