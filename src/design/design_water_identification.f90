@@ -37,7 +37,8 @@ module design_water_identification
   use numerics_least_squares, only: least_squares_problem_t, least_squares_options_t, &
     least_squares_result_t, solve_least_squares
   use water_streamline, only: streamline_t
-  use water_flow, only: water_start_t, water_series_t, water_initial_state, simulate_water
+  use water_flow, only: water_series_t, simulate_water
+  use water_run, only: water_description_t, new_streamline
   use design_cost, only: cost_group_t, new_cost_group, position_factor, speed_factor, group_part, &
     group_rmse, group_mae, group_max_abs, append_residuals
   implicit none (type, external)
@@ -60,18 +61,17 @@ module design_water_identification
 
   !> Everything an evaluation needs; read-only during a fit.
   type :: water_identification_t
-    type(streamline_t) :: model            !< channel, Q, gravity, correction (its f are replaced)
-    type(water_start_t) :: start           !< the measured start (4.33)
-    type(ode_options_t) :: ode             !< thesis: rtol 1e-10, atol 1e-9
-    real(wp) :: duration = 1000            !< s, a bound only: runs end at the slide's end
+    type(water_description_t) :: water     !< the slide, Q, the measured start (4.33), the model
+                                           !< switches; its f, stations, edges and solver are not used
+    type(ode_options_t) :: ode = ode_options_t(rtol=1e-10_wp, atol=1e-9_wp)   !< thesis C.4
     type(water_measurements_t) :: data
     integer :: speed_kind = SPEED_MIDPOINT
     integer :: middle_kind = MIDDLE_EDGES
     integer :: threads = 1                 !< OpenMP threads for independent evaluations
     ! derived by new_water_identification
-    real(wp), allocatable :: station_u(:)  !< increasing u of every place a run stops at
+    type(streamline_t) :: model            !< the water model of `water`, stopping at every station
+    real(wp) :: y0(7) = 0                  !< its start state
     integer, allocatable :: section_station(:), mid_station(:), start_station(:), end_station(:)
-    real(wp) :: y0(7) = 0
   end type water_identification_t
 
   type :: water_fit_options_t
@@ -121,14 +121,16 @@ module design_water_identification
 
 contains
 
-  !> Checks the measurements against the slide and places the stations.
+  !> Checks the measurements against the slide, places the stations and
+  !> builds the water model (water_run's new_streamline) once.
   subroutine new_water_identification(setup, status)
     type(water_identification_t), intent(inout) :: setup
     type(status_t), intent(inout) :: status
+    type(water_description_t) :: water
     real(wp), allocatable :: s(:), places(:)
-    real(wp) :: u_min, u_max, total
-    integer :: n, m, i, k
+    integer :: n, m, i
 
+    if (.not. status%ok()) return
     associate (d => setup%data)
       if (.not. allocated(d%section_arc_length)) allocate (d%section_arc_length(0), d%section_v(0))
       if (.not. allocated(d%segment_start)) allocate (d%segment_start(0), d%segment_end(0), d%segment_speed(0))
@@ -142,8 +144,6 @@ contains
         call set_status(status, STATUS_INVALID_INPUT, 'water measurements: no sections and no segments')
         return
       end if
-      call setup%model%channel%u_range(u_min, u_max)
-      total = setup%model%channel%arc_length(u_max)
       do i = 2, n
         if (.not. d%section_arc_length(i) > d%section_arc_length(i - 1)) then
           call set_status(status, STATUS_INVALID_INPUT, 'water measurements: section '//format_integer(i)// &
@@ -158,32 +158,25 @@ contains
           return
         end if
       end do
-      ! every place a run stops at, in order along the slide
+      ! every place a run stops at, in order along the slide: the model's stations
       places = [d%section_arc_length, (d%segment_start + d%segment_end)/2, d%segment_start, d%segment_end]
-      if (any(places < 0) .or. any(places > total)) then
-        call set_status(status, STATUS_INVALID_INPUT, 'water measurements: every section and segment must '// &
-          'lie on the slide, arc length in [0, '//format_short(total)//'] m')
-        return
-      end if
       s = unique_sorted(places)
-      allocate (setup%station_u(size(s)))
-      do k = 1, size(s)
-        call setup%model%channel%parameter_at_length(s(k), setup%station_u(k), status)
-        if (.not. status%ok()) return
-      end do
-      if (any(setup%station_u <= setup%start%u0)) then
-        call set_status(status, STATUS_INVALID_INPUT, 'water measurements: every section and segment must '// &
-          'lie downstream of the start u0 = '//format_short(setup%start%u0))
-        return
-      end if
       setup%section_station = [(findloc(s, d%section_arc_length(i), dim=1), i=1, n)]
       setup%mid_station = [(findloc(s, (d%segment_start(i) + d%segment_end(i))/2, dim=1), i=1, m)]
       setup%start_station = [(findloc(s, d%segment_start(i), dim=1), i=1, m)]
       setup%end_station = [(findloc(s, d%segment_end(i), dim=1), i=1, m)]
     end associate
-    setup%model%stations = setup%station_u
-    call water_initial_state(setup%model, setup%start, setup%y0, status)
-    if (.not. status%ok()) call prefix_status(status, 'water identification: start')
+    water = setup%water
+    water%stations = s
+    call new_streamline(water, setup%model, setup%y0, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'water identification')
+      return
+    end if
+    if (any(setup%model%stations <= setup%y0(1))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'water measurements: every section and segment must '// &
+        'lie downstream of the start u0 = '//format_short(setup%y0(1)))
+    end if
   end subroutine new_water_identification
 
   pure function unique_sorted(x) result(s)
@@ -231,8 +224,9 @@ contains
     model%f1 = f(1)
     model%f2 = f(2)
     model%f3 = f(3)
-    call simulate_water(model, setup%y0, setup%ode, setup%duration, setup%duration, series, status, &
-                        edges=.false.)
+    ! no bound in time (the run stops at the slide's end or by the model's
+    ! own stops), no samples between the stations
+    call simulate_water(model, setup%y0, setup%ode, huge(1.0_wp), 1e6_wp, series, status, edges=.false.)
     if (.not. status%ok()) then
       call prefix_status(status, 'water with f = '//format_short(f(1))//', '//format_short(f(2))//', '// &
                          format_short(f(3)))
@@ -243,7 +237,7 @@ contains
       if (.not. series%stations(k)%reached) then
         call set_status(status, STATUS_DOMAIN, 'the water with f = '//format_short(f(1))//', '// &
           format_short(f(2))//', '//format_short(f(3))//' does not reach u = '// &
-          format_short(setup%station_u(k)))
+          format_short(setup%model%stations(k)))
         return
       end if
     end do
@@ -431,10 +425,10 @@ contains
       return
     end if
     call setup%model%channel%u_range(u_min, u_max)
-    call setup%model%channel%centerline(setup%start%u0, c0, status)
+    call setup%model%channel%centerline(setup%y0(1), c0, status)
     if (status%ok()) call setup%model%channel%centerline(u_max, c1, status)
     if (.not. status%ok()) return
-    s = setup%model%channel%arc_length(u_max) - setup%model%channel%arc_length(setup%start%u0)
+    s = setup%model%channel%arc_length(u_max) - setup%model%channel%arc_length(setup%y0(1))
     dh = dot_product(c0(:, 0) - c1(:, 0), setup%model%gravity)/(-norm2(setup%model%gravity))
     values%f1_energy = setup%model%mass*norm2(setup%model%gravity)*dh/(setup%data%segment_speed(m)**2*s)
     if (.not. values%f1_energy > 0) then

@@ -12,7 +12,6 @@ program test_water_identification
   use base_kinds, only: wp
   use base_status, only: status_t
   use io_input, only: input_text_t, load_input_file
-  use water_run, only: water_description_t, new_streamline
   use scenarios_water, only: build_water
   use numerics_ode, only: ode_options_t
   use design_water_identification, only: water_identification_t, water_fit_options_t, water_fit_t, &
@@ -41,18 +40,14 @@ contains
     character(len=*), intent(in) :: path
     type(water_identification_t), intent(out) :: setup
     type(input_text_t) :: input
-    type(water_description_t) :: description
     type(status_t) :: status
-    real(wp) :: y0(7), total, u_min, u_max, mid(5)
+    real(wp) :: total, mid(5)
     call load_input_file(path, input, status)
-    if (status%ok()) call build_water(input, description, status)
-    if (status%ok()) call new_streamline(description, setup%model, y0, status)
+    if (status%ok()) call build_water(input, setup%water, status)
     call check(status%ok(), path//': '//status%text())
     if (.not. status%ok()) return
-    setup%start = description%start
     setup%ode = ode_options_t(rtol=1e-10_wp, atol=1e-9_wp)   ! the thesis's (C.4)
-    call setup%model%channel%u_range(u_min, u_max)
-    total = setup%model%channel%arc_length(u_max)
+    total = setup%water%slide%length()
     setup%data%section_arc_length = evenly(3.0_wp, total - 3, 27)
     mid = evenly(0.1_wp*total, 0.9_wp*total, 5)
     setup%data%segment_start = mid - 1
