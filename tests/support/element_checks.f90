@@ -138,14 +138,20 @@ contains
   end function pack_outputs
 
   !> Velocity and acceleration maps against differences, and the power of the
-  !> force map, at time t0. Frames and scalars are indexed 1..max index used;
-  !> `hook` may overwrite input motions (e.g. to keep a pose consistent).
-  subroutine check_element(label, e, in_frames, in_scalars, out_frames, out_scalars, t0, hook)
+  !> force map, at time t0. Frames and scalars are indexed 1..max index used
+  !> (scalars up to scalar_count if given); `hook` may overwrite input motions
+  !> and set further scalars (e.g. to keep a pose consistent). With rates_only
+  !> the output scalars are velocity-level quantities (no position value):
+  !> only their second rates are compared with differences of their rates.
+  subroutine check_element(label, e, in_frames, in_scalars, out_frames, out_scalars, t0, hook, scalar_count, &
+                           rates_only)
     character(len=*), intent(in) :: label
     class(element_t), intent(in) :: e
     integer, intent(in) :: in_frames(:), in_scalars(:), out_frames(:), out_scalars(:)
     real(wp), intent(in) :: t0
     procedure(motion_hook_i), optional :: hook
+    integer, intent(in), optional :: scalar_count
+    logical, intent(in), optional :: rates_only
     class(element_t), allocatable :: el
     type(frame_state_t), allocatable :: frames(:)
     type(scalar_state_t), allocatable :: scalars(:)
@@ -155,7 +161,9 @@ contains
     character(len=8) :: tt
 
     write (tt, '(f6.2)') t0
-    allocate (frames(maxval([1, in_frames, out_frames])), scalars(maxval([1, in_scalars, out_scalars])))
+    k = maxval([1, in_scalars, out_scalars])
+    if (present(scalar_count)) k = max(k, scalar_count)
+    allocate (frames(maxval([1, in_frames, out_frames])), scalars(k))
     allocate (el, source=e)
     ! samples at t0 + k h, k = -2..2: positions and velocities
     do k = -2, 2
@@ -182,6 +190,9 @@ contains
       fd1(6*(i - 1) + 4:6*i) = d4(x(offs + 10:offs + 12, :))
     end do
     if (size(out_scalars) > 0) fd1(6*nf + 1:) = d4(x(12*nf + 1:, :))
+    if (present(rates_only)) then
+      if (rates_only) fd1(6*nf + 1:) = ref1(6*nf + 1:)
+    end if
     fd2 = d4(rate)
     call check(maxval(abs(fd1 - ref1)) <= fd_tol*max(1.0_wp, maxval(abs(ref1))), &
                label//': velocity map = d/dt position map at t = '//tt)
