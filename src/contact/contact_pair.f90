@@ -145,6 +145,7 @@ contains
     call m%add_element(new_measurement(name//'.g5', MEASURE_PLANE_PLANE, pair%frame_1d, pair%frame_2d, &
                                        pair%gaps(5), axis_i=ez, axis_j=ey))
     call m%add_loop(name, pair%gaps, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], pair%dependents(), status)
+    call m%set_loop_branch(name, pair%frame_1d, pair%frame_2d, status)
   end subroutine add_contact_pair
 
   !> Start values of the pair from the poses of A and B (world rotation and

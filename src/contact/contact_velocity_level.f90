@@ -2,35 +2,41 @@
 !> appendix E with the corrections of METHOD-PART2.md A.2): the option that
 !> drifts, kept for the comparison of thesis fig. 3.20/3.21 and table 3.1/3.2.
 !>
-!> Inputs: body frame K_1 with surface S1, the contact coordinates (u1, v1,
-!> u2, v2, phi) and the pose of body 2 relative to K_1 in six scalars: the
-!> origin x, y, z (K_1 axes) and three angles of a free-rotation chart
-!> (kinetostatics_free_rotation, first axis z_1). Output: body frame K_2.
+!> Inputs: the contact frame K_1D (the Darboux frame of S1 on body 1, the
+!> output of an ordinary surface joint with (u1, v1)), body 1's frame K_1 (for
+!> the pose only), the contact coordinates (u2, v2, phi) and the pose of body 2
+!> relative to K_1 in six scalars: the origin x, y, z (K_1 axes) and three
+!> angles of a free-rotation chart (kinetostatics_free_rotation, first axis
+!> z_1). Output: body frame K_2. Split this way, the element and the surface
+!> joint before it are (3.84) exactly, and the force the element passes back
+!> to K_1D is what body 2 presses on the contact: its normal force is
+!> N = -z_1D . f_1D, as for any surface joint (kinetostatics_contact).
 !>
 !> Position: K_2 from the pose scalars, which the model integrates from their
 !> rates; nothing ties them to the contact coordinates, so the closure
 !> functions g1..g5 (3.86) between S1(u1, v1) and S2(u2, v2) drift.
-!> Velocity (3.84), E.1-E.3 with the minus signs of E.3 corrected:
-!>     omega_2 = omega_1 + 1omega_1D - 2omega_2D + phi' z_1D
-!>     W_2 = W_1 + 1W_1D + omega_1 x 1r_1D - 2W_2D - omega_2 x 2r_2D
-!> with 1omega_1D = R_1 (W_u u1' + W_v v1'), 1W_1D = R_1 (r_u u1' + r_v v1') of
-!> the surface joint on S1 and likewise on S2 relative to body 2; and the pose
-!> rates that integrate K_2: [x y z]' = R_1^T (W_2 - W_1 - omega_1 x R_1 [x y z]),
-!> angle rates from omega_2 - omega_1 = n_1 a1' + n_2 a2' + n_3 a3'.
-!> Acceleration (E.4-E.8), by differentiating (3.84) in world coordinates:
-!>     alpha_2 = alpha_1 + A_1 - A_2 + phi'' z_1D + phi' (omega_1 + 1omega_1D) x z_1D
-!>     a_2 = a_1 + B_1 + 2 omega_1 x 1W_1D + alpha_1 x 1r_1D + omega_1 x (omega_1 x 1r_1D)
-!>               - B_2 - 2 omega_2 x 2W_2D - alpha_2 x 2r_2D - omega_2 x (omega_2 x 2r_2D)
-!> where A_j = the surface joint's relative angular acceleration
-!> (R (W_u u'' + W_v v'' + W_u' u' + W_v' v') + omega_j x R (W_u u' + W_v v'))
-!> and B_j = R (r_u u'' + r_v v'' + r_uu u'^2 + 2 r_uv u' v' + r_vv v'^2).
-!> Force (E.9): the transposed map; with tau' = tau_2 - 2r_2D x f_2,
-!>     f_1 += f_2, tau_1 += tau' + 1r_1D x f_2,
-!>     Q_u1 += tau'.R_1 W_u + f_2.R_1 r_u (v1 likewise), Q_u2 -= tau'.R_2 W_u + f_2.R_2 r_u,
-!>     Q_phi += tau'.z_1D.
+!> Velocity (3.84), E.1-E.3 with the minus signs of E.3 corrected, written
+!> with the contact frame's twist (omega_1D = omega_1 + 1omega_1D,
+!> v_1D = W_1 + omega_1 x 1r_1D + 1W_1D from the surface joint):
+!>     omega_2 = omega_1D - 2omega_2D + phi' z_1D
+!>     W_2 = v_1D - 2W_2D - omega_2 x 2r_2D
+!> with 2omega_2D = R_2 (W_u u2' + W_v v2'), 2W_2D = R_2 (r_u u2' + r_v v2')
+!> of S2 relative to body 2; and the pose rates that integrate K_2:
+!> [x y z]' = R_1^T (W_2 - W_1 - omega_1 x R_1 [x y z]), angle rates from
+!> omega_2 - omega_1 = n_1 a1' + n_2 a2' + n_3 a3'.
+!> Acceleration (E.4-E.8), by differentiating the same in world coordinates:
+!>     alpha_2 = alpha_1D - A_2 + phi'' z_1D + phi' omega_1D x z_1D
+!>     a_2 = a_1D - B_2 - 2 omega_2 x 2W_2D - alpha_2 x 2r_2D - omega_2 x (omega_2 x 2r_2D)
+!> where A_2 = R_2 (W_u u2'' + W_v v2'' + W_u' u2' + W_v' v2') + omega_2 x 2omega_2D
+!> and B_2 = R_2 (r_u u2'' + r_v v2'' + r_uu u2'^2 + 2 r_uv u2' v2' + r_vv v2'^2).
+!> Force (E.9): the transposed map; with tau' = tau_2 - 2r_2D x f_2 (the
+!> wrench about the contact point),
+!>     f_1D += f_2, tau_1D += tau',
+!>     Q_u2 -= tau'.R_2 W_u + f_2.R_2 r_u (v2 likewise), Q_phi += tau'.z_1D.
 !>
 !> Rolling (E.10-E.16): with `rolling`, u2 and v2 are integrated like the pose
-!> and their rates follow from u1', v1' by the no-slip condition (3.85)
+!> (kinematic coordinates) and their rates follow from u1', v1' (inputs then)
+!> by the no-slip condition (3.85)
 !> projected on the tangent axes x, y of K_1D:
 !>     A [u2', v2'] = B [u1', v1'],  A = [r2_u.x r2_v.x; r2_u.y r2_v.y],
 !>     B = [r1_u.x r1_v.x; r1_u.y r1_v.y]  (all rotated to world, (3.85) corrected);
@@ -55,7 +61,7 @@ module contact_velocity_level
   public :: velocity_contact_t, new_velocity_contact
 
   type, extends(element_t) :: velocity_contact_t
-    integer :: frame_1 = 0, frame_2 = 0
+    integer :: frame_1 = 0, frame_1d = 0, frame_2 = 0
     integer :: u1 = 0, v1 = 0, u2 = 0, v2 = 0, phi = 0
     integer :: pose(6) = 0                  ! x, y, z (m, K_1 axes), three chart angles (rad)
     logical :: rolling = .false.
@@ -71,22 +77,28 @@ module contact_velocity_level
     procedure :: velocity => vc_velocity
     procedure :: acceleration => vc_acceleration
     procedure :: force => vc_force
+    procedure :: chart_angle => vc_chart_angle
+    procedure :: chart_margin => vc_chart_margin
+    procedure :: rebase => vc_rebase
   end type velocity_contact_t
 
 contains
 
-  !> The element between body frames frame_1 and frame_2; `start` is the
-  !> relative rotation R_1^T R_2 the pose chart is centred on (angles zero).
-  function new_velocity_contact(name, frame_1, frame_2, surface_1, side_1, surface_2, side_2, contact, pose, &
-                                start, rolling) result(e)
+  !> The element from the contact frame frame_1d (a surface joint on S1 of
+  !> body frame frame_1 with the coordinates contact(1:2)) to body frame
+  !> frame_2; contact = (u1, v1, u2, v2, phi); `start` is the relative rotation
+  !> R_1^T R_2 the pose chart is centred on (angles zero).
+  function new_velocity_contact(name, frame_1, frame_1d, frame_2, surface_1, side_1, surface_2, side_2, contact, &
+                                pose, start, rolling) result(e)
     character(len=*), intent(in) :: name
-    integer, intent(in) :: frame_1, frame_2, contact(5), pose(6)
+    integer, intent(in) :: frame_1, frame_1d, frame_2, contact(5), pose(6)
     class(surface_t), intent(in) :: surface_1, surface_2
     real(wp), intent(in) :: side_1, side_2, start(3, 3)
     logical, intent(in) :: rolling
     type(velocity_contact_t) :: e
     e%name = name
     e%frame_1 = frame_1
+    e%frame_1d = frame_1d
     e%frame_2 = frame_2
     e%u1 = contact(1); e%v1 = contact(2); e%u2 = contact(3); e%v2 = contact(4); e%phi = contact(5)
     e%pose = pose
@@ -115,14 +127,16 @@ contains
       self%offset = matmul(k1%rot, [(scalars(self%pose(k))%q, k = 1, 3)])
       k2%rot = local(2)%rot
       k2%r = k1%r + self%offset
-      ! the two surfaces (their joints' geometry in world coordinates)
-      local(1)%rot = k1%rot
-      local(1)%r = k1%r
-      uv(1)%q = scalars(self%u1)%q
-      uv(2)%q = scalars(self%v1)%q
-      call self%joint_1%position(local, uv, status)
-      if (.not. status%ok()) return
-      self%axes_1d = local(2)%rot
+      ! surface 2 (its joint's geometry in world coordinates); surface 1 for rolling
+      self%axes_1d = frames(self%frame_1d)%rot
+      if (self%rolling) then
+        local(1)%rot = k1%rot
+        local(1)%r = k1%r
+        uv(1)%q = scalars(self%u1)%q
+        uv(2)%q = scalars(self%v1)%q
+        call self%joint_1%position(local, uv, status)
+        if (.not. status%ok()) return
+      end if
       local(1)%rot = k2%rot
       local(1)%r = k2%r
       uv(1)%q = scalars(self%u2)%q
@@ -151,23 +165,22 @@ contains
     class(velocity_contact_t), intent(inout) :: self
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
-    real(wp) :: q1d(2), q2d(2), omega_rel1(3), omega_rel2(3), w_rel1(3), w_rel2(3), rates(3)
+    real(wp) :: q1d(2), q2d(2), omega_rel2(3), w_rel2(3), rates(3)
     integer :: k
-    q1d = [scalars(self%u1)%qd, scalars(self%v1)%qd]
     if (self%rolling) then
+      q1d = [scalars(self%u1)%qd, scalars(self%v1)%qd]
       q2d = matmul(self%ainv_b, q1d)
       scalars(self%u2)%qd = q2d(1)
       scalars(self%v2)%qd = q2d(2)
     else
       q2d = [scalars(self%u2)%qd, scalars(self%v2)%qd]
     end if
-    associate (k1 => frames(self%frame_1), k2 => frames(self%frame_2), j1 => self%joint_1, j2 => self%joint_2)
-      omega_rel1 = j1%gu*q1d(1) + j1%gv*q1d(2)
-      w_rel1 = j1%tu*q1d(1) + j1%tv*q1d(2)
+    associate (k1 => frames(self%frame_1), c => frames(self%frame_1d), k2 => frames(self%frame_2), &
+               j2 => self%joint_2)
       omega_rel2 = j2%gu*q2d(1) + j2%gv*q2d(2)
       w_rel2 = j2%tu*q2d(1) + j2%tv*q2d(2)
-      k2%omega = k1%omega + omega_rel1 - omega_rel2 + scalars(self%phi)%qd*self%axes_1d(:, 3)   ! (3.84), E.2
-      k2%v = k1%v + w_rel1 + cross(k1%omega, j1%p) - w_rel2 - cross(k2%omega, j2%p)            ! (3.84), E.3
+      k2%omega = c%omega - omega_rel2 + scalars(self%phi)%qd*self%axes_1d(:, 3)   ! (3.84), E.2
+      k2%v = c%v - w_rel2 - cross(k2%omega, j2%p)                                ! (3.84), E.3
       ! rates of the integrated pose
       rates = matmul(transpose(k1%rot), k2%v - k1%v - cross(k1%omega, self%offset))
       do k = 1, 3
@@ -184,28 +197,24 @@ contains
     class(velocity_contact_t), intent(inout) :: self
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
-    real(wp) :: q1d(2), q2d(2), q1dd(2), q2dd(2), omega_rel1(3), omega_rel2(3), w_rel1(3), w_rel2(3), &
-      omega_1d(3), dx(3), dy(3), dt1u(3), dt1v(3), dt2u(3), dt2v(3), da(2, 2), db(2, 2), phid
-    q1d = [scalars(self%u1)%qd, scalars(self%v1)%qd]
-    q1dd = [scalars(self%u1)%qdd, scalars(self%v1)%qdd]
+    real(wp) :: q1d(2), q2d(2), q1dd(2), q2dd(2), omega_rel2(3), w_rel2(3), &
+      dx(3), dy(3), dt1u(3), dt1v(3), dt2u(3), dt2v(3), da(2, 2), db(2, 2), phid, omega_2(3)
     phid = scalars(self%phi)%qd
-    associate (k1 => frames(self%frame_1), k2 => frames(self%frame_2), j1 => self%joint_1, j2 => self%joint_2, &
+    associate (k1 => frames(self%frame_1), c => frames(self%frame_1d), k2 => frames(self%frame_2), &
+               j1 => self%joint_1, j2 => self%joint_2, &
                x => self%axes_1d(:, 1), y => self%axes_1d(:, 2), z => self%axes_1d(:, 3))
-      omega_rel1 = j1%gu*q1d(1) + j1%gv*q1d(2)
-      w_rel1 = j1%tu*q1d(1) + j1%tv*q1d(2)
       if (self%rolling) then
+        q1d = [scalars(self%u1)%qd, scalars(self%v1)%qd]
+        q1dd = [scalars(self%u1)%qdd, scalars(self%v1)%qdd]
         q2d = matmul(self%ainv_b, q1d)
-        ! omega_2 is needed for A' (the pose velocity of the current pass)
         omega_rel2 = j2%gu*q2d(1) + j2%gv*q2d(2)
-        omega_1d = k1%omega + omega_rel1
-        dx = cross(omega_1d, x)
-        dy = cross(omega_1d, y)
+        omega_2 = c%omega - omega_rel2 + phid*z
+        dx = cross(c%omega, x)
+        dy = cross(c%omega, y)
         dt1u = cross(k1%omega, j1%tu) + j1%huu*q1d(1) + j1%huv*q1d(2)
         dt1v = cross(k1%omega, j1%tv) + j1%huv*q1d(1) + j1%hvv*q1d(2)
-        associate (omega_2 => k1%omega + omega_rel1 - omega_rel2 + phid*z)
-          dt2u = cross(omega_2, j2%tu) + j2%huu*q2d(1) + j2%huv*q2d(2)
-          dt2v = cross(omega_2, j2%tv) + j2%huv*q2d(1) + j2%hvv*q2d(2)
-        end associate
+        dt2u = cross(omega_2, j2%tu) + j2%huu*q2d(1) + j2%huv*q2d(2)
+        dt2v = cross(omega_2, j2%tv) + j2%huv*q2d(1) + j2%hvv*q2d(2)
         da = reshape([dot_product(dt2u, x) + dot_product(j2%tu, dx), dot_product(dt2u, y) + dot_product(j2%tu, dy), &
                       dot_product(dt2v, x) + dot_product(j2%tv, dx), dot_product(dt2v, y) + dot_product(j2%tv, dy)], &
                      [2, 2])
@@ -223,19 +232,17 @@ contains
         omega_rel2 = j2%gu*q2d(1) + j2%gv*q2d(2)
       end if
       w_rel2 = j2%tu*q2d(1) + j2%tv*q2d(2)
-      k2%omega = k1%omega + omega_rel1 - omega_rel2 + phid*z
+      k2%omega = c%omega - omega_rel2 + phid*z
       ! E.4-E.7 by differentiating (3.84)
-      k2%alpha = k1%alpha + relative_alpha(j1, q1d, q1dd, k1%omega) - relative_alpha(j2, q2d, q2dd, k2%omega) &
-                 + scalars(self%phi)%qdd*z + phid*cross(k1%omega + omega_rel1, z)
+      k2%alpha = c%alpha - relative_alpha(j2, q2d, q2dd, k2%omega) + scalars(self%phi)%qdd*z &
+                 + phid*cross(c%omega, z)
       ! E.8
-      k2%a = k1%a + relative_a(j1, q1d, q1dd) + 2*cross(k1%omega, w_rel1) + cross(k1%alpha, j1%p) &
-             + cross(k1%omega, cross(k1%omega, j1%p)) &
-             - relative_a(j2, q2d, q2dd) - 2*cross(k2%omega, w_rel2) - cross(k2%alpha, j2%p) &
+      k2%a = c%a - relative_a(j2, q2d, q2dd) - 2*cross(k2%omega, w_rel2) - cross(k2%alpha, j2%p) &
              - cross(k2%omega, cross(k2%omega, j2%p))
     end associate
   end subroutine vc_acceleration
 
-  !> The surface joint's relative angular acceleration, world coordinates:
+  !> A surface joint's relative angular acceleration, world coordinates:
   !> R (W_u u'' + W_v v'' + W_u' u' + W_v' v') + omega x R (W_u u' + W_v v').
   pure function relative_alpha(j, qd, qdd, omega) result(al)
     type(surface_joint_t), intent(in) :: j
@@ -261,13 +268,11 @@ contains
     real(wp) :: f(3), t(3), q2(2)
     associate (unused_i => inertia, unused_a => applied)
     end associate
-    associate (k1 => frames(self%frame_1), k2 => frames(self%frame_2), j1 => self%joint_1, j2 => self%joint_2)
+    associate (c => frames(self%frame_1d), k2 => frames(self%frame_2), j2 => self%joint_2)
       f = k2%force
       t = k2%torque - cross(j2%p, f)
-      k1%force = k1%force + f
-      k1%torque = k1%torque + t + cross(j1%p, f)
-      scalars(self%u1)%force = scalars(self%u1)%force + dot_product(t, j1%gu) + dot_product(f, j1%tu)
-      scalars(self%v1)%force = scalars(self%v1)%force + dot_product(t, j1%gv) + dot_product(f, j1%tv)
+      c%force = c%force + f
+      c%torque = c%torque + t
       q2(1) = scalars(self%u2)%force - dot_product(t, j2%gu) - dot_product(f, j2%tu)
       q2(2) = scalars(self%v2)%force - dot_product(t, j2%gv) - dot_product(f, j2%tv)
       scalars(self%phi)%force = scalars(self%phi)%force + dot_product(t, self%axes_1d(:, 3))
@@ -284,6 +289,27 @@ contains
       scalars(self%v2)%force = q2(2)
     end if
   end subroutine vc_force
+
+  !> The pose chart changes like a free rotation's (its middle angle decides).
+  pure integer function vc_chart_angle(self) result(k)
+    class(velocity_contact_t), intent(in) :: self
+    k = self%pose(5)
+  end function vc_chart_angle
+
+  pure real(wp) function vc_chart_margin(self, angle) result(g)
+    class(velocity_contact_t), intent(in) :: self
+    real(wp), intent(in) :: angle
+    g = self%chart%chart_margin(angle)
+  end function vc_chart_margin
+
+  pure subroutine vc_rebase(self, scalars)
+    class(velocity_contact_t), intent(inout) :: self
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(scalar_state_t) :: angles(3)
+    angles = scalars(self%pose(4:6))
+    call self%chart%rebase(angles)
+    scalars(self%pose(4:6)) = angles
+  end subroutine vc_rebase
 
   pure function inverse2(a) result(b)
     real(wp), intent(in) :: a(2, 2)

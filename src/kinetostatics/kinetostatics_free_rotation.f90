@@ -35,8 +35,9 @@ module kinetostatics_free_rotation
     integer :: rebases = 0              ! charts changed so far
   contains
     procedure :: position => free_rotation_position
-    procedure :: chart_margin
-    procedure :: rebase
+    procedure :: chart_angle => free_rotation_chart_angle
+    procedure :: chart_margin => free_rotation_chart_margin
+    procedure :: rebase => free_rotation_rebase
   end type free_rotation_t
 
 contains
@@ -91,16 +92,22 @@ contains
     end associate
   end subroutine free_rotation_position
 
-  !> cos q2 - cos(chart_limit): positive inside the chart, zero at its edge.
-  pure real(wp) function chart_margin(self, scalars) result(g)
+  !> The middle angle q2 decides the chart.
+  pure integer function free_rotation_chart_angle(self) result(k)
     class(free_rotation_t), intent(in) :: self
-    type(scalar_state_t), intent(in) :: scalars(:)
-    g = cos(scalars(self%variables(2))%q) - cos(self%chart_limit)
-  end function chart_margin
+    k = self%variables(2)
+  end function free_rotation_chart_angle
+
+  !> cos q2 - cos(chart_limit): positive inside the chart, zero at its edge.
+  pure real(wp) function free_rotation_chart_margin(self, angle) result(g)
+    class(free_rotation_t), intent(in) :: self
+    real(wp), intent(in) :: angle
+    g = cos(angle) - cos(self%chart_limit)
+  end function free_rotation_chart_margin
 
   !> Changes to the chart centred on the current pose (module comment). Needs
   !> the positions evaluated (the axes n) and the rates of q set.
-  pure subroutine rebase(self, scalars)
+  pure subroutine free_rotation_rebase(self, scalars)
     class(free_rotation_t), intent(inout) :: self
     type(scalar_state_t), intent(inout) :: scalars(:)
     real(wp) :: omega_rel(3), axes(3, 3), q1
@@ -124,6 +131,6 @@ contains
       scalars(self%variables(k))%qdd = 0
     end do
     self%rebases = self%rebases + 1
-  end subroutine rebase
+  end subroutine free_rotation_rebase
 
 end module kinetostatics_free_rotation

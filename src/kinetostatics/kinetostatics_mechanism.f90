@@ -23,16 +23,31 @@
 !> Then beta' = -J_beta^-1 f^ (3.30), beta'' = -J_beta^-1 f^' (3.31), and the cut
 !> forces lambda = -J_beta^-T Q^_beta ((3.33): the printed form lacks the inverse).
 !>
+!> Velocity-level constraints (rolling, thesis (3.85); METHOD-PART2 A.3):
+!> outputs c of constraint elements that must vanish (e.g. the tangential slip
+!> of contact_rolling), with as many dependent rates sigma' among the
+!> coordinates. The coordinates q are all integrated; the independent rates,
+!> the speeds s, are the rest: q' = B(q) s, so the ODE state is [q, s]. At
+!> velocity level the unknown rates x = [beta'; sigma'] solve the combined
+!> linear system [g'; c] = 0 with the matrix J_x of (3.21) extended by the
+!> sigma columns (one velocity pass per column), at acceleration level
+!> [g''; c'] = 0 with the same matrix, and the cut forces [lambda; mu] =
+!> -J_x^-T [Q_beta; Q_sigma] (mu: the static friction of rolling).
+!> Kinematic coordinates (set_kinematic) are integrated coordinates whose rates
+!> an element computes itself in its velocity pass (the pose of a body under a
+!> velocity-level contact, contact_velocity_level): they are neither speeds nor
+!> solved. Without either, s = q' and everything is as before.
+!>
 !> Loads: gravity acts in the mass elements (kinetostatics_mass); every other
 !> load is a force law (kinetostatics_force_law), evaluated once per state with
 !> the frames, scalars and contact kinematics (kinetostatics_contact).
 !>
-!> Equations of motion (3.34)-(3.36): the inverse dynamics Q_bar(q, q', q'')
-!> (generalized forces of d'Alembert + applied forces at the q's, loops closed
-!> by lambda) is affine in q'': Q_bar = Q_bar0 - M q''. f + 1 passes: one with
-!> q'' = 0 (inertia, gravity and the explicit laws) gives Q_bar0 = -Q^, and one
-!> per coordinate with q'' = e_i, velocities zero and applied forces off gives
-!> the column -M e_i.
+!> Equations of motion (3.34)-(3.36): the inverse dynamics Q_bar(q, s, s')
+!> (generalized forces of d'Alembert + applied forces at the speeds, loops and
+!> velocity constraints closed by lambda, mu) is affine in s': Q_bar = Q_bar0 -
+!> M s'. ns + 1 passes: one with s' = 0 (inertia, gravity and the explicit
+!> laws) gives Q_bar0 = -Q^, and one per speed with s' = e_i, velocities zero
+!> and applied forces off gives the column -M e_i (M = B^T M_q B).
 !>
 !> Normal forces and scaled laws: every contact's normal force N (rules in
 !> kinetostatics_contact) is linear in the loads of a force pass, so
@@ -48,6 +63,7 @@
 !> affine form. The law's power is |N| times its unit power.
 module kinetostatics_mechanism
   use base_kinds, only: wp
+  use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_OK, STATUS_INVALID_INPUT, &
     STATUS_NOT_CONVERGED, STATUS_DOMAIN
   use numerics_nonlinear, only: nonlinear_system_t, nonlinear_options_t, nonlinear_result_t, &
@@ -61,7 +77,7 @@ module kinetostatics_mechanism
   use kinetostatics_force_law, only: force_law_t, force_law_box_t
   implicit none (type, external)
   private
-  public :: mechanism_t, loop_t, surface_edge_t
+  public :: mechanism_t, loop_t, rate_constraint_t, surface_edge_t
   public :: LOADS_NONE, LOADS_EXPLICIT, LOADS_ALL
 
   integer, parameter :: ROLE_FIXED = 0, ROLE_Q = 1, ROLE_BETA = 2, ROLE_MEASURE = 3
@@ -74,7 +90,16 @@ module kinetostatics_mechanism
     integer, allocatable :: measurements(:)   ! scalar indices of the closure measurements
     real(wp), allocatable :: targets(:)       ! their required values
     integer, allocatable :: dependents(:)     ! scalar indices of the dependent coordinates
+    integer :: antiparallel(2) = 0            ! frames whose z axes must point against each other (0: none)
   end type loop_t
+
+  !> A velocity-level constraint: outputs c (rates that must vanish) and as
+  !> many coordinates whose rates become dependent.
+  type :: rate_constraint_t
+    character(len=:), allocatable :: name
+    integer, allocatable :: outputs(:)        ! scalar indices of the constraint outputs
+    integer, allocatable :: dependents(:)     ! scalar indices of coordinates with dependent rates
+  end type rate_constraint_t
 
   !> A finite, non-periodic edge of a surface joint's parameter domain; its
   !> event is placed `margin` inside it (domain_edge_margin).
@@ -94,12 +119,18 @@ module kinetostatics_mechanism
     integer, allocatable :: role(:)
     type(element_box_t), allocatable :: elements(:)
     type(loop_t), allocatable :: loops(:)
+    type(rate_constraint_t), allocatable :: rate_constraints(:)
     type(contact_t), allocatable :: contacts(:)
     type(contact_state_t), allocatable :: contact_states(:)   ! kinematics at the last law evaluation
     type(force_law_box_t), allocatable :: laws(:)
     type(surface_edge_t), allocatable :: edges(:)
     integer :: n_frames = 0, n_scalars = 0, n_elements = 0, n_laws = 0, f = 0, r = 0
+    integer :: ns = 0                         !< number of speeds (independent rates); f without rate constraints
+    integer :: nd = 0                         !< number of dependent rates sigma
     integer, allocatable :: q(:), beta(:), closure(:)
+    integer, allocatable :: speeds(:)         ! positions in q of the speeds
+    integer, allocatable :: sigma(:), rate_outputs(:)   ! scalar indices: dependent rates, constraint outputs
+    integer, allocatable :: kinematic(:)      ! scalar indices of the kinematic coordinates
     real(wp), allocatable :: target(:)
     type(nonlinear_options_t) :: closure_options = nonlinear_options_t(xtol=1e-12_wp, &
       residual_tolerance=1e-8_wp)
@@ -109,7 +140,9 @@ module kinetostatics_mechanism
     logical :: converged = .false.             !< beta holds it (else start_r does: the last solve failed)
     ! results of the last evaluation
     real(wp), allocatable :: lambda(:)        ! cut forces of the closure measurements
-    real(wp), allocatable :: qdd(:)
+    real(wp), allocatable :: mu(:)            ! cut forces of the rate constraints
+    real(wp), allocatable :: rates(:)         ! q' of every coordinate (f), from the last set_velocities
+    real(wp), allocatable :: qdd(:)           ! s' of the speeds (ns)
     real(wp), allocatable :: mass(:, :), bias(:)   ! M and Q_bar0 = -Q^
     real(wp), allocatable :: normal(:)        ! N of every contact (from the last dynamics)
     real(wp), allocatable :: law_factor(:)    ! 1 for explicit laws, |N| for scaled ones
@@ -119,6 +152,8 @@ module kinetostatics_mechanism
     integer :: closure_solves = 0, hybrj_solves = 0
     ! work arrays
     real(wp), allocatable :: jbeta(:, :), jlu(:, :), work_r(:), gq(:)
+    real(wp), allocatable :: jx(:, :), jxlu(:, :), work_x(:)   ! the combined [beta'; sigma'] system
+    integer, allocatable :: ipiv_x(:)
     real(wp), allocatable :: x_r(:), start_r(:), res_r(:), work_f(:), work_c(:)   ! (gfortran puts
                                                                                   ! automatic arrays on the heap)
     real(wp), allocatable :: unit_power(:)
@@ -130,6 +165,7 @@ module kinetostatics_mechanism
     integer, allocatable :: ipiv(:), ipiv_block(:)
   contains
     procedure :: add_frame, add_scalar, add_element, add_loop, add_contact, add_law, set_coordinates, finalize
+    procedure :: add_rate_constraint, set_kinematic, set_loop_branch
     procedure :: frame_index, scalar_index, contact_index, law_index
     procedure :: residual => mechanism_residual
     procedure :: jacobian => mechanism_jacobian
@@ -159,7 +195,7 @@ contains
     class(mechanism_t), intent(inout) :: self
     if (self%n_frames > 0) return
     allocate (self%frames(1), self%frame_names(1), self%scalars(0), self%scalar_names(0), self%role(0))
-    allocate (self%elements(0), self%loops(0), self%contacts(0), self%laws(0))
+    allocate (self%elements(0), self%loops(0), self%contacts(0), self%laws(0), self%rate_constraints(0))
     self%frame_names(1) = 'ground'
     self%n_frames = 1
   end subroutine ensure_ground
@@ -216,6 +252,56 @@ contains
     self%role(measurements) = ROLE_MEASURE
     self%role(dependents) = ROLE_BETA
   end subroutine add_loop
+
+  !> The branch of loop `name`: the z axes of frames frame_1 and frame_2 must
+  !> point against each other (z_1 . z_2 < 0), as the normals of two surfaces
+  !> in contact do; conditions like g4, g5 of (3.86) also hold on the branch
+  !> with parallel normals. A closure that lands there fails with
+  !> STATUS_DOMAIN (at the start: bad input; in a run: the step is shortened).
+  subroutine set_loop_branch(self, name, frame_1, frame_2, status)
+    class(mechanism_t), intent(inout) :: self
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame_1, frame_2
+    type(status_t), intent(inout) :: status
+    integer :: k
+    do k = 1, size(self%loops)
+      if (self%loops(k)%name == name) then
+        self%loops(k)%antiparallel = [frame_1, frame_2]
+        return
+      end if
+    end do
+    call set_status(status, STATUS_INVALID_INPUT, 'set_loop_branch: there is no loop '''//name//'''')
+  end subroutine set_loop_branch
+
+  !> A velocity-level constraint: the rates of the scalars `outputs` (written by
+  !> constraint elements) must vanish; the rates of the coordinates
+  !> `dependents` (as many, among set_coordinates) follow from that.
+  subroutine add_rate_constraint(self, name, outputs, dependents, status)
+    class(mechanism_t), intent(inout) :: self
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: outputs(:), dependents(:)
+    type(status_t), intent(inout) :: status
+    type(rate_constraint_t) :: c
+    call ensure_ground(self)
+    if (size(outputs) /= size(dependents)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'rate constraint '''//name//''': needs as many '// &
+                      'outputs as coordinates with dependent rates')
+      return
+    end if
+    c%name = name
+    c%outputs = outputs
+    c%dependents = dependents
+    self%rate_constraints = [self%rate_constraints, c]
+    self%role(outputs) = ROLE_MEASURE
+  end subroutine add_rate_constraint
+
+  !> Coordinates (among set_coordinates) whose rates an element writes in its
+  !> velocity pass: integrated, but neither speeds nor solved.
+  subroutine set_kinematic(self, scalars)
+    class(mechanism_t), intent(inout) :: self
+    integer, intent(in) :: scalars(:)
+    self%kinematic = scalars
+  end subroutine set_kinematic
 
   !> A contact between the body carrying frame_a (1: the ground) and the body
   !> carrying frame_b at the contact-point frame point_frame (origin at the
@@ -331,6 +417,8 @@ contains
       self%target = [self%target, self%loops(k)%targets]
     end do
     self%r = size(self%beta)
+    call find_speeds(self, status)
+    if (.not. status%ok()) return
     nc = size(self%contacts)
     call check_contacts(self, status)
     if (status%ok()) call check_laws(self, status)
@@ -359,16 +447,22 @@ contains
     end do
     self%law_root_start(self%n_laws + 1) = nr + 1
 
-    allocate (self%lambda(self%r), self%qdd(self%f), self%mass(self%f, self%f), self%bias(self%f))
-    allocate (self%jbeta(self%r, self%r), self%jlu(self%r, self%r), self%work_r(self%r), self%gq(self%f))
-    allocate (self%x_r(self%r), self%start_r(self%r), self%res_r(self%r), self%work_f(self%f), self%work_c(nc))
-    allocate (self%contact_states(nc), self%normal(nc), self%law_factor(self%n_laws), self%law_power(self%n_laws), &
-              self%unit_power(self%n_laws), self%law_roots(nr))
-    allocate (self%chol(self%f, self%f), self%g_mat(nc, self%f), self%p_mat(self%f, ns), &
-              self%h_mat(nc, ns), self%n0(nc), self%block(self%f + nb, self%f + nb), &
-              self%block_rhs(self%f + nb), self%signs(nb))
-    allocate (self%ipiv(max(self%r, 1)), self%ipiv_block(self%f + nb))
+    associate (n => self%ns, nx => self%r + self%nd)
+      allocate (self%lambda(self%r), self%mu(self%nd), self%rates(self%f), self%qdd(n), self%mass(n, n), &
+                self%bias(n))
+      allocate (self%jbeta(self%r, self%r), self%jlu(self%r, self%r), self%work_r(self%r), self%gq(n))
+      allocate (self%jx(nx, nx), self%jxlu(nx, nx), self%work_x(nx), self%ipiv_x(max(nx, 1)))
+      allocate (self%x_r(self%r), self%start_r(self%r), self%res_r(self%r), self%work_f(n), self%work_c(nc))
+      allocate (self%contact_states(nc), self%normal(nc), self%law_factor(self%n_laws), &
+                self%law_power(self%n_laws), self%unit_power(self%n_laws), self%law_roots(nr))
+      allocate (self%chol(n, n), self%g_mat(nc, n), self%p_mat(n, ns), &
+                self%h_mat(nc, ns), self%n0(nc), self%block(n + nb, n + nb), &
+                self%block_rhs(n + nb), self%signs(nb))
+      allocate (self%ipiv(max(self%r, 1)), self%ipiv_block(n + nb))
+    end associate
     self%lambda = 0
+    self%mu = 0
+    self%rates = 0
     self%qdd = 0
     self%normal = 0
     self%law_factor = 1
@@ -376,6 +470,43 @@ contains
     self%law_roots = 1
     self%ready = .true.
   end subroutine finalize
+
+  !> Dependent rates, constraint outputs and kinematic coordinates must be
+  !> coordinates; the speeds are the other coordinates.
+  subroutine find_speeds(self, status)
+    class(mechanism_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
+    integer :: k
+    logical :: free(self%f)
+    if (.not. allocated(self%kinematic)) allocate (self%kinematic(0))
+    allocate (self%sigma(0), self%rate_outputs(0))
+    do k = 1, size(self%rate_constraints)
+      self%sigma = [self%sigma, self%rate_constraints(k)%dependents]
+      self%rate_outputs = [self%rate_outputs, self%rate_constraints(k)%outputs]
+    end do
+    self%nd = size(self%sigma)
+    free = .true.
+    do k = 1, self%nd
+      if (.not. any(self%q == self%sigma(k))) then
+        call set_status(status, STATUS_INVALID_INPUT, 'rate constraint: '''//trim(self%scalar_names(self%sigma(k)))// &
+                        ''' must be a generalized coordinate to have a dependent rate')
+        return
+      end if
+      free(findloc(self%q, self%sigma(k), dim=1)) = .false.
+    end do
+    do k = 1, size(self%kinematic)
+      if (.not. any(self%q == self%kinematic(k))) then
+        call set_status(status, STATUS_INVALID_INPUT, 'kinematic coordinate '''// &
+                        trim(self%scalar_names(self%kinematic(k)))//''' must be a generalized coordinate')
+        return
+      end if
+      free(findloc(self%q, self%kinematic(k), dim=1)) = .false.
+    end do
+    self%speeds = pack([(k, k = 1, self%f)], free)
+    self%ns = size(self%speeds)
+    if (self%ns < 1) call set_status(status, STATUS_INVALID_INPUT, 'mechanism: no independent speeds '// &
+      '(every coordinate''s rate is constrained or kinematic)')
+  end subroutine find_speeds
 
   subroutine check_contacts(self, status)
     class(mechanism_t), intent(inout) :: self
@@ -479,8 +610,9 @@ contains
   end subroutine acceleration_pass
 
   !> Clears all forces, puts the cut forces lambda on the closure measurements
-  !> and the laws' loads selected by `loads` (LOADS_*) on their frames, and
-  !> runs the elements backwards.
+  !> (and mu, a component, on the rate constraints' outputs) and the laws'
+  !> loads selected by `loads` (LOADS_*) on their frames, and runs the elements
+  !> backwards.
   subroutine force_pass(self, inertia, applied, lambda, loads)
     class(mechanism_t), intent(inout) :: self
     logical, intent(in) :: inertia, applied
@@ -494,6 +626,9 @@ contains
     self%scalars%force = 0
     do k = 1, self%r
       self%scalars(self%closure(k))%force = lambda(k)
+    end do
+    do k = 1, self%nd
+      self%scalars(self%rate_outputs(k))%force = self%mu(k)
     end do
     select case (loads)
     case (LOADS_NONE)
@@ -569,6 +704,9 @@ contains
     do i = 1, self%f
       self%scalars(self%q(i))%qd = 0
     end do
+    do i = 1, self%nd
+      self%scalars(self%sigma(i))%qd = 0
+    end do
     do k = 1, self%r
       do i = 1, self%r
         self%scalars(self%beta(i))%qd = 0
@@ -580,6 +718,51 @@ contains
       end do
     end do
   end subroutine closure_jacobian
+
+  !> With rate constraints: J_x of the unknown rates [beta'; sigma'] against
+  !> [g'; c], one velocity pass per column (all other rates zero), LU-factored
+  !> into jxlu. Destroys the velocity state.
+  subroutine factor_rates(self, status)
+    class(mechanism_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
+    type(status_t) :: lapack
+    integer :: k, i, zero_pivot
+    if (self%nd == 0 .or. .not. status%ok()) return
+    do i = 1, self%f
+      self%scalars(self%q(i))%qd = 0
+    end do
+    do k = 1, self%r + self%nd
+      do i = 1, self%r
+        self%scalars(self%beta(i))%qd = 0
+      end do
+      do i = 1, self%nd
+        self%scalars(self%sigma(i))%qd = 0
+      end do
+      if (k <= self%r) then
+        self%scalars(self%beta(k))%qd = 1
+      else
+        self%scalars(self%sigma(k - self%r))%qd = 1
+      end if
+      call self%velocity_pass()
+      do i = 1, self%r
+        self%jx(i, k) = self%scalars(self%closure(i))%qd
+      end do
+      do i = 1, self%nd
+        self%jx(self%r + i, k) = self%scalars(self%rate_outputs(i))%qd
+      end do
+    end do
+    self%jxlu = self%jx
+    call lu_factor(self%jxlu, self%ipiv_x, lapack, zero_pivot)
+    if (.not. lapack%ok()) then
+      if (zero_pivot > self%r) then
+        call set_status(status, STATUS_NOT_CONVERGED, 'the rate constraints are singular: the rate of '''// &
+          trim(self%scalar_names(self%sigma(zero_pivot - self%r)))//''' does not move their outputs')
+      else
+        call set_status(status, STATUS_NOT_CONVERGED, 'the closure and rate constraints are singular at '// &
+                        describe_dependent(self, zero_pivot))
+      end if
+    end if
+  end subroutine factor_rates
 
   !> J_beta at the current positions, LU-factored into jlu.
   subroutine factor_closure(self, status)
@@ -634,7 +817,7 @@ contains
   end function worst_loop
 
   !> Sets q, closes the loops (beta from the last solution), leaves the
-  !> positions evaluated and J_beta factored.
+  !> positions evaluated and J_beta (and J_x with rate constraints) factored.
   subroutine set_positions(self, q, status)
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: q(:)
@@ -642,13 +825,16 @@ contains
     type(nonlinear_result_t) :: result
     type(status_t) :: solve_status
     integer :: k, it
-    logical :: converged
+    logical :: converged, predicted
 
+    predicted = self%r > 0 .and. self%converged
+    if (predicted) call predict_dependents(self, q)
     do k = 1, self%f
       self%scalars(self%q(k))%q = q(k)
     end do
     if (self%r == 0) then
       call self%position_pass(status)
+      call factor_rates(self, status)
       return
     end if
     self%closure_solves = self%closure_solves + 1
@@ -661,8 +847,9 @@ contains
       end do
     end if
     self%converged = .false.
-    ! Newton from the warm start
+    ! Newton from the warm start, moved by the predictor
     x = start
+    if (predicted) x = start - self%work_r
     converged = .false.
     do it = 1, 4
       call self%residual(x, res, status)
@@ -718,9 +905,57 @@ contains
       call prefix_status(status, 'closure')
       return
     end if
+    call check_branches(self, status)
+    if (.not. status%ok()) return
     self%warm = .true.
     self%converged = .true.
+    call factor_rates(self, status)
   end subroutine set_positions
+
+  !> The tangent predictor of the warm start: the elements still hold the
+  !> geometry of the last solution (q0, beta0) and J_beta is factored there,
+  !> so one velocity pass with q' = q - q0, beta' = 0 gives J_q (q - q0), and
+  !> beta0 - J_beta^-1 J_q (q - q0) is the start, right to second order in
+  !> q - q0 (a rolling ball turns by radians between two right-hand sides of
+  !> a large step: from the old beta Newton can reach the other branch).
+  !> Leaves the correction J_beta^-1 J_q (q - q0) in work_r; destroys the
+  !> velocity state.
+  subroutine predict_dependents(self, q)
+    class(mechanism_t), intent(inout) :: self
+    real(wp), intent(in) :: q(:)
+    type(status_t) :: lapack
+    integer :: k
+    self%scalars%qd = 0
+    do k = 1, self%f
+      self%scalars(self%q(k))%qd = q(k) - self%scalars(self%q(k))%q
+    end do
+    call self%velocity_pass()
+    do k = 1, self%r
+      self%work_r(k) = self%scalars(self%closure(k))%qd
+    end do
+    call lu_solve(self%jlu, self%ipiv, self%work_r, lapack)   ! sizes fixed at finalize: cannot fail
+  end subroutine predict_dependents
+
+  !> Every loop with a branch condition on it (set_loop_branch).
+  subroutine check_branches(self, status)
+    class(mechanism_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
+    integer :: k
+    real(wp) :: c
+    do k = 1, size(self%loops)
+      associate (pair => self%loops(k)%antiparallel)
+        if (pair(1) == 0) cycle
+        c = dot_product(self%frames(pair(1))%rot(:, 3), self%frames(pair(2))%rot(:, 3))
+        if (c > 0) then
+          call set_status(status, STATUS_DOMAIN, 'loop '''//self%loops(k)%name//''' closed on the branch '// &
+            'with parallel normals (z of '''//trim(self%frame_names(pair(1)))//''' . z of '''// &
+            trim(self%frame_names(pair(2)))//''' = '//format_short(c)//'), not on the physical one')
+          self%converged = .false.
+          return
+        end if
+      end associate
+    end do
+  end subroutine check_branches
 
   !> At the start: the loops must close from the given beta and J_beta must be
   !> well conditioned (reciprocal condition number above 1e-10).
@@ -750,56 +985,102 @@ contains
     end if
   end subroutine check_start
 
-  !> Sets q' (positions already set) and beta' (3.30).
-  subroutine set_velocities(self, qd)
+  !> Sets the speeds s (positions already set): the rates of the speed
+  !> coordinates, then beta' (3.30) and the dependent rates sigma' from
+  !> [g'; c] = 0; `rates` gets q' of every coordinate (kinematic ones from
+  !> their elements). Without rate constraints and kinematic coordinates s = q'.
+  subroutine set_velocities(self, s)
     class(mechanism_t), intent(inout) :: self
-    real(wp), intent(in) :: qd(:)
-    type(status_t) :: lapack
-    integer :: k
-    do k = 1, self%f
-      self%scalars(self%q(k))%qd = qd(k)
-    end do
-    do k = 1, self%r
-      self%scalars(self%beta(k))%qd = 0
-    end do
-    call self%velocity_pass()
-    if (self%r == 0) return
-    do k = 1, self%r
-      self%work_r(k) = self%scalars(self%closure(k))%qd
-    end do
-    call lu_solve(self%jlu, self%ipiv, self%work_r, lapack)   ! sizes fixed at finalize: cannot fail
-    do k = 1, self%r
-      self%scalars(self%beta(k))%qd = -self%work_r(k)
-    end do
-    call self%velocity_pass()
+    real(wp), intent(in) :: s(:)
+    call set_rates(self, s, 1)
   end subroutine set_velocities
 
-  !> Sets q'' (velocities already set) and beta'' (3.31).
-  subroutine set_accelerations(self, qdd)
+  !> Sets s' (velocities already set): beta'' (3.31) and sigma'' from [g''; c'] = 0.
+  subroutine set_accelerations(self, sd)
     class(mechanism_t), intent(inout) :: self
-    real(wp), intent(in) :: qdd(:)
-    type(status_t) :: lapack
-    integer :: k
-    do k = 1, self%f
-      self%scalars(self%q(k))%qdd = qdd(k)
-    end do
-    do k = 1, self%r
-      self%scalars(self%beta(k))%qdd = 0
-    end do
-    call self%acceleration_pass()
-    if (self%r == 0) return
-    do k = 1, self%r
-      self%work_r(k) = self%scalars(self%closure(k))%qdd
-    end do
-    call lu_solve(self%jlu, self%ipiv, self%work_r, lapack)   ! sizes fixed at finalize: cannot fail
-    do k = 1, self%r
-      self%scalars(self%beta(k))%qdd = -self%work_r(k)
-    end do
-    call self%acceleration_pass()
+    real(wp), intent(in) :: sd(:)
+    call set_rates(self, sd, 2)
   end subroutine set_accelerations
 
-  !> Generalized forces at the q's (into gq) with the loops in equilibrium:
-  !> lambda = -J_beta^-T Q^_beta (3.32)-(3.33). `loads` selects the laws' loads (LOADS_*).
+  !> Level 1 (velocities) or 2 (accelerations) of the above.
+  subroutine set_rates(self, given, level)
+    class(mechanism_t), intent(inout) :: self
+    real(wp), intent(in) :: given(:)
+    integer, intent(in) :: level
+    type(status_t) :: lapack
+    integer :: k
+    do k = 1, self%ns
+      call put(self%q(self%speeds(k)), given(k))
+    end do
+    do k = 1, self%r
+      call put(self%beta(k), 0.0_wp)
+    end do
+    do k = 1, self%nd
+      call put(self%sigma(k), 0.0_wp)
+    end do
+    call pass()
+    if (self%r + self%nd > 0) then
+      if (self%nd == 0) then
+        do k = 1, self%r
+          self%work_r(k) = value_of(self%closure(k))
+        end do
+        call lu_solve(self%jlu, self%ipiv, self%work_r, lapack)   ! sizes fixed at finalize: cannot fail
+        do k = 1, self%r
+          call put(self%beta(k), -self%work_r(k))
+        end do
+      else
+        do k = 1, self%r
+          self%work_x(k) = value_of(self%closure(k))
+        end do
+        do k = 1, self%nd
+          self%work_x(self%r + k) = value_of(self%rate_outputs(k))
+        end do
+        call lu_solve(self%jxlu, self%ipiv_x, self%work_x, lapack)
+        do k = 1, self%r
+          call put(self%beta(k), -self%work_x(k))
+        end do
+        do k = 1, self%nd
+          call put(self%sigma(k), -self%work_x(self%r + k))
+        end do
+      end if
+      call pass()
+    end if
+    if (level == 1) then
+      do k = 1, self%f
+        self%rates(k) = self%scalars(self%q(k))%qd
+      end do
+    end if
+  contains
+    subroutine put(i, x)
+      integer, intent(in) :: i
+      real(wp), intent(in) :: x
+      if (level == 1) then
+        self%scalars(i)%qd = x
+      else
+        self%scalars(i)%qdd = x
+      end if
+    end subroutine put
+    real(wp) function value_of(i)
+      integer, intent(in) :: i
+      if (level == 1) then
+        value_of = self%scalars(i)%qd
+      else
+        value_of = self%scalars(i)%qdd
+      end if
+    end function value_of
+    subroutine pass()
+      if (level == 1) then
+        call self%velocity_pass()
+      else
+        call self%acceleration_pass()
+      end if
+    end subroutine pass
+  end subroutine set_rates
+
+  !> Generalized forces at the speeds (into gq) with the loops and rate
+  !> constraints in equilibrium: lambda = -J_beta^-T Q^_beta (3.32)-(3.33), or
+  !> [lambda; mu] = -J_x^-T [Q^_beta; Q^_sigma]. `loads` selects the laws'
+  !> loads (LOADS_*).
   subroutine inverse_dynamics(self, inertia, applied, loads)
     class(mechanism_t), intent(inout) :: self
     logical, intent(in) :: inertia, applied
@@ -807,8 +1088,20 @@ contains
     type(status_t) :: lapack
     integer :: k
     self%lambda = 0
+    self%mu = 0
     call self%force_pass(inertia, applied, self%lambda, loads)
-    if (self%r > 0) then
+    if (self%nd > 0) then
+      do k = 1, self%r
+        self%work_x(k) = self%scalars(self%beta(k))%force
+      end do
+      do k = 1, self%nd
+        self%work_x(self%r + k) = self%scalars(self%sigma(k))%force
+      end do
+      call lu_solve(self%jxlu, self%ipiv_x, self%work_x, lapack, transpose=.true.)   ! cannot fail (sizes fixed)
+      self%lambda = -self%work_x(1:self%r)
+      self%mu = -self%work_x(self%r + 1:)
+      call self%force_pass(inertia, applied, self%lambda, loads)
+    else if (self%r > 0) then
       do k = 1, self%r
         self%lambda(k) = self%scalars(self%beta(k))%force
       end do
@@ -816,8 +1109,8 @@ contains
       self%lambda = -self%lambda
       call self%force_pass(inertia, applied, self%lambda, loads)
     end if
-    do k = 1, self%f
-      self%gq(k) = self%scalars(self%q(k))%force
+    do k = 1, self%ns
+      self%gq(k) = self%scalars(self%q(self%speeds(k)))%force
     end do
   end subroutine inverse_dynamics
 
@@ -877,7 +1170,8 @@ contains
 
   ! ------------------------------------------------------ equations of motion
 
-  !> q'' from M(q) q'' + Q^(q, q') = Q_applied (3.36), with every force law
+  !> s' from M(q) s' + Q^(q, s) = Q_applied (3.36) (s = q' without rate
+  !> constraints and kinematic coordinates; qd is s, qdd is s'), with every force law
   !> and the normal forces of the contacts (see the module comment). Leaves M
   !> in `mass`, Q_bar0 in `bias`, q'' in `qdd`, the normal forces in `normal`,
   !> the laws' powers in `law_power`. The velocity and acceleration states are
@@ -914,7 +1208,7 @@ contains
       self%frames(k)%v = 0
     end do
     self%scalars%qd = 0
-    do i = 1, self%f
+    do i = 1, self%ns
       self%work_f = 0
       self%work_f(i) = 1
       call self%set_accelerations(self%work_f)
@@ -922,15 +1216,15 @@ contains
       self%mass(:, i) = -self%gq
       if (nc > 0) call self%normal_forces(self%g_mat(:, i))
     end do
-    do i = 1, self%f   ! symmetric part, element-wise (no temporary)
-      do k = 1, self%f
+    do i = 1, self%ns   ! symmetric part, element-wise (no temporary)
+      do k = 1, self%ns
         self%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
       end do
     end do
     call cholesky_factor(self%chol, lapack, column)
     if (.not. lapack%ok()) then
       call set_status(status, STATUS_DOMAIN, 'the mass matrix is not positive definite: generalized '// &
-        'coordinate '''//trim(self%scalar_names(self%q(column)))//''' has no inertia (a massless body or '// &
+        'coordinate '''//trim(self%scalar_names(self%q(self%speeds(column))))//''' has no inertia (a massless body or '// &
         'a mass without rotational inertia on a pure rotation)')
       return
     end if
@@ -953,22 +1247,22 @@ contains
     consistent = .false.
     do it = 1, 6
       self%block = 0
-      self%block(1:self%f, 1:self%f) = self%mass
+      self%block(1:self%ns, 1:self%ns) = self%mass
       do j = 1, nb
-        self%block(self%f + j, 1:self%f) = -self%g_mat(self%block_contact(j), :)
-        self%block(self%f + j, self%f + j) = 1
+        self%block(self%ns + j, 1:self%ns) = -self%g_mat(self%block_contact(j), :)
+        self%block(self%ns + j, self%ns + j) = 1
       end do
       do k = 1, ns
         j = self%block_row(k)
-        self%block(1:self%f, self%f + j) = self%block(1:self%f, self%f + j) - self%p_mat(:, k)*self%signs(j)
+        self%block(1:self%ns, self%ns + j) = self%block(1:self%ns, self%ns + j) - self%p_mat(:, k)*self%signs(j)
         do i = 1, nb
-          self%block(self%f + i, self%f + j) = self%block(self%f + i, self%f + j) &
+          self%block(self%ns + i, self%ns + j) = self%block(self%ns + i, self%ns + j) &
                                                - self%h_mat(self%block_contact(i), k)*self%signs(j)
         end do
       end do
-      self%block_rhs(1:self%f) = self%bias
+      self%block_rhs(1:self%ns) = self%bias
       do j = 1, nb
-        self%block_rhs(self%f + j) = self%n0(self%block_contact(j))
+        self%block_rhs(self%ns + j) = self%n0(self%block_contact(j))
       end do
       call lu_factor(self%block, self%ipiv_block, lapack)
       if (.not. lapack%ok()) then
@@ -980,7 +1274,7 @@ contains
       consistent = .true.
       do j = 1, nb
         s_old = self%signs(j)
-        if (self%block_rhs(self%f + j)*s_old < 0) then
+        if (self%block_rhs(self%ns + j)*s_old < 0) then
           consistent = .false.
           self%signs(j) = -s_old
         end if
@@ -993,15 +1287,15 @@ contains
                       'Painleve-type paradox)')
       return
     end if
-    qdd = self%block_rhs(1:self%f)
+    qdd = self%block_rhs(1:self%ns)
     self%qdd = qdd
     call affine_normal_forces(self, qdd)
     do k = 1, ns
       j = self%block_row(k)
-      self%normal = self%normal + self%h_mat(:, k)*self%signs(j)*self%block_rhs(self%f + j)
+      self%normal = self%normal + self%h_mat(:, k)*self%signs(j)*self%block_rhs(self%ns + j)
     end do
     do j = 1, nb
-      self%normal(self%block_contact(j)) = self%block_rhs(self%f + j)
+      self%normal(self%block_contact(j)) = self%block_rhs(self%ns + j)
     end do
     self%law_power = self%unit_power
     do k = 1, ns
@@ -1017,7 +1311,7 @@ contains
     real(wp), intent(in) :: qdd(:)
     integer :: i
     self%normal = self%n0
-    do i = 1, self%f   ! no matmul: its result would be a heap temporary
+    do i = 1, self%ns   ! no matmul: its result would be a heap temporary
       self%normal = self%normal + self%g_mat(:, i)*qdd(i)
     end do
   end subroutine affine_normal_forces
@@ -1031,7 +1325,7 @@ contains
     real(wp), intent(in) :: t, q(:), qd(:)
     real(wp), intent(out) :: residual
     type(status_t), intent(inout) :: status
-    real(wp) :: qdd(self%f)
+    real(wp) :: qdd(self%ns)
     integer :: c
     residual = huge(1.0_wp)
     call self%dynamics(t, q, qd, qdd, status)

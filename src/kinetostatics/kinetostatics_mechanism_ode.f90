@@ -1,11 +1,13 @@
 !> A mechanism as a model of the integration driver (numerics_event_driver):
 !> an ODE system with records and events.
 !>
-!> State y = [q, q', W]: the generalized coordinates, their rates, and one
-!> quadrature state per force law, W_k' = P_k (the law's power), so that
-!> E(t) - E(0) = sum_k W_k holds to the integrator's tolerance (E: kinetic +
-!> gravitational energy of the mass elements). Only `state_size`,
-!> `initial_state`, `rhs` and `record` know this layout.
+!> State y = [q, s, W]: the generalized coordinates, the speeds (their rates
+!> q' = B(q) s; s = q' unless the mechanism has rate constraints or kinematic
+!> coordinates, kinetostatics_mechanism), and one quadrature state per force
+!> law, W_k' = P_k (the law's power), so that E(t) - E(0) = sum_k W_k holds to
+!> the integrator's tolerance (E: kinetic + gravitational energy of the mass
+!> elements). Only `state_size`, `initial_state`, `rhs` and `record` know
+!> this layout.
 !>
 !> Root functions, in this order:
 !>   user crossings  y(event_index(k)) - event_value(k): a coordinate (1..f) or
@@ -20,7 +22,12 @@
 !>   lift-off        N of every one-sided contact: falling through zero stops
 !>                   the run (EVENT_STOP, outcome 'lift-off ...');
 !>   force laws      each law's own (kinetostatics_force_law), handled by the
-!>                   law (e.g. switch itself and ask for a restart).
+!>                   law (e.g. switch itself and ask for a restart);
+!>   charts          the chart margin of every element with a chart whose
+!>                   deciding coordinate is integrated (a free rotation:
+!>                   cos q2 - cos(limit), kinetostatics_free_rotation): at
+!>                   zero the chart is re-based on the current pose (q and s
+!>                   change, the motion does not) and the integrator restarts.
 !> Root values need the state at (t, y): the edges only the closure, the laws
 !> positions and velocities, lift-off the whole dynamics (N depends on q'').
 !> Every right-hand side stores the root values it implies together with
@@ -43,7 +50,7 @@ module kinetostatics_mechanism_ode
   use base_kinds, only: wp
   use base_text, only: format_short
   use base_status, only: status_t, set_status, STATUS_DOMAIN, STATUS_INVALID_INPUT
-  use numerics_event_driver, only: event_system_t, EVENT_IGNORE, EVENT_RECORD, EVENT_STOP
+  use numerics_event_driver, only: event_system_t, EVENT_IGNORE, EVENT_RECORD, EVENT_STOP, EVENT_RESTART
   use kinetostatics_mechanism, only: mechanism_t
   use kinetostatics_recorder, only: mechanism_series_t
   implicit none (type, external)
@@ -64,6 +71,9 @@ module kinetostatics_mechanism_ode
     real(wp) :: cache_t = 0
     real(wp), allocatable :: cache_y(:), cache_g(:), work_ydot(:)
     real(wp), allocatable :: root_scale(:)     ! largest |g_i| met in the run
+    integer, allocatable :: charts(:)          ! elements whose charts are watched
+    integer, allocatable :: chart_angle(:)     ! position in y of each one's deciding coordinate
+    integer :: chart_changes = 0
   contains
     procedure :: state_size, initial_state, check_start, start_series
     procedure :: rhs => mechanism_rhs
@@ -77,10 +87,11 @@ contains
 
   integer function state_size(self) result(n)
     class(mechanism_ode_t), intent(in) :: self
-    n = 2*self%mechanism%f + self%mechanism%n_laws
+    n = self%mechanism%f + self%mechanism%ns + self%mechanism%n_laws
   end function state_size
 
-  !> y0 = [q0, q0', 0]; also prepares the work arrays of the root functions.
+  !> y0 = [q0, s0, 0] (s0 = q0' without rate constraints); also prepares the
+  !> work arrays of the root functions.
   function initial_state(self, q0, qd0) result(y0)
     class(mechanism_ode_t), intent(inout) :: self
     real(wp), intent(in) :: q0(:), qd0(:)
@@ -89,8 +100,25 @@ contains
     call prepare(self)
   end function initial_state
 
+  !> The elements with a chart decided by an integrated coordinate.
+  subroutine find_charts(self)
+    class(mechanism_ode_t), intent(inout) :: self
+    integer :: k, a
+    allocate (self%charts(0), self%chart_angle(0))
+    associate (m => self%mechanism)
+      do k = 1, m%n_elements
+        a = m%elements(k)%e%chart_angle()
+        if (a == 0) cycle
+        if (.not. any(m%q == a)) cycle
+        self%charts = [self%charts, k]
+        self%chart_angle = [self%chart_angle, findloc(m%q, a, dim=1)]
+      end do
+    end associate
+  end subroutine find_charts
+
   subroutine prepare(self)
     class(mechanism_ode_t), intent(inout) :: self
+    if (.not. allocated(self%charts)) call find_charts(self)
     if (allocated(self%cache_y)) then
       if (size(self%cache_y) == self%state_size()) return
       deallocate (self%cache_y, self%cache_g, self%work_ydot)
@@ -113,7 +141,7 @@ contains
     f = self%mechanism%f
     call self%mechanism%check_start(y0(1:f), status)
     if (.not. status%ok()) return
-    call self%mechanism%evaluate(0.0_wp, y0(1:f), y0(f + 1:2*f), residual, status)
+    call self%mechanism%evaluate(0.0_wp, y0(1:f), y0(f + 1:f + self%mechanism%ns), residual, status)
     if (.not. status%ok()) return
     do k = 1, size(self%mechanism%contacts)
       associate (c => self%mechanism%contacts(k))
@@ -139,15 +167,16 @@ contains
     real(wp), intent(in) :: t, y(:)
     real(wp), intent(out) :: ydot(:)
     type(status_t), intent(inout) :: status
-    integer :: f
+    integer :: f, n
     if (.not. allocated(self%cache_y)) call prepare(self)   ! once, if initial_state was not used
     f = self%mechanism%f
+    n = f + self%mechanism%ns
     self%rhs_count = self%rhs_count + 1
     self%cached = .false.
-    ydot(1:f) = y(f + 1:2*f)
-    call self%mechanism%dynamics(t, y(1:f), y(f + 1:2*f), ydot(f + 1:2*f), status)
+    call self%mechanism%dynamics(t, y(1:f), y(f + 1:n), ydot(f + 1:n), status)
     if (.not. status%ok()) return
-    ydot(2*f + 1:) = self%mechanism%law_power
+    ydot(1:f) = self%mechanism%rates
+    ydot(n + 1:) = self%mechanism%law_power
     if (self%root_count() == 0) return
     call root_values(self, y, 3)
     self%cache_t = t
@@ -159,6 +188,7 @@ contains
     class(mechanism_ode_t), intent(in) :: self
     n = size(self%mechanism%edges) + count(self%mechanism%contacts%one_sided) + size(self%mechanism%law_roots)
     if (allocated(self%event_index)) n = n + size(self%event_index)
+    if (allocated(self%charts)) n = n + size(self%charts)
   end function mechanism_root_count
 
   !> Number of user crossings.
@@ -173,7 +203,8 @@ contains
     real(wp), intent(in) :: t, y(:)
     real(wp), intent(out) :: g(:)
     type(status_t) :: status
-    integer :: f, level
+    integer :: f, n, level
+    if (.not. allocated(self%cache_y)) call prepare(self)
     self%root_calls = self%root_calls + 1
     if (self%cached .and. t == self%cache_t) then
       if (all(y == self%cache_y) .or. near_and_far_from_zero(self, y)) then
@@ -184,15 +215,16 @@ contains
       end if
     end if
     f = self%mechanism%f
+    n = f + self%mechanism%ns
     level = 1
     if (size(self%mechanism%law_roots) > 0) level = 2
     if (any(self%mechanism%contacts%one_sided)) level = 3
     select case (level)
     case (3)
-      call self%mechanism%dynamics(t, y(1:f), y(f + 1:2*f), self%work_ydot(1:f), status)
+      call self%mechanism%dynamics(t, y(1:f), y(f + 1:n), self%work_ydot(1:n - f), status)
     case (2)
       call self%mechanism%set_positions(y(1:f), status)
-      if (status%ok()) call self%mechanism%set_velocities(y(f + 1:2*f))
+      if (status%ok()) call self%mechanism%set_velocities(y(f + 1:n))
       if (status%ok()) call self%mechanism%evaluate_laws(t, status)
     case default
       if (size(self%mechanism%edges) > 0) call self%mechanism%set_positions(y(1:f), status)
@@ -238,7 +270,13 @@ contains
       i = i + 1
       self%cache_g(i) = y(self%event_index(k)) - self%event_value(k)
     end do
-    if (level < 1) return
+    if (level < 1) then   ! the charts from y too
+      i = size(self%cache_g) - size(self%charts)
+      do k = 1, size(self%charts)
+        self%cache_g(i + k) = self%mechanism%elements(self%charts(k))%e%chart_margin(y(self%chart_angle(k)))
+      end do
+      return
+    end if
     associate (m => self%mechanism)
       do k = 1, size(m%edges)
         i = i + 1
@@ -254,6 +292,10 @@ contains
         if (level >= 3) self%cache_g(i) = m%normal(k)
       end do
       if (level >= 2 .and. size(m%law_roots) > 0) self%cache_g(i + 1:i + size(m%law_roots)) = m%law_roots
+      i = i + size(m%law_roots)
+      do k = 1, size(self%charts)
+        self%cache_g(i + k) = m%elements(self%charts(k))%e%chart_margin(y(self%chart_angle(k)))
+      end do
     end associate
     if (level >= 3) self%root_scale = max(self%root_scale, abs(self%cache_g))
   end subroutine root_values
@@ -264,10 +306,11 @@ contains
     real(wp), intent(in) :: t, y(:)
     integer, intent(in) :: kind
     type(status_t), intent(inout) :: status
-    integer :: f
+    integer :: f, n
     f = self%mechanism%f
+    n = f + self%mechanism%ns
     if (.not. allocated(self%series%time)) call self%start_series(100)
-    call self%series%record(self%mechanism, t, y(1:f), y(f + 1:2*f), y(2*f + 1:), kind, status)
+    call self%series%record(self%mechanism, t, y(1:f), y(f + 1:n), y(n + 1:), kind, status)
   end subroutine mechanism_record
 
   subroutine mechanism_handle_event(self, t, y, fired, action, status)
@@ -279,8 +322,6 @@ contains
     type(status_t), intent(inout) :: status
     integer :: k, i, law_action
     character(len=:), allocatable :: where
-    associate (unused => y)
-    end associate
     self%cached = .false.
     action = EVENT_IGNORE
     where = ' at t = '//format_short(t)//' s'
@@ -326,8 +367,40 @@ contains
           action = max(action, law_action)
         end associate
       end do
+      i = i + size(m%law_roots)
+      do k = 1, size(self%charts)
+        if (fired(i + k) /= -1) cycle
+        call change_chart(self, self%charts(k), y, status)
+        if (.not. status%ok()) return
+        action = max(action, EVENT_RESTART)
+      end do
     end associate
   end subroutine mechanism_handle_event
+
+  !> Re-bases the chart of element k on the current pose and writes the new
+  !> coordinates and speeds into y.
+  subroutine change_chart(self, k, y, status)
+    class(mechanism_ode_t), intent(inout) :: self
+    integer, intent(in) :: k
+    real(wp), intent(inout) :: y(:)
+    type(status_t), intent(inout) :: status
+    integer :: f, n, i
+    associate (m => self%mechanism)
+      f = m%f
+      n = f + m%ns
+      call m%set_positions(y(1:f), status)
+      if (.not. status%ok()) return
+      call m%set_velocities(y(f + 1:n))
+      call m%elements(k)%e%rebase(m%scalars)
+      do i = 1, f
+        y(i) = m%scalars(m%q(i))%q
+      end do
+      do i = 1, m%ns
+        y(f + i) = m%scalars(m%q(m%speeds(i)))%qd
+      end do
+      self%chart_changes = self%chart_changes + 1
+    end associate
+  end subroutine change_chart
 
   subroutine add_outcome(self, text)
     class(mechanism_ode_t), intent(inout) :: self

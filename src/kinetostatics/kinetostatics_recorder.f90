@@ -21,7 +21,7 @@ module kinetostatics_recorder
     integer, allocatable :: law_contact(:)            ! contact of each law (0: none)
     real(wp), allocatable :: time(:)                   ! s
     integer, allocatable :: kind(:)                    ! RECORD_START, _OUTPUT or _EVENT (numerics_event_driver)
-    real(wp), allocatable :: q(:, :), qd(:, :), qdd(:, :)    ! f x n
+    real(wp), allocatable :: q(:, :), qd(:, :), qdd(:, :)    ! f x n: every coordinate, its rates
     real(wp), allocatable :: beta(:, :), lambda(:, :)  ! r x n
     real(wp), allocatable :: closure(:), residual(:)   ! n
     real(wp), allocatable :: kinetic(:), potential(:)  ! J
@@ -132,8 +132,12 @@ contains
     self%time(i) = t
     self%kind(i) = kind
     self%q(:, i) = q
-    self%qd(:, i) = qd
-    self%qdd(:, i) = m%qdd
+    ! the rates of every coordinate (qd holds the speeds, which differ from q'
+    ! under rate constraints or kinematic coordinates)
+    do k = 1, m%f
+      self%qd(k, i) = m%scalars(m%q(k))%qd
+      self%qdd(k, i) = m%scalars(m%q(k))%qdd
+    end do
     self%residual(i) = res
     do k = 1, m%r
       self%beta(k, i) = m%scalars(m%beta(k))%q

@@ -49,6 +49,9 @@ module kinetostatics_state
     procedure(motion_i), deferred :: acceleration
     procedure(force_i), deferred :: force
     procedure :: energy => element_energy
+    procedure :: chart_angle => element_chart_angle
+    procedure :: chart_margin => element_chart_margin
+    procedure :: rebase => element_rebase
   end type element_t
 
   type :: element_box_t
@@ -95,6 +98,34 @@ contains
     kinetic = 0
     potential = 0
   end subroutine element_energy
+
+  !> Elements with a chart of their own coordinates (a free rotation) return
+  !> the scalar whose value decides when the chart must change (default 0: no
+  !> chart). The mechanism's model watches chart_margin (positive inside the
+  !> chart) as a root function and calls rebase at its zero, with positions and
+  !> rates set; rebase keeps the motion and changes the coordinates' values and
+  !> rates (kinetostatics_free_rotation).
+  pure integer function element_chart_angle(self) result(k)
+    class(element_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    k = 0
+  end function element_chart_angle
+
+  pure real(wp) function element_chart_margin(self, angle) result(g)
+    class(element_t), intent(in) :: self
+    real(wp), intent(in) :: angle
+    associate (unused => self, unused_a => angle)
+    end associate
+    g = 1
+  end function element_chart_margin
+
+  pure subroutine element_rebase(self, scalars)
+    class(element_t), intent(inout) :: self
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    associate (unused => self, unused_s => scalars)
+    end associate
+  end subroutine element_rebase
 
   !> Rotation by `angle` (rad) about the unit vector e (Rodrigues).
   pure function axis_rotation(e, angle) result(r)

@@ -19,10 +19,12 @@ program test_velocity_contact
   use geometry_elementary, only: ellipsoid_t, paraboloid_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use kinetostatics_state, only: frame_state_t, scalar_state_t
+  use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
   use contact_velocity_level, only: velocity_contact_t, new_velocity_contact
   implicit none (type, external)
 
-  ! frames: 1 = K_1 (input), 2 = K_2 (output); scalars 1..5 = u1, v1, u2, v2, phi, 6..11 = pose
+  ! frames: 1 = K_1 (input), 2 = K_2 (output), 3 = K_1D (input, the surface joint on
+  ! S1 of K_1); scalars 1..5 = u1, v1, u2, v2, phi, 6..11 = pose
   real(wp), parameter :: times(3) = [0.0_wp, 0.37_wp, -0.81_wp]
   real(wp), parameter :: side_1 = 1, side_2 = -1
   type(ellipsoid_t) :: s1
@@ -36,15 +38,15 @@ program test_velocity_contact
   s2 = paraboloid_t(0.7_wp, 1.3_wp, 1.0_wp, st)
   call check(st%ok(), 'surfaces')
   do trial = 1, size(times)
-    element = new_velocity_contact('vc', 1, 2, s1, side_1, s2, side_2, [1, 2, 3, 4, 5], [6, 7, 8, 9, 10, 11], &
+    element = new_velocity_contact('vc', 1, 3, 2, s1, side_1, s2, side_2, [1, 2, 3, 4, 5], [6, 7, 8, 9, 10, 11], &
                                    relative_pose_rotation(times(trial)), .false.)
-    call check_element('velocity-level contact, sliding', element, [1], [1, 2, 3, 4, 5], [2], [integer ::], &
+    call check_element('velocity-level contact, sliding', element, [1, 3], [3, 4, 5], [2], [integer ::], &
                        times(trial), consistent_pose, 11)
     call pose_rates(times(trial))
     rolling_t0 = times(trial)
-    element = new_velocity_contact('vc', 1, 2, s1, side_1, s2, side_2, [1, 2, 3, 4, 5], [6, 7, 8, 9, 10, 11], &
+    element = new_velocity_contact('vc', 1, 3, 2, s1, side_1, s2, side_2, [1, 2, 3, 4, 5], [6, 7, 8, 9, 10, 11], &
                                    relative_pose_rotation(times(trial)), .true.)
-    call check_element('velocity-level contact, rolling', element, [1], [1, 2, 5], [2], [3, 4], times(trial), &
+    call check_element('velocity-level contact, rolling', element, [1, 3], [1, 2, 5], [2], [3, 4], times(trial), &
                        rolling_pose, 11)
     call no_slip(times(trial))
   end do
@@ -96,15 +98,35 @@ contains
     real(wp), intent(in) :: t
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
-    associate (unused_t => t, unused_f => frames)
+    integer :: i
+    associate (unused_t => t)
     end associate
+    do i = 1, 2   ! u1, v1 move (they are not the element's inputs while sliding)
+      call scalar_motion(i, t, scalars(i))
+    end do
     call set_pose(scalars)
+    call contact_frame(frames, scalars)
   end subroutine consistent_pose
+
+  !> K_1D = the surface joint on S1 of K_1 at (u1, v1), all levels.
+  subroutine contact_frame(frames, scalars)
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(surface_joint_t) :: joint
+    type(frame_state_t) :: local(2)
+    type(status_t) :: s
+    joint = new_surface_joint('s1', 1, 2, 1, 2, s1, side_1, 1.0_wp, 0.0_wp)
+    local(1) = frames(1)
+    call joint%position(local, scalars(1:2), s)
+    call joint%velocity(local, scalars(1:2))
+    call joint%acceleration(local, scalars(1:2))
+    frames(3) = local(2)
+  end subroutine contact_frame
 
   !> The pose rates written by the velocity pass against differences of the pose.
   subroutine pose_rates(t0)
     real(wp), intent(in) :: t0
-    type(frame_state_t) :: frames(2)
+    type(frame_state_t) :: frames(3)
     type(scalar_state_t) :: scalars(11)
     real(wp) :: pose(6, -2:2), rates(6)
     integer :: k, i
@@ -114,6 +136,7 @@ contains
         call scalar_motion(i, t0 + merge(0, k, k == 3)*motion_step, scalars(i))
       end do
       call set_pose(scalars)
+      call contact_frame(frames, scalars)
       call element%position(frames, scalars, st)
       call element%velocity(frames, scalars)
       if (k <= 2) pose(:, k) = scalars(6:11)%q
@@ -131,8 +154,6 @@ contains
     type(scalar_state_t), intent(inout) :: scalars(:)
     real(wp) :: y(2), k1(2), k2(2), k3(2), k4(2), s, dt
     integer :: n, i
-    associate (unused_f => frames)
-    end associate
     y = [initial(3), initial(4)]
     n = max(1, ceiling(abs(t - rolling_t0)/1e-4_wp))
     dt = (t - rolling_t0)/n
@@ -148,6 +169,7 @@ contains
     scalars(3)%q = y(1)
     scalars(4)%q = y(2)
     call set_pose(scalars)
+    call contact_frame(frames, scalars)
   end subroutine rolling_pose
 
   real(wp) function initial(k)
@@ -161,7 +183,7 @@ contains
   function rate(t, y) result(yd)
     real(wp), intent(in) :: t, y(2)
     real(wp) :: yd(2)
-    type(frame_state_t) :: frames(2)
+    type(frame_state_t) :: frames(3)
     type(scalar_state_t) :: scalars(11)
     type(velocity_contact_t) :: e
     integer :: i
@@ -173,6 +195,7 @@ contains
     scalars(3)%q = y(1)
     scalars(4)%q = y(2)
     call set_pose(scalars)
+    call contact_frame(frames, scalars)
     call e%position(frames, scalars, st)
     yd = matmul(e%ainv_b, [scalars(1)%qd, scalars(2)%qd])
   end function rate
@@ -181,7 +204,7 @@ contains
   !> bodies agree, 1W_1D = 2W_2D (3.85), i.e. the material points move alike.
   subroutine no_slip(t0)
     real(wp), intent(in) :: t0
-    type(frame_state_t) :: frames(2)
+    type(frame_state_t) :: frames(3)
     type(scalar_state_t) :: scalars(11)
     type(velocity_contact_t) :: e
     real(wp) :: slip(3), ref
@@ -195,7 +218,7 @@ contains
     call e%position(frames, scalars, st)
     call e%velocity(frames, scalars)
     slip = (frames(2)%v + cross(frames(2)%omega, e%joint_2%p)) - (frames(1)%v + cross(frames(1)%omega, e%joint_1%p))
-    ref = norm2(frames(1)%v) + norm2(frames(1)%omega)*norm2(e%joint_1%p)
+    ref = norm2(frames(1)%v) + norm2(frames(1)%omega)*norm2(e%joint_1%p) + norm2(frames(3)%v)
     call check(norm2(slip) <= 1e-14_wp*ref, 'rolling: no slip between the material points at the contact')
   end subroutine no_slip
 end program test_velocity_contact

@@ -45,7 +45,7 @@ contains
     scalars(1) = scalar_state_t(7.9_wp, 150.0_wp, 0.0_wp, 0.0_wp)
     scalars(2) = scalar_state_t(-1.2_wp, 3.0_wp, 0.0_wp, 0.0_wp)
     scalars(3) = scalar_state_t(0.8_wp, -20.0_wp, 0.0_wp, 0.0_wp)
-    call check_close(e%chart_margin(scalars), 0.0_wp, 0.0_wp, 1e-15_wp, 'chart margin is zero at the chart limit')
+    call check_close(e%chart_margin(scalars(2)%q), 0.0_wp, 0.0_wp, 1e-15_wp, 'chart margin is zero at the chart limit')
     call e%position(frames, scalars, st)
     call e%velocity(frames, scalars)
     rot0 = frames(2)%rot
@@ -91,7 +91,7 @@ contains
       q = q + dt/6*(k1 + 2*k2 + 2*k3 + k4)
       t = t + dt
       scalars%q = q
-      if (e%chart_margin(scalars) <= 0) then
+      if (e%chart_margin(scalars(2)%q) <= 0) then
         call e%position(frames, scalars, st)
         scalars%qd = rates_of(e, q, omega)
         call e%rebase(scalars)

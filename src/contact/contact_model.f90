@@ -1,0 +1,566 @@
+!> Mechanisms of bodies in point contact, built from a description: named
+!> shapes (surfaces in their body's coordinates), bodies (mass, centre, inertia
+!> or the homogeneous solid of a shape; start pose and twist) and contacts
+!> ("body_1 shape_1 touches body_2 shape_2", friction, rolling, position or
+!> velocity level). One generic builder; no mechanism is coded by hand.
+!>
+!> Every body other than the ground is carried by exactly one contact, the one
+!> that names it body_2 (its relative chain, contact_pair); contacts are
+!> built in the order given, so a contact's body_1 must be the ground or
+!> carried by an earlier contact. Friction laws come from the multibody core
+!> (kinetostatics_force_laws): viscous -mu M g w_t (the egg, METHOD-PART2
+!> A.4.3, M the mass of body_2, g = |gravity|), viscous -mu |N| w_t, or
+!> Coulomb -mu |N| w_t/|w_t| (regularized); w_t is the tangential slip (3.87).
+!> Rolling adds the no-slip constraint (contact_rolling) with the rates of
+!> (u12, v12) dependent: the speeds are the three angle rates.
+!>
+!> Position level: the five closure conditions (3.86), N = the cut force of
+!> g3 (the plane-point measurement along z_1D). Velocity level (for the drift
+!> comparison): body_2 is moved by contact_velocity_level from its contact
+!> frame; (u1, v1, u2, v2, phi) and body_2's pose are integrated, the closure
+!> measurements g1..g5 only watch the drift; N = -z_1D . f_1D. The start of a
+!> velocity-level contact is the closed position-level configuration.
+!>
+!> Start: each body's pose places its contact chain (contact_pair: B moves
+!> along the normal until it touches; `start_gap` says by how much), the loops
+!> close, the branch is checked; the speeds are the least-squares solution of
+!> the bodies' given twists, which must be consistent with the contacts (no
+!> velocity into a surface, no slip where rolling) to 1e-9 of their size.
+module contact_model
+  use base_kinds, only: wp
+  use base_text, only: format_short
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use geometry_surface, only: surface_t
+  use geometry_solid, only: solid_properties_t, solid_properties
+  use numerics_linear_algebra, only: cholesky_factor, cholesky_solve
+  use kinetostatics_surface_joint, only: new_surface_joint
+  use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT, MEASURE_PLANE_PLANE
+  use kinetostatics_mass, only: new_mass_element
+  use kinetostatics_force_laws, only: new_coulomb_friction, new_normal_viscous_friction, new_viscous_friction
+  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use contact_pair, only: contact_pair_t, add_contact_pair, place_contact_pair, check_contact_branch
+  use contact_rolling, only: new_no_slip
+  use contact_velocity_level, only: new_velocity_contact
+  implicit none (type, external)
+  private
+  public :: shape_t, body_spec_t, contact_spec_t, contact_system_t, contact_model_t, contact_link_t
+  public :: build_contact_model
+  public :: FRICTION_NONE, FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL, FRICTION_COULOMB
+  public :: LEVEL_POSITION, LEVEL_VELOCITY
+
+  integer, parameter :: FRICTION_NONE = 0, FRICTION_VISCOUS_WEIGHT = 1, FRICTION_VISCOUS_NORMAL = 2, &
+                        FRICTION_COULOMB = 3
+  integer, parameter :: LEVEL_POSITION = 1, LEVEL_VELOCITY = 2
+  real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+
+  !> A surface in the coordinates of the body that carries it.
+  type :: shape_t
+    character(len=:), allocatable :: name
+    class(surface_t), allocatable :: surface
+  end type shape_t
+
+  type :: body_spec_t
+    character(len=:), allocatable :: name
+    real(wp) :: mass = 1                         ! kg
+    character(len=:), allocatable :: solid_of    ! a shape: centre and inertia of its homogeneous solid
+    real(wp) :: centre(3) = 0                    ! m, centre of mass (body axes)
+    real(wp) :: inertia(3, 3) = 0                ! kg m^2, about the centre (body axes)
+    real(wp) :: rotation(3, 3) = identity        ! start orientation (columns: body axes in world)
+    real(wp) :: position(3) = 0                  ! m, start origin (world)
+    real(wp) :: velocity(3) = 0                  ! m/s, of the origin (world)
+    real(wp) :: angular_velocity(3) = 0          ! rad/s (world)
+  end type body_spec_t
+
+  type :: contact_spec_t
+    character(len=:), allocatable :: name, body_1, shape_1, body_2, shape_2
+    real(wp) :: side_1 = 1, side_2 = 1           ! normal towards the other body (+1/-1)
+    integer :: friction = FRICTION_NONE
+    real(wp) :: mu = 0                           ! s/m (viscous) or 1 (Coulomb)
+    real(wp) :: regularization_speed = 1e-6_wp   ! m/s (Coulomb)
+    logical :: rolling = .false.
+    integer :: level = LEVEL_POSITION
+  end type contact_spec_t
+
+  !> The description: 'ground' names the fixed frame (it needs no body entry).
+  type :: contact_system_t
+    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -9.81_wp]   ! m/s^2
+    type(shape_t), allocatable :: shapes(:)
+    type(body_spec_t), allocatable :: bodies(:)
+    type(contact_spec_t), allocatable :: contacts(:)
+  end type contact_system_t
+
+  !> What one contact became in the mechanism.
+  type :: contact_link_t
+    character(len=:), allocatable :: name
+    integer :: level = LEVEL_POSITION
+    logical :: rolling = .false.
+    integer :: frame_a = 0, frame_b = 0, frame_1d = 0, frame_2d = 0
+    integer :: coordinates(4) = 0                ! scalars u1, v1, u2, v2
+    integer :: gaps(5) = 0                       ! closure measurements g1..g5
+    integer :: contact = 0                       ! index among the mechanism's contacts
+    integer :: law = 0                           ! friction law (0: none)
+    integer :: rolling_outputs(2) = 0            ! no-slip outputs (rolling, position level)
+    type(contact_pair_t) :: pair                 ! position level
+    real(wp) :: start_gap = 0                    ! m, B moved along the normal to touch at the start
+  end type contact_link_t
+
+  type :: contact_model_t
+    type(mechanism_ode_t) :: ode
+    character(len=32), allocatable :: body_names(:)   ! the ground first
+    integer, allocatable :: body_frame(:)
+    real(wp), allocatable :: body_mass(:)
+    type(contact_link_t), allocatable :: links(:)
+    real(wp), allocatable :: y0(:)
+  end type contact_model_t
+
+contains
+
+  !> Builds the mechanism of `system` and its start y0 (model%y0), checked:
+  !> every name known, every body carried once and in order, loops closed on
+  !> the physical branch, contacts pressing, start velocities consistent.
+  subroutine build_contact_model(system, model, status)
+    type(contact_system_t), intent(in) :: system
+    type(contact_model_t), intent(out) :: model
+    type(status_t), intent(inout) :: status
+    type(contact_model_t) :: closed
+    if (.not. status%ok()) return
+    call check_names(system, status)
+    if (.not. status%ok()) return
+    if (.not. any(system%contacts%level == LEVEL_VELOCITY)) then
+      call build(system, model, status)
+      return
+    end if
+    ! velocity level: start from the closed configuration of the position level
+    call build(system, closed, status, all_position=.true.)
+    if (.not. status%ok()) return
+    call build(system, model, status, closed=closed)
+  end subroutine build_contact_model
+
+  !> Every name defined once and every reference known.
+  subroutine check_names(system, status)
+    type(contact_system_t), intent(in) :: system
+    type(status_t), intent(inout) :: status
+    integer :: k, j
+    if (.not. allocated(system%shapes) .or. .not. allocated(system%bodies) .or. &
+        .not. allocated(system%contacts)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'contact system: shapes, bodies and contacts must be given')
+      return
+    end if
+    if (size(system%contacts) == 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'contact system: no contact')
+      return
+    end if
+    do k = 1, size(system%bodies)
+      if (system%bodies(k)%name == 'ground') call fail('a body may not be called ''ground'' (the fixed frame)')
+      do j = 1, k - 1
+        if (system%bodies(j)%name == system%bodies(k)%name) call fail('body '''//system%bodies(k)%name// &
+                                                                      ''' is defined twice')
+      end do
+      if (allocated(system%bodies(k)%solid_of)) then
+        if (shape_index(system, system%bodies(k)%solid_of) == 0) call fail('body '''//system%bodies(k)%name// &
+          ''': solid_of = '''//system%bodies(k)%solid_of//''' is not a shape'//known_shapes(system))
+      end if
+    end do
+    do k = 1, size(system%shapes)
+      do j = 1, k - 1
+        if (system%shapes(j)%name == system%shapes(k)%name) call fail('shape '''//system%shapes(k)%name// &
+                                                                      ''' is defined twice')
+      end do
+    end do
+    do k = 1, size(system%contacts)
+      associate (c => system%contacts(k))
+        do j = 1, k - 1
+          if (system%contacts(j)%name == c%name) call fail('contact '''//c%name//''' is defined twice')
+        end do
+        if (body_index(system, c%body_1) < 0) call fail('contact '''//c%name//''': body_1 = '''//c%body_1// &
+                                                        ''' is not a body'//known_bodies(system))
+        if (body_index(system, c%body_2) <= 0) call fail('contact '''//c%name//''': body_2 = '''//c%body_2// &
+                                                         ''' is not a body (the ground cannot be body_2)'// &
+                                                         known_bodies(system))
+        if (shape_index(system, c%shape_1) == 0) call fail('contact '''//c%name//''': shape_1 = '''// &
+                                                           c%shape_1//''' is not a shape'//known_shapes(system))
+        if (shape_index(system, c%shape_2) == 0) call fail('contact '''//c%name//''': shape_2 = '''// &
+                                                           c%shape_2//''' is not a shape'//known_shapes(system))
+        if (c%body_1 == c%body_2) call fail('contact '''//c%name//''': a body cannot touch itself')
+        if (c%rolling .and. c%friction /= FRICTION_NONE) call fail('contact '''//c%name//''': a rolling '// &
+          'contact has no sliding friction (the no-slip constraint carries the tangential force)')
+      end associate
+    end do
+  contains
+    subroutine fail(text)
+      character(len=*), intent(in) :: text
+      if (status%ok()) call set_status(status, STATUS_INVALID_INPUT, text)
+    end subroutine fail
+  end subroutine check_names
+
+  !> 0 for 'ground', the index of a body, -1 if unknown.
+  pure integer function body_index(system, name) result(k)
+    type(contact_system_t), intent(in) :: system
+    character(len=*), intent(in) :: name
+    if (name == 'ground') then
+      k = 0
+      return
+    end if
+    do k = 1, size(system%bodies)
+      if (system%bodies(k)%name == name) return
+    end do
+    k = -1
+  end function body_index
+
+  pure integer function shape_index(system, name) result(k)
+    type(contact_system_t), intent(in) :: system
+    character(len=*), intent(in) :: name
+    do k = 1, size(system%shapes)
+      if (system%shapes(k)%name == name) return
+    end do
+    k = 0
+  end function shape_index
+
+  function known_bodies(system) result(text)
+    type(contact_system_t), intent(in) :: system
+    character(len=:), allocatable :: text
+    integer :: k
+    text = '; the bodies are ''ground'''
+    do k = 1, size(system%bodies)
+      text = text//', '''//system%bodies(k)%name//''''
+    end do
+  end function known_bodies
+
+  function known_shapes(system) result(text)
+    type(contact_system_t), intent(in) :: system
+    character(len=:), allocatable :: text
+    integer :: k
+    text = '; the shapes are'
+    do k = 1, size(system%shapes)
+      text = text//merge(' ', ',', k == 1)//' '''//system%shapes(k)%name//''''
+    end do
+  end function known_shapes
+
+  !> One build. all_position: every contact at position level (the start of a
+  !> velocity-level model); closed: that model, whose closed configuration
+  !> starts the velocity-level contacts.
+  subroutine build(system, model, status, all_position, closed)
+    type(contact_system_t), intent(in) :: system
+    type(contact_model_t), intent(out) :: model
+    type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: all_position
+    type(contact_model_t), intent(in), optional :: closed
+    integer :: nb, k, b1, b2, level
+    integer, allocatable :: q(:), kinematic(:), carrier(:)
+    real(wp), allocatable :: mass(:)
+    type(solid_properties_t), allocatable :: props(:)
+    nb = size(system%bodies)
+    allocate (model%body_names(nb + 1), model%body_frame(nb + 1), model%body_mass(nb + 1), carrier(nb))
+    allocate (model%links(size(system%contacts)), q(0), kinematic(0), mass(nb), props(nb))
+    model%body_names(1) = 'ground'
+    model%body_frame = 0
+    model%body_frame(1) = 1
+    model%body_mass = 0
+    carrier = 0
+    call mass_properties(system, props, status)
+    if (.not. status%ok()) return
+    associate (m => model%ode%mechanism)
+      do k = 1, size(system%contacts)
+        associate (c => system%contacts(k), link => model%links(k))
+          b1 = body_index(system, c%body_1)
+          b2 = body_index(system, c%body_2)
+          if (b1 > 0) then
+            if (carrier(b1) == 0) then
+              call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_1 = '''//c%body_1// &
+                ''' is not placed yet: list the contact that carries it (its body_2) before '''//c%name//'''')
+              return
+            end if
+          end if
+          if (carrier(b2) /= 0) then
+            call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_2 = '''//c%body_2// &
+              ''' is already carried by contact '''//system%contacts(carrier(b2))%name//'''; each body is '// &
+              'body_2 of exactly one contact (a second contact between placed bodies is not supported)')
+            return
+          end if
+          carrier(b2) = k
+          level = c%level
+          if (present(all_position)) level = LEVEL_POSITION
+          link%name = c%name
+          link%level = level
+          link%rolling = c%rolling
+          link%frame_a = model%body_frame(b1 + 1)
+          associate (s1 => system%shapes(shape_index(system, c%shape_1))%surface, &
+                     s2 => system%shapes(shape_index(system, c%shape_2))%surface)
+            if (level == LEVEL_POSITION) then
+              call add_position_contact(m, c, link, s1, s2, q, status)
+            else
+              call add_velocity_contact(m, c, link, s1, s2, closed, k, q, kinematic, status)
+            end if
+          end associate
+          if (.not. status%ok()) return
+          model%body_names(b2 + 1) = c%body_2
+          model%body_frame(b2 + 1) = link%frame_b
+          model%body_mass(b2 + 1) = system%bodies(b2)%mass
+          call m%add_element(new_mass_element(c%body_2, link%frame_b, system%bodies(b2)%mass, props(b2)%inertia, &
+                                              props(b2)%centre, system%gravity, status))
+          if (.not. status%ok()) return
+          call add_friction(m, c, link, system%bodies(b2)%mass*norm2(system%gravity), status)
+          if (.not. status%ok()) return
+        end associate
+      end do
+      do k = 1, nb
+        if (carrier(k) == 0) then
+          call set_status(status, STATUS_INVALID_INPUT, 'body '''//system%bodies(k)%name//''' is not body_2 '// &
+                          'of any contact: nothing carries it')
+          return
+        end if
+      end do
+      call m%set_coordinates(q)
+      if (size(kinematic) > 0) call m%set_kinematic(kinematic)
+      call m%finalize(status)
+      if (.not. status%ok()) return
+    end associate
+    call start(system, model, carrier, status, closed)
+  end subroutine build
+
+  !> Centre and inertia of every body: given, or the homogeneous solid of a
+  !> shape scaled to the body's mass.
+  subroutine mass_properties(system, props, status)
+    type(contact_system_t), intent(in) :: system
+    type(solid_properties_t), intent(out) :: props(:)
+    type(status_t), intent(inout) :: status
+    type(status_t) :: outward
+    integer :: k
+    do k = 1, size(system%bodies)
+      associate (b => system%bodies(k))
+        if (allocated(b%solid_of)) then
+          ! the solid is the same whichever way r_u x r_v points
+          call solid_properties(system%shapes(shape_index(system, b%solid_of))%surface, 1.0_wp, props(k), outward)
+          if (.not. outward%ok()) call solid_properties(system%shapes(shape_index(system, b%solid_of))%surface, &
+                                                        -1.0_wp, props(k), status)
+          if (.not. status%ok()) then
+            call prefix_status(status, 'body '''//b%name//''': solid_of = '''//b%solid_of//'''')
+            return
+          end if
+          props(k)%inertia = props(k)%inertia*b%mass/props(k)%volume
+        else
+          props(k)%centre = b%centre
+          props(k)%inertia = b%inertia
+        end if
+      end associate
+    end do
+  end subroutine mass_properties
+
+  subroutine add_position_contact(m, c, link, s1, s2, q, status)
+    type(mechanism_t), intent(inout) :: m
+    type(contact_spec_t), intent(in) :: c
+    type(contact_link_t), intent(inout) :: link
+    class(surface_t), intent(in) :: s1, s2
+    integer, allocatable, intent(inout) :: q(:)
+    type(status_t), intent(inout) :: status
+    call add_contact_pair(m, c%name, link%frame_a, s1, c%side_1, c%body_2, s2, c%side_2, link%pair, status)
+    if (.not. status%ok()) return
+    link%frame_b = link%pair%frame_b
+    link%frame_1d = link%pair%frame_1d
+    link%frame_2d = link%pair%frame_2d
+    link%coordinates = [link%pair%u1, link%pair%v1, link%pair%u2, link%pair%v2]
+    link%gaps = link%pair%gaps
+    q = [q, link%pair%coordinates()]
+    ! N = lambda of g3: a positive cut force pushes K_2D along z_1D, away from A
+    link%contact = m%add_contact(c%name, link%frame_a, link%frame_b, link%frame_1d, 1.0_wp, &
+                                 normal_measurement=link%gaps(3))
+    if (c%rolling) then
+      link%rolling_outputs(1) = m%add_scalar(c%name//'.slip_x')
+      link%rolling_outputs(2) = m%add_scalar(c%name//'.slip_y')
+      call m%add_element(new_no_slip(c%name//'.no_slip', link%frame_a, link%frame_b, link%frame_1d, &
+                                     link%rolling_outputs))
+      call m%add_rate_constraint(c%name//' rolling', link%rolling_outputs, [link%pair%u12, link%pair%v12], status)
+    end if
+  end subroutine add_position_contact
+
+  !> Body 2 moved by the velocity-level element from the contact frame on S1;
+  !> the start values come from the closed position-level model `closed`
+  !> (contact k there).
+  subroutine add_velocity_contact(m, c, link, s1, s2, closed, k, q, kinematic, status)
+    type(mechanism_t), intent(inout) :: m
+    type(contact_spec_t), intent(in) :: c
+    type(contact_link_t), intent(inout) :: link
+    class(surface_t), intent(in) :: s1, s2
+    type(contact_model_t), intent(in) :: closed
+    integer, intent(in) :: k
+    integer, allocatable, intent(inout) :: q(:), kinematic(:)
+    type(status_t), intent(inout) :: status
+    real(wp), parameter :: ex(3) = [1, 0, 0], ey(3) = [0, 1, 0], ez(3) = [0, 0, 1]
+    integer :: contact(5), pose(6), i
+    real(wp) :: rel(3, 3), x2(3)
+    character(len=2) :: digit
+    associate (cm => closed%ode%mechanism, cl => closed%links(k))
+      ! contact coordinates and the pose of B relative to A in the closed model
+      rel = matmul(transpose(cm%frames(cl%frame_a)%rot), cm%frames(cl%frame_b)%rot)
+      contact(1) = m%add_scalar(c%name//'.u1', cm%scalars(cl%coordinates(1))%q)
+      contact(2) = m%add_scalar(c%name//'.v1', cm%scalars(cl%coordinates(2))%q)
+      contact(3) = m%add_scalar(c%name//'.u2', cm%scalars(cl%coordinates(3))%q)
+      contact(4) = m%add_scalar(c%name//'.v2', cm%scalars(cl%coordinates(4))%q)
+      x2 = cm%frames(cl%frame_2d)%rot(:, 1)
+      contact(5) = m%add_scalar(c%name//'.phi', atan2(dot_product(x2, cm%frames(cl%frame_1d)%rot(:, 2)), &
+                                                      dot_product(x2, cm%frames(cl%frame_1d)%rot(:, 1))))
+      x2 = matmul(transpose(cm%frames(cl%frame_a)%rot), cm%frames(cl%frame_b)%r - cm%frames(cl%frame_a)%r)
+      do i = 1, 3
+        write (digit, '(i1)') i
+        pose(i) = m%add_scalar(c%name//'.x'//trim(digit), x2(i))
+      end do
+      do i = 1, 3
+        write (digit, '(i1)') i
+        pose(3 + i) = m%add_scalar(c%name//'.a'//trim(digit), 0.0_wp)
+      end do
+    end associate
+    link%frame_1d = m%add_frame(c%name//'.1D')
+    call m%add_element(new_surface_joint(c%name//'.s1', link%frame_a, link%frame_1d, contact(1), contact(2), s1, &
+                                         c%side_1, 1.0_wp, 0.0_wp))
+    link%frame_b = m%add_frame(c%body_2)
+    call m%add_element(new_velocity_contact(c%name//'.contact', link%frame_a, link%frame_1d, link%frame_b, s1, &
+                                            c%side_1, s2, c%side_2, contact, pose, rel, c%rolling))
+    link%frame_2d = m%add_frame(c%name//'.2D')
+    call m%add_element(new_surface_joint(c%name//'.s2', link%frame_b, link%frame_2d, contact(3), contact(4), s2, &
+                                         c%side_2, 1.0_wp, 0.0_wp))
+    do i = 1, 5
+      write (digit, '(i1)') i
+      link%gaps(i) = m%add_scalar(c%name//'.g'//trim(digit))
+    end do
+    call m%add_element(new_measurement(c%name//'.g1', MEASURE_PLANE_POINT, link%frame_1d, link%frame_2d, &
+                                       link%gaps(1), axis_i=ex))
+    call m%add_element(new_measurement(c%name//'.g2', MEASURE_PLANE_POINT, link%frame_1d, link%frame_2d, &
+                                       link%gaps(2), axis_i=ey))
+    call m%add_element(new_measurement(c%name//'.g3', MEASURE_PLANE_POINT, link%frame_1d, link%frame_2d, &
+                                       link%gaps(3), axis_i=ez))
+    call m%add_element(new_measurement(c%name//'.g4', MEASURE_PLANE_PLANE, link%frame_1d, link%frame_2d, &
+                                       link%gaps(4), axis_i=ez, axis_j=ex))
+    call m%add_element(new_measurement(c%name//'.g5', MEASURE_PLANE_PLANE, link%frame_1d, link%frame_2d, &
+                                       link%gaps(5), axis_i=ez, axis_j=ey))
+    link%coordinates = contact(1:4)
+    if (c%rolling) then
+      q = [q, contact(1), contact(2), contact(5), contact(3), contact(4), pose]
+      kinematic = [kinematic, contact(3), contact(4), pose]
+    else
+      q = [q, contact, pose]
+      kinematic = [kinematic, pose]
+    end if
+    ! N from the force the element passes back to the contact frame
+    link%contact = m%add_contact(c%name, link%frame_a, link%frame_b, link%frame_1d, 1.0_wp)
+    if (.not. status%ok()) return
+  end subroutine add_velocity_contact
+
+  subroutine add_friction(m, c, link, weight, status)
+    type(mechanism_t), intent(inout) :: m
+    type(contact_spec_t), intent(in) :: c
+    type(contact_link_t), intent(inout) :: link
+    real(wp), intent(in) :: weight   ! N, M g of body 2
+    type(status_t), intent(inout) :: status
+    select case (c%friction)
+    case (FRICTION_VISCOUS_WEIGHT)
+      call m%add_law(new_viscous_friction(c%name//'.friction', link%contact, c%mu*weight, status))
+    case (FRICTION_VISCOUS_NORMAL)
+      call m%add_law(new_normal_viscous_friction(c%name//'.friction', link%contact, c%mu, status))
+    case (FRICTION_COULOMB)
+      call m%add_law(new_coulomb_friction(c%name//'.friction', link%contact, c%mu, c%regularization_speed, status))
+    case default
+      return
+    end select
+    link%law = m%n_laws
+  end subroutine add_friction
+
+  !> Places every contact from the bodies' poses (or copies the closed
+  !> configuration), closes and checks the loops, and finds the speeds.
+  subroutine start(system, model, carrier, status, closed)
+    type(contact_system_t), intent(in) :: system
+    type(contact_model_t), intent(inout) :: model
+    integer, intent(in) :: carrier(:)
+    type(status_t), intent(inout) :: status
+    type(contact_model_t), intent(in), optional :: closed
+    real(wp), allocatable :: q0(:), s0(:)
+    real(wp) :: rot_a(3, 3), r_a(3)
+    integer :: k, b1
+    associate (m => model%ode%mechanism)
+      if (.not. present(closed)) then
+        do k = 1, size(system%contacts)
+          associate (c => system%contacts(k), link => model%links(k))
+            b1 = body_index(system, c%body_1)
+            rot_a = identity
+            r_a = 0
+            if (b1 > 0) then
+              rot_a = system%bodies(b1)%rotation
+              r_a = system%bodies(b1)%position
+            end if
+            associate (b => system%bodies(body_index(system, c%body_2)))
+              call place_contact_pair(m, link%pair, rot_a, r_a, b%rotation, b%position, link%start_gap, status)
+            end associate
+          end associate
+          if (.not. status%ok()) return
+        end do
+      end if
+      q0 = m%scalars(m%q)%q
+      call m%check_start(q0, status)
+      if (.not. status%ok()) return
+      do k = 1, size(model%links)
+        if (model%links(k)%level == LEVEL_POSITION) call check_contact_branch(m, model%links(k)%pair, status)
+      end do
+      if (.not. status%ok()) return
+      call start_speeds(system, model, carrier, s0, status)
+      if (.not. status%ok()) return
+      model%y0 = model%ode%initial_state(q0, s0)
+      call model%ode%check_start(model%y0, status)
+    end associate
+  end subroutine start
+
+  !> The speeds whose body twists are nearest (least squares) to the given
+  !> ones; refused if the given twists miss by more than 1e-9 of their size
+  !> (plus 1e-12 m/s, rad/s): they would not be consistent with the contacts.
+  subroutine start_speeds(system, model, carrier, s0, status)
+    type(contact_system_t), intent(in) :: system
+    type(contact_model_t), intent(inout) :: model
+    integer, intent(in) :: carrier(:)
+    real(wp), allocatable, intent(out) :: s0(:)
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: jac(:, :), twist(:), normal(:, :), unit(:), got(:)
+    real(wp) :: miss, size_given
+    integer :: nb, ns, k, b, worst
+    associate (m => model%ode%mechanism)
+      nb = size(system%bodies)
+      ns = m%ns
+      allocate (jac(6*nb, ns), twist(6*nb), unit(ns), s0(ns))
+      do b = 1, nb
+        twist(6*b - 5:6*b) = [system%bodies(b)%angular_velocity, system%bodies(b)%velocity]
+      end do
+      do k = 1, ns
+        unit = 0
+        unit(k) = 1
+        call m%set_velocities(unit)
+        do b = 1, nb
+          associate (fr => m%frames(model%body_frame(b + 1)))
+            jac(6*b - 5:6*b, k) = [fr%omega, fr%v]
+          end associate
+        end do
+      end do
+      normal = matmul(transpose(jac), jac)
+      s0 = matmul(transpose(jac), twist)
+      call cholesky_factor(normal, status)
+      if (status%ok()) call cholesky_solve(normal, s0, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, 'start velocities: the bodies'' twists do not determine the speeds')
+        return
+      end if
+      got = matmul(jac, s0)
+      size_given = maxval(abs(twist))
+      worst = maxloc(abs(got - twist), dim=1)
+      miss = abs(got(worst) - twist(worst))
+      if (miss > 1e-9_wp*size_given + 1e-12_wp) then
+        b = (worst + 5)/6
+        call set_status(status, STATUS_INVALID_INPUT, 'the start velocities are not consistent with the '// &
+          'contacts: body '''//system%bodies(b)%name//''' (carried by contact '''// &
+          system%contacts(carrier(b))%name//''') can only have a twist that differs by '//format_short(miss)// &
+          merge(' rad/s', ' m/s  ', mod(worst - 1, 6) < 3)//' in its '// &
+          trim(merge('angular velocity', 'velocity        ', mod(worst - 1, 6) < 3))// &
+          ' (component '//achar(iachar('x') + mod(worst - 1, 3))//'); give a twist with no velocity into '// &
+          'the surfaces (and no slip at rolling contacts)')
+        return
+      end if
+      call m%set_velocities(s0)
+    end associate
+  end subroutine start_speeds
+end module contact_model
