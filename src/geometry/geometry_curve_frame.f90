@@ -60,17 +60,27 @@ contains
     e(:, 3) = (a(:, 3) - 3*length(1)*e(:, 2) - 3*length(2)*e(:, 1) - length(3)*e(:, 0))/l
   end subroutine normalized_derivatives
 
-  !> Leibniz' rule for a x b to order n.
+  !> Leibniz' rule for a x b to order n. Derivatives of a that are zero (a
+  !> constant horizon) add nothing and are skipped; the cross product is
+  !> written out here so that the compiler inlines it (the frame is on the
+  !> hot path of every tube evaluation).
   pure subroutine cross_derivatives(a, b, n, c)
     real(wp), intent(in) :: a(3, 0:3), b(3, 0:3)
     integer, intent(in) :: n
     real(wp), intent(out) :: c(3, 0:3)
     integer, parameter :: binom(0:3, 0:3) = reshape([1, 0, 0, 0, 1, 1, 0, 0, 1, 2, 1, 0, 1, 3, 3, 1], [4, 4])
     integer :: k, j
+    logical :: a_zero(0:3)
     c = 0
+    do j = 0, n
+      a_zero(j) = j > 0 .and. all(a(:, j) == 0)
+    end do
     do k = 0, n
       do j = 0, k
-        c(:, k) = c(:, k) + binom(j, k)*cross(a(:, j), b(:, k - j))
+        if (a_zero(j)) cycle
+        associate (x => a(:, j), y => b(:, k - j))
+          c(:, k) = c(:, k) + binom(j, k)*[x(2)*y(3) - x(3)*y(2), x(3)*y(1) - x(1)*y(3), x(1)*y(2) - x(2)*y(1)]
+        end associate
       end do
     end do
   end subroutine cross_derivatives
@@ -98,12 +108,14 @@ contains
 
   !> The frame (3.60-3.63) and its derivatives to `order` (0..3) from the
   !> centerline point c (needs derivatives to order+1) and the horizon h
-  !> (needs derivatives to `order`). chi needs order >= 1, chi_u order >= 2.
-  pure subroutine curve_frame_from_points(c, h, order, f, status)
+  !> (needs derivatives to `order`). chi needs order >= 1, chi_u order >= 2;
+  !> with_curvature = .false. leaves them 0 (a tube's evaluation needs none).
+  pure subroutine curve_frame_from_points(c, h, order, f, status, with_curvature)
     type(curve_point_t), intent(in) :: c, h
     integer, intent(in) :: order
     type(curve_frame_t), intent(out) :: f
     type(status_t), intent(out) :: status
+    logical, intent(in), optional :: with_curvature
     real(wp) :: w(3, 0:3), lx(0:3), lw(0:3), speed, hn
     character(len=40) :: buf
     if (order < 0 .or. order > 3) then
@@ -127,6 +139,9 @@ contains
     end if
     call normalized_derivatives(w, order, f%y, lw)
     call cross_derivatives(f%x, f%y, order, f%z)
+    if (present(with_curvature)) then
+      if (.not. with_curvature) return
+    end if
     if (order >= 1) call centerline_curvature(c, f%chi, f%chi_u)
     if (order < 2) f%chi_u = 0
   end subroutine curve_frame_from_points

@@ -31,6 +31,9 @@ module geometry_surface
     procedure :: periodic_v => surface_periodic_v
     procedure :: describe => surface_describe
     procedure :: parameter_units => surface_parameter_units
+    !> r(u_i, v_j) on a grid (x, y, z of shape (size(v), size(u))); a surface
+    !> may override it with a faster way than point by point.
+    procedure :: points_on_grid => surface_points_on_grid
   end type surface_t
 
   abstract interface
@@ -85,6 +88,23 @@ contains
   end function surface_periodic_v
 
   !> A short human-readable name of the surface.
+  pure subroutine surface_points_on_grid(self, u, v, x, y, z, status)
+    class(surface_t), intent(in) :: self
+    real(wp), intent(in) :: u(:), v(:)
+    real(wp), intent(out) :: x(:, :), y(:, :), z(:, :)   ! (size(v), size(u)), m
+    type(status_t), intent(out) :: status
+    type(surface_point_t) :: p
+    integer :: i, j
+    status%code = 0
+    do i = 1, size(u)
+      do j = 1, size(v)
+        call self%evaluate(u(i), v(j), 0, p, status)
+        if (.not. status%ok()) return
+        x(j, i) = p%r(1); y(j, i) = p%r(2); z(j, i) = p%r(3)
+      end do
+    end do
+  end subroutine surface_points_on_grid
+
   pure function surface_describe(self) result(text)
     class(surface_t), intent(in) :: self
     character(len=:), allocatable :: text

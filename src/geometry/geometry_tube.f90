@@ -28,6 +28,7 @@ module geometry_tube
   contains
     procedure :: evaluate => tube_evaluate
     procedure :: evaluate_with_centerline => tube_evaluate_with_centerline
+    procedure :: points_on_grid => tube_points_on_grid
     procedure :: domain => tube_domain
     procedure :: periodic_v => tube_periodic_v
     procedure :: describe => tube_describe
@@ -128,8 +129,7 @@ contains
     type(curve_point_t) :: h
     type(curve_frame_t) :: f
     type(section_point_t) :: s
-    real(wp) :: d(3, 0:3, 0:3)
-    integer :: i, j, m
+    logical :: section_fixed   ! the section's u-derivatives are all zero
     if (order < 0 .or. order > 3) then
       call set_status(status, STATUS_INVALID_INPUT, 'tube surface: order must be 0..3')
       return
@@ -138,31 +138,66 @@ contains
     if (.not. status%ok()) return
     call self%horizon%evaluate(u, order, h, status)
     if (.not. status%ok()) return
-    call curve_frame_from_points(c, h, order, f, status)
+    call curve_frame_from_points(c, h, order, f, status, with_curvature=.false.)
     if (.not. status%ok()) return
     call self%section%evaluate(u, v, order, s, status)
     if (.not. status%ok()) return
-    d = 0
-    do i = 0, order
-      d(:, i, 0) = c%d(:, i)
-      do j = 0, order - i
-        do m = 0, i
-          d(:, i, j) = d(:, i, j) + binom(m, i)*(f%y(:, m)*s%s(1, i - m, j) + f%z(:, m)*s%s(2, i - m, j))
-        end do
-      end do
-    end do
+    section_fixed = all(s%s(:, 1:order, 0:order - 1) == 0)
     p%order = order
-    p%r = d(:, 0, 0)
+    p%r = c%d(:, 0) + term(0, 0)
     if (order >= 1) then
-      p%ru = d(:, 1, 0); p%rv = d(:, 0, 1)
+      p%ru = c%d(:, 1) + term(1, 0); p%rv = term(0, 1)
     end if
     if (order >= 2) then
-      p%ruu = d(:, 2, 0); p%ruv = d(:, 1, 1); p%rvv = d(:, 0, 2)
+      p%ruu = c%d(:, 2) + term(2, 0); p%ruv = term(1, 1); p%rvv = term(0, 2)
     end if
     if (order >= 3) then
-      p%ruuu = d(:, 3, 0); p%ruuv = d(:, 2, 1); p%ruvv = d(:, 1, 2); p%rvvv = d(:, 0, 3)
+      p%ruuu = c%d(:, 3) + term(3, 0); p%ruuv = term(2, 1); p%ruvv = term(1, 2); p%rvvv = term(0, 3)
     end if
+
+  contains
+
+    !> The section's part of d^(i+j) r/du^i dv^j (Leibniz in u); a section
+    !> that does not change along u (all but blended ones) leaves one term.
+    pure function term(i, j) result(t)
+      integer, intent(in) :: i, j
+      real(wp) :: t(3)
+      integer :: m
+      if (section_fixed) then
+        t = f%y(:, i)*s%s(1, 0, j) + f%z(:, i)*s%s(2, 0, j)
+        return
+      end if
+      t = 0
+      do m = 0, i
+        t = t + binom(m, i)*(f%y(:, m)*s%s(1, i - m, j) + f%z(:, m)*s%s(2, i - m, j))
+      end do
+    end function term
   end subroutine tube_evaluate_with_centerline
+
+  !> r = c + y s_y + z s_z on a grid: the centerline and its frame once per u.
+  pure subroutine tube_points_on_grid(self, u, v, x, y, z, status)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u(:), v(:)
+    real(wp), intent(out) :: x(:, :), y(:, :), z(:, :)   ! (size(v), size(u)), m
+    type(status_t), intent(out) :: status
+    type(curve_point_t) :: c, h
+    type(curve_frame_t) :: f
+    type(section_point_t) :: s
+    real(wp) :: r(3)
+    integer :: i, j
+    do i = 1, size(u)
+      call self%centerline%evaluate(u(i), 1, c, status)
+      if (status%ok()) call self%horizon%evaluate(u(i), 0, h, status)
+      if (status%ok()) call curve_frame_from_points(c, h, 0, f, status, with_curvature=.false.)
+      if (.not. status%ok()) return
+      do j = 1, size(v)
+        call self%section%evaluate(u(i), v(j), 0, s, status)
+        if (.not. status%ok()) return
+        r = c%d(:, 0) + f%y(:, 0)*s%s(1, 0, 0) + f%z(:, 0)*s%s(2, 0, 0)
+        x(j, i) = r(1); y(j, i) = r(2); z(j, i) = r(3)
+      end do
+    end do
+  end subroutine tube_points_on_grid
 
   pure subroutine tube_domain(self, u_min, u_max, v_min, v_max)
     class(tube_surface_t), intent(in) :: self
@@ -289,8 +324,8 @@ contains
     class(tube_surface_t), intent(in) :: self
     type(status_t), intent(inout) :: status
     integer, parameter :: max_samples = 4000
-    real(wp), allocatable :: u(:), s(:), e(:), p(:, :)
-    real(wp) :: a, b, smallest, d
+    real(wp), allocatable :: u(:), s(:), e(:), p(:, :), f(:, :)
+    real(wp) :: a, b, smallest, d, step, e_max
     type(curve_point_t) :: c
     type(status_t) :: st
     integer :: n, i, j
@@ -301,31 +336,47 @@ contains
     end do
     if (.not. smallest > 0) return
     n = max(100, min(max_samples, ceiling(4*self%length()/smallest) + 1))
-    allocate (u(n), s(n), e(n), p(3, n))
+    allocate (u(n), s(n), e(n), p(3, n), f(2, n))
     do i = 1, n
       u(i) = a + (b - a)*(i - 1)/real(n - 1, wp)
-      call self%centerline%evaluate(u(i), 0, c, st)
+      call self%centerline%evaluate(u(i), 2, c, st)
       if (.not. st%ok()) return   ! reported by the frame check
       p(:, i) = c%d(:, 0)
       e(i) = self%section%extent(u(i))
+      f(:, i) = [norm2(c%d(:, 1)), dot_product(c%d(:, 1), c%d(:, 2))/norm2(c%d(:, 1))]   ! |c_u| and its rate
       if (i == 1) then
         s(i) = 0
-      else
-        s(i) = s(i - 1) + self%centerline%arc_length(u(i - 1), u(i))
+      else   ! arc length by the trapezoid of |c_u| with its end slopes (error h^5 |c_u|''''/720)
+        s(i) = s(i - 1) + (u(i) - u(i - 1))*(f(1, i - 1) + f(1, i))/2 + (u(i) - u(i - 1))**2*(f(2, i - 1) - f(2, i))/12
       end if
     end do
+    ! consecutive samples lie at most `step` apart in space, so a point at
+    ! distance d from p(i) has no later sample within d - k step of p(i) for k
+    ! samples on: the search skips those (every pair it leaves out is farther
+    ! apart than 2 e_max, the largest sum of extents)
+    step = 0
+    do i = 2, n
+      step = max(step, norm2(p(:, i) - p(:, i - 1)))
+    end do
+    e_max = maxval(e)
     do i = 1, n
-      do j = i + 1, n
-        if (s(j) - s(i) <= pi_half*(e(i) + e(j))) cycle
-        d = norm2(p(:, j) - p(:, i))
-        if (d < (e(i) + e(j))*(1 - 1e-9_wp)) then
-          call set_status(status, STATUS_INVALID_INPUT, 'tube surface: the tube passes through itself: the '// &
-                          'centerline at arc length '//format_short(s(i))//' m (point '//short_point(p(:, i))// &
-                          ') and at '//format_short(s(j))//' m (point '//short_point(p(:, j))//') is '// &
-                          format_short(d)//' m apart, less than the cross-section extents '// &
-                          format_short(e(i))//' + '//format_short(e(j))//' m')
-          return
+      j = i + 1
+      do while (j <= n)
+        if (s(j) - s(i) <= pi_half*(e(i) + e(j))) then
+          j = j + 1
+          cycle
         end if
+        d = norm2(p(:, j) - p(:, i))
+        if (d >= (e(i) + e(j))*(1 - 1e-9_wp)) then
+          j = j + max(1, int((d - 2*e_max)/max(step, tiny(1.0_wp))))
+          cycle
+        end if
+        call set_status(status, STATUS_INVALID_INPUT, 'tube surface: the tube passes through itself: the '// &
+                        'centerline at arc length '//format_short(s(i))//' m (point '//short_point(p(:, i))// &
+                        ') and at '//format_short(s(j))//' m (point '//short_point(p(:, j))//') is '// &
+                        format_short(d)//' m apart, less than the cross-section extents '// &
+                        format_short(e(i))//' + '//format_short(e(j))//' m')
+        return
       end do
     end do
   end subroutine tube_check_clearance

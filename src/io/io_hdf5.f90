@@ -239,12 +239,13 @@ contains
       call h5dcreate_f(self%file_id, name, type_id, space_id, dataset_id, hdferr)
       if (hdferr == 0) then
         call h5dwrite_f(dataset_id, type_id, buffer, hdferr)
+        ! the attributes of the new dataset through its open id (no lookup by name)
+        if (hdferr == 0) call write_string_attribute_on(dataset_id, 'units', units, hdferr)
+        if (hdferr == 0) call write_string_attribute_on(dataset_id, 'description', description, hdferr)
         call h5dclose_f(dataset_id, err)
       end if
       call h5sclose_f(space_id, err)
     end if
-    if (hdferr == 0) call write_string_attribute(self%file_id, name, 'units', units, hdferr)
-    if (hdferr == 0) call write_string_attribute(self%file_id, name, 'description', description, hdferr)
     if (hdferr /= 0) then
       call write_failure(self, 'dataset "'//name//'"', status)
       return
@@ -706,6 +707,31 @@ contains
     call write_attribute(file_id, object, name, type_id, no_shape, c_loc(pointers), hdferr)
     call h5tclose_f(type_id, err)
   end subroutine write_string_attribute
+
+  !> A string attribute of an object open as object_id that has none of that name yet.
+  subroutine write_string_attribute_on(object_id, name, value, hdferr)
+    integer(hid_t), intent(in) :: object_id
+    character(len=*), intent(in) :: name, value
+    integer, intent(out) :: hdferr
+    character(kind=c_char), allocatable, target :: buffer(:)
+    type(c_ptr), target :: pointers(1)
+    integer(hid_t) :: type_id, space_id, attribute_id
+    integer :: err
+    call c_string(value, buffer)
+    pointers(1) = c_loc(buffer)
+    call utf8_string_type(type_id, hdferr)
+    if (hdferr /= 0) return
+    call h5screate_f(H5S_SCALAR_F, space_id, hdferr)
+    if (hdferr == 0) then
+      call h5acreate_f(object_id, name, type_id, space_id, attribute_id, hdferr)
+      if (hdferr == 0) then
+        call h5awrite_f(attribute_id, type_id, c_loc(pointers), hdferr)
+        call h5aclose_f(attribute_id, err)
+      end if
+      call h5sclose_f(space_id, err)
+    end if
+    call h5tclose_f(type_id, err)
+  end subroutine write_string_attribute_on
 
   !> The one attribute writer: `shape` in Fortran order (size 0: a scalar).
   subroutine write_attribute(file_id, object, name, type_id, shape, buffer, hdferr)

@@ -32,18 +32,11 @@ contains
     type(status_t), intent(inout) :: status
     real(wp), allocatable :: x(:, :), y(:, :), z(:, :)
     character(len=:), allocatable :: u_units, v_units
-    type(surface_point_t) :: p
-    integer :: i, j
     character(len=*), parameter :: g = surface_grid_group
     if (.not. status%ok()) return
     allocate (x(size(v), size(u)), y(size(v), size(u)), z(size(v), size(u)))
-    do i = 1, size(u)
-      do j = 1, size(v)
-        call surface%evaluate(u(i), v(j), 0, p, status)
-        if (.not. status%ok()) return
-        x(j, i) = p%r(1); y(j, i) = p%r(2); z(j, i) = p%r(3)
-      end do
-    end do
+    call surface%points_on_grid(u, v, x, y, z, status)
+    if (.not. status%ok()) return
     call surface%parameter_units(u_units, v_units)
     call file%write_vector(g//'/u', u, u_units, 'grid values of the surface parameter u', status)
     call file%write_vector(g//'/v', v, v_units, 'grid values of the surface parameter v', status)

@@ -385,6 +385,12 @@ contains
     x = in_domain(self, u)
     l = find_interval(self%knots, k, x)
     lk = l - k1
+    if (k == 5 .and. idim == 3) then
+      ! the common case (a fitted quintic centerline in space): the same
+      ! arithmetic with loop bounds the compiler knows
+      call quintic_in_space(self%knots, self%coefficients, l, x, min(nd, k, ubound(derivatives, 2)), derivatives)
+      return
+    end if
     associate (t => self%knots)
       ! Cox-de Boor triangle: basis(1..d+1, d) are the degree-d B-splines at x (thesis 2.35)
       basis(1, 0) = 1
@@ -421,6 +427,50 @@ contains
       end do
     end associate
   end subroutine evaluate
+
+  !> evaluate for degree 5 and 3 coordinates: derivatives(1:3, 0:top) at x
+  !> in knot interval l (the same operations in the same order as the
+  !> general loop in evaluate, so the results are identical).
+  pure subroutine quintic_in_space(t, coefficients, l, x, top, derivatives)
+    real(wp), intent(in) :: t(:), coefficients(:, :), x
+    integer, intent(in) :: l, top
+    real(wp), intent(inout) :: derivatives(:, 0:)
+    integer, parameter :: k = 5, k1 = 6
+    real(wp) :: v(3, k1), basis(k1, 0:k), hh(k1), f, ak, fac
+    integer :: d, i, li, lj, jd, lk
+    lk = l - k1
+    basis(1, 0) = 1
+    do d = 1, k
+      hh(1:d) = basis(1:d, d - 1)
+      basis(1, d) = 0
+      do i = 1, d
+        li = l + i
+        lj = li - d
+        if (t(li) == t(lj)) then
+          basis(i + 1, d) = 0
+        else
+          f = hh(i)/(t(li) - t(lj))
+          basis(i, d) = basis(i, d) + f*(t(li) - x)
+          basis(i + 1, d) = f*(x - t(lj))
+        end if
+      end do
+    end do
+    v = coefficients(1:3, lk + 1:lk + k1)
+    do jd = 0, top
+      if (jd > 0) then
+        ak = k - jd + 1
+        do i = 1, k1 - jd
+          fac = t(lk + i + k1) - t(lk + i + jd)
+          if (fac > 0) then
+            v(:, i) = ak*(v(:, i + 1) - v(:, i))/fac
+          end if
+        end do
+      end if
+      derivatives(1, jd) = sum(v(1, 1:k1 - jd)*basis(1:k1 - jd, k - jd))
+      derivatives(2, jd) = sum(v(2, 1:k1 - jd)*basis(1:k1 - jd, k - jd))
+      derivatives(3, jd) = sum(v(3, 1:k1 - jd)*basis(1:k1 - jd, k - jd))
+    end do
+  end subroutine quintic_in_space
 
   !> |r'(x)| (one coordinate sum), for the arc-length integrand.
   pure real(wp) function speed(self, x) result(sp)

@@ -35,8 +35,8 @@ module water_channel
   contains
     !> r(u, v) and partials to `order` (0..3).
     procedure :: evaluate => channel_evaluate
-    !> The surface point to order 2 with chi, chi_s and |c_u| from one
-    !> evaluation of the centerline (the water model's hot path).
+    !> The surface point to order 2 with chi, chi_s, |c_u| and d|c_u|/du from
+    !> one evaluation of the centerline (the water model's hot path).
     procedure :: evaluate_with_curvature => channel_evaluate_with_curvature
     !> Centerline c(u) and its u-derivatives: c(:, k) = d^k c/du^k, k = 0..3.
     procedure :: centerline => channel_centerline
@@ -80,19 +80,21 @@ contains
     call self%tube%evaluate(u, v, order, p, status)
   end subroutine channel_evaluate
 
-  pure subroutine channel_evaluate_with_curvature(self, u, v, p, chi, chi_s, speed, status)
+  pure subroutine channel_evaluate_with_curvature(self, u, v, p, chi, chi_s, speed, speed_u, status)
     class(channel_t), intent(in) :: self
     real(wp), intent(in) :: u, v
     type(surface_point_t), intent(out) :: p
     real(wp), intent(out) :: chi, chi_s   ! 1/m, 1/m^2
     real(wp), intent(out) :: speed        ! |c_u|, m per unit of u
+    real(wp), intent(out) :: speed_u      ! d|c_u|/du = c_u.c_uu/|c_u|
     type(status_t), intent(out) :: status
     type(curve_point_t) :: c
-    chi = 0; chi_s = 0; speed = 0
+    chi = 0; chi_s = 0; speed = 0; speed_u = 0
     call self%tube%evaluate_with_centerline(u, v, 2, p, c, status)
     if (.not. status%ok()) return
     call curvature_from_derivatives(c%d(:, 0:3), chi, chi_s)
     speed = norm2(c%d(:, 1))
+    speed_u = dot_product(c%d(:, 1), c%d(:, 2))/speed
   end subroutine channel_evaluate_with_curvature
 
   pure subroutine channel_centerline(self, u, c, status)

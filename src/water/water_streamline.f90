@@ -89,6 +89,7 @@ module water_streamline
     real(wp) :: friction = 0                        ! N (F_R, 4.7)
     real(wp) :: chi = 0, chi_s = 0                  ! 1/m, 1/m^2
     real(wp) :: centerline_speed = 0                ! |c_u|, m per unit of u
+    real(wp) :: centerline_speed_u = 0              ! d|c_u|/du, m per unit of u^2
     real(wp) :: beta = 0                            ! rad, flow vs centerline, + towards +v
     real(wp) :: radius = 0                          ! m, R (4.15); 0 for a profile
     real(wp) :: radius_rate = 0                     ! m/s (F.5)
@@ -133,7 +134,8 @@ contains
                       //format_short(v))
       return
     end if
-    call self%channel%evaluate_with_curvature(u, v, q%p, q%chi, q%chi_s, q%centerline_speed, status)
+    call self%channel%evaluate_with_curvature(u, v, q%p, q%chi, q%chi_s, q%centerline_speed, &
+                                              q%centerline_speed_u, status)
     if (.not. status%ok()) return
     q%position = q%p%r
     q%velocity = q%p%ru*du + q%p%rv*dv

@@ -98,6 +98,7 @@ program test_tube
   call fd_surface(tube, 'polynomial/ellipse', 0.0_wp, two_pi)
   tube = new_tube_surface(poly, hhelix, flume, st)
   call fd_surface(tube, 'polynomial/flume', -0.3_wp, pi + 0.3_wp)
+  call grid_points(tube, 'polynomial/flume', -0.3_wp, pi + 0.3_wp)
   tube = new_tube_surface(helix, up, blend, st)
   call fd_surface(tube, 'helix/blended section', 0.0_wp, two_pi)
 
@@ -154,6 +155,27 @@ program test_tube
   call finish_tests('test_tube')
 
 contains
+
+  !> points_on_grid (the centerline and frame once per u) = evaluate at every point
+  subroutine grid_points(surf, name, v_lo, v_hi)
+    type(tube_surface_t), intent(in) :: surf
+    character(len=*), intent(in) :: name
+    real(wp), intent(in) :: v_lo, v_hi
+    real(wp) :: u(7), v(5), x(5, 7), y(5, 7), z(5, 7), a, b, d1, d2
+    type(surface_point_t) :: q
+    integer :: i, j
+    call surf%domain(a, b, d1, d2)
+    u = [(a + (b - a)*i/6.0_wp, i = 0, 6)]
+    v = [(v_lo + (v_hi - v_lo)*j/4.0_wp, j = 0, 4)]
+    call surf%points_on_grid(u, v, x, y, z, st)
+    call check(st%ok(), name//': grid status')
+    do i = 1, 7
+      do j = 1, 5
+        call surf%evaluate(u(i), v(j), 0, q, st)
+        call check_close_array([x(j, i), y(j, i), z(j, i)], q%r, 0.0_wp, 1e-14_wp, name//': grid point = evaluate')
+      end do
+    end do
+  end subroutine grid_points
 
   subroutine fd_surface(surf, name, v_lo, v_hi)
     class(surface_t), intent(in) :: surf

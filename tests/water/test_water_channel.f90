@@ -46,7 +46,7 @@ contains
     type(status_t) :: st
     real(wp), parameter :: h = 1e-5_wp, tol = 1e-7_wp
     real(wp) :: us(3) = [0.7_wp, 2.3_wp, 5.1_wp], vs(3) = [0.4_wp, 1.6_wp, 2.9_wp]
-    real(wp) :: chi, chi_s, chi1, chi_s1, speed
+    real(wp) :: chi, chi_s, chi1, chi_s1, speed, speed_u, speed_p, speed_m, speed_u1
     integer :: i
     do i = 1, 3
       call t%evaluate(us(i), vs(i), 3, p, st)
@@ -68,12 +68,15 @@ contains
       call check_close(norm2(p%rv), t%radius, 1e-14_wp, 0.0_wp, 'circle radius |r_v| = r')
       ! the integrator's path: the surface point and chi, chi_s from one
       ! centerline evaluation equal the separate evaluations
-      call t%evaluate_with_curvature(us(i), vs(i), pu1, chi, chi_s, speed, st)
+      call t%evaluate_with_curvature(us(i), vs(i), pu1, chi, chi_s, speed, speed_u, st)
       call t%curvature(us(i), chi1, chi_s1, st)
       call check(all([pu1%r, pu1%ru, pu1%rv, pu1%ruu, pu1%ruv, pu1%rvv] == [p%r, p%ru, p%rv, p%ruu, p%ruv, p%rvv]) &
                  .and. chi == chi1 .and. chi_s == chi_s1, name//': evaluate_with_curvature = evaluate + curvature')
       call check_close(speed, (t%arc_length(us(i) + h) - t%arc_length(us(i) - h))/(2*h), 1e-9_wp, 0.0_wp, &
                        name//': |c_u| = ds/du')
+      call t%evaluate_with_curvature(us(i) + h, vs(i), pu2, chi, chi_s, speed_p, speed_u1, st)
+      call t%evaluate_with_curvature(us(i) - h, vs(i), pu2, chi, chi_s, speed_m, speed_u1, st)
+      call check_close(speed_u, (speed_p - speed_m)/(2*h), 0.0_wp, 1e-8_wp, name//': d|c_u|/du against differences')
     end do
     call t%evaluate(1.0_wp, pi/2, 2, p, st)
     call check(dot_product(cross3(p%ru, p%rv), [0.0_wp, 0.0_wp, 1.0_wp]) > 0, &

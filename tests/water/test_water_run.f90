@@ -81,7 +81,8 @@ contains
     call check(a%series%n == b%series%n, 'two runs: the same samples')
     if (a%series%n /= b%series%n) return
     call check(all(a%series%v(:a%series%n) == b%series%v(:b%series%n)) .and. &
-               all(a%series%left_edge == b%series%left_edge) .and. all(a%table%v_left == b%table%v_left), &
+               all(a%series%left_edge(:, :a%series%n) == b%series%left_edge(:, :b%series%n)) .and. &
+               all(a%table%v_left == b%table%v_left), &
                'two runs of one description: bit-identical')
     call check(all(before%stations == d%stations) .and. before%flow_rate == d%flow_rate .and. &
                before%start%u0 == d%start%u0, 'the description is not changed by a run')

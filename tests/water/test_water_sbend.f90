@@ -50,13 +50,13 @@ contains
     if (.not. st%ok()) error stop 'S-bend tube: '//st%text()
   end function s_bend_channel
 
-  pure subroutine flat_evaluate_with_curvature(self, u, v, p, chi, chi_s, speed, status)
+  pure subroutine flat_evaluate_with_curvature(self, u, v, p, chi, chi_s, speed, speed_u, status)
     class(flat_tube_t), intent(in) :: self
     real(wp), intent(in) :: u, v
     type(surface_point_t), intent(out) :: p
-    real(wp), intent(out) :: chi, chi_s, speed
+    real(wp), intent(out) :: chi, chi_s, speed, speed_u
     type(status_t), intent(out) :: status
-    call self%channel_t%evaluate_with_curvature(u, v, p, chi, chi_s, speed, status)
+    call self%channel_t%evaluate_with_curvature(u, v, p, chi, chi_s, speed, speed_u, status)
     chi = 0; chi_s = 0
   end subroutine flat_evaluate_with_curvature
 
