@@ -30,9 +30,8 @@ module design_geometry_optimization
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use base_text, only: format_short, format_integer
-  use geometry_curve, only: spline_centerline_t, new_spline_centerline, constant_curve_t
-  use geometry_cross_section, only: circle_section_t
-  use geometry_tube, only: tube_surface_t, new_tube_surface
+  use geometry_tube, only: tube_surface_t
+  use geometry_slide_builder, only: slide_description_t, section_part_description_t, build_slide
   use numerics_least_squares, only: least_squares_problem_t, least_squares_options_t, &
     least_squares_result_t, solve_least_squares
   use design_cuboid_ride, only: cuboid_t, cuboid_start_t, cuboid_ride_options_t, cuboid_ride_t, ride_cuboid
@@ -146,11 +145,17 @@ contains
     real(wp), intent(in) :: x(:)
     type(tube_surface_t), intent(out) :: slide
     type(status_t), intent(out) :: status
-    type(spline_centerline_t) :: centerline
-    centerline = new_spline_centerline(design_points(design, x), design%smoothing, design%degree, status)
-    if (status%ok()) slide = new_tube_surface(centerline, constant_curve_t(value=design%horizon), &
-                                              circle_section_t(radius=design%radius), status)
-    if (status%ok()) call slide%check(design%check_samples, status)
+    type(slide_description_t) :: d
+    d%kind = 'tube'
+    d%centerline%kind = 'points'
+    d%centerline%points = design_points(design, x)
+    d%centerline%degree = design%degree
+    d%centerline%smoothing = design%smoothing
+    d%centerline%horizon = design%horizon
+    d%section%parts = [section_part_description_t(kind='circle', radius=design%radius)]
+    d%check_samples = design%check_samples
+    status = status_t()
+    call build_slide(d, slide, status)
     if (.not. status%ok()) then
       call prefix_status(status, 'slide design')
       if (status%code == STATUS_INVALID_INPUT) status%code = STATUS_DOMAIN

@@ -12,15 +12,14 @@ module io_geometry_config
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT, STATUS_IO
   use geometry_surface, only: surface_t
-  use geometry_curve, only: curve_t, line_curve_t, helix_curve_t, constant_curve_t, &
-                            spline_centerline_t, new_spline_centerline
+  use geometry_curve, only: curve_t, constant_curve_t
   use geometry_curve_frame, only: horizon_parallel_tol
-  use geometry_cross_section, only: cross_section_t, section_holder_t, circle_section_t, &
-    ellipse_section_t, flume_section_t, blended_section_t, new_blended_section, profile_section_t, &
-    new_profile_section, polyline_self_intersection
+  use geometry_cross_section, only: cross_section_t, section_holder_t, blended_section_t, new_blended_section, &
+    polyline_self_intersection
   use geometry_tube, only: tube_surface_t, new_tube_surface
-  use geometry_slide_elements, only: slide_element_t, element_chain_curve_t, new_element_chain
-  use geometry_curve, only: curve_point_t
+  use geometry_slide_elements, only: slide_element_t
+  use geometry_slide_builder, only: centerline_description_t, slide_elements_description_t, &
+    section_part_description_t, build_centerline_curve, build_horizon, build_element_centerline, build_section_part
   use geometry_blended_surface, only: blended_surface_t, blend_patch_t, new_blended_surface
   use geometry_elementary, only: ellipsoid_t, paraboloid_t, elliptic_cylinder_t
   use geometry_placed_surface, only: placed_surface_t
@@ -126,8 +125,8 @@ contains
     character(len=4096) :: points_file
     real(wp) :: start(3), end(3), center(3), radius, rise_per_turn, turns, phase_deg, horizon(3)
     real(wp) :: smoothing, start_tangent(3), end_tangent(3)
-    real(wp), allocatable :: points(:, :), horizon_points(:, :), chord(:), table(:, :)
-    type(spline_centerline_t) :: horizon_fit, fitted
+    real(wp), allocatable :: points(:, :), horizon_points(:, :), table(:, :)
+    type(centerline_description_t) :: described
     integer :: n_points, n_given, n_horizon, degree, i
     logical :: have_horizon_points
     character(len=*), parameter :: g = 'centerline'
@@ -175,7 +174,10 @@ contains
                        'must not be parallel to the centerline tangent '//format_vector(t), status)
         return
       end if
-      curve = line_curve_t(origin=start, direction=t, u_min=0.0_wp, u_max=norm2(end - start))
+      described%kind = 'line'
+      described%start = start
+      described%end = end
+      call build_centerline_curve(described, curve, status)
     case ('helix')
       call r%get('center', center, position, status)
       call r%get('radius', radius, in_range(1e-3_wp, 1e4_wp, 'm'), status)
@@ -183,8 +185,13 @@ contains
       call r%get('turns', turns, above(0.0_wp, 1e3_wp, '1'), status)
       call r%get('phase_deg', phase_deg, in_range(-360.0_wp, 360.0_wp, 'deg'), status)
       if (.not. status%ok()) return
-      curve = helix_curve_t(center=center, radius=radius, pitch=rise_per_turn/two_pi, &
-                            phase=phase_deg*pi/180, u_min=0.0_wp, u_max=two_pi*turns)
+      described%kind = 'helix'
+      described%center = center
+      described%radius = radius
+      described%rise_per_turn = rise_per_turn
+      described%turns = turns
+      described%phase = phase_deg*pi/180
+      call build_centerline_curve(described, curve, status)
     case ('points')
       call r%get('n_points', n_points, 4, max_points, status)
       call r%get('points_file', points_file, status)
@@ -274,32 +281,22 @@ contains
           return
         end if
       end do
-      if (any(start_tangent /= 0) .and. any(end_tangent /= 0)) then
-        fitted = new_spline_centerline(points(:, 1:n_points), smoothing, degree, built, &
-                                       start_tangent=start_tangent, end_tangent=end_tangent)
-      else if (any(start_tangent /= 0)) then
-        fitted = new_spline_centerline(points(:, 1:n_points), smoothing, degree, built, start_tangent=start_tangent)
-      else if (any(end_tangent /= 0)) then
-        fitted = new_spline_centerline(points(:, 1:n_points), smoothing, degree, built, end_tangent=end_tangent)
-      else
-        fitted = new_spline_centerline(points(:, 1:n_points), smoothing, degree, built)
-      end if
+      described%kind = 'points'
+      described%points = points(:, 1:n_points)
+      described%smoothing = smoothing
+      described%degree = degree
+      described%start_tangent = start_tangent
+      described%end_tangent = end_tangent
+      described%horizon = horizon
+      call build_centerline_curve(described, curve, built)
       call take_build_failure(input, g, built, status)
       if (.not. status%ok()) return
-      allocate (curve, source=fitted)
       if (have_horizon_points) then
-        ! the horizon field over the centerline's parameter (chord length of the points)
-        allocate (chord(n_points))
-        chord(1) = 0
-        do i = 2, n_points
-          chord(i) = chord(i - 1) + norm2(points(:, i) - points(:, i - 1))
-        end do
-        horizon_fit = new_spline_centerline(horizon_points(:, 1:n_points), 0.0_wp, min(degree, 5), built, &
-                                            parameters=chord)
+        described%horizon_points = horizon_points(:, 1:n_points)
+        deallocate (horizon_out)
+        call build_horizon(described, horizon_out, built)
         call take_build_failure(input, g//': horizon_points', built, status)
         if (.not. status%ok()) return
-        deallocate (horizon_out)
-        allocate (horizon_out, source=horizon_fit)
       end if
     end select
   end subroutine read_centerline
@@ -319,7 +316,7 @@ contains
     real(wp) :: start(3), heading_deg, transition_length, fit_spacing, smoothing
     character(len=8) :: centerline_kind
     type(slide_element_t), allocatable :: e(:)
-    type(element_chain_curve_t) :: chain
+    type(slide_elements_description_t) :: described
     type(status_t) :: built
     type(group_reader_t) :: r
     character(len=:), allocatable :: lim
@@ -404,15 +401,16 @@ contains
       e(i) = slide_element_t(kind=kind(i), length=length(i), slope_deg=slope_deg(i), radius=radius(i), &
                              angle_deg=angle_deg(i), direction=direction(i), turns=turns(i), drop=drop(i))
     end do
-    chain = new_element_chain(e, start, heading_deg, transition_length, built)
+    described%elements = e
+    described%start = start
+    described%heading_deg = heading_deg
+    described%transition_length = transition_length
+    described%exact = centerline_kind == 'exact'
+    described%fit_spacing = fit_spacing
+    described%smoothing = smoothing
+    described%degree = degree
+    call build_element_centerline(described, centerline, built)
     call take_build_failure(input, g, built, status)
-    if (.not. status%ok()) return
-    if (centerline_kind == 'exact') then
-      allocate (centerline, source=chain)
-    else
-      call fit_chain(chain, fit_spacing, smoothing, degree, centerline, built)
-      call take_build_failure(input, g, built, status)
-    end if
 
   contains
 
@@ -436,31 +434,6 @@ contains
     end subroutine no_direction
   end subroutine read_slide_elements
 
-  !> The thesis's way: points of the element chain every ~spacing m of
-  !> horizontal length, fitted by a spline (parcur/concur) with the chain's
-  !> end tangents prescribed.
-  subroutine fit_chain(chain, spacing, smoothing, degree, centerline, status)
-    type(element_chain_curve_t), intent(in) :: chain
-    real(wp), intent(in) :: spacing, smoothing
-    integer, intent(in) :: degree
-    class(curve_t), allocatable, intent(out) :: centerline
-    type(status_t), intent(out) :: status
-    real(wp), allocatable :: pts(:, :)
-    type(curve_point_t) :: p, q
-    type(spline_centerline_t) :: fitted
-    integer :: n, i
-    n = max(degree + 1, ceiling(chain%total/spacing) + 1)
-    allocate (pts(3, n))
-    do i = 1, n
-      call chain%evaluate(chain%total*(i - 1)/real(n - 1, wp), 0, p, status)
-      pts(:, i) = p%d(:, 0)
-    end do
-    call chain%evaluate(0.0_wp, 1, p, status)
-    call chain%evaluate(chain%total, 1, q, status)
-    fitted = new_spline_centerline(pts, smoothing, degree, status, start_tangent=p%d(:, 1), end_tangent=q%d(:, 1))
-    if (status%ok()) allocate (centerline, source=fitted)
-  end subroutine fit_chain
-
   !> &cross_section: n_sections sections (circle, ellipse, flume, profile)
   !> blended along the centerline; transitions given in arc length (m).
   subroutine read_cross_section(input, centerline, section, status)
@@ -477,7 +450,7 @@ contains
     real(wp) :: profile_smoothing, total
     type(section_holder_t), allocatable :: parts(:)
     type(blended_section_t) :: blend
-    type(profile_section_t) :: profile
+    type(section_part_description_t) :: described
     type(status_t) :: built
     type(group_reader_t) :: r
     character(len=:), allocatable :: lim, tlim
@@ -533,14 +506,10 @@ contains
       if (kind(i) /= 'flume') call unused(given_wall, 'wall')
       if (kind(i) /= 'flume') call unused(given_joint, 'joint_width_deg')
       if (.not. status%ok()) return
+      described = section_part_description_t(kind=kind(i), radius=radius(i), half_width=half_width(i), &
+                                             half_height=half_height(i), wall=wall(i), &
+                                             joint_width=joint_width_deg(i)*pi/180)
       select case (trim(kind(i)))
-      case ('circle')
-        allocate (parts(i)%section, source=circle_section_t(radius=radius(i)))
-      case ('ellipse')
-        allocate (parts(i)%section, source=ellipse_section_t(a=half_width(i), b=half_height(i)))
-      case ('flume')
-        allocate (parts(i)%section, source=flume_section_t(radius=radius(i), wall=wall(i), &
-                  transition=joint_width_deg(i)*pi/180))
       case ('profile')
         call r%get('n_profile', n_profile, 4, max_profile, status)
         call r%get_list('profile_y', profile_y, max_profile, in_range(-100.0_wp, 100.0_wp, 'm'), status)
@@ -565,11 +534,14 @@ contains
                          'the profile intersects itself (this segment crosses a later one)', status)
           return
         end if
-        profile = new_profile_section(profile_y, profile_z, profile_smoothing, profile_degree, built)
-        call take_build_failure(input, g, built, status)
-        if (.not. status%ok()) return
-        allocate (parts(i)%section, source=profile)
+        described%profile_y = profile_y
+        described%profile_z = profile_z
+        described%profile_smoothing = profile_smoothing
+        described%profile_degree = profile_degree
       end select
+      call build_section_part(described, parts(i)%section, built)
+      call take_build_failure(input, g, built, status)
+      if (.not. status%ok()) return
     end do
     if (.not. status%ok()) return
     if (n == 1) then

@@ -1,0 +1,316 @@
+!> Slides from description types: a tube surface around a centerline (a
+!> line, a helix, a spline through points, or a chain of standard slide
+!> elements) with a cross-section (circle, ellipse, flume, profile, or several
+!> blended along the centerline). The namelist reader (io_geometry_config)
+!> fills these descriptions from &centerline, &slide_elements and
+!> &cross_section after checking every value; a library caller (the design
+!> loop, a sweep) fills them directly. The defaults are the input defaults of
+!> docs/geometry.md.
+!>
+!> What is checked here is only what the geometry itself refuses (a spline
+!> that cannot be fitted, an element chain that does not connect, a tube
+!> that folds or passes through itself); the messages name the part. Values
+!> out of their documented ranges are the reader's business.
+module geometry_slide_builder
+  use base_kinds, only: wp
+  use base_constants, only: pi, two_pi
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use geometry_curve, only: curve_t, curve_point_t, line_curve_t, helix_curve_t, constant_curve_t, &
+    spline_centerline_t, new_spline_centerline
+  use geometry_cross_section, only: cross_section_t, section_holder_t, circle_section_t, ellipse_section_t, &
+    flume_section_t, blended_section_t, new_blended_section, profile_section_t, new_profile_section
+  use geometry_slide_elements, only: slide_element_t, element_chain_curve_t, new_element_chain
+  use geometry_tube, only: tube_surface_t, new_tube_surface
+  implicit none (type, external)
+  private
+  public :: centerline_description_t, slide_elements_description_t, section_part_description_t, &
+    cross_section_description_t, slide_description_t
+  public :: build_centerline_curve, build_horizon, build_element_centerline, build_section_part, &
+    build_cross_section, build_slide, fit_chain
+
+  !> &centerline: kind 'line' (start, end), 'helix' (center, radius, rise per
+  !> turn, turns, phase) or 'points' (a spline through points); the horizon
+  !> field: a constant vector, or one vector per point (fitted).
+  type :: centerline_description_t
+    character(len=8) :: kind = 'line'
+    real(wp) :: start(3) = [0.0_wp, 0.0_wp, 0.0_wp], end(3) = [10.0_wp, 0.0_wp, 0.0_wp]   !< m
+    real(wp) :: center(3) = 0                  !< m
+    real(wp) :: radius = 5                     !< m
+    real(wp) :: rise_per_turn = 0              !< m
+    real(wp) :: turns = 0.25_wp                !< 1
+    real(wp) :: phase = -pi/2                  !< rad
+    real(wp), allocatable :: points(:, :)      !< m, 3 x n (n >= degree + 1)
+    real(wp) :: smoothing = 0                  !< m^2 (FITPACK's s; 0 interpolates)
+    integer :: degree = 5                      !< 3, 4 or 5
+    real(wp) :: start_tangent(3) = 0, end_tangent(3) = 0   !< 0: free; odd degree when given
+    real(wp) :: horizon(3) = [0.0_wp, 0.0_wp, 1.0_wp]
+    real(wp), allocatable :: horizon_points(:, :)          !< 3 x n: one horizon vector per point
+  end type centerline_description_t
+
+  !> &slide_elements: a chain of standard elements, its start, heading and
+  !> transition length; the centerline is the chain itself ('exact') or a
+  !> spline through its points every fit_spacing m (the thesis's way).
+  type :: slide_elements_description_t
+    type(slide_element_t), allocatable :: elements(:)
+    real(wp) :: start(3) = 0                   !< m
+    real(wp) :: heading_deg = 0                !< deg
+    real(wp) :: transition_length = 2          !< m
+    logical :: exact = .false.                 !< centerline_kind = 'exact'
+    real(wp) :: fit_spacing = 0.125_wp         !< m
+    real(wp) :: smoothing = 0                  !< m^2
+    integer :: degree = 5                      !< 3 or 5
+  end type slide_elements_description_t
+
+  !> One cross-section: 'circle' (radius), 'ellipse' (half width and
+  !> height), 'flume' (radius, wall, joint width) or 'profile' (points).
+  type :: section_part_description_t
+    character(len=8) :: kind = 'circle'
+    real(wp) :: radius = 0.5_wp                !< m
+    real(wp) :: half_width = 0.5_wp, half_height = 0.5_wp   !< m
+    real(wp) :: wall = 0.164_wp                !< m
+    real(wp) :: joint_width = 0.05_wp          !< rad
+    real(wp), allocatable :: profile_y(:), profile_z(:)     !< m
+    real(wp) :: profile_smoothing = 0          !< m^2
+    integer :: profile_degree = 5
+  end type section_part_description_t
+
+  !> &cross_section: one part, or several blended along the centerline with
+  !> transitions at arc lengths (m) from the start.
+  type :: cross_section_description_t
+    type(section_part_description_t), allocatable :: parts(:)      !< default: one circle
+    real(wp), allocatable :: transition_midpoint(:), transition_end(:)   !< m, one per transition
+  end type cross_section_description_t
+
+  !> A whole slide: kind 'tube' (from `centerline`) or 'slide' (from
+  !> `elements`, horizon [0, 0, 1]), its cross-section, and the number of
+  !> samples of the check that it neither folds nor passes through itself.
+  type :: slide_description_t
+    character(len=8) :: kind = 'slide'
+    type(centerline_description_t) :: centerline
+    type(slide_elements_description_t) :: elements
+    type(cross_section_description_t) :: section
+    integer :: check_samples = 2000
+  end type slide_description_t
+
+contains
+
+  !> The centerline curve of a &centerline description.
+  subroutine build_centerline_curve(d, curve, status)
+    type(centerline_description_t), intent(in) :: d
+    class(curve_t), allocatable, intent(out) :: curve
+    type(status_t), intent(inout) :: status
+    type(spline_centerline_t) :: fitted
+    type(status_t) :: built
+    select case (trim(d%kind))
+    case ('line')
+      curve = line_curve_t(origin=d%start, direction=(d%end - d%start)/norm2(d%end - d%start), u_min=0.0_wp, &
+                           u_max=norm2(d%end - d%start))
+    case ('helix')
+      curve = helix_curve_t(center=d%center, radius=d%radius, pitch=d%rise_per_turn/two_pi, phase=d%phase, &
+                            u_min=0.0_wp, u_max=two_pi*d%turns)
+    case ('points')
+      if (.not. allocated(d%points)) then
+        call set_status(status, STATUS_INVALID_INPUT, 'centerline: no points')
+        return
+      end if
+      if (any(d%start_tangent /= 0) .and. any(d%end_tangent /= 0)) then
+        fitted = new_spline_centerline(d%points, d%smoothing, d%degree, built, &
+                                       start_tangent=d%start_tangent, end_tangent=d%end_tangent)
+      else if (any(d%start_tangent /= 0)) then
+        fitted = new_spline_centerline(d%points, d%smoothing, d%degree, built, start_tangent=d%start_tangent)
+      else if (any(d%end_tangent /= 0)) then
+        fitted = new_spline_centerline(d%points, d%smoothing, d%degree, built, end_tangent=d%end_tangent)
+      else
+        fitted = new_spline_centerline(d%points, d%smoothing, d%degree, built)
+      end if
+      if (.not. built%ok()) then
+        status = built
+        return
+      end if
+      allocate (curve, source=fitted)
+    case default
+      call set_status(status, STATUS_INVALID_INPUT, 'centerline: kind '''//trim(d%kind)// &
+                      ''' is not one of line, helix, points')
+    end select
+  end subroutine build_centerline_curve
+
+  !> The horizon field of a &centerline description: the constant horizon,
+  !> or for points with horizon_points a spline through them over the
+  !> centerline's parameter (the chord length of the points).
+  subroutine build_horizon(d, horizon, status)
+    type(centerline_description_t), intent(in) :: d
+    class(curve_t), allocatable, intent(out) :: horizon
+    type(status_t), intent(inout) :: status
+    type(spline_centerline_t) :: horizon_fit
+    real(wp), allocatable :: chord(:)
+    integer :: i, n
+    if (trim(d%kind) /= 'points' .or. .not. allocated(d%horizon_points)) then
+      allocate (horizon, source=constant_curve_t(value=d%horizon))
+      return
+    end if
+    n = size(d%points, 2)
+    allocate (chord(n))
+    chord(1) = 0
+    do i = 2, n
+      chord(i) = chord(i - 1) + norm2(d%points(:, i) - d%points(:, i - 1))
+    end do
+    horizon_fit = new_spline_centerline(d%horizon_points, 0.0_wp, min(d%degree, 5), status, parameters=chord)
+    if (status%ok()) allocate (horizon, source=horizon_fit)
+  end subroutine build_horizon
+
+  !> The centerline of a chain of slide elements: the chain, or the spline
+  !> through its points (fit_chain).
+  subroutine build_element_centerline(d, centerline, status)
+    type(slide_elements_description_t), intent(in) :: d
+    class(curve_t), allocatable, intent(out) :: centerline
+    type(status_t), intent(inout) :: status
+    type(element_chain_curve_t) :: chain
+    type(status_t) :: built
+    chain = new_element_chain(d%elements, d%start, d%heading_deg, d%transition_length, built)
+    if (.not. built%ok()) then
+      status = built
+      return
+    end if
+    if (d%exact) then
+      allocate (centerline, source=chain)
+    else
+      call fit_chain(chain, d%fit_spacing, d%smoothing, d%degree, centerline, built)
+      if (.not. built%ok()) status = built
+    end if
+  end subroutine build_element_centerline
+
+  !> The thesis's way: points of the element chain every ~spacing m of
+  !> horizontal length, fitted by a spline (parcur/concur) with the chain's
+  !> end tangents prescribed.
+  subroutine fit_chain(chain, spacing, smoothing, degree, centerline, status)
+    type(element_chain_curve_t), intent(in) :: chain
+    real(wp), intent(in) :: spacing, smoothing
+    integer, intent(in) :: degree
+    class(curve_t), allocatable, intent(out) :: centerline
+    type(status_t), intent(out) :: status
+    real(wp), allocatable :: pts(:, :)
+    type(curve_point_t) :: p, q
+    type(spline_centerline_t) :: fitted
+    integer :: n, i
+    n = max(degree + 1, ceiling(chain%total/spacing) + 1)
+    allocate (pts(3, n))
+    do i = 1, n
+      call chain%evaluate(chain%total*(i - 1)/real(n - 1, wp), 0, p, status)
+      pts(:, i) = p%d(:, 0)
+    end do
+    call chain%evaluate(0.0_wp, 1, p, status)
+    call chain%evaluate(chain%total, 1, q, status)
+    fitted = new_spline_centerline(pts, smoothing, degree, status, start_tangent=p%d(:, 1), end_tangent=q%d(:, 1))
+    if (status%ok()) allocate (centerline, source=fitted)
+  end subroutine fit_chain
+
+  !> One cross-section.
+  subroutine build_section_part(p, section, status)
+    type(section_part_description_t), intent(in) :: p
+    class(cross_section_t), allocatable, intent(out) :: section
+    type(status_t), intent(inout) :: status
+    type(profile_section_t) :: profile
+    type(status_t) :: built
+    select case (trim(p%kind))
+    case ('circle')
+      allocate (section, source=circle_section_t(radius=p%radius))
+    case ('ellipse')
+      allocate (section, source=ellipse_section_t(a=p%half_width, b=p%half_height))
+    case ('flume')
+      allocate (section, source=flume_section_t(radius=p%radius, wall=p%wall, transition=p%joint_width))
+    case ('profile')
+      if (.not. (allocated(p%profile_y) .and. allocated(p%profile_z))) then
+        call set_status(status, STATUS_INVALID_INPUT, 'cross-section: a profile needs profile_y and profile_z')
+        return
+      end if
+      profile = new_profile_section(p%profile_y, p%profile_z, p%profile_smoothing, p%profile_degree, built)
+      if (.not. built%ok()) then
+        status = built
+        return
+      end if
+      allocate (section, source=profile)
+    case default
+      call set_status(status, STATUS_INVALID_INPUT, 'cross-section: kind '''//trim(p%kind)// &
+                      ''' is not one of circle, ellipse, flume, profile')
+    end select
+  end subroutine build_section_part
+
+  !> The cross-section along `centerline`: one part, or the parts blended
+  !> across the transitions (arc lengths along the centerline).
+  subroutine build_cross_section(d, centerline, section, status)
+    type(cross_section_description_t), intent(in) :: d
+    class(curve_t), intent(in) :: centerline
+    class(cross_section_t), allocatable, intent(out) :: section
+    type(status_t), intent(inout) :: status
+    type(section_holder_t), allocatable :: parts(:)
+    type(blended_section_t) :: blend
+    real(wp), allocatable :: u_mid(:), u_end(:)
+    integer :: i, n
+    if (.not. allocated(d%parts)) then
+      allocate (section, source=circle_section_t())
+      return
+    end if
+    n = size(d%parts)
+    allocate (parts(n))
+    do i = 1, n
+      call build_section_part(d%parts(i), parts(i)%section, status)
+      if (.not. status%ok()) return
+    end do
+    if (n == 1) then
+      call move_alloc(parts(1)%section, section)
+      return
+    end if
+    if (.not. (allocated(d%transition_midpoint) .and. allocated(d%transition_end))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'cross-section: several parts need their transitions')
+      return
+    end if
+    if (size(d%transition_midpoint) /= n - 1 .or. size(d%transition_end) /= n - 1) then
+      call set_status(status, STATUS_INVALID_INPUT, 'cross-section: one transition between each two parts')
+      return
+    end if
+    allocate (u_mid(n - 1), u_end(n - 1))
+    do i = 1, n - 1
+      call centerline%parameter_at_length(d%transition_midpoint(i), u_mid(i), status)
+      if (status%ok()) call centerline%parameter_at_length(d%transition_end(i), u_end(i), status)
+      if (.not. status%ok()) return
+    end do
+    blend = new_blended_section(parts, u_mid, u_end, status)
+    if (status%ok()) allocate (section, source=blend)
+  end subroutine build_cross_section
+
+  !> The whole slide, checked (no folding, no part through another).
+  subroutine build_slide(d, slide, status)
+    type(slide_description_t), intent(in) :: d
+    type(tube_surface_t), intent(out) :: slide
+    type(status_t), intent(inout) :: status
+    class(curve_t), allocatable :: centerline, horizon
+    class(cross_section_t), allocatable :: section
+    character(len=:), allocatable :: part
+    if (.not. status%ok()) return
+    select case (trim(d%kind))
+    case ('tube')
+      part = 'centerline'
+      call build_centerline_curve(d%centerline, centerline, status)
+      if (status%ok()) call build_horizon(d%centerline, horizon, status)
+    case ('slide')
+      part = 'slide elements'
+      call build_element_centerline(d%elements, centerline, status)
+      if (status%ok()) allocate (horizon, source=constant_curve_t(value=[0.0_wp, 0.0_wp, 1.0_wp]))
+    case default
+      call set_status(status, STATUS_INVALID_INPUT, 'slide: kind '''//trim(d%kind)//''' is not tube or slide')
+      return
+    end select
+    if (.not. status%ok()) then
+      call prefix_status(status, part)
+      return
+    end if
+    call build_cross_section(d%section, centerline, section, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'cross-section')
+      return
+    end if
+    slide = new_tube_surface(centerline, horizon, section, status)
+    if (status%ok()) call slide%check(d%check_samples, status)
+    if (.not. status%ok()) call prefix_status(status, part//' with the cross-section')
+  end subroutine build_slide
+end module geometry_slide_builder
