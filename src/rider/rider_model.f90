@@ -1,0 +1,217 @@
+!> The rider as a mechanism (thesis 4.3, (4.27); METHOD-PART2 B.1): the
+!> pelvis on a surface joint with its heading (q = [u_B, v_B, phi_B]), legs and
+!> trunk on revolutes at the hip (flexion phi_U, tilt phi_O), heels and back
+!> held on the slide by a surface joint each and three plane-point conditions
+!> in that contact's Darboux frame (dependent [phi_U, u_U, v_U] and
+!> [phi_O, u_O, v_O]), the same closure as the sled's front end.
+!>
+!> Frames (docs/rider.md "Body"): the Darboux frame of each contact has
+!> sigma = 1 (z into the tube), alpha_u = 1, alpha_v = 0 (x along r_u, down the
+!> slide); the pelvis frame P is the pelvis contact's Darboux frame turned by
+!> phi_B about z. Legs turn about -y_P at the hip (positive flexion lifts the
+!> heels), the trunk about +y_P (positive tilt lifts the head).
+!>
+!> The model is built from a description (rider_params_t) and nothing else:
+!> no module state, so many riders can be built and run at once.
+module rider_model
+  use base_kinds, only: wp
+  use base_constants, only: pi, standard_gravity
+  use base_text, only: format_short
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_darboux, only: darboux_frame_t, darboux_frame
+  use kinetostatics_joints, only: new_rigid_offset, new_revolute
+  use kinetostatics_surface_joint, only: new_surface_joint
+  use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT
+  use kinetostatics_mass, only: new_mass_element
+  use kinetostatics_mechanism, only: mechanism_t
+  use rider_body, only: body_params_t, rider_body_t, build_rider_body
+  use rider_drag, only: water_properties_t
+  use rider_start, only: contact_reach_t, reach_contact
+  implicit none (type, external)
+  private
+  public :: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names
+  public :: CONTACT_PELVIS, CONTACT_HEELS, CONTACT_BACK, N_CONTACTS
+
+  integer, parameter :: CONTACT_PELVIS = 1, CONTACT_HEELS = 2, CONTACT_BACK = 3, N_CONTACTS = 3
+  character(len=*), parameter :: contact_names(N_CONTACTS) = [character(len=6) :: 'pelvis', 'heels', 'back']
+
+  !> Joint angles the start search may use (rad): legs' flexion, trunk's tilt.
+  real(wp), parameter :: flexion_range(2) = [-30, 90]*(pi/180)
+  real(wp), parameter :: tilt_range(2) = [-30, 90]*(pi/180)
+
+  !> Everything that defines a rider and its start (docs/rider.md, &rider).
+  type :: rider_params_t
+    type(body_params_t) :: body
+    real(wp) :: mu = 0.0724419_wp                   ! 1, Coulomb at all three contacts (thesis table 4.8)
+    logical :: drag = .true.                        ! water drag on the three spheres
+    real(wp) :: drag_radius(N_CONTACTS) = [0.5_wp, 0.05_wp, 0.5_wp]   ! m: pelvis, heels, back (thesis 4.3)
+    type(water_properties_t) :: water
+    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]     ! m/s^2
+    real(wp) :: u0 = 0.5_wp                         ! pelvis start: surface parameter (m on slides)
+    real(wp) :: v0 = pi/2                           ! rad (pi/2: the bottom of a tube)
+    real(wp) :: heading0 = 0                        ! rad, body axis from x_D (down the slide) towards y_D
+    real(wp) :: speed0 = 1                          ! m/s, along the body axis
+  end type rider_params_t
+
+  !> Where the rider's pieces sit in the mechanism.
+  type :: rider_layout_t
+    integer :: contact_frame(N_CONTACTS) = 0        ! Darboux frames D_B, D_U, D_O
+    integer :: body_frame(N_CONTACTS) = 0           ! P, L, T (the body each contact belongs to)
+    integer :: u(N_CONTACTS) = 0, v(N_CONTACTS) = 0 ! scalar indices of the contacts' (u, v)
+    integer :: heading = 0, flexion = 0, tilt = 0   ! scalar indices of phi_B, phi_U, phi_O
+    integer :: closure(6) = 0                       ! the six closure measurements
+    type(rider_body_t) :: body
+  end type rider_layout_t
+
+  real(wp), parameter :: sigma = 1, alpha_u = 1, alpha_v = 0
+  real(wp), parameter :: ex(3) = [1.0_wp, 0.0_wp, 0.0_wp], ey(3) = [0.0_wp, 1.0_wp, 0.0_wp], &
+    ez(3) = [0.0_wp, 0.0_wp, 1.0_wp]
+
+contains
+
+  !> The rider's mechanism at its start q0 = [u0, v0, heading0] with the
+  !> dependent coordinates where heels and back meet the slide (refused, with
+  !> which contact and by how much, if they cannot). Contacts and their
+  !> friction are added by the caller from `layout`.
+  subroutine build_rider(p, surface, m, layout, q0, status)
+    type(rider_params_t), intent(in) :: p
+    class(surface_t), intent(in) :: surface
+    type(mechanism_t), intent(out) :: m
+    type(rider_layout_t), intent(out) :: layout
+    real(wp), intent(out) :: q0(3)
+    type(status_t), intent(inout) :: status
+    type(surface_point_t) :: pt
+    type(darboux_frame_t) :: fr
+    type(contact_reach_t) :: heels, back
+    real(wp) :: axes(3, 3), hip(3)
+    integer :: d_b, pelvis, hip_frame, legs, heel, d_u, trunk, back_point, d_o, su, sv
+
+    q0 = [p%u0, p%v0, p%heading0]
+    call build_rider_body(p%body, layout%body, status)
+    if (.not. status%ok()) return
+    if (.not. surface%in_domain(p%u0, p%v0)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'the start u0 = '//format_short(p%u0)//', v0 = '// &
+                      format_short(p%v0)//' lies off the slide')
+      return
+    end if
+    call surface%evaluate(p%u0, p%v0, 3, pt, status)
+    if (status%ok()) call darboux_frame(pt, sigma, alpha_u, alpha_v, fr, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'rider start')
+      return
+    end if
+    ! pelvis frame at the start: the Darboux frame turned by the heading
+    axes(:, 1) = cos(p%heading0)*fr%r(:, 1) + sin(p%heading0)*fr%r(:, 2)
+    axes(:, 3) = fr%r(:, 3)
+    axes(:, 2) = -sin(p%heading0)*fr%r(:, 1) + cos(p%heading0)*fr%r(:, 2)
+    hip = pt%r + matmul(axes, layout%body%hip)
+    call reach_contact(surface, sigma, alpha_u, alpha_v, hip + matmul(axes, layout%body%heel), hip, -axes(:, 2), &
+                       flexion_range, p%u0, p%v0, heels, status)
+    if (status%ok()) call reach_contact(surface, sigma, alpha_u, alpha_v, hip + matmul(axes, layout%body%back), hip, &
+                                        axes(:, 2), tilt_range, p%u0, p%v0, back, status)
+    if (.not. status%ok()) return
+    if (.not. heels%reached) then
+      call set_status(status, STATUS_INVALID_INPUT, 'at the start the heels cannot reach the slide: '//heels%problem)
+      return
+    end if
+    if (.not. back%reached) then
+      call set_status(status, STATUS_INVALID_INPUT, 'at the start the back cannot reach the slide: '//back%problem)
+      return
+    end if
+
+    ! pelvis: surface joint, heading, mass
+    d_b = m%add_frame('pelvis_contact')
+    layout%u(CONTACT_PELVIS) = m%add_scalar('u_pelvis', p%u0)
+    layout%v(CONTACT_PELVIS) = m%add_scalar('v_pelvis', p%v0)
+    call m%add_element(new_surface_joint('pelvis_joint', 1, d_b, layout%u(CONTACT_PELVIS), &
+                                         layout%v(CONTACT_PELVIS), surface, sigma, alpha_u, alpha_v))
+    pelvis = m%add_frame('pelvis')
+    layout%heading = m%add_scalar('heading', p%heading0)
+    call m%add_element(new_revolute('heading', d_b, pelvis, layout%heading, ez))
+    call m%add_element(new_mass_element('pelvis_mass', pelvis, layout%body%pelvis%mass, layout%body%pelvis%inertia, &
+                                        layout%body%pelvis%com, p%gravity, status))
+    hip_frame = m%add_frame('hip')
+    call m%add_element(new_rigid_offset('pelvis_to_hip', pelvis, hip_frame, layout%body%hip))
+
+    ! legs: flexion about -y, heel point, heel contact closed by three plane-point conditions
+    legs = m%add_frame('legs')
+    layout%flexion = m%add_scalar('phi_legs', heels%angle)
+    call m%add_element(new_revolute('hip_flexion', hip_frame, legs, layout%flexion, -ey))
+    call m%add_element(new_mass_element('legs_mass', legs, layout%body%legs%mass, layout%body%legs%inertia, &
+                                        layout%body%legs%com, p%gravity, status))
+    heel = m%add_frame('heel_point')
+    call m%add_element(new_rigid_offset('legs_to_heel', legs, heel, layout%body%heel))
+    d_u = m%add_frame('heel_contact')
+    su = m%add_scalar('u_heels', heels%u)
+    sv = m%add_scalar('v_heels', heels%v)
+    layout%u(CONTACT_HEELS) = su
+    layout%v(CONTACT_HEELS) = sv
+    call m%add_element(new_surface_joint('heel_joint', 1, d_u, su, sv, surface, sigma, alpha_u, alpha_v))
+    call close_point('heels', d_u, heel, [layout%flexion, su, sv], layout%closure(1:3))
+
+    ! trunk: tilt about +y, back point, back contact
+    trunk = m%add_frame('trunk')
+    layout%tilt = m%add_scalar('phi_trunk', back%angle)
+    call m%add_element(new_revolute('trunk_tilt', hip_frame, trunk, layout%tilt, ey))
+    call m%add_element(new_mass_element('trunk_mass', trunk, layout%body%trunk%mass, layout%body%trunk%inertia, &
+                                        layout%body%trunk%com, p%gravity, status))
+    back_point = m%add_frame('back_point')
+    call m%add_element(new_rigid_offset('trunk_to_back', trunk, back_point, layout%body%back))
+    d_o = m%add_frame('back_contact')
+    su = m%add_scalar('u_back', back%u)
+    sv = m%add_scalar('v_back', back%v)
+    layout%u(CONTACT_BACK) = su
+    layout%v(CONTACT_BACK) = sv
+    call m%add_element(new_surface_joint('back_joint', 1, d_o, su, sv, surface, sigma, alpha_u, alpha_v))
+    call close_point('back', d_o, back_point, [layout%tilt, su, sv], layout%closure(4:6))
+
+    layout%contact_frame = [d_b, d_u, d_o]
+    layout%body_frame = [pelvis, legs, trunk]
+    call m%set_coordinates([layout%u(CONTACT_PELVIS), layout%v(CONTACT_PELVIS), layout%heading])
+
+  contains
+
+    !> Point `point` held at the origin of the Darboux frame `contact`:
+    !> three plane-point measurements along its axes (4.27), one loop.
+    subroutine close_point(name, contact, point, dependents, measurements)
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: contact, point, dependents(3)
+      integer, intent(out) :: measurements(3)
+      character(len=1), parameter :: axis_names(3) = ['x', 'y', 'z']
+      real(wp) :: axis(3, 3)
+      integer :: i
+      axis = reshape([ex, ey, ez], [3, 3])
+      do i = 1, 3
+        measurements(i) = m%add_scalar(name//'_'//axis_names(i))
+        call m%add_element(new_measurement(name//'_'//axis_names(i), MEASURE_PLANE_POINT, contact, point, &
+                                           measurements(i), axis_i=axis(:, i)))
+      end do
+      call m%add_loop(name, measurements, [0.0_wp, 0.0_wp, 0.0_wp], dependents, status)
+    end subroutine close_point
+  end subroutine build_rider
+
+  !> q0' for the start speed along the body axis: r_u u' + r_v v' = speed x_P.
+  subroutine rider_start_velocity(p, surface, qd0, status)
+    type(rider_params_t), intent(in) :: p
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(out) :: qd0(3)
+    type(status_t), intent(inout) :: status
+    type(surface_point_t) :: pt
+    type(darboux_frame_t) :: fr
+    real(wp) :: w(3), e11, e12, e22, b1, b2, det
+    qd0 = 0
+    call surface%evaluate(p%u0, p%v0, 2, pt, status)
+    if (status%ok()) call darboux_frame(pt, sigma, alpha_u, alpha_v, fr, status)
+    if (.not. status%ok()) return
+    w = p%speed0*(cos(p%heading0)*fr%r(:, 1) + sin(p%heading0)*fr%r(:, 2))
+    e11 = dot_product(pt%ru, pt%ru)
+    e12 = dot_product(pt%ru, pt%rv)
+    e22 = dot_product(pt%rv, pt%rv)
+    b1 = dot_product(pt%ru, w)
+    b2 = dot_product(pt%rv, w)
+    det = e11*e22 - e12**2
+    qd0(1) = (e22*b1 - e12*b2)/det
+    qd0(2) = (e11*b2 - e12*b1)/det
+  end subroutine rider_start_velocity
+end module rider_model
