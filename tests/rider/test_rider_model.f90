@@ -18,9 +18,7 @@ program test_rider_model
   use base_kinds, only: wp
   use base_constants, only: pi, standard_gravity
   use base_status, only: status_t
-  use geometry_curve, only: line_curve_t, constant_curve_t
-  use geometry_cross_section, only: circle_section_t
-  use geometry_tube, only: tube_surface_t, new_tube_surface
+  use geometry_tube, only: tube_surface_t, new_straight_tube
   use kinetostatics_mechanism, only: mechanism_t
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names, &
     CONTACT_PELVIS, CONTACT_HEELS, CONTACT_BACK
@@ -44,9 +42,7 @@ contains
     real(wp) :: r
     r = 0.5_wp
     if (present(radius)) r = radius
-    tube = new_tube_surface(line_curve_t(origin=[0.0_wp, 0.0_wp, 0.0_wp], direction=[cos(theta), 0.0_wp, &
-                            -sin(theta)], u_min=0.0_wp, u_max=length), constant_curve_t(), &
-                            circle_section_t(radius=r), st)
+    tube = new_straight_tube(r, theta, length, st)
     call check(st%ok(), 'straight tube built')
   end function straight_tube
 
