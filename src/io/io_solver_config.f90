@@ -25,17 +25,26 @@ module io_solver_config
 
 contains
 
-  subroutine read_solver_config(input, config, status)
+  !> &solver, or the same variables in the group `group` (the ride's
+  !> &water_solver); values not given keep `defaults` (or the type's).
+  subroutine read_solver_config(input, config, status, group, defaults)
     type(input_text_t), intent(in) :: input
     type(solver_config_t), intent(out) :: config
     type(status_t), intent(inout) :: status
+    character(len=*), intent(in), optional :: group
+    type(solver_config_t), intent(in), optional :: defaults
     character(len=8) :: method
     type(group_reader_t) :: r
     character(len=*), parameter :: names(8) = [character(len=12) :: 'method', 'rtol', 'atol', 'max_steps', &
       'initial_step', 'max_step', 'duration', 'output_step']
 
-    method = 'adams'
-    call open_group(input, 'solver', names, r, status)
+    if (present(defaults)) config = defaults
+    method = merge('bdf  ', 'adams', config%options%method == ODE_BDF)
+    if (present(group)) then
+      call open_group(input, group, names, r, status)
+    else
+      call open_group(input, 'solver', names, r, status)
+    end if
     call r%get('method', method, status, choices=[character(len=5) :: 'adams', 'bdf'])
     call r%get('rtol', config%options%rtol, in_range(1e-14_wp, 1e-2_wp, '1'), status)
     call r%get('atol', config%options%atol, in_range(1e-16_wp, 1.0_wp, 'units of the state'), status)

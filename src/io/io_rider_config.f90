@@ -1,0 +1,115 @@
+!> &rider: the rider (body, start, friction, drag) and the limits its ride is
+!> judged against (docs/rider.md, "Input"). Everything is checked here, before
+!> any work; what needs the slide (the start lies on it, the spheres fit in
+!> the tube, the heels and back reach it) is checked when the rider is built.
+module io_rider_config
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_text, only: format_integer
+  use base_status, only: status_t
+  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, format_real
+  use rider_body, only: SEX_MALE, SEX_FEMALE
+  use rider_model, only: rider_params_t
+  use design_ride_evaluation, only: ride_limit_t, new_ride_limit
+  implicit none (type, external)
+  private
+  public :: rider_config_t, read_rider_config, rider_names, max_limits
+
+  integer, parameter :: max_limits = 20
+
+  character(len=*), parameter :: rider_names(19) = [character(len=16) :: 'sex', 'mass', 'height', 'com_height', &
+    'mu', 'drag', 'drag_radius', 'water_density', 'water_viscosity', 'gravity', 'u0', 'v0', 'heading0_deg', &
+    'speed0', 'min_speed', 'limit_quantity', 'limit_min', 'limit_max', 'limit_unit']
+
+  type :: rider_config_t
+    type(rider_params_t) :: params
+    real(wp) :: min_speed = 0.05_wp                 ! m/s, the ride has stalled below
+    type(ride_limit_t), allocatable :: limits(:)
+  end type rider_config_t
+
+contains
+
+  subroutine read_rider_config(input, config, status)
+    type(input_text_t), intent(in) :: input
+    type(rider_config_t), intent(out) :: config
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    character(len=8) :: sex
+    character(len=32) :: quantity(max_limits), unit(max_limits)
+    real(wp) :: minimum(max_limits), maximum(max_limits), heading_deg
+    logical :: has_quantity(max_limits), has_unit(max_limits), has_min(max_limits), has_max(max_limits)
+    character(len=:), allocatable :: problem
+    character(len=*), parameter :: count_text = 'at most 20 limits'
+    integer :: n, k
+
+    sex = 'male'
+    heading_deg = 0
+    quantity = ''
+    unit = ''
+    minimum = 0
+    maximum = 0
+    associate (p => config%params)
+      call open_group(input, 'rider', rider_names, r, status)
+      call r%get('sex', sex, status, choices=[character(len=6) :: 'male', 'female'])
+      call r%get('mass', p%body%mass, in_range(10.0_wp, 300.0_wp, 'kg'), status)
+      call r%get('height', p%body%height, in_range(0.5_wp, 2.5_wp, 'm'), status)
+      call r%get('com_height', p%body%com_height, above(0.0_wp, 0.5_wp, 'm'), status)
+      call r%get('mu', p%mu, in_range(0.0_wp, 2.0_wp, '1'), status)
+      call r%get('drag', p%drag, status)
+      call r%get('drag_radius', p%drag_radius, above(0.0_wp, 5.0_wp, 'm'), status)
+      call r%get('water_density', p%water%density, in_range(100.0_wp, 5000.0_wp, 'kg/m^3'), status)
+      call r%get('water_viscosity', p%water%kinematic_viscosity, in_range(1e-8_wp, 1e-3_wp, 'm^2/s'), status)
+      call r%get('gravity', p%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
+      call r%get('u0', p%u0, in_range(-1e6_wp, 1e6_wp, 'surface parameter'), status)
+      call r%get('v0', p%v0, in_range(-10.0_wp, 10.0_wp, 'rad'), status)
+      call r%get('heading0_deg', heading_deg, in_range(-180.0_wp, 180.0_wp, 'deg'), status)
+      call r%get('speed0', p%speed0, above(0.0_wp, 50.0_wp, 'm/s'), status)
+      call r%get('min_speed', config%min_speed, above(0.0_wp, 10.0_wp, 'm/s'), status)
+      call r%get_parts('limit_quantity', quantity, count_text, status, given=has_quantity)
+      call r%get_parts('limit_unit', unit, count_text, status, given=has_unit)
+      call r%get_parts('limit_min', minimum, in_range(-1e6_wp, 1e6_wp, 'the limit''s unit'), count_text, status, &
+                       given=has_min)
+      call r%get_parts('limit_max', maximum, in_range(-1e6_wp, 1e6_wp, 'the limit''s unit'), count_text, status, &
+                       given=has_max)
+      if (.not. status%ok()) return
+      p%body%sex = merge(SEX_MALE, SEX_FEMALE, sex == 'male')
+      p%heading0 = heading_deg*pi/180
+      if (.not. norm2(p%gravity) > 0) then
+        call r%invalid('gravity', format_real(p%gravity(1))//', '//format_real(p%gravity(2))//', '// &
+                       format_real(p%gravity(3)), 'the felt accelerations are in multiples of |gravity|: it '// &
+                       'must not be zero', status)
+        return
+      end if
+    end associate
+
+    ! limits: entries 1..n, each a known quantity with a unit and a bound
+    n = count(has_quantity)
+    if (any(has_quantity(n + 1:))) then
+      call r%invalid('limit_quantity', r%written('limit_quantity'), 'list the limits without gaps, from the '// &
+                     'first', status)
+      return
+    end if
+    do k = n + 1, max_limits
+      if (has_unit(k) .or. has_min(k) .or. has_max(k)) then
+        call r%invalid('limit_unit, limit_min, limit_max ('//format_integer(k)//')', r%written('limit_unit'), &
+                       'limit '//format_integer(k)//' has no limit_quantity', status)
+        return
+      end if
+    end do
+    allocate (config%limits(n))
+    do k = 1, n
+      if (.not. has_unit(k)) then
+        call r%invalid('limit_unit('//format_integer(k)//')', '(not given)', 'every limit needs its unit, '// &
+                       'e.g. ''g'', ''m/s'', ''m'', ''N'', ''deg''', status)
+        return
+      end if
+      call new_ride_limit(quantity(k), unit(k), minimum(k), has_min(k), maximum(k), has_max(k), &
+                          norm2(config%params%gravity), config%limits(k), problem)
+      if (len(problem) > 0) then
+        call r%invalid('limit '//format_integer(k), ''''//trim(quantity(k))//''' in '''//trim(unit(k))//'''', &
+                       problem, status)
+        return
+      end if
+    end do
+  end subroutine read_rider_config
+end module io_rider_config
