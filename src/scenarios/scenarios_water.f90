@@ -41,11 +41,15 @@ module scenarios_water
 contains
 
   !> Reads and checks every input group and gives the water's description
-  !> (what water_run computes); nothing is run or written.
-  subroutine build_water(input, description, status)
+  !> (what water_run computes); nothing is run or written. As a stage of
+  !> another scenario (`stage` given, e.g. the ride) the caller checks the
+  !> groups, and the water's integrator settings come from &water_solver
+  !> (its own tolerances; the water and the rider do not share one &solver).
+  subroutine build_water(input, description, status, stage)
     type(input_text_t), intent(in) :: input
     type(water_description_t), intent(out) :: description
     type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: stage
     type(solver_config_t) :: solver
     type(water_config_t) :: config
     class(surface_t), allocatable :: surface
@@ -56,8 +60,12 @@ contains
     real(wp), parameter :: plausible_speed = 30   ! m/s
     integer :: i
 
-    call check_known_groups(input, water_groups, status)
-    if (status%ok()) call read_solver_config(input, solver, status)
+    if (present(stage)) then
+      call read_solver_config(input, solver, status, group='water_solver')
+    else
+      call check_known_groups(input, water_groups, status)
+      if (status%ok()) call read_solver_config(input, solver, status)
+    end if
     if (.not. status%ok()) return
     if (group_present(input, 'surface') .and. group_present(input, 'channel')) then
       call set_status(status, STATUS_INVALID_INPUT, input%name//': give the slide either by &surface ' // &
