@@ -36,7 +36,7 @@ module design_ride_evaluation
   integer, parameter :: DIM_SPEED = 1, DIM_ACCELERATION = 2, DIM_LENGTH = 3, DIM_FORCE = 4, DIM_ANGLE = 5
   integer, parameter :: quantity_dimension(9) = [DIM_SPEED, DIM_SPEED, DIM_ACCELERATION, DIM_ACCELERATION, &
     DIM_ACCELERATION, DIM_LENGTH, DIM_FORCE, DIM_ANGLE, DIM_LENGTH]
-  character(len=*), parameter :: report_units(5) = [character(len=5) :: 'm s-1', 'g', 'm', 'N', 'deg']
+  character(len=*), parameter :: report_units(5) = [character(len=3) :: 'm/s', 'g', 'm', 'N', 'deg']
   character(len=*), parameter :: units_allowed(5) = [character(len=48) :: &
     "'m s-1', 'm/s', 'km h-1', 'km/h'", &
     "'g' (multiples of |gravity|), 'm s-2', 'm/s^2'", &

@@ -25,9 +25,12 @@ module rider_model
   use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT
   use kinetostatics_mass, only: new_mass_element
   use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_force_laws, only: new_coulomb_friction
+  use water_field, only: water_field_t
   use rider_body, only: body_params_t, rider_body_t, build_rider_body
   use rider_drag, only: water_properties_t
   use rider_start, only: contact_reach_t, reach_contact
+  use rider_water_drag, only: new_water_drag, in_water_roots
   implicit none (type, external)
   private
   public :: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names
@@ -52,6 +55,8 @@ module rider_model
     real(wp) :: v0 = pi/2                           ! rad (pi/2: the bottom of a tube)
     real(wp) :: heading0 = 0                        ! rad, body axis from x_D (down the slide) towards y_D
     real(wp) :: speed0 = 1                          ! m/s, along the body axis
+    real(wp) :: regularization_speed = 1e-6_wp      ! m/s, of the Coulomb friction (kinetostatics_force_laws)
+    logical :: one_sided = .true.                   ! contacts can lift off (the ride stops there)
   end type rider_params_t
 
   !> Where the rider's pieces sit in the mechanism.
@@ -61,6 +66,9 @@ module rider_model
     integer :: u(N_CONTACTS) = 0, v(N_CONTACTS) = 0 ! scalar indices of the contacts' (u, v)
     integer :: heading = 0, flexion = 0, tilt = 0   ! scalar indices of phi_B, phi_U, phi_O
     integer :: closure(6) = 0                       ! the six closure measurements
+    integer :: contact(N_CONTACTS) = 0              ! mechanism contact indices
+    integer :: friction(N_CONTACTS) = 0             ! law indices of the Coulomb friction (0: none)
+    integer :: drag(N_CONTACTS) = 0                 ! law indices of the water drag (0: none)
     type(rider_body_t) :: body
   end type rider_layout_t
 
@@ -72,20 +80,24 @@ contains
 
   !> The rider's mechanism at its start q0 = [u0, v0, heading0] with the
   !> dependent coordinates where heels and back meet the slide (refused, with
-  !> which contact and by how much, if they cannot). Contacts and their
-  !> friction are added by the caller from `layout`.
-  subroutine build_rider(p, surface, m, layout, q0, status)
+  !> which contact and by how much, if they cannot), its three one-sided
+  !> contacts with Coulomb friction (mu > 0), and, given the computed water
+  !> and p%drag, the water drag at each contact (on where the contact starts
+  !> between the water's edges). Finalized, ready to run.
+  subroutine build_rider(p, surface, m, layout, q0, status, water)
     type(rider_params_t), intent(in) :: p
     class(surface_t), intent(in) :: surface
     type(mechanism_t), intent(out) :: m
     type(rider_layout_t), intent(out) :: layout
     real(wp), intent(out) :: q0(3)
     type(status_t), intent(inout) :: status
+    type(water_field_t), intent(in), optional :: water
+    real(wp) :: g(2)
     type(surface_point_t) :: pt
     type(darboux_frame_t) :: fr
     type(contact_reach_t) :: heels, back
     real(wp) :: axes(3, 3), hip(3)
-    integer :: d_b, pelvis, hip_frame, legs, heel, d_u, trunk, back_point, d_o, su, sv
+    integer :: d_b, pelvis, hip_frame, legs, heel, d_u, trunk, back_point, d_o, su, sv, k
 
     q0 = [p%u0, p%v0, p%heading0]
     call build_rider_body(p%body, layout%body, status)
@@ -169,6 +181,26 @@ contains
     layout%contact_frame = [d_b, d_u, d_o]
     layout%body_frame = [pelvis, legs, trunk]
     call m%set_coordinates([layout%u(CONTACT_PELVIS), layout%v(CONTACT_PELVIS), layout%heading])
+
+    ! contacts (ground - body at the contact's Darboux frame), friction, drag
+    do k = 1, N_CONTACTS
+      layout%contact(k) = m%add_contact(trim(contact_names(k)), 1, layout%body_frame(k), layout%contact_frame(k), &
+                                        one_sided=p%one_sided)
+      if (p%mu > 0) then
+        call m%add_law(new_coulomb_friction(trim(contact_names(k))//'_friction', layout%contact(k), p%mu, &
+                                            p%regularization_speed, status))
+        layout%friction(k) = m%n_laws
+      end if
+    end do
+    if (present(water) .and. p%drag) then
+      do k = 1, N_CONTACTS
+        call in_water_roots(water, m%scalars(layout%u(k))%q, m%scalars(layout%v(k))%q, g)
+        call m%add_law(new_water_drag(trim(contact_names(k))//'_drag', layout%contact(k), layout%u(k), &
+                                      layout%v(k), p%drag_radius(k), p%water, water, all(g > 0)))
+        layout%drag(k) = m%n_laws
+      end do
+    end if
+    call m%finalize(status)
 
   contains
 

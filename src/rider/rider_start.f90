@@ -107,9 +107,16 @@ contains
     if (.not. status%ok()) return
     if (.not. inside) then
       call surface%domain(u_min, u_max, v_min, v_max)
-      reach%problem = 'the contact point lies off the slide (its foot point leaves the slide''s parameter domain at u = '// &
-                      format_short(u0)//', v = '//format_short(v0)//'; the slide has u in ['// &
-                      format_short(u_min)//', '//format_short(u_max)//'])'
+      if (u0 > u_max) then
+        reach%problem = 'it would lie beyond the slide''s end, at u = '//format_short(u0)//' past u = '// &
+                        format_short(u_max)//' (by '//format_short(u0 - u_max)//')'
+      else if (u0 < u_min) then
+        reach%problem = 'it would lie before the slide''s start, at u = '//format_short(u0)//' before u = '// &
+                        format_short(u_min)//' (by '//format_short(u_min - u0)//')'
+      else
+        reach%problem = 'it would lie off the slide, at v = '//format_short(v0)//' outside ['// &
+                        format_short(v_min)//', '//format_short(v_max)//']'
+      end if
       return
     end if
     reach%gap = abs(d0)

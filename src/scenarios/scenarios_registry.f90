@@ -15,14 +15,16 @@ module scenarios_registry
   use scenarios_sled, only: run_sled
   use scenarios_geometry, only: run_geometry
   use scenarios_water, only: run_water
+  use scenarios_ride, only: run_ride_scenario
   implicit none (type, external)
   private
   public :: run_input_file, run_default, run_input, print_scenarios, default_input, slidesim_version
   public :: scenario_template, scenario_names
 
-  character(len=*), parameter :: scenario_names(6) = [character(len=16) :: 'point_mass', 'geometry', 'water', &
+  character(len=*), parameter :: scenario_names(7) = [character(len=16) :: 'ride', 'point_mass', 'geometry', 'water', &
     'pendulum', 'fourbar', 'sled']
-  character(len=*), parameter :: scenario_summaries(6) = [character(len=80) :: &
+  character(len=*), parameter :: scenario_summaries(7) = [character(len=80) :: &
+    'the water, then a rider in it down the slide: ride report, accelerations, limits', &
     'a point mass sliding on an elementary surface (plane, ellipsoid, ...)', &
     'build a tube, slide, blended or B-spline surface; write grid and frames', &
     'stationary water flow down a tube slide: streamline, height, width, edges', &
@@ -162,6 +164,8 @@ contains
       call run_geometry(input, run, status)
     case ('water')
       call run_water(input, run, status)
+    case ('ride')
+      call run_ride_scenario(input, run, status)
     end select
     if (status%ok() .and. run%check_only) write (output_unit, '(a)') input%name//': input ok (scenario '// &
       trim(run%scenario)//'; results would go to '//trim(run%output)//')'

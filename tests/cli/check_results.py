@@ -61,6 +61,8 @@ def applies(row_name, scenario):
         return scenario in MULTIBODY
     if head in ('input', 'statistics', 'geometry'):
         return True
+    if scenario == 'ride':   # the ride's stages
+        return head in ('water', 'rider', 'evaluation')
     return head == scenario
 
 

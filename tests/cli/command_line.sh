@@ -16,7 +16,7 @@ check '[ $got = 0 ]' "default run exit status ($got): $(cat "$work/default.err")
 check 'grep -q "results" "$work/default.out"' "default run prints a summary"
 check '[ -f "$work/slidesim_default.h5" ]' "default run writes slidesim_default.h5"
 check 'h5dump -a /status "$work/slidesim_default.h5" | grep -q "\"complete\""' "default result marked complete"
-check 'h5dump -d /input/namelist "$work/slidesim_default.h5" | grep -q "scenario = .*water"' "input text stored"
+check 'h5dump -d /input/namelist "$work/slidesim_default.h5" | grep -q "scenario = .*ride"' "input text stored"
 check 'h5dump -a /water/position/units "$work/slidesim_default.h5" | grep -q "\"m\""' "units attribute"
 # The printed default input is a valid input file that gives the same run.
 "$slidesim" --default-input > "$work/template.nml"

@@ -7,6 +7,7 @@
 # computed.
 set -u
 slidesim=$1
+repo=$(pwd)   # tests run from the repository root
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # Tally: `begin` opens a check; `fail` prints every failed condition but
@@ -87,11 +88,11 @@ grep -q 'turns across the slide or back' "$work/turn.err" || fail "turn: message
 h5dump -a /status_message "$work/turn.h5" | grep -q 'turns across' || fail "turn: status_message lacks the reason"
 h5dump -a /water/outcome "$work/turn.h5" | grep -q '"turned back"' || fail "turn: /water outcome is not 'turned back'"
 
-# the default run (the demo slide): near the end the flow runs at an angle to
+# the water on the demo slide: near the end the flow runs at an angle to
 # the centerline, so the leading edge's foot lies beyond the slide's end for
 # the last samples; the summary says so in one plain line (no solver message)
 begin
-(cd "$work" && "$slidesim" -q >default.out 2>default.err); got=$?
+(cd "$work" && "$slidesim" -q -o default.h5 "$repo/inputs/water/demo_slide.nml" >default.out 2>default.err); got=$?
 [ $got = 0 ] || fail "default: exit status $got ($(cat "$work/default.err"))"
 grep -qE "water edges +[0-9]+ samples from arc length +66\.9[0-9]* m: an edge beyond the slide's end" "$work/default.out" \
   || fail "default: summary lacks the plain line about the edge beyond the end"

@@ -84,7 +84,7 @@ contains
     call new_ride_limit('speed', 'km/h', 0.0_wp, .false., 36.0_wp, .true., standard_gravity, limit, problem)
     call check(problem == '', 'speed in km/h accepted')
     call check_close(limit%maximum, 10.0_wp, 1e-15_wp, 0.0_wp, '36 km/h = 10 m/s')
-    call check(limit_report_unit('speed') == 'm s-1', 'speeds reported in m s-1')
+    call check(limit_report_unit('speed') == 'm/s', 'speeds reported in m/s')
     call new_ride_limit('acceleration_normal', 'm s-2', 0.0_wp, .false., 2*standard_gravity, .true., &
                         standard_gravity, limit, problem)
     call check_close(limit%maximum, 2.0_wp, 1e-15_wp, 0.0_wp, 'm s-2 to g')

@@ -1,0 +1,116 @@
+!> The figures of a ride an engineer asks for (docs/rider.md, "Ride report"):
+!> ride time, top speed and where, the largest and smallest felt
+!> acceleration per body axis and where, how high each contact climbs the
+!> wall, the smallest normal force per contact (the lift-off margin), the
+!> largest tipping lever arm, the exit speed, and each user limit's verdict.
+!> Computed from a recorded ride (rider_ride) with the pure functions of
+!> design_ride_evaluation; "where" is the pelvis's arc length along the
+!> slide. Every recorded sample counts (outputs and events).
+module design_ride_report
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use rider_model, only: N_CONTACTS
+  use rider_ride, only: ride_series_t
+  use design_ride_evaluation, only: felt_acceleration, tipping_lever_arm, ride_limit_t, limit_verdict_t, &
+    evaluate_limit, series_extreme
+  implicit none (type, external)
+  private
+  public :: ride_report_t, evaluate_ride
+
+  type :: ride_report_t
+    integer :: n = 0
+    real(wp), allocatable :: felt(:, :)          ! 3 x n, g: longitudinal, lateral, normal at the pelvis CoM
+    real(wp), allocatable :: lever_arm(:)        ! n, m (huge where the pelvis does not press)
+    real(wp) :: ride_time = 0                    ! s
+    real(wp) :: distance = 0                     ! m of arc length from the start to the stop
+    real(wp) :: top_speed = 0, top_speed_at = 0  ! m/s, m
+    real(wp) :: final_speed = 0                  ! m/s, at the stop (the exit speed if complete)
+    logical :: complete = .false.                ! the rider reached the end of the slide
+    real(wp) :: felt_max(3) = 0, felt_max_at(3) = 0, felt_min(3) = 0, felt_min_at(3) = 0   ! g, m
+    real(wp) :: climb_angle(N_CONTACTS) = 0      ! rad, largest |wall angle| (signed: + towards +v)
+    real(wp) :: climb_distance(N_CONTACTS) = 0   ! m along the wall there (signed)
+    real(wp) :: climb_at(N_CONTACTS) = 0         ! m, where
+    real(wp) :: normal_min(N_CONTACTS) = 0, normal_min_at(N_CONTACTS) = 0   ! N, m
+    real(wp) :: lever_max = 0, lever_max_at = 0  ! m (signed, largest |l|), m
+    type(ride_limit_t), allocatable :: limits(:)
+    type(limit_verdict_t), allocatable :: verdicts(:)
+    logical, allocatable :: judged(:)            ! false: not judged (exit speed of a ride that did not exit)
+  end type ride_report_t
+
+contains
+
+  subroutine evaluate_ride(s, gravity, complete, limits, report)
+    type(ride_series_t), intent(in) :: s
+    real(wp), intent(in) :: gravity(3)
+    logical, intent(in) :: complete
+    type(ride_limit_t), intent(in) :: limits(:)
+    type(ride_report_t), intent(out) :: report
+    real(wp), allocatable :: where(:), values(:), lever_abs(:)
+    integer :: n, i, k, at
+    n = s%n
+    report%n = n
+    report%complete = complete
+    allocate (report%felt(3, n), report%lever_arm(n))
+    if (n < 1) return
+    where = s%arc_length(:n)
+    do i = 1, n
+      report%felt(:, i) = felt_acceleration(s%pelvis_acceleration(:, i), gravity, s%pelvis_axes(:, :, i))
+      report%lever_arm(i) = tipping_lever_arm(s%reaction_force(:, i), s%reaction_moment(:, i), &
+                                              s%pelvis_axes(:, 1, i), s%pelvis_axes(:, 3, i))
+    end do
+    report%ride_time = s%time(n) - s%time(1)
+    report%distance = s%arc_length(n) - s%arc_length(1)
+    call series_extreme(s%speed(:n), where, .true., report%top_speed, report%top_speed_at)
+    report%final_speed = s%speed(n)
+    do k = 1, 3
+      call series_extreme(report%felt(k, :), where, .true., report%felt_max(k), report%felt_max_at(k))
+      call series_extreme(report%felt(k, :), where, .false., report%felt_min(k), report%felt_min_at(k))
+    end do
+    do k = 1, N_CONTACTS
+      at = maxloc(abs(s%contact(k)%wall_angle(:n)), dim=1)
+      report%climb_angle(k) = s%contact(k)%wall_angle(at)
+      report%climb_distance(k) = s%contact(k)%wall_distance(at)
+      report%climb_at(k) = where(at)
+      call series_extreme(s%contact(k)%normal_force(:n), where, .false., report%normal_min(k), &
+                          report%normal_min_at(k))
+    end do
+    lever_abs = merge(abs(report%lever_arm), 0.0_wp, abs(report%lever_arm) < huge(1.0_wp))
+    at = maxloc(lever_abs, dim=1)
+    report%lever_max = report%lever_arm(at)
+    if (.not. abs(report%lever_max) < huge(1.0_wp)) report%lever_max = 0
+    report%lever_max_at = where(at)
+
+    report%limits = limits
+    allocate (report%verdicts(size(limits)), report%judged(size(limits)))
+    report%judged = .true.
+    do k = 1, size(limits)
+      select case (limits(k)%quantity)
+      case ('speed')
+        values = s%speed(:n)
+      case ('exit_speed')
+        report%judged(k) = complete
+        if (.not. complete) cycle
+        call evaluate_limit(limits(k), s%speed(n:n), where(n:n), report%verdicts(k))
+        cycle
+      case ('acceleration_longitudinal')
+        values = report%felt(1, :)
+      case ('acceleration_lateral')
+        values = report%felt(2, :)
+      case ('acceleration_normal')
+        values = report%felt(3, :)
+      case ('lever_arm')
+        values = lever_abs
+      case ('normal_force')
+        values = [(minval([(s%contact(i)%normal_force(at), i = 1, N_CONTACTS)]), at = 1, n)]
+      case ('wall_angle')
+        values = [(maxval([(abs(s%contact(i)%wall_angle(at)), i = 1, N_CONTACTS)])*180/pi, at = 1, n)]
+      case ('wall_distance')
+        values = [(maxval([(abs(s%contact(i)%wall_distance(at)), i = 1, N_CONTACTS)]), at = 1, n)]
+      case default
+        report%judged(k) = .false.
+        cycle
+      end select
+      call evaluate_limit(limits(k), values, where, report%verdicts(k))
+    end do
+  end subroutine evaluate_ride
+end module design_ride_report

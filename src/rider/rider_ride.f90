@@ -1,0 +1,489 @@
+!> A ride, in memory: the rider (rider_model) on the integration driver, its
+!> records in engineering quantities, and how it ends (docs/rider.md, "The
+!> ride"). Built from a description and run without module state, so the
+!> design layer can run thousands of rides (one per thread) with the same
+!> code the `ride` scenario uses.
+!>
+!> Stops (besides the mechanism's own, kinetostatics_mechanism_ode):
+!>   end of the slide   a contact's surface joint reaches u_max (the heels,
+!>                      first): the normal end, the ride is complete;
+!>   lift-off           a contact's normal force falls to zero: the ride
+!>                      stops, saying which contact and where;
+!>   stall / turn back  the pelvis's rate along the slide u' falls below
+!>                      min_speed/|c_u| (one root function): the ride stops
+!>                      with a message;
+!>   back at the start  a contact reaches u_min (after turning back).
+!> The water's drag switches itself on and off at the edges
+!> (rider_water_drag) and restarts the integrator there.
+module rider_ride
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_text, only: format_short
+  use base_vector, only: cross
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use numerics_ode, only: ode_options_t, ode_stats_t
+  use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP, &
+    EVENT_STOP, RECORD_EVENT
+  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_darboux, only: darboux_frame_t, darboux_frame
+  use geometry_tube, only: tube_surface_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use water_field, only: water_field_t
+  use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names, &
+    CONTACT_PELVIS, CONTACT_HEELS, CONTACT_BACK, N_CONTACTS
+  use rider_water_drag, only: water_drag_t, in_water_roots
+  implicit none (type, external)
+  private
+  public :: ride_options_t, ride_series_t, contact_series_t, ride_result_t, rider_ode_t, run_ride, check_ride_start
+
+  type :: ride_options_t
+    !> thesis B.7 tolerances; the step is capped at 0.05 s: each closure starts
+    !> from the previous solution, and a capped step keeps that start near
+    !> (on a straight the integrator would otherwise step over metres)
+    type(ode_options_t) :: ode = ode_options_t(rtol=1e-10_wp, atol=1e-9_wp, max_step=0.05_wp)
+    real(wp) :: output_step = 0.01_wp     ! s
+    real(wp) :: max_duration = 600        ! s, a bound on the ride (it normally ends at the slide's end)
+    real(wp) :: min_speed = 0.05_wp       ! m/s, below it the rider has stalled
+    real(wp) :: progress_seconds = 2      ! s of wall clock between progress lines (<= 0: none)
+  end type ride_options_t
+
+  !> One contact over the ride (n samples).
+  type :: contact_series_t
+    real(wp), allocatable :: u(:), v(:)                 ! surface parameters
+    real(wp), allocatable :: arc_length(:)              ! m, centerline arc length at u
+    real(wp), allocatable :: wall_angle(:)              ! rad, normal's angle from the bottom's (+ towards +v)
+    real(wp), allocatable :: wall_distance(:)           ! m, along the section from v = pi/2 (+ towards +v)
+    real(wp), allocatable :: position(:, :), velocity(:, :)   ! 3 x n: m, m/s
+    real(wp), allocatable :: normal_force(:)            ! N
+    real(wp), allocatable :: friction_force(:, :)       ! 3 x n, N
+    real(wp), allocatable :: drag_force(:, :)           ! 3 x n, N
+    integer, allocatable :: in_water(:)                 ! 1: between the water's edges
+    real(wp), allocatable :: reynolds(:), drag_coefficient(:), projected_area(:)   ! 1, 1, m^2 (0 when dry)
+    real(wp), allocatable :: relative_velocity(:, :)    ! 3 x n, m/s: contact minus water (0 when dry)
+  end type contact_series_t
+
+  type :: ride_series_t
+    integer :: n = 0
+    real(wp), allocatable :: time(:)                    ! s
+    integer, allocatable :: kind(:)                     ! RECORD_START, _OUTPUT, _EVENT
+    real(wp), allocatable :: arc_length(:)              ! m, of the pelvis
+    real(wp), allocatable :: speed(:)                   ! m/s, of the pelvis contact
+    real(wp), allocatable :: heading(:), phi_legs(:), phi_trunk(:)   ! rad
+    real(wp), allocatable :: pelvis_acceleration(:, :)  ! 3 x n, m/s^2: of the pelvis's centre of mass
+    real(wp), allocatable :: pelvis_axes(:, :, :)       ! 3 x 3 x n: x (to the feet), y (left), z (normal)
+    real(wp), allocatable :: reaction_force(:, :)       ! 3 x n, N: the slide's reaction on the rider at the pelvis
+    real(wp), allocatable :: reaction_moment(:, :)      ! 3 x n, N m: ... its moment about the pelvis contact
+    real(wp), allocatable :: kinetic(:), potential(:), energy(:)    ! J
+    real(wp), allocatable :: friction_work(:), drag_work(:)          ! J (negative: taken out)
+    real(wp), allocatable :: closure_residual(:)        ! m
+    type(contact_series_t) :: contact(N_CONTACTS)
+  end type ride_series_t
+
+  type :: ride_result_t
+    type(ride_series_t) :: series
+    logical :: complete = .false.         ! reached the end of the slide
+    character(len=:), allocatable :: outcome   ! how it ended, in words
+    type(driver_result_t) :: driver
+    integer :: drag_switches = 0
+  end type ride_result_t
+
+  !> The rider as a model of the integration driver.
+  type, extends(mechanism_ode_t) :: rider_ode_t
+    type(rider_layout_t) :: layout
+    type(ride_series_t) :: ride
+    class(surface_t), allocatable :: surface
+    real(wp) :: min_rate = 0              ! u per s: stall below
+    real(wp) :: slide_length = 0          ! m, for progress lines
+    integer :: drag_switches = 0
+  contains
+    procedure :: record => rider_record
+    procedure :: handle_event => rider_handle_event
+    procedure :: progress => rider_progress
+  end type rider_ode_t
+
+contains
+
+  !> Runs the ride of `params` on `surface` (with drag in `water` if given and
+  !> params%drag). Returns with status ok when the ride ended (result%complete
+  !> says whether it reached the end); otherwise with the failure, the
+  !> samples so far in result%series.
+  subroutine run_ride(params, surface, options, result, status, water, label)
+    type(rider_params_t), intent(in) :: params
+    class(surface_t), intent(in) :: surface
+    type(ride_options_t), intent(in) :: options
+    type(ride_result_t), intent(out) :: result
+    type(status_t), intent(inout) :: status
+    type(water_field_t), intent(in), optional :: water
+    character(len=*), intent(in), optional :: label
+    type(rider_ode_t), target :: sys
+    type(driver_options_t) :: driver
+    real(wp), allocatable :: y0(:)
+    type(status_t) :: run_status
+
+    if (.not. status%ok()) return
+    call prepare_ride(params, surface, options, sys, y0, status, water)
+    if (.not. status%ok()) return
+    call init_series(sys%ride, nint(min(options%max_duration, 120.0_wp)/options%output_step) + 16)
+    driver%ode = options%ode
+    driver%t_end = options%max_duration
+    driver%output_step = options%output_step
+    driver%min_mean_step = 1e-5_wp
+    driver%progress_seconds = options%progress_seconds
+    driver%label = 'ride'
+    if (present(label)) driver%label = label
+    call drive(sys, y0, driver, result%driver, run_status)
+    result%drag_switches = sys%drag_switches
+    call move_series(sys%ride, result%series)
+    select case (result%driver%outcome)
+    case (DRIVE_EVENT_STOP)
+      result%outcome = sys%outcome
+      result%complete = index(sys%outcome, 'end of the slide') == 1
+    case (DRIVE_END_TIME)
+      result%outcome = 'the ride had not ended after '//format_short(options%max_duration)//' s'
+    case default
+      result%outcome = 'failed: '//run_status%text()
+    end select
+    if (.not. run_status%ok()) status = run_status
+  end subroutine run_ride
+
+  !> Builds the rider and checks its start without running (the loops close,
+  !> the contacts press, the start speed carries it down the slide): what a
+  !> scenario checks before any work.
+  subroutine check_ride_start(params, surface, options, status)
+    type(rider_params_t), intent(in) :: params
+    class(surface_t), intent(in) :: surface
+    type(ride_options_t), intent(in) :: options
+    type(status_t), intent(inout) :: status
+    type(rider_ode_t), target :: sys
+    real(wp), allocatable :: y0(:)
+    call prepare_ride(params, surface, options, sys, y0, status)
+  end subroutine check_ride_start
+
+  !> The rider's model of the driver at its start state y0.
+  subroutine prepare_ride(params, surface, options, sys, y0, status, water)
+    type(rider_params_t), intent(in) :: params
+    class(surface_t), intent(in) :: surface
+    type(ride_options_t), intent(in) :: options
+    type(rider_ode_t), intent(inout) :: sys
+    real(wp), allocatable, intent(out) :: y0(:)
+    type(status_t), intent(inout) :: status
+    type(water_field_t), intent(in), optional :: water
+    real(wp) :: q0(3), qd0(3)
+    if (.not. status%ok()) return
+    call build_rider(params, surface, sys%mechanism, sys%layout, q0, status, water)
+    if (status%ok()) call rider_start_velocity(params, surface, qd0, status)
+    if (.not. status%ok()) return
+    allocate (sys%surface, source=surface)
+    sys%slide_length = slide_length(surface)
+    sys%min_rate = options%min_speed/centerline_speed(surface, q0(1))
+    if (.not. qd0(1) > sys%min_rate) then
+      call set_status(status, STATUS_INVALID_INPUT, 'the start speed '//format_short(params%speed0)// &
+                      ' m/s does not carry the rider down the slide (its rate along the slide must exceed '// &
+                      format_short(options%min_speed)//' m/s)')
+      return
+    end if
+    ! stall or turning back: u' of the pelvis falls below min_rate
+    sys%event_index = [4]
+    sys%event_value = [sys%min_rate]
+    y0 = sys%initial_state(q0, qd0)
+    call sys%check_start(y0, status)
+    if (.not. status%ok()) call prefix_status(status, 'ride start')
+  end subroutine prepare_ride
+
+  !> |c_u| at u on a tube (ds/du), 1 on other surfaces.
+  real(wp) function centerline_speed(surface, u) result(cu)
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: u
+    cu = 1
+    select type (surface)
+    class is (tube_surface_t)
+      cu = max(surface%arc_length(u + 1e-4_wp) - surface%arc_length(u - 1e-4_wp), 1e-12_wp)/2e-4_wp
+    end select
+  end function centerline_speed
+
+  !> The centerline's length of a tube; 0 elsewhere.
+  real(wp) function slide_length(surface) result(s)
+    class(surface_t), intent(in) :: surface
+    s = 0
+    select type (surface)
+    class is (tube_surface_t)
+      s = surface%length()
+    end select
+  end function slide_length
+
+  !> Progress lines: how far down the slide the pelvis is.
+  subroutine rider_progress(self, t, y, t_start, t_end, fraction, text)
+    class(rider_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:), t_start, t_end
+    real(wp), intent(out) :: fraction
+    character(len=:), allocatable, intent(out) :: text
+    real(wp) :: s
+    associate (unused => t_start, unused_end => t_end)
+    end associate
+    s = arc_length_at(self%surface, y(1))
+    fraction = -1
+    if (self%slide_length > 0) fraction = s/self%slide_length
+    text = 't = '//format_short(t)//' s, '//format_short(s)//' m down the slide'
+  end subroutine rider_progress
+
+  !> Centerline arc length at u on a tube, u elsewhere.
+  real(wp) function arc_length_at(surface, u) result(s)
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: u
+    s = u
+    select type (surface)
+    class is (tube_surface_t)
+      s = surface%arc_length(u)
+    end select
+  end function arc_length_at
+
+  subroutine init_series(s, capacity)
+    type(ride_series_t), intent(inout) :: s
+    integer, intent(in) :: capacity
+    integer :: k
+    s%n = 0
+    allocate (s%time(capacity), s%kind(capacity), s%arc_length(capacity), s%speed(capacity), s%heading(capacity), &
+              s%phi_legs(capacity), s%phi_trunk(capacity), s%pelvis_acceleration(3, capacity), &
+              s%pelvis_axes(3, 3, capacity), s%reaction_force(3, capacity), s%reaction_moment(3, capacity), &
+              s%kinetic(capacity), s%potential(capacity), s%energy(capacity), s%friction_work(capacity), &
+              s%drag_work(capacity), s%closure_residual(capacity))
+    do k = 1, N_CONTACTS
+      associate (c => s%contact(k))
+        allocate (c%u(capacity), c%v(capacity), c%arc_length(capacity), c%wall_angle(capacity), &
+                  c%wall_distance(capacity), c%position(3, capacity), c%velocity(3, capacity), &
+                  c%normal_force(capacity), c%friction_force(3, capacity), c%drag_force(3, capacity), &
+                  c%in_water(capacity), c%reynolds(capacity), c%drag_coefficient(capacity), &
+                  c%projected_area(capacity), c%relative_velocity(3, capacity))
+      end associate
+    end do
+  end subroutine init_series
+
+  !> Doubles the room of the series, keeping its n samples.
+  subroutine grow_series(s)
+    type(ride_series_t), intent(inout) :: s
+    type(ride_series_t) :: bigger
+    call init_series(bigger, 2*size(s%time))
+    bigger%n = s%n
+    call copy_series(s, bigger, s%n)
+    call move_series(bigger, s)
+    s%n = bigger%n
+  end subroutine grow_series
+
+  subroutine copy_series(a, b, n)
+    type(ride_series_t), intent(in) :: a
+    type(ride_series_t), intent(inout) :: b
+    integer, intent(in) :: n
+    integer :: k
+    b%time(:n) = a%time(:n); b%kind(:n) = a%kind(:n); b%arc_length(:n) = a%arc_length(:n)
+    b%speed(:n) = a%speed(:n); b%heading(:n) = a%heading(:n); b%phi_legs(:n) = a%phi_legs(:n)
+    b%phi_trunk(:n) = a%phi_trunk(:n); b%pelvis_acceleration(:, :n) = a%pelvis_acceleration(:, :n)
+    b%pelvis_axes(:, :, :n) = a%pelvis_axes(:, :, :n); b%reaction_force(:, :n) = a%reaction_force(:, :n)
+    b%reaction_moment(:, :n) = a%reaction_moment(:, :n)
+    b%kinetic(:n) = a%kinetic(:n); b%potential(:n) = a%potential(:n)
+    b%energy(:n) = a%energy(:n); b%friction_work(:n) = a%friction_work(:n); b%drag_work(:n) = a%drag_work(:n)
+    b%closure_residual(:n) = a%closure_residual(:n)
+    do k = 1, N_CONTACTS
+      associate (x => a%contact(k), y => b%contact(k))
+        y%u(:n) = x%u(:n); y%v(:n) = x%v(:n); y%arc_length(:n) = x%arc_length(:n)
+        y%wall_angle(:n) = x%wall_angle(:n); y%wall_distance(:n) = x%wall_distance(:n)
+        y%position(:, :n) = x%position(:, :n); y%velocity(:, :n) = x%velocity(:, :n)
+        y%normal_force(:n) = x%normal_force(:n); y%friction_force(:, :n) = x%friction_force(:, :n)
+        y%drag_force(:, :n) = x%drag_force(:, :n); y%in_water(:n) = x%in_water(:n)
+        y%reynolds(:n) = x%reynolds(:n); y%drag_coefficient(:n) = x%drag_coefficient(:n)
+        y%projected_area(:n) = x%projected_area(:n); y%relative_velocity(:, :n) = x%relative_velocity(:, :n)
+      end associate
+    end do
+  end subroutine copy_series
+
+  !> Moves every array of a into b (a is left empty).
+  subroutine move_series(a, b)
+    type(ride_series_t), intent(inout) :: a, b
+    integer :: k
+    b%n = a%n
+    if (allocated(a%time)) call move_alloc(a%time, b%time)
+    call move_alloc(a%kind, b%kind); call move_alloc(a%arc_length, b%arc_length)
+    call move_alloc(a%speed, b%speed); call move_alloc(a%heading, b%heading)
+    call move_alloc(a%phi_legs, b%phi_legs); call move_alloc(a%phi_trunk, b%phi_trunk)
+    call move_alloc(a%pelvis_acceleration, b%pelvis_acceleration); call move_alloc(a%pelvis_axes, b%pelvis_axes)
+    call move_alloc(a%reaction_force, b%reaction_force); call move_alloc(a%reaction_moment, b%reaction_moment)
+    call move_alloc(a%kinetic, b%kinetic); call move_alloc(a%potential, b%potential)
+    call move_alloc(a%energy, b%energy); call move_alloc(a%friction_work, b%friction_work)
+    call move_alloc(a%drag_work, b%drag_work); call move_alloc(a%closure_residual, b%closure_residual)
+    do k = 1, N_CONTACTS
+      b%contact(k) = a%contact(k)
+    end do
+  end subroutine move_series
+
+  !> Wall angle (rad) and distance along the wall (m) of (u, v) from v = pi/2:
+  !> the angle of the Darboux normal from the normal at (u, pi/2) about the
+  !> section's tangent direction, and the length of the v-curve between them
+  !> (5-point Gauss-Legendre; exact for a circle).
+  subroutine wall_position(surface, u, v, angle, distance, status)
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: u, v
+    real(wp), intent(out) :: angle, distance
+    type(status_t), intent(inout) :: status
+    real(wp), parameter :: x(5) = [-0.9061798459386640_wp, -0.5384693101056831_wp, 0.0_wp, &
+                                   0.5384693101056831_wp, 0.9061798459386640_wp]
+    real(wp), parameter :: w(5) = [0.2369268850561891_wp, 0.4786286704993665_wp, 0.5688888888888889_wp, &
+                                   0.4786286704993665_wp, 0.2369268850561891_wp]
+    type(surface_point_t) :: p, b
+    type(darboux_frame_t) :: fp, fb
+    real(wp) :: mid, half
+    integer :: i
+    angle = 0
+    distance = 0
+    call surface%evaluate(u, v, 2, p, status)
+    if (status%ok()) call darboux_frame(p, 1.0_wp, 1.0_wp, 0.0_wp, fp, status)
+    if (status%ok()) call surface%evaluate(u, pi/2, 2, b, status)
+    if (status%ok()) call darboux_frame(b, 1.0_wp, 1.0_wp, 0.0_wp, fb, status)
+    if (.not. status%ok()) return
+    ! rotation from the bottom normal to the contact's, about the bottom's x (along r_u): + towards +v
+    angle = atan2(dot_product(cross(fb%r(:, 3), fp%r(:, 3)), fb%r(:, 1)), dot_product(fb%r(:, 3), fp%r(:, 3)))
+    mid = 0.5_wp*(v + pi/2)
+    half = 0.5_wp*(v - pi/2)
+    do i = 1, 5
+      call surface%evaluate(u, mid + half*x(i), 1, p, status)
+      if (.not. status%ok()) return
+      distance = distance + w(i)*half*norm2(p%rv)
+    end do
+  end subroutine wall_position
+
+  !> The complete state of the ride at (t, y).
+  subroutine rider_record(self, t, y, kind, status)
+    class(rider_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    integer, intent(in) :: kind
+    type(status_t), intent(inout) :: status
+    real(wp) :: residual, kinetic, potential, s(3)
+    integer :: f, n, k, i
+    f = self%mechanism%f
+    call self%mechanism%evaluate(t, y(1:f), y(f + 1:2*f), residual, status)
+    if (.not. status%ok()) return
+    if (self%ride%n == size(self%ride%time)) call grow_series(self%ride)
+    self%ride%n = self%ride%n + 1
+    n = self%ride%n
+    associate (m => self%mechanism, lay => self%layout, r => self%ride)
+      r%time(n) = t
+      r%kind(n) = kind
+      associate (d => m%frames(lay%contact_frame(CONTACT_PELVIS)), p => m%frames(lay%body_frame(CONTACT_PELVIS)))
+        r%speed(n) = norm2(d%v)
+        s = matmul(p%rot, lay%body%pelvis%com)
+        r%pelvis_acceleration(:, n) = p%a + cross(p%alpha, s) + cross(p%omega, cross(p%omega, s))
+        r%pelvis_axes(:, :, n) = p%rot
+        ! the slide's reaction on the rider at the pelvis contact is minus the
+        ! load the mechanism puts on the Darboux frame there (docs/rider.md)
+        r%reaction_force(:, n) = -d%force
+        r%reaction_moment(:, n) = -d%torque
+      end associate
+      r%heading(n) = m%scalars(lay%heading)%q
+      r%phi_legs(n) = m%scalars(lay%flexion)%q
+      r%phi_trunk(n) = m%scalars(lay%tilt)%q
+      call m%energy(kinetic, potential)
+      r%kinetic(n) = kinetic
+      r%potential(n) = potential
+      r%energy(n) = kinetic + potential
+      r%friction_work(n) = 0
+      r%drag_work(n) = 0
+      do k = 1, N_CONTACTS
+        if (lay%friction(k) > 0) r%friction_work(n) = r%friction_work(n) + y(2*f + lay%friction(k))
+        if (lay%drag(k) > 0) r%drag_work(n) = r%drag_work(n) + y(2*f + lay%drag(k))
+      end do
+      r%closure_residual(n) = m%closure_residual()
+      do k = 1, N_CONTACTS
+        associate (c => r%contact(k), d => m%frames(lay%contact_frame(k)))
+          c%u(n) = m%scalars(lay%u(k))%q
+          c%v(n) = m%scalars(lay%v(k))%q
+          c%arc_length(n) = arc_length_at(self%surface, c%u(n))
+          call wall_position(self%surface, c%u(n), c%v(n), c%wall_angle(n), c%wall_distance(n), status)
+          if (.not. status%ok()) return
+          c%position(:, n) = d%r
+          c%velocity(:, n) = d%v
+          c%normal_force(n) = m%contacts(lay%contact(k))%normal_force
+          c%friction_force(:, n) = 0
+          if (lay%friction(k) > 0) c%friction_force(:, n) = m%law_force(lay%friction(k))
+          c%drag_force(:, n) = 0
+          c%in_water(n) = 0
+          c%reynolds(n) = 0
+          c%drag_coefficient(n) = 0
+          c%projected_area(n) = 0
+          c%relative_velocity(:, n) = 0
+          i = lay%drag(k)
+          if (i > 0) then
+            select type (law => m%laws(i)%law)
+            type is (water_drag_t)
+              if (law%active) then
+                c%in_water(n) = 1
+                c%drag_force(:, n) = m%law_force(i)
+                c%reynolds(n) = law%state%reynolds
+                c%drag_coefficient(n) = law%state%drag_coefficient
+                c%projected_area(n) = law%state%projected_area
+                c%relative_velocity(:, n) = law%state%relative_velocity
+              end if
+            end select
+          end if
+        end associate
+      end do
+      r%arc_length(n) = r%contact(CONTACT_PELVIS)%arc_length(n)
+    end associate
+  end subroutine rider_record
+
+  !> The mechanism's events (ends, lift-off, drag on/off), then the rider's:
+  !> the stall crossing (the one user crossing) stops the ride.
+  subroutine rider_handle_event(self, t, y, fired, action, status)
+    class(rider_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    real(wp), intent(inout) :: y(:)
+    integer, intent(in) :: fired(:)
+    integer, intent(out) :: action
+    type(status_t), intent(inout) :: status
+    logical :: was_active(self%mechanism%n_laws)
+    integer :: k
+    character(len=:), allocatable :: where
+    do k = 1, self%mechanism%n_laws
+      was_active(k) = self%mechanism%laws(k)%law%active
+    end do
+    call self%mechanism_ode_t%handle_event(t, y, fired, action, status)
+    if (.not. status%ok()) return
+    do k = 1, self%mechanism%n_laws
+      if (was_active(k) .neqv. self%mechanism%laws(k)%law%active) self%drag_switches = self%drag_switches + 1
+    end do
+    where = ' at arc length '//format_short(arc_length_at(self%surface, y(1)))//' m (t = '//format_short(t)//' s)'
+    if (fired(1) < 0) then
+      action = EVENT_STOP
+      self%outcome = 'the rider stalled or turned back: the speed along the slide fell below the stall speed'//where
+      return
+    end if
+    if (action == EVENT_STOP .and. allocated(self%outcome)) then
+      if (index(self%outcome, 'end of slide') == 1) then
+        self%outcome = 'end of the slide: the '//trim(leading_contact(self, self%outcome))//' reached it'//where
+      else if (index(self%outcome, 'lift-off') == 1) then
+        self%outcome = 'lift-off: the normal force of the '//trim(lifted_contact(self%outcome))// &
+                       ' fell to zero'//where
+      end if
+    end if
+  end subroutine rider_handle_event
+
+  !> Which contact's joint the mechanism's end-of-slide outcome names.
+  function leading_contact(self, outcome) result(name)
+    class(rider_ode_t), intent(in) :: self
+    character(len=*), intent(in) :: outcome
+    character(len=:), allocatable :: name
+    associate (unused => self)
+    end associate
+    name = 'rider'
+    if (index(outcome, '''heel_joint''') > 0) name = 'heels'
+    if (index(outcome, '''back_joint''') > 0) name = 'back'
+    if (index(outcome, '''pelvis_joint''') > 0) name = 'pelvis'
+  end function leading_contact
+
+  function lifted_contact(outcome) result(name)
+    character(len=*), intent(in) :: outcome
+    character(len=:), allocatable :: name
+    integer :: k
+    name = 'rider'
+    do k = 1, N_CONTACTS
+      if (index(outcome, ''''//trim(contact_names(k))//'''') > 0) name = trim(contact_names(k))
+    end do
+  end function lifted_contact
+end module rider_ride

@@ -1,0 +1,443 @@
+!> Scenario `ride`: slidesim's main job. The water first (its own &water_solver
+!> tolerances), then the rider in it (&rider, &solver), then the evaluation of
+!> the ride against the user's limits; one result file with /water, /rider
+!> and /evaluation, and a ride report in engineering terms (docs/rider.md).
+!> Every input is checked before any work, including whether the rider's
+!> heels and back reach the slide at the start.
+module scenarios_ride
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_text, only: format_short, format_integer
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
+  use base_log, only: log_info
+  use numerics_ode, only: ode_stats_t
+  use geometry_surface, only: surface_t
+  use geometry_tube, only: tube_surface_t
+  use geometry_cross_section, only: circle_section_t
+  use water_streamline, only: streamline_t
+  use water_flow, only: water_series_t, water_table_t
+  use water_field, only: water_field_t, new_water_field
+  use rider_model, only: N_CONTACTS, contact_names, CONTACT_PELVIS
+  use rider_ride, only: ride_options_t, ride_result_t, run_ride, check_ride_start
+  use design_ride_evaluation, only: limit_report_unit
+  use design_ride_report, only: ride_report_t, evaluate_ride
+  use io_input, only: input_text_t, check_known_groups, format_real, invalid, mark_input_failure
+  use io_run_config, only: run_config_t
+  use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
+  use io_geometry_config, only: geometry_groups
+  use io_surface_config, only: read_surface_config
+  use io_water_config, only: water_config_t
+  use io_rider_config, only: rider_config_t, read_rider_config
+  use io_hdf5, only: result_file_t, units_per_second
+  use io_summary, only: summary_t, degrees
+  use io_xdmf, only: xdmf_t, xdmf_path
+  use scenarios_water, only: build_water, simulate_water_stage, write_water_results
+  implicit none (type, external)
+  private
+  public :: run_ride_scenario, ride_groups
+
+  character(len=*), parameter :: ride_groups(12) = [character(len=14) :: 'run', 'solver', 'water_solver', &
+    'surface', 'water', 'rider', geometry_groups]
+  !> numbers stored per output time of the ride (ride_series_t), for the memory bound
+  integer, parameter :: values_per_output = 120
+  !> Without &solver duration the ride runs until it ends (the slide's end,
+  !> lift-off, a stall); as a safety bound it stops after this many times
+  !> the time the slide takes at the stall speed.
+  real(wp), parameter :: safety_factor = 10
+
+contains
+
+  subroutine run_ride_scenario(input, run, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(status_t), intent(inout) :: status
+    type(solver_config_t) :: solver, water_solver, defaults
+    type(water_config_t) :: water_config
+    type(streamline_t), target :: water_model
+    type(rider_config_t) :: rider
+    class(surface_t), allocatable :: surface
+    type(ride_options_t) :: options
+    type(water_series_t) :: water
+    type(water_table_t) :: table
+    type(water_field_t) :: field
+    type(ride_result_t) :: ride
+    type(ride_report_t) :: report
+    type(result_file_t) :: file
+    type(status_t) :: run_status, write_status
+    real(wp) :: y0(7), water_cpu, ride_cpu, cpu0, cpu1, length
+    character(len=:), allocatable :: water_done, message
+    logical :: complete
+
+    ! ---- everything checked before any work
+    call check_known_groups(input, ride_groups, status)
+    defaults%options = options%ode
+    defaults%output_step = options%output_step
+    if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults)
+    if (status%ok()) call build_water(input, water_solver, water_config, water_model, y0, status, stage=.true.)
+    if (status%ok()) call read_surface_config(input, surface, status)
+    call mark_input_failure(status)
+    if (status%ok()) call read_rider_config(input, rider, status)
+    if (.not. status%ok()) return
+    length = 0
+    select type (surface)
+    type is (tube_surface_t)
+      length = surface%length()
+      call check_sphere_radii(input, rider, surface, status)
+    class default
+      call set_status(status, STATUS_INVALID_INPUT, input%name//': &surface: the ride needs a tube or slide '// &
+                      '(kind = ''tube'' or ''slide''), not a '//surface%describe())
+    end select
+    if (.not. status%ok()) return
+    options%ode = solver%options
+    options%output_step = solver%output_step
+    options%min_speed = rider%min_speed
+    options%max_duration = safety_factor*length/rider%min_speed
+    if (solver%duration_given) options%max_duration = solver%duration
+    call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
+    if (.not. status%ok()) return
+    call check_ride_start(rider%params, surface, options, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, input%name//': &rider')
+      status%code = STATUS_INVALID_INPUT
+      return
+    end if
+    if (run%check_only) return
+
+    ! ---- the water, then the rider in it
+    call file%create(trim(run%output), status)
+    if (.not. status%ok()) return
+    call file%write_provenance('ride', trim(run%title), input%name, input%text(), write_status)
+    call log_info('ride: the water first ('//format_real(water_model%flow_rate)//' m^3/s)')
+    call simulate_water_stage(water_solver, water_config, water_model, y0, water, table, water_done, run_status, &
+                              water_cpu, 'water_solver')
+    call write_water_results(file, water_model, water_config, water, table, water_cpu, write_status, stage=.true.)
+    if (run_status%ok()) then
+      field = new_water_field(water, run_status)
+      if (.not. run_status%ok()) call prefix_status(run_status, 'the water for the rider')
+    else
+      call prefix_status(run_status, 'the water')
+    end if
+    if (run_status%ok()) then
+      call log_info('ride: the rider')
+      call cpu_time(cpu0)
+      call run_ride(rider%params, surface, options, ride, run_status, field)
+      call evaluate_ride(ride%series, rider%params%gravity, ride%complete, rider%limits, report)
+      call cpu_time(cpu1)
+      ride_cpu = cpu1 - cpu0
+      call write_ride(file, surface, ride, report, ride_cpu, write_status)
+      call write_evaluation(file, ride, report, write_status)
+    end if
+
+    complete = run_status%ok() .and. write_status%ok()
+    message = 'ok: '//ride%outcome
+    if (.not. write_status%ok()) message = write_status%text()
+    if (.not. run_status%ok()) message = run_status%text()
+    call file%finish(complete, message, write_status)
+    if (write_status%ok() .and. ride%series%n > 0) call write_xdmf(file, write_status)
+    if (allocated(ride%outcome)) call print_report(ride, report, water_done, water_cpu, ride_cpu, &
+                                                   file%final_path(), run, complete, message, write_status)
+    if (.not. run_status%ok()) then
+      status = run_status
+    else if (.not. write_status%ok()) then
+      status = write_status
+    end if
+  end subroutine run_ride_scenario
+
+  !> The spheres must fit in the tube (a circular section's radius).
+  subroutine check_sphere_radii(input, rider, tube, status)
+    type(input_text_t), intent(in) :: input
+    type(rider_config_t), intent(in) :: rider
+    type(tube_surface_t), intent(in) :: tube
+    type(status_t), intent(inout) :: status
+    integer :: k
+    select type (section => tube%section)
+    type is (circle_section_t)
+      do k = 1, N_CONTACTS
+        if (rider%params%drag_radius(k) > section%radius) then
+          call invalid(input, 'rider', 'drag_radius('//format_integer(k)//')', &
+                       format_real(rider%params%drag_radius(k)), 'the '//trim(contact_names(k))// &
+                       ' sphere must fit in the tube: at most its radius '//format_real(section%radius)//' m', &
+                       status)
+          return
+        end if
+      end do
+    end select
+  end subroutine check_sphere_radii
+
+  !> /rider: the ride's samples (time scale), per contact a subgroup.
+  subroutine write_ride(file, surface, ride, report, cpu, status)
+    type(result_file_t), intent(inout) :: file
+    class(surface_t), intent(in) :: surface
+    type(ride_result_t), intent(in) :: ride
+    type(ride_report_t), intent(in) :: report
+    real(wp), intent(in) :: cpu
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: g = '/rider/'
+    character(len=:), allocatable :: c, uu, vu
+    integer :: n, k
+    n = ride%series%n
+    call surface%parameter_units(uu, vu)
+    associate (s => ride%series)
+      call file%write_vector(g//'time', s%time(:n), 's', 'time from the start of the ride', status)
+      call file%write_vector(g//'arc_length', s%arc_length(:n), 'm', &
+                             'centerline arc length at the pelvis contact (from the slide''s start)', status)
+      call file%write_vector(g//'speed', s%speed(:n), 'm/s', 'speed of the pelvis contact', status)
+      call file%write_vector(g//'heading', s%heading(:n), 'rad', &
+                             'heading phi_B: body axis from down the slide towards +v', status)
+      call file%write_vector(g//'phi_legs', s%phi_legs(:n), 'rad', 'flexion of the legs at the hip (+ lifts '// &
+                             'the heels)', status)
+      call file%write_vector(g//'phi_trunk', s%phi_trunk(:n), 'rad', 'tilt of the trunk at the hip (+ lifts '// &
+                             'the head)', status)
+      call file%write_matrix(g//'acceleration_g', report%felt(:, :n), '1', 'felt specific force (a - g)/|g| '// &
+                             'at the pelvis centre of mass in the pelvis axes: longitudinal (towards the feet), '// &
+                             'lateral (to the left), normal (+ pressed onto the slide), in multiples of |g|', status)
+      call file%write_vector(g//'lever_arm', merge(report%lever_arm(:n), 0.0_wp, abs(report%lever_arm(:n)) < &
+                             huge(1.0_wp)), 'm', 'tipping lever arm at the pelvis contact (E.3): the slide''s '// &
+                             'moment about the body axis over the normal force (0 where it does not press)', status)
+      call file%write_vector(g//'energy', s%energy(:n), 'J', 'kinetic + potential energy of the three bodies', &
+                             status)
+      call file%write_vector(g//'kinetic_energy', s%kinetic(:n), 'J', 'kinetic energy', status)
+      call file%write_vector(g//'potential_energy', s%potential(:n), 'J', 'potential energy -m g.r', status)
+      call file%write_vector(g//'friction_work', s%friction_work(:n), 'J', &
+                             'work of the Coulomb friction at the three contacts since the start (<= 0)', status)
+      call file%write_vector(g//'drag_work', s%drag_work(:n), 'J', &
+                             'work of the water drag since the start (> 0 where the water pushes)', status)
+      call file%write_vector(g//'closure_residual', s%closure_residual(:n), 'm', &
+                             'largest closure residual of heels and back (4.27)', status)
+      call file%write_integers(g//'record_kind', s%kind(:n), '1', '1: start, 2: output time, 3: event', status)
+      do k = 1, N_CONTACTS
+        c = g//trim(contact_names(k))//'/'
+        associate (x => s%contact(k))
+          call file%write_vector(c//'u', x%u(:n), uu, 'surface coordinate u of the contact', status)
+          call file%write_vector(c//'v', x%v(:n), vu, 'surface coordinate v (pi/2: the bottom)', status)
+          call file%write_vector(c//'arc_length', x%arc_length(:n), 'm', 'centerline arc length at u', status)
+          call file%write_vector(c//'wall_angle', x%wall_angle(:n), 'rad', &
+                                 'angle of the surface normal from the bottom''s (+ towards +v, the left)', status)
+          call file%write_vector(c//'wall_distance', x%wall_distance(:n), 'm', &
+                                 'distance along the wall from the bottom (+ towards +v)', status)
+          call file%write_matrix(c//'position', x%position(:, :n), 'm', 'contact point', status)
+          call file%write_matrix(c//'velocity', x%velocity(:, :n), 'm/s', 'velocity of the contact point', status)
+          call file%write_vector(c//'normal_force', x%normal_force(:n), 'N', &
+                                 'normal force of the slide (> 0 while pressing)', status)
+          call file%write_matrix(c//'friction_force', x%friction_force(:, :n), 'N', &
+                                 'Coulomb friction on the rider (4.28)', status)
+          call file%write_matrix(c//'drag_force', x%drag_force(:, :n), 'N', 'water drag on the rider (4.29)', &
+                                 status)
+          call file%write_integers(c//'in_water', x%in_water(:n), '1', &
+                                   '1 while the contact is between the water''s edges (drag on)', status)
+          call file%write_vector(c//'reynolds', x%reynolds(:n), '1', &
+                                 'Reynolds number |w_D - w| 2 r_S/nu of the sphere (0 when dry)', status)
+          call file%write_vector(c//'drag_coefficient', x%drag_coefficient(:n), '1', &
+                                 'Morrison C_D at min(Re, 1e6) (0 when dry)', status)
+          call file%write_vector(c//'projected_area', x%projected_area(:n), 'm^2', &
+                                 'submerged cap projected across the relative velocity (appendix G; 0 when dry)', &
+                                 status)
+          call file%write_matrix(c//'relative_velocity', x%relative_velocity(:, :n), 'm/s', &
+                                 'velocity of the contact relative to the water, w_D - w (0 when dry)', status)
+        end associate
+      end do
+    end associate
+    call file%set_attribute('/rider', 'outcome', ride%outcome, status)
+    call file%set_attribute('/rider', 'reached_end', merge(1, 0, ride%complete), status)
+    call file%write_count(g//'statistics/steps', int(ride%driver%stats%steps), '1', 'integrator steps', status)
+    call file%write_count(g//'statistics/rhs_evaluations', int(ride%driver%stats%rhs_evaluations), '1', &
+                          'right-hand-side evaluations', status)
+    call file%write_count(g//'statistics/error_test_failures', int(ride%driver%stats%error_test_failures), '1', &
+                          'error test failures', status)
+    call file%write_count(g//'statistics/events', ride%driver%events, '1', &
+                          'events (drag on/off, stops, stall crossings)', status)
+    call file%write_count(g//'statistics/drag_switches', ride%drag_switches, '1', &
+                          'times a contact entered or left the water', status)
+    call file%write_scalar(g//'statistics/cpu_time', cpu, 's', 'CPU time of the ride and its evaluation', status)
+    if (n > 0) then
+      call file%make_scale(g//'time', status)
+      call file%attach_scale(g//'time', '/rider', status)
+    end if
+  end subroutine write_ride
+
+  !> /evaluation: the report's figures and each limit's verdict.
+  subroutine write_evaluation(file, ride, r, status)
+    type(result_file_t), intent(inout) :: file
+    type(ride_result_t), intent(in) :: ride
+    type(ride_report_t), intent(in) :: r
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: g = '/evaluation/'
+    character(len=*), parameter :: axis(3) = [character(len=12) :: 'longitudinal', 'lateral', 'normal']
+    character(len=:), allocatable :: c, unit
+    integer :: k
+    if (r%n < 1) return
+    call file%write_scalar(g//'ride_time', r%ride_time, 's', 'time from the start to the stop', status)
+    call file%write_scalar(g//'distance', r%distance, 'm', 'arc length covered by the pelvis', status)
+    call file%write_scalar(g//'top_speed', r%top_speed, 'm/s', 'largest speed', status)
+    call file%write_scalar(g//'top_speed_arc_length', r%top_speed_at, 'm', 'where (pelvis arc length)', status)
+    call file%write_scalar(g//'final_speed', r%final_speed, 'm/s', 'speed at the stop', status)
+    if (ride%complete) call file%write_scalar(g//'exit_speed', r%final_speed, 'm/s', &
+                                              'speed when the rider leaves the slide (the run-out entry)', status)
+    do k = 1, 3
+      c = g//'acceleration_'//trim(axis(k))
+      call file%write_scalar(c//'_max', r%felt_max(k), '1', 'largest felt acceleration along the pelvis''s '// &
+                             trim(axis(k))//' axis, multiples of |g|', status)
+      call file%write_scalar(c//'_max_arc_length', r%felt_max_at(k), 'm', 'where (pelvis arc length)', status)
+      call file%write_scalar(c//'_min', r%felt_min(k), '1', 'smallest felt acceleration along the pelvis''s '// &
+                             trim(axis(k))//' axis, multiples of |g|', status)
+      call file%write_scalar(c//'_min_arc_length', r%felt_min_at(k), 'm', 'where (pelvis arc length)', status)
+    end do
+    call file%write_scalar(g//'lever_arm_max', r%lever_max, 'm', 'largest tipping lever arm (signed)', status)
+    call file%write_scalar(g//'lever_arm_max_arc_length', r%lever_max_at, 'm', 'where', status)
+    do k = 1, N_CONTACTS
+      c = g//trim(contact_names(k))//'/'
+      call file%write_scalar(c//'wall_angle_max', r%climb_angle(k), 'rad', &
+                             'highest climb up the wall: angle from the bottom (signed, + to the left)', status)
+      call file%write_scalar(c//'wall_distance_max', r%climb_distance(k), 'm', 'the distance along the wall there', &
+                             status)
+      call file%write_scalar(c//'wall_arc_length', r%climb_at(k), 'm', 'where (pelvis arc length)', status)
+      call file%write_scalar(c//'normal_force_min', r%normal_min(k), 'N', 'smallest normal force (lift-off '// &
+                             'margin)', status)
+      call file%write_scalar(c//'normal_force_min_arc_length', r%normal_min_at(k), 'm', 'where', status)
+    end do
+    do k = 1, size(r%limits)
+      c = g//'limits/'//format_integer(k)//'_'//r%limits(k)%quantity//'/'
+      unit = limit_report_unit(r%limits(k)%quantity)
+      call file%write_text(c//'quantity', r%limits(k)%quantity, 'what is limited', status)
+      if (r%limits(k)%has_minimum) call file%write_scalar(c//'minimum', r%limits(k)%minimum, si(unit), &
+                                                          'the lower limit', status)
+      if (r%limits(k)%has_maximum) call file%write_scalar(c//'maximum', r%limits(k)%maximum, si(unit), &
+                                                          'the upper limit', status)
+      call file%write_text(c//'given_unit', r%limits(k)%unit, 'the unit the limit was given in', status)
+      if (.not. r%judged(k)) then
+        call file%write_text(c//'verdict', 'not judged', 'the ride did not reach the exit', status)
+        cycle
+      end if
+      call file%write_text(c//'verdict', merge('exceeded', 'ok      ', r%verdicts(k)%exceeded), &
+                           'ok or exceeded', status)
+      call file%write_scalar(c//'worst', r%verdicts(k)%worst, si(unit), &
+                             'the value furthest beyond (or nearest to) a bound', status)
+      call file%write_scalar(c//'worst_arc_length', r%verdicts(k)%worst_where, 'm', 'where', status)
+      call file%write_scalar(c//'excess', r%verdicts(k)%excess, si(unit), 'by how much it is exceeded (0: not)', &
+                             status)
+      if (r%verdicts(k)%exceeded) call file%write_scalar(c//'first_arc_length', r%verdicts(k)%first_where, 'm', &
+                                                         'where it is first exceeded', status)
+    end do
+  end subroutine write_evaluation
+
+  !> The file's unit for a report unit (degrees stay degrees: pint and
+  !> UDUNITS parse 'degree'; multiples of |g| are dimensionless).
+  pure function si(unit) result(text)
+    character(len=*), intent(in) :: unit
+    character(len=:), allocatable :: text
+    select case (unit)
+    case ('g'); text = '1'
+    case ('deg'); text = 'degree'
+    case default; text = unit
+    end select
+  end function si
+
+  !> XDMF next to the result: the slide, the water band, the contacts' paths
+  !> and the rider (its three contacts) moving.
+  subroutine write_xdmf(file, status)
+    type(result_file_t), intent(in) :: file
+    type(status_t), intent(inout) :: status
+    type(xdmf_t) :: xdmf
+    call xdmf%start(file%final_path())
+    call xdmf%surface(file, 'slide surface', '/geometry/surface')
+    call xdmf%band(file, 'water band', '/water/right_point', '/water/left_point', &
+                   [character(len=13) :: '/water/speed', '/water/height'])
+    call xdmf%polyline(file, 'pelvis path', '/rider/pelvis/position', '/rider')
+    call xdmf%polyline(file, 'heels path', '/rider/heels/position', '/rider')
+    call xdmf%polyline(file, 'back path', '/rider/back/position', '/rider')
+    call xdmf%write(xdmf_path(file%final_path()), status)
+  end subroutine write_xdmf
+
+  !> The ride report (stdout) and, with --summary-json, its numbers as JSON.
+  subroutine print_report(ride, r, water_done, water_cpu, ride_cpu, path, run, complete, message, status)
+    type(ride_result_t), intent(in) :: ride
+    type(ride_report_t), intent(in) :: r
+    character(len=*), intent(in) :: water_done, path, message
+    real(wp), intent(in) :: water_cpu, ride_cpu
+    type(run_config_t), intent(in) :: run
+    logical, intent(in) :: complete
+    type(status_t), intent(inout) :: status
+    type(summary_t) :: summary
+    character(len=*), parameter :: axis(3) = [character(len=12) :: 'longitudinal', 'lateral', 'normal']
+    character(len=:), allocatable :: c, line, unit
+    integer :: k, exceeded
+    call summary%start('ride', 'slidesim ride')
+    call summary%add_text('water', 'water', water_done(min(len(water_done), 5):))
+    call summary%add_text('outcome', 'ride ended', ride%outcome)
+    if (r%n > 0) then
+      call summary%add('ride_time', 'ride time', r%ride_time, 's')
+      call summary%add('distance', 'slide length ridden', r%distance, 'm')
+      call summary%add('top_speed', 'top speed', r%top_speed, 'm/s')
+      call summary%add('top_speed_arc_length', '  at arc length', r%top_speed_at, 'm')
+      do k = 1, 3
+        c = trim(axis(k))
+        call summary%add('felt_'//c//'_max', 'felt '//c//' max', r%felt_max(k), '1', 'g')
+        call summary%add('felt_'//c//'_max_arc_length', '  at arc length', r%felt_max_at(k), 'm')
+        call summary%add('felt_'//c//'_min', 'felt '//c//' min', r%felt_min(k), '1', 'g')
+        call summary%add('felt_'//c//'_min_arc_length', '  at arc length', r%felt_min_at(k), 'm')
+      end do
+      do k = 1, N_CONTACTS
+        c = trim(contact_names(k))
+        call summary%add(c//'_wall_angle', c//' highest on the wall', r%climb_angle(k), 'rad', &
+                         'deg from the bottom', degrees)
+        call summary%add(c//'_wall_distance', '  along the wall', r%climb_distance(k), 'm')
+        call summary%add(c//'_wall_arc_length', '  at arc length', r%climb_at(k), 'm')
+        call summary%add(c//'_normal_force_min', c//' normal force min', r%normal_min(k), 'N')
+        call summary%add(c//'_normal_force_min_arc_length', '  at arc length', r%normal_min_at(k), 'm')
+      end do
+      call summary%add('lever_arm_max', 'largest tipping lever arm', r%lever_max, 'm')
+      call summary%add('lever_arm_max_arc_length', '  at arc length', r%lever_max_at, 'm')
+      if (ride%complete) then
+        call summary%add('exit_speed', 'exit speed (into the run-out)', r%final_speed, 'm/s')
+      else
+        call summary%add('final_speed', 'speed at the stop', r%final_speed, 'm/s')
+      end if
+      exceeded = 0
+      do k = 1, size(r%limits)
+        unit = limit_report_unit(r%limits(k)%quantity)
+        if (.not. r%judged(k)) then
+          line = 'limit '//r%limits(k)%quantity//': not judged (the ride did not reach the exit)'
+        else if (r%verdicts(k)%exceeded) then
+          exceeded = exceeded + 1
+          line = 'LIMIT EXCEEDED: '//r%limits(k)%quantity//' '//bounds(k)//'; worst '// &
+                 format_short(r%verdicts(k)%worst)//' '//unit//' at arc length '// &
+                 format_short(r%verdicts(k)%worst_where)//' m (first at '// &
+                 format_short(r%verdicts(k)%first_where)//' m)'
+        else
+          line = 'limit '//r%limits(k)%quantity//' '//bounds(k)//': ok (closest '// &
+                 format_short(r%verdicts(k)%worst)//' '//unit//' at arc length '// &
+                 format_short(r%verdicts(k)%worst_where)//' m)'
+        end if
+        call summary%add_line('  '//line)
+      end do
+      if (size(r%limits) == 0) call summary%add_line('  no limits given (&rider limit_quantity, ...)')
+      call summary%add_count('limits_exceeded', 'limits exceeded', exceeded, 'of '// &
+                             format_integer(size(r%limits)))
+    end if
+    call summary%add('water_cpu_time', 'CPU time water', water_cpu, 's')
+    call summary%add('ride_cpu_time', 'CPU time rider', ride_cpu, 's')
+    call summary%add_count('ride_steps', 'integrator', int(ride%driver%stats%steps), 'steps')
+    if (complete) then
+      call summary%add_text('results', 'results', path)
+    else
+      call summary%add_text('results', 'results (INCOMPLETE)', path)
+    end if
+    call summary%print()
+    if (allocated(run%summary_json)) then
+      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
+    end if
+
+  contains
+
+    function bounds(k) result(text)
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text
+      text = ''
+      associate (l => r%limits(k))
+        if (l%has_minimum) text = '>= '//format_short(l%minimum)//' '//limit_report_unit(l%quantity)
+        if (l%has_minimum .and. l%has_maximum) text = text//' and '
+        if (l%has_maximum) text = text//'<= '//format_short(l%maximum)//' '//limit_report_unit(l%quantity)
+      end associate
+    end function bounds
+  end subroutine print_report
+end module scenarios_ride

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The ride scenario end to end: the default run (water, then the rider) writes
+# /water, /rider and /evaluation and prints the ride report; bad rider inputs
+# are refused before any work (exit status 1, no result file), each message
+# naming what is wrong: a negative mass, a start where the heels cannot reach
+# the slide (which contact and by how much), a drag sphere larger than the
+# tube, a limit in a unit of the wrong kind.
+set -u
+slidesim=$1
+repo=$(pwd)   # tests run from the repository root
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0; checks=0
+check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+
+(cd "$work" && "$slidesim" -q -o ride.h5 "$repo/inputs/ride/demo_slide.nml" >ride.out 2>ride.err); got=$?
+check '[ $got = 0 ]' "demo ride: exit status $got ($(cat "$work/ride.err"))"
+check 'grep -q "ride ended  *end of the slide" "$work/ride.out"' "demo ride: the report says it reached the end"
+check 'grep -q "top speed" "$work/ride.out" && grep -q "felt normal max" "$work/ride.out"' "demo ride: report figures"
+check 'h5dump -a /status "$work/ride.h5" | grep -q "\"complete\""' "demo ride: file complete"
+for d in /water/speed /rider/time /rider/acceleration_g /rider/heels/normal_force /rider/back/in_water \
+         /evaluation/top_speed /evaluation/limits/1_exit_speed/verdict; do
+  check 'h5ls "$work/ride.h5$d" >/dev/null 2>&1' "demo ride: $d written"
+done
+
+# bad inputs: take the demo input and change one thing
+bad() {   # name, sed expression, expected message part
+  name=$1; expected=$3
+  sed -e "$2" "$repo/inputs/ride/demo_slide.nml" | sed "s|'../demo_slide/slide.nml'|'$repo/inputs/demo_slide/slide.nml'|" \
+    >"$work/$name.nml"
+  (cd "$work" && "$slidesim" -q -o "$name.h5" "$name.nml" >"$name.out" 2>"$name.err"); got=$?
+  check '[ $got = 1 ]' "$name: exit status $got, expected 1 ($(cat "$work/$name.err"))"
+  check 'grep -q -- "$expected" "$work/$name.err"' "$name: message lacks '$expected': $(cat "$work/$name.err")"
+  check '[ ! -e "$work/$name.h5" ] && [ ! -e "$work/$name.h5.tmp" ]' "$name: a result file was written"
+}
+bad negative_mass "s/mass = 68.5/mass = -68.5/" "&rider: mass = -68.5 is not allowed"
+bad heels_beyond_end "s/u0 = 0.5, v0/u0 = 66.5, v0/" "the heels cannot reach the slide"
+bad back_before_start "s/u0 = 0.5, v0/u0 = 0.1, v0/" "the back cannot reach the slide"
+bad heels_across "s/heading0_deg = 0.0/heading0_deg = 90.0/; s/height = 1.78/height = 2.4/" "cannot reach the slide: the contact point stays"
+bad sphere_too_large "s/drag_radius = 0.5, 0.05, 0.5/drag_radius = 0.6, 0.05, 0.5/" "drag_radius(1) = 0.6 is not allowed"
+bad limit_unit "s/limit_unit     = 'm\/s',        'm\/s',   'm'/limit_unit = 'g', 'm\/s', 'm'/" "unit 'g' does not measure exit_speed"
+
+echo "$((checks - failures)) passed, $failures failed"
+[ $failures = 0 ]
