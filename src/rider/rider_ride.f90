@@ -21,17 +21,17 @@ module rider_ride
   use base_text, only: format_short
   use base_vector, only: cross
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
-  use numerics_ode, only: ode_options_t, ode_stats_t
+  use numerics_ode, only: ode_options_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP, &
-    EVENT_STOP, RECORD_EVENT
+    EVENT_STOP
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use geometry_tube, only: tube_surface_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use water_field, only: water_field_t
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names, &
-    CONTACT_PELVIS, CONTACT_HEELS, CONTACT_BACK, N_CONTACTS
-  use rider_water_drag, only: water_drag_t, in_water_roots
+    CONTACT_PELVIS, N_CONTACTS
+  use rider_water_drag, only: water_drag_t
   implicit none (type, external)
   private
   public :: ride_options_t, ride_series_t, contact_series_t, ride_result_t, rider_ode_t, run_ride, check_ride_start

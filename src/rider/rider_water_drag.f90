@@ -66,9 +66,8 @@ contains
     type(water_edges_at_t) :: edges
     call water%edges_at_u(u, edges)
     g = -1
-    if (edges%right_location == WATER_INSIDE) g(1) = v - edges%v_right
-    if (edges%left_location == WATER_INSIDE) g(2) = edges%v_left - v
-    if (edges%right_location /= WATER_INSIDE .or. edges%left_location /= WATER_INSIDE) g = -1
+    if (edges%right_location == WATER_INSIDE .and. edges%left_location == WATER_INSIDE) &
+      g = [v - edges%v_right, edges%v_left - v]
   end subroutine in_water_roots
 
   pure subroutine drag_evaluate(self, t, frames, scalars, contacts, status)

@@ -6,32 +6,28 @@
 !> heels and back reach the slide at the start.
 module scenarios_ride
   use base_kinds, only: wp
-  use base_constants, only: pi
   use base_text, only: format_short, format_integer
-  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
+  use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
   use base_log, only: log_info
-  use numerics_ode, only: ode_stats_t
   use geometry_surface, only: surface_t
   use geometry_tube, only: tube_surface_t
   use geometry_cross_section, only: circle_section_t
-  use water_streamline, only: streamline_t
-  use water_flow, only: water_series_t, water_table_t
-  use water_field, only: water_field_t, new_water_field
-  use rider_model, only: N_CONTACTS, contact_names, CONTACT_PELVIS
+  use water_flow, only: outcome_name
+  use water_run, only: water_description_t, water_result_t, compute_water
+  use rider_model, only: N_CONTACTS, contact_names
   use rider_ride, only: ride_options_t, ride_result_t, run_ride, check_ride_start
   use design_ride_evaluation, only: limit_report_unit
   use design_ride_report, only: ride_report_t, evaluate_ride
-  use io_input, only: input_text_t, check_known_groups, format_real, invalid, mark_input_failure
+  use io_input, only: input_text_t, check_known_groups, format_real, invalid
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
   use io_geometry_config, only: geometry_groups
-  use io_surface_config, only: read_surface_config
-  use io_water_config, only: water_config_t
   use io_rider_config, only: rider_config_t, read_rider_config
-  use io_hdf5, only: result_file_t, units_per_second
+  use io_hdf5, only: result_file_t
+  use io_water_results, only: write_water_results
   use io_summary, only: summary_t, degrees
   use io_xdmf, only: xdmf_t, xdmf_path
-  use scenarios_water, only: build_water, simulate_water_stage, write_water_results
+  use scenarios_water, only: build_water, write_slide_grid
   implicit none (type, external)
   private
   public :: run_ride_scenario, ride_groups
@@ -51,20 +47,16 @@ contains
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
     type(status_t), intent(inout) :: status
-    type(solver_config_t) :: solver, water_solver, defaults
-    type(water_config_t) :: water_config
-    type(streamline_t), target :: water_model
+    type(solver_config_t) :: solver, defaults
+    type(water_description_t) :: water_description
+    type(water_result_t) :: water
     type(rider_config_t) :: rider
-    class(surface_t), allocatable :: surface
     type(ride_options_t) :: options
-    type(water_series_t) :: water
-    type(water_table_t) :: table
-    type(water_field_t) :: field
     type(ride_result_t) :: ride
     type(ride_report_t) :: report
     type(result_file_t) :: file
     type(status_t) :: run_status, write_status
-    real(wp) :: y0(7), water_cpu, ride_cpu, cpu0, cpu1, length
+    real(wp) :: ride_cpu, cpu0, cpu1
     character(len=:), allocatable :: water_done, message
     logical :: complete
 
@@ -73,68 +65,58 @@ contains
     defaults%options = options%ode
     defaults%output_step = options%output_step
     if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults)
-    if (status%ok()) call build_water(input, water_solver, water_config, water_model, y0, status, stage=.true.)
-    if (status%ok()) call read_surface_config(input, surface, status)
-    call mark_input_failure(status)
+    if (status%ok()) call build_water(input, water_description, status, stage=.true.)
     if (status%ok()) call read_rider_config(input, rider, status)
     if (.not. status%ok()) return
-    length = 0
-    select type (surface)
-    type is (tube_surface_t)
-      length = surface%length()
-      call check_sphere_radii(input, rider, surface, status)
-    class default
-      call set_status(status, STATUS_INVALID_INPUT, input%name//': &surface: the ride needs a tube or slide '// &
-                      '(kind = ''tube'' or ''slide''), not a '//surface%describe())
-    end select
-    if (.not. status%ok()) return
-    options%ode = solver%options
-    options%output_step = solver%output_step
-    options%min_speed = rider%min_speed
-    options%max_duration = safety_factor*length/rider%min_speed
-    if (solver%duration_given) options%max_duration = solver%duration
-    call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
-    if (.not. status%ok()) return
-    call check_ride_start(rider%params, surface, options, status)
-    if (.not. status%ok()) then
-      call prefix_status(status, input%name//': &rider')
-      status%code = STATUS_INVALID_INPUT
-      return
-    end if
-    if (run%check_only) return
+    associate (slide => water_description%slide)
+      call check_sphere_radii(input, rider, slide, status)
+      if (.not. status%ok()) return
+      options%ode = solver%options
+      options%output_step = solver%output_step
+      options%min_speed = rider%min_speed
+      options%max_duration = safety_factor*slide%length()/rider%min_speed
+      if (solver%duration_given) options%max_duration = solver%duration
+      call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
+      if (.not. status%ok()) return
+      call check_ride_start(rider%params, slide, options, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, input%name//': &rider')
+        status%code = STATUS_INVALID_INPUT
+        return
+      end if
+      if (run%check_only) return
 
-    ! ---- the water, then the rider in it
-    call file%create(trim(run%output), status)
-    if (.not. status%ok()) return
-    call file%write_provenance('ride', trim(run%title), input%name, input%text(), write_status)
-    call log_info('ride: the water first ('//format_real(water_model%flow_rate)//' m^3/s)')
-    call simulate_water_stage(water_solver, water_config, water_model, y0, water, table, water_done, run_status, &
-                              water_cpu, 'water_solver')
-    call write_water_results(file, water_model, water_config, water, table, water_cpu, write_status, stage=.true.)
-    if (run_status%ok()) then
-      field = new_water_field(water, run_status)
-      if (.not. run_status%ok()) call prefix_status(run_status, 'the water for the rider')
-    else
-      call prefix_status(run_status, 'the water')
-    end if
-    if (run_status%ok()) then
-      call log_info('ride: the rider')
-      call cpu_time(cpu0)
-      call run_ride(rider%params, surface, options, ride, run_status, field)
-      call evaluate_ride(ride%series, rider%params%gravity, ride%complete, rider%limits, report)
-      call cpu_time(cpu1)
-      ride_cpu = cpu1 - cpu0
-      call write_ride(file, surface, ride, report, ride_cpu, write_status)
-      call write_evaluation(file, ride, report, write_status)
-    end if
+      ! ---- the water, then the rider in it
+      call file%create(trim(run%output), status)
+      if (.not. status%ok()) return
+      call file%write_provenance('ride', trim(run%title), input%name, input%text(), write_status)
+      call log_info('ride: the water first ('//format_real(water_description%flow_rate)//' m^3/s)')
+      call compute_water(water_description, water, run_status)
+      water_done = outcome_name(water%series%outcome)
+      call write_water_results(file, water_description, water, write_status)
+      call write_slide_grid(file, slide, write_status)
+      if (.not. run_status%ok()) call prefix_status(run_status, 'the water')
+      ride_cpu = 0
+      if (run_status%ok()) then
+        call log_info('ride: the rider')
+        call cpu_time(cpu0)
+        call run_ride(rider%params, slide, options, ride, run_status, water%field)
+        call evaluate_ride(ride%series, rider%params%gravity, ride%complete, rider%limits, report)
+        call cpu_time(cpu1)
+        ride_cpu = cpu1 - cpu0
+        call write_ride(file, slide, ride, report, ride_cpu, write_status)
+        call write_evaluation(file, ride, report, write_status)
+      end if
+    end associate
 
     complete = run_status%ok() .and. write_status%ok()
-    message = 'ok: '//ride%outcome
+    message = 'the water did not reach the rider'
+    if (allocated(ride%outcome)) message = 'ok: '//ride%outcome
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
     call file%finish(complete, message, write_status)
     if (write_status%ok() .and. ride%series%n > 0) call write_xdmf(file, write_status)
-    if (allocated(ride%outcome)) call print_report(ride, report, water_done, water_cpu, ride_cpu, &
+    if (allocated(ride%outcome)) call print_report(ride, report, water_done, water%cpu, ride_cpu, &
                                                    file%final_path(), run, complete, message, write_status)
     if (.not. run_status%ok()) then
       status = run_status
@@ -362,7 +344,7 @@ contains
     character(len=:), allocatable :: c, line, unit
     integer :: k, exceeded
     call summary%start('ride', 'slidesim ride')
-    call summary%add_text('water', 'water', water_done(min(len(water_done), 5):))
+    call summary%add_text('water', 'water', water_done)
     call summary%add_text('outcome', 'ride ended', ride%outcome)
     if (r%n > 0) then
       call summary%add('ride_time', 'ride time', r%ride_time, 's')

@@ -28,7 +28,7 @@ module scenarios_water
   use io_xdmf, only: xdmf_t, xdmf_path
   implicit none (type, external)
   private
-  public :: run_water, build_water, water_groups
+  public :: run_water, build_water, water_groups, write_slide_grid
 
   character(len=*), parameter :: water_groups(11) = [character(len=14) :: 'run', 'solver', 'surface', &
     'channel', 'water', geometry_groups]
