@@ -89,7 +89,7 @@ for scenario in point_mass geometry water pendulum fourbar sled; do
 done
 cmd template_eq 0 "scenario = 'sled'" -- --default-input=sled
 cmd template_unknown 1 'no such scenario' 'point_mass' -- --default-input torus
-cmd template_default 0 "scenario = 'water'" -- --default-input
+cmd template_default 0 "scenario = 'ride'" -- --default-input
 
 # --summary-json FILE (both forms): the summary's numbers as JSON
 cmd json_sep 0 -- -q -o json.h5 --summary-json summary.json "$ellipsoid"
