@@ -38,7 +38,7 @@ module io_hdf5
                   h5dcreate_f, h5dwrite_f, h5dclose_f, h5dopen_f
   use h5ds, only: h5dsset_scale_f, h5dsattach_scale_f
   use base_kinds, only: wp
-  use base_status, only: status_t, set_status, STATUS_IO, STATUS_DOMAIN
+  use base_status, only: status_t, set_status, STATUS_IO, STATUS_DOMAIN, STATUS_INVALID_INPUT
   use base_sha256, only: sha256_hex
   use base_version, only: slidesim_version, slidesim_compiler, slidesim_compiler_options
   use base_build_commit, only: slidesim_git_commit
@@ -647,9 +647,11 @@ contains
     call remove_file(self%temporary_path)
   end subroutine discard
 
-  !> The status a run ends with: a result file that could not be written
-  !> first (nothing was kept: exit 3), then the run's own failure (file kept
-  !> incomplete: exit 2), then a failure found while finishing the file.
+  !> The status a run ends with once its result file was created: a file that
+  !> could not be written first (nothing was kept: exit 3), then the run's own
+  !> failure (file kept incomplete: exit 2), then a failure found while
+  !> finishing the file. A failure reported as bad input this late is a failed
+  !> run (exit 2: a file was kept; exit 1 promises none).
   pure function run_outcome(run_status, file_status) result(status)
     type(status_t), intent(in) :: run_status, file_status
     type(status_t) :: status
@@ -660,6 +662,7 @@ contains
     else
       status = file_status
     end if
+    if (status%code == STATUS_INVALID_INPUT) status%code = STATUS_DOMAIN
   end function run_outcome
 
   pure function format_pid(pid) result(text)

@@ -16,7 +16,7 @@ module scenarios_geometry
   use io_input, only: input_text_t, check_known_groups, group_reader_t, open_group, format_real
   use io_run_config, only: run_config_t
   use io_geometry_config, only: read_geometry_config, geometry_groups
-  use io_hdf5, only: result_file_t
+  use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t, engineering
   use io_surface_grid, only: write_surface_grid, evenly_spaced
   use io_xdmf, only: xdmf_t, xdmf_path
@@ -83,7 +83,7 @@ contains
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, &
                                                                file%final_path(), work)
     end if
-    if (.not. work%ok()) status = work
+    if (.not. work%ok()) status = run_outcome(work, status_t())
   end subroutine run_geometry
 
   !> &grid: resolution of the written surface grid and of the centerline samples.

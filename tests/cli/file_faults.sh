@@ -42,6 +42,14 @@ else
   echo "note: running as root, the read-only folder case is not testable here"; rm -f "$work/readonly/probe"
 fi
 chmod 755 "$work/readonly"
+# a folder nobody may create files in, also for root: /sys
+if [ -d /sys ] && ! touch /sys/slidesim_probe 2>/dev/null; then
+  checks=$((checks + 1))
+  (cd "$work" && "$slidesim" -q "$ellipsoid" -o /sys/slidesim_test.h5 > sys.out 2> sys.err); got=$?
+  [ $got = 3 ] || fail "unwritable folder /sys: exit status $got, expected 3"
+  grep -q '/sys/slidesim_test.h5: cannot write the result file' "$work/sys.err" || \
+    fail "unwritable folder /sys: message: $(cat "$work/sys.err")"
+fi
 
 # the output must not be the input
 cp "$ellipsoid" "$work/self.nml"
