@@ -112,6 +112,7 @@ module contact_model
     real(wp), allocatable :: body_mass(:)
     type(contact_link_t), allocatable :: links(:)
     real(wp), allocatable :: y0(:)
+    character(len=8), allocatable :: q_units(:), beta_units(:)   ! of the coordinates and dependents
   end type contact_model_t
 
 contains
@@ -253,6 +254,7 @@ contains
     nb = size(system%bodies)
     allocate (model%body_names(nb + 1), model%body_frame(nb + 1), model%body_mass(nb + 1), carrier(nb))
     allocate (model%links(size(system%contacts)), q(0), kinematic(0), mass(nb), props(nb))
+    allocate (model%q_units(0), model%beta_units(0))
     model%body_names(1) = 'ground'
     model%body_frame = 0
     model%body_frame(1) = 1
@@ -292,7 +294,9 @@ contains
             else
               call add_velocity_contact(m, c, link, s1, s2, closed, k, q, kinematic, status)
             end if
+            call add_units(model, level, c%rolling, s1, s2)
           end associate
+          call add_monitors(m, link)
           if (.not. status%ok()) return
           model%body_names(b2 + 1) = c%body_2
           model%body_frame(b2 + 1) = link%frame_b
@@ -318,6 +322,36 @@ contains
     end associate
     call start(system, model, carrier, status, closed)
   end subroutine build
+
+  !> Units of the coordinates (and dependents) the contact added, in their order.
+  subroutine add_units(model, level, rolling, s1, s2)
+    type(contact_model_t), intent(inout) :: model
+    integer, intent(in) :: level
+    logical, intent(in) :: rolling
+    class(surface_t), intent(in) :: s1, s2
+    character(len=:), allocatable :: u1, v1, u2, v2
+    call s1%parameter_units(u1, v1)
+    call s2%parameter_units(u2, v2)
+    if (level == LEVEL_POSITION) then
+      model%q_units = [character(len=8) :: model%q_units, u1, v1, 'rad', 'rad', 'rad']
+      model%beta_units = [character(len=8) :: model%beta_units, u1, v1, u2, v2, 'm']
+    else if (rolling) then
+      model%q_units = [character(len=8) :: model%q_units, u1, v1, 'rad', u2, v2, 'm', 'm', 'm', 'rad', 'rad', 'rad']
+    else
+      model%q_units = [character(len=8) :: model%q_units, u1, v1, u2, v2, 'rad', 'm', 'm', 'm', 'rad', 'rad', 'rad']
+    end if
+  end subroutine add_units
+
+  !> The closure measurements g1..g5 of every contact are recorded (at velocity
+  !> level they measure the drift).
+  subroutine add_monitors(m, link)
+    type(mechanism_t), intent(inout) :: m
+    type(contact_link_t), intent(in) :: link
+    integer :: i
+    do i = 1, 5
+      call m%add_monitor(link%gaps(i), merge('m', '1', i <= 3))
+    end do
+  end subroutine add_monitors
 
   !> Centre and inertia of every body: given, or the homogeneous solid of a
   !> shape scaled to the body's mass.
@@ -554,7 +588,7 @@ contains
         call set_status(status, STATUS_INVALID_INPUT, 'the start velocities are not consistent with the '// &
           'contacts: body '''//system%bodies(b)%name//''' (carried by contact '''// &
           system%contacts(carrier(b))%name//''') can only have a twist that differs by '//format_short(miss)// &
-          merge(' rad/s', ' m/s  ', mod(worst - 1, 6) < 3)//' in its '// &
+          trim(merge(' rad/s', ' m/s  ', mod(worst - 1, 6) < 3))//' in its '// &
           trim(merge('angular velocity', 'velocity        ', mod(worst - 1, 6) < 3))// &
           ' (component '//achar(iachar('x') + mod(worst - 1, 3))//'); give a twist with no velocity into '// &
           'the surfaces (and no slip at rolling contacts)')

@@ -23,7 +23,7 @@ module io_input
   implicit none (type, external)
   private
   public :: input_text_t, load_input_file, input_from_text, stdin_name, read_text_file
-  public :: check_known_groups, group_present, lower, format_real, format_vector, invalid, where_given
+  public :: check_known_groups, group_present, group_count, lower, format_real, format_vector, invalid, where_given
   public :: check_finite, check_positive, check_nonnegative, check_range, check_choice
   public :: group_reader_t, open_group, bounds_t, in_range, above, mark_input_failure
 
@@ -294,14 +294,34 @@ contains
 
   ! ----------------------------------------------------------------- groups
 
-  pure integer function group_index(input, group) result(g)
+  !> The index of the first group named `group` (or of its occurrence-th), 0 if none.
+  pure integer function group_index(input, group, occurrence) result(g)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: group
+    integer, intent(in), optional :: occurrence
+    integer :: seen
+    seen = 0
     do g = 1, size(input%groups)
-      if (input%groups(g)%name == lower(group)) return
+      if (input%groups(g)%name == lower(group)) then
+        seen = seen + 1
+        if (.not. present(occurrence)) return
+        if (seen == occurrence) return
+      end if
     end do
     g = 0
   end function group_index
+
+  !> How many groups named `group` the input has (repeatable groups, see
+  !> check_known_groups).
+  pure integer function group_count(input, group) result(n)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group
+    integer :: g
+    n = 0
+    do g = 1, size(input%groups)
+      if (input%groups(g)%name == lower(group)) n = n + 1
+    end do
+  end function group_count
 
   !> Is `word` (lower case) one of `list` (compared in lower case)?
   pure logical function in_list(word, list)
@@ -320,16 +340,22 @@ contains
   end function group_present
 
   !> Every group in the input must be one the scenario reads, and appear once.
-  subroutine check_known_groups(input, allowed, status)
+  subroutine check_known_groups(input, allowed, status, repeatable)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: allowed(:)
     type(status_t), intent(inout) :: status
+    character(len=*), intent(in), optional :: repeatable(:)   !< groups that may appear more than once
     integer :: i, j
     character(len=:), allocatable :: list
 
     if (.not. status%ok()) return
     do i = 1, size(input%groups)
       associate (g => input%groups(i))
+        if (present(repeatable)) then
+          if (in_list(g%name, repeatable)) then
+            if (in_list(g%name, allowed)) cycle
+          end if
+        end if
         do j = 1, i - 1
           if (input%groups(j)%name == g%name) then
             call set_status(status, STATUS_INVALID_INPUT, group_where(input, g)//': &'//g%name// &
@@ -366,20 +392,22 @@ contains
 
   ! ------------------------------------------------------------- the reader
 
-  !> Opens `group` of `input` for reading; every variable it assigns must be
-  !> one of `names`. An absent group reads as empty (every default kept).
-  subroutine open_group(input, group, names, reader, status)
+  !> Opens `group` of `input` for reading (its occurrence-th, for a repeated
+  !> group); every variable it assigns must be one of `names`. An absent group
+  !> reads as empty (every default kept).
+  subroutine open_group(input, group, names, reader, status, occurrence)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: group
     character(len=*), intent(in) :: names(:)
     type(group_reader_t), intent(out) :: reader
     type(status_t), intent(inout) :: status
+    integer, intent(in), optional :: occurrence
     integer :: g, i, j
     character(len=:), allocatable :: list
 
     reader%source = input%name
     reader%group = lower(group)
-    g = group_index(input, group)
+    g = group_index(input, group, occurrence)
     if (g == 0) then
       allocate (reader%items(0))
       return

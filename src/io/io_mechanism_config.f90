@@ -182,6 +182,10 @@ contains
     end do
     if (s%r > 0) call file%write_vector(g//'closure_residual', s%closure(:n), 'm', &
                                         'max |g - target| over the closure measurements', status)
+    do k = 1, s%nm
+      call file%write_vector(g//'measurements/'//trim(s%monitor_names(k)), s%monitor(k, :n), &
+                             trim(s%monitor_units(k)), 'a measurement watched during the run', status)
+    end do
     call file%write_vector(g//'kinetic_energy', s%kinetic(:n), 'J', 'kinetic energy of all bodies', status)
     call file%write_vector(g//'potential_energy', s%potential(:n), 'J', 'potential energy -m g.r_S', status)
     call file%write_vector(g//'energy', s%kinetic(:n) + s%potential(:n), 'J', 'kinetic + potential', status)

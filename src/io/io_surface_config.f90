@@ -25,11 +25,17 @@ contains
   !> blended and bspline are described by the geometry groups (&centerline,
   !> &cross_section, &slide_elements, &blended, &bspline; io_geometry_config),
   !> given in this input or in the file `geometry_file` (relative to this
-  !> input's folder), not both.
-  subroutine read_surface_config(input, built_surface, status)
+  !> input's folder), not both. Named surfaces (the shapes of the contact
+  !> scenario) are read from the occurrence-th of the repeatable group `group`
+  !> with a required `name` (returned).
+  subroutine read_surface_config(input, built_surface, status, group, occurrence, name)
     type(input_text_t), intent(in) :: input
     class(surface_t), allocatable, intent(out) :: built_surface
     type(status_t), intent(inout) :: status
+    character(len=*), intent(in), optional :: group
+    integer, intent(in), optional :: occurrence
+    character(len=:), allocatable, intent(out), optional :: name
+    character(len=32) :: given_name
     character(len=24) :: kind
     character(len=4096) :: geometry_file
     type(input_text_t) :: geometry_input
@@ -38,15 +44,27 @@ contains
     type(status_t) :: built
     type(group_reader_t) :: r
     integer :: i
-    character(len=*), parameter :: g = 'surface'
+    character(len=:), allocatable :: g
+    character(len=13), allocatable :: names(:)
 
+    g = 'surface'
+    if (present(group)) g = group
+    names = [character(len=13) :: 'kind', 'a', 'b', 'c', 'point_a', 'point_b', 'point_c', 'origin', 'angles_deg', &
+             'geometry_file']
+    if (present(name)) names = [character(len=13) :: 'name', names]
     kind = 'plane'
     geometry_file = ''
     a = 1; b = 1; c = 1
     point_a = [0, 0, 0]; point_b = [1, 0, 0]; point_c = [0, 1, 0]
     origin = 0; angles_deg = 0
-    call open_group(input, g, [character(len=13) :: 'kind', 'a', 'b', 'c', 'point_a', 'point_b', 'point_c', &
-                    'origin', 'angles_deg', 'geometry_file'], r, status)
+    call open_group(input, g, names, r, status, occurrence)
+    if (present(name)) then
+      given_name = ''
+      call r%get('name', given_name, status)
+      if (status%ok() .and. len_trim(given_name) == 0) call r%invalid('name', '''''', 'every &'//g// &
+                                                                      ' needs a name', status)
+      name = trim(given_name)
+    end if
     call r%get('kind', kind, status, choices=surface_kinds)
     call r%get('origin', origin, in_range(-1e6_wp, 1e6_wp, 'm'), status)
     call r%get('angles_deg', angles_deg, in_range(-360.0_wp, 360.0_wp, 'deg'), status)

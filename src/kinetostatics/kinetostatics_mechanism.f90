@@ -131,6 +131,8 @@ module kinetostatics_mechanism
     integer, allocatable :: speeds(:)         ! positions in q of the speeds
     integer, allocatable :: sigma(:), rate_outputs(:)   ! scalar indices: dependent rates, constraint outputs
     integer, allocatable :: kinematic(:)      ! scalar indices of the kinematic coordinates
+    integer, allocatable :: monitors(:)       ! scalars recorded with every state (add_monitor)
+    character(len=8), allocatable :: monitor_units(:)
     real(wp), allocatable :: target(:)
     type(nonlinear_options_t) :: closure_options = nonlinear_options_t(xtol=1e-12_wp, &
       residual_tolerance=1e-8_wp)
@@ -165,7 +167,7 @@ module kinetostatics_mechanism
     integer, allocatable :: ipiv(:), ipiv_block(:)
   contains
     procedure :: add_frame, add_scalar, add_element, add_loop, add_contact, add_law, set_coordinates, finalize
-    procedure :: add_rate_constraint, set_kinematic, set_loop_branch
+    procedure :: add_rate_constraint, set_kinematic, set_loop_branch, add_monitor
     procedure :: frame_index, scalar_index, contact_index, law_index
     procedure :: residual => mechanism_residual
     procedure :: jacobian => mechanism_jacobian
@@ -294,6 +296,17 @@ contains
     self%rate_constraints = [self%rate_constraints, c]
     self%role(outputs) = ROLE_MEASURE
   end subroutine add_rate_constraint
+
+  !> A scalar (e.g. a measurement that watches a velocity-level contact's
+  !> drift) recorded with every state, in `units`.
+  subroutine add_monitor(self, scalar, units)
+    class(mechanism_t), intent(inout) :: self
+    integer, intent(in) :: scalar
+    character(len=*), intent(in) :: units
+    if (.not. allocated(self%monitors)) allocate (self%monitors(0), self%monitor_units(0))
+    self%monitors = [self%monitors, scalar]
+    self%monitor_units = [character(len=8) :: self%monitor_units, units]
+  end subroutine add_monitor
 
   !> Coordinates (among set_coordinates) whose rates an element writes in its
   !> velocity pass: integrated, but neither speeds nor solved.
@@ -479,6 +492,7 @@ contains
     integer :: k
     logical :: free(self%f)
     if (.not. allocated(self%kinematic)) allocate (self%kinematic(0))
+    if (.not. allocated(self%monitors)) allocate (self%monitors(0), self%monitor_units(0))
     allocate (self%sigma(0), self%rate_outputs(0))
     do k = 1, size(self%rate_constraints)
       self%sigma = [self%sigma, self%rate_constraints(k)%dependents]

@@ -14,9 +14,10 @@ module kinetostatics_recorder
   public :: mechanism_series_t
 
   type :: mechanism_series_t
-    integer :: n = 0, f = 0, r = 0, nb = 0, nc = 0, nl = 0
+    integer :: n = 0, f = 0, r = 0, nb = 0, nc = 0, nl = 0, nm = 0
     character(len=32), allocatable :: q_names(:), beta_names(:), closure_names(:), body_names(:), &
-      contact_names(:), law_names(:)
+      contact_names(:), law_names(:), monitor_names(:)
+    character(len=8), allocatable :: monitor_units(:)
     integer, allocatable :: body_frame(:)
     integer, allocatable :: law_contact(:)            ! contact of each law (0: none)
     real(wp), allocatable :: time(:)                   ! s
@@ -33,6 +34,7 @@ module kinetostatics_recorder
     real(wp), allocatable :: law_force(:, :, :)        ! 3 x nl x n, N
     real(wp), allocatable :: law_power(:, :), law_work(:, :)   ! nl x n: W, J
     real(wp), allocatable :: law_active(:, :)          ! nl x n: 1 on, 0 off
+    real(wp), allocatable :: monitor(:, :)             ! nm x n: the mechanism's monitored scalars
   contains
     procedure :: init => series_init
     procedure :: record => series_record
@@ -61,6 +63,9 @@ contains
     self%q_names = m%scalar_names(m%q)
     self%beta_names = m%scalar_names(m%beta)
     self%closure_names = m%scalar_names(m%closure)
+    self%nm = size(m%monitors)
+    self%monitor_names = m%scalar_names(m%monitors)
+    self%monitor_units = m%monitor_units
     allocate (self%contact_names(self%nc), self%law_names(self%nl), self%law_contact(self%nl))
     do k = 1, self%nc
       self%contact_names(k) = m%contacts(k)%name
@@ -80,7 +85,7 @@ contains
               s%body_r(3, s%nb, n), s%body_v(3, s%nb, n), s%body_omega(3, s%nb, n), &
               s%body_rot(3, 3, s%nb, n), s%normal(s%nc, n), s%friction(3, s%nc, n), s%contact_r(3, s%nc, n), &
               s%slip(3, s%nc, n), s%law_force(3, s%nl, n), s%law_power(s%nl, n), s%law_work(s%nl, n), &
-              s%law_active(s%nl, n))
+              s%law_active(s%nl, n), s%monitor(s%nm, n))
   end subroutine allocate_arrays
 
   !> Twice the room, the records so far kept.
@@ -100,6 +105,7 @@ contains
     call move_alloc(s%contact_r, old%contact_r); call move_alloc(s%slip, old%slip)
     call move_alloc(s%law_force, old%law_force); call move_alloc(s%law_power, old%law_power)
     call move_alloc(s%law_work, old%law_work); call move_alloc(s%law_active, old%law_active)
+    call move_alloc(s%monitor, old%monitor)
     call allocate_arrays(s, 2*size(old%time))
     s%time(:n) = old%time(:n); s%kind(:n) = old%kind(:n)
     s%q(:, :n) = old%q(:, :n); s%qd(:, :n) = old%qd(:, :n); s%qdd(:, :n) = old%qdd(:, :n)
@@ -112,6 +118,7 @@ contains
     s%contact_r(:, :, :n) = old%contact_r(:, :, :n); s%slip(:, :, :n) = old%slip(:, :, :n)
     s%law_force(:, :, :n) = old%law_force(:, :, :n); s%law_power(:, :n) = old%law_power(:, :n)
     s%law_work(:, :n) = old%law_work(:, :n); s%law_active(:, :n) = old%law_active(:, :n)
+    s%monitor(:, :n) = old%monitor(:, :n)
   end subroutine grow
 
   !> Evaluates the complete state at (t, q, q') and appends it with the laws'
@@ -144,6 +151,9 @@ contains
     end do
     self%lambda(:, i) = m%lambda
     self%closure(i) = m%closure_residual()
+    do k = 1, self%nm
+      self%monitor(k, i) = m%scalars(m%monitors(k))%q
+    end do
     call m%energy(self%kinetic(i), self%potential(i))
     do k = 1, self%nb
       associate (fr => m%frames(self%body_frame(k)))

@@ -13,6 +13,7 @@ module scenarios_registry
   use scenarios_pendulum, only: run_pendulum
   use scenarios_fourbar, only: run_fourbar
   use scenarios_sled, only: run_sled
+  use scenarios_contact, only: run_contact
   use scenarios_geometry, only: run_geometry
   use scenarios_water, only: run_water
   use scenarios_ride, only: run_ride_scenario
@@ -21,16 +22,17 @@ module scenarios_registry
   public :: run_input_file, run_default, run_input, print_scenarios, default_input, slidesim_version
   public :: scenario_template, scenario_names
 
-  character(len=*), parameter :: scenario_names(7) = [character(len=16) :: 'ride', 'point_mass', 'geometry', 'water', &
-    'pendulum', 'fourbar', 'sled']
-  character(len=*), parameter :: scenario_summaries(7) = [character(len=80) :: &
+  character(len=*), parameter :: scenario_names(8) = [character(len=16) :: 'ride', 'point_mass', 'geometry', &
+    'water', 'pendulum', 'fourbar', 'sled', 'contact']
+  character(len=*), parameter :: scenario_summaries(8) = [character(len=80) :: &
     'the water, then a rider in it down the slide: ride report, accelerations, limits', &
     'a point mass sliding on an elementary surface (plane, ellipsoid, ...)', &
     'build a tube, slide, blended or B-spline surface; write grid and frames', &
     'stationary water flow down a tube slide: streamline, height, width, edges', &
     'a simple or double pendulum (multibody core)', &
     'a four-bar linkage closed by plane-point measurements', &
-    'a bar sliding on a surface on two surface joints, closed like the rider']
+    'a bar sliding on a surface on two surface joints, closed like the rider', &
+    'bodies in point contact between smooth surfaces (spinning egg, rolling)']
 
 contains
 
@@ -160,6 +162,8 @@ contains
       call run_fourbar(input, run, status)
     case ('sled')
       call run_sled(input, run, status)
+    case ('contact')
+      call run_contact(input, run, status)
     case ('geometry')
       call run_geometry(input, run, status)
     case ('water')

@@ -22,7 +22,7 @@ import numpy as np
 import pint
 
 UNITS = pint.UnitRegistry()
-MULTIBODY = ('pendulum', 'fourbar', 'sled')
+MULTIBODY = ('pendulum', 'fourbar', 'sled', 'contact')
 # attributes the HDF5 dimension-scale API writes itself (fixed-length ASCII by its specification)
 DS_ATTRIBUTES = ('CLASS', 'NAME', 'REFERENCE_LIST', 'DIMENSION_LIST')
 NUMBER = r'[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?'

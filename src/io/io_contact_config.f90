@@ -1,0 +1,264 @@
+!> Input of the contact scenario (docs/contact.md): the groups &contact_model
+!> (once), &shape, &body and &contact (each as often as needed), read into the
+!> description of contact_model. Every name a contact or body refers to is
+!> checked here, with its line; the order of the contacts and whether the
+!> loops close are checked when the model is built.
+module io_contact_config
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_vector, only: rotation_xyz
+  use base_status, only: status_t
+  use contact_model, only: contact_system_t, FRICTION_NONE, &
+    FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL, FRICTION_COULOMB, LEVEL_POSITION, LEVEL_VELOCITY
+  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, group_count
+  use io_surface_config, only: read_surface_config
+  implicit none (type, external)
+  private
+  public :: read_contact_config, contact_groups, contact_repeatable_groups
+
+  character(len=*), parameter :: contact_groups(6) = [character(len=14) :: 'run', 'solver', 'contact_model', &
+    'shape', 'body', 'contact']
+  character(len=*), parameter :: contact_repeatable_groups(3) = [character(len=8) :: 'shape', 'body', 'contact']
+  character(len=*), parameter :: friction_names(4) = [character(len=14) :: 'none', 'viscous_weight', &
+    'viscous_normal', 'coulomb']
+  integer, parameter :: name_length = 32
+
+contains
+
+  subroutine read_contact_config(input, system, status)
+    type(input_text_t), intent(in) :: input
+    type(contact_system_t), intent(out) :: system
+    type(status_t), intent(inout) :: status
+    integer :: k
+    call read_model_group(input, system, status)
+    allocate (system%shapes(group_count(input, 'shape')), system%bodies(group_count(input, 'body')), &
+              system%contacts(group_count(input, 'contact')))
+    do k = 1, size(system%shapes)
+      if (status%ok()) call read_surface_config(input, system%shapes(k)%surface, status, group='shape', &
+                                                occurrence=k, name=system%shapes(k)%name)
+      if (status%ok()) call check_shape_name(input, k, system, status)
+    end do
+    do k = 1, size(system%bodies)
+      call read_body(input, k, system, status)
+    end do
+    do k = 1, size(system%contacts)
+      call read_contact(input, k, system, status)
+    end do
+    if (status%ok() .and. size(system%contacts) == 0) call missing('contact', 'a contact scenario needs at '// &
+      'least one &contact (body_1 shape_1 touches body_2 shape_2)')
+  contains
+    subroutine missing(group, why)
+      character(len=*), intent(in) :: group, why
+      type(group_reader_t) :: r
+      call open_group(input, group, ['name'], r, status)
+      call r%invalid('&'//group, 'none', why, status)
+    end subroutine missing
+  end subroutine read_contact_config
+
+  subroutine read_model_group(input, system, status)
+    type(input_text_t), intent(in) :: input
+    type(contact_system_t), intent(inout) :: system
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    call open_group(input, 'contact_model', ['gravity'], r, status)
+    call r%get('gravity', system%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
+  end subroutine read_model_group
+
+  !> The k-th &body.
+  subroutine read_body(input, k, system, status)
+    type(input_text_t), intent(in) :: input
+    integer, intent(in) :: k
+    type(contact_system_t), intent(inout) :: system
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    character(len=name_length) :: name, solid_of
+    real(wp) :: inertia(3), products(3), angles_deg(3)
+    integer :: j
+    character(len=*), parameter :: names(10) = [character(len=16) :: 'name', 'mass', 'solid_of', 'centre', &
+      'inertia', 'products', 'position', 'angles_deg', 'velocity', 'angular_velocity']
+    if (.not. status%ok()) return
+    name = ''
+    solid_of = ''
+    inertia = 0
+    products = 0
+    angles_deg = 0
+    call open_group(input, 'body', names, r, status, occurrence=k)
+    call r%get('name', name, status)
+    call r%get('mass', system%bodies(k)%mass, above(0.0_wp, 1e9_wp, 'kg'), status)
+    call r%get('solid_of', solid_of, status)
+    call r%get('centre', system%bodies(k)%centre, in_range(-1e6_wp, 1e6_wp, 'm'), status)
+    call r%get('inertia', inertia, in_range(0.0_wp, 1e12_wp, 'kg m^2'), status)
+    call r%get('products', products, in_range(-1e12_wp, 1e12_wp, 'kg m^2'), status)
+    call r%get('position', system%bodies(k)%position, in_range(-1e6_wp, 1e6_wp, 'm'), status)
+    call r%get('angles_deg', angles_deg, in_range(-360.0_wp, 360.0_wp, 'deg'), status)
+    call r%get('velocity', system%bodies(k)%velocity, in_range(-1e4_wp, 1e4_wp, 'm/s'), status)
+    call r%get('angular_velocity', system%bodies(k)%angular_velocity, in_range(-1e5_wp, 1e5_wp, 'rad/s'), status)
+    if (.not. status%ok()) return
+    if (len_trim(name) == 0) then
+      call r%invalid('name', '''''', 'every &body needs a name', status)
+    else if (trim(name) == 'ground') then
+      call r%invalid('name', '''ground''', '''ground'' is the fixed frame; name the body otherwise', status)
+    end if
+    do j = 1, k - 1
+      if (status%ok() .and. system%bodies(j)%name == trim(name)) &
+        call r%invalid('name', ''''//trim(name)//'''', 'another &body has this name', status)
+    end do
+    if (.not. status%ok()) return
+    system%bodies(k)%name = trim(name)
+    if (len_trim(solid_of) > 0) then
+      if (.not. any([(system%shapes(j)%name == trim(solid_of), j = 1, size(system%shapes))])) then
+        call r%invalid('solid_of', ''''//trim(solid_of)//'''', 'must name a &shape'//shape_list(system), status)
+        return
+      end if
+      call r%refuse_given([character(len=8) :: 'centre', 'inertia', 'products'], 'solid_of gives the centre '// &
+                          'and inertia of the homogeneous solid of the shape', status)
+      system%bodies(k)%solid_of = trim(solid_of)
+    else
+      if (.not. r%has('inertia')) call r%invalid('inertia', 'none', 'give the principal moments (and products) '// &
+        'of inertia about the centre, or solid_of = ''<shape>'' for a homogeneous solid', status)
+      system%bodies(k)%inertia = reshape([inertia(1), products(1), products(2), products(1), inertia(2), &
+                                          products(3), products(2), products(3), inertia(3)], [3, 3])
+    end if
+    system%bodies(k)%rotation = rotation_xyz(angles_deg*pi/180)
+  end subroutine read_body
+
+  !> The k-th &contact.
+  subroutine read_contact(input, k, system, status)
+    type(input_text_t), intent(in) :: input
+    integer, intent(in) :: k
+    type(contact_system_t), intent(inout) :: system
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    character(len=name_length) :: name, body_1, shape_1, body_2, shape_2
+    character(len=14) :: friction
+    character(len=8) :: level
+    integer :: j
+    character(len=*), parameter :: names(12) = [character(len=20) :: 'name', 'body_1', 'shape_1', 'side_1', &
+      'body_2', 'shape_2', 'side_2', 'friction', 'mu', 'regularization_speed', 'rolling', 'level']
+    if (.not. status%ok()) return
+    name = ''; body_1 = 'ground'; shape_1 = ''; body_2 = ''; shape_2 = ''
+    friction = 'none'
+    level = 'position'
+    associate (c => system%contacts(k))
+      call open_group(input, 'contact', names, r, status, occurrence=k)
+      call r%get('name', name, status)
+      call r%get('body_1', body_1, status)
+      call r%get('shape_1', shape_1, status)
+      call r%get('side_1', c%side_1, in_range(-1.0_wp, 1.0_wp, '1'), status)
+      call r%get('body_2', body_2, status)
+      call r%get('shape_2', shape_2, status)
+      call r%get('side_2', c%side_2, in_range(-1.0_wp, 1.0_wp, '1'), status)
+      call r%get('friction', friction, status, choices=friction_names)
+      call r%get('rolling', c%rolling, status)
+      call r%get('level', level, status, choices=[character(len=8) :: 'position', 'velocity'])
+      if (.not. status%ok()) return
+      select case (trim(friction))
+      case ('viscous_weight', 'viscous_normal')
+        call r%get('mu', c%mu, above(0.0_wp, 1e3_wp, 's/m'), status)
+        call r%refuse_given(['regularization_speed'], 'only Coulomb friction is regularized', status)
+      case ('coulomb')
+        call r%get('mu', c%mu, above(0.0_wp, 10.0_wp, '1'), status)
+        call r%get('regularization_speed', c%regularization_speed, above(0.0_wp, 1.0_wp, 'm/s'), status)
+      case default
+        call r%refuse_given([character(len=20) :: 'mu', 'regularization_speed'], 'friction = ''none''', status)
+      end select
+      if (.not. status%ok()) return
+      if (len_trim(name) == 0) call r%invalid('name', '''''', 'every &contact needs a name', status)
+      do j = 1, k - 1
+        if (status%ok() .and. system%contacts(j)%name == trim(name)) &
+          call r%invalid('name', ''''//trim(name)//'''', 'another &contact has this name', status)
+      end do
+      if (status%ok() .and. abs(c%side_1) /= 1) call r%invalid('side_1', r%written('side_1'), 'must be +1 or '// &
+        '-1: the side of shape_1 towards body_2 (the sign of its normal, thesis 3.38)', status)
+      if (status%ok() .and. abs(c%side_2) /= 1) call r%invalid('side_2', r%written('side_2'), 'must be +1 or '// &
+        '-1: the side of shape_2 towards body_1', status)
+      call check_body(r, 'body_1', body_1, system, .true., status)
+      call check_body(r, 'body_2', body_2, system, .false., status)
+      call check_shape(r, 'shape_1', shape_1, system, status)
+      call check_shape(r, 'shape_2', shape_2, system, status)
+      if (status%ok() .and. body_1 == body_2) call r%invalid('body_2', ''''//trim(body_2)//'''', &
+                                                             'must differ from body_1', status)
+      if (status%ok() .and. c%rolling .and. friction /= 'none') call r%invalid('friction', ''''//trim(friction)// &
+        '''', 'a rolling contact does not slide: its no-slip constraint carries the tangential force', status)
+      if (.not. status%ok()) return
+      c%name = trim(name)
+      c%body_1 = trim(body_1)
+      c%body_2 = trim(body_2)
+      c%shape_1 = trim(shape_1)
+      c%shape_2 = trim(shape_2)
+      c%level = merge(LEVEL_POSITION, LEVEL_VELOCITY, level == 'position')
+      select case (trim(friction))
+      case ('viscous_weight')
+        c%friction = FRICTION_VISCOUS_WEIGHT
+      case ('viscous_normal')
+        c%friction = FRICTION_VISCOUS_NORMAL
+      case ('coulomb')
+        c%friction = FRICTION_COULOMB
+      case default
+        c%friction = FRICTION_NONE
+      end select
+    end associate
+  end subroutine read_contact
+
+  !> The k-th &shape's name is new.
+  subroutine check_shape_name(input, k, system, status)
+    type(input_text_t), intent(in) :: input
+    integer, intent(in) :: k
+    type(contact_system_t), intent(in) :: system
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    integer :: j
+    do j = 1, k - 1
+      if (system%shapes(j)%name == system%shapes(k)%name) then
+        call open_group(input, 'shape', [character(len=13) :: 'name', 'kind', 'a', 'b', 'c', 'point_a', &
+                        'point_b', 'point_c', 'origin', 'angles_deg', 'geometry_file'], r, status, occurrence=k)
+        call r%invalid('name', ''''//system%shapes(k)%name//'''', 'another &shape has this name', status)
+        return
+      end if
+    end do
+  end subroutine check_shape_name
+
+  subroutine check_body(r, variable, name, system, ground_allowed, status)
+    type(group_reader_t), intent(in) :: r
+    character(len=*), intent(in) :: variable, name
+    type(contact_system_t), intent(in) :: system
+    logical, intent(in) :: ground_allowed
+    type(status_t), intent(inout) :: status
+    integer :: j
+    character(len=:), allocatable :: list
+    if (.not. status%ok()) return
+    if (trim(name) == 'ground' .and. ground_allowed) return
+    do j = 1, size(system%bodies)
+      if (system%bodies(j)%name == trim(name)) return
+    end do
+    list = ''
+    if (ground_allowed) list = ' ''ground'''
+    do j = 1, size(system%bodies)
+      list = list//' '''//system%bodies(j)%name//''''
+    end do
+    call r%invalid(variable, ''''//trim(name)//'''', 'must name a &body; the bodies are'//list, status)
+  end subroutine check_body
+
+  subroutine check_shape(r, variable, name, system, status)
+    type(group_reader_t), intent(in) :: r
+    character(len=*), intent(in) :: variable, name
+    type(contact_system_t), intent(in) :: system
+    type(status_t), intent(inout) :: status
+    integer :: j
+    if (.not. status%ok()) return
+    do j = 1, size(system%shapes)
+      if (system%shapes(j)%name == trim(name)) return
+    end do
+    call r%invalid(variable, ''''//trim(name)//'''', 'must name a &shape'//shape_list(system), status)
+  end subroutine check_shape
+
+  function shape_list(system) result(text)
+    type(contact_system_t), intent(in) :: system
+    character(len=:), allocatable :: text
+    integer :: j
+    text = '; the shapes are'
+    do j = 1, size(system%shapes)
+      text = text//' '''//system%shapes(j)%name//''''
+    end do
+  end function shape_list
+end module io_contact_config

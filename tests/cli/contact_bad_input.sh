@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# Bad contact inputs stop before any work (exit 1, no result file) with a
+# message naming the file, the group (with its line), the variable, the value
+# and what is allowed: unknown names, a contact listed before the one that
+# carries its body_1, a body carried twice or never, a loop that cannot close
+# (which contact, by how much), the parallel-normal branch, start velocities
+# that push into the surface.
+set -u
+slidesim=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0; checks=0
+
+expect() {
+  local name=$1 want=$2; shift 2
+  checks=$((checks + 1))
+  (cd "$work" && "$slidesim" -q "$name.nml" >"$name.out" 2>"$name.err")
+  local got=$?
+  local ok=1
+  [ "$got" = "$want" ] || { echo "FAIL $name: exit status $got, expected $want"; ok=0; }
+  for needle in "$@"; do
+    grep -qF -- "$needle" "$work/$name.err" || { echo "FAIL $name: message lacks '$needle'"; ok=0; }
+  done
+  if ls "$work"/*.h5 "$work"/*.tmp >/dev/null 2>&1; then
+    echo "FAIL $name: a result file was left behind"; ok=0; rm -f "$work"/*.h5 "$work"/*.tmp
+  fi
+  [ -n "${SHOW:-}" ] && echo "$name: $(cat "$work/$name.err")"
+  if [ $ok = 0 ]; then failures=$((failures + 1)); echo "  message: $(cat "$work/$name.err")"; fi
+}
+
+head="&run scenario = 'contact', output = 'x.h5' /
+&solver duration = 0.1, output_step = 0.01 /
+&shape name = 'table', kind = 'plane' /
+&shape name = 'ball', kind = 'ellipsoid', a = 0.1, b = 0.1, c = 0.1 /"
+ball="&body name = 'ball', mass = 1, solid_of = 'ball', position = 0, 0, 0.2, angles_deg = 90, 0, 0 /"
+
+printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'tabel', body_2 = 'ball', shape_2 = 'ball' /\n" \
+  "$head" "$ball" > "$work/unknown_shape.nml"
+expect unknown_shape 1 'unknown_shape.nml:' '&contact' shape_1 "'tabel'" "'table'"
+
+printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'bal', shape_2 = 'ball' /\n" \
+  "$head" "$ball" > "$work/unknown_body.nml"
+expect unknown_body 1 'unknown_body.nml:' '&contact' body_2 "'bal'" "'ball'"
+
+printf "%s\n%s\n&body name = 'top', mass = 1, solid_of = 'ball', position = 0, 0, 0.4 /\n&contact name = 'c2', body_1 = 'ball', shape_1 = 'ball', body_2 = 'top', shape_2 = 'ball' /\n&contact name = 'c1', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
+  "$head" "$ball" > "$work/order.nml"
+expect order 1 'order.nml' "contact 'c2'" "body_1 = 'ball'" 'not placed yet' 'before'
+
+printf "%s\n%s\n&body name = 'lost', mass = 1, solid_of = 'ball', position = 1, 0, 0.2 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
+  "$head" "$ball" > "$work/not_carried.nml"
+expect not_carried 1 'not_carried.nml' "body 'lost'" 'not body_2 of any contact'
+
+printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', side_2 = -1 /\n" \
+  "$head" "$ball" > "$work/parallel.nml"
+expect parallel 1 'parallel.nml' "loop 'c'" 'parallel normals'
+
+printf "%s\n&body name = 'ball', mass = 1, solid_of = 'ball', position = 0, 0, 0.2, angles_deg = 90, 0, 0, velocity = 0, 0, -1 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
+  "$head" > "$work/into_surface.nml"
+expect into_surface 1 'into_surface.nml' 'not consistent with the contacts' "body 'ball'" "contact 'c'"
+
+printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', rolling = .true., friction = 'coulomb', mu = 0.5 /\n" \
+  "$head" "$ball" > "$work/rolling_friction.nml"
+expect rolling_friction 1 'rolling_friction.nml:' '&contact' friction "'coulomb'" 'no-slip'
+
+printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', mu = 0.3 /\n" \
+  "$head" "$ball" > "$work/unused_mu.nml"
+expect unused_mu 1 'unused_mu.nml:' '&contact' mu "friction = 'none'"
+
+printf "%s\n&body name = 'ball', mass = 1, position = 0, 0, 0.2 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
+  "$head" > "$work/no_inertia.nml"
+expect no_inertia 1 'no_inertia.nml:' '&body' inertia solid_of
+
+# a cup that cannot close in a B-spline bowl (table 3.2's paraboloids): which
+# contact, by how much
+grid() {   # grid HALF_WIDTH A2: 13 x 13 points of z = (x^2 + y^2)/A2
+  echo "x, y, z"
+  for i in $(seq 0 12); do for j in $(seq 0 12); do
+    echo "$1 $2 $i $j" | awk '{x = -$1 + 2*$1*$3/12; y = -$1 + 2*$1*$4/12; printf "%.17g, %.17g, %.17g\n", x, y, (x*x + y*y)/$2}'
+  done; done
+}
+grid 2 3 > "$work/bowl.csv"
+grid 0.5 0.5 > "$work/cup.csv"
+printf "&bspline file = 'bowl.csv', degree = 5, smoothing = 0.05 /\n" > "$work/bowl.geo"
+printf "&bspline file = 'cup.csv', degree = 5, smoothing = 0.05 /\n" > "$work/cup.geo"
+printf "&run scenario = 'contact', output = 'x.h5' /\n&shape name = 'bowl', kind = 'bspline', geometry_file = 'bowl.geo' /\n&shape name = 'cup', kind = 'bspline', geometry_file = 'cup.geo' /\n&body name = 'cup', mass = 1, inertia = 0.1, 0.1, 0.1, position = 1.74, 0, 1.3, angles_deg = 0, -11.459156, 0 /\n&contact name = 'cup_in_bowl', body_1 = 'ground', shape_1 = 'bowl', body_2 = 'cup', shape_2 = 'cup', side_2 = -1 /\n" > "$work/no_closure.nml"
+expect no_closure 1 'no_closure.nml' "loop 'cup_in_bowl'" 'off by'
+
+echo "contact_bad_input: $checks checks, $failures failed"
+[ "$failures" = 0 ]
