@@ -34,7 +34,8 @@ module rider_ride
   use rider_water_drag, only: water_drag_t
   implicit none (type, external)
   private
-  public :: ride_options_t, ride_series_t, contact_series_t, ride_result_t, rider_ode_t, run_ride, check_ride_start
+  public :: ride_options_t, ride_series_t, contact_series_t, ride_result_t, rider_ode_t, run_ride, check_ride_start, &
+    prepare_ride
 
   type :: ride_options_t
     !> thesis B.7 tolerances; the step is capped at 0.05 s: each closure starts
@@ -66,6 +67,8 @@ module rider_ride
     integer :: n = 0
     real(wp), allocatable :: time(:)                    ! s
     integer, allocatable :: kind(:)                     ! RECORD_START, _OUTPUT, _EVENT
+    real(wp), allocatable :: state(:, :)                ! the integrator's state y = [q, q', W] (a ride can
+                                                        ! be restarted from any record)
     real(wp), allocatable :: arc_length(:)              ! m, of the pelvis
     real(wp), allocatable :: speed(:)                   ! m/s, of the pelvis contact
     real(wp), allocatable :: heading(:), phi_legs(:), phi_trunk(:)   ! rad
@@ -123,7 +126,7 @@ contains
     if (.not. status%ok()) return
     call prepare_ride(params, surface, options, sys, y0, status, water)
     if (.not. status%ok()) return
-    call init_series(sys%ride, nint(min(options%max_duration, 120.0_wp)/options%output_step) + 16)
+    call init_series(sys%ride, nint(min(options%max_duration, 120.0_wp)/options%output_step) + 16, size(y0))
     driver%ode = options%ode
     driver%t_end = options%max_duration
     driver%output_step = options%output_step
@@ -237,12 +240,13 @@ contains
     end select
   end function arc_length_at
 
-  subroutine init_series(s, capacity)
+  subroutine init_series(s, capacity, state_size)
     type(ride_series_t), intent(inout) :: s
-    integer, intent(in) :: capacity
+    integer, intent(in) :: capacity, state_size
     integer :: k
     s%n = 0
-    allocate (s%time(capacity), s%kind(capacity), s%arc_length(capacity), s%speed(capacity), s%heading(capacity), &
+    allocate (s%time(capacity), s%kind(capacity), s%state(state_size, capacity), s%arc_length(capacity), &
+              s%speed(capacity), s%heading(capacity), &
               s%phi_legs(capacity), s%phi_trunk(capacity), s%pelvis_acceleration(3, capacity), &
               s%pelvis_axes(3, 3, capacity), s%reaction_force(3, capacity), s%reaction_moment(3, capacity), &
               s%kinetic(capacity), s%potential(capacity), s%energy(capacity), s%friction_work(capacity), &
@@ -262,7 +266,7 @@ contains
   subroutine grow_series(s)
     type(ride_series_t), intent(inout) :: s
     type(ride_series_t) :: bigger
-    call init_series(bigger, 2*size(s%time))
+    call init_series(bigger, 2*size(s%time), size(s%state, 1))
     bigger%n = s%n
     call copy_series(s, bigger, s%n)
     call move_series(bigger, s)
@@ -274,7 +278,8 @@ contains
     type(ride_series_t), intent(inout) :: b
     integer, intent(in) :: n
     integer :: k
-    b%time(:n) = a%time(:n); b%kind(:n) = a%kind(:n); b%arc_length(:n) = a%arc_length(:n)
+    b%time(:n) = a%time(:n); b%kind(:n) = a%kind(:n); b%state(:, :n) = a%state(:, :n)
+    b%arc_length(:n) = a%arc_length(:n)
     b%speed(:n) = a%speed(:n); b%heading(:n) = a%heading(:n); b%phi_legs(:n) = a%phi_legs(:n)
     b%phi_trunk(:n) = a%phi_trunk(:n); b%pelvis_acceleration(:, :n) = a%pelvis_acceleration(:, :n)
     b%pelvis_axes(:, :, :n) = a%pelvis_axes(:, :, :n); b%reaction_force(:, :n) = a%reaction_force(:, :n)
@@ -301,7 +306,7 @@ contains
     integer :: k
     b%n = a%n
     if (allocated(a%time)) call move_alloc(a%time, b%time)
-    call move_alloc(a%kind, b%kind); call move_alloc(a%arc_length, b%arc_length)
+    call move_alloc(a%kind, b%kind); call move_alloc(a%state, b%state); call move_alloc(a%arc_length, b%arc_length)
     call move_alloc(a%speed, b%speed); call move_alloc(a%heading, b%heading)
     call move_alloc(a%phi_legs, b%phi_legs); call move_alloc(a%phi_trunk, b%phi_trunk)
     call move_alloc(a%pelvis_acceleration, b%pelvis_acceleration); call move_alloc(a%pelvis_axes, b%pelvis_axes)
@@ -366,6 +371,7 @@ contains
     associate (m => self%mechanism, lay => self%layout, r => self%ride)
       r%time(n) = t
       r%kind(n) = kind
+      r%state(:, n) = y
       associate (d => m%frames(lay%contact_frame(CONTACT_PELVIS)), p => m%frames(lay%body_frame(CONTACT_PELVIS)))
         r%speed(n) = norm2(d%v)
         s = matmul(p%rot, lay%body%pelvis%com)
