@@ -290,7 +290,7 @@ contains
         call file%write_text(c//'verdict', 'not judged', 'the ride did not reach the exit', status)
         cycle
       end if
-      call file%write_text(c//'verdict', merge('exceeded', 'ok      ', r%verdicts(k)%exceeded), &
+      call file%write_text(c//'verdict', trim(merge('exceeded', 'ok      ', r%verdicts(k)%exceeded)), &
                            'ok or exceeded', status)
       call file%write_scalar(c//'worst', r%verdicts(k)%worst, si(unit), &
                              'the value furthest beyond (or nearest to) a bound', status)
