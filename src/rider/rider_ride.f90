@@ -27,6 +27,7 @@ module rider_ride
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use geometry_tube, only: tube_surface_t
+  use geometry_cross_section, only: circle_section_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use water_field, only: water_field_t
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names, &
@@ -35,7 +36,7 @@ module rider_ride
   implicit none (type, external)
   private
   public :: ride_options_t, ride_series_t, contact_series_t, ride_result_t, rider_ode_t, run_ride, check_ride_start, &
-    prepare_ride
+    prepare_ride, wall_position
 
   type :: ride_options_t
     !> thesis B.7 tolerances; the step is capped at 0.05 s: each closure starts
@@ -322,29 +323,45 @@ contains
   !> Wall angle (rad) and distance along the wall (m) of (u, v) from v = pi/2:
   !> the angle of the Darboux normal from the normal at (u, pi/2) about the
   !> section's tangent direction, and the length of the v-curve between them
-  !> (5-point Gauss-Legendre; exact for a circle).
-  subroutine wall_position(surface, u, v, angle, distance, status)
+  !> (5-point Gauss-Legendre; exact for a circle). On a circular tube both
+  !> are closed forms, v - pi/2 and r (v - pi/2) (the normal is radial), unless
+  !> `general` asks for the quadrature (the test compares the two).
+  subroutine wall_position(surface, u, v, angle, distance, status, general)
     class(surface_t), intent(in) :: surface
     real(wp), intent(in) :: u, v
     real(wp), intent(out) :: angle, distance
     type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: general
     real(wp), parameter :: x(5) = [-0.9061798459386640_wp, -0.5384693101056831_wp, 0.0_wp, &
                                    0.5384693101056831_wp, 0.9061798459386640_wp]
     real(wp), parameter :: w(5) = [0.2369268850561891_wp, 0.4786286704993665_wp, 0.5688888888888889_wp, &
                                    0.4786286704993665_wp, 0.2369268850561891_wp]
     type(surface_point_t) :: p, b
     type(darboux_frame_t) :: fp, fb
-    real(wp) :: mid, half
+    real(wp) :: mid, half, n(3)
     integer :: i
     angle = 0
     distance = 0
+    if (.not. present(general)) then
+      select type (surface)
+      class is (tube_surface_t)
+        select type (section => surface%section)
+        type is (circle_section_t)
+          angle = v - pi/2
+          distance = section%radius*angle
+          return
+        end select
+      end select
+    end if
     call surface%evaluate(u, v, 2, p, status)
     if (status%ok()) call darboux_frame(p, 1.0_wp, 1.0_wp, 0.0_wp, fp, status)
     if (status%ok()) call surface%evaluate(u, pi/2, 2, b, status)
     if (status%ok()) call darboux_frame(b, 1.0_wp, 1.0_wp, 0.0_wp, fb, status)
     if (.not. status%ok()) return
-    ! rotation from the bottom normal to the contact's, about the bottom's x (along r_u): + towards +v
-    angle = atan2(dot_product(cross(fb%r(:, 3), fp%r(:, 3)), fb%r(:, 1)), dot_product(fb%r(:, 3), fp%r(:, 3)))
+    ! the angle between the bottom's normal and the contact's, signed by the
+    ! turn about the bottom's x (along r_u): + towards +v
+    n = cross(fb%r(:, 3), fp%r(:, 3))
+    angle = sign(atan2(norm2(n), dot_product(fb%r(:, 3), fp%r(:, 3))), dot_product(n, fb%r(:, 1)))
     mid = 0.5_wp*(v + pi/2)
     half = 0.5_wp*(v - pi/2)
     do i = 1, 5

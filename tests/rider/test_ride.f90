@@ -46,7 +46,7 @@ program test_ride
   use io_input, only: input_text_t, load_input_file
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names
-  use rider_ride, only: ride_options_t, ride_result_t, run_ride, rider_ode_t, prepare_ride
+  use rider_ride, only: ride_options_t, ride_result_t, run_ride, rider_ode_t, prepare_ride, wall_position
   use rider_water_drag, only: in_water_roots
   use scenarios_water, only: build_water
   use testing, only: check, check_close, finish_tests
@@ -63,11 +63,29 @@ program test_ride
   call check(st%ok(), 'the demo water: '//st%text())
   if (.not. st%ok()) call finish_tests('test_ride')
 
+  call check_wall_position()
   call check_energy_conserved()
   call check_energy_balance_and_events()
   call finish_tests('test_ride')
 
 contains
+
+  !> On the demo slide (circular sections) the closed forms of the wall
+  !> angle and distance equal the general ones (normal angle, quadrature).
+  subroutine check_wall_position()
+    real(wp) :: u, v, a1, d1, a2, d2
+    type(status_t) :: st
+    integer :: i
+    do i = 1, 12
+      u = 0.3_wp + 5.3_wp*i
+      v = 1.5707963267948966_wp + 0.23_wp*(i - 6)
+      call wall_position(description%slide, u, v, a1, d1, st)
+      call wall_position(description%slide, u, v, a2, d2, st, general=.true.)
+      ! rtol 1e-12: 5-point Gauss on a constant |r_v| is exact; the angle from two unit normals
+      call check_close(a1, a2, 1e-12_wp, 1e-14_wp, 'wall angle: closed form = normal angle')
+      call check_close(d1, d2, 1e-12_wp, 1e-14_wp, 'wall distance: closed form = quadrature')
+    end do
+  end subroutine check_wall_position
 
   subroutine check_energy_conserved()
     type(rider_params_t) :: p
