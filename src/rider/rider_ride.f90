@@ -97,6 +97,7 @@ module rider_ride
     type(ride_series_t) :: ride
     class(surface_t), allocatable :: surface
     real(wp) :: min_rate = 0              ! u per s: stall below
+    real(wp) :: min_speed = 0             ! m/s, the stall speed it stands for
     real(wp) :: slide_length = 0          ! m, for progress lines
     integer :: drag_switches = 0
   contains
@@ -179,6 +180,7 @@ contains
     if (.not. status%ok()) return
     allocate (sys%surface, source=surface)
     sys%slide_length = slide_length(surface)
+    sys%min_speed = options%min_speed
     sys%min_rate = options%min_speed/centerline_speed(surface, q0(1))
     if (.not. qd0(1) > sys%min_rate) then
       call set_status(status, STATUS_INVALID_INPUT, 'the start speed '//format_short(params%speed0)// &
@@ -474,7 +476,8 @@ contains
     where = ' at arc length '//format_short(arc_length_at(self%surface, y(1)))//' m (t = '//format_short(t)//' s)'
     if (fired(1) < 0) then
       action = EVENT_STOP
-      self%outcome = 'the rider stalled or turned back: the speed along the slide fell below the stall speed'//where
+      self%outcome = 'the rider stalled or turned back: the speed along the slide fell below min_speed = '// &
+                     format_short(self%min_speed)//' m/s'//where
       return
     end if
     if (action == EVENT_STOP .and. allocated(self%outcome)) then

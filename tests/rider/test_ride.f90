@@ -49,6 +49,7 @@ program test_ride
   use rider_ride, only: ride_options_t, ride_result_t, run_ride, rider_ode_t, prepare_ride, wall_position
   use rider_water_drag, only: in_water_roots
   use scenarios_water, only: build_water
+  use geometry_tube, only: tube_surface_t, new_straight_tube
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
 
@@ -64,6 +65,7 @@ program test_ride
   if (.not. st%ok()) call finish_tests('test_ride')
 
   call check_wall_position()
+  call check_stops()
   call check_energy_conserved()
   call check_energy_balance_and_events()
   call finish_tests('test_ride')
@@ -86,6 +88,48 @@ contains
       call check_close(d1, d2, 1e-12_wp, 1e-14_wp, 'wall distance: closed form = quadrature')
     end do
   end subroutine check_wall_position
+
+  !> The ride's other ends: frictionless with one-sided contacts the rider
+  !> lifts off (a normal force reaches zero there, the message says which
+  !> and where); on a straight tube flatter than the friction angle it
+  !> slows down and stalls.
+  subroutine check_stops()
+    type(rider_params_t) :: p
+    type(ride_options_t) :: opt
+    type(ride_result_t) :: ride
+    type(status_t) :: st
+    type(tube_surface_t) :: flat
+    integer :: n, k
+    real(wp) :: smallest
+    p%mu = 0
+    p%drag = .false.
+    opt%output_step = 0.05_wp
+    opt%progress_seconds = 0
+    call run_ride(p, description%slide, opt, ride, st)
+    n = ride%series%n
+    call check(st%ok() .and. .not. ride%complete .and. index(ride%outcome, 'lift-off: the normal force of the ') == 1 &
+               .and. index(ride%outcome, 'at arc length') > 0, 'frictionless: lift-off with where: '//ride%outcome)
+    smallest = huge(1.0_wp)
+    do k = 1, N_CONTACTS
+      smallest = min(smallest, abs(ride%series%contact(k)%normal_force(n)))
+    end do
+    ! the root is located to the integrator's tolerance: N ~ 1e-7 of the weight
+    call check(smallest < 1e-6_wp*p%body%mass*9.81_wp, 'lift-off: a normal force is zero at the stop')
+    print '(a)', 'frictionless, one-sided: '//ride%outcome
+    ! 2 degrees against mu = 0.0724 (4.1 degrees): the rider slows down to a stall
+    flat = new_straight_tube(0.5_wp, 2*acos(-1.0_wp)/180, 30.0_wp, st)
+    p = rider_params_t()
+    p%drag = .false.
+    p%u0 = 2
+    p%speed0 = 1
+    call run_ride(p, flat, opt, ride, st)
+    call check(st%ok() .and. index(ride%outcome, 'the rider stalled or turned back') == 1, &
+               'stall on a flat tube: '//ride%outcome)
+    n = ride%series%n
+    ! the stall speed 0.05 m/s along u: |c_u| = 1 on the straight tube
+    call check_close(ride%series%speed(n), opt%min_speed, 1e-6_wp, 0.0_wp, 'stalls at min_speed')
+    print '(a)', 'flat tube: '//ride%outcome
+  end subroutine check_stops
 
   subroutine check_energy_conserved()
     type(rider_params_t) :: p
