@@ -144,6 +144,7 @@ def main():
     parser.add_argument('--full-share', type=float, default=0.5)
     parser.add_argument('--check-timeout', type=float, default=60)
     parser.add_argument('--run-timeout', type=float, default=120)
+    parser.add_argument('--verbose', action='store_true', help='print every mutant and its exit status')
     args = parser.parse_args()
     slidesim = os.path.abspath(args.slidesim)
     rng = random.Random(args.seed)
@@ -181,6 +182,8 @@ def main():
                     failures.append(f'{label}, {phase}: exit status {p.returncode} (a signal?): {err[-300:]}')
                     return None, err
                 counts[(phase, p.returncode)] = counts.get((phase, p.returncode), 0) + 1
+                if args.verbose:
+                    print(f'{label}, {phase}: exit {p.returncode} {err.strip()[:200]}')
                 kept = os.path.exists(out)
                 temporaries = [t for t in os.listdir(work) if t.startswith(os.path.basename(out) + '.')]
                 if temporaries:
