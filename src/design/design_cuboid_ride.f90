@@ -97,6 +97,7 @@ module design_cuboid_ride
     logical :: lifts_off = .false.       !< F_r . z_D <= 0 at some sample
     real(wp) :: duration = 0             !< s, to the end of the slide
     real(wp) :: end_speed = 0            !< m/s
+    real(wp) :: start_angle = 0          !< rad, of cuboid_start_t
     logical :: reached_end = .false.
     integer :: rhs_evaluations = 0
     type(cuboid_series_t) :: series
@@ -198,6 +199,7 @@ contains
     driver%label = 'cuboid ride'
     call drive(model, y0, driver, result, status)
     ride = model%out
+    ride%start_angle = start%angle
     ride%rhs_evaluations = int(result%stats%rhs_evaluations)
     if (.not. status%ok()) return
     if (result%outcome == DRIVE_END_TIME) then

@@ -67,7 +67,7 @@ module design_geometry_optimization
     integer :: constraint = CONSTRAINT_PENALTY
     real(wp) :: penalty_factor = 5e3_wp       !< 1/m x m/s^2 (thesis: 5.0e3)
     real(wp) :: lever_tolerance = 1e-4_wp     !< m, CONSTRAINT_EXACT
-    real(wp) :: rho = 5e3_wp**2               !< augmented Lagrangian weight (the penalty factor squared)
+    real(wp) :: rho = 1e5_wp                  !< augmented Lagrangian weight, (m/s^2)^2/m^2 (20 x the penalty factor)
     integer :: max_outer = 8                  !< augmented Lagrangian updates
     integer :: threads = 1
     type(least_squares_options_t) :: solver = least_squares_options_t(ftol=1e-4_wp, xtol=1e-3_wp, &

@@ -17,14 +17,15 @@ module scenarios_registry
   use scenarios_geometry, only: run_geometry
   use scenarios_water, only: run_water
   use scenarios_ride, only: run_ride_scenario
+  use scenarios_optimize, only: run_optimize
   implicit none (type, external)
   private
   public :: run_input_file, run_default, run_input, print_scenarios, default_input, slidesim_version
   public :: scenario_template, scenario_names
 
-  character(len=*), parameter :: scenario_names(8) = [character(len=16) :: 'ride', 'point_mass', 'geometry', &
-    'water', 'pendulum', 'fourbar', 'sled', 'contact']
-  character(len=*), parameter :: scenario_summaries(8) = [character(len=80) :: &
+  character(len=*), parameter :: scenario_names(9) = [character(len=16) :: 'ride', 'point_mass', 'geometry', &
+    'water', 'pendulum', 'fourbar', 'sled', 'contact', 'optimize']
+  character(len=*), parameter :: scenario_summaries(9) = [character(len=80) :: &
     'the water, then a rider in it down the slide: ride report, accelerations, limits', &
     'a point mass sliding on an elementary surface (plane, ellipsoid, ...)', &
     'build a tube, slide, blended or B-spline surface; write grid and frames', &
@@ -32,7 +33,8 @@ module scenarios_registry
     'a simple or double pendulum (multibody core)', &
     'a four-bar linkage closed by plane-point measurements', &
     'a bar sliding on a surface on two surface joints, closed like the rider', &
-    'bodies in point contact between smooth surfaces (spinning egg, rolling)']
+    'bodies in point contact between smooth surfaces (spinning egg, rolling)', &
+    'optimise a tube slide''s shape: rides of a body, accelerations, tipping lever arm']
 
 contains
 
@@ -170,6 +172,8 @@ contains
       call run_water(input, run, status)
     case ('ride')
       call run_ride_scenario(input, run, status)
+    case ('optimize')
+      call run_optimize(input, run, status)
     end select
     if (status%ok() .and. run%check_only) write (output_unit, '(a)') input%name//': input ok (scenario '// &
       trim(run%scenario)//'; results would go to '//trim(run%output)//')'

@@ -1,0 +1,167 @@
+!> &optimize: the geometry optimisation of a tube slide around a centerline
+!> through points (thesis 4.7; docs/design.md lists every variable with unit,
+!> default and range). The defaults are thesis table 4.12 and (4.49).
+module io_optimization_config
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_text, only: format_integer
+  use base_status, only: status_t
+  use numerics_ode, only: ode_options_t
+  use design_cuboid_ride, only: ACCELERATION_KINEMATIC, ACCELERATION_FELT
+  use design_geometry_optimization, only: optimization_setup_t, table_4_12_design, CONSTRAINT_PENALTY, &
+    CONSTRAINT_EXACT, CONSTRAINT_NONE
+  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, format_real
+  implicit none (type, external)
+  private
+  public :: read_optimization_config
+
+  integer, parameter :: max_points = 200, max_design = 50, max_rides = 50
+
+contains
+
+  subroutine read_optimization_config(input, setup, status)
+    type(input_text_t), intent(in) :: input
+    type(optimization_setup_t), intent(out) :: setup
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    real(wp), allocatable :: points(:, :), lower(:), upper(:), angles(:), point_real(:)
+    character(len=1), allocatable :: coordinate(:)
+    character(len=10) :: acceleration, constraint
+    integer :: n_points, n_design, n_given, i
+    real(wp) :: start_wall_angle_deg
+    character(len=*), parameter :: names(27) = [character(len=20) :: 'n_points', 'points', 'n_design', &
+      'design_point', 'design_coordinate', 'lower', 'upper', 'radius', 'degree', 'smoothing', 'horizon', &
+      'start_angles_deg', 'start_speed', 'start_wall_angle_deg', 'body_mass', 'body_length', 'body_width', &
+      'body_height', 'com_height', 'acceleration', 'constraint', 'lever_limit', 'penalty_factor', &
+      'lever_tolerance', 'threads', 'ftol', 'xtol']
+
+    setup%design = table_4_12_design()
+    setup%start_angles = [-30.0_wp, -15.0_wp, 0.0_wp, 15.0_wp, 30.0_wp]*pi/180
+    n_points = size(setup%design%points, 2)
+    n_design = size(setup%design%point)
+    acceleration = 'kinematic'
+    constraint = 'penalty'
+    start_wall_angle_deg = 0
+    call open_group(input, 'optimize', names, r, status)
+    if (.not. status%ok()) return
+
+    ! the centerline points and the design variables (default: table 4.12)
+    call r%get('n_points', n_points, 4, max_points, status)
+    allocate (points(3, max_points))
+    points = 0
+    points(:, :size(setup%design%points, 2)) = setup%design%points
+    call r%get_columns('points', points, in_range(-1e5_wp, 1e5_wp, 'm'), 'the limit of '// &
+                       format_integer(max_points)//' points', n_given, status)
+    if (.not. status%ok()) return
+    if (r%has('points') .and. n_given /= n_points) then
+      call r%invalid('points', format_integer(n_given)//' points', 'give n_points = '// &
+                     format_integer(n_points)//' points (x, y, z each)', status)
+      return
+    end if
+    if (r%has('n_points') .and. .not. r%has('points')) then
+      call r%invalid('n_points', format_integer(n_points), 'give the points too', status)
+      return
+    end if
+    setup%design%points = points(:, :n_points)
+
+    call r%get('n_design', n_design, 1, max_design, status)
+    if (.not. status%ok()) return
+    allocate (point_real(n_design), coordinate(n_design), lower(n_design), upper(n_design))
+    point_real = 0
+    coordinate = 'x'
+    lower = 0
+    upper = 0
+    if (.not. r%has('n_design') .and. n_design == size(setup%design%point)) then
+      point_real = real(setup%design%point - 1, wp)
+      coordinate = [character(len=1) :: 'y', 'y', 'x', 'y', 'y']
+      lower = setup%design%lower
+      upper = setup%design%upper
+    end if
+    call r%get_parts('design_point', point_real, in_range(0.0_wp, real(n_points - 1, wp), '1'), &
+                     'n_design = '//format_integer(n_design), status)
+    call r%get_parts('design_coordinate', coordinate, 'n_design = '//format_integer(n_design), status, &
+                     choices=[character(len=1) :: 'x', 'y', 'z'])
+    call r%get_parts('lower', lower, in_range(-1e5_wp, 1e5_wp, 'm'), 'n_design = '//format_integer(n_design), status)
+    call r%get_parts('upper', upper, in_range(-1e5_wp, 1e5_wp, 'm'), 'n_design = '//format_integer(n_design), status)
+    if (.not. status%ok()) return
+    if (r%has('n_design') .and. .not. (r%has('design_point') .and. r%has('design_coordinate') .and. &
+                                       r%has('lower') .and. r%has('upper'))) then
+      call r%invalid('n_design', format_integer(n_design), 'give design_point, design_coordinate, lower and '// &
+                     'upper for every design variable', status)
+      return
+    end if
+    setup%design%point = nint(point_real) + 1
+    setup%design%coordinate = [(index('xyz', coordinate(i)), i=1, n_design)]
+    setup%design%lower = lower
+    setup%design%upper = upper
+    do i = 1, n_design
+      if (abs(point_real(i) - nint(point_real(i))) > 0) then
+        call r%invalid('design_point('//format_integer(i)//')', format_real(point_real(i)), &
+                       'must be a whole point number, 0 for the first point', status)
+        return
+      end if
+      if (.not. lower(i) < upper(i)) then
+        call r%invalid('upper('//format_integer(i)//')', format_real(upper(i)), 'must exceed lower('// &
+                       format_integer(i)//') = '//format_real(lower(i)), status)
+        return
+      end if
+      associate (x => setup%design%points(setup%design%coordinate(i), setup%design%point(i)))
+        if (x < lower(i) .or. x > upper(i)) then
+          call r%invalid('lower('//format_integer(i)//'), upper('//format_integer(i)//')', &
+                         format_real(lower(i))//', '//format_real(upper(i)), 'must hold the start value '// &
+                         format_real(x)//' m of point '//format_integer(setup%design%point(i) - 1)//' '// &
+                         coordinate(i), status)
+          return
+        end if
+      end associate
+      if (any(setup%design%point(:i - 1) == setup%design%point(i) .and. &
+              setup%design%coordinate(:i - 1) == setup%design%coordinate(i))) then
+        call r%invalid('design_point('//format_integer(i)//')', format_real(point_real(i)), &
+                       'this coordinate is already a design variable', status)
+        return
+      end if
+    end do
+
+    call r%get('radius', setup%design%radius, above(0.0_wp, 100.0_wp, 'm'), status)
+    call r%get('degree', setup%design%degree, 3, 5, status)
+    call r%get('smoothing', setup%design%smoothing, in_range(0.0_wp, 1e6_wp, 'm^2'), status)
+    call r%get('horizon', setup%design%horizon, in_range(-1e6_wp, 1e6_wp, '1'), status)
+    if (status%ok() .and. .not. norm2(setup%design%horizon) > 0) &
+      call r%invalid('horizon', '0', 'must be a non-zero vector', status)
+    if (status%ok() .and. setup%design%degree + 1 > n_points) &
+      call r%invalid('degree', format_integer(setup%design%degree), 'needs more than degree points', status)
+
+    ! the rides
+    call r%get_list('start_angles_deg', angles, max_rides, in_range(-89.0_wp, 89.0_wp, 'deg'), status)
+    if (status%ok() .and. r%has('start_angles_deg')) setup%start_angles = angles*pi/180
+    if (status%ok() .and. 2*size(setup%start_angles) < n_design) &
+      call r%invalid('start_angles_deg', format_integer(size(setup%start_angles))//' rides', 'give at least '// &
+                     format_integer((n_design + 1)/2)//' rides for '//format_integer(n_design)// &
+                     ' design variables (each ride gives two residuals: its acceleration and its lever arm)', status)
+    call r%get('start_speed', setup%start_speed, in_range(0.0_wp, 100.0_wp, 'm/s'), status)
+    call r%get('start_wall_angle_deg', start_wall_angle_deg, in_range(-170.0_wp, 170.0_wp, 'deg'), status)
+    setup%start_v = pi/2 + start_wall_angle_deg*pi/180
+    call r%get('body_mass', setup%body%mass, above(0.0_wp, 1e4_wp, 'kg'), status)
+    call r%get('body_length', setup%body%length, above(0.0_wp, 100.0_wp, 'm'), status)
+    call r%get('body_width', setup%body%width, above(0.0_wp, 100.0_wp, 'm'), status)
+    call r%get('body_height', setup%body%height, above(0.0_wp, 100.0_wp, 'm'), status)
+    call r%get('com_height', setup%body%com_height, in_range(0.0_wp, 100.0_wp, 'm'), status)
+    call r%get('acceleration', acceleration, status, choices=[character(len=9) :: 'kinematic', 'felt'])
+    setup%ride%acceleration = merge(ACCELERATION_FELT, ACCELERATION_KINEMATIC, acceleration == 'felt')
+
+    ! the constraint and the optimiser
+    call r%get('constraint', constraint, status, choices=[character(len=7) :: 'penalty', 'exact', 'none'])
+    select case (trim(constraint))
+    case ('exact'); setup%constraint = CONSTRAINT_EXACT
+    case ('none'); setup%constraint = CONSTRAINT_NONE
+    case default; setup%constraint = CONSTRAINT_PENALTY
+    end select
+    call r%get('lever_limit', setup%lever_limit, above(0.0_wp, 10.0_wp, 'm'), status)
+    call r%get('penalty_factor', setup%penalty_factor, above(0.0_wp, 1e12_wp, 'm s-2 per m'), status)
+    call r%get('lever_tolerance', setup%lever_tolerance, above(0.0_wp, 1.0_wp, 'm'), status)
+    call r%get('threads', setup%threads, 1, 1024, status)
+    call r%get('ftol', setup%solver%ftol, in_range(1e-15_wp, 1.0_wp, '1'), status)
+    call r%get('xtol', setup%solver%xtol, in_range(1e-15_wp, 1.0_wp, '1'), status)
+    setup%rho = 20*setup%penalty_factor
+  end subroutine read_optimization_config
+end module io_optimization_config

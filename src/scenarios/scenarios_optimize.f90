@@ -1,0 +1,365 @@
+!> Scenario `optimize`: the geometry optimisation of a tube slide (thesis
+!> 4.7): the design points, five (or any number of) rides of a rigid body on
+!> a Darboux frame, the cost (4.49) and the tipping lever-arm limit
+!> (docs/design.md). Writes /optimize with the start and optimised
+!> designs, every ride's figures and samples before and after.
+module scenarios_optimize
+  use, intrinsic :: iso_fortran_env, only: output_unit
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
+  use base_text, only: format_integer, format_short
+  use base_log, only: log_info
+  use design_cuboid_ride, only: cuboid_ride_t
+  use design_geometry_optimization, only: optimization_setup_t, optimization_result_t, design_evaluation_t, &
+    evaluate_design, optimize_slide, design_points, build_design_slide
+  use geometry_tube, only: tube_surface_t
+  use geometry_curve, only: curve_point_t
+  use io_input, only: input_text_t, check_known_groups, group_present
+  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_surface_grid, only: write_surface_grid, evenly_spaced
+  use io_xdmf, only: xdmf_t, xdmf_path
+  use io_run_config, only: run_config_t
+  use io_optimization_config, only: read_optimization_config
+  use io_hdf5, only: result_file_t, run_outcome
+  use io_summary, only: summary_t, degrees
+  implicit none (type, external)
+  private
+  public :: run_optimize, optimize_groups
+
+  character(len=*), parameter :: optimize_groups(3) = [character(len=8) :: 'run', 'solver', 'optimize']
+  integer, parameter :: grid_n_u = 300, grid_n_v = 48   ! the written surface grid
+
+contains
+
+  subroutine run_optimize(input, run, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(status_t), intent(inout) :: status
+    type(optimization_setup_t) :: setup
+    type(optimization_result_t) :: result
+    type(design_evaluation_t) :: before, after
+    type(solver_config_t) :: solver
+    type(result_file_t) :: file
+    type(status_t) :: run_status, write_status
+    real(wp) :: cpu0, cpu1
+    logical :: complete
+    character(len=:), allocatable :: message
+
+    call check_known_groups(input, optimize_groups, status)
+    if (status%ok()) call read_solver_config(input, solver, status)
+    if (status%ok()) call read_optimization_config(input, setup, status)
+    if (.not. status%ok()) return
+    ! &solver: the rides' integration, sampling of the maxima and time bound
+    if (group_present(input, 'solver')) then
+      setup%ride%ode = solver%options
+      setup%ride%output_step = solver%output_step
+      if (solver%duration_given) setup%ride%t_end = solver%duration
+    end if
+    ! the start design must be buildable and rideable: bad input otherwise
+    call evaluate_design(setup, start_x(setup), before, status, keep_series=.true.)
+    if (.not. status%ok()) then
+      call prefix_status(status, input%name//': &optimize: the start design')
+      status%code = STATUS_INVALID_INPUT
+      return
+    end if
+    if (run%check_only) return
+    call file%create(trim(run%output), status)
+    if (.not. status%ok()) return
+    call log_info('optimize: '//format_integer(size(setup%design%point))//' design variables, '// &
+                  format_integer(size(setup%start_angles))//' rides per design')
+    call cpu_time(cpu0)
+    call optimize_slide(setup, result, run_status)
+    call cpu_time(cpu1)
+    if (run_status%ok()) call evaluate_design(setup, result%x, after, run_status, keep_series=.true.)
+    call write_results(file, input, run, setup, result, before, after, run_status%ok(), cpu1 - cpu0, write_status)
+    complete = run_status%ok() .and. write_status%ok()
+    message = 'ok'
+    if (.not. write_status%ok()) message = write_status%text()
+    if (.not. run_status%ok()) message = run_status%text()
+    call file%finish(complete, message, write_status)
+    complete = complete .and. write_status%ok()
+    if (write_status%ok()) call write_xdmf(file, size(setup%start_angles), run_status%ok(), write_status)
+    if (run_status%ok()) call report(setup, result, cpu1 - cpu0, file%final_path(), run, complete, message, &
+                                     write_status)
+    if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
+  end subroutine run_optimize
+
+  function start_x(setup) result(x)
+    type(optimization_setup_t), intent(in) :: setup
+    real(wp), allocatable :: x(:)
+    integer :: k
+    allocate (x(size(setup%design%point)))
+    do k = 1, size(x)
+      x(k) = setup%design%points(setup%design%coordinate(k), setup%design%point(k))
+    end do
+  end function start_x
+
+  subroutine write_results(file, input, run, setup, result, before, after, optimized, cpu, status)
+    type(result_file_t), intent(inout) :: file
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(optimization_setup_t), intent(in) :: setup
+    type(optimization_result_t), intent(in) :: result
+    type(design_evaluation_t), intent(in) :: before, after
+    logical, intent(in) :: optimized
+    real(wp), intent(in) :: cpu
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: g = '/optimize/'
+    integer, parameter :: n_centerline = 400
+    integer :: k
+    call file%write_provenance('optimize', trim(run%title), input%name, input%text(), status)
+    call file%write_matrix(g//'points_start', setup%design%points, 'm', &
+                           'centerline points of the start design (x, y, z per column)', status)
+    call file%write_vector(g//'x_start', start_x(setup), 'm', 'design variables at the start', status)
+    call file%write_vector(g//'lower', setup%design%lower, 'm', 'lower bounds of the design variables', status)
+    call file%write_vector(g//'upper', setup%design%upper, 'm', 'upper bounds of the design variables', status)
+    call file%write_integers(g//'design_point', setup%design%point - 1, '1', &
+                             'the point of each design variable (0 = the first point)', status)
+    call file%write_integers(g//'design_coordinate', setup%design%coordinate, '1', &
+                             'the coordinate of each design variable (1 x, 2 y, 3 z)', status)
+    call file%write_scalar(g//'lever_limit', setup%lever_limit, 'm', 'largest allowed tipping lever arm', status)
+    call write_centerline(file, g//'centerline_start', setup, start_x(setup), status)
+    call write_evaluation(file, g//'before/', before, status)
+    if (optimized) then
+      call write_centerline(file, g//'centerline', setup, result%x, status)
+      call file%write_matrix(g//'points', design_points(setup%design, result%x), 'm', &
+                             'centerline points of the optimised design', status)
+      call file%write_vector(g//'x', result%x, 'm', 'design variables at the optimum', status)
+      call file%write_scalar(g//'cost_start', result%cost_before, 'm^2/s^4', &
+                             'the fit''s cost (4.49 with the constraint terms) at the start', status)
+      call file%write_scalar(g//'cost', result%cost_after, 'm^2/s^4', 'the fit''s cost at the optimum', status)
+      call file%write_count(g//'evaluations', result%evaluations, '1', 'designs evaluated (each all rides)', status)
+      call file%write_count(g//'rejected', result%rejected, '1', &
+                            'designs that could not be built or ridden (rejected steps)', status)
+      call file%write_count(g//'outer_iterations', result%outer, '1', &
+                            'augmented Lagrangian updates (constraint = exact), else 1', status)
+      call file%write_scalar(g//'cpu_time', cpu, 's', 'process CPU time of the optimisation', status)
+      call write_evaluation(file, g//'after/', after, status)
+    end if
+    ! the slide's surface (the optimum's, else the start's) for ParaView
+    if (optimized) then
+      call write_grid(file, setup, result%x, status)
+    else
+      call write_grid(file, setup, start_x(setup), status)
+    end if
+    ! dimension scales: each ride's time, the rides' start angles, the design
+    ! variables, the points and the centerline samples
+    call scale_rides(g//'before/', size(before%rides))
+    if (optimized) call scale_rides(g//'after/', size(after%rides))
+    call file%write_vector(g//'point_number', [(real(k, wp), k=0, size(setup%design%points, 2) - 1)], '1', &
+                           'number of each centerline point (0 = the first)', status)
+    call file%write_vector(g//'centerline_fraction', [(real(k, wp)/(n_centerline - 1), k=0, n_centerline - 1)], &
+                           '1', 'fraction of the centerline''s parameter range of each centerline sample', status)
+    call file%make_scale(g//'x_start', status)
+    call file%make_scale(g//'point_number', status)
+    call file%make_scale(g//'centerline_fraction', status)
+    call file%attach_scale(g//'x_start', g, status)
+    call file%attach_scale(g//'point_number', g, status)
+    call file%attach_scale(g//'centerline_fraction', g, status)
+
+  contains
+
+    subroutine scale_rides(group, n)
+      character(len=*), intent(in) :: group
+      integer, intent(in) :: n
+      integer :: i
+      do i = 1, n
+        call file%make_scale(group//'ride_'//format_integer(i)//'/time', status)
+        call file%attach_scale(group//'ride_'//format_integer(i)//'/time', group//'ride_'//format_integer(i), status)
+      end do
+      call file%make_scale(group//'start_angle', status)
+      call file%attach_scale(group//'start_angle', group, status)
+    end subroutine scale_rides
+  end subroutine write_results
+
+  subroutine write_grid(file, setup, x, status)
+    type(result_file_t), intent(inout) :: file
+    type(optimization_setup_t), intent(in) :: setup
+    real(wp), intent(in) :: x(:)
+    type(status_t), intent(inout) :: status
+    type(tube_surface_t) :: slide
+    type(status_t) :: built
+    real(wp) :: u_min, u_max
+    call build_design_slide(setup%design, x, slide, built)
+    if (.not. built%ok()) return
+    call slide%centerline%domain(u_min, u_max)
+    call write_surface_grid(file, slide, evenly_spaced(u_min, u_max, grid_n_u), &
+                            evenly_spaced(0.0_wp, 2*pi, grid_n_v), status)
+  end subroutine write_grid
+
+  !> The XDMF file: the slide and every ride's path, before and after.
+  subroutine write_xdmf(file, n, optimized, status)
+    type(result_file_t), intent(in) :: file
+    integer, intent(in) :: n
+    logical, intent(in) :: optimized
+    type(status_t), intent(inout) :: status
+    type(xdmf_t) :: xdmf
+    integer :: k
+    character(len=:), allocatable :: r
+    call xdmf%start(file%final_path())
+    call xdmf%surface(file, 'slide surface', '/geometry/surface')
+    do k = 1, n
+      r = '/optimize/before/ride_'//format_integer(k)
+      call xdmf%polyline(file, 'start design, ride '//format_integer(k), r//'/position', r)
+      if (optimized) then
+        r = '/optimize/after/ride_'//format_integer(k)
+        call xdmf%polyline(file, 'optimum, ride '//format_integer(k), r//'/position', r)
+      end if
+    end do
+    call xdmf%write(xdmf_path(file%final_path()), status)
+  end subroutine write_xdmf
+
+  !> The start angles of the rides of an evaluation.
+  pure function setup_angles(e) result(a)
+    type(design_evaluation_t), intent(in) :: e
+    real(wp) :: a(size(e%rides))
+    a = e%rides%start_angle
+  end function setup_angles
+
+  !> The centerline of design x at 400 points, for plots.
+  subroutine write_centerline(file, name, setup, x, status)
+    type(result_file_t), intent(inout) :: file
+    character(len=*), intent(in) :: name
+    type(optimization_setup_t), intent(in) :: setup
+    real(wp), intent(in) :: x(:)
+    type(status_t), intent(inout) :: status
+    type(tube_surface_t) :: slide
+    type(curve_point_t) :: p
+    type(status_t) :: built
+    real(wp) :: c(3, 400), u_min, u_max
+    integer :: i
+    call build_design_slide(setup%design, x, slide, built)
+    if (.not. built%ok()) return
+    call slide%centerline%domain(u_min, u_max)
+    do i = 1, size(c, 2)
+      call slide%centerline%evaluate(u_min + (u_max - u_min)*(i - 1)/real(size(c, 2) - 1, wp), 0, p, built)
+      c(:, i) = p%d(:, 0)
+    end do
+    call file%write_matrix(name, c, 'm', 'the centerline (x, y, z per column)', status)
+  end subroutine write_centerline
+
+  !> Every ride's figures and samples of one design.
+  subroutine write_evaluation(file, g, e, status)
+    type(result_file_t), intent(inout) :: file
+    character(len=*), intent(in) :: g
+    type(design_evaluation_t), intent(in) :: e
+    type(status_t), intent(inout) :: status
+    integer :: k, n
+    character(len=:), allocatable :: r
+    call file%write_vector(g//'max_acceleration', e%rides%max_acceleration, 'm/s^2', &
+                           'largest acceleration of each ride (the kind of &optimize acceleration)', status)
+    call file%write_vector(g//'max_lever_arm', min(e%rides%max_lever_arm, 1e30_wp), 'm', &
+                           'largest tipping lever arm of each ride (1e30: the body lifts off)', status)
+    call file%write_vector(g//'max_tipping_excess', e%rides%max_tipping_excess, 'm', &
+                           'largest tipping excess of each ride (<= 0: the limit holds)', status)
+    call file%write_vector(g//'min_normal_force', e%rides%min_normal_force, 'N', &
+                           'smallest normal force of each ride (<= 0: lift-off)', status)
+    call file%write_vector(g//'duration', e%rides%duration, 's', 'time to the end of the slide', status)
+    call file%write_vector(g//'start_angle', setup_angles(e), 'rad', &
+                           'start direction of each ride to the centerline, + towards +v', status)
+    call file%write_scalar(g//'acceleration_cost', e%acceleration_cost, 'm^2/s^4', &
+                           '1/2 sum of the squared maxima (4.49 without the constraint)', status)
+    do k = 1, size(e%rides)
+      r = g//'ride_'//format_integer(k)//'/'
+      associate (s => e%rides(k)%series)
+        n = s%n
+        call file%write_vector(r//'time', s%time(:n), 's', 'time', status)
+        call file%write_vector(r//'u', s%u(:n), '1', 'centerline parameter of the Darboux frame', status)
+        call file%write_vector(r//'v', s%v(:n), 'rad', 'section angle of the Darboux frame (pi/2 bottom)', status)
+        call file%write_matrix(r//'position', s%position(:, :n), 'm', 'Darboux frame origin', status)
+        call file%write_vector(r//'acceleration', s%acceleration(:n), 'm/s^2', 'acceleration (&optimize kind)', &
+                               status)
+        call file%write_vector(r//'lever_arm', min(max(s%lever_arm(:n), -1e30_wp), 1e30_wp), 'm', &
+                               'tipping lever arm (1e30: not pressed)', status)
+        call file%write_vector(r//'normal_force', s%normal_force(:n), 'N', 'normal force F_r . z_D', status)
+        call file%write_vector(r//'speed', s%speed(:n), 'm/s', 'speed of the Darboux frame origin', status)
+      end associate
+    end do
+  end subroutine write_evaluation
+
+  subroutine report(setup, result, cpu, path, run, complete, message, status)
+    type(optimization_setup_t), intent(in) :: setup
+    type(optimization_result_t), intent(in) :: result
+    real(wp), intent(in) :: cpu
+    character(len=*), intent(in) :: path, message
+    type(run_config_t), intent(in) :: run
+    logical, intent(in) :: complete
+    type(status_t), intent(inout) :: status
+    type(summary_t) :: summary
+    real(wp), allocatable :: table(:, :)
+    integer :: k, n
+    n = size(setup%start_angles)
+    call summary%start('optimize', 'slidesim optimize: '//format_integer(size(result%x))//' design variables, '// &
+                       format_integer(n)//' rides')
+    call summary%add('cost_start', 'cost at the start', result%cost_before, 'm^2/s^4')
+    call summary%add('cost', 'cost at the optimum', result%cost_after, 'm^2/s^4')
+    call add_lever('max_lever_arm_start', 'largest lever arm, start', result%before%max_lever_arm)
+    call add_lever('max_lever_arm', 'largest lever arm, optimum', result%after%max_lever_arm)
+    call summary%add('lever_limit', 'lever-arm limit', setup%lever_limit, 'm')
+    call summary%add_count('evaluations', 'designs evaluated', result%evaluations, 'designs')
+    call summary%add('cpu_time', 'CPU time', cpu, 's')
+    allocate (table(5, size(result%x)))
+    do k = 1, size(result%x)
+      table(:, k) = [real(setup%design%point(k) - 1, wp), real(setup%design%coordinate(k), wp), &
+                     setup%design%points(setup%design%coordinate(k), setup%design%point(k)), result%x(k), &
+                     result%x(k) - setup%design%points(setup%design%coordinate(k), setup%design%point(k))]
+    end do
+    call summary%add_table('design', [character(len=10) :: 'point', 'coordinate', 'start', 'optimum', 'move'], &
+                           [character(len=2) :: '1', '1', 'm', 'm', 'm'], table)
+    call summary%add_line('  design variable      start (m)  optimum (m)   move (m)')
+    do k = 1, size(result%x)
+      call summary%add_line('    P'//format_integer(setup%design%point(k) - 1)//'.'// &
+        'xyz'(setup%design%coordinate(k):setup%design%coordinate(k))//repeat(' ', 12)// &
+        fixed(table(3, k))//fixed(table(4, k))//fixed(table(5, k)))
+    end do
+    deallocate (table)
+    allocate (table(5, n))
+    do k = 1, n
+      table(:, k) = [setup%start_angles(k)*degrees, result%before%rides(k)%max_acceleration, &
+                     result%after%rides(k)%max_acceleration, min(result%before%rides(k)%max_lever_arm, 1e30_wp), &
+                     min(result%after%rides(k)%max_lever_arm, 1e30_wp)]
+    end do
+    call summary%add_table('rides', [character(len=17) :: 'start_angle', 'max_a_start', 'max_a_optimum', &
+                           'lever_arm_start', 'lever_arm_optimum'], &
+                           [character(len=6) :: 'deg', 'm/s^2', 'm/s^2', 'm', 'm'], table)
+    call summary%add_line('  ride at (deg)   max |a| start, optimum (m/s^2)   lever arm start, optimum (m)')
+    do k = 1, n
+      call summary%add_line('    '//fixed(table(1, k))//'      '//fixed(table(2, k))//fixed(table(3, k))// &
+        '        '//lever_text(table(4, k))//lever_text(table(5, k)))
+    end do
+    call summary%print(output_unit)
+    if (allocated(run%summary_json)) then
+      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
+    end if
+
+  contains
+
+    subroutine add_lever(key, label, value)
+      character(len=*), intent(in) :: key, label
+      real(wp), intent(in) :: value
+      if (value >= 1e30_wp) then
+        call summary%add_text(key, label, 'lift-off (a body does not stay pressed on the slide)')
+      else
+        call summary%add(key, label, value, 'm')
+      end if
+    end subroutine add_lever
+  end subroutine report
+
+  !> A number in a column of 12.
+  pure function fixed(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=12) :: text
+    write (text, '(f12.4)') x
+  end function fixed
+
+  pure function lever_text(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=12) :: text
+    if (x >= 1e30_wp) then
+      text = '    lift-off'
+    else
+      text = fixed(x)
+    end if
+  end function lever_text
+end module scenarios_optimize
