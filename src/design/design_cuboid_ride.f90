@@ -244,11 +244,16 @@ contains
     real(wp), intent(in) :: t, y(:)
     integer, intent(in) :: kind
     type(status_t), intent(inout) :: status
-    real(wp) :: residual, a, lever, pressing, rho(3), ac(3), f(3), m(3), theta(3, 3), rot(3, 3)
+    real(wp) :: qdd(2), a, lever, pressing, rho(3), ac(3), f(3), m(3), theta(3, 3), rot(3, 3)
     associate (unused => kind)
     end associate
-    call self%mechanism%evaluate(t, y(1:2), y(3:4), residual, status)
+    ! the frames' motion at (t, y): q'' from the dynamics, then the velocity
+    ! and acceleration passes (the mechanism's evaluate would add the inverse
+    ! dynamics and the normal forces, which the cuboid does not need)
+    call self%mechanism%dynamics(t, y(1:2), y(3:4), qdd, status)
     if (.not. status%ok()) return
+    call self%mechanism%set_velocities(y(3:4))
+    call self%mechanism%set_accelerations(qdd)
     associate (fr => self%mechanism%frames(self%frame), b => self%body)
       rot = fr%rot
       if (self%kind == ACCELERATION_FELT) then
