@@ -229,6 +229,8 @@ contains
         r(n + i) = sqrt(2*problem%setup%penalty_factor*max(0.0_wp, g))
       case (CONSTRAINT_EXACT)
         r(n + i) = sqrt(problem%setup%rho)*max(0.0_wp, g + problem%lambda(i)/problem%setup%rho)
+      case default   ! CONSTRAINT_NONE: the accelerations only
+        r(n + i) = 0
       end select
     end do
   end subroutine residuals_of
