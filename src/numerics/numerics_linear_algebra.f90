@@ -9,6 +9,14 @@
 !>             or column, so a caller can name what it means (a coordinate, ...).
 !> Arrays are `contiguous` assumed-shape (no copies, no allocation): the LU and
 !> Cholesky routines run inside right-hand sides. Workspace is automatic (stack).
+!>
+!> Small systems (n <= small_order) are factored and solved here, without
+!> LAPACK: for the 3 x 3 to 9 x 9 systems of a mechanism's right-hand side
+!> LAPACK's blocking, argument checks and BLAS calls cost several times the
+!> arithmetic (14 % of a ride's instructions). The same algorithms (LU with
+!> partial pivoting on the first largest |a_ik|, row interchanges in ipiv as
+!> dgetrf; Cholesky L L^T as dpotrf 'L'), the same factor layout (dgecon
+!> reads these factors) and the same failure indices.
 module numerics_linear_algebra
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, STATUS_OK, STATUS_DOMAIN, STATUS_INTERNAL
@@ -17,6 +25,9 @@ module numerics_linear_algebra
   public :: lu_factor, lu_solve, lu_reciprocal_condition, one_norm
   public :: cholesky_factor, cholesky_solve
   public :: qr_factor, triangular_inverse, normal_matrix_inverse
+  public :: small_order
+
+  integer, parameter :: small_order = 12   !< up to this order LU and Cholesky run without LAPACK
 
   !> Solve A x = b (or A^T x = b) with the LU factors of lu_factor; b is
   !> overwritten by x. One right-hand side (vector) or several (columns).
@@ -122,9 +133,111 @@ contains
       if (present(failed_index)) failed_index = 0
       return
     end if
+    if (size(a, 1) <= small_order) then
+      call small_lu_factor(a, ipiv, info)
+      call translate_info('lu_factor', info, 'the matrix is singular, a zero pivot', status, failed_index)
+      return
+    end if
     call dgetrf(size(a, 1), size(a, 2), a, size(a, 1), ipiv, info)
     call translate_info('dgetrf', info, 'the matrix is singular, a zero pivot', status, failed_index)
   end subroutine lu_factor
+
+  !> Unblocked LU with partial pivoting (dgetf2's algorithm): info = the first
+  !> zero pivot (its column is not eliminated), 0 if none.
+  pure subroutine small_lu_factor(a, ipiv, info)
+    real(wp), intent(inout), contiguous :: a(:, :)
+    integer, intent(out), contiguous :: ipiv(:)
+    integer, intent(out) :: info
+    real(wp) :: t, pivot
+    integer :: n, i, j, k, p
+    n = size(a, 1)
+    info = 0
+    do k = 1, n
+      p = k
+      do i = k + 1, n
+        if (abs(a(i, k)) > abs(a(p, k))) p = i
+      end do
+      ipiv(k) = p
+      if (a(p, k) == 0) then
+        if (info == 0) info = k
+        cycle
+      end if
+      if (p /= k) then
+        do j = 1, n
+          t = a(k, j)
+          a(k, j) = a(p, j)
+          a(p, j) = t
+        end do
+      end if
+      pivot = a(k, k)
+      do i = k + 1, n
+        a(i, k) = a(i, k)/pivot
+      end do
+      do j = k + 1, n
+        t = a(k, j)
+        if (t == 0) cycle
+        do i = k + 1, n
+          a(i, j) = a(i, j) - a(i, k)*t
+        end do
+      end do
+    end do
+  end subroutine small_lu_factor
+
+  !> Solves with the factors of small_lu_factor: P A = L U, so A x = b is
+  !> L U x = P b and A^T x = b is U^T L^T (P x) = b.
+  pure subroutine small_lu_solve(lu, ipiv, b, transpose)
+    real(wp), intent(in), contiguous :: lu(:, :)
+    integer, intent(in), contiguous :: ipiv(:)
+    real(wp), intent(inout), contiguous :: b(:)
+    logical, intent(in) :: transpose
+    real(wp) :: t
+    integer :: n, i, k
+    n = size(lu, 1)
+    if (.not. transpose) then
+      do k = 1, n
+        if (ipiv(k) /= k) then
+          t = b(k)
+          b(k) = b(ipiv(k))
+          b(ipiv(k)) = t
+        end if
+      end do
+      do k = 1, n   ! L y = P b (unit diagonal), column by column
+        t = b(k)
+        do i = k + 1, n
+          b(i) = b(i) - lu(i, k)*t
+        end do
+      end do
+      do k = n, 1, -1   ! U x = y
+        b(k) = b(k)/lu(k, k)
+        t = b(k)
+        do i = 1, k - 1
+          b(i) = b(i) - lu(i, k)*t
+        end do
+      end do
+    else
+      do k = 1, n   ! U^T z = b, row k of U^T is column k of U
+        t = b(k)
+        do i = 1, k - 1
+          t = t - lu(i, k)*b(i)
+        end do
+        b(k) = t/lu(k, k)
+      end do
+      do k = n, 1, -1   ! L^T w = z
+        t = b(k)
+        do i = k + 1, n
+          t = t - lu(i, k)*b(i)
+        end do
+        b(k) = t
+      end do
+      do k = n, 1, -1   ! x = P^T w
+        if (ipiv(k) /= k) then
+          t = b(k)
+          b(k) = b(ipiv(k))
+          b(ipiv(k)) = t
+        end if
+      end do
+    end if
+  end subroutine small_lu_solve
 
   subroutine lu_solve_vector(lu, ipiv, b, status, transpose)
     real(wp), intent(in), contiguous :: lu(:, :)
@@ -134,6 +247,10 @@ contains
     logical, intent(in), optional :: transpose
     integer :: info
     if (size(lu, 1) == 0) return
+    if (size(lu, 1) <= small_order) then
+      call small_lu_solve(lu, ipiv, b, trans_flag(transpose) == 'T')
+      return
+    end if
     call dgetrs(trans_flag(transpose), size(lu, 1), 1, lu, size(lu, 1), ipiv, b, size(b), info)
     call translate_info('dgetrs', info, '', status)
   end subroutine lu_solve_vector
@@ -144,8 +261,14 @@ contains
     real(wp), intent(inout), contiguous :: b(:, :)
     type(status_t), intent(inout) :: status
     logical, intent(in), optional :: transpose
-    integer :: info
+    integer :: info, j
     if (size(lu, 1) == 0 .or. size(b, 2) == 0) return
+    if (size(lu, 1) <= small_order) then
+      do j = 1, size(b, 2)
+        call small_lu_solve(lu, ipiv, b(:, j), trans_flag(transpose) == 'T')
+      end do
+      return
+    end if
     call dgetrs(trans_flag(transpose), size(lu, 1), size(b, 2), lu, size(lu, 1), ipiv, b, &
                 size(b, 1), info)
     call translate_info('dgetrs', info, '', status)
@@ -201,9 +324,69 @@ contains
       if (present(failed_index)) failed_index = 0
       return
     end if
+    if (size(a, 1) <= small_order) then
+      call small_cholesky_factor(a, info)
+      call translate_info('cholesky_factor', info, 'the matrix is not positive definite', status, failed_index)
+      return
+    end if
     call dpotrf('L', size(a, 1), a, size(a, 1), info)
     call translate_info('dpotrf', info, 'the matrix is not positive definite', status, failed_index)
   end subroutine cholesky_factor
+
+  !> L L^T from the lower triangle (dpotf2's algorithm); info = the first
+  !> column whose pivot is not positive (or NaN), 0 if none.
+  pure subroutine small_cholesky_factor(a, info)
+    real(wp), intent(inout), contiguous :: a(:, :)
+    integer, intent(out) :: info
+    real(wp) :: d
+    integer :: n, i, j, k
+    n = size(a, 1)
+    info = 0
+    do j = 1, n
+      d = a(j, j)
+      do k = 1, j - 1
+        d = d - a(j, k)**2
+      end do
+      if (.not. d > 0) then
+        a(j, j) = d
+        info = j
+        return
+      end if
+      d = sqrt(d)
+      a(j, j) = d
+      do k = 1, j - 1
+        do i = j + 1, n
+          a(i, j) = a(i, j) - a(i, k)*a(j, k)
+        end do
+      end do
+      do i = j + 1, n
+        a(i, j) = a(i, j)/d
+      end do
+    end do
+  end subroutine small_cholesky_factor
+
+  !> Solves L L^T x = b with the factor of small_cholesky_factor.
+  pure subroutine small_cholesky_solve(l, b)
+    real(wp), intent(in), contiguous :: l(:, :)
+    real(wp), intent(inout), contiguous :: b(:)
+    real(wp) :: t
+    integer :: n, i, k
+    n = size(l, 1)
+    do k = 1, n   ! L y = b
+      b(k) = b(k)/l(k, k)
+      t = b(k)
+      do i = k + 1, n
+        b(i) = b(i) - l(i, k)*t
+      end do
+    end do
+    do k = n, 1, -1   ! L^T x = y
+      t = b(k)
+      do i = k + 1, n
+        t = t - l(i, k)*b(i)
+      end do
+      b(k) = t/l(k, k)
+    end do
+  end subroutine small_cholesky_solve
 
   subroutine cholesky_solve_vector(l, b, status)
     real(wp), intent(in), contiguous :: l(:, :)
@@ -211,6 +394,10 @@ contains
     type(status_t), intent(inout) :: status
     integer :: info
     if (size(l, 1) == 0) return
+    if (size(l, 1) <= small_order) then
+      call small_cholesky_solve(l, b)
+      return
+    end if
     call dpotrs('L', size(l, 1), 1, l, size(l, 1), b, size(b), info)
     call translate_info('dpotrs', info, '', status)
   end subroutine cholesky_solve_vector
@@ -219,8 +406,14 @@ contains
     real(wp), intent(in), contiguous :: l(:, :)
     real(wp), intent(inout), contiguous :: b(:, :)
     type(status_t), intent(inout) :: status
-    integer :: info
+    integer :: info, j
     if (size(l, 1) == 0 .or. size(b, 2) == 0) return
+    if (size(l, 1) <= small_order) then
+      do j = 1, size(b, 2)
+        call small_cholesky_solve(l, b(:, j))
+      end do
+      return
+    end if
     call dpotrs('L', size(l, 1), size(b, 2), l, size(l, 1), b, size(b, 1), info)
     call translate_info('dpotrs', info, '', status)
   end subroutine cholesky_solve_matrix

@@ -1,10 +1,11 @@
 !> numerics_linear_algebra: LU, Cholesky, QR and the normal-matrix inverse against
-!> matrices with known answers, and the translation of LAPACK's info.
+!> matrices with known answers, and the translation of LAPACK's info; the small
+!> systems' own LU and Cholesky against LAPACK's (same pivots, same factors).
 program test_linear_algebra
   use base_kinds, only: wp
   use base_status, only: status_t, STATUS_DOMAIN
   use numerics_linear_algebra, only: lu_factor, lu_solve, lu_reciprocal_condition, one_norm, &
-    cholesky_factor, cholesky_solve, normal_matrix_inverse, triangular_inverse
+    cholesky_factor, cholesky_solve, normal_matrix_inverse, triangular_inverse, small_order
   use testing, only: check, check_close, check_close_array, finish_tests
   implicit none (type, external)
 
@@ -16,6 +17,7 @@ program test_linear_algebra
   call condition_estimate()
   call cholesky_systems()
   call normal_inverse()
+  call small_against_lapack()
   call finish_tests('test_linear_algebra')
 
 contains
@@ -60,7 +62,7 @@ contains
     call lu_factor(a, ipiv, status, failed)
     call check(status%code == STATUS_DOMAIN, 'singular matrix: STATUS_DOMAIN')
     call check(failed == 3, 'singular matrix: the zero pivot is the third')
-    call check(index(status%text(), 'dgetrf') > 0, 'message names the routine: '//status%text())
+    call check(index(status%text(), 'lu_factor') > 0, 'message names the routine: '//status%text())
   end subroutine lu_singular
 
   subroutine condition_estimate()
@@ -123,4 +125,78 @@ contains
     call triangular_inverse(r, status, failed)
     call check(status%code == STATUS_DOMAIN .and. failed == 2, 'singular triangle: zero diagonal at 2')
   end subroutine normal_inverse
+
+  !> Orders 1 to small_order + 2 (both sides of the switch to LAPACK): the
+  !> factors of lu_factor and cholesky_factor equal dgetrf's and dpotrf's
+  !> (same pivots; entries to 1e-13 relative: the same arithmetic in another
+  !> order), and the solves (A x = b, A^T x = b, several columns) recover x.
+  subroutine small_against_lapack()
+    interface
+      subroutine dgetrf(m, n, a, lda, ipiv, info)
+        import :: wp
+        integer, intent(in) :: m, n, lda
+        real(wp), intent(inout) :: a(lda, *)
+        integer, intent(out) :: ipiv(*), info
+      end subroutine dgetrf
+      subroutine dpotrf(uplo, n, a, lda, info)
+        import :: wp
+        character, intent(in) :: uplo
+        integer, intent(in) :: n, lda
+        real(wp), intent(inout) :: a(lda, *)
+        integer, intent(out) :: info
+      end subroutine dpotrf
+    end interface
+    real(wp), allocatable :: a(:, :), lu(:, :), ref(:, :), x(:), b(:), bm(:, :), spd(:, :)
+    integer, allocatable :: ipiv(:), ipiv_ref(:)
+    type(status_t) :: status
+    integer :: n, i, j, info
+    character(len=8) :: order
+    do n = 1, small_order + 2
+      write (order, '(i0)') n
+      allocate (a(n, n), x(n), ipiv(n), ipiv_ref(n))
+      do j = 1, n   ! a scattered, well-conditioned matrix whose pivots move rows
+        do i = 1, n
+          a(i, j) = sin(1.7_wp*i + 0.9_wp*j*j) + merge(0.5_wp*n, 0.0_wp, i == n + 1 - j)
+        end do
+        x(j) = cos(0.3_wp*j) - 0.2_wp
+      end do
+      lu = a
+      ref = a
+      call lu_factor(lu, ipiv, status)
+      call dgetrf(n, n, ref, n, ipiv_ref, info)
+      call check(status%ok() .and. info == 0 .and. all(ipiv == ipiv_ref), 'LU of order '//trim(order)// &
+                 ': the pivots of dgetrf')
+      ! 1e-13: the same eliminations, summed in another order (condition below 1e2)
+      call check_close_array(reshape(lu, [n*n]), reshape(ref, [n*n]), 1e-13_wp, 1e-13_wp, &
+                             'LU of order '//trim(order)//': the factors of dgetrf')
+      b = matmul(a, x)
+      call lu_solve(lu, ipiv, b, status)
+      call check_close_array(b, x, tol, tol, 'LU of order '//trim(order)//': A x = b')
+      b = matmul(transpose(a), x)
+      call lu_solve(lu, ipiv, b, status, transpose=.true.)
+      call check_close_array(b, x, tol, tol, 'LU of order '//trim(order)//': A^T x = b')
+      bm = reshape([matmul(a, x), matmul(a, -3*x)], [n, 2])
+      call lu_solve(lu, ipiv, bm, status)
+      call check_close_array(bm(:, 2), -3*x, tol, tol, 'LU of order '//trim(order)//': two columns')
+      spd = matmul(transpose(a), a)
+      lu = spd
+      ref = spd
+      call cholesky_factor(lu, status)
+      call dpotrf('L', n, ref, n, info)
+      call check(status%ok() .and. info == 0, 'Cholesky of order '//trim(order)//': positive definite')
+      do j = 1, n
+        call check_close_array(lu(j:, j), ref(j:, j), 1e-13_wp, 1e-13_wp, 'Cholesky of order '//trim(order)// &
+                               ': the factor of dpotrf')
+      end do
+      b = matmul(spd, x)
+      call cholesky_solve(lu, b, status)
+      ! 1e-11: A^T A squares the condition number (below 1e2)
+      call check_close_array(b, x, 1e-11_wp, 1e-11_wp, 'Cholesky of order '//trim(order)//': A x = b')
+      bm = reshape([matmul(spd, x), matmul(spd, 2*x)], [n, 2])
+      call cholesky_solve(lu, bm, status)
+      call check_close_array(bm(:, 2), 2*x, 1e-11_wp, 1e-11_wp, 'Cholesky of order '//trim(order)//': two columns')
+      call check(status%ok(), 'solves of order '//trim(order)//': status ok')
+      deallocate (a, x, ipiv, ipiv_ref)
+    end do
+  end subroutine small_against_lapack
 end program test_linear_algebra
