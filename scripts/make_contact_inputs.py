@@ -7,18 +7,23 @@ z = (x^2 + y^2)/a^2 on [-w, w]^2, fitted by SURFIT with degree 5 and s = 0.05
   bowl_2   a^2 = 3,   w = 2     paraboloid 2 of table 3.2
   bowl_3   a^2 = 0.5, w = 0.5   paraboloid 3 of table 3.2
   tower<n>_<k>, k = 1..n: the tower of n nested bowls, a^2 and w geometric
-           from 3 and 2 (k = 1) to 0.5 and 0.5 (k = n)
+           from 3 and 2 (k = 1), by the same ratio per level for every n
+           (k = 5: 0.5 and 0.5, paraboloid 3's size)
 
 and the tower input inputs/contact/tower5.nml. Pure standard library; run
-from the repository root: scripts/make_contact_inputs.py
+from the repository root:
+
+  scripts/make_contact_inputs.py                      the shipped inputs
+  scripts/make_contact_inputs.py --tower N --folder D  a tower of N (>= 1) bowls:
+      D/tower<N>.nml and its bowls in D/paraboloids/ (bench/contact_bench.sh)
+  optional --duration T: its &solver duration (s, default 20)
 """
+import argparse
 import os
 
-FOLDER = "inputs/contact/paraboloids"
 
-
-def write_bowl(name, a2, w):
-    with open(os.path.join(FOLDER, name + ".csv"), "w") as f:
+def write_bowl(folder, name, a2, w):
+    with open(os.path.join(folder, name + ".csv"), "w") as f:
         f.write(f"# z = (x^2 + y^2)/{a2!r} on [-{w!r}, {w!r}]^2, 13 x 13 points "
                 "(scripts/make_contact_inputs.py)\nx, y, z\n")
         for j in range(13):
@@ -26,19 +31,26 @@ def write_bowl(name, a2, w):
                 x = -w + 2 * w * i / 12
                 y = -w + 2 * w * j / 12
                 f.write(f"{x!r}, {y!r}, {(x * x + y * y) / a2!r}\n")
-    with open(os.path.join(FOLDER, name + ".geo"), "w") as f:
+    with open(os.path.join(folder, name + ".geo"), "w") as f:
         f.write(f"! B-spline paraboloid z = (x^2 + y^2)/{a2!r} (scripts/make_contact_inputs.py)\n"
                 f"&bspline file = '{name}.csv', layout = 'scattered', degree = 5, smoothing = 0.05 /\n")
 
 
 def tower_sizes(n):
-    """a^2, half width, mass, centre height, inertia (diagonal) of bowl k = 1..n."""
+    """a^2, half width, mass, centre height, inertia (diagonal) of bowl k = 1..n.
+
+    The same ratios from one level to the next for every n (those of a tower of
+    five from paraboloid 2's size down to paraboloid 3's): a^2 shrinks by
+    (1/6)^(1/4), the half width and the mass by (1/4)^(1/4). A bowl's vertex is
+    then 1.57 times as curved as the bowl it rolls in; nearer ratios let the
+    contact reach a point of equal curvature (conformal contact, where rolling
+    is singular) within a few tens of degrees of relative tilt.
+    """
     sizes = []
     for k in range(n):
-        s = k / (n - 1)
-        a2 = 3 * (0.5 / 3) ** s
-        w = 2 * (0.5 / 2) ** s
-        mass = 2 * 0.25 ** s
+        a2 = 3 * (1 / 6) ** (k / 4)
+        w = 2 * (1 / 4) ** (k / 4)
+        mass = 2 * (1 / 4) ** (k / 4)
         rho = a2 / 2                      # radius of curvature at the vertex
         h = 0.4 * rho                     # centre of mass well below it: stable in the bowl below
         i_xy = mass * (0.3 * w) ** 2
@@ -46,8 +58,10 @@ def tower_sizes(n):
     return sizes
 
 
-def write_tower(n):
+def write_tower(n, folder="inputs/contact", duration=20.0):
     sizes = tower_sizes(n)
+    bowls = os.path.join(folder, "paraboloids")
+    os.makedirs(bowls, exist_ok=True)
     lines = [f"! A tower of {n} B-spline paraboloids (thesis A.6; docs/contact.md), each",
              "! vertex down in the bowl of the one below, the lowest on the table;",
              "! rolling at every contact; written by scripts/make_contact_inputs.py.",
@@ -58,35 +72,49 @@ def write_tower(n):
              "/",
              "&solver",
              "  method = 'adams', rtol = 1e-11, atol = 1e-10   ! P1",
-             "  duration = 20.0, output_step = 5e-3",
+             f"  duration = {duration!r}, output_step = 5e-3",
              "/",
              "&contact_model gravity = 0.0, 0.0, -9.81 /",
              "&shape name = 'table', kind = 'plane' /"]
     for k, (a2, w, *_rest) in enumerate(sizes, start=1):
-        write_bowl(f"tower{n}_{k}", a2, w)
+        write_bowl(bowls, f"tower{n}_{k}", a2, w)
         lines.append(f"&shape name = 'bowl{k}', kind = 'bspline', geometry_file = 'paraboloids/tower{n}_{k}.geo' /")
-    z = 0.0
+    x = z = 0.0
     for k, (a2, w, mass, h, inertia) in enumerate(sizes, start=1):
-        # at rest, each a little off the bottom of the bowl below and tilted
-        # the same way: the stack rocks and rolls about its stable equilibrium
+        # at rest, bowls 1..5 each 0.04 m further off the axis than the one
+        # below, the smaller ones above them on the axis of the bowl below, all
+        # tilted the same way: the stack rocks and rolls about its equilibrium
+        step = 0.04 if k <= 5 else 0.0
+        x += step
         lines += [f"&body name = 'bowl{k}', mass = {mass:.6g}, centre = 0, 0, {h:.6g}",
                   f"  inertia = {inertia[0]:.6g}, {inertia[1]:.6g}, {inertia[2]:.6g}",
-                  f"  position = {0.04 * k:.3g}, 0.0, {z:.3g}, angles_deg = 3, 1.5, 0 /"]
-        z += 0.1
+                  f"  position = {x:.4g}, 0.0, {z:.4g}, angles_deg = 3, 1.5, 0 /"]
+        z += 2.5 * step
     lines.append("&contact name = 'bowl1_on_table', body_1 = 'ground', shape_1 = 'table', side_1 = 1,")
     lines.append("  body_2 = 'bowl1', shape_2 = 'bowl1', side_2 = -1, rolling = .true. /")
     for k in range(2, n + 1):
         lines.append(f"&contact name = 'bowl{k}_in_bowl{k - 1}', body_1 = 'bowl{k - 1}', shape_1 = 'bowl{k - 1}', "
                      "side_1 = 1,")
         lines.append(f"  body_2 = 'bowl{k}', shape_2 = 'bowl{k}', side_2 = -1, rolling = .true. /")
-    with open(f"inputs/contact/tower{n}.nml", "w") as f:
+    with open(os.path.join(folder, f"tower{n}.nml"), "w") as f:
         f.write("\n".join(lines) + "\n")
 
 
 def main():
-    os.makedirs(FOLDER, exist_ok=True)
-    write_bowl("bowl_2", 3.0, 2.0)
-    write_bowl("bowl_3", 0.5, 0.5)
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--tower", type=int, help="write only a tower of this many bowls")
+    parser.add_argument("--folder", default="inputs/contact", help="where the tower goes")
+    parser.add_argument("--duration", type=float, default=20.0, help="its simulated time, s")
+    args = parser.parse_args()
+    if args.tower is not None:
+        if args.tower < 1:
+            parser.error(f"--tower {args.tower}: a tower needs at least 1 bowl")
+        write_tower(args.tower, args.folder, args.duration)
+        return
+    folder = "inputs/contact/paraboloids"
+    os.makedirs(folder, exist_ok=True)
+    write_bowl(folder, "bowl_2", 3.0, 2.0)
+    write_bowl(folder, "bowl_3", 0.5, 0.5)
     write_tower(5)
 
 

@@ -739,9 +739,15 @@ contains
   subroutine factor_rates(self, status)
     class(mechanism_t), intent(inout) :: self
     type(status_t), intent(inout) :: status
-    type(status_t) :: lapack
-    integer :: k, i, zero_pivot
     if (self%nd == 0 .or. .not. status%ok()) return
+    call fill_rates(self)
+    call factor_filled_rates(self, status)
+  end subroutine factor_rates
+
+  !> J_x into jx (rate constraints present), one velocity pass per column.
+  subroutine fill_rates(self)
+    class(mechanism_t), intent(inout) :: self
+    integer :: k, i
     do i = 1, self%f
       self%scalars(self%q(i))%qd = 0
     end do
@@ -765,6 +771,15 @@ contains
         self%jx(self%r + i, k) = self%scalars(self%rate_outputs(i))%qd
       end do
     end do
+  end subroutine fill_rates
+
+  !> LU of the filled J_x into jxlu (nothing without rate constraints).
+  subroutine factor_filled_rates(self, status)
+    class(mechanism_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
+    type(status_t) :: lapack
+    integer :: zero_pivot
+    if (self%nd == 0 .or. .not. status%ok()) return
     self%jxlu = self%jx
     call lu_factor(self%jxlu, self%ipiv_x, lapack, zero_pivot)
     if (.not. lapack%ok()) then
@@ -776,22 +791,29 @@ contains
                         describe_dependent(self, zero_pivot))
       end if
     end if
-  end subroutine factor_rates
+  end subroutine factor_filled_rates
 
   !> J_beta at the current positions, LU-factored into jlu.
   subroutine factor_closure(self, status)
     class(mechanism_t), intent(inout) :: self
     type(status_t), intent(inout) :: status
+    call closure_jacobian(self, self%jbeta)
+    call factor_jbeta(self, status)
+  end subroutine factor_closure
+
+  !> LU of jbeta into jlu.
+  subroutine factor_jbeta(self, status)
+    class(mechanism_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
     type(status_t) :: lapack
     integer :: zero_pivot
-    call closure_jacobian(self, self%jbeta)
     self%jlu = self%jbeta
     call lu_factor(self%jlu, self%ipiv, lapack, zero_pivot)
     if (.not. lapack%ok()) then
       call set_status(status, STATUS_NOT_CONVERGED, 'the closure Jacobian is singular: '// &
                       describe_dependent(self, zero_pivot)//' does not move the closure measurements')
     end if
-  end subroutine factor_closure
+  end subroutine factor_jbeta
 
   function describe_dependent(self, k) result(text)
     class(mechanism_t), intent(in) :: self
@@ -838,8 +860,9 @@ contains
     type(status_t), intent(inout) :: status
     type(nonlinear_result_t) :: result
     type(status_t) :: solve_status
-    integer :: k, it
-    logical :: converged, predicted
+    integer :: k, it, fresh
+    real(wp) :: size_res, last
+    logical :: converged, predicted, chord, polished
 
     predicted = self%r > 0 .and. self%converged
     if (predicted) call predict_dependents(self, q)
@@ -861,22 +884,43 @@ contains
       end do
     end if
     self%converged = .false.
-    ! Newton from the warm start, moved by the predictor
+    ! Newton from the warm start, moved by the predictor; after the predictor
+    ! first with J_beta of the last solution (still factored: each step costs
+    ! one position pass instead of r velocity passes), then, if that contracts
+    ! slowly, with J_beta at the iterate (at most 4 such steps)
     x = start
     if (predicted) x = start - self%work_r
     converged = .false.
-    do it = 1, 4
+    chord = predicted
+    polished = .false.
+    last = huge(1.0_wp)
+    fresh = 0
+    do it = 1, 10
       call self%residual(x, res, status)
       if (.not. status%ok()) then
         if (status%code == STATUS_DOMAIN .and. self%warm) return   ! see the module comment
         exit
       end if
-      if (maxval(abs(res)) <= 1e-3_wp*self%closure_tolerance) then
-        converged = .true.
-        exit
+      size_res = maxval(abs(res))
+      if (size_res <= 1e-3_wp*self%closure_tolerance) then
+        ! a chord step converges only linearly: one more, so that beta is as
+        ! exact as after a Newton step (a noisier right-hand side costs the
+        ! integrator more steps than the position pass)
+        converged = .not. chord .or. polished
+        if (converged) exit
+        polished = .true.
+        call lu_solve(self%jlu, self%ipiv, res, status)
+        x = x - res
+        cycle
       end if
-      call factor_closure(self, solve_status)
-      if (.not. solve_status%ok()) exit
+      if (chord .and. size_res > 0.1_wp*last) chord = .false.   ! contraction too slow: a fresh J_beta
+      if (.not. chord) then
+        if (fresh == 4) exit
+        fresh = fresh + 1
+        call factor_closure(self, solve_status)
+        if (.not. solve_status%ok()) exit
+      end if
+      last = size_res
       call lu_solve(self%jlu, self%ipiv, res, status)
       x = x - res
     end do
@@ -914,7 +958,15 @@ contains
       end if
     end if
     end associate
-    call factor_closure(self, status)
+    ! J_beta at the solution; with rate constraints it is the first r columns
+    ! of J_x, which are filled anyway
+    if (self%nd > 0) then
+      call fill_rates(self)
+      self%jbeta = self%jx(1:self%r, 1:self%r)
+      call factor_jbeta(self, status)
+    else
+      call factor_closure(self, status)
+    end if
     if (.not. status%ok()) then
       call prefix_status(status, 'closure')
       return
@@ -923,7 +975,7 @@ contains
     if (.not. status%ok()) return
     self%warm = .true.
     self%converged = .true.
-    call factor_rates(self, status)
+    call factor_filled_rates(self, status)
   end subroutine set_positions
 
   !> The tangent predictor of the warm start: the elements still hold the
