@@ -30,7 +30,7 @@ module scenarios_ride
   use scenarios_water, only: build_water, write_slide_grid
   implicit none (type, external)
   private
-  public :: run_ride_scenario, ride_groups
+  public :: run_ride_scenario, ride_groups, check_sphere_radii
 
   character(len=*), parameter :: ride_groups(12) = [character(len=14) :: 'run', 'solver', 'water_solver', &
     'surface', 'water', 'rider', geometry_groups]

@@ -1,0 +1,276 @@
+!> &sweep: which values vary from ride to ride and how they combine
+!> (docs/sweep.md, "Input"). Each swept variable is given as a list
+!> (`mass = 50, 70, 90`) or, for numbers, as a range (`mass_range = 50, 90,
+!> 5`: first, last, count, evenly spaced, both ends included); the
+!> variables are crossed (every combination, the first variable of
+!> swept_names varying slowest), except those named in `paired` (or all with
+!> combine = 'paired'), which vary together, element by element, as one
+!> axis. What is not swept keeps its &rider / &water value.
+module io_sweep_config
+  use base_kinds, only: wp
+  use base_text, only: format_integer
+  use base_status, only: status_t
+  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, in_range, above, format_real
+  use rider_body, only: SEX_MALE, SEX_FEMALE
+  use design_sweep, only: N_SWEPT, swept_names, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, V_HEADING, V_SPEED, &
+    V_FLOW_RATE, V_F1, V_F2, V_F3
+  implicit none (type, external)
+  private
+  public :: sweep_config_t, read_sweep_config, max_rides, max_values
+
+  !> most rides of one sweep, most values of one list
+  integer, parameter :: max_rides = 1000000, max_values = 10000
+
+  type :: real_list_t
+    real(wp), allocatable :: x(:)
+  end type real_list_t
+
+  type :: sweep_config_t
+    real(wp), allocatable :: values(:, :)        !< N_SWEPT x rides
+    logical :: swept(N_SWEPT) = .false.          !< given in &sweep
+    integer :: threads = 0                       !< 0: OpenMP's default (all cores)
+    real(wp) :: progress_seconds = 10            !< s between progress lines (0: none)
+    character(len=:), allocatable :: csv_output  !< the CSV summary ('' : the result file's name with .csv)
+  end type sweep_config_t
+
+contains
+
+  !> The rides of &sweep; `base` holds every swept variable's value when not
+  !> swept (from &rider and &water, heading in degrees, sex 1 or 2).
+  subroutine read_sweep_config(input, base, config, status)
+    type(input_text_t), intent(in) :: input
+    real(wp), intent(in) :: base(N_SWEPT)
+    type(sweep_config_t), intent(out) :: config
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    character(len=24) :: names(2*N_SWEPT + 4), paired(N_SWEPT), combine
+    character(len=1024) :: csv
+    type(bounds_t) :: bounds(N_SWEPT)
+    type(real_list_t) :: lists(N_SWEPT)
+    logical :: together(N_SWEPT), paired_given(N_SWEPT)
+    integer :: k, j, n_rides, count_together
+    real(wp) :: rides
+
+    bounds(V_SEX) = in_range(1.0_wp, 2.0_wp, '1')
+    bounds(V_MASS) = in_range(10.0_wp, 300.0_wp, 'kg')
+    bounds(V_HEIGHT) = in_range(0.5_wp, 2.5_wp, 'm')
+    bounds(V_MU) = in_range(0.0_wp, 2.0_wp, '1')
+    bounds(V_U0) = in_range(-1e6_wp, 1e6_wp, 'surface parameter')
+    bounds(V_V0) = in_range(-10.0_wp, 10.0_wp, 'rad')
+    bounds(V_HEADING) = in_range(-180.0_wp, 180.0_wp, 'deg')
+    bounds(V_SPEED) = above(0.0_wp, 50.0_wp, 'm/s')
+    bounds(V_FLOW_RATE) = above(0.0_wp, 1e3_wp, 'm^3/s')
+    bounds(V_F1) = in_range(0.0_wp, 1e6_wp, 'kg/m')
+    bounds(V_F2) = in_range(0.0_wp, 1e6_wp, 'kg')
+    bounds(V_F3) = in_range(0.0_wp, 1e6_wp, 'kg m')
+
+    ! every swept variable, a range of each but sex, and the settings
+    names(:N_SWEPT) = swept_names
+    j = N_SWEPT
+    do k = 1, N_SWEPT
+      if (k == V_SEX) cycle
+      j = j + 1
+      names(j) = trim(swept_names(k))//'_range'
+    end do
+    names(j + 1:) = [character(len=24) :: 'paired', 'combine', 'threads', 'progress_seconds', 'csv_output']
+    call open_group(input, 'sweep', names, r, status)
+    if (.not. status%ok()) return
+    if (.not. r%present) then
+      call r%invalid('(group)', '(missing)', 'a sweep needs &sweep with at least one swept variable ('// &
+                     list_names()//')', status)
+      return
+    end if
+
+    ! ---- every list or range
+    call read_sex(lists(V_SEX))
+    do k = 1, N_SWEPT
+      if (k /= V_SEX) call read_numbers(k, lists(k))
+      if (.not. status%ok()) return
+      config%swept(k) = allocated(lists(k)%x)
+      if (.not. config%swept(k)) lists(k)%x = [base(k)]
+    end do
+    if (.not. any(config%swept)) then
+      call r%invalid('(swept variables)', '(none given)', 'give at least one of '//list_names()// &
+                     ' (as a list, or as NAME_range = first, last, count)', status)
+      return
+    end if
+
+    ! ---- how they combine
+    combine = 'cross'
+    paired = ''
+    call r%get('combine', combine, status, choices=[character(len=6) :: 'cross', 'paired'])
+    call r%get_parts('paired', paired, 'at most '//format_integer(N_SWEPT)//' names', status, &
+                     choices=swept_names, given=paired_given)
+    call r%get('threads', config%threads, 0, 1024, status)
+    call r%get('progress_seconds', config%progress_seconds, in_range(0.0_wp, 1e6_wp, 's'), status)
+    csv = ''
+    call r%get('csv_output', csv, status)
+    if (.not. status%ok()) return
+    config%csv_output = trim(csv)
+    together = .false.
+    do k = 1, N_SWEPT
+      if (paired_given(k)) then
+        j = findloc(swept_names, trim(paired(k)), dim=1)
+        if (.not. config%swept(j)) then
+          call r%invalid('paired', r%written('paired'), trim(paired(k))//' is not swept: pair only variables '// &
+                         'given in &sweep', status)
+          return
+        end if
+        if (together(j)) then
+          call r%invalid('paired', r%written('paired'), trim(paired(k))//' is named twice', status)
+          return
+        end if
+        together(j) = .true.
+      end if
+    end do
+    if (combine == 'paired') then
+      if (any(paired_given)) then
+        call r%invalid('paired', r%written('paired'), 'combine = ''paired'' pairs every swept variable; '// &
+                       'name pairs only with combine = ''cross''', status)
+        return
+      end if
+      together = config%swept
+    end if
+    count_together = count(together)
+    if (count_together == 1) then
+      call r%invalid('paired', r%written('paired'), 'pairing needs at least two swept variables', status)
+      return
+    end if
+    do k = 1, N_SWEPT
+      if (.not. together(k)) cycle
+      j = findloc(together, .true., dim=1)
+      if (size(lists(k)%x) /= size(lists(j)%x)) then
+        call r%invalid(trim(swept_names(k)), r%written(trim(given_name(k))), 'paired with '// &
+                       trim(swept_names(j))//': it needs as many values ('//format_integer(size(lists(j)%x))// &
+                       '), it has '//format_integer(size(lists(k)%x)), status)
+        return
+      end if
+    end do
+
+    ! ---- the rides: one axis per crossed variable, one for the paired ones
+    rides = 1
+    do k = 1, N_SWEPT
+      if (together(k) .and. k /= findloc(together, .true., dim=1)) cycle
+      rides = rides*size(lists(k)%x)
+    end do
+    if (rides > max_rides) then
+      call r%invalid('(swept variables)', format_real(rides)//' rides', 'at most '//format_integer(max_rides)// &
+                     ' rides in one sweep; split it', status)
+      return
+    end if
+    n_rides = nint(rides)
+    allocate (config%values(N_SWEPT, n_rides))
+    call expand()
+
+  contains
+
+    !> The name the user wrote for variable k (its list or its range).
+    function given_name(k) result(name)
+      integer, intent(in) :: k
+      character(len=:), allocatable :: name
+      name = trim(swept_names(k))
+      if (k /= V_SEX .and. r%has(name//'_range')) name = name//'_range'
+    end function given_name
+
+    subroutine read_sex(list)
+      type(real_list_t), intent(out) :: list
+      character(len=8) :: words(max_values)
+      logical :: given(max_values)
+      integer :: n
+      words = ''
+      call r%get_parts('sex', words, 'at most '//format_integer(max_values)//' values', status, &
+                       choices=[character(len=6) :: 'male', 'female'], given=given)
+      if (.not. status%ok() .or. .not. any(given)) return
+      n = count(given)
+      if (any(given(n + 1:))) then
+        call r%invalid('sex', r%written('sex'), 'list the values without gaps, from the first', status)
+        return
+      end if
+      list%x = merge(real(SEX_MALE, wp), real(SEX_FEMALE, wp), words(:n) == 'male')
+    end subroutine read_sex
+
+    subroutine read_numbers(k, list)
+      integer, intent(in) :: k
+      type(real_list_t), intent(out) :: list
+      character(len=:), allocatable :: name
+      real(wp) :: range(3)
+      real(wp), allocatable :: x(:)
+      integer :: i, n
+      name = trim(swept_names(k))
+      if (r%has(name) .and. r%has(name//'_range')) then
+        call r%invalid(name//'_range', r%written(name//'_range'), 'give '//name//' either as a list or as a '// &
+                       'range, not both', status)
+        return
+      end if
+      if (r%has(name)) then
+        call r%get_list(name, x, max_values, bounds(k), status)
+        if (status%ok()) list%x = x
+        return
+      end if
+      if (.not. r%has(name//'_range')) return
+      range = 0
+      call r%get(name//'_range', range, in_range(-1e6_wp, 1e6_wp, 'first, last: '//bounds(k)%unit//'; count'), &
+                 status)
+      if (.not. status%ok()) return
+      if (.not. (range(3) >= 2 .and. range(3) <= max_values .and. range(3) == aint(range(3)))) then
+        call r%invalid(name//'_range', r%written(name//'_range'), 'first, last, count: the count must be a '// &
+                       'whole number in [2, '//format_integer(max_values)//']', status)
+        return
+      end if
+      do i = 1, 2
+        if (.not. bounds(k)%allows(range(i))) then
+          call r%invalid(name//'_range', r%written(name//'_range'), 'first and last must lie in '// &
+                         bounds(k)%text(), status)
+          return
+        end if
+      end do
+      n = nint(range(3))
+      ! both ends exactly as written; the others evenly between
+      list%x = [(range(1) + (range(2) - range(1))*real(i - 1, wp)/(n - 1), i=1, n)]
+      list%x(n) = range(2)
+    end subroutine read_numbers
+
+    !> Every combination, the first axis slowest; a paired axis takes the
+    !> place of its first variable.
+    subroutine expand()
+      integer :: axes(N_SWEPT), sizes(N_SWEPT), index(N_SWEPT), n_axes, a, i, first_together
+      first_together = findloc(together, .true., dim=1)
+      n_axes = 0
+      do k = 1, N_SWEPT
+        if (together(k) .and. k /= first_together) cycle
+        n_axes = n_axes + 1
+        axes(n_axes) = k
+        sizes(n_axes) = size(lists(k)%x)
+      end do
+      index = 1
+      do i = 1, n_rides
+        do a = 1, n_axes
+          k = axes(a)
+          if (together(k)) then
+            do j = 1, N_SWEPT
+              if (together(j)) config%values(j, i) = lists(j)%x(index(a))
+            end do
+          else
+            config%values(k, i) = lists(k)%x(index(a))
+          end if
+        end do
+        ! the next combination: the last axis fastest
+        do a = n_axes, 1, -1
+          index(a) = index(a) + 1
+          if (index(a) <= sizes(a)) exit
+          index(a) = 1
+        end do
+      end do
+    end subroutine expand
+  end subroutine read_sweep_config
+
+  pure function list_names() result(text)
+    character(len=:), allocatable :: text
+    integer :: k
+    text = ''
+    do k = 1, N_SWEPT
+      if (k > 1) text = text//', '
+      text = text//trim(swept_names(k))
+    end do
+  end function list_names
+end module io_sweep_config

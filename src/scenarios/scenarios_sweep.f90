@@ -1,0 +1,245 @@
+!> Scenario `sweep`: a population of rides (docs/sweep.md). The input is a
+!> ride input (&surface, &water, &rider, &solver, &water_solver) plus
+!> &sweep, which names the values that vary; every ride runs through the
+!> library (design_sweep) in OpenMP threads and, under an MPI launcher
+!> (`mpirun -n N slidesim sweep.nml`), across ranks, rank 0 gathering and
+!> writing. One result file (/sweep) and a CSV summary with a row per ride.
+!> A ride that fails is reported and the others run on: the sweep ends with
+!> exit status 0 when every ride was tried and the files were written.
+module scenarios_sweep
+  use base_kinds, only: wp, int64
+  use base_text, only: format_integer, format_short
+  use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
+  use base_log, only: log_info
+  use rider_body, only: SEX_MALE
+  use rider_ride, only: ride_options_t
+  use water_run, only: water_description_t
+  use design_sweep, only: sweep_description_t, sweep_result_t, run_sweep, rides_of_rank, water_groups, &
+    ride_description, N_SWEPT, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, V_HEADING, V_SPEED, V_FLOW_RATE, &
+    V_F1, V_F2, V_F3, F_FELT_MAGNITUDE_MAX, RIDE_COMPLETE, RIDE_STOPPED, RIDE_FAILED, ride_status_names
+  use design_sweep_ranks, only: start_ranks, gather_rides, finish_ranks
+  use io_input, only: input_text_t, check_known_groups, invalid, format_real
+  use io_run_config, only: run_config_t
+  use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
+  use io_rider_config, only: rider_config_t, read_rider_config
+  use io_sweep_config, only: sweep_config_t, read_sweep_config
+  use io_sweep_results, only: write_sweep_results, write_sweep_csv
+  use io_hdf5, only: result_file_t
+  use io_summary, only: summary_t
+  use water_run, only: new_streamline
+  use water_streamline, only: streamline_t
+  use scenarios_water, only: build_water
+  use scenarios_ride, only: ride_groups, check_sphere_radii
+  implicit none (type, external)
+  private
+  public :: run_sweep_scenario
+
+  !> numbers stored per output time of one ride (ride_series_t), for the memory bound
+  integer, parameter :: values_per_output = 120
+  real(wp), parameter :: safety_factor = 10   ! as the ride: the bound on a ride without &solver duration
+
+contains
+
+  subroutine run_sweep_scenario(input, run, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(status_t), intent(inout) :: status
+    type(solver_config_t) :: solver, defaults
+    type(rider_config_t) :: rider
+    type(sweep_config_t) :: config
+    type(sweep_description_t) :: sweep
+    type(sweep_result_t) :: result
+    type(ride_options_t) :: options
+    type(result_file_t) :: file
+    type(status_t) :: write_status
+    real(wp) :: base(N_SWEPT), wall
+    integer :: rank, ranks, threads
+    integer(int64) :: clock0, clock1, rate
+    logical :: started
+    character(len=:), allocatable :: csv_path, message
+
+    ! ---- everything checked before any work
+    call check_known_groups(input, [ride_groups, 'sweep         '], status)
+    defaults%options = options%ode
+    defaults%output_step = options%output_step
+    if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults)
+    if (status%ok()) call build_water(input, sweep%water, status, stage=.true.)
+    if (status%ok()) call read_rider_config(input, rider, status)
+    if (.not. status%ok()) return
+    call check_sphere_radii(input, rider, sweep%water%slide, status)
+    if (.not. status%ok()) return
+    associate (p => rider%params, w => sweep%water)
+      base = 0
+      base(V_SEX) = p%body%sex
+      base(V_MASS) = p%body%mass
+      base(V_HEIGHT) = p%body%height
+      base(V_MU) = p%mu
+      base(V_U0) = p%u0
+      base(V_V0) = p%v0
+      base(V_HEADING) = p%heading0*180/acos(-1.0_wp)
+      base(V_SPEED) = p%speed0
+      base(V_FLOW_RATE) = w%flow_rate
+      base(V_F1) = w%f1
+      base(V_F2) = w%f2
+      base(V_F3) = w%f3
+    end associate
+    call read_sweep_config(input, base, config, status)
+    if (.not. status%ok()) return
+    if (.not. config%swept(V_HEADING)) config%values(V_HEADING, :) = rider%params%heading0*180/acos(-1.0_wp)
+    options%ode = solver%options
+    options%output_step = solver%output_step
+    options%min_speed = rider%min_speed
+    options%max_duration = safety_factor*sweep%water%slide%length()/rider%min_speed
+    if (solver%duration_given) options%max_duration = solver%duration
+    options%progress_seconds = 0   ! the sweep reports progress, not each ride
+    call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
+    if (.not. status%ok()) return
+    sweep%rider = rider%params
+    sweep%options = options
+    sweep%limits = rider%limits
+    sweep%values = config%values
+    call check_waters(input, sweep, status)
+    if (.not. status%ok()) return
+    csv_path = config%csv_output
+    if (len(csv_path) == 0) csv_path = csv_name(trim(run%output))
+    if (run%check_only) return
+
+    ! ---- the rides: this rank's share in threads, then rank 0 gathers
+    call start_ranks(rank, ranks, started)
+    call system_clock(clock0, rate)
+    if (rank == 0) call log_info('sweep: '//format_integer(size(sweep%values, 2))//' rides, '// &
+                                 format_integer(count_waters(sweep))//' waters, '//format_integer(ranks)// &
+                                 ' rank(s)')
+    threads = config%threads
+    call run_sweep(sweep, rides_of_rank(size(sweep%values, 2), rank, ranks), threads, result, &
+                   merge(config%progress_seconds, 0.0_wp, rank == 0), ranks)
+    call gather_rides(result, rank, ranks)
+    call finish_ranks(started)
+    if (rank /= 0) return
+    call system_clock(clock1)
+    wall = real(clock1 - clock0, wp)/rate
+    if (threads <= 0) threads = omp_threads()
+
+    ! ---- rank 0 writes
+    call file%create(trim(run%output), status)
+    if (.not. status%ok()) return
+    call file%write_provenance('sweep', trim(run%title), input%name, input%text(), write_status)
+    call write_sweep_results(file, sweep, result, max(1, threads), ranks, wall, write_status)
+    message = 'ok: '//format_integer(result%n)//' rides, '//format_integer(count(result%status == RIDE_FAILED))// &
+              ' failed'
+    if (.not. write_status%ok()) message = write_status%text()
+    call file%finish(write_status%ok(), message, write_status)
+    if (write_status%ok()) call write_sweep_csv(csv_path, sweep, result, write_status)
+    call print_summary(sweep, result, wall, ranks, max(1, threads), file%final_path(), csv_path, run, &
+                       write_status%ok(), message, write_status)
+    if (.not. write_status%ok()) status = write_status
+  end subroutine run_sweep_scenario
+
+  !> OpenMP's default number of threads (what threads = 0 runs with).
+  integer function omp_threads()
+    !$ use omp_lib, only: omp_get_max_threads
+    omp_threads = 1
+    !$ omp_threads = omp_get_max_threads()
+  end function omp_threads
+
+  !> The CSV beside the result: its name with .csv in place of .h5.
+  pure function csv_name(output) result(path)
+    character(len=*), intent(in) :: output
+    character(len=:), allocatable :: path
+    integer :: dot
+    dot = index(output, '.', back=.true.)
+    if (dot > index(output, '/', back=.true.) + 1) then
+      path = output(:dot - 1)//'.csv'
+    else
+      path = output//'.csv'
+    end if
+  end function csv_name
+
+  integer function count_waters(sweep)
+    type(sweep_description_t), intent(in) :: sweep
+    integer, allocatable :: group(:), first(:)
+    call water_groups(sweep%values, group, first)
+    count_waters = size(first)
+  end function count_waters
+
+  !> Every distinct water is a valid description (its start lies on the
+  !> slide, ...): a bad flow rate is bad input, not a failed ride.
+  subroutine check_waters(input, sweep, status)
+    type(input_text_t), intent(in) :: input
+    type(sweep_description_t), intent(in) :: sweep
+    type(status_t), intent(inout) :: status
+    integer, allocatable :: group(:), first(:)
+    type(water_description_t) :: water
+    type(streamline_t) :: model
+    type(sweep_description_t) :: one
+    real(wp) :: y0(7)
+    integer :: g
+    call water_groups(sweep%values, group, first)
+    do g = 1, size(first)
+      call ride_description(sweep, first(g), one%rider, water)
+      call new_streamline(water, model, y0, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, input%name//': &sweep: the water of ride '//format_integer(first(g))// &
+                           ' (flow_rate '//format_real(water%flow_rate)//' m^3/s)')
+        status%code = STATUS_INVALID_INPUT
+        return
+      end if
+    end do
+  end subroutine check_waters
+
+  !> The sweep in a few lines (stdout) and, with --summary-json, as JSON.
+  subroutine print_summary(sweep, result, wall, ranks, threads, path, csv_path, run, complete, message, status)
+    type(sweep_description_t), intent(in) :: sweep
+    type(sweep_result_t), intent(in) :: result
+    real(wp), intent(in) :: wall
+    integer, intent(in) :: ranks, threads
+    character(len=*), intent(in) :: path, csv_path, message
+    type(run_config_t), intent(in) :: run
+    logical, intent(in) :: complete
+    type(status_t), intent(inout) :: status
+    type(summary_t) :: summary
+    integer :: i, worst, shown
+    logical, allocatable :: ran(:)
+    call summary%start('sweep', 'slidesim sweep')
+    call summary%add_count('rides', 'rides', result%n, '')
+    call summary%add_count('complete', '  reached the end', count(result%status == RIDE_COMPLETE), '')
+    call summary%add_count('stopped', '  stopped before it', count(result%status == RIDE_STOPPED), &
+                           '(stall, lift-off, time bound)')
+    call summary%add_count('failed', '  failed', count(result%status == RIDE_FAILED), '')
+    call summary%add_count('waters', 'waters computed', count_waters(sweep), '')
+    ran = result%status == RIDE_COMPLETE .or. result%status == RIDE_STOPPED
+    if (any(ran)) then
+      worst = maxloc(result%figures(F_FELT_MAGNITUDE_MAX, :), dim=1, mask=ran)
+      call summary%add('felt_magnitude_max', 'highest felt acceleration', result%figures(F_FELT_MAGNITUDE_MAX, &
+                       worst), '1', 'g')
+      call summary%add_count('felt_magnitude_max_ride', '  in ride', worst, '')
+    end if
+    shown = 0
+    do i = 1, result%n
+      if (result%status(i) /= RIDE_FAILED) cycle
+      shown = shown + 1
+      if (shown > 5) then
+        call summary%add_line('  ... (every ride''s message: the CSV summary)')
+        exit
+      end if
+      call summary%add_line('  ride '//format_integer(i)//' '//trim(ride_status_names(RIDE_FAILED))//': '// &
+                            trim(result%message(i)))
+    end do
+    call summary%add('wall_time', 'wall-clock time', wall, 's')
+    call summary%add('rides_per_second', 'rides per second', result%n/max(wall, 1e-9_wp), '1/s')
+    if (any(ran)) call summary%add('ride_wall_time_mean', 'mean time per ride', sum(result%seconds, mask=ran)/ &
+                                   count(ran), 's')
+    call summary%add_count('threads', 'threads per rank', threads, '')
+    call summary%add_count('ranks', 'MPI ranks', ranks, '')
+    if (complete) then
+      call summary%add_text('results', 'results', path)
+      call summary%add_text('csv', 'CSV summary', csv_path)
+    else
+      call summary%add_text('results', 'results (INCOMPLETE)', path)
+    end if
+    call summary%print()
+    if (allocated(run%summary_json)) then
+      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
+    end if
+  end subroutine print_summary
+end module scenarios_sweep
