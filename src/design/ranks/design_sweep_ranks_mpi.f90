@@ -7,10 +7,10 @@
 !> MPI's start-up; only the thread that calls these routines uses MPI
 !> (MPI_THREAD_FUNNELED: the rides' OpenMP threads never call MPI).
 module design_sweep_ranks
+  use, intrinsic :: iso_c_binding, only: c_int
   use mpi_f08, only: MPI_Init_thread, MPI_Initialized, MPI_Finalize, MPI_Finalized, MPI_Comm_rank, &
-    MPI_Comm_size, MPI_Send, MPI_Recv, MPI_COMM_WORLD, MPI_THREAD_FUNNELED, MPI_INTEGER, MPI_DOUBLE_PRECISION, &
-    MPI_CHARACTER, MPI_STATUS_IGNORE
-  use base_kinds, only: wp
+    MPI_Comm_size, MPI_Send, MPI_Recv, MPI_Ibarrier, MPI_Test, MPI_Request, MPI_COMM_WORLD, MPI_THREAD_FUNNELED, &
+    MPI_INTEGER, MPI_DOUBLE_PRECISION, MPI_CHARACTER, MPI_STATUS_IGNORE
   use design_sweep, only: sweep_result_t, message_length, rides_of_rank
   implicit none (type, external)
   private
@@ -18,6 +18,15 @@ module design_sweep_ranks
 
   !> whether this build can run under MPI
   logical, parameter :: ranks_built = .true.
+
+  interface
+    !> POSIX: sleep for `microseconds`
+    function c_usleep(microseconds) bind(C, name='usleep') result(rc)
+      import :: c_int
+      integer(c_int), value :: microseconds
+      integer(c_int) :: rc
+    end function c_usleep
+  end interface
 
 contains
 
@@ -60,9 +69,20 @@ contains
     type(sweep_result_t), intent(inout) :: result
     integer, intent(in) :: rank, ranks
     type(sweep_result_t) :: other
+    type(MPI_Request) :: request
     logical, allocatable :: theirs(:)
+    logical :: everyone
     integer :: r, n, nl, nw
+    integer(c_int) :: slept
     if (ranks < 2) return
+    ! Wait for the slowest rank asleep, not in MPI's busy polling: a rank
+    ! that is done would otherwise take a core from those still riding.
+    call MPI_Ibarrier(MPI_COMM_WORLD, request)
+    do
+      call MPI_Test(request, everyone, MPI_STATUS_IGNORE)
+      if (everyone) exit
+      slept = c_usleep(20000_c_int)   ! 20 ms; woken early (a signal) it just tests again
+    end do
     n = result%n
     nl = size(result%verdict, 1)
     nw = size(result%water_seconds)
