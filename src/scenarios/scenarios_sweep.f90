@@ -28,7 +28,8 @@ module scenarios_sweep
   use io_summary, only: summary_t
   use water_run, only: new_streamline
   use water_streamline, only: streamline_t
-  use scenarios_water, only: build_water
+  use scenarios_water, only: build_water, write_slide_grid
+  use io_xdmf, only: xdmf_t, xdmf_path
   use scenarios_ride, only: ride_groups, check_sphere_radii
   implicit none (type, external)
   private
@@ -125,15 +126,27 @@ contains
     if (.not. status%ok()) return
     call file%write_provenance('sweep', trim(run%title), input%name, input%text(), write_status)
     call write_sweep_results(file, sweep, result, max(1, threads), ranks, wall, write_status)
+    call write_slide_grid(file, sweep%water%slide, write_status)
     message = 'ok: '//format_integer(result%n)//' rides, '//format_integer(count(result%status == RIDE_FAILED))// &
               ' failed'
     if (.not. write_status%ok()) message = write_status%text()
     call file%finish(write_status%ok(), message, write_status)
+    if (write_status%ok()) call write_xdmf(file, write_status)
     if (write_status%ok()) call write_sweep_csv(csv_path, sweep, result, write_status)
     call print_summary(sweep, result, wall, ranks, max(1, threads), file%final_path(), csv_path, run, &
                        write_status%ok(), message, write_status)
     if (.not. write_status%ok()) status = write_status
   end subroutine run_sweep_scenario
+
+  !> XDMF next to the result: the slide the population rode.
+  subroutine write_xdmf(file, status)
+    type(result_file_t), intent(in) :: file
+    type(status_t), intent(inout) :: status
+    type(xdmf_t) :: xdmf
+    call xdmf%start(file%final_path())
+    call xdmf%surface(file, 'slide surface', '/geometry/surface')
+    call xdmf%write(xdmf_path(file%final_path()), status)
+  end subroutine write_xdmf
 
   !> OpenMP's default number of threads (what threads = 0 runs with).
   integer function omp_threads()
