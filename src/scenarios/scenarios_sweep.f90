@@ -8,20 +8,19 @@
 !> exit status 0 when every ride was tried and the files were written.
 module scenarios_sweep
   use base_kinds, only: wp, int64
-  use base_text, only: format_integer, format_short
+  use base_text, only: format_integer
   use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
   use base_log, only: log_info
-  use rider_body, only: SEX_MALE
   use rider_ride, only: ride_options_t
   use water_run, only: water_description_t
   use design_sweep, only: sweep_description_t, sweep_result_t, run_sweep, rides_of_rank, water_groups, &
     ride_description, N_SWEPT, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, V_HEADING, V_SPEED, V_FLOW_RATE, &
     V_F1, V_F2, V_F3, F_FELT_MAGNITUDE_MAX, RIDE_COMPLETE, RIDE_STOPPED, RIDE_FAILED, ride_status_names
   use design_sweep_ranks, only: start_ranks, gather_rides, finish_ranks
-  use io_input, only: input_text_t, check_known_groups, invalid, format_real
+  use io_input, only: input_text_t, check_known_groups, format_real, group_reader_t, open_group, in_range
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
-  use io_rider_config, only: rider_config_t, read_rider_config
+  use io_rider_config, only: rider_config_t, read_rider_config, rider_names
   use io_sweep_config, only: sweep_config_t, read_sweep_config
   use io_sweep_results, only: write_sweep_results, write_sweep_csv
   use io_hdf5, only: result_file_t
@@ -77,7 +76,7 @@ contains
       base(V_MU) = p%mu
       base(V_U0) = p%u0
       base(V_V0) = p%v0
-      base(V_HEADING) = p%heading0*180/acos(-1.0_wp)
+      base(V_HEADING) = heading_degrees(input)
       base(V_SPEED) = p%speed0
       base(V_FLOW_RATE) = w%flow_rate
       base(V_F1) = w%f1
@@ -86,7 +85,6 @@ contains
     end associate
     call read_sweep_config(input, base, config, status)
     if (.not. status%ok()) return
-    if (.not. config%swept(V_HEADING)) config%values(V_HEADING, :) = rider%params%heading0*180/acos(-1.0_wp)
     options%ode = solver%options
     options%output_step = solver%output_step
     options%min_speed = rider%min_speed
@@ -137,6 +135,17 @@ contains
                        write_status%ok(), message, write_status)
     if (.not. write_status%ok()) status = write_status
   end subroutine run_sweep_scenario
+
+  !> &rider heading0_deg as written (default 0): the rides convert degrees
+  !> as the ride does, so a ride of the sweep is the ride of the same input.
+  real(wp) function heading_degrees(input) result(degrees)
+    type(input_text_t), intent(in) :: input
+    type(group_reader_t) :: r
+    type(status_t) :: status
+    degrees = 0
+    call open_group(input, 'rider', rider_names, r, status)   ! read_rider_config checked it
+    call r%get('heading0_deg', degrees, in_range(-180.0_wp, 180.0_wp, 'deg'), status)
+  end function heading_degrees
 
   !> XDMF next to the result: the slide the population rode.
   subroutine write_xdmf(file, status)

@@ -47,6 +47,18 @@ check 'grep -q "^1,stopped,male,90.0,.*had not ended after 2.5 s" "$work/one.csv
 check 'grep -q "^5,stopped,female,55.0," "$work/one.csv"' "ride 5: paired female 55 kg"
 check 'grep -q "failed  *6" "$work/one.out"' "the summary counts the failed rides"
 
+# ride 1 is the ride scenario's ride of the same input (90 kg), to the bit
+sed "s|scenario = 'sweep'|scenario = 'ride'|" "$work/base.nml" >"$work/ride.nml"
+(cd "$work" && "$slidesim" -q -o ride.h5 --set rider%mass=90.0 ride.nml >ride.out 2>ride.err); got=$?
+check '[ $got = 0 ]' "the ride alone: exit status $got ($(cat "$work/ride.err"))"
+check '"$python" -c "
+import h5py, sys
+s, r = h5py.File(sys.argv[1]), h5py.File(sys.argv[2])
+pairs = [(\"top_speed\", \"top_speed\"), (\"felt_normal_max\", \"acceleration_normal_max\"),
+         (\"lever_arm_max\", \"lever_arm_max\"), (\"ride_time\", \"ride_time\")]
+sys.exit(0 if all(s[\"/sweep/\" + a][0] == r[\"/evaluation/\" + b][()] for a, b in pairs) else 1)
+" "$work/one.h5" "$work/ride.h5"' "ride 1 of the sweep = the ride scenario's ride (top speed, felt normal max, lever arm, time)"
+
 # the same results, to the bit, whatever shares them out
 same() {   # name a, name b, what
   a=$1; b=$2
