@@ -1,0 +1,46 @@
+# cmake --install: the slidesim command, the static libraries of every layer and
+# fitpack, the Fortran modules (include/slidesim), a CMake package
+# (find_package(slidesim) -> slidesim::slidesim) and a pkg-config file (slidesim.pc).
+include(CMakePackageConfigHelpers)
+
+get_property(slidesim_layers GLOBAL PROPERTY SLIDESIM_LAYERS)
+set(slidesim_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/slidesim)
+
+install(TARGETS slidesim RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS slidesim_library ${slidesim_layers} fitpack EXPORT slidesimTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(DIRECTORY ${SLIDESIM_MODULE_DIR}/ ${PROJECT_BINARY_DIR}/external/fitpack/modules/
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/slidesim FILES_MATCHING PATTERN "*.mod"
+        PATTERN "test_*" EXCLUDE PATTERN "support" EXCLUDE)
+install(EXPORT slidesimTargets NAMESPACE slidesim:: DESTINATION ${slidesim_cmake_dir})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/slidesimConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/slidesimConfig.cmake INSTALL_DESTINATION ${slidesim_cmake_dir})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/slidesimConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/slidesimConfig.cmake ${PROJECT_BINARY_DIR}/slidesimConfigVersion.cmake
+        DESTINATION ${slidesim_cmake_dir})
+
+# pkg-config: the layers from the top (scenarios) down to base, fitpack, then
+# the libraries they use (full paths, as CMake found them).
+set(pc_libs "")
+list(REVERSE slidesim_layers)
+foreach(layer IN LISTS slidesim_layers ITEMS fitpack)
+  get_target_property(kind ${layer} TYPE)
+  if(NOT kind STREQUAL "INTERFACE_LIBRARY")
+    string(APPEND pc_libs " -l${layer}")
+  endif()
+endforeach()
+foreach(lib IN LISTS SUNDIALS_FORTRAN_LIBRARIES MINPACK_LIBRARY LAPACK_LIBRARIES HDF5_Fortran_HL_LIBRARIES
+                     HDF5_Fortran_LIBRARIES)
+  string(APPEND pc_libs " ${lib}")
+endforeach()
+string(APPEND pc_libs " ${OpenMP_Fortran_FLAGS}")
+set(pc_cflags "")
+foreach(dir IN LISTS SUNDIALS_FORTRAN_MODULE_DIR HDF5_Fortran_INCLUDE_DIRS)
+  string(APPEND pc_cflags " -I${dir}")
+endforeach()
+# relocatable: the prefix is found from the .pc file's own folder
+file(RELATIVE_PATH pc_to_prefix ${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/pkgconfig ${CMAKE_INSTALL_PREFIX})
+string(REGEX REPLACE "/$" "" pc_to_prefix "${pc_to_prefix}")
+configure_file(${PROJECT_SOURCE_DIR}/cmake/slidesim.pc.in ${PROJECT_BINARY_DIR}/slidesim.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/slidesim.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
