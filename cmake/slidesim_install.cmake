@@ -9,9 +9,28 @@ set(slidesim_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/slidesim)
 install(TARGETS slidesim RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS slidesim_library ${slidesim_layers} fitpack EXPORT slidesimTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(DIRECTORY ${SLIDESIM_MODULE_DIR}/ ${PROJECT_BINARY_DIR}/external/fitpack/modules/
-        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/slidesim FILES_MATCHING PATTERN "*.mod"
-        PATTERN "test_*" EXCLUDE PATTERN "support" EXCLUDE)
+# The modules the libraries define, found in their sources (not a folder glob,
+# which would take stale or test modules along).
+foreach(library IN LISTS slidesim_layers ITEMS fitpack)
+  get_target_property(kind ${library} TYPE)
+  if(kind STREQUAL "INTERFACE_LIBRARY")
+    continue()
+  endif()
+  get_target_property(sources ${library} SOURCES)
+  get_target_property(source_dir ${library} SOURCE_DIR)
+  get_target_property(module_dir ${library} Fortran_MODULE_DIRECTORY)
+  foreach(source IN LISTS sources)
+    if(NOT IS_ABSOLUTE ${source})
+      set(source ${source_dir}/${source})
+    endif()
+    file(STRINGS ${source} lines REGEX "^[ \t]*[Mm][Oo][Dd][Uu][Ll][Ee][ \t]+[A-Za-z_0-9]+[ \t]*$")
+    foreach(line IN LISTS lines)
+      string(REGEX REPLACE "^[ \t]*[Mm][Oo][Dd][Uu][Ll][Ee][ \t]+([A-Za-z_0-9]+).*" "\\1" module "${line}")
+      string(TOLOWER ${module} module)
+      install(FILES ${module_dir}/${module}.mod DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/slidesim)
+    endforeach()
+  endforeach()
+endforeach()
 install(EXPORT slidesimTargets NAMESPACE slidesim:: DESTINATION ${slidesim_cmake_dir})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/slidesimConfig.cmake.in
   ${PROJECT_BINARY_DIR}/slidesimConfig.cmake INSTALL_DESTINATION ${slidesim_cmake_dir})
