@@ -1,58 +1,47 @@
 #!/usr/bin/python3
-"""Plots a point_mass result file: the path in 3-D, speed and normal force over
-time, and the energy balance (energy - friction work, which must stay constant).
+"""Plots a point-mass result (scenario point_mass): the path on the surface in
+3-D, speed and normal force over time, and the energy balance (energy minus
+friction work, which must stay constant).
 
-usage: scripts/plot_point_mass.py result.h5 [picture.png]
-Without a picture name the figure is written next to the result file as .png.
+    scripts/plot_point_mass.py RESULT.h5 [-o PICTURE] [--show]
 """
-import sys
+import numpy as np
 
-import h5py
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from plot_common import command_line, draw_surface, equal_axes_3d, finish, title
 
 
-def main(argv):
-    if len(argv) < 2:
-        print(__doc__)
-        return 1
-    path = argv[1]
-    picture = argv[2] if len(argv) > 2 else path.rsplit(".", 1)[0] + ".png"
-    with h5py.File(path, "r") as f:
-        g = f["/point_mass"]
-        t = g["time"][:]
-        xyz = g["position"][:]
-        speed = g["speed"][:]
-        normal = g["normal_force"][:]
-        balance = g["energy"][:] - g["friction_work"][:]
-        status = f.attrs["status"]
-        status = status.decode() if isinstance(status, bytes) else str(status)
-    fig = plt.figure(figsize=(12, 8))
-    ax = fig.add_subplot(2, 2, 1, projection="3d")
-    ax.plot(xyz[:, 0], xyz[:, 1], xyz[:, 2])
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
-    ax.set_zlabel("z (m)")
-    ax.set_title(f"path ({status})")
-    ax = fig.add_subplot(2, 2, 2)
-    ax.plot(t, speed)
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("speed (m/s)")
-    ax = fig.add_subplot(2, 2, 3)
-    ax.plot(t, normal)
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("normal force (N)")
-    ax = fig.add_subplot(2, 2, 4)
+def main():
+    args, r, plt = command_line(__doc__.splitlines()[0], ("point_mass",))
+    g = "/point_mass/"
+    t = r[g + "time"].values
+    xyz = r[g + "position"].values
+    balance = r[g + "energy"].values - r[g + "friction_work"].values
+    fig = plt.figure(figsize=(13, 8))
+    ax = fig.add_subplot(1, 2, 1, projection="3d")
+    pts = draw_surface(ax, r)
+    ax.plot(*xyz.T, "r-", lw=1.2, label="path")
+    ax.plot(*xyz[0], "go", label="start")
+    ax.legend(loc="upper left", fontsize=8)
+    equal_axes_3d(ax, np.vstack([pts, xyz]))
+    ax.set_title("path on the surface")
+    ax = fig.add_subplot(3, 2, 2)
+    ax.plot(t, r[g + "speed"].values)
+    ax.set_ylabel("speed [m/s]")
+    ax.grid(True)
+    ax = fig.add_subplot(3, 2, 4)
+    ax.plot(t, r[g + "normal_force"].values)
+    ax.set_ylabel("normal force [N]")
+    ax.grid(True)
+    ax = fig.add_subplot(3, 2, 6)
     ax.plot(t, balance - balance[0])
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("energy - friction work - initial (J)")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("energy − friction work,\nchange [J]")
+    ax.grid(True)
+    fig.suptitle(title(r))
     fig.tight_layout()
-    fig.savefig(picture, dpi=90)
-    print(picture)
-    return 0
+    fig.subplots_adjust(wspace=0.3)   # room for the 3-D axis labels
+    finish(args, fig, plt)
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    main()

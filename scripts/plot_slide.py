@@ -1,93 +1,73 @@
 #!/usr/bin/python3
-"""Draw a slide (or any surface) in 3-D from the HDF5 file of the `geometry` scenario.
+"""Plots a slide (scenario geometry): the surface in 3-D with the centerline
+and its frames; for tubes and slides also the plan view coloured by the signed
+curvature, the elevation profile and the signed curvature over arc length
+(positive: turning left, seen from above).
 
-    scripts/plot_slide.py demo_slide_geometry.h5 [-o slide.png] [--frames 25] [--no-show]
-
-Draws the surface grid /geometry/surface/{x,y,z}; for tubes and slides also the
-centerline, every n-th frame (x red, y green, z blue) and, in a second panel,
-the curvature chi and its derivative chi_u over the arc length.
-Needs numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py python3-matplotlib).
+    scripts/plot_slide.py RESULT.h5 [-o PICTURE] [--show]
 """
-import argparse
-import sys
-
-import h5py
-import os
-
 import numpy as np
-import matplotlib
+
+from plot_common import command_line, draw_surface, equal_axes_3d, finish, title
+
+
+def signed_curvature(points, chi):
+    """chi with the sign of the turn in plan view: + to the left (counter-
+    clockwise seen from above), from the cross product of consecutive chords."""
+    d = np.gradient(points[:, :2], axis=0)
+    dd = np.gradient(d, axis=0)
+    turn = d[:, 0] * dd[:, 1] - d[:, 1] * dd[:, 0]
+    return np.where(turn < 0, -chi, chi)
+
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("file", help="result file of `slidesim` with scenario = 'geometry'")
-    parser.add_argument("-o", "--output", help="write the figure to this file (png, pdf, svg)")
-    parser.add_argument("--frames", type=int, default=25, help="number of frames drawn along the centerline")
-    parser.add_argument("--no-show", action="store_true", help="do not open a window")
-    args = parser.parse_args()
-    if not args.output and not os.environ.get("DISPLAY"):
-        # no screen to show it on: write a picture next to the result file
-        args.output = os.path.splitext(args.file)[0] + ".png"
-    if args.no_show or args.output:
-        matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    with h5py.File(args.file, "r") as f:
-        if "geometry/surface/x" not in f:
-            sys.exit(f"{args.file}: no /geometry/surface group (not a geometry result file?)")
-        # written as Fortran (n_v, n_u): h5py reads (n_u, n_v)
-        x, y, z = (f["geometry/surface/" + c][()] for c in "xyz")
-        title = f.attrs.get("surface", "surface")
-        if isinstance(title, bytes):
-            title = title.decode()
-        cl = f["geometry/centerline"] if "geometry/centerline" in f else None
-        if cl is not None:
-            points = cl["points"][()]          # (n, 3)
-            frames = [cl["frame_" + a][()] for a in "xyz"]
-            s = cl["arc_length"][()]
-            chi = cl["chi"][()]
-            chi_u = cl["chi_u"][()]
-
-    fig = plt.figure(figsize=(12, 7) if cl is not None else (8, 7))
-    ax = fig.add_subplot(1, 2 if cl is not None else 1, 1, projection="3d")
-    ax.plot_surface(x, y, z, color="lightsteelblue", alpha=0.55, linewidth=0.2, edgecolor="slategray",
-                    rstride=max(1, x.shape[0] // 120), cstride=max(1, x.shape[1] // 24))
-    if cl is not None:
-        ax.plot(points[:, 0], points[:, 1], points[:, 2], "k-", lw=1.2, label="centerline")
-        step = max(1, len(points) // max(args.frames, 1))
+    args, r, plt = command_line(__doc__.splitlines()[0], ("geometry",))
+    tube = "/geometry/centerline/points" in r
+    fig = plt.figure(figsize=(14, 8) if tube else (8, 7))
+    ax = fig.add_subplot(1, 2 if tube else 1, 1, projection="3d")
+    pts = draw_surface(ax, r, alpha=0.5)
+    if tube:
+        points = r["/geometry/centerline/points"].values
+        s = r["/geometry/centerline/arc_length"].values
+        chi = r["/geometry/centerline/chi"].values
+        ax.plot(*points.T, "k-", lw=1.2, label="centerline")
+        step = max(1, len(points) // 25)
         scale = 0.05 * np.ptp(points, axis=0).max()
-        for axis, colour in zip(frames, "rgb"):
+        for axis, colour in zip("xyz", "rgb"):
+            d = r["/geometry/centerline/frame_" + axis].values[::step] * scale
             p = points[::step]
-            d = axis[::step] * scale
             ax.quiver(p[:, 0], p[:, 1], p[:, 2], d[:, 0], d[:, 1], d[:, 2], color=colour, lw=0.8)
         ax.legend(loc="upper left")
-    # equal scales on all axes, so curves and sections look as they are
-    lo = np.array([x.min(), y.min(), z.min()])
-    hi = np.array([x.max(), y.max(), z.max()])
-    mid, half = (lo + hi) / 2, (hi - lo).max() / 2
-    ax.set_xlim(mid[0] - half, mid[0] + half)
-    ax.set_ylim(mid[1] - half, mid[1] + half)
-    ax.set_zlim(mid[2] - half, mid[2] + half)
-    ax.set_xlabel("x [m]"); ax.set_ylabel("y [m]"); ax.set_zlabel("z [m]")
-    ax.set_title(title)
-
-    if cl is not None:
-        a1 = fig.add_subplot(2, 2, 2)
-        a1.plot(s, chi, "b-")
-        a1.set_ylabel("curvature chi [1/m]")
-        a1.grid(True)
-        a2 = fig.add_subplot(2, 2, 4, sharex=a1)
-        a2.plot(s, chi_u, "r-")
-        a2.set_xlabel("arc length s [m]")
-        a2.set_ylabel("chi_u [1/(m unit of u)]")
-        a2.grid(True)
+    equal_axes_3d(ax, pts)
+    ax.set_title(f"{r.attrs.get('surface', 'surface')}\n(frames: x red, y green, z blue)")
+    if tube:
+        kappa = signed_curvature(points, chi)
+        plan = fig.add_subplot(2, 4, 3)
+        limit = max(np.abs(kappa).max(), 1e-12)
+        sc = plan.scatter(points[:, 0], points[:, 1], c=kappa, s=4, cmap="coolwarm", vmin=-limit, vmax=limit)
+        plan.plot(points[0, 0], points[0, 1], "go", label="start")
+        plan.set_aspect("equal")
+        plan.set_xlabel("x [m]")
+        plan.set_ylabel("y [m]")
+        plan.set_title("plan view")
+        plan.legend(fontsize=8)
+        fig.colorbar(sc, ax=plan, label="signed curvature [1/m]")
+        profile = fig.add_subplot(2, 4, 4)
+        profile.plot(s, points[:, 2], "k-")
+        profile.set_xlabel("arc length [m]")
+        profile.set_ylabel("elevation z [m]")
+        profile.set_title(f"elevation profile (drop {points[0, 2] - points[-1, 2]:.2f} m)")
+        profile.grid(True)
+        curv = fig.add_subplot(2, 2, 4)
+        curv.plot(s, kappa, "b-")
+        curv.axhline(0, color="gray", lw=0.5)
+        curv.set_xlabel("arc length [m]")
+        curv.set_ylabel("signed curvature [1/m]")
+        curv.set_title("curvature chi (4.8), + turning left")
+        curv.grid(True)
+    fig.suptitle(title(r))
     fig.tight_layout()
-    if cl is not None:
-        fig.subplots_adjust(wspace=0.35)   # room for the 3-D axis labels
-    if args.output:
-        fig.savefig(args.output, dpi=150)
-        print(f"wrote {args.output}")
-    if not args.no_show and not args.output:
-        plt.show()
+    finish(args, fig, plt)
 
 
 if __name__ == "__main__":

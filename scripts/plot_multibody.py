@@ -1,0 +1,54 @@
+"""The plots of the multibody scenarios (pendulum, fourbar, sled), shared by
+plot_pendulum.py, plot_fourbar.py and plot_sled.py: the coordinates over time
+(angles in degrees), the body paths, the energy and the loop closure."""
+import numpy as np
+
+from plot_common import DEGREES, draw_surface, equal_axes_3d, title
+
+
+def coordinates(ax, r, group):
+    """Every generalized coordinate over time, angles in degrees."""
+    t = r[group + "/time"].values
+    for name in sorted(r.file[group + "/coordinates"]):
+        q = r[f"{group}/coordinates/{name}/value"]
+        scale, unit = (DEGREES, "deg") if q.units == "rad" else (1.0, q.units)
+        ax.plot(t, q.values * scale, label=f"{name} [{unit}]")
+    ax.set_xlabel("time [s]")
+    ax.set_title("coordinates")
+    ax.grid(True)
+    ax.legend(fontsize=8)
+
+
+def energy(ax, r, group):
+    """Kinetic, potential and total energy change; the closure residual."""
+    t = r[group + "/time"].values
+    kinetic, potential = r[group + "/kinetic_energy"].values, r[group + "/potential_energy"].values
+    ax.plot(t, kinetic, label="kinetic")
+    ax.plot(t, potential - potential[0], label="potential − start")
+    ax.plot(t, kinetic + potential - kinetic[0] - potential[0], "k-", label="total − start")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("energy [J]")
+    ax.set_title("energy")
+    ax.grid(True)
+    ax.legend(fontsize=8)
+
+
+def body_paths(ax, r, group, plane=None):
+    """The paths of the body frames' origins: in 3-D, or projected on a
+    coordinate plane ('xz', 'xy'); returns the points drawn."""
+    drawn = []
+    for name in sorted(r.file[group + "/bodies"]):
+        p = r[f"{group}/bodies/{name}/position"].values
+        if np.ptp(p, axis=0).max() < 1e-12:
+            continue   # a body whose frame origin stays put (a hinge)
+        drawn.append(p)
+        if plane is None:
+            ax.plot(*p.T, lw=1, label=name)
+        else:
+            i, j = ("xyz".index(plane[0]), "xyz".index(plane[1]))
+            ax.plot(p[:, i], p[:, j], lw=1, label=name)
+    return np.vstack(drawn) if drawn else np.zeros((0, 3))
+
+
+def suptitle(fig, r):
+    fig.suptitle(title(r))

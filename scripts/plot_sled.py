@@ -1,0 +1,50 @@
+#!/usr/bin/python3
+"""Plots a sled result (scenario sled): the bar's contact paths on the surface
+in 3-D with the bar drawn at intervals, the coordinates over time (angles in
+degrees), the contact normal forces and the sliding speed, and the energy.
+
+    scripts/plot_sled.py RESULT.h5 [-o PICTURE] [--show]
+"""
+import numpy as np
+
+from plot_common import command_line, draw_surface, equal_axes_3d, finish
+from plot_multibody import coordinates, energy, suptitle
+
+
+def main():
+    args, r, plt = command_line(__doc__.splitlines()[0], ("sled",))
+    g = "/sled"
+    t = r[g + "/time"].values
+    rear = r[g + "/contacts/rear/position"].values
+    front = r[g + "/contacts/front/position"].values
+    fig = plt.figure(figsize=(15, 9))
+    ax = fig.add_subplot(1, 2, 1, projection="3d")
+    pts = draw_surface(ax, r, alpha=0.25)
+    ax.plot(*rear.T, "r-", lw=1, label="rear contact")
+    ax.plot(*front.T, "b-", lw=1, label="front contact")
+    for i in np.linspace(0, len(t) - 1, 12).astype(int):
+        ax.plot(*np.column_stack([rear[i], front[i]]), "k-", lw=2)
+    ax.plot([], [], "k-", lw=2, label="the bar (12 instants)")
+    ax.legend(loc="upper left", fontsize=8)
+    equal_axes_3d(ax, np.vstack([pts, rear, front]))
+    ax.set_title("the bar on the surface")
+    coordinates(fig.add_subplot(3, 2, 2), r, g)
+    ax = fig.add_subplot(3, 2, 4)
+    for contact, colour in (("rear", "r"), ("front", "b")):
+        ax.plot(t, r[f"{g}/contacts/{contact}/normal_force"].values, colour, label=f"{contact} normal force")
+    ax.set_ylabel("force [N]")
+    ax.grid(True)
+    ax2 = ax.twinx()
+    ax2.plot(t, np.linalg.norm(r[g + "/contacts/rear/velocity"].values, axis=1), "k:", label="rear speed")
+    ax2.set_ylabel("speed [m/s]")
+    ax.legend(loc="upper left", fontsize=8)
+    ax2.legend(loc="upper right", fontsize=8)
+    ax.set_title("contact forces and speed")
+    energy(fig.add_subplot(3, 2, 6), r, g)
+    suptitle(fig, r)
+    fig.tight_layout()
+    finish(args, fig, plt)
+
+
+if __name__ == "__main__":
+    main()
