@@ -86,6 +86,7 @@ module io_hdf5
     procedure :: is_real => result_file_is_real
     procedure :: make_scale => result_file_make_scale
     procedure :: attach_scale => result_file_attach_scale
+    procedure :: attach_components => result_file_attach_components
     procedure :: finish => result_file_finish
     procedure :: is_open => result_file_is_open
     procedure :: final_path => result_file_final_path
@@ -570,6 +571,37 @@ contains
       if (in_group) in_group = index(name(len(prefix) + 1:), '/') == 0
     end function in_group
   end function result_file_names_in
+
+  !> Labels the vector and matrix axes (length 3 after the sample axis) of the
+  !> datasets under `group` with a dimension scale `<group>/xyz` = [0, 1, 2]
+  !> (x, y, z), so that every axis has a scale: netCDF readers (xarray with
+  !> h5netcdf) refuse a dataset with labelled and unlabelled axes. Call after
+  !> the group's own scales are attached.
+  subroutine result_file_attach_components(self, group, status)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: group
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: prefix, scale
+    integer :: k, axis
+    logical :: needed
+    if (.not. status%ok() .or. self%file_id < 0) return
+    prefix = group
+    if (prefix(len(prefix):) /= '/') prefix = prefix//'/'
+    needed = .false.
+    do k = 1, self%n_written
+      associate (w => self%written(k))
+        if (index(w%name, prefix) == 1 .and. size(w%shape) >= 2) needed = needed .or. any(w%shape(:size(w%shape) - 1) == 3)
+      end associate
+    end do
+    if (.not. needed) return
+    scale = prefix//'xyz'
+    call self%write_integers(scale, [0, 1, 2], '1', 'vector component: 0 x, 1 y, 2 z (world axes); '// &
+                             'for 3 x 3 frames the second index is the axis', status)
+    call self%make_scale(scale, status)
+    do axis = 1, 2
+      call self%attach_scale(scale, group, status, axis=axis)
+    end do
+  end subroutine result_file_attach_components
 
   integer function find_written(self, name) result(k)
     class(result_file_t), intent(in) :: self

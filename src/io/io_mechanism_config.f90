@@ -234,6 +234,7 @@ contains
     if (n > 0) then
       call file%make_scale(g//'time', status)
       call file%attach_scale(g//'time', g, status)
+      call file%attach_components(g, status)
     end if
     call file%write_count('/statistics/steps', int(stats%steps), '1', 'integrator steps', status)
     call file%write_count('/statistics/rhs_evaluations', int(stats%rhs_evaluations), '1', &

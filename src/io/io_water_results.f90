@@ -148,6 +148,7 @@ contains
       if (n > 0) then
         call file%make_scale(g//'time', status)
         call file%attach_scale(g//'time', water_group, status)
+        call file%attach_components(water_group, status)
       end if
     end associate
   end subroutine write_water_results

@@ -161,6 +161,7 @@ contains
     call file%write_scalar('/geometry/centerline/length', tube%length(), 'm', 'total centerline length', status)
     call file%make_scale('/geometry/centerline/arc_length', status)
     call file%attach_scale('/geometry/centerline/arc_length', '/geometry/centerline', status)
+    call file%attach_components('/geometry/centerline', status)
     call summary%add('centerline_length', 'centerline length', tube%length(), 'm')
     call summary%add('drop', 'height drop', points(3, 1) - points(3, n), 'm')
     call summary%add('curvature_max', 'curvature max', maxval(chi), '1/m', '1/m (radius '// &

@@ -162,6 +162,7 @@ contains
     if (n > 0) then
       call file%make_scale(g//'time', status)
       call file%attach_scale(g//'time', g, status)
+      call file%attach_components(g, status)
       call write_surface_grid_around(file, model%surface, s%u(:n), s%v(:n), status)
     end if
     call file%write_count('/statistics/steps', int(stats%steps), '1', 'integrator steps', status)

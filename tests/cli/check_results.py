@@ -20,6 +20,7 @@ import sys
 import h5py
 import numpy as np
 import pint
+import xarray
 
 UNITS = pint.UnitRegistry()
 MULTIBODY = ('pendulum', 'fourbar', 'sled', 'contact')
@@ -139,12 +140,11 @@ def check_file(path, rows):
         group = name.split('/')[1]
         if name.startswith('/statistics/') and d.shape != ():
             fail(path, f"{name}: shape {d.shape}, expected a scalar ()")
-        # dimension scales on the sample axis of every scenario dataset
+        # a dimension scale on every axis of every scenario dataset
         if group not in ('input', 'statistics') and d.ndim >= 1 and not h5py.h5ds.is_scale(d.id):
-            if len(d.dims[0]) == 0:
-                fail(path, f"{name}: no dimension scale on axis 0")
-            if name.startswith('/geometry/surface/') and d.ndim == 2 and len(d.dims[1]) == 0:
-                fail(path, f"{name}: no dimension scale on axis 1")
+            for axis in range(d.ndim):
+                if len(d.dims[axis]) == 0:
+                    fail(path, f"{name}: no dimension scale on axis {axis}")
         # against the docs
         match = [r for r in documented if r[1].match(name)]
         if not match:
@@ -161,7 +161,20 @@ def check_file(path, rows):
     for row in documented:
         if row[4] and not any(row[1].match(n) for n in datasets):
             fail(path, f"documented {row[0]} missing")
+    groups = sorted({name.rsplit('/', 1)[0] for name in datasets
+                     if name.split('/')[1] not in ('input', 'statistics')})
     f.close()
+    # xarray (netCDF reader h5netcdf) opens every group with named dimensions
+    for group in groups:
+        try:
+            ds = xarray.open_dataset(path, group=group, engine='h5netcdf')
+        except Exception as error:   # h5netcdf and xarray raise several kinds
+            fail(path, f"xarray cannot open {group}: {error}")
+            continue
+        for var in ds.data_vars.values():
+            if any(dim.startswith('phony_dim') for dim in var.dims):
+                fail(path, f"{group}/{var.name}: xarray sees unnamed dimensions {var.dims}")
+        ds.close()
 
 
 def main():
