@@ -17,8 +17,9 @@
 !>   so h5py returns `str` (`f.attrs['status'] == 'complete'`);
 !> - numbers are numbers: `set_attribute` takes text, a real, a real array or
 !>   an integer; `write_scalar`/`write_count` make scalar datasets (shape ());
-!> - every dataset has `units` (UDUNITS and pint syntax: 'm', 'm/s', 'm/s^2',
-!>   'rad', '1', 'J', 'kg m^2') and `description`;
+!> - every dataset has `units` (UDUNITS-2 and pint syntax: 'm', 'm/s', 'm/s^2',
+!>   'm^-1', 'rad', '1', 'J', 'kg m^2'; no '1/m', which UDUNITS-2 refuses) and
+!>   `description`;
 !> - arrays are stored as in Fortran: values(3, n) is read by h5py as (n, 3),
 !>   so the sample index (time, arc length) is numpy axis 0;
 !> - `make_scale` turns a 1-d dataset into a dimension scale and `attach_scale`
@@ -179,14 +180,18 @@ contains
   end subroutine result_file_write_provenance
 
   !> The unit of a rate or, with power = 2, of an acceleration:
-  !> 'm' -> 'm/s' (or 'm/s^2'), '1' -> '1/s'.
+  !> 'm' -> 'm/s' (or 'm/s^2'), '1' -> 's^-1' (UDUNITS-2 does not read '1/s').
   pure function units_per_second(units, power) result(rate)
     character(len=*), intent(in) :: units
     integer, intent(in), optional :: power
     character(len=:), allocatable :: rate
-    rate = units//'/s'
-    if (present(power)) then
-      if (power == 2) rate = units//'/s^2'
+    integer :: p
+    p = 1
+    if (present(power)) p = power
+    if (units == '1') then
+      rate = merge('s^-1', 's^-2', p == 1)
+    else
+      rate = units//trim(merge('/s  ', '/s^2', p == 1))
     end if
   end function units_per_second
 

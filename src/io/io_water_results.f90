@@ -54,7 +54,7 @@ contains
       call file%write_vector(g//'normal_force', s%normal_force(:n), 'N', &
                              'normal force on the 1 kg streamline mass (4.12)', status)
       call file%write_vector(g//'friction_force', s%friction_force(:n), 'N', 'friction F_R (4.7)', status)
-      call file%write_vector(g//'curvature', s%curvature(:n), '1/m', 'centerline curvature chi (4.8)', status)
+      call file%write_vector(g//'curvature', s%curvature(:n), 'm^-1', 'centerline curvature chi (4.8)', status)
       call file%write_vector(g//'froude', s%froude(:n), '1', 'Froude number sqrt(m b w^2/(N A))', status)
       call file%write_vector(g//'kinetic_energy', s%kinetic(:n), 'J', 'kinetic energy of the 1 kg mass', status)
       call file%write_vector(g//'potential_energy', s%potential(:n), 'J', 'potential energy -m g.r', status)

@@ -131,11 +131,11 @@ contains
     character(len=:), allocatable :: speed_units, chi_u_units
     call tube%domain(u_min, u_max, v_min, v_max)
     select case (tube%centerline%parameter_unit())   ! units of ds/du and d chi/du
-    case ('m'); speed_units = '1'; chi_u_units = '1/m^2'
-    case ('1'); speed_units = 'm'; chi_u_units = '1/m'
+    case ('m'); speed_units = '1'; chi_u_units = 'm^-2'
+    case ('1'); speed_units = 'm'; chi_u_units = 'm^-1'
     case default
       speed_units = 'm/'//tube%centerline%parameter_unit()
-      chi_u_units = '1/(m '//tube%centerline%parameter_unit()//')'
+      chi_u_units = 'm^-1 '//tube%centerline%parameter_unit()//'^-1'
     end select
     allocate (u(n), s(n), points(3, n), xa(3, n), ya(3, n), za(3, n), chi(n), chi_u(n), tangent_speed(n))
     do i = 1, n
@@ -156,7 +156,7 @@ contains
     call file%write_matrix('/geometry/centerline/frame_x', xa, '1', 'frame x axis (tangent, 3.61) (3 x n)', status)
     call file%write_matrix('/geometry/centerline/frame_y', ya, '1', 'frame y axis (3.62) (3 x n)', status)
     call file%write_matrix('/geometry/centerline/frame_z', za, '1', 'frame z axis (3.63) (3 x n)', status)
-    call file%write_vector('/geometry/centerline/chi', chi, '1/m', 'centerline curvature chi (4.8)', status)
+    call file%write_vector('/geometry/centerline/chi', chi, 'm^-1', 'centerline curvature chi (4.8)', status)
     call file%write_vector('/geometry/centerline/chi_u', chi_u, chi_u_units, 'd chi/du (4.9)', status)
     call file%write_scalar('/geometry/centerline/length', tube%length(), 'm', 'total centerline length', status)
     call file%make_scale('/geometry/centerline/arc_length', status)
@@ -164,7 +164,7 @@ contains
     call file%attach_components('/geometry/centerline', status)
     call summary%add('centerline_length', 'centerline length', tube%length(), 'm')
     call summary%add('drop', 'height drop', points(3, 1) - points(3, n), 'm')
-    call summary%add('curvature_max', 'curvature max', maxval(chi), '1/m', '1/m (radius '// &
+    call summary%add('curvature_max', 'curvature max', maxval(chi), 'm^-1', '1/m (radius '// &
                      engineering(1/max(maxval(chi), tiny(1.0_wp)))//' m)')
   end subroutine write_centerline
 end module scenarios_geometry

@@ -4,17 +4,20 @@ of docs/outputs.md (run by result_conventions.sh).
     check_results.py DOCS_OUTPUTS_MD FILE.h5 [FILE.h5 ...]
 
 For every file: strings are variable-length UTF-8 (h5py gives str); no
-attribute holds a number as text; every dataset has `units` (parsed by pint)
-and `description`; /statistics and documented scalars have shape (); every
-dataset of a scenario group has a dimension scale on axis 0 (and the surface
-grid on axis 1); the provenance attributes are present, `input_sha256` is the
+attribute holds a number as text; every dataset has `units` (parsed by pint
+and by UDUNITS-2) and `description`; /statistics and documented scalars have
+shape (); every axis of every dataset of a scenario group has a dimension
+scale, and xarray (engine h5netcdf) opens every group with named dimensions;
+the provenance attributes are present, `input_sha256` is the
 SHA-256 of /input/namelist. Against the docs: every dataset in the file is
 documented, with the documented shape (rank and fixed sizes) and units (where
 the docs give a fixed unit), and every documented dataset not marked
 "(when ...)" exists. Prints one line per failure; exit status 1 if any.
 """
+import functools
 import hashlib
 import re
+import subprocess
 import sys
 
 import h5py
@@ -30,6 +33,14 @@ NUMBER = r'[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?'
 PROVENANCE = ('scenario', 'title', 'status', 'status_message', 'layout_version', 'slidesim_version',
               'git_commit', 'compiler', 'compiler_options', 'created_utc', 'host', 'input_sha256')
 failures = []
+
+
+@functools.lru_cache(maxsize=None)
+def udunits_error(units):
+    """What UDUNITS-2 (Debian's udunits-bin) says about a unit text, or ''."""
+    run = subprocess.run(['udunits2', '-H', units, '-W', ''], capture_output=True, text=True, check=False)
+    text = run.stdout + run.stderr
+    return text.strip() if run.returncode != 0 or "Don't recognize" in text else ''
 
 
 def fail(path, message):
@@ -137,6 +148,8 @@ def check_file(path, rows):
                 UNITS.parse_units(units) if units != '1' else UNITS('1')
             except Exception as error:   # pint raises several kinds
                 fail(path, f"{name}: units {units!r} not parsed by pint ({error})")
+            if udunits_error(units):
+                fail(path, f"{name}: units {units!r} not parsed by UDUNITS-2 ({udunits_error(units)})")
         group = name.split('/')[1]
         if name.startswith('/statistics/') and d.shape != ():
             fail(path, f"{name}: shape {d.shape}, expected a scalar ()")

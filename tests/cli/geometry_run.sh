@@ -20,7 +20,7 @@ if command -v h5ls > /dev/null && [ -f demo.h5 ]; then
            geometry/centerline/frame_z geometry/centerline/length; do
     h5ls "demo.h5/$d" > /dev/null 2>&1 || fail "missing dataset /$d"
   done
-  h5dump -a /geometry/centerline/chi/units demo.h5 2>/dev/null | grep -q '"1/m"' || fail "chi has no units 1/m"
+  h5dump -a /geometry/centerline/chi/units demo.h5 2>/dev/null | grep -q '"m^-1"' || fail "chi has no units m^-1"
   h5dump -a /status demo.h5 2>/dev/null | grep -q complete || fail "file not marked complete"
   # 60-80 m of slide
   len=$(h5dump -d /geometry/centerline/length demo.h5 | grep -o '(0): [0-9.]*' | cut -d' ' -f2)
