@@ -234,6 +234,7 @@ contains
     if (n > 0) then
       call file%make_scale(g//'time', status)
       call file%attach_scale(g//'time', '/rider', status)
+      call file%attach_components('/rider', status)
     end if
   end subroutine write_ride
 

@@ -71,7 +71,7 @@ def main(json_path, h5_path, printed_path):
     stats = ('steps', 'rhs_evaluations', 'cpu_time')
     # each stage keeps its statistics in its own group (/water/statistics)
     statistics = '/water/statistics' if '/water/statistics' in f else '/statistics'
-    if scenario != 'geometry' and need(*stats):
+    if scenario not in ('geometry', 'ride') and need(*stats):   # the ride reports ride_steps, water_cpu_time, ...
         close('steps', values['steps'], f[statistics + '/steps'][()])
         close('rhs_evaluations', values['rhs_evaluations'], f[statistics + '/rhs_evaluations'][()])
         close('cpu_time', values['cpu_time'], f[statistics + '/cpu_time'][()])
@@ -110,6 +110,14 @@ def main(json_path, h5_path, printed_path):
             close('normal_force_max', values['normal_force_max'], g['normal_force'][:].max())
             close('drop', values['drop'], g['position'][0, 2] - g['position'][-1, 2])
             close('friction_work', values['friction_work'], g['friction_work'][-1])
+    elif scenario == 'ride':
+        # the ride's report (docs/rider.md): a few of its numbers against the series
+        g = f['/rider']
+        if need('ride_time', 'distance', 'top_speed', 'ride_steps'):
+            close('ride_time', values['ride_time'], g['time'][-1] - g['time'][0])
+            close('distance', values['distance'], g['arc_length'][-1] - g['arc_length'][0])
+            close('top_speed', values['top_speed'], g['speed'][:].max())
+            close('ride_steps', values['ride_steps'], g['statistics/steps'][()])
     elif scenario == 'geometry':
         if need('grid_n_u', 'grid_n_v'):
             close('grid_n_u', values['grid_n_u'], f['/geometry/surface/u'].shape[0])

@@ -13,7 +13,7 @@ failures=0
 fail() { echo "FAIL $1"; failures=$((failures + 1)); }
 unset DISPLAY   # as in CI: no window, the Agg backend
 run() { (cd "$root" && "$slidesim" -q -o "$work/$1.h5" "$2" >/dev/null 2>&1) || fail "slidesim $2"; }
-run water builtin:default
+run water inputs/water/demo_slide.nml
 run slide inputs/demo_slide/slide.nml
 run point_mass inputs/point_mass/ellipsoid.nml
 run pendulum inputs/pendulum/double.nml

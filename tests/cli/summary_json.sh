@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# --summary-json FILE: for one input of every scenario the JSON loads, has the
+# --summary-json FILE: for one input of every scenario (the default is a ride) the JSON loads, has the
 # keys of the printed summary with a unit for every number, and its numbers
 # equal the HDF5 result's (tests/cli/check_summary_json.py); a JSON path that
 # cannot be written is exit status 3.
@@ -10,7 +10,7 @@ python=${SLIDESIM_PYTHON:-/usr/bin/python3}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
-for input in builtin:default point_mass/ellipsoid.nml geometry/helix_tube.nml pendulum/double.nml \
+for input in builtin:default water/demo_slide.nml point_mass/ellipsoid.nml geometry/helix_tube.nml pendulum/double.nml \
              fourbar/crank_rocker.nml sled/demo_slide.nml; do
   name=$(basename "$input" .nml | tr ':' '_')
   case $input in builtin:*) path=$input ;; *) path=$root/inputs/$input ;; esac
