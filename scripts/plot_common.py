@@ -3,7 +3,7 @@ result, one way to save.
 
     plot_X.py RESULT.h5 [-o PICTURE] [--show]
 
-writes PICTURE (png, pdf or svg; default: the result's name with .png) and,
+(a script that compares runs takes several RESULT.h5) writes PICTURE (png, pdf or svg; default: the result's name with .png) and,
 with --show and a display, also opens a window. Without a display matplotlib
 runs headless (Agg). A file of the wrong kind stops with a message saying
 what it is and what the script needs (exit status 1).
@@ -20,19 +20,25 @@ from slidesim_results import ResultFileError, open_result  # noqa: E402
 DEGREES = 180 / 3.141592653589793
 
 
-def command_line(description, scenarios):
-    """Parses the common arguments; returns (args, result, pyplot)."""
+def command_line(description, scenarios, several=False):
+    """Parses the common arguments; returns (args, result, pyplot), with
+    `several` (args, [result, ...], pyplot) for the files args.files."""
     parser = argparse.ArgumentParser(description=description)
-    parser.add_argument("file", help=f"slidesim result file of scenario {' or '.join(scenarios)}")
+    parser.add_argument("files" if several else "file", nargs="+" if several else None,
+                        help=f"slidesim result file of scenario {' or '.join(scenarios)}")
     parser.add_argument("-o", "--output", help="picture to write (png, pdf, svg); default: FILE with .png")
     parser.add_argument("--show", action="store_true", help="also open a window (needs a display)")
     args = parser.parse_args()
+    if several:
+        args.file = args.files[0]
     if not args.output:
         args.output = os.path.splitext(args.file)[0] + ".png"
     if not (args.show and os.environ.get("DISPLAY")):
         matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     try:
+        if several:
+            return args, [open_result(path, scenarios) for path in args.files], plt
         result = open_result(args.file, scenarios)
     except ResultFileError as error:
         sys.exit(f"error: {error}")

@@ -10,17 +10,13 @@ input stored in each file. The MS curve of each run passes through the
 simulated theta = 45 degrees; the legend gives the fitted slope of
 ln tan(theta) over 10..60 degrees as a fraction of -mu q.
 
-usage: scripts/plot_egg.py out.png result.h5 [result.h5 ...]
+    scripts/plot_egg.py RESULT.h5 [RESULT.h5 ...] [-o PICTURE] [--show]
 """
 import re
-import sys
 
-import h5py
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from plot_common import command_line, finish
 
 
 def group_values(text, group):
@@ -59,17 +55,16 @@ def tilt(f):
 
 
 def main():
-    if len(sys.argv) < 3:
-        raise SystemExit(__doc__)
-    out = sys.argv[1]
+    args, results, plt = command_line(__doc__.splitlines()[0], ("contact",), several=True)
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(8, 9), sharex=True)
-    for path in sys.argv[2:]:
-        with h5py.File(path, "r") as f:
-            t = f["contact/time"][...]
-            theta = tilt(f)
-            text = f["input/namelist"][()]
-            text = text.decode() if isinstance(text, bytes) else str(text)
-            title = re.search(r"title\s*=\s*'([^']*)'", text)
+    for path, r in zip(args.files, results):
+        f = r.file
+        if "contact/bodies/egg/rotation" not in f:
+            raise SystemExit(f"error: {path}: a contact result without a body named 'egg'")
+        t = f["contact/time"][...]
+        theta = tilt(f)
+        text = r.input_text
+        title = re.search(r"title\s*=\s*'([^']*)'", text)
         mu, a, b, g = egg_parameters(text)
         q = 5 * g * (b**2 - a**2) / (2 * (a**2 + b**2))
         lt = np.log(np.tan(np.radians(np.maximum(theta, 1e-6))))
@@ -91,7 +86,7 @@ def main():
     ax2.set_ylim(-8, 3)
     ax2.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(out, dpi=110)
+    finish(args, fig, plt)
 
 
 if __name__ == "__main__":

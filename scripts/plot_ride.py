@@ -9,18 +9,14 @@
 - the normal forces of the three contacts;
 - a 3-D view of the slide with the water band and the contacts' paths.
 
-usage: scripts/plot_ride.py result.h5 [picture.png]
-Without a picture name the figure is written next to the result file as .png.
+    scripts/plot_ride.py RESULT.h5 [-o PICTURE] [--show]
 """
 import math
-import sys
 
 import h5py
 import numpy as np
-import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from plot_common import command_line, finish, title
 
 CONTACTS = ("pelvis", "heels", "back")
 COLOURS = {"pelvis": "tab:red", "heels": "tab:green", "back": "tab:purple"}
@@ -40,8 +36,6 @@ def text(value):
 def read(path):
     d = {}
     with h5py.File(path, "r") as f:
-        if text(f.attrs.get("scenario", "")) != "ride":
-            sys.exit(f"{path}: not a ride result (scenario {text(f.attrs.get('scenario', '?'))})")
         d["status"] = text(f.attrs.get("status", "?"))
         r = f["/rider"]
         d["outcome"] = text(r.attrs.get("outcome", "?"))
@@ -75,18 +69,14 @@ def read(path):
     return d
 
 
-def main(argv):
-    if len(argv) < 2:
-        print(__doc__)
-        return 1
-    path = argv[1]
-    picture = argv[2] if len(argv) > 2 else path.rsplit(".", 1)[0] + ".png"
-    d = read(path)
+def main():
+    args, result, plt = command_line(__doc__.splitlines()[0], ("ride",))
+    d = read(args.file)
     deg = 180 / math.pi
     s = d["s"]
 
     fig = plt.figure(figsize=(15, 14))
-    fig.suptitle(f"{path}: {d['outcome']} ({d['status']})", fontsize=9)
+    fig.suptitle(f"{title(result)}: {d['outcome']}", fontsize=9)
     grid = fig.add_gridspec(3, 2, height_ratios=[1, 1, 1.7])
 
     ax = fig.add_subplot(grid[0, 0])
@@ -160,10 +150,8 @@ def main(argv):
     ax.legend(fontsize=7)
 
     fig.tight_layout()
-    fig.savefig(picture, dpi=110)
-    print(picture)
-    return 0
+    finish(args, fig, plt)
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    main()

@@ -115,7 +115,7 @@ contains
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
     call file%finish(complete, message, write_status)
-    if (write_status%ok() .and. ride%series%n > 0) call write_xdmf(file, write_status)
+    if (write_status%ok() .and. ride%series%n > 0) call write_xdmf(file, ride%series%time(:ride%series%n), write_status)
     if (allocated(ride%outcome)) call print_report(ride, report, water_done, water%cpu, ride_cpu, &
                                                    file%final_path(), run, complete, message, write_status)
     if (.not. run_status%ok()) then
@@ -317,10 +317,13 @@ contains
 
   !> XDMF next to the result: the slide, the water band, the contacts' paths
   !> and the rider (its three contacts) moving.
-  subroutine write_xdmf(file, status)
+  subroutine write_xdmf(file, time, status)
     type(result_file_t), intent(in) :: file
+    real(wp), intent(in) :: time(:)
     type(status_t), intent(inout) :: status
     type(xdmf_t) :: xdmf
+    character(len=*), parameter :: contacts(3) = [character(len=22) :: &
+      '/rider/pelvis/position', '/rider/heels/position', '/rider/back/position']
     call xdmf%start(file%final_path())
     call xdmf%surface(file, 'slide surface', '/geometry/surface')
     call xdmf%band(file, 'water band', '/water/right_point', '/water/left_point', &
@@ -328,6 +331,8 @@ contains
     call xdmf%polyline(file, 'pelvis path', '/rider/pelvis/position', '/rider')
     call xdmf%polyline(file, 'heels path', '/rider/heels/position', '/rider')
     call xdmf%polyline(file, 'back path', '/rider/back/position', '/rider')
+    ! heels - pelvis - back as one polyline per time step: the rider's posture
+    call xdmf%moving_points(file, 'rider', time, [contacts(2), contacts(1), contacts(3)], .true.)
     call xdmf%write(xdmf_path(file%final_path()), status)
   end subroutine write_xdmf
 

@@ -1,6 +1,6 @@
 """Checks a --summary-json file against the HDF5 result of the same run.
 
-    check_summary_json.py SUMMARY.json RESULT.h5 PRINTED_SUMMARY.txt
+    check_summary_json.py SUMMARY.json RESULT.h5 PRINTED_SUMMARY.txt [SUMMARY.json RESULT.h5 PRINTED_SUMMARY.txt ...]
 
 The JSON must load, name the scenario, status and result file of the HDF5
 file, give a pint-parsable unit for every number, hold the keys this scenario's
@@ -32,7 +32,8 @@ def close(name, got, expected):
         fail(f"{name}: JSON {got.tolist()} but the HDF5 file gives {expected.tolist()}")
 
 
-def main(json_path, h5_path, printed_path):
+def check(json_path, h5_path, printed_path):
+    failures.clear()
     summary = json.load(open(json_path, encoding='utf-8'))
     values, units = summary['values'], summary['units']
     f = h5py.File(h5_path, 'r')
@@ -155,8 +156,16 @@ def main(json_path, h5_path, printed_path):
                 close(contact + '_normal_force_max', values[contact + '_normal_force_max'], c['normal_force'][:].max())
     for line in failures:
         print(f"FAIL {json_path}: {line}")
-    sys.exit(1 if failures else 0)
+    return len(failures)
+
+
+def main(arguments):
+    if not arguments or len(arguments) % 3:
+        sys.exit(__doc__)
+    bad = sum(check(*arguments[k:k + 3]) for k in range(0, len(arguments), 3))
+    print(f"{len(arguments) // 3} summaries checked, {bad} failures")
+    sys.exit(1 if bad else 0)
 
 
 if __name__ == '__main__':
-    main(*sys.argv[1:4])
+    main(sys.argv[1:])

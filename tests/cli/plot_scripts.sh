@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Every plot script runs headless on a result of its scenario and writes a PNG
 # (-o); each refuses a result of another scenario and a file that is not a
-# result with a message naming the file (exit status 1). Needs Debian's
-# python3-matplotlib, -h5py, -numpy (scripts/install-dependencies.sh).
+# result with a message naming the file (exit status 1). The results come from
+# the fixture cli_every_input (tests/cli/support/every_input.sh). Needs
+# Debian's python3-matplotlib, -h5py, -numpy (scripts/install-dependencies.sh).
 set -u
 slidesim=$1
 root=$(pwd)
@@ -12,27 +13,23 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 fail() { echo "FAIL $1"; failures=$((failures + 1)); }
 unset DISPLAY   # as in CI: no window, the Agg backend
-run() { (cd "$root" && "$slidesim" -q -o "$work/$1.h5" "$2" >/dev/null 2>&1) || fail "slidesim $2"; }
-run water inputs/water/demo_slide.nml
-run slide inputs/demo_slide/slide.nml
-run point_mass inputs/point_mass/ellipsoid.nml
-run pendulum inputs/pendulum/double.nml
-run fourbar inputs/fourbar/crank_rocker.nml
-run sled inputs/sled/bowl.nml
-for kind in water slide point_mass pendulum fourbar sled; do
-  script=$root/scripts/plot_$kind.py
-  if ! "$python" "$script" "$work/$kind.h5" -o "$work/$kind.png" >"$work/$kind.out" 2>&1; then
-    fail "plot_$kind.py: $(cat "$work/$kind.out")"; continue
-  fi
-  head -c 8 "$work/$kind.png" | od -An -c | grep -q 'P   N   G' || fail "plot_$kind.py: $kind.png is not a PNG"
-  [ "$(stat -c %s "$work/$kind.png")" -gt 20000 ] || fail "plot_$kind.py: $kind.png is almost empty"
-  other=water; [ "$kind" = water ] && other=sled
-  "$python" "$script" "$work/$other.h5" -o "$work/wrong.png" >"$work/wrong.out" 2>&1
-  [ $? = 1 ] || fail "plot_$kind.py accepted a $other result"
-  grep -q "a '$other' result" "$work/wrong.out" || fail "plot_$kind.py: no clear message for a $other result: $(cat "$work/wrong.out")"
-  "$python" "$script" "$root/README.md" >"$work/text.out" 2>&1
-  [ $? = 1 ] && grep -q 'README.md: not an HDF5 file' "$work/text.out" \
-    || fail "plot_$kind.py: no clear message for a text file: $(cat "$work/text.out")"
-done
-echo "6 plot scripts, $failures failures"
+results=${SLIDESIM_EVERY_INPUT:-}
+if [ -z "$results" ]; then
+  results=$work/every
+  bash "$root/tests/cli/support/every_input.sh" "$slidesim" "$results" >/dev/null || fail "running every input"
+fi
+(cd "$root" && "$slidesim" -q -o "$work/slide.h5" inputs/demo_slide/slide.nml >/dev/null 2>&1) || fail "slidesim slide.nml"
+link() { ln -s "$results/$2.h5" "$work/$1.h5"; }
+link water water_demo_slide
+link point_mass point_mass_ellipsoid
+link pendulum pendulum_double
+link fourbar fourbar_crank_rocker
+link sled sled_bowl
+link ride ride_demo_slide
+link contact contact_egg
+link egg contact_egg
+"$python" "$root/tests/cli/check_plot_scripts.py" "$root/scripts" "$work" "$work/water.h5" "$work/sled.h5" \
+  "$root/README.md" water=water slide=geometry point_mass=point_mass pendulum=pendulum fourbar=fourbar sled=sled \
+  ride=ride contact=contact egg=contact || fail "plot scripts"
+echo "9 plot scripts, $failures failures"
 [ "$failures" = 0 ]

@@ -1,0 +1,61 @@
+#!/usr/bin/python3
+"""Plots a contact result (scenario contact): the paths of the bodies and of
+the contact points in 3-D, the bodies' angular velocities (a spin's angle
+grows without bound, its rate tells more), the contacts' normal forces and sliding speeds, and the energy. (For the spinning
+egg against Moffatt-Shimomura see plot_egg.py.)
+
+    scripts/plot_contact.py RESULT.h5 [-o PICTURE] [--show]
+"""
+import numpy as np
+
+from plot_common import command_line, equal_axes_3d, finish
+from plot_multibody import body_paths, energy, suptitle
+
+
+def main():
+    args, r, plt = command_line(__doc__.splitlines()[0], ("contact",))
+    g = "/contact"
+    t = r[g + "/time"].values
+    contacts = sorted(r.file[g + "/contacts"]) if g + "/contacts" in r else []
+    fig = plt.figure(figsize=(15, 9))
+    ax = fig.add_subplot(1, 2, 1, projection="3d")
+    drawn = [body_paths(ax, r, g)]
+    for name in contacts:
+        p = r[f"{g}/contacts/{name}/position"].values
+        ax.plot(*p.T, "--", lw=0.8, label=f"contact {name}")
+        drawn.append(p)
+    ax.legend(loc="upper left", fontsize=8)
+    equal_axes_3d(ax, np.vstack(drawn))
+    ax.set_title("paths of the bodies (solid) and contact points (dashed)")
+    ax = fig.add_subplot(3, 2, 2)
+    for name in sorted(r.file[g + "/bodies"]):
+        w = r[f"{g}/bodies/{name}/angular_velocity"].values
+        for k, axis in enumerate("xyz"):
+            ax.plot(t, w[:, k], lw=1, label=f"{name} ω{axis}")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("angular velocity [rad/s]")
+    ax.set_title("angular velocities (world axes)")
+    ax.grid(True)
+    ax.legend(fontsize=8)
+    ax = fig.add_subplot(3, 2, 4)
+    for name in contacts:
+        line, = ax.plot(t, r[f"{g}/contacts/{name}/normal_force"].values, label=f"{name} normal force")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("force [N]")
+    ax.grid(True)
+    ax2 = ax.twinx()
+    for name in contacts:
+        ax2.plot(t, np.linalg.norm(r[f"{g}/contacts/{name}/velocity"].values, axis=1), ":",
+                 label=f"{name} sliding speed")
+    ax2.set_ylabel("speed [m/s]")
+    ax.legend(loc="upper left", fontsize=8)
+    ax2.legend(loc="upper right", fontsize=8)
+    ax.set_title("contact forces and sliding speeds")
+    energy(fig.add_subplot(3, 2, 6), r, g)
+    suptitle(fig, r)
+    fig.tight_layout()
+    finish(args, fig, plt)
+
+
+if __name__ == "__main__":
+    main()

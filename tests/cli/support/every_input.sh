@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Runs every input in inputs/ (and the built-in default) once into FOLDER, for
+# the tests that check result files (result_conventions, xdmf_files,
+# summary_json, plot_scripts): ctest runs this as the fixture
+# cli_every_input (tests/CMakeLists.txt) and hands FOLDER to them in
+# SLIDESIM_EVERY_INPUT; run by hand, each of them calls it itself.
+#
+#   every_input.sh SLIDESIM FOLDER
+#
+# Per input NAME (its path below inputs/ with / as _, without .nml; the
+# default is "default"): NAME.h5 and NAME.xmf (the result), NAME.json
+# (--summary-json), NAME.out, NAME.err, NAME.rc (exit status), and the list
+# of NAMEs in FOLDER/names. Also "stopped": a run that fails part way (the
+# mass leaves the ellipsoid over its pole, exit status 2), whose files must
+# keep the same conventions. Exit status 1 if any run that should work did not.
+set -u
+slidesim=$1
+folder=$2
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)
+rm -rf "$folder"
+mkdir -p "$folder"
+failures=0
+run() {   # NAME [INPUT]
+  local name=$1
+  shift
+  (cd "$root" && "$slidesim" -q -o "$folder/$name.h5" --summary-json "$folder/$name.json" "$@" \
+     >"$folder/$name.out" 2>"$folder/$name.err")
+  echo $? >"$folder/$name.rc"
+  echo "$name" >>"$folder/names"
+}
+run default
+for input in "$root"/inputs/*.nml "$root"/inputs/*/*.nml; do
+  case $input in */demo_slide/slide.nml) continue ;; esac   # a geometry file other inputs name, not a run
+  name=$(echo "${input#"$root"/inputs/}" | tr '/' '_' | sed 's/\.nml$//')
+  run "$name" "$input"
+done
+for name in $(cat "$folder/names"); do
+  [ "$(cat "$folder/$name.rc")" = 0 ] \
+    || { echo "FAIL $name: exit status $(cat "$folder/$name.rc"): $(cat "$folder/$name.err")"; failures=$((failures + 1)); }
+done
+printf "&run output = 'stopped.h5' /\n&solver duration = 5 /\n&surface kind = 'ellipsoid', a = 1, b = 1, c = 1 /\n&point_mass v0 = 1.2, dv0 = 2.0, gravity = 0, 0, 0 /\n" \
+  >"$folder/stopped.nml"
+(cd "$folder" && "$slidesim" -q -o "$folder/stopped.h5" --summary-json "$folder/stopped.json" stopped.nml >stopped.out 2>stopped.err)
+echo $? >"$folder/stopped.rc"
+[ "$(cat "$folder/stopped.rc")" = 2 ] || { echo "FAIL stopped run: exit status $(cat "$folder/stopped.rc"), expected 2"; failures=$((failures + 1)); }
+echo "$(wc -l <"$folder/names") inputs run into $folder, $failures failures"
+[ "$failures" = 0 ]
