@@ -12,10 +12,15 @@ the provenance attributes are present, `input_sha256` is the
 SHA-256 of /input/namelist. Against the docs: every dataset in the file is
 documented, with the documented shape (rank and fixed sizes) and units (where
 the docs give a fixed unit), and every documented dataset not marked
-"(when ...)" exists. Prints one line per failure; exit status 1 if any.
+"(when ...)" exists; the status and message as the root attribute table
+says (complete: `ok` and where it stopped; incomplete: why), and where the
+run's exit status is known (NAME.rc beside NAME.h5, as the fixture
+every_input.sh leaves it) 0 for complete, 2 for incomplete. Prints one line
+per failure; exit status 1 if any.
 """
 import functools
 import hashlib
+import os
 import re
 import subprocess
 import sys
@@ -103,8 +108,18 @@ def check_file(path, rows):
     for key in PROVENANCE:
         if key not in f.attrs:
             fail(path, f"root attribute {key} missing")
-    if f.attrs.get('status') not in ('complete', 'incomplete'):
-        fail(path, f"status is {f.attrs.get('status')!r}")
+    status, message = f.attrs.get('status'), str(f.attrs.get('status_message'))
+    if status not in ('complete', 'incomplete'):
+        fail(path, f"status is {status!r}")
+    if status == 'complete' and not re.match(r'ok\b', message):
+        fail(path, f"complete, but status_message {message!r} does not start with 'ok'")
+    if status == 'incomplete' and (not message.strip() or message.startswith('ok')):
+        fail(path, f"incomplete, but status_message {message!r} says no reason")
+    rc_path = path[:-3] + '.rc' if path.endswith('.h5') else None
+    if rc_path and os.path.exists(rc_path):
+        rc = open(rc_path).read().strip()
+        if {'complete': '0', 'incomplete': '2'}.get(status) != rc:
+            fail(path, f"status {status!r} but the run's exit status was {rc}")
     if not isinstance(f.attrs.get('layout_version'), (np.integer, int)):
         fail(path, f"layout_version is not an integer: {f.attrs.get('layout_version')!r}")
     if not re.fullmatch(r'\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ', str(f.attrs.get('created_utc'))):

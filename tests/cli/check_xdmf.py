@@ -1,7 +1,7 @@
 """Checks the XDMF files slidesim writes next to its results.
 
-    check_xdmf.py FILE.xmf [...]              the structure, with h5py
-    pvbatch check_xdmf.py --paraview FILE.xmf [...]   also opens each in ParaView
+    check_xdmf.py [--docs OUTPUTS.md] FILE.xmf [...]              the structure, with h5py
+    pvbatch check_xdmf.py --paraview [--docs OUTPUTS.md] FILE.xmf [...]   also opens each in ParaView
 
 Structure: the XML parses; every HDF DataItem names the HDF5 file beside it
 and a dataset that exists there with exactly the stated dimensions; every
@@ -9,11 +9,15 @@ HyperSlab selects rows inside its dataset; every JOIN function's size is the
 sum of its parts; every grid's geometry has as many points as its topology
 has nodes, and every node attribute as many values; temporal collections have
 increasing times; a result with a surface grid has a surface grid in its
-XDMF. With --paraview, ParaView's XDMF reader loads each file and shows, at
+XDMF. With --docs, the grids against the table of docs/outputs.md ("ParaView
+and VisIt"): every grid of a file is listed there for the file's scenario,
+and every grid listed for a scenario is in some file of that scenario among
+those checked. With --paraview, ParaView's XDMF reader loads each file and shows, at
 the first time step, the number of points the structure says. Prints
 failures; exit status 1 if any.
 """
 import os
+import re
 import sys
 import xml.etree.ElementTree as ET
 
@@ -101,8 +105,42 @@ def check_uniform(path, grid, h5):
     return n
 
 
+def documented_grids(docs):
+    """The grid table of docs/outputs.md: [(name regex, source name, {scenarios})]."""
+    text = open(docs, encoding='utf-8').read()
+    section = text.split('## ParaView and VisIt', 1)[1].split('\n## ', 1)[0]
+    rows = []
+    for line in section.splitlines():
+        cells = [c.strip() for c in line.strip().strip('|').split('|')]
+        if not line.startswith('| `') or len(cells) < 3:
+            continue
+        scenarios = {x.strip() for x in cells[1].split(',')}
+        for name in re.findall(r'`([^`]+)`', cells[0]):
+            pattern = re.sub(r'<[^>]+>', '.+', re.escape(name).replace(r'\<', '<').replace(r'\>', '>'))
+            rows.append((re.compile(pattern + '$'), name, scenarios))
+    return rows
+
+
+def check_docs(docs, grids_of):
+    """grids_of: {path: (scenario, [grid names])}."""
+    rows = documented_grids(docs)
+    seen = set()
+    for path, (scenario, names) in grids_of.items():
+        for name in names:
+            matches = [(r, n) for r, n, scenarios in rows if scenario in scenarios and r.match(name)]
+            if not matches:
+                fail(path, f"grid {name!r}: not listed for scenario {scenario} in {docs}")
+            seen.update((n, scenario) for _, n in matches)
+    checked = {scenario for scenario, _ in grids_of.values()}
+    for _, name, scenarios in rows:
+        for scenario in scenarios & checked:
+            if (name, scenario) not in seen:
+                fail(docs, f"grid {name!r} listed for {scenario}, but no {scenario} file checked has it")
+
+
 def check(path):
-    """Checks one XDMF file; returns the points ParaView should show at t0."""
+    """Checks one XDMF file; returns (the points ParaView should show at t0,
+    the scenario, the top-level grid names)."""
     root = ET.parse(path).getroot()
     h5_path = os.path.join(os.path.dirname(path), os.path.basename(path)[:-4] + '.h5')
     h5 = h5py.File(h5_path, 'r')
@@ -120,14 +158,21 @@ def check(path):
             points += check_uniform(path, grid, h5)
     if '/geometry/surface/x' in h5 and not any('surface' in name for name in names):
         fail(path, "the result has a surface grid, the XDMF file none")
+    scenario = h5.attrs['scenario']
     h5.close()
-    return points
+    return points, scenario, names
 
 
 def main(args):
-    paraview = args and args[0] == '--paraview'
+    paraview = bool(args) and args[0] == '--paraview'
     paths = args[1:] if paraview else args
-    expected = {path: check(path) for path in paths}
+    docs = None
+    if paths[:1] == ['--docs']:
+        docs, paths = paths[1], paths[2:]
+    checked = {path: check(path) for path in paths}
+    expected = {path: points for path, (points, _, _) in checked.items()}
+    if docs:
+        check_docs(docs, {path: (scenario, names) for path, (_, scenario, names) in checked.items()})
     if paraview:
         from paraview.simple import XDMFReader, Delete
         for path in paths:

@@ -22,7 +22,7 @@ for name in $(cat "$results/names") stopped; do
   if [ -f "$results/$name.xmf" ]; then files+=("$results/$name.xmf"); else echo "FAIL $name: no XDMF file $name.xmf"; failures=$((failures + 1)); fi
 done
 command -v pvbatch >/dev/null || { echo "FAIL pvbatch not found (install paraview python3-paraview)"; exit 1; }
-pvbatch --force-offscreen-rendering "$root/tests/cli/check_xdmf.py" --paraview "${files[@]}" >"$work/check.out" 2>&1 \
+pvbatch --force-offscreen-rendering "$root/tests/cli/check_xdmf.py" --paraview --docs "$root/docs/outputs.md" "${files[@]}" >"$work/check.out" 2>&1 \
   || failures=$((failures + 1))
 grep -E '^FAIL|XDMF files checked|syntax error' "$work/check.out"
 grep -q 'syntax error' "$work/check.out" && { echo "FAIL ParaView reports an expression syntax error"; failures=$((failures + 1)); }
