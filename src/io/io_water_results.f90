@@ -91,22 +91,25 @@ contains
       call file%set_attribute(water_group, 'time_bound_s', s%time_bound, status)
       call file%set_attribute(water_group, 'edges_at_samples', merge(1, 0, s%edges), status)
 
-      call file%write_vector(t//'arc_length', table%arc_length, 'm', 'centerline arc length', status)
-      call file%write_vector(t//'u', table%u, uu, 'u at that arc length', status)
-      call file%write_vector(t//'time', table%time, 's', 'time the water point passes', status)
-      call file%write_vector(t//'v', table%v, vu, 'v of the water middle', status)
-      call file%write_vector(t//'speed', table%speed, 'm/s', 'water speed', status)
-      call file%write_vector(t//'height', table%height, 'm', 'water height', status)
-      call file%write_vector(t//'width', table%width, 'm', 'water width', status)
-      call file%write_vector(t//'beta', table%beta, 'rad', 'flow angle to the centerline', status)
-      call file%write_vector(t//'v_left', table%v_left, vu, 'v of the left edge', status)
-      call file%write_vector(t//'v_right', table%v_right, vu, 'v of the right edge', status)
-      call file%write_integers(t//'edge_solved', table%edge_solved, '1', &
-                               '1: edges solved (4.25-4.26) at the row or interpolated between solved samples; '// &
-                               '0: circle estimate (an edge beyond the slide''s end)', status)
-      if (size(table%arc_length) > 0) then
-        call file%make_scale(t//'arc_length', status)
-        call file%attach_scale(t//'arc_length', t, status)
+      ! no table when the run stopped before its field and table were built
+      if (allocated(table%arc_length)) then
+        call file%write_vector(t//'arc_length', table%arc_length, 'm', 'centerline arc length', status)
+        call file%write_vector(t//'u', table%u, uu, 'u at that arc length', status)
+        call file%write_vector(t//'time', table%time, 's', 'time the water point passes', status)
+        call file%write_vector(t//'v', table%v, vu, 'v of the water middle', status)
+        call file%write_vector(t//'speed', table%speed, 'm/s', 'water speed', status)
+        call file%write_vector(t//'height', table%height, 'm', 'water height', status)
+        call file%write_vector(t//'width', table%width, 'm', 'water width', status)
+        call file%write_vector(t//'beta', table%beta, 'rad', 'flow angle to the centerline', status)
+        call file%write_vector(t//'v_left', table%v_left, vu, 'v of the left edge', status)
+        call file%write_vector(t//'v_right', table%v_right, vu, 'v of the right edge', status)
+        call file%write_integers(t//'edge_solved', table%edge_solved, '1', &
+                                 '1: edges solved (4.25-4.26) at the row or interpolated between solved samples; '// &
+                                 '0: circle estimate (an edge beyond the slide''s end)', status)
+        if (size(table%arc_length) > 0) then
+          call file%make_scale(t//'arc_length', status)
+          call file%attach_scale(t//'arc_length', t, status)
+        end if
       end if
 
       if (size(s%stations) > 0) then

@@ -27,5 +27,16 @@ done
 grep -q 'parameter domain' "$work/pole.err" || fail "pole: message does not say the mass left the domain"
 grep -qi 'steps' "$work/steps.err" || fail "steps: message does not name the step limit"
 
+# The water goes critical at the start (too little flow for the demo slide's
+# start): no field and no table can be built; writing the file once crashed.
+checks=$((checks + 1))
+root=$(pwd)
+"$slidesim" -q --set water%flow_rate=0.002 -o "$work/critical.h5" "$root/inputs/water/demo_slide.nml" \
+  >"$work/critical.out" 2>"$work/critical.err"; got=$?
+[ $got = 2 ] || fail "critical water: exit status $got, expected 2 ($(head -c 300 "$work/critical.err"))"
+grep -q 'critical' "$work/critical.err" || fail "critical water: message does not say the flow went critical"
+h5dump -a /status "$work/critical.h5" 2>/dev/null | grep -q '"incomplete"' || fail "critical water: file not marked incomplete"
+h5ls "$work/critical.h5/water/time" >/dev/null 2>&1 || fail "critical water: the samples computed were not kept"
+
 echo "$((checks - failures)) passed, $failures failed"
 [ $failures = 0 ]
