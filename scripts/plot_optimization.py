@@ -8,17 +8,11 @@
 - the section angle of every ride (0 = the bottom of the tube, positive to the
   +v side) over time.
 
-usage: scripts/plot_optimization.py result.h5 [picture.png]
-Without a picture name the figure is written next to the result file as .png.
+    scripts/plot_optimization.py RESULT.h5 [-o PICTURE] [--show]
 """
-import sys
-
-import h5py
 import numpy as np
-import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from plot_common import command_line, finish, title as result_title
 
 
 def rides(g):
@@ -34,14 +28,10 @@ def rides(g):
     return out
 
 
-def main(argv):
-    if len(argv) < 2:
-        print(__doc__)
-        return 1
-    path = argv[1]
-    picture = argv[2] if len(argv) > 2 else path.rsplit(".", 1)[0] + ".png"
-    with h5py.File(path, "r") as f:
-        g = f["/optimize"]
+def main():
+    args, result, plt = command_line(__doc__.splitlines()[0], ("optimize",))
+    with result as r:
+        g = r.file["/optimize"]
         limit = float(g["lever_limit"][()])
         angles = np.degrees(g["before/start_angle"][:])
         c0 = np.asarray(g["centerline_start"][:])
@@ -52,9 +42,7 @@ def main(argv):
             c1 = np.asarray(g["centerline"][:])
             p1 = np.asarray(g["points"][:])
             after = rides(g["after"])
-        title = f.attrs.get("title", "")
-    if isinstance(title, bytes):
-        title = title.decode()
+        title = result_title(r)
 
     fig, ax = plt.subplots(2, 3, figsize=(16, 9))
     ax[0, 0].plot(c0[:, 0], c0[:, 1], "k--", label="start")
@@ -100,10 +88,8 @@ def main(argv):
     ax[1, 2].legend()
     fig.suptitle(f"slidesim optimize: {title}")
     fig.tight_layout()
-    fig.savefig(picture, dpi=90)
-    print(picture)
-    return 0
+    finish(args, fig, plt)
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    main()

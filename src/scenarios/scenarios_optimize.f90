@@ -157,6 +157,7 @@ contains
     call file%attach_scale(g//'x_start', g, status)
     call file%attach_scale(g//'point_number', g, status)
     call file%attach_scale(g//'centerline_fraction', g, status)
+    call file%attach_components('/optimize', status)   ! the (x, y, z) axes: /optimize/xyz
 
   contains
 
@@ -329,6 +330,11 @@ contains
         '        '//lever_text(table(4, k))//lever_text(table(5, k)))
     end do
     call summary%print(output_unit)
+    if (complete) then
+      write (output_unit, '(a)') '  results                   '//path
+    else
+      write (output_unit, '(a)') '  results (INCOMPLETE)      '//path
+    end if
     if (allocated(run%summary_json)) then
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
     end if

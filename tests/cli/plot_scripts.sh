@@ -28,8 +28,9 @@ link sled sled_bowl
 link ride ride_demo_slide
 link contact contact_egg
 link egg contact_egg
+link optimization design_optimize_table_4_12
 "$python" "$root/tests/cli/check_plot_scripts.py" "$root/scripts" "$work" "$work/water.h5" "$work/sled.h5" \
   "$root/README.md" water=water slide=geometry point_mass=point_mass pendulum=pendulum fourbar=fourbar sled=sled \
-  ride=ride contact=contact egg=contact || fail "plot scripts"
-echo "9 plot scripts, $failures failures"
+  ride=ride contact=contact egg=contact optimization=optimize || fail "plot scripts"
+echo "10 plot scripts, $failures failures"
 [ "$failures" = 0 ]
