@@ -28,13 +28,17 @@ def main():
     equal_axes_3d(ax, np.vstack(drawn))
     ax.set_title("paths of the bodies (solid) and contact points (dashed)")
     ax = fig.add_subplot(3, 2, 2)
-    for name in sorted(r.file[g + "/bodies"]):
+    bodies = sorted(r.file[g + "/bodies"])
+    for name in bodies:
         w = r[f"{g}/bodies/{name}/angular_velocity"].values
-        for k, axis in enumerate("xyz"):
-            ax.plot(t, w[:, k], lw=1, label=f"{name} ω{axis}")
+        if len(bodies) == 1:   # one body: its components; several: their magnitudes
+            for k, axis in enumerate("xyz"):
+                ax.plot(t, w[:, k], lw=1, label=f"{name} ω{axis}")
+        else:
+            ax.plot(t, np.linalg.norm(w, axis=1), lw=1, label=f"{name} |ω|")
     ax.set_xlabel("time [s]")
     ax.set_ylabel("angular velocity [rad/s]")
-    ax.set_title("angular velocities (world axes)")
+    ax.set_title("angular velocities (world axes)" if len(bodies) == 1 else "angular speeds")
     ax.grid(True)
     ax.legend(fontsize=8)
     ax = fig.add_subplot(3, 2, 4)
