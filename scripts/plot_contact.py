@@ -9,7 +9,7 @@ egg against Moffatt-Shimomura see plot_egg.py.)
 import numpy as np
 
 from plot_common import command_line, equal_axes_3d, finish
-from plot_multibody import body_paths, energy, suptitle
+from plot_multibody import body_paths, contact_forces, energy, suptitle
 
 
 def main():
@@ -41,20 +41,7 @@ def main():
     ax.set_title("angular velocities (world axes)" if len(bodies) == 1 else "angular speeds")
     ax.grid(True)
     ax.legend(fontsize=8)
-    ax = fig.add_subplot(3, 2, 4)
-    for name in contacts:
-        line, = ax.plot(t, r[f"{g}/contacts/{name}/normal_force"].values, label=f"{name} normal force")
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel("force [N]")
-    ax.grid(True)
-    ax2 = ax.twinx()
-    for name in contacts:
-        ax2.plot(t, np.linalg.norm(r[f"{g}/contacts/{name}/velocity"].values, axis=1), ":",
-                 label=f"{name} sliding speed")
-    ax2.set_ylabel("speed [m/s]")
-    ax.legend(loc="upper left", fontsize=8)
-    ax2.legend(loc="upper right", fontsize=8)
-    ax.set_title("contact forces and sliding speeds")
+    contact_forces(fig.add_subplot(3, 2, 4), r, g, [(name, "-") for name in contacts], contacts)
     energy(fig.add_subplot(3, 2, 6), r, g)
     suptitle(fig, r)
     fig.tight_layout()

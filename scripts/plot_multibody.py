@@ -1,6 +1,7 @@
-"""The plots of the multibody scenarios (pendulum, fourbar, sled), shared by
-plot_pendulum.py, plot_fourbar.py and plot_sled.py: the coordinates over time
-(angles in degrees), the body paths, the energy and the loop closure."""
+"""The plots of the multibody scenarios (pendulum, fourbar, sled, contact),
+shared by plot_pendulum.py, plot_fourbar.py, plot_sled.py and plot_contact.py:
+the coordinates over time (angles in degrees), the body paths, the contact
+forces and speeds, the energy."""
 import numpy as np
 
 from plot_common import DEGREES, draw_surface, equal_axes_3d, title
@@ -48,6 +49,25 @@ def body_paths(ax, r, group, plane=None):
             i, j = ("xyz".index(plane[0]), "xyz".index(plane[1]))
             ax.plot(p[:, i], p[:, j], lw=1, label=name)
     return np.vstack(drawn) if drawn else np.zeros((0, 3))
+
+
+def contact_forces(ax, r, group, contacts, speeds):
+    """The normal force of each contact in `contacts` [(name, line style)] and,
+    on a second axis, the speed of the contact points in `speeds` (dotted)."""
+    t = r[group + "/time"].values
+    for name, style in contacts:
+        ax.plot(t, r[f"{group}/contacts/{name}/normal_force"].values, style, label=f"{name} normal force")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("force [N]")
+    ax.grid(True)
+    ax2 = ax.twinx()
+    for name in speeds:
+        ax2.plot(t, np.linalg.norm(r[f"{group}/contacts/{name}/velocity"].values, axis=1), ":",
+                 label=f"{name} speed")
+    ax2.set_ylabel("speed [m/s]")
+    ax.legend(loc="upper left", fontsize=8)
+    ax2.legend(loc="upper right", fontsize=8)
+    ax.set_title("contact forces and speeds")
 
 
 def suptitle(fig, r):

@@ -8,7 +8,7 @@ degrees), the contact normal forces and the sliding speed, and the energy.
 import numpy as np
 
 from plot_common import command_line, draw_surface, equal_axes_3d, finish
-from plot_multibody import coordinates, energy, suptitle
+from plot_multibody import contact_forces, coordinates, energy, suptitle
 
 
 def main():
@@ -29,17 +29,7 @@ def main():
     equal_axes_3d(ax, np.vstack([pts, rear, front]))
     ax.set_title("the bar on the surface")
     coordinates(fig.add_subplot(3, 2, 2), r, g)
-    ax = fig.add_subplot(3, 2, 4)
-    for contact, colour in (("rear", "r"), ("front", "b")):
-        ax.plot(t, r[f"{g}/contacts/{contact}/normal_force"].values, colour, label=f"{contact} normal force")
-    ax.set_ylabel("force [N]")
-    ax.grid(True)
-    ax2 = ax.twinx()
-    ax2.plot(t, np.linalg.norm(r[g + "/contacts/rear/velocity"].values, axis=1), "k:", label="rear speed")
-    ax2.set_ylabel("speed [m/s]")
-    ax.legend(loc="upper left", fontsize=8)
-    ax2.legend(loc="upper right", fontsize=8)
-    ax.set_title("contact forces and speed")
+    contact_forces(fig.add_subplot(3, 2, 4), r, g, [("rear", "r"), ("front", "b")], ["rear"])
     energy(fig.add_subplot(3, 2, 6), r, g)
     suptitle(fig, r)
     fig.tight_layout()

@@ -13,11 +13,7 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 fail() { echo "FAIL $1"; failures=$((failures + 1)); }
 unset DISPLAY   # as in CI: no window, the Agg backend
-results=${SLIDESIM_EVERY_INPUT:-}
-if [ -z "$results" ]; then
-  results=$work/every
-  bash "$root/tests/cli/support/every_input.sh" "$slidesim" "$results" >/dev/null || fail "running every input"
-fi
+. "$root/tests/cli/support/every_input_results.sh"   # sets $results
 (cd "$root" && "$slidesim" -q -o "$work/slide.h5" inputs/demo_slide/slide.nml >/dev/null 2>&1) || fail "slidesim slide.nml"
 link() { ln -s "$results/$2.h5" "$work/$1.h5"; }
 link water water_demo_slide

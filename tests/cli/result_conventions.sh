@@ -13,11 +13,7 @@ python=${SLIDESIM_PYTHON:-/usr/bin/python3}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
-results=${SLIDESIM_EVERY_INPUT:-}
-if [ -z "$results" ]; then
-  results=$work/every
-  bash "$root/tests/cli/support/every_input.sh" "$slidesim" "$results" >/dev/null || failures=$((failures + 1))
-fi
+. "$root/tests/cli/support/every_input_results.sh"   # sets $results
 files=()
 for name in $(cat "$results/names") stopped; do
   if [ -f "$results/$name.h5" ]; then files+=("$results/$name.h5"); else echo "FAIL $name: no result file"; failures=$((failures + 1)); fi

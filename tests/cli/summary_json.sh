@@ -12,11 +12,7 @@ python=${SLIDESIM_PYTHON:-/usr/bin/python3}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
-results=${SLIDESIM_EVERY_INPUT:-}
-if [ -z "$results" ]; then
-  results=$work/every
-  bash "$root/tests/cli/support/every_input.sh" "$slidesim" "$results" >/dev/null || failures=$((failures + 1))
-fi
+. "$root/tests/cli/support/every_input_results.sh"   # sets $results
 triples=()
 for name in $(cat "$results/names") stopped; do
   if [ -f "$results/$name.json" ]; then triples+=("$results/$name.json" "$results/$name.h5" "$results/$name.out")

@@ -12,11 +12,7 @@ root=$(pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
-results=${SLIDESIM_EVERY_INPUT:-}
-if [ -z "$results" ]; then
-  results=$work/every
-  bash "$root/tests/cli/support/every_input.sh" "$slidesim" "$results" >/dev/null || failures=$((failures + 1))
-fi
+. "$root/tests/cli/support/every_input_results.sh"   # sets $results
 files=()
 for name in $(cat "$results/names") stopped; do
   if [ -f "$results/$name.xmf" ]; then files+=("$results/$name.xmf"); else echo "FAIL $name: no XDMF file $name.xmf"; failures=$((failures + 1)); fi

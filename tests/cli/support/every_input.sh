@@ -32,14 +32,17 @@ run default
 for input in "$root"/inputs/*.nml "$root"/inputs/*/*.nml; do
   case $input in */demo_slide/slide.nml) continue ;; esac   # a geometry file other inputs name, not a run
   name=$(echo "${input#"$root"/inputs/}" | tr '/' '_' | sed 's/\.nml$//')
-  # shorter runs of the same groups (the layout does not depend on the length):
-  # templates that repeat an input run in full (contact/egg.nml,
-  # ride/demo_slide.nml, design/optimize_table_4_12.nml) and long runs
+  # shorter runs of the same groups where a full one takes seconds (the
+  # layout does not depend on the length; the physics has its own tests):
+  # keeps this fixture near 10 s of CPU in Debug
   case $name in
-    templates_contact) run "$name" --set solver%duration=1 "$input" ;;
-    templates_ride) run "$name" --set solver%rtol=1e-6 --set solver%atol=1e-5 "$input" ;;
+    contact_egg) run "$name" --set solver%duration=3 "$input" ;;        # of 10 s
+    templates_contact) run "$name" --set solver%duration=1 "$input" ;;  # the egg again
+    contact_paraboloids) run "$name" --set solver%duration=2 "$input" ;;   # of 20 s
+    contact_tower5) run "$name" --set solver%duration=0.5 "$input" ;;   # of 20 s of a five-body tower
+    ride_demo_slide | templates_ride)   # the default is this ride in full
+      run "$name" --set solver%rtol=1e-6 --set solver%atol=1e-5 "$input" ;;
     templates_optimize) run "$name" --set optimize%ftol=0.1 --set optimize%xtol=0.1 "$input" ;;
-    contact_tower5) run "$name" --set solver%duration=2 "$input" ;;   # 20 s of a five-body tower: 9 s CPU
     *) run "$name" "$input" ;;
   esac
 done
