@@ -1,5 +1,7 @@
 !> Messages and progress output of long runs, on standard error so that
-!> standard output stays for summaries.
+!> standard output stays for summaries. Standard output is flushed before each
+!> message: where both streams go to one file or pipe, every line stays in
+!> the order it was written (a summary's last line before the error after it).
 module base_log
   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
   use base_kinds, only: wp
@@ -18,16 +20,20 @@ contains
 
   subroutine log_info(message)
     character(len=*), intent(in) :: message
-    if (verbosity >= 1) write (error_unit, '(a)') message
+    if (verbosity < 1) return
+    flush (output_unit)
+    write (error_unit, '(a)') message
   end subroutine log_info
 
   subroutine log_warning(message)
     character(len=*), intent(in) :: message
+    flush (output_unit)
     write (error_unit, '(a)') 'warning: '//message
   end subroutine log_warning
 
   subroutine log_error(message)
     character(len=*), intent(in) :: message
+    flush (output_unit)
     write (error_unit, '(a)') 'error: '//message
   end subroutine log_error
 
@@ -36,9 +42,9 @@ contains
     character(len=*), intent(in) :: label
     real(wp), intent(in) :: done, total
     if (verbosity >= 1 .and. total > 0) then
+      flush (output_unit)
       write (error_unit, '(a, ": ", f5.1, " %")') label, 100*min(1.0_wp, done/total)
       flush (error_unit)
     end if
-    flush (output_unit)
   end subroutine log_progress
 end module base_log

@@ -193,6 +193,7 @@ contains
         end select
       end associate
     end do
+    flush (out)   ! the summary complete before any message on standard error
   end subroutine summary_print
 
   !> Writes the summary as JSON to `path` (STATUS_IO if it cannot).

@@ -92,17 +92,20 @@ contains
     real(wp) :: gd, dni(3), dnj(3), dd(3)
     associate (fi => frames(self%frame_i), fj => frames(self%frame_j), ni => self%ni, nj => self%nj, &
                d => self%d)
-      dni = cross(fi%omega, ni)
-      dnj = cross(fj%omega, nj)
-      select case (self%kind)
+      select case (self%kind)   ! each kind forms only the rates it needs (hot: closure Jacobians)
       case (MEASURE_POINT_POINT)
         gd = 2*dot_product(d, fi%v - fj%v)                      ! (3.15)
       case (MEASURE_PLANE_POINT)
+        dni = cross(fi%omega, ni)
         dd = fj%v - fi%v
         gd = dot_product(dni, d) + dot_product(ni, dd)
       case (MEASURE_PLANE_PLANE)
+        dni = cross(fi%omega, ni)
+        dnj = cross(fj%omega, nj)
         gd = dot_product(dni, nj) + dot_product(ni, dnj)
       case default
+        dni = cross(fi%omega, ni)
+        dnj = cross(fj%omega, nj)
         dd = fj%v - fi%v
         gd = dot_product(cross(dni, nj) + cross(ni, dnj), d) + dot_product(cross(ni, nj), dd)
       end select
@@ -117,10 +120,14 @@ contains
     real(wp) :: gdd, dni(3), dnj(3), ddni(3), ddnj(3), dd(3), ddd(3)
     associate (fi => frames(self%frame_i), fj => frames(self%frame_j), ni => self%ni, nj => self%nj, &
                d => self%d)
-      dni = cross(fi%omega, ni)
-      dnj = cross(fj%omega, nj)
-      ddni = cross(fi%alpha, ni) + cross(fi%omega, dni)
-      ddnj = cross(fj%alpha, nj) + cross(fj%omega, dnj)
+      if (self%kind /= MEASURE_POINT_POINT) then
+        dni = cross(fi%omega, ni)
+        ddni = cross(fi%alpha, ni) + cross(fi%omega, dni)
+      end if
+      if (self%kind /= MEASURE_POINT_POINT .and. self%kind /= MEASURE_PLANE_POINT) then
+        dnj = cross(fj%omega, nj)
+        ddnj = cross(fj%alpha, nj) + cross(fj%omega, dnj)
+      end if
       select case (self%kind)
       case (MEASURE_POINT_POINT)
         dd = fi%v - fj%v

@@ -30,8 +30,11 @@
 !>                   change, the motion does not) and the integrator restarts.
 !> Root values need the state at (t, y): the edges only the closure, the laws
 !> positions and velocities, lift-off the whole dynamics (N depends on q'').
-!> Every right-hand side stores the root values it implies together with
-!> (t, y). A root call at the same (t, y) takes them from there. CVODE calls
+!> Every right-hand side and every root evaluation stores the root values it
+!> implies together with (t, y); the last right-hand side's are also kept
+!> apart (a root evaluation at an output time between t_(n-1) and t_n must
+!> not push out those of t_n, which CVODE asks for next). A root call at the
+!> same (t, y) as either takes them from there. CVODE calls
 !> the root functions at the end of each step, at y_n, while its last
 !> right-hand side was at the corrector's previous iterate: the same t_n and
 !> a state within the corrector's tolerance. There the stored values are
@@ -71,6 +74,10 @@ module kinetostatics_mechanism_ode
     real(wp) :: cache_t = 0
     real(wp), allocatable :: cache_y(:), cache_g(:), work_ydot(:)
     real(wp), allocatable :: root_scale(:)     ! largest |g_i| met in the run
+    ! ... and those of the last right-hand side
+    logical :: rhs_cached = .false.
+    real(wp) :: rhs_t = 0
+    real(wp), allocatable :: rhs_y(:), rhs_g(:)
     integer, allocatable :: charts(:)          ! elements whose charts are watched
     integer, allocatable :: chart_angle(:)     ! position in y of each one's deciding coordinate
     integer :: chart_changes = 0
@@ -121,11 +128,13 @@ contains
     if (.not. allocated(self%charts)) call find_charts(self)
     if (allocated(self%cache_y)) then
       if (size(self%cache_y) == self%state_size()) return
-      deallocate (self%cache_y, self%cache_g, self%work_ydot)
+      deallocate (self%cache_y, self%cache_g, self%work_ydot, self%rhs_y, self%rhs_g, self%root_scale)
     end if
     allocate (self%cache_y(self%state_size()), self%cache_g(max(self%root_count(), 1)), &
-              self%work_ydot(self%state_size()), self%root_scale(max(self%root_count(), 1)))
+              self%work_ydot(self%state_size()), self%root_scale(max(self%root_count(), 1)), &
+              self%rhs_y(self%state_size()), self%rhs_g(max(self%root_count(), 1)))
     self%cached = .false.
+    self%rhs_cached = .false.
     self%root_scale = 0
   end subroutine prepare
 
@@ -173,6 +182,7 @@ contains
     n = f + self%mechanism%ns
     self%rhs_count = self%rhs_count + 1
     self%cached = .false.
+    self%rhs_cached = .false.
     call self%mechanism%dynamics(t, y(1:f), y(f + 1:n), ydot(f + 1:n), status)
     if (.not. status%ok()) return
     ydot(1:f) = self%mechanism%rates
@@ -182,6 +192,10 @@ contains
     self%cache_t = t
     self%cache_y = y
     self%cached = .true.
+    self%rhs_t = t
+    self%rhs_y = y
+    self%rhs_g = self%cache_g
+    self%rhs_cached = .true.
   end subroutine mechanism_rhs
 
   integer function mechanism_root_count(self) result(n)
@@ -206,13 +220,21 @@ contains
     integer :: f, n, level
     if (.not. allocated(self%cache_y)) call prepare(self)
     self%root_calls = self%root_calls + 1
-    if (self%cached .and. t == self%cache_t) then
-      if (all(y == self%cache_y) .or. near_and_far_from_zero(self, y)) then
-        self%root_cache_hits = self%root_cache_hits + 1
-        call root_values(self, y, 0)   ! the user crossings from y itself
-        g = self%cache_g(1:size(g))
-        return
-      end if
+    if (serves(self%cached, self%cache_t, self%cache_y, self%cache_g)) then
+      self%root_cache_hits = self%root_cache_hits + 1
+      call root_values(self, y, 0)   ! the user crossings from y itself
+      g = self%cache_g(1:size(g))
+      return
+    end if
+    if (serves(self%rhs_cached, self%rhs_t, self%rhs_y, self%rhs_g)) then
+      self%root_cache_hits = self%root_cache_hits + 1
+      self%cache_t = self%rhs_t   ! the last right-hand side's values become the current ones
+      self%cache_y = self%rhs_y
+      self%cache_g = self%rhs_g
+      self%cached = .true.
+      call root_values(self, y, 0)
+      g = self%cache_g(1:size(g))
+      return
     end if
     f = self%mechanism%f
     n = f + self%mechanism%ns
@@ -239,18 +261,29 @@ contains
       self%cached = .false.
     end if
     g = self%cache_g(1:size(g))
+  contains
+    !> Values stored at (t_c, y_c) serve at (t, y): the same t, and y equal
+    !> or near with every value far from zero.
+    logical function serves(stored, t_c, y_c, g_c)
+      logical, intent(in) :: stored
+      real(wp), intent(in) :: t_c, y_c(:), g_c(:)
+      serves = .false.
+      if (.not. stored .or. t /= t_c) return
+      serves = all(y == y_c)
+      if (.not. serves) serves = near_and_far_from_zero(self, y, y_c, g_c)
+    end function serves
   end subroutine mechanism_roots
 
-  !> y within 1e-7 of the cached state and every stored root value far from
-  !> zero (see the module comment).
-  logical function near_and_far_from_zero(self, y) result(usable)
+  !> y within 1e-7 of a stored state y_c and every root value g_c stored
+  !> with it far from zero (see the module comment).
+  logical function near_and_far_from_zero(self, y, y_c, g_c) result(usable)
     class(mechanism_ode_t), intent(in) :: self
-    real(wp), intent(in) :: y(:)
+    real(wp), intent(in) :: y(:), y_c(:), g_c(:)
     integer :: i
-    usable = maxval(abs(y - self%cache_y)) <= 1e-7_wp*max(maxval(abs(self%cache_y)), 1.0_wp)
+    usable = maxval(abs(y - y_c)) <= 1e-7_wp*max(maxval(abs(y_c)), 1.0_wp)
     if (.not. usable) return
     do i = n_user(self) + 1, self%root_count()
-      if (abs(self%cache_g(i)) < 1e-3_wp*self%root_scale(i)) then
+      if (abs(g_c(i)) < 1e-3_wp*self%root_scale(i)) then
         usable = .false.
         return
       end if
@@ -323,6 +356,7 @@ contains
     integer :: k, i, law_action
     character(len=:), allocatable :: where
     self%cached = .false.
+    self%rhs_cached = .false.
     action = EVENT_IGNORE
     where = ' at t = '//format_short(t)//' s'
     i = 0

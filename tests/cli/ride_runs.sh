@@ -4,7 +4,9 @@
 # are refused before any work (exit status 1, no result file), each message
 # naming what is wrong: a negative mass, a start where the heels cannot reach
 # the slide (which contact and by how much), a drag sphere larger than the
-# tube, a limit in a unit of the wrong kind.
+# tube, a limit in a unit of the wrong kind. A ride that fails part way (too
+# few steps allowed) prints its whole report, the results line last, before
+# the error, also when both streams go to one file.
 set -u
 slidesim=$1
 repo=$(pwd)   # tests run from the repository root
@@ -39,6 +41,17 @@ bad back_before_start "s/u0 = 0.5, v0/u0 = 0.1, v0/" "the back cannot reach the 
 bad heels_across "s/heading0_deg = 0.0/heading0_deg = 90.0/; s/height = 1.78/height = 2.4/" "cannot reach the slide: the contact point stays"
 bad sphere_too_large "s/drag_radius = 0.5, 0.05, 0.5/drag_radius = 0.6, 0.05, 0.5/" "drag_radius(1) = 0.6 is not allowed"
 bad limit_unit "s/limit_unit     = 'm\/s',        'm\/s',   'm'/limit_unit = 'g', 'm\/s', 'm'/" "unit 'g' does not measure exit_speed"
+
+# failed part way, standard output and error into one file: the report's
+# last line ("results (INCOMPLETE) path", with its newline) comes before the error
+sed -e "s/^&solver /\&solver max_steps = 3, /" "$repo/inputs/ride/demo_slide.nml" | \
+  sed "s|'../demo_slide/slide.nml'|'$repo/inputs/demo_slide/slide.nml'|" >"$work/few_steps.nml"
+(cd "$work" && "$slidesim" -q -o few_steps.h5 few_steps.nml >few_steps.all 2>&1); got=$?
+check '[ $got = 2 ]' "few steps: exit status $got, expected 2 ($(cat "$work/few_steps.all"))"
+check 'tail -n 2 "$work/few_steps.all" | head -n 1 | grep -q "^  results (INCOMPLETE) *.*few_steps.h5$"' \
+  "few steps: the results line is not the line before the error: $(tail -n 3 "$work/few_steps.all")"
+check 'tail -n 1 "$work/few_steps.all" | grep -q "^error: ride: more than max_steps"' \
+  "few steps: the error is not the last line: $(tail -n 2 "$work/few_steps.all")"
 
 echo "$((checks - failures)) passed, $failures failed"
 [ $failures = 0 ]

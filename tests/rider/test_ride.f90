@@ -201,6 +201,7 @@ contains
       call check(tested >= 6, 'six entries/exits checked')
     end associate
     call check_drag_power(p, opt, ride)
+    call check_dynamics_reuse(p, opt, ride)
   end subroutine check_energy_balance_and_events
 
   !> The root of min(v - v_right(u), v_left(u) - v) of contact c after
@@ -304,4 +305,46 @@ contains
     end do
     call check(tested > 10, 'drag power checked at records in the water')
   end subroutine check_drag_power
+
+  !> The mechanism's dynamics at the state of its last evaluation is reused
+  !> (a record at the state a root function just saw) with the same results,
+  !> and recomputed when a law was switched or another state came between.
+  subroutine check_dynamics_reuse(p, opt, ride)
+    type(rider_params_t), intent(in) :: p
+    type(ride_options_t), intent(in) :: opt
+    type(ride_result_t), intent(in) :: ride
+    type(rider_ode_t) :: sys
+    type(status_t) :: st
+    real(wp), allocatable :: y0(:)
+    real(wp) :: qdd(3), again(3), n1(N_CONTACTS), t
+    integer :: i, c, law, reused
+    call prepare_ride(p, description%slide, opt, sys, y0, st, water%field)
+    associate (s => ride%series, m => sys%mechanism)
+      i = findloc(s%contact(1)%in_water(:s%n), 1, dim=1)   ! the pelvis in the water
+      call check(i > 0, 'a record with the pelvis in the water')
+      if (i == 0) return
+      do c = 1, N_CONTACTS
+        m%laws(sys%layout%drag(c))%law%active = s%contact(c)%in_water(i) == 1
+      end do
+      law = sys%layout%drag(1)
+      t = s%time(i)
+      call m%dynamics(t, s%state(1:3, i), s%state(4:6, i), qdd, st)
+      n1 = m%normal
+      reused = m%dynamics_reused
+      call m%dynamics(t, s%state(1:3, i), s%state(4:6, i), again, st)
+      call check(m%dynamics_reused == reused + 1 .and. all(again == qdd) .and. all(m%normal == n1), &
+                 'dynamics at the same state reused, the same results')
+      m%laws(law)%law%active = .false.
+      call m%dynamics(t, s%state(1:3, i), s%state(4:6, i), again, st)
+      call check(m%dynamics_reused == reused + 1 .and. any(again /= qdd), &
+                 'the pelvis''s drag switched off: recomputed, other accelerations')
+      m%laws(law)%law%active = .true.
+      call m%dynamics(t, s%state(1:3, i + 1), s%state(4:6, i + 1), again, st)
+      call m%dynamics(t, s%state(1:3, i), s%state(4:6, i), again, st)
+      ! 1e-12: the closure solved again from another warm start (to 1e-13 m)
+      call check(m%dynamics_reused == reused + 1 .and. maxval(abs(again - qdd)) <= 1e-12_wp*maxval(abs(qdd)), &
+                 'another state between: recomputed, the same accelerations to 1e-12')
+      call check(st%ok(), 'dynamics: '//st%text())
+    end associate
+  end subroutine check_dynamics_reuse
 end program test_ride
