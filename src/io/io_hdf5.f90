@@ -70,6 +70,9 @@ module io_hdf5
     integer :: n_written = 0
     logical :: write_failed = .false.              !< a write failed: the file is not kept
     character(len=:), allocatable :: nonfinite     !< the first dataset with NaN or Inf ('' none)
+    !> a text file kept with the result (its XDMF view): written by finish
+    !> before the result is renamed, so that both or neither are kept
+    character(len=:), allocatable :: companion_path, companion_text
   contains
     procedure :: create => result_file_create
     procedure :: write_provenance => result_file_write_provenance
@@ -88,6 +91,7 @@ module io_hdf5
     procedure :: make_scale => result_file_make_scale
     procedure :: attach_scale => result_file_attach_scale
     procedure :: attach_components => result_file_attach_components
+    procedure :: add_companion => result_file_add_companion
     procedure :: finish => result_file_finish
     procedure :: is_open => result_file_is_open
     procedure :: final_path => result_file_final_path
@@ -127,9 +131,11 @@ contains
     call h5fcreate_f(self%temporary_path, H5F_ACC_TRUNC_F, self%file_id, hdferr)
     if (hdferr /= 0) then
       self%file_id = -1
+      error = system_error_text()   ! (before remove_file can change errno)
+      if (len(error) > 0) error = ': '//error
       call remove_file(self%temporary_path)
-      call set_status(status, STATUS_IO, 'cannot create the result file "'//self%temporary_path// &
-                      '" (does its folder exist, and is it writable?)')
+      call set_status(status, STATUS_IO, 'cannot create the result file "'//self%temporary_path//'"'//error// &
+                      ' (is the disk full, is the folder writable?)')
       return
     end if
     call write_string_attribute(self%file_id, '/', 'status', 'running', hdferr)
@@ -629,7 +635,7 @@ contains
     type(status_t), intent(inout) :: status
     integer :: hdferr, err
     logical :: renamed, complete
-    character(len=:), allocatable :: text, error
+    character(len=:), allocatable :: text, error, companion_temporary
 
     if (self%file_id < 0) return
     complete = complete_asked
@@ -655,6 +661,9 @@ contains
     call write_string_attribute(self%file_id, '/', 'status_message', text, err)
     if (hdferr == 0) hdferr = err
     call h5fclose_f(self%file_id, err)
+    ! closed or not, never closed again: a second close of a file whose
+    ! flush failed (a full disk) crashes HDF5 (see discard)
+    self%file_id = -1
     if (hdferr == 0) hdferr = err
     if (hdferr /= 0) then
       call write_failure(self, 'the status', status)
@@ -662,15 +671,69 @@ contains
       complete = .false.
       return
     end if
-    self%file_id = -1
+    if (allocated(self%companion_path)) then
+      call write_temporary_text(self%companion_path, self%companion_text, companion_temporary, error)
+      if (len(error) > 0) then
+        call remove_file(self%temporary_path)
+        call set_status(status, STATUS_IO, 'cannot write "'//self%companion_path//'", the XDMF view of the '// &
+                        'result file: '//error//'; nothing is kept')
+        return
+      end if
+    end if
     call rename_file(self%temporary_path, self%path, renamed, error)
     if (.not. renamed) then
       call remove_file(self%temporary_path)
+      if (allocated(self%companion_path)) call remove_file(companion_temporary)
       complete = .false.
       call set_status(status, STATUS_IO, 'cannot rename "'//self%temporary_path//'" to "'//self%path//'": '// &
                       error//'; nothing is kept')
+      return
+    end if
+    if (allocated(self%companion_path)) then
+      call rename_file(companion_temporary, self%companion_path, renamed, error)
+      if (.not. renamed) then
+        ! an old view would describe another file
+        call remove_file(companion_temporary)
+        call remove_file(self%companion_path)
+        call set_status(status, STATUS_IO, 'the results are in "'//self%path//'", but its XDMF view "'// &
+                        self%companion_path//'" could not be renamed from "'//companion_temporary//'": '//error)
+      end if
     end if
   end subroutine result_file_finish
+
+  !> The text file `path` kept with the result (at most one: its XDMF view).
+  subroutine result_file_add_companion(self, path, text)
+    class(result_file_t), intent(inout) :: self
+    character(len=*), intent(in) :: path, text
+    self%companion_path = path
+    self%companion_text = text
+  end subroutine result_file_add_companion
+
+  !> Writes `text` to a new temporary file next to `path`; `error` is '' or
+  !> why it failed (the temporary is then removed).
+  subroutine write_temporary_text(path, text, temporary, error)
+    character(len=*), intent(in) :: path, text
+    character(len=:), allocatable, intent(out) :: temporary, error
+    integer :: unit, ios
+    character(len=256) :: msg
+    call create_unique_file(path//'.'//format_pid(process_id()), '.tmp', temporary, error)
+    if (len(temporary) == 0) return
+    open (newunit=unit, file=temporary, status='replace', action='write', access='stream', form='unformatted', &
+          iostat=ios, iomsg=msg)
+    if (ios == 0) then
+      write (unit, iostat=ios, iomsg=msg) text
+      if (ios == 0) then
+        close (unit, iostat=ios, iomsg=msg)
+      else
+        close (unit)
+      end if
+    end if
+    if (ios /= 0) then
+      error = trim(msg)
+      if (len(error) == 0) error = 'write error'
+      call remove_file(temporary)
+    end if
+  end subroutine write_temporary_text
 
   !> Closes what can be closed of a file that will not be kept and deletes
   !> it. A file whose flush failed cannot be closed a second time (HDF5 1.10

@@ -15,7 +15,7 @@
 module io_xdmf
   use base_kinds, only: wp
   use base_text, only: format_integer, format_real
-  use base_status, only: status_t, set_status, STATUS_IO
+  use base_status, only: status_t
   use io_hdf5, only: result_file_t
   implicit none (type, external)
   private
@@ -32,7 +32,7 @@ module io_xdmf
     procedure :: polyline => xdmf_polyline
     procedure :: band => xdmf_band
     procedure :: moving_points => xdmf_moving_points
-    procedure :: write => xdmf_write
+    procedure :: attach => xdmf_attach
   end type xdmf_t
 
 contains
@@ -210,21 +210,17 @@ contains
     call add(self, '      </DataItem>')
   end subroutine joined_rows
 
-  !> Closes the XML and writes it to `path`.
-  subroutine xdmf_write(self, path, status)
+  !> Closes the XML and hands it to the result file, which writes it next to
+  !> itself (xdmf_path) as it finishes: both files are kept, or neither.
+  subroutine xdmf_attach(self, file, status)
     class(xdmf_t), intent(inout) :: self
-    character(len=*), intent(in) :: path
-    type(status_t), intent(inout) :: status
-    integer :: unit, ios
-    character(len=256) :: msg
+    type(result_file_t), intent(inout) :: file
+    type(status_t), intent(in) :: status   !< nothing is attached to a file whose writes failed
+    if (.not. status%ok()) return
     call add(self, '</Domain>')
     call add(self, '</Xdmf>')
-    open (newunit=unit, file=path, status='replace', action='write', access='stream', form='unformatted', &
-          iostat=ios, iomsg=msg)
-    if (ios == 0) write (unit, iostat=ios, iomsg=msg) self%xml
-    if (ios == 0) close (unit, iostat=ios, iomsg=msg)
-    if (ios /= 0) call set_status(status, STATUS_IO, 'cannot write the XDMF file "'//path//'": '//trim(msg))
-  end subroutine xdmf_write
+    call file%add_companion(xdmf_path(file%final_path()), self%xml)
+  end subroutine xdmf_attach
 
   subroutine add(self, line)
     class(xdmf_t), intent(inout) :: self

@@ -19,7 +19,7 @@ module scenarios_geometry
   use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t, engineering
   use io_surface_grid, only: write_surface_grid, evenly_spaced
-  use io_xdmf, only: xdmf_t, xdmf_path
+  use io_xdmf, only: xdmf_t
   implicit none (type, external)
   private
   public :: run_geometry, geometry_scenario_groups
@@ -65,14 +65,12 @@ contains
     if (.not. work%ok()) call prefix_status(work, 'geometry')
     complete = work%ok()
     message = work%text()
+    call xdmf%start(file%final_path())
+    call xdmf%surface(file, 'surface', '/geometry/surface')
+    call xdmf%polyline(file, 'centerline', '/geometry/centerline/points', '/geometry/centerline')
+    call xdmf%attach(file, work)
     call file%finish(complete, message, work)
     complete = complete .and. work%ok()   ! finish refuses a file with NaN or Inf
-    if (work%ok()) then
-      call xdmf%start(file%final_path())
-      call xdmf%surface(file, 'surface', '/geometry/surface')
-      call xdmf%polyline(file, 'centerline', '/geometry/centerline/points', '/geometry/centerline')
-      call xdmf%write(xdmf_path(file%final_path()), work)
-    end if
     call summary%print()
     if (complete) then
       write (output_unit, '(a)') '  results                   '//file%final_path()
@@ -164,7 +162,11 @@ contains
     call file%attach_components('/geometry/centerline', status)
     call summary%add('centerline_length', 'centerline length', tube%length(), 'm')
     call summary%add('drop', 'height drop', points(3, 1) - points(3, n), 'm')
-    call summary%add('curvature_max', 'curvature max', maxval(chi), 'm^-1', '1/m (radius '// &
-                     engineering(1/max(maxval(chi), tiny(1.0_wp)))//' m)')
+    if (maxval(chi) > 1e-9_wp) then
+      call summary%add('curvature_max', 'curvature max', maxval(chi), 'm^-1', '1/m (radius '// &
+                       engineering(1/maxval(chi))//' m)')
+    else
+      call summary%add('curvature_max', 'curvature max', maxval(chi), 'm^-1', '1/m (straight)')
+    end if
   end subroutine write_centerline
 end module scenarios_geometry

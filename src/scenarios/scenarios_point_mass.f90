@@ -18,7 +18,7 @@ module scenarios_point_mass
   use io_hdf5, only: result_file_t, run_outcome, units_per_second
   use io_summary, only: summary_t, standard_g, engineering
   use io_surface_grid, only: write_surface_grid_around
-  use io_xdmf, only: xdmf_t, xdmf_path
+  use io_xdmf, only: xdmf_t
   implicit none (type, external)
   private
   public :: run_point_mass, build_point_mass, point_mass_groups
@@ -115,10 +115,9 @@ contains
     message = 'ok: '//outcome
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
+    if (model%series%n > 0) call write_xdmf(file, model%series%time(:model%series%n), write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
-    if (write_status%ok() .and. model%series%n > 0) call write_xdmf(file, model%series%time(:model%series%n), &
-                                                                    write_status)
     call report(model, model%series, result%stats, result%cpu, file%final_path(), run, complete, message, &
                 outcome, write_status)
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
@@ -177,7 +176,7 @@ contains
   !> The XDMF file next to the result: the surface, the path with its
   !> fields, and the mass moving over time.
   subroutine write_xdmf(file, time, status)
-    type(result_file_t), intent(in) :: file
+    type(result_file_t), intent(inout) :: file
     real(wp), intent(in) :: time(:)
     type(status_t), intent(inout) :: status
     type(xdmf_t) :: xdmf
@@ -185,7 +184,7 @@ contains
     call xdmf%surface(file, 'surface', '/geometry/surface')
     call xdmf%polyline(file, 'path', '/point_mass/position', '/point_mass')
     call xdmf%moving_points(file, 'mass', time, ['/point_mass/position'], .false.)
-    call xdmf%write(xdmf_path(file%final_path()), status)
+    call xdmf%attach(file, status)
   end subroutine write_xdmf
 
   !> The printed summary and, with --summary-json, the same numbers as JSON.

@@ -26,7 +26,7 @@ module scenarios_ride
   use io_hdf5, only: result_file_t
   use io_water_results, only: write_water_results
   use io_summary, only: summary_t, degrees
-  use io_xdmf, only: xdmf_t, xdmf_path
+  use io_xdmf, only: xdmf_t
   use scenarios_water, only: build_water, write_slide_grid
   implicit none (type, external)
   private
@@ -114,8 +114,8 @@ contains
     if (allocated(ride%outcome)) message = 'ok: '//ride%outcome
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
+    if (ride%series%n > 0) call write_xdmf(file, ride%series%time(:ride%series%n), write_status)
     call file%finish(complete, message, write_status)
-    if (write_status%ok() .and. ride%series%n > 0) call write_xdmf(file, ride%series%time(:ride%series%n), write_status)
     if (allocated(ride%outcome)) call print_report(ride, report, water_done, water%cpu, ride_cpu, &
                                                    file%final_path(), run, complete, message, write_status)
     if (.not. run_status%ok()) then
@@ -318,7 +318,7 @@ contains
   !> XDMF next to the result: the slide, the water band, the contacts' paths
   !> and the rider (its three contacts) moving.
   subroutine write_xdmf(file, time, status)
-    type(result_file_t), intent(in) :: file
+    type(result_file_t), intent(inout) :: file
     real(wp), intent(in) :: time(:)
     type(status_t), intent(inout) :: status
     type(xdmf_t) :: xdmf
@@ -333,7 +333,7 @@ contains
     call xdmf%polyline(file, 'back path', '/rider/back/position', '/rider')
     ! heels - pelvis - back as one polyline per time step: the rider's posture
     call xdmf%moving_points(file, 'rider', time, [contacts(2), contacts(1), contacts(3)], .true.)
-    call xdmf%write(xdmf_path(file%final_path()), status)
+    call xdmf%attach(file, status)
   end subroutine write_xdmf
 
   !> The ride report (stdout) and, with --summary-json, its numbers as JSON.

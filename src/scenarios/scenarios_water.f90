@@ -25,7 +25,7 @@ module scenarios_water
   use io_summary, only: summary_t, degrees
   use base_text, only: format_short, format_integer
   use io_surface_grid, only: write_surface_grid, evenly_spaced
-  use io_xdmf, only: xdmf_t, xdmf_path
+  use io_xdmf, only: xdmf_t
   implicit none (type, external)
   private
   public :: run_water, build_water, water_groups, write_slide_grid
@@ -190,9 +190,9 @@ contains
     if (result%bounded) message = 'ok: '//bounded_message(description, result)
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
+    call write_xdmf(file, description%edges, write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
-    if (write_status%ok()) call write_xdmf(file, description%edges, write_status)
     call report(description, result, file%final_path(), run, complete, message, write_status)
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
   end subroutine run_water
@@ -225,7 +225,7 @@ contains
   !> fields, and the water band with speed and height (when the edges were
   !> solved at the samples).
   subroutine write_xdmf(file, edges, status)
-    type(result_file_t), intent(in) :: file
+    type(result_file_t), intent(inout) :: file
     logical, intent(in) :: edges
     type(status_t), intent(inout) :: status
     type(xdmf_t) :: xdmf
@@ -234,7 +234,7 @@ contains
     call xdmf%polyline(file, 'streamline', '/water/position', '/water')
     if (edges) call xdmf%band(file, 'water band', '/water/right_point', '/water/left_point', &
                               [character(len=13) :: '/water/speed', '/water/height'])
-    call xdmf%write(xdmf_path(file%final_path()), status)
+    call xdmf%attach(file, status)
   end subroutine write_xdmf
 
   !> The slide surface the water ran on: the whole u range, across the

@@ -29,6 +29,53 @@ for limit in 8 40; do
   ls "$work"/full.h5* >/dev/null 2>&1 && fail "file-size limit $limit KB: files left: $(ls "$work"/full.h5*)"
 done
 
+# a real full disk: a small tmpfs (in a mount namespace of our own, where
+# the system allows one), its size stepped through the sizes at which each
+# part of the file is written (datasets, the status, the XDMF view): every
+# run ends with exit 0 and a complete new pair (.h5, .xmf) or exit 3 with
+# the old pair untouched, no temporary left, the reason named
+cat > "$work/full_disk.sh" <<'SH'
+set -u
+slidesim=$1 dir=$2 input=$3 output=$4 from=$5 to=$6 step=$7
+log=$dir.log   # the messages outside the full disk
+mount -t tmpfs -o size=4m tmpfs "$dir" || exit 97
+cd "$dir"
+cp "$input" run.nml
+"$slidesim" -q -o "$output" --set solver%duration=0.1 run.nml > /dev/null 2>&1 || { echo "FAIL old run"; exit 0; }
+old=$(cat "$output" "${output%.h5}.xmf" | sha256sum)
+used=$(du -sk . | cut -f1)
+for k in $(seq $((used + from)) "$step" $((used + to))); do
+  mount -o remount,size=${k}k "$dir"
+  "$slidesim" -q -o "$output" run.nml > "$log.out" 2> "$log.err"; got=$?
+  case $got in
+    0) h5dump -a /status "$output" 2>/dev/null | grep -q '"complete"' || echo "FAIL ${k}k: exit 0, file not complete"
+       old=$(cat "$output" "${output%.h5}.xmf" | sha256sum) ;;   # the pair the next run must keep or replace
+    3) [ "$(cat "$output" "${output%.h5}.xmf" | sha256sum)" = "$old" ] || echo "FAIL ${k}k: exit 3 and the old pair changed"
+       grep -q 'No space left on device' "$log.err" || echo "FAIL ${k}k: exit 3 without the reason: $(cat "$log.err")" ;;
+    *) echo "FAIL ${k}k: exit status $got: $(tail -c 300 "$log.err")" ;;
+  esac
+  ls ./*.tmp >/dev/null 2>&1 && { echo "FAIL ${k}k: temporary left: $(ls ./*.tmp)"; rm -f ./*.tmp; }
+  echo "ran ${k}k $got"
+done
+SH
+mkdir "$work/tmpfs"
+if unshare -m true 2>/dev/null && unshare -m mount -t tmpfs -o size=64k tmpfs "$work/tmpfs" 2>/dev/null; then
+  for spec in "$ellipsoid:pm.h5:0:480:16" "$root/inputs/geometry/helix_tube.nml:helix.h5:0:1200:64" \
+              "$root/inputs/sled/bowl.nml:sled.h5:0:1200:64"; do
+    IFS=: read -r input output from to step <<< "$spec"
+    checks=$((checks + 1))
+    # (the geometry run has no &solver: its old run is the same run)
+    [ "$output" = helix.h5 ] && sed -i 's/--set solver%duration=0.1 //' "$work/full_disk.sh"
+    result=$(unshare -m bash "$work/full_disk.sh" "$slidesim" "$work/tmpfs" "$input" "$output" "$from" "$to" "$step")
+    grep '^FAIL' <<< "$result" | while read -r line; do echo "$line ($output)"; done
+    failures=$((failures + $(grep -c '^FAIL' <<< "$result")))
+    exits=$(grep '^ran' <<< "$result" | awk '{print $3}' | sort -u | tr '\n' ' ')
+    case $exits in *0*3*|*3*0*) ;; *) fail "full disk ($output): the sizes tried gave exit statuses '$exits', not both 0 and 3" ;; esac
+  done
+else
+  echo "note: no mount namespace here (unshare -m), the small tmpfs case is not testable"
+fi
+
 # a folder we may not write in (not testable as root: root writes anyway)
 mkdir "$work/readonly"; chmod 555 "$work/readonly"
 if ! touch "$work/readonly/probe" 2>/dev/null; then
