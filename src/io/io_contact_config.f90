@@ -7,7 +7,7 @@ module io_contact_config
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_vector, only: rotation_xyz
-  use base_status, only: status_t
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use contact_model, only: contact_system_t, FRICTION_NONE, &
     FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL, FRICTION_COULOMB, LEVEL_POSITION, LEVEL_VELOCITY
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, group_count
@@ -49,9 +49,7 @@ contains
   contains
     subroutine missing(group, why)
       character(len=*), intent(in) :: group, why
-      type(group_reader_t) :: r
-      call open_group(input, group, ['name'], r, status)
-      call r%invalid('&'//group, 'none', why, status)
+      call set_status(status, STATUS_INVALID_INPUT, input%name//': &'//group//' is missing: '//why)
     end subroutine missing
   end subroutine read_contact_config
 

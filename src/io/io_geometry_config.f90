@@ -25,7 +25,7 @@ module io_geometry_config
   use geometry_placed_surface, only: placed_surface_t
   use geometry_bspline_surface, only: bspline_surface_t, bspline_from_table
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, bounds_t, format_real, &
-    format_vector, group_present
+    format_vector, group_present, where_given
   use io_csv, only: read_csv_table
   implicit none (type, external)
   private
@@ -102,8 +102,22 @@ contains
       if (.not. status%ok()) return
       tube = new_tube_surface(centerline, horizon, section, built)
       if (built%ok()) call tube%check(check_samples, built)
-      call take_build_failure(input, trim(merge('centerline    ', 'slide_elements', gkind == 'tube'))// &
-                              ' with &cross_section', built, status)
+      ! a fold or a pass through itself: the section too large for the bends
+      if (.not. built%ok()) then
+        if (gkind == 'tube') then
+          call prefix_status(built, where_given(input, 'centerline', '')//': &centerline with &cross_section')
+          call suffix(built, '; make &cross_section radius (or half_width, half_height) smaller or the '// &
+                      'bends wider (&centerline radius, pitch, points)')
+        else
+          call prefix_status(built, where_given(input, 'slide_elements', '')//': &slide_elements with '// &
+                             '&cross_section')
+          call suffix(built, '; make &cross_section radius (or half_width, half_height) smaller or the '// &
+                      'bends wider (&slide_elements radius, turns, drop)')
+        end if
+        status = built
+        if (status%code /= STATUS_IO) status%code = STATUS_INVALID_INPUT
+        return
+      end if
       if (.not. status%ok()) return
       allocate (surface, source=tube)
     case ('blended')
@@ -644,6 +658,17 @@ contains
       call check_exactly(r, 'midpoint', count(given_midpoint), n - 1, n, status)
       call check_exactly(r, 'u_99', count(given_u_99), n - 1, n, status)
     end if
+    ! where the blend of a transition reaches 99 % (new_blended_surface)
+    do i = 1, n - 1
+      if (.not. status%ok()) return
+      if (any(given_midpoint)) then
+        if (.not. u_99(i) > midpoint(i)) call r%invalid('u_99('//format_integer(i)//')', format_real(u_99(i)), &
+          'must lie after midpoint('//format_integer(i)//') = '//format_real(midpoint(i)), status)
+      else if (.not. transition(i) > 0) then
+        call r%invalid('transition('//format_integer(i)//')', format_real(transition(i)), 'a transition of '// &
+                       'length 0 needs an explicit midpoint and u_99', status)
+      end if
+    end do
     do i = 1, n
       if (.not. status%ok()) return
       if (given_c(i) .and. kind(i) /= 'ellipsoid') &
@@ -763,8 +788,14 @@ contains
     if (built%ok()) return
     status = built
     if (status%code /= STATUS_IO) status%code = STATUS_INVALID_INPUT
-    call prefix_status(status, input%name//': &'//place)
+    call prefix_status(status, where_given(input, place, '')//': &'//place)
   end subroutine take_build_failure
+
+  pure subroutine suffix(status, text)
+    type(status_t), intent(inout) :: status
+    character(len=*), intent(in) :: text
+    if (allocated(status%message)) status%message = status%message//text
+  end subroutine suffix
 
   !> 'points were' or, for one, 'point was' ('patches' -> 'patch').
   pure function noun(plural, k) result(text)

@@ -527,24 +527,26 @@ contains
 
   !> 'file:line' where the input assigns `variable` of `group` (or the
   !> group's line, or the file's name), for messages made outside a reader.
-  function where_given(input, group, variable) result(where)
+  function where_given(input, group, variable, occurrence) result(where)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: group, variable
+    integer, intent(in), optional :: occurrence   !< of a repeated group
     character(len=:), allocatable :: where
     type(group_reader_t) :: reader
-    call unchecked_reader(input, group, reader)
+    call unchecked_reader(input, group, reader, occurrence)
     where = reader%where(variable)
   end function where_given
 
   !> A reader of `group` without the check of its names (for messages).
-  subroutine unchecked_reader(input, group, reader)
+  subroutine unchecked_reader(input, group, reader, occurrence)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: group
     type(group_reader_t), intent(out) :: reader
+    integer, intent(in), optional :: occurrence
     integer :: g
     reader%source = input%name
     reader%group = lower(group)
-    g = group_index(input, group)
+    g = group_index(input, group, occurrence)
     if (g > 0) then
       reader%line = input%groups(g)%line
       reader%items = input%groups(g)%items

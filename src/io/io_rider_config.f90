@@ -106,8 +106,8 @@ contains
       call new_ride_limit(quantity(k), unit(k), minimum(k), has_min(k), maximum(k), has_max(k), &
                           norm2(config%params%gravity), config%limits(k), problem)
       if (len(problem) > 0) then
-        call r%invalid('limit '//format_integer(k), ''''//trim(quantity(k))//''' in '''//trim(unit(k))//'''', &
-                       problem, status)
+        call r%invalid('limit_quantity, limit_unit ('//format_integer(k)//')', ''''//trim(quantity(k))//''', '''// &
+                       trim(unit(k))//'''', problem, status)
         return
       end if
     end do

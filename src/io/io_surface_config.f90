@@ -94,6 +94,7 @@ contains
       call r%get('point_b', point_b, in_range(-1e6_wp, 1e6_wp, 'm'), status)
       call r%get('point_c', point_c, in_range(-1e6_wp, 1e6_wp, 'm'), status)
       if (status%ok()) local = plane_t(point_a, point_b, point_c, built)
+      if (.not. built%ok()) built%message = built%message//'; change point_a, point_b or point_c'
     case ('ellipsoid')
       call get_semi_axes(3)
       if (status%ok()) local = ellipsoid_t(a, b, c, built)
@@ -126,13 +127,24 @@ contains
           end if
         end do
         call load_input_file(input%resolve_path(geometry_file), geometry_input, status)
-        call check_known_groups(geometry_input, geometry_file_groups, status)
+        if (status%ok()) call check_known_groups(geometry_input, geometry_file_groups, status)
+        ! a file without the geometry (empty, /dev/null, another scenario's
+        ! input) is named as such, not read as a geometry of defaults
+        if (status%ok()) then   ! (nested: Fortran does not short-circuit .and.)
+          if (size(geometry_input%groups) == 0) then
+            call set_status(status, STATUS_INVALID_INPUT, geometry_input%name//' is empty: it has no namelist '// &
+                            'groups (a geometry file holds &'//needed_group(kind)//' and the groups with it)')
+          else if (.not. group_present(geometry_input, needed_group(kind))) then
+            call set_status(status, STATUS_INVALID_INPUT, geometry_input%name//' has no &'//needed_group(kind)// &
+                            ', which a '//trim(kind)//' surface needs')
+          end if
+        end if
+        if (status%ok()) call read_geometry_config(geometry_input, local, status, kind=trim(kind))
         if (.not. status%ok()) then
           call prefix_status(status, r%where('geometry_file')//': &'//g//': geometry_file = '''// &
                              trim(geometry_file)//'''')
           return
         end if
-        call read_geometry_config(geometry_input, local, status, kind=trim(kind))
       end if
     end select
     if (.not. status%ok()) return

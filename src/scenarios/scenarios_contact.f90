@@ -4,9 +4,10 @@
 !> &body, &contact) is built into one mechanism by contact_model and run by
 !> the multibody scenarios' common run (scenarios_mechanism).
 module scenarios_contact
+  use base_kinds, only: wp
   use base_status, only: status_t, prefix_status
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model
-  use io_input, only: input_text_t, check_known_groups, mark_input_failure
+  use io_input, only: input_text_t, check_known_groups, mark_input_failure, where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config, contact_groups, contact_repeatable_groups
@@ -25,25 +26,67 @@ contains
     type(contact_system_t) :: system
     type(contact_model_t), target :: model
     integer :: f, ns
+    real(wp), allocatable :: y0(:)
 
     call check_known_groups(input, contact_groups, status, repeatable=contact_repeatable_groups)
     if (status%ok()) call read_solver_config(input, solver, status)
     if (status%ok()) call read_contact_config(input, system, status)
     if (.not. status%ok()) return
     call build_contact_model(system, model, status)
+    f = model%ode%mechanism%f
+    ns = model%ode%mechanism%ns
+    ! the start is judged here too (run_mechanism does it again), so that
+    ! its failures name the &contact or &body they are about
+    if (status%ok()) then
+      y0 = model%ode%initial_state(model%y0(1:f), model%y0(f + 1:f + ns))
+      call model%ode%check_start(y0, status)
+    end if
     if (.not. status%ok()) then
-      call prefix_status(status, input%name//': contact')
+      call prefix_status(status, failure_where(input, system, status%text())//': contact')
       call mark_input_failure(status)
       return
     end if
-    f = model%ode%mechanism%f
-    ns = model%ode%mechanism%ns
     call run_mechanism('contact', input, run, solver, model%ode, model%y0(1:f), model%y0(f + 1:f + ns), &
                        model%q_units, model%beta_units, status, &
                        surface=system%shapes(first_shape(system))%surface)
   end subroutine run_contact
 
   !> The shape of the first contact's surface 1 (its grid goes into the result).
+  !> Where a failure of the model's build or start is about: the &contact or
+  !> &body (file and line) whose name the message quotes first; else the file.
+  function failure_where(input, system, message) result(where)
+    type(input_text_t), intent(in) :: input
+    type(contact_system_t), intent(in) :: system
+    character(len=*), intent(in) :: message
+    character(len=:), allocatable :: where
+    integer :: k, at, first
+    where = input%name
+    first = len(message) + 1
+    do k = 1, size(system%contacts)
+      at = quoted_at(system%contacts(k)%name)
+      if (at > 0 .and. at < first) then
+        first = at
+        where = where_given(input, 'contact', 'name', occurrence=k)//': &contact name = '''// &
+                system%contacts(k)%name//''''
+      end if
+    end do
+    do k = 1, size(system%bodies)
+      at = quoted_at(system%bodies(k)%name)
+      if (at > 0 .and. at < first) then
+        first = at
+        where = where_given(input, 'body', 'name', occurrence=k)//': &body name = '''// &
+                system%bodies(k)%name//''''
+      end if
+    end do
+  contains
+    !> The first place the message quotes `name` ('name' or 'name.u2').
+    integer function quoted_at(name)
+      character(len=*), intent(in) :: name
+      quoted_at = index(message, ''''//name//'''')
+      if (quoted_at == 0) quoted_at = index(message, ''''//name//'.')
+    end function quoted_at
+  end function failure_where
+
   pure integer function first_shape(system) result(k)
     type(contact_system_t), intent(in) :: system
     do k = 1, size(system%shapes)

@@ -6,7 +6,7 @@ module scenarios_fourbar
   use base_status, only: status_t, prefix_status
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: build_fourbar, fourbar_assembly
-  use io_input, only: input_text_t, check_known_groups, mark_input_failure
+  use io_input, only: input_text_t, check_known_groups, mark_input_failure, where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_mechanism_config, only: fourbar_config_t, read_fourbar_config
@@ -35,7 +35,8 @@ contains
     ! the assembly gives the start of the closure; the closure itself decides
     call fourbar_assembly(config%params, config%crank0, config%branch, beta0, status)
     if (.not. status%ok()) then
-      call prefix_status(status, input%name//': &fourbar: loop ''coupler-rocker''')
+      call prefix_status(status, where_given(input, 'fourbar', '')//': &fourbar: loop ''coupler-rocker''')
+      status%message = status%message//'; change a, b, c, d or crank0'
       call mark_input_failure(status)
       return
     end if
@@ -43,6 +44,7 @@ contains
     call mark_input_failure(status)
     if (.not. status%ok()) return
     call run_mechanism('fourbar', input, run, solver, sys, [config%crank0], [config%dcrank0], &
-                       [character(len=4) :: 'rad'], [character(len=4) :: 'rad', 'rad'], status)
+                       [character(len=4) :: 'rad'], [character(len=4) :: 'rad', 'rad'], status, &
+                       start_variables='crank0, dcrank0, branch')
   end subroutine run_fourbar
 end module scenarios_fourbar

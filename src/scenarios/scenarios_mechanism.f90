@@ -10,14 +10,14 @@ module scenarios_mechanism
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_recorder, only: mechanism_series_t
-  use io_input, only: input_text_t, format_real, mark_input_failure
+  use io_input, only: input_text_t, format_real, mark_input_failure, where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, check_output_count
   use io_mechanism_config, only: write_mechanism_series
   use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t, degrees, engineering
   use io_surface_grid, only: write_surface_grid_around
-  use io_xdmf, only: xdmf_t, xdmf_path
+  use io_xdmf, only: xdmf_t
   use geometry_surface, only: surface_t
   implicit none (type, external)
   private
@@ -45,7 +45,8 @@ contains
   end function mechanism_driver_options
 
   !> The common run of a multibody scenario from q0, q0'.
-  subroutine run_mechanism(scenario, input, run, solver, sys, q0, qd0, q_units, beta_units, status, surface)
+  subroutine run_mechanism(scenario, input, run, solver, sys, q0, qd0, q_units, beta_units, status, surface, &
+                           start_variables)
     character(len=*), intent(in) :: scenario
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
@@ -55,6 +56,7 @@ contains
     character(len=*), intent(in) :: q_units(:), beta_units(:)   ! units of the q and of the dependent beta
     type(status_t), intent(inout) :: status
     class(surface_t), intent(in), optional :: surface   ! the surface of the contacts, written as a grid
+    character(len=*), intent(in), optional :: start_variables   ! of &<scenario>, named when the start fails
     type(result_file_t) :: file
     type(driver_result_t) :: result
     type(status_t) :: run_status, write_status
@@ -65,7 +67,10 @@ contains
     y0 = sys%initial_state(q0, qd0)
     call sys%check_start(y0, status)
     if (.not. status%ok()) then
-      call prefix_status(status, input%name//': '//scenario)
+      ! the group of the scenario's own name holds its start
+      call prefix_status(status, where_given(input, scenario, '')//': &'//scenario//': '//scenario)
+      if (present(start_variables)) status%message = status%message//'; change the start ('// &
+                                                     start_variables//')'
       call mark_input_failure(status)
       return
     end if
@@ -97,9 +102,9 @@ contains
     message = 'ok: '//outcome
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
+    if (sys%series%n > 0) call write_xdmf(file, scenario, sys%series, write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
-    if (write_status%ok() .and. sys%series%n > 0) call write_xdmf(file, scenario, sys%series, write_status)
     call report(scenario, sys%series, result%stats, result%cpu, q_units, file%final_path(), run, complete, &
                 message, outcome, write_status)
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
@@ -109,7 +114,7 @@ contains
   !> contact's path, the bodies and the contacts (joined: the sled's bar)
   !> moving over time.
   subroutine write_xdmf(file, scenario, s, status)
-    type(result_file_t), intent(in) :: file
+    type(result_file_t), intent(inout) :: file
     character(len=*), intent(in) :: scenario
     type(mechanism_series_t), intent(in) :: s
     type(status_t), intent(inout) :: status
@@ -132,7 +137,7 @@ contains
     end do
     if (s%nb > 0) call xdmf%moving_points(file, 'bodies', s%time(:s%n), bodies, .false.)
     if (s%nc > 0) call xdmf%moving_points(file, 'contacts', s%time(:s%n), contacts, .true.)
-    call xdmf%write(xdmf_path(file%final_path()), status)
+    call xdmf%attach(file, status)
   end subroutine write_xdmf
 
   !> The printed summary (angles in degrees) and, with --summary-json, the

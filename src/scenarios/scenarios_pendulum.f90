@@ -34,6 +34,7 @@ contains
     if (.not. status%ok()) return
     n = config%params%links
     call run_mechanism('pendulum', input, run, solver, sys, config%theta0(1:n), config%dtheta0(1:n), &
-                       [character(len=4) :: 'rad', 'rad'], [character(len=4) ::], status)
+                       [character(len=4) :: 'rad', 'rad'], [character(len=4) ::], status, &
+                       start_variables='theta0, dtheta0')
   end subroutine run_pendulum
 end module scenarios_pendulum

@@ -53,6 +53,6 @@ contains
     q_units(1) = u_units; q_units(2) = v_units; q_units(3) = 'rad'   ! u, v, phi
     beta_units(1) = 'rad'; beta_units(2) = u_units; beta_units(3) = v_units   ! pitch, u2, v2
     call run_mechanism('sled', input, run, solver, sys, config%q0, config%qd0, q_units, beta_units, status, &
-                       surface=surface)
+                       surface=surface, start_variables='u0, v0, phi0, du0, dv0, dphi0')
   end subroutine run_sled
 end module scenarios_sled

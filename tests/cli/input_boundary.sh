@@ -116,9 +116,54 @@ run_case a_csv 1 'a_csv.nml:1:' 'text outside a group' '# a smooth bump'
 printf "&run scenario = 'geometry' /\n&surface kind = 'slide', geometry_file = 'the_input.nml' /\n" > "$work/the_input.nml"
 printf "&run scenario = 'point_mass', output = 'geometry_self.h5' /\n&surface kind = 'slide', geometry_file = 'the_input.nml' /\n" > "$work/geometry_self.nml"
 run_case geometry_self 1 'geometry_self.nml:2:' "geometry_file = 'the_input.nml'" 'unknown namelist group &surface'
+# files that are not inputs
 : > "$work/empty.nml"
 run_case empty 1 'empty.nml' 'is empty'
 mkdir "$work/folder.nml"
 run_case folder 3 'folder.nml' 'is a folder'
+checks=$((checks + 1))
+(cd "$work" && "$slidesim" -q -o devnull.h5 /dev/null > devnull.out 2> devnull.err); got=$?
+[ $got = 1 ] || fail "/dev/null as the input: exit $got"
+grep -q '/dev/null: the input is empty' "$work/devnull.err" || fail "/dev/null as the input: $(cat "$work/devnull.err")"
+check_files devnull 1
+
+# ... and geometry files that are not geometry inputs: each named with the
+# line of geometry_file in the input, never read as a geometry of defaults
+geometry_file_case() {   # NAME WANT GEOMETRY_FILE NEEDLE...
+  local name=$1 want=$2 file=$3; shift 3
+  printf "&run output = '%s.h5' /\n&surface kind = 'slide', geometry_file = '%s' /\n%s\n" "$name" "$file" "$mass" \
+    > "$work/$name.nml"
+  run_case "$name" "$want" "$name.nml:2: &surface: geometry_file = '$file'" "$@"
+}
+geometry_file_case gf_proc 1 /proc/self/status '/proc/self/status:1: text outside a group'
+geometry_file_case gf_csv 1 csv/grid.csv 'csv/grid.csv:1: text outside a group'
+geometry_file_case gf_binary 1 binary.nml 'binary.nml:1: byte 0x7F is not text'
+geometry_file_case gf_devnull 1 /dev/null '/dev/null is empty: it has no namelist groups' '&slide_elements'
+: > "$work/empty_geometry.nml"
+geometry_file_case gf_empty 1 empty_geometry.nml 'empty_geometry.nml is empty'
+geometry_file_case gf_folder 3 folder.nml 'is a folder'
+geometry_file_case gf_missing 3 no_such.nml 'does not exist'
+geometry_file_case gf_other 1 "$root/inputs/point_mass/ellipsoid.nml" 'ellipsoid.nml:7: unknown namelist group &solver'
+geometry_file_case gf_tube 1 "$root/inputs/geometry/helix_tube.nml" \
+  'helix_tube.nml has no &slide_elements, which a slide surface needs'
+# an error inside the geometry file names both places
+sed -e 's/radius = 0.52/radius = -0.52/' "$root/inputs/design/second_slide.nml" > "$work/bad_slide.nml"
+geometry_file_case gf_bad_value 1 bad_slide.nml 'bad_slide.nml:' '&cross_section' 'radius(1) = -0.52 is not allowed'
+
+# a blend whose transition has no length (the blend would have no width)
+printf "&run scenario = 'geometry', output = 'blend_zero.h5' /\n&geometry kind = 'blended' /\n&blended n_patches = 2, kind = 2*'elliptic_cylinder'\n  transition = 0.0 /\n" > "$work/blend_zero.nml"
+run_case blend_zero 1 'blend_zero.nml:4:' '&blended' 'transition(1) = 0' 'needs an explicit midpoint and u_99'
+printf "&run scenario = 'geometry', output = 'blend_u99.h5' /\n&geometry kind = 'blended' /\n&blended n_patches = 2, kind = 2*'elliptic_cylinder'\n  transition = 1.0, midpoint = 2.0, u_99 = 1.5 /\n" > "$work/blend_u99.nml"
+run_case blend_u99 1 'blend_u99.nml:4:' '&blended' 'u_99(1) = 1.5' 'must lie after midpoint(1) = 2.0'
+
+# contact models that cannot start name the &contact or &body they are about
+sed -e 's/a = 0.025, b = 0.033/a = 0.025, b = 1.5/' -e "s|output = .*|output = 'egg_lifts.h5'|" \
+  "$root/inputs/contact/egg.nml" > "$work/egg_lifts.nml"
+run_case egg_lifts 1 'egg_lifts.nml:35: &contact name = '"'egg_on_table'" 'does not press'
+sed -e 's/angular_velocity = 0.0, 0.0, 150.0/angular_velocity = 0.0, 0.0, 150.0, velocity = 0, 0, -1/' \
+  -e "s|output = .*|output = 'egg_sinks.h5'|" "$root/inputs/contact/egg.nml" > "$work/egg_sinks.nml"
+run_case egg_sinks 1 'egg_sinks.nml:26: &body name = '"'egg'" 'start velocities are not consistent'
+printf "&run scenario = 'contact', output = 'no_contact.h5' /\n&shape name = 'table', kind = 'plane' /\n" > "$work/no_contact.nml"
+run_case no_contact 1 'no_contact.nml: &contact is missing: a contact scenario needs at least one &contact'
 
 finish

@@ -9,9 +9,16 @@ that pass also runs fully, with a short duration. Every run must:
 
   - end by itself (no signal, within the time limit);
   - exit 0, 1, 2 or 3, with its documented meaning: 0 a complete result file
-    without NaN or Inf, 1 no file at all and a message naming the input file
-    and a line or a group, 2 a file marked incomplete, 3 no file kept;
-  - leave no temporary file.
+    without NaN or Inf, 1 no file at all and a message naming the input file,
+    a line or a group, and a variable of the input (unless the message is
+    about the file's structure: a group not closed, text outside a group),
+    2 a file marked incomplete, 3 no file kept;
+  - leave no temporary file;
+  - never refuse in the run (exit 1) what --check passed: --check builds
+    the models.
+
+The geometry files of the contact inputs (*.geo) are mutated in place and
+run through the input that names them.
 
 usage: mutants.py SLIDESIM ROOT [--count N] [--seed S] [--full-share F]
 """
@@ -126,13 +133,36 @@ def non_finite(path):
     return (status.decode() if isinstance(status, bytes) else status), bad
 
 
-def names_the_input(message, name):
-    """An exit-1 message names the input file and a line of it, or a group,
-    or says why there is nothing to name (an empty input)."""
+# exit-1 messages about the structure of the file, where no variable is involved
+STRUCTURAL = re.compile(r'is not closed|text outside a group|is empty|is not text|&end without|'
+                        r'unknown namelist group|no &run group|appears more than once|without "=" and a value|'
+                        r'unexpected "|not a namelist|expected a variable name|is missing: |without a group name')
+# how a message names a variable: "&group: var ...", "var = value", "var(i) = value", unknown variable "var"
+VARIABLE_NAMED = [re.compile(r'&[a-z_]+: ([a-z_][a-z0-9_]*)'),
+                  re.compile(r'(?<![\w&%])([a-z_][a-z0-9_]*)(?:\([^)]*\))? = '),
+                  re.compile(r'variable "([a-z_][a-z0-9_]*)"'),
+                  re.compile(r'&[a-z_]+ ([a-z_][a-z0-9_]*)'),
+                  re.compile(r'subscript ([a-z_][a-z0-9_]*)\('),
+                  re.compile(r'change (?:the start \()?([a-z_][a-z0-9_]*)')]
+
+
+def names_the_input(message, name, variables):
+    """An exit-1 message names the input file and a line of it, or a group;
+    and a variable of the input, unless it is about the file's structure
+    (a group not closed, text outside a group, an empty file ...)."""
     if name not in message:
         return False
-    return bool(re.search(re.escape(name) + r':\d+:', message) or re.search(r'&[a-z_]+', message)
-                or 'is empty' in message)
+    if not (re.search(re.escape(name) + r':\d+:', message) or re.search(r'&[a-z_]+', message)
+            or 'is empty' in message):
+        return False
+    if STRUCTURAL.search(message):
+        return True
+    return any(m.group(1) in variables for pattern in VARIABLE_NAMED for m in pattern.finditer(message))
+
+
+def variable_names(*texts):
+    """The variables the texts assign (lower case)."""
+    return {m.group(1).lower() for text in texts for m in NAME.finditer(text.lower())}
 
 
 def main():
@@ -156,19 +186,29 @@ def main():
         # the inputs tree copied, so that relative paths (geometry files, CSV) resolve
         tree = os.path.join(work, 'inputs')
         shutil.copytree(os.path.join(args.root, 'inputs'), tree)
-        originals = sorted(os.path.join(d, f) for d, _, fs in os.walk(tree) for f in fs if f.endswith('.nml'))
+        originals = sorted(os.path.join(d, f) for d, _, fs in os.walk(tree) for f in fs
+                           if f.endswith('.nml') or f.endswith('.geo'))
+        inputs = [o for o in originals if o.endswith('.nml')]
         for number in range(args.count):
             original = originals[number % len(originals)]
             with open(original, encoding='utf-8') as f:
                 text = f.read()
             what, mutant = mutate(text, rng)
-            folder = os.path.dirname(original)
-            name = f'mutant_{number:04d}.nml'
-            path = os.path.join(folder, name)
+            label = f'mutant {number} ({os.path.relpath(original, tree)}: {what})'
             out = os.path.join(work, f'mutant_{number:04d}.h5')
+            if original.endswith('.geo'):
+                # a geometry file: mutated in place, run through the input that names it
+                runner = next(i for i in inputs if "'" + os.path.relpath(original, os.path.dirname(i)) + "'"
+                              in open(i, encoding='utf-8').read())
+                path, folder, name = original, os.path.dirname(runner), os.path.basename(runner)
+                named, context = os.path.basename(original), open(runner, encoding='utf-8').read()
+            else:
+                folder = os.path.dirname(original)
+                name = f'mutant_{number:04d}.nml'
+                path, named, context = os.path.join(folder, name), name, ''
+            variables = variable_names(text, mutant, context)
             with open(path, 'w', encoding='utf-8', errors='surrogateescape') as f:
                 f.write(mutant)
-            label = f'mutant {number} ({os.path.relpath(original, tree)}: {what})'
 
             def run(extra, timeout, phase):
                 try:
@@ -191,8 +231,11 @@ def main():
                 if p.returncode == 1:
                     if kept:
                         failures.append(f'{label}, {phase}: exit 1 but a result file was written')
-                    if not names_the_input(err, name):
-                        failures.append(f'{label}, {phase}: exit-1 message names no line or group: {err[:300]}')
+                    if not names_the_input(err, named, variables):
+                        failures.append(f'{label}, {phase}: exit-1 message names no line, group or variable: '
+                                        f'{err[:300]}')
+                    if phase == 'run':
+                        failures.append(f'{label}: --check passed an input that the run refuses: {err[:300]}')
                 elif p.returncode == 3:
                     if kept:
                         failures.append(f'{label}, {phase}: exit 3 but a result file was kept')
@@ -224,8 +267,15 @@ def main():
                     extra = ['--set', 'grid%n_u=40', '--set', 'grid%n_v=12', '--set', 'grid%n_frames=40']
                 elif scenario:
                     extra = ['--set', 'solver%duration=0.5']
-                run(extra, args.run_timeout, 'run')
-            os.remove(path)
+                # the short run is another input: checked as such first
+                code, _ = run(['--check', *extra], args.check_timeout, 'check')
+                if code == 0:
+                    run(extra, args.run_timeout, 'run')
+            if original.endswith('.geo'):
+                with open(original, 'w', encoding='utf-8') as f:
+                    f.write(text)
+            else:
+                os.remove(path)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     summary = ', '.join(f'{phase} exit {code}: {n}' for (phase, code), n in sorted(counts.items()))
