@@ -8,7 +8,8 @@
 !> --output=FILE); '-' names standard input; '--' ends the options.
 program slidesim
   use base_status, only: status_t, STATUS_OK, STATUS_INVALID_INPUT, STATUS_IO
-  use base_log, only: log_error, set_verbosity
+  use base_log, only: log_error, set_verbosity, set_progress_interval
+  use base_kinds, only: wp
   use scenarios_registry, only: run_input_file, run_default, print_scenarios, slidesim_version, &
                                 default_input, scenario_template, scenario_names
   use io_run_config, only: run_config_t
@@ -71,6 +72,9 @@ program slidesim
       if (index(value, '%') == 0 .or. index(value, '=') == 0) &
         call usage_error('--set '//value//': write --set group%variable=value, e.g. --set solver%rtol=1e-8')
       overrides = [character(len=max(len(overrides), len(value))) :: overrides, value]
+    case ('--progress')
+      call take_value()
+      call set_progress_interval(seconds(value))
     case ('--check')
       call no_value()
       cli%check_only = .true.
@@ -117,6 +121,21 @@ program slidesim
   end if
 
 contains
+
+  !> The value of --progress: seconds, a number > 0 (at most a day).
+  function seconds(text) result(x)
+    character(len=*), intent(in) :: text
+    real(wp) :: x
+    integer :: io
+    character(len=*), parameter :: allowed = ': give the seconds between progress lines, a number > 0 '// &
+                                             'and <= 86400'
+    io = 1
+    x = 0
+    ! digits only (no NaN, no Inf); the range is judged once x holds a number
+    if (len_trim(text) > 0 .and. verify(trim(text), '0123456789.eE+-') == 0) read (text, *, iostat=io) x
+    if (io /= 0) call usage_error('--progress '//text//allowed)
+    if (.not. (x > 0 .and. x <= 86400)) call usage_error('--progress '//text//allowed)
+  end function seconds
 
   !> Command-line argument i, of any length.
   function argument(i) result(text)
@@ -168,6 +187,8 @@ contains
     print '(a)', '  --summary-json FILE       also write the summary''s numbers as JSON to FILE'
     print '(a)', '  --default-input [SCENARIO] print the built-in default input, or a commented'
     print '(a)', '                            template of SCENARIO'
+    print '(a)', '  --progress SECONDS        wall-clock seconds between progress lines of long'
+    print '(a)', '                            runs (default 2)'
     print '(a)', '  -q, --quiet               no progress messages'
     print '(a)', '  -h, --help                this help'
     print '(a)', '  -V, --version             the version'

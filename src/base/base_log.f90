@@ -8,8 +8,12 @@ module base_log
   implicit none (type, external)
   private
   public :: log_info, log_warning, log_error, log_progress, set_verbosity, verbosity
+  public :: set_progress_interval, progress_interval
 
   integer :: verbosity = 1   !< 0 quiet, 1 normal, 2 verbose; set once from the command line
+  !> wall-clock seconds between two progress lines of a long run; set once
+  !> from the command line (slidesim --progress)
+  real(wp) :: progress_seconds = 2
 
 contains
 
@@ -17,6 +21,17 @@ contains
     integer, intent(in) :: level
     verbosity = level
   end subroutine set_verbosity
+
+  subroutine set_progress_interval(seconds)
+    real(wp), intent(in) :: seconds
+    progress_seconds = seconds
+  end subroutine set_progress_interval
+
+  !> Wall-clock seconds between two progress lines (2 unless set).
+  function progress_interval() result(seconds)
+    real(wp) :: seconds
+    seconds = progress_seconds
+  end function progress_interval
 
   subroutine log_info(message)
     character(len=*), intent(in) :: message

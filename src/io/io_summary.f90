@@ -287,8 +287,11 @@ contains
       if (text(1:1) == '.') text = '0'//text
       if (text(1:2) == '-.') text = '-0'//text(2:)
       if (text(len(text):) == '.') text = text(:len(text) - 1)
-    else
+    else if (abs(x) >= 1e-99_wp .and. abs(x) < 1e100_wp) then
       write (buffer, '(es11.4)') x
+      text = trim(adjustl(buffer))
+    else
+      write (buffer, '(es12.4e3)') x   ! three exponent digits: es11.4 drops the E
       text = trim(adjustl(buffer))
     end if
   end function engineering

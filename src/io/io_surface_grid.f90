@@ -3,8 +3,10 @@
 !> h5py shape (n_u, n_v) (Fortran (n_v, n_u)): what the plot scripts draw and
 !> the XDMF file shows as a structured grid.
 module io_surface_grid
-  use base_kinds, only: wp
+  use base_kinds, only: wp, int64
   use base_status, only: status_t
+  use base_text, only: format_integer
+  use base_log, only: log_info, progress_interval
   use geometry_surface, only: surface_t, surface_point_t
   use io_hdf5, only: result_file_t
   implicit none (type, external)
@@ -35,7 +37,7 @@ contains
     character(len=*), parameter :: g = surface_grid_group
     if (.not. status%ok()) return
     allocate (x(size(v), size(u)), y(size(v), size(u)), z(size(v), size(u)))
-    call surface%points_on_grid(u, v, x, y, z, status)
+    call points_with_progress(surface, u, v, x, y, z, status)
     if (.not. status%ok()) return
     call surface%parameter_units(u_units, v_units)
     call file%write_vector(g//'/u', u, u_units, 'grid values of the surface parameter u', status)
@@ -48,6 +50,32 @@ contains
     call file%attach_scale(g//'/u', g, status, axis=0)
     call file%attach_scale(g//'/v', g, status, axis=1)
   end subroutine write_surface_grid
+
+  !> The grid points, a block of u values at a time with a progress line
+  !> every few seconds (a large grid takes tens of seconds).
+  subroutine points_with_progress(surface, u, v, x, y, z, status)
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: u(:), v(:)
+    real(wp), intent(out) :: x(:, :), y(:, :), z(:, :)
+    type(status_t), intent(inout) :: status
+    integer, parameter :: blocks = 100
+    integer :: first, last, step
+    integer(int64) :: clock_rate, clock_last, clock_now
+    call system_clock(clock_last, clock_rate)
+    step = max(1, size(u)/blocks)
+    do first = 1, size(u), step
+      last = min(size(u), first + step - 1)
+      call surface%points_on_grid(u(first:last), v, x(:, first:last), y(:, first:last), z(:, first:last), &
+                                  status)
+      if (.not. status%ok()) return
+      call system_clock(clock_now)
+      if (real(clock_now - clock_last, wp) >= progress_interval()*real(clock_rate, wp) .and. last < size(u)) then
+        clock_last = clock_now
+        call log_info('surface grid: '//format_integer(nint(100*real(last, wp)/size(u)))//' % ('// &
+                      format_integer(last)//' of '//format_integer(size(u))//' u values)')
+      end if
+    end do
+  end subroutine points_with_progress
 
   !> The surface around a path (u_path, v_path) on it: its whole parameter
   !> box where that is finite (a closed tube, an ellipsoid), else the path's

@@ -27,7 +27,7 @@ module numerics_event_driver
   use base_kinds, only: wp, int64
   use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_SOLVER
-  use base_log, only: log_info
+  use base_log, only: log_info, progress_interval
   use numerics_ode, only: ode_system_t, ode_options_t, ode_stats_t, ode_integrator_t, ODE_ADAMS
   implicit none (type, external)
   private
@@ -69,7 +69,9 @@ module numerics_event_driver
     integer(int64) :: max_steps_total = 0     !< internal steps in all; 0: no limit
     real(wp) :: min_mean_step = 0             !< s; a smaller mean step after guard_steps fails the run
     integer(int64) :: guard_steps = 20000     !< steps before min_mean_step is judged
-    real(wp) :: progress_seconds = 2          !< wall-clock s between progress lines; <= 0: none
+    !> wall-clock s between progress lines; 0: none; < 0: the program's
+    !> setting (base_log progress_interval: 2 s unless slidesim --progress)
+    real(wp) :: progress_seconds = -1
     character(len=:), allocatable :: label    !< names the run in progress lines and messages
   end type driver_options_t
 
@@ -273,11 +275,13 @@ contains
     end subroutine check_runaway
 
     subroutine report_progress()
-      real(wp) :: fraction
+      real(wp) :: fraction, interval
       character(len=:), allocatable :: text
-      if (.not. options%progress_seconds > 0) return
+      interval = options%progress_seconds
+      if (interval < 0) interval = progress_interval()
+      if (.not. interval > 0) return
       call system_clock(clock_now)
-      if (real(clock_now - clock_last, wp) < options%progress_seconds*real(clock_rate, wp)) return
+      if (real(clock_now - clock_last, wp) < interval*real(clock_rate, wp)) return
       clock_last = clock_now
       call system%progress(t, y, options%t_start, options%t_end, fraction, text)
       if (fraction >= 0) then

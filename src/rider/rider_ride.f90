@@ -46,7 +46,7 @@ module rider_ride
     real(wp) :: output_step = 0.01_wp     ! s
     real(wp) :: max_duration = 600        ! s, a bound on the ride (it normally ends at the slide's end)
     real(wp) :: min_speed = 0.05_wp       ! m/s, below it the rider has stalled
-    real(wp) :: progress_seconds = 2      ! s of wall clock between progress lines (<= 0: none)
+    real(wp) :: progress_seconds = -1     ! wall-clock s between progress lines (0: none; < 0: slidesim's)
   end type ride_options_t
 
   !> One contact over the ride (n samples).
