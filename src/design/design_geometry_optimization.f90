@@ -26,7 +26,8 @@
 !> All rides of one evaluation, and of all difference points, are
 !> independent: they run in `threads` OpenMP threads, with the same numbers.
 module design_geometry_optimization
-  use base_kinds, only: wp
+  use base_kinds, only: wp, int64
+  use base_log, only: log_info, progress_interval
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use base_text, only: format_short, format_integer
@@ -96,6 +97,8 @@ module design_geometry_optimization
     type(optimization_setup_t) :: setup
     real(wp), allocatable :: lambda(:)    !< augmented Lagrangian multipliers
     integer :: mode = CONSTRAINT_PENALTY
+    integer :: designs = 0                    !< designs evaluated so far (progress lines)
+    integer(int64) :: clock_last = -1         !< system_clock of the last progress line
   contains
     procedure :: residuals => problem_residuals
     procedure :: residuals_batch => problem_residuals_batch
@@ -244,7 +247,23 @@ contains
     r = 0
     call evaluate_design(self%setup, p, evaluation, status)
     if (status%ok()) call residuals_of(self, evaluation, r)
+    call progress(self, 1)
   end subroutine problem_residuals
+
+  !> A progress line every few seconds of a long optimisation (base_log's
+  !> progress_interval): how many designs have been evaluated.
+  subroutine progress(self, evaluated)
+    class(optimization_problem_t), intent(inout) :: self
+    integer, intent(in) :: evaluated
+    integer(int64) :: now, rate
+    self%designs = self%designs + evaluated
+    call system_clock(now, rate)
+    if (self%clock_last < 0) self%clock_last = now
+    if (real(now - self%clock_last, wp) < progress_interval()*real(rate, wp)) return
+    self%clock_last = now
+    call log_info('optimize: '//format_integer(self%designs)//' designs evaluated ('// &
+                  format_integer(self%designs*size(self%setup%start_angles))//' rides)')
+  end subroutine progress
 
   !> All rides of all points in one parallel loop.
   subroutine problem_residuals_batch(self, p, r, statuses)
@@ -287,6 +306,7 @@ contains
       end do
       if (statuses(k)%ok()) call residuals_of(self, evaluations(k), r(:, k))
     end do
+    call progress(self, np)
   end subroutine problem_residuals_batch
 
   !> Optimises the design from its start points (table 4.12 "before").

@@ -15,10 +15,10 @@ module scenarios_optimize
     evaluate_design, optimize_slide, design_points, build_design_slide
   use geometry_tube, only: tube_surface_t
   use geometry_curve, only: curve_point_t
-  use io_input, only: input_text_t, check_known_groups, group_present
+  use io_input, only: input_text_t, check_known_groups, group_present, where_given
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_grid, only: write_surface_grid, evenly_spaced
-  use io_xdmf, only: xdmf_t, xdmf_path
+  use io_xdmf, only: xdmf_t
   use io_run_config, only: run_config_t
   use io_optimization_config, only: read_optimization_config
   use io_hdf5, only: result_file_t, run_outcome
@@ -59,7 +59,8 @@ contains
     ! the start design must be buildable and rideable: bad input otherwise
     call evaluate_design(setup, start_x(setup), before, status, keep_series=.true.)
     if (.not. status%ok()) then
-      call prefix_status(status, input%name//': &optimize: the start design')
+      call prefix_status(status, where_given(input, 'optimize', '')//': &optimize: the start design')
+      status%message = status%message//'; change points, radius or start_angles_deg (or &solver duration)'
       status%code = STATUS_INVALID_INPUT
       return
     end if
@@ -77,9 +78,9 @@ contains
     message = 'ok'
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
+    call write_xdmf(file, size(setup%start_angles), run_status%ok(), write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()
-    if (write_status%ok()) call write_xdmf(file, size(setup%start_angles), run_status%ok(), write_status)
     if (run_status%ok()) call report(setup, result, cpu1 - cpu0, file%final_path(), run, complete, message, &
                                      write_status)
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
@@ -191,7 +192,7 @@ contains
 
   !> The XDMF file: the slide and every ride's path, before and after.
   subroutine write_xdmf(file, n, optimized, status)
-    type(result_file_t), intent(in) :: file
+    type(result_file_t), intent(inout) :: file
     integer, intent(in) :: n
     logical, intent(in) :: optimized
     type(status_t), intent(inout) :: status
@@ -208,7 +209,7 @@ contains
         call xdmf%polyline(file, 'optimum, ride '//format_integer(k), r//'/position', r)
       end if
     end do
-    call xdmf%write(xdmf_path(file%final_path()), status)
+    call xdmf%attach(file, status)
   end subroutine write_xdmf
 
   !> The start angles of the rides of an evaluation.

@@ -265,6 +265,8 @@ def main():
                 extra = []
                 if scenario and scenario.group(1) == 'geometry':
                     extra = ['--set', 'grid%n_u=40', '--set', 'grid%n_v=12', '--set', 'grid%n_frames=40']
+                elif scenario and scenario.group(1) == 'optimize':
+                    extra = ['--set', 'optimize%ftol=0.1', '--set', 'optimize%xtol=0.1']   # a few iterations
                 elif scenario:
                     extra = ['--set', 'solver%duration=0.5']
                 # the short run is another input: checked as such first

@@ -22,7 +22,8 @@ run_case rest_bdf 0
 grep -q 'stopped at *the end of the simulated time' "$work/rest_bdf.out" || fail "rest_bdf: $(cat "$work/rest_bdf.out")"
 
 # progress lines in every scenario (the water's and the ride's as the share
-# of the slide covered, the others as the share of the time)
+# of the slide covered, the optimisation as designs evaluated, the others as
+# the share of the time)
 progress() {   # INPUT PATTERN [--set ...]
   local input=$1 pattern=$2; shift 2
   checks=$((checks + 1))
@@ -42,6 +43,7 @@ progress contact/egg.nml '^contact: [0-9.]+ % \(t = ' "${short[@]}"
 progress water/demo_slide.nml '^water: [0-9.]+ % \(t = .* s, u = ' "${short[@]}"
 progress ride/demo_slide.nml '^ride: [0-9.]+ % \(t = .* m down the slide\)' "${short[@]}"
 grep -qE '^water: [0-9.]+ %' "$work/ride_demo_slide.err" || fail "progress ride: no line of its water stage"
+progress design/optimize_table_4_12.nml '^optimize: [0-9]+ designs evaluated \([0-9]+ rides\)'
 progress geometry/helix_tube.nml '^surface grid: [0-9]+ % \([0-9]+ of 400 u values\)'
 # without --progress: none on a short run; -q: none at all
 checks=$((checks + 1))
