@@ -714,7 +714,7 @@ contains
   subroutine write_temporary_text(path, text, temporary, error)
     character(len=*), intent(in) :: path, text
     character(len=:), allocatable, intent(out) :: temporary, error
-    integer :: unit, ios
+    integer :: unit, ios, ignored
     character(len=256) :: msg
     call create_unique_file(path//'.'//format_pid(process_id()), '.tmp', temporary, error)
     if (len(temporary) == 0) return
@@ -725,7 +725,7 @@ contains
       if (ios == 0) then
         close (unit, iostat=ios, iomsg=msg)
       else
-        close (unit)
+        close (unit, iostat=ignored)   ! (without iostat a failing close would stop the program)
       end if
     end if
     if (ios /= 0) then

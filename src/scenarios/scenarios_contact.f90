@@ -51,7 +51,6 @@ contains
                        surface=system%shapes(first_shape(system))%surface)
   end subroutine run_contact
 
-  !> The shape of the first contact's surface 1 (its grid goes into the result).
   !> Where a failure of the model's build or start is about: the &contact or
   !> &body (file and line) whose name the message quotes first; else the file.
   function failure_where(input, system, message) result(where)
@@ -59,26 +58,28 @@ contains
     type(contact_system_t), intent(in) :: system
     character(len=*), intent(in) :: message
     character(len=:), allocatable :: where
-    integer :: k, at, first
+    integer :: k, first
     where = input%name
     first = len(message) + 1
     do k = 1, size(system%contacts)
-      at = quoted_at(system%contacts(k)%name)
-      if (at > 0 .and. at < first) then
-        first = at
-        where = where_given(input, 'contact', 'name', occurrence=k)//': &contact name = '''// &
-                system%contacts(k)%name//''''
-      end if
+      call consider('contact', k, system%contacts(k)%name)
     end do
     do k = 1, size(system%bodies)
-      at = quoted_at(system%bodies(k)%name)
-      if (at > 0 .and. at < first) then
-        first = at
-        where = where_given(input, 'body', 'name', occurrence=k)//': &body name = '''// &
-                system%bodies(k)%name//''''
-      end if
+      call consider('body', k, system%bodies(k)%name)
     end do
   contains
+    !> The k-th &group, named `name`, if the message quotes it first so far.
+    subroutine consider(group, k, name)
+      character(len=*), intent(in) :: group, name
+      integer, intent(in) :: k
+      integer :: at
+      at = quoted_at(name)
+      if (at > 0 .and. at < first) then
+        first = at
+        where = where_given(input, group, 'name', occurrence=k)//': &'//group//' name = '''//name//''''
+      end if
+    end subroutine consider
+
     !> The first place the message quotes `name` ('name' or 'name.u2').
     integer function quoted_at(name)
       character(len=*), intent(in) :: name
@@ -87,6 +88,7 @@ contains
     end function quoted_at
   end function failure_where
 
+  !> The shape of the first contact's surface 1 (its grid goes into the result).
   pure integer function first_shape(system) result(k)
     type(contact_system_t), intent(in) :: system
     do k = 1, size(system%shapes)
