@@ -14,6 +14,7 @@ program slidesim
                                 default_input, scenario_template, scenario_names
   use io_run_config, only: run_config_t
   use io_system, only: ignore_file_size_signal
+  use io_namelist, only: nml_value_t, read_real_token, NUMBER_OK
   implicit none (type, external)
 
   type(status_t) :: status
@@ -126,14 +127,12 @@ contains
   function seconds(text) result(x)
     character(len=*), intent(in) :: text
     real(wp) :: x
-    integer :: io
+    integer :: outcome
     character(len=*), parameter :: allowed = ': give the seconds between progress lines, a number > 0 '// &
                                              'and <= 86400'
-    io = 1
-    x = 0
-    ! digits only (no NaN, no Inf); the range is judged once x holds a number
-    if (len_trim(text) > 0 .and. verify(trim(text), '0123456789.eE+-') == 0) read (text, *, iostat=io) x
-    if (io /= 0) call usage_error('--progress '//text//allowed)
+    ! read as the input's numbers are: no NaN or Inf, no exponent that would overflow
+    call read_real_token(nml_value_t(text=trim(text)), x, outcome)
+    if (outcome /= NUMBER_OK) call usage_error('--progress '//text//allowed)
     if (.not. (x > 0 .and. x <= 86400)) call usage_error('--progress '//text//allowed)
   end function seconds
 

@@ -65,10 +65,12 @@ contains
     if (.not. work%ok()) call prefix_status(work, 'geometry')
     complete = work%ok()
     message = work%text()
-    call xdmf%start(file%final_path())
-    call xdmf%surface(file, 'surface', '/geometry/surface')
-    call xdmf%polyline(file, 'centerline', '/geometry/centerline/points', '/geometry/centerline')
-    call xdmf%attach(file, work)
+    if (work%ok()) then   ! (the view of datasets that were written)
+      call xdmf%start(file%final_path())
+      call xdmf%surface(file, 'surface', '/geometry/surface')
+      call xdmf%polyline(file, 'centerline', '/geometry/centerline/points', '/geometry/centerline')
+      call xdmf%attach(file, work)
+    end if
     call file%finish(complete, message, work)
     complete = complete .and. work%ok()   ! finish refuses a file with NaN or Inf
     call summary%print()

@@ -102,7 +102,7 @@ contains
     message = 'ok: '//outcome
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
-    if (sys%series%n > 0) call write_xdmf(file, scenario, sys%series, write_status)
+    if (write_status%ok() .and. sys%series%n > 0) call write_xdmf(file, scenario, sys%series, write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
     call report(scenario, sys%series, result%stats, result%cpu, q_units, file%final_path(), run, complete, &

@@ -78,7 +78,7 @@ contains
     message = 'ok'
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
-    call write_xdmf(file, size(setup%start_angles), run_status%ok(), write_status)
+    if (write_status%ok()) call write_xdmf(file, size(setup%start_angles), run_status%ok(), write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()
     if (run_status%ok()) call report(setup, result, cpu1 - cpu0, file%final_path(), run, complete, message, &

@@ -115,7 +115,8 @@ contains
     message = 'ok: '//outcome
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
-    if (model%series%n > 0) call write_xdmf(file, model%series%time(:model%series%n), write_status)
+    if (write_status%ok() .and. model%series%n > 0) call write_xdmf(file, model%series%time(:model%series%n), &
+                                                                    write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
     call report(model, model%series, result%stats, result%cpu, file%final_path(), run, complete, message, &

@@ -114,7 +114,8 @@ contains
     if (allocated(ride%outcome)) message = 'ok: '//ride%outcome
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
-    if (ride%series%n > 0) call write_xdmf(file, ride%series%time(:ride%series%n), write_status)
+    if (write_status%ok() .and. ride%series%n > 0) call write_xdmf(file, ride%series%time(:ride%series%n), &
+                                                                   write_status)
     call file%finish(complete, message, write_status)
     if (allocated(ride%outcome)) call print_report(ride, report, water_done, water%cpu, ride_cpu, &
                                                    file%final_path(), run, complete, message, write_status)

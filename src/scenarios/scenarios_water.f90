@@ -190,7 +190,7 @@ contains
     if (result%bounded) message = 'ok: '//bounded_message(description, result)
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
-    call write_xdmf(file, description%edges, write_status)
+    if (write_status%ok()) call write_xdmf(file, description%edges, write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
     call report(description, result, file%final_path(), run, complete, message, write_status)
