@@ -28,7 +28,7 @@ module scenarios_sweep
   use water_run, only: new_streamline
   use water_streamline, only: streamline_t
   use scenarios_water, only: build_water, write_slide_grid
-  use io_xdmf, only: xdmf_t, xdmf_path
+  use io_xdmf, only: xdmf_t
   use scenarios_ride, only: ride_groups, check_sphere_radii
   implicit none (type, external)
   private
@@ -128,8 +128,8 @@ contains
     message = 'ok: '//format_integer(result%n)//' rides, '//format_integer(count(result%status == RIDE_FAILED))// &
               ' failed'
     if (.not. write_status%ok()) message = write_status%text()
-    call file%finish(write_status%ok(), message, write_status)
     if (write_status%ok()) call write_xdmf(file, write_status)
+    call file%finish(write_status%ok(), message, write_status)
     if (write_status%ok()) call write_sweep_csv(csv_path, sweep, result, write_status)
     call print_summary(sweep, result, wall, ranks, max(1, threads), file%final_path(), csv_path, run, &
                        write_status%ok(), message, write_status)
@@ -149,12 +149,12 @@ contains
 
   !> XDMF next to the result: the slide the population rode.
   subroutine write_xdmf(file, status)
-    type(result_file_t), intent(in) :: file
+    type(result_file_t), intent(inout) :: file
     type(status_t), intent(inout) :: status
     type(xdmf_t) :: xdmf
     call xdmf%start(file%final_path())
     call xdmf%surface(file, 'slide surface', '/geometry/surface')
-    call xdmf%write(xdmf_path(file%final_path()), status)
+    call xdmf%attach(file, status)
   end subroutine write_xdmf
 
   !> OpenMP's default number of threads (what threads = 0 runs with).
