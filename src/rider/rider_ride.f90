@@ -23,7 +23,7 @@ module rider_ride
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use numerics_ode, only: ode_options_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP, &
-    EVENT_STOP
+    EVENT_STOP, EVENT_RECORD, RECORD_EVENT
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use geometry_tube, only: tube_surface_t
@@ -47,6 +47,11 @@ module rider_ride
     real(wp) :: max_duration = 600        ! s, a bound on the ride (it normally ends at the slide's end)
     real(wp) :: min_speed = 0.05_wp       ! m/s, below it the rider has stalled
     real(wp) :: progress_seconds = -1     ! wall-clock s between progress lines (0: none; < 0: slidesim's)
+    !> m of centerline arc length, increasing: the ride records the state
+    !> where the pelvis first crosses each (a root function each; what an
+    !> identification compares with measurements at stations)
+    real(wp), allocatable :: stations(:)
+    logical :: stop_at_last_station = .false.   ! end the ride there (nothing is measured after it)
   end type ride_options_t
 
   !> One contact over the ride (n samples).
@@ -89,6 +94,7 @@ module rider_ride
     character(len=:), allocatable :: outcome   ! how it ended, in words
     type(driver_result_t) :: driver
     integer :: drag_switches = 0
+    integer, allocatable :: station_record(:)   ! the record at each station (0: not reached)
   end type ride_result_t
 
   !> The rider as a model of the integration driver.
@@ -100,6 +106,9 @@ module rider_ride
     real(wp) :: min_speed = 0             ! m/s, the stall speed it stands for
     real(wp) :: slide_length = 0          ! m, for progress lines
     integer :: drag_switches = 0
+    integer, allocatable :: station_record(:)   ! as ride_result_t's
+    integer :: pending_station = 0        ! a station crossed, its record comes next
+    logical :: stop_at_last_station = .false.
   contains
     procedure :: record => rider_record
     procedure :: handle_event => rider_handle_event
@@ -138,11 +147,12 @@ contains
     if (present(label)) driver%label = label
     call drive(sys, y0, driver, result%driver, run_status)
     result%drag_switches = sys%drag_switches
+    call move_alloc(sys%station_record, result%station_record)
     call move_series(sys%ride, result%series)
     select case (result%driver%outcome)
     case (DRIVE_EVENT_STOP)
       result%outcome = sys%outcome
-      result%complete = index(sys%outcome, 'end of the slide') == 1
+      result%complete = index(sys%outcome, 'end of the slide') == 1 .or. index(sys%outcome, 'last station') == 1
     case (DRIVE_END_TIME)
       result%outcome = 'the ride had not ended after '//format_short(options%max_duration)//' s'
     case default
@@ -174,6 +184,8 @@ contains
     type(status_t), intent(inout) :: status
     type(water_field_t), intent(in), optional :: water
     real(wp) :: q0(3), qd0(3)
+    real(wp), allocatable :: station_u(:)
+    integer :: i
     if (.not. status%ok()) return
     call build_rider(params, surface, sys%mechanism, sys%layout, q0, status, water)
     if (status%ok()) call rider_start_velocity(params, surface, qd0, status)
@@ -188,13 +200,47 @@ contains
                       format_short(options%min_speed)//' m/s)')
       return
     end if
-    ! stall or turning back: u' of the pelvis falls below min_rate
-    sys%event_index = [4]
-    sys%event_value = [sys%min_rate]
+    call stations_as_parameters(surface, options, q0(1), station_u, status)
+    if (.not. status%ok()) return
+    ! stall or turning back: u' of the pelvis falls below min_rate; then the
+    ! pelvis's u crossing each station
+    sys%event_index = [4, (1, i=1, size(station_u))]
+    sys%event_value = [sys%min_rate, station_u]
+    sys%station_record = spread(0, 1, size(station_u))
+    sys%stop_at_last_station = options%stop_at_last_station .and. size(station_u) > 0
     y0 = sys%initial_state(q0, qd0)
     call sys%check_start(y0, status)
     if (.not. status%ok()) call prefix_status(status, 'ride start')
   end subroutine prepare_ride
+
+  !> The stations' surface parameters u (u = s off tubes), each after the
+  !> start u0 and on the slide, increasing.
+  subroutine stations_as_parameters(surface, options, u0, u, status)
+    class(surface_t), intent(in) :: surface
+    type(ride_options_t), intent(in) :: options
+    real(wp), intent(in) :: u0
+    real(wp), allocatable, intent(out) :: u(:)
+    type(status_t), intent(inout) :: status
+    integer :: i
+    allocate (u(0))
+    if (.not. allocated(options%stations)) return
+    u = options%stations
+    do i = 1, size(u)
+      select type (surface)
+      class is (tube_surface_t)
+        call surface%parameter_at_length(options%stations(i), u(i), status)
+        if (.not. status%ok()) then
+          call prefix_status(status, 'ride station '//format_short(options%stations(i))//' m')
+          return
+        end if
+      end select
+      if (.not. u(i) > u0 .or. (i > 1 .and. .not. options%stations(i) > options%stations(max(i - 1, 1)))) then
+        call set_status(status, STATUS_INVALID_INPUT, 'ride station '//format_short(options%stations(i))// &
+                        ' m: the stations must lie after the start and increase along the slide')
+        return
+      end if
+    end do
+  end subroutine stations_as_parameters
 
   !> |c_u| at u on a tube (ds/du), 1 on other surfaces.
   real(wp) function centerline_speed(surface, u) result(cu)
@@ -387,6 +433,10 @@ contains
     if (self%ride%n == size(self%ride%time)) call grow_series(self%ride)
     self%ride%n = self%ride%n + 1
     n = self%ride%n
+    if (kind == RECORD_EVENT .and. self%pending_station > 0) then
+      self%station_record(self%pending_station) = n
+      self%pending_station = 0
+    end if
     associate (m => self%mechanism, lay => self%layout, r => self%ride)
       r%time(n) = t
       r%kind(n) = kind
@@ -480,6 +530,15 @@ contains
                      format_short(self%min_speed)//' m/s'//where
       return
     end if
+    do k = 1, size(self%station_record)
+      if (fired(1 + k) <= 0 .or. self%station_record(k) /= 0) cycle
+      self%pending_station = k
+      action = max(action, EVENT_RECORD)
+      if (self%stop_at_last_station .and. k == size(self%station_record) .and. action /= EVENT_STOP) then
+        action = EVENT_STOP
+        self%outcome = 'last station: the pelvis reached it'//where
+      end if
+    end do
     if (action == EVENT_STOP .and. allocated(self%outcome)) then
       if (index(self%outcome, 'end of slide') == 1) then
         self%outcome = 'end of the slide: the '//trim(leading_contact(self, self%outcome))//' reached it'//where
