@@ -19,14 +19,15 @@ module scenarios_registry
   use scenarios_ride, only: run_ride_scenario
   use scenarios_optimize, only: run_optimize
   use scenarios_sweep, only: run_sweep_scenario
+  use scenarios_identify_rider, only: run_identify_rider
   implicit none (type, external)
   private
   public :: run_input_file, run_default, run_input, print_scenarios, default_input, slidesim_version
   public :: scenario_template, scenario_names
 
-  character(len=*), parameter :: scenario_names(10) = [character(len=16) :: 'ride', 'point_mass', 'geometry', &
-    'water', 'pendulum', 'fourbar', 'sled', 'contact', 'optimize', 'sweep']
-  character(len=*), parameter :: scenario_summaries(10) = [character(len=80) :: &
+  character(len=*), parameter :: scenario_names(11) = [character(len=16) :: 'ride', 'point_mass', 'geometry', &
+    'water', 'pendulum', 'fourbar', 'sled', 'contact', 'optimize', 'sweep', 'identify_rider']
+  character(len=*), parameter :: scenario_summaries(11) = [character(len=80) :: &
     'the water, then a rider in it down the slide: ride report, accelerations, limits', &
     'a point mass sliding on an elementary surface (plane, ellipsoid, ...)', &
     'build a tube, slide, blended or B-spline surface; write grid and frames', &
@@ -36,7 +37,8 @@ module scenarios_registry
     'a bar sliding on a surface on two surface joints, closed like the rider', &
     'bodies in point contact between smooth surfaces (spinning egg, rolling)', &
     'optimise a tube slide''s shape: rides of a body, accelerations, tipping lever arm', &
-    'a population of rides (riders, starts, flow rates, friction) in parallel']
+    'a population of rides (riders, starts, flow rates, friction) in parallel', &
+    'identify the rider''s friction mu_D from measured positions and speeds']
 
 contains
 
@@ -178,6 +180,8 @@ contains
       call run_optimize(input, run, status)
     case ('sweep')
       call run_sweep_scenario(input, run, status)
+    case ('identify_rider')
+      call run_identify_rider(input, run, status)
     end select
     if (status%ok() .and. run%check_only) write (output_unit, '(a)') input%name//': input ok (scenario '// &
       trim(run%scenario)//'; results would go to '//trim(run%output)//')'

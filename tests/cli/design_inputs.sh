@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The design scenarios (optimize) stop on bad input before any work: exit
+# The design scenarios (optimize, identify_rider) stop on bad input before any work: exit
 # status 1, a message naming the file, the group, the variable, its value and
 # what is allowed, and no result file. A small optimisation runs through to a
 # complete result file.
@@ -65,6 +65,30 @@ if (cd "$work" && "$slidesim" -q small.nml >small.out 2>small.err); then
 else
   echo "FAIL small: exit status $?: $(cat "$work/small.err")"; failures=$((failures + 1))
 fi
+
+# identify_rider: the demo slide by name, the measurements in the group or in CSV files
+ri() { printf "&run scenario = 'identify_rider', output = 'o.h5' /\n&surface kind = 'slide', geometry_file = 'builtin:demo_slide' /\n&water flow_rate = 0.004, start = 'edges', u0 = 0.0, v_left0 = 1.92, v_right0 = 1.22 /\n%b\n" "$2" > "$work/$1.nml"; }
+ri lists_differ "&identify station_arc_length = 3.0, 6.0, pelvis_angle = 0.0, heels_angle = 0.0, 0.0, back_angle = 0.0, 0.0 /"
+expect lists_differ 1 '&identify' 'pelvis_angle' 'one angle of each contact per station (2 stations)'
+ri file_and_list "&identify stations_file = 's.csv', station_arc_length = 3.0 /"
+expect file_and_list 1 '&identify' 'station_arc_length' 'the stations come from stations_file'
+ri missing_csv "&identify stations_file = 'none.csv' /"
+expect missing_csv 3 '&identify: stations_file' 'none.csv'
+printf "arc_length,pelvis,heels,back\n3.0,0.0,0.1,9.0\n" > "$work/bad.csv"
+ri bad_csv "&identify stations_file = 'bad.csv' /"
+expect bad_csv 1 'bad.csv' '9.0'
+ri start_outside "&rider mu = 0.2 /\n&identify twin_mu = 0.07, station_arc_length = 3.0, 6.0 /"
+expect start_outside 1 '&rider mu = 0.2' 'lower, upper = 0, 0.11'
+ri beyond_end "&identify twin_mu = 0.07, station_arc_length = 3.0, 80.0 /"
+expect beyond_end 1 'beyond the slide' '80'
+ri twin_with_data "&identify twin_mu = 0.07, station_arc_length = 3.0, pelvis_angle = 0.1 /"
+expect twin_with_data 1 '&identify' 'pelvis_angle' 'twin_mu synthesises the angles'
+ri limits_given "&rider limit_quantity = 'speed', limit_max = 8.0, limit_unit = 'm/s' /\n&identify twin_mu = 0.07, station_arc_length = 3.0 /"
+expect limits_given 1 '&rider' 'limit_quantity is not used by identify_rider'
+ri upper_low "&identify twin_mu = 0.07, station_arc_length = 3.0, lower = 0.05, upper = 0.01 /"
+expect upper_low 1 '&identify' 'upper = 0.01' 'must exceed lower'
+ri nothing "&identify weight = 0.5 /"
+expect nothing 1 '&identify' 'give stations or segments'
 
 echo "$((checks - failures)) passed, $failures failed"
 [ $failures = 0 ]

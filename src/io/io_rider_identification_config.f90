@@ -1,0 +1,182 @@
+!> &identify of the scenario identify_rider: the rider's measurements (from
+!> CSV files or given in the group), the weights, bounds and solver settings
+!> of the rider-friction identification (thesis 4.4.3; docs/design.md lists
+!> every variable with unit, default and range).
+module io_rider_identification_config
+  use base_kinds, only: wp
+  use base_text, only: format_integer
+  use base_status, only: status_t, prefix_status
+  use rider_model, only: N_CONTACTS
+  use design_rider_identification, only: rider_measurements_t, rider_fit_options_t
+  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, bounds_t, format_real
+  use io_csv, only: read_csv_table
+  implicit none (type, external)
+  private
+  public :: rider_identification_config_t, read_rider_identification_config
+
+  integer, parameter :: max_stations = 10000, max_segments = 1000
+
+  type :: rider_identification_config_t
+    type(rider_measurements_t) :: data
+    type(rider_fit_options_t) :: options
+    integer :: threads = 1
+    logical :: sensitivity = .false.     !< the body-parameter study of table 4.10
+    logical :: twin = .false.            !< synthesise the measurements with twin_mu (noise-free)
+    real(wp) :: twin_mu = 0
+    character(len=:), allocatable :: stations_file, segments_file   !< as resolved ('' when inline)
+  end type rider_identification_config_t
+
+contains
+
+  subroutine read_rider_identification_config(input, config, status)
+    type(input_text_t), intent(in) :: input
+    type(rider_identification_config_t), intent(out) :: config
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    character(len=1024) :: stations_file, segments_file
+    real(wp), allocatable :: table(:, :), s(:), pelvis(:), heels(:), back(:), a(:), b(:), w(:)
+    real(wp), parameter :: big = 1e6_wp
+    character(len=*), parameter :: names(18) = [character(len=20) :: 'stations_file', 'segments_file', &
+      'station_arc_length', 'pelvis_angle', 'heels_angle', 'back_angle', 'segment_start', 'segment_end', &
+      'segment_speed', 'weight', 'k2', 'lower', 'upper', 'threads', 'ftol', 'xtol', 'sensitivity', 'twin_mu']
+    character(len=*), parameter :: station_names(4) = [character(len=18) :: 'station_arc_length', &
+      'pelvis_angle', 'heels_angle', 'back_angle']
+    character(len=*), parameter :: segment_names(3) = [character(len=13) :: 'segment_start', 'segment_end', &
+      'segment_speed']
+    integer :: k
+
+    call open_group(input, 'identify', names, r, status)
+    if (.not. status%ok()) return
+    stations_file = ''
+    segments_file = ''
+    call r%get('stations_file', stations_file, status)
+    call r%get('segments_file', segments_file, status)
+    if (.not. status%ok()) return
+    config%twin = r%has('twin_mu')
+    if (config%twin) then
+      call r%get('twin_mu', config%twin_mu, in_range(0.0_wp, 10.0_wp, '1'), status)
+      if (.not. status%ok()) return
+      if (len_trim(stations_file) > 0 .or. len_trim(segments_file) > 0) then
+        call r%invalid('twin_mu', format_real(config%twin_mu), 'a twin experiment synthesises the '// &
+                       'measurements: give the places (station_arc_length, segment_start, segment_end), no files', &
+                       status)
+        return
+      end if
+      do k = 2, size(station_names)
+        if (r%has(trim(station_names(k)))) then
+          call r%invalid(trim(station_names(k)), 'given', 'twin_mu synthesises the angles', status)
+          return
+        end if
+      end do
+      if (r%has('segment_speed')) then
+        call r%invalid('segment_speed', 'given', 'twin_mu synthesises the speeds', status)
+        return
+      end if
+    end if
+
+    ! the stations: a CSV file (arc length, pelvis, heels, back) or the lists
+    if (len_trim(stations_file) > 0) then
+      do k = 1, size(station_names)
+        if (r%has(trim(station_names(k)))) then
+          call r%invalid(trim(station_names(k)), 'given', 'the stations come from stations_file', status)
+          return
+        end if
+      end do
+      config%stations_file = input%resolve_path(stations_file)
+      call read_csv_table(config%stations_file, 4, 4, max_stations, [in_range(0.0_wp, big, 'm'), &
+                          in_range(-4.0_wp, 4.0_wp, 'rad'), in_range(-4.0_wp, 4.0_wp, 'rad'), &
+                          in_range(-4.0_wp, 4.0_wp, 'rad')], table, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, r%where('stations_file')//': &identify: stations_file')
+        return
+      end if
+      config%data%station_arc_length = table(1, :)
+      config%data%angle = table(2:4, :)
+    else
+      config%stations_file = ''
+      call r%get_list('station_arc_length', s, max_stations, in_range(0.0_wp, big, 'm'), status)
+      call r%get_list('pelvis_angle', pelvis, max_stations, in_range(-4.0_wp, 4.0_wp, 'rad'), status)
+      call r%get_list('heels_angle', heels, max_stations, in_range(-4.0_wp, 4.0_wp, 'rad'), status)
+      call r%get_list('back_angle', back, max_stations, in_range(-4.0_wp, 4.0_wp, 'rad'), status)
+      if (.not. status%ok()) return
+      if (config%twin) then   ! placeholders, synthesised by the scenario
+        pelvis = 0*s
+        heels = pelvis
+        back = pelvis
+      end if
+      if (size(pelvis) /= size(s) .or. size(heels) /= size(s) .or. size(back) /= size(s)) then
+        call r%invalid('pelvis_angle', format_integer(size(pelvis))//', '//format_integer(size(heels))// &
+                       ', '//format_integer(size(back))//' values (pelvis, heels, back)', &
+                       'one angle of each contact per station ('//format_integer(size(s))//' stations)', status)
+        return
+      end if
+      config%data%station_arc_length = s
+      allocate (config%data%angle(N_CONTACTS, size(s)))
+      config%data%angle(1, :) = pelvis
+      config%data%angle(2, :) = heels
+      config%data%angle(3, :) = back
+    end if
+
+    ! the segments: a CSV file (start, end, speed) or the lists
+    if (len_trim(segments_file) > 0) then
+      do k = 1, size(segment_names)
+        if (r%has(trim(segment_names(k)))) then
+          call r%invalid(trim(segment_names(k)), 'given', 'the segments come from segments_file', status)
+          return
+        end if
+      end do
+      config%segments_file = input%resolve_path(segments_file)
+      call read_csv_table(config%segments_file, 3, 3, max_segments, [in_range(0.0_wp, big, 'm'), &
+                          in_range(0.0_wp, big, 'm'), above(0.0_wp, 100.0_wp, 'm/s')], table, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, r%where('segments_file')//': &identify: segments_file')
+        return
+      end if
+      config%data%segment_start = table(1, :)
+      config%data%segment_end = table(2, :)
+      config%data%segment_speed = table(3, :)
+    else
+      config%segments_file = ''
+      call r%get_list('segment_start', a, max_segments, in_range(0.0_wp, big, 'm'), status)
+      call r%get_list('segment_end', b, max_segments, in_range(0.0_wp, big, 'm'), status)
+      call r%get_list('segment_speed', w, max_segments, above(0.0_wp, 100.0_wp, 'm/s'), status)
+      if (.not. status%ok()) return
+      if (config%twin) w = 0*a
+      if (size(b) /= size(a) .or. size(w) /= size(a)) then
+        call r%invalid('segment_end', format_integer(size(b))//' ends, '//format_integer(size(w))//' speeds', &
+                       'one end and one speed per segment start ('//format_integer(size(a))//')', status)
+        return
+      end if
+      config%data%segment_start = a
+      config%data%segment_end = b
+      config%data%segment_speed = w
+    end if
+    if (size(config%data%station_arc_length) + size(config%data%segment_start) == 0) then
+      call r%invalid('station_arc_length', 'nothing', 'give stations or segments (or their CSV files)', status)
+      return
+    end if
+    if (size(config%data%segment_start) == 0 .and. r%has('weight')) then
+      call r%invalid('weight', 'given', 'without segments only the positions are fitted (w is 0)', status)
+      return
+    end if
+
+    ! the fit
+    associate (o => config%options)
+      if (size(config%data%segment_start) == 0) o%weight = 0
+      if (size(config%data%station_arc_length) == 0) o%weight = 1
+      call r%get('weight', o%weight, in_range(0.0_wp, 1.0_wp, '1'), status)
+      call r%get('k2', o%k2, above(0.0_wp, 100.0_wp, 'rad s/m'), status)
+      call r%get('lower', o%lower, in_range(0.0_wp, 10.0_wp, '1'), status)
+      call r%get('upper', o%upper, above(0.0_wp, 10.0_wp, '1'), status)
+      if (.not. status%ok()) return
+      if (.not. o%upper > o%lower) then
+        call r%invalid('upper', format_real(o%upper), 'must exceed lower = '//format_real(o%lower), status)
+        return
+      end if
+      call r%get('ftol', o%solver%ftol, above(0.0_wp, 1.0_wp, '1'), status)
+      call r%get('xtol', o%solver%xtol, above(0.0_wp, 1.0_wp, '1'), status)
+    end associate
+    call r%get('threads', config%threads, 1, 1024, status)
+    call r%get('sensitivity', config%sensitivity, status)
+  end subroutine read_rider_identification_config
+end module io_rider_identification_config

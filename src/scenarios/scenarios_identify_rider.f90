@@ -1,0 +1,326 @@
+!> Scenario `identify_rider`: the rider's friction mu_D from measured rider
+!> positions and speeds (thesis 4.4.3, cost 4.43; docs/design.md). The slide,
+!> the water and the rider as in the `ride` scenario (&surface, &water,
+!> &water_solver, &rider, &solver; &rider mu is the start value), the
+!> measurements and the fit in &identify. The water first (mu_D does not
+!> change it), then the fit; /identify_rider holds the estimate with its
+!> standard error, the cost and its parts, and the measured and simulated
+!> values at every station and segment; the body-parameter study of table
+!> 4.10 on request.
+module scenarios_identify_rider
+  use, intrinsic :: iso_fortran_env, only: output_unit
+  use base_kinds, only: wp
+  use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
+  use base_text, only: format_integer, format_short
+  use base_log, only: log_info
+  use water_run, only: water_description_t, water_result_t, compute_water
+  use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS
+  use design_rider_identification, only: rider_identification_t, rider_fit_t, rider_stations_t, &
+    new_rider_identification, simulate_rider, fit_rider_friction, rider_body_sensitivity
+  use io_input, only: input_text_t, check_known_groups
+  use io_run_config, only: run_config_t
+  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_geometry_config, only: geometry_groups
+  use io_rider_config, only: rider_config_t, read_rider_config
+  use io_rider_identification_config, only: rider_identification_config_t, read_rider_identification_config
+  use io_hdf5, only: result_file_t, run_outcome
+  use io_summary, only: summary_t
+  use scenarios_water, only: build_water
+  implicit none (type, external)
+  private
+  public :: run_identify_rider, identify_rider_groups
+
+  character(len=*), parameter :: identify_rider_groups(13) = [character(len=14) :: 'run', 'solver', &
+    'water_solver', 'surface', 'water', 'rider', 'identify', geometry_groups]
+  integer, parameter :: n_variants = 10
+  character(len=*), parameter :: variant_names(n_variants) = [character(len=24) :: 'mass +1%', 'mass -1%', &
+    'height +1%', 'height -1%', 'com_height +1%', 'com_height -1%', 'pelvis radius +1%', 'pelvis radius -1%', &
+    'pelvis radius -40%', 'no drag']
+
+contains
+
+  subroutine run_identify_rider(input, run, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(status_t), intent(inout) :: status
+    type(solver_config_t) :: solver
+    type(water_description_t) :: water_description
+    type(water_result_t) :: water
+    type(rider_config_t) :: rider
+    type(rider_identification_config_t) :: config
+    type(rider_identification_t) :: setup
+    type(rider_fit_t) :: fit
+    type(rider_params_t) :: variants(n_variants)
+    type(status_t) :: variant_status(n_variants)
+    real(wp) :: deviation(n_variants), cpu0, cpu1
+    type(result_file_t) :: file
+    type(status_t) :: run_status, write_status
+    character(len=:), allocatable :: message
+
+    call check_known_groups(input, identify_rider_groups, status)
+    if (status%ok()) call read_solver_config(input, solver, status, defaults=default_solver(setup))
+    if (status%ok()) call build_water(input, water_description, status, stage=.true.)
+    if (status%ok()) call read_rider_config(input, rider, status)
+    if (status%ok()) call read_rider_identification_config(input, config, status)
+    if (.not. status%ok()) return
+    if (allocated(rider%limits)) then
+      if (size(rider%limits) > 0) then
+        call set_status(status, STATUS_INVALID_INPUT, input%name//': &rider: limit_quantity is not used by '// &
+                        'identify_rider (a fit judges no limits; run the ride scenario with the identified mu)')
+        return
+      end if
+    end if
+    setup%slide = water_description%slide
+    setup%params = rider%params
+    setup%options%ode = solver%options
+    setup%options%output_step = solver%output_step
+    setup%options%min_speed = rider%min_speed
+    setup%options%max_duration = 10*setup%slide%length()/rider%min_speed
+    if (solver%duration_given) setup%options%max_duration = solver%duration
+    setup%data = config%data
+    setup%threads = config%threads
+    setup%with_water = rider%params%drag
+    call new_rider_identification(setup, status)
+    if (.not. (rider%params%mu >= config%options%lower .and. rider%params%mu <= config%options%upper)) &
+      call set_status(status, STATUS_INVALID_INPUT, 'the start value &rider mu = '// &
+                      format_short(rider%params%mu)//' must lie within &identify lower, upper = '// &
+                      format_short(config%options%lower)//', '//format_short(config%options%upper))
+    if (.not. status%ok()) then
+      call prefix_status(status, input%name)
+      status%code = STATUS_INVALID_INPUT
+      return
+    end if
+    if (run%check_only) return
+    deviation = -1
+    cpu0 = 0
+    cpu1 = 0
+
+    call file%create(trim(run%output), status)
+    if (.not. status%ok()) return
+    call file%write_provenance('identify_rider', trim(run%title), input%name, input%text(), write_status)
+    if (setup%with_water) then
+      call log_info('identify_rider: the water first')
+      call compute_water(water_description, water, run_status)
+      if (.not. run_status%ok()) call prefix_status(run_status, 'the water')
+      setup%water = water%field
+    end if
+    if (run_status%ok() .and. config%twin) call synthesise(setup, config%twin_mu, run_status)
+    if (run_status%ok()) then
+      call log_info('identify_rider: fitting mu_D to '//format_integer(size(setup%data%station_arc_length))// &
+                    ' stations and '//format_integer(size(setup%data%segment_start))//' segments')
+      call cpu_time(cpu0)
+      call fit_rider_friction(setup, config%options, rider%params%mu, fit, run_status)
+      call cpu_time(cpu1)
+      if (run_status%ok()) call write_fit(file, setup, config, fit, cpu1 - cpu0, write_status)
+    end if
+    if (run_status%ok() .and. config%sensitivity) then
+      call log_info('identify_rider: the body-parameter study (table 4.10)')
+      setup%params%mu = fit%mu
+      call make_variants(setup%params, variants)
+      call rider_body_sensitivity(setup, variants, deviation, variant_status, run_status)
+      if (run_status%ok()) call write_sensitivity(file, deviation, write_status)
+    end if
+    message = 'ok'
+    if (.not. write_status%ok()) message = write_status%text()
+    if (.not. run_status%ok()) message = run_status%text()
+    call file%finish(run_status%ok() .and. write_status%ok(), message, write_status)
+    if (run_status%ok()) call report(setup, config, fit, deviation, variant_status, cpu1 - cpu0, &
+                                     file%final_path(), run, write_status%ok(), message, write_status)
+    if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
+  end subroutine run_identify_rider
+
+  !> A twin experiment: the measurements are the ride of twin_mu at the places.
+  subroutine synthesise(setup, twin_mu, status)
+    type(rider_identification_t), intent(inout) :: setup
+    real(wp), intent(in) :: twin_mu
+    type(status_t), intent(inout) :: status
+    type(rider_params_t) :: params
+    type(rider_stations_t) :: simulated
+    call log_info('identify_rider: twin measurements with mu_D = '//format_short(twin_mu))
+    params = setup%params
+    params%mu = twin_mu
+    call simulate_rider(setup, params, simulated, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'the twin measurements')
+      return
+    end if
+    setup%data%angle = simulated%angle
+    setup%data%segment_speed = simulated%segment_speed
+  end subroutine synthesise
+
+  !> The ride's integration (thesis B.7) as the &solver defaults.
+  function default_solver(setup) result(defaults)
+    type(rider_identification_t), intent(in) :: setup
+    type(solver_config_t) :: defaults
+    defaults%options = setup%options%ode
+    defaults%output_step = setup%options%output_step
+  end function default_solver
+
+  !> Table 4.10's variants of the identified rider (its pelvis radius 0 is
+  !> covered by 'no drag': a sphere of radius 0 is refused).
+  subroutine make_variants(p, v)
+    type(rider_params_t), intent(in) :: p
+    type(rider_params_t), intent(out) :: v(n_variants)
+    v = p
+    v(1)%body%mass = 1.01_wp*p%body%mass
+    v(2)%body%mass = 0.99_wp*p%body%mass
+    v(3)%body%height = 1.01_wp*p%body%height
+    v(4)%body%height = 0.99_wp*p%body%height
+    v(5)%body%com_height = 1.01_wp*p%body%com_height
+    v(6)%body%com_height = 0.99_wp*p%body%com_height
+    v(7)%drag_radius(CONTACT_PELVIS) = 1.01_wp*p%drag_radius(CONTACT_PELVIS)
+    v(8)%drag_radius(CONTACT_PELVIS) = 0.99_wp*p%drag_radius(CONTACT_PELVIS)
+    v(9)%drag_radius(CONTACT_PELVIS) = 0.6_wp*p%drag_radius(CONTACT_PELVIS)
+    v(10)%drag = .false.   ! the thesis's radius 0 as well: a sphere needs a radius > 0
+  end subroutine make_variants
+
+  subroutine write_fit(file, setup, config, fit, cpu, status)
+    type(result_file_t), intent(inout) :: file
+    type(rider_identification_t), intent(in) :: setup
+    type(rider_identification_config_t), intent(in) :: config
+    type(rider_fit_t), intent(in) :: fit
+    real(wp), intent(in) :: cpu
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: g = '/identify_rider/'
+    integer :: k
+    call file%write_scalar(g//'mu', fit%mu, '1', 'identified Coulomb friction mu_D of the three contacts', status)
+    call file%write_scalar(g//'standard_error', fit%standard_error, '1', &
+                           'standard error of mu_D, s^2 (J^T J)^-1 at the optimum (0: at a bound)', status)
+    if (config%twin) call file%write_scalar(g//'twin_mu', config%twin_mu, '1', &
+      'the mu_D the twin measurements were simulated with', status)
+    call file%write_scalar(g//'weight', fit%weight, '1', 'w_RP of (4.43)', status)
+    call file%write_scalar(g//'k2', fit%k2, 'rad s/m', 'k2 of (4.43)', status)
+    call file%write_scalar(g//'cost', fit%cost, 'rad^2', 'F2 (4.43) at the optimum', status)
+    call file%write_scalar(g//'position_part', fit%position_part, 'rad^2', 'its position part', status)
+    call file%write_scalar(g//'speed_part', fit%speed_part, 'rad^2', 'its speed part', status)
+    call file%write_vector(g//'contact_part', fit%contact_part, 'rad^2', &
+                           'the position part of each contact: pelvis, heels, back', status)
+    call file%write_vector(g//'rmse_angle', fit%rmse_angle, 'rad', 'RMSE of each contact''s angle', status)
+    call file%write_vector(g//'max_angle_error', fit%max_angle, 'rad', 'largest |error| of each contact''s angle', &
+                           status)
+    call file%write_scalar(g//'rmse_speed', fit%rmse_speed, 'm/s', 'RMSE of the segment speeds', status)
+    call file%write_count(g//'evaluations', fit%evaluations, '1', 'rides run by the fit', status)
+    call file%write_count(g//'rejected', fit%rejected, '1', 'rides that ended early (rejected steps)', status)
+    call file%write_scalar(g//'cpu_time', cpu, 's', 'process CPU time of the fit', status)
+    call file%write_vector(g//'contact_number', [(real(k, wp), k=1, N_CONTACTS)], '1', &
+                           '1 pelvis, 2 heels, 3 back; dimension scale', status)
+    call file%make_scale(g//'contact_number', status)
+    call file%attach_scale(g//'contact_number', g, status)
+    if (size(setup%data%station_arc_length) > 0) then
+      call file%write_vector(g//'stations/arc_length', setup%data%station_arc_length, 'm', &
+                             'centerline arc length of each station (the pelvis crosses it); dimension scale', status)
+      call file%write_matrix(g//'stations/measured_angle', setup%data%angle, 'rad', &
+                             'measured wall angle of pelvis, heels, back (+ towards +v)', status)
+      call file%write_matrix(g//'stations/simulated_angle', fit%simulated%angle, 'rad', &
+                             'simulated wall angle at the optimum', status)
+      call file%write_matrix(g//'stations/error', fit%error_angle, 'rad', 'simulated - measured', status)
+      call file%write_vector(g//'stations/rmse', fit%station_rmse, 'rad', &
+                             'RMSE over the three contacts at the station', status)
+      call file%make_scale(g//'stations/arc_length', status)
+      call file%attach_scale(g//'stations/arc_length', g//'stations/', status)
+    end if
+    if (size(setup%data%segment_start) > 0) then
+      call file%write_vector(g//'segments/start', setup%data%segment_start, 'm', &
+                             'arc length where each segment starts; dimension scale', status)
+      call file%write_vector(g//'segments/end', setup%data%segment_end, 'm', 'arc length where it ends', status)
+      call file%write_vector(g//'segments/measured_speed', setup%data%segment_speed, 'm/s', &
+                             'measured speed: length over the passage time', status)
+      call file%write_vector(g//'segments/simulated_speed', fit%simulated%segment_speed, 'm/s', &
+                             'simulated speed at the optimum (the pelvis''s passage)', status)
+      call file%write_vector(g//'segments/error', fit%error_speed, 'm/s', 'simulated - measured', status)
+      call file%make_scale(g//'segments/start', status)
+      call file%attach_scale(g//'segments/start', g//'segments/', status)
+    end if
+  end subroutine write_fit
+
+  subroutine write_sensitivity(file, deviation, status)
+    type(result_file_t), intent(inout) :: file
+    real(wp), intent(in) :: deviation(:)
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: g = '/identify_rider/sensitivity/'
+    integer :: k
+    call file%write_vector(g//'variant', [(real(k, wp), k=1, size(deviation))], '1', &
+                           'body variant (docs/design.md: mass +-1 %, height +-1 %, ...); dimension scale', status)
+    call file%write_vector(g//'pelvis_deviation', deviation, 'm', &
+                           'mean |pelvis wall distance - the identified ride''s| at the stations (-1: failed)', status)
+    call file%make_scale(g//'variant', status)
+    call file%attach_scale(g//'variant', g, status)
+  end subroutine write_sensitivity
+
+  subroutine report(setup, config, fit, deviation, variant_status, cpu, path, run, complete, message, status)
+    type(rider_identification_t), intent(in) :: setup
+    type(rider_identification_config_t), intent(in) :: config
+    type(rider_fit_t), intent(in) :: fit
+    real(wp), intent(in) :: deviation(:), cpu
+    type(status_t), intent(in) :: variant_status(:)
+    character(len=*), intent(in) :: path, message
+    type(run_config_t), intent(in) :: run
+    logical, intent(in) :: complete
+    type(status_t), intent(inout) :: status
+    type(summary_t) :: summary
+    real(wp), allocatable :: table(:, :)
+    integer :: k, n
+    n = size(setup%data%station_arc_length)
+    call summary%start('identify_rider', 'slidesim identify_rider: mu_D from '//format_integer(n)// &
+                       ' stations and '//format_integer(size(setup%data%segment_start))//' segments')
+    call summary%add('mu', 'mu_D', fit%mu, '1')
+    call summary%add('standard_error', 'standard error', fit%standard_error, '1')
+    if (fit%at_bound) call summary%add_text('at_bound', 'at a bound', 'yes: mu_D lies on lower or upper')
+    call summary%add('cost', 'cost F2 (4.43)', fit%cost, 'rad^2')
+    call summary%add('position_part', 'position part', fit%position_part, 'rad^2')
+    call summary%add('speed_part', 'speed part', fit%speed_part, 'rad^2')
+    do k = 1, N_CONTACTS
+      call summary%add('rmse_'//trim(contact_names(k)), 'RMSE '//trim(contact_names(k)), fit%rmse_angle(k), 'rad')
+    end do
+    call summary%add('rmse_speed', 'RMSE speed', fit%rmse_speed, 'm/s')
+    call summary%add_count('evaluations', 'rides', fit%evaluations, 'rides')
+    call summary%add('cpu_time', 'CPU time', cpu, 's')
+    if (n > 0) then
+      allocate (table(5, n))
+      do k = 1, n
+        table(:, k) = [setup%data%station_arc_length(k), fit%error_angle(:, k), fit%station_rmse(k)]
+      end do
+      call summary%add_table('stations', [character(len=12) :: 'arc_length', 'error_pelvis', 'error_heels', &
+                             'error_back', 'rmse'], [character(len=3) :: 'm', 'rad', 'rad', 'rad', 'rad'], table)
+      call summary%add_line('  station (m)   simulated - measured (rad): pelvis, heels, back      RMSE (rad)')
+      do k = 1, n
+        call summary%add_line('  '//fixed(table(1, k), 'f11.3')//'   '//fixed(table(2, k), 'es12.4')// &
+                              fixed(table(3, k), 'es12.4')//fixed(table(4, k), 'es12.4')//'   '// &
+                              fixed(table(5, k), 'es12.4'))
+      end do
+    end if
+    if (size(setup%data%segment_start) > 0) then
+      call summary%add_line('  segment (m)          speed measured, simulated (m/s)')
+      do k = 1, size(setup%data%segment_start)
+        call summary%add_line('  '//fixed(setup%data%segment_start(k), 'f8.3')//' .. '// &
+                              fixed(setup%data%segment_end(k), 'f8.3')//'   '// &
+                              fixed(setup%data%segment_speed(k), 'f10.4')//fixed(fit%simulated%segment_speed(k), &
+                              'f10.4'))
+      end do
+    end if
+    if (config%sensitivity) then
+      do k = 1, size(deviation)
+        if (variant_status(k)%ok()) then
+          call summary%add('deviation_'//format_integer(k), 'pelvis deviation, '//trim(variant_names(k)), &
+                           deviation(k), 'm')
+        else
+          call summary%add_text('deviation_'//format_integer(k), 'pelvis deviation, '//trim(variant_names(k)), &
+                                'the ride failed: '//variant_status(k)%text())
+        end if
+      end do
+    end if
+    call summary%print(output_unit)
+    if (allocated(run%summary_json)) then
+      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
+    end if
+  end subroutine report
+
+  pure function fixed(x, form) result(text)
+    real(wp), intent(in) :: x
+    character(len=*), intent(in) :: form
+    character(len=:), allocatable :: text
+    character(len=40) :: buffer
+    write (buffer, '('//form//')') x
+    text = trim(buffer)
+  end function fixed
+end module scenarios_identify_rider
