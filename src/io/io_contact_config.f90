@@ -10,7 +10,7 @@ module io_contact_config
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use contact_model, only: contact_system_t, FRICTION_NONE, &
     FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL, FRICTION_COULOMB, LEVEL_POSITION, LEVEL_VELOCITY
-  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, group_count
+  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, group_count, format_vector
   use io_surface_config, only: read_surface_config
   implicit none (type, external)
   private
@@ -114,6 +114,10 @@ contains
     else
       if (.not. r%has('inertia')) call r%invalid('inertia', 'none', 'give the principal moments (and products) '// &
         'of inertia about the centre, or solid_of = ''<shape>'' for a homogeneous solid', status)
+      ! a rigid body's moments about any axes obey I_k <= I_l + I_m (said
+      ! here, with the line, rather than by the mass element later)
+      if (status%ok() .and. 2*maxval(inertia) > sum(inertia)*(1 + 1e-12_wp)) call r%invalid('inertia', &
+        format_vector(inertia), 'the moments of a rigid body obey the triangle inequality I_k <= I_l + I_m', status)
       system%bodies(k)%inertia = reshape([inertia(1), products(1), products(2), products(1), inertia(2), &
                                           products(3), products(2), products(3), inertia(3)], [3, 3])
     end if

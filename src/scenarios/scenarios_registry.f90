@@ -20,14 +20,16 @@ module scenarios_registry
   use scenarios_optimize, only: run_optimize
   use scenarios_sweep, only: run_sweep_scenario
   use scenarios_identify_rider, only: run_identify_rider
+  use scenarios_identify_water, only: run_identify_water
   implicit none (type, external)
   private
   public :: run_input_file, run_default, run_input, print_scenarios, default_input, slidesim_version
   public :: scenario_template, scenario_names
 
-  character(len=*), parameter :: scenario_names(11) = [character(len=16) :: 'ride', 'point_mass', 'geometry', &
-    'water', 'pendulum', 'fourbar', 'sled', 'contact', 'optimize', 'sweep', 'identify_rider']
-  character(len=*), parameter :: scenario_summaries(11) = [character(len=80) :: &
+  character(len=*), parameter :: scenario_names(12) = [character(len=16) :: 'ride', 'point_mass', 'geometry', &
+    'water', 'pendulum', 'fourbar', 'sled', 'contact', 'optimize', 'sweep', 'identify_rider', &
+    'identify_water']
+  character(len=*), parameter :: scenario_summaries(12) = [character(len=80) :: &
     'the water, then a rider in it down the slide: ride report, accelerations, limits', &
     'a point mass sliding on an elementary surface (plane, ellipsoid, ...)', &
     'build a tube, slide, blended or B-spline surface; write grid and frames', &
@@ -38,7 +40,8 @@ module scenarios_registry
     'bodies in point contact between smooth surfaces (spinning egg, rolling)', &
     'optimise a tube slide''s shape: rides of a body, accelerations, tipping lever arm', &
     'a population of rides (riders, starts, flow rates, friction) in parallel', &
-    'identify the rider''s friction mu_D from measured positions and speeds']
+    'identify the rider''s friction mu_D from measured positions and speeds', &
+    'identify the water''s friction f1, f2, f3 from measured flow positions and speeds']
 
 contains
 
@@ -182,6 +185,8 @@ contains
       call run_sweep_scenario(input, run, status)
     case ('identify_rider')
       call run_identify_rider(input, run, status)
+    case ('identify_water')
+      call run_identify_water(input, run, status)
     end select
     if (status%ok() .and. run%check_only) write (output_unit, '(a)') input%name//': input ok (scenario '// &
       trim(run%scenario)//'; results would go to '//trim(run%output)//')'

@@ -90,5 +90,20 @@ expect upper_low 1 '&identify' 'upper = 0.01' 'must exceed lower'
 ri nothing "&identify weight = 0.5 /"
 expect nothing 1 '&identify' 'give stations or segments'
 
+# identify_water
+wi() { printf "&run scenario = 'identify_water', output = 'o.h5' /\n&surface kind = 'slide', geometry_file = 'builtin:demo_slide' /\n&water flow_rate = 0.004, start = 'edges', u0 = 0.0, v_left0 = 1.92, v_right0 = 1.22 /\n%b\n" "$2" > "$work/$1.nml"; }
+wi w_lists_differ "&identify section_arc_length = 5.0, 10.0, section_v = 1.5 /"
+expect w_lists_differ 1 '&identify' 'section_v' 'one per section (2 sections)'
+wi w_none_estimated "&identify twin_f = 0.03, 0.1, 1.0, section_arc_length = 5.0, estimate = .false., .false., .false. /"
+expect w_none_estimated 1 '&identify' 'estimate' 'at least one of f1, f2, f3'
+wi w_bad_speed "&identify twin_f = 0.03, 0.1, 1.0, section_arc_length = 5.0, speed = 'average' /"
+expect w_bad_speed 1 '&identify' "speed = 'average'" 'midpoint passage'
+wi w_twin_with_values "&identify twin_f = 0.03, 0.1, 1.0, section_arc_length = 5.0, section_v = 1.5 /"
+expect w_twin_with_values 1 '&identify' 'twin_f' 'no values and no files'
+wi w_beyond "&identify twin_f = 0.03, 0.1, 1.0, section_arc_length = 5.0, 90.0 /"
+expect w_beyond 1 'stations(2) = 90' 'must lie on the slide'
+printf "&run scenario = 'identify_water', output = 'o.h5' /\n&surface kind = 'slide', geometry_file = 'builtin:demo_slide' /\n&water flow_rate = 0.004, start = 'edges', u0 = 0.0, v_left0 = 1.92, v_right0 = 1.22, stations = 5.0 /\n&identify twin_f = 0.03, 0.1, 1.0, section_arc_length = 5.0 /\n" > "$work/w_stations.nml"
+expect w_stations 1 '&water' 'stations are not used by identify_water'
+
 echo "$((checks - failures)) passed, $failures failed"
 [ $failures = 0 ]

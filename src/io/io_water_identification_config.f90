@@ -1,0 +1,162 @@
+!> &identify of the scenario identify_water: the water's measurements (from
+!> CSV files or given in the group), the weights, bounds and solver settings
+!> of the water-friction identification (thesis 4.4.1; docs/design.md lists
+!> every variable with unit, default and range).
+module io_water_identification_config
+  use base_kinds, only: wp
+  use base_text, only: format_integer
+  use base_status, only: status_t, prefix_status
+  use design_water_identification, only: water_measurements_t, water_fit_options_t, SPEED_MIDPOINT, &
+    SPEED_PASSAGE, MIDDLE_EDGES, MIDDLE_STREAMLINE
+  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, format_real
+  use io_csv, only: read_csv_table
+  implicit none (type, external)
+  private
+  public :: water_identification_config_t, read_water_identification_config
+
+  integer, parameter :: max_sections = 10000, max_segments = 1000, max_weights = 100
+
+  type :: water_identification_config_t
+    type(water_measurements_t) :: data
+    type(water_fit_options_t) :: options
+    integer :: speed_kind = SPEED_MIDPOINT
+    integer :: middle_kind = MIDDLE_EDGES
+    integer :: threads = 1
+    real(wp), allocatable :: sweep_weights(:)   !< the weight sweep of table 4.2 (none: size 0)
+    logical :: twin = .false.                   !< synthesise the measurements with twin_f (noise-free)
+    real(wp) :: twin_f(3) = 0
+    character(len=:), allocatable :: sections_file, segments_file
+  end type water_identification_config_t
+
+contains
+
+  subroutine read_water_identification_config(input, config, status)
+    type(input_text_t), intent(in) :: input
+    type(water_identification_config_t), intent(out) :: config
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    character(len=1024) :: sections_file, segments_file
+    character(len=10) :: speed_kind, middle_kind
+    real(wp), allocatable :: table(:, :), s(:), v(:), a(:), b(:), w(:)
+    real(wp), parameter :: big = 1e6_wp
+    character(len=*), parameter :: names(19) = [character(len=18) :: 'sections_file', 'segments_file', &
+      'section_arc_length', 'section_v', 'segment_start', 'segment_end', 'segment_speed', 'weight', 'k1', &
+      'estimate', 'lower', 'upper', 'speed', 'middle', 'threads', 'ftol', 'xtol', 'sweep_weights', 'twin_f']
+
+    call open_group(input, 'identify', names, r, status)
+    if (.not. status%ok()) return
+    sections_file = ''
+    segments_file = ''
+    call r%get('sections_file', sections_file, status)
+    call r%get('segments_file', segments_file, status)
+    if (.not. status%ok()) return
+    config%twin = r%has('twin_f')
+    if (config%twin) then
+      call r%get('twin_f', config%twin_f, in_range(0.0_wp, 1e5_wp, 'kg/m, kg, kg m'), status)
+      if (.not. status%ok()) return
+      if (len_trim(sections_file) > 0 .or. len_trim(segments_file) > 0 .or. r%has('section_v') .or. &
+          r%has('segment_speed')) then
+        call r%invalid('twin_f', 'given', 'a twin experiment synthesises the measurements: give the places '// &
+                       '(section_arc_length, segment_start, segment_end), no values and no files', status)
+        return
+      end if
+    end if
+
+    ! the sections: a CSV file (arc length, middle angle v) or the lists
+    if (len_trim(sections_file) > 0) then
+      if (r%has('section_arc_length') .or. r%has('section_v')) then
+        call r%invalid('section_arc_length', 'given', 'the sections come from sections_file', status)
+        return
+      end if
+      config%sections_file = input%resolve_path(sections_file)
+      call read_csv_table(config%sections_file, 2, 2, max_sections, [in_range(0.0_wp, big, 'm'), &
+                          in_range(-4.0_wp, 8.0_wp, 'rad')], table, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, r%where('sections_file')//': &identify: sections_file')
+        return
+      end if
+      config%data%section_arc_length = table(1, :)
+      config%data%section_v = table(2, :)
+    else
+      config%sections_file = ''
+      call r%get_list('section_arc_length', s, max_sections, in_range(0.0_wp, big, 'm'), status)
+      call r%get_list('section_v', v, max_sections, in_range(-4.0_wp, 8.0_wp, 'rad'), status)
+      if (.not. status%ok()) return
+      if (config%twin) v = 0*s
+      if (size(v) /= size(s)) then
+        call r%invalid('section_v', format_integer(size(v))//' values', 'one per section ('// &
+                       format_integer(size(s))//' sections)', status)
+        return
+      end if
+      config%data%section_arc_length = s
+      config%data%section_v = v
+    end if
+
+    ! the segments: a CSV file (start, end, speed) or the lists
+    if (len_trim(segments_file) > 0) then
+      if (r%has('segment_start') .or. r%has('segment_end') .or. r%has('segment_speed')) then
+        call r%invalid('segment_start', 'given', 'the segments come from segments_file', status)
+        return
+      end if
+      config%segments_file = input%resolve_path(segments_file)
+      call read_csv_table(config%segments_file, 3, 3, max_segments, [in_range(0.0_wp, big, 'm'), &
+                          in_range(0.0_wp, big, 'm'), above(0.0_wp, 100.0_wp, 'm/s')], table, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, r%where('segments_file')//': &identify: segments_file')
+        return
+      end if
+      config%data%segment_start = table(1, :)
+      config%data%segment_end = table(2, :)
+      config%data%segment_speed = table(3, :)
+    else
+      config%segments_file = ''
+      call r%get_list('segment_start', a, max_segments, in_range(0.0_wp, big, 'm'), status)
+      call r%get_list('segment_end', b, max_segments, in_range(0.0_wp, big, 'm'), status)
+      call r%get_list('segment_speed', w, max_segments, above(0.0_wp, 100.0_wp, 'm/s'), status)
+      if (.not. status%ok()) return
+      if (config%twin) w = 0*a
+      if (size(b) /= size(a) .or. size(w) /= size(a)) then
+        call r%invalid('segment_end', format_integer(size(b))//' ends, '//format_integer(size(w))//' speeds', &
+                       'one end and one speed per segment start ('//format_integer(size(a))//')', status)
+        return
+      end if
+      config%data%segment_start = a
+      config%data%segment_end = b
+      config%data%segment_speed = w
+    end if
+    if (size(config%data%section_arc_length) + size(config%data%segment_start) == 0) then
+      call r%invalid('section_arc_length', 'nothing', 'give sections or segments (or their CSV files)', status)
+      return
+    end if
+
+    associate (o => config%options)
+      if (size(config%data%segment_start) == 0) o%weight = 0
+      if (size(config%data%section_arc_length) == 0) o%weight = 1
+      call r%get('weight', o%weight, in_range(0.0_wp, 1.0_wp, '1'), status)
+      call r%get('k1', o%k1, above(0.0_wp, 100.0_wp, 'rad s/m'), status)
+      call r%get_parts('estimate', o%estimate, 'f1, f2, f3', status)
+      call r%get_parts('lower', o%lower, in_range(0.0_wp, 1e5_wp, 'kg/m, kg, kg m'), 'f1, f2, f3', status)
+      call r%get_parts('upper', o%upper, above(0.0_wp, 1e5_wp, 'kg/m, kg, kg m'), 'f1, f2, f3', status)
+      if (.not. status%ok()) return
+      if (any(.not. o%upper > o%lower)) then
+        call r%invalid('upper', format_real(o%upper(findloc(.not. o%upper > o%lower, .true., dim=1))), &
+                       'each upper must exceed its lower', status)
+        return
+      end if
+      if (.not. any(o%estimate)) then
+        call r%invalid('estimate', '.false., .false., .false.', 'estimate at least one of f1, f2, f3', status)
+        return
+      end if
+      call r%get('ftol', o%solver%ftol, above(0.0_wp, 1.0_wp, '1'), status)
+      call r%get('xtol', o%solver%xtol, above(0.0_wp, 1.0_wp, '1'), status)
+    end associate
+    speed_kind = 'midpoint'
+    middle_kind = 'edges'
+    call r%get('speed', speed_kind, status, choices=[character(len=8) :: 'midpoint', 'passage'])
+    call r%get('middle', middle_kind, status, choices=[character(len=10) :: 'edges', 'streamline'])
+    config%speed_kind = merge(SPEED_MIDPOINT, SPEED_PASSAGE, speed_kind == 'midpoint')
+    config%middle_kind = merge(MIDDLE_EDGES, MIDDLE_STREAMLINE, middle_kind == 'edges')
+    call r%get('threads', config%threads, 1, 1024, status)
+    call r%get_list('sweep_weights', config%sweep_weights, max_weights, in_range(0.0_wp, 1.0_wp, '1'), status)
+  end subroutine read_water_identification_config
+end module io_water_identification_config
