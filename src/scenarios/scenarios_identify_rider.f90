@@ -25,7 +25,7 @@ module scenarios_identify_rider
   use io_rider_identification_config, only: rider_identification_config_t, read_rider_identification_config
   use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t
-  use io_xdmf, only: xdmf_t, xdmf_path
+  use io_xdmf, only: xdmf_t
   use scenarios_water, only: build_water, write_slide_grid
   implicit none (type, external)
   private
@@ -125,8 +125,8 @@ contains
     message = 'ok'
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
-    call file%finish(run_status%ok() .and. write_status%ok(), message, write_status)
     if (write_status%ok()) call write_xdmf(file, write_status)
+    call file%finish(run_status%ok() .and. write_status%ok(), message, write_status)
     if (run_status%ok()) call report(setup, config, fit, deviation, variant_status, cpu1 - cpu0, &
                                      file%final_path(), run, write_status%ok(), message, write_status)
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
@@ -320,12 +320,12 @@ contains
 
   !> The slide's surface for ParaView.
   subroutine write_xdmf(file, status)
-    type(result_file_t), intent(in) :: file
+    type(result_file_t), intent(inout) :: file
     type(status_t), intent(inout) :: status
     type(xdmf_t) :: xdmf
     call xdmf%start(file%final_path())
     call xdmf%surface(file, 'slide surface', '/geometry/surface')
-    call xdmf%write(xdmf_path(file%final_path()), status)
+    call xdmf%attach(file, status)
   end subroutine write_xdmf
 
   pure function fixed(x, form) result(text)
