@@ -10,7 +10,7 @@ module io_geometry_config
   use base_kinds, only: wp
   use base_text, only: format_integer
   use base_constants, only: pi, two_pi
-  use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT, STATUS_IO
+  use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT, STATUS_IO
   use geometry_surface, only: surface_t
   use geometry_curve, only: curve_t, constant_curve_t
   use geometry_curve_frame, only: horizon_parallel_tol
@@ -342,6 +342,12 @@ contains
     n = 0
     start = [0, 0, 0]; heading_deg = 0; transition_length = 2
     centerline_kind = 'fitted'; fit_spacing = 0.125_wp; smoothing = 0; degree = 5
+    if (status%ok() .and. .not. group_present(input, g)) then
+      call set_status(status, STATUS_INVALID_INPUT, input%name//': &'//g//' is missing: a slide (&geometry '// &
+                      'kind = ''slide'', the default) is built from its elements; give &'//g// &
+                      ' or choose another &geometry kind')
+      return
+    end if
     call open_group(input, g, names, r, status)
     call r%get('n_elements', n, 1, max_elements, status)
     if (.not. status%ok()) return

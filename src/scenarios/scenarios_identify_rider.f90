@@ -221,6 +221,7 @@ contains
                              'RMSE over the three contacts at the station', status)
       call file%make_scale(g//'stations/arc_length', status)
       call file%attach_scale(g//'stations/arc_length', g//'stations/', status)
+      call file%attach_scale(g//'contact_number', g//'stations/', status, axis=1)
     end if
     if (size(setup%data%segment_start) > 0) then
       call file%write_vector(g//'segments/start', setup%data%segment_start, 'm', &
@@ -311,6 +312,11 @@ contains
                                 'the ride failed: '//variant_status(k)%text())
         end if
       end do
+    end if
+    if (complete) then
+      call summary%add_text('results', 'results', path)
+    else
+      call summary%add_text('results', 'results (INCOMPLETE)', path)
     end if
     call summary%print(output_unit)
     if (allocated(run%summary_json)) then

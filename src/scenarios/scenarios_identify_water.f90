@@ -16,7 +16,7 @@ module scenarios_identify_water
   use water_run, only: water_description_t
   use design_water_identification, only: water_identification_t, water_fit_t, new_water_identification, &
     simulate_measurements, fit_water_friction, water_weight_sweep
-  use io_input, only: input_text_t, check_known_groups
+  use io_input, only: input_text_t, check_known_groups, where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_geometry_config, only: geometry_groups
@@ -74,7 +74,12 @@ contains
                       format_short(f_start(1))//', '//format_short(f_start(2))//', '//format_short(f_start(3))// &
                       ' must lie within &identify lower .. upper')
     if (.not. status%ok()) then
-      call prefix_status(status, input%name)
+      if (index(status%message, 'the measurement places') == 1) then
+        call prefix_status(status, where_given(input, 'identify', 'section_arc_length')// &
+                           ': &identify: section_arc_length, segment_start')
+      else
+        call prefix_status(status, input%name)
+      end if
       status%code = STATUS_INVALID_INPUT
       return
     end if
@@ -135,6 +140,7 @@ contains
       'the f1, f2, f3 the twin measurements were simulated with', status)
     call file%make_scale(g//'parameter_number', status)
     call file%attach_scale(g//'parameter_number', g, status)
+    call file%attach_scale(g//'parameter_number', g, status, axis=1)   ! the correlation's columns
     call file%write_scalar(g//'weight', fit%weight, '1', 'w of (4.34)', status)
     call file%write_scalar(g//'k1', fit%k1, 'rad s/m', 'k1 of (4.34)', status)
     call file%write_scalar(g//'cost', fit%cost, 'rad^2', 'F1 (4.34) at the optimum', status)
@@ -233,6 +239,11 @@ contains
       do k = 1, n
         call summary%add_line('  '//fixed(table(1, k), 'f11.3')//'   '//fixed(table(2, k), 'es12.4'))
       end do
+    end if
+    if (complete) then
+      call summary%add_text('results', 'results', path)
+    else
+      call summary%add_text('results', 'results (INCOMPLETE)', path)
     end if
     call summary%print(output_unit)
     if (allocated(run%summary_json)) then
