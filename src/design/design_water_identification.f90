@@ -31,6 +31,7 @@
 !> `threads`) for the difference Jacobian, with the same numbers as serially.
 module design_water_identification
   use base_kinds, only: wp
+  use base_sorting, only: unique_sorted
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use base_text, only: format_short, format_integer
   use numerics_ode, only: ode_options_t
@@ -178,33 +179,6 @@ contains
         'lie downstream of the start u0 = '//format_short(setup%y0(1)))
     end if
   end subroutine new_water_identification
-
-  pure function unique_sorted(x) result(s)
-    real(wp), intent(in) :: x(:)
-    real(wp), allocatable :: s(:)
-    real(wp) :: work(size(x)), t
-    integer :: i, j, n
-    work = x
-    do i = 2, size(work)   ! insertion sort: a few dozen places
-      t = work(i)
-      j = i - 1
-      do while (j >= 1)
-        if (work(j) <= t) exit
-        work(j + 1) = work(j)
-        j = j - 1
-      end do
-      work(j + 1) = t
-    end do
-    n = 0
-    do i = 1, size(work)
-      if (n > 0) then
-        if (work(i) == work(n)) cycle
-      end if
-      n = n + 1
-      work(n) = work(i)
-    end do
-    s = work(1:n)
-  end function unique_sorted
 
   !> One water run with friction f: the simulated middle at every section and
   !> the simulated speed on every segment. Reads the setup only (thread-safe).

@@ -9,6 +9,7 @@
 !> or do not start with a number (a header) are skipped.
 module geometry_bspline_surface
   use base_kinds, only: wp
+  use base_sorting, only: unique_sorted
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_t, surface_point_t
   use numerics_spline_surface, only: spline_surface_t, spline_surface_eval_t, fit_scattered, fit_grid, &
@@ -186,35 +187,6 @@ contains
     end select
     if (.not. built%ok()) status = built
   end subroutine bspline_from_table
-
-  pure function unique_sorted(x) result(u)
-    real(wp), intent(in) :: x(:)
-    real(wp), allocatable :: u(:)
-    real(wp) :: work(size(x)), t
-    integer :: i, j, n
-    work = x
-    do i = 2, size(work)            ! insertion sort (grids are small)
-      t = work(i)
-      j = i - 1
-      do while (j >= 1)
-        if (work(j) <= t) exit
-        work(j + 1) = work(j)
-        j = j - 1
-      end do
-      work(j + 1) = t
-    end do
-    n = 0
-    do i = 1, size(work)
-      if (n == 0) then
-        n = 1
-        work(n) = work(i)
-      else if (work(i) /= work(n)) then
-        n = n + 1
-        work(n) = work(i)
-      end if
-    end do
-    u = work(1:n)
-  end function unique_sorted
 
   !> A graph's u, v are x, y (m); a parametric fit's are its own numbers.
   pure subroutine bspline_parameter_units(self, u_units, v_units)
