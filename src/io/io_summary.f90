@@ -44,6 +44,7 @@ module io_summary
     procedure :: add_vector => summary_add_vector
     procedure :: add_count => summary_add_count
     procedure :: add_text => summary_add_text
+    procedure :: add_results => summary_add_results
     procedure :: add_table => summary_add_table
     procedure :: add_line => summary_add_line
     procedure :: print => summary_print
@@ -132,6 +133,18 @@ contains
     e%key = key; e%label = label; e%text = text; e%units = ''
     call push(self, e)
   end subroutine summary_add_text
+
+  !> The result file's path, the summary's last line (marked when incomplete).
+  subroutine summary_add_results(self, path, complete)
+    class(summary_t), intent(inout) :: self
+    character(len=*), intent(in) :: path
+    logical, intent(in) :: complete
+    if (complete) then
+      call self%add_text('results', 'results', path)
+    else
+      call self%add_text('results', 'results (INCOMPLETE)', path)
+    end if
+  end subroutine summary_add_results
 
   !> A table (rows of records in JSON); printed by the caller in its own layout.
   subroutine summary_add_table(self, key, columns, column_units, table)

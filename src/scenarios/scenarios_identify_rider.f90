@@ -313,11 +313,7 @@ contains
         end if
       end do
     end if
-    if (complete) then
-      call summary%add_text('results', 'results', path)
-    else
-      call summary%add_text('results', 'results (INCOMPLETE)', path)
-    end if
+    call summary%add_results(path, complete)
     call summary%print(output_unit)
     if (allocated(run%summary_json)) then
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)

@@ -240,11 +240,7 @@ contains
         call summary%add_line('  '//fixed(table(1, k), 'f11.3')//'   '//fixed(table(2, k), 'es12.4'))
       end do
     end if
-    if (complete) then
-      call summary%add_text('results', 'results', path)
-    else
-      call summary%add_text('results', 'results (INCOMPLETE)', path)
-    end if
+    call summary%add_results(path, complete)
     call summary%print(output_unit)
     if (allocated(run%summary_json)) then
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)

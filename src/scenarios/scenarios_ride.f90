@@ -406,11 +406,7 @@ contains
     call summary%add('water_cpu_time', 'CPU time water', water_cpu, 's')
     call summary%add('ride_cpu_time', 'CPU time rider', ride_cpu, 's')
     call summary%add_count('ride_steps', 'integrator', int(ride%driver%stats%steps), 'steps')
-    if (complete) then
-      call summary%add_text('results', 'results', path)
-    else
-      call summary%add_text('results', 'results (INCOMPLETE)', path)
-    end if
+    call summary%add_results(path, complete)
     call summary%print()
     if (allocated(run%summary_json)) then
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
