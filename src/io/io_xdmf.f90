@@ -26,6 +26,7 @@ module io_xdmf
   type :: xdmf_t
     private
     character(len=:), allocatable :: xml, h5
+    integer :: used = 0   ! characters of xml in use (xml grows by doubling: appending stays linear)
   contains
     procedure :: start => xdmf_start
     procedure :: surface => xdmf_surface
@@ -60,8 +61,10 @@ contains
     character(len=*), intent(in) :: h5_path
     self%h5 = h5_path(index(h5_path, '/', back=.true.) + 1:)
     ! no XML comment: ParaView's XDMF 2 reader reports an expression syntax error on some
-    self%xml = '<?xml version="1.0" ?>'//new_line('a')//'<Xdmf Version="2.0">'//new_line('a')//'<Domain>'// &
-               new_line('a')
+    self%used = 0
+    call add(self, '<?xml version="1.0" ?>')
+    call add(self, '<Xdmf Version="2.0">')
+    call add(self, '<Domain>')
   end subroutine xdmf_start
 
   !> The surface grid of io_surface_grid (group/x, y, z of shape (n_u, n_v)).
@@ -219,13 +222,23 @@ contains
     if (.not. status%ok()) return
     call add(self, '</Domain>')
     call add(self, '</Xdmf>')
-    call file%add_companion(xdmf_path(file%final_path()), self%xml)
+    call file%add_companion(xdmf_path(file%final_path()), self%xml(:self%used))
   end subroutine xdmf_attach
 
   subroutine add(self, line)
     class(xdmf_t), intent(inout) :: self
     character(len=*), intent(in) :: line
-    self%xml = self%xml//line//new_line('a')
+    character(len=:), allocatable :: grown
+    integer :: n
+    n = self%used + len(line) + 1
+    if (.not. allocated(self%xml)) allocate (character(len=max(4096, 2*n)) :: self%xml)
+    if (n > len(self%xml)) then
+      allocate (character(len=max(2*len(self%xml), n)) :: grown)
+      grown(:self%used) = self%xml(:self%used)
+      call move_alloc(grown, self%xml)
+    end if
+    self%xml(self%used + 1:n) = line//new_line('a')
+    self%used = n
   end subroutine add
 
   !> A node attribute from a dataset (Scalar: shape (n); Vector: (n, 3)).
