@@ -3,7 +3,9 @@
 !> 4.4.1: 27.9 s on an i7-8700), the rider-friction identification (4.4.3:
 !> 273 s on the same machine) and the optimisation of table 4.12 (4.7: 21.7 s
 !> on an i7-9700), each in 1 and 2 OpenMP threads; medians of 3 runs (the
-!> rider's: of 1), process CPU time and wall-clock time.
+!> rider's: of 1), process CPU time and wall-clock time. Arguments (optional):
+!> the job (all, water, rider, optimization), the most threads (2) and the
+!> repeats (3), so that one job once in one thread can run under callgrind.
 program design_bench
   use, intrinsic :: iso_fortran_env, only: int64
   use base_kinds, only: wp
@@ -24,31 +26,48 @@ program design_bench
   use bench_timing, only: median
   implicit none (type, external)
 
-  integer, parameter :: repeats = 3
+  integer :: repeats = 3
   real(wp), parameter :: f_true(3) = [0.0274748_wp, 0.138285_wp, 0.979822_wp]            ! table 4.3
   real(wp), parameter :: f_start(3) = [0.0695467_wp, 0.00472592_wp, 0.690685_wp]         ! table 4.3 start
   real(wp), parameter :: mu_true = 0.0724419_wp                                         ! table 4.8
   type(water_identification_t) :: water
   type(rider_identification_t) :: rider
-  integer :: threads
+  integer :: threads, max_threads
+  character(len=12) :: job
+  character(len=8) :: text
 
-  call water_setup(water)
-  print '(a)', 'water-friction identification, demo slide twin data (27 sections, 5 segments), from the'
-  print '(a)', 'thesis''s start values (table 4.3), w = 0.8, rtol 1e-10 / atol 1e-9 (C.4):'
-  do threads = 1, 2
-    call time_water(threads)
-  end do
-  call rider_setup(rider)
-  print '(a)', 'rider-friction identification, demo slide twin data (25 stations x 3 angles, 5 segments),'
-  print '(a)', 'from mu_D = 0.036 (50 % off; from 0 the rider lifts off) in [0, 0.11], w_RP = 0.6,'
-  print '(a)', 'rtol 1e-10 / atol 1e-9 (B.7), the water computed once:'
-  do threads = 1, 2
-    call time_rider(threads)
-  end do
-  print '(a)', 'optimisation of table 4.12 (5 design variables, 5 rides per design):'
-  do threads = 1, 2
-    call time_optimization(threads)
-  end do
+  call get_command_argument(1, job)
+  if (len_trim(job) == 0) job = 'all'
+  call get_command_argument(2, text)
+  max_threads = 2
+  if (len_trim(text) > 0) read (text, *) max_threads
+  call get_command_argument(3, text)
+  if (len_trim(text) > 0) read (text, *) repeats
+  if (all(job /= [character(len=12) :: 'all', 'water', 'rider', 'optimization'])) &
+    error stop 'usage: design_bench [all|water|rider|optimization [MAX_THREADS [REPEATS]]]'
+  if (job == 'all' .or. job == 'water') then
+    call water_setup(water)
+    print '(a)', 'water-friction identification, demo slide twin data (27 sections, 5 segments), from the'
+    print '(a)', 'thesis''s start values (table 4.3), w = 0.8, rtol 1e-10 / atol 1e-9 (C.4):'
+    do threads = 1, max_threads
+      call time_water(threads)
+    end do
+  end if
+  if (job == 'all' .or. job == 'rider') then
+    call rider_setup(rider)
+    print '(a)', 'rider-friction identification, demo slide twin data (25 stations x 3 angles, 5 segments),'
+    print '(a)', 'from mu_D = 0.036 (50 % off; from 0 the rider lifts off) in [0, 0.11], w_RP = 0.6,'
+    print '(a)', 'rtol 1e-10 / atol 1e-9 (B.7), the water computed once:'
+    do threads = 1, max_threads
+      call time_rider(threads)
+    end do
+  end if
+  if (job == 'all' .or. job == 'optimization') then
+    print '(a)', 'optimisation of table 4.12 (5 design variables, 5 rides per design):'
+    do threads = 1, max_threads
+      call time_optimization(threads)
+    end do
+  end if
 
 contains
 

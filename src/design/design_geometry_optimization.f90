@@ -72,7 +72,8 @@ module design_geometry_optimization
     integer :: max_outer = 8                  !< augmented Lagrangian updates
     integer :: threads = 1
     type(least_squares_options_t) :: solver = least_squares_options_t(ftol=1e-4_wp, xtol=1e-3_wp, &
-                                                                      gtol=0.0_wp, epsfcn=1e-8_wp)
+                                                                      gtol=0.0_wp, epsfcn=1e-8_wp, &
+                                                                      covariance=.false.)   ! not reported
   end type optimization_setup_t
 
   !> Every ride of one design.
@@ -99,6 +100,12 @@ module design_geometry_optimization
     integer :: mode = CONSTRAINT_PENALTY
     integer :: designs = 0                    !< designs evaluated so far (progress lines)
     integer(int64) :: clock_last = -1         !< system_clock of the last progress line
+    ! the design of least cost so far (the start design, then single
+    ! evaluations): LMDER starts and ends on it, so neither needs its rides again
+    logical :: has_best = .false.
+    real(wp) :: best_cost = huge(1.0_wp)
+    type(design_evaluation_t) :: best
+    integer :: recalled = 0                   !< evaluations answered by `best`
   contains
     procedure :: residuals => problem_residuals
     procedure :: residuals_batch => problem_residuals_batch
@@ -245,10 +252,34 @@ contains
     type(status_t), intent(inout) :: status
     type(design_evaluation_t) :: evaluation
     r = 0
+    if (is_best(self, p)) then
+      call residuals_of(self, self%best, r)
+      self%recalled = self%recalled + 1
+      return
+    end if
     call evaluate_design(self%setup, p, evaluation, status)
-    if (status%ok()) call residuals_of(self, evaluation, r)
     call progress(self, 1)
+    if (.not. status%ok()) return
+    call residuals_of(self, evaluation, r)
+    if (0.5_wp*sum(r**2) < self%best_cost) call remember(self, evaluation)
   end subroutine problem_residuals
+
+  !> Keeps `evaluation` as the best design (its cost under the current
+  !> constraint terms).
+  subroutine remember(self, evaluation)
+    class(optimization_problem_t), intent(inout) :: self
+    type(design_evaluation_t), intent(in) :: evaluation
+    self%has_best = .true.
+    self%best = evaluation
+    self%best_cost = cost_of(self, evaluation)
+  end subroutine remember
+
+  logical function is_best(self, x)
+    class(optimization_problem_t), intent(in) :: self
+    real(wp), intent(in) :: x(:)
+    is_best = .false.
+    if (self%has_best) is_best = all(self%best%x == x)
+  end function is_best
 
   !> A progress line every few seconds of a long optimisation (base_log's
   !> progress_interval): how many designs have been evaluated.
@@ -341,6 +372,7 @@ contains
     allocate (problem%lambda(n))
     problem%lambda = 0
     result%cost_before = cost_of(problem, result%before)
+    call remember(problem, result%before)
     do outer = 1, merge(setup%max_outer, 1, setup%constraint == CONSTRAINT_EXACT)
       result%outer = outer
       call solve_least_squares(problem, 2*n, x, setup%design%lower, setup%design%upper, setup%solver, fit, status)
@@ -349,13 +381,16 @@ contains
       result%info = fit%info
       if (.not. status%ok()) exit
       if (setup%constraint /= CONSTRAINT_EXACT) exit
-      call evaluate_design(setup, x, result%after, status)
-      result%evaluations = result%evaluations + 1
+      call evaluate_at(problem, x, result%after, result%evaluations, status)
       if (.not. status%ok()) exit
       g = result%after%rides%max_tipping_excess
       if (all(g <= setup%lever_tolerance)) exit
       problem%lambda = max(0.0_wp, problem%lambda + setup%rho*g)   ! first-order multiplier update
+      problem%best_cost = cost_of(problem, problem%best)   ! under the new multipliers
     end do
+    ! designs ridden: the start design, the fit's (less those answered by
+    ! `best`), the final one's if it was not the best already
+    result%evaluations = 1 + result%evaluations - problem%recalled
     result%x = x
     result%points = design_points(setup%design, x)
     result%multipliers = problem%lambda
@@ -363,10 +398,27 @@ contains
       call prefix_status(status, 'geometry optimisation')
       return
     end if
-    call evaluate_design(setup, x, result%after, status)
-    result%evaluations = result%evaluations + 1
+    ! (the augmented Lagrangian's loop has evaluated x already)
+    if (setup%constraint /= CONSTRAINT_EXACT) call evaluate_at(problem, x, result%after, result%evaluations, status)
     if (status%ok()) result%cost_after = cost_of(problem, result%after)
   end subroutine optimize_slide
+
+  !> The evaluation of design x: the best one if it is x, else its rides
+  !> (counted in `evaluations`).
+  subroutine evaluate_at(problem, x, evaluation, evaluations, status)
+    type(optimization_problem_t), intent(in) :: problem
+    real(wp), intent(in) :: x(:)
+    type(design_evaluation_t), intent(out) :: evaluation
+    integer, intent(inout) :: evaluations
+    type(status_t), intent(out) :: status
+    if (is_best(problem, x)) then
+      evaluation = problem%best
+      status = status_t()
+    else
+      call evaluate_design(problem%setup, x, evaluation, status)
+      evaluations = evaluations + 1
+    end if
+  end subroutine evaluate_at
 
   real(wp) function cost_of(problem, evaluation) result(f)
     type(optimization_problem_t), intent(in) :: problem

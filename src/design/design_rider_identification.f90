@@ -98,6 +98,12 @@ module design_rider_identification
   type, extends(least_squares_problem_t) :: rider_fit_problem_t
     type(rider_identification_t) :: setup
     type(rider_fit_options_t) :: options
+    ! the single evaluation of least cost so far: LMDER ends on it, so the
+    ! report at the optimum needs no ride of its own
+    logical :: has_best = .false.
+    real(wp) :: best_cost = huge(1.0_wp)
+    real(wp) :: best_mu = 0
+    type(rider_stations_t) :: best
   contains
     procedure :: residuals => fit_residuals
     procedure :: residuals_batch => fit_residuals_batch
@@ -222,13 +228,13 @@ contains
       simulated%segment_speed - setup%data%segment_speed)
   end subroutine rider_cost_groups
 
-  subroutine evaluate(self, p, r, status)
+  subroutine evaluate(self, p, r, status, simulated)
     class(rider_fit_problem_t), intent(in) :: self
     real(wp), intent(in) :: p(:)
     real(wp), intent(out) :: r(:)
     type(status_t), intent(inout) :: status
+    type(rider_stations_t), intent(out) :: simulated
     type(rider_params_t) :: params
-    type(rider_stations_t) :: simulated
     type(cost_group_t) :: groups(N_CONTACTS + 1)
     integer :: offset, g
     r = 0
@@ -248,7 +254,15 @@ contains
     real(wp), intent(in) :: p(:)
     real(wp), intent(out) :: r(:)
     type(status_t), intent(inout) :: status
-    call evaluate(self, p, r, status)
+    type(rider_stations_t) :: simulated
+    call evaluate(self, p, r, status, simulated)
+    if (.not. status%ok()) return
+    if (0.5_wp*sum(r**2) < self%best_cost) then
+      self%has_best = .true.
+      self%best_cost = 0.5_wp*sum(r**2)
+      self%best_mu = p(1)
+      self%best = simulated
+    end if
   end subroutine fit_residuals
 
   !> Independent rides in `threads` OpenMP threads (each its own rider).
@@ -257,11 +271,12 @@ contains
     real(wp), intent(in) :: p(:, :)
     real(wp), intent(out) :: r(:, :)
     type(status_t), intent(inout) :: statuses(:)
+    type(rider_stations_t) :: simulated
     integer :: k
-    !$omp parallel do num_threads(max(1, self%setup%threads)) schedule(dynamic, 1) &
+    !$omp parallel do num_threads(max(1, self%setup%threads)) schedule(dynamic, 1) private(simulated) &
     !$omp if (self%setup%threads > 1 .and. size(p, 2) > 1)
     do k = 1, size(p, 2)
-      call evaluate(self, p(:, k), r(:, k), statuses(k))
+      call evaluate(self, p(:, k), r(:, k), statuses(k), simulated)
     end do
     !$omp end parallel do
   end subroutine fit_residuals_batch
@@ -301,41 +316,47 @@ contains
     fit%at_bound = result%at_bound(1)
     fit%covariance_valid = result%covariance_valid
     if (result%covariance_valid) fit%standard_error = result%standard_error(1)
-    call report(setup, options, fit, status)
-    fit%evaluations = fit%evaluations + 1
+    call report(problem, fit, status)
   end subroutine fit_rider_friction
 
-  !> The simulated measurements, errors and figures at fit%mu.
-  subroutine report(setup, options, fit, status)
-    type(rider_identification_t), intent(in) :: setup
-    type(rider_fit_options_t), intent(in) :: options
+  !> The simulated measurements, errors and figures at fit%mu (the fit's own
+  !> ride there when it kept it, else one more ride).
+  subroutine report(problem, fit, status)
+    type(rider_fit_problem_t), intent(in) :: problem
     type(rider_fit_t), intent(inout) :: fit
     type(status_t), intent(inout) :: status
     type(cost_group_t) :: groups(N_CONTACTS + 1)
     type(rider_params_t) :: params
     integer :: k
-    params = setup%params
-    params%mu = fit%mu
-    call simulate_rider(setup, params, fit%simulated, status)
-    if (.not. status%ok()) return
-    fit%error_angle = fit%simulated%angle - setup%data%angle
-    fit%error_speed = fit%simulated%segment_speed - setup%data%segment_speed
-    fit%station_rmse = sqrt(sum(fit%error_angle**2, dim=1)/N_CONTACTS)
-    call rider_cost_groups(setup, options, fit%simulated, groups)
-    fit%weight = options%weight
-    fit%k2 = options%k2
-    do k = 1, N_CONTACTS
-      fit%contact_part(k) = group_part(groups(k))
-      fit%rmse_angle(k) = group_rmse(groups(k))
-      fit%mae_angle(k) = group_mae(groups(k))
-      fit%max_angle(k) = group_max_abs(groups(k))
-    end do
-    fit%position_part = sum(fit%contact_part)
-    fit%speed_part = group_part(groups(N_CONTACTS + 1))
-    fit%cost = fit%position_part + fit%speed_part
-    fit%rmse_speed = group_rmse(groups(N_CONTACTS + 1))
-    fit%mae_speed = group_mae(groups(N_CONTACTS + 1))
-    fit%max_speed = group_max_abs(groups(N_CONTACTS + 1))
+    associate (setup => problem%setup, options => problem%options)
+      if (problem%has_best .and. problem%best_mu == fit%mu) then
+        fit%simulated = problem%best
+      else
+        params = setup%params
+        params%mu = fit%mu
+        call simulate_rider(setup, params, fit%simulated, status)
+        fit%evaluations = fit%evaluations + 1
+        if (.not. status%ok()) return
+      end if
+      fit%error_angle = fit%simulated%angle - setup%data%angle
+      fit%error_speed = fit%simulated%segment_speed - setup%data%segment_speed
+      fit%station_rmse = sqrt(sum(fit%error_angle**2, dim=1)/N_CONTACTS)
+      call rider_cost_groups(setup, options, fit%simulated, groups)
+      fit%weight = options%weight
+      fit%k2 = options%k2
+      do k = 1, N_CONTACTS
+        fit%contact_part(k) = group_part(groups(k))
+        fit%rmse_angle(k) = group_rmse(groups(k))
+        fit%mae_angle(k) = group_mae(groups(k))
+        fit%max_angle(k) = group_max_abs(groups(k))
+      end do
+      fit%position_part = sum(fit%contact_part)
+      fit%speed_part = group_part(groups(N_CONTACTS + 1))
+      fit%cost = fit%position_part + fit%speed_part
+      fit%rmse_speed = group_rmse(groups(N_CONTACTS + 1))
+      fit%mae_speed = group_mae(groups(N_CONTACTS + 1))
+      fit%max_speed = group_max_abs(groups(N_CONTACTS + 1))
+    end associate
   end subroutine report
 
   !> The fit for every weight w_RP (table 4.7), each from the same start.

@@ -115,6 +115,12 @@ module design_water_identification
   type, extends(least_squares_problem_t) :: water_fit_problem_t
     type(water_identification_t) :: setup
     type(water_fit_options_t) :: options
+    ! the single evaluation of least cost so far: LMDER ends on it, so the
+    ! report at the optimum needs no run of its own
+    logical :: has_best = .false.
+    real(wp) :: best_cost = huge(1.0_wp)
+    real(wp) :: best_f(3) = 0
+    real(wp), allocatable :: best_v(:), best_speed(:)
   contains
     procedure :: residuals => fit_residuals
     procedure :: residuals_batch => fit_residuals_batch
@@ -259,12 +265,12 @@ contains
     if (allocated(options%use_segment)) use_segment = options%use_segment
   end subroutine used
 
-  subroutine evaluate(self, p, r, status)
+  subroutine evaluate(self, p, r, status, sv, sw)
     class(water_fit_problem_t), intent(in) :: self
     real(wp), intent(in) :: p(:)
     real(wp), intent(out) :: r(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: sv(size(self%setup%data%section_v)), sw(size(self%setup%data%segment_speed))
+    real(wp), intent(out) :: sv(:), sw(:)   !< the simulated measurements
     type(cost_group_t) :: groups(2)
     integer :: offset
     r = 0
@@ -281,7 +287,16 @@ contains
     real(wp), intent(in) :: p(:)
     real(wp), intent(out) :: r(:)
     type(status_t), intent(inout) :: status
-    call evaluate(self, p, r, status)
+    real(wp) :: sv(size(self%setup%data%section_v)), sw(size(self%setup%data%segment_speed))
+    call evaluate(self, p, r, status, sv, sw)
+    if (.not. status%ok()) return
+    if (0.5_wp*sum(r**2) < self%best_cost) then
+      self%has_best = .true.
+      self%best_cost = 0.5_wp*sum(r**2)
+      self%best_f = p
+      self%best_v = sv
+      self%best_speed = sw
+    end if
   end subroutine fit_residuals
 
   !> Independent evaluations in `threads` OpenMP threads (each its own model).
@@ -290,11 +305,12 @@ contains
     real(wp), intent(in) :: p(:, :)
     real(wp), intent(out) :: r(:, :)
     type(status_t), intent(inout) :: statuses(:)
+    real(wp) :: sv(size(self%setup%data%section_v)), sw(size(self%setup%data%segment_speed))
     integer :: k
-    !$omp parallel do num_threads(max(1, self%setup%threads)) schedule(dynamic, 1) &
+    !$omp parallel do num_threads(max(1, self%setup%threads)) schedule(dynamic, 1) private(sv, sw) &
     !$omp if (self%setup%threads > 1 .and. size(p, 2) > 1)
     do k = 1, size(p, 2)
-      call evaluate(self, p(:, k), r(:, k), statuses(k))
+      call evaluate(self, p(:, k), r(:, k), statuses(k), sv, sw)
     end do
     !$omp end parallel do
   end subroutine fit_residuals_batch
@@ -342,34 +358,41 @@ contains
         end do
       end do
     end if
-    call report(setup, options, fit, status)
-    fit%evaluations = fit%evaluations + 1
+    call report(problem, fit, status)
   end subroutine fit_water_friction
 
-  !> The simulated measurements, errors and figures at fit%f.
-  subroutine report(setup, options, fit, status)
-    type(water_identification_t), intent(in) :: setup
-    type(water_fit_options_t), intent(in) :: options
+  !> The simulated measurements, errors and figures at fit%f (the fit's
+  !> own run there when it kept it, else one more run).
+  subroutine report(problem, fit, status)
+    type(water_fit_problem_t), intent(in) :: problem
     type(water_fit_t), intent(inout) :: fit
     type(status_t), intent(inout) :: status
     type(cost_group_t) :: groups(2)
-    allocate (fit%simulated_v(size(setup%data%section_v)), fit%simulated_speed(size(setup%data%segment_speed)))
-    call simulate_measurements(setup, fit%f, fit%simulated_v, fit%simulated_speed, status)
-    if (.not. status%ok()) return
-    fit%error_v = fit%simulated_v - setup%data%section_v
-    fit%error_speed = fit%simulated_speed - setup%data%segment_speed
-    call water_cost_groups(setup, options, fit%simulated_v, fit%simulated_speed, groups)
-    fit%weight = options%weight
-    fit%k1 = options%k1
-    fit%position_part = group_part(groups(1))
-    fit%speed_part = group_part(groups(2))
-    fit%cost = fit%position_part + fit%speed_part
-    fit%rmse_position = group_rmse(groups(1))
-    fit%mae_position = group_mae(groups(1))
-    fit%max_position = group_max_abs(groups(1))
-    fit%rmse_speed = group_rmse(groups(2))
-    fit%mae_speed = group_mae(groups(2))
-    fit%max_speed = group_max_abs(groups(2))
+    associate (setup => problem%setup, options => problem%options)
+      if (problem%has_best .and. all(problem%best_f == fit%f)) then
+        fit%simulated_v = problem%best_v
+        fit%simulated_speed = problem%best_speed
+      else
+        allocate (fit%simulated_v(size(setup%data%section_v)), fit%simulated_speed(size(setup%data%segment_speed)))
+        call simulate_measurements(setup, fit%f, fit%simulated_v, fit%simulated_speed, status)
+        fit%evaluations = fit%evaluations + 1
+        if (.not. status%ok()) return
+      end if
+      fit%error_v = fit%simulated_v - setup%data%section_v
+      fit%error_speed = fit%simulated_speed - setup%data%segment_speed
+      call water_cost_groups(setup, options, fit%simulated_v, fit%simulated_speed, groups)
+      fit%weight = options%weight
+      fit%k1 = options%k1
+      fit%position_part = group_part(groups(1))
+      fit%speed_part = group_part(groups(2))
+      fit%cost = fit%position_part + fit%speed_part
+      fit%rmse_position = group_rmse(groups(1))
+      fit%mae_position = group_mae(groups(1))
+      fit%max_position = group_max_abs(groups(1))
+      fit%rmse_speed = group_rmse(groups(2))
+      fit%mae_speed = group_mae(groups(2))
+      fit%max_speed = group_max_abs(groups(2))
+    end associate
   end subroutine report
 
   !> The thesis's start values (C.5): (1) f1 from the energy balance over the

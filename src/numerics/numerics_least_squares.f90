@@ -42,7 +42,13 @@
 !> inside the bounds, or the analytic Jacobian), s^2 = sum r^2 / (m - n_free);
 !> parameters at a bound have zero rows and columns and at_bound = .true.
 !> If the model fails on both sides of the optimum in some parameter, there
-!> is no covariance (covariance_valid = .false.), the fit stands.
+!> is no covariance (covariance_valid = .false.), the fit stands. A fit that
+!> asks for no covariance (options%covariance = .false.) skips these
+!> differences unless a parameter lies near a bound.
+!>
+!> LMDER asks for the same point twice in a row when a rejected step leaves the
+!> Gauss-Newton step inside the shrunken trust region: the residuals of the
+!> last successful evaluation are handed back (same bits, not counted).
 !>
 !> Re-entrant and thread-safe. MINPACK's callbacks carry no user data: each
 !> call of solve_least_squares keeps its fit in a local record (`fit_t`) and
@@ -91,6 +97,9 @@ module numerics_least_squares
     real(wp) :: epsfcn = 0               !< relative error of the residuals for the difference step (0 = machine precision)
     real(wp) :: factor = 100             !< initial step bound factor
     real(wp) :: bound_tolerance = 1e-6_wp   !< relative distance at which an optimum is put on its bound
+    logical :: covariance = .true.       !< the covariance at the optimum is wanted (its differences cost
+                                         !< 2 evaluations per parameter); without it the Jacobian there is
+                                         !< formed only for a parameter within bound_tolerance of a bound
   end type least_squares_options_t
 
   type :: least_squares_result_t
@@ -126,6 +135,8 @@ module numerics_least_squares
     logical :: jacobian_ok = .false.          !< jac holds dr/dp at p (see original_jacobian)
     integer :: rejected = 0
     character(len=:), allocatable :: last_rejection
+    logical :: has_last = .false.             !< last_p, last_r hold the last successful evaluation
+    real(wp), allocatable :: last_p(:), last_r(:)
     integer, allocatable :: kind(:)
     integer, allocatable :: free(:)           !< parameter index of each MINPACK unknown
     real(wp), allocatable :: lower(:), upper(:)
@@ -245,7 +256,7 @@ contains
     result%at_bound = fit%kind == KIND_FIXED
 
     call fit_free(fit, options, r, result, status)
-    if (status%ok()) call original_jacobian(fit, options, r, result, status)
+    if (status%ok()) call jacobian_at_optimum(fit, options, r, result, status)
 
     ! Put optima that sit (nearly) on a bound, with the gradient pushing outward
     ! (Kuhn-Tucker), exactly on it and fit the others again; repeated because a
@@ -284,10 +295,10 @@ contains
         fit%p = p_before
         r = r_before
         result%at_bound = at_bound_before
-        call original_jacobian(fit, options, r, result, status)
+        call jacobian_at_optimum(fit, options, r, result, status)
         exit
       end if
-      call original_jacobian(fit, options, r, result, status)
+      call jacobian_at_optimum(fit, options, r, result, status)
     end do
 
     p = fit%p
@@ -461,10 +472,21 @@ contains
     end if
     call set_parameters(fit, x)
     if (iflag == 1) then
+      if (fit%has_last) then
+        ! LMDER asks again for the point it just had when a rejected step's
+        ! shrunken trust region still holds the Gauss-Newton step: same bits
+        if (all(fit%p == fit%last_p)) then
+          fvec = fit%last_r
+          return
+        end if
+      end if
       call evaluate_residuals(fit, fit%p, fvec, status)
       fit%evaluations = fit%evaluations + 1
       if (status%ok()) then
         fit%largest_norm = max(fit%largest_norm, norm2(fvec))
+        fit%has_last = .true.
+        fit%last_p = fit%p
+        fit%last_r = fvec
       else if (fit%started .and. is_rejectable(status)) then
         fit%rejected = fit%rejected + 1
         fit%last_rejection = status%text()
@@ -552,6 +574,30 @@ contains
       end if
     end do
   end subroutine batch_at
+
+  !> The Jacobian at the optimum (original_jacobian) when the covariance is
+  !> wanted or a free parameter lies within bound_tolerance of a bound (the
+  !> snapping needs its gradient there); otherwise none (jacobian_ok false).
+  recursive subroutine jacobian_at_optimum(fit, options, r, result, status)
+    type(fit_t), intent(inout) :: fit
+    type(least_squares_options_t), intent(in) :: options
+    real(wp), intent(in) :: r(:)
+    type(least_squares_result_t), intent(inout) :: result
+    type(status_t), intent(out) :: status
+    logical :: near
+    integer :: i
+    near = .false.
+    do i = 1, size(fit%p)
+      if (result%at_bound(i)) cycle
+      if (has_lower(fit%kind(i))) near = near .or. &
+        fit%p(i) - fit%lower(i) <= options%bound_tolerance*max(1.0_wp, abs(fit%lower(i)))
+      if (has_upper(fit%kind(i))) near = near .or. &
+        fit%upper(i) - fit%p(i) <= options%bound_tolerance*max(1.0_wp, abs(fit%upper(i)))
+    end do
+    status = status_t()
+    fit%jacobian_ok = .false.
+    if (options%covariance .or. near) call original_jacobian(fit, options, r, result, status)
+  end subroutine jacobian_at_optimum
 
   !> fit%jac = dr/dp at fit%p for the parameters not at a bound: the
   !> problem's Jacobian, or differences that stay inside the bounds (central with
