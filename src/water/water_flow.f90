@@ -125,6 +125,12 @@ module water_flow
     logical :: cached = .false.
     real(wp) :: cache_y(5) = 0           ! the state self%q belongs to
     type(water_point_t) :: q             ! the last water point (valid if cached)
+    ! the root values that depend on the water point (stall, critical, turn,
+    ! lift-off) at the last right-hand side, its (t, y), and the largest
+    ! |value| of each met in the run (system_roots)
+    logical :: rhs_roots_known = .false.
+    real(wp) :: rhs_t = 0, rhs_y(5) = 0, rhs_g(ROOT_STALL:ROOT_LIFT) = 0
+    real(wp) :: root_scale(ROOT_STALL:ROOT_LIFT) = 0
   contains
     procedure :: rhs => system_rhs
     procedure :: root_count => system_root_count
@@ -413,11 +419,17 @@ contains
     type(status_t), intent(inout) :: status
     associate (unused => t)
     end associate
+    self%rhs_roots_known = .false.
     call self%point(y, status)
     if (.not. status%ok()) then
       ydot = 0
       return
     end if
+    call point_roots(self, self%rhs_g)
+    self%root_scale = max(self%root_scale, abs(self%rhs_g))
+    self%rhs_t = t
+    self%rhs_y = y(1:5)
+    self%rhs_roots_known = .true.
     ydot(1) = y(3)
     ydot(2) = y(4)
     ydot(3) = self%q%udd
@@ -452,24 +464,54 @@ contains
     associate (unused => t)
     end associate
     g(ROOT_END) = self%u_end - y(1)
-    g(ROOT_TURN) = y(3)
-    call self%point(y, st)
-    if (st%ok()) then
-      g(ROOT_TURN) = -dot_product(self%q%y_m, self%q%x_w) - turn_cosine   ! cos(beta) - 0.01: turning across
-      g(ROOT_STALL) = self%q%speed - self%model%min_speed
-      g(ROOT_LIFT) = self%q%normal_force/self%model%mass    ! m/s^2
-      if (self%model%correction == CORRECTION_OFF) then
-        g(ROOT_CRITICAL) = 1
-      else
-        g(ROOT_CRITICAL) = self%q%criticality - self%model%min_criticality
-      end if
-    else
-      g(ROOT_STALL) = 1; g(ROOT_CRITICAL) = 1; g(ROOT_LIFT) = 1
-    end if
     do i = 1, self%root_count() - ROOT_FIRST_STATION + 1
       g(ROOT_FIRST_STATION - 1 + i) = y(1) - self%model%stations(i)
     end do
+    if (rhs_values_serve()) then
+      g(ROOT_STALL:ROOT_LIFT) = self%rhs_g
+      return
+    end if
+    call self%point(y, st)
+    if (st%ok()) then
+      call point_roots(self, g(ROOT_STALL:ROOT_LIFT))
+    else
+      g(ROOT_STALL) = 1; g(ROOT_CRITICAL) = 1; g(ROOT_TURN) = y(3); g(ROOT_LIFT) = 1
+    end if
+  contains
+    !> CVODE asks for the roots at the end of each step, at y_n, while its
+    !> last right-hand side was at the corrector's previous iterate: the
+    !> same t, a state within the corrector's tolerance. The values there
+    !> serve (no water point of its own) when the states differ by at most
+    !> 1e-7 relative and every value is far from zero, >= 1e-3 of the
+    !> largest met in the run: the error of such a value is its sensitivity
+    !> to the state (O(1-10) per unit of u, v, u', v', h) times the
+    !> difference, orders of magnitude below 1e-3 of its scale, so no sign
+    !> can be wrong (as the mechanism's, kinetostatics_mechanism_ode). Near
+    !> a root, or at any other (t, y), the water point is evaluated.
+    logical function rhs_values_serve() result(serve)
+      serve = .false.
+      if (.not. self%rhs_roots_known .or. t /= self%rhs_t) return
+      if (self%cached) then
+        if (all(y(1:5) == self%cache_y)) return   ! the exact point is at hand
+      end if
+      if (maxval(abs(y(1:5) - self%rhs_y)) > 1e-7_wp*max(maxval(abs(self%rhs_y)), 1.0_wp)) return
+      serve = all(abs(self%rhs_g) >= 1e-3_wp*self%root_scale)
+    end function rhs_values_serve
   end subroutine system_roots
+
+  !> The root values of the water point self%q: stall, critical, turn, lift-off.
+  subroutine point_roots(self, g)
+    class(water_system_t), intent(in) :: self
+    real(wp), intent(out) :: g(ROOT_STALL:ROOT_LIFT)
+    g(ROOT_TURN) = -dot_product(self%q%y_m, self%q%x_w) - turn_cosine   ! cos(beta) - 0.01: turning across
+    g(ROOT_STALL) = self%q%speed - self%model%min_speed
+    g(ROOT_LIFT) = self%q%normal_force/self%model%mass    ! m/s^2
+    if (self%model%correction == CORRECTION_OFF) then
+      g(ROOT_CRITICAL) = 1
+    else
+      g(ROOT_CRITICAL) = self%q%criticality - self%model%min_criticality
+    end if
+  end subroutine point_roots
 
   !> Stations are filled here (no sample); the end and the model's stops end
   !> the run (recorded by the driver) with their outcome and message.
