@@ -40,7 +40,7 @@ module numerics_ode
   use fcvode_mod, only: FCVodeCreate, FCVodeInit, FCVodeReInit, FCVodeFree, FCVode, &
     FCVodeSStolerances, FCVodeSVtolerances, FCVodeSetUserData, FCVodeSetErrHandlerFn, &
     FCVodeSetLinearSolver, FCVodeSetNonlinearSolver, FCVodeSetMaxNumSteps, &
-    FCVodeSetMaxStep, FCVodeSetInitStep, FCVodeSetMaxOrd, FCVodeSetStopTime, &
+    FCVodeSetMaxStep, FCVodeSetInitStep, FCVodeSetNonlinConvCoef, FCVodeSetMaxOrd, FCVodeSetStopTime, &
     FCVodeRootInit, FCVodeSetRootDirection, FCVodeGetRootInfo, FCVodeSetNoInactiveRootWarn, &
     FCVodeGetNumSteps, FCVodeGetNumRhsEvals, FCVodeGetNumLinRhsEvals, &
     FCVodeGetNumErrTestFails, FCVodeGetNumNonlinSolvConvFails, FCVodeGetNumGEvals, &
@@ -89,6 +89,9 @@ module numerics_ode
     real(wp) :: max_step = 0                    !< largest step size; 0 = no limit
     real(wp) :: initial_step = 0                !< first step size; 0 = CVODE's estimate
     integer :: max_order = 0                    !< 0 = default (12 Adams, 5 BDF)
+    !> the corrector stops when its estimated error is below this fraction of
+    !> the local error tolerance (CVODE's nlscoef, whose default this is)
+    real(wp) :: convergence_coefficient = 0.1_wp
     integer, allocatable :: root_direction(:)   !< +1 rising only, -1 falling only, 0 both
   end type ode_options_t
 
@@ -254,6 +257,8 @@ contains
       flag = FCVodeSetMaxStep(self%cvode, options%max_step)
     if (flag == CV_SUCCESS .and. options%initial_step > 0) &
       flag = FCVodeSetInitStep(self%cvode, options%initial_step)
+    if (flag == CV_SUCCESS .and. options%convergence_coefficient /= 0.1_wp) &
+      flag = FCVodeSetNonlinConvCoef(self%cvode, options%convergence_coefficient)
     if (flag == CV_SUCCESS .and. options%max_order > 0) &
       flag = FCVodeSetMaxOrd(self%cvode, int(options%max_order, c_int))
     call cvode_status(flag, 'CVode options', t0, self%link, status)
