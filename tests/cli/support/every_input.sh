@@ -39,7 +39,7 @@ for input in "$root"/inputs/*.nml "$root"/inputs/*/*.nml; do
     contact_egg) run "$name" --set solver%duration=3 "$input" ;;        # of 10 s
     templates_contact) run "$name" --set solver%duration=1 "$input" ;;  # the egg again
     contact_paraboloids) run "$name" --set solver%duration=2 "$input" ;;   # of 20 s
-    contact_tower5) run "$name" --set solver%duration=0.5 "$input" ;;   # of 20 s of a five-body tower
+    contact_tower5) run "$name" --set solver%duration=0.5 "$input" ;;   # of the 5 s of the five-body tower input
     ride_demo_slide | templates_ride)   # the default is this ride in full
       run "$name" --set solver%rtol=1e-6 --set solver%atol=1e-5 "$input" ;;
     templates_optimize) run "$name" --set optimize%ftol=0.1 --set optimize%xtol=0.1 "$input" ;;
