@@ -47,26 +47,33 @@ contains
     m(1, 1) = 1; m(2, 2) = 1; m(3, 3) = 1
   end function identity3
 
-  !> Rotation by angle (rad) about the x axis.
+  !> Rotation by angle (rad) about the x axis (element by element: hot in the
+  !> joints' position maps, where a reshape of a constructor costs a library call).
   pure function rot_x(angle) result(r)
     real(wp), intent(in) :: angle
     real(wp) :: r(3, 3), c, s
     c = cos(angle); s = sin(angle)
-    r = reshape([1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, c, s, 0.0_wp, -s, c], [3, 3])
+    r(:, 1) = [1.0_wp, 0.0_wp, 0.0_wp]
+    r(1, 2) = 0; r(2, 2) = c; r(3, 2) = s
+    r(1, 3) = 0; r(2, 3) = -s; r(3, 3) = c
   end function rot_x
 
   pure function rot_y(angle) result(r)
     real(wp), intent(in) :: angle
     real(wp) :: r(3, 3), c, s
     c = cos(angle); s = sin(angle)
-    r = reshape([c, 0.0_wp, -s, 0.0_wp, 1.0_wp, 0.0_wp, s, 0.0_wp, c], [3, 3])
+    r(1, 1) = c; r(2, 1) = 0; r(3, 1) = -s
+    r(:, 2) = [0.0_wp, 1.0_wp, 0.0_wp]
+    r(1, 3) = s; r(2, 3) = 0; r(3, 3) = c
   end function rot_y
 
   pure function rot_z(angle) result(r)
     real(wp), intent(in) :: angle
     real(wp) :: r(3, 3), c, s
     c = cos(angle); s = sin(angle)
-    r = reshape([c, s, 0.0_wp, -s, c, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [3, 3])
+    r(1, 1) = c; r(2, 1) = s; r(3, 1) = 0
+    r(1, 2) = -s; r(2, 2) = c; r(3, 2) = 0
+    r(:, 3) = [0.0_wp, 0.0_wp, 1.0_wp]
   end function rot_z
 
   !> Cardan angles: R = Rx(a1) Ry(a2) Rz(a3) (rotations about the moving x, y', z'').

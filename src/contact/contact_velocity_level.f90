@@ -105,6 +105,9 @@ contains
     e%rolling = rolling
     e%joint_1 = new_surface_joint(name//'.s1', 1, 2, 1, 2, surface_1, side_1, 1.0_wp, 0.0_wp)
     e%joint_2 = new_surface_joint(name//'.s2', 1, 2, 1, 2, surface_2, side_2, 1.0_wp, 0.0_wp)
+    ! this element reads the joints' rates directly after their position maps
+    e%joint_1%lazy = .false.
+    e%joint_2%lazy = .false.
     e%chart = new_free_rotation(name//'.pose', 1, 2, [1, 2, 3], [0.0_wp, 0.0_wp, 1.0_wp], start)
   end function new_velocity_contact
 

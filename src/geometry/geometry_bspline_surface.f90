@@ -75,7 +75,7 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'B-spline surface: order must be 0..3')
       return
     end if
-    call self%spline%evaluate(u, v, e, status)
+    call self%spline%evaluate(u, v, e, status, order)
     if (.not. status%ok()) return
     p%order = order
     if (self%graph) then

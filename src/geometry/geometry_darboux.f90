@@ -53,7 +53,7 @@ module geometry_darboux
   use geometry_surface, only: surface_point_t
   implicit none (type, external)
   private
-  public :: darboux_frame_t, darboux_frame, singular_tol
+  public :: darboux_frame_t, darboux_frame, darboux_axes, singular_tol
   public :: SINGULAR_RULE_THESIS, SINGULAR_RULE_LIMIT
 
   !> Singular-point rules: (3.40) with appendix A (default), or the limit of (3.38).
@@ -123,8 +123,7 @@ contains
       ! thesis (3.38), (3.48), (3.49)
       w = sigma*cross(p%ru, p%rv)
       if (norm2(w) <= singular_tol*abs(sigma)*norm_ru*norm_rv) then
-        call set_status(status, STATUS_DOMAIN, &
-                        'Darboux frame: r_u and r_v are parallel; the surface normal is undefined')
+        call fail_parallel(status)
         return
       end if
       wu = sigma*(cross(p%ruu, p%rv) + cross(p%ru, p%ruv))
@@ -178,8 +177,7 @@ contains
     ! x_D and its derivatives, thesis (3.41), (3.46), (3.47).
     w = alpha_u*p%ru + alpha_v*p%rv
     if (norm2(w) <= singular_tol*(abs(alpha_u)*norm_ru + abs(alpha_v)*norm_rv)) then
-      call set_status(status, STATUS_DOMAIN, 'Darboux frame: alpha_u r_u + alpha_v r_v = 0; ' // &
-                      'x_D is undefined (at r_u = 0 alpha_v must not be 0)')
+      call fail_x_undefined(status)
       return
     end if
     wu = alpha_u*p%ruu + alpha_v*p%ruv
@@ -211,6 +209,64 @@ contains
     frame%r(:, 2) = y
     frame%r(:, 3) = z
   end subroutine darboux_frame
+
+  !> The axes alone (columns x_D, y_D, z_D) at a point p evaluated to order
+  !> >= 1, for a position map that needs no rates: at a regular point the same
+  !> axes and failures as darboux_frame. singular = .true. where the
+  !> singular-point rule applies (|r_u| <= singular_tol |r_v|); the axes are
+  !> then not set (they need p to order 3: call darboux_frame).
+  pure subroutine darboux_axes(p, sigma, alpha_u, alpha_v, axes, singular, status)
+    type(surface_point_t), intent(in) :: p
+    real(wp), intent(in) :: sigma, alpha_u, alpha_v
+    real(wp), intent(out) :: axes(3, 3)
+    logical, intent(out) :: singular
+    type(status_t), intent(out) :: status
+    real(wp) :: w(3), x(3), z(3), norm_ru, norm_rv, s
+    axes = 0
+    singular = .false.
+    if (p%order < 1) then
+      call set_status(status, STATUS_INVALID_INPUT, &
+                      'Darboux axes: the surface point must be evaluated to order >= 1')
+      return
+    end if
+    if (sigma == 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'Darboux frame: sigma = 0 is not allowed')
+      return
+    end if
+    norm_ru = norm2(p%ru)
+    norm_rv = norm2(p%rv)
+    singular = norm_ru <= singular_tol*norm_rv .or. norm_rv == 0
+    if (singular) return
+    ! z_D (3.38) and x_D (3.41) as unit_and_derivatives forms them
+    w = sigma*cross(p%ru, p%rv)
+    s = norm2(w)
+    if (s <= singular_tol*abs(sigma)*norm_ru*norm_rv) then
+      call fail_parallel(status)
+      return
+    end if
+    z = w/s
+    w = alpha_u*p%ru + alpha_v*p%rv
+    s = norm2(w)
+    if (s <= singular_tol*(abs(alpha_u)*norm_ru + abs(alpha_v)*norm_rv)) then
+      call fail_x_undefined(status)
+      return
+    end if
+    x = w/s
+    axes(:, 1) = x
+    axes(:, 2) = cross(z, x)
+    axes(:, 3) = z
+  end subroutine darboux_axes
+
+  pure subroutine fail_parallel(status)
+    type(status_t), intent(inout) :: status
+    call set_status(status, STATUS_DOMAIN, 'Darboux frame: r_u and r_v are parallel; the surface normal is undefined')
+  end subroutine fail_parallel
+
+  pure subroutine fail_x_undefined(status)
+    type(status_t), intent(inout) :: status
+    call set_status(status, STATUS_DOMAIN, 'Darboux frame: alpha_u r_u + alpha_v r_v = 0; ' // &
+                    'x_D is undefined (at r_u = 0 alpha_v must not be 0)')
+  end subroutine fail_x_undefined
 
   !> n = w/|w| and its partials from those of w (w /= 0):
   !> n_u = (w_u - n (n.w_u))/|w|, and, if `second`,

@@ -21,7 +21,7 @@ module kinetostatics_free_rotation
   use base_kinds, only: wp
   use base_constants, only: two_pi
   use base_status, only: status_t
-  use base_vector, only: cross, rot_x, rot_y, rot_z
+  use base_vector, only: cross, rot_y, rot_z
   use kinetostatics_state, only: frame_state_t, scalar_state_t
   use kinetostatics_joints, only: spherical_t
   implicit none (type, external)
@@ -72,22 +72,38 @@ contains
     if (present(chart_limit)) e%chart_limit = chart_limit
   end function new_free_rotation
 
+  !> R_out = R_in R_a Rx(q1) Ry(q2) Rz(q3) R_b, each elementary turn applied
+  !> to the columns it mixes (the products with the rotation matrices, without
+  !> their zeros and ones).
   pure subroutine free_rotation_position(self, frames, scalars, status)
     class(free_rotation_t), intent(inout) :: self
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: ra(3, 3), r1(3, 3), r2(3, 3)
+    real(wp) :: r(3, 3), col(3), c, s, q
     associate (unused_status => status)
     end associate
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
-      ra = matmul(i%rot, self%ref_in)
-      r1 = matmul(ra, rot_x(scalars(self%variables(1))%q))
-      r2 = matmul(r1, rot_y(scalars(self%variables(2))%q))
-      self%n(:, 1) = ra(:, 1)
-      self%n(:, 2) = r1(:, 2)
-      self%n(:, 3) = r2(:, 3)
-      o%rot = matmul(matmul(r2, rot_z(scalars(self%variables(3))%q)), self%ref_out)
+      r = matmul(i%rot, self%ref_in)
+      self%n(:, 1) = r(:, 1)
+      q = scalars(self%variables(1))%q                  ! Rx(q1): columns 2, 3
+      c = cos(q); s = sin(q)
+      col = r(:, 2)
+      r(:, 2) = c*col + s*r(:, 3)
+      r(:, 3) = c*r(:, 3) - s*col
+      self%n(:, 2) = r(:, 2)
+      q = scalars(self%variables(2))%q                  ! Ry(q2): columns 3, 1
+      c = cos(q); s = sin(q)
+      col = r(:, 1)
+      r(:, 1) = c*col - s*r(:, 3)
+      r(:, 3) = s*col + c*r(:, 3)
+      self%n(:, 3) = r(:, 3)
+      q = scalars(self%variables(3))%q                  ! Rz(q3): columns 1, 2
+      c = cos(q); s = sin(q)
+      col = r(:, 1)
+      r(:, 1) = c*col + s*r(:, 2)
+      r(:, 2) = c*r(:, 2) - s*col
+      o%rot = matmul(r, self%ref_out)
       o%r = i%r
     end associate
   end subroutine free_rotation_position

@@ -27,12 +27,23 @@
 !> regular side along v (off the singular line): X(v0) = 2 X(v0 + h) - X(v0 + 2h),
 !> h = +-1e-4 towards the inside of the domain, error O(h^2) ~ 1e-8 relative,
 !> used only at the singular points themselves (|r_u| <= 1.5e-8 |r_v|).
+!>
+!> Lazy geometry: at a regular point the position map needs only the frame's
+!> axes (r_u, r_v: the surface to order 1), and most position passes are
+!> iterates of the closure's Newton, never followed by a velocity pass. So
+!> the position pass keeps (u, v) and R_1 and computes the rates and their
+!> derivatives (order 3) only when the first velocity, acceleration or force
+!> map after it asks for them (`complete_geometry`: the same numbers as an
+!> eager evaluation). `lazy = .false.` computes everything in the position
+!> pass (for owners that read the components directly); singular points are
+!> always evaluated at once (their frame needs order 3 and may fail).
 module kinetostatics_surface_joint
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, prefix_status, STATUS_DOMAIN
   use base_vector, only: cross
   use geometry_surface, only: surface_t, surface_point_t
-  use geometry_darboux, only: darboux_frame_t, darboux_frame
+  use geometry_darboux, only: darboux_frame_t, darboux_frame, darboux_axes
   use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
   implicit none (type, external)
   private
@@ -51,11 +62,17 @@ module kinetostatics_surface_joint
     real(wp) :: guu(3) = 0, guv(3) = 0, gvu(3) = 0, gvv(3) = 0   ! R_1 W_u,u ...
     real(wp) :: huu(3) = 0, huv(3) = 0, hvv(3) = 0               ! R_1 r_uu ...
     real(wp) :: w_rel(3) = 0, omega_rel(3) = 0  ! relative velocities (world) at the last velocity pass
+    ! lazy geometry (module comment): the last position's (u, v) and R_1, and
+    ! whether point, frame and the rotated vectors above belong to them
+    logical :: lazy = .true.
+    logical :: complete = .false.
+    real(wp) :: u = 0, v = 0, rot_in(3, 3) = 0
   contains
     procedure :: position => sj_position
     procedure :: velocity => sj_velocity
     procedure :: acceleration => sj_acceleration
     procedure :: force => sj_force
+    procedure :: complete_geometry => sj_complete_geometry
   end type surface_joint_t
 
 contains
@@ -105,12 +122,15 @@ contains
     end associate
   end subroutine angular_rates
 
+  !> (3.43): the output frame from (u, v); the rest of the geometry at once
+  !> only where `lazy` is off or the point is singular (module comment).
   pure subroutine sj_position(self, frames, scalars, status)
     class(surface_joint_t), intent(inout) :: self
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: u, v, wu(3), wv(3), wuu(3), wuv(3), wvu(3), wvv(3)
+    real(wp) :: u, v, axes(3, 3)
+    logical :: singular
     character(len=24) :: tu, tv
 
     u = scalars(self%var_u)%q
@@ -123,7 +143,39 @@ contains
                       self%surface%describe())
       return
     end if
-    call self%surface%evaluate(u, v, 3, self%point, status)
+    self%u = u
+    self%v = v
+    self%rot_in = frames(self%frame_in)%rot
+    self%complete = .false.
+    singular = .true.
+    if (self%lazy) then
+      call self%surface%evaluate(u, v, 1, self%point, status)
+      if (status%ok()) call darboux_axes(self%point, self%sigma, self%alpha_u, self%alpha_v, axes, singular, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, 'surface joint '''//self%name//'''')
+        return
+      end if
+    end if
+    if (singular) then
+      call evaluate_geometry(self, status)
+      if (.not. status%ok()) return
+      axes = self%frame%r
+      self%complete = .true.
+    end if
+    associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      self%p = matmul(i%rot, self%point%r)
+      o%rot = matmul(i%rot, axes)
+      o%r = i%r + self%p
+    end associate
+  end subroutine sj_position
+
+  !> Point (order 3), Darboux frame, rates and their derivatives at the last
+  !> position's (u, v), rotated by its R_1 into the world.
+  pure subroutine evaluate_geometry(self, status)
+    class(surface_joint_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
+    real(wp) :: wu(3), wv(3), wuu(3), wuv(3), wvu(3), wvv(3)
+    call self%surface%evaluate(self%u, self%v, 3, self%point, status)
     if (status%ok()) call darboux_frame(self%point, self%sigma, self%alpha_u, self%alpha_v, self%frame, status)
     if (.not. status%ok()) then
       call prefix_status(status, 'surface joint '''//self%name//'''')
@@ -133,26 +185,43 @@ contains
       call angular_rates(self%frame, wu, wv)
       call rate_derivatives(self%frame, wuu, wuv, wvu, wvv)
     else
-      call singular_rates(self, u, v, wu, wv, wuu, wuv, wvu, wvv, status)
+      call singular_rates(self, self%u, self%v, wu, wv, wuu, wuv, wvu, wvv, status)
       if (.not. status%ok()) return
     end if
-    associate (i => frames(self%frame_in), o => frames(self%frame_out), pt => self%point)
-      self%p = matmul(i%rot, pt%r)
-      self%gu = matmul(i%rot, wu)
-      self%gv = matmul(i%rot, wv)
-      self%tu = matmul(i%rot, pt%ru)
-      self%tv = matmul(i%rot, pt%rv)
-      self%guu = matmul(i%rot, wuu)
-      self%guv = matmul(i%rot, wuv)
-      self%gvu = matmul(i%rot, wvu)
-      self%gvv = matmul(i%rot, wvv)
-      self%huu = matmul(i%rot, pt%ruu)
-      self%huv = matmul(i%rot, pt%ruv)
-      self%hvv = matmul(i%rot, pt%rvv)
-      o%rot = matmul(i%rot, self%frame%r)
-      o%r = i%r + self%p
+    associate (rot => self%rot_in, pt => self%point)
+      self%p = matmul(rot, pt%r)
+      self%gu = matmul(rot, wu)
+      self%gv = matmul(rot, wv)
+      self%tu = matmul(rot, pt%ru)
+      self%tv = matmul(rot, pt%rv)
+      self%guu = matmul(rot, wuu)
+      self%guv = matmul(rot, wuv)
+      self%gvu = matmul(rot, wvu)
+      self%gvv = matmul(rot, wvv)
+      self%huu = matmul(rot, pt%ruu)
+      self%huv = matmul(rot, pt%ruv)
+      self%hvv = matmul(rot, pt%rvv)
     end associate
-  end subroutine sj_position
+  end subroutine evaluate_geometry
+
+  !> The rates and their derivatives of the last position, if not yet there.
+  !> The position pass evaluated this regular point to order 1 and built its
+  !> frame, so order 3 cannot fail here; if it did, the geometry is NaN (the
+  !> run stops at the next error test) rather than silently stale.
+  pure subroutine sj_complete_geometry(self)
+    class(surface_joint_t), intent(inout) :: self
+    type(status_t) :: status
+    real(wp) :: nan
+    if (self%complete) return
+    call evaluate_geometry(self, status)
+    if (.not. status%ok()) then
+      nan = ieee_value(nan, ieee_quiet_nan)
+      self%gu = nan; self%gv = nan; self%tu = nan; self%tv = nan
+      self%guu = nan; self%guv = nan; self%gvu = nan; self%gvv = nan
+      self%huu = nan; self%huv = nan; self%hvv = nan
+    end if
+    self%complete = .true.
+  end subroutine sj_complete_geometry
 
   !> u and v derivatives of W_u and W_v (product rule on the definitions above).
   pure subroutine rate_derivatives(fr, wuu, wuv, wvu, wvv)
@@ -221,6 +290,7 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     real(wp) :: ud, vd
+    call self%complete_geometry()
     ud = scalars(self%var_u)%qd
     vd = scalars(self%var_v)%qd
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
@@ -236,6 +306,7 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     real(wp) :: ud, vd, udd, vdd, omega_rel(3), w_rel(3)
+    call self%complete_geometry()
     ud = scalars(self%var_u)%qd
     vd = scalars(self%var_v)%qd
     udd = scalars(self%var_u)%qdd
@@ -262,6 +333,7 @@ contains
     real(wp) :: f(3), t(3)
     associate (unused_i => inertia, unused_a => applied)
     end associate
+    call self%complete_geometry()
     f = frames(self%frame_out)%force
     t = frames(self%frame_out)%torque
     ! (3.54)

@@ -244,34 +244,44 @@ contains
     call store(surf, 3, 3, 3, periodic, tu(1:nu), tv(1:nv), c, fp, ier)
   end function fit_parametric
 
-  !> Value and all partial derivatives up to third order at (u, v). Outside
+  !> Value and all partial derivatives up to third order (up to `order`, 0..3,
+  !> if present; the others stay zero, the ones formed have the same bits) at
+  !> (u, v). Outside
   !> the domain of a non-periodic direction the surface is evaluated at the
   !> nearest boundary point and status is STATUS_DOMAIN; periodic directions
   !> wrap around. Allocates nothing (except a message on failure); a scalar
   !> surface (dim = 1) costs one component's work, the others stay zero.
-  pure subroutine evaluate(self, u, v, p, status)
+  pure subroutine evaluate(self, u, v, p, status, order)
     class(spline_surface_t), intent(in) :: self
     real(wp), intent(in) :: u, v
     type(spline_surface_eval_t), intent(out) :: p
     type(status_t), intent(out) :: status
+    integer, intent(in), optional :: order
     real(wp) :: du(0:3, max_degree + 1), dv(0:3, max_degree + 1), w(0:3, max_degree + 1), uu, vv
-    integer :: lu, lv, l, ku1, kv1
+    integer :: lu, lv, l, ku1, kv1, top
     logical :: outside
     if (self%dim == 0) then
       call set_status(status, STATUS_INVALID_INPUT, 'spline surface: evaluated before a successful fit')
       return
     end if
+    top = 3
+    if (present(order)) top = max(0, min(3, order))
     p%dim = self%dim
     ku1 = self%ku + 1
     kv1 = self%kv + 1
     outside = .false.
     call locate(self%tu, self%ku, self%periodic(1), u, uu, lu, outside)
     call locate(self%tv, self%kv, self%periodic(2), v, vv, lv, outside)
-    call basis_derivatives(self%tu, self%ku, uu, lu, du)
-    call basis_derivatives(self%tv, self%kv, vv, lv, dv)
+    call basis_derivatives(self%tu, self%ku, uu, lu, du, top)
+    call basis_derivatives(self%tv, self%kv, vv, lv, dv, top)
     do l = 1, self%dim
-      call column_partials(self%c(:, :, l), ku1, lu - ku1, lv - kv1 + 1, lv, du, w)
-      call contract(kv1, w, 0, dv, l, p)
+      if (top == 3) then
+        call column_partials(self%c(:, :, l), ku1, lu - ku1, lv - kv1 + 1, lv, du, w)
+        call contract(kv1, w, 0, dv, l, p)
+      else
+        call column_partials_to(top, self%c(:, :, l), ku1, lu - ku1, lv - kv1 + 1, lv, du, w)
+        call contract_to(top, kv1, w, dv, l, p)
+      end if
     end do
     if (outside) call set_status(status, STATUS_DOMAIN, &
       'spline surface: point outside the parameter domain, evaluated at the nearest boundary point')
@@ -588,6 +598,81 @@ contains
     p%fvvv(l) = s03
   end subroutine contract
 
+  !> column_partials for the u-derivatives 0..top only (top < 3; the same
+  !> sums in the same order, in scalars: the hot position passes ask for top = 1).
+  pure subroutine column_partials_to(top, c, ku1, i0, j1, j2, du, w)
+    integer, intent(in) :: top, ku1, i0, j1, j2
+    real(wp), intent(in) :: c(:, :), du(0:3, max_degree + 1)
+    real(wp), intent(inout) :: w(0:, :)
+    real(wp) :: s0, s1, s2, cij
+    integer :: i, j
+    do j = j1, j2
+      s0 = 0; s1 = 0; s2 = 0
+      select case (top)
+      case (0)
+        do i = 1, ku1
+          s0 = s0 + du(0, i)*c(i0 + i, j)
+        end do
+      case (1)
+        do i = 1, ku1
+          cij = c(i0 + i, j)
+          s0 = s0 + du(0, i)*cij
+          s1 = s1 + du(1, i)*cij
+        end do
+      case default
+        do i = 1, ku1
+          cij = c(i0 + i, j)
+          s0 = s0 + du(0, i)*cij
+          s1 = s1 + du(1, i)*cij
+          s2 = s2 + du(2, i)*cij
+        end do
+      end select
+      w(0, j - j1 + 1) = s0
+      w(1, j - j1 + 1) = s1
+      w(2, j - j1 + 1) = s2
+    end do
+  end subroutine column_partials_to
+
+  !> contract for the partials of total order 0..top only (top < 3; the same
+  !> sums in the same order, the others left as they were).
+  pure subroutine contract_to(top, kv1, w, dv, l, p)
+    integer, intent(in) :: top, kv1, l
+    real(wp), intent(in) :: w(0:, :), dv(0:, :)
+    type(spline_surface_eval_t), intent(inout) :: p
+    real(wp) :: s00, s10, s01, s20, s11, s02
+    integer :: j
+    s00 = 0; s10 = 0; s01 = 0; s20 = 0; s11 = 0; s02 = 0
+    select case (top)
+    case (0)
+      do j = 1, kv1
+        s00 = s00 + w(0, j)*dv(0, j)
+      end do
+    case (1)
+      do j = 1, kv1
+        s00 = s00 + w(0, j)*dv(0, j)
+        s01 = s01 + w(0, j)*dv(1, j)
+        s10 = s10 + w(1, j)*dv(0, j)
+      end do
+    case default
+      do j = 1, kv1
+        s00 = s00 + w(0, j)*dv(0, j)
+        s01 = s01 + w(0, j)*dv(1, j)
+        s02 = s02 + w(0, j)*dv(2, j)
+        s10 = s10 + w(1, j)*dv(0, j)
+        s11 = s11 + w(1, j)*dv(1, j)
+        s20 = s20 + w(2, j)*dv(0, j)
+      end do
+    end select
+    p%f(l) = s00
+    if (top < 1) return
+    p%fu(l) = s10
+    p%fv(l) = s01
+    if (top < 2) return
+    p%fuu(l) = s20
+    p%fuv(l) = s11
+    p%fvv(l) = s02
+  end subroutine contract_to
+
   !> Knot interval t(l) <= x' < t(l+1), k+1 <= l <= n-k-1, of x clamped to
   !> (or, periodic, wrapped into) [t(k+1), t(n-k)], by bisection.
   pure subroutine locate(t, k, periodic, x, xc, l, outside)
@@ -634,16 +719,19 @@ contains
   !> applied to the (m-1)-th derivatives of degree p-1 (de Boor, A Practical
   !> Guide to Splines, X.(12)). Every denominator is one of the k(k+1)/2 knot
   !> spans of the recurrence, each inverted once.
-  pure subroutine basis_derivatives(t, k, x, l, d)
+  pure subroutine basis_derivatives(t, k, x, l, d, order)
     real(wp), intent(in) :: t(:), x
     integer, intent(in) :: k, l
     real(wp), intent(out) :: d(0:3, max_degree + 1)
+    integer, intent(in), optional :: order   ! derivatives up to this one (default 3), the others zero
     ! nd(r, p): the B-spline of degree p starting at knot l-p+r, r = 0..p;
     ! inv(p, r) = 1/(t(l+r+1) - t(l+r+1-p)), positive since the span holds
     ! [t(l), t(l+1)]
     real(wp) :: nd(0:max_degree, 0:max_degree), inv(max_degree, 0:max_degree - 1)
     real(wp) :: left(max_degree), right(max_degree), b(0:max_degree), q(0:max_degree - 1), saved, temp
-    integer :: j, r, m, p
+    integer :: j, r, m, p, top
+    top = 3
+    if (present(order)) top = order
     nd(0, 0) = 1
     do j = 1, k
       left(j) = x - t(l + 1 - j)
@@ -659,7 +747,7 @@ contains
     end do
     d = 0
     d(0, 1:k + 1) = nd(0:k, k)
-    do m = 1, min(3, k)
+    do m = 1, min(top, k)
       ! b: the (p-k+m)-th derivatives of the B-splines of degree p
       b(0:k - m) = nd(0:k - m, k - m)
       do p = k - m + 1, k

@@ -57,8 +57,8 @@ program test_geometry_darboux
                                  apex_paraboloid_t
   use geometry_placed_surface, only: placed_surface_t
   use geometry_differential, only: unit_normal
-  use geometry_darboux, only: darboux_frame_t, darboux_frame, singular_tol, SINGULAR_RULE_LIMIT, &
-                              SINGULAR_RULE_THESIS
+  use geometry_darboux, only: darboux_frame_t, darboux_frame, darboux_axes, singular_tol, &
+                              SINGULAR_RULE_LIMIT, SINGULAR_RULE_THESIS
   use test_geometry_darboux_surfaces, only: twisted_apex_t
   use testing, only: check, check_close, check_close_array, finish_tests
   implicit none (type, external)
@@ -126,7 +126,8 @@ contains
                                                    -0.4_wp, -1.0_wp, 0.6_wp], [3, 4])
     type(surface_point_t) :: p
     type(darboux_frame_t) :: fr, up, um, vp, vm
-    real(wp) :: u, v, sigma, au, av, w(3)
+    real(wp) :: u, v, sigma, au, av, w(3), axes(3, 3)
+    logical :: singular
     integer :: k, j
     character(len=100) :: at
     do k = 1, n_points
@@ -148,6 +149,12 @@ contains
       w = au*p%ru + av*p%rv
       call check_close(dot_product(fr%r(:, 1), w), norm2(w), exact_tol, exact_tol, &
                        name // ' x_D along alpha_u r_u + alpha_v r_v' // trim(at))
+      ! the axes alone from the point to order 1 (the lazy position maps):
+      ! the frame's axes to the last bit
+      call s%evaluate(u, v, 1, p, st)
+      call darboux_axes(p, sigma, au, av, axes, singular, st)
+      call check(st%ok() .and. .not. singular .and. all(axes == fr%r), &
+                 name // ' darboux_axes at order 1 = darboux_frame%r' // trim(at))
       ! rates: central differences of the frame itself and of its rates
       call frame_at(s, u + h, v, sigma, au, av, up)
       call frame_at(s, u - h, v, sigma, au, av, um)
@@ -353,6 +360,8 @@ contains
   subroutine check_errors()
     type(surface_point_t) :: p
     type(darboux_frame_t) :: fr
+    real(wp) :: axes(3, 3)
+    logical :: singular
     call ellipsoid%evaluate(0.3_wp, 0.2_wp, 1, p, st)
     call darboux_frame(p, 1.0_wp, 1.0_wp, 0.0_wp, fr, st)
     call check(st%code == STATUS_INVALID_INPUT .and. index(st%text(), 'order') > 0, &
@@ -377,5 +386,24 @@ contains
                'singular point with alpha_v = 0 refused: ' // st%text())
     call darboux_frame(p, 1.0_wp, 1.0_wp, 1.0_wp, fr, st, singular_rule=7)
     call check(st%code == STATUS_INVALID_INPUT, 'unknown singular_rule refused: ' // st%text())
+    ! darboux_axes: order 0 and sigma = 0 refused, a singular point flagged
+    ! (its axes need order 3), the regular failures as darboux_frame's
+    call ellipsoid%evaluate(0.3_wp, 0.2_wp, 0, p, st)
+    call darboux_axes(p, 1.0_wp, 1.0_wp, 0.0_wp, axes, singular, st)
+    call check(st%code == STATUS_INVALID_INPUT .and. index(st%text(), 'order') > 0, &
+               'axes: order 0 refused: ' // st%text())
+    call ellipsoid%evaluate(0.3_wp, 0.2_wp, 1, p, st)
+    call darboux_axes(p, 0.0_wp, 1.0_wp, 0.0_wp, axes, singular, st)
+    call check(st%code == STATUS_INVALID_INPUT .and. index(st%text(), 'sigma = 0') > 0, &
+               'axes: sigma = 0 refused: ' // st%text())
+    call darboux_axes(p, 1.0_wp, 0.0_wp, 0.0_wp, axes, singular, st)
+    call check(st%code == STATUS_DOMAIN .and. index(st%text(), 'x_D') > 0, 'axes: alpha = 0 refused: ' // st%text())
+    p%rv = 2*p%ru
+    call darboux_axes(p, 1.0_wp, 1.0_wp, 0.0_wp, axes, singular, st)
+    call check(st%code == STATUS_DOMAIN .and. index(st%text(), 'parallel') > 0, &
+               'axes: parallel r_u, r_v refused: ' // st%text())
+    call apex%evaluate(0.3_wp, 0.0_wp, 1, p, st)
+    call darboux_axes(p, 1.0_wp, 1.0_wp, 1.0_wp, axes, singular, st)
+    call check(st%ok() .and. singular, 'axes: singular point flagged')
   end subroutine check_errors
 end program test_geometry_darboux

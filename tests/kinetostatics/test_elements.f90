@@ -12,7 +12,7 @@ program test_elements
   use geometry_elementary, only: ellipsoid_t, paraboloid_t, elliptic_cylinder_t, apex_paraboloid_t
   use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
   use kinetostatics_joints, only: new_rigid_offset, new_revolute, new_prismatic, new_spherical
-  use kinetostatics_surface_joint, only: new_surface_joint
+  use kinetostatics_surface_joint, only: new_surface_joint, surface_joint_t
   use kinetostatics_measurements, only: new_measurement, MEASURE_POINT_POINT, MEASURE_PLANE_POINT, &
     MEASURE_PLANE_PLANE, MEASURE_LINE_LINE
   use kinetostatics_mass, only: mass_element_t, new_mass_element
@@ -58,6 +58,7 @@ program test_elements
   end do
   call mass_checks()
   call singular_point()
+  call lazy_equals_eager()
   call finish_tests('test_elements')
 
 contains
@@ -129,4 +130,52 @@ contains
     call check(maxval(abs(out(:, :, 1) - out(:, :, 2))) <= 1e-5_wp*maxval(abs(out(:, :, 2))), &
                'surface joint at a singular point: velocity and acceleration maps continuous')
   end subroutine singular_point
+  !> The lazy surface joint (geometry completed by the first velocity,
+  !> acceleration or force map after a position) gives the eager one's
+  !> numbers to the last bit, also after several positions in a row (the
+  !> closure's Newton iterates) and for a force pass without a velocity pass.
+  subroutine lazy_equals_eager()
+    class(surface_t), allocatable :: ellipsoid
+    type(surface_joint_t) :: lazy, eager
+    type(frame_state_t) :: fl(2), fe(2)
+    type(scalar_state_t) :: sl(2), se(2)
+    type(status_t) :: st
+    logical :: same
+    integer :: k
+    ellipsoid = ellipsoid_t(1.2_wp, 0.8_wp, 0.6_wp, st)
+    lazy = new_surface_joint('sj', 1, 2, 1, 2, ellipsoid, 1.0_wp, 1.0_wp, 0.3_wp)
+    eager = lazy
+    eager%lazy = .false.
+    fl(1)%rot = matmul(rot_x(0.3_wp), rot_z(-1.1_wp))
+    fl(1)%r = [0.1_wp, 0.2_wp, -0.3_wp]
+    fl(1)%omega = [0.5_wp, -0.2_wp, 0.9_wp]
+    fl(1)%v = [1.0_wp, 0.0_wp, -0.4_wp]
+    fl(1)%alpha = [0.3_wp, 0.1_wp, -0.6_wp]
+    fl(1)%a = [-0.2_wp, 0.8_wp, 0.1_wp]
+    fl(2)%force = [0.4_wp, -1.0_wp, 0.3_wp]
+    fl(2)%torque = [0.2_wp, 0.1_wp, -0.5_wp]
+    fe = fl
+    same = .true.
+    do k = 1, 3
+      sl(1) = scalar_state_t(0.7_wp + 0.1_wp*k, 0.3_wp, 0.1_wp, 0.0_wp)
+      sl(2) = scalar_state_t(-0.4_wp, 0.5_wp, -0.2_wp, 0.0_wp)
+      se = sl
+      call lazy%position(fl, sl, st)
+      call eager%position(fe, se, st)
+      same = same .and. all(fl(2)%rot == fe(2)%rot) .and. all(fl(2)%r == fe(2)%r)
+    end do
+    call lazy%force(fl, sl, .true., .true.)
+    call eager%force(fe, se, .true., .true.)
+    same = same .and. all(fl(1)%force == fe(1)%force) .and. all(fl(1)%torque == fe(1)%torque) &
+           .and. sl(1)%force == se(1)%force .and. sl(2)%force == se(2)%force
+    call lazy%position(fl, sl, st)
+    call eager%position(fe, se, st)
+    call lazy%velocity(fl, sl)
+    call eager%velocity(fe, se)
+    call lazy%acceleration(fl, sl)
+    call eager%acceleration(fe, se)
+    same = same .and. all(fl(2)%omega == fe(2)%omega) .and. all(fl(2)%v == fe(2)%v) &
+           .and. all(fl(2)%alpha == fe(2)%alpha) .and. all(fl(2)%a == fe(2)%a)
+    call check(st%ok() .and. same, 'surface joint: lazy geometry = eager geometry to the last bit')
+  end subroutine lazy_equals_eager
 end program test_elements

@@ -72,7 +72,8 @@ contains
     type(status_t) :: st
     real(wp) :: box(4), u, v, h(2), fd, scale(0:3, 0:3)
     real(wp), allocatable :: tu(:), tv(:)
-    integer :: i, a, b, l, dir, tested
+    integer :: i, a, b, l, dir, tested, k
+    logical :: same
     character(len=80) :: label
     box = surf%domain()
     tu = surf%knots_u()
@@ -100,6 +101,24 @@ contains
       tested = tested + 1
       call surf%evaluate(u, v, p0, st)
       call check(st%ok(), what//': evaluate status')
+      ! order 0..2: the partials up to that order to the last bit, the others zero
+      do k = 0, 2
+        call surf%evaluate(u, v, pp, st, order=k)
+        same = st%ok()
+        do a = 0, 3
+          do b = 0, 3 - a
+            do l = 1, surf%dimension()
+              if (a + b <= k) then
+                same = same .and. partial(pp, a, b, l) == partial(p0, a, b, l)
+              else
+                same = same .and. partial(pp, a, b, l) == 0
+              end if
+            end do
+          end do
+        end do
+        write (label, '(a, ": evaluate to order ", i0, " point ", i0)') what, k, i
+        call check(same, trim(label))
+      end do
       do a = 0, 3
         do b = 0, 3 - a
           if (a + b == 0) cycle

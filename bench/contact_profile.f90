@@ -1,0 +1,70 @@
+!> One run of a contact input (no repeats, nothing recorded), for profiling
+!> with callgrind and for the integrator's counts: steps, right-hand sides,
+!> error-test and nonlinear failures, root evaluations, events, restarts.
+!>
+!> Usage (from the repository root):
+!>   contact_profile input.nml [p1|p2] [mu] [seconds]
+!> p1: rtol 1e-11, atol 1e-10; p2: 1e-6, 1e-5 (thesis); mu > 0 replaces the
+!> first contact's friction coefficient; seconds replaces the input's duration.
+program contact_profile
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  use numerics_event_driver, only: driver_options_t, driver_result_t, drive
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model
+  use io_input, only: input_text_t, load_input_file
+  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_contact_config, only: read_contact_config
+  implicit none (type, external)
+
+  character(len=512) :: path, argument
+  real(wp) :: mu, tol(2)
+  type(input_text_t) :: input
+  type(solver_config_t) :: solver
+  type(contact_system_t) :: system
+  type(contact_model_t), target :: model
+  type(status_t) :: status
+  type(driver_options_t) :: options
+  type(driver_result_t) :: result
+
+  if (command_argument_count() < 1) then
+    print '(a)', 'usage: contact_profile input.nml [p1|p2] [mu] [seconds]'
+    stop
+  end if
+  call get_command_argument(1, path)
+  tol = [1e-11_wp, 1e-10_wp]
+  mu = 0
+  call load_input_file(trim(path), input, status)
+  if (status%ok()) call read_solver_config(input, solver, status)
+  if (status%ok()) call read_contact_config(input, system, status)
+  options%t_end = solver%duration
+  if (command_argument_count() >= 2) then
+    call get_command_argument(2, argument)
+    if (argument == 'p2') tol = [1e-6_wp, 1e-5_wp]
+  end if
+  if (command_argument_count() >= 3) then
+    call get_command_argument(3, argument)
+    read (argument, *) mu
+  end if
+  if (command_argument_count() >= 4) then
+    call get_command_argument(4, argument)
+    read (argument, *) options%t_end
+  end if
+  if (status%ok() .and. mu > 0) system%contacts(1)%mu = mu
+  if (status%ok()) call build_contact_model(system, model, status)
+  if (.not. status%ok()) then
+    print '(a)', status%text()
+    stop
+  end if
+  options%output_step = options%t_end
+  options%progress_seconds = 0
+  options%ode%rtol = tol(1)
+  options%ode%atol = tol(2)
+  call drive(model%ode, model%y0, options, result, status)
+  if (.not. status%ok()) print '(a)', status%text()
+  print '(a, f0.4, a, f0.3)', 't reached ', result%t, '  CPU s ', result%cpu
+  print '(a, i0, a, i0, a, i0, a, i0, a, i0)', 'steps ', result%stats%steps, '  rhs ', &
+    result%stats%rhs_evaluations, '  error-test failures ', result%stats%error_test_failures, &
+    '  nonlinear failures ', result%stats%nonlinear_failures, '  root evaluations ', result%stats%root_evaluations
+  print '(a, i0, a, i0, a, i0)', 'events ', result%events, '  restarts ', result%restarts, &
+    '  last order ', result%stats%last_order
+end program contact_profile
