@@ -99,9 +99,15 @@ contains
     end associate
     associate (k => frames(self%frame), s => self%s)
       if (inertia) then
-        f = -self%mass*(k%a + cross(k%alpha, s) + cross(k%omega, cross(k%omega, s)))     ! (3.23)
-        t = -(matmul(self%inertia_w, k%alpha) + cross(k%omega, matmul(self%inertia_w, k%omega))) &
-            + cross(s, f)
+        if (any(k%omega /= 0)) then
+          f = -self%mass*(k%a + cross(k%alpha, s) + cross(k%omega, cross(k%omega, s)))     ! (3.23)
+          t = -(matmul(self%inertia_w, k%alpha) + cross(k%omega, matmul(self%inertia_w, k%omega))) &
+              + cross(s, f)
+        else
+          ! at rest (mass-matrix columns): the same without the zero omega terms
+          f = -self%mass*(k%a + cross(k%alpha, s))
+          t = -matmul(self%inertia_w, k%alpha) + cross(s, f)
+        end if
         k%force = k%force + f
         k%torque = k%torque + t
       end if

@@ -95,14 +95,18 @@ contains
       select case (self%kind)   ! each kind forms only the rates it needs (hot: closure Jacobians)
       case (MEASURE_POINT_POINT)
         gd = 2*dot_product(d, fi%v - fj%v)                      ! (3.15)
-      case (MEASURE_PLANE_POINT)
-        dni = cross(fi%omega, ni)
+      case (MEASURE_PLANE_POINT)   ! a frame at rest turns no axis (closure Jacobian columns)
         dd = fj%v - fi%v
-        gd = dot_product(dni, d) + dot_product(ni, dd)
+        if (any(fi%omega /= 0)) then
+          dni = cross(fi%omega, ni)
+          gd = dot_product(dni, d) + dot_product(ni, dd)
+        else
+          gd = dot_product(ni, dd)
+        end if
       case (MEASURE_PLANE_PLANE)
-        dni = cross(fi%omega, ni)
-        dnj = cross(fj%omega, nj)
-        gd = dot_product(dni, nj) + dot_product(ni, dnj)
+        gd = 0
+        if (any(fi%omega /= 0)) gd = dot_product(cross(fi%omega, ni), nj)
+        if (any(fj%omega /= 0)) gd = gd + dot_product(ni, cross(fj%omega, nj))
       case default
         dni = cross(fi%omega, ni)
         dnj = cross(fj%omega, nj)
@@ -118,26 +122,42 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     real(wp) :: gdd, dni(3), dnj(3), ddni(3), ddnj(3), dd(3), ddd(3)
+    logical :: turning_i, turning_j
     associate (fi => frames(self%frame_i), fj => frames(self%frame_j), ni => self%ni, nj => self%nj, &
                d => self%d)
+      ! a frame at rest (mass-matrix columns) turns no axis: its products with
+      ! omega are zero and skipped (the other terms summed in the same order)
+      turning_i = any(fi%omega /= 0)
+      turning_j = any(fj%omega /= 0)
       if (self%kind /= MEASURE_POINT_POINT) then
-        dni = cross(fi%omega, ni)
-        ddni = cross(fi%alpha, ni) + cross(fi%omega, dni)
+        dni = 0
+        ddni = cross(fi%alpha, ni)
+        if (turning_i) then
+          dni = cross(fi%omega, ni)
+          ddni = ddni + cross(fi%omega, dni)
+        end if
       end if
       if (self%kind /= MEASURE_POINT_POINT .and. self%kind /= MEASURE_PLANE_POINT) then
-        dnj = cross(fj%omega, nj)
-        ddnj = cross(fj%alpha, nj) + cross(fj%omega, dnj)
+        dnj = 0
+        ddnj = cross(fj%alpha, nj)
+        if (turning_j) then
+          dnj = cross(fj%omega, nj)
+          ddnj = ddnj + cross(fj%omega, dnj)
+        end if
       end if
       select case (self%kind)
       case (MEASURE_POINT_POINT)
         dd = fi%v - fj%v
         gdd = 2*dot_product(d, fi%a - fj%a) + 2*dot_product(dd, dd)   ! (3.16)
       case (MEASURE_PLANE_POINT)
-        dd = fj%v - fi%v
         ddd = fj%a - fi%a
-        gdd = dot_product(ddni, d) + 2*dot_product(dni, dd) + dot_product(ni, ddd)
+        gdd = dot_product(ddni, d)
+        if (turning_i) gdd = gdd + 2*dot_product(dni, fj%v - fi%v)
+        gdd = gdd + dot_product(ni, ddd)
       case (MEASURE_PLANE_PLANE)
-        gdd = dot_product(ddni, nj) + 2*dot_product(dni, dnj) + dot_product(ni, ddnj)
+        gdd = dot_product(ddni, nj)
+        if (turning_i .and. turning_j) gdd = gdd + 2*dot_product(dni, dnj)
+        gdd = gdd + dot_product(ni, ddnj)
       case default
         dd = fj%v - fi%v
         ddd = fj%a - fi%a
@@ -157,6 +177,7 @@ contains
     associate (unused_i => inertia, unused_a => applied)
     end associate
     lambda = scalars(self%output)%force
+    if (lambda == 0) return   ! no cut force (the first pass of an inverse dynamics): nothing to add
     ti = 0; fi = 0; tj = 0; fj = 0
     associate (ni => self%ni, nj => self%nj, d => self%d)
       select case (self%kind)

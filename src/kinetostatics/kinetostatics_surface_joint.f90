@@ -297,31 +297,49 @@ contains
       self%omega_rel = self%gu*ud + self%gv*vd          ! (3.53)
       self%w_rel = self%tu*ud + self%tv*vd              ! (3.52)
       o%omega = i%omega + self%omega_rel
-      o%v = i%v + cross(i%omega, self%p) + self%w_rel
+      if (any(i%omega /= 0)) then
+        o%v = i%v + cross(i%omega, self%p) + self%w_rel
+      else
+        o%v = i%v + self%w_rel   ! the input frame at rest (closure Jacobian columns)
+      end if
     end associate
   end subroutine sj_velocity
 
+  !> (B.1), (B.10), (B.11). The products with the rates are skipped where the
+  !> rates are zero (mass-matrix columns run with all velocities zero): the
+  !> remaining terms are summed in the same order, so no bit changes.
   pure subroutine sj_acceleration(self, frames, scalars)
     class(surface_joint_t), intent(inout) :: self
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
-    real(wp) :: ud, vd, udd, vdd, omega_rel(3), w_rel(3)
+    real(wp) :: ud, vd, udd, vdd, omega_rel(3), w_rel(3), acc(3)
+    logical :: moving, turning
     call self%complete_geometry()
     ud = scalars(self%var_u)%qd
     vd = scalars(self%var_v)%qd
     udd = scalars(self%var_u)%qdd
     vdd = scalars(self%var_v)%qdd
-    omega_rel = self%gu*ud + self%gv*vd
-    w_rel = self%tu*ud + self%tv*vd
+    moving = ud /= 0 .or. vd /= 0
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
+      turning = any(i%omega /= 0)
       ! (B.1) with the rate derivatives in place of (B.2)-(B.9)
-      o%alpha = i%alpha + self%gu*udd + self%gv*vdd &
-                + (self%guu*ud + self%guv*vd)*ud + (self%gvu*ud + self%gvv*vd)*vd &
-                + cross(i%omega, omega_rel)
+      acc = i%alpha + self%gu*udd + self%gv*vdd
+      if (moving) then
+        omega_rel = self%gu*ud + self%gv*vd
+        w_rel = self%tu*ud + self%tv*vd
+        acc = acc + (self%guu*ud + self%guv*vd)*ud + (self%gvu*ud + self%gvv*vd)*vd
+        if (turning) acc = acc + cross(i%omega, omega_rel)
+      end if
+      o%alpha = acc
       ! (B.10), (B.11)
-      o%a = i%a + cross(i%alpha, self%p) + cross(i%omega, cross(i%omega, self%p)) &
-            + 2*cross(i%omega, w_rel) + self%tu*udd + self%tv*vdd &
-            + self%huu*ud**2 + 2*self%huv*ud*vd + self%hvv*vd**2
+      acc = i%a + cross(i%alpha, self%p)
+      if (turning) then
+        acc = acc + cross(i%omega, cross(i%omega, self%p))
+        if (moving) acc = acc + 2*cross(i%omega, w_rel)
+      end if
+      acc = acc + self%tu*udd + self%tv*vdd
+      if (moving) acc = acc + self%huu*ud**2 + 2*self%huv*ud*vd + self%hvv*vd**2
+      o%a = acc
     end associate
   end subroutine sj_acceleration
 
