@@ -22,7 +22,7 @@ module contact_rolling
   use base_kinds, only: wp
   use base_status, only: status_t
   use base_vector, only: cross
-  use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
+  use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
   implicit none (type, external)
   private
   public :: no_slip_t, new_no_slip
@@ -37,9 +37,18 @@ module contact_rolling
     procedure :: velocity => no_slip_velocity
     procedure :: acceleration => no_slip_acceleration
     procedure :: force => no_slip_force
+    procedure :: links => no_slip_links
   end type no_slip_t
 
 contains
+
+  !> Links for kinetostatics_closure_blocks (element_links_t).
+  pure subroutine no_slip_links(self, links)
+    class(no_slip_t), intent(in) :: self
+    type(element_links_t), intent(out) :: links
+    links = element_links_t(.true., [self%frame_a, self%frame_b, self%frame_p], [integer ::], [integer ::], self%outputs, &
+                            relative=.true.)
+  end subroutine no_slip_links
 
   function new_no_slip(name, frame_a, frame_b, frame_p, outputs) result(e)
     character(len=*), intent(in) :: name

@@ -14,7 +14,7 @@ module kinetostatics_joints
   use base_kinds, only: wp
   use base_status, only: status_t
   use base_vector, only: cross, rot_x, rot_y, rot_z
-  use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t, axis_rotation
+  use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t, axis_rotation
   implicit none (type, external)
   private
   public :: rigid_offset_t, revolute_t, prismatic_t, spherical_t
@@ -31,6 +31,7 @@ module kinetostatics_joints
     procedure :: velocity => offset_velocity
     procedure :: acceleration => offset_acceleration
     procedure :: force => offset_force
+    procedure :: links => offset_links
   end type rigid_offset_t
 
   !> What the revolute and the prismatic joint share: one joint variable and
@@ -40,6 +41,8 @@ module kinetostatics_joints
     integer :: frame_in = 0, frame_out = 0, variable = 0
     real(wp) :: axis(3) = 0
     real(wp) :: n(3) = 0
+  contains
+    procedure :: links => axis_joint_links
   end type axis_joint_t
 
   !> K_out = K_in turned by q (rad) about `axis`.
@@ -72,9 +75,31 @@ module kinetostatics_joints
     procedure :: velocity => spherical_velocity
     procedure :: acceleration => spherical_acceleration
     procedure :: force => spherical_force
+    procedure :: links => spherical_links
   end type spherical_t
 
 contains
+
+  !> Links for kinetostatics_closure_blocks (element_links_t).
+  pure subroutine offset_links(self, links)
+    class(rigid_offset_t), intent(in) :: self
+    type(element_links_t), intent(out) :: links
+    links = element_links_t(.true., [self%frame_in], [integer ::], [self%frame_out], [integer ::], carried=.true.)
+  end subroutine offset_links
+
+  !> Links for kinetostatics_closure_blocks (element_links_t).
+  pure subroutine axis_joint_links(self, links)
+    class(axis_joint_t), intent(in) :: self
+    type(element_links_t), intent(out) :: links
+    links = element_links_t(.true., [self%frame_in], [self%variable], [self%frame_out], [integer ::], carried=.true.)
+  end subroutine axis_joint_links
+
+  !> Links for kinetostatics_closure_blocks (element_links_t).
+  pure subroutine spherical_links(self, links)
+    class(spherical_t), intent(in) :: self
+    type(element_links_t), intent(out) :: links
+    links = element_links_t(.true., [self%frame_in], self%variables, [self%frame_out], [integer ::], carried=.true.)
+  end subroutine spherical_links
 
   function new_rigid_offset(name, frame_in, frame_out, offset, rotation) result(e)
     character(len=*), intent(in) :: name

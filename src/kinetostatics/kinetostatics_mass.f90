@@ -13,7 +13,7 @@ module kinetostatics_mass
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_vector, only: cross
-  use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
+  use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
   implicit none (type, external)
   private
   public :: mass_element_t, new_mass_element
@@ -31,9 +31,17 @@ module kinetostatics_mass
     procedure :: acceleration => mass_nothing
     procedure :: force => mass_force
     procedure :: energy => mass_energy
+    procedure :: links => mass_links
   end type mass_element_t
 
 contains
+
+  !> Links for kinetostatics_closure_blocks (element_links_t).
+  pure subroutine mass_links(self, links)
+    class(mass_element_t), intent(in) :: self
+    type(element_links_t), intent(out) :: links
+    links = element_links_t(.true., [self%frame], [integer ::], [integer ::], [integer ::])
+  end subroutine mass_links
 
   !> Checks m > 0 and Theta symmetric positive semidefinite with the triangle
   !> inequalities of principal moments (a point mass, Theta = 0, is allowed).

@@ -20,7 +20,7 @@ module kinetostatics_measurements
   use base_kinds, only: wp
   use base_status, only: status_t
   use base_vector, only: cross
-  use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
+  use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
   implicit none (type, external)
   private
   public :: measurement_t, new_measurement
@@ -39,9 +39,17 @@ module kinetostatics_measurements
     procedure :: velocity => m_velocity
     procedure :: acceleration => m_acceleration
     procedure :: force => m_force
+    procedure :: links => m_links
   end type measurement_t
 
 contains
+
+  !> Links for kinetostatics_closure_blocks (element_links_t).
+  pure subroutine m_links(self, links)
+    class(measurement_t), intent(in) :: self
+    type(element_links_t), intent(out) :: links
+    links = element_links_t(.true., [self%frame_i, self%frame_j], [integer ::], [integer ::], [self%output], relative=.true.)
+  end subroutine m_links
 
   function new_measurement(name, kind, frame_i, frame_j, output, axis_i, axis_j) result(e)
     character(len=*), intent(in) :: name

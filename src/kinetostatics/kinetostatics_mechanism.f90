@@ -75,6 +75,8 @@ module kinetostatics_mechanism
   use kinetostatics_contact, only: contact_t, contact_state_t, contact_kinematics, NORMAL_FRAME_FORCE, &
     NORMAL_CUT_FORCE
   use kinetostatics_force_law, only: force_law_t, force_law_box_t
+  use kinetostatics_closure_blocks, only: closure_blocks_t, element_reach_t, build_closure_blocks, &
+    find_element_links
   implicit none (type, external)
   private
   public :: mechanism_t, loop_t, rate_constraint_t, surface_edge_t
@@ -159,10 +161,15 @@ module kinetostatics_mechanism
     real(wp), allocatable :: law_roots(:)     ! root functions of the laws, at the last law evaluation
     integer, allocatable :: law_root_start(:) ! first index of law k's roots in law_roots
     integer :: closure_solves = 0, hybrj_solves = 0
+    !> the closure's blocks (kinetostatics_closure_blocks); set blocked = .false. before finalize
+    !> for one block and full passes (the unblocked computation, for comparison)
+    logical :: blocked = .true.
+    type(element_reach_t) :: reach
+    type(closure_blocks_t) :: blocks
+    integer, allocatable :: unknowns(:), rows(:)   ! scalars of x = [beta; sigma] and of the rows [g; c]
     ! work arrays
-    real(wp), allocatable :: jbeta(:, :), jlu(:, :), work_r(:), gq(:)
-    real(wp), allocatable :: jx(:, :), jxlu(:, :), work_x(:)   ! the combined [beta'; sigma'] system
-    integer, allocatable :: ipiv_x(:)
+    real(wp), allocatable :: work_r(:), gq(:)
+    real(wp), allocatable :: work_x(:)   ! the combined [beta'; sigma'] system
     real(wp), allocatable :: x_r(:), start_r(:), res_r(:), work_f(:), work_c(:)   ! (gfortran puts
                                                                                   ! automatic arrays on the heap)
     real(wp), allocatable :: unit_power(:)
@@ -171,7 +178,7 @@ module kinetostatics_mechanism
     integer, allocatable :: scaled_laws(:)    ! indices of the scaled laws
     integer, allocatable :: block_row(:)      ! row (1..nb) of each scaled law's contact in the block
     integer, allocatable :: block_contact(:)  ! contact of each block row
-    integer, allocatable :: ipiv(:), ipiv_block(:)
+    integer, allocatable :: ipiv_block(:)
   contains
     procedure :: add_frame, add_scalar, add_element, add_loop, add_contact, add_law, set_coordinates, finalize
     procedure :: add_rate_constraint, set_kinematic, set_loop_branch, add_monitor
@@ -180,7 +187,7 @@ module kinetostatics_mechanism
     procedure :: jacobian => mechanism_jacobian
     procedure :: position_pass, velocity_pass, acceleration_pass, force_pass
     procedure :: set_positions, set_velocities, set_accelerations, inverse_dynamics, evaluate_laws
-    procedure :: check_start
+    procedure :: check_start, set_blocked
     procedure :: dynamics, evaluate, energy, closure_residual, normal_forces, law_force
   end type mechanism_t
 
@@ -444,6 +451,7 @@ contains
     if (status%ok()) call check_laws(self, status)
     if (.not. status%ok()) return
     call find_edges(self)
+    call find_closure_blocks(self)
 
     ! scaled laws and the contacts whose normal forces the block system solves for
     allocate (self%scaled_laws(0), self%block_contact(0))
@@ -470,8 +478,7 @@ contains
     associate (n => self%ns, nx => self%r + self%nd)
       allocate (self%lambda(self%r), self%mu(self%nd), self%rates(self%f), self%qdd(n), self%mass(n, n), &
                 self%bias(n))
-      allocate (self%jbeta(self%r, self%r), self%jlu(self%r, self%r), self%work_r(self%r), self%gq(n))
-      allocate (self%jx(nx, nx), self%jxlu(nx, nx), self%work_x(nx), self%ipiv_x(max(nx, 1)))
+      allocate (self%work_r(self%r), self%gq(n), self%work_x(nx))
       allocate (self%x_r(self%r), self%start_r(self%r), self%res_r(self%r), self%work_f(n), self%work_c(nc))
       allocate (self%known_q(self%f), self%known_s(n), self%known_active(self%n_laws))
       allocate (self%contact_states(nc), self%normal(nc), self%law_factor(self%n_laws), &
@@ -479,7 +486,7 @@ contains
       allocate (self%chol(n, n), self%g_mat(nc, n), self%p_mat(n, ns), &
                 self%h_mat(nc, ns), self%n0(nc), self%block(n + nb, n + nb), &
                 self%block_rhs(n + nb), self%signs(nb))
-      allocate (self%ipiv(max(self%r, 1)), self%ipiv_block(n + nb))
+      allocate (self%ipiv_block(n + nb))
     end associate
     self%lambda = 0
     self%mu = 0
@@ -491,6 +498,42 @@ contains
     self%law_roots = 1
     self%ready = .true.
   end subroutine finalize
+
+  !> The closure in blocks with partial passes (blocked, the default) or as
+  !> one block with full passes (the unblocked computation, for comparison);
+  !> after finalize. The next closure starts cold from the current scalars.
+  subroutine set_blocked(self, blocked)
+    class(mechanism_t), intent(inout) :: self
+    logical, intent(in) :: blocked
+    self%blocked = blocked
+    if (.not. self%ready) return
+    call find_closure_blocks(self)
+    self%converged = .false.
+    self%warm = .false.
+    self%dynamics_known = .false.
+  end subroutine set_blocked
+
+  !> The closure's blocks: x = [beta; sigma], rows [g; c], one group per loop
+  !> and per rate constraint.
+  subroutine find_closure_blocks(self)
+    class(mechanism_t), intent(inout) :: self
+    integer :: group_start(size(self%loops) + size(self%rate_constraints) + 1), k, g
+    self%unknowns = [self%beta, self%sigma]
+    self%rows = [self%closure, self%rate_outputs]
+    g = 1
+    group_start(1) = 1
+    do k = 1, size(self%loops)
+      g = g + 1
+      group_start(g) = group_start(g - 1) + size(self%loops(k)%dependents)
+    end do
+    do k = 1, size(self%rate_constraints)
+      g = g + 1
+      group_start(g) = group_start(g - 1) + size(self%rate_constraints(k)%dependents)
+    end do
+    call find_element_links(self%elements, self%n_frames, self%n_scalars, self%reach)
+    call build_closure_blocks(self%blocks, self%elements, self%reach, self%n_frames, self%n_scalars, &
+                              self%unknowns, self%rows, self%r, group_start, self%blocked)
+  end subroutine find_closure_blocks
 
   !> Dependent rates, constraint outputs and kinematic coordinates must be
   !> coordinates; the speeds are the other coordinates.
@@ -718,79 +761,32 @@ contains
     call closure_jacobian(self, jac)
   end subroutine mechanism_jacobian
 
-  !> J_beta column by column: velocity passes with q' = 0, beta' = e_k (3.21).
+  !> J_beta column by column: velocity passes with q' = 0, beta' = e_k (3.21),
+  !> each over the elements that rate reaches (kinetostatics_closure_blocks).
   !> Destroys the velocity state.
   subroutine closure_jacobian(self, jac)
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(out) :: jac(:, :)
-    integer :: k, i
-    do i = 1, self%f
-      self%scalars(self%q(i))%qd = 0
-    end do
-    do i = 1, self%nd
-      self%scalars(self%sigma(i))%qd = 0
-    end do
-    do k = 1, self%r
-      do i = 1, self%r
-        self%scalars(self%beta(i))%qd = 0
-      end do
-      self%scalars(self%beta(k))%qd = 1
-      call self%velocity_pass()
-      do i = 1, self%r
-        jac(i, k) = self%scalars(self%closure(i))%qd
-      end do
-    end do
+    call fill_closure(self, self%r)
+    call self%blocks%assemble(.false., jac)
   end subroutine closure_jacobian
 
+  !> Columns 1..last of J_x (last = r: J_beta) into the blocks.
+  subroutine fill_closure(self, last)
+    class(mechanism_t), intent(inout) :: self
+    integer, intent(in) :: last
+    call self%blocks%fill(self%elements, self%reach, self%frames, self%scalars, self%unknowns, self%rows, last)
+  end subroutine fill_closure
+
   !> With rate constraints: J_x of the unknown rates [beta'; sigma'] against
-  !> [g'; c], one velocity pass per column (all other rates zero), LU-factored
-  !> into jxlu. Destroys the velocity state.
-  subroutine factor_rates(self, status)
-    class(mechanism_t), intent(inout) :: self
-    type(status_t), intent(inout) :: status
-    if (self%nd == 0 .or. .not. status%ok()) return
-    call fill_rates(self)
-    call factor_filled_rates(self, status)
-  end subroutine factor_rates
-
-  !> J_x into jx (rate constraints present), one velocity pass per column.
-  subroutine fill_rates(self)
-    class(mechanism_t), intent(inout) :: self
-    integer :: k, i
-    do i = 1, self%f
-      self%scalars(self%q(i))%qd = 0
-    end do
-    do k = 1, self%r + self%nd
-      do i = 1, self%r
-        self%scalars(self%beta(i))%qd = 0
-      end do
-      do i = 1, self%nd
-        self%scalars(self%sigma(i))%qd = 0
-      end do
-      if (k <= self%r) then
-        self%scalars(self%beta(k))%qd = 1
-      else
-        self%scalars(self%sigma(k - self%r))%qd = 1
-      end if
-      call self%velocity_pass()
-      do i = 1, self%r
-        self%jx(i, k) = self%scalars(self%closure(i))%qd
-      end do
-      do i = 1, self%nd
-        self%jx(self%r + i, k) = self%scalars(self%rate_outputs(i))%qd
-      end do
-    end do
-  end subroutine fill_rates
-
-  !> LU of the filled J_x into jxlu (nothing without rate constraints).
+  !> [g'; c] (filled), LU-factored block by block.
   subroutine factor_filled_rates(self, status)
     class(mechanism_t), intent(inout) :: self
     type(status_t), intent(inout) :: status
     type(status_t) :: lapack
     integer :: zero_pivot
     if (self%nd == 0 .or. .not. status%ok()) return
-    self%jxlu = self%jx
-    call lu_factor(self%jxlu, self%ipiv_x, lapack, zero_pivot)
+    call self%blocks%factor(.true., lapack, zero_pivot)
     if (.not. lapack%ok()) then
       if (zero_pivot > self%r) then
         call set_status(status, STATUS_NOT_CONVERGED, 'the rate constraints are singular: the rate of '''// &
@@ -802,22 +798,30 @@ contains
     end if
   end subroutine factor_filled_rates
 
-  !> J_beta at the current positions, LU-factored into jlu.
+  !> J_beta at the current positions, LU-factored block by block.
   subroutine factor_closure(self, status)
     class(mechanism_t), intent(inout) :: self
     type(status_t), intent(inout) :: status
-    call closure_jacobian(self, self%jbeta)
+    call fill_closure(self, self%r)
     call factor_jbeta(self, status)
   end subroutine factor_closure
 
-  !> LU of jbeta into jlu.
+  !> With rate constraints: J_x filled and factored. Destroys the velocity state.
+  subroutine factor_rates(self, status)
+    class(mechanism_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
+    if (self%nd == 0 .or. .not. status%ok()) return
+    call fill_closure(self, self%r + self%nd)
+    call factor_filled_rates(self, status)
+  end subroutine factor_rates
+
+  !> LU of the filled J_beta blocks.
   subroutine factor_jbeta(self, status)
     class(mechanism_t), intent(inout) :: self
     type(status_t), intent(inout) :: status
     type(status_t) :: lapack
     integer :: zero_pivot
-    self%jlu = self%jbeta
-    call lu_factor(self%jlu, self%ipiv, lapack, zero_pivot)
+    call self%blocks%factor(.false., lapack, zero_pivot)
     if (.not. lapack%ok()) then
       call set_status(status, STATUS_NOT_CONVERGED, 'the closure Jacobian is singular: '// &
                       describe_dependent(self, zero_pivot)//' does not move the closure measurements')
@@ -918,7 +922,7 @@ contains
         converged = .not. chord .or. polished
         if (converged) exit
         polished = .true.
-        call lu_solve(self%jlu, self%ipiv, res, status)
+        call self%blocks%solve(.false., res, .false.)
         x = x - res
         cycle
       end if
@@ -930,7 +934,7 @@ contains
         if (.not. solve_status%ok()) exit
       end if
       last = size_res
-      call lu_solve(self%jlu, self%ipiv, res, status)
+      call self%blocks%solve(.false., res, .false.)
       x = x - res
     end do
     if (.not. converged) then
@@ -956,7 +960,7 @@ contains
         if (maxval(abs(res)) <= 1e-3_wp*self%closure_tolerance) exit
         call factor_closure(self, status)
         if (.not. status%ok()) return
-        call lu_solve(self%jlu, self%ipiv, res, status)
+        call self%blocks%solve(.false., res, .false.)
         x = x - res
         call self%residual(x, res, status)
         if (.not. status%ok()) return
@@ -970,8 +974,7 @@ contains
     ! J_beta at the solution; with rate constraints it is the first r columns
     ! of J_x, which are filled anyway
     if (self%nd > 0) then
-      call fill_rates(self)
-      self%jbeta = self%jx(1:self%r, 1:self%r)
+      call fill_closure(self, self%r + self%nd)
       call factor_jbeta(self, status)
     else
       call factor_closure(self, status)
@@ -998,7 +1001,6 @@ contains
   subroutine predict_dependents(self, q)
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: q(:)
-    type(status_t) :: lapack
     integer :: k
     self%scalars%qd = 0
     do k = 1, self%f
@@ -1008,7 +1010,7 @@ contains
     do k = 1, self%r
       self%work_r(k) = self%scalars(self%closure(k))%qd
     end do
-    call lu_solve(self%jlu, self%ipiv, self%work_r, lapack)   ! sizes fixed at finalize: cannot fail
+    call self%blocks%solve(.false., self%work_r, .false.)
     if (self%nd > 0 .or. size(self%kinematic) > 0) return
     ! The second-order term: along beta(s) = beta(q0 + s (q - q0)), beta'(0) =
     ! -work_r, and g'' = 0 gives beta''(0) = -J_beta^-1 g''|beta''=0 (an
@@ -1025,7 +1027,7 @@ contains
     do k = 1, self%r
       self%res_r(k) = self%scalars(self%closure(k))%qdd
     end do
-    call lu_solve(self%jlu, self%ipiv, self%res_r, lapack)
+    call self%blocks%solve(.false., self%res_r, .false.)
     if (0.5_wp*maxval(abs(self%res_r)) <= 0.1_wp*maxval(abs(self%work_r))) self%work_r = self%work_r + 0.5_wp*self%res_r
   end subroutine predict_dependents
 
@@ -1057,6 +1059,8 @@ contains
     real(wp), intent(in) :: q(:)
     type(status_t), intent(inout) :: status
     real(wp) :: rcond
+    real(wp), allocatable :: jbeta(:, :), jlu(:, :)
+    integer, allocatable :: pivots(:)
     integer :: i, k
     character(len=16) :: num
     if (.not. status%ok()) return
@@ -1068,9 +1072,14 @@ contains
       return
     end if
     if (self%r == 0) return
-    call lu_reciprocal_condition(self%jlu, one_norm(self%jbeta), rcond, status)
+    ! the whole J_beta (its blocks already factored without a zero pivot)
+    allocate (jbeta(self%r, self%r), pivots(self%r))
+    call self%blocks%assemble(.false., jbeta)
+    jlu = jbeta
+    call lu_factor(jlu, pivots, status)
+    if (status%ok()) call lu_reciprocal_condition(jlu, one_norm(jbeta), rcond, status)
     if (status%ok() .and. rcond < 1e-10_wp) then
-      k = minloc([(abs(self%jlu(i, i)), i = 1, self%r)], dim=1)   ! the weakest pivot
+      k = minloc([(abs(jlu(i, i)), i = 1, self%r)], dim=1)   ! the weakest pivot
       write (num, '(es10.3)') rcond
       call set_status(status, STATUS_INVALID_INPUT, 'at the start the closure Jacobian is singular '// &
         '(reciprocal condition '//trim(adjustl(num))//'): '//describe_dependent(self, k)// &
@@ -1100,7 +1109,6 @@ contains
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: given(:)
     integer, intent(in) :: level
-    type(status_t) :: lapack
     integer :: k
     do k = 1, self%ns
       call put(self%q(self%speeds(k)), given(k))
@@ -1117,7 +1125,7 @@ contains
         do k = 1, self%r
           self%work_r(k) = value_of(self%closure(k))
         end do
-        call lu_solve(self%jlu, self%ipiv, self%work_r, lapack)   ! sizes fixed at finalize: cannot fail
+        call self%blocks%solve(.false., self%work_r, .false.)
         do k = 1, self%r
           call put(self%beta(k), -self%work_r(k))
         end do
@@ -1128,7 +1136,7 @@ contains
         do k = 1, self%nd
           self%work_x(self%r + k) = value_of(self%rate_outputs(k))
         end do
-        call lu_solve(self%jxlu, self%ipiv_x, self%work_x, lapack)
+        call self%blocks%solve(.true., self%work_x, .false.)
         do k = 1, self%r
           call put(self%beta(k), -self%work_x(k))
         end do
@@ -1178,7 +1186,6 @@ contains
     class(mechanism_t), intent(inout) :: self
     logical, intent(in) :: inertia, applied
     integer, intent(in) :: loads
-    type(status_t) :: lapack
     integer :: k
     self%lambda = 0
     self%mu = 0
@@ -1190,7 +1197,7 @@ contains
       do k = 1, self%nd
         self%work_x(self%r + k) = self%scalars(self%sigma(k))%force
       end do
-      call lu_solve(self%jxlu, self%ipiv_x, self%work_x, lapack, transpose=.true.)   ! cannot fail (sizes fixed)
+      call self%blocks%solve(.true., self%work_x, .true.)
       self%lambda = -self%work_x(1:self%r)
       self%mu = -self%work_x(self%r + 1:)
       call self%force_pass(inertia, applied, self%lambda, loads)
@@ -1198,7 +1205,7 @@ contains
       do k = 1, self%r
         self%lambda(k) = self%scalars(self%beta(k))%force
       end do
-      call lu_solve(self%jlu, self%ipiv, self%lambda, lapack, transpose=.true.)   ! cannot fail (sizes fixed)
+      call self%blocks%solve(.false., self%lambda, .true.)
       self%lambda = -self%lambda
       call self%force_pass(inertia, applied, self%lambda, loads)
     end if

@@ -21,7 +21,7 @@ module kinetostatics_state
   use base_status, only: status_t
   implicit none (type, external)
   private
-  public :: frame_state_t, scalar_state_t, element_t, element_box_t, axis_rotation
+  public :: frame_state_t, scalar_state_t, element_t, element_box_t, element_links_t, axis_rotation
 
   type :: frame_state_t
     real(wp) :: rot(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])  ! columns x, y, z
@@ -41,9 +41,26 @@ module kinetostatics_state
     real(wp) :: force = 0  ! N m, N, or the cut force of a measurement
   end type scalar_state_t
 
+  !> What an element reads and writes in its position, velocity and
+  !> acceleration maps (its force map pushes back from the outputs to the
+  !> same inputs), so that the mechanism can pass over only the elements a
+  !> rate reaches (kinetostatics_closure_blocks). `carried`: the output
+  !> frames move rigidly with the single input frame while the input scalars
+  !> rest (a joint). `relative`: the output scalars do not change under a
+  !> common rigid motion of the input frames (a measurement between two
+  !> frames, a relative velocity). known = .false. (the default): unknown,
+  !> the mechanism passes over every element.
+  type :: element_links_t
+    logical :: known = .false.
+    integer, allocatable :: frames_in(:), scalars_in(:), frames_out(:), scalars_out(:)
+    logical :: carried = .false.
+    logical :: relative = .false.
+  end type element_links_t
+
   type, abstract :: element_t
     character(len=:), allocatable :: name
   contains
+    procedure :: links => element_links
     procedure(position_i), deferred :: position
     procedure(motion_i), deferred :: velocity
     procedure(motion_i), deferred :: acceleration
@@ -98,6 +115,16 @@ contains
     kinetic = 0
     potential = 0
   end subroutine element_energy
+
+  !> Unknown links (see element_links_t).
+  pure subroutine element_links(self, links)
+    class(element_t), intent(in) :: self
+    type(element_links_t), intent(out) :: links
+    associate (unused => self)
+    end associate
+    links%known = .false.
+    allocate (links%frames_in(0), links%scalars_in(0), links%frames_out(0), links%scalars_out(0))
+  end subroutine element_links
 
   !> Elements with a chart of their own coordinates (a free rotation) return
   !> the scalar whose value decides when the chart must change (default 0: no

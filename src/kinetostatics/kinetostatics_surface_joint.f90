@@ -44,7 +44,7 @@ module kinetostatics_surface_joint
   use base_vector, only: cross
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame, darboux_axes
-  use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
+  use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
   implicit none (type, external)
   private
   public :: surface_joint_t, new_surface_joint, domain_edge_margin
@@ -73,6 +73,7 @@ module kinetostatics_surface_joint
     procedure :: acceleration => sj_acceleration
     procedure :: force => sj_force
     procedure :: complete_geometry => sj_complete_geometry
+    procedure :: links => sj_links
   end type surface_joint_t
 
 contains
@@ -284,6 +285,14 @@ contains
     call angular_rates(fr, x(:, 1), x(:, 2))
     call rate_derivatives(fr, x(:, 3), x(:, 4), x(:, 5), x(:, 6))
   end subroutine regular_rates_at
+
+  !> Links for kinetostatics_closure_blocks (element_links_t).
+  pure subroutine sj_links(self, links)
+    class(surface_joint_t), intent(in) :: self
+    type(element_links_t), intent(out) :: links
+    links = element_links_t(.true., [self%frame_in], [self%var_u, self%var_v], [self%frame_out], [integer ::], &
+                            carried=.true.)
+  end subroutine sj_links
 
   pure subroutine sj_velocity(self, frames, scalars)
     class(surface_joint_t), intent(inout) :: self
