@@ -61,8 +61,13 @@ module kinetostatics_closure_blocks
     integer, allocatable :: pass_start(:), pass(:)   ! column k's elements: pass(pass_start(k):pass_start(k+1)-1)
     integer, allocatable :: block_of(:), position(:) ! block of each x and its place among the members
     type(dense_block_t), allocatable :: blocks(:)
+    ! the mass matrix's columns (build_mass_columns): speed k's passes, the blocks it moves, the
+    ! speeds j whose entries M(j, k) (and M(k, j)) its column gives; compressed rows as above
+    logical :: mass_blocked = .false.
+    integer, allocatable :: mass_pass_start(:), mass_pass(:), touched_start(:), touched(:), valid_start(:), &
+      valid(:)
   contains
-    procedure :: fill, factor, solve, assemble, block_count
+    procedure :: fill, factor, solve, assemble, block_count, build_mass_columns
   end type closure_blocks_t
 
 contains
@@ -242,6 +247,153 @@ contains
     end subroutine join
   end subroutine build_closure_blocks
 
+  !> The mass matrix's columns (kinetostatics_mechanism, dynamics). Speed k
+  !> (the scalar speeds(k)) accelerated by one, velocities zero: its motion
+  !> moves the elements L(k) of the sweep that starts at it and adds the
+  !> unknowns of every block whose rows move (the blocks B(k)), until nothing
+  !> changes. Column k gives the entries M(j, k) = M(k, j) of the speeds j
+  !> whose own sweep D(j) lies in L(k), apart from the rows of the blocks
+  !> (V(k); for a tower: the speeds of k's body and of the bodies above it).
+  !> Their generalized forces need the cut forces of the blocks their sweeps
+  !> move whose unknowns carry a mass of L(k) (else those cut forces are
+  !> zero): with B(k) the blocks N(k), whose unknowns' sweeps and rows join
+  !> the force passes. So the two acceleration passes run over L(k), the two
+  !> force passes over P(k) = L(k) + the sweeps and rows of N(k). A pair j, k
+  !> that neither column gives, with a mass moved by both, makes column k a
+  !> full one (every element, every block, every speed), as are all columns
+  !> with blocked = .false. (the unblocked computation).
+  subroutine build_mass_columns(self, reach, n_frames, n_scalars, speeds, unknowns, rows, blocked)
+    class(closure_blocks_t), intent(inout) :: self
+    type(element_reach_t), intent(in) :: reach
+    integer, intent(in) :: n_frames, n_scalars, speeds(:), unknowns(:), rows(:)
+    logical, intent(in) :: blocked
+    logical :: moving(n_scalars), live(size(reach%carried), size(speeds)), sweep(size(reach%carried), size(speeds)), &
+      unknown_sweep(size(reach%carried), size(unknowns)), moved(size(self%blocks)), needed(size(self%blocks)), &
+      opened(size(self%blocks), size(speeds)), full(size(speeds)), changed, leaf(size(reach%carried)), &
+      row_writer(size(reach%carried)), in_pass(size(reach%carried)), valid(size(speeds), size(speeds))
+    integer :: k, j, b, i, e, n, ns, nb
+    integer, allocatable :: sources(:)
+    n = size(reach%carried)
+    ns = size(speeds)
+    nb = size(self%blocks)
+    self%mass_blocked = blocked .and. self%blocked
+    full = .not. self%mass_blocked
+    allocate (self%mass_pass_start(ns + 1), self%touched_start(ns + 1), self%valid_start(ns + 1))
+    allocate (self%mass_pass(0), self%touched(0), self%valid(0))
+    leaf = reach%frame_out_start(2:) == reach%frame_out_start(:n) .and. &
+           reach%scalar_out_start(2:) == reach%scalar_out_start(:n)
+    row_writer = .false.
+    do i = 1, size(rows)
+      if (reach%scalar_writer(rows(i)) > 0) row_writer(reach%scalar_writer(rows(i))) = .true.
+    end do
+    live = .true.
+    valid = .true.
+    if (self%mass_blocked) then
+      do k = 1, ns   ! D(k) and the blocks whose rows it moves
+        call reach_of(reach, [speeds(k)], n_frames, n_scalars, moving, sweep(:, k))
+        opened(:, k) = [(any(moving(rows(self%blocks(b)%members))), b = 1, nb)]
+      end do
+      do i = 1, size(unknowns)
+        call reach_of(reach, [unknowns(i)], n_frames, n_scalars, moving, unknown_sweep(:, i))
+      end do
+      do k = 1, ns   ! L(k): the fixpoint
+        moved = .false.
+        sources = [speeds(k)]
+        do
+          call reach_of(reach, sources, n_frames, n_scalars, moving, live(:, k))
+          changed = .false.
+          do b = 1, nb
+            if (moved(b) .or. .not. any(moving(rows(self%blocks(b)%members)))) cycle
+            moved(b) = .true.
+            changed = .true.
+            sources = [sources, unknowns(self%blocks(b)%members)]
+          end do
+          if (.not. changed) exit
+        end do
+        valid(:, k) = [(all(.not. sweep(:, j) .or. live(:, k) .or. row_writer), j = 1, ns)]
+        ! N(k): B(k) and the blocks the valid speeds open whose unknowns carry a mass of L(k)
+        needed = moved
+        do b = 1, nb
+          if (needed(b) .or. .not. any(opened(b, :) .and. valid(:, k))) cycle
+          do i = 1, size(self%blocks(b)%members)
+            if (any(unknown_sweep(:, self%blocks(b)%members(i)) .and. live(:, k) .and. leaf)) needed(b) = .true.
+          end do
+        end do
+        in_pass = live(:, k)
+        do b = 1, nb
+          if (.not. needed(b)) cycle
+          do i = 1, size(self%blocks(b)%members)
+            in_pass = in_pass .or. unknown_sweep(:, self%blocks(b)%members(i))
+            e = reach%scalar_writer(rows(self%blocks(b)%members(i)))
+            if (e > 0) in_pass(e) = .true.
+          end do
+        end do
+        ! a speed j is valid if its sweep, apart from the rows of blocks outside N(k), is in the pass
+        do j = 1, ns
+          if (.not. valid(j, k)) cycle
+          do e = 1, n
+            if (sweep(e, j) .and. .not. in_pass(e) .and. .not. row_writer(e)) valid(j, k) = .false.
+          end do
+          do b = 1, nb
+            if (.not. needed(b)) cycle
+            do i = 1, size(self%blocks(b)%members)
+              e = reach%scalar_writer(rows(self%blocks(b)%members(i)))
+              if (e > 0) then
+                if (sweep(e, j) .and. .not. in_pass(e)) valid(j, k) = .false.
+              end if
+            end do
+          end do
+        end do
+        self%mass_pass_start(k) = size(self%mass_pass) + 1
+        self%touched_start(k) = size(self%touched) + 1
+        self%valid_start(k) = size(self%valid) + 1
+        self%mass_pass = [self%mass_pass, pack([(e, e = 1, n)], in_pass)]
+        self%touched = [self%touched, pack([(b, b = 1, nb)], needed)]
+        self%valid = [self%valid, pack([(j, j = 1, ns)], valid(:, k))]
+      end do
+      do k = 1, ns   ! a pair that neither column gives, with a mass moved by both: column k full
+        do j = 1, ns
+          if (valid(j, k) .or. valid(k, j)) cycle
+          if (any(live(:, j) .and. live(:, k) .and. leaf)) full(k) = .true.
+        end do
+      end do
+    end if
+    self%mass_pass_start(ns + 1) = size(self%mass_pass) + 1
+    self%touched_start(ns + 1) = size(self%touched) + 1
+    self%valid_start(ns + 1) = size(self%valid) + 1
+    if (.not. any(full)) return
+    ! with a full column: lay the lists out again, the full columns covering everything
+    block
+      integer, allocatable :: pass(:), touched(:), good(:), p0(:), t0(:), v0(:)
+      pass = self%mass_pass
+      touched = self%touched
+      good = self%valid
+      p0 = self%mass_pass_start
+      t0 = self%touched_start
+      v0 = self%valid_start
+      self%mass_pass = [integer ::]
+      self%touched = [integer ::]
+      self%valid = [integer ::]
+      do k = 1, ns
+        self%mass_pass_start(k) = size(self%mass_pass) + 1
+        self%touched_start(k) = size(self%touched) + 1
+        self%valid_start(k) = size(self%valid) + 1
+        if (full(k)) then
+          self%mass_pass = [self%mass_pass, [(e, e = 1, n)]]
+          self%touched = [self%touched, [(b, b = 1, nb)]]
+          self%valid = [self%valid, [(j, j = 1, ns)]]
+        else
+          self%mass_pass = [self%mass_pass, pass(p0(k):p0(k + 1) - 1)]
+          self%touched = [self%touched, touched(t0(k):t0(k + 1) - 1)]
+          self%valid = [self%valid, good(v0(k):v0(k + 1) - 1)]
+        end if
+      end do
+    end block
+    self%mass_pass_start(ns + 1) = size(self%mass_pass) + 1
+    self%touched_start(ns + 1) = size(self%touched) + 1
+    self%valid_start(ns + 1) = size(self%valid) + 1
+  end subroutine build_mass_columns
+
   integer function block_count(self)
     class(closure_blocks_t), intent(in) :: self
     block_count = size(self%blocks)
@@ -319,14 +471,21 @@ contains
   end subroutine factor
 
   !> v := J^-1 v (or J^-T v) in place, J = J_x (with_rates, v of length nx)
-  !> or J_beta (v of length r), block by block.
-  subroutine solve(self, with_rates, v, transpose)
+  !> or J_beta (v of length r), block by block (only the blocks `only`, the
+  !> rest of v untouched).
+  subroutine solve(self, with_rates, v, transpose, only)
     class(closure_blocks_t), intent(inout) :: self
     logical, intent(in) :: with_rates, transpose
     real(wp), intent(inout) :: v(:)
+    integer, intent(in), optional :: only(:)
     type(status_t) :: status
-    integer :: k, i, m
-    do k = 1, size(self%blocks)
+    integer :: k, i, m, l
+    do l = 1, size(self%blocks)
+      k = l
+      if (present(only)) then
+        if (l > size(only)) exit
+        k = only(l)
+      end if
       associate (b => self%blocks(k))
         m = b%mb
         if (with_rates) m = size(b%members)

@@ -518,6 +518,7 @@ contains
   subroutine find_closure_blocks(self)
     class(mechanism_t), intent(inout) :: self
     integer :: group_start(size(self%loops) + size(self%rate_constraints) + 1), k, g
+    logical :: scaled
     self%unknowns = [self%beta, self%sigma]
     self%rows = [self%closure, self%rate_outputs]
     g = 1
@@ -533,6 +534,13 @@ contains
     call find_element_links(self%elements, self%n_frames, self%n_scalars, self%reach)
     call build_closure_blocks(self%blocks, self%elements, self%reach, self%n_frames, self%n_scalars, &
                               self%unknowns, self%rows, self%r, group_start, self%blocked)
+    scaled = .false.
+    do k = 1, self%n_laws
+      if (self%laws(k)%law%scaled) scaled = .true.
+    end do
+    ! with scaled laws the block system needs every contact's N per unit acceleration: full columns
+    call self%blocks%build_mass_columns(self%reach, self%n_frames, self%n_scalars, self%q(self%speeds), &
+                                        self%unknowns, self%rows, self%blocked .and. .not. scaled)
   end subroutine find_closure_blocks
 
   !> Dependent rates, constraint outputs and kinematic coordinates must be
@@ -1321,14 +1329,23 @@ contains
       self%frames(k)%v = 0
     end do
     self%scalars%qd = 0
-    do i = 1, self%ns
-      self%work_f = 0
-      self%work_f(i) = 1
-      call self%set_accelerations(self%work_f)
-      call self%inverse_dynamics(.true., .false., LOADS_NONE)
-      self%mass(:, i) = -self%gq
-      if (nc > 0) call self%normal_forces(self%g_mat(:, i))
-    end do
+    if (self%blocks%mass_blocked) then
+      self%mass = 0
+      call clear_accelerations(self)
+      do i = 1, self%ns
+        if (self%blocks%mass_pass_start(i + 1) - self%blocks%mass_pass_start(i) < self%n_elements) then
+          call blocked_mass_column(self, i)
+        else
+          call full_mass_column(self, i)
+          self%mass(i, :) = self%mass(:, i)   ! its row too (the blocked columns give only theirs)
+          call clear_accelerations(self)
+        end if
+      end do
+    else
+      do i = 1, self%ns
+        call full_mass_column(self, i)
+      end do
+    end if
     do i = 1, self%ns   ! symmetric part, element-wise (no temporary)
       do k = 1, self%ns
         self%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
@@ -1345,7 +1362,15 @@ contains
       self%qdd = self%bias
       call cholesky_solve(self%chol, self%qdd, status)
       qdd = self%qdd
-      call affine_normal_forces(self, qdd)
+      if (self%blocks%mass_blocked) then
+        ! N = N0 + (normal forces of the pass at q'' alone, velocities zero): G q'' without G
+        call self%set_accelerations(qdd)
+        call self%inverse_dynamics(.true., .false., LOADS_NONE)
+        call self%normal_forces(self%work_c)
+        self%normal = self%n0 + self%work_c
+      else
+        call affine_normal_forces(self, qdd)
+      end if
       self%law_power = self%unit_power
       call remember_dynamics(self, t, q, qd)
       return
@@ -1419,6 +1444,139 @@ contains
     end do
     call remember_dynamics(self, t, q, qd)
   end subroutine dynamics
+
+  !> Column i of M (and of G) by the full passes: s' = e_i, velocities zero,
+  !> applied forces off.
+  subroutine full_mass_column(self, i)
+    class(mechanism_t), intent(inout) :: self
+    integer, intent(in) :: i
+    self%work_f = 0
+    self%work_f(i) = 1
+    call self%set_accelerations(self%work_f)
+    call self%inverse_dynamics(.true., .false., LOADS_NONE)
+    self%mass(:, i) = -self%gq
+    if (size(self%contacts) > 0) call self%normal_forces(self%g_mat(:, i))
+  end subroutine full_mass_column
+
+  subroutine clear_accelerations(self)
+    class(mechanism_t), intent(inout) :: self
+    integer :: k
+    do k = 1, self%n_frames
+      self%frames(k)%alpha = 0
+      self%frames(k)%a = 0
+    end do
+    self%scalars%qdd = 0
+  end subroutine clear_accelerations
+
+  !> Column i of M by passes over the elements a unit s'_i moves and the
+  !> blocks it moves (kinetostatics_closure_blocks, build_mass_columns):
+  !> the same two acceleration and two force passes as full_mass_column, over
+  !> those elements; gives M(j, i) = M(i, j) for the speeds j it covers.
+  !> Expects every acceleration zero and leaves them so.
+  subroutine blocked_mass_column(self, i)
+    class(mechanism_t), intent(inout) :: self
+    integer, intent(in) :: i
+    integer :: p, l, b, m, j
+    logical :: rates
+    rates = self%nd > 0
+    associate (bl => self%blocks, x => self%work_x, speed => self%q(self%speeds(i)))
+      associate (pass => bl%mass_pass(bl%mass_pass_start(i):bl%mass_pass_start(i + 1) - 1), &
+                 touched => bl%touched(bl%touched_start(i):bl%touched_start(i + 1) - 1))
+        self%scalars(speed)%qdd = 1
+        do p = 1, size(pass)
+          call self%elements(pass(p))%e%acceleration(self%frames, self%scalars)
+        end do
+        do l = 1, size(touched)
+          do m = 1, size(bl%blocks(touched(l))%members)
+            j = bl%blocks(touched(l))%members(m)
+            x(j) = self%scalars(self%rows(j))%qdd
+          end do
+        end do
+        call bl%solve(rates, x, .false., touched)
+        do l = 1, size(touched)
+          do m = 1, size(bl%blocks(touched(l))%members)
+            j = bl%blocks(touched(l))%members(m)
+            self%scalars(self%unknowns(j))%qdd = -x(j)
+          end do
+        end do
+        do p = 1, size(pass)
+          call self%elements(pass(p))%e%acceleration(self%frames, self%scalars)
+        end do
+        ! the force passes: lambda = 0, then the touched blocks' cut forces
+        call partial_force_pass(self, pass)
+        do l = 1, size(touched)
+          do m = 1, size(bl%blocks(touched(l))%members)
+            j = bl%blocks(touched(l))%members(m)
+            x(j) = self%scalars(self%unknowns(j))%force
+          end do
+        end do
+        call bl%solve(rates, x, .true., touched)
+        call partial_force_pass(self, pass, touched)
+        do p = bl%valid_start(i), bl%valid_start(i + 1) - 1
+          j = bl%valid(p)
+          self%mass(j, i) = -self%scalars(self%q(self%speeds(j)))%force
+          self%mass(i, j) = self%mass(j, i)
+        end do
+        ! back to rest
+        self%scalars(speed)%qdd = 0
+        do l = 1, size(touched)
+          do m = 1, size(bl%blocks(touched(l))%members)
+            self%scalars(self%unknowns(bl%blocks(touched(l))%members(m)))%qdd = 0
+          end do
+        end do
+        do p = 1, size(pass)
+          associate (r => self%reach, e => pass(p))
+            do l = r%frame_out_start(e), r%frame_out_start(e + 1) - 1
+              self%frames(r%frame_out(l))%alpha = 0
+              self%frames(r%frame_out(l))%a = 0
+            end do
+            do l = r%scalar_out_start(e), r%scalar_out_start(e + 1) - 1
+              self%scalars(r%scalar_out(l))%qdd = 0
+            end do
+          end associate
+        end do
+      end associate
+    end associate
+  end subroutine blocked_mass_column
+
+  !> A force pass with inertia, without applied forces, over the elements
+  !> `pass` (backwards): the forces on their inputs and outputs cleared, the
+  !> cut forces -work_x of the blocks `touched` on their rows (none: zero).
+  subroutine partial_force_pass(self, pass, touched)
+    class(mechanism_t), intent(inout) :: self
+    integer, intent(in) :: pass(:)
+    integer, intent(in), optional :: touched(:)
+    integer :: p, l, m, j
+    do p = 1, size(pass)
+      associate (r => self%reach, e => pass(p))
+        do l = r%frame_out_start(e), r%frame_out_start(e + 1) - 1
+          self%frames(r%frame_out(l))%force = 0
+          self%frames(r%frame_out(l))%torque = 0
+        end do
+        do l = r%frame_in_start(e), r%frame_in_start(e + 1) - 1
+          self%frames(r%frame_in(l))%force = 0
+          self%frames(r%frame_in(l))%torque = 0
+        end do
+        do l = r%scalar_out_start(e), r%scalar_out_start(e + 1) - 1
+          self%scalars(r%scalar_out(l))%force = 0
+        end do
+        do l = r%scalar_in_start(e), r%scalar_in_start(e + 1) - 1
+          self%scalars(r%scalar_in(l))%force = 0
+        end do
+      end associate
+    end do
+    if (present(touched)) then
+      do l = 1, size(touched)
+        do m = 1, size(self%blocks%blocks(touched(l))%members)
+          j = self%blocks%blocks(touched(l))%members(m)
+          self%scalars(self%rows(j))%force = -self%work_x(j)
+        end do
+      end do
+    end if
+    do p = size(pass), 1, -1
+      call self%elements(pass(p))%e%force(self%frames, self%scalars, .true., .false.)
+    end do
+  end subroutine partial_force_pass
 
   subroutine remember_dynamics(self, t, q, qd)
     class(mechanism_t), intent(inout) :: self

@@ -60,6 +60,13 @@ contains
       print '(a, i0, a, i0, a)', 'tower5: the longest column pass has ', longest, ' of ', m%n_elements, ' elements'
       ! a column reaches its own contact's chain and closure, not the bodies above
       call check(longest <= 10, 'tower5: every column of J_x passes over at most 10 elements')
+      ! the mass matrix: speed k of body i moves body i and those above, not those below
+      call check(m%blocks%mass_blocked, 'tower5: the mass matrix is built from partial passes')
+      associate (length => m%blocks%mass_pass_start(2:) - m%blocks%mass_pass_start(:ns))
+        print '(a, 15(1x, i0))', 'tower5: elements of the mass matrix columns:', length
+        call check(length(ns) < m%n_elements .and. all(length(1:ns - 3) > length(4:ns)), &
+                   'tower5: the columns of higher bodies pass over fewer elements')
+      end associate
       call compare(m, 0.0_wp, model%y0(1:f), model%y0(f + 1:f + ns), 'tower5 at the start')
     end associate
     options%t_end = 0.3_wp
