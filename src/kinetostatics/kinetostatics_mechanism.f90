@@ -22,6 +22,11 @@
 !> root functions of the domain edges see where the joint went.
 !> Then beta' = -J_beta^-1 f^ (3.30), beta'' = -J_beta^-1 f^' (3.31), and the cut
 !> forces lambda = -J_beta^-T Q^_beta ((3.33): the printed form lacks the inverse).
+!> J_beta (and J_x below) are block diagonal, one block per set of loops and
+!> rate constraints that share an entry, each column filled by a velocity
+!> pass over only the elements its rate reaches, factored and solved block by
+!> block (kinetostatics_closure_blocks; one block and full passes with
+!> set_blocked(.false.) or an element of unknown links).
 !>
 !> Velocity-level constraints (rolling, thesis (3.85); METHOD-PART2 A.3):
 !> outputs c of constraint elements that must vanish (e.g. the tangential slip
@@ -47,7 +52,11 @@
 !> velocity constraints closed by lambda, mu) is affine in s': Q_bar = Q_bar0 -
 !> M s'. ns + 1 passes: one with s' = 0 (inertia, gravity and the explicit
 !> laws) gives Q_bar0 = -Q^, and one per speed with s' = e_i, velocities zero
-!> and applied forces off gives the column -M e_i (M = B^T M_q B).
+!> and applied forces off gives the column -M e_i (M = B^T M_q B). Without
+!> scaled laws the column passes cover only the elements s'_i moves and the
+!> blocks its covered speeds need, and give M(j, i) = M(i, j) for the speeds
+!> j they cover (kinetostatics_closure_blocks, build_mass_columns); the normal
+!> forces then come from one more pass at the solved s' (N0 + G s' without G).
 !>
 !> Normal forces and scaled laws: every contact's normal force N (rules in
 !> kinetostatics_contact) is linear in the loads of a force pass, so
@@ -1337,7 +1346,9 @@ contains
           call blocked_mass_column(self, i)
         else
           call full_mass_column(self, i)
-          self%mass(i, :) = self%mass(:, i)   ! its row too (the blocked columns give only theirs)
+          do k = 1, self%ns   ! its row too (the blocked columns give only theirs); no temporary
+            self%mass(i, k) = self%mass(k, i)
+          end do
           call clear_accelerations(self)
         end if
       end do
