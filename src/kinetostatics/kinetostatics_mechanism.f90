@@ -56,7 +56,8 @@
 !> scaled laws the column passes cover only the elements s'_i moves and the
 !> blocks its covered speeds need, and give M(j, i) = M(i, j) for the speeds
 !> j they cover (kinetostatics_closure_blocks, build_mass_columns); the normal
-!> forces then come from one more pass at the solved s' (N0 + G s' without G).
+!> forces then come from one more pass at the solved s' (N0 + G s' without G)
+!> when a column was partial.
 !>
 !> Normal forces and scaled laws: every contact's normal force N (rules in
 !> kinetostatics_contact) is linear in the loads of a force pass, so
@@ -1305,7 +1306,7 @@ contains
     real(wp) :: s_old
     type(status_t) :: lapack
     integer :: i, j, k, c, nc, ns, nb, it, column
-    logical :: consistent
+    logical :: consistent, partial   ! partial: a column of M from partial passes (G not filled)
 
     if (self%dynamics_known .and. t == self%known_t) then
       if (all(q == self%known_q) .and. all(qd == self%known_s) .and. &
@@ -1338,12 +1339,14 @@ contains
       self%frames(k)%v = 0
     end do
     self%scalars%qd = 0
+    partial = .false.
     if (self%blocks%mass_blocked) then
       self%mass = 0
       call clear_accelerations(self)
       do i = 1, self%ns
         if (self%blocks%mass_pass_start(i + 1) - self%blocks%mass_pass_start(i) < self%n_elements) then
           call blocked_mass_column(self, i)
+          partial = .true.
         else
           call full_mass_column(self, i)
           do k = 1, self%ns   ! its row too (the blocked columns give only theirs); no temporary
@@ -1373,7 +1376,7 @@ contains
       self%qdd = self%bias
       call cholesky_solve(self%chol, self%qdd, status)
       qdd = self%qdd
-      if (self%blocks%mass_blocked) then
+      if (partial) then
         ! N = N0 + (normal forces of the pass at q'' alone, velocities zero): G q'' without G
         call self%set_accelerations(qdd)
         call self%inverse_dynamics(.true., .false., LOADS_NONE)
