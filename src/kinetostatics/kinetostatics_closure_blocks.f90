@@ -357,6 +357,14 @@ contains
           if (any(live(:, j) .and. live(:, k) .and. leaf)) full(k) = .true.
         end do
       end do
+      self%mass_pass_start(ns + 1) = size(self%mass_pass) + 1
+      ! partial columns leave G incomplete, so the normal forces cost one more pass over every
+      ! element: worth it only if the columns save more than that (not for one body: the egg)
+      if (count(.not. full)*n - sum(merge(self%mass_pass_start(2:ns + 1) - self%mass_pass_start(1:ns), 0, &
+                                           .not. full)) <= n) then
+        self%mass_blocked = .false.
+        full = .true.
+      end if
     end if
     self%mass_pass_start(ns + 1) = size(self%mass_pass) + 1
     self%touched_start(ns + 1) = size(self%touched) + 1
