@@ -510,15 +510,24 @@ contains
   subroutine point_roots(self, g)
     class(water_system_t), intent(in) :: self
     real(wp), intent(out) :: g(ROOT_STALL:ROOT_LIFT)
-    g(ROOT_TURN) = -dot_product(self%q%y_m, self%q%x_w) - turn_cosine   ! cos(beta) - 0.01: turning across
-    g(ROOT_STALL) = self%q%speed - self%model%min_speed
-    g(ROOT_LIFT) = self%q%normal_force/self%model%mass    ! m/s^2
-    if (self%model%correction == CORRECTION_OFF) then
+    g = stop_margins(self%model, self%q)
+  end subroutine point_roots
+
+  !> The model's stops at the water point q, each > 0 while the run may go on:
+  !> stall, critical, turn, lift-off (see system_roots).
+  pure function stop_margins(model, q) result(g)
+    type(streamline_t), intent(in) :: model
+    type(water_point_t), intent(in) :: q
+    real(wp) :: g(ROOT_STALL:ROOT_LIFT)
+    g(ROOT_TURN) = -dot_product(q%y_m, q%x_w) - turn_cosine   ! cos(beta) - 0.01: turning across
+    g(ROOT_STALL) = q%speed - model%min_speed
+    g(ROOT_LIFT) = q%normal_force/model%mass    ! m/s^2
+    if (model%correction == CORRECTION_OFF) then
       g(ROOT_CRITICAL) = 1
     else
-      g(ROOT_CRITICAL) = self%q%criticality - self%model%min_criticality
+      g(ROOT_CRITICAL) = q%criticality - model%min_criticality
     end if
-  end subroutine point_roots
+  end function stop_margins
 
   !> Stations are filled here (no sample); the end and the model's stops end
   !> the run (recorded by the driver) with their outcome and message.
@@ -539,8 +548,8 @@ contains
     if (fired(ROOT_END) /= 0) then
       self%outcome = 0   ! the end: status ok (simulate_water sets OUTCOME_END)
     else if (fired(ROOT_STALL) /= 0) then
-      call stop_model(OUTCOME_STALL, 'the water stalled (speed below '//format_short(self%model%min_speed)// &
-                      ' m/s) at t = '//format_short(t)//' s, u = '//format_short(y(1)))
+      call stop_model(OUTCOME_STALL, 'the water stalled (speed below min_speed = '// &
+                      format_short(self%model%min_speed)//' m/s) at t = '//format_short(t)//' s, u = '//format_short(y(1)))
     else if (fired(ROOT_TURN) /= 0) then
       call stop_model(OUTCOME_TURN, 'the water turns across the slide or back (angle to the centerline '// &
                       'beyond 89.4 deg) at t = '//format_short(t)//' s, u = '//format_short(y(1)))
@@ -600,22 +609,31 @@ contains
     end associate
   end subroutine station
 
-  !> A sample at (t, y). At the start, water that is not pressed on the
-  !> surface (N <= 0) stops the run: a root needs a sign change.
+  !> A sample at (t, y). At the start, a state already beyond one of the
+  !> model's stops (water not pressed on the surface, slower than min_speed,
+  !> near critical, turning across) stops the run at once with that stop's
+  !> outcome and message: the stops are roots falling through zero, which
+  !> would never fire from there, and the run would go on outside the model.
   subroutine system_record(self, t, y, kind, status)
     class(water_system_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
     integer, intent(in) :: kind
     type(status_t), intent(inout) :: status
+    integer, allocatable :: fired(:)
+    integer :: action
+    real(wp) :: g(ROOT_STALL:ROOT_LIFT), y_event(size(y))
     call self%point(y, status)
     if (.not. status%ok()) return
     call record(self%model, t, y, self%q, self%series, self%with_edges, status)
-    if (.not. status%ok()) return
-    if (kind == RECORD_START .and. .not. self%q%normal_force > 0) then
-      self%outcome = OUTCOME_LIFT
-      self%message = lift_message(t, y)
-      call set_status(status, STATUS_DOMAIN, self%message)
-    end if
+    if (.not. status%ok() .or. kind /= RECORD_START) return
+    g = stop_margins(self%model, self%q)
+    if (all(g > 0)) return
+    allocate (fired(self%root_count()))
+    fired = 0
+    where (.not. g > 0) fired(ROOT_STALL:ROOT_LIFT) = -1
+    y_event = y
+    call self%handle_event(t, y_event, fired, action, status)
+    if (status%ok()) call set_status(status, STATUS_DOMAIN, self%message)
   end subroutine system_record
 
   !> Progress lines of long runs: the fraction of the slide covered.

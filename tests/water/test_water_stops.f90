@@ -20,13 +20,14 @@ program test_water_stops
   use water_channel, only: new_channel
   use water_streamline, only: streamline_t, CORRECTION_OFF
   use water_flow, only: water_start_t, water_series_t, water_initial_state, simulate_water, &
-    START_HEIGHT_SPEED, OUTCOME_LIFT, OUTCOME_TURN
+    START_HEIGHT_SPEED, OUTCOME_LIFT, OUTCOME_TURN, OUTCOME_STALL
   implicit none (type, external)
 
   real(wp), parameter :: r = 0.5_wp, g = standard_gravity
 
   call lift_off()
   call lift_off_at_start()
+  call stall_at_start()
   call turn_back()
   call finish_tests('test_water_stops')
 
@@ -99,6 +100,30 @@ contains
     ! 1e-12 relative: N = m z.(a_hat - g) with a_hat = 0 on a straight line at v' = 0
     call check_close(s%normal_force(1), -g, 1e-12_wp, 0.0_wp, 'lift-off at the start: N = -m g on the ceiling')
   end subroutine lift_off_at_start
+
+  !> A start slower than min_speed: the stall is a root falling through zero,
+  !> which would never fire from below; the run must stop at once instead of
+  !> going on outside the model (it went on to the end before).
+  subroutine stall_at_start()
+    type(streamline_t), target :: model
+    type(water_start_t) :: start
+    type(water_series_t) :: s
+    type(ode_options_t) :: opt
+    type(status_t) :: st
+    real(wp) :: y0(7)
+
+    call make(model, 0.2_wp)
+    model%min_speed = 3
+    start%mode = START_HEIGHT_SPEED; start%height = 0.01_wp; start%speed = 2; start%v0 = pi/2
+    call water_initial_state(model, start, y0, st)
+    call check(st%ok(), 'stall at the start: start values')
+    call simulate_water(model, y0, opt, 5.0_wp, 0.01_wp, s, st, edges=.false.)
+    call check(s%outcome == OUTCOME_STALL .and. st%code == STATUS_DOMAIN, &
+               'water started below min_speed stops at once as stalled: '//st%text())
+    call check(s%n == 1, 'stall at the start: only the start sample')
+    call check(index(st%text(), 'stalled') > 0 .and. index(s%message, 'stalled') > 0, &
+               'stall at the start: the message says so')
+  end subroutine stall_at_start
 
   subroutine turn_back()
     type(streamline_t), target :: model
