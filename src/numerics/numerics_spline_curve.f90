@@ -5,6 +5,13 @@
 !> order without allocating; arc length by Gauss-Legendre quadrature per knot
 !> span and its inverse by safeguarded Newton iteration.
 !>
+!> Evaluation runs on a table made once per fit or set: on each knot span
+!> [t(l), t(l+1)) the spline is one polynomial of degree k, stored as its
+!> Taylor coefficients r^(j)(t(l)+)/j! (the Cox-de Boor recurrence with de
+!> Boor's difference formula at the left knot). A point then costs the knot
+!> search and a Taylor shift (Horner, k(k+1)/2 multiply-adds per coordinate
+!> for all derivatives) instead of the recurrence's k(k+1)/2 divisions.
+!>
 !> FITPACK's ier is translated in one place (ier_status). Interpolants
 !> (ier = -1) and least-squares polynomials (ier = -2) are accepted fits; for
 !> ier = 1..3 FITPACK still returns a usable approximation, which is kept, but
@@ -19,6 +26,7 @@ module numerics_spline_curve
   public :: spline_curve_t
 
   integer, parameter :: max_degree = 5, max_dimension = 10
+  real(wp), parameter :: factorial(0:max_degree) = [1, 1, 2, 6, 24, 120]
 
   !> 10-point Gauss-Legendre rule on [-1, 1] (positive nodes; symmetric).
   real(wp), parameter :: gl_x(5) = [0.1488743389816312108848260_wp, 0.4333953941292471907992659_wp, &
@@ -40,6 +48,8 @@ module numerics_spline_curve
     real(wp) :: fp = 0                     !< weighted residual sum of squares of the fit
     integer :: ier = 0                     !< FITPACK's ier of the fit
     real(wp), allocatable :: cumulative(:) !< arc length at the knots t(k+1..n-k)
+    !> taylor(j, :, l) = r^(j)(t(l)+)/j!, j = 0..k, on span l = k+1..n-k-1 (zero on empty spans)
+    real(wp), allocatable :: taylor(:, :, :)
   contains
     procedure :: fit
     procedure :: set
@@ -259,7 +269,7 @@ contains
     do l = 1, idim
       self%coefficients(l, :) = c(n*(l - 1) + 1:n*(l - 1) + n - k - 1)
     end do
-    call tabulate_length(self)
+    call tabulate(self)
   end subroutine fit
 
   !> FITPACK's ier -> status (the one place where ier is read).
@@ -322,10 +332,13 @@ contains
     if (present(periodic)) self%periodic = periodic
     self%fp = 0
     self%ier = 0
-    call tabulate_length(self)
+    call tabulate(self)
   end subroutine set
 
-  !> Knot interval l, t(l) <= u < t(l+1), k+1 <= l <= n-k-1, by bisection.
+  !> Knot interval l, t(l) <= u < t(l+1), k+1 <= l <= n-k-1 (for u in the
+  !> domain); at the end of the domain (u >= t(n-k-1)) the last non-empty
+  !> span. First guess: the span of u if the knots were evenly spaced, and
+  !> its neighbours (fitted knots mostly are nearly even); then bisection.
   pure integer function find_interval(t, k, u) result(l)
     real(wp), intent(in) :: t(:), u
     integer, intent(in) :: k
@@ -334,8 +347,34 @@ contains
     hi = size(t) - k - 1
     if (u >= t(hi)) then
       l = hi
+      ! a multiple knot at the end of the domain: back to the span that ends there
+      do while (t(l + 1) <= t(l) .and. l > lo)
+        l = l - 1
+      end do
       return
     end if
+    if (u > t(lo)) then
+      mid = lo + int((u - t(lo))/(t(hi + 1) - t(lo))*(hi + 1 - lo))
+      mid = min(max(mid, lo), hi - 1)
+      if (u >= t(mid)) then
+        if (u < t(mid + 1)) then
+          l = mid
+          return
+        end if
+        lo = mid + 1
+        if (u < t(lo + 1)) then
+          l = lo
+          return
+        end if
+      else
+        hi = mid
+        if (u >= t(mid - 1)) then
+          l = mid - 1
+          return
+        end if
+      end if
+    end if
+    ! invariant t(lo) <= u < t(hi)
     do while (hi - lo > 1)
       mid = (lo + hi)/2
       if (u >= t(mid)) then
@@ -345,7 +384,6 @@ contains
       end if
     end do
     l = lo
-    if (u >= t(hi)) l = hi
   end function find_interval
 
   !> The parameter mapped into the domain: clamped for open curves (as FITPACK's
@@ -374,45 +412,123 @@ contains
     real(wp), intent(in) :: u
     real(wp), intent(out) :: derivatives(:, 0:)
     integer, intent(in) :: nd
-    real(wp) :: v(max_dimension, max_degree + 1), basis(max_degree + 1, 0:max_degree), hh(max_degree + 1)
-    real(wp) :: x, f, ak, fac
-    integer :: k, k1, l, lk, d, i, j, jd, li, lj, idim
-    derivatives = 0
-    if (.not. allocated(self%knots)) return
-    k = self%degree
-    k1 = k + 1
-    idim = min(self%dimension, size(derivatives, 1))
-    x = in_domain(self, u)
-    l = find_interval(self%knots, k, x)
-    lk = l - k1
-    if (k == 5 .and. idim == 3) then
-      ! the common case (a fitted quintic centerline in space): the same
-      ! arithmetic with loop bounds the compiler knows
-      call quintic_in_space(self%knots, self%coefficients, l, x, min(nd, k, ubound(derivatives, 2)), derivatives)
+    real(wp) :: x
+    integer :: l, idim, k, top
+    if (.not. allocated(self%knots)) then
+      derivatives = 0
       return
     end if
+    k = self%degree
+    idim = min(self%dimension, size(derivatives, 1))
+    top = max(-1, min(nd, k, ubound(derivatives, 2)))
+    x = in_domain(self, u)
+    l = find_interval(self%knots, k, x)
+    if (k == 5 .and. idim == 3) then
+      call quintic_in_space(self%taylor(:, :, l), x - self%knots(l), top, derivatives)
+    else
+      call taylor_shift(self%taylor(:, :, l), k, idim, x - self%knots(l), top, derivatives)
+    end if
+    ! what was not formed: orders above top, coordinates above the curve's
+    if (ubound(derivatives, 2) > top) derivatives(:, top + 1:) = 0
+    if (size(derivatives, 1) > idim) derivatives(idim + 1:, 0:top) = 0
+  end subroutine evaluate
+
+  !> derivatives(i, m), m = 0..top, i = 1..idim, of the polynomials with
+  !> Taylor coefficients a(0:k, i) about 0, at h: repeated synthetic division
+  !> (Horner), after pass m b(m) = p^(m)(h)/m!.
+  pure subroutine taylor_shift(a, k, idim, h, top, derivatives)
+    real(wp), intent(in) :: a(0:, :), h
+    integer, intent(in) :: k, idim, top
+    real(wp), intent(inout) :: derivatives(:, 0:)
+    real(wp) :: b(0:max_degree)
+    integer :: i, j, m
+    do i = 1, idim
+      b(0:k) = a(0:k, i)
+      do m = 0, top
+        do j = k - 1, m, -1
+          b(j) = b(j) + h*b(j + 1)
+        end do
+        derivatives(i, m) = factorial(m)*b(m)
+      end do
+    end do
+  end subroutine taylor_shift
+
+  !> taylor_shift for degree 5 and 3 coordinates (a fitted quintic
+  !> centerline in space, the common case): the same operations in the same
+  !> order, in scalars.
+  pure subroutine quintic_in_space(a, h, top, derivatives)
+    real(wp), intent(in) :: a(0:5, 3), h
+    integer, intent(in) :: top
+    real(wp), intent(inout) :: derivatives(:, 0:)
+    real(wp) :: b0, b1, b2, b3, b4, b5
+    integer :: i
+    if (top < 0) return
+    do i = 1, 3
+      b0 = a(0, i)
+      b1 = a(1, i)
+      b2 = a(2, i)
+      b3 = a(3, i)
+      b4 = a(4, i)
+      b5 = a(5, i)
+      b4 = b4 + h*b5
+      b3 = b3 + h*b4
+      b2 = b2 + h*b3
+      b1 = b1 + h*b2
+      derivatives(i, 0) = b0 + h*b1
+      if (top < 1) cycle
+      b4 = b4 + h*b5
+      b3 = b3 + h*b4
+      b2 = b2 + h*b3
+      derivatives(i, 1) = b1 + h*b2
+      if (top < 2) cycle
+      b4 = b4 + h*b5
+      b3 = b3 + h*b4
+      derivatives(i, 2) = factorial(2)*(b2 + h*b3)
+      if (top < 3) cycle
+      b4 = b4 + h*b5
+      derivatives(i, 3) = factorial(3)*(b3 + h*b4)
+      if (top < 4) cycle
+      derivatives(i, 4) = factorial(4)*(b4 + h*b5)
+      if (top < 5) cycle
+      derivatives(i, 5) = factorial(5)*b5
+    end do
+  end subroutine quintic_in_space
+
+  !> The Cox-de Boor triangle (thesis 2.35) and de Boor's difference formula
+  !> for the derivatives: d(1:dim, jd) = r^(jd)(x), jd = 0..k, with x in knot
+  !> span l. Builds the Taylor table (evaluate itself reads the table).
+  pure subroutine de_boor(self, l, x, d)
+    type(spline_curve_t), intent(in) :: self
+    integer, intent(in) :: l
+    real(wp), intent(in) :: x
+    real(wp), intent(out) :: d(:, 0:)
+    real(wp) :: v(max_dimension, max_degree + 1), basis(max_degree + 1, 0:max_degree), hh(max_degree + 1)
+    real(wp) :: f, ak, fac
+    integer :: k, k1, lk, dg, i, j, jd, li, lj, idim
+    k = self%degree
+    k1 = k + 1
+    idim = self%dimension
+    lk = l - k1
     associate (t => self%knots)
-      ! Cox-de Boor triangle: basis(1..d+1, d) are the degree-d B-splines at x (thesis 2.35)
       basis(1, 0) = 1
-      do d = 1, k
-        hh(1:d) = basis(1:d, d - 1)
-        basis(1, d) = 0
-        do i = 1, d
+      do dg = 1, k
+        hh(1:dg) = basis(1:dg, dg - 1)
+        basis(1, dg) = 0
+        do i = 1, dg
           li = l + i
-          lj = li - d
+          lj = li - dg
           if (t(li) == t(lj)) then
-            basis(i + 1, d) = 0
+            basis(i + 1, dg) = 0
           else
             f = hh(i)/(t(li) - t(lj))
-            basis(i, d) = basis(i, d) + f*(t(li) - x)
-            basis(i + 1, d) = f*(x - t(lj))
+            basis(i, dg) = basis(i, dg) + f*(t(li) - x)
+            basis(i + 1, dg) = f*(x - t(lj))
           end if
         end do
       end do
       v(1:idim, 1:k1) = self%coefficients(1:idim, lk + 1:lk + k1)
-      do jd = 0, min(nd, k, ubound(derivatives, 2))
+      do jd = 0, k
         if (jd > 0) then
-          ! coefficients of the jd-th derivative (de Boor's difference formula)
           ak = k - jd + 1
           do i = 1, k1 - jd
             fac = t(lk + i + k1) - t(lk + i + jd)
@@ -422,68 +538,47 @@ contains
           end do
         end if
         do j = 1, idim
-          derivatives(j, jd) = sum(v(j, 1:k1 - jd)*basis(1:k1 - jd, k - jd))
+          d(j, jd) = sum(v(j, 1:k1 - jd)*basis(1:k1 - jd, k - jd))
         end do
       end do
     end associate
-  end subroutine evaluate
+  end subroutine de_boor
 
-  !> evaluate for degree 5 and 3 coordinates: derivatives(1:3, 0:top) at x
-  !> in knot interval l (the same operations in the same order as the
-  !> general loop in evaluate, so the results are identical).
-  pure subroutine quintic_in_space(t, coefficients, l, x, top, derivatives)
-    real(wp), intent(in) :: t(:), coefficients(:, :), x
-    integer, intent(in) :: l, top
-    real(wp), intent(inout) :: derivatives(:, 0:)
-    integer, parameter :: k = 5, k1 = 6
-    real(wp) :: v(3, k1), basis(k1, 0:k), hh(k1), f, ak, fac
-    integer :: d, i, li, lj, jd, lk
-    lk = l - k1
-    basis(1, 0) = 1
-    do d = 1, k
-      hh(1:d) = basis(1:d, d - 1)
-      basis(1, d) = 0
-      do i = 1, d
-        li = l + i
-        lj = li - d
-        if (t(li) == t(lj)) then
-          basis(i + 1, d) = 0
-        else
-          f = hh(i)/(t(li) - t(lj))
-          basis(i, d) = basis(i, d) + f*(t(li) - x)
-          basis(i + 1, d) = f*(x - t(lj))
-        end if
-      end do
-    end do
-    v = coefficients(1:3, lk + 1:lk + k1)
-    do jd = 0, top
-      if (jd > 0) then
-        ak = k - jd + 1
-        do i = 1, k1 - jd
-          fac = t(lk + i + k1) - t(lk + i + jd)
-          if (fac > 0) then
-            v(:, i) = ak*(v(:, i + 1) - v(:, i))/fac
-          end if
-        end do
-      end if
-      derivatives(1, jd) = sum(v(1, 1:k1 - jd)*basis(1:k1 - jd, k - jd))
-      derivatives(2, jd) = sum(v(2, 1:k1 - jd)*basis(1:k1 - jd, k - jd))
-      derivatives(3, jd) = sum(v(3, 1:k1 - jd)*basis(1:k1 - jd, k - jd))
-    end do
-  end subroutine quintic_in_space
-
-  !> |r'(x)| (one coordinate sum), for the arc-length integrand.
-  pure real(wp) function speed(self, x) result(sp)
+  !> |r'(x)| for x in knot span l (Horner on the derivative), the arc-length integrand.
+  pure real(wp) function span_speed(self, l, x) result(sp)
     class(spline_curve_t), intent(in) :: self
+    integer, intent(in) :: l
     real(wp), intent(in) :: x
-    real(wp) :: d(max_dimension, 0:1)
-    call self%evaluate(x, d, 1)
-    sp = norm2(d(1:self%dimension, 1))
-  end function speed
+    real(wp) :: h, r
+    integer :: i, j, k
+    k = self%degree
+    h = x - self%knots(l)
+    if (k == 5 .and. self%dimension == 3) then
+      sp = sqrt(sum(quintic_velocity(self%taylor(:, :, l), h)**2))
+      return
+    end if
+    sp = 0
+    do i = 1, self%dimension
+      r = k*self%taylor(k, i, l)
+      do j = k - 1, 1, -1
+        r = j*self%taylor(j, i, l) + h*r
+      end do
+      sp = sp + r*r
+    end do
+    sp = sqrt(sp)
+  end function span_speed
 
-  !> Arc length from a to b inside one knot span (10-point Gauss-Legendre).
-  pure real(wp) function span_length(self, a, b) result(s)
+  !> r'(h) of a quintic in space with Taylor coefficients a about 0.
+  pure function quintic_velocity(a, h) result(r)
+    real(wp), intent(in) :: a(0:5, 3), h
+    real(wp) :: r(3)
+    r = a(1, :) + h*(2*a(2, :) + h*(3*a(3, :) + h*(4*a(4, :) + h*(5*a(5, :)))))
+  end function quintic_velocity
+
+  !> Arc length from a to b inside knot span l (10-point Gauss-Legendre).
+  pure real(wp) function span_length(self, l, a, b) result(s)
     class(spline_curve_t), intent(in) :: self
+    integer, intent(in) :: l
     real(wp), intent(in) :: a, b
     real(wp) :: mid, half
     integer :: i
@@ -491,25 +586,38 @@ contains
     half = 0.5_wp*(b - a)
     s = 0
     do i = 1, 5
-      s = s + gl_w(i)*(speed(self, mid - half*gl_x(i)) + speed(self, mid + half*gl_x(i)))
+      s = s + gl_w(i)*(span_speed(self, l, mid - half*gl_x(i)) + span_speed(self, l, mid + half*gl_x(i)))
     end do
     s = s*half
   end function span_length
 
-  subroutine tabulate_length(self)
+  !> The Taylor table of every non-empty knot span and the arc length at the knots.
+  subroutine tabulate(self)
     type(spline_curve_t), intent(inout) :: self
-    integer :: k, n, l
+    real(wp) :: d(max_dimension, 0:max_degree)
+    integer :: k, n, l, j
     k = self%degree
     n = size(self%knots)
+    if (allocated(self%taylor)) deallocate (self%taylor)
+    allocate (self%taylor(0:k, self%dimension, k + 1:n - k - 1))
+    self%taylor = 0
+    do l = k + 1, n - k - 1
+      if (self%knots(l + 1) > self%knots(l)) then
+        call de_boor(self, l, self%knots(l), d)
+        do j = 0, k
+          self%taylor(j, :, l) = d(1:self%dimension, j)/factorial(j)
+        end do
+      end if
+    end do
     if (allocated(self%cumulative)) deallocate (self%cumulative)
     allocate (self%cumulative(k + 1:n - k))
     self%cumulative(k + 1) = 0
     do l = k + 1, n - k - 1
       self%cumulative(l + 1) = self%cumulative(l)
       if (self%knots(l + 1) > self%knots(l)) &
-        self%cumulative(l + 1) = self%cumulative(l) + span_length(self, self%knots(l), self%knots(l + 1))
+        self%cumulative(l + 1) = self%cumulative(l) + span_length(self, l, self%knots(l), self%knots(l + 1))
     end do
-  end subroutine tabulate_length
+  end subroutine tabulate
 
   !> Arc length from the start of the domain to u (for a closed curve, u may
   !> lie outside one period: whole periods count once each; open curves clamp u).
@@ -525,7 +633,7 @@ contains
     b = self%knots(size(self%knots) - k)
     x = in_domain(self, u)
     l = find_interval(self%knots, k, x)
-    s = self%cumulative(l) + span_length(self, self%knots(l), x)
+    s = self%cumulative(l) + span_length(self, l, self%knots(l), x)
     if (self%periodic) s = s + floor((u - a)/(b - a))*self%total_length()
   end function arc_length
 
@@ -580,14 +688,14 @@ contains
     u = lo + (hi - lo)*target/max(self%cumulative(l + 1) - self%cumulative(l), tiny(1.0_wp))
     u = min(max(u, lo), hi)
     do it = 1, 60
-      g = span_length(self, start, u) - target
+      g = span_length(self, l, start, u) - target
       if (abs(g) <= 4*epsilon(1.0_wp)*total) exit
       if (g > 0) then
         hi = u
       else
         lo = u
       end if
-      dg = speed(self, u)
+      dg = span_speed(self, l, u)
       if (dg > 0) then
         u = u - g/dg
       else
