@@ -4,6 +4,13 @@
 !> optionally periodic in u and/or v). One call evaluates the value and all
 !> partial derivatives up to third order, without allocation.
 !>
+!> Evaluation runs on a table made once per fit: on each patch
+!> [tu(i), tu(i+1)) x [tv(j), tv(j+1)) the surface is one polynomial of
+!> degrees ku, kv, stored as its Taylor coefficients about the patch's lower
+!> corner, d^(r+s) s / du^r dv^s / (r! s!) (from the B-splines' derivatives
+!> there). A point then costs the knot searches and Taylor shifts (Horner):
+!> first along u for each power of v, then along v; no divisions.
+!>
 !> Fitting translates FITPACK's ier in one place (ier_status) into status_t;
 !> least-squares polynomials (ier = -2), interpolants (-1) and rank-deficient
 !> minimum-norm solutions (ier < -2) are accepted fits.
@@ -18,6 +25,7 @@ module numerics_spline_surface
   public :: fit_scattered, fit_grid, fit_parametric
 
   integer, parameter :: max_degree = 5
+  real(wp), parameter :: factorial(0:max_degree) = [1, 1, 2, 6, 24, 120]
 
   !> Value and partial derivatives at one point. For a scalar surface only the
   !> first component is used (f(1) = z, fu(1) = dz/dx, ...); for a parametric
@@ -40,6 +48,9 @@ module numerics_spline_surface
     logical :: periodic(2) = .false.
     real(wp), allocatable :: tu(:), tv(:)
     real(wp), allocatable :: c(:, :, :)
+    !> taylor(r, s, l, i, j): the Taylor coefficients of component l on patch
+    !> [tu(i), tu(i+1)) x [tv(j), tv(j+1)), i = ku+1..nu-ku-1, j = kv+1..nv-kv-1
+    real(wp), allocatable :: taylor(:, :, :, :, :)
     real(wp) :: fp = 0
     integer :: ier = 0
   contains
@@ -257,8 +268,8 @@ contains
     type(spline_surface_eval_t), intent(out) :: p
     type(status_t), intent(out) :: status
     integer, intent(in), optional :: order
-    real(wp) :: du(0:3, max_degree + 1), dv(0:3, max_degree + 1), w(0:3, max_degree + 1), uu, vv
-    integer :: lu, lv, l, ku1, kv1, top
+    real(wp) :: g(0:3, 0:max_degree), uu, vv
+    integer :: lu, lv, l, top
     logical :: outside
     if (self%dim == 0) then
       call set_status(status, STATUS_INVALID_INPUT, 'spline surface: evaluated before a successful fit')
@@ -267,52 +278,41 @@ contains
     top = 3
     if (present(order)) top = max(0, min(3, order))
     p%dim = self%dim
-    ku1 = self%ku + 1
-    kv1 = self%kv + 1
     outside = .false.
     call locate(self%tu, self%ku, self%periodic(1), u, uu, lu, outside)
     call locate(self%tv, self%kv, self%periodic(2), v, vv, lv, outside)
-    call basis_derivatives(self%tu, self%ku, uu, lu, du, top)
-    call basis_derivatives(self%tv, self%kv, vv, lv, dv, top)
     do l = 1, self%dim
-      if (top == 3) then
-        call column_partials(self%c(:, :, l), ku1, lu - ku1, lv - kv1 + 1, lv, du, w)
-        call contract(kv1, w, 0, dv, l, p)
-      else
-        call column_partials_to(top, self%c(:, :, l), ku1, lu - ku1, lv - kv1 + 1, lv, du, w)
-        call contract_to(top, kv1, w, dv, l, p)
-      end if
+      call u_shift(self%taylor(:, :, l, lu, lv), self%ku, self%kv, uu - self%tu(lu), top, g)
+      call v_shift(g, self%kv, vv - self%tv(lv), top, l, p)
     end do
     if (outside) call set_status(status, STATUS_DOMAIN, &
       'spline surface: point outside the parameter domain, evaluated at the nearest boundary point')
   end subroutine evaluate
 
   !> evaluate() on the grid u(1..nu) x v(1..nv): p(i, j) at (u(i), v(j)),
-  !> equal to evaluate's result to the last bit (the same sums in the same
-  !> order). The B-splines and their derivatives are computed once per grid
-  !> line; the u-partials of the coefficient columns the grid touches once per
-  !> u line; per point only the v contraction remains (10 (kv+1) products per
-  !> component, only the dim components of the surface). Work tables are
-  !> allocated once per call. status as evaluate's, STATUS_DOMAIN if any point
-  !> lies outside. p is intent(inout) only so that the compiler does not
-  !> default-initialize every record before it is overwritten (a fifth of the
-  !> time on a 10^6-point grid): every component of every p(i, j) is written
-  !> (unused components zero), p is never read; on invalid input (unfitted
-  !> surface, wrong shape) p is left as it was.
+  !> equal to evaluate's result to the last bit (the same operations in the
+  !> same order). The Taylor shifts along u are made once per u line and
+  !> patch column the grid touches; per point only the shifts along v remain.
+  !> Work tables are allocated once per call. status as evaluate's,
+  !> STATUS_DOMAIN if any point lies outside. p is intent(inout) only so that
+  !> the compiler does not default-initialize every record before it is
+  !> overwritten (a fifth of the time on a 10^6-point grid): every component
+  !> of every p(i, j) is written (unused components zero), p is never read; on
+  !> invalid input (unfitted surface, wrong shape) p is left as it was.
   pure subroutine evaluate_grid(self, u, v, p, status)
     class(spline_surface_t), intent(in) :: self
     real(wp), intent(in) :: u(:), v(:)
     type(spline_surface_eval_t), intent(inout) :: p(:, :)
     type(status_t), intent(out) :: status
-    ! u lines per block: the u-partials of a block stay in cache while the
+    ! u lines per block: the u shifts of a block stay in cache while the
     ! block's points p(ib:ie, j) are written contiguously, j = 1..nv
     integer, parameter :: block = 16
-    real(wp), allocatable :: bv(:, :, :), w(:, :, :, :)
-    integer, allocatable :: lv(:), cols(:), lu(:)
+    real(wp), allocatable :: g(:, :, :, :, :), hv(:)
+    integer, allocatable :: lv(:), lu(:), spans(:)
     logical, allocatable :: used(:)
     type(spline_surface_eval_t) :: q
-    real(wp) :: du(0:3, max_degree + 1), dv(0:3, max_degree + 1), uu, vv
-    integer :: nu, nv, ncv, ku1, kv1, i, j, l, ib, ie, nb, n
+    real(wp) :: uu, vv, hu
+    integer :: nu, nv, i, j, l, ib, ie, nb, n, m
     logical :: outside
     if (self%dim == 0) then
       call set_status(status, STATUS_INVALID_INPUT, 'spline surface: evaluated before a successful fit')
@@ -326,31 +326,28 @@ contains
     end if
     if (nu == 0 .or. nv == 0) return
     outside = .false.
-    ku1 = self%ku + 1
-    kv1 = self%kv + 1
-    ncv = size(self%c, 2)
     nb = min(block, nu)
-    allocate (bv(0:3, kv1, nv), lv(nv), used(ncv), w(0:3, ncv, self%dim, nb), lu(nb))
-    ! v B-splines once per v line; the coefficient columns they touch
+    allocate (hv(nv), lv(nv), lu(nb), used(lbound(self%taylor, 5):ubound(self%taylor, 5)))
+    allocate (g(0:3, 0:max_degree, self%dim, lbound(self%taylor, 5):ubound(self%taylor, 5), nb))
+    ! the v knot spans once per v line, and which of them the grid touches
     used = .false.
     do j = 1, nv
       call locate(self%tv, self%kv, self%periodic(2), v(j), vv, lv(j), outside)
-      call basis_derivatives(self%tv, self%kv, vv, lv(j), dv)
-      bv(:, :, j) = dv(:, 1:kv1)
-      used(lv(j) - kv1 + 1:lv(j)) = .true.
+      hv(j) = vv - self%tv(lv(j))
+      used(lv(j)) = .true.
     end do
-    cols = pack([(j, j = 1, ncv)], used)
+    spans = pack([(j, j = lbound(used, 1), ubound(used, 1))], used)
     q%dim = self%dim       ! components above dim stay zero
     do ib = 1, nu, nb
       ie = min(nu, ib + nb - 1)
-      ! u B-splines once per u line, contracted with the used columns
+      ! the u shifts once per u line and touched patch column
       do i = ib, ie
         n = i - ib + 1
         call locate(self%tu, self%ku, self%periodic(1), u(i), uu, lu(n), outside)
-        call basis_derivatives(self%tu, self%ku, uu, lu(n), du)
-        do l = 1, self%dim
-          do j = 1, size(cols)
-            call column_partials(self%c(:, :, l), ku1, lu(n) - ku1, cols(j), cols(j), du, w(:, cols(j):, l, n))
+        hu = uu - self%tu(lu(n))
+        do m = 1, size(spans)
+          do l = 1, self%dim
+            call u_shift(self%taylor(:, :, l, lu(n), spans(m)), self%ku, self%kv, hu, 3, g(:, :, l, spans(m), n))
           end do
         end do
       end do
@@ -358,7 +355,7 @@ contains
         do i = ib, ie
           n = i - ib + 1
           do l = 1, self%dim
-            call contract(kv1, w(:, :, l, n), lv(j) - kv1, bv(:, :, j), l, q)
+            call v_shift(g(:, :, l, lv(j), n), self%kv, hv(j), 3, l, q)
           end do
           p(i, j) = q
         end do
@@ -533,145 +530,99 @@ contains
         end do
       end do
     end do
+    call tabulate(surf)
   end subroutine store
 
-  !> w(a, j - j1 + 1) = sum_i du(a, i) c(i0 + i, j), j = j1..j2: the u-partials
-  !> (order a = 0..3) of the coefficient columns j1..j2 at the u point whose
-  !> nonzero B-splines (with derivatives) are du(:, 1..ku1).
-  pure subroutine column_partials(c, ku1, i0, j1, j2, du, w)
-    real(wp), intent(in) :: c(:, :), du(0:3, max_degree + 1)
-    integer, intent(in) :: ku1, i0, j1, j2
-    real(wp), intent(inout) :: w(0:, :)
-    integer :: i, j
-    do j = j1, j2
-      w(:, j - j1 + 1) = 0
-      do i = 1, ku1
-        w(:, j - j1 + 1) = w(:, j - j1 + 1) + du(:, i)*c(i0 + i, j)
+  !> The Taylor table of every patch: the B-splines' derivatives (orders
+  !> 0..k) at the patch's lower corner contracted with the coefficients.
+  subroutine tabulate(surf)
+    type(spline_surface_t), intent(inout) :: surf
+    real(wp) :: du(0:max_degree, max_degree + 1), dv(0:max_degree, max_degree + 1), w(0:max_degree, max_degree + 1)
+    integer :: ku, kv, lu, lv, l, r, s, i, j
+    ku = surf%ku
+    kv = surf%kv
+    allocate (surf%taylor(0:ku, 0:kv, surf%dim, ku + 1:size(surf%tu) - ku - 1, kv + 1:size(surf%tv) - kv - 1))
+    surf%taylor = 0
+    do lv = kv + 1, size(surf%tv) - kv - 1
+      if (.not. surf%tv(lv + 1) > surf%tv(lv)) cycle
+      call basis_derivatives(surf%tv, kv, surf%tv(lv), lv, dv)
+      do lu = ku + 1, size(surf%tu) - ku - 1
+        if (.not. surf%tu(lu + 1) > surf%tu(lu)) cycle
+        call basis_derivatives(surf%tu, ku, surf%tu(lu), lu, du)
+        do l = 1, surf%dim
+          ! w(r, j): the r-th u-derivative of coefficient column j
+          do j = 1, kv + 1
+            do r = 0, ku
+              w(r, j) = sum(du(r, 1:ku + 1)*surf%c(lu - ku:lu, lv - kv - 1 + j, l))
+            end do
+          end do
+          do s = 0, kv
+            do r = 0, ku
+              surf%taylor(r, s, l, lu, lv) = sum(w(r, 1:kv + 1)*dv(s, 1:kv + 1))/(factorial(r)*factorial(s))
+            end do
+          end do
+        end do
       end do
     end do
-  end subroutine column_partials
+  end subroutine tabulate
 
-  !> Component l of the ten partials at one point: s(a, b) = sum_j w(a, j0 + j)
-  !> dv(b, j), j = 1..kv1, from the u-partials w of the coefficient columns
-  !> and the v B-splines dv (with derivatives) of the point.
-  pure subroutine contract(kv1, w, j0, dv, l, p)
-    integer, intent(in) :: kv1, j0, l
-    real(wp), intent(in) :: w(0:, :), dv(0:, :)
+  !> g(r, j) = (1/r!) d^r/du^r of the patch polynomial's coefficient of
+  !> (v - tv)^j at hu = u - tu, r = 0..top, j = 0..kv, from the patch's Taylor
+  !> coefficients a(0:ku, 0:kv): a Taylor shift (repeated synthetic division)
+  !> of each column; orders above ku are zero.
+  pure subroutine u_shift(a, ku, kv, hu, top, g)
+    real(wp), intent(in) :: a(0:, 0:), hu
+    integer, intent(in) :: ku, kv, top
+    real(wp), intent(inout) :: g(0:, 0:)
+    real(wp) :: b(0:max_degree)
+    integer :: j, m, i, mt
+    mt = min(top, ku)
+    do j = 0, kv
+      b(0:ku) = a(0:ku, j)
+      do m = 0, mt
+        do i = ku - 1, m, -1
+          b(i) = b(i) + hu*b(i + 1)
+        end do
+      end do
+      g(0:mt, j) = b(0:mt)
+      g(mt + 1:top, j) = 0
+    end do
+  end subroutine u_shift
+
+  !> Component l of the partials of total order 0..top at hv = v - tv from
+  !> the u-shifted columns g (u_shift): a Taylor shift along v of each row
+  !> g(r, :), times r! s!. The partials above top are left as they were.
+  pure subroutine v_shift(g, kv, hv, top, l, p)
+    real(wp), intent(in) :: g(0:, 0:), hv
+    integer, intent(in) :: kv, top, l
     type(spline_surface_eval_t), intent(inout) :: p
-    real(wp) :: s00, s10, s01, s20, s11, s02, s30, s21, s12, s03, w0, w1, w2, w3
-    integer :: j
-    s00 = 0
-    s10 = 0
-    s01 = 0
-    s20 = 0
-    s11 = 0
-    s02 = 0
-    s30 = 0
-    s21 = 0
-    s12 = 0
-    s03 = 0
-    do j = 1, kv1
-      w0 = w(0, j0 + j)
-      w1 = w(1, j0 + j)
-      w2 = w(2, j0 + j)
-      w3 = w(3, j0 + j)
-      s00 = s00 + w0*dv(0, j)
-      s01 = s01 + w0*dv(1, j)
-      s02 = s02 + w0*dv(2, j)
-      s03 = s03 + w0*dv(3, j)
-      s10 = s10 + w1*dv(0, j)
-      s11 = s11 + w1*dv(1, j)
-      s12 = s12 + w1*dv(2, j)
-      s20 = s20 + w2*dv(0, j)
-      s21 = s21 + w2*dv(1, j)
-      s30 = s30 + w3*dv(0, j)
+    real(wp) :: b(0:max_degree), d(0:3, 0:3)
+    integer :: r, m, i, mt
+    d = 0
+    do r = 0, top
+      b(0:kv) = g(r, 0:kv)
+      mt = min(top - r, kv)
+      do m = 0, mt
+        do i = kv - 1, m, -1
+          b(i) = b(i) + hv*b(i + 1)
+        end do
+        d(r, m) = (factorial(r)*factorial(m))*b(m)
+      end do
     end do
-    p%f(l) = s00
-    p%fu(l) = s10
-    p%fv(l) = s01
-    p%fuu(l) = s20
-    p%fuv(l) = s11
-    p%fvv(l) = s02
-    p%fuuu(l) = s30
-    p%fuuv(l) = s21
-    p%fuvv(l) = s12
-    p%fvvv(l) = s03
-  end subroutine contract
-
-  !> column_partials for the u-derivatives 0..top only (top < 3; the same
-  !> sums in the same order, in scalars: the hot position passes ask for top = 1).
-  pure subroutine column_partials_to(top, c, ku1, i0, j1, j2, du, w)
-    integer, intent(in) :: top, ku1, i0, j1, j2
-    real(wp), intent(in) :: c(:, :), du(0:3, max_degree + 1)
-    real(wp), intent(inout) :: w(0:, :)
-    real(wp) :: s0, s1, s2, cij
-    integer :: i, j
-    do j = j1, j2
-      s0 = 0; s1 = 0; s2 = 0
-      select case (top)
-      case (0)
-        do i = 1, ku1
-          s0 = s0 + du(0, i)*c(i0 + i, j)
-        end do
-      case (1)
-        do i = 1, ku1
-          cij = c(i0 + i, j)
-          s0 = s0 + du(0, i)*cij
-          s1 = s1 + du(1, i)*cij
-        end do
-      case default
-        do i = 1, ku1
-          cij = c(i0 + i, j)
-          s0 = s0 + du(0, i)*cij
-          s1 = s1 + du(1, i)*cij
-          s2 = s2 + du(2, i)*cij
-        end do
-      end select
-      w(0, j - j1 + 1) = s0
-      w(1, j - j1 + 1) = s1
-      w(2, j - j1 + 1) = s2
-    end do
-  end subroutine column_partials_to
-
-  !> contract for the partials of total order 0..top only (top < 3; the same
-  !> sums in the same order, the others left as they were).
-  pure subroutine contract_to(top, kv1, w, dv, l, p)
-    integer, intent(in) :: top, kv1, l
-    real(wp), intent(in) :: w(0:, :), dv(0:, :)
-    type(spline_surface_eval_t), intent(inout) :: p
-    real(wp) :: s00, s10, s01, s20, s11, s02
-    integer :: j
-    s00 = 0; s10 = 0; s01 = 0; s20 = 0; s11 = 0; s02 = 0
-    select case (top)
-    case (0)
-      do j = 1, kv1
-        s00 = s00 + w(0, j)*dv(0, j)
-      end do
-    case (1)
-      do j = 1, kv1
-        s00 = s00 + w(0, j)*dv(0, j)
-        s01 = s01 + w(0, j)*dv(1, j)
-        s10 = s10 + w(1, j)*dv(0, j)
-      end do
-    case default
-      do j = 1, kv1
-        s00 = s00 + w(0, j)*dv(0, j)
-        s01 = s01 + w(0, j)*dv(1, j)
-        s02 = s02 + w(0, j)*dv(2, j)
-        s10 = s10 + w(1, j)*dv(0, j)
-        s11 = s11 + w(1, j)*dv(1, j)
-        s20 = s20 + w(2, j)*dv(0, j)
-      end do
-    end select
-    p%f(l) = s00
+    p%f(l) = d(0, 0)
     if (top < 1) return
-    p%fu(l) = s10
-    p%fv(l) = s01
+    p%fu(l) = d(1, 0)
+    p%fv(l) = d(0, 1)
     if (top < 2) return
-    p%fuu(l) = s20
-    p%fuv(l) = s11
-    p%fvv(l) = s02
-  end subroutine contract_to
+    p%fuu(l) = d(2, 0)
+    p%fuv(l) = d(1, 1)
+    p%fvv(l) = d(0, 2)
+    if (top < 3) return
+    p%fuuu(l) = d(3, 0)
+    p%fuuv(l) = d(2, 1)
+    p%fuvv(l) = d(1, 2)
+    p%fvvv(l) = d(0, 3)
+  end subroutine v_shift
 
   !> Knot interval t(l) <= x' < t(l+1), k+1 <= l <= n-k-1, of x clamped to
   !> (or, periodic, wrapped into) [t(k+1), t(n-k)], by bisection.
@@ -709,9 +660,13 @@ contains
       end if
     end do
     l = lo
+    ! a multiple knot at the end of the domain: back to the span that ends there
+    do while (.not. t(l + 1) > t(l) .and. l > k + 1)
+      l = l - 1
+    end do
   end subroutine locate
 
-  !> d(r, i): r-th derivative (r = 0..3) of the k+1 B-splines of degree k that
+  !> d(r, i): r-th derivative (r = 0..k) of the k+1 B-splines of degree k that
   !> do not vanish on [t(l), t(l+1)), at x. The Cox-de Boor recurrence gives
   !> the values of degrees 0..k; the m-th derivative of degree k then follows
   !> from the values of degree k-m by m steps of
@@ -719,19 +674,16 @@ contains
   !> applied to the (m-1)-th derivatives of degree p-1 (de Boor, A Practical
   !> Guide to Splines, X.(12)). Every denominator is one of the k(k+1)/2 knot
   !> spans of the recurrence, each inverted once.
-  pure subroutine basis_derivatives(t, k, x, l, d, order)
+  pure subroutine basis_derivatives(t, k, x, l, d)
     real(wp), intent(in) :: t(:), x
     integer, intent(in) :: k, l
-    real(wp), intent(out) :: d(0:3, max_degree + 1)
-    integer, intent(in), optional :: order   ! derivatives up to this one (default 3), the others zero
+    real(wp), intent(out) :: d(0:max_degree, max_degree + 1)
     ! nd(r, p): the B-spline of degree p starting at knot l-p+r, r = 0..p;
     ! inv(p, r) = 1/(t(l+r+1) - t(l+r+1-p)), positive since the span holds
     ! [t(l), t(l+1)]
     real(wp) :: nd(0:max_degree, 0:max_degree), inv(max_degree, 0:max_degree - 1)
     real(wp) :: left(max_degree), right(max_degree), b(0:max_degree), q(0:max_degree - 1), saved, temp
-    integer :: j, r, m, p, top
-    top = 3
-    if (present(order)) top = order
+    integer :: j, r, m, p
     nd(0, 0) = 1
     do j = 1, k
       left(j) = x - t(l + 1 - j)
@@ -747,7 +699,7 @@ contains
     end do
     d = 0
     d(0, 1:k + 1) = nd(0:k, k)
-    do m = 1, min(top, k)
+    do m = 1, k
       ! b: the (p-k+m)-th derivatives of the B-splines of degree p
       b(0:k - m) = nd(0:k - m, k - m)
       do p = k - m + 1, k
