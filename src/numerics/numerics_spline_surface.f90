@@ -538,7 +538,7 @@ contains
   subroutine tabulate(surf)
     type(spline_surface_t), intent(inout) :: surf
     real(wp) :: du(0:max_degree, max_degree + 1), dv(0:max_degree, max_degree + 1), w(0:max_degree, max_degree + 1)
-    integer :: ku, kv, lu, lv, l, r, s, i, j
+    integer :: ku, kv, lu, lv, l, r, s, j
     ku = surf%ku
     kv = surf%kv
     allocate (surf%taylor(0:ku, 0:kv, surf%dim, ku + 1:size(surf%tu) - ku - 1, kv + 1:size(surf%tv) - kv - 1))
@@ -579,15 +579,53 @@ contains
     mt = min(top, ku)
     do j = 0, kv
       b(0:ku) = a(0:ku, j)
-      do m = 0, mt
-        do i = ku - 1, m, -1
-          b(i) = b(i) + hu*b(i + 1)
+      if (ku == 5) then
+        call quintic_shift(b, hu, mt)
+      else
+        do m = 0, mt
+          do i = ku - 1, m, -1
+            b(i) = b(i) + hu*b(i + 1)
+          end do
         end do
-      end do
+      end if
       g(0:mt, j) = b(0:mt)
       g(mt + 1:top, j) = 0
     end do
   end subroutine u_shift
+
+  !> The Taylor shift of u_shift and v_shift for degree 5 (the same
+  !> operations in the same order, in scalars): b(m) = p^(m)(h)/m!, m = 0..mt.
+  pure subroutine quintic_shift(b, h, mt)
+    real(wp), intent(inout) :: b(0:max_degree)
+    real(wp), intent(in) :: h
+    integer, intent(in) :: mt
+    real(wp) :: b0, b1, b2, b3, b4, b5
+    b0 = b(0)
+    b1 = b(1)
+    b2 = b(2)
+    b3 = b(3)
+    b4 = b(4)
+    b5 = b(5)
+    b4 = b4 + h*b5
+    b3 = b3 + h*b4
+    b2 = b2 + h*b3
+    b1 = b1 + h*b2
+    b(0) = b0 + h*b1
+    if (mt < 1) return
+    b4 = b4 + h*b5
+    b3 = b3 + h*b4
+    b2 = b2 + h*b3
+    b(1) = b1 + h*b2
+    if (mt < 2) return
+    b4 = b4 + h*b5
+    b3 = b3 + h*b4
+    b(2) = b2 + h*b3
+    if (mt < 3) return
+    b4 = b4 + h*b5
+    b(3) = b3 + h*b4
+    if (mt < 4) return
+    b(4) = b4 + h*b5
+  end subroutine quintic_shift
 
   !> Component l of the partials of total order 0..top at hv = v - tv from
   !> the u-shifted columns g (u_shift): a Taylor shift along v of each row
@@ -602,10 +640,16 @@ contains
     do r = 0, top
       b(0:kv) = g(r, 0:kv)
       mt = min(top - r, kv)
-      do m = 0, mt
-        do i = kv - 1, m, -1
-          b(i) = b(i) + hv*b(i + 1)
+      if (kv == 5) then
+        call quintic_shift(b, hv, mt)
+      else
+        do m = 0, mt
+          do i = kv - 1, m, -1
+            b(i) = b(i) + hv*b(i + 1)
+          end do
         end do
+      end if
+      do m = 0, mt
         d(r, m) = (factorial(r)*factorial(m))*b(m)
       end do
     end do

@@ -14,6 +14,7 @@ program test_spline_curve_reference
   use base_constants, only: two_pi
   use base_status, only: status_t
   use numerics_spline_curve, only: spline_curve_t
+  use bspline_reference, only: bspline, span_of
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
 
@@ -33,36 +34,6 @@ program test_spline_curve_reference
   call finish_tests('test_spline_curve_reference')
 
 contains
-
-  !> m-th derivative of the B-spline B(i, p) (knots t(i..i+p+1)) at x in the
-  !> non-empty knot span l (degree 0: the indicator of span l).
-  recursive pure real(wp) function bspline(t, i, p, m, l, x) result(b)
-    real(wp), intent(in) :: t(:), x
-    integer, intent(in) :: i, p, m, l
-    b = 0
-    if (p == 0) then
-      if (i == l .and. m == 0) b = 1
-      return
-    end if
-    if (m == 0) then
-      if (t(i + p) > t(i)) b = b + (x - t(i))/(t(i + p) - t(i))*bspline(t, i, p - 1, 0, l, x)
-      if (t(i + p + 1) > t(i + 1)) b = b + (t(i + p + 1) - x)/(t(i + p + 1) - t(i + 1))*bspline(t, i + 1, p - 1, 0, l, x)
-    else
-      if (t(i + p) > t(i)) b = b + p*bspline(t, i, p - 1, m - 1, l, x)/(t(i + p) - t(i))
-      if (t(i + p + 1) > t(i + 1)) b = b - p*bspline(t, i + 1, p - 1, m - 1, l, x)/(t(i + p + 1) - t(i + 1))
-    end if
-  end function bspline
-
-  !> The last non-empty knot span l (k+1 <= l <= n-k-1) with t(l) <= x, by a linear search.
-  pure integer function span_of(t, k, x) result(l)
-    real(wp), intent(in) :: t(:), x
-    integer, intent(in) :: k
-    integer :: j
-    l = k + 1
-    do j = k + 1, size(t) - k - 1
-      if (t(j) <= x .and. t(j + 1) > t(j)) l = j
-    end do
-  end function span_of
 
   !> The reference r^(m)(x) and its rounding scale sum_i |c_i| |B_i^(m)(x)| for x in the domain.
   subroutine reference(t, c, k, x, m, r, scale)
@@ -303,6 +274,7 @@ contains
     end do
   end function reference_length
 
+  !> Insertion sort (keeps repeated knots, unlike base_sorting's unique_sorted).
   pure subroutine sort(x)
     real(wp), intent(inout) :: x(:)
     real(wp) :: y

@@ -12,6 +12,7 @@ program test_spline_surface_reference
   use base_status, only: status_t
   use numerics_spline_surface, only: spline_surface_t, spline_surface_eval_t, fit_grid, fit_scattered, &
     fit_parametric
+  use bspline_reference, only: bspline, span_of
   use testing, only: check, finish_tests
   implicit none (type, external)
 
@@ -30,36 +31,6 @@ program test_spline_surface_reference
   call finish_tests('test_spline_surface_reference')
 
 contains
-
-  !> m-th derivative of the B-spline B(i, p) (knots t(i..i+p+1)) at x in the
-  !> non-empty knot span l (degree 0: the indicator of span l).
-  recursive pure real(wp) function bspline(t, i, p, m, l, x) result(b)
-    real(wp), intent(in) :: t(:), x
-    integer, intent(in) :: i, p, m, l
-    b = 0
-    if (p == 0) then
-      if (i == l .and. m == 0) b = 1
-      return
-    end if
-    if (m == 0) then
-      if (t(i + p) > t(i)) b = b + (x - t(i))/(t(i + p) - t(i))*bspline(t, i, p - 1, 0, l, x)
-      if (t(i + p + 1) > t(i + 1)) b = b + (t(i + p + 1) - x)/(t(i + p + 1) - t(i + 1))*bspline(t, i + 1, p - 1, 0, l, x)
-    else
-      if (t(i + p) > t(i)) b = b + p*bspline(t, i, p - 1, m - 1, l, x)/(t(i + p) - t(i))
-      if (t(i + p + 1) > t(i + 1)) b = b - p*bspline(t, i + 1, p - 1, m - 1, l, x)/(t(i + p + 1) - t(i + 1))
-    end if
-  end function bspline
-
-  !> The last non-empty knot span l (k+1 <= l <= n-k-1) with t(l) <= x, by a linear search.
-  pure integer function span_of(t, k, x) result(l)
-    real(wp), intent(in) :: t(:), x
-    integer, intent(in) :: k
-    integer :: j
-    l = k + 1
-    do j = k + 1, size(t) - k - 1
-      if (t(j) <= x .and. t(j + 1) > t(j)) l = j
-    end do
-  end function span_of
 
   pure real(wp) function partial(p, a, b, l)
     type(spline_surface_eval_t), intent(in) :: p
