@@ -34,7 +34,7 @@ module kinetostatics_closure_blocks
   implicit none (type, external)
   private
   public :: closure_blocks_t, dense_block_t, element_reach_t, build_closure_blocks, find_element_links, &
-    reach_of
+    reach_of, downstream_of
 
   !> One block: its members (positions in x and in the rows, ascending: the
   !> dependent coordinates and closure rows first), J_x's block and its LU, and
@@ -117,6 +117,34 @@ contains
     reach%frame_in_start(n + 1) = size(reach%frame_in) + 1
     reach%scalar_in_start(n + 1) = size(reach%scalar_in) + 1
   end subroutine find_element_links
+
+  !> The elements whose position maps read, directly or through other
+  !> elements, one of the scalars `sources`, in pass order: after only those
+  !> scalars changed, these are the elements whose outputs can change (the
+  !> plain data flow of the links, without the rigid-motion shortcuts of
+  !> reach_of, which hold for rates only). Every element when a link is unknown.
+  function downstream_of(reach, sources, n_frames, n_scalars, n_elements) result(list)
+    type(element_reach_t), intent(in) :: reach
+    integer, intent(in) :: sources(:), n_frames, n_scalars, n_elements
+    integer, allocatable :: list(:)
+    logical :: frame_changed(n_frames), scalar_changed(n_scalars), runs(n_elements)
+    integer :: e
+    if (.not. reach%known) then
+      list = [(e, e = 1, n_elements)]
+      return
+    end if
+    frame_changed = .false.
+    scalar_changed = .false.
+    scalar_changed(sources) = .true.
+    do e = 1, n_elements
+      runs(e) = any(frame_changed(reach%frame_in(reach%frame_in_start(e):reach%frame_in_start(e + 1) - 1))) .or. &
+                any(scalar_changed(reach%scalar_in(reach%scalar_in_start(e):reach%scalar_in_start(e + 1) - 1)))
+      if (.not. runs(e)) cycle
+      frame_changed(reach%frame_out(reach%frame_out_start(e):reach%frame_out_start(e + 1) - 1)) = .true.
+      scalar_changed(reach%scalar_out(reach%scalar_out_start(e):reach%scalar_out_start(e + 1) - 1)) = .true.
+    end do
+    list = pack([(e, e = 1, n_elements)], runs)
+  end function downstream_of
 
   !> The structural sweep of a unit rate of the scalars `sources` (module
   !> comment): moving(s) for every scalar that moves, live(e) for every

@@ -86,7 +86,7 @@ module kinetostatics_mechanism
     NORMAL_CUT_FORCE
   use kinetostatics_force_law, only: force_law_t, force_law_box_t
   use kinetostatics_closure_blocks, only: closure_blocks_t, element_reach_t, build_closure_blocks, &
-    find_element_links
+    find_element_links, downstream_of
   implicit none (type, external)
   private
   public :: mechanism_t, loop_t, rate_constraint_t, surface_edge_t
@@ -176,6 +176,7 @@ module kinetostatics_mechanism
     logical :: blocked = .true.
     type(element_reach_t) :: reach
     type(closure_blocks_t) :: blocks
+    integer, allocatable :: beta_pass(:)   ! the elements the dependent coordinates reach (downstream_of)
     integer, allocatable :: unknowns(:), rows(:)   ! scalars of x = [beta; sigma] and of the rows [g; c]
     ! work arrays
     real(wp), allocatable :: work_r(:), gq(:)
@@ -542,6 +543,11 @@ contains
       group_start(g) = group_start(g - 1) + size(self%rate_constraints(k)%dependents)
     end do
     call find_element_links(self%elements, self%n_frames, self%n_scalars, self%reach)
+    if (self%blocked) then
+      self%beta_pass = downstream_of(self%reach, self%beta, self%n_frames, self%n_scalars, self%n_elements)
+    else
+      self%beta_pass = [(k, k = 1, self%n_elements)]
+    end if
     call build_closure_blocks(self%blocks, self%elements, self%reach, self%n_frames, self%n_scalars, &
                               self%unknowns, self%rows, self%r, group_start, self%blocked)
     scaled = .false.
@@ -764,6 +770,31 @@ contains
     end do
   end subroutine mechanism_residual
 
+  !> The closure residual after only beta changed since the last position
+  !> pass (the Newton iterates of set_positions): the position maps of the
+  !> elements beta reaches; the others' inputs and so their outputs are
+  !> unchanged (for the rider: the pelvis's surface joint is not evaluated
+  !> again). Same values to the bit as mechanism_residual.
+  subroutine beta_residual(self, x, f, status)
+    class(mechanism_t), intent(inout) :: self
+    real(wp), intent(in) :: x(:)
+    real(wp), intent(out) :: f(:)
+    type(status_t), intent(inout) :: status
+    integer :: k
+    do k = 1, self%r
+      self%scalars(self%beta(k))%q = x(k)
+    end do
+    f = 0
+    self%dynamics_known = .false.
+    do k = 1, size(self%beta_pass)
+      call self%elements(self%beta_pass(k))%e%position(self%frames, self%scalars, status)
+      if (.not. status%ok()) return
+    end do
+    do k = 1, self%r
+      f(k) = self%scalars(self%closure(k))%q - self%target(k)
+    end do
+  end subroutine beta_residual
+
   subroutine mechanism_jacobian(self, x, jac, status)
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: x(:)
@@ -927,7 +958,12 @@ contains
     last = huge(1.0_wp)
     fresh = 0
     do it = 1, 10
-      call self%residual(x, res, status)
+      ! the first pass at the new q over every element, then only beta changes
+      if (it == 1) then
+        call self%residual(x, res, status)
+      else
+        call beta_residual(self, x, res, status)
+      end if
       if (.not. status%ok()) then
         if (status%code == STATUS_DOMAIN .and. self%warm) return   ! see the module comment
         exit
@@ -957,7 +993,7 @@ contains
     end do
     if (.not. converged) then
       if (status%ok()) then
-        call self%residual(x, res, status)
+        call beta_residual(self, x, res, status)
         converged = status%ok() .and. maxval(abs(res)) <= self%closure_tolerance
       end if
     end if
