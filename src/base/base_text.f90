@@ -2,6 +2,7 @@
 !> exactly, so a message shows the value as the user typed it.
 module base_text
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
+  use, intrinsic :: iso_fortran_env, only: int64
   use base_kinds, only: wp
   implicit none (type, external)
   private
@@ -14,8 +15,7 @@ contains
     real(wp), intent(in) :: x
     character(len=:), allocatable :: text
     character(len=40) :: buffer
-    real(wp) :: back
-    integer :: digits, ios, e
+    integer :: digits, e, low, high
     if (ieee_is_nan(x)) then
       text = 'NaN'
       return
@@ -24,18 +24,39 @@ contains
       text = trim(adjustl(text))
       return
     end if
-    do digits = 1, 17
-      write (buffer, '(es40.' // digit_text(digits - 1) // ')') x
-      read (buffer, *, iostat=ios) back
-      if (ios == 0 .and. back == x) exit
-    end do
+    ! The fewest significant digits (1 to 17; 17 always read back) by
+    ! bisection: correctly rounded to d + 1 digits is at least as close to x
+    ! as to d digits, and the interval that reads back as x is symmetric
+    ! about x unless x is a power of two, so "reads back" holds from the
+    ! fewest digits on. A power of two (its interval below is half the one
+    ! above) is searched digit by digit.
+    if (fraction(abs(x)) == 0.5_wp) then
+      do digits = 1, 17
+        call write_digits(x, digits, buffer)
+        if (reads_back(buffer, x)) exit
+      end do
+    else
+      low = 0    ! fewer digits than the fewest that read back
+      high = 17  ! reads back
+      do while (high - low > 1)
+        digits = (low + high)/2
+        call write_digits(x, digits, buffer)
+        if (reads_back(buffer, x)) then
+          high = digits
+        else
+          low = digits
+        end if
+      end do
+      if (digits /= high) call write_digits(x, high, buffer)
+      digits = high
+    end if
     text = trim(adjustl(buffer))
     e = index(text, '.E')
     if (e > 0) text = text(:e)//'0'//text(e + 1:)   ! 1.E-14 -> 1.0E-14
     ! Plain notation for moderate magnitudes: 2.5E+00 -> 2.5, 1.0E-03 stays.
     e = exponent10(x)
     if (e >= -3 .and. e <= 6) then
-      write (buffer, '(f40.' // digit_text(max(digits - 1 - e, 1)) // ')') x
+      write (buffer, '(f40.' // format_integer(max(digits - 1 - e, 1)) // ')') x
       text = trim(adjustl(buffer))
       do while (len(text) > 2 .and. text(len(text):len(text)) == '0' .and. &
                 text(len(text) - 1:len(text) - 1) /= '.')
@@ -43,6 +64,23 @@ contains
       end do
     end if
   end function format_real
+
+  !> x in exponent form with `digits` significant digits.
+  pure subroutine write_digits(x, digits, buffer)
+    real(wp), intent(in) :: x
+    integer, intent(in) :: digits
+    character(len=*), intent(out) :: buffer
+    write (buffer, '(es40.' // format_integer(digits - 1) // ')') x
+  end subroutine write_digits
+
+  pure logical function reads_back(buffer, x)
+    character(len=*), intent(in) :: buffer
+    real(wp), intent(in) :: x
+    real(wp) :: back
+    integer :: ios
+    read (buffer, *, iostat=ios) back
+    reads_back = ios == 0 .and. back == x
+  end function reads_back
 
   pure integer function exponent10(x)
     real(wp), intent(in) :: x
@@ -52,14 +90,6 @@ contains
       exponent10 = floor(log10(abs(x)))
     end if
   end function exponent10
-
-  pure function digit_text(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=8) :: buffer
-    write (buffer, '(i0)') i
-    text = trim(buffer)
-  end function digit_text
 
   pure function format_vector(x) result(text)
     real(wp), intent(in) :: x(:)
@@ -114,8 +144,22 @@ contains
   pure function format_integer(i) result(text)
     integer, intent(in) :: i
     character(len=:), allocatable :: text
-    character(len=16) :: buffer
-    write (buffer, '(i0)') i
-    text = trim(buffer)
+    character(len=20) :: buffer
+    integer(int64) :: rest
+    integer :: first
+    ! digits by division (an internal write costs ~20 times as much)
+    rest = abs(int(i, int64))
+    first = len(buffer) + 1
+    do
+      first = first - 1
+      buffer(first:first) = achar(iachar('0') + int(mod(rest, 10_int64)))
+      rest = rest/10
+      if (rest == 0) exit
+    end do
+    if (i < 0) then
+      first = first - 1
+      buffer(first:first) = '-'
+    end if
+    text = buffer(first:)
   end function format_integer
 end module base_text

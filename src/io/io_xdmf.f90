@@ -36,6 +36,11 @@ module io_xdmf
     procedure :: attach => xdmf_attach
   end type xdmf_t
 
+  !> The text of one row of a dataset, without the row index between head and tail.
+  type :: row_text_t
+    character(len=:), allocatable :: head, tail
+  end type row_text_t
+
 contains
 
   !> The XDMF file next to a result: `<name>.xmf` for `<name>.h5`, else the
@@ -154,6 +159,8 @@ contains
   !> one point per dataset in `points` (each of shape (n, 3)), joined by a
   !> polyline when `connect`. No node fields: ParaView's XDMF 2 reader fails
   !> to parse a JOIN of one-value hyperslabs (their values are on the paths).
+  !> The text that does not change from step to step is made once (a step
+  !> differs only in its time and row index).
   subroutine xdmf_moving_points(self, file, name, time, points, connect)
     class(xdmf_t), intent(inout) :: self
     type(result_file_t), intent(in) :: file
@@ -162,7 +169,8 @@ contains
     character(len=*), intent(in) :: points(:)
     logical, intent(in) :: connect
     integer :: n, stride, i, k, m
-    character(len=:), allocatable :: join
+    character(len=:), allocatable :: join, grid, topology
+    type(row_text_t), allocatable :: rows(:)
     n = size(time)
     m = size(points)
     if (n < 1 .or. m < 1) return
@@ -172,20 +180,32 @@ contains
       join = join//' ; $'//format_integer(k)
     end do
     join = join//')'
+    grid = '  <Grid Name="'//escaped(name)//'" GridType="Uniform">'
+    if (connect .and. m > 1) then
+      topology = '    <Topology TopologyType="Polyline" NodesPerElement="'//format_integer(m)//'" NumberOfElements="1"/>'
+    else
+      topology = '    <Topology TopologyType="Polyvertex" NodesPerElement="1" NumberOfElements="'// &
+                 format_integer(m)//'"/>'
+    end if
+    ! row k of a step: its head, the row index, its tail (one dataset: the row
+    ! itself; XDMF's expression parser refuses a JOIN of one)
+    allocate (rows(m))
+    do k = 1, m
+      rows(k) = row_text(self, file, trim(points(k)), repeat(' ', merge(6, 8, m == 1)))
+    end do
     call add(self, '<Grid Name="'//escaped(name)//'" GridType="Collection" CollectionType="Temporal">')
     i = 1
     do
-      call add(self, '  <Grid Name="'//escaped(name)//'" GridType="Uniform">')
+      call add(self, grid)
       call add(self, '    <Time Value="'//format_real(time(i))//'"/>')
-      if (connect .and. m > 1) then
-        call add(self, '    <Topology TopologyType="Polyline" NodesPerElement="'//format_integer(m)// &
-                 '" NumberOfElements="1"/>')
-      else
-        call add(self, '    <Topology TopologyType="Polyvertex" NodesPerElement="1" NumberOfElements="'// &
-                 format_integer(m)//'"/>')
-      end if
+      call add(self, topology)
       call add(self, '    <Geometry GeometryType="XYZ">')
-      call joined_rows(self, file, points, i, format_integer(m)//' 3', join)
+      if (m > 1) call add(self, '      <DataItem ItemType="Function" Function="'//join//'" Dimensions="'// &
+                          format_integer(m)//' 3">')
+      do k = 1, m
+        call add(self, rows(k)%head//format_integer(i - 1)//rows(k)%tail)
+      end do
+      if (m > 1) call add(self, '      </DataItem>')
       call add(self, '    </Geometry>')
       call add(self, '  </Grid>')
       if (i == n) exit
@@ -193,25 +213,6 @@ contains
     end do
     call add(self, '</Grid>')
   end subroutine xdmf_moving_points
-
-  !> Row i of each dataset in `names`, joined (one dataset: the row itself;
-  !> XDMF's expression parser refuses a JOIN of one).
-  subroutine joined_rows(self, file, names, i, dimensions, join)
-    class(xdmf_t), intent(inout) :: self
-    type(result_file_t), intent(in) :: file
-    character(len=*), intent(in) :: names(:), dimensions, join
-    integer, intent(in) :: i
-    integer :: k
-    if (size(names) == 1) then
-      call add(self, '      '//row(self, file, trim(names(1)), i))
-      return
-    end if
-    call add(self, '      <DataItem ItemType="Function" Function="'//join//'" Dimensions="'//dimensions//'">')
-    do k = 1, size(names)
-      call add(self, '        '//row(self, file, trim(names(k)), i))
-    end do
-    call add(self, '      </DataItem>')
-  end subroutine joined_rows
 
   !> Closes the XML and hands it to the result file, which writes it next to
   !> itself (xdmf_path) as it finishes: both files are kept, or neither.
@@ -237,7 +238,8 @@ contains
       grown(:self%used) = self%xml(:self%used)
       call move_alloc(grown, self%xml)
     end if
-    self%xml(self%used + 1:n) = line//new_line('a')
+    self%xml(self%used + 1:n - 1) = line
+    self%xml(n:n) = new_line('a')
     self%used = n
   end subroutine add
 
@@ -261,26 +263,27 @@ contains
            'Format="HDF">'//escaped(self%h5)//':'//escaped(name)//'</DataItem>'
   end function data_item
 
-  !> Row i (1-based) of a dataset of shape (n) or (n, 3), as a HyperSlab.
-  function row(self, file, name, i) result(text)
+  !> Row i (1-based) of a dataset of shape (n) or (n, 3) as a HyperSlab:
+  !> head//(i - 1)//tail, the head indented by `indent`.
+  function row_text(self, file, name, indent) result(text)
     class(xdmf_t), intent(in) :: self
     type(result_file_t), intent(in) :: file
-    character(len=*), intent(in) :: name
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
+    character(len=*), intent(in) :: name, indent
+    type(row_text_t) :: text
     integer, allocatable :: dims(:)
     character(len=*), parameter :: nl = new_line('a')
     dims = file%shape_of(name)
     if (size(dims) == 1) then
-      text = '<DataItem ItemType="HyperSlab" Dimensions="1" Type="HyperSlab">'//nl// &
-             '          <DataItem Dimensions="3 1" Format="XML">'//format_integer(i - 1)//' 1 1</DataItem>'//nl
+      text%head = indent//'<DataItem ItemType="HyperSlab" Dimensions="1" Type="HyperSlab">'//nl// &
+                  '          <DataItem Dimensions="3 1" Format="XML">'
+      text%tail = ' 1 1</DataItem>'//nl
     else
-      text = '<DataItem ItemType="HyperSlab" Dimensions="1 '//format_integer(dims(2))//'" Type="HyperSlab">'//nl// &
-             '          <DataItem Dimensions="3 2" Format="XML">'//format_integer(i - 1)//' 0 1 1 1 '// &
-             format_integer(dims(2))//'</DataItem>'//nl
+      text%head = indent//'<DataItem ItemType="HyperSlab" Dimensions="1 '//format_integer(dims(2))// &
+                  '" Type="HyperSlab">'//nl//'          <DataItem Dimensions="3 2" Format="XML">'
+      text%tail = ' 0 1 1 1 '//format_integer(dims(2))//'</DataItem>'//nl
     end if
-    text = text//'          '//data_item(self, file, name)//nl//'        </DataItem>'
-  end function row
+    text%tail = text%tail//'          '//data_item(self, file, name)//nl//'        </DataItem>'
+  end function row_text
 
   pure function dims_text(dims) result(text)
     integer, intent(in) :: dims(:)
@@ -304,6 +307,10 @@ contains
     character(len=*), intent(in) :: text
     character(len=:), allocatable :: xml
     integer :: i
+    if (scan(text, '&<>"') == 0) then
+      xml = text
+      return
+    end if
     xml = ''
     do i = 1, len(text)
       select case (text(i:i))

@@ -1,16 +1,20 @@
-!> Vectors, rotations, the status convention and SHA-256.
+!> Vectors, rotations, the status convention, SHA-256 and numbers as text.
 program test_base
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_SOLVER
   use base_sha256, only: sha256_hex
+  use base_text, only: format_real, format_integer
   use base_vector, only: cross, skew, unit_vector, rot_x, rot_y, rot_z, rotation_xyz, identity3, outer3
   use testing, only: check, check_close, check_close_array, finish_tests
+  use, intrinsic :: iso_fortran_env, only: int64
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none (type, external)
 
   real(wp), parameter :: tol = 1e-15_wp   ! a few roundings of O(1) numbers
   real(wp) :: a(3), b(3), r(3, 3), angles(3), s(3, 3), rx(3, 3), ry(3, 3), rz(3, 3)
   type(status_t) :: status
+  integer :: mismatches   ! of check_number_texts
 
   a = [0.3_wp, -1.2_wp, 2.0_wp]
   b = [1.5_wp, 0.4_wp, -0.7_wp]
@@ -56,5 +60,105 @@ program test_base
              'sha256 55 bytes')
   call check(sha256_hex(repeat('a', 64)) == 'ffe054fe7ae0cb6dc65c3af9b61d5209f439851db43d0ba5997337df154668eb', &
              'sha256 64 bytes')
+  call check_number_texts()
   call finish_tests('test_base')
+
+contains
+
+  !> format_real finds its fewest digits by bisection (and digit by digit for
+  !> powers of two): the same text as trying 1, 2, ... 17 digits (the
+  !> definition, `shortest_text` below) for random doubles of every
+  !> magnitude, random bit patterns, every power of two, subnormals, one and
+  !> two digits times powers of ten, and times 0.01 k as the outputs have;
+  !> format_integer as an internal write.
+  subroutine check_number_texts()
+    real(wp) :: x, u(2)
+    integer(int64) :: bits
+    integer :: k, i
+    mismatches = 0
+    do k = 1, 3000
+      call random_number(u)
+      x = (u(1) - 0.5_wp)*10.0_wp**int(615*u(2) - 307)
+      call compare(x)
+      call random_number(u)
+      bits = int(u(1)*2.0_wp**31, int64)*2_int64**32 + int(u(2)*2.0_wp**32, int64)
+      x = transfer(bits, x)
+      if (ieee_is_finite(x)) call compare(x)
+    end do
+    do k = -1074, 1023
+      call compare(2.0_wp**k)
+      call compare(-3*2.0_wp**(k - 2))
+    end do
+    do k = -20, 20   ! one and two digits, plain and exponent forms
+      do i = 1, 99
+        call compare(i*10.0_wp**k)
+      end do
+    end do
+    do k = 0, 2000
+      call compare(0.01_wp*k)
+      call compare(k/7.0_wp)
+    end do
+    call compare(0.0_wp)
+    call compare(huge(x))
+    call compare(tiny(x))
+    call check(mismatches == 0, 'format_real: the fewest digits by bisection as digit by digit')
+    mismatches = 0
+    do i = -1, 1, 2
+      do k = 0, 62
+        call compare_integer(i*int(min(2_int64**k, int(huge(1), int64))))
+        call compare_integer(i*int(min(10_int64**min(k, 18), int(huge(1), int64))))
+      end do
+    end do
+    call compare_integer(-huge(1) - 1)
+    call compare_integer(0)
+    call check(mismatches == 0, 'format_integer as an internal write (i0)')
+  end subroutine check_number_texts
+
+  subroutine compare(x)
+    real(wp), intent(in) :: x
+    if (format_real(x) == shortest_text(x)) return
+    mismatches = mismatches + 1
+    if (mismatches <= 5) print '(a, es25.17, 4a)', 'format_real(', x, ') = ', format_real(x), &
+      ', digit by digit: ', shortest_text(x)
+  end subroutine compare
+
+  subroutine compare_integer(i)
+    integer, intent(in) :: i
+    character(len=24) :: buffer
+    write (buffer, '(i0)') i
+    if (format_integer(i) == trim(buffer)) return
+    mismatches = mismatches + 1
+    print '(3a)', format_integer(i), ' /= ', trim(buffer)
+  end subroutine compare_integer
+
+  !> format_real's text by its definition: the fewest significant digits
+  !> that read back as x, tried one by one (finite x).
+  function shortest_text(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=40) :: buffer
+    character(len=8) :: decimals
+    real(wp) :: back
+    integer :: digits, ios, e
+    do digits = 1, 17
+      write (decimals, '(i0)') digits - 1
+      write (buffer, '(es40.'//trim(decimals)//')') x
+      read (buffer, *, iostat=ios) back
+      if (ios == 0 .and. back == x) exit
+    end do
+    text = trim(adjustl(buffer))
+    e = index(text, '.E')
+    if (e > 0) text = text(:e)//'0'//text(e + 1:)
+    e = 0
+    if (x /= 0) e = floor(log10(abs(x)))
+    if (e >= -3 .and. e <= 6) then
+      write (decimals, '(i0)') max(digits - 1 - e, 1)
+      write (buffer, '(f40.'//trim(decimals)//')') x
+      text = trim(adjustl(buffer))
+      do while (len(text) > 2 .and. text(len(text):len(text)) == '0' .and. &
+                text(len(text) - 1:len(text) - 1) /= '.')
+        text = text(:len(text) - 1)
+      end do
+    end if
+  end function shortest_text
 end program test_base
