@@ -575,25 +575,36 @@ contains
     integer, intent(in) :: ku, kv, top
     real(wp), intent(inout) :: g(0:, 0:)
     real(wp) :: b(0:max_degree)
-    integer :: j, m, i, mt
+    integer :: j, mt
     mt = min(top, ku)
     do j = 0, kv
       b(0:ku) = a(0:ku, j)
-      if (ku == 5) then
-        call quintic_shift(b, hu, mt)
-      else
-        do m = 0, mt
-          do i = ku - 1, m, -1
-            b(i) = b(i) + hu*b(i + 1)
-          end do
-        end do
-      end if
+      call taylor_shift(b, ku, hu, mt)
       g(0:mt, j) = b(0:mt)
       g(mt + 1:top, j) = 0
     end do
   end subroutine u_shift
 
-  !> The Taylor shift of u_shift and v_shift for degree 5 (the same
+  !> The Taylor coefficients b(0:k) of a degree-k polynomial about 0 shifted
+  !> to h (repeated synthetic division): b(m) = p^(m)(h)/m!, m = 0..mt; the
+  !> entries above mt are left partly shifted. Degree 5 in scalars.
+  pure subroutine taylor_shift(b, k, h, mt)
+    real(wp), intent(inout) :: b(0:max_degree)
+    integer, intent(in) :: k, mt
+    real(wp), intent(in) :: h
+    integer :: m, i
+    if (k == 5) then
+      call quintic_shift(b, h, mt)
+      return
+    end if
+    do m = 0, mt
+      do i = k - 1, m, -1
+        b(i) = b(i) + h*b(i + 1)
+      end do
+    end do
+  end subroutine taylor_shift
+
+  !> The Taylor shift for degree 5 (the same
   !> operations in the same order, in scalars): b(m) = p^(m)(h)/m!, m = 0..mt.
   pure subroutine quintic_shift(b, h, mt)
     real(wp), intent(inout) :: b(0:max_degree)
@@ -635,20 +646,12 @@ contains
     integer, intent(in) :: kv, top, l
     type(spline_surface_eval_t), intent(inout) :: p
     real(wp) :: b(0:max_degree), d(0:3, 0:3)
-    integer :: r, m, i, mt
+    integer :: r, m, mt
     d = 0
     do r = 0, top
       b(0:kv) = g(r, 0:kv)
       mt = min(top - r, kv)
-      if (kv == 5) then
-        call quintic_shift(b, hv, mt)
-      else
-        do m = 0, mt
-          do i = kv - 1, m, -1
-            b(i) = b(i) + hv*b(i + 1)
-          end do
-        end do
-      end if
+      call taylor_shift(b, kv, hv, mt)
       do m = 0, mt
         d(r, m) = (factorial(r)*factorial(m))*b(m)
       end do
