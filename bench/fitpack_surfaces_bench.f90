@@ -16,6 +16,7 @@
 program fitpack_surfaces_bench
   use base_kinds, only: wp
   use base_status, only: status_t
+  use base_sorting, only: sort_ascending
   use numerics_spline_surface, only: spline_surface_t, spline_surface_eval_t, fit_grid
   implicit none (type, external)
   integer, parameter :: mx = 40, my = 30, ng = 1000, npts = 1000000, nrep = 5
@@ -138,19 +139,9 @@ contains
 
   pure real(wp) function median(a)
     real(wp), intent(in) :: a(:)
-    real(wp) :: b(size(a)), tmp
-    integer :: i, j
+    real(wp) :: b(size(a))
     b = a
-    do i = 2, size(b)
-      tmp = b(i)
-      j = i - 1
-      do while (j >= 1)
-        if (b(j) <= tmp) exit
-        b(j + 1) = b(j)
-        j = j - 1
-      end do
-      b(j + 1) = tmp
-    end do
+    call sort_ascending(b)
     median = b((size(b) + 1)/2)
     if (mod(size(b), 2) == 0) median = (b(size(b)/2) + b(size(b)/2 + 1))/2
   end function median

@@ -3,7 +3,7 @@ module base_sorting
   use base_kinds, only: wp
   implicit none (type, external)
   private
-  public :: unique_sorted
+  public :: unique_sorted, sort_ascending
 
 contains
 
@@ -13,19 +13,10 @@ contains
   pure function unique_sorted(x) result(u)
     real(wp), intent(in) :: x(:)
     real(wp), allocatable :: u(:)
-    real(wp) :: work(size(x)), t
-    integer :: i, j, n
+    real(wp) :: work(size(x))
+    integer :: i, n
     work = x
-    do i = 2, size(work)
-      t = work(i)
-      j = i - 1
-      do while (j >= 1)
-        if (work(j) <= t) exit
-        work(j + 1) = work(j)
-        j = j - 1
-      end do
-      work(j + 1) = t
-    end do
+    call sort_ascending(work)
     n = 0
     do i = 1, size(work)
       if (n > 0) then
@@ -36,5 +27,23 @@ contains
     end do
     u = work(1:n)
   end function unique_sorted
+
+  !> x in increasing order, repeated values kept. Insertion sort: for inputs,
+  !> tests and benchmarks (a few thousand values at most), not hot paths.
+  pure subroutine sort_ascending(x)
+    real(wp), intent(inout) :: x(:)
+    real(wp) :: t
+    integer :: i, j
+    do i = 2, size(x)
+      t = x(i)
+      j = i - 1
+      do while (j >= 1)
+        if (x(j) <= t) exit
+        x(j + 1) = x(j)
+        j = j - 1
+      end do
+      x(j + 1) = t
+    end do
+  end subroutine sort_ascending
 
 end module base_sorting

@@ -13,6 +13,7 @@ program test_spline_curve_reference
   use base_kinds, only: wp
   use base_constants, only: two_pi
   use base_status, only: status_t
+  use base_sorting, only: sort_ascending
   use numerics_spline_curve, only: spline_curve_t
   use bspline_reference, only: bspline, span_of
   use testing, only: check, check_close, finish_tests
@@ -132,7 +133,7 @@ contains
       call random_number(r)
       inner = [inner, spread(-2 + 5*r, 1, mult)]
     end do
-    call sort(inner)
+    call sort_ascending(inner)   ! repeated knots kept
     if (mod(trial, 2) == 1) then
       t = [spread(-2.0_wp, 1, k + 1), inner, spread(3.0_wp, 1, k + 1)]          ! clamped (FITPACK's open curves)
     else
@@ -274,20 +275,4 @@ contains
     end do
   end function reference_length
 
-  !> Insertion sort (keeps repeated knots, unlike base_sorting's unique_sorted).
-  pure subroutine sort(x)
-    real(wp), intent(inout) :: x(:)
-    real(wp) :: y
-    integer :: i, j
-    do i = 2, size(x)
-      y = x(i)
-      j = i - 1
-      do while (j >= 1)
-        if (x(j) <= y) exit
-        x(j + 1) = x(j)
-        j = j - 1
-      end do
-      x(j + 1) = y
-    end do
-  end subroutine sort
 end program test_spline_curve_reference
