@@ -161,7 +161,11 @@ contains
     integer :: i
     c = cos(angle)
     s = sin(angle)
-    k = reshape([0.0_wp, e(3), -e(2), -e(3), 0.0_wp, e(1), e(2), -e(1), 0.0_wp], [3, 3])
+    ! the cross-product matrix [e]x element by element (a reshape of a
+    ! non-constant array is a library call: the revolute's position map is hot)
+    k(:, 1) = [0.0_wp, e(3), -e(2)]
+    k(:, 2) = [-e(3), 0.0_wp, e(1)]
+    k(:, 3) = [e(2), -e(1), 0.0_wp]
     r = s*k + (1 - c)*matmul(k, k)
     do i = 1, 3
       r(i, i) = r(i, i) + 1
