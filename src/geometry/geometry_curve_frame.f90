@@ -20,7 +20,7 @@ module geometry_curve_frame
   use geometry_curve, only: curve_t, curve_point_t
   implicit none (type, external)
   private
-  public :: curve_frame_t, curve_frame_from_points, curve_frame_at, normalized_derivatives
+  public :: curve_frame_t, curve_frame_from_points, curve_frame_at
   public :: centerline_curvature, horizon_parallel_tol
 
   !> Smallest allowed sine of the angle between the horizon and the tangent;
@@ -37,53 +37,59 @@ module geometry_curve_frame
 
 contains
 
-  !> Unit vector e = a/|a| and its derivatives to order n (<= 3) from those of a.
-  pure subroutine normalized_derivatives(a, n, e, length)
-    real(wp), intent(in) :: a(3, 0:3)
+  !> Unit vector e = a/|a| and its derivatives to order n (<= 3) from those
+  !> of a, with l = |a| (the caller has it); e(:, n+1:) is left as it is.
+  pure subroutine normalized_derivatives(a, l, n, e)
+    real(wp), intent(in) :: a(3, 0:3), l
     integer, intent(in) :: n
-    real(wp), intent(out) :: e(3, 0:3)
-    real(wp), intent(out) :: length(0:3)
-    real(wp) :: l
-    e = 0; length = 0
-    l = norm2(a(:, 0))
-    length(0) = l
+    real(wp), intent(inout) :: e(3, 0:3)
+    real(wp) :: l1, l2, l3   ! derivatives of l
     e(:, 0) = a(:, 0)/l
     if (n < 1) return
-    length(1) = dot_product(e(:, 0), a(:, 1))
-    e(:, 1) = (a(:, 1) - length(1)*e(:, 0))/l
+    l1 = dot_product(e(:, 0), a(:, 1))
+    e(:, 1) = (a(:, 1) - l1*e(:, 0))/l
     if (n < 2) return
-    length(2) = (dot_product(a(:, 0), a(:, 2)) + dot_product(a(:, 1), a(:, 1)) - length(1)**2)/l
-    e(:, 2) = (a(:, 2) - 2*length(1)*e(:, 1) - length(2)*e(:, 0))/l
+    l2 = (dot_product(a(:, 0), a(:, 2)) + dot_product(a(:, 1), a(:, 1)) - l1**2)/l
+    e(:, 2) = (a(:, 2) - 2*l1*e(:, 1) - l2*e(:, 0))/l
     if (n < 3) return
-    length(3) = (3*dot_product(a(:, 1), a(:, 2)) + dot_product(a(:, 0), a(:, 3)) &
-                 - 3*length(1)*length(2))/l
-    e(:, 3) = (a(:, 3) - 3*length(1)*e(:, 2) - 3*length(2)*e(:, 1) - length(3)*e(:, 0))/l
+    l3 = (3*dot_product(a(:, 1), a(:, 2)) + dot_product(a(:, 0), a(:, 3)) - 3*l1*l2)/l
+    e(:, 3) = (a(:, 3) - 3*l1*e(:, 2) - 3*l2*e(:, 1) - l3*e(:, 0))/l
   end subroutine normalized_derivatives
 
-  !> Leibniz' rule for a x b to order n. Derivatives of a that are zero (a
-  !> constant horizon) add nothing and are skipped; the cross product is
-  !> written out here so that the compiler inlines it (the frame is on the
-  !> hot path of every tube evaluation).
+  !> Leibniz' rule for a x b to order n (c(:, n+1:) is left as it is).
+  !> Derivatives of a that are zero (a constant horizon) add nothing and are
+  !> skipped; the terms are written out per order (the frame is on the hot
+  !> path of every tube evaluation), each sum from 0 in the order of j.
   pure subroutine cross_derivatives(a, b, n, c)
     real(wp), intent(in) :: a(3, 0:3), b(3, 0:3)
     integer, intent(in) :: n
-    real(wp), intent(out) :: c(3, 0:3)
-    integer, parameter :: binom(0:3, 0:3) = reshape([1, 0, 0, 0, 1, 1, 0, 0, 1, 2, 1, 0, 1, 3, 3, 1], [4, 4])
-    integer :: k, j
-    logical :: a_zero(0:3)
-    c = 0
-    do j = 0, n
-      a_zero(j) = j > 0 .and. all(a(:, j) == 0)
+    real(wp), intent(inout) :: c(3, 0:3)
+    logical :: a_zero(3)
+    integer :: j
+    do j = 1, n
+      a_zero(j) = all(a(:, j) == 0)
     end do
-    do k = 0, n
-      do j = 0, k
-        if (a_zero(j)) cycle
-        associate (x => a(:, j), y => b(:, k - j))
-          c(:, k) = c(:, k) + binom(j, k)*[x(2)*y(3) - x(3)*y(2), x(3)*y(1) - x(1)*y(3), x(1)*y(2) - x(2)*y(1)]
-        end associate
-      end do
-    end do
+    c(:, 0) = 0 + cross3(a(:, 0), b(:, 0))
+    if (n < 1) return
+    c(:, 1) = 0 + cross3(a(:, 0), b(:, 1))
+    if (.not. a_zero(1)) c(:, 1) = c(:, 1) + cross3(a(:, 1), b(:, 0))
+    if (n < 2) return
+    c(:, 2) = 0 + cross3(a(:, 0), b(:, 2))
+    if (.not. a_zero(1)) c(:, 2) = c(:, 2) + 2*cross3(a(:, 1), b(:, 1))
+    if (.not. a_zero(2)) c(:, 2) = c(:, 2) + cross3(a(:, 2), b(:, 0))
+    if (n < 3) return
+    c(:, 3) = 0 + cross3(a(:, 0), b(:, 3))
+    if (.not. a_zero(1)) c(:, 3) = c(:, 3) + 3*cross3(a(:, 1), b(:, 2))
+    if (.not. a_zero(2)) c(:, 3) = c(:, 3) + 3*cross3(a(:, 2), b(:, 1))
+    if (.not. a_zero(3)) c(:, 3) = c(:, 3) + cross3(a(:, 3), b(:, 0))
   end subroutine cross_derivatives
+
+  !> x x y, here so that the compiler inlines it.
+  pure function cross3(x, y) result(z)
+    real(wp), intent(in) :: x(3), y(3)
+    real(wp) :: z(3)
+    z = [x(2)*y(3) - x(3)*y(2), x(3)*y(1) - x(1)*y(3), x(1)*y(2) - x(2)*y(1)]
+  end function cross3
 
   !> Curvature chi = |c_u x c_uu|/|c_u|^3 (4.8) and, if c holds c_uuu, its
   !> derivative chi_u (4.9). chi_u is set to 0 where c_u x c_uu vanishes
@@ -116,7 +122,7 @@ contains
     type(curve_frame_t), intent(out) :: f
     type(status_t), intent(out) :: status
     logical, intent(in), optional :: with_curvature
-    real(wp) :: w(3, 0:3), lx(0:3), lw(0:3), speed, hn
+    real(wp) :: w(3, 0:3), speed, hn, wn
     character(len=40) :: buf
     if (order < 0 .or. order > 3) then
       call set_status(status, STATUS_INVALID_INPUT, 'curve frame: order must be 0..3')
@@ -128,16 +134,17 @@ contains
       call set_status(status, STATUS_DOMAIN, 'curve frame: centerline tangent c_u is zero')
       return
     end if
-    call normalized_derivatives(c%d(:, 1:4), order, f%x, lx)
+    call normalized_derivatives(c%d(:, 1:4), speed, order, f%x)
     call cross_derivatives(h%d(:, 0:3), f%x, order, w)
     hn = norm2(h%d(:, 0))
-    if (.not. norm2(w(:, 0)) > horizon_parallel_tol*hn) then
-      write (buf, '(es12.4)') norm2(w(:, 0))/max(hn, tiny(1.0_wp))
+    wn = norm2(w(:, 0))
+    if (.not. wn > horizon_parallel_tol*hn) then
+      write (buf, '(es12.4)') wn/max(hn, tiny(1.0_wp))
       call set_status(status, STATUS_DOMAIN, 'curve frame: horizon vector is parallel to the ' // &
                       'centerline tangent (sine of angle ' // trim(adjustl(buf)) // ')')
       return
     end if
-    call normalized_derivatives(w, order, f%y, lw)
+    call normalized_derivatives(w, wn, order, f%y)
     call cross_derivatives(f%x, f%y, order, f%z)
     if (present(with_curvature)) then
       if (.not. with_curvature) return
