@@ -177,6 +177,7 @@ module kinetostatics_mechanism
     type(element_reach_t) :: reach
     type(closure_blocks_t) :: blocks
     integer, allocatable :: beta_pass(:)   ! the elements the dependent coordinates reach (downstream_of)
+    integer, allocatable :: unknowns_pass(:)   ! ... and those the unknown rates [beta'; sigma'] reach
     integer, allocatable :: unknowns(:), rows(:)   ! scalars of x = [beta; sigma] and of the rows [g; c]
     ! work arrays
     real(wp), allocatable :: work_r(:), gq(:)
@@ -545,8 +546,10 @@ contains
     call find_element_links(self%elements, self%n_frames, self%n_scalars, self%reach)
     if (self%blocked) then
       self%beta_pass = downstream_of(self%reach, self%beta, self%n_frames, self%n_scalars, self%n_elements)
+      self%unknowns_pass = downstream_of(self%reach, self%unknowns, self%n_frames, self%n_scalars, self%n_elements)
     else
       self%beta_pass = [(k, k = 1, self%n_elements)]
+      self%unknowns_pass = self%beta_pass
     end if
     call build_closure_blocks(self%blocks, self%elements, self%reach, self%n_frames, self%n_scalars, &
                               self%unknowns, self%rows, self%r, group_start, self%blocked)
@@ -1175,6 +1178,8 @@ contains
     end do
     call pass()
     if (self%r + self%nd > 0) then
+      ! the second pass only over the elements the unknown rates reach: the
+      ! others' inputs are those of the first pass, so are their outputs
       if (self%nd == 0) then
         do k = 1, self%r
           self%work_r(k) = value_of(self%closure(k))
@@ -1198,7 +1203,15 @@ contains
           call put(self%sigma(k), -self%work_x(self%r + k))
         end do
       end if
-      call pass()
+      if (level == 1) then
+        do k = 1, size(self%unknowns_pass)
+          call self%elements(self%unknowns_pass(k))%e%velocity(self%frames, self%scalars)
+        end do
+      else
+        do k = 1, size(self%unknowns_pass)
+          call self%elements(self%unknowns_pass(k))%e%acceleration(self%frames, self%scalars)
+        end do
+      end if
     end if
     if (level == 1) then
       do k = 1, self%f
@@ -1526,7 +1539,7 @@ contains
   subroutine blocked_mass_column(self, i)
     class(mechanism_t), intent(inout) :: self
     integer, intent(in) :: i
-    integer :: p, l, b, m, j
+    integer :: p, l, m, j
     logical :: rates
     rates = self%nd > 0
     associate (bl => self%blocks, x => self%work_x, speed => self%q(self%speeds(i)))
@@ -1574,20 +1587,50 @@ contains
             self%scalars(self%unknowns(bl%blocks(touched(l))%members(m)))%qdd = 0
           end do
         end do
-        do p = 1, size(pass)
-          associate (r => self%reach, e => pass(p))
-            do l = r%frame_out_start(e), r%frame_out_start(e + 1) - 1
-              self%frames(r%frame_out(l))%alpha = 0
-              self%frames(r%frame_out(l))%a = 0
-            end do
-            do l = r%scalar_out_start(e), r%scalar_out_start(e + 1) - 1
-              self%scalars(r%scalar_out(l))%qdd = 0
-            end do
-          end associate
-        end do
+        call clear_outputs(self, pass, .false.)
       end associate
     end associate
   end subroutine blocked_mass_column
+
+  !> For the elements `pass`: the accelerations of their output frames and
+  !> scalars set to zero, or (`forces`) the forces on their output and input
+  !> frames and scalars.
+  subroutine clear_outputs(self, pass, forces)
+    class(mechanism_t), intent(inout) :: self
+    integer, intent(in) :: pass(:)
+    logical, intent(in) :: forces
+    integer :: p, l
+    do p = 1, size(pass)
+      associate (r => self%reach, e => pass(p))
+        do l = r%frame_out_start(e), r%frame_out_start(e + 1) - 1
+          associate (fr => self%frames(r%frame_out(l)))
+            if (forces) then
+              fr%force = 0
+              fr%torque = 0
+            else
+              fr%alpha = 0
+              fr%a = 0
+            end if
+          end associate
+        end do
+        do l = r%scalar_out_start(e), r%scalar_out_start(e + 1) - 1
+          if (forces) then
+            self%scalars(r%scalar_out(l))%force = 0
+          else
+            self%scalars(r%scalar_out(l))%qdd = 0
+          end if
+        end do
+        if (.not. forces) cycle
+        do l = r%frame_in_start(e), r%frame_in_start(e + 1) - 1
+          self%frames(r%frame_in(l))%force = 0
+          self%frames(r%frame_in(l))%torque = 0
+        end do
+        do l = r%scalar_in_start(e), r%scalar_in_start(e + 1) - 1
+          self%scalars(r%scalar_in(l))%force = 0
+        end do
+      end associate
+    end do
+  end subroutine clear_outputs
 
   !> A force pass with inertia, without applied forces, over the elements
   !> `pass` (backwards): the forces on their inputs and outputs cleared, the
@@ -1597,24 +1640,7 @@ contains
     integer, intent(in) :: pass(:)
     integer, intent(in), optional :: touched(:)
     integer :: p, l, m, j
-    do p = 1, size(pass)
-      associate (r => self%reach, e => pass(p))
-        do l = r%frame_out_start(e), r%frame_out_start(e + 1) - 1
-          self%frames(r%frame_out(l))%force = 0
-          self%frames(r%frame_out(l))%torque = 0
-        end do
-        do l = r%frame_in_start(e), r%frame_in_start(e + 1) - 1
-          self%frames(r%frame_in(l))%force = 0
-          self%frames(r%frame_in(l))%torque = 0
-        end do
-        do l = r%scalar_out_start(e), r%scalar_out_start(e + 1) - 1
-          self%scalars(r%scalar_out(l))%force = 0
-        end do
-        do l = r%scalar_in_start(e), r%scalar_in_start(e + 1) - 1
-          self%scalars(r%scalar_in(l))%force = 0
-        end do
-      end associate
-    end do
+    call clear_outputs(self, pass, .true.)
     if (present(touched)) then
       do l = 1, size(touched)
         do m = 1, size(self%blocks%blocks(touched(l))%members)
