@@ -101,10 +101,8 @@ contains
                       'Darboux frame: the surface point must be evaluated to order >= 2')
       return
     end if
-    if (sigma == 0) then
-      call set_status(status, STATUS_INVALID_INPUT, 'Darboux frame: sigma = 0 is not allowed')
-      return
-    end if
+    call check_sigma(sigma, status)
+    if (.not. status%ok()) return
     limit_rule = .false.
     if (present(singular_rule)) then
       if (singular_rule /= SINGULAR_RULE_THESIS .and. singular_rule /= SINGULAR_RULE_LIMIT) then
@@ -229,10 +227,8 @@ contains
                       'Darboux axes: the surface point must be evaluated to order >= 1')
       return
     end if
-    if (sigma == 0) then
-      call set_status(status, STATUS_INVALID_INPUT, 'Darboux frame: sigma = 0 is not allowed')
-      return
-    end if
+    call check_sigma(sigma, status)
+    if (.not. status%ok()) return
     norm_ru = norm2(p%ru)
     norm_rv = norm2(p%rv)
     singular = norm_ru <= singular_tol*norm_rv .or. norm_rv == 0
@@ -256,6 +252,13 @@ contains
     axes(:, 2) = cross(z, x)
     axes(:, 3) = z
   end subroutine darboux_axes
+
+  !> sigma orients z_D (3.38): any value but 0.
+  pure subroutine check_sigma(sigma, status)
+    real(wp), intent(in) :: sigma
+    type(status_t), intent(inout) :: status
+    if (sigma == 0) call set_status(status, STATUS_INVALID_INPUT, 'Darboux frame: sigma = 0 is not allowed')
+  end subroutine check_sigma
 
   pure subroutine fail_parallel(status)
     type(status_t), intent(inout) :: status
