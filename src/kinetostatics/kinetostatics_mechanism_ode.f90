@@ -38,12 +38,12 @@
 !> the root functions at the end of each step, at y_n, while its last
 !> right-hand side was at the corrector's previous iterate: the same t_n and
 !> a state within the corrector's tolerance. There the stored values are
-!> used as long as every one is far from zero, |g_i| >= 1e-3 G_i with G_i
-!> the largest |g_i| met in the run, and the states differ by at most 1e-7
-!> relative (q and s on their scale, the integrals after them on theirs):
-!> the error of such a value is the sensitivity of g to y times
-!> that difference, orders of magnitude below 1e-3 G_i, so no sign can be
-!> wrong. Near a root, or at any other (t, y), the root call evaluates the
+!> used as long as the states differ by at most d <= 1e-7 relative (q and s
+!> on their scale, the integrals after them on theirs) and every value is
+!> far from zero, |g_i| >= 1e4 d G_i (at most 1e-3 G_i, at least 1e-9 G_i)
+!> with G_i the largest |g_i| met in the run: the error of such a value is
+!> the sensitivity of g to y times d, orders of magnitude below 1e4 d G_i,
+!> so no sign can be wrong. Near a root, or at any other (t, y), the root call evaluates the
 !> state itself, only to the level it needs: roots are located with exact
 !> values. User crossings are always taken from y itself. If an evaluation
 !> fails (a trial state beyond a domain edge), the edge roots come from the
@@ -280,25 +280,33 @@ contains
   !> (q, s) and the integrals after it (work, ...) are compared each on its
   !> own scale: one scale over all let a large integral (the friction work
   !> reaches thousands of J) admit position differences of 1e-4 and more.
+  !> "Far" scales with the difference d actually found: the error of a
+  !> stored value is its sensitivity times d, and 1e-3 G_i at d = 1e-7 (the
+  !> bound) is the same margin as 1e4 d G_i at a smaller d (at a step end
+  !> d is the corrector's last update, ~1e-11); not below 1e-9 G_i, far
+  !> above the values' own rounding.
   logical function near_and_far_from_zero(self, y, y_c, g_c) result(usable)
     class(mechanism_ode_t), intent(in) :: self
     real(wp), intent(in) :: y(:), y_c(:), g_c(:)
     integer :: i, n
+    real(wp) :: d, far
     n = self%mechanism%f + self%mechanism%ns
-    usable = near(y(1:n), y_c(1:n))
-    if (usable .and. size(y) > n) usable = near(y(n + 1:), y_c(n + 1:))
+    d = distance(y(1:n), y_c(1:n))
+    if (size(y) > n) d = max(d, distance(y(n + 1:), y_c(n + 1:)))
+    usable = d <= 1e-7_wp
     if (.not. usable) return
+    far = max(1e4_wp*d, 1e-9_wp)
     do i = n_user(self) + 1, self%root_count()
-      if (abs(g_c(i)) < 1e-3_wp*self%root_scale(i)) then
+      if (abs(g_c(i)) < far*self%root_scale(i)) then
         usable = .false.
         return
       end if
     end do
   contains
-    pure logical function near(a, b)
+    pure real(wp) function distance(a, b)
       real(wp), intent(in) :: a(:), b(:)
-      near = maxval(abs(a - b)) <= 1e-7_wp*max(maxval(abs(b)), 1.0_wp)
-    end function near
+      distance = maxval(abs(a - b))/max(maxval(abs(b)), 1.0_wp)
+    end function distance
   end function near_and_far_from_zero
 
   !> Fills cache_g from the mechanism's state: user crossings always, edges
