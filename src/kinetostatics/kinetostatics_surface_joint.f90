@@ -205,7 +205,9 @@ contains
     end associate
   end subroutine evaluate_geometry
 
-  !> The rates and their derivatives of the last position, if not yet there.
+  !> The rates and their derivatives of the last position, if not yet there
+  !> (the maps test `complete` themselves first: this is called once per
+  !> position, they are called for every pass).
   !> The position pass evaluated this regular point to order 1 and built its
   !> frame, so order 3 cannot fail here; if it did, the geometry is NaN (the
   !> run stops at the next error test) rather than silently stale.
@@ -299,7 +301,7 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     real(wp) :: ud, vd
-    call self%complete_geometry()
+    if (.not. self%complete) call sj_complete_geometry(self)
     ud = scalars(self%var_u)%qd
     vd = scalars(self%var_v)%qd
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
@@ -323,7 +325,7 @@ contains
     type(scalar_state_t), intent(inout) :: scalars(:)
     real(wp) :: ud, vd, udd, vdd, omega_rel(3), w_rel(3), acc(3)
     logical :: moving, turning
-    call self%complete_geometry()
+    if (.not. self%complete) call sj_complete_geometry(self)
     ud = scalars(self%var_u)%qd
     vd = scalars(self%var_v)%qd
     udd = scalars(self%var_u)%qdd
@@ -360,7 +362,7 @@ contains
     real(wp) :: f(3), t(3)
     associate (unused_i => inertia, unused_a => applied)
     end associate
-    call self%complete_geometry()
+    if (.not. self%complete) call sj_complete_geometry(self)
     f = frames(self%frame_out)%force
     t = frames(self%frame_out)%torque
     ! (3.54)
