@@ -150,7 +150,7 @@ contains
     type(water_properties_t), intent(in) :: water
     real(wp), intent(in) :: r_d(3), z_d(3), w_d(3), r_m(3), z_m(3), h, w(3)
     type(drag_state_t), intent(out) :: drag
-    real(wp) :: speed, diameter, cd_speed
+    real(wp) :: speed, diameter, cd_speed, excess
     diameter = 2*r_s
     drag%relative_velocity = w_d - w
     speed = norm2(drag%relative_velocity)
@@ -169,8 +169,9 @@ contains
       drag%cap_radius = sqrt(r_s**2 - drag%cap_offset**2)
     end if
     if (drag%reynolds <= morrison_reynolds_max) then
-      if (speed > 0) drag%drag_coefficient = morrison_drag_coefficient(drag%reynolds)
-      cd_speed = 24*water%kinematic_viscosity/diameter + speed*stokes_excess(drag%reynolds)
+      excess = stokes_excess(drag%reynolds)   ! once: three powers
+      if (speed > 0) drag%drag_coefficient = 24/drag%reynolds + excess   ! morrison_drag_coefficient
+      cd_speed = 24*water%kinematic_viscosity/diameter + speed*excess
     else
       drag%drag_coefficient = morrison_drag_coefficient(morrison_reynolds_max)
       cd_speed = drag%drag_coefficient*speed
