@@ -133,11 +133,26 @@ contains
     logical :: turning_i, turning_j
     associate (fi => frames(self%frame_i), fj => frames(self%frame_j), ni => self%ni, nj => self%nj, &
                d => self%d)
+      ! a frame at rest (mass-matrix columns) turns no axis: its products with
+      ! omega are zero and skipped (the other terms summed in the same order)
       turning_i = any(fi%omega /= 0)
       turning_j = any(fj%omega /= 0)
-      if (self%kind /= MEASURE_POINT_POINT) call axis_rates(fi, ni, turning_i, dni, ddni)
-      if (self%kind /= MEASURE_POINT_POINT .and. self%kind /= MEASURE_PLANE_POINT) &
-        call axis_rates(fj, nj, turning_j, dnj, ddnj)
+      if (self%kind /= MEASURE_POINT_POINT) then
+        dni = 0
+        ddni = cross(fi%alpha, ni)
+        if (turning_i) then
+          dni = cross(fi%omega, ni)
+          ddni = ddni + cross(fi%omega, dni)
+        end if
+      end if
+      if (self%kind /= MEASURE_POINT_POINT .and. self%kind /= MEASURE_PLANE_POINT) then
+        dnj = 0
+        ddnj = cross(fj%alpha, nj)
+        if (turning_j) then
+          dnj = cross(fj%omega, nj)
+          ddnj = ddnj + cross(fj%omega, dnj)
+        end if
+      end if
       select case (self%kind)
       case (MEASURE_POINT_POINT)
         dd = fi%v - fj%v
@@ -160,23 +175,6 @@ contains
     end associate
     scalars(self%output)%qdd = gdd
   end subroutine m_acceleration
-
-  !> First and second time derivative of the world axis n carried by frame
-  !> fr: omega x n, alpha x n + omega x (omega x n). A frame at rest
-  !> (mass-matrix columns) turns no axis: the products with omega are zero
-  !> and skipped (the other terms summed in the same order).
-  pure subroutine axis_rates(fr, n, turning, dn, ddn)
-    type(frame_state_t), intent(in) :: fr
-    real(wp), intent(in) :: n(3)
-    logical, intent(in) :: turning
-    real(wp), intent(out) :: dn(3), ddn(3)
-    dn = 0
-    ddn = cross(fr%alpha, n)
-    if (turning) then
-      dn = cross(fr%omega, n)
-      ddn = ddn + cross(fr%omega, dn)
-    end if
-  end subroutine axis_rates
 
   pure subroutine m_force(self, frames, scalars, inertia, applied)
     class(measurement_t), intent(inout) :: self
