@@ -384,12 +384,15 @@ contains
     v = i%v + cross(i%omega, p)
   end function carried_velocity
 
-  !> Its acceleration: a_i + al_i x p + w_i x (w_i x p).
+  !> Its acceleration: a_i + al_i x p + w_i x (w_i x p). A frame at rest
+  !> (mass-matrix columns) has no centripetal term: it is skipped (the
+  !> other terms summed in the same order).
   pure function carried_acceleration(i, p) result(a)
     type(frame_state_t), intent(in) :: i
     real(wp), intent(in) :: p(3)
     real(wp) :: a(3)
-    a = i%a + cross(i%alpha, p) + cross(i%omega, cross(i%omega, p))
+    a = i%a + cross(i%alpha, p)
+    if (any(i%omega /= 0)) a = a + cross(i%omega, cross(i%omega, p))
   end function carried_acceleration
 
   !> Angular velocity after a turn at rate qd about the world axis n: w + n q'.
@@ -400,11 +403,13 @@ contains
   end function turned_omega
 
   !> Angular acceleration after that turn, n carried by a frame turning with
-  !> omega: al + n q'' + (omega x n) q'.
+  !> omega: al + n q'' + (omega x n) q' (the last term skipped at q' = 0,
+  !> as in the mass-matrix columns).
   pure function turned_alpha(alpha, omega, n, qd, qdd) result(al)
     real(wp), intent(in) :: alpha(3), omega(3), n(3), qd, qdd
     real(wp) :: al(3)
-    al = alpha + n*qdd + cross(omega, n)*qd
+    al = alpha + n*qdd
+    if (qd /= 0) al = al + cross(omega, n)*qd
   end function turned_alpha
 
   !> The force back-map (3.6): f and t, the wrench on the output frame, are
