@@ -129,7 +129,8 @@ contains
     type(curve_point_t) :: h
     type(curve_frame_t) :: f
     type(section_point_t) :: s
-    logical :: section_fixed   ! the section's u-derivatives are all zero
+    real(wp) :: t(3, 0:3, 0:3)   ! the section's part of d^(i+j) r/du^i dv^j (Leibniz in u)
+    integer :: i, j, m
     if (order < 0 .or. order > 3) then
       call set_status(status, STATUS_INVALID_INPUT, 'tube surface: order must be 0..3')
       return
@@ -142,36 +143,35 @@ contains
     if (.not. status%ok()) return
     call self%section%evaluate(u, v, order, s, status)
     if (.not. status%ok()) return
-    section_fixed = all(s%s(:, 1:order, 0:order - 1) == 0)
+    ! a section that does not change along u (all but blended ones) leaves
+    ! one term of the sum over m
+    if (all(s%s(:, 1:order, 0:order - 1) == 0)) then
+      do j = 0, order
+        do i = 0, order - j
+          t(:, i, j) = f%y(:, i)*s%s(1, 0, j) + f%z(:, i)*s%s(2, 0, j)
+        end do
+      end do
+    else
+      do j = 0, order
+        do i = 0, order - j
+          t(:, i, j) = 0
+          do m = 0, i
+            t(:, i, j) = t(:, i, j) + binom(m, i)*(f%y(:, m)*s%s(1, i - m, j) + f%z(:, m)*s%s(2, i - m, j))
+          end do
+        end do
+      end do
+    end if
     p%order = order
-    p%r = c%d(:, 0) + term(0, 0)
+    p%r = c%d(:, 0) + t(:, 0, 0)
     if (order >= 1) then
-      p%ru = c%d(:, 1) + term(1, 0); p%rv = term(0, 1)
+      p%ru = c%d(:, 1) + t(:, 1, 0); p%rv = t(:, 0, 1)
     end if
     if (order >= 2) then
-      p%ruu = c%d(:, 2) + term(2, 0); p%ruv = term(1, 1); p%rvv = term(0, 2)
+      p%ruu = c%d(:, 2) + t(:, 2, 0); p%ruv = t(:, 1, 1); p%rvv = t(:, 0, 2)
     end if
     if (order >= 3) then
-      p%ruuu = c%d(:, 3) + term(3, 0); p%ruuv = term(2, 1); p%ruvv = term(1, 2); p%rvvv = term(0, 3)
+      p%ruuu = c%d(:, 3) + t(:, 3, 0); p%ruuv = t(:, 2, 1); p%ruvv = t(:, 1, 2); p%rvvv = t(:, 0, 3)
     end if
-
-  contains
-
-    !> The section's part of d^(i+j) r/du^i dv^j (Leibniz in u); a section
-    !> that does not change along u (all but blended ones) leaves one term.
-    pure function term(i, j) result(t)
-      integer, intent(in) :: i, j
-      real(wp) :: t(3)
-      integer :: m
-      if (section_fixed) then
-        t = f%y(:, i)*s%s(1, 0, j) + f%z(:, i)*s%s(2, 0, j)
-        return
-      end if
-      t = 0
-      do m = 0, i
-        t = t + binom(m, i)*(f%y(:, m)*s%s(1, i - m, j) + f%z(:, m)*s%s(2, i - m, j))
-      end do
-    end function term
   end subroutine tube_evaluate_with_centerline
 
   !> r = c + y s_y + z s_z on a grid: the centerline and its frame once per u.
