@@ -92,7 +92,7 @@ contains
     type(status_t), intent(out) :: status
     integer, intent(in), optional :: singular_rule
     real(wp) :: w(3), wu(3), wv(3), wuu(3), wuv(3), wvv(3), w340(3)
-    real(wp) :: x(3), y(3), z(3), norm_ru, norm_rv
+    real(wp) :: x(3), y(3), z(3), norm_ru, norm_rv, norm_w
     logical :: second, limit_rule
 
     wuu = 0; wuv = 0; wvv = 0
@@ -120,7 +120,8 @@ contains
     if (.not. frame%singular) then
       ! thesis (3.38), (3.48), (3.49)
       w = sigma*cross(p%ru, p%rv)
-      if (norm2(w) <= singular_tol*abs(sigma)*norm_ru*norm_rv) then
+      norm_w = norm2(w)
+      if (norm_w <= singular_tol*abs(sigma)*norm_ru*norm_rv) then
         call fail_parallel(status)
         return
       end if
@@ -146,7 +147,8 @@ contains
       w340 = sigma*cross(p%rv, cross(p%rv, p%rvv))
       if (limit_rule) then
         w = sigma*cross(p%ruv, p%rv)
-        if (norm2(w) <= singular_tol*abs(sigma)*norm2(p%ruv)*norm_rv) then
+        norm_w = norm2(w)
+        if (norm_w <= singular_tol*abs(sigma)*norm2(p%ruv)*norm_rv) then
           call set_status(status, STATUS_DOMAIN, 'Darboux frame: singular point (r_u = 0) where ' // &
                           'r_uv is parallel to r_v; the limit of the normal is undefined')
           return
@@ -158,7 +160,8 @@ contains
         end if
       else
         w = w340
-        if (norm2(w) <= singular_tol*abs(sigma)*norm_rv**2*norm2(p%rvv)) then
+        norm_w = norm2(w)
+        if (norm_w <= singular_tol*abs(sigma)*norm_rv**2*norm2(p%rvv)) then
           call set_status(status, STATUS_DOMAIN, 'Darboux frame: singular point (r_u = 0) where ' // &
                           'r_vv is parallel to r_v; the rule (3.40) is undefined')
           return
@@ -169,12 +172,13 @@ contains
                     cross(p%rv, cross(p%rv, p%rvvv)))                          ! d_1 of (A.3)
       end if
     end if
-    call unit_and_derivatives(w, wu, wv, wuu, wuv, wvv, second, z, frame%c, frame%d, &
+    call unit_and_derivatives(w, norm_w, wu, wv, wuu, wuv, wvv, second, z, frame%c, frame%d, &
                               frame%c_u, frame%c_v, frame%d_v)
 
     ! x_D and its derivatives, thesis (3.41), (3.46), (3.47).
     w = alpha_u*p%ru + alpha_v*p%rv
-    if (norm2(w) <= singular_tol*(abs(alpha_u)*norm_ru + abs(alpha_v)*norm_rv)) then
+    norm_w = norm2(w)
+    if (norm_w <= singular_tol*(abs(alpha_u)*norm_ru + abs(alpha_v)*norm_rv)) then
       call fail_x_undefined(status)
       return
     end if
@@ -185,7 +189,7 @@ contains
       wuv = alpha_u*p%ruuv + alpha_v*p%ruvv
       wvv = alpha_u*p%ruvv + alpha_v*p%rvvv
     end if
-    call unit_and_derivatives(w, wu, wv, wuu, wuv, wvv, second, x, frame%a, frame%b, &
+    call unit_and_derivatives(w, norm_w, wu, wv, wuu, wuv, wvv, second, x, frame%a, frame%b, &
                               frame%a_u, frame%a_v, frame%b_v)
     if (frame%singular) x = (x - dot_product(x, z)*z)/norm2(x - dot_product(x, z)*z)
 
@@ -271,16 +275,14 @@ contains
                     'x_D is undefined (at r_u = 0 alpha_v must not be 0)')
   end subroutine fail_x_undefined
 
-  !> n = w/|w| and its partials from those of w (w /= 0):
+  !> n = w/|w| and its partials from those of w (w /= 0, s = |w|):
   !> n_u = (w_u - n (n.w_u))/|w|, and, if `second`,
   !> n_uv = (w_uv - n_v (n.w_u) - n (n_v.w_u + n.w_uv))/|w| - n_u (n.w_v)/|w|.
-  pure subroutine unit_and_derivatives(w, wu, wv, wuu, wuv, wvv, second, n, nu, nv, nuu, nuv, nvv)
-    real(wp), intent(in) :: w(3), wu(3), wv(3), wuu(3), wuv(3), wvv(3)
+  pure subroutine unit_and_derivatives(w, s, wu, wv, wuu, wuv, wvv, second, n, nu, nv, nuu, nuv, nvv)
+    real(wp), intent(in) :: w(3), s, wu(3), wv(3), wuu(3), wuv(3), wvv(3)
     logical, intent(in) :: second
     real(wp), intent(out) :: n(3), nu(3), nv(3)
     real(wp), intent(inout) :: nuu(3), nuv(3), nvv(3)
-    real(wp) :: s
-    s = norm2(w)
     n = w/s
     nu = (wu - n*dot_product(n, wu))/s
     nv = (wv - n*dot_product(n, wv))/s
