@@ -74,8 +74,10 @@ contains
     associate (unused_status => status)
     end associate
     associate (fi => frames(self%frame_i), fj => frames(self%frame_j))
-      self%ni = matmul(fi%rot, self%axis_i)
-      self%nj = matmul(fj%rot, self%axis_j)
+      ! the axes each kind uses (point-point none, plane-point n_i)
+      if (self%kind /= MEASURE_POINT_POINT) self%ni = matmul(fi%rot, self%axis_i)
+      if (self%kind /= MEASURE_POINT_POINT .and. self%kind /= MEASURE_PLANE_POINT) &
+        self%nj = matmul(fj%rot, self%axis_j)
       select case (self%kind)
       case (MEASURE_POINT_POINT)
         self%d = fi%r - fj%r
