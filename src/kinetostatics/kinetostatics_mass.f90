@@ -24,7 +24,12 @@ module kinetostatics_mass
     real(wp) :: inertia(3, 3) = 0         ! kg m^2, about S, K coordinates
     real(wp) :: com(3) = 0                ! m, S in K coordinates
     real(wp) :: gravity(3) = 0            ! m/s^2
-    real(wp) :: s(3) = 0, inertia_w(3, 3) = 0   ! world, last position
+    ! the last position's R; s = R s_local and Theta_w (world) from it, made
+    ! by the first force map after the position (`current`): most position
+    ! passes are the closure's Newton iterates, never followed by a force pass
+    real(wp) :: rot(3, 3) = 0
+    logical :: current = .false.
+    real(wp) :: s(3) = 0, inertia_w(3, 3) = 0
   contains
     procedure :: position => mass_position
     procedure :: velocity => mass_nothing
@@ -83,11 +88,17 @@ contains
     type(status_t), intent(inout) :: status
     associate (unused => scalars, unused_status => status)
     end associate
-    associate (k => frames(self%frame))
-      self%s = matmul(k%rot, self%com)
-      self%inertia_w = matmul(k%rot, matmul(self%inertia, transpose(k%rot)))
-    end associate
+    self%rot = frames(self%frame)%rot
+    self%current = .false.
   end subroutine mass_position
+
+  !> s and Theta_w at the last position.
+  pure subroutine world_geometry(self, s, inertia_w)
+    class(mass_element_t), intent(in) :: self
+    real(wp), intent(out) :: s(3), inertia_w(3, 3)
+    s = matmul(self%rot, self%com)
+    inertia_w = matmul(self%rot, matmul(self%inertia, transpose(self%rot)))
+  end subroutine world_geometry
 
   pure subroutine mass_nothing(self, frames, scalars)
     class(mass_element_t), intent(inout) :: self
@@ -105,6 +116,10 @@ contains
     real(wp) :: f(3), t(3)
     associate (unused => scalars)
     end associate
+    if (.not. self%current) then
+      call world_geometry(self, self%s, self%inertia_w)
+      self%current = .true.
+    end if
     associate (k => frames(self%frame), s => self%s)
       if (inertia) then
         if (any(k%omega /= 0)) then
@@ -132,12 +147,18 @@ contains
     class(mass_element_t), intent(in) :: self
     type(frame_state_t), intent(in) :: frames(:)
     real(wp), intent(out) :: kinetic, potential
-    real(wp) :: vs(3)
+    real(wp) :: vs(3), s(3), inertia_w(3, 3)
+    if (self%current) then
+      s = self%s
+      inertia_w = self%inertia_w
+    else
+      call world_geometry(self, s, inertia_w)
+    end if
     associate (k => frames(self%frame))
-      vs = k%v + cross(k%omega, self%s)
+      vs = k%v + cross(k%omega, s)
       kinetic = 0.5_wp*self%mass*dot_product(vs, vs) + &
-                0.5_wp*dot_product(k%omega, matmul(self%inertia_w, k%omega))
-      potential = -self%mass*dot_product(self%gravity, k%r + self%s)
+                0.5_wp*dot_product(k%omega, matmul(inertia_w, k%omega))
+      potential = -self%mass*dot_product(self%gravity, k%r + s)
     end associate
   end subroutine mass_energy
 end module kinetostatics_mass
