@@ -250,6 +250,7 @@ contains
     associate (unused_i => inertia, unused_a => applied)
     end associate
     call pass_wrench_back(frames, self%frame_in, self%frame_out, f, t)
+    if (all(t == 0)) return   ! adds nothing
     scalars(self%variable)%force = scalars(self%variable)%force + dot_product(self%n, t)
   end subroutine revolute_force
 
@@ -414,7 +415,9 @@ contains
 
   !> The force back-map (3.6): f and t, the wrench on the output frame, are
   !> added to the input frame, t about its origin, i.e. plus p x f when the
-  !> output origin sits at the world offset p from it.
+  !> output origin sits at the world offset p from it. No wrench (a frame
+  !> loaded only by cut forces, in the first pass of an inverse dynamics)
+  !> adds nothing.
   pure subroutine pass_wrench_back(frames, frame_in, frame_out, f, t, p)
     type(frame_state_t), intent(inout) :: frames(:)
     integer, intent(in) :: frame_in, frame_out
@@ -422,6 +425,7 @@ contains
     real(wp), intent(in), optional :: p(3)
     f = frames(frame_out)%force
     t = frames(frame_out)%torque
+    if (all(f == 0) .and. all(t == 0)) return
     frames(frame_in)%force = frames(frame_in)%force + f
     if (present(p)) then
       frames(frame_in)%torque = frames(frame_in)%torque + t + cross(p, f)

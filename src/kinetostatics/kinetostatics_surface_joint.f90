@@ -365,6 +365,9 @@ contains
     if (.not. self%complete) call sj_complete_geometry(self)
     f = frames(self%frame_out)%force
     t = frames(self%frame_out)%torque
+    ! no wrench (a contact frame loaded only by cut forces, in the first pass
+    ! of an inverse dynamics) adds nothing
+    if (all(f == 0) .and. all(t == 0)) return
     ! (3.54)
     frames(self%frame_in)%force = frames(self%frame_in)%force + f
     frames(self%frame_in)%torque = frames(self%frame_in)%torque + t + cross(self%p, f)
