@@ -2,7 +2,9 @@
 !> standard input, or the built-in default) and turns the outcome into a
 !> message and an exit status: 0 done; 1 bad command line or input (nothing
 !> written); 2 the run failed part way (the result file is kept, marked
-!> incomplete); 3 a file could not be read or written.
+!> incomplete); 3 a file could not be read or written (standard output too:
+!> a summary cut short by a closed pipe, `slidesim | head`, is exit status 3,
+!> the result file complete and kept).
 !>
 !> Options take their value as the next argument or after '=' (--output FILE,
 !> --output=FILE); '-' names standard input; '--' ends the options.
@@ -13,7 +15,8 @@ program slidesim
   use scenarios_registry, only: run_input_file, run_default, print_scenarios, slidesim_version, &
                                 default_input, scenario_template, scenario_names
   use io_run_config, only: run_config_t
-  use io_system, only: ignore_file_size_signal
+  use io_system, only: ignore_file_size_signal, guard_standard_streams, write_standard_output, &
+                       standard_output_lost
   use io_namelist, only: nml_value_t, read_real_token, NUMBER_OK
   implicit none (type, external)
 
@@ -26,6 +29,8 @@ program slidesim
 
   ! a write beyond the file-size limit then fails and is reported (exit 3)
   call ignore_file_size_signal()
+  ! a closed pipe or stream on standard output is reported (exit 3), not a kill part way
+  call guard_standard_streams()
   cli%output = ''
   cli%summary_json = ''
   allocate (character(len=1) :: overrides(0))
@@ -56,11 +61,11 @@ program slidesim
     case ('-h', '--help')
       call no_value()
       call print_help()
-      stop
+      call end_with_output_checked()
     case ('-V', '--version')
       call no_value()
-      print '(a)', 'slidesim '//slidesim_version
-      stop
+      call write_standard_output('slidesim '//slidesim_version)
+      call end_with_output_checked()
     case ('-q', '--quiet')
       call no_value()
       call set_verbosity(0)
@@ -96,11 +101,11 @@ program slidesim
         call scenario_template(value, template, found)
         if (.not. found) call usage_error('--default-input '//value//': no such scenario; scenarios:'// &
                                           scenario_list())
-        print '(a)', template
+        call write_standard_output(template)
       else
-        print '(a)', default_input()
+        call write_standard_output(default_input())
       end if
-      stop
+      call end_with_output_checked()
     case default
       call usage_error('unknown option "'//arg//'"')
     end select
@@ -120,6 +125,7 @@ program slidesim
     case default; stop 2, quiet=.true.
     end select
   end if
+  call end_with_output_checked()
 
 contains
 
@@ -168,37 +174,51 @@ contains
   end function scenario_list
 
   subroutine print_help()
-    print '(a)', 'usage: slidesim [options] [input.nml | -]'
-    print '(a)', ''
-    print '(a)', 'Runs the scenario named in &run of the namelist file input.nml (- reads it'
-    print '(a)', 'from standard input) and writes its results to an HDF5 file (&run output,'
-    print '(a)', 'default <scenario>.h5). Without an input file it runs the built-in default'
-    print '(a)', 'input. See docs/inputs.md for every input variable and docs/outputs.md for'
-    print '(a)', 'the result file layout. Options take their value as the next argument or'
-    print '(a)', 'after "=" (--output=FILE).'
-    print '(a)', ''
-    print '(a)', 'options:'
-    print '(a)', '  -o, --output FILE         write the results to FILE (overrides &run output)'
-    print '(a)', '  --set GROUP%VAR=VALUE     set or replace a variable of the input, checked like'
-    print '(a)', '                            the file (repeatable): --set solver%rtol=1e-8'
-    print '(a)', '  --check                   read and check the input, build the models, write'
-    print '(a)', '                            nothing; prints "input ok"'
-    print '(a)', '  --summary-json FILE       also write the summary''s numbers as JSON to FILE'
-    print '(a)', '  --default-input [SCENARIO] print the built-in default input, or a commented'
-    print '(a)', '                            template of SCENARIO'
-    print '(a)', '  --progress SECONDS        wall-clock seconds between progress lines of long'
-    print '(a)', '                            runs (default 2)'
-    print '(a)', '  -q, --quiet               no progress messages'
-    print '(a)', '  -h, --help                this help'
-    print '(a)', '  -V, --version             the version'
-    print '(a)', ''
-    print '(a)', 'scenarios:'
+    call write_standard_output('usage: slidesim [options] [input.nml | -]')
+    call write_standard_output('')
+    call write_standard_output('Runs the scenario named in &run of the namelist file input.nml (- reads it')
+    call write_standard_output('from standard input) and writes its results to an HDF5 file (&run output,')
+    call write_standard_output('default <scenario>.h5). Without an input file it runs the built-in default')
+    call write_standard_output('input. See docs/inputs.md for every input variable and docs/outputs.md for')
+    call write_standard_output('the result file layout. Options take their value as the next argument or')
+    call write_standard_output('after "=" (--output=FILE).')
+    call write_standard_output('')
+    call write_standard_output('options:')
+    call write_standard_output('  -o, --output FILE         write the results to FILE (overrides &run output)')
+    call write_standard_output('  --set GROUP%VAR=VALUE     set or replace a variable of the input, checked like')
+    call write_standard_output('                            the file (repeatable): --set solver%rtol=1e-8')
+    call write_standard_output('  --check                   read and check the input, build the models, write')
+    call write_standard_output('                            nothing; prints "input ok"')
+    call write_standard_output('  --summary-json FILE       also write the summary''s numbers as JSON to FILE')
+    call write_standard_output('  --default-input [SCENARIO] print the built-in default input, or a commented')
+    call write_standard_output('                            template of SCENARIO')
+    call write_standard_output('  --progress SECONDS        wall-clock seconds between progress lines of long')
+    call write_standard_output('                            runs (default 2)')
+    call write_standard_output('  -q, --quiet               no progress messages')
+    call write_standard_output('  -h, --help                this help')
+    call write_standard_output('  -V, --version             the version')
+    call write_standard_output('')
+    call write_standard_output('scenarios:')
     call print_scenarios()
-    print '(a)', ''
-    print '(a)', 'exit status: 0 done; 1 bad command line or input (nothing written);'
-    print '(a)', '2 the run failed part way (result file kept, marked incomplete);'
-    print '(a)', '3 a file could not be read or written (nothing kept).'
+    call write_standard_output('')
+    call write_standard_output('exit status: 0 done; 1 bad command line or input (nothing written);')
+    call write_standard_output('2 the run failed part way (result file kept, marked incomplete);')
+    call write_standard_output('3 a file could not be read or written (nothing kept).')
   end subroutine print_help
+
+  !> Ends with exit status 0, or 3 if a line of standard output was lost:
+  !> the result files are complete (the summary is printed after they are
+  !> closed and renamed), but what was printed is not.
+  subroutine end_with_output_checked()
+    character(len=:), allocatable :: reason
+    if (standard_output_lost(reason)) then
+      call log_error('cannot write to standard output: '//reason//'; what slidesim printed there is '// &
+                     'incomplete (result files written by this run are complete; --summary-json FILE '// &
+                     'writes the summary to a file)')
+      stop 3, quiet=.true.
+    end if
+    stop
+  end subroutine end_with_output_checked
 
   subroutine usage_error(message)
     character(len=*), intent(in) :: message

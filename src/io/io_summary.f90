@@ -7,11 +7,11 @@
 !>    "result_file": ..., "values": {key: number|string|[numbers]|[{...}]},
 !>    "units": {key: UDUNITS/pint unit}}
 module io_summary
-  use, intrinsic :: iso_fortran_env, only: output_unit
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use base_kinds, only: wp
   use base_text, only: format_real, format_integer
   use base_status, only: status_t, set_status, STATUS_IO
+  use io_system, only: write_standard_output
   implicit none (type, external)
   private
   public :: summary_t, degrees, standard_g, engineering
@@ -173,16 +173,15 @@ contains
     call push(self, e)
   end subroutine summary_add_line
 
-  !> The printed summary: the heading, then one line per entry
-  !> ("  label               value(s) unit"); tables are left to the caller.
-  subroutine summary_print(self, unit)
+  !> The printed summary on standard output: the heading, then one line per
+  !> entry ("  label               value(s) unit"); tables are left to the
+  !> caller. A line that cannot be written is remembered (io_system's
+  !> standard_output_lost), and the command ends with exit status 3.
+  subroutine summary_print(self)
     class(summary_t), intent(in) :: self
-    integer, intent(in), optional :: unit
-    integer :: out, k, i
+    integer :: k, i
     character(len=:), allocatable :: line
-    out = output_unit
-    if (present(unit)) out = unit
-    write (out, '(a)') self%heading
+    call write_standard_output(self%heading)
     do k = 1, self%n
       associate (e => self%entries(k))
         select case (e%kind)
@@ -198,15 +197,14 @@ contains
             end if
           end do
           if (len(e%print_units) > 0 .and. e%print_units /= '1') line = line//' '//e%print_units
-          write (out, '(a)') line
+          call write_standard_output(line)
         case (KIND_TEXT)
-          write (out, '(a)') '  '//e%label//repeat(' ', max(1, label_width - len(e%label)))//e%text
+          call write_standard_output('  '//e%label//repeat(' ', max(1, label_width - len(e%label)))//e%text)
         case (KIND_LINE)
-          write (out, '(a)') e%text
+          call write_standard_output(e%text)
         end select
       end associate
     end do
-    flush (out)   ! the summary complete before any message on standard error
   end subroutine summary_print
 
   !> Writes the summary as JSON to `path` (STATUS_IO if it cannot).

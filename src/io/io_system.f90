@@ -1,17 +1,29 @@
 !> The few operating-system services the file boundary needs, through the C
 !> library (POSIX): a new file with a unique name (mkstemps), removing and
 !> renaming files, the text of the last system error, whether two paths name
-!> the same file (realpath), and ignoring SIGXFSZ so that a write beyond the
-!> file-size limit fails with an error we report instead of killing us.
+!> the same file (realpath), ignoring SIGXFSZ so that a write beyond the
+!> file-size limit fails with an error we report instead of killing us, and
+!> standard output written so that a lost line is known (a closed pipe, a
+!> full disk, a closed stream: `guard_standard_streams`, `write_standard_output`).
 module io_system
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_funptr, c_intptr_t, &
-                                         c_associated, c_f_pointer, c_null_ptr, c_null_funptr
+                                         c_associated, c_f_pointer, c_null_ptr, c_null_funptr, c_size_t, &
+                                         c_loc
   implicit none (type, external)
   private
   public :: create_unique_file, remove_file, rename_file, system_error_text, same_file, &
             ignore_file_size_signal, process_id
+  public :: guard_standard_streams, write_standard_output, standard_output_lost
 
-  integer(c_int), parameter :: sigxfsz = 25   !< Linux (x86-64, arm64)
+  integer(c_int), parameter :: sigxfsz = 25, sigpipe = 13   !< Linux (x86-64, arm64)
+  integer(c_int), parameter :: eintr = 4
+
+  !> What became of standard output: a line that could not be written (or the
+  !> stream closed at the start) and why. Process state, not simulation state:
+  !> set by guard_standard_streams and write_standard_output, which only the
+  !> main thread calls (summaries are printed after the parallel parts).
+  logical :: output_lost = .false.
+  character(len=:), allocatable :: output_error
 
   interface
     function c_mkstemps(template, suffix_length) bind(C, name='mkstemps') result(fd)
@@ -45,6 +57,18 @@ module io_system
       character(kind=c_char), intent(in) :: old(*), new(*)
       integer(c_int) :: rc
     end function c_rename
+    function c_write(fd, buffer, count) bind(C, name='write') result(written)
+      import :: c_int, c_ptr, c_size_t
+      integer(c_int), value :: fd
+      type(c_ptr), value :: buffer
+      integer(c_size_t), value :: count
+      integer(c_size_t) :: written   ! ssize_t: -1 on an error
+    end function c_write
+    function c_dup(fd) bind(C, name='dup') result(new_fd)
+      import :: c_int
+      integer(c_int), value :: fd
+      integer(c_int) :: new_fd
+    end function c_dup
     function c_getpid() bind(C, name='getpid') result(pid)
       import :: c_int
       integer(c_int) :: pid
@@ -163,6 +187,73 @@ contains
     type(c_funptr) :: old
     old = c_signal(sigxfsz, transfer(1_c_intptr_t, c_null_funptr))   ! SIG_IGN
   end subroutine ignore_file_size_signal
+
+  !> Called once at the start. A write to a closed pipe (slidesim ... | head)
+  !> then fails with EPIPE, which write_standard_output reports, instead of
+  !> SIGPIPE killing the program part way (leaving its temporary result file).
+  !> Standard streams closed at the start (slidesim >&-) are opened on
+  !> /dev/null, so that no file opened later takes their number (a result file
+  !> would receive what C libraries write to the stream); a closed standard
+  !> output counts as lost.
+  subroutine guard_standard_streams()
+    type(c_funptr) :: old
+    integer(c_int) :: fd, copy, rc
+    integer :: unit, ios
+    old = c_signal(sigpipe, transfer(1_c_intptr_t, c_null_funptr))   ! SIG_IGN
+    do fd = 0, 2
+      copy = c_dup(fd)
+      if (copy >= 0) then
+        rc = c_close(copy)
+        cycle
+      end if
+      ! the lowest free number is fd (the lower ones are open): kept open to the end
+      open (newunit=unit, file='/dev/null', action='readwrite', iostat=ios)
+      if (fd == 1) call lose_output('standard output is closed')
+    end do
+  end subroutine guard_standard_streams
+
+  !> Writes `text` and a line end to standard output at once (unbuffered, so
+  !> that it stays in order with the messages on standard error). gfortran
+  !> ignores failed writes to its preconnected units, so summaries go through
+  !> here: a failure is remembered (standard_output_lost) and nothing more is
+  !> written after it.
+  subroutine write_standard_output(text)
+    character(len=*), intent(in) :: text
+    character(kind=c_char), allocatable, target :: buffer(:)
+    integer(c_size_t) :: done, written
+    integer(c_int), pointer :: errno
+    if (output_lost) return
+    allocate (buffer(len(text) + 1))
+    buffer = transfer(text//new_line('a'), buffer)
+    call c_f_pointer(c_errno_location(), errno)
+    done = 0
+    do while (done < size(buffer, kind=c_size_t))
+      written = c_write(1_c_int, c_loc(buffer(done + 1)), size(buffer, kind=c_size_t) - done)
+      if (written < 0) then
+        if (errno == eintr) cycle
+        call lose_output(system_error_text())
+        return
+      end if
+      done = done + written
+    end do
+  end subroutine write_standard_output
+
+  !> Was a line of standard output lost, and why (set by the first loss)?
+  logical function standard_output_lost(reason)
+    character(len=:), allocatable, intent(out), optional :: reason
+    standard_output_lost = output_lost
+    if (present(reason)) then
+      reason = ''
+      if (allocated(output_error)) reason = output_error
+    end if
+  end function standard_output_lost
+
+  subroutine lose_output(reason)
+    character(len=*), intent(in) :: reason
+    output_lost = .true.
+    output_error = reason
+    if (len(reason) == 0) output_error = 'write error'
+  end subroutine lose_output
 
   integer function process_id()
     process_id = int(c_getpid())

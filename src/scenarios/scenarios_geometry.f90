@@ -4,7 +4,6 @@
 !> frames along it, the curvature chi, its derivative chi_u and the arc length.
 !> Layout and units: docs/geometry.md.
 module scenarios_geometry
-  use, intrinsic :: iso_fortran_env, only: output_unit
   use base_kinds, only: wp
   use base_text, only: format_integer
   use base_status, only: status_t, prefix_status
@@ -17,6 +16,7 @@ module scenarios_geometry
   use io_run_config, only: run_config_t
   use io_geometry_config, only: read_geometry_config, geometry_groups
   use io_hdf5, only: result_file_t, run_outcome
+  use io_system, only: write_standard_output
   use io_summary, only: summary_t, engineering
   use io_surface_grid, only: write_surface_grid, evenly_spaced
   use io_xdmf, only: xdmf_t
@@ -75,9 +75,9 @@ contains
     complete = complete .and. work%ok()   ! finish refuses a file with NaN or Inf
     call summary%print()
     if (complete) then
-      write (output_unit, '(a)') '  results                   '//file%final_path()
+      call write_standard_output('  results                   '//file%final_path())
     else
-      write (output_unit, '(a)') '  results (INCOMPLETE)      '//file%final_path()
+      call write_standard_output('  results (INCOMPLETE)      '//file%final_path())
     end if
     if (allocated(run%summary_json)) then
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, &

@@ -8,7 +8,6 @@
 !> values at every station and segment; the body-parameter study of table
 !> 4.10 on request.
 module scenarios_identify_rider
-  use, intrinsic :: iso_fortran_env, only: output_unit
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
   use base_text, only: format_integer, format_short
@@ -314,7 +313,7 @@ contains
       end do
     end if
     call summary%add_results(path, complete)
-    call summary%print(output_unit)
+    call summary%print()
     if (allocated(run%summary_json)) then
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
     end if

@@ -8,7 +8,6 @@
 !> measured and simulated values at every section and segment; the weight
 !> sweep of table 4.2 on request.
 module scenarios_identify_water
-  use, intrinsic :: iso_fortran_env, only: output_unit
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
   use base_text, only: format_integer, format_short
@@ -241,7 +240,7 @@ contains
       end do
     end if
     call summary%add_results(path, complete)
-    call summary%print(output_unit)
+    call summary%print()
     if (allocated(run%summary_json)) then
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
     end if

@@ -2,7 +2,6 @@
 !> the start, open the result file, run through the integration driver
 !> (outputs, events, progress lines, runaway guards), write, summarize.
 module scenarios_mechanism
-  use, intrinsic :: iso_fortran_env, only: output_unit
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status
   use base_log, only: log_info
@@ -15,6 +14,7 @@ module scenarios_mechanism
   use io_solver_config, only: solver_config_t, check_output_count
   use io_mechanism_config, only: write_mechanism_series
   use io_hdf5, only: result_file_t, run_outcome
+  use io_system, only: write_standard_output
   use io_summary, only: summary_t, degrees, engineering
   use io_surface_grid, only: write_surface_grid_around
   use io_xdmf, only: xdmf_t
@@ -197,9 +197,9 @@ contains
     call summary%add('cpu_time', 'CPU time', cpu, 's')
     call summary%print()
     if (complete) then
-      write (output_unit, '(a)') '  results                   '//path
+      call write_standard_output('  results                   '//path)
     else
-      write (output_unit, '(a)') '  results (INCOMPLETE)      '//path
+      call write_standard_output('  results (INCOMPLETE)      '//path)
     end if
     if (allocated(run%summary_json)) then
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)

@@ -4,7 +4,6 @@
 !> (docs/design.md). Writes /optimize with the start and optimised
 !> designs, every ride's figures and samples before and after.
 module scenarios_optimize
-  use, intrinsic :: iso_fortran_env, only: output_unit
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
@@ -22,6 +21,7 @@ module scenarios_optimize
   use io_run_config, only: run_config_t
   use io_optimization_config, only: read_optimization_config
   use io_hdf5, only: result_file_t, run_outcome
+  use io_system, only: write_standard_output
   use io_summary, only: summary_t, degrees
   implicit none (type, external)
   private
@@ -330,11 +330,11 @@ contains
       call summary%add_line('    '//fixed(table(1, k))//'      '//fixed(table(2, k))//fixed(table(3, k))// &
         '        '//lever_text(table(4, k))//lever_text(table(5, k)))
     end do
-    call summary%print(output_unit)
+    call summary%print()
     if (complete) then
-      write (output_unit, '(a)') '  results                   '//path
+      call write_standard_output('  results                   '//path)
     else
-      write (output_unit, '(a)') '  results (INCOMPLETE)      '//path
+      call write_standard_output('  results (INCOMPLETE)      '//path)
     end if
     if (allocated(run%summary_json)) then
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)

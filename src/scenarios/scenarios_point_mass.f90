@@ -1,7 +1,6 @@
 !> Scenario `point_mass`: a point mass sliding under gravity on an elementary
 !> surface placed anywhere in space, optionally with viscous or Coulomb friction.
 module scenarios_point_mass
-  use, intrinsic :: iso_fortran_env, only: output_unit
   use base_kinds, only: wp
   use base_status, only: status_t
   use base_log, only: log_info
@@ -16,6 +15,7 @@ module scenarios_point_mass
   use io_geometry_config, only: geometry_groups
   use io_point_mass_config, only: point_mass_config_t, read_point_mass_config
   use io_hdf5, only: result_file_t, run_outcome, units_per_second
+  use io_system, only: write_standard_output
   use io_summary, only: summary_t, standard_g, engineering
   use io_surface_grid, only: write_surface_grid_around
   use io_xdmf, only: xdmf_t
@@ -226,9 +226,9 @@ contains
     call summary%add('cpu_time', 'CPU time', cpu, 's')
     call summary%print()
     if (complete) then
-      write (output_unit, '(a)') '  results                   '//path
+      call write_standard_output('  results                   '//path)
     else
-      write (output_unit, '(a)') '  results (INCOMPLETE)      '//path
+      call write_standard_output('  results (INCOMPLETE)      '//path)
     end if
     if (allocated(run%summary_json)) then
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)

@@ -1,12 +1,11 @@
 !> The list of runnable scenarios, the built-in default input, and the one entry
 !> point that reads an input, checks &run and runs the scenario it names.
 module scenarios_registry
-  use, intrinsic :: iso_fortran_env, only: output_unit
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_IO
   use base_version, only: slidesim_version
   use base_text, only: format_integer
   use io_input, only: input_text_t, load_input_file, group_present, where_given
-  use io_system, only: create_unique_file, remove_file, same_file, process_id
+  use io_system, only: create_unique_file, remove_file, same_file, process_id, write_standard_output
   use io_builtin_inputs, only: builtin_input
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
@@ -84,7 +83,7 @@ contains
   subroutine print_scenarios()
     integer :: i
     do i = 1, size(scenario_names)
-      write (output_unit, '(2x, a16, 2x, a)') scenario_names(i), trim(scenario_summaries(i))
+      call write_standard_output('  '//scenario_names(i)//'  '//trim(scenario_summaries(i)))
     end do
   end subroutine print_scenarios
 
@@ -188,7 +187,7 @@ contains
     case ('identify_water')
       call run_identify_water(input, run, status)
     end select
-    if (status%ok() .and. run%check_only) write (output_unit, '(a)') input%name//': input ok (scenario '// &
-      trim(run%scenario)//'; results would go to '//trim(run%output)//')'
+    if (status%ok() .and. run%check_only) call write_standard_output(input%name//': input ok (scenario '// &
+      trim(run%scenario)//'; results would go to '//trim(run%output)//')')
   end subroutine run_input
 end module scenarios_registry

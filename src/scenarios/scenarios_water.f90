@@ -3,7 +3,6 @@
 !> a report at stations. The slide is a tube from &surface (kind = 'tube' or
 !> 'slide' with geometry_file) or a closed-form tube from &channel.
 module scenarios_water
-  use, intrinsic :: iso_fortran_env, only: output_unit
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use base_log, only: log_info, log_warning
@@ -22,6 +21,7 @@ module scenarios_water
   use io_water_config, only: water_config_t, read_water_config, read_channel_config
   use io_hdf5, only: result_file_t, run_outcome
   use io_water_results, only: write_water_results
+  use io_system, only: write_standard_output
   use io_summary, only: summary_t, degrees
   use base_text, only: format_short, format_integer
   use io_surface_grid, only: write_surface_grid, evenly_spaced
@@ -264,6 +264,7 @@ contains
     type(summary_t) :: summary
     real(wp), allocatable :: table(:, :)
     character(len=:), allocatable :: uu, vu
+    character(len=100) :: line
     integer :: n, i
     type(water_series_t), pointer :: s
     s => result%series
@@ -312,22 +313,23 @@ contains
     end if
     call summary%print()
     if (size(s%stations) > 0) then
-      write (output_unit, '(a)') '  station  arc length    time   v middle   v edges (right, left)   speed   height' &
-        //'   width'
-      write (output_unit, '(a)') '                  m        s'//column(vu)//column(vu)//column(vu)// &
-        '      m/s        m        m'
+      call write_standard_output('  station  arc length    time   v middle   v edges (right, left)   speed   height' &
+        //'   width')
+      call write_standard_output('                  m        s'//column(vu)//column(vu)//column(vu)// &
+        '      m/s        m        m')
       do i = 1, size(s%stations)
         if (s%stations(i)%reached) then
-          write (output_unit, '(2x, i5, f12.3, f9.4, 3f11.4, f9.4, 2f9.5)') i, table(1:8, i)
+          write (line, '(2x, i5, f12.3, f9.4, 3f11.4, f9.4, 2f9.5)') i, table(1:8, i)
         else
-          write (output_unit, '(2x, i5, a)') i, '   (not reached)'
+          write (line, '(2x, i5, a)') i, '   (not reached)'
         end if
+        call write_standard_output(trim(line))
       end do
     end if
     if (complete) then
-      write (output_unit, '(a)') '  results                   '//path
+      call write_standard_output('  results                   '//path)
     else
-      write (output_unit, '(a)') '  results (INCOMPLETE)      '//path
+      call write_standard_output('  results (INCOMPLETE)      '//path)
     end if
     if (allocated(run%summary_json)) then
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
