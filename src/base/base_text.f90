@@ -65,22 +65,67 @@ contains
     end if
   end function format_real
 
-  !> x in exponent form with `digits` significant digits.
+  !> x in exponent form with `digits` significant digits (left-justified).
   pure subroutine write_digits(x, digits, buffer)
     real(wp), intent(in) :: x
     integer, intent(in) :: digits
     character(len=*), intent(out) :: buffer
     write (buffer, '(es40.' // format_integer(digits - 1) // ')') x
+    buffer = with_exponent_letter(trim(adjustl(buffer)))
   end subroutine write_digits
 
+  !> An exponent form always with its E: Fortran writes an exponent of three
+  !> digits without it (1.8+308, 4.9-324), which is no number in JSON and an
+  !> odd one in a message.
+  pure function with_exponent_letter(text) result(fixed)
+    character(len=*), intent(in) :: text
+    character(len=:), allocatable :: fixed
+    integer :: sign_at
+    sign_at = scan(text, '+-', back=.true.)   ! the exponent's sign (not a leading minus)
+    if (index(text, 'E') > 0 .or. sign_at <= 1) then
+      fixed = text
+    else
+      fixed = text(:sign_at - 1)//'E'//text(sign_at:)
+    end if
+  end function with_exponent_letter
+
+  !> Does the exponent form in `buffer` read back as x? A text beyond the
+  !> largest double (few digits of x near huge round up: 2.E+308) does not,
+  !> and is not read: reading it overflows, which Debug builds trap (inside
+  !> strtod).
   pure logical function reads_back(buffer, x)
     character(len=*), intent(in) :: buffer
     real(wp), intent(in) :: x
     real(wp) :: back
     integer :: ios
+    reads_back = .false.
+    if (beyond_huge(buffer)) return
     read (buffer, *, iostat=ios) back
     reads_back = ios == 0 .and. back == x
   end function reads_back
+
+  !> Is the exponent form (write_digits, at most 17 digits) at least huge + half its
+  !> last place, 1.79769313486231580793...E+308 (what reads as Inf)? With
+  !> at most 17 digits: exponent 308 and digits above 17976931348623158.
+  pure logical function beyond_huge(buffer)
+    character(len=*), intent(in) :: buffer
+    character(len=*), parameter :: huge_digits = '17976931348623158'
+    character(len=len(huge_digits)) :: digits
+    integer :: e, i, n
+    beyond_huge = .false.
+    e = index(buffer, 'E')
+    if (e == 0) return
+    if (buffer(e + 1:) /= '+308') return
+    digits = repeat('0', len(digits))
+    n = 0
+    do i = 1, e - 1
+      if (buffer(i:i) >= '0' .and. buffer(i:i) <= '9' .and. n < len(digits)) then
+        n = n + 1
+        digits(n:n) = buffer(i:i)
+      end if
+    end do
+    beyond_huge = digits > huge_digits   ! (equal length: lexical order is numeric order)
+  end function beyond_huge
 
   pure integer function exponent10(x)
     real(wp), intent(in) :: x
@@ -137,7 +182,7 @@ contains
       if (text(1:2) == '-.') text = '-0'//text(2:)
     else
       write (buffer, '(es12.5)') x
-      text = trim(adjustl(buffer))
+      text = with_exponent_letter(trim(adjustl(buffer)))
     end if
   end function format_short
 

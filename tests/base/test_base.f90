@@ -4,11 +4,12 @@ program test_base
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_SOLVER
   use base_sha256, only: sha256_hex
-  use base_text, only: format_real, format_integer
+  use base_text, only: format_real, format_integer, format_short
   use base_vector, only: cross, skew, unit_vector, rot_x, rot_y, rot_z, rotation_xyz, identity3, outer3
   use testing, only: check, check_close, check_close_array, finish_tests
   use, intrinsic :: iso_fortran_env, only: int64
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_positive_inf, ieee_negative_inf, &
+                                          ieee_quiet_nan
   implicit none (type, external)
 
   real(wp), parameter :: tol = 1e-15_wp   ! a few roundings of O(1) numbers
@@ -103,6 +104,7 @@ contains
     call compare(0.0_wp)
     call compare(tiny(x))
     call check(mismatches == 0, 'format_real: the fewest digits by bisection as digit by digit')
+    call check_extremes()
     mismatches = 0
     do i = -1, 1, 2
       do k = 0, 62
@@ -114,6 +116,40 @@ contains
     call compare_integer(0)
     call check(mismatches == 0, 'format_integer as an internal write (i0)')
   end subroutine check_number_texts
+
+  !> The extremes, in the Debug build too (it traps overflow, also inside
+  !> strtod: reading back 2.E+308, few digits of huge, trapped there): the
+  !> texts are Python's repr of the same doubles (the shortest that reads
+  !> back), exponents of three digits with their E (JSON numbers);
+  !> format_short's exponent form likewise.
+  subroutine check_extremes()
+    real(wp) :: x
+    call expect(huge(x), '1.7976931348623157E+308')
+    call expect(-huge(x), '-1.7976931348623157E+308')
+    x = huge(x)
+    call expect(x - spacing(x), '1.7976931348623155E+308')   ! (gfortran 12 folds nearest(huge, -1) to 2**1023)
+    call expect(1.5_wp*scale(1.0_wp, 1023), '1.348269851146737E+308')
+    call expect(1e308_wp, '1.0E+308')
+    call expect(1e100_wp, '1.0E+100')
+    call expect(1e-100_wp, '1.0E-100')
+    call expect(tiny(x), '2.2250738585072014E-308')
+    call expect(1e-320_wp, '1.0E-320')
+    call expect(-1.5e-310_wp, '-1.5E-310')
+    call expect(scale(1.0_wp, -1074), '5.0E-324')
+    call expect(scale(3.0_wp, -1074), '1.5E-323')
+    call expect(ieee_value(x, ieee_positive_inf), 'Inf')
+    call expect(ieee_value(x, ieee_negative_inf), '-Inf')
+    call expect(ieee_value(x, ieee_quiet_nan), 'NaN')
+    call check(format_short(huge(x)) == '1.79769E+308', 'format_short(huge) = '//format_short(huge(x)))
+    call check(format_short(-1e-320_wp) == '-9.99989E-321', 'format_short(-1e-320) = '//format_short(-1e-320_wp))
+    call check(format_short(1e-7_wp) == '1.00000E-07', 'format_short(1e-7) = '//format_short(1e-7_wp))
+  end subroutine check_extremes
+
+  subroutine expect(x, text)
+    real(wp), intent(in) :: x
+    character(len=*), intent(in) :: text
+    call check(format_real(x) == text, 'format_real: '//text//' as '//format_real(x))
+  end subroutine expect
 
   subroutine compare(x)
     real(wp), intent(in) :: x
@@ -148,6 +184,8 @@ contains
       if (ios == 0 .and. back == x) exit
     end do
     text = trim(adjustl(buffer))
+    e = scan(text, '+-', back=.true.)   ! Fortran writes a 3-digit exponent without its E
+    if (index(text, 'E') == 0) text = text(:e - 1)//'E'//text(e:)
     e = index(text, '.E')
     if (e > 0) text = text(:e)//'0'//text(e + 1:)
     e = 0
