@@ -9,19 +9,27 @@
 !> against differences of the pose. Rolling (E.10-E.16): u2, v2 integrated from
 !> u2' = A^-1 B u1' along the motion; no slip (1W_1D = 2W_2D), u2'' (E.12)
 !> against differences of u2', and the power of E.16.
-program test_velocity_contact
+!>
+!> The motions, surfaces and element live in a module (not in the program):
+!> the pose callbacks handed to check_element are then module procedures,
+!> not internal ones, which gfortran would call through trampolines on an
+!> executable stack (refused by hardened kernels).
+module velocity_contact_motion
   use base_kinds, only: wp
   use base_status, only: status_t
   use base_vector, only: cross, rot_x, rot_z
-  use testing, only: check, finish_tests
-  use element_checks, only: check_element, frame_motion, scalar_motion, motion_step, fd_tol, d4
+  use testing, only: check
+  use element_checks, only: frame_motion, scalar_motion, motion_step, fd_tol, d4
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_elementary, only: ellipsoid_t, paraboloid_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use kinetostatics_state, only: frame_state_t, scalar_state_t
   use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
-  use contact_velocity_level, only: velocity_contact_t, new_velocity_contact
+  use contact_velocity_level, only: velocity_contact_t
   implicit none (type, external)
+  private
+  public :: s1, s2, element, st, rolling_t0, times, side_1, side_2
+  public :: relative_pose_rotation, consistent_pose, pose_rates, rolling_pose, no_slip
 
   ! frames: 1 = K_1 (input), 2 = K_2 (output), 3 = K_1D (input, the surface joint on
   ! S1 of K_1); scalars 1..5 = u1, v1, u2, v2, phi, 6..11 = pose
@@ -31,26 +39,7 @@ program test_velocity_contact
   type(paraboloid_t) :: s2
   type(velocity_contact_t) :: element
   type(status_t) :: st
-  integer :: trial
   real(wp) :: rolling_t0
-
-  s1 = ellipsoid_t(1.2_wp, 0.8_wp, 0.6_wp, st)
-  s2 = paraboloid_t(0.7_wp, 1.3_wp, 1.0_wp, st)
-  call check(st%ok(), 'surfaces')
-  do trial = 1, size(times)
-    element = new_velocity_contact('vc', 1, 3, 2, s1, side_1, s2, side_2, [1, 2, 3, 4, 5], [6, 7, 8, 9, 10, 11], &
-                                   relative_pose_rotation(times(trial)), .false.)
-    call check_element('velocity-level contact, sliding', element, [1, 3], [3, 4, 5], [2], [integer ::], &
-                       times(trial), consistent_pose, 11)
-    call pose_rates(times(trial))
-    rolling_t0 = times(trial)
-    element = new_velocity_contact('vc', 1, 3, 2, s1, side_1, s2, side_2, [1, 2, 3, 4, 5], [6, 7, 8, 9, 10, 11], &
-                                   relative_pose_rotation(times(trial)), .true.)
-    call check_element('velocity-level contact, rolling', element, [1, 3], [1, 2, 5], [2], [3, 4], times(trial), &
-                       rolling_pose, 11)
-    call no_slip(times(trial))
-  end do
-  call finish_tests('test_velocity_contact')
 
 contains
 
@@ -221,4 +210,34 @@ contains
     ref = norm2(frames(1)%v) + norm2(frames(1)%omega)*norm2(e%joint_1%p) + norm2(frames(3)%v)
     call check(norm2(slip) <= 1e-14_wp*ref, 'rolling: no slip between the material points at the contact')
   end subroutine no_slip
+end module velocity_contact_motion
+
+program test_velocity_contact
+  use base_kinds, only: wp
+  use testing, only: check, finish_tests
+  use element_checks, only: check_element
+  use geometry_elementary, only: ellipsoid_t, paraboloid_t
+  use contact_velocity_level, only: new_velocity_contact
+  use velocity_contact_motion, only: s1, s2, element, st, rolling_t0, times, side_1, side_2, &
+    relative_pose_rotation, consistent_pose, pose_rates, rolling_pose, no_slip
+  implicit none (type, external)
+  integer :: trial
+
+  s1 = ellipsoid_t(1.2_wp, 0.8_wp, 0.6_wp, st)
+  s2 = paraboloid_t(0.7_wp, 1.3_wp, 1.0_wp, st)
+  call check(st%ok(), 'surfaces')
+  do trial = 1, size(times)
+    element = new_velocity_contact('vc', 1, 3, 2, s1, side_1, s2, side_2, [1, 2, 3, 4, 5], [6, 7, 8, 9, 10, 11], &
+                                   relative_pose_rotation(times(trial)), .false.)
+    call check_element('velocity-level contact, sliding', element, [1, 3], [3, 4, 5], [2], [integer ::], &
+                       times(trial), consistent_pose, 11)
+    call pose_rates(times(trial))
+    rolling_t0 = times(trial)
+    element = new_velocity_contact('vc', 1, 3, 2, s1, side_1, s2, side_2, [1, 2, 3, 4, 5], [6, 7, 8, 9, 10, 11], &
+                                   relative_pose_rotation(times(trial)), .true.)
+    call check_element('velocity-level contact, rolling', element, [1, 3], [1, 2, 5], [2], [3, 4], times(trial), &
+                       rolling_pose, 11)
+    call no_slip(times(trial))
+  end do
+  call finish_tests('test_velocity_contact')
 end program test_velocity_contact
