@@ -6,7 +6,7 @@ module base_text
   use base_kinds, only: wp
   implicit none (type, external)
   private
-  public :: format_real, format_short, format_vector, format_integer, lower
+  public :: format_real, format_short, format_vector, format_integer, format_with, lower
 
 contains
 
@@ -185,6 +185,17 @@ contains
       text = with_exponent_letter(trim(adjustl(buffer)))
     end if
   end function format_short
+
+  !> x written with one Fortran edit descriptor (`edit`: f11.3, es12.4), its
+  !> field kept (the columns of printed tables), trailing blanks dropped.
+  pure function format_with(x, edit) result(text)
+    real(wp), intent(in) :: x
+    character(len=*), intent(in) :: edit
+    character(len=:), allocatable :: text
+    character(len=40) :: buffer
+    write (buffer, '('//edit//')') x
+    text = trim(buffer)
+  end function format_with
 
   pure function format_integer(i) result(text)
     integer, intent(in) :: i

@@ -10,11 +10,12 @@ module io_rider_identification_config
   use design_rider_identification, only: rider_measurements_t, rider_fit_options_t
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, bounds_t, format_real
   use io_csv, only: read_csv_table
+  use io_measured_segments, only: read_measured_segments
   implicit none (type, external)
   private
   public :: rider_identification_config_t, read_rider_identification_config
 
-  integer, parameter :: max_stations = 10000, max_segments = 1000
+  integer, parameter :: max_stations = 10000
 
   type :: rider_identification_config_t
     type(rider_measurements_t) :: data
@@ -34,15 +35,13 @@ contains
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
     character(len=1024) :: stations_file, segments_file
-    real(wp), allocatable :: table(:, :), s(:), pelvis(:), heels(:), back(:), a(:), b(:), w(:)
+    real(wp), allocatable :: table(:, :), s(:), pelvis(:), heels(:), back(:)
     real(wp), parameter :: big = 1e6_wp
     character(len=*), parameter :: names(18) = [character(len=20) :: 'stations_file', 'segments_file', &
       'station_arc_length', 'pelvis_angle', 'heels_angle', 'back_angle', 'segment_start', 'segment_end', &
       'segment_speed', 'weight', 'k2', 'lower', 'upper', 'threads', 'ftol', 'xtol', 'sensitivity', 'twin_mu']
     character(len=*), parameter :: station_names(4) = [character(len=18) :: 'station_arc_length', &
       'pelvis_angle', 'heels_angle', 'back_angle']
-    character(len=*), parameter :: segment_names(3) = [character(len=13) :: 'segment_start', 'segment_end', &
-      'segment_speed']
     integer :: k
 
     call open_group(input, 'identify', names, r, status)
@@ -118,39 +117,9 @@ contains
     end if
 
     ! the segments: a CSV file (start, end, speed) or the lists
-    if (len_trim(segments_file) > 0) then
-      do k = 1, size(segment_names)
-        if (r%has(trim(segment_names(k)))) then
-          call r%invalid(trim(segment_names(k)), 'given', 'the segments come from segments_file', status)
-          return
-        end if
-      end do
-      config%segments_file = input%resolve_path(segments_file)
-      call read_csv_table(config%segments_file, 3, 3, max_segments, [in_range(0.0_wp, big, 'm'), &
-                          in_range(0.0_wp, big, 'm'), above(0.0_wp, 100.0_wp, 'm/s')], table, status)
-      if (.not. status%ok()) then
-        call prefix_status(status, r%where('segments_file')//': &identify: segments_file')
-        return
-      end if
-      config%data%segment_start = table(1, :)
-      config%data%segment_end = table(2, :)
-      config%data%segment_speed = table(3, :)
-    else
-      config%segments_file = ''
-      call r%get_list('segment_start', a, max_segments, in_range(0.0_wp, big, 'm'), status)
-      call r%get_list('segment_end', b, max_segments, in_range(0.0_wp, big, 'm'), status)
-      call r%get_list('segment_speed', w, max_segments, above(0.0_wp, 100.0_wp, 'm/s'), status)
-      if (.not. status%ok()) return
-      if (config%twin) w = 0*a
-      if (size(b) /= size(a) .or. size(w) /= size(a)) then
-        call r%invalid('segment_end', format_integer(size(b))//' ends, '//format_integer(size(w))//' speeds', &
-                       'one end and one speed per segment start ('//format_integer(size(a))//')', status)
-        return
-      end if
-      config%data%segment_start = a
-      config%data%segment_end = b
-      config%data%segment_speed = w
-    end if
+    call read_measured_segments(input, r, segments_file, config%twin, config%data%segment_start, &
+                                config%data%segment_end, config%data%segment_speed, config%segments_file, status)
+    if (.not. status%ok()) return
     if (size(config%data%station_arc_length) + size(config%data%segment_start) == 0) then
       call r%invalid('station_arc_length', 'nothing', 'give stations or segments (or their CSV files)', status)
       return

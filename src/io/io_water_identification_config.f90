@@ -10,11 +10,12 @@ module io_water_identification_config
     SPEED_PASSAGE, MIDDLE_EDGES, MIDDLE_STREAMLINE
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, format_real
   use io_csv, only: read_csv_table
+  use io_measured_segments, only: read_measured_segments
   implicit none (type, external)
   private
   public :: water_identification_config_t, read_water_identification_config
 
-  integer, parameter :: max_sections = 10000, max_segments = 1000, max_weights = 100
+  integer, parameter :: max_sections = 10000, max_weights = 100
 
   type :: water_identification_config_t
     type(water_measurements_t) :: data
@@ -37,7 +38,7 @@ contains
     type(group_reader_t) :: r
     character(len=1024) :: sections_file, segments_file
     character(len=10) :: speed_kind, middle_kind
-    real(wp), allocatable :: table(:, :), s(:), v(:), a(:), b(:), w(:)
+    real(wp), allocatable :: table(:, :), s(:), v(:)
     real(wp), parameter :: big = 1e6_wp
     character(len=*), parameter :: names(19) = [character(len=18) :: 'sections_file', 'segments_file', &
       'section_arc_length', 'section_v', 'segment_start', 'segment_end', 'segment_speed', 'weight', 'k1', &
@@ -93,37 +94,9 @@ contains
     end if
 
     ! the segments: a CSV file (start, end, speed) or the lists
-    if (len_trim(segments_file) > 0) then
-      if (r%has('segment_start') .or. r%has('segment_end') .or. r%has('segment_speed')) then
-        call r%invalid('segment_start', 'given', 'the segments come from segments_file', status)
-        return
-      end if
-      config%segments_file = input%resolve_path(segments_file)
-      call read_csv_table(config%segments_file, 3, 3, max_segments, [in_range(0.0_wp, big, 'm'), &
-                          in_range(0.0_wp, big, 'm'), above(0.0_wp, 100.0_wp, 'm/s')], table, status)
-      if (.not. status%ok()) then
-        call prefix_status(status, r%where('segments_file')//': &identify: segments_file')
-        return
-      end if
-      config%data%segment_start = table(1, :)
-      config%data%segment_end = table(2, :)
-      config%data%segment_speed = table(3, :)
-    else
-      config%segments_file = ''
-      call r%get_list('segment_start', a, max_segments, in_range(0.0_wp, big, 'm'), status)
-      call r%get_list('segment_end', b, max_segments, in_range(0.0_wp, big, 'm'), status)
-      call r%get_list('segment_speed', w, max_segments, above(0.0_wp, 100.0_wp, 'm/s'), status)
-      if (.not. status%ok()) return
-      if (config%twin) w = 0*a
-      if (size(b) /= size(a) .or. size(w) /= size(a)) then
-        call r%invalid('segment_end', format_integer(size(b))//' ends, '//format_integer(size(w))//' speeds', &
-                       'one end and one speed per segment start ('//format_integer(size(a))//')', status)
-        return
-      end if
-      config%data%segment_start = a
-      config%data%segment_end = b
-      config%data%segment_speed = w
-    end if
+    call read_measured_segments(input, r, segments_file, config%twin, config%data%segment_start, &
+                                config%data%segment_end, config%data%segment_speed, config%segments_file, status)
+    if (.not. status%ok()) return
     if (size(config%data%section_arc_length) + size(config%data%segment_start) == 0) then
       call r%invalid('section_arc_length', 'nothing', 'give sections or segments (or their CSV files)', status)
       return

@@ -19,7 +19,7 @@ module io_xdmf
   use io_hdf5, only: result_file_t
   implicit none (type, external)
   private
-  public :: xdmf_t, xdmf_path
+  public :: xdmf_t, xdmf_path, attach_surface_view
 
   integer, parameter :: max_steps = 200   ! time steps of a temporal collection
 
@@ -225,6 +225,18 @@ contains
     call add(self, '</Xdmf>')
     call file%add_companion(xdmf_path(file%final_path()), self%xml(:self%used))
   end subroutine xdmf_attach
+
+  !> The view of one surface grid alone (`dataset`, e.g. the slide's
+  !> '/geometry/surface' of the identification scenarios), named `name`.
+  subroutine attach_surface_view(file, name, dataset, status)
+    type(result_file_t), intent(inout) :: file
+    character(len=*), intent(in) :: name, dataset
+    type(status_t), intent(inout) :: status
+    type(xdmf_t) :: xdmf
+    call xdmf%start(file%final_path())
+    call xdmf%surface(file, name, dataset)
+    call xdmf%attach(file, status)
+  end subroutine attach_surface_view
 
   subroutine add(self, line)
     class(xdmf_t), intent(inout) :: self

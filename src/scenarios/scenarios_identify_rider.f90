@@ -10,7 +10,7 @@
 module scenarios_identify_rider
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
-  use base_text, only: format_integer, format_short
+  use base_text, only: format_integer, format_short, format_with
   use base_log, only: log_info
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS
@@ -24,7 +24,7 @@ module scenarios_identify_rider
   use io_rider_identification_config, only: rider_identification_config_t, read_rider_identification_config
   use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t
-  use io_xdmf, only: xdmf_t
+  use io_xdmf, only: attach_surface_view
   use scenarios_water, only: build_water, write_slide_grid
   implicit none (type, external)
   private
@@ -124,7 +124,7 @@ contains
     message = 'ok'
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
-    if (write_status%ok()) call write_xdmf(file, write_status)
+    if (write_status%ok()) call attach_surface_view(file, 'slide surface', '/geometry/surface', write_status)
     call file%finish(run_status%ok() .and. write_status%ok(), message, write_status)
     if (run_status%ok()) call report(setup, config, fit, deviation, variant_status, cpu1 - cpu0, &
                                      file%final_path(), run, write_status%ok(), message, write_status)
@@ -287,18 +287,18 @@ contains
                              'error_back', 'rmse'], [character(len=3) :: 'm', 'rad', 'rad', 'rad', 'rad'], table)
       call summary%add_line('  station (m)   simulated - measured (rad): pelvis, heels, back      RMSE (rad)')
       do k = 1, n
-        call summary%add_line('  '//fixed(table(1, k), 'f11.3')//'   '//fixed(table(2, k), 'es12.4')// &
-                              fixed(table(3, k), 'es12.4')//fixed(table(4, k), 'es12.4')//'   '// &
-                              fixed(table(5, k), 'es12.4'))
+        call summary%add_line('  '//format_with(table(1, k), 'f11.3')//'   '//format_with(table(2, k), 'es12.4')// &
+                              format_with(table(3, k), 'es12.4')//format_with(table(4, k), 'es12.4')//'   '// &
+                              format_with(table(5, k), 'es12.4'))
       end do
     end if
     if (size(setup%data%segment_start) > 0) then
       call summary%add_line('  segment (m)          speed measured, simulated (m/s)')
       do k = 1, size(setup%data%segment_start)
-        call summary%add_line('  '//fixed(setup%data%segment_start(k), 'f8.3')//' .. '// &
-                              fixed(setup%data%segment_end(k), 'f8.3')//'   '// &
-                              fixed(setup%data%segment_speed(k), 'f10.4')//fixed(fit%simulated%segment_speed(k), &
-                              'f10.4'))
+        call summary%add_line('  '//format_with(setup%data%segment_start(k), 'f8.3')//' .. '// &
+                              format_with(setup%data%segment_end(k), 'f8.3')//'   '// &
+                              format_with(setup%data%segment_speed(k), 'f10.4')// &
+                              format_with(fit%simulated%segment_speed(k), 'f10.4'))
       end do
     end if
     if (config%sensitivity) then
@@ -318,23 +318,4 @@ contains
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
     end if
   end subroutine report
-
-  !> The slide's surface for ParaView.
-  subroutine write_xdmf(file, status)
-    type(result_file_t), intent(inout) :: file
-    type(status_t), intent(inout) :: status
-    type(xdmf_t) :: xdmf
-    call xdmf%start(file%final_path())
-    call xdmf%surface(file, 'slide surface', '/geometry/surface')
-    call xdmf%attach(file, status)
-  end subroutine write_xdmf
-
-  pure function fixed(x, form) result(text)
-    real(wp), intent(in) :: x
-    character(len=*), intent(in) :: form
-    character(len=:), allocatable :: text
-    character(len=40) :: buffer
-    write (buffer, '('//form//')') x
-    text = trim(buffer)
-  end function fixed
 end module scenarios_identify_rider

@@ -10,7 +10,7 @@
 module scenarios_identify_water
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
-  use base_text, only: format_integer, format_short
+  use base_text, only: format_integer, format_short, format_with
   use base_log, only: log_info
   use water_run, only: water_description_t
   use design_water_identification, only: water_identification_t, water_fit_t, new_water_identification, &
@@ -22,7 +22,7 @@ module scenarios_identify_water
   use io_water_identification_config, only: water_identification_config_t, read_water_identification_config
   use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t
-  use io_xdmf, only: xdmf_t
+  use io_xdmf, only: attach_surface_view
   use scenarios_water, only: build_water, write_slide_grid
   implicit none (type, external)
   private
@@ -112,7 +112,7 @@ contains
     message = 'ok'
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
-    if (write_status%ok()) call write_xdmf(file, write_status)
+    if (write_status%ok()) call attach_surface_view(file, 'slide surface', '/geometry/surface', write_status)
     call file%finish(run_status%ok() .and. write_status%ok(), message, write_status)
     if (run_status%ok()) call report(setup, fit, cpu1 - cpu0, file%final_path(), run, write_status%ok(), &
                                      message, write_status)
@@ -236,7 +236,7 @@ contains
                              [character(len=3) :: 'm', 'rad'], table)
       call summary%add_line('  section (m)   simulated - measured middle (rad)')
       do k = 1, n
-        call summary%add_line('  '//fixed(table(1, k), 'f11.3')//'   '//fixed(table(2, k), 'es12.4'))
+        call summary%add_line('  '//format_with(table(1, k), 'f11.3')//'   '//format_with(table(2, k), 'es12.4'))
       end do
     end if
     call summary%add_results(path, complete)
@@ -245,23 +245,4 @@ contains
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
     end if
   end subroutine report
-
-  !> The slide's surface for ParaView.
-  subroutine write_xdmf(file, status)
-    type(result_file_t), intent(inout) :: file
-    type(status_t), intent(inout) :: status
-    type(xdmf_t) :: xdmf
-    call xdmf%start(file%final_path())
-    call xdmf%surface(file, 'slide surface', '/geometry/surface')
-    call xdmf%attach(file, status)
-  end subroutine write_xdmf
-
-  pure function fixed(x, form) result(text)
-    real(wp), intent(in) :: x
-    character(len=*), intent(in) :: form
-    character(len=:), allocatable :: text
-    character(len=40) :: buffer
-    write (buffer, '('//form//')') x
-    text = trim(buffer)
-  end function fixed
 end module scenarios_identify_water

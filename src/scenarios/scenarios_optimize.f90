@@ -7,7 +7,7 @@ module scenarios_optimize
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
-  use base_text, only: format_integer, format_short
+  use base_text, only: format_integer, format_short, format_with
   use base_log, only: log_info
   use design_cuboid_ride, only: cuboid_ride_t
   use design_geometry_optimization, only: optimization_setup_t, optimization_result_t, design_evaluation_t, &
@@ -313,7 +313,7 @@ contains
     do k = 1, size(result%x)
       call summary%add_line('    P'//format_integer(setup%design%point(k) - 1)//'.'// &
         'xyz'(setup%design%coordinate(k):setup%design%coordinate(k))//repeat(' ', 12)// &
-        fixed(table(3, k))//fixed(table(4, k))//fixed(table(5, k)))
+        format_with(table(3, k), 'f12.4')//format_with(table(4, k), 'f12.4')//format_with(table(5, k), 'f12.4'))
     end do
     deallocate (table)
     allocate (table(5, n))
@@ -327,8 +327,8 @@ contains
                            [character(len=6) :: 'deg', 'm/s^2', 'm/s^2', 'm', 'm'], table)
     call summary%add_line('  ride at (deg)   max |a| start, optimum (m/s^2)   lever arm start, optimum (m)')
     do k = 1, n
-      call summary%add_line('    '//fixed(table(1, k))//'      '//fixed(table(2, k))//fixed(table(3, k))// &
-        '        '//lever_text(table(4, k))//lever_text(table(5, k)))
+      call summary%add_line('    '//format_with(table(1, k), 'f12.4')//'      '//format_with(table(2, k), 'f12.4')// &
+        format_with(table(3, k), 'f12.4')//'        '//lever_text(table(4, k))//lever_text(table(5, k)))
     end do
     call summary%print()
     if (complete) then
@@ -353,20 +353,13 @@ contains
     end subroutine add_lever
   end subroutine report
 
-  !> A number in a column of 12.
-  pure function fixed(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=12) :: text
-    write (text, '(f12.4)') x
-  end function fixed
-
   pure function lever_text(x) result(text)
     real(wp), intent(in) :: x
     character(len=12) :: text
     if (x >= 1e30_wp) then
       text = '    lift-off'
     else
-      text = fixed(x)
+      text = format_with(x, 'f12.4')
     end if
   end function lever_text
 end module scenarios_optimize
