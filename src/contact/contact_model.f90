@@ -14,8 +14,14 @@
 !> Rolling adds the no-slip constraint (contact_rolling) with the rates of
 !> (u12, v12) dependent: the speeds are the three angle rates.
 !>
-!> Position level: the five closure conditions (3.86), N = the cut force of
-!> g3 (the plane-point measurement along z_1D). Velocity level (for the drift
+!> Position level, open chain (the default where it applies: no rolling):
+!> body_2 hangs from S1's contact frame through the turn about the normal and
+!> the inverse of its own surface joint (contact_pair): exact contact, no
+!> closure; N = -z_1D . f_1D, what body_2 (and all it carries) presses on
+!> the contact frame, as at velocity level. Position level, loop (rolling,
+!> or chosen): the five closure conditions (3.86), N = the cut force of g3
+!> (the plane-point measurement along z_1D). The open chain starts from the
+!> loop's closed configuration (the same contact points and phi). Velocity level (for the drift
 !> comparison): body_2 is moved by contact_velocity_level from its contact
 !> frame; (u1, v1, u2, v2, phi) and body_2's pose are integrated, the closure
 !> measurements g1..g5 only watch the drift; N = -z_1D . f_1D. The start of a
@@ -39,7 +45,8 @@ module contact_model
   use kinetostatics_force_laws, only: new_coulomb_friction, new_normal_viscous_friction, new_viscous_friction
   use kinetostatics_mechanism, only: mechanism_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
-  use contact_pair, only: contact_pair_t, add_contact_pair, place_contact_pair, check_contact_branch
+  use contact_pair, only: contact_pair_t, add_contact_pair, add_open_contact_pair, place_contact_pair, &
+    place_open_contact_pair, check_contact_branch
   use contact_rolling, only: new_no_slip
   use contact_velocity_level, only: new_velocity_contact
   implicit none (type, external)
@@ -47,11 +54,14 @@ module contact_model
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t, contact_model_t, contact_link_t
   public :: build_contact_model
   public :: FRICTION_NONE, FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL, FRICTION_COULOMB
-  public :: LEVEL_POSITION, LEVEL_VELOCITY
+  public :: LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
 
   integer, parameter :: FRICTION_NONE = 0, FRICTION_VISCOUS_WEIGHT = 1, FRICTION_VISCOUS_NORMAL = 2, &
                         FRICTION_COULOMB = 3
   integer, parameter :: LEVEL_POSITION = 1, LEVEL_VELOCITY = 2
+  !> The chain of a position-level contact: open where it applies (no
+  !> rolling), else the loop (CHAIN_AUTO); or either chosen.
+  integer, parameter :: CHAIN_AUTO = 0, CHAIN_OPEN = 1, CHAIN_LOOP = 2
   real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
 
   !> A surface in the coordinates of the body that carries it.
@@ -80,6 +90,7 @@ module contact_model
     real(wp) :: regularization_speed = 1e-6_wp   ! m/s (Coulomb)
     logical :: rolling = .false.
     integer :: level = LEVEL_POSITION
+    integer :: chain = CHAIN_AUTO
   end type contact_spec_t
 
   !> The description: 'ground' names the fixed frame (it needs no body entry).
@@ -95,6 +106,7 @@ module contact_model
     character(len=:), allocatable :: name
     integer :: level = LEVEL_POSITION
     logical :: rolling = .false.
+    logical :: open = .false.                    ! position level by the open chain
     integer :: frame_a = 0, frame_b = 0, frame_1d = 0, frame_2d = 0
     integer :: coordinates(4) = 0                ! scalars u1, v1, u2, v2
     integer :: gaps(5) = 0                       ! closure measurements g1..g5
@@ -128,11 +140,11 @@ contains
     if (.not. status%ok()) return
     call check_names(system, status)
     if (.not. status%ok()) return
-    if (.not. any(system%contacts%level == LEVEL_VELOCITY)) then
+    if (.not. any(system%contacts%level == LEVEL_VELOCITY .or. open_chain(system%contacts))) then
       call build(system, model, status)
       return
     end if
-    ! velocity level: start from the closed configuration of the position level
+    ! velocity level and open chains: start from the closed configuration of the loops
     call build(system, closed, status, all_position=.true.)
     if (.not. status%ok()) return
     call build(system, model, status, closed=closed)
@@ -186,6 +198,10 @@ contains
         if (c%body_1 == c%body_2) call fail('contact '''//c%name//''': a body cannot touch itself')
         if (c%rolling .and. c%friction /= FRICTION_NONE) call fail('contact '''//c%name//''': a rolling '// &
           'contact has no sliding friction (the no-slip constraint carries the tangential force)')
+        if (c%chain == CHAIN_OPEN .and. c%rolling) call fail('contact '''//c%name//''': chain = ''open'' '// &
+          'is for sliding contacts; a rolling contact needs the loop (chain = ''loop'')')
+        if (c%chain /= CHAIN_AUTO .and. c%level == LEVEL_VELOCITY) call fail('contact '''//c%name// &
+          ''': the chain is chosen for position-level contacts only')
       end associate
     end do
   contains
@@ -194,6 +210,13 @@ contains
       if (status%ok()) call set_status(status, STATUS_INVALID_INPUT, text)
     end subroutine fail
   end subroutine check_names
+
+  !> Whether a contact is built as the open chain: position level, no
+  !> rolling, not chain = loop.
+  elemental logical function open_chain(c)
+    type(contact_spec_t), intent(in) :: c
+    open_chain = c%level == LEVEL_POSITION .and. .not. c%rolling .and. c%chain /= CHAIN_LOOP
+  end function open_chain
 
   !> 0 for 'ground', the index of a body, -1 if unknown.
   pure integer function body_index(system, name) result(k)
@@ -238,9 +261,9 @@ contains
     end do
   end function known_shapes
 
-  !> One build. all_position: every contact at position level (the start of a
-  !> velocity-level model); closed: that model, whose closed configuration
-  !> starts the velocity-level contacts.
+  !> One build. all_position: every contact at position level by the loop
+  !> (the start of velocity-level contacts and open chains); closed: that
+  !> model, whose closed configuration starts them.
   subroutine build(system, model, status, all_position, closed)
     type(contact_system_t), intent(in) :: system
     type(contact_model_t), intent(out) :: model
@@ -286,15 +309,18 @@ contains
           link%name = c%name
           link%level = level
           link%rolling = c%rolling
+          link%open = open_chain(c) .and. .not. present(all_position)
           link%frame_a = model%body_frame(b1 + 1)
           associate (s1 => system%shapes(shape_index(system, c%shape_1))%surface, &
                      s2 => system%shapes(shape_index(system, c%shape_2))%surface)
-            if (level == LEVEL_POSITION) then
+            if (link%open) then
+              call add_open_contact(m, c, link, s1, s2, q, status)
+            else if (level == LEVEL_POSITION) then
               call add_position_contact(m, c, link, s1, s2, q, status)
             else
               call add_velocity_contact(m, c, link, s1, s2, closed, k, q, kinematic, status)
             end if
-            call add_units(model, level, c%rolling, s1, s2)
+            call add_units(model, level, c%rolling, link%open, s1, s2)
           end associate
           call add_monitors(m, link)
           if (.not. status%ok()) return
@@ -324,15 +350,17 @@ contains
   end subroutine build
 
   !> Units of the coordinates (and dependents) the contact added, in their order.
-  subroutine add_units(model, level, rolling, s1, s2)
+  subroutine add_units(model, level, rolling, open, s1, s2)
     type(contact_model_t), intent(inout) :: model
     integer, intent(in) :: level
-    logical, intent(in) :: rolling
+    logical, intent(in) :: rolling, open
     class(surface_t), intent(in) :: s1, s2
     character(len=:), allocatable :: u1, v1, u2, v2
     call s1%parameter_units(u1, v1)
     call s2%parameter_units(u2, v2)
-    if (level == LEVEL_POSITION) then
+    if (open) then
+      model%q_units = [character(len=8) :: model%q_units, u1, v1, 'rad', u2, v2]
+    else if (level == LEVEL_POSITION) then
       model%q_units = [character(len=8) :: model%q_units, u1, v1, 'rad', 'rad', 'rad']
       model%beta_units = [character(len=8) :: model%beta_units, u1, v1, u2, v2, 'm']
     else if (rolling) then
@@ -407,6 +435,25 @@ contains
       call m%add_rate_constraint(c%name//' rolling', link%rolling_outputs, [link%pair%u12, link%pair%v12], status)
     end if
   end subroutine add_position_contact
+
+  !> The open chain (contact_pair): q gets (u1, v1, phi, u2, v2); N is what
+  !> body 2 presses on the contact frame K_1D, -z_1D . f_1D.
+  subroutine add_open_contact(m, c, link, s1, s2, q, status)
+    type(mechanism_t), intent(inout) :: m
+    type(contact_spec_t), intent(in) :: c
+    type(contact_link_t), intent(inout) :: link
+    class(surface_t), intent(in) :: s1, s2
+    integer, allocatable, intent(inout) :: q(:)
+    type(status_t), intent(inout) :: status
+    call add_open_contact_pair(m, c%name, link%frame_a, s1, c%side_1, c%body_2, s2, c%side_2, link%pair, status)
+    if (.not. status%ok()) return
+    link%frame_b = link%pair%frame_b
+    link%frame_1d = link%pair%frame_1d
+    link%coordinates = [link%pair%u1, link%pair%v1, link%pair%u2, link%pair%v2]
+    link%gaps = link%pair%gaps
+    q = [q, link%pair%coordinates()]
+    link%contact = m%add_contact(c%name, link%frame_a, link%frame_b, link%frame_1d, 1.0_wp)
+  end subroutine add_open_contact
 
   !> Body 2 moved by the velocity-level element from the contact frame on S1;
   !> the start values come from the closed position-level model `closed`
@@ -511,9 +558,13 @@ contains
     real(wp) :: rot_a(3, 3), r_a(3)
     integer :: k, b1
     associate (m => model%ode%mechanism)
-      if (.not. present(closed)) then
-        do k = 1, size(system%contacts)
-          associate (c => system%contacts(k), link => model%links(k))
+      do k = 1, size(system%contacts)
+        associate (c => system%contacts(k), link => model%links(k))
+          if (link%open) then
+            ! from the loop's closed configuration
+            call place_open_contact_pair(m, link%pair, closed%ode%mechanism, closed%links(k)%pair)
+            link%start_gap = closed%links(k)%start_gap
+          else if (link%level == LEVEL_POSITION) then
             b1 = body_index(system, c%body_1)
             rot_a = identity
             r_a = 0
@@ -524,15 +575,16 @@ contains
             associate (b => system%bodies(body_index(system, c%body_2)))
               call place_contact_pair(m, link%pair, rot_a, r_a, b%rotation, b%position, link%start_gap, status)
             end associate
-          end associate
-          if (.not. status%ok()) return
-        end do
-      end if
+          end if
+        end associate
+        if (.not. status%ok()) return
+      end do
       q0 = m%scalars(m%q)%q
       call m%check_start(q0, status)
       if (.not. status%ok()) return
       do k = 1, size(model%links)
-        if (model%links(k)%level == LEVEL_POSITION) call check_contact_branch(m, model%links(k)%pair, status)
+        if (model%links(k)%level == LEVEL_POSITION .and. .not. model%links(k)%open) &
+          call check_contact_branch(m, model%links(k)%pair, status)
       end do
       if (.not. status%ok()) return
       call start_speeds(system, model, carrier, s0, status)

@@ -25,21 +25,37 @@
 !> material. The physical branch has antiparallel normals, z_1D . z_2D = -1;
 !> g4, g5 alone also admit parallel normals, so the branch is checked
 !> (`check_contact_branch`) after every closure that could have jumped.
+!>
+!> The open chain (`add_open_contact_pair`, for contacts without rolling):
+!>     K_A --S1(u1, v1)--> K_1D --turn phi about z_1D--> K_T
+!>         --inverse S2(u2, v2), K_2D = K_T Rx(pi)--> K_B
+!> K_2D is S2's Darboux frame at (u2, v2) turned over (z_2D = -z_1D, x_2D at
+!> the angle phi from x_1D), and the inverse surface joint
+!> (kinetostatics_inverse_surface_joint) places K_B so that S2's frame there is
+!> K_2D: the surfaces touch with antiparallel normals by construction, the
+!> physical branch. Coordinates q = (u1, v1, phi, u2, v2), none dependent, no
+!> closure; a closure monitor (contact_closure_monitor) measures g1..g5 from
+!> the two bodies' poses and surfaces for the records. Charts: (u1, v1),
+!> (u2, v2) are the surfaces' own parameters (an ellipsoid's poles are
+!> singular, as in the loop's S1 and S2), phi is unbounded.
 module contact_pair
   use base_kinds, only: wp
   use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
-  use kinetostatics_joints, only: new_prismatic
+  use kinetostatics_joints, only: new_prismatic, new_revolute
   use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
+  use kinetostatics_inverse_surface_joint, only: new_inverse_surface_joint
   use kinetostatics_free_rotation, only: free_rotation_t, new_free_rotation
   use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT, MEASURE_PLANE_PLANE
   use kinetostatics_mechanism, only: mechanism_t
   use contact_surface_search, only: nearest_point, support_point
+  use contact_closure_monitor, only: new_closure_monitor
   implicit none (type, external)
   private
-  public :: contact_pair_t, add_contact_pair, place_contact_pair, check_contact_branch
+  public :: contact_pair_t, add_contact_pair, add_open_contact_pair, place_contact_pair, place_open_contact_pair
+  public :: check_contact_branch
 
   !> What one contact expanded into: indices into the mechanism's frames,
   !> scalars and elements.
@@ -52,6 +68,9 @@ module contact_pair
     integer :: gaps(5) = 0                               ! closure measurements g1..g5
     integer :: element_s1 = 0, element_s2 = 0, element_s12 = 0, element_rotation = 0
     real(wp) :: side_1 = 1, side_2 = 1
+    ! the open chain (module comment): K_1D -> turn phi -> K_T -> inverse S2 -> K_B
+    logical :: open = .false.
+    integer :: phi = 0, frame_turn = 0
   contains
     procedure :: coordinates => pair_coordinates
     procedure :: dependents => pair_dependents
@@ -59,11 +78,16 @@ module contact_pair
 
 contains
 
-  !> Independent coordinates of the pair: u12, v12 and the three angles.
+  !> Independent coordinates of the pair: u12, v12 and the three angles
+  !> (open chain: u1, v1, phi, u2, v2).
   pure function pair_coordinates(self) result(q)
     class(contact_pair_t), intent(in) :: self
     integer :: q(5)
-    q = [self%u12, self%v12, self%angles]
+    if (self%open) then
+      q = [self%u1, self%v1, self%phi, self%u2, self%v2]
+    else
+      q = [self%u12, self%v12, self%angles]
+    end if
   end function pair_coordinates
 
   !> Dependent coordinates of its loop: u1, v1, u2, v2, z12.
@@ -147,6 +171,75 @@ contains
     call m%add_loop(name, pair%gaps, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], pair%dependents(), status)
     call m%set_loop_branch(name, pair%frame_1d, pair%frame_2d, status)
   end subroutine add_contact_pair
+
+  !> The open chain of the contact `name` (module comment): S1 on the body
+  !> frame `frame_a`, the turn phi about its normal and body B (frame named
+  !> `body_b`) from S2 by the inverse surface joint; g1..g5 by a closure
+  !> monitor. The caller adds B's mass and everything carried by B afterwards,
+  !> lists pair%coordinates() among the mechanism's coordinates and sets the
+  !> start with place_open_contact_pair.
+  subroutine add_open_contact_pair(m, name, frame_a, surface_1, side_1, body_b, surface_2, side_2, pair, status)
+    type(mechanism_t), intent(inout) :: m
+    character(len=*), intent(in) :: name, body_b
+    integer, intent(in) :: frame_a
+    class(surface_t), intent(in) :: surface_1, surface_2
+    real(wp), intent(in) :: side_1, side_2
+    type(contact_pair_t), intent(out) :: pair
+    type(status_t), intent(inout) :: status
+    real(wp), parameter :: ez(3) = [0, 0, 1]
+    real(wp), parameter :: turn_over(3, 3) = reshape([1, 0, 0, 0, -1, 0, 0, 0, -1], [3, 3])   ! Rx(pi)
+    integer :: k
+    character(len=2) :: digit
+    if (.not. status%ok()) return
+    if (abs(abs(side_1) - 1) > 0 .or. abs(abs(side_2) - 1) > 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'contact '''//name//''': the sides of its surfaces '// &
+                      'must be +1 or -1')
+      return
+    end if
+    pair%open = .true.
+    pair%name = name
+    pair%side_1 = side_1
+    pair%side_2 = side_2
+    pair%frame_a = frame_a
+    pair%frame_1d = m%add_frame(name//'.1D')
+    pair%u1 = m%add_scalar(name//'.u1')
+    pair%v1 = m%add_scalar(name//'.v1')
+    call m%add_element(new_surface_joint(name//'.s1', frame_a, pair%frame_1d, pair%u1, pair%v1, surface_1, &
+                                         side_1, 1.0_wp, 0.0_wp))
+    pair%element_s1 = m%n_elements
+    pair%frame_turn = m%add_frame(name//'.turn')
+    pair%phi = m%add_scalar(name//'.phi')
+    call m%add_element(new_revolute(name//'.turn', pair%frame_1d, pair%frame_turn, pair%phi, ez))
+    pair%frame_b = m%add_frame(body_b)
+    pair%u2 = m%add_scalar(name//'.u2')
+    pair%v2 = m%add_scalar(name//'.v2')
+    call m%add_element(new_inverse_surface_joint(name//'.s2', pair%frame_turn, pair%frame_b, pair%u2, pair%v2, &
+                                                 surface_2, side_2, 1.0_wp, 0.0_wp, turn_over))
+    pair%element_s2 = m%n_elements
+    do k = 1, 5
+      write (digit, '(i1)') k
+      pair%gaps(k) = m%add_scalar(name//'.g'//trim(digit))
+    end do
+    call m%add_element(new_closure_monitor(name//'.closure', frame_a, surface_1, side_1, pair%frame_b, surface_2, &
+                                           side_2, [pair%u1, pair%v1, pair%u2, pair%v2], pair%gaps))
+  end subroutine add_open_contact_pair
+
+  !> Start values of an open pair from the closed configuration of a loop
+  !> pair (`closed` in mechanism `mc`): the same contact points, and phi the
+  !> angle from x_1D to x_2D about z_1D.
+  subroutine place_open_contact_pair(m, pair, mc, closed)
+    type(mechanism_t), intent(inout) :: m
+    type(contact_pair_t), intent(in) :: pair, closed
+    type(mechanism_t), intent(in) :: mc
+    real(wp) :: x2(3)
+    m%scalars(pair%u1)%q = mc%scalars(closed%u1)%q
+    m%scalars(pair%v1)%q = mc%scalars(closed%v1)%q
+    m%scalars(pair%u2)%q = mc%scalars(closed%u2)%q
+    m%scalars(pair%v2)%q = mc%scalars(closed%v2)%q
+    x2 = mc%frames(closed%frame_2d)%rot(:, 1)
+    m%scalars(pair%phi)%q = atan2(dot_product(x2, mc%frames(closed%frame_1d)%rot(:, 2)), &
+                                  dot_product(x2, mc%frames(closed%frame_1d)%rot(:, 1)))
+  end subroutine place_open_contact_pair
 
   !> Start values of the pair from the poses of A and B (world rotation and
   !> origin of each): the chain sits over the point of S1 nearest to B's

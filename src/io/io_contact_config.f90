@@ -9,7 +9,8 @@ module io_contact_config
   use base_vector, only: rotation_xyz
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use contact_model, only: contact_system_t, FRICTION_NONE, &
-    FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL, FRICTION_COULOMB, LEVEL_POSITION, LEVEL_VELOCITY
+    FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL, FRICTION_COULOMB, LEVEL_POSITION, LEVEL_VELOCITY, &
+    CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, group_count, format_vector
   use io_surface_config, only: read_surface_config
   implicit none (type, external)
@@ -133,14 +134,15 @@ contains
     type(group_reader_t) :: r
     character(len=name_length) :: name, body_1, shape_1, body_2, shape_2
     character(len=14) :: friction
-    character(len=8) :: level
+    character(len=8) :: level, chain
     integer :: j
-    character(len=*), parameter :: names(12) = [character(len=20) :: 'name', 'body_1', 'shape_1', 'side_1', &
-      'body_2', 'shape_2', 'side_2', 'friction', 'mu', 'regularization_speed', 'rolling', 'level']
+    character(len=*), parameter :: names(13) = [character(len=20) :: 'name', 'body_1', 'shape_1', 'side_1', &
+      'body_2', 'shape_2', 'side_2', 'friction', 'mu', 'regularization_speed', 'rolling', 'level', 'chain']
     if (.not. status%ok()) return
     name = ''; body_1 = 'ground'; shape_1 = ''; body_2 = ''; shape_2 = ''
     friction = 'none'
     level = 'position'
+    chain = ''
     associate (c => system%contacts(k))
       call open_group(input, 'contact', names, r, status, occurrence=k)
       call r%get('name', name, status)
@@ -153,6 +155,13 @@ contains
       call r%get('friction', friction, status, choices=friction_names)
       call r%get('rolling', c%rolling, status)
       call r%get('level', level, status, choices=[character(len=8) :: 'position', 'velocity'])
+      call r%get('chain', chain, status, choices=[character(len=8) :: 'open', 'loop'])
+      if (.not. status%ok()) return
+      if (chain == 'open' .and. c%rolling) call r%invalid('chain', '''open''', 'a rolling contact needs the '// &
+        'loop (chain = ''loop'', the default with rolling): the open chain is for sliding contacts', status)
+      if (status%ok() .and. len_trim(chain) > 0 .and. level == 'velocity') call r%invalid('chain', ''''// &
+        trim(chain)//'''', 'the chain is chosen for level = ''position'' only (a velocity-level contact has '// &
+        'its own element)', status)
       if (.not. status%ok()) return
       select case (trim(friction))
       case ('viscous_weight', 'viscous_normal')
@@ -189,6 +198,14 @@ contains
       c%shape_1 = trim(shape_1)
       c%shape_2 = trim(shape_2)
       c%level = merge(LEVEL_POSITION, LEVEL_VELOCITY, level == 'position')
+      select case (trim(chain))
+      case ('open')
+        c%chain = CHAIN_OPEN
+      case ('loop')
+        c%chain = CHAIN_LOOP
+      case default
+        c%chain = CHAIN_AUTO
+      end select
       select case (trim(friction))
       case ('viscous_weight')
         c%friction = FRICTION_VISCOUS_WEIGHT

@@ -4,7 +4,8 @@
 # and what is allowed: unknown names, a contact listed before the one that
 # carries its body_1, a body carried twice or never, a loop that cannot close
 # (which contact, by how much), the parallel-normal branch, start velocities
-# that push into the surface.
+# that push into the surface; a chain that does not apply (the open chain with
+# rolling, a chain at velocity level) or is unknown.
 set -u
 slidesim=$1
 work=$(mktemp -d)
@@ -69,6 +70,18 @@ expect unused_mu 1 'unused_mu.nml:' '&contact' mu "friction = 'none'"
 printf "%s\n&body name = 'ball', mass = 1, position = 0, 0, 0.2 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
   "$head" > "$work/no_inertia.nml"
 expect no_inertia 1 'no_inertia.nml:' '&body' inertia solid_of
+
+printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', rolling = .true., chain = 'open' /\n" \
+  "$head" "$ball" > "$work/open_rolling.nml"
+expect open_rolling 1 'open_rolling.nml:' '&contact' chain "'open'" 'rolling contact needs the loop'
+
+printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', level = 'velocity', chain = 'loop' /\n" \
+  "$head" "$ball" > "$work/chain_velocity.nml"
+expect chain_velocity 1 'chain_velocity.nml:' '&contact' chain "'loop'" "level = 'position' only"
+
+printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', chain = 'closed' /\n" \
+  "$head" "$ball" > "$work/unknown_chain.nml"
+expect unknown_chain 1 'unknown_chain.nml:' '&contact' chain "'closed'" 'open loop'
 
 # a cup that cannot close in a B-spline bowl (table 3.2's paraboloids): which
 # contact, by how much

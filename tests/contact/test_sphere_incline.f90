@@ -8,6 +8,10 @@
 !>     Below it slides with a = g (sin(theta) - mu cos(theta)) and a growing
 !>     slip; above it rolls (regularized Coulomb: a steady creep of the order
 !>     of the regularization speed) with a = (5/7) g sin(theta).
+!>     Both with the loop (the centre's u12 along the slope) and with the open
+!>     chain (the contact point's u1: the same acceleration on a plane; its
+!>     normal force, which Coulomb's law needs in every right-hand side, is
+!>     what the ball presses on the contact frame).
 program test_sphere_incline
   use base_kinds, only: wp
   use base_constants, only: pi
@@ -18,7 +22,7 @@ program test_sphere_incline
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
   use geometry_elementary, only: plane_t, ellipsoid_t
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, FRICTION_COULOMB, &
-    FRICTION_NONE
+    FRICTION_NONE, CHAIN_OPEN, CHAIN_LOOP
   implicit none (type, external)
 
   real(wp), parameter :: theta = 30*pi/180, radius = 0.1_wp, mass = 2, g = 9.81_wp
@@ -27,8 +31,10 @@ program test_sphere_incline
   threshold = 2*tan(theta)/7
   print '(a, f8.5)', 'rolling threshold (2/7) tan(theta) = ', threshold
   call rolling()
-  call coulomb(0.1_wp)      ! below the threshold: slides
-  call coulomb(0.3_wp)      ! above: rolls
+  call coulomb(0.1_wp, CHAIN_LOOP)      ! below the threshold: slides
+  call coulomb(0.3_wp, CHAIN_LOOP)      ! above: rolls
+  call coulomb(0.1_wp, CHAIN_OPEN)
+  call coulomb(0.3_wp, CHAIN_OPEN)
   call finish_tests('test_sphere_incline')
 
 contains
@@ -123,16 +129,18 @@ contains
     end associate
   end subroutine rolling
 
-  subroutine coulomb(mu)
+  subroutine coulomb(mu, chain)
     real(wp), intent(in) :: mu
+    integer, intent(in) :: chain
     type(contact_system_t) :: system
     type(contact_model_t), target :: model
     type(driver_options_t) :: options
     real(wp) :: a, worst_a, slip_end, slip_mid
     integer :: i, u12
-    character(len=8) :: label
-    write (label, '(f4.2)') mu
+    character(len=24) :: label
+    write (label, '(f4.2, a)') mu, merge(' (loop)', ' (open)', chain == CHAIN_LOOP)
     call describe(system, .false., FRICTION_COULOMB, mu)
+    system%contacts(1)%chain = chain
     options%t_end = 1
     options%output_step = 0.05_wp
     ! the regularized Coulomb law is stiff at rest (damping mu N/eps): BDF
@@ -142,7 +150,10 @@ contains
     call run(system, model, options)
     associate (s => model%ode%series, m => model%ode%mechanism)
       call check(m%ns == 5, 'sliding: 5 speeds')
-      u12 = findloc(m%q, model%links(1)%pair%u12, dim=1)
+      ! the centre's position along the slope (loop), the contact point's (open chain)
+      u12 = findloc(m%q, merge(model%links(1)%pair%u12, model%links(1)%pair%u1, chain == CHAIN_LOOP), dim=1)
+      call check(u12 > 0, 'the coordinate along the slope found')
+      if (u12 == 0) return
       if (mu < threshold) then
         a = g*(sin(theta) - mu*cos(theta))
       else

@@ -1,0 +1,108 @@
+!> The closure functions g1..g5 of a contact (3.86), measured from the two
+!> bodies' poses and their surfaces alone, for contacts whose chain keeps
+!> them closed by construction (the open chain of contact_pair): a check that
+!> does not trust the chain. From the body frames K_A, K_B and the contact
+!> coordinates (u1, v1), (u2, v2) it builds the Darboux frames
+!> K_1D = S1(u1, v1) on K_A and K_2D = S2(u2, v2) on K_B (forward surface
+!> joints on local frames) and sets
+!>     g1..g3 = x_1D, y_1D, z_1D . (r_2D - r_1D),   g4, g5 = z_1D . x_2D, z_1D . y_2D.
+!> A monitor of positions only: nothing in the mechanism reads its outputs
+!> (they are recorded, not closure measurements), so its velocity and
+!> acceleration maps leave their rates alone (zero) and its force map passes
+!> nothing back; only the position pass costs (two surface points to first
+!> order).
+module contact_closure_monitor
+  use base_kinds, only: wp
+  use base_status, only: status_t, prefix_status
+  use geometry_surface, only: surface_t
+  use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
+  use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
+  implicit none (type, external)
+  private
+  public :: closure_monitor_t, new_closure_monitor
+
+  type, extends(element_t) :: closure_monitor_t
+    integer :: frame_a = 0, frame_b = 0
+    integer :: contact(4) = 0                   ! scalars u1, v1, u2, v2
+    integer :: gaps(5) = 0                      ! output scalars g1..g5
+    type(surface_joint_t) :: joint_1, joint_2   ! S1 on K_A, S2 on K_B (local frames 1 -> 2)
+  contains
+    procedure :: position => monitor_position
+    procedure :: velocity => monitor_motion
+    procedure :: acceleration => monitor_motion
+    procedure :: force => monitor_force
+    procedure :: links => monitor_links
+  end type closure_monitor_t
+
+contains
+
+  function new_closure_monitor(name, frame_a, surface_1, side_1, frame_b, surface_2, side_2, contact, gaps) &
+      result(e)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame_a, frame_b, contact(4), gaps(5)
+    class(surface_t), intent(in) :: surface_1, surface_2
+    real(wp), intent(in) :: side_1, side_2
+    type(closure_monitor_t) :: e
+    e%name = name
+    e%frame_a = frame_a
+    e%frame_b = frame_b
+    e%contact = contact
+    e%gaps = gaps
+    e%joint_1 = new_surface_joint(name//'.s1', 1, 2, 1, 2, surface_1, side_1, 1.0_wp, 0.0_wp)
+    e%joint_2 = new_surface_joint(name//'.s2', 1, 2, 1, 2, surface_2, side_2, 1.0_wp, 0.0_wp)
+  end function new_closure_monitor
+
+  pure subroutine monitor_position(self, frames, scalars, status)
+    class(closure_monitor_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t), intent(inout) :: status
+    type(frame_state_t) :: one(2), two(2)
+    type(scalar_state_t) :: uv(2)
+    real(wp) :: g(5)
+    integer :: k
+    one(1)%rot = frames(self%frame_a)%rot
+    one(1)%r = frames(self%frame_a)%r
+    uv = scalars(self%contact(1:2))
+    call self%joint_1%position(one, uv, status)
+    two(1)%rot = frames(self%frame_b)%rot
+    two(1)%r = frames(self%frame_b)%r
+    uv = scalars(self%contact(3:4))
+    if (status%ok()) call self%joint_2%position(two, uv, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'closure monitor '''//self%name//'''')
+      return
+    end if
+    g(1:3) = matmul(transpose(one(2)%rot), two(2)%r - one(2)%r)
+    g(4) = dot_product(one(2)%rot(:, 3), two(2)%rot(:, 1))
+    g(5) = dot_product(one(2)%rot(:, 3), two(2)%rot(:, 2))
+    do k = 1, 5
+      scalars(self%gaps(k))%q = g(k)
+    end do
+  end subroutine monitor_position
+
+  !> Rates are not computed (module comment).
+  pure subroutine monitor_motion(self, frames, scalars)
+    class(closure_monitor_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    associate (unused => self, unused_f => frames, unused_s => scalars)
+    end associate
+  end subroutine monitor_motion
+
+  pure subroutine monitor_force(self, frames, scalars, inertia, applied)
+    class(closure_monitor_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    logical, intent(in) :: inertia, applied
+    associate (unused => self, unused_f => frames, unused_s => scalars, unused_i => inertia, unused_a => applied)
+    end associate
+  end subroutine monitor_force
+
+  pure subroutine monitor_links(self, links)
+    class(closure_monitor_t), intent(in) :: self
+    type(element_links_t), intent(out) :: links
+    links = element_links_t(.true., [self%frame_a, self%frame_b], self%contact, [integer ::], self%gaps, &
+                            relative=.true.)
+  end subroutine monitor_links
+end module contact_closure_monitor
