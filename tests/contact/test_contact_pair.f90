@@ -4,7 +4,10 @@
 !> differences of its positions along random motions, and its force map's
 !> virtual power, for the egg on a plane and for a B-spline paraboloid in the
 !> bowl of a moving one; the parallel-normal branch and a contact that cannot
-!> close are refused with the contact's name.
+!> close are refused with the contact's name. The open chain (no closure) of
+!> the same cup: started from the loop's closed configuration it puts the cup
+!> where the loop does, its closure monitor reads zero, and its velocities,
+!> accelerations and virtual power pass the same checks along random motions.
 program test_contact_pair
   use base_kinds, only: wp
   use base_constants, only: pi
@@ -18,7 +21,8 @@ program test_contact_pair
   use kinetostatics_joints, only: new_spherical, new_prismatic
   use kinetostatics_force_laws, only: new_constant_load
   use kinetostatics_mechanism, only: mechanism_t
-  use contact_pair, only: contact_pair_t, add_contact_pair, place_contact_pair, check_contact_branch
+  use contact_pair, only: contact_pair_t, add_contact_pair, place_contact_pair, check_contact_branch, &
+    add_open_contact_pair, place_open_contact_pair
   implicit none (type, external)
 
   real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
@@ -100,22 +104,15 @@ contains
   !> outside) in the bowl of the large one (a^2 = 3 on [-2, 2]^2, its inside),
   !> the bowl itself turning and rising (spherical + prismatic from the ground).
   subroutine paraboloid_in_moving_bowl()
-    type(mechanism_t) :: m
-    type(contact_pair_t) :: pair
+    type(mechanism_t) :: m, mo
+    type(contact_pair_t) :: pair, open
     type(status_t) :: st
     type(bspline_surface_t) :: big, small
-    integer :: f1, f2, s(4), trial
-    real(wp) :: gap, q0(9)
+    integer :: f2, s(4), trial
+    real(wp) :: gap, q0(9), qo(9)
     big = quadratic_patch(3.0_wp, 2.0_wp, st)
     small = quadratic_patch(0.5_wp, 0.5_wp, st)
-    f1 = m%add_frame('bowl_turn')
-    s(1) = m%add_scalar('b1', 0.1_wp)
-    s(2) = m%add_scalar('b2', -0.2_wp)
-    s(3) = m%add_scalar('b3', 0.3_wp)
-    call m%add_element(new_spherical('bowl_turn', 1, f1, s(1:3)))
-    f2 = m%add_frame('bowl')
-    s(4) = m%add_scalar('b4', 0.2_wp)
-    call m%add_element(new_prismatic('bowl_rise', f1, f2, s(4), [0.0_wp, 0.0_wp, 1.0_wp]))
+    call moving_bowl(m, f2, s)
     call add_contact_pair(m, 'cup_in_bowl', f2, big, 1.0_wp, 'cup', small, -1.0_wp, pair, st)
     call m%add_law(new_constant_load('push', pair%frame_b, [0.3_wp, -0.2_wp, 0.9_wp], &
                                      [0.1_wp, 0.2_wp, -0.05_wp], .false.))
@@ -135,10 +132,48 @@ contains
     call m%check_start(q0, st)
     call check_contact_branch(m, pair, st)
     call check(st%ok(), 'cup in bowl closes at the start: '//st%text())
+    ! the open chain, started from the closed loop
+    call moving_bowl(mo, f2, s)
+    call add_open_contact_pair(mo, 'cup_in_bowl', f2, big, 1.0_wp, 'cup', small, -1.0_wp, open, st)
+    call mo%add_law(new_constant_load('push', open%frame_b, [0.3_wp, -0.2_wp, 0.9_wp], &
+                                      [0.1_wp, 0.2_wp, -0.05_wp], .false.))
+    call mo%add_law(new_constant_load('push_bowl', f2, [0.5_wp, 0.1_wp, -0.3_wp], &
+                                      [-0.1_wp, 0.05_wp, 0.2_wp], .false.))
+    call mo%add_law(new_constant_load('push_contact', open%frame_1d, [-0.1_wp, 0.4_wp, 0.2_wp], &
+                                      [0.03_wp, -0.1_wp, 0.2_wp], .true.))
+    call mo%set_coordinates([s, open%coordinates()])
+    call mo%finalize(st)
+    call check(st%ok(), 'cup in bowl, open chain built: '//st%text())
+    call place_open_contact_pair(mo, open, m, pair)
+    qo = mo%scalars([s, open%coordinates()])%q
+    call mo%check_start(qo, st)
+    call check(st%ok(), 'cup in bowl, open chain starts: '//st%text())
+    ! rounding of O(1) poses (the loop is closed to ~1e-15)
+    call check(maxval(abs(mo%frames(open%frame_b)%rot - m%frames(pair%frame_b)%rot)) <= 1e-14_wp .and. &
+               maxval(abs(mo%frames(open%frame_b)%r - m%frames(pair%frame_b)%r)) <= 1e-14_wp, &
+               'open chain: the cup where the closed loop has it')
+    call check(maxval(abs(mo%scalars(open%gaps)%q)) <= 1e-14_wp, 'open chain: g1..g5 zero (rounding)')
     do trial = 1, 3
       call check_mechanism_motion('cup in moving bowl', m, q0, 0.2_wp, 0.4_wp*(trial - 2))
+      call check_mechanism_motion('cup in moving bowl, open chain', mo, qo, 0.2_wp, 0.4_wp*(trial - 2))
+      call check(maxval(abs(mo%scalars(open%gaps)%q)) <= 1e-14_wp, 'open chain: g1..g5 zero along the motion')
     end do
   end subroutine paraboloid_in_moving_bowl
+
+  !> The bowl turning and rising: spherical + prismatic from the ground to frame f2.
+  subroutine moving_bowl(m, f2, s)
+    type(mechanism_t), intent(inout) :: m
+    integer, intent(out) :: f2, s(4)
+    integer :: f1
+    f1 = m%add_frame('bowl_turn')
+    s(1) = m%add_scalar('b1', 0.1_wp)
+    s(2) = m%add_scalar('b2', -0.2_wp)
+    s(3) = m%add_scalar('b3', 0.3_wp)
+    call m%add_element(new_spherical('bowl_turn', 1, f1, s(1:3)))
+    f2 = m%add_frame('bowl')
+    s(4) = m%add_scalar('b4', 0.2_wp)
+    call m%add_element(new_prismatic('bowl_rise', f1, f2, s(4), [0.0_wp, 0.0_wp, 1.0_wp]))
+  end subroutine moving_bowl
 
   !> The egg with its normal pointing inwards: g4, g5 hold for parallel normals
   !> too, so the loop closes, on the wrong branch; the start is refused.
