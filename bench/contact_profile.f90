@@ -3,9 +3,13 @@
 !> error-test and nonlinear failures, root evaluations, events, restarts.
 !>
 !> Usage (from the repository root):
-!>   contact_profile input.nml [p1|p2] [mu] [seconds]
-!> p1: rtol 1e-11, atol 1e-10; p2: 1e-6, 1e-5 (thesis); mu > 0 replaces the
-!> first contact's friction coefficient; seconds replaces the input's duration.
+!>   contact_profile input.nml [p1|p2|ref] [mu] [seconds] [coefficient] [file]
+!> p1: rtol 1e-11, atol 1e-10; p2: 1e-6, 1e-5 (thesis); ref: 1e-13, 1e-12 (a
+!> reference); mu > 0 replaces the first contact's friction coefficient;
+!> seconds > 0 replaces the input's duration; coefficient > 0 replaces Adams'
+!> corrector coefficient (CVODE's nlscoef); with `file`, the first body's
+!> state every 5 ms is written there (t, tilt of body y from the vertical in
+!> degrees, origin x y z in m, energy in J), for comparisons with a reference.
 program contact_profile
   use base_kinds, only: wp
   use base_status, only: status_t
@@ -16,8 +20,9 @@ program contact_profile
   use io_contact_config, only: read_contact_config
   implicit none (type, external)
 
-  character(len=512) :: path, argument
-  real(wp) :: mu, tol(2)
+  character(len=512) :: path, argument, file
+  real(wp) :: mu, tol(2), coefficient, duration
+  integer :: unit, i
   type(input_text_t) :: input
   type(solver_config_t) :: solver
   type(contact_system_t) :: system
@@ -40,6 +45,7 @@ program contact_profile
   if (command_argument_count() >= 2) then
     call get_command_argument(2, argument)
     if (argument == 'p2') tol = [1e-6_wp, 1e-5_wp]
+    if (argument == 'ref') tol = [1e-13_wp, 1e-12_wp]
   end if
   if (command_argument_count() >= 3) then
     call get_command_argument(3, argument)
@@ -47,8 +53,16 @@ program contact_profile
   end if
   if (command_argument_count() >= 4) then
     call get_command_argument(4, argument)
-    read (argument, *) options%t_end
+    read (argument, *) duration
+    if (duration > 0) options%t_end = duration
   end if
+  coefficient = 0
+  if (command_argument_count() >= 5) then
+    call get_command_argument(5, argument)
+    read (argument, *) coefficient
+  end if
+  file = ''
+  if (command_argument_count() >= 6) call get_command_argument(6, file)
   if (status%ok() .and. mu > 0) system%contacts(1)%mu = mu
   if (status%ok()) call build_contact_model(system, model, status)
   if (.not. status%ok()) then
@@ -59,7 +73,22 @@ program contact_profile
   options%progress_seconds = 0
   options%ode%rtol = tol(1)
   options%ode%atol = tol(2)
+  if (coefficient > 0) options%ode%convergence_coefficient = coefficient
+  if (len_trim(file) > 0) then
+    options%output_step = 5e-3_wp
+    call model%ode%start_series(nint(options%t_end/options%output_step) + 20)
+  end if
   call drive(model%ode, model%y0, options, result, status)
+  if (len_trim(file) > 0) then
+    open (newunit=unit, file=trim(file), status='replace', action='write')
+    associate (s => model%ode%series)
+      do i = 1, s%n
+        write (unit, '(6es25.16e3)') s%time(i), acos(min(abs(s%body_rot(3, 2, 1, i)), 1.0_wp))*180/acos(-1.0_wp), &
+          s%body_r(:, 1, i), s%kinetic(i) + s%potential(i)
+      end do
+    end associate
+    close (unit)
+  end if
   if (.not. status%ok()) print '(a)', status%text()
   print '(a, f0.4, a, f0.3)', 't reached ', result%t, '  CPU s ', result%cpu
   print '(a, i0, a, i0, a, i0, a, i0, a, i0)', 'steps ', result%stats%steps, '  rhs ', &
