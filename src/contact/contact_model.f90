@@ -107,7 +107,7 @@ module contact_model
     integer :: level = LEVEL_POSITION
     logical :: rolling = .false.
     logical :: open = .false.                    ! position level by the open chain
-    integer :: frame_a = 0, frame_b = 0, frame_1d = 0, frame_2d = 0
+    integer :: frame_a = 0, frame_b = 0, frame_1d = 0, frame_2d = 0   ! frame_2d: 0 in the open chain
     integer :: coordinates(4) = 0                ! scalars u1, v1, u2, v2
     integer :: gaps(5) = 0                       ! closure measurements g1..g5
     integer :: contact = 0                       ! index among the mechanism's contacts
@@ -313,9 +313,7 @@ contains
           link%frame_a = model%body_frame(b1 + 1)
           associate (s1 => system%shapes(shape_index(system, c%shape_1))%surface, &
                      s2 => system%shapes(shape_index(system, c%shape_2))%surface)
-            if (link%open) then
-              call add_open_contact(m, c, link, s1, s2, q, status)
-            else if (level == LEVEL_POSITION) then
+            if (level == LEVEL_POSITION) then
               call add_position_contact(m, c, link, s1, s2, q, status)
             else
               call add_velocity_contact(m, c, link, s1, s2, closed, k, q, kinematic, status)
@@ -409,6 +407,9 @@ contains
     end do
   end subroutine mass_properties
 
+  !> Position level by the loop or (link%open) by the open chain, whose q
+  !> are (u1, v1, phi, u2, v2) and whose N is what body 2 presses on the
+  !> contact frame K_1D, -z_1D . f_1D.
   subroutine add_position_contact(m, c, link, s1, s2, q, status)
     type(mechanism_t), intent(inout) :: m
     type(contact_spec_t), intent(in) :: c
@@ -416,7 +417,11 @@ contains
     class(surface_t), intent(in) :: s1, s2
     integer, allocatable, intent(inout) :: q(:)
     type(status_t), intent(inout) :: status
-    call add_contact_pair(m, c%name, link%frame_a, s1, c%side_1, c%body_2, s2, c%side_2, link%pair, status)
+    if (link%open) then
+      call add_open_contact_pair(m, c%name, link%frame_a, s1, c%side_1, c%body_2, s2, c%side_2, link%pair, status)
+    else
+      call add_contact_pair(m, c%name, link%frame_a, s1, c%side_1, c%body_2, s2, c%side_2, link%pair, status)
+    end if
     if (.not. status%ok()) return
     link%frame_b = link%pair%frame_b
     link%frame_1d = link%pair%frame_1d
@@ -424,6 +429,10 @@ contains
     link%coordinates = [link%pair%u1, link%pair%v1, link%pair%u2, link%pair%v2]
     link%gaps = link%pair%gaps
     q = [q, link%pair%coordinates()]
+    if (link%open) then
+      link%contact = m%add_contact(c%name, link%frame_a, link%frame_b, link%frame_1d, 1.0_wp)
+      return
+    end if
     ! N = lambda of g3: a positive cut force pushes K_2D along z_1D, away from A
     link%contact = m%add_contact(c%name, link%frame_a, link%frame_b, link%frame_1d, 1.0_wp, &
                                  normal_measurement=link%gaps(3))
@@ -435,25 +444,6 @@ contains
       call m%add_rate_constraint(c%name//' rolling', link%rolling_outputs, [link%pair%u12, link%pair%v12], status)
     end if
   end subroutine add_position_contact
-
-  !> The open chain (contact_pair): q gets (u1, v1, phi, u2, v2); N is what
-  !> body 2 presses on the contact frame K_1D, -z_1D . f_1D.
-  subroutine add_open_contact(m, c, link, s1, s2, q, status)
-    type(mechanism_t), intent(inout) :: m
-    type(contact_spec_t), intent(in) :: c
-    type(contact_link_t), intent(inout) :: link
-    class(surface_t), intent(in) :: s1, s2
-    integer, allocatable, intent(inout) :: q(:)
-    type(status_t), intent(inout) :: status
-    call add_open_contact_pair(m, c%name, link%frame_a, s1, c%side_1, c%body_2, s2, c%side_2, link%pair, status)
-    if (.not. status%ok()) return
-    link%frame_b = link%pair%frame_b
-    link%frame_1d = link%pair%frame_1d
-    link%coordinates = [link%pair%u1, link%pair%v1, link%pair%u2, link%pair%v2]
-    link%gaps = link%pair%gaps
-    q = [q, link%pair%coordinates()]
-    link%contact = m%add_contact(c%name, link%frame_a, link%frame_b, link%frame_1d, 1.0_wp)
-  end subroutine add_open_contact
 
   !> Body 2 moved by the velocity-level element from the contact frame on S1;
   !> the start values come from the closed position-level model `closed`

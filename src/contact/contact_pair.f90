@@ -113,16 +113,8 @@ contains
     real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
     integer :: k
     character(len=2) :: digit
+    call begin_pair(name, frame_a, side_1, side_2, pair, status)
     if (.not. status%ok()) return
-    if (abs(abs(side_1) - 1) > 0 .or. abs(abs(side_2) - 1) > 0) then
-      call set_status(status, STATUS_INVALID_INPUT, 'contact '''//name//''': the sides of its surfaces '// &
-                      'must be +1 or -1')
-      return
-    end if
-    pair%name = name
-    pair%side_1 = side_1
-    pair%side_2 = side_2
-    pair%frame_a = frame_a
     ! relative chain: S12, lift along its normal, free rotation
     pair%frame_12 = m%add_frame(name//'.12')
     pair%u12 = m%add_scalar(name//'.u12')
@@ -141,12 +133,7 @@ contains
     call m%add_element(new_free_rotation(name//'.turn', pair%frame_lift, pair%frame_b, pair%angles, ez, identity))
     pair%element_rotation = m%n_elements
     ! the two contact frames
-    pair%frame_1d = m%add_frame(name//'.1D')
-    pair%u1 = m%add_scalar(name//'.u1')
-    pair%v1 = m%add_scalar(name//'.v1')
-    call m%add_element(new_surface_joint(name//'.s1', frame_a, pair%frame_1d, pair%u1, pair%v1, surface_1, &
-                                         side_1, 1.0_wp, 0.0_wp))
-    pair%element_s1 = m%n_elements
+    call add_contact_frame_1(m, surface_1, pair)
     pair%frame_2d = m%add_frame(name//'.2D')
     pair%u2 = m%add_scalar(name//'.u2')
     pair%v2 = m%add_scalar(name//'.v2')
@@ -154,10 +141,7 @@ contains
                                          side_2, 1.0_wp, 0.0_wp))
     pair%element_s2 = m%n_elements
     ! closure (3.86)
-    do k = 1, 5
-      write (digit, '(i1)') k
-      pair%gaps(k) = m%add_scalar(name//'.g'//trim(digit))
-    end do
+    call add_gap_scalars(m, pair)
     call m%add_element(new_measurement(name//'.g1', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
                                        pair%gaps(1), axis_i=ex))
     call m%add_element(new_measurement(name//'.g2', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
@@ -188,25 +172,10 @@ contains
     type(status_t), intent(inout) :: status
     real(wp), parameter :: ez(3) = [0, 0, 1]
     real(wp), parameter :: turn_over(3, 3) = reshape([1, 0, 0, 0, -1, 0, 0, 0, -1], [3, 3])   ! Rx(pi)
-    integer :: k
-    character(len=2) :: digit
+    call begin_pair(name, frame_a, side_1, side_2, pair, status)
     if (.not. status%ok()) return
-    if (abs(abs(side_1) - 1) > 0 .or. abs(abs(side_2) - 1) > 0) then
-      call set_status(status, STATUS_INVALID_INPUT, 'contact '''//name//''': the sides of its surfaces '// &
-                      'must be +1 or -1')
-      return
-    end if
+    call add_contact_frame_1(m, surface_1, pair)
     pair%open = .true.
-    pair%name = name
-    pair%side_1 = side_1
-    pair%side_2 = side_2
-    pair%frame_a = frame_a
-    pair%frame_1d = m%add_frame(name//'.1D')
-    pair%u1 = m%add_scalar(name//'.u1')
-    pair%v1 = m%add_scalar(name//'.v1')
-    call m%add_element(new_surface_joint(name//'.s1', frame_a, pair%frame_1d, pair%u1, pair%v1, surface_1, &
-                                         side_1, 1.0_wp, 0.0_wp))
-    pair%element_s1 = m%n_elements
     pair%frame_turn = m%add_frame(name//'.turn')
     pair%phi = m%add_scalar(name//'.phi')
     call m%add_element(new_revolute(name//'.turn', pair%frame_1d, pair%frame_turn, pair%phi, ez))
@@ -216,13 +185,54 @@ contains
     call m%add_element(new_inverse_surface_joint(name//'.s2', pair%frame_turn, pair%frame_b, pair%u2, pair%v2, &
                                                  surface_2, side_2, 1.0_wp, 0.0_wp, turn_over))
     pair%element_s2 = m%n_elements
-    do k = 1, 5
-      write (digit, '(i1)') k
-      pair%gaps(k) = m%add_scalar(name//'.g'//trim(digit))
-    end do
+    call add_gap_scalars(m, pair)
     call m%add_element(new_closure_monitor(name//'.closure', frame_a, surface_1, side_1, pair%frame_b, surface_2, &
                                            side_2, [pair%u1, pair%v1, pair%u2, pair%v2], pair%gaps))
   end subroutine add_open_contact_pair
+
+  !> Checks the sides and sets what both chains share.
+  subroutine begin_pair(name, frame_a, side_1, side_2, pair, status)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame_a
+    real(wp), intent(in) :: side_1, side_2
+    type(contact_pair_t), intent(inout) :: pair
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok()) return
+    if (abs(abs(side_1) - 1) > 0 .or. abs(abs(side_2) - 1) > 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'contact '''//name//''': the sides of its surfaces '// &
+                      'must be +1 or -1')
+      return
+    end if
+    pair%name = name
+    pair%side_1 = side_1
+    pair%side_2 = side_2
+    pair%frame_a = frame_a
+  end subroutine begin_pair
+
+  !> The contact frame K_1D = S1(u1, v1) on body A.
+  subroutine add_contact_frame_1(m, surface_1, pair)
+    type(mechanism_t), intent(inout) :: m
+    class(surface_t), intent(in) :: surface_1
+    type(contact_pair_t), intent(inout) :: pair
+    pair%frame_1d = m%add_frame(pair%name//'.1D')
+    pair%u1 = m%add_scalar(pair%name//'.u1')
+    pair%v1 = m%add_scalar(pair%name//'.v1')
+    call m%add_element(new_surface_joint(pair%name//'.s1', pair%frame_a, pair%frame_1d, pair%u1, pair%v1, &
+                                         surface_1, pair%side_1, 1.0_wp, 0.0_wp))
+    pair%element_s1 = m%n_elements
+  end subroutine add_contact_frame_1
+
+  !> The scalars of the closure functions g1..g5.
+  subroutine add_gap_scalars(m, pair)
+    type(mechanism_t), intent(inout) :: m
+    type(contact_pair_t), intent(inout) :: pair
+    integer :: k
+    character(len=2) :: digit
+    do k = 1, 5
+      write (digit, '(i1)') k
+      pair%gaps(k) = m%add_scalar(pair%name//'.g'//trim(digit))
+    end do
+  end subroutine add_gap_scalars
 
   !> Start values of an open pair from the closed configuration of a loop
   !> pair (`closed` in mechanism `mc`): the same contact points, and phi the
