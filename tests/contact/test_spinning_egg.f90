@@ -23,7 +23,8 @@ program test_spinning_egg
   use base_status, only: status_t
   use testing, only: check, finish_tests
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
-  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, LEVEL_VELOCITY, CHAIN_LOOP
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, LEVEL_VELOCITY, CHAIN_LOOP, &
+    FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
@@ -40,7 +41,8 @@ program test_spinning_egg
   call egg(0.8_wp, p2)
   call fast_egg()
   call velocity_level(drift_velocity)
-  call open_against_loop()
+  call open_against_loop(FRICTION_VISCOUS_WEIGHT)
+  call open_against_loop(FRICTION_VISCOUS_NORMAL)
   print '(a, es9.2, a, es9.2, a)', 'closure residual max over 10 s at P2: position level ', drift_position, &
     ' m, velocity level ', drift_velocity, ' m'
   call check(drift_velocity > 1e3_wp*max(drift_position, 1e-16_wp), &
@@ -55,18 +57,11 @@ contains
     integer, intent(in) :: tolerances
     type(contact_model_t), intent(inout), target :: model
     type(contact_system_t), intent(inout) :: system
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
     type(driver_options_t) :: options
     type(driver_result_t) :: result
     type(status_t) :: st
-    if (.not. allocated(system%contacts)) then
-      call load_input_file('inputs/contact/egg.nml', input, st)
-      call read_solver_config(input, solver, st)
-      call read_contact_config(input, system, st)
-      call check(st%ok(), 'egg input read: '//st%text())
-      if (.not. st%ok()) return
-    end if
+    if (.not. allocated(system%contacts)) call load_egg(system)
+    if (.not. allocated(system%contacts)) return
     system%contacts(1)%mu = mu
     call build_contact_model(system, model, st)
     call check(st%ok(), 'egg built: '//st%text())
@@ -85,6 +80,18 @@ contains
     call drive(model%ode, model%y0, options, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'egg ran: '//st%text())
   end subroutine run_egg
+
+  !> The shipped egg's description.
+  subroutine load_egg(system)
+    type(contact_system_t), intent(out) :: system
+    type(input_text_t) :: input
+    type(solver_config_t) :: solver
+    type(status_t) :: st
+    call load_input_file('inputs/contact/egg.nml', input, st)
+    call read_solver_config(input, solver, st)
+    call read_contact_config(input, system, st)
+    call check(st%ok(), 'egg input read: '//st%text())
+  end subroutine load_egg
 
   !> theta (deg): the long axis (body y) against the vertical, at every record.
   function tilt(model) result(theta)
@@ -156,29 +163,39 @@ contains
   end subroutine egg
 
   !> The egg (mu = 0.3, P1, 3 s: the whole rise from 77 to below 2 degrees)
-  !> by the open chain and by the loop: theta(t) at every output within 1e-6
-  !> degrees. Both integrate the same motion to rtol 1e-11 in different
-  !> coordinates (and the loop restarts at its chart changes), so they differ
-  !> by the integrators' errors, amplified over ~70 turns of the spin: 4.5e-8
-  !> degrees measured; 1e-6 leaves room for other compilers' rounding, while
-  !> any physical difference (a normal force or friction off by 1e-6 of
-  !> itself shifts the rise by ~1e-6 of 75 degrees, wrong terms by degrees)
-  !> fails.
-  subroutine open_against_loop()
+  !> by the open chain and by the loop, with the egg's friction law and with
+  !> the one that needs the normal force in every right-hand side
+  !> (viscous_normal: N from the contact frame's force in the open chain,
+  !> from g3's cut force in the loop): theta(t) at every output within 1e-6
+  !> degrees and N within 1e-6 M g. Both integrate the same motion to rtol
+  !> 1e-11 in different coordinates (and the loop restarts at its chart
+  !> changes), so they differ by the integrators' errors, amplified over ~70
+  !> turns of the spin: theta by 4.5e-8 / 2.7e-8 degrees and N by 2e-9 /
+  !> 3e-9 M g measured (viscous_weight / viscous_normal); 1e-6 leaves room
+  !> for other compilers' rounding, while any physical difference (a normal
+  !> force or friction off by 1e-6 of itself shifts the rise by ~1e-6 of 75
+  !> degrees, wrong terms by degrees) fails.
+  subroutine open_against_loop(friction)
+    integer, intent(in) :: friction
     type(contact_system_t) :: system
     type(contact_model_t), target :: open, loop
     real(wp), allocatable :: theta_open(:), theta_loop(:)
-    real(wp) :: worst
+    real(wp) :: worst, worst_n
     integer :: i, j, matched
+    character(len=16) :: law
+    law = merge('viscous_weight', 'viscous_normal', friction == FRICTION_VISCOUS_WEIGHT)
+    call load_egg(system)
+    system%contacts(1)%friction = friction
     call run_egg(0.3_wp, p1, 3.0_wp, open, system)
-    call check(open%links(1)%open, 'the egg runs by the open chain by default')
+    call check(open%links(1)%open, trim(law)//': the egg runs by the open chain by default')
     system%contacts(1)%chain = CHAIN_LOOP
     call run_egg(0.3_wp, p1, 3.0_wp, loop, system)
-    call check(.not. loop%links(1)%open, 'chain = loop: the loop formulation')
+    call check(.not. loop%links(1)%open, trim(law)//': chain = loop, the loop formulation')
     theta_open = tilt(open)
     theta_loop = tilt(loop)
     ! the records at the same times (the loop has extra ones at its chart changes)
     worst = 0
+    worst_n = 0
     matched = 0
     j = 1
     do i = 1, size(theta_open)
@@ -188,11 +205,13 @@ contains
       if (loop%ode%series%time(j) /= open%ode%series%time(i)) cycle
       matched = matched + 1
       worst = max(worst, abs(theta_open(i) - theta_loop(j)))
+      worst_n = max(worst_n, abs(open%ode%series%normal(1, i) - loop%ode%series%normal(1, j))/(mass*g))
     end do
-    call check(matched >= 600, 'open and loop: the outputs every 5 ms compared')
-    call check(worst <= 1e-6_wp, 'open chain and loop: theta(t) within 1e-6 degrees over 3 s at P1')
-    print '(a, es9.2, a, f6.2, a)', 'open chain against loop, P1, 3 s: theta differs by at most ', worst, &
-      ' deg (theta at 3 s: ', theta_open(size(theta_open)), ' deg)'
+    call check(matched >= 600, trim(law)//': open and loop, the outputs every 5 ms compared')
+    call check(worst <= 1e-6_wp, trim(law)//': open chain and loop, theta(t) within 1e-6 degrees over 3 s at P1')
+    call check(worst_n <= 1e-6_wp, trim(law)//': open chain and loop, N within 1e-6 M g')
+    print '(a, es9.2, a, es9.2, a, f6.2, a)', 'open chain against loop, '//trim(law)//', P1, 3 s: theta differs '// &
+      'by at most ', worst, ' deg, N by ', worst_n, ' M g (theta at 3 s: ', theta_open(size(theta_open)), ' deg)'
   end subroutine open_against_loop
 
   !> 800 rad/s in gyroscopic balance: L = L e_z, omega = I^-1 L with omega.e_z
@@ -201,12 +220,9 @@ contains
   subroutine fast_egg()
     type(contact_system_t) :: system
     type(contact_model_t), target :: model
-    type(input_text_t) :: input
-    type(status_t) :: st
     real(wp) :: rot(3, 3), w(3), ieq, ipol, l, d(3), omega(3), ratio
     real(wp), parameter :: spin = 800
-    call load_input_file('inputs/contact/egg.nml', input, st)
-    call read_contact_config(input, system, st)
+    call load_egg(system)
     rot = system%bodies(1)%rotation
     w = rot(3, :)                                     ! world z in body axes
     ieq = mass*(a**2 + b**2)/5
@@ -229,11 +245,8 @@ contains
     real(wp), intent(out) :: drift
     type(contact_system_t) :: system
     type(contact_model_t), target :: model
-    type(input_text_t) :: input
-    type(status_t) :: st
     integer :: i
-    call load_input_file('inputs/contact/egg.nml', input, st)
-    call read_contact_config(input, system, st)
+    call load_egg(system)
     system%contacts(1)%level = LEVEL_VELOCITY
     call run_egg(0.3_wp, p2, 10.0_wp, model, system)
     drift = 0
