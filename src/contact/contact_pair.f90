@@ -47,6 +47,8 @@ module contact_pair
   use kinetostatics_joints, only: new_prismatic, new_revolute
   use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
   use kinetostatics_inverse_surface_joint, only: new_inverse_surface_joint
+  use kinetostatics_plane_joint, only: new_plane_joint
+  use geometry_elementary, only: plane_t
   use kinetostatics_free_rotation, only: free_rotation_t, new_free_rotation
   use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT, MEASURE_PLANE_PLANE
   use kinetostatics_mechanism, only: mechanism_t
@@ -133,7 +135,7 @@ contains
     call m%add_element(new_free_rotation(name//'.turn', pair%frame_lift, pair%frame_b, pair%angles, ez, identity))
     pair%element_rotation = m%n_elements
     ! the two contact frames
-    call add_contact_frame_1(m, surface_1, pair)
+    call add_contact_frame_1(m, surface_1, pair, status)
     pair%frame_2d = m%add_frame(name//'.2D')
     pair%u2 = m%add_scalar(name//'.u2')
     pair%v2 = m%add_scalar(name//'.v2')
@@ -174,8 +176,9 @@ contains
     real(wp), parameter :: turn_over(3, 3) = reshape([1, 0, 0, 0, -1, 0, 0, 0, -1], [3, 3])   ! Rx(pi)
     call begin_pair(name, frame_a, side_1, side_2, pair, status)
     if (.not. status%ok()) return
-    call add_contact_frame_1(m, surface_1, pair)
     pair%open = .true.
+    call add_contact_frame_1(m, surface_1, pair, status)
+    if (.not. status%ok()) return
     pair%frame_turn = m%add_frame(name//'.turn')
     pair%phi = m%add_scalar(name//'.phi')
     call m%add_element(new_revolute(name//'.turn', pair%frame_1d, pair%frame_turn, pair%phi, ez))
@@ -209,14 +212,28 @@ contains
     pair%frame_a = frame_a
   end subroutine begin_pair
 
-  !> The contact frame K_1D = S1(u1, v1) on body A.
-  subroutine add_contact_frame_1(m, surface_1, pair)
+  !> The contact frame K_1D = S1(u1, v1) on body A. In the open chain a
+  !> plane's by the plane joint (the same frame without the general joint's
+  !> Darboux-frame rates, which vanish on a plane); the loop keeps the general
+  !> joint (its placement reads the joint's surface, its results stay as
+  !> they were).
+  subroutine add_contact_frame_1(m, surface_1, pair, status)
     type(mechanism_t), intent(inout) :: m
     class(surface_t), intent(in) :: surface_1
     type(contact_pair_t), intent(inout) :: pair
+    type(status_t), intent(inout) :: status
     pair%frame_1d = m%add_frame(pair%name//'.1D')
     pair%u1 = m%add_scalar(pair%name//'.u1')
     pair%v1 = m%add_scalar(pair%name//'.v1')
+    select type (plane => surface_1)
+    type is (plane_t)
+      if (pair%open) then
+        call m%add_element(new_plane_joint(pair%name//'.s1', pair%frame_a, pair%frame_1d, pair%u1, pair%v1, &
+                                           plane, pair%side_1, 1.0_wp, 0.0_wp, status))
+        pair%element_s1 = m%n_elements
+        return
+      end if
+    end select
     call m%add_element(new_surface_joint(pair%name//'.s1', pair%frame_a, pair%frame_1d, pair%u1, pair%v1, &
                                          surface_1, pair%side_1, 1.0_wp, 0.0_wp))
     pair%element_s1 = m%n_elements
