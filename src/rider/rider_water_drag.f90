@@ -17,7 +17,7 @@ module rider_water_drag
   use kinetostatics_state, only: frame_state_t, scalar_state_t
   use kinetostatics_contact, only: contact_state_t
   use kinetostatics_force_law, only: contact_law_t
-  use water_field, only: water_field_t, water_at_t, water_edges_at_t, WATER_INSIDE
+  use water_field, only: water_field_t, water_edges_at_t, WATER_INSIDE
   use rider_drag, only: water_properties_t, drag_state_t, evaluate_drag
   implicit none (type, external)
   private
@@ -77,14 +77,16 @@ contains
     type(scalar_state_t), intent(in) :: scalars(:)
     type(contact_state_t), intent(in) :: contacts(:)
     type(status_t), intent(inout) :: status
-    type(water_at_t) :: w
+    real(wp) :: position(3), velocity(3), height, z_m(3)
+    integer :: location
     associate (unused_t => t, unused_f => frames, unused_st => status)
     end associate
     associate (s => contacts(self%contact))
-      call self%water%at_u(scalars(self%var_u)%q, w)
-      if (w%location == WATER_INSIDE) then
-        call evaluate_drag(self%radius, self%properties, s%point, s%normal, s%slip, w%position, w%z_m, w%height, &
-                           w%velocity, self%state)
+      ! only what the drag needs of the water (at_u would add the edges, K_M, beta)
+      call self%water%flow_at_u(scalars(self%var_u)%q, location, position, velocity, height, z_m)
+      if (location == WATER_INSIDE) then
+        call evaluate_drag(self%radius, self%properties, s%point, s%normal, s%slip, position, z_m, height, &
+                           velocity, self%state)
       else
         self%state = drag_state_t()
       end if

@@ -22,7 +22,10 @@
 !> centimetres (the flow runs at an angle to the centerline).
 !>
 !> Queries are pure, allocation-free and read only the field (intent(in), no
-!> cache): one field can be queried from several threads at once. Outside the
+!> cache): one field can be queried from several threads at once. A query
+!> finds its node interval from a bucket table made with the field (one
+!> bucket per node on average, then a short scan): the same interval as a
+!> bisection, in a few comparisons instead of ~12. Outside the
 !> computed range a query returns a location (before the start, after the end)
 !> and no values: the field never extrapolates.
 !>
@@ -79,15 +82,26 @@ module water_field
     type(water_edges_at_t) :: edges
   end type water_at_t
 
+  !> Where to start looking for x among increasing nodes: bucket b =
+  !> int((x - first)*per_unit) + 1 covers [first + (b-1)/per_unit, first + b/per_unit),
+  !> start(b) is the interval of its lower end.
+  type :: node_index_t
+    real(wp) :: first = 0, per_unit = 0
+    integer, allocatable :: start(:)
+  end type node_index_t
+
   type :: water_field_t
     private
     integer :: n = 0
     real(wp), allocatable :: u(:), arc(:)               ! nodes: u and their arc lengths (m)
     real(wp), allocatable :: value(:, :), slope(:, :)   ! (n_rows, n): values and d/du
     real(wp), allocatable :: left(:, :), right(:, :)    ! (3, m): edge u, v, dv/du
+    real(wp), allocatable :: left_u(:), right_u(:)      ! the edges' node u (contiguous for the search)
+    type(node_index_t) :: u_index, arc_index, left_index, right_index
     real(wp) :: flow = 0                                ! m^3/s
   contains
     procedure :: at_u => field_at_u
+    procedure :: flow_at_u => field_flow_at_u
     procedure :: at_arc_length => field_at_arc_length
     procedure :: edges_at_u => field_edges_at_u
     procedure :: u_range => field_u_range
@@ -166,6 +180,12 @@ contains
       call edge_nodes(series%left_edge(:, :n), series%left_edge_rate(:, :n), series%edge_solved(:n), field%left)
       call edge_nodes(series%right_edge(:, :n), series%right_edge_rate(:, :n), series%edge_solved(:n), field%right)
     end if
+    field%left_u = field%left(1, :)
+    field%right_u = field%right(1, :)
+    field%u_index = new_node_index(field%u)
+    field%arc_index = new_node_index(field%arc)
+    field%left_index = new_node_index(field%left_u)
+    field%right_index = new_node_index(field%right_u)
 
   contains
 
@@ -196,10 +216,38 @@ contains
     type(water_at_t), intent(out) :: water
     integer :: i
     if (self%n < 2) return   ! WATER_NOT_COMPUTED
-    call locate(self%u, self%n, u, water%location, i)
+    call locate(self%u, self%n, self%u_index, u, water%location, i)
     if (water%location /= WATER_INSIDE) return
     call evaluate(self, i, u, water)
   end subroutine field_at_u
+
+  !> Only the flow at the cross-section u, for a drag law: the streamline
+  !> point (m), the water velocity (m/s), the height (m) and the surface
+  !> normal z_M, each the same numbers as at_u gives (no edges, no K_M's
+  !> other axes, no flow angle). Values only where location = WATER_INSIDE.
+  pure subroutine field_flow_at_u(self, u, location, position, velocity, height, z_m)
+    class(water_field_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(out) :: location
+    real(wp), intent(out) :: position(3), velocity(3), height, z_m(3)
+    real(wp) :: val(row_position:row_height), der(row_position:row_height), zv(3), zd(3)
+    integer :: i
+    location = WATER_NOT_COMPUTED
+    position = 0; velocity = 0; height = 0; z_m = 0
+    if (self%n < 2) return
+    call locate(self%u, self%n, self%u_index, u, location, i)
+    if (location /= WATER_INSIDE) return
+    call hermite_rows(self%u(i), self%u(i + 1), self%value(row_position:row_height, i), &
+                      self%value(row_position:row_height, i + 1), self%slope(row_position:row_height, i), &
+                      self%slope(row_position:row_height, i + 1), u, val, der)
+    call hermite_rows(self%u(i), self%u(i + 1), self%value(row_z_m:row_z_m + 2, i), &
+                      self%value(row_z_m:row_z_m + 2, i + 1), self%slope(row_z_m:row_z_m + 2, i), &
+                      self%slope(row_z_m:row_z_m + 2, i + 1), u, zv, zd)
+    position = val(row_position:row_position + 2)
+    velocity = val(row_velocity:row_velocity + 2)
+    height = val(row_height)
+    z_m = zv/norm2(zv)
+  end subroutine field_flow_at_u
 
   !> The water at centerline arc length s (m from the slide's start): u from
   !> the Hermite interpolant of u(s) (du/ds = 1/|c_u| at the nodes), then as at_u.
@@ -210,7 +258,7 @@ contains
     real(wp) :: u, du_ds
     integer :: i
     if (self%n < 2) return   ! WATER_NOT_COMPUTED
-    call locate(self%arc, self%n, s, water%location, i)
+    call locate(self%arc, self%n, self%arc_index, s, water%location, i)
     if (water%location /= WATER_INSIDE) return
     call hermite(self%arc(i), self%arc(i + 1), self%u(i), self%u(i + 1), 1/self%slope(row_arc, i), &
                  1/self%slope(row_arc, i + 1), s, u, du_ds)
@@ -224,8 +272,9 @@ contains
     real(wp), intent(in) :: u
     type(water_edges_at_t), intent(out) :: edges
     if (self%n < 2) return   ! WATER_NOT_COMPUTED
-    call edge_at(self%left, u, edges%left_location, edges%v_left, edges%dv_left_du)
-    call edge_at(self%right, u, edges%right_location, edges%v_right, edges%dv_right_du)
+    call edge_at(self%left, self%left_u, self%left_index, u, edges%left_location, edges%v_left, edges%dv_left_du)
+    call edge_at(self%right, self%right_u, self%right_index, u, edges%right_location, edges%v_right, &
+                 edges%dv_right_du)
   end subroutine field_edges_at_u
 
   !> u of the first and the last node (0, 0 for an empty field).
@@ -290,26 +339,54 @@ contains
     call field_edges_at_u(self, u, water%edges)
   end subroutine evaluate
 
-  !> The edge (nodes u, v, dv/du) at u.
-  pure subroutine edge_at(nodes, u, location, v, dv_du)
-    real(wp), intent(in) :: nodes(:, :), u
+  !> The edge (nodes u, v, dv/du; node_u their first row) at u.
+  pure subroutine edge_at(nodes, node_u, index, u, location, v, dv_du)
+    real(wp), intent(in) :: nodes(:, :), node_u(:), u
+    type(node_index_t), intent(in) :: index
     integer, intent(out) :: location
     real(wp), intent(out) :: v, dv_du
     integer :: i
     v = 0; dv_du = 0
-    call locate(nodes(1, :), size(nodes, 2), u, location, i)
+    call locate(node_u, size(node_u), index, u, location, i)
     if (location /= WATER_INSIDE) return
     call hermite(nodes(1, i), nodes(1, i + 1), nodes(2, i), nodes(2, i + 1), nodes(3, i), nodes(3, i + 1), &
                  u, v, dv_du)
   end subroutine edge_at
 
+  !> The bucket table of increasing nodes (empty for fewer than two nodes or
+  !> no extent): one bucket per node.
+  pure function new_node_index(nodes) result(index)
+    real(wp), intent(in) :: nodes(:)
+    type(node_index_t) :: index
+    integer :: n, b, i
+    n = size(nodes)
+    allocate (index%start(0))
+    if (n < 2) return
+    if (.not. nodes(n) > nodes(1)) return
+    index%first = nodes(1)
+    index%per_unit = n/(nodes(n) - nodes(1))
+    deallocate (index%start)
+    allocate (index%start(n))
+    i = 1
+    do b = 1, n
+      do while (i < n - 1)
+        if (.not. nodes(i + 1) <= index%first + (b - 1)/index%per_unit) exit
+        i = i + 1
+      end do
+      index%start(b) = i
+    end do
+  end function new_node_index
+
   !> Where x lies among the increasing nodes(1:n); if inside, the interval i
-  !> with nodes(i) <= x <= nodes(i+1) (bisection).
-  pure subroutine locate(nodes, n, x, location, i)
+  !> with nodes(i) <= x <= nodes(i+1): the largest i <= n-1 with nodes(i) <= x,
+  !> as a bisection finds it. The bucket's start is only a guess (rounding at
+  !> a bucket's edge): the scans make it exact either way.
+  pure subroutine locate(nodes, n, index, x, location, i)
     real(wp), intent(in) :: nodes(:), x
     integer, intent(in) :: n
+    type(node_index_t), intent(in) :: index
     integer, intent(out) :: location, i
-    integer :: lo, hi, mid
+    integer :: b
     i = 1
     if (n < 2 .or. ieee_is_nan(x)) then   ! no comparison with a NaN (it traps in Debug builds)
       location = WATER_NOT_COMPUTED
@@ -319,16 +396,18 @@ contains
       location = WATER_AFTER_END
     else
       location = WATER_INSIDE
-      lo = 1; hi = n
-      do while (hi - lo > 1)
-        mid = (lo + hi)/2
-        if (x >= nodes(mid)) then
-          lo = mid
-        else
-          hi = mid
-        end if
+      if (size(index%start) > 0) then
+        b = min(max(int((x - index%first)*index%per_unit) + 1, 1), size(index%start))
+        i = index%start(b)
+      end if
+      do while (i > 1)
+        if (nodes(i) <= x) exit
+        i = i - 1
       end do
-      i = lo
+      do while (i < n - 1)
+        if (nodes(i + 1) > x) exit
+        i = i + 1
+      end do
     end if
   end subroutine locate
 
