@@ -289,7 +289,9 @@ contains
     type(ode_options_t) :: opt
     type(status_t) :: st
     real(wp) :: u_first, u_last, s_first, s_last, du, deriv_err, jump, arc_err, nan, u_exact
-    integer :: i
+    real(wp) :: u_query(3), position(3), velocity(3), height, z_m(3)
+    integer :: i, k, location
+    logical :: flow_same
     opt%rtol = 1e-10_wp; opt%atol = 1e-10_wp
     call simulate_water(model, y0, opt, 100.0_wp, 0.05_wp, s, st, edges=.true.)
     field = new_water_field(s, st)
@@ -352,6 +354,27 @@ contains
     call empty%edges_at_u(1.0_wp, ep)
     call check(ep%left_location == WATER_NOT_COMPUTED .and. ep%right_location == WATER_NOT_COMPUTED, &
                'an empty field: no edges')
+    ! the drag's query: the same numbers as at_u, the same locations
+    flow_same = .true.
+    do i = 1, field%node_count() - 1, 3
+      do k = 0, 2   ! the node itself, just above it, and the middle of its interval
+        u_query = [s%u(i), s%u(i)*(1 + 1e-14_wp), 0.5_wp*(s%u(i) + s%u(i + 1))]
+        call field%at_u(u_query(k + 1), w)
+        call field%flow_at_u(u_query(k + 1), location, position, velocity, height, z_m)
+        flow_same = flow_same .and. location == w%location .and. all(position == w%position) .and. &
+                    all(velocity == w%velocity) .and. height == w%height .and. all(z_m == w%z_m)
+      end do
+    end do
+    call check(flow_same, 'flow_at_u: the same position, velocity, height and z_M as at_u (to the bit)')
+    call field%flow_at_u(u_first - 1e-9_wp, location, position, velocity, height, z_m)
+    flow_same = location == WATER_BEFORE_START .and. height == 0
+    call field%flow_at_u(u_last + 1e-9_wp, location, position, velocity, height, z_m)
+    flow_same = flow_same .and. location == WATER_AFTER_END .and. height == 0
+    call field%flow_at_u(nan, location, position, velocity, height, z_m)
+    flow_same = flow_same .and. location == WATER_NOT_COMPUTED
+    call empty%flow_at_u(1.0_wp, location, position, velocity, height, z_m)
+    flow_same = flow_same .and. location == WATER_NOT_COMPUTED
+    call check(flow_same, 'flow_at_u: before the start, after the end, NaN, empty field: locations, no values')
     ! a run without edges gives a field without edges
     call simulate_water(model, y0, opt, 100.0_wp, 0.05_wp, s, st, edges=.false.)
     field = new_water_field(s, st)
