@@ -1700,11 +1700,13 @@ contains
     real(wp), intent(out) :: residual
     type(status_t), intent(inout) :: status
     real(wp) :: qdd(self%ns)
-    integer :: c
+    integer :: c, reused
     residual = huge(1.0_wp)
+    reused = self%dynamics_reused
     call self%dynamics(t, q, qd, qdd, status)
     if (.not. status%ok()) return
-    call self%set_velocities(qd)
+    ! a reused dynamics has just set these velocities; a computed one overwrote them
+    if (self%dynamics_reused == reused) call self%set_velocities(qd)
     call self%set_accelerations(qdd)
     call self%inverse_dynamics(.true., .true., LOADS_ALL)
     residual = maxval(abs(self%gq))
