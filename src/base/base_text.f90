@@ -16,6 +16,7 @@ contains
     character(len=:), allocatable :: text
     character(len=40) :: buffer
     integer :: digits, e, low, high
+    logical :: away   ! the digits are rounded away from zero, not to nearest
     if (ieee_is_nan(x)) then
       text = 'NaN'
       return
@@ -29,11 +30,18 @@ contains
     ! as to d digits, and the interval that reads back as x is symmetric
     ! about x unless x is a power of two, so "reads back" holds from the
     ! fewest digits on. A power of two (its interval below is half the one
-    ! above) is searched digit by digit.
+    ! above) is searched digit by digit, and where the nearest d digits lie
+    ! below it and do not read back, the d digits next above it still may
+    ! (2**-1017: 7.120236347223045E-307, not the nearest ...044, and not 17
+    ! digits).
+    away = .false.
     if (fraction(abs(x)) == 0.5_wp) then
       do digits = 1, 17
         call write_digits(x, digits, buffer)
         if (reads_back(buffer, x)) exit
+        call write_digits(x, digits, buffer, away=.true.)
+        away = reads_back(buffer, x)
+        if (away) exit
       end do
     else
       low = 0    ! fewer digits than the fewest that read back
@@ -53,10 +61,13 @@ contains
     text = trim(adjustl(buffer))
     e = index(text, '.E')
     if (e > 0) text = text(:e)//'0'//text(e + 1:)   ! 1.E-14 -> 1.0E-14
-    ! Plain notation for moderate magnitudes: 2.5E+00 -> 2.5, 1.0E-03 stays.
-    e = exponent10(x)
+    ! Plain notation for moderate magnitudes: 2.5E+00 -> 2.5, 1.0E-04 stays.
+    ! The exponent is the text's (floor(log10|x|) in floating point is 6 for
+    ! 999999.9999999999, and 16 digits after the point then round to
+    ! 1000000.0, another number); the same digits at the same places.
+    read (text(index(text, 'E') + 1:), *) e
     if (e >= -3 .and. e <= 6) then
-      write (buffer, '(f40.' // format_integer(max(digits - 1 - e, 1)) // ')') x
+      write (buffer, '(' // rounding(x, away) // 'f40.' // format_integer(max(digits - 1 - e, 1)) // ')') x
       text = trim(adjustl(buffer))
       do while (len(text) > 2 .and. text(len(text):len(text)) == '0' .and. &
                 text(len(text) - 1:len(text) - 1) /= '.')
@@ -65,14 +76,28 @@ contains
     end if
   end function format_real
 
-  !> x in exponent form with `digits` significant digits (left-justified).
-  pure subroutine write_digits(x, digits, buffer)
+  !> x in exponent form with `digits` significant digits (left-justified),
+  !> rounded to nearest, or with `away` away from zero.
+  pure subroutine write_digits(x, digits, buffer, away)
     real(wp), intent(in) :: x
     integer, intent(in) :: digits
     character(len=*), intent(out) :: buffer
-    write (buffer, '(es40.' // format_integer(digits - 1) // ')') x
+    logical, intent(in), optional :: away
+    write (buffer, '(' // rounding(x, away) // 'es40.' // format_integer(digits - 1) // ')') x
     buffer = with_exponent_letter(trim(adjustl(buffer)))
   end subroutine write_digits
+
+  !> The rounding edit descriptor: none (the default, to nearest), or away
+  !> from zero (up for positive x, down for negative).
+  pure function rounding(x, away) result(mode)
+    real(wp), intent(in) :: x
+    logical, intent(in), optional :: away
+    character(len=3) :: mode
+    mode = ''
+    if (present(away)) then
+      if (away) mode = merge('RU,', 'RD,', x > 0)
+    end if
+  end function rounding
 
   !> An exponent form always with its E: Fortran writes an exponent of three
   !> digits without it (1.8+308, 4.9-324), which is no number in JSON and an
@@ -126,15 +151,6 @@ contains
     end do
     beyond_huge = digits > huge_digits   ! (equal length: lexical order is numeric order)
   end function beyond_huge
-
-  pure integer function exponent10(x)
-    real(wp), intent(in) :: x
-    if (x == 0) then
-      exponent10 = 0
-    else
-      exponent10 = floor(log10(abs(x)))
-    end if
-  end function exponent10
 
   pure function format_vector(x) result(text)
     real(wp), intent(in) :: x(:)

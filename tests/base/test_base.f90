@@ -66,44 +66,34 @@ program test_base
 
 contains
 
-  !> format_real finds its fewest digits by bisection (and digit by digit for
-  !> powers of two): the same text as trying 1, 2, ... 17 digits (the
-  !> definition, `shortest_text` below) for random doubles of every
-  !> magnitude, random bit patterns, every power of two, subnormals, one and
-  !> two digits times powers of ten, and times 0.01 k as the outputs have;
-  !> format_integer as an internal write.
+  !> format_real against tests/reference/number_texts.txt: 8704 doubles
+  !> (random of every magnitude, random bit patterns, every power of two,
+  !> subnormals, one and two digits times powers of ten, hundredths and
+  !> sevenths as the outputs have) with the texts Python's repr gives them
+  !> (the fewest digits that read back; scripts/reference/number_texts.py,
+  !> which states the layout rule); format_integer as an internal write.
   subroutine check_number_texts()
-    real(wp) :: x, u(2)
+    integer :: k, i, unit, ios, count
     integer(int64) :: bits
-    integer :: k, i
+    character(len=80) :: line
+    character(len=40) :: text
     mismatches = 0
-    do k = 1, 3000
-      call random_number(u)
-      x = (u(1) - 0.5_wp)*10.0_wp**int(615*u(2) - 307)
-      call compare(x)
-      call random_number(u)
-      ! positive, below 2**1023: finite, and no rounding to fewer digits
-      ! overflows when read back (Debug traps overflow, also in strtod)
-      bits = int(u(1)*(2.0_wp**31 - 2.0_wp**21), int64)*2_int64**32 + int(u(2)*2.0_wp**32, int64)
-      x = transfer(bits, x)
-      if (ieee_is_finite(x)) call compare(x)
+    count = 0
+    open (newunit=unit, file='tests/reference/number_texts.txt', status='old', action='read', iostat=ios)
+    call check(ios == 0, 'tests/reference/number_texts.txt opens (run from the repository root)')
+    if (ios /= 0) return
+    do
+      read (unit, '(a)', iostat=ios) line
+      if (ios /= 0) exit
+      if (line(1:1) == '#') cycle
+      read (line(1:16), '(z16)') bits
+      text = line(18:)
+      call compare(transfer(bits, 1.0_wp), trim(text))
+      count = count + 1
     end do
-    do k = -1074, 1023
-      call compare(scale(1.0_wp, k))   ! (2.0**k overflows on the way to 2**-1074)
-      call compare(scale(-3.0_wp, k - 2))
-    end do
-    do k = -20, 20   ! one and two digits, plain and exponent forms
-      do i = 1, 99
-        call compare(i*10.0_wp**k)
-      end do
-    end do
-    do k = 0, 2000
-      call compare(0.01_wp*k)
-      call compare(k/7.0_wp)
-    end do
-    call compare(0.0_wp)
-    call compare(tiny(x))
-    call check(mismatches == 0, 'format_real: the fewest digits by bisection as digit by digit')
+    close (unit)
+    call check(count == 8704, 'number_texts.txt: 8704 doubles read, got '//format_integer(count))
+    call check(mismatches == 0, 'format_real: the texts of the Python-made table')
     call check_extremes()
     mismatches = 0
     do i = -1, 1, 2
@@ -151,12 +141,13 @@ contains
     call check(format_real(x) == text, 'format_real: '//text//' as '//format_real(x))
   end subroutine expect
 
-  subroutine compare(x)
+  subroutine compare(x, text)
     real(wp), intent(in) :: x
-    if (format_real(x) == shortest_text(x)) return
+    character(len=*), intent(in) :: text
+    if (format_real(x) == text) return
     mismatches = mismatches + 1
     if (mismatches <= 5) print '(a, es25.17, 4a)', 'format_real(', x, ') = ', format_real(x), &
-      ', digit by digit: ', shortest_text(x)
+      ', table: ', text
   end subroutine compare
 
   subroutine compare_integer(i)
@@ -167,37 +158,4 @@ contains
     mismatches = mismatches + 1
     print '(3a)', format_integer(i), ' /= ', trim(buffer)
   end subroutine compare_integer
-
-  !> format_real's text by its definition: the fewest significant digits
-  !> that read back as x, tried one by one (finite x).
-  function shortest_text(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=40) :: buffer
-    character(len=8) :: decimals
-    real(wp) :: back
-    integer :: digits, ios, e
-    do digits = 1, 17
-      write (decimals, '(i0)') digits - 1
-      write (buffer, '(es40.'//trim(decimals)//')') x
-      read (buffer, *, iostat=ios) back
-      if (ios == 0 .and. back == x) exit
-    end do
-    text = trim(adjustl(buffer))
-    e = scan(text, '+-', back=.true.)   ! Fortran writes a 3-digit exponent without its E
-    if (index(text, 'E') == 0) text = text(:e - 1)//'E'//text(e:)
-    e = index(text, '.E')
-    if (e > 0) text = text(:e)//'0'//text(e + 1:)
-    e = 0
-    if (x /= 0) e = floor(log10(abs(x)))
-    if (e >= -3 .and. e <= 6) then
-      write (decimals, '(i0)') max(digits - 1 - e, 1)
-      write (buffer, '(f40.'//trim(decimals)//')') x
-      text = trim(adjustl(buffer))
-      do while (len(text) > 2 .and. text(len(text):len(text)) == '0' .and. &
-                text(len(text) - 1:len(text) - 1) /= '.')
-        text = text(:len(text) - 1)
-      end do
-    end if
-  end function shortest_text
 end program test_base
