@@ -6,27 +6,87 @@
 # with h5netcdf (the tests open every result group with it), ParaView (the
 # tests open every XDMF file with its XDMF reader) and Open MPI (sweeps across
 # ranks: mpirun -n N slidesim sweep.nml; the build works without it).
+# Then CVODE, compiled with optimisation from Debian's own SUNDIALS source
+# package (below: Debian's binary libsundials is built without it).
 # Idempotent: installs only what is missing.
 set -euo pipefail
 
 packages=(gfortran cmake make liblapack-dev libblas-dev minpack-dev
           libsundials-dev libsundials-fortran-dev libhdf5-dev hdf5-tools libopenmpi-dev openmpi-bin
           python3 python3-numpy python3-h5py python3-matplotlib python3-scipy python3-pint
-          python3-xarray python3-h5netcdf udunits-bin paraview python3-paraview)
+          python3-xarray python3-h5netcdf udunits-bin paraview python3-paraview
+          curl ca-certificates xz-utils dpkg-dev)
+
+sudo=""
+if [ "$(id -u)" != 0 ]; then
+  sudo=sudo
+fi
+need_root() {
+  if [ -n "$sudo" ] && ! command -v sudo >/dev/null; then
+    echo "error: need root or sudo to install: $1" >&2
+    exit 1
+  fi
+}
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-if ((${#missing[@]} == 0)); then
-  exit 0
+if ((${#missing[@]} > 0)); then
+  need_root "${missing[*]}"
+  echo "installing: ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-sudo=""
-if [ "$(id -u)" != 0 ]; then
-  command -v sudo >/dev/null || { echo "error: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
-  sudo=sudo
+# CVODE with optimisation. Debian's libsundials 6.4.1+dfsg1-3 is compiled
+# without any: its debian/rules passes -DCMAKE_C_FLAGS=-fcommon, which
+# replaces the -O2 of dpkg's build flags, so CVODE's own work per step (the
+# Nordsieck predictor, the vector operations, the error test) runs as -O0
+# code: a quarter of the spinning egg's instructions, 7 % of the default ride
+# (bench/README.md, "CVODE built with optimisation"). The same source and
+# patches, from Debian's archive (the .dsc's checksum pinned here; dpkg-source
+# checks the tarballs against it), compiled with -O2 (no -ffast-math, no
+# -march: the same arithmetic, results bit for bit the same), CVODE and what
+# slidesim links only, static, into SLIDESIM_SUNDIALS_PREFIX, where CMake
+# looks first (CMakeLists.txt).
+sundials_version=6.4.1+dfsg1-3
+sundials_dsc_sha256=f431a056ef33e85f331cfb1611da444fd5ff3d03873b6dec0cfdb319b8c972ab
+prefix=${SLIDESIM_SUNDIALS_PREFIX:-/opt/slidesim-deps/sundials-$sundials_version}
+mirror=${SLIDESIM_DEBIAN_MIRROR:-http://deb.debian.org/debian}
+if [ ! -f "$prefix/.complete" ]; then
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+  echo "building CVODE $sundials_version with -O2 from Debian's source package into $prefix"
+  dsc=sundials_$sundials_version.dsc
+  (
+    cd "$work"
+    fetch() {
+      curl -fsS -O "$mirror/pool/main/s/sundials/$1" ||
+        { echo "error: cannot download $mirror/pool/main/s/sundials/$1 (SLIDESIM_DEBIAN_MIRROR)" >&2; exit 1; }
+    }
+    fetch "$dsc"
+    echo "$sundials_dsc_sha256  $dsc" | sha256sum -c --quiet - ||
+      { echo "error: $mirror/pool/main/s/sundials/$dsc is not the pinned Debian source package" >&2; exit 1; }
+    for f in $(awk '/^Files:/{f=1; next} /^[^ ]/{f=0} f{print $3}' "$dsc"); do
+      fetch "$f"
+    done
+    # checks every file against the .dsc (its signature cannot be checked
+    # without debian-keyring: the .dsc's own checksum above stands for it)
+    dpkg-source --no-copy -x "$dsc" source >>log 2>&1 || { tail -20 log >&2; exit 1; }
+    cmake -S source -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_FLAGS_RELEASE="-O2 -DNDEBUG" \
+      -DCMAKE_Fortran_FLAGS_RELEASE="-O2" -DCMAKE_Fortran_COMPILER=gfortran \
+      -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_INSTALL_LIBDIR=lib -DCMAKE_POSITION_INDEPENDENT_CODE=ON \
+      -DBUILD_SHARED_LIBS=OFF -DBUILD_STATIC_LIBS=ON -DBUILD_FORTRAN_MODULE_INTERFACE=ON \
+      -DBUILD_CVODE=ON -DBUILD_ARKODE=OFF -DBUILD_CVODES=OFF -DBUILD_IDA=OFF -DBUILD_IDAS=OFF \
+      -DBUILD_KINSOL=OFF -DENABLE_MPI=OFF -DENABLE_OPENMP=OFF -DENABLE_PTHREAD=OFF \
+      -DEXAMPLES_ENABLE_C=OFF -DEXAMPLES_ENABLE_CXX=OFF -DEXAMPLES_ENABLE_F2003=OFF \
+      -DEXAMPLES_INSTALL=OFF >>log 2>&1 || { tail -20 log >&2; exit 1; }
+    cmake --build build -j "$(nproc)" >>log 2>&1 || { tail -40 log >&2; exit 1; }
+    need_root "CVODE into $prefix"
+    $sudo cmake --install build >>log 2>&1 || { tail -20 log >&2; exit 1; }
+    echo "$sundials_version -O2" | $sudo tee "$prefix/.complete" >/dev/null
+  )
+  rm -rf "$work"
+  trap - EXIT
 fi
-echo "installing: ${missing[*]}"
-$sudo apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
