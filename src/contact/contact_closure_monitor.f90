@@ -1,15 +1,17 @@
-!> The closure functions g1..g5 of a contact (3.86), measured from the two
-!> bodies' poses and their surfaces alone, for contacts whose chain keeps
-!> them closed by construction (the open chain of contact_pair): a check that
-!> does not trust the chain. From the body frames K_A, K_B and the contact
-!> coordinates (u1, v1), (u2, v2) it builds the Darboux frames
-!> K_1D = S1(u1, v1) on K_A and K_2D = S2(u2, v2) on K_B (forward surface
-!> joints on local frames) and sets
+!> The closure functions g1..g5 of a contact (3.86), measured for contacts
+!> whose chain keeps them closed by construction (the open chain of
+!> contact_pair): a check that does not trust the chain's way to body B.
+!> K_1D = S1(u1, v1) on K_A is the chain's first link (the plane or surface
+!> joint's output frame, read here: evaluating S1 again at the same (u1, v1)
+!> on the same K_A would repeat that map). What the chain builds after it
+!> (the turn and the inverse of S2) is checked from body B's pose alone: S2's
+!> Darboux frame K_2D = S2(u2, v2) on K_B (a forward surface joint on a local
+!> frame), and
 !>     g1..g3 = x_1D, y_1D, z_1D . (r_2D - r_1D),   g4, g5 = z_1D . x_2D, z_1D . y_2D.
 !> A monitor of positions only: nothing in the mechanism reads its outputs
 !> (they are recorded, not closure measurements), so its velocity and
 !> acceleration maps leave their rates alone (zero) and its force map passes
-!> nothing back; only the position pass costs (two surface points to first
+!> nothing back; only the position pass costs (one surface point to first
 !> order).
 module contact_closure_monitor
   use base_kinds, only: wp
@@ -22,10 +24,10 @@ module contact_closure_monitor
   public :: closure_monitor_t, new_closure_monitor
 
   type, extends(element_t) :: closure_monitor_t
-    integer :: frame_a = 0, frame_b = 0
-    integer :: contact(4) = 0                   ! scalars u1, v1, u2, v2
+    integer :: frame_1d = 0, frame_b = 0
+    integer :: contact(2) = 0                   ! scalars u2, v2
     integer :: gaps(5) = 0                      ! output scalars g1..g5
-    type(surface_joint_t) :: joint_1, joint_2   ! S1 on K_A, S2 on K_B (local frames 1 -> 2)
+    type(surface_joint_t) :: joint_2            ! S2 on K_B (local frames 1 -> 2)
   contains
     procedure :: position => monitor_position
     procedure :: velocity => monitor_motion
@@ -36,19 +38,19 @@ module contact_closure_monitor
 
 contains
 
-  function new_closure_monitor(name, frame_a, surface_1, side_1, frame_b, surface_2, side_2, contact, gaps) &
-      result(e)
+  !> frame_1d: the contact frame K_1D on body A; surface_2 with side_2 on
+  !> the body frame frame_b at the scalars contact = [u2, v2].
+  function new_closure_monitor(name, frame_1d, frame_b, surface_2, side_2, contact, gaps) result(e)
     character(len=*), intent(in) :: name
-    integer, intent(in) :: frame_a, frame_b, contact(4), gaps(5)
-    class(surface_t), intent(in) :: surface_1, surface_2
-    real(wp), intent(in) :: side_1, side_2
+    integer, intent(in) :: frame_1d, frame_b, contact(2), gaps(5)
+    class(surface_t), intent(in) :: surface_2
+    real(wp), intent(in) :: side_2
     type(closure_monitor_t) :: e
     e%name = name
-    e%frame_a = frame_a
+    e%frame_1d = frame_1d
     e%frame_b = frame_b
     e%contact = contact
     e%gaps = gaps
-    e%joint_1 = new_surface_joint(name//'.s1', 1, 2, 1, 2, surface_1, side_1, 1.0_wp, 0.0_wp)
     e%joint_2 = new_surface_joint(name//'.s2', 1, 2, 1, 2, surface_2, side_2, 1.0_wp, 0.0_wp)
   end function new_closure_monitor
 
@@ -57,25 +59,23 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     type(status_t), intent(inout) :: status
-    type(frame_state_t) :: one(2), two(2)
+    type(frame_state_t) :: two(2)
     type(scalar_state_t) :: uv(2)
     real(wp) :: g(5)
     integer :: k
-    one(1)%rot = frames(self%frame_a)%rot
-    one(1)%r = frames(self%frame_a)%r
-    uv = scalars(self%contact(1:2))
-    call self%joint_1%position(one, uv, status)
     two(1)%rot = frames(self%frame_b)%rot
     two(1)%r = frames(self%frame_b)%r
-    uv = scalars(self%contact(3:4))
-    if (status%ok()) call self%joint_2%position(two, uv, status)
+    uv = scalars(self%contact)
+    call self%joint_2%position(two, uv, status)
     if (.not. status%ok()) then
       call prefix_status(status, 'closure monitor '''//self%name//'''')
       return
     end if
-    g(1:3) = matmul(transpose(one(2)%rot), two(2)%r - one(2)%r)
-    g(4) = dot_product(one(2)%rot(:, 3), two(2)%rot(:, 1))
-    g(5) = dot_product(one(2)%rot(:, 3), two(2)%rot(:, 2))
+    associate (one => frames(self%frame_1d))
+      g(1:3) = matmul(transpose(one%rot), two(2)%r - one%r)
+      g(4) = dot_product(one%rot(:, 3), two(2)%rot(:, 1))
+      g(5) = dot_product(one%rot(:, 3), two(2)%rot(:, 2))
+    end associate
     do k = 1, 5
       scalars(self%gaps(k))%q = g(k)
     end do
@@ -102,7 +102,7 @@ contains
   pure subroutine monitor_links(self, links)
     class(closure_monitor_t), intent(in) :: self
     type(element_links_t), intent(out) :: links
-    links = element_links_t(.true., [self%frame_a, self%frame_b], self%contact, [integer ::], self%gaps, &
+    links = element_links_t(.true., [self%frame_1d, self%frame_b], self%contact, [integer ::], self%gaps, &
                             relative=.true.)
   end subroutine monitor_links
 end module contact_closure_monitor

@@ -34,8 +34,8 @@
 !> (kinetostatics_inverse_surface_joint) places K_B so that S2's frame there is
 !> K_2D: the surfaces touch with antiparallel normals by construction, the
 !> physical branch. Coordinates q = (u1, v1, phi, u2, v2), none dependent, no
-!> closure; a closure monitor (contact_closure_monitor) measures g1..g5 from
-!> the two bodies' poses and surfaces for the records. Charts: (u1, v1),
+!> closure; a closure monitor (contact_closure_monitor) measures g1..g5
+!> between K_1D and S2's frame on body B's pose for the records. Charts: (u1, v1),
 !> (u2, v2) are the surfaces' own parameters (an ellipsoid's poles are
 !> singular, as in the loop's S1 and S2), phi is unbounded.
 module contact_pair
@@ -189,8 +189,8 @@ contains
                                                  surface_2, side_2, 1.0_wp, 0.0_wp, turn_over))
     pair%element_s2 = m%n_elements
     call add_gap_scalars(m, pair)
-    call m%add_element(new_closure_monitor(name//'.closure', frame_a, surface_1, side_1, pair%frame_b, surface_2, &
-                                           side_2, [pair%u1, pair%v1, pair%u2, pair%v2], pair%gaps))
+    call m%add_element(new_closure_monitor(name//'.closure', pair%frame_1d, pair%frame_b, surface_2, side_2, &
+                                           [pair%u2, pair%v2], pair%gaps))
   end subroutine add_open_contact_pair
 
   !> Checks the sides and sets what both chains share.
