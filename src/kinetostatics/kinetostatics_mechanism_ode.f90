@@ -74,6 +74,7 @@ module kinetostatics_mechanism_ode
     integer :: root_calls = 0, root_cache_hits = 0
     ! root values of the last evaluation and the state they belong to
     logical :: cached = .false.
+    logical :: cache_exact = .true.            ! its normal forces evaluated, not interpolated
     real(wp) :: cache_t = 0
     real(wp), allocatable :: cache_y(:), cache_g(:), work_ydot(:)
     real(wp), allocatable :: root_scale(:)     ! largest |g_i| met in the run
@@ -81,6 +82,11 @@ module kinetostatics_mechanism_ode
     logical :: rhs_cached = .false.
     real(wp) :: rhs_t = 0
     real(wp), allocatable :: rhs_y(:), rhs_g(:)
+    ! the normal forces of the last two root value sets with exact ones (root location between them)
+    integer :: n_exact = 0
+    real(wp) :: exact_t(2) = 0
+    real(wp), allocatable :: exact_n(:, :)
+    integer :: interpolated_calls = 0
     integer, allocatable :: edge_coordinate(:) ! position in y of each edge's u or v (0: a dependent one)
     integer, allocatable :: charts(:)          ! elements whose charts are watched
     integer, allocatable :: chart_angle(:)     ! position in y of each one's deciding coordinate
@@ -138,6 +144,9 @@ contains
       if (size(self%cache_y) == self%state_size()) return
       deallocate (self%cache_y, self%cache_g, self%work_ydot, self%rhs_y, self%rhs_g, self%root_scale)
     end if
+    if (allocated(self%exact_n)) deallocate (self%exact_n)
+    allocate (self%exact_n(count(self%mechanism%contacts%one_sided), 2))
+    self%n_exact = 0
     allocate (self%cache_y(self%state_size()), self%cache_g(max(self%root_count(), 1)), &
               self%work_ydot(self%state_size()), self%root_scale(max(self%root_count(), 1)), &
               self%rhs_y(self%state_size()), self%rhs_g(max(self%root_count(), 1)))
@@ -200,6 +209,7 @@ contains
     self%cache_t = t
     self%cache_y = y
     self%cached = .true.
+    self%cache_exact = .true.
     self%rhs_t = t
     self%rhs_y = y
     self%rhs_g = self%cache_g
@@ -226,11 +236,13 @@ contains
     real(wp), intent(out) :: g(:)
     type(status_t) :: status
     integer :: f, n, level
+    logical :: interpolated
     if (.not. allocated(self%cache_y)) call prepare(self)
     self%root_calls = self%root_calls + 1
     if (serves(self%cached, self%cache_t, self%cache_y, self%cache_g)) then
       self%root_cache_hits = self%root_cache_hits + 1
       call root_values(self, y, 0)   ! the user crossings from y itself
+      if (self%cache_exact) call keep_exact(self, t)
       g = self%cache_g(1:size(g))
       return
     end if
@@ -240,7 +252,9 @@ contains
       self%cache_y = self%rhs_y
       self%cache_g = self%rhs_g
       self%cached = .true.
+      self%cache_exact = .true.
       call root_values(self, y, 0)
+      call keep_exact(self, t)
       g = self%cache_g(1:size(g))
       return
     end if
@@ -249,6 +263,10 @@ contains
     level = 1
     if (size(self%mechanism%law_roots) > 0) level = 2
     if (any(self%mechanism%contacts%one_sided)) level = 3
+    ! root location between two exact sets with settled normal forces: N
+    ! from the line between them, the rest at its own level
+    interpolated = level == 3 .and. t /= self%t_output .and. settled(self, t)
+    if (interpolated) level = 2
     select case (level)
     case (3)
       call self%mechanism%dynamics(t, y(1:f), y(f + 1:n), self%work_ydot(1:n - f), status)
@@ -261,9 +279,15 @@ contains
     end select
     if (status%ok()) then
       call root_values(self, y, level)
+      if (interpolated) then
+        call interpolate_normal_forces(self, t)
+        self%interpolated_calls = self%interpolated_calls + 1
+      end if
       self%cache_t = t
       self%cache_y = y
       self%cached = .true.
+      self%cache_exact = .not. interpolated
+      if (level == 3) call keep_exact(self, t)
     else
       call root_values(self, y, 1)   ! edges from the scalars as far as the closure got
       self%cached = .false.
@@ -318,6 +342,67 @@ contains
       distance = maxval(abs(a - b))/max(maxval(abs(b)), 1.0_wp)
     end function distance
   end function near_and_far_from_zero
+
+  !> Keeps the normal forces of cache_g (exact, at t) as the newest of the two
+  !> sets root location interpolates between.
+  subroutine keep_exact(self, t)
+    class(mechanism_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    integer :: first, nc
+    nc = size(self%exact_n, 1)
+    if (nc == 0) return
+    first = n_user(self) + size(self%mechanism%edges) + 1
+    if (self%n_exact > 0) then
+      if (self%exact_t(2) == t) then   ! the same time again: the newer values
+        self%exact_n(:, 2) = self%cache_g(first:first + nc - 1)
+        return
+      end if
+      self%exact_t(1) = self%exact_t(2)
+      self%exact_n(:, 1) = self%exact_n(:, 2)
+    end if
+    self%exact_t(2) = t
+    self%exact_n(:, 2) = self%cache_g(first:first + nc - 1)
+    self%n_exact = min(self%n_exact + 1, 2)
+  end subroutine keep_exact
+
+  !> t lies strictly between the two kept exact sets and every normal force
+  !> is settled there: the same sign at both, at least 1e-3 G_i from zero,
+  !> changing by less than a tenth of its size. CVODE's root location then
+  !> only looks for the crossing the step's end values show (the other
+  !> roots keep their signs at both ends); a normal force that would dip
+  !> through zero and back inside one step is not seen by the step-end check
+  !> either, and with a change below a tenth of |N| over a step the error
+  !> control keeps smooth, it cannot do so.
+  logical function settled(self, t)
+    class(mechanism_ode_t), intent(in) :: self
+    real(wp), intent(in) :: t
+    integer :: k, first
+    real(wp) :: a, b
+    settled = .false.
+    if (self%n_exact < 2) return
+    if (.not. (t > minval(self%exact_t) .and. t < maxval(self%exact_t))) return
+    first = n_user(self) + size(self%mechanism%edges)
+    do k = 1, size(self%exact_n, 1)
+      a = self%exact_n(k, 1)
+      b = self%exact_n(k, 2)
+      if (.not. a*b > 0) return
+      if (min(abs(a), abs(b)) < 1e-3_wp*self%root_scale(first + k)) return
+      if (abs(a - b) >= 0.1_wp*min(abs(a), abs(b))) return
+    end do
+    settled = .true.
+  end function settled
+
+  !> The normal forces of cache_g on the line between the two kept sets.
+  subroutine interpolate_normal_forces(self, t)
+    class(mechanism_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    integer :: first, nc
+    real(wp) :: w
+    nc = size(self%exact_n, 1)
+    first = n_user(self) + size(self%mechanism%edges) + 1
+    w = (t - self%exact_t(1))/(self%exact_t(2) - self%exact_t(1))
+    self%cache_g(first:first + nc - 1) = (1 - w)*self%exact_n(:, 1) + w*self%exact_n(:, 2)
+  end subroutine interpolate_normal_forces
 
   !> Fills cache_g from the mechanism's state: user crossings always, edges
   !> from level 1, the laws' roots from level 2, lift-off from level 3 (the
@@ -393,6 +478,7 @@ contains
     character(len=:), allocatable :: where
     self%cached = .false.
     self%rhs_cached = .false.
+    self%n_exact = 0   ! a law or chart may change here: no interpolation across
     action = EVENT_IGNORE
     where = ' at t = '//format_short(t)//' s'
     i = 0

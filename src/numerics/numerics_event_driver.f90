@@ -43,6 +43,11 @@ module numerics_event_driver
 
   !> An ODE system with records and event handling.
   type, abstract, extends(ode_system_t) :: event_system_t
+    !> the output time the driver integrates toward: a root function called
+    !> at it is followed by a record there (CVODE checks the roots at t_out
+    !> when t_out lies inside its step); other calls between step ends are
+    !> CVODE's root location
+    real(wp) :: t_output = huge(1.0_wp)
   contains
     procedure(record_i), deferred :: record
     procedure :: handle_event => default_handle_event
@@ -179,6 +184,7 @@ contains
     do
       t_out = options%t_start + real(k + 1, wp)*options%output_step
       if (t_out > options%t_end) t_out = options%t_end
+      system%t_output = t_out
       call integrator%advance(t_out, t, y, status, root_found, fired, chunk_ended)
       result%t = t
       if (.not. status%ok()) then
