@@ -61,11 +61,13 @@ module kinetostatics_closure_blocks
     integer, allocatable :: pass_start(:), pass(:)   ! column k's elements: pass(pass_start(k):pass_start(k+1)-1)
     integer, allocatable :: block_of(:), position(:) ! block of each x and its place among the members
     type(dense_block_t), allocatable :: blocks(:)
-    ! the mass matrix's columns (build_mass_columns): speed k's passes, the blocks it moves, the
-    ! speeds j whose entries M(j, k) (and M(k, j)) its column gives; compressed rows as above
+    ! the pass lists of the mass matrix (build_mass_columns), compressed rows as above: speed k's
+    ! column (first pass, the blocks it moves, second pass); each unknown alone; each normal frame
+    ! translated; the elements whose outputs to clear before each of these passes, in their order
     logical :: mass_blocked = .false.
-    integer, allocatable :: mass_pass_start(:), mass_pass(:), touched_start(:), touched(:), valid_start(:), &
-      valid(:)
+    integer, allocatable :: mass_pass_start(:), mass_pass(:), touched_start(:), touched(:), &
+      second_pass_start(:), second_pass(:), unknown_pass_start(:), unknown_pass(:), normal_pass_start(:), &
+      normal_pass(:), clear_start(:), clear(:)
   contains
     procedure :: fill, factor, solve, assemble, block_count, build_mass_columns
   end type closure_blocks_t
@@ -147,16 +149,19 @@ contains
   end function downstream_of
 
   !> The structural sweep of a unit rate of the scalars `sources` (module
-  !> comment): moving(s) for every scalar that moves, live(e) for every
-  !> element whose outputs move, frame classes (0: at rest).
-  subroutine reach_of(reach, sources, n_frames, n_scalars, moving, live)
+  !> comment), or of a rigid motion of the frames `frame_sources` (their
+  !> writers stay at rest): moving(s) for every scalar that moves, live(e) for
+  !> every element whose outputs move, frame classes (0: at rest).
+  subroutine reach_of(reach, sources, n_frames, n_scalars, moving, live, frame_sources)
     type(element_reach_t), intent(in) :: reach
     integer, intent(in) :: sources(:), n_frames, n_scalars
     logical, intent(out) :: moving(n_scalars)
     logical, intent(out) :: live(:)
+    integer, intent(in), optional :: frame_sources(:)
     integer :: frame_class(n_frames), e, c
     logical :: scalars_move, one_motion
     frame_class = 0
+    if (present(frame_sources)) frame_class(frame_sources) = -1
     moving = .false.
     moving(sources) = .true.
     live = .false.
@@ -275,160 +280,152 @@ contains
     end subroutine join
   end subroutine build_closure_blocks
 
-  !> The mass matrix's columns (kinetostatics_mechanism, dynamics). Speed k
-  !> (the scalar speeds(k)) accelerated by one, velocities zero: its motion
-  !> moves the elements L(k) of the sweep that starts at it and adds the
-  !> unknowns of every block whose rows move (the blocks B(k)), until nothing
-  !> changes. Column k gives the entries M(j, k) = M(k, j) of the speeds j
-  !> whose own sweep D(j) lies in L(k), apart from the rows of the blocks
-  !> (V(k); for a tower: the speeds of k's body and of the bodies above it).
-  !> Their generalized forces need the cut forces of the blocks their sweeps
-  !> move whose unknowns carry a mass of L(k) (else those cut forces are
-  !> zero): with B(k) the blocks N(k), whose unknowns' sweeps and rows join
-  !> the force passes. So the two acceleration passes run over L(k), the two
-  !> force passes over P(k) = L(k) + the sweeps and rows of N(k). A pair j, k
-  !> that neither column gives, with a mass moved by both, makes column k a
-  !> full one (every element, every block, every speed), as are all columns
-  !> with blocked = .false. (the unblocked computation).
-  subroutine build_mass_columns(self, reach, n_frames, n_scalars, speeds, unknowns, rows, blocked)
+  !> The pass lists of the mass matrix and of the normal forces' maps
+  !> (kinetostatics_mechanism, dynamics): partial twists of the frames
+  !> `tracked` (the mass elements' frames, the scaled laws' load frames) under
+  !> three kinds of unit motion at rest, each an acceleration pass over the
+  !> elements it moves that feed a tracked frame or a row it needs:
+  !> * speed k accelerated by one (column k of M): it moves the elements L(k)
+  !>   of the sweep that starts at it and the unknowns of every block whose
+  !>   rows move (the blocks B(k), `touched`), until nothing changes; the
+  !>   first pass runs over L(k) pruned to what feeds a tracked frame or a row
+  !>   of B(k), the second (after the solve of B(k)) over those the unknowns
+  !>   of B(k) move that feed a tracked frame (for a tower: k's body and the
+  !>   bodies above it). blocked = .false. or unknown links: every element and
+  !>   every block (mass_blocked false; the mechanism's full passes);
+  !> * unknown k alone (beta'' or sigma'', nothing solved: the partial twists
+  !>   of the open chain, whose powers against the inertial wrenches are the
+  !>   generalized forces on the unknowns, hence the cut forces): its sweep
+  !>   pruned to what feeds a tracked frame (often empty: then no pass);
+  !> * frame F = normal_frames(c) translated along its z (the contacts whose
+  !>   N is the force on F): the sweep of that rigid motion (F's writer at
+  !>   rest), pruned to what feeds a tracked frame or any row.
+  !> Between two passes only the outputs of the elements the one before ran
+  !> and this one does not must be set back to rest (the others it
+  !> overwrites, the rest never moved): `clear`, for the passes in the order
+  !> the mechanism runs them (the columns if mass_blocked, then the unknowns'
+  !> non-empty passes, then the normal frames'), after a state at rest.
+  subroutine build_mass_columns(self, reach, n_frames, n_scalars, speeds, unknowns, rows, tracked, normal_frames, &
+                                blocked)
     class(closure_blocks_t), intent(inout) :: self
     type(element_reach_t), intent(in) :: reach
-    integer, intent(in) :: n_frames, n_scalars, speeds(:), unknowns(:), rows(:)
+    integer, intent(in) :: n_frames, n_scalars, speeds(:), unknowns(:), rows(:), tracked(:), normal_frames(:)
     logical, intent(in) :: blocked
-    logical :: moving(n_scalars), live(size(reach%carried), size(speeds)), sweep(size(reach%carried), size(speeds)), &
-      unknown_sweep(size(reach%carried), size(unknowns)), moved(size(self%blocks)), needed(size(self%blocks)), &
-      opened(size(self%blocks), size(speeds)), full(size(speeds)), changed, leaf(size(reach%carried)), &
-      row_writer(size(reach%carried)), in_pass(size(reach%carried)), valid(size(speeds), size(speeds))
-    integer :: k, j, b, i, e, n, ns, nb
-    integer, allocatable :: sources(:)
+    logical :: moving(n_scalars), live(size(reach%carried)), live_unknowns(size(reach%carried)), &
+      moved(size(self%blocks)), changed, tracked_frame(n_frames), row(n_scalars), no_row(n_scalars), &
+      ran(size(reach%carried)), runs(size(reach%carried))
+    integer :: k, b, n, nb
+    integer, allocatable :: sources(:), pass(:)
     n = size(reach%carried)
-    ns = size(speeds)
     nb = size(self%blocks)
-    self%mass_blocked = blocked .and. self%blocked
-    full = .not. self%mass_blocked
-    allocate (self%mass_pass_start(ns + 1), self%touched_start(ns + 1), self%valid_start(ns + 1))
-    allocate (self%mass_pass(0), self%touched(0), self%valid(0))
-    leaf = reach%frame_out_start(2:) == reach%frame_out_start(:n) .and. &
-           reach%scalar_out_start(2:) == reach%scalar_out_start(:n)
-    row_writer = .false.
-    do i = 1, size(rows)
-      if (reach%scalar_writer(rows(i)) > 0) row_writer(reach%scalar_writer(rows(i))) = .true.
-    end do
-    live = .true.
-    valid = .true.
-    if (self%mass_blocked) then
-      do k = 1, ns   ! D(k) and the blocks whose rows it moves
-        call reach_of(reach, [speeds(k)], n_frames, n_scalars, moving, sweep(:, k))
-        opened(:, k) = [(any(moving(rows(self%blocks(b)%members))), b = 1, nb)]
-      end do
-      do i = 1, size(unknowns)
-        call reach_of(reach, [unknowns(i)], n_frames, n_scalars, moving, unknown_sweep(:, i))
-      end do
-      do k = 1, ns   ! L(k): the fixpoint
-        moved = .false.
-        sources = [speeds(k)]
-        do
-          call reach_of(reach, sources, n_frames, n_scalars, moving, live(:, k))
-          changed = .false.
-          do b = 1, nb
-            if (moved(b) .or. .not. any(moving(rows(self%blocks(b)%members)))) cycle
-            moved(b) = .true.
-            changed = .true.
-            sources = [sources, unknowns(self%blocks(b)%members)]
-          end do
-          if (.not. changed) exit
-        end do
-        valid(:, k) = [(all(.not. sweep(:, j) .or. live(:, k) .or. row_writer), j = 1, ns)]
-        ! N(k): B(k) and the blocks the valid speeds open whose unknowns carry a mass of L(k)
-        needed = moved
-        do b = 1, nb
-          if (needed(b) .or. .not. any(opened(b, :) .and. valid(:, k))) cycle
-          do i = 1, size(self%blocks(b)%members)
-            if (any(unknown_sweep(:, self%blocks(b)%members(i)) .and. live(:, k) .and. leaf)) needed(b) = .true.
-          end do
-        end do
-        in_pass = live(:, k)
-        do b = 1, nb
-          if (.not. needed(b)) cycle
-          do i = 1, size(self%blocks(b)%members)
-            in_pass = in_pass .or. unknown_sweep(:, self%blocks(b)%members(i))
-            e = reach%scalar_writer(rows(self%blocks(b)%members(i)))
-            if (e > 0) in_pass(e) = .true.
-          end do
-        end do
-        ! a speed j is valid if its sweep, apart from the rows of blocks outside N(k), is in the pass
-        do j = 1, ns
-          if (.not. valid(j, k)) cycle
-          do e = 1, n
-            if (sweep(e, j) .and. .not. in_pass(e) .and. .not. row_writer(e)) valid(j, k) = .false.
-          end do
-          do b = 1, nb
-            if (.not. needed(b)) cycle
-            do i = 1, size(self%blocks(b)%members)
-              e = reach%scalar_writer(rows(self%blocks(b)%members(i)))
-              if (e > 0) then
-                if (sweep(e, j) .and. .not. in_pass(e)) valid(j, k) = .false.
-              end if
-            end do
-          end do
-        end do
-        self%mass_pass_start(k) = size(self%mass_pass) + 1
-        self%touched_start(k) = size(self%touched) + 1
-        self%valid_start(k) = size(self%valid) + 1
-        self%mass_pass = [self%mass_pass, pack([(e, e = 1, n)], in_pass)]
-        self%touched = [self%touched, pack([(b, b = 1, nb)], needed)]
-        self%valid = [self%valid, pack([(j, j = 1, ns)], valid(:, k))]
-      end do
-      do k = 1, ns   ! a pair that neither column gives, with a mass moved by both: column k full
-        do j = 1, ns
-          if (valid(j, k) .or. valid(k, j)) cycle
-          if (any(live(:, j) .and. live(:, k) .and. leaf)) full(k) = .true.
-        end do
-      end do
-      self%mass_pass_start(ns + 1) = size(self%mass_pass) + 1
-      ! partial columns leave G incomplete, so the normal forces cost one more pass over every
-      ! element: worth it only if the columns save more than that (not for one body: the egg)
-      if (count(.not. full)*n - sum(merge(self%mass_pass_start(2:ns + 1) - self%mass_pass_start(1:ns), 0, &
-                                           .not. full)) <= n) then
-        self%mass_blocked = .false.
-        full = .true.
+    self%mass_blocked = blocked .and. reach%known
+    tracked_frame = .false.
+    tracked_frame(tracked) = .true.
+    no_row = .false.
+    allocate (self%mass_pass_start(size(speeds) + 1), self%touched_start(size(speeds) + 1), &
+              self%second_pass_start(size(speeds) + 1), self%unknown_pass_start(size(unknowns) + 1), &
+              self%normal_pass_start(size(normal_frames) + 1), self%clear_start(1))
+    allocate (self%mass_pass(0), self%touched(0), self%second_pass(0), self%unknown_pass(0), self%normal_pass(0), &
+              self%clear(0))
+    self%clear_start = 1
+    ran = .false.
+    do k = 1, size(speeds)
+      self%mass_pass_start(k) = size(self%mass_pass) + 1
+      self%touched_start(k) = size(self%touched) + 1
+      self%second_pass_start(k) = size(self%second_pass) + 1
+      if (.not. self%mass_blocked) then
+        self%mass_pass = [self%mass_pass, [(b, b = 1, n)]]
+        self%touched = [self%touched, [(b, b = 1, nb)]]
+        cycle
       end if
-    end if
-    self%mass_pass_start(ns + 1) = size(self%mass_pass) + 1
-    self%touched_start(ns + 1) = size(self%touched) + 1
-    self%valid_start(ns + 1) = size(self%valid) + 1
-    if (.not. any(full)) return
-    ! with a full column: lay the lists out again, the full columns covering everything
-    block
-      integer, allocatable :: pass(:), touched(:), good(:), p0(:), t0(:), v0(:)
-      pass = self%mass_pass
-      touched = self%touched
-      good = self%valid
-      p0 = self%mass_pass_start
-      t0 = self%touched_start
-      v0 = self%valid_start
-      self%mass_pass = [integer ::]
-      self%touched = [integer ::]
-      self%valid = [integer ::]
-      do k = 1, ns
-        self%mass_pass_start(k) = size(self%mass_pass) + 1
-        self%touched_start(k) = size(self%touched) + 1
-        self%valid_start(k) = size(self%valid) + 1
-        if (full(k)) then
-          self%mass_pass = [self%mass_pass, [(e, e = 1, n)]]
-          self%touched = [self%touched, [(b, b = 1, nb)]]
-          self%valid = [self%valid, [(j, j = 1, ns)]]
-        else
-          self%mass_pass = [self%mass_pass, pass(p0(k):p0(k + 1) - 1)]
-          self%touched = [self%touched, touched(t0(k):t0(k + 1) - 1)]
-          self%valid = [self%valid, good(v0(k):v0(k + 1) - 1)]
-        end if
+      moved = .false.   ! L(k) and B(k): the fixpoint
+      sources = [speeds(k)]
+      do
+        call reach_of(reach, sources, n_frames, n_scalars, moving, live)
+        changed = .false.
+        do b = 1, nb
+          if (moved(b) .or. .not. any(moving(rows(self%blocks(b)%members)))) cycle
+          moved(b) = .true.
+          changed = .true.
+          sources = [sources, unknowns(self%blocks(b)%members)]
+        end do
+        if (.not. changed) exit
       end do
-    end block
-    self%mass_pass_start(ns + 1) = size(self%mass_pass) + 1
-    self%touched_start(ns + 1) = size(self%touched) + 1
-    self%valid_start(ns + 1) = size(self%valid) + 1
+      row = .false.
+      do b = 1, nb
+        if (moved(b)) row(rows(self%blocks(b)%members)) = .true.
+      end do
+      pass = feeding(reach, live, tracked_frame, row)
+      self%mass_pass = [self%mass_pass, pass]
+      self%touched = [self%touched, pack([(b, b = 1, nb)], moved)]
+      call add_clear(pass)
+      if (.not. any(moved)) cycle
+      call reach_of(reach, sources(2:), n_frames, n_scalars, moving, live_unknowns)
+      self%second_pass = [self%second_pass, feeding(reach, live .and. live_unknowns, tracked_frame, no_row)]
+    end do
+    self%mass_pass_start(size(speeds) + 1) = size(self%mass_pass) + 1
+    self%touched_start(size(speeds) + 1) = size(self%touched) + 1
+    self%second_pass_start(size(speeds) + 1) = size(self%second_pass) + 1
+    if (.not. reach%known) then   ! the mechanism forms M by inverse-dynamics passes
+      self%unknown_pass_start = 1
+      self%normal_pass_start = 1
+      return
+    end if
+    do k = 1, size(unknowns)
+      self%unknown_pass_start(k) = size(self%unknown_pass) + 1
+      call reach_of(reach, [unknowns(k)], n_frames, n_scalars, moving, live)
+      pass = feeding(reach, live, tracked_frame, no_row)
+      self%unknown_pass = [self%unknown_pass, pass]
+      if (size(pass) > 0) call add_clear(pass)
+    end do
+    self%unknown_pass_start(size(unknowns) + 1) = size(self%unknown_pass) + 1
+    row = .false.
+    row(rows) = .true.
+    do k = 1, size(normal_frames)
+      self%normal_pass_start(k) = size(self%normal_pass) + 1
+      call reach_of(reach, [integer ::], n_frames, n_scalars, moving, live, [normal_frames(k)])
+      pass = feeding(reach, live, tracked_frame, row)
+      self%normal_pass = [self%normal_pass, pass]
+      call add_clear(pass)
+    end do
+    self%normal_pass_start(size(normal_frames) + 1) = size(self%normal_pass) + 1
+  contains
+    !> The next pass runs `pass`: clear what the one before ran and this one does not.
+    subroutine add_clear(pass)
+      integer, intent(in) :: pass(:)
+      integer :: e
+      runs = .false.
+      runs(pass) = .true.
+      self%clear = [self%clear, pack([(e, e = 1, n)], ran .and. .not. runs)]
+      self%clear_start = [self%clear_start, size(self%clear) + 1]
+      ran = runs
+    end subroutine add_clear
   end subroutine build_mass_columns
+
+  !> The elements among `live` whose outputs feed, directly or through other
+  !> live elements, the frames `frame_wanted` or the scalars `scalar_wanted`,
+  !> in pass order.
+  function feeding(reach, live, frame_wanted, scalar_wanted) result(list)
+    type(element_reach_t), intent(in) :: reach
+    logical, intent(in) :: live(:), frame_wanted(:), scalar_wanted(:)
+    integer, allocatable :: list(:)
+    logical :: need_frame(size(frame_wanted)), need_scalar(size(scalar_wanted)), needed(size(live))
+    integer :: e
+    need_frame = frame_wanted
+    need_scalar = scalar_wanted
+    needed = .false.
+    do e = size(live), 1, -1
+      if (.not. live(e)) cycle
+      associate (f_out => reach%frame_out(reach%frame_out_start(e):reach%frame_out_start(e + 1) - 1), &
+                 s_out => reach%scalar_out(reach%scalar_out_start(e):reach%scalar_out_start(e + 1) - 1))
+        if (.not. (any(need_frame(f_out)) .or. any(need_scalar(s_out)))) cycle
+      end associate
+      needed(e) = .true.
+      need_frame(reach%frame_in(reach%frame_in_start(e):reach%frame_in_start(e + 1) - 1)) = .true.
+      need_scalar(reach%scalar_in(reach%scalar_in_start(e):reach%scalar_in_start(e + 1) - 1)) = .true.
+    end do
+    list = pack([(e, e = 1, size(live))], needed)
+  end function feeding
 
   integer function block_count(self)
     class(closure_blocks_t), intent(in) :: self

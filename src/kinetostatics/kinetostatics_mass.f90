@@ -37,6 +37,7 @@ module kinetostatics_mass
     procedure :: force => mass_force
     procedure :: energy => mass_energy
     procedure :: links => mass_links
+    procedure :: world_inertia => mass_world_inertia
   end type mass_element_t
 
 contains
@@ -99,6 +100,20 @@ contains
     s = matmul(self%rot, self%com)
     inertia_w = matmul(self%rot, matmul(self%inertia, transpose(self%rot)))
   end subroutine world_geometry
+
+  !> m, s = R s_local and Theta_w at the last position (the mechanism's mass
+  !> matrix from the frames' partial twists: M = sum m p_i . p_j + alpha_i . Theta_w alpha_j).
+  pure subroutine mass_world_inertia(self, mass, s, inertia_w)
+    class(mass_element_t), intent(inout) :: self
+    real(wp), intent(out) :: mass, s(3), inertia_w(3, 3)
+    if (.not. self%current) then
+      call world_geometry(self, self%s, self%inertia_w)
+      self%current = .true.
+    end if
+    mass = self%mass
+    s = self%s
+    inertia_w = self%inertia_w
+  end subroutine mass_world_inertia
 
   pure subroutine mass_nothing(self, frames, scalars)
     class(mass_element_t), intent(inout) :: self

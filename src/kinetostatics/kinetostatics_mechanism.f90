@@ -50,21 +50,36 @@
 !> Equations of motion (3.34)-(3.36): the inverse dynamics Q_bar(q, s, s')
 !> (generalized forces of d'Alembert + applied forces at the speeds, loops and
 !> velocity constraints closed by lambda, mu) is affine in s': Q_bar = Q_bar0 -
-!> M s'. ns + 1 passes: one with s' = 0 (inertia, gravity and the explicit
-!> laws) gives Q_bar0 = -Q^, and one per speed with s' = e_i, velocities zero
-!> and applied forces off gives the column -M e_i (M = B^T M_q B). Without
-!> scaled laws the column passes cover only the elements s'_i moves and the
-!> blocks its covered speeds need, and give M(j, i) = M(i, j) for the speeds
-!> j they cover (kinetostatics_closure_blocks, build_mass_columns); the normal
-!> forces then come from one more pass at the solved s' (N0 + G s' without G)
-!> when a column was partial.
+!> M s'. One pass with s' = 0 (inertia, gravity and the explicit laws) gives
+!> Q_bar0 = -Q^ and the normal forces N0.
+!>
+!> M and G from the partial twists: every frame's twist is linear in the
+!> speeds, so with the velocities zero the acceleration state of s' = e_i
+!> (the closure solved) is column i of the partial twists (alpha, a) of the
+!> mass elements' frames (and of the scaled laws' load frames: `tracked`).
+!> The inertial wrench of a mass per unit s'_i is (3.23) at rest and M(j, i)
+!> = -(twist_j . wrench_i) = sum m p_j . p_i + alpha_j . Theta_w alpha_i (p
+!> the centre of mass's acceleration), so one acceleration pass per speed
+!> over the elements it moves (kinetostatics_closure_blocks,
+!> build_mass_columns) replaces the column's two force passes. Every normal
+!> force is linear in the wrenches W at the tracked frames, N_c = -normal_sign
+!> nu_c . W (twist_normal_forces: the cut forces through J_x^-T by one solve
+!> per contact, a frame's force through one pass moving the frame along its
+!> normal), which gives G = N per unit s' and, with the scaled laws' unit
+!> loads as W, H and P (the loads' powers on the speeds' twists). Only the
+!> mass elements have inertia (kinetostatics_mass). A mechanism with an
+!> element of unknown links forms M and G by the inverse-dynamics pass per
+!> speed instead (s' = e_i, velocities zero, applied forces off: -M e_i) and
+!> P and H by one per scaled law, as does a scaled law with a load on a frame
+!> that is not tracked.
 !>
 !> Normal forces and scaled laws: every contact's normal force N (rules in
 !> kinetostatics_contact) is linear in the loads of a force pass, so
 !> N = N0 + G q'' + sum_k H_k |N_c(k)|, where the last sum runs over the scaled
 !> laws k (load |N_c(k)| u_k with u_k from the law, e.g. Coulomb friction
-!> u = -mu w/|w| (4.28)). With s_j = sign N_j, P_k and H_k from one force pass
-!> with the unit load u_k alone, and the contacts j of the scaled laws as
+!> u = -mu w/|w| (4.28)). With s_j = sign N_j, P_k and H_k the generalized
+!> forces and normal forces of the unit load u_k alone (as one force pass with
+!> it would give them), and the contacts j of the scaled laws as
 !> extra unknowns, the equations of motion are the exact block system
 !>     [ M            -sum_k P_k s_j(k) e_j(k)^T   ] [q'']   [Q_bar0]
 !>     [ -G_j   I - sum_k H_j,k s_j(k) e_j(k)^T    ] [N_j] = [N0_j  ],
@@ -73,6 +88,7 @@
 !> affine form. The law's power is |N| times its unit power.
 module kinetostatics_mechanism
   use base_kinds, only: wp
+  use base_vector, only: cross
   use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_OK, STATUS_INVALID_INPUT, &
     STATUS_NOT_CONVERGED, STATUS_DOMAIN
@@ -82,6 +98,7 @@ module kinetostatics_mechanism
     cholesky_solve
   use kinetostatics_state, only: element_t, element_box_t, frame_state_t, scalar_state_t
   use kinetostatics_surface_joint, only: surface_joint_t, domain_edge_margin
+  use kinetostatics_mass, only: mass_element_t
   use kinetostatics_contact, only: contact_t, contact_state_t, contact_kinematics, NORMAL_FRAME_FORCE, &
     NORMAL_CUT_FORCE
   use kinetostatics_force_law, only: force_law_t, force_law_box_t
@@ -191,6 +208,19 @@ module kinetostatics_mechanism
     integer, allocatable :: block_row(:)      ! row (1..nb) of each scaled law's contact in the block
     integer, allocatable :: block_contact(:)  ! contact of each block row
     integer, allocatable :: ipiv_block(:)
+    ! M and G from the partial twists of the tracked frames (dynamics, find_mass_twists); with an
+    ! element of unknown links (twist_route false) from inverse-dynamics passes per column instead
+    logical :: twist_route = .false.
+    integer, allocatable :: tracked(:)           ! frames whose twists are kept (masses', scaled loads')
+    integer, allocatable :: tracked_slot(:)      ! each frame's place in tracked (0: not kept)
+    integer, allocatable :: masses(:), mass_slot(:)   ! the mass elements, their frames' places in tracked
+    integer, allocatable :: normal_contacts(:)   ! contacts with N from the force on a frame (normal_pass order)
+    real(wp), allocatable :: twist(:, :, :)      ! (6, tracked, ns): (alpha, a) per unit s'_i at rest
+    real(wp), allocatable :: wrench(:, :, :)     ! (6, tracked, ns): inertial (torque, force) per unit s'_i
+    integer, allocatable :: moving_unknowns(:)   ! the unknowns whose open motion moves a tracked frame
+    real(wp), allocatable :: unknown_twist(:, :, :)   ! (6, tracked, moving unknowns): per unit rate, nothing solved
+    real(wp), allocatable :: nu(:, :, :)         ! (6, tracked, contacts): N = -normal_sign nu_c . wrenches
+    real(wp), allocatable :: load_wrench(:, :)   ! (6, tracked): a scaled law's unit loads
   contains
     procedure :: add_frame, add_scalar, add_element, add_loop, add_contact, add_law, set_coordinates, finalize
     procedure :: add_rate_constraint, set_kinematic, set_loop_branch, add_monitor
@@ -530,7 +560,6 @@ contains
   subroutine find_closure_blocks(self)
     class(mechanism_t), intent(inout) :: self
     integer :: group_start(size(self%loops) + size(self%rate_constraints) + 1), k, g
-    logical :: scaled
     self%unknowns = [self%beta, self%sigma]
     self%rows = [self%closure, self%rate_outputs]
     g = 1
@@ -553,14 +582,57 @@ contains
     end if
     call build_closure_blocks(self%blocks, self%elements, self%reach, self%n_frames, self%n_scalars, &
                               self%unknowns, self%rows, self%r, group_start, self%blocked)
-    scaled = .false.
-    do k = 1, self%n_laws
-      if (self%laws(k)%law%scaled) scaled = .true.
-    end do
-    ! with scaled laws the block system needs every contact's N per unit acceleration: full columns
-    call self%blocks%build_mass_columns(self%reach, self%n_frames, self%n_scalars, self%q(self%speeds), &
-                                        self%unknowns, self%rows, self%blocked .and. .not. scaled)
+    call find_mass_twists(self)
   end subroutine find_closure_blocks
+
+  !> The frames whose partial twists `dynamics` keeps (every mass element's,
+  !> and both frames of each scaled law's contact), the contacts whose normal
+  !> force is the force on a frame, and the pass lists
+  !> (kinetostatics_closure_blocks, build_mass_columns).
+  subroutine find_mass_twists(self)
+    class(mechanism_t), intent(inout) :: self
+    logical :: keep(self%n_frames)
+    integer :: k, c, nt, nx
+    keep = .false.
+    self%masses = [integer ::]
+    do k = 1, self%n_elements
+      select type (e => self%elements(k)%e)
+      type is (mass_element_t)
+        self%masses = [self%masses, k]
+        keep(e%frame) = .true.
+      end select
+    end do
+    do k = 1, self%n_laws
+      c = self%laws(k)%law%contact
+      if (.not. self%laws(k)%law%scaled .or. c < 1) cycle
+      keep([self%contacts(c)%frame_a, self%contacts(c)%frame_b]) = .true.
+    end do
+    keep(1) = .false.   ! the ground never moves
+    self%tracked = pack([(k, k = 1, self%n_frames)], keep)
+    nt = size(self%tracked)
+    self%tracked_slot = [(0, k = 1, self%n_frames)]
+    self%tracked_slot(self%tracked) = [(k, k = 1, nt)]
+    self%mass_slot = [integer ::]
+    do k = 1, size(self%masses)
+      select type (e => self%elements(self%masses(k))%e)
+      type is (mass_element_t)
+        self%mass_slot = [self%mass_slot, self%tracked_slot(e%frame)]
+      end select
+    end do
+    self%normal_contacts = pack([(c, c = 1, size(self%contacts))], &
+                                self%contacts%normal_rule == NORMAL_FRAME_FORCE)
+    call self%blocks%build_mass_columns(self%reach, self%n_frames, self%n_scalars, self%q(self%speeds), &
+                                        self%unknowns, self%rows, self%tracked, &
+                                        self%contacts(self%normal_contacts)%normal_frame, self%blocked)
+    self%twist_route = self%reach%known
+    nx = self%r + self%nd
+    self%moving_unknowns = pack([(k, k = 1, nx)], self%blocks%unknown_pass_start(2:nx + 1) > &
+                                                  self%blocks%unknown_pass_start(1:nx))
+    if (allocated(self%twist)) deallocate (self%twist, self%wrench, self%unknown_twist, self%nu, self%load_wrench)
+    allocate (self%twist(6, nt, self%ns), self%wrench(6, nt, self%ns), &
+              self%unknown_twist(6, nt, size(self%moving_unknowns)), &
+              self%nu(6, nt, size(self%contacts)), self%load_wrench(6, nt))
+  end subroutine find_mass_twists
 
   !> Dependent rates, constraint outputs and kinematic coordinates must be
   !> coordinates; the speeds are the other coordinates.
@@ -1357,7 +1429,7 @@ contains
     real(wp) :: s_old
     type(status_t) :: lapack
     integer :: i, j, k, c, nc, ns, nb, it, column
-    logical :: consistent, partial   ! partial: a column of M from partial passes (G not filled)
+    logical :: consistent
 
     if (self%dynamics_known .and. t == self%known_t) then
       if (all(q == self%known_q) .and. all(qd == self%known_s) .and. &
@@ -1384,28 +1456,14 @@ contains
     self%bias = self%gq
     if (nc > 0) call self%normal_forces(self%n0)
 
-    ! M column by column: q'' = e_i with all velocities zero, applied forces off
+    ! M and G, all velocities zero, applied forces off
     do k = 1, self%n_frames
       self%frames(k)%omega = 0
       self%frames(k)%v = 0
     end do
     self%scalars%qd = 0
-    partial = .false.
-    if (self%blocks%mass_blocked) then
-      self%mass = 0
-      call clear_accelerations(self)
-      do i = 1, self%ns
-        if (self%blocks%mass_pass_start(i + 1) - self%blocks%mass_pass_start(i) < self%n_elements) then
-          call blocked_mass_column(self, i)
-          partial = .true.
-        else
-          call full_mass_column(self, i)
-          do k = 1, self%ns   ! its row too (the blocked columns give only theirs); no temporary
-            self%mass(i, k) = self%mass(k, i)
-          end do
-          call clear_accelerations(self)
-        end if
-      end do
+    if (self%twist_route) then
+      call twist_mass_matrix(self)
     else
       do i = 1, self%ns
         call full_mass_column(self, i)
@@ -1427,26 +1485,22 @@ contains
       self%qdd = self%bias
       call cholesky_solve(self%chol, self%qdd, status)
       qdd = self%qdd
-      if (partial) then
-        ! N = N0 + (normal forces of the pass at q'' alone, velocities zero): G q'' without G
-        call self%set_accelerations(qdd)
-        call self%inverse_dynamics(.true., .false., LOADS_NONE)
-        call self%normal_forces(self%work_c)
-        self%normal = self%n0 + self%work_c
-      else
-        call affine_normal_forces(self, qdd)
-      end if
+      call affine_normal_forces(self, qdd)
       self%law_power = self%unit_power
       call remember_dynamics(self, t, q, qd)
       return
     end if
 
     ! scaled laws: their unit loads alone, then the block system
-    do k = 1, ns
-      call self%inverse_dynamics(.false., .false., self%scaled_laws(k))
-      self%p_mat(:, k) = self%gq
-      call self%normal_forces(self%h_mat(:, k))
-    end do
+    if (self%twist_route) then
+      call twist_unit_loads(self)
+    else
+      do k = 1, ns
+        call self%inverse_dynamics(.false., .false., self%scaled_laws(k))
+        self%p_mat(:, k) = self%gq
+        call self%normal_forces(self%h_mat(:, k))
+      end do
+    end if
     self%signs = 1
     consistent = .false.
     do it = 1, 6
@@ -1510,7 +1564,8 @@ contains
     call remember_dynamics(self, t, q, qd)
   end subroutine dynamics
 
-  !> Column i of M (and of G) by the full passes: s' = e_i, velocities zero,
+  !> Column i of M and of G by inverse-dynamics passes (the route for a
+  !> mechanism with an element of unknown links): s' = e_i, velocities zero,
   !> applied forces off.
   subroutine full_mass_column(self, i)
     class(mechanism_t), intent(inout) :: self
@@ -1533,128 +1588,271 @@ contains
     self%scalars%qdd = 0
   end subroutine clear_accelerations
 
-  !> Column i of M by passes over the elements a unit s'_i moves and the
-  !> blocks it moves (kinetostatics_closure_blocks, build_mass_columns):
-  !> the same two acceleration and two force passes as full_mass_column, over
-  !> those elements; gives M(j, i) = M(i, j) for the speeds j it covers.
-  !> Expects every acceleration zero and leaves them so.
-  subroutine blocked_mass_column(self, i)
+  !> M and G from the partial twists of the tracked frames (module comment),
+  !> velocities zero: column i of the twists is the acceleration state of
+  !> s' = e_i at rest (the closure solved), the inertial wrench of each mass
+  !> per unit s'_i is (3.23) at rest, and M(j, i) = -(twist_j . wrench_i).
+  subroutine twist_mass_matrix(self)
+    class(mechanism_t), intent(inout) :: self
+    real(wp) :: mass, s(3), inertia_w(3, 3)
+    integer :: i, b
+    call clear_accelerations(self)
+    do i = 1, self%ns
+      if (self%blocks%mass_blocked) then
+        call unit_column(self, i)
+      else
+        self%work_f = 0
+        self%work_f(i) = 1
+        call self%set_accelerations(self%work_f)
+        call keep_twists(self, self%twist(:, :, i))
+      end if
+    end do
+    if (.not. self%blocks%mass_blocked) call clear_accelerations(self)
+    self%wrench = 0
+    do b = 1, size(self%masses)
+      if (self%mass_slot(b) == 0) cycle   ! a mass on the ground
+      select type (e => self%elements(self%masses(b))%e)
+      type is (mass_element_t)
+        call e%world_inertia(mass, s, inertia_w)
+      end select
+      call add_inertial_wrenches(self%ns, size(self%tracked), self%mass_slot(b), mass, s, inertia_w, self%twist, &
+                                 self%wrench)
+    end do
+    call pair_powers(self%ns, self%ns, size(self%tracked), self%twist, self%wrench, self%mass, .true.)
+    if (size(self%contacts) > 0) call twist_normal_forces(self)
+  end subroutine twist_mass_matrix
+
+  !> The inertial wrenches (torque, force at the frame's origin) of a mass
+  !> (m, s = R s_local, Theta_w) on the tracked frame t per unit s'_i: (3.23)
+  !> at rest with (alpha, a) = twist(:, t, i), added to wrench(:, t, i).
+  pure subroutine add_inertial_wrenches(ns, nt, t, mass, s, inertia_w, twist, wrench)
+    integer, intent(in) :: ns, nt, t
+    real(wp), intent(in) :: mass, s(3), inertia_w(3, 3), twist(6, nt, ns)
+    real(wp), intent(inout) :: wrench(6, nt, ns)
+    real(wp) :: f(3)
+    integer :: i
+    do i = 1, ns
+      f = -mass*(twist(4:6, t, i) + cross(twist(1:3, t, i), s))
+      wrench(1:3, t, i) = wrench(1:3, t, i) + cross(s, f) - inertia_w(:, 1)*twist(1, t, i) &
+                          - inertia_w(:, 2)*twist(2, t, i) - inertia_w(:, 3)*twist(3, t, i)
+      wrench(4:6, t, i) = wrench(4:6, t, i) + f
+    end do
+  end subroutine add_inertial_wrenches
+
+  !> out(k, i) = sum over the tracked frames of twists(:, :, k) . wrenches(:, :, i)
+  !> (a power); mass: out = -that, only k <= i computed and mirrored (M,
+  !> symmetric by construction).
+  pure subroutine pair_powers(n_twists, n_wrenches, nt, twists, wrenches, out, mass)
+    integer, intent(in) :: n_twists, n_wrenches, nt
+    real(wp), intent(in) :: twists(6, nt, n_twists), wrenches(6, nt, n_wrenches)
+    real(wp), intent(out) :: out(n_twists, n_wrenches)
+    logical, intent(in) :: mass
+    real(wp) :: p
+    integer :: i, k, t, last
+    do i = 1, n_wrenches
+      last = n_twists
+      if (mass) last = i
+      do k = 1, last
+        p = 0
+        do t = 1, nt
+          p = p + twists(1, t, k)*wrenches(1, t, i) + twists(2, t, k)*wrenches(2, t, i) &
+                + twists(3, t, k)*wrenches(3, t, i) + twists(4, t, k)*wrenches(4, t, i) &
+                + twists(5, t, k)*wrenches(5, t, i) + twists(6, t, k)*wrenches(6, t, i)
+        end do
+        if (mass) then
+          out(k, i) = -p
+          out(i, k) = -p
+        else
+          out(k, i) = p
+        end if
+      end do
+    end do
+  end subroutine pair_powers
+
+  !> Column i of the twists by passes over the elements a unit s'_i moves
+  !> and the blocks it moves (kinetostatics_closure_blocks,
+  !> build_mass_columns): one acceleration pass, the touched blocks' solve,
+  !> a second pass over what their unknowns move. Pass i of the sequence of
+  !> clear_before.
+  subroutine unit_column(self, i)
     class(mechanism_t), intent(inout) :: self
     integer, intent(in) :: i
-    integer :: p, l, m, j
-    logical :: rates
-    rates = self%nd > 0
+    integer :: l, m, j
     associate (bl => self%blocks, x => self%work_x, speed => self%q(self%speeds(i)))
       associate (pass => bl%mass_pass(bl%mass_pass_start(i):bl%mass_pass_start(i + 1) - 1), &
                  touched => bl%touched(bl%touched_start(i):bl%touched_start(i + 1) - 1))
+        call clear_before(self, i)
         self%scalars(speed)%qdd = 1
-        do p = 1, size(pass)
-          call self%elements(pass(p))%e%acceleration(self%frames, self%scalars)
-        end do
-        do l = 1, size(touched)
-          do m = 1, size(bl%blocks(touched(l))%members)
-            j = bl%blocks(touched(l))%members(m)
-            x(j) = self%scalars(self%rows(j))%qdd
+        call accelerate(self, pass)
+        if (size(touched) > 0) then
+          do l = 1, size(touched)
+            do m = 1, size(bl%blocks(touched(l))%members)
+              j = bl%blocks(touched(l))%members(m)
+              x(j) = self%scalars(self%rows(j))%qdd
+            end do
           end do
-        end do
-        call bl%solve(rates, x, .false., touched)
-        do l = 1, size(touched)
-          do m = 1, size(bl%blocks(touched(l))%members)
-            j = bl%blocks(touched(l))%members(m)
-            self%scalars(self%unknowns(j))%qdd = -x(j)
+          call bl%solve(self%nd > 0, x, .false., touched)
+          do l = 1, size(touched)
+            do m = 1, size(bl%blocks(touched(l))%members)
+              j = bl%blocks(touched(l))%members(m)
+              self%scalars(self%unknowns(j))%qdd = -x(j)
+            end do
           end do
-        end do
-        do p = 1, size(pass)
-          call self%elements(pass(p))%e%acceleration(self%frames, self%scalars)
-        end do
-        ! the force passes: lambda = 0, then the touched blocks' cut forces
-        call partial_force_pass(self, pass)
-        do l = 1, size(touched)
-          do m = 1, size(bl%blocks(touched(l))%members)
-            j = bl%blocks(touched(l))%members(m)
-            x(j) = self%scalars(self%unknowns(j))%force
-          end do
-        end do
-        call bl%solve(rates, x, .true., touched)
-        call partial_force_pass(self, pass, touched)
-        do p = bl%valid_start(i), bl%valid_start(i + 1) - 1
-          j = bl%valid(p)
-          self%mass(j, i) = -self%scalars(self%q(self%speeds(j)))%force
-          self%mass(i, j) = self%mass(j, i)
-        end do
-        ! back to rest
+          call accelerate(self, bl%second_pass(bl%second_pass_start(i):bl%second_pass_start(i + 1) - 1))
+        end if
+        call keep_twists(self, self%twist(:, :, i))
+        ! the sources back to rest (the outputs: clear_before)
         self%scalars(speed)%qdd = 0
         do l = 1, size(touched)
           do m = 1, size(bl%blocks(touched(l))%members)
             self%scalars(self%unknowns(bl%blocks(touched(l))%members(m)))%qdd = 0
           end do
         end do
-        call clear_outputs(self, pass, .false.)
       end associate
     end associate
-  end subroutine blocked_mass_column
+  end subroutine unit_column
 
-  !> For the elements `pass`: the accelerations of their output frames and
-  !> scalars set to zero, or (`forces`) the forces on their output and input
-  !> frames and scalars.
-  subroutine clear_outputs(self, pass, forces)
+  !> The normal-force map of every contact, N = -normal_sign nu_c . W for
+  !> any wrenches W (torque, force) at the tracked frames (inertial or
+  !> applied), and G from it (module comment). With x = [lambda; mu] =
+  !> -J_x^-T Q_x the cut forces of W, Q_x(k) = twist_k . W the generalized
+  !> forces on the unknowns (their open partial twists), a row vector r
+  !> gives r . x = -(J_x^-1 r) . Q_x: so nu_c = n_c - sum_k y_k twist_k with
+  !> y = J_x^-1 r_c, where for N = normal_sign lambda of a row, n_c = 0 and
+  !> r_c = -e_row, and for N = -normal_sign z_F . f_F, n_c is the twist of
+  !> the motion of F along z_F (the tracked frames it carries) and r_c the
+  !> rows' rates of that motion (z_F . f_F is the power of W and of the cut
+  !> forces on it). Velocities and accelerations zero.
+  subroutine twist_normal_forces(self)
     class(mechanism_t), intent(inout) :: self
-    integer, intent(in) :: pass(:)
-    logical, intent(in) :: forces
-    integer :: p, l
-    do p = 1, size(pass)
-      associate (r => self%reach, e => pass(p))
-        do l = r%frame_out_start(e), r%frame_out_start(e + 1) - 1
-          associate (fr => self%frames(r%frame_out(l)))
-            if (forces) then
-              fr%force = 0
-              fr%torque = 0
-            else
-              fr%alpha = 0
-              fr%a = 0
-            end if
-          end associate
-        end do
-        do l = r%scalar_out_start(e), r%scalar_out_start(e + 1) - 1
-          if (forces) then
-            self%scalars(r%scalar_out(l))%force = 0
-          else
-            self%scalars(r%scalar_out(l))%qdd = 0
+    integer :: i, k, l, c, f, nx, step
+    nx = self%r + self%nd
+    step = 0
+    if (self%blocks%mass_blocked) step = self%ns
+    do l = 1, size(self%moving_unknowns)   ! the other unknowns move no tracked frame
+      k = self%moving_unknowns(l)
+      step = step + 1
+      call clear_before(self, step)
+      self%scalars(self%unknowns(k))%qdd = 1
+      call accelerate(self, self%blocks%unknown_pass(self%blocks%unknown_pass_start(k): &
+                                                     self%blocks%unknown_pass_start(k + 1) - 1))
+      call keep_twists(self, self%unknown_twist(:, :, l))
+      self%scalars(self%unknowns(k))%qdd = 0
+    end do
+    l = 0
+    do c = 1, size(self%contacts)
+      associate (contact => self%contacts(c))
+        if (contact%normal_rule == NORMAL_CUT_FORCE) then
+          self%nu(:, :, c) = 0
+          self%work_x = 0
+          self%work_x(contact%normal_row) = -1
+        else
+          l = l + 1
+          f = contact%normal_frame
+          step = step + 1
+          call clear_before(self, step)
+          self%frames(f)%a = self%frames(f)%rot(:, 3)
+          call accelerate(self, self%blocks%normal_pass(self%blocks%normal_pass_start(l): &
+                                                        self%blocks%normal_pass_start(l + 1) - 1))
+          call keep_twists(self, self%nu(:, :, c))
+          do k = 1, nx
+            self%work_x(k) = self%scalars(self%rows(k))%qdd
+          end do
+          self%frames(f)%a = 0
+        end if
+      end associate
+      if (size(self%moving_unknowns) == 0) cycle
+      call self%blocks%solve(self%nd > 0, self%work_x, .false.)
+      do k = 1, size(self%moving_unknowns)
+        self%nu(:, :, c) = self%nu(:, :, c) - self%work_x(self%moving_unknowns(k))*self%unknown_twist(:, :, k)
+      end do
+    end do
+    call pair_powers(size(self%contacts), self%ns, size(self%tracked), self%nu, self%wrench, self%g_mat, .false.)
+    do i = 1, self%ns
+      do c = 1, size(self%contacts)
+        self%g_mat(c, i) = -self%contacts(c)%normal_sign*self%g_mat(c, i)
+      end do
+    end do
+  end subroutine twist_normal_forces
+
+  !> P and H (module comment) of the scaled laws from the twists: the
+  !> generalized forces of law k's unit loads are the powers of its wrenches
+  !> on the speeds' twists, the normal forces -normal_sign nu_c . wrenches
+  !> (twist_normal_forces); a law with a load on a frame that is not tracked
+  !> (nor the ground) gets its inverse-dynamics pass.
+  subroutine twist_unit_loads(self)
+    class(mechanism_t), intent(inout) :: self
+    integer :: k, j, t, c
+    logical :: tracked
+    do k = 1, size(self%scaled_laws)
+      self%load_wrench = 0
+      tracked = .true.
+      associate (loads => self%laws(self%scaled_laws(k))%law%loads)
+        do j = 1, size(loads)
+          if (loads(j)%frame == 1) cycle   ! the ground: no power
+          t = self%tracked_slot(loads(j)%frame)
+          if (t == 0) then
+            tracked = .false.
+            exit
           end if
-        end do
-        if (.not. forces) cycle
-        do l = r%frame_in_start(e), r%frame_in_start(e + 1) - 1
-          self%frames(r%frame_in(l))%force = 0
-          self%frames(r%frame_in(l))%torque = 0
-        end do
-        do l = r%scalar_in_start(e), r%scalar_in_start(e + 1) - 1
-          self%scalars(r%scalar_in(l))%force = 0
+          self%load_wrench(1:3, t) = self%load_wrench(1:3, t) + loads(j)%torque
+          self%load_wrench(4:6, t) = self%load_wrench(4:6, t) + loads(j)%force
         end do
       end associate
+      if (.not. tracked) then
+        call self%inverse_dynamics(.false., .false., self%scaled_laws(k))
+        self%p_mat(:, k) = self%gq
+        call self%normal_forces(self%h_mat(:, k))
+        cycle
+      end if
+      call pair_powers(self%ns, 1, size(self%tracked), self%twist, self%load_wrench, self%p_mat(:, k), .false.)
+      call pair_powers(size(self%contacts), 1, size(self%tracked), self%nu, self%load_wrench, self%h_mat(:, k), &
+                       .false.)
+      do c = 1, size(self%contacts)
+        self%h_mat(c, k) = -self%contacts(c)%normal_sign*self%h_mat(c, k)
+      end do
     end do
-  end subroutine clear_outputs
+  end subroutine twist_unit_loads
 
-  !> A force pass with inertia, without applied forces, over the elements
-  !> `pass` (backwards): the forces on their inputs and outputs cleared, the
-  !> cut forces -work_x of the blocks `touched` on their rows (none: zero).
-  subroutine partial_force_pass(self, pass, touched)
+  !> The acceleration maps of the elements `pass`, in order.
+  subroutine accelerate(self, pass)
     class(mechanism_t), intent(inout) :: self
     integer, intent(in) :: pass(:)
-    integer, intent(in), optional :: touched(:)
-    integer :: p, l, m, j
-    call clear_outputs(self, pass, .true.)
-    if (present(touched)) then
-      do l = 1, size(touched)
-        do m = 1, size(self%blocks%blocks(touched(l))%members)
-          j = self%blocks%blocks(touched(l))%members(m)
-          self%scalars(self%rows(j))%force = -self%work_x(j)
-        end do
-      end do
-    end if
-    do p = size(pass), 1, -1
-      call self%elements(pass(p))%e%force(self%frames, self%scalars, .true., .false.)
+    integer :: p
+    do p = 1, size(pass)
+      call self%elements(pass(p))%e%acceleration(self%frames, self%scalars)
     end do
-  end subroutine partial_force_pass
+  end subroutine accelerate
+
+  !> The tracked frames' (alpha, a).
+  subroutine keep_twists(self, twists)
+    class(mechanism_t), intent(in) :: self
+    real(wp), intent(out) :: twists(6, size(self%tracked))
+    integer :: t
+    do t = 1, size(self%tracked)
+      twists(1:3, t) = self%frames(self%tracked(t))%alpha
+      twists(4:6, t) = self%frames(self%tracked(t))%a
+    end do
+  end subroutine keep_twists
+
+  !> Before pass `step` of the mass matrix's sequence
+  !> (kinetostatics_closure_blocks, build_mass_columns): the accelerations
+  !> of the outputs the pass before wrote and this one does not, set to rest.
+  subroutine clear_before(self, step)
+    class(mechanism_t), intent(inout) :: self
+    integer, intent(in) :: step
+    integer :: p, l, e
+    do p = self%blocks%clear_start(step), self%blocks%clear_start(step + 1) - 1
+      e = self%blocks%clear(p)
+      do l = self%reach%frame_out_start(e), self%reach%frame_out_start(e + 1) - 1
+        self%frames(self%reach%frame_out(l))%alpha = 0
+        self%frames(self%reach%frame_out(l))%a = 0
+      end do
+      do l = self%reach%scalar_out_start(e), self%reach%scalar_out_start(e + 1) - 1
+        self%scalars(self%reach%scalar_out(l))%qdd = 0
+      end do
+    end do
+  end subroutine clear_before
 
   subroutine remember_dynamics(self, t, q, qd)
     class(mechanism_t), intent(inout) :: self

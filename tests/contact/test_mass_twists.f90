@@ -1,0 +1,178 @@
+!> The mass matrix M, the normal forces per unit acceleration G and the
+!> scaled laws' unit-load terms P and H that `dynamics` forms from the partial
+!> twists of the mass frames (kinetostatics_mechanism, "M and G from the
+!> partial twists") against the inverse dynamics itself: Q_bar is affine in
+!> s', so with the velocities zero and the applied forces off the pass at s' =
+!> e_i gives exactly -M e_i and the normal forces G e_i, and the pass with law
+!> k's unit loads alone gives P e_k and H e_k (the route `dynamics` took
+!> before, through the public procedures). Mechanisms: the rider (two loops,
+!> normal forces from the force on the contact frames, which carry the loops'
+!> cut forces; Coulomb at three contacts), the sled (one loop; the front
+!> normal force from the force on its frame and from the cut force; Coulomb,
+!> also with its loads on the Darboux frames, which are not tracked: those
+!> laws keep their inverse-dynamics pass), the four-bar (a loop, no contact),
+!> the egg's open chain and its loop with Coulomb friction, and the tower of
+!> five rolling paraboloids (loops and rate constraints: the cut forces mu of
+!> rolling enter G through J_x).
+!>
+!> Tolerance: both routes sum the same products in another order and solve
+!> the closure's J_x^T in both; the differences are rounding amplified by the
+!> condition of J_x (up to ~1e4 here): 1e-12 of the largest entry for M and
+!> P, 1e-10 for G and H (as test_closure_blocks); a missing mass, twist, cut
+!> force or frame gives differences of order one.
+program test_mass_twists
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_status, only: status_t
+  use testing, only: check, finish_tests
+  use geometry_tube, only: tube_surface_t, new_straight_tube
+  use geometry_surface, only: surface_t
+  use geometry_elementary, only: paraboloid_t
+  use kinetostatics_mechanism, only: mechanism_t, LOADS_NONE
+  use kinetostatics_models, only: sled_params_t, build_sled, fourbar_params_t, build_fourbar, fourbar_assembly
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, FRICTION_COULOMB, CHAIN_LOOP
+  use rider_model, only: rider_params_t, rider_layout_t, build_rider
+  use io_input, only: input_text_t, load_input_file
+  use io_contact_config, only: read_contact_config
+  implicit none (type, external)
+
+  call check_rider()
+  call check_sled(.false., .false.)
+  call check_sled(.true., .false.)
+  call check_sled(.false., .true.)
+  call check_fourbar()
+  call check_contact('inputs/contact/egg.nml', .false., 'egg, open chain')
+  call check_contact('inputs/contact/egg.nml', .true., 'egg, loop, Coulomb')
+  call check_contact('inputs/contact/tower5.nml', .false., 'tower of five, rolling')
+  call finish_tests('test_mass_twists')
+
+contains
+
+  subroutine check_rider()
+    type(rider_params_t) :: p
+    type(rider_layout_t) :: lay
+    type(mechanism_t) :: m
+    type(tube_surface_t) :: tube
+    type(status_t) :: st
+    real(wp) :: q0(3)
+    p%u0 = 5
+    tube = new_straight_tube(0.5_wp, 15*pi/180, 20.0_wp, st)
+    call build_rider(p, tube, m, lay, q0, st)
+    call m%check_start(q0, st)
+    call check(st%ok(), 'rider builds and closes: '//st%text())
+    if (.not. st%ok()) return
+    call compare(m, 0.0_wp, q0 + [0.0_wp, 0.05_wp, -0.03_wp], [3.0_wp, 0.4_wp, -0.2_wp], 'rider')
+  end subroutine check_rider
+
+  !> The bar in a paraboloid bowl, off its centre and turned, with Coulomb friction.
+  subroutine check_sled(cut_force, darboux_loads)
+    logical, intent(in) :: cut_force, darboux_loads
+    type(sled_params_t) :: p
+    class(surface_t), allocatable :: bowl
+    type(mechanism_t) :: m
+    type(status_t) :: st
+    real(wp) :: q0(3)
+    character(len=40) :: label
+    bowl = paraboloid_t(2.0_wp, 2.5_wp, 1.0_wp, st)
+    p%mu = 0.2_wp
+    p%front_normal_from_cut_force = cut_force
+    p%loads_on_darboux_frames = darboux_loads
+    q0 = [1.0_wp, 0.2_wp, 0.3_wp]
+    call build_sled(p, bowl, q0, m, st)
+    call m%check_start(q0, st)
+    call check(st%ok(), 'sled builds and closes: '//st%text())
+    if (.not. st%ok()) return
+    label = 'sled, frame rule'
+    if (cut_force) label = 'sled, cut-force rule'
+    if (darboux_loads) label = trim(label)//', loads on K_D'
+    call compare(m, 0.0_wp, q0, [0.1_wp, 1.2_wp, 0.5_wp], trim(label))
+  end subroutine check_sled
+
+  subroutine check_fourbar()
+    type(fourbar_params_t) :: p
+    type(mechanism_t) :: m
+    type(status_t) :: st
+    real(wp) :: beta0(2)
+    call fourbar_assembly(p, 0.3_wp, 1, beta0, st)
+    call build_fourbar(p, beta0, m, st)
+    call m%check_start([0.3_wp], st)
+    call check(st%ok(), 'four-bar builds and closes: '//st%text())
+    if (.not. st%ok()) return
+    call compare(m, 0.0_wp, [0.3_wp], [2.0_wp], 'four-bar')
+  end subroutine check_fourbar
+
+  !> A shipped contact input, at its start moved by a few centimetres or radians in every coordinate
+  !> (the loop with Coulomb friction instead of the open chain).
+  subroutine check_contact(file, loop, label)
+    character(len=*), intent(in) :: file, label
+    logical, intent(in) :: loop
+    type(input_text_t) :: input
+    type(contact_system_t) :: system
+    type(contact_model_t), target :: model
+    type(status_t) :: st
+    integer :: f, k
+    call load_input_file(file, input, st)
+    call read_contact_config(input, system, st)
+    if (loop) then
+      system%contacts(1)%chain = CHAIN_LOOP
+      system%contacts(1)%friction = FRICTION_COULOMB
+      system%contacts(1)%mu = 0.3_wp
+    end if
+    call build_contact_model(system, model, st)
+    call check(st%ok(), label//' built: '//st%text())
+    if (.not. st%ok()) return
+    associate (m => model%ode%mechanism)
+      f = m%f
+      call compare(m, 0.0_wp, model%y0(1:f) + [(0.03_wp*sin(1.7_wp*k), k = 1, f)], &
+                   model%y0(f + 1:f + m%ns) + [(0.5_wp*cos(0.9_wp*k), k = 1, m%ns)], label)
+    end associate
+  end subroutine check_contact
+
+  !> M and G of `dynamics` at (t, q, s) against the inverse-dynamics passes.
+  subroutine compare(m, t, q, s, label)
+    type(mechanism_t), intent(inout) :: m
+    real(wp), intent(in) :: t, q(:), s(:)
+    character(len=*), intent(in) :: label
+    type(status_t) :: st
+    real(wp) :: a(size(s)), unit_s(size(s)), m_twists(size(s), size(s)), m_passes(size(s), size(s))
+    real(wp), allocatable :: g_twists(:, :), g_passes(:, :), p_twists(:, :), p_passes(:, :), h_twists(:, :), &
+      h_passes(:, :)
+    integer :: i, k, n_scaled
+    call check(m%twist_route, label//': M from the twists')
+    call m%dynamics(t, q, s, a, st)
+    call check(st%ok(), label//': dynamics '//st%text())
+    if (.not. st%ok()) return
+    m_twists = m%mass
+    g_twists = m%g_mat
+    n_scaled = size(m%scaled_laws)
+    p_twists = m%p_mat
+    h_twists = m%h_mat
+    allocate (g_passes(size(m%contacts), size(s)), p_passes(size(s), n_scaled), h_passes(size(m%contacts), n_scaled))
+    do k = 1, n_scaled   ! the laws' loads are those of the state dynamics saw
+      call m%inverse_dynamics(.false., .false., m%scaled_laws(k))
+      p_passes(:, k) = m%gq
+      call m%normal_forces(h_passes(:, k))
+    end do
+    call m%set_velocities(0*s)
+    do i = 1, size(s)
+      unit_s = 0
+      unit_s(i) = 1
+      call m%set_accelerations(unit_s)
+      call m%inverse_dynamics(.true., .false., LOADS_NONE)
+      m_passes(:, i) = -m%gq
+      call m%normal_forces(g_passes(:, i))
+    end do
+    print '(a, 4(a, es9.2))', label, ': |M diff| ', maxval(abs(m_twists - m_passes)), ' of ', &
+      maxval(abs(m_passes)), ', |G diff| ', maxval([0.0_wp, abs(g_twists - g_passes)]), ' of ', &
+      maxval([0.0_wp, abs(g_passes)])
+    call check(maxval(abs(m_twists - m_passes)) <= 1e-12_wp*maxval(abs(m_passes)), label//': M agrees')
+    call check(all(m_twists == transpose(m_twists)), label//': M symmetric')
+    if (size(m%contacts) > 0) &
+      call check(maxval(abs(g_twists - g_passes)) <= 1e-10_wp*maxval(abs(g_passes)), label//': G agrees')
+    if (n_scaled == 0) return
+    print '(a, 4(a, es9.2))', label, ': |P diff| ', maxval(abs(p_twists - p_passes)), ' of ', &
+      maxval(abs(p_passes)), ', |H diff| ', maxval(abs(h_twists - h_passes)), ' of ', maxval(abs(h_passes))
+    call check(maxval(abs(p_twists - p_passes)) <= 1e-12_wp*maxval(abs(p_passes)), label//': P agrees')
+    call check(maxval(abs(h_twists - h_passes)) <= 1e-10_wp*maxval(abs(h_passes)), label//': H agrees')
+  end subroutine compare
+end program test_mass_twists
