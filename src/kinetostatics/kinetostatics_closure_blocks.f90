@@ -200,8 +200,7 @@ contains
     integer, intent(in) :: n_frames, n_scalars, unknowns(:), rows(:), r, group_start(:)
     logical, intent(in) :: blocked
     integer :: group(size(unknowns)), parent(size(group_start)), k, i, e, g, nblocks, m, nx, n
-    logical :: moving(n_scalars), live(size(elements)), needed(size(elements)), need_frame(n_frames), &
-      need_scalar(n_scalars)
+    logical :: moving(n_scalars), live(size(elements)), need_frame(n_frames), need_scalar(n_scalars)
     nx = size(unknowns)
     n = size(elements)
     self%nx = nx
@@ -227,18 +226,7 @@ contains
         call join(group(k), group(i))
         need_scalar(rows(i)) = .true.
       end do
-      needed = .false.
-      do e = n, 1, -1
-        if (.not. live(e)) cycle
-        associate (f_out => reach%frame_out(reach%frame_out_start(e):reach%frame_out_start(e + 1) - 1), &
-                   s_out => reach%scalar_out(reach%scalar_out_start(e):reach%scalar_out_start(e + 1) - 1))
-          if (.not. (any(need_frame(f_out)) .or. any(need_scalar(s_out)))) cycle
-        end associate
-        needed(e) = .true.
-        need_frame(reach%frame_in(reach%frame_in_start(e):reach%frame_in_start(e + 1) - 1)) = .true.
-        need_scalar(reach%scalar_in(reach%scalar_in_start(e):reach%scalar_in_start(e + 1) - 1)) = .true.
-      end do
-      self%pass = [self%pass, pack([(e, e = 1, n)], needed)]
+      self%pass = [self%pass, feeding(reach, live, need_frame, need_scalar)]
     end do
     self%pass_start(nx + 1) = size(self%pass) + 1
 
