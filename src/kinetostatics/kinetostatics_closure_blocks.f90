@@ -29,7 +29,7 @@
 module kinetostatics_closure_blocks
   use base_kinds, only: wp
   use base_status, only: status_t
-  use numerics_linear_algebra, only: lu_factor, lu_solve
+  use numerics_linear_algebra, only: lu_factor, lu_solve, small_order
   use kinetostatics_state, only: element_box_t, element_links_t, frame_state_t, scalar_state_t
   implicit none (type, external)
   private
@@ -493,38 +493,166 @@ contains
 
   !> v := J^-1 v (or J^-T v) in place, J = J_x (with_rates, v of length nx)
   !> or J_beta (v of length r), block by block (only the blocks `only`, the
-  !> rest of v untouched).
+  !> rest of v untouched). Blocks up to small_order (all of the rider's, the
+  !> towers') are solved here with the LU of numerics_linear_algebra, the same
+  !> operations in the same order as its small_lu_solve (no call, no copies
+  !> through an assumed-shape work array: ~12 % of a ride's instructions went
+  !> to the solves of 3 x 3 blocks).
   subroutine solve(self, with_rates, v, transpose, only)
     class(closure_blocks_t), intent(inout) :: self
     logical, intent(in) :: with_rates, transpose
     real(wp), intent(inout) :: v(:)
     integer, intent(in), optional :: only(:)
-    type(status_t) :: status
-    integer :: k, i, m, l
-    do l = 1, size(self%blocks)
+    integer :: k, l, m, n_blocks
+    n_blocks = size(self%blocks)
+    if (present(only)) n_blocks = min(n_blocks, size(only))
+    do l = 1, n_blocks
       k = l
-      if (present(only)) then
-        if (l > size(only)) exit
-        k = only(l)
-      end if
+      if (present(only)) k = only(l)
       associate (b => self%blocks(k))
         m = b%mb
         if (with_rates) m = size(b%members)
         if (m == 0) cycle
-        do i = 1, m
-          b%work(i) = v(b%members(i))
-        end do
-        if (with_rates) then   ! sizes fixed at build: cannot fail
-          call lu_solve(b%lu_x, b%pivots_x, b%work(1:m), status, transpose=transpose)
-        else
-          call lu_solve(b%lu_b, b%pivots_b, b%work(1:m), status, transpose=transpose)
+        if (m <= small_order) then
+          if (with_rates) then
+            call small_block_solve(b%lu_x, b%pivots_x, m, b%members, v, transpose)
+          else
+            call small_block_solve(b%lu_b, b%pivots_b, m, b%members, v, transpose)
+          end if
+          cycle
         end if
-        do i = 1, m
-          v(b%members(i)) = b%work(i)
-        end do
+        call large_block_solve(b, with_rates, m, v, transpose)
       end associate
     end do
   end subroutine solve
+
+  !> The same for a block above small_order (LAPACK through lu_solve).
+  subroutine large_block_solve(b, with_rates, m, v, transpose)
+    type(dense_block_t), intent(inout) :: b
+    logical, intent(in) :: with_rates, transpose
+    integer, intent(in) :: m
+    real(wp), intent(inout) :: v(:)
+    type(status_t) :: status
+    b%work(1:m) = v(b%members(1:m))
+    if (with_rates) then   ! sizes fixed at build: cannot fail
+      call lu_solve(b%lu_x, b%pivots_x, b%work(1:m), status, transpose=transpose)
+    else
+      call lu_solve(b%lu_b, b%pivots_b, b%work(1:m), status, transpose=transpose)
+    end if
+    v(b%members(1:m)) = b%work(1:m)
+  end subroutine large_block_solve
+
+  !> x := A^-1 x or A^-T x for x = v(members(1:m)), m <= small_order, from
+  !> P A = L U (lu_factor): small_lu_solve's loops on a local copy.
+  pure subroutine small_block_solve(lu, ipiv, m, members, v, transpose)
+    integer, intent(in) :: m
+    real(wp), intent(in) :: lu(m, m)
+    integer, intent(in) :: ipiv(m), members(m)
+    real(wp), intent(inout) :: v(:)
+    logical, intent(in) :: transpose
+    real(wp) :: x(small_order), t
+    integer :: i, k
+    if (m == 3) then
+      call solve_3(lu, ipiv, members, v, transpose)
+      return
+    end if
+    do i = 1, m
+      x(i) = v(members(i))
+    end do
+    if (.not. transpose) then
+      do k = 1, m
+        if (ipiv(k) /= k) then
+          t = x(k)
+          x(k) = x(ipiv(k))
+          x(ipiv(k)) = t
+        end if
+      end do
+      do k = 1, m   ! L y = P x (unit diagonal), column by column
+        t = x(k)
+        do i = k + 1, m
+          x(i) = x(i) - lu(i, k)*t
+        end do
+      end do
+      do k = m, 1, -1   ! U z = y
+        x(k) = x(k)/lu(k, k)
+        t = x(k)
+        do i = 1, k - 1
+          x(i) = x(i) - lu(i, k)*t
+        end do
+      end do
+    else
+      do k = 1, m   ! U^T z = x, row k of U^T is column k of U
+        t = x(k)
+        do i = 1, k - 1
+          t = t - lu(i, k)*x(i)
+        end do
+        x(k) = t/lu(k, k)
+      end do
+      do k = m, 1, -1   ! L^T w = z
+        t = x(k)
+        do i = k + 1, m
+          t = t - lu(i, k)*x(i)
+        end do
+        x(k) = t
+      end do
+      do k = m, 1, -1   ! P^T w
+        if (ipiv(k) /= k) then
+          t = x(k)
+          x(k) = x(ipiv(k))
+          x(ipiv(k)) = t
+        end if
+      end do
+    end if
+    do i = 1, m
+      v(members(i)) = x(i)
+    end do
+  end subroutine small_block_solve
+
+  !> small_block_solve for m = 3 (a contact point's loop: the rider's
+  !> blocks), written out: the same operations in the same order.
+  pure subroutine solve_3(lu, ipiv, members, v, transpose)
+    real(wp), intent(in) :: lu(3, 3)
+    integer, intent(in) :: ipiv(3), members(3)
+    real(wp), intent(inout) :: v(:)
+    logical, intent(in) :: transpose
+    real(wp) :: x(3), t
+    integer :: k
+    x = [v(members(1)), v(members(2)), v(members(3))]
+    if (.not. transpose) then
+      do k = 1, 2   ! ipiv(3) = 3
+        if (ipiv(k) /= k) then
+          t = x(k)
+          x(k) = x(ipiv(k))
+          x(ipiv(k)) = t
+        end if
+      end do
+      x(2) = x(2) - lu(2, 1)*x(1)
+      x(3) = x(3) - lu(3, 1)*x(1)
+      x(3) = x(3) - lu(3, 2)*x(2)
+      x(3) = x(3)/lu(3, 3)
+      x(1) = x(1) - lu(1, 3)*x(3)
+      x(2) = x(2) - lu(2, 3)*x(3)
+      x(2) = x(2)/lu(2, 2)
+      x(1) = x(1) - lu(1, 2)*x(2)
+      x(1) = x(1)/lu(1, 1)
+    else
+      x(1) = x(1)/lu(1, 1)
+      x(2) = (x(2) - lu(1, 2)*x(1))/lu(2, 2)
+      x(3) = ((x(3) - lu(1, 3)*x(1)) - lu(2, 3)*x(2))/lu(3, 3)
+      x(2) = x(2) - lu(3, 2)*x(3)
+      x(1) = (x(1) - lu(2, 1)*x(2)) - lu(3, 1)*x(3)
+      do k = 2, 1, -1
+        if (ipiv(k) /= k) then
+          t = x(k)
+          x(k) = x(ipiv(k))
+          x(ipiv(k)) = t
+        end if
+      end do
+    end if
+    v(members(1)) = x(1)
+    v(members(2)) = x(2)
+    v(members(3)) = x(3)
+  end subroutine solve_3
 
   !> The full J_beta (with_rates false, r x r) or J_x (nx x nx) from the blocks.
   subroutine assemble(self, with_rates, jac)
