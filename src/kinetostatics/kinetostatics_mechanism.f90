@@ -1152,7 +1152,9 @@ contains
     do k = 1, self%r
       self%scalars(self%beta(k))%qd = -self%work_r(k)
     end do
-    call self%velocity_pass()
+    do k = 1, size(self%beta_pass)   ! only beta' changed
+      call self%elements(self%beta_pass(k))%e%velocity(self%frames, self%scalars)
+    end do
     self%scalars%qdd = 0
     call self%acceleration_pass()
     do k = 1, self%r
@@ -1235,47 +1237,92 @@ contains
     call set_rates(self, sd, 2)
   end subroutine set_accelerations
 
-  !> Level 1 (velocities) or 2 (accelerations) of the above.
+  !> Level 1 (velocities) or 2 (accelerations) of the above. The two levels
+  !> are written out (no internal procedures: gfortran called them, ~800,000
+  !> times in a default run).
   subroutine set_rates(self, given, level)
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: given(:)
     integer, intent(in) :: level
     integer :: k
-    do k = 1, self%ns
-      call put(self%q(self%speeds(k)), given(k))
-    end do
-    do k = 1, self%r
-      call put(self%beta(k), 0.0_wp)
-    end do
-    do k = 1, self%nd
-      call put(self%sigma(k), 0.0_wp)
-    end do
-    call pass()
+    if (level == 1) then
+      do k = 1, self%ns
+        self%scalars(self%q(self%speeds(k)))%qd = given(k)
+      end do
+      do k = 1, self%r
+        self%scalars(self%beta(k))%qd = 0
+      end do
+      do k = 1, self%nd
+        self%scalars(self%sigma(k))%qd = 0
+      end do
+      call self%velocity_pass()
+    else
+      do k = 1, self%ns
+        self%scalars(self%q(self%speeds(k)))%qdd = given(k)
+      end do
+      do k = 1, self%r
+        self%scalars(self%beta(k))%qdd = 0
+      end do
+      do k = 1, self%nd
+        self%scalars(self%sigma(k))%qdd = 0
+      end do
+      call self%acceleration_pass()
+    end if
     if (self%r + self%nd > 0) then
       ! the second pass only over the elements the unknown rates reach: the
       ! others' inputs are those of the first pass, so are their outputs
       if (self%nd == 0) then
-        do k = 1, self%r
-          self%work_r(k) = value_of(self%closure(k))
-        end do
+        if (level == 1) then
+          do k = 1, self%r
+            self%work_r(k) = self%scalars(self%closure(k))%qd
+          end do
+        else
+          do k = 1, self%r
+            self%work_r(k) = self%scalars(self%closure(k))%qdd
+          end do
+        end if
         call self%blocks%solve(.false., self%work_r, .false.)
-        do k = 1, self%r
-          call put(self%beta(k), -self%work_r(k))
-        end do
+        if (level == 1) then
+          do k = 1, self%r
+            self%scalars(self%beta(k))%qd = -self%work_r(k)
+          end do
+        else
+          do k = 1, self%r
+            self%scalars(self%beta(k))%qdd = -self%work_r(k)
+          end do
+        end if
       else
-        do k = 1, self%r
-          self%work_x(k) = value_of(self%closure(k))
-        end do
-        do k = 1, self%nd
-          self%work_x(self%r + k) = value_of(self%rate_outputs(k))
-        end do
+        if (level == 1) then
+          do k = 1, self%r
+            self%work_x(k) = self%scalars(self%closure(k))%qd
+          end do
+          do k = 1, self%nd
+            self%work_x(self%r + k) = self%scalars(self%rate_outputs(k))%qd
+          end do
+        else
+          do k = 1, self%r
+            self%work_x(k) = self%scalars(self%closure(k))%qdd
+          end do
+          do k = 1, self%nd
+            self%work_x(self%r + k) = self%scalars(self%rate_outputs(k))%qdd
+          end do
+        end if
         call self%blocks%solve(.true., self%work_x, .false.)
-        do k = 1, self%r
-          call put(self%beta(k), -self%work_x(k))
-        end do
-        do k = 1, self%nd
-          call put(self%sigma(k), -self%work_x(self%r + k))
-        end do
+        if (level == 1) then
+          do k = 1, self%r
+            self%scalars(self%beta(k))%qd = -self%work_x(k)
+          end do
+          do k = 1, self%nd
+            self%scalars(self%sigma(k))%qd = -self%work_x(self%r + k)
+          end do
+        else
+          do k = 1, self%r
+            self%scalars(self%beta(k))%qdd = -self%work_x(k)
+          end do
+          do k = 1, self%nd
+            self%scalars(self%sigma(k))%qdd = -self%work_x(self%r + k)
+          end do
+        end if
       end if
       if (level == 1) then
         do k = 1, size(self%unknowns_pass)
@@ -1292,31 +1339,6 @@ contains
         self%rates(k) = self%scalars(self%q(k))%qd
       end do
     end if
-  contains
-    subroutine put(i, x)
-      integer, intent(in) :: i
-      real(wp), intent(in) :: x
-      if (level == 1) then
-        self%scalars(i)%qd = x
-      else
-        self%scalars(i)%qdd = x
-      end if
-    end subroutine put
-    real(wp) function value_of(i)
-      integer, intent(in) :: i
-      if (level == 1) then
-        value_of = self%scalars(i)%qd
-      else
-        value_of = self%scalars(i)%qdd
-      end if
-    end function value_of
-    subroutine pass()
-      if (level == 1) then
-        call self%velocity_pass()
-      else
-        call self%acceleration_pass()
-      end if
-    end subroutine pass
   end subroutine set_rates
 
   !> Generalized forces at the speeds (into gq) with the loops and rate
