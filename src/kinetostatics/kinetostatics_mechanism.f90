@@ -580,6 +580,19 @@ contains
       self%beta_pass = [(k, k = 1, self%n_elements)]
       self%unknowns_pass = self%beta_pass
     end if
+    ! a surface joint that beta does not reach is evaluated once per closure
+    ! (its first pass), and the velocities after it need its whole geometry:
+    ! eager there, the lazy order-1 evaluation would be repeated at order 3
+    ! (kinetostatics_surface_joint; the same numbers either way)
+    if (self%r > 0) then
+      do k = 1, self%n_elements
+        if (any(self%beta_pass == k)) cycle
+        select type (e => self%elements(k)%e)
+        type is (surface_joint_t)
+          e%lazy = .false.
+        end select
+      end do
+    end if
     call build_closure_blocks(self%blocks, self%elements, self%reach, self%n_frames, self%n_scalars, &
                               self%unknowns, self%rows, self%r, group_start, self%blocked)
     call find_mass_twists(self)
