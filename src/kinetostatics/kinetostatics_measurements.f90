@@ -16,6 +16,14 @@
 !>   plane-point: A = n x d, B = -n, C = 0, D = n
 !>   plane-plane: A = n_i x n_j, C = n_j x n_i
 !>   line-line:   A = e_i x (e_j x d), C = e_j x (d x e_i), B = -c, D = c (c = e_i x e_j)
+!>
+!> The coordinates of a point in a frame, g = R_i^T (r_j - r_i) (point_coordinates_t:
+!> a contact point held at the origin of a Darboux frame, thesis (4.27)),
+!> are the three plane-point measurements along the axes of K_i as one
+!> element: the same operations on the same numbers, each axis as its own
+!> plane-point measurement would do them (and the forces added in the order
+!> of a backward pass over the three), with the shared differences formed once
+!> and one call per pass instead of three.
 module kinetostatics_measurements
   use base_kinds, only: wp
   use base_status, only: status_t
@@ -23,7 +31,7 @@ module kinetostatics_measurements
   use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
   implicit none (type, external)
   private
-  public :: measurement_t, new_measurement
+  public :: measurement_t, new_measurement, point_coordinates_t, new_point_coordinates
   public :: MEASURE_POINT_POINT, MEASURE_PLANE_POINT, MEASURE_PLANE_PLANE, MEASURE_LINE_LINE
 
   integer, parameter :: MEASURE_POINT_POINT = 1, MEASURE_PLANE_POINT = 2, &
@@ -41,6 +49,18 @@ module kinetostatics_measurements
     procedure :: force => m_force
     procedure :: links => m_links
   end type measurement_t
+
+  !> g(k) = n_k.(r_j - r_i), n_k the k-th axis of K_i (module comment).
+  type, extends(element_t) :: point_coordinates_t
+    integer :: frame_i = 0, frame_j = 0, outputs(3) = 0
+    real(wp) :: n(3, 3) = 0, d(3) = 0   ! world: the axes of K_i (columns), r_j - r_i; last position
+  contains
+    procedure :: position => pc_position
+    procedure :: velocity => pc_velocity
+    procedure :: acceleration => pc_acceleration
+    procedure :: force => pc_force
+    procedure :: links => pc_links
+  end type point_coordinates_t
 
 contains
 
@@ -214,4 +234,109 @@ contains
     frames(self%frame_j)%torque = frames(self%frame_j)%torque + tj
     frames(self%frame_j)%force = frames(self%frame_j)%force + fj
   end subroutine m_force
+
+  ! ------------------------------------------------- the coordinates of a point
+
+  !> The coordinates of the origin of K_j in K_i into the scalars `outputs`.
+  function new_point_coordinates(name, frame_i, frame_j, outputs) result(e)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame_i, frame_j, outputs(3)
+    type(point_coordinates_t) :: e
+    e%name = name
+    e%frame_i = frame_i
+    e%frame_j = frame_j
+    e%outputs = outputs
+  end function new_point_coordinates
+
+  pure subroutine pc_links(self, links)
+    class(point_coordinates_t), intent(in) :: self
+    type(element_links_t), intent(out) :: links
+    links = element_links_t(.true., [self%frame_i, self%frame_j], [integer ::], [integer ::], self%outputs, &
+                            relative=.true.)
+  end subroutine pc_links
+
+  pure subroutine pc_position(self, frames, scalars, status)
+    class(point_coordinates_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t), intent(inout) :: status
+    integer :: k
+    associate (unused_status => status)
+    end associate
+    associate (fi => frames(self%frame_i), fj => frames(self%frame_j))
+      self%n = fi%rot
+      self%d = fj%r - fi%r
+    end associate
+    do k = 1, 3
+      scalars(self%outputs(k))%q = dot_product(self%n(:, k), self%d)   ! (3.18)
+    end do
+  end subroutine pc_position
+
+  pure subroutine pc_velocity(self, frames, scalars)
+    class(point_coordinates_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    real(wp) :: dd(3), dni(3)
+    integer :: k
+    associate (fi => frames(self%frame_i), fj => frames(self%frame_j), n => self%n, d => self%d)
+      dd = fj%v - fi%v
+      if (any(fi%omega /= 0)) then
+        do k = 1, 3
+          dni = cross(fi%omega, n(:, k))
+          scalars(self%outputs(k))%qd = dot_product(dni, d) + dot_product(n(:, k), dd)
+        end do
+      else   ! a frame at rest turns no axis (closure Jacobian columns)
+        do k = 1, 3
+          scalars(self%outputs(k))%qd = dot_product(n(:, k), dd)
+        end do
+      end if
+    end associate
+  end subroutine pc_velocity
+
+  pure subroutine pc_acceleration(self, frames, scalars)
+    class(point_coordinates_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    real(wp) :: gdd, dni(3), ddni(3), dd(3), ddd(3)
+    integer :: k
+    associate (fi => frames(self%frame_i), fj => frames(self%frame_j), n => self%n, d => self%d)
+      ddd = fj%a - fi%a
+      if (any(fi%omega /= 0)) then
+        dd = fj%v - fi%v
+        do k = 1, 3
+          dni = cross(fi%omega, n(:, k))
+          ddni = cross(fi%alpha, n(:, k)) + cross(fi%omega, dni)
+          gdd = dot_product(ddni, d) + 2*dot_product(dni, dd)
+          scalars(self%outputs(k))%qdd = gdd + dot_product(n(:, k), ddd)
+        end do
+      else   ! a frame at rest (mass-matrix columns): its products with omega are zero and skipped
+        do k = 1, 3
+          ddni = cross(fi%alpha, n(:, k))
+          scalars(self%outputs(k))%qdd = dot_product(ddni, d) + dot_product(n(:, k), ddd)
+        end do
+      end if
+    end associate
+  end subroutine pc_acceleration
+
+  pure subroutine pc_force(self, frames, scalars, inertia, applied)
+    class(point_coordinates_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    logical, intent(in) :: inertia, applied
+    real(wp) :: lambda
+    integer :: k
+    associate (unused_i => inertia, unused_a => applied)
+    end associate
+    ! the axes backwards, as a backward pass over three plane-point measurements
+    do k = 3, 1, -1
+      lambda = scalars(self%outputs(k))%force
+      if (lambda == 0) cycle   ! no cut force (the first pass of an inverse dynamics): nothing to add
+      associate (fi => frames(self%frame_i), fj => frames(self%frame_j), n => self%n(:, k))
+        fi%torque = fi%torque + cross(n, self%d)*lambda
+        fi%force = fi%force + (-n*lambda)
+        fj%torque = fj%torque + 0.0_wp
+        fj%force = fj%force + n*lambda
+      end associate
+    end do
+  end subroutine pc_force
 end module kinetostatics_measurements

@@ -22,7 +22,7 @@ module rider_model
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use kinetostatics_joints, only: new_rigid_offset, new_revolute
   use kinetostatics_surface_joint, only: new_surface_joint
-  use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT
+  use kinetostatics_measurements, only: new_point_coordinates
   use kinetostatics_mass, only: new_mass_element
   use kinetostatics_mechanism, only: mechanism_t
   use kinetostatics_force_laws, only: new_coulomb_friction
@@ -211,14 +211,11 @@ contains
       integer, intent(in) :: contact, point, dependents(3)
       integer, intent(out) :: measurements(3)
       character(len=1), parameter :: axis_names(3) = ['x', 'y', 'z']
-      real(wp) :: axis(3, 3)
       integer :: i
-      axis = reshape([ex, ey, ez], [3, 3])
       do i = 1, 3
         measurements(i) = m%add_scalar(name//'_'//axis_names(i))
-        call m%add_element(new_measurement(name//'_'//axis_names(i), MEASURE_PLANE_POINT, contact, point, &
-                                           measurements(i), axis_i=axis(:, i)))
       end do
+      call m%add_element(new_point_coordinates(name, contact, point, measurements))
       call m%add_loop(name, measurements, [0.0_wp, 0.0_wp, 0.0_wp], dependents, status)
     end subroutine close_point
   end subroutine build_rider

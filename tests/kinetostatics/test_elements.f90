@@ -14,7 +14,7 @@ program test_elements
   use kinetostatics_joints, only: new_rigid_offset, new_revolute, new_prismatic, new_spherical
   use kinetostatics_surface_joint, only: new_surface_joint, surface_joint_t
   use kinetostatics_measurements, only: new_measurement, MEASURE_POINT_POINT, MEASURE_PLANE_POINT, &
-    MEASURE_PLANE_PLANE, MEASURE_LINE_LINE
+    MEASURE_PLANE_PLANE, MEASURE_LINE_LINE, new_point_coordinates, measurement_t, point_coordinates_t
   use kinetostatics_mass, only: mass_element_t, new_mass_element
   implicit none (type, external)
 
@@ -40,6 +40,8 @@ program test_elements
              [integer ::], [4], times(trial))
     call check_element('plane-point', new_measurement('ep', MEASURE_PLANE_POINT, 1, 2, 4, axis_i=[0.3_wp, 0.4_wp, 1.0_wp]), &
              [1, 2], [integer ::], [integer ::], [4], times(trial))
+    call check_element('point coordinates', new_point_coordinates('pc', 1, 2, [4, 5, 6]), [1, 2], [integer ::], &
+             [integer ::], [4, 5, 6], times(trial))
     call check_element('plane-plane', new_measurement('ee', MEASURE_PLANE_PLANE, 1, 2, 4, axis_i=[1.0_wp, 0.4_wp, 0.0_wp], &
              axis_j=[0.0_wp, -0.3_wp, 1.0_wp]), [1, 2], [integer ::], [integer ::], [4], times(trial))
     call check_element('line-line', new_measurement('gg', MEASURE_LINE_LINE, 1, 2, 4, axis_i=[1.0_wp, 0.4_wp, 0.2_wp], &
@@ -59,6 +61,8 @@ program test_elements
   call mass_checks()
   call singular_point()
   call lazy_equals_eager()
+  call point_coordinates_equal_plane_points(.true.)
+  call point_coordinates_equal_plane_points(.false.)
   call finish_tests('test_elements')
 
 contains
@@ -178,4 +182,63 @@ contains
            .and. all(fl(2)%alpha == fe(2)%alpha) .and. all(fl(2)%a == fe(2)%a)
     call check(st%ok() .and. same, 'surface joint: lazy geometry = eager geometry to the last bit')
   end subroutine lazy_equals_eager
+
+  !> The point's coordinates in a frame give the numbers of three plane-point
+  !> measurements along the frame's axes to the last bit (the closures of the
+  !> rider and their results did not change when they became one element),
+  !> with frame i turning and at rest (the closure Jacobian's columns).
+  subroutine point_coordinates_equal_plane_points(turning)
+    logical, intent(in) :: turning
+    type(point_coordinates_t) :: pc
+    type(measurement_t) :: planes(3)
+    type(frame_state_t) :: f1(2), f3(2)
+    type(scalar_state_t) :: s1(5), s3(5)
+    type(status_t) :: st
+    real(wp), parameter :: axes(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+    logical :: same
+    integer :: k
+    character(len=*), parameter :: case_names(2) = [character(len=8) :: 'turning', 'at rest']
+    pc = new_point_coordinates('pc', 1, 2, [3, 4, 5])
+    do k = 1, 3
+      planes(k) = new_measurement('ep', MEASURE_PLANE_POINT, 1, 2, 2 + k, axis_i=axes(:, k))
+    end do
+    f1(1)%rot = matmul(rot_x(0.3_wp), rot_z(-1.1_wp))
+    f1(1)%r = [0.1_wp, 0.2_wp, -0.3_wp]
+    f1(1)%omega = 0
+    if (turning) f1(1)%omega = [0.5_wp, -0.2_wp, 0.9_wp]
+    f1(1)%v = [1.0_wp, 0.0_wp, -0.4_wp]
+    f1(1)%alpha = [0.3_wp, 0.1_wp, -0.6_wp]
+    f1(1)%a = [-0.2_wp, 0.8_wp, 0.1_wp]
+    f1(1)%force = [0.4_wp, -1.0_wp, 0.3_wp]
+    f1(1)%torque = [0.2_wp, 0.1_wp, -0.5_wp]
+    f1(2)%rot = rot_z(0.4_wp)
+    f1(2)%r = [0.7_wp, -0.3_wp, 0.2_wp]
+    f1(2)%omega = [0.1_wp, 0.3_wp, -0.2_wp]
+    f1(2)%v = [-0.3_wp, 0.6_wp, 0.2_wp]
+    f1(2)%alpha = [0.2_wp, -0.4_wp, 0.5_wp]
+    f1(2)%a = [0.9_wp, 0.1_wp, -0.7_wp]
+    f1(2)%force = [0.1_wp, 0.2_wp, 0.3_wp]
+    f1(2)%torque = [-0.3_wp, 0.2_wp, 0.1_wp]
+    f3 = f1
+    s1%force = [0.0_wp, 0.0_wp, 1.3_wp, 0.0_wp, -0.6_wp]   ! one cut force zero: its axis adds nothing
+    s3 = s1
+    call pc%position(f1, s1, st)
+    call pc%velocity(f1, s1)
+    call pc%acceleration(f1, s1)
+    call pc%force(f1, s1, .false., .false.)
+    do k = 1, 3
+      call planes(k)%position(f3, s3, st)
+      call planes(k)%velocity(f3, s3)
+      call planes(k)%acceleration(f3, s3)
+    end do
+    do k = 3, 1, -1   ! a backward pass
+      call planes(k)%force(f3, s3, .false., .false.)
+    end do
+    same = all(s1%q == s3%q) .and. all(s1%qd == s3%qd) .and. all(s1%qdd == s3%qdd)
+    do k = 1, 2
+      same = same .and. all(f1(k)%force == f3(k)%force) .and. all(f1(k)%torque == f3(k)%torque)
+    end do
+    call check(st%ok() .and. same, 'point coordinates = three plane-point measurements to the last bit, frame '// &
+               trim(case_names(merge(1, 2, turning))))
+  end subroutine point_coordinates_equal_plane_points
 end program test_elements
