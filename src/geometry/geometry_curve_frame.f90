@@ -136,7 +136,7 @@ contains
     end if
     call normalized_derivatives(c%d(:, 1:4), speed, order, f%x)
     call cross_derivatives(h%d(:, 0:3), f%x, order, w)
-    hn = norm2(h%d(:, 0))
+    hn = sqrt(dot_product(h%d(:, 0), h%d(:, 0)))   ! only for the check: no scaled norm2 needed
     wn = norm2(w(:, 0))
     if (.not. wn > horizon_parallel_tol*hn) then
       write (buf, '(es12.4)') wn/max(hn, tiny(1.0_wp))
