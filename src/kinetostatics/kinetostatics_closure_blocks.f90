@@ -29,7 +29,7 @@
 module kinetostatics_closure_blocks
   use base_kinds, only: wp
   use base_status, only: status_t
-  use numerics_linear_algebra, only: lu_factor, lu_solve, small_order
+  use numerics_linear_algebra, only: lu_factor, lu_solve, small_lu_solve, small_order
   use kinetostatics_state, only: element_box_t, element_links_t, frame_state_t, scalar_state_t
   implicit none (type, external)
   private
@@ -544,15 +544,15 @@ contains
   end subroutine large_block_solve
 
   !> x := A^-1 x or A^-T x for x = v(members(1:m)), m <= small_order, from
-  !> P A = L U (lu_factor): small_lu_solve's loops on a local copy.
+  !> P A = L U (lu_factor): small_lu_solve on a local copy (m = 3 written out).
   pure subroutine small_block_solve(lu, ipiv, m, members, v, transpose)
     integer, intent(in) :: m
     real(wp), intent(in) :: lu(m, m)
     integer, intent(in) :: ipiv(m), members(m)
     real(wp), intent(inout) :: v(:)
     logical, intent(in) :: transpose
-    real(wp) :: x(small_order), t
-    integer :: i, k
+    real(wp) :: x(small_order)
+    integer :: i
     if (m == 3) then
       call solve_3(lu, ipiv, members, v, transpose)
       return
@@ -560,50 +560,7 @@ contains
     do i = 1, m
       x(i) = v(members(i))
     end do
-    if (.not. transpose) then
-      do k = 1, m
-        if (ipiv(k) /= k) then
-          t = x(k)
-          x(k) = x(ipiv(k))
-          x(ipiv(k)) = t
-        end if
-      end do
-      do k = 1, m   ! L y = P x (unit diagonal), column by column
-        t = x(k)
-        do i = k + 1, m
-          x(i) = x(i) - lu(i, k)*t
-        end do
-      end do
-      do k = m, 1, -1   ! U z = y
-        x(k) = x(k)/lu(k, k)
-        t = x(k)
-        do i = 1, k - 1
-          x(i) = x(i) - lu(i, k)*t
-        end do
-      end do
-    else
-      do k = 1, m   ! U^T z = x, row k of U^T is column k of U
-        t = x(k)
-        do i = 1, k - 1
-          t = t - lu(i, k)*x(i)
-        end do
-        x(k) = t/lu(k, k)
-      end do
-      do k = m, 1, -1   ! L^T w = z
-        t = x(k)
-        do i = k + 1, m
-          t = t - lu(i, k)*x(i)
-        end do
-        x(k) = t
-      end do
-      do k = m, 1, -1   ! P^T w
-        if (ipiv(k) /= k) then
-          t = x(k)
-          x(k) = x(ipiv(k))
-          x(ipiv(k)) = t
-        end if
-      end do
-    end if
+    call small_lu_solve(lu, ipiv, x(1:m), transpose)
     do i = 1, m
       v(members(i)) = x(i)
     end do

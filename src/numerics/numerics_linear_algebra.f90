@@ -25,7 +25,7 @@ module numerics_linear_algebra
   public :: lu_factor, lu_solve, lu_reciprocal_condition, one_norm
   public :: cholesky_factor, cholesky_solve
   public :: qr_factor, triangular_inverse, normal_matrix_inverse
-  public :: small_order
+  public :: small_order, small_lu_solve
 
   integer, parameter :: small_order = 12   !< up to this order LU and Cholesky run without LAPACK
 
