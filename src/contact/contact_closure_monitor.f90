@@ -9,10 +9,12 @@
 !> frame), and
 !>     g1..g3 = x_1D, y_1D, z_1D . (r_2D - r_1D),   g4, g5 = z_1D . x_2D, z_1D . y_2D.
 !> A monitor of positions only: nothing in the mechanism reads its outputs
-!> (they are recorded, not closure measurements), so its velocity and
+!> (they are recorded, not closure measurements), so it is a record-only
+!> element (element_t): the position passes of the dynamics skip it and the
+!> mechanism evaluates it for a complete state (a record); its velocity and
 !> acceleration maps leave their rates alone (zero) and its force map passes
-!> nothing back; only the position pass costs (one surface point to first
-!> order).
+!> nothing back. A record costs one surface point to first order, a
+!> right-hand side nothing.
 module contact_closure_monitor
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status
@@ -47,6 +49,7 @@ contains
     real(wp), intent(in) :: side_2
     type(closure_monitor_t) :: e
     e%name = name
+    e%record_only = .true.
     e%frame_1d = frame_1d
     e%frame_b = frame_b
     e%contact = contact

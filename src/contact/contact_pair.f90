@@ -34,8 +34,9 @@
 !> (kinetostatics_inverse_surface_joint) places K_B so that S2's frame there is
 !> K_2D: the surfaces touch with antiparallel normals by construction, the
 !> physical branch. Coordinates q = (u1, v1, phi, u2, v2), none dependent, no
-!> closure; a closure monitor (contact_closure_monitor) measures g1..g5
-!> between K_1D and S2's frame on body B's pose for the records. Charts: (u1, v1),
+!> closure; a closure monitor (contact_closure_monitor, record-only: evaluated
+!> for records, not in the right-hand side) measures g1..g5 between K_1D and
+!> S2's frame on body B's pose. Charts: (u1, v1),
 !> (u2, v2) are the surfaces' own parameters (an ellipsoid's poles are
 !> singular, as in the loop's S1 and S2), phi is unbounded.
 module contact_pair

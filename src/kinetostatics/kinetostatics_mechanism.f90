@@ -227,7 +227,7 @@ module kinetostatics_mechanism
     procedure :: frame_index, scalar_index, contact_index, law_index
     procedure :: residual => mechanism_residual
     procedure :: jacobian => mechanism_jacobian
-    procedure :: position_pass, velocity_pass, acceleration_pass, force_pass
+    procedure :: position_pass, velocity_pass, acceleration_pass, force_pass, record_pass
     procedure :: set_positions, set_velocities, set_accelerations, inverse_dynamics, evaluate_laws
     procedure :: check_start, set_blocked
     procedure :: dynamics, evaluate, energy, closure_residual, normal_forces, law_force
@@ -494,6 +494,8 @@ contains
     if (.not. status%ok()) return
     call find_edges(self)
     call find_closure_blocks(self)
+    call check_record_only(self, status)
+    if (.not. status%ok()) return
 
     ! scaled laws and the contacts whose normal forces the block system solves for
     allocate (self%scaled_laws(0), self%block_contact(0))
@@ -580,6 +582,8 @@ contains
       self%beta_pass = [(k, k = 1, self%n_elements)]
       self%unknowns_pass = self%beta_pass
     end if
+    if (self%reach%known) self%beta_pass = pack(self%beta_pass, &   ! check_record_only
+      [(.not. self%elements(self%beta_pass(k))%e%record_only, k = 1, size(self%beta_pass))])
     ! a surface joint that beta does not reach is evaluated once per closure
     ! (its first pass), and the velocities after it need its whole geometry:
     ! eager there, the lazy order-1 evaluation would be repeated at order 3
@@ -760,16 +764,84 @@ contains
 
   ! ------------------------------------------------------------------ passes
 
+  !> Every element but the record-only ones (record_pass).
   subroutine position_pass(self, status)
     class(mechanism_t), intent(inout) :: self
     type(status_t), intent(inout) :: status
     integer :: k
     self%dynamics_known = .false.
     do k = 1, self%n_elements
+      if (self%elements(k)%e%record_only) cycle
       call self%elements(k)%e%position(self%frames, self%scalars, status)
       if (.not. status%ok()) return
     end do
   end subroutine position_pass
+
+  !> The record-only elements (element_t) at the current positions, which
+  !> the position pass left as they are: their outputs for a record.
+  subroutine record_pass(self, status)
+    class(mechanism_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
+    integer :: k
+    do k = 1, self%n_elements
+      if (.not. self%elements(k)%e%record_only) cycle
+      call self%elements(k)%e%position(self%frames, self%scalars, status)
+      if (.not. status%ok()) return
+    end do
+  end subroutine record_pass
+
+  !> Only records may read the outputs of a record-only element (element_t):
+  !> no other element, loop, rate constraint, coordinate or contact (force
+  !> laws name what they read in their own terms: they must not read them
+  !> either). A mechanism whose data flow is not known (an element of
+  !> unknown links) evaluates them in every position pass.
+  subroutine check_record_only(self, status)
+    class(mechanism_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
+    logical :: read_frame(self%n_frames), read_scalar(self%n_scalars)
+    integer :: k, i
+    if (.not. self%reach%known) then
+      do k = 1, self%n_elements
+        self%elements(k)%e%record_only = .false.
+      end do
+      return
+    end if
+    read_frame = .false.
+    read_scalar = .false.
+    do k = 1, self%n_elements
+      if (self%elements(k)%e%record_only) cycle
+      associate (r => self%reach)
+        read_frame(r%frame_in(r%frame_in_start(k):r%frame_in_start(k + 1) - 1)) = .true.
+        read_scalar(r%scalar_in(r%scalar_in_start(k):r%scalar_in_start(k + 1) - 1)) = .true.
+      end associate
+    end do
+    read_scalar([self%closure, self%rate_outputs, self%q]) = .true.
+    do k = 1, size(self%contacts)
+      associate (c => self%contacts(k))
+        read_frame([c%frame_a, c%frame_b, c%point_frame, c%normal_frame]) = .true.
+        if (c%normal_measurement > 0) read_scalar(c%normal_measurement) = .true.
+      end associate
+    end do
+    do k = 1, self%n_elements
+      if (.not. self%elements(k)%e%record_only) cycle
+      associate (r => self%reach)
+        do i = r%frame_out_start(k), r%frame_out_start(k + 1) - 1
+          if (read_frame(r%frame_out(i))) call refuse('frame '''//trim(self%frame_names(r%frame_out(i)))//'''')
+        end do
+        do i = r%scalar_out_start(k), r%scalar_out_start(k + 1) - 1
+          if (read_scalar(r%scalar_out(i))) call refuse('scalar '''//trim(self%scalar_names(r%scalar_out(i)))//'''')
+        end do
+      end associate
+      if (.not. status%ok()) return
+    end do
+  contains
+    subroutine refuse(what)
+      character(len=*), intent(in) :: what
+      if (status%ok()) call set_status(status, STATUS_INVALID_INPUT, 'element '''//self%elements(k)%e%name// &
+        ''' is record-only, but its output '//what//' is read by the mechanism (another element, a loop, '// &
+        'a rate constraint, a coordinate or a contact)')
+    end subroutine refuse
+  end subroutine check_record_only
 
   subroutine velocity_pass(self)
     class(mechanism_t), intent(inout) :: self
@@ -1924,9 +1996,9 @@ contains
   end subroutine affine_normal_forces
 
   !> The complete state at (t, q, q'): accelerations, cut forces, every law's
-  !> loads and power, every contact's normal force; returns the inverse-
-  !> dynamics residual max |Q_bar| (zero up to rounding when everything is
-  !> consistent).
+  !> loads and power, every contact's normal force, the record-only elements'
+  !> outputs; returns the inverse-dynamics residual max |Q_bar| (zero up to
+  !> rounding when everything is consistent).
   subroutine evaluate(self, t, q, qd, residual, status)
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: t, q(:), qd(:)
@@ -1937,6 +2009,7 @@ contains
     residual = huge(1.0_wp)
     reused = self%dynamics_reused
     call self%dynamics(t, q, qd, qdd, status)
+    if (status%ok()) call self%record_pass(status)   ! at q: a reused dynamics left the positions there
     if (.not. status%ok()) return
     ! a reused dynamics has just set these velocities; a computed one overwrote them
     if (self%dynamics_reused == reused) call self%set_velocities(qd)

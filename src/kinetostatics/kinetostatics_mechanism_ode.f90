@@ -454,7 +454,9 @@ contains
     if (level >= 3) self%root_scale = max(self%root_scale, abs(self%cache_g))
   end subroutine root_values
 
-  !> Records the complete state (series of kinetostatics_recorder).
+  !> Records the complete state (series of kinetostatics_recorder): the
+  !> mechanism's evaluate at (t, y), which also evaluates its record-only
+  !> elements (the closure monitors), skipped in the right-hand sides.
   subroutine mechanism_record(self, t, y, kind, status)
     class(mechanism_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)

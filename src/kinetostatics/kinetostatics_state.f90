@@ -57,8 +57,14 @@ module kinetostatics_state
     logical :: relative = .false.
   end type element_links_t
 
+  !> record_only: only records read the element's outputs (a monitor of the
+  !> closure, contact_closure_monitor), nothing in the mechanism's dynamics
+  !> does; the position pass skips it and the mechanism evaluates it for a
+  !> complete state (kinetostatics_mechanism, record_pass). Its velocity,
+  !> acceleration and force maps must leave everything alone.
   type, abstract :: element_t
     character(len=:), allocatable :: name
+    logical :: record_only = .false.
   contains
     procedure :: links => element_links
     procedure(position_i), deferred :: position

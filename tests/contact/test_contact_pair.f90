@@ -8,6 +8,9 @@
 !> the same cup: started from the loop's closed configuration it puts the cup
 !> where the loop does, its closure monitor reads zero, and its velocities,
 !> accelerations and virtual power pass the same checks along random motions.
+!> The monitor is record-only: right-hand sides leave its outputs alone and
+!> every record holds them evaluated at the recorded state; a mechanism that
+!> reads such an output is refused.
 program test_contact_pair
   use base_kinds, only: wp
   use base_constants, only: pi
@@ -20,7 +23,12 @@ program test_contact_pair
   use geometry_bspline_surface, only: bspline_surface_t, bspline_scattered
   use kinetostatics_joints, only: new_spherical, new_prismatic
   use kinetostatics_force_laws, only: new_constant_load
+  use numerics_ode, only: ode_integrator_t, ode_options_t
+  use numerics_event_driver, only: RECORD_OUTPUT
+  use kinetostatics_mass, only: new_mass_element
   use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use contact_closure_monitor, only: new_closure_monitor
   use contact_pair, only: contact_pair_t, add_contact_pair, place_contact_pair, check_contact_branch, &
     add_open_contact_pair, place_open_contact_pair
   implicit none (type, external)
@@ -34,6 +42,8 @@ program test_contact_pair
   call paraboloid_in_moving_bowl()
   call parallel_branch_refused()
   call no_closure_named()
+  call monitor_only_in_records()
+  call record_only_read_refused()
   call finish_tests('test_contact_pair')
 
 contains
@@ -152,11 +162,14 @@ contains
     call check(maxval(abs(mo%frames(open%frame_b)%rot - m%frames(pair%frame_b)%rot)) <= 1e-14_wp .and. &
                maxval(abs(mo%frames(open%frame_b)%r - m%frames(pair%frame_b)%r)) <= 1e-14_wp, &
                'open chain: the cup where the closed loop has it')
-    call check(maxval(abs(mo%scalars(open%gaps)%q)) <= 1e-14_wp, 'open chain: g1..g5 zero (rounding)')
+    call mo%record_pass(st)   ! the monitor is record-only (the position passes skip it)
+    call check(st%ok() .and. maxval(abs(mo%scalars(open%gaps)%q)) <= 1e-14_wp, 'open chain: g1..g5 zero (rounding)')
     do trial = 1, 3
       call check_mechanism_motion('cup in moving bowl', m, q0, 0.2_wp, 0.4_wp*(trial - 2))
       call check_mechanism_motion('cup in moving bowl, open chain', mo, qo, 0.2_wp, 0.4_wp*(trial - 2))
-      call check(maxval(abs(mo%scalars(open%gaps)%q)) <= 1e-14_wp, 'open chain: g1..g5 zero along the motion')
+      call mo%record_pass(st)
+      call check(st%ok() .and. maxval(abs(mo%scalars(open%gaps)%q)) <= 1e-14_wp, &
+                 'open chain: g1..g5 zero along the motion')
     end do
   end subroutine paraboloid_in_moving_bowl
 
@@ -216,6 +229,108 @@ contains
     call check(.not. st%ok() .and. index(st%text(), 'cup_in_bowl') > 0 .and. index(st%text(), 'off by') > 0, &
                'a contact that cannot close is refused naming it and by how much: '//st%text())
   end subroutine no_closure_named
+
+  !> The egg on the table by the open chain, spinning and rocking under
+  !> gravity (frictionless, bilateral), with a second closure monitor
+  !> against an egg 1.1 times as large: its gaps are millimetres and change
+  !> along the motion, so a stale value cannot pass for a fresh one. Every
+  !> record (after a step, and again after a right-hand side at the same
+  !> state, whose dynamics the record reuses without a position pass) must
+  !> hold the monitor evaluated directly at the recorded q; the right-hand
+  !> side must leave its outputs alone.
+  subroutine monitor_only_in_records()
+    type(mechanism_ode_t), target :: sys
+    type(mechanism_t) :: direct
+    type(contact_pair_t) :: open
+    type(plane_t) :: table
+    type(ellipsoid_t) :: egg, larger
+    type(ode_integrator_t) :: integ
+    type(ode_options_t) :: opt
+    type(status_t) :: st
+    integer :: gaps(5), k, i, monitor, reused
+    real(wp), allocatable :: y(:), ydot(:)
+    real(wp) :: t, worst, change
+    real(wp), parameter :: sentinel = 7.0_wp
+    character(len=2) :: digit
+    table = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], st)
+    egg = ellipsoid_t(egg_a, egg_b, egg_a, st)
+    larger = ellipsoid_t(1.1_wp*egg_a, 1.1_wp*egg_b, 1.1_wp*egg_a, st)
+    associate (m => sys%mechanism)
+      call add_open_contact_pair(m, 'egg_on_table', 1, table, 1.0_wp, 'egg', egg, 1.0_wp, open, st)
+      ! a solid ellipsoid of 0.1 kg
+      call m%add_element(new_mass_element('egg', open%frame_b, 0.1_wp, 0.02_wp*reshape([egg_a**2 + egg_b**2, &
+        0.0_wp, 0.0_wp, 0.0_wp, 2*egg_a**2, 0.0_wp, 0.0_wp, 0.0_wp, egg_a**2 + egg_b**2], [3, 3]), &
+        [0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, -9.80665_wp], st))
+      do k = 1, 5
+        write (digit, '(i1)') k
+        gaps(k) = m%add_scalar('larger.g'//trim(digit))
+        call m%add_monitor(gaps(k), merge('m', '1', k <= 3))
+      end do
+      call m%add_element(new_closure_monitor('larger', open%frame_1d, open%frame_b, larger, 1.0_wp, &
+                                             [open%u2, open%v2], gaps))
+      monitor = m%n_elements
+      call m%set_coordinates(open%coordinates())
+      call m%finalize(st)
+      call check(st%ok(), 'records: egg with a second monitor built: '//st%text())
+      if (.not. st%ok()) return
+      ! touching at (u2, v2) = (0.3, -0.2) of the egg, spinning at 30 rad/s about the normal
+      y = sys%initial_state([0.0_wp, 0.0_wp, 0.0_wp, 0.3_wp, -0.2_wp], [0.05_wp, 0.0_wp, 30.0_wp, 0.0_wp, 0.0_wp])
+      call sys%check_start(y, st)
+      call check(st%ok(), 'records: the egg starts: '//st%text())
+      if (.not. st%ok()) return
+      allocate (ydot(size(y)))
+      call sys%start_series(10)
+      call integ%start(sys, 0.0_wp, y, opt, st)
+      reused = m%dynamics_reused
+      do i = 1, 4
+        call integ%advance(0.005_wp*i, t, y, st)
+        if (st%ok()) call sys%record(t, y, RECORD_OUTPUT, st)
+        m%scalars(gaps)%q = sentinel
+        if (st%ok()) call sys%rhs(t, y + 1e-6_wp, ydot, st)   ! another state: a position pass
+        if (st%ok()) call sys%rhs(t, y, ydot, st)
+        call check(all(m%scalars(gaps)%q == sentinel), 'records: right-hand sides leave the monitor alone')
+        if (st%ok()) call sys%record(t, y, RECORD_OUTPUT, st)   ! reuses the right-hand side's dynamics
+      end do
+      call check(st%ok(), 'records: integrated 0.02 s: '//st%text())
+      if (.not. st%ok()) return
+      call check(m%dynamics_reused >= reused + 4, 'records: the records after a right-hand side reused its dynamics')
+    end associate
+    worst = 0
+    do i = 1, sys%series%n
+      direct = sys%mechanism
+      call direct%set_positions(sys%series%q(:, i), st)
+      if (st%ok()) call direct%elements(monitor)%e%position(direct%frames, direct%scalars, st)
+      if (.not. st%ok()) exit
+      worst = max(worst, maxval(abs(sys%series%monitor(:, i) - direct%scalars(gaps)%q)))
+    end do
+    change = maxval(abs(sys%series%monitor(:, sys%series%n) - sys%series%monitor(:, 1)))
+    ! the same operations on the same q, up to the compiler's contractions: a
+    ! few ulps of the O(0.03 m) lengths; a stale value is off by the change
+    call check(st%ok() .and. sys%series%n == 8 .and. worst <= 1e-15_wp, &
+               'records: the monitor''s outputs equal a direct evaluation at every recorded state')
+    call check(maxval(abs(sys%series%monitor(1:3, :sys%series%n))) > 1e-4_wp .and. change > 1e-6_wp, &
+               'records: the second monitor''s gaps change along the motion (stale values would show)')
+    print '(a, es10.2, a, es10.2, a)', '  records: monitor against direct evaluation ', worst, ' m (change ', &
+      change, ')'
+  end subroutine monitor_only_in_records
+
+  !> An output of a record-only element used by the mechanism (here a gap
+  !> of the open chain's monitor made a coordinate) is refused at finalize.
+  subroutine record_only_read_refused()
+    type(mechanism_t) :: m
+    type(contact_pair_t) :: open
+    type(plane_t) :: table
+    type(ellipsoid_t) :: egg
+    type(status_t) :: st
+    table = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], st)
+    egg = ellipsoid_t(egg_a, egg_b, egg_a, st)
+    call add_open_contact_pair(m, 'egg_on_table', 1, table, 1.0_wp, 'egg', egg, 1.0_wp, open, st)
+    call m%set_coordinates([open%coordinates(), open%gaps(1)])
+    call m%finalize(st)
+    call check(.not. st%ok() .and. index(st%text(), 'egg_on_table.closure') > 0 .and. &
+               index(st%text(), 'record-only') > 0 .and. index(st%text(), 'egg_on_table.g1') > 0, &
+               'an output of a record-only element read by the mechanism is refused: '//st%text())
+  end subroutine record_only_read_refused
 
   !> z = (x^2 + y^2)/a2 on [-w, w]^2 by SURFIT (degree 5, 13 x 13, s = 0.05).
   function quadratic_patch(a2, w, status) result(s)
