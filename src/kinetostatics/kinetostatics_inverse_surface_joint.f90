@@ -28,11 +28,10 @@
 !> The test compares every level with differences of the level below, the
 !> position with the forward joint (round trip), and the force map's power.
 !>
-!> The geometry is that of a forward surface joint on a frame at rest at the
-!> identity (B's coordinates), evaluated eagerly in the position map (each
-!> position pass of an open chain is followed by a velocity pass) and rotated
-!> by R_B here; its singular points are the forward joint's (extrapolated
-!> rates, rule (3.40)).
+!> The geometry is the forward surface joint's in B's coordinates
+!> (`local_geometry`), evaluated in the position map (each position pass of
+!> an open chain is followed by a velocity pass) and rotated by R_B here; its
+!> singular points are the forward joint's (extrapolated rates, rule (3.40)).
 module kinetostatics_inverse_surface_joint
   use base_kinds, only: wp
   use base_status, only: status_t
@@ -47,7 +46,7 @@ module kinetostatics_inverse_surface_joint
   type, extends(element_t) :: inverse_surface_joint_t
     integer :: frame_in = 0, frame_out = 0, var_u = 0, var_v = 0
     real(wp) :: mount(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])   ! K_D = K_in M
-    type(surface_joint_t) :: joint        ! B's surface joint on a frame at the identity
+    type(surface_joint_t) :: joint        ! B's surface joint: its geometry in B's coordinates
     ! at the last position (world coordinates): p = R_B r and the rotated rates
     ! (columns: p, g_u, g_v, t_u, t_v, g_uu, g_uv, g_vu, g_vv, h_uu, h_uv, h_vv)
     real(wp) :: geo(3, 12) = 0
@@ -82,8 +81,7 @@ contains
     e%var_u = var_u
     e%var_v = var_v
     if (present(mount)) e%mount = mount
-    e%joint = new_surface_joint(name, 1, 2, 1, 2, surface, sigma, alpha_u, alpha_v)
-    e%joint%lazy = .false.
+    e%joint = new_surface_joint(name, 1, 2, 1, 2, surface, sigma, alpha_u, alpha_v)   ! its geometry only
   end function new_inverse_surface_joint
 
   pure subroutine isj_position(self, frames, scalars, status)
@@ -91,17 +89,35 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     type(status_t), intent(inout) :: status
-    type(frame_state_t) :: local(2)
-    type(scalar_state_t) :: uv(2)
-    real(wp) :: body(3, 12)
-    uv(1)%q = scalars(self%var_u)%q
-    uv(2)%q = scalars(self%var_v)%q
-    call self%joint%position(local, uv, status)   ! local(2): D and r in B's coordinates
+    real(wp) :: u, v, rates(3, 6), rot_m(3, 3), body(3, 12)
+    integer :: k
+    u = scalars(self%var_u)%q
+    v = scalars(self%var_v)%q
+    call self%joint%check_domain(u, v, status)
     if (.not. status%ok()) return
-    associate (i => frames(self%frame_in), o => frames(self%frame_out), j => self%joint)
-      o%rot = matmul(matmul(i%rot, self%mount), transpose(local(2)%rot))
-      body = reshape([j%point%r, j%gu, j%gv, j%tu, j%tv, j%guu, j%guv, j%gvu, j%gvv, j%huu, j%huv, j%hvv], [3, 12])
-      self%geo = matmul(o%rot, body)
+    call self%joint%local_geometry(u, v, rates, status)   ! B's coordinates
+    if (.not. status%ok()) return
+    associate (i => frames(self%frame_in), o => frames(self%frame_out), d => self%joint%frame%r, &
+               pt => self%joint%point)
+      ! R_B = (R_in M) D^T and the rotated columns, as sums in k (no temporaries)
+      do k = 1, 3
+        rot_m(:, k) = i%rot(:, 1)*self%mount(1, k) + i%rot(:, 2)*self%mount(2, k) + i%rot(:, 3)*self%mount(3, k)
+      end do
+      do k = 1, 3
+        o%rot(:, k) = rot_m(:, 1)*d(k, 1) + rot_m(:, 2)*d(k, 2) + rot_m(:, 3)*d(k, 3)
+      end do
+      body(:, COL_P) = pt%r
+      body(:, COL_GU) = rates(:, 1)
+      body(:, COL_GV) = rates(:, 2)
+      body(:, COL_TU) = pt%ru
+      body(:, COL_TV) = pt%rv
+      body(:, COL_GUU:COL_GVV) = rates(:, 3:6)
+      body(:, COL_HUU) = pt%ruu
+      body(:, COL_HUV) = pt%ruv
+      body(:, COL_HVV) = pt%rvv
+      do k = 1, 12
+        self%geo(:, k) = o%rot(:, 1)*body(1, k) + o%rot(:, 2)*body(2, k) + o%rot(:, 3)*body(3, k)
+      end do
       o%r = i%r - self%geo(:, COL_P)
     end associate
   end subroutine isj_position

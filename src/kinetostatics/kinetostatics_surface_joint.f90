@@ -73,6 +73,8 @@ module kinetostatics_surface_joint
     procedure :: acceleration => sj_acceleration
     procedure :: force => sj_force
     procedure :: complete_geometry => sj_complete_geometry
+    procedure :: check_domain => sj_check_domain
+    procedure :: local_geometry => sj_local_geometry
     procedure :: links => sj_links
   end type surface_joint_t
 
@@ -123,6 +125,20 @@ contains
     end associate
   end subroutine angular_rates
 
+  !> status: the joint's (u, v) left the surface's parameter domain.
+  pure subroutine sj_check_domain(self, u, v, status)
+    class(surface_joint_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    type(status_t), intent(inout) :: status
+    character(len=24) :: tu, tv
+    if (self%surface%in_domain(u, v)) return
+    write (tu, '(es12.5)') u
+    write (tv, '(es12.5)') v
+    call set_status(status, STATUS_DOMAIN, 'surface joint '''//self%name//''': (u, v) = ('// &
+                    trim(adjustl(tu))//', '//trim(adjustl(tv))//') left the parameter domain of the '// &
+                    self%surface%describe())
+  end subroutine sj_check_domain
+
   !> (3.43): the output frame from (u, v); the rest of the geometry at once
   !> only where `lazy` is off or the point is singular (module comment).
   pure subroutine sj_position(self, frames, scalars, status)
@@ -132,18 +148,11 @@ contains
     type(status_t), intent(inout) :: status
     real(wp) :: u, v, axes(3, 3)
     logical :: singular
-    character(len=24) :: tu, tv
 
     u = scalars(self%var_u)%q
     v = scalars(self%var_v)%q
-    if (.not. self%surface%in_domain(u, v)) then
-      write (tu, '(es12.5)') u
-      write (tv, '(es12.5)') v
-      call set_status(status, STATUS_DOMAIN, 'surface joint '''//self%name//''': (u, v) = ('// &
-                      trim(adjustl(tu))//', '//trim(adjustl(tv))//') left the parameter domain of the '// &
-                      self%surface%describe())
-      return
-    end if
+    call sj_check_domain(self, u, v, status)
+    if (.not. status%ok()) return
     self%u = u
     self%v = v
     self%rot_in = frames(self%frame_in)%rot
@@ -175,35 +184,47 @@ contains
   pure subroutine evaluate_geometry(self, status)
     class(surface_joint_t), intent(inout) :: self
     type(status_t), intent(inout) :: status
-    real(wp) :: wu(3), wv(3), wuu(3), wuv(3), wvu(3), wvv(3)
-    call self%surface%evaluate(self%u, self%v, 3, self%point, status)
+    real(wp) :: rates(3, 6)
+    call sj_local_geometry(self, self%u, self%v, rates, status)
+    if (.not. status%ok()) return
+    associate (rot => self%rot_in, pt => self%point)
+      self%p = matmul(rot, pt%r)
+      self%gu = matmul(rot, rates(:, 1))
+      self%gv = matmul(rot, rates(:, 2))
+      self%tu = matmul(rot, pt%ru)
+      self%tv = matmul(rot, pt%rv)
+      self%guu = matmul(rot, rates(:, 3))
+      self%guv = matmul(rot, rates(:, 4))
+      self%gvu = matmul(rot, rates(:, 5))
+      self%gvv = matmul(rot, rates(:, 6))
+      self%huu = matmul(rot, pt%ruu)
+      self%huv = matmul(rot, pt%ruv)
+      self%hvv = matmul(rot, pt%rvv)
+    end associate
+  end subroutine evaluate_geometry
+
+  !> The geometry at (u, v) in the surface's coordinates: self%point (order
+  !> 3), self%frame, and rates = [W_u, W_v, W_u,u, W_u,v, W_v,u, W_v,v].
+  !> For owners that rotate it themselves (the inverse joint).
+  pure subroutine sj_local_geometry(self, u, v, rates, status)
+    class(surface_joint_t), intent(inout) :: self
+    real(wp), intent(in) :: u, v
+    real(wp), intent(out) :: rates(3, 6)
+    type(status_t), intent(inout) :: status
+    call self%surface%evaluate(u, v, 3, self%point, status)
     if (status%ok()) call darboux_frame(self%point, self%sigma, self%alpha_u, self%alpha_v, self%frame, status)
     if (.not. status%ok()) then
       call prefix_status(status, 'surface joint '''//self%name//'''')
       return
     end if
     if (.not. self%frame%singular) then
-      call angular_rates(self%frame, wu, wv)
-      call rate_derivatives(self%frame, wuu, wuv, wvu, wvv)
+      call angular_rates(self%frame, rates(:, 1), rates(:, 2))
+      call rate_derivatives(self%frame, rates(:, 3), rates(:, 4), rates(:, 5), rates(:, 6))
     else
-      call singular_rates(self, self%u, self%v, wu, wv, wuu, wuv, wvu, wvv, status)
-      if (.not. status%ok()) return
+      call singular_rates(self, u, v, rates(:, 1), rates(:, 2), rates(:, 3), rates(:, 4), rates(:, 5), &
+                          rates(:, 6), status)
     end if
-    associate (rot => self%rot_in, pt => self%point)
-      self%p = matmul(rot, pt%r)
-      self%gu = matmul(rot, wu)
-      self%gv = matmul(rot, wv)
-      self%tu = matmul(rot, pt%ru)
-      self%tv = matmul(rot, pt%rv)
-      self%guu = matmul(rot, wuu)
-      self%guv = matmul(rot, wuv)
-      self%gvu = matmul(rot, wvu)
-      self%gvv = matmul(rot, wvv)
-      self%huu = matmul(rot, pt%ruu)
-      self%huv = matmul(rot, pt%ruv)
-      self%hvv = matmul(rot, pt%rvv)
-    end associate
-  end subroutine evaluate_geometry
+  end subroutine sj_local_geometry
 
   !> The rates and their derivatives of the last position, if not yet there
   !> (the maps test `complete` themselves first: this is called once per
