@@ -119,18 +119,18 @@ contains
     ! z_D and its derivatives.
     if (.not. frame%singular) then
       ! thesis (3.38), (3.48), (3.49)
-      w = sigma*cross(p%ru, p%rv)
+      w = sigma*local_cross(p%ru, p%rv)
       norm_w = norm2(w)
       if (norm_w <= singular_tol*abs(sigma)*norm_ru*norm_rv) then
         call fail_parallel(status)
         return
       end if
-      wu = sigma*(cross(p%ruu, p%rv) + cross(p%ru, p%ruv))
-      wv = sigma*(cross(p%ruv, p%rv) + cross(p%ru, p%rvv))
+      wu = sigma*(local_cross(p%ruu, p%rv) + local_cross(p%ru, p%ruv))
+      wv = sigma*(local_cross(p%ruv, p%rv) + local_cross(p%ru, p%rvv))
       if (second) then
-        wuu = sigma*(cross(p%ruuu, p%rv) + 2*cross(p%ruu, p%ruv) + cross(p%ru, p%ruuv))
-        wuv = sigma*(cross(p%ruuv, p%rv) + cross(p%ruu, p%rvv) + cross(p%ru, p%ruvv))
-        wvv = sigma*(cross(p%ruvv, p%rv) + 2*cross(p%ruv, p%rvv) + cross(p%ru, p%rvvv))
+        wuu = sigma*(local_cross(p%ruuu, p%rv) + 2*local_cross(p%ruu, p%ruv) + local_cross(p%ru, p%ruuv))
+        wuv = sigma*(local_cross(p%ruuv, p%rv) + local_cross(p%ruu, p%rvv) + local_cross(p%ru, p%ruvv))
+        wvv = sigma*(local_cross(p%ruvv, p%rv) + 2*local_cross(p%ruv, p%rvv) + local_cross(p%ru, p%rvvv))
       end if
     else
       ! thesis (3.40), (A.1); rates (A.3), (A.5)-(A.7); or the limit rule
@@ -144,17 +144,17 @@ contains
                         'needs the surface point evaluated to order 3')
         return
       end if
-      w340 = sigma*cross(p%rv, cross(p%rv, p%rvv))
+      w340 = sigma*local_cross(p%rv, local_cross(p%rv, p%rvv))
       if (limit_rule) then
-        w = sigma*cross(p%ruv, p%rv)
+        w = sigma*local_cross(p%ruv, p%rv)
         norm_w = norm2(w)
         if (norm_w <= singular_tol*abs(sigma)*norm2(p%ruv)*norm_rv) then
           call set_status(status, STATUS_DOMAIN, 'Darboux frame: singular point (r_u = 0) where ' // &
                           'r_uv is parallel to r_v; the limit of the normal is undefined')
           return
         end if
-        wu = sigma*cross(p%ruuv, p%rv)
-        wv = sigma*(cross(p%ruvv, p%rv)/2 + cross(p%ruv, p%rvv))
+        wu = sigma*local_cross(p%ruuv, p%rv)
+        wv = sigma*(local_cross(p%ruvv, p%rv)/2 + local_cross(p%ruv, p%rvv))
         if (dot_product(w, w340) < 0) then
           w = -w; wu = -wu; wv = -wv
         end if
@@ -166,10 +166,10 @@ contains
                           'r_vv is parallel to r_v; the rule (3.40) is undefined')
           return
         end if
-        wu = sigma*(cross(p%ruv, cross(p%rv, p%rvv)) + &
-                    cross(p%rv, cross(p%ruv, p%rvv) + cross(p%rv, p%ruvv)))   ! c_1 of (A.3)
-        wv = sigma*(cross(p%rvv, cross(p%rv, p%rvv)) + &
-                    cross(p%rv, cross(p%rv, p%rvvv)))                          ! d_1 of (A.3)
+        wu = sigma*(local_cross(p%ruv, local_cross(p%rv, p%rvv)) + &
+                    local_cross(p%rv, local_cross(p%ruv, p%rvv) + local_cross(p%rv, p%ruvv)))   ! c_1 of (A.3)
+        wv = sigma*(local_cross(p%rvv, local_cross(p%rv, p%rvv)) + &
+                    local_cross(p%rv, local_cross(p%rv, p%rvvv)))                          ! d_1 of (A.3)
       end if
     end if
     call unit_and_derivatives(w, norm_w, wu, wv, wuu, wuv, wvv, second, z, frame%c, frame%d, &
@@ -194,14 +194,14 @@ contains
     if (frame%singular) x = (x - dot_product(x, z)*z)/norm2(x - dot_product(x, z)*z)
 
     ! y_D = z_D x x_D (3.42) and its derivatives (3.50), (3.51).
-    y = cross(z, x)
-    frame%e = cross(frame%c, x) + cross(z, frame%a)
-    frame%f = cross(frame%d, x) + cross(z, frame%b)
+    y = local_cross(z, x)
+    frame%e = local_cross(frame%c, x) + local_cross(z, frame%a)
+    frame%f = local_cross(frame%d, x) + local_cross(z, frame%b)
     if (second) then
-      frame%e_u = cross(frame%c_u, x) + 2*cross(frame%c, frame%a) + cross(z, frame%a_u)
-      frame%e_v = cross(frame%c_v, x) + cross(frame%c, frame%b) + cross(frame%d, frame%a) &
-                  + cross(z, frame%a_v)
-      frame%f_v = cross(frame%d_v, x) + 2*cross(frame%d, frame%b) + cross(z, frame%b_v)
+      frame%e_u = local_cross(frame%c_u, x) + 2*local_cross(frame%c, frame%a) + local_cross(z, frame%a_u)
+      frame%e_v = local_cross(frame%c_v, x) + local_cross(frame%c, frame%b) + local_cross(frame%d, frame%a) &
+                  + local_cross(z, frame%a_v)
+      frame%f_v = local_cross(frame%d_v, x) + 2*local_cross(frame%d, frame%b) + local_cross(z, frame%b_v)
       frame%b_u = frame%a_v
       frame%d_u = frame%c_v
       frame%f_u = frame%e_v
@@ -210,6 +210,17 @@ contains
     frame%r(:, 1) = x
     frame%r(:, 2) = y
     frame%r(:, 3) = z
+  contains
+    !> base_vector's cross, local: LTO does not inline that one into this long
+    !> routine (--param max-inline-insns-auto), this one it does (-1.3 % of
+    !> the egg's instructions, the same operations).
+    pure function local_cross(a, b) result(c)
+      real(wp), intent(in) :: a(3), b(3)
+      real(wp) :: c(3)
+      c(1) = a(2)*b(3) - a(3)*b(2)
+      c(2) = a(3)*b(1) - a(1)*b(3)
+      c(3) = a(1)*b(2) - a(2)*b(1)
+    end function local_cross
   end subroutine darboux_frame
 
   !> The axes alone (columns x_D, y_D, z_D) at a point p evaluated to order
