@@ -1560,7 +1560,7 @@ contains
     self%work_f = 0
     call self%set_accelerations(self%work_f)
     call self%inverse_dynamics(.true., .true., LOADS_EXPLICIT)
-    self%bias = self%gq
+    self%bias(:) = self%gq   ! (:): no reallocation test
     if (nc > 0) call self%normal_forces(self%n0)
 
     ! M and G, all velocities zero, applied forces off
@@ -1576,8 +1576,8 @@ contains
         call full_mass_column(self, i)
       end do
     end if
-    do i = 1, self%ns   ! symmetric part, element-wise (no temporary)
-      do k = 1, self%ns
+    do i = 1, self%ns   ! symmetric part's lower triangle, the factor's input (no temporary)
+      do k = i, self%ns
         self%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
       end do
     end do
@@ -1589,11 +1589,11 @@ contains
       return
     end if
     if (ns == 0) then
-      self%qdd = self%bias
+      self%qdd(:) = self%bias
       call cholesky_solve(self%chol, self%qdd, status)
       qdd = self%qdd
       call affine_normal_forces(self, qdd)
-      self%law_power = self%unit_power
+      self%law_power(:) = self%unit_power
       call remember_dynamics(self, t, q, qd)
       return
     end if
@@ -1715,7 +1715,7 @@ contains
       end if
     end do
     if (.not. self%blocks%mass_blocked) call clear_accelerations(self)
-    self%wrench = 0
+    call clear_sequence(size(self%wrench), self%wrench)
     do b = 1, size(self%masses)
       if (self%mass_slot(b) == 0) cycle   ! a mass on the ground
       select type (e => self%elements(self%masses(b))%e)
@@ -1728,6 +1728,15 @@ contains
     call pair_powers(self%ns, self%ns, size(self%tracked), self%twist, self%wrench, self%mass, .true.)
     if (size(self%contacts) > 0) call twist_normal_forces(self)
   end subroutine twist_mass_matrix
+
+  !> x = 0 for an array passed as its sequence of n elements: one store
+  !> loop (an allocatable component of rank 3 set to 0 directly costs a
+  !> memset call per column and loop control around it).
+  pure subroutine clear_sequence(n, x)
+    integer, intent(in) :: n
+    real(wp), intent(out) :: x(n)
+    x = 0
+  end subroutine clear_sequence
 
   !> The inertial wrenches (torque, force at the frame's origin) of a mass
   !> (m, s = R s_local, Theta_w) on the tracked frame t per unit s'_i: (3.23)
@@ -1832,6 +1841,7 @@ contains
   !> forces on it). Velocities and accelerations zero.
   subroutine twist_normal_forces(self)
     class(mechanism_t), intent(inout) :: self
+    real(wp) :: factor
     integer :: i, k, l, c, f, nx, step
     nx = self%r + self%nd
     step = 0
@@ -1875,9 +1885,10 @@ contains
       end do
     end do
     call pair_powers(size(self%contacts), self%ns, size(self%tracked), self%nu, self%wrench, self%g_mat, .false.)
-    do i = 1, self%ns
-      do c = 1, size(self%contacts)
-        self%g_mat(c, i) = -self%contacts(c)%normal_sign*self%g_mat(c, i)
+    do c = 1, size(self%contacts)
+      factor = -self%contacts(c)%normal_sign   ! +-1: the products are exact
+      do i = 1, self%ns
+        self%g_mat(c, i) = factor*self%g_mat(c, i)
       end do
     end do
   end subroutine twist_normal_forces
@@ -1966,8 +1977,8 @@ contains
     real(wp), intent(in) :: t, q(:), qd(:)
     integer :: k
     self%known_t = t
-    self%known_q = q
-    self%known_s = qd
+    self%known_q(:) = q
+    self%known_s(:) = qd
     do k = 1, self%n_laws
       self%known_active(k) = self%laws(k)%law%active
     end do
@@ -1988,10 +1999,12 @@ contains
   subroutine affine_normal_forces(self, qdd)
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: qdd(:)
-    integer :: i
-    self%normal = self%n0
-    do i = 1, self%ns   ! no matmul: its result would be a heap temporary
-      self%normal = self%normal + self%g_mat(:, i)*qdd(i)
+    integer :: i, c
+    do c = 1, size(self%n0)   ! no matmul: its result would be a heap temporary
+      self%normal(c) = self%n0(c)
+      do i = 1, self%ns
+        self%normal(c) = self%normal(c) + self%g_mat(c, i)*qdd(i)
+      end do
     end do
   end subroutine affine_normal_forces
 
