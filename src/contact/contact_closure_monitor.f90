@@ -14,11 +14,15 @@
 !> mechanism evaluates it for a complete state (a record); its velocity and
 !> acceleration maps leave their rates alone (zero) and its force map passes
 !> nothing back. A record costs one surface point to first order, a
-!> right-hand side nothing.
+!> right-hand side nothing. An ellipsoid's (u2, v2) are those of the chart
+!> the inverse joint uses (kinetostatics_inverse_surface_joint, "Charts"):
+!> the monitor reads the chart's pole axis from the scalar `chart` and
+!> measures with it.
 module contact_closure_monitor
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status
   use geometry_surface, only: surface_t
+  use geometry_elementary, only: ellipsoid_t, ellipsoid_pole_chart
   use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
   use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
   implicit none (type, external)
@@ -30,6 +34,10 @@ module contact_closure_monitor
     integer :: contact(2) = 0                   ! scalars u2, v2
     integer :: gaps(5) = 0                      ! output scalars g1..g5
     type(surface_joint_t) :: joint_2            ! S2 on K_B (local frames 1 -> 2)
+    ! an ellipsoid's chart (module comment): its own one has the poles on z (3)
+    integer :: var_chart = 0, pole_axis = 3
+    type(ellipsoid_t) :: ellipsoid
+    real(wp) :: chart(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
   contains
     procedure :: position => monitor_position
     procedure :: velocity => monitor_motion
@@ -41,10 +49,12 @@ module contact_closure_monitor
 contains
 
   !> frame_1d: the contact frame K_1D on body A; surface_2 with side_2 on
-  !> the body frame frame_b at the scalars contact = [u2, v2].
-  function new_closure_monitor(name, frame_1d, frame_b, surface_2, side_2, contact, gaps) result(e)
+  !> the body frame frame_b at the scalars contact = [u2, v2]; chart: the
+  !> scalar of an ellipsoid's chart (module comment).
+  function new_closure_monitor(name, frame_1d, frame_b, surface_2, side_2, contact, gaps, chart) result(e)
     character(len=*), intent(in) :: name
     integer, intent(in) :: frame_1d, frame_b, contact(2), gaps(5)
+    integer, intent(in), optional :: chart
     class(surface_t), intent(in) :: surface_2
     real(wp), intent(in) :: side_2
     type(closure_monitor_t) :: e
@@ -55,6 +65,13 @@ contains
     e%contact = contact
     e%gaps = gaps
     e%joint_2 = new_surface_joint(name//'.s2', 1, 2, 1, 2, surface_2, side_2, 1.0_wp, 0.0_wp)
+    if (present(chart)) then
+      select type (surface_2)
+      type is (ellipsoid_t)
+        e%ellipsoid = surface_2
+        e%var_chart = chart
+      end select
+    end if
   end function new_closure_monitor
 
   pure subroutine monitor_position(self, frames, scalars, status)
@@ -64,9 +81,21 @@ contains
     type(status_t), intent(inout) :: status
     type(frame_state_t) :: two(2)
     type(scalar_state_t) :: uv(2)
+    type(ellipsoid_t) :: chart_surface
     real(wp) :: g(5)
     integer :: k
-    two(1)%rot = frames(self%frame_b)%rot
+    if (self%var_chart > 0) then
+      if (nint(scalars(self%var_chart)%q) /= self%pole_axis) then
+        self%pole_axis = nint(scalars(self%var_chart)%q)
+        call ellipsoid_pole_chart(self%ellipsoid, self%pole_axis, chart_surface, self%chart)
+        self%joint_2%surface = chart_surface
+      end if
+    end if
+    if (self%pole_axis == 3) then
+      two(1)%rot = frames(self%frame_b)%rot
+    else
+      two(1)%rot = matmul(frames(self%frame_b)%rot, self%chart)
+    end if
     two(1)%r = frames(self%frame_b)%r
     uv = scalars(self%contact)
     call self%joint_2%position(two, uv, status)

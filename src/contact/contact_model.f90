@@ -369,7 +369,8 @@ contains
   end subroutine add_units
 
   !> The closure measurements g1..g5 of every contact are recorded (at velocity
-  !> level they measure the drift).
+  !> level they measure the drift), and in the open chain the chart of
+  !> (u2, v2) (an ellipsoid's pole axis: kinetostatics_inverse_surface_joint).
   subroutine add_monitors(m, link)
     type(mechanism_t), intent(inout) :: m
     type(contact_link_t), intent(in) :: link
@@ -377,6 +378,7 @@ contains
     do i = 1, 5
       call m%add_monitor(link%gaps(i), merge('m', '1', i <= 3))
     end do
+    if (link%open) call m%add_monitor(link%pair%chart, '1')
   end subroutine add_monitors
 
   !> Centre and inertia of every body: given, or the homogeneous solid of a

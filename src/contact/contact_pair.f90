@@ -74,6 +74,7 @@ module contact_pair
     ! the open chain (module comment): K_1D -> turn phi -> K_T -> inverse S2 -> K_B
     logical :: open = .false.
     integer :: phi = 0, frame_turn = 0
+    integer :: chart = 0   ! the scalar of S2's chart (an ellipsoid's pole axis: 1, 2, 3 = B's x, y, z)
   contains
     procedure :: coordinates => pair_coordinates
     procedure :: dependents => pair_dependents
@@ -186,12 +187,13 @@ contains
     pair%frame_b = m%add_frame(body_b)
     pair%u2 = m%add_scalar(name//'.u2')
     pair%v2 = m%add_scalar(name//'.v2')
+    pair%chart = m%add_scalar(name//'.chart', 3.0_wp)   ! an ellipsoid's pole axis (B's z)
     call m%add_element(new_inverse_surface_joint(name//'.s2', pair%frame_turn, pair%frame_b, pair%u2, pair%v2, &
-                                                 surface_2, side_2, 1.0_wp, 0.0_wp, turn_over))
+                                                 surface_2, side_2, 1.0_wp, 0.0_wp, turn_over, pair%phi, pair%chart))
     pair%element_s2 = m%n_elements
     call add_gap_scalars(m, pair)
     call m%add_element(new_closure_monitor(name//'.closure', pair%frame_1d, pair%frame_b, surface_2, side_2, &
-                                           [pair%u2, pair%v2], pair%gaps))
+                                           [pair%u2, pair%v2], pair%gaps, pair%chart))
   end subroutine add_open_contact_pair
 
   !> Checks the sides and sets what both chains share.

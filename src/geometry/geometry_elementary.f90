@@ -19,6 +19,7 @@ module geometry_elementary
   implicit none (type, external)
   private
   public :: plane_t, ellipsoid_t, paraboloid_t, elliptic_cylinder_t, apex_paraboloid_t
+  public :: ellipsoid_semi_axes, ellipsoid_pole_chart
 
   !> Plane through A, B, C: r = r_A + u r_u + v r_v with unit r_u towards B and
   !> unit r_v towards C, thesis (3.55)-(3.56). u, v are lengths (m) along
@@ -169,6 +170,38 @@ contains
     call check_positive('ellipsoid', 'c', c, status); if (.not. status%ok()) return
     s%a = a; s%b = b; s%c = c
   end function new_ellipsoid
+
+  !> The semi-axes [a, b, c] of s (m), along its x, y, z.
+  pure function ellipsoid_semi_axes(s) result(abc)
+    type(ellipsoid_t), intent(in) :: s
+    real(wp) :: abc(3)
+    abc = [s%a, s%b, s%c]
+  end function ellipsoid_semi_axes
+
+  !> The ellipsoid s in another chart of (3.57): the one whose poles lie on
+  !> s's axis k (1, 2, 3: x, y, z; k = 3 is s itself). A point r' of the
+  !> chart's surface `chart_surface` is the point r = P r' of s, P the cyclic
+  !> permutation taking the chart's z axis to axis k (a rotation: the
+  !> outward normal stays outward). Used where a contact point nears a pole,
+  !> where (3.57)'s parametrisation is singular (kinetostatics_inverse_surface_joint).
+  pure subroutine ellipsoid_pole_chart(s, k, chart_surface, p)
+    type(ellipsoid_t), intent(in) :: s
+    integer, intent(in) :: k
+    type(ellipsoid_t), intent(out) :: chart_surface
+    real(wp), intent(out) :: p(3, 3)
+    real(wp) :: abc(3)
+    integer :: i1, i2
+    abc = [s%a, s%b, s%c]
+    i1 = modulo(k, 3) + 1
+    i2 = modulo(k + 1, 3) + 1
+    p = 0
+    p(i1, 1) = 1
+    p(i2, 2) = 1
+    p(k, 3) = 1
+    chart_surface%a = abc(i1)
+    chart_surface%b = abc(i2)
+    chart_surface%c = abc(k)
+  end subroutine ellipsoid_pole_chart
 
   !> Paraboloid (3.58) with a, b > 0 (m) and c = +1 (elliptic) or -1 (hyperbolic).
   function new_paraboloid(a, b, c, status) result(s)

@@ -28,15 +28,36 @@
 !> The test compares every level with differences of the level below, the
 !> position with the forward joint (round trip), and the force map's power.
 !>
-!> The geometry is the forward surface joint's in B's coordinates
-!> (`local_geometry`), evaluated in the position map (each position pass of
-!> an open chain is followed by a velocity pass) and rotated by R_B here; its
+!> The geometry is the forward surface joint's in the coordinates of the
+!> surface's chart (`local_geometry`; B's own unless the chart changed),
+!> evaluated in the position map (each position pass of an open chain is
+!> followed by a velocity pass) and rotated into the world here; its
 !> singular points are the forward joint's (extrapolated rates, rule (3.40)).
+!>
+!> Charts: an ellipsoid's (3.57) is singular at its poles v = +-pi/2 (r_u = 0:
+!> the Darboux frame and u' are undefined there), and an egg that stands up
+!> brings its contact point to the tip of its long axis, a pole when that axis
+!> is the shape's z. Given the turn phi before it (`turn`, the open chain of
+!> contact_pair), the joint watches cos v - cos(chart_limit) (kinetostatics_
+!> state's chart interface; limit 1.4 rad = 80 degrees) and at its zero
+!> changes to the chart of the same ellipsoid whose poles lie on the body
+!> axis along which the contact point lies least far out
+!> (geometry_elementary's ellipsoid_pole_chart, r_B = P r'): the point, so
+!> (u, v), is then within 35 degrees of the new chart's equator. The motion
+!> is kept: (u, v) become the new chart's parameters of the same point and
+!> (u', v') those of the same velocity over the surface; the two charts'
+!> Darboux frames share the normal and differ by a turn beta about it, so phi
+!> takes beta and phi' the difference of their rates. With the chart,
+!> R_B = (R_in M) D'^T P^T and the world columns are (R_in M) D'^T times the
+!> chart's (D' the chart's Darboux axes). The chart in use is written to the
+!> scalar `chart_scalar` (the pole axis: 1, 2, 3 for B's x, y, z) for the
+!> closure monitor, which measures with the same chart.
 module kinetostatics_inverse_surface_joint
   use base_kinds, only: wp
   use base_status, only: status_t
   use base_vector, only: cross
   use geometry_surface, only: surface_t
+  use geometry_elementary, only: ellipsoid_t, ellipsoid_semi_axes, ellipsoid_pole_chart
   use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
   use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
   implicit none (type, external)
@@ -51,8 +72,18 @@ module kinetostatics_inverse_surface_joint
     ! (columns: p, g_u, g_v, t_u, t_v, g_uu, g_uv, g_vu, g_vv, h_uu, h_uv, h_vv)
     real(wp) :: geo(3, 12) = 0
     real(wp) :: omega_rel(3) = 0, w_rel(3) = 0   ! at the last velocity pass
+    ! charts (module comment): only for an ellipsoid after a turn
+    logical :: charts = .false.
+    type(ellipsoid_t) :: ellipsoid                 ! B's surface in its own chart (poles on B's z)
+    real(wp) :: chart(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])   ! r_B = P r_chart
+    integer :: var_turn = 0, var_chart = 0
+    real(wp) :: chart_limit = 1.4_wp               ! rad, |v| at which the chart changes
+    integer :: rebases = 0
   contains
     procedure :: position => isj_position
+    procedure :: chart_angle => isj_chart_angle
+    procedure :: chart_margin => isj_chart_margin
+    procedure :: rebase => isj_rebase
     procedure :: velocity => isj_velocity
     procedure :: acceleration => isj_acceleration
     procedure :: force => isj_force
@@ -66,14 +97,18 @@ contains
 
   !> K_out (body B) from K_in and (u, v) of B's surface `surface`; sigma,
   !> alpha_u, alpha_v as for the forward joint ((3.38), (3.41)); mount: the
-  !> rotation from K_in to the Darboux frame (default identity).
+  !> rotation from K_in to the Darboux frame (default identity). turn: the
+  !> scalar of a turn about K_in's z just before this joint, chart_scalar: a
+  !> scalar for the chart in use; with both, an ellipsoid changes charts near
+  !> its poles (module comment; the mount must keep z on the z axis).
   function new_inverse_surface_joint(name, frame_in, frame_out, var_u, var_v, surface, sigma, alpha_u, alpha_v, &
-                                     mount) result(e)
+                                     mount, turn, chart_scalar) result(e)
     character(len=*), intent(in) :: name
     integer, intent(in) :: frame_in, frame_out, var_u, var_v
     class(surface_t), intent(in) :: surface
     real(wp), intent(in) :: sigma, alpha_u, alpha_v
     real(wp), intent(in), optional :: mount(3, 3)
+    integer, intent(in), optional :: turn, chart_scalar
     type(inverse_surface_joint_t) :: e
     e%name = name
     e%frame_in = frame_in
@@ -82,6 +117,17 @@ contains
     e%var_v = var_v
     if (present(mount)) e%mount = mount
     e%joint = new_surface_joint(name, 1, 2, 1, 2, surface, sigma, alpha_u, alpha_v)   ! its geometry only
+    if (present(turn) .and. present(chart_scalar)) then
+      select type (surface)
+      type is (ellipsoid_t)
+        if (abs(abs(e%mount(3, 3)) - 1) <= 1e-14_wp) then
+          e%charts = .true.
+          e%ellipsoid = surface
+          e%var_turn = turn
+          e%var_chart = chart_scalar
+        end if
+      end select
+    end if
   end function new_inverse_surface_joint
 
   pure subroutine isj_position(self, frames, scalars, status)
@@ -89,23 +135,31 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: u, v, rates(3, 6), rot_m(3, 3), body(3, 12)
+    real(wp) :: u, v, rates(3, 6), rot_m(3, 3), body(3, 12), x(3, 3)
     integer :: k
     u = scalars(self%var_u)%q
     v = scalars(self%var_v)%q
     call self%joint%check_domain(u, v, status)
     if (.not. status%ok()) return
-    call self%joint%local_geometry(u, v, rates, status)   ! B's coordinates
+    call self%joint%local_geometry(u, v, rates, status)   ! the chart's coordinates
     if (.not. status%ok()) return
     associate (i => frames(self%frame_in), o => frames(self%frame_out), d => self%joint%frame%r, &
                pt => self%joint%point)
-      ! R_B = (R_in M) D^T and the rotated columns, as sums in k (no temporaries)
+      ! X = (R_in M) D^T and the rotated columns, as sums in k (no temporaries);
+      ! R_B = X P^T (module comment, "Charts"; X itself in B's own chart)
       do k = 1, 3
         rot_m(:, k) = i%rot(:, 1)*self%mount(1, k) + i%rot(:, 2)*self%mount(2, k) + i%rot(:, 3)*self%mount(3, k)
       end do
       do k = 1, 3
-        o%rot(:, k) = rot_m(:, 1)*d(k, 1) + rot_m(:, 2)*d(k, 2) + rot_m(:, 3)*d(k, 3)
+        x(:, k) = rot_m(:, 1)*d(k, 1) + rot_m(:, 2)*d(k, 2) + rot_m(:, 3)*d(k, 3)
       end do
+      if (self%rebases == 0) then
+        o%rot = x
+      else
+        do k = 1, 3
+          o%rot(:, k) = x(:, 1)*self%chart(k, 1) + x(:, 2)*self%chart(k, 2) + x(:, 3)*self%chart(k, 3)
+        end do
+      end if
       body(:, COL_P) = pt%r
       body(:, COL_GU) = rates(:, 1)
       body(:, COL_GV) = rates(:, 2)
@@ -116,7 +170,7 @@ contains
       body(:, COL_HUV) = pt%ruv
       body(:, COL_HVV) = pt%rvv
       do k = 1, 12
-        self%geo(:, k) = o%rot(:, 1)*body(1, k) + o%rot(:, 2)*body(2, k) + o%rot(:, 3)*body(3, k)
+        self%geo(:, k) = x(:, 1)*body(1, k) + x(:, 2)*body(2, k) + x(:, 3)*body(3, k)
       end do
       o%r = i%r - self%geo(:, COL_P)
     end associate
@@ -192,6 +246,84 @@ contains
                                   - dot_product(g(:, COL_TV), f)
     end associate
   end subroutine isj_force
+
+  !> v decides the chart (module comment), if the joint changes charts.
+  pure integer function isj_chart_angle(self) result(k)
+    class(inverse_surface_joint_t), intent(in) :: self
+    k = 0
+    if (self%charts) k = self%var_v
+  end function isj_chart_angle
+
+  !> cos v - cos(chart_limit): positive inside the chart, zero at its edge.
+  pure real(wp) function isj_chart_margin(self, angle) result(g)
+    class(inverse_surface_joint_t), intent(in) :: self
+    real(wp), intent(in) :: angle
+    g = cos(angle) - cos(self%chart_limit)
+  end function isj_chart_margin
+
+  !> Changes to the chart whose poles are farthest from the contact point
+  !> (module comment), keeping the motion: needs (u, v), phi and their rates.
+  pure subroutine isj_rebase(self, scalars)
+    class(inverse_surface_joint_t), intent(inout) :: self
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t) :: status
+    type(ellipsoid_t) :: chart_surface
+    real(wp) :: ud, vd, u, v, rates(3, 6), r(3), w(3), omega_old(3), omega_new(3), d_old(3, 3), d_new(3, 3), &
+                abc(3), p(3, 3), tu(3), tv(3), a(2, 2), rhs(2), det, ud_new, vd_new, turn(3, 3), axis(3)
+    integer :: k
+    if (.not. self%charts) return
+    ud = scalars(self%var_u)%qd
+    vd = scalars(self%var_v)%qd
+    ! the old chart's geometry in B's coordinates (P times the chart's)
+    call self%joint%local_geometry(scalars(self%var_u)%q, scalars(self%var_v)%q, rates, status)
+    if (.not. status%ok()) return
+    associate (pt => self%joint%point)
+      r = matmul(self%chart, pt%r)
+      w = matmul(self%chart, pt%ru*ud + pt%rv*vd)            ! the point's velocity over the surface
+      omega_old = matmul(self%chart, rates(:, 1)*ud + rates(:, 2)*vd)   ! the Darboux frame's turn rate
+      d_old = matmul(self%chart, self%joint%frame%r)
+    end associate
+    ! the pole axis along which the point lies least far out
+    abc = ellipsoid_semi_axes(self%ellipsoid)
+    k = minloc(abs(r/abc), dim=1)
+    call ellipsoid_pole_chart(self%ellipsoid, k, chart_surface, p)
+    r = matmul(transpose(p), r)   ! the point in the new chart's coordinates
+    abc = ellipsoid_semi_axes(chart_surface)
+    v = asin(max(-1.0_wp, min(1.0_wp, r(3)/abc(3))))
+    u = atan2(r(2)/abc(2), r(1)/abc(1))
+    self%joint%surface = chart_surface
+    self%chart = p
+    call self%joint%local_geometry(u, v, rates, status)
+    if (.not. status%ok()) return
+    tu = matmul(p, self%joint%point%ru)
+    tv = matmul(p, self%joint%point%rv)
+    d_new = matmul(p, self%joint%frame%r)
+    ! (u', v') of the same velocity over the surface (least squares: w is tangent)
+    a = reshape([dot_product(tu, tu), dot_product(tv, tu), dot_product(tu, tv), dot_product(tv, tv)], [2, 2])
+    rhs = [dot_product(tu, w), dot_product(tv, w)]
+    det = a(1, 1)*a(2, 2) - a(1, 2)*a(2, 1)
+    ud_new = (rhs(1)*a(2, 2) - a(1, 2)*rhs(2))/det
+    vd_new = (a(1, 1)*rhs(2) - a(2, 1)*rhs(1))/det
+    omega_new = matmul(p, rates(:, 1)*ud_new + rates(:, 2)*vd_new)
+    ! phi: K_B = K_in M D^T is kept when K_in turns by M D_old^T D_new M^T
+    ! (a turn about z), and omega_B when phi' takes the change of the
+    ! Darboux frame's turn rate along K_in's z (in B: D_old M^T e_z)
+    turn = matmul(matmul(self%mount, matmul(transpose(d_old), d_new)), transpose(self%mount))
+    axis = matmul(d_old, self%mount(3, :))
+    associate (phi => scalars(self%var_turn))
+      phi%q = phi%q + atan2(turn(2, 1), turn(1, 1))
+      phi%qd = phi%qd + dot_product(axis, omega_new - omega_old)
+      phi%qdd = 0
+    end associate
+    scalars(self%var_u)%q = u
+    scalars(self%var_v)%q = v
+    scalars(self%var_u)%qd = ud_new
+    scalars(self%var_v)%qd = vd_new
+    scalars(self%var_u)%qdd = 0
+    scalars(self%var_v)%qdd = 0
+    scalars(self%var_chart)%q = k
+    self%rebases = self%rebases + 1
+  end subroutine isj_rebase
 
   !> Links for kinetostatics_closure_blocks: K_B moves rigidly with K_in while (u, v) rest.
   pure subroutine isj_links(self, links)

@@ -25,7 +25,8 @@
 !>                   law (e.g. switch itself and ask for a restart);
 !>   charts          the chart margin of every element with a chart whose
 !>                   deciding coordinate is integrated (a free rotation:
-!>                   cos q2 - cos(limit), kinetostatics_free_rotation): at
+!>                   cos q2 - cos(limit), kinetostatics_free_rotation; an
+!>                   ellipsoid's inverse surface joint: cos v - cos(limit)): at
 !>                   zero the chart is re-based on the current pose (q and s
 !>                   change, the motion does not) and the integrator restarts.
 !> Root values need the state at (t, y): an edge whose u or v is a generalized

@@ -132,7 +132,8 @@ contains
     allocate (links%frames_in(0), links%scalars_in(0), links%frames_out(0), links%scalars_out(0))
   end subroutine element_links
 
-  !> Elements with a chart of their own coordinates (a free rotation) return
+  !> Elements with a chart of their own coordinates (a free rotation, an
+  !> ellipsoid's inverse surface joint) return
   !> the scalar whose value decides when the chart must change (default 0: no
   !> chart). The mechanism's model watches chart_margin (positive inside the
   !> chart) as a root function and calls rebase at its zero, with positions and
