@@ -52,6 +52,7 @@ module numerics_event_driver
     procedure(record_i), deferred :: record
     procedure :: handle_event => default_handle_event
     procedure :: progress => default_progress
+    procedure :: diagnose => default_diagnose
   end type event_system_t
 
   abstract interface
@@ -127,6 +128,18 @@ contains
     if (t_end < huge(t_end)) fraction = (t - t_start)/(t_end - t_start)
     text = 't = '//format_short(t)//' s'
   end subroutine default_progress
+
+  !> What makes the model hard to integrate at (t, y), in the user's terms,
+  !> for the message of a run that fails by its step count ('' when nothing
+  !> is known: the default).
+  function default_diagnose(self, t, y) result(text)
+    class(event_system_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    character(len=:), allocatable :: text
+    associate (unused => self, unused_t => t, unused_y => y)
+    end associate
+    text = ''
+  end function default_diagnose
 
   !> Runs `system` from (t_start, y0). Returns with status ok when the run
   !> reached t_end or an event stopped it (result%outcome says which); with
@@ -253,20 +266,16 @@ contains
       type(status_t), intent(inout) :: st
       type(ode_stats_t) :: s
       real(wp) :: mean_step
-      character(len=:), allocatable :: hint
       s = integrator%statistics()
-      hint = ''
-      if (options%ode%method == ODE_ADAMS) hint = '; the model looks stiff (for example bodies at rest '// &
-        'under Coulomb friction): use method = ''bdf'' in &solver'
       if (s%steps - steps_at_output > options%ode%max_steps) then
         call set_status(st, STATUS_SOLVER, label//': more than max_steps = '// &
           format_short(real(options%ode%max_steps, wp))//' internal steps between two outputs, at t = '// &
-          format_short(t)//' s (raise max_steps in &solver)'//hint)
+          format_short(t)//' s (raise max_steps in &solver)'//hint())
         return
       end if
       if (options%max_steps_total > 0 .and. s%steps > options%max_steps_total) then
         call set_status(st, STATUS_SOLVER, label//': runaway integration, more than '// &
-          format_short(real(options%max_steps_total, wp))//' internal steps by t = '//format_short(t)//' s'//hint)
+          format_short(real(options%max_steps_total, wp))//' internal steps by t = '//format_short(t)//' s'//hint())
         return
       end if
       if (options%min_mean_step > 0 .and. s%steps >= options%guard_steps) then
@@ -275,10 +284,25 @@ contains
           call set_status(st, STATUS_SOLVER, label//': runaway integration, '// &
             format_short(real(s%steps, wp))//' internal steps for '//format_short(t - options%t_start)// &
             ' s simulated (mean step '//format_short(mean_step)//' s, below '// &
-            format_short(options%min_mean_step)//' s)'//hint)
+            format_short(options%min_mean_step)//' s)'//hint())
         end if
       end if
     end subroutine check_runaway
+
+    !> What the model knows about the trouble at (t, y), and for Adams the
+    !> stiffness hint.
+    function hint() result(text)
+      character(len=:), allocatable :: text, stiff
+      stiff = ''
+      if (options%ode%method == ODE_ADAMS) stiff = 'the model looks stiff (for example bodies at rest '// &
+        'under Coulomb friction): use method = ''bdf'' in &solver'
+      text = system%diagnose(t, y)
+      if (len(text) > 0 .and. len(stiff) > 0) then
+        text = '; '//text//'; if not that, '//stiff
+      else if (len(text) + len(stiff) > 0) then
+        text = '; '//text//stiff
+      end if
+    end function hint
 
     subroutine report_progress()
       real(wp) :: fraction, interval

@@ -29,9 +29,11 @@ module test_event_driver_systems
   !> y' = -k (y - cos t): stiff for large k.
   type, extends(event_system_t) :: stiff_t
     real(wp) :: k = 1e6_wp
+    character(len=:), allocatable :: diagnosis   ! what diagnose says ('' if unset)
   contains
     procedure :: rhs => stiff_rhs
     procedure :: record => stiff_record
+    procedure :: diagnose => stiff_diagnose
   end type stiff_t
 
 contains
@@ -115,6 +117,16 @@ contains
     end associate
     ydot(1) = -self%k*(y(1) - cos(t))
   end subroutine stiff_rhs
+
+  function stiff_diagnose(self, t, y) result(text)
+    class(stiff_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    character(len=:), allocatable :: text
+    associate (unused_y => y)
+    end associate
+    text = ''
+    if (allocated(self%diagnosis)) text = self%diagnosis//' (t > 0: '//merge('yes', 'no ', t > 0)//')'
+  end function stiff_diagnose
 
   subroutine stiff_record(self, t, y, kind, status)
     class(stiff_t), intent(inout) :: self
@@ -232,6 +244,13 @@ contains
     call check(result%outcome == DRIVE_FAILED, 'stiff/adams: outcome failed')
     call check(index(status%text(), 'bdf') > 0, 'stiff/adams: message suggests bdf: '//status%text())
     call check(result%t < 1, 'stiff/adams: stopped early')
+    ! the model's own diagnosis at the failure state leads the message
+    stiff%diagnosis = 'k is large'
+    call drive(stiff, [1.0_wp], options, result, status)
+    call check(index(status%text(), '; k is large (t > 0: yes); if not that, the model looks stiff') > 0 .and. &
+               index(status%text(), 'bdf') > 0, 'stiff/adams: the model''s diagnosis, then the bdf hint: '// &
+               status%text())
+    deallocate (stiff%diagnosis)
     options%ode%method = ODE_BDF
     call drive(stiff, [1.0_wp], options, result, status)
     call check(status%ok(), 'stiff/bdf: runs: '//status%text())
