@@ -4,9 +4,11 @@
 curve tan(theta) = tan(theta_0) exp(-mu q (t - t_0)), thesis (3.88) with the
 corrected sign of q = 5 g (b^2 - a^2) / (2 (a^2 + b^2)) (METHOD-PART2 A.4.2).
 
-theta is the angle between the egg's long axis (body y, the semi-axis b of
-the ellipsoid (3.57)) and the vertical. mu, a, b and g are read from the
-input stored in each file. The MS curve of each run passes through the
+theta is the angle between the egg's symmetry axis (the body axis whose
+semi-axis differs from the other two: body y in inputs/contact/egg.nml,
+a = c; body z for an egg described with a = b) and the vertical. mu, the
+semi-axes and g are read from the input stored in each file; an ellipsoid
+without two equal semi-axes is refused (Moffatt-Shimomura is for spheroids). The MS curve of each run passes through the
 simulated theta = 45 degrees; the legend gives the fitted slope of
 ln tan(theta) over 10..60 degrees as a fraction of -mu q.
 
@@ -36,22 +38,32 @@ def egg_parameters(text):
     for contact in group_values(text, "contact"):
         if "mu" in contact:
             mu = float(contact["mu"])
-    a = b = None
+    a = b = axis = None
     for shape in group_values(text, "shape"):
         if shape.get("kind", "").strip("'\"") == "ellipsoid":
-            a, b = float(shape["a"]), float(shape["b"])
+            semi = [float(shape[k]) for k in ("a", "b", "c")]
+            # the symmetry axis: the one whose semi-axis differs from the other two
+            for i in range(3):
+                j, k = (i + 1) % 3, (i + 2) % 3
+                if semi[j] == semi[k]:
+                    axis, a, b = i, semi[j], semi[i]
+                    break
+            if axis is None:
+                raise SystemExit(f"error: the egg's ellipsoid has semi-axes {semi}: no two are equal, "
+                                 "Moffatt-Shimomura's curve needs a spheroid")
     g = 9.81
     for model in group_values(text, "contact_model"):
         if "gravity" in model:
             g = np.linalg.norm([float(x) for x in model["gravity"].split(",")])
     if mu is None or a is None:
         raise SystemExit("the input stored in the file has no friction mu or no ellipsoid")
-    return mu, a, b, g
+    return mu, a, b, g, axis
 
 
-def tilt(f):
+def tilt(f, axis):
+    """theta of body axis `axis` (0, 1, 2: x, y, z) against the vertical."""
     rot = f["contact/bodies/egg/rotation"][...]       # (n, column, row)
-    return np.degrees(np.arccos(np.clip(np.abs(rot[:, 1, 2]), 0.0, 1.0)))
+    return np.degrees(np.arccos(np.clip(np.abs(rot[:, axis, 2]), 0.0, 1.0)))
 
 
 def main():
@@ -62,10 +74,10 @@ def main():
         if "contact/bodies/egg/rotation" not in f:
             raise SystemExit(f"error: {path}: a contact result without a body named 'egg'")
         t = f["contact/time"][...]
-        theta = tilt(f)
         text = r.input_text
         title = re.search(r"title\s*=\s*'([^']*)'", text)
-        mu, a, b, g = egg_parameters(text)
+        mu, a, b, g, axis = egg_parameters(text)
+        theta = tilt(f, axis)
         q = 5 * g * (b**2 - a**2) / (2 * (a**2 + b**2))
         lt = np.log(np.tan(np.radians(np.maximum(theta, 1e-6))))
         window = (theta > 10) & (theta < 60)

@@ -106,7 +106,7 @@ contains
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
     call report(scenario, sys%series, result%stats, result%cpu, q_units, file%final_path(), run, complete, &
-                message, outcome, write_status)
+                message, outcome, sys%chart_changes, write_status)
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
   end subroutine run_mechanism
 
@@ -142,8 +142,9 @@ contains
 
   !> The printed summary (angles in degrees) and, with --summary-json, the
   !> same numbers as JSON (SI).
-  subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, outcome, status)
+  subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, outcome, chart_changes, status)
     character(len=*), intent(in) :: scenario, path, message, outcome
+    integer, intent(in) :: chart_changes   ! coordinates re-based on a new chart (docs/multibody.md, events)
     type(mechanism_series_t), intent(in) :: s
     type(ode_stats_t), intent(in) :: stats
     real(wp), intent(in) :: cpu
@@ -192,6 +193,8 @@ contains
                        '(E(t) - E(0) - work, same scale)')
     end if
     if (s%r > 0) call summary%add('closure_residual_max', 'closure residual max', maxval(s%closure(:n)), 'm')
+    if (chart_changes > 0) call summary%add_count('chart_changes', 'chart changes', chart_changes, &
+                                                  '(coordinates re-based, the motion continuous)')
     call summary%add_count('steps', 'integrator', int(stats%steps), 'steps')
     call summary%add_count('rhs_evaluations', 'right-hand sides', int(stats%rhs_evaluations), 'evaluations')
     call summary%add('cpu_time', 'CPU time', cpu, 's')

@@ -28,5 +28,26 @@ link optimization design_optimize_table_4_12
 "$python" "$root/tests/cli/check_plot_scripts.py" "$root/scripts" "$work" "$work/water.h5" "$work/sled.h5" \
   "$root/README.md" water=water slide=geometry point_mass=point_mass pendulum=pendulum fourbar=fourbar sled=sled \
   ride=ride contact=contact egg=contact optimization=optimize || fail "plot scripts"
+# plot_egg.py's tilt is the symmetry axis's: the egg described with its long
+# axis on z (a chart change as it stands up) draws the shipped egg's curve
+"$python" - "$root/scripts" "$results/contact_egg.h5" "$results/contact_egg_long_axis_z.h5" <<'PY' || fail "plot_egg: the long axis on z"
+import sys
+sys.path.insert(0, sys.argv[1])
+import h5py
+import numpy as np
+import plot_egg
+theta = []
+for path in sys.argv[2:]:
+    with h5py.File(path, "r") as f:
+        text = f["/input/namelist"].asstr()[()]
+        mu, a, b, g, axis = plot_egg.egg_parameters(text)
+        theta.append((axis, f["contact/time"][...], plot_egg.tilt(f, axis)))
+(axis_y, t_y, theta_y), (axis_z, t_z, theta_z) = theta
+common, i_y, i_z = np.intersect1d(t_y, t_z, return_indices=True)   # the z egg has a record at its chart change
+worst = np.abs(theta_y[i_y] - theta_z[i_z]).max()
+assert (axis_y, axis_z) == (1, 2), (axis_y, axis_z)
+assert len(common) == len(t_y) and len(t_y) > 100 and worst < 1e-6, (len(common), len(t_y), worst)
+print(f"plot_egg: long axis on z against the shipped egg, theta within {worst:.1e} degrees")
+PY
 echo "10 plot scripts, $failures failures"
 [ "$failures" = 0 ]
