@@ -73,8 +73,7 @@ module rider_model
   end type rider_layout_t
 
   real(wp), parameter :: sigma = 1, alpha_u = 1, alpha_v = 0
-  real(wp), parameter :: ex(3) = [1.0_wp, 0.0_wp, 0.0_wp], ey(3) = [0.0_wp, 1.0_wp, 0.0_wp], &
-    ez(3) = [0.0_wp, 0.0_wp, 1.0_wp]
+  real(wp), parameter :: ey(3) = [0.0_wp, 1.0_wp, 0.0_wp], ez(3) = [0.0_wp, 0.0_wp, 1.0_wp]
 
 contains
 

@@ -93,14 +93,12 @@ contains
     type(status_t) :: st
     real(wp) :: err_pose, err_motion, v_after
     integer :: k, changes
-    logical :: kept_inside
     surface = ellipsoid_t(1.2_wp, 0.8_wp, 0.6_wp, st)
     turn = new_revolute('turn', 1, 2, 3, [0.0_wp, 0.0_wp, 1.0_wp])
     err_pose = 0
     err_motion = 0
     v_after = 0
     changes = 0
-    kept_inside = .true.
     do k = 1, 12
       inverse = new_inverse_surface_joint('isj', 2, 3, 1, 2, surface, 1.0_wp, 1.0_wp, 0.0_wp, flip, 3, 4)
       call frame_motion(1, 0.21_wp*k - 1.3_wp, frames(1))
