@@ -268,6 +268,7 @@ contains
     type(scalar_state_t), intent(inout) :: scalars(:)
     type(status_t) :: status
     type(ellipsoid_t) :: chart_surface
+    type(surface_joint_t) :: trial
     real(wp) :: ud, vd, u, v, rates(3, 6), r(3), w(3), omega_old(3), omega_new(3), d_old(3, 3), d_new(3, 3), &
                 abc(3), p(3, 3), tu(3), tv(3), a(2, 2), rhs(2), det, ud_new, vd_new, turn(3, 3), axis(3)
     integer :: k
@@ -291,10 +292,14 @@ contains
     abc = ellipsoid_semi_axes(chart_surface)
     v = asin(max(-1.0_wp, min(1.0_wp, r(3)/abc(3))))
     u = atan2(r(2)/abc(2), r(1)/abc(1))
-    self%joint%surface = chart_surface
-    self%chart = p
-    call self%joint%local_geometry(u, v, rates, status)
+    ! the new chart on a copy: if it cannot be evaluated nothing changes (the
+    ! run then meets the pole and fails there, named by the model's diagnosis)
+    trial = self%joint
+    trial%surface = chart_surface
+    call trial%local_geometry(u, v, rates, status)
     if (.not. status%ok()) return
+    self%joint = trial
+    self%chart = p
     tu = matmul(p, self%joint%point%ru)
     tv = matmul(p, self%joint%point%rv)
     d_new = matmul(p, self%joint%frame%r)
