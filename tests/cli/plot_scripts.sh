@@ -31,6 +31,7 @@ link optimization design_optimize_table_4_12
 # plot_egg.py's tilt is the symmetry axis's: the egg described with its long
 # axis on z (a chart change as it stands up) draws the shipped egg's curve
 "$python" - "$root/scripts" "$results/contact_egg.h5" "$results/contact_egg_long_axis_z.h5" <<'PY' || fail "plot_egg: the long axis on z"
+import json
 import sys
 sys.path.insert(0, sys.argv[1])
 import h5py
@@ -47,6 +48,12 @@ common, i_y, i_z = np.intersect1d(t_y, t_z, return_indices=True)   # the z egg h
 worst = np.abs(theta_y[i_y] - theta_z[i_z]).max()
 assert (axis_y, axis_z) == (1, 2), (axis_y, axis_z)
 assert len(common) == len(t_y) and len(t_y) > 100 and worst < 1e-6, (len(common), len(t_y), worst)
+# the summary counts the chart change (the shipped egg has none)
+with open(sys.argv[3].replace(".h5", ".json")) as f:
+    text = f.read()
+assert '"chart_changes": 1,' in text, text[:400]
+with open(sys.argv[2].replace(".h5", ".json")) as f:
+    assert "chart_changes" not in f.read()
 print(f"plot_egg: long axis on z against the shipped egg, theta within {worst:.1e} degrees")
 PY
 echo "10 plot scripts, $failures failures"
