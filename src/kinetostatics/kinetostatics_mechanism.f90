@@ -95,7 +95,7 @@ module kinetostatics_mechanism
   use numerics_nonlinear, only: nonlinear_system_t, nonlinear_options_t, nonlinear_result_t, &
     solve_nonlinear
   use numerics_linear_algebra, only: lu_factor, lu_solve, lu_reciprocal_condition, one_norm, cholesky_factor, &
-    cholesky_solve
+    cholesky_solve, transposed_product, symmetric_transposed_product
   use kinetostatics_state, only: element_t, element_box_t, frame_state_t, scalar_state_t
   use kinetostatics_surface_joint, only: surface_joint_t, domain_edge_margin
   use kinetostatics_mass, only: mass_element_t
@@ -1576,11 +1576,13 @@ contains
         call full_mass_column(self, i)
       end do
     end if
-    do i = 1, self%ns   ! symmetric part's lower triangle, the factor's input (no temporary)
-      do k = i, self%ns
-        self%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
+    if (.not. self%twist_route) then   ! (the twist route's M is symmetric and left its lower triangle in chol)
+      do i = 1, self%ns   ! symmetric part's lower triangle, the factor's input (no temporary)
+        do k = i, self%ns
+          self%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
+        end do
       end do
-    end do
+    end if
     call cholesky_factor(self%chol, lapack, column)
     if (.not. lapack%ok()) then
       call set_status(status, STATUS_DOMAIN, 'the mass matrix is not positive definite: generalized '// &
@@ -1725,7 +1727,9 @@ contains
       call add_inertial_wrenches(self%ns, size(self%tracked), self%mass_slot(b), mass, s, inertia_w, self%twist, &
                                  self%wrench)
     end do
-    call pair_powers(self%ns, self%ns, size(self%tracked), self%twist, self%wrench, self%mass, .true.)
+    ! M(j, i) = -(twist_j . wrench_i), and its lower triangle, the factor's input
+    call symmetric_transposed_product(6*size(self%tracked), self%ns, self%twist, self%wrench, -1.0_wp, self%mass, &
+                                      self%chol)
     if (size(self%contacts) > 0) call twist_normal_forces(self)
   end subroutine twist_mass_matrix
 
@@ -1755,36 +1759,6 @@ contains
     end do
   end subroutine add_inertial_wrenches
 
-  !> out(k, i) = sum over the tracked frames of twists(:, :, k) . wrenches(:, :, i)
-  !> (a power); mass: out = -that, only k <= i computed and mirrored (M,
-  !> symmetric by construction).
-  pure subroutine pair_powers(n_twists, n_wrenches, nt, twists, wrenches, out, mass)
-    integer, intent(in) :: n_twists, n_wrenches, nt
-    real(wp), intent(in) :: twists(6, nt, n_twists), wrenches(6, nt, n_wrenches)
-    real(wp), intent(out) :: out(n_twists, n_wrenches)
-    logical, intent(in) :: mass
-    real(wp) :: p
-    integer :: i, k, t, last
-    do i = 1, n_wrenches
-      last = n_twists
-      if (mass) last = i
-      do k = 1, last
-        p = 0
-        do t = 1, nt
-          p = p + twists(1, t, k)*wrenches(1, t, i) + twists(2, t, k)*wrenches(2, t, i) &
-                + twists(3, t, k)*wrenches(3, t, i) + twists(4, t, k)*wrenches(4, t, i) &
-                + twists(5, t, k)*wrenches(5, t, i) + twists(6, t, k)*wrenches(6, t, i)
-        end do
-        if (mass) then
-          out(k, i) = -p
-          out(i, k) = -p
-        else
-          out(k, i) = p
-        end if
-      end do
-    end do
-  end subroutine pair_powers
-
   !> Column i of the twists by passes over the elements a unit s'_i moves
   !> and the blocks it moves (kinetostatics_closure_blocks,
   !> build_mass_columns): one acceleration pass, the touched blocks' solve,
@@ -1793,39 +1767,46 @@ contains
   subroutine unit_column(self, i)
     class(mechanism_t), intent(inout) :: self
     integer, intent(in) :: i
-    integer :: l, m, j
-    associate (bl => self%blocks, x => self%work_x, speed => self%q(self%speeds(i)))
-      associate (pass => bl%mass_pass(bl%mass_pass_start(i):bl%mass_pass_start(i + 1) - 1), &
-                 touched => bl%touched(bl%touched_start(i):bl%touched_start(i + 1) - 1))
-        call clear_before(self, i)
-        self%scalars(speed)%qdd = 1
-        call accelerate(self, pass)
-        if (size(touched) > 0) then
-          do l = 1, size(touched)
-            do m = 1, size(bl%blocks(touched(l))%members)
-              j = bl%blocks(touched(l))%members(m)
-              x(j) = self%scalars(self%rows(j))%qdd
-            end do
-          end do
-          call bl%solve(self%nd > 0, x, .false., touched)
-          do l = 1, size(touched)
-            do m = 1, size(bl%blocks(touched(l))%members)
-              j = bl%blocks(touched(l))%members(m)
-              self%scalars(self%unknowns(j))%qdd = -x(j)
-            end do
-          end do
-          call accelerate(self, bl%second_pass(bl%second_pass_start(i):bl%second_pass_start(i + 1) - 1))
-        end if
-        call keep_twists(self, self%twist(:, :, i))
-        ! the sources back to rest (the outputs: clear_before)
-        self%scalars(speed)%qdd = 0
+    integer :: l, m, j, p, speed, first, last
+    ! index bounds, not associated slices: descriptors cost more than the
+    ! work for the usual column that touches no block
+    speed = self%q(self%speeds(i))
+    first = self%blocks%touched_start(i)
+    last = self%blocks%touched_start(i + 1) - 1
+    call clear_before(self, i)
+    self%scalars(speed)%qdd = 1
+    do p = self%blocks%mass_pass_start(i), self%blocks%mass_pass_start(i + 1) - 1
+      call self%elements(self%blocks%mass_pass(p))%e%acceleration(self%frames, self%scalars)
+    end do
+    if (last >= first) then
+      associate (bl => self%blocks, x => self%work_x, touched => self%blocks%touched(first:last))
         do l = 1, size(touched)
           do m = 1, size(bl%blocks(touched(l))%members)
-            self%scalars(self%unknowns(bl%blocks(touched(l))%members(m)))%qdd = 0
+            j = bl%blocks(touched(l))%members(m)
+            x(j) = self%scalars(self%rows(j))%qdd
+          end do
+        end do
+        call bl%solve(self%nd > 0, x, .false., touched)
+        do l = 1, size(touched)
+          do m = 1, size(bl%blocks(touched(l))%members)
+            j = bl%blocks(touched(l))%members(m)
+            self%scalars(self%unknowns(j))%qdd = -x(j)
           end do
         end do
       end associate
-    end associate
+      call accelerate(self, self%blocks%second_pass(self%blocks%second_pass_start(i): &
+                                                    self%blocks%second_pass_start(i + 1) - 1))
+    end if
+    call keep_twists(self, self%twist(:, :, i))
+    ! the sources back to rest (the outputs: clear_before)
+    self%scalars(speed)%qdd = 0
+    do l = first, last
+      associate (members => self%blocks%blocks(self%blocks%touched(l))%members)
+        do m = 1, size(members)
+          self%scalars(self%unknowns(members(m)))%qdd = 0
+        end do
+      end associate
+    end do
   end subroutine unit_column
 
   !> The normal-force map of every contact, N = -normal_sign nu_c . W for
@@ -1884,7 +1865,7 @@ contains
         self%nu(:, :, c) = self%nu(:, :, c) - self%work_x(self%moving_unknowns(k))*self%unknown_twist(:, :, k)
       end do
     end do
-    call pair_powers(size(self%contacts), self%ns, size(self%tracked), self%nu, self%wrench, self%g_mat, .false.)
+    call transposed_product(6*size(self%tracked), size(self%contacts), self%ns, self%nu, self%wrench, self%g_mat)
     do c = 1, size(self%contacts)
       factor = -self%contacts(c)%normal_sign   ! +-1: the products are exact
       do i = 1, self%ns
@@ -1923,9 +1904,9 @@ contains
         call self%normal_forces(self%h_mat(:, k))
         cycle
       end if
-      call pair_powers(self%ns, 1, size(self%tracked), self%twist, self%load_wrench, self%p_mat(:, k), .false.)
-      call pair_powers(size(self%contacts), 1, size(self%tracked), self%nu, self%load_wrench, self%h_mat(:, k), &
-                       .false.)
+      call transposed_product(6*size(self%tracked), self%ns, 1, self%twist, self%load_wrench, self%p_mat(:, k))
+      call transposed_product(6*size(self%tracked), size(self%contacts), 1, self%nu, self%load_wrench, &
+                              self%h_mat(:, k))
       do c = 1, size(self%contacts)
         self%h_mat(c, k) = -self%contacts(c)%normal_sign*self%h_mat(c, k)
       end do

@@ -1,11 +1,13 @@
 !> numerics_linear_algebra: LU, Cholesky, QR and the normal-matrix inverse against
 !> matrices with known answers, and the translation of LAPACK's info; the small
-!> systems' own LU and Cholesky against LAPACK's (same pivots, same factors).
+!> systems' own LU and Cholesky against LAPACK's (same pivots, same factors);
+!> the products a^T b of the mass matrix against the plain loop, bit for bit.
 program test_linear_algebra
   use base_kinds, only: wp
   use base_status, only: status_t, STATUS_DOMAIN
   use numerics_linear_algebra, only: lu_factor, lu_solve, lu_reciprocal_condition, one_norm, &
-    cholesky_factor, cholesky_solve, normal_matrix_inverse, triangular_inverse, small_order
+    cholesky_factor, cholesky_solve, normal_matrix_inverse, triangular_inverse, small_order, &
+    transposed_product, symmetric_transposed_product
   use testing, only: check, check_close, check_close_array, finish_tests
   implicit none (type, external)
 
@@ -18,6 +20,7 @@ program test_linear_algebra
   call cholesky_systems()
   call normal_inverse()
   call small_against_lapack()
+  call pair_products()
   call finish_tests('test_linear_algebra')
 
 contains
@@ -199,4 +202,49 @@ contains
       deallocate (a, x, ipiv, ipiv_ref)
     end do
   end subroutine small_against_lapack
+  !> transposed_product and symmetric_transposed_product on random input
+  !> against the plain loop summed from 0 in index order, compared exactly
+  !> (the kernels promise that order; the 6-vector case is unrolled), for the
+  !> lengths 6 (unrolled), 12 and 0 and a non-square product.
+  subroutine pair_products()
+    integer, parameter :: lengths(3) = [6, 12, 0]
+    real(wp), allocatable :: a(:, :), b(:, :), c(:, :), full(:, :), lower(:, :), ref(:, :)
+    real(wp) :: p
+    integer :: il, l, n, m, i, k, j
+    character(len=8) :: length
+    n = 4
+    m = 3
+    do il = 1, size(lengths)
+      l = lengths(il)
+      write (length, '(i0)') l
+      allocate (a(l, n), b(l, n), c(n, m), ref(n, n), full(n, n), lower(n, n))
+      call random_number(a)
+      call random_number(b)
+      a = a - 0.5_wp
+      b = 1e3_wp*(b - 0.5_wp)   ! mixed magnitudes: an order change would show
+      do i = 1, n
+        do k = 1, n
+          p = 0
+          do j = 1, l
+            p = p + a(j, k)*b(j, i)
+          end do
+          ref(k, i) = p
+        end do
+      end do
+      call transposed_product(l, n, m, a, b, c)
+      call check(all(c == ref(:, 1:m)), 'transposed_product, length '//trim(length)//': the plain loop''s sums')
+      full = huge(1.0_wp)
+      lower = huge(1.0_wp)
+      call symmetric_transposed_product(l, n, a, b, -1.0_wp, full, lower)
+      do i = 1, n
+        do k = 1, i
+          call check(full(k, i) == -ref(k, i) .and. full(i, k) == -ref(k, i) .and. lower(i, k) == -ref(k, i), &
+                     'symmetric_transposed_product, length '//trim(length)//': -a(:, k) . b(:, i), k <= i, mirrored')
+          if (k < i) call check(lower(k, i) == huge(1.0_wp), 'symmetric_transposed_product: the upper triangle '// &
+                                'of lower untouched')
+        end do
+      end do
+      deallocate (a, b, c, ref, full, lower)
+    end do
+  end subroutine pair_products
 end program test_linear_algebra
