@@ -387,9 +387,19 @@ contains
       end if
     end do
   contains
+    !> max |a - b| / max(max |b|, 1); NaN if any difference is NaN (not usable).
+    !> One pass without temporaries: this runs at every step end.
     pure real(wp) function distance(a, b)
       real(wp), intent(in) :: a(:), b(:)
-      distance = maxval(abs(a - b))/max(maxval(abs(b)), 1.0_wp)
+      real(wp) :: largest_difference, largest_b
+      integer :: k
+      largest_difference = 0
+      largest_b = 1
+      do k = 1, size(a)
+        if (.not. abs(a(k) - b(k)) <= largest_difference) largest_difference = abs(a(k) - b(k))
+        largest_b = max(largest_b, abs(b(k)))
+      end do
+      distance = largest_difference/largest_b
     end function distance
   end function near_and_far_from_zero
 
