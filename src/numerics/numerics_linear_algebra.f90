@@ -348,6 +348,10 @@ contains
     real(wp) :: d, t
     integer :: n, i, j, k
     n = size(a, 1)
+    if (n == 5) then
+      call cholesky_factor_5(a, info)
+      return
+    end if
     info = 0
     do j = 1, n
       d = a(j, j)
@@ -383,6 +387,10 @@ contains
     real(wp) :: t
     integer :: n, i, k
     n = size(l, 1)
+    if (n == 5) then
+      call cholesky_solve_5(l, b)
+      return
+    end if
     do k = 1, n   ! L y = b
       t = b(k)
       do i = 1, k - 1
@@ -398,6 +406,63 @@ contains
       b(k) = t/l(k, k)
     end do
   end subroutine small_cholesky_solve
+
+  !> small_cholesky_factor for n = 5 (a body on a surface: the contact
+  !> mechanisms' 5 speeds): the same operations in the same order, with the
+  !> order a constant so the loops unroll completely (0.21k instructions
+  !> instead of 0.46k).
+  pure subroutine cholesky_factor_5(a, info)
+    integer, parameter :: n = 5
+    real(wp), intent(inout) :: a(n, n)
+    integer, intent(out) :: info
+    real(wp) :: d, t
+    integer :: i, j, k
+    info = 0
+    do j = 1, n
+      d = a(j, j)
+      do k = 1, j - 1
+        d = d - a(j, k)**2
+      end do
+      if (.not. d > 0) then
+        a(j, j) = d
+        info = j
+        return
+      end if
+      d = sqrt(d)
+      a(j, j) = d
+      do i = j + 1, n
+        t = a(i, j)
+        do k = 1, j - 1
+          t = t - a(i, k)*a(j, k)
+        end do
+        a(i, j) = t/d
+      end do
+    end do
+  end subroutine cholesky_factor_5
+
+  !> small_cholesky_solve for n = 5, the same way (0.10k instructions
+  !> instead of 0.31k).
+  pure subroutine cholesky_solve_5(l, b)
+    integer, parameter :: n = 5
+    real(wp), intent(in) :: l(n, n)
+    real(wp), intent(inout) :: b(n)
+    real(wp) :: t
+    integer :: i, k
+    do k = 1, n   ! L y = b
+      t = b(k)
+      do i = 1, k - 1
+        t = t - l(k, i)*b(i)
+      end do
+      b(k) = t/l(k, k)
+    end do
+    do k = n, 1, -1   ! L^T x = y
+      t = b(k)
+      do i = k + 1, n
+        t = t - l(i, k)*b(i)
+      end do
+      b(k) = t/l(k, k)
+    end do
+  end subroutine cholesky_solve_5
 
   subroutine cholesky_solve_vector(l, b, status)
     real(wp), intent(in), contiguous :: l(:, :)

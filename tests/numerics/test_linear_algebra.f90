@@ -1,7 +1,8 @@
 !> numerics_linear_algebra: LU, Cholesky, QR and the normal-matrix inverse against
 !> matrices with known answers, and the translation of LAPACK's info; the small
 !> systems' own LU and Cholesky against LAPACK's (same pivots, same factors);
-!> the products a^T b of the mass matrix against the plain loop, bit for bit.
+!> the products a^T b of the mass matrix and the Cholesky factor and solve of
+!> every small order (5 has its own kernels) against plain loops, bit for bit.
 program test_linear_algebra
   use base_kinds, only: wp
   use base_status, only: status_t, STATUS_DOMAIN
@@ -21,6 +22,7 @@ program test_linear_algebra
   call normal_inverse()
   call small_against_lapack()
   call pair_products()
+  call cholesky_orders()
   call finish_tests('test_linear_algebra')
 
 contains
@@ -247,4 +249,79 @@ contains
       deallocate (a, b, c, ref, full, lower)
     end do
   end subroutine pair_products
+  !> cholesky_factor and cholesky_solve of orders 3 to 7 (5 runs its own
+  !> kernels) on 20 random positive definite matrices each against the plain
+  !> algorithm below, compared exactly: the kernels promise its operations
+  !> in its order. And an indefinite 5 x 5 matrix fails at its column.
+  subroutine cholesky_orders()
+    real(wp), allocatable :: a(:, :), l(:, :), ref(:, :), b(:), x(:), scale(:)
+    real(wp) :: t
+    type(status_t) :: status
+    integer :: n, i, j, k, failed, trial
+    character(len=8) :: order
+    do trial = 1, 20
+      do n = 3, 7
+        write (order, '(i0)') n
+        allocate (a(n, n), b(n), scale(n))
+        call random_number(a)
+        call random_number(b)
+        call random_number(scale)
+        a = matmul(transpose(a - 0.5_wp), a - 0.5_wp) + 0.1_wp*reshape([((merge(1, 0, i == j), i = 1, n), j = 1, n)], &
+                                                                       [n, n])
+        scale = 10**(4*scale - 2)   ! D A D with D from 1e-2 to 1e2: sums of mixed magnitudes
+        do j = 1, n
+          a(:, j) = scale*a(:, j)*scale(j)
+        end do
+        b = b - 0.5_wp
+        ref = a
+        do j = 1, n   ! the plain algorithm: each entry of column j from one sum in k order
+          do i = j, n
+            t = ref(i, j)
+            do k = 1, j - 1
+              t = t - ref(i, k)*ref(j, k)
+            end do
+            if (i == j) then
+              ref(j, j) = sqrt(t)
+            else
+              ref(i, j) = t/ref(j, j)
+            end if
+          end do
+        end do
+        x = b
+        do k = 1, n   ! L y = b, L^T x = y
+          t = x(k)
+          do i = 1, k - 1
+            t = t - ref(k, i)*x(i)
+          end do
+          x(k) = t/ref(k, k)
+        end do
+        do k = n, 1, -1
+          t = x(k)
+          do i = k + 1, n
+            t = t - ref(i, k)*x(i)
+          end do
+          x(k) = t/ref(k, k)
+        end do
+        l = a
+        call cholesky_factor(l, status, failed)
+        call check(status%ok() .and. failed == 0, 'Cholesky of order '//trim(order)//': positive definite')
+        do j = 1, n
+          call check(all(l(j:, j) == ref(j:, j)), 'Cholesky of order '//trim(order)//': the plain algorithm''s factor')
+        end do
+        call cholesky_solve(l, b, status)
+        call check(all(b == x), 'Cholesky of order '//trim(order)//': the plain algorithm''s solution')
+        deallocate (a, b, scale)
+      end do
+    end do
+    allocate (a(5, 5))
+    a = 0
+    do i = 1, 5
+      a(i, i) = 2
+    end do
+    a(3, 2) = 3   ! rows 2 and 3: [2 3; 3 2], eigenvalue -1
+    a(2, 3) = 3
+    call cholesky_factor(a, status, failed)
+    call check(status%code == STATUS_DOMAIN .and. failed == 3, &
+               'indefinite 5 x 5 matrix: STATUS_DOMAIN at column 3: '//status%text())
+  end subroutine cholesky_orders
 end program test_linear_algebra
