@@ -1923,11 +1923,13 @@ contains
     end do
   end subroutine accelerate
 
-  !> The tracked frames' (alpha, a).
+  !> The tracked frames' (alpha, a). (Here and in clear_before the loops run
+  !> a few times: not unrolled, -funroll-loops' remainder dispatch costs more.)
   subroutine keep_twists(self, twists)
     class(mechanism_t), intent(in) :: self
     real(wp), intent(out) :: twists(6, size(self%tracked))
     integer :: t
+    !GCC$ unroll 1
     do t = 1, size(self%tracked)
       twists(1:3, t) = self%frames(self%tracked(t))%alpha
       twists(4:6, t) = self%frames(self%tracked(t))%a
@@ -1941,12 +1943,15 @@ contains
     class(mechanism_t), intent(inout) :: self
     integer, intent(in) :: step
     integer :: p, l, e
+    !GCC$ unroll 1
     do p = self%blocks%clear_start(step), self%blocks%clear_start(step + 1) - 1
       e = self%blocks%clear(p)
+      !GCC$ unroll 1
       do l = self%reach%frame_out_start(e), self%reach%frame_out_start(e + 1) - 1
         self%frames(self%reach%frame_out(l))%alpha = 0
         self%frames(self%reach%frame_out(l))%a = 0
       end do
+      !GCC$ unroll 1
       do l = self%reach%scalar_out_start(e), self%reach%scalar_out_start(e + 1) - 1
         self%scalars(self%reach%scalar_out(l))%qdd = 0
       end do

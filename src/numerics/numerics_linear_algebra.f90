@@ -578,7 +578,7 @@ contains
   !> sum from 0 in the order of l (the result of a plain loop, whatever the
   !> length). l = 6 (a twist and a wrench of one frame) runs unrolled: for
   !> the right-hand sides' 6-vectors a loop's control costs more than its
-  !> arithmetic.
+  !> arithmetic (and the loop over k, 1 to a few contacts, is not unrolled).
   pure subroutine transposed_product(l, n, m, a, b, c)
     integer, intent(in) :: l, n, m
     real(wp), intent(in) :: a(l, n), b(l, m)
@@ -586,6 +586,7 @@ contains
     integer :: i, k
     if (l == 6) then
       do i = 1, m
+        !GCC$ unroll 1
         do k = 1, n
           c(k, i) = dot6(a(:, k), b(:, i))
         end do
