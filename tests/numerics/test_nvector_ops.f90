@@ -8,9 +8,10 @@ program test_nvector_ops
   use fsundials_context_mod, only: FSUNContext_Create, FSUNContext_Free
   use fsundials_nvector_mod, only: N_Vector, N_Vector_Ops, FN_VDestroy, FN_VClone
   use fnvector_serial_mod, only: FN_VNew_Serial, FN_VGetArrayPointer_Serial, FN_VLinearSum_Serial, &
-    FN_VScale_Serial, FN_VWrmsNorm_Serial, FN_VScaleAddMulti_Serial
+    FN_VScale_Serial, FN_VWrmsNorm_Serial, FN_VScaleAddMulti_Serial, FN_VConst_Serial, FN_VAbs_Serial, &
+    FN_VInv_Serial, FN_VAddConst_Serial
   use numerics_nvector_ops, only: speed_up_vector, serial_data, fast_linear_sum, fast_scale, fast_wrms_norm, &
-    fast_scale_add_multi
+    fast_scale_add_multi, fast_const, fast_abs, fast_inv, fast_add_const
   use, intrinsic :: ieee_exceptions, only: ieee_invalid, ieee_get_halting_mode, ieee_set_halting_mode, &
     ieee_set_flag
   use testing, only: check, finish_tests
@@ -30,6 +31,7 @@ program test_nvector_ops
     call scales(lengths(i))
     call norms(lengths(i))
     call scale_add_multis(lengths(i))
+    call elementwise(lengths(i))
   end do
   call table_is_replaced()
   call data_as_sundials_gives_it()
@@ -175,6 +177,59 @@ contains
     call check(all_same, 'WRMS norm bitwise as N_VWrmsNorm_Serial (zero vector, NaN)')
   end subroutine norms
 
+  !> Const, abs, inverse, add-constant; z = x and z /= x (the inverse of
+  !> data without zeros: a division by zero traps in the Debug build).
+  subroutine elementwise(n)
+    integer, intent(in) :: n
+    type(N_Vector), pointer :: rx, rz, mx, mz
+    real(c_double), pointer :: d(:)
+    integer :: ic, pattern, operation
+    logical :: all_same(4)
+
+    all_same = .true.
+    do operation = 1, 4
+      do pattern = 1, 2
+        do ic = 1, size(coefficients)
+          rx => new_vector(n, ic); rz => new_vector(n, 3)
+          mx => new_vector(n, ic); mz => new_vector(n, 3)
+          if (operation == 3) then
+            d => FN_VGetArrayPointer_Serial(rx)
+            where (d == 0) d = coefficients(ic) + 2
+            d => FN_VGetArrayPointer_Serial(mx)
+            where (d == 0) d = coefficients(ic) + 2
+          end if
+          if (pattern == 2) then   ! z = x
+            rz => rx
+            mz => mx
+          end if
+          select case (operation)
+          case (1)
+            call FN_VConst_Serial(coefficients(ic), rz)
+            call fast_const(coefficients(ic), c_loc(mz))
+          case (2)
+            call FN_VAbs_Serial(rx, rz)
+            call fast_abs(c_loc(mx), c_loc(mz))
+          case (3)
+            call FN_VInv_Serial(rx, rz)
+            call fast_inv(c_loc(mx), c_loc(mz))
+          case (4)
+            call FN_VAddConst_Serial(rx, coefficients(ic), rz)
+            call fast_add_const(c_loc(mx), coefficients(ic), c_loc(mz))
+          end select
+          all_same(operation) = all_same(operation) .and. same_bits(rx, mx) .and. same_bits(rz, mz)
+          if (pattern == 1) then
+            call FN_VDestroy(rz); call FN_VDestroy(mz)
+          end if
+          call FN_VDestroy(rx); call FN_VDestroy(mx)
+        end do
+      end do
+    end do
+    call check(all_same(1), 'const bitwise as N_VConst_Serial')
+    call check(all_same(2), 'abs bitwise as N_VAbs_Serial (z = x and z /= x)')
+    call check(all_same(3), 'inverse bitwise as N_VInv_Serial (z = x and z /= x)')
+    call check(all_same(4), 'add-constant bitwise as N_VAddConst_Serial (z = x and z /= x)')
+  end subroutine elementwise
+
   !> Y = Z (CVODE's use) and Y /= Z, one vector and several.
   subroutine scale_add_multis(n)
     integer, intent(in) :: n
@@ -226,18 +281,24 @@ contains
   subroutine table_is_replaced()
     type(N_Vector), pointer :: v, clone
     type(N_Vector_Ops), pointer :: ops
-    type(c_funptr) :: expected(4)   ! assigned, not a constant (no text relocation in the PIE)
+    type(c_funptr) :: expected(8)   ! assigned, not a constant (no text relocation in the PIE)
 
     expected(1) = c_funloc(fast_linear_sum)
     expected(2) = c_funloc(fast_scale)
     expected(3) = c_funloc(fast_wrms_norm)
     expected(4) = c_funloc(fast_scale_add_multi)
+    expected(5) = c_funloc(fast_const)
+    expected(6) = c_funloc(fast_abs)
+    expected(7) = c_funloc(fast_inv)
+    expected(8) = c_funloc(fast_add_const)
     v => new_vector(10, 1)
     call check(speed_up_vector(v), 'speed_up_vector succeeds')
     clone => FN_VClone(v)
     call c_f_pointer(clone%ops, ops)
     call check(same_function(ops%nvlinearsum, expected(1)) .and. same_function(ops%nvscale, expected(2)) &
-      .and. same_function(ops%nvwrmsnorm, expected(3)) .and. same_function(ops%nvscaleaddmulti, expected(4)), &
+      .and. same_function(ops%nvwrmsnorm, expected(3)) .and. same_function(ops%nvscaleaddmulti, expected(4)) &
+      .and. same_function(ops%nvconst, expected(5)) .and. same_function(ops%nvabs, expected(6)) &
+      .and. same_function(ops%nvinv, expected(7)) .and. same_function(ops%nvaddconst, expected(8)), &
       'a clone of the sped-up vector uses the faster operations')
     call check(c_associated(ops%nvlinearcombination), 'fused linear combination switched on')
     call FN_VDestroy(clone); call FN_VDestroy(v)
