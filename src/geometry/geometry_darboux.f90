@@ -85,10 +85,13 @@ contains
   !> = 0) or where the singular rule is undefined (r_vv parallel to r_v for
   !> (3.40), r_uv parallel to r_v for the limit rule). singular_rule selects
   !> SINGULAR_RULE_THESIS (default) or SINGULAR_RULE_LIMIT (see above).
+  !> frame is filled entirely (intent(inout) only to spare the hot path the
+  !> default initialisation of a record it overwrites); on failure it is the
+  !> default frame.
   pure subroutine darboux_frame(p, sigma, alpha_u, alpha_v, frame, status, singular_rule)
     type(surface_point_t), intent(in) :: p
     real(wp), intent(in) :: sigma, alpha_u, alpha_v
-    type(darboux_frame_t), intent(out) :: frame
+    type(darboux_frame_t), intent(inout) :: frame
     type(status_t), intent(out) :: status
     integer, intent(in), optional :: singular_rule
     real(wp) :: w(3), wu(3), wv(3), wuu(3), wuv(3), wvv(3), w340(3)
@@ -99,14 +102,19 @@ contains
     if (p%order < 2) then
       call set_status(status, STATUS_INVALID_INPUT, &
                       'Darboux frame: the surface point must be evaluated to order >= 2')
+      frame = darboux_frame_t()
       return
     end if
     call check_sigma(sigma, status)
-    if (.not. status%ok()) return
+    if (.not. status%ok()) then
+      frame = darboux_frame_t()
+      return
+    end if
     limit_rule = .false.
     if (present(singular_rule)) then
       if (singular_rule /= SINGULAR_RULE_THESIS .and. singular_rule /= SINGULAR_RULE_LIMIT) then
         call set_status(status, STATUS_INVALID_INPUT, 'Darboux frame: unknown singular_rule')
+        frame = darboux_frame_t()
         return
       end if
       limit_rule = singular_rule == SINGULAR_RULE_LIMIT
@@ -123,6 +131,7 @@ contains
       norm_w = norm2(w)
       if (norm_w <= singular_tol*abs(sigma)*norm_ru*norm_rv) then
         call fail_parallel(status)
+        frame = darboux_frame_t()
         return
       end if
       wu = sigma*(local_cross(p%ruu, p%rv) + local_cross(p%ru, p%ruv))
@@ -137,11 +146,13 @@ contains
       if (norm_rv == 0) then
         call set_status(status, STATUS_DOMAIN, &
                         'Darboux frame: r_u = 0 and r_v = 0; the frame is undefined')
+        frame = darboux_frame_t()
         return
       end if
       if (p%order < 3) then
         call set_status(status, STATUS_INVALID_INPUT, 'Darboux frame: singular point (r_u = 0) ' // &
                         'needs the surface point evaluated to order 3')
+        frame = darboux_frame_t()
         return
       end if
       w340 = sigma*local_cross(p%rv, local_cross(p%rv, p%rvv))
@@ -151,6 +162,7 @@ contains
         if (norm_w <= singular_tol*abs(sigma)*norm2(p%ruv)*norm_rv) then
           call set_status(status, STATUS_DOMAIN, 'Darboux frame: singular point (r_u = 0) where ' // &
                           'r_uv is parallel to r_v; the limit of the normal is undefined')
+          frame = darboux_frame_t()
           return
         end if
         wu = sigma*local_cross(p%ruuv, p%rv)
@@ -164,6 +176,7 @@ contains
         if (norm_w <= singular_tol*abs(sigma)*norm_rv**2*norm2(p%rvv)) then
           call set_status(status, STATUS_DOMAIN, 'Darboux frame: singular point (r_u = 0) where ' // &
                           'r_vv is parallel to r_v; the rule (3.40) is undefined')
+          frame = darboux_frame_t()
           return
         end if
         wu = sigma*(local_cross(p%ruv, local_cross(p%rv, p%rvv)) + &
@@ -180,6 +193,7 @@ contains
     norm_w = norm2(w)
     if (norm_w <= singular_tol*(abs(alpha_u)*norm_ru + abs(alpha_v)*norm_rv)) then
       call fail_x_undefined(status)
+      frame = darboux_frame_t()
       return
     end if
     wu = alpha_u*p%ruu + alpha_v*p%ruv
@@ -205,6 +219,10 @@ contains
       frame%b_u = frame%a_v
       frame%d_u = frame%c_v
       frame%f_u = frame%e_v
+    else
+      frame%a_u = 0; frame%a_v = 0; frame%b_u = 0; frame%b_v = 0
+      frame%c_u = 0; frame%c_v = 0; frame%d_u = 0; frame%d_v = 0
+      frame%e_u = 0; frame%e_v = 0; frame%f_u = 0; frame%f_v = 0
     end if
     frame%second_order = second
     frame%r(:, 1) = x

@@ -43,6 +43,7 @@ module geometry_elementary
   contains
     procedure :: evaluate => ellipsoid_evaluate
     procedure :: domain => ellipsoid_domain
+    procedure :: in_domain => ellipsoid_in_domain
     procedure :: periodic_u => ellipsoid_periodic_u
     procedure :: describe => ellipsoid_describe
     procedure :: parameter_units => ellipsoid_parameter_units
@@ -404,6 +405,16 @@ contains
     end associate
     periodic = .true.
   end function apex_periodic_u
+
+  !> The default test for this box and a periodic u, without its three calls
+  !> (the inverse surface joint asks at every position).
+  pure logical function ellipsoid_in_domain(self, u, v) result(inside)
+    class(ellipsoid_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    associate (unused_self => self, unused_u => u)   ! the same box for every ellipsoid; u is periodic
+    end associate
+    inside = v >= -half_pi .and. v <= half_pi
+  end function ellipsoid_in_domain
 
   pure subroutine ellipsoid_domain(self, u_min, u_max, v_min, v_max)
     class(ellipsoid_t), intent(in) :: self

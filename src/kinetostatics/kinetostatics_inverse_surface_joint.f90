@@ -78,6 +78,8 @@ module kinetostatics_inverse_surface_joint
     real(wp) :: chart(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])   ! r_B = P r_chart
     integer :: var_turn = 0, var_chart = 0
     real(wp) :: chart_limit = 1.4_wp               ! rad, |v| at which the chart changes
+    real(wp) :: cos_chart_limit = 0                ! cos(chart_limit), set with the charts (the root
+                                                   ! function asks at every step end)
     integer :: rebases = 0
   contains
     procedure :: position => isj_position
@@ -125,6 +127,7 @@ contains
           e%ellipsoid = surface
           e%var_turn = turn
           e%var_chart = chart_scalar
+          e%cos_chart_limit = cos(e%chart_limit)
         end if
       end select
     end if
@@ -135,7 +138,7 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: u, v, rates(3, 6), rot_m(3, 3), body(3, 12), x(3, 3)
+    real(wp) :: u, v, rates(3, 6), rot_m(3, 3), x(3, 3)
     integer :: k
     u = scalars(self%var_u)%q
     v = scalars(self%var_v)%q
@@ -144,7 +147,7 @@ contains
     call self%joint%local_geometry(u, v, rates, status)   ! the chart's coordinates
     if (.not. status%ok()) return
     associate (i => frames(self%frame_in), o => frames(self%frame_out), d => self%joint%frame%r, &
-               pt => self%joint%point)
+               pt => self%joint%point, g => self%geo)
       ! X = (R_in M) D^T and the rotated columns, as sums in k (no temporaries);
       ! R_B = X P^T (module comment, "Charts"; X itself in B's own chart)
       do k = 1, 3
@@ -160,20 +163,26 @@ contains
           o%rot(:, k) = x(:, 1)*self%chart(k, 1) + x(:, 2)*self%chart(k, 2) + x(:, 3)*self%chart(k, 3)
         end do
       end if
-      body(:, COL_P) = pt%r
-      body(:, COL_GU) = rates(:, 1)
-      body(:, COL_GV) = rates(:, 2)
-      body(:, COL_TU) = pt%ru
-      body(:, COL_TV) = pt%rv
-      body(:, COL_GUU:COL_GVV) = rates(:, 3:6)
-      body(:, COL_HUU) = pt%ruu
-      body(:, COL_HUV) = pt%ruv
-      body(:, COL_HVV) = pt%rvv
-      do k = 1, 12
-        self%geo(:, k) = x(:, 1)*body(1, k) + x(:, 2)*body(2, k) + x(:, 3)*body(3, k)
+      g(:, COL_P) = turned(pt%r)
+      g(:, COL_GU) = turned(rates(:, 1))
+      g(:, COL_GV) = turned(rates(:, 2))
+      g(:, COL_TU) = turned(pt%ru)
+      g(:, COL_TV) = turned(pt%rv)
+      do k = 0, 3
+        g(:, COL_GUU + k) = turned(rates(:, 3 + k))
       end do
+      g(:, COL_HUU) = turned(pt%ruu)
+      g(:, COL_HUV) = turned(pt%ruv)
+      g(:, COL_HVV) = turned(pt%rvv)
       o%r = i%r - self%geo(:, COL_P)
     end associate
+  contains
+    !> X b, summed as X(:, 1) b(1) + X(:, 2) b(2) + X(:, 3) b(3).
+    pure function turned(b) result(xb)
+      real(wp), intent(in) :: b(3)
+      real(wp) :: xb(3)
+      xb = x(:, 1)*b(1) + x(:, 2)*b(2) + x(:, 3)*b(3)
+    end function turned
   end subroutine isj_position
 
   pure subroutine isj_velocity(self, frames, scalars)
@@ -258,7 +267,7 @@ contains
   pure real(wp) function isj_chart_margin(self, angle) result(g)
     class(inverse_surface_joint_t), intent(in) :: self
     real(wp), intent(in) :: angle
-    g = cos(angle) - cos(self%chart_limit)
+    g = cos(angle) - self%cos_chart_limit
   end function isj_chart_margin
 
   !> Changes to the chart whose poles are farthest from the contact point

@@ -15,6 +15,7 @@
 !> work: the egg's table. The test compares every level with the general
 !> joint and with differences.
 module kinetostatics_plane_joint
+  use, intrinsic :: iso_fortran_env, only: int64
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status
   use base_vector, only: cross
@@ -31,6 +32,10 @@ module kinetostatics_plane_joint
     real(wp) :: origin(3) = 0, ru(3) = 0, rv(3) = 0   ! r(0, 0), r_u, r_v in K_1
     real(wp) :: axes(3, 3) = 0                        ! D: the Darboux axes in K_1
     real(wp) :: p(3) = 0, tu(3) = 0, tv(3) = 0        ! at the last position (world)
+    ! what depends on R_1 alone, kept for the R_1 it was made with (the
+    ! input is often the fixed ground): R_1 r(0, 0) and R_1 D
+    logical :: placed = .false.
+    real(wp) :: rot_in(3, 3) = 0, origin_world(3) = 0, rot_out(3, 3) = 0
   contains
     procedure :: position => pj_position
     procedure :: velocity => pj_velocity
@@ -76,13 +81,34 @@ contains
     type(scalar_state_t), intent(inout) :: scalars(:)
     type(status_t), intent(inout) :: status
     associate (unused => status, i => frames(self%frame_in), o => frames(self%frame_out))
-      self%tu = matmul(i%rot, self%ru)
-      self%tv = matmul(i%rot, self%rv)
-      self%p = matmul(i%rot, self%origin) + self%tu*scalars(self%var_u)%q + self%tv*scalars(self%var_v)%q
-      o%rot = matmul(i%rot, self%axes)
+      ! the same R_1 to the bit gives the same products: reused
+      if (.not. (self%placed .and. same_bits(i%rot, self%rot_in))) then
+        self%tu = matmul(i%rot, self%ru)
+        self%tv = matmul(i%rot, self%rv)
+        self%origin_world = matmul(i%rot, self%origin)
+        self%rot_out = matmul(i%rot, self%axes)
+        self%rot_in = i%rot
+        self%placed = .true.
+      end if
+      self%p = self%origin_world + self%tu*scalars(self%var_u)%q + self%tv*scalars(self%var_v)%q
+      o%rot = self%rot_out
       o%r = i%r + self%p
     end associate
   end subroutine pj_position
+
+  !> a and b hold the same bit patterns (-0 is not +0: the products would
+  !> differ in the sign of a zero).
+  pure logical function same_bits(a, b) result(same)
+    real(wp), intent(in) :: a(3, 3), b(3, 3)
+    integer :: j, k
+    same = .false.
+    do k = 1, 3
+      do j = 1, 3
+        if (transfer(a(j, k), 0_int64) /= transfer(b(j, k), 0_int64)) return
+      end do
+    end do
+    same = .true.
+  end function same_bits
 
   pure subroutine pj_velocity(self, frames, scalars)
     class(plane_joint_t), intent(inout) :: self

@@ -48,6 +48,7 @@ contains
 end module test_geometry_darboux_surfaces
 
 program test_geometry_darboux
+  use, intrinsic :: iso_fortran_env, only: int64
   use base_kinds, only: wp
   use base_status, only: status_t, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use base_constants, only: half_pi, two_pi
@@ -109,6 +110,7 @@ program test_geometry_darboux
   call check_limit_rule(ellipsoid, half_pi, -1.0_wp, 'limit rule, ellipsoid north pole')
   call check_limit_rule(ellipsoid, -half_pi, 1.0_wp, 'limit rule, ellipsoid south pole')
   call check_errors()
+  call check_reused_frame()
 
   call finish_tests('test_geometry_darboux')
 
@@ -406,4 +408,59 @@ contains
     call darboux_axes(p, 1.0_wp, 1.0_wp, 1.0_wp, axes, singular, st)
     call check(st%ok() .and. singular, 'axes: singular point flagged')
   end subroutine check_errors
+
+  !> darboux_frame overwrites the whole record it is given (intent(inout), no
+  !> default initialisation): a record left over from another point gives the
+  !> same bits as a fresh one, at a regular order-3 point, at order 2 (no
+  !> second derivatives), at singular points (both rules) and after failures.
+  subroutine check_reused_frame()
+    type(surface_point_t) :: p
+    type(darboux_frame_t) :: stale, fresh
+    type(status_t) :: st_stale, st_fresh
+    integer :: k, rule
+    logical :: same
+    real(wp) :: u, v
+    integer :: order
+    class(surface_t), allocatable :: s
+    same = .true.
+    do k = 1, 12
+      ! a full record (order 3, regular) from elsewhere first
+      call ellipsoid%evaluate(0.9_wp + k, 0.4_wp - 0.05_wp*k, 3, p, st)
+      call darboux_frame(p, 1.0_wp, 1.0_wp, 0.3_wp, stale, st)
+      select case (mod(k, 4))
+      case (0)   ! regular, order 3
+        s = hyperbolic; u = 0.3_wp*k - 1; v = 0.7_wp - 0.1_wp*k; order = 3
+      case (1)   ! regular, order 2
+        s = ellipsoid; u = 0.5_wp*k; v = 0.1_wp*k - 0.6_wp; order = 2
+      case (2)   ! singular: the apex
+        s = apex; u = 0.4_wp*k; v = 0; order = 3
+      case default   ! failure: a singular point at order 2
+        s = apex; u = 0.4_wp*k; v = 0; order = 2
+      end select
+      rule = SINGULAR_RULE_THESIS
+      if (k > 6) rule = SINGULAR_RULE_LIMIT
+      call s%evaluate(u, v, order, p, st)
+      call darboux_frame(p, -1.0_wp, 0.6_wp, 0.8_wp, stale, st_stale, singular_rule=rule)
+      call darboux_frame(p, -1.0_wp, 0.6_wp, 0.8_wp, fresh, st_fresh, singular_rule=rule)
+      same = same .and. st_stale%code == st_fresh%code .and. frame_bits_equal(stale, fresh)
+      fresh = darboux_frame_t()
+    end do
+    call check(same, 'a reused frame record gives the bits of a fresh one (regular, order 2, singular, failed)')
+  end subroutine check_reused_frame
+
+  logical function frame_bits_equal(a, b) result(same)
+    type(darboux_frame_t), intent(in) :: a, b
+    same = same_bits(reshape(a%r, [9]), reshape(b%r, [9])) .and. &
+           same_bits([a%a, a%b, a%c, a%d, a%e, a%f], [b%a, b%b, b%c, b%d, b%e, b%f]) .and. &
+           same_bits([a%a_u, a%a_v, a%b_u, a%b_v, a%c_u, a%c_v, a%d_u, a%d_v, a%e_u, a%e_v, a%f_u, a%f_v], &
+                     [b%a_u, b%a_v, b%b_u, b%b_v, b%c_u, b%c_v, b%d_u, b%d_v, b%e_u, b%e_v, b%f_u, b%f_v]) .and. &
+           (a%singular .eqv. b%singular) .and. (a%second_order .eqv. b%second_order)
+  end function frame_bits_equal
+
+  !> The same bit patterns (so -0 differs from +0, and NaN equals its copy).
+  logical function same_bits(x, y) result(same)
+    real(wp), intent(in) :: x(:), y(:)
+    same = size(x) == size(y)
+    if (same) same = all(transfer(x, 0_int64, size(x)) == transfer(y, 0_int64, size(y)))
+  end function same_bits
 end program test_geometry_darboux

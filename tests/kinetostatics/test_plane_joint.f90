@@ -6,6 +6,7 @@
 !> accelerations and generalized forces to rounding (1e-13 of these O(1..10)
 !> numbers).
 program test_plane_joint
+  use, intrinsic :: iso_fortran_env, only: int64
   use base_kinds, only: wp
   use base_status, only: status_t
   use testing, only: check, finish_tests
@@ -33,6 +34,7 @@ program test_plane_joint
   call check(status%ok(), 'plane joints built')
   call same_as_surface_joint(1.0_wp, 1.0_wp, 0.0_wp)
   call same_as_surface_joint(-1.0_wp, 0.6_wp, 0.8_wp)
+  call kept_products()
   call finish_tests('test_plane_joint')
 
 contains
@@ -80,4 +82,51 @@ contains
     call check(err <= 1e-13_wp*size_, 'plane joint = surface joint on the plane (frame, rates, forces)')
     print '(a, es10.2)', 'plane joint against the surface joint, largest relative difference: ', err/size_
   end subroutine same_as_surface_joint
+
+  !> The position map keeps the products with R_1 for the next call with the
+  !> same R_1 (to the bit): a joint used along a sequence of input rotations
+  !> (repeated, changed, back, one zero's sign flipped) gives the bits of a
+  !> new joint at every step, in its position, velocity and acceleration maps.
+  subroutine kept_products()
+    type(plane_joint_t) :: kept, fresh
+    type(frame_state_t) :: a(2), b(2)
+    type(scalar_state_t) :: sa(2), sb(2)
+    type(status_t) :: st
+    real(wp) :: rots(3, 3, 3)
+    integer :: k, pick(8) = [1, 1, 2, 1, 3, 3, 1, 2]
+    logical :: same
+    kept = new_plane_joint('pj', 1, 2, 1, 2, plane, 1.0_wp, 1.0_wp, 0.0_wp, st)
+    call frame_motion(1, 0.4_wp, a(1))
+    rots(:, :, 1) = a(1)%rot
+    rots(:, :, 2) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+    rots(:, :, 3) = rots(:, :, 2)
+    rots(2, 1, 3) = -0.0_wp
+    same = .true.
+    do k = 1, size(pick)
+      call frame_motion(1, 0.1_wp*k, a(1))
+      a(1)%rot = rots(:, :, pick(k))
+      call scalar_motion(1, 0.3_wp*k, sa(1))
+      call scalar_motion(2, -0.2_wp*k, sa(2))
+      b = a
+      sb = sa
+      fresh = new_plane_joint('pj', 1, 2, 1, 2, plane, 1.0_wp, 1.0_wp, 0.0_wp, st)
+      call kept%position(a, sa, st)
+      call fresh%position(b, sb, st)
+      call kept%velocity(a, sa)
+      call fresh%velocity(b, sb)
+      call kept%acceleration(a, sa)
+      call fresh%acceleration(b, sb)
+      same = same .and. same_bits([a(2)%rot, a(2)%r, a(2)%omega, a(2)%v, a(2)%alpha, a(2)%a], &
+                                  [b(2)%rot, b(2)%r, b(2)%omega, b(2)%v, b(2)%alpha, b(2)%a])
+    end do
+    call check(st%ok(), 'plane joints evaluated: '//st%text())
+    call check(same, 'plane joint keeping its products with R_1 = a new joint, to the bit')
+  end subroutine kept_products
+
+  !> The same bit patterns (so -0 differs from +0).
+  logical function same_bits(x, y) result(same)
+    real(wp), intent(in) :: x(:), y(:)
+    same = size(x) == size(y)
+    if (same) same = all(transfer(x, 0_int64, size(x)) == transfer(y, 0_int64, size(y)))
+  end function same_bits
 end program test_plane_joint
