@@ -211,11 +211,15 @@ module kinetostatics_mechanism
     ! M and G from the partial twists of the tracked frames (dynamics, find_mass_twists); with an
     ! element of unknown links (twist_route false) from inverse-dynamics passes per column instead
     logical :: twist_route = .false.
+    ! the twists' columns from the velocity maps (no column touches a block: J e_i with the
+    ! acceleration maps' operations on the nonzero terms, for about half their work)
+    logical :: velocity_columns = .false.
+    integer, allocatable :: velocity_clear(:), velocity_clear_start(:)   ! (build_velocity_clears)
     integer, allocatable :: tracked(:)           ! frames whose twists are kept (masses', scaled loads')
     integer, allocatable :: tracked_slot(:)      ! each frame's place in tracked (0: not kept)
     integer, allocatable :: masses(:), mass_slot(:)   ! the mass elements, their frames' places in tracked
     integer, allocatable :: normal_contacts(:)   ! contacts with N from the force on a frame (normal_pass order)
-    real(wp), allocatable :: twist(:, :, :)      ! (6, tracked, ns): (alpha, a) per unit s'_i at rest
+    real(wp), allocatable :: twist(:, :, :)      ! (6, tracked, ns): (alpha, a) per unit s'_i at rest (= (omega, v) per unit s_i)
     real(wp), allocatable :: wrench(:, :, :)     ! (6, tracked, ns): inertial (torque, force) per unit s'_i
     integer, allocatable :: moving_unknowns(:)   ! the unknowns whose open motion moves a tracked frame
     real(wp), allocatable :: unknown_twist(:, :, :)   ! (6, tracked, moving unknowns): per unit rate, nothing solved
@@ -642,6 +646,8 @@ contains
                                         self%unknowns, self%rows, self%tracked, &
                                         self%contacts(self%normal_contacts)%normal_frame, self%blocked)
     self%twist_route = self%reach%known
+    self%velocity_columns = self%blocks%mass_blocked .and. size(self%blocks%touched) == 0
+    if (self%velocity_columns) call build_velocity_clears(self)
     nx = self%r + self%nd
     self%moving_unknowns = pack([(k, k = 1, nx)], self%blocks%unknown_pass_start(2:nx + 1) > &
                                                   self%blocks%unknown_pass_start(1:nx))
@@ -1699,24 +1705,34 @@ contains
 
   !> M and G from the partial twists of the tracked frames (module comment),
   !> velocities zero: column i of the twists is the acceleration state of
-  !> s' = e_i at rest (the closure solved), the inertial wrench of each mass
+  !> s' = e_i at rest (the closure solved), or equally the velocity state of
+  !> s = e_i (velocity_column), the inertial wrench of each mass
   !> per unit s'_i is (3.23) at rest, and M(j, i) = -(twist_j . wrench_i).
   subroutine twist_mass_matrix(self)
     class(mechanism_t), intent(inout) :: self
     real(wp) :: mass, s(3), inertia_w(3, 3)
     integer :: i, b
     call clear_accelerations(self)
-    do i = 1, self%ns
-      if (self%blocks%mass_blocked) then
-        call unit_column(self, i)
-      else
-        self%work_f = 0
-        self%work_f(i) = 1
-        call self%set_accelerations(self%work_f)
-        call keep_twists(self, self%twist(:, :, i))
-      end if
-    end do
-    if (.not. self%blocks%mass_blocked) call clear_accelerations(self)
+    if (self%velocity_columns) then
+      do i = self%ns, 1, -1
+        call velocity_column(self, i)
+      end do
+      ! back to rest (the normal forces' passes are acceleration maps at rest)
+      call rest_velocities(self, self%blocks%mass_pass, self%blocks%mass_pass_start(1), &
+                           self%blocks%mass_pass_start(2) - 1)
+    else
+      do i = 1, self%ns
+        if (self%blocks%mass_blocked) then
+          call unit_column(self, i)
+        else
+          self%work_f = 0
+          self%work_f(i) = 1
+          call self%set_accelerations(self%work_f)
+          call keep_twists(self, self%twist(:, :, i))
+        end if
+      end do
+      if (.not. self%blocks%mass_blocked) call clear_accelerations(self)
+    end if
     call clear_sequence(size(self%wrench), self%wrench)
     do b = 1, size(self%masses)
       if (self%mass_slot(b) == 0) cycle   ! a mass on the ground
@@ -1808,6 +1824,83 @@ contains
       end associate
     end do
   end subroutine unit_column
+
+  !> Column i of the twists when no column touches a block: the velocity
+  !> state of s = e_i (the other rates zero) is the partial twist J e_i, the
+  !> acceleration state of s' = e_i at rest (unit_column) by the velocity
+  !> maps of the same pass. The columns run from the last to the first
+  !> after a state at rest (build_velocity_clears); `rates` (q' of the
+  !> state, read by the integrator) is not touched.
+  subroutine velocity_column(self, i)
+    class(mechanism_t), intent(inout) :: self
+    integer, intent(in) :: i
+    integer :: p, speed
+    speed = self%q(self%speeds(i))
+    if (self%velocity_clear_start(i + 1) > self%velocity_clear_start(i)) &
+      call rest_velocities(self, self%velocity_clear, self%velocity_clear_start(i), &
+                           self%velocity_clear_start(i + 1) - 1)
+    self%scalars(speed)%qd = 1
+    do p = self%blocks%mass_pass_start(i), self%blocks%mass_pass_start(i + 1) - 1
+      call self%elements(self%blocks%mass_pass(p))%e%velocity(self%frames, self%scalars)
+    end do
+    call keep_velocity_twists(self, self%twist(:, :, i))
+    self%scalars(speed)%qd = 0
+  end subroutine velocity_column
+
+  !> The velocity columns run from the last speed to the first: before
+  !> column i the outputs of the elements pass i + 1 ran and pass i does not
+  !> go back to rest (the others pass i overwrites or never moved). For a
+  !> chain, whose speeds' passes grow towards its root, there are none.
+  subroutine build_velocity_clears(self)
+    class(mechanism_t), intent(inout) :: self
+    integer :: i, p
+    integer, allocatable :: clear(:), start(:)
+    allocate (clear(0), start(self%ns + 1))
+    associate (first => self%blocks%mass_pass_start, pass => self%blocks%mass_pass)
+      do i = 1, self%ns
+        start(i) = size(clear) + 1
+        if (i == self%ns) cycle
+        do p = first(i + 1), first(i + 2) - 1
+          if (.not. any(pass(first(i):first(i + 1) - 1) == pass(p))) clear = [clear, pass(p)]
+        end do
+      end do
+    end associate
+    start(self%ns + 1) = size(clear) + 1
+    self%velocity_clear = clear
+    self%velocity_clear_start = start
+  end subroutine build_velocity_clears
+
+  !> The velocities of the outputs of the elements list(first:last) set to rest.
+  subroutine rest_velocities(self, list, first, last)
+    class(mechanism_t), intent(inout) :: self
+    integer, intent(in) :: list(:), first, last
+    integer :: p, l, e
+    !GCC$ unroll 1
+    do p = first, last
+      e = list(p)
+      !GCC$ unroll 1
+      do l = self%reach%frame_out_start(e), self%reach%frame_out_start(e + 1) - 1
+        self%frames(self%reach%frame_out(l))%omega = 0
+        self%frames(self%reach%frame_out(l))%v = 0
+      end do
+      !GCC$ unroll 1
+      do l = self%reach%scalar_out_start(e), self%reach%scalar_out_start(e + 1) - 1
+        self%scalars(self%reach%scalar_out(l))%qd = 0
+      end do
+    end do
+  end subroutine rest_velocities
+
+  !> The tracked frames' (omega, v) (keep_twists of a velocity state).
+  subroutine keep_velocity_twists(self, twists)
+    class(mechanism_t), intent(in) :: self
+    real(wp), intent(out) :: twists(6, size(self%tracked))
+    integer :: t
+    !GCC$ unroll 1
+    do t = 1, size(self%tracked)
+      twists(1:3, t) = self%frames(self%tracked(t))%omega
+      twists(4:6, t) = self%frames(self%tracked(t))%v
+    end do
+  end subroutine keep_velocity_twists
 
   !> The normal-force map of every contact, N = -normal_sign nu_c . W for
   !> any wrenches W (torque, force) at the tracked frames (inertial or
