@@ -76,6 +76,7 @@ module kinetostatics_mechanism_ode
     integer :: event_action = EVENT_RECORD
     character(len=:), allocatable :: outcome   !< why the run ended, set by the stopping event
     integer :: rhs_count = 0
+    integer :: n_roots = 0                     ! root_count, counted in prepare (the right-hand side asks at every call)
     integer :: root_calls = 0, root_cache_hits = 0
     ! root values of the last evaluation and the state they belong to
     logical :: cached = .false.
@@ -185,21 +186,23 @@ contains
 
   subroutine prepare(self)
     class(mechanism_ode_t), intent(inout) :: self
-    integer :: k
+    integer :: k, n_roots_before
     if (.not. allocated(self%charts)) call find_charts(self)
     associate (m => self%mechanism)
       self%edge_coordinate = [(findloc(m%q(1:m%f), m%edges(k)%scalar, dim=1), k = 1, size(m%edges))]
     end associate
+    n_roots_before = self%n_roots
+    self%n_roots = self%root_count()   ! every array sized by it is made anew when it changes
     if (allocated(self%cache_y)) then
-      if (size(self%cache_y) == self%state_size()) return
+      if (size(self%cache_y) == self%state_size() .and. self%n_roots == n_roots_before) return
       deallocate (self%cache_y, self%cache_g, self%work_ydot, self%rhs_y, self%rhs_g, self%root_scale)
     end if
     if (allocated(self%exact_n)) deallocate (self%exact_n)
     allocate (self%exact_n(count(self%mechanism%contacts%one_sided), 2))
     self%n_exact = 0
-    allocate (self%cache_y(self%state_size()), self%cache_g(max(self%root_count(), 1)), &
-              self%work_ydot(self%state_size()), self%root_scale(max(self%root_count(), 1)), &
-              self%rhs_y(self%state_size()), self%rhs_g(max(self%root_count(), 1)))
+    allocate (self%cache_y(self%state_size()), self%cache_g(max(self%n_roots, 1)), &
+              self%work_ydot(self%state_size()), self%root_scale(max(self%n_roots, 1)), &
+              self%rhs_y(self%state_size()), self%rhs_g(max(self%n_roots, 1)))
     self%cached = .false.
     self%rhs_cached = .false.
     self%root_scale = 0
@@ -254,15 +257,16 @@ contains
     if (.not. status%ok()) return
     ydot(1:f) = self%mechanism%rates
     ydot(n + 1:) = self%mechanism%law_power
-    if (self%root_count() == 0) return
+    if (self%n_roots == 0) return
     call root_values(self, y, 3)
+    ! the arrays have their sizes since prepare: plain copies
     self%cache_t = t
-    self%cache_y = y
+    self%cache_y(:) = y
     self%cached = .true.
     self%cache_exact = .true.
     self%rhs_t = t
-    self%rhs_y = y
-    self%rhs_g = self%cache_g
+    self%rhs_y(:) = y
+    self%rhs_g(:) = self%cache_g
     self%rhs_cached = .true.
   end subroutine mechanism_rhs
 
@@ -299,8 +303,8 @@ contains
     if (serves(self%rhs_cached, self%rhs_t, self%rhs_y, self%rhs_g)) then
       self%root_cache_hits = self%root_cache_hits + 1
       self%cache_t = self%rhs_t   ! the last right-hand side's values become the current ones
-      self%cache_y = self%rhs_y
-      self%cache_g = self%rhs_g
+      self%cache_y(:) = self%rhs_y
+      self%cache_g(:) = self%rhs_g
       self%cached = .true.
       self%cache_exact = .true.
       call root_values(self, y, 0)
@@ -334,7 +338,7 @@ contains
         self%interpolated_calls = self%interpolated_calls + 1
       end if
       self%cache_t = t
-      self%cache_y = y
+      self%cache_y(:) = y
       self%cached = .true.
       self%cache_exact = .not. interpolated
       if (level == 3) call keep_exact(self, t)
@@ -380,7 +384,7 @@ contains
     usable = d <= 1e-5_wp
     if (.not. usable) return
     far = max(1e4_wp*d, 1e-9_wp)
-    do i = n_user(self) + 1, self%root_count()
+    do i = n_user(self) + 1, self%n_roots
       if (abs(g_c(i)) < far*self%root_scale(i)) then
         usable = .false.
         return
@@ -511,7 +515,7 @@ contains
         self%cache_g(i + k) = m%elements(self%charts(k))%e%chart_margin(y(self%chart_angle(k)))
       end do
     end associate
-    if (level >= 3) self%root_scale = max(self%root_scale, abs(self%cache_g))
+    if (level >= 3) self%root_scale(:) = max(self%root_scale, abs(self%cache_g))
   end subroutine root_values
 
   !> Records the complete state (series of kinetostatics_recorder): the
