@@ -122,6 +122,7 @@ program test_mechanism_events
   call law_event()
   call edge_in_v()
   call runaway_guard()
+  call events_added_after_start()
   call finish_tests('test_mechanism_events')
 
 contains
@@ -370,4 +371,31 @@ contains
     call check(.not. st%ok() .and. st%code == STATUS_SOLVER .and. index(st%text(), 'bdf') > 0 .and. &
                result%stats%steps < 100000, 'runaway guard: stops early with the BDF hint: '//st%text())
   end subroutine runaway_guard
+  !> A user crossing added after initial_state, with the state size the same:
+  !> initial_state again sizes the root values for the new count, and the
+  !> crossing's value is y(index) - value.
+  subroutine events_added_after_start()
+    type(solver_config_t) :: solver
+    class(surface_t), allocatable :: surface
+    type(mechanism_ode_t), target :: sys
+    type(status_t) :: st
+    real(wp), allocatable :: y0(:), g(:)
+    integer :: f, ns, n_before
+    call load_sled('inputs/sled/bowl.nml', solver, surface, sys, y0, st)
+    call check(st%ok(), 'bowl sled builds: '//st%text())
+    if (.not. st%ok()) return
+    n_before = sys%root_count()
+    f = sys%mechanism%f
+    ns = sys%mechanism%ns
+    sys%event_index = [1]
+    sys%event_value = [y0(1) + 1]
+    y0 = sys%initial_state(y0(1:f), y0(f + 1:f + ns))
+    call check(sys%root_count() == n_before + 1 .and. size(sys%cache_g) == n_before + 1 .and. &
+               size(sys%root_scale) == n_before + 1 .and. size(sys%rhs_g) == n_before + 1, &
+               'a user crossing added after the start: the root arrays sized anew')
+    allocate (g(sys%root_count()))
+    call sys%roots(0.0_wp, y0, g)
+    ! the same expression as root_values: exact
+    call check(g(1) == y0(1) - sys%event_value(1), 'the added crossing''s root value is y(1) - value')
+  end subroutine events_added_after_start
 end program test_mechanism_events
