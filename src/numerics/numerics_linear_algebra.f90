@@ -574,6 +574,7 @@ contains
     if (.not. status%ok()) return
     inverse = matmul(rinv, transpose(rinv))
   end subroutine normal_matrix_inverse
+
   !> c(k, i) = a(:, k) . b(:, i) for a(l, n) and b(l, m) (c = a^T b), each
   !> sum from 0 in the order of l (the result of a plain loop, whatever the
   !> length). l = 6 (a twist and a wrench of one frame) runs unrolled: for
