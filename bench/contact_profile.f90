@@ -7,14 +7,15 @@
 !> p1: rtol 1e-11, atol 1e-10; p2: 1e-6, 1e-5 (thesis); ref: 1e-13, 1e-12 (a
 !> reference); mu > 0 replaces the first contact's friction coefficient;
 !> seconds > 0 replaces the input's duration; coefficient > 0 replaces Adams'
-!> corrector coefficient (CVODE's nlscoef); with `file`, the first body's
+!> corrector coefficient (CVODE's nlscoef; default slidesim's for contact,
+!> contact_convergence_coefficient); with `file`, the first body's
 !> state every 5 ms is written there (t, tilt of body y from the vertical in
 !> degrees, origin x y z in m, energy in J), for comparisons with a reference.
 program contact_profile
   use base_kinds, only: wp
   use base_status, only: status_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive
-  use contact_model, only: contact_system_t, contact_model_t, build_contact_model
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
@@ -32,7 +33,7 @@ program contact_profile
   type(driver_result_t) :: result
 
   if (command_argument_count() < 1) then
-    print '(a)', 'usage: contact_profile input.nml [p1|p2] [mu] [seconds]'
+    print '(a)', 'usage: contact_profile input.nml [p1|p2|ref] [mu] [seconds] [coefficient] [file]'
     stop
   end if
   call get_command_argument(1, path)
@@ -73,6 +74,7 @@ program contact_profile
   options%progress_seconds = 0
   options%ode%rtol = tol(1)
   options%ode%atol = tol(2)
+  options%ode%convergence_coefficient = contact_convergence_coefficient
   if (coefficient > 0) options%ode%convergence_coefficient = coefficient
   if (len_trim(file) > 0) then
     options%output_step = 5e-3_wp

@@ -52,7 +52,7 @@ module contact_model
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t, contact_model_t, contact_link_t
-  public :: build_contact_model
+  public :: build_contact_model, contact_convergence_coefficient
   public :: FRICTION_NONE, FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL, FRICTION_COULOMB
   public :: LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
 
@@ -63,6 +63,15 @@ module contact_model
   !> rolling), else the loop (CHAIN_AUTO); or either chosen.
   integer, parameter :: CHAIN_AUTO = 0, CHAIN_OPEN = 1, CHAIN_LOOP = 2
   real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+  !> CVODE's nonlinear convergence coefficient for contact runs with Adams (its
+  !> default 0.1). The corrector stops once its change is below this fraction of
+  !> the error test; the rest of its error enters the differences CVODE
+  !> chooses the order from and held the egg at P1 at orders 5-6. A tighter
+  !> corrector costs iterations but lets the order rise: the egg's right-hand
+  !> sides at P1, mean over mu and its 10 nearest floating-point neighbours,
+  !> mu 0.3 31.3k -> 26.8k, mu 0.8 27.4k -> 24.8k (docs/contact.md,
+  !> "Corrector"; bench/convergence_scan.sh).
+  real(wp), parameter :: contact_convergence_coefficient = 0.03_wp
 
   !> A surface in the coordinates of the body that carries it.
   type :: shape_t

@@ -6,12 +6,13 @@
 module scenarios_contact
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status
-  use contact_model, only: contact_system_t, contact_model_t, build_contact_model
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
   use io_input, only: input_text_t, check_known_groups, mark_input_failure, where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config, contact_groups, contact_repeatable_groups
   use scenarios_mechanism, only: run_mechanism
+  use numerics_ode, only: ODE_ADAMS
   implicit none (type, external)
   private
   public :: run_contact, contact_groups
@@ -32,6 +33,7 @@ contains
     if (status%ok()) call read_solver_config(input, solver, status)
     if (status%ok()) call read_contact_config(input, system, status)
     if (.not. status%ok()) return
+    if (solver%options%method == ODE_ADAMS) solver%options%convergence_coefficient = contact_convergence_coefficient
     call build_contact_model(system, model, status)
     f = model%ode%mechanism%f
     ns = model%ode%mechanism%ns

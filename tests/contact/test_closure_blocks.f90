@@ -22,7 +22,7 @@ program test_closure_blocks
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
   use geometry_tube, only: tube_surface_t, new_straight_tube
   use kinetostatics_mechanism, only: mechanism_t
-  use contact_model, only: contact_system_t, contact_model_t, build_contact_model
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
   use rider_model, only: rider_params_t, rider_layout_t, build_rider
   use io_input, only: input_text_t, load_input_file
   use io_contact_config, only: read_contact_config
@@ -75,6 +75,7 @@ contains
     options%ode%rtol = 1e-11_wp
     options%ode%atol = 1e-10_wp
     call model%ode%start_series(10)
+    options%ode%convergence_coefficient = contact_convergence_coefficient   ! as slidesim runs it
     call drive(model%ode, model%y0, options, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'tower5 ran 0.3 s: '//st%text())
     associate (m => model%ode%mechanism, series => model%ode%series)

@@ -13,7 +13,8 @@ program test_rolling_paraboloids
   use base_status, only: status_t
   use testing, only: check, finish_tests
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
-  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, LEVEL_VELOCITY
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, &
+    contact_convergence_coefficient, LEVEL_VELOCITY
   use io_input, only: input_text_t, load_input_file
   use io_contact_config, only: read_contact_config
   implicit none (type, external)
@@ -58,6 +59,7 @@ contains
     options%ode%rtol = rtol
     options%ode%atol = atol
     call model%ode%start_series(nint(duration/options%output_step) + 100)
+    options%ode%convergence_coefficient = contact_convergence_coefficient   ! as slidesim runs it
     call drive(model%ode, model%y0, options, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, label//' ran to the end: '//st%text())
     associate (s => model%ode%series)

@@ -21,7 +21,8 @@ program test_sphere_incline
   use numerics_ode, only: ODE_BDF
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
   use geometry_elementary, only: plane_t, ellipsoid_t
-  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, FRICTION_COULOMB, &
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, &
+    contact_convergence_coefficient, FRICTION_COULOMB, &
     FRICTION_NONE, CHAIN_OPEN, CHAIN_LOOP
   implicit none (type, external)
 
@@ -97,6 +98,7 @@ contains
     options%output_step = 0.05_wp
     options%ode%rtol = 1e-12_wp
     options%ode%atol = 1e-12_wp
+    options%ode%convergence_coefficient = contact_convergence_coefficient   ! as slidesim runs Adams
     call run(system, model, options)
     a = 5*g*sin(theta)/7
     associate (s => model%ode%series, m => model%ode%mechanism)

@@ -28,7 +28,8 @@ program test_spinning_egg
   use base_status, only: status_t
   use testing, only: check, finish_tests
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
-  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, LEVEL_VELOCITY, CHAIN_LOOP, &
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, &
+    contact_convergence_coefficient, LEVEL_VELOCITY, CHAIN_LOOP, &
     FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
@@ -84,6 +85,7 @@ contains
       options%ode%atol = 1e-5_wp
     end if
     call model%ode%start_series(nint(duration/options%output_step) + 20)
+    options%ode%convergence_coefficient = contact_convergence_coefficient   ! as slidesim runs it
     call drive(model%ode, model%y0, options, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'egg ran: '//st%text())
   end subroutine run_egg
