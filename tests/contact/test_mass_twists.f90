@@ -11,10 +11,15 @@
 !> normal force from the force on its frame and from the cut force; Coulomb,
 !> also with its loads on the Darboux frames, which are not tracked: those
 !> laws keep their inverse-dynamics pass), the four-bar (a loop, no contact),
-!> the egg's open chain and its loop with Coulomb friction, and the tower of
-!> five rolling paraboloids (loops and rate constraints: the cut forces mu of
-!> rolling enter G through J_x). The egg's open chain takes the twists from
-!> the velocity maps (velocity_columns), the others from acceleration passes.
+!> the egg's open chain and its loop with Coulomb friction, the egg's open
+!> chain on a dome, and the tower of five rolling paraboloids (loops and rate
+!> constraints: the cut forces mu of rolling enter G through J_x). The open
+!> chains take the twists from the velocity maps (velocity_columns), the
+!> others from acceleration passes. On the dome the velocity state the last
+!> column leaves (the contact point moving over the curved ground) turns the
+!> egg, so G's passes, acceleration maps at rest, see it unless the columns'
+!> velocities are set back to rest (on the flat table that state has no
+!> rotation and no curvature terms: G would agree without the rest).
 !>
 !> Tolerance: both routes sum the same products in another order and solve
 !> the closure's J_x^T in both; the differences are rounding amplified by the
@@ -33,9 +38,21 @@ program test_mass_twists
   use kinetostatics_models, only: sled_params_t, build_sled, fourbar_params_t, build_fourbar, fourbar_assembly
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, FRICTION_COULOMB, CHAIN_LOOP
   use rider_model, only: rider_params_t, rider_layout_t, build_rider
-  use io_input, only: input_text_t, load_input_file
+  use io_input, only: input_text_t, load_input_file, input_from_text
   use io_contact_config, only: read_contact_config
   implicit none (type, external)
+
+  !> The shipped egg on a fixed sphere of radius 1 m (its poles horizontal,
+  !> away from the contact) instead of the table.
+  character(len=*), parameter :: dome_input = &
+    "&run scenario = 'contact' / &
+    &&shape name = 'dome', kind = 'ellipsoid', a = 1.0, b = 1.0, c = 1.0, origin = 0.0, 0.0, -1.0, &
+    &angles_deg = 90.0, 0.0, 0.0 / &
+    &&shape name = 'egg', kind = 'ellipsoid', a = 0.025, b = 0.033, c = 0.025 / &
+    &&body name = 'egg', mass = 0.08, solid_of = 'egg', position = 0.0, 0.0, 0.05, &
+    &angles_deg = -90.0, 0.0, -103.0, angular_velocity = 0.0, 0.0, 150.0 / &
+    &&contact name = 'egg_on_dome', body_1 = 'ground', shape_1 = 'dome', side_1 = 1, &
+    &body_2 = 'egg', shape_2 = 'egg', side_2 = 1, friction = 'viscous_weight', mu = 0.3 /"
 
   call check_rider()
   call check_sled(.false., .false.)
@@ -45,6 +62,7 @@ program test_mass_twists
   call check_contact('inputs/contact/egg.nml', .false., .true., 'egg, open chain')
   call check_contact('inputs/contact/egg.nml', .true., .false., 'egg, loop, Coulomb')
   call check_contact('inputs/contact/tower5.nml', .false., .false., 'tower of five, rolling')
+  call check_contact('', .false., .true., 'egg on a dome, open chain')
   call finish_tests('test_mass_twists')
 
 contains
@@ -102,9 +120,10 @@ contains
     call compare(m, 0.0_wp, [0.3_wp], [2.0_wp], 'four-bar')
   end subroutine check_fourbar
 
-  !> A shipped contact input, at its start moved by a few centimetres or radians in every coordinate
-  !> (the loop with Coulomb friction instead of the open chain); `velocity_columns`: the twists'
-  !> columns expected from the velocity maps (an open chain) rather than acceleration passes.
+  !> A shipped contact input (file = '': the egg on a dome), at its start moved by a few centimetres
+  !> or radians in every coordinate (the loop with Coulomb friction instead of the open chain);
+  !> `velocity_columns`: the twists' columns expected from the velocity maps (an open chain) rather
+  !> than acceleration passes.
   subroutine check_contact(file, loop, velocity_columns, label)
     character(len=*), intent(in) :: file, label
     logical, intent(in) :: loop, velocity_columns
@@ -113,7 +132,11 @@ contains
     type(contact_model_t), target :: model
     type(status_t) :: st
     integer :: f, k
-    call load_input_file(file, input, st)
+    if (len(file) > 0) then
+      call load_input_file(file, input, st)
+    else
+      call input_from_text('egg on a dome', dome_input, input, st)
+    end if
     call read_contact_config(input, system, st)
     if (loop) then
       system%contacts(1)%chain = CHAIN_LOOP
