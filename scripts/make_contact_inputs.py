@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Writes the point files and geometry files of the B-spline paraboloids in
-inputs/contact/paraboloids/ (thesis 3.5.3.3, table 3.2): 13 x 13 points of
+inputs/contact/paraboloids/, replacing the shipped ones (with --tower only
+the tower, into --folder) (thesis 3.5.3.3, table 3.2): 13 x 13 points of
 z = (x^2 + y^2)/a^2 on [-w, w]^2, fitted by SURFIT with degree 5 and s = 0.05
 (a quintic spline holds them exactly: tests/contact/test_paraboloid_fit.f90).
 
