@@ -16,6 +16,7 @@
 !> minimum-norm solutions (ier < -2) are accepted fits.
 module numerics_spline_surface
   use base_kinds, only: wp
+  use base_text, only: format_integer
   use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT, STATUS_DOMAIN, &
     STATUS_SOLVER, STATUS_NOT_CONVERGED, STATUS_INTERNAL
   use fitpack_surface_interfaces, only: surfit, regrid, parsur
@@ -91,7 +92,9 @@ contains
     end if
     if (.not. degrees_ok(kx, ky, status, 'fit_scattered')) return
     if (m < (kx + 1)*(ky + 1)) then
-      call set_status(status, STATUS_INVALID_INPUT, 'fit_scattered: fewer data points than (kx+1)(ky+1)')
+      call set_status(status, STATUS_INVALID_INPUT, format_integer(m)//' data points: a spline of degree '// &
+                      format_integer(kx)//' x '//format_integer(ky)//' needs at least '// &
+                      format_integer((kx + 1)*(ky + 1)))
       return
     end if
     if (.not. (all(abs(x) <= huge(x)) .and. all(abs(y) <= huge(y)) .and. all(abs(z) <= huge(z)))) then
