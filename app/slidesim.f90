@@ -4,7 +4,9 @@
 !> written); 2 the run failed part way (the result file is kept, marked
 !> incomplete); 3 a file could not be read or written (standard output too:
 !> a summary cut short by a closed pipe, `slidesim | head`, is exit status 3,
-!> the result file complete and kept).
+!> the result file complete and kept), or the result path names a device, a
+!> FIFO or a socket, which is never replaced (refused before any work; one
+!> that appears during the run leaves the results in the temporary file).
 !>
 !> Options take their value as the next argument or after '=' (--output FILE,
 !> --output=FILE); '-' names standard input; '--' ends the options.
@@ -186,7 +188,10 @@ contains
     call write_standard_output('options:')
     call write_standard_output('  -o, --output FILE         write the results to FILE (overrides &run output)')
     call write_standard_output('  --set GROUP%VAR=VALUE     set or replace a variable of the input, checked like')
-    call write_standard_output('                            the file (repeatable): --set solver%rtol=1e-8')
+    call write_standard_output('                            the file (repeatable): --set solver%rtol=1e-8;')
+    call write_standard_output('                            a word needs no quotes: --set solver%method=bdf;')
+    call write_standard_output('                            of a repeated group the k-th or the one named:')
+    call write_standard_output('                            --set "body(2)%mass=3", --set "body(egg)%mass=3"')
     call write_standard_output('  --check                   read and check the input, build the models, write')
     call write_standard_output('                            nothing; prints "input ok"')
     call write_standard_output('  --summary-json FILE       also write the summary''s numbers as JSON to FILE')
@@ -203,7 +208,8 @@ contains
     call write_standard_output('')
     call write_standard_output('exit status: 0 done; 1 bad command line or input (nothing written);')
     call write_standard_output('2 the run failed part way (result file kept, marked incomplete);')
-    call write_standard_output('3 a file could not be read or written (nothing kept).')
+    call write_standard_output('3 a file could not be read or written, or -o names a device, FIFO or socket')
+    call write_standard_output('(nothing kept, or the message says where the results are).')
   end subroutine print_help
 
   !> Ends with exit status 0, or 3 if a line of standard output was lost:

@@ -7,9 +7,11 @@
 !> closes and renames it to `<path>` in one step, so a file with the final
 !> name is always a finished one. A run killed on the way leaves only its
 !> temporary file. When a write fails (a full disk, the file-size limit) the
-!> temporary file is deleted and nothing is kept (STATUS_IO). Numbers that
-!> are not finite (NaN, Inf) are written but make `finish` mark the file
-!> incomplete, naming the first such dataset (STATUS_DOMAIN): no file marked
+!> temporary file is deleted and nothing is kept (STATUS_IO). A device, FIFO
+!> or socket found at the final name (or its companion's) is never replaced:
+!> the results stay in the temporary file(s), named in the message (STATUS_IO).
+!> Numbers that are not finite (NaN, Inf) are written but make `finish` mark
+!> the file incomplete, naming the first such dataset (STATUS_DOMAIN): no file marked
 !> complete holds one.
 !>
 !> Conventions every writer here keeps, so no caller has to:
@@ -45,7 +47,8 @@ module io_hdf5
   use base_version, only: slidesim_version, slidesim_compiler, slidesim_compiler_options
   use base_build_commit, only: slidesim_git_commit
   use io_provenance, only: utc_timestamp, host_name
-  use io_system, only: create_unique_file, remove_file, rename_file, system_error_text, process_id
+  use io_system, only: create_unique_file, remove_file, rename_file, system_error_text, process_id, &
+                       nonregular_kind
   implicit none (type, external)
   private
   public :: result_file_t, result_layout_version, units_per_second, run_outcome
@@ -652,7 +655,7 @@ contains
     type(status_t), intent(inout) :: status
     integer :: hdferr, err
     logical :: renamed, complete
-    character(len=:), allocatable :: text, error, companion_temporary
+    character(len=:), allocatable :: text, error, companion_temporary, what
 
     if (self%file_id < 0) return
     complete = complete_asked
@@ -696,6 +699,22 @@ contains
                         'result file: '//error//'; nothing is kept')
         return
       end if
+    end if
+    ! checked when the run started (scenarios_registry); this catches one that
+    ! appeared since, short of the instant between this check and the rename
+    what = nonregular_kind(self%path)
+    if (len(what) > 0) then
+      what = '"'//self%path//'" is '//what
+    else if (allocated(self%companion_path)) then
+      what = nonregular_kind(self%companion_path)
+      if (len(what) > 0) what = '"'//self%companion_path//'", where the XDMF view goes, is '//what
+    end if
+    if (len(what) > 0) then
+      text = 'the results are kept in "'//self%temporary_path//'"'
+      if (allocated(self%companion_path)) text = text//' and their XDMF view in "'//companion_temporary//'"'
+      call set_status(status, STATUS_IO, 'cannot put the result file in place: '//what//' (it appeared '// &
+                      'during the run), which slidesim never replaces; '//text//' (rename them yourself)')
+      return
     end if
     call rename_file(self%temporary_path, self%path, renamed, error)
     if (.not. renamed) then

@@ -201,18 +201,23 @@ contains
 
   !> Applies one command-line override `group%variable=values` (or
   !> `group%variable(i)=values`): it replaces what the text assigns to that
-  !> variable (or element), or adds it; the group is added if absent. Whether
-  !> the group and variable exist is checked where the group is read.
+  !> variable (or element), or adds it; the group is added if absent. A group
+  !> the input gives more than once must be addressed: `group(k)%...` (its
+  !> k-th occurrence) or `group(name)%...` (the one with name = 'name');
+  !> without that the override is refused, never applied to one of them
+  !> silently. Whether the group and variable exist is checked where the
+  !> group is read.
   subroutine input_override(self, spec, status)
     class(input_text_t), intent(inout) :: self
     character(len=*), intent(in) :: spec
     type(status_t), intent(inout) :: status
-    character(len=:), allocatable :: origin, group
+    character(len=:), allocatable :: origin, head, group, selector
     type(nml_item_t) :: item
     type(nml_group_t), allocatable :: longer(:)
     type(nml_item_t), allocatable :: kept(:)
-    integer :: percent, g, i, n
+    integer :: percent, g, i, n, open_at
 
+    if (.not. status%ok()) return
     origin = '--set '//spec
     percent = index(spec, '%')
     if (percent < 2) then
@@ -220,14 +225,33 @@ contains
                       'e.g. --set solver%rtol=1e-8')
       return
     end if
-    group = lower(trim(adjustl(spec(:percent - 1))))
-    if (verify(group, 'abcdefghijklmnopqrstuvwxyz0123456789_') /= 0) then
+    head = trim(adjustl(spec(:percent - 1)))
+    selector = ''
+    open_at = index(head, '(')
+    if (open_at > 0) then
+      if (head(len(head):) /= ')' .or. open_at == len(head) - 1) then
+        call set_status(status, STATUS_INVALID_INPUT, origin//': "'//head//'" is not a group: write '// &
+                        'group%variable=value, or group(k)%variable=value for the k-th of a repeated group')
+        return
+      end if
+      selector = trim(adjustl(head(open_at + 1:len(head) - 1)))
+      head = trim(head(:open_at - 1))
+    end if
+    group = lower(head)
+    if (len(group) == 0 .or. verify(group, 'abcdefghijklmnopqrstuvwxyz0123456789_') /= 0) then
       call set_status(status, STATUS_INVALID_INPUT, origin//': "'//group//'" is not a group name')
       return
     end if
     call parse_assignment(origin, spec(percent + 1:), item, status)
+    if (.not. status%ok()) then
+      ! the usual cause on a command line: a text with / , or blanks, not quoted
+      if (scan(spec(percent + 1:), '''"') == 0) status%message = status%message//'; a text with / , = or '// &
+        'blanks goes in quotes, which the shell must pass on: --set "'//spec(:percent)// &
+        quoted_example(spec(percent + 1:))//'"'
+      return
+    end if
+    call choose_group(self, origin, group, selector, spec(percent:), g, status)
     if (.not. status%ok()) return
-    g = group_index(self, group)
     if (g == 0) then
       allocate (longer(size(self%groups) + 1))
       longer(:size(self%groups)) = self%groups
@@ -252,6 +276,115 @@ contains
     self%groups(g)%items = kept(:n)
     self%overrides = self%overrides//'--set '//spec//new_line('a')
   end subroutine input_override
+
+  !> `variable=value` with the value in single quotes, for the hint above.
+  pure function quoted_example(assignment) result(text)
+    character(len=*), intent(in) :: assignment
+    character(len=:), allocatable :: text
+    integer :: equals
+    equals = index(assignment, '=')
+    text = assignment
+    if (equals > 0) text = assignment(:equals)//''''//trim(adjustl(assignment(equals + 1:)))//''''
+  end function quoted_example
+
+  !> The group an override of `group` changes: its index, 0 to add it (not in
+  !> the input). `selector` is '' (the group must then occur at most once), a
+  !> number k (its k-th occurrence) or a name (the occurrence whose `name` is
+  !> that, quotes optional); `rest` is '%variable=value', for the messages.
+  subroutine choose_group(self, origin, group, selector, rest, g, status)
+    type(input_text_t), intent(in) :: self
+    character(len=*), intent(in) :: origin, group, selector, rest
+    integer, intent(out) :: g
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: wanted, list, example
+    integer :: n, k, ios
+
+    g = 0
+    n = group_count(self, group)
+    if (len(selector) == 0) then
+      if (n <= 1) then
+        g = group_index(self, group)
+        return
+      end if
+      ! in double quotes: the shell would take the parentheses itself
+      example = occurrence_name(self, group, n)
+      if (len(example) > 0) example = ' or --set "'//group//'('//example//')'//rest//'"'
+      call set_status(status, STATUS_INVALID_INPUT, origin//': the input has '//format_integer(n)//' &'//group// &
+                      ' groups ('//occurrence_list(self, group)//'); say which one to change, e.g. --set "'// &
+                      group//'('//format_integer(n)//')'//rest//'"'//example)
+      return
+    end if
+    if (verify(selector, '0123456789') == 0) then
+      k = 0
+      ios = 1
+      if (len(selector) <= 6) read (selector, *, iostat=ios) k
+      if (ios == 0 .and. k >= 1 .and. k <= max(n, 1)) then
+        g = group_index(self, group, k)   ! 0 (added) for group(1) of a group not in the input
+        return
+      end if
+      if (n == 0) then
+        call set_status(status, STATUS_INVALID_INPUT, origin//': the input has no &'//group//' group; '// &
+                        group//'(1) or '//group//' adds one')
+      else
+        call set_status(status, STATUS_INVALID_INPUT, origin//': k in '//group//'(k) must be 1 to '// &
+                        format_integer(n)//': the input has '//occurrence_list(self, group))
+      end if
+      return
+    end if
+    wanted = selector
+    if (len(wanted) >= 2) then
+      if (scan(wanted(1:1), '''"') > 0 .and. wanted(len(wanted):) == wanted(1:1)) &
+        wanted = wanted(2:len(wanted) - 1)
+    end if
+    do k = 1, n
+      if (occurrence_name(self, group, k) == wanted) then
+        g = group_index(self, group, k)
+        return
+      end if
+    end do
+    list = occurrence_list(self, group)
+    if (len(list) == 0) list = 'none'
+    call set_status(status, STATUS_INVALID_INPUT, origin//': no &'//group//' group has name = '''//wanted// &
+                    '''; the input has: '//list)
+  end subroutine choose_group
+
+  !> The name = '...' given in the k-th `group`, '' if none.
+  pure function occurrence_name(self, group, k) result(text)
+    type(input_text_t), intent(in) :: self
+    character(len=*), intent(in) :: group
+    integer, intent(in) :: k
+    character(len=:), allocatable :: text
+    integer :: g, i
+    text = ''
+    g = group_index(self, group, k)
+    if (g == 0) return
+    do i = 1, size(self%groups(g)%items)
+      associate (item => self%groups(g)%items(i))
+        if (item%name == 'name' .and. item%rank == 0 .and. size(item%values) > 0) text = item%values(1)%text
+      end associate
+    end do
+  end function occurrence_name
+
+  !> "body(1) name = 'a' at line 20, body(2) ...": every occurrence of `group`.
+  pure function occurrence_list(self, group) result(text)
+    type(input_text_t), intent(in) :: self
+    character(len=*), intent(in) :: group
+    character(len=:), allocatable :: text, name
+    integer :: k, g
+    text = ''
+    do k = 1, group_count(self, group)
+      g = group_index(self, group, k)
+      if (k > 1) text = text//', '
+      text = text//group//'('//format_integer(k)//')'
+      name = occurrence_name(self, group, k)
+      if (len(name) > 0) text = text//' name = '''//name//''''
+      if (self%groups(g)%line > 0) then
+        text = text//' at line '//format_integer(self%groups(g)%line)
+      else
+        text = text//' from --set'
+      end if
+    end do
+  end function occurrence_list
 
   !> A path named inside this input: relative paths are taken from the input
   !> file's folder (from the working folder for inputs given as text); absolute
@@ -957,22 +1090,31 @@ contains
     character(len=*), intent(inout) :: x
     type(status_t), intent(inout) :: status
     character(len=*), intent(in), optional :: choices(:)
-    character(len=:), allocatable :: list, word
+    character(len=:), allocatable :: list, word, quotes
     integer :: j
+    logical :: text_given
+    ! a file's text goes in quotes; on the command line a word needs none
+    ! (--set solver%method=bdf), since the shell removes quotes unless escaped
+    quotes = ' (in quotes)'
+    text_given = v%kind == VALUE_TEXT
+    if (len(self%items(from)%origin) > 0) then
+      quotes = ''
+      text_given = .true.
+    end if
     if (present(choices)) then
       list = ''
       do j = 1, size(choices)
         list = list//' '//trim(choices(j))
       end do
       word = lower(trim(adjustl(v%text)))
-      if (v%kind /= VALUE_TEXT .or. .not. any(choices == word)) then
-        call refuse(self, name, dims, p, from, v, 'must be one of'//list//' (in quotes)', status)
+      if (.not. text_given .or. .not. any(choices == word)) then
+        call refuse(self, name, dims, p, from, v, 'must be one of'//list//quotes, status)
         return
       end if
       x = word
       return
     end if
-    if (v%kind /= VALUE_TEXT) then
+    if (.not. text_given) then
       call refuse(self, name, dims, p, from, v, 'must be a text in quotes', status)
     else if (len(v%text) > len(x)) then
       call refuse(self, name, dims, p, from, v, 'is longer than the '//format_integer(len(x))// &

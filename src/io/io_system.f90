@@ -1,22 +1,34 @@
 !> The few operating-system services the file boundary needs, through the C
 !> library (POSIX): a new file with a unique name (mkstemps), removing and
 !> renaming files, the text of the last system error, whether two paths name
-!> the same file (realpath), ignoring SIGXFSZ so that a write beyond the
+!> the same file (realpath), what kind of file a path names when it is not a
+!> regular one (statx: a device, a FIFO, a socket), ignoring SIGXFSZ so that a write beyond the
 !> file-size limit fails with an error we report instead of killing us, and
 !> standard output written so that a lost line is known (a closed pipe, a
 !> full disk, a closed stream: `guard_standard_streams`, `write_standard_output`).
 module io_system
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_funptr, c_intptr_t, &
                                          c_associated, c_f_pointer, c_null_ptr, c_null_funptr, c_size_t, &
-                                         c_loc
+                                         c_loc, c_int16_t, c_int32_t, c_int64_t
   implicit none (type, external)
   private
   public :: create_unique_file, remove_file, rename_file, system_error_text, same_file, &
-            ignore_file_size_signal, process_id
+            ignore_file_size_signal, process_id, nonregular_kind
   public :: guard_standard_streams, write_standard_output, standard_output_lost
 
   integer(c_int), parameter :: sigxfsz = 25, sigpipe = 13   !< Linux (x86-64, arm64)
   integer(c_int), parameter :: eintr = 4
+  integer(c_int), parameter :: at_fdcwd = -100, statx_type = 1   !< Linux: the working folder; ask for the type
+
+  !> Linux's struct statx up to stx_mode, padded to its 256 bytes. Unlike
+  !> struct stat its layout is the same on every architecture.
+  type, bind(C) :: statx_t
+    integer(c_int32_t) :: mask = 0, block_size = 0
+    integer(c_int64_t) :: attributes = 0
+    integer(c_int32_t) :: links = 0, uid = 0, gid = 0
+    integer(c_int16_t) :: mode = 0, spare = 0
+    integer(c_int64_t) :: rest(28) = 0
+  end type statx_t
 
   !> What became of standard output: a line that could not be written (or the
   !> stream closed at the start) and why. Process state, not simulation state:
@@ -88,6 +100,13 @@ module io_system
       type(c_ptr), value :: resolved
       type(c_ptr) :: p
     end function c_realpath
+    function c_statx(dirfd, path, flags, mask, buffer) bind(C, name='statx') result(rc)
+      import :: c_int, c_char, statx_t
+      integer(c_int), value :: dirfd, flags, mask
+      character(kind=c_char), intent(in) :: path(*)
+      type(statx_t), intent(out) :: buffer
+      integer(c_int) :: rc
+    end function c_statx
     subroutine c_free(p) bind(C, name='free')
       import :: c_ptr
       type(c_ptr), value :: p
@@ -169,6 +188,38 @@ contains
     real_b = resolved(b)
     same_file = len(real_a) > 0 .and. real_a == real_b
   end function same_file
+
+  !> What `path` names if it exists and is not a regular file (links
+  !> followed): 'a folder', 'a character device', 'a block device', 'a FIFO
+  !> (named pipe)', 'a socket'; '' for a regular file, nothing (or a dangling
+  !> link), or a path that cannot be examined (opening it reports why). A
+  !> result file is renamed onto its path: that would replace such a file.
+  function nonregular_kind(path) result(what)
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable :: what
+    type(statx_t) :: info
+    integer :: file_type
+    what = ''
+    if (c_statx(at_fdcwd, path//c_null_char, 0_c_int, statx_type, info) /= 0) return
+    ! stx_mode is unsigned 16 bits; S_IFMT and the types from <sys/stat.h>
+    file_type = iand(iand(int(info%mode), 65535), int(o'170000'))
+    select case (file_type)
+    case (int(o'100000'))
+      what = ''
+    case (int(o'040000'))
+      what = 'a folder'
+    case (int(o'020000'))
+      what = 'a character device'
+    case (int(o'060000'))
+      what = 'a block device'
+    case (int(o'010000'))
+      what = 'a FIFO (named pipe)'
+    case (int(o'140000'))
+      what = 'a socket'
+    case default
+      what = 'not a regular file'
+    end select
+  end function nonregular_kind
 
   function resolved(path) result(text)
     character(len=*), intent(in) :: path

@@ -5,7 +5,9 @@ module scenarios_registry
   use base_version, only: slidesim_version
   use base_text, only: format_integer
   use io_input, only: input_text_t, load_input_file, group_present, where_given
-  use io_system, only: create_unique_file, remove_file, same_file, process_id, write_standard_output
+  use io_system, only: create_unique_file, remove_file, same_file, process_id, write_standard_output, &
+                       nonregular_kind
+  use io_xdmf, only: xdmf_path
   use io_builtin_inputs, only: builtin_input
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
@@ -46,15 +48,19 @@ contains
 
   !> The result file must be creatable before any work starts: its folder
   !> exists and is writable (a file with a unique name is made there and
-  !> removed again: exit 3 if not), the name is not a folder (3), and it is
-  !> not the input file itself (1). `from_command_line`: the path came from -o.
+  !> removed again: exit 3 if not), the name is not a folder (3), neither it
+  !> nor its XDMF view (.xmf) names a device, a FIFO or a socket (3: the
+  !> finished file is renamed onto the path, which would replace it; -o
+  !> /dev/null would destroy the device as root), and it is not the input
+  !> file itself (1). `from_command_line`: the path came from -o.
   subroutine check_output_path(input, path, from_command_line, status)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: path
     logical, intent(in) :: from_command_line
     type(status_t), intent(inout) :: status
-    character(len=:), allocatable :: where, probe, error
+    character(len=:), allocatable :: where, probe, error, what
     logical :: is_folder
+    integer :: k
 
     if (from_command_line) then
       where = '-o '//trim(path)
@@ -71,6 +77,20 @@ contains
       call set_status(status, STATUS_IO, where//': cannot write the result file: it is a folder; name a file')
       return
     end if
+    do k = 1, 2
+      if (k == 1) then
+        what = nonregular_kind(trim(path))
+        if (len(what) > 0) what = 'it is '//what
+      else
+        what = nonregular_kind(xdmf_path(trim(path)))
+        if (len(what) > 0) what = '"'//xdmf_path(trim(path))//'", where its XDMF view goes, is '//what
+      end if
+      if (len(what) == 0) cycle
+      call set_status(status, STATUS_IO, where//': cannot write the result file: '//what// &
+                      ', which slidesim never replaces; name a regular file or a new one (--check '// &
+                      'reads and checks the input without writing results)')
+      return
+    end do
     call create_unique_file(trim(path)//'.'//format_integer(process_id()), '.tmp', probe, error)
     if (len(probe) == 0) then
       call set_status(status, STATUS_IO, where//': cannot write the result file: '//error// &
@@ -105,7 +125,28 @@ contains
       end do
     end if
     if (status%ok()) call run_input(input, status, cli)
+    ! a refusal of a value an override made refers to the file's line of
+    ! another variable (a contact naming the shape --set renamed): say so
+    if (status%code == STATUS_INVALID_INPUT .and. len(input%overrides) > 0) then
+      if (index(status%message, '--set ') == 0) status%message = status%message//' (in the input as changed by '// &
+        overrides_applied(input%overrides)//')'
+    end if
   end subroutine run_input_file
+
+  !> The --set arguments (one a line) as one line: "--set a%b=1, --set c%d=2".
+  pure function overrides_applied(lines) result(text)
+    character(len=*), intent(in) :: lines
+    character(len=:), allocatable :: text
+    integer :: start, i
+    text = ''
+    start = 1
+    do i = 1, len(lines)
+      if (lines(i:i) /= new_line('a')) cycle
+      if (len(text) > 0) text = text//', '
+      text = text//lines(start:i - 1)
+      start = i + 1
+    end do
+  end function overrides_applied
 
   !> Runs the built-in default input, inputs/default.nml compiled into the program.
   subroutine run_default(status, cli, overrides)

@@ -12,6 +12,7 @@ program test_io
   use io_input, only: input_text_t, input_from_text, check_positive, check_choice, format_real, &
                       check_known_groups, group_present, group_reader_t, open_group, in_range
   use io_hdf5, only: result_file_t
+  use io_system, only: nonregular_kind
   use testing, only: check, check_close_array, finish_tests
   implicit none (type, external)
 
@@ -147,7 +148,67 @@ contains
     call check(index(status%text(), 'group%variable=value') > 0, 'an override without % refused: '//status%text())
     call check(index(input%text(), '! --set g%x=70') > 0, 'overrides kept with the text')
 
+    ! a group given more than once is changed only where the override says
+    ! which: its k-th occurrence or the one of that name; never silently the first
+    status = status_t()
+    call input_from_text('r.nml', '&g name = ''a'', x = 1 /'//nl//'&g name = ''b'', x = 2 /', input, status)
+    call input%override('g%x=5', status)
+    call check(status%code == STATUS_INVALID_INPUT .and. index(status%text(), '--set g%x=5: the input has 2 &g') == 1 &
+               .and. index(status%text(), '--set "g(2)%x=5"') > 0 .and. index(status%text(), '--set "g(b)%x=5"') > 0, &
+               'an override of a repeated group without saying which is refused: '//status%text())
+    call check(group_x(input, 1) == 1 .and. group_x(input, 2) == 2, 'a refused override changes nothing')
+    status = status_t()
+    call input%override('g(2)%x=5', status)
+    call check(status%ok() .and. group_x(input, 1) == 1 .and. group_x(input, 2) == 5, &
+               'g(2)% changes the second occurrence: '//status%text())
+    call input%override('g(a)%x=6', status)
+    call input%override('G(''b'')%x=7', status)
+    call check(status%ok() .and. group_x(input, 1) == 6 .and. group_x(input, 2) == 7, &
+               'g(name)% changes the occurrence of that name: '//status%text())
+    call input%override('g(3)%x=1', status)
+    call check(index(status%text(), '--set g(3)%x=1: k in g(k) must be 1 to 2') == 1, &
+               'an occurrence beyond the last refused: '//status%text())
+    status = status_t()
+    call input%override('g(c)%x=1', status)
+    call check(index(status%text(), 'no &g group has name = ''c''') > 0 .and. index(status%text(), 'g(2) name = ''b''') &
+               > 0, 'an unknown name refused, listing the names: '//status%text())
+    status = status_t()
+    call input%override('h(1)%x=1', status)
+    call check(status%ok() .and. group_present(input, 'h'), 'h(1) adds a group not in the input: '//status%text())
+    call input%override('k(2)%x=1', status)
+    call check(index(status%text(), 'the input has no &k group') > 0, 'k(2) of an absent group refused: '// &
+               status%text())
+    status = status_t()
+
+    ! on the command line a word is a text without quotes (the shell removes them)
+    call input_from_text('t.nml', '&g word = ''x'' /', input, status)
+    call input%override('g%word=bdf', status)
+    word = ''
+    call open_group(input, 'g', [character(len=8) :: 'word'], r, status)
+    call r%get('word', word, status, [character(len=5) :: 'adams', 'bdf'])
+    call check(status%ok() .and. word == 'bdf', 'an unquoted word from --set is a text: '//status%text())
+    call input%override('g%word=bdff', status)
+    call open_group(input, 'g', [character(len=8) :: 'word'], r, status)
+    call r%get('word', word, status, [character(len=5) :: 'adams', 'bdf'])
+    call check(index(status%text(), '--set g%word=bdff: &g: word = bdff is not allowed: must be one of adams bdf') &
+               == 1 .and. index(status%text(), 'quotes') == 0, 'a wrong word from --set: '//status%text())
+    status = status_t()
+    call input%override('g%word=out/x.h5', status)
+    call check(index(status%text(), '--set "g%word=''out/x.h5''"') > 0, &
+               'a text with / shows the quoting to use: '//status%text())
+
   end subroutine namelist_language
+
+  !> x of the k-th group g (-1 if not given), as an override left it.
+  real(wp) function group_x(input, k) result(x)
+    type(input_text_t), intent(in) :: input
+    integer, intent(in) :: k
+    type(group_reader_t) :: reader
+    type(status_t) :: status
+    x = -1
+    call open_group(input, 'g', [character(len=8) :: 'name', 'x'], reader, status, k)
+    call reader%get('x', x, in_range(-10.0_wp, 10.0_wp, 'm'), status)
+  end function group_x
 
 
   subroutine refused(text, where, what, case)
@@ -261,6 +322,38 @@ contains
     call h5fclose_f(id, err)
     open (newunit=err, file=path)
     close (err, status='delete')
+
+    ! a FIFO that appeared at the final name (or its companion's) during the
+    ! run is not replaced: exit 3, the results kept in the temporary file(s)
+    status = status_t()
+    call execute_command_line('rm -f build_test_io_fifo.h5 build_test_io_fifo.xmf', exitstat=err)
+    call file%create('build_test_io_fifo.h5', status)
+    temporary = file%temporary_name()
+    call execute_command_line('mkfifo build_test_io_fifo.h5', exitstat=err)
+    call check(err == 0 .and. nonregular_kind('build_test_io_fifo.h5') == 'a FIFO (named pipe)', 'FIFO made')
+    call file%write_scalar('/x', 1.0_wp, 'm', 'one number', status)
+    call file%finish(.true., 'ok', status)
+    inquire (file=temporary, exist=exists)
+    call check(status%code == STATUS_IO .and. index(status%text(), 'a FIFO') > 0 .and. &
+               index(status%text(), 'kept in "'//temporary//'"') > 0, 'a FIFO at the path refused: '//status%text())
+    call check(exists .and. nonregular_kind('build_test_io_fifo.h5') == 'a FIFO (named pipe)', &
+               'the FIFO is left alone and the results kept')
+    call execute_command_line('rm -f build_test_io_fifo.h5 '//temporary, exitstat=err)
+
+    status = status_t()
+    call file%create('build_test_io_fifo.h5', status)
+    temporary = file%temporary_name()
+    call file%add_companion('build_test_io_fifo.xmf', '<Xdmf/>')
+    call execute_command_line('mkfifo build_test_io_fifo.xmf', exitstat=err)
+    call file%finish(.true., 'ok', status)
+    inquire (file=temporary, exist=exists)
+    call check(status%code == STATUS_IO .and. index(status%text(), '"build_test_io_fifo.xmf", where the XDMF') > 0 &
+               .and. index(status%text(), 'build_test_io_fifo.xmf.') > 0 .and. exists, &
+               'a FIFO at the companion''s path refused, both kept: '//status%text())
+    inquire (file='build_test_io_fifo.h5', exist=exists)
+    call check(.not. exists .and. nonregular_kind('build_test_io_fifo.xmf') == 'a FIFO (named pipe)', &
+               'nothing renamed, the FIFO left alone')
+    call execute_command_line('rm -f build_test_io_fifo.xmf build_test_io_fifo.xmf.*.tmp '//temporary, exitstat=err)
   end subroutine result_file_life_cycle
 
   !> A text attribute, checked to be a scalar variable-length UTF-8 string.
