@@ -127,9 +127,9 @@ contains
     if (status%ok()) call run_input(input, status, cli)
     ! a refusal of a value an override made refers to the file's line of
     ! another variable (a contact naming the shape --set renamed): say so
-    if (status%code == STATUS_INVALID_INPUT .and. len(input%overrides) > 0) then
-      if (index(status%message, '--set ') == 0) status%message = status%message//' (in the input as changed by '// &
-        overrides_applied(input%overrides)//')'
+    if (status%code == STATUS_INVALID_INPUT .and. allocated(input%overrides)) then
+      if (len(input%overrides) > 0 .and. index(status%text(), '--set ') == 0) status%message = status%text()// &
+        ' (in the input as changed by '//overrides_applied(input%overrides)//')'
     end if
   end subroutine run_input_file
 
