@@ -11,7 +11,7 @@ module io_contact_config
   use contact_model, only: contact_system_t, FRICTION_NONE, &
     FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL, FRICTION_COULOMB, LEVEL_POSITION, LEVEL_VELOCITY, &
     CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
-  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, group_count, format_vector
+  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, in_range, above, group_count, format_vector
   use io_surface_config, only: read_surface_config
   implicit none (type, external)
   private
@@ -135,6 +135,7 @@ contains
     character(len=name_length) :: name, body_1, shape_1, body_2, shape_2
     character(len=14) :: friction
     character(len=8) :: level, chain
+    type(bounds_t) :: mu_bounds
     integer :: j
     character(len=*), parameter :: names(13) = [character(len=20) :: 'name', 'body_1', 'shape_1', 'side_1', &
       'body_2', 'shape_2', 'side_2', 'friction', 'mu', 'regularization_speed', 'rolling', 'level', 'chain']
@@ -163,12 +164,18 @@ contains
         trim(chain)//'''', 'the chain is chosen for level = ''position'' only (a velocity-level contact has '// &
         'its own element)', status)
       if (.not. status%ok()) return
+      ! a law without mu would run with mu = 0, that is frictionless: refused
+      mu_bounds = above(0.0_wp, 1e3_wp, 's/m')
+      if (friction == 'coulomb') mu_bounds = above(0.0_wp, 10.0_wp, '1')
+      if (friction /= 'none' .and. .not. r%has('mu')) call r%invalid('mu', 'none (not given)', 'friction = '''// &
+        trim(friction)//''' needs mu: it '//mu_bounds%text()//'; friction = ''none'' for no friction', status)
+      if (.not. status%ok()) return
       select case (trim(friction))
       case ('viscous_weight', 'viscous_normal')
-        call r%get('mu', c%mu, above(0.0_wp, 1e3_wp, 's/m'), status)
+        call r%get('mu', c%mu, mu_bounds, status)
         call r%refuse_given(['regularization_speed'], 'only Coulomb friction is regularized', status)
       case ('coulomb')
-        call r%get('mu', c%mu, above(0.0_wp, 10.0_wp, '1'), status)
+        call r%get('mu', c%mu, mu_bounds, status)
         call r%get('regularization_speed', c%regularization_speed, above(0.0_wp, 1.0_wp, 'm/s'), status)
       case default
         call r%refuse_given([character(len=20) :: 'mu', 'regularization_speed'], 'friction = ''none''', status)

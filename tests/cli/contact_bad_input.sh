@@ -5,7 +5,8 @@
 # carries its body_1, a body carried twice or never, a loop that cannot close
 # (which contact, by how much), the parallel-normal branch, start velocities
 # that push into the surface; a chain that does not apply (the open chain with
-# rolling, a chain at velocity level) or is unknown.
+# rolling, a chain at velocity level) or is unknown; a friction law without
+# mu.
 set -u
 slidesim=$1
 work=$(mktemp -d)
@@ -66,6 +67,13 @@ expect rolling_friction 1 'rolling_friction.nml:' '&contact' friction "'coulomb'
 printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', mu = 0.3 /\n" \
   "$head" "$ball" > "$work/unused_mu.nml"
 expect unused_mu 1 'unused_mu.nml:' '&contact' mu "friction = 'none'"
+
+# a friction law without mu would run frictionless (mu = 0): refused
+for law in viscous_weight viscous_normal coulomb; do
+  printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', friction = '$law' /\n" \
+    "$head" "$ball" > "$work/no_mu_$law.nml"
+  expect "no_mu_$law" 1 "no_mu_$law.nml:" '&contact' 'mu = none' "friction = '$law' needs mu" '> 0 and <='
+done
 
 printf "%s\n&body name = 'ball', mass = 1, position = 0, 0, 0.2 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
   "$head" > "$work/no_inertia.nml"
