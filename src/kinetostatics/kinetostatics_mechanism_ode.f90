@@ -20,7 +20,9 @@
 !>                   slide, or back at its start: EVENT_STOP, `outcome` says
 !>                   which and where); an edge in v is a failure (STATUS_DOMAIN);
 !>   lift-off        N of every one-sided contact: falling through zero stops
-!>                   the run (EVENT_STOP, outcome 'lift-off ...');
+!>                   the run (EVENT_STOP, outcome 'lift-off ...') if N is
+!>                   near zero there; through a pole (a singular contact)
+!>                   the run fails (STATUS_DOMAIN, check_lift_off);
 !>   force laws      each law's own (kinetostatics_force_law), handled by the
 !>                   law (e.g. switch itself and ask for a restart);
 !>   charts          the chart margin of every element with a chart whose
@@ -68,6 +70,18 @@ module kinetostatics_mechanism_ode
   private
   public :: mechanism_ode_t
 
+  !> How near zero N must be at a lift-off root, relative to the largest |N|
+  !> of the contact at the start and the outputs (check_lift_off). At a
+  !> true lift-off N there is the root location's error (N' times CVODE's
+  !> 1e-14 s or so) plus that of the interpolated state (N's sensitivity
+  !> times the local error): 1e-16..1e-12 in the tests' lift-offs (sled,
+  !> rider). Through a pole (the paraboloids, the tower of review finding 2)
+  !> it was 6e3..8e6.
+  real(wp), parameter :: lift_off_tolerance = 1e-2_wp
+  character(len=*), parameter :: singular_advice = 'a contact is conformal or nearly so there (the '// &
+    'surfaces'' curvatures match along a direction: the contact point is not determined by the pose, '// &
+    'docs/contact.md "Singular contacts"); the results up to here are kept'
+
   type, extends(event_system_t) :: mechanism_ode_t
     type(mechanism_t) :: mechanism
     type(mechanism_series_t) :: series
@@ -93,6 +107,11 @@ module kinetostatics_mechanism_ode
     real(wp) :: exact_t(2) = 0
     real(wp), allocatable :: exact_n(:, :)
     integer :: interpolated_calls = 0
+    ! the scale a lift-off's N is judged against (track_normal_reference)
+    real(wp), allocatable :: normal_reference(:)   ! largest |N| of each one-sided contact at the start and outputs
+    real(wp), allocatable :: pending_normal(:)     ! N at the current output time, kept once the driver moves on
+    real(wp) :: pending_t = 0
+    logical :: started = .false., pending = .false.
     integer, allocatable :: edge_coordinate(:) ! position in y of each edge's u or v (0: a dependent one)
     integer, allocatable :: charts(:)          ! elements whose charts are watched
     integer, allocatable :: chart_angle(:)     ! position in y of each one's deciding coordinate
@@ -166,6 +185,10 @@ contains
     real(wp), allocatable :: y0(:)
     y0 = [q0, qd0, spread(0.0_wp, 1, self%mechanism%n_laws)]
     call prepare(self)
+    ! a new run: the lift-off scale starts afresh (prepare keeps arrays of the same size)
+    self%normal_reference = 0
+    self%started = .false.
+    self%pending = .false.
   end function initial_state
 
   !> The elements with a chart decided by an integrated coordinate.
@@ -197,9 +220,13 @@ contains
       if (size(self%cache_y) == self%state_size() .and. self%n_roots == n_roots_before) return
       deallocate (self%cache_y, self%cache_g, self%work_ydot, self%rhs_y, self%rhs_g, self%root_scale)
     end if
-    if (allocated(self%exact_n)) deallocate (self%exact_n)
+    if (allocated(self%exact_n)) deallocate (self%exact_n, self%normal_reference, self%pending_normal)
     allocate (self%exact_n(count(self%mechanism%contacts%one_sided), 2))
+    allocate (self%normal_reference(size(self%exact_n, 1)), self%pending_normal(size(self%exact_n, 1)))
     self%n_exact = 0
+    self%normal_reference = 0
+    self%started = .false.
+    self%pending = .false.
     allocate (self%cache_y(self%state_size()), self%cache_g(max(self%n_roots, 1)), &
               self%work_ydot(self%state_size()), self%root_scale(max(self%n_roots, 1)), &
               self%rhs_y(self%state_size()), self%rhs_g(max(self%n_roots, 1)))
@@ -297,6 +324,7 @@ contains
       self%root_cache_hits = self%root_cache_hits + 1
       call root_values(self, y, 0)   ! the user crossings from y itself
       if (self%cache_exact) call keep_exact(self, t)
+      call track_normal_reference(self, t)
       g = self%cache_g(1:size(g))
       return
     end if
@@ -309,6 +337,7 @@ contains
       self%cache_exact = .true.
       call root_values(self, y, 0)
       call keep_exact(self, t)
+      call track_normal_reference(self, t)
       g = self%cache_g(1:size(g))
       return
     end if
@@ -342,6 +371,7 @@ contains
       self%cached = .true.
       self%cache_exact = .not. interpolated
       if (level == 3) call keep_exact(self, t)
+      if (level == 3 .or. interpolated) call track_normal_reference(self, t)
     else
       call root_values(self, y, 1)   ! edges from the scalars as far as the closure got
       self%cached = .false.
@@ -428,6 +458,37 @@ contains
     self%exact_n(:, 2) = self%cache_g(first:first + nc - 1)
     self%n_exact = min(self%n_exact + 1, 2)
   end subroutine keep_exact
+
+  !> The reference a lift-off's N is judged against (mechanism_handle_event):
+  !> the largest |N| of each one-sided contact at the start and at the output
+  !> times the run has passed, the forces the result file shows. Not the
+  !> step ends: where N passes through a pole (a singular contact) CVODE's
+  !> steps close in on it and their N grow as large as the root's. The values
+  !> at an output time are taken where CVODE's root check evaluates them (at
+  !> t = t_output, when a step passes it) and join the reference only when
+  !> the driver has moved on to the next output time: a root found before
+  !> the output time (the check there lies beyond it) keeps them out.
+  subroutine track_normal_reference(self, t)
+    class(mechanism_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    integer :: first, nc
+    nc = size(self%normal_reference)
+    if (nc == 0) return
+    first = n_user(self) + size(self%mechanism%edges) + 1
+    if (.not. self%started) then   ! the first values: the start
+      self%normal_reference(:) = abs(self%cache_g(first:first + nc - 1))
+      self%started = .true.
+    end if
+    if (self%pending .and. self%t_output > self%pending_t) then
+      self%normal_reference(:) = max(self%normal_reference, abs(self%pending_normal))
+      self%pending = .false.
+    end if
+    if (t == self%t_output) then
+      self%pending_t = t
+      self%pending_normal(:) = self%cache_g(first:first + nc - 1)
+      self%pending = .true.
+    end if
+  end subroutine track_normal_reference
 
   !> t lies strictly between the two kept exact sets and every normal force
   !> is settled there: the same sign at both, at least 1e-3 G_i from zero,
@@ -572,6 +633,8 @@ contains
           end if
         end associate
       end do
+      call check_lift_off(self, t, y, fired(i + 1:i + size(self%normal_reference)), status)
+      if (.not. status%ok()) return
       do k = 1, size(m%contacts)
         if (.not. m%contacts(k)%one_sided) cycle
         i = i + 1
@@ -598,6 +661,59 @@ contains
       end do
     end associate
   end subroutine mechanism_handle_event
+
+  !> The lift-off roots (fired: those of the one-sided contacts) are lift-offs
+  !> if N is near zero there: |N| <= lift_off_tolerance times the largest |N|
+  !> the contact carried at the start and the outputs before (normal_reference).
+  !> A root where N changes sign through a pole (a singular, conformal
+  !> contact: the normal force grows without bound, and CVODE locates the
+  !> pole to rounding, where |N| is 1e3 and more times that scale) is a
+  !> failure of the run, not a lift-off. Every contact whose N is unbounded
+  !> there is named: a singular contact drives the forces of the contacts
+  !> coupled to it with its own, and which one it is the forces cannot tell.
+  subroutine check_lift_off(self, t, y, fired, status)
+    class(mechanism_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    integer, intent(in) :: fired(:)
+    type(status_t), intent(inout) :: status
+    type(status_t) :: st
+    integer :: f, n, k, j, count_singular
+    character(len=:), allocatable :: which
+    if (.not. any(fired == -1)) return
+    f = self%mechanism%f
+    n = f + self%mechanism%ns
+    call self%mechanism%dynamics(t, y(1:f), y(f + 1:n), self%work_ydot(1:n - f), st)
+    which = ''
+    count_singular = 0
+    j = 0
+    associate (m => self%mechanism)
+      do k = 1, size(m%contacts)
+        if (.not. m%contacts(k)%one_sided) cycle
+        j = j + 1
+        if (fired(j) /= -1) cycle
+        if (st%ok()) then
+          if (abs(m%normal(k)) <= lift_off_tolerance*self%normal_reference(j)) cycle
+        end if
+        if (count_singular > 0) which = which//', '
+        which = which//''''//m%contacts(k)%name//''''
+        if (st%ok()) which = which//' (N = '//format_short(m%normal(k))//' N, at most '// &
+          format_short(self%normal_reference(j))//' N before)'
+        count_singular = count_singular + 1
+      end do
+    end associate
+    if (count_singular == 0) return
+    if (.not. st%ok()) then
+      call set_status(status, STATUS_DOMAIN, 'the contact became singular: where the normal force of contact'// &
+        trim(merge('s ', '  ', count_singular > 1))//which//' changes sign the dynamics cannot be evaluated ('// &
+        st%text()//'), not a lift-off; '//singular_advice)
+    else if (count_singular == 1) then
+      call set_status(status, STATUS_DOMAIN, 'contact '//which//' became singular: its normal force is '// &
+        'unbounded where it changes sign, not a lift-off; '//singular_advice)
+    else
+      call set_status(status, STATUS_DOMAIN, 'a contact became singular: the normal forces of contacts '// &
+        which//' are unbounded where they change sign, not a lift-off; '//singular_advice)
+    end if
+  end subroutine check_lift_off
 
   !> Re-bases the chart of element k on the current pose and writes the new
   !> coordinates and speeds into y.
