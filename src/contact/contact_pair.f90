@@ -42,6 +42,7 @@
 module contact_pair
   use base_kinds, only: wp
   use base_text, only: format_short
+  use base_vector, only: cross
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
@@ -305,11 +306,13 @@ contains
       rel = matmul(transpose(d12%r), matmul(transpose(rot_a), rot_b))   ! B relative to K_12
       n_b = matmul(transpose(rel), [0.0_wp, 0.0_wp, 1.0_wp])           ! S1's normal in B's coordinates
       call support_point(s2, n_b, u2, v2, status)
-      if (status%ok()) call s2%evaluate(u2, v2, 0, pt2, status)
+      if (status%ok()) call s2%evaluate(u2, v2, 1, pt2, status)
       if (.not. status%ok()) then
         call prefix_status(status, 'contact '''//pair%name//''': finding where body B touches')
         return
       end if
+      call check_sides(pair, pt2, n_b, status)
+      if (.not. status%ok()) return
       c_b = matmul(rel, pt2%r)                                ! support point relative to B's origin, K_12 axes
       gap = dot_product(p - pt1%r, d12%r(:, 3)) + c_b(3)
     end associate
@@ -327,6 +330,37 @@ contains
     end select
   end subroutine place_contact_pair
 
+  !> At the placement, before any closure: S2's normal (side_2) at its support
+  !> point against S1's normal n_b (side_1, in B's coordinates) is -n_b on
+  !> the physical branch and +n_b if a side is wrong; a wrong side would close
+  !> the loop on the parallel branch (g4, g5 hold there too), whose message
+  !> could only say so in coordinates. The support point was sought on S1's
+  !> side as side_1 has it, so side_2 is the likelier culprit (a wrong side_1
+  !> puts B into body 1: the contact does not press at the start). At a
+  !> singular point of S2's parametrisation (a pole) the normal is not
+  !> known here: the check after the closure (check_contact_branch) remains.
+  subroutine check_sides(pair, pt2, n_b, status)
+    type(contact_pair_t), intent(in) :: pair
+    type(surface_point_t), intent(in) :: pt2
+    real(wp), intent(in) :: n_b(3)
+    type(status_t), intent(inout) :: status
+    real(wp) :: w(3), c
+    w = cross(pt2%ru, pt2%rv)
+    if (.not. norm2(w) > 1e-8_wp*(dot_product(pt2%ru, pt2%ru) + dot_product(pt2%rv, pt2%rv))) return
+    c = pair%side_2*dot_product(w, n_b)/norm2(w)
+    if (c > 0) call set_status(status, STATUS_INVALID_INPUT, 'contact '''//pair%name//''': side_1 = '// &
+      side_text(pair%side_1)//' and side_2 = '//side_text(pair%side_2)//' point the normals of shape_1 and '// &
+      'shape_2 the same way where they touch (parallel normals, n_1 . n_2 = '//format_short(c)//'); at a '// &
+      'contact they are opposite, each out of its body towards the other: flip side_2 (side_2 = '// &
+      side_text(-pair%side_2)//'), or side_1 if it is shape_1''s normal that points into its body')
+  end subroutine check_sides
+
+  pure function side_text(side) result(text)
+    real(wp), intent(in) :: side
+    character(len=2) :: text
+    text = merge('+1', '-1', side > 0)
+  end function side_text
+
   !> After a closure: the normals must be antiparallel (z_1D . z_2D < 0).
   subroutine check_contact_branch(m, pair, status)
     type(mechanism_t), intent(in) :: m
@@ -336,8 +370,9 @@ contains
     if (.not. status%ok()) return
     c = dot_product(m%frames(pair%frame_1d)%rot(:, 3), m%frames(pair%frame_2d)%rot(:, 3))
     if (c > 0) call set_status(status, STATUS_DOMAIN, 'contact '''//pair%name//''' closed with parallel '// &
-      'normals (z_1D . z_2D = '//format_short(c)//'), the non-physical branch of (3.86): each side must '// &
-      'point its surface''s normal towards the other body')
+      'normals (z_1D . z_2D = '//format_short(c)//'), the non-physical branch of (3.86): the normals of '// &
+      'shape_1 and shape_2 point the same way; flip side_1 or side_2 (each must point its surface''s '// &
+      'normal out of its body towards the other body)')
   end subroutine check_contact_branch
 
   !> A copy of the surface of the surface joint at element k.

@@ -121,9 +121,38 @@ contains
         format_vector(inertia), 'the moments of a rigid body obey the triangle inequality I_k <= I_l + I_m', status)
       system%bodies(k)%inertia = reshape([inertia(1), products(1), products(2), products(1), inertia(2), &
                                           products(3), products(2), products(3), inertia(3)], [3, 3])
+      if (status%ok()) call check_positive_definite(r, trim(name), inertia, products, status)
     end if
     system%bodies(k)%rotation = rotation_xyz(angles_deg*pi/180)
   end subroutine read_body
+
+  !> The inertia tensor (moments on its diagonal, products off it) must be
+  !> positive definite: a body with a zero or negative moment about some axis
+  !> has no inertia for a rotation the contact leaves free, and the model
+  !> could only say so later, in its coordinates. Sylvester's criterion on
+  !> the leading minors; said about `products` where the moments alone are
+  !> fine.
+  subroutine check_positive_definite(r, name, inertia, products, status)
+    type(group_reader_t), intent(in) :: r
+    character(len=*), intent(in) :: name
+    real(wp), intent(in) :: inertia(3), products(3)
+    type(status_t), intent(inout) :: status
+    real(wp) :: minor_2, det
+    character(len=:), allocatable :: why
+    ! minor_2, det: the leading 2 x 2 minor and the determinant
+    minor_2 = inertia(1)*inertia(2) - products(1)**2
+    det = inertia(1)*(inertia(2)*inertia(3) - products(3)**2) - products(1)*(products(1)*inertia(3) - &
+          products(3)*products(2)) + products(2)*(products(1)*products(3) - inertia(2)*products(2))
+    if (inertia(1) > 0 .and. minor_2 > 0 .and. det > 0) return
+    why = 'the inertia tensor of body '''//name//''' (inertia on its diagonal, products off it, kg m^2) '// &
+      'must be positive definite: every moment > 0, I_xy^2 < I_xx I_yy and a determinant > 0'
+    if (all(inertia > 0) .and. r%has('products')) then
+      call r%invalid('products', format_vector(products), why//'; the products are too large for the moments '// &
+                     format_vector(inertia), status)
+    else
+      call r%invalid('inertia', format_vector(inertia), why, status)
+    end if
+  end subroutine check_positive_definite
 
   !> The k-th &contact.
   subroutine read_contact(input, k, system, status)

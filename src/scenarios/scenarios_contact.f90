@@ -44,7 +44,7 @@ contains
       call model%ode%check_start(y0, status)
     end if
     if (.not. status%ok()) then
-      call prefix_status(status, failure_where(input, system, status%text())//': contact')
+      call locate_failure(input, system, status)
       call mark_input_failure(status)
       return
     end if
@@ -53,15 +53,37 @@ contains
                        surface=system%shapes(first_shape(system))%surface)
   end subroutine run_contact
 
-  !> Where a failure of the model's build or start is about: the &contact or
-  !> &body (file and line) whose name the message quotes first; else the file.
-  function failure_where(input, system, message) result(where)
+  !> Puts in front of a failure of the model's build or start where it is
+  !> about: the &contact or &body (file and line) whose name the message
+  !> quotes first, else the file and the scenario. A message that begins
+  !> with that group and name ("contact 'x': ...") loses them: the place
+  !> names them already.
+  subroutine locate_failure(input, system, status)
+    type(input_text_t), intent(in) :: input
+    type(contact_system_t), intent(in) :: system
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: message, where, lead
+    message = status%text()
+    where = failure_where(input, system, message, lead)
+    if (len(lead) > 0) then
+      if (index(message, lead) == 1) message = message(len(lead) + 1:)
+    end if
+    status%message = message
+    if (where == input%name) where = where//': contact'
+    call prefix_status(status, where)
+  end subroutine locate_failure
+
+  !> The &contact or &body (file and line) whose name `message` quotes first,
+  !> else the file; lead: "group 'name': ", how a message about it begins.
+  function failure_where(input, system, message, lead) result(where)
     type(input_text_t), intent(in) :: input
     type(contact_system_t), intent(in) :: system
     character(len=*), intent(in) :: message
+    character(len=:), allocatable, intent(out) :: lead
     character(len=:), allocatable :: where
     integer :: k, first
     where = input%name
+    lead = ''
     first = len(message) + 1
     do k = 1, size(system%contacts)
       call consider('contact', k, system%contacts(k)%name)
@@ -79,6 +101,7 @@ contains
       if (at > 0 .and. at < first) then
         first = at
         where = where_given(input, group, 'name', occurrence=k)//': &'//group//' name = '''//name//''''
+        lead = group//' '''//name//''': '
       end if
     end subroutine consider
 

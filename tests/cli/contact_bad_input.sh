@@ -3,10 +3,12 @@
 # message naming the file, the group (with its line), the variable, the value
 # and what is allowed: unknown names, a contact listed before the one that
 # carries its body_1, a body carried twice or never, a loop that cannot close
-# (which contact, by how much), the parallel-normal branch, start velocities
-# that push into the surface; a chain that does not apply (the open chain with
-# rolling, a chain at velocity level) or is unknown; a friction law without
-# mu.
+# (which contact, by how much), sides that point the normals the same way
+# (which contact, which side to flip), inertia tensors that are not positive
+# definite (at the &body), start velocities that push into the surface; a
+# chain that does not apply (the open chain with rolling, a chain at velocity
+# level) or is unknown; a friction law without mu. A message about a contact
+# or body names it once, by its place.
 set -u
 slidesim=$1
 work=$(mktemp -d)
@@ -46,7 +48,7 @@ expect unknown_body 1 'unknown_body.nml:' '&contact' body_2 "'bal'" "'ball'"
 
 printf "%s\n%s\n&body name = 'top', mass = 1, solid_of = 'ball', position = 0, 0, 0.4 /\n&contact name = 'c2', body_1 = 'ball', shape_1 = 'ball', body_2 = 'top', shape_2 = 'ball' /\n&contact name = 'c1', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
   "$head" "$ball" > "$work/order.nml"
-expect order 1 'order.nml' "contact 'c2'" "body_1 = 'ball'" 'not placed yet' 'before'
+expect order 1 'order.nml:7:' "&contact name = 'c2'" "body_1 = 'ball'" 'not placed yet' 'before'
 
 printf "%s\n%s\n&body name = 'lost', mass = 1, solid_of = 'ball', position = 1, 0, 0.2 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
   "$head" "$ball" > "$work/not_carried.nml"
@@ -54,7 +56,9 @@ expect not_carried 1 'not_carried.nml' "body 'lost'" 'not body_2 of any contact'
 
 printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', side_2 = -1 /\n" \
   "$head" "$ball" > "$work/parallel.nml"
-expect parallel 1 'parallel.nml' "loop 'c'" 'parallel normals'
+expect parallel 1 'parallel.nml:' "&contact name = 'c'" 'side_1 = +1 and side_2 = -1' 'same way' 'parallel normals' \
+  'flip side_2 (side_2 = +1)'
+grep -q 'loop' "$work/parallel.err" && { echo "FAIL parallel: an open chain's message speaks of a loop"; failures=$((failures + 1)); }
 
 printf "%s\n&body name = 'ball', mass = 1, solid_of = 'ball', position = 0, 0, 0.2, angles_deg = 90, 0, 0, velocity = 0, 0, -1 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
   "$head" > "$work/into_surface.nml"
@@ -78,6 +82,19 @@ done
 printf "%s\n&body name = 'ball', mass = 1, position = 0, 0, 0.2 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
   "$head" > "$work/no_inertia.nml"
 expect no_inertia 1 'no_inertia.nml:' '&body' inertia solid_of
+
+# inertia tensors that are not positive definite: refused at the &body
+printf "%s\n&body name = 'ball', mass = 1, inertia = 0, 0, 0, position = 0, 0, 0.2 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
+  "$head" > "$work/zero_inertia.nml"
+expect zero_inertia 1 'zero_inertia.nml:5:' '&body' 'inertia = [0.0, 0.0, 0.0]' "body 'ball'" 'positive definite'
+printf "%s\n&body name = 'ball', mass = 1, inertia = 1e-5, 1e-5, 1e-5, products = 1e-4, 0, 0, position = 0, 0, 0.2 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
+  "$head" > "$work/indefinite.nml"
+expect indefinite 1 'indefinite.nml:5:' '&body' 'products = [1.0E-04, 0.0, 0.0]' "body 'ball'" 'positive definite'
+
+# a body carried twice: the contact is named once, by its place
+printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n&contact name = 'again', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
+  "$head" "$ball" > "$work/twice.nml"
+expect twice 1 'twice.nml:7:' "&contact name = 'again': body_2 = 'ball' is already carried by contact 'c'"
 
 printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', rolling = .true., chain = 'open' /\n" \
   "$head" "$ball" > "$work/open_rolling.nml"

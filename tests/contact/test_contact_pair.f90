@@ -3,8 +3,8 @@
 !> height; the closed mechanism's velocities and accelerations against
 !> differences of its positions along random motions, and its force map's
 !> virtual power, for the egg on a plane and for a B-spline paraboloid in the
-!> bowl of a moving one; the parallel-normal branch and a contact that cannot
-!> close are refused with the contact's name. The open chain (no closure) of
+!> bowl of a moving one; the parallel-normal branch (with the side to flip)
+!> and a contact that cannot close are refused with the contact's name. The open chain (no closure) of
 !> the same cup: started from the loop's closed configuration it puts the cup
 !> where the loop does, its closure monitor reads zero, and its velocities,
 !> accelerations and virtual power pass the same checks along random motions.
@@ -189,7 +189,8 @@ contains
   end subroutine moving_bowl
 
   !> The egg with its normal pointing inwards: g4, g5 hold for parallel normals
-  !> too, so the loop closes, on the wrong branch; the start is refused.
+  !> too, so the loop would close on the wrong branch; the placement refuses
+  !> it, naming the contact and the side to flip.
   subroutine parallel_branch_refused()
     type(mechanism_t) :: m
     type(contact_pair_t) :: pair
@@ -199,8 +200,9 @@ contains
     call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], egg_orientation(tilt), &
                             [0.0_wp, 0.0_wp, 0.03_wp], gap, st)
     call m%check_start(m%scalars(pair%coordinates())%q, st)
-    call check(.not. st%ok() .and. index(st%text(), 'egg_on_table') > 0 .and. index(st%text(), 'parallel') > 0, &
-               'the parallel branch is refused naming the contact: '//st%text())
+    call check(.not. st%ok() .and. index(st%text(), 'egg_on_table') > 0 .and. index(st%text(), 'parallel') > 0 &
+               .and. index(st%text(), 'flip side_2') > 0, 'the parallel branch is refused naming the contact '// &
+               'and the side: '//st%text())
   end subroutine parallel_branch_refused
 
   !> A cup placed beyond the bowl's rim: its nearest point is on the rim, the
