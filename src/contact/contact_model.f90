@@ -28,7 +28,8 @@
 !> velocity-level contact is the closed position-level configuration.
 !>
 !> Start: each body's pose places its contact chain (contact_pair: B moves
-!> along the normal until it touches; `start_gap` says by how much), the loops
+!> along the normal until it touches; `start_gap` says by how much, at every
+!> level: scenarios_contact reports it and refuses moves beyond `body_size`), the loops
 !> close, the branch is checked; the speeds are the least-squares solution of
 !> the bodies' given twists, which must be consistent with the contacts (no
 !> velocity into a surface, no slip where rolling) to 1e-9 of their size.
@@ -52,7 +53,7 @@ module contact_model
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t, contact_model_t, contact_link_t
-  public :: build_contact_model, contact_convergence_coefficient
+  public :: build_contact_model, contact_convergence_coefficient, body_size
   public :: FRICTION_NONE, FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL, FRICTION_COULOMB
   public :: LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
 
@@ -226,6 +227,42 @@ contains
     type(contact_spec_t), intent(in) :: c
     open_chain = c%level == LEVEL_POSITION .and. .not. c%rolling .and. c%chain /= CHAIN_LOOP
   end function open_chain
+
+  !> The size of body k (m): the largest diagonal of the boxes around the
+  !> bounded shapes it carries in its contacts, each sampled on a 21 x 21
+  !> grid of its parameter domain; 0 if it carries none (a plane, a domain
+  !> beyond 1e6): unknown.
+  function body_size(system, k) result(length)
+    type(contact_system_t), intent(in) :: system
+    integer, intent(in) :: k
+    real(wp) :: length
+    integer :: j
+    length = 0
+    do j = 1, size(system%contacts)
+      associate (c => system%contacts(j))
+        if (c%body_1 == system%bodies(k)%name) &
+          length = max(length, extent(system%shapes(shape_index(system, c%shape_1))%surface))
+        if (c%body_2 == system%bodies(k)%name) &
+          length = max(length, extent(system%shapes(shape_index(system, c%shape_2))%surface))
+      end associate
+    end do
+  contains
+    real(wp) function extent(surface)
+      class(surface_t), intent(in) :: surface
+      integer, parameter :: n = 21
+      real(wp) :: box(4), u(n), v(n), x(n, n), y(n, n), z(n, n)
+      type(status_t) :: st
+      integer :: i
+      extent = 0
+      call surface%domain(box(1), box(2), box(3), box(4))
+      if (.not. maxval(abs(box)) < 1e6_wp) return
+      u = [(box(1) + (box(2) - box(1))*i/real(n - 1, wp), i = 0, n - 1)]
+      v = [(box(3) + (box(4) - box(3))*i/real(n - 1, wp), i = 0, n - 1)]
+      call surface%points_on_grid(u, v, x, y, z, st)
+      if (.not. st%ok()) return
+      extent = norm2([maxval(x) - minval(x), maxval(y) - minval(y), maxval(z) - minval(z)])
+    end function extent
+  end function body_size
 
   !> 0 for 'ground', the index of a body, -1 if unknown.
   pure integer function body_index(system, name) result(k)
@@ -576,6 +613,8 @@ contains
             associate (b => system%bodies(body_index(system, c%body_2)))
               call place_contact_pair(m, link%pair, rot_a, r_a, b%rotation, b%position, link%start_gap, status)
             end associate
+          else   ! velocity level: from the closed configuration too
+            link%start_gap = closed%links(k)%start_gap
           end if
         end associate
         if (.not. status%ok()) return

@@ -5,9 +5,12 @@
 !> the multibody scenarios' common run (scenarios_mechanism).
 module scenarios_contact
   use base_kinds, only: wp
-  use base_status, only: status_t, prefix_status
-  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
-  use io_input, only: input_text_t, check_known_groups, mark_input_failure, where_given
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_log, only: log_info
+  use base_text, only: format_short
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient, &
+    body_size
+  use io_input, only: input_text_t, check_known_groups, mark_input_failure, where_given, format_vector
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config, contact_groups, contact_repeatable_groups
@@ -48,10 +51,47 @@ contains
       call mark_input_failure(status)
       return
     end if
+    if (status%ok()) call check_moves(input, system, model, status)
+    if (.not. status%ok()) return
     call run_mechanism('contact', input, run, solver, model%ode, model%y0(1:f), model%y0(f + 1:f + ns), &
                        model%q_units, model%beta_units, status, &
                        surface=system%shapes(first_shape(system))%surface)
   end subroutine run_contact
+
+  !> A line for every body that its start position did not put onto its
+  !> carrier (the documented convenience: contact_pair moves it along the
+  !> normal until it touches), so that no move passes unseen; moves below a
+  !> nanometre are rounding of a position meant to touch. A move longer than
+  !> the body's own size (contact_model body_size; none for a body of planes
+  !> only) is refused: no position meant to touch is that far off, while a
+  !> mistyped one (5.0 for 0.05 m, a sign, mm for m) is, and over a curved
+  !> shape the point the body is moved onto depends on where it starts.
+  subroutine check_moves(input, system, model, status)
+    type(input_text_t), intent(in) :: input
+    type(contact_system_t), intent(in) :: system
+    type(contact_model_t), intent(in) :: model
+    type(status_t), intent(inout) :: status
+    integer :: k, b, j
+    real(wp) :: length
+    character(len=:), allocatable :: move
+    do k = 1, size(model%links)
+      associate (gap => model%links(k)%start_gap, c => system%contacts(k))
+        if (.not. abs(gap) > 1e-9_wp) cycle
+        move = trim(merge('lowered', 'lifted ', gap > 0))//' by '//format_short(abs(gap))// &
+          ' m along the normal of contact '''//c%name//''' to touch shape '''//c%shape_1//''''
+        b = findloc([(system%bodies(j)%name == c%body_2, j = 1, size(system%bodies))], .true., dim=1)
+        length = body_size(system, b)
+        if (length > 0 .and. abs(gap) > length) then
+          call set_status(status, STATUS_INVALID_INPUT, where_given(input, 'body', 'position', occurrence=b)// &
+            ': &body: position = '//format_vector(system%bodies(b)%position)//' is not allowed: body '''// &
+            c%body_2//''' would be '//move//', more than its own size ('//format_short(length)// &
+            ' m); the start position must be within the body''s size of touching (a mistyped position?)')
+          return
+        end if
+        call log_info('contact: body '''//c%body_2//''' '//move//' (its start position did not)')
+      end associate
+    end do
+  end subroutine check_moves
 
   !> Puts in front of a failure of the model's build or start where it is
   !> about: the &contact or &body (file and line) whose name the message
