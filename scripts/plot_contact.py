@@ -1,52 +1,15 @@
 #!/usr/bin/python3
-"""Plots a contact result (scenario contact): the paths of the bodies and of
-the contact points in 3-D, the bodies' angular velocities (a spin's angle
-grows without bound, its rate tells more), the contacts' normal forces and sliding speeds, and the energy. (For the spinning
-egg against Moffatt-Shimomura see plot_egg.py.)
+"""Plots bodies in point contact: paths, angular velocities, forces, energy.
 
     scripts/plot_contact.py RESULT.h5 [-o PICTURE] [--show]
+
+is `slidesim-plot --kind contact` of the slidesim Python package (python/), used
+from this checkout without installing it.
 """
-import numpy as np
+import os
+import sys
 
-from plot_common import command_line, equal_axes_3d, finish
-from plot_multibody import body_paths, contact_forces, energy, suptitle
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), os.pardir, "python"))
+from slidesim.plot import main  # noqa: E402  (the standard library only: a missing module is named)
 
-
-def main():
-    args, r, plt = command_line(__doc__.splitlines()[0], ("contact",))
-    g = "/contact"
-    t = r[g + "/time"].values
-    contacts = sorted(r.file[g + "/contacts"]) if g + "/contacts" in r else []
-    fig = plt.figure(figsize=(15, 9))
-    ax = fig.add_subplot(1, 2, 1, projection="3d")
-    drawn = [body_paths(ax, r, g)]
-    for name in contacts:
-        p = r[f"{g}/contacts/{name}/position"].values
-        ax.plot(*p.T, "--", lw=0.8, label=f"contact {name}")
-        drawn.append(p)
-    ax.legend(loc="upper left", fontsize=8)
-    equal_axes_3d(ax, np.vstack(drawn))
-    ax.set_title("paths of the bodies (solid) and contact points (dashed)")
-    ax = fig.add_subplot(3, 2, 2)
-    bodies = sorted(r.file[g + "/bodies"])
-    for name in bodies:
-        w = r[f"{g}/bodies/{name}/angular_velocity"].values
-        if len(bodies) == 1:   # one body: its components; several: their magnitudes
-            for k, axis in enumerate("xyz"):
-                ax.plot(t, w[:, k], lw=1, label=f"{name} ω{axis}")
-        else:
-            ax.plot(t, np.linalg.norm(w, axis=1), lw=1, label=f"{name} |ω|")
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel("angular velocity [rad/s]")
-    ax.set_title("angular velocities (world axes)" if len(bodies) == 1 else "angular speeds")
-    ax.grid(True)
-    ax.legend(fontsize=8)
-    contact_forces(fig.add_subplot(3, 2, 4), r, g, [(name, "-") for name in contacts], contacts)
-    energy(fig.add_subplot(3, 2, 6), r, g)
-    suptitle(fig, r)
-    fig.tight_layout()
-    finish(args, fig, plt)
-
-
-if __name__ == "__main__":
-    main()
+sys.exit(main(["--kind", "contact", *sys.argv[1:]]))

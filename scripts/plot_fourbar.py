@@ -1,47 +1,15 @@
 #!/usr/bin/python3
-"""Plots a four-bar result (scenario fourbar): the crank, coupler and rocker
-angles over time in degrees, the rocker angle over the crank angle (the
-transmission), the energy and the loop-closure residual.
+"""Plots a four-bar linkage: angles, energy.
 
     scripts/plot_fourbar.py RESULT.h5 [-o PICTURE] [--show]
+
+is `slidesim-plot --kind fourbar` of the slidesim Python package (python/), used
+from this checkout without installing it.
 """
-import numpy as np
+import os
+import sys
 
-from plot_common import DEGREES, command_line, finish
-from plot_multibody import coordinates, energy, suptitle
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), os.pardir, "python"))
+from slidesim.plot import main  # noqa: E402  (the standard library only: a missing module is named)
 
-
-def main():
-    args, r, plt = command_line(__doc__.splitlines()[0], ("fourbar",))
-    g = "/fourbar"
-    t = r[g + "/time"].values
-    crank = r[g + "/coordinates/crank_angle/value"].values
-    fig = plt.figure(figsize=(13, 8))
-    ax = fig.add_subplot(2, 2, 1)
-    coordinates(ax, r, g)
-    for name in sorted(r.file[g + "/dependent"]):
-        ax.plot(t, r[f"{g}/dependent/{name}"].values * DEGREES, "--", label=f"{name} [deg]")
-    ax.legend(fontsize=8)
-    ax.set_ylabel("angle [deg]")
-    ax = fig.add_subplot(2, 2, 2)
-    ax.plot((crank * DEGREES) % 360, r[g + "/dependent/rocker_angle"].values * DEGREES, ".", ms=2)
-    ax.set_xlabel("crank angle mod 360 [deg]")
-    ax.set_ylabel("rocker angle [deg]")
-    ax.set_title("transmission")
-    ax.grid(True)
-    energy(fig.add_subplot(2, 2, 3), r, g)
-    ax = fig.add_subplot(2, 2, 4)
-    floor = 1e-17   # exact closures (residual 0) are drawn here
-    ax.semilogy(t, np.maximum(r[g + "/closure_residual"].values, floor))
-    ax.set_ylim(floor / 2, None)
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel("closure residual [m]")
-    ax.set_title("loop closure (0 drawn at 1e-17)")
-    ax.grid(True)
-    suptitle(fig, r)
-    fig.tight_layout()
-    finish(args, fig, plt)
-
-
-if __name__ == "__main__":
-    main()
+sys.exit(main(["--kind", "fourbar", *sys.argv[1:]]))

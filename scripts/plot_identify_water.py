@@ -1,83 +1,15 @@
 #!/usr/bin/python3
-"""Plots a result file of the water-friction identification (scenario
-`identify_water`): measured against simulated
-- middle of the flow at every section (left, in degrees from the bottom);
-- speeds on every segment (middle, the segments as horizontal bars);
-- with a weight sweep (table 4.2): the cost's two parts against the weight
-  (right);
-and f1, f2, f3 with their standard errors in the title.
+"""Plots the water-friction identification: measured against simulated.
 
-usage: scripts/plot_identify_water.py result.h5 [picture.png]
-Without a picture name the figure is written next to the result file as .png.
+    scripts/plot_identify_water.py RESULT.h5 [-o PICTURE] [--show]
+
+is `slidesim-plot --kind identify_water` of the slidesim Python package (python/), used
+from this checkout without installing it.
 """
+import os
 import sys
 
-import h5py
-import numpy as np
-import matplotlib
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), os.pardir, "python"))
+from slidesim.plot import main  # noqa: E402  (the standard library only: a missing module is named)
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-
-def main(argv):
-    if len(argv) < 2:
-        print(__doc__)
-        return 1
-    path = argv[1]
-    picture = argv[2] if len(argv) > 2 else path.rsplit(".", 1)[0] + ".png"
-    with h5py.File(path, "r") as f:
-        g = f["/identify_water"]
-        fit, se = g["f"][:], g["standard_error"][:]
-        twin = g["twin_f"][:] if "twin_f" in g else None
-        sec = {k: g["sections/" + k][:] for k in ("arc_length", "measured_v", "simulated_v")} if "sections" in g else None
-        seg = {k: g["segments/" + k][:] for k in ("start", "end", "measured_speed", "simulated_speed")} \
-            if "segments" in g else None
-        sweep = {k: g["sweep/" + k][:] for k in ("weight", "position_part", "speed_part", "cost")} if "sweep" in g else None
-    panels = 3 if sweep else 2
-    fig, axes = plt.subplots(1, panels, figsize=(6 * panels, 4.8))
-    title = "f1 = {:.6g} ± {:.2g} kg/m, f2 = {:.6g} ± {:.2g} kg, f3 = {:.6g} ± {:.2g} kg m".format(
-        fit[0], se[0], fit[1], se[1], fit[2], se[2])
-    if twin is not None:
-        title += "\ntwin experiment with f = {:.6g}, {:.6g}, {:.6g}".format(*twin)
-    fig.suptitle(title, fontsize=10)
-    if sec:
-        ax = axes[0]
-        ax.plot(sec["arc_length"], np.degrees(sec["simulated_v"] - np.pi / 2), "-", color="tab:blue", label="simulated")
-        ax.plot(sec["arc_length"], np.degrees(sec["measured_v"] - np.pi / 2), "o", color="k", mfc="none",
-                label="measured")
-        ax.set_xlabel("section: centerline arc length (m)")
-        ax.set_ylabel("middle of the flow (deg from the bottom)")
-        ax.set_title("the flow's middle at the sections")
-        ax.legend(fontsize=8)
-        ax.grid(alpha=0.3)
-    if seg:
-        ax = axes[1]
-        for k in range(len(seg["start"])):
-            x = [seg["start"][k], seg["end"][k]]
-            ax.plot(x, [seg["measured_speed"][k]] * 2, "-", color="k", lw=3, label="measured" if k == 0 else None)
-            ax.plot(x, [seg["simulated_speed"][k]] * 2, "--", color="tab:red", lw=2,
-                    label="simulated" if k == 0 else None)
-        ax.set_xlabel("centerline arc length (m)")
-        ax.set_ylabel("speed (m/s)")
-        ax.set_title("segment speeds")
-        ax.legend(fontsize=8)
-        ax.grid(alpha=0.3)
-    if sweep:
-        ax = axes[2]
-        ax.plot(sweep["weight"], sweep["position_part"], "o-", label="position part")
-        ax.plot(sweep["weight"], sweep["speed_part"], "s-", label="speed part")
-        ax.plot(sweep["weight"], sweep["cost"], "k^-", label="cost F1")
-        ax.set_xlabel("weight w")
-        ax.set_ylabel("rad^2")
-        ax.set_title("weight sweep (table 4.2)")
-        ax.legend(fontsize=8)
-        ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(picture, dpi=110)
-    print(picture)
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+sys.exit(main(["--kind", "identify_water", *sys.argv[1:]]))

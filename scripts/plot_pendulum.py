@@ -1,31 +1,15 @@
 #!/usr/bin/python3
-"""Plots a pendulum result (scenario pendulum): the angles over time in
-degrees, the paths of the links' frames in the x-z plane, and the energy.
+"""Plots a pendulum: angles, paths, energy.
 
     scripts/plot_pendulum.py RESULT.h5 [-o PICTURE] [--show]
+
+is `slidesim-plot --kind pendulum` of the slidesim Python package (python/), used
+from this checkout without installing it.
 """
-from plot_common import command_line, finish
-from plot_multibody import body_paths, coordinates, energy, suptitle
+import os
+import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), os.pardir, "python"))
+from slidesim.plot import main  # noqa: E402  (the standard library only: a missing module is named)
 
-def main():
-    args, r, plt = command_line(__doc__.splitlines()[0], ("pendulum",))
-    fig = plt.figure(figsize=(13, 8))
-    coordinates(fig.add_subplot(2, 2, 1), r, "/pendulum")
-    energy(fig.add_subplot(2, 2, 3), r, "/pendulum")
-    ax = fig.add_subplot(1, 2, 2)
-    ax.plot([0], [0], "ks", label="hinge")
-    body_paths(ax, r, "/pendulum", "xz")
-    ax.set_aspect("equal")
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("z [m]")
-    ax.set_title("path of the joint between the links\n(the file holds each link's frame origin)")
-    ax.grid(True)
-    ax.legend(fontsize=8)
-    suptitle(fig, r)
-    fig.tight_layout()
-    finish(args, fig, plt)
-
-
-if __name__ == "__main__":
-    main()
+sys.exit(main(["--kind", "pendulum", *sys.argv[1:]]))

@@ -1,74 +1,15 @@
 #!/usr/bin/python3
-"""Plots a slide (scenario geometry): the surface in 3-D with the centerline
-and its frames; for tubes and slides also the plan view coloured by the signed
-curvature, the elevation profile and the signed curvature over arc length
-(positive: turning left, seen from above).
+"""Plots a geometry result: the surface with its frames, plan, elevation, curvature.
 
     scripts/plot_slide.py RESULT.h5 [-o PICTURE] [--show]
+
+is `slidesim-plot --kind slide` of the slidesim Python package (python/), used
+from this checkout without installing it.
 """
-import numpy as np
+import os
+import sys
 
-from plot_common import command_line, draw_surface, equal_axes_3d, finish, title
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), os.pardir, "python"))
+from slidesim.plot import main  # noqa: E402  (the standard library only: a missing module is named)
 
-
-def signed_curvature(points, chi):
-    """chi with the sign of the turn in plan view: + to the left (counter-
-    clockwise seen from above), from the cross product of consecutive chords."""
-    d = np.gradient(points[:, :2], axis=0)
-    dd = np.gradient(d, axis=0)
-    turn = d[:, 0] * dd[:, 1] - d[:, 1] * dd[:, 0]
-    return np.where(turn < 0, -chi, chi)
-
-
-def main():
-    args, r, plt = command_line(__doc__.splitlines()[0], ("geometry",))
-    tube = "/geometry/centerline/points" in r
-    fig = plt.figure(figsize=(14, 8) if tube else (8, 7))
-    ax = fig.add_subplot(1, 2 if tube else 1, 1, projection="3d")
-    pts = draw_surface(ax, r, alpha=0.5)
-    if tube:
-        points = r["/geometry/centerline/points"].values
-        s = r["/geometry/centerline/arc_length"].values
-        chi = r["/geometry/centerline/chi"].values
-        ax.plot(*points.T, "k-", lw=1.2, label="centerline")
-        step = max(1, len(points) // 25)
-        scale = 0.05 * np.ptp(points, axis=0).max()
-        for axis, colour in zip("xyz", "rgb"):
-            d = r["/geometry/centerline/frame_" + axis].values[::step] * scale
-            p = points[::step]
-            ax.quiver(p[:, 0], p[:, 1], p[:, 2], d[:, 0], d[:, 1], d[:, 2], color=colour, lw=0.8)
-        ax.legend(loc="upper left")
-    equal_axes_3d(ax, pts)
-    ax.set_title(f"{r.attrs.get('surface', 'surface')}\n(frames: x red, y green, z blue)")
-    if tube:
-        kappa = signed_curvature(points, chi)
-        plan = fig.add_subplot(2, 4, 3)
-        limit = max(np.abs(kappa).max(), 1e-12)
-        sc = plan.scatter(points[:, 0], points[:, 1], c=kappa, s=4, cmap="coolwarm", vmin=-limit, vmax=limit)
-        plan.plot(points[0, 0], points[0, 1], "go", label="start")
-        plan.set_aspect("equal")
-        plan.set_xlabel("x [m]")
-        plan.set_ylabel("y [m]")
-        plan.set_title("plan view")
-        plan.legend(fontsize=8)
-        fig.colorbar(sc, ax=plan, label="signed curvature [1/m]")
-        profile = fig.add_subplot(2, 4, 4)
-        profile.plot(s, points[:, 2], "k-")
-        profile.set_xlabel("arc length [m]")
-        profile.set_ylabel("elevation z [m]")
-        profile.set_title(f"elevation profile (drop {points[0, 2] - points[-1, 2]:.2f} m)")
-        profile.grid(True)
-        curv = fig.add_subplot(2, 2, 4)
-        curv.plot(s, kappa, "b-")
-        curv.axhline(0, color="gray", lw=0.5)
-        curv.set_xlabel("arc length [m]")
-        curv.set_ylabel("signed curvature [1/m]")
-        curv.set_title("curvature chi (4.8), + turning left")
-        curv.grid(True)
-    fig.suptitle(title(r))
-    fig.tight_layout()
-    finish(args, fig, plt)
-
-
-if __name__ == "__main__":
-    main()
+sys.exit(main(["--kind", "slide", *sys.argv[1:]]))

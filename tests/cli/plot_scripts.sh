@@ -28,15 +28,15 @@ link optimization design_optimize_table_4_12
 "$python" "$root/tests/cli/check_plot_scripts.py" "$root/scripts" "$work" "$work/water.h5" "$work/sled.h5" \
   "$root/README.md" water=water slide=geometry point_mass=point_mass pendulum=pendulum fourbar=fourbar sled=sled \
   ride=ride contact=contact egg=contact optimization=optimize || fail "plot scripts"
-# plot_egg.py's tilt is the symmetry axis's: the egg described with its long
+# the egg plot's tilt is the symmetry axis's: the egg described with its long
 # axis on z (a chart change as it stands up) draws the shipped egg's curve
-"$python" - "$root/scripts" "$results/contact_egg.h5" "$results/contact_egg_long_axis_z.h5" <<'PY' || fail "plot_egg: the long axis on z"
+"$python" - "$root/python" "$results/contact_egg.h5" "$results/contact_egg_long_axis_z.h5" <<'PY' || fail "plot_egg: the long axis on z"
 import json
 import sys
 sys.path.insert(0, sys.argv[1])
 import h5py
 import numpy as np
-import plot_egg
+from slidesim.plot import egg as plot_egg
 theta = []
 for path in sys.argv[2:]:
     with h5py.File(path, "r") as f:

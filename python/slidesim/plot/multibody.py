@@ -1,10 +1,10 @@
 """The plots of the multibody scenarios (pendulum, fourbar, sled, contact),
-shared by plot_pendulum.py, plot_fourbar.py, plot_sled.py and plot_contact.py:
+shared by the pendulum, fourbar, sled and contact plots:
 the coordinates over time (angles in degrees), the body paths, the contact
 forces and speeds, the energy."""
 import numpy as np
 
-from plot_common import DEGREES, draw_surface, equal_axes_3d, title
+from .common import DEGREES, draw_surface, equal_axes_3d, title
 
 
 def coordinates(ax, r, group):

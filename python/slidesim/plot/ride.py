@@ -1,0 +1,152 @@
+"""Plots a ride result file (scenario `ride`, docs/rider.md):
+- the unrolled slide: the angle of the three contacts (pelvis, heels, back)
+  and the water band between its edges over the centerline arc length
+  (0 deg = the bottom of the tube, positive to the left);
+- the rider's speed and the water's;
+- the felt accelerations in g (longitudinal, lateral, normal at the pelvis)
+  with the user's acceleration limits;
+- the normal forces of the three contacts;
+- a 3-D view of the slide with the water band and the contacts' paths.
+
+    slidesim-plot RESULT.h5 [-o PICTURE] [--show]
+"""
+import math
+
+import numpy as np
+
+from .common import title
+
+CONTACTS = ("pelvis", "heels", "back")
+COLOURS = {"pelvis": "tab:red", "heels": "tab:green", "back": "tab:purple"}
+AXES = ("longitudinal", "lateral", "normal")
+SCENARIOS = ("ride",)
+
+
+def rows(a):
+    """Fortran (3 x n) arrays come as (n, 3); keep them so."""
+    a = np.asarray(a)
+    return a.T if a.ndim == 2 and a.shape[0] == 3 and a.shape[1] != 3 else a
+
+
+def text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def read(f):
+    """The ride's arrays from an open h5py.File."""
+    d = {}
+    d["status"] = text(f.attrs.get("status", "?"))
+    r = f["/rider"]
+    d["outcome"] = text(r.attrs.get("outcome", "?"))
+    d["s"] = r["arc_length"][:]
+    d["speed"] = r["speed"][:]
+    d["felt"] = rows(r["acceleration_g"][:])
+    for c in CONTACTS:
+        d[c] = {k: r[f"{c}/{k}"][:] for k in ("arc_length", "wall_angle", "normal_force", "in_water")}
+        d[c]["position"] = rows(r[f"{c}/position"][:])
+    w = f["/water"]
+    d["water_s"] = w["arc_length"][:]
+    d["water_speed"] = w["speed"][:]
+    t = f["/water/table"]
+    d["table_s"] = t["arc_length"][:]
+    d["table_left"] = t["v_left"][:]
+    d["table_right"] = t["v_right"][:]
+    d["table_mid"] = t["v"][:]
+    d["water_left"] = rows(w["left_point"][:])
+    d["water_right"] = rows(w["right_point"][:])
+    g = f["/geometry/surface"]
+    d["grid"] = [g[k][:] for k in ("x", "y", "z")]
+    d["limits"] = []
+    if "/evaluation/limits" in f:
+        for name in f["/evaluation/limits"]:
+            lim = f[f"/evaluation/limits/{name}"]
+            entry = {"quantity": text(lim["quantity"][()]), "verdict": text(lim["verdict"][()]).strip()}
+            for b in ("minimum", "maximum"):
+                if b in lim:
+                    entry[b] = float(lim[b][()])
+            d["limits"].append(entry)
+    return d
+
+
+def draw(result, plt, args):
+    """The figure of a result; args: the command line's."""
+    d = read(result.file)
+    deg = 180 / math.pi
+    s = d["s"]
+
+    fig = plt.figure(figsize=(15, 14))
+    fig.suptitle(f"{title(result)}: {d['outcome']}", fontsize=9)
+    grid = fig.add_gridspec(3, 2, height_ratios=[1, 1, 1.7])
+
+    ax = fig.add_subplot(grid[0, 0])
+    ax.fill_between(d["table_s"], (d["table_right"] - math.pi / 2) * deg, (d["table_left"] - math.pi / 2) * deg,
+                    color="tab:blue", alpha=0.25, label="water band")
+    ax.plot(d["table_s"], (d["table_mid"] - math.pi / 2) * deg, color="tab:blue", lw=0.6, label="water middle")
+    for c in CONTACTS:
+        ax.plot(d[c]["arc_length"], d[c]["wall_angle"] * deg, color=COLOURS[c], lw=1.0, label=c)
+    ax.set_xlabel("arc length along the slide (m)")
+    ax.set_ylabel("angle from the bottom (deg, + left)")
+    ax.set_title("the unrolled slide: contacts and water")
+    ax.legend(fontsize=7, loc="lower left")
+    ax.grid(alpha=0.3)
+
+    ax = fig.add_subplot(grid[0, 1])
+    ax.plot(s, d["speed"], color="k", label="rider (pelvis)")
+    ax.plot(d["water_s"], d["water_speed"], color="tab:blue", lw=0.8, label="water")
+    for lim in d["limits"]:
+        if lim["quantity"] in ("speed", "exit_speed") and "maximum" in lim:
+            ax.axhline(lim["maximum"], color="tab:red", ls="--", lw=0.8,
+                       label=f"{lim['quantity']} limit ({lim['verdict']})")
+    ax.set_xlabel("arc length (m)")
+    ax.set_ylabel("speed (m/s)")
+    ax.set_title("speed")
+    ax.legend(fontsize=7)
+    ax.grid(alpha=0.3)
+
+    ax = fig.add_subplot(grid[1, 0])
+    for k, name in enumerate(AXES):
+        ax.plot(s, d["felt"][:, k], lw=0.9, label=name)
+        for lim in d["limits"]:
+            if lim["quantity"] == "acceleration_" + name:
+                for b in ("minimum", "maximum"):
+                    if b in lim:
+                        ax.axhline(lim[b], color=ax.lines[-1].get_color(), ls="--", lw=0.8,
+                                   label=f"{name} {b} ({lim['verdict']})")
+    ax.set_xlabel("arc length (m)")
+    ax.set_ylabel("felt acceleration (g)")
+    ax.set_title("felt accelerations at the pelvis (a - g)/|g|")
+    ax.legend(fontsize=7)
+    ax.grid(alpha=0.3)
+
+    ax = fig.add_subplot(grid[1, 1])
+    for c in CONTACTS:
+        ax.plot(s, d[c]["normal_force"], color=COLOURS[c], lw=0.9, label=c)
+    for lim in d["limits"]:
+        if lim["quantity"] == "normal_force" and "minimum" in lim:
+            ax.axhline(lim["minimum"], color="tab:red", ls="--", lw=0.8, label=f"minimum ({lim['verdict']})")
+    ax.axhline(0, color="k", lw=0.5)
+    ax.set_xlabel("arc length (m)")
+    ax.set_ylabel("normal force (N)")
+    ax.set_title("normal forces (0: lift-off)")
+    ax.legend(fontsize=7)
+    ax.grid(alpha=0.3)
+
+    ax = fig.add_subplot(grid[2, :], projection="3d")
+    x, y, z = d["grid"]
+    ax.plot_surface(x, y, z, color="0.85", alpha=0.25, linewidth=0, rstride=4, cstride=2)
+    left, right = d["water_left"], d["water_right"]
+    ax.plot(left[:, 0], left[:, 1], left[:, 2], color="tab:blue", lw=0.6)
+    ax.plot(right[:, 0], right[:, 1], right[:, 2], color="tab:blue", lw=0.6, label="water edges")
+    for c in CONTACTS:
+        p = d[c]["position"]
+        ax.plot(p[:, 0], p[:, 1], p[:, 2], color=COLOURS[c], lw=1.0, label=c)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_zlabel("z (m)")
+    ax.set_box_aspect((np.ptp(x), np.ptp(y), np.ptp(z)))   # true proportions
+    ax.view_init(elev=35, azim=-60)
+    ax.set_title("the slide, the water band and the contacts' paths")
+    ax.legend(fontsize=7)
+
+    fig.tight_layout()
+    return fig

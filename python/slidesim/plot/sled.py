@@ -1,0 +1,37 @@
+"""Plots a sled result (scenario sled): the bar's contact paths on the surface
+in 3-D with the bar drawn at intervals, the coordinates over time (angles in
+degrees), the contact normal forces and the sliding speed, and the energy.
+
+    slidesim-plot RESULT.h5 [-o PICTURE] [--show]
+"""
+import numpy as np
+
+from .common import draw_surface, equal_axes_3d
+from .multibody import contact_forces, coordinates, energy, suptitle
+
+SCENARIOS = ("sled",)
+
+
+def draw(r, plt, args):
+    """The figure of a result; args: the command line's."""
+    g = "/sled"
+    t = r[g + "/time"].values
+    rear = r[g + "/contacts/rear/position"].values
+    front = r[g + "/contacts/front/position"].values
+    fig = plt.figure(figsize=(15, 9))
+    ax = fig.add_subplot(1, 2, 1, projection="3d")
+    pts = draw_surface(ax, r, alpha=0.25)
+    ax.plot(*rear.T, "r-", lw=1, label="rear contact")
+    ax.plot(*front.T, "b-", lw=1, label="front contact")
+    for i in np.linspace(0, len(t) - 1, 12).astype(int):
+        ax.plot(*np.column_stack([rear[i], front[i]]), "k-", lw=2)
+    ax.plot([], [], "k-", lw=2, label="the bar (12 instants)")
+    ax.legend(loc="upper left", fontsize=8)
+    equal_axes_3d(ax, np.vstack([pts, rear, front]))
+    ax.set_title("the bar on the surface")
+    coordinates(fig.add_subplot(3, 2, 2), r, g)
+    contact_forces(fig.add_subplot(3, 2, 4), r, g, [("rear", "r"), ("front", "b")], ["rear"])
+    energy(fig.add_subplot(3, 2, 6), r, g)
+    suptitle(fig, r)
+    fig.tight_layout()
+    return fig
