@@ -83,8 +83,9 @@ contains
     do i = 1, size(unused)
       if (len_trim(unused(i)) == 0) cycle
       if (group_present(input, unused(i))) then
-        call r%invalid('kind', ''''//trim(gkind)//'''', 'this input also has &'//trim(unused(i))// &
-                       ', which a '//trim(gkind)//' does not use', status)
+        call set_status(status, STATUS_INVALID_INPUT, where_given(input, unused(i), '')//': &'// &
+                        trim(unused(i))//' is not read: the surface is a '//trim(gkind)//' ('//kind_source()// &
+                        '), which reads '//groups_read(gkind)//'; remove the group or change the kind')
         return
       end if
     end do
@@ -125,7 +126,33 @@ contains
     case ('bspline')
       call read_bspline(input, surface, status)
     end select
+
+  contains
+
+    !> Where the kind was chosen, for the message above.
+    function kind_source() result(text)
+      character(len=:), allocatable :: text
+      if (present(kind)) then
+        text = '&surface kind = '''//kind//''''
+      else if (r%has('kind')) then
+        text = '&geometry kind, '//r%where('kind')
+      else
+        text = 'the default of &geometry kind'
+      end if
+    end function kind_source
   end subroutine read_geometry_config
+
+  !> The geometry groups a kind of surface reads, for messages.
+  pure function groups_read(kind) result(text)
+    character(len=*), intent(in) :: kind
+    character(len=:), allocatable :: text
+    select case (trim(kind))
+    case ('tube'); text = '&geometry, &centerline and &cross_section'
+    case ('slide'); text = '&geometry, &slide_elements and &cross_section'
+    case ('blended'); text = '&geometry and &blended'
+    case default; text = '&geometry and &bspline'
+    end select
+  end function groups_read
 
   !> &centerline: kind = 'line' | 'helix' | 'points', and the horizon field
   !> (a constant vector, or for points one horizon vector per point, fitted).

@@ -8,7 +8,7 @@ module io_surface_config
                                  apex_paraboloid_t
   use geometry_placed_surface, only: placed_surface_t
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, load_input_file, group_present, &
-                      check_known_groups
+                      check_known_groups, where_given
   use io_geometry_config, only: read_geometry_config, geometry_groups, geometry_file_groups
   implicit none (type, external)
   private
@@ -27,14 +27,17 @@ contains
   !> given in this input or in the file `geometry_file` (relative to this
   !> input's folder), not both. Named surfaces (the shapes of the contact
   !> scenario) are read from the occurrence-th of the repeatable group `group`
-  !> with a required `name` (returned).
-  subroutine read_surface_config(input, built_surface, status, group, occurrence, name)
+  !> with a required `name` (returned). `described_as` says which surface was built
+  !> and from which file, for reports ('slide of standard elements from
+  !> inputs/demo_slide/slide.nml').
+  subroutine read_surface_config(input, built_surface, status, group, occurrence, name, described_as)
     type(input_text_t), intent(in) :: input
     class(surface_t), allocatable, intent(out) :: built_surface
     type(status_t), intent(inout) :: status
     character(len=*), intent(in), optional :: group
     integer, intent(in), optional :: occurrence
     character(len=:), allocatable, intent(out), optional :: name
+    character(len=:), allocatable, intent(out), optional :: described_as
     character(len=32) :: given_name
     character(len=24) :: kind
     character(len=4096) :: geometry_file
@@ -82,8 +85,18 @@ contains
     if (.not. any(kind == geometry_kinds_here())) then
       do i = 1, size(geometry_groups)
         if (group_present(input, geometry_groups(i))) then
-          call r%invalid('kind', ''''//trim(kind)//'''', 'this input has &'//trim(geometry_groups(i))// &
-                         ', which only a tube, slide, blended or bspline surface uses', status)
+          if (r%present) then
+            call set_status(status, STATUS_INVALID_INPUT, where_given(input, geometry_groups(i), '')//': &'// &
+                            trim(geometry_groups(i))//' is read only by a tube, slide, blended or bspline '// &
+                            'surface, and &'//g//' kind = '''//trim(kind)//''' ('//r%where('kind')// &
+                            ') is none: remove the group or change kind')
+          else
+            call set_status(status, STATUS_INVALID_INPUT, where_given(input, geometry_groups(i), '')//': &'// &
+                            trim(geometry_groups(i))//' is read only through &'//g//' kind = '// &
+                            selecting_kind(geometry_groups(i))//', and this input has no &'//g// &
+                            ' (its surface is the default plane): add &'//g//' kind = '// &
+                            selecting_kind(geometry_groups(i))//' or remove the group')
+          end if
           return
         end if
       end do
@@ -117,17 +130,20 @@ contains
           return
         end if
         call read_geometry_config(input, local, status, kind=trim(kind))
+        if (present(described_as)) described_as = kind_words(kind)//' from '//input%name
       else
         do i = 1, size(geometry_groups)
           if (group_present(input, geometry_groups(i))) then
-            call r%invalid('geometry_file', ''''//trim(geometry_file)//'''', 'this input has its own &'// &
-                           trim(geometry_groups(i))//': give the geometry either here or in geometry_file, '// &
-                           'not both', status)
+            call set_status(status, STATUS_INVALID_INPUT, where_given(input, geometry_groups(i), '')//': &'// &
+                            trim(geometry_groups(i))//' is not read: &'//g//' geometry_file = '''// &
+                            trim(geometry_file)//''' ('//r%where('geometry_file')//') gives the geometry; '// &
+                            'give it either in this input or in geometry_file, not both')
             return
           end if
         end do
         call load_input_file(input%resolve_path(geometry_file), geometry_input, status)
         if (status%ok()) call check_known_groups(geometry_input, geometry_file_groups, status)
+        if (status%ok()) call check_geometry_file_run(geometry_input, status)
         ! a file without the geometry (empty, /dev/null, another scenario's
         ! input) is named as such, not read as a geometry of defaults
         if (status%ok()) then   ! (nested: Fortran does not short-circuit .and.)
@@ -140,6 +156,7 @@ contains
           end if
         end if
         if (status%ok()) call read_geometry_config(geometry_input, local, status, kind=trim(kind))
+        if (present(described_as)) described_as = kind_words(kind)//' from '//geometry_input%name
         if (.not. status%ok()) then
           call prefix_status(status, r%where('geometry_file')//': &'//g//': geometry_file = '''// &
                              trim(geometry_file)//'''')
@@ -148,6 +165,9 @@ contains
       end if
     end select
     if (.not. status%ok()) return
+    if (present(described_as)) then
+      if (.not. allocated(described_as)) described_as = kind_words(kind)//' of &'//g//' in '//input%name
+    end if
     if (.not. built%ok()) then
       status = built
       status%code = STATUS_INVALID_INPUT
@@ -177,6 +197,50 @@ contains
     end subroutine get_semi_axes
 
   end subroutine read_surface_config
+
+  !> A geometry file may be a complete input of the geometry scenario (the
+  !> demo slide is): its &run and &grid are for running it on its own. A
+  !> &run naming another scenario says the file is not a geometry file (the
+  !> water input named where its slide was meant): refused, not half read.
+  subroutine check_geometry_file_run(geometry_input, status)
+    type(input_text_t), intent(in) :: geometry_input
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    character(len=32) :: scenario
+    scenario = 'geometry'
+    call open_group(geometry_input, 'run', [character(len=8) :: 'scenario', 'output', 'title'], r, status)
+    call r%get('scenario', scenario, status)
+    if (status%ok() .and. trim(scenario) /= 'geometry') &
+      call r%invalid('scenario', ''''//trim(scenario)//'''', 'a geometry file holds the geometry groups '// &
+                     '(&run, if any, with scenario = ''geometry''); this is an input of another scenario', status)
+  end subroutine check_geometry_file_run
+
+  !> The kind of surface in words, for reports.
+  pure function kind_words(kind) result(words)
+    character(len=*), intent(in) :: kind
+    character(len=:), allocatable :: words
+    select case (trim(kind))
+    case ('tube'); words = 'tube around a &centerline'
+    case ('slide'); words = 'slide of standard elements (&slide_elements)'
+    case ('blended'); words = 'blended surface'
+    case ('bspline'); words = 'B-spline surface'
+    case default; words = trim(kind)
+    end select
+  end function kind_words
+
+  !> The &surface kind that reads a geometry group, for messages.
+  pure function selecting_kind(group) result(kind)
+    character(len=*), intent(in) :: group
+    character(len=:), allocatable :: kind
+    select case (trim(group))
+    case ('centerline'); kind = '''tube'''
+    case ('slide_elements'); kind = '''slide'''
+    case ('cross_section'); kind = '''slide'' or ''tube'''
+    case ('blended'); kind = '''blended'''
+    case ('bspline'); kind = '''bspline'''
+    case default; kind = '''slide'', ''tube'', ''blended'' or ''bspline'''
+    end select
+  end function selecting_kind
 
   !> The group that describes a surface of this kind.
   pure function needed_group(kind) result(group)

@@ -118,7 +118,8 @@ contains
                                                                    write_status)
     call file%finish(complete, message, write_status)
     if (allocated(ride%outcome)) call print_report(ride, report, water_done, water%cpu, ride_cpu, &
-                                                   file%final_path(), run, complete, message, write_status)
+                                                   file%final_path(), run, complete, message, write_status, &
+                                                   water_description)
     if (.not. run_status%ok()) then
       status = run_status
     else if (.not. write_status%ok()) then
@@ -338,8 +339,9 @@ contains
   end subroutine write_xdmf
 
   !> The ride report (stdout) and, with --summary-json, its numbers as JSON.
-  subroutine print_report(ride, r, water_done, water_cpu, ride_cpu, path, run, complete, message, status)
+  subroutine print_report(ride, r, water_done, water_cpu, ride_cpu, path, run, complete, message, status, water)
     type(ride_result_t), intent(in) :: ride
+    type(water_description_t), intent(in) :: water   !< the slide ridden: named in the report
     type(ride_report_t), intent(in) :: r
     character(len=*), intent(in) :: water_done, path, message
     real(wp), intent(in) :: water_cpu, ride_cpu
@@ -351,6 +353,8 @@ contains
     character(len=:), allocatable :: c, line, unit
     integer :: k, exceeded
     call summary%start('ride', 'slidesim ride')
+    if (allocated(water%slide_name)) call summary%add_text('slide', 'slide', water%slide_name)
+    call summary%add('slide_length', 'slide centreline length', water%slide%length(), 'm')
     call summary%add_text('water', 'water', water_done)
     call summary%add_text('outcome', 'ride ended', ride%outcome)
     if (r%n > 0) then

@@ -13,7 +13,8 @@ module scenarios_water
   use water_streamline, only: streamline_t
   use water_flow, only: water_series_t, outcome_name, START_EDGES
   use water_run, only: water_description_t, water_result_t, new_streamline, compute_water
-  use io_input, only: input_text_t, check_known_groups, group_present, invalid, format_real, mark_input_failure
+  use io_input, only: input_text_t, check_known_groups, group_present, invalid, format_real, mark_input_failure, &
+    where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
   use io_geometry_config, only: geometry_groups
@@ -68,25 +69,34 @@ contains
     end if
     if (.not. status%ok()) return
     if (group_present(input, 'surface') .and. group_present(input, 'channel')) then
-      call set_status(status, STATUS_INVALID_INPUT, input%name//': give the slide either by &surface ' // &
-                      '(a tube or slide) or by &channel, not both')
+      call set_status(status, STATUS_INVALID_INPUT, where_given(input, 'channel', '')//': &channel is not '// &
+                      'read: the slide is &surface ('//where_given(input, 'surface', '')//'); give the slide '// &
+                      'either by &surface (a tube or slide) or by &channel, not both')
       return
     end if
     if (group_present(input, 'surface')) then
-      call read_surface_config(input, surface, status)
+      call read_surface_config(input, surface, status, described_as=description%slide_name)
       call mark_input_failure(status)
       if (.not. status%ok()) return
       select type (surface)
       type is (tube_surface_t)
         description%slide = surface
       class default
-        call set_status(status, STATUS_INVALID_INPUT, input%name//': &surface: the water needs a tube ' // &
+        call set_status(status, STATUS_INVALID_INPUT, where_given(input, 'surface', 'kind')//': &surface: '// &
+                        'the water needs a tube ' // &
                         '(kind = ''tube'' or ''slide''), not a '//surface%describe())
         return
       end select
     else
+      call refuse_unselected_geometry(input, status)
       call read_channel_config(input, description%slide, status)
       if (.not. status%ok()) return
+      if (group_present(input, 'channel')) then
+        description%slide_name = 'closed-form tube of &channel in '//input%name
+      else
+        description%slide_name = 'the default closed-form tube (&channel''s defaults: '//input%name// &
+                                 ' has no &surface)'
+      end if
     end if
     call read_water_config(input, config, status)
     if (.not. status%ok()) return
@@ -166,6 +176,38 @@ contains
       format_real(start_speed)//' m/s, far above the few m/s of water in a slide; check flow_rate (m^3/s) '// &
       'and the start height (m)')
   end subroutine build_water
+
+  !> Geometry groups are read only through &surface (kind = 'tube' or
+  !> 'slide'): in an input without &surface they would be ignored and the
+  !> water would run on the &channel tube instead of the slide they describe.
+  subroutine refuse_unselected_geometry(input, status)
+    type(input_text_t), intent(in) :: input
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: kind, instead
+    integer :: i
+    ! the groups that choose the slide first, then those that go with them
+    character(len=*), parameter :: order(6) = [character(len=14) :: 'slide_elements', 'centerline', 'blended', &
+      'bspline', 'cross_section', 'geometry']
+    if (.not. status%ok()) return
+    do i = 1, size(order)
+      if (.not. group_present(input, order(i))) cycle
+      select case (trim(order(i)))
+      case ('centerline'); kind = '''tube'''
+      case ('slide_elements'); kind = '''slide'''
+      case default; kind = '''slide'' or ''tube'''
+      end select
+      if (group_present(input, 'channel')) then
+        instead = 'the water would run on the &channel tube instead'
+      else
+        instead = 'the water would run on the default tube of &channel instead'
+      end if
+      call set_status(status, STATUS_INVALID_INPUT, where_given(input, order(i), '')//': &'// &
+                      trim(order(i))//' is read only through &surface kind = '//kind// &
+                      ', and this input has no &surface: '//instead//'; add &surface kind = '//kind// &
+                      ' to run on the slide these groups describe')
+      return
+    end do
+  end subroutine refuse_unselected_geometry
 
   subroutine run_water(input, run, status)
     type(input_text_t), intent(in) :: input
@@ -272,6 +314,8 @@ contains
     if (n < 1) return
     call description%slide%parameter_units(uu, vu)
     call summary%start('water', 'slidesim water in '//description%slide%describe())
+    if (allocated(description%slide_name)) call summary%add_text('slide', 'slide', description%slide_name)
+    call summary%add('slide_length', 'slide centreline length', description%slide%length(), 'm')
     call summary%add('flow_rate', 'flow rate', s%flow_rate, 'm^3/s', 'l/s', 1000.0_wp)
     call summary%add('flow_time', 'flow time', s%time(n), 's')
     call summary%add('slide_length_covered', 'slide length covered', s%arc_length(n) - s%arc_length(1), 'm')

@@ -35,6 +35,7 @@ module water_run
   !> Everything a water run needs (docs/water.md, "The water from a description").
   type :: water_description_t
     type(tube_surface_t) :: slide                             !< every slide is a tube surface
+    character(len=:), allocatable :: slide_name               !< which slide, from where (for reports)
     real(wp) :: flow_rate = 0.004_wp                          !< m^3/s (Q); not used by START_HEIGHT_SPEED
     real(wp) :: f1 = default_f1, f2 = default_f2, f3 = default_f3   !< kg/m, kg, kg m (4.7)
     type(water_start_t) :: start                              !< where and how the water enters

@@ -44,7 +44,7 @@ done
   sed -e '/^&run/,/^\//d' -e '/^&grid/,/^\//d' "$root/inputs/demo_slide/slide.nml"; } > "$work/both.nml"
 run_case both 1 'both.nml' "geometry_file = '$root/inputs/demo_slide/slide.nml'" 'not both'
 printf "&run output = 'unused.h5' /\n&surface kind = 'plane' /\n&point_mass du0 = 1.0 /\n&cross_section radius = 0.5 /\n" > "$work/unused.nml"
-run_case unused 1 'unused.nml:2:' "kind = 'plane'" '&cross_section, which only a tube'
+run_case unused 1 'unused.nml:4: &cross_section is read only by a tube' "kind = 'plane' (unused.nml:2)"
 printf "&run output = 'missing.h5' /\n&surface kind = 'slide' /\n" > "$work/missing.nml"
 run_case missing 1 'missing.nml:2:' "kind = 'slide'" 'needs its geometry: &slide_elements'
 { printf "&run scenario = 'geometry', output = 'kind_clash.h5' /\n&geometry kind = 'tube' /\n"; } > "$work/kind_clash.nml"
