@@ -80,6 +80,12 @@ program slidesim
       if (index(value, '%') == 0 .or. index(value, '=') == 0) &
         call usage_error('--set '//value//': write --set group%variable=value, e.g. --set solver%rtol=1e-8')
       overrides = [character(len=max(len(overrides), len(value))) :: overrides, value]
+    case ('--unset')
+      ! kept in order with the --set arguments, marked (a --set group%... never starts so)
+      call take_value()
+      if (index(value, '%') == 0) call usage_error('--unset '//value//': write --unset group%variable, '// &
+                                                    'e.g. --unset rider%mu')
+      overrides = [character(len=max(len(overrides), len(value) + 8)) :: overrides, '--unset '//value]
     case ('--progress')
       call take_value()
       call set_progress_interval(seconds(value))
@@ -192,6 +198,9 @@ contains
     call write_standard_output('                            a word needs no quotes: --set solver%method=bdf;')
     call write_standard_output('                            of a repeated group the k-th or the one named:')
     call write_standard_output('                            --set "body(2)%mass=3", --set "body(egg)%mass=3"')
+    call write_standard_output('  --unset GROUP%VAR         remove a variable from the input: it takes its')
+    call write_standard_output('                            default (--unset rider%mu: no friction); checked')
+    call write_standard_output('                            like --set, applied in order with the --set ones')
     call write_standard_output('  --check                   read and check the input, build the models, write')
     call write_standard_output('                            nothing; prints "input ok"')
     call write_standard_output('  --summary-json FILE       also write the summary''s numbers as JSON to FILE')

@@ -41,6 +41,7 @@ module io_input
     procedure :: text => input_text
     procedure :: resolve_path => input_resolve_path
     procedure :: override => input_override
+    procedure :: unset => input_unset
   end type input_text_t
 
   !> What a real variable may be: low <= x <= high, or low < x <= high.
@@ -211,11 +212,11 @@ contains
     class(input_text_t), intent(inout) :: self
     character(len=*), intent(in) :: spec
     type(status_t), intent(inout) :: status
-    character(len=:), allocatable :: origin, head, group, selector
+    character(len=:), allocatable :: origin, group, selector
     type(nml_item_t) :: item
     type(nml_group_t), allocatable :: longer(:)
     type(nml_item_t), allocatable :: kept(:)
-    integer :: percent, g, i, n, open_at
+    integer :: percent, g, i, n
 
     if (.not. status%ok()) return
     origin = '--set '//spec
@@ -225,23 +226,8 @@ contains
                       'e.g. --set solver%rtol=1e-8')
       return
     end if
-    head = trim(adjustl(spec(:percent - 1)))
-    selector = ''
-    open_at = index(head, '(')
-    if (open_at > 0) then
-      if (head(len(head):) /= ')' .or. open_at == len(head) - 1) then
-        call set_status(status, STATUS_INVALID_INPUT, origin//': "'//head//'" is not a group: write '// &
-                        'group%variable=value, or group(k)%variable=value for the k-th of a repeated group')
-        return
-      end if
-      selector = trim(adjustl(head(open_at + 1:len(head) - 1)))
-      head = trim(head(:open_at - 1))
-    end if
-    group = lower(head)
-    if (len(group) == 0 .or. verify(group, 'abcdefghijklmnopqrstuvwxyz0123456789_') /= 0) then
-      call set_status(status, STATUS_INVALID_INPUT, origin//': "'//group//'" is not a group name')
-      return
-    end if
+    call target_group(origin, spec(:percent - 1), 'group%variable=value', group, selector, status)
+    if (.not. status%ok()) return
     call parse_assignment(origin, spec(percent + 1:), item, status)
     if (.not. status%ok()) then
       ! the usual cause on a command line: a text with / , or blanks, not quoted
@@ -250,7 +236,7 @@ contains
         quoted_example(spec(percent + 1:))//'"'
       return
     end if
-    call choose_group(self, origin, group, selector, spec(percent:), g, status)
+    call choose_group(self, origin, '--set', group, selector, spec(percent:), g, status)
     if (.not. status%ok()) return
     if (g == 0) then
       allocate (longer(size(self%groups) + 1))
@@ -277,6 +263,86 @@ contains
     self%overrides = self%overrides//'--set '//spec//new_line('a')
   end subroutine input_override
 
+  !> Applies one command-line removal `group%variable` (--unset): every
+  !> assignment of the variable in that group is removed, so it takes its
+  !> default (a friction input made frictionless, a default restored). The
+  !> group is chosen as by --set (group(k)%, group(name)% for a repeated
+  !> group); a group the input does not have is refused (nothing to remove).
+  !> Whether the variable exists is checked where the group is read, whether
+  !> or not the input gave it (open_group): a misspelt name is refused, never
+  !> a silent no-op.
+  subroutine input_unset(self, spec, status)
+    class(input_text_t), intent(inout) :: self
+    character(len=*), intent(in) :: spec
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: origin, group, selector, variable
+    type(nml_item_t) :: removal
+    logical, allocatable :: keep(:)
+    integer :: percent, g, i
+
+    if (.not. status%ok()) return
+    origin = '--unset '//spec
+    percent = index(spec, '%')
+    if (percent < 2) then
+      call set_status(status, STATUS_INVALID_INPUT, origin//': write --unset group%variable, '// &
+                      'e.g. --unset rider%mu')
+      return
+    end if
+    call target_group(origin, spec(:percent - 1), 'group%variable', group, selector, status)
+    if (.not. status%ok()) return
+    variable = lower(trim(adjustl(spec(percent + 1:))))
+    if (len(variable) == 0 .or. verify(variable, 'abcdefghijklmnopqrstuvwxyz0123456789_') /= 0) then
+      call set_status(status, STATUS_INVALID_INPUT, origin//': "'//variable//'" is not a variable name; '// &
+                      '--unset removes a whole variable (no value, no subscript): --unset '//spec(:percent)//'name')
+      return
+    end if
+    call choose_group(self, origin, '--unset', group, selector, spec(percent:), g, status)
+    if (.not. status%ok()) return
+    if (g == 0) then
+      call set_status(status, STATUS_INVALID_INPUT, origin//': the input has no &'//group//' group: '// &
+                      'nothing to remove')
+      return
+    end if
+    associate (grp => self%groups(g))
+      keep = [(grp%items(i)%name /= variable, i = 1, size(grp%items))]
+      grp%items = pack(grp%items, keep)
+      removal%name = variable
+      removal%subscript = ''
+      removal%origin = origin
+      allocate (removal%values(0))
+      if (.not. allocated(grp%removed)) allocate (grp%removed(0))
+      grp%removed = [grp%removed, removal]
+    end associate
+    self%overrides = self%overrides//origin//new_line('a')
+  end subroutine input_unset
+
+  !> The group an override addresses, from `head` (what precedes the %):
+  !> `group`, `group(k)` or `group(name)`; `selector` is the k or the name
+  !> ('' if none). `form` shows the argument's form in messages.
+  subroutine target_group(origin, head_text, form, group, selector, status)
+    character(len=*), intent(in) :: origin, head_text, form
+    character(len=:), allocatable, intent(out) :: group, selector
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: head
+    integer :: open_at
+    head = trim(adjustl(head_text))
+    selector = ''
+    group = ''
+    open_at = index(head, '(')
+    if (open_at > 0) then
+      if (head(len(head):) /= ')' .or. open_at == len(head) - 1) then
+        call set_status(status, STATUS_INVALID_INPUT, origin//': "'//head//'" is not a group: write '// &
+                        form//', or group(k)%... for the k-th of a repeated group')
+        return
+      end if
+      selector = trim(adjustl(head(open_at + 1:len(head) - 1)))
+      head = trim(head(:open_at - 1))
+    end if
+    group = lower(head)
+    if (len(group) == 0 .or. verify(group, 'abcdefghijklmnopqrstuvwxyz0123456789_') /= 0) &
+      call set_status(status, STATUS_INVALID_INPUT, origin//': "'//group//'" is not a group name')
+  end subroutine target_group
+
   !> `variable=value` with the value in single quotes, for the hint above.
   pure function quoted_example(assignment) result(text)
     character(len=*), intent(in) :: assignment
@@ -291,9 +357,9 @@ contains
   !> the input). `selector` is '' (the group must then occur at most once), a
   !> number k (its k-th occurrence) or a name (the occurrence whose `name` is
   !> that, quotes optional); `rest` is '%variable=value', for the messages.
-  subroutine choose_group(self, origin, group, selector, rest, g, status)
+  subroutine choose_group(self, origin, option, group, selector, rest, g, status)
     type(input_text_t), intent(in) :: self
-    character(len=*), intent(in) :: origin, group, selector, rest
+    character(len=*), intent(in) :: origin, option, group, selector, rest
     integer, intent(out) :: g
     type(status_t), intent(inout) :: status
     character(len=:), allocatable :: wanted, list, example
@@ -308,10 +374,10 @@ contains
       end if
       ! in double quotes: the shell would take the parentheses itself
       example = occurrence_name(self, group, n)
-      if (len(example) > 0) example = ' or --set "'//group//'('//example//')'//rest//'"'
+      if (len(example) > 0) example = ' or '//option//' "'//group//'('//example//')'//rest//'"'
       call set_status(status, STATUS_INVALID_INPUT, origin//': the input has '//format_integer(n)//' &'//group// &
-                      ' groups ('//occurrence_list(self, group)//'); say which one to change, e.g. --set "'// &
-                      group//'('//format_integer(n)//')'//rest//'"'//example)
+                      ' groups ('//occurrence_list(self, group)//'); say which one to change, e.g. '//option// &
+                      ' "'//group//'('//format_integer(n)//')'//rest//'"'//example)
       return
     end if
     if (verify(selector, '0123456789') == 0) then
@@ -549,16 +615,27 @@ contains
     reader%line = input%groups(g)%line
     reader%items = input%groups(g)%items
     if (.not. status%ok()) return
-    do i = 1, size(reader%items)
-      if (in_list(reader%items(i)%name, names)) cycle
-      list = ''
-      do j = 1, size(names)
-        list = list//' '//trim(names(j))
+    call check_names(reader%items)
+    ! the variables --unset removed must be the group's too (a misspelt one
+    ! would otherwise be a silent no-op)
+    if (allocated(input%groups(g)%removed)) call check_names(input%groups(g)%removed)
+
+  contains
+
+    subroutine check_names(items)
+      type(nml_item_t), intent(in) :: items(:)
+      if (.not. status%ok()) return
+      do i = 1, size(items)
+        if (in_list(items(i)%name, names)) cycle
+        list = ''
+        do j = 1, size(names)
+          list = list//' '//trim(names(j))
+        end do
+        call set_status(status, STATUS_INVALID_INPUT, item_where(reader, items(i), items(i)%line)// &
+                        ': &'//reader%group//': unknown variable "'//items(i)%name//'"; allowed:'//list)
+        return
       end do
-      call set_status(status, STATUS_INVALID_INPUT, item_where(reader, reader%items(i), reader%items(i)%line)// &
-                      ': &'//reader%group//': unknown variable "'//reader%items(i)%name//'"; allowed:'//list)
-      return
-    end do
+    end subroutine check_names
   end subroutine open_group
 
   pure logical function reader_has(self, name)

@@ -53,6 +53,7 @@ module io_namelist
     character(len=:), allocatable :: name        !< lower case
     integer :: line = 0                          !< where it opens (0: added from the command line)
     type(nml_item_t), allocatable :: items(:)
+    type(nml_item_t), allocatable :: removed(:)  !< variables --unset removed (no values), for the name check
   end type nml_group_t
 
   !> Position in the text being read.

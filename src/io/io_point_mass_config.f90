@@ -46,6 +46,13 @@ contains
     call r%get('alpha_u', config%alpha_u, in_range(-1e3_wp, 1e3_wp, '1'), status)
     call r%get('alpha_v', config%alpha_v, in_range(-1e3_wp, 1e3_wp, '1'), status)
     if (.not. status%ok()) return
+    ! a coefficient the friction law does not use would be silently ignored
+    if (config%friction /= 'viscous') call r%refuse_given([character(len=20) :: 'viscous_coefficient'], &
+      'friction = '''//trim(config%friction)//''' does not use it (only ''viscous'' does)', status)
+    if (config%friction /= 'coulomb') call r%refuse_given([character(len=20) :: 'friction_coefficient', &
+      'regularization_speed'], 'friction = '''//trim(config%friction)//''' does not use it (only ''coulomb'' does)', &
+      status)
+    if (.not. status%ok()) return
     if (abs(config%sigma) /= 1) then
       call r%invalid('sigma', format_real(config%sigma), 'must be +1 or -1 (side of the normal)', status)
     else if (config%alpha_u == 0 .and. config%alpha_v == 0) then

@@ -121,14 +121,19 @@ contains
     call load_input_file(path, input, status)
     if (present(overrides)) then
       do i = 1, size(overrides)
-        if (status%ok()) call input%override(trim(overrides(i)), status)
+        if (index(overrides(i), '--unset ') == 1) then
+          if (status%ok()) call input%unset(trim(overrides(i)(9:)), status)
+        else
+          if (status%ok()) call input%override(trim(overrides(i)), status)
+        end if
       end do
     end if
     if (status%ok()) call run_input(input, status, cli)
     ! a refusal of a value an override made refers to the file's line of
     ! another variable (a contact naming the shape --set renamed): say so
     if (status%code == STATUS_INVALID_INPUT .and. allocated(input%overrides)) then
-      if (len(input%overrides) > 0 .and. index(status%text(), '--set ') == 0) status%message = status%text()// &
+      if (len(input%overrides) > 0 .and. index(status%text(), '--set ') == 0 .and. &
+          index(status%text(), '--unset ') == 0) status%message = status%text()// &
         ' (in the input as changed by '//overrides_applied(input%overrides)//')'
     end if
   end subroutine run_input_file
