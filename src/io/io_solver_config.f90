@@ -5,6 +5,7 @@ module io_solver_config
   use base_kinds, only: wp
   use base_text, only: format_integer, format_short
   use base_status, only: status_t
+  use base_series, only: max_series_bytes
   use numerics_ode, only: ode_options_t, ODE_ADAMS, ODE_BDF
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, format_real, invalid
   implicit none (type, external)
@@ -12,7 +13,7 @@ module io_solver_config
   public :: solver_config_t, read_solver_config, check_output_count, max_result_bytes, max_outputs
 
   !> Most memory the stored time series of one run may take (refused above).
-  real(wp), parameter :: max_result_bytes = 2.0_wp*1024**3
+  real(wp), parameter :: max_result_bytes = max_series_bytes
   !> Most output times of one run.
   real(wp), parameter :: max_outputs = 1e7_wp
 

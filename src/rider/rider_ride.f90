@@ -21,6 +21,7 @@ module rider_ride
   use base_text, only: format_short
   use base_vector, only: cross
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_series, only: growable_series_t, resize
   use numerics_ode, only: ode_options_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP, &
     EVENT_STOP, EVENT_RECORD, RECORD_EVENT
@@ -69,8 +70,12 @@ module rider_ride
     real(wp), allocatable :: relative_velocity(:, :)    ! 3 x n, m/s: contact minus water (0 when dry)
   end type contact_series_t
 
-  type :: ride_series_t
-    integer :: n = 0
+  !> Numbers of one record of ride_series_t besides the state (the arrays
+  !> below: 31 of the pelvis and the rider, 25 per contact), for the memory bound.
+  integer, parameter :: values_per_record = 31 + 25*N_CONTACTS
+
+  !> The ride's records; grown as the ride goes (base_series).
+  type, extends(growable_series_t) :: ride_series_t
     real(wp), allocatable :: time(:)                    ! s
     integer, allocatable :: kind(:)                     ! RECORD_START, _OUTPUT, _EVENT
     real(wp), allocatable :: state(:, :)                ! the integrator's state y = [q, q', W] (a ride can
@@ -137,7 +142,8 @@ contains
     if (.not. status%ok()) return
     call prepare_ride(params, surface, options, sys, y0, status, water)
     if (.not. status%ok()) return
-    call init_series(sys%ride, nint(min(options%max_duration, 120.0_wp)/options%output_step) + 16, size(y0))
+    ! room for two minutes of outputs at first; the series grows as the ride goes
+    call size_series(sys%ride, nint(min(options%max_duration, 120.0_wp)/options%output_step) + 16, size(y0))
     driver%ode = options%ode
     ! Adams' corrector stops at half the local error tolerance (CVODE's
     ! default: a tenth): most steps take one iteration instead of two, 10148
@@ -295,71 +301,38 @@ contains
     end select
   end function arc_length_at
 
-  subroutine init_series(s, capacity, state_size)
+  !> Room for `capacity` records in every array of the series, the recorded
+  !> ones kept (first call: allocates). Every array of ride_series_t is listed
+  !> here once, so growing keeps them all.
+  subroutine size_series(s, capacity, state_size)
     type(ride_series_t), intent(inout) :: s
     integer, intent(in) :: capacity, state_size
-    integer :: k
-    s%n = 0
-    allocate (s%time(capacity), s%kind(capacity), s%state(state_size, capacity), s%arc_length(capacity), &
-              s%speed(capacity), s%heading(capacity), &
-              s%phi_legs(capacity), s%phi_trunk(capacity), s%pelvis_acceleration(3, capacity), &
-              s%pelvis_axes(3, 3, capacity), s%reaction_force(3, capacity), s%reaction_moment(3, capacity), &
-              s%kinetic(capacity), s%potential(capacity), s%energy(capacity), s%friction_work(capacity), &
-              s%drag_work(capacity), s%closure_residual(capacity))
+    integer :: k, n
+    n = capacity
+    call resize(s%time, n); call resize(s%kind, n); call resize(s%state, state_size, n)
+    call resize(s%arc_length, n); call resize(s%speed, n); call resize(s%heading, n)
+    call resize(s%phi_legs, n); call resize(s%phi_trunk, n); call resize(s%pelvis_acceleration, 3, n)
+    call resize(s%pelvis_axes, 3, 3, n); call resize(s%reaction_force, 3, n); call resize(s%reaction_moment, 3, n)
+    call resize(s%kinetic, n); call resize(s%potential, n); call resize(s%energy, n)
+    call resize(s%friction_work, n); call resize(s%drag_work, n); call resize(s%closure_residual, n)
     do k = 1, N_CONTACTS
       associate (c => s%contact(k))
-        allocate (c%u(capacity), c%v(capacity), c%arc_length(capacity), c%wall_angle(capacity), &
-                  c%wall_distance(capacity), c%position(3, capacity), c%velocity(3, capacity), &
-                  c%normal_force(capacity), c%friction_force(3, capacity), c%drag_force(3, capacity), &
-                  c%in_water(capacity), c%reynolds(capacity), c%drag_coefficient(capacity), &
-                  c%projected_area(capacity), c%relative_velocity(3, capacity))
+        call resize(c%u, n); call resize(c%v, n); call resize(c%arc_length, n); call resize(c%wall_angle, n)
+        call resize(c%wall_distance, n); call resize(c%position, 3, n); call resize(c%velocity, 3, n)
+        call resize(c%normal_force, n); call resize(c%friction_force, 3, n); call resize(c%drag_force, 3, n)
+        call resize(c%in_water, n); call resize(c%reynolds, n); call resize(c%drag_coefficient, n)
+        call resize(c%projected_area, n); call resize(c%relative_velocity, 3, n)
       end associate
     end do
-  end subroutine init_series
-
-  !> Doubles the room of the series, keeping its n samples.
-  subroutine grow_series(s)
-    type(ride_series_t), intent(inout) :: s
-    type(ride_series_t) :: bigger
-    call init_series(bigger, 2*size(s%time), size(s%state, 1))
-    bigger%n = s%n
-    call copy_series(s, bigger, s%n)
-    call move_series(bigger, s)
-    s%n = bigger%n
-  end subroutine grow_series
-
-  subroutine copy_series(a, b, n)
-    type(ride_series_t), intent(in) :: a
-    type(ride_series_t), intent(inout) :: b
-    integer, intent(in) :: n
-    integer :: k
-    b%time(:n) = a%time(:n); b%kind(:n) = a%kind(:n); b%state(:, :n) = a%state(:, :n)
-    b%arc_length(:n) = a%arc_length(:n)
-    b%speed(:n) = a%speed(:n); b%heading(:n) = a%heading(:n); b%phi_legs(:n) = a%phi_legs(:n)
-    b%phi_trunk(:n) = a%phi_trunk(:n); b%pelvis_acceleration(:, :n) = a%pelvis_acceleration(:, :n)
-    b%pelvis_axes(:, :, :n) = a%pelvis_axes(:, :, :n); b%reaction_force(:, :n) = a%reaction_force(:, :n)
-    b%reaction_moment(:, :n) = a%reaction_moment(:, :n)
-    b%kinetic(:n) = a%kinetic(:n); b%potential(:n) = a%potential(:n)
-    b%energy(:n) = a%energy(:n); b%friction_work(:n) = a%friction_work(:n); b%drag_work(:n) = a%drag_work(:n)
-    b%closure_residual(:n) = a%closure_residual(:n)
-    do k = 1, N_CONTACTS
-      associate (x => a%contact(k), y => b%contact(k))
-        y%u(:n) = x%u(:n); y%v(:n) = x%v(:n); y%arc_length(:n) = x%arc_length(:n)
-        y%wall_angle(:n) = x%wall_angle(:n); y%wall_distance(:n) = x%wall_distance(:n)
-        y%position(:, :n) = x%position(:, :n); y%velocity(:, :n) = x%velocity(:, :n)
-        y%normal_force(:n) = x%normal_force(:n); y%friction_force(:, :n) = x%friction_force(:, :n)
-        y%drag_force(:, :n) = x%drag_force(:, :n); y%in_water(:n) = x%in_water(:n)
-        y%reynolds(:n) = x%reynolds(:n); y%drag_coefficient(:n) = x%drag_coefficient(:n)
-        y%projected_area(:n) = x%projected_area(:n); y%relative_velocity(:, :n) = x%relative_velocity(:, :n)
-      end associate
-    end do
-  end subroutine copy_series
+    s%capacity = capacity
+  end subroutine size_series
 
   !> Moves every array of a into b (a is left empty).
   subroutine move_series(a, b)
     type(ride_series_t), intent(inout) :: a, b
     integer :: k
     b%n = a%n
+    b%capacity = a%capacity
     if (allocated(a%time)) call move_alloc(a%time, b%time)
     call move_alloc(a%kind, b%kind); call move_alloc(a%state, b%state); call move_alloc(a%arc_length, b%arc_length)
     call move_alloc(a%speed, b%speed); call move_alloc(a%heading, b%heading)
@@ -432,11 +405,13 @@ contains
     integer, intent(in) :: kind
     type(status_t), intent(inout) :: status
     real(wp) :: residual, kinetic, potential, s(3)
-    integer :: f, n, k, i
+    integer :: f, n, k, i, grown
     f = self%mechanism%f
     call self%mechanism%evaluate(t, y(1:f), y(f + 1:2*f), residual, status)
     if (.not. status%ok()) return
-    if (self%ride%n == size(self%ride%time)) call grow_series(self%ride)
+    call self%ride%make_room(16, 8.0_wp*(values_per_record + size(y)), 'ride', t, grown, status)
+    if (.not. status%ok()) return
+    if (grown > 0) call size_series(self%ride, grown, size(y))
     self%ride%n = self%ride%n + 1
     n = self%ride%n
     if (kind == RECORD_EVENT .and. self%pending_station > 0) then

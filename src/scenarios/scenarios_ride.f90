@@ -75,9 +75,14 @@ contains
       options%output_step = solver%output_step
       options%min_speed = rider%min_speed
       options%max_duration = safety_factor*slide%length()/rider%min_speed
-      if (solver%duration_given) options%max_duration = solver%duration
-      call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
-      if (.not. status%ok()) return
+      ! the outputs of a duration the user gave are bounded before the run;
+      ! without it the series grows with what the ride records (a safety
+      ! bound on the time must not size, or refuse, a sound ride)
+      if (solver%duration_given) then
+        options%max_duration = solver%duration
+        call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
+        if (.not. status%ok()) return
+      end if
       call check_ride_start(rider%params, slide, options, status)
       if (.not. status%ok()) then
         call prefix_status(status, input%name//': &rider')

@@ -89,10 +89,13 @@ contains
     options%output_step = solver%output_step
     options%min_speed = rider%min_speed
     options%max_duration = safety_factor*sweep%water%slide%length()/rider%min_speed
-    if (solver%duration_given) options%max_duration = solver%duration
     options%progress_seconds = 0   ! the sweep reports progress, not each ride
-    call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
-    if (.not. status%ok()) return
+    ! as the ride: a duration given bounds the outputs before the run, else they grow as each ride goes
+    if (solver%duration_given) then
+      options%max_duration = solver%duration
+      call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
+      if (.not. status%ok()) return
+    end if
     sweep%rider = rider%params
     sweep%options = options
     sweep%limits = rider%limits

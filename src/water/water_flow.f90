@@ -26,6 +26,7 @@ module water_flow
   use base_kinds, only: wp
   use base_text, only: format_short
   use base_constants, only: pi
+  use base_series, only: growable_series_t, resize, max_series_bytes
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, &
     STATUS_DOMAIN
   use geometry_surface, only: surface_point_t
@@ -63,12 +64,8 @@ module water_flow
   real(wp), parameter :: water_convergence_coefficient = 0.5_wp
   !> the safety bound in units of L/min_speed (see the module header)
   real(wp), parameter :: safety_factor = 200
-  !> Most samples of one run (about 70 numbers, 560 bytes each: 2.2 GB)
-  integer, parameter :: max_samples = 4000000
-
-  interface resize
-    module procedure resize_reals, resize_columns, resize_integers
-  end interface resize
+  !> Numbers of one sample of water_series_t (its arrays), for the memory bound
+  integer, parameter :: values_per_sample = 64
 
   !> How the water enters at u0 (thesis 4.33 or given values).
   type :: water_start_t
@@ -87,8 +84,8 @@ module water_flow
     logical :: reached = .false.
   end type water_station_t
 
-  type :: water_series_t
-    integer :: n = 0
+  !> The water's samples; grown as the run goes (base_series).
+  type, extends(growable_series_t) :: water_series_t
     real(wp), allocatable :: time(:), u(:), v(:), du(:), dv(:), arc_length(:)
     real(wp), allocatable :: position(:, :), velocity(:, :)
     real(wp), allocatable :: speed(:), height(:), width(:), area(:), radius(:), beta(:), alpha(:)
@@ -323,7 +320,7 @@ contains
     real(wp) :: t_likely
     call water_point(model, y0, q, st)
     t_likely = 2*(safety_time_bound(model, y0(1))*model%min_speed/safety_factor)/max(q%speed, 0.5_wp)
-    n = int(min(min(duration, t_likely)/output_step, real(max_samples, wp))) + 16
+    n = int(min(min(duration, t_likely)/output_step, max_series_bytes/(8*values_per_sample))) + 16
   end function initial_samples
 
   !> Integrates from y0 to the end of the slide (u = u_end, at the latest the
@@ -672,41 +669,8 @@ contains
     call resize(s%z_m_rate, 3, n); call resize(s%centerline_speed, n); call resize(s%centerline_speed_u, n)
     call resize(s%left_edge_rate, 2, n)
     call resize(s%right_edge_rate, 2, n)
+    s%capacity = n
   end subroutine allocate_series
-
-  !> x(:n) (or x(:, :n)), the first entries kept.
-  pure subroutine resize_reals(x, n)
-    real(wp), allocatable, intent(inout) :: x(:)
-    integer, intent(in) :: n
-    real(wp), allocatable :: y(:)
-    allocate (y(n))
-    if (allocated(x)) y(:min(n, size(x))) = x(:min(n, size(x)))
-    call move_alloc(y, x)
-  end subroutine resize_reals
-
-  pure subroutine resize_columns(x, rows, n)
-    real(wp), allocatable, intent(inout) :: x(:, :)
-    integer, intent(in) :: rows, n
-    real(wp), allocatable :: y(:, :)
-    allocate (y(rows, n))
-    if (allocated(x)) y(:, :min(n, size(x, 2))) = x(:, :min(n, size(x, 2)))
-    call move_alloc(y, x)
-  end subroutine resize_columns
-
-  pure subroutine resize_integers(x, n)
-    integer, allocatable, intent(inout) :: x(:)
-    integer, intent(in) :: n
-    integer, allocatable :: y(:)
-    allocate (y(n))
-    if (allocated(x)) y(:min(n, size(x))) = x(:min(n, size(x)))
-    call move_alloc(y, x)
-  end subroutine resize_integers
-
-  !> Twice the room for samples, the recorded ones kept.
-  subroutine grow_series(s)
-    type(water_series_t), intent(inout) :: s
-    call allocate_series(s, 2*size(s%time))
-  end subroutine grow_series
 
   !> Appends the sample (t, y) with the water point q (from water_point at y).
   subroutine record(model, t, y, q, s, with_edges, status)
@@ -718,7 +682,7 @@ contains
     type(status_t), intent(inout) :: status
     type(water_rates_t) :: rates
     type(status_t) :: st
-    integer :: i
+    integer :: i, grown
     real(wp) :: guess_l(2), guess_r(2)
     st%code = 0
     call water_point_rates(model, y, q, rates, st)
@@ -726,12 +690,12 @@ contains
       if (status%ok()) status = st
       return
     end if
-    if (s%n >= max_samples) then
-      if (status%ok()) call set_status(status, STATUS_DOMAIN, 'more than '//format_short(real(max_samples, wp))// &
-        ' output samples (about 2 GB): raise &solver output_step or bound the run by &solver duration')
+    call s%make_room(16, 8.0_wp*values_per_sample, 'water', t, grown, st)
+    if (.not. st%ok()) then
+      if (status%ok()) status = st
       return
     end if
-    if (s%n >= size(s%time)) call grow_series(s)
+    if (grown > 0) call allocate_series(s, grown)
     s%n = s%n + 1
     i = s%n
     s%time(i) = t
