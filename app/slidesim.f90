@@ -6,19 +6,21 @@
 !> a summary cut short by a closed pipe, `slidesim | head`, is exit status 3,
 !> the result file complete and kept), or the result path names a device, a
 !> FIFO or a socket, which is never replaced (refused before any work; one
-!> that appears during the run leaves the results in the temporary file).
+!> that appears during the run leaves the results in the temporary file);
+!> 4 done, the results complete, but a ride exceeded a limit and the run
+!> was asked to fail on that (--fail-on-limit, &evaluation fail_on_limit).
 !>
 !> Options take their value as the next argument or after '=' (--output FILE,
 !> --output=FILE); '-' names standard input; '--' ends the options.
 program slidesim
-  use base_status, only: status_t, STATUS_OK, STATUS_INVALID_INPUT, STATUS_IO
-  use base_log, only: log_error, set_verbosity, set_progress_interval
+  use base_status, only: status_t, STATUS_OK, STATUS_INVALID_INPUT, STATUS_IO, STATUS_LIMITS_EXCEEDED
+  use base_log, only: log_error, log_warning, set_verbosity, set_progress_interval
   use base_kinds, only: wp
   use scenarios_registry, only: run_input_file, run_default, print_scenarios, slidesim_version, &
                                 default_input, scenario_template, scenario_names
   use io_run_config, only: run_config_t
   use io_system, only: ignore_file_size_signal, guard_standard_streams, write_standard_output, &
-                       standard_output_lost
+                       standard_output_lost, standard_input_closed
   use io_namelist, only: nml_value_t, read_real_token, NUMBER_OK
   implicit none (type, external)
 
@@ -92,6 +94,9 @@ program slidesim
     case ('--check')
       call no_value()
       cli%check_only = .true.
+    case ('--fail-on-limit')
+      call no_value()
+      cli%fail_on_limit = .true.
     case ('--summary-json')
       call take_value()
       if (len(value) == 0) call usage_error(option//' needs a file name')
@@ -120,12 +125,21 @@ program slidesim
   end do
 
   if (allocated(input_path)) then
+    ! a closed standard input reads as /dev/null (guard_standard_streams): not an empty input
+    if ((input_path == '-' .or. input_path == '/dev/stdin') .and. standard_input_closed()) then
+      call log_error('cannot read the input from standard input ("'//input_path//'"): standard input is '// &
+                     'closed; give the input file''s name, or pipe the input in')
+      stop 3, quiet=.true.
+    end if
     call run_input_file(input_path, status, cli, overrides)
   else
     call run_default(status, cli, overrides)
   end if
 
-  if (status%code /= STATUS_OK) then
+  if (status%code == STATUS_LIMITS_EXCEEDED) then
+    call log_warning(status%text())
+    call end_with_output_checked(4)
+  else if (status%code /= STATUS_OK) then
     call log_error(status%text())
     select case (status%code)
     case (STATUS_INVALID_INPUT); stop 1, quiet=.true.
@@ -204,6 +218,8 @@ contains
     call write_standard_output('  --check                   read and check the input, build the models, write')
     call write_standard_output('                            nothing; prints "input ok"')
     call write_standard_output('  --summary-json FILE       also write the summary''s numbers as JSON to FILE')
+    call write_standard_output('  --fail-on-limit           exit status 4 when a ride (of ride or sweep) exceeds')
+    call write_standard_output('                            a limit of &rider (as &evaluation fail_on_limit)')
     call write_standard_output('  --default-input [SCENARIO] print the built-in default input, or a commented')
     call write_standard_output('                            template of SCENARIO')
     call write_standard_output('  --progress SECONDS        wall-clock seconds between progress lines of long')
@@ -218,13 +234,15 @@ contains
     call write_standard_output('exit status: 0 done; 1 bad command line or input (nothing written);')
     call write_standard_output('2 the run failed part way (result file kept, marked incomplete);')
     call write_standard_output('3 a file could not be read or written, or -o names a device, FIFO or socket')
-    call write_standard_output('(nothing kept, or the message says where the results are).')
+    call write_standard_output('(nothing kept, or the message says where the results are);')
+    call write_standard_output('4 done, results complete, a limit exceeded (only with --fail-on-limit).')
   end subroutine print_help
 
-  !> Ends with exit status 0, or 3 if a line of standard output was lost:
-  !> the result files are complete (the summary is printed after they are
-  !> closed and renamed), but what was printed is not.
-  subroutine end_with_output_checked()
+  !> Ends with exit status 0 (or `done`: 4, limits exceeded), or 3 if a line
+  !> of standard output was lost: the result files are complete (the summary
+  !> is printed after they are closed and renamed), but what was printed is not.
+  subroutine end_with_output_checked(done)
+    integer, intent(in), optional :: done
     character(len=:), allocatable :: reason
     if (standard_output_lost(reason)) then
       call log_error('cannot write to standard output: '//reason//'; what slidesim printed there is '// &
@@ -234,6 +252,7 @@ contains
     end if
     ! quiet: gfortran's STOP would otherwise list the IEEE flags raised on the
     ! way (underflow in the integration is expected) on standard error
+    if (present(done)) stop done, quiet=.true.
     stop 0, quiet=.true.
   end subroutine end_with_output_checked
 

@@ -7,7 +7,7 @@ module base_status
   private
   public :: status_t, set_status, prefix_status
   public :: STATUS_OK, STATUS_INVALID_INPUT, STATUS_DOMAIN, STATUS_SOLVER, &
-            STATUS_NOT_CONVERGED, STATUS_IO, STATUS_INTERNAL, status_code_name
+            STATUS_NOT_CONVERGED, STATUS_IO, STATUS_INTERNAL, STATUS_LIMITS_EXCEEDED, status_code_name
 
   integer, parameter :: STATUS_OK = 0
   integer, parameter :: STATUS_INVALID_INPUT = 1   !< a value outside what is allowed
@@ -16,6 +16,9 @@ module base_status
   integer, parameter :: STATUS_NOT_CONVERGED = 4   !< an iteration did not converge
   integer, parameter :: STATUS_IO = 5              !< a file could not be read or written
   integer, parameter :: STATUS_INTERNAL = 6        !< a broken invariant: a bug
+  !> done and the results complete, but a limit was exceeded and the run was
+  !> asked to fail on that (--fail-on-limit, &evaluation fail_on_limit)
+  integer, parameter :: STATUS_LIMITS_EXCEEDED = 7
 
   type :: status_t
     integer :: code = STATUS_OK
@@ -74,6 +77,7 @@ contains
     case (STATUS_SOLVER);        name = 'solver failure'
     case (STATUS_NOT_CONVERGED); name = 'not converged'
     case (STATUS_IO);            name = 'input/output error'
+    case (STATUS_LIMITS_EXCEEDED); name = 'limits exceeded'
     case default;                name = 'internal error'
     end select
   end function status_code_name

@@ -27,7 +27,7 @@ module design_ride_evaluation
   private
   public :: felt_acceleration, tipping_lever_arm
   public :: ride_limit_t, limit_verdict_t, new_ride_limit, evaluate_limit, limit_quantities, &
-    limit_report_unit, limit_units_allowed, series_extreme
+    limit_report_unit, limit_units_allowed, series_extreme, quantities_without_limit
 
   character(len=*), parameter :: limit_quantities(9) = [character(len=25) :: 'speed', 'exit_speed', &
     'acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal', 'lever_arm', &
@@ -191,6 +191,20 @@ contains
       problem = trim(limit_quantities(k))//': the minimum '//format_short(minimum)//' lies above the maximum '// &
                 format_short(maximum)
   end subroutine new_ride_limit
+
+  !> The quantities that none of `limits` judges, as a list ('' when all are
+  !> limited): a report says what it did not check.
+  pure function quantities_without_limit(limits) result(text)
+    type(ride_limit_t), intent(in) :: limits(:)
+    character(len=:), allocatable :: text
+    integer :: k, i
+    text = ''
+    do k = 1, size(limit_quantities)
+      if (any([(limits(i)%quantity == trim(limit_quantities(k)), i = 1, size(limits))])) cycle
+      if (len(text) > 0) text = text//', '
+      text = text//trim(limit_quantities(k))
+    end do
+  end function quantities_without_limit
 
   pure function quantity_list() result(text)
     character(len=:), allocatable :: text

@@ -15,6 +15,8 @@ module io_run_config
     logical :: check_only = .false.
     !> --summary-json FILE: the printed summary's numbers as JSON; empty or not allocated: none
     character(len=:), allocatable :: summary_json
+    !> --fail-on-limit: a ride (or sweep) over a limit ends with exit status 4
+    logical :: fail_on_limit = .false.
   end type run_config_t
 
 contains

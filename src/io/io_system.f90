@@ -14,7 +14,7 @@ module io_system
   private
   public :: create_unique_file, remove_file, rename_file, system_error_text, same_file, &
             ignore_file_size_signal, process_id, nonregular_kind
-  public :: guard_standard_streams, write_standard_output, standard_output_lost
+  public :: guard_standard_streams, write_standard_output, standard_output_lost, standard_input_closed
 
   integer(c_int), parameter :: sigxfsz = 25, sigpipe = 13   !< Linux (x86-64, arm64)
   integer(c_int), parameter :: eintr = 4
@@ -36,6 +36,8 @@ module io_system
   !> main thread calls (summaries are printed after the parallel parts).
   logical :: output_lost = .false.
   character(len=:), allocatable :: output_error
+  !> standard input was closed at the start (slidesim - <&-): read, it would look empty
+  logical :: input_closed = .false.
 
   interface
     function c_mkstemps(template, suffix_length) bind(C, name='mkstemps') result(fd)
@@ -259,9 +261,15 @@ contains
       end if
       ! the lowest free number is fd (the lower ones are open): kept open to the end
       open (newunit=unit, file='/dev/null', action='readwrite', iostat=ios)
+      if (fd == 0) input_closed = .true.
       if (fd == 1) call lose_output('standard output is closed')
     end do
   end subroutine guard_standard_streams
+
+  !> Was standard input closed at the start (guard_standard_streams)?
+  logical function standard_input_closed()
+    standard_input_closed = input_closed
+  end function standard_input_closed
 
   !> Writes `text` and a line end to standard output at once (unbuffered, so
   !> that it stays in order with the messages on standard error). gfortran

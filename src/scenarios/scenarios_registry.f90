@@ -196,10 +196,16 @@ contains
     end if
     if (present(cli)) then
       run%check_only = cli%check_only
+      run%fail_on_limit = cli%fail_on_limit
       if (allocated(cli%summary_json)) run%summary_json = cli%summary_json
     end if
     call read_run_config(input, scenario_names, run, status)
     if (.not. status%ok()) return
+    if (run%fail_on_limit .and. all(trim(run%scenario) /= [character(len=5) :: 'ride', 'sweep'])) then
+      call set_status(status, STATUS_INVALID_INPUT, input%name//': --fail-on-limit: scenario '// &
+                      trim(run%scenario)//' judges no ride limits (ride and sweep do)')
+      return
+    end if
     cli_output = .false.
     if (present(cli)) then
       cli_output = len_trim(cli%output) > 0

@@ -7,7 +7,7 @@
 module scenarios_ride
   use base_kinds, only: wp
   use base_text, only: format_short, format_integer
-  use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
+  use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT, STATUS_LIMITS_EXCEEDED
   use base_log, only: log_info
   use geometry_surface, only: surface_t
   use geometry_tube, only: tube_surface_t
@@ -16,13 +16,14 @@ module scenarios_ride
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_model, only: N_CONTACTS, contact_names
   use rider_ride, only: ride_options_t, ride_result_t, run_ride, check_ride_start
-  use design_ride_evaluation, only: limit_report_unit
+  use design_ride_evaluation, only: limit_report_unit, ride_limit_t, quantities_without_limit
   use design_ride_report, only: ride_report_t, evaluate_ride
   use io_input, only: input_text_t, check_known_groups, format_real, invalid
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
   use io_geometry_config, only: geometry_groups
   use io_rider_config, only: rider_config_t, read_rider_config
+  use io_evaluation_config, only: evaluation_config_t, read_evaluation_config
   use io_hdf5, only: result_file_t
   use io_water_results, only: write_water_results
   use io_summary, only: summary_t, degrees
@@ -30,10 +31,10 @@ module scenarios_ride
   use scenarios_water, only: build_water, write_slide_grid
   implicit none (type, external)
   private
-  public :: run_ride_scenario, ride_groups, check_sphere_radii
+  public :: run_ride_scenario, ride_groups, check_sphere_radii, read_limit_gate, limits_exceeded_status
 
-  character(len=*), parameter :: ride_groups(12) = [character(len=14) :: 'run', 'solver', 'water_solver', &
-    'surface', 'water', 'rider', geometry_groups]
+  character(len=*), parameter :: ride_groups(13) = [character(len=14) :: 'run', 'solver', 'water_solver', &
+    'surface', 'water', 'rider', 'evaluation', geometry_groups]
   !> numbers stored per output time of the ride (ride_series_t), for the memory bound
   integer, parameter :: values_per_output = 120
   !> Without &solver duration the ride runs until it ends (the slide's end,
@@ -58,7 +59,8 @@ contains
     type(status_t) :: run_status, write_status
     real(wp) :: ride_cpu, cpu0, cpu1
     character(len=:), allocatable :: water_done, message
-    logical :: complete
+    logical :: complete, fail_on_limit
+    integer :: k
 
     ! ---- everything checked before any work
     call check_known_groups(input, ride_groups, status)
@@ -67,6 +69,7 @@ contains
     if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults)
     if (status%ok()) call build_water(input, water_description, status, stage=.true.)
     if (status%ok()) call read_rider_config(input, rider, status)
+    if (status%ok()) call read_limit_gate(input, run, rider%limits, fail_on_limit, status)
     if (.not. status%ok()) return
     associate (slide => water_description%slide)
       call check_sphere_radii(input, rider, slide, status)
@@ -129,8 +132,59 @@ contains
       status = run_status
     else if (.not. write_status%ok()) then
       status = write_status
+    else if (fail_on_limit .and. allocated(report%verdicts)) then
+      call limits_exceeded_status(input%name, report%limits, &
+                                  [(merge(1, 0, report%judged(k) .and. report%verdicts(k)%exceeded), &
+                                    k = 1, size(report%limits))], .false., status)
     end if
   end subroutine run_ride_scenario
+
+  !> Whether a limit exceeded fails the run (exit status 4): --fail-on-limit
+  !> or &evaluation fail_on_limit. Asked with no limit to judge, the run
+  !> would pass whatever the ride did: refused.
+  subroutine read_limit_gate(input, run, limits, fail_on_limit, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(ride_limit_t), intent(in) :: limits(:)
+    logical, intent(out) :: fail_on_limit
+    type(status_t), intent(inout) :: status
+    type(evaluation_config_t) :: evaluation
+    fail_on_limit = .false.
+    call read_evaluation_config(input, evaluation, status)
+    if (.not. status%ok()) return
+    fail_on_limit = evaluation%fail_on_limit .or. run%fail_on_limit
+    if (fail_on_limit .and. size(limits) == 0) then
+      if (evaluation%fail_on_limit) then
+        call invalid(input, 'evaluation', 'fail_on_limit', '.true.', 'there is no limit to fail on: set '// &
+                     'limits in &rider (limit_quantity, limit_unit, limit_min or limit_max)', status)
+      else
+        call set_status(status, STATUS_INVALID_INPUT, input%name//': --fail-on-limit: there is no limit to '// &
+                        'fail on: set limits in &rider (limit_quantity, limit_unit, limit_min or limit_max)')
+      end if
+    end if
+  end subroutine read_limit_gate
+
+  !> STATUS_LIMITS_EXCEEDED naming the limits exceeded (exceeded(k) > 0:
+  !> limit k, by that many rides of a sweep), or nothing when none is.
+  subroutine limits_exceeded_status(name, limits, exceeded, sweep, status)
+    character(len=*), intent(in) :: name
+    type(ride_limit_t), intent(in) :: limits(:)
+    integer, intent(in) :: exceeded(:)
+    logical, intent(in) :: sweep
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: list
+    integer :: k
+    if (all(exceeded == 0)) return
+    list = ''
+    do k = 1, size(limits)
+      if (exceeded(k) == 0) cycle
+      if (len(list) > 0) list = list//', '
+      list = list//format_integer(k)//' '//limits(k)%quantity
+      if (sweep) list = list//' (in '//format_integer(exceeded(k))//' rides)'
+    end do
+    call set_status(status, STATUS_LIMITS_EXCEEDED, name//': limits exceeded: '//list// &
+                    '; the results are complete (exit status 4: asked to fail on a limit)')
+  end subroutine limits_exceeded_status
 
   !> The spheres must fit in the tube (a circular section's radius).
   subroutine check_sphere_radii(input, rider, tube, status)
@@ -355,7 +409,7 @@ contains
     type(status_t), intent(inout) :: status
     type(summary_t) :: summary
     character(len=*), parameter :: axis(3) = [character(len=12) :: 'longitudinal', 'lateral', 'normal']
-    character(len=:), allocatable :: c, line, unit
+    character(len=:), allocatable :: c, line, unit, unset
     integer :: k, exceeded
     call summary%start('ride', 'slidesim ride')
     if (allocated(water%slide_name)) call summary%add_text('slide', 'slide', water%slide_name)
@@ -367,17 +421,33 @@ contains
       call summary%add('distance', 'slide length ridden', r%distance, 'm')
       call summary%add('top_speed', 'top speed', r%top_speed, 'm/s')
       call summary%add('top_speed_arc_length', '  at arc length', r%top_speed_at, 'm')
-      do k = 1, 3
+      ! longitudinal: in words, braking (the slide and water push towards the
+      ! head, f < 0) and pushing (towards the feet, f > 0), printed >= 0; the
+      ! JSON keeps the signed values (felt_longitudinal_max, _min)
+      if (r%felt_min(1) < 0) then
+        call summary%add('felt_longitudinal_min', 'felt braking max', r%felt_min(1), '1', 'g', -1.0_wp)
+      else
+        call summary%add('felt_longitudinal_min', 'felt pushing min', r%felt_min(1), '1', 'g (never braked)')
+      end if
+      call summary%add('felt_longitudinal_min_arc_length', '  at arc length', r%felt_min_at(1), 'm')
+      if (r%felt_max(1) > 0) then
+        call summary%add('felt_longitudinal_max', 'felt pushing max', r%felt_max(1), '1', 'g')
+      else
+        call summary%add('felt_longitudinal_max', 'felt braking min', r%felt_max(1), '1', &
+                         'g (braked all the way)', -1.0_wp)
+      end if
+      call summary%add('felt_longitudinal_max_arc_length', '  at arc length', r%felt_max_at(1), 'm')
+      do k = 2, 3
         c = trim(axis(k))
-        call summary%add('felt_'//c//'_max', 'felt '//c//' max', r%felt_max(k), '1', 'g')
+        call summary%add('felt_'//c//'_max', 'felt '//c//' max', r%felt_max(k), '1', 'g'//sense(k, r%felt_max(k)))
         call summary%add('felt_'//c//'_max_arc_length', '  at arc length', r%felt_max_at(k), 'm')
-        call summary%add('felt_'//c//'_min', 'felt '//c//' min', r%felt_min(k), '1', 'g')
+        call summary%add('felt_'//c//'_min', 'felt '//c//' min', r%felt_min(k), '1', 'g'//sense(k, r%felt_min(k)))
         call summary%add('felt_'//c//'_min_arc_length', '  at arc length', r%felt_min_at(k), 'm')
       end do
       do k = 1, N_CONTACTS
         c = trim(contact_names(k))
         call summary%add(c//'_wall_angle', c//' highest on the wall', r%climb_angle(k), 'rad', &
-                         'deg from the bottom', degrees)
+                         'deg from the bottom'//side(r%climb_angle(k)), degrees)
         call summary%add(c//'_wall_distance', '  along the wall', r%climb_distance(k), 'm')
         call summary%add(c//'_wall_arc_length', '  at arc length', r%climb_at(k), 'm')
         call summary%add(c//'_normal_force_min', c//' normal force min', r%normal_min(k), 'N')
@@ -408,9 +478,10 @@ contains
         end if
         call summary%add_line('  '//line)
       end do
-      if (size(r%limits) == 0) call summary%add_line('  no limits given (&rider limit_quantity, ...)')
-      call summary%add_count('limits_exceeded', 'limits exceeded', exceeded, 'of '// &
-                             format_integer(size(r%limits)))
+      unset = quantities_without_limit(r%limits)
+      if (len(unset) > 0) call summary%add_text('limits_not_set', 'no limit set for', unset)
+      call summary%add_count('limits_exceeded', 'limits exceeded', exceeded, 'of the '// &
+                             format_integer(size(r%limits))//' set')
     end if
     call summary%add('water_cpu_time', 'CPU time water', water_cpu, 's')
     call summary%add('ride_cpu_time', 'CPU time rider', ride_cpu, 's')
@@ -422,6 +493,26 @@ contains
     end if
 
   contains
+
+    !> What the sign of a felt acceleration along axis k (2 lateral, 3 normal) means.
+    pure function sense(k, value) result(text)
+      integer, intent(in) :: k
+      real(wp), intent(in) :: value
+      character(len=:), allocatable :: text
+      text = ''
+      if (value == 0) return
+      if (k == 2) text = trim(merge(', pushed to the left ', ', pushed to the right', value > 0))
+      if (k == 3) text = trim(merge(', pressed onto the slide', ', pulled off the slide  ', value > 0))
+    end function sense
+
+    !> The side of the slide a signed wall angle (+ towards +v) lies on.
+    pure function side(angle) result(text)
+      real(wp), intent(in) :: angle
+      character(len=:), allocatable :: text
+      text = ''
+      if (angle > 0) text = ', on the left'
+      if (angle < 0) text = ', on the right'
+    end function side
 
     function bounds(k) result(text)
       integer, intent(in) :: k

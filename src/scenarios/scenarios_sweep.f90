@@ -5,11 +5,14 @@
 !> (`mpirun -n N slidesim sweep.nml`), across ranks, rank 0 gathering and
 !> writing. One result file (/sweep) and a CSV summary with a row per ride.
 !> A ride that fails is reported and the others run on: the sweep ends with
-!> exit status 0 when every ride was tried and the files were written.
+!> exit status 0 when every ride was tried and the files were written, the
+!> failed rides counted in the summary and the file (/sweep rides_failed);
+!> when every ride failed the file is incomplete (exit status 2). Asked to
+!> fail on a limit, a sweep with any ride over one ends with exit status 4.
 module scenarios_sweep
   use base_kinds, only: wp, int64
   use base_text, only: format_integer
-  use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
+  use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT, STATUS_SOLVER
   use base_log, only: log_info
   use rider_ride, only: ride_options_t
   use water_run, only: water_description_t
@@ -29,7 +32,8 @@ module scenarios_sweep
   use water_streamline, only: streamline_t
   use scenarios_water, only: build_water, write_slide_grid
   use io_xdmf, only: xdmf_t
-  use scenarios_ride, only: ride_groups, check_sphere_radii
+  use scenarios_ride, only: ride_groups, check_sphere_radii, read_limit_gate, limits_exceeded_status
+  use design_ride_evaluation, only: quantities_without_limit
   implicit none (type, external)
   private
   public :: run_sweep_scenario
@@ -51,11 +55,11 @@ contains
     type(sweep_result_t) :: result
     type(ride_options_t) :: options
     type(result_file_t) :: file
-    type(status_t) :: write_status
+    type(status_t) :: write_status, run_status
     real(wp) :: base(N_SWEPT), wall
-    integer :: rank, ranks, threads
+    integer :: rank, ranks, threads, failed, k
     integer(int64) :: clock0, clock1, rate
-    logical :: started
+    logical :: started, complete, fail_on_limit
     character(len=:), allocatable :: csv_path, message
 
     ! ---- everything checked before any work
@@ -65,6 +69,7 @@ contains
     if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults)
     if (status%ok()) call build_water(input, sweep%water, status, stage=.true.)
     if (status%ok()) call read_rider_config(input, rider, status)
+    if (status%ok()) call read_limit_gate(input, run, rider%limits, fail_on_limit, status)
     if (.not. status%ok()) return
     call check_sphere_radii(input, rider, sweep%water%slide, status)
     if (.not. status%ok()) return
@@ -128,15 +133,29 @@ contains
     call file%write_provenance('sweep', trim(run%title), input%name, input%text(), write_status)
     call write_sweep_results(file, sweep, result, max(1, threads), ranks, wall, write_status)
     call write_slide_grid(file, sweep%water%slide, write_status)
-    message = 'ok: '//format_integer(result%n)//' rides, '//format_integer(count(result%status == RIDE_FAILED))// &
-              ' failed'
+    failed = count(result%status == RIDE_FAILED)
+    call file%set_attribute('/sweep', 'rides_failed', failed, write_status)
+    message = 'ok: '//format_integer(result%n)//' rides, '//format_integer(failed)//' failed'
+    if (failed == result%n) call set_status(run_status, STATUS_SOLVER, 'sweep: every ride failed ('// &
+                                            format_integer(failed)//' of '//format_integer(result%n)// &
+                                            '; ride 1: '//trim(result%message(1))//'; every ride''s message: '// &
+                                            '/sweep/messages and the CSV summary)')
+    if (.not. run_status%ok()) message = run_status%text()
     if (.not. write_status%ok()) message = write_status%text()
     if (write_status%ok()) call write_xdmf(file, write_status)
-    call file%finish(write_status%ok(), message, write_status)
+    complete = write_status%ok() .and. run_status%ok()
+    call file%finish(complete, message, write_status)
     if (write_status%ok()) call write_sweep_csv(csv_path, sweep, result, write_status)
     call print_summary(sweep, result, wall, ranks, max(1, threads), file%final_path(), csv_path, run, &
-                       write_status%ok(), message, write_status)
-    if (.not. write_status%ok()) status = write_status
+                       complete .and. write_status%ok(), message, write_status)
+    if (.not. write_status%ok()) then
+      status = write_status
+    else if (.not. run_status%ok()) then
+      status = run_status
+    else if (fail_on_limit) then
+      call limits_exceeded_status(input%name, sweep%limits, [(count(result%verdict(k, :) == 1), &
+                                  k = 1, size(sweep%limits))], .true., status)
+    end if
   end subroutine run_sweep_scenario
 
   !> &rider heading0_deg as written (default 0): the rides convert degrees
@@ -225,6 +244,7 @@ contains
     type(summary_t) :: summary
     integer :: i, worst, shown
     logical, allocatable :: ran(:)
+    character(len=:), allocatable :: unset
     call summary%start('sweep', 'slidesim sweep')
     call summary%add_count('rides', 'rides', result%n, '')
     call summary%add_count('complete', '  reached the end', count(result%status == RIDE_COMPLETE), '')
@@ -239,6 +259,11 @@ contains
                        worst), '1', 'g')
       call summary%add_count('felt_magnitude_max_ride', '  in ride', worst, '')
     end if
+    call summary%add_count('rides_over_limit', 'rides over a limit', count(any(result%verdict == 1, dim=1)), &
+                           'of the '//format_integer(count(ran))//' that ran, '//format_integer(size(sweep%limits))// &
+                           ' limits set')
+    unset = quantities_without_limit(sweep%limits)
+    if (len(unset) > 0) call summary%add_text('limits_not_set', 'no limit set for', unset)
     shown = 0
     do i = 1, result%n
       if (result%status(i) /= RIDE_FAILED) cycle

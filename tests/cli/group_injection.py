@@ -22,17 +22,19 @@ import tempfile
 
 GEOMETRY = {'geometry', 'centerline', 'cross_section', 'slide_elements', 'blended', 'bspline'}
 RIDE = {'run', 'solver', 'water_solver', 'surface', 'water', 'rider'}
+GATED = RIDE | {'evaluation'}   # ride and sweep: &evaluation fail_on_limit
 
 # (scenario, input under inputs/, the groups it reads there, geometry file it names or None,
 #  the groups the geometry file is read for)
 CASES = [
-    ('ride', 'ride/demo_slide.nml', RIDE, None, None),
+    ('ride', 'ride/demo_slide.nml', GATED, None, None),
     ('water', 'water/demo_slide.nml', {'run', 'solver', 'surface', 'water'},
      'demo_slide/slide.nml', {'run', 'grid', 'geometry', 'slide_elements', 'cross_section'}),
     ('water', 'WATER_CHANNEL', {'run', 'solver', 'channel', 'water'}, None, None),
     ('water', 'WATER_INLINE', {'run', 'solver', 'surface', 'water', 'geometry', 'slide_elements', 'cross_section'},
      None, None),
-    ('ride', 'RIDE_NO_SURFACE', {'run', 'water', 'rider', 'solver', 'water_solver', 'surface'}, None, None),
+    ('ride', 'RIDE_NO_SURFACE', {'run', 'water', 'rider', 'solver', 'water_solver', 'surface', 'evaluation'},
+     None, None),
     ('geometry', 'geometry/helix_tube.nml', {'run', 'geometry', 'centerline', 'cross_section', 'grid'}, None, None),
     ('geometry', 'geometry/blend_cylinders.nml', {'run', 'geometry', 'blended', 'grid'}, None, None),
     ('point_mass', 'point_mass/ellipsoid.nml', {'run', 'solver', 'surface', 'point_mass'}, None, None),
@@ -44,7 +46,7 @@ CASES = [
     ('contact', 'contact/paraboloids.nml', {'run', 'solver', 'contact_model', 'shape', 'body', 'contact'},
      'contact/paraboloids/bowl_2.geo', {'run', 'grid', 'geometry', 'bspline'}),
     ('optimize', 'design/optimize_table_4_12.nml', {'run', 'solver', 'optimize'}, None, None),
-    ('sweep', 'sweep/demo_population.nml', RIDE | {'sweep'}, None, None),
+    ('sweep', 'sweep/demo_population.nml', GATED | {'sweep'}, None, None),
     ('identify_rider', 'design/identify_rider_demo.nml', RIDE | {'identify'}, None, None),
     ('identify_water', 'design/identify_water_demo.nml', {'run', 'solver', 'surface', 'water', 'identify'},
      None, None),

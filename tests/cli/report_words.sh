@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Words that do not mislead (issue 27, point 6): the ride report says braking
+# and pushing for the longitudinal felt acceleration (never a "max" that is
+# negative), the side of the wall each contact climbed, what the sign of a
+# lateral or normal felt acceleration means; a closed standard input is a
+# read error (exit 3) that says so, not "the input is empty".
+set -u
+slidesim=$1
+repo=$(pwd)   # tests run from the repository root
+work=$(mktemp -d)
+trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
+failures=0; checks=0
+check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+
+# the demo ride: braked all the way (f_long from -0.146 to -0.060 g), the
+# highest climbs on the left wall (the helix turns left)
+sed -e "s|'../demo_slide/slide.nml'|'$repo/inputs/demo_slide/slide.nml'|" "$repo/inputs/ride/demo_slide.nml" >"$work/ride.nml"
+(cd "$work" && "$slidesim" -q -o ride.h5 --summary-json ride.json ride.nml >ride.out 2>ride.err); got=$?
+check '[ $got = 0 ]' "demo ride: exit status $got ($(cat "$work/ride.err"))"
+check '! grep -q "felt longitudinal" "$work/ride.out"' "the report still says felt longitudinal: $(grep 'felt longitudinal' "$work/ride.out")"
+check 'grep -q "^  felt braking max  *0\.14[0-9]* g$" "$work/ride.out"' "braking max: $(grep braking "$work/ride.out")"
+check 'grep -q "^  felt braking min  *0\.06[0-9]* g (braked all the way)$" "$work/ride.out"' \
+  "braking min (the largest f_long is negative): $(grep braking "$work/ride.out")"
+check '! grep -q "^  felt .*  *-[0-9.e]* g$" "$work/ride.out"' "a felt figure printed negative without its sense"
+check 'grep -q "^  felt lateral max  *0\.0[0-9]* g, pushed to the left$" "$work/ride.out"' "lateral max: $(grep lateral "$work/ride.out")"
+check 'grep -q "^  felt lateral min  *-0\.0[0-9]* g, pushed to the right$" "$work/ride.out"' "lateral min: $(grep lateral "$work/ride.out")"
+for c in pelvis heels back; do
+  check 'grep -q "^  $c highest on the wall  *[0-9.]* deg from the bottom, on the left$" "$work/ride.out"' \
+    "$c: the wall's side: $(grep "$c highest" "$work/ride.out")"
+done
+# the JSON keeps the signed values under their names
+check 'grep -q "\"felt_longitudinal_max\": *-0\.06" "$work/ride.json" && grep -q "\"felt_longitudinal_min\": *-0\.14" "$work/ride.json"' \
+  "the JSON's signed longitudinal values: $(grep -o '"felt_longitudinal_m[a-z]*": *[-0-9.e]*' "$work/ride.json")"
+
+# standard input closed: a read error, not an empty input
+(cd "$work" && "$slidesim" -q -o stdin.h5 - <&- >stdin.out 2>stdin.err); got=$?
+check '[ $got = 3 ]' "closed standard input: exit status $got, expected 3 ($(cat "$work/stdin.err"))"
+check 'grep -q "standard input is closed" "$work/stdin.err"' "closed standard input: the message: $(cat "$work/stdin.err")"
+check '! grep -q "empty" "$work/stdin.err"' "closed standard input called empty"
+# an empty standard input stays what it is (bad input, exit 1)
+(cd "$work" && "$slidesim" -q -o empty.h5 - </dev/null >empty.out 2>empty.err); got=$?
+check '[ $got = 1 ] && grep -q "the input is empty" "$work/empty.err"' "empty standard input: exit $got, $(cat "$work/empty.err")"
+
+echo "$((checks - failures)) passed, $failures failed"
+[ $failures = 0 ]
