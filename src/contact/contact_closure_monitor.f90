@@ -14,15 +14,14 @@
 !> mechanism evaluates it for a complete state (a record); its velocity and
 !> acceleration maps leave their rates alone (zero) and its force map passes
 !> nothing back. A record costs one surface point to first order, a
-!> right-hand side nothing. An ellipsoid's (u2, v2) are those of the chart
-!> the inverse joint uses (kinetostatics_inverse_surface_joint, "Charts"):
-!> the monitor reads the chart's pole axis from the scalar `chart` and
-!> measures with it.
+!> right-hand side nothing. The (u2, v2) of a surface with charts (an
+!> ellipsoid) are those of the chart the inverse joint uses
+!> (kinetostatics_inverse_surface_joint, "Charts"): the monitor reads the
+!> chart from the scalar `chart` and measures with it.
 module contact_closure_monitor
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status
   use geometry_surface, only: surface_t
-  use geometry_elementary, only: ellipsoid_t, ellipsoid_pole_chart
   use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
   use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
   implicit none (type, external)
@@ -34,9 +33,9 @@ module contact_closure_monitor
     integer :: contact(2) = 0                   ! scalars u2, v2
     integer :: gaps(5) = 0                      ! output scalars g1..g5
     type(surface_joint_t) :: joint_2            ! S2 on K_B (local frames 1 -> 2)
-    ! an ellipsoid's chart (module comment): its own one has the poles on z (3)
-    integer :: var_chart = 0, pole_axis = 3
-    type(ellipsoid_t) :: ellipsoid
+    ! the surface's chart (module comment): the scalar's initial value names its own
+    integer :: var_chart = 0, own_chart = 0, chart_in_use = 0
+    class(surface_t), allocatable :: own_surface
     real(wp) :: chart(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
   contains
     procedure :: position => monitor_position
@@ -50,7 +49,8 @@ contains
 
   !> frame_1d: the contact frame K_1D on body A; surface_2 with side_2 on
   !> the body frame frame_b at the scalars contact = [u2, v2]; chart: the
-  !> scalar of an ellipsoid's chart (module comment).
+  !> scalar of the chart of a surface with charts (module comment), whose
+  !> value names the surface's own chart at the start.
   function new_closure_monitor(name, frame_1d, frame_b, surface_2, side_2, contact, gaps, chart) result(e)
     character(len=*), intent(in) :: name
     integer, intent(in) :: frame_1d, frame_b, contact(2), gaps(5)
@@ -66,11 +66,10 @@ contains
     e%gaps = gaps
     e%joint_2 = new_surface_joint(name//'.s2', 1, 2, 1, 2, surface_2, side_2, 1.0_wp, 0.0_wp)
     if (present(chart)) then
-      select type (surface_2)
-      type is (ellipsoid_t)
-        e%ellipsoid = surface_2
+      if (surface_2%has_charts()) then
+        allocate (e%own_surface, source=surface_2)
         e%var_chart = chart
-      end select
+      end if
     end if
   end function new_closure_monitor
 
@@ -81,17 +80,21 @@ contains
     type(status_t), intent(inout) :: status
     type(frame_state_t) :: two(2)
     type(scalar_state_t) :: uv(2)
-    type(ellipsoid_t) :: chart_surface
+    class(surface_t), allocatable :: chart_surface
     real(wp) :: g(5)
     integer :: k
     if (self%var_chart > 0) then
-      if (nint(scalars(self%var_chart)%q) /= self%pole_axis) then
-        self%pole_axis = nint(scalars(self%var_chart)%q)
-        call ellipsoid_pole_chart(self%ellipsoid, self%pole_axis, chart_surface, self%chart)
+      if (self%own_chart == 0) then   ! the first state names the surface's own chart
+        self%own_chart = nint(scalars(self%var_chart)%q)
+        self%chart_in_use = self%own_chart
+      end if
+      if (nint(scalars(self%var_chart)%q) /= self%chart_in_use) then
+        self%chart_in_use = nint(scalars(self%var_chart)%q)
+        call self%own_surface%chart(self%chart_in_use, chart_surface, self%chart)
         self%joint_2%surface = chart_surface
       end if
     end if
-    if (self%pole_axis == 3) then
+    if (self%chart_in_use == self%own_chart) then
       two(1)%rot = frames(self%frame_b)%rot
     else
       two(1)%rot = matmul(frames(self%frame_b)%rot, self%chart)

@@ -69,27 +69,20 @@ contains
     do j = 1, n
       a_zero(j) = all(a(:, j) == 0)
     end do
-    c(:, 0) = 0 + cross3(a(:, 0), b(:, 0))
+    c(:, 0) = 0 + cross(a(:, 0), b(:, 0))
     if (n < 1) return
-    c(:, 1) = 0 + cross3(a(:, 0), b(:, 1))
-    if (.not. a_zero(1)) c(:, 1) = c(:, 1) + cross3(a(:, 1), b(:, 0))
+    c(:, 1) = 0 + cross(a(:, 0), b(:, 1))
+    if (.not. a_zero(1)) c(:, 1) = c(:, 1) + cross(a(:, 1), b(:, 0))
     if (n < 2) return
-    c(:, 2) = 0 + cross3(a(:, 0), b(:, 2))
-    if (.not. a_zero(1)) c(:, 2) = c(:, 2) + 2*cross3(a(:, 1), b(:, 1))
-    if (.not. a_zero(2)) c(:, 2) = c(:, 2) + cross3(a(:, 2), b(:, 0))
+    c(:, 2) = 0 + cross(a(:, 0), b(:, 2))
+    if (.not. a_zero(1)) c(:, 2) = c(:, 2) + 2*cross(a(:, 1), b(:, 1))
+    if (.not. a_zero(2)) c(:, 2) = c(:, 2) + cross(a(:, 2), b(:, 0))
     if (n < 3) return
-    c(:, 3) = 0 + cross3(a(:, 0), b(:, 3))
-    if (.not. a_zero(1)) c(:, 3) = c(:, 3) + 3*cross3(a(:, 1), b(:, 2))
-    if (.not. a_zero(2)) c(:, 3) = c(:, 3) + 3*cross3(a(:, 2), b(:, 1))
-    if (.not. a_zero(3)) c(:, 3) = c(:, 3) + cross3(a(:, 3), b(:, 0))
+    c(:, 3) = 0 + cross(a(:, 0), b(:, 3))
+    if (.not. a_zero(1)) c(:, 3) = c(:, 3) + 3*cross(a(:, 1), b(:, 2))
+    if (.not. a_zero(2)) c(:, 3) = c(:, 3) + 3*cross(a(:, 2), b(:, 1))
+    if (.not. a_zero(3)) c(:, 3) = c(:, 3) + cross(a(:, 3), b(:, 0))
   end subroutine cross_derivatives
-
-  !> x x y, here so that the compiler inlines it.
-  pure function cross3(x, y) result(z)
-    real(wp), intent(in) :: x(3), y(3)
-    real(wp) :: z(3)
-    z = [x(2)*y(3) - x(3)*y(2), x(3)*y(1) - x(1)*y(3), x(1)*y(2) - x(2)*y(1)]
-  end function cross3
 
   !> Curvature chi = |c_u x c_uu|/|c_u|^3 (4.8) and, if c holds c_uuu, its
   !> derivative chi_u (4.9). chi_u is set to 0 where c_u x c_uu vanishes

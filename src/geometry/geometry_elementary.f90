@@ -19,7 +19,12 @@ module geometry_elementary
   implicit none (type, external)
   private
   public :: plane_t, ellipsoid_t, paraboloid_t, elliptic_cylinder_t, apex_paraboloid_t
-  public :: ellipsoid_semi_axes, ellipsoid_pole_chart
+
+  !> |v| (rad) at which an ellipsoid's chart changes (surface_t's charts): 80
+  !> degrees, so that after a change the point lies within 35 degrees of the
+  !> new chart's equator (kinetostatics_inverse_surface_joint).
+  real(wp), parameter :: pole_chart_limit = 1.4_wp
+  real(wp), parameter :: cos_pole_chart_limit = cos(pole_chart_limit)
 
   !> Plane through A, B, C: r = r_A + u r_u + v r_v with unit r_u towards B and
   !> unit r_v towards C, thesis (3.55)-(3.56). u, v are lengths (m) along
@@ -47,6 +52,11 @@ module geometry_elementary
     procedure :: periodic_u => ellipsoid_periodic_u
     procedure :: describe => ellipsoid_describe
     procedure :: parameter_units => ellipsoid_parameter_units
+    procedure :: has_charts => ellipsoid_has_charts
+    procedure :: chart_margin => ellipsoid_chart_margin
+    procedure :: chart_toward => ellipsoid_chart_toward
+    procedure :: chart => ellipsoid_pole_chart
+    procedure :: chart_parameters => ellipsoid_chart_parameters
   end type ellipsoid_t
 
   !> Paraboloid r = [u, v, c u^2/a^2 + v^2/b^2], thesis (3.58), implemented
@@ -172,37 +182,70 @@ contains
     s%a = a; s%b = b; s%c = c
   end function new_ellipsoid
 
-  !> The semi-axes [a, b, c] of s (m), along its x, y, z.
-  pure function ellipsoid_semi_axes(s) result(abc)
-    type(ellipsoid_t), intent(in) :: s
-    real(wp) :: abc(3)
-    abc = [s%a, s%b, s%c]
-  end function ellipsoid_semi_axes
+  !> An ellipsoid has three charts of (3.57), one per axis its poles lie on.
+  pure logical function ellipsoid_has_charts(self) result(has)
+    class(ellipsoid_t), intent(in) :: self
+    associate (unused => self)   ! every ellipsoid
+    end associate
+    has = .true.
+  end function ellipsoid_has_charts
 
-  !> The ellipsoid s in another chart of (3.57): the one whose poles lie on
-  !> s's axis k (1, 2, 3: x, y, z; k = 3 is s itself). A point r' of the
-  !> chart's surface `chart_surface` is the point r = P r' of s, P the cyclic
-  !> permutation taking the chart's z axis to axis k (a rotation: the
-  !> outward normal stays outward). Used where a contact point nears a pole,
-  !> where (3.57)'s parametrisation is singular (kinetostatics_inverse_surface_joint).
-  pure subroutine ellipsoid_pole_chart(s, k, chart_surface, p)
-    type(ellipsoid_t), intent(in) :: s
+  !> cos v - cos(pole_chart_limit): positive inside the chart, zero at its edge.
+  pure real(wp) function ellipsoid_chart_margin(self, v) result(margin)
+    class(ellipsoid_t), intent(in) :: self
+    real(wp), intent(in) :: v
+    associate (unused => self)   ! the same edge for every ellipsoid
+    end associate
+    margin = cos(v) - cos_pole_chart_limit
+  end function ellipsoid_chart_margin
+
+  !> The axis (1, 2, 3: x, y, z) along which the point r lies least far out:
+  !> the chart with its poles there has r farthest from them.
+  pure integer function ellipsoid_chart_toward(self, r) result(k)
+    class(ellipsoid_t), intent(in) :: self
+    real(wp), intent(in) :: r(3)
+    real(wp) :: abc(3)
+    abc = [self%a, self%b, self%c]
+    k = minloc(abs(r/abc), dim=1)
+  end function ellipsoid_chart_toward
+
+  !> The ellipsoid in another chart of (3.57): the one whose poles lie on
+  !> its axis k (1, 2, 3: x, y, z; k = 3 is the ellipsoid itself). A point r'
+  !> of the chart's surface `chart_surface` is the point r = P r' of this
+  !> one, P the cyclic permutation taking the chart's z axis to axis k (a
+  !> rotation: the outward normal stays outward).
+  pure subroutine ellipsoid_pole_chart(self, k, chart_surface, p)
+    class(ellipsoid_t), intent(in) :: self
     integer, intent(in) :: k
-    type(ellipsoid_t), intent(out) :: chart_surface
+    class(surface_t), allocatable, intent(inout) :: chart_surface   ! replaced (pure: not intent(out))
     real(wp), intent(out) :: p(3, 3)
+    type(ellipsoid_t) :: turned
     real(wp) :: abc(3)
     integer :: i1, i2
-    abc = [s%a, s%b, s%c]
+    abc = [self%a, self%b, self%c]
     i1 = modulo(k, 3) + 1
     i2 = modulo(k + 1, 3) + 1
     p = 0
     p(i1, 1) = 1
     p(i2, 2) = 1
     p(k, 3) = 1
-    chart_surface%a = abc(i1)
-    chart_surface%b = abc(i2)
-    chart_surface%c = abc(k)
+    turned%a = abc(i1)
+    turned%b = abc(i2)
+    turned%c = abc(k)
+    if (allocated(chart_surface)) deallocate (chart_surface)
+    allocate (chart_surface, source=turned)
   end subroutine ellipsoid_pole_chart
+
+  !> (u, v) of the point r of the ellipsoid, the inverse of (3.57).
+  pure subroutine ellipsoid_chart_parameters(self, r, u, v, status)
+    class(ellipsoid_t), intent(in) :: self
+    real(wp), intent(in) :: r(3)
+    real(wp), intent(out) :: u, v
+    type(status_t), intent(out) :: status
+    status%code = STATUS_OK
+    v = asin(max(-1.0_wp, min(1.0_wp, r(3)/self%c)))
+    u = atan2(r(2)/self%b, r(1)/self%a)
+  end subroutine ellipsoid_chart_parameters
 
   !> Paraboloid (3.58) with a, b > 0 (m) and c = +1 (elliptic) or -1 (hyperbolic).
   function new_paraboloid(a, b, c, status) result(s)

@@ -3,9 +3,20 @@
 !> Every surface (elementary, spline, placed) extends surface_t and fills one
 !> evaluation record, surface_point_t, with r and its partials up to the order
 !> asked for (0..3). Evaluation takes the surface intent(in) and keeps no cache.
+!>
+!> Charts: a parametrisation may be singular at poles (an ellipsoid's (3.57)
+!> at v = +-pi/2) while the same surface has other charts that are regular
+!> there. A surface with such charts says so (`has_charts`), measures how far
+!> (u, v) is from its chart's poles (`chart_margin`, positive inside, zero at
+!> the chart's edge), names the chart in which a point lies farthest from the
+!> poles (`chart_toward`), gives itself in that chart with the rotation
+!> between the two (`chart`: the chart's point r' is the surface's point
+!> r = P r'), and the parameters of a point (`chart_parameters`). The
+!> defaults: one chart, never changed. Elements that carry a surface change
+!> charts through these alone (kinetostatics_inverse_surface_joint).
 module geometry_surface
   use base_kinds, only: wp
-  use base_status, only: status_t
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   implicit none (type, external)
   private
   public :: surface_t, surface_point_t
@@ -34,6 +45,12 @@ module geometry_surface
     !> r(u_i, v_j) on a grid (x, y, z of shape (size(v), size(u))); a surface
     !> may override it with a faster way than point by point.
     procedure :: points_on_grid => surface_points_on_grid
+    !> charts (module comment); the defaults: one chart, never changed
+    procedure :: has_charts => surface_has_charts
+    procedure :: chart_margin => surface_chart_margin
+    procedure :: chart_toward => surface_chart_toward
+    procedure :: chart => surface_chart
+    procedure :: chart_parameters => surface_chart_parameters
   end type surface_t
 
   abstract interface
@@ -122,4 +139,61 @@ contains
     end associate
     u_units = '1'; v_units = '1'
   end subroutine surface_parameter_units
+
+  !> Whether the surface has charts other than its own (default: no).
+  pure logical function surface_has_charts(self) result(has)
+    class(surface_t), intent(in) :: self
+    associate (unused => self)   ! the default ignores the surface
+    end associate
+    has = .false.
+  end function surface_has_charts
+
+  !> How far v is from the chart's poles: positive inside the chart, zero at
+  !> its edge, where the chart must change (default: 1, no edge).
+  pure real(wp) function surface_chart_margin(self, v) result(margin)
+    class(surface_t), intent(in) :: self
+    real(wp), intent(in) :: v
+    associate (unused => self, unused_v => v)   ! the default ignores the surface
+    end associate
+    margin = 1
+  end function surface_chart_margin
+
+  !> The chart in which the point r (the surface's own coordinates) lies
+  !> farthest from the poles (default: 0, the only chart).
+  pure integer function surface_chart_toward(self, r) result(k)
+    class(surface_t), intent(in) :: self
+    real(wp), intent(in) :: r(3)
+    associate (unused => self, unused_r => r)   ! the default ignores the surface
+    end associate
+    k = 0
+  end function surface_chart_toward
+
+  !> The surface in chart k: chart_surface, whose point r' is the surface's
+  !> point r = p r' (default: the surface itself, p the identity).
+  pure subroutine surface_chart(self, k, chart_surface, p)
+    class(surface_t), intent(in) :: self
+    integer, intent(in) :: k
+    class(surface_t), allocatable, intent(inout) :: chart_surface   ! replaced (pure: not intent(out))
+    real(wp), intent(out) :: p(3, 3)
+    associate (unused_k => k)   ! one chart
+    end associate
+    if (allocated(chart_surface)) deallocate (chart_surface)
+    allocate (chart_surface, source=self)
+    p = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+  end subroutine surface_chart
+
+  !> The parameters (u, v) of the point r of the surface (its own
+  !> coordinates); the default has no inverse and says so.
+  pure subroutine surface_chart_parameters(self, r, u, v, status)
+    class(surface_t), intent(in) :: self
+    real(wp), intent(in) :: r(3)
+    real(wp), intent(out) :: u, v
+    type(status_t), intent(out) :: status
+    associate (unused_r => r)
+    end associate
+    u = 0
+    v = 0
+    call set_status(status, STATUS_INVALID_INPUT, 'the '//self%describe()//' has no parameters of a point '// &
+                    '(only a surface with charts has)')
+  end subroutine surface_chart_parameters
 end module geometry_surface

@@ -8,6 +8,7 @@
 !> See docs/geometry.md for every variable with unit, default and range.
 module io_geometry_config
   use base_kinds, only: wp
+  use base_vector, only: cross
   use base_text, only: format_integer
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT, STATUS_IO
@@ -210,7 +211,7 @@ contains
         call r%invalid('end', format_vector(end), 'must lie at least 1 mm from start', status)
       if (.not. status%ok()) return
       t = (end - start)/norm2(end - start)
-      if (norm2(cross3(horizon/norm2(horizon), t)) < horizon_parallel_tol) then
+      if (norm2(cross(horizon/norm2(horizon), t)) < horizon_parallel_tol) then
         call r%invalid('horizon', format_vector(horizon), &
                        'must not be parallel to the centerline tangent '//format_vector(t), status)
         return
@@ -309,14 +310,14 @@ contains
                            //')', '0', 'every horizon point must be a non-zero vector', status)
             return
           end if
-          if (norm2(cross3(horizon_points(:, i)/norm2(horizon_points(:, i)), t)) < horizon_parallel_tol .or. &
-              norm2(cross3(horizon_points(:, i - 1)/norm2(horizon_points(:, i - 1)), t)) < horizon_parallel_tol) then
+          if (norm2(cross(horizon_points(:, i)/norm2(horizon_points(:, i)), t)) < horizon_parallel_tol .or. &
+              norm2(cross(horizon_points(:, i - 1)/norm2(horizon_points(:, i - 1)), t)) < horizon_parallel_tol) then
             call r%invalid('horizon_points(:, '//format_integer(i)//')', format_vector(horizon_points(:, i)), &
                            'is parallel to the centerline between points '//format_integer(i - 1)// &
                            ' and '//format_integer(i), status)
             return
           end if
-        else if (norm2(cross3(horizon/norm2(horizon), t)) < horizon_parallel_tol) then
+        else if (norm2(cross(horizon/norm2(horizon), t)) < horizon_parallel_tol) then
           call r%invalid('horizon', format_vector(horizon), 'is parallel to the centerline '// &
                          'between points '//format_integer(i - 1)//' and '//format_integer(i), status)
           return
@@ -845,10 +846,4 @@ contains
       text = plural(:n - 1)//' was'
     end if
   end function noun
-
-  pure function cross3(a, b) result(c)
-    real(wp), intent(in) :: a(3), b(3)
-    real(wp) :: c(3)
-    c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-  end function cross3
 end module io_geometry_config

@@ -34,16 +34,18 @@
 !> followed by a velocity pass) and rotated into the world here; its
 !> singular points are the forward joint's (extrapolated rates, rule (3.40)).
 !>
-!> Charts: an ellipsoid's (3.57) is singular at its poles v = +-pi/2 (r_u = 0:
-!> the Darboux frame and u' are undefined there), and an egg that stands up
-!> brings its contact point to the tip of its long axis, a pole when that axis
-!> is the shape's z. Given the turn phi before it (`turn`, the open chain of
-!> contact_pair), the joint watches cos v - cos(chart_limit) (kinetostatics_
-!> state's chart interface; limit 1.4 rad = 80 degrees) and at its zero
-!> changes to the chart of the same ellipsoid whose poles lie on the body
-!> axis along which the contact point lies least far out
-!> (geometry_elementary's ellipsoid_pole_chart, r_B = P r'): the point, so
-!> (u, v), is then within 35 degrees of the new chart's equator. The motion
+!> Charts: a surface's parametrisation may be singular at poles (an
+!> ellipsoid's (3.57) at v = +-pi/2, r_u = 0: the Darboux frame and u' are
+!> undefined there), and an egg that stands up brings its contact point to
+!> the tip of its long axis, a pole when that axis is the shape's z. Given
+!> the turn phi before it (`turn`, the open chain of contact_pair), the joint
+!> of a surface with charts (geometry_surface's chart hooks; the ellipsoid's:
+!> cos v - cos(1.4 rad)) watches the surface's chart_margin(v) (kinetostatics_
+!> state's chart interface) and at its zero changes to the chart
+!> (chart_toward, chart: r_B = P r') in which the contact point lies farthest
+!> from the poles (an ellipsoid's: the one with its poles on the body axis
+!> along which the point lies least far out, within 35 degrees of the new
+!> chart's equator). The motion
 !> is kept: (u, v) become the new chart's parameters of the same point and
 !> (u', v') those of the same velocity over the surface; the two charts'
 !> Darboux frames share the normal and differ by a turn beta about it, so phi
@@ -57,7 +59,6 @@ module kinetostatics_inverse_surface_joint
   use base_status, only: status_t
   use base_vector, only: cross
   use geometry_surface, only: surface_t
-  use geometry_elementary, only: ellipsoid_t, ellipsoid_semi_axes, ellipsoid_pole_chart
   use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
   use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
   implicit none (type, external)
@@ -72,14 +73,11 @@ module kinetostatics_inverse_surface_joint
     ! (columns: p, g_u, g_v, t_u, t_v, g_uu, g_uv, g_vu, g_vv, h_uu, h_uv, h_vv)
     real(wp) :: geo(3, 12) = 0
     real(wp) :: omega_rel(3) = 0, w_rel(3) = 0   ! at the last velocity pass
-    ! charts (module comment): only for an ellipsoid after a turn
+    ! charts (module comment): only for a surface with charts after a turn
     logical :: charts = .false.
-    type(ellipsoid_t) :: ellipsoid                 ! B's surface in its own chart (poles on B's z)
+    class(surface_t), allocatable :: own_surface   ! B's surface in its own chart
     real(wp) :: chart(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])   ! r_B = P r_chart
     integer :: var_turn = 0, var_chart = 0
-    real(wp) :: chart_limit = 1.4_wp               ! rad, |v| at which the chart changes
-    real(wp) :: cos_chart_limit = 0                ! cos(chart_limit), set with the charts (the root
-                                                   ! function asks at every step end)
     integer :: rebases = 0
   contains
     procedure :: position => isj_position
@@ -90,6 +88,7 @@ module kinetostatics_inverse_surface_joint
     procedure :: acceleration => isj_acceleration
     procedure :: force => isj_force
     procedure :: links => isj_links
+    procedure :: singular_note => isj_singular_note
   end type inverse_surface_joint_t
 
   integer, parameter :: COL_P = 1, COL_GU = 2, COL_GV = 3, COL_TU = 4, COL_TV = 5, COL_GUU = 6, COL_GUV = 7, &
@@ -101,8 +100,9 @@ contains
   !> alpha_u, alpha_v as for the forward joint ((3.38), (3.41)); mount: the
   !> rotation from K_in to the Darboux frame (default identity). turn: the
   !> scalar of a turn about K_in's z just before this joint, chart_scalar: a
-  !> scalar for the chart in use; with both, an ellipsoid changes charts near
-  !> its poles (module comment; the mount must keep z on the z axis).
+  !> scalar for the chart in use; with both, a surface with charts (an
+  !> ellipsoid) changes them near its poles (module comment; the mount must
+  !> keep z on the z axis).
   function new_inverse_surface_joint(name, frame_in, frame_out, var_u, var_v, surface, sigma, alpha_u, alpha_v, &
                                      mount, turn, chart_scalar) result(e)
     character(len=*), intent(in) :: name
@@ -120,16 +120,12 @@ contains
     if (present(mount)) e%mount = mount
     e%joint = new_surface_joint(name, 1, 2, 1, 2, surface, sigma, alpha_u, alpha_v)   ! its geometry only
     if (present(turn) .and. present(chart_scalar)) then
-      select type (surface)
-      type is (ellipsoid_t)
-        if (abs(abs(e%mount(3, 3)) - 1) <= 1e-14_wp) then
-          e%charts = .true.
-          e%ellipsoid = surface
-          e%var_turn = turn
-          e%var_chart = chart_scalar
-          e%cos_chart_limit = cos(e%chart_limit)
-        end if
-      end select
+      if (surface%has_charts() .and. abs(abs(e%mount(3, 3)) - 1) <= 1e-14_wp) then
+        e%charts = .true.
+        allocate (e%own_surface, source=surface)
+        e%var_turn = turn
+        e%var_chart = chart_scalar
+      end if
     end if
   end function new_inverse_surface_joint
 
@@ -263,11 +259,11 @@ contains
     if (self%charts) k = self%var_v
   end function isj_chart_angle
 
-  !> cos v - cos(chart_limit): positive inside the chart, zero at its edge.
+  !> The surface's chart margin at v: positive inside the chart, zero at its edge.
   pure real(wp) function isj_chart_margin(self, angle) result(g)
     class(inverse_surface_joint_t), intent(in) :: self
     real(wp), intent(in) :: angle
-    g = cos(angle) - self%cos_chart_limit
+    g = self%own_surface%chart_margin(angle)
   end function isj_chart_margin
 
   !> Changes to the chart whose poles are farthest from the contact point
@@ -276,10 +272,10 @@ contains
     class(inverse_surface_joint_t), intent(inout) :: self
     type(scalar_state_t), intent(inout) :: scalars(:)
     type(status_t) :: status
-    type(ellipsoid_t) :: chart_surface
+    class(surface_t), allocatable :: chart_surface
     type(surface_joint_t) :: trial
     real(wp) :: ud, vd, u, v, rates(3, 6), r(3), w(3), omega_old(3), omega_new(3), d_old(3, 3), d_new(3, 3), &
-                abc(3), p(3, 3), tu(3), tv(3), a(2, 2), rhs(2), det, ud_new, vd_new, turn(3, 3), axis(3)
+                p(3, 3), tu(3), tv(3), a(2, 2), rhs(2), det, ud_new, vd_new, turn(3, 3), axis(3)
     integer :: k
     if (.not. self%charts) return
     ud = scalars(self%var_u)%qd
@@ -293,14 +289,12 @@ contains
       omega_old = matmul(self%chart, rates(:, 1)*ud + rates(:, 2)*vd)   ! the Darboux frame's turn rate
       d_old = matmul(self%chart, self%joint%frame%r)
     end associate
-    ! the pole axis along which the point lies least far out
-    abc = ellipsoid_semi_axes(self%ellipsoid)
-    k = minloc(abs(r/abc), dim=1)
-    call ellipsoid_pole_chart(self%ellipsoid, k, chart_surface, p)
+    ! the chart in which the point lies farthest from the poles
+    k = self%own_surface%chart_toward(r)
+    call self%own_surface%chart(k, chart_surface, p)
     r = matmul(transpose(p), r)   ! the point in the new chart's coordinates
-    abc = ellipsoid_semi_axes(chart_surface)
-    v = asin(max(-1.0_wp, min(1.0_wp, r(3)/abc(3))))
-    u = atan2(r(2)/abc(2), r(1)/abc(1))
+    call chart_surface%chart_parameters(r, u, v, status)
+    if (.not. status%ok()) return
     ! the new chart on a copy: if it cannot be evaluated nothing changes (the
     ! run then meets the pole and fails there, named by the model's diagnosis)
     trial = self%joint
@@ -346,4 +340,11 @@ contains
     links = element_links_t(.true., [self%frame_in], [self%var_u, self%var_v], [self%frame_out], [integer ::], &
                             carried=.true.)
   end subroutine isj_links
+
+  !> Its surface joint's note (element_t): the same contact point.
+  function isj_singular_note(self) result(text)
+    class(inverse_surface_joint_t), intent(in) :: self
+    character(len=:), allocatable :: text
+    text = self%joint%singular_note()
+  end function isj_singular_note
 end module kinetostatics_inverse_surface_joint

@@ -38,6 +38,7 @@ module kinetostatics_mass
     procedure :: energy => mass_energy
     procedure :: links => mass_links
     procedure :: world_inertia => mass_world_inertia
+    procedure :: mass_frame => mass_mass_frame
   end type mass_element_t
 
 contains
@@ -114,6 +115,11 @@ contains
     s = self%s
     inertia_w = self%inertia_w
   end subroutine mass_world_inertia
+
+  pure integer function mass_mass_frame(self) result(frame)
+    class(mass_element_t), intent(in) :: self
+    frame = self%frame
+  end function mass_mass_frame
 
   pure subroutine mass_nothing(self, frames, scalars)
     class(mass_element_t), intent(inout) :: self

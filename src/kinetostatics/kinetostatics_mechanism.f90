@@ -96,9 +96,7 @@ module kinetostatics_mechanism
     solve_nonlinear
   use numerics_linear_algebra, only: lu_factor, lu_solve, lu_reciprocal_condition, one_norm, cholesky_factor, &
     cholesky_solve, transposed_product, symmetric_transposed_product
-  use kinetostatics_state, only: element_t, element_box_t, frame_state_t, scalar_state_t
-  use kinetostatics_surface_joint, only: surface_joint_t, domain_edge_margin
-  use kinetostatics_mass, only: mass_element_t
+  use kinetostatics_state, only: element_t, element_box_t, frame_state_t, scalar_state_t, domain_edge_t
   use kinetostatics_contact, only: contact_t, contact_state_t, contact_kinematics, NORMAL_FRAME_FORCE, &
     NORMAL_CUT_FORCE
   use kinetostatics_force_law, only: force_law_t, force_law_box_t
@@ -130,15 +128,10 @@ module kinetostatics_mechanism
     integer, allocatable :: dependents(:)     ! scalar indices of coordinates with dependent rates
   end type rate_constraint_t
 
-  !> A finite, non-periodic edge of a surface joint's parameter domain; its
-  !> event is placed `margin` inside it (domain_edge_margin).
-  type :: surface_edge_t
-    integer :: element = 0                    ! the surface joint
-    integer :: scalar = 0                     ! its u or v
-    real(wp) :: bound = 0                     ! the edge value
-    real(wp) :: margin = 0                    ! the event's distance from it
-    logical :: upper = .false.                ! bound is the maximum (else the minimum)
-    logical :: along_u = .true.               ! an edge in u (else in v)
+  !> A finite, non-periodic edge of an element's parameter domain (a surface
+  !> joint's); its event is placed `margin` inside it (domain_edge_margin).
+  type, extends(domain_edge_t) :: surface_edge_t
+    integer :: element = 0                    ! the element (a surface joint)
   end type surface_edge_t
 
   type, extends(nonlinear_system_t) :: mechanism_t
@@ -595,10 +588,7 @@ contains
     if (self%r > 0) then
       do k = 1, self%n_elements
         if (any(self%beta_pass == k)) cycle
-        select type (e => self%elements(k)%e)
-        type is (surface_joint_t)
-          e%lazy = .false.
-        end select
+        call self%elements(k)%e%set_eager()
       end do
     end if
     call build_closure_blocks(self%blocks, self%elements, self%reach, self%n_frames, self%n_scalars, &
@@ -617,11 +607,9 @@ contains
     keep = .false.
     self%masses = [integer ::]
     do k = 1, self%n_elements
-      select type (e => self%elements(k)%e)
-      type is (mass_element_t)
-        self%masses = [self%masses, k]
-        keep(e%frame) = .true.
-      end select
+      if (self%elements(k)%e%mass_frame() == 0) cycle
+      self%masses = [self%masses, k]
+      keep(self%elements(k)%e%mass_frame()) = .true.
     end do
     do k = 1, self%n_laws
       c = self%laws(k)%law%contact
@@ -635,10 +623,7 @@ contains
     self%tracked_slot(self%tracked) = [(k, k = 1, nt)]
     self%mass_slot = [integer ::]
     do k = 1, size(self%masses)
-      select type (e => self%elements(self%masses(k))%e)
-      type is (mass_element_t)
-        self%mass_slot = [self%mass_slot, self%tracked_slot(e%frame)]
-      end select
+      self%mass_slot = [self%mass_slot, self%tracked_slot(self%elements(self%masses(k))%e%mass_frame())]
     end do
     self%normal_contacts = pack([(c, c = 1, size(self%contacts))], &
                                 self%contacts%normal_rule == NORMAL_FRAME_FORCE)
@@ -742,29 +727,15 @@ contains
     end do
   end subroutine check_laws
 
-  !> The finite, non-periodic edges of every surface joint's domain.
+  !> The finite, non-periodic edges of every element's domain (element_t's domain_edges).
   subroutine find_edges(self)
     class(mechanism_t), intent(inout) :: self
-    real(wp) :: u_min, u_max, v_min, v_max
-    integer :: k
+    type(domain_edge_t), allocatable :: edges(:)
+    integer :: k, j
     allocate (self%edges(0))
     do k = 1, self%n_elements
-      select type (e => self%elements(k)%e)
-      type is (surface_joint_t)
-        call e%surface%domain(u_min, u_max, v_min, v_max)
-        if (.not. e%surface%periodic_u()) then
-          if (u_min > -huge(u_min)) self%edges = [self%edges, &
-            surface_edge_t(k, e%var_u, u_min, domain_edge_margin(u_min, u_max), .false., .true.)]
-          if (u_max < huge(u_max)) self%edges = [self%edges, &
-            surface_edge_t(k, e%var_u, u_max, domain_edge_margin(u_min, u_max), .true., .true.)]
-        end if
-        if (.not. e%surface%periodic_v()) then
-          if (v_min > -huge(v_min)) self%edges = [self%edges, &
-            surface_edge_t(k, e%var_v, v_min, domain_edge_margin(v_min, v_max), .false., .false.)]
-          if (v_max < huge(v_max)) self%edges = [self%edges, &
-            surface_edge_t(k, e%var_v, v_max, domain_edge_margin(v_min, v_max), .true., .false.)]
-        end if
-      end select
+      call self%elements(k)%e%domain_edges(edges)
+      self%edges = [self%edges, (surface_edge_t(edges(j), k), j = 1, size(edges))]
     end do
   end subroutine find_edges
 
@@ -1736,10 +1707,7 @@ contains
     call clear_sequence(size(self%wrench), self%wrench)
     do b = 1, size(self%masses)
       if (self%mass_slot(b) == 0) cycle   ! a mass on the ground
-      select type (e => self%elements(self%masses(b))%e)
-      type is (mass_element_t)
-        call e%world_inertia(mass, s, inertia_w)
-      end select
+      call self%elements(self%masses(b))%e%world_inertia(mass, s, inertia_w)
       call add_inertial_wrenches(self%ns, size(self%tracked), self%mass_slot(b), mass, s, inertia_w, self%twist, &
                                  self%wrench)
     end do

@@ -62,10 +62,6 @@ module kinetostatics_mechanism_ode
   use numerics_event_driver, only: event_system_t, EVENT_IGNORE, EVENT_RECORD, EVENT_STOP, EVENT_RESTART
   use kinetostatics_mechanism, only: mechanism_t
   use kinetostatics_recorder, only: mechanism_series_t
-  use kinetostatics_surface_joint, only: surface_joint_t
-  use kinetostatics_inverse_surface_joint, only: inverse_surface_joint_t
-  use geometry_surface, only: surface_t, surface_point_t
-  use base_vector, only: cross
   implicit none (type, external)
   private
   public :: mechanism_ode_t
@@ -135,7 +131,7 @@ contains
   function mechanism_diagnose(self, t, y) result(text)
     class(mechanism_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
-    character(len=:), allocatable :: text
+    character(len=:), allocatable :: text, note
     type(status_t) :: st
     integer :: k
     associate (unused => t)
@@ -146,30 +142,11 @@ contains
     call self%mechanism%set_positions(y(1:self%mechanism%f), st)
     if (.not. st%ok()) return
     do k = 1, self%mechanism%n_elements
-      select type (e => self%mechanism%elements(k)%e)
-      type is (surface_joint_t)
-        call near_singular(e%name, e%surface, e%point, e%u, e%v)
-      type is (inverse_surface_joint_t)
-        call near_singular(e%name, e%joint%surface, e%joint%point, e%joint%u, e%joint%v)
-      end select
-    end do
-
-  contains
-
-    subroutine near_singular(name, surface, p, u, v)
-      character(len=*), intent(in) :: name
-      class(surface_t), intent(in) :: surface
-      type(surface_point_t), intent(in) :: p
-      real(wp), intent(in) :: u, v
-      real(wp) :: ratio
-      ratio = norm2(cross(p%ru, p%rv))/max(dot_product(p%ru, p%ru) + dot_product(p%rv, p%rv), tiny(1.0_wp))
-      if (.not. ratio < 1e-2_wp) return
+      note = self%mechanism%elements(k)%e%singular_note()
+      if (len(note) == 0) cycle
       if (len(text) > 0) text = text//'; '
-      text = text//'the contact point of '''//name//''' is near a singular point of its surface''s '// &
-        'parametrisation at (u, v) = ('//format_short(u)//', '//format_short(v)//') (|r_u x r_v| / (|r_u|^2 + '// &
-        '|r_v|^2) = '//format_short(ratio)//'; an ellipsoid''s poles, an apex) on the '//surface%describe()// &
-        ': orient the body or the shape so that the contact stays away from it'
-    end subroutine near_singular
+      text = text//note
+    end do
   end function mechanism_diagnose
 
   integer function state_size(self) result(n)

@@ -21,7 +21,7 @@ module kinetostatics_state
   use base_status, only: status_t
   implicit none (type, external)
   private
-  public :: frame_state_t, scalar_state_t, element_t, element_box_t, element_links_t, axis_rotation
+  public :: frame_state_t, scalar_state_t, element_t, element_box_t, element_links_t, domain_edge_t, axis_rotation
 
   type :: frame_state_t
     real(wp) :: rot(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])  ! columns x, y, z
@@ -57,6 +57,17 @@ module kinetostatics_state
     logical :: relative = .false.
   end type element_links_t
 
+  !> A finite, non-periodic edge of the parameter domain of an element's
+  !> surface (kinetostatics_surface_joint): its event is placed `margin`
+  !> inside it (domain_edge_margin).
+  type :: domain_edge_t
+    integer :: scalar = 0                     ! the element's u or v
+    real(wp) :: bound = 0                     ! the edge value
+    real(wp) :: margin = 0                    ! the event's distance from it
+    logical :: upper = .false.                ! bound is the maximum (else the minimum)
+    logical :: along_u = .true.               ! an edge in u (else in v)
+  end type domain_edge_t
+
   !> record_only: only records read the element's outputs (a monitor of the
   !> closure, contact_closure_monitor), nothing in the mechanism's dynamics
   !> does; the position pass skips it and the mechanism evaluates it for a
@@ -75,6 +86,12 @@ module kinetostatics_state
     procedure :: chart_angle => element_chart_angle
     procedure :: chart_margin => element_chart_margin
     procedure :: rebase => element_rebase
+    !> queries of the mechanism's core (kinetostatics_mechanism): no element kind is named there
+    procedure :: mass_frame => element_mass_frame
+    procedure :: world_inertia => element_world_inertia
+    procedure :: domain_edges => element_domain_edges
+    procedure :: set_eager => element_set_eager
+    procedure :: singular_note => element_singular_note
   end type element_t
 
   type :: element_box_t
@@ -160,6 +177,59 @@ contains
     associate (unused => self, unused_s => scalars)
     end associate
   end subroutine element_rebase
+
+  !> The frame whose body the element's mass belongs to (default 0: the
+  !> element carries no mass; kinetostatics_mass).
+  pure integer function element_mass_frame(self) result(frame)
+    class(element_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    frame = 0
+  end function element_mass_frame
+
+  !> The mass m, the centre of mass s from the mass frame's origin and the
+  !> inertia tensor Theta_w about it, in world coordinates at the last
+  !> position (the mass matrix from the partial twists); zero without mass.
+  pure subroutine element_world_inertia(self, mass, s, inertia_w)
+    class(element_t), intent(inout) :: self
+    real(wp), intent(out) :: mass, s(3), inertia_w(3, 3)
+    associate (unused => self)
+    end associate
+    mass = 0
+    s = 0
+    inertia_w = 0
+  end subroutine element_world_inertia
+
+  !> The finite, non-periodic edges of the element's parameter domain, in
+  !> the order u_min, u_max, v_min, v_max (default: none).
+  pure subroutine element_domain_edges(self, edges)
+    class(element_t), intent(in) :: self
+    type(domain_edge_t), allocatable, intent(out) :: edges(:)
+    associate (unused => self)
+    end associate
+    allocate (edges(0))
+  end subroutine element_domain_edges
+
+  !> Every position pass of the element is followed by a velocity pass at
+  !> the same positions: an element that computes its geometry lazily, as
+  !> far as the position asks, computes all of it at once (the same numbers
+  !> either way; default: nothing to change).
+  pure subroutine element_set_eager(self)
+    class(element_t), intent(inout) :: self
+    associate (unused => self)
+    end associate
+  end subroutine element_set_eager
+
+  !> For a run that fails by its step count: a note when the element's
+  !> contact point lies near a singular point of its surface's
+  !> parametrisation, where the rates grow without bound (default: none).
+  function element_singular_note(self) result(text)
+    class(element_t), intent(in) :: self
+    character(len=:), allocatable :: text
+    associate (unused => self)
+    end associate
+    text = ''
+  end function element_singular_note
 
   !> Rotation by `angle` (rad) about the unit vector e (Rodrigues).
   pure function axis_rotation(e, angle) result(r)

@@ -42,9 +42,10 @@ module kinetostatics_surface_joint
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, prefix_status, STATUS_DOMAIN
   use base_vector, only: cross
+  use base_text, only: format_short
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame, darboux_axes
-  use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
+  use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t, domain_edge_t
   implicit none (type, external)
   private
   public :: surface_joint_t, new_surface_joint, domain_edge_margin
@@ -76,6 +77,9 @@ module kinetostatics_surface_joint
     procedure :: check_domain => sj_check_domain
     procedure :: local_geometry => sj_local_geometry
     procedure :: links => sj_links
+    procedure :: domain_edges => sj_domain_edges
+    procedure :: set_eager => sj_set_eager
+    procedure :: singular_note => sj_singular_note
   end type surface_joint_t
 
 contains
@@ -395,4 +399,50 @@ contains
     scalars(self%var_u)%force = scalars(self%var_u)%force + dot_product(self%gu, t) + dot_product(self%tu, f)
     scalars(self%var_v)%force = scalars(self%var_v)%force + dot_product(self%gv, t) + dot_product(self%tv, f)
   end subroutine sj_force
+
+  !> The finite, non-periodic edges of the surface's domain (u_min, u_max,
+  !> v_min, v_max as far as they exist), each with its event's margin.
+  pure subroutine sj_domain_edges(self, edges)
+    class(surface_joint_t), intent(in) :: self
+    type(domain_edge_t), allocatable, intent(out) :: edges(:)
+    real(wp) :: u_min, u_max, v_min, v_max
+    allocate (edges(0))
+    call self%surface%domain(u_min, u_max, v_min, v_max)
+    if (.not. self%surface%periodic_u()) then
+      if (u_min > -huge(u_min)) edges = [edges, &
+        domain_edge_t(self%var_u, u_min, domain_edge_margin(u_min, u_max), .false., .true.)]
+      if (u_max < huge(u_max)) edges = [edges, &
+        domain_edge_t(self%var_u, u_max, domain_edge_margin(u_min, u_max), .true., .true.)]
+    end if
+    if (.not. self%surface%periodic_v()) then
+      if (v_min > -huge(v_min)) edges = [edges, &
+        domain_edge_t(self%var_v, v_min, domain_edge_margin(v_min, v_max), .false., .false.)]
+      if (v_max < huge(v_max)) edges = [edges, &
+        domain_edge_t(self%var_v, v_max, domain_edge_margin(v_min, v_max), .true., .false.)]
+    end if
+  end subroutine sj_domain_edges
+
+  !> Eager geometry (module comment): the whole geometry at every position.
+  pure subroutine sj_set_eager(self)
+    class(surface_joint_t), intent(inout) :: self
+    self%lazy = .false.
+  end subroutine sj_set_eager
+
+  !> The contact point at the last position near a singular point of the
+  !> surface's parametrisation (an ellipsoid's pole, an apex: |r_u x r_v|
+  !> below 1e-2 (|r_u|^2 + |r_v|^2)): what to do about it (element_t).
+  function sj_singular_note(self) result(text)
+    class(surface_joint_t), intent(in) :: self
+    character(len=:), allocatable :: text
+    real(wp) :: ratio
+    text = ''
+    associate (p => self%point)
+      ratio = norm2(cross(p%ru, p%rv))/max(dot_product(p%ru, p%ru) + dot_product(p%rv, p%rv), tiny(1.0_wp))
+    end associate
+    if (.not. ratio < 1e-2_wp) return
+    text = 'the contact point of '''//self%name//''' is near a singular point of its surface''s '// &
+      'parametrisation at (u, v) = ('//format_short(self%u)//', '//format_short(self%v)//') (|r_u x r_v| / '// &
+      '(|r_u|^2 + |r_v|^2) = '//format_short(ratio)//'; an ellipsoid''s poles, an apex) on the '// &
+      self%surface%describe()//': orient the body or the shape so that the contact stays away from it'
+  end function sj_singular_note
 end module kinetostatics_surface_joint

@@ -4,7 +4,7 @@
 program test_ride_evaluation
   use base_kinds, only: wp
   use base_constants, only: standard_gravity
-  use base_vector, only: rot_z, rot_x
+  use base_vector, only: rot_z, rot_x, cross
   use design_ride_evaluation, only: felt_acceleration, tipping_lever_arm, ride_limit_t, limit_verdict_t, &
     new_ride_limit, evaluate_limit, limit_report_unit, series_extreme
   use testing, only: check, check_close, check_close_array, finish_tests
@@ -63,18 +63,12 @@ contains
         associate (f_r => -m*g, com => 0.1_wp*normal)
           ! reaction = -weight; its moment about D balances the weight's: M_r = -(com x m g)
           ! negative: the moment turns the body about -x (it would tip to the -y side)
-          call check_close(tipping_lever_arm(f_r, -cross3(com, m*g), long, normal), -0.1_wp*tan(tilt), 1e-14_wp, &
+          call check_close(tipping_lever_arm(f_r, -cross(com, m*g), long, normal), -0.1_wp*tan(tilt), 1e-14_wp, &
                            0.0_wp, 'static tilted cuboid: CoM height times tan(tilt)')
         end associate
       end associate
     end associate
   end subroutine check_lever_arm
-
-  pure function cross3(a, b) result(c)
-    real(wp), intent(in) :: a(3), b(3)
-    real(wp) :: c(3)
-    c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-  end function cross3
 
   subroutine check_limits()
     type(ride_limit_t) :: limit

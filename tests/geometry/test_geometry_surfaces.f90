@@ -1,6 +1,8 @@
 !> Elementary and placed surfaces: partial derivatives to third order against
 !> central differences of the next-lower order at scattered points, the
-!> order/zero-fill contract, domains, and constructor validation.
+!> order/zero-fill contract, domains, constructor validation, and the chart
+!> hooks (a surface without charts keeps its one; an ellipsoid's pole charts
+!> are the same surface turned, and chart_parameters inverts evaluate).
 program test_geometry_surfaces
   use base_kinds, only: wp
   use base_status, only: status_t, STATUS_INVALID_INPUT
@@ -63,6 +65,7 @@ program test_geometry_surfaces
   call check_order_contract()
   call check_shapes()
   call check_domains()
+  call check_charts()
   call check_invalid_input()
 
   call finish_tests('test_geometry_surfaces')
@@ -116,6 +119,46 @@ contains
 
   !> Order k fills r and the partials up to k and leaves the rest zero;
   !> an order outside 0..3 is an error.
+  !> The chart hooks (geometry_surface): the default has one chart and keeps
+  !> it; each of an ellipsoid's three charts is the ellipsoid turned by P
+  !> (its point r' at (u, v) is the ellipsoid's point P r', to rounding),
+  !> chart_parameters gives back (u, v) of a point, chart_toward picks the
+  !> axis along which the point lies least far out, and the margin is
+  !> cos v - cos 1.4 (zero at |v| = 1.4 rad).
+  subroutine check_charts()
+    class(surface_t), allocatable :: turned
+    type(surface_point_t) :: p, q
+    type(status_t) :: st
+    real(wp) :: rot(3, 3), u, v
+    integer :: k
+    call check(.not. plane%has_charts() .and. plane%chart_margin(1.5_wp) > 0 .and. &
+               plane%chart_toward([1.0_wp, 0.0_wp, 0.0_wp]) == 0, 'a plane has one chart, never left')
+    call plane%chart(2, turned, rot)
+    call check(same_type_as(turned, plane) .and. all(rot == reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])), &
+               'the default chart is the surface itself')
+    call plane%chart_parameters([1.0_wp, 2.0_wp, 3.0_wp], u, v, st)
+    call check(.not. st%ok(), 'a surface without charts refuses chart_parameters')
+    call check(ellipsoid%has_charts(), 'an ellipsoid has charts')
+    call check_close(ellipsoid%chart_margin(1.4_wp), 0.0_wp, 0.0_wp, 1e-15_wp, 'the chart edge at |v| = 1.4')
+    call check(ellipsoid%chart_margin(-1.3_wp) > 0 .and. ellipsoid%chart_margin(1.5_wp) < 0, &
+               'the margin is positive inside the chart, negative beyond')
+    call check(ellipsoid%chart_toward([0.1_wp, 1.9_wp, 0.3_wp]) == 1 .and. &
+               ellipsoid%chart_toward([2.9_wp, 0.1_wp, 0.2_wp]) == 2 .and. &
+               ellipsoid%chart_toward([0.3_wp, 0.5_wp, 1.4_wp]) == 1, 'chart_toward: the axis of least |r_i|/a_i')
+    do k = 1, 3
+      call ellipsoid%chart(k, turned, rot)
+      call turned%evaluate(0.7_wp, -0.4_wp, 0, p, st)
+      call turned%chart_parameters(p%r, u, v, st)
+      call check(st%ok(), 'chart_parameters of an ellipsoid')
+      call check_close(u, 0.7_wp, 0.0_wp, 1e-14_wp, 'chart_parameters gives back u')
+      call check_close(v, -0.4_wp, 0.0_wp, 1e-14_wp, 'chart_parameters gives back v')
+      call ellipsoid%chart_parameters(matmul(rot, p%r), u, v, st)
+      call ellipsoid%evaluate(u, v, 0, q, st)
+      call check_close_array(q%r, matmul(rot, p%r), 0.0_wp, 1e-14_wp, 'a chart''s point is the ellipsoid''s, turned')
+      call check_close(rot(k, 3), 1.0_wp, 0.0_wp, 0.0_wp, 'chart k has its poles on axis k')
+    end do
+  end subroutine check_charts
+
   subroutine check_order_contract()
     type(surface_point_t) :: p
     type(status_t) :: st

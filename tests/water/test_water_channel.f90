@@ -6,6 +6,7 @@
 !> the inverse A -> h.
 program test_water_channel
   use base_kinds, only: wp
+  use base_vector, only: cross
   use base_constants, only: pi
   use base_status, only: status_t
   use geometry_surface, only: surface_point_t
@@ -79,7 +80,7 @@ contains
       call check_close(speed_u, (speed_p - speed_m)/(2*h), 0.0_wp, 1e-8_wp, name//': d|c_u|/du against differences')
     end do
     call t%evaluate(1.0_wp, pi/2, 2, p, st)
-    call check(dot_product(cross3(p%ru, p%rv), [0.0_wp, 0.0_wp, 1.0_wp]) > 0, &
+    call check(dot_product(cross(p%ru, p%rv), [0.0_wp, 0.0_wp, 1.0_wp]) > 0, &
                name//': normal r_u x r_v points up (into the tube) at the bottom')
   end subroutine partials
 
@@ -107,18 +108,12 @@ contains
     x = x/norm2(x)
     y = [-x(2), x(1), 0.0_wp]/norm2(x(1:2))
     call tubes(4)%evaluate(u, pi/2, 0, p, st)
-    call check_close_array(p%r, [u, 1.5_wp*sin(0.4_wp*u), -0.1_wp*u] - 0.5_wp*cross3(x, y), 0.0_wp, 1e-14_wp, &
+    call check_close_array(p%r, [u, 1.5_wp*sin(0.4_wp*u), -0.1_wp*u] - 0.5_wp*cross(x, y), 0.0_wp, 1e-14_wp, &
                            'S-bend: bottom point')
     ! arc length in closed form: straight u, helix sqrt(rho^2 + p^2) u
     call check_close(tubes(1)%arc_length(u), u, 1e-15_wp, 0.0_wp, 'straight tube arc length')
     call check_close(tubes(3)%arc_length(u), sqrt(2.0_wp**2 + 0.5_wp**2)*u, 1e-15_wp, 0.0_wp, 'helix arc length')
   end subroutine closed_forms
-
-  pure function cross3(a, b) result(c)
-    real(wp), intent(in) :: a(3), b(3)
-    real(wp) :: c(3)
-    c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-  end function cross3
 
   subroutine curvature()
     real(wp) :: chi, chi_s, chi1, chi2, d1, d2, s1, s2, h
