@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Runs shipped inputs with two builds and compares their result files bit for
+# bit (h5diff): a refactor must leave every result as it was. Only provenance
+# may differ: the attributes git_commit, created_utc, compiler and
+# compiler_options and the cpu_time datasets.
+#
+#     bench/compare_results.sh BASE_BUILD NEW_BUILD [INPUT.nml ...]
+#
+# BASE_BUILD and NEW_BUILD are build folders holding slidesim (Release builds
+# of the two commits, e.g. a worktree of the base commit built into its own
+# folder). Without inputs: the default run (`default`) and every shipped
+# input that runs in seconds to a minute (the list below). An input is run
+# from the repository root, as the documentation does. Exit 0 when every
+# pair is the same (and both builds gave the same exit status), 1 otherwise.
+set -u
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+if [ $# -lt 2 ]; then
+  echo "usage: $0 BASE_BUILD NEW_BUILD [INPUT.nml ...]" >&2
+  exit 1
+fi
+base=$(cd "$1" && pwd)/slidesim
+new=$(cd "$2" && pwd)/slidesim
+shift 2
+for exe in "$base" "$new"; do
+  [ -x "$exe" ] || { echo "compare_results: $exe is not an executable" >&2; exit 1; }
+done
+if [ $# -gt 0 ]; then
+  inputs=("$@")
+else
+  inputs=(default inputs/contact/egg.nml inputs/contact/egg_long_axis_z.nml inputs/contact/paraboloids.nml
+          inputs/contact/tower5.nml inputs/ride/demo_slide.nml inputs/sled/bowl.nml inputs/sled/bowl_friction.nml
+          inputs/sled/demo_slide.nml inputs/sled/incline_coulomb.nml inputs/pendulum/simple.nml
+          inputs/pendulum/double.nml inputs/fourbar/crank_rocker.nml inputs/demo_slide/point_mass.nml
+          inputs/point_mass/apex_paraboloid.nml inputs/point_mass/ellipsoid.nml
+          inputs/point_mass/elliptic_cylinder.nml inputs/point_mass/elliptic_paraboloid.nml
+          inputs/point_mass/hyperbolic_paraboloid.nml inputs/point_mass/plane_coulomb.nml
+          inputs/water/demo_slide.nml inputs/design/identify_rider_demo.nml)
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failed=0
+for input in "${inputs[@]}"; do
+  tag=$(echo "$input" | tr '/.' '__')
+  args=()
+  [ "$input" = default ] || args=("$input")
+  (cd "$root" && timeout 1200 "$base" -o "$work/base_$tag.h5" "${args[@]}" >"$work/base_$tag.out" 2>&1)
+  rc_base=$?
+  (cd "$root" && timeout 1200 "$new" -o "$work/new_$tag.h5" "${args[@]}" >"$work/new_$tag.out" 2>&1)
+  rc_new=$?
+  if [ "$rc_base" != "$rc_new" ]; then
+    echo "DIFFERENT $input: exit $rc_base (base) and $rc_new (new)"
+    failed=1
+    continue
+  fi
+  if [ ! -f "$work/base_$tag.h5" ] || [ ! -f "$work/new_$tag.h5" ]; then
+    echo "DIFFERENT $input: no result file (exit $rc_base)"
+    failed=1
+    continue
+  fi
+  h5diff -r "$work/base_$tag.h5" "$work/new_$tag.h5" >"$work/diff_$tag.txt" 2>&1
+  # h5diff -r names each object it compares ("attribute: <name of </path>> ...",
+  # "dataset: </path> ..."), then "N differences found"; anything it cannot
+  # compare or finds in one file only is a difference too
+  unexpected=$(awk '
+    /^(attribute|dataset|group|datatype): / { object = $0; next }
+    /^[0-9]+ differences? found/ {
+      if ($1 > 0 && object !~ /<(git_commit|created_utc|compiler|compiler_options) of / && object !~ /cpu_time>/) print object
+      next
+    }
+    /Not comparable|exist only|not found|Some objects are not comparable/ { print }
+  ' "$work/diff_$tag.txt")
+  if [ -n "$unexpected" ]; then
+    echo "DIFFERENT $input (exit $rc_base):"
+    echo "$unexpected" | sed 's/^/  /'
+    failed=1
+  else
+    echo "same      $input (exit $rc_base)"
+  fi
+done
+exit $failed
