@@ -4,7 +4,7 @@
 !> written); 2 the run failed part way (the result file is kept, marked
 !> incomplete); 3 a file could not be read or written (standard output too:
 !> a summary cut short by a closed pipe, `slidesim | head`, is exit status 3,
-!> the result file complete and kept), or the result path names a device, a
+!> the result file complete and kept), or an output path names a device, a
 !> FIFO or a socket, which is never replaced (refused before any work; one
 !> that appears during the run leaves the results in the temporary file);
 !> 4 done, the results complete, but a ride exceeded a limit and the run
@@ -231,9 +231,10 @@ contains
     call write_standard_output('scenarios:')
     call print_scenarios()
     call write_standard_output('')
-    call write_standard_output('exit status: 0 done; 1 bad command line or input (nothing written);')
+    call write_standard_output('exit status: 0 done; 1 bad command line or input, or an output that would')
+    call write_standard_output('overwrite a file the run reads (nothing written);')
     call write_standard_output('2 the run failed part way (result file kept, marked incomplete);')
-    call write_standard_output('3 a file could not be read or written, or -o names a device, FIFO or socket')
+    call write_standard_output('3 a file could not be read or written, or an output names a device, FIFO or socket')
     call write_standard_output('(nothing kept, or the message says where the results are);')
     call write_standard_output('4 done, results complete, a limit exceeded (only with --fail-on-limit).')
   end subroutine print_help

@@ -47,8 +47,8 @@ module io_hdf5
   use base_version, only: slidesim_version, slidesim_compiler, slidesim_compiler_options
   use base_build_commit, only: slidesim_git_commit
   use io_provenance, only: utc_timestamp, host_name
-  use io_system, only: create_unique_file, remove_file, rename_file, system_error_text, process_id, &
-                       nonregular_kind
+  use io_system, only: remove_file, rename_file, system_error_text, nonregular_kind
+  use io_output_files, only: temporary_beside, text_output_t
   implicit none (type, external)
   private
   public :: result_file_t, result_layout_version, units_per_second, run_outcome
@@ -122,7 +122,7 @@ contains
     self%n_written = 0
     self%write_failed = .false.
     self%nonfinite = ''
-    call create_unique_file(self%path//'.'//format_pid(process_id()), '.tmp', self%temporary_path, error)
+    call temporary_beside(self%path, self%temporary_path, error)
     if (len(self%temporary_path) == 0) then
       call set_status(status, STATUS_IO, 'cannot create a file next to the result file "'//self%path// &
                       '": '//error//' (does its folder exist, and is it writable?)')
@@ -655,7 +655,9 @@ contains
     type(status_t), intent(inout) :: status
     integer :: hdferr, err
     logical :: renamed, complete
-    character(len=:), allocatable :: text, error, companion_temporary, what
+    character(len=:), allocatable :: text, error, what
+    type(text_output_t) :: companion
+    type(status_t) :: companion_status
 
     if (self%file_id < 0) return
     complete = complete_asked
@@ -692,11 +694,12 @@ contains
       return
     end if
     if (allocated(self%companion_path)) then
-      call write_temporary_text(self%companion_path, self%companion_text, companion_temporary, error)
-      if (len(error) > 0) then
+      call companion%create(self%companion_path, 'the XDMF view of the result file', companion_status)
+      call companion%write(self%companion_text)
+      if (companion_status%ok()) call companion%close(companion_status)
+      if (.not. companion_status%ok()) then
         call remove_file(self%temporary_path)
-        call set_status(status, STATUS_IO, 'cannot write "'//self%companion_path//'", the XDMF view of the '// &
-                        'result file: '//error//'; nothing is kept')
+        call set_status(status, STATUS_IO, companion_status%text()//'; the result file is not kept either')
         return
       end if
     end if
@@ -711,7 +714,8 @@ contains
     end if
     if (len(what) > 0) then
       text = 'the results are kept in "'//self%temporary_path//'"'
-      if (allocated(self%companion_path)) text = text//' and their XDMF view in "'//companion_temporary//'"'
+      if (allocated(self%companion_path)) text = text//' and their XDMF view in "'// &
+                                                 companion%temporary_name()//'"'
       call set_status(status, STATUS_IO, 'cannot put the result file in place: '//what//' (it appeared '// &
                       'during the run), which slidesim never replaces; '//text//' (rename them yourself)')
       return
@@ -719,20 +723,18 @@ contains
     call rename_file(self%temporary_path, self%path, renamed, error)
     if (.not. renamed) then
       call remove_file(self%temporary_path)
-      if (allocated(self%companion_path)) call remove_file(companion_temporary)
+      call companion%discard()
       complete = .false.
       call set_status(status, STATUS_IO, 'cannot rename "'//self%temporary_path//'" to "'//self%path//'": '// &
                       error//'; nothing is kept')
       return
     end if
     if (allocated(self%companion_path)) then
-      call rename_file(companion_temporary, self%companion_path, renamed, error)
-      if (.not. renamed) then
-        ! an old view would describe another file
-        call remove_file(companion_temporary)
-        call remove_file(self%companion_path)
-        call set_status(status, STATUS_IO, 'the results are in "'//self%path//'", but its XDMF view "'// &
-                        self%companion_path//'" could not be renamed from "'//companion_temporary//'": '//error)
+      call companion%place(companion_status)
+      if (.not. companion_status%ok()) then
+        ! an old view would describe another file (a device is never removed)
+        if (len(nonregular_kind(self%companion_path)) == 0) call remove_file(self%companion_path)
+        call set_status(status, STATUS_IO, 'the results are in "'//self%path//'", but '//companion_status%text())
       end if
     end if
   end subroutine result_file_finish
@@ -744,32 +746,6 @@ contains
     self%companion_path = path
     self%companion_text = text
   end subroutine result_file_add_companion
-
-  !> Writes `text` to a new temporary file next to `path`; `error` is '' or
-  !> why it failed (the temporary is then removed).
-  subroutine write_temporary_text(path, text, temporary, error)
-    character(len=*), intent(in) :: path, text
-    character(len=:), allocatable, intent(out) :: temporary, error
-    integer :: unit, ios, ignored
-    character(len=256) :: msg
-    call create_unique_file(path//'.'//format_pid(process_id()), '.tmp', temporary, error)
-    if (len(temporary) == 0) return
-    open (newunit=unit, file=temporary, status='replace', action='write', access='stream', form='unformatted', &
-          iostat=ios, iomsg=msg)
-    if (ios == 0) then
-      write (unit, iostat=ios, iomsg=msg) text
-      if (ios == 0) then
-        close (unit, iostat=ios, iomsg=msg)
-      else
-        close (unit, iostat=ignored)   ! (without iostat a failing close would stop the program)
-      end if
-    end if
-    if (ios /= 0) then
-      error = trim(msg)
-      if (len(error) == 0) error = 'write error'
-      call remove_file(temporary)
-    end if
-  end subroutine write_temporary_text
 
   !> Closes what can be closed of a file that will not be kept and deletes
   !> it. A file whose flush failed cannot be closed a second time (HDF5 1.10
@@ -801,13 +777,6 @@ contains
     if (status%code == STATUS_INVALID_INPUT) status%code = STATUS_DOMAIN
   end function run_outcome
 
-  pure function format_pid(pid) result(text)
-    integer, intent(in) :: pid
-    character(len=:), allocatable :: text
-    character(len=12) :: buffer
-    write (buffer, '(i0)') pid
-    text = trim(buffer)
-  end function format_pid
 
   !> The memory and file type of our strings: variable length, UTF-8.
   subroutine utf8_string_type(type_id, hdferr)

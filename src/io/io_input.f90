@@ -20,6 +20,7 @@ module io_input
   use io_namelist, only: nml_group_t, nml_item_t, nml_value_t, parse_namelist, parse_assignment, &
     read_real_token, read_integer_token, read_logical_token, shown_value, VALUE_TEXT, NUMBER_OK
   use io_builtin_inputs, only: builtin_input, builtin_input_names
+  use io_output_files, only: note_input_file
   implicit none (type, external)
   private
   public :: input_text_t, load_input_file, input_from_text, stdin_name, read_text_file
@@ -114,6 +115,8 @@ contains
 
   !> The whole text of a file, read sequentially (pipes and /dev/stdin work:
   !> nothing is rewound or sized); `what` names it in messages ('input file').
+  !> Noted as a file the run reads: no output may overwrite it, and one
+  !> that an output was claimed for is refused (io_output_files).
   subroutine read_text_file(path, what, text, status)
     character(len=*), intent(in) :: path, what
     character(len=:), allocatable, intent(out) :: text
@@ -133,6 +136,8 @@ contains
       call set_status(status, STATUS_IO, what//' "'//path//'" is a folder, not a file')
       return
     end if
+    call note_input_file(path, what, status)
+    if (.not. status%ok()) return
     open (newunit=unit, file=path, status='old', action='read', form='formatted', access='sequential', &
           iostat=ios, iomsg=msg)
     if (ios /= 0) then

@@ -10,8 +10,9 @@ module io_summary
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use base_kinds, only: wp
   use base_text, only: format_real, format_integer
-  use base_status, only: status_t, set_status, STATUS_IO
+  use base_status, only: status_t
   use io_system, only: write_standard_output
+  use io_output_files, only: text_output_t
   implicit none (type, external)
   private
   public :: summary_t, degrees, standard_g, engineering
@@ -207,27 +208,30 @@ contains
     end do
   end subroutine summary_print
 
-  !> Writes the summary as JSON to `path` (STATUS_IO if it cannot).
+  !> Writes the summary as JSON to `path` as every output file is written
+  !> (io_output_files: a temporary file renamed when complete; STATUS_IO,
+  !> naming the file, if it cannot be written).
   subroutine summary_write_json(self, path, complete, message, result_file, status)
     class(summary_t), intent(in) :: self
     character(len=*), intent(in) :: path, message, result_file
     logical, intent(in) :: complete
     type(status_t), intent(inout) :: status
-    integer :: out, ios, k, i, row
+    type(text_output_t) :: out
+    type(status_t) :: written
+    integer :: k, i, row
     character(len=:), allocatable :: units_map, sep
-    character(len=256) :: msg
 
-    open (newunit=out, file=path, status='replace', action='write', iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      call set_status(status, STATUS_IO, 'cannot write the summary "'//path//'": '//trim(msg))
+    call out%create(path, 'the summary JSON', written)
+    if (.not. written%ok()) then
+      status = written
       return
     end if
-    write (out, '(a)') '{'
-    write (out, '(a)') '  "scenario": '//quoted(self%scenario)//','
-    write (out, '(a)') '  "status": '//quoted(trim(merge('complete  ', 'incomplete', complete)))//','
-    write (out, '(a)') '  "status_message": '//quoted(message)//','
-    write (out, '(a)') '  "result_file": '//quoted(result_file)//','
-    write (out, '(a)') '  "values": {'
+    call out%write_line('{')
+    call out%write_line('  "scenario": '//quoted(self%scenario)//',')
+    call out%write_line('  "status": '//quoted(trim(merge('complete  ', 'incomplete', complete)))//',')
+    call out%write_line('  "status_message": '//quoted(message)//',')
+    call out%write_line('  "result_file": '//quoted(result_file)//',')
+    call out%write_line('  "values": {')
     units_map = ''
     sep = ''
     do k = 1, self%n
@@ -235,33 +239,33 @@ contains
         select case (e%kind)
         case (KIND_NUMBERS)
           if (e%as_range) then
-            write (out, '(a)') sep//'    '//quoted(e%key//'_min')//': '//number(e%values(1))//','
-            write (out, '(a)', advance='no') '    '//quoted(e%key//'_max')//': '//number(e%values(2))
+            call out%write_line(sep//'    '//quoted(e%key//'_min')//': '//number(e%values(1))//',')
+            call out%write('    '//quoted(e%key//'_max')//': '//number(e%values(2)))
             call append_unit(units_map, e%key//'_min', e%units)
             call append_unit(units_map, e%key//'_max', e%units)
           else
             if (e%integer_valued) then
-              write (out, '(a)', advance='no') sep//'    '//quoted(e%key)//': '//format_integer(nint(e%values(1)))
+              call out%write(sep//'    '//quoted(e%key)//': '//format_integer(nint(e%values(1))))
             else
-              write (out, '(a)', advance='no') sep//'    '//quoted(e%key)//': '//numbers(e%values, size(e%values) > 1)
+              call out%write(sep//'    '//quoted(e%key)//': '//numbers(e%values, size(e%values) > 1))
             end if
             call append_unit(units_map, e%key, e%units)
           end if
           sep = ','//new_line('a')
         case (KIND_TEXT)
-          write (out, '(a)', advance='no') sep//'    '//quoted(e%key)//': '//quoted(e%text)
+          call out%write(sep//'    '//quoted(e%key)//': '//quoted(e%text))
           sep = ','//new_line('a')
         case (KIND_TABLE)
-          write (out, '(a)') sep//'    '//quoted(e%key)//': ['
+          call out%write_line(sep//'    '//quoted(e%key)//': [')
           do row = 1, size(e%table, 2)
-            write (out, '(a)', advance='no') '      {'
+            call out%write('      {')
             do i = 1, size(e%columns)
-              write (out, '(a)', advance='no') quoted(trim(e%columns(i)))//': '//number(e%table(i, row))// &
-                merge(', ', '  ', i < size(e%columns))
+              call out%write(quoted(trim(e%columns(i)))//': '//number(e%table(i, row))// &
+                merge(', ', '  ', i < size(e%columns)))
             end do
-            write (out, '(a)') '}'//merge(',', ' ', row < size(e%table, 2))
+            call out%write_line('}'//merge(',', ' ', row < size(e%table, 2)))
           end do
-          write (out, '(a)', advance='no') '    ]'
+          call out%write('    ]')
           do i = 1, size(e%columns)
             call append_unit(units_map, e%key//'.'//trim(e%columns(i)), trim(e%column_units(i)))
           end do
@@ -269,13 +273,13 @@ contains
         end select
       end associate
     end do
-    write (out, '(a)') new_line('a')//'  },'
-    write (out, '(a)') '  "units": {'
-    if (units_map /= '') write (out, '(a)') units_map
-    write (out, '(a)') '  }'
-    write (out, '(a)') '}'
-    close (out, iostat=ios)
-    if (ios /= 0) call set_status(status, STATUS_IO, 'cannot write the summary "'//path//'"')
+    call out%write_line(new_line('a')//'  },')
+    call out%write_line('  "units": {')
+    if (units_map /= '') call out%write_line(units_map)
+    call out%write_line('  }')
+    call out%write_line('}')
+    call out%finish(written)
+    if (.not. written%ok()) status = written
   end subroutine summary_write_json
 
   !> x with 5 significant digits for reading (18.312, 0.57366, 7.5185),

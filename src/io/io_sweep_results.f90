@@ -5,13 +5,13 @@
 module io_sweep_results
   use base_kinds, only: wp
   use base_text, only: format_integer, format_real
-  use base_status, only: status_t, set_status, STATUS_IO
+  use base_status, only: status_t
   use design_ride_evaluation, only: limit_report_unit
   use design_sweep, only: sweep_description_t, sweep_result_t, water_groups, N_SWEPT, swept_names, swept_units, &
     swept_descriptions, V_SEX, N_FIGURES, figure_names, figure_units, figure_descriptions, ride_status_names, &
     V_FLOW_RATE, V_F1, V_F2, V_F3
   use io_hdf5, only: result_file_t
-  use io_system, only: rename_file, create_unique_file, remove_file
+  use io_output_files, only: text_output_t
   implicit none (type, external)
   private
   public :: write_sweep_results, write_sweep_csv, limit_column
@@ -118,30 +118,20 @@ contains
 
   !> One row per ride: number, status, the swept values, the water, every
   !> figure, each limit's verdict, worst and excess, the CPU time and the
-  !> message (quoted). Written to a temporary name and renamed.
+  !> message (quoted). Written as every output file is (io_output_files: a
+  !> temporary file renamed when complete; a failed write is STATUS_IO).
   subroutine write_sweep_csv(path, sweep, result, status)
     character(len=*), intent(in) :: path
     type(sweep_description_t), intent(in) :: sweep
     type(sweep_result_t), intent(in) :: result
     type(status_t), intent(inout) :: status
-    integer :: unit, ios, i, k
-    character(len=:), allocatable :: line, temporary, error
-    character(len=256) :: message
-    logical :: renamed
+    type(text_output_t) :: csv
+    integer :: i, k
+    character(len=:), allocatable :: line
 
     if (.not. status%ok()) return
-    ! a temporary file of its own beside the final one (as the result file)
-    call create_unique_file(path, '.tmp', temporary, error)
-    if (len(temporary) == 0) then
-      call set_status(status, STATUS_IO, 'cannot write the CSV summary "'//path//'": '//error)
-      return
-    end if
-    open (newunit=unit, file=temporary, status='replace', action='write', iostat=ios, iomsg=message)
-    if (ios /= 0) then
-      call remove_file(temporary)
-      call set_status(status, STATUS_IO, 'cannot write the CSV summary "'//path//'": '//trim(message))
-      return
-    end if
+    call csv%create(path, 'the CSV summary', status)
+    if (.not. status%ok()) return
     line = 'ride,status'
     do k = 1, N_SWEPT
       line = line//','//trim(swept_names(k))
@@ -156,9 +146,8 @@ contains
       end associate
     end do
     line = line//',wall_time,message'
-    write (unit, '(a)', iostat=ios, iomsg=message) line
+    call csv%write_line(line)
     do i = 1, result%n
-      if (ios /= 0) exit
       line = format_integer(i)//','//trim(ride_status_names(result%status(i)))
       do k = 1, N_SWEPT
         if (k == V_SEX) then
@@ -180,23 +169,9 @@ contains
         line = line//','//cell(result%worst(k, i))//','//cell(result%excess(k, i))
       end do
       line = line//','//format_real(result%seconds(i))//',"'//quoted(trim(result%message(i)))//'"'
-      write (unit, '(a)', iostat=ios, iomsg=message) line
+      call csv%write_line(line)
     end do
-    if (ios == 0) then
-      close (unit, iostat=ios, iomsg=message)
-    else
-      close (unit, status='delete')
-    end if
-    if (ios /= 0) then
-      call remove_file(temporary)
-      call set_status(status, STATUS_IO, 'cannot write the CSV summary "'//path//'": '//trim(message))
-      return
-    end if
-    call rename_file(temporary, path, renamed, error)
-    if (.not. renamed) then
-      call remove_file(temporary)
-      call set_status(status, STATUS_IO, 'cannot write the CSV summary "'//path//'": '//error)
-    end if
+    call csv%finish(status)
 
   contains
 

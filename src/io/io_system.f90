@@ -1,7 +1,9 @@
 !> The few operating-system services the file boundary needs, through the C
 !> library (POSIX): a new file with a unique name (mkstemps), removing and
-!> renaming files, the text of the last system error, whether two paths name
-!> the same file (realpath), what kind of file a path names when it is not a
+!> renaming files, writing a file through its descriptor with every failure
+!> reported (a full disk), the text of the last system error, the path a
+!> path resolves to (realpath), which file a path names (device and inode),
+!> what kind of file a path names when it is not a
 !> regular one (statx: a device, a FIFO, a socket), ignoring SIGXFSZ so that a write beyond the
 !> file-size limit fails with an error we report instead of killing us, and
 !> standard output written so that a lost line is known (a closed pipe, a
@@ -12,23 +14,38 @@ module io_system
                                          c_loc, c_int16_t, c_int32_t, c_int64_t
   implicit none (type, external)
   private
-  public :: create_unique_file, remove_file, rename_file, system_error_text, same_file, &
+  public :: create_unique_file, open_unique_file, write_descriptor, close_descriptor, remove_file, rename_file, &
+            system_error_text, resolved_path, file_identity_t, file_identity, &
             ignore_file_size_signal, process_id, nonregular_kind
   public :: guard_standard_streams, write_standard_output, standard_output_lost, standard_input_closed
 
   integer(c_int), parameter :: sigxfsz = 25, sigpipe = 13   !< Linux (x86-64, arm64)
   integer(c_int), parameter :: eintr = 4
-  integer(c_int), parameter :: at_fdcwd = -100, statx_type = 1   !< Linux: the working folder; ask for the type
+  integer(c_int), parameter :: at_fdcwd = -100   !< Linux: the working folder
+  integer(c_int), parameter :: statx_type = 1, statx_ino = 256   !< ask for the type; the inode
 
-  !> Linux's struct statx up to stx_mode, padded to its 256 bytes. Unlike
-  !> struct stat its layout is the same on every architecture.
+  !> Linux's struct statx up to stx_dev_minor, padded to its 256 bytes.
+  !> Unlike struct stat its layout is the same on every architecture.
   type, bind(C) :: statx_t
     integer(c_int32_t) :: mask = 0, block_size = 0
     integer(c_int64_t) :: attributes = 0
     integer(c_int32_t) :: links = 0, uid = 0, gid = 0
     integer(c_int16_t) :: mode = 0, spare = 0
-    integer(c_int64_t) :: rest(28) = 0
+    integer(c_int64_t) :: inode = 0, size = 0, blocks = 0, attributes_mask = 0
+    integer(c_int64_t) :: times(8) = 0                     ! atime, btime, ctime, mtime: 16 bytes each
+    integer(c_int32_t) :: rdev_major = 0, rdev_minor = 0, dev_major = 0, dev_minor = 0
+    integer(c_int64_t) :: rest(14) = 0
   end type statx_t
+
+  !> Which file a path names (links followed): its device and inode. Two
+  !> paths, hard links or symbolic links to one file have the same identity.
+  type :: file_identity_t
+    logical :: exists = .false.
+    integer(c_int64_t) :: inode = 0
+    integer(c_int32_t) :: dev_major = 0, dev_minor = 0
+  contains
+    procedure :: same => identity_same
+  end type file_identity_t
 
   !> What became of standard output: a line that could not be written (or the
   !> stream closed at the start) and why. Process state, not simulation state:
@@ -56,6 +73,11 @@ module io_system
       integer(c_int), value :: fd, mode
       integer(c_int) :: rc
     end function c_fchmod
+    function c_fsync(fd) bind(C, name='fsync') result(rc)
+      import :: c_int
+      integer(c_int), value :: fd
+      integer(c_int) :: rc
+    end function c_fsync
     function c_close(fd) bind(C, name='close') result(rc)
       import :: c_int
       integer(c_int), value :: fd
@@ -130,9 +152,21 @@ contains
   subroutine create_unique_file(prefix, suffix, path, error)
     character(len=*), intent(in) :: prefix, suffix
     character(len=:), allocatable, intent(out) :: path, error
+    integer(c_int) :: fd, rc
+    call open_unique_file(prefix, suffix, path, fd, error)
+    if (fd >= 0) rc = c_close(fd)
+  end subroutine create_unique_file
+
+  !> As create_unique_file, and the file stays open for writing: `fd` is its
+  !> descriptor (-1 if it could not be created), for write_descriptor and
+  !> close_descriptor.
+  subroutine open_unique_file(prefix, suffix, path, fd, error)
+    character(len=*), intent(in) :: prefix, suffix
+    character(len=:), allocatable, intent(out) :: path, error
+    integer(c_int), intent(out) :: fd
     character(kind=c_char) :: template(len(prefix) + len(suffix) + 8)   ! with .XXXXXX and the NUL
     character(len=:), allocatable :: name
-    integer(c_int) :: fd, rc, mask
+    integer(c_int) :: rc, mask
     integer :: i
     name = prefix//'.XXXXXX'//suffix
     do i = 1, len(name)
@@ -149,12 +183,49 @@ contains
     mask = c_umask(0_c_int)
     rc = c_umask(mask)
     rc = c_fchmod(fd, iand(int(o'666', c_int), not(mask)))
-    rc = c_close(fd)
     path = name
     do i = 1, len(name)
       path(i:i) = template(i)
     end do
-  end subroutine create_unique_file
+  end subroutine open_unique_file
+
+  !> Writes all of `text` to the open descriptor `fd`; `error` is '' or why
+  !> not (a full disk: "No space left on device").
+  subroutine write_descriptor(fd, text, error)
+    integer(c_int), intent(in) :: fd
+    character(len=*), intent(in) :: text
+    character(len=:), allocatable, intent(out) :: error
+    character(kind=c_char), allocatable, target :: buffer(:)
+    integer(c_size_t) :: done, written
+    integer(c_int), pointer :: errno
+    error = ''
+    if (len(text) == 0) return
+    allocate (buffer(len(text)))
+    buffer = transfer(text, buffer)
+    call c_f_pointer(c_errno_location(), errno)
+    done = 0
+    do while (done < size(buffer, kind=c_size_t))
+      written = c_write(fd, c_loc(buffer(done + 1)), size(buffer, kind=c_size_t) - done)
+      if (written < 0) then
+        if (errno == eintr) cycle
+        error = system_error_text()
+        if (len(error) == 0) error = 'write error'
+        return
+      end if
+      done = done + written
+    end do
+  end subroutine write_descriptor
+
+  !> Puts what was written on the disk (fsync: a file system that reserves
+  !> space late reports a full disk here) and closes `fd`; `error` is '' or
+  !> why either failed. The descriptor is closed in any case.
+  subroutine close_descriptor(fd, error)
+    integer(c_int), intent(in) :: fd
+    character(len=:), allocatable, intent(out) :: error
+    error = ''
+    if (c_fsync(fd) /= 0) error = system_error_text()
+    if (c_close(fd) /= 0 .and. len(error) == 0) error = system_error_text()
+  end subroutine close_descriptor
 
   !> Removes a file; no error if it is not there.
   subroutine remove_file(path)
@@ -181,15 +252,6 @@ contains
     text = ''
     if (errno /= 0) text = c_text(c_strerror(errno))
   end function system_error_text
-
-  !> Do both paths name one existing file (after links and '..')?
-  logical function same_file(a, b)
-    character(len=*), intent(in) :: a, b
-    character(len=:), allocatable :: real_a, real_b
-    real_a = resolved(a)
-    real_b = resolved(b)
-    same_file = len(real_a) > 0 .and. real_a == real_b
-  end function same_file
 
   !> What `path` names if it exists and is not a regular file (links
   !> followed): 'a folder', 'a character device', 'a block device', 'a FIFO
@@ -222,6 +284,48 @@ contains
       what = 'not a regular file'
     end select
   end function nonregular_kind
+
+  !> The identity (device and inode) of the file `path` names, links
+  !> followed; `exists` false if there is none (or it cannot be examined).
+  function file_identity(path) result(identity)
+    character(len=*), intent(in) :: path
+    type(file_identity_t) :: identity
+    type(statx_t) :: info
+    if (c_statx(at_fdcwd, path//c_null_char, 0_c_int, ior(statx_type, statx_ino), info) /= 0) return
+    if (iand(info%mask, statx_ino) == 0) return
+    identity = file_identity_t(exists=.true., inode=info%inode, dev_major=info%dev_major, &
+                               dev_minor=info%dev_minor)
+  end function file_identity
+
+  !> Are both existing files one file?
+  elemental logical function identity_same(self, other)
+    class(file_identity_t), intent(in) :: self
+    type(file_identity_t), intent(in) :: other
+    identity_same = self%exists .and. other%exists .and. self%inode == other%inode .and. &
+                    self%dev_major == other%dev_major .and. self%dev_minor == other%dev_minor
+  end function identity_same
+
+  !> The absolute path `path` names after links and '..' (realpath); for a
+  !> name not (yet) there, its folder's resolved path and the name. '' if
+  !> the folder cannot be resolved either.
+  function resolved_path(path) result(text)
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable :: text, folder
+    integer :: slash
+    text = resolved(path)
+    if (len(text) > 0) return
+    slash = index(path, '/', back=.true.)
+    if (slash == 0) then
+      folder = resolved('.')
+    else if (slash == 1) then
+      folder = '/'
+    else
+      folder = resolved(path(:slash - 1))
+    end if
+    if (len(folder) == 0) return
+    if (folder(len(folder):) /= '/') folder = folder//'/'
+    text = folder//path(slash + 1:)
+  end function resolved_path
 
   function resolved(path) result(text)
     character(len=*), intent(in) :: path

@@ -1,12 +1,11 @@
 !> The list of runnable scenarios, the built-in default input, and the one entry
 !> point that reads an input, checks &run and runs the scenario it names.
 module scenarios_registry
-  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_IO
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_version, only: slidesim_version
-  use base_text, only: format_integer
   use io_input, only: input_text_t, load_input_file, group_present, where_given
-  use io_system, only: create_unique_file, remove_file, same_file, process_id, write_standard_output, &
-                       nonregular_kind
+  use io_system, only: write_standard_output
+  use io_output_files, only: start_run_files, claim_output
   use io_xdmf, only: xdmf_path
   use io_builtin_inputs, only: builtin_input
   use io_run_config, only: run_config_t, read_run_config
@@ -46,59 +45,32 @@ module scenarios_registry
 
 contains
 
-  !> The result file must be creatable before any work starts: its folder
-  !> exists and is writable (a file with a unique name is made there and
-  !> removed again: exit 3 if not), the name is not a folder (3), neither it
-  !> nor its XDMF view (.xmf) names a device, a FIFO or a socket (3: the
-  !> finished file is renamed onto the path, which would replace it; -o
-  !> /dev/null would destroy the device as root), and it is not the input
-  !> file itself (1). `from_command_line`: the path came from -o.
-  subroutine check_output_path(input, path, from_command_line, status)
+  !> The run's outputs are claimed before any work starts (io_output_files):
+  !> the result file, its XDMF view (.xmf) and the summary JSON. Each must be
+  !> creatable (its folder exists and is writable: exit 3 if not), not a
+  !> folder, device, FIFO or socket (3: the finished file is renamed onto the
+  !> path, which would replace it; -o /dev/null would destroy the device as
+  !> root), not a file the run reads (1) and not another output (1).
+  !> `from_command_line`: the result path came from -o.
+  subroutine claim_outputs(input, run, from_command_line, status)
     type(input_text_t), intent(in) :: input
-    character(len=*), intent(in) :: path
+    type(run_config_t), intent(in) :: run
     logical, intent(in) :: from_command_line
     type(status_t), intent(inout) :: status
-    character(len=:), allocatable :: where, probe, error, what
-    logical :: is_folder
-    integer :: k
+    character(len=:), allocatable :: where, path
 
+    path = trim(run%output)
     if (from_command_line) then
-      where = '-o '//trim(path)
+      where = '-o '//path
     else
-      where = where_given(input, 'run', 'output')//': &run: output = '''//trim(path)//''''
+      where = where_given(input, 'run', 'output')//': &run: output = '''//path//''''
     end if
-    if (same_file(trim(path), input%name)) then
-      call set_status(status, STATUS_INVALID_INPUT, where//': the result file would overwrite the input file; '// &
-                      'name another file')
-      return
-    end if
-    inquire (file=trim(path)//'/.', exist=is_folder)
-    if (is_folder) then
-      call set_status(status, STATUS_IO, where//': cannot write the result file: it is a folder; name a file')
-      return
-    end if
-    do k = 1, 2
-      if (k == 1) then
-        what = nonregular_kind(trim(path))
-        if (len(what) > 0) what = 'it is '//what
-      else
-        what = nonregular_kind(xdmf_path(trim(path)))
-        if (len(what) > 0) what = '"'//xdmf_path(trim(path))//'", where its XDMF view goes, is '//what
-      end if
-      if (len(what) == 0) cycle
-      call set_status(status, STATUS_IO, where//': cannot write the result file: '//what// &
-                      ', which slidesim never replaces; name a regular file or a new one (--check '// &
-                      'reads and checks the input without writing results)')
-      return
-    end do
-    call create_unique_file(trim(path)//'.'//format_integer(process_id()), '.tmp', probe, error)
-    if (len(probe) == 0) then
-      call set_status(status, STATUS_IO, where//': cannot write the result file: '//error// &
-                      ' (does its folder exist, and is it writable?)')
-      return
-    end if
-    call remove_file(probe)
-  end subroutine check_output_path
+    call claim_output(path, where, 'the result file', status)
+    if (status%ok()) call claim_output(xdmf_path(path), where, 'the result file', status, part='XDMF view')
+    if (.not. allocated(run%summary_json)) return
+    if (status%ok() .and. len(run%summary_json) > 0) &
+      call claim_output(run%summary_json, '--summary-json '//run%summary_json, 'the summary JSON', status)
+  end subroutine claim_outputs
 
   subroutine print_scenarios()
     integer :: i
@@ -118,6 +90,7 @@ contains
     character(len=*), intent(in), optional :: overrides(:)
     type(input_text_t) :: input
     integer :: i
+    call start_run_files()
     call load_input_file(path, input, status)
     if (present(overrides)) then
       do i = 1, size(overrides)
@@ -211,7 +184,7 @@ contains
       cli_output = len_trim(cli%output) > 0
       if (cli_output) run%output = cli%output
     end if
-    call check_output_path(input, run%output, cli_output, status)
+    call claim_outputs(input, run, cli_output, status)
     if (.not. status%ok()) return
     select case (trim(run%scenario))
     case ('point_mass')

@@ -20,7 +20,9 @@ module scenarios_sweep
     ride_description, N_SWEPT, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, V_HEADING, V_SPEED, V_FLOW_RATE, &
     V_F1, V_F2, V_F3, F_FELT_MAGNITUDE_MAX, RIDE_COMPLETE, RIDE_STOPPED, RIDE_FAILED, ride_status_names
   use design_sweep_ranks, only: start_ranks, gather_rides, finish_ranks
-  use io_input, only: input_text_t, check_known_groups, format_real, group_reader_t, open_group, in_range
+  use io_input, only: input_text_t, check_known_groups, format_real, group_reader_t, open_group, in_range, &
+                      where_given
+  use io_output_files, only: claim_output
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
   use io_rider_config, only: rider_config_t, read_rider_config, rider_names
@@ -59,8 +61,8 @@ contains
     real(wp) :: base(N_SWEPT), wall
     integer :: rank, ranks, threads, failed, k
     integer(int64) :: clock0, clock1, rate
-    logical :: started, complete, fail_on_limit
-    character(len=:), allocatable :: csv_path, message
+    logical :: started, complete, fail_on_limit, kept
+    character(len=:), allocatable :: csv_path, message, where
 
     ! ---- everything checked before any work
     call check_known_groups(input, [ride_groups, 'sweep         '], status)
@@ -108,8 +110,14 @@ contains
     call check_waters(input, sweep, status)
     if (.not. status%ok()) return
     csv_path = config%csv_output
-    if (len(csv_path) == 0) csv_path = csv_name(trim(run%output))
-    if (run%check_only) return
+    if (len(csv_path) == 0) then
+      csv_path = csv_name(trim(run%output))
+      where = input%name//': &sweep: csv_output not given: "'//csv_path//'", the result file''s name with .csv'
+    else
+      where = where_given(input, 'sweep', 'csv_output')//': &sweep: csv_output = '''//csv_path//''''
+    end if
+    call claim_output(csv_path, where, 'the CSV summary', status)
+    if (.not. status%ok() .or. run%check_only) return
 
     ! ---- the rides: this rank's share in threads, then rank 0 gathers
     call start_ranks(rank, ranks, started)
@@ -145,9 +153,17 @@ contains
     if (write_status%ok()) call write_xdmf(file, write_status)
     complete = write_status%ok() .and. run_status%ok()
     call file%finish(complete, message, write_status)
-    if (write_status%ok()) call write_sweep_csv(csv_path, sweep, result, write_status)
+    kept = write_status%ok()
+    if (kept) then
+      call write_sweep_csv(csv_path, sweep, result, write_status)
+      if (.not. write_status%ok()) then
+        write_status%message = write_status%text()//' (the result file "'//file%final_path()//'" is '// &
+                               trim(merge('complete           ', 'kept, incomplete   ', complete))//')'
+        csv_path = 'none: "'//csv_path//'" could not be written'
+      end if
+    end if
     call print_summary(sweep, result, wall, ranks, max(1, threads), file%final_path(), csv_path, run, &
-                       complete .and. write_status%ok(), message, write_status)
+                       complete .and. kept, message, write_status)
     if (.not. write_status%ok()) then
       status = write_status
     else if (.not. run_status%ok()) then
