@@ -20,6 +20,13 @@ that pass also runs fully, with a short duration. Every run must:
 The geometry files of the contact inputs (*.geo) are mutated in place and
 run through the input that names them.
 
+The output mutants (issue 27) then name as an output a file the run reads
+(the input itself, every file it names, the input renamed like the result's
+XDMF view): exit 1, the file unchanged; and a private full device node
+(mknod c 1 7 in the work folder, never the machine's /dev/full) as every
+writer's file (-o, --summary-json, a sweep's csv_output): exit 3 before any
+work, the node still a device, no result file.
+
 usage: mutants.py SLIDESIM ROOT [--count N] [--seed S] [--full-share F]
 """
 import argparse
@@ -27,6 +34,7 @@ import os
 import random
 import re
 import shutil
+import stat
 import subprocess
 import sys
 import tempfile
@@ -165,6 +173,63 @@ def variable_names(*texts):
     return {m.group(1).lower() for text in texts for m in NAME.finditer(text.lower())}
 
 
+# a file an input names: variable = 'path' outside comments (not built-in inputs)
+FILE_NAMED = re.compile(r"\b(\w*file)\s*=\s*'([^']+)'")
+
+
+def output_mutants(slidesim, tree, work, failures, counts):
+    """Outputs that would overwrite a file the run reads (exit 1, the file
+    unchanged) and a private full device as every writer's file (exit 3, the
+    node left a device, no result file)."""
+    device = os.path.join(work, 'full')
+    os.mknod(device, 0o666 | stat.S_IFCHR, os.makedev(1, 7))   # a private /dev/full
+    result = os.path.join(work, 'output_mutant.h5')
+    cases = []   # (label, folder, arguments, the file that must stay as it is, exit status)
+    for path in sorted(os.path.join(d, f) for d, _, fs in os.walk(tree) for f in fs if f.endswith('.nml')):
+        folder, name = os.path.dirname(path), os.path.basename(path)
+        label = os.path.relpath(path, tree)
+        with open(path, encoding='utf-8') as f:
+            text = f.read()
+        named = {m.group(2) for line in text.split('\n') for m in FILE_NAMED.finditer(line.split('!')[0])
+                 if not m.group(2).startswith('builtin:')}
+        cases.append((f'{label}: -o the input', folder, ['--check', '-o', name, name], path, 1))
+        for other in sorted(named):
+            cases.append((f'{label}: -o {other}', folder, ['--check', '-o', other, name],
+                          os.path.join(folder, other), 1))
+        view = os.path.splitext(name)[0] + '.xmf'
+        shutil.copy(path, os.path.join(folder, view))
+        cases.append((f'{label} as {view}: -o its .h5', folder, ['--check', '-o', view[:-4] + '.h5', view],
+                      os.path.join(folder, view), 1))
+        cases.append((f'{label}: -o a full device', folder, ['-o', device, name], device, 3))
+        cases.append((f'{label}: --summary-json a full device', folder,
+                      ['--summary-json', device, '-o', result, name], device, 3))
+        if "scenario = 'sweep'" in text:
+            cases.append((f'{label}: csv_output a full device', folder,
+                          ['--set', f"sweep%csv_output='{device}'", '-o', result, name], device, 3))
+    for label, folder, arguments, kept, want in cases:
+        before = open(kept, 'rb').read() if want == 1 else None
+        try:
+            p = subprocess.run([slidesim, '-q', *arguments], cwd=folder, capture_output=True, timeout=60)
+        except subprocess.TimeoutExpired:
+            failures.append(f'output mutant {label}: no end within 60 s')
+            continue
+        err = p.stderr.decode('utf-8', 'replace')
+        counts[('output', p.returncode)] = counts.get(('output', p.returncode), 0) + 1
+        if p.returncode != want:
+            failures.append(f'output mutant {label}: exit status {p.returncode}, expected {want}: {err[:300]}')
+        if want == 1 and open(kept, 'rb').read() != before:
+            failures.append(f'output mutant {label}: {kept} was changed')
+        if want == 3 and not stat.S_ISCHR(os.stat(device).st_mode):
+            failures.append(f'output mutant {label}: the device node was replaced')
+            os.remove(device)
+            os.mknod(device, 0o666 | stat.S_IFCHR, os.makedev(1, 7))
+        if want == 3 and os.path.exists(result):
+            failures.append(f'output mutant {label}: a result file was written before the refusal')
+            os.remove(result)
+        if arguments[-1].endswith('.xmf'):
+            os.remove(os.path.join(folder, arguments[-1]))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument('slidesim')
@@ -278,6 +343,7 @@ def main():
                     f.write(text)
             else:
                 os.remove(path)
+        output_mutants(slidesim, tree, work, failures, counts)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     summary = ', '.join(f'{phase} exit {code}: {n}' for (phase, code), n in sorted(counts.items()))
