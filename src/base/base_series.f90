@@ -26,7 +26,7 @@ module base_series
   !> x with room for n records (its last dimension), the first records kept;
   !> the leading extents are given (they are needed on the first call).
   interface resize
-    module procedure resize_reals, resize_columns, resize_matrices, resize_integers
+    module procedure resize_reals, resize_columns, resize_matrices, resize_blocks, resize_integers
   end interface resize
 
 contains
@@ -82,6 +82,15 @@ contains
     if (allocated(x)) y(:, :, :min(n, size(x, 3))) = x(:, :, :min(n, size(x, 3)))
     call move_alloc(y, x)
   end subroutine resize_matrices
+
+  pure subroutine resize_blocks(x, rows, columns, layers, n)
+    real(wp), allocatable, intent(inout) :: x(:, :, :, :)
+    integer, intent(in) :: rows, columns, layers, n
+    real(wp), allocatable :: y(:, :, :, :)
+    allocate (y(rows, columns, layers, n))
+    if (allocated(x)) y(:, :, :, :min(n, size(x, 4))) = x(:, :, :, :min(n, size(x, 4)))
+    call move_alloc(y, x)
+  end subroutine resize_blocks
 
   pure subroutine resize_integers(x, n)
     integer, allocatable, intent(inout) :: x(:)

@@ -18,6 +18,7 @@ module kinetostatics_point_mass
   use base_text, only: format_short
   use base_vector, only: cross
   use base_status, only: status_t, set_status, STATUS_DOMAIN, STATUS_INVALID_INPUT
+  use base_series, only: growable_series_t, resize
   use numerics_event_driver, only: event_system_t, EVENT_IGNORE, EVENT_STOP
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
@@ -30,8 +31,11 @@ module kinetostatics_point_mass
   integer, parameter :: FRICTION_NONE = 0, FRICTION_VISCOUS = 1, FRICTION_COULOMB = 2
 
   !> Time series of a run: one entry per record (start, outputs, events).
-  type :: point_mass_series_t
-    integer :: n = 0
+  !> The records of a run; grown as it goes (base_series).
+  !> Numbers of one record of point_mass_series_t (its arrays), for the memory bound
+  integer, parameter :: values_per_record = 31
+
+  type, extends(growable_series_t) :: point_mass_series_t
     real(wp), allocatable :: time(:), u(:), v(:), du(:), dv(:), speed(:), normal_force(:), &
       kinetic(:), potential(:), friction_work(:)
     real(wp), allocatable :: position(:, :), velocity(:, :), acceleration(:, :), friction_force(:, :)
@@ -210,41 +214,22 @@ contains
   subroutine point_mass_start_series(self, capacity)
     class(point_mass_t), intent(inout) :: self
     integer, intent(in) :: capacity
+    self%series%n = 0
     call allocate_series(self%series, max(capacity, 2))
     self%outcome = ''
   end subroutine point_mass_start_series
 
+  !> Room for n records in every array of the series, the recorded ones kept.
   subroutine allocate_series(s, n)
     type(point_mass_series_t), intent(inout) :: s
     integer, intent(in) :: n
-    allocate (s%time(n), s%u(n), s%v(n), s%du(n), s%dv(n), s%speed(n), s%normal_force(n), &
-              s%kinetic(n), s%potential(n), s%friction_work(n))
-    allocate (s%position(3, n), s%velocity(3, n), s%acceleration(3, n), s%friction_force(3, n))
-    allocate (s%frame(3, 3, n))
+    call resize(s%time, n); call resize(s%u, n); call resize(s%v, n); call resize(s%du, n)
+    call resize(s%dv, n); call resize(s%speed, n); call resize(s%normal_force, n); call resize(s%kinetic, n)
+    call resize(s%potential, n); call resize(s%friction_work, n)
+    call resize(s%position, 3, n); call resize(s%velocity, 3, n); call resize(s%acceleration, 3, n)
+    call resize(s%friction_force, 3, n); call resize(s%frame, 3, 3, n)
+    s%capacity = n
   end subroutine allocate_series
-
-  !> Twice the room, the records so far kept.
-  subroutine grow(s)
-    type(point_mass_series_t), intent(inout) :: s
-    type(point_mass_series_t) :: old
-    integer :: n
-    n = s%n
-    call move_alloc(s%time, old%time); call move_alloc(s%u, old%u); call move_alloc(s%v, old%v)
-    call move_alloc(s%du, old%du); call move_alloc(s%dv, old%dv); call move_alloc(s%speed, old%speed)
-    call move_alloc(s%normal_force, old%normal_force); call move_alloc(s%kinetic, old%kinetic)
-    call move_alloc(s%potential, old%potential); call move_alloc(s%friction_work, old%friction_work)
-    call move_alloc(s%position, old%position); call move_alloc(s%velocity, old%velocity)
-    call move_alloc(s%acceleration, old%acceleration); call move_alloc(s%friction_force, old%friction_force)
-    call move_alloc(s%frame, old%frame)
-    call allocate_series(s, 2*size(old%time))
-    s%time(:n) = old%time(:n); s%u(:n) = old%u(:n); s%v(:n) = old%v(:n)
-    s%du(:n) = old%du(:n); s%dv(:n) = old%dv(:n); s%speed(:n) = old%speed(:n)
-    s%normal_force(:n) = old%normal_force(:n); s%kinetic(:n) = old%kinetic(:n)
-    s%potential(:n) = old%potential(:n); s%friction_work(:n) = old%friction_work(:n)
-    s%position(:, :n) = old%position(:, :n); s%velocity(:, :n) = old%velocity(:, :n)
-    s%acceleration(:, :n) = old%acceleration(:, :n); s%friction_force(:, :n) = old%friction_force(:, :n)
-    s%frame(:, :, :n) = old%frame(:, :, :n)
-  end subroutine grow
 
   !> Appends the state at (t, y) to the series (whatever the record kind).
   subroutine point_mass_record(self, t, y, kind, status)
@@ -253,13 +238,15 @@ contains
     integer, intent(in) :: kind
     type(status_t), intent(inout) :: status
     type(point_mass_state_t) :: state
-    integer :: i
+    integer :: i, grown
     associate (unused => kind)
     end associate
     call self%state(y, state, status)
     if (.not. status%ok()) return
     if (.not. allocated(self%series%time)) call self%start_series(100)
-    if (self%series%n >= size(self%series%time)) call grow(self%series)
+    call self%series%make_room(16, 8.0_wp*values_per_record, 'point_mass', t, grown, status)
+    if (.not. status%ok()) return
+    if (grown > 0) call allocate_series(self%series, grown)
     associate (s => self%series)
       s%n = s%n + 1
       i = s%n

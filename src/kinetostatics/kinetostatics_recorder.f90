@@ -7,14 +7,16 @@
 module kinetostatics_recorder
   use base_kinds, only: wp
   use base_status, only: status_t
+  use base_series, only: growable_series_t, resize
   use kinetostatics_mass, only: mass_element_t
   use kinetostatics_mechanism, only: mechanism_t
   implicit none (type, external)
   private
   public :: mechanism_series_t
 
-  type :: mechanism_series_t
-    integer :: n = 0, f = 0, r = 0, nb = 0, nc = 0, nl = 0, nm = 0
+  !> The records of a mechanism's run; grown as it goes (base_series).
+  type, extends(growable_series_t) :: mechanism_series_t
+    integer :: f = 0, r = 0, nb = 0, nc = 0, nl = 0, nm = 0
     character(len=32), allocatable :: q_names(:), beta_names(:), closure_names(:), body_names(:), &
       contact_names(:), law_names(:), monitor_names(:)
     character(len=8), allocatable :: monitor_units(:)
@@ -77,49 +79,26 @@ contains
     call allocate_arrays(self, max(capacity, 2))
   end subroutine series_init
 
+  !> Room for n records in every array of the series, the recorded ones kept.
   subroutine allocate_arrays(s, n)
     type(mechanism_series_t), intent(inout) :: s
     integer, intent(in) :: n
-    allocate (s%time(n), s%kind(n), s%q(s%f, n), s%qd(s%f, n), s%qdd(s%f, n), s%beta(s%r, n), &
-              s%lambda(s%r, n), s%closure(n), s%residual(n), s%kinetic(n), s%potential(n), &
-              s%body_r(3, s%nb, n), s%body_v(3, s%nb, n), s%body_omega(3, s%nb, n), &
-              s%body_rot(3, 3, s%nb, n), s%normal(s%nc, n), s%friction(3, s%nc, n), s%contact_r(3, s%nc, n), &
-              s%slip(3, s%nc, n), s%law_force(3, s%nl, n), s%law_power(s%nl, n), s%law_work(s%nl, n), &
-              s%law_active(s%nl, n), s%monitor(s%nm, n))
+    call resize(s%time, n); call resize(s%kind, n); call resize(s%q, s%f, n); call resize(s%qd, s%f, n)
+    call resize(s%qdd, s%f, n); call resize(s%beta, s%r, n); call resize(s%lambda, s%r, n)
+    call resize(s%closure, n); call resize(s%residual, n); call resize(s%kinetic, n); call resize(s%potential, n)
+    call resize(s%body_r, 3, s%nb, n); call resize(s%body_v, 3, s%nb, n); call resize(s%body_omega, 3, s%nb, n)
+    call resize(s%body_rot, 3, 3, s%nb, n); call resize(s%normal, s%nc, n); call resize(s%friction, 3, s%nc, n)
+    call resize(s%contact_r, 3, s%nc, n); call resize(s%slip, 3, s%nc, n); call resize(s%law_force, 3, s%nl, n)
+    call resize(s%law_power, s%nl, n); call resize(s%law_work, s%nl, n); call resize(s%law_active, s%nl, n)
+    call resize(s%monitor, s%nm, n)
+    s%capacity = n
   end subroutine allocate_arrays
 
-  !> Twice the room, the records so far kept.
-  subroutine grow(s)
-    type(mechanism_series_t), intent(inout) :: s
-    type(mechanism_series_t) :: old
-    integer :: n
-    n = s%n
-    call move_alloc(s%time, old%time); call move_alloc(s%kind, old%kind)
-    call move_alloc(s%q, old%q); call move_alloc(s%qd, old%qd); call move_alloc(s%qdd, old%qdd)
-    call move_alloc(s%beta, old%beta); call move_alloc(s%lambda, old%lambda)
-    call move_alloc(s%closure, old%closure); call move_alloc(s%residual, old%residual)
-    call move_alloc(s%kinetic, old%kinetic); call move_alloc(s%potential, old%potential)
-    call move_alloc(s%body_r, old%body_r); call move_alloc(s%body_v, old%body_v)
-    call move_alloc(s%body_omega, old%body_omega); call move_alloc(s%body_rot, old%body_rot)
-    call move_alloc(s%normal, old%normal); call move_alloc(s%friction, old%friction)
-    call move_alloc(s%contact_r, old%contact_r); call move_alloc(s%slip, old%slip)
-    call move_alloc(s%law_force, old%law_force); call move_alloc(s%law_power, old%law_power)
-    call move_alloc(s%law_work, old%law_work); call move_alloc(s%law_active, old%law_active)
-    call move_alloc(s%monitor, old%monitor)
-    call allocate_arrays(s, 2*size(old%time))
-    s%time(:n) = old%time(:n); s%kind(:n) = old%kind(:n)
-    s%q(:, :n) = old%q(:, :n); s%qd(:, :n) = old%qd(:, :n); s%qdd(:, :n) = old%qdd(:, :n)
-    s%beta(:, :n) = old%beta(:, :n); s%lambda(:, :n) = old%lambda(:, :n)
-    s%closure(:n) = old%closure(:n); s%residual(:n) = old%residual(:n)
-    s%kinetic(:n) = old%kinetic(:n); s%potential(:n) = old%potential(:n)
-    s%body_r(:, :, :n) = old%body_r(:, :, :n); s%body_v(:, :, :n) = old%body_v(:, :, :n)
-    s%body_omega(:, :, :n) = old%body_omega(:, :, :n); s%body_rot(:, :, :, :n) = old%body_rot(:, :, :, :n)
-    s%normal(:, :n) = old%normal(:, :n); s%friction(:, :, :n) = old%friction(:, :, :n)
-    s%contact_r(:, :, :n) = old%contact_r(:, :, :n); s%slip(:, :, :n) = old%slip(:, :, :n)
-    s%law_force(:, :, :n) = old%law_force(:, :, :n); s%law_power(:, :n) = old%law_power(:, :n)
-    s%law_work(:, :n) = old%law_work(:, :n); s%law_active(:, :n) = old%law_active(:, :n)
-    s%monitor(:, :n) = old%monitor(:, :n)
-  end subroutine grow
+  !> Numbers of one record (every array above), for the memory bound.
+  pure real(wp) function record_values(s)
+    type(mechanism_series_t), intent(in) :: s
+    record_values = 6 + 3*s%f + 2*s%r + 18*s%nb + 10*s%nc + 6*s%nl + s%nm
+  end function record_values
 
   !> Evaluates the complete state at (t, q, q') and appends it with the laws'
   !> work integrals `work` (J) and the record kind.
@@ -130,10 +109,12 @@ contains
     integer, intent(in) :: kind
     type(status_t), intent(inout) :: status
     real(wp) :: res
-    integer :: i, k
+    integer :: i, k, grown
     call m%evaluate(t, q, qd, res, status)
     if (.not. status%ok()) return
-    if (self%n >= size(self%time)) call grow(self)
+    call self%make_room(16, 8*record_values(self), 'mechanism', t, grown, status)
+    if (.not. status%ok()) return
+    if (grown > 0) call allocate_arrays(self, grown)
     self%n = self%n + 1
     i = self%n
     self%time(i) = t
