@@ -86,7 +86,7 @@ program slidesim
       ! kept in order with the --set arguments, marked (a --set group%... never starts so)
       call take_value()
       if (index(value, '%') == 0) call usage_error('--unset '//value//': write --unset group%variable, '// &
-                                                    'e.g. --unset rider%mu')
+                                                    'e.g. --unset solver%duration')
       overrides = [character(len=max(len(overrides), len(value) + 8)) :: overrides, '--unset '//value]
     case ('--progress')
       call take_value()
@@ -213,7 +213,7 @@ contains
     call write_standard_output('                            of a repeated group the k-th or the one named:')
     call write_standard_output('                            --set "body(2)%mass=3", --set "body(egg)%mass=3"')
     call write_standard_output('  --unset GROUP%VAR         remove a variable from the input: it takes its')
-    call write_standard_output('                            default (--unset rider%mu: no friction); checked')
+    call write_standard_output('                            default (--unset solver%duration); checked')
     call write_standard_output('                            like --set, applied in order with the --set ones')
     call write_standard_output('  --check                   read and check the input, build the models, write')
     call write_standard_output('                            nothing; prints "input ok"')

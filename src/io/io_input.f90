@@ -290,7 +290,7 @@ contains
     percent = index(spec, '%')
     if (percent < 2) then
       call set_status(status, STATUS_INVALID_INPUT, origin//': write --unset group%variable, '// &
-                      'e.g. --unset rider%mu')
+                      'e.g. --unset solver%duration')
       return
     end if
     call target_group(origin, spec(:percent - 1), 'group%variable', group, selector, status)
