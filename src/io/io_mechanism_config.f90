@@ -204,7 +204,8 @@ contains
       b = g//'bodies/'//trim(s%body_names(k))
       call file%write_matrix(b//'/position', s%body_r(:, k, :n), 'm', 'origin of the body frame (3 x n)', status)
       call file%write_array3(b//'/rotation', s%body_rot(:, :, k, :n), '1', &
-                             'body frame axes as columns, world coordinates (3 x 3 x n)', status)
+                             'body axes in world coordinates: rotation[i, k, :] is body axis k (0 x, 1 y, 2 z) '// &
+                             'at sample i as h5py reads it (a row; the columns of the 3 x 3 x n Fortran array)', status)
       call file%write_matrix(b//'/velocity', s%body_v(:, k, :n), 'm/s', 'velocity of the origin (3 x n)', status)
       call file%write_matrix(b//'/angular_velocity', s%body_omega(:, k, :n), 'rad/s', &
                              'angular velocity (3 x n)', status)

@@ -158,7 +158,8 @@ contains
     call file%write_vector(g//'friction_work', s%friction_work(:n), 'J', &
                            'work done on the mass by friction since t = 0 (<= 0)', status)
     call file%write_array3(g//'frame', s%frame(:, :, :n), '1', &
-                           'Darboux frame (3 x 3 x n): columns x, y, z in world coordinates', status)
+                           'Darboux frame in world coordinates: frame[i, k, :] is axis k (0 x, 1 y, 2 z: the normal) '// &
+                           'at sample i as h5py reads it (a row; the columns of the 3 x 3 x n Fortran array)', status)
     if (n > 0) then
       call file%make_scale(g//'time', status)
       call file%attach_scale(g//'time', g, status)

@@ -63,7 +63,7 @@ def egg_parameters(text):
 
 def tilt(f, axis):
     """theta of body axis `axis` (0, 1, 2: x, y, z) against the vertical."""
-    rot = f["contact/bodies/egg/rotation"][...]       # (n, column, row)
+    rot = f["contact/bodies/egg/rotation"][...]       # rot[i, k, :] = body axis k, world (docs/outputs.md)
     return np.degrees(np.arccos(np.clip(np.abs(rot[:, axis, 2]), 0.0, 1.0)))
 
 
