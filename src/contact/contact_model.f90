@@ -490,6 +490,7 @@ contains
       call m%add_element(new_no_slip(c%name//'.no_slip', link%frame_a, link%frame_b, link%frame_1d, &
                                      link%rolling_outputs))
       call m%add_rate_constraint(c%name//' rolling', link%rolling_outputs, [link%pair%u12, link%pair%v12], status)
+      m%contacts(link%contact)%tangential_outputs = link%rolling_outputs
     end if
   end subroutine add_position_contact
 

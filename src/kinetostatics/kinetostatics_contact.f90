@@ -27,6 +27,10 @@
 !> Both are linear in the loads of a force pass, which is what lets the
 !> mechanism solve friction proportional to |N| exactly. A one-sided contact
 !> can only push: N falling through zero is the lift-off event.
+!>
+!> Static friction of a rolling contact: the cut forces mu_x, mu_y of its
+!> no-slip rate constraint (outputs c_x = x_P . w, c_y = y_P . w), the force
+!> mu_x x_P + mu_y y_P on body B at p (contact_rolling).
 module kinetostatics_contact
   use base_kinds, only: wp
   use base_vector, only: cross
@@ -60,6 +64,9 @@ module kinetostatics_contact
     real(wp) :: normal_sign = 1                ! +1 or -1, see the module comment
     logical :: one_sided = .true.              ! lift-off (N falling through 0) is an event
     real(wp) :: normal_force = 0               ! N, at the last complete evaluation
+    !> a rolling contact's no-slip outputs along x_P and y_P (scalar indices;
+    !> 0: none): their cut forces are its static friction on body B
+    integer :: tangential_outputs(2) = 0
   end type contact_t
 
 contains

@@ -10,6 +10,7 @@ module kinetostatics_recorder
   use base_series, only: growable_series_t, resize
   use kinetostatics_mass, only: mass_element_t
   use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_contact, only: contact_t
   implicit none (type, external)
   private
   public :: mechanism_series_t
@@ -31,7 +32,8 @@ module kinetostatics_recorder
     real(wp), allocatable :: body_r(:, :, :), body_v(:, :, :), body_omega(:, :, :)   ! 3 x nb x n
     real(wp), allocatable :: body_rot(:, :, :, :)      ! 3 x 3 x nb x n
     real(wp), allocatable :: normal(:, :)              ! nc x n, N
-    real(wp), allocatable :: friction(:, :, :)         ! 3 x nc x n, N: the laws' forces on body B
+    real(wp), allocatable :: friction(:, :, :)         ! 3 x nc x n, N: the laws' forces on body B and a
+                                                       ! rolling contact's static friction
     real(wp), allocatable :: contact_r(:, :, :), slip(:, :, :)   ! 3 x nc x n: point (m), slip velocity (m/s)
     real(wp), allocatable :: law_force(:, :, :)        ! 3 x nl x n, N
     real(wp), allocatable :: law_power(:, :), law_work(:, :)   ! nl x n: W, J
@@ -155,10 +157,27 @@ contains
     end do
     do k = 1, self%nc
       associate (c => m%contacts(k))
+        self%friction(:, k, i) = self%friction(:, k, i) + static_friction(m, c)
         self%normal(k, i) = c%normal_force
         self%contact_r(:, k, i) = m%contact_states(k)%point
         self%slip(:, k, i) = m%contact_states(k)%slip
       end associate
     end do
   end subroutine series_record
+
+  !> The static friction of a rolling contact on body B (N, world), the cut
+  !> forces of its no-slip outputs along the contact frame's x and y at the
+  !> evaluated state; zero for a contact that does not roll.
+  pure function static_friction(m, c) result(f)
+    type(mechanism_t), intent(in) :: m
+    type(contact_t), intent(in) :: c
+    real(wp) :: f(3)
+    integer :: axis, j
+    f = 0
+    do axis = 1, 2
+      if (c%tangential_outputs(axis) == 0) cycle
+      j = findloc(m%rate_outputs, c%tangential_outputs(axis), dim=1)
+      if (j > 0) f = f + m%mu(j)*m%frames(c%point_frame)%rot(:, axis)
+    end do
+  end function static_friction
 end module kinetostatics_recorder

@@ -91,7 +91,8 @@ contains
     type(contact_system_t) :: system
     type(contact_model_t), target :: model
     type(driver_options_t) :: options
-    real(wp) :: a, worst_a, worst_u, worst_slip, worst_e, worst_f, worst_n, e0, t, u0, drop
+    real(wp) :: a, worst_a, worst_u, worst_slip, worst_e, worst_f, worst_fr, worst_n, e0, t, u0, drop
+    real(wp), parameter :: downhill(3) = [cos(theta), 0.0_wp, -sin(theta)]
     integer :: i, u12
     call describe(system, .true., FRICTION_NONE, 0.0_wp)
     options%t_end = 1
@@ -107,7 +108,7 @@ contains
       u0 = s%q(u12, 1)
       e0 = s%kinetic(1) + s%potential(1)
       drop = mass*g*sin(theta)*a/2      ! potential energy lost in 1 s
-      worst_a = 0; worst_u = 0; worst_slip = 0; worst_e = 0; worst_f = 0; worst_n = 0
+      worst_a = 0; worst_u = 0; worst_slip = 0; worst_e = 0; worst_f = 0; worst_n = 0; worst_fr = 0
       do i = 1, s%n
         t = s%time(i)
         worst_a = max(worst_a, abs(s%qdd(u12, i) - a))
@@ -115,6 +116,9 @@ contains
         worst_slip = max(worst_slip, norm2(s%slip(:, 1, i)))
         worst_e = max(worst_e, abs(s%kinetic(i) + s%potential(i) - e0))
         worst_n = max(worst_n, abs(s%normal(1, i) - mass*g*cos(theta)))
+        ! the static friction as recorded (the result file's friction_force):
+        ! (2/7) m g sin(theta) up the slope, on the ball
+        worst_fr = max(worst_fr, norm2(s%friction(:, 1, i) + 2*mass*g*sin(theta)/7*downhill))
       end do
       ! the static friction = the cut forces of the no-slip constraint (last state)
       worst_f = abs(norm2(m%mu) - 2*mass*g*sin(theta)/7)
@@ -126,8 +130,9 @@ contains
       call check(worst_e <= 1e-9_wp*drop, 'rolling: energy conserved to 1e-9 of the energy exchanged')
       call check(worst_n <= 1e-12_wp*mass*g, 'rolling: normal force m g cos(theta)')
       call check(worst_f <= 1e-12_wp*mass*g, 'rolling: static friction (2/7) m g sin(theta)')
-      print '(a, 6es10.2)', 'rolling: errors a, u, slip, E, N, F: ', worst_a/a, worst_u/(a/2), worst_slip, &
-        worst_e/drop, worst_n/(mass*g), worst_f/(mass*g)
+      call check(worst_fr <= 1e-12_wp*mass*g, 'rolling: recorded friction force (2/7) m g sin(theta) up the slope')
+      print '(a, 7es10.2)', 'rolling: errors a, u, slip, E, N, F, recorded F: ', worst_a/a, worst_u/(a/2), &
+        worst_slip, worst_e/drop, worst_n/(mass*g), worst_f/(mass*g), worst_fr/(mass*g)
     end associate
   end subroutine rolling
 
