@@ -20,9 +20,19 @@
 !> run by an event; the runaway guards bound the work.
 !>
 !> Runaway guards: max_steps_total internal steps in all, and a mean step
-!> below min_mean_step once guard_steps steps have been taken (e.g. Adams on a
-!> stiff problem such as bodies at rest under regularized Coulomb friction);
-!> both end the run as failed with a message that says what to change.
+!> below the guard's limit once guard_steps steps have been taken (e.g. Adams
+!> on a stiff problem such as bodies at rest under regularized Coulomb
+!> friction); both end the run as failed with a message that says what to
+!> change. The limit follows the tolerances and the step bound
+!> (runaway_step_limit): min_mean_step is meant for rtol 1e-6; a tighter rtol
+!> lowers it by (rtol/1e-6)^(1/6), as the steps of a method of order 5 (BDF's
+!> highest; Adams runs at such orders or higher at these tolerances) shrink,
+!> and a max_step lowers it to a tenth of that step, so that a sound run with
+!> tight tolerances or a bounded step is not called a runaway (the Coulomb
+!> egg at rtol 1e-11 with BDF takes 3.4e-5 s steps; the guard is 1.5e-5 s
+!> there). Under Adams the message says the model looks stiff and to use BDF,
+!> which integrates such runs (a decision: no silent switch of the method the
+!> input asked for).
 module numerics_event_driver
   use base_kinds, only: wp, int64
   use base_text, only: format_short
@@ -34,7 +44,7 @@ module numerics_event_driver
   public :: event_system_t, driver_options_t, driver_result_t, drive
   public :: EVENT_IGNORE, EVENT_RECORD, EVENT_RESTART, EVENT_STOP
   public :: RECORD_START, RECORD_OUTPUT, RECORD_EVENT
-  public :: DRIVE_END_TIME, DRIVE_EVENT_STOP, DRIVE_FAILED, drive_outcome_name
+  public :: DRIVE_END_TIME, DRIVE_EVENT_STOP, DRIVE_FAILED, drive_outcome_name, runaway_step_limit
 
   integer, parameter :: EVENT_IGNORE = 0, EVENT_RECORD = 1, EVENT_RESTART = 2, EVENT_STOP = 3
   integer, parameter :: RECORD_START = 1, RECORD_OUTPUT = 2, RECORD_EVENT = 3
@@ -73,7 +83,8 @@ module numerics_event_driver
     real(wp) :: t_end = huge(1.0_wp)          !< s; huge: no bound (the model stops by an event)
     real(wp) :: output_step = 0.01_wp         !< s, > 0
     integer(int64) :: max_steps_total = 0     !< internal steps in all; 0: no limit
-    real(wp) :: min_mean_step = 0             !< s; a smaller mean step after guard_steps fails the run
+    real(wp) :: min_mean_step = 0             !< s at rtol 1e-6; a smaller mean step after guard_steps fails
+                                              !< the run (runaway_step_limit: tighter tolerances lower it)
     integer(int64) :: guard_steps = 20000     !< steps before min_mean_step is judged
     !> wall-clock s between progress lines; 0: none; < 0: the program's
     !> setting (base_log progress_interval: 2 s unless slidesim --progress)
@@ -101,6 +112,16 @@ contains
     case default; text = 'failed'
     end select
   end function drive_outcome_name
+
+  !> The runaway guard's mean-step limit (s) for these options (module
+  !> comment): min_mean_step times min(1, (rtol/1e-6)^(1/6)), at most a tenth
+  !> of max_step when that is set; 0: no guard.
+  pure real(wp) function runaway_step_limit(options) result(limit)
+    type(driver_options_t), intent(in) :: options
+    real(wp), parameter :: reference_rtol = 1e-6_wp
+    limit = options%min_mean_step*min(1.0_wp, (options%ode%rtol/reference_rtol)**(1.0_wp/6))
+    if (options%ode%max_step > 0) limit = min(limit, options%ode%max_step/10)
+  end function runaway_step_limit
 
   !> Default: every event stops the run.
   subroutine default_handle_event(self, t, y, fired, action, status)
@@ -265,7 +286,7 @@ contains
     subroutine check_runaway(st)
       type(status_t), intent(inout) :: st
       type(ode_stats_t) :: s
-      real(wp) :: mean_step
+      real(wp) :: mean_step, limit
       s = integrator%statistics()
       if (s%steps - steps_at_output > options%ode%max_steps) then
         call set_status(st, STATUS_SOLVER, label//': more than max_steps = '// &
@@ -278,13 +299,16 @@ contains
           format_short(real(options%max_steps_total, wp))//' internal steps by t = '//format_short(t)//' s'//hint())
         return
       end if
-      if (options%min_mean_step > 0 .and. s%steps >= options%guard_steps) then
+      limit = runaway_step_limit(options)
+      if (limit > 0 .and. s%steps >= options%guard_steps) then
         mean_step = (t - options%t_start)/real(s%steps, wp)
-        if (mean_step < options%min_mean_step) then
+        if (mean_step < limit) then
           call set_status(st, STATUS_SOLVER, label//': runaway integration, '// &
             format_short(real(s%steps, wp))//' internal steps for '//format_short(t - options%t_start)// &
-            ' s simulated (mean step '//format_short(mean_step)//' s, below '// &
-            format_short(options%min_mean_step)//' s)'//hint())
+            ' s simulated (mean step '//format_short(mean_step)//' s, below the guard '// &
+            format_short(limit)//' s: '//format_short(options%min_mean_step)//' s at rtol 1e-6, times '// &
+            '(rtol/1e-6)^(1/6) for a tighter rtol, at most a tenth of max_step)'//hint()// &
+            '; a sound run with steps this short: set max_step in &solver, the guard becomes a tenth of it')
         end if
       end if
     end subroutine check_runaway

@@ -146,7 +146,7 @@ program test_event_driver
   use base_status, only: status_t
   use numerics_ode, only: ODE_ADAMS, ODE_BDF
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, &
-    DRIVE_EVENT_STOP, DRIVE_FAILED
+    DRIVE_EVENT_STOP, DRIVE_FAILED, runaway_step_limit
   use test_event_driver_systems, only: bouncing_ball_t, stiff_t
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
@@ -260,6 +260,36 @@ contains
     options%max_steps_total = 500_int64
     call drive(stiff, [1.0_wp], options, result, status)
     call check(.not. status%ok() .and. index(status%text(), 'runaway') > 0, 'total step budget: '//status%text())
+    ! the guard follows the tolerances and a bounded step (issue 27): 1e-4 s
+    ! at rtol 1e-6, (1e-5)^(1/6) of it at rtol 1e-11, never raised by a
+    ! looser rtol, a tenth of max_step
+    options%max_steps_total = 0
+    options%min_mean_step = 1e-4_wp
+    options%ode%rtol = 1e-6_wp
+    call check_close(runaway_step_limit(options), 1e-4_wp, 0.0_wp, 1e-15_wp, 'guard at rtol 1e-6')
+    options%ode%rtol = 1e-11_wp
+    call check_close(runaway_step_limit(options), 1e-4_wp*1e-5_wp**(1.0_wp/6), 0.0_wp, 1e-15_wp, &
+                     'guard at rtol 1e-11')
+    options%ode%rtol = 1e-3_wp
+    call check_close(runaway_step_limit(options), 1e-4_wp, 0.0_wp, 1e-15_wp, 'guard at rtol 1e-3')
+    options%ode%max_step = 1e-5_wp
+    call check_close(runaway_step_limit(options), 1e-6_wp, 0.0_wp, 1e-15_wp, 'guard with max_step 1e-5 s')
+    ! a sound run with a bounded step (10000 steps of 1e-5 s, mean below
+    ! min_mean_step) is no runaway; the guard's message names max_step
+    options%ode%rtol = 1e-8_wp
+    options%ode%method = ODE_BDF
+    options%t_end = 0.1_wp
+    options%output_step = 0.01_wp
+    call drive(stiff, [1.0_wp], options, result, status)
+    call check(status%ok() .and. result%outcome == DRIVE_END_TIME, 'max_step 1e-5 s: runs to the end: '// &
+               status%text())
+    options%ode%method = ODE_ADAMS
+    options%ode%max_step = 0
+    options%t_end = 10
+    options%output_step = 0.1_wp
+    call drive(stiff, [1.0_wp], options, result, status)
+    call check(index(status%text(), 'below the guard') > 0 .and. index(status%text(), 'set max_step in &solver') > 0, &
+               'guard message: the limit and how to change it: '//status%text())
   end subroutine runaway_guards
 
   !> A right-hand side that fails ends the run as failed with its message.
