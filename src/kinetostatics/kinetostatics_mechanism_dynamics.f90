@@ -1,0 +1,249 @@
+!> The mechanism's equations of motion (kinetostatics_mechanism).
+!>
+!> Equations of motion (3.34)-(3.36): the inverse dynamics Q_bar(q, s, s')
+!> (generalized forces of d'Alembert + applied forces at the speeds, loops and
+!> velocity constraints closed by lambda, mu) is affine in s': Q_bar = Q_bar0 -
+!> M s'. One pass with s' = 0 (inertia, gravity and the explicit laws) gives
+!> Q_bar0 = -Q^ and the normal forces N0.
+!>
+!> Normal forces and scaled laws: every contact's normal force N (rules in
+!> kinetostatics_contact) is linear in the loads of a force pass, so
+!> N = N0 + G q'' + sum_k H_k |N_c(k)|, where the last sum runs over the scaled
+!> laws k (load |N_c(k)| u_k with u_k from the law, e.g. Coulomb friction
+!> u = -mu w/|w| (4.28)). With s_j = sign N_j, P_k and H_k the generalized
+!> forces and normal forces of the unit load u_k alone (as one force pass with
+!> it would give them), and the contacts j of the scaled laws as
+!> extra unknowns, the equations of motion are the exact block system
+!>     [ M            -sum_k P_k s_j(k) e_j(k)^T   ] [q'']   [Q_bar0]
+!>     [ -G_j   I - sum_k H_j,k s_j(k) e_j(k)^T    ] [N_j] = [N0_j  ],
+!> its signs iterated until consistent (normally at once; no consistent signs:
+!> a Painleve-type paradox, reported). The other contacts' N follow from the
+!> affine form. The law's power is |N| times its unit power.
+submodule (kinetostatics_mechanism) kinetostatics_mechanism_dynamics
+  implicit none (type, external)
+
+contains
+
+  !> s' from M(q) s' + Q^(q, s) = Q_applied (3.36) (s = q' without rate
+  !> constraints and kinematic coordinates; qd is s, qdd is s'), with every force law
+  !> and the normal forces of the contacts (see the module comment). Leaves M
+  !> in `mass`, Q_bar0 in `bias`, q'' in `qdd`, the normal forces in `normal`,
+  !> the laws' powers in `law_power`. The velocity and acceleration states are
+  !> overwritten (use `evaluate` for a consistent state). Called again at the
+  !> same (t, q, s) with the same laws switched on and no position pass or law
+  !> evaluation in between, it returns the results it left (the positions and
+  !> laws are still those of that state) and sets the velocities again.
+  module procedure dynamics
+    real(wp) :: s_old
+    type(status_t) :: lapack
+    integer :: i, j, k, c, nc, ns, nb, it, column
+    logical :: consistent
+
+    if (self%dynamics_known .and. t == self%known_t) then
+      if (all(q == self%known_q) .and. all(qd == self%known_s) .and. &
+          same_switches(self)) then
+        qdd = self%qdd
+        call self%set_velocities(qd)
+        self%dynamics_reused = self%dynamics_reused + 1
+        return
+      end if
+    end if
+    qdd = 0
+    nc = size(self%contacts)
+    ns = size(self%scaled_laws)
+    nb = size(self%block_contact)
+    call self%set_positions(q, status)
+    if (.not. status%ok()) return
+    call self%set_velocities(qd)
+    call self%evaluate_laws(t, status)
+    if (.not. status%ok()) return
+    self%law_factor = 1
+    self%work_f = 0
+    call self%set_accelerations(self%work_f)
+    call self%inverse_dynamics(.true., .true., LOADS_EXPLICIT)
+    self%bias(:) = self%gq   ! (:): no reallocation test
+    if (nc > 0) call self%normal_forces(self%n0)
+
+    ! M and G, all velocities zero, applied forces off
+    do k = 1, self%n_frames
+      self%frames(k)%omega = 0
+      self%frames(k)%v = 0
+    end do
+    self%scalars%qd = 0
+    if (self%twist_route) then
+      call twist_mass_matrix(self)
+    else
+      do i = 1, self%ns
+        call full_mass_column(self, i)
+      end do
+    end if
+    if (.not. self%twist_route) then   ! (the twist route's M is symmetric and left its lower triangle in chol)
+      do i = 1, self%ns   ! symmetric part's lower triangle, the factor's input (no temporary)
+        do k = i, self%ns
+          self%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
+        end do
+      end do
+    end if
+    call cholesky_factor(self%chol, lapack, column)
+    if (.not. lapack%ok()) then
+      call set_status(status, STATUS_DOMAIN, 'the mass matrix is not positive definite: generalized '// &
+        'coordinate '''//trim(self%scalar_names(self%q(self%speeds(column))))//''' has no inertia (a massless body or '// &
+        'a mass without rotational inertia on a pure rotation)')
+      return
+    end if
+    if (ns == 0) then
+      self%qdd(:) = self%bias
+      call cholesky_solve(self%chol, self%qdd, status)
+      qdd = self%qdd
+      call affine_normal_forces(self, qdd)
+      self%law_power(:) = self%unit_power
+      call remember_dynamics(self, t, q, qd)
+      return
+    end if
+
+    ! scaled laws: their unit loads alone, then the block system
+    if (self%twist_route) then
+      call twist_unit_loads(self)
+    else
+      do k = 1, ns
+        call self%inverse_dynamics(.false., .false., self%scaled_laws(k))
+        self%p_mat(:, k) = self%gq
+        call self%normal_forces(self%h_mat(:, k))
+      end do
+    end if
+    self%signs = 1
+    consistent = .false.
+    do it = 1, 6
+      self%block = 0
+      self%block(1:self%ns, 1:self%ns) = self%mass
+      do j = 1, nb
+        self%block(self%ns + j, 1:self%ns) = -self%g_mat(self%block_contact(j), :)
+        self%block(self%ns + j, self%ns + j) = 1
+      end do
+      do k = 1, ns
+        j = self%block_row(k)
+        self%block(1:self%ns, self%ns + j) = self%block(1:self%ns, self%ns + j) - self%p_mat(:, k)*self%signs(j)
+        do i = 1, nb
+          self%block(self%ns + i, self%ns + j) = self%block(self%ns + i, self%ns + j) &
+                                               - self%h_mat(self%block_contact(i), k)*self%signs(j)
+        end do
+      end do
+      self%block_rhs(1:self%ns) = self%bias
+      do j = 1, nb
+        self%block_rhs(self%ns + j) = self%n0(self%block_contact(j))
+      end do
+      call lu_factor(self%block, self%ipiv_block, lapack)
+      if (.not. lapack%ok()) then
+        call set_status(status, STATUS_DOMAIN, 'the equations of motion with friction proportional to '// &
+                        'the normal forces are singular')
+        return
+      end if
+      call lu_solve(self%block, self%ipiv_block, self%block_rhs, status)
+      consistent = .true.
+      do j = 1, nb
+        s_old = self%signs(j)
+        if (self%block_rhs(self%ns + j)*s_old < 0) then
+          consistent = .false.
+          self%signs(j) = -s_old
+        end if
+      end do
+      if (consistent) exit
+    end do
+    if (.not. consistent) then
+      call set_status(status, STATUS_DOMAIN, 'friction proportional to the normal forces: no consistent '// &
+                      'signs of the normal forces (the friction law has no unique solution here, a '// &
+                      'Painleve-type paradox)')
+      return
+    end if
+    qdd = self%block_rhs(1:self%ns)
+    self%qdd = qdd
+    call affine_normal_forces(self, qdd)
+    do k = 1, ns
+      j = self%block_row(k)
+      self%normal = self%normal + self%h_mat(:, k)*self%signs(j)*self%block_rhs(self%ns + j)
+    end do
+    do j = 1, nb
+      self%normal(self%block_contact(j)) = self%block_rhs(self%ns + j)
+    end do
+    self%law_power = self%unit_power
+    do k = 1, ns
+      c = self%laws(self%scaled_laws(k))%law%contact
+      self%law_factor(self%scaled_laws(k)) = abs(self%normal(c))
+      self%law_power(self%scaled_laws(k)) = abs(self%normal(c))*self%unit_power(self%scaled_laws(k))
+    end do
+    call remember_dynamics(self, t, q, qd)
+  end procedure dynamics
+
+  !> Column i of M and of G by inverse-dynamics passes (the route for a
+  !> mechanism with an element of unknown links): s' = e_i, velocities zero,
+  !> applied forces off.
+  subroutine full_mass_column(self, i)
+    class(mechanism_t), intent(inout) :: self
+    integer, intent(in) :: i
+    self%work_f = 0
+    self%work_f(i) = 1
+    call self%set_accelerations(self%work_f)
+    call self%inverse_dynamics(.true., .false., LOADS_NONE)
+    self%mass(:, i) = -self%gq
+    if (size(self%contacts) > 0) call self%normal_forces(self%g_mat(:, i))
+  end subroutine full_mass_column
+
+  subroutine remember_dynamics(self, t, q, qd)
+    class(mechanism_t), intent(inout) :: self
+    real(wp), intent(in) :: t, q(:), qd(:)
+    integer :: k
+    self%known_t = t
+    self%known_q(:) = q
+    self%known_s(:) = qd
+    do k = 1, self%n_laws
+      self%known_active(k) = self%laws(k)%law%active
+    end do
+    self%dynamics_known = .true.
+  end subroutine remember_dynamics
+
+  !> Every law switched on or off as at the last completed `dynamics`.
+  logical function same_switches(self) result(same)
+    class(mechanism_t), intent(in) :: self
+    integer :: k
+    same = .true.
+    do k = 1, self%n_laws
+      if (self%laws(k)%law%active .neqv. self%known_active(k)) same = .false.
+    end do
+  end function same_switches
+
+  !> N = N0 + G q'' for every contact (without the scaled laws' share).
+  subroutine affine_normal_forces(self, qdd)
+    class(mechanism_t), intent(inout) :: self
+    real(wp), intent(in) :: qdd(:)
+    integer :: i, c
+    do c = 1, size(self%n0)   ! no matmul: its result would be a heap temporary
+      self%normal(c) = self%n0(c)
+      do i = 1, self%ns
+        self%normal(c) = self%normal(c) + self%g_mat(c, i)*qdd(i)
+      end do
+    end do
+  end subroutine affine_normal_forces
+
+  !> The complete state at (t, q, q'): accelerations, cut forces, every law's
+  !> loads and power, every contact's normal force, the record-only elements'
+  !> outputs; returns the inverse-dynamics residual max |Q_bar| (zero up to
+  !> rounding when everything is consistent).
+  module procedure evaluate
+    real(wp) :: qdd(self%ns)
+    integer :: c, reused
+    residual = huge(1.0_wp)
+    reused = self%dynamics_reused
+    call self%dynamics(t, q, qd, qdd, status)
+    if (status%ok()) call self%record_pass(status)   ! at q: a reused dynamics left the positions there
+    if (.not. status%ok()) return
+    ! a reused dynamics has just set these velocities; a computed one overwrote them
+    if (self%dynamics_reused == reused) call self%set_velocities(qd)
+    call self%set_accelerations(qdd)
+    call self%inverse_dynamics(.true., .true., LOADS_ALL)
+    residual = maxval(abs(self%gq))
+    call self%normal_forces(self%work_c)
+    do c = 1, size(self%contacts)
+      self%contacts(c)%normal_force = self%work_c(c)
+    end do
+  end procedure evaluate
+end submodule kinetostatics_mechanism_dynamics
