@@ -17,7 +17,9 @@
 !>             acceleration rates, inverse dynamics, normal forces, laws;
 !>   dynamics  kinetostatics_mechanism_dynamics: the equations of motion;
 !>   twists    kinetostatics_mechanism_twists: the mass matrix and the
-!>             normal-force maps from the partial twists.
+!>             normal-force maps from the partial twists;
+!> and the work arrays in the workspace, the component `work`
+!> (kinetostatics_mechanism_workspace).
 !> Each room's module comment gives its method. The core names no element
 !> kind: what it needs of an element it asks element_t (kinetostatics_state).
 module kinetostatics_mechanism
@@ -34,6 +36,7 @@ module kinetostatics_mechanism
   use kinetostatics_contact, only: contact_t, contact_state_t, contact_kinematics, NORMAL_FRAME_FORCE, &
     NORMAL_CUT_FORCE
   use kinetostatics_force_law, only: force_law_t, force_law_box_t
+  use kinetostatics_mechanism_workspace, only: mechanism_workspace_t
   use kinetostatics_closure_blocks, only: closure_blocks_t, element_reach_t, build_closure_blocks, &
     find_element_links, downstream_of
   implicit none (type, external)
@@ -95,14 +98,8 @@ module kinetostatics_mechanism
     real(wp) :: closure_tolerance = 1e-10_wp   !< max |g - target| accepted (measurement units)
     logical :: ready = .false.
     logical :: warm = .false.                  !< a closure has converged in this run (a warm start exists)
-    logical :: converged = .false.             !< beta holds it (else start_r does: the last solve failed)
-    ! the (t, q, s) and law switches of the last completed `dynamics`: its results still hold while no
-    ! position pass or law evaluation has run since (a record at the state a root function just saw)
-    logical :: dynamics_known = .false.
-    real(wp) :: known_t = 0
-    real(wp), allocatable :: known_q(:), known_s(:)
-    logical, allocatable :: known_active(:)
-    integer :: dynamics_reused = 0
+    logical :: converged = .false.             !< beta holds it (else work%start_r does: the last solve failed)
+    integer :: dynamics_reused = 0            !< dynamics that returned the cached results (workspace)
     ! results of the last evaluation
     real(wp), allocatable :: lambda(:)        ! cut forces of the closure measurements
     real(wp), allocatable :: mu(:)            ! cut forces of the rate constraints
@@ -123,18 +120,13 @@ module kinetostatics_mechanism
     integer, allocatable :: beta_pass(:)   ! the elements the dependent coordinates reach (downstream_of)
     integer, allocatable :: unknowns_pass(:)   ! ... and those the unknown rates [beta'; sigma'] reach
     integer, allocatable :: unknowns(:), rows(:)   ! scalars of x = [beta; sigma] and of the rows [g; c]
-    ! work arrays
-    real(wp), allocatable :: work_r(:), gq(:)
-    real(wp), allocatable :: work_x(:)   ! the combined [beta'; sigma'] system
-    real(wp), allocatable :: x_r(:), start_r(:), res_r(:), work_f(:), work_c(:)   ! (gfortran puts
-                                                                                  ! automatic arrays on the heap)
-    real(wp), allocatable :: unit_power(:)
-    real(wp), allocatable :: chol(:, :), g_mat(:, :), p_mat(:, :), h_mat(:, :), n0(:), block(:, :), &
-      block_rhs(:), signs(:)
+    real(wp), allocatable :: gq(:)            ! generalized forces at the speeds of the last inverse dynamics
+    real(wp), allocatable :: unit_power(:)    ! power of each law's loads per unit factor (scaled: per |N|)
+    real(wp), allocatable :: g_mat(:, :), p_mat(:, :), h_mat(:, :)   ! G, P, H (kinetostatics_mechanism_twists,
+                                                                     ! kinetostatics_mechanism_dynamics)
     integer, allocatable :: scaled_laws(:)    ! indices of the scaled laws
     integer, allocatable :: block_row(:)      ! row (1..nb) of each scaled law's contact in the block
     integer, allocatable :: block_contact(:)  ! contact of each block row
-    integer, allocatable :: ipiv_block(:)
     ! M and G from the partial twists of the tracked frames (dynamics, find_mass_twists); with an
     ! element of unknown links (twist_route false) from inverse-dynamics passes per column instead
     logical :: twist_route = .false.
@@ -146,12 +138,8 @@ module kinetostatics_mechanism
     integer, allocatable :: tracked_slot(:)      ! each frame's place in tracked (0: not kept)
     integer, allocatable :: masses(:), mass_slot(:)   ! the mass elements, their frames' places in tracked
     integer, allocatable :: normal_contacts(:)   ! contacts with N from the force on a frame (normal_pass order)
-    real(wp), allocatable :: twist(:, :, :)      ! (6, tracked, ns): (alpha, a) per unit s'_i at rest (= (omega, v) per unit s_i)
-    real(wp), allocatable :: wrench(:, :, :)     ! (6, tracked, ns): inertial (torque, force) per unit s'_i
     integer, allocatable :: moving_unknowns(:)   ! the unknowns whose open motion moves a tracked frame
-    real(wp), allocatable :: unknown_twist(:, :, :)   ! (6, tracked, moving unknowns): per unit rate, nothing solved
-    real(wp), allocatable :: nu(:, :, :)         ! (6, tracked, contacts): N = -normal_sign nu_c . wrenches
-    real(wp), allocatable :: load_wrench(:, :)   ! (6, tracked): a scaled law's unit loads
+    type(mechanism_workspace_t) :: work          ! work arrays and the cache of the last dynamics
   contains
     procedure :: add_frame, add_scalar, add_element, add_loop, add_contact, add_law, set_coordinates, finalize
     procedure :: add_rate_constraint, set_kinematic, set_loop_branch, add_monitor

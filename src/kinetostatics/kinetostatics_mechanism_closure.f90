@@ -51,7 +51,7 @@ contains
       self%scalars(self%beta(k))%q = x(k)
     end do
     f = 0
-    self%dynamics_known = .false.
+    self%work%dynamics_known = .false.
     do k = 1, size(self%beta_pass)
       call self%elements(self%beta_pass(k))%e%position(self%frames, self%scalars, status)
       if (.not. status%ok()) return
@@ -196,7 +196,7 @@ contains
       return
     end if
     self%closure_solves = self%closure_solves + 1
-    associate (x => self%x_r, start => self%start_r, res => self%res_r)
+    associate (x => self%work%x_r, start => self%work%start_r, res => self%work%res_r)
     ! the warm start: the last solution, kept in start_r after a failed solve
     ! (whose scalars hold its last iterate); before any solution, the scalars
     if (self%converged .or. .not. self%warm) then
@@ -210,7 +210,7 @@ contains
     ! one position pass instead of r velocity passes), then, if that contracts
     ! slowly, with J_beta at the iterate (at most 4 such steps)
     x = start
-    if (predicted) x = start - self%work_r
+    if (predicted) x = start - self%work%work_r
     converged = .false.
     chord = predicted
     polished = .false.
@@ -323,9 +323,9 @@ contains
     end do
     call self%velocity_pass()
     do k = 1, self%r
-      self%work_r(k) = self%scalars(self%closure(k))%qd
+      self%work%work_r(k) = self%scalars(self%closure(k))%qd
     end do
-    call self%blocks%solve(.false., self%work_r, .false.)
+    call self%blocks%solve(.false., self%work%work_r, .false.)
     if (self%nd > 0 .or. size(self%kinematic) > 0) return
     ! The second-order term: along beta(s) = beta(q0 + s (q - q0)), beta'(0) =
     ! -work_r, and g'' = 0 gives beta''(0) = -J_beta^-1 g''|beta''=0 (an
@@ -334,7 +334,7 @@ contains
     ! (a Taylor series that converges fast; on a jump of metres it would
     ! spoil the start); it saves a Newton step on most steps of an integrator.
     do k = 1, self%r
-      self%scalars(self%beta(k))%qd = -self%work_r(k)
+      self%scalars(self%beta(k))%qd = -self%work%work_r(k)
     end do
     do k = 1, size(self%beta_pass)   ! only beta' changed
       call self%elements(self%beta_pass(k))%e%velocity(self%frames, self%scalars)
@@ -342,10 +342,11 @@ contains
     self%scalars%qdd = 0
     call self%acceleration_pass()
     do k = 1, self%r
-      self%res_r(k) = self%scalars(self%closure(k))%qdd
+      self%work%res_r(k) = self%scalars(self%closure(k))%qdd
     end do
-    call self%blocks%solve(.false., self%res_r, .false.)
-    if (0.5_wp*maxval(abs(self%res_r)) <= 0.1_wp*maxval(abs(self%work_r))) self%work_r = self%work_r + 0.5_wp*self%res_r
+    call self%blocks%solve(.false., self%work%res_r, .false.)
+    if (0.5_wp*maxval(abs(self%work%res_r)) <= 0.1_wp*maxval(abs(self%work%work_r))) &
+      self%work%work_r = self%work%work_r + 0.5_wp*self%work%res_r
   end subroutine predict_dependents
 
   !> Every loop with a branch condition on it (set_loop_branch).

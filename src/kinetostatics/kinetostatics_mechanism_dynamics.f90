@@ -39,8 +39,8 @@ contains
     integer :: i, j, k, c, nc, ns, nb, it, column
     logical :: consistent
 
-    if (self%dynamics_known .and. t == self%known_t) then
-      if (all(q == self%known_q) .and. all(qd == self%known_s) .and. &
+    if (self%work%dynamics_known .and. t == self%work%known_t) then
+      if (all(q == self%work%known_q) .and. all(qd == self%work%known_s) .and. &
           same_switches(self)) then
         qdd = self%qdd
         call self%set_velocities(qd)
@@ -58,11 +58,11 @@ contains
     call self%evaluate_laws(t, status)
     if (.not. status%ok()) return
     self%law_factor = 1
-    self%work_f = 0
-    call self%set_accelerations(self%work_f)
+    self%work%work_f = 0
+    call self%set_accelerations(self%work%work_f)
     call self%inverse_dynamics(.true., .true., LOADS_EXPLICIT)
     self%bias(:) = self%gq   ! (:): no reallocation test
-    if (nc > 0) call self%normal_forces(self%n0)
+    if (nc > 0) call self%normal_forces(self%work%n0)
 
     ! M and G, all velocities zero, applied forces off
     do k = 1, self%n_frames
@@ -80,11 +80,11 @@ contains
     if (.not. self%twist_route) then   ! (the twist route's M is symmetric and left its lower triangle in chol)
       do i = 1, self%ns   ! symmetric part's lower triangle, the factor's input (no temporary)
         do k = i, self%ns
-          self%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
+          self%work%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
         end do
       end do
     end if
-    call cholesky_factor(self%chol, lapack, column)
+    call cholesky_factor(self%work%chol, lapack, column)
     if (.not. lapack%ok()) then
       call set_status(status, STATUS_DOMAIN, 'the mass matrix is not positive definite: generalized '// &
         'coordinate '''//trim(self%scalar_names(self%q(self%speeds(column))))//''' has no inertia (a massless body or '// &
@@ -93,7 +93,7 @@ contains
     end if
     if (ns == 0) then
       self%qdd(:) = self%bias
-      call cholesky_solve(self%chol, self%qdd, status)
+      call cholesky_solve(self%work%chol, self%qdd, status)
       qdd = self%qdd
       call affine_normal_forces(self, qdd)
       self%law_power(:) = self%unit_power
@@ -111,40 +111,41 @@ contains
         call self%normal_forces(self%h_mat(:, k))
       end do
     end if
-    self%signs = 1
+    self%work%signs = 1
     consistent = .false.
     do it = 1, 6
-      self%block = 0
-      self%block(1:self%ns, 1:self%ns) = self%mass
+      self%work%block = 0
+      self%work%block(1:self%ns, 1:self%ns) = self%mass
       do j = 1, nb
-        self%block(self%ns + j, 1:self%ns) = -self%g_mat(self%block_contact(j), :)
-        self%block(self%ns + j, self%ns + j) = 1
+        self%work%block(self%ns + j, 1:self%ns) = -self%g_mat(self%block_contact(j), :)
+        self%work%block(self%ns + j, self%ns + j) = 1
       end do
       do k = 1, ns
         j = self%block_row(k)
-        self%block(1:self%ns, self%ns + j) = self%block(1:self%ns, self%ns + j) - self%p_mat(:, k)*self%signs(j)
+        self%work%block(1:self%ns, self%ns + j) = self%work%block(1:self%ns, self%ns + j) &
+                                                  - self%p_mat(:, k)*self%work%signs(j)
         do i = 1, nb
-          self%block(self%ns + i, self%ns + j) = self%block(self%ns + i, self%ns + j) &
-                                               - self%h_mat(self%block_contact(i), k)*self%signs(j)
+          self%work%block(self%ns + i, self%ns + j) = self%work%block(self%ns + i, self%ns + j) &
+                                               - self%h_mat(self%block_contact(i), k)*self%work%signs(j)
         end do
       end do
-      self%block_rhs(1:self%ns) = self%bias
+      self%work%block_rhs(1:self%ns) = self%bias
       do j = 1, nb
-        self%block_rhs(self%ns + j) = self%n0(self%block_contact(j))
+        self%work%block_rhs(self%ns + j) = self%work%n0(self%block_contact(j))
       end do
-      call lu_factor(self%block, self%ipiv_block, lapack)
+      call lu_factor(self%work%block, self%work%ipiv_block, lapack)
       if (.not. lapack%ok()) then
         call set_status(status, STATUS_DOMAIN, 'the equations of motion with friction proportional to '// &
                         'the normal forces are singular')
         return
       end if
-      call lu_solve(self%block, self%ipiv_block, self%block_rhs, status)
+      call lu_solve(self%work%block, self%work%ipiv_block, self%work%block_rhs, status)
       consistent = .true.
       do j = 1, nb
-        s_old = self%signs(j)
-        if (self%block_rhs(self%ns + j)*s_old < 0) then
+        s_old = self%work%signs(j)
+        if (self%work%block_rhs(self%ns + j)*s_old < 0) then
           consistent = .false.
-          self%signs(j) = -s_old
+          self%work%signs(j) = -s_old
         end if
       end do
       if (consistent) exit
@@ -155,15 +156,15 @@ contains
                       'Painleve-type paradox)')
       return
     end if
-    qdd = self%block_rhs(1:self%ns)
+    qdd = self%work%block_rhs(1:self%ns)
     self%qdd = qdd
     call affine_normal_forces(self, qdd)
     do k = 1, ns
       j = self%block_row(k)
-      self%normal = self%normal + self%h_mat(:, k)*self%signs(j)*self%block_rhs(self%ns + j)
+      self%normal = self%normal + self%h_mat(:, k)*self%work%signs(j)*self%work%block_rhs(self%ns + j)
     end do
     do j = 1, nb
-      self%normal(self%block_contact(j)) = self%block_rhs(self%ns + j)
+      self%normal(self%block_contact(j)) = self%work%block_rhs(self%ns + j)
     end do
     self%law_power = self%unit_power
     do k = 1, ns
@@ -180,9 +181,9 @@ contains
   subroutine full_mass_column(self, i)
     class(mechanism_t), intent(inout) :: self
     integer, intent(in) :: i
-    self%work_f = 0
-    self%work_f(i) = 1
-    call self%set_accelerations(self%work_f)
+    self%work%work_f = 0
+    self%work%work_f(i) = 1
+    call self%set_accelerations(self%work%work_f)
     call self%inverse_dynamics(.true., .false., LOADS_NONE)
     self%mass(:, i) = -self%gq
     if (size(self%contacts) > 0) call self%normal_forces(self%g_mat(:, i))
@@ -192,13 +193,13 @@ contains
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: t, q(:), qd(:)
     integer :: k
-    self%known_t = t
-    self%known_q(:) = q
-    self%known_s(:) = qd
+    self%work%known_t = t
+    self%work%known_q(:) = q
+    self%work%known_s(:) = qd
     do k = 1, self%n_laws
-      self%known_active(k) = self%laws(k)%law%active
+      self%work%known_active(k) = self%laws(k)%law%active
     end do
-    self%dynamics_known = .true.
+    self%work%dynamics_known = .true.
   end subroutine remember_dynamics
 
   !> Every law switched on or off as at the last completed `dynamics`.
@@ -207,7 +208,7 @@ contains
     integer :: k
     same = .true.
     do k = 1, self%n_laws
-      if (self%laws(k)%law%active .neqv. self%known_active(k)) same = .false.
+      if (self%laws(k)%law%active .neqv. self%work%known_active(k)) same = .false.
     end do
   end function same_switches
 
@@ -216,8 +217,8 @@ contains
     class(mechanism_t), intent(inout) :: self
     real(wp), intent(in) :: qdd(:)
     integer :: i, c
-    do c = 1, size(self%n0)   ! no matmul: its result would be a heap temporary
-      self%normal(c) = self%n0(c)
+    do c = 1, size(self%work%n0)   ! no matmul: its result would be a heap temporary
+      self%normal(c) = self%work%n0(c)
       do i = 1, self%ns
         self%normal(c) = self%normal(c) + self%g_mat(c, i)*qdd(i)
       end do
@@ -241,9 +242,9 @@ contains
     call self%set_accelerations(qdd)
     call self%inverse_dynamics(.true., .true., LOADS_ALL)
     residual = maxval(abs(self%gq))
-    call self%normal_forces(self%work_c)
+    call self%normal_forces(self%work%work_c)
     do c = 1, size(self%contacts)
-      self%contacts(c)%normal_force = self%work_c(c)
+      self%contacts(c)%normal_force = self%work%work_c(c)
     end do
   end procedure evaluate
 end submodule kinetostatics_mechanism_dynamics

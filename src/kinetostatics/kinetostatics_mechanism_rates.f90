@@ -27,7 +27,7 @@ contains
   !> Every element but the record-only ones (record_pass).
   module procedure position_pass
     integer :: k
-    self%dynamics_known = .false.
+    self%work%dynamics_known = .false.
     do k = 1, self%n_elements
       if (self%elements(k)%e%record_only) cycle
       call self%elements(k)%e%position(self%frames, self%scalars, status)
@@ -158,53 +158,53 @@ contains
       if (self%nd == 0) then
         if (level == 1) then
           do k = 1, self%r
-            self%work_r(k) = self%scalars(self%closure(k))%qd
+            self%work%work_r(k) = self%scalars(self%closure(k))%qd
           end do
         else
           do k = 1, self%r
-            self%work_r(k) = self%scalars(self%closure(k))%qdd
+            self%work%work_r(k) = self%scalars(self%closure(k))%qdd
           end do
         end if
-        call self%blocks%solve(.false., self%work_r, .false.)
+        call self%blocks%solve(.false., self%work%work_r, .false.)
         if (level == 1) then
           do k = 1, self%r
-            self%scalars(self%beta(k))%qd = -self%work_r(k)
+            self%scalars(self%beta(k))%qd = -self%work%work_r(k)
           end do
         else
           do k = 1, self%r
-            self%scalars(self%beta(k))%qdd = -self%work_r(k)
+            self%scalars(self%beta(k))%qdd = -self%work%work_r(k)
           end do
         end if
       else
         if (level == 1) then
           do k = 1, self%r
-            self%work_x(k) = self%scalars(self%closure(k))%qd
+            self%work%work_x(k) = self%scalars(self%closure(k))%qd
           end do
           do k = 1, self%nd
-            self%work_x(self%r + k) = self%scalars(self%rate_outputs(k))%qd
+            self%work%work_x(self%r + k) = self%scalars(self%rate_outputs(k))%qd
           end do
         else
           do k = 1, self%r
-            self%work_x(k) = self%scalars(self%closure(k))%qdd
+            self%work%work_x(k) = self%scalars(self%closure(k))%qdd
           end do
           do k = 1, self%nd
-            self%work_x(self%r + k) = self%scalars(self%rate_outputs(k))%qdd
+            self%work%work_x(self%r + k) = self%scalars(self%rate_outputs(k))%qdd
           end do
         end if
-        call self%blocks%solve(.true., self%work_x, .false.)
+        call self%blocks%solve(.true., self%work%work_x, .false.)
         if (level == 1) then
           do k = 1, self%r
-            self%scalars(self%beta(k))%qd = -self%work_x(k)
+            self%scalars(self%beta(k))%qd = -self%work%work_x(k)
           end do
           do k = 1, self%nd
-            self%scalars(self%sigma(k))%qd = -self%work_x(self%r + k)
+            self%scalars(self%sigma(k))%qd = -self%work%work_x(self%r + k)
           end do
         else
           do k = 1, self%r
-            self%scalars(self%beta(k))%qdd = -self%work_x(k)
+            self%scalars(self%beta(k))%qdd = -self%work%work_x(k)
           end do
           do k = 1, self%nd
-            self%scalars(self%sigma(k))%qdd = -self%work_x(self%r + k)
+            self%scalars(self%sigma(k))%qdd = -self%work%work_x(self%r + k)
           end do
         end if
       end if
@@ -236,14 +236,14 @@ contains
     call self%force_pass(inertia, applied, self%lambda, loads)
     if (self%nd > 0) then
       do k = 1, self%r
-        self%work_x(k) = self%scalars(self%beta(k))%force
+        self%work%work_x(k) = self%scalars(self%beta(k))%force
       end do
       do k = 1, self%nd
-        self%work_x(self%r + k) = self%scalars(self%sigma(k))%force
+        self%work%work_x(self%r + k) = self%scalars(self%sigma(k))%force
       end do
-      call self%blocks%solve(.true., self%work_x, .true.)
-      self%lambda = -self%work_x(1:self%r)
-      self%mu = -self%work_x(self%r + 1:)
+      call self%blocks%solve(.true., self%work%work_x, .true.)
+      self%lambda = -self%work%work_x(1:self%r)
+      self%mu = -self%work%work_x(self%r + 1:)
       call self%force_pass(inertia, applied, self%lambda, loads)
     else if (self%r > 0) then
       do k = 1, self%r
@@ -281,7 +281,7 @@ contains
   module procedure evaluate_laws
     integer :: k, i
     real(wp) :: p
-    self%dynamics_known = .false.
+    self%work%dynamics_known = .false.
     do k = 1, size(self%contacts)
       call contact_kinematics(self%contacts(k), self%frames, self%contact_states(k))
     end do

@@ -247,15 +247,16 @@ contains
     associate (n => self%ns, nx => self%r + self%nd)
       allocate (self%lambda(self%r), self%mu(self%nd), self%rates(self%f), self%qdd(n), self%mass(n, n), &
                 self%bias(n))
-      allocate (self%work_r(self%r), self%gq(n), self%work_x(nx))
-      allocate (self%x_r(self%r), self%start_r(self%r), self%res_r(self%r), self%work_f(n), self%work_c(nc))
-      allocate (self%known_q(self%f), self%known_s(n), self%known_active(self%n_laws))
+      allocate (self%work%work_r(self%r), self%gq(n), self%work%work_x(nx))
+      allocate (self%work%x_r(self%r), self%work%start_r(self%r), self%work%res_r(self%r), self%work%work_f(n), &
+                self%work%work_c(nc))
+      allocate (self%work%known_q(self%f), self%work%known_s(n), self%work%known_active(self%n_laws))
       allocate (self%contact_states(nc), self%normal(nc), self%law_factor(self%n_laws), &
                 self%law_power(self%n_laws), self%unit_power(self%n_laws), self%law_roots(nr))
-      allocate (self%chol(n, n), self%g_mat(nc, n), self%p_mat(n, ns), &
-                self%h_mat(nc, ns), self%n0(nc), self%block(n + nb, n + nb), &
-                self%block_rhs(n + nb), self%signs(nb))
-      allocate (self%ipiv_block(n + nb))
+      allocate (self%work%chol(n, n), self%g_mat(nc, n), self%p_mat(n, ns), &
+                self%h_mat(nc, ns), self%work%n0(nc), self%work%block(n + nb, n + nb), &
+                self%work%block_rhs(n + nb), self%work%signs(nb))
+      allocate (self%work%ipiv_block(n + nb))
     end associate
     self%lambda = 0
     self%mu = 0
@@ -277,7 +278,7 @@ contains
     call find_closure_blocks(self)
     self%converged = .false.
     self%warm = .false.
-    self%dynamics_known = .false.
+    self%work%dynamics_known = .false.
   end procedure set_blocked
 
   !> The closure's blocks: x = [beta; sigma], rows [g; c], one group per loop
@@ -362,10 +363,11 @@ contains
     nx = self%r + self%nd
     self%moving_unknowns = pack([(k, k = 1, nx)], self%blocks%unknown_pass_start(2:nx + 1) > &
                                                   self%blocks%unknown_pass_start(1:nx))
-    if (allocated(self%twist)) deallocate (self%twist, self%wrench, self%unknown_twist, self%nu, self%load_wrench)
-    allocate (self%twist(6, nt, self%ns), self%wrench(6, nt, self%ns), &
-              self%unknown_twist(6, nt, size(self%moving_unknowns)), &
-              self%nu(6, nt, size(self%contacts)), self%load_wrench(6, nt))
+    if (allocated(self%work%twist)) deallocate (self%work%twist, self%work%wrench, self%work%unknown_twist, &
+                                                self%work%nu, self%work%load_wrench)
+    allocate (self%work%twist(6, nt, self%ns), self%work%wrench(6, nt, self%ns), &
+              self%work%unknown_twist(6, nt, size(self%moving_unknowns)), &
+              self%work%nu(6, nt, size(self%contacts)), self%work%load_wrench(6, nt))
   end subroutine find_mass_twists
 
   !> Dependent rates, constraint outputs and kinematic coordinates must be

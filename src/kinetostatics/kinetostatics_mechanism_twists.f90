@@ -56,24 +56,24 @@ contains
         if (self%blocks%mass_blocked) then
           call unit_column(self, i)
         else
-          self%work_f = 0
-          self%work_f(i) = 1
-          call self%set_accelerations(self%work_f)
-          call keep_twists(self, self%twist(:, :, i))
+          self%work%work_f = 0
+          self%work%work_f(i) = 1
+          call self%set_accelerations(self%work%work_f)
+          call keep_twists(self, self%work%twist(:, :, i))
         end if
       end do
       if (.not. self%blocks%mass_blocked) call clear_accelerations(self)
     end if
-    call clear_sequence(size(self%wrench), self%wrench)
+    call clear_sequence(size(self%work%wrench), self%work%wrench)
     do b = 1, size(self%masses)
       if (self%mass_slot(b) == 0) cycle   ! a mass on the ground
       call self%elements(self%masses(b))%e%world_inertia(mass, s, inertia_w)
-      call add_inertial_wrenches(self%ns, size(self%tracked), self%mass_slot(b), mass, s, inertia_w, self%twist, &
-                                 self%wrench)
+      call add_inertial_wrenches(self%ns, size(self%tracked), self%mass_slot(b), mass, s, inertia_w, self%work%twist, &
+                                 self%work%wrench)
     end do
     ! M(j, i) = -(twist_j . wrench_i), and its lower triangle, the factor's input
-    call symmetric_transposed_product(6*size(self%tracked), self%ns, self%twist, self%wrench, -1.0_wp, self%mass, &
-                                      self%chol)
+    call symmetric_transposed_product(6*size(self%tracked), self%ns, self%work%twist, self%work%wrench, -1.0_wp, &
+                                      self%mass, self%work%chol)
     if (size(self%contacts) > 0) call twist_normal_forces(self)
   end procedure twist_mass_matrix
 
@@ -123,7 +123,7 @@ contains
       call self%elements(self%blocks%mass_pass(p))%e%acceleration(self%frames, self%scalars)
     end do
     if (last >= first) then
-      associate (bl => self%blocks, x => self%work_x, touched => self%blocks%touched(first:last))
+      associate (bl => self%blocks, x => self%work%work_x, touched => self%blocks%touched(first:last))
         do l = 1, size(touched)
           do m = 1, size(bl%blocks(touched(l))%members)
             j = bl%blocks(touched(l))%members(m)
@@ -141,7 +141,7 @@ contains
       call accelerate(self, self%blocks%second_pass(self%blocks%second_pass_start(i): &
                                                     self%blocks%second_pass_start(i + 1) - 1))
     end if
-    call keep_twists(self, self%twist(:, :, i))
+    call keep_twists(self, self%work%twist(:, :, i))
     ! the sources back to rest (the outputs: clear_before)
     self%scalars(speed)%qdd = 0
     do l = first, last
@@ -171,7 +171,7 @@ contains
     do p = self%blocks%mass_pass_start(i), self%blocks%mass_pass_start(i + 1) - 1
       call self%elements(self%blocks%mass_pass(p))%e%velocity(self%frames, self%scalars)
     end do
-    call keep_velocity_twists(self, self%twist(:, :, i))
+    call keep_velocity_twists(self, self%work%twist(:, :, i))
     self%scalars(speed)%qd = 0
   end subroutine velocity_column
 
@@ -232,16 +232,16 @@ contains
       self%scalars(self%unknowns(k))%qdd = 1
       call accelerate(self, self%blocks%unknown_pass(self%blocks%unknown_pass_start(k): &
                                                      self%blocks%unknown_pass_start(k + 1) - 1))
-      call keep_twists(self, self%unknown_twist(:, :, l))
+      call keep_twists(self, self%work%unknown_twist(:, :, l))
       self%scalars(self%unknowns(k))%qdd = 0
     end do
     l = 0
     do c = 1, size(self%contacts)
       associate (contact => self%contacts(c))
         if (contact%normal_rule == NORMAL_CUT_FORCE) then
-          self%nu(:, :, c) = 0
-          self%work_x = 0
-          self%work_x(contact%normal_row) = -1
+          self%work%nu(:, :, c) = 0
+          self%work%work_x = 0
+          self%work%work_x(contact%normal_row) = -1
         else
           l = l + 1
           f = contact%normal_frame
@@ -250,20 +250,22 @@ contains
           self%frames(f)%a = self%frames(f)%rot(:, 3)
           call accelerate(self, self%blocks%normal_pass(self%blocks%normal_pass_start(l): &
                                                         self%blocks%normal_pass_start(l + 1) - 1))
-          call keep_twists(self, self%nu(:, :, c))
+          call keep_twists(self, self%work%nu(:, :, c))
           do k = 1, nx
-            self%work_x(k) = self%scalars(self%rows(k))%qdd
+            self%work%work_x(k) = self%scalars(self%rows(k))%qdd
           end do
           self%frames(f)%a = 0
         end if
       end associate
       if (size(self%moving_unknowns) == 0) cycle
-      call self%blocks%solve(self%nd > 0, self%work_x, .false.)
+      call self%blocks%solve(self%nd > 0, self%work%work_x, .false.)
       do k = 1, size(self%moving_unknowns)
-        self%nu(:, :, c) = self%nu(:, :, c) - self%work_x(self%moving_unknowns(k))*self%unknown_twist(:, :, k)
+        self%work%nu(:, :, c) = self%work%nu(:, :, c) &
+                                - self%work%work_x(self%moving_unknowns(k))*self%work%unknown_twist(:, :, k)
       end do
     end do
-    call transposed_product(6*size(self%tracked), size(self%contacts), self%ns, self%nu, self%wrench, self%g_mat)
+    call transposed_product(6*size(self%tracked), size(self%contacts), self%ns, self%work%nu, self%work%wrench, &
+                            self%g_mat)
     do c = 1, size(self%contacts)
       factor = -self%contacts(c)%normal_sign   ! +-1: the products are exact
       do i = 1, self%ns
@@ -281,7 +283,7 @@ contains
     integer :: k, j, t, c
     logical :: tracked
     do k = 1, size(self%scaled_laws)
-      self%load_wrench = 0
+      self%work%load_wrench = 0
       tracked = .true.
       associate (loads => self%laws(self%scaled_laws(k))%law%loads)
         do j = 1, size(loads)
@@ -291,8 +293,8 @@ contains
             tracked = .false.
             exit
           end if
-          self%load_wrench(1:3, t) = self%load_wrench(1:3, t) + loads(j)%torque
-          self%load_wrench(4:6, t) = self%load_wrench(4:6, t) + loads(j)%force
+          self%work%load_wrench(1:3, t) = self%work%load_wrench(1:3, t) + loads(j)%torque
+          self%work%load_wrench(4:6, t) = self%work%load_wrench(4:6, t) + loads(j)%force
         end do
       end associate
       if (.not. tracked) then
@@ -301,8 +303,9 @@ contains
         call self%normal_forces(self%h_mat(:, k))
         cycle
       end if
-      call transposed_product(6*size(self%tracked), self%ns, 1, self%twist, self%load_wrench, self%p_mat(:, k))
-      call transposed_product(6*size(self%tracked), size(self%contacts), 1, self%nu, self%load_wrench, &
+      call transposed_product(6*size(self%tracked), self%ns, 1, self%work%twist, self%work%load_wrench, &
+                              self%p_mat(:, k))
+      call transposed_product(6*size(self%tracked), size(self%contacts), 1, self%work%nu, self%work%load_wrench, &
                               self%h_mat(:, k))
       do c = 1, size(self%contacts)
         self%h_mat(c, k) = -self%contacts(c)%normal_sign*self%h_mat(c, k)
