@@ -17,18 +17,23 @@ contains
 
   !> table(k, i) is column k of data line i; between min_columns and
   !> max_columns columns, at most max_rows lines; column k within bounds(k).
-  subroutine read_csv_table(path, min_columns, max_columns, max_rows, bounds, table, status)
+  !> `lines(i)`: the file's line number of data line i (for the messages of
+  !> checks made on the table later).
+  subroutine read_csv_table(path, min_columns, max_columns, max_rows, bounds, table, status, lines)
     character(len=*), intent(in) :: path
     integer, intent(in) :: min_columns, max_columns, max_rows
     type(bounds_t), intent(in) :: bounds(:)
     real(wp), allocatable, intent(out) :: table(:, :)
     type(status_t), intent(inout) :: status
+    integer, allocatable, intent(out), optional :: lines(:)
     character(len=:), allocatable :: text, line
+    integer, allocatable :: line_of(:)
     real(wp), allocatable :: rows(:, :)
     integer :: start, line_no, columns, n, k, next
     logical :: header_allowed
 
     allocate (table(0, 0))
+    if (present(lines)) allocate (lines(0))
     call read_text_file(path, 'CSV file', text, status)
     if (.not. status%ok()) return
     columns = 0
@@ -62,7 +67,7 @@ contains
           call fail('has '//format_integer(columns)//' columns; '//columns_wanted())
           return
         end if
-        allocate (rows(columns, 64))
+        allocate (rows(columns, 64), line_of(64))
       end if
       if (count_fields(line) /= columns) then
         call fail('has '//format_integer(count_fields(line))//' columns, the lines before it '// &
@@ -73,8 +78,12 @@ contains
         call fail('more than '//format_integer(max_rows)//' lines of numbers')
         return
       end if
-      if (n == size(rows, 2)) rows = reshape(rows, [columns, 2*n], pad=[0.0_wp])
+      if (n == size(rows, 2)) then
+        rows = reshape(rows, [columns, 2*n], pad=[0.0_wp])
+        line_of = [line_of, spread(0, 1, n)]
+      end if
       n = n + 1
+      line_of(n) = line_no
       do k = 1, columns
         call take_cell(field(line, k), k, rows(k, n))
         if (.not. status%ok()) return
@@ -85,6 +94,7 @@ contains
       return
     end if
     table = rows(:, :n)
+    if (present(lines)) lines = line_of(:n)
 
   contains
 

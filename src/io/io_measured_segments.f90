@@ -1,16 +1,18 @@
 !> The measured speeds on segments of the slide in &identify of the
 !> scenarios identify_water and identify_rider (docs/design.md): a CSV file
 !> `segments_file` (start, end, speed per row) or the lists segment_start,
-!> segment_end, segment_speed; read one way for both.
+!> segment_end, segment_speed; read one way for both. The checks of
+!> measured places (in order, a segment's end after its start) refuse a
+!> value where it was given: the CSV file's line, or the input's list.
 module io_measured_segments
   use base_kinds, only: wp
   use base_text, only: format_integer
-  use base_status, only: status_t, prefix_status
-  use io_input, only: input_text_t, group_reader_t, in_range, above
+  use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
+  use io_input, only: input_text_t, group_reader_t, in_range, above, format_real
   use io_csv, only: read_csv_table
   implicit none (type, external)
   private
-  public :: read_measured_segments
+  public :: read_measured_segments, check_in_order, refuse_measured
 
   integer, parameter :: max_segments = 1000
   real(wp), parameter :: longest = 1e6_wp   !< m, the largest arc length taken
@@ -31,6 +33,7 @@ contains
     character(len=*), parameter :: names(3) = [character(len=13) :: 'segment_start', 'segment_end', &
                                                 'segment_speed']
     real(wp), allocatable :: table(:, :)
+    integer, allocatable :: lines(:)
     integer :: k
     path = ''
     allocate (starts(0), ends(0), speeds(0))
@@ -43,7 +46,7 @@ contains
       end do
       path = input%resolve_path(segments_file)
       call read_csv_table(path, 3, 3, max_segments, [in_range(0.0_wp, longest, 'm'), &
-                          in_range(0.0_wp, longest, 'm'), above(0.0_wp, 100.0_wp, 'm/s')], table, status)
+                          in_range(0.0_wp, longest, 'm'), above(0.0_wp, 100.0_wp, 'm/s')], table, status, lines)
       if (.not. status%ok()) then
         call prefix_status(status, r%where('segments_file')//': &identify: segments_file')
         return
@@ -57,12 +60,95 @@ contains
       call r%get_list('segment_speed', speeds, max_segments, above(0.0_wp, 100.0_wp, 'm/s'), status)
       if (.not. status%ok()) return
       if (twin) speeds = 0*starts
-      if (size(ends) /= size(starts) .or. size(speeds) /= size(starts)) then
-        call r%invalid('segment_end', format_integer(size(ends))//' ends, '//format_integer(size(speeds))// &
-                       ' speeds', 'one end and one speed per segment start ('//format_integer(size(starts))//')', &
-                       status)
-        return
-      end if
+      call check_counts([size(starts), size(ends), size(speeds)], .not. twin, r, status)
+      if (.not. status%ok()) return
+      lines = [(0, k=1, size(starts))]
     end if
+    do k = 1, size(starts)
+      if (ends(k) > starts(k)) cycle
+      call refuse_measured(r, 'segments_file', path, lines, 'segment_end', k, format_real(ends(k)), &
+                           'segment '//format_integer(k)//' must end after its start '//format_real(starts(k))// &
+                           ' m', status)
+      return
+    end do
   end subroutine read_measured_segments
+
+  !> Places along the slide (stations, sections) that must each lie after
+  !> the one before: the first that does not is refused where it was given.
+  subroutine check_in_order(places, r, file_variable, path, lines, variable, what, status)
+    real(wp), intent(in) :: places(:)   ! m
+    type(group_reader_t), intent(in) :: r
+    character(len=*), intent(in) :: file_variable, path, variable, what   ! what: 'station', 'section'
+    integer, intent(in) :: lines(:)
+    type(status_t), intent(inout) :: status
+    integer :: k
+    do k = 2, size(places)
+      if (places(k) > places(k - 1)) cycle
+      call refuse_measured(r, file_variable, path, lines, variable, k, format_real(places(k)), &
+                           what//' '//format_integer(k)//' must lie after the one before it ('// &
+                           format_real(places(k - 1))//' m): list them in order along the slide', status)
+      return
+    end do
+  end subroutine check_in_order
+
+  !> Refuses measurement k: from a CSV file (`path` not empty) at its line,
+  !> naming the input's variable that names the file; from the input's list
+  !> `variable` as any refused value (file:line: &group: variable(k) = ...).
+  subroutine refuse_measured(r, file_variable, path, lines, variable, k, value, allowed, status)
+    type(group_reader_t), intent(in) :: r
+    character(len=*), intent(in) :: file_variable, path, variable, value, allowed
+    integer, intent(in) :: lines(:), k
+    type(status_t), intent(inout) :: status
+    if (len(path) > 0) then
+      call set_status(status, STATUS_INVALID_INPUT, path//':'//format_integer(lines(k))//': '//value// &
+                      ' is not allowed: '//allowed//' (the file named by '//r%where(file_variable)//': &'// &
+                      r%group//' '//file_variable//')')
+    else
+      call r%invalid(variable//'('//format_integer(k)//')', value, allowed, status)
+    end if
+  end subroutine refuse_measured
+
+  !> One start, end and speed per segment. Of three lists the one whose
+  !> length differs from the other two is refused (all three named when all
+  !> differ); of two (a twin experiment synthesises the speeds) the longer,
+  !> which has the extra values.
+  subroutine check_counts(counts, with_speeds, r, status)
+    integer, intent(in) :: counts(3)   ! of segment_start, segment_end, segment_speed
+    logical, intent(in) :: with_speeds
+    type(group_reader_t), intent(in) :: r
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: names(3) = [character(len=13) :: 'segment_start', 'segment_end', &
+                                                'segment_speed']
+    character(len=*), parameter :: one = 'one start, end and speed per segment'
+    integer :: k, other(2)
+    if (.not. with_speeds) then
+      if (counts(1) == counts(2)) return
+      k = merge(1, 2, counts(1) > counts(2))
+      call r%invalid(trim(names(k)), shown(trim(names(k))), format_integer(counts(k))//' values where '// &
+                     trim(names(3 - k))//' has '//format_integer(counts(3 - k))//': one start and one end per '// &
+                     'segment (a twin experiment synthesises the speeds)', status)
+      return
+    end if
+    if (all(counts == counts(1))) return
+    do k = 1, 3
+      other = pack([1, 2, 3], [1, 2, 3] /= k)
+      if (counts(other(1)) /= counts(other(2))) cycle
+      call r%invalid(trim(names(k)), shown(trim(names(k))), format_integer(counts(k))//' values where '// &
+                     trim(names(other(1)))//' and '//trim(names(other(2)))//' have '// &
+                     format_integer(counts(other(1)))//': '//one, status)
+      return
+    end do
+    call r%invalid('segment_start', shown('segment_start'), one//': segment_start, segment_end and '// &
+                   'segment_speed have '//format_integer(counts(1))//', '//format_integer(counts(2))//' and '// &
+                   format_integer(counts(3))//' values', status)
+
+  contains
+
+    function shown(name) result(text)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: text
+      text = r%written(name)
+      if (len(text) == 0) text = '(not given)'
+    end function shown
+  end subroutine check_counts
 end module io_measured_segments

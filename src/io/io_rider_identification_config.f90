@@ -10,7 +10,7 @@ module io_rider_identification_config
   use design_rider_identification, only: rider_measurements_t, rider_fit_options_t
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, bounds_t, format_real
   use io_csv, only: read_csv_table
-  use io_measured_segments, only: read_measured_segments
+  use io_measured_segments, only: read_measured_segments, check_in_order
   implicit none (type, external)
   private
   public :: rider_identification_config_t, read_rider_identification_config
@@ -36,6 +36,7 @@ contains
     type(group_reader_t) :: r
     character(len=1024) :: stations_file, segments_file
     real(wp), allocatable :: table(:, :), s(:), pelvis(:), heels(:), back(:)
+    integer, allocatable :: lines(:)
     real(wp), parameter :: big = 1e6_wp
     character(len=*), parameter :: names(18) = [character(len=20) :: 'stations_file', 'segments_file', &
       'station_arc_length', 'pelvis_angle', 'heels_angle', 'back_angle', 'segment_start', 'segment_end', &
@@ -84,11 +85,14 @@ contains
       config%stations_file = input%resolve_path(stations_file)
       call read_csv_table(config%stations_file, 4, 4, max_stations, [in_range(0.0_wp, big, 'm'), &
                           in_range(-4.0_wp, 4.0_wp, 'rad'), in_range(-4.0_wp, 4.0_wp, 'rad'), &
-                          in_range(-4.0_wp, 4.0_wp, 'rad')], table, status)
+                          in_range(-4.0_wp, 4.0_wp, 'rad')], table, status, lines)
       if (.not. status%ok()) then
         call prefix_status(status, r%where('stations_file')//': &identify: stations_file')
         return
       end if
+      call check_in_order(table(1, :), r, 'stations_file', config%stations_file, lines, 'station_arc_length', &
+                          'station', status)
+      if (.not. status%ok()) return
       config%data%station_arc_length = table(1, :)
       config%data%angle = table(2:4, :)
     else
@@ -109,6 +113,8 @@ contains
                        'one angle of each contact per station ('//format_integer(size(s))//' stations)', status)
         return
       end if
+      call check_in_order(s, r, 'stations_file', '', [(0, k=1, size(s))], 'station_arc_length', 'station', status)
+      if (.not. status%ok()) return
       config%data%station_arc_length = s
       allocate (config%data%angle(N_CONTACTS, size(s)))
       config%data%angle(1, :) = pelvis

@@ -10,7 +10,7 @@ module io_water_identification_config
     SPEED_PASSAGE, MIDDLE_EDGES, MIDDLE_STREAMLINE
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, format_real
   use io_csv, only: read_csv_table
-  use io_measured_segments, only: read_measured_segments
+  use io_measured_segments, only: read_measured_segments, check_in_order
   implicit none (type, external)
   private
   public :: water_identification_config_t, read_water_identification_config
@@ -39,6 +39,8 @@ contains
     character(len=1024) :: sections_file, segments_file
     character(len=10) :: speed_kind, middle_kind
     real(wp), allocatable :: table(:, :), s(:), v(:)
+    integer, allocatable :: lines(:)
+    integer :: k
     real(wp), parameter :: big = 1e6_wp
     character(len=*), parameter :: names(19) = [character(len=18) :: 'sections_file', 'segments_file', &
       'section_arc_length', 'section_v', 'segment_start', 'segment_end', 'segment_speed', 'weight', 'k1', &
@@ -71,11 +73,14 @@ contains
       end if
       config%sections_file = input%resolve_path(sections_file)
       call read_csv_table(config%sections_file, 2, 2, max_sections, [in_range(0.0_wp, big, 'm'), &
-                          in_range(-4.0_wp, 8.0_wp, 'rad')], table, status)
+                          in_range(-4.0_wp, 8.0_wp, 'rad')], table, status, lines)
       if (.not. status%ok()) then
         call prefix_status(status, r%where('sections_file')//': &identify: sections_file')
         return
       end if
+      call check_in_order(table(1, :), r, 'sections_file', config%sections_file, lines, 'section_arc_length', &
+                          'section', status)
+      if (.not. status%ok()) return
       config%data%section_arc_length = table(1, :)
       config%data%section_v = table(2, :)
     else
@@ -89,6 +94,8 @@ contains
                        format_integer(size(s))//' sections)', status)
         return
       end if
+      call check_in_order(s, r, 'sections_file', '', [(0, k=1, size(s))], 'section_arc_length', 'section', status)
+      if (.not. status%ok()) return
       config%data%section_arc_length = s
       config%data%section_v = v
     end if

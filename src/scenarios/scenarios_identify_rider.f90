@@ -26,6 +26,8 @@ module scenarios_identify_rider
   use io_summary, only: summary_t
   use io_xdmf, only: attach_surface_view
   use scenarios_water, only: build_water, write_slide_grid
+  use scenarios_ride, only: refuse_start
+  use rider_ride, only: check_ride_start
   implicit none (type, external)
   private
   public :: run_identify_rider, identify_rider_groups
@@ -81,6 +83,15 @@ contains
     setup%threads = config%threads
     setup%with_water = rider%params%drag
     call new_rider_identification(setup, status)
+    if (.not. status%ok()) call prefix_status(status, '&identify')
+    ! the same start the ride scenario refuses is refused here (not a failed fit)
+    if (status%ok()) then
+      call check_ride_start(setup%params, setup%slide, setup%options, status)
+      if (.not. status%ok()) then
+        call refuse_start(input, rider, status)
+        return
+      end if
+    end if
     if (.not. (rider%params%mu >= config%options%lower .and. rider%params%mu <= config%options%upper)) &
       call set_status(status, STATUS_INVALID_INPUT, 'the start value &rider mu = '// &
                       format_short(rider%params%mu)//' must lie within &identify lower, upper = '// &

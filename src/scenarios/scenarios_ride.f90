@@ -6,6 +6,7 @@
 !> heels and back reach the slide at the start.
 module scenarios_ride
   use base_kinds, only: wp
+  use base_constants, only: pi
   use base_text, only: format_short, format_integer
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT, STATUS_LIMITS_EXCEEDED
   use base_log, only: log_info
@@ -18,7 +19,7 @@ module scenarios_ride
   use rider_ride, only: ride_options_t, ride_result_t, run_ride, check_ride_start
   use design_ride_evaluation, only: limit_report_unit, ride_limit_t, quantities_without_limit
   use design_ride_report, only: ride_report_t, evaluate_ride
-  use io_input, only: input_text_t, check_known_groups, format_real, invalid
+  use io_input, only: input_text_t, check_known_groups, format_real, invalid, where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
   use io_geometry_config, only: geometry_groups
@@ -31,7 +32,8 @@ module scenarios_ride
   use scenarios_water, only: build_water, write_slide_grid
   implicit none (type, external)
   private
-  public :: run_ride_scenario, ride_groups, check_sphere_radii, read_limit_gate, limits_exceeded_status
+  public :: run_ride_scenario, ride_groups, check_sphere_radii, read_limit_gate, limits_exceeded_status, &
+    refuse_start
 
   character(len=*), parameter :: ride_groups(13) = [character(len=14) :: 'run', 'solver', 'water_solver', &
     'surface', 'water', 'rider', 'evaluation', geometry_groups]
@@ -88,8 +90,7 @@ contains
       end if
       call check_ride_start(rider%params, slide, options, status)
       if (.not. status%ok()) then
-        call prefix_status(status, input%name//': &rider')
-        status%code = STATUS_INVALID_INPUT
+        call refuse_start(input, rider, status)
         return
       end if
       if (run%check_only) return
@@ -185,6 +186,21 @@ contains
     call set_status(status, STATUS_LIMITS_EXCEEDED, name//': limits exceeded: '//list// &
                     '; the results are complete (exit status 4: asked to fail on a limit)')
   end subroutine limits_exceeded_status
+
+  !> A start the rider cannot take (a contact cannot reach the slide, a
+  !> speed that does not carry it down) is bad input: refused where the
+  !> start is given (&rider u0), with the values that make it.
+  subroutine refuse_start(input, rider, status)
+    type(input_text_t), intent(in) :: input
+    type(rider_config_t), intent(in) :: rider
+    type(status_t), intent(inout) :: status
+    associate (p => rider%params)
+      call set_status(status, STATUS_INVALID_INPUT, where_given(input, 'rider', 'u0')//': &rider: the start u0 = '// &
+                      format_short(p%u0)//', v0 = '//format_short(p%v0)//', heading0_deg = '// &
+                      format_short(p%heading0*180/pi)//', speed0 = '//format_short(p%speed0)//' (height = '// &
+                      format_short(p%body%height)//' m): '//status%text())
+    end associate
+  end subroutine refuse_start
 
   !> The spheres must fit in the tube (a circular section's radius).
   subroutine check_sphere_radii(input, rider, tube, status)

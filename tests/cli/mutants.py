@@ -8,7 +8,8 @@ inside a group ...) and runs each through `slidesim --check`; a share of those
 that pass also runs fully, with a short duration. Every run must:
 
   - end by itself (no signal, within the time limit);
-  - exit 0, 1, 2 or 3, with its documented meaning: 0 a complete result file
+  - exit 0, 1, 2, 3 or 4, with its documented meaning: 0 (and 4, a limit
+    exceeded where &evaluation asks to fail on it) a complete result file
     without NaN or Inf, 1 no file at all and a message naming the input file,
     a line or a group, and a variable of the input (unless the message is
     about the file's structure: a group not closed, text outside a group),
@@ -289,7 +290,7 @@ def main():
                     failures.append(f'{label}, {phase}: no end within {timeout} s')
                     return None, ''
                 err = p.stderr.decode('utf-8', 'replace')
-                if p.returncode < 0 or p.returncode > 3:
+                if p.returncode < 0 or p.returncode > 4:
                     failures.append(f'{label}, {phase}: exit status {p.returncode} (a signal?): {err[-300:]}')
                     return None, err
                 counts[(phase, p.returncode)] = counts.get((phase, p.returncode), 0) + 1
@@ -315,7 +316,7 @@ def main():
                         failures.append(f'{label}, {phase}: exit 2 but no result file')
                     elif non_finite(out)[0] != 'incomplete':
                         failures.append(f'{label}, {phase}: exit 2 but the file is not marked incomplete')
-                elif p.returncode == 0 and phase == 'run':
+                elif p.returncode in (0, 4) and phase == 'run':
                     if not kept:
                         failures.append(f'{label}, {phase}: exit 0 but no result file')
                     else:
