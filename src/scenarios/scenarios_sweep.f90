@@ -163,7 +163,7 @@ contains
       end if
     end if
     call print_summary(sweep, result, wall, ranks, max(1, threads), file%final_path(), csv_path, run, &
-                       complete .and. kept, message, write_status)
+                       complete .and. kept, kept, message, write_status)
     if (.not. write_status%ok()) then
       status = write_status
     else if (.not. run_status%ok()) then
@@ -248,14 +248,17 @@ contains
   end subroutine check_waters
 
   !> The sweep in a few lines (stdout) and, with --summary-json, as JSON.
-  subroutine print_summary(sweep, result, wall, ranks, threads, path, csv_path, run, complete, message, status)
+  subroutine print_summary(sweep, result, wall, ranks, threads, path, csv_path, run, complete, csv_tried, &
+                           message, status)
     type(sweep_description_t), intent(in) :: sweep
     type(sweep_result_t), intent(in) :: result
     real(wp), intent(in) :: wall
     integer, intent(in) :: ranks, threads
     character(len=*), intent(in) :: path, csv_path, message
     type(run_config_t), intent(in) :: run
-    logical, intent(in) :: complete
+    ! the file complete; the CSV tried (the result file kept, also when every ride failed): its
+    ! line names it, or says it could not be written
+    logical, intent(in) :: complete, csv_tried
     type(status_t), intent(inout) :: status
     type(summary_t) :: summary
     integer :: i, worst, shown
@@ -297,9 +300,9 @@ contains
                                    count(ran), 's')
     call summary%add_count('threads', 'threads per rank', threads, '')
     call summary%add_count('ranks', 'MPI ranks', ranks, '')
+    if (csv_tried) call summary%add_text('csv', 'CSV summary', csv_path)
     if (complete) then
       call summary%add_text('results', 'results', path)
-      call summary%add_text('csv', 'CSV summary', csv_path)
     else
       call summary%add_text('results', 'results (INCOMPLETE)', path)
     end if

@@ -89,6 +89,8 @@ check '[ "$(status_of all.h5)" = "\"incomplete\"" ]' "sweep, every ride failed: 
 check 'grep -q "every ride failed (2 of 2; ride 1: at the start the heels cannot reach" "$work/all.err"' \
   "sweep, every ride failed: the message: $(cat "$work/all.err")"
 check 'h5dump -a /sweep/rides_failed "$work/all.h5" | grep -q "(0): 2"' "sweep, every ride failed: rides_failed"
+check '[ "$(wc -l <"$work/all.csv")" = 3 ] && grep -q "^  CSV summary  *all.csv$" "$work/all.out"' \
+  "sweep, every ride failed: the CSV (a header and 2 rides) and its line in the summary: $(tail -n 3 "$work/all.out")"
 
 echo "$((checks - failures)) passed, $failures failed"
 [ $failures = 0 ]
