@@ -46,8 +46,8 @@ def _values(d):
 
 
 def is_felt_acceleration(attrs):
-    """A dataset in multiples of |g| (a felt acceleration), as the file says."""
-    return "|g|" in attrs.get("description", "") and attrs.get("units") == "1"
+    """A dataset in multiples of |g| (a felt acceleration), as its description says."""
+    return "|g|" in attrs.get("description", "")
 
 
 def _variable_attrs(d):

@@ -6,7 +6,7 @@ would), so matplotlib is imported once.
 
     check_plot_scripts.py SCRIPTS WORK WRONG_KIND.h5 OTHER_KIND.h5 TEXT_FILE KIND=SCENARIO ...
 
-KIND names scripts/plot_KIND.py, SCENARIO the scenario of its own results,
+KIND names scripts/plot_KIND.py (a thin call of slidesim.plot), SCENARIO the scenario of its own results,
 WORK/KIND.h5 is such a result and WORK/KIND.png the picture written;
 WRONG_KIND.h5 is a result of another scenario than any KIND's except one,
 for which OTHER_KIND.h5 (of another scenario) is used. Prints failures; exit

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Every plot script runs headless on a result of its scenario and writes a PNG
-# (-o); each refuses a result of another scenario and a file that is not a
+# Every plot script (a thin call of the package python/slidesim) runs
+# headless on a result of its scenario and writes a PNG (-o); each refuses a result of another scenario and a file that is not a
 # result with a message naming the file (exit status 1). The results come from
 # the fixture cli_every_input (tests/cli/support/every_input.sh). Needs
 # Debian's python3-matplotlib, -h5py, -numpy (scripts/install-dependencies.sh).
@@ -25,9 +25,18 @@ link ride ride_demo_slide
 link contact contact_egg
 link egg contact_egg
 link optimization design_optimize_table_4_12
+link identify_rider design_identify_rider_demo
+link identify_water design_identify_water_demo
+link sweep sweep_demo_population
 "$python" "$root/tests/cli/check_plot_scripts.py" "$root/scripts" "$work" "$work/water.h5" "$work/sled.h5" \
   "$root/README.md" water=water slide=geometry point_mass=point_mass pendulum=pendulum fourbar=fourbar sled=sled \
-  ride=ride contact=contact egg=contact optimization=optimize || fail "plot scripts"
+  ride=ride contact=contact egg=contact optimization=optimize identify_rider=identify_rider \
+  identify_water=identify_water sweep=sweep || fail "plot scripts"
+# scripts/plot.py picks the plot by the scenario: the ride's for a ride
+"$root/scripts/plot.py" "$work/ride.h5" -o "$work/any.png" >"$work/any.log" 2>&1 || fail "plot.py: $(cat "$work/any.log")"
+cmp -s <(head -c 8 "$work/any.png") <(printf '\211PNG\r\n\032\n') || fail "plot.py wrote no PNG"
+"$root/scripts/plot.py" "$root/README.md" >"$work/any.log" 2>&1
+[ $? = 1 ] && grep -q "README.md: not an HDF5 file" "$work/any.log" || fail "plot.py on a text file: $(cat "$work/any.log")"
 # the egg plot's tilt is the symmetry axis's: the egg described with its long
 # axis on z (a chart change as it stands up) draws the shipped egg's curve
 "$python" - "$root/python" "$results/contact_egg.h5" "$results/contact_egg_long_axis_z.h5" <<'PY' || fail "plot_egg: the long axis on z"
@@ -56,5 +65,5 @@ with open(sys.argv[2].replace(".h5", ".json")) as f:
     assert "chart_changes" not in f.read()
 print(f"plot_egg: long axis on z against the shipped egg, theta within {worst:.1e} degrees")
 PY
-echo "10 plot scripts, $failures failures"
+echo "13 plot scripts and plot.py, $failures failures"
 [ "$failures" = 0 ]
