@@ -1,21 +1,48 @@
 #!/usr/bin/env bash
-# Installs what slidesim needs from Debian's packages (Debian 12): compiler, CMake,
-# LAPACK, MINPACK, SUNDIALS, HDF5 and, for the Python scripts, numpy, h5py,
-# matplotlib and scipy (Debian's scipy 1.10.1 regenerates the FITPACK tables),
-# pint and udunits-bin (the tests parse the units in result files), xarray
-# with h5netcdf (the tests open every result group with it), ParaView (the
+# Installs what slidesim needs from Debian's packages (Debian 12), in two sets:
+#
+#   install-dependencies.sh --runtime   what builds slidesim and draws its plots
+#                                       (scripts/run.sh): compiler, CMake, LAPACK,
+#                                       MINPACK, HDF5 (with its Fortran library),
+#                                       numpy, h5py and matplotlib, and what builds
+#                                       CVODE from Debian's source package (below)
+#   install-dependencies.sh [--test]    that and the test and viewer extras
+#                                       (scripts/check.sh, the default)
+#   install-dependencies.sh --list runtime|test   prints a set, installs nothing
+#
+# The extras: scipy (Debian's scipy 1.10.1 regenerates the FITPACK tables),
+# pint and udunits-bin (the tests parse the units in result files), xarray with
+# h5netcdf (the tests open every result group with it), pandas and venv (the
+# Python package's test), hdf5-tools (h5diff compares results), ParaView (the
 # tests open every XDMF file with its XDMF reader) and Open MPI (sweeps across
 # ranks: mpirun -n N slidesim sweep.nml; the build works without it).
-# Then CVODE, compiled with optimisation from Debian's own SUNDIALS source
-# package (below: Debian's binary libsundials is built without it).
+# No Debian SUNDIALS: CVODE comes from the project's own build below, and
+# Debian's libsundials-dev would bring PETSc, hypre, MUMPS and Trilinos.
 # Idempotent: installs only what is missing.
 set -euo pipefail
 
-packages=(gfortran cmake make liblapack-dev libblas-dev minpack-dev
-          libsundials-dev libsundials-fortran-dev libhdf5-dev hdf5-tools libopenmpi-dev openmpi-bin
-          python3 python3-numpy python3-h5py python3-matplotlib python3-scipy python3-pint
-          python3-xarray python3-h5netcdf udunits-bin paraview python3-paraview
-          curl ca-certificates xz-utils dpkg-dev)
+# python3-munkres: matplotlib's fonttools needs scipy or munkres; without it
+# apt takes scipy (62 MB with pythran), which only the tests use
+runtime_packages=(gfortran cmake make liblapack-dev libblas-dev minpack-dev libhdf5-dev
+                  python3 python3-numpy python3-h5py python3-matplotlib python3-munkres
+                  curl ca-certificates xz-utils dpkg-dev)
+test_packages=(hdf5-tools libopenmpi-dev openmpi-bin python3-scipy python3-pint python3-xarray
+               python3-h5netcdf python3-pandas python3-venv udunits-bin paraview python3-paraview)
+
+usage="usage: $0 [--runtime | --test | --list runtime|test]"
+case ${1:---test} in
+  --runtime) packages=("${runtime_packages[@]}") ;;
+  --test) packages=("${runtime_packages[@]}" "${test_packages[@]}") ;;
+  --list)
+    case ${2:-} in
+      runtime) printf '%s\n' "${runtime_packages[@]}" ;;
+      test) printf '%s\n' "${test_packages[@]}" ;;
+      *) echo "$usage" >&2; exit 1 ;;
+    esac
+    exit 0 ;;
+  *) echo "$usage" >&2; exit 1 ;;
+esac
+[ $# -le 1 ] || { echo "$usage" >&2; exit 1; }
 
 sudo=""
 if [ "$(id -u)" != 0 ]; then
