@@ -7,7 +7,8 @@ writes PICTURE (png, pdf or svg; default: the result's name with .png) and,
 with --show and a display, also opens a window; without a display matplotlib
 runs headless (Agg). --kind picks another plot of the same scenario (egg: the
 spinning egg's tilt against Moffatt-Shimomura, from several contact results
-compared) or insists on one (a file of another scenario is refused). Exit
+compared) or insists on one (a file of another scenario is refused).
+--movie FILM (when the package has slidesim.movie) films a ride. Exit
 status 0 done, 1 the file is not a result of a scenario with a plot (the
 message names the file and what it is) or a module is missing (the message
 names the package to install).
@@ -65,7 +66,8 @@ def parser():
     p.add_argument("--kind", choices=sorted(KINDS), help="the plot to draw (default: the one of the file's scenario)")
     p.add_argument("--x", default="mass", help="sweep: the swept variable on the x axis (default: mass)")
     if _movie_available():
-        p.add_argument("--movie", metavar="FILM", help="a ride: also a film of it (.mp4 with ffmpeg, else .gif)")
+        p.add_argument("--movie", metavar="FILM", help="a ride: its film (.mp4 with ffmpeg, else .gif; "
+                       "slidesim.movie); the picture too only with -o")
     return p
 
 
@@ -115,17 +117,20 @@ def main(argv=None):
             matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         from ..results import ResultFileError
-        output = args.output or os.path.splitext(args.files[0])[0] + ".png"
+        movie = getattr(args, "movie", None)
         try:
-            fig = figure(args.files, args.kind, plt, x=args.x)
+            if args.output or not movie:   # with --movie alone, only the film
+                output = args.output or os.path.splitext(args.files[0])[0] + ".png"
+                fig = figure(args.files, args.kind, plt, x=args.x)
+                fig.savefig(output, dpi=120)
+                print(f"wrote {output}")
+            if movie:
+                from ..movie import make_movie
+                written, frames = make_movie(args.files[0], movie)
+                print(f"wrote {written} ({frames} frames)")
         except ResultFileError as error:
             print(f"error: {error}", file=sys.stderr)
             return 1
-        fig.savefig(output, dpi=120)
-        print(f"wrote {output}")
-        if getattr(args, "movie", None):
-            from ..movie import make_movie
-            make_movie(args.files[0], args.movie)
         if args.show and os.environ.get("DISPLAY"):
             plt.show()
     except ModuleNotFoundError as error:
