@@ -18,7 +18,7 @@ second axis of a 3 x 3 matrix (rotation, frame) `xyz_2`.
 import os
 
 from ._needs import need
-from .results import ResultFileError, open_result
+from .results import ResultFileError, open_result   # names a missing h5py or numpy
 
 try:
     import h5py

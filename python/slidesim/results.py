@@ -18,8 +18,13 @@ says which version of it a file follows.
 from dataclasses import dataclass, field
 import os
 
-import h5py
-import numpy as np
+from ._needs import need
+
+try:
+    import h5py
+    import numpy as np
+except ModuleNotFoundError as error:
+    raise need(error) from None
 
 SUPPORTED_LAYOUT = 1
 

@@ -95,6 +95,13 @@ status=$?
 [ "$status" = 1 ] && grep -q "the Python module '[a-z0-9]*' is missing" "$work/bare.log" \
   && grep -q "apt-get install python3-" "$work/bare.log" && grep -q "pip install ./python" "$work/bare.log" \
   && ! grep -q Traceback "$work/bare.log" || fail "a Python without the modules: status $status: $(cat "$work/bare.log")"
+"$work/bare/bin/python" -c "import sys; sys.path.insert(0, '$root/python'); import slidesim
+try:
+    slidesim.open('ride.h5')
+except ImportError as error:
+    print(type(error).__name__, error)" >"$work/bare.log" 2>&1
+grep -q "MissingModule the Python module 'h5py' is missing" "$work/bare.log" \
+  || fail "slidesim.open without h5py: $(cat "$work/bare.log")"
 
 echo "python package: $plots plots, $failures failures"
 [ "$failures" = 0 ]
