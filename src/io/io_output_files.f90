@@ -83,17 +83,26 @@ contains
     character(len=*), intent(in) :: path, what
     type(status_t), intent(inout) :: status
     type(input_note_t) :: note
-    integer :: k
-    if (.not. allocated(inputs)) call start_run_files()
+    integer :: k, claimed
     note = input_note_t(path=path, what=what, identity=file_identity(path))
+    claimed = 0
+    ! (files are read in the main thread today; the lists stay whole if not)
+    !$omp critical (run_files)
+    if (.not. allocated(inputs)) allocate (inputs(0), outputs(0))
     do k = 1, size(outputs)
-      if (.not. note%identity%same(file_identity(outputs(k)%path))) cycle
-      call set_status(status, STATUS_INVALID_INPUT, what//' "'//path//'" is the file '//outputs(k)%what// &
-                      ' ('//outputs(k)%origin//') would overwrite'//through_link(path, outputs(k)%path)// &
-                      ': the run would destroy a file it reads; name another output file')
-      return
+      if (note%identity%same(file_identity(outputs(k)%path))) then
+        claimed = k
+        exit
+      end if
     end do
-    inputs = [inputs, note]
+    if (claimed == 0) inputs = [inputs, note]
+    !$omp end critical (run_files)
+    if (claimed == 0) return
+    associate (output => outputs(claimed))
+      call set_status(status, STATUS_INVALID_INPUT, what//' "'//path//'" is the file '//output%what// &
+                      ' ('//output%origin//') would overwrite'//through_link(path, output%path)// &
+                      ': the run would destroy a file it reads; name another output file')
+    end associate
   end subroutine note_input_file
 
   !> Claims `path` for an output of the run before any work (see the module
