@@ -372,7 +372,7 @@ contains
 
   module procedure mechanism_handle_event
     integer :: k, i, law_action
-    character(len=:), allocatable :: where
+    character(len=:), allocatable :: where, note
     self%cached = .false.
     self%rhs_cached = .false.
     self%n_exact = 0   ! a law or chart may change here: no interpolation across
@@ -389,8 +389,16 @@ contains
         if (fired(i) /= -1) cycle
         associate (e => m%edges(k), name => m%elements(m%edges(k)%element)%e%name)
           if (.not. e%along_u) then
-            call set_status(status, STATUS_DOMAIN, 'surface joint '''//name//''' reached the edge v = '// &
-                            format_short(e%bound)//' of its surface''s parameter domain'//where)
+            ! an edge in v where the parametrisation is singular is a pole (an
+            ! ellipsoid's v = +-pi/2): said so, with the surface and what to do
+            note = m%elements(m%edges(k)%element)%e%singular_note()
+            if (len(note) > 0) then
+              call set_status(status, STATUS_DOMAIN, 'surface joint '''//name//''' reached the pole v = '// &
+                              format_short(e%bound)//' of its surface'//where//': '//note)
+            else
+              call set_status(status, STATUS_DOMAIN, 'surface joint '''//name//''' reached the edge v = '// &
+                              format_short(e%bound)//' of its surface''s parameter domain'//where)
+            end if
             return
           end if
           action = EVENT_STOP

@@ -9,6 +9,9 @@ module scenarios_mechanism
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_recorder, only: mechanism_series_t
+  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mass, only: mass_element_t
+  use base_vector, only: cross
   use io_input, only: input_text_t, format_real, mark_input_failure, where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, check_output_count
@@ -106,7 +109,7 @@ contains
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
     call report(scenario, sys%series, result%stats, result%cpu, q_units, file%final_path(), run, complete, &
-                message, outcome, sys%chart_changes, write_status)
+                message, outcome, sys%chart_changes, sys%mechanism, write_status)
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
   end subroutine run_mechanism
 
@@ -142,10 +145,12 @@ contains
 
   !> The printed summary (angles in degrees) and, with --summary-json, the
   !> same numbers as JSON (SI).
-  subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, outcome, chart_changes, status)
+  subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, outcome, chart_changes, m, &
+                    status)
     character(len=*), intent(in) :: scenario, path, message, outcome
     integer, intent(in) :: chart_changes   ! coordinates re-based on a new chart (docs/multibody.md, events)
     type(mechanism_series_t), intent(in) :: s
+    type(mechanism_t), intent(in) :: m
     type(ode_stats_t), intent(in) :: stats
     real(wp), intent(in) :: cpu
     character(len=*), intent(in) :: q_units(:)
@@ -163,7 +168,16 @@ contains
     call summary%start(scenario, 'slidesim '//scenario)
     call summary%add('simulated_time', 'simulated time', s%time(n), 's')
     if (complete) call summary%add_text('outcome', 'stopped at', outcome)
-    do k = 1, s%f
+    if (scenario == 'contact') then
+      ! bodies and contacts in engineering terms (docs/contact.md, Outputs)
+      if (.not. complete) call summary%add_text('failure', 'stopped because', message)
+      call add_body_terms(summary, s, m)
+      call add_contact_terms(summary, s, m)
+      call summary%add('energy_change_joules', 'energy change', s%kinetic(n) + s%potential(n) - e0, 'J')
+      call summary%add('energy_change', 'energy change relative', (s%kinetic(n) + s%potential(n) - e0)/scale, '1', &
+                       '(of the largest kinetic/potential change)')
+    end if
+    do k = 1, merge(0, s%f, scenario == 'contact')
       q = trim(s%q_names(k))
       u = trim(q_units(k))
       if (u == 'rad') then
@@ -177,15 +191,16 @@ contains
         call summary%add(q//'_rate_final', q//' rate final', s%qd(k, n), u//'/s')
       end if
     end do
-    do k = 1, s%nc
+    do k = 1, merge(0, s%nc, scenario == 'contact')
       q = trim(s%contact_names(k))
       call summary%add(q//'_speed_max', q//' slip speed max', maxval([(norm2(s%slip(:, k, i)), i=1, n)]), 'm/s', &
                        'm/s ('//engineering(3.6_wp*maxval([(norm2(s%slip(:, k, i)), i=1, n)]))//' km/h)')
       call summary%add_range(q//'_normal_force', q//' normal force min / max', minval(s%normal(k, :n)), &
                              maxval(s%normal(k, :n)), 'N')
     end do
-    call summary%add('energy_change', 'energy change', (s%kinetic(n) + s%potential(n) - e0)/scale, '1', &
-                     '(relative to the largest kinetic/potential change)')
+    if (scenario /= 'contact') call summary%add('energy_change', 'energy change', &
+                                                (s%kinetic(n) + s%potential(n) - e0)/scale, '1', &
+                                                '(relative to the largest kinetic/potential change)')
     if (s%nl > 0) then
       call summary%add('law_work', 'work of the force laws', sum(s%law_work(:, n)), 'J')
       call summary%add('energy_balance_error', 'energy balance error', &
@@ -208,4 +223,124 @@ contains
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
     end if
   end subroutine report
+
+  !> Per body of the contact scenario: the height of its centre of mass, the
+  !> tilt of its symmetry axis from the vertical and its spin about that axis
+  !> (a body with two equal principal moments and a third apart; a sphere:
+  !> its angular speed; none: its angular speed), the speed of its centre.
+  subroutine add_body_terms(summary, s, m)
+    type(summary_t), intent(inout) :: summary
+    type(mechanism_series_t), intent(in) :: s
+    type(mechanism_t), intent(in) :: m
+    real(wp) :: up(3), centre(3, s%n), speed(s%n), tilt(s%n), spin(s%n)
+    integer :: k, i, e, axis
+    character(len=:), allocatable :: b, axis_name
+    do k = 1, s%nb
+      b = trim(s%body_names(k))
+      axis = 0
+      do e = 1, m%n_elements
+        select type (body => m%elements(e)%e)
+        type is (mass_element_t)
+          if (body%frame /= s%body_frame(k)) cycle
+          up = -body%gravity
+          if (norm2(up) > 0) up = up/norm2(up)
+          if (.not. norm2(up) > 0) up = [0.0_wp, 0.0_wp, 1.0_wp]
+          axis = symmetry_axis(body%inertia)
+          do i = 1, s%n
+            associate (rot => s%body_rot(:, :, k, i), omega => s%body_omega(:, k, i))
+              centre(:, i) = s%body_r(:, k, i) + matmul(rot, body%com)
+              speed(i) = norm2(s%body_v(:, k, i) + cross(omega, matmul(rot, body%com)))
+              if (axis > 0) then
+                tilt(i) = acos(max(-1.0_wp, min(1.0_wp, dot_product(rot(:, axis), up))))
+                spin(i) = dot_product(omega, rot(:, axis))
+              else
+                spin(i) = norm2(omega)
+              end if
+            end associate
+          end do
+        end select
+      end do
+      call summary%add(b//'_height_final', b//' height final', dot_product(centre(:, s%n), up), 'm', &
+                       'm (centre of mass, along the vertical)')
+      call summary%add_range(b//'_height', b//' height min / max', minval(matmul(up, centre)), &
+                             maxval(matmul(up, centre)), 'm')
+      call summary%add(b//'_speed_max', b//' speed max', maxval(speed), 'm/s', 'm/s (centre of mass)')
+      if (axis > 0) then
+        axis_name = 'body '//'xyz'(axis:axis)
+        call summary%add(b//'_tilt_start', b//' tilt start', tilt(1), 'rad', &
+                         'deg (symmetry axis '//axis_name//' from the vertical)', degrees)
+        call summary%add(b//'_tilt_final', b//' tilt final', tilt(s%n), 'rad', 'deg', degrees)
+        call summary%add_range(b//'_tilt', b//' tilt min / max', minval(tilt), maxval(tilt), 'rad', 'deg', &
+                               degrees)
+        call summary%add(b//'_spin_final', b//' spin final', spin(s%n), 'rad/s', &
+                         'rad/s (about '//axis_name//', '//engineering(spin(s%n)*30/acos(-1.0_wp))//' rpm)')
+        call summary%add(b//'_spin_max', b//' spin max', maxval(abs(spin)), 'rad/s')
+      else
+        call summary%add(b//'_angular_speed_final', b//' angular speed final', spin(s%n), 'rad/s')
+        call summary%add(b//'_angular_speed_max', b//' angular speed max', maxval(spin), 'rad/s')
+      end if
+    end do
+  end subroutine add_body_terms
+
+  !> Per contact: its slip speed, its normal force in N and in weights of
+  !> the body it carries (body 2), its friction force.
+  subroutine add_contact_terms(summary, s, m)
+    type(summary_t), intent(inout) :: summary
+    type(mechanism_series_t), intent(in) :: s
+    type(mechanism_t), intent(in) :: m
+    real(wp) :: weight, slip(s%n), friction(s%n)
+    integer :: k, i, e
+    character(len=:), allocatable :: c
+    do k = 1, s%nc
+      c = trim(s%contact_names(k))
+      weight = 0
+      do e = 1, m%n_elements
+        select type (body => m%elements(e)%e)
+        type is (mass_element_t)
+          if (body%frame == m%contacts(k)%frame_b) weight = body%mass*norm2(body%gravity)
+        end select
+      end do
+      slip = [(norm2(s%slip(:, k, i)), i=1, s%n)]
+      friction = [(norm2(s%friction(:, k, i)), i=1, s%n)]
+      call summary%add(c//'_slip_speed_final', c//' slip speed final', slip(s%n), 'm/s')
+      call summary%add(c//'_slip_speed_max', c//' slip speed max', maxval(slip), 'm/s')
+      call summary%add_range(c//'_normal_force', c//' normal force min / max', minval(s%normal(k, :s%n)), &
+                             maxval(s%normal(k, :s%n)), 'N')
+      if (weight > 0) call summary%add_range(c//'_normal_force_weights', c//' normal force in weights', &
+                                             minval(s%normal(k, :s%n))/weight, maxval(s%normal(k, :s%n))/weight, &
+                                             '1', 'of '//trim(body_name(s, m%contacts(k)%frame_b))//'''s weight')
+      call summary%add(c//'_friction_force_max', c//' friction force max', maxval(friction), 'N')
+    end do
+  end subroutine add_contact_terms
+
+  !> The name of the body whose frame is `frame`.
+  function body_name(s, frame) result(name)
+    type(mechanism_series_t), intent(in) :: s
+    integer, intent(in) :: frame
+    character(len=32) :: name
+    integer :: k
+    name = 'body 2'
+    k = findloc(s%body_frame, frame, dim=1)
+    if (k > 0) name = s%body_names(k)
+  end function body_name
+
+  !> The symmetry axis of an inertia tensor (body axes): the axis whose
+  !> moment differs from two equal others (1e-6 relative), the products zero;
+  !> 0 for a sphere's or a tensor without one.
+  pure integer function symmetry_axis(inertia) result(axis)
+    real(wp), intent(in) :: inertia(3, 3)
+    real(wp), parameter :: rtol = 1e-6_wp
+    real(wp) :: d(3), scale
+    integer :: k
+    axis = 0
+    d = [inertia(1, 1), inertia(2, 2), inertia(3, 3)]
+    scale = maxval(abs(d))
+    if (.not. scale > 0) return
+    if (abs(inertia(1, 2)) + abs(inertia(1, 3)) + abs(inertia(2, 3)) > rtol*scale) return
+    do k = 1, 3
+      associate (a => d(modulo(k, 3) + 1), b => d(modulo(k + 1, 3) + 1))
+        if (abs(a - b) <= rtol*scale .and. abs(d(k) - a) > rtol*scale) axis = k
+      end associate
+    end do
+  end function symmetry_axis
 end module scenarios_mechanism

@@ -33,6 +33,39 @@ def close(name, got, expected):
         fail(f"{name}: JSON {got.tolist()} but the HDF5 file gives {expected.tolist()}")
 
 
+def check_contact(g, values, need):
+    """The contact summary in bodies' and contacts' terms (docs/outputs.md):
+    energy in J, per contact slip, normal and friction forces, per body the
+    tilt and spin of its symmetry axis, which must be one of the body axes
+    the file holds as rows of `rotation` (rotation[i, k, :])."""
+    energy = g['kinetic_energy'][:] + g['potential_energy'][:]
+    if need('energy_change_joules'):
+        close('energy_change_joules', values['energy_change_joules'], energy[-1] - energy[0])
+    for contact in g.get('contacts', {}):
+        c = g['contacts'][contact]
+        slip = np.linalg.norm(c['velocity'][:], axis=1)
+        keys = [contact + k for k in ('_slip_speed_final', '_slip_speed_max', '_normal_force_min',
+                                      '_normal_force_max', '_friction_force_max')]
+        if need(*keys):
+            close(keys[0], values[keys[0]], slip[-1])
+            close(keys[1], values[keys[1]], slip.max())
+            close(keys[2], values[keys[2]], c['normal_force'][:].min())
+            close(keys[3], values[keys[3]], c['normal_force'][:].max())
+            close(keys[4], values[keys[4]], np.linalg.norm(c['friction_force'][:], axis=1).max())
+    for body in g['bodies']:
+        b = g['bodies'][body]
+        need(body + '_height_final', body + '_height_min', body + '_height_max', body + '_speed_max')
+        if body + '_tilt_final' not in values:
+            need(body + '_angular_speed_final', body + '_angular_speed_max')
+            continue
+        rot, omega = b['rotation'][-1], b['angular_velocity'][-1]
+        tilts = np.arccos(np.clip(rot[:, 2], -1, 1))      # rows: the body axes (z up in these inputs)
+        k = int(np.argmin(np.abs(tilts - values[body + '_tilt_final'])))
+        close(body + '_tilt_final', values[body + '_tilt_final'], tilts[k])
+        if need(body + '_spin_final'):
+            close(body + '_spin_final', values[body + '_spin_final'], omega @ rot[k])
+
+
 def check(json_path, h5_path, printed_path):
     failures.clear()
     summary = json.load(open(json_path, encoding='utf-8'))
@@ -158,7 +191,9 @@ def check(json_path, h5_path, printed_path):
             scale = max(kinetic.max(), np.abs(potential - potential[0]).max())
             close('energy_change', values['energy_change'],
                   (kinetic[-1] + potential[-1] - kinetic[0] - potential[0]) / scale)
-        for q in g['coordinates']:
+        if scenario == 'contact':
+            check_contact(g, values, need)
+        for q in (g['coordinates'] if scenario != 'contact' else ()):
             c = g['coordinates'][q]
             if need(q + '_final', q + '_min', q + '_max', q + '_rate_final'):
                 close(q + '_final', values[q + '_final'], c['value'][-1])
@@ -169,7 +204,7 @@ def check(json_path, h5_path, printed_path):
                 close(q + '_rate_max', values[q + '_rate_max'], np.abs(c['rate'][:]).max())
         if 'closure_residual' in g and need('closure_residual_max'):
             close('closure_residual_max', values['closure_residual_max'], g['closure_residual'][:].max())
-        for contact in g.get('contacts', {}):
+        for contact in (g.get('contacts', {}) if scenario != 'contact' else ()):
             c = g['contacts'][contact]
             if need(contact + '_speed_max', contact + '_normal_force_min', contact + '_normal_force_max'):
                 close(contact + '_speed_max', values[contact + '_speed_max'],

@@ -347,7 +347,7 @@ contains
     call quiet(options)
     call drive(sys, y0, options, result, st)
     call check(.not. st%ok() .and. st%code == STATUS_DOMAIN .and. result%outcome == DRIVE_FAILED .and. &
-               index(st%text(), 'reached the edge v') > 0, 'an edge in v is a failure: '//st%text())
+               index(st%text(), 'reached the pole v') > 0, 'an edge in v (a sphere''s pole) is a failure: '//st%text())
   end subroutine edge_in_v
 
   !> The bowl with Coulomb friction under Adams: the rear end comes to rest and
