@@ -38,7 +38,7 @@ module io_hdf5
                   h5tcopy_f, h5tset_size_f, h5tset_cset_f, h5tclose_f, H5T_STRING, H5T_CSET_UTF8_F, &
                   H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, &
                   h5acreate_f, h5awrite_f, h5aclose_f, h5aexists_f, h5adelete_f, &
-                  h5dcreate_f, h5dwrite_f, h5dclose_f, h5dopen_f, &
+                  h5dcreate_f, h5dwrite_f, h5dread_f, h5dclose_f, h5dopen_f, &
                   h5pcreate_f, h5pset_buffer_f, h5pclose_f, H5P_DATASET_XFER_F
   use h5ds, only: h5dsset_scale_f, h5dsattach_scale_f
   use base_kinds, only: wp
@@ -94,6 +94,7 @@ module io_hdf5
     procedure, private :: set_attribute_text, set_attribute_real, set_attribute_reals, set_attribute_integer
     generic :: set_attribute => set_attribute_text, set_attribute_real, set_attribute_reals, set_attribute_integer
     procedure :: shape_of => result_file_shape_of
+    procedure :: values_of => result_file_values_of
     procedure :: names_in => result_file_names_in
     procedure :: is_real => result_file_is_real
     procedure :: make_scale => result_file_make_scale
@@ -561,6 +562,36 @@ contains
       dims = int(self%written(k)%shape(size(self%written(k)%shape):1:-1))
     end if
   end function result_file_shape_of
+
+  !> The values of a double-precision dataset written to this file, read
+  !> back in the file's (C) order, the last index fastest: the rows of an
+  !> (n, 3) dataset as x1 y1 z1 x2 ...; size 0 if it was not written or
+  !> cannot be read.
+  function result_file_values_of(self, name) result(values)
+    class(result_file_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    real(wp), allocatable, target :: values(:)
+    integer(hid_t) :: dataset_id
+    type(c_ptr) :: buffer
+    integer :: k, hdferr, err
+    k = find_written(self, name)
+    allocate (values(0))
+    if (k == 0) return
+    if (.not. self%written(k)%is_real) return
+    deallocate (values)
+    allocate (values(product(self%written(k)%shape)))
+    call h5dopen_f(self%file_id, name, dataset_id, hdferr)
+    if (hdferr /= 0) then
+      deallocate (values); allocate (values(0))
+      return
+    end if
+    buffer = c_loc(values)
+    call h5dread_f(dataset_id, H5T_NATIVE_DOUBLE, buffer, hdferr)
+    call h5dclose_f(dataset_id, err)
+    if (hdferr /= 0) then
+      deallocate (values); allocate (values(0))
+    end if
+  end function result_file_values_of
 
   !> Whether `name` was written as a double-precision dataset.
   logical function result_file_is_real(self, name) result(is_real)

@@ -1,16 +1,22 @@
-!> XDMF files for ParaView and VisIt next to a result file: XML that points at
-!> the datasets of the HDF5 file by path (nothing is copied), in the XDMF 2
-!> form that ParaView's "XDMF Reader" and VisIt read (checked with ParaView's
-!> own reader by tests/cli/xdmf_files.sh):
-!> - a surface grid as a structured grid (2DSMesh, X_Y_Z geometry);
-!> - paths (streamline, point-mass path, centerline, body and contact paths)
-!>   as one polyline each, with every real (n) and (n, 3) dataset of their
-!>   group as node scalars and vectors;
-!> - the water band as a 2 x n structured grid between the two edges
-!>   (JOIN of the edge datasets), with speed and height on its nodes;
-!> - moving points (bodies, contacts) as a temporal collection: at most
-!>   max_steps time steps (every k-th sample and the last), each a set of
-!>   points taken from the position datasets by hyperslabs (JOIN of rows).
+!> XDMF files for ParaView and VisIt next to a result file, in the XDMF 2
+!> form that every reader ParaView has reads alike (the Xdmf3 readers it
+!> picks by itself for File > Open, and the "XDMF Reader"): checked with
+!> each by tests/cli/xdmf_files.sh.
+!> - Every value is in the XML itself (Format="XML"), copied from the result
+!>   file: ParaView's Xdmf3 readers resolve an HDF5 reference against the
+!>   folder of the .xmf, and abort (SIGABRT) when the .xmf was named
+!>   without a folder (`ride.xmf` gives `ride.xmfride.h5`); they read no
+!>   X_Y_Z geometry, no JOIN function and no hyperslab of ours (0 points).
+!> - A surface grid is a structured grid (2DSMesh) with XYZ points; a path a
+!>   polyline with explicit connectivity (the Xdmf3 readers make no cell
+!>   without it), with the real (n) and (n, 3) datasets of its groups as
+!>   node scalars and vectors; the water band a 2 x n structured grid.
+!> - Anything moving makes the file one temporal collection of spatial
+!>   collections (at most max_steps steps: every k-th sample and the last):
+!>   the Xdmf3 readers drop a grid that stands beside a temporal collection.
+!>   The first step holds the grids that do not move; the later steps
+!>   include them (XInclude by position, read by both readers) instead of
+!>   repeating their values.
 !> Layout: docs/outputs.md ("ParaView and VisIt").
 module io_xdmf
   use base_kinds, only: wp
@@ -22,24 +28,31 @@ module io_xdmf
   public :: xdmf_t, xdmf_path, attach_surface_view
 
   integer, parameter :: max_steps = 200   ! time steps of a temporal collection
+  integer, parameter :: per_line = 6      ! values per line of a DataItem
+
+  !> Text that grows by doubling (appending stays linear).
+  type :: text_t
+    character(len=:), allocatable :: s
+    integer :: used = 0
+  end type text_t
 
   type :: xdmf_t
     private
-    character(len=:), allocatable :: xml, h5
-    integer :: used = 0   ! characters of xml in use (xml grows by doubling: appending stays linear)
+    type(text_t) :: fixed                   !< the grids that do not move
+    integer :: n_fixed = 0
+    integer :: n_series = 0                 !< samples of the moving grids' series (0: none yet)
+    real(wp), allocatable :: step_time(:)   !< s, the kept time steps
+    integer, allocatable :: step_row(:)     !< their samples in the series
+    type(text_t), allocatable :: steps(:)   !< the moving grids of each kept step
   contains
     procedure :: start => xdmf_start
     procedure :: surface => xdmf_surface
     procedure :: polyline => xdmf_polyline
     procedure :: band => xdmf_band
     procedure :: moving_points => xdmf_moving_points
+    procedure :: moving_box => xdmf_moving_box
     procedure :: attach => xdmf_attach
   end type xdmf_t
-
-  !> The text of one row of a dataset, without the row index between head and tail.
-  type :: row_text_t
-    character(len=:), allocatable :: head, tail
-  end type row_text_t
 
 contains
 
@@ -59,17 +72,13 @@ contains
     path = h5_path(:n)//'.xmf'
   end function xdmf_path
 
-  !> Begins the XML for the result file at `h5_path` (referenced by its file
-  !> name, so the two files can move together).
-  subroutine xdmf_start(self, h5_path)
+  !> Begins an empty view.
+  subroutine xdmf_start(self)
     class(xdmf_t), intent(inout) :: self
-    character(len=*), intent(in) :: h5_path
-    self%h5 = h5_path(index(h5_path, '/', back=.true.) + 1:)
-    ! no XML comment: ParaView's XDMF 2 reader reports an expression syntax error on some
-    self%used = 0
-    call add(self, '<?xml version="1.0" ?>')
-    call add(self, '<Xdmf Version="2.0">')
-    call add(self, '<Domain>')
+    self%fixed%used = 0
+    self%n_fixed = 0
+    self%n_series = 0
+    if (allocated(self%steps)) deallocate (self%steps)
   end subroutine xdmf_start
 
   !> The surface grid of io_surface_grid (group/x, y, z of shape (n_u, n_v)).
@@ -78,49 +87,74 @@ contains
     type(result_file_t), intent(in) :: file
     character(len=*), intent(in) :: name, group
     integer, allocatable :: dims(:)
+    real(wp), allocatable :: x(:), y(:), z(:)
     dims = file%shape_of(group//'/x')
     if (size(dims) /= 2) return
-    call add(self, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
-    call add(self, '  <Topology TopologyType="2DSMesh" Dimensions="'//dims_text(dims)//'"/>')
-    call add(self, '  <Geometry GeometryType="X_Y_Z">')
-    call add(self, '    '//data_item(self, file, group//'/x'))
-    call add(self, '    '//data_item(self, file, group//'/y'))
-    call add(self, '    '//data_item(self, file, group//'/z'))
-    call add(self, '  </Geometry>')
-    call add(self, '</Grid>')
+    x = file%values_of(group//'/x')
+    y = file%values_of(group//'/y')
+    z = file%values_of(group//'/z')
+    if (size(x) /= product(dims) .or. size(y) /= size(x) .or. size(z) /= size(x)) return
+    call add(self%fixed, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
+    call add(self%fixed, '  <Topology TopologyType="2DSMesh" Dimensions="'//dims_text(dims)//'"/>')
+    call add(self%fixed, '  <Geometry GeometryType="XYZ">')
+    call data_item(self%fixed, [dims, 3], reshape(transpose(reshape([x, y, z], [size(x), 3])), [3*size(x)]))
+    call add(self%fixed, '  </Geometry>')
+    call add(self%fixed, '</Grid>')
+    self%n_fixed = self%n_fixed + 1
   end subroutine xdmf_surface
 
   !> A polyline through the rows of `points` (shape (n, 3)) with the real
-  !> datasets of `group` of shape (n) or (n, 3) as node attributes.
-  subroutine xdmf_polyline(self, file, name, points, group)
+  !> datasets of `group` of shape (n) or (n, 3) as node attributes, and
+  !> those of `more` (e.g. the rider's own beside its contact's) whose names
+  !> `group` does not have.
+  subroutine xdmf_polyline(self, file, name, points, group, more)
     class(xdmf_t), intent(inout) :: self
     type(result_file_t), intent(in) :: file
     character(len=*), intent(in) :: name, points, group
-    integer, allocatable :: dims(:), d(:)
-    character(len=:), allocatable :: names(:)
+    character(len=*), intent(in), optional :: more
+    integer, allocatable :: dims(:)
+    character(len=:), allocatable :: taken
     integer :: k
     dims = file%shape_of(points)
     if (size(dims) /= 2) return
-    if (dims(1) < 2) return
-    call add(self, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
-    call add(self, '  <Topology TopologyType="Polyline" NodesPerElement="'//format_integer(dims(1))// &
-             '" NumberOfElements="1"/>')
-    call add(self, '  <Geometry GeometryType="XYZ">')
-    call add(self, '    '//data_item(self, file, points))
-    call add(self, '  </Geometry>')
-    names = file%names_in(group)
-    do k = 1, size(names)
-      if (trim(names(k)) == points .or. .not. file%is_real(trim(names(k)))) cycle
-      d = file%shape_of(trim(names(k)))
-      if (size(d) == 0) cycle
-      if (d(1) /= dims(1)) cycle
-      if (size(d) == 1) then
-        call attribute(self, file, trim(names(k)), 'Scalar')
-      else if (size(d) == 2) then
-        if (d(2) == 3) call attribute(self, file, trim(names(k)), 'Vector')
-      end if
-    end do
-    call add(self, '</Grid>')
+    if (dims(1) < 2 .or. dims(2) /= 3) return
+    call add(self%fixed, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
+    call add(self%fixed, '  <Topology TopologyType="Polyline" NodesPerElement="'//format_integer(dims(1))// &
+             '" NumberOfElements="1">')
+    call add(self%fixed, '    <DataItem Dimensions="1 '//format_integer(dims(1))//'" NumberType="Int" Format="XML">')
+    call integer_lines(self%fixed, [(k, k = 0, dims(1) - 1)])
+    call add(self%fixed, '    </DataItem>')
+    call add(self%fixed, '  </Topology>')
+    call add(self%fixed, '  <Geometry GeometryType="XYZ">')
+    call data_item(self%fixed, dims, file%values_of(points))
+    call add(self%fixed, '  </Geometry>')
+    taken = '/'
+    call group_attributes(group)
+    if (present(more)) call group_attributes(more)
+    call add(self%fixed, '</Grid>')
+    self%n_fixed = self%n_fixed + 1
+  contains
+    subroutine group_attributes(g)
+      character(len=*), intent(in) :: g
+      character(len=:), allocatable :: names(:), base
+      integer, allocatable :: d(:)
+      names = file%names_in(g)
+      do k = 1, size(names)
+        if (trim(names(k)) == points .or. .not. file%is_real(trim(names(k)))) cycle
+        d = file%shape_of(trim(names(k)))
+        if (size(d) == 0) cycle
+        if (d(1) /= dims(1)) cycle
+        base = base_name(trim(names(k)))
+        if (index(taken, '/'//base//'/') > 0) cycle
+        if (size(d) == 1) then
+          call attribute(self%fixed, base, 'Scalar', 'Node', d, file%values_of(trim(names(k))))
+        else if (size(d) == 2) then
+          if (d(2) /= 3) cycle
+          call attribute(self%fixed, base, 'Vector', 'Node', d, file%values_of(trim(names(k))))
+        end if
+        taken = taken//base//'/'
+      end do
+    end subroutine group_attributes
   end subroutine xdmf_polyline
 
   !> The band between two edges (shape (n, 3) each) as a 2 x n structured
@@ -131,36 +165,28 @@ contains
     character(len=*), intent(in) :: name, first_edge, second_edge
     character(len=*), intent(in) :: fields(:)
     integer, allocatable :: dims(:)
+    real(wp), allocatable :: values(:)
     integer :: k
     dims = file%shape_of(first_edge)
     if (size(dims) /= 2) return
     if (dims(1) < 2) return
-    call add(self, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
-    call add(self, '  <Topology TopologyType="2DSMesh" Dimensions="2 '//format_integer(dims(1))//'"/>')
-    call add(self, '  <Geometry GeometryType="XYZ">')
-    call add(self, '    <DataItem ItemType="Function" Function="JOIN($0 ; $1)" Dimensions="'// &
-             format_integer(2*dims(1))//' 3">')
-    call add(self, '      '//data_item(self, file, first_edge))
-    call add(self, '      '//data_item(self, file, second_edge))
-    call add(self, '    </DataItem>')
-    call add(self, '  </Geometry>')
+    if (any(file%shape_of(second_edge) /= dims)) return
+    call add(self%fixed, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
+    call add(self%fixed, '  <Topology TopologyType="2DSMesh" Dimensions="2 '//format_integer(dims(1))//'"/>')
+    call add(self%fixed, '  <Geometry GeometryType="XYZ">')
+    call data_item(self%fixed, [2*dims(1), 3], [file%values_of(first_edge), file%values_of(second_edge)])
+    call add(self%fixed, '  </Geometry>')
     do k = 1, size(fields)
-      call add(self, '  <Attribute Name="'//base_name(trim(fields(k)))//'" AttributeType="Scalar" Center="Node">')
-      call add(self, '    <DataItem ItemType="Function" Function="JOIN($0 ; $0)" Dimensions="'// &
-               format_integer(2*dims(1))//'">')
-      call add(self, '      '//data_item(self, file, trim(fields(k))))
-      call add(self, '    </DataItem>')
-      call add(self, '  </Attribute>')
+      values = file%values_of(trim(fields(k)))
+      if (size(values) /= dims(1)) cycle
+      call attribute(self%fixed, base_name(trim(fields(k))), 'Scalar', 'Node', [2*dims(1)], [values, values])
     end do
-    call add(self, '</Grid>')
+    call add(self%fixed, '</Grid>')
+    self%n_fixed = self%n_fixed + 1
   end subroutine xdmf_band
 
-  !> Points moving over time: a temporal collection; at each kept time step
-  !> one point per dataset in `points` (each of shape (n, 3)), joined by a
-  !> polyline when `connect`. No node fields: ParaView's XDMF 2 reader fails
-  !> to parse a JOIN of one-value hyperslabs (their values are on the paths).
-  !> The text that does not change from step to step is made once (a step
-  !> differs only in its time and row index).
+  !> Points moving over time: at each kept time step one point per dataset
+  !> in `points` (each of shape (n, 3)), joined by a polyline when `connect`.
   subroutine xdmf_moving_points(self, file, name, time, points, connect)
     class(xdmf_t), intent(inout) :: self
     type(result_file_t), intent(in) :: file
@@ -168,51 +194,104 @@ contains
     real(wp), intent(in) :: time(:)
     character(len=*), intent(in) :: points(:)
     logical, intent(in) :: connect
-    integer :: n, stride, i, k, m
-    character(len=:), allocatable :: join, grid, topology
-    type(row_text_t), allocatable :: rows(:)
-    n = size(time)
+    real(wp), allocatable :: xyz(:, :)   ! 3 n x m: every dataset's rows
+    real(wp), allocatable :: values(:)
+    integer :: m, k, s, i
     m = size(points)
-    if (n < 1 .or. m < 1) return
-    stride = (n + max_steps - 1)/max_steps
-    join = 'JOIN($0'
-    do k = 1, m - 1
-      join = join//' ; $'//format_integer(k)
-    end do
-    join = join//')'
-    grid = '  <Grid Name="'//escaped(name)//'" GridType="Uniform">'
-    if (connect .and. m > 1) then
-      topology = '    <Topology TopologyType="Polyline" NodesPerElement="'//format_integer(m)//'" NumberOfElements="1"/>'
-    else
-      topology = '    <Topology TopologyType="Polyvertex" NodesPerElement="1" NumberOfElements="'// &
-                 format_integer(m)//'"/>'
-    end if
-    ! row k of a step: its head, the row index, its tail (one dataset: the row
-    ! itself; XDMF's expression parser refuses a JOIN of one)
-    allocate (rows(m))
+    if (m < 1 .or. .not. steps_for(self, time)) return
+    allocate (xyz(3*size(time), m))
     do k = 1, m
-      rows(k) = row_text(self, file, trim(points(k)), repeat(' ', merge(6, 8, m == 1)))
+      values = file%values_of(trim(points(k)))
+      if (size(values) /= 3*size(time)) return
+      xyz(:, k) = values
     end do
-    call add(self, '<Grid Name="'//escaped(name)//'" GridType="Collection" CollectionType="Temporal">')
-    i = 1
-    do
-      call add(self, grid)
-      call add(self, '    <Time Value="'//format_real(time(i))//'"/>')
-      call add(self, topology)
-      call add(self, '    <Geometry GeometryType="XYZ">')
-      if (m > 1) call add(self, '      <DataItem ItemType="Function" Function="'//join//'" Dimensions="'// &
-                          format_integer(m)//' 3">')
-      do k = 1, m
-        call add(self, rows(k)%head//format_integer(i - 1)//rows(k)%tail)
-      end do
-      if (m > 1) call add(self, '      </DataItem>')
-      call add(self, '    </Geometry>')
-      call add(self, '  </Grid>')
-      if (i == n) exit
-      i = min(i + stride, n)
+    do s = 1, size(self%step_row)
+      i = self%step_row(s)
+      associate (t => self%steps(s))
+        call add(t, '  <Grid Name="'//escaped(name)//'" GridType="Uniform">')
+        if (connect .and. m > 1) then
+          call add(t, '  <Topology TopologyType="Polyline" NodesPerElement="'//format_integer(m)// &
+                   '" NumberOfElements="1">')
+          call add(t, '    <DataItem Dimensions="1 '//format_integer(m)//'" NumberType="Int" Format="XML">')
+        else
+          call add(t, '  <Topology TopologyType="Polyvertex" NodesPerElement="1" NumberOfElements="'// &
+                   format_integer(m)//'">')
+          call add(t, '    <DataItem Dimensions="'//format_integer(m)//' 1" NumberType="Int" Format="XML">')
+        end if
+        call integer_lines(t, [(k, k = 0, m - 1)])
+        call add(t, '    </DataItem>')
+        call add(t, '  </Topology>')
+        call add(t, '  <Geometry GeometryType="XYZ">')
+        call data_item(t, [m, 3], reshape(xyz(3*i - 2:3*i, :), [3*m]))
+        call add(t, '  </Geometry>')
+        call add(t, '  </Grid>')
+      end associate
     end do
-    call add(self, '</Grid>')
   end subroutine xdmf_moving_points
+
+  !> A box moving over time (a body drawn as a solid): at sample i its
+  !> centre(:, i) and axes(:, k, i) (orthonormal columns), half its edge along
+  !> axis k half(k); 12 triangles facing outwards. Cell data: scalars(j, i)
+  !> named scalar_names(j), vectors(:, j, i) named vector_names(j).
+  subroutine xdmf_moving_box(self, name, time, centre, axes, half, scalar_names, scalars, vector_names, vectors)
+    class(xdmf_t), intent(inout) :: self
+    character(len=*), intent(in) :: name
+    real(wp), intent(in) :: time(:), centre(:, :), axes(:, :, :), half(3)
+    character(len=*), intent(in) :: scalar_names(:), vector_names(:)
+    real(wp), intent(in) :: scalars(:, :), vectors(:, :, :)
+    ! the corners 0..7 are (-/+ x) + 2 (-/+ y) + 4 (-/+ z); each face as two
+    ! triangles ordered anticlockwise seen from outside
+    integer, parameter :: triangles(36) = [0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4, &
+                                           2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6]
+    real(wp) :: corners(3, 0:7)
+    integer :: s, i, c, j
+    if (.not. steps_for(self, time)) return
+    do s = 1, size(self%step_row)
+      i = self%step_row(s)
+      do c = 0, 7
+        corners(:, c) = centre(:, i) + merge(1, -1, btest(c, 0))*half(1)*axes(:, 1, i) &
+                        + merge(1, -1, btest(c, 1))*half(2)*axes(:, 2, i) &
+                        + merge(1, -1, btest(c, 2))*half(3)*axes(:, 3, i)
+      end do
+      associate (t => self%steps(s))
+        call add(t, '  <Grid Name="'//escaped(name)//'" GridType="Uniform">')
+        call add(t, '  <Topology TopologyType="Triangle" NumberOfElements="12">')
+        call add(t, '    <DataItem Dimensions="12 3" NumberType="Int" Format="XML">')
+        call integer_lines(t, triangles)
+        call add(t, '    </DataItem>')
+        call add(t, '  </Topology>')
+        call add(t, '  <Geometry GeometryType="XYZ">')
+        call data_item(t, [8, 3], reshape(corners, [24]))
+        call add(t, '  </Geometry>')
+        do j = 1, size(scalar_names)
+          call attribute(t, trim(scalar_names(j)), 'Scalar', 'Cell', [12], spread(scalars(j, i), 1, 12))
+        end do
+        do j = 1, size(vector_names)
+          call attribute(t, trim(vector_names(j)), 'Vector', 'Cell', [12, 3], &
+                         reshape(spread(vectors(:, j, i), 2, 12), [36]))
+        end do
+        call add(t, '  </Grid>')
+      end associate
+    end do
+  end subroutine xdmf_moving_box
+
+  !> The kept steps of a series of times (made by the first moving grid;
+  !> false for an empty series or one of another length than the first's:
+  !> every moving grid of a file follows one series).
+  logical function steps_for(self, time) result(ok)
+    type(xdmf_t), intent(inout) :: self
+    real(wp), intent(in) :: time(:)
+    integer :: n, stride, s
+    n = size(time)
+    ok = n >= 1 .and. (self%n_series == 0 .or. self%n_series == n)
+    if (.not. ok .or. self%n_series == n) return
+    self%n_series = n
+    stride = (n + max_steps - 1)/max_steps
+    self%step_row = [(s, s = 1, n, stride)]
+    if (self%step_row(size(self%step_row)) /= n) self%step_row = [self%step_row, n]
+    self%step_time = time(self%step_row)
+    allocate (self%steps(size(self%step_row)))
+  end function steps_for
 
   !> Closes the XML and hands it to the result file, which writes it next to
   !> itself (xdmf_path) as it finishes: both files are kept, or neither.
@@ -220,10 +299,35 @@ contains
     class(xdmf_t), intent(inout) :: self
     type(result_file_t), intent(inout) :: file
     type(status_t), intent(in) :: status   !< nothing is attached to a file whose writes failed
+    type(text_t) :: xml
+    integer :: s, k
     if (.not. status%ok()) return
-    call add(self, '</Domain>')
-    call add(self, '</Xdmf>')
-    call file%add_companion(xdmf_path(file%final_path()), self%xml(:self%used))
+    call add(xml, '<?xml version="1.0" ?>')
+    call add(xml, '<Xdmf xmlns:xi="http://www.w3.org/2001/XInclude" Version="2.0">')
+    call add(xml, '<Domain>')
+    if (self%n_series == 0) then
+      if (self%fixed%used > 0) call add(xml, self%fixed%s(:self%fixed%used - 1))
+    else
+      call add(xml, '<Grid Name="time steps" GridType="Collection" CollectionType="Temporal">')
+      do s = 1, size(self%step_row)
+        call add(xml, '<Grid Name="step '//format_integer(s)//'" GridType="Collection" CollectionType="Spatial">')
+        call add(xml, '  <Time Value="'//format_real(self%step_time(s))//'"/>')
+        if (s == 1) then
+          if (self%fixed%used > 0) call add(xml, self%fixed%s(:self%fixed%used - 1))
+        else
+          do k = 1, self%n_fixed
+            call add(xml, '  <xi:include xpointer="xpointer(/Xdmf/Domain/Grid/Grid[1]/Grid['// &
+                     format_integer(k)//'])"/>')
+          end do
+        end if
+        if (self%steps(s)%used > 0) call add(xml, self%steps(s)%s(:self%steps(s)%used - 1))
+        call add(xml, '</Grid>')
+      end do
+      call add(xml, '</Grid>')
+    end if
+    call add(xml, '</Domain>')
+    call add(xml, '</Xdmf>')
+    call file%add_companion(xdmf_path(file%final_path()), xml%s(:xml%used))
   end subroutine xdmf_attach
 
   !> The view of one surface grid alone (`dataset`, e.g. the slide's
@@ -233,69 +337,67 @@ contains
     character(len=*), intent(in) :: name, dataset
     type(status_t), intent(inout) :: status
     type(xdmf_t) :: xdmf
-    call xdmf%start(file%final_path())
+    call xdmf%start()
     call xdmf%surface(file, name, dataset)
     call xdmf%attach(file, status)
   end subroutine attach_surface_view
 
-  subroutine add(self, line)
-    class(xdmf_t), intent(inout) :: self
+  subroutine add(text, line)
+    type(text_t), intent(inout) :: text
     character(len=*), intent(in) :: line
     character(len=:), allocatable :: grown
     integer :: n
-    n = self%used + len(line) + 1
-    if (.not. allocated(self%xml)) allocate (character(len=max(4096, 2*n)) :: self%xml)
-    if (n > len(self%xml)) then
-      allocate (character(len=max(2*len(self%xml), n)) :: grown)
-      grown(:self%used) = self%xml(:self%used)
-      call move_alloc(grown, self%xml)
+    n = text%used + len(line) + 1
+    if (.not. allocated(text%s)) allocate (character(len=max(4096, 2*n)) :: text%s)
+    if (n > len(text%s)) then
+      allocate (character(len=max(2*len(text%s), n)) :: grown)
+      grown(:text%used) = text%s(:text%used)
+      call move_alloc(grown, text%s)
     end if
-    self%xml(self%used + 1:n - 1) = line
-    self%xml(n:n) = new_line('a')
-    self%used = n
+    text%s(text%used + 1:n - 1) = line
+    text%s(n:n) = new_line('a')
+    text%used = n
   end subroutine add
 
-  !> A node attribute from a dataset (Scalar: shape (n); Vector: (n, 3)).
-  subroutine attribute(self, file, name, kind)
-    class(xdmf_t), intent(inout) :: self
-    type(result_file_t), intent(in) :: file
-    character(len=*), intent(in) :: name, kind
-    call add(self, '  <Attribute Name="'//base_name(name)//'" AttributeType="'//kind//'" Center="Node">')
-    call add(self, '    '//data_item(self, file, name))
-    call add(self, '  </Attribute>')
+  !> An attribute of `kind` (Scalar, Vector) centred on `center` (Node, Cell).
+  subroutine attribute(text, name, kind, center, dims, values)
+    type(text_t), intent(inout) :: text
+    character(len=*), intent(in) :: name, kind, center
+    integer, intent(in) :: dims(:)
+    real(wp), intent(in) :: values(:)
+    call add(text, '  <Attribute Name="'//escaped(name)//'" AttributeType="'//kind//'" Center="'//center//'">')
+    call data_item(text, dims, values)
+    call add(text, '  </Attribute>')
   end subroutine attribute
 
-  !> The DataItem of a whole real dataset of the HDF5 file.
-  function data_item(self, file, name) result(text)
-    class(xdmf_t), intent(in) :: self
-    type(result_file_t), intent(in) :: file
-    character(len=*), intent(in) :: name
-    character(len=:), allocatable :: text
-    text = '<DataItem Dimensions="'//dims_text(file%shape_of(name))//'" NumberType="Float" Precision="8" '// &
-           'Format="HDF">'//escaped(self%h5)//':'//escaped(name)//'</DataItem>'
-  end function data_item
+  !> A DataItem holding `values` (C order) of shape `dims`: nine significant
+  !> digits, below a micrometre over a kilometre.
+  subroutine data_item(text, dims, values)
+    type(text_t), intent(inout) :: text
+    integer, intent(in) :: dims(:)
+    real(wp), intent(in) :: values(:)
+    character(len=17*per_line) :: line
+    integer :: k, last
+    call add(text, '    <DataItem Dimensions="'//dims_text(dims)//'" NumberType="Float" Precision="8" Format="XML">')
+    do k = 1, size(values), per_line
+      last = min(k + per_line - 1, size(values))
+      write (line, '(*(1x, es16.8e3))') values(k:last)
+      call add(text, trim(line))
+    end do
+    call add(text, '    </DataItem>')
+  end subroutine data_item
 
-  !> Row i (1-based) of a dataset of shape (n) or (n, 3) as a HyperSlab:
-  !> head//(i - 1)//tail, the head indented by `indent`.
-  function row_text(self, file, name, indent) result(text)
-    class(xdmf_t), intent(in) :: self
-    type(result_file_t), intent(in) :: file
-    character(len=*), intent(in) :: name, indent
-    type(row_text_t) :: text
-    integer, allocatable :: dims(:)
-    character(len=*), parameter :: nl = new_line('a')
-    dims = file%shape_of(name)
-    if (size(dims) == 1) then
-      text%head = indent//'<DataItem ItemType="HyperSlab" Dimensions="1" Type="HyperSlab">'//nl// &
-                  '          <DataItem Dimensions="3 1" Format="XML">'
-      text%tail = ' 1 1</DataItem>'//nl
-    else
-      text%head = indent//'<DataItem ItemType="HyperSlab" Dimensions="1 '//format_integer(dims(2))// &
-                  '" Type="HyperSlab">'//nl//'          <DataItem Dimensions="3 2" Format="XML">'
-      text%tail = ' 0 1 1 1 '//format_integer(dims(2))//'</DataItem>'//nl
-    end if
-    text%tail = text%tail//'          '//data_item(self, file, name)//nl//'        </DataItem>'
-  end function row_text
+  !> Integers as lines of at most 3 per_line values (a connectivity).
+  subroutine integer_lines(text, values)
+    type(text_t), intent(inout) :: text
+    integer, intent(in) :: values(:)
+    character(len=12*3*per_line) :: line
+    integer :: k
+    do k = 1, size(values), 3*per_line
+      write (line, '(*(i0, :, 1x))') values(k:min(k + 3*per_line - 1, size(values)))
+      call add(text, '      '//trim(line))
+    end do
+  end subroutine integer_lines
 
   pure function dims_text(dims) result(text)
     integer, intent(in) :: dims(:)
@@ -311,7 +413,7 @@ contains
   pure function base_name(path) result(name)
     character(len=*), intent(in) :: path
     character(len=:), allocatable :: name
-    name = escaped(path(index(path, '/', back=.true.) + 1:))
+    name = path(index(path, '/', back=.true.) + 1:)
   end function base_name
 
   !> Text safe inside XML attributes and elements.

@@ -66,7 +66,7 @@ contains
     complete = work%ok()
     message = work%text()
     if (work%ok()) then   ! (the view of datasets that were written)
-      call xdmf%start(file%final_path())
+      call xdmf%start()
       call xdmf%surface(file, 'surface', '/geometry/surface')
       call xdmf%polyline(file, 'centerline', '/geometry/centerline/points', '/geometry/centerline')
       call xdmf%attach(file, work)

@@ -126,7 +126,7 @@ contains
     character(len=128) :: bodies(s%nb), contacts(s%nc)
     integer :: k
     g = '/'//scenario
-    call xdmf%start(file%final_path())
+    call xdmf%start()
     call xdmf%surface(file, 'surface', '/geometry/surface')
     do k = 1, s%nb
       bodies(k) = g//'/bodies/'//trim(s%body_names(k))//'/position'

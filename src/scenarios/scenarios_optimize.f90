@@ -199,7 +199,7 @@ contains
     type(xdmf_t) :: xdmf
     integer :: k
     character(len=:), allocatable :: r
-    call xdmf%start(file%final_path())
+    call xdmf%start()
     call xdmf%surface(file, 'slide surface', '/geometry/surface')
     do k = 1, n
       r = '/optimize/before/ride_'//format_integer(k)

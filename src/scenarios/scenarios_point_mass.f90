@@ -182,7 +182,7 @@ contains
     real(wp), intent(in) :: time(:)
     type(status_t), intent(inout) :: status
     type(xdmf_t) :: xdmf
-    call xdmf%start(file%final_path())
+    call xdmf%start()
     call xdmf%surface(file, 'surface', '/geometry/surface')
     call xdmf%polyline(file, 'path', '/point_mass/position', '/point_mass')
     call xdmf%moving_points(file, 'mass', time, ['/point_mass/position'], .false.)

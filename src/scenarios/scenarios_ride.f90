@@ -15,8 +15,8 @@ module scenarios_ride
   use geometry_cross_section, only: circle_section_t
   use water_flow, only: outcome_name
   use water_run, only: water_description_t, water_result_t, compute_water
-  use rider_model, only: N_CONTACTS, contact_names
-  use rider_ride, only: ride_options_t, ride_result_t, run_ride, check_ride_start
+  use rider_model, only: N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
+  use rider_ride, only: ride_options_t, ride_result_t, ride_series_t, run_ride, check_ride_start
   use design_ride_evaluation, only: limit_report_unit, ride_limit_t, quantities_without_limit
   use design_ride_report, only: ride_report_t, evaluate_ride
   use io_input, only: input_text_t, check_known_groups, format_real, invalid, where_given
@@ -123,8 +123,7 @@ contains
     if (allocated(ride%outcome)) message = 'ok: '//ride%outcome
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
-    if (write_status%ok() .and. ride%series%n > 0) call write_xdmf(file, ride%series%time(:ride%series%n), &
-                                                                   write_status)
+    if (write_status%ok() .and. ride%series%n > 0) call write_xdmf(file, ride%series, report, write_status)
     call file%finish(complete, message, write_status)
     if (allocated(ride%outcome)) call print_report(ride, report, water_done, water%cpu, ride_cpu, &
                                                    file%final_path(), run, complete, message, write_status, &
@@ -393,25 +392,98 @@ contains
   end function si
 
   !> XDMF next to the result: the slide, the water band, the contacts' paths
-  !> and the rider (its three contacts) moving.
-  subroutine write_xdmf(file, time, status)
+  !> (each with its own data and the rider's), the rider's posture line and
+  !> its three bodies as boxes moving with it.
+  subroutine write_xdmf(file, s, r, status)
     type(result_file_t), intent(inout) :: file
-    real(wp), intent(in) :: time(:)
+    type(ride_series_t), intent(in) :: s
+    type(ride_report_t), intent(in) :: r
     type(status_t), intent(inout) :: status
     type(xdmf_t) :: xdmf
     character(len=*), parameter :: contacts(3) = [character(len=22) :: &
       '/rider/pelvis/position', '/rider/heels/position', '/rider/back/position']
-    call xdmf%start(file%final_path())
+    integer :: k
+    call xdmf%start()
     call xdmf%surface(file, 'slide surface', '/geometry/surface')
     call xdmf%band(file, 'water band', '/water/right_point', '/water/left_point', &
                    [character(len=13) :: '/water/speed', '/water/height'])
-    call xdmf%polyline(file, 'pelvis path', '/rider/pelvis/position', '/rider')
-    call xdmf%polyline(file, 'heels path', '/rider/heels/position', '/rider')
-    call xdmf%polyline(file, 'back path', '/rider/back/position', '/rider')
+    do k = 1, N_CONTACTS
+      call xdmf%polyline(file, trim(contact_names(k))//' path', '/rider/'//trim(contact_names(k))//'/position', &
+                         '/rider/'//trim(contact_names(k)), more='/rider')
+    end do
     ! heels - pelvis - back as one polyline per time step: the rider's posture
-    call xdmf%moving_points(file, 'rider', time, [contacts(2), contacts(1), contacts(3)], .true.)
+    call xdmf%moving_points(file, 'rider', s%time(:s%n), [contacts(2), contacts(1), contacts(3)], .true.)
+    if (allocated(r%felt)) then
+      if (size(r%felt, 2) >= s%n) call add_rider_bodies(xdmf, s, r)
+    end if
     call xdmf%attach(file, status)
   end subroutine write_xdmf
+
+  !> The rider's pelvis, legs (pelvis to heels) and trunk (pelvis to back)
+  !> as boxes lying on the slide (their sizes are for the picture only):
+  !> each with its contact's normal force and wall angle, and the rider's
+  !> speed and felt acceleration.
+  subroutine add_rider_bodies(xdmf, s, r)
+    type(xdmf_t), intent(inout) :: xdmf
+    type(ride_series_t), intent(in) :: s
+    type(ride_report_t), intent(in) :: r
+    real(wp), parameter :: pelvis_half(3) = [0.12_wp, 0.18_wp, 0.10_wp]   ! m
+    real(wp), parameter :: legs_half(2) = [0.15_wp, 0.07_wp]   ! m, half width and thickness
+    real(wp), parameter :: trunk_half(2) = [0.18_wp, 0.10_wp]
+    character(len=*), parameter :: names(3) = [character(len=12) :: 'normal_force', 'wall_angle', 'speed']
+    real(wp), allocatable :: centre(:, :), axes(:, :, :), scalars(:, :), vectors(:, :, :)
+    real(wp) :: length(s%n)
+    integer :: n, i, k, tip
+    n = s%n
+    allocate (centre(3, n), axes(3, 3, n), scalars(3, n), vectors(3, 1, n))
+    vectors(:, 1, :) = r%felt(:, :n)
+    do k = 1, N_CONTACTS
+      scalars(1, :) = s%contact(k)%normal_force(:n)
+      scalars(2, :) = s%contact(k)%wall_angle(:n)
+      scalars(3, :) = s%speed(:n)
+      if (k == CONTACT_PELVIS) then
+        axes = s%pelvis_axes(:, :, :n)
+        do i = 1, n
+          centre(:, i) = s%contact(k)%position(:, i) + pelvis_half(3)*axes(:, 3, i)
+        end do
+        call xdmf%moving_box('rider pelvis', s%time(:n), centre, axes, pelvis_half, names, scalars, &
+                             ['felt_acceleration_g'], vectors)
+        cycle
+      end if
+      tip = k
+      do i = 1, n
+        call segment_axes(s%contact(CONTACT_PELVIS)%position(:, i), s%contact(tip)%position(:, i), &
+                          s%pelvis_axes(:, 3, i), axes(:, :, i), length(i))
+        centre(:, i) = 0.5_wp*(s%contact(CONTACT_PELVIS)%position(:, i) + s%contact(tip)%position(:, i))
+      end do
+      if (k == CONTACT_HEELS) then
+        do i = 1, n
+          centre(:, i) = centre(:, i) + legs_half(2)*axes(:, 3, i)
+        end do
+        call xdmf%moving_box('rider legs', s%time(:n), centre, axes, [0.5_wp*maxval(length), legs_half], &
+                             names, scalars, ['felt_acceleration_g'], vectors)
+      else
+        do i = 1, n
+          centre(:, i) = centre(:, i) + trunk_half(2)*axes(:, 3, i)
+        end do
+        call xdmf%moving_box('rider trunk', s%time(:n), centre, axes, [0.5_wp*maxval(length), trunk_half], &
+                             names, scalars, ['felt_acceleration_g'], vectors)
+      end if
+    end do
+  end subroutine add_rider_bodies
+
+  !> Axes of a body from `a` to `b` lying on a surface of normal `normal`:
+  !> x along a -> b, z the normal's part across x, y = z x x; `length` |b - a|.
+  pure subroutine segment_axes(a, b, normal, axes, length)
+    real(wp), intent(in) :: a(3), b(3), normal(3)
+    real(wp), intent(out) :: axes(3, 3), length
+    length = norm2(b - a)
+    axes(:, 1) = (b - a)/max(length, tiny(1.0_wp))
+    axes(:, 3) = normal - dot_product(normal, axes(:, 1))*axes(:, 1)
+    axes(:, 3) = axes(:, 3)/max(norm2(axes(:, 3)), tiny(1.0_wp))
+    axes(:, 2) = [axes(2, 3)*axes(3, 1) - axes(3, 3)*axes(2, 1), axes(3, 3)*axes(1, 1) - axes(1, 3)*axes(3, 1), &
+                  axes(1, 3)*axes(2, 1) - axes(2, 3)*axes(1, 1)]
+  end subroutine segment_axes
 
   !> The ride report (stdout) and, with --summary-json, its numbers as JSON.
   subroutine print_report(ride, r, water_done, water_cpu, ride_cpu, path, run, complete, message, status, water)

@@ -190,7 +190,7 @@ contains
     type(result_file_t), intent(inout) :: file
     type(status_t), intent(inout) :: status
     type(xdmf_t) :: xdmf
-    call xdmf%start(file%final_path())
+    call xdmf%start()
     call xdmf%surface(file, 'slide surface', '/geometry/surface')
     call xdmf%attach(file, status)
   end subroutine write_xdmf

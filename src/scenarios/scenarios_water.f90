@@ -271,7 +271,7 @@ contains
     logical, intent(in) :: edges
     type(status_t), intent(inout) :: status
     type(xdmf_t) :: xdmf
-    call xdmf%start(file%final_path())
+    call xdmf%start()
     call xdmf%surface(file, 'slide surface', '/geometry/surface')
     call xdmf%polyline(file, 'streamline', '/water/position', '/water')
     if (edges) call xdmf%band(file, 'water band', '/water/right_point', '/water/left_point', &

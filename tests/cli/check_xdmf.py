@@ -1,30 +1,39 @@
 """Checks the XDMF files slidesim writes next to its results.
 
-    check_xdmf.py [--docs OUTPUTS.md] FILE.xmf [...]              the structure, with h5py
-    pvbatch check_xdmf.py --paraview [--docs OUTPUTS.md] FILE.xmf [...]   also opens each in ParaView
+    check_xdmf.py [--docs OUTPUTS.md] FILE.xmf [...]              the structure (h5py, numpy)
+    pvpython check_xdmf.py --paraview [--docs OUTPUTS.md] FILE.xmf [...]   also opens each in ParaView
 
-Structure: the XML parses; every HDF DataItem names the HDF5 file beside it
-and a dataset that exists there with exactly the stated dimensions; every
-HyperSlab selects rows inside its dataset; every JOIN function's size is the
-sum of its parts; every grid's geometry has as many points as its topology
-has nodes, and every node attribute as many values; temporal collections have
-increasing times; a result with a surface grid has a surface grid in its
-XDMF. With --docs, the grids against the table of docs/outputs.md ("ParaView
-and VisIt"): every grid of a file is listed there for the file's scenario,
-and every grid listed for a scenario is in some file of that scenario among
-those checked. With --paraview, ParaView's XDMF reader loads each file and shows, at
-the first time step, the number of points the structure says. Prints
-failures; exit status 1 if any.
+Structure: the XML parses; every value is in the file (no HDF5 reference:
+ParaView's Xdmf3 readers abort on a relative one when the .xmf is named
+without a folder); every DataItem holds as many numbers as its Dimensions
+say; every grid's geometry has as many points as its topology has nodes,
+every connectivity index names one of them, every node attribute has as
+many values as points and every cell attribute as cells; a temporal
+collection's times increase, and its later steps include (xi:include) the
+first step's fixed grids; a surface grid has exactly the points of the
+result's /geometry/surface. With --docs, the grids against the table of
+docs/outputs.md ("ParaView and VisIt"): every grid of a file is listed there
+for the file's scenario, and every grid listed for a scenario is in some
+file of that scenario among those checked.
+
+With --paraview (run by pvpython): ParaView opens each file with the reader
+it picks by itself (OpenDataFile, as File > Open), which must be one of the
+readers named below; it must show the file's number of time steps, the
+arrays the file describes, and at the first and the last step the number of
+points the file describes. A crash (ParaView's Xdmf3 readers abort on what
+they cannot read) fails the whole check. Prints failures; exit status 1 if any.
 """
 import os
 import re
 import sys
 import xml.etree.ElementTree as ET
 
-import h5py
 import numpy as np
 
 failures = []
+XINCLUDE = '{http://www.w3.org/2001/XInclude}include'
+# readers ParaView 5.11 picks by itself for .xmf (Xdmf3ReaderS first)
+DEFAULT_READERS = {'Xdmf3ReaderS', 'Xdmf3ReaderT', 'XdmfReader'}
 
 
 def fail(path, message):
@@ -35,74 +44,56 @@ def dims(item):
     return [int(d) for d in item.get('Dimensions').split()]
 
 
-def item_size(path, item, h5):
-    """Checks a DataItem and returns its number of values."""
-    kind = item.get('ItemType', 'Uniform')
-    stated = dims(item)
-    if kind == 'Uniform':
-        if item.get('Format') == 'XML':
-            return int(np.prod(stated))
-        file_name, dataset = item.text.strip().split(':', 1)
-        if file_name != h5.filename.rsplit('/', 1)[-1]:
-            fail(path, f"DataItem refers to {file_name}, not the result beside it")
-        elif dataset not in h5:
-            fail(path, f"dataset {dataset} does not exist in {file_name}")
-        elif list(h5[dataset].shape) != stated:
-            fail(path, f"{dataset}: Dimensions {stated}, the dataset has {list(h5[dataset].shape)}")
-        return int(np.prod(stated))
-    if kind == 'HyperSlab':
-        selection, source = list(item)
-        values = [int(v) for v in selection.text.split()]
-        rank = len(values) // 3
-        start, stride, count = values[:rank], values[rank:2 * rank], values[2 * rank:]
-        item_size(path, source, h5)
-        extent = dims(source)
-        for k in range(rank):
-            if start[k] < 0 or start[k] + (count[k] - 1) * stride[k] >= extent[k]:
-                fail(path, f"HyperSlab {values} outside {source.text.strip()} {extent}")
-        if int(np.prod(count)) != int(np.prod(stated)):
-            fail(path, f"HyperSlab selects {count}, states {stated}")
-        return int(np.prod(stated))
-    if kind == 'Function':
-        function = item.get('Function')
-        parts = [item_size(path, child, h5) for child in item]
-        if function.startswith('JOIN('):
-            used = [int(token.strip().lstrip('$')) for token in function[5:-1].split(';')]
-            total = sum(parts[k] for k in used)
-            if total != int(np.prod(stated)):
-                fail(path, f"{function}: parts of {total} values, states {stated}")
-        else:
-            fail(path, f"unexpected function {function}")
-        return int(np.prod(stated))
-    fail(path, f"unexpected ItemType {kind}")
-    return 0
+def values(path, item):
+    """The numbers of an inline DataItem, checked against its Dimensions."""
+    if item.get('Format') != 'XML' or item.get('ItemType', 'Uniform') != 'Uniform':
+        fail(path, f"DataItem not inline XML: {item.attrib}")
+        return np.zeros(0)
+    numbers = np.array(item.text.split(), dtype=float)
+    if numbers.size != int(np.prod(dims(item))):
+        fail(path, f"DataItem of Dimensions {dims(item)} holds {numbers.size} numbers")
+    if not np.all(np.isfinite(numbers)):
+        fail(path, "DataItem holds a number that is not finite")
+    return numbers
 
 
-def nodes(path, topology):
+def check_uniform(path, grid):
+    """Checks one uniform grid; returns (points, cells, attribute names, xyz)."""
+    name = grid.get('Name')
+    topology = grid.find('Topology')
     kind = topology.get('TopologyType')
+    xyz = values(path, grid.find('Geometry').find('DataItem')).reshape(-1, 3)
+    n = len(xyz)
     if kind == '2DSMesh':
-        return int(np.prod(dims(topology)))
-    if kind in ('Polyline', 'Polyvertex'):
-        return int(topology.get('NodesPerElement')) * int(topology.get('NumberOfElements'))
-    fail(path, f"unexpected topology {kind}")
-    return 0
-
-
-def check_uniform(path, grid, h5):
-    """Checks one uniform grid and returns its number of points."""
-    n = nodes(path, grid.find('Topology'))
-    geometry = grid.find('Geometry')
-    sizes = [item_size(path, item, h5) for item in geometry.findall('DataItem')]
-    points = sum(sizes) // 3 if geometry.get('GeometryType') == 'XYZ' else sizes[0]
-    if points != n:
-        fail(path, f"grid {grid.get('Name')}: {points} points, topology has {n} nodes")
+        shape = dims(topology)
+        if int(np.prod(shape)) != n:
+            fail(path, f"grid {name}: {n} points, topology {shape}")
+        cells = (shape[0] - 1) * (shape[1] - 1)
+    elif kind in ('Polyline', 'Polyvertex', 'Triangle'):
+        per = {'Triangle': 3}.get(kind, int(topology.get('NodesPerElement', 0)))
+        cells = int(topology.get('NumberOfElements'))
+        item = topology.find('DataItem')
+        if item is None:   # the Xdmf3 readers make no cell without a connectivity
+            fail(path, f"grid {name}: {kind} without connectivity")
+        else:
+            connectivity = values(path, item)
+            if connectivity.size != cells * per:
+                fail(path, f"grid {name}: {connectivity.size} indices for {cells} cells of {per}")
+            if connectivity.size and (connectivity.min() < 0 or connectivity.max() >= n):
+                fail(path, f"grid {name}: a connectivity index outside its {n} points")
+    else:
+        fail(path, f"grid {name}: unexpected topology {kind}")
+        cells = 0
+    names = []
     for attribute in grid.findall('Attribute'):
-        size = item_size(path, attribute.find('DataItem'), h5)
-        per_node = {'Scalar': 1, 'Vector': 3}[attribute.get('AttributeType')]
-        if size != per_node * n:
-            fail(path, f"grid {grid.get('Name')}: attribute {attribute.get('Name')} has {size} values "
-                       f"for {n} nodes")
-    return n
+        per = {'Scalar': 1, 'Vector': 3}[attribute.get('AttributeType')]
+        count = {'Node': n, 'Cell': cells}[attribute.get('Center')]
+        size = values(path, attribute.find('DataItem')).size
+        if size != per * count:
+            fail(path, f"grid {name}: attribute {attribute.get('Name')} has {size} values for {count} "
+                       f"{attribute.get('Center').lower()}s")
+        names.append(attribute.get('Name'))
+    return n, cells, names, xyz
 
 
 def documented_grids(docs):
@@ -138,29 +129,114 @@ def check_docs(docs, grids_of):
                 fail(docs, f"grid {name!r} listed for {scenario}, but no {scenario} file checked has it")
 
 
+def check_surface(path, name, xyz, h5_path):
+    """A surface grid holds the result's surface points (nine digits)."""
+    import h5py
+    with h5py.File(h5_path, 'r') as h5:
+        if '/geometry/surface/x' not in h5:
+            fail(path, f"grid {name}: the result has no /geometry/surface")
+            return
+        expected = np.stack([h5['/geometry/surface/' + c][()].ravel() for c in 'xyz'], axis=1)
+    scale = max(1.0, float(np.abs(expected).max()))
+    # the file holds nine significant digits: 5e-9 of the largest coordinate
+    if expected.shape != xyz.shape or np.abs(expected - xyz).max() > 1e-8 * scale:
+        fail(path, f"grid {name}: its points are not the result's /geometry/surface")
+
+
 def check(path):
-    """Checks one XDMF file; returns (the points ParaView should show at t0,
-    the scenario, the top-level grid names)."""
+    """Checks one XDMF file; returns a dict: points at the first and last
+    step, steps, arrays, scenario, top-level grid names."""
     root = ET.parse(path).getroot()
     h5_path = os.path.join(os.path.dirname(path), os.path.basename(path)[:-4] + '.h5')
-    h5 = h5py.File(h5_path, 'r')
-    points = 0
-    names = []
-    for grid in root.find('Domain').findall('Grid'):
-        names.append(grid.get('Name'))
-        if grid.get('GridType') == 'Collection':
-            times = [float(g.find('Time').get('Value')) for g in grid.findall('Grid')]
-            if any(b <= a for a, b in zip(times, times[1:])):
-                fail(path, f"collection {grid.get('Name')}: times not increasing")
-            counts = [check_uniform(path, g, h5) for g in grid.findall('Grid')]
-            points += counts[0]
-        else:
-            points += check_uniform(path, grid, h5)
-    if '/geometry/surface/x' in h5 and not any('surface' in name for name in names):
-        fail(path, "the result has a surface grid, the XDMF file none")
-    scenario = h5.attrs['scenario']
-    h5.close()
-    return points, scenario, names
+    text = open(path, encoding='utf-8').read()
+    if 'Format="HDF"' in text:
+        fail(path, "an HDF5 reference (the Xdmf3 readers abort on it when the .xmf has no folder)")
+    domain = root.find('Domain')
+    collections = [g for g in domain.findall('Grid') if g.get('CollectionType') == 'Temporal']
+    arrays = set()
+    if collections:
+        if len(domain.findall('Grid')) != 1:
+            fail(path, "a temporal collection beside other grids (the Xdmf3 readers drop those)")
+        steps = collections[0].findall('Grid')
+        times = [float(step.find('Time').get('Value')) for step in steps]
+        if any(b <= a for a, b in zip(times, times[1:])):
+            fail(path, "time steps not increasing")
+        first = steps[0].findall('Grid')
+        fixed_count = len(steps[1].findall(XINCLUDE)) if len(steps) > 1 else 0
+        fixed_points = 0
+        for grid in first[:fixed_count]:
+            n, _, names_of, _ = check_uniform(path, grid)
+            fixed_points += n
+            arrays.update(names_of)
+        counts = []
+        for s, step in enumerate(steps):
+            includes = step.findall(XINCLUDE)
+            own = step.findall('Grid')[fixed_count if s == 0 else 0:]
+            if s > 0 and (len(includes) != fixed_count or len(own) != len(first) - fixed_count):
+                fail(path, f"step {s + 1}: {len(includes)} included and {len(own)} own grids, the first step "
+                           f"{fixed_count} fixed and {len(first) - fixed_count} moving")
+            for k, include in enumerate(includes):
+                wanted = f"xpointer(/Xdmf/Domain/Grid/Grid[1]/Grid[{k + 1}])"
+                if include.get('xpointer') != wanted:
+                    fail(path, f"step {s + 1}: includes {include.get('xpointer')}, not {wanted}")
+            points = fixed_points
+            for grid in own:
+                n, _, names_of, _ = check_uniform(path, grid)
+                points += n
+                arrays.update(names_of)
+            counts.append(points)
+        names = [g.get('Name') for g in first]
+        grids_for_surface = first
+        result = {'points': (counts[0], counts[-1]), 'steps': len(steps)}
+    else:
+        grids_for_surface = domain.findall('Grid')
+        points = 0
+        for grid in grids_for_surface:
+            n, _, names_of, _ = check_uniform(path, grid)
+            points += n
+            arrays.update(names_of)
+        names = [g.get('Name') for g in grids_for_surface]
+        result = {'points': (points, points), 'steps': 0}
+    for grid in grids_for_surface:
+        if 'surface' in grid.get('Name'):
+            check_surface(path, grid.get('Name'), check_uniform(path, grid)[3], h5_path)
+    import h5py
+    with h5py.File(h5_path, 'r') as h5:
+        if '/geometry/surface/x' in h5 and not any('surface' in name for name in names):
+            fail(path, "the result has a surface grid, the XDMF file none")
+        scenario = h5.attrs['scenario']
+    result.update(arrays=arrays, scenario=scenario, names=names)
+    return result
+
+
+def open_in_paraview(path, expected):
+    """Opens `path` as File > Open does; compares with the file's own description."""
+    from paraview.simple import OpenDataFile, Delete
+    reader = OpenDataFile(path)
+    if reader is None:
+        fail(path, "ParaView has no reader for it")
+        return
+    name = reader.GetXMLName()
+    if name not in DEFAULT_READERS:
+        fail(path, f"ParaView picked the reader {name}")
+    reader.UpdatePipelineInformation()
+    times = list(reader.TimestepValues or [])
+    if len(times) != expected['steps']:
+        fail(path, f"ParaView shows {len(times)} time steps, the file has {expected['steps']}")
+    shown_arrays = set()
+    for k, t in enumerate(times[:1] + times[-1:] if times else [0.0]):
+        reader.UpdatePipeline(t)
+        info = reader.GetDataInformation()
+        shown = info.GetNumberOfPoints()
+        wanted = expected['points'][min(k, 1)]
+        if shown != wanted:
+            fail(path, f"{name} shows {shown} points at t = {t}, the file describes {wanted}")
+        shown_arrays.update(reader.PointData.keys())
+        shown_arrays.update(reader.CellData.keys())
+    if shown_arrays != expected['arrays']:
+        fail(path, f"{name} shows the arrays {sorted(shown_arrays)}, the file has {sorted(expected['arrays'])}")
+    Delete(reader)
+    print(f"{os.path.basename(path)}: {name}, {len(times)} steps, {len(shown_arrays)} arrays")
 
 
 def main(args):
@@ -170,20 +246,11 @@ def main(args):
     if paths[:1] == ['--docs']:
         docs, paths = paths[1], paths[2:]
     checked = {path: check(path) for path in paths}
-    expected = {path: points for path, (points, _, _) in checked.items()}
     if docs:
-        check_docs(docs, {path: (scenario, names) for path, (_, scenario, names) in checked.items()})
+        check_docs(docs, {path: (c['scenario'], c['names']) for path, c in checked.items()})
     if paraview:
-        from paraview.simple import XDMFReader, Delete
         for path in paths:
-            reader = XDMFReader(FileNames=[path])
-            reader.UpdatePipelineInformation()
-            times = reader.TimestepValues
-            reader.UpdatePipeline(times[0] if times else 0.0)
-            shown = reader.GetDataInformation().GetNumberOfPoints()
-            if shown != expected[path]:
-                fail(path, f"ParaView shows {shown} points, the file describes {expected[path]}")
-            Delete(reader)
+            open_in_paraview(path, checked[path])
     for line in failures:
         print('FAIL ' + line)
     print(f"{len(paths)} XDMF files checked{' and opened in ParaView' if paraview else ''}, "

@@ -1,0 +1,100 @@
+"""Opens a slidesim result in ParaView ready to play.
+
+    paraview --script=scripts/paraview_open.py        (asks nothing: opens $SLIDESIM_XMF)
+    pvpython scripts/paraview_open.py RESULT.xmf [--screenshot OUT.png | --no-render]
+    in ParaView's Python shell: exec(open('scripts/paraview_open.py').read()) after
+    setting xmf = 'RESULT.xmf'
+
+Opens RESULT.xmf (the XDMF file next to RESULT.h5) with ParaView's "Xdmf3
+Reader (T)" (the "(S)" reader it picks by itself reads the same, but as
+pieces of one block without their names), shows the slide half transparent, the water band coloured
+by its speed, the rider's bodies by their normal force and the paths by the
+speed, sets the animation to the file's time steps and goes to the first.
+With --screenshot it renders the last time step into OUT.png (needs a
+display, or a ParaView built for off-screen rendering); with --no-render
+it only builds the pipeline and prints each grid's points (what CI runs).
+"""
+import os
+import sys
+
+from paraview.simple import (ExtractBlock, GetActiveViewOrCreate, GetAnimationScene, GetColorTransferFunction,
+                             Render, ResetCamera, SaveScreenshot, Show, Xdmf3ReaderT)
+
+# grid name -> (array to colour by, its centring), None: a plain colour
+COLOURS = {
+    'water band': ('speed', 'POINTS'),
+    'rider pelvis': ('normal_force', 'CELLS'),
+    'rider legs': ('normal_force', 'CELLS'),
+    'rider trunk': ('normal_force', 'CELLS'),
+    'streamline': ('speed', 'POINTS'),
+}
+
+
+def grids(reader):
+    """{grid name: selector} of the file's grids (a grid included in every
+    time step is labelled with its name and "[1]"s)."""
+    hierarchy = reader.GetDataInformation().DataInformation.GetHierarchy()
+    found = {}
+    for node in hierarchy.GetChildNodes(0):
+        label = hierarchy.GetAttributeOrDefault(node, 'label', hierarchy.GetNodeName(node))
+        found[label.split('[', 1)[0]] = hierarchy.GetNodePath(node)
+    return found
+
+
+def open_result(xmf, screenshot=None, render=True):
+    """Opens `xmf`; returns the reader and its grids {name: source}."""
+    if not os.path.isfile(xmf):
+        sys.exit(f"paraview_open.py: {xmf}: no such file (the .xmf next to a slidesim result)")
+    reader = Xdmf3ReaderT(FileName=[xmf])
+    reader.UpdatePipelineInformation()
+    times = list(reader.TimestepValues or [0.0])
+    reader.UpdatePipeline(times[0])
+    view = GetActiveViewOrCreate('RenderView') if render else None
+    shown = {}
+    for name, selector in grids(reader).items():
+        block = ExtractBlock(registrationName=name, Input=reader, Selectors=[selector])
+        shown[name] = block
+        if not render:
+            block.UpdatePipeline(times[0])
+            print(f"{name}: {block.GetDataInformation().GetNumberOfPoints()} points")
+            continue
+        display = Show(block, view)
+        if 'surface' in name:
+            display.Opacity = 0.35
+        colour = COLOURS.get(name) or (('speed', 'POINTS') if name.endswith('path') else None)
+        if colour:
+            display.ColorArrayName = [colour[1], colour[0]]
+            display.RescaleTransferFunctionToDataRange(True, False)
+            GetColorTransferFunction(colour[0])
+            display.SetScalarBarVisibility(view, True)
+    if not render:
+        return reader, shown
+    scene = GetAnimationScene()
+    scene.UpdateAnimationUsingDataTimeSteps()
+    scene.GoToFirst()
+    ResetCamera(view)
+    if screenshot:
+        scene.GoToLast()
+        Render(view)
+        SaveScreenshot(screenshot, view, ImageResolution=[1280, 720])
+    return reader, shown
+
+
+if __name__ == '__main__':
+    args = sys.argv[1:]
+    out = None
+    render = '--no-render' not in args
+    args = [a for a in args if a != '--no-render']
+    if '--screenshot' in args:
+        k = args.index('--screenshot')
+        out = args[k + 1]
+        del args[k:k + 2]
+    target = args[0] if args else os.environ.get('SLIDESIM_XMF', '')
+    if not target:
+        sys.exit(__doc__)
+    open_result(target, out, render)
+    if render:
+        Render()
+elif 'xmf' in globals():
+    open_result(globals()['xmf'])
+    Render()
