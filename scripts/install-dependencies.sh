@@ -27,7 +27,8 @@ runtime_packages=(gfortran cmake make liblapack-dev libblas-dev minpack-dev libh
                   python3 python3-numpy python3-h5py python3-matplotlib python3-munkres
                   curl ca-certificates xz-utils dpkg-dev)
 test_packages=(hdf5-tools libopenmpi-dev openmpi-bin python3-scipy python3-pint python3-xarray
-               python3-h5netcdf python3-pandas python3-venv udunits-bin paraview python3-paraview)
+               python3-h5netcdf python3-pandas python3-venv udunits-bin paraview python3-paraview
+               ffmpeg)   # ffmpeg: viewer extra, the film of a ride (slidesim-plot --movie; a GIF without it)
 
 usage="usage: $0 [--runtime | --test | --list runtime|test]"
 case ${1:---test} in

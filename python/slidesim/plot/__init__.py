@@ -68,6 +68,8 @@ def parser():
     if _movie_available():
         p.add_argument("--movie", metavar="FILM", help="a ride: its film (.mp4 with ffmpeg, else .gif; "
                        "slidesim.movie); the picture too only with -o")
+        p.add_argument("--movie-frames", type=int, metavar="N",
+                       help="the film's number of frames (default: 20 per second of the ride, at most 600)")
     return p
 
 
@@ -126,9 +128,9 @@ def main(argv=None):
                 print(f"wrote {output}")
             if movie:
                 from ..movie import make_movie
-                written, frames = make_movie(args.files[0], movie)
+                written, frames = make_movie(args.files[0], movie, args.movie_frames)
                 print(f"wrote {written} ({frames} frames)")
-        except ResultFileError as error:
+        except (ResultFileError, ValueError, OSError) as error:   # the movie's NotARide is a ValueError
             print(f"error: {error}", file=sys.stderr)
             return 1
         if args.show and os.environ.get("DISPLAY"):
