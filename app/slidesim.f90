@@ -37,6 +37,9 @@ program slidesim
   call guard_standard_streams()
   cli%output = ''
   cli%summary_json = ''
+  cli%export_stl = ''
+  cli%export_obj = ''
+  cli%ride_csv = ''
   allocate (character(len=1) :: overrides(0))
   options_ended = .false.
   n = command_argument_count()
@@ -101,6 +104,15 @@ program slidesim
       call take_value()
       if (len(value) == 0) call usage_error(option//' needs a file name')
       cli%summary_json = value
+    case ('--export-stl', '--export-obj')
+      call take_value()
+      if (len(value) == 0) call usage_error(option//' needs a file name')
+      if (option == '--export-stl') cli%export_stl = value
+      if (option == '--export-obj') cli%export_obj = value
+    case ('--ride-csv')
+      call take_value()
+      if (len(value) == 0) call usage_error(option//' needs a file name')
+      cli%ride_csv = value
     case ('--default-input')
       ! an optional scenario name: --default-input water, --default-input=water
       if (.not. has_value .and. i < n) then
@@ -220,6 +232,9 @@ contains
     call write_standard_output('  --summary-json FILE       also write the summary''s numbers as JSON to FILE')
     call write_standard_output('  --fail-on-limit           exit status 4 when a ride (of ride or sweep) exceeds')
     call write_standard_output('                            a limit of &rider (as &evaluation fail_on_limit)')
+    call write_standard_output('  --export-stl FILE         also write the slide surface and the water band as ASCII STL')
+    call write_standard_output('  --export-obj FILE         ... as Wavefront OBJ (after a complete run; docs/outputs.md)')
+    call write_standard_output('  --ride-csv FILE           a ride: also its time series as CSV (speed, felt g, forces)')
     call write_standard_output('  --default-input [SCENARIO] print the built-in default input, or a commented')
     call write_standard_output('                            template of SCENARIO')
     call write_standard_output('  --progress SECONDS        wall-clock seconds between progress lines of long')

@@ -28,6 +28,7 @@ module io_geometry_config
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, bounds_t, format_real, &
     format_vector, group_present, where_given
   use io_csv, only: read_csv_table
+  use io_element_table, only: element_table_t, read_element_table, check_element
   implicit none (type, external)
   private
   public :: read_geometry_config, geometry_groups, geometry_kinds, geometry_file_groups
@@ -363,9 +364,12 @@ contains
     type(group_reader_t) :: r
     character(len=:), allocatable :: lim
     character(len=*), parameter :: g = 'slide_elements'
-    character(len=*), parameter :: names(16) = [character(len=17) :: 'n_elements', 'kind', 'length', &
+    character(len=*), parameter :: names(17) = [character(len=17) :: 'n_elements', 'kind', 'length', &
       'slope_deg', 'radius', 'angle_deg', 'direction', 'turns', 'drop', 'start', 'heading_deg', &
-      'transition_length', 'centerline_kind', 'fit_spacing', 'smoothing', 'degree']
+      'transition_length', 'centerline_kind', 'fit_spacing', 'smoothing', 'degree', 'elements_file']
+    character(len=4096) :: elements_file
+    type(element_table_t) :: table
+    character(len=:), allocatable :: variable, value, allowed
 
     n = 0
     start = [0, 0, 0]; heading_deg = 0; transition_length = 2
@@ -376,28 +380,50 @@ contains
                       ' or choose another &geometry kind')
       return
     end if
+    elements_file = ''
     call open_group(input, g, names, r, status)
-    call r%get('n_elements', n, 1, max_elements, status)
+    call r%get('elements_file', elements_file, status)
     if (.not. status%ok()) return
-    if (.not. r%has('n_elements')) then
-      call r%invalid('n_elements', '0', 'give the number of elements (1 to '//format_integer(max_elements)//')', &
-                     status)
-      return
+    if (len_trim(elements_file) > 0) then
+      ! the elements from a manufacturer's table (io_element_table), checked there
+      call r%refuse_given([character(len=9) :: 'kind', 'length', 'slope_deg', 'radius', 'angle_deg', 'direction', &
+                           'turns', 'drop'], 'the elements come from elements_file', status)
+      if (status%ok()) call read_element_table(input%resolve_path(elements_file), max_elements, table, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, r%where('elements_file')//': &'//g//': elements_file = '''// &
+                           trim(elements_file)//'''')
+        return
+      end if
+      n = size(table%kind)
+      call r%get('n_elements', n, n, n, status)   ! if given, the table's number of rows
+      if (.not. status%ok()) return
+      kind = table%kind; direction = table%direction; length = table%length; slope_deg = table%slope_deg
+      radius = table%radius; angle_deg = table%angle_deg; turns = table%turns; drop = table%drop
+      allocate (given_kind(n), e(n))
+      given_kind = .true.
+    else
+      call r%get('n_elements', n, 1, max_elements, status)
+      if (.not. status%ok()) return
+      if (.not. r%has('n_elements')) then
+        call r%invalid('n_elements', '0', 'give the number of elements (1 to '//format_integer(max_elements)// &
+                       ') or an elements_file', status)
+        return
+      end if
+      lim = 'n_elements = '//format_integer(n)
+      allocate (kind(n), direction(n), length(n), slope_deg(n), radius(n), angle_deg(n), turns(n), drop(n), &
+                given_kind(n), e(n))
+      kind = ''; direction = 'left'
+      length = 0; slope_deg = 0; radius = 0; angle_deg = 0; turns = 0; drop = 0
+      call r%get_parts('kind', kind, lim, status, choices=[character(len=8) :: 'straight', 'curve', 'helix', &
+                       'runout'], given=given_kind)
+      call r%get_parts('direction', direction, lim, status, choices=[character(len=5) :: 'left', 'right'])
+      call r%get_parts('length', length, in_range(0.0_wp, 1e4_wp, 'm'), lim, status)
+      call r%get_parts('slope_deg', slope_deg, in_range(-45.0_wp, 45.0_wp, 'deg'), lim, status)
+      call r%get_parts('radius', radius, in_range(0.0_wp, 1e4_wp, 'm'), lim, status)
+      call r%get_parts('angle_deg', angle_deg, in_range(0.0_wp, 720.0_wp, 'deg'), lim, status)
+      call r%get_parts('turns', turns, in_range(0.0_wp, 100.0_wp, '1'), lim, status)
+      call r%get_parts('drop', drop, in_range(-1e4_wp, 1e4_wp, 'm'), lim, status)
     end if
-    lim = 'n_elements = '//format_integer(n)
-    allocate (kind(n), direction(n), length(n), slope_deg(n), radius(n), angle_deg(n), turns(n), drop(n), &
-              given_kind(n), e(n))
-    kind = ''; direction = 'left'
-    length = 0; slope_deg = 0; radius = 0; angle_deg = 0; turns = 0; drop = 0
-    call r%get_parts('kind', kind, lim, status, choices=[character(len=8) :: 'straight', 'curve', 'helix', 'runout'], &
-                     given=given_kind)
-    call r%get_parts('direction', direction, lim, status, choices=[character(len=5) :: 'left', 'right'])
-    call r%get_parts('length', length, in_range(0.0_wp, 1e4_wp, 'm'), lim, status)
-    call r%get_parts('slope_deg', slope_deg, in_range(-45.0_wp, 45.0_wp, 'deg'), lim, status)
-    call r%get_parts('radius', radius, in_range(0.0_wp, 1e4_wp, 'm'), lim, status)
-    call r%get_parts('angle_deg', angle_deg, in_range(0.0_wp, 720.0_wp, 'deg'), lim, status)
-    call r%get_parts('turns', turns, in_range(0.0_wp, 100.0_wp, '1'), lim, status)
-    call r%get_parts('drop', drop, in_range(-1e4_wp, 1e4_wp, 'm'), lim, status)
     call r%get('start', start, in_range(-1e6_wp, 1e6_wp, 'm'), status)
     call r%get('heading_deg', heading_deg, in_range(-360.0_wp, 360.0_wp, 'deg'), status)
     call r%get('transition_length', transition_length, in_range(0.0_wp, 100.0_wp, 'm'), status)
@@ -416,35 +442,9 @@ contains
     call check_list_length(r, 'n_elements', n, 'kind', count(given_kind), 'elements', status)
     do i = 1, n
       if (.not. status%ok()) return
-      select case (trim(kind(i)))
-      case ('straight', 'runout')
-        call no_value(radius(i), 'radius')
-        call no_value(angle_deg(i), 'angle_deg')
-        call no_value(turns(i), 'turns')
-        call no_value(drop(i), 'drop')
-        call no_direction()
-        if (status%ok() .and. .not. length(i) > 0) call r%invalid(part('length'), format_real(length(i)), &
-          'a '//trim(kind(i))//' needs a length > 0 (m)', status)
-      case ('curve')
-        call no_value(length(i), 'length')
-        call no_value(turns(i), 'turns')
-        call no_value(drop(i), 'drop')
-        if (status%ok() .and. .not. radius(i) > 0) call r%invalid(part('radius'), format_real(radius(i)), &
-          'a curve needs a radius > 0 (m)', status)
-        if (status%ok() .and. .not. angle_deg(i) >= 1e-6_wp) call r%invalid(part('angle_deg'), &
-          format_real(angle_deg(i)), 'a curve needs a turning angle in [1e-6, 720] (deg)', status)
-      case ('helix')
-        call no_value(length(i), 'length')
-        call no_value(slope_deg(i), 'slope_deg')
-        call no_value(angle_deg(i), 'angle_deg')
-        if (status%ok() .and. .not. radius(i) > 0) call r%invalid(part('radius'), format_real(radius(i)), &
-          'a helix needs a radius > 0 (m)', status)
-        if (status%ok() .and. .not. turns(i) > 0) call r%invalid(part('turns'), format_real(turns(i)), &
-          'a helix needs turns > 0', status)
-        if (status%ok() .and. abs(drop(i)) > two_pi*radius(i)*turns(i)) &
-          call r%invalid(part('drop'), format_real(drop(i)), &
-                         'the helix would be steeper than 45 deg (|drop| <= 2 pi radius turns)', status)
-      end select
+      call check_element(kind(i), length(i), slope_deg(i), radius(i), angle_deg(i), direction(i), turns(i), &
+                         drop(i), variable, value, allowed)
+      if (len(variable) > 0) call r%invalid(part(variable), value, allowed, status)
       if (.not. status%ok()) return
       e(i) = slide_element_t(kind=kind(i), length=length(i), slope_deg=slope_deg(i), radius=radius(i), &
                              angle_deg=angle_deg(i), direction=direction(i), turns=turns(i), drop=drop(i))
@@ -467,19 +467,6 @@ contains
       character(len=:), allocatable :: text
       text = name//'('//format_integer(i)//')'
     end function part
-
-    !> A value element i does not use must be 0 (its default).
-    subroutine no_value(x, name)
-      real(wp), intent(in) :: x
-      character(len=*), intent(in) :: name
-      if (status%ok() .and. x /= 0) call r%invalid(part(name), format_real(x), 'a '//trim(kind(i))// &
-        ' does not use '//name//'; give 0 or leave it out', status)
-    end subroutine no_value
-
-    subroutine no_direction()
-      if (status%ok() .and. direction(i) /= 'left') call r%invalid(part('direction'), ''''//trim(direction(i))// &
-        '''', 'a '//trim(kind(i))//' does not turn; give ''left'' (the default) or leave it out', status)
-    end subroutine no_direction
   end subroutine read_slide_elements
 
   !> &cross_section: n_sections sections (circle, ellipse, flume, profile)

@@ -17,6 +17,11 @@ module io_run_config
     character(len=:), allocatable :: summary_json
     !> --fail-on-limit: a ride (or sweep) over a limit ends with exit status 4
     logical :: fail_on_limit = .false.
+    !> --export-stl FILE, --export-obj FILE: the slide surface and the water band as
+    !> a mesh (io_mesh_export); empty or not allocated: none
+    character(len=:), allocatable :: export_stl, export_obj
+    !> --ride-csv FILE: a ride's time series as CSV (scenario ride); empty or not allocated: none
+    character(len=:), allocatable :: ride_csv
   end type run_config_t
 
 contains

@@ -7,6 +7,7 @@ module scenarios_registry
   use io_system, only: write_standard_output
   use io_output_files, only: start_run_files, claim_output
   use io_xdmf, only: xdmf_path
+  use io_mesh_export, only: export_result_meshes, check_export_path
   use io_builtin_inputs, only: builtin_input
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
@@ -171,7 +172,13 @@ contains
       run%check_only = cli%check_only
       run%fail_on_limit = cli%fail_on_limit
       if (allocated(cli%summary_json)) run%summary_json = cli%summary_json
+      if (allocated(cli%export_stl)) run%export_stl = cli%export_stl
+      if (allocated(cli%export_obj)) run%export_obj = cli%export_obj
+      if (allocated(cli%ride_csv)) run%ride_csv = cli%ride_csv
     end if
+    if (.not. allocated(run%ride_csv)) run%ride_csv = ''
+    if (.not. allocated(run%export_stl)) run%export_stl = ''
+    if (.not. allocated(run%export_obj)) run%export_obj = ''
     call read_run_config(input, scenario_names, run, status)
     if (.not. status%ok()) return
     if (run%fail_on_limit .and. all(trim(run%scenario) /= [character(len=5) :: 'ride', 'sweep'])) then
@@ -185,6 +192,8 @@ contains
       if (cli_output) run%output = cli%output
     end if
     call claim_outputs(input, run, cli_output, status)
+    if (.not. status%ok()) return
+    call check_exports(run, status)
     if (.not. status%ok()) return
     select case (trim(run%scenario))
     case ('point_mass')
@@ -214,5 +223,38 @@ contains
     end select
     if (status%ok() .and. run%check_only) call write_standard_output(input%name//': input ok (scenario '// &
       trim(run%scenario)//'; results would go to '//trim(run%output)//')')
+    if (status%ok() .and. .not. run%check_only .and. len(run%export_stl) + len(run%export_obj) > 0) &
+      call export_result_meshes(trim(run%output), run%export_stl, run%export_obj, status)
   end subroutine run_input
+
+  !> --export-stl and --export-obj: refused before any work for a scenario
+  !> without a surface grid (exit 1) and for a path never written (exit 3).
+  subroutine check_exports(run, status)
+    type(run_config_t), intent(in) :: run
+    type(status_t), intent(inout) :: status
+    if (len(run%ride_csv) > 0) then
+      if (trim(run%scenario) /= 'ride') then
+        call set_status(status, STATUS_INVALID_INPUT, '--ride-csv '//run%ride_csv//': a '//trim(run%scenario)// &
+                        ' run has no ride time series (scenario ride)')
+        return
+      end if
+      call check_export_path('--ride-csv', run%ride_csv, trim(run%output), status)
+      if (.not. status%ok()) return
+    end if
+    if (len(run%export_stl) + len(run%export_obj) == 0) return
+    select case (trim(run%scenario))
+    case ('pendulum', 'fourbar')
+      call set_status(status, STATUS_INVALID_INPUT, '--export-'//merge('stl', 'obj', len(run%export_stl) > 0)// &
+                      ': a '//trim(run%scenario)//' run has no surface to export (scenarios with one: '// &
+                      'geometry, water, ride, point_mass, sled, contact, optimize, sweep, identify_water, '// &
+                      'identify_rider)')
+      return
+    end select
+    if (len(run%export_stl) > 0) call check_export_path('--export-stl', run%export_stl, trim(run%output), status)
+    if (len(run%export_obj) > 0 .and. status%ok()) &
+      call check_export_path('--export-obj', run%export_obj, trim(run%output), status)
+    if (status%ok() .and. run%export_stl == run%export_obj) &
+      call set_status(status, STATUS_INVALID_INPUT, '--export-stl and --export-obj name the same file '// &
+                      run%export_stl//'; name two')
+  end subroutine check_exports
 end module scenarios_registry

@@ -29,6 +29,7 @@ module scenarios_ride
   use io_water_results, only: write_water_results
   use io_summary, only: summary_t, degrees
   use io_xdmf, only: xdmf_t
+  use io_text_output, only: write_csv_columns
   use scenarios_water, only: build_water, write_slide_grid
   implicit none (type, external)
   private
@@ -128,6 +129,10 @@ contains
     if (allocated(ride%outcome)) call print_report(ride, report, water_done, water%cpu, ride_cpu, &
                                                    file%final_path(), run, complete, message, write_status, &
                                                    water_description)
+    ! the time series as CSV only for a complete run: a CSV cannot say it is cut short
+    if (complete .and. write_status%ok() .and. allocated(run%ride_csv)) then
+      if (len(run%ride_csv) > 0) call write_ride_csv(run%ride_csv, ride%series, report, write_status)
+    end if
     if (.not. run_status%ok()) then
       status = run_status
     else if (.not. write_status%ok()) then
@@ -484,6 +489,39 @@ contains
     axes(:, 2) = [axes(2, 3)*axes(3, 1) - axes(3, 3)*axes(2, 1), axes(3, 3)*axes(1, 1) - axes(1, 3)*axes(3, 1), &
                   axes(1, 3)*axes(2, 1) - axes(2, 3)*axes(1, 1)]
   end subroutine segment_axes
+
+  !> --ride-csv: one line per record of the ride (as /rider in the result).
+  subroutine write_ride_csv(path, s, r, status)
+    character(len=*), intent(in) :: path
+    type(ride_series_t), intent(in) :: s
+    type(ride_report_t), intent(in) :: r
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: names(20) = [character(len=24) :: 'time_s', 'arc_length_m', 'speed_m_per_s', &
+      'felt_longitudinal_g', 'felt_lateral_g', 'felt_normal_g', 'pelvis_x_m', 'pelvis_y_m', 'pelvis_z_m', &
+      'normal_force_pelvis_N', 'normal_force_heels_N', 'normal_force_back_N', 'wall_angle_pelvis_deg', &
+      'wall_angle_heels_deg', 'wall_angle_back_deg', 'lever_arm_m', 'heading_deg', 'kinetic_energy_J', &
+      'energy_J', 'in_water_pelvis']
+    real(wp), allocatable :: table(:, :)
+    real(wp), parameter :: deg = 180/acos(-1.0_wp)
+    integer :: n, k
+    n = s%n
+    allocate (table(n, size(names)))
+    table(:, 1) = s%time(:n)
+    table(:, 2) = s%arc_length(:n)
+    table(:, 3) = s%speed(:n)
+    table(:, 4:6) = transpose(r%felt(:, :n))
+    table(:, 7:9) = transpose(s%contact(CONTACT_PELVIS)%position(:, :n))
+    do k = 1, N_CONTACTS
+      table(:, 9 + k) = s%contact(k)%normal_force(:n)
+      table(:, 12 + k) = s%contact(k)%wall_angle(:n)*deg
+    end do
+    table(:, 16) = merge(r%lever_arm(:n), 0.0_wp, abs(r%lever_arm(:n)) < huge(1.0_wp))
+    table(:, 17) = s%heading(:n)*deg
+    table(:, 18) = s%kinetic(:n)
+    table(:, 19) = s%energy(:n)
+    table(:, 20) = s%contact(CONTACT_PELVIS)%in_water(:n)
+    call write_csv_columns('--ride-csv', path, names, table, status)
+  end subroutine write_ride_csv
 
   !> The ride report (stdout) and, with --summary-json, its numbers as JSON.
   subroutine print_report(ride, r, water_done, water_cpu, ride_cpu, path, run, complete, message, status, water)

@@ -60,8 +60,8 @@ done
 SH
 mkdir "$work/tmpfs"
 if unshare -m true 2>/dev/null && unshare -m mount -t tmpfs -o size=64k tmpfs "$work/tmpfs" 2>/dev/null; then
-  for spec in "$ellipsoid:pm.h5:0:480:40" "$root/inputs/geometry/helix_tube.nml:helix.h5:0:1200:120" \
-              "$root/inputs/sled/bowl.nml:sled.h5:0:1200:150"; do
+  for spec in "$ellipsoid:pm.h5:0:1200:100" "$root/inputs/geometry/helix_tube.nml:helix.h5:0:1800:150" \
+              "$root/inputs/sled/bowl.nml:sled.h5:0:1800:150"; do
     IFS=: read -r input output from to step <<< "$spec"
     checks=$((checks + 1))
     # (the geometry run has no &solver: its old run is the same run)
