@@ -25,7 +25,7 @@ module io_xdmf
   use io_hdf5, only: result_file_t
   implicit none (type, external)
   private
-  public :: xdmf_t, xdmf_path, attach_surface_view
+  public :: xdmf_t, xdmf_path, attach_surface_view, body_shape_t
 
   integer, parameter :: max_steps = 200   ! time steps of a temporal collection
   integer, parameter :: per_line = 6      ! values per line of a DataItem
@@ -35,6 +35,13 @@ module io_xdmf
     character(len=:), allocatable :: s
     integer :: used = 0
   end type text_t
+
+  !> A shape a body carries, as a grid of points in the body's axes (m):
+  !> drawn moving with the body (moving_grid).
+  type :: body_shape_t
+    character(len=:), allocatable :: body, shape
+    real(wp), allocatable :: points(:, :, :)   !< 3 x n1 x n2
+  end type body_shape_t
 
   type :: xdmf_t
     private
@@ -51,6 +58,7 @@ module io_xdmf
     procedure :: band => xdmf_band
     procedure :: moving_points => xdmf_moving_points
     procedure :: moving_box => xdmf_moving_box
+    procedure :: moving_grid => xdmf_moving_grid
     procedure :: attach => xdmf_attach
   end type xdmf_t
 
@@ -274,6 +282,32 @@ contains
       end associate
     end do
   end subroutine xdmf_moving_box
+
+  !> A grid of points fixed in a moving body (points(:, i, j) in its axes)
+  !> as a structured grid: at sample k, origin(:, k) + rotation(:, :, k) p.
+  subroutine xdmf_moving_grid(self, name, time, points, rotation, origin)
+    class(xdmf_t), intent(inout) :: self
+    character(len=*), intent(in) :: name
+    real(wp), intent(in) :: time(:), points(:, :, :), rotation(:, :, :), origin(:, :)
+    real(wp), allocatable :: moved(:, :)
+    integer :: s, k, n
+    n = size(points, 2)*size(points, 3)
+    if (n < 4 .or. .not. steps_for(self, time)) return
+    do s = 1, size(self%step_row)
+      k = self%step_row(s)
+      moved = matmul(rotation(:, :, k), reshape(points, [3, n])) + spread(origin(:, k), 2, n)
+      associate (t => self%steps(s))
+        call add(t, '  <Grid Name="'//escaped(name)//'" GridType="Uniform">')
+        ! points(:, i, j): i runs fastest, the last of XDMF's dimensions
+        call add(t, '  <Topology TopologyType="2DSMesh" Dimensions="'//format_integer(size(points, 3))//' '// &
+                 format_integer(size(points, 2))//'"/>')
+        call add(t, '  <Geometry GeometryType="XYZ">')
+        call data_item(t, [n, 3], reshape(moved, [3*n]))
+        call add(t, '  </Geometry>')
+        call add(t, '  </Grid>')
+      end associate
+    end do
+  end subroutine xdmf_moving_grid
 
   !> The kept steps of a series of times (made by the first moving grid;
   !> false for an empty series or one of another length than the first's:

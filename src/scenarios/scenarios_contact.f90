@@ -15,6 +15,8 @@ module scenarios_contact
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config, contact_groups, contact_repeatable_groups
   use scenarios_mechanism, only: run_mechanism
+  use io_xdmf, only: body_shape_t
+  use io_surface_grid, only: evenly_spaced
   use numerics_ode, only: ODE_ADAMS
   implicit none (type, external)
   private
@@ -55,8 +57,49 @@ contains
     if (.not. status%ok()) return
     call run_mechanism('contact', input, run, solver, model%ode, model%y0(1:f), model%y0(f + 1:f + ns), &
                        model%q_units, model%beta_units, status, &
-                       surface=system%shapes(first_shape(system))%surface)
+                       surface=system%shapes(first_shape(system))%surface, shapes=bounded_body_shapes(system))
   end subroutine run_contact
+
+  !> Every bounded shape a body carries (an egg, a ball; not a plane or an
+  !> open paraboloid), as a 24 x 13 grid in the body's axes for the XDMF view.
+  function bounded_body_shapes(system) result(shapes)
+    type(contact_system_t), intent(in) :: system
+    type(body_shape_t), allocatable :: shapes(:)
+    integer, parameter :: n_u = 24, n_v = 13
+    real(wp), parameter :: unbounded = 1e6_wp   ! m, as io_surface_grid's
+    real(wp) :: box(4), x(n_v, n_u), y(n_v, n_u), z(n_v, n_u)
+    type(body_shape_t) :: one
+    type(status_t) :: evaluated
+    integer :: c, side, k
+    character(len=:), allocatable :: body, shape
+    allocate (shapes(0))
+    do c = 1, size(system%contacts)
+      do side = 1, 2
+        if (side == 1) then
+          body = system%contacts(c)%body_1; shape = system%contacts(c)%shape_1
+        else
+          body = system%contacts(c)%body_2; shape = system%contacts(c)%shape_2
+        end if
+        if (body == 'ground') cycle
+        if (any([(shapes(k)%body == body .and. shapes(k)%shape == shape, k = 1, size(shapes))])) cycle
+        k = findloc([(system%shapes(k)%name == shape, k = 1, size(system%shapes))], .true., dim=1)
+        if (k == 0) cycle
+        call system%shapes(k)%surface%domain(box(1), box(2), box(3), box(4))
+        if (any(abs(box) > unbounded)) cycle
+        call system%shapes(k)%surface%points_on_grid(evenly_spaced(box(1), box(2), n_u), &
+                                                     evenly_spaced(box(3), box(4), n_v), x, y, z, evaluated)
+        if (.not. evaluated%ok()) cycle
+        one%body = body
+        one%shape = shape
+        allocate (one%points(3, n_v, n_u))
+        one%points(1, :, :) = x
+        one%points(2, :, :) = y
+        one%points(3, :, :) = z
+        shapes = [shapes, one]
+        deallocate (one%points)
+      end do
+    end do
+  end function bounded_body_shapes
 
   !> A line for every body that its start position did not put onto its
   !> carrier (the documented convenience: contact_pair moves it along the

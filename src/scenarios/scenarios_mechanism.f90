@@ -20,7 +20,7 @@ module scenarios_mechanism
   use io_system, only: write_standard_output
   use io_summary, only: summary_t, degrees, engineering
   use io_surface_grid, only: write_surface_grid_around
-  use io_xdmf, only: xdmf_t
+  use io_xdmf, only: xdmf_t, body_shape_t
   use geometry_surface, only: surface_t
   implicit none (type, external)
   private
@@ -49,7 +49,7 @@ contains
 
   !> The common run of a multibody scenario from q0, q0'.
   subroutine run_mechanism(scenario, input, run, solver, sys, q0, qd0, q_units, beta_units, status, surface, &
-                           start_variables)
+                           start_variables, shapes)
     character(len=*), intent(in) :: scenario
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
@@ -60,6 +60,7 @@ contains
     type(status_t), intent(inout) :: status
     class(surface_t), intent(in), optional :: surface   ! the surface of the contacts, written as a grid
     character(len=*), intent(in), optional :: start_variables   ! of &<scenario>, named when the start fails
+    type(body_shape_t), intent(in), optional :: shapes(:)   ! drawn moving with their bodies in the XDMF view
     type(result_file_t) :: file
     type(driver_result_t) :: result
     type(status_t) :: run_status, write_status
@@ -105,7 +106,7 @@ contains
     message = 'ok: '//outcome
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
-    if (write_status%ok() .and. sys%series%n > 0) call write_xdmf(file, scenario, sys%series, write_status)
+    if (write_status%ok() .and. sys%series%n > 0) call write_xdmf(file, scenario, sys%series, write_status, shapes)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
     call report(scenario, sys%series, result%stats, result%cpu, q_units, file%final_path(), run, complete, &
@@ -116,11 +117,13 @@ contains
   !> The XDMF file next to the result: the surface (sled), each body's and
   !> contact's path, the bodies and the contacts (joined: the sled's bar)
   !> moving over time.
-  subroutine write_xdmf(file, scenario, s, status)
+  subroutine write_xdmf(file, scenario, s, status, shapes)
     type(result_file_t), intent(inout) :: file
     character(len=*), intent(in) :: scenario
     type(mechanism_series_t), intent(in) :: s
     type(status_t), intent(inout) :: status
+    type(body_shape_t), intent(in), optional :: shapes(:)
+    integer :: b, j
     type(xdmf_t) :: xdmf
     character(len=:), allocatable :: g
     character(len=128) :: bodies(s%nb), contacts(s%nc)
@@ -140,6 +143,13 @@ contains
     end do
     if (s%nb > 0) call xdmf%moving_points(file, 'bodies', s%time(:s%n), bodies, .false.)
     if (s%nc > 0) call xdmf%moving_points(file, 'contacts', s%time(:s%n), contacts, .true.)
+    if (present(shapes)) then
+      do j = 1, size(shapes)
+        b = findloc(s%body_names, shapes(j)%body, dim=1)
+        if (b > 0) call xdmf%moving_grid(shapes(j)%body//' as '//shapes(j)%shape, s%time(:s%n), shapes(j)%points, &
+                                         s%body_rot(:, :, b, :s%n), s%body_r(:, b, :s%n))
+      end do
+    end if
     call xdmf%attach(file, status)
   end subroutine write_xdmf
 
