@@ -7,7 +7,8 @@
 # without a crash, showing the file's time steps, arrays and points
 # (tests/cli/check_xdmf.py run by pvpython, from Debian's paraview and
 # python3-paraview: scripts/install-dependencies.sh). The runs come from the
-# fixture cli_every_input (tests/cli/support/every_input.sh).
+# fixture cli_every_input (tests/cli/support/every_input.sh). The macro
+# scripts/paraview_open.py builds its pipeline for the default ride (no display).
 set -u
 slidesim=$1
 root=$(pwd)
@@ -28,4 +29,9 @@ rc=$?
 [ "$rc" = 0 ] || failures=$((failures + 1))
 grep -E '^FAIL|XDMF files checked|SIGABRT|SIGSEGV|terminate called' "$work/check.out"
 grep -q 'XDMF files checked' "$work/check.out" || echo "FAIL ParaView stopped before the end (exit status $rc)"
+# the macro that opens a ride ready to play builds its pipeline (no display here)
+(cd "$results" && pvpython "$root/scripts/paraview_open.py" --no-render default.xmf) >"$work/macro.out" 2>&1
+for grid in 'slide surface: 19200 points' 'water band: ' 'rider legs: 8 points' 'rider trunk: 8 points' 'pelvis path: '; do
+  grep -q "^$grid" "$work/macro.out" || { echo "FAIL scripts/paraview_open.py: no '$grid' in: $(grep -v '^ *[0-9]* *0x' "$work/macro.out" | tail -5)"; failures=$((failures + 1)); }
+done
 [ "$failures" = 0 ]
