@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Every input in inputs/ (and the default, and a run that failed part way)
-# writes an XDMF file next to its result, whose structure matches the HDF5
-# file (every referenced dataset exists with the stated shape, grids and
-# attributes agree, every value inline), and which ParaView opens with the
+# writes an XDMF file next to its result, whose structure holds (every value
+# inline, every DataItem as many numbers as it states, grids and attributes
+# agree, a surface grid equals the result's), and which ParaView opens with the
 # reader it picks by itself (OpenDataFile, as File > Open: Xdmf3ReaderS),
 # without a crash, showing the file's time steps, arrays and points
 # (tests/cli/check_xdmf.py run by pvpython, from Debian's paraview and
