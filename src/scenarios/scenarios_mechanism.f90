@@ -145,7 +145,8 @@ contains
     if (s%nc > 0) call xdmf%moving_points(file, 'contacts', s%time(:s%n), contacts, .true.)
     if (present(shapes)) then
       do j = 1, size(shapes)
-        b = findloc(s%body_names, shapes(j)%body, dim=1)
+        ! (gfortran's findloc misses a shorter text in a character array)
+        b = findloc([(trim(s%body_names(b)) == shapes(j)%body, b = 1, s%nb)], .true., dim=1)
         if (b > 0) call xdmf%moving_grid(shapes(j)%body//' as '//shapes(j)%shape, s%time(:s%n), shapes(j)%points, &
                                          s%body_rot(:, :, b, :s%n), s%body_r(:, b, :s%n))
       end do
