@@ -5,21 +5,20 @@
 !> each). Every quad of a grid is split into two triangles along the same
 !> diagonal; all triangles of a mesh face the same side: the slide's face
 !> away from its rows' centres (outwards of a tube or a half-pipe), the
-!> water's up. Files are written under a temporary name and renamed when
-!> complete; a device, FIFO or socket is never written (refused before the
-!> run: check_export_path). Layout: docs/outputs.md ("The slide as CAD").
+!> water's up. Written through io_output_files' checked writer (a temporary
+!> file renamed when complete; the paths claimed before the run like every
+!> output). Layout: docs/outputs.md ("The slide as CAD").
 module io_mesh_export
   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc
   use hdf5, only: hid_t, hsize_t, h5open_f, h5fopen_f, h5fclose_f, H5F_ACC_RDONLY_F, h5lexists_f, &
                   h5dopen_f, h5dclose_f, h5dget_space_f, h5sget_simple_extent_ndims_f, &
                   h5sget_simple_extent_dims_f, h5sclose_f, h5dread_f, H5T_NATIVE_DOUBLE
   use base_kinds, only: wp
-  use base_status, only: status_t, set_status, STATUS_IO, STATUS_INVALID_INPUT
-  use io_system, only: nonregular_kind
-  use io_text_output, only: open_text_output, close_text_output
+  use base_status, only: status_t, set_status, STATUS_IO
+  use io_output_files, only: text_output_t
   implicit none (type, external)
   private
-  public :: mesh_t, grid_mesh, mesh_area, export_result_meshes, check_export_path, write_stl, write_obj
+  public :: mesh_t, grid_mesh, mesh_area, export_result_meshes, write_stl, write_obj
 
   type :: mesh_t
     character(len=:), allocatable :: name
@@ -28,21 +27,6 @@ module io_mesh_export
   end type mesh_t
 
 contains
-
-  !> Refuses an export path before the run: a device, FIFO or socket (never
-  !> replaced; exit 3), or the result file itself (exit 1).
-  subroutine check_export_path(option, path, output, status)
-    character(len=*), intent(in) :: option, path, output
-    type(status_t), intent(inout) :: status
-    character(len=:), allocatable :: what
-    if (path == output) then
-      call set_status(status, STATUS_INVALID_INPUT, option//' '//path//': that is the result file; name another')
-      return
-    end if
-    what = nonregular_kind(path)
-    if (len(what) > 0) call set_status(status, STATUS_IO, option//' '//path//': cannot write there: it is '// &
-                                       what//', which slidesim never replaces; name a regular file or a new one')
-  end subroutine check_export_path
 
   !> The meshes of the result file `h5_path` written to `stl` and `obj`
   !> (empty: not written).
@@ -229,27 +213,24 @@ contains
     character(len=*), intent(in) :: path
     type(mesh_t), intent(in) :: meshes(:)
     type(status_t), intent(inout) :: status
-    integer :: unit, m, t, k, ios
-    character(len=:), allocatable :: temporary
-    call open_text_output('--export-stl', path, unit, temporary, status)
+    type(text_output_t) :: out
+    integer :: m, t, k
+    call out%create(path, 'the STL export', status)
     if (.not. status%ok()) return
-    ios = 0
     do m = 1, size(meshes)
-      write (unit, '(a)', iostat=ios) 'solid '//meshes(m)%name
+      call out%write_line('solid '//meshes(m)%name)
       do t = 1, size(meshes(m)%triangles, 2)
-        if (ios /= 0) exit
-        write (unit, '(a, 3(1x, es17.9e3))', iostat=ios) '  facet normal', normal(meshes(m), t)
-        write (unit, '(a)', iostat=ios) '    outer loop'
+        call out%write_line('  facet normal'//numbers(normal(meshes(m), t)))
+        call out%write_line('    outer loop')
         do k = 1, 3
-          write (unit, '(a, 3(1x, es17.9e3))', iostat=ios) '      vertex', meshes(m)%vertices(:, meshes(m)%triangles(k, t))
+          call out%write_line('      vertex'//numbers(meshes(m)%vertices(:, meshes(m)%triangles(k, t))))
         end do
-        write (unit, '(a)', iostat=ios) '    endloop'
-        write (unit, '(a)', iostat=ios) '  endfacet'
+        call out%write_line('    endloop')
+        call out%write_line('  endfacet')
       end do
-      write (unit, '(a)', iostat=ios) 'endsolid '//meshes(m)%name
-      if (ios /= 0) exit
+      call out%write_line('endsolid '//meshes(m)%name)
     end do
-    call close_text_output('--export-stl', path, unit, temporary, ios, status)
+    call out%finish(status)
   end subroutine write_stl
 
   !> Wavefront OBJ: one object per mesh, vertices numbered across the file.
@@ -257,23 +238,31 @@ contains
     character(len=*), intent(in) :: path
     type(mesh_t), intent(in) :: meshes(:)
     type(status_t), intent(inout) :: status
-    integer :: unit, m, t, k, ios, offset
-    character(len=:), allocatable :: temporary
-    call open_text_output('--export-obj', path, unit, temporary, status)
+    type(text_output_t) :: out
+    character(len=40) :: face
+    integer :: m, t, k, offset
+    call out%create(path, 'the OBJ export', status)
     if (.not. status%ok()) return
-    write (unit, '(a)', iostat=ios) '# slidesim: the slide surface and the water band, metres'
+    call out%write_line('# slidesim: the slide surface and the water band, metres')
     offset = 0
     do m = 1, size(meshes)
-      if (ios /= 0) exit
-      write (unit, '(a)', iostat=ios) 'o '//meshes(m)%name
+      call out%write_line('o '//meshes(m)%name)
       do k = 1, size(meshes(m)%vertices, 2)
-        write (unit, '(a, 3(1x, es17.9e3))', iostat=ios) 'v', meshes(m)%vertices(:, k)
+        call out%write_line('v'//numbers(meshes(m)%vertices(:, k)))
       end do
       do t = 1, size(meshes(m)%triangles, 2)
-        write (unit, '(a, 3(1x, i0))', iostat=ios) 'f', meshes(m)%triangles(:, t) + offset
+        write (face, '(a, 3(1x, i0))') 'f', meshes(m)%triangles(:, t) + offset
+        call out%write_line(trim(face))
       end do
       offset = offset + size(meshes(m)%vertices, 2)
     end do
-    call close_text_output('--export-obj', path, unit, temporary, ios, status)
+    call out%finish(status)
   end subroutine write_obj
+
+  !> Three numbers, each after a blank, nine significant digits.
+  function numbers(x) result(text)
+    real(wp), intent(in) :: x(3)
+    character(len=54) :: text
+    write (text, '(3(1x, es17.9e3))') x
+  end function numbers
 end module io_mesh_export

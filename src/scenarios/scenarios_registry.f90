@@ -7,7 +7,7 @@ module scenarios_registry
   use io_system, only: write_standard_output
   use io_output_files, only: start_run_files, claim_output
   use io_xdmf, only: xdmf_path
-  use io_mesh_export, only: export_result_meshes, check_export_path
+  use io_mesh_export, only: export_result_meshes
   use io_builtin_inputs, only: builtin_input
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
@@ -227,8 +227,9 @@ contains
       call export_result_meshes(trim(run%output), run%export_stl, run%export_obj, status)
   end subroutine run_input
 
-  !> --export-stl and --export-obj: refused before any work for a scenario
-  !> without a surface grid (exit 1) and for a path never written (exit 3).
+  !> --ride-csv, --export-stl and --export-obj: refused before any work for
+  !> a scenario without a ride or a surface grid (exit 1); their files
+  !> claimed as every output is (io_output_files).
   subroutine check_exports(run, status)
     type(run_config_t), intent(in) :: run
     type(status_t), intent(inout) :: status
@@ -238,7 +239,7 @@ contains
                         ' run has no ride time series (scenario ride)')
         return
       end if
-      call check_export_path('--ride-csv', run%ride_csv, trim(run%output), status)
+      call claim_output(run%ride_csv, '--ride-csv '//run%ride_csv, 'the ride CSV', status)
       if (.not. status%ok()) return
     end if
     if (len(run%export_stl) + len(run%export_obj) == 0) return
@@ -250,11 +251,9 @@ contains
                       'identify_rider)')
       return
     end select
-    if (len(run%export_stl) > 0) call check_export_path('--export-stl', run%export_stl, trim(run%output), status)
+    if (len(run%export_stl) > 0) call claim_output(run%export_stl, '--export-stl '//run%export_stl, &
+                                                   'the STL export', status)
     if (len(run%export_obj) > 0 .and. status%ok()) &
-      call check_export_path('--export-obj', run%export_obj, trim(run%output), status)
-    if (status%ok() .and. run%export_stl == run%export_obj) &
-      call set_status(status, STATUS_INVALID_INPUT, '--export-stl and --export-obj name the same file '// &
-                      run%export_stl//'; name two')
+      call claim_output(run%export_obj, '--export-obj '//run%export_obj, 'the OBJ export', status)
   end subroutine check_exports
 end module scenarios_registry

@@ -29,7 +29,7 @@ module scenarios_ride
   use io_water_results, only: write_water_results
   use io_summary, only: summary_t, degrees
   use io_xdmf, only: xdmf_t
-  use io_text_output, only: write_csv_columns
+  use io_output_files, only: text_output_t
   use scenarios_water, only: build_water, write_slide_grid
   implicit none (type, external)
   private
@@ -503,7 +503,9 @@ contains
       'energy_J', 'in_water_pelvis']
     real(wp), allocatable :: table(:, :)
     real(wp), parameter :: deg = 180/acos(-1.0_wp)
-    integer :: n, k
+    type(text_output_t) :: out
+    character(len=20*size(names)) :: line
+    integer :: n, k, i
     n = s%n
     allocate (table(n, size(names)))
     table(:, 1) = s%time(:n)
@@ -520,7 +522,18 @@ contains
     table(:, 18) = s%kinetic(:n)
     table(:, 19) = s%energy(:n)
     table(:, 20) = s%contact(CONTACT_PELVIS)%in_water(:n)
-    call write_csv_columns('--ride-csv', path, names, table, status)
+    call out%create(path, 'the ride CSV', status)
+    if (.not. status%ok()) return
+    line = names(1)
+    do k = 2, size(names)
+      line = trim(line)//','//names(k)
+    end do
+    call out%write_line(trim(line))
+    do i = 1, n   ! nine significant digits
+      write (line, '(*(g0.9, :, ","))') table(i, :)
+      call out%write_line(trim(line))
+    end do
+    call out%finish(status)
   end subroutine write_ride_csv
 
   !> The ride report (stdout) and, with --summary-json, its numbers as JSON.

@@ -51,10 +51,10 @@ expect() {   # STATUS WHAT ARGS...: exit status and a message with WHAT
 }
 expect 1 "has no surface to export" -o "$work/p.h5" --export-obj "$work/p.obj" "$root/inputs/pendulum/simple.nml"
 [ -e "$work/p.h5" ] && fail "a refused export still ran the pendulum"
-expect 1 "that is the result file" -o "$work/same.h5" --export-stl "$work/same.h5" "$root/inputs/geometry/flume.nml"
-expect 1 "name the same file" -o "$work/g.h5" --export-stl "$work/m" --export-obj "$work/m" "$root/inputs/geometry/flume.nml"
+expect 1 "would be written to the same file as the result file" -o "$work/same.h5" --export-stl "$work/same.h5" "$root/inputs/geometry/flume.nml"
+expect 1 "would be written to the same file as the STL export" -o "$work/g.h5" --export-stl "$work/m" --export-obj "$work/m" "$root/inputs/geometry/flume.nml"
 if mknod -m 666 "$work/full" c 1 7 2>/dev/null; then
-  expect 3 "full: cannot write there: it is" -o "$work/d.h5" --export-stl "$work/full" "$root/inputs/geometry/flume.nml"
+  expect 3 "cannot write the STL export: it is" -o "$work/d.h5" --export-stl "$work/full" "$root/inputs/geometry/flume.nml"
   [ -c "$work/full" ] || fail "the device node was replaced"
   [ -e "$work/d.h5" ] && fail "a refused export still ran"
 fi
