@@ -105,7 +105,7 @@ contains
       call check_element(table%kind(n), table%length(n), table%slope_deg(n), table%radius(n), table%angle_deg(n), &
                          table%direction(n), table%turns(n), table%drop(n), variable, value, allowed)
       if (len(variable) > 0) then
-        call refuse(table_columns(findloc(variables, variable, dim=1)), value, allowed)
+        call refuse(table_columns(position(variables, variable)), value, allowed)
         return
       end if
     end do
@@ -125,7 +125,7 @@ contains
       character(len=*), intent(in) :: names(:)
       integer :: j, c
       do j = 1, size(names)
-        c = findloc(table_columns, lower_trim(names(j)), dim=1)
+        c = position(table_columns, lower_trim(names(j)))
         if (c == 0) then
           call refuse_at(j, trim(names(j)), 'a column name: '//list(table_columns)// &
                          ' (the first line that is not a comment names the columns)')
@@ -196,7 +196,7 @@ contains
       character(len=:), allocatable :: where
       where = path//':'//format_integer(line_no)
       if (len(name) > 0) then
-        c = findloc(table_columns, name, dim=1)
+        c = position(table_columns, name)
         where = where//': column '//format_integer(column_of(c))//' ('//trim(name)//')'
       end if
       if (len(cell) > 0) where = where//': '''//cell//''''
@@ -274,6 +274,16 @@ contains
       end if
     end do
   end function split
+
+  !> Where `name` is in `list` (0: not there); texts compared without
+  !> trailing blanks (gfortran's findloc misses a shorter text).
+  pure integer function position(list, name)
+    character(len=*), intent(in) :: list(:), name
+    do position = 1, size(list)
+      if (trim(list(position)) == trim(name)) return
+    end do
+    position = 0
+  end function position
 
   pure function lower_trim(text) result(low)
     character(len=*), intent(in) :: text
