@@ -23,26 +23,52 @@
 !> A design whose slide cannot be built or ridden (folding, a ride that does
 !> not reach the end) is a rejected step of the fit.
 !>
+!> An end of LMDER is not taken for a minimum: LMDER stops on step and
+!> tolerance tests (xtol, ftol) that a stall far from a minimum passes too
+!> (a trust region shrunk by rejected steps, the kinks of the penalty). So
+!> the fit is restarted from its end point until a restart lowers the cost
+!> by no more than ftol (relative): only then is the end a minimum. At the
+!> end every constraint of the optimisation (no ride lifts off, every
+!> tipping excess at most lever_tolerance) is checked; the outcome says
+!> which of these failed (OUTCOME_*), in words.
+!>
+!> Multi-start: start 1 is the given design, starts 2.. are drawn uniformly
+!> in the bounds' box from a seeded stream (numerics_random; a draw whose
+!> slide folds is drawn again), all before any ride, so each start's point
+!> and result depend only on the seed and its number. The best start (an optimum before any other
+!> outcome, then the least acceleration cost) is the result.
+!>
 !> All rides of one evaluation, and of all difference points, are
-!> independent: they run in `threads` OpenMP threads, with the same numbers.
+!> independent: they run in `threads` OpenMP threads, with the same numbers;
+!> with several starts the starts run in the threads instead (each one's
+!> rides one after the other), with the same numbers again.
 module design_geometry_optimization
   use base_kinds, only: wp, int64
   use base_log, only: log_info, progress_interval
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
-  use base_text, only: format_short, format_integer
+  use base_text, only: format_short, format_integer, format_real
   use geometry_tube, only: tube_surface_t
   use geometry_slide_builder, only: slide_description_t, section_part_description_t, build_slide
+  use base_status, only: STATUS_NOT_CONVERGED
   use numerics_least_squares, only: least_squares_problem_t, least_squares_options_t, &
     least_squares_result_t, solve_least_squares
+  use numerics_random, only: random_stream_t, new_random_stream, next_uniform
   use design_cuboid_ride, only: cuboid_t, cuboid_start_t, cuboid_ride_options_t, cuboid_ride_t, ride_cuboid
   implicit none (type, external)
   private
   public :: slide_design_t, optimization_setup_t, design_evaluation_t, optimization_result_t
   public :: table_4_12_design, build_design_slide, evaluate_design, optimize_slide, design_points
-  public :: CONSTRAINT_PENALTY, CONSTRAINT_EXACT, CONSTRAINT_NONE
+  public :: CONSTRAINT_PENALTY, CONSTRAINT_EXACT, CONSTRAINT_NONE, start_record_t, start_points
+  public :: OUTCOME_OPTIMUM, OUTCOME_CONSTRAINT, OUTCOME_NOT_MINIMUM, OUTCOME_FAILED, outcome_names
 
   integer, parameter :: CONSTRAINT_NONE = 0, CONSTRAINT_PENALTY = 1, CONSTRAINT_EXACT = 2
+  !> How an optimisation (or one of its starts) ended: a minimum that meets
+  !> the constraints; a minimum that violates one; an end that a restart
+  !> still improved (or the design budget ran out); no end point at all.
+  integer, parameter :: OUTCOME_OPTIMUM = 0, OUTCOME_CONSTRAINT = 1, OUTCOME_NOT_MINIMUM = 2, OUTCOME_FAILED = 3
+  character(len=*), parameter :: outcome_names(0:3) = [character(len=19) :: 'optimum', 'constraint violated', &
+                                                       'not a minimum', 'failed']
 
   !> A tube slide around a spline through points, and which coordinates move.
   type :: slide_design_t
@@ -70,11 +96,26 @@ module design_geometry_optimization
     real(wp) :: lever_tolerance = 1e-4_wp     !< m, CONSTRAINT_EXACT
     real(wp) :: rho = 1e5_wp                  !< augmented Lagrangian weight, (m/s^2)^2/m^2 (20 x the penalty factor)
     integer :: max_outer = 8                  !< augmented Lagrangian updates
+    integer :: max_restarts = 10              !< restarts from the end point, to show it is a minimum
+    integer :: starts = 1                     !< multi-start: the given design and starts - 1 drawn ones
+    integer :: seed = 1                       !< of the drawn starts
     integer :: threads = 1
     type(least_squares_options_t) :: solver = least_squares_options_t(ftol=1e-4_wp, xtol=1e-3_wp, &
                                                                       gtol=0.0_wp, epsfcn=1e-8_wp, &
                                                                       covariance=.false.)   ! not reported
+                                              !< (its max_evaluations: the designs of one start, restarts included)
   end type optimization_setup_t
+
+  !> One start of a multi-start optimisation.
+  type :: start_record_t
+    real(wp), allocatable :: x_start(:), x(:)   !< m, the start and end designs
+    real(wp) :: cost_start = 0, cost = 0        !< the fit's cost at both
+    real(wp) :: acceleration_cost = 0           !< at the end, (m/s^2)^2
+    integer :: outcome = OUTCOME_FAILED
+    integer :: evaluations = 0                  !< designs ridden
+    integer :: restarts = 0
+    character(len=:), allocatable :: verdict    !< the outcome in words (or the failure)
+  end type start_record_t
 
   !> Every ride of one design.
   type :: design_evaluation_t
@@ -92,6 +133,15 @@ module design_geometry_optimization
     real(wp) :: cost_before = 0, cost_after = 0   !< the fit's cost (with constraint terms)
     real(wp), allocatable :: multipliers(:)
     integer :: evaluations = 0, rejected = 0, outer = 0, info = 0
+    integer :: outcome = OUTCOME_FAILED
+    integer :: restarts = 0                   !< restarts from an end point
+    character(len=:), allocatable :: stop_test, stop_reason   !< why MINPACK stopped first (its info, in words)
+    character(len=:), allocatable :: final_stop_reason        !< ... and last (the last restart)
+    character(len=:), allocatable :: minimum_check   !< what the restarts found
+    character(len=:), allocatable :: violations      !< the violated constraints with values and limits ('' none)
+    character(len=:), allocatable :: verdict         !< the outcome in words
+    integer :: best_start = 1
+    type(start_record_t), allocatable :: starts(:)
   end type optimization_result_t
 
   type, extends(least_squares_problem_t) :: optimization_problem_t
@@ -99,6 +149,7 @@ module design_geometry_optimization
     real(wp), allocatable :: lambda(:)    !< augmented Lagrangian multipliers
     integer :: mode = CONSTRAINT_PENALTY
     integer :: designs = 0                    !< designs evaluated so far (progress lines)
+    character(len=:), allocatable :: label    !< 'start k: ' with several starts, else ''
     integer(int64) :: clock_last = -1         !< system_clock of the last progress line
     ! the design of least cost so far (the start design, then single
     ! evaluations): LMDER starts and ends on it, so neither needs its rides again
@@ -292,7 +343,7 @@ contains
     if (self%clock_last < 0) self%clock_last = now
     if (real(now - self%clock_last, wp) < progress_interval()*real(rate, wp)) return
     self%clock_last = now
-    call log_info('optimize: '//format_integer(self%designs)//' designs evaluated ('// &
+    call log_info('optimize: '//self%label//format_integer(self%designs)//' designs evaluated ('// &
                   format_integer(self%designs*size(self%setup%start_angles))//' rides)')
   end subroutine progress
 
@@ -340,31 +391,148 @@ contains
     call progress(self, np)
   end subroutine problem_residuals_batch
 
-  !> Optimises the design from its start points (table 4.12 "before").
+  !> Optimises the design from its start points (table 4.12 "before") and,
+  !> with setup%starts > 1, from drawn ones too (see the module comment).
+  !> status: not ok only when no start has an end point (the first failure);
+  !> otherwise result%outcome and result%verdict say how the best one ended.
   subroutine optimize_slide(setup, result, status)
     type(optimization_setup_t), intent(in) :: setup
     type(optimization_result_t), intent(out) :: result
     type(status_t), intent(out) :: status
-    type(optimization_problem_t) :: problem
-    type(least_squares_result_t) :: fit
-    real(wp), allocatable :: x(:), g(:)
-    integer :: n, outer
+    type(optimization_setup_t) :: one
+    type(optimization_result_t), allocatable :: results(:)
+    type(status_t), allocatable :: statuses(:)
+    real(wp), allocatable :: x0(:), points(:, :)
+    integer :: k, best, total
 
-    n = size(setup%start_angles)
-    if (n < 1) then
+    if (size(setup%start_angles) < 1) then
       call set_status(status, STATUS_INVALID_INPUT, 'geometry optimisation: no rides (start_angles)')
       return
     end if
-    x = start_x(setup%design)
-    if (any(x < setup%design%lower) .or. any(x > setup%design%upper)) then
+    x0 = start_x(setup%design)
+    if (any(x0 < setup%design%lower) .or. any(x0 > setup%design%upper)) then
       call set_status(status, STATUS_INVALID_INPUT, 'geometry optimisation: the start design lies outside '// &
                       'the bounds of its design variables')
       return
     end if
+    points = start_points(setup%design, max(1, setup%starts), setup%seed)
+    allocate (results(size(points, 2)), statuses(size(points, 2)))
+    one = setup
+    if (size(results) > 1) one%threads = 1   ! the starts take the threads
+    !$omp parallel do num_threads(max(1, setup%threads)) schedule(dynamic, 1) &
+    !$omp if (size(results) > 1 .and. setup%threads > 1)
+    do k = 1, size(results)
+      call optimize_from(one, points(:, k), k, size(results) > 1, results(k), statuses(k))
+    end do
+    !$omp end parallel do
+
+    best = 0
+    total = 0
+    do k = 1, size(results)
+      total = total + results(k)%evaluations
+      if (.not. statuses(k)%ok()) cycle
+      if (best == 0) then
+        best = k
+      else if (better(results(k), results(best))) then
+        best = k
+      end if
+    end do
+    if (best == 0) then
+      status = statuses(1)
+      result = results(1)
+      return
+    end if
+    result = results(best)
+    result%best_start = best
+    result%before = results(1)%before
+    result%cost_before = results(1)%cost_before
+    result%evaluations = total
+    allocate (result%starts(size(results)))
+    do k = 1, size(results)
+      associate (s => result%starts(k), r => results(k))
+        s%x_start = points(:, k)
+        s%evaluations = r%evaluations
+        s%restarts = r%restarts
+        s%cost_start = r%cost_before
+        if (statuses(k)%ok()) then
+          s%x = r%x
+          s%cost = r%cost_after
+          s%acceleration_cost = r%after%acceleration_cost
+          s%outcome = r%outcome
+          s%verdict = r%verdict
+        else
+          s%x = points(:, k)
+          s%cost = huge(1.0_wp)
+          s%acceleration_cost = huge(1.0_wp)
+          s%outcome = OUTCOME_FAILED
+          s%verdict = statuses(k)%text()
+        end if
+      end associate
+    end do
+  end subroutine optimize_slide
+
+  !> Whether start a ended better than start b: an outcome earlier in the
+  !> list (an optimum first), then the smaller acceleration cost (the
+  !> objective; the fits' costs hold constraint terms).
+  pure logical function better(a, b)
+    type(optimization_result_t), intent(in) :: a, b
+    if (a%outcome /= b%outcome) then
+      better = a%outcome < b%outcome
+    else
+      better = a%after%acceleration_cost < b%after%acceleration_cost
+    end if
+  end function better
+
+  !> The start points, one per column: the given design, then n - 1 drawn
+  !> uniformly in the bounds' box from the stream of `seed`, each drawn
+  !> again (up to max_draws times) while its slide cannot be built (folds):
+  !> such a start would be lost, and building costs no ride.
+  function start_points(design, n, seed) result(points)
+    type(slide_design_t), intent(in) :: design
+    integer, intent(in) :: n, seed
+    real(wp), allocatable :: points(:, :)
+    integer, parameter :: max_draws = 100
+    type(random_stream_t) :: stream
+    type(tube_surface_t) :: slide
+    type(status_t) :: built
+    real(wp) :: u
+    integer :: k, j, draw
+    allocate (points(size(design%point), n))
+    points(:, 1) = start_x(design)
+    stream = new_random_stream(seed)
+    do k = 2, n
+      do draw = 1, max_draws
+        do j = 1, size(points, 1)
+          call next_uniform(stream, u)
+          points(j, k) = design%lower(j) + u*(design%upper(j) - design%lower(j))
+        end do
+        call build_design_slide(design, points(:, k), slide, built)
+        if (built%ok()) exit
+      end do
+    end do
+  end function start_points
+
+  !> One optimisation from design x (start number `start`), to a checked end.
+  subroutine optimize_from(setup, x_start, start, labelled, result, status)
+    type(optimization_setup_t), intent(in) :: setup
+    real(wp), intent(in) :: x_start(:)
+    integer, intent(in) :: start
+    logical, intent(in) :: labelled
+    type(optimization_result_t), intent(out) :: result
+    type(status_t), intent(out) :: status
+    type(optimization_problem_t) :: problem
+    real(wp), allocatable :: x(:), g(:)
+    logical :: minimum
+    integer :: n, outer
+
+    n = size(setup%start_angles)
+    x = x_start
+    problem%label = ''
+    if (labelled) problem%label = 'start '//format_integer(start)//': '
     call evaluate_design(setup, x, result%before, status)
     if (.not. status%ok()) then
-      call prefix_status(status, 'the start design')
-      status%code = STATUS_INVALID_INPUT
+      call prefix_status(status, problem%label//'the start design')
+      if (start == 1) status%code = STATUS_INVALID_INPUT   ! the given one; a drawn one is a failed start
       return
     end if
     problem%setup = setup
@@ -373,13 +541,11 @@ contains
     problem%lambda = 0
     result%cost_before = cost_of(problem, result%before)
     call remember(problem, result%before)
+    minimum = .false.
     do outer = 1, merge(setup%max_outer, 1, setup%constraint == CONSTRAINT_EXACT)
       result%outer = outer
-      call solve_least_squares(problem, 2*n, x, setup%design%lower, setup%design%upper, setup%solver, fit, status)
-      result%evaluations = result%evaluations + fit%evaluations
-      result%rejected = result%rejected + fit%rejected_evaluations
-      result%info = fit%info
-      if (.not. status%ok()) exit
+      call fit_to_minimum(problem, x, result, minimum, status)
+      if (.not. status%ok() .or. .not. minimum) exit
       if (setup%constraint /= CONSTRAINT_EXACT) exit
       call evaluate_at(problem, x, result%after, result%evaluations, status)
       if (.not. status%ok()) exit
@@ -396,12 +562,138 @@ contains
     result%multipliers = problem%lambda
     if (.not. status%ok()) then
       call prefix_status(status, 'geometry optimisation')
+      if (labelled) call prefix_status(status, 'start '//format_integer(start))
       return
     end if
-    ! (the augmented Lagrangian's loop has evaluated x already)
-    if (setup%constraint /= CONSTRAINT_EXACT) call evaluate_at(problem, x, result%after, result%evaluations, status)
-    if (status%ok()) result%cost_after = cost_of(problem, result%after)
-  end subroutine optimize_slide
+    call evaluate_at(problem, x, result%after, result%evaluations, status)
+    if (.not. status%ok()) return
+    result%cost_after = cost_of(problem, result%after)
+    result%violations = constraint_violations(setup, result%after)
+    if (.not. minimum) then
+      result%outcome = OUTCOME_NOT_MINIMUM
+      result%verdict = 'not a minimum: '//result%minimum_check
+    else if (len(result%violations) > 0 .and. setup%constraint /= CONSTRAINT_NONE) then
+      result%outcome = OUTCOME_CONSTRAINT
+      result%verdict = 'constraint violated at the end: '//result%violations
+    else
+      result%outcome = OUTCOME_OPTIMUM
+      result%verdict = 'a minimum as far as LMDER can tell (a restart from the end point changed the cost by '// &
+                       'at most ftol)'
+      if (len(result%violations) > 0) result%verdict = result%verdict//'; constraint = ''none'', not '// &
+                                                       'enforced: '//result%violations
+    end if
+  end subroutine optimize_from
+
+  !> LMDER from x, restarted from each end point until a restart lowers the
+  !> cost by at most ftol (relative): minimum = .true.; or until
+  !> max_restarts restarts or the design budget (solver%max_evaluations) are
+  !> spent: minimum = .false. (x is then the end of the last fit). What
+  !> happened goes into result (stop_*, restarts, minimum_check).
+  subroutine fit_to_minimum(problem, x, result, minimum, status)
+    type(optimization_problem_t), intent(inout) :: problem
+    real(wp), intent(inout) :: x(:)
+    type(optimization_result_t), intent(inout) :: result
+    logical, intent(out) :: minimum
+    type(status_t), intent(out) :: status
+    type(least_squares_options_t) :: options
+    type(least_squares_result_t) :: fit
+    real(wp), allocatable :: x_end(:)
+    real(wp) :: cost_end
+    integer :: attempt, used, m
+    character(len=:), allocatable :: history
+
+    options = problem%setup%solver
+    m = 2*size(problem%setup%start_angles)
+    minimum = .false.
+    used = 0
+    cost_end = huge(1.0_wp)
+    history = ''
+    result%restarts = 0
+    do attempt = 0, problem%setup%max_restarts
+      options%max_evaluations = problem%setup%solver%max_evaluations - used
+      if (options%max_evaluations < 1) exit
+      x_end = x
+      call solve_least_squares(problem, m, x, problem%setup%design%lower, problem%setup%design%upper, options, &
+                               fit, status)
+      used = used + fit%evaluations
+      result%evaluations = result%evaluations + fit%evaluations
+      result%rejected = result%rejected + fit%rejected_evaluations
+      result%info = fit%info
+      if (attempt == 0) then
+        result%stop_test = fit%stop_test
+        result%stop_reason = fit%stop_reason
+      end if
+      result%final_stop_reason = fit%stop_reason
+      result%restarts = attempt
+      if (status%code == STATUS_NOT_CONVERGED .and. fit%info == 5) then
+        status = status_t()   ! the budget: x is the last accepted design
+        exit
+      end if
+      if (.not. status%ok()) return
+      if (attempt > 0) then
+        if (cost_end - fit%cost <= problem%setup%solver%ftol*cost_end) then
+          if (fit%cost > cost_end) x = x_end   ! the restart moved off a bound uphill: keep the end
+          minimum = .true.
+          result%minimum_check = 'restart '//format_integer(attempt)//' from the end point changed the cost '// &
+            'from '//format_short(cost_end)//' to '//format_short(fit%cost)//', by at most ftol = '// &
+            format_real(problem%setup%solver%ftol)//' relative'
+          if (len(history) > 0) result%minimum_check = result%minimum_check//'; before: '//history
+          return
+        end if
+        call add_history('restart '//format_integer(attempt)//' lowered the cost from '// &
+                         format_short(cost_end)//' to '//format_short(fit%cost))
+      end if
+      cost_end = fit%cost
+    end do
+    if (options%max_evaluations < 1 .or. fit%info == 5) then
+      result%minimum_check = 'the design budget max_designs = '// &
+        format_integer(problem%setup%solver%max_evaluations)//' ran out after '// &
+        format_integer(result%restarts)//' restarts'
+    else
+      result%minimum_check = 'after max_restarts = '//format_integer(problem%setup%max_restarts)// &
+        ' restarts the cost still falls by more than ftol = '//format_real(problem%setup%solver%ftol)
+    end if
+    if (len(history) > 0) result%minimum_check = result%minimum_check//' ('//history//')'
+
+  contains
+
+    subroutine add_history(what)
+      character(len=*), intent(in) :: what
+      if (len(history) > 0) history = history//', '
+      history = history//what
+    end subroutine add_history
+  end subroutine fit_to_minimum
+
+
+  !> The constraints of the optimisation that design `e` violates, in
+  !> words with values and limits ('' when all hold): a ride that lifts off,
+  !> a ride whose tipping excess exceeds lever_tolerance.
+  function constraint_violations(setup, e) result(text)
+    type(optimization_setup_t), intent(in) :: setup
+    type(design_evaluation_t), intent(in) :: e
+    character(len=:), allocatable :: text, ride
+    integer :: i
+    text = ''
+    do i = 1, size(e%rides)
+      associate (r => e%rides(i))
+        ride = 'ride at '//format_short(r%start_angle*180/pi)//' deg'
+        if (r%lifts_off) then
+          call append(ride//' lifts off: smallest normal force '//format_short(r%min_normal_force)// &
+                      ' N, must stay > 0')
+        else if (r%max_tipping_excess > setup%lever_tolerance) then
+          call append(ride//': lever arm '//format_short(r%max_lever_arm)//' m above lever_limit '// &
+                      format_short(setup%lever_limit)//' m (tipping excess '//format_short(r%max_tipping_excess)// &
+                      ' m > lever_tolerance '//format_real(setup%lever_tolerance)//' m)')
+        end if
+      end associate
+    end do
+  contains
+    subroutine append(what)
+      character(len=*), intent(in) :: what
+      if (len(text) > 0) text = text//'; '
+      text = text//what
+    end subroutine append
+  end function constraint_violations
 
   !> The evaluation of design x: the best one if it is x, else its rides
   !> (counted in `evaluations`).

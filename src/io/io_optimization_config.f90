@@ -29,11 +29,11 @@ contains
     character(len=10) :: acceleration, constraint
     integer :: n_points, n_design, n_given, i
     real(wp) :: start_wall_angle_deg
-    character(len=*), parameter :: names(27) = [character(len=20) :: 'n_points', 'points', 'n_design', &
+    character(len=*), parameter :: names(31) = [character(len=20) :: 'n_points', 'points', 'n_design', &
       'design_point', 'design_coordinate', 'lower', 'upper', 'radius', 'degree', 'smoothing', 'horizon', &
       'start_angles_deg', 'start_speed', 'start_wall_angle_deg', 'body_mass', 'body_length', 'body_width', &
       'body_height', 'com_height', 'acceleration', 'constraint', 'lever_limit', 'penalty_factor', &
-      'lever_tolerance', 'threads', 'ftol', 'xtol']
+      'lever_tolerance', 'threads', 'ftol', 'xtol', 'max_designs', 'max_restarts', 'starts', 'seed']
 
     setup%design = table_4_12_design()
     setup%start_angles = [-30.0_wp, -15.0_wp, 0.0_wp, 15.0_wp, 30.0_wp]*pi/180
@@ -162,6 +162,10 @@ contains
     call r%get('threads', setup%threads, 1, 1024, status)
     call r%get('ftol', setup%solver%ftol, in_range(1e-15_wp, 1.0_wp, '1'), status)
     call r%get('xtol', setup%solver%xtol, in_range(1e-15_wp, 1.0_wp, '1'), status)
+    call r%get('max_designs', setup%solver%max_evaluations, 1, 1000000, status)
+    call r%get('max_restarts', setup%max_restarts, 1, 100, status)
+    call r%get('starts', setup%starts, 1, 1000, status)
+    call r%get('seed', setup%seed, 1, huge(1), status)
     setup%rho = 20*setup%penalty_factor
   end subroutine read_optimization_config
 end module io_optimization_config

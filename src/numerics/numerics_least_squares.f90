@@ -110,6 +110,9 @@ module numerics_least_squares
     integer :: rejected_evaluations = 0       !< evaluations that failed and were rejected as steps
     character(len=:), allocatable :: last_rejection   !< the reason of the last one
     integer :: info = 0                       !< MINPACK info of the last solve
+    character(len=:), allocatable :: stop_test     !< the test that ended the last solve, in one word
+                                                   !< ('ftol', 'xtol', 'ftol+xtol', 'gtol', 'max_evaluations', ...)
+    character(len=:), allocatable :: stop_reason   !< MINPACK's info of the last solve in words
     logical :: covariance_valid = .false.     !< false if m <= n_free or J^T J is singular
     real(wp), allocatable :: covariance(:, :) !< n x n, original parameters (huge if not valid)
     real(wp), allocatable :: standard_error(:)   !< sqrt of the covariance diagonal
@@ -239,6 +242,8 @@ contains
     integer :: n, i, pass
     logical :: snapped
 
+    result%stop_test = 'none'
+    result%stop_reason = 'the fit did not start'
     call check_input(m, p, lower, upper, options, status)
     if (.not. status%ok()) return
     n = size(p)
@@ -347,6 +352,9 @@ contains
     if (all(result%at_bound)) then
       call evaluate_residuals(fit, fit%p, r, status)
       result%evaluations = result%evaluations + 1
+      result%stop_test = 'bounds'
+      result%stop_reason = 'every parameter held on a bound (the gradient points out of the box): nothing '// &
+                           'left to fit'
     else
       call run_minpack(fit, options, r, result, status)
     end if
@@ -399,25 +407,59 @@ contains
     result%jacobian_evaluations = result%jacobian_evaluations + njev
     if (info < 0 .and. fit%budget_spent) info = 5
 
-    ! The one translation of LMDER's info.
+    ! The one translation of LMDER's info (MINPACK's lmder documentation):
+    ! the test that ended the solve, in words, and the status it means.
     select case (info)
     case (:-1)
+      result%stop_test = 'problem'
       if (.not. fit%status%ok()) then
         status = fit%status   ! the problem's own reason, unchanged
+        result%stop_reason = 'stopped by the problem: '//status%text()
       else
-        call set_status(status, STATUS_INTERNAL, 'LMDER stopped by the callback without a status')
+        result%stop_reason = 'stopped by the callback without a status'
+        call set_status(status, STATUS_INTERNAL, 'LMDER '//result%stop_reason)
       end if
     case (0)
+      result%stop_test = 'input'
+      result%stop_reason = 'improper input parameters (info 0)'
       call set_status(status, STATUS_INVALID_INPUT, 'LMDER info = 0: improper input parameters')
-    case (1:4)
-      continue   ! converged: ftol (1), xtol (2), both (3) or gtol (4) satisfied
+    case (1)
+      result%stop_test = 'ftol'
+      result%stop_reason = 'ftol test (info 1): the actual and predicted relative reductions of the sum of '// &
+                           'squares in a step are at most ftol'
+    case (2)
+      result%stop_test = 'xtol'
+      result%stop_reason = 'xtol test (info 2): the relative change of the parameters in a step is at most '// &
+                           'xtol (also the end of a trust region shrunk by rejected steps)'
+    case (3)
+      result%stop_test = 'ftol+xtol'
+      result%stop_reason = 'ftol and xtol tests (info 3): the relative reduction of the sum of squares is at '// &
+                           'most ftol and the relative change of the parameters at most xtol'
+    case (4)
+      result%stop_test = 'gtol'
+      result%stop_reason = 'gtol test (info 4): the residuals are orthogonal to every column of the Jacobian '// &
+                           'within gtol (a gradient test)'
     case (5)
       result%info = 5
+      result%stop_test = 'max_evaluations'
+      result%stop_reason = 'evaluation budget (info 5): max_evaluations reached before convergence'
       call set_status(status, STATUS_NOT_CONVERGED, &
         'LMDER info = 5: max_evaluations reached before convergence')
-    case (6:8)
-      continue   ! ftol, xtol or gtol too small: converged to machine precision
+    case (6)
+      result%stop_test = 'ftol'
+      result%stop_reason = 'ftol too small (info 6): no further reduction of the sum of squares is possible '// &
+                           'in machine precision'
+    case (7)
+      result%stop_test = 'xtol'
+      result%stop_reason = 'xtol too small (info 7): no further improvement of the parameters is possible in '// &
+                           'machine precision'
+    case (8)
+      result%stop_test = 'gtol'
+      result%stop_reason = 'gtol too small (info 8): the residuals are orthogonal to the columns of the '// &
+                           'Jacobian in machine precision'
     case default
+      result%stop_test = 'unknown'
+      result%stop_reason = 'unknown info code'
       call set_status(status, STATUS_SOLVER, 'LMDER returned an unknown info code')
     end select
     ! MINPACK's final r belongs to its final z: a rejected trial (and its

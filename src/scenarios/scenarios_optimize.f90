@@ -6,12 +6,13 @@
 module scenarios_optimize
   use base_kinds, only: wp
   use base_constants, only: pi
-  use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
+  use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT, STATUS_NOT_CONVERGED
   use base_text, only: format_integer, format_short, format_with
   use base_log, only: log_info
   use design_cuboid_ride, only: cuboid_ride_t
   use design_geometry_optimization, only: optimization_setup_t, optimization_result_t, design_evaluation_t, &
-    evaluate_design, optimize_slide, design_points, build_design_slide
+    evaluate_design, optimize_slide, design_points, build_design_slide, OUTCOME_OPTIMUM, OUTCOME_FAILED, &
+    outcome_names
   use geometry_tube, only: tube_surface_t
   use geometry_curve, only: curve_point_t
   use io_input, only: input_text_t, check_known_groups, group_present, where_given
@@ -43,7 +44,7 @@ contains
     type(result_file_t) :: file
     type(status_t) :: run_status, write_status
     real(wp) :: cpu0, cpu1
-    logical :: complete
+    logical :: complete, ended
     character(len=:), allocatable :: message
 
     call check_known_groups(input, optimize_groups, status)
@@ -73,16 +74,19 @@ contains
     call optimize_slide(setup, result, run_status)
     call cpu_time(cpu1)
     if (run_status%ok()) call evaluate_design(setup, result%x, after, run_status, keep_series=.true.)
-    call write_results(file, input, run, setup, result, before, after, run_status%ok(), cpu1 - cpu0, write_status)
+    ended = run_status%ok()   ! an end point, written and reported whatever its outcome
+    ! an end that is not a minimum or violates a constraint is no optimum: exit 2, file incomplete
+    if (ended .and. result%outcome /= OUTCOME_OPTIMUM) &
+      call set_status(run_status, STATUS_NOT_CONVERGED, 'optimize: '//result%verdict)
+    call write_results(file, input, run, setup, result, before, after, ended, cpu1 - cpu0, write_status)
     complete = run_status%ok() .and. write_status%ok()
     message = 'ok'
     if (.not. write_status%ok()) message = write_status%text()
     if (.not. run_status%ok()) message = run_status%text()
-    if (write_status%ok()) call write_xdmf(file, size(setup%start_angles), run_status%ok(), write_status)
+    if (write_status%ok()) call write_xdmf(file, size(setup%start_angles), ended, write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()
-    if (run_status%ok()) call report(setup, result, cpu1 - cpu0, file%final_path(), run, complete, message, &
-                                     write_status)
+    if (ended) call report(setup, result, cpu1 - cpu0, file%final_path(), run, complete, message, write_status)
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
   end subroutine run_optimize
 
@@ -137,6 +141,7 @@ contains
                             'augmented Lagrangian updates (constraint = exact), else 1', status)
       call file%write_scalar(g//'cpu_time', cpu, 's', 'process CPU time of the optimisation', status)
       call write_evaluation(file, g//'after/', after, status)
+      call write_outcome(file, result, status)
     end if
     ! the slide's surface (the optimum's, else the start's) for ParaView
     if (optimized) then
@@ -153,9 +158,12 @@ contains
     call file%write_vector(g//'centerline_fraction', [(real(k, wp)/(n_centerline - 1), k=0, n_centerline - 1)], &
                            '1', 'fraction of the centerline''s parameter range of each centerline sample', status)
     call file%make_scale(g//'x_start', status)
+    if (optimized) call file%make_scale(g//'starts/start', status)
     call file%make_scale(g//'point_number', status)
     call file%make_scale(g//'centerline_fraction', status)
+    if (optimized) call file%attach_scale(g//'starts/start', g//'starts/', status)   ! before x_start's
     call file%attach_scale(g//'x_start', g, status)
+    if (optimized) call file%attach_scale(g//'x_start', g//'starts/', status, axis=1)
     call file%attach_scale(g//'point_number', g, status)
     call file%attach_scale(g//'centerline_fraction', g, status)
     call file%attach_components('/optimize', status)   ! the (x, y, z) axes: /optimize/xyz
@@ -174,6 +182,49 @@ contains
       call file%attach_scale(group//'start_angle', group, status)
     end subroutine scale_rides
   end subroutine write_results
+
+  !> How the optimisation ended (attributes of /optimize) and every start
+  !> (/optimize/starts).
+  subroutine write_outcome(file, result, status)
+    type(result_file_t), intent(inout) :: file
+    type(optimization_result_t), intent(in) :: result
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: g = '/optimize', s = '/optimize/starts/'
+    integer :: k, n
+    call file%set_attribute(g, 'outcome', trim(outcome_names(result%outcome)), status)
+    call file%set_attribute(g, 'verdict', result%verdict, status)
+    call file%set_attribute(g, 'stop_test', result%stop_test, status)
+    call file%set_attribute(g, 'stop_reason', result%stop_reason, status)
+    call file%set_attribute(g, 'final_stop_reason', result%final_stop_reason, status)
+    call file%set_attribute(g, 'minimum_check', result%minimum_check, status)
+    call file%set_attribute(g, 'restarts', result%restarts, status)
+    call file%set_attribute(g, 'constraints', constraints_text(result), status)
+    call file%set_attribute(g, 'best_start', result%best_start, status)
+    n = size(result%starts)
+    call file%write_vector(s//'start', [(real(k, wp), k=1, n)], '1', &
+                           'number of each start (1 = the given design); dimension scale', status)
+    call file%write_matrix(s//'x_start', reshape([(result%starts(k)%x_start, k=1, n)], [size(result%x), n]), &
+                           'm', 'design variables at each start (one column per start)', status)
+    call file%write_matrix(s//'x', reshape([(result%starts(k)%x, k=1, n)], [size(result%x), n]), 'm', &
+                           'design variables at each start''s end', status)
+    call file%write_vector(s//'cost_start', result%starts%cost_start, 'm^2/s^4', 'the fit''s cost at each start', &
+                           status)
+    call file%write_vector(s//'cost', min(result%starts%cost, 1e30_wp), 'm^2/s^4', &
+                           'the fit''s cost at each start''s end (1e30: the start failed)', status)
+    call file%write_vector(s//'acceleration_cost', min(result%starts%acceleration_cost, 1e30_wp), 'm^2/s^4', &
+                           'the acceleration cost at each start''s end (1e30: the start failed)', status)
+    call file%write_integers(s//'outcome', result%starts%outcome, '1', &
+                             'how each start ended: 0 optimum, 1 constraint violated, 2 not a minimum, 3 failed', status)
+    call file%write_integers(s//'evaluations', result%starts%evaluations, '1', 'designs ridden by each start', status)
+  end subroutine write_outcome
+
+  !> 'hold' or the violated constraints.
+  function constraints_text(result) result(text)
+    type(optimization_result_t), intent(in) :: result
+    character(len=:), allocatable :: text
+    text = 'hold'
+    if (len(result%violations) > 0) text = 'violated: '//result%violations
+  end function constraints_text
 
   subroutine write_grid(file, setup, x, status)
     type(result_file_t), intent(inout) :: file
@@ -291,16 +342,26 @@ contains
     type(summary_t) :: summary
     real(wp), allocatable :: table(:, :)
     integer :: k, n
+    character(len=:), allocatable :: end
     n = size(setup%start_angles)
+    end = 'optimum'
+    if (result%outcome /= OUTCOME_OPTIMUM) end = 'end (no optimum)'
     call summary%start('optimize', 'slidesim optimize: '//format_integer(size(result%x))//' design variables, '// &
                        format_integer(n)//' rides')
+    call summary%add_text('outcome', 'outcome', trim(outcome_names(result%outcome)))
+    call summary%add_text('verdict', 'verdict', result%verdict)
+    call summary%add_text('stop_reason', 'MINPACK stopped first on', result%stop_reason)
+    call summary%add_count('restarts', 'restarts from the end', result%restarts, 'restarts')
+    call summary%add_text('minimum_check', 'minimum check', result%minimum_check)
+    call summary%add_text('constraints', 'constraints at the end', constraints_text(result))
     call summary%add('cost_start', 'cost at the start', result%cost_before, 'm^2/s^4')
-    call summary%add('cost', 'cost at the optimum', result%cost_after, 'm^2/s^4')
+    call summary%add('cost', 'cost at the '//end, result%cost_after, 'm^2/s^4')
     call add_lever('max_lever_arm_start', 'largest lever arm, start', result%before%max_lever_arm)
-    call add_lever('max_lever_arm', 'largest lever arm, optimum', result%after%max_lever_arm)
+    call add_lever('max_lever_arm', 'largest lever arm, '//end, result%after%max_lever_arm)
     call summary%add('lever_limit', 'lever-arm limit', setup%lever_limit, 'm')
     call summary%add_count('evaluations', 'designs evaluated', result%evaluations, 'designs')
     call summary%add('cpu_time', 'CPU time', cpu, 's')
+    if (size(result%starts) > 1) call add_starts()
     allocate (table(5, size(result%x)))
     do k = 1, size(result%x)
       table(:, k) = [real(setup%design%point(k) - 1, wp), real(setup%design%coordinate(k), wp), &
@@ -342,6 +403,32 @@ contains
 
   contains
 
+    !> Every start's costs and outcome, the best one and the spread.
+    subroutine add_starts()
+      real(wp), allocatable :: starts(:, :), ended(:)
+      integer :: j
+      associate (s => result%starts)
+        call summary%add_count('best_start', 'best start', result%best_start, '(1 = the given design)')
+        ended = pack(s%acceleration_cost, s%outcome /= OUTCOME_FAILED)
+        call summary%add_range('acceleration_cost_spread', 'acceleration cost over the starts', minval(ended), &
+                               maxval(ended), 'm^2/s^4')
+        allocate (starts(6, size(s)))
+        do j = 1, size(s)
+          starts(:, j) = [real(j, wp), s(j)%cost_start, min(s(j)%cost, 1e30_wp), &
+                          min(s(j)%acceleration_cost, 1e30_wp), real(s(j)%outcome, wp), real(s(j)%evaluations, wp)]
+        end do
+        call summary%add_table('starts', [character(len=17) :: 'start', 'cost_start', 'cost', 'acceleration_cost', &
+                               'outcome', 'designs'], [character(len=7) :: '1', 'm^2/s^4', 'm^2/s^4', 'm^2/s^4', &
+                               '1', '1'], starts)
+        call summary%add_line('  start   cost start       cost end   acceleration cost  designs  outcome')
+        do j = 1, size(s)
+          call summary%add_line('  '//padded(j, 5)//format_with(starts(2, j), 'es13.4')// &
+            format_with(starts(3, j), 'es15.4')//format_with(starts(4, j), 'es20.4')// &
+            padded(s(j)%evaluations, 9)//'  '//trim(outcome_names(s(j)%outcome)))
+        end do
+      end associate
+    end subroutine add_starts
+
     subroutine add_lever(key, label, value)
       character(len=*), intent(in) :: key, label
       real(wp), intent(in) :: value
@@ -352,6 +439,14 @@ contains
       end if
     end subroutine add_lever
   end subroutine report
+
+  !> i right-aligned in `width` columns.
+  pure function padded(i, width) result(text)
+    integer, intent(in) :: i, width
+    character(len=:), allocatable :: text
+    text = format_integer(i)
+    text = repeat(' ', max(0, width - len(text)))//text
+  end function padded
 
   pure function lever_text(x) result(text)
     real(wp), intent(in) :: x

@@ -400,6 +400,8 @@ contains
     call solve_least_squares(problem, 2, p, [-big, -big], [big, big], options, result, status)
     call check(status%code == STATUS_NOT_CONVERGED .and. result%info == 5, &
       'max_evaluations 3: info 5, not converged: '//status%text())
+    call check(stop_said(result, 'max_evaluations', 'max_evaluations reached before convergence'), &
+      'max_evaluations 3: the stop said in words (evaluation budget)')
 
     ! A model that cannot be run beyond p1 = 0.9: the failed trial points are
     ! rejected steps, the fit goes on and ends at the domain's edge (the
@@ -425,6 +427,9 @@ contains
     call check(p(1) <= 0.9_wp .and. p(1) > 0.9_wp - 1e-9_wp, 'fit ends at the domain''s edge')
     call check(result%cost >= 0.005_wp .and. result%cost < 0.005_wp + 1e-5_wp, &
                'cost near the edge''s minimum 0.005')
+    ! ... and says so: the step test (xtol) ended it, not a gradient test
+    call check(result%info == 2 .and. stop_said(result, 'xtol', 'relative change of the parameters'), &
+               'the domain edge: stopped by the xtol test (info 2), said in words')
     ! A failure at the start is not a step: the residuals' status comes back.
     p = [1.2_wp, 1.0_wp]
     call solve_least_squares(problem, 2, p, [-big, -big], [big, big], least_squares_options_t(), &
@@ -458,5 +463,23 @@ contains
     call check(status%ok() .and. all(p == [0.3_wp, 0.1_wp]) .and. all(result%at_bound), &
       'all parameters fixed: nothing to fit, ok')
     call check_close(result%cost, 0.5_wp*(0.1_wp**2 + 0.7_wp**2), 1e-14_wp, 0.0_wp, 'all fixed: cost')
+    call check(stop_said(result, 'bounds', 'every parameter held on a bound'), 'all fixed: the stop said')
+
+    ! A loose ftol ends Rosenbrock on the ftol test (info 1), said in words
+    p = [-1.2_wp, 1.0_wp]
+    call solve_least_squares(problem, 2, p, [-big, -big], [big, big], &
+                             least_squares_options_t(ftol=0.5_wp, xtol=1e-15_wp, gtol=0.0_wp), result, status)
+    call check(status%ok() .and. result%info == 1 .and. &
+               stop_said(result, 'ftol', 'relative reductions of the sum of squares'), &
+               'ftol 0.5: stopped by the ftol test (info 1), said in words: '//result%stop_reason)
   end subroutine failures
+
+  !> The stop of a solve is given as its test and in words holding `words`.
+  logical function stop_said(result, test, words)
+    type(least_squares_result_t), intent(in) :: result
+    character(len=*), intent(in) :: test, words
+    stop_said = .false.
+    if (.not. (allocated(result%stop_test) .and. allocated(result%stop_reason))) return
+    stop_said = result%stop_test == test .and. index(result%stop_reason, words) > 0
+  end function stop_said
 end program test_least_squares
