@@ -203,9 +203,9 @@ contains
     n = size(result%starts)
     call file%write_vector(s//'start', [(real(k, wp), k=1, n)], '1', &
                            'number of each start (1 = the given design); dimension scale', status)
-    call file%write_matrix(s//'x_start', reshape([(result%starts(k)%x_start, k=1, n)], [size(result%x), n]), &
+    call file%write_matrix(s//'start_design', reshape([(result%starts(k)%x_start, k=1, n)], [size(result%x), n]), &
                            'm', 'design variables at each start (one column per start)', status)
-    call file%write_matrix(s//'x', reshape([(result%starts(k)%x, k=1, n)], [size(result%x), n]), 'm', &
+    call file%write_matrix(s//'end_design', reshape([(result%starts(k)%x, k=1, n)], [size(result%x), n]), 'm', &
                            'design variables at each start''s end', status)
     call file%write_vector(s//'cost_start', result%starts%cost_start, 'm^2/s^4', 'the fit''s cost at each start', &
                            status)

@@ -85,7 +85,7 @@ done
 [ "$(cat "$work/multi1.exit")" = 0 ] || [ "$(cat "$work/multi1.exit")" = 2 ] || fail "multi1: exit status $(cat "$work/multi1.exit")"
 cmp -s "$work/multi1.exit" "$work/multi2.exit" && cmp -s "$work/multi1.exit" "$work/multi3.exit" || fail "multi: exit statuses differ"
 for other in multi2 multi3; do
-  for d in /optimize/starts/x_start /optimize/starts/x /optimize/starts/cost /optimize/starts/outcome \
+  for d in /optimize/starts/start_design /optimize/starts/end_design /optimize/starts/cost /optimize/starts/outcome \
            /optimize/starts/evaluations /optimize/x /optimize/cost; do
     h5diff -q "$work/multi1.h5" "$work/$other.h5" "$d" "$d" >/dev/null 2>&1 || fail "$other: $d differs from multi1's"
   done

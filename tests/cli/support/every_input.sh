@@ -42,7 +42,10 @@ for input in "$root"/inputs/*.nml "$root"/inputs/*/*.nml; do
     contact_tower5) run "$name" --set solver%duration=0.5 "$input" ;;   # of the 5 s of the five-body tower input
     ride_demo_slide | templates_ride)   # the default is this ride in full
       run "$name" --set solver%rtol=1e-6 --set solver%atol=1e-5 "$input" ;;
-    templates_optimize) run "$name" --set optimize%ftol=0.1 --set optimize%xtol=0.1 "$input" ;;
+    # loose tolerances end before the lever-arm limit holds (exit 2): without the
+    # constraint the end is checked and complete (tests/cli/optimize_verdicts.sh gates)
+    templates_optimize) run "$name" --set optimize%ftol=0.1 --set optimize%xtol=0.1 \
+      --set "optimize%constraint='none'" "$input" ;;
     *) run "$name" "$input" ;;
   esac
 done
