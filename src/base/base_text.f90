@@ -7,6 +7,7 @@ module base_text
   implicit none (type, external)
   private
   public :: format_real, format_short, format_vector, format_integer, format_with, lower
+  public :: next_data_line
 
 contains
 
@@ -234,4 +235,36 @@ contains
     end if
     text = buffer(first:)
   end function format_integer
+
+  !> The next line of `text` from position `start` that holds data: a carriage
+  !> return before the line end is dropped, the line is trimmed on both sides,
+  !> blank lines and lines starting with # are passed over. `line_no` counts
+  !> every line passed (the file's line number of the line returned); false at
+  !> the end of the text.
+  logical function next_data_line(text, start, line_no, line) result(found)
+    character(len=*), intent(in) :: text
+    integer, intent(inout) :: start, line_no
+    character(len=:), allocatable, intent(out) :: line
+    integer :: next
+    found = .false.
+    do while (start <= len(text))
+      next = index(text(start:), new_line('a'))
+      if (next == 0) then
+        line = text(start:)
+        start = len(text) + 1
+      else
+        line = text(start:start + next - 2)
+        start = start + next
+      end if
+      line_no = line_no + 1
+      if (len(line) > 0) then
+        if (line(len(line):) == achar(13)) line = line(:len(line) - 1)
+      end if
+      line = trim(adjustl(line))
+      if (len(line) == 0) cycle
+      if (line(1:1) == '#') cycle
+      found = .true.
+      return
+    end do
+  end function next_data_line
 end module base_text

@@ -5,7 +5,7 @@
 !> is not a number); every data line then has the same number of fields.
 module io_csv
   use base_kinds, only: wp
-  use base_text, only: format_integer
+  use base_text, only: format_integer, next_data_line
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use io_namelist, only: nml_value_t, read_real_token, NUMBER_OK, NUMBER_NOT
   use io_input, only: bounds_t, read_text_file
@@ -29,7 +29,7 @@ contains
     character(len=:), allocatable :: text, line
     integer, allocatable :: line_of(:)
     real(wp), allocatable :: rows(:, :)
-    integer :: start, line_no, columns, n, k, next
+    integer :: start, line_no, columns, n, k
     logical :: header_allowed
 
     allocate (table(0, 0))
@@ -41,22 +41,7 @@ contains
     line_no = 0
     header_allowed = .true.
     start = 1
-    do while (start <= len(text))
-      next = index(text(start:), new_line('a'))
-      if (next == 0) then
-        line = text(start:)
-        start = len(text) + 1
-      else
-        line = text(start:start + next - 2)
-        start = start + next
-      end if
-      line_no = line_no + 1
-      if (len(line) > 0) then
-        if (line(len(line):) == achar(13)) line = line(:len(line) - 1)
-      end if
-      line = trim(adjustl(line))
-      if (len(line) == 0) cycle
-      if (line(1:1) == '#') cycle
+    do while (next_data_line(text, start, line_no, line))
       if (header_allowed) then
         header_allowed = .false.
         if (.not. first_is_number(line)) cycle

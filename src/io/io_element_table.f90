@@ -12,7 +12,7 @@
 !> Lines starting with # and blank lines are skipped.
 module io_element_table
   use base_kinds, only: wp
-  use base_text, only: format_integer
+  use base_text, only: format_integer, next_data_line
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_constants, only: two_pi
   use io_namelist, only: nml_value_t, read_real_token, NUMBER_OK
@@ -43,7 +43,7 @@ contains
     type(element_table_t), intent(out) :: table
     type(status_t), intent(inout) :: status
     character(len=:), allocatable :: text, line, cells(:), variable, value, allowed
-    integer :: column_of(8), start, next, line_no, n, k, c
+    integer :: column_of(8), start, line_no, n, k, c
     logical :: header_read
 
     allocate (table%kind(max_elements), table%direction(max_elements), table%length(max_elements), &
@@ -58,22 +58,8 @@ contains
     n = 0
     line_no = 0
     start = 1
-    do while (start <= len(text) .and. status%ok())
-      next = index(text(start:), new_line('a'))
-      if (next == 0) then
-        line = text(start:)
-        start = len(text) + 1
-      else
-        line = text(start:start + next - 2)
-        start = start + next
-      end if
-      line_no = line_no + 1
-      if (len(line) > 0) then
-        if (line(len(line):) == achar(13)) line = line(:len(line) - 1)
-      end if
-      line = trim(adjustl(line))
-      if (len(line) == 0) cycle
-      if (line(1:1) == '#') cycle
+    do while (status%ok())
+      if (.not. next_data_line(text, start, line_no, line)) exit
       cells = split(line)
       if (.not. header_read) then
         header_read = .true.

@@ -4,7 +4,7 @@ program test_base
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_SOLVER
   use base_sha256, only: sha256_hex
-  use base_text, only: format_real, format_integer, format_short
+  use base_text, only: format_real, format_integer, format_short, next_data_line
   use base_vector, only: cross, skew, unit_vector, rot_x, rot_y, rot_z, rotation_xyz, identity3, outer3
   use testing, only: check, check_close, check_close_array, finish_tests
   use, intrinsic :: iso_fortran_env, only: int64
@@ -62,9 +62,31 @@ program test_base
   call check(sha256_hex(repeat('a', 64)) == 'ffe054fe7ae0cb6dc65c3af9b61d5209f439851db43d0ba5997337df154668eb', &
              'sha256 64 bytes')
   call check_number_texts()
+  call check_data_lines()
   call finish_tests('test_base')
 
 contains
+
+  !> next_data_line: blank and # lines passed over with their numbers counted,
+  !> a CRLF line end and surrounding blanks dropped, the last line without a
+  !> line end, false at the end.
+  subroutine check_data_lines()
+    character(len=*), parameter :: lf = new_line('a')
+    character(len=:), allocatable :: text, line
+    integer :: start, line_no
+    text = '# header'//lf//lf//'  1, 2 '//achar(13)//lf//'   '//lf//'3,4'
+    start = 1
+    line_no = 0
+    call check(next_data_line(text, start, line_no, line), 'first data line found')
+    call check(line == '1, 2' .and. line_no == 3, 'first data line "'//line//'" at line '//format_integer(line_no))
+    call check(next_data_line(text, start, line_no, line), 'last line without a line end found')
+    call check(line == '3,4' .and. line_no == 5, 'last data line "'//line//'" at line '//format_integer(line_no))
+    call check(.not. next_data_line(text, start, line_no, line), 'false at the end')
+    start = 1
+    line_no = 0
+    call check(.not. next_data_line('# only'//lf//lf, start, line_no, line) .and. line_no == 2, &
+               'a text of comments and blanks has no data line')
+  end subroutine check_data_lines
 
   !> format_real against tests/reference/number_texts.txt: 8704 doubles
   !> (random of every magnitude, random bit patterns, every power of two,
