@@ -166,6 +166,8 @@ contains
     call r%get('max_restarts', setup%max_restarts, 1, 100, status)
     call r%get('starts', setup%starts, 1, 1000, status)
     call r%get('seed', setup%seed, 1, huge(1), status)
+    if (setup%starts == 1) call r%refuse_given(['seed'], 'seed draws the starts after the first: it is used '// &
+      'only with starts > 1', status)
     setup%rho = 20*setup%penalty_factor
   end subroutine read_optimization_config
 end module io_optimization_config

@@ -107,7 +107,7 @@ assert 1 <= best <= 3
 EOF
 
 for bad in "starts = 0|starts = 0|[1, 1000]" "seed = 0|seed = 0|[1, " "max_restarts = 0|max_restarts = 0|[1, 100]" \
-           "max_designs = 0|max_designs = 0|[1, 1000000]"; do
+           "max_designs = 0|max_designs = 0|[1, 1000000]" "seed = 5|seed = 5|only with starts > 1"; do
   IFS='|' read -r change needle range <<<"$bad"
   mk bad "$change"
   (cd "$work" && "$slidesim" -q bad.nml >bad.out 2>bad.err)
