@@ -7,10 +7,12 @@
 !> Every body other than the ground is carried by exactly one contact, the one
 !> that names it body_2 (its relative chain, contact_pair); contacts are
 !> built in the order given, so a contact's body_1 must be the ground or
-!> carried by an earlier contact. Friction laws come from the multibody core
-!> (kinetostatics_force_laws): viscous -mu M g w_t (the egg, METHOD-PART2
-!> A.4.3, M the mass of body_2, g = |gravity|), viscous -mu |N| w_t, or
-!> Coulomb -mu |N| w_t/|w_t| (regularized); w_t is the tangential slip (3.87).
+!> carried by an earlier contact. Friction laws are any kind of the multibody
+!> core's registry (kinetostatics_force_law_factory), built from the
+!> contact's spec: viscous -mu M g w_t (the egg, METHOD-PART2 A.4.3, M the
+!> mass of body_2, g = |gravity|), viscous -mu |N| w_t, Coulomb -mu |N|
+!> w_t/|w_t| (regularized), ...; w_t is the tangential slip (3.87). Shapes
+!> and bodies come from their specs too (contact_factory).
 !> Rolling adds the no-slip constraint (contact_rolling) with the rates of
 !> (u12, v12) dependent: the speeds are the three angle rates.
 !>
@@ -37,28 +39,28 @@ module contact_model
   use base_kinds, only: wp
   use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_spec, only: spec_t
   use geometry_surface, only: surface_t
-  use geometry_solid, only: solid_properties_t, solid_properties
+  use geometry_solid, only: solid_properties_t
   use numerics_linear_algebra, only: cholesky_factor, cholesky_solve
   use kinetostatics_surface_joint, only: new_surface_joint
   use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT, MEASURE_PLANE_PLANE
   use kinetostatics_mass, only: new_mass_element
-  use kinetostatics_force_laws, only: new_coulomb_friction, new_normal_viscous_friction, new_viscous_friction
+  use kinetostatics_force_law, only: force_law_t, law_place_t
+  use kinetostatics_force_law_factory, only: force_law_from_spec
   use kinetostatics_mechanism, only: mechanism_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use contact_pair, only: contact_pair_t, add_contact_pair, add_open_contact_pair, place_contact_pair, &
     place_open_contact_pair, check_contact_branch
   use contact_rolling, only: new_no_slip
   use contact_velocity_level, only: new_velocity_contact
+  use contact_factory, only: shape_t, body_spec_t, body_from_spec
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t, contact_model_t, contact_link_t
   public :: build_contact_model, contact_convergence_coefficient, body_size
-  public :: FRICTION_NONE, FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL, FRICTION_COULOMB
   public :: LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
 
-  integer, parameter :: FRICTION_NONE = 0, FRICTION_VISCOUS_WEIGHT = 1, FRICTION_VISCOUS_NORMAL = 2, &
-                        FRICTION_COULOMB = 3
   integer, parameter :: LEVEL_POSITION = 1, LEVEL_VELOCITY = 2
   !> The chain of a position-level contact: open where it applies (no
   !> rolling), else the loop (CHAIN_AUTO); or either chosen.
@@ -74,30 +76,10 @@ module contact_model
   !> "Corrector"; bench/convergence_scan.sh).
   real(wp), parameter :: contact_convergence_coefficient = 0.03_wp
 
-  !> A surface in the coordinates of the body that carries it.
-  type :: shape_t
-    character(len=:), allocatable :: name
-    class(surface_t), allocatable :: surface
-  end type shape_t
-
-  type :: body_spec_t
-    character(len=:), allocatable :: name
-    real(wp) :: mass = 1                         ! kg
-    character(len=:), allocatable :: solid_of    ! a shape: centre and inertia of its homogeneous solid
-    real(wp) :: centre(3) = 0                    ! m, centre of mass (body axes)
-    real(wp) :: inertia(3, 3) = 0                ! kg m^2, about the centre (body axes)
-    real(wp) :: rotation(3, 3) = identity        ! start orientation (columns: body axes in world)
-    real(wp) :: position(3) = 0                  ! m, start origin (world)
-    real(wp) :: velocity(3) = 0                  ! m/s, of the origin (world)
-    real(wp) :: angular_velocity(3) = 0          ! rad/s (world)
-  end type body_spec_t
-
   type :: contact_spec_t
     character(len=:), allocatable :: name, body_1, shape_1, body_2, shape_2
     real(wp) :: side_1 = 1, side_2 = 1           ! normal towards the other body (+1/-1)
-    integer :: friction = FRICTION_NONE
-    real(wp) :: mu = 0                           ! s/m (viscous) or 1 (Coulomb)
-    real(wp) :: regularization_speed = 1e-6_wp   ! m/s (Coulomb)
+    type(spec_t) :: friction                     ! a force law kind and its parameters (no kind: none)
     logical :: rolling = .false.
     integer :: level = LEVEL_POSITION
     integer :: chain = CHAIN_AUTO
@@ -206,7 +188,7 @@ contains
         if (shape_index(system, c%shape_2) == 0) call fail('contact '''//c%name//''': shape_2 = '''// &
                                                            c%shape_2//''' is not a shape'//known_shapes(system))
         if (c%body_1 == c%body_2) call fail('contact '''//c%name//''': a body cannot touch itself')
-        if (c%rolling .and. c%friction /= FRICTION_NONE) call fail('contact '''//c%name//''': a rolling '// &
+        if (c%rolling .and. allocated(c%friction%kind)) call fail('contact '''//c%name//''': a rolling '// &
           'contact has no sliding friction (the no-slip constraint carries the tangential force)')
         if (c%chain == CHAIN_OPEN .and. c%rolling) call fail('contact '''//c%name//''': chain = ''open'' '// &
           'is for sliding contacts; a rolling contact needs the loop (chain = ''loop'')')
@@ -427,31 +409,15 @@ contains
     if (link%open) call m%add_monitor(link%pair%chart, '1')
   end subroutine add_monitors
 
-  !> Centre and inertia of every body: given, or the homogeneous solid of a
-  !> shape scaled to the body's mass.
+  !> Centre and inertia of every body (contact_factory body_from_spec).
   subroutine mass_properties(system, props, status)
     type(contact_system_t), intent(in) :: system
     type(solid_properties_t), intent(out) :: props(:)
     type(status_t), intent(inout) :: status
-    type(status_t) :: outward
     integer :: k
     do k = 1, size(system%bodies)
-      associate (b => system%bodies(k))
-        if (allocated(b%solid_of)) then
-          ! the solid is the same whichever way r_u x r_v points
-          call solid_properties(system%shapes(shape_index(system, b%solid_of))%surface, 1.0_wp, props(k), outward)
-          if (.not. outward%ok()) call solid_properties(system%shapes(shape_index(system, b%solid_of))%surface, &
-                                                        -1.0_wp, props(k), status)
-          if (.not. status%ok()) then
-            call prefix_status(status, 'body '''//b%name//''': solid_of = '''//b%solid_of//'''')
-            return
-          end if
-          props(k)%inertia = props(k)%inertia*b%mass/props(k)%volume
-        else
-          props(k)%centre = b%centre
-          props(k)%inertia = b%inertia
-        end if
-      end associate
+      call body_from_spec(system%bodies(k), system%shapes, props(k), status)
+      if (.not. status%ok()) return
     end do
   end subroutine mass_properties
 
@@ -566,22 +532,18 @@ contains
     if (.not. status%ok()) return
   end subroutine add_velocity_contact
 
+  !> The contact's friction law (its spec: force_law_from_spec), if any.
   subroutine add_friction(m, c, link, weight, status)
     type(mechanism_t), intent(inout) :: m
     type(contact_spec_t), intent(in) :: c
     type(contact_link_t), intent(inout) :: link
     real(wp), intent(in) :: weight   ! N, M g of body 2
     type(status_t), intent(inout) :: status
-    select case (c%friction)
-    case (FRICTION_VISCOUS_WEIGHT)
-      call m%add_law(new_viscous_friction(c%name//'.friction', link%contact, c%mu*weight, status))
-    case (FRICTION_VISCOUS_NORMAL)
-      call m%add_law(new_normal_viscous_friction(c%name//'.friction', link%contact, c%mu, status))
-    case (FRICTION_COULOMB)
-      call m%add_law(new_coulomb_friction(c%name//'.friction', link%contact, c%mu, c%regularization_speed, status))
-    case default
-      return
-    end select
+    class(force_law_t), allocatable :: law
+    if (.not. allocated(c%friction%kind)) return
+    call force_law_from_spec(c%friction, law_place_t(c%name//'.friction', link%contact, weight), law, status)
+    if (.not. status%ok()) return
+    call m%add_law(law)
     link%law = m%n_laws
   end subroutine add_friction
 

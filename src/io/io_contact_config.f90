@@ -8,11 +8,12 @@ module io_contact_config
   use base_constants, only: pi
   use base_vector, only: rotation_xyz
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
-  use contact_model, only: contact_system_t, FRICTION_NONE, &
-    FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL, FRICTION_COULOMB, LEVEL_POSITION, LEVEL_VELOCITY, &
-    CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
-  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, in_range, above, group_count, format_vector
-  use io_surface_config, only: read_surface_config
+  use kinetostatics_force_law, only: force_law_kind_t
+  use kinetostatics_force_law_factory, only: force_law_kinds, force_law_kind_index
+  use contact_model, only: contact_system_t, LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
+  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, group_count, format_vector
+  use io_kind_parameters, only: read_kind_parameters, refuse_other_parameters, parameter_variables
+  use io_surface_config, only: read_surface_config, surface_variables
   implicit none (type, external)
   private
   public :: read_contact_config, contact_groups, contact_repeatable_groups
@@ -20,8 +21,6 @@ module io_contact_config
   character(len=*), parameter :: contact_groups(6) = [character(len=14) :: 'run', 'solver', 'contact_model', &
     'shape', 'body', 'contact']
   character(len=*), parameter :: contact_repeatable_groups(3) = [character(len=8) :: 'shape', 'body', 'contact']
-  character(len=*), parameter :: friction_names(4) = [character(len=14) :: 'none', 'viscous_weight', &
-    'viscous_normal', 'coulomb']
   integer, parameter :: name_length = 32
 
 contains
@@ -161,14 +160,21 @@ contains
     type(contact_system_t), intent(inout) :: system
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
-    character(len=name_length) :: name, body_1, shape_1, body_2, shape_2
-    character(len=14) :: friction
+    character(len=name_length) :: name, body_1, shape_1, body_2, shape_2, friction
     character(len=8) :: level, chain
-    type(bounds_t) :: mu_bounds
+    type(force_law_kind_t), allocatable :: laws(:)
+    character(len=name_length), allocatable :: names(:), law_variables(:), friction_names(:)
     integer :: j
-    character(len=*), parameter :: names(13) = [character(len=20) :: 'name', 'body_1', 'shape_1', 'side_1', &
-      'body_2', 'shape_2', 'side_2', 'friction', 'mu', 'regularization_speed', 'rolling', 'level', 'chain']
     if (.not. status%ok()) return
+    ! the variables of every law kind registered (kinetostatics_force_law_factory)
+    laws = force_law_kinds()
+    allocate (law_variables(0))
+    do j = 1, size(laws)
+      call parameter_variables(laws(j)%parameters, law_variables)
+    end do
+    friction_names = [character(len=name_length) :: 'none', (laws(j)%name, j = 1, size(laws))]
+    names = [character(len=name_length) :: 'name', 'body_1', 'shape_1', 'side_1', 'body_2', 'shape_2', 'side_2', &
+             'friction', 'rolling', 'level', 'chain', law_variables]
     name = ''; body_1 = 'ground'; shape_1 = ''; body_2 = ''; shape_2 = ''
     friction = 'none'
     level = 'position'
@@ -193,22 +199,17 @@ contains
         trim(chain)//'''', 'the chain is chosen for level = ''position'' only (a velocity-level contact has '// &
         'its own element)', status)
       if (.not. status%ok()) return
-      ! a law without mu would run with mu = 0, that is frictionless: refused
-      mu_bounds = above(0.0_wp, 1e3_wp, 's/m')
-      if (friction == 'coulomb') mu_bounds = above(0.0_wp, 10.0_wp, '1')
-      if (friction /= 'none' .and. .not. r%has('mu')) call r%invalid('mu', 'none (not given)', 'friction = '''// &
-        trim(friction)//''' needs mu: it '//mu_bounds%text()//'; friction = ''none'' for no friction', status)
-      if (.not. status%ok()) return
-      select case (trim(friction))
-      case ('viscous_weight', 'viscous_normal')
-        call r%get('mu', c%mu, mu_bounds, status)
-        call r%refuse_given(['regularization_speed'], 'only Coulomb friction is regularized', status)
-      case ('coulomb')
-        call r%get('mu', c%mu, mu_bounds, status)
-        call r%get('regularization_speed', c%regularization_speed, above(0.0_wp, 1.0_wp, 'm/s'), status)
-      case default
-        call r%refuse_given([character(len=20) :: 'mu', 'regularization_speed'], 'friction = ''none''', status)
-      end select
+      ! the law's parameters by its declarations; a required one not given
+      ! (mu: the law would run frictionless) and another law's are refused
+      if (friction == 'none') then
+        call r%refuse_given(law_variables, 'friction = ''none'' has no parameters', status)
+      else
+        associate (law => laws(force_law_kind_index(trim(friction))))
+          call read_kind_parameters(r, 'friction', trim(friction), law%parameters, c%friction, status, &
+                                    hint='friction = ''none'' for no friction')
+          call refuse_other_parameters(r, 'friction', trim(friction), law%parameters, law_variables, status)
+        end associate
+      end if
       if (.not. status%ok()) return
       if (len_trim(name) == 0) call r%invalid('name', '''''', 'every &contact needs a name', status)
       do j = 1, k - 1
@@ -242,16 +243,6 @@ contains
       case default
         c%chain = CHAIN_AUTO
       end select
-      select case (trim(friction))
-      case ('viscous_weight')
-        c%friction = FRICTION_VISCOUS_WEIGHT
-      case ('viscous_normal')
-        c%friction = FRICTION_VISCOUS_NORMAL
-      case ('coulomb')
-        c%friction = FRICTION_COULOMB
-      case default
-        c%friction = FRICTION_NONE
-      end select
     end associate
   end subroutine read_contact
 
@@ -265,8 +256,8 @@ contains
     integer :: j
     do j = 1, k - 1
       if (system%shapes(j)%name == system%shapes(k)%name) then
-        call open_group(input, 'shape', [character(len=13) :: 'name', 'kind', 'a', 'b', 'c', 'point_a', &
-                        'point_b', 'point_c', 'origin', 'angles_deg', 'geometry_file'], r, status, occurrence=k)
+        call open_group(input, 'shape', [character(len=32) :: 'name', 'kind', 'origin', 'angles_deg', &
+                        'geometry_file', surface_variables()], r, status, occurrence=k)
         call r%invalid('name', ''''//system%shapes(k)%name//'''', 'another &shape has this name', status)
         return
       end if

@@ -1,9 +1,18 @@
 !> &point_mass: the mass, where it starts on the surface, gravity and friction.
+!> The friction is any friction law of the core's registry
+!> (kinetostatics_force_law_factory), read by its declarations; the law's mu
+!> is the variable friction_coefficient here, and its regularization_speed
+!> defaults to 1e-9 m/s (the contact's 1e-6 m/s would blur the point mass's
+!> slow slides, the shipped inputs were computed with 1e-9).
 module io_point_mass_config
   use base_kinds, only: wp
   use base_constants, only: standard_gravity
   use base_status, only: status_t
+  use base_spec, only: spec_t
+  use kinetostatics_force_law, only: force_law_kind_t
+  use kinetostatics_force_law_factory, only: force_law_kinds, force_law_kind_index
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, format_real
+  use io_kind_parameters, only: read_kind_parameters, refuse_other_parameters, parameter_variables
   implicit none (type, external)
   private
   public :: point_mass_config_t, read_point_mass_config
@@ -13,12 +22,13 @@ module io_point_mass_config
     real(wp) :: u0 = 0, v0 = 0                     ! surface coordinates at t = 0
     real(wp) :: du0 = 0, dv0 = 0                   ! their rates at t = 0 (1/s)
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]   ! m/s^2
-    character(len=16) :: friction = 'none'         ! none | viscous | coulomb
-    real(wp) :: viscous_coefficient = 0            ! N s/m
-    real(wp) :: friction_coefficient = 0           ! 1
-    real(wp) :: regularization_speed = 1e-9_wp     ! m/s
+    type(spec_t) :: friction                       ! a force law kind and its parameters (no kind: none)
     real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0
   end type point_mass_config_t
+
+  !> The law's parameters under this group's names.
+  character(len=*), parameter :: renamed(1) = [character(len=23) :: 'mu=friction_coefficient']
+  integer, parameter :: name_length = 32
 
 contains
 
@@ -27,10 +37,20 @@ contains
     type(point_mass_config_t), intent(out) :: config
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
-    character(len=*), parameter :: names(13) = [character(len=20) :: 'mass', 'u0', 'v0', 'du0', 'dv0', &
-      'gravity', 'friction', 'viscous_coefficient', 'friction_coefficient', 'regularization_speed', 'sigma', &
-      'alpha_u', 'alpha_v']
+    type(force_law_kind_t), allocatable :: laws(:)
+    character(len=name_length), allocatable :: law_variables(:), names(:), friction_names(:)
+    character(len=name_length) :: friction
+    integer :: j
 
+    laws = force_law_kinds()
+    allocate (law_variables(0))
+    do j = 1, size(laws)
+      call parameter_variables(laws(j)%parameters, law_variables, renamed)
+    end do
+    friction_names = [character(len=name_length) :: 'none', (laws(j)%name, j = 1, size(laws))]
+    names = [character(len=name_length) :: 'mass', 'u0', 'v0', 'du0', 'dv0', 'gravity', 'friction', 'sigma', &
+             'alpha_u', 'alpha_v', law_variables]
+    friction = 'none'
     call open_group(input, 'point_mass', names, r, status)
     call r%get('mass', config%mass, in_range(1e-6_wp, 1e6_wp, 'kg'), status)
     call r%get('u0', config%u0, in_range(-1e6_wp, 1e6_wp, 'surface parameter (m on a plane)'), status)
@@ -38,20 +58,26 @@ contains
     call r%get('du0', config%du0, in_range(-1e3_wp, 1e3_wp, 'surface parameter per s'), status)
     call r%get('dv0', config%dv0, in_range(-1e3_wp, 1e3_wp, 'surface parameter per s'), status)
     call r%get('gravity', config%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
-    call r%get('friction', config%friction, status, choices=[character(len=7) :: 'none', 'viscous', 'coulomb'])
-    call r%get('viscous_coefficient', config%viscous_coefficient, in_range(0.0_wp, 1e6_wp, 'N s/m'), status)
-    call r%get('friction_coefficient', config%friction_coefficient, in_range(0.0_wp, 10.0_wp, '1'), status)
-    call r%get('regularization_speed', config%regularization_speed, in_range(1e-12_wp, 1.0_wp, 'm/s'), status)
+    call r%get('friction', friction, status, choices=friction_names)
     call r%get('sigma', config%sigma, in_range(-1.0_wp, 1.0_wp, '1'), status)
     call r%get('alpha_u', config%alpha_u, in_range(-1e3_wp, 1e3_wp, '1'), status)
     call r%get('alpha_v', config%alpha_v, in_range(-1e3_wp, 1e3_wp, '1'), status)
     if (.not. status%ok()) return
-    ! a coefficient the friction law does not use would be silently ignored
-    if (config%friction /= 'viscous') call r%refuse_given([character(len=20) :: 'viscous_coefficient'], &
-      'friction = '''//trim(config%friction)//''' does not use it (only ''viscous'' does)', status)
-    if (config%friction /= 'coulomb') call r%refuse_given([character(len=20) :: 'friction_coefficient', &
-      'regularization_speed'], 'friction = '''//trim(config%friction)//''' does not use it (only ''coulomb'' does)', &
-      status)
+    ! the law's parameters by its declarations; a coefficient the law does
+    ! not use would be silently ignored: refused
+    if (friction == 'none') then
+      call r%refuse_given(law_variables, 'friction = ''none'' has no parameters', status)
+    else
+      associate (law => laws(force_law_kind_index(trim(friction))))
+        call read_kind_parameters(r, 'friction', trim(friction), law%parameters, config%friction, status, &
+                                  rename=renamed, hint='friction = ''none'' for no friction')
+        call refuse_other_parameters(r, 'friction', trim(friction), law%parameters, law_variables, status, &
+                                     rename=renamed)
+        if (any([(law%parameters(j)%name == 'regularization_speed', j = 1, size(law%parameters))]) .and. &
+            .not. config%friction%has('regularization_speed')) &
+          call config%friction%set('regularization_speed', [1e-9_wp])
+      end associate
+    end if
     if (.not. status%ok()) return
     if (abs(config%sigma) /= 1) then
       call r%invalid('sigma', format_real(config%sigma), 'must be +1 or -1 (side of the normal)', status)

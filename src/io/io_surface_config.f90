@@ -1,22 +1,25 @@
-!> &surface: which elementary surface, its size, and where it sits in space.
+!> &surface: which surface, its size, and where it sits in space. The kinds
+!> with parameters are those of the geometry's registry
+!> (geometry_surface_factory: elementary surfaces, sphere, ...), read by their
+!> declarations (io_kind_parameters) and built by surface_from_spec; the
+!> surfaces described by their own groups (tube, slide, blended, bspline)
+!> are read by io_geometry_config.
 module io_surface_config
   use base_kinds, only: wp
-  use base_constants, only: pi
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
+  use base_spec, only: spec_t
   use geometry_surface, only: surface_t
-  use geometry_elementary, only: plane_t, ellipsoid_t, paraboloid_t, elliptic_cylinder_t, &
-                                 apex_paraboloid_t
-  use geometry_placed_surface, only: placed_surface_t
+  use geometry_surface_kind, only: surface_kind_t
+  use geometry_surface_factory, only: surface_kinds, surface_kind_index, surface_from_spec, place_surface
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, load_input_file, group_present, &
                       check_known_groups, where_given
+  use io_kind_parameters, only: read_kind_parameters, refuse_other_parameters, parameter_variables
   use io_geometry_config, only: read_geometry_config, geometry_groups, geometry_file_groups
   implicit none (type, external)
   private
-  public :: read_surface_config, surface_kinds
+  public :: read_surface_config, surface_variables
 
-  character(len=*), parameter :: surface_kinds(10) = [character(len=21) :: 'plane', 'ellipsoid', &
-    'elliptic_paraboloid', 'hyperbolic_paraboloid', 'elliptic_cylinder', 'apex_paraboloid', &
-    'tube', 'slide', 'blended', 'bspline']
+  integer, parameter :: name_length = 32
 
 contains
 
@@ -39,26 +42,28 @@ contains
     character(len=:), allocatable, intent(out), optional :: name
     character(len=:), allocatable, intent(out), optional :: described_as
     character(len=32) :: given_name
-    character(len=24) :: kind
+    character(len=name_length) :: kind
     character(len=4096) :: geometry_file
     type(input_text_t) :: geometry_input
-    real(wp) :: a, b, c, point_a(3), point_b(3), point_c(3), origin(3), angles_deg(3)
+    real(wp) :: origin(3), angles_deg(3)
     class(surface_t), allocatable :: local
     type(status_t) :: built
     type(group_reader_t) :: r
+    type(spec_t) :: spec
+    type(surface_kind_t), allocatable :: kinds(:)
     integer :: i
     character(len=:), allocatable :: g
-    character(len=13), allocatable :: names(:)
+    character(len=name_length), allocatable :: names(:), kind_variables(:), kind_names(:)
 
     g = 'surface'
     if (present(group)) g = group
-    names = [character(len=13) :: 'kind', 'a', 'b', 'c', 'point_a', 'point_b', 'point_c', 'origin', 'angles_deg', &
-             'geometry_file']
-    if (present(name)) names = [character(len=13) :: 'name', names]
+    kinds = surface_kinds()
+    kind_variables = surface_variables()
+    kind_names = [character(len=name_length) :: (kinds(i)%name, i = 1, size(kinds)), geometry_kinds_here()]
+    names = [character(len=name_length) :: 'kind', 'origin', 'angles_deg', 'geometry_file', kind_variables]
+    if (present(name)) names = [character(len=name_length) :: 'name', names]
     kind = 'plane'
     geometry_file = ''
-    a = 1; b = 1; c = 1
-    point_a = [0, 0, 0]; point_b = [1, 0, 0]; point_c = [0, 1, 0]
     origin = 0; angles_deg = 0
     call open_group(input, g, names, r, status, occurrence)
     if (present(name)) then
@@ -68,18 +73,20 @@ contains
                                                                       ' needs a name', status)
       name = trim(given_name)
     end if
-    call r%get('kind', kind, status, choices=surface_kinds)
+    call r%get('kind', kind, status, choices=kind_names)
     call r%get('origin', origin, in_range(-1e6_wp, 1e6_wp, 'm'), status)
     call r%get('angles_deg', angles_deg, in_range(-360.0_wp, 360.0_wp, 'deg'), status)
     if (.not. status%ok()) return
     ! a value the kind does not use is refused (it would be silently ignored)
-    if (kind == 'plane' .or. any(kind == geometry_kinds_here())) &
-      call r%refuse_given(['a', 'b', 'c'], 'kind = '''//trim(kind)//''' has no semi-axes a, b, c', status)
-    if (kind /= 'ellipsoid') call r%refuse_given(['c'], 'only an ellipsoid has a third semi-axis c', status)
-    if (kind /= 'plane') call r%refuse_given([character(len=7) :: 'point_a', 'point_b', 'point_c'], &
-                                             'only a plane is given by three points', status)
-    if (.not. any(kind == geometry_kinds_here())) call r%refuse_given([character(len=13) :: 'geometry_file'], &
-      'geometry_file describes a tube, slide, blended or bspline surface', status)
+    if (any(kind == geometry_kinds_here())) then
+      call r%refuse_given(kind_variables, 'kind = '''//trim(kind)//''' is described by its own groups and '// &
+                          'does not use it', status)
+    else
+      call refuse_other_parameters(r, 'kind', trim(kind), kinds(surface_kind_index(trim(kind)))%parameters, &
+                                   kind_variables, status)
+      call r%refuse_given([character(len=13) :: 'geometry_file'], &
+                          'geometry_file describes a tube, slide, blended or bspline surface', status)
+    end if
     if (.not. status%ok()) return
 
     if (.not. any(kind == geometry_kinds_here())) then
@@ -102,24 +109,10 @@ contains
       end do
     end if
     select case (trim(kind))
-    case ('plane')
-      call r%get('point_a', point_a, in_range(-1e6_wp, 1e6_wp, 'm'), status)
-      call r%get('point_b', point_b, in_range(-1e6_wp, 1e6_wp, 'm'), status)
-      call r%get('point_c', point_c, in_range(-1e6_wp, 1e6_wp, 'm'), status)
-      if (status%ok()) local = plane_t(point_a, point_b, point_c, built)
-      if (.not. built%ok()) built%message = built%message//'; change point_a, point_b or point_c'
-    case ('ellipsoid')
-      call get_semi_axes(3)
-      if (status%ok()) local = ellipsoid_t(a, b, c, built)
-    case ('elliptic_paraboloid', 'hyperbolic_paraboloid')
-      call get_semi_axes(2)
-      if (status%ok()) local = paraboloid_t(a, b, merge(1.0_wp, -1.0_wp, kind == 'elliptic_paraboloid'), built)
-    case ('elliptic_cylinder')
-      call get_semi_axes(2)
-      if (status%ok()) local = elliptic_cylinder_t(a, b, built)
-    case ('apex_paraboloid')
-      call get_semi_axes(2)
-      if (status%ok()) local = apex_paraboloid_t(a, b, built)
+    case default   ! a kind of the registry, by its parameters' declarations
+      call read_kind_parameters(r, 'kind', trim(kind), kinds(surface_kind_index(trim(kind)))%parameters, spec, &
+                                status)
+      if (status%ok()) call surface_from_spec(spec, local, built)
     case ('tube', 'slide', 'blended', 'bspline')
       call r%get('geometry_file', geometry_file, status)
       if (.not. status%ok()) return
@@ -174,29 +167,26 @@ contains
       call prefix_status(status, r%where('kind')//': &'//g)
       return
     end if
-    if (all(origin == 0) .and. all(angles_deg == 0)) then
-      call move_alloc(local, built_surface)
-    else
-      built_surface = placed_surface_t(local, origin, built, angles=angles_deg*pi/180)
-      if (.not. built%ok()) then
-        status = built
-        status%code = STATUS_INVALID_INPUT
-        call prefix_status(status, r%where('origin')//': &'//g)
-      end if
+    call place_surface(local, built_surface, built, origin, angles_deg)
+    if (.not. built%ok()) then
+      status = built
+      status%code = STATUS_INVALID_INPUT
+      call prefix_status(status, r%where('origin')//': &'//g)
     end if
-
-  contains
-
-    !> Semi-axes from 1 mm to 10 km: beyond, 1/a^2 and a^2 leave the range
-    !> the surface formulas are checked in.
-    subroutine get_semi_axes(n)
-      integer, intent(in) :: n
-      call r%get('a', a, in_range(1e-3_wp, 1e4_wp, 'm'), status)
-      call r%get('b', b, in_range(1e-3_wp, 1e4_wp, 'm'), status)
-      if (n == 3) call r%get('c', c, in_range(1e-3_wp, 1e4_wp, 'm'), status)
-    end subroutine get_semi_axes
-
   end subroutine read_surface_config
+
+  !> The variables of every registered surface kind's parameters (the names
+  !> a &surface or &shape may hold beside kind, origin, angles_deg, geometry_file).
+  function surface_variables() result(variables)
+    character(len=name_length), allocatable :: variables(:)
+    type(surface_kind_t), allocatable :: kinds(:)
+    integer :: i
+    kinds = surface_kinds()
+    allocate (variables(0))
+    do i = 1, size(kinds)
+      call parameter_variables(kinds(i)%parameters, variables)
+    end do
+  end function surface_variables
 
   !> A geometry file may be a complete input of the geometry scenario (the
   !> demo slide is): its &run and &grid are for running it on its own. A

@@ -30,17 +30,25 @@
 !> To write a law outside this layer (the rider's water drag, the contact
 !> layer's laws): extend `force_law_t` (or `contact_law_t` for a load at a
 !> contact), allocate `loads` in its constructor with a fixed size, and
-!> implement `evaluate`; add it with mechanism%add_law.
+!> implement `evaluate`; add it with mechanism%add_law. A friction law whose
+!> force is a function of the tangential slip and the normal force alone
+!> extends `friction_law_t` and writes only that function (`slip_force`):
+!> it then acts in every mechanism and on the point mass alike. A kind that
+!> inputs can name is described by a `force_law_kind_t` (its parameters and
+!> its builder) and registered with the factory
+!> (kinetostatics_force_law_factory; docs/DESIGN.md, "How to add a force law").
 module kinetostatics_force_law
   use base_kinds, only: wp
   use base_vector, only: cross
   use base_status, only: status_t
+  use base_spec, only: spec_t, parameter_t
   use numerics_event_driver, only: EVENT_IGNORE
   use kinetostatics_state, only: frame_state_t, scalar_state_t
   use kinetostatics_contact, only: contact_state_t
   implicit none (type, external)
   private
-  public :: frame_load_t, force_law_t, force_law_box_t, contact_law_t
+  public :: frame_load_t, force_law_t, force_law_box_t, contact_law_t, friction_law_t
+  public :: force_law_kind_t, law_place_t, build_law_i
 
   !> A wrench at a frame's origin, world coordinates.
   type :: frame_load_t
@@ -74,7 +82,56 @@ module kinetostatics_force_law
     procedure, non_overridable :: set_up_contact_law, set_contact_force, set_body_force
   end type contact_law_t
 
+  !> A friction law at a contact: F(w_t, N) on body B, -F on body A, with w_t
+  !> the tangential slip and N the normal force (a scaled law is |N| times
+  !> what slip_force gives for N = 1; a law that is not scaled must not read
+  !> N). `slip_force` is the law; `evaluate` applies it at the mechanism's
+  !> contact; a model that is not a mechanism (the point mass) calls
+  !> slip_force with its own slip and normal force.
+  type, abstract, extends(contact_law_t) :: friction_law_t
+  contains
+    procedure(slip_force_i), deferred :: slip_force
+    !> the same for every friction law (not non_overridable: gfortran 12
+    !> then dispatches the type's other bindings wrongly)
+    procedure :: evaluate => friction_evaluate
+  end type friction_law_t
+
+  !> Where a law built from a spec acts: its name, the contact (index from
+  !> mechanism%add_contact; 0 for a model without a mechanism) and the weight
+  !> M g of the body the contact carries (N; for laws per weight).
+  type :: law_place_t
+    character(len=:), allocatable :: name
+    integer :: contact = 0
+    real(wp) :: weight = 0
+  end type law_place_t
+
+  !> A kind of force law that inputs name: its parameters (declared once: the
+  !> reader's checks and the factory's come from them) and its builder.
+  type :: force_law_kind_t
+    character(len=:), allocatable :: name, meaning
+    type(parameter_t), allocatable :: parameters(:)
+    procedure(build_law_i), pointer, nopass :: build => null()
+  end type force_law_kind_t
+
   abstract interface
+    !> Builds the law of a completed spec (every parameter set and in range).
+    subroutine build_law_i(spec, place, law, status)
+      import :: spec_t, law_place_t, force_law_t, status_t
+      type(spec_t), intent(in) :: spec
+      type(law_place_t), intent(in) :: place
+      class(force_law_t), allocatable, intent(out) :: law
+      type(status_t), intent(inout) :: status
+    end subroutine build_law_i
+
+    !> The force on body B (N) for the tangential slip `slip` (m/s) and the
+    !> normal force `normal_force` (N).
+    pure function slip_force_i(self, slip, normal_force) result(force)
+      import :: friction_law_t, wp
+      class(friction_law_t), intent(in) :: self
+      real(wp), intent(in) :: slip(3), normal_force
+      real(wp) :: force(3)
+    end function slip_force_i
+
     !> Fills self%loads at the state given (a scaled law: per unit |N|).
     pure subroutine law_evaluate_i(self, t, frames, scalars, contacts, status)
       import :: force_law_t, wp, frame_state_t, scalar_state_t, contact_state_t, status_t
@@ -122,6 +179,25 @@ contains
     end associate
     action = EVENT_IGNORE
   end subroutine law_handle_event
+
+  !> The law at the mechanism's contact: w_t the slip's tangential part (its
+  !> normal part vanishes while the contact holds; projecting keeps the
+  !> friction exactly tangential), per unit |N| (N = 1).
+  pure subroutine friction_evaluate(self, t, frames, scalars, contacts, status)
+    class(friction_law_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    type(frame_state_t), intent(in) :: frames(:)
+    type(scalar_state_t), intent(in) :: scalars(:)
+    type(contact_state_t), intent(in) :: contacts(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: w(3)
+    associate (unused_t => t, unused_f => frames, unused_s => scalars, unused_st => status)
+    end associate
+    associate (s => contacts(self%contact))
+      w = s%slip - dot_product(s%slip, s%normal)*s%normal
+      call self%set_contact_force(s, self%slip_force(w, 1.0_wp))
+    end associate
+  end subroutine friction_evaluate
 
   !> For constructors: name, contact index (from mechanism%add_contact), kind, two loads.
   pure subroutine set_up_contact_law(self, name, contact, scaled)

@@ -8,12 +8,18 @@
 !>   spring_damper_t           between a point of frame i and a point of frame j
 !>   constant_load_t           a constant wrench at a frame (world or body axes)
 !>
-!> The friction laws act at a contact (kinetostatics_contact) with w_t the
-!> tangential part of the material slip velocity w (its normal part vanishes
-!> while the contact holds; projecting keeps the friction exactly tangential),
-!> F on body B and -F on body A. Coulomb and the N-scaled viscous law are
-!> scaled laws: their load is |N| times a state-dependent vector, solved
-!> exactly together with q''.
+!> The friction laws are friction_law_t (kinetostatics_force_law): a force
+!> F(w_t, N) with w_t the tangential part of the material slip velocity, F on
+!> body B and -F on body A. Coulomb and the N-scaled viscous law are scaled
+!> laws: their load is |N| times a state-dependent vector, solved exactly
+!> together with q''.
+!>
+!> The kinds inputs name (registered in kinetostatics_force_law_factory):
+!>   coulomb          mu (1), regularization_speed (m/s)
+!>   viscous          viscous_coefficient (N s/m): F = -c w_t
+!>   viscous_weight   mu (s/m): F = -mu M g w_t, M g the weight of the body
+!>                    the contact carries (the egg's law, METHOD-PART2 A.4.3)
+!>   viscous_normal   mu (s/m): F = -mu |N| w_t
 !> Coulomb friction near w = 0: eps = regularization_speed, exact to
 !> (eps/|w|)^2/2 relative while sliding; a contact at rest feels a stiff
 !> viscous damping mu |N|/eps instead of stiction (sticking is not modelled).
@@ -22,27 +28,29 @@ module kinetostatics_force_laws
   use base_text, only: format_short
   use base_vector, only: cross
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
+  use base_spec, only: spec_t, declare
   use kinetostatics_state, only: frame_state_t, scalar_state_t
   use kinetostatics_contact, only: contact_state_t
-  use kinetostatics_force_law, only: force_law_t, contact_law_t, frame_load_t
+  use kinetostatics_force_law, only: force_law_t, friction_law_t, frame_load_t, force_law_kind_t, law_place_t
   implicit none (type, external)
   private
   public :: coulomb_friction_t, viscous_friction_t, spring_damper_t, constant_load_t
   public :: new_coulomb_friction, new_normal_viscous_friction, new_viscous_friction, new_spring_damper, &
     new_constant_load
+  public :: coulomb_kind, viscous_kind, viscous_weight_kind, viscous_normal_kind
 
-  type, extends(contact_law_t) :: coulomb_friction_t
+  type, extends(friction_law_t) :: coulomb_friction_t
     real(wp) :: mu = 0                          ! 1
     real(wp) :: regularization_speed = 1e-6_wp  ! m/s
   contains
-    procedure :: evaluate => coulomb_evaluate
+    procedure :: slip_force => coulomb_slip_force
   end type coulomb_friction_t
 
   !> F = -coefficient w_t; scaled: times |N| (coefficient in s/m, else N s/m).
-  type, extends(contact_law_t) :: viscous_friction_t
+  type, extends(friction_law_t) :: viscous_friction_t
     real(wp) :: coefficient = 0
   contains
-    procedure :: evaluate => viscous_evaluate
+    procedure :: slip_force => viscous_slip_force
   end type viscous_friction_t
 
   !> Tension f = k (l - rest_length) + c l' along the line from the point on
@@ -70,12 +78,6 @@ module kinetostatics_force_laws
 
 contains
 
-  pure function tangential(s) result(w)
-    type(contact_state_t), intent(in) :: s
-    real(wp) :: w(3)
-    w = s%slip - dot_product(s%slip, s%normal)*s%normal
-  end function tangential
-
   subroutine check_coefficient(law, what, value, unit, status)
     character(len=*), intent(in) :: law, what, unit
     real(wp), intent(in) :: value
@@ -100,20 +102,13 @@ contains
                       format_short(regularization_speed)//' m/s; it must be finite and > 0')
   end function new_coulomb_friction
 
-  pure subroutine coulomb_evaluate(self, t, frames, scalars, contacts, status)
-    class(coulomb_friction_t), intent(inout) :: self
-    real(wp), intent(in) :: t
-    type(frame_state_t), intent(in) :: frames(:)
-    type(scalar_state_t), intent(in) :: scalars(:)
-    type(contact_state_t), intent(in) :: contacts(:)
-    type(status_t), intent(inout) :: status
-    real(wp) :: w(3)
-    associate (unused_t => t, unused_f => frames, unused_s => scalars, unused_st => status)
-    end associate
-    w = tangential(contacts(self%contact))
-    call self%set_contact_force(contacts(self%contact), -self%mu*w/sqrt(dot_product(w, w) + &
-                                self%regularization_speed**2))
-  end subroutine coulomb_evaluate
+  !> -mu |N| w/sqrt(|w|^2 + eps^2) (thesis 4.28)
+  pure function coulomb_slip_force(self, slip, normal_force) result(force)
+    class(coulomb_friction_t), intent(in) :: self
+    real(wp), intent(in) :: slip(3), normal_force
+    real(wp) :: force(3)
+    force = -self%mu*abs(normal_force)*slip/sqrt(dot_product(slip, slip) + self%regularization_speed**2)
+  end function coulomb_slip_force
 
   !> Viscous friction F = -c w_t (c in N s/m).
   function new_viscous_friction(name, contact, coefficient, status) result(law)
@@ -139,17 +134,88 @@ contains
     call check_coefficient(name, 'mu', mu, 's/m', status)
   end function new_normal_viscous_friction
 
-  pure subroutine viscous_evaluate(self, t, frames, scalars, contacts, status)
-    class(viscous_friction_t), intent(inout) :: self
-    real(wp), intent(in) :: t
-    type(frame_state_t), intent(in) :: frames(:)
-    type(scalar_state_t), intent(in) :: scalars(:)
-    type(contact_state_t), intent(in) :: contacts(:)
+  !> -c w, or -mu |N| w (scaled)
+  pure function viscous_slip_force(self, slip, normal_force) result(force)
+    class(viscous_friction_t), intent(in) :: self
+    real(wp), intent(in) :: slip(3), normal_force
+    real(wp) :: force(3)
+    if (self%scaled) then
+      force = -self%coefficient*abs(normal_force)*slip
+    else
+      force = -self%coefficient*slip
+    end if
+  end function viscous_slip_force
+
+  ! ------------------------------------------------------ the kinds inputs name
+
+  function coulomb_kind() result(kind)
+    type(force_law_kind_t) :: kind
+    kind%name = 'coulomb'
+    kind%meaning = 'Coulomb friction -mu |N| w_t/|w_t|, regularized near w_t = 0'
+    kind%parameters = [declare('mu', '1', 0.0_wp, 10.0_wp, 'friction coefficient', open_low=.true.), &
+                       declare('regularization_speed', 'm/s', 0.0_wp, 1.0_wp, 'slip speed below which the '// &
+                               'law turns viscous', default=[1e-6_wp], open_low=.true.)]
+    kind%build => build_coulomb
+  end function coulomb_kind
+
+  subroutine build_coulomb(spec, place, law, status)
+    type(spec_t), intent(in) :: spec
+    type(law_place_t), intent(in) :: place
+    class(force_law_t), allocatable, intent(out) :: law
     type(status_t), intent(inout) :: status
-    associate (unused_t => t, unused_f => frames, unused_s => scalars, unused_st => status)
-    end associate
-    call self%set_contact_force(contacts(self%contact), -self%coefficient*tangential(contacts(self%contact)))
-  end subroutine viscous_evaluate
+    allocate (law, source=new_coulomb_friction(place%name, place%contact, spec%value('mu'), &
+                                               spec%value('regularization_speed'), status))
+  end subroutine build_coulomb
+
+  function viscous_kind() result(kind)
+    type(force_law_kind_t) :: kind
+    kind%name = 'viscous'
+    kind%meaning = 'viscous friction -c w_t'
+    kind%parameters = [declare('viscous_coefficient', 'N s/m', 0.0_wp, 1e6_wp, 'c')]
+    kind%build => build_viscous
+  end function viscous_kind
+
+  subroutine build_viscous(spec, place, law, status)
+    type(spec_t), intent(in) :: spec
+    type(law_place_t), intent(in) :: place
+    class(force_law_t), allocatable, intent(out) :: law
+    type(status_t), intent(inout) :: status
+    allocate (law, source=new_viscous_friction(place%name, place%contact, spec%value('viscous_coefficient'), &
+                                               status))
+  end subroutine build_viscous
+
+  function viscous_weight_kind() result(kind)
+    type(force_law_kind_t) :: kind
+    kind%name = 'viscous_weight'
+    kind%meaning = 'viscous friction -mu M g w_t, M g the weight of the body the contact carries'
+    kind%parameters = [declare('mu', 's/m', 0.0_wp, 1e3_wp, 'coefficient per weight', open_low=.true.)]
+    kind%build => build_viscous_weight
+  end function viscous_weight_kind
+
+  subroutine build_viscous_weight(spec, place, law, status)
+    type(spec_t), intent(in) :: spec
+    type(law_place_t), intent(in) :: place
+    class(force_law_t), allocatable, intent(out) :: law
+    type(status_t), intent(inout) :: status
+    allocate (law, source=new_viscous_friction(place%name, place%contact, spec%value('mu')*place%weight, &
+                                               status))
+  end subroutine build_viscous_weight
+
+  function viscous_normal_kind() result(kind)
+    type(force_law_kind_t) :: kind
+    kind%name = 'viscous_normal'
+    kind%meaning = 'viscous friction -mu |N| w_t'
+    kind%parameters = [declare('mu', 's/m', 0.0_wp, 1e3_wp, 'coefficient per normal force', open_low=.true.)]
+    kind%build => build_viscous_normal
+  end function viscous_normal_kind
+
+  subroutine build_viscous_normal(spec, place, law, status)
+    type(spec_t), intent(in) :: spec
+    type(law_place_t), intent(in) :: place
+    class(force_law_t), allocatable, intent(out) :: law
+    type(status_t), intent(inout) :: status
+    allocate (law, source=new_normal_viscous_friction(place%name, place%contact, spec%value('mu'), status))
+  end subroutine build_viscous_normal
 
   !> A spring and damper between point_i on frame_i and point_j on frame_j
   !> (points in the frames' own axes).

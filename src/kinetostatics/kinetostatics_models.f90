@@ -11,7 +11,9 @@ module kinetostatics_models
   use kinetostatics_surface_joint, only: new_surface_joint
   use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT
   use kinetostatics_mass, only: new_mass_element
-  use kinetostatics_force_laws, only: new_coulomb_friction, new_viscous_friction, new_normal_viscous_friction
+  use base_spec, only: spec_t
+  use kinetostatics_force_law, only: force_law_t, law_place_t
+  use kinetostatics_force_law_factory, only: force_law_from_spec
   use kinetostatics_mechanism, only: mechanism_t
   implicit none (type, external)
   private
@@ -206,6 +208,7 @@ contains
     type(surface_point_t) :: pt
     type(darboux_frame_t) :: fr
     real(wp) :: dvec(3), e11, e12, e22, b1, b2, det, du, dv
+    type(spec_t) :: law
 
     call surface%evaluate(q0(1), q0(2), 3, pt, status)
     if (status%ok()) call darboux_frame(pt, p%sigma, p%alpha_u, p%alpha_v, fr, status)
@@ -259,22 +262,40 @@ contains
     else
       front_contact = m%add_contact('front', 1, front_body, d2)
     end if
+    ! the friction laws from their specs (kinetostatics_force_law_factory)
     if (p%mu > 0) then
-      call m%add_law(new_coulomb_friction('rear_coulomb', rear_contact, p%mu, p%regularization_speed, status))
-      call m%add_law(new_coulomb_friction('front_coulomb', front_contact, p%mu, p%regularization_speed, status))
+      law = spec_t('coulomb')
+      call law%set('mu', [p%mu])
+      call law%set('regularization_speed', [p%regularization_speed])
+      call add_at_both('coulomb')
     end if
     if (p%viscous > 0) then
-      call m%add_law(new_viscous_friction('rear_viscous', rear_contact, p%viscous, status))
-      call m%add_law(new_viscous_friction('front_viscous', front_contact, p%viscous, status))
+      law = spec_t('viscous')
+      call law%set('viscous_coefficient', [p%viscous])
+      call add_at_both('viscous')
     end if
     if (p%normal_viscous > 0) then
-      call m%add_law(new_normal_viscous_friction('rear_normal_viscous', rear_contact, p%normal_viscous, status))
-      call m%add_law(new_normal_viscous_friction('front_normal_viscous', front_contact, p%normal_viscous, status))
+      law = spec_t('viscous_normal')
+      call law%set('mu', [p%normal_viscous])
+      call add_at_both('normal_viscous')
     end if
+    if (.not. status%ok()) return
     call m%set_coordinates([su, sv, sphi])
     if (present(finish)) then
       if (.not. finish) return
     end if
     call m%finalize(status)
+
+  contains
+
+    !> The law `law` at the rear and the front contact ('rear_'//suffix, 'front_'//suffix).
+    subroutine add_at_both(suffix)
+      character(len=*), intent(in) :: suffix
+      class(force_law_t), allocatable :: built
+      call force_law_from_spec(law, law_place_t('rear_'//suffix, rear_contact), built, status)
+      if (status%ok()) call m%add_law(built)
+      call force_law_from_spec(law, law_place_t('front_'//suffix, front_contact), built, status)
+      if (status%ok()) call m%add_law(built)
+    end subroutine add_at_both
   end subroutine build_sled
 end module kinetostatics_models

@@ -6,7 +6,10 @@
 !> Newton's law m (r_u u'' + r_v v'' + h) = m g + N n + F_friction projected on
 !> r_u and r_v gives u'', v''; projected on the normal n it gives the normal force
 !> N = m n.(h - g) (as thesis eq. 4.12 does for the water). Friction is tangential,
-!> so N does not depend on it and Coulomb friction stays explicit.
+!> so N does not depend on it and Coulomb friction stays explicit. The friction
+!> is any friction law of the core (kinetostatics_force_law friction_law_t,
+!> built by kinetostatics_force_law_factory): its slip_force at the slip w and
+!> the normal force N.
 !>
 !> The model runs through the integration driver (numerics_event_driver): it
 !> records its own series (point_mass_series_t) and decides at the edges of
@@ -23,12 +26,10 @@ module kinetostatics_point_mass
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use kinetostatics_surface_joint, only: domain_edge_margin
+  use kinetostatics_force_law, only: friction_law_t
   implicit none (type, external)
   private
-  public :: point_mass_t, point_mass_state_t, point_mass_series_t, FRICTION_NONE, FRICTION_VISCOUS, &
-    FRICTION_COULOMB
-
-  integer, parameter :: FRICTION_NONE = 0, FRICTION_VISCOUS = 1, FRICTION_COULOMB = 2
+  public :: point_mass_t, point_mass_state_t, point_mass_series_t
 
   !> Time series of a run: one entry per record (start, outputs, events).
   !> The records of a run; grown as it goes (base_series).
@@ -46,12 +47,7 @@ module kinetostatics_point_mass
     class(surface_t), allocatable :: surface
     real(wp) :: mass = 1                 ! kg
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -9.80665_wp]   ! m/s^2
-    integer :: friction = FRICTION_NONE
-    real(wp) :: viscous_coefficient = 0  ! N s/m: F = -c w
-    real(wp) :: friction_coefficient = 0 ! 1: F = -mu |N| w/|w|
-    !> Coulomb friction uses w/sqrt(|w|^2 + v_eps^2): smooth through w = 0, and
-    !> within (v_eps/|w|)^2/2 relative of the exact law while the mass slides.
-    real(wp) :: regularization_speed = 1e-9_wp   ! m/s
+    class(friction_law_t), allocatable :: friction   ! none: frictionless
     real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0   ! Darboux frame parameters (3.38, 3.41)
     type(point_mass_series_t) :: series
     character(len=:), allocatable :: outcome   ! why the run ended, set by the stopping event
@@ -84,7 +80,7 @@ contains
     type(surface_point_t), intent(out) :: p
     real(wp), intent(out) :: normal(3), udd, vdd, normal_force, friction(3)
     type(status_t), intent(inout) :: status
-    real(wp) :: w(3), h(3), rhs(3), e, f, g, det, bu, bv, speed, n(3), n_norm
+    real(wp) :: w(3), h(3), rhs(3), e, f, g, det, bu, bv, n(3), n_norm
     type(darboux_frame_t) :: frame
 
     if (.not. self%surface%in_domain(y(1), y(2))) then
@@ -112,15 +108,11 @@ contains
     h = p%ruu*y(3)**2 + 2*p%ruv*y(3)*y(4) + p%rvv*y(4)**2
     normal_force = self%mass*dot_product(normal, h - self%gravity)
 
-    select case (self%friction)
-    case (FRICTION_VISCOUS)
-      friction = -self%viscous_coefficient*w
-    case (FRICTION_COULOMB)
-      speed = sqrt(dot_product(w, w) + self%regularization_speed**2)
-      friction = -self%friction_coefficient*abs(normal_force)*w/speed
-    case default
+    if (allocated(self%friction)) then
+      friction = self%friction%slip_force(w, normal_force)
+    else
       friction = 0
-    end select
+    end if
 
     rhs = self%gravity + friction/self%mass - h
     e = dot_product(p%ru, p%ru)

@@ -25,7 +25,9 @@ module rider_model
   use kinetostatics_measurements, only: new_point_coordinates
   use kinetostatics_mass, only: new_mass_element
   use kinetostatics_mechanism, only: mechanism_t
-  use kinetostatics_force_laws, only: new_coulomb_friction
+  use base_spec, only: spec_t
+  use kinetostatics_force_law, only: force_law_t, law_place_t
+  use kinetostatics_force_law_factory, only: force_law_from_spec
   use water_field, only: water_field_t
   use rider_body, only: body_params_t, rider_body_t, build_rider_body
   use rider_drag, only: water_properties_t
@@ -97,6 +99,8 @@ contains
     type(contact_reach_t) :: heels, back
     real(wp) :: axes(3, 3), hip(3)
     integer :: d_b, pelvis, hip_frame, legs, heel, d_u, trunk, back_point, d_o, su, sv, k
+    type(spec_t) :: friction
+    class(force_law_t), allocatable :: law
 
     q0 = [p%u0, p%v0, p%heading0]
     call build_rider_body(p%body, layout%body, status)
@@ -185,9 +189,14 @@ contains
     do k = 1, N_CONTACTS
       layout%contact(k) = m%add_contact(trim(contact_names(k)), 1, layout%body_frame(k), layout%contact_frame(k), &
                                         one_sided=p%one_sided)
-      if (p%mu > 0) then
-        call m%add_law(new_coulomb_friction(trim(contact_names(k))//'_friction', layout%contact(k), p%mu, &
-                                            p%regularization_speed, status))
+      if (p%mu > 0) then   ! the core's Coulomb law, from its spec (kinetostatics_force_law_factory)
+        friction = spec_t('coulomb')
+        call friction%set('mu', [p%mu])
+        call friction%set('regularization_speed', [p%regularization_speed])
+        call force_law_from_spec(friction, law_place_t(trim(contact_names(k))//'_friction', layout%contact(k)), &
+                                 law, status)
+        if (.not. status%ok()) return
+        call m%add_law(law)
         layout%friction(k) = m%n_laws
       end if
     end do

@@ -1,13 +1,15 @@
 !> Scenario `point_mass`: a point mass sliding under gravity on an elementary
-!> surface placed anywhere in space, optionally with viscous or Coulomb friction.
+!> surface placed anywhere in space, optionally with friction (any friction law
+!> of the core's registry: viscous, Coulomb, ...).
 module scenarios_point_mass
   use base_kinds, only: wp
   use base_status, only: status_t
   use base_log, only: log_info
   use numerics_ode, only: ode_stats_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP
-  use kinetostatics_point_mass, only: point_mass_t, point_mass_series_t, &
-                                      FRICTION_NONE, FRICTION_VISCOUS, FRICTION_COULOMB
+  use kinetostatics_point_mass, only: point_mass_t, point_mass_series_t
+  use kinetostatics_force_law, only: force_law_t, friction_law_t, law_place_t
+  use kinetostatics_force_law_factory, only: force_law_from_spec
   use io_input, only: input_text_t, check_known_groups, invalid, format_real, mark_input_failure
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
@@ -42,6 +44,7 @@ contains
     real(wp), intent(out) :: y0(5)
     type(status_t), intent(inout) :: status
     type(point_mass_config_t) :: config
+    class(force_law_t), allocatable :: law
 
     call check_known_groups(input, point_mass_groups, status)
     if (status%ok()) call read_solver_config(input, solver, status)
@@ -56,14 +59,19 @@ contains
     end if
     model%mass = config%mass
     model%gravity = config%gravity
-    select case (config%friction)
-    case ('viscous'); model%friction = FRICTION_VISCOUS
-    case ('coulomb'); model%friction = FRICTION_COULOMB
-    case default; model%friction = FRICTION_NONE
-    end select
-    model%viscous_coefficient = config%viscous_coefficient
-    model%friction_coefficient = config%friction_coefficient
-    model%regularization_speed = config%regularization_speed
+    if (allocated(config%friction%kind)) then
+      call force_law_from_spec(config%friction, law_place_t('friction', 0, config%mass*norm2(config%gravity)), law, &
+                               status)
+      if (.not. status%ok()) return
+      select type (law)
+      class is (friction_law_t)
+        allocate (model%friction, source=law)
+      class default
+        call invalid(input, 'point_mass', 'friction', ''''//config%friction%kind//'''', 'the point mass takes a '// &
+                     'friction law of the slip and the normal force (a friction_law_t)', status)
+        return
+      end select
+    end if
     model%sigma = config%sigma
     model%alpha_u = config%alpha_u
     model%alpha_v = config%alpha_v

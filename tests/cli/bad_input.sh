@@ -31,8 +31,8 @@ expect() {
 base_surface="&surface kind = 'ellipsoid', a = 2, b = 1.5, c = 1 /"
 base_mass="&point_mass v0 = -0.5, du0 = 1 /"
 
-printf "&run scenario = 'point_mass', output = 'x.h5' /\n&surface kind = 'plane', radius = 1 /\n" > "$work/unknown_variable.nml"
-expect unknown_variable 1 unknown_variable.nml '&surface' radius 'allowed:' point_a
+printf "&run scenario = 'point_mass', output = 'x.h5' /\n&surface kind = 'plane', height = 1 /\n" > "$work/unknown_variable.nml"
+expect unknown_variable 1 unknown_variable.nml '&surface' height 'allowed:' point_a
 
 printf "&run scenario = 'point_mas', output = 'x.h5' /\n" > "$work/misspelt_scenario.nml"
 expect misspelt_scenario 1 misspelt_scenario.nml '&run' scenario "'point_mas'" point_mass

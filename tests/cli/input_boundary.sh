@@ -99,7 +99,7 @@ run_case flat_channel 1 'flat_channel.nml:2:' '&channel' 'the tube passes throug
 printf "&run scenario = 'water', output = 'unused_channel.h5' /\n&channel kind = 'helix', incline_deg = 20 /\n" > "$work/unused_channel.nml"
 run_case unused_channel 1 'unused_channel.nml:2:' 'incline_deg = 20' 'a helix channel does not use it'
 pm unused_axes "$(printf '%s\n&surface kind = '"'"'plane'"'"', c = 2.0 /\n%s' "$solver" "$mass")"
-run_case unused_axes 1 'unused_axes.nml:3:' '&surface' 'c = 2.0' 'has no semi-axes'
+run_case unused_axes 1 'unused_axes.nml:3:' '&surface' 'c = 2.0' "kind = 'plane' does not use it"
 
 # a CSV value too large for the surface
 mkdir -p "$work/csv"

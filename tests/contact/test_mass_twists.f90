@@ -36,7 +36,7 @@ program test_mass_twists
   use geometry_elementary, only: paraboloid_t
   use kinetostatics_mechanism, only: mechanism_t, LOADS_NONE
   use kinetostatics_models, only: sled_params_t, build_sled, fourbar_params_t, build_fourbar, fourbar_assembly
-  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, FRICTION_COULOMB, CHAIN_LOOP
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, CHAIN_LOOP
   use rider_model, only: rider_params_t, rider_layout_t, build_rider
   use io_input, only: input_text_t, load_input_file, input_from_text
   use io_contact_config, only: read_contact_config
@@ -140,8 +140,8 @@ contains
     call read_contact_config(input, system, st)
     if (loop) then
       system%contacts(1)%chain = CHAIN_LOOP
-      system%contacts(1)%friction = FRICTION_COULOMB
-      system%contacts(1)%mu = 0.3_wp
+      system%contacts(1)%friction%kind = 'coulomb'
+      call system%contacts(1)%friction%set('mu', [0.3_wp])
     end if
     call build_contact_model(system, model, st)
     call check(st%ok(), label//' built: '//st%text())

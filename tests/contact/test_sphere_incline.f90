@@ -22,8 +22,8 @@ program test_sphere_incline
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
   use geometry_elementary, only: plane_t, ellipsoid_t
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, &
-    contact_convergence_coefficient, FRICTION_COULOMB, &
-    FRICTION_NONE, CHAIN_OPEN, CHAIN_LOOP
+    contact_convergence_coefficient, &
+    CHAIN_OPEN, CHAIN_LOOP
   implicit none (type, external)
 
   real(wp), parameter :: theta = 30*pi/180, radius = 0.1_wp, mass = 2, g = 9.81_wp
@@ -43,7 +43,7 @@ contains
   subroutine describe(system, rolls, friction, mu)
     type(contact_system_t), intent(out) :: system
     logical, intent(in) :: rolls
-    integer, intent(in) :: friction
+    character(len=*), intent(in) :: friction   ! a force law kind, or 'none'
     real(wp), intent(in) :: mu
     type(status_t) :: st
     allocate (system%shapes(2), system%bodies(1), system%contacts(1))
@@ -67,8 +67,10 @@ contains
     system%contacts(1)%body_2 = 'ball'
     system%contacts(1)%shape_2 = 'ball'
     system%contacts(1)%rolling = rolls
-    system%contacts(1)%friction = friction
-    system%contacts(1)%mu = mu
+    if (friction /= 'none') then
+      system%contacts(1)%friction%kind = friction
+      call system%contacts(1)%friction%set('mu', [mu])
+    end if
     call check(st%ok(), 'shapes built')
   end subroutine describe
 
@@ -94,7 +96,7 @@ contains
     real(wp) :: a, worst_a, worst_u, worst_slip, worst_e, worst_f, worst_fr, worst_n, e0, t, u0, drop
     real(wp), parameter :: downhill(3) = [cos(theta), 0.0_wp, -sin(theta)]
     integer :: i, u12
-    call describe(system, .true., FRICTION_NONE, 0.0_wp)
+    call describe(system, .true., 'none', 0.0_wp)
     options%t_end = 1
     options%output_step = 0.05_wp
     options%ode%rtol = 1e-12_wp
@@ -146,7 +148,7 @@ contains
     integer :: i, u12
     character(len=24) :: label
     write (label, '(f4.2, a)') mu, merge(' (loop)', ' (open)', chain == CHAIN_LOOP)
-    call describe(system, .false., FRICTION_COULOMB, mu)
+    call describe(system, .false., 'coulomb', mu)
     system%contacts(1)%chain = chain
     options%t_end = 1
     options%output_step = 0.05_wp

@@ -29,8 +29,7 @@ program test_spinning_egg
   use testing, only: check, finish_tests
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, &
-    contact_convergence_coefficient, LEVEL_VELOCITY, CHAIN_LOOP, &
-    FRICTION_VISCOUS_WEIGHT, FRICTION_VISCOUS_NORMAL
+    contact_convergence_coefficient, LEVEL_VELOCITY, CHAIN_LOOP
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
@@ -48,8 +47,8 @@ program test_spinning_egg
   call egg(0.8_wp, p2)
   call fast_egg()
   call velocity_level(drift_velocity)
-  call open_against_loop(FRICTION_VISCOUS_WEIGHT)
-  call open_against_loop(FRICTION_VISCOUS_NORMAL)
+  call open_against_loop('viscous_weight')
+  call open_against_loop('viscous_normal')
   call long_axis_on_z()
   print '(a, es9.2, a, es9.2, a)', 'closure residual max over 10 s at P2: position level ', drift_position, &
     ' m, velocity level ', drift_velocity, ' m'
@@ -70,7 +69,7 @@ contains
     type(status_t) :: st
     if (.not. allocated(system%contacts)) call load_egg(system)
     if (.not. allocated(system%contacts)) return
-    system%contacts(1)%mu = mu
+    call system%contacts(1)%friction%set('mu', [mu])
     call build_contact_model(system, model, st)
     call check(st%ok(), 'egg built: '//st%text())
     if (.not. st%ok()) return
@@ -184,17 +183,15 @@ contains
   !> for other compilers' rounding, while any physical difference (a normal
   !> force or friction off by 1e-6 of itself shifts the rise by ~1e-6 of 75
   !> degrees, wrong terms by degrees) fails.
-  subroutine open_against_loop(friction)
-    integer, intent(in) :: friction
+  subroutine open_against_loop(law)
+    character(len=*), intent(in) :: law   ! a force law kind
     type(contact_system_t) :: system
     type(contact_model_t), target :: open, loop
     real(wp), allocatable :: theta_open(:), theta_loop(:)
     real(wp) :: worst, worst_n
     integer :: i, j, matched
-    character(len=16) :: law
-    law = merge('viscous_weight', 'viscous_normal', friction == FRICTION_VISCOUS_WEIGHT)
     call load_egg(system)
-    system%contacts(1)%friction = friction
+    system%contacts(1)%friction%kind = law
     call run_egg(0.3_wp, p1, 3.0_wp, open, system)
     call check(open%links(1)%open, trim(law)//': the egg runs by the open chain by default')
     system%contacts(1)%chain = CHAIN_LOOP

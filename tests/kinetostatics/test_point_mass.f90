@@ -11,8 +11,8 @@ program test_point_mass
                                  apex_paraboloid_t
   use geometry_placed_surface, only: placed_surface_t
   use geometry_surface, only: surface_t
-  use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t, FRICTION_COULOMB, &
-                                      FRICTION_VISCOUS
+  use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t
+  use kinetostatics_force_laws, only: new_coulomb_friction, new_viscous_friction
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
 
@@ -181,8 +181,7 @@ contains
     down = matmul(reshape([cos(0.4_wp), sin(0.4_wp), 0.0_wp, -sin(0.4_wp), cos(0.4_wp), 0.0_wp, &
                            0.0_wp, 0.0_wp, 1.0_wp], [3, 3]), down)
     m%mass = 2
-    m%friction = FRICTION_COULOMB
-    m%friction_coefficient = mu
+    allocate (m%friction, source=new_coulomb_friction('friction', 0, mu, 1e-9_wp, status))
     a_exact = standard_gravity*(sin(theta) - mu*cos(theta))
     call ode%start(m, 0.0_wp, [0.0_wp, 0.0_wp, w0, 0.0_wp, 0.0_wp], options, status)
     worst = 0
@@ -213,8 +212,7 @@ contains
 
     m%surface = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [cos(theta), 0.0_wp, -sin(theta)], [0.0_wp, 1.0_wp, 0.0_wp], status)
     m%mass = 1.5
-    m%friction = FRICTION_VISCOUS
-    m%viscous_coefficient = c
+    allocate (m%friction, source=new_viscous_friction('friction', 0, c, status))
     w_inf = m%mass*standard_gravity*sin(theta)/c
     call ode%start(m, 0.0_wp, [0.0_wp, 0.0_wp, w0, 0.0_wp, 0.0_wp], options, status)
     call ode%advance(3.0_wp, t, y, status)

@@ -1,0 +1,104 @@
+!> The force laws inputs name, in one registry: a kind (force_law_kind_t: a
+!> name, its parameters declared once, a builder) is registered once, and
+!> `force_law_from_spec` builds a law of any registered kind from a spec
+!> (base_spec: the kind's name and its parameters' values). Every model that
+!> takes a friction law from its input (the contact scenario, the point
+!> mass, the sled, the rider) builds it here; io reads a law's parameters by
+!> the declarations `force_law_kinds` lists.
+!>
+!> Adding a kind: one module with the law (extend friction_law_t or
+!> force_law_t) and a function returning its force_law_kind_t, and one line
+!> in `register_builtin_laws` (or, from outside the library, one call of
+!> `register_force_law` before the input is read). docs/DESIGN.md, "How to
+!> add a force law".
+!>
+!> The registry is the one module variable of the layer: kinds, not
+!> simulation state. Its built-in kinds are added on first use, inside an
+!> OpenMP critical section, so that threads building models at once (a
+!> sweep's rides) find it complete.
+module kinetostatics_force_law_factory
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
+  use base_spec, only: spec_t, complete_spec
+  use kinetostatics_force_law, only: force_law_t, force_law_kind_t, law_place_t
+  use kinetostatics_force_laws, only: coulomb_kind, viscous_kind, viscous_weight_kind, viscous_normal_kind
+  implicit none (type, external)
+  private
+  public :: register_force_law, force_law_kinds, force_law_kind_index, force_law_from_spec
+
+  type(force_law_kind_t), allocatable, save :: registry(:)
+
+contains
+
+  !> The kinds every build knows, in the order inputs list them.
+  subroutine register_builtin_laws()
+    registry = [coulomb_kind(), viscous_kind(), viscous_weight_kind(), viscous_normal_kind()]
+  end subroutine register_builtin_laws
+
+  subroutine ensure_builtins()
+    !$omp critical (force_law_registry)
+    if (.not. allocated(registry)) call register_builtin_laws()
+    !$omp end critical (force_law_registry)
+  end subroutine ensure_builtins
+
+  !> Adds a kind; refused if its name is taken, empty or 'none' (no law), or it has no builder.
+  subroutine register_force_law(kind, status)
+    type(force_law_kind_t), intent(in) :: kind
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok()) return
+    call ensure_builtins()
+    if (.not. associated(kind%build) .or. len_trim(kind%name) == 0 .or. kind%name == 'none') then
+      call set_status(status, STATUS_INVALID_INPUT, 'force law kind '''//kind%name//''': a kind needs a name '// &
+                      'other than ''none'' and a builder')
+    else if (force_law_kind_index(kind%name) > 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'force law kind '''//kind%name//''' is registered already')
+    else
+      !$omp critical (force_law_registry)
+      registry = [registry, kind]
+      !$omp end critical (force_law_registry)
+    end if
+  end subroutine register_force_law
+
+  !> Every registered kind (their names, parameters and meanings).
+  function force_law_kinds() result(kinds)
+    type(force_law_kind_t), allocatable :: kinds(:)
+    call ensure_builtins()
+    kinds = registry
+  end function force_law_kinds
+
+  !> The index of the kind `name` in force_law_kinds(), 0 if unknown.
+  integer function force_law_kind_index(name) result(k)
+    character(len=*), intent(in) :: name
+    call ensure_builtins()
+    do k = 1, size(registry)
+      if (registry(k)%name == name) return
+    end do
+    k = 0
+  end function force_law_kind_index
+
+  !> The law of `spec` acting at `place`; the spec is checked against its
+  !> kind's declarations (defaults filled in) first.
+  subroutine force_law_from_spec(spec, place, law, status)
+    type(spec_t), intent(in) :: spec
+    type(law_place_t), intent(in) :: place
+    class(force_law_t), allocatable, intent(out) :: law
+    type(status_t), intent(inout) :: status
+    type(spec_t) :: completed
+    integer :: k, j
+    character(len=:), allocatable :: known
+    if (.not. status%ok()) return
+    k = force_law_kind_index(spec%kind)
+    if (k == 0) then
+      known = ''
+      do j = 1, size(registry)
+        known = known//' '''//registry(j)%name//''''
+      end do
+      call set_status(status, STATUS_INVALID_INPUT, 'force law '''//place%name//''': unknown kind '''// &
+                      spec%kind//'''; the kinds are'//known)
+      return
+    end if
+    completed = spec
+    call complete_spec(completed, registry(k)%parameters, 'force law '''//place%name//''' ('//spec%kind//')', &
+                       status)
+    if (status%ok()) call registry(k)%build(completed, place, law, status)
+  end subroutine force_law_from_spec
+end module kinetostatics_force_law_factory
