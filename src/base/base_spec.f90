@@ -12,10 +12,13 @@ module base_spec
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   implicit none (type, external)
   private
-  public :: parameter_t, spec_t, spec_value_t, declare, complete_spec, range_text
+  public :: parameter_t, spec_t, spec_value_t, declare, complete_spec, range_text, list_limit
 
-  !> One parameter of a kind: `count` values in [low, high] (low excluded if
-  !> open_low), `unit`; `default` if not required.
+  integer, parameter :: list_limit = 10000   !< most values of a list parameter
+
+  !> One parameter of a kind: `count` values (0: a list of any length up to
+  !> list_limit) in [low, high] (low excluded if open_low), `unit`; `default`
+  !> if not required.
   type :: parameter_t
     character(len=:), allocatable :: name, unit, meaning
     integer :: count = 1
@@ -155,9 +158,14 @@ contains
           cycle
         end if
         associate (x => spec%vector(p%name))
-          if (size(x) /= p%count) then
-            call set_status(status, STATUS_INVALID_INPUT, what//': '//p%name//' takes '// &
-                            format_short(real(p%count, wp))//' value(s)')
+          if ((p%count > 0 .and. size(x) /= p%count) .or. size(x) < 1 .or. size(x) > list_limit) then
+            if (p%count > 0) then
+              call set_status(status, STATUS_INVALID_INPUT, what//': '//p%name//' takes '// &
+                              format_short(real(p%count, wp))//' value(s)')
+            else
+              call set_status(status, STATUS_INVALID_INPUT, what//': '//p%name//' takes a list of 1 to '// &
+                              format_short(real(list_limit, wp))//' values')
+            end if
             return
           end if
           do k = 1, size(x)

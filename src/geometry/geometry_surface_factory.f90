@@ -26,6 +26,7 @@ module geometry_surface_factory
   use geometry_elementary_kinds, only: plane_kind, ellipsoid_kind, elliptic_paraboloid_kind, &
     hyperbolic_paraboloid_kind, elliptic_cylinder_kind, apex_paraboloid_kind
   use geometry_sphere, only: sphere_kind
+  use geometry_revolution, only: cone_kind, sphere_zone_kind, revolution_kind
   implicit none (type, external)
   private
   public :: register_surface_kind, surface_kinds, surface_kind_index, surface_from_spec, place_surface
@@ -37,7 +38,8 @@ contains
   !> The kinds every build knows, in the order inputs list them.
   subroutine register_builtin_surfaces()
     registry = [plane_kind(), ellipsoid_kind(), elliptic_paraboloid_kind(), hyperbolic_paraboloid_kind(), &
-                elliptic_cylinder_kind(), apex_paraboloid_kind(), sphere_kind()]
+                elliptic_cylinder_kind(), apex_paraboloid_kind(), sphere_kind(), cone_kind(), sphere_zone_kind(), &
+                revolution_kind()]
   end subroutine register_builtin_surfaces
 
   subroutine ensure_builtins()

@@ -7,7 +7,7 @@
 module io_kind_parameters
   use base_kinds, only: wp
   use base_status, only: status_t
-  use base_spec, only: parameter_t, spec_t
+  use base_spec, only: parameter_t, spec_t, list_limit
   use io_input, only: group_reader_t, bounds_t, in_range, above
   implicit none (type, external)
   private
@@ -72,13 +72,17 @@ contains
           b = in_range(p%low, p%high, p%unit)
         end if
         if (r%has(variable)) then
-          allocate (x(p%count))
-          x = 0
-          if (p%required .eqv. .false.) x = p%default
-          if (p%count == 1) then
-            call r%get(variable, x(1), b, status)
+          if (p%count == 0) then   ! a list
+            call r%get_list(variable, x, list_limit, b, status)
           else
-            call r%get(variable, x, b, status)
+            allocate (x(p%count))
+            x = 0
+            if (.not. p%required) x = p%default
+            if (p%count == 1) then
+              call r%get(variable, x(1), b, status)
+            else
+              call r%get(variable, x, b, status)
+            end if
           end if
           if (status%ok()) call spec%set(p%name, x)
           deallocate (x)
