@@ -3,20 +3,28 @@
 !> surface in a direction (where a convex body is extreme, hence touches first).
 !>
 !> Both search a grid of the parameter box when it is finite (21 x 21 samples;
-!> a periodic direction is sampled over one period) and then refine by Newton
-!> on the stationarity conditions, with steps clipped to the box. An unbounded
-!> direction (a plane) starts from 0, where Newton is exact for the plane.
+!> a periodic direction is sampled over one period) and then refine by the
+!> foot-point solver's Newton (geometry_foot_point) on the stationarity
+!> conditions, with steps clipped to the box. An unbounded direction (a
+!> plane) starts from 0, where Newton is exact for the plane.
 module contact_surface_search
   use base_kinds, only: wp
   use base_text, only: format_short
   use base_status, only: status_t, set_status, STATUS_NOT_CONVERGED
   use geometry_surface, only: surface_t, surface_point_t
+  use geometry_foot_point, only: foot_point_options_t, foot_point_t, find_foot_point, FOOT_TANGENT, FOOT_SUPPORT, &
+    FOOT_STOP_PARAMETER, FOOT_DOMAIN_CLIP, FOOT_STEP_LIMIT
   implicit none (type, external)
   private
   public :: nearest_point, support_point
 
-  integer, parameter :: grid_samples = 21, newton_steps = 50
+  integer, parameter :: grid_samples = 21
   real(wp), parameter :: bounded_limit = 1e6_wp   ! a box edge beyond this counts as unbounded
+  !> Newton (geometry_foot_point) from the best sample: at most 50 steps,
+  !> stopped at a residual or a parameter step of 1e-15 (relative), steps
+  !> clipped to the box. A singular Jacobian ends it where it is.
+  type(foot_point_options_t), parameter :: search_options = foot_point_options_t( &
+    stop_rule=FOOT_STOP_PARAMETER, domain_rule=FOOT_DOMAIN_CLIP, max_steps=50, tolerance=1e-15_wp)
 
 contains
 
@@ -46,10 +54,12 @@ contains
     logical, intent(in) :: nearest
     real(wp), intent(out) :: u, v
     type(status_t), intent(inout) :: status
-    real(wp) :: box(4), best, value, uu, vv, f(2), jac(2, 2), det, du, dv, scale
+    real(wp) :: box(4), best, value, uu, vv
     type(surface_point_t) :: pt
     type(status_t) :: local
-    integer :: i, j, it
+    type(foot_point_options_t) :: options
+    type(foot_point_t) :: foot
+    integer :: i, j
     logical :: bounded(2)
     u = 0
     v = 0
@@ -75,40 +85,15 @@ contains
         end do
       end do
     end if
-    scale = 1
-    do it = 1, newton_steps
-      call surface%evaluate(u, v, 2, pt, local)
-      if (.not. local%ok()) exit
-      if (nearest) then
-        f = [dot_product(pt%r - x, pt%ru), dot_product(pt%r - x, pt%rv)]
-        jac(1, 1) = dot_product(pt%ru, pt%ru) + dot_product(pt%r - x, pt%ruu)
-        jac(1, 2) = dot_product(pt%ru, pt%rv) + dot_product(pt%r - x, pt%ruv)
-        jac(2, 2) = dot_product(pt%rv, pt%rv) + dot_product(pt%r - x, pt%rvv)
-        scale = max(dot_product(pt%ru, pt%ru), dot_product(pt%rv, pt%rv))
-      else
-        f = [dot_product(x, pt%ru), dot_product(x, pt%rv)]
-        jac(1, 1) = dot_product(x, pt%ruu)
-        jac(1, 2) = dot_product(x, pt%ruv)
-        jac(2, 2) = dot_product(x, pt%rvv)
-        scale = norm2(x)*max(norm2(pt%ru), norm2(pt%rv))
-      end if
-      jac(2, 1) = jac(1, 2)
-      if (maxval(abs(f)) <= 1e-15_wp*scale) exit
-      det = jac(1, 1)*jac(2, 2) - jac(1, 2)**2
-      if (.not. (abs(det) > 0)) exit
-      du = -(jac(2, 2)*f(1) - jac(1, 2)*f(2))/det
-      dv = -(jac(1, 1)*f(2) - jac(1, 2)*f(1))/det
-      u = u + du
-      v = v + dv
-      if (bounded(1) .and. .not. surface%periodic_u()) u = min(max(u, box(1)), box(2))
-      if (bounded(2) .and. .not. surface%periodic_v()) v = min(max(v, box(3)), box(4))
-      if (abs(du) + abs(dv) <= 1e-15_wp*(1 + abs(u) + abs(v))) exit
-    end do
-    if (.not. local%ok()) then
-      status = local
-      return
+    options = search_options
+    if (nearest) then
+      options%equations = FOOT_TANGENT
+    else
+      options%equations = FOOT_SUPPORT
     end if
-    if (it > newton_steps) then
+    call find_foot_point(surface, x, u, v, options, foot, status)
+    if (.not. status%ok()) return
+    if (foot%reason == FOOT_STEP_LIMIT) then
       if ((bounded(1) .and. (u <= box(1) .or. u >= box(2))) .or. (bounded(2) .and. (v <= box(3) .or. v >= box(4)))) then
         call set_status(status, STATUS_NOT_CONVERGED, 'the '//merge('nearest point', 'support point', nearest)// &
           ' lies beyond the edge of the parameter domain of the '//surface%describe()//' (u, v) in ['// &

@@ -21,7 +21,7 @@ module geometry_curve_frame
   implicit none (type, external)
   private
   public :: curve_frame_t, curve_frame_from_points, curve_frame_at
-  public :: centerline_curvature, horizon_parallel_tol
+  public :: centerline_curvature, curve_curvature, horizon_parallel_tol
 
   !> Smallest allowed sine of the angle between the horizon and the tangent;
   !> below it the y-axis (3.62) is numerically undefined.
@@ -84,26 +84,38 @@ contains
     if (.not. a_zero(3)) c(:, 3) = c(:, 3) + cross(a(:, 3), b(:, 0))
   end subroutine cross_derivatives
 
-  !> Curvature chi = |c_u x c_uu|/|c_u|^3 (4.8) and, if c holds c_uuu, its
-  !> derivative chi_u (4.9). chi_u is set to 0 where c_u x c_uu vanishes
-  !> (a straight piece, or the inflection of an S-bend, where |.| has a kink).
+  !> Curvature chi = |c_u x c_uu|/|c_u|^3 (4.8) of the curve point c and, if
+  !> c holds c_uuu, its derivative chi_u (4.9); see curve_curvature.
   pure subroutine centerline_curvature(c, chi, chi_u)
     type(curve_point_t), intent(in) :: c
     real(wp), intent(out) :: chi, chi_u
-    real(wp) :: q(3), dq(3), nq, sp, sp3
-    chi = 0; chi_u = 0
-    if (c%order < 2) return
-    q = cross(c%d(:, 1), c%d(:, 2))
-    nq = norm2(q)
-    sp = norm2(c%d(:, 1))
-    sp3 = sp**3
-    chi = nq/sp3
-    if (c%order < 3 .or. nq <= 1e-14_wp*sp3*max(sp, 1.0_wp)) return
-    dq = cross(c%d(:, 1), c%d(:, 3))
-    ! (4.9): (|q|_u |c_u|^3 - |q| (|c_u|^3)_u)/|c_u|^6, |q|_u = q.q_u/|q|,
-    ! (|c_u|^3)_u = 3 (c_u . c_uu) |c_u|
-    chi_u = (dot_product(q, dq)/nq*sp3 - nq*3*dot_product(c%d(:, 1), c%d(:, 2))*sp)/sp3**2
+    call curve_curvature(c%d(:, 0:3), c%order, chi, chi_u)
   end subroutine centerline_curvature
+
+  !> The one curvature of a curve (the tube's frame, the water's friction):
+  !> chi = |c' x c''|/|c'|^3 (4.8) from d(:, k) = d^k c/du^k (k = 1..order)
+  !> and, for order >= 3, chi_u = (|q|_u |c'|^3 - |q| (|c'|^3)_u)/|c'|^6
+  !> (4.9), q = c' x c'', |q|_u = q.(c' x c''')/|q|, (|c'|^3)_u =
+  !> 3 (c'.c'') |c'|. order < 2: chi = chi_u = 0.
+  !> The zero test: where |c' x c''| <= 1e-14 |c'|^3, i.e. chi <= 1e-14 /m (a
+  !> radius of curvature beyond 1e14 m: a straight piece, or the inflection
+  !> of an S-bend, where |q| has a kink and no derivative), chi_u = 0.
+  pure subroutine curve_curvature(d, order, chi, chi_u)
+    real(wp), intent(in) :: d(3, 0:3)
+    integer, intent(in) :: order
+    real(wp), intent(out) :: chi, chi_u
+    real(wp) :: k(3), speed, k_norm, k_norm_u, speed3_u
+    chi = 0; chi_u = 0
+    if (order < 2) return
+    k = cross(d(:, 1), d(:, 2))
+    speed = norm2(d(:, 1))
+    k_norm = norm2(k)
+    chi = k_norm/speed**3
+    if (order < 3 .or. k_norm <= 1e-14_wp*speed**3) return
+    k_norm_u = dot_product(cross(d(:, 1), d(:, 3)), k)/k_norm
+    speed3_u = 3*dot_product(d(:, 1), d(:, 2))*speed
+    chi_u = (k_norm_u*speed**3 - k_norm*speed3_u)/speed**6
+  end subroutine curve_curvature
 
   !> The frame (3.60-3.63) and its derivatives to `order` (0..3) from the
   !> centerline point c (needs derivatives to order+1) and the horizon h

@@ -6,8 +6,8 @@
 !> with how far it stays from it.
 !>
 !> The signed distance of a point p from the slide is d = (p - r(u*, v*)).z_D
-!> at its foot point (u*, v*) (Newton on the two tangency conditions, warm
-!> started along the scan); d > 0 inside the tube, d < 0 behind the wall. The
+!> at its foot point (u*, v*) (geometry_foot_point's Newton on the two
+!> tangency conditions, warm started along the scan); d > 0 inside the tube, d < 0 behind the wall. The
 !> joint angle is scanned from 0 outwards in both directions (1 degree
 !> steps, within the allowed range) for the sign change of d nearest to 0,
 !> which bisection then locates to 1e-13 rad.
@@ -19,6 +19,8 @@ module rider_start
   use base_status, only: status_t
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
+  use geometry_foot_point, only: foot_point_options_t, foot_point_t, find_foot_point, FOOT_STOP_LENGTH, &
+    FOOT_DOMAIN_STOP, FOOT_LEFT_DOMAIN
   implicit none (type, external)
   private
   public :: contact_reach_t, reach_contact, foot_point, turned
@@ -33,6 +35,12 @@ module rider_start
   end type contact_reach_t
 
   real(wp), parameter :: scan_step = pi/180   ! rad
+  !> The foot point: Newton (geometry_foot_point) on the tangency conditions,
+  !> at most 30 steps, the last a step shorter than 1e-14 (1 + |p|) m; it
+  !> stops where the distance has no minimum (the iterate is kept) and when
+  !> it leaves the parameter domain.
+  type(foot_point_options_t), parameter :: start_options = foot_point_options_t(stop_rule=FOOT_STOP_LENGTH, &
+    domain_rule=FOOT_DOMAIN_STOP, max_steps=30, tolerance=1e-14_wp, require_minimum=.true.)
 
 contains
 
@@ -56,31 +64,15 @@ contains
     type(status_t), intent(inout) :: status
     type(surface_point_t) :: s
     type(darboux_frame_t) :: fr
-    real(wp) :: e(3), g(2), h(2, 2), det, du, dv
-    integer :: it
+    type(foot_point_t) :: foot
     d = 0
     inside = .true.
-    do it = 1, 30
-      call surface%evaluate(u, v, 2, s, status)
-      if (.not. status%ok()) return
-      e = p - s%r
-      g = [dot_product(e, s%ru), dot_product(e, s%rv)]
-      h(1, 1) = dot_product(s%ru, s%ru) - dot_product(e, s%ruu)
-      h(1, 2) = dot_product(s%ru, s%rv) - dot_product(e, s%ruv)
-      h(2, 2) = dot_product(s%rv, s%rv) - dot_product(e, s%rvv)
-      h(2, 1) = h(1, 2)
-      det = h(1, 1)*h(2, 2) - h(1, 2)**2
-      if (.not. det > 0) exit   ! not a minimum of the distance: keep the iterate
-      du = (h(2, 2)*g(1) - h(1, 2)*g(2))/det
-      dv = (h(1, 1)*g(2) - h(2, 1)*g(1))/det
-      u = u + du
-      v = v + dv
-      if (.not. surface%in_domain(u, v)) then
-        inside = .false.
-        return
-      end if
-      if (abs(du)*norm2(s%ru) + abs(dv)*norm2(s%rv) < 1e-14_wp*(1 + norm2(p))) exit
-    end do
+    call find_foot_point(surface, p, u, v, start_options, foot, status)
+    if (.not. status%ok()) return
+    if (foot%reason == FOOT_LEFT_DOMAIN) then
+      inside = .false.
+      return
+    end if
     call surface%evaluate(u, v, 2, s, status)
     if (status%ok()) call darboux_frame(s, sigma, alpha_u, alpha_v, fr, status)
     if (.not. status%ok()) return

@@ -19,9 +19,9 @@
 module water_channel
   use base_kinds, only: wp
   use base_status, only: status_t
-  use base_vector, only: cross
   use geometry_surface, only: surface_point_t
   use geometry_curve, only: curve_point_t
+  use geometry_curve_frame, only: curve_curvature
   use geometry_cross_section, only: circle_section_t, blended_section_t
   use geometry_tube, only: tube_surface_t
   implicit none (type, external)
@@ -148,24 +148,14 @@ contains
     call curvature_from_derivatives(c, chi, chi_s)
   end subroutine channel_curvature
 
-  !> chi = |c' x c''|/|c'|^3 (4.8); chi_u from (4.9); returned chi_s = chi_u/|c'|.
-  !> Where c' x c'' = 0 (a straight piece or an inflection) chi has a kink or
-  !> is flat; chi_s is taken as 0 there.
+  !> chi and chi_s = chi_u/|c'| (geometry_curve_frame's curve_curvature,
+  !> with its zero test: chi_s = 0 on a straight piece or at an inflection).
   pure subroutine curvature_from_derivatives(c, chi, chi_s)
     real(wp), intent(in) :: c(3, 0:3)
     real(wp), intent(out) :: chi, chi_s
-    real(wp) :: k(3), speed, k_norm, k_norm_u, speed3_u
-    k = cross(c(:, 1), c(:, 2))
-    speed = norm2(c(:, 1))
-    k_norm = norm2(k)
-    chi = k_norm/speed**3
-    if (k_norm <= 1e-14_wp*speed**3) then
-      chi_s = 0
-      return
-    end if
-    k_norm_u = dot_product(cross(c(:, 1), c(:, 3)), k)/k_norm      ! |c' x c''|_u (4.9)
-    speed3_u = 3*dot_product(c(:, 1), c(:, 2))*speed               ! (|c'|^3)_u (4.9)
-    chi_s = (k_norm_u*speed**3 - k_norm*speed3_u)/speed**6/speed
+    real(wp) :: chi_u
+    call curve_curvature(c, 3, chi, chi_u)
+    chi_s = chi_u/norm2(c(:, 1))
   end subroutine curvature_from_derivatives
 
   !> Arc length of the centerline from its start to u, m.

@@ -19,7 +19,8 @@ program test_water_edges
   use testing, only: check, finish_tests
   use water_streamline, only: streamline_t, water_point_t, water_point
   use water_flow, only: water_series_t, simulate_water, OUTCOME_END
-  use water_boundaries, only: water_edges, edge_system_t, edge_xtol, edge_residual_tolerance
+  use water_boundaries, only: water_edges, edge_options
+  use geometry_foot_point, only: foot_system_t, FOOT_FRAME
   use scenarios_water, only: build_water
   implicit none (type, external)
 
@@ -29,7 +30,7 @@ program test_water_edges
   type(water_series_t) :: s
   type(status_t) :: st
   type(water_point_t) :: q
-  type(edge_system_t) :: sys
+  type(foot_system_t) :: sys
   type(nonlinear_options_t) :: options
   type(nonlinear_result_t) :: res
   real(wp) :: y0(7), y(7), uv(2), d(2), e, f, g, det, bu, bv, base(3), sgn, diff, jac_err, u_min, u_max, &
@@ -48,8 +49,9 @@ program test_water_edges
   call check(s%edge_failures == 0, 'no edge solve failed')
   call model%channel%u_range(u_min, u_max)
 
-  sys%channel => model%channel
-  options%xtol = edge_xtol; options%residual_tolerance = edge_residual_tolerance
+  sys%surface => model%channel%tube
+  sys%equations = FOOT_FRAME
+  options%xtol = edge_options%tolerance; options%residual_tolerance = edge_options%residual_tolerance
   diff = 0; jac_err = 0; hybrj_failures = 0
   do i = 1, s%n
     if (s%edge_solved(i) /= 1) cycle
