@@ -93,7 +93,7 @@ def write_tower(n, folder="inputs/contact", duration=MAX_TESTED_DURATION, lively
              "  method = 'adams', rtol = 1e-11, atol = 1e-10   ! P1",
              f"  duration = {duration!r}, output_step = 5e-3",
              "/",
-             "&contact_model gravity = 0.0, 0.0, -9.81 /",
+             "&contact_model gravity = 0.0, 0.0, -9.80665 /",
              "&shape name = 'table', kind = 'plane' /"]
     for k, (a2, w, *_rest) in enumerate(sizes, start=1):
         write_bowl(bowls, f"tower{n}_{k}", a2, w)

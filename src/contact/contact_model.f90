@@ -37,6 +37,7 @@
 !> velocity into a surface, no slip where rolling) to 1e-9 of their size.
 module contact_model
   use base_kinds, only: wp
+  use base_constants, only: standard_gravity
   use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use base_spec, only: spec_t
@@ -87,7 +88,7 @@ module contact_model
 
   !> The description: 'ground' names the fixed frame (it needs no body entry).
   type :: contact_system_t
-    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -9.81_wp]   ! m/s^2
+    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]   ! m/s^2
     type(shape_t), allocatable :: shapes(:)
     type(body_spec_t), allocatable :: bodies(:)
     type(contact_spec_t), allocatable :: contacts(:)

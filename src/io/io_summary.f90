@@ -9,6 +9,7 @@
 module io_summary
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use base_kinds, only: wp
+  use base_constants, only: standard_gravity
   use base_text, only: format_real, format_integer
   use base_status, only: status_t
   use io_system, only: write_standard_output
@@ -18,7 +19,7 @@ module io_summary
   public :: summary_t, degrees, standard_g, engineering
 
   real(wp), parameter :: degrees = 45/atan(1.0_wp)   ! degrees per radian
-  real(wp), parameter :: standard_g = 9.80665_wp     ! m/s^2 per g
+  real(wp), parameter :: standard_g = standard_gravity   ! m/s^2 per g
 
   integer, parameter :: label_width = 26   ! printed labels are padded to this
   integer, parameter :: KIND_NUMBERS = 1, KIND_TEXT = 2, KIND_TABLE = 3, KIND_LINE = 4

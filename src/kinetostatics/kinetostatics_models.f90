@@ -4,6 +4,7 @@
 !> Scenarios, tests and benchmarks build their models here.
 module kinetostatics_models
   use base_kinds, only: wp
+  use base_constants, only: standard_gravity
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
@@ -27,7 +28,7 @@ module kinetostatics_models
     real(wp) :: length(2) = 1        ! m
     real(wp) :: mass(2) = 1          ! kg
     real(wp) :: inertia(2) = 0       ! kg m^2 about the centre of mass (axis y and x)
-    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -9.80665_wp]   ! m/s^2
+    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]   ! m/s^2
   end type pendulum_params_t
 
   !> Planar four-bar (revolutes about z): crank A-B (length a, angle q from x),
@@ -35,7 +36,7 @@ module kinetostatics_models
   type :: fourbar_params_t
     real(wp) :: a = 0.2_wp, b = 0.6_wp, c = 0.5_wp, d = 0.7_wp       ! m
     real(wp) :: mass(3) = [0.5_wp, 1.0_wp, 0.8_wp]                   ! kg: crank, coupler, rocker
-    real(wp) :: gravity(3) = [0.0_wp, -9.80665_wp, 0.0_wp]           ! m/s^2
+    real(wp) :: gravity(3) = [0.0_wp, -standard_gravity, 0.0_wp]           ! m/s^2
   end type fourbar_params_t
 
   !> A rigid bar (length L, centre of mass at L/2 on its axis) on a surface.
@@ -44,7 +45,7 @@ module kinetostatics_models
     real(wp) :: mass = 10                       ! kg
     real(wp) :: inertia(3, 3) = reshape([0.02_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.25_wp, 0.0_wp, &
                                          0.0_wp, 0.0_wp, 0.25_wp], [3, 3])   ! kg m^2, bar frame
-    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -9.80665_wp]
+    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]
     real(wp) :: mu = 0, viscous = 0             ! Coulomb (1) and viscous (N s/m) at both contacts
     real(wp) :: normal_viscous = 0              ! s/m: F = -mu_n |N| w_t at both contacts (the egg's law)
     real(wp) :: regularization_speed = 1e-6_wp  ! m/s

@@ -18,6 +18,7 @@
 !> domain_edge_margin inside the edges (kinetostatics_surface_joint).
 module kinetostatics_point_mass
   use base_kinds, only: wp
+  use base_constants, only: standard_gravity
   use base_text, only: format_short
   use base_vector, only: cross
   use base_status, only: status_t, set_status, STATUS_DOMAIN, STATUS_INVALID_INPUT
@@ -46,7 +47,7 @@ module kinetostatics_point_mass
   type, extends(event_system_t) :: point_mass_t
     class(surface_t), allocatable :: surface
     real(wp) :: mass = 1                 ! kg
-    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -9.80665_wp]   ! m/s^2
+    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]   ! m/s^2
     class(friction_law_t), allocatable :: friction   ! none: frictionless
     real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0   ! Darboux frame parameters (3.38, 3.41)
     type(point_mass_series_t) :: series

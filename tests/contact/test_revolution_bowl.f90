@@ -10,9 +10,10 @@
 !>     (the normal force meets the axis, gravity is parallel to it, the ball
 !>     does not spin);
 !>   - rolling (no slip) from the same start: the energy stays (no slip, no work).
+!> The input gives no gravity: the default, standard gravity (9.80665 m/s^2).
 program test_revolution_bowl
   use base_kinds, only: wp
-  use base_constants, only: pi
+  use base_constants, only: pi, standard_gravity
   use base_status, only: status_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
@@ -23,7 +24,7 @@ program test_revolution_bowl
   implicit none (type, external)
 
   character(len=*), parameter :: nl = new_line('a')
-  real(wp), parameter :: g = 9.81_wp, alpha = pi/6, z_touch = 0.5_wp, radius = 0.05_wp, mass = 0.2_wp
+  real(wp), parameter :: g = standard_gravity, alpha = pi/6, z_touch = 0.5_wp, radius = 0.05_wp, mass = 0.2_wp
   real(wp) :: rho_c, z_c, speed, period
 
   ! the centre of the ball touching the cone at height z_touch, x > 0
@@ -52,7 +53,6 @@ contains
       'position = ', rho_c, ', 0, ', z_c
     text = '&run scenario = ''contact'' /'//nl// &
            '&solver rtol = 1e-11, atol = 1e-11, '//trim(numbers)//', velocity = 0, '//number(v0)//', 0'//spin//' /'//nl// &
-           '&contact_model gravity = 0, 0, -9.81 /'//nl// &
            '&shape name = ''bowl'', kind = ''cone'', half_angle_deg = 30, z_min = 0.1, z_max = 1.0 /'//nl// &
            '&shape name = ''ball'', kind = ''sphere'', radius = 0.05 /'//nl// &
            '&contact name = ''in_bowl'', shape_1 = ''bowl'', side_1 = -1, body_2 = ''ball'', '// &

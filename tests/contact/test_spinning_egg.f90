@@ -24,7 +24,7 @@
 !> egg's.
 program test_spinning_egg
   use base_kinds, only: wp
-  use base_constants, only: pi
+  use base_constants, only: pi, standard_gravity
   use base_status, only: status_t
   use testing, only: check, finish_tests
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
@@ -36,7 +36,7 @@ program test_spinning_egg
   use geometry_elementary, only: ellipsoid_t
   implicit none (type, external)
 
-  real(wp), parameter :: a = 0.025_wp, b = 0.033_wp, g = 9.81_wp, mass = 0.08_wp
+  real(wp), parameter :: a = 0.025_wp, b = 0.033_wp, g = standard_gravity, mass = 0.08_wp   ! as egg.nml
   real(wp) :: q, drift_position, drift_velocity
   integer, parameter :: p1 = 1, p2 = 2
 

@@ -52,7 +52,7 @@ def egg_parameters(text):
             if axis is None:
                 raise SystemExit(f"error: the egg's ellipsoid has semi-axes {semi}: no two are equal, "
                                  "Moffatt-Shimomura's curve needs a spheroid")
-    g = 9.81
+    g = 9.80665   # the contact scenario's default (standard gravity)
     for model in group_values(text, "contact_model"):
         if "gravity" in model:
             g = np.linalg.norm([float(x) for x in model["gravity"].split(",")])
