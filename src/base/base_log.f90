@@ -8,12 +8,20 @@ module base_log
   implicit none (type, external)
   private
   public :: log_info, log_warning, log_error, log_progress, set_verbosity, verbosity
-  public :: set_progress_interval, progress_interval
+  public :: set_progress_interval, progress_interval, log_sink_i
 
   integer :: verbosity = 1   !< 0 quiet, 1 normal, 2 verbose; set once from the command line
   !> wall-clock seconds between two progress lines of a long run; set once
   !> from the command line (slidesim --progress)
   real(wp) :: progress_seconds = 2
+
+  abstract interface
+    !> Where a library run sends its progress lines when its caller gives
+    !> one (log_info is one: standard error, as the command does).
+    subroutine log_sink_i(message)
+      character(len=*), intent(in) :: message
+    end subroutine log_sink_i
+  end interface
 
 contains
 

@@ -7,8 +7,8 @@
 !> thesis does not say which moment, slidesim takes the pelvis's crossing),
 !> and optionally on m segments [a_j, b_j] the rider's speed, the segment's
 !> length over the pelvis's passage time between its ends (as measured).
-!> Simulated: a ride (rider_ride's run_ride, the same run the `ride`
-!> scenario makes) with mu_D at all three contacts, recording the state where
+!> Simulated: a ride (design_ride_job's run_ride, the same run the `ride`
+!> scenario makes, with the water given) with mu_D at all three contacts, recording the state where
 !> the pelvis crosses every station and segment end (root functions) and
 !> stopping at the last of them.
 !> Cost (4.43): F2 = 1/2 (1-w)/n sum_i sum_contacts (v^SJ - v^M)^2
@@ -31,7 +31,8 @@ module design_rider_identification
   use geometry_tube, only: tube_surface_t
   use water_field, only: water_field_t
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS
-  use rider_ride, only: ride_options_t, ride_result_t, run_ride
+  use rider_ride, only: ride_options_t
+  use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   use numerics_least_squares, only: least_squares_problem_t, least_squares_options_t, &
     least_squares_result_t, solve_least_squares
   use design_cost, only: cost_group_t, new_cost_group, position_factor, speed_factor, group_part, &
@@ -172,7 +173,8 @@ contains
     type(rider_params_t), intent(in) :: params
     type(rider_stations_t), intent(out) :: simulated
     type(status_t), intent(out) :: status
-    type(ride_result_t) :: ride
+    type(ride_description_t) :: description
+    type(ride_job_result_t) :: job
     integer :: i, k, n, m
 
     n = size(setup%data%station_arc_length)
@@ -181,23 +183,25 @@ contains
     simulated%angle = 0
     simulated%wall_distance = 0
     simulated%segment_speed = 0
-    if (setup%with_water) then
-      call run_ride(params, setup%slide, setup%options, ride, status, setup%water, label='rider identification')
-    else
-      call run_ride(params, setup%slide, setup%options, ride, status, label='rider identification')
-    end if
-    if (status%ok() .and. .not. allocated(ride%station_record)) &
+    description%water%slide = setup%slide
+    description%with_water = setup%with_water
+    description%rider = params
+    description%options = setup%options
+    description%label = 'rider identification'
+    job = run_ride(description, setup%water)
+    status = job%status
+    if (status%ok() .and. .not. allocated(job%ride%station_record)) &
       call set_status(status, STATUS_DOMAIN, 'the ride recorded no stations')
     if (status%ok()) then
-      if (any(ride%station_record == 0)) call set_status(status, STATUS_DOMAIN, 'the ride ended before '// &
-        format_short(setup%options%stations(findloc(ride%station_record, 0, dim=1)))//' m: '//ride%outcome)
+      if (any(job%ride%station_record == 0)) call set_status(status, STATUS_DOMAIN, 'the ride ended before '// &
+        format_short(setup%options%stations(findloc(job%ride%station_record, 0, dim=1)))//' m: '//job%ride%outcome)
     end if
     if (.not. status%ok()) then
       call prefix_status(status, 'ride with mu_D = '//format_short(params%mu))
       if (status%code == STATUS_INVALID_INPUT) status%code = STATUS_DOMAIN
       return
     end if
-    associate (series => ride%series, rec => ride%station_record)
+    associate (series => job%ride%series, rec => job%ride%station_record)
       do i = 1, n
         do k = 1, N_CONTACTS
           simulated%angle(k, i) = series%contact(k)%wall_angle(rec(setup%section_station(i)))

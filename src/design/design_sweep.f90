@@ -1,8 +1,8 @@
 !> Populations of rides (docs/sweep.md): many rides that differ in the rider
 !> (body table, mass, height, friction), the start (position, heading,
-!> speed) and the water (flow rate, friction f1, f2, f3), each run with the
-!> library's ride (rider_ride) and judged with the ride report
-!> (design_ride_report), in OpenMP threads.
+!> speed) and the water (flow rate, friction f1, f2, f3), each run and
+!> judged by the library's ride (design_ride_job's run_ride, the `ride`
+!> scenario's), in OpenMP threads.
 !>
 !> The water is computed once per distinct water (flow rate and friction
 !> equal to the bit): rides are grouped by their water. A ride that cannot
@@ -16,13 +16,14 @@ module design_sweep
   use base_constants, only: pi
   use base_text, only: format_integer
   use base_status, only: status_t
-  use base_log, only: log_info
+  use base_log, only: log_sink_i
   use rider_body, only: SEX_MALE, SEX_FEMALE
   use rider_model, only: rider_params_t, N_CONTACTS
-  use rider_ride, only: ride_options_t, ride_result_t, run_ride
+  use rider_ride, only: ride_options_t, ride_result_t
   use water_run, only: water_description_t, water_result_t, compute_water
   use design_ride_evaluation, only: ride_limit_t
-  use design_ride_report, only: ride_report_t, evaluate_ride
+  use design_ride_report, only: ride_report_t
+  use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   !$ use omp_lib, only: omp_get_max_threads
   implicit none (type, external)
   private
@@ -196,16 +197,17 @@ contains
 
   !> Runs the rides marked in `mine` (all others stay RIDE_NOT_RUN) in
   !> `threads` OpenMP threads (0: OpenMP's default, all cores), the waters
-  !> they need first. `progress`: a line on standard error every
-  !> `progress_seconds` of wall clock; `share` scales its estimate (the
+  !> they need first. Progress: a line to `log` every `progress_seconds`
+  !> of wall clock (none without `log`); `share` scales its estimate (the
   !> number of ranks that run the other rides at the same pace).
-  subroutine run_sweep(sweep, mine, threads, result, progress_seconds, share)
+  subroutine run_sweep(sweep, mine, threads, result, progress_seconds, share, log)
     type(sweep_description_t), intent(in) :: sweep
     logical, intent(in) :: mine(:)
     integer, intent(in) :: threads
     type(sweep_result_t), intent(out) :: result
     real(wp), intent(in), optional :: progress_seconds
     integer, intent(in), optional :: share
+    procedure(log_sink_i), optional :: log
     type(water_result_t), allocatable :: waters(:)
     type(status_t), allocatable :: water_status(:)
     integer, allocatable :: group(:), first(:), needed(:), todo(:)
@@ -224,7 +226,7 @@ contains
     n_threads = max(1, threads)
     !$ if (threads <= 0) n_threads = omp_get_max_threads()
     every = 0
-    if (present(progress_seconds)) every = progress_seconds
+    if (present(progress_seconds) .and. present(log)) every = progress_seconds
     call system_clock(clock_start, clock_rate)
     clock_last = clock_start
     done = 0
@@ -262,18 +264,19 @@ contains
       integer(int64) :: clock0, clock1
       call system_clock(clock0)
       call ride_description(sweep, ride, rider, description)
-      call compute_water(description, water, status)
+      if (present(log)) then
+        call compute_water(description, water, status, log)
+      else
+        call compute_water(description, water, status)
+      end if
       call system_clock(clock1)
       seconds = real(clock1 - clock0, wp)/clock_rate
     end subroutine water_run_of
 
     subroutine one_ride(i)
       integer, intent(in) :: i
-      type(rider_params_t) :: rider
-      type(water_description_t) :: unused
-      type(ride_result_t) :: ride
-      type(ride_report_t) :: report
-      type(status_t) :: status
+      type(ride_description_t) :: description
+      type(ride_job_result_t) :: ride
       integer(int64) :: clock0, clock1
       call system_clock(clock0)
       associate (g => group(i))
@@ -282,18 +285,19 @@ contains
           result%message(i) = 'the water failed: '//water_status(g)%text()
           return   ! no time: nothing ran
         end if
-        call ride_description(sweep, i, rider, unused)
-        call run_ride(rider, sweep%water%slide, sweep%options, ride, status, waters(g)%field)
+        call ride_description(sweep, i, description%rider, description%water)
+        description%options = sweep%options
+        description%limits = sweep%limits
+        ride = run_ride(description, waters(g)%field)
       end associate
-      if (.not. status%ok()) then
+      if (.not. ride%status%ok()) then
         result%status(i) = RIDE_FAILED
-        result%message(i) = status%text()
+        result%message(i) = ride%status%text()
       else
-        call evaluate_ride(ride%series, rider%gravity, ride%complete, sweep%limits, report)
         result%status(i) = merge(RIDE_COMPLETE, RIDE_STOPPED, ride%complete)
-        result%message(i) = ride%outcome
-        call take_figures(ride, report, result%figures(:, i))
-        call take_verdicts(report, result%verdict(:, i), result%worst(:, i), result%excess(:, i))
+        result%message(i) = ride%stopped
+        call take_figures(ride%ride, ride%report, result%figures(:, i))
+        call take_verdicts(ride%report, result%verdict(:, i), result%worst(:, i), result%excess(:, i))
       end if
       call system_clock(clock1)
       result%seconds(i) = real(clock1 - clock0, wp)/clock_rate
@@ -311,7 +315,7 @@ contains
       ranks = 1
       if (present(share)) ranks = max(1, share)
       total = elapsed*size(todo)/max(1, done)
-      call log_info('sweep: '//format_integer(done*ranks)//' of '//format_integer(n)//' rides'// &
+      call log('sweep: '//format_integer(done*ranks)//' of '//format_integer(n)//' rides'// &
                     trim(merge(' (estimated)', '            ', ranks > 1))//', '//format_integer(failed*ranks)// &
                     ' failed, '//format_integer(nint(elapsed))//' s, about '// &
                     format_integer(nint(max(0.0_wp, total - elapsed)))//' s to go')

@@ -37,7 +37,7 @@ module numerics_event_driver
   use base_kinds, only: wp, int64
   use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_SOLVER
-  use base_log, only: log_info, progress_interval
+  use base_log, only: log_info, progress_interval, log_sink_i
   use numerics_ode, only: ode_system_t, ode_options_t, ode_stats_t, ode_integrator_t, ODE_ADAMS
   implicit none (type, external)
   private
@@ -90,6 +90,8 @@ module numerics_event_driver
     !> setting (base_log progress_interval: 2 s unless slidesim --progress)
     real(wp) :: progress_seconds = -1
     character(len=:), allocatable :: label    !< names the run in progress lines and messages
+    !> where the progress lines go; not given: standard error (base_log log_info)
+    procedure(log_sink_i), pointer, nopass :: log => null()
   end type driver_options_t
 
   type :: driver_result_t
@@ -338,8 +340,9 @@ contains
       if (real(clock_now - clock_last, wp) < interval*real(clock_rate, wp)) return
       clock_last = clock_now
       call system%progress(t, y, options%t_start, options%t_end, fraction, text)
-      if (fraction >= 0) then
-        call log_info(label//': '//format_short(100*min(fraction, 1.0_wp))//' % ('//text//')')
+      if (fraction >= 0) text = format_short(100*min(fraction, 1.0_wp))//' % ('//text//')'
+      if (associated(options%log)) then
+        call options%log(label//': '//text)
       else
         call log_info(label//': '//text)
       end if

@@ -22,6 +22,7 @@ module rider_ride
   use base_vector, only: cross
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use base_series, only: growable_series_t, resize
+  use base_log, only: log_sink_i
   use numerics_ode, only: ode_options_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP, &
     EVENT_STOP, EVENT_RECORD, RECORD_EVENT
@@ -48,6 +49,7 @@ module rider_ride
     real(wp) :: max_duration = 600        ! s, a bound on the ride (it normally ends at the slide's end)
     real(wp) :: min_speed = 0.05_wp       ! m/s, below it the rider has stalled
     real(wp) :: progress_seconds = -1     ! wall-clock s between progress lines (0: none; < 0: slidesim's)
+    procedure(log_sink_i), pointer, nopass :: log => null()   ! where they go (none given: standard error)
     !> m of centerline arc length, increasing: the ride records the state
     !> where the pelvis first crosses each (a root function each; what an
     !> identification compares with measurements at stations)
@@ -155,6 +157,7 @@ contains
     driver%output_step = options%output_step
     driver%min_mean_step = 1e-5_wp
     driver%progress_seconds = options%progress_seconds
+    driver%log => options%log
     driver%label = 'ride'
     if (present(label)) driver%label = label
     call drive(sys, y0, driver, result%driver, run_status)

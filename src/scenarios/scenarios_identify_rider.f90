@@ -111,7 +111,7 @@ contains
     call file%write_provenance('identify_rider', trim(run%title), input%name, input%text(), write_status)
     if (setup%with_water) then
       call log_info('identify_rider: the water first')
-      call compute_water(water_description, water, run_status)
+      call compute_water(water_description, water, run_status, log_info)
       if (.not. run_status%ok()) call prefix_status(run_status, 'the water')
       setup%water = water%field
     end if

@@ -3,22 +3,24 @@
 !> the ride against the user's limits; one result file with /water, /rider
 !> and /evaluation, and a ride report in engineering terms (docs/rider.md).
 !> Every input is checked before any work, including whether the rider's
-!> heels and back reach the slide at the start.
+!> heels and back reach the slide at the start (read_ride_description: the
+!> input as a ride description); the ride itself is the library's
+!> (design_ride_job's run_ride), this module writes and prints its result.
 module scenarios_ride
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_text, only: format_short, format_integer
-  use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT, STATUS_LIMITS_EXCEEDED
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_LIMITS_EXCEEDED
   use base_log, only: log_info
   use geometry_surface, only: surface_t
   use geometry_tube, only: tube_surface_t
   use geometry_cross_section, only: circle_section_t
-  use water_flow, only: outcome_name
-  use water_run, only: water_description_t, water_result_t, compute_water
+  use water_run, only: water_description_t
   use rider_model, only: N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
-  use rider_ride, only: ride_options_t, ride_result_t, ride_series_t, run_ride, check_ride_start
+  use rider_ride, only: ride_result_t, ride_series_t, check_ride_start
   use design_ride_evaluation, only: limit_report_unit, ride_limit_t, quantities_without_limit
-  use design_ride_report, only: ride_report_t, evaluate_ride
+  use design_ride_report, only: ride_report_t
+  use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   use io_input, only: input_text_t, check_known_groups, format_real, invalid, where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
@@ -33,8 +35,8 @@ module scenarios_ride
   use scenarios_water, only: build_water, write_slide_grid
   implicit none (type, external)
   private
-  public :: run_ride_scenario, ride_groups, check_sphere_radii, read_limit_gate, limits_exceeded_status, &
-    refuse_start
+  public :: run_ride_scenario, read_ride_description, ride_groups, check_sphere_radii, read_limit_gate, &
+    limits_exceeded_status, refuse_start
 
   character(len=*), parameter :: ride_groups(13) = [character(len=14) :: 'run', 'solver', 'water_solver', &
     'surface', 'water', 'rider', 'evaluation', geometry_groups]
@@ -51,30 +53,81 @@ contains
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
     type(status_t), intent(inout) :: status
-    type(solver_config_t) :: solver, defaults
-    type(water_description_t) :: water_description
-    type(water_result_t) :: water
-    type(rider_config_t) :: rider
-    type(ride_options_t) :: options
-    type(ride_result_t) :: ride
-    type(ride_report_t) :: report
+    type(ride_description_t) :: description
+    type(ride_job_result_t) :: result
     type(result_file_t) :: file
-    type(status_t) :: run_status, write_status
-    real(wp) :: ride_cpu, cpu0, cpu1
-    character(len=:), allocatable :: water_done, message
+    type(status_t) :: write_status
+    character(len=:), allocatable :: message
     logical :: complete, fail_on_limit
     integer :: k
 
-    ! ---- everything checked before any work
+    call read_ride_description(input, run, description, fail_on_limit, status)
+    if (.not. status%ok() .or. run%check_only) return
+
+    ! ---- the water, then the rider in it, then the report (design_ride_job)
+    call file%create(trim(run%output), status)
+    if (.not. status%ok()) return
+    call file%write_provenance('ride', trim(run%title), input%name, input%text(), write_status)
+    description%log => log_info
+    result = run_ride(description)
+    associate (slide => description%water%slide, ride => result%ride, report => result%report)
+      call write_water_results(file, description%water, result%water, write_status)
+      call write_slide_grid(file, slide, write_status)
+      if (result%ridden) then
+        call write_ride(file, slide, ride, report, result%ride_cpu, write_status)
+        call write_evaluation(file, ride, report, write_status)
+      end if
+
+      complete = result%status%ok() .and. write_status%ok()
+      message = 'the water did not reach the rider'
+      if (allocated(ride%outcome)) message = 'ok: '//ride%outcome
+      if (.not. write_status%ok()) message = write_status%text()
+      if (.not. result%status%ok()) message = result%status%text()
+      if (write_status%ok() .and. ride%series%n > 0) call write_xdmf(file, ride%series, report, write_status)
+      call file%finish(complete, message, write_status)
+      if (allocated(ride%outcome)) call print_report(ride, report, result%water_outcome, result%water_cpu, &
+                                                     result%ride_cpu, file%final_path(), run, complete, message, &
+                                                     write_status, description%water)
+      ! the time series as CSV only for a complete run: a CSV cannot say it is cut short
+      if (complete .and. write_status%ok() .and. allocated(run%ride_csv)) then
+        if (len(run%ride_csv) > 0) call write_ride_csv(run%ride_csv, ride%series, report, write_status)
+      end if
+      if (.not. result%status%ok()) then
+        status = result%status
+      else if (.not. write_status%ok()) then
+        status = write_status
+      else if (fail_on_limit .and. allocated(report%verdicts)) then
+        call limits_exceeded_status(input%name, report%limits, &
+                                    [(merge(1, 0, report%judged(k) .and. report%verdicts(k)%exceeded), &
+                                      k = 1, size(report%limits))], .false., status)
+      end if
+    end associate
+  end subroutine run_ride_scenario
+
+  !> The ride an input describes (&surface or the slide's groups, &water,
+  !> &water_solver, &rider, &solver, &evaluation), everything checked before
+  !> any work: also that the spheres fit in the tube and that the rider's
+  !> heels and back reach the slide at the start. `fail_on_limit`: whether a
+  !> limit exceeded fails the run (&evaluation, --fail-on-limit in `run`).
+  subroutine read_ride_description(input, run, description, fail_on_limit, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(ride_description_t), intent(out) :: description
+    logical, intent(out) :: fail_on_limit
+    type(status_t), intent(inout) :: status
+    type(solver_config_t) :: solver, defaults
+    type(rider_config_t) :: rider
+
+    fail_on_limit = .false.
     call check_known_groups(input, ride_groups, status)
-    defaults%options = options%ode
-    defaults%output_step = options%output_step
+    defaults%options = description%options%ode
+    defaults%output_step = description%options%output_step
     if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults)
-    if (status%ok()) call build_water(input, water_description, status, stage=.true.)
+    if (status%ok()) call build_water(input, description%water, status, stage=.true.)
     if (status%ok()) call read_rider_config(input, rider, status)
     if (status%ok()) call read_limit_gate(input, run, rider%limits, fail_on_limit, status)
     if (.not. status%ok()) return
-    associate (slide => water_description%slide)
+    associate (slide => description%water%slide, options => description%options)
       call check_sphere_radii(input, rider, slide, status)
       if (.not. status%ok()) return
       options%ode = solver%options
@@ -94,55 +147,10 @@ contains
         call refuse_start(input, rider, status)
         return
       end if
-      if (run%check_only) return
-
-      ! ---- the water, then the rider in it
-      call file%create(trim(run%output), status)
-      if (.not. status%ok()) return
-      call file%write_provenance('ride', trim(run%title), input%name, input%text(), write_status)
-      call log_info('ride: the water first ('//format_real(water_description%flow_rate)//' m^3/s)')
-      call compute_water(water_description, water, run_status)
-      water_done = outcome_name(water%series%outcome)
-      call write_water_results(file, water_description, water, write_status)
-      call write_slide_grid(file, slide, write_status)
-      if (.not. run_status%ok()) call prefix_status(run_status, 'the water')
-      ride_cpu = 0
-      if (run_status%ok()) then
-        call log_info('ride: the rider')
-        call cpu_time(cpu0)
-        call run_ride(rider%params, slide, options, ride, run_status, water%field)
-        call evaluate_ride(ride%series, rider%params%gravity, ride%complete, rider%limits, report)
-        call cpu_time(cpu1)
-        ride_cpu = cpu1 - cpu0
-        call write_ride(file, slide, ride, report, ride_cpu, write_status)
-        call write_evaluation(file, ride, report, write_status)
-      end if
     end associate
-
-    complete = run_status%ok() .and. write_status%ok()
-    message = 'the water did not reach the rider'
-    if (allocated(ride%outcome)) message = 'ok: '//ride%outcome
-    if (.not. write_status%ok()) message = write_status%text()
-    if (.not. run_status%ok()) message = run_status%text()
-    if (write_status%ok() .and. ride%series%n > 0) call write_xdmf(file, ride%series, report, write_status)
-    call file%finish(complete, message, write_status)
-    if (allocated(ride%outcome)) call print_report(ride, report, water_done, water%cpu, ride_cpu, &
-                                                   file%final_path(), run, complete, message, write_status, &
-                                                   water_description)
-    ! the time series as CSV only for a complete run: a CSV cannot say it is cut short
-    if (complete .and. write_status%ok() .and. allocated(run%ride_csv)) then
-      if (len(run%ride_csv) > 0) call write_ride_csv(run%ride_csv, ride%series, report, write_status)
-    end if
-    if (.not. run_status%ok()) then
-      status = run_status
-    else if (.not. write_status%ok()) then
-      status = write_status
-    else if (fail_on_limit .and. allocated(report%verdicts)) then
-      call limits_exceeded_status(input%name, report%limits, &
-                                  [(merge(1, 0, report%judged(k) .and. report%verdicts(k)%exceeded), &
-                                    k = 1, size(report%limits))], .false., status)
-    end if
-  end subroutine run_ride_scenario
+    description%rider = rider%params
+    description%limits = rider%limits
+  end subroutine read_ride_description
 
   !> Whether a limit exceeded fails the run (exit status 4): --fail-on-limit
   !> or &evaluation fail_on_limit. Asked with no limit to judge, the run

@@ -127,7 +127,7 @@ contains
                                  ' rank(s)')
     threads = config%threads
     call run_sweep(sweep, rides_of_rank(size(sweep%values, 2), rank, ranks), threads, result, &
-                   merge(config%progress_seconds, 0.0_wp, rank == 0), ranks)
+                   merge(config%progress_seconds, 0.0_wp, rank == 0), ranks, log_info)
     call gather_rides(result, rank, ranks)
     call finish_ranks(started)
     if (rank /= 0) return

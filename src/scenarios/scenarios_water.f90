@@ -225,7 +225,7 @@ contains
     call file%create(trim(run%output), status)
     if (.not. status%ok()) return
     call log_info('water: '//description%slide%describe()//', Q = '//format_real(description%flow_rate)//' m^3/s')
-    call compute_water(description, result, run_status)
+    call compute_water(description, result, run_status, log_info)
     call write_results(file, input, run, description, result, write_status)
     complete = run_status%ok() .and. write_status%ok()
     message = 'ok: '//outcome_name(result%series%outcome)

@@ -26,6 +26,7 @@ module water_flow
   use base_kinds, only: wp
   use base_text, only: format_short
   use base_constants, only: pi
+  use base_log, only: log_sink_i
   use base_series, only: growable_series_t, resize, max_series_bytes
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, &
     STATUS_DOMAIN
@@ -330,14 +331,18 @@ contains
   !> record if `edges`. The series keeps what was computed and why the run
   !> ended (outcome, message); `status` is ok at the end of the slide and at
   !> the caller's bound, else it says why the run stopped early. The model is
-  !> not changed.
-  subroutine simulate_water(model, y0, options, duration, output_step, series, status, edges)
+  !> not changed. Progress lines (the driver's): to `log` if given, none
+  !> when `progress_seconds` is 0 (default: the program's, on standard error).
+  subroutine simulate_water(model, y0, options, duration, output_step, series, status, edges, log, &
+                            progress_seconds)
     type(streamline_t), intent(in), target :: model
     real(wp), intent(in) :: y0(:), duration, output_step
     type(ode_options_t), intent(in) :: options
     type(water_series_t), intent(out), target :: series
     type(status_t), intent(out) :: status
     logical, intent(in), optional :: edges
+    procedure(log_sink_i), optional :: log
+    real(wp), intent(in), optional :: progress_seconds
     type(water_system_t), target :: system
     type(driver_options_t) :: opts
     type(driver_result_t) :: result
@@ -370,6 +375,8 @@ contains
     opts%t_end = min(duration, t_safety)
     opts%output_step = output_step
     opts%label = 'water'
+    if (present(log)) opts%log => log
+    if (present(progress_seconds)) opts%progress_seconds = progress_seconds
     series%time_bound = opts%t_end
     call drive(system, y0, opts, result, status)
     series%stats = result%stats

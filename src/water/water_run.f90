@@ -12,6 +12,7 @@ module water_run
   use base_constants, only: standard_gravity
   use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_log, only: log_sink_i
   use numerics_ode, only: ode_options_t
   use geometry_tube, only: tube_surface_t
   use water_channel, only: new_channel
@@ -161,11 +162,13 @@ contains
   !> bound, or a stop of the model) and builds its field and table. `status`:
   !> invalid input (nothing run), ok (the end, or the bound: result%bounded),
   !> or why the run stopped early (the result holds what was computed up to
-  !> there, with its field and table).
-  subroutine compute_water(description, result, status)
+  !> there, with its field and table). Progress lines go to `log` when given
+  !> (the program's interval); without it none are made.
+  subroutine compute_water(description, result, status, log)
     type(water_description_t), intent(in) :: description
     type(water_result_t), intent(out) :: result
     type(status_t), intent(inout) :: status
+    procedure(log_sink_i), optional :: log
     type(streamline_t), target :: model
     type(status_t) :: run_status, st
     real(wp) :: y0(7), cpu0, cpu1, u_min, u_max
@@ -176,8 +179,15 @@ contains
     if (.not. status%ok()) return
     call model%channel%u_range(u_min, u_max)
     result%slide_length = model%channel%arc_length(u_max)
-    call simulate_water(model, y0, description%solver%ode, description%solver%time_bound, &
-                        description%solver%output_step, result%series, run_status, edges=description%edges)
+    if (present(log)) then
+      call simulate_water(model, y0, description%solver%ode, description%solver%time_bound, &
+                          description%solver%output_step, result%series, run_status, edges=description%edges, &
+                          log=log)
+    else
+      call simulate_water(model, y0, description%solver%ode, description%solver%time_bound, &
+                          description%solver%output_step, result%series, run_status, edges=description%edges, &
+                          progress_seconds=0.0_wp)
+    end if
     result%bounded = result%series%outcome == OUTCOME_DURATION
     if (result%series%n >= 2) then
       st%code = 0

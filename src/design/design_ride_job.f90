@@ -1,0 +1,126 @@
+!> One ride as a library call (docs/DESIGN.md, "The path of one ride"): a
+!> ride description in memory (the slide and its water, the rider and its
+!> start, the ride's solver settings, the limits) in, a result value out (the
+!> water, the ride's records, the ride report with every limit's verdict,
+!> the status and how the ride stopped). The water -> ride -> evaluation
+!> chain exists here once: the `ride` scenario, the sweep and the rider
+!> identification all run it. It prints nothing: progress lines go to the
+!> caller's `log` when it gives one, and none are made otherwise; the
+!> command prints the summary from the result.
+!>
+!> A water computed before (a sweep's rides of one flow, an identification's
+!> every evaluation) is passed in and not computed again; a dry ride
+!> (with_water = .false.) has no water at all. Thread-safe: the description
+!> is only read, every run keeps its state in locals.
+module design_ride_job
+  use base_kinds, only: wp
+  use base_status, only: status_t, prefix_status
+  use base_text, only: format_real
+  use base_log, only: log_sink_i
+  use water_run, only: water_description_t, water_result_t, compute_water
+  use water_field, only: water_field_t
+  use water_flow, only: outcome_name
+  use rider_model, only: rider_params_t
+  use rider_ride, only: ride_options_t, ride_result_t, ride_in_water => run_ride
+  use design_ride_evaluation, only: ride_limit_t
+  use design_ride_report, only: ride_report_t, evaluate_ride
+  implicit none (type, external)
+  private
+  public :: ride_description_t, ride_job_result_t, run_ride
+
+  !> Everything one ride needs.
+  type :: ride_description_t
+    type(water_description_t) :: water        !< the slide (water%slide) and its water
+    logical :: with_water = .true.            !< .false.: a dry ride, no water computed, no drag
+    type(rider_params_t) :: rider             !< the body, its friction and its start
+    type(ride_options_t) :: options           !< integration, output step, stall speed, bounds
+    type(ride_limit_t), allocatable :: limits(:)   !< judged by the report (none: nothing judged)
+    character(len=:), allocatable :: label    !< names the ride in progress lines and messages ('ride')
+    !> where progress lines go (the stages, the integrator's lines every
+    !> options%progress_seconds); not given: the ride makes none
+    procedure(log_sink_i), pointer, nopass :: log => null()
+  end type ride_description_t
+
+  !> What one ride gave.
+  type :: ride_job_result_t
+    type(status_t) :: status                  !< ok, or why it failed (the water's failure says so)
+    character(len=:), allocatable :: stopped  !< how the ride ended, in words ('' when it did not run)
+    logical :: ridden = .false.               !< the rider ran (false: the water failed first)
+    logical :: complete = .false.             !< the rider reached the end of the slide
+    type(water_result_t) :: water             !< the water computed here (empty when given or dry)
+    character(len=:), allocatable :: water_outcome   !< how the water computed here ended ('' otherwise)
+    type(ride_result_t) :: ride               !< the records, the integrator's statistics
+    type(ride_report_t) :: report             !< the figures and the limits' verdicts
+    real(wp) :: water_cpu = 0                 !< s of CPU time of the water computed here
+    real(wp) :: ride_cpu = 0                  !< s of CPU time of the ride and its evaluation
+  end type ride_job_result_t
+
+contains
+
+  !> The water (unless given or dry), then the rider in it, then the ride
+  !> report. `water`: a water computed before for this description's slide
+  !> and flow, used instead of computing it again.
+  function run_ride(description, water) result(result)
+    type(ride_description_t), intent(in) :: description
+    type(water_field_t), intent(in), optional :: water
+    type(ride_job_result_t) :: result
+    type(ride_options_t) :: options
+    type(ride_limit_t), allocatable :: limits(:)
+    real(wp) :: cpu0, cpu1
+
+    result%stopped = ''
+    result%water_outcome = ''
+    options = description%options
+    if (associated(description%log)) then
+      options%log => description%log
+    else
+      options%progress_seconds = 0
+    end if
+    if (description%with_water .and. .not. present(water)) then
+      if (associated(description%log)) call description%log(ride_label()//': the water first ('// &
+                                                            format_real(description%water%flow_rate)//' m^3/s)')
+      if (associated(description%log)) then
+        call compute_water(description%water, result%water, result%status, description%log)
+      else
+        call compute_water(description%water, result%water, result%status)
+      end if
+      result%water_cpu = result%water%cpu
+      result%water_outcome = outcome_name(result%water%series%outcome)
+      if (.not. result%status%ok()) then
+        call prefix_status(result%status, 'the water')
+        return
+      end if
+    end if
+    if (associated(description%log)) call description%log(ride_label()//': the rider')
+    call cpu_time(cpu0)
+    if (.not. description%with_water) then
+      call ride_in_water(description%rider, description%water%slide, options, result%ride, result%status, &
+                         label=ride_label())
+    else if (present(water)) then
+      call ride_in_water(description%rider, description%water%slide, options, result%ride, result%status, water, &
+                         label=ride_label())
+    else
+      call ride_in_water(description%rider, description%water%slide, options, result%ride, result%status, &
+                         result%water%field, label=ride_label())
+    end if
+    if (allocated(description%limits)) then
+      limits = description%limits
+    else
+      allocate (limits(0))
+    end if
+    call evaluate_ride(result%ride%series, description%rider%gravity, result%ride%complete, limits, result%report)
+    call cpu_time(cpu1)
+    result%ride_cpu = cpu1 - cpu0
+    result%ridden = .true.
+    result%complete = result%ride%complete
+    if (allocated(result%ride%outcome)) result%stopped = result%ride%outcome
+
+  contains
+
+    function ride_label() result(label)
+      character(len=:), allocatable :: label
+      label = 'ride'
+      if (allocated(description%label)) label = description%label
+    end function ride_label
+  end function run_ride
+end module design_ride_job

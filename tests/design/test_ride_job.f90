@@ -1,0 +1,158 @@
+!> One ride as a library call (design_ride_job): run_ride gives, to the bit,
+!> what the water, the rider and the report give when called one by one
+!> (its water computed, a water given, a dry ride); a water that fails
+!> stops before the rider and says so; the progress lines go to the
+!> caller's log and nowhere without one (ctest fails this test on any
+!> 'unasked:' line in its output: tests/CMakeLists.txt).
+program test_ride_job
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  use rider_ride, only: ride_result_t, ride_in_water => run_ride
+  use water_run, only: water_result_t, compute_water
+  use design_ride_evaluation, only: new_ride_limit
+  use design_ride_report, only: ride_report_t, evaluate_ride
+  use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
+  use io_input, only: input_text_t, input_from_text
+  use scenarios_water, only: build_water
+  use testing, only: check, finish_tests
+  implicit none (type, external)
+
+  type(ride_description_t) :: description
+  type(status_t) :: status
+  character(len=:), allocatable :: logged   !< the lines the log below received
+  character(len=*), parameter :: nl = new_line('a')
+
+  call prepare(description, status)
+  call check(status%ok(), 'the demo slide and its water description: '//status%text())
+  if (status%ok()) then
+    call check_against_parts(description)
+    call check_water_failure(description)
+    call check_log(description)
+  end if
+  call finish_tests('test_ride_job')
+
+contains
+
+  !> The demo slide and its water (0.004 m^3/s), the default rider, a
+  !> 2.5 s bound (short), one limit.
+  subroutine prepare(description, status)
+    type(ride_description_t), intent(out) :: description
+    type(status_t), intent(inout) :: status
+    type(input_text_t) :: input
+    character(len=:), allocatable :: problem
+    call input_from_text('test_ride_job', '&surface kind = ''slide'', geometry_file = ''builtin:demo_slide'' /'// &
+                         nl//'&water flow_rate = 0.004, start = ''edges'', u0 = 0.0, '// &
+                         'v_left0 = 1.9207963267948966, v_right0 = 1.2207963267948966 /'//nl, input, status)
+    if (status%ok()) call build_water(input, description%water, status, stage=.true.)
+    description%options%max_duration = 2.5_wp
+    allocate (description%limits(1))
+    call new_ride_limit('speed', 'm/s', 0.0_wp, .false., 2.0_wp, .true., 9.80665_wp, description%limits(1), &
+                        problem)
+  end subroutine prepare
+
+  !> run_ride against compute_water, rider_ride's run and evaluate_ride.
+  subroutine check_against_parts(description)
+    type(ride_description_t), intent(in) :: description
+    type(ride_description_t) :: dry
+    type(ride_job_result_t) :: job, given, dry_job
+    type(water_result_t) :: water
+    type(ride_result_t) :: ride
+    type(ride_report_t) :: report
+    type(status_t) :: st
+
+    call compute_water(description%water, water, st)
+    call ride_in_water(description%rider, description%water%slide, description%options, ride, st, water%field)
+    call evaluate_ride(ride%series, description%rider%gravity, ride%complete, description%limits, report)
+    call check(st%ok(), 'the parts run: '//st%text())
+
+    job = run_ride(description)
+    call check(job%status%ok() .and. job%ridden, 'run_ride runs: '//job%status%text())
+    call check(job%stopped == ride%outcome .and. index(job%stopped, 'had not ended after 2.5') > 0 .and. &
+               .not. job%complete, 'how it stopped, as the rider says: '//job%stopped)
+    call check(job%water_outcome == 'end of slide', 'the water reached the end: '//job%water_outcome)
+    call check(same_ride(job%ride, ride), 'its water computed: the ride to the bit')
+    call check(same_report(job%report, report), 'its water computed: the report to the bit')
+    call check(job%water%series%n == water%series%n .and. job%water_cpu == job%water%cpu .and. &
+               job%ride_cpu >= 0, 'the water and the CPU times are kept')
+
+    given = run_ride(description, water%field)
+    call check(given%status%ok() .and. same_ride(given%ride, ride) .and. same_report(given%report, report), &
+               'a water given: the same ride and report to the bit')
+    call check(given%water%series%n == 0 .and. given%water_outcome == '' .and. given%water_cpu == 0, &
+               'a water given is not computed again')
+
+    dry = description
+    dry%with_water = .false.
+    call ride_in_water(description%rider, description%water%slide, description%options, ride, st)
+    dry_job = run_ride(dry, water%field)
+    call check(dry_job%status%ok() .and. same_ride(dry_job%ride, ride), 'a dry ride: the rider without water')
+    call check(any(dry_job%ride%series%speed(:ride%series%n) /= job%ride%series%speed(:ride%series%n)) .or. &
+               dry_job%ride%series%n /= job%ride%series%n, 'a dry ride differs from one in the water')
+  end subroutine check_against_parts
+
+  !> 0.002 m^3/s is critical at the start (test_sweep): the water fails,
+  !> the rider does not run, the status says which stage failed.
+  subroutine check_water_failure(description)
+    type(ride_description_t), intent(in) :: description
+    type(ride_description_t) :: critical
+    type(ride_job_result_t) :: job
+    critical = description
+    critical%water%flow_rate = 0.002_wp
+    job = run_ride(critical)
+    call check(.not. job%status%ok() .and. index(job%status%text(), 'the water') == 1 .and. &
+               index(job%status%text(), 'critical') > 0, 'a failing water: '//job%status%text())
+    call check(.not. job%ridden .and. job%stopped == '' .and. job%ride%series%n == 0, &
+               'a failing water: no ride')
+  end subroutine check_water_failure
+
+  !> The stage lines and the integrator's progress lines (every 1e-9 s of
+  !> wall clock: at every look) reach the log; without a log none is made
+  !> (the label 'unasked' would show in this test's output).
+  subroutine check_log(description)
+    type(ride_description_t), intent(in) :: description
+    type(ride_description_t) :: asked, unasked
+    type(ride_job_result_t) :: job
+    asked = description
+    asked%options%progress_seconds = 1e-9_wp
+    asked%log => collect
+    logged = ''
+    job = run_ride(asked)
+    call check(job%status%ok(), 'with a log: runs')
+    call check(index(logged, 'ride: the water first (0.004 m^3/s)'//nl//'ride: the rider'//nl) == 1, &
+               'the stages reach the log: '//logged(:min(len(logged), 80)))
+    call check(index(logged, 'ride: the rider'//nl//'ride: ') > 0 .and. index(logged, ' % (') > 0, &
+               'the integrator''s progress lines reach the log')
+    unasked = description
+    unasked%options%progress_seconds = 1e-9_wp
+    unasked%label = 'unasked'
+    logged = ''
+    job = run_ride(unasked)
+    call check(job%status%ok() .and. logged == '', 'without a log: runs, nothing logged')
+  end subroutine check_log
+
+  subroutine collect(message)
+    character(len=*), intent(in) :: message
+    logged = logged//message//nl
+  end subroutine collect
+
+  logical function same_ride(a, b)
+    type(ride_result_t), intent(in) :: a, b
+    integer :: n
+    n = b%series%n
+    same_ride = a%series%n == n .and. a%outcome == b%outcome .and. (a%complete .eqv. b%complete) .and. &
+                a%drag_switches == b%drag_switches .and. a%driver%stats%steps == b%driver%stats%steps
+    if (same_ride) same_ride = all(a%series%time(:n) == b%series%time(:n)) .and. &
+                               all(a%series%state(:, :n) == b%series%state(:, :n)) .and. &
+                               all(a%series%speed(:n) == b%series%speed(:n))
+  end function same_ride
+
+  logical function same_report(a, b)
+    type(ride_report_t), intent(in) :: a, b
+    same_report = a%n == b%n .and. a%top_speed == b%top_speed .and. a%final_speed == b%final_speed .and. &
+                  all(a%felt_max == b%felt_max) .and. a%lever_max == b%lever_max .and. &
+                  all(a%normal_min == b%normal_min) .and. size(a%verdicts) == size(b%verdicts)
+    if (same_report) same_report = all(a%felt(:, :a%n) == b%felt(:, :b%n)) .and. &
+                                   (a%verdicts(1)%exceeded .eqv. b%verdicts(1)%exceeded) .and. &
+                                   a%verdicts(1)%worst == b%verdicts(1)%worst
+  end function same_report
+end program test_ride_job
