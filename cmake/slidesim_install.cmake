@@ -40,7 +40,8 @@ install(FILES ${PROJECT_BINARY_DIR}/slidesimConfig.cmake ${PROJECT_BINARY_DIR}/s
         DESTINATION ${slidesim_cmake_dir})
 
 # pkg-config: the layers from the top (scenarios) down to base, fitpack, then
-# the libraries they use (full paths, as CMake found them).
+# the libraries they use (full paths, as CMake found them), MPI's among them
+# when slidesim is built with it.
 set(pc_libs "")
 list(REVERSE slidesim_layers)
 foreach(layer IN LISTS slidesim_layers ITEMS fitpack)
@@ -53,6 +54,15 @@ foreach(lib IN LISTS SUNDIALS_FORTRAN_LIBRARIES MINPACK_LIBRARY LAPACK_LIBRARIES
                      HDF5_Fortran_LIBRARIES)
   string(APPEND pc_libs " ${lib}")
 endforeach()
+# MPI (the sweep's ranks, in the design layer): in Libs, not Libs.private or
+# Requires.private, because the layers are static archives and a consumer's
+# `pkg-config --libs` (without --static) must still link every symbol they
+# reach (anything that reaches the scenario registry reaches mpi_send).
+if(SLIDESIM_WITH_MPI)
+  foreach(flag IN LISTS MPI_Fortran_LINK_FLAGS MPI_Fortran_LIBRARIES)
+    string(APPEND pc_libs " ${flag}")
+  endforeach()
+endif()
 string(APPEND pc_libs " ${OpenMP_Fortran_FLAGS}")
 if(SLIDESIM_LTO_ON)   # the plain code of the fat LTO objects (README)
   string(APPEND pc_libs " -fno-lto")
