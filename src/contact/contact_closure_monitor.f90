@@ -50,11 +50,13 @@ contains
   !> frame_1d: the contact frame K_1D on body A; surface_2 with side_2 on
   !> the body frame frame_b at the scalars contact = [u2, v2]; chart: the
   !> scalar of the chart of a surface with charts (module comment), whose
-  !> value names the surface's own chart at the start.
-  function new_closure_monitor(name, frame_1d, frame_b, surface_2, side_2, contact, gaps, chart) result(e)
+  !> value names the surface's own chart at the start, or own_chart does
+  !> (a contact that starts in another chart).
+  function new_closure_monitor(name, frame_1d, frame_b, surface_2, side_2, contact, gaps, chart, own_chart) &
+      result(e)
     character(len=*), intent(in) :: name
     integer, intent(in) :: frame_1d, frame_b, contact(2), gaps(5)
-    integer, intent(in), optional :: chart
+    integer, intent(in), optional :: chart, own_chart
     class(surface_t), intent(in) :: surface_2
     real(wp), intent(in) :: side_2
     type(closure_monitor_t) :: e
@@ -69,6 +71,10 @@ contains
       if (surface_2%has_charts()) then
         allocate (e%own_surface, source=surface_2)
         e%var_chart = chart
+        if (present(own_chart)) then
+          e%own_chart = own_chart
+          e%chart_in_use = own_chart
+        end if
       end if
     end if
   end function new_closure_monitor

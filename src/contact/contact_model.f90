@@ -52,7 +52,7 @@ module contact_model
   use kinetostatics_mechanism, only: mechanism_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use contact_pair, only: contact_pair_t, add_contact_pair, add_open_contact_pair, place_contact_pair, &
-    place_open_contact_pair, check_contact_branch
+    place_open_contact_pair, check_contact_branch, starts_in_other_chart
   use contact_rolling, only: new_no_slip
   use contact_velocity_level, only: new_velocity_contact
   use contact_factory, only: shape_t, body_spec_t, body_from_spec
@@ -478,6 +478,13 @@ contains
     real(wp) :: rel(3, 3), x2(3)
     character(len=2) :: digit
     associate (cm => closed%ode%mechanism, cl => closed%links(k))
+      if (starts_in_other_chart(cm, cl%pair)) then
+        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': at velocity level a contact '// &
+          'cannot start at (within 10 degrees of) a pole of its shapes'' parametrisation (its surfaces do not '// &
+          'change charts there); start it off the pole, turn the shape (angles_deg of its &shape), or use '// &
+          'level = ''position''')
+        return
+      end if
       ! contact coordinates and the pose of B relative to A in the closed model
       rel = matmul(transpose(cm%frames(cl%frame_a)%rot), cm%frames(cl%frame_b)%rot)
       contact(1) = m%add_scalar(c%name//'.u1', cm%scalars(cl%coordinates(1))%q)

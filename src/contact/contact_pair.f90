@@ -37,8 +37,13 @@
 !> closure; a closure monitor (contact_closure_monitor, record-only: evaluated
 !> for records, not in the right-hand side) measures g1..g5 between K_1D and
 !> S2's frame on body B's pose. Charts: (u1, v1),
-!> (u2, v2) are the surfaces' own parameters (an ellipsoid's poles are
-!> singular, as in the loop's S1 and S2), phi is unbounded.
+!> (u2, v2) are the parameters of a chart of each surface, phi is unbounded.
+!> Near a pole of a surface with charts (an ellipsoid's) S1 changes chart
+!> and phi takes back its Darboux frame's turn (kinetostatics_surface_joint,
+!> "Charts"), the inverse S2 likewise; in the loop S12 changes chart and the
+!> free rotation's first angle (about S12's normal) takes the turn, while S1
+!> and S2, whose (u, v) are dependent, change chart without a turn (the
+!> closure and the no-slip condition do not see their frames' turn).
 module contact_pair
   use base_kinds, only: wp
   use base_text, only: format_short
@@ -48,7 +53,7 @@ module contact_pair
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use kinetostatics_joints, only: new_prismatic, new_revolute
   use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
-  use kinetostatics_inverse_surface_joint, only: new_inverse_surface_joint
+  use kinetostatics_inverse_surface_joint, only: inverse_surface_joint_t, new_inverse_surface_joint
   use kinetostatics_plane_joint, only: new_plane_joint
   use geometry_elementary, only: plane_t
   use kinetostatics_free_rotation, only: free_rotation_t, new_free_rotation
@@ -59,7 +64,7 @@ module contact_pair
   implicit none (type, external)
   private
   public :: contact_pair_t, add_contact_pair, add_open_contact_pair, place_contact_pair, place_open_contact_pair
-  public :: check_contact_branch
+  public :: check_contact_branch, starts_in_other_chart
 
   !> What one contact expanded into: indices into the mechanism's frames,
   !> scalars and elements.
@@ -125,7 +130,7 @@ contains
     pair%u12 = m%add_scalar(name//'.u12')
     pair%v12 = m%add_scalar(name//'.v12')
     call m%add_element(new_surface_joint(name//'.s12', frame_a, pair%frame_12, pair%u12, pair%v12, surface_1, &
-                                         side_1, 1.0_wp, 0.0_wp))
+                                         side_1, 1.0_wp, 0.0_wp, charts=.true.))
     pair%element_s12 = m%n_elements
     pair%frame_lift = m%add_frame(name//'.lift')
     pair%z12 = m%add_scalar(name//'.z12')
@@ -137,13 +142,14 @@ contains
     end do
     call m%add_element(new_free_rotation(name//'.turn', pair%frame_lift, pair%frame_b, pair%angles, ez, identity))
     pair%element_rotation = m%n_elements
+    call set_turn_after(m, pair%element_s12, pair%angles(1))   ! its first axis is S12's normal
     ! the two contact frames
     call add_contact_frame_1(m, surface_1, pair, status)
     pair%frame_2d = m%add_frame(name//'.2D')
     pair%u2 = m%add_scalar(name//'.u2')
     pair%v2 = m%add_scalar(name//'.v2')
     call m%add_element(new_surface_joint(name//'.s2', pair%frame_b, pair%frame_2d, pair%u2, pair%v2, surface_2, &
-                                         side_2, 1.0_wp, 0.0_wp))
+                                         side_2, 1.0_wp, 0.0_wp, charts=.true.))
     pair%element_s2 = m%n_elements
     ! closure (3.86)
     call add_gap_scalars(m, pair)
@@ -185,16 +191,17 @@ contains
     pair%frame_turn = m%add_frame(name//'.turn')
     pair%phi = m%add_scalar(name//'.phi')
     call m%add_element(new_revolute(name//'.turn', pair%frame_1d, pair%frame_turn, pair%phi, ez))
+    call set_turn_after(m, pair%element_s1, pair%phi)
     pair%frame_b = m%add_frame(body_b)
     pair%u2 = m%add_scalar(name//'.u2')
     pair%v2 = m%add_scalar(name//'.v2')
-    pair%chart = m%add_scalar(name//'.chart', 3.0_wp)   ! an ellipsoid's pole axis (B's z)
+    pair%chart = m%add_scalar(name//'.chart', 3.0_wp)   ! an ellipsoid's pole axis (B's z: its own chart)
     call m%add_element(new_inverse_surface_joint(name//'.s2', pair%frame_turn, pair%frame_b, pair%u2, pair%v2, &
                                                  surface_2, side_2, 1.0_wp, 0.0_wp, turn_over, pair%phi, pair%chart))
     pair%element_s2 = m%n_elements
     call add_gap_scalars(m, pair)
     call m%add_element(new_closure_monitor(name//'.closure', pair%frame_1d, pair%frame_b, surface_2, side_2, &
-                                           [pair%u2, pair%v2], pair%gaps, pair%chart))
+                                           [pair%u2, pair%v2], pair%gaps, pair%chart, own_chart=3))
   end subroutine add_open_contact_pair
 
   !> Checks the sides and sets what both chains share.
@@ -239,9 +246,20 @@ contains
       end if
     end select
     call m%add_element(new_surface_joint(pair%name//'.s1', pair%frame_a, pair%frame_1d, pair%u1, pair%v1, &
-                                         surface_1, pair%side_1, 1.0_wp, 0.0_wp))
+                                         surface_1, pair%side_1, 1.0_wp, 0.0_wp, charts=.true.))
     pair%element_s1 = m%n_elements
   end subroutine add_contact_frame_1
+
+  !> The turn about the normal that follows the surface joint at element k
+  !> (a surface with charts: kinetostatics_surface_joint, "Charts").
+  subroutine set_turn_after(m, k, turn)
+    type(mechanism_t), intent(inout) :: m
+    integer, intent(in) :: k, turn
+    select type (joint => m%elements(k)%e)
+    type is (surface_joint_t)
+      if (joint%charts) joint%var_turn = turn
+    end select
+  end subroutine set_turn_after
 
   !> The scalars of the closure functions g1..g5.
   subroutine add_gap_scalars(m, pair)
@@ -270,6 +288,31 @@ contains
     x2 = mc%frames(closed%frame_2d)%rot(:, 1)
     m%scalars(pair%phi)%q = atan2(dot_product(x2, mc%frames(closed%frame_1d)%rot(:, 2)), &
                                   dot_product(x2, mc%frames(closed%frame_1d)%rot(:, 1)))
+    ! the charts the loop started in (start_chart), if it changed any
+    select type (loop_s1 => mc%elements(closed%element_s1)%e)
+    type is (surface_joint_t)
+      if (loop_s1%rebases > 0) then
+        select type (s1 => m%elements(pair%element_s1)%e)
+        type is (surface_joint_t)
+          s1%surface = loop_s1%surface
+          s1%chart = loop_s1%chart
+          s1%rebases = loop_s1%rebases
+          s1%chart_index = loop_s1%chart_index
+        end select
+      end if
+    end select
+    select type (loop_s2 => mc%elements(closed%element_s2)%e)
+    type is (surface_joint_t)
+      if (loop_s2%rebases > 0) then
+        select type (s2 => m%elements(pair%element_s2)%e)
+        type is (inverse_surface_joint_t)
+          s2%joint%surface = loop_s2%surface
+          s2%joint%chart = loop_s2%chart
+          s2%rebases = loop_s2%rebases
+          m%scalars(pair%chart)%q = loop_s2%chart_index
+        end select
+      end if
+    end select
   end subroutine place_open_contact_pair
 
   !> Start values of the pair from the poses of A and B (world rotation and
@@ -328,7 +371,43 @@ contains
     type is (free_rotation_t)
       turn%ref_out = matmul(transpose(turn%ref_in), rel)
     end select
+    call start_chart(m, pair%element_s12)
+    call start_chart(m, pair%element_s1)
+    call start_chart(m, pair%element_s2)
   end subroutine place_contact_pair
+
+  !> Whether a surface joint of the loop pair changed chart at its placement
+  !> (start_chart): its (u, v) are then not the surface's own parameters.
+  logical function starts_in_other_chart(m, pair) result(other)
+    type(mechanism_t), intent(in) :: m
+    type(contact_pair_t), intent(in) :: pair
+    integer :: k, joints(3)
+    other = .false.
+    joints = [pair%element_s12, pair%element_s1, pair%element_s2]
+    do k = 1, 3
+      select type (joint => m%elements(joints(k))%e)
+      type is (surface_joint_t)
+        other = other .or. joint%rebases > 0
+      end select
+    end do
+  end function starts_in_other_chart
+
+  !> A contact that starts at (or within the margin of) a pole of a surface
+  !> with charts: its surface joint changes chart before the loop is closed
+  !> (at rest: the rates are zero), the turn after it taking the Darboux
+  !> frame's turn (kinetostatics_surface_joint, "Charts").
+  subroutine start_chart(m, k)
+    type(mechanism_t), intent(inout) :: m
+    integer, intent(in) :: k
+    select type (joint => m%elements(k)%e)
+    type is (surface_joint_t)
+      if (.not. joint%charts) return
+      if (joint%chart_margin(m%scalars(joint%var_v)%q) > 0) return
+      m%scalars(joint%var_u)%qd = 0
+      m%scalars(joint%var_v)%qd = 0
+      call joint%rebase(m%scalars)
+    end select
+  end subroutine start_chart
 
   !> At the placement, before any closure: S2's normal (side_2) at its support
   !> point against S1's normal n_b (side_1, in B's coordinates) is -n_b on

@@ -42,7 +42,8 @@
 !> of a surface with charts (geometry_surface's chart hooks; the ellipsoid's:
 !> cos v - cos(1.4 rad)) watches the surface's chart_margin(v) (kinetostatics_
 !> state's chart interface) and at its zero changes to the chart
-!> (chart_toward, chart: r_B = P r') in which the contact point lies farthest
+!> (chart_toward, chart: r_B = P r'; the forward joint's change_chart) in
+!> which the contact point lies farthest
 !> from the poles (an ellipsoid's: the one with its poles on the body axis
 !> along which the point lies least far out, within 35 degrees of the new
 !> chart's equator). The motion
@@ -74,9 +75,8 @@ module kinetostatics_inverse_surface_joint
     real(wp) :: geo(3, 12) = 0
     real(wp) :: omega_rel(3) = 0, w_rel(3) = 0   ! at the last velocity pass
     ! charts (module comment): only for a surface with charts after a turn
+    ! (B's surface in its own chart and P, r_B = P r_chart: the joint's own_surface, chart)
     logical :: charts = .false.
-    class(surface_t), allocatable :: own_surface   ! B's surface in its own chart
-    real(wp) :: chart(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])   ! r_B = P r_chart
     integer :: var_turn = 0, var_chart = 0
     integer :: rebases = 0
   contains
@@ -122,7 +122,7 @@ contains
     if (present(turn) .and. present(chart_scalar)) then
       if (surface%has_charts() .and. abs(abs(e%mount(3, 3)) - 1) <= 1e-14_wp) then
         e%charts = .true.
-        allocate (e%own_surface, source=surface)
+        allocate (e%joint%own_surface, source=surface)
         e%var_turn = turn
         e%var_chart = chart_scalar
       end if
@@ -156,7 +156,8 @@ contains
         o%rot = x
       else
         do k = 1, 3
-          o%rot(:, k) = x(:, 1)*self%chart(k, 1) + x(:, 2)*self%chart(k, 2) + x(:, 3)*self%chart(k, 3)
+          o%rot(:, k) = x(:, 1)*self%joint%chart(k, 1) + x(:, 2)*self%joint%chart(k, 2) &
+                        + x(:, 3)*self%joint%chart(k, 3)
         end do
       end if
       g(:, COL_P) = turned(pt%r)
@@ -263,7 +264,7 @@ contains
   pure real(wp) function isj_chart_margin(self, angle) result(g)
     class(inverse_surface_joint_t), intent(in) :: self
     real(wp), intent(in) :: angle
-    g = self%own_surface%chart_margin(angle)
+    g = self%joint%own_surface%chart_margin(angle)
   end function isj_chart_margin
 
   !> Changes to the chart whose poles are farthest from the contact point
@@ -272,47 +273,13 @@ contains
     class(inverse_surface_joint_t), intent(inout) :: self
     type(scalar_state_t), intent(inout) :: scalars(:)
     type(status_t) :: status
-    class(surface_t), allocatable :: chart_surface
-    type(surface_joint_t) :: trial
-    real(wp) :: ud, vd, u, v, rates(3, 6), r(3), w(3), omega_old(3), omega_new(3), d_old(3, 3), d_new(3, 3), &
-                p(3, 3), tu(3), tv(3), a(2, 2), rhs(2), det, ud_new, vd_new, turn(3, 3), axis(3)
+    real(wp) :: q(2), qd(2), omega_old(3), omega_new(3), d_old(3, 3), d_new(3, 3), turn(3, 3), axis(3)
     integer :: k
     if (.not. self%charts) return
-    ud = scalars(self%var_u)%qd
-    vd = scalars(self%var_v)%qd
-    ! the old chart's geometry in B's coordinates (P times the chart's)
-    call self%joint%local_geometry(scalars(self%var_u)%q, scalars(self%var_v)%q, rates, status)
+    q = [scalars(self%var_u)%q, scalars(self%var_v)%q]
+    qd = [scalars(self%var_u)%qd, scalars(self%var_v)%qd]
+    call self%joint%change_chart(q, qd, d_old, d_new, omega_old, omega_new, k, status)
     if (.not. status%ok()) return
-    associate (pt => self%joint%point)
-      r = matmul(self%chart, pt%r)
-      w = matmul(self%chart, pt%ru*ud + pt%rv*vd)            ! the point's velocity over the surface
-      omega_old = matmul(self%chart, rates(:, 1)*ud + rates(:, 2)*vd)   ! the Darboux frame's turn rate
-      d_old = matmul(self%chart, self%joint%frame%r)
-    end associate
-    ! the chart in which the point lies farthest from the poles
-    k = self%own_surface%chart_toward(r)
-    call self%own_surface%chart(k, chart_surface, p)
-    r = matmul(transpose(p), r)   ! the point in the new chart's coordinates
-    call chart_surface%chart_parameters(r, u, v, status)
-    if (.not. status%ok()) return
-    ! the new chart on a copy: if it cannot be evaluated nothing changes (the
-    ! run then meets the pole and fails there, named by the model's diagnosis)
-    trial = self%joint
-    trial%surface = chart_surface
-    call trial%local_geometry(u, v, rates, status)
-    if (.not. status%ok()) return
-    self%joint = trial
-    self%chart = p
-    tu = matmul(p, self%joint%point%ru)
-    tv = matmul(p, self%joint%point%rv)
-    d_new = matmul(p, self%joint%frame%r)
-    ! (u', v') of the same velocity over the surface (least squares: w is tangent)
-    a = reshape([dot_product(tu, tu), dot_product(tv, tu), dot_product(tu, tv), dot_product(tv, tv)], [2, 2])
-    rhs = [dot_product(tu, w), dot_product(tv, w)]
-    det = a(1, 1)*a(2, 2) - a(1, 2)*a(2, 1)
-    ud_new = (rhs(1)*a(2, 2) - a(1, 2)*rhs(2))/det
-    vd_new = (a(1, 1)*rhs(2) - a(2, 1)*rhs(1))/det
-    omega_new = matmul(p, rates(:, 1)*ud_new + rates(:, 2)*vd_new)
     ! phi: K_B = K_in M D^T is kept when K_in turns by M D_old^T D_new M^T
     ! (a turn about z), and omega_B when phi' takes the change of the
     ! Darboux frame's turn rate along K_in's z (in B: D_old M^T e_z)
@@ -323,10 +290,10 @@ contains
       phi%qd = phi%qd + dot_product(axis, omega_new - omega_old)
       phi%qdd = 0
     end associate
-    scalars(self%var_u)%q = u
-    scalars(self%var_v)%q = v
-    scalars(self%var_u)%qd = ud_new
-    scalars(self%var_v)%qd = vd_new
+    scalars(self%var_u)%q = q(1)
+    scalars(self%var_v)%q = q(2)
+    scalars(self%var_u)%qd = qd(1)
+    scalars(self%var_v)%qd = qd(2)
     scalars(self%var_u)%qdd = 0
     scalars(self%var_v)%qdd = 0
     scalars(self%var_chart)%q = k

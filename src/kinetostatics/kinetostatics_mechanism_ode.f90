@@ -67,6 +67,7 @@ module kinetostatics_mechanism_ode
     integer, allocatable :: edge_coordinate(:) ! position in y of each edge's u or v (0: a dependent one)
     integer, allocatable :: charts(:)          ! elements whose charts are watched
     integer, allocatable :: chart_angle(:)     ! position in y of each one's deciding coordinate
+                                               ! (minus its scalar index: a dependent one)
     integer :: chart_changes = 0
   contains
     procedure :: state_size, initial_state, check_start, start_series

@@ -17,12 +17,14 @@
 !>                   the run fails (STATUS_DOMAIN, check_lift_off);
 !>   force laws      each law's own (kinetostatics_force_law), handled by the
 !>                   law (e.g. switch itself and ask for a restart);
-!>   charts          the chart margin of every element with a chart whose
-!>                   deciding coordinate is integrated (a free rotation:
-!>                   cos q2 - cos(limit), kinetostatics_free_rotation; an
-!>                   ellipsoid's inverse surface joint: cos v - cos(limit)): at
-!>                   zero the chart is re-based on the current pose (q and s
-!>                   change, the motion does not) and the integrator restarts.
+!>   charts          the chart margin of every element with a chart (a free
+!>                   rotation: cos q2 - cos(limit), kinetostatics_free_rotation;
+!>                   an ellipsoid's surface joints: cos v - cos(limit)), whose
+!>                   deciding coordinate is integrated (from y) or dependent
+!>                   (a loop's (u, v): from the closure, like a dependent
+!>                   edge): at zero the chart is re-based on the current pose
+!>                   (q and s or the dependent coordinates change, the motion
+!>                   does not) and the integrator restarts.
 !> Root values need the state at (t, y): an edge whose u or v is a generalized
 !> coordinate (an open chain's surface joint) is y itself, other edges need
 !> the closure, the laws positions and velocities, lift-off the whole
@@ -52,7 +54,8 @@ submodule (kinetostatics_mechanism_ode) kinetostatics_mechanism_ode_events
 
 contains
 
-  !> The elements with a chart decided by an integrated coordinate.
+  !> The elements with a chart decided by an integrated coordinate (its
+  !> position in y) or a dependent one (minus its scalar index).
   subroutine find_charts(self)
     class(mechanism_ode_t), intent(inout) :: self
     integer :: k, a
@@ -61,12 +64,36 @@ contains
       do k = 1, m%n_elements
         a = m%elements(k)%e%chart_angle()
         if (a == 0) cycle
-        if (.not. any(m%q == a)) cycle
+        if (any(m%q == a)) then
+          self%chart_angle = [self%chart_angle, findloc(m%q, a, dim=1)]
+        else if (allocated(m%beta)) then
+          if (.not. any(m%beta == a)) cycle
+          self%chart_angle = [self%chart_angle, -a]
+        else
+          cycle
+        end if
         self%charts = [self%charts, k]
-        self%chart_angle = [self%chart_angle, findloc(m%q, a, dim=1)]
       end do
     end associate
   end subroutine find_charts
+
+  !> The chart margin of the k-th watched element: its deciding coordinate
+  !> from y, or (dependent) from the closure's scalars if they are set
+  !> (`closed`), else the last value stays.
+  subroutine chart_root(self, y, k, closed, g)
+    class(mechanism_ode_t), intent(in) :: self
+    real(wp), intent(in) :: y(:)
+    integer, intent(in) :: k
+    logical, intent(in) :: closed
+    real(wp), intent(inout) :: g
+    associate (m => self%mechanism, a => self%chart_angle(k))
+      if (a > 0) then
+        g = m%elements(self%charts(k))%e%chart_margin(y(a))
+      else if (closed) then
+        g = m%elements(self%charts(k))%e%chart_margin(m%scalars(-a)%q)
+      end if
+    end associate
+  end subroutine chart_root
 
   module procedure prepare
     integer :: k, n_roots_before
@@ -151,8 +178,9 @@ contains
       call self%mechanism%set_positions(y(1:f), status)
       if (status%ok()) call self%mechanism%set_velocities(y(f + 1:n))
       if (status%ok()) call self%mechanism%evaluate_laws(t, status)
-    case default   ! only the edges: a position pass unless each is a coordinate in y
-      if (any(self%edge_coordinate == 0)) call self%mechanism%set_positions(y(1:f), status)
+    case default   ! only the edges and charts: a position pass unless each is a coordinate in y
+      if (any(self%edge_coordinate == 0) .or. any(self%chart_angle < 0)) &
+        call self%mechanism%set_positions(y(1:f), status)
     end select
     if (status%ok()) then
       call root_values(self, y, level)
@@ -337,7 +365,7 @@ contains
     if (level < 1) then   ! the charts from y too
       i = size(self%cache_g) - size(self%charts)
       do k = 1, size(self%charts)
-        self%cache_g(i + k) = self%mechanism%elements(self%charts(k))%e%chart_margin(y(self%chart_angle(k)))
+        call chart_root(self, y, k, .false., self%cache_g(i + k))
       end do
       return
     end if
@@ -364,7 +392,7 @@ contains
       if (level >= 2 .and. size(m%law_roots) > 0) self%cache_g(i + 1:i + size(m%law_roots)) = m%law_roots
       i = i + size(m%law_roots)
       do k = 1, size(self%charts)
-        self%cache_g(i + k) = m%elements(self%charts(k))%e%chart_margin(y(self%chart_angle(k)))
+        call chart_root(self, y, k, .true., self%cache_g(i + k))
       end do
     end associate
     if (level >= 3) self%root_scale(:) = max(self%root_scale, abs(self%cache_g))

@@ -37,6 +37,29 @@
 !> eager evaluation). `lazy = .false.` computes everything in the position
 !> pass (for owners that read the components directly); singular points are
 !> always evaluated at once (their frame needs order 3 and may fail).
+!>
+!> Charts: a surface's parametrisation may be singular at poles (an
+!> ellipsoid's (3.57) at v = +-pi/2, r_u = 0: the Darboux frame and u' are
+!> undefined there), where the same surface has other charts that are
+!> regular (geometry_surface's chart hooks). `change_chart` moves the joint
+!> to the chart (chart_toward, chart: r = P r') in which its point lies
+!> farthest from the poles, keeping the motion: (u, v) become the new
+!> chart's parameters of the same point, (u', v') those of the same
+!> velocity over the surface (least squares: it is tangent). The joint then
+!> evaluates the chart's surface on the input frame turned by P (R_1 P): the
+!> point, its tangent plane and its normal are unchanged, and the two
+!> charts' Darboux frames differ by a turn beta about the normal. A joint
+!> built with `charts` (a contact's S1 on body 1) watches chart_margin(v)
+!> (kinetostatics_state's chart interface) and changes at its zero; its
+!> output frame then turns by beta, which the turn about the output's z
+!> that follows it (`turn`: the open chain's phi, the loop's first
+!> free-rotation angle, both about the normal) takes back, phi - beta, and
+!> phi' the difference of the two frames' turn rates about the normal, so
+!> what the turn carries keeps its pose and motion. Without a turn (the
+!> loop's S1, whose (u, v) are dependent coordinates) the contact frame
+!> turns by beta about its normal, which the closure (3.86) and the no-slip
+!> condition do not see. The inverse surface joint changes the charts of
+!> its surface with the same `change_chart`.
 module kinetostatics_surface_joint
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use base_kinds, only: wp
@@ -68,6 +91,14 @@ module kinetostatics_surface_joint
     logical :: lazy = .true.
     logical :: complete = .false.
     real(wp) :: u = 0, v = 0, rot_in(3, 3) = 0
+    ! charts (module comment): the surface in its own chart and P (r = P r'),
+    ! used after the first change; `charts`: the joint changes them itself
+    class(surface_t), allocatable :: own_surface
+    real(wp) :: chart(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+    logical :: charts = .false.
+    integer :: var_turn = 0
+    integer :: rebases = 0
+    integer :: chart_index = 0   ! chart_toward's name of the chart in use (0: the own one, never changed)
   contains
     procedure :: position => sj_position
     procedure :: velocity => sj_velocity
@@ -80,6 +111,10 @@ module kinetostatics_surface_joint
     procedure :: domain_edges => sj_domain_edges
     procedure :: set_eager => sj_set_eager
     procedure :: singular_note => sj_singular_note
+    procedure :: change_chart => sj_change_chart
+    procedure :: chart_angle => sj_chart_angle
+    procedure :: chart_margin => sj_chart_margin
+    procedure :: rebase => sj_rebase
   end type surface_joint_t
 
 contains
@@ -101,12 +136,17 @@ contains
     end if
   end function domain_edge_margin
 
-  function new_surface_joint(name, frame_in, frame_out, var_u, var_v, surface, sigma, alpha_u, alpha_v) &
-      result(e)
+  !> charts: a surface with charts changes them near its poles (module
+  !> comment); turn: the scalar of the turn about the output's z that
+  !> follows the joint, if any.
+  function new_surface_joint(name, frame_in, frame_out, var_u, var_v, surface, sigma, alpha_u, alpha_v, &
+                             charts, turn) result(e)
     character(len=*), intent(in) :: name
     integer, intent(in) :: frame_in, frame_out, var_u, var_v
     class(surface_t), intent(in) :: surface
     real(wp), intent(in) :: sigma, alpha_u, alpha_v
+    logical, intent(in), optional :: charts
+    integer, intent(in), optional :: turn
     type(surface_joint_t) :: e
     e%name = name
     e%frame_in = frame_in
@@ -117,6 +157,13 @@ contains
     e%sigma = sigma
     e%alpha_u = alpha_u
     e%alpha_v = alpha_v
+    if (present(charts)) then
+      if (charts .and. surface%has_charts()) then
+        e%charts = .true.
+        allocate (e%own_surface, source=surface)
+        if (present(turn)) e%var_turn = turn
+      end if
+    end if
   end function new_surface_joint
 
   !> W_u, W_v (K_1 coordinates) from a Darboux frame.
@@ -159,7 +206,11 @@ contains
     if (.not. status%ok()) return
     self%u = u
     self%v = v
-    self%rot_in = frames(self%frame_in)%rot
+    if (self%rebases == 0) then
+      self%rot_in = frames(self%frame_in)%rot
+    else
+      self%rot_in = matmul(frames(self%frame_in)%rot, self%chart)   ! the chart's surface on R_1 P
+    end if
     self%complete = .false.
     singular = .true.
     if (self%lazy) then
@@ -177,8 +228,8 @@ contains
       self%complete = .true.
     end if
     associate (i => frames(self%frame_in), o => frames(self%frame_out))
-      self%p = matmul(i%rot, self%point%r)
-      o%rot = matmul(i%rot, axes)
+      self%p = matmul(self%rot_in, self%point%r)
+      o%rot = matmul(self%rot_in, axes)
       o%r = i%r + self%p
     end associate
   end subroutine sj_position
@@ -445,4 +496,100 @@ contains
       '(|r_u|^2 + |r_v|^2) = '//format_short(ratio)//'; an ellipsoid''s poles, an apex) on the '// &
       self%surface%describe()//': orient the body or the shape so that the contact stays away from it'
   end function sj_singular_note
+  !> Changes to the chart in which the point at q = (u, v) lies farthest from
+  !> the poles, keeping the point and its velocity over the surface (module
+  !> comment, "Charts"): q and qd become the new chart's. d_old, d_new: the
+  !> two charts' Darboux axes, omega_old, omega_new: their turn rates
+  !> W_u u' + W_v v', all in the surface's own coordinates; k: the chart
+  !> (chart_toward). If the new chart cannot be evaluated nothing changes
+  !> (status says why; the run then meets the pole and fails there).
+  pure subroutine sj_change_chart(self, q, qd, d_old, d_new, omega_old, omega_new, k, status)
+    class(surface_joint_t), intent(inout) :: self
+    real(wp), intent(inout) :: q(2), qd(2)
+    real(wp), intent(out) :: d_old(3, 3), d_new(3, 3), omega_old(3), omega_new(3)
+    integer, intent(out) :: k
+    type(status_t), intent(out) :: status
+    class(surface_t), allocatable :: chart_surface, old_surface
+    real(wp) :: u, v, rates(3, 6), r(3), w(3), p(3, 3), tu(3), tv(3), a(2, 2), rhs(2), det
+    ! the old chart's geometry in the surface's own coordinates (P times the chart's)
+    call self%local_geometry(q(1), q(2), rates, status)
+    if (.not. status%ok()) return
+    associate (pt => self%point)
+      r = matmul(self%chart, pt%r)
+      w = matmul(self%chart, pt%ru*qd(1) + pt%rv*qd(2))                    ! the point's velocity over the surface
+      omega_old = matmul(self%chart, rates(:, 1)*qd(1) + rates(:, 2)*qd(2))   ! the Darboux frame's turn rate
+      d_old = matmul(self%chart, self%frame%r)
+    end associate
+    k = self%own_surface%chart_toward(r)
+    call self%own_surface%chart(k, chart_surface, p)
+    r = matmul(transpose(p), r)   ! the point in the new chart's coordinates
+    call chart_surface%chart_parameters(r, u, v, status)
+    if (.not. status%ok()) return
+    call move_alloc(self%surface, old_surface)
+    call move_alloc(chart_surface, self%surface)
+    call self%local_geometry(u, v, rates, status)
+    if (.not. status%ok()) then
+      call move_alloc(old_surface, self%surface)
+      return
+    end if
+    self%chart = p
+    tu = matmul(p, self%point%ru)
+    tv = matmul(p, self%point%rv)
+    d_new = matmul(p, self%frame%r)
+    ! (u', v') of the same velocity over the surface (least squares: w is tangent)
+    a = reshape([dot_product(tu, tu), dot_product(tv, tu), dot_product(tu, tv), dot_product(tv, tv)], [2, 2])
+    rhs = [dot_product(tu, w), dot_product(tv, w)]
+    det = a(1, 1)*a(2, 2) - a(1, 2)*a(2, 1)
+    q = [u, v]
+    qd = [(rhs(1)*a(2, 2) - a(1, 2)*rhs(2))/det, (a(1, 1)*rhs(2) - a(2, 1)*rhs(1))/det]
+    omega_new = matmul(p, rates(:, 1)*qd(1) + rates(:, 2)*qd(2))
+    self%rebases = self%rebases + 1
+    self%chart_index = k
+  end subroutine sj_change_chart
+
+  !> v decides the chart (module comment), if the joint changes charts.
+  pure integer function sj_chart_angle(self) result(k)
+    class(surface_joint_t), intent(in) :: self
+    k = 0
+    if (self%charts) k = self%var_v
+  end function sj_chart_angle
+
+  !> The surface's chart margin at v: positive inside the chart, zero at its edge.
+  pure real(wp) function sj_chart_margin(self, angle) result(g)
+    class(surface_joint_t), intent(in) :: self
+    real(wp), intent(in) :: angle
+    g = self%own_surface%chart_margin(angle)
+  end function sj_chart_margin
+
+  !> Changes the chart (module comment) with the positions and rates set:
+  !> (u, v) and their rates become the new chart's, and the turn that
+  !> follows takes back the Darboux frame's turn beta about the normal,
+  !> phi - beta, and the change of its turn rate.
+  pure subroutine sj_rebase(self, scalars)
+    class(surface_joint_t), intent(inout) :: self
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t) :: status
+    real(wp) :: q(2), qd(2), d_old(3, 3), d_new(3, 3), omega_old(3), omega_new(3), turn(3, 3)
+    integer :: k
+    if (.not. self%charts) return
+    q = [scalars(self%var_u)%q, scalars(self%var_v)%q]
+    qd = [scalars(self%var_u)%qd, scalars(self%var_v)%qd]
+    call self%change_chart(q, qd, d_old, d_new, omega_old, omega_new, k, status)
+    if (.not. status%ok()) return
+    if (self%var_turn > 0) then
+      turn = matmul(transpose(d_old), d_new)   ! D_new = D_old Rz(beta)
+      associate (phi => scalars(self%var_turn))
+        phi%q = phi%q - atan2(turn(2, 1), turn(1, 1))
+        phi%qd = phi%qd + dot_product(d_old(:, 3), omega_old - omega_new)
+        phi%qdd = 0
+      end associate
+    end if
+    scalars(self%var_u)%q = q(1)
+    scalars(self%var_v)%q = q(2)
+    scalars(self%var_u)%qd = qd(1)
+    scalars(self%var_v)%qd = qd(2)
+    scalars(self%var_u)%qdd = 0
+    scalars(self%var_v)%qdd = 0
+    self%complete = .false.
+  end subroutine sj_rebase
 end module kinetostatics_surface_joint

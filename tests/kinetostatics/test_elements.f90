@@ -2,16 +2,19 @@
 !> velocity map = d/dt of the position map, acceleration map = d/dt of the
 !> velocity map (fourth-order central differences), and the force map conserves
 !> power (3.6). The mass element: d'Alembert power = -dT/dt, weight power = -dV/dt.
+!> The surface joint's chart change (a contact's S1 followed by its turn phi)
+!> keeps the turned frame's pose and motion to rounding near an ellipsoid's
+!> poles, and its maps in the new chart pass the same checks.
 program test_elements
   use base_kinds, only: wp
   use base_status, only: status_t
   use base_vector, only: rot_x, rot_z
   use testing, only: check, check_close, finish_tests
-  use element_checks, only: check_element, frame_motion, motion_step, fd_tol
+  use element_checks, only: check_element, frame_motion, scalar_motion, motion_step, fd_tol
   use geometry_surface, only: surface_t
   use geometry_elementary, only: ellipsoid_t, paraboloid_t, elliptic_cylinder_t, apex_paraboloid_t
   use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
-  use kinetostatics_joints, only: new_rigid_offset, new_revolute, new_prismatic, new_spherical
+  use kinetostatics_joints, only: new_rigid_offset, new_revolute, new_prismatic, new_spherical, revolute_t
   use kinetostatics_surface_joint, only: new_surface_joint, surface_joint_t
   use kinetostatics_measurements, only: new_measurement, MEASURE_POINT_POINT, MEASURE_PLANE_POINT, &
     MEASURE_PLANE_PLANE, MEASURE_LINE_LINE, new_point_coordinates, measurement_t, point_coordinates_t
@@ -61,6 +64,7 @@ program test_elements
   call mass_checks()
   call singular_point()
   call lazy_equals_eager()
+  call chart_change()
   call point_coordinates_equal_plane_points(.true.)
   call point_coordinates_equal_plane_points(.false.)
   call finish_tests('test_elements')
@@ -182,6 +186,62 @@ contains
            .and. all(fl(2)%alpha == fe(2)%alpha) .and. all(fl(2)%a == fe(2)%a)
     call check(st%ok() .and. same, 'surface joint: lazy geometry = eager geometry to the last bit')
   end subroutine lazy_equals_eager
+
+  !> The chain K_1 -> S1(u, v) -> K_1D -> turn phi about z -> K_T near the
+  !> poles of an ellipsoid with three different semi-axes, at scattered
+  !> motions: the chart change (kinetostatics_surface_joint, "Charts") keeps
+  !> K_T's rotation, origin, angular and linear velocity (1e-13: rounding of
+  !> O(1) rotations, with the 2x2 solve of (u', v') near the pole) and moves
+  !> (u, v) off the new chart's poles (within 45 degrees of its equator).
+  subroutine chart_change()
+    type(surface_joint_t) :: joint
+    type(revolute_t) :: turn
+    type(frame_state_t) :: frames(3), before
+    type(scalar_state_t) :: scalars(3)
+    type(status_t) :: st
+    real(wp) :: err_pose, err_motion, v_after
+    integer :: k, changes
+    surface = ellipsoid_t(1.2_wp, 0.8_wp, 0.6_wp, st)
+    turn = new_revolute('turn', 2, 3, 3, [0.0_wp, 0.0_wp, 1.0_wp])
+    err_pose = 0
+    err_motion = 0
+    v_after = 0
+    changes = 0
+    do k = 1, 12
+      joint = new_surface_joint('sj', 1, 2, 1, 2, surface, merge(1.0_wp, -1.0_wp, k <= 6), 1.0_wp, 0.0_wp, &
+                                charts=.true., turn=3)
+      call frame_motion(1, 0.21_wp*k - 1.3_wp, frames(1))
+      call scalar_motion(1, 0.11_wp*k - 1.1_wp, scalars(1))
+      call scalar_motion(2, 0.17_wp*k - 1.6_wp, scalars(2))
+      call scalar_motion(3, 0.07_wp*k + 0.4_wp, scalars(3))
+      scalars(2)%q = merge(1.0_wp, -1.0_wp, mod(k, 2) == 0)*(1.42_wp + 0.01_wp*k)   ! near a pole
+      call check(joint%chart_margin(scalars(2)%q) < 0, 'the point lies beyond the chart''s margin')
+      call joint%position(frames, scalars, st)
+      call turn%position(frames, scalars, st)
+      call joint%velocity(frames, scalars)
+      call turn%velocity(frames, scalars)
+      before = frames(3)
+      call joint%rebase(scalars)
+      changes = changes + joint%rebases
+      v_after = max(v_after, abs(scalars(2)%q))
+      call joint%position(frames, scalars, st)
+      call turn%position(frames, scalars, st)
+      call joint%velocity(frames, scalars)
+      call turn%velocity(frames, scalars)
+      err_pose = max(err_pose, maxval(abs(frames(3)%rot - before%rot)), maxval(abs(frames(3)%r - before%r)))
+      err_motion = max(err_motion, maxval(abs(frames(3)%omega - before%omega))/max(1.0_wp, norm2(before%omega)), &
+                       maxval(abs(frames(3)%v - before%v))/max(1.0_wp, norm2(before%v)))
+      if (k == 5 .or. k == 8) call check_element('surface joint in the chart with poles on another axis', joint, &
+                                                 [1], [1, 2], [2], [integer ::], 0.3_wp)
+    end do
+    call check(st%ok(), 'chart changes evaluated: '//st%text())
+    call check(changes == 12, 'every chart change is made')
+    call check(v_after < 0.25_wp*4*atan(1.0_wp) + 1e-12_wp, 'after a change the point is within 45 degrees '// &
+               'of the new chart''s equator')
+    call check(err_pose < 1e-13_wp, 'a chart change keeps the turned frame''s rotation and origin')
+    call check(err_motion < 1e-13_wp, 'a chart change keeps the turned frame''s angular and linear velocity')
+    print '(a, 3es10.2)', 'chart changes (pose, motion errors, largest |v| after): ', err_pose, err_motion, v_after
+  end subroutine chart_change
 
   !> The point's coordinates in a frame give the numbers of three plane-point
   !> measurements along the frame's axes to the last bit (the closures of the
