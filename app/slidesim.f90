@@ -22,6 +22,7 @@ program slidesim
   use io_system, only: ignore_file_size_signal, guard_standard_streams, write_standard_output, &
                        standard_output_lost, standard_input_closed
   use io_namelist, only: nml_value_t, read_real_token, NUMBER_OK
+  use io_input_declarations, only: input_reference
   implicit none (type, external)
 
   type(status_t) :: status
@@ -131,6 +132,10 @@ program slidesim
         call write_standard_output(default_input())
       end if
       call end_with_output_checked()
+    case ('--input-reference')
+      call no_value()
+      call write_standard_output(input_reference())
+      call end_with_output_checked()
     case default
       call usage_error('unknown option "'//arg//'"')
     end select
@@ -237,6 +242,8 @@ contains
     call write_standard_output('  --ride-csv FILE           a ride: also its time series as CSV (speed, felt g, forces)')
     call write_standard_output('  --default-input [SCENARIO] print the built-in default input, or a commented')
     call write_standard_output('                            template of SCENARIO')
+    call write_standard_output('  --input-reference         print the tables of the declared input variables')
+    call write_standard_output('                            (docs/inputs.md, "Reference")')
     call write_standard_output('  --progress SECONDS        wall-clock seconds between progress lines of long')
     call write_standard_output('                            runs (default 2)')
     call write_standard_output('  -q, --quiet               no progress messages')

@@ -21,7 +21,7 @@ contains
     type(evaluation_config_t), intent(out) :: config
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
-    call open_group(input, 'evaluation', [character(len=13) :: 'fail_on_limit'], r, status)
+    call open_group(input, 'evaluation', r, status)
     call r%get('fail_on_limit', config%fail_on_limit, status)
   end subroutine read_evaluation_config
 end module io_evaluation_config

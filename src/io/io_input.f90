@@ -3,11 +3,14 @@
 !> stored in the result file; command-line overrides (--set group%var=value);
 !> and the reader every input group is read through.
 !>
-!> A group is read by opening it with the names of its variables (any other
-!> name is refused) and asking for each variable with its type, size and
-!> range: a real in [low, high] (or > low), a whole number in [low, high], a
-!> logical, a quoted text of at most len characters (optionally one of a list
-!> of words). A variable not given keeps the caller's default. Every refusal
+!> A group is read by opening it and asking for each variable by name. A
+!> declared group (io_input_declarations) takes its names, and every
+!> variable its type, range or words and unit, from the declarations: a real
+!> in [low, high] (or > low), a whole number in [low, high], a logical, a
+!> quoted text of at most len characters (or one of the declared words); any
+!> other name is refused. A group not yet declared is opened with its names
+!> and each variable asked for with its range. A variable not given keeps
+!> the caller's default. Every refusal
 !> names the place (file:line, or the --set argument), the group, the
 !> variable, the value as written and what is allowed, before any value is
 !> used.
@@ -15,12 +18,14 @@ module io_input
   use, intrinsic :: iso_fortran_env, only: input_unit, iostat_end, iostat_eor
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use base_kinds, only: wp, int64
-  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_IO
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_IO, STATUS_INTERNAL
   use base_text, only: format_real, format_vector, lower, format_integer
   use io_namelist, only: nml_group_t, nml_item_t, nml_value_t, parse_namelist, parse_assignment, &
     read_real_token, read_integer_token, read_logical_token, shown_value, VALUE_TEXT, NUMBER_OK
   use io_builtin_inputs, only: builtin_input, builtin_input_names
   use io_output_files, only: note_input_file
+  use io_declaration, only: declaration_t, bound_text, VALUE_REAL, VALUE_INTEGER, VALUE_LOGICAL, VALUE_WORDS
+  use io_input_declarations, only: find_declaration, declaration, declared_names
   implicit none (type, external)
   private
   public :: input_text_t, load_input_file, input_from_text, stdin_name, read_text_file
@@ -61,6 +66,10 @@ module io_input
     character(len=:), allocatable :: group
     integer :: line = 0                          !< where the group opens (0: not in the text)
     logical :: present = .false.
+    logical :: declared = .false.                !< its variables are those of io_input_declarations
+    !> the declarations' name of a declared group read differently by two
+    !> scenarios (&identify: identify_rider, identify_water); else the group
+    character(len=:), allocatable :: table
     type(nml_item_t), allocatable :: items(:)
   contains
     procedure :: has => reader_has
@@ -68,13 +77,22 @@ module io_input
     procedure :: written => reader_written
     procedure :: invalid => reader_invalid
     procedure :: refuse_given => reader_refuse_given
+    procedure :: bounds => reader_bounds
     procedure, private :: get_real, get_real_vector, get_integer, get_logical, get_text
-    generic :: get => get_real, get_real_vector, get_integer, get_logical, get_text
-    procedure :: get_list => get_real_list
-    procedure, private :: parts_real, parts_text, parts_logical
-    generic :: get_parts => parts_real, parts_text, parts_logical
-    procedure :: get_columns => get_real_columns
+    procedure, private :: get_declared_real, get_declared_vector, get_declared_integer
+    generic :: get => get_real, get_real_vector, get_integer, get_logical, get_text, &
+                      get_declared_real, get_declared_vector, get_declared_integer
+    procedure, private :: get_real_list, get_declared_list
+    generic :: get_list => get_real_list, get_declared_list
+    procedure, private :: parts_real, parts_text, parts_logical, parts_declared_real
+    generic :: get_parts => parts_real, parts_text, parts_logical, parts_declared_real
+    procedure, private :: get_real_columns, get_declared_columns
+    generic :: get_columns => get_real_columns, get_declared_columns
   end type group_reader_t
+
+  interface open_group
+    module procedure open_named_group, open_declared_group
+  end interface open_group
 
 contains
 
@@ -596,10 +614,48 @@ contains
 
   ! ------------------------------------------------------------- the reader
 
+  !> Opens declared `group` of `input` for reading (its occurrence-th, for a
+  !> repeated group): every variable it assigns must be declared in it (or be
+  !> one of `also`, names that follow from the declared ones, such as
+  !> &sweep's NAME_range). `table` names the declarations of a group that
+  !> differs by scenario (default: the group). An absent group reads as
+  !> empty (every default kept).
+  subroutine open_declared_group(input, group, reader, status, occurrence, also, table)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group
+    type(group_reader_t), intent(out) :: reader
+    type(status_t), intent(inout) :: status
+    integer, intent(in), optional :: occurrence
+    character(len=*), intent(in), optional :: also(:), table
+    character(len=32), allocatable :: names(:)
+    character(len=32), allocatable :: declared(:)
+    character(len=:), allocatable :: declarations_name
+    integer :: n
+    declarations_name = lower(group)
+    if (present(table)) declarations_name = lower(table)
+    declared = declared_names(declarations_name)
+    n = size(declared)
+    if (present(also)) n = n + size(also)
+    allocate (names(n))
+    names(:size(declared)) = declared
+    if (present(also)) names(size(declared) + 1:) = also
+    if (size(declared) == 0) then
+      reader%source = input%name
+      reader%group = lower(group)
+      allocate (reader%items(0))
+      call set_status(status, STATUS_INTERNAL, '&'//declarations_name//' has no declared variables (a bug: '// &
+                      'src/io/io_declarations_*.f90)')
+      return
+    end if
+    call open_named_group(input, group, names, reader, status, occurrence)
+    reader%declared = .true.
+    reader%table = declarations_name
+  end subroutine open_declared_group
+
   !> Opens `group` of `input` for reading (its occurrence-th, for a repeated
   !> group); every variable it assigns must be one of `names`. An absent group
   !> reads as empty (every default kept).
-  subroutine open_group(input, group, names, reader, status, occurrence)
+  subroutine open_named_group(input, group, names, reader, status, occurrence)
     type(input_text_t), intent(in) :: input
     character(len=*), intent(in) :: group
     character(len=*), intent(in) :: names(:)
@@ -641,7 +697,7 @@ contains
         return
       end do
     end subroutine check_names
-  end subroutine open_group
+  end subroutine open_named_group
 
   pure logical function reader_has(self, name)
     class(group_reader_t), intent(in) :: self
@@ -1024,7 +1080,7 @@ contains
     if (present(given)) given(positions) = .true.
   end subroutine parts_real
 
-  subroutine parts_text(self, name, x, limit, status, choices, given)
+  recursive subroutine parts_text(self, name, x, limit, status, choices, given)
     class(group_reader_t), intent(in) :: self
     character(len=*), intent(in) :: name, limit
     character(len=*), intent(inout) :: x(:)
@@ -1034,7 +1090,15 @@ contains
     integer, allocatable :: positions(:), from(:)
     type(nml_value_t), allocatable :: values(:)
     integer :: k
+    character(len=32), allocatable :: words(:)
     if (present(given)) given = .false.
+    if (self%declared .and. .not. present(choices)) then
+      words = declared_words(self, name, status)
+      if (size(words) > 0) then
+        call parts_text(self, name, x, limit, status, words, given)
+        return
+      end if
+    end if
     call gather(self, name, [size(x)], .false., limit, positions, values, from, status)
     if (.not. status%ok()) return
     do k = 1, size(positions)
@@ -1053,6 +1117,8 @@ contains
     type(nml_value_t), allocatable :: values(:)
     integer :: k
     logical :: ok
+    type(declaration_t) :: d
+    if (self%declared) call find_declared(self, name, VALUE_LOGICAL, d, status)
     call gather(self, name, [size(x)], .false., limit, positions, values, from, status)
     if (.not. status%ok()) return
     do k = 1, size(positions)
@@ -1138,6 +1204,8 @@ contains
     type(nml_value_t), allocatable :: values(:)
     integer :: no_dims(0)
     logical :: ok, value
+    type(declaration_t) :: d
+    if (self%declared) call find_declared(self, name, VALUE_LOGICAL, d, status)
     call gather(self, name, no_dims, .true., '', positions, values, from, status)
     if (size(positions) == 0 .or. .not. status%ok()) return
     call read_logical_token(values(1), value, ok)
@@ -1150,7 +1218,7 @@ contains
 
   !> A quoted text of at most len(x) characters; with `choices`, one of those
   !> words (any case), returned in lower case.
-  subroutine get_text(self, name, x, status, choices)
+  recursive subroutine get_text(self, name, x, status, choices)
     class(group_reader_t), intent(in) :: self
     character(len=*), intent(in) :: name
     character(len=*), intent(inout) :: x
@@ -1159,6 +1227,14 @@ contains
     integer, allocatable :: positions(:), from(:)
     type(nml_value_t), allocatable :: values(:)
     integer :: no_dims(0)
+    character(len=32), allocatable :: words(:)
+    if (self%declared .and. .not. present(choices)) then
+      words = declared_words(self, name, status)
+      if (size(words) > 0) then
+        call get_text(self, name, x, status, words)
+        return
+      end if
+    end if
     call gather(self, name, no_dims, .true., '', positions, values, from, status)
     if (size(positions) == 0 .or. .not. status%ok()) return
     call take_text(self, name, no_dims, 1, from(1), values(1), x, status, choices)
@@ -1206,6 +1282,149 @@ contains
     end if
   end subroutine take_text
 
+
+  ! ------------------------------------------------- variables as declared
+
+  !> The declaration of `name` in this reader's group, which must be a
+  !> variable of `kind`: a reader asking for anything else is a bug.
+  subroutine find_declared(self, name, kind, d, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: kind
+    type(declaration_t), intent(out) :: d
+    type(status_t), intent(inout) :: status
+    integer :: k
+    if (.not. status%ok()) return
+    if (allocated(self%table)) then
+      k = find_declaration(self%table, name)
+    else
+      k = find_declaration(self%group, name)
+    end if
+    if (k == 0) then
+      call set_status(status, STATUS_INTERNAL, '&'//self%group//': '//name//' is read but not declared (a bug: '// &
+                      'src/io/io_declarations_*.f90)')
+      return
+    end if
+    d = declaration(k)
+    if (d%kind /= kind) call set_status(status, STATUS_INTERNAL, '&'//self%group//': '//name// &
+                                        ' is read as another type than declared (a bug)')
+  end subroutine find_declared
+
+  !> The declared range of real variable `name` (for checks of values that
+  !> follow from it, such as &sweep's NAME_range).
+  subroutine reader_bounds(self, name, b, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    type(bounds_t), intent(out) :: b
+    type(status_t), intent(inout) :: status
+    type(declaration_t) :: d
+    call find_declared(self, name, VALUE_REAL, d, status)
+    if (.not. status%ok()) return
+    if (d%open_low) then
+      b = above(d%low, d%high, trim(d%unit))
+    else
+      b = in_range(d%low, d%high, trim(d%unit))
+    end if
+  end subroutine reader_bounds
+
+  !> The declared words of text variable `name` (none: any text).
+  function declared_words(self, name, status) result(words)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    type(status_t), intent(inout) :: status
+    character(len=32), allocatable :: words(:)
+    type(declaration_t) :: d
+    integer :: i, n
+    call find_declared(self, name, VALUE_WORDS, d, status)
+    ! a word starts where a blank is followed by a letter
+    n = 0
+    do i = 1, len_trim(d%choices)
+      if (starts(i)) n = n + 1
+    end do
+    allocate (words(n))
+    n = 0
+    do i = 1, len_trim(d%choices)
+      if (starts(i)) then
+        n = n + 1
+        words(n) = d%choices(i:i - 1 + index(d%choices(i:)//' ', ' ') - 1)
+      end if
+    end do
+  contains
+    logical function starts(i)
+      integer, intent(in) :: i
+      starts = d%choices(i:i) /= ' '
+      if (i > 1) starts = starts .and. d%choices(i - 1:i - 1) == ' '
+    end function starts
+  end function declared_words
+
+  subroutine get_declared_real(self, name, x, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    real(wp), intent(inout) :: x
+    type(status_t), intent(inout) :: status
+    type(bounds_t) :: b
+    call self%bounds(name, b, status)
+    call get_real(self, name, x, b, status)
+  end subroutine get_declared_real
+
+  subroutine get_declared_vector(self, name, x, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    real(wp), intent(inout) :: x(:)
+    type(status_t), intent(inout) :: status
+    type(bounds_t) :: b
+    call self%bounds(name, b, status)
+    call get_real_vector(self, name, x, b, status)
+  end subroutine get_declared_vector
+
+  subroutine get_declared_list(self, name, x, most, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    real(wp), allocatable, intent(out) :: x(:)
+    integer, intent(in) :: most
+    type(status_t), intent(inout) :: status
+    type(bounds_t) :: b
+    call self%bounds(name, b, status)
+    call get_real_list(self, name, x, most, b, status)
+  end subroutine get_declared_list
+
+  subroutine parts_declared_real(self, name, x, limit, status, given)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name, limit
+    real(wp), intent(inout) :: x(:)
+    type(status_t), intent(inout) :: status
+    logical, intent(out), optional :: given(:)
+    type(bounds_t) :: b
+    if (present(given)) given = .false.
+    call self%bounds(name, b, status)
+    call parts_real(self, name, x, b, limit, status, given)
+  end subroutine parts_declared_real
+
+  subroutine get_declared_columns(self, name, x, limit, n_given, status, given)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name, limit
+    real(wp), intent(inout) :: x(:, :)
+    integer, intent(out) :: n_given
+    type(status_t), intent(inout) :: status
+    logical, intent(out), optional :: given(:)
+    type(bounds_t) :: b
+    n_given = 0
+    if (present(given)) given = .false.
+    call self%bounds(name, b, status)
+    call get_real_columns(self, name, x, b, limit, n_given, status, given)
+  end subroutine get_declared_columns
+
+  subroutine get_declared_integer(self, name, i, status)
+    class(group_reader_t), intent(in) :: self
+    character(len=*), intent(in) :: name
+    integer, intent(inout) :: i
+    type(status_t), intent(inout) :: status
+    type(declaration_t) :: d
+    call find_declared(self, name, VALUE_INTEGER, d, status)
+    if (.not. status%ok()) return
+    call get_integer(self, name, i, nint(d%low), nint(d%high), status)
+  end subroutine get_declared_integer
+
   ! ----------------------------------------------------------------- bounds
 
   !> low <= x <= high, in `unit` (shown in messages).
@@ -1252,17 +1471,6 @@ contains
       if (len(self%unit) > 0) text = text//' ('//self%unit//')'
     end if
   end function bounds_text
-
-  !> A bound for messages: whole numbers plainly, others as format_real.
-  pure function bound_text(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    if (abs(x) < 1e7_wp .and. x == aint(x)) then
-      text = format_integer(int(x))
-    else
-      text = format_real(x)
-    end if
-  end function bound_text
 
   ! ------------------------------------------ checks of values already read
 

@@ -8,14 +8,13 @@ module io_measured_segments
   use base_kinds, only: wp
   use base_text, only: format_integer
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
-  use io_input, only: input_text_t, group_reader_t, in_range, above, format_real
+  use io_input, only: input_text_t, group_reader_t, bounds_t, format_real
   use io_csv, only: read_csv_table
   implicit none (type, external)
   private
   public :: read_measured_segments, check_in_order, refuse_measured
 
   integer, parameter :: max_segments = 1000
-  real(wp), parameter :: longest = 1e6_wp   !< m, the largest arc length taken
 
 contains
 
@@ -34,6 +33,7 @@ contains
                                                 'segment_speed']
     real(wp), allocatable :: table(:, :)
     integer, allocatable :: lines(:)
+    type(bounds_t) :: columns(size(names))
     integer :: k
     path = ''
     allocate (starts(0), ends(0), speeds(0))
@@ -45,8 +45,11 @@ contains
         end if
       end do
       path = input%resolve_path(segments_file)
-      call read_csv_table(path, 3, 3, max_segments, [in_range(0.0_wp, longest, 'm'), &
-                          in_range(0.0_wp, longest, 'm'), above(0.0_wp, 100.0_wp, 'm/s')], table, status, lines)
+      do k = 1, size(names)
+        call r%bounds(trim(names(k)), columns(k), status)
+      end do
+      if (.not. status%ok()) return
+      call read_csv_table(path, 3, 3, max_segments, columns, table, status, lines)
       if (.not. status%ok()) then
         call prefix_status(status, r%where('segments_file')//': &identify: segments_file')
         return
@@ -55,9 +58,9 @@ contains
       ends = table(2, :)
       speeds = table(3, :)
     else
-      call r%get_list('segment_start', starts, max_segments, in_range(0.0_wp, longest, 'm'), status)
-      call r%get_list('segment_end', ends, max_segments, in_range(0.0_wp, longest, 'm'), status)
-      call r%get_list('segment_speed', speeds, max_segments, above(0.0_wp, 100.0_wp, 'm/s'), status)
+      call r%get_list('segment_start', starts, max_segments, status)
+      call r%get_list('segment_end', ends, max_segments, status)
+      call r%get_list('segment_speed', speeds, max_segments, status)
       if (.not. status%ok()) return
       if (twin) speeds = 0*starts
       call check_counts([size(starts), size(ends), size(speeds)], .not. twin, r, status)

@@ -10,11 +10,13 @@ module io_optimization_config
   use design_cuboid_ride, only: ACCELERATION_KINEMATIC, ACCELERATION_FELT
   use design_geometry_optimization, only: optimization_setup_t, table_4_12_design, CONSTRAINT_PENALTY, &
     CONSTRAINT_EXACT, CONSTRAINT_NONE
-  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, format_real
+  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, format_real
   implicit none (type, external)
   private
-  public :: read_optimization_config
+  public :: read_optimization_config, max_points, max_design, max_rides
 
+  !> the largest n_points, n_design and start_angles_deg of the declarations
+  !> (io_declarations_design; test_input_declarations checks they agree)
   integer, parameter :: max_points = 200, max_design = 50, max_rides = 50
 
 contains
@@ -29,11 +31,7 @@ contains
     character(len=10) :: acceleration, constraint
     integer :: n_points, n_design, n_given, i
     real(wp) :: start_wall_angle_deg
-    character(len=*), parameter :: names(31) = [character(len=20) :: 'n_points', 'points', 'n_design', &
-      'design_point', 'design_coordinate', 'lower', 'upper', 'radius', 'degree', 'smoothing', 'horizon', &
-      'start_angles_deg', 'start_speed', 'start_wall_angle_deg', 'body_mass', 'body_length', 'body_width', &
-      'body_height', 'com_height', 'acceleration', 'constraint', 'lever_limit', 'penalty_factor', &
-      'lever_tolerance', 'threads', 'ftol', 'xtol', 'max_designs', 'max_restarts', 'starts', 'seed']
+    type(bounds_t) :: point_bounds
 
     setup%design = table_4_12_design()
     setup%start_angles = [-30.0_wp, -15.0_wp, 0.0_wp, 15.0_wp, 30.0_wp]*pi/180
@@ -42,16 +40,15 @@ contains
     acceleration = 'kinematic'
     constraint = 'penalty'
     start_wall_angle_deg = 0
-    call open_group(input, 'optimize', names, r, status)
+    call open_group(input, 'optimize', r, status)
     if (.not. status%ok()) return
 
     ! the centerline points and the design variables (default: table 4.12)
-    call r%get('n_points', n_points, 4, max_points, status)
+    call r%get('n_points', n_points, status)
     allocate (points(3, max_points))
     points = 0
     points(:, :size(setup%design%points, 2)) = setup%design%points
-    call r%get_columns('points', points, in_range(-1e5_wp, 1e5_wp, 'm'), 'the limit of '// &
-                       format_integer(max_points)//' points', n_given, status)
+    call r%get_columns('points', points, 'the limit of '//format_integer(max_points)//' points', n_given, status)
     if (.not. status%ok()) return
     if (r%has('points') .and. n_given /= n_points) then
       call r%invalid('points', format_integer(n_given)//' points', 'give n_points = '// &
@@ -64,7 +61,7 @@ contains
     end if
     setup%design%points = points(:, :n_points)
 
-    call r%get('n_design', n_design, 1, max_design, status)
+    call r%get('n_design', n_design, status)
     if (.not. status%ok()) return
     allocate (point_real(n_design), coordinate(n_design), lower(n_design), upper(n_design))
     point_real = 0
@@ -77,12 +74,19 @@ contains
       lower = setup%design%lower
       upper = setup%design%upper
     end if
-    call r%get_parts('design_point', point_real, in_range(0.0_wp, real(n_points - 1, wp), '1'), &
-                     'n_design = '//format_integer(n_design), status)
-    call r%get_parts('design_coordinate', coordinate, 'n_design = '//format_integer(n_design), status, &
-                     choices=[character(len=1) :: 'x', 'y', 'z'])
-    call r%get_parts('lower', lower, in_range(-1e5_wp, 1e5_wp, 'm'), 'n_design = '//format_integer(n_design), status)
-    call r%get_parts('upper', upper, in_range(-1e5_wp, 1e5_wp, 'm'), 'n_design = '//format_integer(n_design), status)
+    call r%get_parts('design_point', point_real, 'n_design = '//format_integer(n_design), status)
+    call r%get_parts('design_coordinate', coordinate, 'n_design = '//format_integer(n_design), status)
+    call r%get_parts('lower', lower, 'n_design = '//format_integer(n_design), status)
+    call r%get_parts('upper', upper, 'n_design = '//format_integer(n_design), status)
+    if (.not. status%ok()) return
+    ! a point of this centerline: the declared range up to n_points - 1
+    call r%bounds('design_point', point_bounds, status)
+    point_bounds%high = n_points - 1
+    do i = 1, n_design
+      if (status%ok() .and. .not. point_bounds%allows(point_real(i))) &
+        call r%invalid('design_point('//format_integer(i)//')', format_real(point_real(i)), &
+                       point_bounds%text()//': a point of the n_points = '//format_integer(n_points), status)
+    end do
     if (.not. status%ok()) return
     if (r%has('n_design') .and. .not. (r%has('design_point') .and. r%has('design_coordinate') .and. &
                                        r%has('lower') .and. r%has('upper'))) then
@@ -122,50 +126,50 @@ contains
       end if
     end do
 
-    call r%get('radius', setup%design%radius, above(0.0_wp, 100.0_wp, 'm'), status)
-    call r%get('degree', setup%design%degree, 3, 5, status)
-    call r%get('smoothing', setup%design%smoothing, in_range(0.0_wp, 1e6_wp, 'm^2'), status)
-    call r%get('horizon', setup%design%horizon, in_range(-1e6_wp, 1e6_wp, '1'), status)
+    call r%get('radius', setup%design%radius, status)
+    call r%get('degree', setup%design%degree, status)
+    call r%get('smoothing', setup%design%smoothing, status)
+    call r%get('horizon', setup%design%horizon, status)
     if (status%ok() .and. .not. norm2(setup%design%horizon) > 0) &
       call r%invalid('horizon', '0', 'must be a non-zero vector', status)
     if (status%ok() .and. setup%design%degree + 1 > n_points) &
       call r%invalid('degree', format_integer(setup%design%degree), 'needs more than degree points', status)
 
     ! the rides
-    call r%get_list('start_angles_deg', angles, max_rides, in_range(-89.0_wp, 89.0_wp, 'deg'), status)
+    call r%get_list('start_angles_deg', angles, max_rides, status)
     if (status%ok() .and. r%has('start_angles_deg')) setup%start_angles = angles*pi/180
     if (status%ok() .and. 2*size(setup%start_angles) < n_design) &
       call r%invalid('start_angles_deg', format_integer(size(setup%start_angles))//' rides', 'give at least '// &
                      format_integer((n_design + 1)/2)//' rides for '//format_integer(n_design)// &
                      ' design variables (each ride gives two residuals: its acceleration and its lever arm)', status)
-    call r%get('start_speed', setup%start_speed, in_range(0.0_wp, 100.0_wp, 'm/s'), status)
-    call r%get('start_wall_angle_deg', start_wall_angle_deg, in_range(-170.0_wp, 170.0_wp, 'deg'), status)
+    call r%get('start_speed', setup%start_speed, status)
+    call r%get('start_wall_angle_deg', start_wall_angle_deg, status)
     setup%start_v = pi/2 + start_wall_angle_deg*pi/180
-    call r%get('body_mass', setup%body%mass, above(0.0_wp, 1e4_wp, 'kg'), status)
-    call r%get('body_length', setup%body%length, above(0.0_wp, 100.0_wp, 'm'), status)
-    call r%get('body_width', setup%body%width, above(0.0_wp, 100.0_wp, 'm'), status)
-    call r%get('body_height', setup%body%height, above(0.0_wp, 100.0_wp, 'm'), status)
-    call r%get('com_height', setup%body%com_height, in_range(0.0_wp, 100.0_wp, 'm'), status)
-    call r%get('acceleration', acceleration, status, choices=[character(len=9) :: 'kinematic', 'felt'])
+    call r%get('body_mass', setup%body%mass, status)
+    call r%get('body_length', setup%body%length, status)
+    call r%get('body_width', setup%body%width, status)
+    call r%get('body_height', setup%body%height, status)
+    call r%get('com_height', setup%body%com_height, status)
+    call r%get('acceleration', acceleration, status)
     setup%ride%acceleration = merge(ACCELERATION_FELT, ACCELERATION_KINEMATIC, acceleration == 'felt')
 
     ! the constraint and the optimiser
-    call r%get('constraint', constraint, status, choices=[character(len=7) :: 'penalty', 'exact', 'none'])
+    call r%get('constraint', constraint, status)
     select case (trim(constraint))
     case ('exact'); setup%constraint = CONSTRAINT_EXACT
     case ('none'); setup%constraint = CONSTRAINT_NONE
     case default; setup%constraint = CONSTRAINT_PENALTY
     end select
-    call r%get('lever_limit', setup%lever_limit, above(0.0_wp, 10.0_wp, 'm'), status)
-    call r%get('penalty_factor', setup%penalty_factor, above(0.0_wp, 1e12_wp, 'm s-2 per m'), status)
-    call r%get('lever_tolerance', setup%lever_tolerance, above(0.0_wp, 1.0_wp, 'm'), status)
-    call r%get('threads', setup%threads, 1, 1024, status)
-    call r%get('ftol', setup%solver%ftol, in_range(1e-15_wp, 1.0_wp, '1'), status)
-    call r%get('xtol', setup%solver%xtol, in_range(1e-15_wp, 1.0_wp, '1'), status)
-    call r%get('max_designs', setup%solver%max_evaluations, 1, 1000000, status)
-    call r%get('max_restarts', setup%max_restarts, 1, 100, status)
-    call r%get('starts', setup%starts, 1, 1000, status)
-    call r%get('seed', setup%seed, 1, huge(1), status)
+    call r%get('lever_limit', setup%lever_limit, status)
+    call r%get('penalty_factor', setup%penalty_factor, status)
+    call r%get('lever_tolerance', setup%lever_tolerance, status)
+    call r%get('threads', setup%threads, status)
+    call r%get('ftol', setup%solver%ftol, status)
+    call r%get('xtol', setup%solver%xtol, status)
+    call r%get('max_designs', setup%solver%max_evaluations, status)
+    call r%get('max_restarts', setup%max_restarts, status)
+    call r%get('starts', setup%starts, status)
+    call r%get('seed', setup%seed, status)
     if (setup%starts == 1) call r%refuse_given(['seed'], 'seed draws the starts after the first: it is used '// &
       'only with starts > 1', status)
     setup%rho = 20*setup%penalty_factor

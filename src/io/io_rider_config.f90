@@ -7,19 +7,15 @@ module io_rider_config
   use base_constants, only: pi
   use base_text, only: format_integer
   use base_status, only: status_t
-  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, format_real
+  use io_input, only: input_text_t, group_reader_t, open_group, format_real
   use rider_body, only: SEX_MALE, SEX_FEMALE
   use rider_model, only: rider_params_t
   use design_ride_evaluation, only: ride_limit_t, new_ride_limit
   implicit none (type, external)
   private
-  public :: rider_config_t, read_rider_config, rider_names, max_limits
+  public :: rider_config_t, read_rider_config, max_limits
 
   integer, parameter :: max_limits = 20
-
-  character(len=*), parameter :: rider_names(19) = [character(len=16) :: 'sex', 'mass', 'height', 'com_height', &
-    'mu', 'drag', 'drag_radius', 'water_density', 'water_viscosity', 'gravity', 'u0', 'v0', 'heading0_deg', &
-    'speed0', 'min_speed', 'limit_quantity', 'limit_min', 'limit_max', 'limit_unit']
 
   type :: rider_config_t
     type(rider_params_t) :: params
@@ -49,28 +45,26 @@ contains
     minimum = 0
     maximum = 0
     associate (p => config%params)
-      call open_group(input, 'rider', rider_names, r, status)
-      call r%get('sex', sex, status, choices=[character(len=6) :: 'male', 'female'])
-      call r%get('mass', p%body%mass, in_range(10.0_wp, 300.0_wp, 'kg'), status)
-      call r%get('height', p%body%height, in_range(0.5_wp, 2.5_wp, 'm'), status)
-      call r%get('com_height', p%body%com_height, above(0.0_wp, 0.5_wp, 'm'), status)
-      call r%get('mu', p%mu, in_range(0.0_wp, 2.0_wp, '1'), status)
+      call open_group(input, 'rider', r, status)
+      call r%get('sex', sex, status)
+      call r%get('mass', p%body%mass, status)
+      call r%get('height', p%body%height, status)
+      call r%get('com_height', p%body%com_height, status)
+      call r%get('mu', p%mu, status)
       call r%get('drag', p%drag, status)
-      call r%get('drag_radius', p%drag_radius, above(0.0_wp, 5.0_wp, 'm'), status)
-      call r%get('water_density', p%water%density, in_range(100.0_wp, 5000.0_wp, 'kg/m^3'), status)
-      call r%get('water_viscosity', p%water%kinematic_viscosity, in_range(1e-8_wp, 1e-3_wp, 'm^2/s'), status)
-      call r%get('gravity', p%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
-      call r%get('u0', p%u0, in_range(-1e6_wp, 1e6_wp, 'surface parameter'), status)
-      call r%get('v0', p%v0, in_range(-10.0_wp, 10.0_wp, 'rad'), status)
-      call r%get('heading0_deg', heading_deg, in_range(-180.0_wp, 180.0_wp, 'deg'), status)
-      call r%get('speed0', p%speed0, above(0.0_wp, 50.0_wp, 'm/s'), status)
-      call r%get('min_speed', config%min_speed, above(0.0_wp, 10.0_wp, 'm/s'), status)
+      call r%get('drag_radius', p%drag_radius, status)
+      call r%get('water_density', p%water%density, status)
+      call r%get('water_viscosity', p%water%kinematic_viscosity, status)
+      call r%get('gravity', p%gravity, status)
+      call r%get('u0', p%u0, status)
+      call r%get('v0', p%v0, status)
+      call r%get('heading0_deg', heading_deg, status)
+      call r%get('speed0', p%speed0, status)
+      call r%get('min_speed', config%min_speed, status)
       call r%get_parts('limit_quantity', quantity, count_text, status, given=has_quantity)
       call r%get_parts('limit_unit', unit, count_text, status, given=has_unit)
-      call r%get_parts('limit_min', minimum, in_range(-1e6_wp, 1e6_wp, 'the limit''s unit'), count_text, status, &
-                       given=has_min)
-      call r%get_parts('limit_max', maximum, in_range(-1e6_wp, 1e6_wp, 'the limit''s unit'), count_text, status, &
-                       given=has_max)
+      call r%get_parts('limit_min', minimum, count_text, status, given=has_min)
+      call r%get_parts('limit_max', maximum, count_text, status, given=has_max)
       if (.not. status%ok()) return
       p%body%sex = merge(SEX_MALE, SEX_FEMALE, sex == 'male')
       p%heading0 = heading_deg*pi/180

@@ -8,7 +8,7 @@ module io_rider_identification_config
   use base_status, only: status_t, prefix_status
   use rider_model, only: N_CONTACTS
   use design_rider_identification, only: rider_measurements_t, rider_fit_options_t
-  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, bounds_t, format_real
+  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, format_real
   use io_csv, only: read_csv_table
   use io_measured_segments, only: read_measured_segments, check_in_order
   implicit none (type, external)
@@ -37,15 +37,15 @@ contains
     character(len=1024) :: stations_file, segments_file
     real(wp), allocatable :: table(:, :), s(:), pelvis(:), heels(:), back(:)
     integer, allocatable :: lines(:)
-    real(wp), parameter :: big = 1e6_wp
-    character(len=*), parameter :: names(18) = [character(len=20) :: 'stations_file', 'segments_file', &
-      'station_arc_length', 'pelvis_angle', 'heels_angle', 'back_angle', 'segment_start', 'segment_end', &
-      'segment_speed', 'weight', 'k2', 'lower', 'upper', 'threads', 'ftol', 'xtol', 'sensitivity', 'twin_mu']
     character(len=*), parameter :: station_names(4) = [character(len=18) :: 'station_arc_length', &
       'pelvis_angle', 'heels_angle', 'back_angle']
+    type(bounds_t) :: columns(size(station_names))
     integer :: k
 
-    call open_group(input, 'identify', names, r, status)
+    call open_group(input, 'identify', r, status, table='identify_rider')
+    do k = 1, size(station_names)
+      call r%bounds(trim(station_names(k)), columns(k), status)
+    end do
     if (.not. status%ok()) return
     stations_file = ''
     segments_file = ''
@@ -54,7 +54,7 @@ contains
     if (.not. status%ok()) return
     config%twin = r%has('twin_mu')
     if (config%twin) then
-      call r%get('twin_mu', config%twin_mu, in_range(0.0_wp, 10.0_wp, '1'), status)
+      call r%get('twin_mu', config%twin_mu, status)
       if (.not. status%ok()) return
       if (len_trim(stations_file) > 0 .or. len_trim(segments_file) > 0) then
         call r%invalid('twin_mu', format_real(config%twin_mu), 'a twin experiment synthesises the '// &
@@ -83,9 +83,7 @@ contains
         end if
       end do
       config%stations_file = input%resolve_path(stations_file)
-      call read_csv_table(config%stations_file, 4, 4, max_stations, [in_range(0.0_wp, big, 'm'), &
-                          in_range(-4.0_wp, 4.0_wp, 'rad'), in_range(-4.0_wp, 4.0_wp, 'rad'), &
-                          in_range(-4.0_wp, 4.0_wp, 'rad')], table, status, lines)
+      call read_csv_table(config%stations_file, 4, 4, max_stations, columns, table, status, lines)
       if (.not. status%ok()) then
         call prefix_status(status, r%where('stations_file')//': &identify: stations_file')
         return
@@ -97,10 +95,10 @@ contains
       config%data%angle = table(2:4, :)
     else
       config%stations_file = ''
-      call r%get_list('station_arc_length', s, max_stations, in_range(0.0_wp, big, 'm'), status)
-      call r%get_list('pelvis_angle', pelvis, max_stations, in_range(-4.0_wp, 4.0_wp, 'rad'), status)
-      call r%get_list('heels_angle', heels, max_stations, in_range(-4.0_wp, 4.0_wp, 'rad'), status)
-      call r%get_list('back_angle', back, max_stations, in_range(-4.0_wp, 4.0_wp, 'rad'), status)
+      call r%get_list('station_arc_length', s, max_stations, status)
+      call r%get_list('pelvis_angle', pelvis, max_stations, status)
+      call r%get_list('heels_angle', heels, max_stations, status)
+      call r%get_list('back_angle', back, max_stations, status)
       if (.not. status%ok()) return
       if (config%twin) then   ! placeholders, synthesised by the scenario
         pelvis = 0*s
@@ -139,19 +137,19 @@ contains
     associate (o => config%options)
       if (size(config%data%segment_start) == 0) o%weight = 0
       if (size(config%data%station_arc_length) == 0) o%weight = 1
-      call r%get('weight', o%weight, in_range(0.0_wp, 1.0_wp, '1'), status)
-      call r%get('k2', o%k2, above(0.0_wp, 100.0_wp, 'rad s/m'), status)
-      call r%get('lower', o%lower, in_range(0.0_wp, 10.0_wp, '1'), status)
-      call r%get('upper', o%upper, above(0.0_wp, 10.0_wp, '1'), status)
+      call r%get('weight', o%weight, status)
+      call r%get('k2', o%k2, status)
+      call r%get('lower', o%lower, status)
+      call r%get('upper', o%upper, status)
       if (.not. status%ok()) return
       if (.not. o%upper > o%lower) then
         call r%invalid('upper', format_real(o%upper), 'must exceed lower = '//format_real(o%lower), status)
         return
       end if
-      call r%get('ftol', o%solver%ftol, above(0.0_wp, 1.0_wp, '1'), status)
-      call r%get('xtol', o%solver%xtol, above(0.0_wp, 1.0_wp, '1'), status)
+      call r%get('ftol', o%solver%ftol, status)
+      call r%get('xtol', o%solver%xtol, status)
     end associate
-    call r%get('threads', config%threads, 1, 1024, status)
+    call r%get('threads', config%threads, status)
     call r%get('sensitivity', config%sensitivity, status)
   end subroutine read_rider_identification_config
 end module io_rider_identification_config

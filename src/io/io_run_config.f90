@@ -34,7 +34,7 @@ contains
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
 
-    call open_group(input, 'run', [character(len=8) :: 'scenario', 'output', 'title'], r, status)
+    call open_group(input, 'run', r, status)
     call r%get('scenario', config%scenario, status, choices=scenarios)
     call r%get('output', config%output, status)
     call r%get('title', config%title, status)

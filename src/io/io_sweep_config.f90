@@ -10,7 +10,7 @@ module io_sweep_config
   use base_kinds, only: wp
   use base_text, only: format_integer
   use base_status, only: status_t
-  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, in_range, above, format_real
+  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, in_range, format_real
   use rider_body, only: SEX_MALE, SEX_FEMALE
   use design_sweep, only: N_SWEPT, swept_names, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, V_HEADING, V_SPEED, &
     V_FLOW_RATE, V_F1, V_F2, V_F3
@@ -43,7 +43,7 @@ contains
     type(sweep_config_t), intent(out) :: config
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
-    character(len=24) :: names(2*N_SWEPT + 4), paired(N_SWEPT), combine
+    character(len=24) :: ranges(N_SWEPT - 1), paired(N_SWEPT), combine
     character(len=1024) :: csv
     type(bounds_t) :: bounds(N_SWEPT)
     type(real_list_t) :: lists(N_SWEPT)
@@ -51,29 +51,18 @@ contains
     integer :: k, j, n_rides, count_together
     real(wp) :: rides
 
-    bounds(V_SEX) = in_range(1.0_wp, 2.0_wp, '1')
-    bounds(V_MASS) = in_range(10.0_wp, 300.0_wp, 'kg')
-    bounds(V_HEIGHT) = in_range(0.5_wp, 2.5_wp, 'm')
-    bounds(V_MU) = in_range(0.0_wp, 2.0_wp, '1')
-    bounds(V_U0) = in_range(-1e6_wp, 1e6_wp, 'surface parameter')
-    bounds(V_V0) = in_range(-10.0_wp, 10.0_wp, 'rad')
-    bounds(V_HEADING) = in_range(-180.0_wp, 180.0_wp, 'deg')
-    bounds(V_SPEED) = above(0.0_wp, 50.0_wp, 'm/s')
-    bounds(V_FLOW_RATE) = above(0.0_wp, 1e3_wp, 'm^3/s')
-    bounds(V_F1) = in_range(0.0_wp, 1e6_wp, 'kg/m')
-    bounds(V_F2) = in_range(0.0_wp, 1e6_wp, 'kg')
-    bounds(V_F3) = in_range(0.0_wp, 1e6_wp, 'kg m')
-
-    ! every swept variable, a range of each but sex, and the settings
-    names(:N_SWEPT) = swept_names
-    j = N_SWEPT
+    ! the declared variables (the swept ones shared with &rider and &water),
+    ! and a range of each swept number
+    j = 0
     do k = 1, N_SWEPT
       if (k == V_SEX) cycle
       j = j + 1
-      names(j) = trim(swept_names(k))//'_range'
+      ranges(j) = trim(swept_names(k))//'_range'
     end do
-    names(j + 1:) = [character(len=24) :: 'paired', 'combine', 'threads', 'progress_seconds', 'csv_output']
-    call open_group(input, 'sweep', names, r, status)
+    call open_group(input, 'sweep', r, status, also=ranges)
+    do k = 1, N_SWEPT
+      if (k /= V_SEX) call r%bounds(trim(swept_names(k)), bounds(k), status)
+    end do
     if (.not. status%ok()) return
     if (.not. r%present) then
       call r%invalid('(group)', '(missing)', 'a sweep needs &sweep with at least one swept variable ('// &
@@ -98,11 +87,10 @@ contains
     ! ---- how they combine
     combine = 'cross'
     paired = ''
-    call r%get('combine', combine, status, choices=[character(len=6) :: 'cross', 'paired'])
-    call r%get_parts('paired', paired, 'at most '//format_integer(N_SWEPT)//' names', status, &
-                     choices=swept_names, given=paired_given)
-    call r%get('threads', config%threads, 0, 1024, status)
-    call r%get('progress_seconds', config%progress_seconds, in_range(0.0_wp, 1e6_wp, 's'), status)
+    call r%get('combine', combine, status)
+    call r%get_parts('paired', paired, 'at most '//format_integer(N_SWEPT)//' names', status, given=paired_given)
+    call r%get('threads', config%threads, status)
+    call r%get('progress_seconds', config%progress_seconds, status)
     csv = ''
     call r%get('csv_output', csv, status)
     if (.not. status%ok()) return
@@ -178,8 +166,7 @@ contains
       logical :: given(max_values)
       integer :: n
       words = ''
-      call r%get_parts('sex', words, 'at most '//format_integer(max_values)//' values', status, &
-                       choices=[character(len=6) :: 'male', 'female'], given=given)
+      call r%get_parts('sex', words, 'at most '//format_integer(max_values)//' values', status, given=given)
       if (.not. status%ok() .or. .not. any(given)) return
       n = count(given)
       if (any(given(n + 1:))) then
@@ -203,7 +190,7 @@ contains
         return
       end if
       if (r%has(name)) then
-        call r%get_list(name, x, max_values, bounds(k), status)
+        call r%get_list(name, x, max_values, status)
         if (status%ok()) list%x = x
         return
       end if

@@ -5,7 +5,7 @@ module io_water_config
   use base_text, only: format_integer
   use base_constants, only: pi, standard_gravity
   use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
-  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, format_real
+  use io_input, only: input_text_t, group_reader_t, open_group, format_real
   use geometry_tube, only: tube_surface_t, new_straight_tube, new_helix_tube, new_s_bend_tube
   use water_streamline, only: default_f1, default_f2, default_f3, CORRECTION_FULL, &
     CORRECTION_NO_RADIUS, CORRECTION_OFF
@@ -44,24 +44,22 @@ contains
     type(group_reader_t) :: r
     type(status_t) :: built
     character(len=:), allocatable :: unused
-    character(len=*), parameter :: names(11) = [character(len=12) :: 'kind', 'radius', 'incline_deg', &
-      'length', 'helix_radius', 'pitch', 'turn_sense', 'turns', 'amplitude', 'wavenumber', 'slope']
 
     kind = 'straight'; radius = 0.5_wp; incline_deg = 10; length = 50
     helix_radius = 3; pitch = 0.3_wp; turn_sense = 1; turns = 2
     amplitude = 1.5_wp; wavenumber = 0.4_wp; slope = 0.1_wp
-    call open_group(input, 'channel', names, r, status)
-    call r%get('kind', kind, status, choices=[character(len=8) :: 'straight', 'helix', 's_bend'])
-    call r%get('radius', radius, in_range(0.01_wp, 10.0_wp, 'm'), status)
+    call open_group(input, 'channel', r, status)
+    call r%get('kind', kind, status)
+    call r%get('radius', radius, status)
     if (.not. status%ok()) return
     unused = 'a '//trim(kind)//' channel does not use it (see docs/water.md)'
     select case (trim(kind))
     case ('helix')
       call r%refuse_given([character(len=12) :: 'incline_deg', 'length', 'amplitude', 'wavenumber', 'slope'], unused, status)
-      call r%get('helix_radius', helix_radius, in_range(0.01_wp, 1e3_wp, 'm'), status)
-      call r%get('pitch', pitch, in_range(-100.0_wp, 100.0_wp, 'm/rad'), status)
-      call r%get('turn_sense', turn_sense, in_range(-1.0_wp, 1.0_wp, '1'), status)
-      call r%get('turns', turns, above(0.0_wp, 1e3_wp, '1'), status)
+      call r%get('helix_radius', helix_radius, status)
+      call r%get('pitch', pitch, status)
+      call r%get('turn_sense', turn_sense, status)
+      call r%get('turns', turns, status)
       if (status%ok() .and. abs(turn_sense) /= 1) &
         call r%invalid('turn_sense', format_real(turn_sense), 'must be +1 or -1', status)
       if (status%ok() .and. helix_radius <= radius) &
@@ -70,16 +68,16 @@ contains
       if (status%ok()) tube = new_helix_tube(radius, helix_radius, pitch, turn_sense, 2*pi*turns, built)
     case ('s_bend')
       call r%refuse_given([character(len=12) :: 'incline_deg', 'helix_radius', 'pitch', 'turn_sense', 'turns'], unused, status)
-      call r%get('length', length, in_range(0.1_wp, 1e4_wp, 'm'), status)
-      call r%get('amplitude', amplitude, in_range(-1e3_wp, 1e3_wp, 'm'), status)
-      call r%get('wavenumber', wavenumber, in_range(1e-4_wp, 100.0_wp, '1/m'), status)
-      call r%get('slope', slope, in_range(-10.0_wp, 10.0_wp, '1'), status)
+      call r%get('length', length, status)
+      call r%get('amplitude', amplitude, status)
+      call r%get('wavenumber', wavenumber, status)
+      call r%get('slope', slope, status)
       if (status%ok()) tube = new_s_bend_tube(radius, amplitude, wavenumber, slope, length, built)
     case default
       call r%refuse_given([character(len=12) :: 'helix_radius', 'pitch', 'turn_sense', 'turns', 'amplitude', &
                           'wavenumber', 'slope'], unused, status)
-      call r%get('length', length, in_range(0.1_wp, 1e4_wp, 'm'), status)
-      call r%get('incline_deg', incline_deg, in_range(0.0_wp, 89.0_wp, 'deg'), status)
+      call r%get('length', length, status)
+      call r%get('incline_deg', incline_deg, status)
       if (status%ok()) tube = new_straight_tube(radius, incline_deg*pi/180, length, built)
     end select
     ! the fold and clearance checks of every tube (no turn passing through another)
@@ -100,15 +98,12 @@ contains
     type(group_reader_t) :: r
     character(len=:), allocatable :: unused
     integer :: i
-    character(len=*), parameter :: names(20) = [character(len=16) :: 'flow_rate', 'start', 'u0', 'v0', &
-      'v_left0', 'v_right0', 'height0', 'speed0', 'beta0', 'f1', 'f2', 'f3', 'correction', 'mass', &
-      'gravity', 'min_speed', 'min_criticality', 'stations', 'table_step', 'edges']
 
     start = 'edges'
     correction = 'full'
-    call open_group(input, 'water', names, r, status)
-    call r%get('start', start, status, choices=[character(len=12) :: 'edges', 'height', 'speed', 'height_speed'])
-    call r%get('correction', correction, status, choices=[character(len=9) :: 'full', 'no_radius', 'off'])
+    call open_group(input, 'water', r, status)
+    call r%get('start', start, status)
+    call r%get('correction', correction, status)
     if (.not. status%ok()) return
     ! what each start uses (docs/water.md); a value it does not use is refused
     unused = 'start = '''//trim(start)//''' does not use it (see docs/water.md)'
@@ -122,23 +117,23 @@ contains
     case ('height_speed')
       call r%refuse_given([character(len=9) :: 'v_left0', 'v_right0', 'flow_rate'], unused, status)
     end select
-    call r%get('flow_rate', config%flow_rate, in_range(1e-6_wp, 1.0_wp, 'm^3/s'), status)
-    call r%get('u0', config%start%u0, in_range(-1e6_wp, 1e6_wp, 'surface parameter'), status)
-    call r%get('v0', config%start%v0, in_range(-10.0_wp, 10.0_wp, 'rad'), status)
-    call r%get('v_left0', config%start%v_left, in_range(-10.0_wp, 10.0_wp, 'rad'), status)
-    call r%get('v_right0', config%start%v_right, in_range(-10.0_wp, 10.0_wp, 'rad'), status)
-    call r%get('height0', config%start%height, in_range(1e-6_wp, 10.0_wp, 'm'), status)
-    call r%get('speed0', config%start%speed, in_range(1e-3_wp, 100.0_wp, 'm/s'), status)
-    call r%get('beta0', config%start%beta, in_range(-1.5_wp, 1.5_wp, 'rad'), status)
-    call r%get('f1', config%f1, in_range(0.0_wp, 1e3_wp, 'kg/m'), status)
-    call r%get('f2', config%f2, in_range(0.0_wp, 1e3_wp, 'kg'), status)
-    call r%get('f3', config%f3, in_range(0.0_wp, 1e3_wp, 'kg m'), status)
-    call r%get('mass', config%mass, in_range(1e-3_wp, 1e3_wp, 'kg'), status)
-    call r%get('gravity', config%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
-    call r%get('min_speed', config%min_speed, in_range(1e-4_wp, 10.0_wp, 'm/s'), status)
-    call r%get('min_criticality', config%min_criticality, in_range(1e-6_wp, 0.9_wp, '1'), status)
-    call r%get_list('stations', config%stations, max_stations, in_range(0.0_wp, 1e6_wp, 'm'), status)
-    call r%get('table_step', config%table_step, in_range(1e-4_wp, 1e3_wp, 'm'), status)
+    call r%get('flow_rate', config%flow_rate, status)
+    call r%get('u0', config%start%u0, status)
+    call r%get('v0', config%start%v0, status)
+    call r%get('v_left0', config%start%v_left, status)
+    call r%get('v_right0', config%start%v_right, status)
+    call r%get('height0', config%start%height, status)
+    call r%get('speed0', config%start%speed, status)
+    call r%get('beta0', config%start%beta, status)
+    call r%get('f1', config%f1, status)
+    call r%get('f2', config%f2, status)
+    call r%get('f3', config%f3, status)
+    call r%get('mass', config%mass, status)
+    call r%get('gravity', config%gravity, status)
+    call r%get('min_speed', config%min_speed, status)
+    call r%get('min_criticality', config%min_criticality, status)
+    call r%get_list('stations', config%stations, max_stations, status)
+    call r%get('table_step', config%table_step, status)
     call r%get('edges', config%edges, status)
     if (.not. status%ok()) return
     if (start == 'edges' .and. .not. config%start%v_left > config%start%v_right) then

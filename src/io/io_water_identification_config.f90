@@ -8,7 +8,7 @@ module io_water_identification_config
   use base_status, only: status_t, prefix_status
   use design_water_identification, only: water_measurements_t, water_fit_options_t, SPEED_MIDPOINT, &
     SPEED_PASSAGE, MIDDLE_EDGES, MIDDLE_STREAMLINE
-  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, format_real
+  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, format_real
   use io_csv, only: read_csv_table
   use io_measured_segments, only: read_measured_segments, check_in_order
   implicit none (type, external)
@@ -41,12 +41,11 @@ contains
     real(wp), allocatable :: table(:, :), s(:), v(:)
     integer, allocatable :: lines(:)
     integer :: k
-    real(wp), parameter :: big = 1e6_wp
-    character(len=*), parameter :: names(19) = [character(len=18) :: 'sections_file', 'segments_file', &
-      'section_arc_length', 'section_v', 'segment_start', 'segment_end', 'segment_speed', 'weight', 'k1', &
-      'estimate', 'lower', 'upper', 'speed', 'middle', 'threads', 'ftol', 'xtol', 'sweep_weights', 'twin_f']
+    type(bounds_t) :: columns(2)
 
-    call open_group(input, 'identify', names, r, status)
+    call open_group(input, 'identify', r, status, table='identify_water')
+    call r%bounds('section_arc_length', columns(1), status)
+    call r%bounds('section_v', columns(2), status)
     if (.not. status%ok()) return
     sections_file = ''
     segments_file = ''
@@ -55,7 +54,7 @@ contains
     if (.not. status%ok()) return
     config%twin = r%has('twin_f')
     if (config%twin) then
-      call r%get('twin_f', config%twin_f, in_range(0.0_wp, 1e5_wp, 'kg/m, kg, kg m'), status)
+      call r%get('twin_f', config%twin_f, status)
       if (.not. status%ok()) return
       if (len_trim(sections_file) > 0 .or. len_trim(segments_file) > 0 .or. r%has('section_v') .or. &
           r%has('segment_speed')) then
@@ -72,8 +71,7 @@ contains
         return
       end if
       config%sections_file = input%resolve_path(sections_file)
-      call read_csv_table(config%sections_file, 2, 2, max_sections, [in_range(0.0_wp, big, 'm'), &
-                          in_range(-4.0_wp, 8.0_wp, 'rad')], table, status, lines)
+      call read_csv_table(config%sections_file, 2, 2, max_sections, columns, table, status, lines)
       if (.not. status%ok()) then
         call prefix_status(status, r%where('sections_file')//': &identify: sections_file')
         return
@@ -85,8 +83,8 @@ contains
       config%data%section_v = table(2, :)
     else
       config%sections_file = ''
-      call r%get_list('section_arc_length', s, max_sections, in_range(0.0_wp, big, 'm'), status)
-      call r%get_list('section_v', v, max_sections, in_range(-4.0_wp, 8.0_wp, 'rad'), status)
+      call r%get_list('section_arc_length', s, max_sections, status)
+      call r%get_list('section_v', v, max_sections, status)
       if (.not. status%ok()) return
       if (config%twin) v = 0*s
       if (size(v) /= size(s)) then
@@ -112,11 +110,11 @@ contains
     associate (o => config%options)
       if (size(config%data%segment_start) == 0) o%weight = 0
       if (size(config%data%section_arc_length) == 0) o%weight = 1
-      call r%get('weight', o%weight, in_range(0.0_wp, 1.0_wp, '1'), status)
-      call r%get('k1', o%k1, above(0.0_wp, 100.0_wp, 'rad s/m'), status)
+      call r%get('weight', o%weight, status)
+      call r%get('k1', o%k1, status)
       call r%get_parts('estimate', o%estimate, 'f1, f2, f3', status)
-      call r%get_parts('lower', o%lower, in_range(0.0_wp, 1e5_wp, 'kg/m, kg, kg m'), 'f1, f2, f3', status)
-      call r%get_parts('upper', o%upper, above(0.0_wp, 1e5_wp, 'kg/m, kg, kg m'), 'f1, f2, f3', status)
+      call r%get_parts('lower', o%lower, 'f1, f2, f3', status)
+      call r%get_parts('upper', o%upper, 'f1, f2, f3', status)
       if (.not. status%ok()) return
       if (any(.not. o%upper > o%lower)) then
         call r%invalid('upper', format_real(o%upper(findloc(.not. o%upper > o%lower, .true., dim=1))), &
@@ -127,16 +125,16 @@ contains
         call r%invalid('estimate', '.false., .false., .false.', 'estimate at least one of f1, f2, f3', status)
         return
       end if
-      call r%get('ftol', o%solver%ftol, above(0.0_wp, 1.0_wp, '1'), status)
-      call r%get('xtol', o%solver%xtol, above(0.0_wp, 1.0_wp, '1'), status)
+      call r%get('ftol', o%solver%ftol, status)
+      call r%get('xtol', o%solver%xtol, status)
     end associate
     speed_kind = 'midpoint'
     middle_kind = 'edges'
-    call r%get('speed', speed_kind, status, choices=[character(len=8) :: 'midpoint', 'passage'])
-    call r%get('middle', middle_kind, status, choices=[character(len=10) :: 'edges', 'streamline'])
+    call r%get('speed', speed_kind, status)
+    call r%get('middle', middle_kind, status)
     config%speed_kind = merge(SPEED_MIDPOINT, SPEED_PASSAGE, speed_kind == 'midpoint')
     config%middle_kind = merge(MIDDLE_EDGES, MIDDLE_STREAMLINE, middle_kind == 'edges')
-    call r%get('threads', config%threads, 1, 1024, status)
-    call r%get_list('sweep_weights', config%sweep_weights, max_weights, in_range(0.0_wp, 1.0_wp, '1'), status)
+    call r%get('threads', config%threads, status)
+    call r%get_list('sweep_weights', config%sweep_weights, max_weights, status)
   end subroutine read_water_identification_config
 end module io_water_identification_config

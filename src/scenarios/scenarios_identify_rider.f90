@@ -24,6 +24,7 @@ module scenarios_identify_rider
   use io_rider_identification_config, only: rider_identification_config_t, read_rider_identification_config
   use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t
+  use io_input_declarations, only: declared_unit
   use io_xdmf, only: attach_surface_view
   use scenarios_water, only: build_water, write_slide_grid
   use scenarios_ride, only: refuse_start
@@ -277,7 +278,7 @@ contains
     n = size(setup%data%station_arc_length)
     call summary%start('identify_rider', 'slidesim identify_rider: mu_D from '//format_integer(n)// &
                        ' stations and '//format_integer(size(setup%data%segment_start))//' segments')
-    call summary%add('mu', 'mu_D', fit%mu, '1')
+    call summary%add('mu', 'mu_D', fit%mu, declared_unit('rider', 'mu'))
     call summary%add('standard_error', 'standard error', fit%standard_error, '1')
     if (fit%at_bound) call summary%add_text('at_bound', 'at a bound', 'yes: mu_D lies on lower or upper')
     call summary%add('cost', 'cost F2 (4.43)', fit%cost, 'rad^2')

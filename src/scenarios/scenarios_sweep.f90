@@ -20,12 +20,12 @@ module scenarios_sweep
     ride_description, N_SWEPT, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, V_HEADING, V_SPEED, V_FLOW_RATE, &
     V_F1, V_F2, V_F3, F_FELT_MAGNITUDE_MAX, RIDE_COMPLETE, RIDE_STOPPED, RIDE_FAILED, ride_status_names
   use design_sweep_ranks, only: start_ranks, gather_rides, finish_ranks
-  use io_input, only: input_text_t, check_known_groups, format_real, group_reader_t, open_group, in_range, &
+  use io_input, only: input_text_t, check_known_groups, format_real, group_reader_t, open_group, &
                       where_given
   use io_output_files, only: claim_output
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
-  use io_rider_config, only: rider_config_t, read_rider_config, rider_names
+  use io_rider_config, only: rider_config_t, read_rider_config
   use io_sweep_config, only: sweep_config_t, read_sweep_config
   use io_sweep_results, only: write_sweep_results, write_sweep_csv
   use io_hdf5, only: result_file_t
@@ -181,8 +181,8 @@ contains
     type(group_reader_t) :: r
     type(status_t) :: status
     degrees = 0
-    call open_group(input, 'rider', rider_names, r, status)   ! read_rider_config checked it
-    call r%get('heading0_deg', degrees, in_range(-180.0_wp, 180.0_wp, 'deg'), status)
+    call open_group(input, 'rider', r, status)   ! read_rider_config checked it
+    call r%get('heading0_deg', degrees, status)
   end function heading_degrees
 
   !> XDMF next to the result: the slide the population rode.

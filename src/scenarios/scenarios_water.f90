@@ -24,6 +24,7 @@ module scenarios_water
   use io_water_results, only: write_water_results
   use io_system, only: write_standard_output
   use io_summary, only: summary_t, degrees
+  use io_input_declarations, only: declared_unit
   use base_text, only: format_short, format_integer
   use io_surface_grid, only: write_surface_grid, evenly_spaced
   use io_xdmf, only: xdmf_t
@@ -316,7 +317,7 @@ contains
     call summary%start('water', 'slidesim water in '//description%slide%describe())
     if (allocated(description%slide_name)) call summary%add_text('slide', 'slide', description%slide_name)
     call summary%add('slide_length', 'slide centreline length', description%slide%length(), 'm')
-    call summary%add('flow_rate', 'flow rate', s%flow_rate, 'm^3/s', 'l/s', 1000.0_wp)
+    call summary%add('flow_rate', 'flow rate', s%flow_rate, declared_unit('water', 'flow_rate'), 'l/s', 1000.0_wp)
     call summary%add('flow_time', 'flow time', s%time(n), 's')
     call summary%add('slide_length_covered', 'slide length covered', s%arc_length(n) - s%arc_length(1), 'm')
     call summary%add_text('outcome', 'stopped at', outcome_name(s%outcome))

@@ -87,6 +87,11 @@ ri limits_given "&rider limit_quantity = 'speed', limit_max = 8.0, limit_unit = 
 expect limits_given 1 '&rider' 'limit_quantity is not used by identify_rider'
 ri upper_low "&identify twin_mu = 0.07, station_arc_length = 3.0, lower = 0.05, upper = 0.01 /"
 expect upper_low 1 '&identify' 'upper = 0.01' 'must exceed lower'
+# twin_mu and the bounds of mu_D have the range of &rider mu (one declaration; they allowed up to 10)
+ri twin_mu_high "&identify twin_mu = 5.0, station_arc_length = 3.0 /"
+expect twin_mu_high 1 '&identify' 'twin_mu = 5.0' 'in [0, 2]'
+ri upper_high "&identify twin_mu = 0.07, station_arc_length = 3.0, upper = 5.0 /"
+expect upper_high 1 '&identify' 'upper = 5.0' 'in [0, 2]'
 ri nothing "&identify weight = 0.5 /"
 expect nothing 1 '&identify' 'give stations or segments'
 
@@ -102,6 +107,9 @@ wi w_twin_with_values "&identify twin_f = 0.03, 0.1, 1.0, section_arc_length = 5
 expect w_twin_with_values 1 '&identify' 'twin_f' 'no values and no files'
 wi w_beyond "&identify twin_f = 0.03, 0.1, 1.0, section_arc_length = 5.0, 90.0 /"
 expect w_beyond 1 'stations(2) = 90' 'must lie on the slide'
+# twin_f and the bounds of f have the range of &water f1, f2, f3 (they allowed up to 1e5)
+wi w_twin_high "&identify twin_f = 0.03, 2000.0, 1.0, section_arc_length = 5.0 /"
+expect w_twin_high 1 '&identify' 'twin_f(2) = 2000.0' 'in [0, 1000]'
 printf "&run scenario = 'identify_water', output = 'o.h5' /\n&surface kind = 'slide', geometry_file = 'builtin:demo_slide' /\n&water flow_rate = 0.004, start = 'edges', u0 = 0.0, v_left0 = 1.92, v_right0 = 1.22, stations = 5.0 /\n&identify twin_f = 0.03, 0.1, 1.0, section_arc_length = 5.0 /\n" > "$work/w_stations.nml"
 expect w_stations 1 '&water' 'stations are not used by identify_water'
 

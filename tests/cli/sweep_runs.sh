@@ -95,7 +95,10 @@ bad unknown "  weight = 60.0" 'unknown variable "weight"; allowed: sex mass heig
 bad range_count "  height_range = 1.5, 1.9, 0" "&sweep: height_range = 1.5, 1.9, 0 is not allowed: first, last, count: the count must be a whole number in [2, 10000]"
 bad paired_counts "  mass = 60.0, 70.0\n  height = 1.7\n  combine = 'paired'" "&sweep: height = 1.7 is not allowed: paired with mass: it needs as many values (2), it has 1"
 bad sex_word "  sex = 'boy'" "sex"
-bad flow_zero "  flow_rate = 0.004, 0.0" "&sweep: flow_rate(2) = 0.0 is not allowed: must be a finite number > 0"
+bad flow_zero "  flow_rate = 0.004, 0.0" "&sweep: flow_rate(2) = 0.0 is not allowed: must be a finite number in [1.0E-06, 1] (m^3/s)"
+# one declaration of flow_rate and f1 for &water and &sweep: the sweep no longer allows what &water refuses
+bad flow_high "  flow_rate = 0.004, 2.0" "&sweep: flow_rate(2) = 2.0 is not allowed: must be a finite number in [1.0E-06, 1] (m^3/s)"
+bad f1_high "  f1 = 0.03, 2000.0" "&sweep: f1(2) = 2000.0 is not allowed: must be a finite number in [0, 1000] (kg/m)"
 bad threads "  mass = 60.0\n  threads = -1" "&sweep: threads = -1 is not allowed: must be a whole number in [0, 1024]"
 bad too_many "  mass_range = 50, 100, 10000\n  height_range = 1.5, 1.9, 10000" "at most 1000000 rides"
 
