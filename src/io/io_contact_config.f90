@@ -11,7 +11,7 @@ module io_contact_config
   use kinetostatics_force_law, only: force_law_kind_t
   use kinetostatics_force_law_factory, only: force_law_kinds, force_law_kind_index
   use contact_model, only: contact_system_t, LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
-  use io_input, only: input_text_t, group_reader_t, open_group, in_range, above, group_count, format_vector
+  use io_input, only: input_text_t, group_reader_t, open_group, group_count, format_vector
   use io_kind_parameters, only: read_kind_parameters, refuse_other_parameters, parameter_variables
   use io_surface_config, only: read_surface_config, surface_variables
   implicit none (type, external)
@@ -58,8 +58,8 @@ contains
     type(contact_system_t), intent(inout) :: system
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
-    call open_group(input, 'contact_model', ['gravity'], r, status)
-    call r%get('gravity', system%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
+    call open_group(input, 'contact_model', r, status)
+    call r%get('gravity', system%gravity, status)
   end subroutine read_model_group
 
   !> The k-th &body.
@@ -72,25 +72,23 @@ contains
     character(len=name_length) :: name, solid_of
     real(wp) :: inertia(3), products(3), angles_deg(3)
     integer :: j
-    character(len=*), parameter :: names(10) = [character(len=16) :: 'name', 'mass', 'solid_of', 'centre', &
-      'inertia', 'products', 'position', 'angles_deg', 'velocity', 'angular_velocity']
     if (.not. status%ok()) return
     name = ''
     solid_of = ''
     inertia = 0
     products = 0
     angles_deg = 0
-    call open_group(input, 'body', names, r, status, occurrence=k)
+    call open_group(input, 'body', r, status, occurrence=k)
     call r%get('name', name, status)
-    call r%get('mass', system%bodies(k)%mass, above(0.0_wp, 1e9_wp, 'kg'), status)
+    call r%get('mass', system%bodies(k)%mass, status)
     call r%get('solid_of', solid_of, status)
-    call r%get('centre', system%bodies(k)%centre, in_range(-1e6_wp, 1e6_wp, 'm'), status)
-    call r%get('inertia', inertia, in_range(0.0_wp, 1e12_wp, 'kg m^2'), status)
-    call r%get('products', products, in_range(-1e12_wp, 1e12_wp, 'kg m^2'), status)
-    call r%get('position', system%bodies(k)%position, in_range(-1e6_wp, 1e6_wp, 'm'), status)
-    call r%get('angles_deg', angles_deg, in_range(-360.0_wp, 360.0_wp, 'deg'), status)
-    call r%get('velocity', system%bodies(k)%velocity, in_range(-1e4_wp, 1e4_wp, 'm/s'), status)
-    call r%get('angular_velocity', system%bodies(k)%angular_velocity, in_range(-1e5_wp, 1e5_wp, 'rad/s'), status)
+    call r%get('centre', system%bodies(k)%centre, status)
+    call r%get('inertia', inertia, status)
+    call r%get('products', products, status)
+    call r%get('position', system%bodies(k)%position, status)
+    call r%get('angles_deg', angles_deg, status)
+    call r%get('velocity', system%bodies(k)%velocity, status)
+    call r%get('angular_velocity', system%bodies(k)%angular_velocity, status)
     if (.not. status%ok()) return
     if (len_trim(name) == 0) then
       call r%invalid('name', '''''', 'every &body needs a name', status)
@@ -163,7 +161,7 @@ contains
     character(len=name_length) :: name, body_1, shape_1, body_2, shape_2, friction
     character(len=8) :: level, chain
     type(force_law_kind_t), allocatable :: laws(:)
-    character(len=name_length), allocatable :: names(:), law_variables(:), friction_names(:)
+    character(len=name_length), allocatable :: law_variables(:), friction_names(:)
     integer :: j
     if (.not. status%ok()) return
     ! the variables of every law kind registered (kinetostatics_force_law_factory)
@@ -173,25 +171,23 @@ contains
       call parameter_variables(laws(j)%parameters, law_variables)
     end do
     friction_names = [character(len=name_length) :: 'none', (laws(j)%name, j = 1, size(laws))]
-    names = [character(len=name_length) :: 'name', 'body_1', 'shape_1', 'side_1', 'body_2', 'shape_2', 'side_2', &
-             'friction', 'rolling', 'level', 'chain', law_variables]
     name = ''; body_1 = 'ground'; shape_1 = ''; body_2 = ''; shape_2 = ''
     friction = 'none'
     level = 'position'
     chain = ''
     associate (c => system%contacts(k))
-      call open_group(input, 'contact', names, r, status, occurrence=k)
+      call open_group(input, 'contact', r, status, occurrence=k, also=law_variables)
       call r%get('name', name, status)
       call r%get('body_1', body_1, status)
       call r%get('shape_1', shape_1, status)
-      call r%get('side_1', c%side_1, in_range(-1.0_wp, 1.0_wp, '1'), status)
+      call r%get('side_1', c%side_1, status)
       call r%get('body_2', body_2, status)
       call r%get('shape_2', shape_2, status)
-      call r%get('side_2', c%side_2, in_range(-1.0_wp, 1.0_wp, '1'), status)
+      call r%get('side_2', c%side_2, status)
       call r%get('friction', friction, status, choices=friction_names)
       call r%get('rolling', c%rolling, status)
-      call r%get('level', level, status, choices=[character(len=8) :: 'position', 'velocity'])
-      call r%get('chain', chain, status, choices=[character(len=8) :: 'open', 'loop'])
+      call r%get('level', level, status)
+      call r%get('chain', chain, status)
       if (.not. status%ok()) return
       if (chain == 'open' .and. c%rolling) call r%invalid('chain', '''open''', 'a rolling contact needs the '// &
         'loop (chain = ''loop'', the default with rolling): the open chain is for sliding contacts', status)

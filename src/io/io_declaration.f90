@@ -33,7 +33,7 @@ module io_declaration
     character(len=24) :: range_of = ''
     integer :: kind = VALUE_REAL
     character(len=32) :: shape = ''
-    character(len=32) :: unit = ''
+    character(len=40) :: unit = ''
     character(len=48) :: default = ''
     real(wp) :: low = 0, high = 0
     logical :: open_low = .false.

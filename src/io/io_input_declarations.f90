@@ -7,21 +7,24 @@ module io_input_declarations
   use io_declaration, only: declaration_t, allowed_text, in_groups
   use io_declarations_ride, only: ride_declarations
   use io_declarations_design, only: design_declarations
+  use io_declarations_multibody, only: multibody_declarations
   implicit none (type, external)
   private
   public :: find_declaration, declared_names, input_reference, declaration, declaration_count, declared_unit
 
   !> Every declaration, in the order of the reference.
-  type(declaration_t), parameter :: declarations(*) = [ride_declarations, design_declarations]
+  type(declaration_t), parameter :: declarations(*) = [ride_declarations, design_declarations, multibody_declarations]
 
   !> The groups of the reference, in its order (&water_solver has the
   !> declarations of &solver, and is named in its rows).
   character(len=*), parameter :: reference_groups(*) = [character(len=16) :: 'run', 'solver', 'evaluation', &
-    'channel', 'water', 'rider', 'sweep', 'identify_rider', 'identify_water', 'optimize']
+    'channel', 'water', 'rider', 'sweep', 'identify_rider', 'identify_water', 'optimize', 'surface', 'shape', &
+    'grid', 'point_mass', 'pendulum', 'fourbar', 'sled', 'contact_model', 'body', 'contact']
   !> The heading of each (a group read differently by two scenarios names both).
   character(len=*), parameter :: reference_titles(size(reference_groups)) = [character(len=40) :: '&run', &
     '&solver', '&evaluation', '&channel', '&water', '&rider', '&sweep', '&identify (scenario identify_rider)', &
-    '&identify (scenario identify_water)', '&optimize']
+    '&identify (scenario identify_water)', '&optimize', '&surface', '&shape', '&grid', '&point_mass', &
+    '&pendulum', '&fourbar', '&sled', '&contact_model', '&body', '&contact']
   !> A line under a group's heading, where the group needs one.
   character(len=*), parameter :: reference_notes(size(reference_groups)) = [character(len=240) :: '', &
     'The ride''s `&water_solver` (the integration of its water) has the same variables. Some scenarios '// &
@@ -31,7 +34,15 @@ module io_input_declarations
     'last, count); one not swept keeps its `&rider` / `&water` value (docs/sweep.md).', &
     'The rider''s friction from measured wall angles and speeds (docs/design.md).', &
     'The water''s friction from measured flow middles and speeds (docs/design.md).', &
-    'The geometry optimisation of a tube slide (thesis 4.7, docs/design.md).']
+    'The geometry optimisation of a tube slide (thesis 4.7, docs/design.md).', &
+    'Besides these, the parameters of the chosen kind (docs/inputs.md, "&surface"; declared with the kind).', &
+    'A surface of the contact scenario: the variables of `&surface` and a name (docs/contact.md).', &
+    'The resolution of the geometry scenario''s written grid (docs/geometry.md).', &
+    'Besides these, the parameters of the chosen friction law (docs/inputs.md, "&point_mass").', &
+    'docs/inputs_multibody.md.', 'docs/inputs_multibody.md.', 'docs/inputs_multibody.md.', &
+    'The contact scenario (docs/contact.md).', 'A rigid body of the contact scenario (docs/contact.md).', &
+    'A point contact of the contact scenario; besides these, the parameters of the chosen friction law '// &
+    '(docs/contact.md).']
 
 contains
 

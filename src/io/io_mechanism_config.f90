@@ -8,7 +8,7 @@ module io_mechanism_config
   use numerics_ode, only: ode_stats_t
   use kinetostatics_models, only: pendulum_params_t, fourbar_params_t, sled_params_t
   use kinetostatics_recorder, only: mechanism_series_t
-  use io_input, only: input_text_t, group_reader_t, open_group, in_range, format_real, format_vector
+  use io_input, only: input_text_t, group_reader_t, open_group, format_real, format_vector
   use io_hdf5, only: result_file_t, units_per_second
   implicit none (type, external)
   private
@@ -42,25 +42,23 @@ contains
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
     integer :: n
-    character(len=*), parameter :: names(7) = [character(len=8) :: 'links', 'length', 'mass', 'inertia', &
-      'gravity', 'theta0', 'dtheta0']
 
     config%params%links = 1
     config%params%length = 1; config%params%mass = 1; config%params%inertia = 0
     config%params%gravity = [0.0_wp, 0.0_wp, -standard_gravity]
-    call open_group(input, 'pendulum', names, r, status)
-    call r%get('links', config%params%links, 1, 2, status)
+    call open_group(input, 'pendulum', r, status)
+    call r%get('links', config%params%links, status)
     if (.not. status%ok()) return
     n = config%params%links
-    call r%get_parts('length', config%params%length(:n), in_range(1e-3_wp, 1e3_wp, 'm'), 'links = '//digit(n), &
+    call r%get_parts('length', config%params%length(:n), 'links = '//digit(n), &
                      status)
-    call r%get_parts('mass', config%params%mass(:n), in_range(1e-6_wp, 1e6_wp, 'kg'), 'links = '//digit(n), status)
-    call r%get_parts('inertia', config%params%inertia(:n), in_range(0.0_wp, 1e6_wp, 'kg m^2'), &
+    call r%get_parts('mass', config%params%mass(:n), 'links = '//digit(n), status)
+    call r%get_parts('inertia', config%params%inertia(:n), &
                      'links = '//digit(n), status)
-    call r%get_parts('theta0', config%theta0(:n), in_range(-100.0_wp, 100.0_wp, 'rad'), 'links = '//digit(n), status)
-    call r%get_parts('dtheta0', config%dtheta0(:n), in_range(-1e4_wp, 1e4_wp, 'rad/s'), 'links = '//digit(n), &
+    call r%get_parts('theta0', config%theta0(:n), 'links = '//digit(n), status)
+    call r%get_parts('dtheta0', config%dtheta0(:n), 'links = '//digit(n), &
                      status)
-    call r%get('gravity', config%params%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
+    call r%get('gravity', config%params%gravity, status)
   end subroutine read_pendulum_config
 
   subroutine read_fourbar_config(input, config, status)
@@ -68,19 +66,17 @@ contains
     type(fourbar_config_t), intent(out) :: config
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
-    character(len=*), parameter :: names(9) = [character(len=8) :: 'a', 'b', 'c', 'd', 'mass', 'gravity', &
-      'crank0', 'dcrank0', 'branch']
 
-    call open_group(input, 'fourbar', names, r, status)
-    call r%get('a', config%params%a, in_range(1e-3_wp, 1e3_wp, 'm'), status)
-    call r%get('b', config%params%b, in_range(1e-3_wp, 1e3_wp, 'm'), status)
-    call r%get('c', config%params%c, in_range(1e-3_wp, 1e3_wp, 'm'), status)
-    call r%get('d', config%params%d, in_range(1e-3_wp, 1e3_wp, 'm'), status)
-    call r%get('mass', config%params%mass, in_range(1e-6_wp, 1e6_wp, 'kg'), status)
-    call r%get('gravity', config%params%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
-    call r%get('crank0', config%crank0, in_range(-100.0_wp, 100.0_wp, 'rad'), status)
-    call r%get('dcrank0', config%dcrank0, in_range(-1e4_wp, 1e4_wp, 'rad/s'), status)
-    call r%get('branch', config%branch, -1, 1, status)
+    call open_group(input, 'fourbar', r, status)
+    call r%get('a', config%params%a, status)
+    call r%get('b', config%params%b, status)
+    call r%get('c', config%params%c, status)
+    call r%get('d', config%params%d, status)
+    call r%get('mass', config%params%mass, status)
+    call r%get('gravity', config%params%gravity, status)
+    call r%get('crank0', config%crank0, status)
+    call r%get('dcrank0', config%dcrank0, status)
+    call r%get('branch', config%branch, status)
     if (status%ok() .and. config%branch == 0) call r%invalid('branch', '0', 'must be +1 or -1', status)
   end subroutine read_fourbar_config
 
@@ -91,32 +87,29 @@ contains
     real(wp) :: inertia(3), u0, v0, phi0, du0, dv0, dphi0
     type(group_reader_t) :: r
     integer :: k
-    character(len=*), parameter :: names(16) = [character(len=20) :: 'length', 'mass', 'inertia', 'gravity', &
-      'mu', 'viscous', 'regularization_speed', 'sigma', 'alpha_u', 'alpha_v', 'u0', 'v0', 'phi0', &
-      'du0', 'dv0', 'dphi0']
 
     inertia = [(config%params%inertia(k, k), k = 1, 3)]
     config%params%mu = 0; config%params%viscous = 0
     config%params%sigma = 1; config%params%alpha_u = 1; config%params%alpha_v = 0
     u0 = 0; v0 = 0; phi0 = 0; du0 = 0; dv0 = 0; dphi0 = 0
-    call open_group(input, 'sled', names, r, status)
-    call r%get('length', config%params%length, in_range(1e-3_wp, 100.0_wp, 'm'), status)
-    call r%get('mass', config%params%mass, in_range(1e-3_wp, 1e6_wp, 'kg'), status)
-    call r%get('inertia', inertia, in_range(0.0_wp, 1e6_wp, 'kg m^2'), status)
-    call r%get('gravity', config%params%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
-    call r%get('mu', config%params%mu, in_range(0.0_wp, 10.0_wp, '1'), status)
-    call r%get('viscous', config%params%viscous, in_range(0.0_wp, 1e6_wp, 'N s/m'), status)
-    call r%get('regularization_speed', config%params%regularization_speed, in_range(1e-12_wp, 1.0_wp, 'm/s'), &
+    call open_group(input, 'sled', r, status)
+    call r%get('length', config%params%length, status)
+    call r%get('mass', config%params%mass, status)
+    call r%get('inertia', inertia, status)
+    call r%get('gravity', config%params%gravity, status)
+    call r%get('mu', config%params%mu, status)
+    call r%get('viscous', config%params%viscous, status)
+    call r%get('regularization_speed', config%params%regularization_speed, &
                status)
-    call r%get('sigma', config%params%sigma, in_range(-1.0_wp, 1.0_wp, '1'), status)
-    call r%get('alpha_u', config%params%alpha_u, in_range(-1e3_wp, 1e3_wp, '1'), status)
-    call r%get('alpha_v', config%params%alpha_v, in_range(-1e3_wp, 1e3_wp, '1'), status)
-    call r%get('u0', u0, in_range(-1e6_wp, 1e6_wp, 'surface parameter'), status)
-    call r%get('v0', v0, in_range(-1e6_wp, 1e6_wp, 'surface parameter'), status)
-    call r%get('phi0', phi0, in_range(-100.0_wp, 100.0_wp, 'rad'), status)
-    call r%get('du0', du0, in_range(-1e3_wp, 1e3_wp, 'surface parameter per s'), status)
-    call r%get('dv0', dv0, in_range(-1e3_wp, 1e3_wp, 'surface parameter per s'), status)
-    call r%get('dphi0', dphi0, in_range(-1e3_wp, 1e3_wp, 'rad/s'), status)
+    call r%get('sigma', config%params%sigma, status)
+    call r%get('alpha_u', config%params%alpha_u, status)
+    call r%get('alpha_v', config%params%alpha_v, status)
+    call r%get('u0', u0, status)
+    call r%get('v0', v0, status)
+    call r%get('phi0', phi0, status)
+    call r%get('du0', du0, status)
+    call r%get('dv0', dv0, status)
+    call r%get('dphi0', dphi0, status)
     if (.not. status%ok()) return
     if (2*maxval(inertia) > sum(inertia)) then
       call r%invalid('inertia', format_vector(inertia), 'principal moments (kg m^2) must be >= 0 and each at '// &

@@ -11,7 +11,7 @@ module io_point_mass_config
   use base_spec, only: spec_t
   use kinetostatics_force_law, only: force_law_kind_t
   use kinetostatics_force_law_factory, only: force_law_kinds, force_law_kind_index
-  use io_input, only: input_text_t, group_reader_t, open_group, in_range, format_real
+  use io_input, only: input_text_t, group_reader_t, open_group, format_real
   use io_kind_parameters, only: read_kind_parameters, refuse_other_parameters, parameter_variables
   implicit none (type, external)
   private
@@ -38,7 +38,7 @@ contains
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
     type(force_law_kind_t), allocatable :: laws(:)
-    character(len=name_length), allocatable :: law_variables(:), names(:), friction_names(:)
+    character(len=name_length), allocatable :: law_variables(:), friction_names(:)
     character(len=name_length) :: friction
     integer :: j
 
@@ -48,20 +48,18 @@ contains
       call parameter_variables(laws(j)%parameters, law_variables, renamed)
     end do
     friction_names = [character(len=name_length) :: 'none', (laws(j)%name, j = 1, size(laws))]
-    names = [character(len=name_length) :: 'mass', 'u0', 'v0', 'du0', 'dv0', 'gravity', 'friction', 'sigma', &
-             'alpha_u', 'alpha_v', law_variables]
     friction = 'none'
-    call open_group(input, 'point_mass', names, r, status)
-    call r%get('mass', config%mass, in_range(1e-6_wp, 1e6_wp, 'kg'), status)
-    call r%get('u0', config%u0, in_range(-1e6_wp, 1e6_wp, 'surface parameter (m on a plane)'), status)
-    call r%get('v0', config%v0, in_range(-1e6_wp, 1e6_wp, 'surface parameter (m on a plane)'), status)
-    call r%get('du0', config%du0, in_range(-1e3_wp, 1e3_wp, 'surface parameter per s'), status)
-    call r%get('dv0', config%dv0, in_range(-1e3_wp, 1e3_wp, 'surface parameter per s'), status)
-    call r%get('gravity', config%gravity, in_range(-1e3_wp, 1e3_wp, 'm/s^2'), status)
+    call open_group(input, 'point_mass', r, status, also=law_variables)
+    call r%get('mass', config%mass, status)
+    call r%get('u0', config%u0, status)
+    call r%get('v0', config%v0, status)
+    call r%get('du0', config%du0, status)
+    call r%get('dv0', config%dv0, status)
+    call r%get('gravity', config%gravity, status)
     call r%get('friction', friction, status, choices=friction_names)
-    call r%get('sigma', config%sigma, in_range(-1.0_wp, 1.0_wp, '1'), status)
-    call r%get('alpha_u', config%alpha_u, in_range(-1e3_wp, 1e3_wp, '1'), status)
-    call r%get('alpha_v', config%alpha_v, in_range(-1e3_wp, 1e3_wp, '1'), status)
+    call r%get('sigma', config%sigma, status)
+    call r%get('alpha_u', config%alpha_u, status)
+    call r%get('alpha_v', config%alpha_v, status)
     if (.not. status%ok()) return
     ! the law's parameters by its declarations; a coefficient the law does
     ! not use would be silently ignored: refused

@@ -11,7 +11,7 @@ module io_surface_config
   use geometry_surface, only: surface_t
   use geometry_surface_kind, only: surface_kind_t
   use geometry_surface_factory, only: surface_kinds, surface_kind_index, surface_from_spec, place_surface
-  use io_input, only: input_text_t, group_reader_t, open_group, in_range, load_input_file, group_present, &
+  use io_input, only: input_text_t, group_reader_t, open_group, load_input_file, group_present, &
                       check_known_groups, where_given
   use io_kind_parameters, only: read_kind_parameters, refuse_other_parameters, parameter_variables
   use io_geometry_config, only: read_geometry_config, geometry_groups, geometry_file_groups
@@ -53,19 +53,17 @@ contains
     type(surface_kind_t), allocatable :: kinds(:)
     integer :: i
     character(len=:), allocatable :: g
-    character(len=name_length), allocatable :: names(:), kind_variables(:), kind_names(:)
+    character(len=name_length), allocatable :: kind_variables(:), kind_names(:)
 
     g = 'surface'
     if (present(group)) g = group
     kinds = surface_kinds()
     kind_variables = surface_variables()
     kind_names = [character(len=name_length) :: (kinds(i)%name, i = 1, size(kinds)), geometry_kinds_here()]
-    names = [character(len=name_length) :: 'kind', 'origin', 'angles_deg', 'geometry_file', kind_variables]
-    if (present(name)) names = [character(len=name_length) :: 'name', names]
     kind = 'plane'
     geometry_file = ''
     origin = 0; angles_deg = 0
-    call open_group(input, g, names, r, status, occurrence)
+    call open_group(input, g, r, status, occurrence, also=kind_variables)
     if (present(name)) then
       given_name = ''
       call r%get('name', given_name, status)
@@ -74,8 +72,8 @@ contains
       name = trim(given_name)
     end if
     call r%get('kind', kind, status, choices=kind_names)
-    call r%get('origin', origin, in_range(-1e6_wp, 1e6_wp, 'm'), status)
-    call r%get('angles_deg', angles_deg, in_range(-360.0_wp, 360.0_wp, 'deg'), status)
+    call r%get('origin', origin, status)
+    call r%get('angles_deg', angles_deg, status)
     if (.not. status%ok()) return
     ! a value the kind does not use is refused (it would be silently ignored)
     if (any(kind == geometry_kinds_here())) then
@@ -198,7 +196,7 @@ contains
     type(group_reader_t) :: r
     character(len=32) :: scenario
     scenario = 'geometry'
-    call open_group(geometry_input, 'run', [character(len=8) :: 'scenario', 'output', 'title'], r, status)
+    call open_group(geometry_input, 'run', r, status)
     call r%get('scenario', scenario, status)
     if (status%ok() .and. trim(scenario) /= 'geometry') &
       call r%invalid('scenario', ''''//trim(scenario)//'''', 'a geometry file holds the geometry groups '// &

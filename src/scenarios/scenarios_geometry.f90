@@ -93,10 +93,10 @@ contains
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
     n_u = 400; n_v = 48; n_frames = 400
-    call open_group(input, 'grid', [character(len=8) :: 'n_u', 'n_v', 'n_frames'], r, status)
-    call r%get('n_u', n_u, 2, 100000, status)
-    call r%get('n_v', n_v, 2, 10000, status)
-    call r%get('n_frames', n_frames, 2, 100000, status)
+    call open_group(input, 'grid', r, status)
+    call r%get('n_u', n_u, status)
+    call r%get('n_v', n_v, status)
+    call r%get('n_frames', n_frames, status)
     ! x, y, z of every grid point are held in memory at once
     if (status%ok() .and. real(n_u, wp)*n_v > max_grid_points) &
       call r%invalid('n_u, n_v', format_integer(n_u)//', '//format_integer(n_v), 'the grid would have '// &

@@ -28,7 +28,8 @@ if ! diff -u "$work/committed.md" "$work/generated.md"; then
 fi
 # the tables hold every declared group
 for heading in '&run' '&solver' '&evaluation' '&channel' '&water' '&rider' '&sweep' \
-               '&identify (scenario identify_rider)' '&identify (scenario identify_water)' '&optimize'; do
+               '&identify (scenario identify_rider)' '&identify (scenario identify_water)' '&optimize' '&surface' '&shape' '&grid' \
+               '&point_mass' '&pendulum' '&fourbar' '&sled' '&contact_model' '&body' '&contact'; do
   if ! grep -qxF "### $heading" "$work/generated.md"; then
     echo "FAIL the reference lacks $heading"
     exit 1

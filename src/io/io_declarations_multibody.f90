@@ -1,0 +1,170 @@
+!> The declarations of the surface and multibody groups (io_declaration):
+!> &surface and the contact scenario's &shape (one declaration of what both
+!> hold), &grid, &point_mass, &pendulum, &fourbar, &sled, &contact_model,
+!> &body, &contact. A surface kind's and a force law's own parameters (a,
+!> b, c, radius, mu, ...) are declared with the kind (base_spec, read by
+!> io_kind_parameters), not here.
+module io_declarations_multibody
+  use base_kinds, only: wp
+  use io_declaration, only: declaration_t, VALUE_REAL, VALUE_INTEGER, VALUE_LOGICAL, VALUE_WORDS
+  implicit none (type, external)
+  private
+  public :: multibody_declarations
+
+  type(declaration_t), parameter :: multibody_declarations(*) = [ &
+    ! ---- &surface, &shape (+ the parameters of the kind)
+    declaration_t(groups='shape', name='name', kind=VALUE_WORDS, default='none', &
+      meaning='the shape''s name, which &contact shape_1, shape_2 give (required)'), &
+    declaration_t(groups='surface shape', name='kind', kind=VALUE_WORDS, default='''plane''', &
+      meaning='the surface: a kind of the registry (docs/inputs.md, "&surface"), or tube, slide, blended, '// &
+      'bspline described by the geometry groups'), &
+    declaration_t(groups='surface shape', name='origin', shape='3', unit='m', default='0, 0, 0', low=-1e6_wp, &
+      high=1e6_wp, meaning='where the surface''s own origin is placed'), &
+    declaration_t(groups='surface shape', name='angles_deg', shape='3', unit='deg', default='0, 0, 0', &
+      low=-360.0_wp, high=360.0_wp, meaning='its orientation, Cardan angles x-y''-z'''''), &
+    declaration_t(groups='surface shape', name='geometry_file', kind=VALUE_WORDS, default='''''', &
+      meaning='namelist file with the geometry groups of a tube, slide, blended or bspline surface (relative '// &
+      'to this input''s folder, or builtin:demo_slide)'), &
+    ! ---- &grid (scenario geometry)
+    declaration_t(groups='grid', name='n_u', kind=VALUE_INTEGER, unit='1', default='400', low=2.0_wp, &
+      high=1e5_wp, meaning='points of the written surface grid along u'), &
+    declaration_t(groups='grid', name='n_v', kind=VALUE_INTEGER, unit='1', default='48', low=2.0_wp, &
+      high=1e4_wp, meaning='points of the grid across (along v); n_u x n_v at most 2 x 10^7'), &
+    declaration_t(groups='grid', name='n_frames', kind=VALUE_INTEGER, unit='1', default='400', low=2.0_wp, &
+      high=1e5_wp, meaning='samples of the centerline''s frames'), &
+    ! ---- &point_mass (+ the parameters of the friction law)
+    declaration_t(groups='point_mass', name='mass', unit='kg', default='1', low=1e-6_wp, high=1e6_wp, &
+      meaning='mass'), &
+    declaration_t(groups='point_mass', name='u0', unit='surface parameter (m on a plane)', default='0', &
+      low=-1e6_wp, high=1e6_wp, meaning='surface coordinate u at t = 0, inside the domain'), &
+    declaration_t(groups='point_mass', name='v0', unit='surface parameter (m on a plane)', default='0', &
+      low=-1e6_wp, high=1e6_wp, meaning='surface coordinate v at t = 0, inside the domain'), &
+    declaration_t(groups='point_mass', name='du0', unit='surface parameter per s', default='0', low=-1e3_wp, &
+      high=1e3_wp, meaning='rate of u at t = 0'), &
+    declaration_t(groups='point_mass', name='dv0', unit='surface parameter per s', default='0', low=-1e3_wp, &
+      high=1e3_wp, meaning='rate of v at t = 0'), &
+    declaration_t(groups='point_mass', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
+      low=-1e3_wp, high=1e3_wp, meaning='gravity vector'), &
+    declaration_t(groups='point_mass', name='friction', kind=VALUE_WORDS, default='''none''', &
+      meaning='none, or a force law of the registry (docs/inputs.md, "&point_mass")'), &
+    declaration_t(groups='point_mass', name='sigma', unit='1', default='1', low=-1.0_wp, high=1.0_wp, &
+      meaning='side of the Darboux frame''s normal (thesis 3.38): +1 or -1'), &
+    declaration_t(groups='point_mass', name='alpha_u', unit='1', default='1', low=-1e3_wp, high=1e3_wp, &
+      meaning='the frame''s x axis along alpha_u r_u + alpha_v r_v (thesis 3.41), not both 0'), &
+    declaration_t(groups='point_mass', name='alpha_v', unit='1', default='0', low=-1e3_wp, high=1e3_wp, &
+      meaning='see alpha_u'), &
+    ! ---- &pendulum
+    declaration_t(groups='pendulum', name='links', kind=VALUE_INTEGER, unit='1', default='1', low=1.0_wp, &
+      high=2.0_wp, meaning='one or two links'), &
+    declaration_t(groups='pendulum', name='length', shape='per link', unit='m', default='1, 1', low=1e-3_wp, &
+      high=1e3_wp, meaning='link lengths'), &
+    declaration_t(groups='pendulum', name='mass', shape='per link', unit='kg', default='1, 1', low=1e-6_wp, &
+      high=1e6_wp, meaning='link masses'), &
+    declaration_t(groups='pendulum', name='inertia', shape='per link', unit='kg m^2', default='0, 0', &
+      low=0.0_wp, high=1e6_wp, meaning='moments of inertia about the centres of mass'), &
+    declaration_t(groups='pendulum', name='theta0', shape='per link', unit='rad', default='0.5, 0', &
+      low=-100.0_wp, high=100.0_wp, meaning='angles at t = 0'), &
+    declaration_t(groups='pendulum', name='dtheta0', shape='per link', unit='rad/s', default='0, 0', &
+      low=-1e4_wp, high=1e4_wp, meaning='their rates at t = 0'), &
+    declaration_t(groups='pendulum', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
+      low=-1e3_wp, high=1e3_wp, meaning='gravity vector'), &
+    ! ---- &fourbar
+    declaration_t(groups='fourbar', name='a', unit='m', default='0.2', low=1e-3_wp, high=1e3_wp, &
+      meaning='crank length'), &
+    declaration_t(groups='fourbar', name='b', unit='m', default='0.6', low=1e-3_wp, high=1e3_wp, &
+      meaning='coupler length'), &
+    declaration_t(groups='fourbar', name='c', unit='m', default='0.5', low=1e-3_wp, high=1e3_wp, &
+      meaning='rocker length'), &
+    declaration_t(groups='fourbar', name='d', unit='m', default='0.7', low=1e-3_wp, high=1e3_wp, &
+      meaning='ground length'), &
+    declaration_t(groups='fourbar', name='mass', shape='3', unit='kg', default='0.5, 1, 0.8', low=1e-6_wp, &
+      high=1e6_wp, meaning='masses of crank, coupler, rocker'), &
+    declaration_t(groups='fourbar', name='gravity', shape='3', unit='m/s^2', default='0, -9.80665, 0', &
+      low=-1e3_wp, high=1e3_wp, meaning='gravity vector'), &
+    declaration_t(groups='fourbar', name='crank0', unit='rad', default='0', low=-100.0_wp, high=100.0_wp, &
+      meaning='crank angle at t = 0'), &
+    declaration_t(groups='fourbar', name='dcrank0', unit='rad/s', default='10', low=-1e4_wp, high=1e4_wp, &
+      meaning='its rate at t = 0'), &
+    declaration_t(groups='fourbar', name='branch', kind=VALUE_INTEGER, unit='1', default='1', low=-1.0_wp, &
+      high=1.0_wp, meaning='+1: the coupler''s joint to the left of B->D, -1: right (not 0)'), &
+    ! ---- &sled
+    declaration_t(groups='sled', name='length', unit='m', default='0.5', low=1e-3_wp, high=100.0_wp, &
+      meaning='distance of the two runners'' contacts'), &
+    declaration_t(groups='sled', name='mass', unit='kg', default='10', low=1e-3_wp, high=1e6_wp, &
+      meaning='mass'), &
+    declaration_t(groups='sled', name='inertia', shape='3', unit='kg m^2', default='0.02, 0.25, 0.25', &
+      low=0.0_wp, high=1e6_wp, meaning='principal moments, each at most the sum of the other two'), &
+    declaration_t(groups='sled', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
+      low=-1e3_wp, high=1e3_wp, meaning='gravity vector'), &
+    declaration_t(groups='sled', name='mu', unit='1', default='0', low=0.0_wp, high=10.0_wp, &
+      meaning='Coulomb friction at both contacts'), &
+    declaration_t(groups='sled', name='viscous', unit='N s/m', default='0', low=0.0_wp, high=1e6_wp, &
+      meaning='viscous friction at both contacts'), &
+    declaration_t(groups='sled', name='regularization_speed', unit='m/s', default='1e-6', low=1e-12_wp, &
+      high=1.0_wp, meaning='of the Coulomb friction'), &
+    declaration_t(groups='sled', name='sigma', unit='1', default='1', low=-1.0_wp, high=1.0_wp, &
+      meaning='side of the normal: +1 or -1'), &
+    declaration_t(groups='sled', name='alpha_u', unit='1', default='1', low=-1e3_wp, high=1e3_wp, &
+      meaning='the frame''s x axis along alpha_u r_u + alpha_v r_v, not both 0'), &
+    declaration_t(groups='sled', name='alpha_v', unit='1', default='0', low=-1e3_wp, high=1e3_wp, &
+      meaning='see alpha_u'), &
+    declaration_t(groups='sled', name='u0', unit='surface parameter', default='0', low=-1e6_wp, high=1e6_wp, &
+      meaning='surface coordinate u at t = 0'), &
+    declaration_t(groups='sled', name='v0', unit='surface parameter', default='0', low=-1e6_wp, high=1e6_wp, &
+      meaning='surface coordinate v at t = 0'), &
+    declaration_t(groups='sled', name='phi0', unit='rad', default='0', low=-100.0_wp, high=100.0_wp, &
+      meaning='heading at t = 0'), &
+    declaration_t(groups='sled', name='du0', unit='surface parameter per s', default='0', low=-1e3_wp, &
+      high=1e3_wp, meaning='rate of u at t = 0'), &
+    declaration_t(groups='sled', name='dv0', unit='surface parameter per s', default='0', low=-1e3_wp, &
+      high=1e3_wp, meaning='rate of v at t = 0'), &
+    declaration_t(groups='sled', name='dphi0', unit='rad/s', default='0', low=-1e3_wp, high=1e3_wp, &
+      meaning='rate of the heading at t = 0'), &
+    ! ---- the contact scenario: &contact_model, &body, &contact (+ the parameters of the friction law)
+    declaration_t(groups='contact_model', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
+      low=-1e3_wp, high=1e3_wp, meaning='gravity vector'), &
+    declaration_t(groups='body', name='name', kind=VALUE_WORDS, default='none', &
+      meaning='the body''s name (required, unique, not ''ground'')'), &
+    declaration_t(groups='body', name='mass', unit='kg', default='1', low=0.0_wp, high=1e9_wp, open_low=.true., &
+      meaning='mass'), &
+    declaration_t(groups='body', name='solid_of', kind=VALUE_WORDS, default='none', meaning='a closed &shape: '// &
+      'the centre of mass and inertia of the homogeneous solid it encloses (excludes centre, inertia, products)'), &
+    declaration_t(groups='body', name='centre', shape='3', unit='m', default='0, 0, 0', low=-1e6_wp, high=1e6_wp, &
+      meaning='centre of mass, body axes'), &
+    declaration_t(groups='body', name='inertia', shape='3', unit='kg m^2', default='none', low=0.0_wp, &
+      high=1e12_wp, meaning='moments of inertia about the centre along the body axes (required without solid_of)'), &
+    declaration_t(groups='body', name='products', shape='3', unit='kg m^2', default='0, 0, 0', low=-1e12_wp, &
+      high=1e12_wp, meaning='products of inertia I_xy, I_xz, I_yz about the centre'), &
+    declaration_t(groups='body', name='position', shape='3', unit='m', default='0, 0, 0', low=-1e6_wp, &
+      high=1e6_wp, meaning='start: origin of the body frame (world); its contact moves it until it touches'), &
+    declaration_t(groups='body', name='angles_deg', shape='3', unit='deg', default='0, 0, 0', low=-360.0_wp, &
+      high=360.0_wp, meaning='start orientation, Cardan angles: body axes = Rx Ry Rz'), &
+    declaration_t(groups='body', name='velocity', shape='3', unit='m/s', default='0, 0, 0', low=-1e4_wp, &
+      high=1e4_wp, meaning='start velocity of the body frame''s origin (world)'), &
+    declaration_t(groups='body', name='angular_velocity', shape='3', unit='rad/s', default='0, 0, 0', &
+      low=-1e5_wp, high=1e5_wp, meaning='start angular velocity (world)'), &
+    declaration_t(groups='contact', name='name', kind=VALUE_WORDS, default='none', &
+      meaning='the contact''s name, prefix of its coordinates and outputs (required, unique)'), &
+    declaration_t(groups='contact', name='body_1', kind=VALUE_WORDS, default='''ground''', &
+      meaning='the body carrying the contact (placed before body_2): a &body name or ''ground'''), &
+    declaration_t(groups='contact', name='shape_1', kind=VALUE_WORDS, default='none', &
+      meaning='its surface: a &shape name'), &
+    declaration_t(groups='contact', name='side_1', unit='1', default='1', low=-1.0_wp, high=1.0_wp, &
+      meaning='side of shape_1 towards body_2, the sign of its normal (thesis 3.38): +1 or -1'), &
+    declaration_t(groups='contact', name='body_2', kind=VALUE_WORDS, default='none', &
+      meaning='the body this contact carries: a &body name'), &
+    declaration_t(groups='contact', name='shape_2', kind=VALUE_WORDS, default='none', &
+      meaning='its surface: a &shape name'), &
+    declaration_t(groups='contact', name='side_2', unit='1', default='1', low=-1.0_wp, high=1.0_wp, &
+      meaning='side of shape_2 towards body_1: +1 or -1'), &
+    declaration_t(groups='contact', name='friction', kind=VALUE_WORDS, default='''none''', &
+      meaning='none, or a force law of the registry on the slip (docs/contact.md)'), &
+    declaration_t(groups='contact', name='rolling', kind=VALUE_LOGICAL, default='.false.', &
+      meaning='no slip (thesis 3.85), held by a velocity-level constraint; no friction law with it'), &
+    declaration_t(groups='contact', name='level', kind=VALUE_WORDS, default='''position''', &
+      choices='position velocity', meaning='position: exact contact, drift-free; velocity: the thesis''s '// &
+      'velocity-level contact (appendix E), for comparison'), &
+    declaration_t(groups='contact', name='chain', kind=VALUE_WORDS, default='open; loop with rolling', &
+      choices='open loop', meaning='at position level: the open chain, or the relative chain closed by the '// &
+      'five conditions (3.86)')]
+end module io_declarations_multibody
