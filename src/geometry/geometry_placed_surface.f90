@@ -2,7 +2,10 @@
 !>
 !> Wraps any surface (it owns a copy in an allocatable component); every
 !> partial derivative is rotated by R, the domain and periodicity are the
-!> base surface's.
+!> base surface's, and so are its charts (geometry_surface), placed alike:
+!> the base's chart k, r_b = P_b r', is the placed surface's r = P r'' with
+!> P = R P_b R^T and the chart surface r'' = P^T origin + R r' (a placed
+!> surface too), so a turned ellipsoid changes charts as the ellipsoid.
 module geometry_placed_surface
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
@@ -26,6 +29,11 @@ module geometry_placed_surface
     procedure :: periodic_v => placed_periodic_v
     procedure :: describe => placed_describe
     procedure :: parameter_units => placed_parameter_units
+    procedure :: has_charts => placed_has_charts
+    procedure :: chart_margin => placed_chart_margin
+    procedure :: chart_toward => placed_chart_toward
+    procedure :: chart => placed_chart
+    procedure :: chart_parameters => placed_chart_parameters
     procedure :: origin_of => placed_origin
     procedure :: rotation_of => placed_rotation
   end type placed_surface_t
@@ -171,6 +179,48 @@ contains
     real(wp) :: rotation(3, 3)
     rotation = self%rotation
   end function placed_rotation
+
+  !> The base's charts (module comment).
+  pure logical function placed_has_charts(self) result(has)
+    class(placed_surface_t), intent(in) :: self
+    has = .false.
+    if (allocated(self%base)) has = self%base%has_charts()
+  end function placed_has_charts
+
+  pure real(wp) function placed_chart_margin(self, v) result(margin)
+    class(placed_surface_t), intent(in) :: self
+    real(wp), intent(in) :: v
+    margin = self%base%chart_margin(v)
+  end function placed_chart_margin
+
+  pure integer function placed_chart_toward(self, r) result(k)
+    class(placed_surface_t), intent(in) :: self
+    real(wp), intent(in) :: r(3)
+    k = self%base%chart_toward(matmul(transpose(self%rotation), r - self%origin))
+  end function placed_chart_toward
+
+  pure subroutine placed_chart(self, k, chart_surface, p)
+    class(placed_surface_t), intent(in) :: self
+    integer, intent(in) :: k
+    class(surface_t), allocatable, intent(inout) :: chart_surface   ! replaced (pure: not intent(out))
+    real(wp), intent(out) :: p(3, 3)
+    type(placed_surface_t) :: placed
+    real(wp) :: p_base(3, 3)
+    call self%base%chart(k, placed%base, p_base)
+    p = matmul(self%rotation, matmul(p_base, transpose(self%rotation)))
+    placed%origin = matmul(transpose(p), self%origin)
+    placed%rotation = self%rotation
+    if (allocated(chart_surface)) deallocate (chart_surface)
+    allocate (chart_surface, source=placed)
+  end subroutine placed_chart
+
+  pure subroutine placed_chart_parameters(self, r, u, v, status)
+    class(placed_surface_t), intent(in) :: self
+    real(wp), intent(in) :: r(3)
+    real(wp), intent(out) :: u, v
+    type(status_t), intent(out) :: status
+    call self%base%chart_parameters(matmul(transpose(self%rotation), r - self%origin), u, v, status)
+  end subroutine placed_chart_parameters
 
   pure subroutine placed_parameter_units(self, u_units, v_units)
     class(placed_surface_t), intent(in) :: self

@@ -47,9 +47,17 @@ sed -i 's/, angles_deg = 90, 0, 0 \//\//' "$work/natural_ball_rolling.nml"   # t
 run_case natural_ball_rolling 0
 bowl sliding '90, 0, 0' ''
 run_case sliding 0
+# A bowl tilted by its own angles_deg: its pole 10 degrees off the bottom, on
+# the ball's path in the x-z plane (a placed surface: it forwards the
+# ellipsoid's charts; main stopped at the pole, exit 2). A turned sphere is
+# the same sphere: the same closed-form periods.
+bowl tilted '0, 10, 0' ''
+run_case tilted 0
+bowl tilted_rolling '0, 10, 0' ', rolling = .true.'
+run_case tilted_rolling 0
 bowl rolling '90, 0, 0' ', rolling = .true.'
 run_case rolling 0
-for name in natural natural_rolling natural_ball_rolling; do
+for name in natural natural_rolling natural_ball_rolling tilted tilted_rolling; do
   checks=$((checks + 1))
   [ "$(chart_changes $name)" -ge 1 ] 2>/dev/null || fail "$name: no chart change through the pole: $(cat "$work/$name.out")"
 done
@@ -107,7 +115,7 @@ checks=$((checks + 1))
 
 [ -n "$h5python" ] || { echo "SKIP: the periods need python3 with h5py"; finish; }
 for case in natural:1.0 natural_rolling:1.4 natural_ball_rolling:1.4 sliding:1.0 rolling:1.4 kick:1.0 \
-            kick_rolling:1.4; do
+            kick_rolling:1.4 tilted:1.0 tilted_rolling:1.4; do
   name=${case%%:*}; factor=${case#*:}
   checks=$((checks + 1))
   out=$("$h5python" - "$work/$name.h5" "$factor" <<'PY'
