@@ -1,14 +1,27 @@
 #!/usr/bin/env bash
-# Installs what slidesim needs from Debian's packages (Debian 12), in two sets:
+# Installs what slidesim needs from Debian's packages (Debian 12), in sets:
 #
 #   install-dependencies.sh --runtime   what builds slidesim and draws its plots
-#                                       (scripts/run.sh): compiler, CMake, LAPACK,
-#                                       MINPACK, HDF5 (with its Fortran library),
-#                                       numpy, h5py and matplotlib, and what builds
-#                                       CVODE from Debian's source package (below)
+#                                       (scripts/run.sh): the build set and the
+#                                       plot set below, and CVODE
 #   install-dependencies.sh [--test]    that and the test and viewer extras
 #                                       (scripts/check.sh, the default)
-#   install-dependencies.sh --list runtime|test   prints a set, installs nothing
+#   install-dependencies.sh --build     the build set: compiler, CMake, LAPACK,
+#                                       MINPACK, HDF5 (with its Fortran library),
+#                                       and what builds CVODE from Debian's source
+#                                       package (below); then CVODE
+#   install-dependencies.sh --build-packages   the build set without CVODE
+#   install-dependencies.sh --plot      the plot set: Python with numpy, h5py and
+#                                       matplotlib (the plot scripts; the slidesim
+#                                       program does not need them)
+#   install-dependencies.sh --list build|plot|runtime|test   prints a set,
+#                                       installs nothing (runtime: build and plot)
+#
+# scripts/run.sh installs the build set's packages, then the plot set's in the
+# background while it builds CVODE and slidesim: apt's unpacking waits on the
+# disk, the build on the processors (the plot set is 88 of the 230 packages of
+# a bare system's first run, and most of its files). Never two apt-get at once:
+# the CVODE build takes no dpkg lock (dpkg-source -x only unpacks files).
 #
 # The extras: scipy (Debian's scipy 1.10.1 regenerates the FITPACK tables),
 # pint and udunits-bin (the tests parse the units in result files), xarray with
@@ -23,19 +36,26 @@ set -euo pipefail
 
 # python3-munkres: matplotlib's fonttools needs scipy or munkres; without it
 # apt takes scipy (62 MB with pythran), which only the tests use
-runtime_packages=(gfortran cmake make liblapack-dev libblas-dev minpack-dev libhdf5-dev
-                  python3 python3-numpy python3-h5py python3-matplotlib python3-munkres
-                  curl ca-certificates xz-utils dpkg-dev)
+build_packages=(gfortran cmake make liblapack-dev libblas-dev minpack-dev libhdf5-dev
+                curl ca-certificates xz-utils dpkg-dev)
+plot_packages=(python3 python3-numpy python3-h5py python3-matplotlib python3-munkres)
+runtime_packages=("${build_packages[@]}" "${plot_packages[@]}")
 test_packages=(hdf5-tools libopenmpi-dev openmpi-bin python3-scipy python3-pint python3-xarray
                python3-h5netcdf python3-pandas python3-venv udunits-bin paraview python3-paraview
                ffmpeg)   # ffmpeg: viewer extra, the film of a ride (slidesim-plot --movie; a GIF without it)
 
-usage="usage: $0 [--runtime | --test | --list runtime|test]"
+usage="usage: $0 [--runtime | --test | --build | --build-packages | --plot | --list build|plot|runtime|test]"
+cvode=yes
 case ${1:---test} in
   --runtime) packages=("${runtime_packages[@]}") ;;
   --test) packages=("${runtime_packages[@]}" "${test_packages[@]}") ;;
+  --build) packages=("${build_packages[@]}") ;;
+  --build-packages) packages=("${build_packages[@]}"); cvode=no ;;
+  --plot) packages=("${plot_packages[@]}"); cvode=no ;;
   --list)
     case ${2:-} in
+      build) printf '%s\n' "${build_packages[@]}" ;;
+      plot) printf '%s\n' "${plot_packages[@]}" ;;
       runtime) printf '%s\n' "${runtime_packages[@]}" ;;
       test) printf '%s\n' "${test_packages[@]}" ;;
       *) echo "$usage" >&2; exit 1 ;;
@@ -66,6 +86,7 @@ if ((${#missing[@]} > 0)); then
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
+[ "$cvode" = yes ] || exit 0
 
 # CVODE with optimisation. Debian's libsundials 6.4.1+dfsg1-3 is compiled
 # without any: its debian/rules passes -DCMAKE_C_FLAGS=-fcommon, which
