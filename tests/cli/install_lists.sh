@@ -7,7 +7,10 @@
 # package status) holds none of the test-only packages either; run.sh
 # installs the runtime set, check.sh the test set; and this build took
 # CVODE's Fortran modules and libraries from the project's build, not from
-# Debian's packages.
+# Debian's packages. The runtime set is the build set and the plot set, apart;
+# the build set brings no Python on a bare Debian (run.sh builds while the plot
+# set installs: nothing in the build may wait on it), and run.sh installs the
+# build set's packages before it starts the plot set's in the background.
 set -u
 slidesim=$1
 root=$(pwd)
@@ -19,6 +22,13 @@ script=$root/scripts/install-dependencies.sh
 
 bash "$script" --list runtime >"$work/runtime" || fail "--list runtime: exit status $?"
 bash "$script" --list test >"$work/test" || fail "--list test: exit status $?"
+bash "$script" --list build >"$work/build" || fail "--list build: exit status $?"
+bash "$script" --list plot >"$work/plot" || fail "--list plot: exit status $?"
+[ "$(cat "$work/build" "$work/plot")" = "$(cat "$work/runtime")" ] ||
+  fail "the runtime list is not the build list and the plot list: $(cat "$work/runtime")"
+both=$(sort "$work/build" | comm -12 - <(sort "$work/plot"))
+[ -z "$both" ] || fail "in the build and the plot list: $both"
+grep -q python "$work/build" && fail "Python in the build list: $(grep python "$work/build")"
 [ "$(wc -l <"$work/runtime")" -ge 10 ] || fail "the runtime list is almost empty: $(cat "$work/runtime")"
 [ "$(wc -l <"$work/test")" -ge 5 ] || fail "the test list is almost empty: $(cat "$work/test")"
 both=$(sort "$work/runtime" | comm -12 - <(sort "$work/test"))
@@ -46,12 +56,20 @@ if apt-cache policy gfortran 2>/dev/null | grep -q 'Candidate: [0-9]'; then
   [ "$n" -ge 50 ] || fail "apt-get -s gave $n packages: $(tail -3 "$work/apt")"
   bad=$( (grep -E "$test_only" "$work/closure"; sort "$work/closure" | comm -12 - <(sort "$work/test")) | sort -u)
   [ -z "$bad" ] || fail "the runtime set pulls test-only packages: $(echo $bad)"
-  echo "runtime set on a bare Debian: $n packages, none test-only"
+  mapfile -t build <"$work/build"
+  apt-get install -s -o Dir::State::Status="$work/status" --no-install-recommends "${build[@]}" \
+    >"$work/apt-build" 2>&1 || fail "apt-get -s of the build set: $(tail -3 "$work/apt-build")"
+  bad=$(awk '/^Inst /{print $2}' "$work/apt-build" | grep -E '^(lib)?python' | sort -u)
+  [ -z "$bad" ] || fail "the build set pulls Python: $(echo $bad)"
+  echo "runtime set on a bare Debian: $n packages, none test-only; the build set brings no Python"
 else
   echo "no apt package lists (apt-get update): the runtime set's dependencies not checked"
 fi
 
-grep -q 'install-dependencies.sh" --runtime' "$root/scripts/run.sh" || fail "run.sh does not install the runtime set"
+# run.sh: the build set's packages, then the plot set in the background, then CVODE
+order=$(grep -o -E '"\$deps" --(build-packages|plot|build)\b' "$root/scripts/run.sh" | tr '\n' ' ')
+[ "$order" = '"$deps" --build-packages "$deps" --plot "$deps" --build ' ] ||
+  fail "run.sh does not install the build set, then the plot set, then CVODE: $order"
 grep -q 'install-dependencies.sh" --test' "$root/scripts/check.sh" || fail "check.sh does not install the test set"
 
 # CVODE from the project's build (SLIDESIM_SUNDIALS_PREFIX), modules and libraries
