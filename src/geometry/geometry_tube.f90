@@ -7,12 +7,14 @@
 !> which is (C.17-C.25) for all i + j <= 3 (the printed C.22 has y_u for y_uu
 !> in its third term, C.23 is r_uuv, and C.24 is r_uvv).
 !> The parameter u is the centerline's; the arc length s(u) along the
-!> centerline and its inverse are available (thesis 2.1).
+!> centerline and its inverse are available (thesis 2.1). The tube answers
+!> the slide query (geometry_slide_query): it carries a rider.
 module geometry_tube
   use base_kinds, only: wp
   use base_text, only: format_short, format_vector
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
-  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_surface, only: surface_point_t
+  use geometry_slide_query, only: slide_surface_t, slide_bottom_v, general_wall_position
   use geometry_curve, only: curve_t, curve_point_t, line_curve_t, helix_curve_t, s_bend_curve_t, constant_curve_t
   use geometry_curve_frame, only: curve_frame_t, curve_frame_from_points
   use geometry_cross_section, only: cross_section_t, section_point_t, circle_section_t
@@ -21,7 +23,7 @@ module geometry_tube
   public :: tube_surface_t, new_tube_surface
   public :: new_straight_tube, new_helix_tube, new_s_bend_tube
 
-  type, extends(surface_t) :: tube_surface_t
+  type, extends(slide_surface_t) :: tube_surface_t
     class(curve_t), allocatable :: centerline
     class(curve_t), allocatable :: horizon
     class(cross_section_t), allocatable :: section
@@ -37,6 +39,9 @@ module geometry_tube
     procedure :: arc_length => tube_arc_length
     procedure :: length => tube_length
     procedure :: parameter_at_length => tube_parameter_at_length
+    procedure :: centerline_speed => tube_centerline_speed
+    procedure :: section_edges => tube_section_edges
+    procedure :: wall_position => tube_wall_position
     procedure :: check => tube_check
   end type tube_surface_t
 
@@ -310,6 +315,49 @@ contains
     u_units = self%centerline%parameter_unit()
     v_units = self%section%parameter_unit()
   end subroutine tube_parameter_units
+
+  !> ds/du = |c_u| at u, from the centerline's derivative.
+  pure subroutine tube_centerline_speed(self, u, speed, status)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp), intent(out) :: speed
+    type(status_t), intent(out) :: status
+    type(curve_point_t) :: c
+    speed = 0
+    call self%centerline%evaluate(u, 1, c, status)
+    if (status%ok()) speed = norm2(c%d(:, 1))
+  end subroutine tube_centerline_speed
+
+  !> The section's v range (-huge, huge where it is closed).
+  pure subroutine tube_section_edges(self, u, v_min, v_max)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp), intent(out) :: v_min, v_max
+    associate (unused => u)
+    end associate
+    if (self%section%periodic()) then
+      v_min = -huge(1.0_wp); v_max = huge(1.0_wp)
+    else
+      call self%section%v_range(v_min, v_max)
+    end if
+  end subroutine tube_section_edges
+
+  !> On a circular section the wall position is closed-form: the normal is
+  !> radial, so the angle is v - pi/2 and the distance r (v - pi/2); other
+  !> sections take the general quadrature.
+  subroutine tube_wall_position(self, u, v, angle, distance, status)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    real(wp), intent(out) :: angle, distance
+    type(status_t), intent(inout) :: status
+    select type (section => self%section)
+    type is (circle_section_t)
+      angle = v - slide_bottom_v
+      distance = section%radius*angle
+    class default
+      call general_wall_position(self, u, v, angle, distance, status)
+    end select
+  end subroutine tube_wall_position
 
   !> No part of the tube passes through another (the fold check above is
   !> local): centerline points far apart along the tube, by more than

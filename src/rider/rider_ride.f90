@@ -17,7 +17,6 @@
 !> (rider_water_drag) and restarts the integrator there.
 module rider_ride
   use base_kinds, only: wp
-  use base_constants, only: pi
   use base_text, only: format_short
   use base_vector, only: cross
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
@@ -26,10 +25,8 @@ module rider_ride
   use numerics_ode, only: ode_options_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP, &
     EVENT_STOP, EVENT_RECORD, RECORD_EVENT
-  use geometry_surface, only: surface_t, surface_point_t
-  use geometry_darboux, only: darboux_frame_t, darboux_frame
-  use geometry_tube, only: tube_surface_t
-  use geometry_cross_section, only: circle_section_t
+  use geometry_surface, only: surface_t
+  use geometry_slide_query, only: slide_surface_t, as_slide
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use water_field, only: water_field_t
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names, &
@@ -38,7 +35,7 @@ module rider_ride
   implicit none (type, external)
   private
   public :: ride_options_t, ride_series_t, contact_series_t, ride_result_t, rider_ode_t, run_ride, check_ride_start, &
-    prepare_ride, wall_position
+    prepare_ride
 
   type :: ride_options_t
     !> thesis B.7 tolerances; the step is capped at 0.05 s: each closure starts
@@ -108,7 +105,7 @@ module rider_ride
   type, extends(mechanism_ode_t) :: rider_ode_t
     type(rider_layout_t) :: layout
     type(ride_series_t) :: ride
-    class(surface_t), allocatable :: surface
+    class(slide_surface_t), allocatable :: slide   ! the slide query (geometry_slide_query)
     real(wp) :: min_rate = 0              ! u per s: stall below
     real(wp) :: min_speed = 0             ! m/s, the stall speed it stands for
     real(wp) :: slide_length = 0          ! m, for progress lines
@@ -198,24 +195,30 @@ contains
     real(wp), allocatable, intent(out) :: y0(:)
     type(status_t), intent(inout) :: status
     type(water_field_t), intent(in), optional :: water
-    real(wp) :: q0(3), qd0(3)
+    real(wp) :: q0(3), qd0(3), speed
     real(wp), allocatable :: station_u(:)
     integer :: i
+    call as_slide(surface, sys%slide, status)
     if (.not. status%ok()) return
     call build_rider(params, surface, sys%mechanism, sys%layout, q0, status, water)
     if (status%ok()) call rider_start_velocity(params, surface, qd0, status)
+    if (status%ok()) call sys%slide%centerline_speed(q0(1), speed, status)
     if (.not. status%ok()) return
-    allocate (sys%surface, source=surface)
-    sys%slide_length = slide_length(surface)
+    if (.not. speed > 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'the slide''s centerline has no direction at the start (|c_u| = '// &
+                      format_short(speed)//')')
+      return
+    end if
+    sys%slide_length = sys%slide%length()
     sys%min_speed = options%min_speed
-    sys%min_rate = options%min_speed/centerline_speed(surface, q0(1))
+    sys%min_rate = options%min_speed/speed
     if (.not. qd0(1) > sys%min_rate) then
       call set_status(status, STATUS_INVALID_INPUT, 'the start speed '//format_short(params%speed0)// &
                       ' m/s does not carry the rider down the slide (its rate along the slide must exceed '// &
                       format_short(options%min_speed)//' m/s)')
       return
     end if
-    call stations_as_parameters(surface, options, q0(1), station_u, status)
+    call stations_as_parameters(sys%slide, options, q0(1), station_u, status)
     if (.not. status%ok()) return
     ! stall or turning back: u' of the pelvis falls below min_rate; then the
     ! pelvis's u crossing each station
@@ -228,10 +231,10 @@ contains
     if (.not. status%ok()) call prefix_status(status, 'ride start')
   end subroutine prepare_ride
 
-  !> The stations' surface parameters u (u = s off tubes), each after the
-  !> start u0 and on the slide, increasing.
-  subroutine stations_as_parameters(surface, options, u0, u, status)
-    class(surface_t), intent(in) :: surface
+  !> The stations' surface parameters u, each after the start u0 and on the
+  !> slide, increasing.
+  subroutine stations_as_parameters(slide, options, u0, u, status)
+    class(slide_surface_t), intent(in) :: slide
     type(ride_options_t), intent(in) :: options
     real(wp), intent(in) :: u0
     real(wp), allocatable, intent(out) :: u(:)
@@ -241,14 +244,11 @@ contains
     if (.not. allocated(options%stations)) return
     u = options%stations
     do i = 1, size(u)
-      select type (surface)
-      class is (tube_surface_t)
-        call surface%parameter_at_length(options%stations(i), u(i), status)
-        if (.not. status%ok()) then
-          call prefix_status(status, 'ride station '//format_short(options%stations(i))//' m')
-          return
-        end if
-      end select
+      call slide%parameter_at_length(options%stations(i), u(i), status)
+      if (.not. status%ok()) then
+        call prefix_status(status, 'ride station '//format_short(options%stations(i))//' m')
+        return
+      end if
       if (.not. u(i) > u0 .or. (i > 1 .and. .not. options%stations(i) > options%stations(max(i - 1, 1)))) then
         call set_status(status, STATUS_INVALID_INPUT, 'ride station '//format_short(options%stations(i))// &
                         ' m: the stations must lie after the start and increase along the slide')
@@ -256,27 +256,6 @@ contains
       end if
     end do
   end subroutine stations_as_parameters
-
-  !> |c_u| at u on a tube (ds/du), 1 on other surfaces.
-  real(wp) function centerline_speed(surface, u) result(cu)
-    class(surface_t), intent(in) :: surface
-    real(wp), intent(in) :: u
-    cu = 1
-    select type (surface)
-    class is (tube_surface_t)
-      cu = max(surface%arc_length(u + 1e-4_wp) - surface%arc_length(u - 1e-4_wp), 1e-12_wp)/2e-4_wp
-    end select
-  end function centerline_speed
-
-  !> The centerline's length of a tube; 0 elsewhere.
-  real(wp) function slide_length(surface) result(s)
-    class(surface_t), intent(in) :: surface
-    s = 0
-    select type (surface)
-    class is (tube_surface_t)
-      s = surface%length()
-    end select
-  end function slide_length
 
   !> Progress lines: how far down the slide the pelvis is.
   subroutine rider_progress(self, t, y, t_start, t_end, fraction, text)
@@ -287,22 +266,11 @@ contains
     real(wp) :: s
     associate (unused => t_start, unused_end => t_end)
     end associate
-    s = arc_length_at(self%surface, y(1))
+    s = self%slide%arc_length(y(1))
     fraction = -1
     if (self%slide_length > 0) fraction = s/self%slide_length
     text = 't = '//format_short(t)//' s, '//format_short(s)//' m down the slide'
   end subroutine rider_progress
-
-  !> Centerline arc length at u on a tube, u elsewhere.
-  real(wp) function arc_length_at(surface, u) result(s)
-    class(surface_t), intent(in) :: surface
-    real(wp), intent(in) :: u
-    s = u
-    select type (surface)
-    class is (tube_surface_t)
-      s = surface%arc_length(u)
-    end select
-  end function arc_length_at
 
   !> Room for `capacity` records in every array of the series, the recorded
   !> ones kept (first call: allocates). Every array of ride_series_t is listed
@@ -349,57 +317,6 @@ contains
       b%contact(k) = a%contact(k)
     end do
   end subroutine move_series
-
-  !> Wall angle (rad) and distance along the wall (m) of (u, v) from v = pi/2:
-  !> the angle of the Darboux normal from the normal at (u, pi/2) about the
-  !> section's tangent direction, and the length of the v-curve between them
-  !> (5-point Gauss-Legendre; exact for a circle). On a circular tube both
-  !> are closed forms, v - pi/2 and r (v - pi/2) (the normal is radial), unless
-  !> `general` asks for the quadrature (the test compares the two).
-  subroutine wall_position(surface, u, v, angle, distance, status, general)
-    class(surface_t), intent(in) :: surface
-    real(wp), intent(in) :: u, v
-    real(wp), intent(out) :: angle, distance
-    type(status_t), intent(inout) :: status
-    logical, intent(in), optional :: general
-    real(wp), parameter :: x(5) = [-0.9061798459386640_wp, -0.5384693101056831_wp, 0.0_wp, &
-                                   0.5384693101056831_wp, 0.9061798459386640_wp]
-    real(wp), parameter :: w(5) = [0.2369268850561891_wp, 0.4786286704993665_wp, 0.5688888888888889_wp, &
-                                   0.4786286704993665_wp, 0.2369268850561891_wp]
-    type(surface_point_t) :: p, b
-    type(darboux_frame_t) :: fp, fb
-    real(wp) :: mid, half, n(3)
-    integer :: i
-    angle = 0
-    distance = 0
-    if (.not. present(general)) then
-      select type (surface)
-      class is (tube_surface_t)
-        select type (section => surface%section)
-        type is (circle_section_t)
-          angle = v - pi/2
-          distance = section%radius*angle
-          return
-        end select
-      end select
-    end if
-    call surface%evaluate(u, v, 2, p, status)
-    if (status%ok()) call darboux_frame(p, 1.0_wp, 1.0_wp, 0.0_wp, fp, status)
-    if (status%ok()) call surface%evaluate(u, pi/2, 2, b, status)
-    if (status%ok()) call darboux_frame(b, 1.0_wp, 1.0_wp, 0.0_wp, fb, status)
-    if (.not. status%ok()) return
-    ! the angle between the bottom's normal and the contact's, signed by the
-    ! turn about the bottom's x (along r_u): + towards +v
-    n = cross(fb%r(:, 3), fp%r(:, 3))
-    angle = sign(atan2(norm2(n), dot_product(fb%r(:, 3), fp%r(:, 3))), dot_product(n, fb%r(:, 1)))
-    mid = 0.5_wp*(v + pi/2)
-    half = 0.5_wp*(v - pi/2)
-    do i = 1, 5
-      call surface%evaluate(u, mid + half*x(i), 1, p, status)
-      if (.not. status%ok()) return
-      distance = distance + w(i)*half*norm2(p%rv)
-    end do
-  end subroutine wall_position
 
   !> The complete state of the ride at (t, y).
   subroutine rider_record(self, t, y, kind, status)
@@ -453,8 +370,8 @@ contains
         associate (c => r%contact(k), d => m%frames(lay%contact_frame(k)))
           c%u(n) = m%scalars(lay%u(k))%q
           c%v(n) = m%scalars(lay%v(k))%q
-          c%arc_length(n) = arc_length_at(self%surface, c%u(n))
-          call wall_position(self%surface, c%u(n), c%v(n), c%wall_angle(n), c%wall_distance(n), status)
+          c%arc_length(n) = self%slide%arc_length(c%u(n))
+          call self%slide%wall_position(c%u(n), c%v(n), c%wall_angle(n), c%wall_distance(n), status)
           if (.not. status%ok()) return
           c%position(:, n) = d%r
           c%velocity(:, n) = d%v
@@ -507,7 +424,7 @@ contains
     do k = 1, self%mechanism%n_laws
       if (was_active(k) .neqv. self%mechanism%laws(k)%law%active) self%drag_switches = self%drag_switches + 1
     end do
-    where = ' at arc length '//format_short(arc_length_at(self%surface, y(1)))//' m (t = '//format_short(t)//' s)'
+    where = ' at arc length '//format_short(self%slide%arc_length(y(1)))//' m (t = '//format_short(t)//' s)'
     if (fired(1) < 0) then
       action = EVENT_STOP
       self%outcome = 'the rider stalled or turned back: the speed along the slide fell below min_speed = '// &

@@ -46,7 +46,8 @@ program test_ride
   use io_input, only: input_text_t, load_input_file
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names
-  use rider_ride, only: ride_options_t, ride_result_t, run_ride, rider_ode_t, prepare_ride, wall_position
+  use rider_ride, only: ride_options_t, ride_result_t, run_ride, rider_ode_t, prepare_ride
+  use geometry_slide_query, only: general_wall_position
   use rider_water_drag, only: in_water_roots
   use scenarios_water, only: build_water
   use geometry_tube, only: tube_surface_t, new_straight_tube
@@ -81,8 +82,8 @@ contains
     do i = 1, 12
       u = 0.3_wp + 5.3_wp*i
       v = 1.5707963267948966_wp + 0.23_wp*(i - 6)
-      call wall_position(description%slide, u, v, a1, d1, st)
-      call wall_position(description%slide, u, v, a2, d2, st, general=.true.)
+      call description%slide%wall_position(u, v, a1, d1, st)
+      call general_wall_position(description%slide, u, v, a2, d2, st)
       ! rtol 1e-12: 5-point Gauss on a constant |r_v| is exact; the angle from two unit normals
       call check_close(a1, a2, 1e-12_wp, 1e-14_wp, 'wall angle: closed form = normal angle')
       call check_close(d1, d2, 1e-12_wp, 1e-14_wp, 'wall distance: closed form = quadrature')
