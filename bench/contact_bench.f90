@@ -88,7 +88,7 @@ contains
     if (status%ok()) call read_solver_config(input, solver, status)
     if (status%ok()) call read_contact_config(input, system, status)
     if (.not. status%ok()) return
-    if (mu > 0) system%contacts(1)%mu = mu
+    if (mu > 0) call system%contacts(1)%friction%set('mu', [mu])
     duration = solver%duration
     if (present(bodies)) bodies = size(system%bodies)
     call build_contact_model(system, model, status)

@@ -64,7 +64,7 @@ program contact_profile
   end if
   file = ''
   if (command_argument_count() >= 6) call get_command_argument(6, file)
-  if (status%ok() .and. mu > 0) system%contacts(1)%mu = mu
+  if (status%ok() .and. mu > 0) call system%contacts(1)%friction%set('mu', [mu])
   if (status%ok()) call build_contact_model(system, model, status)
   if (.not. status%ok()) then
     print '(a)', status%text()
