@@ -13,6 +13,7 @@ program multibody_bench
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: pendulum_params_t, build_pendulum, fourbar_params_t, build_fourbar, &
     fourbar_assembly, sled_params_t, build_sled
+  use kinetostatics_force_law_factory, only: law_spec
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_config, only: read_surface_config
@@ -81,7 +82,7 @@ contains
       if (which == 4) then
         surface = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [cos(theta), 0.0_wp, -sin(theta)], &
                           [0.0_wp, 1.0_wp, 0.0_wp], status)
-        sp%mu = 0.2_wp
+        sp%friction = [law_spec('coulomb', 'mu', 0.2_wp)]
         y0 = [0.5_wp, 0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 0.0_wp]
         duration = 2
       else
@@ -89,7 +90,7 @@ contains
         y0 = [1.0_wp, 0.0_wp, 0.3_wp, 0.0_wp, 1.2_wp, 0.5_wp]
         duration = 10
         if (which == 6) then
-          sp%mu = 0.15_wp
+          sp%friction = [law_spec('coulomb', 'mu', 0.15_wp)]
           options%method = ODE_BDF
           options%rtol = 1e-8_wp
         end if

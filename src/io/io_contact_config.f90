@@ -8,11 +8,9 @@ module io_contact_config
   use base_constants, only: pi
   use base_vector, only: rotation_xyz
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
-  use kinetostatics_force_law, only: force_law_kind_t
-  use kinetostatics_force_law_factory, only: force_law_kinds, force_law_kind_index
   use contact_model, only: contact_system_t, LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
   use io_input, only: input_text_t, group_reader_t, open_group, group_count, format_vector
-  use io_kind_parameters, only: read_kind_parameters, refuse_other_parameters, parameter_variables
+  use io_friction_config, only: friction_law_variables, friction_law_names, read_friction_law
   use io_surface_config, only: read_surface_config, surface_variables
   implicit none (type, external)
   private
@@ -160,23 +158,14 @@ contains
     type(group_reader_t) :: r
     character(len=name_length) :: name, body_1, shape_1, body_2, shape_2, friction
     character(len=8) :: level, chain
-    type(force_law_kind_t), allocatable :: laws(:)
-    character(len=name_length), allocatable :: law_variables(:), friction_names(:)
     integer :: j
     if (.not. status%ok()) return
-    ! the variables of every law kind registered (kinetostatics_force_law_factory)
-    laws = force_law_kinds()
-    allocate (law_variables(0))
-    do j = 1, size(laws)
-      call parameter_variables(laws(j)%parameters, law_variables)
-    end do
-    friction_names = [character(len=name_length) :: 'none', (laws(j)%name, j = 1, size(laws))]
     name = ''; body_1 = 'ground'; shape_1 = ''; body_2 = ''; shape_2 = ''
     friction = 'none'
     level = 'position'
     chain = ''
     associate (c => system%contacts(k))
-      call open_group(input, 'contact', r, status, occurrence=k, also=law_variables)
+      call open_group(input, 'contact', r, status, occurrence=k, also=friction_law_variables())
       call r%get('name', name, status)
       call r%get('body_1', body_1, status)
       call r%get('shape_1', shape_1, status)
@@ -184,7 +173,7 @@ contains
       call r%get('body_2', body_2, status)
       call r%get('shape_2', shape_2, status)
       call r%get('side_2', c%side_2, status)
-      call r%get('friction', friction, status, choices=friction_names)
+      call r%get('friction', friction, status, choices=friction_law_names())
       call r%get('rolling', c%rolling, status)
       call r%get('level', level, status)
       call r%get('chain', chain, status)
@@ -195,17 +184,7 @@ contains
         trim(chain)//'''', 'the chain is chosen for level = ''position'' only (a velocity-level contact has '// &
         'its own element)', status)
       if (.not. status%ok()) return
-      ! the law's parameters by its declarations; a required one not given
-      ! (mu: the law would run frictionless) and another law's are refused
-      if (friction == 'none') then
-        call r%refuse_given(law_variables, 'friction = ''none'' has no parameters', status)
-      else
-        associate (law => laws(force_law_kind_index(trim(friction))))
-          call read_kind_parameters(r, 'friction', trim(friction), law%parameters, c%friction, status, &
-                                    hint='friction = ''none'' for no friction')
-          call refuse_other_parameters(r, 'friction', trim(friction), law%parameters, law_variables, status)
-        end associate
-      end if
+      call read_friction_law(r, trim(friction), c%friction, status)
       if (.not. status%ok()) return
       if (len_trim(name) == 0) call r%invalid('name', '''''', 'every &contact needs a name', status)
       do j = 1, k - 1

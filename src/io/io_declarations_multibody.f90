@@ -45,8 +45,9 @@ module io_declarations_multibody
       high=1e3_wp, meaning='rate of v at t = 0'), &
     declaration_t(groups='point_mass', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
       low=-1e3_wp, high=1e3_wp, meaning='gravity vector'), &
-    declaration_t(groups='point_mass', name='friction', kind=VALUE_WORDS, default='''none''', &
-      meaning='none, or a force law of the registry (docs/inputs.md, "&point_mass")'), &
+    declaration_t(groups='point_mass sled contact', name='friction', kind=VALUE_WORDS, default='''none''', &
+      meaning='none, or a force law of the registry on the slip, its parameters beside it (docs/inputs.md, '// &
+      '"&point_mass"; a sled: at both contacts)'), &
     declaration_t(groups='point_mass', name='sigma', unit='1', default='1', low=-1.0_wp, high=1.0_wp, &
       meaning='side of the Darboux frame''s normal (thesis 3.38): +1 or -1'), &
     declaration_t(groups='point_mass', name='alpha_u', unit='1', default='1', low=-1e3_wp, high=1e3_wp, &
@@ -87,7 +88,7 @@ module io_declarations_multibody
       meaning='its rate at t = 0'), &
     declaration_t(groups='fourbar', name='branch', kind=VALUE_INTEGER, unit='1', default='1', low=-1.0_wp, &
       high=1.0_wp, meaning='+1: the coupler''s joint to the left of B->D, -1: right (not 0)'), &
-    ! ---- &sled
+    ! ---- &sled (+ the parameters of the friction law)
     declaration_t(groups='sled', name='length', unit='m', default='0.5', low=1e-3_wp, high=100.0_wp, &
       meaning='distance of the two runners'' contacts'), &
     declaration_t(groups='sled', name='mass', unit='kg', default='10', low=1e-3_wp, high=1e6_wp, &
@@ -96,12 +97,6 @@ module io_declarations_multibody
       low=0.0_wp, high=1e6_wp, meaning='principal moments, each at most the sum of the other two'), &
     declaration_t(groups='sled', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
       low=-1e3_wp, high=1e3_wp, meaning='gravity vector'), &
-    declaration_t(groups='sled', name='mu', unit='1', default='0', low=0.0_wp, high=10.0_wp, &
-      meaning='Coulomb friction at both contacts'), &
-    declaration_t(groups='sled', name='viscous', unit='N s/m', default='0', low=0.0_wp, high=1e6_wp, &
-      meaning='viscous friction at both contacts'), &
-    declaration_t(groups='sled', name='regularization_speed', unit='m/s', default='1e-6', low=1e-12_wp, &
-      high=1.0_wp, meaning='of the Coulomb friction'), &
     declaration_t(groups='sled', name='sigma', unit='1', default='1', low=-1.0_wp, high=1.0_wp, &
       meaning='side of the normal: +1 or -1'), &
     declaration_t(groups='sled', name='alpha_u', unit='1', default='1', low=-1e3_wp, high=1e3_wp, &
@@ -157,8 +152,6 @@ module io_declarations_multibody
       meaning='its surface: a &shape name'), &
     declaration_t(groups='contact', name='side_2', unit='1', default='1', low=-1.0_wp, high=1.0_wp, &
       meaning='side of shape_2 towards body_1: +1 or -1'), &
-    declaration_t(groups='contact', name='friction', kind=VALUE_WORDS, default='''none''', &
-      meaning='none, or a force law of the registry on the slip (docs/contact.md)'), &
     declaration_t(groups='contact', name='rolling', kind=VALUE_LOGICAL, default='.false.', &
       meaning='no slip (thesis 3.85), held by a velocity-level constraint; no friction law with it'), &
     declaration_t(groups='contact', name='level', kind=VALUE_WORDS, default='''position''', &

@@ -8,7 +8,9 @@ module io_mechanism_config
   use numerics_ode, only: ode_stats_t
   use kinetostatics_models, only: pendulum_params_t, fourbar_params_t, sled_params_t
   use kinetostatics_recorder, only: mechanism_series_t
+  use base_spec, only: spec_t
   use io_input, only: input_text_t, group_reader_t, open_group, format_real, format_vector
+  use io_friction_config, only: friction_law_variables, friction_law_names, read_friction_law
   use io_hdf5, only: result_file_t, units_per_second
   implicit none (type, external)
   private
@@ -86,21 +88,22 @@ contains
     type(status_t), intent(inout) :: status
     real(wp) :: inertia(3), u0, v0, phi0, du0, dv0, dphi0
     type(group_reader_t) :: r
+    character(len=32) :: friction
+    type(spec_t) :: law
     integer :: k
 
     inertia = [(config%params%inertia(k, k), k = 1, 3)]
-    config%params%mu = 0; config%params%viscous = 0
     config%params%sigma = 1; config%params%alpha_u = 1; config%params%alpha_v = 0
     u0 = 0; v0 = 0; phi0 = 0; du0 = 0; dv0 = 0; dphi0 = 0
-    call open_group(input, 'sled', r, status)
+    friction = 'none'
+    call open_group(input, 'sled', r, status, also=friction_law_variables())
     call r%get('length', config%params%length, status)
     call r%get('mass', config%params%mass, status)
     call r%get('inertia', inertia, status)
     call r%get('gravity', config%params%gravity, status)
-    call r%get('mu', config%params%mu, status)
-    call r%get('viscous', config%params%viscous, status)
-    call r%get('regularization_speed', config%params%regularization_speed, &
-               status)
+    call r%get('friction', friction, status, choices=friction_law_names())
+    call read_friction_law(r, trim(friction), law, status)
+    if (friction /= 'none') config%params%friction = [law]
     call r%get('sigma', config%params%sigma, status)
     call r%get('alpha_u', config%params%alpha_u, status)
     call r%get('alpha_v', config%params%alpha_v, status)

@@ -12,7 +12,7 @@ module io_point_mass_config
   use kinetostatics_force_law, only: force_law_kind_t
   use kinetostatics_force_law_factory, only: force_law_kinds, force_law_kind_index
   use io_input, only: input_text_t, group_reader_t, open_group, format_real
-  use io_kind_parameters, only: read_kind_parameters, refuse_other_parameters, parameter_variables
+  use io_friction_config, only: friction_law_variables, friction_law_names, read_friction_law
   implicit none (type, external)
   private
   public :: point_mass_config_t, read_point_mass_config
@@ -38,45 +38,32 @@ contains
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
     type(force_law_kind_t), allocatable :: laws(:)
-    character(len=name_length), allocatable :: law_variables(:), friction_names(:)
     character(len=name_length) :: friction
     integer :: j
 
-    laws = force_law_kinds()
-    allocate (law_variables(0))
-    do j = 1, size(laws)
-      call parameter_variables(laws(j)%parameters, law_variables, renamed)
-    end do
-    friction_names = [character(len=name_length) :: 'none', (laws(j)%name, j = 1, size(laws))]
     friction = 'none'
-    call open_group(input, 'point_mass', r, status, also=law_variables)
+    call open_group(input, 'point_mass', r, status, also=friction_law_variables(renamed))
     call r%get('mass', config%mass, status)
     call r%get('u0', config%u0, status)
     call r%get('v0', config%v0, status)
     call r%get('du0', config%du0, status)
     call r%get('dv0', config%dv0, status)
     call r%get('gravity', config%gravity, status)
-    call r%get('friction', friction, status, choices=friction_names)
+    call r%get('friction', friction, status, choices=friction_law_names())
     call r%get('sigma', config%sigma, status)
     call r%get('alpha_u', config%alpha_u, status)
     call r%get('alpha_v', config%alpha_v, status)
     if (.not. status%ok()) return
-    ! the law's parameters by its declarations; a coefficient the law does
-    ! not use would be silently ignored: refused
-    if (friction == 'none') then
-      call r%refuse_given(law_variables, 'friction = ''none'' has no parameters', status)
-    else
+    call read_friction_law(r, trim(friction), config%friction, status, rename=renamed)
+    if (.not. status%ok()) return
+    if (friction /= 'none') then
+      laws = force_law_kinds()
       associate (law => laws(force_law_kind_index(trim(friction))))
-        call read_kind_parameters(r, 'friction', trim(friction), law%parameters, config%friction, status, &
-                                  rename=renamed, hint='friction = ''none'' for no friction')
-        call refuse_other_parameters(r, 'friction', trim(friction), law%parameters, law_variables, status, &
-                                     rename=renamed)
         if (any([(law%parameters(j)%name == 'regularization_speed', j = 1, size(law%parameters))]) .and. &
             .not. config%friction%has('regularization_speed')) &
           call config%friction%set('regularization_speed', [1e-9_wp])
       end associate
     end if
-    if (.not. status%ok()) return
     if (abs(config%sigma) /= 1) then
       call r%invalid('sigma', format_real(config%sigma), 'must be +1 or -1 (side of the normal)', status)
     else if (config%alpha_u == 0 .and. config%alpha_v == 0) then

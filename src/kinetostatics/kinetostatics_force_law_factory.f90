@@ -17,13 +17,14 @@
 !> OpenMP critical section, so that threads building models at once (a
 !> sweep's rides) find it complete.
 module kinetostatics_force_law_factory
+  use base_kinds, only: wp
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_spec, only: spec_t, complete_spec
   use kinetostatics_force_law, only: force_law_t, force_law_kind_t, law_place_t
   use kinetostatics_force_laws, only: coulomb_kind, viscous_kind, viscous_weight_kind, viscous_normal_kind
   implicit none (type, external)
   private
-  public :: register_force_law, force_law_kinds, force_law_kind_index, force_law_from_spec
+  public :: register_force_law, force_law_kinds, force_law_kind_index, force_law_from_spec, law_spec
 
   type(force_law_kind_t), allocatable, save :: registry(:)
 
@@ -74,6 +75,17 @@ contains
     end do
     k = 0
   end function force_law_kind_index
+
+  !> The spec of a law of kind `kind` with its parameter `name` = `value`
+  !> (the others keep their defaults): a library caller's one-line law,
+  !> law_spec('coulomb', 'mu', 0.2_wp).
+  pure function law_spec(kind, name, value) result(spec)
+    character(len=*), intent(in) :: kind, name
+    real(wp), intent(in) :: value
+    type(spec_t) :: spec
+    spec%kind = kind
+    call spec%set(name, [value])
+  end function law_spec
 
   !> The law of `spec` acting at `place`; the spec is checked against its
   !> kind's declarations (defaults filled in) first.

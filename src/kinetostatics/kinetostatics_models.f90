@@ -46,9 +46,10 @@ module kinetostatics_models
     real(wp) :: inertia(3, 3) = reshape([0.02_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.25_wp, 0.0_wp, &
                                          0.0_wp, 0.0_wp, 0.25_wp], [3, 3])   ! kg m^2, bar frame
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]
-    real(wp) :: mu = 0, viscous = 0             ! Coulomb (1) and viscous (N s/m) at both contacts
-    real(wp) :: normal_viscous = 0              ! s/m: F = -mu_n |N| w_t at both contacts (the egg's law)
-    real(wp) :: regularization_speed = 1e-6_wp  ! m/s
+    !> The friction laws at both contacts, each a kind of the force-law
+    !> registry with its parameters (kinetostatics_force_law_factory); none:
+    !> frictionless
+    type(spec_t), allocatable :: friction(:)
     !> Darboux frame parameters (3.38), (3.41); sigma must orient the normal
     !> z_D towards the side of the surface the bar is on (N > 0 while pressed)
     real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0
@@ -192,9 +193,8 @@ contains
   !> beta starts from the projection of the front end onto the surface's
   !> tangent plane at (u0, v0), pitch 0. Contacts 'rear' and 'front' between
   !> the ground's surface and the bar (contact points: the two Darboux
-  !> frames); force laws 'rear_coulomb', 'front_coulomb' (mu > 0),
-  !> 'rear_viscous', 'front_viscous' (viscous > 0) and 'rear_normal_viscous',
-  !> 'front_normal_viscous' (normal_viscous > 0), in this order. With
+  !> frames); each law of p%friction at both, 'rear_<kind>' and
+  !> 'front_<kind>', in the order given. With
   !> finish = .false. the mechanism is left open for more laws or contacts
   !> (then call m%finalize).
   subroutine build_sled(p, surface, q0, m, status, finish)
@@ -209,7 +209,7 @@ contains
     type(surface_point_t) :: pt
     type(darboux_frame_t) :: fr
     real(wp) :: dvec(3), e11, e12, e22, b1, b2, det, du, dv
-    type(spec_t) :: law
+    integer :: k
 
     call surface%evaluate(q0(1), q0(2), 3, pt, status)
     if (status%ok()) call darboux_frame(pt, p%sigma, p%alpha_u, p%alpha_v, fr, status)
@@ -264,21 +264,10 @@ contains
       front_contact = m%add_contact('front', 1, front_body, d2)
     end if
     ! the friction laws from their specs (kinetostatics_force_law_factory)
-    if (p%mu > 0) then
-      law = spec_t('coulomb')
-      call law%set('mu', [p%mu])
-      call law%set('regularization_speed', [p%regularization_speed])
-      call add_at_both('coulomb')
-    end if
-    if (p%viscous > 0) then
-      law = spec_t('viscous')
-      call law%set('viscous_coefficient', [p%viscous])
-      call add_at_both('viscous')
-    end if
-    if (p%normal_viscous > 0) then
-      law = spec_t('viscous_normal')
-      call law%set('mu', [p%normal_viscous])
-      call add_at_both('normal_viscous')
+    if (allocated(p%friction)) then
+      do k = 1, size(p%friction)
+        call add_at_both(p%friction(k))
+      end do
     end if
     if (.not. status%ok()) return
     call m%set_coordinates([su, sv, sphi])
@@ -289,13 +278,13 @@ contains
 
   contains
 
-    !> The law `law` at the rear and the front contact ('rear_'//suffix, 'front_'//suffix).
-    subroutine add_at_both(suffix)
-      character(len=*), intent(in) :: suffix
+    !> The law `law` at the rear and the front contact ('rear_<kind>', 'front_<kind>').
+    subroutine add_at_both(law)
+      type(spec_t), intent(in) :: law
       class(force_law_t), allocatable :: built
-      call force_law_from_spec(law, law_place_t('rear_'//suffix, rear_contact), built, status)
+      call force_law_from_spec(law, law_place_t('rear_'//law%kind, rear_contact), built, status)
       if (status%ok()) call m%add_law(built)
-      call force_law_from_spec(law, law_place_t('front_'//suffix, front_contact), built, status)
+      call force_law_from_spec(law, law_place_t('front_'//law%kind, front_contact), built, status)
       if (status%ok()) call m%add_law(built)
     end subroutine add_at_both
   end subroutine build_sled

@@ -10,6 +10,9 @@
 !>     s' = g sin(theta) - lambda s, lambda = k (1/m + R^2/I) = 7 k/(2 m), so
 !>     from rest v(t) = g sin(theta) t - (k/m) s_inf (t - (1 - exp(-lambda t))/lambda),
 !>     s_inf = g sin(theta)/lambda; the energy lost is the law's work;
+!>   - a sled (a bar of mass m on two runners) slides straight down the test
+!>     slope with the test drag at both contacts: w' = g sin(theta) - 2 k w/m,
+!>     w(t) = w_inf + (w0 - w_inf) exp(-2 k t/m), w_inf = m g sin(theta)/(2 k);
 !>   - the kinds' parameters are read, checked and refused by their declarations.
 module throwaway_kinds
   use base_kinds, only: wp
@@ -117,6 +120,11 @@ program test_kind_registration
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
   use scenarios_point_mass, only: build_point_mass
+  use geometry_surface, only: surface_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_models, only: build_sled
+  use io_surface_config, only: read_surface_config
+  use io_mechanism_config, only: sled_config_t, read_sled_config
   use throwaway_kinds, only: test_slope_t, test_drag_t, slope_kind, drag_kind
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
@@ -133,6 +141,7 @@ program test_kind_registration
              'a kind registered twice is refused: '//st%text())
   call point_mass_on_slope()
   call sphere_on_slope()
+  call sled_on_slope()
   call refusals()
   call sphere_shape()
   call finish_tests('test_kind_registration')
@@ -252,6 +261,54 @@ contains
     call check(worst <= 1e-8_wp*g*sin(theta), 'sphere: centre speed = the closed form under the test drag')
     call check(balance <= 1e-9_wp*scale, 'sphere: E(t) - E(0) = work of the test law')
   end subroutine sphere_on_slope
+
+  !> rtol 1e-11 over 2 s: the speed to 1e-9 relative (as the point mass).
+  subroutine sled_on_slope()
+    character(len=*), parameter :: text = '&run scenario = ''sled'' /'//nl// &
+      '&solver rtol = 1e-11, atol = 1e-11, duration = 2.0, output_step = 0.5 /'//nl// &
+      '&surface kind = ''test_slope'', slope_deg = 20 /'//nl// &
+      '&sled mass = 10, friction = ''test_linear_drag'', drag_k = 0.7, u0 = 0.5, du0 = 0.2 /'//nl
+    type(input_text_t) :: input
+    type(solver_config_t) :: solver
+    type(sled_config_t) :: config
+    class(surface_t), allocatable :: surface
+    type(mechanism_ode_t), target :: model
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp) :: w_inf, theta
+    integer :: k_law
+    call input_from_text('sled on the test slope', text, input, st)
+    call read_solver_config(input, solver, st)
+    call read_surface_config(input, surface, st)
+    call read_sled_config(input, config, st)
+    call check(st%ok(), 'sled input read: '//st%text())
+    call build_sled(config%params, surface, config%q0, model%mechanism, st)
+    call check(st%ok(), 'sled built: '//st%text())
+    if (.not. st%ok()) return
+    call check(model%mechanism%n_laws == 2, 'sled: the test law at both contacts')
+    do k_law = 1, model%mechanism%n_laws
+      select type (law => model%mechanism%laws(k_law)%law)
+      type is (test_drag_t)
+        call check_close(law%k, k, 0.0_wp, 0.0_wp, 'sled: the test law with drag_k as given')
+      class default
+        call check(.false., 'sled: the friction is the test law')
+      end select
+    end do
+    options%ode = solver%options
+    options%t_end = solver%duration
+    options%output_step = solver%output_step
+    options%progress_seconds = 0
+    call model%start_series(10)
+    call drive(model, model%initial_state(config%q0, config%qd0), options, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'sled ran: '//st%text())
+    theta = theta_deg*pi/180
+    w_inf = config%params%mass*standard_gravity*sin(theta)/(2*k)
+    associate (s => model%series)
+      call check_close(s%qd(1, s%n), w_inf + (0.2_wp - w_inf)*exp(-2*k*s%time(s%n)/config%params%mass), 1e-9_wp, &
+                       0.0_wp, 'sled: speed under the test drag at both contacts at 2 s (m/s)')
+    end associate
+  end subroutine sled_on_slope
 
   !> The test kinds' parameters are read and refused by their declarations.
   subroutine refusals()

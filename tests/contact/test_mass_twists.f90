@@ -36,6 +36,7 @@ program test_mass_twists
   use geometry_elementary, only: paraboloid_t
   use kinetostatics_mechanism, only: mechanism_t, LOADS_NONE
   use kinetostatics_models, only: sled_params_t, build_sled, fourbar_params_t, build_fourbar, fourbar_assembly
+  use kinetostatics_force_law_factory, only: law_spec
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, CHAIN_LOOP
   use rider_model, only: rider_params_t, rider_layout_t, build_rider
   use io_input, only: input_text_t, load_input_file, input_from_text
@@ -93,7 +94,7 @@ contains
     real(wp) :: q0(3)
     character(len=40) :: label
     bowl = paraboloid_t(2.0_wp, 2.5_wp, 1.0_wp, st)
-    p%mu = 0.2_wp
+    p%friction = [law_spec('coulomb', 'mu', 0.2_wp)]
     p%front_normal_from_cut_force = cut_force
     p%loads_on_darboux_frames = darboux_loads
     q0 = [1.0_wp, 0.2_wp, 0.3_wp]

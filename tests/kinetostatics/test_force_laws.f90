@@ -23,6 +23,7 @@ program test_force_laws
   use kinetostatics_mechanism, only: mechanism_t, LOADS_NONE
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: sled_params_t, build_sled
+  use kinetostatics_force_law_factory, only: law_spec
   implicit none (type, external)
 
   real(wp), parameter :: g = 9.80665_wp
@@ -159,9 +160,8 @@ contains
     real(wp) :: q0(3), q(3), qd(3), qdd(3), r(6)
     integer :: trial
     surface = paraboloid_t(2.0_wp, 2.5_wp, 1.0_wp, st)
-    p%mu = 0.2_wp
-    p%viscous = 0.7_wp
-    p%normal_viscous = 0.05_wp
+    p%friction = [law_spec('coulomb', 'mu', 0.2_wp), law_spec('viscous', 'viscous_coefficient', 0.7_wp), &
+                  law_spec('viscous_normal', 'mu', 0.05_wp)]
     q0 = [1.0_wp, 0.0_wp, 0.3_wp]
     call build_sled(p, surface, q0, m, st)
     call m%check_start(q0, st)
@@ -194,7 +194,7 @@ contains
     real(wp), allocatable :: y(:)
     real(wp) :: q0(3), qd0(3), qdd(3), k, v_inf, t
     plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [cos(theta), 0.0_wp, -sin(theta)], [0.0_wp, 1.0_wp, 0.0_wp], st)
-    p%normal_viscous = mu
+    p%friction = [law_spec('viscous_normal', 'mu', mu)]
     q0 = [0.3_wp, 0.1_wp, 0.0_wp]
     qd0 = [0.5_wp, 0.0_wp, 0.0_wp]
     call build_sled(p, plane, q0, sys%mechanism, st)

@@ -15,6 +15,7 @@ program test_sled
   use kinetostatics_mechanism, only: mechanism_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: sled_params_t, build_sled
+  use kinetostatics_force_law_factory, only: law_spec
   implicit none (type, external)
 
   real(wp), parameter :: g = 9.80665_wp
@@ -57,7 +58,7 @@ contains
 
     write (label, '(f4.2, a, f4.1)') phi, ', sigma ', sigma
     plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [cos(theta), 0.0_wp, -sin(theta)], [0.0_wp, 1.0_wp, 0.0_wp], st)
-    p%mu = mu
+    p%friction = [law_spec('coulomb', 'mu', mu)]
     p%sigma = sigma
     p%front_normal_from_cut_force = sigma < 0   ! the other rule in one of the cases
     q0 = [0.5_wp, 0.2_wp, phi]
@@ -114,8 +115,9 @@ contains
     type(status_t) :: st
     real(wp), allocatable :: y(:)
     real(wp) :: t
+    real(wp), parameter :: c = 3   ! N s/m
     plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], st)
-    p%viscous = 3
+    p%friction = [law_spec('viscous', 'viscous_coefficient', c)]
     call build_sled(p, plane, [0.0_wp, 0.0_wp, 0.0_wp], sys%mechanism, st)
     y = sys%initial_state([0.0_wp, 0.0_wp, 0.0_wp], [2.0_wp, 0.0_wp, 0.0_wp])
     call sys%mechanism%check_start(y(1:3), st)
@@ -125,12 +127,12 @@ contains
     call integ%advance(1.5_wp, t, y, st)
     call check(st%ok(), 'viscous plane: integrated: '//st%text())
     ! rtol 1e-11 over ~100 steps of a smooth exponential
-    call check_close(y(4), 2*exp(-2*p%viscous*1.5_wp/p%mass), 1e-8_wp, 0.0_wp, &
+    call check_close(y(4), 2*exp(-2*c*1.5_wp/p%mass), 1e-8_wp, 0.0_wp, &
                      'viscous friction: u'' = u0'' exp(-2 c t/m)')
-    call check_close(y(1), 2*p%mass/(2*p%viscous)*(1 - exp(-2*p%viscous*1.5_wp/p%mass)), 1e-8_wp, 0.0_wp, &
+    call check_close(y(1), 2*p%mass/(2*c)*(1 - exp(-2*c*1.5_wp/p%mass)), 1e-8_wp, 0.0_wp, &
                      'viscous friction: u = u0'' m/(2c) (1 - exp(-2 c t/m))')
     ! each contact's work: -c int w^2 dt = -c u0'^2 m/(4c) (1 - exp(-4 c t/m))
-    call check_close(y(7), -p%viscous*4*p%mass/(4*p%viscous)*(1 - exp(-4*p%viscous*1.5_wp/p%mass)), 1e-8_wp, &
+    call check_close(y(7), -c*4*p%mass/(4*c)*(1 - exp(-4*c*1.5_wp/p%mass)), 1e-8_wp, &
                      0.0_wp, 'viscous friction: work integral of the rear contact in closed form')
     call check_close(y(8), y(7), 1e-10_wp, 0.0_wp, 'viscous friction: both contacts do the same work')
   end subroutine viscous_plane
@@ -156,7 +158,7 @@ contains
 
     write (label, '(f4.2)') mu
     surface = paraboloid_t(2.0_wp, 2.5_wp, 1.0_wp, st)
-    p%mu = mu
+    if (mu > 0) p%friction = [law_spec('coulomb', 'mu', mu)]   ! Coulomb's mu > 0: none for 0
     q0 = [1.0_wp, 0.0_wp, 0.3_wp]
     qd0 = [0.0_wp, 1.2_wp, 0.5_wp]
     call build_sled(p, surface, q0, sys%mechanism, st)
@@ -262,8 +264,7 @@ contains
     real(wp) :: q0(3), qd0(3), q(3), qd(3), qdd_b(3), qdd_d(3), t, worst_qdd, worst_n, worst_p, r(6)
     integer :: k
     surface = paraboloid_t(2.0_wp, 2.5_wp, 1.0_wp, st)
-    p%mu = 0.15_wp
-    p%viscous = 0.8_wp
+    p%friction = [law_spec('coulomb', 'mu', 0.15_wp), law_spec('viscous', 'viscous_coefficient', 0.8_wp)]
     q0 = [1.0_wp, 0.0_wp, 0.3_wp]
     qd0 = [0.0_wp, 1.2_wp, 0.5_wp]
     call build_sled(p, surface, q0, body%mechanism, st)
@@ -324,8 +325,7 @@ contains
     real(wp) :: q0(3), qd0(3), t, tk, vk, e0, worst, dissipated
     integer :: k
     surface = paraboloid_t(2.0_wp, 2.5_wp, 1.0_wp, st)
-    p%mu = 0.1_wp
-    p%viscous = 0.5_wp
+    p%friction = [law_spec('coulomb', 'mu', 0.1_wp), law_spec('viscous', 'viscous_coefficient', 0.5_wp)]
     q0 = [1.0_wp, 0.0_wp, 0.3_wp]
     qd0 = [0.0_wp, 1.2_wp, 0.5_wp]
     call build_sled(p, surface, q0, sys%mechanism, st)
