@@ -3,9 +3,11 @@ every dataset named after its HDF5 dimension scale and carrying the scale's
 values as a coordinate, also where the scale lives in a parent group (the
 contacts /rider/pelvis, /rider/heels, /rider/back and /contact/bodies/<b>
 take /rider/time and /contact/time). Values, units and descriptions are the
-file's; each variable also gets `long_name` (its description, as CF readers
-look for). Felt accelerations (multiples of |g|, units '1' in layout 1) are
-marked `felt_acceleration_in = 'g'`, and the axis of /rider/acceleration_g
+file's, `long_name` too (CF readers label a variable by it; a file written
+before slidesim wrote it gets its description). Felt accelerations
+(multiples of |g|) are marked `felt_acceleration_in`: the file's units
+('gravity', standard gravity, or the run's |g| as '9.81 m/s^2'; 'g' in files
+written with units '1'), and the axis of /rider/acceleration_g
 (the pelvis axes, not x, y, z) is `felt_axis` = longitudinal, lateral, normal.
 An axis over x, y, z is `xyz` (0, 1, 2, with the labels `xyz_name`); the
 second axis of a 3 x 3 matrix (rotation, frame) `xyz_2`.
@@ -50,12 +52,19 @@ def is_felt_acceleration(attrs):
     return "|g|" in attrs.get("description", "")
 
 
+def felt_units(attrs):
+    """The unit of a felt acceleration: the file's ('gravity' or '9.81 m/s^2'),
+    or 'g' where an older file wrote '1'."""
+    units = attrs.get("units", "")
+    return units if units not in ("", "1") else "g"
+
+
 def _variable_attrs(d):
     attrs = _attrs(d)
-    if attrs.get("description"):
+    if attrs.get("description") and "long_name" not in attrs:   # a file from before long_name
         attrs["long_name"] = attrs["description"]
     if is_felt_acceleration(attrs):
-        attrs["felt_acceleration_in"] = "g"
+        attrs["felt_acceleration_in"] = felt_units(attrs)
     return attrs
 
 
@@ -161,7 +170,7 @@ class Run:
     def ride_report(self):
         """The ride's report (/evaluation) as a pandas DataFrame, one row per
         figure (index: its name, e.g. 'top_speed', 'pelvis/wall_angle_max'):
-        value, units (felt accelerations: 'g', multiples of |g|), where
+        value, units (felt accelerations: the file's, see felt_units), where
         (the pelvis's centerline arc length, m, where the file gives it) and
         description. A ride or sweep-free scenario without /evaluation is
         refused."""
@@ -180,7 +189,7 @@ class Run:
                     where = next((g[w][()] for w in (name + "_arc_length",
                                                      "wall_arc_length" if name.startswith("wall_") else "")
                                   if w and w in g), np.nan)
-                    units = "g" if is_felt_acceleration(attrs) else attrs.get("units", "")
+                    units = felt_units(attrs) if is_felt_acceleration(attrs) else attrs.get("units", "")
                     rows.append((prefix + name, _values(d), units, float(where), attrs.get("description", "")))
         frame = pd.DataFrame(rows, columns=["figure", "value", "units", "where_arc_length_m", "description"])
         return frame.set_index("figure")

@@ -43,10 +43,15 @@ class Quantity:
     coords: dict = field(default_factory=dict)   # numpy axis -> (name, values)
 
     def to_pint(self, registry=None):
-        """The values as a pint Quantity (pint must be installed)."""
+        """The values as a pint Quantity (pint must be installed). A unit with
+        a factor ('9.81 m/s^2': felt accelerations under a gravity other than
+        standard) scales the values."""
         import pint
         registry = registry or pint.UnitRegistry()
-        return registry.Quantity(self.values, self.units)
+        unit = registry.parse_expression(self.units or '1')
+        if isinstance(unit, registry.Quantity):
+            return registry.Quantity(self.values * unit.magnitude, unit.units)
+        return registry.Quantity(self.values * unit, 'dimensionless')
 
 
 def _text(value):

@@ -7,6 +7,10 @@
 !> Felt specific force: f = (a - g)/|g| in a body frame's axes (columns of
 !> `axes`), in multiples of the gravity magnitude |g| ("in g"): lying still on
 !> level ground it is +1 along the slide normal (pressed onto the slide).
+!> Its unit in files (felt_acceleration_units) names that |g|: 'gravity'
+!> (standard gravity, 9.80665 m/s^2, to UDUNITS-2 and pint alike; pint does
+!> not know UDUNITS-2's 'standard_free_fall') or the run's |g| as
+!> '9.81 m/s^2'.
 !>
 !> Tipping lever arm (E.3): l = (M_r . e_long)/(F_r . n), the slide's reaction
 !> moment about the body's long axis over the reaction's normal component, at
@@ -21,11 +25,11 @@
 !> the quantity accepts.
 module design_ride_evaluation
   use base_kinds, only: wp
-  use base_constants, only: pi
-  use base_text, only: format_short, lower
+  use base_constants, only: pi, standard_gravity
+  use base_text, only: format_short, format_real, lower
   implicit none (type, external)
   private
-  public :: felt_acceleration, tipping_lever_arm
+  public :: felt_acceleration, felt_acceleration_units, tipping_lever_arm
   public :: ride_limit_t, limit_verdict_t, new_ride_limit, evaluate_limit, limit_quantities, &
     limit_report_unit, limit_units_allowed, series_extreme, quantities_without_limit
 
@@ -69,6 +73,22 @@ contains
     real(wp) :: f(3)
     f = matmul(a - gravity, axes)/norm2(gravity)
   end function felt_acceleration
+
+  !> The unit of felt accelerations (multiples of |gravity|) as UDUNITS-2 and
+  !> pint read it: 'gravity' when |gravity| is standard gravity (to a few
+  !> ulps: the norm of a tilted standard-gravity vector), else |gravity| in
+  !> m/s^2 ('9.81 m/s^2', the shortest digits that read back).
+  pure function felt_acceleration_units(gravity) result(units)
+    real(wp), intent(in) :: gravity(3)   ! m/s^2
+    character(len=:), allocatable :: units
+    real(wp) :: magnitude
+    magnitude = norm2(gravity)
+    if (abs(magnitude - standard_gravity) <= 8*epsilon(1.0_wp)*standard_gravity) then
+      units = 'gravity'
+    else
+      units = format_real(magnitude)//' m/s^2'
+    end if
+  end function felt_acceleration_units
 
   !> l = (M_r . e_long)/(F_r . n) (E.3), huge() if F_r . n <= 0.
   pure real(wp) function tipping_lever_arm(reaction_force, reaction_moment, long_axis, normal) result(l)

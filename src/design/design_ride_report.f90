@@ -11,7 +11,7 @@ module design_ride_report
   use base_constants, only: pi
   use rider_model, only: N_CONTACTS
   use rider_ride, only: ride_series_t
-  use design_ride_evaluation, only: felt_acceleration, tipping_lever_arm, ride_limit_t, limit_verdict_t, &
+  use design_ride_evaluation, only: felt_acceleration, felt_acceleration_units, tipping_lever_arm, ride_limit_t, limit_verdict_t, &
     evaluate_limit, series_extreme
   implicit none (type, external)
   private
@@ -20,6 +20,7 @@ module design_ride_report
   type :: ride_report_t
     integer :: n = 0
     real(wp), allocatable :: felt(:, :)          ! 3 x n, g: longitudinal, lateral, normal at the pelvis CoM
+    character(len=:), allocatable :: felt_units  ! the unit g of felt in files (felt_acceleration_units)
     real(wp), allocatable :: lever_arm(:)        ! n, m (huge where the pelvis does not press)
     real(wp) :: ride_time = 0                    ! s
     real(wp) :: distance = 0                     ! m of arc length from the start to the stop
@@ -50,6 +51,7 @@ contains
     n = s%n
     report%n = n
     report%complete = complete
+    report%felt_units = felt_acceleration_units(gravity)
     allocate (report%felt(3, n), report%lever_arm(n))
     if (n < 1) return
     where = s%arc_length(:n)

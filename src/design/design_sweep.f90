@@ -21,7 +21,7 @@ module design_sweep
   use rider_model, only: rider_params_t, N_CONTACTS
   use rider_ride, only: ride_options_t, ride_result_t
   use water_run, only: water_description_t, water_result_t, compute_water
-  use design_ride_evaluation, only: ride_limit_t
+  use design_ride_evaluation, only: ride_limit_t, felt_acceleration_units
   use design_ride_report, only: ride_report_t
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   !$ use omp_lib, only: omp_get_max_threads
@@ -31,7 +31,7 @@ module design_sweep
     rides_of_rank
   public :: N_SWEPT, swept_names, swept_units, swept_descriptions, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, &
     V_HEADING, V_SPEED, V_FLOW_RATE, V_F1, V_F2, V_F3
-  public :: N_FIGURES, figure_names, figure_units, figure_descriptions, F_FELT_MAGNITUDE_MAX
+  public :: N_FIGURES, figure_names, figure_unit, figure_descriptions, F_FELT_MAGNITUDE_MAX
   public :: RIDE_NOT_RUN, RIDE_COMPLETE, RIDE_STOPPED, RIDE_FAILED, ride_status_names, message_length
 
   ! ---- what varies from ride to ride (a column of sweep_description_t%values)
@@ -64,8 +64,9 @@ module design_sweep
     'back_wall_angle_max', 'back_wall_distance_max', 'back_wall_arc_length', &
     'pelvis_normal_force_min', 'heels_normal_force_min', 'back_normal_force_min', &
     'drag_switches', 'steps']
+  !> 'g': multiples of |gravity|, in the file felt_acceleration_units (figure_unit)
   character(len=*), parameter :: figure_units(N_FIGURES) = [character(len=4) :: 's', 'm', 'm/s', 'm', 'm/s', &
-    '1', 'm', '1', 'm', '1', 'm', '1', 'm', '1', 'm', '1', 'm', '1', 'm', 'm', 'm', &
+    'g', 'm', 'g', 'm', 'g', 'm', 'g', 'm', 'g', 'm', 'g', 'm', 'g', 'm', 'm', 'm', &
     'rad', 'm', 'm', 'rad', 'm', 'm', 'rad', 'm', 'm', 'N', 'N', 'N', '1', '1']
   character(len=*), parameter :: figure_descriptions(N_FIGURES) = [character(len=90) :: &
     'time from the start to the stop', 'arc length covered by the pelvis', 'largest speed', &
@@ -117,6 +118,16 @@ module design_sweep
   end type sweep_result_t
 
 contains
+
+  !> The file's unit of figure k in a sweep under `gravity` (m/s^2): felt
+  !> accelerations in its |gravity| (felt_acceleration_units).
+  pure function figure_unit(k, gravity) result(units)
+    integer, intent(in) :: k
+    real(wp), intent(in) :: gravity(3)
+    character(len=:), allocatable :: units
+    units = trim(figure_units(k))
+    if (units == 'g') units = felt_acceleration_units(gravity)
+  end function figure_unit
 
   !> An empty result for n rides and `limits` limits (all not run).
   subroutine new_sweep_result(n, limits, result)

@@ -20,8 +20,8 @@
 !> - numbers are numbers: `set_attribute` takes text, a real, a real array or
 !>   an integer; `write_scalar`/`write_count` make scalar datasets (shape ());
 !> - every dataset has `units` (UDUNITS-2 and pint syntax: 'm', 'm/s', 'm/s^2',
-!>   'm^-1', 'rad', '1', 'J', 'kg m^2'; no '1/m', which UDUNITS-2 refuses) and
-!>   `description`;
+!>   'm^-1', 'rad', '1', 'J', 'kg m^2'; no '1/m', which UDUNITS-2 refuses),
+!>   `description` and `long_name` (the same text: the CF attribute);
 !> - arrays are stored as in Fortran: values(3, n) is read by h5py as (n, 3),
 !>   so the sample index (time, arc length) is numpy axis 0;
 !> - `make_scale` turns a 1-d dataset into a dimension scale and `attach_scale`
@@ -233,7 +233,7 @@ contains
   end subroutine ensure_groups
 
   !> The one dataset writer: `shape` in Fortran order (size 0: a scalar),
-  !> `buffer` the values in memory type `type_id`; then units and description.
+  !> `buffer` the values in memory type `type_id`; then units, description and long_name.
   !> `finite` = .false.: the values hold NaN or Inf (see finish).
   !> `transfer`: a dataset transfer property list (default: HDF5's).
   subroutine write_dataset(self, name, type_id, shape, buffer, units, description, status, finite, transfer)
@@ -269,6 +269,8 @@ contains
         ! the attributes of the new dataset through its open id (no lookup by name)
         if (hdferr == 0) call write_string_attribute_on(dataset_id, 'units', units, hdferr)
         if (hdferr == 0) call write_string_attribute_on(dataset_id, 'description', description, hdferr)
+        ! CF readers (xarray, ncview, Panoply) label a variable by long_name
+        if (hdferr == 0) call write_string_attribute_on(dataset_id, 'long_name', description, hdferr)
         call h5dclose_f(dataset_id, err)
       end if
       call h5sclose_f(space_id, err)

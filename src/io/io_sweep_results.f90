@@ -6,9 +6,9 @@ module io_sweep_results
   use base_kinds, only: wp
   use base_text, only: format_integer, format_real
   use base_status, only: status_t
-  use design_ride_evaluation, only: limit_report_unit
+  use design_ride_evaluation, only: limit_report_unit, felt_acceleration_units
   use design_sweep, only: sweep_description_t, sweep_result_t, water_groups, N_SWEPT, swept_names, swept_units, &
-    swept_descriptions, V_SEX, N_FIGURES, figure_names, figure_units, figure_descriptions, ride_status_names, &
+    swept_descriptions, V_SEX, N_FIGURES, figure_names, figure_unit, figure_descriptions, ride_status_names, &
     V_FLOW_RATE, V_F1, V_F2, V_F3
   use io_hdf5, only: result_file_t
   use io_output_files, only: text_output_t
@@ -46,7 +46,7 @@ contains
     call file%write_integers(g//'water_group', result%water_group, '1', &
                              'the ride''s water: index into /sweep/water', status)
     do k = 1, N_FIGURES
-      call file%write_vector(g//trim(figure_names(k)), result%figures(k, :), trim(figure_units(k)), &
+      call file%write_vector(g//trim(figure_names(k)), result%figures(k, :), figure_unit(k, sweep%rider%gravity), &
                              trim(figure_descriptions(k))//' (0 where the ride failed)', status)
     end do
     call file%write_vector(g//'wall_time', result%seconds, 's', 'wall-clock time of the ride and its '// &
@@ -60,7 +60,7 @@ contains
                          'it failed', status)
     do k = 1, size(sweep%limits)
       c = g//'limits/'//limit_column(k, sweep%limits(k)%quantity)//'/'
-      unit = si(limit_report_unit(sweep%limits(k)%quantity))
+      unit = si(limit_report_unit(sweep%limits(k)%quantity), felt_acceleration_units(sweep%rider%gravity))
       call file%write_text(c//'quantity', sweep%limits(k)%quantity, 'what is limited', status)
       if (sweep%limits(k)%has_minimum) call file%write_scalar(c//'minimum', sweep%limits(k)%minimum, unit, &
                                                               'the lower limit', status)
@@ -105,12 +105,13 @@ contains
     name = format_integer(k)//'_'//trim(quantity)
   end function limit_column
 
-  !> The file's unit for a report unit (degrees stay degrees; g is 1).
-  pure function si(unit) result(text)
-    character(len=*), intent(in) :: unit
+  !> The file's unit for a report unit (degrees stay degrees; g is
+  !> `felt_units`, the sweep's felt_acceleration_units).
+  pure function si(unit, felt_units) result(text)
+    character(len=*), intent(in) :: unit, felt_units
     character(len=:), allocatable :: text
     select case (unit)
-    case ('g'); text = '1'
+    case ('g'); text = felt_units
     case ('deg'); text = 'degree'
     case default; text = unit
     end select

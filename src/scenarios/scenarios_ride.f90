@@ -259,8 +259,9 @@ contains
                              'the heels)', status)
       call file%write_vector(g//'phi_trunk', s%phi_trunk(:n), 'rad', 'tilt of the trunk at the hip (+ lifts '// &
                              'the head)', status)
-      call file%write_matrix(g//'acceleration_g', report%felt(:, :n), '1', 'felt specific force (a - g)/|g| '// &
-                             'at the pelvis centre of mass in the pelvis axes: longitudinal (towards the feet), '// &
+      call file%write_matrix(g//'acceleration_g', report%felt(:, :n), report%felt_units, &
+                             'felt specific force (a - g)/|g| at the pelvis centre of mass in the pelvis axes: '// &
+                             'longitudinal (towards the feet), '// &
                              'lateral (to the left), normal (+ pressed onto the slide), in multiples of |g|', status)
       call file%write_vector(g//'lever_arm', merge(report%lever_arm(:n), 0.0_wp, abs(report%lever_arm(:n)) < &
                              huge(1.0_wp)), 'm', 'tipping lever arm at the pelvis contact (E.3): the slide''s '// &
@@ -347,11 +348,11 @@ contains
                                               'speed when the rider leaves the slide (the run-out entry)', status)
     do k = 1, 3
       c = g//'acceleration_'//trim(axis(k))
-      call file%write_scalar(c//'_max', r%felt_max(k), '1', 'largest felt acceleration along the pelvis''s '// &
-                             trim(axis(k))//' axis, multiples of |g|', status)
+      call file%write_scalar(c//'_max', r%felt_max(k), r%felt_units, 'largest felt acceleration along the '// &
+                             'pelvis''s '//trim(axis(k))//' axis, multiples of |g|', status)
       call file%write_scalar(c//'_max_arc_length', r%felt_max_at(k), 'm', 'where (pelvis arc length)', status)
-      call file%write_scalar(c//'_min', r%felt_min(k), '1', 'smallest felt acceleration along the pelvis''s '// &
-                             trim(axis(k))//' axis, multiples of |g|', status)
+      call file%write_scalar(c//'_min', r%felt_min(k), r%felt_units, 'smallest felt acceleration along the '// &
+                             'pelvis''s '//trim(axis(k))//' axis, multiples of |g|', status)
       call file%write_scalar(c//'_min_arc_length', r%felt_min_at(k), 'm', 'where (pelvis arc length)', status)
     end do
     call file%write_scalar(g//'lever_arm_max', r%lever_max, 'm', 'largest tipping lever arm (signed)', status)
@@ -369,11 +370,11 @@ contains
     end do
     do k = 1, size(r%limits)
       c = g//'limits/'//format_integer(k)//'_'//r%limits(k)%quantity//'/'
-      unit = limit_report_unit(r%limits(k)%quantity)
+      unit = si(limit_report_unit(r%limits(k)%quantity), r%felt_units)
       call file%write_text(c//'quantity', r%limits(k)%quantity, 'what is limited', status)
-      if (r%limits(k)%has_minimum) call file%write_scalar(c//'minimum', r%limits(k)%minimum, si(unit), &
+      if (r%limits(k)%has_minimum) call file%write_scalar(c//'minimum', r%limits(k)%minimum, unit, &
                                                           'the lower limit', status)
-      if (r%limits(k)%has_maximum) call file%write_scalar(c//'maximum', r%limits(k)%maximum, si(unit), &
+      if (r%limits(k)%has_maximum) call file%write_scalar(c//'maximum', r%limits(k)%maximum, unit, &
                                                           'the upper limit', status)
       call file%write_text(c//'given_unit', r%limits(k)%unit, 'the unit the limit was given in', status)
       if (.not. r%judged(k)) then
@@ -382,10 +383,10 @@ contains
       end if
       call file%write_text(c//'verdict', trim(merge('exceeded', 'ok      ', r%verdicts(k)%exceeded)), &
                            'ok or exceeded', status)
-      call file%write_scalar(c//'worst', r%verdicts(k)%worst, si(unit), &
+      call file%write_scalar(c//'worst', r%verdicts(k)%worst, unit, &
                              'the value furthest beyond (or nearest to) a bound', status)
       call file%write_scalar(c//'worst_arc_length', r%verdicts(k)%worst_where, 'm', 'where', status)
-      call file%write_scalar(c//'excess', r%verdicts(k)%excess, si(unit), 'by how much it is exceeded (0: not)', &
+      call file%write_scalar(c//'excess', r%verdicts(k)%excess, unit, 'by how much it is exceeded (0: not)', &
                              status)
       if (r%verdicts(k)%exceeded) call file%write_scalar(c//'first_arc_length', r%verdicts(k)%first_where, 'm', &
                                                          'where it is first exceeded', status)
@@ -393,12 +394,13 @@ contains
   end subroutine write_evaluation
 
   !> The file's unit for a report unit (degrees stay degrees: pint and
-  !> UDUNITS parse 'degree'; multiples of |g| are dimensionless).
-  pure function si(unit) result(text)
-    character(len=*), intent(in) :: unit
+  !> UDUNITS parse 'degree'; multiples of |g| are in `felt_units`, the
+  !> report's felt_acceleration_units).
+  pure function si(unit, felt_units) result(text)
+    character(len=*), intent(in) :: unit, felt_units
     character(len=:), allocatable :: text
     select case (unit)
-    case ('g'); text = '1'
+    case ('g'); text = felt_units
     case ('deg'); text = 'degree'
     case default; text = unit
     end select
@@ -572,23 +574,25 @@ contains
       ! head, f < 0) and pushing (towards the feet, f > 0), printed >= 0; the
       ! JSON keeps the signed values (felt_longitudinal_max, _min)
       if (r%felt_min(1) < 0) then
-        call summary%add('felt_longitudinal_min', 'felt braking max', r%felt_min(1), '1', 'g', -1.0_wp)
+        call summary%add('felt_longitudinal_min', 'felt braking max', r%felt_min(1), r%felt_units, 'g', -1.0_wp)
       else
         call summary%add('felt_longitudinal_min', 'felt pushing min', r%felt_min(1), '1', 'g (never braked)')
       end if
       call summary%add('felt_longitudinal_min_arc_length', '  at arc length', r%felt_min_at(1), 'm')
       if (r%felt_max(1) > 0) then
-        call summary%add('felt_longitudinal_max', 'felt pushing max', r%felt_max(1), '1', 'g')
+        call summary%add('felt_longitudinal_max', 'felt pushing max', r%felt_max(1), r%felt_units, 'g')
       else
-        call summary%add('felt_longitudinal_max', 'felt braking min', r%felt_max(1), '1', &
+        call summary%add('felt_longitudinal_max', 'felt braking min', r%felt_max(1), r%felt_units, &
                          'g (braked all the way)', -1.0_wp)
       end if
       call summary%add('felt_longitudinal_max_arc_length', '  at arc length', r%felt_max_at(1), 'm')
       do k = 2, 3
         c = trim(axis(k))
-        call summary%add('felt_'//c//'_max', 'felt '//c//' max', r%felt_max(k), '1', 'g'//sense(k, r%felt_max(k)))
+        call summary%add('felt_'//c//'_max', 'felt '//c//' max', r%felt_max(k), r%felt_units, &
+                         'g'//sense(k, r%felt_max(k)))
         call summary%add('felt_'//c//'_max_arc_length', '  at arc length', r%felt_max_at(k), 'm')
-        call summary%add('felt_'//c//'_min', 'felt '//c//' min', r%felt_min(k), '1', 'g'//sense(k, r%felt_min(k)))
+        call summary%add('felt_'//c//'_min', 'felt '//c//' min', r%felt_min(k), r%felt_units, &
+                         'g'//sense(k, r%felt_min(k)))
         call summary%add('felt_'//c//'_min_arc_length', '  at arc length', r%felt_min_at(k), 'm')
       end do
       do k = 1, N_CONTACTS
@@ -609,7 +613,7 @@ contains
       end if
       exceeded = 0
       do k = 1, size(r%limits)
-        unit = limit_report_unit(r%limits(k)%quantity)
+        unit = si(limit_report_unit(r%limits(k)%quantity), r%felt_units)
         if (.not. r%judged(k)) then
           line = 'limit '//r%limits(k)%quantity//': not judged (the ride did not reach the exit)'
         else if (r%verdicts(k)%exceeded) then

@@ -35,7 +35,7 @@ module scenarios_sweep
   use scenarios_water, only: build_water, write_slide_grid
   use io_xdmf, only: xdmf_t
   use scenarios_ride, only: ride_groups, check_sphere_radii, read_limit_gate, limits_exceeded_status
-  use design_ride_evaluation, only: quantities_without_limit
+  use design_ride_evaluation, only: quantities_without_limit, felt_acceleration_units
   implicit none (type, external)
   private
   public :: run_sweep_scenario
@@ -275,7 +275,7 @@ contains
     if (any(ran)) then
       worst = maxloc(result%figures(F_FELT_MAGNITUDE_MAX, :), dim=1, mask=ran)
       call summary%add('felt_magnitude_max', 'highest felt acceleration', result%figures(F_FELT_MAGNITUDE_MAX, &
-                       worst), '1', 'g')
+                       worst), felt_acceleration_units(sweep%rider%gravity), 'g')
       call summary%add_count('felt_magnitude_max_ride', '  in ride', worst, '')
     end if
     call summary%add_count('rides_over_limit', 'rides over a limit', count(any(result%verdict == 1, dim=1)), &

@@ -4,7 +4,7 @@ every input opens with slidesim.open, every group is an xarray Dataset
 whose every axis has a coordinate with the values of the file's dimension
 scale (the contacts' too, whose scale is in the parent group), every
 dataset of the file is in it with its values, units and long_name; the felt
-accelerations are marked in g on the pelvis axes; the ride report and the
+accelerations are marked in the file's g on the pelvis axes; the ride report and the
 limits match /evaluation; a file that is not a result is refused naming it.
 
     check_python_package.py RESULTS_FOLDER TEXT_FILE CMAKELISTS
@@ -14,6 +14,7 @@ Prints failures; exit status 1 if any.
 import math
 import os
 import re
+import shutil
 import sys
 
 import h5py
@@ -58,8 +59,9 @@ def check_file(path):
                 units = d.attrs.get("units")
                 if units is not None and var.attrs.get("units") != (units.decode() if isinstance(units, bytes) else units):
                     fail(f"{path} {d.name}: units {var.attrs.get('units')!r}, file {units!r}")
-                if d.attrs.get("description") and not var.attrs.get("long_name"):
-                    fail(f"{path} {d.name}: no long_name")
+                if d.attrs.get("description") and var.attrs.get("long_name") != d.attrs.get("long_name"):
+                    fail(f"{path} {d.name}: long_name {var.attrs.get('long_name')!r}, "
+                         f"file {d.attrs.get('long_name')!r}")
                 for axis, dim in enumerate(var.dims):
                     scale = scale_of(d, axis)
                     if dim == "felt_axis":
@@ -81,8 +83,8 @@ def check_ride(run, datasets, path):
     felt = rider["acceleration_g"]
     if felt.dims != ("time", "felt_axis") or list(felt["felt_axis"].values) != ["longitudinal", "lateral", "normal"]:
         fail(f"{path}: acceleration_g dims {felt.dims}")
-    if felt.attrs.get("felt_acceleration_in") != "g":
-        fail(f"{path}: acceleration_g not marked in g: {felt.attrs}")
+    if felt.attrs.get("felt_acceleration_in") != felt.attrs["units"] or felt.attrs["units"] in ("", "1"):
+        fail(f"{path}: acceleration_g not marked in its units: {felt.attrs}")
     for contact in ("pelvis", "heels", "back"):
         group = datasets[f"/rider/{contact}"]
         if not np.array_equal(group["time"].values, rider["time"].values):
@@ -97,7 +99,8 @@ def check_ride(run, datasets, path):
                             ("acceleration_normal_max", "acceleration_normal_max_arc_length")):
             if report.loc[name, "where_arc_length_m"] != e[where][()]:
                 fail(f"{path}: report {name} where {report.loc[name, 'where_arc_length_m']} != {e[where][()]}")
-        if report.loc["acceleration_normal_max", "units"] != "g" or report.loc["top_speed", "units"] != "m/s":
+        felt_units = e["acceleration_normal_max"].attrs["units"]
+        if report.loc["acceleration_normal_max", "units"] != felt_units or report.loc["top_speed", "units"] != "m/s":
             fail(f"{path}: report units {report['units'].to_dict()}")
         if not math.isnan(report.loc["ride_time", "where_arc_length_m"]):
             fail(f"{path}: ride_time has a place")
@@ -108,6 +111,28 @@ def check_ride(run, datasets, path):
         for name in names:
             if limits.loc[name, "verdict"] != e[f"limits/{name}/verdict"].asstr()[()]:
                 fail(f"{path}: limit {name} verdict")
+
+
+def check_older_file(path):
+    """A ride file as slidesim wrote it before long_name and the felt units
+    (a copy without long_name, felt units '1'): long_name is the description,
+    the felt accelerations are marked in 'g'."""
+    older = os.path.join(os.getcwd(), "older_ride.h5")
+    shutil.copyfile(path, older)
+    with h5py.File(older, "r+") as f:
+        def strip(name, obj):
+            if isinstance(obj, h5py.Dataset) and "long_name" in obj.attrs:
+                del obj.attrs["long_name"]
+                if "|g|" in obj.attrs.get("description", ""):
+                    obj.attrs["units"] = "1"
+        f.visititems(strip)
+    run = slidesim.open(older)
+    felt = run["/rider"]["acceleration_g"]
+    if felt.attrs.get("long_name") != felt.attrs.get("description"):
+        fail(f"{older}: no long_name from the description: {felt.attrs}")
+    if felt.attrs.get("felt_acceleration_in") != "g" or run.ride_report().loc["acceleration_normal_max", "units"] != "g":
+        fail(f"{older}: felt accelerations with units '1' not marked in g: {felt.attrs}")
+    os.remove(older)
 
 
 def main(folder, text, cmakelists):
@@ -139,6 +164,7 @@ def main(folder, text, cmakelists):
     except ResultFileError as error:
         if "'water' result" not in str(error):
             fail(f"water ride report: {error}")
+    check_older_file(os.path.join(folder, "ride_demo_slide.h5"))
     version = re.search(r"project\(slidesim VERSION ([0-9.]+)", open(cmakelists).read()).group(1)
     if slidesim.__version__ != version:
         fail(f"slidesim.__version__ {slidesim.__version__}, CMakeLists.txt {version}")

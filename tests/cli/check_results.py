@@ -5,7 +5,7 @@ of docs/outputs.md (run by result_conventions.sh).
 
 For every file: strings are variable-length UTF-8 (h5py gives str); no
 attribute holds a number as text; every dataset has `units` (parsed by pint
-and by UDUNITS-2) and `description`; /statistics and documented scalars have
+and by UDUNITS-2), `description` and `long_name`, the same text (CF); /statistics and documented scalars have
 shape (); every axis of every dataset of a scenario group has a dimension
 scale, and xarray (engine h5netcdf) opens every group with named dimensions;
 the provenance attributes are present, `input_sha256` is the
@@ -139,7 +139,7 @@ def check_file(path, rows):
             check_string(path, where, obj.attrs.get_id(key).dtype, value)
             if isinstance(value, bytes):
                 fail(path, f"{where}: read as bytes, not str")
-            if isinstance(value, str) and key not in ('units', 'description', 'title', 'status_message') \
+            if isinstance(value, str) and key not in ('units', 'description', 'long_name', 'title', 'status_message') \
                     and re.fullmatch(rf'\s*{NUMBER}(\s+{NUMBER})*\s*', value):
                 fail(path, f"{where}: a number stored as text ({value!r})")
     attributes('', f)
@@ -153,6 +153,8 @@ def check_file(path, rows):
         if 'units' not in d.attrs or 'description' not in d.attrs:
             fail(path, f"{name}: no units or description attribute")
             continue
+        if d.attrs.get('long_name') != d.attrs['description']:
+            fail(path, f"{name}: long_name {d.attrs.get('long_name')!r} is not the description")
         units = d.attrs['units']
         is_text = h5py.check_string_dtype(d.dtype) is not None
         if is_text:
@@ -160,7 +162,7 @@ def check_file(path, rows):
                 fail(path, f"{name}: a text dataset with units {units!r}")
         else:
             try:
-                UNITS.parse_units(units) if units != '1' else UNITS('1')
+                UNITS(units)   # an expression: '9.81 m/s^2' (felt accelerations) has a factor
             except Exception as error:   # pint raises several kinds
                 fail(path, f"{name}: units {units!r} not parsed by pint ({error})")
             if udunits_error(units):
@@ -182,6 +184,8 @@ def check_file(path, rows):
         if not shape_matches(doc_shape, d.shape):
             fail(path, f"{name}: shape {d.shape}, docs/outputs.md says {doc_shape}")
         fixed = not (doc_units.startswith('(') or doc_units == '—')
+        if doc_units == '(g)' and not re.fullmatch(rf'gravity|{NUMBER} m/s\^2', units):
+            fail(path, f"{name}: units {units!r}, docs/outputs.md says (g): 'gravity' or '<|g|> m/s^2'")
         if fixed and doc_units != units:
             fail(path, f"{name}: units {units!r}, docs/outputs.md says {doc_units!r}")
         if doc_units == '—' and not is_text:
