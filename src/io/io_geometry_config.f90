@@ -5,7 +5,7 @@
 !> surface is then checked (frame defined everywhere, no folding, no part of
 !> a tube passing through another) before it is returned. A geometry that
 !> cannot be built from the input is bad input (STATUS_INVALID_INPUT).
-!> See docs/geometry.md for every variable with unit, default and range.
+!> Every variable is declared in io_declarations_geometry (docs/inputs.md).
 module io_geometry_config
   use base_kinds, only: wp
   use base_vector, only: cross
@@ -29,18 +29,16 @@ module io_geometry_config
     format_vector, group_present, where_given
   use io_csv, only: read_csv_table
   use io_element_table, only: element_table_t, read_element_table, check_element
+  use io_declarations_geometry, only: max_centerline_points, max_sections, max_elements, max_patches, &
+    max_profile_points
   implicit none (type, external)
   private
-  public :: read_geometry_config, geometry_groups, geometry_kinds, geometry_file_groups
+  public :: read_geometry_config, geometry_groups, geometry_file_groups
 
   character(len=*), parameter :: geometry_groups(6) = [character(len=14) :: 'geometry', 'centerline', &
     'cross_section', 'slide_elements', 'blended', 'bspline']
   !> What a file named by &surface geometry_file may hold: a geometry-scenario input.
   character(len=*), parameter :: geometry_file_groups(8) = [character(len=14) :: 'run', 'grid', geometry_groups]
-  character(len=*), parameter :: geometry_kinds(4) = [character(len=8) :: 'tube', 'slide', 'blended', 'bspline']
-
-  integer, parameter :: max_points = 2000, max_sections = 8, max_elements = 40, max_patches = 8
-  integer, parameter :: max_profile = 400
 
 contains
 
@@ -63,9 +61,9 @@ contains
 
     gkind = 'slide'
     check_samples = 2000
-    call open_group(input, 'geometry', [character(len=13) :: 'kind', 'check_samples'], r, status)
-    call r%get('kind', gkind, status, choices=geometry_kinds)
-    call r%get('check_samples', check_samples, 10, 1000000, status)
+    call open_group(input, 'geometry', r, status)
+    call r%get('kind', gkind, status)
+    call r%get('check_samples', check_samples, status)
     if (.not. status%ok()) return
     if (present(kind)) then
       if (r%has('kind') .and. gkind /= kind) then
@@ -178,21 +176,18 @@ contains
     type(group_reader_t) :: r
     type(bounds_t) :: position, direction
     character(len=:), allocatable :: unused
-    character(len=*), parameter :: names(17) = [character(len=14) :: 'kind', 'start', 'end', 'center', &
-      'radius', 'rise_per_turn', 'turns', 'phase_deg', 'horizon', 'n_points', 'points', 'points_file', &
-      'smoothing', 'degree', 'start_tangent', 'end_tangent', 'horizon_points']
 
-    position = in_range(-1e6_wp, 1e6_wp, 'm')
-    direction = in_range(-1e6_wp, 1e6_wp, '1')
     kind = 'line'
     start = [0, 0, 0]; end = [10, 0, 0]
     center = 0; radius = 5; rise_per_turn = 0; turns = 0.25_wp; phase_deg = -90
     horizon = [0, 0, 1]
     n_points = 0; smoothing = 0; degree = 5; points_file = ''
     start_tangent = 0; end_tangent = 0
-    call open_group(input, g, names, r, status)
-    call r%get('kind', kind, status, choices=[character(len=6) :: 'line', 'helix', 'points'])
-    call r%get('horizon', horizon, direction, status)
+    call open_group(input, g, r, status)
+    call r%get('kind', kind, status)
+    call r%get('horizon', horizon, status)
+    call r%bounds('points', position, status)
+    call r%bounds('horizon_points', direction, status)
     if (.not. status%ok()) return
     unused = 'a '//trim(kind)//' centerline does not use it (see docs/geometry.md)'
     if (kind /= 'line') call r%refuse_given([character(len=5) :: 'start', 'end'], unused, status)
@@ -206,8 +201,8 @@ contains
     allocate (horizon_out, source=constant_curve_t(value=horizon))
     select case (trim(kind))
     case ('line')
-      call r%get('start', start, position, status)
-      call r%get('end', end, position, status)
+      call r%get('start', start, status)
+      call r%get('end', end, status)
       if (status%ok() .and. .not. norm2(end - start) > 1e-3_wp) &
         call r%invalid('end', format_vector(end), 'must lie at least 1 mm from start', status)
       if (.not. status%ok()) return
@@ -222,11 +217,11 @@ contains
       described%end = end
       call build_centerline_curve(described, curve, status)
     case ('helix')
-      call r%get('center', center, position, status)
-      call r%get('radius', radius, in_range(1e-3_wp, 1e4_wp, 'm'), status)
-      call r%get('rise_per_turn', rise_per_turn, in_range(-1e4_wp, 1e4_wp, 'm'), status)
-      call r%get('turns', turns, above(0.0_wp, 1e3_wp, '1'), status)
-      call r%get('phase_deg', phase_deg, in_range(-360.0_wp, 360.0_wp, 'deg'), status)
+      call r%get('center', center, status)
+      call r%get('radius', radius, status)
+      call r%get('rise_per_turn', rise_per_turn, status)
+      call r%get('turns', turns, status)
+      call r%get('phase_deg', phase_deg, status)
       if (.not. status%ok()) return
       described%kind = 'helix'
       described%center = center
@@ -236,10 +231,10 @@ contains
       described%phase = phase_deg*pi/180
       call build_centerline_curve(described, curve, status)
     case ('points')
-      call r%get('n_points', n_points, 4, max_points, status)
+      call r%get('n_points', n_points, status)
       call r%get('points_file', points_file, status)
       if (.not. status%ok()) return
-      allocate (points(3, max_points), horizon_points(3, max_points))
+      allocate (points(3, max_centerline_points), horizon_points(3, max_centerline_points))
       points = 0
       horizon_points = 0
       if (len_trim(points_file) > 0) then
@@ -247,7 +242,7 @@ contains
                             status)
         if (.not. status%ok()) return
         ! x, y, z per line, or x, y, z, hx, hy, hz with the horizon vector of each point
-        call read_csv_table(input%resolve_path(points_file), 3, 6, max_points, &
+        call read_csv_table(input%resolve_path(points_file), 3, 6, max_centerline_points, &
                             [position, position, position, direction, direction, direction], table, status)
         if (.not. status%ok()) then
           call prefix_status(status, r%where('points_file')//': &'//g//': points_file = '''//trim(points_file)//'''')
@@ -269,15 +264,14 @@ contains
           return
         end if
       else
-        call r%get_columns('points', points, position, 'the limit of '//format_integer(max_points)//' points', &
-                           n_given, status)
-        call r%get_columns('horizon_points', horizon_points, direction, 'the limit of '// &
-                           format_integer(max_points)//' points', n_horizon, status)
+        call r%get_columns('points', points, 'the limit of '//format_integer(max_centerline_points)//' points', n_given, status)
+        call r%get_columns('horizon_points', horizon_points, 'the limit of '//format_integer(max_centerline_points)// &
+                           ' points', n_horizon, status)
         if (.not. status%ok()) return
         have_horizon_points = n_horizon > 0
         if (.not. r%has('n_points')) then
           call r%invalid('n_points', format_integer(n_points), 'give the number of centerline points '// &
-                         '(4 to '//format_integer(max_points)//')', status)
+                         '(4 to '//format_integer(max_centerline_points)//')', status)
           return
         end if
         if (have_horizon_points .and. n_horizon /= n_points) then
@@ -289,10 +283,10 @@ contains
       end if
       call check_list_length(r, 'n_points', n_points, merge('points_file', 'points     ', len_trim(points_file) > 0), &
                              n_given, 'points', status)
-      call r%get('smoothing', smoothing, in_range(0.0_wp, 1e6_wp, 'm^2'), status)
-      call r%get('degree', degree, 3, 5, status)
-      call r%get('start_tangent', start_tangent, direction, status)
-      call r%get('end_tangent', end_tangent, direction, status)
+      call r%get('smoothing', smoothing, status)
+      call r%get('degree', degree, status)
+      call r%get('start_tangent', start_tangent, status)
+      call r%get('end_tangent', end_tangent, status)
       if (status%ok() .and. mod(degree, 2) == 0 .and. (any(start_tangent /= 0) .or. any(end_tangent /= 0))) &
         call r%invalid('degree', format_integer(degree), 'must be odd (3 or 5) when end tangents are given', status)
       if (.not. status%ok()) return
@@ -364,9 +358,6 @@ contains
     type(group_reader_t) :: r
     character(len=:), allocatable :: lim
     character(len=*), parameter :: g = 'slide_elements'
-    character(len=*), parameter :: names(17) = [character(len=17) :: 'n_elements', 'kind', 'length', &
-      'slope_deg', 'radius', 'angle_deg', 'direction', 'turns', 'drop', 'start', 'heading_deg', &
-      'transition_length', 'centerline_kind', 'fit_spacing', 'smoothing', 'degree', 'elements_file']
     character(len=4096) :: elements_file
     type(element_table_t) :: table
     character(len=:), allocatable :: variable, value, allowed
@@ -381,7 +372,7 @@ contains
       return
     end if
     elements_file = ''
-    call open_group(input, g, names, r, status)
+    call open_group(input, g, r, status)
     call r%get('elements_file', elements_file, status)
     if (.not. status%ok()) return
     if (len_trim(elements_file) > 0) then
@@ -402,7 +393,7 @@ contains
       allocate (given_kind(n), e(n))
       given_kind = .true.
     else
-      call r%get('n_elements', n, 1, max_elements, status)
+      call r%get('n_elements', n, status)
       if (.not. status%ok()) return
       if (.not. r%has('n_elements')) then
         call r%invalid('n_elements', '0', 'give the number of elements (1 to '//format_integer(max_elements)// &
@@ -414,28 +405,27 @@ contains
                 given_kind(n), e(n))
       kind = ''; direction = 'left'
       length = 0; slope_deg = 0; radius = 0; angle_deg = 0; turns = 0; drop = 0
-      call r%get_parts('kind', kind, lim, status, choices=[character(len=8) :: 'straight', 'curve', 'helix', &
-                       'runout'], given=given_kind)
-      call r%get_parts('direction', direction, lim, status, choices=[character(len=5) :: 'left', 'right'])
-      call r%get_parts('length', length, in_range(0.0_wp, 1e4_wp, 'm'), lim, status)
-      call r%get_parts('slope_deg', slope_deg, in_range(-45.0_wp, 45.0_wp, 'deg'), lim, status)
-      call r%get_parts('radius', radius, in_range(0.0_wp, 1e4_wp, 'm'), lim, status)
-      call r%get_parts('angle_deg', angle_deg, in_range(0.0_wp, 720.0_wp, 'deg'), lim, status)
-      call r%get_parts('turns', turns, in_range(0.0_wp, 100.0_wp, '1'), lim, status)
-      call r%get_parts('drop', drop, in_range(-1e4_wp, 1e4_wp, 'm'), lim, status)
+      call r%get_parts('kind', kind, lim, status, given=given_kind)
+      call r%get_parts('direction', direction, lim, status)
+      call r%get_parts('length', length, lim, status)
+      call r%get_parts('slope_deg', slope_deg, lim, status)
+      call r%get_parts('radius', radius, lim, status)
+      call r%get_parts('angle_deg', angle_deg, lim, status)
+      call r%get_parts('turns', turns, lim, status)
+      call r%get_parts('drop', drop, lim, status)
     end if
-    call r%get('start', start, in_range(-1e6_wp, 1e6_wp, 'm'), status)
-    call r%get('heading_deg', heading_deg, in_range(-360.0_wp, 360.0_wp, 'deg'), status)
-    call r%get('transition_length', transition_length, in_range(0.0_wp, 100.0_wp, 'm'), status)
-    call r%get('centerline_kind', centerline_kind, status, choices=[character(len=6) :: 'fitted', 'exact'])
+    call r%get('start', start, status)
+    call r%get('heading_deg', heading_deg, status)
+    call r%get('transition_length', transition_length, status)
+    call r%get('centerline_kind', centerline_kind, status)
     if (.not. status%ok()) return
     if (centerline_kind == 'exact') then
       call r%refuse_given([character(len=11) :: 'fit_spacing', 'smoothing', 'degree'], &
                           'centerline_kind = ''exact'' is not fitted', status)
     else
-      call r%get('fit_spacing', fit_spacing, in_range(0.05_wp, 5.0_wp, 'm'), status)
-      call r%get('smoothing', smoothing, in_range(0.0_wp, 1e6_wp, 'm^2'), status)
-      call r%get('degree', degree, 3, 5, status)
+      call r%get('fit_spacing', fit_spacing, status)
+      call r%get('smoothing', smoothing, status)
+      call r%get('degree', degree, status)
       if (status%ok() .and. degree == 4) call r%invalid('degree', '4', 'must be 3 or 5', status)
     end if
     if (.not. status%ok()) return
@@ -490,14 +480,11 @@ contains
     type(group_reader_t) :: r
     character(len=:), allocatable :: lim, tlim
     character(len=*), parameter :: g = 'cross_section'
-    character(len=*), parameter :: names(14) = [character(len=19) :: 'n_sections', 'kind', 'radius', &
-      'half_width', 'half_height', 'wall', 'joint_width_deg', 'transition_midpoint', 'transition_end', &
-      'n_profile', 'profile_y', 'profile_z', 'profile_smoothing', 'profile_degree']
 
     n = 1
     n_profile = 0; profile_smoothing = 0; profile_degree = 5
-    call open_group(input, g, names, r, status)
-    call r%get('n_sections', n, 1, max_sections, status)
+    call open_group(input, g, r, status)
+    call r%get('n_sections', n, status)
     if (.not. status%ok()) return
     lim = 'n_sections = '//format_integer(n)
     tlim = 'n_sections - 1 = '//format_integer(n - 1)//' transitions'
@@ -509,23 +496,18 @@ contains
     radius = 0.5_wp; half_width = 0.5_wp; half_height = 0.5_wp; wall = 0.164_wp
     joint_width_deg = 0.05_wp*180/pi
     transition_midpoint = 0; transition_end = 0
-    call r%get_parts('kind', kind, lim, status, choices=[character(len=7) :: 'circle', 'ellipse', 'flume', &
-                     'profile'], given=given_kind)
+    call r%get_parts('kind', kind, lim, status, given=given_kind)
     if (n == 1 .and. .not. r%has('kind')) then
       kind(1) = 'circle'
       given_kind = .true.
     end if
-    call r%get_parts('radius', radius, in_range(1e-3_wp, 100.0_wp, 'm'), lim, status, given=given_radius)
-    call r%get_parts('half_width', half_width, in_range(1e-3_wp, 100.0_wp, 'm'), lim, status, given=given_half_width)
-    call r%get_parts('half_height', half_height, in_range(1e-3_wp, 100.0_wp, 'm'), lim, status, &
-                     given=given_half_height)
-    call r%get_parts('wall', wall, in_range(1e-3_wp, 100.0_wp, 'm'), lim, status, given=given_wall)
-    call r%get_parts('joint_width_deg', joint_width_deg, in_range(0.1_wp, 20.0_wp, 'deg'), lim, status, &
-                     given=given_joint)
-    call r%get_parts('transition_midpoint', transition_midpoint, in_range(0.0_wp, 1e6_wp, 'm'), tlim, status, &
-                     given=given_midpoint)
-    call r%get_parts('transition_end', transition_end, in_range(0.0_wp, 1e6_wp, 'm'), tlim, status, &
-                     given=given_end)
+    call r%get_parts('radius', radius, lim, status, given=given_radius)
+    call r%get_parts('half_width', half_width, lim, status, given=given_half_width)
+    call r%get_parts('half_height', half_height, lim, status, given=given_half_height)
+    call r%get_parts('wall', wall, lim, status, given=given_wall)
+    call r%get_parts('joint_width_deg', joint_width_deg, lim, status, given=given_joint)
+    call r%get_parts('transition_midpoint', transition_midpoint, tlim, status, given=given_midpoint)
+    call r%get_parts('transition_end', transition_end, tlim, status, given=given_end)
     if (.not. status%ok()) return
     call check_list_length(r, 'n_sections', n, 'kind', count(given_kind), 'sections', status)
     call check_exactly(r, 'transition_midpoint', count(given_midpoint), n - 1, n, status)
@@ -546,11 +528,11 @@ contains
                                              joint_width=joint_width_deg(i)*pi/180)
       select case (trim(kind(i)))
       case ('profile')
-        call r%get('n_profile', n_profile, 4, max_profile, status)
-        call r%get_list('profile_y', profile_y, max_profile, in_range(-100.0_wp, 100.0_wp, 'm'), status)
-        call r%get_list('profile_z', profile_z, max_profile, in_range(-100.0_wp, 100.0_wp, 'm'), status)
-        call r%get('profile_smoothing', profile_smoothing, in_range(0.0_wp, 1e3_wp, 'm^2'), status)
-        call r%get('profile_degree', profile_degree, 3, 5, status)
+        call r%get('n_profile', n_profile, status)
+        call r%get_list('profile_y', profile_y, max_profile_points, status)
+        call r%get_list('profile_z', profile_z, max_profile_points, status)
+        call r%get('profile_smoothing', profile_smoothing, status)
+        call r%get('profile_degree', profile_degree, status)
         if (status%ok() .and. .not. r%has('n_profile')) &
           call r%invalid('n_profile', '0', 'too few profile points: need at least 4 (profile_y, profile_z)', status)
         call check_list_length(r, 'n_profile', n_profile, 'profile_y', size(profile_y), 'points', status)
@@ -637,16 +619,12 @@ contains
     class(surface_t), allocatable :: base
     type(status_t) :: built
     type(group_reader_t) :: r
-    type(bounds_t) :: parameter_range
     character(len=:), allocatable :: lim, tlim
     character(len=*), parameter :: g = 'blended'
-    character(len=*), parameter :: names(15) = [character(len=10) :: 'n_patches', 'kind', 'a', 'b', 'c', &
-      'origin', 'angles_deg', 'u_min', 'u_max', 'v_min', 'v_max', 'swap_uv', 'transition', 'midpoint', 'u_99']
 
     n = 0
-    parameter_range = in_range(-1e4_wp, 1e4_wp, 'patch parameter units')
-    call open_group(input, g, names, r, status)
-    call r%get('n_patches', n, 2, max_patches, status)
+    call open_group(input, g, r, status)
+    call r%get('n_patches', n, status)
     if (status%ok() .and. .not. r%has('n_patches')) &
       call r%invalid('n_patches', '0', 'give the number of patches (2 to '//format_integer(max_patches)//')', status)
     if (.not. status%ok()) return
@@ -658,21 +636,20 @@ contains
     kind = ''; a = 1; b = 1; c = 1; origin = 0; angles_deg = 0
     u_min = 0; u_max = 1; v_min = 0; v_max = 1; swap_uv = .false.
     transition = 0; midpoint = 0; u_99 = 0
-    call r%get_parts('kind', kind, lim, status, choices=[character(len=21) :: 'ellipsoid', 'elliptic_paraboloid', &
-                     'hyperbolic_paraboloid', 'elliptic_cylinder'], given=given_kind)
-    call r%get_parts('a', a, in_range(1e-3_wp, 1e4_wp, 'm'), lim, status)
-    call r%get_parts('b', b, in_range(1e-3_wp, 1e4_wp, 'm'), lim, status)
-    call r%get_parts('c', c, in_range(1e-3_wp, 1e4_wp, 'm'), lim, status, given=given_c)
-    call r%get_columns('origin', origin, in_range(-1e6_wp, 1e6_wp, 'm'), lim, n_columns, status)
-    call r%get_columns('angles_deg', angles_deg, in_range(-360.0_wp, 360.0_wp, 'deg'), lim, n_columns, status)
-    call r%get_parts('u_min', u_min, parameter_range, lim, status)
-    call r%get_parts('u_max', u_max, parameter_range, lim, status)
-    call r%get_parts('v_min', v_min, parameter_range, lim, status)
-    call r%get_parts('v_max', v_max, parameter_range, lim, status)
+    call r%get_parts('kind', kind, lim, status, given=given_kind)
+    call r%get_parts('a', a, lim, status)
+    call r%get_parts('b', b, lim, status)
+    call r%get_parts('c', c, lim, status, given=given_c)
+    call r%get_columns('origin', origin, lim, n_columns, status)
+    call r%get_columns('angles_deg', angles_deg, lim, n_columns, status)
+    call r%get_parts('u_min', u_min, lim, status)
+    call r%get_parts('u_max', u_max, lim, status)
+    call r%get_parts('v_min', v_min, lim, status)
+    call r%get_parts('v_max', v_max, lim, status)
     call r%get_parts('swap_uv', swap_uv, lim, status)
-    call r%get_parts('transition', transition, in_range(0.0_wp, 1e4_wp, 'blend u'), tlim, status)
-    call r%get_parts('midpoint', midpoint, parameter_range, tlim, status, given=given_midpoint)
-    call r%get_parts('u_99', u_99, parameter_range, tlim, status, given=given_u_99)
+    call r%get_parts('transition', transition, tlim, status)
+    call r%get_parts('midpoint', midpoint, tlim, status, given=given_midpoint)
+    call r%get_parts('u_99', u_99, tlim, status, given=given_u_99)
     if (.not. status%ok()) return
     call check_list_length(r, 'n_patches', n, 'kind', count(given_kind), 'patches', status)
     if (any(given_midpoint) .or. any(given_u_99)) then
@@ -743,12 +720,11 @@ contains
 
     file = ''; layout = 'scattered'; smoothing = 0; degree = 3
     periodic_u = .false.; periodic_v = .false.
-    call open_group(input, g, [character(len=10) :: 'file', 'layout', 'smoothing', 'degree', 'periodic_u', &
-                    'periodic_v'], r, status)
+    call open_group(input, g, r, status)
     call r%get('file', file, status)
-    call r%get('layout', layout, status, choices=[character(len=10) :: 'scattered', 'grid', 'parametric'])
-    call r%get('smoothing', smoothing, in_range(0.0_wp, 1e6_wp, 'm^2 (sum of squared residuals)'), status)
-    call r%get('degree', degree, 1, 5, status)
+    call r%get('layout', layout, status)
+    call r%get('smoothing', smoothing, status)
+    call r%get('degree', degree, status)
     call r%get('periodic_u', periodic_u, status)
     call r%get('periodic_v', periodic_v, status)
     if (status%ok() .and. layout /= 'parametric' .and. (periodic_u .or. periodic_v)) &

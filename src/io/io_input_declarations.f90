@@ -8,22 +8,26 @@ module io_input_declarations
   use io_declarations_ride, only: ride_declarations
   use io_declarations_design, only: design_declarations
   use io_declarations_multibody, only: multibody_declarations
+  use io_declarations_geometry, only: geometry_declarations
   implicit none (type, external)
   private
   public :: find_declaration, declared_names, input_reference, declaration, declaration_count, declared_unit
 
   !> Every declaration, in the order of the reference.
-  type(declaration_t), parameter :: declarations(*) = [ride_declarations, design_declarations, multibody_declarations]
+  type(declaration_t), parameter :: declarations(*) = [ride_declarations, design_declarations, multibody_declarations, &
+    geometry_declarations]
 
   !> The groups of the reference, in its order (&water_solver has the
   !> declarations of &solver, and is named in its rows).
   character(len=*), parameter :: reference_groups(*) = [character(len=16) :: 'run', 'solver', 'evaluation', &
     'channel', 'water', 'rider', 'sweep', 'identify_rider', 'identify_water', 'optimize', 'surface', 'shape', &
-    'grid', 'point_mass', 'pendulum', 'fourbar', 'sled', 'contact_model', 'body', 'contact']
+    'geometry', 'centerline', 'slide_elements', 'cross_section', 'blended', 'bspline', 'grid', 'point_mass', &
+    'pendulum', 'fourbar', 'sled', 'contact_model', 'body', 'contact']
   !> The heading of each (a group read differently by two scenarios names both).
   character(len=*), parameter :: reference_titles(size(reference_groups)) = [character(len=40) :: '&run', &
     '&solver', '&evaluation', '&channel', '&water', '&rider', '&sweep', '&identify (scenario identify_rider)', &
-    '&identify (scenario identify_water)', '&optimize', '&surface', '&shape', '&grid', '&point_mass', &
+    '&identify (scenario identify_water)', '&optimize', '&surface', '&shape', '&geometry', '&centerline', &
+    '&slide_elements', '&cross_section', '&blended', '&bspline', '&grid', '&point_mass', &
     '&pendulum', '&fourbar', '&sled', '&contact_model', '&body', '&contact']
   !> A line under a group's heading, where the group needs one.
   character(len=*), parameter :: reference_notes(size(reference_groups)) = [character(len=240) :: '', &
@@ -37,6 +41,15 @@ module io_input_declarations
     'The geometry optimisation of a tube slide (thesis 4.7, docs/design.md).', &
     'Besides these, the parameters of the chosen kind (docs/inputs.md, "&surface"; declared with the kind).', &
     'A surface of the contact scenario: the variables of `&surface` and a name (docs/contact.md).', &
+    'The geometry groups describe a tube, a slide, a blended or a B-spline surface: the geometry '// &
+    'scenario''s input, or `&surface kind` with these groups or its `geometry_file` (docs/geometry.md).', &
+    'A tube around a centerline (`&geometry kind = ''tube''`); a value the kind does not use is refused.', &
+    'A slide from standard elements (`&geometry kind = ''slide''`, docs/geometry.md); a value an element '// &
+    'does not use must be left out or 0 (`''left''` for `direction`).', &
+    'The cross-section of a tube or slide: one, or several blended along the centerline (transitions '// &
+    'in m of arc length).', &
+    'Elementary patches placed, cut and blended along u (`&geometry kind = ''blended''`, thesis 3.73-3.79).', &
+    'A B-spline surface fitted to points from a CSV file (`&geometry kind = ''bspline''`).', &
     'The resolution of the geometry scenario''s written grid (docs/geometry.md).', &
     'Besides these, the parameters of the chosen friction law (docs/inputs.md, "&point_mass").', &
     'docs/inputs_multibody.md.', 'docs/inputs_multibody.md.', 'docs/inputs_multibody.md.', &
