@@ -1,20 +1,23 @@
 !> Slides from description types: a tube surface around a centerline (a
 !> line, a helix, a spline through points, or a chain of standard slide
 !> elements) with a cross-section (circle, ellipse, flume, profile, or several
-!> blended along the centerline). The namelist reader (io_geometry_config)
-!> fills these descriptions from &centerline, &slide_elements and
-!> &cross_section after checking every value; a library caller (the design
-!> loop, a sweep) fills them directly. The defaults are the input defaults of
-!> docs/geometry.md.
+!> blended along the centerline). The namelist reader
+!> (io_slide_geometry_config) fills these descriptions from &centerline,
+!> &slide_elements and &cross_section after checking every value; a library
+!> caller (the design loop, a sweep) fills them directly; geometry_description
+!> holds them with the other surfaces of the geometry groups. The defaults are
+!> the input defaults (docs/inputs.md).
 !>
 !> What is checked here is only what the geometry itself refuses (a spline
-!> that cannot be fitted, an element chain that does not connect, a tube
-!> that folds or passes through itself); the messages name the part. Values
-!> out of their documented ranges are the reader's business.
+!> that cannot be fitted, an element chain that does not connect, a
+!> transition beyond the centerline's end, a tube that folds or passes
+!> through itself); the messages name the part. Values out of their declared
+!> ranges are the reader's business.
 module geometry_slide_builder
   use base_kinds, only: wp
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_text, only: format_real, format_integer
   use geometry_curve, only: curve_t, curve_point_t, line_curve_t, helix_curve_t, constant_curve_t, &
     spline_centerline_t, new_spline_centerline
   use geometry_cross_section, only: cross_section_t, section_holder_t, circle_section_t, ellipse_section_t, &
@@ -236,16 +239,20 @@ contains
   end subroutine build_section_part
 
   !> The cross-section along `centerline`: one part, or the parts blended
-  !> across the transitions (arc lengths along the centerline).
-  subroutine build_cross_section(d, centerline, section, status)
+  !> across the transitions (arc lengths along the centerline, within it and
+  !> not overlapping). `variable` names a transition at fault ('' if none).
+  subroutine build_cross_section(d, centerline, section, status, variable)
     type(cross_section_description_t), intent(in) :: d
     class(curve_t), intent(in) :: centerline
     class(cross_section_t), allocatable, intent(out) :: section
     type(status_t), intent(inout) :: status
+    character(len=:), allocatable, intent(out), optional :: variable
     type(section_holder_t), allocatable :: parts(:)
     type(blended_section_t) :: blend
     real(wp), allocatable :: u_mid(:), u_end(:)
+    real(wp) :: total
     integer :: i, n
+    if (present(variable)) variable = ''
     if (.not. allocated(d%parts)) then
       allocate (section, source=circle_section_t())
       return
@@ -269,31 +276,76 @@ contains
       return
     end if
     allocate (u_mid(n - 1), u_end(n - 1))
+    total = centerline%total_length()
     do i = 1, n - 1
+      associate (mid => d%transition_midpoint, end => d%transition_end)
+        if (.not. (mid(i) >= 0 .and. mid(i) <= total)) then
+          call refuse('transition_midpoint', mid(i), 'must lie in [0, '//format_real(total)// &
+                      '] (m of arc length along the centerline)')
+        else if (.not. (end(i) > mid(i) .and. end(i) <= total)) then
+          call refuse('transition_end', end(i), 'must lie after transition_midpoint('//format_integer(i)// &
+                      ') and within the centerline ('//format_real(total)//' m)')
+        else if (i > 1) then
+          if (.not. mid(i) - mid(i - 1) >= (end(i) - mid(i)) + (end(i - 1) - mid(i - 1))) &
+            call refuse('transition_midpoint', mid(i), 'transitions must not overlap (midpoints at least the '// &
+                        'sum of the two half-widths apart)')
+        end if
+      end associate
+      if (.not. status%ok()) return
       call centerline%parameter_at_length(d%transition_midpoint(i), u_mid(i), status)
       if (status%ok()) call centerline%parameter_at_length(d%transition_end(i), u_end(i), status)
       if (.not. status%ok()) return
     end do
     blend = new_blended_section(parts, u_mid, u_end, status)
     if (status%ok()) allocate (section, source=blend)
+
+  contains
+
+    !> Transition i's `name` = x is refused: `allowed` says why.
+    subroutine refuse(name, x, allowed)
+      character(len=*), intent(in) :: name, allowed
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: element
+      element = name//'('//format_integer(i)//')'
+      call set_status(status, STATUS_INVALID_INPUT, element//' = '//format_real(x)//' is not allowed: '//allowed)
+      if (present(variable)) variable = element
+    end subroutine refuse
   end subroutine build_cross_section
 
-  !> The whole slide, checked (no folding, no part through another).
-  subroutine build_slide(d, slide, status)
+  !> The whole slide, checked (no folding, no part through another). Without
+  !> `part` a failure names the part in words; with it, `part` names the part
+  !> of the description at fault as its input group ('centerline',
+  !> 'slide_elements', 'cross_section'; the whole tube: 'centerline
+  !> cross_section' or 'slide_elements cross_section'), `variable` the value
+  !> at fault ('' if none; 'horizon_points' for the horizon field), and the
+  !> message is left for the caller to place.
+  subroutine build_slide(d, slide, status, part, variable)
     type(slide_description_t), intent(in) :: d
     type(tube_surface_t), intent(out) :: slide
     type(status_t), intent(inout) :: status
+    character(len=:), allocatable, intent(out), optional :: part, variable
     class(curve_t), allocatable :: centerline, horizon
     class(cross_section_t), allocatable :: section
-    character(len=:), allocatable :: part
+    character(len=:), allocatable :: group, words, failed
+    failed = ''
+    if (present(part)) part = ''
+    if (present(variable)) variable = ''
     if (.not. status%ok()) return
     select case (trim(d%kind))
     case ('tube')
-      part = 'centerline'
+      group = 'centerline'
+      words = 'centerline'
       call build_centerline_curve(d%centerline, centerline, status)
-      if (status%ok()) call build_horizon(d%centerline, horizon, status)
+      if (status%ok()) then
+        call build_horizon(d%centerline, horizon, status)
+        if (.not. status%ok()) then
+          call prefix_status(status, 'horizon_points')
+          failed = 'horizon_points'
+        end if
+      end if
     case ('slide')
-      part = 'slide elements'
+      group = 'slide_elements'
+      words = 'slide elements'
       call build_element_centerline(d%elements, centerline, status)
       if (status%ok()) allocate (horizon, source=constant_curve_t(value=[0.0_wp, 0.0_wp, 1.0_wp]))
     case default
@@ -301,16 +353,28 @@ contains
       return
     end select
     if (.not. status%ok()) then
-      call prefix_status(status, part)
+      call failure(group, words)
       return
     end if
-    call build_cross_section(d%section, centerline, section, status)
+    call build_cross_section(d%section, centerline, section, status, failed)
     if (.not. status%ok()) then
-      call prefix_status(status, 'cross-section')
+      call failure('cross_section', 'cross-section')
       return
     end if
     slide = new_tube_surface(centerline, horizon, section, status)
     if (status%ok()) call slide%check(d%check_samples, status)
-    if (.not. status%ok()) call prefix_status(status, part//' with the cross-section')
+    if (.not. status%ok()) call failure(group//' cross_section', words//' with the cross-section')
+
+  contains
+
+    subroutine failure(failed_part, failed_words)
+      character(len=*), intent(in) :: failed_part, failed_words
+      if (present(part)) then
+        part = failed_part
+        if (present(variable)) variable = failed
+      else
+        call prefix_status(status, failed_words)
+      end if
+    end subroutine failure
   end subroutine build_slide
 end module geometry_slide_builder

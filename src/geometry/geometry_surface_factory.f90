@@ -5,7 +5,7 @@
 !> parameters' values), placed in space if asked. io reads a kind's
 !> parameters by the declarations `surface_kinds` lists. The surfaces
 !> described by their own groups (tube, slide, blended, bspline:
-!> geometry_slide_builder, io_geometry_config) are not kinds of this registry.
+!> geometry_description's build_geometry) are not kinds of this registry.
 !>
 !> Adding a kind: one module with the surface and a function returning its
 !> surface_kind_t, and one line in `register_builtin_surfaces` (or, from

@@ -80,7 +80,7 @@ program test_slide_fit_ripple
 
 contains
 
-  !> Fits the chain's points every ~h m as fit_chain in io_geometry_config does
+  !> Fits the chain's points every ~h m as geometry_slide_builder's fit_chain does
   !> and returns the largest curvature on the straights: sigma from the end of
   !> one transition (joint + 1 m, the transitions being 2 m long) to the start of
   !> the next, 8 samples per point spacing, u mapped linearly from sigma
