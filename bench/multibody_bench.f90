@@ -12,12 +12,12 @@ program multibody_bench
   use geometry_elementary, only: plane_t, paraboloid_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: pendulum_params_t, build_pendulum, fourbar_params_t, build_fourbar, &
-    fourbar_assembly, sled_params_t, build_sled
+    fourbar_assembly, sled_params_t, build_sled, sled_description_t
   use kinetostatics_force_law_factory, only: law_spec
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_config, only: read_surface_config
-  use io_mechanism_config, only: sled_config_t, read_sled_config
+  use io_mechanism_config, only: read_sled_config
   use bench_timing, only: median
   implicit none (type, external)
 
@@ -49,7 +49,7 @@ contains
     real(wp) :: beta0(2)
     type(input_text_t) :: input
     type(solver_config_t) :: solver
-    type(sled_config_t) :: sled
+    type(sled_description_t) :: sled
     options%rtol = 1e-12_wp
     options%atol = 1e-12_wp
     select case (which)

@@ -18,11 +18,11 @@ program ride_bench
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_config, only: read_surface_config
-  use io_mechanism_config, only: sled_config_t, read_sled_config
+  use io_mechanism_config, only: read_sled_config
   use io_rider_config, only: rider_config_t, read_rider_config
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
-  use kinetostatics_models, only: build_sled
+  use kinetostatics_models, only: build_sled, sled_description_t
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_ride, only: ride_options_t, ride_result_t, run_ride
   use scenarios_water, only: build_water
@@ -117,7 +117,7 @@ contains
   real(wp) function time_sled() result(per_second)
     type(input_text_t) :: sled_input
     type(solver_config_t) :: solver
-    type(sled_config_t) :: sled
+    type(sled_description_t) :: sled
     class(surface_t), allocatable :: surface
     type(mechanism_ode_t), target :: sys
     type(driver_options_t) :: driver

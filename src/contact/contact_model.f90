@@ -55,7 +55,7 @@ module contact_model
     place_open_contact_pair, check_contact_branch, starts_in_other_chart
   use contact_rolling, only: new_no_slip
   use contact_velocity_level, only: new_velocity_contact
-  use contact_factory, only: shape_t, body_spec_t, body_from_spec
+  use contact_factory, only: shape_t, body_spec_t, body_from_spec, build_shapes
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t, contact_model_t, contact_link_t
@@ -125,7 +125,27 @@ contains
   !> Builds the mechanism of `system` and its start y0 (model%y0), checked:
   !> every name known, every body carried once and in order, loops closed on
   !> the physical branch, contacts pressing, start velocities consistent.
+  !> Shapes given by their specs are built first (contact_factory).
   subroutine build_contact_model(system, model, status)
+    type(contact_system_t), intent(in) :: system
+    type(contact_model_t), intent(out) :: model
+    type(status_t), intent(inout) :: status
+    type(contact_system_t) :: shaped
+    integer :: k
+    if (.not. status%ok()) return
+    if (allocated(system%shapes)) then
+      if (.not. all([(allocated(system%shapes(k)%surface), k = 1, size(system%shapes))])) then
+        shaped = system
+        call build_shapes(shaped%shapes, status)
+        call build_shaped_model(shaped, model, status)
+        return
+      end if
+    end if
+    call build_shaped_model(system, model, status)
+  end subroutine build_contact_model
+
+  !> build_contact_model of a system whose shapes are built.
+  subroutine build_shaped_model(system, model, status)
     type(contact_system_t), intent(in) :: system
     type(contact_model_t), intent(out) :: model
     type(status_t), intent(inout) :: status
@@ -141,7 +161,7 @@ contains
     call build(system, closed, status, all_position=.true.)
     if (.not. status%ok()) return
     call build(system, model, status, closed=closed)
-  end subroutine build_contact_model
+  end subroutine build_shaped_model
 
   !> Every name defined once and every reference known.
   subroutine check_names(system, status)

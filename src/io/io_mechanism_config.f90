@@ -1,12 +1,13 @@
 !> Input groups of the multibody scenarios (&pendulum, &fourbar, &sled) with
-!> their checks, and the writer of a mechanism's time series into a result file
-!> (layout in docs/outputs.md).
+!> their checks, read into their descriptions (kinetostatics_models builds
+!> them: build_pendulum_model, ...), and the writer of a mechanism's time
+!> series into a result file (layout in docs/outputs.md).
 module io_mechanism_config
   use base_kinds, only: wp
   use base_constants, only: standard_gravity
   use base_status, only: status_t
   use numerics_ode, only: ode_stats_t
-  use kinetostatics_models, only: pendulum_params_t, fourbar_params_t, sled_params_t
+  use kinetostatics_models, only: pendulum_description_t, fourbar_description_t, sled_description_t
   use kinetostatics_recorder, only: mechanism_series_t
   use base_spec, only: spec_t
   use io_input, only: input_text_t, group_reader_t, open_group, format_real, format_vector
@@ -14,33 +15,13 @@ module io_mechanism_config
   use io_hdf5, only: result_file_t, units_per_second
   implicit none (type, external)
   private
-  public :: pendulum_config_t, read_pendulum_config, fourbar_config_t, read_fourbar_config
-  public :: sled_config_t, read_sled_config, write_mechanism_series
-
-  type :: pendulum_config_t
-    type(pendulum_params_t) :: params
-    real(wp) :: theta0(2) = [0.5_wp, 0.0_wp]    ! rad
-    real(wp) :: dtheta0(2) = 0                  ! rad/s
-  end type pendulum_config_t
-
-  type :: fourbar_config_t
-    type(fourbar_params_t) :: params
-    real(wp) :: crank0 = 0                      ! rad
-    real(wp) :: dcrank0 = 10                    ! rad/s
-    integer :: branch = 1                       ! +1: C to the left of B->D, -1: right
-  end type fourbar_config_t
-
-  type :: sled_config_t
-    type(sled_params_t) :: params
-    real(wp) :: q0(3) = 0                       ! u0, v0 (surface parameters), phi0 (rad)
-    real(wp) :: qd0(3) = 0                      ! their rates
-  end type sled_config_t
+  public :: read_pendulum_config, read_fourbar_config, read_sled_config, write_mechanism_series
 
 contains
 
   subroutine read_pendulum_config(input, config, status)
     type(input_text_t), intent(in) :: input
-    type(pendulum_config_t), intent(out) :: config
+    type(pendulum_description_t), intent(out) :: config
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
     integer :: n
@@ -65,7 +46,7 @@ contains
 
   subroutine read_fourbar_config(input, config, status)
     type(input_text_t), intent(in) :: input
-    type(fourbar_config_t), intent(out) :: config
+    type(fourbar_description_t), intent(out) :: config
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
 
@@ -84,7 +65,7 @@ contains
 
   subroutine read_sled_config(input, config, status)
     type(input_text_t), intent(in) :: input
-    type(sled_config_t), intent(out) :: config
+    type(sled_description_t), intent(out) :: config
     type(status_t), intent(inout) :: status
     real(wp) :: inertia(3), u0, v0, phi0, du0, dv0, dphi0
     type(group_reader_t) :: r

@@ -1,4 +1,6 @@
-!> &point_mass: the mass, where it starts on the surface, gravity and friction.
+!> &point_mass: the mass, where it starts on the surface, gravity and friction,
+!> read into its description (kinetostatics_point_mass), which the
+!> kinetostatics layer builds (build_point_mass_model).
 !> The friction is any friction law of the core's registry
 !> (kinetostatics_force_law_factory), read by its declarations; the law's mu
 !> is the variable friction_coefficient here, and its regularization_speed
@@ -6,25 +8,15 @@
 !> slow slides, the shipped inputs were computed with 1e-9).
 module io_point_mass_config
   use base_kinds, only: wp
-  use base_constants, only: standard_gravity
   use base_status, only: status_t
-  use base_spec, only: spec_t
   use kinetostatics_force_law, only: force_law_kind_t
   use kinetostatics_force_law_factory, only: force_law_kinds, force_law_kind_index
+  use kinetostatics_point_mass, only: point_mass_description_t
   use io_input, only: input_text_t, group_reader_t, open_group, format_real
   use io_friction_config, only: friction_law_variables, friction_law_names, read_friction_law
   implicit none (type, external)
   private
-  public :: point_mass_config_t, read_point_mass_config
-
-  type :: point_mass_config_t
-    real(wp) :: mass = 1                           ! kg
-    real(wp) :: u0 = 0, v0 = 0                     ! surface coordinates at t = 0
-    real(wp) :: du0 = 0, dv0 = 0                   ! their rates at t = 0 (1/s)
-    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]   ! m/s^2
-    type(spec_t) :: friction                       ! a force law kind and its parameters (no kind: none)
-    real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0
-  end type point_mass_config_t
+  public :: read_point_mass_config
 
   !> The law's parameters under this group's names.
   character(len=*), parameter :: renamed(1) = [character(len=23) :: 'mu=friction_coefficient']
@@ -34,7 +26,7 @@ contains
 
   subroutine read_point_mass_config(input, config, status)
     type(input_text_t), intent(in) :: input
-    type(point_mass_config_t), intent(out) :: config
+    type(point_mass_description_t), intent(out) :: config
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
     type(force_law_kind_t), allocatable :: laws(:)

@@ -6,6 +6,7 @@ module kinetostatics_models
   use base_kinds, only: wp
   use base_constants, only: standard_gravity
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_text, only: format_short
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use kinetostatics_joints, only: new_rigid_offset, new_revolute
@@ -20,6 +21,8 @@ module kinetostatics_models
   private
   public :: pendulum_params_t, build_pendulum, fourbar_params_t, build_fourbar, fourbar_assembly
   public :: sled_params_t, build_sled
+  public :: pendulum_description_t, fourbar_description_t, sled_description_t
+  public :: build_pendulum_model, build_fourbar_model, build_sled_model
 
   !> One or two links hanging from the ground, turning about the ground's y axis;
   !> link k carries a mass at distance length(k) along its -z axis.
@@ -63,7 +66,81 @@ module kinetostatics_models
     logical :: front_normal_from_cut_force = .false.
   end type sled_params_t
 
+  !> A pendulum run as inputs say it (&pendulum): the model and its start.
+  type :: pendulum_description_t
+    type(pendulum_params_t) :: params
+    real(wp) :: theta0(2) = [0.5_wp, 0.0_wp]    ! rad
+    real(wp) :: dtheta0(2) = 0                  ! rad/s
+  end type pendulum_description_t
+
+  !> A four-bar run (&fourbar): the linkage, the crank's start and the branch.
+  type :: fourbar_description_t
+    type(fourbar_params_t) :: params
+    real(wp) :: crank0 = 0                      ! rad
+    real(wp) :: dcrank0 = 10                    ! rad/s
+    integer :: branch = 1                       ! +1: C to the left of B->D, -1: right
+  end type fourbar_description_t
+
+  !> A sled run (&sled): the bar, its friction laws and its start; the
+  !> surface is given beside it.
+  type :: sled_description_t
+    type(sled_params_t) :: params
+    real(wp) :: q0(3) = 0                       ! u0, v0 (surface parameters), phi0 (rad)
+    real(wp) :: qd0(3) = 0                      ! their rates
+  end type sled_description_t
+
 contains
+
+  !> The pendulum of `d` and its start: q0, qd0 the links' angles and rates.
+  subroutine build_pendulum_model(d, m, q0, qd0, status)
+    type(pendulum_description_t), intent(in) :: d
+    type(mechanism_t), intent(out) :: m
+    real(wp), allocatable, intent(out) :: q0(:), qd0(:)
+    type(status_t), intent(inout) :: status
+    call build_pendulum(d%params, m, status)
+    if (.not. status%ok()) return
+    q0 = d%theta0(:d%params%links)
+    qd0 = d%dtheta0(:d%params%links)
+  end subroutine build_pendulum_model
+
+  !> The four-bar of `d`, assembled on its branch at crank0 (the start of the
+  !> closure; the closure itself decides), and its start: the crank's angle
+  !> and rate.
+  subroutine build_fourbar_model(d, m, q0, qd0, status)
+    type(fourbar_description_t), intent(in) :: d
+    type(mechanism_t), intent(out) :: m
+    real(wp), allocatable, intent(out) :: q0(:), qd0(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: beta0(2)
+    if (.not. status%ok()) return
+    call fourbar_assembly(d%params, d%crank0, d%branch, beta0, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'loop ''coupler-rocker''')
+      status%message = status%message//'; change a, b, c, d or crank0'
+      return
+    end if
+    call build_fourbar(d%params, beta0, m, status)
+    q0 = [d%crank0]
+    qd0 = [d%dcrank0]
+  end subroutine build_fourbar_model
+
+  !> The sled of `d` on `surface` and its start: (u, v, phi) and their rates.
+  subroutine build_sled_model(d, surface, m, q0, qd0, status)
+    type(sled_description_t), intent(in) :: d
+    class(surface_t), intent(in) :: surface
+    type(mechanism_t), intent(out) :: m
+    real(wp), allocatable, intent(out) :: q0(:), qd0(:)
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok()) return
+    if (.not. surface%in_domain(d%q0(1), d%q0(2))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'sled: the start (u0, v0) = ('//format_short(d%q0(1))//', '// &
+                      format_short(d%q0(2))//') must lie in the parameter domain of the '//surface%describe())
+      return
+    end if
+    call build_sled(d%params, surface, d%q0, m, status)
+    q0 = d%q0
+    qd0 = d%qd0
+  end subroutine build_sled_model
 
   !> q = [theta_1(, theta_2)] (rad): absolute angle of link 1, relative angle of link 2.
   subroutine build_pendulum(p, m, status)

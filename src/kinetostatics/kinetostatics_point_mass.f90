@@ -27,10 +27,12 @@ module kinetostatics_point_mass
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use kinetostatics_surface_joint, only: domain_edge_margin
-  use kinetostatics_force_law, only: friction_law_t
+  use base_spec, only: spec_t
+  use kinetostatics_force_law, only: force_law_t, friction_law_t, law_place_t
+  use kinetostatics_force_law_factory, only: force_law_from_spec
   implicit none (type, external)
   private
-  public :: point_mass_t, point_mass_state_t, point_mass_series_t
+  public :: point_mass_t, point_mass_state_t, point_mass_series_t, point_mass_description_t, build_point_mass_model
 
   !> Time series of a run: one entry per record (start, outputs, events).
   !> The records of a run; grown as it goes (base_series).
@@ -62,6 +64,18 @@ module kinetostatics_point_mass
     procedure :: handle_event => point_mass_handle_event
   end type point_mass_t
 
+  !> What a point-mass run is, as inputs say it (&point_mass): the mass,
+  !> gravity, the friction law's spec, the frame's parameters and the start;
+  !> the surface is given beside it. build_point_mass_model makes the model.
+  type :: point_mass_description_t
+    real(wp) :: mass = 1                           ! kg
+    real(wp) :: u0 = 0, v0 = 0                     ! surface coordinates at t = 0
+    real(wp) :: du0 = 0, dv0 = 0                   ! their rates at t = 0 (1/s)
+    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]   ! m/s^2
+    type(spec_t) :: friction                       ! a force law kind and its parameters (no kind: none)
+    real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0
+  end type point_mass_description_t
+
   !> Everything a user wants to see at one instant.
   type :: point_mass_state_t
     real(wp) :: position(3), velocity(3), acceleration(3)   ! m, m/s, m/s^2
@@ -73,6 +87,43 @@ module kinetostatics_point_mass
   end type point_mass_state_t
 
 contains
+
+  !> The model of `d` on `surface` (copied into it) and its start y0. The
+  !> friction is built from its spec (kinetostatics_force_law_factory) and
+  !> must be a friction law (of the slip and the normal force); the start
+  !> must lie in the surface's domain.
+  subroutine build_point_mass_model(d, surface, model, y0, status)
+    type(point_mass_description_t), intent(in) :: d
+    class(surface_t), intent(in) :: surface
+    type(point_mass_t), intent(out) :: model
+    real(wp), intent(out) :: y0(5)
+    type(status_t), intent(inout) :: status
+    class(force_law_t), allocatable :: law
+    y0 = [d%u0, d%v0, d%du0, d%dv0, 0.0_wp]
+    if (.not. status%ok()) return
+    allocate (model%surface, source=surface)
+    model%mass = d%mass
+    model%gravity = d%gravity
+    model%sigma = d%sigma
+    model%alpha_u = d%alpha_u
+    model%alpha_v = d%alpha_v
+    if (.not. surface%in_domain(d%u0, d%v0)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'point mass: the start (u0, v0) = ('//format_short(d%u0)// &
+                      ', '//format_short(d%v0)//') must lie in the parameter domain of the '//surface%describe())
+      return
+    end if
+    if (.not. allocated(d%friction%kind)) return
+    call force_law_from_spec(d%friction, law_place_t('friction', 0, d%mass*norm2(d%gravity)), law, status)
+    if (.not. status%ok()) return
+    select type (law)
+    class is (friction_law_t)
+      allocate (model%friction, source=law)
+    class default
+      call set_status(status, STATUS_INVALID_INPUT, 'point mass: friction '''//d%friction%kind//''' is not a '// &
+                      'friction law: the point mass takes a friction law of the slip and the normal force (a '// &
+                      'friction_law_t)')
+    end select
+  end subroutine build_point_mass_model
 
   !> The accelerations and forces at one state; the one place the dynamics live.
   pure subroutine dynamics(self, y, p, normal, udd, vdd, normal_force, friction, status)

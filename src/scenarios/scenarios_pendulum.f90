@@ -3,11 +3,12 @@
 module scenarios_pendulum
   use base_status, only: status_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
-  use kinetostatics_models, only: build_pendulum
+  use base_kinds, only: wp
+  use kinetostatics_models, only: pendulum_description_t, build_pendulum_model
   use io_input, only: input_text_t, check_known_groups, mark_input_failure
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
-  use io_mechanism_config, only: pendulum_config_t, read_pendulum_config
+  use io_mechanism_config, only: read_pendulum_config
   use scenarios_mechanism, only: run_mechanism
   implicit none (type, external)
   private
@@ -22,18 +23,17 @@ contains
     type(run_config_t), intent(in) :: run
     type(status_t), intent(inout) :: status
     type(solver_config_t) :: solver
-    type(pendulum_config_t) :: config
+    type(pendulum_description_t) :: description
     type(mechanism_ode_t), target :: sys
-    integer :: n
+    real(wp), allocatable :: q0(:), qd0(:)
 
     call check_known_groups(input, pendulum_groups, status)
     if (status%ok()) call read_solver_config(input, solver, status)
-    if (status%ok()) call read_pendulum_config(input, config, status)
-    if (status%ok()) call build_pendulum(config%params, sys%mechanism, status)
+    if (status%ok()) call read_pendulum_config(input, description, status)
+    if (status%ok()) call build_pendulum_model(description, sys%mechanism, q0, qd0, status)
     call mark_input_failure(status)
     if (.not. status%ok()) return
-    n = config%params%links
-    call run_mechanism('pendulum', input, run, solver, sys, config%theta0(1:n), config%dtheta0(1:n), &
+    call run_mechanism('pendulum', input, run, solver, sys, q0, qd0, &
                        [character(len=4) :: 'rad', 'rad'], [character(len=4) ::], status, &
                        start_variables='theta0, dtheta0')
   end subroutine run_pendulum

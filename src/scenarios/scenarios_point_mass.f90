@@ -3,19 +3,19 @@
 !> of the core's registry: viscous, Coulomb, ...).
 module scenarios_point_mass
   use base_kinds, only: wp
-  use base_status, only: status_t
+  use base_status, only: status_t, prefix_status
   use base_log, only: log_info
   use numerics_ode, only: ode_stats_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP
-  use kinetostatics_point_mass, only: point_mass_t, point_mass_series_t
-  use kinetostatics_force_law, only: force_law_t, friction_law_t, law_place_t
-  use kinetostatics_force_law_factory, only: force_law_from_spec
-  use io_input, only: input_text_t, check_known_groups, invalid, format_real, mark_input_failure
+  use geometry_surface, only: surface_t
+  use kinetostatics_point_mass, only: point_mass_t, point_mass_series_t, point_mass_description_t, &
+    build_point_mass_model
+  use io_input, only: input_text_t, check_known_groups, invalid, format_real, mark_input_failure, where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
   use io_surface_config, only: read_surface_config
   use io_geometry_config, only: geometry_groups
-  use io_point_mass_config, only: point_mass_config_t, read_point_mass_config
+  use io_point_mass_config, only: read_point_mass_config
   use io_hdf5, only: result_file_t, run_outcome, units_per_second
   use io_system, only: write_standard_output
   use io_summary, only: summary_t, standard_g, engineering
@@ -36,46 +36,34 @@ module scenarios_point_mass
 
 contains
 
-  !> Reads and checks every input group and builds the model; nothing is written.
+  !> Reads and checks every input group into the description, which the
+  !> kinetostatics layer builds (build_point_mass_model); nothing is written.
   subroutine build_point_mass(input, solver, model, y0, status)
     type(input_text_t), intent(in) :: input
     type(solver_config_t), intent(out) :: solver
     type(point_mass_t), intent(out) :: model
     real(wp), intent(out) :: y0(5)
     type(status_t), intent(inout) :: status
-    type(point_mass_config_t) :: config
-    class(force_law_t), allocatable :: law
+    type(point_mass_description_t) :: description
+    class(surface_t), allocatable :: surface
 
     call check_known_groups(input, point_mass_groups, status)
     if (status%ok()) call read_solver_config(input, solver, status)
-    if (status%ok()) call read_surface_config(input, model%surface, status)
-    if (status%ok()) call read_point_mass_config(input, config, status)
+    if (status%ok()) call read_surface_config(input, surface, status)
+    if (status%ok()) call read_point_mass_config(input, description, status)
     call mark_input_failure(status)
     if (.not. status%ok()) return
-    if (.not. model%surface%in_domain(config%u0, config%v0)) then
-      call invalid(input, 'point_mass', 'u0, v0', format_real(config%u0)//', '//format_real(config%v0), &
-                   'the start must lie in the parameter domain of the '//model%surface%describe(), status)
+    ! said here too, with the line of the start
+    if (.not. surface%in_domain(description%u0, description%v0)) then
+      call invalid(input, 'point_mass', 'u0, v0', format_real(description%u0)//', '//format_real(description%v0), &
+                   'the start must lie in the parameter domain of the '//surface%describe(), status)
       return
     end if
-    model%mass = config%mass
-    model%gravity = config%gravity
-    if (allocated(config%friction%kind)) then
-      call force_law_from_spec(config%friction, law_place_t('friction', 0, config%mass*norm2(config%gravity)), law, &
-                               status)
-      if (.not. status%ok()) return
-      select type (law)
-      class is (friction_law_t)
-        allocate (model%friction, source=law)
-      class default
-        call invalid(input, 'point_mass', 'friction', ''''//config%friction%kind//'''', 'the point mass takes a '// &
-                     'friction law of the slip and the normal force (a friction_law_t)', status)
-        return
-      end select
+    call build_point_mass_model(description, surface, model, y0, status)
+    if (.not. status%ok()) then
+      call prefix_status(status, where_given(input, 'point_mass', 'friction')//': &point_mass')
+      call mark_input_failure(status)
     end if
-    model%sigma = config%sigma
-    model%alpha_u = config%alpha_u
-    model%alpha_v = config%alpha_v
-    y0 = [config%u0, config%v0, config%du0, config%dv0, 0.0_wp]
   end subroutine build_point_mass
 
   subroutine run_point_mass(input, run, status)

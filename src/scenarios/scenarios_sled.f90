@@ -8,12 +8,12 @@ module scenarios_sled
   use base_status, only: status_t
   use geometry_surface, only: surface_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
-  use kinetostatics_models, only: build_sled
+  use kinetostatics_models, only: sled_description_t, build_sled_model
   use io_input, only: input_text_t, check_known_groups, invalid, format_real, mark_input_failure
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_config, only: read_surface_config
-  use io_mechanism_config, only: sled_config_t, read_sled_config
+  use io_mechanism_config, only: read_sled_config
   use io_geometry_config, only: geometry_groups
   use scenarios_mechanism, only: run_mechanism
   implicit none (type, external)
@@ -30,11 +30,12 @@ contains
     type(run_config_t), intent(in) :: run
     type(status_t), intent(inout) :: status
     type(solver_config_t) :: solver
-    type(sled_config_t) :: config
+    type(sled_description_t) :: config
     class(surface_t), allocatable :: surface
     type(mechanism_ode_t), target :: sys
     character(len=:), allocatable :: u_units, v_units
     character(len=8) :: q_units(3), beta_units(3)
+    real(wp), allocatable :: q0(:), qd0(:)
 
     call check_known_groups(input, sled_groups, status)
     if (status%ok()) call read_solver_config(input, solver, status)
@@ -46,13 +47,13 @@ contains
                    'the start must lie in the parameter domain of the '//surface%describe(), status)
       return
     end if
-    call build_sled(config%params, surface, config%q0, sys%mechanism, status)
+    call build_sled_model(config, surface, sys%mechanism, q0, qd0, status)
     call mark_input_failure(status)
     if (.not. status%ok()) return
     call surface%parameter_units(u_units, v_units)
     q_units(1) = u_units; q_units(2) = v_units; q_units(3) = 'rad'   ! u, v, phi
     beta_units(1) = 'rad'; beta_units(2) = u_units; beta_units(3) = v_units   ! pitch, u2, v2
-    call run_mechanism('sled', input, run, solver, sys, config%q0, config%qd0, q_units, beta_units, status, &
+    call run_mechanism('sled', input, run, solver, sys, q0, qd0, q_units, beta_units, status, &
                        surface=surface, start_variables='u0, v0, phi0, du0, dv0, dphi0')
   end subroutine run_sled
 end module scenarios_sled

@@ -122,9 +122,9 @@ program test_kind_registration
   use scenarios_point_mass, only: build_point_mass
   use geometry_surface, only: surface_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
-  use kinetostatics_models, only: build_sled
+  use kinetostatics_models, only: build_sled, sled_description_t
   use io_surface_config, only: read_surface_config
-  use io_mechanism_config, only: sled_config_t, read_sled_config
+  use io_mechanism_config, only: read_sled_config
   use throwaway_kinds, only: test_slope_t, test_drag_t, slope_kind, drag_kind
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
@@ -270,7 +270,7 @@ contains
       '&sled mass = 10, friction = ''test_linear_drag'', drag_k = 0.7, u0 = 0.5, du0 = 0.2 /'//nl
     type(input_text_t) :: input
     type(solver_config_t) :: solver
-    type(sled_config_t) :: config
+    type(sled_description_t) :: config
     class(surface_t), allocatable :: surface
     type(mechanism_ode_t), target :: model
     type(driver_options_t) :: options

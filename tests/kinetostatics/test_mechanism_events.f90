@@ -106,11 +106,11 @@ program test_mechanism_events
     DRIVE_END_TIME, DRIVE_FAILED, RECORD_EVENT
   use numerics_ode, only: ODE_ADAMS
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
-  use kinetostatics_models, only: sled_params_t, build_sled
+  use kinetostatics_models, only: sled_params_t, build_sled, sled_description_t
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_config, only: read_surface_config
-  use io_mechanism_config, only: sled_config_t, read_sled_config
+  use io_mechanism_config, only: read_sled_config
   use scenarios_mechanism, only: mechanism_driver_options
   use test_mechanism_events_laws, only: switched_viscous_t, new_switched_viscous
   implicit none (type, external)
@@ -141,7 +141,7 @@ contains
     real(wp), allocatable, intent(out) :: y0(:)
     type(status_t), intent(inout) :: status
     type(input_text_t) :: input
-    type(sled_config_t) :: sled
+    type(sled_description_t) :: sled
     call load_input_file(path, input, status)
     if (status%ok()) call read_solver_config(input, solver, status)
     if (status%ok()) call read_surface_config(input, surface, status)
