@@ -1,0 +1,602 @@
+!> Every shipped input of the contact, point-mass, pendulum, four-bar and sled
+!> scenarios, built through the library WITHOUT io (issue 24 point 2): the
+!> descriptions are filled here by hand from the shipped files (each case
+!> names its file; the values are copied from it, the defaults not given
+!> there are the types' own), built by their layers (build_contact_model,
+!> build_point_mass_model, build_pendulum_model, build_fourbar_model,
+!> build_sled_model) and run over `duration` s with the input's solver
+!> settings, as the command runs them (scenarios_mechanism, scenarios_point_mass:
+!> the same start checks, driver and options).
+!>
+!> This program links no io module (tests/CMakeLists.txt links it against
+!> the contact layer and the layers above it only: a `use io_...` here does
+!> not compile). It prints one line per number, `<input> <summary key>
+!> <value>`, under the keys the command's --summary-json uses; the wrapper
+!> tests/library/compare_shipped.py runs slidesim on each input with
+!> `--set solver%duration=<duration>` and compares.
+!>
+!> Usage: shipped_descriptions DURATION
+program shipped_descriptions
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_status, only: status_t
+  use base_spec, only: spec_t
+  use base_vector, only: rotation_xyz
+  use numerics_ode, only: ODE_ADAMS, ODE_BDF
+  use numerics_event_driver, only: driver_options_t, driver_result_t, drive
+  use geometry_surface, only: surface_t
+  use geometry_surface_factory, only: surface_from_spec
+  use geometry_bspline_surface, only: bspline_surface_t, bspline_from_table
+  use geometry_slide_builder, only: slide_description_t, section_part_description_t
+  use geometry_slide_elements, only: slide_element_t
+  use geometry_tube, only: tube_surface_t
+  use geometry_slide_builder, only: build_slide
+  use kinetostatics_force_law_factory, only: law_spec
+  use kinetostatics_point_mass, only: point_mass_t, point_mass_description_t, build_point_mass_model
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_models, only: pendulum_description_t, fourbar_description_t, sled_description_t, &
+    build_pendulum_model, build_fourbar_model, build_sled_model
+  use contact_model, only: contact_system_t, contact_model_t, contact_spec_t, body_spec_t, shape_t, &
+    build_contact_model, contact_convergence_coefficient
+  implicit none (type, external)
+
+  !> Runaway guard of the command's multibody and point-mass runs
+  !> (scenarios_mechanism, scenarios_point_mass min_mean_step).
+  real(wp), parameter :: min_mean_step = 1e-4_wp
+  real(wp) :: duration
+  character(len=64) :: argument
+  integer :: failures
+
+  call get_command_argument(1, argument)
+  read (argument, *) duration
+  failures = 0
+  call pendulum_simple()
+  call pendulum_double()
+  call fourbar_crank_rocker()
+  call sled_bowl()
+  call sled_bowl_friction()
+  call sled_demo_slide()
+  call sled_incline_coulomb()
+  call point_mass_apex_paraboloid()
+  call point_mass_ellipsoid()
+  call point_mass_elliptic_cylinder()
+  call point_mass_elliptic_paraboloid()
+  call point_mass_hyperbolic_paraboloid()
+  call point_mass_plane_coulomb()
+  call point_mass_demo_slide()
+  call contact_egg('inputs/contact/egg.nml', [0.025_wp, 0.033_wp, 0.025_wp], [-90.0_wp, 0.0_wp, -103.0_wp])
+  call contact_egg('inputs/contact/egg_long_axis_z.nml', [0.025_wp, 0.025_wp, 0.033_wp], [77.0_wp, 0.0_wp, 0.0_wp])
+  call contact_ball_in_cone()
+  call contact_paraboloids()
+  call contact_tower5()
+  if (failures > 0) error stop 1
+
+contains
+
+  ! ---------------------------------------------------------------- pendulum, four-bar
+
+  subroutine pendulum_simple()
+    type(pendulum_description_t) :: d
+    d%params%links = 1
+    d%params%length(1) = 1.0_wp
+    d%params%mass(1) = 1.0_wp
+    d%theta0(1) = 0.5_wp
+    call run_pendulum('inputs/pendulum/simple.nml', d)
+  end subroutine pendulum_simple
+
+  subroutine pendulum_double()
+    type(pendulum_description_t) :: d
+    d%params%links = 2
+    d%params%length = [1.0_wp, 0.7_wp]
+    d%params%mass = [1.0_wp, 0.6_wp]
+    d%params%inertia = [0.01_wp, 0.02_wp]
+    d%theta0 = [1.2_wp, -0.5_wp]
+    d%dtheta0 = [0.0_wp, 1.0_wp]
+    call run_pendulum('inputs/pendulum/double.nml', d)
+  end subroutine pendulum_double
+
+  subroutine run_pendulum(name, d)
+    character(len=*), intent(in) :: name
+    type(pendulum_description_t), intent(in) :: d
+    type(mechanism_ode_t), target :: sys
+    real(wp), allocatable :: q0(:), qd0(:)
+    type(status_t) :: st
+    call build_pendulum_model(d, sys%mechanism, q0, qd0, st)
+    call run_multibody(name, sys, q0, qd0, ODE_ADAMS, 1e-12_wp, 1e-12_wp, 0.01_wp, .false., st)
+  end subroutine run_pendulum
+
+  subroutine fourbar_crank_rocker()
+    type(fourbar_description_t) :: d
+    type(mechanism_ode_t), target :: sys
+    real(wp), allocatable :: q0(:), qd0(:)
+    type(status_t) :: st
+    d%params%a = 0.2_wp; d%params%b = 0.6_wp; d%params%c = 0.5_wp; d%params%d = 0.7_wp
+    d%params%mass = [0.5_wp, 1.0_wp, 0.8_wp]
+    d%crank0 = 0.3_wp
+    d%dcrank0 = 12.0_wp
+    d%branch = 1
+    call build_fourbar_model(d, sys%mechanism, q0, qd0, st)
+    call run_multibody('inputs/fourbar/crank_rocker.nml', sys, q0, qd0, ODE_ADAMS, 1e-12_wp, 1e-12_wp, 0.01_wp, &
+                       .false., st)
+  end subroutine fourbar_crank_rocker
+
+  ! ---------------------------------------------------------------- sled
+
+  !> The bar of every shipped sled input: 0.5 m, 10 kg, inertia 0.02, 0.25, 0.25.
+  function sled(q0, qd0) result(d)
+    real(wp), intent(in) :: q0(3), qd0(3)
+    type(sled_description_t) :: d
+    real(wp), parameter :: moments(3) = [0.02_wp, 0.25_wp, 0.25_wp]   ! kg m^2
+    integer :: k
+    d%params%length = 0.5_wp
+    d%params%mass = 10.0_wp
+    d%params%inertia = 0
+    do k = 1, 3
+      d%params%inertia(k, k) = moments(k)
+    end do
+    d%q0 = q0
+    d%qd0 = qd0
+  end function sled
+
+  function bowl_surface() result(surface)
+    class(surface_t), allocatable :: surface
+    type(spec_t) :: spec
+    type(status_t) :: st
+    spec%kind = 'elliptic_paraboloid'
+    call spec%set('a', [2.0_wp])
+    call spec%set('b', [2.5_wp])
+    call surface_from_spec(spec, surface, st)
+    call expect_ok(st, 'the bowl')
+  end function bowl_surface
+
+  subroutine sled_bowl()
+    call run_sled('inputs/sled/bowl.nml', sled([1.0_wp, 0.0_wp, 0.3_wp], [0.0_wp, 1.2_wp, 0.5_wp]), bowl_surface(), &
+                  ODE_ADAMS, 1e-10_wp, 1e-10_wp)
+  end subroutine sled_bowl
+
+  subroutine sled_bowl_friction()
+    type(sled_description_t) :: d
+    d = sled([1.0_wp, 0.0_wp, 0.3_wp], [0.0_wp, 1.2_wp, 0.5_wp])
+    d%params%friction = [law_spec('coulomb', 'mu', 0.15_wp)]
+    call run_sled('inputs/sled/bowl_friction.nml', d, bowl_surface(), ODE_BDF, 1e-8_wp, 1e-10_wp)
+  end subroutine sled_bowl_friction
+
+  subroutine sled_demo_slide()
+    type(sled_description_t) :: d
+    d = sled([0.5_wp, 1.5707963267948966_wp, 0.0_wp], [2.0_wp, 0.0_wp, 0.0_wp])
+    d%params%friction = [law_spec('coulomb', 'mu', 0.05_wp)]
+    call run_sled('inputs/sled/demo_slide.nml', d, demo_slide(), ODE_ADAMS, 1e-10_wp, 1e-10_wp)
+  end subroutine sled_demo_slide
+
+  subroutine sled_incline_coulomb()
+    type(sled_description_t) :: d
+    d = sled([0.5_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp])
+    d%params%friction = [law_spec('coulomb', 'mu', 0.2_wp)]
+    call run_sled('inputs/sled/incline_coulomb.nml', d, incline(0.9396926207859084_wp, -0.3420201433256687_wp), &
+                  ODE_ADAMS, 1e-10_wp, 1e-12_wp)
+  end subroutine sled_incline_coulomb
+
+  subroutine run_sled(name, d, surface, method, rtol, atol)
+    character(len=*), intent(in) :: name
+    type(sled_description_t), intent(in) :: d
+    class(surface_t), intent(in) :: surface
+    integer, intent(in) :: method
+    real(wp), intent(in) :: rtol, atol
+    type(mechanism_ode_t), target :: sys
+    real(wp), allocatable :: q0(:), qd0(:)
+    type(status_t) :: st
+    call build_sled_model(d, surface, sys%mechanism, q0, qd0, st)
+    call run_multibody(name, sys, q0, qd0, method, rtol, atol, 0.01_wp, .false., st)
+  end subroutine run_sled
+
+  !> &surface kind = 'plane' through the origin, point_b, point_c = (0, 1, 0).
+  function incline(bx, bz) result(surface)
+    real(wp), intent(in) :: bx, bz
+    class(surface_t), allocatable :: surface
+    type(spec_t) :: spec
+    type(status_t) :: st
+    spec%kind = 'plane'
+    call spec%set('point_a', [0.0_wp, 0.0_wp, 0.0_wp])
+    call spec%set('point_b', [bx, 0.0_wp, bz])
+    call spec%set('point_c', [0.0_wp, 1.0_wp, 0.0_wp])
+    call surface_from_spec(spec, surface, st)
+    call expect_ok(st, 'the incline')
+  end function incline
+
+  !> inputs/demo_slide/slide.nml: eight standard elements, a circular tube of radius 0.5 m.
+  function demo_slide() result(surface)
+    class(surface_t), allocatable :: surface
+    type(slide_description_t) :: d
+    type(tube_surface_t) :: tube
+    type(status_t) :: st
+    d%kind = 'slide'
+    d%elements%elements = [ &
+      slide_element_t(kind='straight', length=6.0_wp, slope_deg=12.0_wp), &
+      slide_element_t(kind='curve', slope_deg=6.0_wp, radius=5.0_wp, angle_deg=90.0_wp, direction='left'), &
+      slide_element_t(kind='straight', length=4.0_wp, slope_deg=8.0_wp), &
+      slide_element_t(kind='helix', radius=4.0_wp, direction='right', turns=1.0_wp, drop=2.5_wp), &
+      slide_element_t(kind='straight', length=3.0_wp, slope_deg=7.0_wp), &
+      slide_element_t(kind='curve', slope_deg=6.0_wp, radius=6.0_wp, angle_deg=60.0_wp, direction='left'), &
+      slide_element_t(kind='curve', slope_deg=6.0_wp, radius=6.0_wp, angle_deg=60.0_wp, direction='right'), &
+      slide_element_t(kind='runout', length=8.0_wp, slope_deg=1.0_wp)]
+    d%elements%start = [0.0_wp, 0.0_wp, 10.0_wp]
+    d%elements%heading_deg = 0
+    d%elements%transition_length = 2.0_wp
+    d%section%parts = [section_part_description_t(kind='circle', radius=0.5_wp)]
+    call build_slide(d, tube, st)
+    call expect_ok(st, 'the demo slide')
+    allocate (surface, source=tube)
+  end function demo_slide
+
+  ! ---------------------------------------------------------------- point mass
+
+  subroutine point_mass_apex_paraboloid()
+    type(point_mass_description_t) :: d
+    d%u0 = 0.0_wp; d%v0 = 0.6_wp; d%du0 = 0.0_wp; d%dv0 = -0.5_wp
+    d%alpha_u = 1.0_wp; d%alpha_v = 1.0_wp
+    call run_point_mass('inputs/point_mass/apex_paraboloid.nml', d, surface_ab('apex_paraboloid', 1.0_wp, 1.5_wp), &
+                        1e-10_wp, 1e-10_wp, 0.005_wp)
+  end subroutine point_mass_apex_paraboloid
+
+  subroutine point_mass_ellipsoid()
+    type(point_mass_description_t) :: d
+    class(surface_t), allocatable :: surface
+    type(spec_t) :: spec
+    type(status_t) :: st
+    spec%kind = 'ellipsoid'
+    call spec%set('a', [2.0_wp])
+    call spec%set('b', [1.5_wp])
+    call spec%set('c', [1.0_wp])
+    call surface_from_spec(spec, surface, st)
+    call expect_ok(st, 'the ellipsoid')
+    d%u0 = 0.0_wp; d%v0 = -0.8_wp; d%du0 = 1.2_wp; d%dv0 = 0.0_wp
+    d%sigma = -1
+    call run_point_mass('inputs/point_mass/ellipsoid.nml', d, surface, 1e-10_wp, 1e-10_wp, 0.01_wp)
+  end subroutine point_mass_ellipsoid
+
+  subroutine point_mass_elliptic_cylinder()
+    type(point_mass_description_t) :: d
+    d%gravity = 0
+    d%u0 = 0.0_wp; d%v0 = 0.0_wp; d%du0 = 0.3_wp; d%dv0 = 2.0_wp
+    call run_point_mass('inputs/point_mass/elliptic_cylinder.nml', d, &
+                        surface_ab('elliptic_cylinder', 0.5_wp, 0.5_wp), 1e-10_wp, 1e-10_wp, 0.01_wp)
+  end subroutine point_mass_elliptic_cylinder
+
+  subroutine point_mass_elliptic_paraboloid()
+    type(point_mass_description_t) :: d
+    d%u0 = 0.8_wp; d%v0 = 0.0_wp; d%du0 = 0.0_wp; d%dv0 = 2.0_wp
+    d%friction = law_spec('viscous', 'viscous_coefficient', 0.05_wp)
+    call run_point_mass('inputs/point_mass/elliptic_paraboloid.nml', d, &
+                        surface_ab('elliptic_paraboloid', 1.0_wp, 1.4_wp), 1e-10_wp, 1e-10_wp, 0.01_wp)
+  end subroutine point_mass_elliptic_paraboloid
+
+  subroutine point_mass_hyperbolic_paraboloid()
+    type(point_mass_description_t) :: d
+    class(surface_t), allocatable :: surface
+    type(spec_t) :: spec
+    type(status_t) :: st
+    spec%kind = 'hyperbolic_paraboloid'
+    call spec%set('a', [1.0_wp])
+    call spec%set('b', [1.0_wp])
+    call surface_from_spec(spec, surface, st, origin=[0.0_wp, 0.0_wp, 1.0_wp], angles_deg=[0.0_wp, 0.0_wp, 20.0_wp])
+    call expect_ok(st, 'the hyperbolic paraboloid')
+    d%u0 = 0.2_wp; d%v0 = 0.05_wp; d%du0 = -1.0_wp; d%dv0 = 0.0_wp
+    call run_point_mass('inputs/point_mass/hyperbolic_paraboloid.nml', d, surface, 1e-10_wp, 1e-10_wp, 0.005_wp)
+  end subroutine point_mass_hyperbolic_paraboloid
+
+  subroutine point_mass_plane_coulomb()
+    type(point_mass_description_t) :: d
+    d%mass = 2.0_wp
+    d%u0 = 0.0_wp; d%v0 = 0.0_wp; d%du0 = 0.5_wp; d%dv0 = 0.0_wp
+    ! friction_coefficient is the law's mu; &point_mass's regularization default 1e-9 m/s (io_point_mass_config)
+    d%friction = law_spec('coulomb', 'mu', 0.2_wp)
+    call d%friction%set('regularization_speed', [1e-9_wp])
+    call run_point_mass('inputs/point_mass/plane_coulomb.nml', d, incline(0.8660254037844386_wp, -0.5_wp), &
+                        1e-10_wp, 1e-10_wp, 0.01_wp)
+  end subroutine point_mass_plane_coulomb
+
+  subroutine point_mass_demo_slide()
+    type(point_mass_description_t) :: d
+    d%u0 = 0.5_wp; d%v0 = 1.5707963267948966_wp; d%du0 = 2.0_wp; d%dv0 = 0.0_wp
+    call run_point_mass('inputs/demo_slide/point_mass.nml', d, demo_slide(), 1e-12_wp, 1e-12_wp, 0.01_wp)
+  end subroutine point_mass_demo_slide
+
+  function surface_ab(kind, a, b) result(surface)
+    character(len=*), intent(in) :: kind
+    real(wp), intent(in) :: a, b
+    class(surface_t), allocatable :: surface
+    type(spec_t) :: spec
+    type(status_t) :: st
+    spec%kind = kind
+    call spec%set('a', [a])
+    call spec%set('b', [b])
+    call surface_from_spec(spec, surface, st)
+    call expect_ok(st, kind)
+  end function surface_ab
+
+  !> As scenarios_point_mass runs it (Adams, the input's tolerances).
+  subroutine run_point_mass(name, d, surface, rtol, atol, output_step)
+    character(len=*), intent(in) :: name
+    type(point_mass_description_t), intent(in) :: d
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: rtol, atol, output_step
+    type(point_mass_t), target :: model
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp) :: y0(5)
+    call build_point_mass_model(d, surface, model, y0, st)
+    call expect_ok(st, name//': built')
+    if (.not. st%ok()) return
+    call model%start_series(nint(duration/output_step) + 2)
+    options%ode%method = ODE_ADAMS
+    options%ode%rtol = rtol
+    options%ode%atol = atol
+    options%t_end = duration
+    options%output_step = output_step
+    options%min_mean_step = min_mean_step
+    options%progress_seconds = 0
+    call drive(model, y0, options, result, st)
+    call expect_ok(st, name//': ran')
+    associate (s => model%series, n => model%series%n)
+      call put(name, 'simulated_time', s%time(n))
+      call put(name, 'final_speed', s%speed(n))
+      call put(name, 'drop', s%position(3, 1) - s%position(3, n))
+      call put(name, 'friction_work', s%friction_work(n))
+    end associate
+    call put_count(name, 'steps', int(result%stats%steps))
+    call put_count(name, 'rhs_evaluations', int(result%stats%rhs_evaluations))
+  end subroutine run_point_mass
+
+  ! ---------------------------------------------------------------- contact
+
+  !> &shape of a kind of the registry (no placement in the shipped inputs).
+  function spec_shape(name, kind, parameters, values) result(shape)
+    character(len=*), intent(in) :: name, kind, parameters(:)
+    real(wp), intent(in) :: values(:)
+    type(shape_t) :: shape
+    integer :: k
+    shape%name = name
+    shape%spec%kind = kind
+    do k = 1, size(parameters)
+      call shape%spec%set(trim(parameters(k)), [values(k)])
+    end do
+  end function spec_shape
+
+  !> &shape kind = 'bspline' of paraboloids/<file>.geo: the 13 x 13 points
+  !> z = (x^2 + y^2)/a2 on [-w, w]^2 of its CSV (written by
+  !> scripts/make_contact_inputs.py with these a2 and w; the same arithmetic,
+  !> x = -w + 2 w i/12, so the same numbers), layout 'scattered', degree 5,
+  !> smoothing 0.05.
+  function bspline_shape(name, a2, w) result(shape)
+    character(len=*), intent(in) :: name
+    real(wp), intent(in) :: a2, w
+    type(shape_t) :: shape
+    type(bspline_surface_t) :: b
+    type(status_t) :: st
+    real(wp) :: table(3, 169), x, y
+    integer :: i, j
+    do j = 0, 12
+      do i = 0, 12
+        x = -w + 2*w*i/12
+        y = -w + 2*w*j/12
+        table(:, 13*j + i + 1) = [x, y, (x*x + y*y)/a2]
+      end do
+    end do
+    call bspline_from_table('scattered', table, 0.05_wp, 5, [.false., .false.], b, st)
+    call expect_ok(st, 'B-spline '//name)
+    shape%name = name
+    allocate (shape%surface, source=b)
+  end function bspline_shape
+
+  function body(name, mass, position, angles_deg) result(b)
+    character(len=*), intent(in) :: name
+    real(wp), intent(in) :: mass, position(3), angles_deg(3)
+    type(body_spec_t) :: b
+    b%name = name
+    b%mass = mass
+    b%position = position
+    b%rotation = rotation_xyz(angles_deg*pi/180)
+  end function body
+
+  !> A body with its centre and principal moments given.
+  function given_body(name, mass, centre, moments, position, angles_deg) result(b)
+    character(len=*), intent(in) :: name
+    real(wp), intent(in) :: mass, centre(3), moments(3), position(3), angles_deg(3)
+    type(body_spec_t) :: b
+    integer :: k
+    b = body(name, mass, position, angles_deg)
+    b%centre = centre
+    b%inertia = 0
+    do k = 1, 3
+      b%inertia(k, k) = moments(k)
+    end do
+  end function given_body
+
+  function contact(name, body_1, shape_1, side_1, body_2, shape_2, side_2, rolling) result(c)
+    character(len=*), intent(in) :: name, body_1, shape_1, body_2, shape_2
+    real(wp), intent(in) :: side_1, side_2
+    logical, intent(in) :: rolling
+    type(contact_spec_t) :: c
+    c%name = name
+    c%body_1 = body_1
+    c%shape_1 = shape_1
+    c%side_1 = side_1
+    c%body_2 = body_2
+    c%shape_2 = shape_2
+    c%side_2 = side_2
+    c%rolling = rolling
+  end function contact
+
+  subroutine contact_egg(name, axes, angles_deg)
+    character(len=*), intent(in) :: name
+    real(wp), intent(in) :: axes(3), angles_deg(3)
+    type(contact_system_t) :: system
+    system%shapes = [spec_shape('table', 'plane', [character(len=1) ::], [real(wp) ::]), &
+                     spec_shape('egg', 'ellipsoid', [character(len=1) :: 'a', 'b', 'c'], axes)]
+    system%bodies = [body('egg', 0.08_wp, [0.0_wp, 0.0_wp, 0.05_wp], angles_deg)]
+    system%bodies(1)%solid_of = 'egg'
+    system%bodies(1)%angular_velocity = [0.0_wp, 0.0_wp, 150.0_wp]
+    system%contacts = [contact('egg_on_table', 'ground', 'table', 1.0_wp, 'egg', 'egg', 1.0_wp, .false.)]
+    system%contacts(1)%friction = law_spec('viscous_weight', 'mu', 0.3_wp)
+    call run_contact(name, system, 1e-11_wp, 1e-10_wp, 5e-3_wp)
+  end subroutine contact_egg
+
+  subroutine contact_ball_in_cone()
+    type(contact_system_t) :: system
+    system%shapes = [spec_shape('bowl', 'cone', [character(len=14) :: 'half_angle_deg', 'z_min', 'z_max'], &
+                                [30.0_wp, 0.1_wp, 1.0_wp]), &
+                     spec_shape('ball', 'sphere', [character(len=6) :: 'radius'], [0.05_wp])]
+    system%bodies = [body('ball', 0.2_wp, [0.24537386440559092_wp, 0.0_wp, 0.525_wp], [0.0_wp, 0.0_wp, 0.0_wp])]
+    system%bodies(1)%solid_of = 'ball'
+    system%bodies(1)%velocity = [0.0_wp, 1.633220377046527_wp, 0.0_wp]
+    system%bodies(1)%angular_velocity = [-16.332203770465267_wp, 0.0_wp, -28.288206730013837_wp]
+    system%contacts = [contact('in_bowl', 'ground', 'bowl', -1.0_wp, 'ball', 'ball', 1.0_wp, .true.)]
+    call run_contact('inputs/contact/ball_in_cone.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp)
+  end subroutine contact_ball_in_cone
+
+  subroutine contact_paraboloids()
+    type(contact_system_t) :: system
+    system%shapes = [spec_shape('table', 'plane', [character(len=1) ::], [real(wp) ::]), &
+                     bspline_shape('paraboloid_2', 3.0_wp, 2.0_wp), bspline_shape('paraboloid_3', 0.5_wp, 0.5_wp)]
+    system%bodies = [given_body('paraboloid_2', 2.0_wp, [0.0_wp, 0.0_wp, 0.6_wp], [0.72_wp, 0.72_wp, 1.08_wp], &
+                                [0.0_wp, 0.0_wp, 0.0_wp], [6.0_wp, 0.0_wp, 0.0_wp]), &
+                     given_body('paraboloid_3', 0.5_wp, [0.0_wp, 0.0_wp, 0.1_wp], &
+                                [0.01125_wp, 0.01125_wp, 0.016875_wp], [0.3_wp, 0.2_wp, 0.2_wp], &
+                                [0.0_wp, -8.0_wp, 0.0_wp])]
+    system%contacts = [contact('p2_on_table', 'ground', 'table', 1.0_wp, 'paraboloid_2', 'paraboloid_2', -1.0_wp, &
+                               .true.), &
+                       contact('p3_in_p2', 'paraboloid_2', 'paraboloid_2', 1.0_wp, 'paraboloid_3', 'paraboloid_3', &
+                               -1.0_wp, .true.)]
+    call run_contact('inputs/contact/paraboloids.nml', system, 1e-11_wp, 1e-10_wp, 5e-3_wp)
+  end subroutine contact_paraboloids
+
+  !> inputs/contact/tower5.nml: the bowls' a2 and w from the headers of
+  !> paraboloids/tower5_<k>.csv, the bodies as the input gives them.
+  subroutine contact_tower5()
+    type(contact_system_t) :: system
+    character(len=5) :: b(5)
+    integer :: k
+    b = ['bowl1', 'bowl2', 'bowl3', 'bowl4', 'bowl5']
+    system%shapes = [spec_shape('table', 'plane', [character(len=1) ::], [real(wp) ::]), &
+                     bspline_shape(b(1), 3.0_wp, 2.0_wp), &
+                     bspline_shape(b(2), 1.9168293127388174_wp, 1.4142135623730951_wp), &
+                     bspline_shape(b(3), 1.224744871391589_wp, 1.0_wp), &
+                     bspline_shape(b(4), 0.7825422900366437_wp, 0.7071067811865476_wp), &
+                     bspline_shape(b(5), 0.5_wp, 0.5_wp)]
+    system%bodies = [ &
+      given_body(b(1), 2.0_wp, [0.0_wp, 0.0_wp, 0.6_wp], [0.72_wp, 0.72_wp, 1.08_wp], [0.04_wp, 0.0_wp, 0.0_wp], tilt()), &
+      given_body(b(2), 1.41421_wp, [0.0_wp, 0.0_wp, 0.383366_wp], [0.254558_wp, 0.254558_wp, 0.381838_wp], &
+                 [0.08_wp, 0.0_wp, 0.1_wp], tilt()), &
+      given_body(b(3), 1.0_wp, [0.0_wp, 0.0_wp, 0.244949_wp], [0.09_wp, 0.09_wp, 0.135_wp], &
+                 [0.12_wp, 0.0_wp, 0.2_wp], tilt()), &
+      given_body(b(4), 0.707107_wp, [0.0_wp, 0.0_wp, 0.156508_wp], [0.0318198_wp, 0.0318198_wp, 0.0477297_wp], &
+                 [0.16_wp, 0.0_wp, 0.3_wp], tilt()), &
+      given_body(b(5), 0.5_wp, [0.0_wp, 0.0_wp, 0.1_wp], [0.01125_wp, 0.01125_wp, 0.016875_wp], &
+                 [0.2_wp, 0.0_wp, 0.4_wp], tilt())]
+    allocate (system%contacts(5))
+    system%contacts(1) = contact('bowl1_on_table', 'ground', 'table', 1.0_wp, b(1), b(1), -1.0_wp, .true.)
+    do k = 2, 5
+      system%contacts(k) = contact(b(k)//'_in_'//b(k - 1), b(k - 1), b(k - 1), 1.0_wp, b(k), b(k), -1.0_wp, .true.)
+    end do
+    call run_contact('inputs/contact/tower5.nml', system, 1e-11_wp, 1e-10_wp, 5e-3_wp)
+  end subroutine contact_tower5
+
+  pure function tilt() result(angles_deg)
+    real(wp) :: angles_deg(3)
+    angles_deg = [3.0_wp, 1.5_wp, 0.0_wp]
+  end function tilt
+
+  !> As scenarios_contact runs it: Adams with the contact's convergence coefficient.
+  subroutine run_contact(name, system, rtol, atol, output_step)
+    character(len=*), intent(in) :: name
+    type(contact_system_t), intent(in) :: system
+    real(wp), intent(in) :: rtol, atol, output_step
+    type(contact_model_t), target :: model
+    type(status_t) :: st
+    real(wp), allocatable :: y0(:)
+    integer :: f, ns
+    call build_contact_model(system, model, st)
+    call expect_ok(st, name//': built')
+    if (.not. st%ok()) return
+    f = model%ode%mechanism%f
+    ns = model%ode%mechanism%ns
+    ! the contact scenario judges the start once before the common run does
+    y0 = model%ode%initial_state(model%y0(1:f), model%y0(f + 1:f + ns))
+    call model%ode%check_start(y0, st)
+    call run_multibody(name, model%ode, model%y0(1:f), model%y0(f + 1:f + ns), ODE_ADAMS, rtol, atol, output_step, &
+                       .true., st)
+  end subroutine run_contact
+
+  ! ---------------------------------------------------------------- the common run
+
+  !> As scenarios_mechanism's run_mechanism: the start checked, the series
+  !> started, the driver run; then the summary's numbers.
+  subroutine run_multibody(name, sys, q0, qd0, method, rtol, atol, output_step, contact_scenario, status)
+    character(len=*), intent(in) :: name
+    type(mechanism_ode_t), intent(inout), target :: sys
+    real(wp), intent(in) :: q0(:), qd0(:)
+    integer, intent(in) :: method
+    real(wp), intent(in) :: rtol, atol, output_step
+    logical, intent(in) :: contact_scenario
+    type(status_t), intent(inout) :: status
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    real(wp), allocatable :: y0(:)
+    integer :: k
+    call expect_ok(status, name//': built')
+    if (.not. status%ok()) return
+    y0 = sys%initial_state(q0, qd0)
+    call sys%check_start(y0, status)
+    call expect_ok(status, name//': start')
+    if (.not. status%ok()) return
+    options%ode%method = method
+    options%ode%rtol = rtol
+    options%ode%atol = atol
+    if (contact_scenario .and. method == ODE_ADAMS) options%ode%convergence_coefficient = &
+      contact_convergence_coefficient
+    options%t_end = duration
+    options%output_step = output_step
+    options%min_mean_step = min_mean_step
+    options%progress_seconds = 0
+    call sys%start_series(nint(duration/output_step) + 2)
+    call drive(sys, y0, options, result, status)
+    call expect_ok(status, name//': ran')
+    associate (s => sys%series, n => sys%series%n)
+      call put(name, 'simulated_time', s%time(n))
+      if (contact_scenario) then
+        call put(name, 'energy_change_joules', s%kinetic(n) + s%potential(n) - (s%kinetic(1) + s%potential(1)))
+        do k = 1, s%nc
+          call put(name, trim(s%contact_names(k))//'_slip_speed_final', norm2(s%slip(:, k, n)))
+        end do
+      else
+        do k = 1, s%f
+          call put(name, trim(s%q_names(k))//'_final', s%q(k, n))
+          call put(name, trim(s%q_names(k))//'_rate_final', s%qd(k, n))
+        end do
+      end if
+    end associate
+    call put_count(name, 'steps', int(result%stats%steps))
+    call put_count(name, 'rhs_evaluations', int(result%stats%rhs_evaluations))
+  end subroutine run_multibody
+
+  subroutine put(name, key, value)
+    character(len=*), intent(in) :: name, key
+    real(wp), intent(in) :: value
+    print '(a, 1x, a, 1x, es25.17e3)', name, key, value
+  end subroutine put
+
+  subroutine put_count(name, key, value)
+    character(len=*), intent(in) :: name, key
+    integer, intent(in) :: value
+    print '(a, 1x, a, 1x, i0)', name, key, value
+  end subroutine put_count
+
+  subroutine expect_ok(status, what)
+    type(status_t), intent(in) :: status
+    character(len=*), intent(in) :: what
+    if (status%ok()) return
+    print '(a)', 'FAIL '//what//': '//status%text()
+    failures = failures + 1
+  end subroutine expect_ok
+end program shipped_descriptions
