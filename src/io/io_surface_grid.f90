@@ -7,24 +7,16 @@ module io_surface_grid
   use base_status, only: status_t
   use base_text, only: format_integer
   use base_log, only: log_info, progress_interval
+  use base_grid, only: evenly_spaced
   use geometry_surface, only: surface_t, surface_point_t
   use io_hdf5, only: result_file_t
   implicit none (type, external)
   private
-  public :: write_surface_grid, write_surface_grid_around, evenly_spaced, surface_grid_group
+  public :: write_surface_grid, write_surface_grid_around, surface_grid_group
 
   character(len=*), parameter :: surface_grid_group = '/geometry/surface'
 
 contains
-
-  !> n evenly spaced values from a to b.
-  pure function evenly_spaced(a, b, n) result(values)
-    real(wp), intent(in) :: a, b
-    integer, intent(in) :: n
-    real(wp) :: values(n)
-    integer :: i
-    values = [(a + (b - a)*i/real(max(n - 1, 1), wp), i=0, n - 1)]
-  end function evenly_spaced
 
   !> Evaluates `surface` on the grid u x v and writes it.
   subroutine write_surface_grid(file, surface, u, v, status)

@@ -16,7 +16,7 @@ module scenarios_contact
   use io_contact_config, only: read_contact_config, contact_groups, contact_repeatable_groups
   use scenarios_mechanism, only: run_mechanism
   use io_xdmf, only: body_shape_t
-  use io_surface_grid, only: evenly_spaced
+  use base_grid, only: evenly_spaced
   use numerics_ode, only: ODE_ADAMS
   implicit none (type, external)
   private

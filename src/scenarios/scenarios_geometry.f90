@@ -18,7 +18,8 @@ module scenarios_geometry
   use io_hdf5, only: result_file_t, run_outcome
   use io_system, only: write_standard_output
   use io_summary, only: summary_t, engineering
-  use io_surface_grid, only: write_surface_grid, evenly_spaced
+  use io_surface_grid, only: write_surface_grid
+  use base_grid, only: evenly_spaced
   use io_xdmf, only: xdmf_t
   implicit none (type, external)
   private

@@ -17,7 +17,8 @@ module scenarios_optimize
   use geometry_curve, only: curve_point_t
   use io_input, only: input_text_t, check_known_groups, group_present, where_given
   use io_solver_config, only: solver_config_t, read_solver_config
-  use io_surface_grid, only: write_surface_grid, evenly_spaced
+  use io_surface_grid, only: write_surface_grid
+  use base_grid, only: evenly_spaced
   use io_xdmf, only: xdmf_t
   use io_run_config, only: run_config_t
   use io_optimization_config, only: read_optimization_config

@@ -26,7 +26,8 @@ module scenarios_water
   use io_summary, only: summary_t, degrees
   use io_input_declarations, only: declared_unit
   use base_text, only: format_short, format_integer
-  use io_surface_grid, only: write_surface_grid, evenly_spaced
+  use io_surface_grid, only: write_surface_grid
+  use base_grid, only: evenly_spaced
   use io_xdmf, only: xdmf_t
   implicit none (type, external)
   private

@@ -12,13 +12,14 @@
 !>
 !> Builds every surface (exit status 1 if one fails). With FOLDER it writes
 !> FOLDER/NAME.txt per input: n_u and n_v of the input's &grid, the grid's u
-!> and v values (evenly spaced over the domain, as the geometry scenario
-!> spaces them) and x, y, z of every grid point. tests/geometry/
+!> and v values (evenly spaced over the domain by base_grid, as the geometry
+!> scenario spaces them) and x, y, z of every grid point. tests/geometry/
 !> shipped_geometries.sh compares these with the result files slidesim
 !> writes for the same inputs: the same build path, so the same numbers.
 program shipped_geometries
   use base_kinds, only: wp
   use base_constants, only: pi
+  use base_grid, only: evenly_spaced
   use base_status, only: status_t
   use geometry_surface, only: surface_t
   use geometry_slide_elements, only: slide_element_t
@@ -88,15 +89,6 @@ contains
     end do
     close (unit)
   end subroutine put
-
-  !> As the geometry scenario's grid (io_surface_grid's evenly_spaced).
-  pure function evenly_spaced(a, b, n) result(values)
-    real(wp), intent(in) :: a, b
-    integer, intent(in) :: n
-    real(wp) :: values(n)
-    integer :: i
-    values = [(a + (b - a)*i/real(max(n - 1, 1), wp), i=0, n - 1)]
-  end function evenly_spaced
 
   !> One slide element, every value given (the reader's defaults: 0, 'left').
   pure function element(kind, length, slope_deg, radius, angle_deg, direction, turns, drop) result(e)
