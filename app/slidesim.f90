@@ -43,6 +43,7 @@ program slidesim
   cli%ride_csv = ''
   allocate (character(len=1) :: overrides(0))
   options_ended = .false.
+  call set_verbosity(1)   ! the command's stage and progress lines (base_log is quiet until asked)
   n = command_argument_count()
   i = 0
   do while (i < n)

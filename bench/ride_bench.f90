@@ -3,7 +3,7 @@
 !> 1e-10, atol 1e-9 as the thesis), library runs without input reading or
 !> files, each the median of 7 runs of process CPU time:
 !>   water             compute_water (its own settings, as the ride runs it)
-!>   ride              run_ride with records every 0.01 s (the default)
+!>   ride              simulate_ride with records every 0.01 s (the default)
 !>   ride, no records  one record at the end (the integration's cost)
 !>   ride, no drag     records every 0.01 s, no water drag (no on/off events)
 !>   water + ride      the two together: the goal is 0.2 s
@@ -24,7 +24,7 @@ program ride_bench
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: build_sled, sled_description_t
   use water_run, only: water_description_t, water_result_t, compute_water
-  use rider_ride, only: ride_options_t, ride_result_t, run_ride
+  use rider_ride, only: ride_options_t, ride_result_t, simulate_ride
   use scenarios_water, only: build_water
   use bench_timing, only: median
   implicit none (type, external)
@@ -98,7 +98,7 @@ contains
     rider%params%drag = drag
     do k = 1, repeats
       call cpu_time(start)
-      call run_ride(rider%params, water%slide, options, ride, status, computed%field)
+      call simulate_ride(rider%params, water%slide, options, ride, status, computed%field)
       call cpu_time(finish)
       cpu(k) = finish - start
     end do

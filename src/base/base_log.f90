@@ -2,6 +2,10 @@
 !> standard output stays for summaries. Standard output is flushed before each
 !> message: where both streams go to one file or pipe, every line stays in
 !> the order it was written (a summary's last line before the error after it).
+!> Quiet until the program asks: verbosity is 0 until set_verbosity (the
+!> slidesim command sets 1, or 0 with -q), so a program using the library
+!> sees no line it did not ask for. Library code writes only through a
+!> log_sink_i its caller passes (the command passes log_info).
 module base_log
   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
   use base_kinds, only: wp
@@ -10,7 +14,7 @@ module base_log
   public :: log_info, log_warning, log_error, log_progress, set_verbosity, verbosity
   public :: set_progress_interval, progress_interval, log_sink_i
 
-  integer :: verbosity = 1   !< 0 quiet, 1 normal, 2 verbose; set once from the command line
+  integer :: verbosity = 0   !< 0 quiet, 1 normal, 2 verbose; set once from the command line
   !> wall-clock seconds between two progress lines of a long run; set once
   !> from the command line (slidesim --progress)
   real(wp) :: progress_seconds = 2

@@ -44,7 +44,7 @@
 !> rides one after the other), with the same numbers again.
 module design_geometry_optimization
   use base_kinds, only: wp, int64
-  use base_log, only: log_info, progress_interval
+  use base_log, only: log_sink_i, progress_interval
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use base_text, only: format_short, format_integer, format_real
@@ -100,6 +100,7 @@ module design_geometry_optimization
     integer :: starts = 1                     !< multi-start: the given design and starts - 1 drawn ones
     integer :: seed = 1                       !< of the drawn starts
     integer :: threads = 1
+    procedure(log_sink_i), pointer, nopass :: log => null()   !< progress lines (none: not made)
     type(least_squares_options_t) :: solver = least_squares_options_t(ftol=1e-4_wp, xtol=1e-3_wp, &
                                                                       gtol=0.0_wp, epsfcn=1e-8_wp, &
                                                                       covariance=.false.)   ! not reported
@@ -332,19 +333,20 @@ contains
     if (self%has_best) is_best = all(self%best%x == x)
   end function is_best
 
-  !> A progress line every few seconds of a long optimisation (base_log's
-  !> progress_interval): how many designs have been evaluated.
+  !> A progress line to setup%log every few seconds of a long optimisation
+  !> (base_log's progress_interval): how many designs have been evaluated.
   subroutine progress(self, evaluated)
     class(optimization_problem_t), intent(inout) :: self
     integer, intent(in) :: evaluated
     integer(int64) :: now, rate
     self%designs = self%designs + evaluated
+    if (.not. associated(self%setup%log)) return
     call system_clock(now, rate)
     if (self%clock_last < 0) self%clock_last = now
     if (real(now - self%clock_last, wp) < progress_interval()*real(rate, wp)) return
     self%clock_last = now
-    call log_info('optimize: '//self%label//format_integer(self%designs)//' designs evaluated ('// &
-                  format_integer(self%designs*size(self%setup%start_angles))//' rides)')
+    call self%setup%log('optimize: '//self%label//format_integer(self%designs)//' designs evaluated ('// &
+                        format_integer(self%designs*size(self%setup%start_angles))//' rides)')
   end subroutine progress
 
   !> All rides of all points in one parallel loop.

@@ -21,7 +21,7 @@ module design_ride_job
   use water_field, only: water_field_t
   use water_flow, only: outcome_name
   use rider_model, only: rider_params_t
-  use rider_ride, only: ride_options_t, ride_result_t, ride_in_water => run_ride
+  use rider_ride, only: ride_options_t, ride_result_t, simulate_ride
   use design_ride_evaluation, only: ride_limit_t
   use design_ride_report, only: ride_report_t, evaluate_ride
   implicit none (type, external)
@@ -71,11 +71,7 @@ contains
     result%stopped = ''
     result%water_outcome = ''
     options = description%options
-    if (associated(description%log)) then
-      options%log => description%log
-    else
-      options%progress_seconds = 0
-    end if
+    if (associated(description%log)) options%log => description%log   ! none: the driver makes no lines
     if (description%with_water .and. .not. present(water)) then
       if (associated(description%log)) call description%log(ride_label()//': the water first ('// &
                                                             format_real(description%water%flow_rate)//' m^3/s)')
@@ -94,13 +90,13 @@ contains
     if (associated(description%log)) call description%log(ride_label()//': the rider')
     call cpu_time(cpu0)
     if (.not. description%with_water) then
-      call ride_in_water(description%rider, description%water%slide, options, result%ride, result%status, &
+      call simulate_ride(description%rider, description%water%slide, options, result%ride, result%status, &
                          label=ride_label())
     else if (present(water)) then
-      call ride_in_water(description%rider, description%water%slide, options, result%ride, result%status, water, &
+      call simulate_ride(description%rider, description%water%slide, options, result%ride, result%status, water, &
                          label=ride_label())
     else
-      call ride_in_water(description%rider, description%water%slide, options, result%ride, result%status, &
+      call simulate_ride(description%rider, description%water%slide, options, result%ride, result%status, &
                          result%water%field, label=ride_label())
     end if
     if (allocated(description%limits)) then

@@ -1,6 +1,7 @@
 !> The one integration driver every model runs through: outputs at fixed
 !> times, events from CVODE's root finding handled by the model, progress
-!> lines on long runs, and a guard against runaway step counts.
+!> lines on long runs (to the caller's log; none without one), and a guard
+!> against runaway step counts.
 !>
 !> A model is an `event_system_t`: an ODE system (right-hand side and root
 !> functions, numerics_ode) that also records its state and decides what each
@@ -37,7 +38,7 @@ module numerics_event_driver
   use base_kinds, only: wp, int64
   use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_SOLVER
-  use base_log, only: log_info, progress_interval, log_sink_i
+  use base_log, only: progress_interval, log_sink_i
   use numerics_ode, only: ode_system_t, ode_options_t, ode_stats_t, ode_integrator_t, ODE_ADAMS
   implicit none (type, external)
   private
@@ -90,7 +91,7 @@ module numerics_event_driver
     !> setting (base_log progress_interval: 2 s unless slidesim --progress)
     real(wp) :: progress_seconds = -1
     character(len=:), allocatable :: label    !< names the run in progress lines and messages
-    !> where the progress lines go; not given: standard error (base_log log_info)
+    !> where the progress lines go; not given: none (the library prints nothing)
     procedure(log_sink_i), pointer, nopass :: log => null()
   end type driver_options_t
 
@@ -333,6 +334,7 @@ contains
     subroutine report_progress()
       real(wp) :: fraction, interval
       character(len=:), allocatable :: text
+      if (.not. associated(options%log)) return
       interval = options%progress_seconds
       if (interval < 0) interval = progress_interval()
       if (.not. interval > 0) return
@@ -341,11 +343,7 @@ contains
       clock_last = clock_now
       call system%progress(t, y, options%t_start, options%t_end, fraction, text)
       if (fraction >= 0) text = format_short(100*min(fraction, 1.0_wp))//' % ('//text//')'
-      if (associated(options%log)) then
-        call options%log(label//': '//text)
-      else
-        call log_info(label//': '//text)
-      end if
+      call options%log(label//': '//text)
     end subroutine report_progress
   end subroutine drive
 

@@ -34,8 +34,8 @@ module rider_ride
   use rider_water_drag, only: water_drag_t
   implicit none (type, external)
   private
-  public :: ride_options_t, ride_series_t, contact_series_t, ride_result_t, rider_ode_t, run_ride, check_ride_start, &
-    prepare_ride
+  public :: ride_options_t, ride_series_t, contact_series_t, ride_result_t, rider_ode_t, simulate_ride, &
+    check_ride_start, prepare_ride
 
   type :: ride_options_t
     !> thesis B.7 tolerances; the step is capped at 0.05 s: each closure starts
@@ -46,7 +46,7 @@ module rider_ride
     real(wp) :: max_duration = 600        ! s, a bound on the ride (it normally ends at the slide's end)
     real(wp) :: min_speed = 0.05_wp       ! m/s, below it the rider has stalled
     real(wp) :: progress_seconds = -1     ! wall-clock s between progress lines (0: none; < 0: slidesim's)
-    procedure(log_sink_i), pointer, nopass :: log => null()   ! where they go (none given: standard error)
+    procedure(log_sink_i), pointer, nopass :: log => null()   ! where they go (none given: none made)
     !> m of centerline arc length, increasing: the ride records the state
     !> where the pelvis first crosses each (a root function each; what an
     !> identification compares with measurements at stations)
@@ -125,7 +125,7 @@ contains
   !> params%drag). Returns with status ok when the ride ended (result%complete
   !> says whether it reached the end); otherwise with the failure, the
   !> samples so far in result%series.
-  subroutine run_ride(params, surface, options, result, status, water, label)
+  subroutine simulate_ride(params, surface, options, result, status, water, label)
     type(rider_params_t), intent(in) :: params
     class(surface_t), intent(in) :: surface
     type(ride_options_t), intent(in) :: options
@@ -171,7 +171,7 @@ contains
       result%outcome = 'failed: '//run_status%text()
     end select
     if (.not. run_status%ok()) status = run_status
-  end subroutine run_ride
+  end subroutine simulate_ride
 
   !> Builds the rider and checks its start without running (the loops close,
   !> the contacts press, the start speed carries it down the slide): what a

@@ -113,7 +113,7 @@ contains
     real(wp) :: u_min, u_max, v_min, v_max
     call surface%domain(u_min, u_max, v_min, v_max)
     call write_surface_grid(file, surface, evenly_spaced(u_min, u_max, n_u), evenly_spaced(v_min, v_max, n_v), &
-                            status)
+                            status, log_info)
   end subroutine write_grid
 
   !> The centerline samples, and its length, drop and curvature in the summary.

@@ -45,6 +45,7 @@ contains
     options%output_step = solver%output_step
     options%min_mean_step = min_mean_step
     options%label = scenario
+    options%log => log_info
   end function mechanism_driver_options
 
   !> The common run of a multibody scenario from q0, q0'.
@@ -101,7 +102,7 @@ contains
                                 q_units, beta_units, write_status)
     ! the grid around the first contact's path (u, v are its first two coordinates)
     if (present(surface)) call write_surface_grid_around(file, surface, sys%series%q(1, :sys%series%n), &
-                                                         sys%series%q(2, :sys%series%n), write_status)
+                                                         sys%series%q(2, :sys%series%n), write_status, log_info)
     complete = run_status%ok() .and. write_status%ok()
     message = 'ok: '//outcome
     if (.not. write_status%ok()) message = write_status%text()

@@ -71,6 +71,7 @@ contains
     if (.not. status%ok()) return
     call log_info('optimize: '//format_integer(size(setup%design%point))//' design variables, '// &
                   format_integer(size(setup%start_angles))//' rides per design')
+    setup%log => log_info
     call cpu_time(cpu0)
     call optimize_slide(setup, result, run_status)
     call cpu_time(cpu1)
@@ -239,7 +240,7 @@ contains
     if (.not. built%ok()) return
     call slide%centerline%domain(u_min, u_max)
     call write_surface_grid(file, slide, evenly_spaced(u_min, u_max, grid_n_u), &
-                            evenly_spaced(0.0_wp, 2*pi, grid_n_v), status)
+                            evenly_spaced(0.0_wp, 2*pi, grid_n_v), status, log_info)
   end subroutine write_grid
 
   !> The XDMF file: the slide and every ride's path, before and after.

@@ -96,6 +96,7 @@ contains
     options%output_step = solver%output_step
     options%min_mean_step = min_mean_step
     options%label = 'point_mass'
+    options%log => log_info
     call drive(model, y0, options, result, run_status)
     select case (result%outcome)
     case (DRIVE_END_TIME)
@@ -160,7 +161,7 @@ contains
       call file%make_scale(g//'time', status)
       call file%attach_scale(g//'time', g, status)
       call file%attach_components(g, status)
-      call write_surface_grid_around(file, model%surface, s%u(:n), s%v(:n), status)
+      call write_surface_grid_around(file, model%surface, s%u(:n), s%v(:n), status, log_info)
     end if
     call file%write_count('/statistics/steps', int(stats%steps), '1', 'integrator steps', status)
     call file%write_count('/statistics/rhs_evaluations', int(stats%rhs_evaluations), '1', &

@@ -294,7 +294,7 @@ contains
       v_min = 0; v_max = full_turn
     end if
     call write_surface_grid(file, slide, evenly_spaced(u_min, u_max, grid_n_u), &
-                            evenly_spaced(v_min, v_max, grid_n_v), status)
+                            evenly_spaced(v_min, v_max, grid_n_v), status, log_info)
   end subroutine write_slide_grid
 
   !> The printed summary and, with --summary-json, the same numbers as JSON.

@@ -331,8 +331,8 @@ contains
   !> record if `edges`. The series keeps what was computed and why the run
   !> ended (outcome, message); `status` is ok at the end of the slide and at
   !> the caller's bound, else it says why the run stopped early. The model is
-  !> not changed. Progress lines (the driver's): to `log` if given, none
-  !> when `progress_seconds` is 0 (default: the program's, on standard error).
+  !> not changed. Progress lines (the driver's): to `log` if given (none
+  !> without it, or when `progress_seconds` is 0; default: the program's interval).
   subroutine simulate_water(model, y0, options, duration, output_step, series, status, edges, log, &
                             progress_seconds)
     type(streamline_t), intent(in), target :: model

@@ -7,7 +7,7 @@
 program test_ride_job
   use base_kinds, only: wp
   use base_status, only: status_t
-  use rider_ride, only: ride_result_t, ride_in_water => run_ride
+  use rider_ride, only: ride_result_t, simulate_ride
   use water_run, only: water_result_t, compute_water
   use design_ride_evaluation, only: new_ride_limit
   use design_ride_report, only: ride_report_t, evaluate_ride
@@ -61,7 +61,7 @@ contains
     type(status_t) :: st
 
     call compute_water(description%water, water, st)
-    call ride_in_water(description%rider, description%water%slide, description%options, ride, st, water%field)
+    call simulate_ride(description%rider, description%water%slide, description%options, ride, st, water%field)
     call evaluate_ride(ride%series, description%rider%gravity, ride%complete, description%limits, report)
     call check(st%ok(), 'the parts run: '//st%text())
 
@@ -83,7 +83,7 @@ contains
 
     dry = description
     dry%with_water = .false.
-    call ride_in_water(description%rider, description%water%slide, description%options, ride, st)
+    call simulate_ride(description%rider, description%water%slide, description%options, ride, st)
     dry_job = run_ride(dry, water%field)
     call check(dry_job%status%ok() .and. same_ride(dry_job%ride, ride), 'a dry ride: the rider without water')
     call check(any(dry_job%ride%series%speed(:ride%series%n) /= job%ride%series%speed(:ride%series%n)) .or. &

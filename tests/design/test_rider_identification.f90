@@ -23,7 +23,7 @@ program test_rider_identification
   use scenarios_water, only: build_water
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_model, only: rider_params_t, N_CONTACTS
-  use rider_ride, only: ride_result_t, run_ride
+  use rider_ride, only: ride_result_t, simulate_ride
   use design_rider_identification, only: rider_identification_t, rider_fit_options_t, rider_fit_t, &
     rider_stations_t, new_rider_identification, simulate_rider, fit_rider_friction, rider_body_sensitivity
   use testing, only: check, check_close, finish_tests, failures
@@ -95,7 +95,7 @@ contains
     type(ride_result_t) :: ride
     type(status_t) :: status
     integer :: i
-    call run_ride(setup%params, setup%slide, setup%options, ride, status, setup%water)
+    call simulate_ride(setup%params, setup%slide, setup%options, ride, status, setup%water)
     call check(status%ok() .and. ride%complete, 'the ride to the last station: '//status%text())
     if (.not. status%ok()) return
     call check(all(ride%station_record > 0), 'every station recorded')

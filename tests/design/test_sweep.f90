@@ -11,7 +11,7 @@ program test_sweep
   use base_constants, only: pi
   use base_status, only: status_t, STATUS_INVALID_INPUT
   use rider_model, only: rider_params_t
-  use rider_ride, only: ride_result_t, run_ride
+  use rider_ride, only: ride_result_t, simulate_ride
   use water_run, only: water_description_t, water_result_t, compute_water
   use design_ride_evaluation, only: new_ride_limit
   use design_ride_report, only: ride_report_t, evaluate_ride
@@ -119,7 +119,7 @@ contains
     do i = 3, 4
       call ride_description(sweep, i, rider, water_description)
       call compute_water(water_description, water, st)
-      call run_ride(rider, sweep%water%slide, sweep%options, ride, st, water%field)
+      call simulate_ride(rider, sweep%water%slide, sweep%options, ride, st, water%field)
       call evaluate_ride(ride%series, rider%gravity, ride%complete, sweep%limits, report)
       call check(st%ok(), 'ride alone runs')
       call check(serial%figures(1, i) == report%ride_time .and. serial%figures(3, i) == report%top_speed .and. &

@@ -46,7 +46,7 @@ program test_ride
   use io_input, only: input_text_t, load_input_file
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names
-  use rider_ride, only: ride_options_t, ride_result_t, run_ride, rider_ode_t, prepare_ride
+  use rider_ride, only: ride_options_t, ride_result_t, simulate_ride, rider_ode_t, prepare_ride
   use geometry_slide_query, only: general_wall_position
   use rider_water_drag, only: in_water_roots
   use scenarios_water, only: build_water
@@ -106,7 +106,7 @@ contains
     p%drag = .false.
     opt%output_step = 0.05_wp
     opt%progress_seconds = 0
-    call run_ride(p, description%slide, opt, ride, st)
+    call simulate_ride(p, description%slide, opt, ride, st)
     n = ride%series%n
     call check(st%ok() .and. .not. ride%complete .and. index(ride%outcome, 'lift-off: the normal force of the ') == 1 &
                .and. index(ride%outcome, 'at arc length') > 0, 'frictionless: lift-off with where: '//ride%outcome)
@@ -123,7 +123,7 @@ contains
     p%drag = .false.
     p%u0 = 2
     p%speed0 = 1
-    call run_ride(p, flat, opt, ride, st)
+    call simulate_ride(p, flat, opt, ride, st)
     call check(st%ok() .and. index(ride%outcome, 'the rider stalled or turned back') == 1, &
                'stall on a flat tube: '//ride%outcome)
     n = ride%series%n
@@ -144,7 +144,7 @@ contains
     p%one_sided = .false.
     opt%output_step = 0.05_wp
     opt%progress_seconds = 0
-    call run_ride(p, description%slide, opt, ride, st)
+    call simulate_ride(p, description%slide, opt, ride, st)
     call check(st%ok() .and. ride%complete, 'frictionless ride reaches the end: '//st%text()//' / '//ride%outcome)
     n = ride%series%n
     associate (s => ride%series)
@@ -172,7 +172,7 @@ contains
     ! like rtol sqrt(steps) relative (~1e-8 at the thesis's 1e-10 over 5e3 steps)
     opt%ode%rtol = 1e-11_wp
     opt%ode%atol = 1e-10_wp
-    call run_ride(p, description%slide, opt, ride, st, water%field)
+    call simulate_ride(p, description%slide, opt, ride, st, water%field)
     call check(st%ok() .and. ride%complete, 'demo ride reaches the end: '//st%text()//' / '//ride%outcome)
     n = ride%series%n
     associate (s => ride%series)
