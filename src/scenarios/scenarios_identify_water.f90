@@ -22,6 +22,7 @@ module scenarios_identify_water
   use io_water_identification_config, only: water_identification_config_t, read_water_identification_config
   use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t
+  use io_input_declarations, only: declared_unit
   use io_xdmf, only: attach_surface_view
   use scenarios_water, only: build_water, write_slide_grid
   implicit none (type, external)
@@ -208,15 +209,15 @@ contains
     type(status_t), intent(inout) :: status
     type(summary_t) :: summary
     real(wp), allocatable :: table(:, :)
-    character(len=*), parameter :: units(3) = [character(len=4) :: 'kg/m', 'kg', 'kg m']
+    character(len=:), allocatable :: unit
     integer :: k, n
     n = size(setup%data%section_v)
     call summary%start('identify_water', 'slidesim identify_water: f1, f2, f3 from '//format_integer(n)// &
                        ' sections and '//format_integer(size(setup%data%segment_speed))//' segments')
     do k = 1, 3
-      call summary%add('f'//format_integer(k), 'f'//format_integer(k), fit%f(k), trim(units(k)))
-      call summary%add('f'//format_integer(k)//'_standard_error', 'its standard error', fit%standard_error(k), &
-                       trim(units(k)))
+      unit = declared_unit('water', 'f'//format_integer(k))
+      call summary%add('f'//format_integer(k), 'f'//format_integer(k), fit%f(k), unit)
+      call summary%add('f'//format_integer(k)//'_standard_error', 'its standard error', fit%standard_error(k), unit)
     end do
     call summary%add('correlation_12', 'correlation f1, f2', fit%correlation(1, 2), '1')
     call summary%add('correlation_13', 'correlation f1, f3', fit%correlation(1, 3), '1')

@@ -25,6 +25,7 @@ module scenarios_optimize
   use io_hdf5, only: result_file_t, run_outcome
   use io_system, only: write_standard_output
   use io_summary, only: summary_t, degrees
+  use io_input_declarations, only: declared_unit
   implicit none (type, external)
   private
   public :: run_optimize, optimize_groups
@@ -360,7 +361,7 @@ contains
     call summary%add('cost', 'cost at the '//end, result%cost_after, 'm^2/s^4')
     call add_lever('max_lever_arm_start', 'largest lever arm, start', result%before%max_lever_arm)
     call add_lever('max_lever_arm', 'largest lever arm, '//end, result%after%max_lever_arm)
-    call summary%add('lever_limit', 'lever-arm limit', setup%lever_limit, 'm')
+    call summary%add('lever_limit', 'lever-arm limit', setup%lever_limit, declared_unit('optimize', 'lever_limit'))
     call summary%add_count('evaluations', 'designs evaluated', result%evaluations, 'designs')
     call summary%add('cpu_time', 'CPU time', cpu, 's')
     if (size(result%starts) > 1) call add_starts()

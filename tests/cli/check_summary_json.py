@@ -1,6 +1,6 @@
 """Checks a --summary-json file against the HDF5 result of the same run.
 
-    check_summary_json.py SUMMARY.json RESULT.h5 PRINTED_SUMMARY.txt [SUMMARY.json RESULT.h5 PRINTED_SUMMARY.txt ...]
+    check_summary_json.py [--reference INPUT_REFERENCE.md] SUMMARY.json RESULT.h5 PRINTED_SUMMARY.txt [...]
 
 The JSON must load, name the scenario, status and result file of the HDF5
 file, give a pint-parsable unit for every number, hold the keys this scenario's
@@ -8,9 +8,14 @@ summary promises (docs/outputs.md, "Summary JSON"), and each number must equal
 what the HDF5 file holds. Tolerance: values copied from the series are written
 as shortest round-trip decimals and compared exactly up to 1e-12 relative,
 which also covers quantities recomputed here with numpy (norms, differences,
-ratios: a few roundings). Prints failures; exit status 1 if any.
+ratios: a few roundings). With --reference (the output of `slidesim
+--input-reference`), a number that echoes an input variable (a key named as
+a variable of a group the run's input gives, e.g. the water's flow_rate, the
+optimisation's lever_limit) must carry the unit declared for it. Prints
+failures; exit status 1 if any.
 """
 import json
+import re
 import sys
 
 import h5py
@@ -66,12 +71,45 @@ def check_contact(g, values, need):
             close(body + '_spin_final', values[body + '_spin_final'], omega @ rot[k])
 
 
-def check(json_path, h5_path, printed_path):
+def declared_units(reference_path):
+    """{(group, scenario or None): {variable: unit}} from the reference tables;
+    a heading '&identify (scenario identify_rider)' holds that scenario's group."""
+    tables, current = {}, None
+    for line in open(reference_path, encoding='utf-8'):
+        heading = re.match(r'### &(\w+)(?: \(scenario (\w+)\))?', line)
+        if heading:
+            current = tables.setdefault((heading.group(1), heading.group(2)), {})
+            continue
+        row = re.match(r'\| `(\w+)` \|.*\| ([^|]*) \| ([^|]*) \| ([^|]*) \|$', line.rstrip('\n'))
+        if row and current is not None:
+            current[row.group(1)] = row.group(2).strip()
+    return tables
+
+
+def check_echoed_units(values, units, scenario, namelist, reference):
+    """Every summary number named as an input variable of a group the input
+    gives carries that variable's declared unit."""
+    groups = set(re.findall(r'^\s*&(\w+)', namelist, re.M))
+    for key, value in values.items():
+        if isinstance(value, str) or (isinstance(value, list) and value and isinstance(value[0], dict)):
+            continue   # a text or a table (the stations), not an input's value
+        declared = {table[key] for (group, only), table in reference.items()
+                    if group in groups and only in (None, scenario) and key in table}
+        if declared and units.get(key) not in declared:
+            fail(f"{key}: unit {units.get(key)!r}, but the input variable {key} is declared in "
+                 f"{' or '.join(sorted(declared))}")
+
+
+def check(json_path, h5_path, printed_path, reference=None):
     failures.clear()
     summary = json.load(open(json_path, encoding='utf-8'))
     values, units = summary['values'], summary['units']
     f = h5py.File(h5_path, 'r')
     scenario = f.attrs['scenario']
+    if reference is not None:
+        namelist = f['/input/namelist'][()]
+        check_echoed_units(values, units, scenario,
+                           namelist.decode() if isinstance(namelist, bytes) else str(namelist), reference)
     if summary['scenario'] != scenario:
         fail(f"scenario {summary['scenario']!r}, the file says {scenario!r}")
     if summary['status'] != f.attrs['status'] or summary['status_message'] != f.attrs['status_message']:
@@ -219,9 +257,13 @@ def check(json_path, h5_path, printed_path):
 
 
 def main(arguments):
+    reference = None
+    if arguments[:1] == ['--reference'] and len(arguments) > 1:
+        reference = declared_units(arguments[1])
+        arguments = arguments[2:]
     if not arguments or len(arguments) % 3:
         sys.exit(__doc__)
-    bad = sum(check(*arguments[k:k + 3]) for k in range(0, len(arguments), 3))
+    bad = sum(check(*arguments[k:k + 3], reference) for k in range(0, len(arguments), 3))
     print(f"{len(arguments) // 3} summaries checked, {bad} failures")
     sys.exit(1 if bad else 0)
 

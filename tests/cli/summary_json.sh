@@ -2,7 +2,8 @@
 # --summary-json FILE: for every input in inputs/, the default (a ride) and a
 # run that failed part way the JSON loads, has the keys of the printed summary
 # with a unit for every number, and its numbers equal the HDF5 result's
-# (tests/cli/check_summary_json.py); a JSON path that cannot be written is
+# (tests/cli/check_summary_json.py); a number that echoes an input variable
+# carries the unit declared for it (slidesim --input-reference); a JSON path that cannot be written is
 # exit status 3. The runs come from the fixture cli_every_input
 # (tests/cli/support/every_input.sh).
 set -u
@@ -18,7 +19,9 @@ for name in $(cat "$results/names") stopped; do
   if [ -f "$results/$name.json" ]; then triples+=("$results/$name.json" "$results/$name.h5" "$results/$name.out")
   else echo "FAIL $name: no summary JSON"; failures=$((failures + 1)); fi
 done
-"$python" "$root/tests/cli/check_summary_json.py" "${triples[@]}" || failures=$((failures + 1))
+"$slidesim" --input-reference > "$work/reference.md" || { echo "FAIL --input-reference"; failures=$((failures + 1)); }
+"$python" "$root/tests/cli/check_summary_json.py" --reference "$work/reference.md" "${triples[@]}" \
+  || failures=$((failures + 1))
 "$slidesim" -q -o "$work/x.h5" --summary-json "$work/no/such/folder/s.json" "$root/inputs/pendulum/simple.nml" \
   >/dev/null 2>"$work/bad.err"
 got=$?
