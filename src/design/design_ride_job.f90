@@ -14,8 +14,8 @@
 !> is only read, every run keeps its state in locals.
 module design_ride_job
   use base_kinds, only: wp
-  use base_status, only: status_t, prefix_status
-  use base_text, only: format_real
+  use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
+  use base_text, only: format_real, format_vector
   use base_log, only: log_sink_i
   use water_run, only: water_description_t, water_result_t, compute_water
   use water_field, only: water_field_t
@@ -70,6 +70,13 @@ contains
 
     result%stopped = ''
     result%water_outcome = ''
+    ! one gravity: the water's and the rider's cannot disagree in one ride
+    if (description%with_water .and. any(description%water%gravity /= description%rider%gravity)) then
+      call set_status(result%status, STATUS_INVALID_INPUT, ride_label()//': water%gravity = '// &
+                      format_vector(description%water%gravity)//' m/s^2 but rider%gravity = '// &
+                      format_vector(description%rider%gravity)//' m/s^2: a ride has one gravity')
+      return
+    end if
     options = description%options
     if (associated(description%log)) options%log => description%log   ! none: the driver makes no lines
     if (description%with_water .and. .not. present(water)) then

@@ -81,8 +81,9 @@ module io_declarations_ride
       high=5000.0_wp, meaning='density of the water (drag)'), &
     declaration_t(groups='rider', name='water_viscosity', unit='m^2/s', default='1e-6', low=1e-8_wp, &
       high=1e-3_wp, meaning='kinematic viscosity of the water (Reynolds number of the drag)'), &
-    declaration_t(groups='rider', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
-      low=-1e3_wp, high=1e3_wp, meaning='gravity vector, not zero (|gravity| is the unit g of felt accelerations)'), &
+    declaration_t(groups='rider water', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
+      low=-1e3_wp, high=1e3_wp, meaning='gravity vector, one per run: a ride takes it from `&rider` or `&water` '// &
+      '(both: the same, else refused); not zero for a rider (|gravity| is the unit g of felt accelerations)'), &
     declaration_t(groups='rider sweep', name='u0', unit='surface parameter', default='0.5', low=-1e6_wp, &
       high=1e6_wp, meaning='pelvis start along the slide (m of arc length on slides)'), &
     declaration_t(groups='rider sweep', name='v0', unit='rad', default='pi/2', low=-10.0_wp, high=10.0_wp, &
@@ -130,8 +131,6 @@ module io_declarations_ride
       choices='full no_radius off', meaning='Saint-Venant correction: full, without the dR/dt term, or none'), &
     declaration_t(groups='water', name='mass', unit='kg', default='1', low=1e-3_wp, high=1e3_wp, &
       meaning='virtual mass of the streamline'), &
-    declaration_t(groups='water', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
-      low=-1e3_wp, high=1e3_wp, meaning='gravity vector'), &
     declaration_t(groups='water', name='min_speed', unit='m/s', default='0.05', low=1e-4_wp, high=10.0_wp, &
       meaning='below this speed the water has stalled (the run stops)'), &
     declaration_t(groups='water', name='min_criticality', unit='1', default='0.02', low=1e-6_wp, high=0.9_wp, &

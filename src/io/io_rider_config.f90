@@ -2,9 +2,10 @@
 !> judged against (docs/rider.md, "Input"). Everything is checked here, before
 !> any work; what needs the slide (the start lies on it, the spheres fit in
 !> the tube, the heels and back reach it) is checked when the rider is built.
+!> A run with water and a rider has one gravity (read_ride_gravity).
 module io_rider_config
   use base_kinds, only: wp
-  use base_constants, only: pi
+  use base_constants, only: pi, standard_gravity
   use base_text, only: format_integer
   use base_status, only: status_t
   use io_input, only: input_text_t, group_reader_t, open_group, format_real
@@ -13,7 +14,7 @@ module io_rider_config
   use design_ride_evaluation, only: ride_limit_t, new_ride_limit
   implicit none (type, external)
   private
-  public :: rider_config_t, read_rider_config, max_limits
+  public :: rider_config_t, read_rider_config, read_ride_gravity, max_limits
 
   integer, parameter :: max_limits = 20
 
@@ -25,10 +26,13 @@ module io_rider_config
 
 contains
 
-  subroutine read_rider_config(input, config, status)
+  !> The rider of &rider. `gravity`: the run's one gravity (a ride's, from
+  !> read_ride_gravity), which &rider gravity can only repeat.
+  subroutine read_rider_config(input, config, status, gravity)
     type(input_text_t), intent(in) :: input
     type(rider_config_t), intent(out) :: config
     type(status_t), intent(inout) :: status
+    real(wp), intent(in), optional :: gravity(3)   ! m/s^2
     type(group_reader_t) :: r
     character(len=8) :: sex
     character(len=32) :: quantity(max_limits), unit(max_limits)
@@ -66,6 +70,7 @@ contains
       call r%get_parts('limit_min', minimum, count_text, status, given=has_min)
       call r%get_parts('limit_max', maximum, count_text, status, given=has_max)
       if (.not. status%ok()) return
+      if (present(gravity)) p%gravity = gravity
       p%body%sex = merge(SEX_MALE, SEX_FEMALE, sex == 'male')
       p%heading0 = heading_deg*pi/180
       if (.not. norm2(p%gravity) > 0) then
@@ -106,4 +111,34 @@ contains
       end if
     end do
   end subroutine read_rider_config
+
+  !> The one gravity of a run with water and a rider (the ride, the sweep,
+  !> identify_rider): &water and &rider share the variable (one
+  !> declaration); given in one group it holds for both the water and the
+  !> rider, given in both it must be the same there, else the run is refused.
+  subroutine read_ride_gravity(input, gravity, status)
+    type(input_text_t), intent(in) :: input
+    real(wp), intent(out) :: gravity(3)   ! m/s^2
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: water, rider
+    real(wp) :: water_gravity(3), rider_gravity(3)
+    gravity = [0.0_wp, 0.0_wp, -standard_gravity]
+    water_gravity = gravity
+    rider_gravity = gravity
+    call open_group(input, 'water', water, status)
+    call open_group(input, 'rider', rider, status)
+    call water%get('gravity', water_gravity, status)
+    call rider%get('gravity', rider_gravity, status)
+    if (.not. status%ok()) return
+    if (water%has('gravity') .and. rider%has('gravity')) then
+      if (any(water_gravity /= rider_gravity)) then
+        call rider%invalid('gravity', rider%written('gravity'), 'a ride has one gravity, and &water gives '// &
+                           'gravity = '//water%written('gravity')//' ('//water%where('gravity')//'): give it '// &
+                           'in one of the two groups, or the same in both', status)
+        return
+      end if
+    end if
+    if (water%has('gravity')) gravity = water_gravity
+    if (rider%has('gravity')) gravity = rider_gravity
+  end subroutine read_ride_gravity
 end module io_rider_config

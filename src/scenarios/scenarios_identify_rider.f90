@@ -20,7 +20,7 @@ module scenarios_identify_rider
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_geometry_config, only: geometry_groups
-  use io_rider_config, only: rider_config_t, read_rider_config
+  use io_rider_config, only: rider_config_t, read_rider_config, read_ride_gravity
   use io_rider_identification_config, only: rider_identification_config_t, read_rider_identification_config
   use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t
@@ -50,6 +50,7 @@ contains
     type(water_description_t) :: water_description
     type(water_result_t) :: water
     type(rider_config_t) :: rider
+    real(wp) :: gravity(3)   ! m/s^2
     type(rider_identification_config_t) :: config
     type(rider_identification_t) :: setup
     type(rider_fit_t) :: fit
@@ -63,7 +64,10 @@ contains
     call check_known_groups(input, identify_rider_groups, status)
     if (status%ok()) call read_solver_config(input, solver, status, defaults=default_solver(setup))
     if (status%ok()) call build_water(input, water_description, status, stage=.true.)
-    if (status%ok()) call read_rider_config(input, rider, status)
+    ! one gravity for the water and the rider
+    if (status%ok()) call read_ride_gravity(input, gravity, status)
+    if (status%ok()) water_description%gravity = gravity
+    if (status%ok()) call read_rider_config(input, rider, status, gravity)
     if (status%ok()) call read_rider_identification_config(input, config, status)
     if (.not. status%ok()) return
     if (allocated(rider%limits)) then

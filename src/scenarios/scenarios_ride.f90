@@ -25,7 +25,7 @@ module scenarios_ride
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
   use io_geometry_config, only: geometry_groups
-  use io_rider_config, only: rider_config_t, read_rider_config
+  use io_rider_config, only: rider_config_t, read_rider_config, read_ride_gravity
   use io_evaluation_config, only: evaluation_config_t, read_evaluation_config
   use io_hdf5, only: result_file_t
   use io_water_results, only: write_water_results
@@ -117,6 +117,7 @@ contains
     type(status_t), intent(inout) :: status
     type(solver_config_t) :: solver, defaults
     type(rider_config_t) :: rider
+    real(wp) :: gravity(3)   ! m/s^2
 
     fail_on_limit = .false.
     call check_known_groups(input, ride_groups, status)
@@ -124,7 +125,10 @@ contains
     defaults%output_step = description%options%output_step
     if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults)
     if (status%ok()) call build_water(input, description%water, status, stage=.true.)
-    if (status%ok()) call read_rider_config(input, rider, status)
+    ! one gravity for the water and the rider
+    if (status%ok()) call read_ride_gravity(input, gravity, status)
+    if (status%ok()) description%water%gravity = gravity
+    if (status%ok()) call read_rider_config(input, rider, status, gravity)
     if (status%ok()) call read_limit_gate(input, run, rider%limits, fail_on_limit, status)
     if (.not. status%ok()) return
     associate (slide => description%water%slide, options => description%options)

@@ -25,7 +25,7 @@ module scenarios_sweep
   use io_output_files, only: claim_output
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
-  use io_rider_config, only: rider_config_t, read_rider_config
+  use io_rider_config, only: rider_config_t, read_rider_config, read_ride_gravity
   use io_sweep_config, only: sweep_config_t, read_sweep_config
   use io_sweep_results, only: write_sweep_results, write_sweep_csv
   use io_hdf5, only: result_file_t
@@ -52,6 +52,7 @@ contains
     type(status_t), intent(inout) :: status
     type(solver_config_t) :: solver, defaults
     type(rider_config_t) :: rider
+    real(wp) :: gravity(3)   ! m/s^2
     type(sweep_config_t) :: config
     type(sweep_description_t) :: sweep
     type(sweep_result_t) :: result
@@ -70,7 +71,10 @@ contains
     defaults%output_step = options%output_step
     if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults)
     if (status%ok()) call build_water(input, sweep%water, status, stage=.true.)
-    if (status%ok()) call read_rider_config(input, rider, status)
+    ! one gravity for the water and the rider
+    if (status%ok()) call read_ride_gravity(input, gravity, status)
+    if (status%ok()) sweep%water%gravity = gravity
+    if (status%ok()) call read_rider_config(input, rider, status, gravity)
     if (status%ok()) call read_limit_gate(input, run, rider%limits, fail_on_limit, status)
     if (.not. status%ok()) return
     call check_sphere_radii(input, rider, sweep%water%slide, status)
