@@ -16,7 +16,9 @@ program design_bench
   use numerics_ode, only: ode_options_t
   use design_water_identification, only: water_identification_t, water_fit_options_t, water_fit_t, &
     new_water_identification, simulate_measurements, fit_water_friction
-  use io_rider_config, only: rider_config_t, read_rider_config
+  use io_rider_config, only: read_rider_config
+  use rider_ride, only: ride_options_t
+  use design_ride_evaluation, only: ride_limit_t
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_model, only: N_CONTACTS
   use design_rider_identification, only: rider_identification_t, rider_fit_options_t, rider_fit_t, &
@@ -121,17 +123,17 @@ contains
     type(status_t) :: status
     type(water_description_t) :: description
     type(water_result_t) :: flow
-    type(rider_config_t) :: config
+    type(ride_options_t) :: options
+    type(ride_limit_t), allocatable :: limits(:)
     type(rider_stations_t) :: simulated
     real(wp) :: total, mid(5)
     integer :: i
     call load_input_file('inputs/ride/demo_slide.nml', input, status)
     if (status%ok()) call build_water(input, description, status, stage=.true.)
-    if (status%ok()) call read_rider_config(input, config, status)
+    if (status%ok()) call read_rider_config(input, setup%params, options, limits, status)
     if (status%ok()) call compute_water(description, flow, status)
     if (.not. status%ok()) error stop 'demo ride input'
     setup%slide = description%slide
-    setup%params = config%params
     setup%params%mu = mu_true
     setup%with_water = .true.
     setup%water = flow%field

@@ -19,12 +19,14 @@ program ride_bench
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_surface_config, only: read_surface_config
   use io_mechanism_config, only: read_sled_config
-  use io_rider_config, only: rider_config_t, read_rider_config
+  use io_rider_config, only: read_rider_config
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: build_sled, sled_description_t
   use water_run, only: water_description_t, water_result_t, compute_water
+  use rider_model, only: rider_params_t
   use rider_ride, only: ride_options_t, ride_result_t, simulate_ride
+  use design_ride_evaluation, only: ride_limit_t
   use scenarios_water, only: build_water
   use bench_timing, only: median
   implicit none (type, external)
@@ -34,7 +36,8 @@ program ride_bench
   type(input_text_t) :: input
   type(water_description_t) :: water
   type(water_result_t) :: computed
-  type(rider_config_t) :: rider
+  type(rider_params_t) :: rider
+  type(ride_limit_t), allocatable :: limits(:)
   type(ride_options_t) :: options
   type(ride_result_t) :: ride
   type(status_t) :: status
@@ -42,13 +45,12 @@ program ride_bench
 
   call load_input_file('inputs/ride/demo_slide.nml', input, status)
   if (status%ok()) call build_water(input, water, status, stage=.true.)
-  if (status%ok()) call read_rider_config(input, rider, status)
+  if (status%ok()) call read_rider_config(input, rider, options, limits, status)
   if (.not. status%ok()) then
     print '(a)', 'inputs/ride/demo_slide.nml: '//status%text()
     error stop 1
   end if
   options%progress_seconds = 0
-  options%min_speed = rider%min_speed
   options%max_duration = 600
 
   print '(a)', 'the ride on the demo slide (inputs/ride/demo_slide.nml), rtol 1e-10, atol 1e-9, median of 7'
@@ -95,14 +97,14 @@ contains
     real(wp) :: cpu(repeats), start, finish, t
     integer :: k
     options%output_step = output_step
-    rider%params%drag = drag
+    rider%drag = drag
     do k = 1, repeats
       call cpu_time(start)
-      call simulate_ride(rider%params, water%slide, options, ride, status, computed%field)
+      call simulate_ride(rider, water%slide, options, ride, status, computed%field)
       call cpu_time(finish)
       cpu(k) = finish - start
     end do
-    rider%params%drag = .true.
+    rider%drag = .true.
     if (.not. status%ok() .or. .not. ride%complete) then
       print '(a)', label//': '//status%text()//' '//ride%outcome
       error stop 1

@@ -1,4 +1,5 @@
-!> &rider: the rider (body, start, friction, drag) and the limits its ride is
+!> &rider: the rider (body, start, friction, drag; the rider layer's own
+!> description, rider_params_t), its stall speed and the limits its ride is
 !> judged against (docs/rider.md, "Input"). Everything is checked here, before
 !> any work; what needs the slide (the start lies on it, the spheres fit in
 !> the tube, the heels and back reach it) is checked when the rider is built.
@@ -11,26 +12,25 @@ module io_rider_config
   use io_input, only: input_text_t, group_reader_t, open_group, format_real
   use rider_body, only: SEX_MALE, SEX_FEMALE
   use rider_model, only: rider_params_t
+  use rider_ride, only: ride_options_t
   use design_ride_evaluation, only: ride_limit_t, new_ride_limit
   implicit none (type, external)
   private
-  public :: rider_config_t, read_rider_config, read_ride_gravity, max_limits
+  public :: read_rider_config, read_ride_gravity, max_limits
 
   integer, parameter :: max_limits = 20
 
-  type :: rider_config_t
-    type(rider_params_t) :: params
-    real(wp) :: min_speed = 0.05_wp                 ! m/s, the ride has stalled below
-    type(ride_limit_t), allocatable :: limits(:)
-  end type rider_config_t
-
 contains
 
-  !> The rider of &rider. `gravity`: the run's one gravity (a ride's, from
-  !> read_ride_gravity), which &rider gravity can only repeat.
-  subroutine read_rider_config(input, config, status, gravity)
+  !> The rider of &rider, its stall speed (options%min_speed; the other
+  !> options are &solver's, kept) and its limits. `gravity`: the run's one
+  !> gravity (a ride's, from read_ride_gravity), which &rider gravity can
+  !> only repeat.
+  subroutine read_rider_config(input, rider, options, limits, status, gravity)
     type(input_text_t), intent(in) :: input
-    type(rider_config_t), intent(out) :: config
+    type(rider_params_t), intent(out) :: rider
+    type(ride_options_t), intent(inout) :: options
+    type(ride_limit_t), allocatable, intent(out) :: limits(:)
     type(status_t), intent(inout) :: status
     real(wp), intent(in), optional :: gravity(3)   ! m/s^2
     type(group_reader_t) :: r
@@ -48,7 +48,7 @@ contains
     unit = ''
     minimum = 0
     maximum = 0
-    associate (p => config%params)
+    associate (p => rider)
       call open_group(input, 'rider', r, status)
       call r%get('sex', sex, status)
       call r%get('mass', p%body%mass, status)
@@ -64,7 +64,7 @@ contains
       call r%get('v0', p%v0, status)
       call r%get('heading0_deg', heading_deg, status)
       call r%get('speed0', p%speed0, status)
-      call r%get('min_speed', config%min_speed, status)
+      call r%get('min_speed', options%min_speed, status)
       call r%get_parts('limit_quantity', quantity, count_text, status, given=has_quantity)
       call r%get_parts('limit_unit', unit, count_text, status, given=has_unit)
       call r%get_parts('limit_min', minimum, count_text, status, given=has_min)
@@ -95,7 +95,7 @@ contains
         return
       end if
     end do
-    allocate (config%limits(n))
+    allocate (limits(n))
     do k = 1, n
       if (.not. has_unit(k)) then
         call r%invalid('limit_unit('//format_integer(k)//')', '(not given)', 'every limit needs its unit, '// &
@@ -103,7 +103,7 @@ contains
         return
       end if
       call new_ride_limit(quantity(k), unit(k), minimum(k), has_min(k), maximum(k), has_max(k), &
-                          norm2(config%params%gravity), config%limits(k), problem)
+                          norm2(rider%gravity), limits(k), problem)
       if (len(problem) > 0) then
         call r%invalid('limit_quantity, limit_unit ('//format_integer(k)//')', ''''//trim(quantity(k))//''', '''// &
                        trim(unit(k))//'''', problem, status)

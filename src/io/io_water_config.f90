@@ -1,34 +1,22 @@
 !> &channel and &water: the channel the water runs in (when no fitted slide is
-!> given) and the water model's parameters, start and outputs (docs/water.md).
+!> given) and the water model's parameters, start and outputs (docs/water.md),
+!> read into the water layer's own description (water_run's
+!> water_description_t): io reads, the water layer builds.
 module io_water_config
   use base_kinds, only: wp
   use base_text, only: format_integer
-  use base_constants, only: pi, standard_gravity
+  use base_constants, only: pi
   use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
   use io_input, only: input_text_t, group_reader_t, open_group, format_real
   use geometry_tube, only: tube_surface_t, new_straight_tube, new_helix_tube, new_s_bend_tube
-  use water_streamline, only: default_f1, default_f2, default_f3, CORRECTION_FULL, &
-    CORRECTION_NO_RADIUS, CORRECTION_OFF
-  use water_flow, only: water_start_t, START_EDGES, START_HEIGHT, START_SPEED, START_HEIGHT_SPEED
+  use water_streamline, only: CORRECTION_FULL, CORRECTION_NO_RADIUS, CORRECTION_OFF
+  use water_flow, only: START_EDGES, START_HEIGHT, START_SPEED, START_HEIGHT_SPEED
+  use water_run, only: water_description_t
   implicit none (type, external)
   private
-  public :: water_config_t, read_water_config, read_channel_config, max_stations
+  public :: read_water_config, read_channel_config, max_stations
 
   integer, parameter :: max_stations = 500
-
-  type :: water_config_t
-    real(wp) :: flow_rate = 0.004_wp                ! m^3/s
-    type(water_start_t) :: start
-    real(wp) :: f1 = default_f1, f2 = default_f2, f3 = default_f3   ! kg/m, kg, kg m
-    integer :: correction = CORRECTION_FULL
-    real(wp) :: mass = 1                            ! kg
-    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]
-    real(wp) :: min_speed = 0.05_wp                 ! m/s
-    real(wp) :: min_criticality = 0.02_wp           ! 1
-    real(wp), allocatable :: stations(:)            ! m of centerline arc length
-    real(wp) :: table_step = 0.1_wp                 ! m
-    logical :: edges = .true.
-  end type water_config_t
 
 contains
 
@@ -90,9 +78,12 @@ contains
 
   end subroutine read_channel_config
 
+  !> The water's part of `config` from &water: everything but the slide
+  !> (&surface or &channel) and the solver (&solver or &water_solver), which
+  !> it keeps; a variable not given keeps its value (the type's default).
   subroutine read_water_config(input, config, status)
     type(input_text_t), intent(in) :: input
-    type(water_config_t), intent(out) :: config
+    type(water_description_t), intent(inout) :: config
     type(status_t), intent(inout) :: status
     character(len=12) :: start, correction
     type(group_reader_t) :: r

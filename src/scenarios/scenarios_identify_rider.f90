@@ -20,7 +20,7 @@ module scenarios_identify_rider
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_geometry_config, only: geometry_groups
-  use io_rider_config, only: rider_config_t, read_rider_config, read_ride_gravity
+  use io_rider_config, only: read_rider_config, read_ride_gravity
   use io_rider_identification_config, only: rider_identification_config_t, read_rider_identification_config
   use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t
@@ -29,6 +29,7 @@ module scenarios_identify_rider
   use scenarios_water, only: build_water, write_slide_grid
   use scenarios_ride, only: refuse_start
   use rider_ride, only: check_ride_start
+  use design_ride_evaluation, only: ride_limit_t
   implicit none (type, external)
   private
   public :: run_identify_rider, identify_rider_groups
@@ -49,7 +50,7 @@ contains
     type(solver_config_t) :: solver
     type(water_description_t) :: water_description
     type(water_result_t) :: water
-    type(rider_config_t) :: rider
+    type(ride_limit_t), allocatable :: limits(:)
     real(wp) :: gravity(3)   ! m/s^2
     type(rider_identification_config_t) :: config
     type(rider_identification_t) :: setup
@@ -67,39 +68,37 @@ contains
     ! one gravity for the water and the rider
     if (status%ok()) call read_ride_gravity(input, gravity, status)
     if (status%ok()) water_description%gravity = gravity
-    if (status%ok()) call read_rider_config(input, rider, status, gravity)
+    if (status%ok()) call read_rider_config(input, setup%params, setup%options, limits, status, gravity)
     if (status%ok()) call read_rider_identification_config(input, config, status)
     if (.not. status%ok()) return
-    if (allocated(rider%limits)) then
-      if (size(rider%limits) > 0) then
+    if (allocated(limits)) then
+      if (size(limits) > 0) then
         call set_status(status, STATUS_INVALID_INPUT, input%name//': &rider: limit_quantity is not used by '// &
                         'identify_rider (a fit judges no limits; run the ride scenario with the identified mu)')
         return
       end if
     end if
     setup%slide = water_description%slide
-    setup%params = rider%params
     setup%options%ode = solver%options
     setup%options%output_step = solver%output_step
-    setup%options%min_speed = rider%min_speed
-    setup%options%max_duration = 10*setup%slide%length()/rider%min_speed
+    setup%options%max_duration = 10*setup%slide%length()/setup%options%min_speed
     if (solver%duration_given) setup%options%max_duration = solver%duration
     setup%data = config%data
     setup%threads = config%threads
-    setup%with_water = rider%params%drag
+    setup%with_water = setup%params%drag
     call new_rider_identification(setup, status)
     if (.not. status%ok()) call prefix_status(status, '&identify')
     ! the same start the ride scenario refuses is refused here (not a failed fit)
     if (status%ok()) then
       call check_ride_start(setup%params, setup%slide, setup%options, status)
       if (.not. status%ok()) then
-        call refuse_start(input, rider, status)
+        call refuse_start(input, setup%params, status)
         return
       end if
     end if
-    if (.not. (rider%params%mu >= config%options%lower .and. rider%params%mu <= config%options%upper)) &
+    if (.not. (setup%params%mu >= config%options%lower .and. setup%params%mu <= config%options%upper)) &
       call set_status(status, STATUS_INVALID_INPUT, 'the start value &rider mu = '// &
-                      format_short(rider%params%mu)//' must lie within &identify lower, upper = '// &
+                      format_short(setup%params%mu)//' must lie within &identify lower, upper = '// &
                       format_short(config%options%lower)//', '//format_short(config%options%upper))
     if (.not. status%ok()) then
       call prefix_status(status, input%name)
@@ -125,7 +124,7 @@ contains
       call log_info('identify_rider: fitting mu_D to '//format_integer(size(setup%data%station_arc_length))// &
                     ' stations and '//format_integer(size(setup%data%segment_start))//' segments')
       call cpu_time(cpu0)
-      call fit_rider_friction(setup, config%options, rider%params%mu, fit, run_status)
+      call fit_rider_friction(setup, config%options, setup%params%mu, fit, run_status)
       call cpu_time(cpu1)
       if (run_status%ok()) call write_fit(file, setup, config, fit, cpu1 - cpu0, write_status)
     end if

@@ -16,7 +16,7 @@ module scenarios_ride
   use geometry_tube, only: tube_surface_t
   use geometry_cross_section, only: circle_section_t
   use water_run, only: water_description_t
-  use rider_model, only: N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
+  use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
   use rider_ride, only: ride_result_t, ride_series_t, check_ride_start
   use design_ride_evaluation, only: limit_report_unit, ride_limit_t, quantities_without_limit
   use design_ride_report, only: ride_report_t
@@ -25,7 +25,7 @@ module scenarios_ride
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
   use io_geometry_config, only: geometry_groups
-  use io_rider_config, only: rider_config_t, read_rider_config, read_ride_gravity
+  use io_rider_config, only: read_rider_config, read_ride_gravity
   use io_evaluation_config, only: evaluation_config_t, read_evaluation_config
   use io_hdf5, only: result_file_t
   use io_water_results, only: write_water_results
@@ -116,7 +116,6 @@ contains
     logical, intent(out) :: fail_on_limit
     type(status_t), intent(inout) :: status
     type(solver_config_t) :: solver, defaults
-    type(rider_config_t) :: rider
     real(wp) :: gravity(3)   ! m/s^2
 
     fail_on_limit = .false.
@@ -128,16 +127,16 @@ contains
     ! one gravity for the water and the rider
     if (status%ok()) call read_ride_gravity(input, gravity, status)
     if (status%ok()) description%water%gravity = gravity
-    if (status%ok()) call read_rider_config(input, rider, status, gravity)
-    if (status%ok()) call read_limit_gate(input, run, rider%limits, fail_on_limit, status)
+    if (status%ok()) call read_rider_config(input, description%rider, description%options, description%limits, &
+                                            status, gravity)
+    if (status%ok()) call read_limit_gate(input, run, description%limits, fail_on_limit, status)
     if (.not. status%ok()) return
     associate (slide => description%water%slide, options => description%options)
-      call check_sphere_radii(input, rider, slide, status)
+      call check_sphere_radii(input, description%rider, slide, status)
       if (.not. status%ok()) return
       options%ode = solver%options
       options%output_step = solver%output_step
-      options%min_speed = rider%min_speed
-      options%max_duration = safety_factor*slide%length()/rider%min_speed
+      options%max_duration = safety_factor*slide%length()/options%min_speed
       ! the outputs of a duration the user gave are bounded before the run;
       ! without it the series grows with what the ride records (a safety
       ! bound on the time must not size, or refuse, a sound ride)
@@ -146,14 +145,12 @@ contains
         call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
         if (.not. status%ok()) return
       end if
-      call check_ride_start(rider%params, slide, options, status)
+      call check_ride_start(description%rider, slide, options, status)
       if (.not. status%ok()) then
-        call refuse_start(input, rider, status)
+        call refuse_start(input, description%rider, status)
         return
       end if
     end associate
-    description%rider = rider%params
-    description%limits = rider%limits
   end subroutine read_ride_description
 
   !> Whether a limit exceeded fails the run (exit status 4): --fail-on-limit
@@ -208,9 +205,9 @@ contains
   !> start is given (&rider u0), with the values that make it.
   subroutine refuse_start(input, rider, status)
     type(input_text_t), intent(in) :: input
-    type(rider_config_t), intent(in) :: rider
+    type(rider_params_t), intent(in) :: rider
     type(status_t), intent(inout) :: status
-    associate (p => rider%params)
+    associate (p => rider)
       call set_status(status, STATUS_INVALID_INPUT, where_given(input, 'rider', 'u0')//': &rider: the start u0 = '// &
                       format_short(p%u0)//', v0 = '//format_short(p%v0)//', heading0_deg = '// &
                       format_short(p%heading0*180/pi)//', speed0 = '//format_short(p%speed0)//' (height = '// &
@@ -221,16 +218,16 @@ contains
   !> The spheres must fit in the tube (a circular section's radius).
   subroutine check_sphere_radii(input, rider, tube, status)
     type(input_text_t), intent(in) :: input
-    type(rider_config_t), intent(in) :: rider
+    type(rider_params_t), intent(in) :: rider
     type(tube_surface_t), intent(in) :: tube
     type(status_t), intent(inout) :: status
     integer :: k
     select type (section => tube%section)
     type is (circle_section_t)
       do k = 1, N_CONTACTS
-        if (rider%params%drag_radius(k) > section%radius) then
+        if (rider%drag_radius(k) > section%radius) then
           call invalid(input, 'rider', 'drag_radius('//format_integer(k)//')', &
-                       format_real(rider%params%drag_radius(k)), 'the '//trim(contact_names(k))// &
+                       format_real(rider%drag_radius(k)), 'the '//trim(contact_names(k))// &
                        ' sphere must fit in the tube: at most its radius '//format_real(section%radius)//' m', &
                        status)
           return

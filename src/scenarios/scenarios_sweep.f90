@@ -25,7 +25,7 @@ module scenarios_sweep
   use io_output_files, only: claim_output
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
-  use io_rider_config, only: rider_config_t, read_rider_config, read_ride_gravity
+  use io_rider_config, only: read_rider_config, read_ride_gravity
   use io_sweep_config, only: sweep_config_t, read_sweep_config
   use io_sweep_results, only: write_sweep_results, write_sweep_csv
   use io_hdf5, only: result_file_t
@@ -51,7 +51,6 @@ contains
     type(run_config_t), intent(in) :: run
     type(status_t), intent(inout) :: status
     type(solver_config_t) :: solver, defaults
-    type(rider_config_t) :: rider
     real(wp) :: gravity(3)   ! m/s^2
     type(sweep_config_t) :: config
     type(sweep_description_t) :: sweep
@@ -74,12 +73,12 @@ contains
     ! one gravity for the water and the rider
     if (status%ok()) call read_ride_gravity(input, gravity, status)
     if (status%ok()) sweep%water%gravity = gravity
-    if (status%ok()) call read_rider_config(input, rider, status, gravity)
-    if (status%ok()) call read_limit_gate(input, run, rider%limits, fail_on_limit, status)
+    if (status%ok()) call read_rider_config(input, sweep%rider, options, sweep%limits, status, gravity)
+    if (status%ok()) call read_limit_gate(input, run, sweep%limits, fail_on_limit, status)
     if (.not. status%ok()) return
-    call check_sphere_radii(input, rider, sweep%water%slide, status)
+    call check_sphere_radii(input, sweep%rider, sweep%water%slide, status)
     if (.not. status%ok()) return
-    associate (p => rider%params, w => sweep%water)
+    associate (p => sweep%rider, w => sweep%water)
       base = 0
       base(V_SEX) = p%body%sex
       base(V_MASS) = p%body%mass
@@ -98,8 +97,7 @@ contains
     if (.not. status%ok()) return
     options%ode = solver%options
     options%output_step = solver%output_step
-    options%min_speed = rider%min_speed
-    options%max_duration = safety_factor*sweep%water%slide%length()/rider%min_speed
+    options%max_duration = safety_factor*sweep%water%slide%length()/options%min_speed
     options%progress_seconds = 0   ! the sweep reports progress, not each ride
     ! as the ride: a duration given bounds the outputs before the run, else they grow as each ride goes
     if (solver%duration_given) then
@@ -107,9 +105,7 @@ contains
       call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
       if (.not. status%ok()) return
     end if
-    sweep%rider = rider%params
     sweep%options = options
-    sweep%limits = rider%limits
     sweep%values = config%values
     call check_waters(input, sweep, status)
     if (.not. status%ok()) return

@@ -19,7 +19,7 @@ module scenarios_water
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
   use io_geometry_config, only: geometry_groups
   use io_surface_config, only: read_surface_config
-  use io_water_config, only: water_config_t, read_water_config, read_channel_config
+  use io_water_config, only: read_water_config, read_channel_config
   use io_hdf5, only: result_file_t, run_outcome
   use io_water_results, only: write_water_results
   use io_system, only: write_standard_output
@@ -54,7 +54,6 @@ contains
     type(status_t), intent(inout) :: status
     logical, intent(in), optional :: stage
     type(solver_config_t) :: solver
-    type(water_config_t) :: config
     class(surface_t), allocatable :: surface
     type(channel_t) :: channel
     type(streamline_t) :: model
@@ -100,20 +99,9 @@ contains
                                  ' has no &surface)'
       end if
     end if
-    call read_water_config(input, config, status)
+    call read_water_config(input, description, status)
     if (.not. status%ok()) return
 
-    description%flow_rate = config%flow_rate
-    description%f1 = config%f1; description%f2 = config%f2; description%f3 = config%f3
-    description%start = config%start
-    description%correction = config%correction
-    description%mass = config%mass
-    description%gravity = config%gravity
-    description%min_speed = config%min_speed
-    description%min_criticality = config%min_criticality
-    description%stations = config%stations
-    description%edges = config%edges
-    description%table_step = config%table_step
     description%solver%ode = solver%options
     description%solver%output_step = solver%output_step
     ! without &solver duration the water runs to the end of the slide
@@ -127,36 +115,36 @@ contains
     channel = new_channel(description%slide)
     call channel%u_range(u_min, u_max)
     call channel%v_range(v_min, v_max)
-    if (config%start%u0 < u_min .or. config%start%u0 >= u_max) then
-      call invalid(input, 'water', 'u0', format_real(config%start%u0), 'the start must lie on the slide, ' // &
+    if (description%start%u0 < u_min .or. description%start%u0 >= u_max) then
+      call invalid(input, 'water', 'u0', format_real(description%start%u0), 'the start must lie on the slide, ' // &
                    'u in ['//format_real(u_min)//', '//format_real(u_max)//')', status)
       return
     end if
     ! the start edges (start = 'edges') or the water middle v0 (other starts)
     ! must lie on an open section's surface; the message names what was given
-    if (config%start%mode == START_EDGES) then
-      if (config%start%v_left > v_max .or. config%start%v_right < v_min) then
-        call invalid(input, 'water', 'v_left0, v_right0', format_real(config%start%v_left)//', '// &
-                     format_real(config%start%v_right), 'the start edges must lie inside the cross-section, '// &
+    if (description%start%mode == START_EDGES) then
+      if (description%start%v_left > v_max .or. description%start%v_right < v_min) then
+        call invalid(input, 'water', 'v_left0, v_right0', format_real(description%start%v_left)//', '// &
+                     format_real(description%start%v_right), 'the start edges must lie inside the cross-section, '// &
                      'v in ['//format_real(v_min)//', '//format_real(v_max)//'] rad', status)
         return
       end if
-    else if (config%start%v0 < v_min .or. config%start%v0 > v_max) then
-      call invalid(input, 'water', 'v0', format_real(config%start%v0), &
+    else if (description%start%v0 < v_min .or. description%start%v0 > v_max) then
+      call invalid(input, 'water', 'v0', format_real(description%start%v0), &
                    'the start must lie inside the cross-section, v in ['//format_real(v_min)//', '// &
                    format_real(v_max)//'] rad', status)
       return
     end if
     total = channel%arc_length(u_max)
-    if (total/config%table_step > max_table_rows) then
-      call invalid(input, 'water', 'table_step', format_real(config%table_step), 'the table over the '// &
+    if (total/description%table_step > max_table_rows) then
+      call invalid(input, 'water', 'table_step', format_real(description%table_step), 'the table over the '// &
                    format_real(total)//' m of slide would have more than '//format_real(max_table_rows)// &
                    ' rows; raise table_step', status)
       return
     end if
-    do i = 1, size(config%stations)
-      if (config%stations(i) > total) then
-        call invalid(input, 'water', 'stations', format_real(config%stations(i)), &
+    do i = 1, size(description%stations)
+      if (description%stations(i) > total) then
+        call invalid(input, 'water', 'stations', format_real(description%stations(i)), &
                      'stations must lie on the slide (arc length <= '//format_real(total)//' m)', status)
         return
       end if

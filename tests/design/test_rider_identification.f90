@@ -19,11 +19,12 @@ program test_rider_identification
   use base_kinds, only: wp
   use base_status, only: status_t
   use io_input, only: input_text_t, load_input_file
-  use io_rider_config, only: rider_config_t, read_rider_config
+  use io_rider_config, only: read_rider_config
   use scenarios_water, only: build_water
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_model, only: rider_params_t, N_CONTACTS
-  use rider_ride, only: ride_result_t, simulate_ride
+  use rider_ride, only: ride_result_t, ride_options_t, simulate_ride
+  use design_ride_evaluation, only: ride_limit_t
   use design_rider_identification, only: rider_identification_t, rider_fit_options_t, rider_fit_t, &
     rider_stations_t, new_rider_identification, simulate_rider, fit_rider_friction, rider_body_sensitivity
   use testing, only: check, check_close, finish_tests, failures
@@ -53,17 +54,19 @@ contains
     type(status_t) :: status
     type(water_description_t) :: description
     type(water_result_t) :: water
-    type(rider_config_t) :: rider
+    type(rider_params_t) :: rider
+    type(ride_options_t) :: options
+    type(ride_limit_t), allocatable :: limits(:)
     type(rider_stations_t) :: simulated
     real(wp) :: mid(n_segments), cpu0, cpu1
     call load_input_file(path, input, status)
     if (status%ok()) call build_water(input, description, status, stage=.true.)
-    if (status%ok()) call read_rider_config(input, rider, status)
+    if (status%ok()) call read_rider_config(input, rider, options, limits, status)
     if (status%ok()) call compute_water(description, water, status)
     call check(status%ok(), path//': '//status%text())
     if (.not. status%ok()) return
     setup%slide = description%slide
-    setup%params = rider%params
+    setup%params = rider
     setup%params%mu = mu_true
     setup%with_water = .true.
     setup%water = water%field
