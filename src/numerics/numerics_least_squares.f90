@@ -58,11 +58,17 @@
 !> pushes its own record above; each thread has its own stack. `top` is the
 !> same on return as on entry. Debian's libminpack keeps no writable static
 !> data (only DATA constants), so MINPACK itself may run in several threads.
+!>
+!> The change of variables is numerics_bounded_variables; LMDER's interface
+!> and its info in words numerics_lmder; the difference Jacobians and the
+!> covariance the submodule numerics_least_squares_jacobians.
 module numerics_least_squares
   use base_kinds, only: wp
-  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, &
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, &
     STATUS_SOLVER, STATUS_NOT_CONVERGED, STATUS_INTERNAL, STATUS_DOMAIN
-  use numerics_linear_algebra, only: normal_matrix_inverse
+  use numerics_lmder, only: lmder, lmder_stop
+  use numerics_bounded_variables, only: KIND_FIXED, bound_kind, near_lower, near_upper, start_inside, &
+    to_p, to_z
   implicit none (type, external)
   private
   public :: least_squares_problem_t, ls_residuals_i
@@ -119,9 +125,6 @@ module numerics_least_squares
     logical, allocatable :: at_bound(:)       !< held on a bound (or l == u), not estimated
   end type least_squares_result_t
 
-  integer, parameter :: KIND_FREE = 0, KIND_LOWER = 1, KIND_UPPER = 2, KIND_BOTH = 3, &
-                        KIND_FIXED = 4
-
   !> One fit in progress: problem, transformation, work arrays and the fit it is
   !> nested in (see the module comment). A local variable of solve_least_squares.
   type :: fit_t
@@ -156,28 +159,54 @@ module numerics_least_squares
   type(fit_t), pointer :: top => null()
   !$omp threadprivate(top)
 
-  abstract interface
-    subroutine lmder_fcn_i(m, n, x, fvec, fjac, ldfjac, iflag)
-      import :: wp
-      integer, intent(in) :: m, n, ldfjac
-      real(wp), intent(in) :: x(n)
-      real(wp), intent(inout) :: fvec(m), fjac(ldfjac, n)
-      integer, intent(inout) :: iflag
-    end subroutine lmder_fcn_i
-  end interface
-
+  ! Defined in the submodule numerics_least_squares_jacobians (gfortran makes
+  ! a private procedure of the module local to its object file: what the
+  ! submodule calls is defined there).
   interface
-    !> MINPACK (original Fortran 77), libminpack.
-    subroutine lmder(fcn, m, n, x, fvec, fjac, ldfjac, ftol, xtol, gtol, maxfev, diag, mode, &
-                     factor, nprint, info, nfev, njev, ipvt, qtf, wa1, wa2, wa3, wa4)
-      import :: wp, lmder_fcn_i
-      procedure(lmder_fcn_i) :: fcn
-      integer, intent(in) :: m, n, ldfjac, maxfev, mode, nprint
-      real(wp), intent(inout) :: x(n), fvec(m), fjac(ldfjac, n), diag(n)
-      real(wp), intent(in) :: ftol, xtol, gtol, factor
-      integer, intent(out) :: info, nfev, njev, ipvt(n)
-      real(wp), intent(inout) :: qtf(n), wa1(n), wa2(n), wa3(n), wa4(m)
-    end subroutine lmder
+    !> fit%p from MINPACK's unknowns z.
+    pure module subroutine set_parameters(fit, z)
+      type(fit_t), intent(inout) :: fit
+      real(wp), intent(in) :: z(:)
+    end subroutine set_parameters
+
+    !> r(p), refused when not finite.
+    recursive module subroutine evaluate_residuals(fit, p, r, status)
+      type(fit_t), intent(inout) :: fit
+      real(wp), intent(in) :: p(:)
+      real(wp), intent(out) :: r(:)
+      type(status_t), intent(inout) :: status
+    end subroutine evaluate_residuals
+
+    !> A residual that is not finite is a solver failure.
+    pure module subroutine check_finite(r, status)
+      real(wp), intent(in) :: r(:)
+      type(status_t), intent(inout) :: status
+    end subroutine check_finite
+
+    !> dr/dz by forward differences (numerics_least_squares_jacobians).
+    module recursive subroutine difference_jacobian(fit, z, r, fjac, status)
+      type(fit_t), intent(inout) :: fit
+      real(wp), intent(in) :: z(:), r(:)
+      real(wp), intent(out) :: fjac(:, :)
+      type(status_t), intent(inout) :: status
+    end subroutine difference_jacobian
+
+    !> dr/dp at the optimum where it is needed (numerics_least_squares_jacobians).
+    module recursive subroutine jacobian_at_optimum(fit, options, r, result, status)
+      type(fit_t), intent(inout) :: fit
+      type(least_squares_options_t), intent(in) :: options
+      real(wp), intent(in) :: r(:)
+      type(least_squares_result_t), intent(inout) :: result
+      type(status_t), intent(out) :: status
+    end subroutine jacobian_at_optimum
+
+    !> s^2 (J^T J)^(-1) over the free parameters (numerics_least_squares_jacobians).
+    module subroutine covariance(fit, m, r, result)
+      type(fit_t), intent(in) :: fit
+      integer, intent(in) :: m
+      real(wp), intent(in) :: r(:)
+      type(least_squares_result_t), intent(inout) :: result
+    end subroutine covariance
   end interface
 
 contains
@@ -275,19 +304,12 @@ contains
       snapped = .false.
       do i = 1, n
         if (result%at_bound(i)) cycle
-        if (has_lower(fit%kind(i))) then
-          if (fit%p(i) - lower(i) <= options%bound_tolerance*max(1.0_wp, abs(lower(i))) &
-              .and. gradient(i) >= 0) then
-            fit%p(i) = lower(i)
-            result%at_bound(i) = .true.
-          end if
-        end if
-        if (has_upper(fit%kind(i)) .and. .not. result%at_bound(i)) then
-          if (upper(i) - fit%p(i) <= options%bound_tolerance*max(1.0_wp, abs(upper(i))) &
-              .and. gradient(i) <= 0) then
-            fit%p(i) = upper(i)
-            result%at_bound(i) = .true.
-          end if
+        if (near_lower(fit%kind(i), fit%p(i), lower(i), options%bound_tolerance) .and. gradient(i) >= 0) then
+          fit%p(i) = lower(i)
+          result%at_bound(i) = .true.
+        else if (near_upper(fit%kind(i), fit%p(i), upper(i), options%bound_tolerance) .and. gradient(i) <= 0) then
+          fit%p(i) = upper(i)
+          result%at_bound(i) = .true.
         end if
         snapped = snapped .or. result%at_bound(i)
       end do
@@ -402,15 +424,12 @@ contains
                qtf, wa1, wa2, wa3, wa4)
     top => fit%below
     call set_parameters(fit, z)
-    result%info = info
     result%evaluations = result%evaluations + fit%evaluations
     result%jacobian_evaluations = result%jacobian_evaluations + njev
     if (info < 0 .and. fit%budget_spent) info = 5
 
-    ! The one translation of LMDER's info (MINPACK's lmder documentation):
-    ! the test that ended the solve, in words, and the status it means.
-    select case (info)
-    case (:-1)
+    result%info = info
+    if (info < 0) then   ! the callback stopped the solve
       result%stop_test = 'problem'
       if (.not. fit%status%ok()) then
         status = fit%status   ! the problem's own reason, unchanged
@@ -419,80 +438,12 @@ contains
         result%stop_reason = 'stopped by the callback without a status'
         call set_status(status, STATUS_INTERNAL, 'LMDER '//result%stop_reason)
       end if
-    case (0)
-      result%stop_test = 'input'
-      result%stop_reason = 'improper input parameters (info 0)'
-      call set_status(status, STATUS_INVALID_INPUT, 'LMDER info = 0: improper input parameters')
-    case (1)
-      result%stop_test = 'ftol'
-      result%stop_reason = 'ftol test (info 1): the actual and predicted relative reductions of the sum of '// &
-                           'squares in a step are at most ftol'
-    case (2)
-      result%stop_test = 'xtol'
-      result%stop_reason = 'xtol test (info 2): the relative change of the parameters in a step is at most '// &
-                           'xtol (also the end of a trust region shrunk by rejected steps)'
-    case (3)
-      result%stop_test = 'ftol+xtol'
-      result%stop_reason = 'ftol and xtol tests (info 3): the relative reduction of the sum of squares is at '// &
-                           'most ftol and the relative change of the parameters at most xtol'
-    case (4)
-      result%stop_test = 'gtol'
-      result%stop_reason = 'gtol test (info 4): the residuals are orthogonal to every column of the Jacobian '// &
-                           'within gtol (a gradient test)'
-    case (5)
-      result%info = 5
-      result%stop_test = 'max_evaluations'
-      result%stop_reason = 'evaluation budget (info 5): max_evaluations reached before convergence'
-      call set_status(status, STATUS_NOT_CONVERGED, &
-        'LMDER info = 5: max_evaluations reached before convergence')
-    case (6)
-      result%stop_test = 'ftol'
-      result%stop_reason = 'ftol too small (info 6): no further reduction of the sum of squares is possible '// &
-                           'in machine precision'
-    case (7)
-      result%stop_test = 'xtol'
-      result%stop_reason = 'xtol too small (info 7): no further improvement of the parameters is possible in '// &
-                           'machine precision'
-    case (8)
-      result%stop_test = 'gtol'
-      result%stop_reason = 'gtol too small (info 8): the residuals are orthogonal to the columns of the '// &
-                           'Jacobian in machine precision'
-    case default
-      result%stop_test = 'unknown'
-      result%stop_reason = 'unknown info code'
-      call set_status(status, STATUS_SOLVER, 'LMDER returned an unknown info code')
-    end select
+    else
+      call lmder_stop(info, result%stop_test, result%stop_reason, status)
+    end if
     ! MINPACK's final r belongs to its final z: a rejected trial (and its
     ! stand-in residuals) never becomes the current point.
   end subroutine run_minpack
-
-  !> fit%p from MINPACK's unknowns z (the fixed parameters stay as they are).
-  pure subroutine set_parameters(fit, z)
-    type(fit_t), intent(inout) :: fit
-    real(wp), intent(in) :: z(:)
-    integer :: k
-    do k = 1, size(z)
-      associate (i => fit%free(k))
-        call to_p(fit%kind(i), fit%lower(i), fit%upper(i), z(k), fit%p(i), fit%dpdz(i))
-      end associate
-    end do
-  end subroutine set_parameters
-
-  recursive subroutine evaluate_residuals(fit, p, r, status)
-    type(fit_t), intent(inout) :: fit
-    real(wp), intent(in) :: p(:)
-    real(wp), intent(out) :: r(:)
-    type(status_t), intent(inout) :: status
-    call fit%problem%residuals(p, r, status)
-    call check_finite(r, status)
-  end subroutine evaluate_residuals
-
-  pure subroutine check_finite(r, status)
-    real(wp), intent(in) :: r(:)
-    type(status_t), intent(inout) :: status
-    if (status%ok() .and. .not. all(abs(r) <= huge(r))) &
-      call set_status(status, STATUS_SOLVER, 'least squares: a residual is not finite')
-  end subroutine check_finite
 
   !> iflag 1: residuals (a rejectable failure after the start becomes a rejected
   !> step, see the module comment); 2: dr/dz over the free parameters.
@@ -554,322 +505,8 @@ contains
     end if
   end subroutine lmder_callback
 
-  !> dr/dz by forward differences as LMDIF's fdjac2 forms them, all columns
-  !> in one batch. A failed point is retried mirrored (backward difference).
-  recursive subroutine difference_jacobian(fit, z, r, fjac, status)
-    type(fit_t), intent(inout) :: fit
-    real(wp), intent(in) :: z(:), r(:)
-    real(wp), intent(out) :: fjac(:, :)
-    type(status_t), intent(inout) :: status
-    real(wp) :: eps, h(size(z)), zj(size(z))
-    integer :: j
 
-    eps = sqrt(max(fit%epsfcn, epsilon(1.0_wp)))
-    do j = 1, size(z)
-      h(j) = eps*abs(z(j))
-      if (h(j) == 0) h(j) = eps
-    end do
-    call batch_at(fit, z, h, status)
-    if (.not. status%ok()) return
-    do j = 1, size(z)
-      if (.not. fit%statuses(j)%ok()) then   ! mirror the step once
-        h(j) = -h(j)
-        zj = z
-        zj(j) = z(j) + h(j)
-        call set_parameters(fit, zj)
-        fit%statuses(j) = status_t()
-        call evaluate_residuals(fit, fit%p, fit%values(:, j), fit%statuses(j))
-        fit%evaluations = fit%evaluations + 1
-        if (.not. fit%statuses(j)%ok()) then
-          status = fit%statuses(j)
-          call prefix_status(status, 'least squares: difference Jacobian (both sides of an accepted point)')
-          return
-        end if
-      end if
-      fjac(:, j) = (fit%values(:, j) - r)/h(j)
-    end do
-    call set_parameters(fit, z)   ! restore p and dP/dz at z
-  end subroutine difference_jacobian
 
-  !> Residuals at z + h_j e_j for every column j, as one batch.
-  recursive subroutine batch_at(fit, z, h, status)
-    type(fit_t), intent(inout) :: fit
-    real(wp), intent(in) :: z(:), h(:)
-    type(status_t), intent(inout) :: status
-    real(wp) :: zj(size(z))
-    integer :: j
-    do j = 1, size(z)
-      zj = z
-      zj(j) = z(j) + h(j)
-      call set_parameters(fit, zj)
-      fit%points(:, j) = fit%p
-      fit%statuses(j) = status_t()
-    end do
-    call set_parameters(fit, z)
-    call fit%problem%residuals_batch(fit%points, fit%values, fit%statuses)
-    fit%evaluations = fit%evaluations + size(z)
-    do j = 1, size(z)
-      call check_finite(fit%values(:, j), fit%statuses(j))
-      if (.not. fit%statuses(j)%ok() .and. .not. is_rejectable(fit%statuses(j))) then
-        status = fit%statuses(j)
-        return
-      end if
-    end do
-  end subroutine batch_at
 
-  !> The Jacobian at the optimum (original_jacobian) when the covariance is
-  !> wanted or a free parameter lies within bound_tolerance of a bound (the
-  !> snapping needs its gradient there); otherwise none (jacobian_ok false).
-  recursive subroutine jacobian_at_optimum(fit, options, r, result, status)
-    type(fit_t), intent(inout) :: fit
-    type(least_squares_options_t), intent(in) :: options
-    real(wp), intent(in) :: r(:)
-    type(least_squares_result_t), intent(inout) :: result
-    type(status_t), intent(out) :: status
-    logical :: near
-    integer :: i
-    near = .false.
-    do i = 1, size(fit%p)
-      if (result%at_bound(i)) cycle
-      if (has_lower(fit%kind(i))) near = near .or. &
-        fit%p(i) - fit%lower(i) <= options%bound_tolerance*max(1.0_wp, abs(fit%lower(i)))
-      if (has_upper(fit%kind(i))) near = near .or. &
-        fit%upper(i) - fit%p(i) <= options%bound_tolerance*max(1.0_wp, abs(fit%upper(i)))
-    end do
-    status = status_t()
-    fit%jacobian_ok = .false.
-    if (options%covariance .or. near) call original_jacobian(fit, options, r, result, status)
-  end subroutine jacobian_at_optimum
 
-  !> fit%jac = dr/dp at fit%p for the parameters not at a bound: the
-  !> problem's Jacobian, or differences that stay inside the bounds (central with
-  !> h = eps^(1/3) max(1, |p|), one-sided with sqrt(eps) max(1, |p|) near a
-  !> bound), all points in one batch. Where the model fails on one side (a
-  !> rejectable status) the other side gives a one-sided difference; where it
-  !> fails on both, jacobian_ok is false (no covariance, no snapping to bounds)
-  !> and the fit itself stands.
-  recursive subroutine original_jacobian(fit, options, r, result, status)
-    type(fit_t), intent(inout) :: fit
-    type(least_squares_options_t), intent(in) :: options
-    real(wp), intent(in) :: r(:)
-    type(least_squares_result_t), intent(inout) :: result
-    type(status_t), intent(out) :: status
-    real(wp), allocatable :: points(:, :), values(:, :), h(:)
-    type(status_t), allocatable :: statuses(:)
-    logical, allocatable :: central(:)
-    integer, allocatable :: first(:)
-    real(wp) :: eps
-    integer :: i, n, count, a, b
-
-    fit%jacobian_ok = .true.
-    if (fit%problem%has_jacobian()) then
-      call fit%problem%jacobian(fit%p, fit%jac, status)
-      result%jacobian_evaluations = result%jacobian_evaluations + 1
-      return
-    end if
-    n = size(fit%p)
-    eps = max(options%epsfcn, epsilon(1.0_wp))
-    allocate (h(n), central(n), first(n), points(n, 2*n))
-    count = 0
-    fit%jac = 0
-    do i = 1, n
-      if (result%at_bound(i)) cycle
-      first(i) = count + 1
-      h(i) = eps**(1.0_wp/3)*max(1.0_wp, abs(fit%p(i)))
-      central(i) = fit%p(i) - h(i) >= fit%lower(i) .and. fit%p(i) + h(i) <= fit%upper(i)
-      if (central(i)) then
-        points(:, count + 1) = fit%p
-        points(i, count + 1) = fit%p(i) + h(i)
-        points(:, count + 2) = fit%p
-        points(i, count + 2) = fit%p(i) - h(i)
-        count = count + 2
-      else
-        h(i) = sqrt(eps)*max(1.0_wp, abs(fit%p(i)))
-        if (fit%p(i) + h(i) > fit%upper(i)) h(i) = -h(i)
-        points(:, count + 1) = fit%p
-        points(i, count + 1) = fit%p(i) + h(i)
-        count = count + 1
-      end if
-    end do
-    if (count == 0) return
-    allocate (values(size(r), count), statuses(count))
-    call fit%problem%residuals_batch(points(:, 1:count), values, statuses)
-    result%evaluations = result%evaluations + count
-    result%jacobian_evaluations = result%jacobian_evaluations + 1
-    do i = 1, count
-      call check_finite(values(:, i), statuses(i))
-      if (.not. statuses(i)%ok()) then
-        if (.not. is_rejectable(statuses(i))) then
-          status = statuses(i)
-          call prefix_status(status, 'least squares: Jacobian at the optimum')
-          return
-        end if
-        fit%rejected = fit%rejected + 1
-        fit%last_rejection = statuses(i)%text()
-      end if
-    end do
-    do i = 1, n
-      if (result%at_bound(i)) cycle
-      a = first(i)
-      if (.not. central(i)) then
-        if (statuses(a)%ok()) then
-          fit%jac(:, i) = (values(:, a) - r)/h(i)
-        else
-          fit%jacobian_ok = .false.
-        end if
-        cycle
-      end if
-      b = a + 1
-      if (statuses(a)%ok() .and. statuses(b)%ok()) then
-        fit%jac(:, i) = (values(:, a) - values(:, b))/(2*h(i))
-      else if (statuses(a)%ok()) then   ! one-sided: h^(1/3) steps give ~eps^(1/3) accuracy
-        fit%jac(:, i) = (values(:, a) - r)/h(i)
-      else if (statuses(b)%ok()) then
-        fit%jac(:, i) = (r - values(:, b))/h(i)
-      else
-        fit%jacobian_ok = .false.
-      end if
-    end do
-  end subroutine original_jacobian
-
-  !> s^2 (J^T J)^(-1) over the free parameters (numerics_linear_algebra, by QR).
-  subroutine covariance(fit, m, r, result)
-    type(fit_t), intent(in) :: fit
-    integer, intent(in) :: m
-    real(wp), intent(in) :: r(:)
-    type(least_squares_result_t), intent(inout) :: result
-    real(wp), allocatable :: cov_free(:, :)
-    integer, allocatable :: free(:)
-    type(status_t) :: status
-    integer :: n, nf, i
-
-    n = size(fit%p)
-    allocate (result%covariance(n, n), result%standard_error(n))
-    result%covariance = 0
-    result%standard_error = 0
-    result%covariance_valid = .false.
-    free = pack([(i, i=1, n)], .not. result%at_bound)
-    nf = size(free)
-    if (nf == 0) then
-      result%covariance_valid = .true.
-      return
-    end if
-    if (m <= nf .or. .not. fit%jacobian_ok) then
-      result%covariance(free, free) = huge(1.0_wp)
-      result%standard_error(free) = huge(1.0_wp)
-      return
-    end if
-    allocate (cov_free(nf, nf))
-    call normal_matrix_inverse(fit%jac(:, free), cov_free, status)
-    if (.not. status%ok()) then   ! rank-deficient: some parameters are not identifiable
-      result%covariance(free, free) = huge(1.0_wp)
-      result%standard_error(free) = huge(1.0_wp)
-      return
-    end if
-    cov_free = sum(r**2)/(m - nf)*cov_free
-    result%covariance(free, free) = cov_free
-    result%standard_error(free) = sqrt([(cov_free(i, i), i=1, nf)])
-    result%covariance_valid = .true.
-  end subroutine covariance
-
-  ! ------------------------------------------------------ change of variables
-
-  elemental integer function bound_kind(lower, upper) result(kind)
-    real(wp), intent(in) :: lower, upper
-    logical :: lo, up
-    lo = lower > -huge(lower)
-    up = upper < huge(upper)
-    if (lo .and. up .and. lower == upper) then
-      kind = KIND_FIXED
-    else if (lo .and. up) then
-      kind = KIND_BOTH
-    else if (lo) then
-      kind = KIND_LOWER
-    else if (up) then
-      kind = KIND_UPPER
-    else
-      kind = KIND_FREE
-    end if
-  end function bound_kind
-
-  elemental logical function has_lower(kind)
-    integer, intent(in) :: kind
-    has_lower = kind == KIND_LOWER .or. kind == KIND_BOTH
-  end function has_lower
-
-  elemental logical function has_upper(kind)
-    integer, intent(in) :: kind
-    has_upper = kind == KIND_UPPER .or. kind == KIND_BOTH
-  end function has_upper
-
-  !> The start clamped into the box and moved off the bounds by 1e-3 of the
-  !> range (two bounds) or of max(1, |bound|) (one bound).
-  elemental real(wp) function start_inside(p, lower, upper, kind) result(q)
-    real(wp), intent(in) :: p, lower, upper
-    integer, intent(in) :: kind
-    real(wp), parameter :: margin = 1e-3_wp
-    q = p
-    select case (kind)
-    case (KIND_BOTH)
-      q = min(upper - margin*(upper - lower), max(lower + margin*(upper - lower), p))
-    case (KIND_LOWER)
-      q = max(lower + margin*max(1.0_wp, abs(lower)), p)
-    case (KIND_UPPER)
-      q = min(upper - margin*max(1.0_wp, abs(upper)), p)
-    case (KIND_FIXED)
-      q = lower
-    end select
-  end function start_inside
-
-  !> p = P(z) and dP/dz (see the module comment).
-  pure subroutine to_p(kind, lower, upper, z, p, dpdz)
-    integer, intent(in) :: kind
-    real(wp), intent(in) :: lower, upper, z
-    real(wp), intent(out) :: p, dpdz
-    real(wp) :: s, c, h
-    select case (kind)
-    case (KIND_BOTH)
-      c = (lower + upper)/2
-      h = (upper - lower)/2
-      p = min(upper, max(lower, c + h*sin((z - c)/h)))
-      dpdz = cos((z - c)/h)
-    case (KIND_LOWER)
-      s = sqrt(1 + z**2)
-      p = lower + z**2/(1 + s)
-      dpdz = z/s
-    case (KIND_UPPER)
-      s = sqrt(1 + z**2)
-      p = upper - z**2/(1 + s)
-      dpdz = -z/s
-    case (KIND_FIXED)
-      p = lower
-      dpdz = 0
-    case default
-      p = z
-      dpdz = 1
-    end select
-  end subroutine to_p
-
-  !> z with P(z) = p, for p inside the box.
-  pure real(wp) function to_z(kind, lower, upper, p) result(z)
-    integer, intent(in) :: kind
-    real(wp), intent(in) :: lower, upper, p
-    real(wp) :: w, c, h
-    select case (kind)
-    case (KIND_BOTH)
-      c = (lower + upper)/2
-      h = (upper - lower)/2
-      z = c + h*asin(max(-1.0_wp, min(1.0_wp, (p - c)/h)))
-    case (KIND_LOWER)
-      w = max(0.0_wp, p - lower)
-      z = sqrt(w*(w + 2))   ! sqrt(1 + z^2) - 1 = w
-    case (KIND_UPPER)
-      w = max(0.0_wp, upper - p)
-      z = sqrt(w*(w + 2))
-    case (KIND_FIXED)
-      z = 0
-    case default
-      z = p
-    end select
-  end function to_z
 end module numerics_least_squares

@@ -12,21 +12,21 @@
 !> search and a Taylor shift (Horner, k(k+1)/2 multiply-adds per coordinate
 !> for all derivatives) instead of the recurrence's k(k+1)/2 divisions.
 !>
+!> Fitting is the submodule numerics_spline_curve_fit; the knot search and
+!> the Taylor shift are numerics_spline_kernels, shared with the surfaces.
 !> FITPACK's ier is translated in one place (ier_status). Interpolants
 !> (ier = -1) and least-squares polynomials (ier = -2) are accepted fits; for
 !> ier = 1..3 FITPACK still returns a usable approximation, which is kept, but
 !> the status reports why it does not meet the smoothing factor.
 module numerics_spline_curve
   use base_kinds, only: wp
-  use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT, STATUS_SOLVER, &
-    STATUS_NOT_CONVERGED, STATUS_INTERNAL
-  use fitpack_interfaces, only: parcur, clocur, concur
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
+  use numerics_spline_kernels, only: max_degree, factorial, find_interval, taylor_shift
   implicit none (type, external)
   private
   public :: spline_curve_t
 
-  integer, parameter :: max_degree = 5, max_dimension = 10
-  real(wp), parameter :: factorial(0:max_degree) = [1, 1, 2, 6, 24, 120]
+  integer, parameter :: max_dimension = 10
 
   !> 10-point Gauss-Legendre rule on [-1, 1] (positive nodes; symmetric).
   real(wp), parameter :: gl_x(5) = [0.1488743389816312108848260_wp, 0.4333953941292471907992659_wp, &
@@ -68,233 +68,32 @@ module numerics_spline_curve
     procedure :: fitpack_ier
   end type spline_curve_t
 
+  interface
+    !> Fits a spline curve of the given degree (1..5) to points(dim, m).
+    !> smoothing is FITPACK's s >= 0 (0 interpolates): sum_i (w_i |p_i - r(u_i)|)**2 <= s.
+    !> parameters: u_i, strictly increasing (default: chord length scaled to [0,1]).
+    !> weights: w_i > 0 (default 1). start_derivatives(dim, nb), end_derivatives(dim, ne):
+    !> column j is the (j-1)-th derivative prescribed at the first / last parameter
+    !> (position first); needs an odd degree and nb, ne <= (degree+1)/2 (concur).
+    !> Without parameters the derivatives refer to the chord-length parameter on [0,1].
+    !> periodic: closed curve (clocur); the first and last point must coincide.
+    !> The storage allows the interpolating spline, so FITPACK's ier = 1 cannot occur.
+    module subroutine fit(self, points, smoothing, degree, status, parameters, weights, start_derivatives, &
+                          end_derivatives, periodic)
+      class(spline_curve_t), intent(inout) :: self
+      real(wp), intent(in) :: points(:, :)
+      real(wp), intent(in) :: smoothing
+      integer, intent(in) :: degree
+      type(status_t), intent(out) :: status
+      real(wp), intent(in), optional :: parameters(:)
+      real(wp), intent(in), optional :: weights(:)
+      real(wp), intent(in), optional :: start_derivatives(:, :)
+      real(wp), intent(in), optional :: end_derivatives(:, :)
+      logical, intent(in), optional :: periodic
+    end subroutine fit
+  end interface
+
 contains
-
-  !> Fits a spline curve of the given degree (1..5) to points(dim, m).
-  !> smoothing is FITPACK's s >= 0 (0 interpolates): sum_i (w_i |p_i - r(u_i)|)**2 <= s.
-  !> parameters: u_i, strictly increasing (default: chord length scaled to [0,1]).
-  !> weights: w_i > 0 (default 1). start_derivatives(dim, nb), end_derivatives(dim, ne):
-  !> column j is the (j-1)-th derivative prescribed at the first / last parameter
-  !> (position first); needs an odd degree and nb, ne <= (degree+1)/2 (concur).
-  !> Without parameters the derivatives refer to the chord-length parameter on [0,1].
-  !> periodic: closed curve (clocur); the first and last point must coincide.
-  !> The storage allows the interpolating spline, so FITPACK's ier = 1 cannot occur.
-  subroutine fit(self, points, smoothing, degree, status, parameters, weights, start_derivatives, &
-                 end_derivatives, periodic)
-    class(spline_curve_t), intent(inout) :: self
-    real(wp), intent(in) :: points(:, :)
-    real(wp), intent(in) :: smoothing
-    integer, intent(in) :: degree
-    type(status_t), intent(out) :: status
-    real(wp), intent(in), optional :: parameters(:)
-    real(wp), intent(in), optional :: weights(:)
-    real(wp), intent(in), optional :: start_derivatives(:, :)
-    real(wp), intent(in), optional :: end_derivatives(:, :)
-    logical, intent(in), optional :: periodic
-
-    real(wp), allocatable :: u(:), x(:), w(:), xx(:), t(:), c(:), wrk(:), db(:), de(:), cp(:)
-    integer, allocatable :: iwrk(:)
-    integer :: idim, m, k, nest, nc, lwrk, n, ier, ipar, nb, ne, i, l, np
-    real(wp) :: fp, ub, ue, scale
-    logical :: closed, constrained
-
-    idim = size(points, 1)
-    m = size(points, 2)
-    k = degree
-    closed = .false.
-    if (present(periodic)) closed = periodic
-    nb = 0
-    ne = 0
-    if (present(start_derivatives)) nb = size(start_derivatives, 2)
-    if (present(end_derivatives)) ne = size(end_derivatives, 2)
-    constrained = nb > 0 .or. ne > 0
-
-    ! validation at the boundary; FITPACK's own checks then only catch what we missed
-    if (idim < 1 .or. idim > max_dimension) then
-      call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: the dimension must be 1..10')
-      return
-    end if
-    if (k < 1 .or. k > max_degree) then
-      call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: the degree must be 1..5')
-      return
-    end if
-    if (m < k + 1 .or. (closed .and. m < 3)) then
-      call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: fewer points than degree + 1')
-      return
-    end if
-    if (.not. (smoothing >= 0) .or. smoothing > huge(1.0_wp)) then
-      call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: the smoothing factor must be >= 0')
-      return
-    end if
-    if (.not. all(abs(points) <= huge(1.0_wp))) then
-      call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: points must be finite')
-      return
-    end if
-    if (present(parameters)) then
-      if (size(parameters) /= m) then
-        call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: one parameter per point needed')
-        return
-      end if
-      if (.not. all(parameters(2:m) > parameters(1:m - 1)) .or. &
-          .not. all(abs(parameters) <= huge(1.0_wp))) then
-        call set_status(status, STATUS_INVALID_INPUT, &
-                        'spline curve fit: parameters must be finite and strictly increasing')
-        return
-      end if
-    end if
-    if (present(weights)) then
-      if (size(weights) /= m) then
-        call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: one weight per point needed')
-        return
-      end if
-      if (.not. all(weights > 0) .or. .not. all(weights <= huge(1.0_wp))) then
-        call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: weights must be positive and finite')
-        return
-      end if
-    end if
-    if (constrained) then
-      if (closed) then
-        call set_status(status, STATUS_INVALID_INPUT, &
-                        'spline curve fit: end derivatives cannot be prescribed for a closed curve')
-        return
-      end if
-      if (mod(k, 2) == 0) then
-        call set_status(status, STATUS_INVALID_INPUT, &
-                        'spline curve fit: end derivatives need an odd degree (1, 3 or 5)')
-        return
-      end if
-      if (nb > (k + 1)/2 .or. ne > (k + 1)/2) then
-        call set_status(status, STATUS_INVALID_INPUT, &
-                        'spline curve fit: at most (degree+1)/2 derivatives (from the position on) per end')
-        return
-      end if
-      if (present(start_derivatives)) then
-        if (size(start_derivatives, 1) /= idim) then
-          call set_status(status, STATUS_INVALID_INPUT, &
-                          'spline curve fit: start derivatives must have the dimension of the points')
-          return
-        end if
-      end if
-      if (present(end_derivatives)) then
-        if (size(end_derivatives, 1) /= idim) then
-          call set_status(status, STATUS_INVALID_INPUT, &
-                          'spline curve fit: end derivatives must have the dimension of the points')
-          return
-        end if
-      end if
-    end if
-
-    allocate (u(m), x(idim*m), w(m))
-    x = reshape(points, [idim*m])
-    w = 1
-    if (present(weights)) w = weights
-    ipar = 0
-    if (present(parameters)) then
-      u = parameters
-      ipar = 1
-    else if (constrained) then
-      ! concur needs parameters: chord length scaled to [0,1] as parcur's ipar = 0
-      u(1) = 0
-      do i = 2, m
-        u(i) = u(i - 1) + norm2(points(:, i) - points(:, i - 1))
-      end do
-      if (.not. all(u(2:m) > u(1:m - 1))) then
-        call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: consecutive points coincide')
-        return
-      end if
-      u(2:m) = u(2:m)/u(m)
-      u(m) = 1
-    end if
-    if (closed) then
-      scale = maxval(abs(points))
-      if (any(abs(points(:, m) - points(:, 1)) > 1e-12_wp*max(scale, 1.0_wp))) then
-        call set_status(status, STATUS_INVALID_INPUT, &
-                        'spline curve fit: a closed curve needs its last point equal to its first')
-        return
-      end if
-      x(idim*(m - 1) + 1:idim*m) = x(1:idim)
-    end if
-
-    ! storage for the interpolating spline, so that ier = 1 cannot happen
-    if (closed) then
-      nest = m + 2*k
-      lwrk = m*(k + 1) + nest*(7 + idim + 5*k)
-    else
-      nest = m + k + 1 + max(0, nb - 1) + max(0, ne - 1)
-      lwrk = m*(k + 1) + nest*(6 + idim + 3*k)
-    end if
-    nc = nest*idim
-    allocate (t(nest), c(nc), wrk(lwrk), iwrk(nest))
-    t = 0
-    c = 0
-    n = 0
-    fp = 0
-    if (closed) then
-      call clocur(0, ipar, idim, m, u, idim*m, x, w, k, smoothing, nest, n, t, nc, c, fp, wrk, lwrk, iwrk, ier)
-    else if (constrained) then
-      allocate (db(max(1, idim*nb)), de(max(1, idim*ne)), xx(idim*m))
-      np = 2*(k + 1)*idim
-      allocate (cp(np))
-      db = 0
-      de = 0
-      do l = 1, nb
-        db(idim*(l - 1) + 1:idim*l) = start_derivatives(:, l)
-      end do
-      do l = 1, ne
-        de(idim*(l - 1) + 1:idim*l) = end_derivatives(:, l)
-      end do
-      call concur(0, idim, m, u, idim*m, x, xx, w, nb, db, size(db), ne, de, size(de), k, smoothing, nest, n, t, &
-                  nc, c, np, cp, fp, wrk, lwrk, iwrk, ier)
-    else
-      ub = 0
-      ue = 1
-      if (ipar == 1) then
-        ub = u(1)
-        ue = u(m)
-      end if
-      call parcur(0, ipar, idim, m, u, idim*m, x, w, ub, ue, k, smoothing, nest, n, t, nc, c, fp, &
-                  wrk, lwrk, iwrk, ier)
-    end if
-    call ier_status(ier, status)
-    if (ier == 10) return
-
-    self%degree = k
-    self%dimension = idim
-    self%periodic = closed
-    self%fp = fp
-    self%ier = ier
-    self%knots = t(1:n)
-    if (allocated(self%coefficients)) deallocate (self%coefficients)
-    allocate (self%coefficients(idim, n - k - 1))
-    do l = 1, idim
-      self%coefficients(l, :) = c(n*(l - 1) + 1:n*(l - 1) + n - k - 1)
-    end do
-    call tabulate(self)
-  end subroutine fit
-
-  !> FITPACK's ier -> status (the one place where ier is read).
-  pure subroutine ier_status(ier, status)
-    integer, intent(in) :: ier
-    type(status_t), intent(inout) :: status
-    select case (ier)
-    case (0, -1, -2)
-      status%code = STATUS_OK
-    case (1)
-      call set_status(status, STATUS_SOLVER, 'spline curve fit: FITPACK ran out of knot storage (ier = 1); '// &
-                      'the least-squares spline returned has fp > s')
-    case (2)
-      call set_status(status, STATUS_NOT_CONVERGED, 'spline curve fit: the smoothing factor is too small '// &
-                      'for FITPACK to find the smoothing parameter (ier = 2); approximation returned')
-    case (3)
-      call set_status(status, STATUS_NOT_CONVERGED, 'spline curve fit: FITPACK reached its 20 iterations '// &
-                      'for the smoothing parameter (ier = 3); the smoothing factor may be too small')
-    case (10)
-      call set_status(status, STATUS_INVALID_INPUT, 'spline curve fit: FITPACK rejected the input (ier = 10): '// &
-                      'check parameter order, weights, degree and the number of points')
-    case default
-      call set_status(status, STATUS_INTERNAL, 'spline curve fit: unexpected FITPACK ier')
-    end select
-  end subroutine ier_status
 
   !> Sets the curve from a B-spline representation: knots(1..n), coefficients(dim, n-degree-1).
   !> For a periodic curve the knots and the last degree coefficients must repeat
@@ -335,56 +134,6 @@ contains
     call tabulate(self)
   end subroutine set
 
-  !> Knot interval l, t(l) <= u < t(l+1), k+1 <= l <= n-k-1 (for u in the
-  !> domain); at the end of the domain (u >= t(n-k-1)) the last non-empty
-  !> span. First guess: the span of u if the knots were evenly spaced, and
-  !> its neighbours (fitted knots mostly are nearly even); then bisection.
-  pure integer function find_interval(t, k, u) result(l)
-    real(wp), intent(in) :: t(:), u
-    integer, intent(in) :: k
-    integer :: lo, hi, mid
-    lo = k + 1
-    hi = size(t) - k - 1
-    if (u >= t(hi)) then
-      l = hi
-      ! a multiple knot at the end of the domain: back to the span that ends there
-      do while (t(l + 1) <= t(l) .and. l > lo)
-        l = l - 1
-      end do
-      return
-    end if
-    if (u > t(lo)) then
-      mid = lo + int((u - t(lo))/(t(hi + 1) - t(lo))*(hi + 1 - lo))
-      mid = min(max(mid, lo), hi - 1)
-      if (u >= t(mid)) then
-        if (u < t(mid + 1)) then
-          l = mid
-          return
-        end if
-        lo = mid + 1
-        if (u < t(lo + 1)) then
-          l = lo
-          return
-        end if
-      else
-        hi = mid
-        if (u >= t(mid - 1)) then
-          l = mid - 1
-          return
-        end if
-      end if
-    end if
-    ! invariant t(lo) <= u < t(hi)
-    do while (hi - lo > 1)
-      mid = (lo + hi)/2
-      if (u >= t(mid)) then
-        lo = mid
-      else
-        hi = mid
-      end if
-    end do
-    l = lo
-  end function find_interval
 
   !> The parameter mapped into the domain: clamped for open curves (as FITPACK's
   !> evaluators), reduced by the period for closed ones.
@@ -412,8 +161,8 @@ contains
     real(wp), intent(in) :: u
     real(wp), intent(out) :: derivatives(:, 0:)
     integer, intent(in) :: nd
-    real(wp) :: x
-    integer :: l, idim, k, top
+    real(wp) :: x, b(0:max_degree)
+    integer :: l, idim, k, top, i
     if (.not. allocated(self%knots)) then
       derivatives = 0
       return
@@ -423,76 +172,17 @@ contains
     top = max(-1, min(nd, k, ubound(derivatives, 2)))
     x = in_domain(self, u)
     l = find_interval(self%knots, k, x)
-    if (k == 5 .and. idim == 3) then
-      call quintic_in_space(self%taylor(:, :, l), x - self%knots(l), top, derivatives)
-    else
-      call taylor_shift(self%taylor(:, :, l), k, idim, x - self%knots(l), top, derivatives)
-    end if
+    do i = 1, idim
+      b(0:k) = self%taylor(0:k, i, l)
+      call taylor_shift(b, k, x - self%knots(l), top)
+      derivatives(i, 0:top) = factorial(0:top)*b(0:top)
+    end do
     ! what was not formed: orders above top, coordinates above the curve's
     if (ubound(derivatives, 2) > top) derivatives(:, top + 1:) = 0
     if (size(derivatives, 1) > idim) derivatives(idim + 1:, 0:top) = 0
   end subroutine evaluate
 
-  !> derivatives(i, m), m = 0..top, i = 1..idim, of the polynomials with
-  !> Taylor coefficients a(0:k, i) about 0, at h: repeated synthetic division
-  !> (Horner), after pass m b(m) = p^(m)(h)/m!.
-  pure subroutine taylor_shift(a, k, idim, h, top, derivatives)
-    real(wp), intent(in) :: a(0:, :), h
-    integer, intent(in) :: k, idim, top
-    real(wp), intent(inout) :: derivatives(:, 0:)
-    real(wp) :: b(0:max_degree)
-    integer :: i, j, m
-    do i = 1, idim
-      b(0:k) = a(0:k, i)
-      do m = 0, top
-        do j = k - 1, m, -1
-          b(j) = b(j) + h*b(j + 1)
-        end do
-        derivatives(i, m) = factorial(m)*b(m)
-      end do
-    end do
-  end subroutine taylor_shift
 
-  !> taylor_shift for degree 5 and 3 coordinates (a fitted quintic
-  !> centerline in space, the common case): the same operations in the same
-  !> order, in scalars.
-  pure subroutine quintic_in_space(a, h, top, derivatives)
-    real(wp), intent(in) :: a(0:5, 3), h
-    integer, intent(in) :: top
-    real(wp), intent(inout) :: derivatives(:, 0:)
-    real(wp) :: b0, b1, b2, b3, b4, b5
-    integer :: i
-    if (top < 0) return
-    do i = 1, 3
-      b0 = a(0, i)
-      b1 = a(1, i)
-      b2 = a(2, i)
-      b3 = a(3, i)
-      b4 = a(4, i)
-      b5 = a(5, i)
-      b4 = b4 + h*b5
-      b3 = b3 + h*b4
-      b2 = b2 + h*b3
-      b1 = b1 + h*b2
-      derivatives(i, 0) = b0 + h*b1
-      if (top < 1) cycle
-      b4 = b4 + h*b5
-      b3 = b3 + h*b4
-      b2 = b2 + h*b3
-      derivatives(i, 1) = b1 + h*b2
-      if (top < 2) cycle
-      b4 = b4 + h*b5
-      b3 = b3 + h*b4
-      derivatives(i, 2) = factorial(2)*(b2 + h*b3)
-      if (top < 3) cycle
-      b4 = b4 + h*b5
-      derivatives(i, 3) = factorial(3)*(b3 + h*b4)
-      if (top < 4) cycle
-      derivatives(i, 4) = factorial(4)*(b4 + h*b5)
-      if (top < 5) cycle
-      derivatives(i, 5) = factorial(5)*b5
-    end do
-  end subroutine quintic_in_space
 
   !> The Cox-de Boor triangle (thesis 2.35) and de Boor's difference formula
   !> for the derivatives: d(1:dim, jd) = r^(jd)(x), jd = 0..k, with x in knot

@@ -22,25 +22,26 @@
 !> - a failure of the integrator or the model (OUTCOME_ERROR).
 !> The model is not changed by a run (intent(in)); the run's own state lives
 !> in a local event system, so runs can go on in several threads at once.
+!> The start values are water_start's, the samples water_series'.
 module water_flow
   use base_kinds, only: wp
   use base_text, only: format_short
-  use base_constants, only: pi
   use base_log, only: log_sink_i
-  use base_series, only: growable_series_t, resize, max_series_bytes
-  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, &
-    STATUS_DOMAIN
-  use geometry_surface, only: surface_point_t
-  use numerics_ode, only: ode_options_t, ode_stats_t
+  use base_series, only: max_series_bytes
+  use base_status, only: status_t, set_status, STATUS_DOMAIN
+  use numerics_ode, only: ode_options_t
   use numerics_event_driver, only: event_system_t, driver_options_t, driver_result_t, drive, &
     EVENT_IGNORE, EVENT_STOP, RECORD_START, DRIVE_END_TIME, DRIVE_EVENT_STOP
-  use water_channel, only: channel_t
-  use water_section, only: circle_segment, circle_height_for_area, profile_water
-  use water_streamline, only: streamline_t, water_point_t, water_point, velocity_from_angle, &
-    water_rates_t, water_point_rates, CORRECTION_OFF
+  use water_streamline, only: streamline_t, water_point_t, water_point, CORRECTION_OFF
   use water_boundaries, only: water_edges
+  use water_start, only: water_start_t, water_initial_state, START_EDGES, START_HEIGHT, START_SPEED, &
+    START_HEIGHT_SPEED
+  use water_series, only: water_series_t, water_station_t, allocate_series, record_sample, values_per_sample, &
+    OUTCOME_END, OUTCOME_DURATION, OUTCOME_STALL, OUTCOME_TURN, OUTCOME_CRITICAL, OUTCOME_ERROR, &
+    OUTCOME_LIFT, OUTCOME_SAFETY_BOUND, outcome_name
   implicit none (type, external)
   private
+  ! the start (water_start) and the samples (water_series), as the run's callers name them
   public :: water_start_t, water_series_t, water_station_t
   public :: water_initial_state, simulate_water, safety_time_bound
   public :: START_EDGES, START_HEIGHT, START_SPEED, START_HEIGHT_SPEED
@@ -48,9 +49,6 @@ module water_flow
     OUTCOME_ERROR, OUTCOME_LIFT, OUTCOME_SAFETY_BOUND, outcome_name
   public :: ROOT_END, ROOT_STALL, ROOT_CRITICAL, ROOT_TURN, ROOT_LIFT, ROOT_FIRST_STATION
 
-  integer, parameter :: START_EDGES = 1, START_HEIGHT = 2, START_SPEED = 3, START_HEIGHT_SPEED = 4
-  integer, parameter :: OUTCOME_END = 1, OUTCOME_DURATION = 2, OUTCOME_STALL = 3, OUTCOME_TURN = 4, &
-                        OUTCOME_CRITICAL = 5, OUTCOME_ERROR = 6, OUTCOME_LIFT = 7, OUTCOME_SAFETY_BOUND = 8
   !> Root functions of a run: the end, the model's stops, then one per station.
   integer, parameter :: ROOT_END = 1, ROOT_STALL = 2, ROOT_CRITICAL = 3, ROOT_TURN = 4, ROOT_LIFT = 5, &
                         ROOT_FIRST_STATION = 6
@@ -65,56 +63,6 @@ module water_flow
   real(wp), parameter :: water_convergence_coefficient = 0.5_wp
   !> the safety bound in units of L/min_speed (see the module header)
   real(wp), parameter :: safety_factor = 200
-  !> Numbers of one sample of water_series_t (its arrays), for the memory bound
-  integer, parameter :: values_per_sample = 64
-
-  !> How the water enters at u0 (thesis 4.33 or given values).
-  type :: water_start_t
-    integer :: mode = START_EDGES
-    real(wp) :: u0 = 0                 ! centerline parameter of the first section
-    real(wp) :: v0 = pi/2              ! rad, water middle (START_EDGES: from the edges)
-    real(wp) :: v_left = pi/2 + 0.3_wp, v_right = pi/2 - 0.3_wp   ! rad, edges (START_EDGES)
-    real(wp) :: height = 0.01_wp       ! m (START_HEIGHT, START_HEIGHT_SPEED)
-    real(wp) :: speed = 1              ! m/s (START_SPEED, START_HEIGHT_SPEED)
-    real(wp) :: beta = 0               ! rad, flow angle to the centerline
-  end type water_start_t
-
-  type :: water_station_t
-    real(wp) :: arc_length = 0, u = 0, time = 0, v = 0, speed = 0, height = 0, width = 0
-    real(wp) :: v_left = 0, v_right = 0, v_middle = 0
-    logical :: reached = .false.
-  end type water_station_t
-
-  !> The water's samples; grown as the run goes (base_series).
-  type, extends(growable_series_t) :: water_series_t
-    real(wp), allocatable :: time(:), u(:), v(:), du(:), dv(:), arc_length(:)
-    real(wp), allocatable :: position(:, :), velocity(:, :)
-    real(wp), allocatable :: speed(:), height(:), width(:), area(:), radius(:), beta(:), alpha(:)
-    real(wp), allocatable :: normal_force(:), friction_force(:), curvature(:), froude(:)
-    real(wp), allocatable :: kinetic(:), potential(:), friction_work(:), correction_work(:)
-    real(wp), allocatable :: left_edge(:, :), right_edge(:, :), left_point(:, :), right_point(:, :)
-    integer, allocatable :: edge_solved(:)    ! 1: edges from (4.25-4.26); 0: circle estimate (or not solved)
-    logical :: edges = .false.                 ! the edges were solved at the samples
-    ! rates along the motion, for the water field's C1 interpolation
-    real(wp), allocatable :: acceleration(:, :)      ! m/s^2 (3 x n)
-    real(wp), allocatable :: speed_rate(:), height_rate(:), width_rate(:)   ! m/s^2, m/s, m/s
-    real(wp), allocatable :: udd(:), vdd(:)          ! u'', v'' (4.23)
-    real(wp), allocatable :: x_m(:, :), z_m(:, :), x_m_rate(:, :), z_m_rate(:, :)   ! K_M axes, 1/s
-    real(wp), allocatable :: centerline_speed(:)     ! |c_u|, m per unit of u
-    real(wp), allocatable :: centerline_speed_u(:)   ! d|c_u|/du, m per unit of u^2
-    real(wp), allocatable :: left_edge_rate(:, :), right_edge_rate(:, :)   ! d[u, v]/dt (2 x n)
-    integer :: edge_failures = 0                     ! samples where the edge solve failed
-    character(len=:), allocatable :: edge_message   ! the first edge failure
-    integer :: edge_beyond = 0                       ! samples with an edge beyond the slide's end
-    real(wp) :: edge_beyond_from = 0                 ! m, arc length of the first of them
-    type(water_station_t), allocatable :: stations(:)
-    integer :: outcome = OUTCOME_ERROR
-    character(len=:), allocatable :: message
-    type(ode_stats_t) :: stats
-    real(wp) :: flow_rate = 0          ! m^3/s
-    real(wp) :: time_bound = 0         ! s, the bound the run had (the caller's or the safety bound)
-    real(wp) :: cpu = 0                ! s, process CPU time of the run (driver)
-  end type water_series_t
 
   !> The running water: the model (read only), what is recorded, and a cache
   !> of the last water point (the root functions at an output time and the
@@ -147,155 +95,7 @@ module water_flow
 
 contains
 
-  pure function outcome_name(outcome) result(text)
-    integer, intent(in) :: outcome
-    character(len=:), allocatable :: text
-    select case (outcome)
-    case (OUTCOME_END); text = 'end of slide'
-    case (OUTCOME_DURATION); text = 'duration'
-    case (OUTCOME_STALL); text = 'stalled'
-    case (OUTCOME_TURN); text = 'turned back'
-    case (OUTCOME_CRITICAL); text = 'near critical flow'
-    case (OUTCOME_LIFT); text = 'lifted off'
-    case (OUTCOME_SAFETY_BOUND); text = 'safety time bound'
-    case default; text = 'error'
-    end select
-  end function outcome_name
 
-  !> Initial state [u, v, u', v', h, 0, 0] and the flow rate (set in model%flow_rate
-  !> for START_HEIGHT_SPEED; read from it otherwise).
-  subroutine water_initial_state(model, start, y0, status)
-    type(streamline_t), intent(inout) :: model
-    type(water_start_t), intent(in) :: start
-    real(wp), intent(out) :: y0(7)
-    type(status_t), intent(out) :: status
-    type(surface_point_t) :: p
-    real(wp) :: r, radius, area, width, alpha, h, w, v0, du, dv, vl, vr, u_min, u_max
-
-    y0 = 0
-    call model%channel%u_range(u_min, u_max)
-    if (start%u0 < u_min .or. start%u0 >= u_max) then
-      call set_status(status, STATUS_INVALID_INPUT, 'the start u0 is outside the slide')
-      return
-    end if
-    if (abs(start%beta) >= pi/2) then
-      call set_status(status, STATUS_INVALID_INPUT, 'the start flow angle beta must be within +-90 degrees')
-      return
-    end if
-    if (start%mode /= START_HEIGHT_SPEED .and. .not. model%flow_rate > 0) then
-      call set_status(status, STATUS_INVALID_INPUT, 'the flow rate Q must be > 0')
-      return
-    end if
-    r = model%channel%circle_radius(start%u0)
-    radius = r*(1 + tan(start%beta)**2)     ! (4.15)
-    v0 = start%v0
-    select case (start%mode)
-    case (START_EDGES)   ! (4.33)
-      if (.not. start%v_left > start%v_right) then
-        call set_status(status, STATUS_INVALID_INPUT, 'the start edges need v_left > v_right')
-        return
-      end if
-      v0 = (start%v_left + start%v_right)/2
-      if (r > 0) then
-        h = r*(1 - cos((start%v_left - start%v_right)/2))
-        call circle_segment(h, radius, area, width, alpha)
-      else
-        call edge_height(h, status)
-        if (.not. status%ok()) return
-        call profile_water(model%channel, start%u0, v0, h, area, width, vl, vr, status)
-        if (.not. status%ok()) return
-      end if
-      w = model%flow_rate/area
-    case (START_HEIGHT, START_HEIGHT_SPEED)
-      h = start%height
-      if (.not. h > 0 .or. (r > 0 .and. h >= 2*radius)) then
-        call set_status(status, STATUS_INVALID_INPUT, 'the start height must be > 0 and inside the section')
-        return
-      end if
-      if (r > 0) then
-        call circle_segment(h, radius, area, width, alpha)
-      else
-        call profile_water(model%channel, start%u0, v0, h, area, width, vl, vr, status)
-        if (.not. status%ok()) return
-      end if
-      if (start%mode == START_HEIGHT) then
-        w = model%flow_rate/area
-      else
-        w = start%speed
-        model%flow_rate = area*w
-      end if
-    case (START_SPEED)
-      w = start%speed
-      if (r > 0) then
-        call circle_height_for_area(model%flow_rate/w, radius, h, status)
-      else
-        call profile_height(model%flow_rate/w, h, status)
-      end if
-      if (.not. status%ok()) then
-        call prefix_status(status, 'start height from Q/w')
-        return
-      end if
-    case default
-      call set_status(status, STATUS_INVALID_INPUT, 'unknown start mode')
-      return
-    end select
-    if (.not. w > 0) then
-      call set_status(status, STATUS_INVALID_INPUT, 'the start speed must be > 0')
-      return
-    end if
-    call model%channel%evaluate(start%u0, v0, 2, p, status)
-    if (.not. status%ok()) return
-    call velocity_from_angle(p, w, start%beta, du, dv, status)
-    if (.not. status%ok()) return
-    y0 = [start%u0, v0, du, dv, h, 0.0_wp, 0.0_wp]
-
-  contains
-
-    !> Height of the water between the given edges of a general profile: the
-    !> lower of the two edge points, measured along the normal at v0.
-    subroutine edge_height(hh, st)
-      real(wp), intent(out) :: hh
-      type(status_t), intent(out) :: st
-      type(surface_point_t) :: p0, pl, pr
-      real(wp) :: n(3)
-      call model%channel%evaluate(start%u0, v0, 1, p0, st)
-      if (st%ok()) call model%channel%evaluate(start%u0, start%v_left, 0, pl, st)
-      if (st%ok()) call model%channel%evaluate(start%u0, start%v_right, 0, pr, st)
-      if (.not. st%ok()) return
-      n = [p0%ru(2)*p0%rv(3) - p0%ru(3)*p0%rv(2), p0%ru(3)*p0%rv(1) - p0%ru(1)*p0%rv(3), &
-           p0%ru(1)*p0%rv(2) - p0%ru(2)*p0%rv(1)]
-      n = n/norm2(n)
-      hh = min(dot_product(pl%r - p0%r, n), dot_product(pr%r - p0%r, n))
-      if (.not. hh > 0) call set_status(st, STATUS_INVALID_INPUT, 'the start edges give no water height')
-    end subroutine edge_height
-
-    !> Height with profile area A(h) = target (bisection + secant on the monotone A).
-    subroutine profile_height(target, hh, st)
-      real(wp), intent(in) :: target
-      real(wp), intent(out) :: hh
-      type(status_t), intent(out) :: st
-      real(wp) :: lo, hi, a, b, l, rr
-      integer :: it
-      lo = 0; hi = 1e-3_wp
-      do it = 1, 60
-        call profile_water(model%channel, start%u0, v0, hi, a, b, l, rr, st)
-        if (.not. st%ok()) return
-        if (a >= target) exit
-        lo = hi; hi = 2*hi
-      end do
-      do it = 1, 200
-        hh = (lo + hi)/2
-        call profile_water(model%channel, start%u0, v0, hh, a, b, l, rr, st)
-        if (.not. st%ok()) return
-        if (a > target) then
-          hi = hh
-        else
-          lo = hh
-        end if
-        if (hi - lo <= 1e-15_wp*hi) exit
-      end do
-    end subroutine profile_height
-  end subroutine water_initial_state
 
   !> The safety bound on time of a run from u0 to u_end: 200 L/min_speed
   !> (module header), L the centerline arc length between them.
@@ -406,7 +206,6 @@ contains
     end if
     if (.not. status%ok()) series%message = status%text()
   end subroutine simulate_water
-
 
   !> The water point at y (the cached one if y(1:5) is the cached state).
   !> Makes self%q the water point at y: kept from the last call if y(1:5) is
@@ -628,7 +427,7 @@ contains
     real(wp) :: g(ROOT_STALL:ROOT_LIFT), y_event(size(y))
     call self%point(y, status)
     if (.not. status%ok()) return
-    call record(self%model, t, y, self%q, self%series, self%with_edges, status)
+    call record_sample(self%model, t, y, self%q, self%series, self%with_edges, status)
     if (.not. status%ok() .or. kind /= RECORD_START) return
     g = stop_margins(self%model, self%q)
     if (all(g > 0)) return
@@ -652,164 +451,6 @@ contains
     text = 't = '//format_short(t)//' s, u = '//format_short(y(1))
   end subroutine system_progress
 
-  ! ------------------------------------------------------------ samples
 
-  !> Room for n samples in every array of the series, the recorded ones kept
-  !> (first call: allocates). The new room is not filled: record sets every
-  !> array at every sample, and nothing beyond s%n is read (untouched room
-  !> costs no memory). Every array of water_series_t is listed here once, so
-  !> growing keeps them all.
-  subroutine allocate_series(s, n)
-    type(water_series_t), intent(inout) :: s
-    integer, intent(in) :: n
-    call resize(s%time, n); call resize(s%u, n); call resize(s%v, n); call resize(s%du, n)
-    call resize(s%dv, n); call resize(s%arc_length, n); call resize(s%position, 3, n)
-    call resize(s%velocity, 3, n); call resize(s%speed, n); call resize(s%height, n); call resize(s%width, n)
-    call resize(s%area, n); call resize(s%radius, n); call resize(s%beta, n); call resize(s%alpha, n)
-    call resize(s%normal_force, n); call resize(s%friction_force, n); call resize(s%curvature, n)
-    call resize(s%froude, n); call resize(s%kinetic, n); call resize(s%potential, n)
-    call resize(s%friction_work, n); call resize(s%correction_work, n); call resize(s%left_edge, 2, n)
-    call resize(s%right_edge, 2, n); call resize(s%left_point, 3, n); call resize(s%right_point, 3, n)
-    call resize(s%edge_solved, n); call resize(s%acceleration, 3, n); call resize(s%speed_rate, n)
-    call resize(s%height_rate, n); call resize(s%width_rate, n); call resize(s%udd, n); call resize(s%vdd, n)
-    call resize(s%x_m, 3, n); call resize(s%z_m, 3, n); call resize(s%x_m_rate, 3, n)
-    call resize(s%z_m_rate, 3, n); call resize(s%centerline_speed, n); call resize(s%centerline_speed_u, n)
-    call resize(s%left_edge_rate, 2, n)
-    call resize(s%right_edge_rate, 2, n)
-    s%capacity = n
-  end subroutine allocate_series
 
-  !> Appends the sample (t, y) with the water point q (from water_point at y).
-  subroutine record(model, t, y, q, s, with_edges, status)
-    type(streamline_t), intent(in) :: model
-    real(wp), intent(in) :: t, y(:)
-    type(water_point_t), intent(in) :: q
-    type(water_series_t), intent(inout) :: s
-    logical, intent(in) :: with_edges
-    type(status_t), intent(inout) :: status
-    type(water_rates_t) :: rates
-    type(status_t) :: st
-    integer :: i, grown
-    real(wp) :: guess_l(2), guess_r(2)
-    st%code = 0
-    call water_point_rates(model, y, q, rates, st)
-    if (.not. st%ok()) then
-      if (status%ok()) status = st
-      return
-    end if
-    call s%make_room(16, 8.0_wp*values_per_sample, 'water', t, grown, st)
-    if (.not. st%ok()) then
-      if (status%ok()) status = st
-      return
-    end if
-    if (grown > 0) call allocate_series(s, grown)
-    s%n = s%n + 1
-    i = s%n
-    s%time(i) = t
-    s%u(i) = y(1); s%v(i) = y(2); s%du(i) = y(3); s%dv(i) = y(4)
-    s%height(i) = y(5)
-    s%friction_work(i) = y(6); s%correction_work(i) = y(7)
-    s%centerline_speed(i) = q%centerline_speed
-    s%centerline_speed_u(i) = q%centerline_speed_u
-    if (i == 1) then
-      s%arc_length(i) = model%channel%arc_length(y(1))
-    else   ! incremental: samples lie centimetres apart
-      s%arc_length(i) = s%arc_length(i - 1) + arc_increment(s, i)
-    end if
-    s%position(:, i) = q%position
-    s%velocity(:, i) = q%velocity
-    s%speed(i) = q%speed
-    s%width(i) = q%width; s%area(i) = q%area; s%radius(i) = q%radius
-    s%beta(i) = q%beta; s%alpha(i) = q%alpha
-    s%normal_force(i) = q%normal_force; s%friction_force(i) = q%friction
-    s%curvature(i) = q%chi
-    s%froude(i) = q%froude
-    s%kinetic(i) = 0.5_wp*model%mass*q%speed**2
-    s%potential(i) = -model%mass*dot_product(model%gravity, q%position)
-    s%acceleration(:, i) = q%acceleration
-    s%speed_rate(i) = q%speed_rate; s%height_rate(i) = q%height_rate; s%width_rate(i) = rates%width
-    s%udd(i) = q%udd; s%vdd(i) = q%vdd
-    s%x_m(:, i) = q%x_m; s%z_m(:, i) = q%z_m
-    s%x_m_rate(:, i) = rates%x_m; s%z_m_rate(:, i) = rates%z_m
-    if (.not. with_edges) then
-      s%edge_solved(i) = 0
-      s%left_edge(:, i) = 0; s%right_edge(:, i) = 0; s%left_point(:, i) = 0; s%right_point(:, i) = 0
-      s%left_edge_rate(:, i) = 0; s%right_edge_rate(:, i) = 0
-      return
-    end if
-    if (i >= 2) then
-      if (s%edge_solved(i - 1) == 1) then
-        ! warm start: the previous outputs' edges carried forward in time by
-        ! their rates (cubic Hermite through the two last solved outputs,
-        ! extrapolated: error O(dt^4); from one output: linear)
-        if (i >= 3) then
-          if (s%edge_solved(i - 2) == 1 .and. s%time(i - 1) > s%time(i - 2)) then
-            guess_l = carried(s%left_edge, s%left_edge_rate)
-            guess_r = carried(s%right_edge, s%right_edge_rate)
-          else
-            guess_l = s%left_edge(:, i - 1) + (t - s%time(i - 1))*s%left_edge_rate(:, i - 1)
-            guess_r = s%right_edge(:, i - 1) + (t - s%time(i - 1))*s%right_edge_rate(:, i - 1)
-          end if
-        else
-          guess_l = s%left_edge(:, i - 1) + (t - s%time(i - 1))*s%left_edge_rate(:, i - 1)
-          guess_r = s%right_edge(:, i - 1) + (t - s%time(i - 1))*s%right_edge_rate(:, i - 1)
-        end if
-        call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
-                         s%right_point(:, i), st, guess_l, guess_r, rates=rates, &
-                         left_rate=s%left_edge_rate(:, i), right_rate=s%right_edge_rate(:, i))
-      else
-        call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
-                         s%right_point(:, i), st, rates=rates, &
-                         left_rate=s%left_edge_rate(:, i), right_rate=s%right_edge_rate(:, i))
-      end if
-    else
-      call water_edges(model%channel, q, s%left_edge(:, i), s%right_edge(:, i), s%left_point(:, i), &
-                       s%right_point(:, i), st, rates=rates, &
-                       left_rate=s%left_edge_rate(:, i), right_rate=s%right_edge_rate(:, i))
-    end if
-    s%edge_solved(i) = merge(1, 0, st%ok())
-    if (.not. st%ok()) then
-      ! Near the ends of the slide the foot of an edge can lie beyond the
-      ! surface; keep the circle estimate v -+ (b/2)/|r_v| at the same u, flagged.
-      s%left_edge(:, i) = [y(1), y(2) + 0.5_wp*q%width/norm2(q%p%rv)]
-      s%right_edge(:, i) = [y(1), y(2) - 0.5_wp*q%width/norm2(q%p%rv)]
-      s%left_point(:, i) = q%position + 0.5_wp*q%width*q%y_w
-      s%right_point(:, i) = q%position - 0.5_wp*q%width*q%y_w
-      s%left_edge_rate(:, i) = 0; s%right_edge_rate(:, i) = 0
-      if (st%code == STATUS_DOMAIN) then   ! the foot is beyond the end of the slide
-        if (s%edge_beyond == 0) s%edge_beyond_from = s%arc_length(i)
-        s%edge_beyond = s%edge_beyond + 1
-      else
-        if (s%edge_failures == 0) s%edge_message = 'at t = '//format_short(t)//' s: '//st%text()
-        s%edge_failures = s%edge_failures + 1
-      end if
-    end if
-
-  contains
-
-    !> The edge at time t from its values and rates at samples i-2 and i-1.
-    pure function carried(edge, rate) result(x)
-      real(wp), intent(in) :: edge(:, :), rate(:, :)
-      real(wp) :: x(2)
-      real(wp) :: h, tau, w(4)
-      h = s%time(i - 1) - s%time(i - 2)
-      tau = (t - s%time(i - 2))/h
-      w = [(1 + 2*tau)*(1 - tau)**2, tau*(1 - tau)**2, tau**2*(3 - 2*tau), tau**2*(tau - 1)]
-      x = w(1)*edge(:, i - 2) + w(2)*h*rate(:, i - 2) + w(3)*edge(:, i - 1) + w(4)*h*rate(:, i - 1)
-    end function carried
-  end subroutine record
-
-  !> Centerline arc length between samples i-1 and i: the trapezoid of |c_u|
-  !> with its end slopes (the corrected trapezoid rule, from the values and
-  !> derivatives the water point has anyway),
-  !>   ds = h (f_a + f_b)/2 + h^2 (f'_a - f'_b)/12,  error -h^5 f''''/720,
-  !> below 1e-15 m for samples centimetres apart on a fitted slide.
-  pure function arc_increment(s, i) result(ds)
-    type(water_series_t), intent(in) :: s
-    integer, intent(in) :: i
-    real(wp) :: ds, h
-    h = s%u(i) - s%u(i - 1)
-    ds = h*(s%centerline_speed(i - 1) + s%centerline_speed(i))/2 + &
-         h**2*(s%centerline_speed_u(i - 1) - s%centerline_speed_u(i))/12
-  end function arc_increment
 end module water_flow
