@@ -28,7 +28,7 @@ module design_rider_identification
   use base_sorting, only: unique_sorted
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use base_text, only: format_short, format_integer
-  use geometry_tube, only: tube_surface_t
+  use geometry_slide_query, only: slide_surface_t
   use water_field, only: water_field_t
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS
   use rider_ride, only: ride_options_t
@@ -53,7 +53,7 @@ module design_rider_identification
 
   !> Everything an evaluation needs; read-only during a fit.
   type :: rider_identification_t
-    type(tube_surface_t) :: slide
+    class(slide_surface_t), allocatable :: slide   !< the slide query (geometry_slide_query)
     type(rider_params_t) :: params          !< the rider and its start; params%mu is the fitted mu_D
     type(ride_options_t) :: options         !< integration (thesis B.7); stations set here
     logical :: with_water = .false.         !< the water's drag (params%drag) in `water`

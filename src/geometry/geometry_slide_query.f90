@@ -8,6 +8,7 @@
 !>   parameter_at_length(s)   u at arc length s;
 !>   centerline_speed(u)      ds/du = |c_u| (m per unit of u), from the
 !>                            curve's derivative;
+!>   centerline_point(u, k)   c(u) and its derivatives to order k;
 !>   frame(u, order)          the moving frame of the centerline and its
 !>                            derivatives (geometry_curve_frame);
 !>   section_edges(u)         the section's v range at u (+-huge: closed);
@@ -19,8 +20,9 @@
 !>                            order + 1 from one evaluation (the water's hook:
 !>                            its curvature and centerline speed).
 !> The tube (geometry_tube) implements it; a bowl, a funnel or a half-pipe
-!> carries the rider by implementing it too. A surface that does not gets
-!> the refusal of as_slide (the rider's first check).
+!> carries the rider and the water (water_channel) by implementing it too. A
+!> surface that does not gets the refusal of as_slide (the rider's first
+!> check).
 module geometry_slide_query
   use base_kinds, only: wp
   use base_constants, only: pi
@@ -43,6 +45,7 @@ module geometry_slide_query
     procedure(length_i), deferred :: length
     procedure(parameter_at_length_i), deferred :: parameter_at_length
     procedure(centerline_speed_i), deferred :: centerline_speed
+    procedure(centerline_point_i), deferred :: centerline_point
     procedure(frame_i), deferred :: frame
     procedure(section_edges_i), deferred :: section_edges
     procedure(evaluate_with_centerline_i), deferred :: evaluate_with_centerline
@@ -80,6 +83,16 @@ module geometry_slide_query
       real(wp), intent(out) :: speed
       type(status_t), intent(out) :: status
     end subroutine centerline_speed_i
+
+    !> The centerline point c(u) with its derivatives to `order` (0..4).
+    pure subroutine centerline_point_i(self, u, order, c, status)
+      import :: slide_surface_t, curve_point_t, status_t, wp
+      class(slide_surface_t), intent(in) :: self
+      real(wp), intent(in) :: u
+      integer, intent(in) :: order
+      type(curve_point_t), intent(out) :: c
+      type(status_t), intent(out) :: status
+    end subroutine centerline_point_i
 
     !> The centerline's moving frame at u with derivatives to `order`; c: the
     !> centerline point (derivatives to order + 1).

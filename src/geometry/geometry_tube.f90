@@ -40,6 +40,7 @@ module geometry_tube
     procedure :: length => tube_length
     procedure :: parameter_at_length => tube_parameter_at_length
     procedure :: centerline_speed => tube_centerline_speed
+    procedure :: centerline_point => tube_centerline_point
     procedure :: section_edges => tube_section_edges
     procedure :: wall_position => tube_wall_position
     procedure :: check => tube_check
@@ -327,6 +328,16 @@ contains
     call self%centerline%evaluate(u, 1, c, status)
     if (status%ok()) speed = norm2(c%d(:, 1))
   end subroutine tube_centerline_speed
+
+  !> c(u) and its derivatives to `order`: the centerline's own evaluation.
+  pure subroutine tube_centerline_point(self, u, order, c, status)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(curve_point_t), intent(out) :: c
+    type(status_t), intent(out) :: status
+    call self%centerline%evaluate(u, order, c, status)
+  end subroutine tube_centerline_point
 
   !> The section's v range (-huge, huge where it is closed).
   pure subroutine tube_section_edges(self, u, v_min, v_max)

@@ -14,6 +14,7 @@ module scenarios_ride
   use base_log, only: log_info
   use geometry_surface, only: surface_t
   use geometry_tube, only: tube_surface_t
+  use geometry_slide_query, only: slide_surface_t
   use geometry_cross_section, only: circle_section_t
   use water_run, only: water_description_t
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
@@ -215,24 +216,28 @@ contains
     end associate
   end subroutine refuse_start
 
-  !> The spheres must fit in the tube (a circular section's radius).
-  subroutine check_sphere_radii(input, rider, tube, status)
+  !> The spheres must fit in the tube (a circular section's radius; other
+  !> sections and slides: no check).
+  subroutine check_sphere_radii(input, rider, slide, status)
     type(input_text_t), intent(in) :: input
     type(rider_params_t), intent(in) :: rider
-    type(tube_surface_t), intent(in) :: tube
+    class(slide_surface_t), intent(in) :: slide
     type(status_t), intent(inout) :: status
     integer :: k
-    select type (section => tube%section)
-    type is (circle_section_t)
-      do k = 1, N_CONTACTS
-        if (rider%drag_radius(k) > section%radius) then
-          call invalid(input, 'rider', 'drag_radius('//format_integer(k)//')', &
-                       format_real(rider%drag_radius(k)), 'the '//trim(contact_names(k))// &
-                       ' sphere must fit in the tube: at most its radius '//format_real(section%radius)//' m', &
-                       status)
-          return
-        end if
-      end do
+    select type (slide)
+    type is (tube_surface_t)
+      select type (section => slide%section)
+      type is (circle_section_t)
+        do k = 1, N_CONTACTS
+          if (rider%drag_radius(k) > section%radius) then
+            call invalid(input, 'rider', 'drag_radius('//format_integer(k)//')', &
+                         format_real(rider%drag_radius(k)), 'the '//trim(contact_names(k))// &
+                         ' sphere must fit in the tube: at most its radius '//format_real(section%radius)//' m', &
+                         status)
+            return
+          end if
+        end do
+      end select
     end select
   end subroutine check_sphere_radii
 

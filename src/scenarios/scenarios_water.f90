@@ -8,6 +8,7 @@ module scenarios_water
   use base_log, only: log_info, log_warning
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_tube, only: tube_surface_t
+  use geometry_slide_query, only: slide_surface_t
   use numerics_ode, only: ode_stats_t
   use water_channel, only: channel_t, new_channel
   use water_streamline, only: streamline_t
@@ -55,6 +56,7 @@ contains
     logical, intent(in), optional :: stage
     type(solver_config_t) :: solver
     class(surface_t), allocatable :: surface
+    type(tube_surface_t) :: tube
     type(channel_t) :: channel
     type(streamline_t) :: model
     real(wp) :: u_min, u_max, v_min, v_max, total, start_speed, y0(7)
@@ -90,8 +92,9 @@ contains
       end select
     else
       call refuse_unselected_geometry(input, status)
-      call read_channel_config(input, description%slide, status)
+      call read_channel_config(input, tube, status)
       if (.not. status%ok()) return
+      description%slide = tube
       if (group_present(input, 'channel')) then
         description%slide_name = 'closed-form tube of &channel in '//input%name
       else
@@ -273,7 +276,7 @@ contains
   !> section (a closed tube's full turn).
   subroutine write_slide_grid(file, slide, status)
     type(result_file_t), intent(inout) :: file
-    type(tube_surface_t), intent(in) :: slide
+    class(slide_surface_t), intent(in) :: slide
     type(status_t), intent(inout) :: status
     real(wp) :: u_min, u_max, v_min, v_max
     real(wp), parameter :: full_turn = 2*acos(-1.0_wp)

@@ -124,7 +124,7 @@ contains
     real(wp) :: u_min, u_max
 
     x = start
-    call find_foot_point(channel%tube, target, x(1), x(2), edge_options, foot, status, fallback)
+    call find_foot_point(channel%slide, target, x(1), x(2), edge_options, foot, status, fallback)
     x = [foot%u, foot%v]
     if (status%ok()) then
       point = foot%point

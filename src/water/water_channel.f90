@@ -1,12 +1,16 @@
-!> The channel: how the water reads a slide. Every slide is a tube surface of
-!> the geometry layer (geometry_tube: a fitted slide, a tube on any
-!> centerline, or a closed-form straight, helical or S-shaped tube), and this
-!> one adapter gives the water model what it needs of it: the surface r(u, v)
-!> (u along the centerline, v across; v = pi/2 at the bottom of a circular
-!> tube, growing to the left of the direction of travel), the centerline c(u)
-!> for the curvature chi (thesis 4.8) and its rate, and the cross-section (a
-!> circle of radius r, or any profile that the water model reads from the
-!> surface itself, thesis 4.6).
+!> The channel: how the water reads a slide. A slide is any surface that
+!> answers the slide query (geometry_slide_query: a surface swept along a
+!> centerline; the tube of geometry_tube, a fitted slide, a tube on any
+!> centerline, a closed-form straight, helical or S-shaped tube, implements
+!> it), as for the rider, and this one adapter gives the water model what it
+!> needs of it: the surface r(u, v) (u along the centerline, v across;
+!> v = pi/2 at the bottom of a circular tube, growing to the left of the
+!> direction of travel), the centerline c(u) for the curvature chi (thesis
+!> 4.8) and its rate, and the cross-section: a tube's circle of radius r in
+!> closed form, any other profile read from the surface itself (thesis 4.6).
+!> A slide that is not a tube says nothing of its section: its profile is
+!> read from the surface, and taken to change along u (the area's rate by
+!> differences), which holds for any section.
 !>
 !> chi_s: the thesis (4.9) differentiates chi by the centerline parameter u.
 !> With f3 in kg m the friction term f3 chi_u w^2 is a force only if u is an
@@ -23,15 +27,16 @@ module water_channel
   use geometry_curve, only: curve_point_t
   use geometry_curve_frame, only: curve_curvature
   use geometry_cross_section, only: circle_section_t, blended_section_t
+  use geometry_slide_query, only: slide_surface_t
   use geometry_tube, only: tube_surface_t
   implicit none (type, external)
   private
   public :: channel_t, new_channel
 
   type :: channel_t
-    type(tube_surface_t) :: tube
+    class(slide_surface_t), allocatable :: slide   ! the slide query (geometry_slide_query)
     real(wp) :: radius = 0        ! m, the circle's radius; 0 if the section is not a circle
-    logical :: varies = .false.   ! the profile changes along u (a blended section)
+    logical :: varies = .false.   ! the profile changes along u (a blended section, a slide not a tube)
   contains
     !> r(u, v) and partials to `order` (0..3).
     procedure :: evaluate => channel_evaluate
@@ -58,15 +63,21 @@ module water_channel
 
 contains
 
-  !> The channel of a tube surface.
-  function new_channel(tube) result(c)
-    type(tube_surface_t), intent(in) :: tube
+  !> The channel of a slide: a tube's section read from its cross-section, any
+  !> other slide's from the surface (module comment).
+  function new_channel(slide) result(c)
+    class(slide_surface_t), intent(in) :: slide
     type(channel_t) :: c
-    c%tube = tube
-    select type (s => tube%section)
-    type is (circle_section_t)
-      c%radius = s%radius
-    type is (blended_section_t)
+    c%slide = slide
+    select type (slide)
+    type is (tube_surface_t)
+      select type (s => slide%section)
+      type is (circle_section_t)
+        c%radius = s%radius
+      type is (blended_section_t)
+        c%varies = .true.
+      end select
+    class default
       c%varies = .true.
     end select
   end function new_channel
@@ -77,7 +88,7 @@ contains
     integer, intent(in) :: order
     type(surface_point_t), intent(out) :: p
     type(status_t), intent(out) :: status
-    call self%tube%evaluate(u, v, order, p, status)
+    call self%slide%evaluate(u, v, order, p, status)
   end subroutine channel_evaluate
 
   pure subroutine channel_evaluate_with_curvature(self, u, v, p, chi, chi_s, speed, speed_u, status)
@@ -90,7 +101,7 @@ contains
     type(status_t), intent(out) :: status
     type(curve_point_t) :: c
     chi = 0; chi_s = 0; speed = 0; speed_u = 0
-    call self%tube%evaluate_with_centerline(u, v, 2, p, c, status)
+    call self%slide%evaluate_with_centerline(u, v, 2, p, c, status)
     if (.not. status%ok()) return
     call curvature_from_derivatives(c%d(:, 0:3), chi, chi_s)
     speed = norm2(c%d(:, 1))
@@ -103,24 +114,25 @@ contains
     real(wp), intent(out) :: c(3, 0:3)
     type(status_t), intent(out) :: status
     type(curve_point_t) :: cp
-    call self%tube%centerline%evaluate(u, 3, cp, status)
+    call self%slide%centerline_point(u, 3, cp, status)
     c = cp%d(:, 0:3)
   end subroutine channel_centerline
 
   pure subroutine channel_u_range(self, u_min, u_max)
     class(channel_t), intent(in) :: self
     real(wp), intent(out) :: u_min, u_max
-    call self%tube%centerline%domain(u_min, u_max)
+    real(wp) :: v_min, v_max
+    call self%slide%domain(u_min, u_max, v_min, v_max)
   end subroutine channel_u_range
 
   pure subroutine channel_v_range(self, v_min, v_max)
     class(channel_t), intent(in) :: self
     real(wp), intent(out) :: v_min, v_max
-    if (self%tube%section%periodic()) then
-      v_min = -huge(1.0_wp); v_max = huge(1.0_wp)
-    else
-      call self%tube%section%v_range(v_min, v_max)
-    end if
+    real(wp) :: u_min, u_max
+    ! the section's edges where the slide starts: the water's v range does
+    ! not follow u (a tube's section keeps its range)
+    call self%slide%domain(u_min, u_max, v_min, v_max)
+    call self%slide%section_edges(u_min, v_min, v_max)
   end subroutine channel_v_range
 
   pure real(wp) function channel_circle_radius(self, u) result(radius)
@@ -162,7 +174,7 @@ contains
   pure real(wp) function channel_arc_length(self, u) result(s)
     class(channel_t), intent(in) :: self
     real(wp), intent(in) :: u
-    s = self%tube%arc_length(u)
+    s = self%slide%arc_length(u)
   end function channel_arc_length
 
   !> u at arc length s (m) from the start of the centerline.
@@ -171,19 +183,19 @@ contains
     real(wp), intent(in) :: s
     real(wp), intent(out) :: u
     type(status_t), intent(out) :: status
-    call self%tube%parameter_at_length(s, u, status)
+    call self%slide%parameter_at_length(s, u, status)
   end subroutine channel_parameter_at_length
 
   pure function channel_describe(self) result(text)
     class(channel_t), intent(in) :: self
     character(len=:), allocatable :: text
-    text = self%tube%describe()
+    text = self%slide%describe()
   end function channel_describe
 
   !> u: m along a line, a fitted slide or an S-bend, rad around a helix; v: rad.
   pure subroutine channel_parameter_units(self, u_units, v_units)
     class(channel_t), intent(in) :: self
     character(len=:), allocatable, intent(out) :: u_units, v_units
-    call self%tube%parameter_units(u_units, v_units)
+    call self%slide%parameter_units(u_units, v_units)
   end subroutine channel_parameter_units
 end module water_channel

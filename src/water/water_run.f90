@@ -14,6 +14,7 @@ module water_run
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use base_log, only: log_sink_i
   use numerics_ode, only: ode_options_t
+  use geometry_slide_query, only: slide_surface_t
   use geometry_tube, only: tube_surface_t
   use water_channel, only: new_channel
   use water_streamline, only: streamline_t, default_f1, default_f2, default_f3, CORRECTION_FULL, &
@@ -35,7 +36,7 @@ module water_run
 
   !> Everything a water run needs (docs/water.md, "The water from a description").
   type :: water_description_t
-    type(tube_surface_t) :: slide                             !< every slide is a tube surface
+    class(slide_surface_t), allocatable :: slide              !< the slide query (a tube, or any slide)
     character(len=:), allocatable :: slide_name               !< which slide, from where (for reports)
     real(wp) :: flow_rate = 0.004_wp                          !< m^3/s (Q); not used by START_HEIGHT_SPEED
     real(wp) :: f1 = default_f1, f2 = default_f2, f3 = default_f3   !< kg/m, kg, kg m (4.7)
@@ -76,7 +77,7 @@ contains
     y0 = 0
     if (.not. status%ok()) return
     associate (d => description)
-      if (.not. allocated(d%slide%centerline)) then
+      if (.not. slide_built(d%slide)) then
         call fail('slide: no slide built')
       else if (d%start%mode /= START_HEIGHT_SPEED .and. .not. (d%flow_rate > 0 .and. d%flow_rate < 1e3_wp)) then
         call fail('flow_rate = '//format_short(d%flow_rate)//' m^3/s: must be > 0 (and below 1e3)')
@@ -157,6 +158,17 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'water description: '//message)
     end subroutine fail
   end subroutine new_streamline
+
+  !> A slide is given (a tube: with its centerline).
+  pure logical function slide_built(slide)
+    class(slide_surface_t), allocatable, intent(in) :: slide
+    slide_built = allocated(slide)
+    if (.not. slide_built) return
+    select type (slide)
+    type is (tube_surface_t)
+      slide_built = allocated(slide%centerline)
+    end select
+  end function slide_built
 
   !> Runs the water of `description` to the end of the slide (or its time
   !> bound, or a stop of the model) and builds its field and table. `status`:

@@ -49,7 +49,7 @@ program test_water_edges
   call check(s%edge_failures == 0, 'no edge solve failed')
   call model%channel%u_range(u_min, u_max)
 
-  sys%surface => model%channel%tube
+  sys%surface => model%channel%slide
   sys%equations = FOOT_FRAME
   options%xtol = edge_options%tolerance; options%residual_tolerance = edge_options%residual_tolerance
   diff = 0; jac_err = 0; hybrj_failures = 0

@@ -18,6 +18,7 @@ module test_water_friction_support
   use base_status, only: status_t
   use geometry_curve_frame, only: curve_frame_t, curve_frame_at
   use geometry_curve, only: curve_point_t
+  use geometry_tube, only: tube_surface_t
   use water_channel, only: channel_t
   implicit none (type, external)
   private
@@ -34,7 +35,9 @@ contains
     type(curve_frame_t) :: f
     type(curve_point_t) :: cp
     type(status_t) :: st
-    call curve_frame_at(tc%tube%centerline, tc%tube%horizon, u, 1, f, st, c=cp)
+    type(tube_surface_t) :: tube
+    tube = tube_of(tc)
+    call curve_frame_at(tube%centerline, tube%horizon, u, 1, f, st, c=cp)
     chi = norm2(f%x(:, 1))/norm2(cp%d(:, 1))
   end function frame_chi
 
@@ -47,7 +50,9 @@ contains
     type(curve_frame_t) :: f
     type(curve_point_t) :: cp
     type(status_t) :: st
-    call curve_frame_at(tc%tube%centerline, tc%tube%horizon, u, 1, f, st, c=cp)
+    type(tube_surface_t) :: tube
+    tube = tube_of(tc)
+    call curve_frame_at(tube%centerline, tube%horizon, u, 1, f, st, c=cp)
     turn = dot_product(f%x(:, 1), f%y(:, 0))/norm2(cp%d(:, 1))
   end function frame_turn
 
@@ -59,12 +64,24 @@ contains
     real(wp), intent(in) :: u, delta
     real(wp), intent(out) :: estimate
     real(wp) :: chi_s, d2
+    type(tube_surface_t) :: tube
+    tube = tube_of(tc)
     chi_s = (frame_chi(tc, u + delta) - frame_chi(tc, u - delta)) &
-            /tc%tube%centerline%arc_length(u - delta, u + delta)
+            /tube%centerline%arc_length(u - delta, u + delta)
     d2 = (frame_chi(tc, u + 2*delta) - frame_chi(tc, u - 2*delta)) &
-         /tc%tube%centerline%arc_length(u - 2*delta, u + 2*delta)
+         /tube%centerline%arc_length(u - 2*delta, u + 2*delta)
     estimate = abs(chi_s - d2)
   end function frame_chi_s
+
+  !> The tube a channel reads (these tests build only tubes).
+  function tube_of(tc) result(tube)
+    class(channel_t), intent(in) :: tc
+    type(tube_surface_t) :: tube
+    select type (slide => tc%slide)
+    type is (tube_surface_t)
+      tube = slide
+    end select
+  end function tube_of
 end module test_water_friction_support
 
 program test_water_friction
