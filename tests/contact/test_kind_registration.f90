@@ -111,7 +111,8 @@ program test_kind_registration
   use base_status, only: status_t, STATUS_INVALID_INPUT
   use base_spec, only: spec_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
-  use geometry_surface_factory, only: register_surface_kind
+  use geometry_surface_kind, only: surface_kind_t
+  use geometry_surface_factory, only: register_surface_kind, surface_kinds, surface_kind_index
   use kinetostatics_force_law_factory, only: register_force_law
   use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
@@ -139,6 +140,7 @@ program test_kind_registration
   call register_force_law(drag_kind(), st)
   call check(st%code == STATUS_INVALID_INPUT .and. index(st%text(), 'registered already') > 0, &
              'a kind registered twice is refused: '//st%text())
+  call concurrent_registration()
   call point_mass_on_slope()
   call sphere_on_slope()
   call sled_on_slope()
@@ -147,6 +149,40 @@ program test_kind_registration
   call finish_tests('test_kind_registration')
 
 contains
+
+  !> Registrations and look-ups from 8 threads at once (the registry's one
+  !> critical section): of 8 registrations of one name exactly one is
+  !> taken; the 8 distinct names all are, each once, and look-ups meanwhile
+  !> find a kind whole or not at all (its builder with its name).
+  subroutine concurrent_registration()
+    integer, parameter :: n = 8
+    type(status_t) :: twin(n), own(n)
+    type(surface_kind_t) :: kind
+    type(surface_kind_t), allocatable :: kinds(:)
+    logical :: whole(n)
+    integer :: i, j
+    !$omp parallel do num_threads(n) private(kind, kinds, j) schedule(static, 1)
+    do i = 1, n
+      kind = slope_kind()
+      kind%name = 'test_slope_twin'
+      call register_surface_kind(kind, twin(i))
+      kind%name = 'test_slope_'//achar(iachar('a') + i - 1)
+      call register_surface_kind(kind, own(i))
+      kinds = surface_kinds()
+      whole(i) = .true.
+      do j = 1, size(kinds)
+        whole(i) = whole(i) .and. associated(kinds(j)%build) .and. surface_kind_index(kinds(j)%name) == j
+      end do
+    end do
+    !$omp end parallel do
+    call check(count([(twin(i)%ok(), i=1, n)]) == 1, 'of 8 threads registering one name at once, one succeeds')
+    call check(all([(own(i)%ok(), i=1, n)]), '8 threads registering 8 names at once: all registered')
+    kinds = surface_kinds()
+    call check(count([(kinds(j)%name == 'test_slope_twin', j=1, size(kinds))]) == 1 .and. &
+               all([(count([(kinds(j)%name == 'test_slope_'//achar(iachar('a') + i - 1), j=1, size(kinds))]) == 1, &
+                     i=1, n)]), 'every name registered once')
+    call check(all(whole), 'look-ups during the registrations saw whole kinds, each at its index')
+  end subroutine concurrent_registration
 
   function point_mass_input(point_mass) result(text)
     character(len=*), intent(in) :: point_mass
