@@ -7,9 +7,18 @@ module base_text
   implicit none (type, external)
   private
   public :: format_real, format_short, format_vector, format_integer, format_with, lower
-  public :: next_data_line
+  public :: next_data_line, append_item
 
 contains
+
+  !> Appends `item` to the list `text`, after `separator` unless the list is
+  !> still empty: 'a', 'a; b', 'a; b; c'.
+  pure subroutine append_item(text, item, separator)
+    character(len=:), allocatable, intent(inout) :: text
+    character(len=*), intent(in) :: item, separator
+    if (len(text) > 0) text = text//separator
+    text = text//item
+  end subroutine append_item
 
   !> The shortest text that reads back as x (so messages show what was typed).
   pure function format_real(x) result(text)

@@ -50,7 +50,7 @@ module design_geometry_optimization
   use base_log, only: log_sink_i, progress_interval
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_NOT_CONVERGED
-  use base_text, only: format_short, format_integer, format_real
+  use base_text, only: format_short, format_integer, format_real, append_item
   use geometry_tube, only: tube_surface_t
   use design_slide_design, only: slide_design_t, table_4_12_design, design_points, start_x, &
     build_design_slide, start_points
@@ -543,8 +543,8 @@ contains
           if (len(history) > 0) result%minimum_check = result%minimum_check//'; before: '//history
           return
         end if
-        call add_history('restart '//format_integer(attempt)//' lowered the cost from '// &
-                         format_short(cost_end)//' to '//format_short(fit%cost))
+        call append_item(history, 'restart '//format_integer(attempt)//' lowered the cost from '// &
+                         format_short(cost_end)//' to '//format_short(fit%cost), ', ')
       end if
       cost_end = fit%cost
     end do
@@ -557,14 +557,6 @@ contains
         ' restarts the cost still falls by more than ftol = '//format_real(problem%setup%solver%ftol)
     end if
     if (len(history) > 0) result%minimum_check = result%minimum_check//' ('//history//')'
-
-  contains
-
-    subroutine add_history(what)
-      character(len=*), intent(in) :: what
-      if (len(history) > 0) history = history//', '
-      history = history//what
-    end subroutine add_history
   end subroutine fit_to_minimum
 
   !> The constraints of the optimisation that design `e` violates, in
@@ -580,21 +572,16 @@ contains
       associate (r => e%rides(i))
         ride = 'ride at '//format_short(r%start_angle*180/pi)//' deg'
         if (r%lifts_off) then
-          call append(ride//' lifts off: smallest normal force '//format_short(r%min_normal_force)// &
-                      ' N, must stay > 0')
+          call append_item(text, ride//' lifts off: smallest normal force '//format_short(r%min_normal_force)// &
+                           ' N, must stay > 0', '; ')
         else if (r%max_tipping_excess > setup%lever_tolerance) then
-          call append(ride//': lever arm '//format_short(r%max_lever_arm)//' m above lever_limit '// &
-                      format_short(setup%lever_limit)//' m (tipping excess '//format_short(r%max_tipping_excess)// &
-                      ' m > lever_tolerance '//format_real(setup%lever_tolerance)//' m)')
+          call append_item(text, ride//': lever arm '//format_short(r%max_lever_arm)//' m above lever_limit '// &
+                           format_short(setup%lever_limit)//' m (tipping excess '// &
+                           format_short(r%max_tipping_excess)//' m > lever_tolerance '// &
+                           format_real(setup%lever_tolerance)//' m)', '; ')
         end if
       end associate
     end do
-  contains
-    subroutine append(what)
-      character(len=*), intent(in) :: what
-      if (len(text) > 0) text = text//'; '
-      text = text//what
-    end subroutine append
   end function constraint_violations
 
   !> The evaluation of design x: the best one if it is x, else its rides

@@ -29,7 +29,7 @@ module rider_model
   use kinetostatics_force_law, only: force_law_t, law_place_t
   use kinetostatics_force_law_factory, only: force_law_from_spec
   use water_field, only: water_field_t
-  use rider_body, only: body_params_t, rider_body_t, build_rider_body
+  use rider_body, only: body_params_t, rigid_body_t, rider_body_t, build_rider_body
   use rider_drag, only: water_properties_t
   use rider_start, only: contact_reach_t, reach_contact
   use rider_water_drag, only: new_water_drag, in_water_roots
@@ -98,7 +98,7 @@ contains
     type(darboux_frame_t) :: fr
     type(contact_reach_t) :: heels, back
     real(wp) :: axes(3, 3), hip(3)
-    integer :: d_b, pelvis, hip_frame, legs, heel, d_u, trunk, back_point, d_o, su, sv, k
+    integer :: d_b, pelvis, hip_frame, legs, d_u, trunk, d_o, k
     type(spec_t) :: friction
     class(force_law_t), allocatable :: law
 
@@ -150,36 +150,11 @@ contains
     call m%add_element(new_rigid_offset('pelvis_to_hip', pelvis, hip_frame, layout%body%hip))
 
     ! legs: flexion about -y, heel point, heel contact closed by three plane-point conditions
-    legs = m%add_frame('legs')
-    layout%flexion = m%add_scalar('phi_legs', heels%angle)
-    call m%add_element(new_revolute('hip_flexion', hip_frame, legs, layout%flexion, -ey))
-    call m%add_element(new_mass_element('legs_mass', legs, layout%body%legs%mass, layout%body%legs%inertia, &
-                                        layout%body%legs%com, p%gravity, status))
-    heel = m%add_frame('heel_point')
-    call m%add_element(new_rigid_offset('legs_to_heel', legs, heel, layout%body%heel))
-    d_u = m%add_frame('heel_contact')
-    su = m%add_scalar('u_heels', heels%u)
-    sv = m%add_scalar('v_heels', heels%v)
-    layout%u(CONTACT_HEELS) = su
-    layout%v(CONTACT_HEELS) = sv
-    call m%add_element(new_surface_joint('heel_joint', 1, d_u, su, sv, surface, sigma, alpha_u, alpha_v))
-    call close_point('heels', d_u, heel, [layout%flexion, su, sv], layout%closure(1:3))
-
+    call add_limb('legs', 'hip_flexion', -ey, layout%body%legs, 'heel', layout%body%heel, 'heels', CONTACT_HEELS, &
+                  heels, legs, d_u, layout%flexion, layout%closure(1:3))
     ! trunk: tilt about +y, back point, back contact
-    trunk = m%add_frame('trunk')
-    layout%tilt = m%add_scalar('phi_trunk', back%angle)
-    call m%add_element(new_revolute('trunk_tilt', hip_frame, trunk, layout%tilt, ey))
-    call m%add_element(new_mass_element('trunk_mass', trunk, layout%body%trunk%mass, layout%body%trunk%inertia, &
-                                        layout%body%trunk%com, p%gravity, status))
-    back_point = m%add_frame('back_point')
-    call m%add_element(new_rigid_offset('trunk_to_back', trunk, back_point, layout%body%back))
-    d_o = m%add_frame('back_contact')
-    su = m%add_scalar('u_back', back%u)
-    sv = m%add_scalar('v_back', back%v)
-    layout%u(CONTACT_BACK) = su
-    layout%v(CONTACT_BACK) = sv
-    call m%add_element(new_surface_joint('back_joint', 1, d_o, su, sv, surface, sigma, alpha_u, alpha_v))
-    call close_point('back', d_o, back_point, [layout%tilt, su, sv], layout%closure(4:6))
+    call add_limb('trunk', 'trunk_tilt', ey, layout%body%trunk, 'back', layout%body%back, 'back', CONTACT_BACK, &
+                  back, trunk, d_o, layout%tilt, layout%closure(4:6))
 
     layout%contact_frame = [d_b, d_u, d_o]
     layout%body_frame = [pelvis, legs, trunk]
@@ -211,6 +186,35 @@ contains
     call m%finalize(status)
 
   contains
+
+    !> A limb on a revolute at the hip (`hinge` about `axis`, at the angle
+    !> `reach` found), its mass `part`, its contact point at `offset` and the
+    !> contact's surface joint at reach's (u, v), the point closed on the
+    !> contact (close_point): the legs with the heels, the trunk with the back.
+    !> The names of its frames, scalars and elements follow from limb, point
+    !> and contact ('legs', 'heel', 'heels': 'phi_legs', 'heel_point', ...).
+    subroutine add_limb(limb, hinge, axis, part, point, offset, contact, k, reach, frame, contact_frame, angle, &
+                        closure)
+      character(len=*), intent(in) :: limb, hinge, point, contact
+      real(wp), intent(in) :: axis(3), offset(3)
+      type(rigid_body_t), intent(in) :: part
+      integer, intent(in) :: k
+      type(contact_reach_t), intent(in) :: reach
+      integer, intent(out) :: frame, contact_frame, angle, closure(3)
+      integer :: point_frame
+      frame = m%add_frame(limb)
+      angle = m%add_scalar('phi_'//limb, reach%angle)
+      call m%add_element(new_revolute(hinge, hip_frame, frame, angle, axis))
+      call m%add_element(new_mass_element(limb//'_mass', frame, part%mass, part%inertia, part%com, p%gravity, status))
+      point_frame = m%add_frame(point//'_point')
+      call m%add_element(new_rigid_offset(limb//'_to_'//point, frame, point_frame, offset))
+      contact_frame = m%add_frame(point//'_contact')
+      layout%u(k) = m%add_scalar('u_'//contact, reach%u)
+      layout%v(k) = m%add_scalar('v_'//contact, reach%v)
+      call m%add_element(new_surface_joint(point//'_joint', 1, contact_frame, layout%u(k), layout%v(k), surface, &
+                                           sigma, alpha_u, alpha_v))
+      call close_point(contact, contact_frame, point_frame, [angle, layout%u(k), layout%v(k)], closure)
+    end subroutine add_limb
 
     !> Point `point` held at the origin of the Darboux frame `contact`:
     !> three plane-point measurements along its axes (4.27), one loop.

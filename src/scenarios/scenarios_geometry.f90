@@ -16,11 +16,11 @@ module scenarios_geometry
   use io_run_config, only: run_config_t
   use io_geometry_config, only: read_geometry_config, geometry_groups
   use io_hdf5, only: result_file_t, run_outcome
-  use io_system, only: write_standard_output
   use io_summary, only: summary_t, engineering
   use io_surface_grid, only: write_surface_grid
   use base_grid, only: evenly_spaced
   use io_xdmf, only: xdmf_t
+  use scenarios_report, only: end_report
   implicit none (type, external)
   private
   public :: run_geometry, geometry_scenario_groups
@@ -75,15 +75,7 @@ contains
     call file%finish(complete, message, work)
     complete = complete .and. work%ok()   ! finish refuses a file with NaN or Inf
     call summary%print()
-    if (complete) then
-      call write_standard_output('  results                   '//file%final_path())
-    else
-      call write_standard_output('  results (INCOMPLETE)      '//file%final_path())
-    end if
-    if (allocated(run%summary_json)) then
-      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, &
-                                                               file%final_path(), work)
-    end if
+    call end_report(summary, run, file%final_path(), complete, message, work)
     if (.not. work%ok()) status = run_outcome(work, status_t())
   end subroutine run_geometry
 

@@ -17,11 +17,11 @@ module scenarios_mechanism
   use io_solver_config, only: solver_config_t, check_output_count
   use io_mechanism_config, only: write_mechanism_series
   use io_hdf5, only: result_file_t, run_outcome
-  use io_system, only: write_standard_output
   use io_summary, only: summary_t, degrees, engineering
   use io_surface_grid, only: write_surface_grid_around
   use io_xdmf, only: xdmf_t, body_shape_t
   use geometry_surface, only: surface_t
+  use scenarios_report, only: end_report
   implicit none (type, external)
   private
   public :: run_mechanism, mechanism_driver_options
@@ -226,14 +226,7 @@ contains
     call summary%add_count('rhs_evaluations', 'right-hand sides', int(stats%rhs_evaluations), 'evaluations')
     call summary%add('cpu_time', 'CPU time', cpu, 's')
     call summary%print()
-    if (complete) then
-      call write_standard_output('  results                   '//path)
-    else
-      call write_standard_output('  results (INCOMPLETE)      '//path)
-    end if
-    if (allocated(run%summary_json)) then
-      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
-    end if
+    call end_report(summary, run, path, complete, message, status)
   end subroutine report
 
   !> Per body of the contact scenario: the height of its centre of mass, the

@@ -23,9 +23,9 @@ module scenarios_optimize
   use io_run_config, only: run_config_t
   use io_optimization_config, only: read_optimization_config
   use io_hdf5, only: result_file_t, run_outcome
-  use io_system, only: write_standard_output
   use io_summary, only: summary_t, degrees
   use io_input_declarations, only: declared_unit
+  use scenarios_report, only: end_report
   implicit none (type, external)
   private
   public :: run_optimize, optimize_groups
@@ -395,14 +395,7 @@ contains
         format_with(table(3, k), 'f12.4')//'        '//lever_text(table(4, k))//lever_text(table(5, k)))
     end do
     call summary%print()
-    if (complete) then
-      call write_standard_output('  results                   '//path)
-    else
-      call write_standard_output('  results (INCOMPLETE)      '//path)
-    end if
-    if (allocated(run%summary_json)) then
-      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
-    end if
+    call end_report(summary, run, path, complete, message, status)
 
   contains
 

@@ -17,10 +17,10 @@ module scenarios_point_mass
   use io_geometry_config, only: geometry_groups
   use io_point_mass_config, only: read_point_mass_config
   use io_hdf5, only: result_file_t, run_outcome, units_per_second
-  use io_system, only: write_standard_output
   use io_summary, only: summary_t, standard_g, engineering
   use io_surface_grid, only: write_surface_grid_around
   use io_xdmf, only: xdmf_t
+  use scenarios_report, only: end_report
   implicit none (type, external)
   private
   public :: run_point_mass, build_point_mass, point_mass_groups
@@ -223,13 +223,6 @@ contains
     call summary%add_count('rhs_evaluations', 'right-hand sides', int(stats%rhs_evaluations), 'evaluations')
     call summary%add('cpu_time', 'CPU time', cpu, 's')
     call summary%print()
-    if (complete) then
-      call write_standard_output('  results                   '//path)
-    else
-      call write_standard_output('  results (INCOMPLETE)      '//path)
-    end if
-    if (allocated(run%summary_json)) then
-      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
-    end if
+    call end_report(summary, run, path, complete, message, status)
   end subroutine report
 end module scenarios_point_mass

@@ -301,11 +301,7 @@ contains
     call summary%add_count('threads', 'threads per rank', threads, '')
     call summary%add_count('ranks', 'MPI ranks', ranks, '')
     if (csv_tried) call summary%add_text('csv', 'CSV summary', csv_path)
-    if (complete) then
-      call summary%add_text('results', 'results', path)
-    else
-      call summary%add_text('results', 'results (INCOMPLETE)', path)
-    end if
+    call summary%add_results(path, complete)
     call summary%print()
     if (allocated(run%summary_json)) then
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)

@@ -30,6 +30,7 @@ module scenarios_water
   use io_surface_grid, only: write_surface_grid
   use base_grid, only: evenly_spaced
   use io_xdmf, only: xdmf_t
+  use scenarios_report, only: end_report
   implicit none (type, external)
   private
   public :: run_water, build_water, water_groups, write_slide_grid
@@ -363,14 +364,7 @@ contains
         call write_standard_output(trim(line))
       end do
     end if
-    if (complete) then
-      call write_standard_output('  results                   '//path)
-    else
-      call write_standard_output('  results (INCOMPLETE)      '//path)
-    end if
-    if (allocated(run%summary_json)) then
-      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
-    end if
+    call end_report(summary, run, path, complete, message, status)
   contains
     pure function column(units) result(text)   ! a unit right-aligned in the 11 characters of f11.4
       character(len=*), intent(in) :: units
