@@ -84,6 +84,7 @@ module contact_model
     logical :: rolling = .false.
     integer :: level = LEVEL_POSITION
     integer :: chain = CHAIN_AUTO
+    logical :: start_open = .false.              ! starts apart, the body in flight (contact_flight)
   end type contact_spec_t
 
   !> The description: 'ground' names the fixed frame (it needs no body entry).

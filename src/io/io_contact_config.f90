@@ -157,13 +157,14 @@ contains
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
     character(len=name_length) :: name, body_1, shape_1, body_2, shape_2, friction
-    character(len=8) :: level, chain
+    character(len=8) :: level, chain, start
     integer :: j
     if (.not. status%ok()) return
     name = ''; body_1 = 'ground'; shape_1 = ''; body_2 = ''; shape_2 = ''
     friction = 'none'
     level = 'position'
     chain = ''
+    start = 'closed'
     associate (c => system%contacts(k))
       call open_group(input, 'contact', r, status, occurrence=k, also=friction_law_variables())
       call r%get('name', name, status)
@@ -177,6 +178,7 @@ contains
       call r%get('rolling', c%rolling, status)
       call r%get('level', level, status)
       call r%get('chain', chain, status)
+      call r%get('start', start, status)
       if (.not. status%ok()) return
       if (chain == 'open' .and. c%rolling) call r%invalid('chain', '''open''', 'a rolling contact needs the '// &
         'loop (chain = ''loop'', the default with rolling): the open chain is for sliding contacts', status)
@@ -218,6 +220,7 @@ contains
       case default
         c%chain = CHAIN_AUTO
       end select
+      c%start_open = start == 'open'
     end associate
   end subroutine read_contact
 

@@ -159,5 +159,8 @@ module io_declarations_multibody
       'velocity-level contact (appendix E), for comparison'), &
     declaration_t(groups='contact', name='chain', kind=VALUE_WORDS, default='open; loop with rolling', &
       choices='open loop', meaning='at position level: the open chain, or the relative chain closed by the '// &
-      'five conditions (3.86)')]
+      'five conditions (3.86)'), &
+    declaration_t(groups='contact', name='start', kind=VALUE_WORDS, default='''closed''', choices='closed open', &
+      meaning='closed: body_2 is moved onto shape_1 and starts touching; open: it starts where &body puts it, '// &
+      'apart, in free flight until it lands (docs/contact.md, "Flight")')]
 end module io_declarations_multibody

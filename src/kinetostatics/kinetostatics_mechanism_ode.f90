@@ -42,7 +42,8 @@ module kinetostatics_mechanism_ode
     integer :: event_action = EVENT_RECORD
     character(len=:), allocatable :: outcome   !< why the run ended, set by the stopping event
     integer :: rhs_count = 0
-    integer :: n_roots = 0                     ! root_count, counted in prepare (the right-hand side asks at every call)
+    integer :: n_roots = 0                     ! its own roots (not an extension's), counted in prepare
+                                               ! (the right-hand side asks at every call)
     integer :: root_calls = 0, root_cache_hits = 0
     ! root values of the last evaluation and the state they belong to
     logical :: cached = .false.

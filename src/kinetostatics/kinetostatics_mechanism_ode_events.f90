@@ -102,7 +102,9 @@ contains
       self%edge_coordinate = [(findloc(m%q(1:m%f), m%edges(k)%scalar, dim=1), k = 1, size(m%edges))]
     end associate
     n_roots_before = self%n_roots
-    self%n_roots = self%root_count()   ! every array sized by it is made anew when it changes
+    ! its own roots (an extension's come after them, handled by the extension);
+    ! every array sized by it is made anew when it changes
+    self%n_roots = mechanism_root_count(self)
     if (allocated(self%cache_y)) then
       if (size(self%cache_y) == self%state_size() .and. self%n_roots == n_roots_before) return
       deallocate (self%cache_y, self%cache_g, self%work_ydot, self%rhs_y, self%rhs_g, self%root_scale)

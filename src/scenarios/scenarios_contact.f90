@@ -15,6 +15,7 @@ module scenarios_contact
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config, contact_groups, contact_repeatable_groups
   use scenarios_mechanism, only: run_mechanism
+  use contact_flight, only: flight_ode_t, build_flight, starts_open
   use io_xdmf, only: body_shape_t
   use base_grid, only: evenly_spaced
   use numerics_ode, only: ODE_ADAMS
@@ -39,6 +40,10 @@ contains
     if (status%ok()) call read_contact_config(input, system, status)
     if (.not. status%ok()) return
     if (solver%options%method == ODE_ADAMS) solver%options%convergence_coefficient = contact_convergence_coefficient
+    if (starts_open(system)) then
+      call run_flight(input, run, solver, system, status)
+      return
+    end if
     call build_contact_model(system, model, status)
     f = model%ode%mechanism%f
     ns = model%ode%mechanism%ns
@@ -59,6 +64,26 @@ contains
                        model%q_units, model%beta_units, status, &
                        surface=system%shapes(first_shape(system))%surface, shapes=bounded_body_shapes(system))
   end subroutine run_contact
+
+  !> A body whose contact starts open: it flies until it lands (contact_flight).
+  subroutine run_flight(input, run, solver, system, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(solver_config_t), intent(in) :: solver
+    type(contact_system_t), intent(in) :: system
+    type(status_t), intent(inout) :: status
+    type(flight_ode_t) :: flight
+    real(wp), allocatable :: q0(:), qd0(:)
+    character(len=8), allocatable :: q_units(:)
+    call build_flight(system, flight, q0, qd0, q_units, status)
+    if (.not. status%ok()) then
+      call locate_failure(input, system, status)
+      call mark_input_failure(status)
+      return
+    end if
+    call run_mechanism('contact', input, run, solver, flight, q0, qd0, q_units, [character(len=8) ::], status, &
+                       shapes=bounded_body_shapes(system))
+  end subroutine run_flight
 
   !> Every bounded shape a body carries (an egg, a ball; not a plane or an
   !> open paraboloid), as a 24 x 13 grid in the body's axes for the XDMF view.

@@ -55,7 +55,7 @@ contains
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
     type(solver_config_t), intent(in) :: solver
-    type(mechanism_ode_t), intent(inout), target :: sys
+    class(mechanism_ode_t), intent(inout), target :: sys   ! or an extension (contact_flight)
     real(wp), intent(in) :: q0(:), qd0(:)
     character(len=*), intent(in) :: q_units(:), beta_units(:)   ! units of the q and of the dependent beta
     type(status_t), intent(inout) :: status

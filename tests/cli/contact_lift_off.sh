@@ -12,7 +12,10 @@
 #             through a pole (35 N and 8.5 N at the last output, -1e7 N and
 #             more where they change sign). A failure: exit 2, the file kept
 #             and marked incomplete, the message says singular, which
-#             contacts and their forces.
+#             contacts and their forces;
+#   drop      flight: a ball starting open lands (exit 0, "landing") at the
+#             closed-form time and speed; sunk: an open start in the floor
+#             is refused (exit 1).
 set -u
 slidesim=$1
 repo=$(cd "$(dirname "$0")/../.." && pwd)
@@ -50,5 +53,24 @@ grep -q "position = 1.0, 0.8, 0.6" "$work/singular.nml" || fail "singular: the i
 run_case singular 2 'became singular' "'p2_on_table' (N = " "'p3_in_p2' (N = " 'unbounded' 'not a lift-off' \
   'at the event at t = 0.37273' 'conformal'
 grep -q 'stopped at .*lift-off' "$work/singular.out" && fail "singular: the summary still reports a lift-off"
+
+# flight (issue 25, first slice): a ball that starts open above the floor
+# falls and lands at t = sqrt(2 h/g), h = 1 m (0.451601 s), at sqrt(2 g h);
+# the run ends there normally; an open start inside the floor is refused at
+# its &contact's line
+cat > "$work/drop.nml" <<'EOF'
+&run scenario = 'contact', output = 'drop.h5' /
+&solver duration = 2, output_step = 0.01, rtol = 1e-10, atol = 1e-10 /
+&shape name = 'floor', kind = 'plane' /
+&shape name = 'ball', kind = 'sphere', radius = 0.1 /
+&body name = 'ball', mass = 1, solid_of = 'ball', position = 0, 0, 1.1, velocity = 0.5, 0, 0 /
+&contact name = 'on_floor', shape_1 = 'floor', body_2 = 'ball', shape_2 = 'ball', start = 'open' /
+EOF
+run_case drop 0
+grep -qF "landing: the gap of contact 'on_floor' fell to zero at t = 0.451601 s, approaching at 4.428691 m/s" \
+  "$work/drop.out" || fail "drop: the summary does not say the landing: $(grep 'stopped at' "$work/drop.out")"
+sed -e "s|output = 'drop.h5'|output = 'sunk.h5'|" -e 's|position = 0, 0, 1.1|position = 0, 0, 0.09|' \
+  "$work/drop.nml" > "$work/sunk.nml"
+run_case sunk 1 "sunk.nml:6: &contact name = 'on_floor': start = 'open' but body 'ball' touches or overlaps"
 
 finish

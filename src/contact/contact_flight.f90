@@ -1,0 +1,276 @@
+!> Flight: a body whose contact starts open (issue 25, the first slice).
+!>
+!> The body flies free: it hangs from the ground by three prismatic joints
+!> along the world axes (the origin of its frame) and a free rotation
+!> (kinetostatics_free_rotation, its chart centred on the start pose), and
+!> carries its mass element under gravity. Its coordinates are the origin
+!> (x, y, z) and the rotation's angles, its speeds their rates: the state is
+!> the pose and twist, continuous (the rotation's chart changes keep them).
+!>
+!> The contact's gap (contact_gap: the signed distance of its two shapes
+!> along their common normal) is recorded with every state and is a root
+!> function: where it falls through zero the body lands. Impacts are not
+!> modelled yet, so the run ends there (exit status 0, the outcome says
+!> "landing" with the approach speed).
+!>
+!> Only a single contact whose body_1 is the ground can start open (its
+!> shape_1 fixed, at the ground's pose), without friction, rolling, level or
+!> chain (the closed contact's, unused while the run ends at the landing);
+!> anything else is refused.
+module contact_flight
+  use base_kinds, only: wp
+  use base_text, only: format_short
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
+  use numerics_event_driver, only: EVENT_STOP
+  use numerics_linear_algebra, only: lu_factor, lu_solve
+  use kinetostatics_joints, only: new_prismatic
+  use kinetostatics_free_rotation, only: new_free_rotation
+  use kinetostatics_mass, only: new_mass_element
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use geometry_solid, only: solid_properties_t
+  use contact_factory, only: body_from_spec
+  use contact_model, only: contact_system_t, LEVEL_POSITION, CHAIN_AUTO
+  use contact_gap, only: contact_gap_t, new_contact_gap
+  implicit none (type, external)
+  private
+  public :: flight_ode_t, build_flight, starts_open
+
+  real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+  real(wp), parameter :: ground_origin(3) = 0
+
+  !> The free body as a model of the integration driver: the mechanism's own
+  !> roots and events, and after them the contact's gap.
+  type, extends(mechanism_ode_t) :: flight_ode_t
+    type(contact_gap_t) :: gap
+    character(len=:), allocatable :: contact_name
+    integer :: body_frame = 0
+    integer :: gap_monitor = 0     ! the gap's place among the recorded monitors
+    real(wp) :: last_gap = 1       ! kept where an update fails (a trial state)
+  contains
+    procedure :: root_count => flight_root_count
+    procedure :: roots => flight_roots
+    procedure :: handle_event => flight_handle_event
+    procedure :: record => flight_record
+  end type flight_ode_t
+
+contains
+
+  !> Whether any contact of the description starts open.
+  logical function starts_open(system)
+    type(contact_system_t), intent(in) :: system
+    starts_open = any(system%contacts%start_open)
+  end function starts_open
+
+  !> The free body of `system`'s contact at its given pose and twist:
+  !> q0 = (x, y, z, a1, a2, a3), qd0 their rates, q_units; refused unless the
+  !> description is a single contact on the ground that starts open with the
+  !> shapes apart.
+  subroutine build_flight(system, flight, q0, qd0, q_units, status)
+    type(contact_system_t), intent(in) :: system
+    type(flight_ode_t), intent(out) :: flight
+    real(wp), allocatable, intent(out) :: q0(:), qd0(:)
+    character(len=8), allocatable, intent(out) :: q_units(:)
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: axis_name(3) = ['x', 'y', 'z']
+    real(wp), parameter :: axes(3, 3) = identity
+    type(solid_properties_t) :: props
+    integer :: frames(4), coordinates(6), i, b
+    if (.not. status%ok()) return
+    associate (c => system%contacts(1), m => flight%mechanism)
+      if (size(system%contacts) /= 1 .or. size(system%bodies) /= 1 .or. c%body_1 /= 'ground') then
+        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': start = ''open'' is '// &
+          'supported for a single contact between the ground and one body (flight and landing, first slice); '// &
+          'this description has '//format_count(size(system%contacts))//' contacts and '// &
+          format_count(size(system%bodies))//' bodies')
+        return
+      end if
+      if (allocated(c%friction%kind) .or. c%rolling .or. c%level /= LEVEL_POSITION .or. c%chain /= CHAIN_AUTO) then
+        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': start = ''open'' takes no '// &
+          'friction, rolling, level or chain yet: they are the closed contact''s, and an open start ends its '// &
+          'run at the landing (impacts and closing are not built yet)')
+        return
+      end if
+      b = 1
+      if (system%bodies(b)%name /= c%body_2) then
+        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_2 = '''//c%body_2// &
+          ''' is not a body')
+        return
+      end if
+      call body_from_spec(system%bodies(b), system%shapes, props, status)
+      if (.not. status%ok()) return
+      flight%contact_name = c%name
+      frames(1) = 1   ! the ground
+      do i = 1, 3
+        frames(i + 1) = m%add_frame(c%body_2//'.'//axis_name(i))
+        coordinates(i) = m%add_scalar(c%body_2//'.'//axis_name(i), system%bodies(b)%position(i))
+        call m%add_element(new_prismatic(c%body_2//'.'//axis_name(i), frames(i), frames(i + 1), coordinates(i), &
+                                         axes(:, i)))
+      end do
+      do i = 1, 3
+        coordinates(3 + i) = m%add_scalar(c%body_2//'.a'//achar(iachar('0') + i), 0.0_wp)
+      end do
+      flight%body_frame = m%add_frame(c%body_2)
+      call m%add_element(new_free_rotation(c%body_2//'.rotation', frames(4), flight%body_frame, coordinates(4:6), &
+                                           [0.0_wp, 0.0_wp, 1.0_wp], system%bodies(b)%rotation))
+      call m%add_element(new_mass_element(c%body_2, flight%body_frame, system%bodies(b)%mass, props%inertia, &
+                                          props%centre, system%gravity, status))
+      if (.not. status%ok()) return
+      call m%add_monitor(m%add_scalar(c%name//'.gap'), 'm')
+      flight%gap_monitor = size(m%monitors)
+      call m%set_coordinates(coordinates)
+      call m%finalize(status)
+      if (.not. status%ok()) return
+      q0 = m%scalars(coordinates)%q
+      call m%set_positions(q0, status)
+      if (.not. status%ok()) return
+      call start_rates(flight, [system%bodies(b)%angular_velocity, system%bodies(b)%velocity], qd0, status)
+      if (.not. status%ok()) return
+      q_units = [character(len=8) :: 'm', 'm', 'm', 'rad', 'rad', 'rad']
+      call start_gap(flight, system, status)
+    end associate
+  end subroutine build_flight
+
+  !> The gap at the start, from the contact search; it must be open (> 0)
+  !> and on the contact's branch (the normals against each other).
+  subroutine start_gap(flight, system, status)
+    type(flight_ode_t), intent(inout) :: flight
+    type(contact_system_t), intent(in) :: system
+    type(status_t), intent(inout) :: status
+    integer :: s1, s2, k
+    associate (c => system%contacts(1), body => flight%mechanism%frames(flight%body_frame))
+      s1 = findloc([(system%shapes(k)%name == c%shape_1, k = 1, size(system%shapes))], .true., dim=1)
+      s2 = findloc([(system%shapes(k)%name == c%shape_2, k = 1, size(system%shapes))], .true., dim=1)
+      flight%gap = new_contact_gap(system%shapes(s1)%surface, c%side_1, system%shapes(s2)%surface, c%side_2, &
+                                   [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp])
+      call flight%gap%start_from_search(identity, ground_origin, body%rot, body%r, status)
+      if (.not. status%ok()) then
+        status%message = 'contact '''//c%name//''': the gap between '''//c%shape_1//''' and '''//c%shape_2// &
+                         ''' at the start: '//status%text()
+        return
+      end if
+      if (.not. flight%gap%normals_cosine < 0) then
+        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': at the start the normals of '// &
+          'shape_1 and shape_2 point the same way at their nearest points (side_1, side_2 as for a closed '// &
+          'contact: each normal out of its body towards the other); check side_1 and side_2')
+      else if (.not. flight%gap%gap > 0) then
+        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': start = ''open'' but body '''// &
+          c%body_2//''' touches or overlaps shape '''//c%shape_1//''' at its start position (gap '// &
+          format_short(flight%gap%gap)//' m); an open contact starts with its shapes apart (raise &body '// &
+          'position, or start closed)')
+      end if
+      flight%last_gap = flight%gap%gap
+    end associate
+  end subroutine start_gap
+
+  !> The rates of (x, y, z, a1, a2, a3) that give the body the twist
+  !> [omega, v] (world; v of its frame's origin): the six columns of the
+  !> body's twist per unit rate, solved (a free body: any twist is reached).
+  subroutine start_rates(flight, twist, qd0, status)
+    type(flight_ode_t), intent(inout) :: flight
+    real(wp), intent(in) :: twist(6)
+    real(wp), allocatable, intent(out) :: qd0(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: jac(6, 6), unit(6)
+    integer :: k, ipiv(6)
+    associate (m => flight%mechanism)
+      do k = 1, 6
+        unit = 0
+        unit(k) = 1
+        call m%set_velocities(unit)
+        jac(:, k) = [m%frames(flight%body_frame)%omega, m%frames(flight%body_frame)%v]
+      end do
+      qd0 = twist
+      call lu_factor(jac, ipiv, status)
+      if (status%ok()) call lu_solve(jac, ipiv, qd0, status)
+      if (status%ok()) call m%set_velocities(qd0)
+    end associate
+  end subroutine start_rates
+
+  integer function flight_root_count(self) result(n)
+    class(flight_ode_t), intent(in) :: self
+    n = self%mechanism_ode_t%root_count() + 1
+  end function flight_root_count
+
+  !> The mechanism's roots, then the gap at the pose y gives.
+  subroutine flight_roots(self, t, y, g)
+    class(flight_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(out) :: g(:)
+    integer :: n
+    n = size(g) - 1
+    call self%mechanism_ode_t%roots(t, y, g(1:n))
+    g(n + 1) = gap_at(self, y)
+  end subroutine flight_roots
+
+  !> The gap at the pose of y (the last value where it cannot be found: a
+  !> trial state the integrator does not keep).
+  real(wp) function gap_at(self, y) result(gap)
+    class(flight_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: y(:)
+    type(status_t) :: status
+    call self%mechanism%set_positions(y(1:self%mechanism%f), status)
+    if (status%ok()) call update_gap(self, status)
+    if (status%ok()) self%last_gap = self%gap%gap
+    gap = self%last_gap
+  end function gap_at
+
+  !> The gap at the mechanism's current pose.
+  subroutine update_gap(self, status)
+    class(flight_ode_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
+    associate (body => self%mechanism%frames(self%body_frame))
+      call self%gap%update(identity, ground_origin, body%rot, body%r, status)
+    end associate
+  end subroutine update_gap
+
+  !> The mechanism's events, then the landing: the gap falling through zero
+  !> ends the run (impacts are not modelled yet).
+  subroutine flight_handle_event(self, t, y, fired, action, status)
+    class(flight_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    real(wp), intent(inout) :: y(:)
+    integer, intent(in) :: fired(:)
+    integer, intent(out) :: action
+    type(status_t), intent(inout) :: status
+    integer :: n, f
+    real(wp) :: speed
+    n = size(fired) - 1
+    call self%mechanism_ode_t%handle_event(t, y, fired(1:n), action, status)
+    if (.not. status%ok() .or. fired(n + 1) /= -1) return
+    f = self%mechanism%f
+    call self%mechanism%set_positions(y(1:f), status)
+    if (.not. status%ok()) return
+    call self%mechanism%set_velocities(y(f + 1:f + self%mechanism%ns))
+    call update_gap(self, status)
+    if (.not. status%ok()) return
+    associate (body => self%mechanism%frames(self%body_frame))
+      speed = -self%gap%rate([0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], body%v, body%omega)
+    end associate
+    action = max(action, EVENT_STOP)
+    if (len(self%outcome) > 0) self%outcome = self%outcome//'; '
+    self%outcome = self%outcome//'landing: the gap of contact '''//self%contact_name//''' fell to zero at t = '// &
+                   format_short(t)//' s, approaching at '//format_short(speed)//' m/s (impacts are not modelled '// &
+                   'yet: the run ends at the landing)'
+  end subroutine flight_handle_event
+
+  !> The mechanism's record, with the gap at its pose.
+  subroutine flight_record(self, t, y, kind, status)
+    class(flight_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    integer, intent(in) :: kind
+    type(status_t), intent(inout) :: status
+    call self%mechanism_ode_t%record(t, y, kind, status)
+    if (.not. status%ok()) return
+    ! the record's evaluate left the mechanism at y's pose
+    call update_gap(self, status)
+    if (status%ok()) self%series%monitor(self%gap_monitor, self%series%n) = self%gap%gap
+  end subroutine flight_record
+
+  pure function format_count(n) result(text)
+    integer, intent(in) :: n
+    character(len=:), allocatable :: text
+    character(len=12) :: buffer
+    write (buffer, '(i0)') n
+    text = trim(buffer)
+  end function format_count
+end module contact_flight
