@@ -98,7 +98,7 @@ contains
       call build_sled(sp, surface, y0(1:3), sys%mechanism, status)
       y0 = sys%initial_state(y0(1:3), y0(4:6))
     end select
-    if (status%ok()) call sys%mechanism%check_start(y0(1:sys%mechanism%f), status)
+    if (status%ok()) call sys%mechanism%check_start(sys%work, y0(1:sys%mechanism%f), status)
   end subroutine build
 
   subroutine run_case(label, which)

@@ -612,7 +612,7 @@ contains
         if (.not. status%ok()) return
       end do
       q0 = m%scalars(m%q)%q
-      call m%check_start(q0, status)
+      call m%check_start(model%ode%work, q0, status)
       if (.not. status%ok()) return
       do k = 1, size(model%links)
         if (model%links(k)%level == LEVEL_POSITION .and. .not. model%links(k)%open) &
@@ -648,7 +648,7 @@ contains
       do k = 1, ns
         unit = 0
         unit(k) = 1
-        call m%set_velocities(unit)
+        call m%set_velocities(model%ode%work, unit)
         do b = 1, nb
           associate (fr => m%frames(model%body_frame(b + 1)))
             jac(6*b - 5:6*b, k) = [fr%omega, fr%v]
@@ -678,7 +678,7 @@ contains
           'the surfaces (and no slip at rolling contacts)')
         return
       end if
-      call m%set_velocities(s0)
+      call m%set_velocities(model%ode%work, s0)
     end associate
   end subroutine start_speeds
 end module contact_model

@@ -41,7 +41,7 @@ module design_cuboid_ride
     EVENT_STOP, RECORD_START, DRIVE_EVENT_STOP, DRIVE_END_TIME
   use kinetostatics_surface_joint, only: new_surface_joint
   use kinetostatics_mass, only: new_mass_element
-  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use design_ride_evaluation, only: tipping_lever_arm
   implicit none (type, external)
   private
@@ -115,6 +115,7 @@ module design_cuboid_ride
   !> The ride as a model of the integration driver.
   type, extends(event_system_t) :: cuboid_model_t
     type(mechanism_t) :: mechanism
+    type(mechanism_workspace_t) :: work   ! of the ride's mechanism computations
     integer :: frame = 0                 !< the Darboux frame
     type(cuboid_t) :: body
     real(wp) :: inertia(3, 3) = 0        !< kg m^2, about the centre of mass, D axes
@@ -217,7 +218,7 @@ contains
     real(wp), intent(out) :: ydot(:)
     type(status_t), intent(inout) :: status
     ydot(1:2) = y(3:4)
-    call self%mechanism%dynamics(t, y(1:2), y(3:4), ydot(3:4), status)
+    call self%mechanism%dynamics(self%work, t, y(1:2), y(3:4), ydot(3:4), status)
   end subroutine cuboid_rhs
 
   integer function cuboid_root_count(self) result(n)
@@ -250,10 +251,10 @@ contains
     ! the frames' motion at (t, y): q'' from the dynamics, then the velocity
     ! and acceleration passes (the mechanism's evaluate would add the inverse
     ! dynamics and the normal forces, which the cuboid does not need)
-    call self%mechanism%dynamics(t, y(1:2), y(3:4), qdd, status)
+    call self%mechanism%dynamics(self%work, t, y(1:2), y(3:4), qdd, status)
     if (.not. status%ok()) return
-    call self%mechanism%set_velocities(y(3:4))
-    call self%mechanism%set_accelerations(qdd)
+    call self%mechanism%set_velocities(self%work, y(3:4))
+    call self%mechanism%set_accelerations(self%work, qdd)
     associate (fr => self%mechanism%frames(self%frame), b => self%body)
       rot = fr%rot
       if (self%kind == ACCELERATION_FELT) then

@@ -18,8 +18,10 @@
 !>   dynamics  kinetostatics_mechanism_dynamics: the equations of motion;
 !>   twists    kinetostatics_mechanism_twists: the mass matrix and the
 !>             normal-force maps from the partial twists;
-!> and the work arrays in the workspace, the component `work`
-!> (kinetostatics_mechanism_workspace).
+!> and the work arrays and the cache of the last dynamics in a workspace
+!> (kinetostatics_mechanism_workspace) that the caller owns (the ODE object
+!> of an integration) and passes to every procedure that computes: the
+!> mechanism itself is the model and its current state.
 !> Each room's module comment gives its method. The core names no element
 !> kind: what it needs of an element it asks element_t (kinetostatics_state).
 module kinetostatics_mechanism
@@ -36,12 +38,12 @@ module kinetostatics_mechanism
   use kinetostatics_contact, only: contact_t, contact_state_t, contact_kinematics, NORMAL_FRAME_FORCE, &
     NORMAL_CUT_FORCE
   use kinetostatics_force_law, only: force_law_t, force_law_box_t
-  use kinetostatics_mechanism_workspace, only: mechanism_workspace_t
+  use kinetostatics_mechanism_workspace, only: mechanism_workspace_t, WORKSPACE_SIZES
   use kinetostatics_closure_blocks, only: closure_blocks_t, element_reach_t, build_closure_blocks, &
     find_element_links, downstream_of
   implicit none (type, external)
   private
-  public :: mechanism_t, loop_t, rate_constraint_t, surface_edge_t
+  public :: mechanism_t, mechanism_workspace_t, loop_t, rate_constraint_t, surface_edge_t
   public :: LOADS_NONE, LOADS_EXPLICIT, LOADS_ALL
 
   integer, parameter :: ROLE_FIXED = 0, ROLE_Q = 1, ROLE_BETA = 2, ROLE_MEASURE = 3
@@ -98,8 +100,10 @@ module kinetostatics_mechanism
     real(wp) :: closure_tolerance = 1e-10_wp   !< max |g - target| accepted (measurement units)
     logical :: ready = .false.
     logical :: warm = .false.                  !< a closure has converged in this run (a warm start exists)
-    logical :: converged = .false.             !< beta holds it (else work%start_r does: the last solve failed)
-    integer :: dynamics_reused = 0            !< dynamics that returned the cached results (workspace)
+    logical :: converged = .false.             !< beta holds it (else the workspace's start_r does: the last solve failed)
+    !> position passes and law evaluations so far: a workspace's cached dynamics holds while this is unchanged
+    integer :: evaluation = 0
+    integer :: workspace_dims(WORKSPACE_SIZES) = 0   !< the sizes a workspace must have (prepare_workspace)
     ! results of the last evaluation
     real(wp), allocatable :: lambda(:)        ! cut forces of the closure measurements
     real(wp), allocatable :: mu(:)            ! cut forces of the rate constraints
@@ -139,7 +143,6 @@ module kinetostatics_mechanism
     integer, allocatable :: masses(:), mass_slot(:)   ! the mass elements, their frames' places in tracked
     integer, allocatable :: normal_contacts(:)   ! contacts with N from the force on a frame (normal_pass order)
     integer, allocatable :: moving_unknowns(:)   ! the unknowns whose open motion moves a tracked frame
-    type(mechanism_workspace_t) :: work          ! work arrays and the cache of the last dynamics
   contains
     procedure :: add_frame, add_scalar, add_element, add_loop, add_contact, add_law, set_coordinates, finalize
     procedure :: add_rate_constraint, set_kinematic, set_loop_branch, add_monitor
@@ -148,7 +151,7 @@ module kinetostatics_mechanism
     procedure :: jacobian => mechanism_jacobian
     procedure :: position_pass, velocity_pass, acceleration_pass, force_pass, record_pass
     procedure :: set_positions, set_velocities, set_accelerations, inverse_dynamics, evaluate_laws
-    procedure :: check_start, set_blocked
+    procedure :: check_start, set_blocked, prepare_workspace
     procedure :: dynamics, evaluate, energy, closure_residual, normal_forces, law_force
   end type mechanism_t
 
@@ -253,6 +256,11 @@ module kinetostatics_mechanism
       logical, intent(in) :: blocked
     end subroutine set_blocked
 
+    module subroutine prepare_workspace(self, work)
+      class(mechanism_t), intent(in) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
+    end subroutine prepare_workspace
+
     ! closure (kinetostatics_mechanism_closure)
     module subroutine mechanism_residual(self, x, f, status)
       class(mechanism_t), intent(inout) :: self
@@ -268,14 +276,16 @@ module kinetostatics_mechanism
       type(status_t), intent(inout) :: status
     end subroutine mechanism_jacobian
 
-    module subroutine set_positions(self, q, status)
+    module subroutine set_positions(self, work, q, status)
       class(mechanism_t), intent(inout) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: q(:)
       type(status_t), intent(inout) :: status
     end subroutine set_positions
 
-    module subroutine check_start(self, q, status)
+    module subroutine check_start(self, work, q, status)
       class(mechanism_t), intent(inout) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: q(:)
       type(status_t), intent(inout) :: status
     end subroutine check_start
@@ -310,18 +320,21 @@ module kinetostatics_mechanism
       integer, intent(in) :: loads
     end subroutine force_pass
 
-    module subroutine set_velocities(self, s)
+    module subroutine set_velocities(self, work, s)
       class(mechanism_t), intent(inout) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: s(:)
     end subroutine set_velocities
 
-    module subroutine set_accelerations(self, sd)
+    module subroutine set_accelerations(self, work, sd)
       class(mechanism_t), intent(inout) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: sd(:)
     end subroutine set_accelerations
 
-    module subroutine inverse_dynamics(self, inertia, applied, loads)
+    module subroutine inverse_dynamics(self, work, inertia, applied, loads)
       class(mechanism_t), intent(inout) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
       logical, intent(in) :: inertia, applied
       integer, intent(in) :: loads
     end subroutine inverse_dynamics
@@ -349,27 +362,31 @@ module kinetostatics_mechanism
     end subroutine energy
 
     ! dynamics (kinetostatics_mechanism_dynamics)
-    module subroutine dynamics(self, t, q, qd, qdd, status)
+    module subroutine dynamics(self, work, t, q, qd, qdd, status)
       class(mechanism_t), intent(inout) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: t, q(:), qd(:)
       real(wp), intent(out) :: qdd(:)
       type(status_t), intent(inout) :: status
     end subroutine dynamics
 
-    module subroutine evaluate(self, t, q, qd, residual, status)
+    module subroutine evaluate(self, work, t, q, qd, residual, status)
       class(mechanism_t), intent(inout) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: t, q(:), qd(:)
       real(wp), intent(out) :: residual
       type(status_t), intent(inout) :: status
     end subroutine evaluate
 
     ! twists (kinetostatics_mechanism_twists)
-    module subroutine twist_mass_matrix(self)
+    module subroutine twist_mass_matrix(self, work)
       class(mechanism_t), intent(inout) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
     end subroutine twist_mass_matrix
 
-    module subroutine twist_unit_loads(self)
+    module subroutine twist_unit_loads(self, work)
       class(mechanism_t), intent(inout) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
     end subroutine twist_unit_loads
   end interface
 end module kinetostatics_mechanism

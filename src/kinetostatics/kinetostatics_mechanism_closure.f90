@@ -51,7 +51,7 @@ contains
       self%scalars(self%beta(k))%q = x(k)
     end do
     f = 0
-    self%work%dynamics_known = .false.
+    self%evaluation = self%evaluation + 1
     do k = 1, size(self%beta_pass)
       call self%elements(self%beta_pass(k))%e%position(self%frames, self%scalars, status)
       if (.not. status%ok()) return
@@ -178,6 +178,8 @@ contains
 
   !> Sets q, closes the loops (beta from the last solution), leaves the
   !> positions evaluated and J_beta (and J_x with rate constraints) factored.
+  !> Sizes the workspace on its first use; set_velocities, set_accelerations
+  !> and inverse_dynamics then take the same workspace.
   module procedure set_positions
     type(nonlinear_result_t) :: result
     type(status_t) :: solve_status
@@ -185,8 +187,10 @@ contains
     real(wp) :: size_res, last
     logical :: converged, predicted, chord, polished
 
+    if (any(work%dims /= self%workspace_dims)) call self%prepare_workspace(work)
+
     predicted = self%r > 0 .and. self%converged
-    if (predicted) call predict_dependents(self, q)
+    if (predicted) call predict_dependents(self, work, q)
     do k = 1, self%f
       self%scalars(self%q(k))%q = q(k)
     end do
@@ -196,7 +200,7 @@ contains
       return
     end if
     self%closure_solves = self%closure_solves + 1
-    associate (x => self%work%x_r, start => self%work%start_r, res => self%work%res_r)
+    associate (x => work%x_r, start => work%start_r, res => work%res_r)
     ! the warm start: the last solution, kept in start_r after a failed solve
     ! (whose scalars hold its last iterate); before any solution, the scalars
     if (self%converged .or. .not. self%warm) then
@@ -210,7 +214,7 @@ contains
     ! one position pass instead of r velocity passes), then, if that contracts
     ! slowly, with J_beta at the iterate (at most 4 such steps)
     x = start
-    if (predicted) x = start - self%work%work_r
+    if (predicted) x = start - work%work_r
     converged = .false.
     chord = predicted
     polished = .false.
@@ -313,8 +317,9 @@ contains
   !> a large step: from the old beta Newton can reach the other branch).
   !> Leaves the correction J_beta^-1 J_q (q - q0) in work_r; destroys the
   !> velocity state.
-  subroutine predict_dependents(self, q)
+  subroutine predict_dependents(self, work, q)
     class(mechanism_t), intent(inout) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: q(:)
     integer :: k
     self%scalars%qd = 0
@@ -323,9 +328,9 @@ contains
     end do
     call self%velocity_pass()
     do k = 1, self%r
-      self%work%work_r(k) = self%scalars(self%closure(k))%qd
+      work%work_r(k) = self%scalars(self%closure(k))%qd
     end do
-    call self%blocks%solve(.false., self%work%work_r, .false.)
+    call self%blocks%solve(.false., work%work_r, .false.)
     if (self%nd > 0 .or. size(self%kinematic) > 0) return
     ! The second-order term: along beta(s) = beta(q0 + s (q - q0)), beta'(0) =
     ! -work_r, and g'' = 0 gives beta''(0) = -J_beta^-1 g''|beta''=0 (an
@@ -334,7 +339,7 @@ contains
     ! (a Taylor series that converges fast; on a jump of metres it would
     ! spoil the start); it saves a Newton step on most steps of an integrator.
     do k = 1, self%r
-      self%scalars(self%beta(k))%qd = -self%work%work_r(k)
+      self%scalars(self%beta(k))%qd = -work%work_r(k)
     end do
     do k = 1, size(self%beta_pass)   ! only beta' changed
       call self%elements(self%beta_pass(k))%e%velocity(self%frames, self%scalars)
@@ -342,11 +347,11 @@ contains
     self%scalars%qdd = 0
     call self%acceleration_pass()
     do k = 1, self%r
-      self%work%res_r(k) = self%scalars(self%closure(k))%qdd
+      work%res_r(k) = self%scalars(self%closure(k))%qdd
     end do
-    call self%blocks%solve(.false., self%work%res_r, .false.)
-    if (0.5_wp*maxval(abs(self%work%res_r)) <= 0.1_wp*maxval(abs(self%work%work_r))) &
-      self%work%work_r = self%work%work_r + 0.5_wp*self%work%res_r
+    call self%blocks%solve(.false., work%res_r, .false.)
+    if (0.5_wp*maxval(abs(work%res_r)) <= 0.1_wp*maxval(abs(work%work_r))) &
+      work%work_r = work%work_r + 0.5_wp*work%res_r
   end subroutine predict_dependents
 
   !> Every loop with a branch condition on it (set_loop_branch).
@@ -381,7 +386,7 @@ contains
     if (.not. status%ok()) return
     self%warm = .false.
     self%converged = .false.
-    call self%set_positions(q, status)
+    call self%set_positions(work, q, status)
     if (.not. status%ok()) then
       call prefix_status(status, 'at the start')
       return

@@ -31,20 +31,22 @@ contains
   !> the laws' powers in `law_power`. The velocity and acceleration states are
   !> overwritten (use `evaluate` for a consistent state). Called again at the
   !> same (t, q, s) with the same laws switched on and no position pass or law
-  !> evaluation in between, it returns the results it left (the positions and
-  !> laws are still those of that state) and sets the velocities again.
+  !> evaluation in between (with this workspace or another), it returns the
+  !> results it left (the positions and laws are still those of that state)
+  !> and sets the velocities again.
   module procedure dynamics
     real(wp) :: s_old
     type(status_t) :: lapack
     integer :: i, j, k, c, nc, ns, nb, it, column
     logical :: consistent
 
-    if (self%work%dynamics_known .and. t == self%work%known_t) then
-      if (all(q == self%work%known_q) .and. all(qd == self%work%known_s) .and. &
-          same_switches(self)) then
+    if (any(work%dims /= self%workspace_dims)) call self%prepare_workspace(work)
+    if (work%known_evaluation == self%evaluation .and. t == work%known_t) then
+      if (all(q == work%known_q) .and. all(qd == work%known_s) .and. &
+          same_switches(self, work)) then
         qdd = self%qdd
-        call self%set_velocities(qd)
-        self%dynamics_reused = self%dynamics_reused + 1
+        call self%set_velocities(work, qd)
+        work%dynamics_reused = work%dynamics_reused + 1
         return
       end if
     end if
@@ -52,17 +54,17 @@ contains
     nc = size(self%contacts)
     ns = size(self%scaled_laws)
     nb = size(self%block_contact)
-    call self%set_positions(q, status)
+    call self%set_positions(work, q, status)
     if (.not. status%ok()) return
-    call self%set_velocities(qd)
+    call self%set_velocities(work, qd)
     call self%evaluate_laws(t, status)
     if (.not. status%ok()) return
     self%law_factor = 1
-    self%work%work_f = 0
-    call self%set_accelerations(self%work%work_f)
-    call self%inverse_dynamics(.true., .true., LOADS_EXPLICIT)
+    work%work_f = 0
+    call self%set_accelerations(work, work%work_f)
+    call self%inverse_dynamics(work, .true., .true., LOADS_EXPLICIT)
     self%bias(:) = self%gq   ! (:): no reallocation test
-    if (nc > 0) call self%normal_forces(self%work%n0)
+    if (nc > 0) call self%normal_forces(work%n0)
 
     ! M and G, all velocities zero, applied forces off
     do k = 1, self%n_frames
@@ -71,20 +73,20 @@ contains
     end do
     self%scalars%qd = 0
     if (self%twist_route) then
-      call twist_mass_matrix(self)
+      call twist_mass_matrix(self, work)
     else
       do i = 1, self%ns
-        call full_mass_column(self, i)
+        call full_mass_column(self, work, i)
       end do
     end if
     if (.not. self%twist_route) then   ! (the twist route's M is symmetric and left its lower triangle in chol)
       do i = 1, self%ns   ! symmetric part's lower triangle, the factor's input (no temporary)
         do k = i, self%ns
-          self%work%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
+          work%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
         end do
       end do
     end if
-    call cholesky_factor(self%work%chol, lapack, column)
+    call cholesky_factor(work%chol, lapack, column)
     if (.not. lapack%ok()) then
       call set_status(status, STATUS_DOMAIN, 'the mass matrix is not positive definite: generalized '// &
         'coordinate '''//trim(self%scalar_names(self%q(self%speeds(column))))//''' has no inertia (a massless body or '// &
@@ -93,59 +95,59 @@ contains
     end if
     if (ns == 0) then
       self%qdd(:) = self%bias
-      call cholesky_solve(self%work%chol, self%qdd, status)
+      call cholesky_solve(work%chol, self%qdd, status)
       qdd = self%qdd
-      call affine_normal_forces(self, qdd)
+      call affine_normal_forces(self, work, qdd)
       self%law_power(:) = self%unit_power
-      call remember_dynamics(self, t, q, qd)
+      call remember_dynamics(self, work, t, q, qd)
       return
     end if
 
     ! scaled laws: their unit loads alone, then the block system
     if (self%twist_route) then
-      call twist_unit_loads(self)
+      call twist_unit_loads(self, work)
     else
       do k = 1, ns
-        call self%inverse_dynamics(.false., .false., self%scaled_laws(k))
+        call self%inverse_dynamics(work, .false., .false., self%scaled_laws(k))
         self%p_mat(:, k) = self%gq
         call self%normal_forces(self%h_mat(:, k))
       end do
     end if
-    self%work%signs = 1
+    work%signs = 1
     consistent = .false.
     do it = 1, 6
-      self%work%block = 0
-      self%work%block(1:self%ns, 1:self%ns) = self%mass
+      work%block = 0
+      work%block(1:self%ns, 1:self%ns) = self%mass
       do j = 1, nb
-        self%work%block(self%ns + j, 1:self%ns) = -self%g_mat(self%block_contact(j), :)
-        self%work%block(self%ns + j, self%ns + j) = 1
+        work%block(self%ns + j, 1:self%ns) = -self%g_mat(self%block_contact(j), :)
+        work%block(self%ns + j, self%ns + j) = 1
       end do
       do k = 1, ns
         j = self%block_row(k)
-        self%work%block(1:self%ns, self%ns + j) = self%work%block(1:self%ns, self%ns + j) &
-                                                  - self%p_mat(:, k)*self%work%signs(j)
+        work%block(1:self%ns, self%ns + j) = work%block(1:self%ns, self%ns + j) &
+                                                  - self%p_mat(:, k)*work%signs(j)
         do i = 1, nb
-          self%work%block(self%ns + i, self%ns + j) = self%work%block(self%ns + i, self%ns + j) &
-                                               - self%h_mat(self%block_contact(i), k)*self%work%signs(j)
+          work%block(self%ns + i, self%ns + j) = work%block(self%ns + i, self%ns + j) &
+                                               - self%h_mat(self%block_contact(i), k)*work%signs(j)
         end do
       end do
-      self%work%block_rhs(1:self%ns) = self%bias
+      work%block_rhs(1:self%ns) = self%bias
       do j = 1, nb
-        self%work%block_rhs(self%ns + j) = self%work%n0(self%block_contact(j))
+        work%block_rhs(self%ns + j) = work%n0(self%block_contact(j))
       end do
-      call lu_factor(self%work%block, self%work%ipiv_block, lapack)
+      call lu_factor(work%block, work%ipiv_block, lapack)
       if (.not. lapack%ok()) then
         call set_status(status, STATUS_DOMAIN, 'the equations of motion with friction proportional to '// &
                         'the normal forces are singular')
         return
       end if
-      call lu_solve(self%work%block, self%work%ipiv_block, self%work%block_rhs, status)
+      call lu_solve(work%block, work%ipiv_block, work%block_rhs, status)
       consistent = .true.
       do j = 1, nb
-        s_old = self%work%signs(j)
-        if (self%work%block_rhs(self%ns + j)*s_old < 0) then
+        s_old = work%signs(j)
+        if (work%block_rhs(self%ns + j)*s_old < 0) then
           consistent = .false.
-          self%work%signs(j) = -s_old
+          work%signs(j) = -s_old
         end if
       end do
       if (consistent) exit
@@ -156,15 +158,15 @@ contains
                       'Painleve-type paradox)')
       return
     end if
-    qdd = self%work%block_rhs(1:self%ns)
+    qdd = work%block_rhs(1:self%ns)
     self%qdd = qdd
-    call affine_normal_forces(self, qdd)
+    call affine_normal_forces(self, work, qdd)
     do k = 1, ns
       j = self%block_row(k)
-      self%normal = self%normal + self%h_mat(:, k)*self%work%signs(j)*self%work%block_rhs(self%ns + j)
+      self%normal = self%normal + self%h_mat(:, k)*work%signs(j)*work%block_rhs(self%ns + j)
     end do
     do j = 1, nb
-      self%normal(self%block_contact(j)) = self%work%block_rhs(self%ns + j)
+      self%normal(self%block_contact(j)) = work%block_rhs(self%ns + j)
     end do
     self%law_power = self%unit_power
     do k = 1, ns
@@ -172,53 +174,57 @@ contains
       self%law_factor(self%scaled_laws(k)) = abs(self%normal(c))
       self%law_power(self%scaled_laws(k)) = abs(self%normal(c))*self%unit_power(self%scaled_laws(k))
     end do
-    call remember_dynamics(self, t, q, qd)
+    call remember_dynamics(self, work, t, q, qd)
   end procedure dynamics
 
   !> Column i of M and of G by inverse-dynamics passes (the route for a
   !> mechanism with an element of unknown links): s' = e_i, velocities zero,
   !> applied forces off.
-  subroutine full_mass_column(self, i)
+  subroutine full_mass_column(self, work, i)
     class(mechanism_t), intent(inout) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: i
-    self%work%work_f = 0
-    self%work%work_f(i) = 1
-    call self%set_accelerations(self%work%work_f)
-    call self%inverse_dynamics(.true., .false., LOADS_NONE)
+    work%work_f = 0
+    work%work_f(i) = 1
+    call self%set_accelerations(work, work%work_f)
+    call self%inverse_dynamics(work, .true., .false., LOADS_NONE)
     self%mass(:, i) = -self%gq
     if (size(self%contacts) > 0) call self%normal_forces(self%g_mat(:, i))
   end subroutine full_mass_column
 
-  subroutine remember_dynamics(self, t, q, qd)
+  subroutine remember_dynamics(self, work, t, q, qd)
     class(mechanism_t), intent(inout) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: t, q(:), qd(:)
     integer :: k
-    self%work%known_t = t
-    self%work%known_q(:) = q
-    self%work%known_s(:) = qd
+    work%known_t = t
+    work%known_q(:) = q
+    work%known_s(:) = qd
     do k = 1, self%n_laws
-      self%work%known_active(k) = self%laws(k)%law%active
+      work%known_active(k) = self%laws(k)%law%active
     end do
-    self%work%dynamics_known = .true.
+    work%known_evaluation = self%evaluation
   end subroutine remember_dynamics
 
   !> Every law switched on or off as at the last completed `dynamics`.
-  logical function same_switches(self) result(same)
+  logical function same_switches(self, work) result(same)
     class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(in) :: work
     integer :: k
     same = .true.
     do k = 1, self%n_laws
-      if (self%laws(k)%law%active .neqv. self%work%known_active(k)) same = .false.
+      if (self%laws(k)%law%active .neqv. work%known_active(k)) same = .false.
     end do
   end function same_switches
 
   !> N = N0 + G q'' for every contact (without the scaled laws' share).
-  subroutine affine_normal_forces(self, qdd)
+  subroutine affine_normal_forces(self, work, qdd)
     class(mechanism_t), intent(inout) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: qdd(:)
     integer :: i, c
-    do c = 1, size(self%work%n0)   ! no matmul: its result would be a heap temporary
-      self%normal(c) = self%work%n0(c)
+    do c = 1, size(work%n0)   ! no matmul: its result would be a heap temporary
+      self%normal(c) = work%n0(c)
       do i = 1, self%ns
         self%normal(c) = self%normal(c) + self%g_mat(c, i)*qdd(i)
       end do
@@ -233,18 +239,18 @@ contains
     real(wp) :: qdd(self%ns)
     integer :: c, reused
     residual = huge(1.0_wp)
-    reused = self%dynamics_reused
-    call self%dynamics(t, q, qd, qdd, status)
+    reused = work%dynamics_reused
+    call self%dynamics(work, t, q, qd, qdd, status)
     if (status%ok()) call self%record_pass(status)   ! at q: a reused dynamics left the positions there
     if (.not. status%ok()) return
     ! a reused dynamics has just set these velocities; a computed one overwrote them
-    if (self%dynamics_reused == reused) call self%set_velocities(qd)
-    call self%set_accelerations(qdd)
-    call self%inverse_dynamics(.true., .true., LOADS_ALL)
+    if (work%dynamics_reused == reused) call self%set_velocities(work, qd)
+    call self%set_accelerations(work, qdd)
+    call self%inverse_dynamics(work, .true., .true., LOADS_ALL)
     residual = maxval(abs(self%gq))
-    call self%normal_forces(self%work%work_c)
+    call self%normal_forces(work%work_c)
     do c = 1, size(self%contacts)
-      self%contacts(c)%normal_force = self%work%work_c(c)
+      self%contacts(c)%normal_force = work%work_c(c)
     end do
   end procedure evaluate
 end submodule kinetostatics_mechanism_dynamics

@@ -16,7 +16,7 @@ module kinetostatics_mechanism_ode
   use base_text, only: format_short
   use base_status, only: status_t, set_status, STATUS_DOMAIN, STATUS_INVALID_INPUT
   use numerics_event_driver, only: event_system_t, EVENT_IGNORE, EVENT_RECORD, EVENT_STOP, EVENT_RESTART
-  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use kinetostatics_recorder, only: mechanism_series_t
   implicit none (type, external)
   private
@@ -36,6 +36,8 @@ module kinetostatics_mechanism_ode
 
   type, extends(event_system_t) :: mechanism_ode_t
     type(mechanism_t) :: mechanism
+    !> the work arrays and cache of this integration's mechanism computations (the mechanism is the model)
+    type(mechanism_workspace_t) :: work
     type(mechanism_series_t) :: series
     integer, allocatable :: event_index(:)
     real(wp), allocatable :: event_value(:)
@@ -129,7 +131,7 @@ contains
     text = ''
     self%cached = .false.
     self%rhs_cached = .false.
-    call self%mechanism%set_positions(y(1:self%mechanism%f), st)
+    call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), st)
     if (.not. st%ok()) return
     do k = 1, self%mechanism%n_elements
       note = self%mechanism%elements(k)%e%singular_note()
@@ -168,9 +170,9 @@ contains
     integer :: f, k
     if (.not. status%ok()) return
     f = self%mechanism%f
-    call self%mechanism%check_start(y0(1:f), status)
+    call self%mechanism%check_start(self%work, y0(1:f), status)
     if (.not. status%ok()) return
-    call self%mechanism%evaluate(0.0_wp, y0(1:f), y0(f + 1:f + self%mechanism%ns), residual, status)
+    call self%mechanism%evaluate(self%work, 0.0_wp, y0(1:f), y0(f + 1:f + self%mechanism%ns), residual, status)
     if (.not. status%ok()) return
     do k = 1, size(self%mechanism%contacts)
       associate (c => self%mechanism%contacts(k))
@@ -203,7 +205,7 @@ contains
     self%rhs_count = self%rhs_count + 1
     self%cached = .false.
     self%rhs_cached = .false.
-    call self%mechanism%dynamics(t, y(1:f), y(f + 1:n), ydot(f + 1:n), status)
+    call self%mechanism%dynamics(self%work, t, y(1:f), y(f + 1:n), ydot(f + 1:n), status)
     if (.not. status%ok()) return
     ydot(1:f) = self%mechanism%rates
     ydot(n + 1:) = self%mechanism%law_power
@@ -232,6 +234,6 @@ contains
     f = self%mechanism%f
     n = f + self%mechanism%ns
     if (.not. allocated(self%series%time)) call self%start_series(100)
-    call self%series%record(self%mechanism, t, y(1:f), y(f + 1:n), y(n + 1:), kind, status)
+    call self%series%record(self%mechanism, self%work, t, y(1:f), y(f + 1:n), y(n + 1:), kind, status)
   end subroutine mechanism_record
 end module kinetostatics_mechanism_ode

@@ -97,6 +97,7 @@ contains
 
   module procedure prepare
     integer :: k, n_roots_before
+    call self%mechanism%prepare_workspace(self%work)
     if (.not. allocated(self%charts)) call find_charts(self)
     associate (m => self%mechanism)
       self%edge_coordinate = [(findloc(m%q(1:m%f), m%edges(k)%scalar, dim=1), k = 1, size(m%edges))]
@@ -175,14 +176,14 @@ contains
     if (interpolated) level = 2
     select case (level)
     case (3)
-      call self%mechanism%dynamics(t, y(1:f), y(f + 1:n), self%work_ydot(1:n - f), status)
+      call self%mechanism%dynamics(self%work, t, y(1:f), y(f + 1:n), self%work_ydot(1:n - f), status)
     case (2)
-      call self%mechanism%set_positions(y(1:f), status)
-      if (status%ok()) call self%mechanism%set_velocities(y(f + 1:n))
+      call self%mechanism%set_positions(self%work, y(1:f), status)
+      if (status%ok()) call self%mechanism%set_velocities(self%work, y(f + 1:n))
       if (status%ok()) call self%mechanism%evaluate_laws(t, status)
     case default   ! only the edges and charts: a position pass unless each is a coordinate in y
       if (any(self%edge_coordinate == 0) .or. any(self%chart_angle < 0)) &
-        call self%mechanism%set_positions(y(1:f), status)
+        call self%mechanism%set_positions(self%work, y(1:f), status)
     end select
     if (status%ok()) then
       call root_values(self, y, level)
@@ -490,7 +491,7 @@ contains
     if (.not. any(fired == -1)) return
     f = self%mechanism%f
     n = f + self%mechanism%ns
-    call self%mechanism%dynamics(t, y(1:f), y(f + 1:n), self%work_ydot(1:n - f), st)
+    call self%mechanism%dynamics(self%work, t, y(1:f), y(f + 1:n), self%work_ydot(1:n - f), st)
     which = ''
     count_singular = 0
     j = 0
@@ -534,9 +535,9 @@ contains
     associate (m => self%mechanism)
       f = m%f
       n = f + m%ns
-      call m%set_positions(y(1:f), status)
+      call m%set_positions(self%work, y(1:f), status)
       if (.not. status%ok()) return
-      call m%set_velocities(y(f + 1:n))
+      call m%set_velocities(self%work, y(f + 1:n))
       call m%elements(k)%e%rebase(m%scalars)
       do i = 1, f
         y(i) = m%scalars(m%q(i))%q

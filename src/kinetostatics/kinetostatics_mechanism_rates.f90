@@ -27,7 +27,7 @@ contains
   !> Every element but the record-only ones (record_pass).
   module procedure position_pass
     integer :: k
-    self%work%dynamics_known = .false.
+    self%evaluation = self%evaluation + 1
     do k = 1, self%n_elements
       if (self%elements(k)%e%record_only) cycle
       call self%elements(k)%e%position(self%frames, self%scalars, status)
@@ -108,24 +108,26 @@ contains
     end associate
   end subroutine put_loads
 
-  !> Sets the speeds s (positions already set): the rates of the speed
-  !> coordinates, then beta' (3.30) and the dependent rates sigma' from
-  !> [g'; c] = 0; `rates` gets q' of every coordinate (kinematic ones from
-  !> their elements). Without rate constraints and kinematic coordinates s = q'.
+  !> Sets the speeds s (positions already set, by set_positions with this
+  !> workspace): the rates of the speed coordinates, then beta' (3.30) and the
+  !> dependent rates sigma' from [g'; c] = 0; `rates` gets q' of every
+  !> coordinate (kinematic ones from their elements). Without rate
+  !> constraints and kinematic coordinates s = q'.
   module procedure set_velocities
-    call set_rates(self, s, 1)
+    call set_rates(self, work, s, 1)
   end procedure set_velocities
 
   !> Sets s' (velocities already set): beta'' (3.31) and sigma'' from [g''; c'] = 0.
   module procedure set_accelerations
-    call set_rates(self, sd, 2)
+    call set_rates(self, work, sd, 2)
   end procedure set_accelerations
 
   !> Level 1 (velocities) or 2 (accelerations) of the above. The two levels
   !> are written out (no internal procedures: gfortran called them, ~800,000
   !> times in a default run).
-  subroutine set_rates(self, given, level)
+  subroutine set_rates(self, work, given, level)
     class(mechanism_t), intent(inout) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: given(:)
     integer, intent(in) :: level
     integer :: k
@@ -158,53 +160,53 @@ contains
       if (self%nd == 0) then
         if (level == 1) then
           do k = 1, self%r
-            self%work%work_r(k) = self%scalars(self%closure(k))%qd
+            work%work_r(k) = self%scalars(self%closure(k))%qd
           end do
         else
           do k = 1, self%r
-            self%work%work_r(k) = self%scalars(self%closure(k))%qdd
+            work%work_r(k) = self%scalars(self%closure(k))%qdd
           end do
         end if
-        call self%blocks%solve(.false., self%work%work_r, .false.)
+        call self%blocks%solve(.false., work%work_r, .false.)
         if (level == 1) then
           do k = 1, self%r
-            self%scalars(self%beta(k))%qd = -self%work%work_r(k)
+            self%scalars(self%beta(k))%qd = -work%work_r(k)
           end do
         else
           do k = 1, self%r
-            self%scalars(self%beta(k))%qdd = -self%work%work_r(k)
+            self%scalars(self%beta(k))%qdd = -work%work_r(k)
           end do
         end if
       else
         if (level == 1) then
           do k = 1, self%r
-            self%work%work_x(k) = self%scalars(self%closure(k))%qd
+            work%work_x(k) = self%scalars(self%closure(k))%qd
           end do
           do k = 1, self%nd
-            self%work%work_x(self%r + k) = self%scalars(self%rate_outputs(k))%qd
+            work%work_x(self%r + k) = self%scalars(self%rate_outputs(k))%qd
           end do
         else
           do k = 1, self%r
-            self%work%work_x(k) = self%scalars(self%closure(k))%qdd
+            work%work_x(k) = self%scalars(self%closure(k))%qdd
           end do
           do k = 1, self%nd
-            self%work%work_x(self%r + k) = self%scalars(self%rate_outputs(k))%qdd
+            work%work_x(self%r + k) = self%scalars(self%rate_outputs(k))%qdd
           end do
         end if
-        call self%blocks%solve(.true., self%work%work_x, .false.)
+        call self%blocks%solve(.true., work%work_x, .false.)
         if (level == 1) then
           do k = 1, self%r
-            self%scalars(self%beta(k))%qd = -self%work%work_x(k)
+            self%scalars(self%beta(k))%qd = -work%work_x(k)
           end do
           do k = 1, self%nd
-            self%scalars(self%sigma(k))%qd = -self%work%work_x(self%r + k)
+            self%scalars(self%sigma(k))%qd = -work%work_x(self%r + k)
           end do
         else
           do k = 1, self%r
-            self%scalars(self%beta(k))%qdd = -self%work%work_x(k)
+            self%scalars(self%beta(k))%qdd = -work%work_x(k)
           end do
           do k = 1, self%nd
-            self%scalars(self%sigma(k))%qdd = -self%work%work_x(self%r + k)
+            self%scalars(self%sigma(k))%qdd = -work%work_x(self%r + k)
           end do
         end if
       end if
@@ -236,14 +238,14 @@ contains
     call self%force_pass(inertia, applied, self%lambda, loads)
     if (self%nd > 0) then
       do k = 1, self%r
-        self%work%work_x(k) = self%scalars(self%beta(k))%force
+        work%work_x(k) = self%scalars(self%beta(k))%force
       end do
       do k = 1, self%nd
-        self%work%work_x(self%r + k) = self%scalars(self%sigma(k))%force
+        work%work_x(self%r + k) = self%scalars(self%sigma(k))%force
       end do
-      call self%blocks%solve(.true., self%work%work_x, .true.)
-      self%lambda = -self%work%work_x(1:self%r)
-      self%mu = -self%work%work_x(self%r + 1:)
+      call self%blocks%solve(.true., work%work_x, .true.)
+      self%lambda = -work%work_x(1:self%r)
+      self%mu = -work%work_x(self%r + 1:)
       call self%force_pass(inertia, applied, self%lambda, loads)
     else if (self%r > 0) then
       do k = 1, self%r
@@ -281,7 +283,7 @@ contains
   module procedure evaluate_laws
     integer :: k, i
     real(wp) :: p
-    self%work%dynamics_known = .false.
+    self%evaluation = self%evaluation + 1
     do k = 1, size(self%contacts)
       call contact_kinematics(self%contacts(k), self%frames, self%contact_states(k))
     end do

@@ -193,7 +193,8 @@ contains
     k = 0
   end procedure law_index
 
-  !> Checks the structure and allocates every work array.
+  !> Checks the structure and allocates the results' arrays (the work arrays:
+  !> prepare_workspace).
   module procedure finalize
     integer :: k, nc, ns, nb, nr
     if (.not. status%ok()) return
@@ -244,19 +245,13 @@ contains
     end do
     self%law_root_start(self%n_laws + 1) = nr + 1
 
-    associate (n => self%ns, nx => self%r + self%nd)
+    associate (n => self%ns)
       allocate (self%lambda(self%r), self%mu(self%nd), self%rates(self%f), self%qdd(n), self%mass(n, n), &
                 self%bias(n))
-      allocate (self%work%work_r(self%r), self%gq(n), self%work%work_x(nx))
-      allocate (self%work%x_r(self%r), self%work%start_r(self%r), self%work%res_r(self%r), self%work%work_f(n), &
-                self%work%work_c(nc))
-      allocate (self%work%known_q(self%f), self%work%known_s(n), self%work%known_active(self%n_laws))
+      allocate (self%gq(n))
       allocate (self%contact_states(nc), self%normal(nc), self%law_factor(self%n_laws), &
                 self%law_power(self%n_laws), self%unit_power(self%n_laws), self%law_roots(nr))
-      allocate (self%work%chol(n, n), self%g_mat(nc, n), self%p_mat(n, ns), &
-                self%h_mat(nc, ns), self%work%n0(nc), self%work%block(n + nb, n + nb), &
-                self%work%block_rhs(n + nb), self%work%signs(nb))
-      allocate (self%work%ipiv_block(n + nb))
+      allocate (self%g_mat(nc, n), self%p_mat(n, ns), self%h_mat(nc, ns))
     end associate
     self%lambda = 0
     self%mu = 0
@@ -266,8 +261,17 @@ contains
     self%law_factor = 1
     self%law_power = 0
     self%law_roots = 1
+    call find_workspace_dims(self)
     self%ready = .true.
   end procedure finalize
+
+  !> Every size a workspace depends on (prepare_workspace).
+  subroutine find_workspace_dims(self)
+    class(mechanism_t), intent(inout) :: self
+    self%workspace_dims = [self%f, self%ns, self%r, self%nd, size(self%contacts), self%n_laws, &
+                           size(self%block_contact), size(self%tracked), size(self%moving_unknowns)]
+    self%evaluation = self%evaluation + 1
+  end subroutine find_workspace_dims
 
   !> The closure in blocks with partial passes (blocked, the default) or as
   !> one block with full passes (the unblocked computation, for comparison);
@@ -276,10 +280,42 @@ contains
     self%blocked = blocked
     if (.not. self%ready) return
     call find_closure_blocks(self)
+    call find_workspace_dims(self)
     self%converged = .false.
     self%warm = .false.
-    self%work%dynamics_known = .false.
   end procedure set_blocked
+
+  !> Sizes the workspace for this mechanism (kinetostatics_mechanism_workspace):
+  !> on its first use and again only when the sizes changed (finalize,
+  !> set_blocked). No cached dynamics; the closure's warm start from the
+  !> current dependent coordinates.
+  module procedure prepare_workspace
+    integer :: n, nc, nb, nt, nx, k
+    if (all(work%dims == self%workspace_dims)) return
+    n = self%ns
+    nc = size(self%contacts)
+    nb = size(self%block_contact)
+    nt = size(self%tracked)
+    nx = self%r + self%nd
+    if (allocated(work%known_q)) then
+      deallocate (work%known_q, work%known_s, work%known_active, work%work_r, work%work_x, work%x_r, &
+                  work%start_r, work%res_r, work%work_f, work%work_c, work%chol, work%n0, work%block, &
+                  work%block_rhs, work%signs, work%ipiv_block, work%twist, work%wrench, work%unknown_twist, &
+                  work%nu, work%load_wrench)
+    end if
+    allocate (work%known_q(self%f), work%known_s(n), work%known_active(self%n_laws))
+    allocate (work%work_r(self%r), work%work_x(nx), work%x_r(self%r), work%start_r(self%r), work%res_r(self%r), &
+              work%work_f(n), work%work_c(nc))
+    allocate (work%chol(n, n), work%n0(nc), work%block(n + nb, n + nb), work%block_rhs(n + nb), work%signs(nb), &
+              work%ipiv_block(n + nb))
+    allocate (work%twist(6, nt, n), work%wrench(6, nt, n), work%unknown_twist(6, nt, size(self%moving_unknowns)), &
+              work%nu(6, nt, nc), work%load_wrench(6, nt))
+    do k = 1, self%r
+      work%start_r(k) = self%scalars(self%beta(k))%q
+    end do
+    work%known_evaluation = -1
+    work%dims = self%workspace_dims
+  end procedure prepare_workspace
 
   !> The closure's blocks: x = [beta; sigma], rows [g; c], one group per loop
   !> and per rate constraint.
@@ -363,11 +399,6 @@ contains
     nx = self%r + self%nd
     self%moving_unknowns = pack([(k, k = 1, nx)], self%blocks%unknown_pass_start(2:nx + 1) > &
                                                   self%blocks%unknown_pass_start(1:nx))
-    if (allocated(self%work%twist)) deallocate (self%work%twist, self%work%wrench, self%work%unknown_twist, &
-                                                self%work%nu, self%work%load_wrench)
-    allocate (self%work%twist(6, nt, self%ns), self%work%wrench(6, nt, self%ns), &
-              self%work%unknown_twist(6, nt, size(self%moving_unknowns)), &
-              self%work%nu(6, nt, size(self%contacts)), self%work%load_wrench(6, nt))
   end subroutine find_mass_twists
 
   !> Dependent rates, constraint outputs and kinematic coordinates must be

@@ -46,7 +46,7 @@ contains
     call clear_accelerations(self)
     if (self%velocity_columns) then
       do i = self%ns, 1, -1
-        call velocity_column(self, i)
+        call velocity_column(self, work, i)
       end do
       ! back to rest (the normal forces' passes are acceleration maps at rest)
       call rest_velocities(self, self%blocks%mass_pass, self%blocks%mass_pass_start(1), &
@@ -54,27 +54,27 @@ contains
     else
       do i = 1, self%ns
         if (self%blocks%mass_blocked) then
-          call unit_column(self, i)
+          call unit_column(self, work, i)
         else
-          self%work%work_f = 0
-          self%work%work_f(i) = 1
-          call self%set_accelerations(self%work%work_f)
-          call keep_twists(self, self%work%twist(:, :, i))
+          work%work_f = 0
+          work%work_f(i) = 1
+          call self%set_accelerations(work, work%work_f)
+          call keep_twists(self, work%twist(:, :, i))
         end if
       end do
       if (.not. self%blocks%mass_blocked) call clear_accelerations(self)
     end if
-    call clear_sequence(size(self%work%wrench), self%work%wrench)
+    call clear_sequence(size(work%wrench), work%wrench)
     do b = 1, size(self%masses)
       if (self%mass_slot(b) == 0) cycle   ! a mass on the ground
       call self%elements(self%masses(b))%e%world_inertia(mass, s, inertia_w)
-      call add_inertial_wrenches(self%ns, size(self%tracked), self%mass_slot(b), mass, s, inertia_w, self%work%twist, &
-                                 self%work%wrench)
+      call add_inertial_wrenches(self%ns, size(self%tracked), self%mass_slot(b), mass, s, inertia_w, work%twist, &
+                                 work%wrench)
     end do
     ! M(j, i) = -(twist_j . wrench_i), and its lower triangle, the factor's input
-    call symmetric_transposed_product(6*size(self%tracked), self%ns, self%work%twist, self%work%wrench, -1.0_wp, &
-                                      self%mass, self%work%chol)
-    if (size(self%contacts) > 0) call twist_normal_forces(self)
+    call symmetric_transposed_product(6*size(self%tracked), self%ns, work%twist, work%wrench, -1.0_wp, &
+                                      self%mass, work%chol)
+    if (size(self%contacts) > 0) call twist_normal_forces(self, work)
   end procedure twist_mass_matrix
 
   !> x = 0 for an array passed as its sequence of n elements: one store
@@ -108,8 +108,9 @@ contains
   !> build_mass_columns): one acceleration pass, the touched blocks' solve,
   !> a second pass over what their unknowns move. Pass i of the sequence of
   !> clear_before.
-  subroutine unit_column(self, i)
+  subroutine unit_column(self, work, i)
     class(mechanism_t), intent(inout) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: i
     integer :: l, m, j, p, speed, first, last
     ! index bounds, not associated slices: descriptors cost more than the
@@ -123,7 +124,7 @@ contains
       call self%elements(self%blocks%mass_pass(p))%e%acceleration(self%frames, self%scalars)
     end do
     if (last >= first) then
-      associate (bl => self%blocks, x => self%work%work_x, touched => self%blocks%touched(first:last))
+      associate (bl => self%blocks, x => work%work_x, touched => self%blocks%touched(first:last))
         do l = 1, size(touched)
           do m = 1, size(bl%blocks(touched(l))%members)
             j = bl%blocks(touched(l))%members(m)
@@ -141,7 +142,7 @@ contains
       call accelerate(self, self%blocks%second_pass(self%blocks%second_pass_start(i): &
                                                     self%blocks%second_pass_start(i + 1) - 1))
     end if
-    call keep_twists(self, self%work%twist(:, :, i))
+    call keep_twists(self, work%twist(:, :, i))
     ! the sources back to rest (the outputs: clear_before)
     self%scalars(speed)%qdd = 0
     do l = first, last
@@ -159,8 +160,9 @@ contains
   !> maps of the same pass. The columns run from the last to the first
   !> after a state at rest (build_velocity_clears); `rates` (q' of the
   !> state, read by the integrator) is not touched.
-  subroutine velocity_column(self, i)
+  subroutine velocity_column(self, work, i)
     class(mechanism_t), intent(inout) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: i
     integer :: p, speed
     speed = self%q(self%speeds(i))
@@ -171,7 +173,7 @@ contains
     do p = self%blocks%mass_pass_start(i), self%blocks%mass_pass_start(i + 1) - 1
       call self%elements(self%blocks%mass_pass(p))%e%velocity(self%frames, self%scalars)
     end do
-    call keep_velocity_twists(self, self%work%twist(:, :, i))
+    call keep_velocity_twists(self, work%twist(:, :, i))
     self%scalars(speed)%qd = 0
   end subroutine velocity_column
 
@@ -218,8 +220,9 @@ contains
   !> the motion of F along z_F (the tracked frames it carries) and r_c the
   !> rows' rates of that motion (z_F . f_F is the power of W and of the cut
   !> forces on it). Velocities and accelerations zero.
-  subroutine twist_normal_forces(self)
+  subroutine twist_normal_forces(self, work)
     class(mechanism_t), intent(inout) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     real(wp) :: factor
     integer :: i, k, l, c, f, nx, step
     nx = self%r + self%nd
@@ -232,16 +235,16 @@ contains
       self%scalars(self%unknowns(k))%qdd = 1
       call accelerate(self, self%blocks%unknown_pass(self%blocks%unknown_pass_start(k): &
                                                      self%blocks%unknown_pass_start(k + 1) - 1))
-      call keep_twists(self, self%work%unknown_twist(:, :, l))
+      call keep_twists(self, work%unknown_twist(:, :, l))
       self%scalars(self%unknowns(k))%qdd = 0
     end do
     l = 0
     do c = 1, size(self%contacts)
       associate (contact => self%contacts(c))
         if (contact%normal_rule == NORMAL_CUT_FORCE) then
-          self%work%nu(:, :, c) = 0
-          self%work%work_x = 0
-          self%work%work_x(contact%normal_row) = -1
+          work%nu(:, :, c) = 0
+          work%work_x = 0
+          work%work_x(contact%normal_row) = -1
         else
           l = l + 1
           f = contact%normal_frame
@@ -250,21 +253,21 @@ contains
           self%frames(f)%a = self%frames(f)%rot(:, 3)
           call accelerate(self, self%blocks%normal_pass(self%blocks%normal_pass_start(l): &
                                                         self%blocks%normal_pass_start(l + 1) - 1))
-          call keep_twists(self, self%work%nu(:, :, c))
+          call keep_twists(self, work%nu(:, :, c))
           do k = 1, nx
-            self%work%work_x(k) = self%scalars(self%rows(k))%qdd
+            work%work_x(k) = self%scalars(self%rows(k))%qdd
           end do
           self%frames(f)%a = 0
         end if
       end associate
       if (size(self%moving_unknowns) == 0) cycle
-      call self%blocks%solve(self%nd > 0, self%work%work_x, .false.)
+      call self%blocks%solve(self%nd > 0, work%work_x, .false.)
       do k = 1, size(self%moving_unknowns)
-        self%work%nu(:, :, c) = self%work%nu(:, :, c) &
-                                - self%work%work_x(self%moving_unknowns(k))*self%work%unknown_twist(:, :, k)
+        work%nu(:, :, c) = work%nu(:, :, c) &
+                                - work%work_x(self%moving_unknowns(k))*work%unknown_twist(:, :, k)
       end do
     end do
-    call transposed_product(6*size(self%tracked), size(self%contacts), self%ns, self%work%nu, self%work%wrench, &
+    call transposed_product(6*size(self%tracked), size(self%contacts), self%ns, work%nu, work%wrench, &
                             self%g_mat)
     do c = 1, size(self%contacts)
       factor = -self%contacts(c)%normal_sign   ! +-1: the products are exact
@@ -283,7 +286,7 @@ contains
     integer :: k, j, t, c
     logical :: tracked
     do k = 1, size(self%scaled_laws)
-      self%work%load_wrench = 0
+      work%load_wrench = 0
       tracked = .true.
       associate (loads => self%laws(self%scaled_laws(k))%law%loads)
         do j = 1, size(loads)
@@ -293,19 +296,19 @@ contains
             tracked = .false.
             exit
           end if
-          self%work%load_wrench(1:3, t) = self%work%load_wrench(1:3, t) + loads(j)%torque
-          self%work%load_wrench(4:6, t) = self%work%load_wrench(4:6, t) + loads(j)%force
+          work%load_wrench(1:3, t) = work%load_wrench(1:3, t) + loads(j)%torque
+          work%load_wrench(4:6, t) = work%load_wrench(4:6, t) + loads(j)%force
         end do
       end associate
       if (.not. tracked) then
-        call self%inverse_dynamics(.false., .false., self%scaled_laws(k))
+        call self%inverse_dynamics(work, .false., .false., self%scaled_laws(k))
         self%p_mat(:, k) = self%gq
         call self%normal_forces(self%h_mat(:, k))
         cycle
       end if
-      call transposed_product(6*size(self%tracked), self%ns, 1, self%work%twist, self%work%load_wrench, &
+      call transposed_product(6*size(self%tracked), self%ns, 1, work%twist, work%load_wrench, &
                               self%p_mat(:, k))
-      call transposed_product(6*size(self%tracked), size(self%contacts), 1, self%work%nu, self%work%load_wrench, &
+      call transposed_product(6*size(self%tracked), size(self%contacts), 1, work%nu, work%load_wrench, &
                               self%h_mat(:, k))
       do c = 1, size(self%contacts)
         self%h_mat(c, k) = -self%contacts(c)%normal_sign*self%h_mat(c, k)

@@ -8,8 +8,7 @@ module kinetostatics_recorder
   use base_kinds, only: wp
   use base_status, only: status_t
   use base_series, only: growable_series_t, resize
-  use kinetostatics_mass, only: mass_element_t
-  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use kinetostatics_contact, only: contact_t
   implicit none (type, external)
   private
@@ -55,15 +54,13 @@ contains
     self%r = m%r
     self%nc = size(m%contacts)
     self%nl = m%n_laws
-    allocate (self%body_frame(0), self%body_names(0))
-    do k = 1, m%n_elements
-      select type (e => m%elements(k)%e)
-      type is (mass_element_t)
-        self%body_frame = [self%body_frame, e%frame]
-        self%body_names = [character(len=32) :: self%body_names, e%name]
-      end select
+    ! the bodies: the mass elements (the mechanism's `masses`, in the order added)
+    self%nb = size(m%masses)
+    allocate (self%body_frame(self%nb), self%body_names(self%nb))
+    do k = 1, self%nb
+      self%body_frame(k) = m%elements(m%masses(k))%e%mass_frame()
+      self%body_names(k) = m%elements(m%masses(k))%e%name
     end do
-    self%nb = size(self%body_frame)
     self%q_names = m%scalar_names(m%q)
     self%beta_names = m%scalar_names(m%beta)
     self%closure_names = m%scalar_names(m%closure)
@@ -102,17 +99,19 @@ contains
     record_values = 6 + 3*s%f + 2*s%r + 18*s%nb + 10*s%nc + 6*s%nl + s%nm
   end function record_values
 
-  !> Evaluates the complete state at (t, q, q') and appends it with the laws'
-  !> work integrals `work` (J) and the record kind.
-  subroutine series_record(self, m, t, q, qd, work, kind, status)
+  !> Evaluates the complete state at (t, q, q') with the workspace of the
+  !> run's computations and appends it with the laws' work integrals `work`
+  !> (J) and the record kind.
+  subroutine series_record(self, m, workspace, t, q, qd, work, kind, status)
     class(mechanism_series_t), intent(inout) :: self
     type(mechanism_t), intent(inout) :: m
+    type(mechanism_workspace_t), intent(inout) :: workspace
     real(wp), intent(in) :: t, q(:), qd(:), work(:)
     integer, intent(in) :: kind
     type(status_t), intent(inout) :: status
     real(wp) :: res
     integer :: i, k, grown
-    call m%evaluate(t, q, qd, res, status)
+    call m%evaluate(workspace, t, q, qd, res, status)
     if (.not. status%ok()) return
     call self%make_room(16, 8*record_values(self), 'mechanism', t, grown, status)
     if (.not. status%ok()) return

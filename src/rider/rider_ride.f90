@@ -327,7 +327,7 @@ contains
     real(wp) :: residual, kinetic, potential, s(3)
     integer :: f, n, k, i, grown
     f = self%mechanism%f
-    call self%mechanism%evaluate(t, y(1:f), y(f + 1:2*f), residual, status)
+    call self%mechanism%evaluate(self%work, t, y(1:f), y(f + 1:2*f), residual, status)
     if (.not. status%ok()) return
     call self%ride%make_room(16, 8.0_wp*(values_per_record + size(y)), 'ride', t, grown, status)
     if (.not. status%ok()) return

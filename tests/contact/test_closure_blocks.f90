@@ -21,7 +21,7 @@ program test_closure_blocks
   use testing, only: check, finish_tests
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
   use geometry_tube, only: tube_surface_t, new_straight_tube
-  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
   use rider_model, only: rider_params_t, rider_layout_t, build_rider
   use io_input, only: input_text_t, load_input_file
@@ -91,6 +91,7 @@ contains
     type(tube_surface_t) :: tube
     type(status_t) :: st
     real(wp) :: q0(3)
+    type(mechanism_workspace_t) :: work
     p%u0 = 5
     tube = new_straight_tube(0.5_wp, 15*pi/180, 20.0_wp, st)
     call build_rider(p, tube, m, lay, q0, st)
@@ -100,7 +101,7 @@ contains
     if (m%blocks%block_count() == 2) &
       call check(all([size(m%blocks%blocks(1)%members), size(m%blocks%blocks(2)%members)] == 3), &
                  'rider: 3 dependents each')
-    call m%check_start(q0, st)
+    call m%check_start(work, q0, st)
     call check(st%ok(), 'rider: the loops close at the start: '//st%text())
     call compare(m, 0.0_wp, q0 + [0.0_wp, 0.05_wp, -0.03_wp], [3.0_wp, 0.4_wp, -0.2_wp], 'rider')
   end subroutine check_rider
@@ -115,25 +116,27 @@ contains
     real(wp) :: a_blocked(size(s)), a_full(size(s)), residual
     real(wp), allocatable :: j_blocked(:, :), j_full(:, :), n_blocked(:), lambda_blocked(:), mu_blocked(:), &
       m_blocked(:, :)
+    type(mechanism_workspace_t) :: work
+    type(mechanism_workspace_t) :: work_full
     integer :: nx
     full = m
     call full%set_blocked(.false.)
     call check(full%blocks%block_count() == 1 .and. .not. full%blocks%blocked, label//': unblocked copy')
     call m%set_blocked(.true.)
-    call m%dynamics(t, q, s, a_blocked, st)
+    call m%dynamics(work, t, q, s, a_blocked, st)
     call check(st%ok(), label//': blocked dynamics '//st%text())
     nx = m%r + m%nd
     allocate (j_blocked(nx, nx), j_full(nx, nx))
     call m%blocks%assemble(m%nd > 0, j_blocked)
     m_blocked = m%mass
-    call m%evaluate(t, q, s, residual, st)   ! the cut forces of the state
+    call m%evaluate(work, t, q, s, residual, st)   ! the cut forces of the state
     n_blocked = m%normal
     lambda_blocked = m%lambda
     mu_blocked = m%mu
-    call full%dynamics(t, q, s, a_full, st)
+    call full%dynamics(work_full, t, q, s, a_full, st)
     call check(st%ok(), label//': unblocked dynamics '//st%text())
     call full%blocks%assemble(m%nd > 0, j_full)
-    call full%evaluate(t, q, s, residual, st)
+    call full%evaluate(work_full, t, q, s, residual, st)
     print '(a, 5(a, es9.2))', label, ': |J diff| ', maxval(abs(j_blocked - j_full)), ' of ', maxval(abs(j_full)), &
       ', |qdd diff| ', maxval(abs(a_blocked - a_full)), ' of ', maxval(abs(a_full)), &
       ', |M diff| ', maxval(abs(m_blocked - full%mass))

@@ -26,7 +26,7 @@ program test_contact_pair
   use numerics_ode, only: ode_integrator_t, ode_options_t
   use numerics_event_driver, only: RECORD_OUTPUT
   use kinetostatics_mass, only: new_mass_element
-  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use contact_closure_monitor, only: new_closure_monitor
   use contact_pair, only: contact_pair_t, add_contact_pair, place_contact_pair, check_contact_branch, &
@@ -83,12 +83,13 @@ contains
     type(status_t) :: st
     real(wp) :: gap, height, q0(5), r0(3)
     integer :: trial
+    type(mechanism_workspace_t) :: work
     call build_egg(m, pair, 1.0_wp, st)
     call check(st%ok(), 'egg on table built: '//st%text())
     r0 = [0.01_wp, -0.02_wp, 0.05_wp]
     call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], egg_orientation(tilt), r0, gap, st)
     q0 = m%scalars(pair%coordinates())%q
-    call m%check_start(q0, st)
+    call m%check_start(work, q0, st)
     call check_contact_branch(m, pair, st)
     call check(st%ok(), 'egg closes at the start: '//st%text())
     ! support height of the ellipsoid: sqrt(n^T A^2 n), n = world z in body axes
@@ -120,6 +121,8 @@ contains
     type(bspline_surface_t) :: big, small
     integer :: f2, s(4), trial
     real(wp) :: gap, q0(9), qo(9)
+    type(mechanism_workspace_t) :: work
+    type(mechanism_workspace_t) :: work_mo
     big = quadratic_patch(3.0_wp, 2.0_wp, st)
     small = quadratic_patch(0.5_wp, 0.5_wp, st)
     call moving_bowl(m, f2, s)
@@ -139,7 +142,7 @@ contains
                               0.2_wp*rb(:, 3) + matmul(rb, [0.4_wp, -0.3_wp, 0.3_wp]), gap, st)
     end associate
     q0 = m%scalars([s, pair%coordinates()])%q
-    call m%check_start(q0, st)
+    call m%check_start(work, q0, st)
     call check_contact_branch(m, pair, st)
     call check(st%ok(), 'cup in bowl closes at the start: '//st%text())
     ! the open chain, started from the closed loop
@@ -156,7 +159,7 @@ contains
     call check(st%ok(), 'cup in bowl, open chain built: '//st%text())
     call place_open_contact_pair(mo, open, m, pair)
     qo = mo%scalars([s, open%coordinates()])%q
-    call mo%check_start(qo, st)
+    call mo%check_start(work_mo, qo, st)
     call check(st%ok(), 'cup in bowl, open chain starts: '//st%text())
     ! rounding of O(1) poses (the loop is closed to ~1e-15)
     call check(maxval(abs(mo%frames(open%frame_b)%rot - m%frames(pair%frame_b)%rot)) <= 1e-14_wp .and. &
@@ -196,10 +199,11 @@ contains
     type(contact_pair_t) :: pair
     type(status_t) :: st
     real(wp) :: gap
+    type(mechanism_workspace_t) :: work
     call build_egg(m, pair, -1.0_wp, st)
     call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], egg_orientation(tilt), &
                             [0.0_wp, 0.0_wp, 0.03_wp], gap, st)
-    call m%check_start(m%scalars(pair%coordinates())%q, st)
+    call m%check_start(work, m%scalars(pair%coordinates())%q, st)
     call check(.not. st%ok() .and. index(st%text(), 'egg_on_table') > 0 .and. index(st%text(), 'parallel') > 0 &
                .and. index(st%text(), 'flip side_2') > 0, 'the parallel branch is refused naming the contact '// &
                'and the side: '//st%text())
@@ -213,6 +217,7 @@ contains
     type(status_t) :: st
     type(bspline_surface_t) :: big, small
     real(wp) :: gap
+    type(mechanism_workspace_t) :: work
     big = quadratic_patch(3.0_wp, 2.0_wp, st)
     small = quadratic_patch(0.5_wp, 0.5_wp, st)
     call add_contact_pair(m, 'cup_in_bowl', 1, big, 1.0_wp, 'cup', small, -1.0_wp, pair, st)
@@ -220,14 +225,14 @@ contains
     call m%finalize(st)
     call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], rot_x(1.2_wp), &
                             [2.5_wp, 0.0_wp, 1.0_wp], gap, st)
-    call m%check_start(m%scalars(pair%coordinates())%q, st)
+    call m%check_start(work, m%scalars(pair%coordinates())%q, st)
     call check(.not. st%ok() .and. index(st%text(), 'cup_in_bowl') > 0 .and. index(st%text(), 'edge') > 0, &
                'a body not over surface 1 is refused naming the contact: '//st%text())
     ! over the rim: the closure runs off the bowl's patch
     st = status_t()
     call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], rot_y(-0.2_wp), &
                             [1.74_wp, 0.0_wp, 1.3_wp], gap, st)
-    call m%check_start(m%scalars(pair%coordinates())%q, st)
+    call m%check_start(work, m%scalars(pair%coordinates())%q, st)
     call check(.not. st%ok() .and. index(st%text(), 'cup_in_bowl') > 0 .and. index(st%text(), 'off by') > 0, &
                'a contact that cannot close is refused naming it and by how much: '//st%text())
   end subroutine no_closure_named
@@ -254,10 +259,11 @@ contains
     real(wp) :: t, worst, change
     real(wp), parameter :: sentinel = 7.0_wp
     character(len=2) :: digit
+    type(mechanism_workspace_t) :: work_direct
     table = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], st)
     egg = ellipsoid_t(egg_a, egg_b, egg_a, st)
     larger = ellipsoid_t(1.1_wp*egg_a, 1.1_wp*egg_b, 1.1_wp*egg_a, st)
-    associate (m => sys%mechanism)
+    associate (m => sys%mechanism, work => sys%work)
       call add_open_contact_pair(m, 'egg_on_table', 1, table, 1.0_wp, 'egg', egg, 1.0_wp, open, st)
       ! a solid ellipsoid of 0.1 kg
       call m%add_element(new_mass_element('egg', open%frame_b, 0.1_wp, 0.02_wp*reshape([egg_a**2 + egg_b**2, &
@@ -283,7 +289,7 @@ contains
       allocate (ydot(size(y)))
       call sys%start_series(10)
       call integ%start(sys, 0.0_wp, y, opt, st)
-      reused = m%dynamics_reused
+      reused = work%dynamics_reused
       do i = 1, 4
         call integ%advance(0.005_wp*i, t, y, st)
         if (st%ok()) call sys%record(t, y, RECORD_OUTPUT, st)
@@ -295,12 +301,12 @@ contains
       end do
       call check(st%ok(), 'records: integrated 0.02 s: '//st%text())
       if (.not. st%ok()) return
-      call check(m%dynamics_reused >= reused + 4, 'records: the records after a right-hand side reused its dynamics')
+      call check(work%dynamics_reused >= reused + 4, 'records: the records after a right-hand side reused its dynamics')
     end associate
     worst = 0
     do i = 1, sys%series%n
       direct = sys%mechanism
-      call direct%set_positions(sys%series%q(:, i), st)
+      call direct%set_positions(work_direct, sys%series%q(:, i), st)
       if (st%ok()) call direct%elements(monitor)%e%position(direct%frames, direct%scalars, st)
       if (.not. st%ok()) exit
       worst = max(worst, maxval(abs(sys%series%monitor(:, i) - direct%scalars(gaps)%q)))

@@ -34,7 +34,7 @@ program test_mass_twists
   use geometry_tube, only: tube_surface_t, new_straight_tube
   use geometry_surface, only: surface_t
   use geometry_elementary, only: paraboloid_t
-  use kinetostatics_mechanism, only: mechanism_t, LOADS_NONE
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t, LOADS_NONE
   use kinetostatics_models, only: sled_params_t, build_sled, fourbar_params_t, build_fourbar, fourbar_assembly
   use kinetostatics_force_law_factory, only: law_spec
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, CHAIN_LOOP
@@ -75,10 +75,11 @@ contains
     type(tube_surface_t) :: tube
     type(status_t) :: st
     real(wp) :: q0(3)
+    type(mechanism_workspace_t) :: work
     p%u0 = 5
     tube = new_straight_tube(0.5_wp, 15*pi/180, 20.0_wp, st)
     call build_rider(p, tube, m, lay, q0, st)
-    call m%check_start(q0, st)
+    call m%check_start(work, q0, st)
     call check(st%ok(), 'rider builds and closes: '//st%text())
     if (.not. st%ok()) return
     call compare(m, 0.0_wp, q0 + [0.0_wp, 0.05_wp, -0.03_wp], [3.0_wp, 0.4_wp, -0.2_wp], 'rider')
@@ -93,13 +94,14 @@ contains
     type(status_t) :: st
     real(wp) :: q0(3)
     character(len=40) :: label
+    type(mechanism_workspace_t) :: work
     bowl = paraboloid_t(2.0_wp, 2.5_wp, 1.0_wp, st)
     p%friction = [law_spec('coulomb', 'mu', 0.2_wp)]
     p%front_normal_from_cut_force = cut_force
     p%loads_on_darboux_frames = darboux_loads
     q0 = [1.0_wp, 0.2_wp, 0.3_wp]
     call build_sled(p, bowl, q0, m, st)
-    call m%check_start(q0, st)
+    call m%check_start(work, q0, st)
     call check(st%ok(), 'sled builds and closes: '//st%text())
     if (.not. st%ok()) return
     label = 'sled, frame rule'
@@ -113,9 +115,10 @@ contains
     type(mechanism_t) :: m
     type(status_t) :: st
     real(wp) :: beta0(2)
+    type(mechanism_workspace_t) :: work
     call fourbar_assembly(p, 0.3_wp, 1, beta0, st)
     call build_fourbar(p, beta0, m, st)
-    call m%check_start([0.3_wp], st)
+    call m%check_start(work, [0.3_wp], st)
     call check(st%ok(), 'four-bar builds and closes: '//st%text())
     if (.not. st%ok()) return
     call compare(m, 0.0_wp, [0.3_wp], [2.0_wp], 'four-bar')
@@ -163,11 +166,12 @@ contains
     type(status_t) :: st
     real(wp) :: a(size(s)), unit_s(size(s)), m_twists(size(s), size(s)), m_passes(size(s), size(s)), &
       rates(size(q))
+    type(mechanism_workspace_t) :: work
     real(wp), allocatable :: g_twists(:, :), g_passes(:, :), p_twists(:, :), p_passes(:, :), h_twists(:, :), &
       h_passes(:, :)
     integer :: i, k, n_scaled
     call check(m%twist_route, label//': M from the twists')
-    call m%dynamics(t, q, s, a, st)
+    call m%dynamics(work, t, q, s, a, st)
     call check(st%ok(), label//': dynamics '//st%text())
     if (.not. st%ok()) return
     rates = m%rates   ! q' of (q, s), which the integrator reads after dynamics: no column may change it
@@ -178,18 +182,18 @@ contains
     h_twists = m%h_mat
     allocate (g_passes(size(m%contacts), size(s)), p_passes(size(s), n_scaled), h_passes(size(m%contacts), n_scaled))
     do k = 1, n_scaled   ! the laws' loads are those of the state dynamics saw
-      call m%inverse_dynamics(.false., .false., m%scaled_laws(k))
+      call m%inverse_dynamics(work, .false., .false., m%scaled_laws(k))
       p_passes(:, k) = m%gq
       call m%normal_forces(h_passes(:, k))
     end do
-    call m%set_velocities(s)
+    call m%set_velocities(work, s)
     call check(all(m%rates == rates), label//': q'' after dynamics that of (q, s)')
-    call m%set_velocities(0*s)
+    call m%set_velocities(work, 0*s)
     do i = 1, size(s)
       unit_s = 0
       unit_s(i) = 1
-      call m%set_accelerations(unit_s)
-      call m%inverse_dynamics(.true., .false., LOADS_NONE)
+      call m%set_accelerations(work, unit_s)
+      call m%inverse_dynamics(work, .true., .false., LOADS_NONE)
       m_passes(:, i) = -m%gq
       call m%normal_forces(g_passes(:, i))
     end do

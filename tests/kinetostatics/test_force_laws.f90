@@ -20,7 +20,7 @@ program test_force_laws
   use kinetostatics_mass, only: new_mass_element
   use kinetostatics_force_laws, only: new_coulomb_friction, new_viscous_friction, new_spring_damper, &
     new_constant_load, new_normal_viscous_friction
-  use kinetostatics_mechanism, only: mechanism_t, LOADS_NONE
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t, LOADS_NONE
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: sled_params_t, build_sled
   use kinetostatics_force_law_factory, only: law_spec
@@ -75,14 +75,15 @@ contains
 
   !> Generalized forces of law k's loads alone (unit loads for a scaled law)
   !> times q' against the law's (unit) power, at the state of the last dynamics.
-  subroutine virtual_power(m, qd, label)
+  subroutine virtual_power(m, work, qd, label)
     type(mechanism_t), intent(inout) :: m
+    type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: qd(:)
     character(len=*), intent(in) :: label
     integer :: k
     real(wp) :: scale
     do k = 1, m%n_laws
-      call m%inverse_dynamics(.false., .false., k)
+      call m%inverse_dynamics(work, .false., .false., k)
       scale = max(sum(abs(m%gq*qd)), abs(m%unit_power(k)), tiny(1.0_wp))
       call check(abs(dot_product(m%gq, qd) - m%unit_power(k)) <= power_tol*scale, &
                  label//': virtual power of law '''//m%laws(k)%law%name//''': Q . q'' = sum f.v + tau.omega')
@@ -91,6 +92,7 @@ contains
 
   subroutine chain_laws()
     type(mechanism_t) :: m
+    type(mechanism_workspace_t) :: work
     type(status_t) :: st
     real(wp) :: q0(2), qd0(2), qdd0(2), r(6), qdd(2), material(3, -2:2), fd(3), tt, hh
     integer :: trial, k
@@ -101,9 +103,9 @@ contains
       q0 = 3*(r(1:2) - 0.5_wp)
       qd0 = 4*(r(3:4) - 0.5_wp)
       qdd0 = 4*(r(5:6) - 0.5_wp)
-      call m%dynamics(0.3_wp, q0, qd0, qdd, st)
+      call m%dynamics(work, 0.3_wp, q0, qd0, qdd, st)
       call check(st%ok(), 'chain dynamics: '//st%text())
-      call virtual_power(m, qd0, 'open chain')
+      call virtual_power(m, work, qd0, 'open chain')
       ! an interaction's power is its force on B times the slip: checks where
       ! the law puts its loads (forces and moment arms on both bodies)
       do k = 3, 4
@@ -116,8 +118,8 @@ contains
       ! slip velocity: the material points of link 2 and link 1 at the contact
       ! point p(t0), followed along q(t) = q0 + qd0 t + qdd0 t^2/2;
       ! 4th-order differences, h = 1e-3 (truncation ~1e-13, rounding ~1e-13)
-      call m%set_positions(q0, st)
-      call m%set_velocities(qd0)
+      call m%set_positions(work, q0, st)
+      call m%set_velocities(work, qd0)
       call m%evaluate_laws(0.0_wp, st)
       hh = 1e-3_wp
       associate (c => m%contact_states(1))
@@ -128,7 +130,7 @@ contains
           local_b = matmul(transpose(m%frames(c%frame_b)%rot), p0 - m%frames(c%frame_b)%r)
           do k = -2, 2
             tt = k*hh
-            call m%set_positions(q0 + qd0*tt + qdd0*tt**2/2, st)
+            call m%set_positions(work, q0 + qd0*tt + qdd0*tt**2/2, st)
             material(:, k) = m%frames(c%frame_b)%r + matmul(m%frames(c%frame_b)%rot, local_b) &
                              - m%frames(c%frame_a)%r - matmul(m%frames(c%frame_a)%rot, local_a)
           end do
@@ -146,7 +148,7 @@ contains
                  'contact law: force on A = -force on B')
     end associate
     ! the mass-matrix passes apply no law at all
-    call m%inverse_dynamics(.false., .false., LOADS_NONE)
+    call m%inverse_dynamics(work, .false., .false., LOADS_NONE)
     call check(maxval(abs(m%gq)) == 0, 'no loads, no inertia, no gravity: zero generalized forces')
   end subroutine chain_laws
 
@@ -156,6 +158,7 @@ contains
     type(sled_params_t) :: p
     class(surface_t), allocatable :: surface
     type(mechanism_t) :: m
+    type(mechanism_workspace_t) :: work
     type(status_t) :: st
     real(wp) :: q0(3), q(3), qd(3), qdd(3), r(6)
     integer :: trial
@@ -164,15 +167,15 @@ contains
                   law_spec('viscous_normal', 'mu', 0.05_wp)]
     q0 = [1.0_wp, 0.0_wp, 0.3_wp]
     call build_sled(p, surface, q0, m, st)
-    call m%check_start(q0, st)
+    call m%check_start(work, q0, st)
     call check(st%ok() .and. m%n_laws == 6, 'sled with six friction laws builds: '//st%text())
     do trial = 1, 5
       call random_number(r)
       q = q0 + 0.3_wp*(r(1:3) - 0.5_wp)
       qd = 3*(r(4:6) - 0.5_wp)
-      call m%dynamics(0.0_wp, q, qd, qdd, st)
+      call m%dynamics(work, 0.0_wp, q, qd, qdd, st)
       call check(st%ok(), 'sled dynamics with six laws: '//st%text())
-      call virtual_power(m, qd, 'sled (closed loop)')
+      call virtual_power(m, work, qd, 'sled (closed loop)')
       ! the scaled laws' power is |N| times their unit power
       call check_close(m%law_power(1), abs(m%normal(1))*m%unit_power(1), 1e-14_wp, 0.0_wp, &
                        'Coulomb power = |N| x unit power')
@@ -198,8 +201,8 @@ contains
     q0 = [0.3_wp, 0.1_wp, 0.0_wp]
     qd0 = [0.5_wp, 0.0_wp, 0.0_wp]
     call build_sled(p, plane, q0, sys%mechanism, st)
-    call sys%mechanism%check_start(q0, st)
-    call sys%mechanism%dynamics(0.0_wp, q0, qd0, qdd, st)
+    call sys%mechanism%check_start(sys%work, q0, st)
+    call sys%mechanism%dynamics(sys%work, 0.0_wp, q0, qd0, qdd, st)
     call check(st%ok(), 'incline with the N-scaled viscous law: '//st%text())
     k = mu*g*cos(theta)
     v_inf = tan(theta)/mu
@@ -233,7 +236,7 @@ contains
     integer :: link1, link2, t1, t2
     real(wp) :: inertia(3, 3)
     inertia = reshape([0.02_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.03_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.015_wp], [3, 3])
-    associate (m => sys%mechanism)
+    associate (m => sys%mechanism, work => sys%work)
       link1 = m%add_frame('link1')
       t1 = m%add_scalar('theta1')
       call m%add_element(new_revolute('hinge1', 1, link1, t1, [0.0_wp, 1.0_wp, 0.0_wp]))
@@ -248,8 +251,8 @@ contains
       call m%set_coordinates([t1, t2])
       call m%finalize(st)
       y = sys%initial_state([0.4_wp, -0.3_wp], [1.0_wp, 2.0_wp])
-      call m%set_positions(y(1:2), st)
-      call m%set_velocities(y(3:4))
+      call m%set_positions(work, y(1:2), st)
+      call m%set_velocities(work, y(3:4))
       call m%energy(tk, vk)
       e0 = tk + vk
       l0 = norm2(m%frames(link2)%r + matmul(m%frames(link2)%rot, b) - a)
@@ -258,8 +261,8 @@ contains
       call integ%start(sys, 0.0_wp, y, opt, st)
       call integ%advance(3.0_wp, t, y, st)
       call check(st%ok(), 'pendulum with a spring: integrated 3 s: '//st%text())
-      call m%set_positions(y(1:2), st)
-      call m%set_velocities(y(3:4))
+      call m%set_positions(work, y(1:2), st)
+      call m%set_velocities(work, y(3:4))
       call m%energy(tk, vk)
       e1 = tk + vk
       l1 = norm2(m%frames(link2)%r + matmul(m%frames(link2)%rot, b) - a)

@@ -7,7 +7,7 @@ program test_mechanism
   use base_status, only: status_t
   use testing, only: check, check_close, finish_tests
   use numerics_ode, only: ode_integrator_t, ode_options_t
-  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_joints, only: new_revolute, new_rigid_offset
   use kinetostatics_mass, only: new_mass_element
@@ -34,8 +34,9 @@ contains
     real(wp), intent(out) :: e
     type(status_t) :: st
     real(wp) :: t, v
-    call m%set_positions(y(1:m%f), st)
-    call m%set_velocities(y(m%f + 1:))
+    type(mechanism_workspace_t) :: work
+    call m%set_positions(work, y(1:m%f), st)
+    call m%set_velocities(work, y(m%f + 1:))
     call m%energy(t, v)
     e = t + v
   end subroutine energy_at
@@ -140,6 +141,7 @@ contains
     type(status_t) :: st
     real(wp) :: q(2), qd(2), qdd(2), ref(2, 2), t, v, c2
     integer :: trial
+    type(mechanism_workspace_t) :: work
     p%links = 2
     p%length = [1.1_wp, 0.6_wp]
     p%mass = [1.3_wp, 0.7_wp]
@@ -148,7 +150,7 @@ contains
     do trial = 1, 4
       q = [0.3_wp*trial, -0.7_wp + 0.5_wp*trial]
       qd = [sin(1.0_wp*trial), cos(2.0_wp*trial)]
-      call m%dynamics(0.0_wp, q, qd, qdd, st)
+      call m%dynamics(work, 0.0_wp, q, qd, qdd, st)
       call check(st%ok(), 'double pendulum dynamics: '//st%text())
       c2 = cos(q(2))
       ref(1, 1) = p%inertia(1) + p%inertia(2) + p%mass(1)*p%length(1)**2 + &
@@ -160,8 +162,8 @@ contains
       call check(maxval(abs(m%mass - ref)) <= 1e-13_wp*maxval(abs(ref)), &
                  'double pendulum: M from f+1 inverse-dynamics passes = closed form')
       call check(maxval(abs(m%mass - transpose(m%mass))) <= 1e-14_wp*maxval(abs(ref)), 'M symmetric')
-      call m%set_positions(q, st)
-      call m%set_velocities(qd)
+      call m%set_positions(work, q, st)
+      call m%set_velocities(work, qd)
       call m%energy(t, v)
       call check_close(0.5_wp*dot_product(qd, matmul(m%mass, qd)), t, 1e-13_wp, 0.0_wp, &
                        'double pendulum: q''.M q''/2 = kinetic energy of the mass elements')
@@ -176,10 +178,11 @@ contains
     type(status_t) :: st
     real(wp) :: beta0(2), y(2), t, e0, e, drift, worst, scale, res, qd(1), tk, vk
     integer :: k
+    type(mechanism_workspace_t) :: work_far
 
     call fourbar_assembly(p, 0.3_wp, 1, beta0, st)
     call build_fourbar(p, beta0 + [0.05_wp, -0.04_wp], sys%mechanism, st)   ! start off the solution on purpose
-    call sys%mechanism%check_start([0.3_wp], st)
+    call sys%mechanism%check_start(sys%work, [0.3_wp], st)
     call check(st%ok(), 'four-bar closes from a perturbed start: '//st%text())
     call check(sys%mechanism%closure_residual() <= 1e-10_wp, 'four-bar: closure at the start')
     call check_close(sys%mechanism%scalars(sys%mechanism%beta(1))%q, beta0(1), 1e-10_wp, 1e-10_wp, &
@@ -188,7 +191,7 @@ contains
     block
       type(mechanism_t) :: far
       call build_fourbar(p, beta0 + [0.6_wp, -0.5_wp], far, st)
-      call far%check_start([0.3_wp], st)
+      call far%check_start(work_far, [0.3_wp], st)
       call check(st%ok() .and. far%hybrj_solves == 1, 'four-bar: HYBRJ closes the loop from 0.6 rad away: '// &
                  st%text())
       call check_close(far%scalars(far%beta(2))%q, beta0(2), 1e-10_wp, 1e-10_wp, &
@@ -196,8 +199,8 @@ contains
     end block
     ! M = q'.M q' consistency with the kinetic energy through the loop
     qd = 2.0_wp
-    call sys%mechanism%evaluate(0.0_wp, [0.3_wp], qd, res, st)
-    call sys%mechanism%set_velocities(qd)
+    call sys%mechanism%evaluate(sys%work, 0.0_wp, [0.3_wp], qd, res, st)
+    call sys%mechanism%set_velocities(sys%work, qd)
     call sys%mechanism%energy(tk, vk)
     call check_close(0.5_wp*sys%mechanism%mass(1, 1)*qd(1)**2, tk, 1e-12_wp, 0.0_wp, &
                      'four-bar: q''.M q''/2 = kinetic energy through the closed loop')
@@ -234,12 +237,13 @@ contains
     type(status_t) :: st
     real(wp) :: qdd(1), theta_eq
     integer :: bob
+    type(mechanism_workspace_t) :: work
     call build_pendulum_with_force(p, 2.0_wp, m, bob, st)
     theta_eq = -atan(2.0_wp/9.80665_wp)   ! theta > 0 swings the bob towards -x
-    call m%dynamics(0.0_wp, [theta_eq], [0.0_wp], qdd, st)
+    call m%dynamics(work, 0.0_wp, [theta_eq], [0.0_wp], qdd, st)
     call check(st%ok(), 'pendulum with an applied force: '//st%text())
     call check(abs(qdd(1)) <= 1e-13_wp, 'constant load: equilibrium at tan(theta) = F/(m g)')
-    call m%dynamics(0.0_wp, [theta_eq - 0.1_wp], [0.0_wp], qdd, st)
+    call m%dynamics(work, 0.0_wp, [theta_eq - 0.1_wp], [0.0_wp], qdd, st)
     call check(qdd(1) > 0, 'constant load: restoring beyond the equilibrium')
   end subroutine applied_force
 
@@ -269,12 +273,13 @@ contains
     type(mechanism_t) :: m
     type(status_t) :: st
     real(wp) :: beta0(2), qdd(1)
+    type(mechanism_workspace_t) :: work
 
     ! a loop that cannot close: coupler + rocker shorter than |B - D|
     p%b = 0.2_wp
     p%c = 0.2_wp
     call build_fourbar(p, [0.0_wp, 2.0_wp], m, st)
-    call m%check_start([0.0_wp], st)
+    call m%check_start(work, [0.0_wp], st)
     call check(.not. st%ok() .and. index(st%text(), 'coupler-rocker') > 0, &
                'a loop that cannot close names the loop: '//st%text())
     ! singular closure Jacobian at the start: coupler and rocker aligned (toggle)
@@ -283,14 +288,14 @@ contains
     p%c = 0.4_wp
     beta0 = [-pi, pi]   ! exactly aligned: C = B + b (D - B)/|D - B|
     call build_fourbar(p, beta0, m, st)
-    call m%check_start([pi], st)
+    call m%check_start(work, [pi], st)
     call check(.not. st%ok() .and. index(st%text(), 'singular') > 0 .and. index(st%text(), 'coupler-rocker') > 0, &
                'a singular closure Jacobian at the start is reported with its loop: '//st%text())
     ! a mass without inertia: the bob sits on the axis
     st = status_t()
     pp%length(1) = 0
     call build_pendulum(pp, m, st)
-    call m%dynamics(0.0_wp, [0.1_wp], [0.0_wp], qdd, st)
+    call m%dynamics(work, 0.0_wp, [0.1_wp], [0.0_wp], qdd, st)
     call check(.not. st%ok() .and. index(st%text(), 'theta1') > 0, &
                'a coordinate without inertia is named: '//st%text())
     st = status_t()

@@ -64,12 +64,12 @@ contains
     q0 = [0.5_wp, 0.2_wp, phi]
     qd0 = [1.0_wp, 0.0_wp, 0.0_wp]
     call build_sled(p, plane, q0, sys%mechanism, st)
-    call sys%mechanism%check_start(q0, st)
+    call sys%mechanism%check_start(sys%work, q0, st)
     call check(st%ok(), 'sled on the incline starts: '//st%text())
-    associate (m => sys%mechanism)
+    associate (m => sys%mechanism, work => sys%work)
       call check(m%closure_residual() <= 1e-10_wp, 'incline: closed at the start')
       call check_close(m%scalars(m%scalar_index('pitch'))%q, 0.0_wp, 0.0_wp, 1e-12_wp, 'incline: pitch 0 on a plane')
-      call m%evaluate(0.0_wp, q0, qd0, res, st)
+      call m%evaluate(work, 0.0_wp, q0, qd0, res, st)
       call check(st%ok(), 'incline: evaluate: '//st%text())
       qdd = m%qdd
       acc = g*(sin(theta) - mu*cos(theta))
@@ -120,7 +120,7 @@ contains
     p%friction = [law_spec('viscous', 'viscous_coefficient', c)]
     call build_sled(p, plane, [0.0_wp, 0.0_wp, 0.0_wp], sys%mechanism, st)
     y = sys%initial_state([0.0_wp, 0.0_wp, 0.0_wp], [2.0_wp, 0.0_wp, 0.0_wp])
-    call sys%mechanism%check_start(y(1:3), st)
+    call sys%mechanism%check_start(sys%work, y(1:3), st)
     opt%rtol = 1e-11_wp
     opt%atol = 1e-13_wp
     call integ%start(sys, 0.0_wp, y, opt, st)
@@ -162,10 +162,10 @@ contains
     q0 = [1.0_wp, 0.0_wp, 0.3_wp]
     qd0 = [0.0_wp, 1.2_wp, 0.5_wp]
     call build_sled(p, surface, q0, sys%mechanism, st)
-    call sys%mechanism%check_start(q0, st)
+    call sys%mechanism%check_start(sys%work, q0, st)
     call check(st%ok(), 'sled in the bowl starts: '//st%text())
-    associate (m => sys%mechanism)
-      call m%evaluate(0.0_wp, q0, qd0, res, st)
+    associate (m => sys%mechanism, work => sys%work)
+      call m%evaluate(work, 0.0_wp, q0, qd0, res, st)
       call check(res <= 1e-10_wp*p%mass*g, 'bowl: inverse-dynamics residual zero at the computed q'''', mu = '//label)
       call check(maxval(abs(m%mass - transpose(m%mass))) <= 1e-13_wp*maxval(abs(m%mass)), 'bowl: M symmetric')
       chol = m%mass
@@ -185,13 +185,13 @@ contains
       ! the force passes, rounding only
       do i = 1, 3
         do j = 1, 3
-          call m%set_velocities(unit(i) + unit(j))
+          call m%set_velocities(work, unit(i) + unit(j))
           call m%energy(tk, vk)
           tij = tk
-          call m%set_velocities(unit(i))
+          call m%set_velocities(work, unit(i))
           call m%energy(tk, vk)
           tij = tij - tk
-          call m%set_velocities(unit(j))
+          call m%set_velocities(work, unit(j))
           call m%energy(tk, vk)
           tij = tij - tk
           mpol(i, j) = tij
@@ -199,7 +199,7 @@ contains
       end do
       call check(maxval(abs(mpol - m%mass)) <= 1e-12_wp*maxval(abs(m%mass)), &
                  'bowl: M from the f+1 passes = M from the kinetic energy (through the closed loop)')
-      call m%set_velocities(qd0)
+      call m%set_velocities(work, qd0)
       call m%energy(tk, vk)
       call check_close(0.5_wp*dot_product(qd0, matmul(m%mass, qd0)), tk, 1e-12_wp, 0.0_wp, &
                        'bowl: q''.M q''/2 = kinetic energy (M through the closed loop)')
@@ -224,8 +224,8 @@ contains
     do k = 1, 100
       call integ%advance(0.1_wp*k, t, y, st)
       if (.not. st%ok()) exit
-      call sys%mechanism%set_positions(y(1:3), st)
-      call sys%mechanism%set_velocities(y(4:6))
+      call sys%mechanism%set_positions(sys%work, y(1:3), st)
+      call sys%mechanism%set_velocities(sys%work, y(4:6))
       call sys%mechanism%energy(tk, vk)
       e = tk + vk
       worst = max(worst, sys%mechanism%closure_residual())
@@ -270,8 +270,8 @@ contains
     call build_sled(p, surface, q0, body%mechanism, st)
     p%loads_on_darboux_frames = .true.
     call build_sled(p, surface, q0, darboux%mechanism, st)
-    call body%mechanism%check_start(q0, st)
-    call darboux%mechanism%check_start(q0, st)
+    call body%mechanism%check_start(body%work, q0, st)
+    call darboux%mechanism%check_start(darboux%work, q0, st)
     call check(st%ok(), 'sled with loads on the body and on the Darboux frames builds: '//st%text())
     worst_qdd = 0
     worst_n = 0
@@ -280,8 +280,8 @@ contains
       call random_number(r)
       q = q0 + 0.2_wp*(r(1:3) - 0.5_wp)
       qd = 2*(r(4:6) - 0.5_wp)
-      call body%mechanism%dynamics(0.0_wp, q, qd, qdd_b, st)
-      call darboux%mechanism%dynamics(0.0_wp, q, qd, qdd_d, st)
+      call body%mechanism%dynamics(body%work, 0.0_wp, q, qd, qdd_b, st)
+      call darboux%mechanism%dynamics(darboux%work, 0.0_wp, q, qd, qdd_d, st)
       worst_qdd = max(worst_qdd, maxval(abs(qdd_b - qdd_d))/maxval(abs(qdd_b)))
       worst_n = max(worst_n, maxval(abs(body%mechanism%normal - darboux%mechanism%normal))/(p%mass*g))
       worst_p = max(worst_p, maxval(abs(body%mechanism%law_power - darboux%mechanism%law_power))/ &
@@ -329,9 +329,9 @@ contains
     q0 = [1.0_wp, 0.0_wp, 0.3_wp]
     qd0 = [0.0_wp, 1.2_wp, 0.5_wp]
     call build_sled(p, surface, q0, sys%mechanism, st)
-    call sys%mechanism%check_start(q0, st)
+    call sys%mechanism%check_start(sys%work, q0, st)
     y = sys%initial_state(q0, qd0)
-    call sys%mechanism%set_velocities(qd0)
+    call sys%mechanism%set_velocities(sys%work, qd0)
     call sys%mechanism%energy(tk, vk)
     e0 = tk + vk
     opt%rtol = 1e-11_wp
@@ -341,8 +341,8 @@ contains
     do k = 1, 20
       call integ%advance(0.1_wp*k, t, y, st)
       if (.not. st%ok()) exit
-      call sys%mechanism%set_positions(y(1:3), st)
-      call sys%mechanism%set_velocities(y(4:6))
+      call sys%mechanism%set_positions(sys%work, y(1:3), st)
+      call sys%mechanism%set_velocities(sys%work, y(4:6))
       call sys%mechanism%energy(tk, vk)
       worst = max(worst, abs(tk + vk - e0 - sum(y(7:))))
     end do

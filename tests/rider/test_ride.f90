@@ -264,7 +264,7 @@ contains
       if (st%ok()) call integrator%set_stop_time(t, st)
       if (st%ok()) call integrator%advance(t, tr, y, st)
     end if
-    call plain%inner%mechanism%set_positions(y(1:3), st)
+    call plain%inner%mechanism%set_positions(plain%inner%work, y(1:3), st)
     associate (m => plain%inner%mechanism, lay => plain%inner%layout)
       call in_water_roots(water%field, m%scalars(lay%u(c))%q, m%scalars(lay%v(c))%q, gg)
     end associate
@@ -286,12 +286,12 @@ contains
     call prepare_ride(p, description%slide, opt, sys, y0, st, water%field)
     tested = 0
     do i = 1, ride%series%n, 37
-      associate (s => ride%series, m => sys%mechanism)
+      associate (s => ride%series, m => sys%mechanism, work => sys%work)
         do c = 1, N_CONTACTS
           law = sys%layout%drag(c)
           m%laws(law)%law%active = s%contact(c)%in_water(i) == 1
         end do
-        call m%evaluate(s%time(i), s%state(1:3, i), s%state(4:6, i), residual, st)
+        call m%evaluate(work, s%time(i), s%state(1:3, i), s%state(4:6, i), residual, st)
         do c = 1, N_CONTACTS
           law = sys%layout%drag(c)
           if (.not. m%laws(law)%law%active) cycle
@@ -320,7 +320,7 @@ contains
     real(wp) :: qdd(3), again(3), n1(N_CONTACTS), t
     integer :: i, c, law, reused
     call prepare_ride(p, description%slide, opt, sys, y0, st, water%field)
-    associate (s => ride%series, m => sys%mechanism)
+    associate (s => ride%series, m => sys%mechanism, work => sys%work)
       i = findloc(s%contact(1)%in_water(:s%n), 1, dim=1)   ! the pelvis in the water
       call check(i > 0, 'a record with the pelvis in the water')
       if (i == 0) return
@@ -329,21 +329,21 @@ contains
       end do
       law = sys%layout%drag(1)
       t = s%time(i)
-      call m%dynamics(t, s%state(1:3, i), s%state(4:6, i), qdd, st)
+      call m%dynamics(work, t, s%state(1:3, i), s%state(4:6, i), qdd, st)
       n1 = m%normal
-      reused = m%dynamics_reused
-      call m%dynamics(t, s%state(1:3, i), s%state(4:6, i), again, st)
-      call check(m%dynamics_reused == reused + 1 .and. all(again == qdd) .and. all(m%normal == n1), &
+      reused = work%dynamics_reused
+      call m%dynamics(work, t, s%state(1:3, i), s%state(4:6, i), again, st)
+      call check(work%dynamics_reused == reused + 1 .and. all(again == qdd) .and. all(m%normal == n1), &
                  'dynamics at the same state reused, the same results')
       m%laws(law)%law%active = .false.
-      call m%dynamics(t, s%state(1:3, i), s%state(4:6, i), again, st)
-      call check(m%dynamics_reused == reused + 1 .and. any(again /= qdd), &
+      call m%dynamics(work, t, s%state(1:3, i), s%state(4:6, i), again, st)
+      call check(work%dynamics_reused == reused + 1 .and. any(again /= qdd), &
                  'the pelvis''s drag switched off: recomputed, other accelerations')
       m%laws(law)%law%active = .true.
-      call m%dynamics(t, s%state(1:3, i + 1), s%state(4:6, i + 1), again, st)
-      call m%dynamics(t, s%state(1:3, i), s%state(4:6, i), again, st)
+      call m%dynamics(work, t, s%state(1:3, i + 1), s%state(4:6, i + 1), again, st)
+      call m%dynamics(work, t, s%state(1:3, i), s%state(4:6, i), again, st)
       ! 1e-12: the closure solved again from another warm start (to 1e-13 m)
-      call check(m%dynamics_reused == reused + 1 .and. maxval(abs(again - qdd)) <= 1e-12_wp*maxval(abs(qdd)), &
+      call check(work%dynamics_reused == reused + 1 .and. maxval(abs(again - qdd)) <= 1e-12_wp*maxval(abs(qdd)), &
                  'another state between: recomputed, the same accelerations to 1e-12')
       call check(st%ok(), 'dynamics: '//st%text())
     end associate

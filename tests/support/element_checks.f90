@@ -17,7 +17,7 @@ module element_checks
   use base_vector, only: cross, rot_x, rot_y, rot_z
   use testing, only: check, check_close
   use kinetostatics_state, only: element_t, frame_state_t, scalar_state_t
-  use kinetostatics_mechanism, only: mechanism_t, LOADS_EXPLICIT
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t, LOADS_EXPLICIT
   implicit none (type, external)
   private
   public :: check_element, check_mechanism_motion, frame_motion, scalar_motion, motion_step, fd_tol, &
@@ -250,6 +250,7 @@ contains
     type(status_t) :: st
     integer :: k, i, nf, ns
     character(len=8) :: tt
+    type(mechanism_workspace_t) :: work
     write (tt, '(f6.2)') t0
     nf = m%n_frames
     ns = m%n_scalars
@@ -292,7 +293,7 @@ contains
     ! power of the explicit laws' loads through the closed loops
     call m%evaluate_laws(t0, st)
     call check(st%ok(), label//': force laws: '//st%text())
-    call m%inverse_dynamics(.false., .false., LOADS_EXPLICIT)
+    call m%inverse_dynamics(work, .false., .false., LOADS_EXPLICIT)
     power = 0
     do i = 1, m%n_laws
       if (.not. m%laws(i)%law%scaled) power = power + m%unit_power(i)
@@ -310,10 +311,10 @@ contains
         qdd(j) = c(3) + c(4)*t
       end do
       st = status_t()
-      call m%set_positions(q, st)
+      call m%set_positions(work, q, st)
       if (.not. st%ok()) return
-      call m%set_velocities(qd)
-      call m%set_accelerations(qdd)
+      call m%set_velocities(work, qd)
+      call m%set_accelerations(work, qdd)
     end subroutine state_at
   end subroutine check_mechanism_motion
 

@@ -1,0 +1,144 @@
+!> The mechanism (the model) apart from the workspace of its computations
+!> (kinetostatics_mechanism_workspace), with the sled of kinetostatics_models
+!> in a paraboloid bowl with Coulomb friction: a closed loop (the closure's
+!> warm start), contacts and friction scaled by N (the block system):
+!> - the cached dynamics is the workspace's, and it knows the mechanism: one
+!>   mechanism evaluated at A with workspace 1, at B with workspace 2, then
+!>   at A with workspace 1 again is recomputed (the mechanism holds B's
+!>   state, so workspace 1's cache of A must not be used), with A's results;
+!>   at A twice with workspace 1 it is reused, bit for bit;
+!> - two integrations of copies of one mechanism, each ODE object with its
+!>   own workspace, advanced in turns, give bit for bit the results of one
+!>   integration alone (nothing shared between them).
+program test_mechanism_workspace
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  use testing, only: check, finish_tests
+  use geometry_surface, only: surface_t
+  use geometry_elementary, only: paraboloid_t
+  use numerics_ode, only: ode_integrator_t, ode_options_t
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_models, only: sled_params_t, build_sled
+  use kinetostatics_force_law_factory, only: law_spec
+  implicit none (type, external)
+
+  real(wp), parameter :: q_a(3) = [1.0_wp, 0.0_wp, 0.3_wp], s_a(3) = [0.0_wp, 1.2_wp, 0.5_wp]
+  real(wp), parameter :: q_b(3) = [0.8_wp, 0.3_wp, -0.2_wp], s_b(3) = [0.4_wp, -0.9_wp, 0.1_wp]
+  integer, parameter :: n_out = 20        ! output times of the integrations ...
+  real(wp), parameter :: dt = 0.05_wp      ! ... this far apart (s)
+  type(mechanism_t) :: sled
+
+  call build(sled)
+  call cache_belongs_to_the_mechanism_state()
+  call interleaved_integrations()
+  call finish_tests('test_mechanism_workspace')
+
+contains
+
+  subroutine build(m)
+    type(mechanism_t), intent(out) :: m
+    type(sled_params_t) :: p
+    class(surface_t), allocatable :: surface
+    type(status_t) :: st
+    surface = paraboloid_t(2.0_wp, 2.5_wp, 1.0_wp, st)
+    p%friction = [law_spec('coulomb', 'mu', 0.3_wp)]
+    call build_sled(p, surface, q_a, m, st)
+    call check(st%ok(), 'the sled in the bowl builds: '//st%text())
+  end subroutine build
+
+  subroutine cache_belongs_to_the_mechanism_state()
+    type(mechanism_t) :: m
+    type(mechanism_workspace_t) :: work_1, work_2
+    type(status_t) :: st
+    real(wp) :: a(3), again(3), b(3), normal_a(2), scale
+    integer :: reused
+    m = sled
+    call m%check_start(work_1, q_a, st)
+    call check(st%ok(), 'workspace: the sled starts: '//st%text())
+    call m%dynamics(work_1, 0.0_wp, q_a, s_a, a, st)
+    normal_a = m%normal
+    reused = work_1%dynamics_reused
+    call m%dynamics(work_1, 0.0_wp, q_a, s_a, again, st)
+    call check(st%ok() .and. work_1%dynamics_reused == reused + 1 .and. all(again == a) .and. &
+               all(m%normal == normal_a), 'workspace: the same state again with the same workspace: reused, '// &
+               'the same results bit for bit')
+    call m%dynamics(work_2, 0.0_wp, q_b, s_b, b, st)
+    call check(st%ok() .and. maxval(abs(b - a)) > 1e-3_wp*maxval(abs(a)), &
+               'workspace: another state with another workspace: other accelerations')
+    call m%dynamics(work_1, 0.0_wp, q_a, s_a, again, st)
+    ! 1e-12: the closure solved again from B's warm start (to 1e-13 of the sled's lengths)
+    scale = maxval(abs(a))
+    call check(st%ok() .and. work_1%dynamics_reused == reused + 1, &
+               'workspace: back at A with the first workspace after B: recomputed (the mechanism holds B)')
+    call check(maxval(abs(again - a)) <= 1e-12_wp*scale .and. &
+               maxval(abs(m%normal - normal_a)) <= 1e-12_wp*maxval(abs(normal_a)), &
+               'workspace: back at A: A''s accelerations and normal forces to 1e-12')
+    call check(work_2%dynamics_reused == 0, 'workspace: the second workspace reused nothing')
+  end subroutine cache_belongs_to_the_mechanism_state
+
+  !> Two integrations (from A and from B) of copies of the sled, advanced in
+  !> turns by output times, against each alone: bit for bit.
+  subroutine interleaved_integrations()
+    type(mechanism_ode_t), target :: alone_a, alone_b, turn_a, turn_b
+    real(wp), allocatable :: ya(:, :), yb(:, :), y_a(:), y_b(:)
+    type(ode_integrator_t) :: integ_a, integ_b
+    type(ode_options_t) :: opt
+    type(status_t) :: st
+    real(wp) :: t
+    integer :: k
+    logical :: same
+    opt%rtol = 1e-10_wp
+    opt%atol = 1e-12_wp
+    ! each alone
+    alone_a%mechanism = sled
+    call run_alone(alone_a, q_a, s_a, opt, ya)
+    alone_b%mechanism = sled
+    call run_alone(alone_b, q_b, s_b, opt, yb)
+    ! in turns
+    turn_a%mechanism = sled
+    turn_b%mechanism = sled
+    y_a = turn_a%initial_state(q_a, s_a)
+    call turn_a%check_start(y_a, st)
+    y_b = turn_b%initial_state(q_b, s_b)
+    call turn_b%check_start(y_b, st)
+    y_a = turn_a%initial_state(q_a, s_a)
+    y_b = turn_b%initial_state(q_b, s_b)
+    call integ_a%start(turn_a, 0.0_wp, y_a, opt, st)
+    call integ_b%start(turn_b, 0.0_wp, y_b, opt, st)
+    same = st%ok()
+    do k = 1, n_out
+      call integ_a%advance(k*dt, t, y_a, st)
+      same = same .and. st%ok() .and. all(y_a == ya(:, k))
+      call integ_b%advance(k*dt, t, y_b, st)
+      same = same .and. st%ok() .and. all(y_b == yb(:, k))
+    end do
+    call check(same, 'interleaved: two integrations of one mechanism in turns, each with its own workspace, '// &
+               'give the results of each alone bit for bit')
+    call check(maxval(abs(ya(:, n_out) - yb(:, n_out))) > 1e-3_wp, 'interleaved: the two runs differ')
+  end subroutine interleaved_integrations
+
+  !> One integration alone from (q0, s0): the states at the output times.
+  subroutine run_alone(sys, q0, s0, opt, out)
+    type(mechanism_ode_t), intent(inout), target :: sys
+    real(wp), intent(in) :: q0(:), s0(:)
+    type(ode_options_t), intent(in) :: opt
+    real(wp), allocatable, intent(out) :: out(:, :)
+    type(ode_integrator_t) :: integ
+    type(status_t) :: st
+    real(wp), allocatable :: y(:)
+    real(wp) :: t
+    integer :: i
+    y = sys%initial_state(q0, s0)
+    call sys%check_start(y, st)
+    call check(st%ok(), 'interleaved: the run alone starts: '//st%text())
+    y = sys%initial_state(q0, s0)
+    allocate (out(size(y), n_out))
+    call integ%start(sys, 0.0_wp, y, opt, st)
+    do i = 1, n_out
+      call integ%advance(i*dt, t, y, st)
+      out(:, i) = y
+    end do
+    call check(st%ok(), 'interleaved: the run alone: '//st%text())
+  end subroutine run_alone
+end program test_mechanism_workspace
