@@ -121,7 +121,7 @@ contains
       call m%finalize(status)
       if (.not. status%ok()) return
       q0 = m%scalars(coordinates)%q
-      call m%set_positions(q0, status)
+      call m%set_positions(flight%work, q0, status)
       if (.not. status%ok()) return
       call start_rates(flight, [system%bodies(b)%angular_velocity, system%bodies(b)%velocity], qd0, status)
       if (.not. status%ok()) return
@@ -176,13 +176,13 @@ contains
       do k = 1, 6
         unit = 0
         unit(k) = 1
-        call m%set_velocities(unit)
+        call m%set_velocities(flight%work, unit)
         jac(:, k) = [m%frames(flight%body_frame)%omega, m%frames(flight%body_frame)%v]
       end do
       qd0 = twist
       call lu_factor(jac, ipiv, status)
       if (status%ok()) call lu_solve(jac, ipiv, qd0, status)
-      if (status%ok()) call m%set_velocities(qd0)
+      if (status%ok()) call m%set_velocities(flight%work, qd0)
     end associate
   end subroutine start_rates
 
@@ -208,7 +208,7 @@ contains
     class(flight_ode_t), intent(inout) :: self
     real(wp), intent(in) :: y(:)
     type(status_t) :: status
-    call self%mechanism%set_positions(y(1:self%mechanism%f), status)
+    call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), status)
     if (status%ok()) call update_gap(self, status)
     if (status%ok()) self%last_gap = self%gap%gap
     gap = self%last_gap
@@ -238,9 +238,9 @@ contains
     call self%mechanism_ode_t%handle_event(t, y, fired(1:n), action, status)
     if (.not. status%ok() .or. fired(n + 1) /= -1) return
     f = self%mechanism%f
-    call self%mechanism%set_positions(y(1:f), status)
+    call self%mechanism%set_positions(self%work, y(1:f), status)
     if (.not. status%ok()) return
-    call self%mechanism%set_velocities(y(f + 1:f + self%mechanism%ns))
+    call self%mechanism%set_velocities(self%work, y(f + 1:f + self%mechanism%ns))
     call update_gap(self, status)
     if (.not. status%ok()) return
     associate (body => self%mechanism%frames(self%body_frame))
