@@ -9,9 +9,15 @@
 !>
 !> The contact's gap (contact_gap: the signed distance of its two shapes
 !> along their common normal) is recorded with every state and is a root
-!> function: where it falls through zero the body lands. Impacts are not
-!> modelled yet, so the run ends there (exit status 0, the outcome says
-!> "landing" with the approach speed).
+!> function: where it falls through zero the body lands. Without a
+!> restitution the run ends there (exit status 0, the outcome says "landing"
+!> with the approach speed). With one the landing is an impact
+!> (kinetostatics_impact): K = rigid_body_delassus of the body's mass, its
+!> inertia in world axes and the arm from its centre of mass to the contact
+!> point, the impulse from resolve_impact with the contact's restitution and
+!> impact mu, the body's twist changed by it (the pose kept), and the body
+!> flies on (the integrator restarts). A rebound slower than close_speed
+!> would close the contact; closing is not built yet, so the run ends there.
 !>
 !> Only a single contact whose body_1 is the ground can start open (its
 !> shape_1 fixed, at the ground's pose), without friction, rolling, level or
@@ -21,22 +27,34 @@ module contact_flight
   use base_kinds, only: wp
   use base_text, only: format_short
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
-  use numerics_event_driver, only: EVENT_STOP
+  use numerics_event_driver, only: EVENT_STOP, EVENT_RESTART
   use numerics_linear_algebra, only: lu_factor, lu_solve
   use kinetostatics_joints, only: new_prismatic
   use kinetostatics_free_rotation, only: new_free_rotation
   use kinetostatics_mass, only: new_mass_element
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_impact, only: impact_law_t, impact_outcome_t, resolve_impact, rigid_body_delassus
+  use base_vector, only: cross
   use geometry_solid, only: solid_properties_t
   use contact_factory, only: body_from_spec
   use contact_model, only: contact_system_t, LEVEL_POSITION, CHAIN_AUTO
   use contact_gap, only: contact_gap_t, new_contact_gap
   implicit none (type, external)
   private
-  public :: flight_ode_t, build_flight, starts_open
+  public :: flight_ode_t, impact_record_t, build_flight, starts_open
 
   real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
   real(wp), parameter :: ground_origin(3) = 0
+
+  !> One impact, for the result's table.
+  type :: impact_record_t
+    real(wp) :: time = 0                   ! s
+    real(wp) :: normal_speed_before = 0    ! m/s, separation speed of the contact points (< 0: approaching)
+    real(wp) :: normal_speed_after = 0     ! m/s
+    real(wp) :: normal_impulse = 0         ! N s, on the body
+    real(wp) :: tangential_impulse = 0     ! N s, its size
+    real(wp) :: energy_lost = 0            ! J
+  end type impact_record_t
 
   !> The free body as a model of the integration driver: the mechanism's own
   !> roots and events, and after them the contact's gap.
@@ -46,6 +64,12 @@ module contact_flight
     integer :: body_frame = 0
     integer :: gap_monitor = 0     ! the gap's place among the recorded monitors
     real(wp) :: last_gap = 1       ! kept where an update fails (a trial state)
+    ! the impact law (bounces: has_impacts) and the body's mass properties (body axes)
+    logical :: has_impacts = .false.
+    type(impact_law_t) :: law
+    real(wp) :: close_speed = 0
+    real(wp) :: mass = 0, inertia(3, 3) = 0, centre(3) = 0
+    type(impact_record_t), allocatable :: impacts(:)
   contains
     procedure :: root_count => flight_root_count
     procedure :: roots => flight_roots
@@ -99,6 +123,13 @@ contains
       call body_from_spec(system%bodies(b), system%shapes, props, status)
       if (.not. status%ok()) return
       flight%contact_name = c%name
+      flight%has_impacts = c%restitution >= 0
+      flight%law = impact_law_t(restitution=max(c%restitution, 0.0_wp), mu=c%impact_mu)
+      flight%close_speed = c%close_speed
+      flight%mass = system%bodies(b)%mass
+      flight%inertia = props%inertia
+      flight%centre = props%centre
+      allocate (flight%impacts(0))
       frames(1) = 1   ! the ground
       do i = 1, 3
         frames(i + 1) = m%add_frame(c%body_2//'.'//axis_name(i))
@@ -166,7 +197,7 @@ contains
   !> [omega, v] (world; v of its frame's origin): the six columns of the
   !> body's twist per unit rate, solved (a free body: any twist is reached).
   subroutine start_rates(flight, twist, qd0, status)
-    type(flight_ode_t), intent(inout) :: flight
+    class(flight_ode_t), intent(inout) :: flight
     real(wp), intent(in) :: twist(6)
     real(wp), allocatable, intent(out) :: qd0(:)
     type(status_t), intent(inout) :: status
@@ -224,7 +255,7 @@ contains
   end subroutine update_gap
 
   !> The mechanism's events, then the landing: the gap falling through zero
-  !> ends the run (impacts are not modelled yet).
+  !> is an impact (with a restitution) or ends the run.
   subroutine flight_handle_event(self, t, y, fired, action, status)
     class(flight_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t
@@ -246,12 +277,73 @@ contains
     associate (body => self%mechanism%frames(self%body_frame))
       speed = -self%gap%rate([0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], body%v, body%omega)
     end associate
+    if (self%has_impacts) then
+      call impact(self, t, y, action, status)
+      return
+    end if
     action = max(action, EVENT_STOP)
-    if (len(self%outcome) > 0) self%outcome = self%outcome//'; '
-    self%outcome = self%outcome//'landing: the gap of contact '''//self%contact_name//''' fell to zero at t = '// &
-                   format_short(t)//' s, approaching at '//format_short(speed)//' m/s (impacts are not modelled '// &
-                   'yet: the run ends at the landing)'
+    call add_outcome(self, 'landing: the gap of contact '''//self%contact_name//''' fell to zero at t = '// &
+                     format_short(t)//' s, approaching at '//format_short(speed)//' m/s (no restitution given: '// &
+                     'the run ends at the landing)')
   end subroutine flight_handle_event
+
+  !> The impact at the landing (the mechanism at y's pose and speeds, the gap
+  !> updated): the impulse L on the body at its contact point, from K and the
+  !> contact points' relative velocity; the body's centre of mass speeds up
+  !> by L/m, its angular velocity by I^-1 (arm x L); its new twist becomes
+  !> y's rates. A rebound below close_speed ends the run (closing not built).
+  subroutine impact(self, t, y, action, status)
+    class(flight_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    real(wp), intent(inout) :: y(:)
+    integer, intent(inout) :: action
+    type(status_t), intent(inout) :: status
+    real(wp) :: inertia(3, 3), factored(3, 3), centre(3), arm(3), v_centre(3), omega(3), spin_change(3)
+    real(wp), allocatable :: rates(:)
+    type(impact_outcome_t) :: outcome
+    type(impact_record_t) :: row
+    integer :: f, ipiv(3)
+    f = self%mechanism%f
+    associate (body => self%mechanism%frames(self%body_frame), n => self%gap%normal)
+      inertia = matmul(body%rot, matmul(self%inertia, transpose(body%rot)))
+      centre = body%r + matmul(body%rot, self%centre)
+      arm = self%gap%point_2 - centre
+      ! the ground is the law's body 2: v is the body's contact point's velocity, n from the ground to it
+      call resolve_impact(self%law, rigid_body_delassus(self%mass, inertia, arm), n, &
+                          body%v + cross(body%omega, self%gap%point_2 - body%r), outcome, status)
+      if (.not. status%ok()) return
+      factored = inertia
+      spin_change = cross(arm, outcome%impulse)
+      call lu_factor(factored, ipiv, status)
+      if (status%ok()) call lu_solve(factored, ipiv, spin_change, status)
+      if (.not. status%ok()) return
+      v_centre = body%v + cross(body%omega, centre - body%r) + outcome%impulse/self%mass
+      omega = body%omega + spin_change
+      call start_rates(self, [omega, v_centre - cross(omega, centre - body%r)], rates, status)
+      if (.not. status%ok()) return
+      y(f + 1:f + self%mechanism%ns) = rates
+      row = impact_record_t(time=t, normal_speed_before=outcome%normal_speed_before, &
+                            normal_speed_after=outcome%normal_speed_after, normal_impulse=outcome%normal_impulse, &
+                            tangential_impulse=norm2(outcome%impulse - dot_product(outcome%impulse, n)*n), &
+                            energy_lost=outcome%energy_lost)
+    end associate
+    self%impacts = [self%impacts, row]
+    if (outcome%normal_speed_after < self%close_speed) then
+      action = max(action, EVENT_STOP)
+      call add_outcome(self, 'contact '''//self%contact_name//''' would close at the impact at t = '// &
+                       format_short(t)//' s: the rebound, '//format_short(outcome%normal_speed_after)// &
+                       ' m/s, is below close_speed (closing is not built yet: the run ends there)')
+    else
+      action = max(action, EVENT_RESTART)
+    end if
+  end subroutine impact
+
+  subroutine add_outcome(self, text)
+    class(flight_ode_t), intent(inout) :: self
+    character(len=*), intent(in) :: text
+    if (len(self%outcome) > 0) self%outcome = self%outcome//'; '
+    self%outcome = self%outcome//text
+  end subroutine add_outcome
 
   !> The mechanism's record, with the gap at its pose.
   subroutine flight_record(self, t, y, kind, status)

@@ -179,6 +179,15 @@ contains
       call r%get('level', level, status)
       call r%get('chain', chain, status)
       call r%get('start', start, status)
+      call r%get('restitution', c%restitution, status)
+      call r%get('impact_mu', c%impact_mu, status)
+      call r%get('close_speed', c%close_speed, status)
+      if (status%ok() .and. start /= 'open') call r%refuse_given([character(len=11) :: 'restitution', 'impact_mu', &
+        'close_speed'], 'the impact law is for a contact that starts open (start = ''open''): a closed contact '// &
+        'never lands', status)
+      if (status%ok() .and. .not. r%has('restitution')) call r%refuse_given([character(len=11) :: 'impact_mu', &
+        'close_speed'], 'without restitution the run ends at the landing: give restitution for impacts', status)
+      if (status%ok() .and. .not. r%has('restitution')) c%restitution = -1
       if (.not. status%ok()) return
       if (chain == 'open' .and. c%rolling) call r%invalid('chain', '''open''', 'a rolling contact needs the '// &
         'loop (chain = ''loop'', the default with rolling): the open chain is for sliding contacts', status)

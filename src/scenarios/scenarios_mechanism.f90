@@ -22,6 +22,7 @@ module scenarios_mechanism
   use io_xdmf, only: xdmf_t, body_shape_t
   use geometry_surface, only: surface_t
   use scenarios_report, only: end_report
+  use contact_flight, only: flight_ode_t, impact_record_t
   implicit none (type, external)
   private
   public :: run_mechanism, mechanism_driver_options
@@ -100,6 +101,10 @@ contains
     end select
     call write_mechanism_series(file, scenario, input, run%title, sys%series, outcome, result%stats, result%cpu, &
                                 q_units, beta_units, write_status)
+    select type (sys)
+    class is (flight_ode_t)
+      call write_impacts(file, sys%impacts, write_status)
+    end select
     ! the grid around the first contact's path (u, v are its first two coordinates)
     if (present(surface)) call write_surface_grid_around(file, surface, sys%series%q(1, :sys%series%n), &
                                                          sys%series%q(2, :sys%series%n), write_status, log_info)
@@ -111,9 +116,42 @@ contains
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
     call report(scenario, sys%series, result%stats, result%cpu, q_units, file%final_path(), run, complete, &
-                message, outcome, sys%chart_changes, sys%mechanism, write_status)
+                message, outcome, sys%chart_changes, sys%mechanism, write_status, impacts_of(sys))
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
   end subroutine run_mechanism
+
+  !> The impacts of a flight (contact_flight), none for any other run.
+  function impacts_of(sys) result(impacts)
+    class(mechanism_ode_t), intent(in) :: sys
+    type(impact_record_t), allocatable :: impacts(:)
+    allocate (impacts(0))
+    select type (sys)
+    class is (flight_ode_t)
+      impacts = sys%impacts
+    end select
+  end function impacts_of
+
+  !> The impacts table of a flight (docs/outputs.md, /contact/impacts), if
+  !> it had any: one row per impact.
+  subroutine write_impacts(file, impacts, status)
+    type(result_file_t), intent(inout) :: file
+    type(impact_record_t), intent(in) :: impacts(:)
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: g = '/contact/impacts/'
+    if (size(impacts) == 0 .or. .not. status%ok()) return
+    call file%write_vector(g//'time', impacts%time, 's', 'time of each impact', status)
+    call file%write_integers(g//'contact', spread(1, 1, size(impacts)), '1', &
+                             'the impact''s contact: its place among the &contact groups (1: the first)', status)
+    call file%write_vector(g//'normal_speed_before', impacts%normal_speed_before, 'm/s', &
+                           'separation speed of the contact points before (< 0: approaching)', status)
+    call file%write_vector(g//'normal_speed_after', impacts%normal_speed_after, 'm/s', &
+                           'separation speed of the contact points after', status)
+    call file%write_vector(g//'normal_impulse', impacts%normal_impulse, 'N s', &
+                           'normal impulse on the body', status)
+    call file%write_vector(g//'tangential_impulse', impacts%tangential_impulse, 'N s', &
+                           'size of the tangential (friction) impulse on the body', status)
+    call file%write_vector(g//'energy_lost', impacts%energy_lost, 'J', 'kinetic energy the impact removed', status)
+  end subroutine write_impacts
 
   !> The XDMF file next to the result: the surface (sled), each body's and
   !> contact's path, the bodies and the contacts (joined: the sled's bar)
@@ -158,7 +196,7 @@ contains
   !> The printed summary (angles in degrees) and, with --summary-json, the
   !> same numbers as JSON (SI).
   subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, outcome, chart_changes, m, &
-                    status)
+                    status, impacts)
     character(len=*), intent(in) :: scenario, path, message, outcome
     integer, intent(in) :: chart_changes   ! coordinates re-based on a new chart (docs/multibody.md, events)
     type(mechanism_series_t), intent(in) :: s
@@ -169,6 +207,7 @@ contains
     type(run_config_t), intent(in) :: run
     logical, intent(in) :: complete
     type(status_t), intent(inout) :: status
+    type(impact_record_t), intent(in) :: impacts(:)
     type(summary_t) :: summary
     real(wp) :: e0, scale
     integer :: n, k, i
@@ -185,6 +224,12 @@ contains
       if (.not. complete) call summary%add_text('failure', 'stopped because', message)
       call add_body_terms(summary, s, m)
       call add_contact_terms(summary, s, m)
+      if (size(impacts) > 0) then
+        call summary%add_count('impacts', 'impacts', size(impacts), '(landings, /contact/impacts)')
+        call summary%add('impact_speed_max', 'impact speed max', maxval(-impacts%normal_speed_before), 'm/s', &
+                         'm/s (the fastest approach)')
+        call summary%add('impact_energy_lost', 'impacts energy lost', sum(impacts%energy_lost), 'J')
+      end if
       call summary%add('energy_change_joules', 'energy change', s%kinetic(n) + s%potential(n) - e0, 'J')
       call summary%add('energy_change', 'energy change relative', (s%kinetic(n) + s%potential(n) - e0)/scale, '1', &
                        '(of the largest kinetic/potential change)')

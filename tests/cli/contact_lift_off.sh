@@ -15,7 +15,8 @@
 #             contacts and their forces;
 #   drop      flight: a ball starting open lands (exit 0, "landing") at the
 #             closed-form time and speed; sunk: an open start in the floor
-#             is refused (exit 1).
+#             is refused (exit 1); bounce: with restitution the ball bounces,
+#             the impacts table and the summary say so.
 set -u
 slidesim=$1
 repo=$(cd "$(dirname "$0")/../.." && pwd)
@@ -72,5 +73,30 @@ grep -qF "landing: the gap of contact 'on_floor' fell to zero at t = 0.451601 s,
 sed -e "s|output = 'drop.h5'|output = 'sunk.h5'|" -e 's|position = 0, 0, 1.1|position = 0, 0, 0.09|' \
   "$work/drop.nml" > "$work/sunk.nml"
 run_case sunk 1 "sunk.nml:6: &contact name = 'on_floor': start = 'open' but body 'ball' touches or overlaps"
+
+# bounces: with restitution 0.5 the dropped ball bounces; the sixth rebound,
+# 0.069 m/s, is below close_speed = 0.1 m/s and ends the run (closing is not
+# built); the impacts table holds the six, energy lost m/2 (v_(k-1)^2 - v_k^2)
+sed -e "s|output = 'drop.h5'|output = 'bounce.h5'|" -e 's|, velocity = 0.5, 0, 0||' \
+    -e "s|start = 'open'|start = 'open', restitution = 0.5, close_speed = 0.1|" "$work/drop.nml" > "$work/bounce.nml"
+run_case bounce 0
+grep -qE "impacts +6 " "$work/bounce.out" || fail "bounce: the summary does not count 6 impacts"
+grep -qF "would close at the impact" "$work/bounce.out" || fail "bounce: the outcome does not say the contact would close"
+if [ -n "$h5python" ] && [ -f "$work/bounce.h5" ]; then
+  "$h5python" - "$work/bounce.h5" <<'EOF' || fail "bounce: the impacts table"
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1], 'r')
+t = f['contact/impacts']
+v0 = np.sqrt(2 * 9.80665 * 1.0)
+v = v0 * 0.5 ** np.arange(7)
+ok = (np.allclose(t['normal_speed_before'][:], -v[:6], atol=1e-8)
+      and np.allclose(t['normal_speed_after'][:], v[1:], atol=1e-8)
+      and np.allclose(t['energy_lost'][:], 0.5 * (v[:6] ** 2 - v[1:] ** 2), atol=1e-8)
+      and list(t['contact'][:]) == [1] * 6
+      and t['energy_lost'].attrs['units'] in (b'J', 'J'))
+print('bounce: impacts table', 'matches' if ok else 'differs', t['normal_speed_after'][:])
+sys.exit(0 if ok else 1)
+EOF
+fi
 
 finish

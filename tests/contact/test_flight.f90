@@ -18,7 +18,8 @@ program test_flight
   use base_kinds, only: wp
   use base_constants, only: standard_gravity
   use base_status, only: status_t
-  use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_EVENT_STOP
+  use base_vector, only: cross
+  use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_EVENT_STOP, RECORD_EVENT
   use contact_model, only: contact_system_t, contact_convergence_coefficient
   use contact_flight, only: flight_ode_t, build_flight
   use io_input, only: input_text_t, input_from_text
@@ -32,6 +33,8 @@ program test_flight
   real(wp), parameter :: spin(3) = [10.0_wp, -20.0_wp, 30.0_wp]   ! rad/s: several chart changes of the free rotation
 
   call dropped_ball()
+  call bouncing_ball()
+  call rolling_after_impact()
   call refusals()
   call finish_tests('test_flight')
 
@@ -134,6 +137,131 @@ contains
     end associate
   end subroutine dropped_ball
 
+  !> Runs an open-start input to its end; the driver's outcome.
+  subroutine run(text, label, flight, duration, outcome)
+    character(len=*), intent(in) :: text, label
+    type(flight_ode_t), intent(out), target :: flight
+    real(wp), intent(in) :: duration
+    integer, intent(out) :: outcome
+    real(wp), allocatable :: q0(:), qd0(:)
+    type(status_t) :: st
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    outcome = 0
+    call build(text, label, flight, q0, qd0, st)
+    call check(st%ok(), label//': built from the input: '//st%text())
+    if (.not. st%ok()) return
+    options%ode%rtol = 1e-12_wp
+    options%ode%atol = 1e-12_wp
+    options%ode%convergence_coefficient = contact_convergence_coefficient
+    options%t_end = duration
+    options%output_step = 0.01_wp
+    options%progress_seconds = 0
+    call flight%start_series(300)
+    call drive(flight, flight%initial_state(q0, qd0), options, result, st)
+    call check(st%ok(), label//': ran: '//st%text())
+    outcome = result%outcome
+  end subroutine run
+
+  !> e = 0.5 (energetic; frictionless and spinless it is Newton's too): the
+  !> k-th impact meets the ball at v_(k-1) = e^(k-1) v_0 (v_0 = sqrt(2 g h))
+  !> and sends it up at v_k = e v_(k-1); between impacts the gap is
+  !> v_k s - g s^2/2 (s since the impact): apex e^(2k) h after a flight of
+  !> 2 v_k/g. The sixth rebound, e^6 v_0 = 0.069 m/s, is below
+  !> close_speed = 0.1 m/s: the contact would close there and the run ends.
+  !> Each impact time is a root located to ~1e-14 s after flights integrated
+  !> at rtol 1e-12: 1e-9 s over six; speeds and gaps to 1e-9.
+  subroutine bouncing_ball()
+    type(flight_ode_t), target :: flight
+    integer :: outcome, k, i, n, j
+    real(wp) :: v0, t_k(6), v_k(0:6), worst_gap, worst_energy, e_lost, since, expected
+    real(wp), allocatable :: e(:)
+    real(wp), parameter :: restitution = 0.5_wp
+    call run(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', restitution = 0.5, '// &
+                     'close_speed = 0.1'), 'bouncing ball', flight, 5.0_wp, outcome)
+    call check(outcome == DRIVE_EVENT_STOP, 'bouncing ball: ends at an event')
+    call check(index(flight%outcome, 'would close at the impact') > 0, &
+               'bouncing ball: ends where the rebound is below close_speed: '//flight%outcome)
+    call check(size(flight%impacts) == 6, 'bouncing ball: six impacts (e^6 v0 < close_speed < e^5 v0)')
+    if (size(flight%impacts) /= 6) return
+    v0 = sqrt(2*g*h)
+    v_k = [(restitution**k*v0, k = 0, 6)]
+    t_k(1) = v0/g
+    do k = 2, 6
+      t_k(k) = t_k(k - 1) + 2*v_k(k - 1)/g
+    end do
+    do k = 1, 6
+      associate (impact => flight%impacts(k))
+        call check_close(impact%time, t_k(k), 0.0_wp, 1e-9_wp, 'bouncing ball: impact time after flights 2 v_k/g (s)')
+        call check_close(impact%normal_speed_before, -v_k(k - 1), 0.0_wp, 1e-9_wp, &
+                         'bouncing ball: approach speed e^(k-1) v0 (m/s)')
+        call check_close(impact%normal_speed_after, v_k(k), 0.0_wp, 1e-9_wp, 'bouncing ball: rebound e^k v0 (m/s)')
+        call check_close(impact%normal_impulse, 0.2_wp*(v_k(k - 1) + v_k(k)), 0.0_wp, 1e-9_wp, &
+                         'bouncing ball: normal impulse m (v_(k-1) + v_k) (N s)')
+        call check_close(impact%energy_lost, 0.1_wp*(v_k(k - 1)**2 - v_k(k)**2), 0.0_wp, 1e-9_wp, &
+                         'bouncing ball: energy lost m/2 (v_(k-1)^2 - v_k^2) (J)')
+      end associate
+    end do
+    associate (s => flight%series)
+      n = s%n
+      worst_gap = 0
+      worst_energy = 0
+      e = s%kinetic(:n) + s%potential(:n)
+      do i = 1, n
+        ! the closed form: falling from h before the first impact, then rising from impact j at v_j
+        j = count(t_k <= s%time(i))
+        if (j == 0) then
+          expected = h - g*s%time(i)**2/2
+        else
+          since = s%time(i) - t_k(j)
+          expected = v_k(j)*since - g*since**2/2
+        end if
+        worst_gap = max(worst_gap, abs(s%monitor(1, i) - expected))
+        ! the record at an impact holds the state after it (its time is the table's)
+        e_lost = sum(flight%impacts%energy_lost, mask=flight%impacts%time <= s%time(i))
+        worst_energy = max(worst_energy, abs(e(i) + e_lost - e(1)))
+      end do
+      call check_close(worst_gap, 0.0_wp, 0.0_wp, 1e-9_wp, &
+                       'bouncing ball: gap at every record on the closed-form bounces, apexes e^(2k) h (m)')
+      call check_close(worst_energy, 0.0_wp, 0.0_wp, 1e-9_wp*e(1), &
+                       'bouncing ball: energy kept in flight, lost only at the impacts (the table''s sum) (J)')
+      call check(count(s%kind(:n) == RECORD_EVENT) >= 6, 'bouncing ball: a record at every impact')
+    end associate
+  end subroutine bouncing_ball
+
+  !> A ball landing with sideways speed u and spin Omega about y, the impact's
+  !> mu large (10, so it sticks): the impulse about the contact point leaves
+  !> the angular momentum about it, so the ball leaves rolling, v_t = 0 at the
+  !> contact: v_x = (5 u + 2 R Omega)/7 (solid sphere, I = 2/5 m R^2),
+  !> omega_y = v_x/R; the normal speed e v_n (no coupling in a sphere's K).
+  subroutine rolling_after_impact()
+    type(flight_ode_t), target :: flight
+    integer :: outcome, i, n
+    real(wp), parameter :: omega_y = -5.0_wp, v_x = (5*u + 2*radius*omega_y)/7
+    real(wp) :: contact_velocity(3)
+    call run(replace(replace(ball_input(0.2_wp, ''), 'start = ''open''', 'start = ''open'', restitution = 0.5, '// &
+                     'impact_mu = 10'), 'angular_velocity = '//number(spin(1))//', '//number(spin(2))//', '// &
+                     number(spin(3)), 'angular_velocity = 0, '//number(omega_y)//', 0'), 'rolling after impact', &
+             flight, 0.5_wp, outcome)
+    call check(size(flight%impacts) >= 1, 'rolling after impact: it landed')
+    if (size(flight%impacts) < 1) return
+    associate (s => flight%series)
+      n = s%n
+      i = findloc(s%time(:n), flight%impacts(1)%time, dim=1)
+      call check(i > 0, 'rolling after impact: a record at the impact')
+      if (i == 0) return
+      call check_close(s%body_v(1, 1, i), v_x, 0.0_wp, 1e-9_wp, 'rolling after impact: v_x = (5 u + 2 R Omega)/7 (m/s)')
+      call check_close(s%body_omega(2, 1, i), v_x/radius, 0.0_wp, 1e-8_wp, &
+                       'rolling after impact: omega_y = v_x/R (rad/s)')
+      contact_velocity = s%body_v(:, 1, i) + cross(s%body_omega(:, 1, i), [0.0_wp, 0.0_wp, -radius])
+      call check_close(norm2(contact_velocity(1:2)), 0.0_wp, 0.0_wp, 1e-9_wp, &
+                       'rolling after impact: no slip at the contact after the impact (m/s)')
+      call check_close(s%body_v(3, 1, i), 0.5_wp*sqrt(2*g*0.2_wp), 0.0_wp, 1e-9_wp, &
+                       'rolling after impact: rebound e v_n (m/s)')
+      call check(flight%impacts(1)%tangential_impulse > 0, 'rolling after impact: a friction impulse')
+    end associate
+  end subroutine rolling_after_impact
+
   subroutine refusals()
     type(flight_ode_t) :: flight
     real(wp), allocatable :: q0(:), qd0(:)
@@ -151,5 +279,13 @@ contains
                'friction', flight, q0, qd0, st)
     call check(.not. st%ok() .and. index(st%text(), 'takes no friction') > 0, &
                'friction with an open start is refused (unused: the run ends at the landing): '//st%text())
+    call build(replace(ball_input(h, ''), 'start = ''open''', 'restitution = 0.5'), 'closed with restitution', &
+               flight, q0, qd0, st)
+    call check(.not. st%ok() .and. index(st%text(), 'restitution') > 0 .and. index(st%text(), 'never lands') > 0, &
+               'restitution on a closed start is refused (unused): '//st%text())
+    call build(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', close_speed = 0.1'), &
+               'close_speed alone', flight, q0, qd0, st)
+    call check(.not. st%ok() .and. index(st%text(), 'close_speed') > 0, &
+               'close_speed without restitution is refused (unused): '//st%text())
   end subroutine refusals
 end program test_flight
