@@ -100,7 +100,9 @@ contains
     type(solid_properties_t) :: props
     integer :: frames(4), coordinates(6), i, b
     if (.not. status%ok()) return
-    associate (c => system%contacts(1), m => flight%mechanism)
+    ! the open one names the refusals (the first, if several are)
+    associate (c => system%contacts(max(findloc(system%contacts%start_open, .true., dim=1), 1)), &
+               m => flight%mechanism)
       if (size(system%contacts) /= 1 .or. size(system%bodies) /= 1 .or. c%body_1 /= 'ground') then
         call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': start = ''open'' is '// &
           'supported for a single contact between the ground and one body (flight and landing, first slice); '// &
@@ -110,8 +112,9 @@ contains
       end if
       if (allocated(c%friction%kind) .or. c%rolling .or. c%level /= LEVEL_POSITION .or. c%chain /= CHAIN_AUTO) then
         call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': start = ''open'' takes no '// &
-          'friction, rolling, level or chain yet: they are the closed contact''s, and an open start ends its '// &
-          'run at the landing (impacts and closing are not built yet)')
+          'friction, rolling, level or chain yet: they are the closed contact''s, and an open contact does not '// &
+          'close yet (closing is not built: its run ends at the landing, or where a rebound is below close_speed); '// &
+          'impact_mu is the friction of its impacts')
         return
       end if
       b = 1
