@@ -31,6 +31,7 @@
 !> phase's end located inside its step.
 module kinetostatics_impact
   use base_kinds, only: wp
+  use base_constants, only: two_pi
   use base_vector, only: cross, skew, unit_vector
   use base_text, only: format_short, format_integer
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_DOMAIN, STATUS_INTERNAL
@@ -331,16 +332,10 @@ contains
   !> the tangential impulse K_tt^-1 (-v_t), so that v stays v- + K L.
   subroutine stop_slip(walk)
     type(impact_walk_t), intent(inout) :: walk
-    real(wp) :: a11, a12, a22, b1, b2, det, rest(3)
-    associate (k => walk%k, n => walk%n, t1 => walk%t1, t2 => walk%t2)
+    real(wp) :: rest(3)
+    associate (k => walk%k, n => walk%n)
       walk%slip_stops = walk%slip_stops + 1
-      a11 = dot_product(t1, matmul(k, t1))
-      a12 = dot_product(t1, matmul(k, t2))
-      a22 = dot_product(t2, matmul(k, t2))
-      b1 = -dot_product(t1, walk%track%v)
-      b2 = -dot_product(t2, walk%track%v)
-      det = a11*a22 - a12**2
-      rest = ((a22*b1 - a12*b2)/det)*t1 + ((a11*b2 - a12*b1)/det)*t2
+      rest = tangential_solve(k, walk%t1, walk%t2, -walk%track%v)
       walk%track%v = walk%track%v + matmul(k, rest)
       walk%track%v = dot_product(n, walk%track%v)*n
     end associate
@@ -416,17 +411,23 @@ contains
   subroutine sticking_ratio(k, n, t1, t2, lambda)
     real(wp), intent(in) :: k(3, 3), n(3), t1(3), t2(3)
     real(wp), intent(out) :: lambda(3)
-    real(wp) :: a11, a12, a22, b1, b2, det, x1, x2
+    lambda = tangential_solve(k, t1, t2, -matmul(k, n))
+  end subroutine sticking_ratio
+
+  !> The tangential x (in the plane of t1, t2) with P_t K x = P_t b: K's
+  !> tangential block solved by Cramer's rule (symmetric positive definite).
+  pure function tangential_solve(k, t1, t2, b) result(x)
+    real(wp), intent(in) :: k(3, 3), t1(3), t2(3), b(3)
+    real(wp) :: x(3)
+    real(wp) :: a11, a12, a22, b1, b2, det
     a11 = dot_product(t1, matmul(k, t1))
     a12 = dot_product(t1, matmul(k, t2))
     a22 = dot_product(t2, matmul(k, t2))
-    b1 = dot_product(t1, matmul(k, n))
-    b2 = dot_product(t2, matmul(k, n))
+    b1 = dot_product(t1, b)
+    b2 = dot_product(t2, b)
     det = a11*a22 - a12**2
-    x1 = -(a22*b1 - a12*b2)/det
-    x2 = -(a11*b2 - a12*b1)/det
-    lambda = x1*t1 + x2*t2
-  end subroutine sticking_ratio
+    x = ((a22*b1 - a12*b2)/det)*t1 + ((a11*b2 - a12*b1)/det)*t2
+  end function tangential_solve
 
   !> Slip from rest where sticking needs more than mu: the direction u in the
   !> tangent plane along which K (n - mu u) drives v_t, i.e.
@@ -442,8 +443,8 @@ contains
     best = -huge(1.0_wp)
     direction = 0
     do i = 0, direction_samples - 1
-      a = 2*acos(-1.0_wp)*i/direction_samples
-      b = 2*acos(-1.0_wp)*(i + 1)/direction_samples
+      a = two_pi*i/direction_samples
+      b = two_pi*(i + 1)/direction_samples
       fa = turn(a)
       fb = turn(b)
       if (fa == 0 .or. fa*fb < 0) then
