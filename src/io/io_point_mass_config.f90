@@ -16,10 +16,10 @@ module io_point_mass_config
   use io_friction_config, only: friction_law_variables, friction_law_names, read_friction_law
   implicit none (type, external)
   private
-  public :: read_point_mass_config
+  public :: read_point_mass_config, point_mass_renamed
 
   !> The law's parameters under this group's names.
-  character(len=*), parameter :: renamed(1) = [character(len=23) :: 'mu=friction_coefficient']
+  character(len=*), parameter :: point_mass_renamed(1) = [character(len=23) :: 'mu=friction_coefficient']
   integer, parameter :: name_length = 32
 
 contains
@@ -34,7 +34,7 @@ contains
     integer :: j
 
     friction = 'none'
-    call open_group(input, 'point_mass', r, status, also=friction_law_variables(renamed))
+    call open_group(input, 'point_mass', r, status, also=friction_law_variables(point_mass_renamed))
     call r%get('mass', config%mass, status)
     call r%get('u0', config%u0, status)
     call r%get('v0', config%v0, status)
@@ -46,7 +46,7 @@ contains
     call r%get('alpha_u', config%alpha_u, status)
     call r%get('alpha_v', config%alpha_v, status)
     if (.not. status%ok()) return
-    call read_friction_law(r, trim(friction), config%friction, status, rename=renamed)
+    call read_friction_law(r, trim(friction), config%friction, status, rename=point_mass_renamed)
     if (.not. status%ok()) return
     if (friction /= 'none') then
       laws = force_law_kinds()

@@ -17,7 +17,7 @@ module io_surface_config
   use io_geometry_config, only: read_geometry_config, geometry_groups, geometry_file_groups
   implicit none (type, external)
   private
-  public :: read_surface_config, surface_variables
+  public :: read_surface_config, surface_variables, surface_kind_names
 
   integer, parameter :: name_length = 32
 
@@ -59,7 +59,7 @@ contains
     if (present(group)) g = group
     kinds = surface_kinds()
     kind_variables = surface_variables()
-    kind_names = [character(len=name_length) :: (kinds(i)%name, i = 1, size(kinds)), geometry_kinds_here()]
+    kind_names = surface_kind_names()
     kind = 'plane'
     geometry_file = ''
     origin = 0; angles_deg = 0
@@ -240,6 +240,16 @@ contains
     case default; group = trim(kind)
     end select
   end function needed_group
+
+  !> The words `kind` may take: the kinds of the registry, then those
+  !> described by the geometry groups.
+  function surface_kind_names() result(names)
+    character(len=name_length), allocatable :: names(:)
+    type(surface_kind_t), allocatable :: kinds(:)
+    integer :: i
+    kinds = surface_kinds()
+    names = [character(len=name_length) :: (kinds(i)%name, i = 1, size(kinds)), geometry_kinds_here()]
+  end function surface_kind_names
 
   pure function geometry_kinds_here() result(kinds)
     character(len=8) :: kinds(4)

@@ -9,6 +9,7 @@ module scenarios_registry
   use io_xdmf, only: xdmf_path
   use io_mesh_export, only: export_result_meshes
   use io_builtin_inputs, only: builtin_input
+  use io_templates, only: template_from_spec
   use io_run_config, only: run_config_t, read_run_config
   use scenarios_point_mass, only: run_point_mass
   use scenarios_pendulum, only: run_pendulum
@@ -135,13 +136,19 @@ contains
     call run_input_file('builtin:default', status, cli, overrides)
   end subroutine run_default
 
-  !> The commented template of a scenario (inputs/templates/<scenario>.nml,
-  !> compiled in; for --default-input SCENARIO).
+  !> The commented template of a scenario (for --default-input SCENARIO),
+  !> generated from the declarations and the scenario's spec
+  !> (inputs/templates/specs/<scenario>.spec, compiled in; io_templates).
   subroutine scenario_template(scenario, text, found)
     character(len=*), intent(in) :: scenario
     character(len=:), allocatable, intent(out) :: text
     logical, intent(out) :: found
-    call builtin_input('template_'//scenario, text, found)
+    character(len=:), allocatable :: spec, error
+    call builtin_input('template_spec_'//scenario, spec, found)
+    if (.not. found) return
+    call template_from_spec(scenario, spec, text, error)
+    ! a spec naming an undeclared variable is slidesim's error (cli_template_declarations)
+    if (len(error) > 0) error stop 'the template of '//scenario//' cannot be generated: '//error
   end subroutine scenario_template
 
   !> The text of the built-in default input (for --default-input).

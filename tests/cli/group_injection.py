@@ -69,6 +69,8 @@ def all_groups(root):
     groups = set(GEOMETRY) | {'channel', 'grid'}
     folder = os.path.join(root, 'inputs', 'templates')
     for name in os.listdir(folder):
+        if not name.endswith('.nml'):
+            continue   # specs/: what the templates are generated from
         with open(os.path.join(folder, name), encoding='utf-8') as f:
             groups |= {m.group(1).lower() for m in re.finditer(r'^\s*&(\w+)', f.read(), re.M)}
     return groups

@@ -67,7 +67,8 @@ refused csv_backwards "rider_segments.csv:4: 8.0* is not allowed: segment 2 must
 
 # the start: v0 = 0 (the tube's edge) is bad input for ride and identify_rider alike
 sed -e "s|'../demo_slide/slide.nml'|'$repo/inputs/demo_slide/slide.nml'|" "$repo/inputs/ride/demo_slide.nml" >"$work/ride.nml"
-sed -i 's/^  u0 = 0.5, v0 = 1.5707963267948966,/  u0 = 0.5, v0 = 0.0,/' "$work/ride.nml" "$work/rider.nml"
+sed -i 's/^  u0 = 0.5, v0 = 1.5707963267948966,/  u0 = 0.5, v0 = 0.0,/' "$work/ride.nml"
+sed -i 's/^  v0 = 1.5707963267948966 /  v0 = 0.0 /' "$work/rider.nml"   # the template: one variable a line
 refused ride_v0 "ride.nml:[0-9]*: &rider: the start u0 = 0.5, v0 = 0, heading0_deg = 0, speed0 = 1 (height = 1.78 m): " ride.nml
 refused identify_v0 "rider.nml:[0-9]*: &rider: the start u0 = 0.5, v0 = 0, heading0_deg = 0, speed0 = 1 (height = 1.78 m): " rider.nml
 refused identify_v0_check "rider.nml:[0-9]*: &rider: the start u0 = 0.5, v0 = 0" --check rider.nml
