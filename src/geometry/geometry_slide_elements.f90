@@ -1,6 +1,7 @@
 !> Slides from standard elements: straight (length, slope), curve (radius,
-!> turning angle, direction, slope), helix (radius, turns, drop, direction) and
-!> run-out (length, slope), joined with continuous tangent.
+!> turning angle, direction, slope), helix (radius, turns, drop, direction),
+!> run-out (length, slope) and drop (height, top slope, curve-out radius; the
+!> trap-door start, first in the chain), joined with continuous tangent.
 !>
 !> The centerline is built from the horizontal curvature kappa(sigma) and the
 !> gradient g(sigma) = -dz/dsigma as functions of the horizontal arc length
@@ -12,6 +13,10 @@
 !> the centerline is C4 and the tube's third partials are continuous. L is the
 !> transition length given by the user, shortened to the shorter neighbour;
 !> L = 0 gives sharp joints (continuous tangent, curvature jumps).
+!> A drop (geometry_drop_profile) has a gradient of its own that ends at the
+!> next element's: the chain takes that gradient for it and adds the drop's
+!> deviation from it, so the joint after a drop has no step in g and the
+!> drop's own curvature ramps make it curvature-continuous.
 !> Heading psi = int kappa and height z = z0 - int g are closed-form; x and y
 !> are int [cos psi, sin psi] dsigma, tabulated at nodes every 0.5 m and
 !> completed by 8-point Gauss-Legendre from the nearest node (no allocation,
@@ -26,24 +31,26 @@ module geometry_slide_elements
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT
   use geometry_curve, only: curve_t, curve_point_t
+  use geometry_drop_profile, only: drop_profile_t, new_drop_profile, smoothstep
   implicit none (type, external)
   private
   public :: slide_element_t, element_chain_curve_t, new_element_chain, slide_points
   public :: element_kinds
 
-  character(len=*), parameter :: element_kinds(4) = [character(len=8) :: 'straight', 'curve', 'helix', 'runout']
+  character(len=*), parameter :: element_kinds(5) = [character(len=8) :: 'straight', 'curve', 'helix', 'runout', &
+    'drop']
 
   !> One element as given in the input. Angles in degrees, lengths in m;
   !> slope is the downhill angle (deg, > 0 going down).
   type :: slide_element_t
     character(len=8) :: kind = 'straight'
     real(wp) :: length = 0          ! m, horizontal (straight, runout)
-    real(wp) :: slope_deg = 0       ! deg, downhill positive (straight, curve, runout)
-    real(wp) :: radius = 0          ! m, horizontal (curve, helix)
+    real(wp) :: slope_deg = 0       ! deg, downhill positive (straight, curve, runout; a drop's top)
+    real(wp) :: radius = 0          ! m, horizontal (curve, helix); vertical (a drop's curve-out)
     real(wp) :: angle_deg = 0       ! deg, turning angle (curve)
     character(len=5) :: direction = 'left'   ! 'left' or 'right' (curve, helix)
     real(wp) :: turns = 0           ! full turns (helix)
-    real(wp) :: drop = 0            ! m, height lost over the helix
+    real(wp) :: drop = 0            ! m, height lost over the helix or the drop
   end type slide_element_t
 
   type, extends(curve_t) :: element_chain_curve_t
@@ -57,6 +64,8 @@ module geometry_slide_elements
     real(wp), allocatable :: node_xy(:, :)  ! m, x, y at sigma = k*node_step
     real(wp) :: node_step = 0.5_wp
     real(wp) :: total = 0                   ! m, horizontal length
+    logical :: starts_with_drop = .false.   ! element 1 is a drop
+    type(drop_profile_t) :: drop            ! its profile (starts_with_drop)
   contains
     procedure :: evaluate => chain_evaluate
     procedure :: domain => chain_domain
@@ -84,6 +93,7 @@ contains
     integer :: n, i, k, nn
     real(wp) :: len_h(size(elements)), sgn, a, b, xy(2), s
     character(len=16) :: idx
+    character(len=:), allocatable :: why
     n = size(elements)
     if (n < 1) then
       call set_status(status, STATUS_INVALID_INPUT, 'slide elements: no elements given')
@@ -147,12 +157,38 @@ contains
             call fail('drop per horizontal length must correspond to a slope below 60 deg')
             return
           end if
+        case ('drop')
+          if (i > 1) then
+            call fail('a drop is the trap-door start of a slide: only the first element can be a drop')
+            return
+          end if
+          if (n < 2) then
+            call fail('a drop needs an element after it (its curve-out turns into it)')
+            return
+          end if
+          c%kappa(i) = 0
+          c%grad(i) = 0     ! set to the next element's gradient below
+          len_h(i) = 0
         case default
-          call fail('kind must be one of straight, curve, helix, runout')
+          call fail('kind must be one of straight, curve, helix, runout, drop')
           return
         end select
       end associate
     end do
+    if (elements(1)%kind == 'drop') then
+      i = 1
+      idx = '1'
+      c%grad(1) = c%grad(2)
+      c%drop = new_drop_profile(elements(1)%drop, elements(1)%slope_deg, elements(1)%radius, c%grad(2), &
+                                transition, status)
+      if (.not. status%ok()) then
+        why = status%text()
+        call fail(why)
+        return
+      end if
+      c%starts_with_drop = .true.
+      len_h(1) = c%drop%total
+    end if
     c%start = start
     c%heading0 = heading_deg*pi/180
     c%ends(1) = len_h(1)
@@ -188,26 +224,6 @@ contains
     end subroutine fail
   end function new_element_chain
 
-  !> Smoothstep S(t) and its t-derivatives (d(0:3)) and its integral P(t) =
-  !> int_0^t S, with S = 0 for t < 0 and 1 for t > 1 (P continued).
-  pure subroutine smoothstep(t, d, integral)
-    real(wp), intent(in) :: t
-    real(wp), intent(out) :: d(0:3), integral
-    d = 0
-    if (t <= 0) then
-      integral = 0
-    else if (t >= 1) then
-      d(0) = 1
-      integral = t - 0.5_wp
-    else
-      d(0) = t**4*(35 - 84*t + 70*t**2 - 20*t**3)
-      d(1) = 140*t**3*(1 - t)**3
-      d(2) = 420*t**2*(1 - t)**2*(1 - 2*t)
-      d(3) = 840*t*(1 - t)*((1 - 2*t)**2 - t*(1 - t))
-      integral = t**5*(7 - 14*t + 10*t**2 - 2.5_wp*t**3)
-    end if
-  end subroutine smoothstep
-
   !> psi, kappa and its derivatives (k(0:2)), g and its derivatives (g(0:3)),
   !> and the integral of g from 0 (m) at sigma.
   pure subroutine profile(c, sigma, psi, k, g, gint)
@@ -242,6 +258,11 @@ contains
       psi = psi + dk*ipart
       gint = gint + dg*ipart
     end do
+    if (c%starts_with_drop) then
+      call c%drop%deviation(sigma, d, ipart)
+      g = g + d
+      gint = gint + ipart
+    end if
   end subroutine profile
 
   pure function direction_xy(c, sigma) result(xy)

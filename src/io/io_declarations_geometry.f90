@@ -65,13 +65,15 @@ module io_declarations_geometry
       default='none', low=1.0_wp, high=real(max_elements, wp), &
       meaning='number of elements, the number of kinds given (or the rows of `elements_file`); required'), &
     declaration_t(groups='slide_elements', name='kind', kind=VALUE_WORDS, shape='one per element', &
-      default='none', choices='straight curve helix runout', meaning='element kind'), &
+      default='none', choices='straight curve helix runout drop', meaning='element kind (a drop only first)'), &
     declaration_t(groups='slide_elements', name='length', shape='one per element', unit='m', default='0', &
       low=0.0_wp, high=1e4_wp, meaning='horizontal length, > 0 (straight, runout)'), &
     declaration_t(groups='slide_elements', name='slope_deg', shape='one per element', unit='deg', &
-      default='0', low=-45.0_wp, high=45.0_wp, meaning='downhill slope, > 0 goes down (straight, curve, runout)'), &
+      default='0', low=-45.0_wp, high=85.0_wp, meaning='downhill slope, > 0 goes down: in [-45, 45] (straight, '// &
+      'curve, runout); a drop''s top slope in [45, 85] (drop)'), &
     declaration_t(groups='slide_elements', name='radius', shape='one per element', unit='m', default='0', &
-      low=0.0_wp, high=1e4_wp, meaning='horizontal radius, > 0 (curve, helix)'), &
+      low=0.0_wp, high=1e4_wp, meaning='horizontal radius, > 0 (curve, helix); the curve-out''s radius in '// &
+      'its vertical plane, > 0 (drop)'), &
     declaration_t(groups='slide_elements', name='angle_deg', shape='one per element', unit='deg', &
       default='0', low=0.0_wp, high=720.0_wp, meaning='turning angle, >= 1e-6 (curve)'), &
     declaration_t(groups='slide_elements', name='direction', kind=VALUE_WORDS, shape='one per element', &
@@ -79,7 +81,8 @@ module io_declarations_geometry
     declaration_t(groups='slide_elements', name='turns', shape='one per element', unit='1', default='0', &
       low=0.0_wp, high=100.0_wp, meaning='helix turns, > 0 (helix)'), &
     declaration_t(groups='slide_elements', name='drop', shape='one per element', unit='m', default='0', &
-      low=-1e4_wp, high=1e4_wp, meaning='height lost over the helix, at most 2 pi radius turns (helix)'), &
+      low=-1e4_wp, high=1e4_wp, meaning='height lost over the helix, at most 2 pi radius turns (helix); over the '// &
+      'whole drop, fall and curve-out, > 0 (drop)'), &
     declaration_t(groups='slide_elements', name='start', shape='3', unit='m', default='0, 0, 0', &
       low=-1e6_wp, high=1e6_wp, meaning='first centerline point'), &
     declaration_t(groups='slide_elements', name='heading_deg', unit='deg', default='0', low=-360.0_wp, &

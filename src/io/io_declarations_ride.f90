@@ -91,7 +91,7 @@ module io_declarations_ride
     declaration_t(groups='rider sweep', name='heading0_deg', unit='deg', default='0', low=-180.0_wp, &
       high=180.0_wp, meaning='start heading of the body axis from down the slide, towards +v'), &
     declaration_t(groups='rider sweep', name='speed0', unit='m/s', default='1', low=0.0_wp, high=50.0_wp, &
-      open_low=.true., meaning='start speed along the body axis'), &
+      meaning='start speed along the body axis (0: at rest, a trap-door start steeper than mu holds)'), &
     declaration_t(groups='rider', name='min_speed', unit='m/s', default='0.05', low=0.0_wp, high=10.0_wp, &
       open_low=.true., meaning='the ride stops as stalled when the pelvis''s rate along the slide falls below'), &
     declaration_t(groups='rider', name='limit_quantity', kind=VALUE_WORDS, shape='per limit, at most 20', &

@@ -2,9 +2,9 @@
 !> &slide_elements elements_file): a header line naming the columns, then
 !> one element per line, in order. Columns (any order; only `kind` is
 !> required; an empty or missing cell is the namelist's default):
-!>   kind (straight, curve, helix, runout), length (m), radius (m),
+!>   kind (straight, curve, helix, runout, drop), length (m), radius (m),
 !>   angle (deg, a curve's turning angle), slope (deg, downhill > 0),
-!>   direction (left, right), turns (helix), drop (m, helix).
+!>   direction (left, right), turns (helix), drop (m, helix, drop).
 !> Each row maps to one element of &slide_elements with the same meaning
 !> (length, radius, angle_deg, slope_deg, direction, turns, drop) and the
 !> same checks (check_element, shared with the namelist): every refusal
@@ -17,6 +17,7 @@ module io_element_table
   use base_constants, only: two_pi
   use io_namelist, only: nml_value_t, read_real_token, NUMBER_OK
   use io_input, only: read_text_file, format_real
+  use geometry_drop_profile, only: drop_min_slope_deg, drop_max_slope_deg
   implicit none (type, external)
   private
   public :: element_table_t, read_element_table, check_element, table_columns
@@ -85,7 +86,7 @@ contains
         if (.not. status%ok()) return
       end do
       if (len_trim(table%kind(n)) == 0) then
-        call refuse('kind', '', 'no kind given (straight, curve, helix or runout)')
+        call refuse('kind', '', 'no kind given (straight, curve, helix, runout or drop)')
         return
       end if
       call check_element(table%kind(n), table%length(n), table%slope_deg(n), table%radius(n), table%angle_deg(n), &
@@ -123,7 +124,8 @@ contains
         end if
         column_of(c) = j
       end do
-      if (column_of(1) == 0) call refuse_at(1, trim(names(1)), 'a column kind (straight, curve, helix, runout)')
+      if (column_of(1) == 0) call refuse_at(1, trim(names(1)), 'a column kind (straight, curve, helix, runout, '// &
+                                            'drop)')
     end subroutine read_header
 
     subroutine read_cell(c, cell)
@@ -134,8 +136,8 @@ contains
       integer :: outcome
       select case (c)
       case (1)
-        if (all(lower_trim(cell) /= [character(len=8) :: 'straight', 'curve', 'helix', 'runout'])) then
-          call refuse(table_columns(c), cell, 'the kind must be straight, curve, helix or runout')
+        if (all(lower_trim(cell) /= [character(len=8) :: 'straight', 'curve', 'helix', 'runout', 'drop'])) then
+          call refuse(table_columns(c), cell, 'the kind must be straight, curve, helix, runout or drop')
           return
         end if
         table%kind(n) = lower_trim(cell)
@@ -155,7 +157,7 @@ contains
         select case (c)
         case (2, 3); low = 0; high = 1e4_wp
         case (4); low = 0; high = 720
-        case (5); low = -45; high = 45
+        case (5); low = -45; high = 85   ! [-45, 45] but for a drop (check_element)
         case (7); low = 0; high = 100
         case default; low = -1e4_wp; high = 1e4_wp
         end select
@@ -214,8 +216,10 @@ contains
         'a '//trim(kind)//' does not turn; give ''left'' (the default) or leave it out')
       if (len(variable) == 0 .and. .not. length > 0) call set('length', format_real(length), &
         'a '//trim(kind)//' needs a length > 0 (m)')
+      call gentle(slope_deg)
     case ('curve')
       call unused(length, 'length'); call unused(turns, 'turns'); call unused(drop, 'drop')
+      call gentle(slope_deg)
       if (len(variable) == 0 .and. .not. radius > 0) call set('radius', format_real(radius), &
         'a curve needs a radius > 0 (m)')
       if (len(variable) == 0 .and. .not. angle_deg >= 1e-6_wp) call set('angle_deg', format_real(angle_deg), &
@@ -227,8 +231,26 @@ contains
       if (len(variable) == 0 .and. .not. turns > 0) call set('turns', format_real(turns), 'a helix needs turns > 0')
       if (len(variable) == 0 .and. abs(drop) > two_pi*radius*turns) call set('drop', format_real(drop), &
         'the helix would be steeper than 45 deg (|drop| <= 2 pi radius turns)')
+    case ('drop')
+      call unused(length, 'length'); call unused(angle_deg, 'angle_deg'); call unused(turns, 'turns')
+      if (len(variable) == 0 .and. direction /= 'left') call set('direction', ''''//trim(direction)//'''', &
+        'a drop does not turn; give ''left'' (the default) or leave it out')
+      if (len(variable) == 0 .and. .not. (slope_deg >= drop_min_slope_deg .and. slope_deg <= drop_max_slope_deg)) &
+        call set('slope_deg', format_real(slope_deg), 'a drop falls at a top slope in ['// &
+                 format_real(drop_min_slope_deg)//', '//format_real(drop_max_slope_deg)//'] (deg)')
+      if (len(variable) == 0 .and. .not. radius > 0) call set('radius', format_real(radius), &
+        'a drop needs the radius of its curve-out > 0 (m)')
+      if (len(variable) == 0 .and. .not. drop > 0) call set('drop', format_real(drop), &
+        'a drop needs the height it loses > 0 (m)')
     end select
   contains
+    !> Only a drop is steeper than 45 deg.
+    subroutine gentle(slope)
+      real(wp), intent(in) :: slope
+      if (len(variable) == 0 .and. .not. abs(slope) <= 45) call set('slope_deg', format_real(slope), &
+        'a '//trim(kind)//'''s slope must lie in [-45, 45] (deg; only a drop is steeper)')
+    end subroutine gentle
+
     subroutine unused(x, name)
       real(wp), intent(in) :: x
       character(len=*), intent(in) :: name

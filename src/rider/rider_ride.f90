@@ -27,6 +27,7 @@ module rider_ride
     EVENT_STOP, EVENT_RECORD, RECORD_EVENT
   use geometry_surface, only: surface_t
   use geometry_slide_query, only: slide_surface_t, as_slide
+  use geometry_curve, only: curve_point_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use water_field, only: water_field_t
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names, &
@@ -212,7 +213,12 @@ contains
     sys%slide_length = sys%slide%length()
     sys%min_speed = options%min_speed
     sys%min_rate = options%min_speed/speed
-    if (.not. qd0(1) > sys%min_rate) then
+    if (params%speed0 == 0) then
+      ! the trap-door start (a drop): from rest, the stall is a falling crossing
+      ! of min_rate only after the rider has risen above it
+      call start_from_rest(status)
+      if (.not. status%ok()) return
+    else if (.not. qd0(1) > sys%min_rate) then
       call set_status(status, STATUS_INVALID_INPUT, 'the start speed '//format_short(params%speed0)// &
                       ' m/s does not carry the rider down the slide (its rate along the slide must exceed '// &
                       format_short(options%min_speed)//' m/s)')
@@ -229,6 +235,22 @@ contains
     y0 = sys%initial_state(q0, qd0)
     call sys%check_start(y0, status)
     if (.not. status%ok()) call prefix_status(status, 'ride start')
+
+  contains
+
+    !> A rider at rest slides off only where the centerline is steeper than
+    !> its friction holds (tan(slope) > mu at the pelvis's start).
+    subroutine start_from_rest(status)
+      type(status_t), intent(inout) :: status
+      type(curve_point_t) :: c
+      real(wp) :: gradient
+      call sys%slide%centerline_point(q0(1), 1, c, status)
+      if (.not. status%ok()) return
+      gradient = -c%d(3, 1)/max(norm2(c%d(1:2, 1)), tiny(1.0_wp))
+      if (.not. gradient > params%mu) call set_status(status, STATUS_INVALID_INPUT, 'a rider starting at rest '// &
+        '(speed0 = 0) needs a start steeper than its friction holds: tan(slope) = '//format_short(gradient)// &
+        ' at the start is not above mu = '//format_short(params%mu))
+    end subroutine start_from_rest
   end subroutine prepare_ride
 
   !> The stations' surface parameters u, each after the start u0 and on the

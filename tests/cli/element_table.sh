@@ -33,9 +33,14 @@ bad() {   # NAME TEXT EXPECTED [HEADER]
   [ -e "$work/$name/out.h5" ] && fail "$name: a result was written"
 }
 bad kind 'straight, 6.0,,,12.0
-slope, 3.0' "table.csv:3: column 1 (kind): 'slope': element 2: the kind must be straight, curve, helix or runout"
+slope, 3.0' "table.csv:3: column 1 (kind): 'slope': element 2: the kind must be straight, curve, helix, runout or drop"
 bad number 'straight, six' "table.csv:2: column 2 (length): 'six': element 1: not a number"
-bad range 'straight, 6.0,,,50' "table.csv:2: column 5 (slope): '50': element 1: must be in [-45.0, 45.0] deg"
+bad range 'straight, 6.0,,,90' "table.csv:2: column 5 (slope): '90': element 1: must be in [-45.0, 85.0] deg"
+bad steep 'straight, 6.0,,,50' "table.csv:2: column 5 (slope): '50.0': element 1: a straight's slope must lie in [-45, 45] (deg; only a drop is steeper)"
+bad drop_slope 'drop,, 8.0,,30,,,10' "table.csv:2: column 5 (slope): '30.0': element 1: a drop falls at a top slope in [45.0, 85.0] (deg)"
+bad drop_second 'straight, 6.0,,,12.0
+drop,, 8.0,,80,,,10
+straight, 6.0,,,3.0' "slide element 2 (drop): a drop is the trap-door start of a slide: only the first element can be a drop"
 bad unused 'curve, 3.0, 5.0, 90' "table.csv:2: column 2 (length): '3.0': element 1: a curve does not use length; give 0 or leave it out"
 bad needed 'helix,, 4.0,,,,,1.0' "table.csv:2: column 7 (turns): '0.0': element 1: a helix needs turns > 0"
 bad column 'straight, 6.0' "table.csv:1: column 2: 'len': the header needs a column name: kind, length" 'kind, len'

@@ -4,7 +4,8 @@
 # are refused before any work (exit status 1, no result file), each message
 # naming what is wrong: a negative mass, a start where the heels cannot reach
 # the slide (which contact and by how much), a drag sphere larger than the
-# tube, a limit in a unit of the wrong kind. A ride that fails part way (too
+# tube, a limit in a unit of the wrong kind, a rider at rest where the start
+# is not steeper than its friction holds. A ride that fails part way (too
 # few steps allowed) prints its whole report, the results line last, before
 # the error, also when both streams go to one file.
 set -u
@@ -40,6 +41,8 @@ bad heels_beyond_end "s/u0 = 0.5, v0/u0 = 66.5, v0/" "the heels cannot reach the
 bad back_before_start "s/u0 = 0.5, v0/u0 = 0.1, v0/" "the back cannot reach the slide"
 bad heels_across "s/heading0_deg = 0.0/heading0_deg = 90.0/; s/height = 1.78/height = 2.4/" "cannot reach the slide: the contact point stays"
 bad sphere_too_large "s/drag_radius = 0.5, 0.05, 0.5/drag_radius = 0.6, 0.05, 0.5/" "drag_radius(1) = 0.6 is not allowed"
+# at rest (speed0 = 0, a drop's trap door) only where the start is steeper than mu holds (12 deg: tan 0.21)
+bad at_rest_held "s/speed0 = 1.0/speed0 = 0.0/; s/mu = 0.0724419/mu = 0.3/" "needs a start steeper than its friction holds: tan(slope) = 0.2125"
 bad limit_unit "s/limit_unit     = 'm\/s',        'm\/s',   'm'/limit_unit = 'g', 'm\/s', 'm'/" "unit 'g' does not measure exit_speed"
 
 # failed part way, standard output and error into one file: the report's

@@ -1,7 +1,8 @@
 !> Every shipped geometry built through the library, without io (issue 24,
 !> point 2): inputs/geometry/*.nml, inputs/demo_slide/slide.nml (the demo
 !> slide of the ride, water, sweep, identification and sled inputs and of
-!> builtin:demo_slide, the default run's) and inputs/design/second_slide.nml
+!> builtin:demo_slide, the default run's), inputs/design/second_slide.nml and
+!> inputs/parts/drop_slide.nml
 !> (second_slide_water.nml's). Each description is written here by hand from
 !> its input file (the same values, in the same arithmetic as the reader:
 !> degrees times pi/180), the B-spline's points read from its CSV file by
@@ -43,6 +44,7 @@ program shipped_geometries
   call put('geometry_tube_blend_fig3_11', tube_blend_fig3_11(), 90, 36)
   call put('demo_slide_slide', demo_slide(), 600, 36)
   call put('design_second_slide', second_slide(), 600, 36)
+  call put('parts_drop_slide', drop_slide(), 600, 36)
   if (failures > 0) then
     print '(i0, a)', failures, ' shipped geometries not built'
     error stop 1
@@ -144,6 +146,21 @@ contains
       element('runout', 7.0_wp, 1.5_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
     d%slide%section%parts = circle(0.52_wp)
   end function second_slide
+
+  !> inputs/parts/drop_slide.nml
+  function drop_slide() result(d)
+    type(geometry_description_t) :: d
+    d%kind = 'slide'
+    d%slide%elements%start = [0.0_wp, 0.0_wp, 14.0_wp]
+    d%slide%elements%transition_length = 2.0_wp
+    d%slide%elements%exact = .true.
+    d%slide%elements%elements = [ &
+      element('drop', 0.0_wp, 80.0_wp, 8.0_wp, 0.0_wp, 'left', 0.0_wp, 10.0_wp), &
+      element('straight', 6.0_wp, 3.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
+      element('curve', 0.0_wp, 4.0_wp, 12.0_wp, 90.0_wp, 'left', 0.0_wp, 0.0_wp), &
+      element('runout', 8.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
+    d%slide%section%parts = circle(0.5_wp)
+  end function drop_slide
 
   !> inputs/geometry/flume.nml
   function flume() result(d)

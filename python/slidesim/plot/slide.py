@@ -1,7 +1,8 @@
 """Plots a slide (scenario geometry): the surface in 3-D with the centerline
-and its frames; for tubes and slides also the plan view coloured by the signed
-curvature, the elevation profile and the signed curvature over arc length
-(positive: turning left, seen from above).
+and its frames; for tubes and slides also the plan view coloured by the
+turning curvature, the elevation profile and the curvature chi over arc
+length split into its turning part (positive: turning left, seen from above)
+and its vertical part (positive: concave up, as a drop's curve-out).
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
@@ -12,13 +13,20 @@ from .common import draw_surface, equal_axes_3d, title
 SCENARIOS = ("geometry",)
 
 
-def signed_curvature(points, chi):
-    """chi with the sign of the turn in plan view: + to the left (counter-
-    clockwise seen from above), from the cross product of consecutive chords."""
-    d = np.gradient(points[:, :2], axis=0)
-    dd = np.gradient(d, axis=0)
-    turn = d[:, 0] * dd[:, 1] - d[:, 1] * dd[:, 0]
-    return np.where(turn < 0, -chi, chi)
+def curvature_parts(points, s, chi):
+    """chi split into its turning part (along the horizontal normal: + to the
+    left, counter-clockwise seen from above) and its vertical part (along the
+    normal in the vertical plane of the tangent: + concave up), by the
+    direction of the curvature vector from differences of the points."""
+    t = np.gradient(points, s, axis=0)
+    k = np.gradient(t, s, axis=0)
+    t /= np.linalg.norm(t, axis=1)[:, None]
+    k -= np.sum(k * t, axis=1)[:, None] * t
+    k /= np.maximum(np.linalg.norm(k, axis=1), 1e-300)[:, None]
+    left = np.stack([-t[:, 1], t[:, 0], np.zeros(len(t))], axis=1)
+    left /= np.maximum(np.linalg.norm(left, axis=1), 1e-300)[:, None]
+    up = np.cross(t, left)
+    return chi * np.sum(k * left, axis=1), chi * np.sum(k * up, axis=1)
 
 
 def draw(r, plt, args):
@@ -42,17 +50,17 @@ def draw(r, plt, args):
     equal_axes_3d(ax, pts)
     ax.set_title(f"{r.attrs.get('surface', 'surface')}\n(frames: x red, y green, z blue)")
     if tube:
-        kappa = signed_curvature(points, chi)
+        turning, vertical = curvature_parts(points, s, chi)
         plan = fig.add_subplot(2, 4, 3)
-        limit = max(np.abs(kappa).max(), 1e-12)
-        sc = plan.scatter(points[:, 0], points[:, 1], c=kappa, s=4, cmap="coolwarm", vmin=-limit, vmax=limit)
+        limit = max(np.abs(turning).max(), 1e-12)
+        sc = plan.scatter(points[:, 0], points[:, 1], c=turning, s=4, cmap="coolwarm", vmin=-limit, vmax=limit)
         plan.plot(points[0, 0], points[0, 1], "go", label="start")
         plan.set_aspect("equal")
         plan.set_xlabel("x [m]")
         plan.set_ylabel("y [m]")
         plan.set_title("plan view")
         plan.legend(fontsize=8)
-        fig.colorbar(sc, ax=plan, label="signed curvature [1/m]")
+        fig.colorbar(sc, ax=plan, label="turning curvature [1/m]")
         profile = fig.add_subplot(2, 4, 4)
         profile.plot(s, points[:, 2], "k-")
         profile.set_xlabel("arc length [m]")
@@ -60,11 +68,13 @@ def draw(r, plt, args):
         profile.set_title(f"elevation profile (drop {points[0, 2] - points[-1, 2]:.2f} m)")
         profile.grid(True)
         curv = fig.add_subplot(2, 2, 4)
-        curv.plot(s, kappa, "b-")
+        curv.plot(s, turning, "b-", label="turning (+ left)")
+        curv.plot(s, vertical, "r-", label="vertical (+ concave up)")
         curv.axhline(0, color="gray", lw=0.5)
         curv.set_xlabel("arc length [m]")
-        curv.set_ylabel("signed curvature [1/m]")
-        curv.set_title("curvature chi (4.8), + turning left")
+        curv.set_ylabel("curvature [1/m]")
+        curv.set_title("curvature chi (4.8): its turning and vertical parts")
+        curv.legend(fontsize=8)
         curv.grid(True)
     fig.suptitle(title(r))
     fig.tight_layout()

@@ -1,0 +1,256 @@
+!> The vertical profile of a drop: the near-vertical free fall of a
+!> trap-door start and its curve-out at the bottom, as the gradient
+!> g(sigma) = tan(pitch) over the horizontal arc length sigma (m) that the
+!> element chain (geometry_slide_elements) uses.
+!>
+!> With q = sin(pitch) (pitch downhill positive), dq/dsigma is minus the
+!> curvature of the profile in its vertical plane: a vertical circle of
+!> radius R is q linear in sigma with slope -1/R. The drop is
+!>   [0, fall]            straight at the top slope (q = q_top),
+!>   a ramp of width w1   curvature 0 -> 1/R by the septic smoothstep S,
+!>   a core               the circle of radius R (the curve-out proper),
+!>   a ramp of width w2   curvature 1/R -> 0, ending at the exit slope,
+!> so q(sigma) = q_top - [w1 P(t0) - w2 P(t2)]/R, t0 = (sigma - fall)/w1,
+!> t2 = (sigma - fall - w1 - core)/w2, P the integral of S: the curvature is
+!> C3 (clothoid-like transitions; w = 0 gives a circle whose curvature jumps
+!> at its ends). A ramp is the chain's transition length L as arc length:
+!> w = L cos(pitch) horizontally at its end of the circle (it turns the
+!> pitch by about L/(2R), as a clothoid of length L), at most a quarter of
+!> the turn R (q_top - q_exit), so the core is never shorter than a ramp.
+!> g = q / sqrt(1 - q^2) and its sigma-derivatives follow by the
+!> chain rule; the height lost, the integral of g, is closed-form on the
+!> straight and tabulated over the curve-out (nodes every <= 0.05 m with the
+!> ramps' ends as nodes, 8-point Gauss-Legendre from the nearest node below:
+!> exact to ~1e-14 m, since g is smooth between nodes).
+!> The fall is sized so that the whole element loses `height`.
+module geometry_drop_profile
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
+  use base_text, only: format_real
+  implicit none (type, external)
+  private
+  public :: drop_profile_t, new_drop_profile, smoothstep
+
+  !> Steepest top slope and largest node spacing of the curve-out table.
+  real(wp), parameter, public :: drop_max_slope_deg = 85, drop_min_slope_deg = 45
+  real(wp), parameter :: node_spacing = 0.05_wp   ! m
+
+  type :: drop_profile_t
+    real(wp) :: q_top = 0, q_exit = 0        ! sine of the pitch at the top and at the exit
+    real(wp) :: g_top = 0, g_exit = 0        ! gradients tan(pitch) there
+    real(wp) :: radius = 0                   ! m, the curve-out's radius in its vertical plane
+    real(wp) :: ramp_top = 0, ramp_exit = 0  ! m, horizontal widths of the curvature ramps
+    real(wp) :: core = 0                     ! m, horizontal length of the circle
+    real(wp) :: fall = 0                     ! m, horizontal length of the straight fall
+    real(wp) :: total = 0                    ! m, horizontal length of the element
+    real(wp), allocatable :: node(:)         ! m, sigma - fall of the table's nodes (0 .. the curve-out's end)
+    real(wp), allocatable :: excess(:)       ! m, int of (g - g_exit) from the fall's end to each node
+  contains
+    procedure :: deviation => drop_deviation
+    procedure :: pitch_sine => drop_pitch_sine
+  end type drop_profile_t
+
+  real(wp), parameter :: gl_x(8) = [-0.9602898564975363_wp, -0.7966664774136267_wp, &
+    -0.5255324099163290_wp, -0.1834346424956498_wp, 0.1834346424956498_wp, &
+    0.5255324099163290_wp, 0.7966664774136267_wp, 0.9602898564975363_wp]
+  real(wp), parameter :: gl_w(8) = [0.1012285362903763_wp, 0.2223810344533745_wp, &
+    0.3137066458778873_wp, 0.3626837833783620_wp, 0.3626837833783620_wp, &
+    0.3137066458778873_wp, 0.2223810344533745_wp, 0.1012285362903763_wp]
+
+contains
+
+  !> The drop losing `height` (m) from the top slope `slope_deg` through a
+  !> curve-out of radius `radius` (m) to the exit gradient `exit_gradient`
+  !> (the next element's), with curvature ramps of at most `ramp` m. The
+  !> message says what does not fit.
+  function new_drop_profile(height, slope_deg, radius, exit_gradient, ramp, status) result(d)
+    real(wp), intent(in) :: height, slope_deg, radius, exit_gradient, ramp
+    type(status_t), intent(out) :: status
+    type(drop_profile_t) :: d
+    real(wp) :: turn, curve_out_height, a, b, x
+    integer :: piece, m, k, j, n, i
+    real(wp) :: ends(0:3)
+    if (.not. (slope_deg >= drop_min_slope_deg .and. slope_deg <= drop_max_slope_deg)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'slope_deg = '//format_real(slope_deg)// &
+                      ': a drop falls at a slope in ['//format_real(drop_min_slope_deg)//', '// &
+                      format_real(drop_max_slope_deg)//'] deg')
+      return
+    end if
+    if (.not. (radius > 0 .and. height > 0 .and. ramp >= 0)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'a drop needs a radius > 0 m and a drop (height) > 0 m')
+      return
+    end if
+    d%q_top = sin(slope_deg*pi/180)
+    d%g_top = tan(slope_deg*pi/180)
+    d%g_exit = exit_gradient
+    d%q_exit = exit_gradient/sqrt(1 + exit_gradient**2)
+    d%radius = radius
+    if (.not. d%q_exit < d%q_top) then
+      call set_status(status, STATUS_INVALID_INPUT, 'the element after a drop must be less steep than the drop ('// &
+                      format_real(slope_deg)//' deg)')
+      return
+    end if
+    turn = radius*(d%q_top - d%q_exit)
+    d%ramp_top = min(ramp*sqrt(1 - d%q_top**2), turn/4)
+    d%ramp_exit = min(ramp*sqrt(1 - d%q_exit**2), turn/4)
+    d%core = turn - (d%ramp_top + d%ramp_exit)/2
+    ends = [0.0_wp, d%ramp_top, d%ramp_top + d%core, d%ramp_top + d%core + d%ramp_exit]
+    ! the table over the curve-out, each piece in equal steps of <= node_spacing
+    n = 0
+    do piece = 1, 3
+      n = n + max(1, ceiling((ends(piece) - ends(piece - 1))/node_spacing))
+    end do
+    allocate (d%node(0:n), d%excess(0:n))
+    d%node(0) = 0
+    d%excess(0) = 0
+    k = 0
+    do piece = 1, 3
+      m = max(1, ceiling((ends(piece) - ends(piece - 1))/node_spacing))
+      do j = 1, m
+        k = k + 1
+        a = d%node(k - 1)
+        b = ends(piece - 1) + (ends(piece) - ends(piece - 1))*j/real(m, wp)
+        if (j == m) b = ends(piece)
+        d%node(k) = b
+        x = 0
+        do i = 1, 8
+          x = x + gl_w(i)*excess_gradient(d, 0.5_wp*(a + b) + 0.5_wp*(b - a)*gl_x(i))
+        end do
+        d%excess(k) = d%excess(k - 1) + 0.5_wp*(b - a)*x
+      end do
+    end do
+    curve_out_height = d%excess(ubound(d%excess, 1)) + d%g_exit*ends(3)
+    if (.not. height >= curve_out_height) then
+      call set_status(status, STATUS_INVALID_INPUT, 'drop = '//format_real(height)//' m is less than its '// &
+                      'curve-out of radius '//format_real(radius)//' m alone loses ('// &
+                      format_real(curve_out_height)//' m): give a larger drop or a smaller radius')
+      return
+    end if
+    d%fall = (height - curve_out_height)/d%g_top
+    d%total = d%fall + ends(3)
+  end function new_drop_profile
+
+  !> q = sin(pitch) and its sigma-derivatives q(0:3) at sigma - fall = s.
+  pure subroutine curve_out_sine(d, s, q)
+    type(drop_profile_t), intent(in) :: d
+    real(wp), intent(in) :: s
+    real(wp), intent(out) :: q(0:3)
+    real(wp) :: s0(0:3), p0, s2(0:3), p2, t2
+    integer :: m
+    t2 = s - d%ramp_top - d%core
+    ! each ramp a smoothstep, or a step where its width is 0
+    if (d%ramp_top > 0) then
+      call smoothstep(s/d%ramp_top, s0, p0)
+      p0 = d%ramp_top*p0
+      do m = 1, 3
+        s0(m) = s0(m)/d%ramp_top**m
+      end do
+    else
+      s0 = 0; p0 = max(s, 0.0_wp)
+      if (s >= 0) s0(0) = 1
+    end if
+    if (d%ramp_exit > 0) then
+      call smoothstep(t2/d%ramp_exit, s2, p2)
+      p2 = d%ramp_exit*p2
+      do m = 1, 3
+        s2(m) = s2(m)/d%ramp_exit**m
+      end do
+    else
+      s2 = 0; p2 = max(t2, 0.0_wp)
+      if (t2 >= 0) s2(0) = 1
+    end if
+    q(0) = d%q_top - (p0 - p2)/d%radius
+    do m = 1, 3
+      q(m) = -(s0(m - 1) - s2(m - 1))/d%radius
+    end do
+  end subroutine curve_out_sine
+
+  !> g - g_exit at sigma - fall = s (the table's integrand).
+  pure real(wp) function excess_gradient(d, s)
+    type(drop_profile_t), intent(in) :: d
+    real(wp), intent(in) :: s
+    real(wp) :: q(0:3)
+    call curve_out_sine(d, s, q)
+    excess_gradient = q(0)/sqrt(1 - q(0)**2) - d%g_exit
+  end function excess_gradient
+
+  !> sin(pitch) at sigma (m) and its sigma-derivatives (q(0:3)).
+  pure subroutine drop_pitch_sine(self, sigma, q)
+    class(drop_profile_t), intent(in) :: self
+    real(wp), intent(in) :: sigma
+    real(wp), intent(out) :: q(0:3)
+    if (sigma <= self%fall) then
+      q = [self%q_top, 0.0_wp, 0.0_wp, 0.0_wp]
+    else
+      call curve_out_sine(self, min(sigma, self%total) - self%fall, q)
+      if (sigma > self%total) q(1:3) = 0
+    end if
+  end subroutine drop_pitch_sine
+
+  !> What the drop adds to a chain whose gradient is g_exit: dg(0:3) = g - g_exit
+  !> and its sigma-derivatives at sigma, and dint = int_0^sigma (g - g_exit)
+  !> (m; constant past the drop's end).
+  pure subroutine drop_deviation(self, sigma, dg, dint)
+    class(drop_profile_t), intent(in) :: self
+    real(wp), intent(in) :: sigma
+    real(wp), intent(out) :: dg(0:3), dint
+    real(wp) :: q(0:3), c, g1, g2, g3, s, a, x
+    integer :: lo, hi, mid, n
+    dg = 0
+    if (sigma >= self%total) then
+      dint = (self%g_top - self%g_exit)*self%fall + self%excess(ubound(self%excess, 1))
+      return
+    end if
+    call self%pitch_sine(sigma, q)
+    c = 1 - q(0)**2                        ! cos^2(pitch)
+    g1 = c**(-1.5_wp)                      ! dg/dq
+    g2 = 3*q(0)*c**(-2.5_wp)
+    g3 = (3 + 12*q(0)**2)*c**(-3.5_wp)
+    dg(0) = q(0)/sqrt(c) - self%g_exit
+    dg(1) = g1*q(1)
+    dg(2) = g2*q(1)**2 + g1*q(2)
+    dg(3) = g3*q(1)**3 + 3*g2*q(1)*q(2) + g1*q(3)
+    if (sigma <= self%fall) then
+      dint = (self%g_top - self%g_exit)*max(sigma, 0.0_wp)
+      return
+    end if
+    s = sigma - self%fall
+    lo = 0
+    hi = ubound(self%node, 1)
+    do while (hi - lo > 1)
+      mid = (lo + hi)/2
+      if (self%node(mid) <= s) then
+        lo = mid
+      else
+        hi = mid
+      end if
+    end do
+    a = self%node(lo)
+    x = 0
+    do n = 1, 8
+      x = x + gl_w(n)*excess_gradient(self, 0.5_wp*(a + s) + 0.5_wp*(s - a)*gl_x(n))
+    end do
+    dint = (self%g_top - self%g_exit)*self%fall + self%excess(lo) + 0.5_wp*(s - a)*x
+  end subroutine drop_deviation
+
+  !> Smoothstep S(t) and its t-derivatives (d(0:3)) and its integral P(t) =
+  !> int_0^t S, with S = 0 for t < 0 and 1 for t > 1 (P continued).
+  pure subroutine smoothstep(t, d, integral)
+    real(wp), intent(in) :: t
+    real(wp), intent(out) :: d(0:3), integral
+    d = 0
+    if (t <= 0) then
+      integral = 0
+    else if (t >= 1) then
+      d(0) = 1
+      integral = t - 0.5_wp
+    else
+      d(0) = t**4*(35 - 84*t + 70*t**2 - 20*t**3)
+      d(1) = 140*t**3*(1 - t)**3
+      d(2) = 420*t**2*(1 - t)**2*(1 - 2*t)
+      d(3) = 840*t*(1 - t)*((1 - 2*t)**2 - t*(1 - t))
+      integral = t**5*(7 - 14*t + 10*t**2 - 2.5_wp*t**3)
+    end if
+  end subroutine smoothstep
+end module geometry_drop_profile
