@@ -11,6 +11,24 @@
 !> N = m (g cos(pitch) + v^2 kappa_b), kappa_b = kappa/(1 + r kappa) the
 !> bottom line's curvature, at every record across the drop (in the core:
 !> m (g cos + v^2/(R + r))), with no jump between records across the joints.
+!>
+!> halfpipe: an open U (the flume section: a semicircle of radius r and
+!> vertical walls) with high walls on a horizontal straight: a frictionless
+!> point mass crossing the bottom at V (and moving along the axis at U) rides
+!> up one wall to the height V^2/(2 g) above the bottom, back through the
+!> bottom at V and up the other wall to the same height (the along-axis
+!> motion is decoupled: U stays).
+!>
+!> bowl (the point mass on a surface of revolution, as the chain has no bowl
+!> element yet): the horizontal circle inside a spherical bowl of radius R at
+!> the angle theta from the bottom (latitude -(90 deg - theta)): N cos(theta)
+!> = m g and N sin(theta) = m v^2/rho, rho = R sin(theta), so
+!> v^2 = g R sin(theta)^2/cos(theta), N = m g/cos(theta); inside a cone of
+!> half-angle alpha at the height h above its apex: N sin(alpha) = m g and
+!> N cos(alpha) = m v^2/rho, rho = h tan(alpha), so v^2 = g h (whatever
+!> alpha), N = m g/sin(alpha). Started on its circle at that speed the mass
+!> stays on it (height and speed to 1e-9 over two turns) and presses with that
+!> N; started 1% faster it leaves the circle (the check can fail).
 program test_slide_parts
   use base_kinds, only: wp
   use base_constants, only: pi, standard_gravity
@@ -32,6 +50,8 @@ program test_slide_parts
 
   call drop_geometry()
   call drop_point_mass()
+  call halfpipe_point_mass()
+  call bowl_circles()
   call finish_tests('test_slide_parts')
 
 contains
@@ -186,6 +206,146 @@ contains
     call check(jump_sharp >= 0.5_wp, 'sharp joints: the normal force jumps (the check can fail): '// &
                real_text(jump_sharp)//' (smooth '//real_text(jump_smooth)//')')
   end subroutine drop_point_mass
+
+  subroutine bowl_circles()
+    real(wp), parameter :: big = 3, theta = 50*pi/180, alpha = 35*pi/180, h = 1.2_wp   ! m, rad, rad, m
+    real(wp) :: v, drift(2)
+    character(len=40) :: text
+    ! spherical bowl: u the longitude, v the latitude (the circle's: theta - 90 deg)
+    v = sqrt(standard_gravity*big*sin(theta)**2/cos(theta))
+    write (text, '(es23.16)') theta - pi/2
+    call circle('&surface kind = ''sphere_zone'', radius = 3, latitude_min_deg = -89, latitude_max_deg = 0 /', &
+                trim(text), v, big*sin(theta), standard_gravity/cos(theta), 'spherical bowl', drift)
+    call check(drift(1) <= 1e-9_wp*big .and. drift(2) <= 1e-9_wp*v, 'spherical bowl: stays on its circle')
+    call circle('&surface kind = ''sphere_zone'', radius = 3, latitude_min_deg = -89, latitude_max_deg = 0 /', &
+                trim(text), 1.01_wp*v, big*sin(theta), -1.0_wp, 'spherical bowl 1% fast', drift)
+    call check(drift(1) > 1e-3_wp*big, 'spherical bowl: 1% too fast leaves the circle (the check can fail)')
+    ! conical bowl: u the angle about the axis, v the height above the apex
+    v = sqrt(standard_gravity*h)
+    write (text, '(es23.16)') h
+    call circle('&surface kind = ''cone'', half_angle_deg = 35, z_min = 0.2, z_max = 3 /', trim(text), v, &
+                h*tan(alpha), standard_gravity/sin(alpha), 'conical bowl', drift)
+    call check(drift(1) <= 1e-9_wp*h .and. drift(2) <= 1e-9_wp*v, 'conical bowl: stays on its circle')
+    call circle('&surface kind = ''cone'', half_angle_deg = 35, z_min = 0.2, z_max = 3 /', trim(text), &
+                0.99_wp*v, h*tan(alpha), -1.0_wp, 'conical bowl 1% slow', drift)
+    call check(drift(1) > 1e-3_wp*h, 'conical bowl: 1% too slow leaves the circle (the check can fail)')
+  end subroutine bowl_circles
+
+  !> The mass started at the profile parameter `v0` (text) with the speed
+  !> `speed` along the circle of radius `rho`: over two turns the largest
+  !> change of its height and of its speed (drift), and |N| against
+  !> `normal` (per kg; not checked when negative).
+  subroutine circle(surface, v0, speed, rho, normal, name, drift)
+    character(len=*), intent(in) :: surface, v0, name
+    real(wp), intent(in) :: speed, rho, normal
+    real(wp), intent(out) :: drift(2)
+    type(input_text_t) :: input
+    type(solver_config_t) :: solver
+    type(point_mass_t), target :: model
+    type(ode_integrator_t) :: integrator
+    type(point_mass_state_t) :: state
+    type(status_t) :: st
+    character(len=32) :: rate
+    real(wp) :: y0(5), y(5), t, z0, worst, period
+    integer :: k, n
+    logical :: at_root
+    drift = huge(1.0_wp)
+    write (rate, '(es23.16)') speed/rho
+    call input_from_text('<test>', '&run scenario = ''point_mass'' /'//nl// &
+      '&solver method = ''adams'', rtol = 1e-12, atol = 1e-12 /'//nl//surface//nl// &
+      '&point_mass u0 = 0, v0 = '//v0//', du0 = '//trim(rate)//', dv0 = 0, friction = ''none'' /', input, st)
+    if (st%ok()) call build_point_mass(input, solver, model, y0, st)
+    call check(st%ok(), name//': built: '//st%text())
+    if (.not. st%ok()) return
+    call model%state(y0, state, st)
+    call check_close(state%speed, speed, 1e-14_wp, 0.0_wp, name//': the start speed')
+    call check_close(norm2(state%position(1:2)), rho, 1e-14_wp, 0.0_wp, name//': the circle''s radius')
+    z0 = state%position(3)
+    period = 2*pi*rho/speed
+    n = 400
+    call integrator%start(model, 0.0_wp, y0, solver%options, st)
+    drift = 0
+    worst = 0
+    do k = 1, 2*n
+      call integrator%advance(period*k/n, t, y, st, root_found=at_root)
+      if (.not. st%ok() .or. at_root) exit
+      call model%state(y, state, st)
+      drift = max(drift, [abs(state%position(3) - z0), abs(state%speed - speed)])
+      if (normal > 0) worst = max(worst, abs(abs(state%normal_force) - normal)/normal)
+    end do
+    call check(st%ok() .and. .not. at_root, name//': ran two turns: '//st%text())
+    ! 1e-9: N is algebraic in the state, which the integrator keeps to ~1e-10
+    if (normal > 0) call check(worst <= 1e-9_wp, name//': N = m g/cos(theta) (sphere), m g/sin(alpha) (cone)')
+    call integrator%destroy()
+  end subroutine circle
+
+  !> Up one wall and back, then up the other: on a wall the motion is a free
+  !> vertical throw (the wall is a vertical plane: N = 0), so the apex is the
+  !> vertex of the parabola through the three records around the highest.
+  subroutine halfpipe_point_mass()
+    real(wp), parameter :: r = 2, wall = 2.5_wp, across = 8, along = 0.5_wp   ! m, m, m/s, m/s
+    type(input_text_t) :: input
+    type(solver_config_t) :: solver
+    type(point_mass_t), target :: model
+    type(ode_integrator_t) :: integrator
+    type(point_mass_state_t) :: state
+    type(status_t) :: st
+    character(len=32) :: rate
+    real(wp) :: y0(5), y(5), t, z(3), z_bottom, apex(2), e0, worst, v_min, v_max, h, drift
+    integer :: k, walls, crossings
+    logical :: at_root, rising
+    write (rate, '(es23.16)') across/r
+    call input_from_text('<test>', '&run scenario = ''point_mass'' /'//nl// &
+      '&solver method = ''adams'', rtol = 1e-12, atol = 1e-12 /'//nl// &
+      '&surface kind = ''slide'' /'//nl//'&geometry kind = ''slide'' /'//nl// &
+      '&slide_elements n_elements = 1, kind = ''straight'', length = 20, slope_deg = 0, '// &
+      'centerline_kind = ''exact'' /'//nl// &
+      '&cross_section kind = ''flume'', radius = 2, wall = 2.5 /'//nl// &
+      '&point_mass u0 = 2, v0 = 1.5707963267948966, du0 = 0.5, dv0 = '//trim(rate)//', friction = ''none'' /', &
+      input, st)
+    if (st%ok()) call build_point_mass(input, solver, model, y0, st)
+    call check(st%ok(), 'halfpipe point mass built: '//st%text())
+    if (.not. st%ok()) return
+    call model%state(y0, state, st)
+    call check_close(state%speed, hypot(across, along), 1e-14_wp, 0.0_wp, 'halfpipe: the start speed')
+    z_bottom = state%position(3)
+    e0 = state%kinetic_energy + state%potential_energy
+    h = across**2/(2*standard_gravity)
+    call check(h > r + 0.5_wp .and. h < r + wall, 'halfpipe: the apex lies on the wall, 0.5 m above its joint')
+    call model%surface%domain(t, z(1), v_min, v_max)
+    call integrator%start(model, 0.0_wp, y0, solver%options, st)
+    z = z_bottom
+    walls = 0
+    crossings = 0
+    worst = 0
+    drift = 0
+    apex = 0
+    rising = .true.
+    do k = 1, 4000
+      call integrator%advance(1e-3_wp*k, t, y, st, root_found=at_root)
+      if (.not. st%ok() .or. at_root) exit
+      call model%state(y, state, st)
+      worst = max(worst, abs(state%kinetic_energy + state%potential_energy - e0))
+      drift = max(drift, abs(state%velocity(1) - along))
+      z = [z(2), z(3), state%position(3)]
+      if (rising .and. z(3) < z(2)) then      ! z(2) is the highest record
+        walls = walls + 1
+        if (walls <= 2) apex(walls) = z(2) - (z(3) - z(1))**2/(8*(z(1) - 2*z(2) + z(3))) - z_bottom
+      end if
+      if (.not. rising .and. z(3) > z(2)) crossings = crossings + 1
+      rising = z(3) >= z(2)
+      if (walls == 2 .and. crossings == 2) exit
+      if (abs(y(2) - v_min) < 1e-3_wp .or. abs(y(2) - v_max) < 1e-3_wp) exit
+    end do
+    call check(st%ok() .and. .not. at_root, 'halfpipe: ran without leaving the surface: '//st%text())
+    call check(walls == 2, 'halfpipe: up one wall, back and up the other')
+    call check_close(apex(1), h, 1e-9_wp, 0.0_wp, 'halfpipe: the height reached up the first wall is V^2/(2g)')
+    call check_close(apex(2), h, 1e-9_wp, 0.0_wp, 'halfpipe: and up the other')
+    call check(drift <= 1e-9_wp*along, 'halfpipe: the along-axis speed stays')
+    ! 1e-9 of the kinetic energy (the point mass's acceptance is 1e-8: rtol 1e-12 over ~1e3 steps)
+    call check(worst <= 1e-9_wp*0.5_wp*(across**2 + along**2), 'halfpipe: energy conserved')
+    call integrator%destroy()
+  end subroutine halfpipe_point_mass
 
   !> Runs the mass from rest down the drop (transition length `transition`),
   !> records every 1 ms: checks N against the closed form at each record in
