@@ -3,14 +3,15 @@
 !> set of words) and its meaning in one line. The tables of declarations
 !> (io_declarations_*) are the one place these are written: the reader of
 !> every group takes its names, bounds, units and words from them
-!> (io_input), and `slidesim --input-reference` writes the tables of
-!> docs/inputs.md from them (io_input_declarations).
+!> (io_input), `slidesim --input-reference` writes the tables of
+!> docs/inputs.md from them (io_input_declarations), and `slidesim
+!> --default-input SCENARIO` the comments of its template (io_templates).
 module io_declaration
   use base_kinds, only: wp
   use base_text, only: format_real, format_integer
   implicit none (type, external)
   private
-  public :: declaration_t, bound_text, allowed_text, in_groups
+  public :: declaration_t, bound_text, allowed_text, in_groups, words_joined
   public :: VALUE_REAL, VALUE_INTEGER, VALUE_LOGICAL, VALUE_WORDS
 
   !> What a variable's values are: numbers (a range), whole numbers (a
@@ -70,21 +71,22 @@ contains
       if (len_trim(d%choices) == 0) then
         text = 'a text in quotes'
       else
-        text = '`'//words_joined(trim(adjustl(d%choices)))//'`'
+        text = '`'//words_joined(trim(adjustl(d%choices)), '`, `')//'`'
       end if
     end select
   end function allowed_text
 
-  !> 'a b c' as 'a`, `b`, `c'.
-  pure function words_joined(words) result(text)
-    character(len=*), intent(in) :: words
+  !> The blank-separated `words` joined by `separator`: 'a b c' and '`, `'
+  !> as 'a`, `b`, `c'.
+  pure function words_joined(words, separator) result(text)
+    character(len=*), intent(in) :: words, separator
     character(len=:), allocatable :: text
     integer :: i
     text = ''
     do i = 1, len(words)
       if (words(i:i) == ' ') then
         if (i > 1) then
-          if (words(i - 1:i - 1) /= ' ') text = text//'`, `'
+          if (words(i - 1:i - 1) /= ' ') text = text//separator
         end if
       else
         text = text//words(i:i)

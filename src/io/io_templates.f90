@@ -21,7 +21,7 @@ module io_templates
   use base_kinds, only: wp
   use base_text, only: lower, format_integer
   use base_spec, only: parameter_t
-  use io_declaration, only: declaration_t, bound_text, VALUE_REAL, VALUE_INTEGER, VALUE_WORDS
+  use io_declaration, only: declaration_t, bound_text, words_joined, VALUE_REAL, VALUE_INTEGER, VALUE_WORDS
   use io_input_declarations, only: find_declaration, declaration
   use io_point_mass_config, only: point_mass_renamed
   use io_kind_parameters, only: variable_name
@@ -320,7 +320,7 @@ contains
       if (d%open_low) text = '>'//kept_blank//text
       if (d%kind == VALUE_INTEGER) text = 'whole number '//text
     case (VALUE_WORDS)
-      if (len_trim(d%choices) > 0) text = 'one of '//words_listed(trim(adjustl(d%choices)))
+      if (len_trim(d%choices) > 0) text = 'one of '//words_joined(trim(adjustl(d%choices)), ', ')
     end select
   end function allowed_values
 
@@ -344,21 +344,6 @@ contains
       text = bound_text(x)
     end if
   end function number_text
-
-  !> 'a b  c' as 'a, b, c'.
-  pure function words_listed(words) result(text)
-    character(len=*), intent(in) :: words
-    character(len=:), allocatable :: text
-    integer :: i
-    text = ''
-    do i = 1, len(words)
-      if (words(i:i) /= ' ') then
-        text = text//words(i:i)
-      else if (words(i - 1:i - 1) /= ' ') then
-        text = text//', '
-      end if
-    end do
-  end function words_listed
 
   !> The declaration of `name` in the open group: a declared variable, else
   !> a parameter of the group's chosen kind (surface kind, friction law),
