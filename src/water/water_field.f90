@@ -15,6 +15,15 @@
 !> against the integrator's own dense output is measured in test_water_field
 !> and stated in docs/water.md.
 !>
+!> Inlets (water_inlet): where one joined, the run recorded the water just
+!> before and just after at the same u; both are nodes (the only nodes with
+!> equal u), so the field jumps there: a query at u up to the inlet's u gets
+!> the water before it (on the interval that ends there), a query at and
+!> after it the merged water. The edge curves have no such pair (the edge
+!> points lie up- and downstream of the streamline's u): across an inlet
+!> they are interpolated between the last edge node before and the first
+!> after (a few centimetres).
+!>
 !> The edges are curves on the surface: at the cross-section u, the left edge
 !> lies at v_left(u) and the right one at v_right(u). They have their own nodes
 !> (the edge points (u_e, v_e) solved at the samples, 4.25-4.26), so an edge is
@@ -77,6 +86,7 @@ module water_field
     real(wp) :: speed = 0                          ! m/s
     real(wp) :: height = 0, width = 0              ! m, water height h and width b
     real(wp) :: area = 0                           ! m^2, Q/w (continuity)
+    real(wp) :: flow_rate = 0                      ! m^3/s, Q here (the inlets upstream added)
     real(wp) :: beta = 0                           ! rad, flow angle to the centerline (+ towards +v)
     real(wp) :: x_m(3) = 0, y_m(3) = 0, z_m(3) = 0 ! K_M at the streamline point
     type(water_edges_at_t) :: edges
@@ -94,11 +104,12 @@ module water_field
     private
     integer :: n = 0
     real(wp), allocatable :: u(:), arc(:)               ! nodes: u and their arc lengths (m)
+    real(wp), allocatable :: node_flow(:)               ! m^3/s at the nodes (constant between inlets)
     real(wp), allocatable :: value(:, :), slope(:, :)   ! (n_rows, n): values and d/du
     real(wp), allocatable :: left(:, :), right(:, :)    ! (3, m): edge u, v, dv/du
     real(wp), allocatable :: left_u(:), right_u(:)      ! the edges' node u (contiguous for the search)
     type(node_index_t) :: u_index, arc_index, left_index, right_index
-    real(wp) :: flow = 0                                ! m^3/s
+    real(wp) :: flow = 0                                ! m^3/s at the start
   contains
     procedure :: at_u => field_at_u
     procedure :: flow_at_u => field_flow_at_u
@@ -124,7 +135,8 @@ contains
   end function water_location_name
 
   !> The field of a completed run. Samples whose u does not increase (a record
-  !> repeated at a stop) are left out; edges only where they were solved: at
+  !> repeated at a stop) are left out, except the sample after an inlet joined
+  !> (same u, more flow); edges only where they were solved: at
   !> the samples, or, given left and right (rows u, v, du/dt, dv/dt of edge
   !> points solved elsewhere, e.g. at the rows of the table), those instead.
   function new_water_field(series, status, left, right) result(field)
@@ -149,21 +161,27 @@ contains
     do i = 1, n
       if (.not. series%du(i) > 0) cycle
       if (k > 0) then
-        if (.not. series%u(i) > series%u(keep(k))) cycle
+        if (.not. (series%u(i) > series%u(keep(k)) .or. &
+                   (series%u(i) == series%u(keep(k)) .and. series%flow(i) > series%flow(keep(k))))) cycle
       end if
       k = k + 1
       keep(k) = i
     end do
+    ! a run stopped at once after an inlet joined: the merged water has no extent
+    if (k >= 2) then
+      if (series%u(keep(k)) == series%u(keep(k - 1))) k = k - 1
+    end if
     if (k < 2) then
       call set_status(status, STATUS_INVALID_INPUT, 'water field: fewer than two samples with u increasing')
       return
     end if
     field%n = k
     field%flow = series%flow_rate
-    allocate (field%u(k), field%arc(k), field%value(n_rows, k), field%slope(n_rows, k))
+    allocate (field%u(k), field%arc(k), field%node_flow(k), field%value(n_rows, k), field%slope(n_rows, k))
     do k = 1, field%n
       i = keep(k)
       field%u(k) = series%u(i)
+      field%node_flow(k) = series%flow(i)
       field%arc(k) = series%arc_length(i)
       field%value(:, k) = [series%time(i), series%arc_length(i), series%v(i), series%position(:, i), &
                            series%velocity(:, i), series%speed(i), series%height(i), series%width(i), &
@@ -295,6 +313,8 @@ contains
     s_first = self%arc(1); s_last = self%arc(self%n)
   end subroutine field_arc_length_range
 
+  !> The flow rate at the start (m^3/s; inlets there added); along the
+  !> slide: water_at_t%flow_rate.
   pure real(wp) function field_flow_rate(self) result(q)
     class(water_field_t), intent(in) :: self
     q = self%flow
@@ -326,8 +346,9 @@ contains
     water%speed = val(row_speed)
     water%height = val(row_height)
     water%width = val(row_width)
+    water%flow_rate = self%node_flow(i)
     water%area = 0
-    if (water%speed > 0) water%area = self%flow/water%speed
+    if (water%speed > 0) water%area = water%flow_rate/water%speed
     z = val(row_z_m:row_z_m + 2)
     z = z/norm2(z)
     x = val(row_x_m:row_x_m + 2)

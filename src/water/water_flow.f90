@@ -20,6 +20,11 @@
 !>   failure (OUTCOME_SAFETY_BOUND, STATUS_DOMAIN) that points to a bug or a
 !>   model the reasoning does not cover;
 !> - a failure of the integrator or the model (OUTCOME_ERROR).
+!> Inlets downstream of the start (water_inlet) are roots u = u_inlet: the
+!> sample before the merge is recorded, the inlet joins (flow rate and state
+!> jump), the sample after it is recorded and the integrator restarts from
+!> there; a merged state already beyond a stop of the model ends the run
+!> with that stop.
 !> The model is not changed by a run (intent(in)); the run's own state lives
 !> in a local event system, so runs can go on in several threads at once.
 !> The start values are water_start's, the samples water_series'.
@@ -28,12 +33,13 @@ module water_flow
   use base_text, only: format_short
   use base_log, only: log_sink_i
   use base_series, only: max_series_bytes
-  use base_status, only: status_t, set_status, STATUS_DOMAIN
+  use base_status, only: status_t, set_status, prefix_status, STATUS_DOMAIN
   use numerics_ode, only: ode_options_t
   use numerics_event_driver, only: event_system_t, driver_options_t, driver_result_t, drive, &
-    EVENT_IGNORE, EVENT_STOP, RECORD_START, DRIVE_END_TIME, DRIVE_EVENT_STOP
+    EVENT_IGNORE, EVENT_RESTART, EVENT_STOP, RECORD_START, DRIVE_END_TIME, DRIVE_EVENT_STOP
   use water_streamline, only: streamline_t, water_point_t, water_point, CORRECTION_OFF
   use water_boundaries, only: water_edges
+  use water_inlet, only: water_inlet_t, join_inlet
   use water_start, only: water_start_t, water_initial_state, START_EDGES, START_HEIGHT, START_SPEED, &
     START_HEIGHT_SPEED
   use water_series, only: water_series_t, water_station_t, allocate_series, record_sample, values_per_sample, &
@@ -49,7 +55,8 @@ module water_flow
     OUTCOME_ERROR, OUTCOME_LIFT, OUTCOME_SAFETY_BOUND, outcome_name
   public :: ROOT_END, ROOT_STALL, ROOT_CRITICAL, ROOT_TURN, ROOT_LIFT, ROOT_FIRST_STATION
 
-  !> Root functions of a run: the end, the model's stops, then one per station.
+  !> Root functions of a run: the end, the model's stops, then one per
+  !> station, then one per inlet.
   integer, parameter :: ROOT_END = 1, ROOT_STALL = 2, ROOT_CRITICAL = 3, ROOT_TURN = 4, ROOT_LIFT = 5, &
                         ROOT_FIRST_STATION = 6
   !> cos(beta) at which the flow counts as turning across or back (89.4 deg;
@@ -72,6 +79,8 @@ module water_flow
     type(water_series_t), pointer :: series => null()
     logical :: with_edges = .true.
     real(wp) :: u_start = 0, u_end = 0
+    real(wp) :: flow = 0                         ! m^3/s, the flow rate now (inlets joined so far)
+    type(water_inlet_t), allocatable :: inlets(:)
     integer :: outcome = 0                       ! set by a model stop (or OUTCOME_ERROR)
     character(len=:), allocatable :: message
     logical :: cached = .false.
@@ -133,8 +142,11 @@ contains
   !> the caller's bound, else it says why the run stopped early. The model is
   !> not changed. Progress lines (the driver's): to `log` if given (none
   !> without it, or when `progress_seconds` is 0; default: the program's interval).
+  !> `inlets`: water joining downstream of the start (u set; those marked
+  !> joined are taken as joined already, at the start); series%inlets says
+  !> which joined when.
   subroutine simulate_water(model, y0, options, duration, output_step, series, status, edges, log, &
-                            progress_seconds)
+                            progress_seconds, inlets)
     type(streamline_t), intent(in), target :: model
     real(wp), intent(in) :: y0(:), duration, output_step
     type(ode_options_t), intent(in) :: options
@@ -143,6 +155,7 @@ contains
     logical, intent(in), optional :: edges
     procedure(log_sink_i), optional :: log
     real(wp), intent(in), optional :: progress_seconds
+    type(water_inlet_t), intent(in), optional :: inlets(:)
     type(water_system_t), target :: system
     type(driver_options_t) :: opts
     type(driver_result_t) :: result
@@ -158,9 +171,15 @@ contains
     system%u_end = min(model%u_end, u_max)   ! the slide ends at the channel's end at the latest
     system%u_start = y0(1)
     series%flow_rate = model%flow_rate
+    system%flow = model%flow_rate
+    if (present(inlets)) then
+      system%inlets = inlets
+    else
+      allocate (system%inlets(0))
+    end if
     call allocate_series(series, initial_samples(model, y0, duration, output_step))
     nroots = system%root_count()
-    allocate (series%stations(nroots - ROOT_FIRST_STATION + 1))
+    allocate (series%stations(station_count(system)))
     do i = 1, size(series%stations)
       series%stations(i)%u = model%stations(i)
     end do
@@ -181,6 +200,7 @@ contains
     call drive(system, y0, opts, result, status)
     series%stats = result%stats
     series%cpu = result%cpu
+    series%inlets = system%inlets
 
     if (system%outcome /= OUTCOME_ERROR .and. system%outcome /= 0) then
       ! a stop of the model, decided at its event (or at the start)
@@ -251,9 +271,14 @@ contains
 
   integer function system_root_count(self) result(n)
     class(water_system_t), intent(in) :: self
-    n = ROOT_FIRST_STATION - 1
-    if (allocated(self%model%stations)) n = n + size(self%model%stations)
+    n = ROOT_FIRST_STATION - 1 + station_count(self) + size(self%inlets)
   end function system_root_count
+
+  pure integer function station_count(self) result(n)
+    class(water_system_t), intent(in) :: self
+    n = 0
+    if (allocated(self%model%stations)) n = size(self%model%stations)
+  end function station_count
 
   !> g1 = u_end - u (end of slide), g2 = w - min_speed (stall), g3 = criticality
   !> - min_criticality (approach to Fr = 1), g4 = cos(beta) - 0.01 (turning across
@@ -274,8 +299,13 @@ contains
     associate (unused => t)
     end associate
     g(ROOT_END) = self%u_end - y(1)
-    do i = 1, self%root_count() - ROOT_FIRST_STATION + 1
+    do i = 1, station_count(self)
       g(ROOT_FIRST_STATION - 1 + i) = y(1) - self%model%stations(i)
+    end do
+    ! an inlet that joined (here, or at the start) fires no more
+    do i = 1, size(self%inlets)
+      g(ROOT_FIRST_STATION - 1 + station_count(self) + i) = merge(1.0_wp, y(1) - self%inlets(i)%u, &
+                                                                   self%inlets(i)%joined)
     end do
     if (rhs_values_serve()) then
       g(ROOT_STALL:ROOT_LIFT) = self%rhs_g
@@ -333,7 +363,8 @@ contains
   end function stop_margins
 
   !> Stations are filled here (no sample); the end and the model's stops end
-  !> the run (recorded by the driver) with their outcome and message.
+  !> the run (recorded by the driver) with their outcome and message; inlets
+  !> join (join_inlets) and the integrator restarts.
   subroutine system_handle_event(self, t, y, fired, action, status)
     class(water_system_t), intent(inout) :: self
     real(wp), intent(in) :: t
@@ -342,12 +373,27 @@ contains
     integer, intent(out) :: action
     type(status_t), intent(inout) :: status
     integer :: i
-    associate (unused => status)
-    end associate
-    do i = 1, size(fired) - ROOT_FIRST_STATION + 1
+    logical :: stopped
+    do i = 1, station_count(self)
       if (fired(ROOT_FIRST_STATION - 1 + i) /= 0) call station(self, i, t, y)
     end do
-    action = EVENT_STOP
+    call model_stop(self, t, y, fired(ROOT_END:ROOT_LIFT), stopped)
+    if (stopped) then
+      action = EVENT_STOP
+    else
+      action = EVENT_IGNORE   ! stations, inlets
+      call join_inlets(self, t, y, fired(ROOT_FIRST_STATION + station_count(self):), action, status)
+    end if
+  end subroutine system_handle_event
+
+  !> The end or a stop of the model among `fired` (ROOT_END ... ROOT_LIFT):
+  !> its outcome and message set, `stopped`.
+  subroutine model_stop(self, t, y, fired, stopped)
+    class(water_system_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    integer, intent(in) :: fired(ROOT_END:ROOT_LIFT)
+    logical, intent(out) :: stopped
+    stopped = .true.
     if (fired(ROOT_END) /= 0) then
       self%outcome = 0   ! the end: status ok (simulate_water sets OUTCOME_END)
     else if (fired(ROOT_STALL) /= 0) then
@@ -365,7 +411,7 @@ contains
                       'the water is too slow for shallow supercritical flow here; '// &
                       'switch the correction off (correction = ''off'') to go on')
     else
-      action = EVENT_IGNORE   ! only stations
+      stopped = .false.
     end if
   contains
     subroutine stop_model(outcome, message)
@@ -374,7 +420,54 @@ contains
       self%outcome = outcome
       self%message = message
     end subroutine stop_model
-  end subroutine system_handle_event
+  end subroutine model_stop
+
+  !> The inlets whose roots fired (`fired`, one per inlet) join the stream at
+  !> (t, y): the sample before is recorded here, y and the flow rate become
+  !> the merged ones (the driver records them and restarts: EVENT_RESTART).
+  !> A merged state beyond a stop of the model (slower than min_speed, near
+  !> critical, ...) ends the run there with that stop (EVENT_STOP).
+  subroutine join_inlets(self, t, y, fired, action, status)
+    class(water_system_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    real(wp), intent(inout) :: y(:)
+    integer, intent(in) :: fired(:)
+    integer, intent(inout) :: action
+    type(status_t), intent(inout) :: status
+    real(wp) :: y_joined(size(y)), flow_joined, g(ROOT_STALL:ROOT_LIFT)
+    integer :: k, stops(ROOT_END:ROOT_LIFT)
+    logical :: stopped
+    if (.not. any(fired /= 0 .and. .not. self%inlets%joined)) return
+    call self%point(y, status)
+    if (status%ok()) call record_sample(self%model, t, y, self%flow, self%q, self%series, self%with_edges, status)
+    do k = 1, size(self%inlets)
+      if (.not. status%ok()) return
+      if (fired(k) == 0 .or. self%inlets(k)%joined) cycle
+      call join_inlet(self%model, y, self%flow, self%inlets(k), y_joined, flow_joined, status)
+      if (.not. status%ok()) return
+      y = y_joined
+      self%flow = flow_joined
+      self%inlets(k)%joined = .true.
+      self%inlets(k)%time = t
+    end do
+    self%rhs_roots_known = .false.
+    action = EVENT_RESTART
+    call self%point(y, status)
+    if (.not. status%ok()) then   ! e.g. subcritical: outside the model at once
+      status%code = STATUS_DOMAIN
+      call prefix_status(status, 'the inlet joined at arc length '// &
+                         format_short(self%model%channel%arc_length(y(1)))//' m, the merged water')
+      return
+    end if
+    g = stop_margins(self%model, self%q)
+    if (all(g > 0)) return
+    stops = 0
+    where (.not. g > 0) stops(ROOT_STALL:ROOT_LIFT) = -1
+    call model_stop(self, t, y, stops, stopped)
+    action = EVENT_STOP
+    self%message = 'after the inlet joined at arc length '// &
+                   format_short(self%model%channel%arc_length(y(1)))//' m: '//self%message
+  end subroutine join_inlets
 
   pure function lift_message(t, y) result(text)
     real(wp), intent(in) :: t, y(:)
@@ -427,7 +520,7 @@ contains
     real(wp) :: g(ROOT_STALL:ROOT_LIFT), y_event(size(y))
     call self%point(y, status)
     if (.not. status%ok()) return
-    call record_sample(self%model, t, y, self%q, self%series, self%with_edges, status)
+    call record_sample(self%model, t, y, self%flow, self%q, self%series, self%with_edges, status)
     if (.not. status%ok() .or. kind /= RECORD_START) return
     g = stop_margins(self%model, self%q)
     if (all(g > 0)) return

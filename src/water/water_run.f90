@@ -10,7 +10,7 @@
 module water_run
   use base_kinds, only: wp
   use base_constants, only: standard_gravity
-  use base_text, only: format_short
+  use base_text, only: format_short, format_integer
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use base_log, only: log_sink_i
   use numerics_ode, only: ode_options_t
@@ -21,11 +21,13 @@ module water_run
     CORRECTION_NO_RADIUS, CORRECTION_OFF
   use water_flow, only: water_start_t, water_series_t, water_initial_state, simulate_water, &
     OUTCOME_DURATION, START_EDGES, START_HEIGHT, START_SPEED, START_HEIGHT_SPEED
+  use water_inlet, only: water_inlet_t, join_start_inlets, start_tolerance
   use water_field, only: water_field_t, new_water_field
   use water_table, only: water_table_t, new_water_table, solve_row_edges
   implicit none (type, external)
   private
   public :: water_description_t, water_solver_t, water_result_t, new_streamline, compute_water
+  public :: water_inlet_t
 
   !> How the water is integrated and recorded.
   type :: water_solver_t
@@ -41,6 +43,8 @@ module water_run
     real(wp) :: flow_rate = 0.004_wp                          !< m^3/s (Q); not used by START_HEIGHT_SPEED
     real(wp) :: f1 = default_f1, f2 = default_f2, f3 = default_f3   !< kg/m, kg, kg m (4.7)
     type(water_start_t) :: start                              !< where and how the water enters
+    !> more water joining along the slide, in order of arc_length (water_inlet)
+    type(water_inlet_t), allocatable :: inlets(:)
     integer :: correction = CORRECTION_FULL                   !< Saint-Venant correction mode
     real(wp) :: mass = 1                                      !< kg, the streamline mass m_w
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]   !< m/s^2
@@ -65,12 +69,18 @@ module water_run
 contains
 
   !> The model and its start state from a description, every value checked
-  !> (the messages name the description's components).
-  subroutine new_streamline(description, model, y0, status)
+  !> (the messages name the description's components). The inlets at the
+  !> start have joined in y0 and model%flow_rate; `inlets` gives every inlet
+  !> with its u, those at the start marked joined.
+  subroutine new_streamline(description, model, y0, status, inlets)
     type(water_description_t), intent(in) :: description
     type(streamline_t), intent(out) :: model
     real(wp), intent(out) :: y0(7)
     type(status_t), intent(inout) :: status
+    type(water_inlet_t), allocatable, intent(out), optional :: inlets(:)
+    type(water_inlet_t), allocatable :: joining(:)
+    character(len=:), allocatable :: k
+    real(wp) :: start_arc
     real(wp) :: total, u_min, u_max, v_min, v_max
     integer :: i
 
@@ -148,7 +158,40 @@ contains
         end do
       end if
       call water_initial_state(model, d%start, y0, status)
-      if (.not. status%ok()) call prefix_status(status, 'water start')
+      if (.not. status%ok()) then
+        call prefix_status(status, 'water start')
+        return
+      end if
+      if (allocated(d%inlets)) then
+        joining = d%inlets
+      else
+        allocate (joining(0))
+      end if
+      start_arc = model%channel%arc_length(d%start%u0)
+      do i = 1, size(joining)
+        k = format_integer(i)
+        associate (inlet => joining(i))
+          if (.not. (inlet%flow_rate > 0 .and. inlet%flow_rate < 1e3_wp)) then
+            call fail('inlets('//k//')%flow_rate = '//format_short(inlet%flow_rate)//' m^3/s: must be > 0')
+          else if (.not. (inlet%speed > 0 .and. inlet%speed < 1e3_wp)) then
+            call fail('inlets('//k//')%speed = '//format_short(inlet%speed)//' m/s: must be > 0')
+          else if (.not. (abs(inlet%beta) < 1.5_wp + 1e-12_wp)) then
+            call fail('inlets('//k//')%beta = '//format_short(inlet%beta)//' rad: must lie in [-1.5, 1.5]')
+          else if (.not. (inlet%arc_length >= start_arc - start_tolerance .and. inlet%arc_length < total)) then
+            call fail('inlets('//k//')%arc_length = '//format_short(inlet%arc_length)//' m: must lie from the '// &
+                      'start ('//format_short(start_arc)//' m) to before the end ('//format_short(total)//' m)')
+          else if (i > 1) then
+            if (.not. inlet%arc_length >= joining(i - 1)%arc_length) &
+              call fail('inlets('//k//')%arc_length: the inlets must be in order along the slide')
+          end if
+          if (.not. status%ok()) return
+          inlet%joined = .false.
+          call model%channel%parameter_at_length(inlet%arc_length, inlet%u, status)
+          if (.not. status%ok()) return
+        end associate
+      end do
+      call join_start_inlets(model, d%start, start_arc, joining, y0, status)
+      if (present(inlets)) call move_alloc(joining, inlets)
     end associate
 
   contains
@@ -185,20 +228,21 @@ contains
     type(status_t) :: run_status, st
     real(wp) :: y0(7), cpu0, cpu1, u_min, u_max
     real(wp), allocatable :: left(:, :), right(:, :)
+    type(water_inlet_t), allocatable :: inlets(:)
 
     call cpu_time(cpu0)
-    call new_streamline(description, model, y0, status)
+    call new_streamline(description, model, y0, status, inlets)
     if (.not. status%ok()) return
     call model%channel%u_range(u_min, u_max)
     result%slide_length = model%channel%arc_length(u_max)
     if (present(log)) then
       call simulate_water(model, y0, description%solver%ode, description%solver%time_bound, &
                           description%solver%output_step, result%series, run_status, edges=description%edges, &
-                          log=log)
+                          log=log, inlets=inlets)
     else
       call simulate_water(model, y0, description%solver%ode, description%solver%time_bound, &
                           description%solver%output_step, result%series, run_status, edges=description%edges, &
-                          progress_seconds=0.0_wp)
+                          progress_seconds=0.0_wp, inlets=inlets)
     end if
     result%bounded = result%series%outcome == OUTCOME_DURATION
     if (result%series%n >= 2) then

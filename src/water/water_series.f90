@@ -9,6 +9,7 @@ module water_series
   use numerics_ode, only: ode_stats_t
   use water_streamline, only: streamline_t, water_point_t, water_rates_t, water_point_rates
   use water_boundaries, only: water_edges
+  use water_inlet, only: water_inlet_t
   implicit none (type, external)
   private
   public :: water_series_t, water_station_t, allocate_series, record_sample, values_per_sample
@@ -18,7 +19,7 @@ module water_series
   integer, parameter :: OUTCOME_END = 1, OUTCOME_DURATION = 2, OUTCOME_STALL = 3, OUTCOME_TURN = 4, &
                         OUTCOME_CRITICAL = 5, OUTCOME_ERROR = 6, OUTCOME_LIFT = 7, OUTCOME_SAFETY_BOUND = 8
   !> Numbers of one sample of water_series_t (its arrays), for the memory bound
-  integer, parameter :: values_per_sample = 64
+  integer, parameter :: values_per_sample = 65
 
   type :: water_station_t
     real(wp) :: arc_length = 0, u = 0, time = 0, v = 0, speed = 0, height = 0, width = 0
@@ -29,6 +30,7 @@ module water_series
   !> The water's samples; grown as the run goes (base_series).
   type, extends(growable_series_t) :: water_series_t
     real(wp), allocatable :: time(:), u(:), v(:), du(:), dv(:), arc_length(:)
+    real(wp), allocatable :: flow(:)           ! m^3/s, the flow rate at the sample (inlets upstream added)
     real(wp), allocatable :: position(:, :), velocity(:, :)
     real(wp), allocatable :: speed(:), height(:), width(:), area(:), radius(:), beta(:), alpha(:)
     real(wp), allocatable :: normal_force(:), friction_force(:), curvature(:), froude(:)
@@ -52,7 +54,8 @@ module water_series
     integer :: outcome = OUTCOME_ERROR
     character(len=:), allocatable :: message
     type(ode_stats_t) :: stats
-    real(wp) :: flow_rate = 0          ! m^3/s
+    real(wp) :: flow_rate = 0          ! m^3/s, at the start (the inlets there added)
+    type(water_inlet_t), allocatable :: inlets(:)   ! the inlets and when they joined
     real(wp) :: time_bound = 0         ! s, the bound the run had (the caller's or the safety bound)
     real(wp) :: cpu = 0                ! s, process CPU time of the run (driver)
   end type water_series_t
@@ -83,7 +86,7 @@ contains
     type(water_series_t), intent(inout) :: s
     integer, intent(in) :: n
     call resize(s%time, n); call resize(s%u, n); call resize(s%v, n); call resize(s%du, n)
-    call resize(s%dv, n); call resize(s%arc_length, n); call resize(s%position, 3, n)
+    call resize(s%dv, n); call resize(s%arc_length, n); call resize(s%flow, n); call resize(s%position, 3, n)
     call resize(s%velocity, 3, n); call resize(s%speed, n); call resize(s%height, n); call resize(s%width, n)
     call resize(s%area, n); call resize(s%radius, n); call resize(s%beta, n); call resize(s%alpha, n)
     call resize(s%normal_force, n); call resize(s%friction_force, n); call resize(s%curvature, n)
@@ -99,10 +102,11 @@ contains
     s%capacity = n
   end subroutine allocate_series
 
-  !> Appends the sample (t, y) with the water point q (from water_point at y).
-  subroutine record_sample(model, t, y, q, s, with_edges, status)
+  !> Appends the sample (t, y) of flow rate `flow` with the water point q
+  !> (from water_point at y).
+  subroutine record_sample(model, t, y, flow, q, s, with_edges, status)
     type(streamline_t), intent(in) :: model
-    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(in) :: t, y(:), flow
     type(water_point_t), intent(in) :: q
     type(water_series_t), intent(inout) :: s
     logical, intent(in) :: with_edges
@@ -126,6 +130,7 @@ contains
     s%n = s%n + 1
     i = s%n
     s%time(i) = t
+    s%flow(i) = flow
     s%u(i) = y(1); s%v(i) = y(2); s%du(i) = y(3); s%dv(i) = y(4)
     s%height(i) = y(5)
     s%friction_work(i) = y(6); s%correction_work(i) = y(7)

@@ -8,10 +8,11 @@ module water_start
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_point_t
   use water_section, only: circle_segment, circle_height_for_area, profile_water
+  use water_channel, only: channel_t
   use water_streamline, only: streamline_t, velocity_from_angle
   implicit none (type, external)
   private
-  public :: water_start_t, water_initial_state
+  public :: water_start_t, water_initial_state, start_state
   public :: START_EDGES, START_HEIGHT, START_SPEED, START_HEIGHT_SPEED
 
   integer, parameter :: START_EDGES = 1, START_HEIGHT = 2, START_SPEED = 3, START_HEIGHT_SPEED = 4
@@ -36,11 +37,24 @@ contains
     type(water_start_t), intent(in) :: start
     real(wp), intent(out) :: y0(7)
     type(status_t), intent(out) :: status
+    call start_state(model%channel, model%flow_rate, start, y0, status)
+  end subroutine water_initial_state
+
+  !> The state [u, v, u', v', h, 0, 0] of water of flow rate `flow_rate`
+  !> entering the channel as `start` says (START_HEIGHT_SPEED sets
+  !> flow_rate = A w; the other modes read it): the start of a run, and the
+  !> state after an inlet joined (water_inlet, START_SPEED).
+  subroutine start_state(channel, flow_rate, start, y0, status)
+    class(channel_t), intent(in) :: channel
+    real(wp), intent(inout) :: flow_rate
+    type(water_start_t), intent(in) :: start
+    real(wp), intent(out) :: y0(7)
+    type(status_t), intent(out) :: status
     type(surface_point_t) :: p
     real(wp) :: r, radius, area, width, alpha, h, w, v0, du, dv, vl, vr, u_min, u_max
 
     y0 = 0
-    call model%channel%u_range(u_min, u_max)
+    call channel%u_range(u_min, u_max)
     if (start%u0 < u_min .or. start%u0 >= u_max) then
       call set_status(status, STATUS_INVALID_INPUT, 'the start u0 is outside the slide')
       return
@@ -49,11 +63,11 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'the start flow angle beta must be within +-90 degrees')
       return
     end if
-    if (start%mode /= START_HEIGHT_SPEED .and. .not. model%flow_rate > 0) then
+    if (start%mode /= START_HEIGHT_SPEED .and. .not. flow_rate > 0) then
       call set_status(status, STATUS_INVALID_INPUT, 'the flow rate Q must be > 0')
       return
     end if
-    r = model%channel%circle_radius(start%u0)
+    r = channel%circle_radius(start%u0)
     radius = r*(1 + tan(start%beta)**2)     ! (4.15)
     v0 = start%v0
     select case (start%mode)
@@ -69,10 +83,10 @@ contains
       else
         call edge_height(h, status)
         if (.not. status%ok()) return
-        call profile_water(model%channel, start%u0, v0, h, area, width, vl, vr, status)
+        call profile_water(channel, start%u0, v0, h, area, width, vl, vr, status)
         if (.not. status%ok()) return
       end if
-      w = model%flow_rate/area
+      w = flow_rate/area
     case (START_HEIGHT, START_HEIGHT_SPEED)
       h = start%height
       if (.not. h > 0 .or. (r > 0 .and. h >= 2*radius)) then
@@ -82,21 +96,21 @@ contains
       if (r > 0) then
         call circle_segment(h, radius, area, width, alpha)
       else
-        call profile_water(model%channel, start%u0, v0, h, area, width, vl, vr, status)
+        call profile_water(channel, start%u0, v0, h, area, width, vl, vr, status)
         if (.not. status%ok()) return
       end if
       if (start%mode == START_HEIGHT) then
-        w = model%flow_rate/area
+        w = flow_rate/area
       else
         w = start%speed
-        model%flow_rate = area*w
+        flow_rate = area*w
       end if
     case (START_SPEED)
       w = start%speed
       if (r > 0) then
-        call circle_height_for_area(model%flow_rate/w, radius, h, status)
+        call circle_height_for_area(flow_rate/w, radius, h, status)
       else
-        call profile_height(model%flow_rate/w, h, status)
+        call profile_height(flow_rate/w, h, status)
       end if
       if (.not. status%ok()) then
         call prefix_status(status, 'start height from Q/w')
@@ -110,7 +124,7 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'the start speed must be > 0')
       return
     end if
-    call model%channel%evaluate(start%u0, v0, 2, p, status)
+    call channel%evaluate(start%u0, v0, 2, p, status)
     if (.not. status%ok()) return
     call velocity_from_angle(p, w, start%beta, du, dv, status)
     if (.not. status%ok()) return
@@ -125,9 +139,9 @@ contains
       type(status_t), intent(out) :: st
       type(surface_point_t) :: p0, pl, pr
       real(wp) :: n(3)
-      call model%channel%evaluate(start%u0, v0, 1, p0, st)
-      if (st%ok()) call model%channel%evaluate(start%u0, start%v_left, 0, pl, st)
-      if (st%ok()) call model%channel%evaluate(start%u0, start%v_right, 0, pr, st)
+      call channel%evaluate(start%u0, v0, 1, p0, st)
+      if (st%ok()) call channel%evaluate(start%u0, start%v_left, 0, pl, st)
+      if (st%ok()) call channel%evaluate(start%u0, start%v_right, 0, pr, st)
       if (.not. st%ok()) return
       n = [p0%ru(2)*p0%rv(3) - p0%ru(3)*p0%rv(2), p0%ru(3)*p0%rv(1) - p0%ru(1)*p0%rv(3), &
            p0%ru(1)*p0%rv(2) - p0%ru(2)*p0%rv(1)]
@@ -145,14 +159,14 @@ contains
       integer :: it
       lo = 0; hi = 1e-3_wp
       do it = 1, 60
-        call profile_water(model%channel, start%u0, v0, hi, a, b, l, rr, st)
+        call profile_water(channel, start%u0, v0, hi, a, b, l, rr, st)
         if (.not. st%ok()) return
         if (a >= target) exit
         lo = hi; hi = 2*hi
       end do
       do it = 1, 200
         hh = (lo + hi)/2
-        call profile_water(model%channel, start%u0, v0, hh, a, b, l, rr, st)
+        call profile_water(channel, start%u0, v0, hh, a, b, l, rr, st)
         if (.not. st%ok()) return
         if (a > target) then
           hi = hh
@@ -162,5 +176,5 @@ contains
         if (hi - lo <= 1e-15_wp*hi) exit
       end do
     end subroutine profile_height
-  end subroutine water_initial_state
+  end subroutine start_state
 end module water_start

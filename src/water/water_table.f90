@@ -23,6 +23,7 @@ module water_table
   type :: water_table_t
     real(wp), allocatable :: arc_length(:), u(:), time(:), v(:), speed(:), height(:), width(:), &
       beta(:), v_left(:), v_right(:)
+    real(wp), allocatable :: flow_rate(:)    ! m^3/s (the inlets upstream added)
     integer, allocatable :: edge_solved(:)   ! 1: edges from (4.25-4.26); 0: circle estimate
   end type water_table_t
 
@@ -113,12 +114,14 @@ contains
     if (.not. status%ok()) return
     m = size(s)
     allocate (table%u(m), table%time(m), table%v(m), table%speed(m), table%height(m), &
-              table%width(m), table%beta(m), table%v_left(m), table%v_right(m), table%edge_solved(m))
+              table%width(m), table%beta(m), table%v_left(m), table%v_right(m), table%edge_solved(m), &
+              table%flow_rate(m))
     table%arc_length = s
     do j = 1, m
       call field%at_arc_length(s(j), w)
       table%u(j) = w%u; table%time(j) = w%time; table%v(j) = w%v; table%speed(j) = w%speed
       table%height(j) = w%height; table%width(j) = w%width; table%beta(j) = w%beta
+      table%flow_rate(j) = w%flow_rate
       if (w%edges%left_location == WATER_INSIDE .and. w%edges%right_location == WATER_INSIDE) then
         table%v_left(j) = w%edges%v_left; table%v_right(j) = w%edges%v_right
         table%edge_solved(j) = 1
