@@ -1,5 +1,5 @@
 !> The declarations of the ride's groups (&run, &solver and &water_solver,
-!> &evaluation, &channel, &water, &rider, &sweep): each variable once
+!> &evaluation, &channel, &water, &inlet, &rider, &sweep): each variable once
 !> (io_declaration). The rider's start and body and the water's inflow and
 !> friction are shared by &sweep, which varies them: one declaration each,
 !> so their bounds cannot disagree.
@@ -141,6 +141,16 @@ module io_declarations_ride
       meaning='spacing of the water table over arc length'), &
     declaration_t(groups='water', name='edges', kind=VALUE_LOGICAL, default='.true.', &
       meaning='solve the water edges at every output (else only at the table''s rows)'), &
+    ! ---- &inlet (repeated: one group per inlet downstream of, or at, the &water start)
+    declaration_t(groups='inlet', name='arc_length', unit='m', default='none', low=0.0_wp, high=1e6_wp, &
+      meaning='where the inlet''s water joins: centerline arc length from the slide''s start, from the '// &
+      '&water start to before the end (required)'), &
+    declaration_t(groups='inlet', name='flow_rate', unit='m^3/s', default='none', low=1e-6_wp, high=1.0_wp, &
+      meaning='flow rate the inlet adds (required)'), &
+    declaration_t(groups='inlet', name='speed', unit='m/s', default='1', low=1e-3_wp, high=100.0_wp, &
+      meaning='speed of the inlet''s water along the slide surface as it joins'), &
+    declaration_t(groups='inlet', name='beta', unit='rad', default='0', low=-1.5_wp, high=1.5_wp, &
+      meaning='angle of the inlet''s water to the centerline in the surface (+ towards +v), as `beta0`'), &
     ! ---- &sweep (besides the shared variables above, each a list or NAME_range)
     declaration_t(groups='sweep', name='combine', kind=VALUE_WORDS, default='''cross''', &
       choices='cross paired', meaning='cross: every combination; paired: all swept variables element by element'), &

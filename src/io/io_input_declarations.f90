@@ -20,12 +20,12 @@ module io_input_declarations
   !> The groups of the reference, in its order (&water_solver has the
   !> declarations of &solver, and is named in its rows).
   character(len=*), parameter :: reference_groups(*) = [character(len=16) :: 'run', 'solver', 'evaluation', &
-    'channel', 'water', 'rider', 'sweep', 'identify_rider', 'identify_water', 'optimize', 'surface', 'shape', &
+    'channel', 'water', 'inlet', 'rider', 'sweep', 'identify_rider', 'identify_water', 'optimize', 'surface', 'shape', &
     'geometry', 'centerline', 'slide_elements', 'cross_section', 'blended', 'bspline', 'grid', 'point_mass', &
     'pendulum', 'fourbar', 'sled', 'contact_model', 'body', 'contact']
   !> The heading of each (a group read differently by two scenarios names both).
   character(len=*), parameter :: reference_titles(size(reference_groups)) = [character(len=40) :: '&run', &
-    '&solver', '&evaluation', '&channel', '&water', '&rider', '&sweep', '&identify (scenario identify_rider)', &
+    '&solver', '&evaluation', '&channel', '&water', '&inlet', '&rider', '&sweep', '&identify (scenario identify_rider)', &
     '&identify (scenario identify_water)', '&optimize', '&surface', '&shape', '&geometry', '&centerline', &
     '&slide_elements', '&cross_section', '&blended', '&bspline', '&grid', '&point_mass', &
     '&pendulum', '&fourbar', '&sled', '&contact_model', '&body', '&contact']
@@ -33,7 +33,9 @@ module io_input_declarations
   character(len=*), parameter :: reference_notes(size(reference_groups)) = [character(len=240) :: '', &
     'The ride''s `&water_solver` (the integration of its water) has the same variables. Some scenarios '// &
     'start from defaults of their own (the ride, the water, optimize: their pages).', '', &
-    'A closed-form tube instead of `&surface` (docs/water.md).', '', '', &
+    'A closed-form tube instead of `&surface` (docs/water.md).', '', &
+    'One group per inlet: more water joining along the slide (docs/water.md, "Several inlets"), in order of '// &
+    '`arc_length`; the water and the ride.', '', &
     'Each swept variable is a list (`mass = 50, 70, 90`) or a range (`mass_range = 50, 90, 5`: first, '// &
     'last, count); one not swept keeps its `&rider` / `&water` value (docs/sweep.md).', &
     'The rider''s friction from measured wall angles and speeds (docs/design.md).', &

@@ -7,11 +7,11 @@ module io_water_config
   use base_text, only: format_integer
   use base_constants, only: pi
   use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
-  use io_input, only: input_text_t, group_reader_t, open_group, format_real
+  use io_input, only: input_text_t, group_reader_t, open_group, format_real, group_count
   use geometry_tube, only: tube_surface_t, new_straight_tube, new_helix_tube, new_s_bend_tube
   use water_streamline, only: CORRECTION_FULL, CORRECTION_NO_RADIUS, CORRECTION_OFF
   use water_flow, only: START_EDGES, START_HEIGHT, START_SPEED, START_HEIGHT_SPEED
-  use water_run, only: water_description_t
+  use water_run, only: water_description_t, water_inlet_t
   implicit none (type, external)
   private
   public :: read_water_config, read_channel_config, max_stations
@@ -151,6 +151,38 @@ contains
     case ('off'); config%correction = CORRECTION_OFF
     case default; config%correction = CORRECTION_FULL
     end select
+    call read_inlets(input, config, status)
 
   end subroutine read_water_config
+
+  !> Every &inlet, in order along the slide (their place on the slide is
+  !> checked with the slide: scenarios_water).
+  subroutine read_inlets(input, config, status)
+    type(input_text_t), intent(in) :: input
+    type(water_description_t), intent(inout) :: config
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    integer :: k
+    if (.not. status%ok()) return
+    allocate (config%inlets(group_count(input, 'inlet')))
+    do k = 1, size(config%inlets)
+      call open_group(input, 'inlet', r, status, occurrence=k)
+      call r%get('arc_length', config%inlets(k)%arc_length, status)
+      call r%get('flow_rate', config%inlets(k)%flow_rate, status)
+      call r%get('speed', config%inlets(k)%speed, status)
+      call r%get('beta', config%inlets(k)%beta, status)
+      if (.not. status%ok()) return
+      if (.not. r%has('arc_length')) then
+        call r%invalid('arc_length', 'none', 'every &inlet needs its place: arc_length (m)', status)
+      else if (.not. r%has('flow_rate')) then
+        call r%invalid('flow_rate', 'none', 'every &inlet needs its flow rate (m^3/s)', status)
+      else if (k > 1) then
+        if (.not. config%inlets(k)%arc_length >= config%inlets(k - 1)%arc_length) &
+          call r%invalid('arc_length', format_real(config%inlets(k)%arc_length), 'the &inlet groups must follow '// &
+                         'the slide: at or after the previous one''s '// &
+                         format_real(config%inlets(k - 1)%arc_length)//' m', status)
+      end if
+      if (.not. status%ok()) return
+    end do
+  end subroutine read_inlets
 end module io_water_config

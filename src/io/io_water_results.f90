@@ -8,7 +8,7 @@ module io_water_results
   use base_status, only: status_t
   use water_streamline, only: CORRECTION_FULL, CORRECTION_NO_RADIUS
   use water_flow, only: outcome_name
-  use water_run, only: water_description_t, water_result_t
+  use water_run, only: water_description_t, water_result_t, water_inlet_t
   use io_hdf5, only: result_file_t, units_per_second
   implicit none (type, external)
   private
@@ -29,9 +29,12 @@ contains
     character(len=16) :: mode
     character(len=:), allocatable :: uu, vu   ! units of u and v of this slide
     real(wp), allocatable :: col(:)   ! a contiguous station column
+    logical :: with_inlets
 
     associate (s => result%series, table => result%table)
       n = s%n
+      with_inlets = .false.
+      if (allocated(s%inlets)) with_inlets = size(s%inlets) > 0
       call description%slide%parameter_units(uu, vu)
       call file%write_vector(g//'time', s%time(:n), 's', 'time', status)
       call file%write_vector(g//'arc_length', s%arc_length(:n), 'm', &
@@ -64,6 +67,13 @@ contains
                              'work done by friction since the start (<= 0)', status)
       call file%write_vector(g//'correction_work', s%correction_work(:n), 'J', &
                              'work done by the Saint-Venant term since the start', status)
+      ! with inlets: the flow rate along the slide and the inlets (none of
+      ! these in a file of one inlet, whose layout stays as it was)
+      if (with_inlets) then
+        call file%write_vector(g//'flow_rate', s%flow(:n), 'm^3/s', &
+                               'flow rate Q at the sample: the start''s and the inlets'' joined upstream', status)
+        call write_inlets(file, s%inlets, status)
+      end if
       ! the edges at the samples only where they were solved there (edges = .true.)
       if (s%edges) then
         call file%write_vector(g//'left_edge_u', s%left_edge(1, :n), uu, &
@@ -103,6 +113,8 @@ contains
         call file%write_vector(t//'beta', table%beta, 'rad', 'flow angle to the centerline', status)
         call file%write_vector(t//'v_left', table%v_left, vu, 'v of the left edge', status)
         call file%write_vector(t//'v_right', table%v_right, vu, 'v of the right edge', status)
+        if (with_inlets) call file%write_vector(t//'flow_rate', table%flow_rate, 'm^3/s', &
+                                                       'flow rate Q (the inlets upstream added)', status)
         call file%write_integers(t//'edge_solved', table%edge_solved, '1', &
                                  '1: edges solved (4.25-4.26) at the row or interpolated between solved samples; '// &
                                  '0: circle estimate (an edge beyond the slide''s end)', status)
@@ -155,4 +167,25 @@ contains
       end if
     end associate
   end subroutine write_water_results
+  !> /water/inlets: each inlet as given and whether and when it joined.
+  subroutine write_inlets(file, inlets, status)
+    type(result_file_t), intent(inout) :: file
+    type(water_inlet_t), intent(in) :: inlets(:)
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: g = water_group//'/inlets/'
+    integer :: i
+    call file%write_vector(g//'arc_length', inlets%arc_length, 'm', &
+                           'centerline arc length where the inlet''s water joins (input)', status)
+    call file%write_vector(g//'flow_rate', inlets%flow_rate, 'm^3/s', 'flow rate the inlet adds (input)', status)
+    call file%write_vector(g//'speed', inlets%speed, 'm/s', 'speed of the inlet''s water along the surface (input)', &
+                           status)
+    call file%write_vector(g//'beta', inlets%beta, 'rad', &
+                           'angle of the inlet''s water to the centerline, + towards +v (input)', status)
+    call file%write_integers(g//'joined', [(merge(1, 0, inlets(i)%joined), i = 1, size(inlets))], '1', &
+                             '1 if the water reached the inlet and took its water', status)
+    call file%write_vector(g//'time', merge(inlets%time, 0.0_wp, inlets%joined), 's', &
+                           'time the water passed the inlet (0 where it did not reach it)', status)
+    call file%make_scale(g//'arc_length', status)
+    call file%attach_scale(g//'arc_length', g, status)
+  end subroutine write_inlets
 end module io_water_results

@@ -39,8 +39,8 @@ module scenarios_ride
   public :: run_ride_scenario, read_ride_description, ride_groups, check_sphere_radii, read_limit_gate, &
     limits_exceeded_status, refuse_start
 
-  character(len=*), parameter :: ride_groups(13) = [character(len=14) :: 'run', 'solver', 'water_solver', &
-    'surface', 'water', 'rider', 'evaluation', geometry_groups]
+  character(len=*), parameter :: ride_groups(14) = [character(len=14) :: 'run', 'solver', 'water_solver', &
+    'surface', 'water', 'inlet', 'rider', 'evaluation', geometry_groups]
   !> numbers stored per output time of the ride (ride_series_t), for the memory bound
   integer, parameter :: values_per_output = 120
   !> Without &solver duration the ride runs until it ends (the slide's end,
@@ -120,7 +120,7 @@ contains
     real(wp) :: gravity(3)   ! m/s^2
 
     fail_on_limit = .false.
-    call check_known_groups(input, ride_groups, status)
+    call check_known_groups(input, ride_groups, status, repeatable=[character(len=5) :: 'inlet'])
     defaults%options = description%options%ode
     defaults%output_step = description%options%output_step
     if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults)

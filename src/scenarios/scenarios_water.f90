@@ -14,6 +14,7 @@ module scenarios_water
   use water_streamline, only: streamline_t
   use water_flow, only: water_series_t, outcome_name, START_EDGES
   use water_run, only: water_description_t, water_result_t, new_streamline, compute_water
+  use water_inlet, only: start_tolerance
   use io_input, only: input_text_t, check_known_groups, group_present, invalid, format_real, mark_input_failure, &
     where_given
   use io_run_config, only: run_config_t
@@ -35,8 +36,8 @@ module scenarios_water
   private
   public :: run_water, build_water, water_groups, write_slide_grid
 
-  character(len=*), parameter :: water_groups(11) = [character(len=14) :: 'run', 'solver', 'surface', &
-    'channel', 'water', geometry_groups]
+  character(len=*), parameter :: water_groups(12) = [character(len=14) :: 'run', 'solver', 'surface', &
+    'channel', 'water', 'inlet', geometry_groups]
   !> numbers stored per output time (water_series_t)
   integer, parameter :: values_per_output = 72
   !> most rows of the table over arc length
@@ -60,7 +61,7 @@ contains
     type(tube_surface_t) :: tube
     type(channel_t) :: channel
     type(streamline_t) :: model
-    real(wp) :: u_min, u_max, v_min, v_max, total, start_speed, y0(7)
+    real(wp) :: u_min, u_max, v_min, v_max, total, start_speed, y0(7), start_arc
     type(surface_point_t) :: start_point
     real(wp), parameter :: plausible_speed = 30   ! m/s
     integer :: i
@@ -68,7 +69,7 @@ contains
     if (present(stage)) then
       call read_solver_config(input, solver, status, group='water_solver')
     else
-      call check_known_groups(input, water_groups, status)
+      call check_known_groups(input, water_groups, status, repeatable=[character(len=5) :: 'inlet'])
       if (status%ok()) call read_solver_config(input, solver, status)
     end if
     if (.not. status%ok()) return
@@ -152,6 +153,19 @@ contains
                      'stations must lie on the slide (arc length <= '//format_real(total)//' m)', status)
         return
       end if
+    end do
+    ! the inlets on the slide, from the start to before the end
+    start_arc = channel%arc_length(description%start%u0)
+    do i = 1, size(description%inlets)
+      associate (at => description%inlets(i)%arc_length)
+        if (at < start_arc - start_tolerance .or. .not. at < total) then
+          call set_status(status, STATUS_INVALID_INPUT, where_given(input, 'inlet', 'arc_length', i)// &
+                          ': &inlet: arc_length = '//format_real(at)//' is not allowed: an inlet must lie on '// &
+                          'the slide from the &water start ('//format_short(start_arc)//' m) to before its end ('// &
+                          format_short(total)//' m of arc length)')
+          return
+        end if
+      end associate
     end do
     ! the model and its start: what the run will check again
     call new_streamline(description, model, y0, status)
@@ -311,6 +325,14 @@ contains
     if (allocated(description%slide_name)) call summary%add_text('slide', 'slide', description%slide_name)
     call summary%add('slide_length', 'slide centreline length', description%slide%length(), 'm')
     call summary%add('flow_rate', 'flow rate', s%flow_rate, declared_unit('water', 'flow_rate'), 'l/s', 1000.0_wp)
+    if (allocated(s%inlets)) then
+      if (size(s%inlets) > 0) then
+        call summary%add_count('inlets_joined', 'inlets joined', count(s%inlets%joined), &
+                               'of '//format_integer(size(s%inlets)))
+        call summary%add('final_flow_rate', 'flow rate at the end', s%flow(n), declared_unit('water', 'flow_rate'), &
+                         'l/s', 1000.0_wp)
+      end if
+    end if
     call summary%add('flow_time', 'flow time', s%time(n), 's')
     call summary%add('slide_length_covered', 'slide length covered', s%arc_length(n) - s%arc_length(1), 'm')
     call summary%add_text('outcome', 'stopped at', outcome_name(s%outcome))

@@ -1,7 +1,8 @@
 """Plots a water result (scenario water): the unrolled slide (the angle of the
 water's middle and of its edges over the centerline arc length, as thesis
 fig. 4.11: 0 deg is the bottom, positive to the left) with the stations;
-speed and water height over arc length; the water band drawn on the slide
+speed and water height over arc length (with several inlets, the flow
+rate and where each inlet joined); the water band drawn on the slide
 surface in 3-D.
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
@@ -53,6 +54,15 @@ def draw(r, plt, args):
     ax2b.plot(s, height * 1000, "g-")
     ax2b.set_ylabel("water height [mm]", color="g")
     ax2.set_title("speed and height")
+    if "/water/inlets/arc_length" in r:   # several inlets: where each joined, and the flow rate
+        joined = r["/water/inlets/joined"].values == 1
+        for at in r["/water/inlets/arc_length"].values[joined]:
+            ax2.axvline(at, color="k", ls=":", lw=1)
+        ax2c = ax2.twinx()
+        ax2c.spines["right"].set_position(("axes", 1.12))
+        ax2c.step(s, r["/water/flow_rate"].values * 1000, "k-", where="post", lw=1)
+        ax2c.set_ylabel("flow rate [l/s] (inlets dotted)")
+        ax2.set_title("speed, height and flow rate")
 
     # the whole slide, and a close-up 6 m around where the water climbs highest
     u = r["/water/u"].values
