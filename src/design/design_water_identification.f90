@@ -175,6 +175,14 @@ contains
     end associate
     water = setup%water
     water%stations = s
+    ! its runs integrate one stream (simulate_water alone): inlets would be left out
+    if (allocated(water%inlets)) then
+      if (size(water%inlets) > 0) then
+        call set_status(status, STATUS_INVALID_INPUT, 'water identification: the water has inlets '// &
+                        '(water%inlets); the identification runs water from the start alone')
+        return
+      end if
+    end if
     call new_streamline(water, setup%model, setup%y0, status)
     if (.not. status%ok()) then
       call prefix_status(status, 'water identification')
