@@ -20,7 +20,7 @@ program design_bench
   use rider_ride, only: ride_options_t
   use design_ride_evaluation, only: ride_limit_t
   use water_run, only: water_description_t, water_result_t, compute_water
-  use rider_model, only: N_CONTACTS
+  use rider_model, only: N_CONTACTS, set_rider_mu
   use design_rider_identification, only: rider_identification_t, rider_fit_options_t, rider_fit_t, &
     rider_stations_t, new_rider_identification, simulate_rider, fit_rider_friction
   use design_geometry_optimization, only: optimization_setup_t, optimization_result_t, table_4_12_design, &
@@ -134,7 +134,7 @@ contains
     if (status%ok()) call compute_water(description, flow, status)
     if (.not. status%ok()) error stop 'demo ride input'
     setup%slide = description%slide
-    setup%params%mu = mu_true
+    call set_rider_mu(setup%params, mu_true)
     setup%with_water = .true.
     setup%water = flow%field
     total = setup%slide%length()

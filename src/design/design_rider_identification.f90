@@ -30,7 +30,8 @@ module design_rider_identification
   use base_text, only: format_short, format_integer
   use geometry_slide_query, only: slide_surface_t
   use water_field, only: water_field_t
-  use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS
+  use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, rider_friction_kind, &
+    rider_coulomb_mu, set_rider_mu
   use rider_ride, only: ride_options_t
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   use numerics_least_squares, only: least_squares_problem_t, least_squares_options_t, &
@@ -54,7 +55,7 @@ module design_rider_identification
   !> Everything an evaluation needs; read-only during a fit.
   type :: rider_identification_t
     class(slide_surface_t), allocatable :: slide   !< the slide query (geometry_slide_query)
-    type(rider_params_t) :: params          !< the rider and its start; params%mu is the fitted mu_D
+    type(rider_params_t) :: params          !< the rider and its start; its Coulomb mu is the fitted mu_D
     type(ride_options_t) :: options         !< integration (thesis B.7); stations set here
     logical :: with_water = .false.         !< the water's drag (params%drag) in `water`
     type(water_field_t) :: water
@@ -176,6 +177,8 @@ contains
     type(ride_description_t) :: description
     type(ride_job_result_t) :: job
     integer :: i, k, n, m
+    real(wp) :: mu
+    logical :: coulomb
 
     n = size(setup%data%station_arc_length)
     m = size(setup%data%segment_speed)
@@ -197,7 +200,12 @@ contains
         format_short(setup%options%stations(findloc(job%ride%station_record, 0, dim=1)))//' m: '//job%ride%outcome)
     end if
     if (.not. status%ok()) then
-      call prefix_status(status, 'ride with mu_D = '//format_short(params%mu))
+      call rider_coulomb_mu(params, mu, coulomb)
+      if (coulomb) then
+        call prefix_status(status, 'ride with mu_D = '//format_short(mu))
+      else
+        call prefix_status(status, 'ride with friction '''//rider_friction_kind(params)//'''')
+      end if
       if (status%code == STATUS_INVALID_INPUT) status%code = STATUS_DOMAIN
       return
     end if
@@ -243,7 +251,7 @@ contains
     integer :: offset, g
     r = 0
     params = self%setup%params
-    params%mu = p(1)
+    call set_rider_mu(params, p(1))
     call simulate_rider(self%setup, params, simulated, status)
     if (.not. status%ok()) return
     call rider_cost_groups(self%setup, self%options, simulated, groups)
@@ -295,8 +303,16 @@ contains
     type(status_t), intent(out) :: status
     type(rider_fit_problem_t) :: problem
     type(least_squares_result_t) :: result
-    real(wp) :: p(1)
+    real(wp) :: p(1), start
+    logical :: coulomb
 
+    call rider_coulomb_mu(setup%params, start, coulomb)
+    if (.not. coulomb) then
+      call set_status(status, STATUS_INVALID_INPUT, 'rider friction identification: it fits the Coulomb mu_D '// &
+                      'at the three contacts; the rider''s friction law is '''//rider_friction_kind(setup%params)// &
+                      ''' (give coulomb or none)')
+      return
+    end if
     if (.not. (options%lower >= 0 .and. options%upper > options%lower .and. mu >= options%lower .and. &
                mu <= options%upper)) then
       call set_status(status, STATUS_INVALID_INPUT, 'rider friction identification: need 0 <= lower < upper '// &
@@ -337,7 +353,7 @@ contains
         fit%simulated = problem%best
       else
         params = setup%params
-        params%mu = fit%mu
+        call set_rider_mu(params, fit%mu)
         call simulate_rider(setup, params, fit%simulated, status)
         fit%evaluations = fit%evaluations + 1
         if (.not. status%ok()) return

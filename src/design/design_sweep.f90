@@ -18,7 +18,7 @@ module design_sweep
   use base_status, only: status_t
   use base_log, only: log_sink_i
   use rider_body, only: SEX_MALE, SEX_FEMALE
-  use rider_model, only: rider_params_t, N_CONTACTS
+  use rider_model, only: rider_params_t, N_CONTACTS, set_rider_mu
   use rider_ride, only: ride_options_t, ride_result_t
   use water_run, only: water_description_t, water_result_t, compute_water
   use design_ride_evaluation, only: ride_limit_t, felt_acceleration_units
@@ -193,7 +193,7 @@ contains
       rider%body%sex = merge(SEX_MALE, SEX_FEMALE, nint(v(V_SEX)) == SEX_MALE)
       rider%body%mass = v(V_MASS)
       rider%body%height = v(V_HEIGHT)
-      rider%mu = v(V_MU)
+      call set_rider_mu(rider, v(V_MU))
       rider%u0 = v(V_U0)
       rider%v0 = v(V_V0)
       rider%heading0 = v(V_HEADING)*pi/180

@@ -44,7 +44,7 @@ module io_declarations_design
       unit='m/s', default='none', low=0.0_wp, high=100.0_wp, open_low=.true., &
       meaning='the speed measured over it'), &
     ! ---- twin experiments: the true value of what is fitted
-    declaration_t(groups='identify_rider', name='twin_mu', range_of='rider mu', default='none', &
+    declaration_t(groups='identify_rider', name='twin_mu', range_of='sweep mu', default='none', &
       meaning='a twin experiment: the angles and speeds are simulated with this mu_D (noise-free); angles, '// &
       'speeds and files are refused then'), &
     declaration_t(groups='identify_water', name='twin_f', range_of='water f1', shape='3: f1, f2, f3', &
@@ -59,9 +59,9 @@ module io_declarations_design
       open_low=.true., meaning='k2 of (4.43)'), &
     declaration_t(groups='identify_water', name='k1', unit='rad s/m', default='1', low=0.0_wp, high=100.0_wp, &
       open_low=.true., meaning='k1 of (4.34)'), &
-    declaration_t(groups='identify_rider', name='lower', range_of='rider mu', default='0', &
+    declaration_t(groups='identify_rider', name='lower', range_of='sweep mu', default='0', &
       meaning='lower bound of mu_D, held exactly'), &
-    declaration_t(groups='identify_rider', name='upper', range_of='rider mu', default='0.11', &
+    declaration_t(groups='identify_rider', name='upper', range_of='sweep mu', default='0.11', &
       meaning='upper bound of mu_D, held exactly, above `lower` (thesis table 4.8)'), &
     declaration_t(groups='identify_water', name='estimate', kind=VALUE_LOGICAL, shape='3: f1, f2, f3', &
       default='.true., .true., .true.', meaning='which of f1, f2, f3 are fitted (the others stay at their start)'), &

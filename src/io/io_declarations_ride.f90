@@ -71,8 +71,10 @@ module io_declarations_ride
       meaning='body height (thesis table 4.10)'), &
     declaration_t(groups='rider', name='com_height', unit='m', default='0.075', low=0.0_wp, high=0.5_wp, &
       open_low=.true., meaning='height of the segments'' centres of mass above the slide'), &
-    declaration_t(groups='rider sweep', name='mu', unit='1', default='0.0724419', low=0.0_wp, high=2.0_wp, &
-      meaning='Coulomb friction of the rider at the three contacts (thesis table 4.8)'), &
+    declaration_t(groups='rider', name='friction', kind=VALUE_WORDS, default='''coulomb''', &
+      meaning='the friction law at the three contacts: none, or a force law of the registry on the slip, its '// &
+      'parameters beside it (docs/inputs.md, "&point_mass"); coulomb''s mu defaults to 0.0724419 here '// &
+      '(thesis table 4.8)'), &
     declaration_t(groups='rider', name='drag', kind=VALUE_LOGICAL, default='.true.', &
       meaning='water drag on the three spheres'), &
     declaration_t(groups='rider', name='drag_radius', shape='3', unit='m', default='0.5, 0.05, 0.5', &
@@ -152,6 +154,9 @@ module io_declarations_ride
     declaration_t(groups='inlet', name='beta', unit='rad', default='0', low=-1.5_wp, high=1.5_wp, &
       meaning='angle of the inlet''s water to the centerline in the surface (+ towards +v), as `beta0`'), &
     ! ---- &sweep (besides the shared variables above, each a list or NAME_range)
+    declaration_t(groups='sweep', name='mu', unit='1', default='0.0724419', low=0.0_wp, high=2.0_wp, &
+      meaning='the rider''s Coulomb friction mu at the three contacts (0: none), with &rider friction = '// &
+      '''coulomb'' or ''none'''), &
     declaration_t(groups='sweep', name='combine', kind=VALUE_WORDS, default='''cross''', &
       choices='cross paired', meaning='cross: every combination; paired: all swept variables element by element'), &
     declaration_t(groups='sweep', name='paired', kind=VALUE_WORDS, shape='at most 12', default='none', &

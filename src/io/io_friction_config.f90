@@ -1,5 +1,5 @@
-!> The friction law of a group, read the same way by &contact, &point_mass
-!> and &sled: `friction` names 'none' or a kind of the force-law registry
+!> The friction law of a group, read the same way by &contact, &point_mass,
+!> &sled and &rider: `friction` names 'none' or a kind of the force-law registry
 !> (kinetostatics_force_law_factory), and the kind's parameters are the
 !> group's variables by their declarations (io_kind_parameters). A group
 !> opens with `friction_law_variables()` added (also=), reads `friction`
@@ -43,12 +43,15 @@ contains
   !> The spec of the law `friction` from the group `r`: its parameters by
   !> their declarations; a required one not given (mu: the law would run
   !> frictionless) and another law's are refused, and with 'none' any.
-  subroutine read_friction_law(r, friction, spec, status, rename)
+  !> `defaults`: the group's own defaults of the laws' parameters (a
+  !> required one given there is not required).
+  subroutine read_friction_law(r, friction, spec, status, rename, defaults)
     type(group_reader_t), intent(in) :: r
     character(len=*), intent(in) :: friction
     type(spec_t), intent(inout) :: spec
     type(status_t), intent(inout) :: status
     character(len=*), intent(in), optional :: rename(:)
+    type(spec_t), intent(in), optional :: defaults
     type(force_law_kind_t), allocatable :: laws(:)
     character(len=variable_length), allocatable :: law_variables(:)
     if (.not. status%ok()) return
@@ -61,7 +64,7 @@ contains
     laws = force_law_kinds()
     associate (law => laws(force_law_kind_index(friction)))
       call read_kind_parameters(r, 'friction', friction, law%parameters, spec, status, rename=rename, &
-                                hint='friction = ''none'' for no friction')
+                                hint='friction = ''none'' for no friction', defaults=defaults)
       call refuse_other_parameters(r, 'friction', friction, law%parameters, law_variables, status, rename=rename)
     end associate
   end subroutine read_friction_law

@@ -35,7 +35,10 @@ module io_input_declarations
     'start from defaults of their own (the ride, the water, optimize: their pages).', '', &
     'A closed-form tube instead of `&surface` (docs/water.md).', '', &
     'One group per inlet: more water joining along the slide (docs/water.md, "Several inlets"), in order of '// &
-    '`arc_length`; the water and the ride.', '', &
+    '`arc_length`; the water and the ride.', &
+    'Besides these, the parameters of the chosen friction law at the three contacts (docs/inputs.md, '// &
+    '"&point_mass"; docs/rider.md): with `''coulomb''`, `mu` (default 0.0724419 here) and '// &
+    '`regularization_speed`.', &
     'Each swept variable is a list (`mass = 50, 70, 90`) or a range (`mass_range = 50, 90, 5`: first, '// &
     'last, count); one not swept keeps its `&rider` / `&water` value (docs/sweep.md).', &
     'The rider''s friction from measured wall angles and speeds (docs/design.md).', &

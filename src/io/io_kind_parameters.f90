@@ -47,14 +47,17 @@ contains
 
   !> Reads into `spec` every parameter of the kind `kind` (chosen by the
   !> variable `selector`) the group gives, checked against its declaration;
-  !> a required one not given is refused (`hint` is added to that message).
-  subroutine read_kind_parameters(r, selector, kind, parameters, spec, status, rename, hint)
+  !> a required one not given is refused (`hint` is added to that message),
+  !> unless the group has a default of its own for it (`defaults`, a spec
+  !> of the same kind: the rider's Coulomb mu_D).
+  subroutine read_kind_parameters(r, selector, kind, parameters, spec, status, rename, hint, defaults)
     type(group_reader_t), intent(in) :: r
     character(len=*), intent(in) :: selector, kind
     type(parameter_t), intent(in) :: parameters(:)
     type(spec_t), intent(inout) :: spec
     type(status_t), intent(inout) :: status
     character(len=*), intent(in), optional :: rename(:), hint
+    type(spec_t), intent(in), optional :: defaults
     type(bounds_t) :: b
     real(wp), allocatable :: x(:)
     character(len=:), allocatable :: variable, extra
@@ -86,7 +89,10 @@ contains
           end if
           if (status%ok()) call spec%set(p%name, x)
           deallocate (x)
-        else if (p%required) then
+        else if (present(defaults)) then
+          if (defaults%kind == kind .and. defaults%has(p%name)) call spec%set(p%name, defaults%vector(p%name))
+        end if
+        if (p%required .and. .not. spec%has(p%name) .and. status%ok()) then
           call r%invalid(variable, 'none (not given)', selector//' = '''//kind//''' needs '//variable//': it '// &
                          b%text()//extra, status)
         end if

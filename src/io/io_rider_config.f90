@@ -1,5 +1,6 @@
 !> &rider: the rider (body, start, friction, drag; the rider layer's own
-!> description, rider_params_t), its stall speed and the limits its ride is
+!> description, rider_params_t; the friction law of the registry, read as
+!> &sled's, io_friction_config), its stall speed and the limits its ride is
 !> judged against (docs/rider.md, "Input"). Everything is checked here, before
 !> any work; what needs the slide (the start lies on it, the spheres fit in
 !> the tube, the heels and back reach it) is checked when the rider is built.
@@ -11,12 +12,15 @@ module io_rider_config
   use base_status, only: status_t
   use io_input, only: input_text_t, group_reader_t, open_group, format_real
   use rider_body, only: SEX_MALE, SEX_FEMALE
-  use rider_model, only: rider_params_t
+  use rider_model, only: rider_params_t, rider_default_mu, rider_coulomb_mu
+  use kinetostatics_force_law_factory, only: law_spec
+  use base_spec, only: spec_t
+  use io_friction_config, only: friction_law_variables, friction_law_names, read_friction_law
   use rider_ride, only: ride_options_t
   use design_ride_evaluation, only: ride_limit_t, new_ride_limit
   implicit none (type, external)
   private
-  public :: read_rider_config, read_ride_gravity, max_limits
+  public :: read_rider_config, read_ride_gravity, require_coulomb_rider, open_rider_group, rider_friction_defaults, max_limits
 
   integer, parameter :: max_limits = 20
 
@@ -35,6 +39,7 @@ contains
     real(wp), intent(in), optional :: gravity(3)   ! m/s^2
     type(group_reader_t) :: r
     character(len=8) :: sex
+    character(len=32) :: friction
     character(len=32) :: quantity(max_limits), unit(max_limits)
     real(wp) :: minimum(max_limits), maximum(max_limits), heading_deg
     logical :: has_quantity(max_limits), has_unit(max_limits), has_min(max_limits), has_max(max_limits)
@@ -43,18 +48,19 @@ contains
     integer :: n, k
 
     sex = 'male'
+    friction = 'coulomb'
     heading_deg = 0
     quantity = ''
     unit = ''
     minimum = 0
     maximum = 0
     associate (p => rider)
-      call open_group(input, 'rider', r, status)
+      call open_rider_group(input, r, status)
       call r%get('sex', sex, status)
       call r%get('mass', p%body%mass, status)
       call r%get('height', p%body%height, status)
       call r%get('com_height', p%body%com_height, status)
-      call r%get('mu', p%mu, status)
+      call r%get('friction', friction, status, choices=friction_law_names())
       call r%get('drag', p%drag, status)
       call r%get('drag_radius', p%drag_radius, status)
       call r%get('water_density', p%water%density, status)
@@ -69,6 +75,10 @@ contains
       call r%get_parts('limit_unit', unit, count_text, status, given=has_unit)
       call r%get_parts('limit_min', minimum, count_text, status, given=has_min)
       call r%get_parts('limit_max', maximum, count_text, status, given=has_max)
+      if (.not. status%ok()) return
+      ! the law at the three contacts, Coulomb's mu the rider's mu_D unless given
+      p%friction%kind = trim(friction)
+      call read_friction_law(r, trim(friction), p%friction, status, defaults=rider_friction_defaults())
       if (.not. status%ok()) return
       if (present(gravity)) p%gravity = gravity
       p%body%sex = merge(SEX_MALE, SEX_FEMALE, sex == 'male')
@@ -112,6 +122,43 @@ contains
     end do
   end subroutine read_rider_config
 
+  !> The rider's own defaults of its friction laws' parameters: Coulomb's mu
+  !> is mu_D (thesis table 4.8).
+  pure function rider_friction_defaults() result(spec)
+    type(spec_t) :: spec
+    spec = law_spec('coulomb', 'mu', rider_default_mu)
+  end function rider_friction_defaults
+
+  !> Opens &rider: its declared variables and the parameters of every
+  !> friction law (io_friction_config).
+  subroutine open_rider_group(input, r, status)
+    type(input_text_t), intent(in) :: input
+    type(group_reader_t), intent(out) :: r
+    type(status_t), intent(inout) :: status
+    call open_group(input, 'rider', r, status, also=friction_law_variables())
+  end subroutine open_rider_group
+
+  !> Refuses a rider friction law other than Coulomb (or 'none', where
+  !> `none_allowed`) for `user`, which varies or fits Coulomb's mu (the
+  !> sweep, identify_rider): `why` says so in the message.
+  subroutine require_coulomb_rider(input, rider, none_allowed, why, status)
+    type(input_text_t), intent(in) :: input
+    type(rider_params_t), intent(in) :: rider
+    logical, intent(in) :: none_allowed
+    character(len=*), intent(in) :: why
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    real(wp) :: mu
+    logical :: coulomb
+    if (.not. status%ok()) return
+    call rider_coulomb_mu(rider, mu, coulomb)
+    if (coulomb .and. (none_allowed .or. rider%friction%kind == 'coulomb')) return
+    call open_rider_group(input, r, status)
+    if (.not. status%ok()) return
+    call r%invalid('friction', r%written('friction'), why//'; allowed: '// &
+                   merge('''coulomb'', ''none''', '''coulomb''        ', none_allowed), status)
+  end subroutine require_coulomb_rider
+
   !> The one gravity of a run with water and a rider (the ride, the sweep,
   !> identify_rider): &water and &rider share the variable (one
   !> declaration); given in one group it holds for both the water and the
@@ -126,7 +173,7 @@ contains
     water_gravity = gravity
     rider_gravity = gravity
     call open_group(input, 'water', water, status)
-    call open_group(input, 'rider', rider, status)
+    call open_rider_group(input, rider, status)
     call water%get('gravity', water_gravity, status)
     call rider%get('gravity', rider_gravity, status)
     if (.not. status%ok()) return

@@ -20,10 +20,11 @@
 module io_templates
   use base_kinds, only: wp
   use base_text, only: lower, format_integer
-  use base_spec, only: parameter_t
+  use base_spec, only: parameter_t, spec_t
   use io_declaration, only: declaration_t, bound_text, words_joined, VALUE_REAL, VALUE_INTEGER, VALUE_WORDS
   use io_input_declarations, only: find_declaration, declaration
   use io_point_mass_config, only: point_mass_renamed
+  use io_rider_config, only: rider_friction_defaults
   use io_kind_parameters, only: variable_name
   use io_surface_config, only: surface_kind_names
   use io_friction_config, only: friction_law_names
@@ -355,6 +356,7 @@ contains
     logical, intent(out) :: found
     type(surface_kind_t), allocatable :: surfaces(:)
     type(force_law_kind_t), allocatable :: laws(:)
+    type(spec_t) :: defaults
     character(len=:), allocatable :: table
     integer :: k, pass
     table = s%group
@@ -378,7 +380,7 @@ contains
           call find_parameter(surfaces(k)%parameters, name, d, found)
           if (found) return
         end do
-      case ('point_mass', 'sled', 'contact')
+      case ('point_mass', 'sled', 'contact', 'rider')
         laws = force_law_kinds()
         do k = 1, size(laws)
           if (pass == 1 .and. laws(k)%name /= s%selected_kind) cycle
@@ -386,6 +388,10 @@ contains
             call find_parameter(laws(k)%parameters, name, d, found, point_mass_renamed)
           else
             call find_parameter(laws(k)%parameters, name, d, found)
+          end if
+          if (found .and. s%group == 'rider') then   ! the rider's own defaults (io_rider_config)
+            defaults = rider_friction_defaults()
+            if (defaults%kind == laws(k)%name .and. defaults%has(name)) d%default = number_text(defaults%value(name))
           end if
           if (found) return
         end do

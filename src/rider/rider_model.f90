@@ -27,7 +27,7 @@ module rider_model
   use kinetostatics_mechanism, only: mechanism_t
   use base_spec, only: spec_t
   use kinetostatics_force_law, only: force_law_t, law_place_t
-  use kinetostatics_force_law_factory, only: force_law_from_spec
+  use kinetostatics_force_law_factory, only: force_law_from_spec, law_spec
   use water_field, only: water_field_t
   use rider_body, only: body_params_t, rigid_body_t, rider_body_t, build_rider_body
   use rider_drag, only: water_properties_t
@@ -36,6 +36,7 @@ module rider_model
   implicit none (type, external)
   private
   public :: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names
+  public :: rider_friction, rider_friction_kind, rider_coulomb_mu, set_rider_mu, rider_default_mu
   public :: CONTACT_PELVIS, CONTACT_HEELS, CONTACT_BACK, N_CONTACTS
 
   integer, parameter :: CONTACT_PELVIS = 1, CONTACT_HEELS = 2, CONTACT_BACK = 3, N_CONTACTS = 3
@@ -45,10 +46,17 @@ module rider_model
   real(wp), parameter :: flexion_range(2) = [-30, 90]*(pi/180)
   real(wp), parameter :: tilt_range(2) = [-30, 90]*(pi/180)
 
+  !> The rider's Coulomb friction coefficient mu_D when no law is given (thesis table 4.8).
+  real(wp), parameter :: rider_default_mu = 0.0724419_wp
+
   !> Everything that defines a rider and its start (docs/rider.md, &rider).
   type :: rider_params_t
     type(body_params_t) :: body
-    real(wp) :: mu = 0.0724419_wp                   ! 1, Coulomb at all three contacts (thesis table 4.8)
+    !> the friction law at each of the three contacts: a kind of the force-law
+    !> registry and its parameters (kinetostatics_force_law_factory), 'none'
+    !> for none; not set (no kind): Coulomb with mu = rider_default_mu
+    !> (rider_friction)
+    type(spec_t) :: friction
     logical :: drag = .true.                        ! water drag on the three spheres
     real(wp) :: drag_radius(N_CONTACTS) = [0.5_wp, 0.05_wp, 0.5_wp]   ! m: pelvis, heels, back (thesis 4.3)
     type(water_properties_t) :: water
@@ -57,7 +65,6 @@ module rider_model
     real(wp) :: v0 = pi/2                           ! rad (pi/2: the bottom of a tube)
     real(wp) :: heading0 = 0                        ! rad, body axis from x_D (down the slide) towards y_D
     real(wp) :: speed0 = 1                          ! m/s, along the body axis
-    real(wp) :: regularization_speed = 1e-6_wp      ! m/s, of the Coulomb friction (kinetostatics_force_laws)
     logical :: one_sided = .true.                   ! contacts can lift off (the ride stops there)
   end type rider_params_t
 
@@ -69,7 +76,7 @@ module rider_model
     integer :: heading = 0, flexion = 0, tilt = 0   ! scalar indices of phi_B, phi_U, phi_O
     integer :: closure(6) = 0                       ! the six closure measurements
     integer :: contact(N_CONTACTS) = 0              ! mechanism contact indices
-    integer :: friction(N_CONTACTS) = 0             ! law indices of the Coulomb friction (0: none)
+    integer :: friction(N_CONTACTS) = 0             ! law indices of the friction (0: none)
     integer :: drag(N_CONTACTS) = 0                 ! law indices of the water drag (0: none)
     type(rider_body_t) :: body
   end type rider_layout_t
@@ -82,7 +89,9 @@ contains
   !> The rider's mechanism at its start q0 = [u0, v0, heading0] with the
   !> dependent coordinates where heels and back meet the slide (refused, with
   !> which contact and by how much, if they cannot), its three one-sided
-  !> contacts with Coulomb friction (mu > 0), and, given the computed water
+  !> contacts with the friction law of p (rider_friction; a law per weight
+  !> takes the weight of the segment the contact belongs to: pelvis, legs,
+  !> trunk, which add up to the rider's), and, given the computed water
   !> and p%drag, the water drag at each contact (on where the contact starts
   !> between the water's edges). Finalized, ready to run.
   subroutine build_rider(p, surface, m, layout, q0, status, water)
@@ -101,6 +110,7 @@ contains
     integer :: d_b, pelvis, hip_frame, legs, d_u, trunk, d_o, k
     type(spec_t) :: friction
     class(force_law_t), allocatable :: law
+    real(wp) :: segment_weight(N_CONTACTS)   ! N
 
     q0 = [p%u0, p%v0, p%heading0]
     call build_rider_body(p%body, layout%body, status)
@@ -161,15 +171,14 @@ contains
     call m%set_coordinates([layout%u(CONTACT_PELVIS), layout%v(CONTACT_PELVIS), layout%heading])
 
     ! contacts (ground - body at the contact's Darboux frame), friction, drag
+    friction = rider_friction(p)
+    segment_weight = [layout%body%pelvis%mass, layout%body%legs%mass, layout%body%trunk%mass]*norm2(p%gravity)
     do k = 1, N_CONTACTS
       layout%contact(k) = m%add_contact(trim(contact_names(k)), 1, layout%body_frame(k), layout%contact_frame(k), &
                                         one_sided=p%one_sided)
-      if (p%mu > 0) then   ! the core's Coulomb law, from its spec (kinetostatics_force_law_factory)
-        friction = spec_t('coulomb')
-        call friction%set('mu', [p%mu])
-        call friction%set('regularization_speed', [p%regularization_speed])
-        call force_law_from_spec(friction, law_place_t(trim(contact_names(k))//'_friction', layout%contact(k)), &
-                                 law, status)
+      if (friction%kind /= 'none') then   ! a law of the core's registry (kinetostatics_force_law_factory)
+        call force_law_from_spec(friction, law_place_t(trim(contact_names(k))//'_friction', layout%contact(k), &
+                                                       segment_weight(k)), law, status)
         if (.not. status%ok()) return
         call m%add_law(law)
         layout%friction(k) = m%n_laws
@@ -231,6 +240,57 @@ contains
       call m%add_loop(name, measurements, [0.0_wp, 0.0_wp, 0.0_wp], dependents, status)
     end subroutine close_point
   end subroutine build_rider
+
+  !> The friction law of p at the three contacts: p%friction, or, not set,
+  !> Coulomb with the rider's mu_D (rider_default_mu).
+  pure function rider_friction(p) result(spec)
+    type(rider_params_t), intent(in) :: p
+    type(spec_t) :: spec
+    if (allocated(p%friction%kind)) then
+      spec = p%friction
+    else
+      spec = law_spec('coulomb', 'mu', rider_default_mu)
+    end if
+  end function rider_friction
+
+  !> The kind of p's friction law ('none' for none).
+  pure function rider_friction_kind(p) result(kind)
+    type(rider_params_t), intent(in) :: p
+    character(len=:), allocatable :: kind
+    type(spec_t) :: spec
+    spec = rider_friction(p)
+    kind = spec%kind
+  end function rider_friction_kind
+
+  !> The Coulomb mu of p's law, what the sweep varies and the identification
+  !> fits: `coulomb` true for 'coulomb' and for 'none' (mu 0), false (mu 0)
+  !> for any other law.
+  pure subroutine rider_coulomb_mu(p, mu, coulomb)
+    type(rider_params_t), intent(in) :: p
+    real(wp), intent(out) :: mu
+    logical, intent(out) :: coulomb
+    type(spec_t) :: spec
+    spec = rider_friction(p)
+    mu = 0
+    coulomb = spec%kind == 'coulomb' .or. spec%kind == 'none'
+    if (spec%kind == 'coulomb') mu = spec%value('mu')
+  end subroutine rider_coulomb_mu
+
+  !> p with Coulomb friction mu at the three contacts (mu = 0: none), the
+  !> other parameters of p's Coulomb law kept (the defaults after any other).
+  pure subroutine set_rider_mu(p, mu)
+    type(rider_params_t), intent(inout) :: p
+    real(wp), intent(in) :: mu
+    type(spec_t) :: spec
+    spec = rider_friction(p)
+    if (mu > 0) then
+      if (spec%kind /= 'coulomb') spec = spec_t('coulomb')
+      call spec%set('mu', [mu])
+    else
+      spec = spec_t('none')
+    end if
+    p%friction = spec
+  end subroutine set_rider_mu
 
   !> q0' for the start speed along the body axis: r_u u' + r_v v' = speed x_P.
   subroutine rider_start_velocity(p, surface, qd0, status)

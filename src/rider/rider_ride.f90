@@ -31,7 +31,7 @@ module rider_ride
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use water_field, only: water_field_t
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names, &
-    CONTACT_PELVIS, N_CONTACTS
+    CONTACT_PELVIS, N_CONTACTS, rider_coulomb_mu
   use rider_water_drag, only: water_drag_t
   implicit none (type, external)
   private
@@ -239,17 +239,20 @@ contains
   contains
 
     !> A rider at rest slides off only where the centerline is steeper than
-    !> its friction holds (tan(slope) > mu at the pelvis's start).
+    !> its friction holds (tan(slope) > mu at the pelvis's start; a law
+    !> other than Coulomb holds nothing at rest: mu 0).
     subroutine start_from_rest(status)
       type(status_t), intent(inout) :: status
       type(curve_point_t) :: c
-      real(wp) :: gradient
+      real(wp) :: gradient, mu
+      logical :: coulomb
       call sys%slide%centerline_point(q0(1), 1, c, status)
       if (.not. status%ok()) return
       gradient = -c%d(3, 1)/max(norm2(c%d(1:2, 1)), tiny(1.0_wp))
-      if (.not. gradient > params%mu) call set_status(status, STATUS_INVALID_INPUT, 'a rider starting at rest '// &
+      call rider_coulomb_mu(params, mu, coulomb)
+      if (.not. gradient > mu) call set_status(status, STATUS_INVALID_INPUT, 'a rider starting at rest '// &
         '(speed0 = 0) needs a start steeper than its friction holds: tan(slope) = '//format_short(gradient)// &
-        ' at the start is not above mu = '//format_short(params%mu))
+        ' at the start is not above mu = '//format_short(mu))
     end subroutine start_from_rest
   end subroutine prepare_ride
 

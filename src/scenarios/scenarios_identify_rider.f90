@@ -13,14 +13,14 @@ module scenarios_identify_rider
   use base_text, only: format_integer, format_short, format_with
   use base_log, only: log_info
   use water_run, only: water_description_t, water_result_t, compute_water
-  use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS
+  use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, rider_coulomb_mu, set_rider_mu
   use design_rider_identification, only: rider_identification_t, rider_fit_t, rider_stations_t, &
     new_rider_identification, simulate_rider, fit_rider_friction, rider_body_sensitivity
   use io_input, only: input_text_t, check_known_groups
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_geometry_config, only: geometry_groups
-  use io_rider_config, only: read_rider_config, read_ride_gravity
+  use io_rider_config, only: read_rider_config, read_ride_gravity, require_coulomb_rider
   use io_rider_identification_config, only: rider_identification_config_t, read_rider_identification_config
   use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t
@@ -57,7 +57,8 @@ contains
     type(rider_fit_t) :: fit
     type(rider_params_t) :: variants(n_variants)
     type(status_t) :: variant_status(n_variants)
-    real(wp) :: deviation(n_variants), cpu0, cpu1
+    real(wp) :: deviation(n_variants), cpu0, cpu1, mu_start
+    logical :: coulomb
     type(result_file_t) :: file
     type(status_t) :: run_status, write_status
     character(len=:), allocatable :: message
@@ -69,6 +70,8 @@ contains
     if (status%ok()) call read_ride_gravity(input, gravity, status)
     if (status%ok()) water_description%gravity = gravity
     if (status%ok()) call read_rider_config(input, setup%params, setup%options, limits, status, gravity)
+    if (status%ok()) call require_coulomb_rider(input, setup%params, .false., 'identify_rider fits the '// &
+                                                'Coulomb mu_D of the three contacts (&rider mu is its start)', status)
     if (status%ok()) call read_rider_identification_config(input, config, status)
     if (.not. status%ok()) return
     if (allocated(limits)) then
@@ -96,9 +99,10 @@ contains
         return
       end if
     end if
-    if (.not. (setup%params%mu >= config%options%lower .and. setup%params%mu <= config%options%upper)) &
+    call rider_coulomb_mu(setup%params, mu_start, coulomb)
+    if (.not. (mu_start >= config%options%lower .and. mu_start <= config%options%upper)) &
       call set_status(status, STATUS_INVALID_INPUT, 'the start value &rider mu = '// &
-                      format_short(setup%params%mu)//' must lie within &identify lower, upper = '// &
+                      format_short(mu_start)//' must lie within &identify lower, upper = '// &
                       format_short(config%options%lower)//', '//format_short(config%options%upper))
     if (.not. status%ok()) then
       call prefix_status(status, input%name)
@@ -124,13 +128,13 @@ contains
       call log_info('identify_rider: fitting mu_D to '//format_integer(size(setup%data%station_arc_length))// &
                     ' stations and '//format_integer(size(setup%data%segment_start))//' segments')
       call cpu_time(cpu0)
-      call fit_rider_friction(setup, config%options, setup%params%mu, fit, run_status)
+      call fit_rider_friction(setup, config%options, mu_start, fit, run_status)
       call cpu_time(cpu1)
       if (run_status%ok()) call write_fit(file, setup, config, fit, cpu1 - cpu0, write_status)
     end if
     if (run_status%ok() .and. config%sensitivity) then
       call log_info('identify_rider: the body-parameter study (table 4.10)')
-      setup%params%mu = fit%mu
+      call set_rider_mu(setup%params, fit%mu)
       call make_variants(setup%params, variants)
       call rider_body_sensitivity(setup, variants, deviation, variant_status, run_status)
       if (run_status%ok()) call write_sensitivity(file, deviation, write_status)
@@ -155,7 +159,7 @@ contains
     type(rider_stations_t) :: simulated
     call log_info('identify_rider: twin measurements with mu_D = '//format_short(twin_mu))
     params = setup%params
-    params%mu = twin_mu
+    call set_rider_mu(params, twin_mu)
     call simulate_rider(setup, params, simulated, status)
     if (.not. status%ok()) then
       call prefix_status(status, 'the twin measurements')
@@ -281,7 +285,7 @@ contains
     n = size(setup%data%station_arc_length)
     call summary%start('identify_rider', 'slidesim identify_rider: mu_D from '//format_integer(n)// &
                        ' stations and '//format_integer(size(setup%data%segment_start))//' segments')
-    call summary%add('mu', 'mu_D', fit%mu, declared_unit('rider', 'mu'))
+    call summary%add('mu', 'mu_D', fit%mu, declared_unit('sweep', 'mu'))
     call summary%add('standard_error', 'standard error', fit%standard_error, '1')
     if (fit%at_bound) call summary%add_text('at_bound', 'at a bound', 'yes: mu_D lies on lower or upper')
     call summary%add('cost', 'cost F2 (4.43)', fit%cost, 'rad^2')

@@ -17,7 +17,7 @@ module scenarios_ride
   use geometry_slide_query, only: slide_surface_t
   use geometry_cross_section, only: circle_section_t
   use water_run, only: water_description_t
-  use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
+  use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS, rider_friction_kind
   use rider_ride, only: ride_result_t, ride_series_t, check_ride_start
   use design_ride_evaluation, only: limit_report_unit, ride_limit_t, quantities_without_limit
   use design_ride_report, only: ride_report_t
@@ -75,7 +75,7 @@ contains
       call write_water_results(file, description%water, result%water, write_status)
       call write_slide_grid(file, slide, write_status)
       if (result%ridden) then
-        call write_ride(file, slide, ride, report, result%ride_cpu, write_status)
+        call write_ride(file, slide, ride, report, result%ride_cpu, friction_name(description%rider), write_status)
         call write_evaluation(file, ride, report, write_status)
       end if
 
@@ -242,12 +242,27 @@ contains
   end subroutine check_sphere_radii
 
   !> /rider: the ride's samples (time scale), per contact a subgroup.
-  subroutine write_ride(file, surface, ride, report, cpu, status)
+  !> The rider's friction as the datasets describe it.
+  pure function friction_name(rider) result(name)
+    type(rider_params_t), intent(in) :: rider
+    character(len=:), allocatable :: name
+    character(len=:), allocatable :: kind
+    kind = rider_friction_kind(rider)
+    if (kind == 'coulomb') then
+      name = 'Coulomb friction'
+    else
+      name = 'friction (law '''//kind//''')'
+    end if
+  end function friction_name
+
+  !> /rider: the ride's records; `friction` names the rider's friction law.
+  subroutine write_ride(file, surface, ride, report, cpu, friction, status)
     type(result_file_t), intent(inout) :: file
     class(surface_t), intent(in) :: surface
     type(ride_result_t), intent(in) :: ride
     type(ride_report_t), intent(in) :: report
     real(wp), intent(in) :: cpu
+    character(len=*), intent(in) :: friction
     type(status_t), intent(inout) :: status
     character(len=*), parameter :: g = '/rider/'
     character(len=:), allocatable :: c, uu, vu
@@ -277,7 +292,7 @@ contains
       call file%write_vector(g//'kinetic_energy', s%kinetic(:n), 'J', 'kinetic energy', status)
       call file%write_vector(g//'potential_energy', s%potential(:n), 'J', 'potential energy -m g.r', status)
       call file%write_vector(g//'friction_work', s%friction_work(:n), 'J', &
-                             'work of the Coulomb friction at the three contacts since the start (<= 0)', status)
+                             'work of the '//friction//' at the three contacts since the start (<= 0)', status)
       call file%write_vector(g//'drag_work', s%drag_work(:n), 'J', &
                              'work of the water drag since the start (> 0 where the water pushes)', status)
       call file%write_vector(g//'closure_residual', s%closure_residual(:n), 'm', &
@@ -298,7 +313,8 @@ contains
           call file%write_vector(c//'normal_force', x%normal_force(:n), 'N', &
                                  'normal force of the slide (> 0 while pressing)', status)
           call file%write_matrix(c//'friction_force', x%friction_force(:, :n), 'N', &
-                                 'Coulomb friction on the rider (4.28)', status)
+                                 trim(friction//' on the rider'//merge(' (4.28)', '       ', &
+                                                                       friction == 'Coulomb friction')), status)
           call file%write_matrix(c//'drag_force', x%drag_force(:, :n), 'N', 'water drag on the rider (4.29)', &
                                  status)
           call file%write_integers(c//'in_water', x%in_water(:n), '1', &

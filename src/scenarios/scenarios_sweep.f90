@@ -25,7 +25,8 @@ module scenarios_sweep
   use io_output_files, only: claim_output
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
-  use io_rider_config, only: read_rider_config, read_ride_gravity
+  use io_rider_config, only: read_rider_config, read_ride_gravity, require_coulomb_rider, open_rider_group
+  use rider_model, only: rider_coulomb_mu
   use io_sweep_config, only: sweep_config_t, read_sweep_config
   use io_sweep_results, only: write_sweep_results, write_sweep_csv
   use io_hdf5, only: result_file_t
@@ -61,7 +62,7 @@ contains
     real(wp) :: base(N_SWEPT), wall
     integer :: rank, ranks, threads, failed, k
     integer(int64) :: clock0, clock1, rate
-    logical :: started, complete, fail_on_limit, kept
+    logical :: started, complete, fail_on_limit, kept, coulomb
     character(len=:), allocatable :: csv_path, message, where
 
     ! ---- everything checked before any work
@@ -74,6 +75,8 @@ contains
     if (status%ok()) call read_ride_gravity(input, gravity, status)
     if (status%ok()) sweep%water%gravity = gravity
     if (status%ok()) call read_rider_config(input, sweep%rider, options, sweep%limits, status, gravity)
+    if (status%ok()) call require_coulomb_rider(input, sweep%rider, .true., 'the sweep varies and records '// &
+                                                'the rider''s Coulomb mu (0: none)', status)
     if (status%ok()) call read_limit_gate(input, run, sweep%limits, fail_on_limit, status)
     if (.not. status%ok()) return
     call check_sphere_radii(input, sweep%rider, sweep%water%slide, status)
@@ -83,7 +86,7 @@ contains
       base(V_SEX) = p%body%sex
       base(V_MASS) = p%body%mass
       base(V_HEIGHT) = p%body%height
-      base(V_MU) = p%mu
+      call rider_coulomb_mu(p, base(V_MU), coulomb)
       base(V_U0) = p%u0
       base(V_V0) = p%v0
       base(V_HEADING) = heading_degrees(input)
@@ -181,7 +184,7 @@ contains
     type(group_reader_t) :: r
     type(status_t) :: status
     degrees = 0
-    call open_group(input, 'rider', r, status)   ! read_rider_config checked it
+    call open_rider_group(input, r, status)   ! read_rider_config checked it
     call r%get('heading0_deg', degrees, status)
   end function heading_degrees
 

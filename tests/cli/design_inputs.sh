@@ -87,7 +87,7 @@ ri limits_given "&rider limit_quantity = 'speed', limit_max = 8.0, limit_unit = 
 expect limits_given 1 '&rider' 'limit_quantity is not used by identify_rider'
 ri upper_low "&identify twin_mu = 0.07, station_arc_length = 3.0, lower = 0.05, upper = 0.01 /"
 expect upper_low 1 '&identify' 'upper = 0.01' 'must exceed lower'
-# twin_mu and the bounds of mu_D have the range of &rider mu (one declaration; they allowed up to 10)
+# twin_mu and the bounds of mu_D have the range of &sweep mu, the rider's Coulomb mu (one declaration; they allowed up to 10)
 ri twin_mu_high "&identify twin_mu = 5.0, station_arc_length = 3.0 /"
 expect twin_mu_high 1 '&identify' 'twin_mu = 5.0' 'in [0, 2]'
 ri upper_high "&identify twin_mu = 0.07, station_arc_length = 3.0, upper = 5.0 /"

@@ -22,7 +22,7 @@ program test_rider_identification
   use io_rider_config, only: read_rider_config
   use scenarios_water, only: build_water
   use water_run, only: water_description_t, water_result_t, compute_water
-  use rider_model, only: rider_params_t, N_CONTACTS
+  use rider_model, only: rider_params_t, N_CONTACTS, set_rider_mu
   use rider_ride, only: ride_result_t, ride_options_t, simulate_ride
   use design_ride_evaluation, only: ride_limit_t
   use design_rider_identification, only: rider_identification_t, rider_fit_options_t, rider_fit_t, &
@@ -67,7 +67,7 @@ contains
     if (.not. status%ok()) return
     setup%slide = description%slide
     setup%params = rider
-    setup%params%mu = mu_true
+    call set_rider_mu(setup%params, mu_true)
     setup%with_water = .true.
     setup%water = water%field
     setup%data%station_arc_length = evenly(first, last, n_stations)

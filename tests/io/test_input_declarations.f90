@@ -84,7 +84,9 @@ contains
     end do
   end subroutine ranges_and_defaults
 
-  !> &sweep varies &rider's and &water's variables: their own declarations.
+  !> &sweep varies &rider's and &water's variables: their own declarations
+  !> (but mu: in &rider the Coulomb law's parameter, declared with the law;
+  !> &sweep's mu is its own).
   subroutine sweep_shares_its_variables()
     type(declaration_t) :: d
     integer :: k
@@ -92,7 +94,8 @@ contains
     do k = 1, size(swept_names)
       call check(find_declaration('sweep', swept_names(k)) > 0, trim(swept_names(k))//' is declared in &sweep')
       call check(find_declaration('sweep', swept_names(k)) == find_declaration('rider', swept_names(k)) .or. &
-                 find_declaration('sweep', swept_names(k)) == find_declaration('water', swept_names(k)), &
+                 find_declaration('sweep', swept_names(k)) == find_declaration('water', swept_names(k)) .or. &
+                 (swept_names(k) == 'mu' .and. find_declaration('rider', 'mu') == 0), &
                  trim(swept_names(k))//': the declaration of &rider or &water')
     end do
     call check(declared_unit('sweep', 'flow_rate') == 'm^3/s' .and. declared_unit('water', 'f1') == 'kg/m', &
@@ -123,7 +126,7 @@ contains
                  max_rides == 50, '&optimize: the capacities of the reader and the declarations agree')
     end block
     call check(same_range('water f1', 'water f2') .and. same_range('water f1', 'water f3') .and. &
-               same_range('water f1', 'identify_water twin_f') .and. same_range('rider mu', 'identify_rider twin_mu'), &
+               same_range('water f1', 'identify_water twin_f') .and. same_range('sweep mu', 'identify_rider twin_mu'), &
                'f1, f2, f3 and twin_f have one range; twin_mu that of mu')
   end subroutine sweep_shares_its_variables
 

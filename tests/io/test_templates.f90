@@ -23,7 +23,8 @@ contains
   subroutine comments_from_declarations()
     character(len=:), allocatable :: text, error
     call template_from_spec('ride', 'a ride.'//nl//'&rider ! the rider'//nl//'mass = 70'//nl//'height'//nl// &
-                            'mu = 0.0724419 ! a note', text, error)
+                            'mu = 0.0724419 ! a note long enough to be wrapped under the comment''s first line', text, &
+                            error)
     call check(error == '', 'a valid spec: no error ('//error//')')
     call check(index(text, '! Template of the ride scenario (slidesim --default-input ride): a ride.') == 1, &
                'the header names the scenario and holds the introduction')
@@ -32,9 +33,10 @@ contains
                      'default 68.5'//nl) > 0, 'unit, declared range, meaning, and the default where it differs')
     call check(index(text, '  height = 1.78                    ! m, 0.5 .. 2.5; body height (thesis table 4.10)'// &
                      nl) > 0, 'a variable without a value shows its declared default (and not "default")')
-    call check(index(text, '  mu = 0.0724419                   ! 0 .. 2; Coulomb friction of the rider at the three '// &
-                     'contacts (thesis table'//nl//repeat(' ', 35)//'! 4.8); a note'//nl) > 0, &
-               'a dimensionless variable: no unit; the comment wrapped under itself; the spec''s note last')
+    call check(index(text, '  mu = 0.0724419                   ! > 0 .. 10; friction coefficient; a note long enough '// &
+                     'to be wrapped under'//nl//repeat(' ', 35)//'! the comment''s first line'//nl) > 0, &
+               'a dimensionless variable (the rider''s Coulomb law''s mu): no unit; the comment wrapped under '// &
+               'itself; the spec''s note last')
     call check(text(len(text) - 1:) == '/'//nl, 'the group is closed')
   end subroutine comments_from_declarations
 

@@ -20,6 +20,7 @@ program library_without_io
   use water_streamline, only: CORRECTION_FULL
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_body, only: SEX_MALE
+  use kinetostatics_force_law_factory, only: law_spec
   use design_ride_evaluation, only: new_ride_limit
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   implicit none (type, external)
@@ -52,7 +53,7 @@ program library_without_io
     p%body%mass = 68.5_wp
     p%body%height = 1.78_wp
     p%body%com_height = 0.075_wp
-    p%mu = 0.0724419_wp
+    p%friction = law_spec('coulomb', 'mu', 0.0724419_wp)
     p%drag = .true.
     p%drag_radius = [0.5_wp, 0.05_wp, 0.5_wp]
     p%u0 = 0.5_wp

@@ -46,6 +46,7 @@ program test_ride
   use io_input, only: input_text_t, load_input_file
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names
+  use base_spec, only: spec_t
   use rider_ride, only: ride_options_t, ride_result_t, simulate_ride, rider_ode_t, prepare_ride
   use geometry_slide_query, only: general_wall_position
   use rider_water_drag, only: in_water_roots
@@ -102,7 +103,7 @@ contains
     type(tube_surface_t) :: flat
     integer :: n, k
     real(wp) :: smallest
-    p%mu = 0
+    p%friction = spec_t('none')
     p%drag = .false.
     opt%output_step = 0.05_wp
     opt%progress_seconds = 0
@@ -139,7 +140,7 @@ contains
     type(status_t) :: st
     real(wp) :: scale, drift
     integer :: n
-    p%mu = 0
+    p%friction = spec_t('none')
     p%drag = .false.
     p%one_sided = .false.
     opt%output_step = 0.05_wp

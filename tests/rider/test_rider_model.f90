@@ -14,6 +14,18 @@
 !>     N_heels = m_L g cos(theta) x_L/(l - mu h),
 !>     N_back  = -m_T g cos(theta) x_T/(mu h - b),
 !>     N_pelvis = m g cos(theta) - N_heels - N_back.
+!>
+!> The other laws of the force-law registry (&rider friction) on the same
+!> line, the rider sliding at w: the normal forces still sum to
+!> m g cos(theta) and every contact slips at w, so
+!>     viscous (c per contact)       u'' = g sin(theta) - 3 c w/m,
+!>     viscous_normal (mu per |N|)   u'' = g sin(theta) - mu g cos(theta) w,
+!>     viscous_weight (mu per M g)   u'' = g sin(theta) - mu g w
+!> (each contact takes the weight of its segment; the three add up to m g);
+!> each contact's force is the one the same law gives a point mass
+!> (slip_force) for that contact's slip and normal force; and the ride under
+!> viscous_normal follows w(t) = w_inf + (w0 - w_inf) exp(-k t),
+!> k = mu g cos(theta), w_inf = tan(theta)/mu.
 program test_rider_model
   use base_kinds, only: wp
   use base_constants, only: pi, standard_gravity
@@ -21,7 +33,11 @@ program test_rider_model
   use geometry_tube, only: tube_surface_t, new_straight_tube
   use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, &
-    CONTACT_PELVIS, CONTACT_HEELS, CONTACT_BACK
+    CONTACT_PELVIS, CONTACT_HEELS, CONTACT_BACK, N_CONTACTS, rider_default_mu
+  use rider_ride, only: ride_options_t, ride_result_t, simulate_ride
+  use base_spec, only: spec_t
+  use kinetostatics_force_law, only: force_law_t, friction_law_t, law_place_t
+  use kinetostatics_force_law_factory, only: law_spec, force_law_from_spec
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
 
@@ -30,6 +46,8 @@ program test_rider_model
   call check_start_on_straight()
   call check_refused_starts()
   call check_inclined_tube()
+  call check_other_laws()
+  call check_viscous_ride()
   call finish_tests('test_rider_model')
 
 contains
@@ -103,7 +121,7 @@ contains
     type(mechanism_t) :: m
     type(mechanism_workspace_t) :: work
     type(status_t) :: st
-    real(wp) :: q0(3), qd0(3), res, h, n_heels, n_back, n_pelvis, mass
+    real(wp) :: q0(3), qd0(3), res, h, n_heels, n_back, n_pelvis, mass, mu
     p%u0 = 5
     p%speed0 = 2
     call build_rider(p, straight_tube(20.0_wp), m, lay, q0, st)
@@ -113,16 +131,113 @@ contains
     call m%evaluate(work, 0.0_wp, q0, qd0, res, st)
     call check(st%ok(), 'evaluates: '//st%text())
     ! rtol 1e-12: exact algebra up to the friction's regularization, (1e-6/2)^2/2
-    call check_close(m%qdd(1), g*(sin(theta) - p%mu*cos(theta)), 1e-12_wp, 0.0_wp, &
+    mu = rider_default_mu   ! p's friction not set: the rider's Coulomb mu_D
+    call check_close(m%qdd(1), g*(sin(theta) - mu*cos(theta)), 1e-12_wp, 0.0_wp, &
                      'u'''' = g (sin theta - mu cos theta)')
     call check(abs(m%qdd(2)) < 1e-12_wp .and. abs(m%qdd(3)) < 1e-12_wp, 'stays at the bottom, heading kept')
     h = p%body%com_height
     mass = lay%body%pelvis%mass + lay%body%legs%mass + lay%body%trunk%mass
-    n_heels = lay%body%legs%mass*g*cos(theta)*lay%body%legs%com(1)/(lay%body%heel(1) - p%mu*h)
-    n_back = -lay%body%trunk%mass*g*cos(theta)*lay%body%trunk%com(1)/(p%mu*h - lay%body%back(1))
+    n_heels = lay%body%legs%mass*g*cos(theta)*lay%body%legs%com(1)/(lay%body%heel(1) - mu*h)
+    n_back = -lay%body%trunk%mass*g*cos(theta)*lay%body%trunk%com(1)/(mu*h - lay%body%back(1))
     n_pelvis = mass*g*cos(theta) - n_heels - n_back
     call check_close(m%contacts(CONTACT_HEELS)%normal_force, n_heels, 1e-12_wp, 0.0_wp, 'heels normal force')
     call check_close(m%contacts(CONTACT_BACK)%normal_force, n_back, 1e-12_wp, 0.0_wp, 'back normal force')
     call check_close(m%contacts(CONTACT_PELVIS)%normal_force, n_pelvis, 1e-12_wp, 0.0_wp, 'pelvis normal force')
   end subroutine check_inclined_tube
+
+  !> The viscous laws of the registry through &rider friction: u'' in closed
+  !> form, and each contact's force equal to the same law's slip_force (the
+  !> point mass's call) at that contact's slip and normal force.
+  subroutine check_other_laws()
+    character(len=*), parameter :: kinds(3) = [character(len=14) :: 'viscous', 'viscous_normal', 'viscous_weight']
+    character(len=*), parameter :: names(3) = [character(len=19) :: 'viscous_coefficient', 'mu', 'mu']
+    real(wp), parameter :: values(3) = [40.0_wp, 0.05_wp, 0.03_wp]   ! N s/m, s/m, s/m
+    real(wp), parameter :: w = 2   ! m/s
+    type(rider_params_t) :: p
+    type(rider_layout_t) :: lay
+    type(mechanism_t) :: m
+    type(mechanism_workspace_t) :: work
+    type(status_t) :: st
+    class(force_law_t), allocatable :: law
+    real(wp) :: q0(3), qd0(3), res, mass, expected, weight(N_CONTACTS), slip(3), force(3)
+    integer :: j, k
+    do j = 1, size(kinds)
+      p = rider_params_t()
+      p%u0 = 5
+      p%speed0 = w
+      p%drag = .false.
+      p%friction = law_spec(trim(kinds(j)), trim(names(j)), values(j))
+      call build_rider(p, straight_tube(20.0_wp), m, lay, q0, st)
+      call rider_start_velocity(p, straight_tube(20.0_wp), qd0, st)
+      call m%check_start(work, q0, st)
+      call m%evaluate(work, 0.0_wp, q0, qd0, res, st)
+      call check(st%ok(), trim(kinds(j))//': evaluates: '//st%text())
+      mass = lay%body%pelvis%mass + lay%body%legs%mass + lay%body%trunk%mass
+      select case (j)
+      case (1)
+        expected = g*sin(theta) - 3*values(j)*w/mass
+      case (2)
+        expected = g*sin(theta) - values(j)*g*cos(theta)*w
+      case default
+        expected = g*sin(theta) - values(j)*g*w
+      end select
+      ! rtol 1e-12: exact algebra (no regularization in these laws), a 3x3 solve
+      call check_close(m%qdd(1), expected, 1e-12_wp, 0.0_wp, trim(kinds(j))//': u'''' in closed form')
+      call check(abs(m%qdd(2)) < 1e-12_wp .and. abs(m%qdd(3)) < 1e-12_wp, trim(kinds(j))//': stays at the bottom')
+      call check_close(sum([(m%contacts(k)%normal_force, k = 1, N_CONTACTS)]), mass*g*cos(theta), 1e-12_wp, &
+                       0.0_wp, trim(kinds(j))//': the normal forces carry m g cos(theta)')
+      ! each contact: the law built for a point mass (no contact, the segment's weight) gives the same force
+      weight = [lay%body%pelvis%mass, lay%body%legs%mass, lay%body%trunk%mass]*g
+      do k = 1, N_CONTACTS
+        call force_law_from_spec(p%friction, law_place_t('point', 0, weight(k)), law, st)
+        slip = m%contact_states(k)%slip - dot_product(m%contact_states(k)%slip, m%contact_states(k)%normal)* &
+               m%contact_states(k)%normal
+        select type (law)
+        class is (friction_law_t)
+          force = law%slip_force(slip, m%contacts(k)%normal_force)
+        class default
+          force = huge(1.0_wp)
+        end select
+        ! atol 1e-12 N: the same arithmetic up to the scaled laws' |N| factor
+        call check(all(abs(m%law_force(lay%friction(k)) - force) <= 1e-12_wp*max(1.0_wp, norm2(force))), &
+                   trim(kinds(j))//': contact force = the point mass''s slip_force')
+        call check(abs(norm2(slip) - w) <= 1e-12_wp, trim(kinds(j))//': every contact slips at w')
+      end do
+    end do
+  end subroutine check_other_laws
+
+  !> A ride down the straight tube under viscous_normal, without water:
+  !> the speed against w(t) = w_inf + (w0 - w_inf) exp(-k t).
+  subroutine check_viscous_ride()
+    real(wp), parameter :: mu = 0.05_wp, w0 = 2   ! s/m, m/s
+    type(rider_params_t) :: p
+    type(ride_options_t) :: opt
+    type(ride_result_t) :: ride
+    type(status_t) :: st
+    real(wp) :: k, w_inf, worst
+    integer :: i
+    p%u0 = 2
+    p%speed0 = w0
+    p%drag = .false.
+    p%friction = law_spec('viscous_normal', 'mu', mu)
+    opt%output_step = 0.05_wp
+    opt%progress_seconds = 0
+    call simulate_ride(p, straight_tube(30.0_wp), opt, ride, st)
+    call check(st%ok() .and. ride%series%n > 20, 'viscous_normal ride runs: '//st%text())
+    if (.not. st%ok()) return
+    k = mu*g*cos(theta)
+    w_inf = tan(theta)/mu
+    worst = 0
+    do i = 1, ride%series%n
+      associate (t => ride%series%time(i))
+        worst = max(worst, abs(ride%series%speed(i) - (w_inf + (w0 - w_inf)*exp(-k*t)))/w_inf)
+      end associate
+    end do
+    print '(a, es10.2, a, f6.2, a)', 'viscous_normal ride: largest relative speed error ', worst, ' over ', &
+      ride%series%time(ride%series%n), ' s'
+    ! rtol 1e-10 per step (ride_options_t) over ~1e2..1e3 steps: below 1e-7 of w_inf
+    call check(worst <= 1e-7_wp, 'viscous_normal ride: w(t) in closed form')
+    ! starting below w_inf it approaches it from below
+    call check(ride%series%speed(ride%series%n) < w_inf, 'below the terminal speed')
+  end subroutine check_viscous_ride
 end program test_rider_model
