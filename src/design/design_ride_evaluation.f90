@@ -33,20 +33,24 @@ module design_ride_evaluation
   public :: ride_limit_t, limit_verdict_t, new_ride_limit, evaluate_limit, limit_quantities, &
     limit_report_unit, limit_units_allowed, series_extreme, quantities_without_limit
 
-  character(len=*), parameter :: limit_quantities(9) = [character(len=25) :: 'speed', 'exit_speed', &
+  !> ejection counts the rider's points that went over the top of an open
+  !> section's wall (0 or 1: the ride ends there); `limit_max = 0` forbids it
+  character(len=*), parameter :: limit_quantities(10) = [character(len=25) :: 'speed', 'exit_speed', &
     'acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal', 'lever_arm', &
-    'normal_force', 'wall_angle', 'wall_distance']
+    'normal_force', 'wall_angle', 'wall_distance', 'ejection']
 
-  integer, parameter :: DIM_SPEED = 1, DIM_ACCELERATION = 2, DIM_LENGTH = 3, DIM_FORCE = 4, DIM_ANGLE = 5
-  integer, parameter :: quantity_dimension(9) = [DIM_SPEED, DIM_SPEED, DIM_ACCELERATION, DIM_ACCELERATION, &
-    DIM_ACCELERATION, DIM_LENGTH, DIM_FORCE, DIM_ANGLE, DIM_LENGTH]
-  character(len=*), parameter :: report_units(5) = [character(len=3) :: 'm/s', 'g', 'm', 'N', 'deg']
-  character(len=*), parameter :: units_allowed(5) = [character(len=48) :: &
+  integer, parameter :: DIM_SPEED = 1, DIM_ACCELERATION = 2, DIM_LENGTH = 3, DIM_FORCE = 4, DIM_ANGLE = 5, &
+    DIM_COUNT = 6
+  integer, parameter :: quantity_dimension(10) = [DIM_SPEED, DIM_SPEED, DIM_ACCELERATION, DIM_ACCELERATION, &
+    DIM_ACCELERATION, DIM_LENGTH, DIM_FORCE, DIM_ANGLE, DIM_LENGTH, DIM_COUNT]
+  character(len=*), parameter :: report_units(6) = [character(len=3) :: 'm/s', 'g', 'm', 'N', 'deg', '1']
+  character(len=*), parameter :: units_allowed(6) = [character(len=48) :: &
     "'m s-1', 'm/s', 'km h-1', 'km/h'", &
     "'g' (multiples of |gravity|), 'm s-2', 'm/s^2'", &
     "'m', 'cm', 'mm'", &
     "'N', 'kN'", &
-    "'deg', 'degree', 'rad'"]
+    "'deg', 'degree', 'rad'", &
+    "'1' (a count)"]
 
   !> One limit, in the quantity's report unit.
   type :: ride_limit_t
@@ -164,6 +168,8 @@ contains
       case ('deg', 'degree', 'degrees'); f = 1
       case ('rad'); f = 180/pi
       end select
+    case (DIM_COUNT)
+      if (u == '1') f = 1
     end select
   end function unit_factor
 

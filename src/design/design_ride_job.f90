@@ -111,7 +111,8 @@ contains
     else
       allocate (limits(0))
     end if
-    call evaluate_ride(result%ride%series, description%rider%gravity, result%ride%complete, limits, result%report)
+    call evaluate_ride(result%ride%series, description%rider%gravity, result%ride%complete, limits, result%report, &
+                       result%ride%ejected_contact)
     call cpu_time(cpu1)
     result%ride_cpu = cpu1 - cpu0
     result%ridden = .true.

@@ -2,7 +2,8 @@
 !> ride time, top speed and where, the largest and smallest felt
 !> acceleration per body axis and where, how high each contact climbs the
 !> wall, the smallest normal force per contact (the lift-off margin), the
-!> largest tipping lever arm, the exit speed, and each user limit's verdict.
+!> largest tipping lever arm, the exit speed, whether (and where) the rider
+!> went over the top of a wall, and each user limit's verdict.
 !> Computed from a recorded ride (rider_ride) with the pure functions of
 !> design_ride_evaluation; "where" is the pelvis's arc length along the
 !> slide. Every recorded sample counts (outputs and events).
@@ -36,16 +37,21 @@ module design_ride_report
     type(ride_limit_t), allocatable :: limits(:)
     type(limit_verdict_t), allocatable :: verdicts(:)
     logical, allocatable :: judged(:)            ! false: not judged (exit speed of a ride that did not exit)
+    integer :: ejected_contact = 0               ! the contact that went over a wall's top (0: none)
+    real(wp) :: ejected_at = 0                   ! m, where (the pelvis's arc length at the stop)
   end type ride_report_t
 
 contains
 
-  subroutine evaluate_ride(s, gravity, complete, limits, report)
+  !> `ejected_contact`: the contact that went over the top of a wall and
+  !> ended the ride (rider_ride's ride_result_t; absent or 0: none).
+  subroutine evaluate_ride(s, gravity, complete, limits, report, ejected_contact)
     type(ride_series_t), intent(in) :: s
     real(wp), intent(in) :: gravity(3)
     logical, intent(in) :: complete
     type(ride_limit_t), intent(in) :: limits(:)
     type(ride_report_t), intent(out) :: report
+    integer, intent(in), optional :: ejected_contact
     real(wp), allocatable :: where(:), values(:), lever_abs(:)
     integer :: n, i, k, at
     n = s%n
@@ -60,6 +66,8 @@ contains
       report%lever_arm(i) = tipping_lever_arm(s%reaction_force(:, i), s%reaction_moment(:, i), &
                                               s%pelvis_axes(:, 1, i), s%pelvis_axes(:, 3, i))
     end do
+    if (present(ejected_contact)) report%ejected_contact = ejected_contact
+    if (report%ejected_contact > 0) report%ejected_at = s%arc_length(n)
     report%ride_time = s%time(n) - s%time(1)
     report%distance = s%arc_length(n) - s%arc_length(1)
     call series_extreme(s%speed(:n), where, .true., report%top_speed, report%top_speed_at)
@@ -108,6 +116,10 @@ contains
         values = [(maxval([(abs(s%contact(i)%wall_angle(at)), i = 1, N_CONTACTS)])*180/pi, at = 1, n)]
       case ('wall_distance')
         values = [(maxval([(abs(s%contact(i)%wall_distance(at)), i = 1, N_CONTACTS)]), at = 1, n)]
+      case ('ejection')
+        call evaluate_limit(limits(k), [merge(1.0_wp, 0.0_wp, report%ejected_contact > 0)], where(n:n), &
+                            report%verdicts(k))
+        cycle
       case default
         report%judged(k) = .false.
         cycle

@@ -10,7 +10,11 @@
 !>                   dependent; margin 1e-7 of the domain, kinetostatics_mechanism):
 !>                   an edge in u reached is a normal end (the end of the
 !>                   slide, or back at its start: EVENT_STOP, `outcome` says
-!>                   which and where); an edge in v is a failure (STATUS_DOMAIN);
+!>                   which and where); an edge in v is the surface's side
+!>                   edge (an open section's wall top): the body goes over
+!>                   it, a normal end too (EVENT_STOP, outcome 'over the side
+!>                   edge ...'), except at a pole (a singular parametrisation:
+!>                   STATUS_DOMAIN with the surface's note);
 !>   lift-off        N of every one-sided contact: falling through zero stops
 !>                   the run (EVENT_STOP, outcome 'lift-off ...') if N is
 !>                   near zero there; through a pole (a singular contact)
@@ -426,11 +430,16 @@ contains
             if (len(note) > 0) then
               call set_status(status, STATUS_DOMAIN, 'surface joint '''//name//''' reached the pole v = '// &
                               format_short(e%bound)//' of its surface'//where//': '//note)
-            else
-              call set_status(status, STATUS_DOMAIN, 'surface joint '''//name//''' reached the edge v = '// &
-                              format_short(e%bound)//' of its surface''s parameter domain'//where)
+              return
             end if
-            return
+            ! any other edge in v is the side edge of the surface (the top of
+            ! an open section's wall): the body leaves the surface there, a
+            ! physical end the model cannot follow (flight is not built for
+            ! a joint), said as such, not a failure of the computation
+            action = EVENT_STOP
+            call add_outcome(self, 'over the side edge: surface joint '''//name//''' reached the edge v = '// &
+                             format_short(e%bound)//' of its surface'//where)
+            cycle
           end if
           action = EVENT_STOP
           if (e%upper) then

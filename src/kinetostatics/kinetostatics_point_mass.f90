@@ -14,7 +14,9 @@
 !> The model runs through the integration driver (numerics_event_driver): it
 !> records its own series (point_mass_series_t) and decides at the edges of
 !> the surface's domain: an edge in u is the end of the ride (EVENT_STOP,
-!> `outcome`), an edge in v a failure (STATUS_DOMAIN). The events sit
+!> `outcome`), an edge in v the surface's side edge (an open section's wall
+!> top: EVENT_STOP, 'over the side edge'), or a failure (STATUS_DOMAIN) where
+!> the parametrisation is singular there (a pole). The events sit
 !> domain_edge_margin inside the edges (kinetostatics_surface_joint).
 module kinetostatics_point_mass
   use base_kinds, only: wp
@@ -236,7 +238,7 @@ contains
   end subroutine point_mass_roots
 
   !> An edge in u ends the ride (the end of a slide, or back at its start);
-  !> an edge in v is a failure.
+  !> an edge in v too (over the side edge), unless it is a pole: a failure.
   subroutine point_mass_handle_event(self, t, y, fired, action, status)
     class(point_mass_t), intent(inout) :: self
     real(wp), intent(in) :: t
@@ -244,10 +246,25 @@ contains
     integer, intent(in) :: fired(:)
     integer, intent(out) :: action
     type(status_t), intent(inout) :: status
+    type(surface_point_t) :: p
+    real(wp) :: ratio
     action = EVENT_IGNORE
     if (any(fired(3:4) == -1)) then
-      call set_status(status, STATUS_DOMAIN, 'the mass reached the edge of the surface''s parameter domain '// &
-                      'at (u, v) = ('//format_short(y(1))//', '//format_short(y(2))//')')
+      ! a pole (a singular parametrisation, as the mechanism's surface joints
+      ! judge it: |r_u x r_v| below 1e-2 (|r_u|^2 + |r_v|^2)) is a failure;
+      ! any other edge in v is the surface's side edge (an open section's
+      ! wall top): the mass goes over it, a normal end
+      call self%surface%evaluate(y(1), y(2), 1, p, status)
+      if (.not. status%ok()) return
+      ratio = norm2(cross(p%ru, p%rv))/max(dot_product(p%ru, p%ru) + dot_product(p%rv, p%rv), tiny(1.0_wp))
+      if (ratio < 1e-2_wp) then
+        call set_status(status, STATUS_DOMAIN, 'the mass reached a pole of the surface''s parametrisation '// &
+                        'at (u, v) = ('//format_short(y(1))//', '//format_short(y(2))//')')
+        return
+      end if
+      action = EVENT_STOP
+      self%outcome = 'over the side edge: the mass reached the edge v = '//format_short(y(2))// &
+                     ' of the surface at u = '//format_short(y(1))//' (t = '//format_short(t)//' s)'
     else if (any(fired(1:2) == -1)) then
       action = EVENT_STOP
       self%outcome = 'reached the end of the surface at u = '//format_short(y(1))//' (t = '//format_short(t)//' s)'

@@ -100,6 +100,9 @@ module rider_ride
     type(driver_result_t) :: driver
     integer :: drag_switches = 0
     integer, allocatable :: station_record(:)   ! the record at each station (0: not reached)
+    !> the contact (CONTACT_PELVIS ...) whose point went over the top edge of
+    !> an open section's wall, ending the ride (0: none; docs/rider.md)
+    integer :: ejected_contact = 0
   end type ride_result_t
 
   !> The rider as a model of the integration driver.
@@ -114,6 +117,7 @@ module rider_ride
     integer, allocatable :: station_record(:)   ! as ride_result_t's
     integer :: pending_station = 0        ! a station crossed, its record comes next
     logical :: stop_at_last_station = .false.
+    integer :: ejected_contact = 0        ! the contact that went over a wall's top (0: none)
   contains
     procedure :: record => rider_record
     procedure :: handle_event => rider_handle_event
@@ -160,6 +164,7 @@ contains
     if (present(label)) driver%label = label
     call drive(sys, y0, driver, result%driver, run_status)
     result%drag_switches = sys%drag_switches
+    result%ejected_contact = sys%ejected_contact
     call move_alloc(sys%station_record, result%station_record)
     call move_series(sys%ride, result%series)
     select case (result%driver%outcome)
@@ -468,6 +473,10 @@ contains
     if (action == EVENT_STOP .and. allocated(self%outcome)) then
       if (index(self%outcome, 'end of slide') == 1) then
         self%outcome = 'end of the slide: the '//trim(leading_contact(self, self%outcome))//' reached it'//where
+      else if (index(self%outcome, 'over the side edge') == 1) then
+        self%ejected_contact = joint_contact(self%outcome)
+        self%outcome = 'ejected: the '//trim(leading_contact(self, self%outcome))//' went over the top of the '// &
+                       wall_side(self)//' wall of the open section'//where
       else if (index(self%outcome, 'lift-off') == 1) then
         self%outcome = 'lift-off: the normal force of the '//trim(lifted_contact(self%outcome))// &
                        ' fell to zero'//where
@@ -480,12 +489,12 @@ contains
     class(rider_ode_t), intent(in) :: self
     character(len=*), intent(in) :: outcome
     character(len=:), allocatable :: name
+    integer :: k
     associate (unused => self)
     end associate
+    k = joint_contact(outcome)
     name = 'rider'
-    if (index(outcome, '''heel_joint''') > 0) name = 'heels'
-    if (index(outcome, '''back_joint''') > 0) name = 'back'
-    if (index(outcome, '''pelvis_joint''') > 0) name = 'pelvis'
+    if (k > 0) name = trim(contact_names(k))
   end function leading_contact
 
   function lifted_contact(outcome) result(name)
@@ -497,4 +506,37 @@ contains
       if (index(outcome, ''''//trim(contact_names(k))//'''') > 0) name = trim(contact_names(k))
     end do
   end function lifted_contact
+
+  !> The contact whose surface joint the mechanism's outcome names (0: none;
+  !> the joints are named in rider_model: pelvis_joint, heel_joint, back_joint).
+  pure integer function joint_contact(outcome) result(contact)
+    character(len=*), intent(in) :: outcome
+    character(len=*), parameter :: joints(N_CONTACTS) = [character(len=12) :: 'pelvis_joint', 'heel_joint', &
+      'back_joint']
+    integer :: k
+    contact = 0
+    do k = 1, N_CONTACTS
+      if (index(outcome, ''''//trim(joints(k))//'''') > 0) contact = k
+    end do
+  end function joint_contact
+
+  !> Which wall the ejected contact went over: left (its v at the section's
+  !> upper edge, +v) or right, from its surface parameters at the event.
+  function wall_side(self) result(side)
+    class(rider_ode_t), intent(in) :: self
+    character(len=:), allocatable :: side
+    real(wp) :: u, v, v_min, v_max
+    side = 'side'
+    if (self%ejected_contact == 0) return
+    associate (m => self%mechanism, lay => self%layout)
+      u = m%scalars(lay%u(self%ejected_contact))%q
+      v = m%scalars(lay%v(self%ejected_contact))%q
+    end associate
+    call self%slide%section_edges(u, v_min, v_max)
+    if (abs(v - v_max) < abs(v - v_min)) then
+      side = 'left'
+    else
+      side = 'right'
+    end if
+  end function wall_side
 end module rider_ride

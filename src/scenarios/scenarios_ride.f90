@@ -333,6 +333,8 @@ contains
     end associate
     call file%set_attribute('/rider', 'outcome', ride%outcome, status)
     call file%set_attribute('/rider', 'reached_end', merge(1, 0, ride%complete), status)
+    if (ride%ejected_contact > 0) &
+      call file%set_attribute('/rider', 'ejected', trim(contact_names(ride%ejected_contact)), status)
     call file%write_count(g//'statistics/steps', int(ride%driver%stats%steps), '1', 'integrator steps', status)
     call file%write_count(g//'statistics/rhs_evaluations', int(ride%driver%stats%rhs_evaluations), '1', &
                           'right-hand-side evaluations', status)
@@ -368,6 +370,9 @@ contains
     call file%write_scalar(g//'final_speed', r%final_speed, 'm/s', 'speed at the stop', status)
     if (ride%complete) call file%write_scalar(g//'exit_speed', r%final_speed, 'm/s', &
                                               'speed when the rider leaves the slide (the run-out entry)', status)
+    if (r%ejected_contact > 0) call file%write_scalar(g//'ejected_arc_length', r%ejected_at, 'm', &
+      'where the '//trim(contact_names(r%ejected_contact))//' went over the top of a wall (pelvis arc length)', &
+      status)
     do k = 1, 3
       c = g//'acceleration_'//trim(axis(k))
       call file%write_scalar(c//'_max', r%felt_max(k), r%felt_units, 'largest felt acceleration along the '// &
@@ -587,6 +592,11 @@ contains
     call summary%add('slide_length', 'slide centreline length', water%slide%length(), 'm')
     call summary%add_text('water', 'water', water_done)
     call summary%add_text('outcome', 'ride ended', ride%outcome)
+    if (r%ejected_contact > 0) then
+      call summary%add_text('ejected', 'EJECTED', 'the '//trim(contact_names(r%ejected_contact))// &
+                            ' went over the top of a wall')
+      call summary%add('ejected_arc_length', '  at arc length', r%ejected_at, 'm')
+    end if
     if (r%n > 0) then
       call summary%add('ride_time', 'ride time', r%ride_time, 's')
       call summary%add('distance', 'slide length ridden', r%distance, 'm')
@@ -635,18 +645,18 @@ contains
       end if
       exceeded = 0
       do k = 1, size(r%limits)
-        unit = si(limit_report_unit(r%limits(k)%quantity), r%felt_units)
+        unit = spaced(si(limit_report_unit(r%limits(k)%quantity), r%felt_units))
         if (.not. r%judged(k)) then
           line = 'limit '//r%limits(k)%quantity//': not judged (the ride did not reach the exit)'
         else if (r%verdicts(k)%exceeded) then
           exceeded = exceeded + 1
           line = 'LIMIT EXCEEDED: '//r%limits(k)%quantity//' '//bounds(k)//'; worst '// &
-                 format_short(r%verdicts(k)%worst)//' '//unit//' at arc length '// &
+                 format_short(r%verdicts(k)%worst)//unit//' at arc length '// &
                  format_short(r%verdicts(k)%worst_where)//' m (first at '// &
                  format_short(r%verdicts(k)%first_where)//' m)'
         else
           line = 'limit '//r%limits(k)%quantity//' '//bounds(k)//': ok (closest '// &
-                 format_short(r%verdicts(k)%worst)//' '//unit//' at arc length '// &
+                 format_short(r%verdicts(k)%worst)//unit//' at arc length '// &
                  format_short(r%verdicts(k)%worst_where)//' m)'
         end if
         call summary%add_line('  '//line)
@@ -692,10 +702,18 @@ contains
       character(len=:), allocatable :: text
       text = ''
       associate (l => r%limits(k))
-        if (l%has_minimum) text = '>= '//format_short(l%minimum)//' '//limit_report_unit(l%quantity)
+        if (l%has_minimum) text = '>= '//format_short(l%minimum)//spaced(limit_report_unit(l%quantity))
         if (l%has_minimum .and. l%has_maximum) text = text//' and '
-        if (l%has_maximum) text = text//'<= '//format_short(l%maximum)//' '//limit_report_unit(l%quantity)
+        if (l%has_maximum) text = text//'<= '//format_short(l%maximum)//spaced(limit_report_unit(l%quantity))
       end associate
     end function bounds
+
+    !> ' unit' after a number; nothing for a count (unit '1').
+    pure function spaced(unit) result(text)
+      character(len=*), intent(in) :: unit
+      character(len=:), allocatable :: text
+      text = ''
+      if (unit /= '1') text = ' '//unit
+    end function spaced
   end subroutine print_report
 end module scenarios_ride

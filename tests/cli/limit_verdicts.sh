@@ -30,7 +30,7 @@ slow='--set rider%limit_max=10.0,2.0,0.25'
 # without asking: exit 0 whatever the verdict, the limits not set listed
 run plain ride.nml
 check '[ $got = 0 ]' "plain: exit status $got ($(cat "$work/plain.err"))"
-check 'grep -q "^  no limit set for  *acceleration_longitudinal, acceleration_lateral, acceleration_normal, normal_force, wall_angle, wall_distance$" "$work/plain.out"' \
+check 'grep -q "^  no limit set for  *acceleration_longitudinal, acceleration_lateral, acceleration_normal, normal_force, wall_angle, wall_distance, ejection$" "$work/plain.out"' \
   "plain: the report does not list the limits not set: $(grep limit "$work/plain.out")"
 check 'grep -q "^  limits exceeded  *0 of the 3 set$" "$work/plain.out"' "plain: the count of limits: $(grep 'limits exceeded' "$work/plain.out")"
 run over ride.nml $slow

@@ -93,7 +93,8 @@ end module test_mechanism_events_laws
 !>   the closed form of the rigid rotation about the axis says;
 !> - a force law's own event: switched on at a mark, restart, closed forms of
 !>   the motion, the switch time and the law's work;
-!> - an edge in v ends the run as failed;
+!> - a pole in v (an edge where the parametrisation is singular) ends the run
+!>   as failed (a side edge in v is a normal end: tests/cli/ride_ejection.sh);
 !> - the runaway guard stops a body at rest under Adams with the BDF hint.
 program test_mechanism_events
   use base_kinds, only: wp
