@@ -258,8 +258,9 @@ contains
       if (.not. status%ok()) return
       ratio = norm2(cross(p%ru, p%rv))/max(dot_product(p%ru, p%ru) + dot_product(p%rv, p%rv), tiny(1.0_wp))
       if (ratio < 1e-2_wp) then
-        call set_status(status, STATUS_DOMAIN, 'the mass reached a pole of the surface''s parametrisation '// &
-                        'at (u, v) = ('//format_short(y(1))//', '//format_short(y(2))//')')
+        call set_status(status, STATUS_DOMAIN, 'the mass reached the edge of the surface''s parameter domain '// &
+                        'at a pole of its parametrisation, (u, v) = ('//format_short(y(1))//', '// &
+                        format_short(y(2))//')')
         return
       end if
       action = EVENT_STOP
