@@ -1,4 +1,4 @@
-!> Flight: a body whose contact starts open (issue 25, the first slice).
+!> Flight: a body whose contact starts open (issue 25).
 !>
 !> The body flies free: it hangs from the ground by three prismatic joints
 !> along the world axes (the origin of its frame) and a free rotation
@@ -17,11 +17,18 @@
 !> point, the impulse from resolve_impact with the contact's restitution and
 !> impact mu, the body's twist changed by it (the pose kept), and the body
 !> flies on (the integrator restarts). A rebound slower than close_speed
-!> would close the contact; closing is not built yet, so the run ends there.
+!> closes the contact: a further impulse takes away what is left of the
+!> contact points' normal velocity (frictionless; at a rolling contact their
+!> whole relative velocity), its energy added to the impact's row, and the
+!> flight stops with `closing` set; contact_closing goes on with the closed
+!> contact from there. Bounces that would never end (Zeno: rebounds e^k v0,
+!> endless in number, their flights summing to a finite time) end so after
+!> finitely many, where e^k v0 falls below close_speed.
 !>
 !> Only a single contact whose body_1 is the ground can start open (its
-!> shape_1 fixed, at the ground's pose), without friction, rolling, level or
-!> chain (the closed contact's, unused while the run ends at the landing);
+!> shape_1 fixed, at the ground's pose); its friction, rolling, level and
+!> chain are the closed contact's after closing, so they need restitution
+!> (without it the run ends at the landing and they would be unused);
 !> anything else is refused.
 module contact_flight
   use base_kinds, only: wp
@@ -35,9 +42,10 @@ module contact_flight
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_impact, only: impact_law_t, impact_outcome_t, resolve_impact, rigid_body_delassus
   use base_vector, only: cross
+  use base_series, only: resize
   use geometry_solid, only: solid_properties_t
   use contact_factory, only: body_from_spec
-  use contact_model, only: contact_system_t, LEVEL_POSITION, CHAIN_AUTO
+  use contact_model, only: contact_system_t, contact_model_t, LEVEL_POSITION, CHAIN_AUTO
   use contact_gap, only: contact_gap_t, new_contact_gap
   implicit none (type, external)
   private
@@ -70,6 +78,14 @@ module contact_flight
     real(wp) :: close_speed = 0
     real(wp) :: mass = 0, inertia(3, 3) = 0, centre(3) = 0
     type(impact_record_t), allocatable :: impacts(:)
+    ! closing (contact_closing)
+    type(contact_system_t) :: system          ! the description the closed contact is built from
+    character(len=8), allocatable :: q_units(:), beta_units(:)   ! of the series' coordinates and dependents
+    logical :: closing = .false.              ! the last impact closed the contact: the flight stopped there
+    type(contact_model_t), allocatable :: closed   ! the closed contact after closing
+    ! per record of the flight: the gap's point on shape_1 (m) and the body's
+    ! nearest point's velocity relative to it along the surface (m/s), world
+    real(wp), allocatable :: gap_point(:, :), gap_velocity(:, :)   ! (the velocity's tangential part)
   contains
     procedure :: root_count => flight_root_count
     procedure :: roots => flight_roots
@@ -110,11 +126,12 @@ contains
           format_count(size(system%bodies))//' bodies')
         return
       end if
-      if (allocated(c%friction%kind) .or. c%rolling .or. c%level /= LEVEL_POSITION .or. c%chain /= CHAIN_AUTO) then
-        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': start = ''open'' takes no '// &
-          'friction, rolling, level or chain yet: they are the closed contact''s, and an open contact does not '// &
-          'close yet (closing is not built: its run ends at the landing, or where a rebound is below close_speed); '// &
-          'impact_mu is the friction of its impacts')
+      if (c%restitution < 0 .and. (allocated(c%friction%kind) .or. c%rolling .or. c%level /= LEVEL_POSITION &
+                                   .or. c%chain /= CHAIN_AUTO)) then
+        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': friction, rolling, level and '// &
+          'chain of a contact that starts open are the closed contact''s after its body lands and the contact '// &
+          'closes, which needs restitution (without it the run ends at the landing: they would be unused); '// &
+          'give restitution, or leave them out')
         return
       end if
       b = 1
@@ -126,6 +143,7 @@ contains
       call body_from_spec(system%bodies(b), system%shapes, props, status)
       if (.not. status%ok()) return
       flight%contact_name = c%name
+      flight%system = system
       flight%has_impacts = c%restitution >= 0
       flight%law = impact_law_t(restitution=max(c%restitution, 0.0_wp), mu=c%impact_mu)
       flight%close_speed = c%close_speed
@@ -160,6 +178,8 @@ contains
       call start_rates(flight, [system%bodies(b)%angular_velocity, system%bodies(b)%velocity], qd0, status)
       if (.not. status%ok()) return
       q_units = [character(len=8) :: 'm', 'm', 'm', 'rad', 'rad', 'rad']
+      flight%q_units = q_units
+      allocate (flight%beta_units(0))
       call start_gap(flight, system, status)
     end associate
   end subroutine build_flight
@@ -294,52 +314,91 @@ contains
   !> updated): the impulse L on the body at its contact point, from K and the
   !> contact points' relative velocity; the body's centre of mass speeds up
   !> by L/m, its angular velocity by I^-1 (arm x L); its new twist becomes
-  !> y's rates. A rebound below close_speed ends the run (closing not built).
+  !> y's rates. A rebound below close_speed closes the contact (closing_impulse
+  !> added to L) and stops the flight there.
   subroutine impact(self, t, y, action, status)
     class(flight_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t
     real(wp), intent(inout) :: y(:)
     integer, intent(inout) :: action
     type(status_t), intent(inout) :: status
-    real(wp) :: inertia(3, 3), factored(3, 3), centre(3), arm(3), v_centre(3), omega(3), spin_change(3)
+    real(wp) :: inertia(3, 3), factored(3, 3), centre(3), arm(3), v_centre(3), omega(3), spin_change(3), k(3, 3)
+    real(wp) :: impulse(3), closing(3), closing_lost, velocity_after(3)
     real(wp), allocatable :: rates(:)
     type(impact_outcome_t) :: outcome
     type(impact_record_t) :: row
     integer :: f, ipiv(3)
+    logical :: closes
     f = self%mechanism%f
     associate (body => self%mechanism%frames(self%body_frame), n => self%gap%normal)
       inertia = matmul(body%rot, matmul(self%inertia, transpose(body%rot)))
       centre = body%r + matmul(body%rot, self%centre)
       arm = self%gap%point_2 - centre
+      k = rigid_body_delassus(self%mass, inertia, arm)
       ! the ground is the law's body 2: v is the body's contact point's velocity, n from the ground to it
-      call resolve_impact(self%law, rigid_body_delassus(self%mass, inertia, arm), n, &
-                          body%v + cross(body%omega, self%gap%point_2 - body%r), outcome, status)
+      call resolve_impact(self%law, k, n, body%v + cross(body%omega, self%gap%point_2 - body%r), outcome, status)
       if (.not. status%ok()) return
+      impulse = outcome%impulse
+      velocity_after = outcome%velocity_after
+      closing_lost = 0
+      closes = outcome%normal_speed_after < self%close_speed
+      if (closes) then
+        call closing_impulse(k, n, outcome%velocity_after, self%system%contacts(1)%rolling, closing, status)
+        if (.not. status%ok()) return
+        velocity_after = outcome%velocity_after + matmul(k, closing)
+        closing_lost = -dot_product(closing, outcome%velocity_after + velocity_after)/2
+        impulse = impulse + closing
+      end if
       factored = inertia
-      spin_change = cross(arm, outcome%impulse)
+      spin_change = cross(arm, impulse)
       call lu_factor(factored, ipiv, status)
       if (status%ok()) call lu_solve(factored, ipiv, spin_change, status)
       if (.not. status%ok()) return
-      v_centre = body%v + cross(body%omega, centre - body%r) + outcome%impulse/self%mass
+      v_centre = body%v + cross(body%omega, centre - body%r) + impulse/self%mass
       omega = body%omega + spin_change
       call start_rates(self, [omega, v_centre - cross(omega, centre - body%r)], rates, status)
       if (.not. status%ok()) return
       y(f + 1:f + self%mechanism%ns) = rates
       row = impact_record_t(time=t, normal_speed_before=outcome%normal_speed_before, &
-                            normal_speed_after=outcome%normal_speed_after, normal_impulse=outcome%normal_impulse, &
-                            tangential_impulse=norm2(outcome%impulse - dot_product(outcome%impulse, n)*n), &
-                            energy_lost=outcome%energy_lost)
+                            normal_speed_after=dot_product(velocity_after, n), &
+                            normal_impulse=dot_product(impulse, n), &
+                            tangential_impulse=norm2(impulse - dot_product(impulse, n)*n), &
+                            energy_lost=outcome%energy_lost + closing_lost)
     end associate
     self%impacts = [self%impacts, row]
-    if (outcome%normal_speed_after < self%close_speed) then
+    if (closes) then
       action = max(action, EVENT_STOP)
-      call add_outcome(self, 'contact '''//self%contact_name//''' would close at the impact at t = '// &
+      self%closing = .true.
+      call add_outcome(self, 'contact '''//self%contact_name//''' closed at the impact at t = '// &
                        format_short(t)//' s: the rebound, '//format_short(outcome%normal_speed_after)// &
-                       ' m/s, is below close_speed (closing is not built yet: the run ends there)')
+                       ' m/s, is below close_speed')
     else
       action = max(action, EVENT_RESTART)
     end if
   end subroutine impact
+
+  !> The impulse (on the body, N s) that closes a contact whose points move
+  !> apart at v after the impact (relative velocity, world; K the Delassus
+  !> matrix): it takes away their normal velocity n.v along n, frictionless,
+  !> p = -(n.v)/(n.K n); at a rolling contact their whole relative velocity,
+  !> K^-1 (-v) (the no-slip contact cannot start slipping). Either is a
+  !> plastic impulse: it removes energy, -(P.(v + v'))/2 >= 0.
+  subroutine closing_impulse(k, n, v, rolling, impulse, status)
+    real(wp), intent(in) :: k(3, 3), n(3), v(3)
+    logical, intent(in) :: rolling
+    real(wp), intent(out) :: impulse(3)
+    type(status_t), intent(inout) :: status
+    real(wp) :: factored(3, 3)
+    integer :: ipiv(3)
+    if (rolling) then
+      factored = k
+      impulse = -v
+      call lu_factor(factored, ipiv, status)
+      if (status%ok()) call lu_solve(factored, ipiv, impulse, status)
+    else
+      impulse = -dot_product(n, v)/dot_product(n, matmul(k, n))*n
+    end if
+  end subroutine closing_impulse
 
   subroutine add_outcome(self, text)
     class(flight_ode_t), intent(inout) :: self
@@ -348,17 +407,33 @@ contains
     self%outcome = self%outcome//text
   end subroutine add_outcome
 
-  !> The mechanism's record, with the gap at its pose.
+  !> The mechanism's record, with the gap at its pose, its point on shape_1
+  !> and the body's nearest point's velocity along the surface (the slip it
+  !> would have: the normal part is the gap's rate).
   subroutine flight_record(self, t, y, kind, status)
     class(flight_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
     integer, intent(in) :: kind
     type(status_t), intent(inout) :: status
+    integer :: n
+    real(wp) :: v(3)
     call self%mechanism_ode_t%record(t, y, kind, status)
     if (.not. status%ok()) return
-    ! the record's evaluate left the mechanism at y's pose
+    ! the record's evaluate left the mechanism at y's pose and speeds
     call update_gap(self, status)
-    if (status%ok()) self%series%monitor(self%gap_monitor, self%series%n) = self%gap%gap
+    if (.not. status%ok()) return
+    n = self%series%n
+    self%series%monitor(self%gap_monitor, n) = self%gap%gap
+    if (.not. allocated(self%gap_point)) allocate (self%gap_point(3, 0), self%gap_velocity(3, 0))
+    if (size(self%gap_point, 2) < n) then
+      call resize(self%gap_point, 3, 2*n)
+      call resize(self%gap_velocity, 3, 2*n)
+    end if
+    associate (body => self%mechanism%frames(self%body_frame))
+      self%gap_point(:, n) = self%gap%point_1
+      v = body%v + cross(body%omega, self%gap%point_2 - body%r)
+      self%gap_velocity(:, n) = v - dot_product(v, self%gap%normal)*self%gap%normal
+    end associate
   end subroutine flight_record
 
   pure function format_count(n) result(text)

@@ -169,6 +169,6 @@ module io_declarations_multibody
     declaration_t(groups='contact', name='impact_mu', unit='1', default='0', low=0.0_wp, high=10.0_wp, &
       meaning='Coulomb friction coefficient during an impact (with restitution)'), &
     declaration_t(groups='contact', name='close_speed', unit='m/s', default='0.01', low=0.0_wp, high=100.0_wp, &
-      open_low=.true., meaning='a rebound slower than this would close the contact (with restitution): the run '// &
-      'ends there (closing is not built yet)')]
+      open_low=.true., meaning='a rebound slower than this closes the contact (with restitution; a plastic '// &
+      'closing impulse): the run goes on with the closed contact (docs/contact.md, "Flight")')]
 end module io_declarations_multibody

@@ -122,7 +122,8 @@ contains
   end function digit
 
   !> Writes /<scenario>/... (see docs/outputs.md).
-  subroutine write_mechanism_series(file, scenario, input, title, s, outcome, stats, cpu, q_units, beta_units, status)
+  subroutine write_mechanism_series(file, scenario, input, title, s, outcome, stats, cpu, q_units, beta_units, status, &
+                                    losses)
     type(result_file_t), intent(inout) :: file
     character(len=*), intent(in) :: scenario, title, outcome
     type(input_text_t), intent(in) :: input
@@ -132,6 +133,7 @@ contains
     character(len=*), intent(in) :: q_units(:)      ! of each generalized coordinate
     character(len=*), intent(in) :: beta_units(:)   ! of each dependent coordinate
     type(status_t), intent(inout) :: status
+    real(wp), intent(in) :: losses(:)   ! J, the energy impacts removed up to each record (0: none)
     character(len=:), allocatable :: g, b, residual_units
     integer :: n, k
 
@@ -206,9 +208,13 @@ contains
                              'work of the law''s loads since the start (integrated with the motion)', status)
       call file%write_vector(b//'/active', s%law_active(k, :n), '1', '1 while the law acts, 0 when off', status)
     end do
-    if (s%nl > 0) call file%write_vector(g//'energy_balance', s%kinetic(:n) + s%potential(:n) - &
-      s%kinetic(1) - s%potential(1) - sum(s%law_work(:, :n), dim=1), 'J', &
+    if (s%nl > 0 .and. .not. any(losses(:n) > 0)) call file%write_vector(g//'energy_balance', s%kinetic(:n) + &
+      s%potential(:n) - s%kinetic(1) - s%potential(1) - sum(s%law_work(:, :n), dim=1), 'J', &
       'E(t) - E(0) - (work of all force laws): zero up to the integrator''s error', status)
+    if (s%nl > 0 .and. any(losses(:n) > 0)) call file%write_vector(g//'energy_balance', s%kinetic(:n) + &
+      s%potential(:n) - s%kinetic(1) - s%potential(1) - sum(s%law_work(:, :n), dim=1) + losses(:n), 'J', &
+      'E(t) - E(0) - (work of all force laws) + (energy the impacts removed, /contact/impacts): zero up to '// &
+      'the integrator''s error', status)
     if (n > 0) then
       call file%make_scale(g//'time', status)
       call file%attach_scale(g//'time', g, status)

@@ -12,7 +12,7 @@ module kinetostatics_recorder
   use kinetostatics_contact, only: contact_t
   implicit none (type, external)
   private
-  public :: mechanism_series_t
+  public :: mechanism_series_t, join_series
 
   !> The records of a mechanism's run; grown as it goes (base_series).
   type, extends(growable_series_t) :: mechanism_series_t
@@ -163,6 +163,115 @@ contains
       end associate
     end do
   end subroutine series_record
+
+  !> The records of `first` followed by those of `second`, a run that went on
+  !> with another mechanism (contact_closing: a flight, then the closed
+  !> contact). Each name list (coordinates, dependents, closures, bodies,
+  !> contacts, laws, monitors) is the union, first's then second's new ones;
+  !> a quantity holds 0 in the records of the phase that does not have it
+  !> (the caller says which records are which phase). Bodies keep second's
+  !> frames where second has them (its mechanism describes the run's end).
+  function join_series(first, second) result(s)
+    type(mechanism_series_t), intent(in) :: first, second
+    type(mechanism_series_t) :: s
+    integer, allocatable :: q1(:), q2(:), b1(:), b2(:), c1(:), c2(:), l1(:), l2(:), m1(:), m2(:), r1(:), r2(:)
+    integer :: n1, n, k, i
+    n1 = first%n
+    n = first%n + second%n
+    call union(first%q_names, second%q_names, s%q_names, q1, q2)
+    call union(first%beta_names, second%beta_names, s%beta_names, r1, r2)
+    call union(first%body_names, second%body_names, s%body_names, b1, b2)
+    call union(first%contact_names, second%contact_names, s%contact_names, c1, c2)
+    call union(first%law_names, second%law_names, s%law_names, l1, l2)
+    call union(first%monitor_names, second%monitor_names, s%monitor_names, m1, m2)
+    s%f = size(s%q_names)
+    s%r = size(s%beta_names)
+    s%nb = size(s%body_names)
+    s%nc = size(s%contact_names)
+    s%nl = size(s%law_names)
+    s%nm = size(s%monitor_names)
+    allocate (s%body_frame(s%nb), s%law_contact(s%nl), s%monitor_units(s%nm), s%closure_names(s%r))
+    s%closure_names(r1) = first%closure_names   ! one per dependent coordinate
+    s%closure_names(r2) = second%closure_names
+    s%body_frame(b1) = first%body_frame
+    s%body_frame(b2) = second%body_frame
+    s%law_contact = 0
+    do k = 1, first%nl
+      if (first%law_contact(k) > 0) s%law_contact(l1(k)) = c1(first%law_contact(k))
+    end do
+    do k = 1, second%nl
+      if (second%law_contact(k) > 0) s%law_contact(l2(k)) = c2(second%law_contact(k))
+    end do
+    s%monitor_units(m1) = first%monitor_units
+    s%monitor_units(m2) = second%monitor_units
+    call allocate_arrays(s, max(n, 2))
+    call zero_records(s)
+    s%n = n
+    s%time(:n) = [first%time(:n1), second%time(:second%n)]
+    s%kind(:n) = [first%kind(:n1), second%kind(:second%n)]
+    s%closure(:n) = [first%closure(:n1), second%closure(:second%n)]
+    s%residual(:n) = [first%residual(:n1), second%residual(:second%n)]
+    s%kinetic(:n) = [first%kinetic(:n1), second%kinetic(:second%n)]
+    s%potential(:n) = [first%potential(:n1), second%potential(:second%n)]
+    do i = 1, n1
+      call copy_record(first, i, i, q1, r1, b1, c1, l1, m1)
+    end do
+    do i = 1, second%n
+      call copy_record(second, i, n1 + i, q2, r2, b2, c2, l2, m2)
+    end do
+  contains
+    !> Record i of `from` into record j of s through the index maps.
+    subroutine copy_record(from, i, j, q, r, b, c, l, m)
+      type(mechanism_series_t), intent(in) :: from
+      integer, intent(in) :: i, j, q(:), r(:), b(:), c(:), l(:), m(:)
+      s%q(q, j) = from%q(:, i)
+      s%qd(q, j) = from%qd(:, i)
+      s%qdd(q, j) = from%qdd(:, i)
+      s%beta(r, j) = from%beta(:, i)
+      s%lambda(r, j) = from%lambda(:, i)
+      s%body_r(:, b, j) = from%body_r(:, :, i)
+      s%body_v(:, b, j) = from%body_v(:, :, i)
+      s%body_omega(:, b, j) = from%body_omega(:, :, i)
+      s%body_rot(:, :, b, j) = from%body_rot(:, :, :, i)
+      s%normal(c, j) = from%normal(:, i)
+      s%friction(:, c, j) = from%friction(:, :, i)
+      s%contact_r(:, c, j) = from%contact_r(:, :, i)
+      s%slip(:, c, j) = from%slip(:, :, i)
+      s%law_force(:, l, j) = from%law_force(:, :, i)
+      s%law_power(l, j) = from%law_power(:, i)
+      s%law_work(l, j) = from%law_work(:, i)
+      s%law_active(l, j) = from%law_active(:, i)
+      s%monitor(m, j) = from%monitor(:, i)
+    end subroutine copy_record
+  end function join_series
+
+  !> names = a's, then b's not in a; where each of a's and b's went.
+  subroutine union(a, b, names, in_a, in_b)
+    character(len=*), intent(in) :: a(:), b(:)
+    character(len=32), allocatable, intent(out) :: names(:)
+    integer, allocatable, intent(out) :: in_a(:), in_b(:)
+    integer :: k, j
+    names = a
+    in_a = [(k, k = 1, size(a))]
+    allocate (in_b(size(b)))
+    do k = 1, size(b)
+      j = findloc([(names(j) == b(k), j = 1, size(names))], .true., dim=1)
+      if (j == 0) then
+        names = [names, b(k)]
+        j = size(names)
+      end if
+      in_b(k) = j
+    end do
+  end subroutine union
+
+  !> Every record array zero (the values a phase does not have).
+  subroutine zero_records(s)
+    type(mechanism_series_t), intent(inout) :: s
+    s%time = 0; s%kind = 0; s%q = 0; s%qd = 0; s%qdd = 0; s%beta = 0; s%lambda = 0; s%closure = 0
+    s%residual = 0; s%kinetic = 0; s%potential = 0; s%body_r = 0; s%body_v = 0; s%body_omega = 0
+    s%body_rot = 0; s%normal = 0; s%friction = 0; s%contact_r = 0; s%slip = 0; s%law_force = 0
+    s%law_power = 0; s%law_work = 0; s%law_active = 0; s%monitor = 0
+  end subroutine zero_records
 
   !> The static friction of a rolling contact on body B (N, world), the cut
   !> forces of its no-slip outputs along the contact frame's x and y at the

@@ -17,7 +17,8 @@
 !> edges) because they are its own procedures.
 !>
 !> Outputs: t_start + k output_step up to t_end (the last one exactly at t_end
-!> when t_end is finite). With t_end = huge (no bound) the model must end the
+!> when t_end is finite), or with an output_origin the times origin + k
+!> output_step after t_start (a run going on from another's end, on its grid). With t_end = huge (no bound) the model must end the
 !> run by an event; the runaway guards bound the work.
 !>
 !> Runaway guards: max_steps_total internal steps in all, and a mean step
@@ -83,6 +84,9 @@ module numerics_event_driver
     real(wp) :: t_start = 0                   !< s
     real(wp) :: t_end = huge(1.0_wp)          !< s; huge: no bound (the model stops by an event)
     real(wp) :: output_step = 0.01_wp         !< s, > 0
+    !> s: the output times are output_origin + k output_step after t_start
+    !> (a run that goes on from another's end keeps its grid); huge: t_start
+    real(wp) :: output_origin = huge(1.0_wp)
     integer(int64) :: max_steps_total = 0     !< internal steps in all; 0: no limit
     real(wp) :: min_mean_step = 0             !< s at rtol 1e-6; a smaller mean step after guard_steps fails
                                               !< the run (runaway_step_limit: tighter tolerances lower it)
@@ -180,7 +184,7 @@ contains
     real(wp) :: y(size(y0)), t, t_out, cpu0, cpu1
     integer, allocatable :: fired(:)
     integer :: action
-    integer(int64) :: k, clock_rate, clock_last, clock_now, steps_at_output
+    integer(int64) :: k, k_origin, clock_rate, clock_last, clock_now, steps_at_output
     logical :: root_found, chunk_ended
     character(len=:), allocatable :: label
 
@@ -218,8 +222,13 @@ contains
 
     k = 0
     steps_at_output = 0
+    k_origin = first_output_index(options)
     do
-      t_out = options%t_start + real(k + 1, wp)*options%output_step
+      if (options%output_origin < huge(options%output_origin)) then
+        t_out = options%output_origin + real(k_origin + k, wp)*options%output_step
+      else
+        t_out = options%t_start + real(k + 1, wp)*options%output_step
+      end if
       if (t_out > options%t_end) t_out = options%t_end
       system%t_output = t_out
       call integrator%advance(t_out, t, y, status, root_found, fired, chunk_ended)
@@ -347,6 +356,18 @@ contains
     end subroutine report_progress
   end subroutine drive
 
+  !> With an output origin: the index of the first output time after t_start
+  !> (origin + index output_step > t_start); 1 without one.
+  pure integer(int64) function first_output_index(options) result(k)
+    type(driver_options_t), intent(in) :: options
+    k = 1
+    if (.not. options%output_origin < huge(options%output_origin)) return
+    k = int(floor((options%t_start - options%output_origin)/options%output_step), int64) + 1
+    do while (options%output_origin + real(k, wp)*options%output_step <= options%t_start)
+      k = k + 1
+    end do
+  end function first_output_index
+
   subroutine check_driver_options(options, status)
     type(driver_options_t), intent(in) :: options
     type(status_t), intent(inout) :: status
@@ -356,6 +377,8 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'driver: t_end must be greater than t_start')
     else if (.not. (options%output_step > 0 .and. options%output_step < huge(1.0_wp))) then
       call set_status(status, STATUS_INVALID_INPUT, 'driver: output_step must be a finite number > 0')
+    else if (options%output_origin < huge(1.0_wp) .and. .not. (options%output_origin <= options%t_start)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'driver: output_origin must be at or before t_start')
     else if (.not. (options%min_mean_step >= 0)) then
       call set_status(status, STATUS_INVALID_INPUT, 'driver: min_mean_step must be >= 0')
     else if (options%t_end < huge(1.0_wp)) then

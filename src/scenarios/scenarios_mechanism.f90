@@ -23,6 +23,7 @@ module scenarios_mechanism
   use geometry_surface, only: surface_t
   use scenarios_report, only: end_report
   use contact_flight, only: flight_ode_t, impact_record_t
+  use contact_closing, only: drive_flight
   implicit none (type, external)
   private
   public :: run_mechanism, mechanism_driver_options
@@ -66,9 +67,11 @@ contains
     type(result_file_t) :: file
     type(driver_result_t) :: result
     type(status_t) :: run_status, write_status
-    real(wp), allocatable :: y0(:)
+    real(wp), allocatable :: y0(:), losses(:)
     logical :: complete
     character(len=:), allocatable :: message, outcome
+    character(len=8), allocatable :: units(:), dependent_units(:)
+    integer, allocatable :: in_flight(:)
 
     y0 = sys%initial_state(q0, qd0)
     call sys%check_start(y0, status)
@@ -90,20 +93,34 @@ contains
     call log_info(scenario//': '//format_real(solver%duration)//' s, output every '// &
                   format_real(solver%output_step)//' s')
     call sys%start_series(nint(solver%duration/solver%output_step) + 2)
-    call drive(sys, y0, mechanism_driver_options(scenario, solver), result, run_status)
+    units = q_units
+    dependent_units = beta_units
+    select type (sys)
+    class is (flight_ode_t)
+      ! a flight may close its contact and go on closed (contact_closing)
+      call drive_flight(sys, y0, mechanism_driver_options(scenario, solver), result, run_status, in_flight)
+      units = sys%q_units
+      dependent_units = sys%beta_units
+    class default
+      call drive(sys, y0, mechanism_driver_options(scenario, solver), result, run_status)
+    end select
     select case (result%outcome)
     case (DRIVE_END_TIME)
       outcome = 'the end of the simulated time'
+      ! what happened on the way (a flight's closing)
+      if (allocated(in_flight) .and. len(sys%outcome) > 0) outcome = sys%outcome//'; '//outcome
     case (DRIVE_EVENT_STOP)
       outcome = sys%outcome
     case default
       outcome = 'failed: '//run_status%text()
     end select
+    losses = impact_losses(sys)
     call write_mechanism_series(file, scenario, input, run%title, sys%series, outcome, result%stats, result%cpu, &
-                                q_units, beta_units, write_status)
+                                units, dependent_units, write_status, losses)
     select type (sys)
     class is (flight_ode_t)
       call write_impacts(file, sys%impacts, write_status)
+      call write_phases(file, sys, in_flight, write_status)
     end select
     ! the grid around the first contact's path (u, v are its first two coordinates)
     if (present(surface)) call write_surface_grid_around(file, surface, sys%series%q(1, :sys%series%n), &
@@ -115,8 +132,20 @@ contains
     if (write_status%ok() .and. sys%series%n > 0) call write_xdmf(file, scenario, sys%series, write_status, shapes)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
-    call report(scenario, sys%series, result%stats, result%cpu, q_units, file%final_path(), run, complete, &
-                message, outcome, sys%chart_changes, sys%mechanism, write_status, impacts_of(sys))
+    select type (sys)
+    class is (flight_ode_t)
+      if (allocated(sys%closed)) then
+        ! the joined series' contacts and bodies are the closed contact's
+        call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
+                    message, outcome, sys%chart_changes, sys%closed%ode%mechanism, write_status, sys%impacts, losses)
+      else
+        call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
+                    message, outcome, sys%chart_changes, sys%mechanism, write_status, sys%impacts, losses)
+      end if
+    class default
+      call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
+                  message, outcome, sys%chart_changes, sys%mechanism, write_status, impacts_of(sys), losses)
+    end select
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
   end subroutine run_mechanism
 
@@ -130,6 +159,30 @@ contains
       impacts = sys%impacts
     end select
   end function impacts_of
+
+  !> The energy the impacts removed up to each record (J): a record at an
+  !> impact holds the state after it. Zero without impacts.
+  function impact_losses(sys) result(losses)
+    class(mechanism_ode_t), intent(in) :: sys
+    real(wp), allocatable :: losses(:)
+    type(impact_record_t), allocatable :: impacts(:)
+    integer :: i
+    impacts = impacts_of(sys)
+    losses = [(sum(impacts%energy_lost, mask=impacts%time <= sys%series%time(i)), i = 1, sys%series%n)]
+  end function impact_losses
+
+  !> Per record whether the flight's contact was open (1, in flight) or
+  !> closed (0), /contact/contacts/<name>/open (docs/outputs.md).
+  subroutine write_phases(file, flight, in_flight, status)
+    type(result_file_t), intent(inout) :: file
+    type(flight_ode_t), intent(in) :: flight
+    integer, intent(in) :: in_flight(:)
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok() .or. flight%series%n == 0) return
+    call file%write_integers('/contact/contacts/'//flight%contact_name//'/open', in_flight(:flight%series%n), '1', &
+                             '1 while the contact is open (the body in flight, its gap in /contact/measurements), '// &
+                             '0 while closed', status)
+  end subroutine write_phases
 
   !> The impacts table of a flight (docs/outputs.md, /contact/impacts), if
   !> it had any: one row per impact.
@@ -196,7 +249,7 @@ contains
   !> The printed summary (angles in degrees) and, with --summary-json, the
   !> same numbers as JSON (SI).
   subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, outcome, chart_changes, m, &
-                    status, impacts)
+                    status, impacts, losses)
     character(len=*), intent(in) :: scenario, path, message, outcome
     integer, intent(in) :: chart_changes   ! coordinates re-based on a new chart (docs/multibody.md, events)
     type(mechanism_series_t), intent(in) :: s
@@ -208,6 +261,7 @@ contains
     logical, intent(in) :: complete
     type(status_t), intent(inout) :: status
     type(impact_record_t), intent(in) :: impacts(:)
+    real(wp), intent(in) :: losses(:)   ! J, the impacts' energy lost up to each record
     type(summary_t) :: summary
     real(wp) :: e0, scale
     integer :: n, k, i
@@ -261,8 +315,9 @@ contains
     if (s%nl > 0) then
       call summary%add('law_work', 'work of the force laws', sum(s%law_work(:, n)), 'J')
       call summary%add('energy_balance_error', 'energy balance error', &
-                       (s%kinetic(n) + s%potential(n) - e0 - sum(s%law_work(:, n)))/scale, '1', &
-                       '(E(t) - E(0) - work, same scale)')
+                       (s%kinetic(n) + s%potential(n) - e0 - sum(s%law_work(:, n)) + losses(n))/scale, '1', &
+                       trim(merge('(E(t) - E(0) - work + impacts'' losses, same scale)', &
+                                  '(E(t) - E(0) - work, same scale)                  ', losses(n) > 0)))
     end if
     if (s%r > 0) call summary%add('closure_residual_max', 'closure residual max', maxval(s%closure(:n)), 'm')
     if (chart_changes > 0) call summary%add_count('chart_changes', 'chart changes', chart_changes, &

@@ -15,8 +15,9 @@
 #             contacts and their forces;
 #   drop      flight: a ball starting open lands (exit 0, "landing") at the
 #             closed-form time and speed; sunk: an open start in the floor
-#             is refused (exit 1); bounce: with restitution the ball bounces,
-#             the impacts table and the summary say so.
+#             is refused (exit 1); bounce: with restitution the ball bounces
+#             until the contact closes, the impacts table, the phases and the
+#             summary say so.
 set -u
 slidesim=$1
 repo=$(cd "$(dirname "$0")/../.." && pwd)
@@ -75,26 +76,39 @@ sed -e "s|output = 'drop.h5'|output = 'sunk.h5'|" -e 's|position = 0, 0, 1.1|pos
 run_case sunk 1 "sunk.nml:6: &contact name = 'on_floor': start = 'open' but body 'ball' touches or overlaps"
 
 # bounces: with restitution 0.5 the dropped ball bounces; the sixth rebound,
-# 0.069 m/s, is below close_speed = 0.1 m/s and ends the run (closing is not
-# built); the impacts table holds the six, energy lost m/2 (v_(k-1)^2 - v_k^2)
+# 0.069 m/s, is below close_speed = 0.1 m/s: the contact closes there (a
+# plastic impact) and the ball rests on the floor to the end; the impacts
+# table holds the six, energy lost m/2 (v_(k-1)^2 - v_k^2), all of m/2 v_5^2
+# at the closing; `open` marks the records in flight
 sed -e "s|output = 'drop.h5'|output = 'bounce.h5'|" -e 's|, velocity = 0.5, 0, 0||' \
     -e "s|start = 'open'|start = 'open', restitution = 0.5, close_speed = 0.1|" "$work/drop.nml" > "$work/bounce.nml"
 run_case bounce 0
 grep -qE "impacts +6 " "$work/bounce.out" || fail "bounce: the summary does not count 6 impacts"
-grep -qF "would close at the impact" "$work/bounce.out" || fail "bounce: the outcome does not say the contact would close"
+grep -qF "contact 'on_floor' closed at the impact at t = 1.326577 s" "$work/bounce.out" ||
+  fail "bounce: the outcome does not say the contact closed"
+grep -qF "the end of the simulated time" "$work/bounce.out" || fail "bounce: the run does not go on to the end"
 if [ -n "$h5python" ] && [ -f "$work/bounce.h5" ]; then
-  "$h5python" - "$work/bounce.h5" <<'EOF' || fail "bounce: the impacts table"
+  "$h5python" - "$work/bounce.h5" <<'EOF' || fail "bounce: the impacts table, the phases"
 import sys, h5py, numpy as np
 f = h5py.File(sys.argv[1], 'r')
 t = f['contact/impacts']
 v0 = np.sqrt(2 * 9.80665 * 1.0)
 v = v0 * 0.5 ** np.arange(7)
+v[6] = 0   # the closing impact is plastic
 ok = (np.allclose(t['normal_speed_before'][:], -v[:6], atol=1e-8)
       and np.allclose(t['normal_speed_after'][:], v[1:], atol=1e-8)
       and np.allclose(t['energy_lost'][:], 0.5 * (v[:6] ** 2 - v[1:] ** 2), atol=1e-8)
       and list(t['contact'][:]) == [1] * 6
       and t['energy_lost'].attrs['units'] in (b'J', 'J'))
-print('bounce: impacts table', 'matches' if ok else 'differs', t['normal_speed_after'][:])
+c = f['contact']
+open_ = c['contacts/on_floor/open'][:]
+time = c['time'][:]
+switch = int(np.sum(open_))
+ok = ok and open_[:switch].all() and not open_[switch:].any() and time[switch] == time[switch - 1]
+ok = ok and abs(time[-1] - 2) < 1e-12 and abs(c['bodies/ball/position'][-1, 2] - 0.1) < 1e-9
+ok = ok and abs(c['contacts/on_floor/normal_force'][-1] - 9.80665) < 1e-8
+ok = ok and c['contacts/on_floor/open'].attrs['units'] in (b'1', '1')
+print('bounce: impacts table and phases', 'match' if ok else 'differ', t['normal_speed_after'][:], switch)
 sys.exit(0 if ok else 1)
 EOF
 fi

@@ -1,15 +1,20 @@
-!> Flight (issue 25, first slice): a contact that starts open leaves its body
-!> where &body puts it, flying free under gravity, and the run ends where
-!> the gap falls to zero (contact_flight). From namelist text through the
-!> contact scenario's reader:
+!> Flight (issue 25): a contact that starts open leaves its body where &body
+!> puts it, flying free under gravity; without restitution the run ends
+!> where the gap falls to zero (contact_flight), with it the body bounces
+!> until a rebound is below close_speed and the contact closes
+!> (contact_closing). From namelist text through the contact scenario's
+!> reader:
 !>   - a ball (radius r) dropped with its lowest point h above a plane, moving
 !>     sideways at u and spinning: it lands at t = sqrt(2 h/g) with the
 !>     approach speed g t, at x = u t; the recorded gap is h - g t^2/2 at
 !>     every record; the energy stays; a sphere's angular velocity stays
 !>     (torque-free, isotropic) through the free rotation's chart changes;
+!>   - bounces of e = 0.5 (see bouncing_ball), closing at the partial Zeno
+!>     sum, then at rest; a ball landing with spin and sideways speed, rolling
+!>     after closing (rolling_on);
 !>   - refused: an open start that touches or overlaps, more than one
-!>     contact or body, friction on an open start (unused: the run ends at
-!>     the landing).
+!>     contact or body, friction on an open start without restitution
+!>     (unused: the run ends at the landing).
 !> Tolerances: rtol = atol = 1e-12 over ~100 steps of a polynomial motion
 !> (the parabola is a degree-2 polynomial: Adams reproduces it nearly
 !> exactly), so positions to 1e-10 m; the landing root is located to
@@ -19,9 +24,11 @@ program test_flight
   use base_constants, only: standard_gravity
   use base_status, only: status_t
   use base_vector, only: cross
-  use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_EVENT_STOP, RECORD_EVENT
+  use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_EVENT_STOP, DRIVE_END_TIME, &
+    RECORD_EVENT, RECORD_OUTPUT
   use contact_model, only: contact_system_t, contact_convergence_coefficient
   use contact_flight, only: flight_ode_t, build_flight
+  use contact_closing, only: drive_flight
   use io_input, only: input_text_t, input_from_text
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
@@ -35,6 +42,7 @@ program test_flight
   call dropped_ball()
   call bouncing_ball()
   call rolling_after_impact()
+  call rolling_on()
   call refusals()
   call finish_tests('test_flight')
 
@@ -138,11 +146,13 @@ contains
   end subroutine dropped_ball
 
   !> Runs an open-start input to its end; the driver's outcome.
-  subroutine run(text, label, flight, duration, outcome)
+  subroutine run(text, label, flight, duration, outcome, in_flight)
     character(len=*), intent(in) :: text, label
     type(flight_ode_t), intent(out), target :: flight
     real(wp), intent(in) :: duration
     integer, intent(out) :: outcome
+    integer, allocatable, intent(out), optional :: in_flight(:)
+    integer, allocatable :: phases(:)
     real(wp), allocatable :: q0(:), qd0(:)
     type(status_t) :: st
     type(driver_options_t) :: options
@@ -158,35 +168,51 @@ contains
     options%output_step = 0.01_wp
     options%progress_seconds = 0
     call flight%start_series(300)
-    call drive(flight, flight%initial_state(q0, qd0), options, result, st)
+    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, phases)
     call check(st%ok(), label//': ran: '//st%text())
     outcome = result%outcome
+    if (present(in_flight)) in_flight = phases
   end subroutine run
 
   !> e = 0.5 (energetic; frictionless and spinless it is Newton's too): the
   !> k-th impact meets the ball at v_(k-1) = e^(k-1) v_0 (v_0 = sqrt(2 g h))
   !> and sends it up at v_k = e v_(k-1); between impacts the gap is
   !> v_k s - g s^2/2 (s since the impact): apex e^(2k) h after a flight of
-  !> 2 v_k/g. The sixth rebound, e^6 v_0 = 0.069 m/s, is below
-  !> close_speed = 0.1 m/s: the contact would close there and the run ends.
+  !> 2 v_k/g. Without closing this never ends (Zeno): the impacts come at
+  !> t_0 (1 + 2 sum_(j<k) e^j), t_0 = v_0/g, and pile up at
+  !> t_inf = t_0 (1 + 2e/(1 - e)). The sixth rebound, e^6 v_0 = 0.069 m/s, is
+  !> below close_speed = 0.1 m/s: the contact closes at the sixth impact, at
+  !> t_0 (1 + 2e (1 - e^5)/(1 - e)), 2 t_0 e^6/(1 - e) before t_inf (the
+  !> flights it cut off); that impact is plastic (m v_5, all of m v_5^2/2
+  !> lost), and the ball stays on the floor to the end (gap 0, N = m g),
+  !> sliding on at u with its spin (frictionless: neither ever changes).
   !> Each impact time is a root located to ~1e-14 s after flights integrated
   !> at rtol 1e-12: 1e-9 s over six; speeds and gaps to 1e-9.
+  !> At the switch the flight's last record and the closed contact's first
+  !> hold the same state: the pose is the one the contact search starts from
+  !> (moved by the gap left at the root, v_5 times the root's time error,
+  !> ~1e-14 m) and the twist the least-squares fit of the flight's (J^T J
+  !> solved by Cholesky: 1e-16 times its condition, ~1e2): 1e-12 m and
+  !> 1e-12 of v_0 (m/s, rad/s x R).
   subroutine bouncing_ball()
     type(flight_ode_t), target :: flight
-    integer :: outcome, k, i, n, j
-    real(wp) :: v0, t_k(6), v_k(0:6), worst_gap, worst_energy, e_lost, since, expected
+    integer :: outcome, k, i, n, j, switch
+    integer, allocatable :: in_flight(:)
+    real(wp) :: v0, t0, t_k(6), v_k(0:6), worst_gap, worst_energy, e_lost, since, expected, t_inf, worst_rest, &
+                worst_spin
     real(wp), allocatable :: e(:)
-    real(wp), parameter :: restitution = 0.5_wp
+    real(wp), parameter :: restitution = 0.5_wp, mass = 0.2_wp
     call run(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', restitution = 0.5, '// &
-                     'close_speed = 0.1'), 'bouncing ball', flight, 5.0_wp, outcome)
-    call check(outcome == DRIVE_EVENT_STOP, 'bouncing ball: ends at an event')
-    call check(index(flight%outcome, 'would close at the impact') > 0, &
-               'bouncing ball: ends where the rebound is below close_speed: '//flight%outcome)
+                     'close_speed = 0.1'), 'bouncing ball', flight, 3.0_wp, outcome, in_flight)
+    call check(outcome == DRIVE_END_TIME, 'bouncing ball: runs to the end, closed after the bounces')
+    call check(index(flight%outcome, 'contact ''on_floor'' closed at the impact') == 1, &
+               'bouncing ball: the outcome says the contact closed: '//flight%outcome)
     call check(size(flight%impacts) == 6, 'bouncing ball: six impacts (e^6 v0 < close_speed < e^5 v0)')
     if (size(flight%impacts) /= 6) return
     v0 = sqrt(2*g*h)
+    t0 = v0/g
     v_k = [(restitution**k*v0, k = 0, 6)]
-    t_k(1) = v0/g
+    t_k(1) = t0
     do k = 2, 6
       t_k(k) = t_k(k - 1) + 2*v_k(k - 1)/g
     end do
@@ -195,37 +221,87 @@ contains
         call check_close(impact%time, t_k(k), 0.0_wp, 1e-9_wp, 'bouncing ball: impact time after flights 2 v_k/g (s)')
         call check_close(impact%normal_speed_before, -v_k(k - 1), 0.0_wp, 1e-9_wp, &
                          'bouncing ball: approach speed e^(k-1) v0 (m/s)')
-        call check_close(impact%normal_speed_after, v_k(k), 0.0_wp, 1e-9_wp, 'bouncing ball: rebound e^k v0 (m/s)')
-        call check_close(impact%normal_impulse, 0.2_wp*(v_k(k - 1) + v_k(k)), 0.0_wp, 1e-9_wp, &
-                         'bouncing ball: normal impulse m (v_(k-1) + v_k) (N s)')
-        call check_close(impact%energy_lost, 0.1_wp*(v_k(k - 1)**2 - v_k(k)**2), 0.0_wp, 1e-9_wp, &
-                         'bouncing ball: energy lost m/2 (v_(k-1)^2 - v_k^2) (J)')
+        if (k < 6) then
+          call check_close(impact%normal_speed_after, v_k(k), 0.0_wp, 1e-9_wp, 'bouncing ball: rebound e^k v0 (m/s)')
+          call check_close(impact%normal_impulse, mass*(v_k(k - 1) + v_k(k)), 0.0_wp, 1e-9_wp, &
+                           'bouncing ball: normal impulse m (v_(k-1) + v_k) (N s)')
+          call check_close(impact%energy_lost, mass/2*(v_k(k - 1)**2 - v_k(k)**2), 0.0_wp, 1e-9_wp, &
+                           'bouncing ball: energy lost m/2 (v_(k-1)^2 - v_k^2) (J)')
+        else
+          call check_close(impact%normal_speed_after, 0.0_wp, 0.0_wp, 1e-12_wp, &
+                           'bouncing ball: the closing impact leaves no normal speed (m/s)')
+          call check_close(impact%normal_impulse, mass*v_k(5), 0.0_wp, 1e-9_wp, &
+                           'bouncing ball: the closing impact is plastic, m v_5 (N s)')
+          call check_close(impact%energy_lost, mass/2*v_k(5)**2, 0.0_wp, 1e-9_wp, &
+                           'bouncing ball: the closing impact takes all of m v_5^2/2 (J)')
+        end if
       end associate
     end do
+    t_inf = t0*(1 + 2*restitution/(1 - restitution))
+    call check_close(flight%impacts(6)%time, t0*(1 + 2*restitution*(1 - restitution**5)/(1 - restitution)), &
+                     0.0_wp, 1e-9_wp, 'bouncing ball: closes at the partial Zeno sum t0 (1 + 2e (1 - e^5)/(1 - e)) (s)')
+    call check_close(t_inf - flight%impacts(6)%time, 2*t0*restitution**6/(1 - restitution), 0.0_wp, 1e-9_wp, &
+                     'bouncing ball: closes 2 t0 e^6/(1 - e) before the Zeno time t0 (1 + 2e/(1 - e)) (s)')
     associate (s => flight%series)
       n = s%n
+      call check(size(in_flight) == n, 'bouncing ball: a phase for every record')
+      if (size(in_flight) /= n) return
+      call check_close(s%time(n), 3.0_wp, 0.0_wp, 1e-12_wp, 'bouncing ball: runs to the end (s)')
+      switch = count(in_flight == 1)
+      call check(all(in_flight(:switch) == 1) .and. all(in_flight(switch + 1:) == 0), &
+                 'bouncing ball: in flight, then closed')
+      call check(s%time(switch) == flight%impacts(6)%time .and. s%time(switch + 1) == flight%impacts(6)%time, &
+                 'bouncing ball: the flight''s last record and the closed contact''s first at the closing')
+      call check(s%kind(switch + 1) == RECORD_EVENT, 'bouncing ball: the switch is an event record')
+      call check_close(maxval(abs(s%body_r(:, 1, switch + 1) - s%body_r(:, 1, switch))), 0.0_wp, 0.0_wp, 1e-12_wp, &
+                       'bouncing ball: the position continuous across the switch (m)')
+      call check_close(maxval(abs(s%body_rot(:, :, 1, switch + 1) - s%body_rot(:, :, 1, switch))), 0.0_wp, 0.0_wp, &
+                       1e-12_wp, 'bouncing ball: the orientation continuous across the switch')
+      call check_close(maxval(abs(s%body_v(:, 1, switch + 1) - s%body_v(:, 1, switch))), 0.0_wp, 0.0_wp, &
+                       1e-12_wp*v0, 'bouncing ball: the velocity continuous across the switch (m/s)')
+      call check_close(radius*maxval(abs(s%body_omega(:, 1, switch + 1) - s%body_omega(:, 1, switch))), 0.0_wp, &
+                       0.0_wp, 1e-12_wp*v0, 'bouncing ball: the angular velocity continuous across the switch (R rad/s)')
       worst_gap = 0
       worst_energy = 0
+      worst_rest = 0
+      worst_spin = 0
       e = s%kinetic(:n) + s%potential(:n)
       do i = 1, n
-        ! the closed form: falling from h before the first impact, then rising from impact j at v_j
+        ! the closed form: falling from h before the first impact, then rising from impact j at v_j, at rest
+        ! (gap 0) once closed
         j = count(t_k <= s%time(i))
         if (j == 0) then
           expected = h - g*s%time(i)**2/2
-        else
+        else if (j < 6) then
           since = s%time(i) - t_k(j)
           expected = v_k(j)*since - g*since**2/2
+        else
+          expected = 0
+          worst_rest = max(worst_rest, norm2(s%body_v(:, 1, i) - [u, 0.0_wp, 0.0_wp]), abs(s%body_r(3, 1, i) - radius))
+          worst_spin = max(worst_spin, norm2(s%body_omega(:, 1, i) - spin))
         end if
         worst_gap = max(worst_gap, abs(s%monitor(1, i) - expected))
         ! the record at an impact holds the state after it (its time is the table's)
         e_lost = sum(flight%impacts%energy_lost, mask=flight%impacts%time <= s%time(i))
         worst_energy = max(worst_energy, abs(e(i) + e_lost - e(1)))
       end do
+      call check(s%monitor_names(1) == 'on_floor.gap', 'bouncing ball: the gap is the first measurement')
       call check_close(worst_gap, 0.0_wp, 0.0_wp, 1e-9_wp, &
-                       'bouncing ball: gap at every record on the closed-form bounces, apexes e^(2k) h (m)')
+                       'bouncing ball: gap at every record on the closed-form bounces, apexes e^(2k) h, 0 closed (m)')
       call check_close(worst_energy, 0.0_wp, 0.0_wp, 1e-9_wp*e(1), &
-                       'bouncing ball: energy kept in flight, lost only at the impacts (the table''s sum) (J)')
-      call check(count(s%kind(:n) == RECORD_EVENT) >= 6, 'bouncing ball: a record at every impact')
+                       'bouncing ball: energy kept in flight and at rest, lost only at the impacts (the table''s sum) (J)')
+      call check_close(worst_rest, 0.0_wp, 0.0_wp, 1e-10_wp, &
+                       'bouncing ball: on the floor once closed, sliding at u (m/s, m)')
+      ! the closed contact integrates the spin through its chain's angles (phi, u2, v2): ten turns in 1.7 s
+      ! at rtol 1e-12, ~1e-11 of |Omega| per turn
+      call check_close(worst_spin, 0.0_wp, 0.0_wp, 1e-10_wp*norm2(spin), &
+                       'bouncing ball: the spin kept once closed (frictionless) (rad/s)')
+      call check_close(s%normal(1, n), mass*g, 0.0_wp, 1e-9_wp, 'bouncing ball: carried by the floor, N = m g (N)')
+      call check(all(s%normal(1, :switch) == 0), 'bouncing ball: no normal force in flight')
+      call check(count(s%kind(:n) == RECORD_EVENT) >= 7, 'bouncing ball: a record at every impact and the switch')
+      call check(all(pack(abs(s%time(:n)/0.01_wp - nint(s%time(:n)/0.01_wp)), s%kind(:n) == RECORD_OUTPUT) < 1e-9_wp), &
+                 'bouncing ball: the closed contact''s outputs on the run''s grid (multiples of 0.01 s)')
+      call check(count(s%kind(:n) == RECORD_OUTPUT) == 300, 'bouncing ball: one output every 0.01 s to 3 s')
     end associate
   end subroutine bouncing_ball
 
@@ -262,6 +338,49 @@ contains
     end associate
   end subroutine rolling_after_impact
 
+  !> The ball of rolling_after_impact (u = 0.3 m/s sideways, spin -5 rad/s
+  !> about y, dropped 0.2 m, impact mu 10: it leaves the first impact rolling,
+  !> v_x = (5 u + 2 R Omega)/7) with a rolling contact: its later impacts meet
+  !> no slip and leave v_x; the eighth rebound, e^8 v0 = 0.0077 m/s, is below
+  !> the default close_speed 0.01 m/s and the contact closes; the ball rolls
+  !> on at v_x (a sphere rolling on a level plane keeps its speed): x = u t_1
+  !> + v_x (t - t_1) at every record after the first impact t_1, omega_y =
+  !> v_x/R, N = m g. Tolerances as bouncing_ball's (1e-9).
+  subroutine rolling_on()
+    type(flight_ode_t), target :: flight
+    integer :: outcome, i, n
+    integer, allocatable :: in_flight(:)
+    real(wp), parameter :: omega_y = -5.0_wp, v_x = (5*u + 2*radius*omega_y)/7, drop = 0.2_wp
+    real(wp) :: t_1, worst_x, worst_spin
+    call run(replace(replace(ball_input(drop, ''), 'start = ''open''', 'start = ''open'', restitution = 0.5, '// &
+                     'impact_mu = 10, rolling = .true.'), 'angular_velocity = '//number(spin(1))//', '// &
+                     number(spin(2))//', '//number(spin(3)), 'angular_velocity = 0, '//number(omega_y)//', 0'), &
+             'rolling on', flight, 1.0_wp, outcome, in_flight)
+    call check(outcome == DRIVE_END_TIME, 'rolling on: runs to the end')
+    call check(size(flight%impacts) == 8, 'rolling on: eight impacts (e^8 v0 < close_speed < e^7 v0)')
+    call check(flight%closing .and. allocated(flight%closed), 'rolling on: the contact closed')
+    if (size(flight%impacts) < 1 .or. .not. allocated(flight%closed)) return
+    t_1 = flight%impacts(1)%time
+    call check_close(t_1, sqrt(2*drop/g), 0.0_wp, 1e-10_wp, 'rolling on: the first landing at sqrt(2 h/g) (s)')
+    associate (s => flight%series)
+      n = s%n
+      worst_x = 0
+      worst_spin = 0
+      do i = 1, n
+        if (s%time(i) < t_1) cycle
+        worst_x = max(worst_x, abs(s%body_r(1, 1, i) - (u*t_1 + v_x*(s%time(i) - t_1))))
+        worst_spin = max(worst_spin, radius*abs(s%body_omega(2, 1, i) - v_x/radius))
+      end do
+      call check_close(worst_x, 0.0_wp, 0.0_wp, 1e-9_wp, 'rolling on: x = u t_1 + v_x (t - t_1) after the first '// &
+                       'landing, in flight and rolling (m)')
+      call check_close(worst_spin, 0.0_wp, 0.0_wp, 1e-9_wp, 'rolling on: omega_y = v_x/R throughout (R rad/s)')
+      call check(in_flight(n) == 0, 'rolling on: closed at the end')
+      call check_close(s%normal(1, n), 0.2_wp*g, 0.0_wp, 1e-9_wp, 'rolling on: N = m g once rolling (N)')
+      call check_close(s%body_r(3, 1, n), radius, 0.0_wp, 1e-10_wp, 'rolling on: on the floor (m)')
+      call check_close(s%body_v(3, 1, n), 0.0_wp, 0.0_wp, 1e-10_wp, 'rolling on: no vertical speed (m/s)')
+    end associate
+  end subroutine rolling_on
+
   subroutine refusals()
     type(flight_ode_t) :: flight
     real(wp), allocatable :: q0(:), qd0(:)
@@ -277,8 +396,12 @@ contains
                'an open start among two contacts is refused: '//st%text())
     call build(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', friction = ''coulomb'', mu = 0.5'), &
                'friction', flight, q0, qd0, st)
-    call check(.not. st%ok() .and. index(st%text(), 'takes no friction') > 0, &
-               'friction with an open start is refused (unused: the run ends at the landing): '//st%text())
+    call check(.not. st%ok() .and. index(st%text(), 'needs restitution') > 0, &
+               'friction with an open start without restitution is refused (unused: the run ends at the '// &
+               'landing): '//st%text())
+    call build(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', friction = ''coulomb'', '// &
+                       'mu = 0.5, restitution = 0.5'), 'friction with restitution', flight, q0, qd0, st)
+    call check(st%ok(), 'friction with an open start and restitution: the closed contact''s: '//st%text())
     call build(replace(ball_input(h, ''), 'start = ''open''', 'restitution = 0.5'), 'closed with restitution', &
                flight, q0, qd0, st)
     call check(.not. st%ok() .and. index(st%text(), 'restitution') > 0 .and. index(st%text(), 'never lands') > 0, &
