@@ -6,7 +6,8 @@
 !> that hold exactly (numerics_least_squares' change of variables, never a
 !> penalty). For a design x the slide is built (spline through the points,
 !> tube, check that it does not fold) and the cuboid (design_cuboid_ride)
-!> rides it from each start; the cost (4.49) is
+!> rides it from each start, each ride one library ride (design_ride_job's
+!> run_ride, body BODY_CUBOID); the cost (4.49) is
 !>   F(x) = 1/2 sum_i [max_t |a_i(x)|]^2 + constraint terms
 !> and the tipping lever arm of every ride must stay at most lever_limit,
 !> measured by the tipping excess g_i = max_t e_i (design_cuboid_ride: <= 0
@@ -56,7 +57,8 @@ module design_geometry_optimization
     build_design_slide, start_points
   use numerics_least_squares, only: least_squares_problem_t, least_squares_options_t, &
     least_squares_result_t, solve_least_squares
-  use design_cuboid_ride, only: cuboid_t, cuboid_start_t, cuboid_ride_options_t, cuboid_ride_t, ride_cuboid
+  use design_cuboid_ride, only: cuboid_t, cuboid_start_t, cuboid_ride_options_t, cuboid_ride_t
+  use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride, BODY_CUBOID
   implicit none (type, external)
   private
   public :: slide_design_t, optimization_setup_t, design_evaluation_t, optimization_result_t
@@ -196,10 +198,20 @@ contains
     integer, intent(in) :: i
     type(cuboid_ride_t), intent(out) :: ride
     type(status_t), intent(out) :: status
+    type(ride_description_t) :: description
+    type(ride_job_result_t) :: job
     real(wp) :: u_min, u_max
     call slide%centerline%domain(u_min, u_max)
-    call ride_cuboid(slide, setup%body, cuboid_start_t(u=u_min, v=setup%start_v, speed=setup%start_speed, &
-                     angle=setup%start_angles(i)), u_max, options, ride, status)
+    description%body = BODY_CUBOID
+    description%with_water = .false.
+    allocate (description%water%slide, source=slide)
+    description%cuboid = setup%body
+    description%cuboid_start = cuboid_start_t(u=u_min, v=setup%start_v, speed=setup%start_speed, &
+                                              angle=setup%start_angles(i))
+    description%cuboid_options = options
+    job = run_ride(description)
+    ride = job%cuboid
+    status = job%status
     if (.not. status%ok()) call prefix_status(status, 'ride from '//format_short(setup%start_angles(i)*180/pi)// &
                                               ' deg')
   end subroutine ride_one

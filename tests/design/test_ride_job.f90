@@ -3,7 +3,10 @@
 !> (its water computed, a water given, a dry ride); a water that fails
 !> stops before the rider and says so; the progress lines go to the
 !> caller's log and nowhere without one (ctest fails this test on any
-!> 'unasked:' line in its output: tests/CMakeLists.txt).
+!> 'unasked:' line in its output: tests/CMakeLists.txt). The cuboid of the
+!> geometry optimisation (BODY_CUBOID) rides through run_ride too: the same
+!> figures as design_cuboid_ride's ride_cuboid, to the bit, the closed form
+!> on a straight incline, a water or limits refused.
 program test_ride_job
   use base_kinds, only: wp
   use base_status, only: status_t
@@ -11,7 +14,10 @@ program test_ride_job
   use water_run, only: water_result_t, compute_water
   use design_ride_evaluation, only: new_ride_limit
   use design_ride_report, only: ride_report_t, evaluate_ride
-  use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
+  use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride, BODY_CUBOID
+  use design_cuboid_ride, only: cuboid_ride_t, ride_cuboid
+  use geometry_tube, only: tube_surface_t, new_straight_tube
+  use base_constants, only: standard_gravity
   use io_input, only: input_text_t, input_from_text
   use scenarios_water, only: build_water
   use testing, only: check, finish_tests
@@ -29,6 +35,7 @@ program test_ride_job
     call check_water_failure(description)
     call check_log(description)
   end if
+  call check_cuboid()
   call finish_tests('test_ride_job')
 
 contains
@@ -129,6 +136,60 @@ contains
     job = run_ride(unasked)
     call check(job%status%ok() .and. logged == '', 'without a log: runs, nothing logged')
   end subroutine check_log
+
+  !> The cuboid down a straight tube inclined by 0.3 rad, 4 m, from the
+  !> bottom at 0.5 m/s along the slide: no friction, so it moves along the
+  !> bottom line with a = g sin(0.3), and reaches the end at
+  !> T = (sqrt(v0^2 + 2 g sin(0.3) L) - v0)/(g sin(0.3)). The integration
+  !> (rtol = atol = 1e-7) and the end's root keep T and the speed to ~1e-7
+  !> relative, so 1e-6 holds and a wrong sign or factor fails it.
+  subroutine check_cuboid()
+    real(wp), parameter :: incline = 0.3_wp, length = 4, v0 = 0.5_wp
+    type(tube_surface_t) :: tube
+    type(ride_description_t) :: cuboid, wet, judged
+    type(ride_job_result_t) :: job, refused
+    type(cuboid_ride_t) :: direct
+    type(status_t) :: st
+    real(wp) :: a, t_end
+    tube = new_straight_tube(0.5_wp, incline, length, st)
+    call check(st%ok(), 'the straight tube: '//st%text())
+    if (.not. st%ok()) return
+    cuboid%body = BODY_CUBOID
+    cuboid%with_water = .false.
+    allocate (cuboid%water%slide, source=tube)
+    cuboid%cuboid_start%u = 0
+    cuboid%cuboid_start%speed = v0
+    cuboid%cuboid_options%keep_series = .true.
+    cuboid%label = 'unasked'
+    job = run_ride(cuboid)
+    call check(job%status%ok() .and. job%ridden .and. job%complete, 'the cuboid rides: '//job%status%text())
+    if (.not. job%status%ok()) return
+    call ride_cuboid(tube, cuboid%cuboid, cuboid%cuboid_start, length, cuboid%cuboid_options, direct, st)
+    call check(st%ok() .and. job%cuboid%max_acceleration == direct%max_acceleration .and. &
+               job%cuboid%max_tipping_excess == direct%max_tipping_excess .and. &
+               job%cuboid%duration == direct%duration .and. job%cuboid%end_speed == direct%end_speed .and. &
+               job%cuboid%rhs_evaluations == direct%rhs_evaluations .and. job%cuboid%series%n == direct%series%n, &
+               'run_ride gives ride_cuboid''s figures to the bit')
+    a = standard_gravity*sin(incline)
+    t_end = (sqrt(v0**2 + 2*a*length) - v0)/a
+    call check(abs(job%cuboid%duration - t_end) <= 1e-6_wp*t_end, 'the end at the closed-form time')
+    call check(abs(job%cuboid%end_speed - (v0 + a*t_end)) <= 1e-6_wp*(v0 + a*t_end), &
+               'the end speed, closed form')
+    call check(abs(job%cuboid%max_acceleration - a) <= 1e-6_wp*a, 'the acceleration g sin(incline)')
+    call check(index(job%stopped, 'end of the slide') == 1 .and. job%ride%series%n == 0, &
+               'how it stopped; no rider ride: '//job%stopped)
+
+    wet = cuboid
+    wet%with_water = .true.
+    refused = run_ride(wet)
+    call check(.not. refused%status%ok() .and. .not. refused%ridden .and. &
+               index(refused%status%text(), 'the cuboid rides dry') > 0, 'a water refused: '//refused%status%text())
+    judged = cuboid
+    allocate (judged%limits(1))
+    refused = run_ride(judged)
+    call check(.not. refused%status%ok() .and. .not. refused%ridden .and. &
+               index(refused%status%text(), 'limits') > 0, 'limits refused: '//refused%status%text())
+  end subroutine check_cuboid
 
   subroutine collect(message)
     character(len=*), intent(in) :: message
