@@ -35,7 +35,7 @@ module io_hdf5
   use base_status, only: status_t, STATUS_IO, STATUS_DOMAIN, STATUS_INVALID_INPUT
   implicit none (type, external)
   private
-  public :: result_file_t, result_layout_version, units_per_second, run_outcome
+  public :: result_file_t, result_layout_version, units_per_second, run_outcome, run_message
 
   !> Version of the layout in docs/outputs.md: raised when an existing name,
   !> shape or unit changes; new groups and datasets do not raise it.
@@ -295,4 +295,20 @@ contains
     end if
     if (status%code == STATUS_INVALID_INPUT) status%code = STATUS_DOMAIN
   end function run_outcome
+
+  !> The message a result file closes with (and the summary repeats): the
+  !> run's failure, else the writing's, else `done` (how a complete run
+  !> ended: 'ok', 'ok: ' and its outcome).
+  pure function run_message(done, run_status, file_status) result(message)
+    character(len=*), intent(in) :: done
+    type(status_t), intent(in) :: run_status, file_status
+    character(len=:), allocatable :: message
+    if (.not. run_status%ok()) then
+      message = run_status%text()
+    else if (.not. file_status%ok()) then
+      message = file_status%text()
+    else
+      message = done
+    end if
+  end function run_message
 end module io_hdf5

@@ -22,7 +22,7 @@ module scenarios_identify_rider
   use io_geometry_config, only: geometry_groups
   use io_rider_config, only: read_rider_config, read_ride_gravity, require_coulomb_rider
   use io_rider_identification_config, only: rider_identification_config_t, read_rider_identification_config
-  use io_hdf5, only: result_file_t, run_outcome
+  use io_hdf5, only: result_file_t, run_outcome, run_message
   use io_summary, only: summary_t
   use io_input_declarations, only: declared_unit
   use io_xdmf, only: attach_surface_view
@@ -140,9 +140,7 @@ contains
       if (run_status%ok()) call write_sensitivity(file, deviation, write_status)
     end if
     call write_slide_grid(file, setup%slide, write_status)
-    message = 'ok'
-    if (.not. write_status%ok()) message = write_status%text()
-    if (.not. run_status%ok()) message = run_status%text()
+    message = run_message('ok', run_status, write_status)
     if (write_status%ok()) call attach_surface_view(file, 'slide surface', '/geometry/surface', write_status)
     call file%finish(run_status%ok() .and. write_status%ok(), message, write_status)
     if (run_status%ok()) call report(setup, config, fit, deviation, variant_status, cpu1 - cpu0, &

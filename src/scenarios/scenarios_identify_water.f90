@@ -20,7 +20,7 @@ module scenarios_identify_water
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_geometry_config, only: geometry_groups
   use io_water_identification_config, only: water_identification_config_t, read_water_identification_config
-  use io_hdf5, only: result_file_t, run_outcome
+  use io_hdf5, only: result_file_t, run_outcome, run_message
   use io_summary, only: summary_t
   use io_input_declarations, only: declared_unit
   use io_xdmf, only: attach_surface_view
@@ -110,9 +110,7 @@ contains
       if (run_status%ok()) call write_sweep(file, config%sweep_weights, sweep, write_status)
     end if
     call write_slide_grid(file, setup%water%slide, write_status)
-    message = 'ok'
-    if (.not. write_status%ok()) message = write_status%text()
-    if (.not. run_status%ok()) message = run_status%text()
+    message = run_message('ok', run_status, write_status)
     if (write_status%ok()) call attach_surface_view(file, 'slide surface', '/geometry/surface', write_status)
     call file%finish(run_status%ok() .and. write_status%ok(), message, write_status)
     if (run_status%ok()) call report(setup, fit, cpu1 - cpu0, file%final_path(), run, write_status%ok(), &

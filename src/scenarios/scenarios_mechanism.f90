@@ -16,7 +16,7 @@ module scenarios_mechanism
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, check_output_count
   use io_mechanism_config, only: write_mechanism_series
-  use io_hdf5, only: result_file_t, run_outcome
+  use io_hdf5, only: result_file_t, run_outcome, run_message
   use io_summary, only: summary_t, degrees, engineering
   use io_surface_grid, only: write_surface_grid_around
   use io_xdmf, only: xdmf_t, body_shape_t
@@ -126,9 +126,7 @@ contains
     if (present(surface)) call write_surface_grid_around(file, surface, sys%series%q(1, :sys%series%n), &
                                                          sys%series%q(2, :sys%series%n), write_status, log_info)
     complete = run_status%ok() .and. write_status%ok()
-    message = 'ok: '//outcome
-    if (.not. write_status%ok()) message = write_status%text()
-    if (.not. run_status%ok()) message = run_status%text()
+    message = run_message('ok: '//outcome, run_status, write_status)
     if (write_status%ok() .and. sys%series%n > 0) call write_xdmf(file, scenario, sys%series, write_status, shapes)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf

@@ -22,7 +22,7 @@ module scenarios_optimize
   use io_xdmf, only: xdmf_t
   use io_run_config, only: run_config_t
   use io_optimization_config, only: read_optimization_config
-  use io_hdf5, only: result_file_t, run_outcome
+  use io_hdf5, only: result_file_t, run_outcome, run_message
   use io_summary, only: summary_t, degrees
   use io_input_declarations, only: declared_unit
   use scenarios_report, only: end_report
@@ -83,9 +83,7 @@ contains
       call set_status(run_status, STATUS_NOT_CONVERGED, 'optimize: '//result%verdict)
     call write_results(file, input, run, setup, result, before, after, ended, cpu1 - cpu0, write_status)
     complete = run_status%ok() .and. write_status%ok()
-    message = 'ok'
-    if (.not. write_status%ok()) message = write_status%text()
-    if (.not. run_status%ok()) message = run_status%text()
+    message = run_message('ok', run_status, write_status)
     if (write_status%ok()) call write_xdmf(file, size(setup%start_angles), ended, write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()

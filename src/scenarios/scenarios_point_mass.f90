@@ -16,7 +16,7 @@ module scenarios_point_mass
   use io_surface_config, only: read_surface_config
   use io_geometry_config, only: geometry_groups
   use io_point_mass_config, only: read_point_mass_config
-  use io_hdf5, only: result_file_t, run_outcome, units_per_second
+  use io_hdf5, only: result_file_t, run_outcome, run_message, units_per_second
   use io_summary, only: summary_t, standard_g, engineering
   use io_surface_grid, only: write_surface_grid_around
   use io_xdmf, only: xdmf_t
@@ -109,9 +109,7 @@ contains
 
     call write_series(file, input, run, model, model%series, result%stats, result%cpu, write_status)
     complete = run_status%ok() .and. write_status%ok()
-    message = 'ok: '//outcome
-    if (.not. write_status%ok()) message = write_status%text()
-    if (.not. run_status%ok()) message = run_status%text()
+    message = run_message('ok: '//outcome, run_status, write_status)
     if (write_status%ok() .and. model%series%n > 0) call write_xdmf(file, model%series%time(:model%series%n), &
                                                                     write_status)
     call file%finish(complete, message, write_status)

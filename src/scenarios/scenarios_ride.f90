@@ -28,7 +28,7 @@ module scenarios_ride
   use io_geometry_config, only: geometry_groups
   use io_rider_config, only: read_rider_config, read_ride_gravity
   use io_evaluation_config, only: evaluation_config_t, read_evaluation_config
-  use io_hdf5, only: result_file_t
+  use io_hdf5, only: result_file_t, run_message
   use io_water_results, only: write_water_results
   use io_summary, only: summary_t, degrees
   use io_xdmf, only: xdmf_t
@@ -80,10 +80,11 @@ contains
       end if
 
       complete = result%status%ok() .and. write_status%ok()
-      message = 'the water did not reach the rider'
-      if (allocated(ride%outcome)) message = 'ok: '//ride%outcome
-      if (.not. write_status%ok()) message = write_status%text()
-      if (.not. result%status%ok()) message = result%status%text()
+      if (allocated(ride%outcome)) then
+        message = run_message('ok: '//ride%outcome, result%status, write_status)
+      else
+        message = run_message('the water did not reach the rider', result%status, write_status)
+      end if
       if (write_status%ok() .and. ride%series%n > 0) call write_xdmf(file, ride%series, report, write_status)
       call file%finish(complete, message, write_status)
       if (allocated(ride%outcome)) call print_report(ride, report, result%water_outcome, result%water_cpu, &

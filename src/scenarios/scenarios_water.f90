@@ -22,7 +22,7 @@ module scenarios_water
   use io_geometry_config, only: geometry_groups
   use io_surface_config, only: read_surface_config
   use io_water_config, only: read_water_config, read_channel_config
-  use io_hdf5, only: result_file_t, run_outcome
+  use io_hdf5, only: result_file_t, run_outcome, run_message
   use io_water_results, only: write_water_results
   use io_system, only: write_standard_output
   use io_summary, only: summary_t, degrees
@@ -236,10 +236,11 @@ contains
     call compute_water(description, result, run_status, log_info)
     call write_results(file, input, run, description, result, write_status)
     complete = run_status%ok() .and. write_status%ok()
-    message = 'ok: '//outcome_name(result%series%outcome)
-    if (result%bounded) message = 'ok: '//bounded_message(description, result)
-    if (.not. write_status%ok()) message = write_status%text()
-    if (.not. run_status%ok()) message = run_status%text()
+    if (result%bounded) then
+      message = run_message('ok: '//bounded_message(description, result), run_status, write_status)
+    else
+      message = run_message('ok: '//outcome_name(result%series%outcome), run_status, write_status)
+    end if
     if (write_status%ok()) call write_xdmf(file, description%edges, write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()   ! finish refuses a file with NaN or Inf
