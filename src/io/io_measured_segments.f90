@@ -1,9 +1,12 @@
-!> The measured speeds on segments of the slide in &identify of the
-!> scenarios identify_water and identify_rider (docs/design.md): a CSV file
-!> `segments_file` (start, end, speed per row) or the lists segment_start,
-!> segment_end, segment_speed; read one way for both. The checks of
-!> measured places (in order, a segment's end after its start) refuse a
-!> value where it was given: the CSV file's line, or the input's list.
+!> The measurements in &identify of the scenarios identify_water and
+!> identify_rider (docs/design.md), read one way for both: the speeds on
+!> segments of the slide (a CSV file `segments_file`, start, end, speed per
+!> row, or the lists segment_start, segment_end, segment_speed) and the
+!> values measured at places along it (identify_water's sections: arc length
+!> and middle angle; identify_rider's stations: arc length and the three
+!> contacts' angles), from a CSV file or the lists. The checks of measured
+!> places (in order, a segment's end after its start) refuse a value where
+!> it was given: the CSV file's line, or the input's list.
 module io_measured_segments
   use base_kinds, only: wp
   use base_text, only: format_integer
@@ -12,7 +15,7 @@ module io_measured_segments
   use io_csv, only: read_csv_table
   implicit none (type, external)
   private
-  public :: read_measured_segments, check_in_order, refuse_measured
+  public :: read_measured_segments, read_measured_places, check_in_order, refuse_measured
 
   integer, parameter :: max_segments = 1000
 
@@ -33,27 +36,13 @@ contains
                                                 'segment_speed']
     real(wp), allocatable :: table(:, :)
     integer, allocatable :: lines(:)
-    type(bounds_t) :: columns(size(names))
     integer :: k
     path = ''
     allocate (starts(0), ends(0), speeds(0))
     if (len_trim(segments_file) > 0) then
-      do k = 1, size(names)
-        if (r%has(trim(names(k)))) then
-          call r%invalid(trim(names(k)), 'given', 'the segments come from segments_file', status)
-          return
-        end if
-      end do
-      path = input%resolve_path(segments_file)
-      do k = 1, size(names)
-        call r%bounds(trim(names(k)), columns(k), status)
-      end do
+      call read_measured_file(input, r, 'segments_file', segments_file, names, 'segment', max_segments, table, &
+                              lines, path, status)
       if (.not. status%ok()) return
-      call read_csv_table(path, 3, 3, max_segments, columns, table, status, lines)
-      if (.not. status%ok()) then
-        call prefix_status(status, r%where('segments_file')//': &identify: segments_file')
-        return
-      end if
       starts = table(1, :)
       ends = table(2, :)
       speeds = table(3, :)
@@ -75,6 +64,83 @@ contains
       return
     end do
   end subroutine read_measured_segments
+
+  !> Places along the slide with values measured at each (`what`: 'station',
+  !> 'section'): from the CSV file `places_file` (as written in the input; ''
+  !> for the lists), a row per place, or from the lists `names` (the places'
+  !> first, then one per value), `path` the file resolved ('' for the
+  !> lists). values(j, k) is the j-th value at place k. In a twin experiment
+  !> (`twin`) the values are synthesised later: zeros here. The places must
+  !> increase.
+  subroutine read_measured_places(input, r, file_variable, places_file, names, what, twin, max_places, places, &
+                                  values, path, status)
+    type(input_text_t), intent(in) :: input
+    type(group_reader_t), intent(inout) :: r
+    character(len=*), intent(in) :: file_variable, places_file, names(:), what
+    logical, intent(in) :: twin
+    integer, intent(in) :: max_places
+    real(wp), allocatable, intent(out) :: places(:), values(:, :)
+    character(len=:), allocatable, intent(out) :: path
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: table(:, :), list(:)
+    integer, allocatable :: lines(:)
+    integer :: j, k
+    path = ''
+    if (len_trim(places_file) > 0) then
+      call read_measured_file(input, r, file_variable, places_file, names, what, max_places, table, lines, path, &
+                              status)
+      if (.not. status%ok()) return
+      places = table(1, :)
+      values = table(2:, :)
+    else
+      call r%get_list(trim(names(1)), places, max_places, status)
+      if (.not. status%ok()) return
+      allocate (values(size(names) - 1, size(places)))
+      values = 0   ! a twin's: synthesised by the scenario
+      do j = 2, size(names)
+        call r%get_list(trim(names(j)), list, max_places, status)
+        if (.not. status%ok()) return
+        if (twin) cycle
+        if (size(list) /= size(places)) then
+          call r%invalid(trim(names(j)), format_integer(size(list))//' values', 'one per '//what//' ('// &
+                         format_integer(size(places))//' '//what//'s)', status)
+          return
+        end if
+        values(j - 1, :) = list
+      end do
+      lines = [(0, k=1, size(places))]
+    end if
+    call check_in_order(places, r, file_variable, path, lines, trim(names(1)), what, status)
+  end subroutine read_measured_places
+
+  !> The rows of the CSV file `file` (as written in the input) that the
+  !> variable `file_variable` names: a column per variable of `names`, each
+  !> within its declared bounds; `path` the file resolved, `lines` each row's
+  !> line. Refused if a list of `names` is given beside the file (`what`:
+  !> 'segment', 'station', 'section').
+  subroutine read_measured_file(input, r, file_variable, file, names, what, max_rows, table, lines, path, status)
+    type(input_text_t), intent(in) :: input
+    type(group_reader_t), intent(inout) :: r
+    character(len=*), intent(in) :: file_variable, file, names(:), what
+    integer, intent(in) :: max_rows
+    real(wp), allocatable, intent(out) :: table(:, :)
+    integer, allocatable, intent(out) :: lines(:)
+    character(len=:), allocatable, intent(out) :: path
+    type(status_t), intent(inout) :: status
+    type(bounds_t) :: columns(size(names))
+    integer :: k
+    path = input%resolve_path(file)
+    do k = 1, size(names)
+      if (r%has(trim(names(k)))) then
+        call r%invalid(trim(names(k)), 'given', 'the '//what//'s come from '//file_variable, status)
+        return
+      end if
+      call r%bounds(trim(names(k)), columns(k), status)
+    end do
+    if (.not. status%ok()) return
+    call read_csv_table(path, size(names), size(names), max_rows, columns, table, status, lines)
+    if (.not. status%ok()) call prefix_status(status, r%where(file_variable)//': &'//r%group//': '//file_variable)
+  end subroutine read_measured_file
 
   !> Places along the slide (stations, sections) that must each lie after
   !> the one before: the first that does not is refused where it was given.

@@ -4,13 +4,10 @@
 !> every variable with unit, default and range).
 module io_rider_identification_config
   use base_kinds, only: wp
-  use base_text, only: format_integer
-  use base_status, only: status_t, prefix_status
-  use rider_model, only: N_CONTACTS
+  use base_status, only: status_t
   use design_rider_identification, only: rider_measurements_t, rider_fit_options_t
-  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, format_real
-  use io_csv, only: read_csv_table
-  use io_measured_segments, only: read_measured_segments, check_in_order
+  use io_input, only: input_text_t, group_reader_t, open_group, format_real
+  use io_measured_segments, only: read_measured_segments, read_measured_places
   implicit none (type, external)
   private
   public :: rider_identification_config_t, read_rider_identification_config
@@ -35,17 +32,11 @@ contains
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
     character(len=1024) :: stations_file, segments_file
-    real(wp), allocatable :: table(:, :), s(:), pelvis(:), heels(:), back(:)
-    integer, allocatable :: lines(:)
     character(len=*), parameter :: station_names(4) = [character(len=18) :: 'station_arc_length', &
       'pelvis_angle', 'heels_angle', 'back_angle']
-    type(bounds_t) :: columns(size(station_names))
     integer :: k
 
     call open_group(input, 'identify', r, status, table='identify_rider')
-    do k = 1, size(station_names)
-      call r%bounds(trim(station_names(k)), columns(k), status)
-    end do
     if (.not. status%ok()) return
     stations_file = ''
     segments_file = ''
@@ -75,50 +66,10 @@ contains
     end if
 
     ! the stations: a CSV file (arc length, pelvis, heels, back) or the lists
-    if (len_trim(stations_file) > 0) then
-      do k = 1, size(station_names)
-        if (r%has(trim(station_names(k)))) then
-          call r%invalid(trim(station_names(k)), 'given', 'the stations come from stations_file', status)
-          return
-        end if
-      end do
-      config%stations_file = input%resolve_path(stations_file)
-      call read_csv_table(config%stations_file, 4, 4, max_stations, columns, table, status, lines)
-      if (.not. status%ok()) then
-        call prefix_status(status, r%where('stations_file')//': &identify: stations_file')
-        return
-      end if
-      call check_in_order(table(1, :), r, 'stations_file', config%stations_file, lines, 'station_arc_length', &
-                          'station', status)
-      if (.not. status%ok()) return
-      config%data%station_arc_length = table(1, :)
-      config%data%angle = table(2:4, :)
-    else
-      config%stations_file = ''
-      call r%get_list('station_arc_length', s, max_stations, status)
-      call r%get_list('pelvis_angle', pelvis, max_stations, status)
-      call r%get_list('heels_angle', heels, max_stations, status)
-      call r%get_list('back_angle', back, max_stations, status)
-      if (.not. status%ok()) return
-      if (config%twin) then   ! placeholders, synthesised by the scenario
-        pelvis = 0*s
-        heels = pelvis
-        back = pelvis
-      end if
-      if (size(pelvis) /= size(s) .or. size(heels) /= size(s) .or. size(back) /= size(s)) then
-        call r%invalid('pelvis_angle', format_integer(size(pelvis))//', '//format_integer(size(heels))// &
-                       ', '//format_integer(size(back))//' values (pelvis, heels, back)', &
-                       'one angle of each contact per station ('//format_integer(size(s))//' stations)', status)
-        return
-      end if
-      call check_in_order(s, r, 'stations_file', '', [(0, k=1, size(s))], 'station_arc_length', 'station', status)
-      if (.not. status%ok()) return
-      config%data%station_arc_length = s
-      allocate (config%data%angle(N_CONTACTS, size(s)))
-      config%data%angle(1, :) = pelvis
-      config%data%angle(2, :) = heels
-      config%data%angle(3, :) = back
-    end if
+    call read_measured_places(input, r, 'stations_file', stations_file, station_names, 'station', config%twin, &
+                              max_stations, config%data%station_arc_length, config%data%angle, &
+                              config%stations_file, status)
+    if (.not. status%ok()) return
 
     ! the segments: a CSV file (start, end, speed) or the lists
     call read_measured_segments(input, r, segments_file, config%twin, config%data%segment_start, &

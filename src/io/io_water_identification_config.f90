@@ -4,13 +4,11 @@
 !> every variable with unit, default and range).
 module io_water_identification_config
   use base_kinds, only: wp
-  use base_text, only: format_integer
-  use base_status, only: status_t, prefix_status
+  use base_status, only: status_t
   use design_water_identification, only: water_measurements_t, water_fit_options_t, SPEED_MIDPOINT, &
     SPEED_PASSAGE, MIDDLE_EDGES, MIDDLE_STREAMLINE
-  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, format_real
-  use io_csv, only: read_csv_table
-  use io_measured_segments, only: read_measured_segments, check_in_order
+  use io_input, only: input_text_t, group_reader_t, open_group, format_real
+  use io_measured_segments, only: read_measured_segments, read_measured_places
   implicit none (type, external)
   private
   public :: water_identification_config_t, read_water_identification_config
@@ -38,14 +36,10 @@ contains
     type(group_reader_t) :: r
     character(len=1024) :: sections_file, segments_file
     character(len=10) :: speed_kind, middle_kind
-    real(wp), allocatable :: table(:, :), s(:), v(:)
-    integer, allocatable :: lines(:)
-    integer :: k
-    type(bounds_t) :: columns(2)
+    real(wp), allocatable :: values(:, :)
+    character(len=*), parameter :: section_names(2) = [character(len=18) :: 'section_arc_length', 'section_v']
 
     call open_group(input, 'identify', r, status, table='identify_water')
-    call r%bounds('section_arc_length', columns(1), status)
-    call r%bounds('section_v', columns(2), status)
     if (.not. status%ok()) return
     sections_file = ''
     segments_file = ''
@@ -65,38 +59,10 @@ contains
     end if
 
     ! the sections: a CSV file (arc length, middle angle v) or the lists
-    if (len_trim(sections_file) > 0) then
-      if (r%has('section_arc_length') .or. r%has('section_v')) then
-        call r%invalid('section_arc_length', 'given', 'the sections come from sections_file', status)
-        return
-      end if
-      config%sections_file = input%resolve_path(sections_file)
-      call read_csv_table(config%sections_file, 2, 2, max_sections, columns, table, status, lines)
-      if (.not. status%ok()) then
-        call prefix_status(status, r%where('sections_file')//': &identify: sections_file')
-        return
-      end if
-      call check_in_order(table(1, :), r, 'sections_file', config%sections_file, lines, 'section_arc_length', &
-                          'section', status)
-      if (.not. status%ok()) return
-      config%data%section_arc_length = table(1, :)
-      config%data%section_v = table(2, :)
-    else
-      config%sections_file = ''
-      call r%get_list('section_arc_length', s, max_sections, status)
-      call r%get_list('section_v', v, max_sections, status)
-      if (.not. status%ok()) return
-      if (config%twin) v = 0*s
-      if (size(v) /= size(s)) then
-        call r%invalid('section_v', format_integer(size(v))//' values', 'one per section ('// &
-                       format_integer(size(s))//' sections)', status)
-        return
-      end if
-      call check_in_order(s, r, 'sections_file', '', [(0, k=1, size(s))], 'section_arc_length', 'section', status)
-      if (.not. status%ok()) return
-      config%data%section_arc_length = s
-      config%data%section_v = v
-    end if
+    call read_measured_places(input, r, 'sections_file', sections_file, section_names, 'section', config%twin, &
+                              max_sections, config%data%section_arc_length, values, config%sections_file, status)
+    if (.not. status%ok()) return
+    config%data%section_v = values(1, :)
 
     ! the segments: a CSV file (start, end, speed) or the lists
     call read_measured_segments(input, r, segments_file, config%twin, config%data%segment_start, &

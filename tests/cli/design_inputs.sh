@@ -69,7 +69,10 @@ fi
 # identify_rider: the demo slide by name, the measurements in the group or in CSV files
 ri() { printf "&run scenario = 'identify_rider', output = 'o.h5' /\n&surface kind = 'slide', geometry_file = 'builtin:demo_slide' /\n&water flow_rate = 0.004, start = 'edges', u0 = 0.0, v_left0 = 1.92, v_right0 = 1.22 /\n%b\n" "$2" > "$work/$1.nml"; }
 ri lists_differ "&identify station_arc_length = 3.0, 6.0, pelvis_angle = 0.0, heels_angle = 0.0, 0.0, back_angle = 0.0, 0.0 /"
-expect lists_differ 1 '&identify' 'pelvis_angle' 'one angle of each contact per station (2 stations)'
+expect lists_differ 1 '&identify' 'pelvis_angle' '1 values' 'one per station (2 stations)'
+# the list whose length differs is the one named (heels_angle, not pelvis_angle)
+ri heels_differ "&identify station_arc_length = 3.0, 6.0, pelvis_angle = 0.0, 0.0, heels_angle = 0.0, back_angle = 0.0, 0.0 /"
+expect heels_differ 1 '&identify' 'heels_angle' '1 values' 'one per station (2 stations)'
 ri file_and_list "&identify stations_file = 's.csv', station_arc_length = 3.0 /"
 expect file_and_list 1 '&identify' 'station_arc_length' 'the stations come from stations_file'
 ri missing_csv "&identify stations_file = 'none.csv' /"
@@ -99,6 +102,9 @@ expect nothing 1 '&identify' 'give stations or segments'
 wi() { printf "&run scenario = 'identify_water', output = 'o.h5' /\n&surface kind = 'slide', geometry_file = 'builtin:demo_slide' /\n&water flow_rate = 0.004, start = 'edges', u0 = 0.0, v_left0 = 1.92, v_right0 = 1.22 /\n%b\n" "$2" > "$work/$1.nml"; }
 wi w_lists_differ "&identify section_arc_length = 5.0, 10.0, section_v = 1.5 /"
 expect w_lists_differ 1 '&identify' 'section_v' 'one per section (2 sections)'
+# a list beside the file is refused by its own name (section_v, not section_arc_length)
+wi w_file_and_v "&identify sections_file = 's.csv', section_v = 1.5 /"
+expect w_file_and_v 1 '&identify' 'section_v' 'the sections come from sections_file'
 wi w_none_estimated "&identify twin_f = 0.03, 0.1, 1.0, section_arc_length = 5.0, estimate = .false., .false., .false. /"
 expect w_none_estimated 1 '&identify' 'estimate' 'at least one of f1, f2, f3'
 wi w_bad_speed "&identify twin_f = 0.03, 0.1, 1.0, section_arc_length = 5.0, speed = 'average' /"
