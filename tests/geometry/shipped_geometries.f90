@@ -1,8 +1,8 @@
 !> Every shipped geometry built through the library, without io (issue 24,
 !> point 2): inputs/geometry/*.nml, inputs/demo_slide/slide.nml (the demo
 !> slide of the ride, water, sweep, identification and sled inputs and of
-!> builtin:demo_slide, the default run's), inputs/design/second_slide.nml and
-!> inputs/parts/drop_slide.nml
+!> builtin:demo_slide, the default run's), inputs/design/second_slide.nml,
+!> inputs/parts/drop_slide.nml and inputs/parts/halfpipe_slide.nml
 !> (second_slide_water.nml's). Each description is written here by hand from
 !> its input file (the same values, in the same arithmetic as the reader:
 !> degrees times pi/180), the B-spline's points read from its CSV file by
@@ -45,6 +45,7 @@ program shipped_geometries
   call put('demo_slide_slide', demo_slide(), 600, 36)
   call put('design_second_slide', second_slide(), 600, 36)
   call put('parts_drop_slide', drop_slide(), 600, 36)
+  call put('parts_halfpipe_slide', halfpipe_slide(), 600, 48)
   if (failures > 0) then
     print '(i0, a)', failures, ' shipped geometries not built'
     error stop 1
@@ -161,6 +162,20 @@ contains
       element('runout', 8.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
     d%slide%section%parts = circle(0.5_wp)
   end function drop_slide
+
+  !> inputs/parts/halfpipe_slide.nml
+  function halfpipe_slide() result(d)
+    type(geometry_description_t) :: d
+    d%kind = 'slide'
+    d%slide%elements%start = [0.0_wp, 0.0_wp, 6.0_wp]
+    d%slide%elements%transition_length = 2.0_wp
+    d%slide%elements%exact = .true.
+    d%slide%elements%elements = [ &
+      element('straight', 6.0_wp, 12.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
+      element('curve', 0.0_wp, 5.0_wp, 8.0_wp, 150.0_wp, 'left', 0.0_wp, 0.0_wp), &
+      element('straight', 6.0_wp, 6.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
+    d%slide%section%parts = [section_part_description_t(kind='flume', radius=2.0_wp, wall=1.5_wp)]
+  end function halfpipe_slide
 
   !> inputs/geometry/flume.nml
   function flume() result(d)
