@@ -355,13 +355,18 @@ contains
 
   contains
 
-    !> The law `law` at the rear and the front contact ('rear_<kind>', 'front_<kind>').
+    !> The law `law` at the rear and the front contact ('rear_<kind>',
+    !> 'front_<kind>'). Each contact carries half the sled's weight (a law
+    !> per weight, viscous_weight: the two together give mu M g w_t, as one
+    !> body of weight M g would)
     subroutine add_at_both(law)
       type(spec_t), intent(in) :: law
       class(force_law_t), allocatable :: built
-      call force_law_from_spec(law, law_place_t('rear_'//law%kind, rear_contact), built, status)
+      real(wp) :: half_weight
+      half_weight = p%mass*norm2(p%gravity)/2
+      call force_law_from_spec(law, law_place_t('rear_'//law%kind, rear_contact, half_weight), built, status)
       if (status%ok()) call m%add_law(built)
-      call force_law_from_spec(law, law_place_t('front_'//law%kind, front_contact), built, status)
+      call force_law_from_spec(law, law_place_t('front_'//law%kind, front_contact, half_weight), built, status)
       if (status%ok()) call m%add_law(built)
     end subroutine add_at_both
   end subroutine build_sled

@@ -24,6 +24,7 @@ program test_sled
   call incline(0.7_wp, 1.0_wp)
   call incline(0.3_wp, -1.0_wp)
   call viscous_plane()
+  call viscous_weight_plane()
   call bowl(0.0_wp)
   call bowl(0.15_wp)
   call darboux_loads_equal_body_loads()
@@ -136,6 +137,39 @@ contains
                      0.0_wp, 'viscous friction: work integral of the rear contact in closed form')
     call check_close(y(8), y(7), 1e-10_wp, 0.0_wp, 'viscous friction: both contacts do the same work')
   end subroutine viscous_plane
+
+  !> viscous_weight (mu per weight) at both contacts: each carries half the
+  !> sled's weight M g, so together -mu M g u' and the bar translating on a
+  !> horizontal plane slows as u' = u0' exp(-mu g t), whatever its mass
+  !> (before, the sled gave its laws no weight: no force at all).
+  subroutine viscous_weight_plane()
+    type(sled_params_t) :: p
+    class(surface_t), allocatable :: plane
+    type(mechanism_ode_t), target :: sys
+    type(ode_integrator_t) :: integ
+    type(ode_options_t) :: opt
+    type(status_t) :: st
+    real(wp), allocatable :: y(:)
+    real(wp) :: t, g
+    real(wp), parameter :: mu = 0.4_wp   ! s/m
+    plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], st)
+    p%friction = [law_spec('viscous_weight', 'mu', mu)]
+    g = norm2(p%gravity)
+    call build_sled(p, plane, [0.0_wp, 0.0_wp, 0.0_wp], sys%mechanism, st)
+    y = sys%initial_state([0.0_wp, 0.0_wp, 0.0_wp], [2.0_wp, 0.0_wp, 0.0_wp])
+    call sys%mechanism%check_start(sys%work, y(1:3), st)
+    call check(st%ok(), 'viscous_weight plane: starts: '//st%text())
+    opt%rtol = 1e-11_wp
+    opt%atol = 1e-13_wp
+    call integ%start(sys, 0.0_wp, y, opt, st)
+    call integ%advance(0.5_wp, t, y, st)
+    call check(st%ok(), 'viscous_weight plane: integrated: '//st%text())
+    ! rtol 1e-11 over a smooth exponential, as viscous_plane
+    call check_close(y(4), 2*exp(-mu*g*0.5_wp), 1e-8_wp, 0.0_wp, &
+                     'viscous_weight friction: u'' = u0'' exp(-mu g t)')
+    call check_close(y(1), 2/(mu*g)*(1 - exp(-mu*g*0.5_wp)), 1e-8_wp, 0.0_wp, &
+                     'viscous_weight friction: u = u0''/(mu g) (1 - exp(-mu g t))')
+  end subroutine viscous_weight_plane
 
   !> In a paraboloid bowl: without friction energy is conserved (drift < 1e-8
   !> of the energy scale m g L + T0 over 10 s) and the loop stays closed; with
