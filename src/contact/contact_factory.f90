@@ -10,6 +10,7 @@ module contact_factory
   use geometry_surface, only: surface_t
   use geometry_solid, only: solid_properties_t, solid_properties
   use geometry_surface_factory, only: surface_from_spec
+  use geometry_surface_description, only: surface_description_t, build_surface
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, shape_from_spec, body_from_spec, build_shapes
@@ -17,16 +18,14 @@ module contact_factory
   real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
 
   !> A surface in the coordinates of the body that carries it: given built
-  !> (`surface`: any surface, a B-spline or a tube from their own
-  !> descriptions), or by its `spec` (a kind of the geometry's registry)
-  !> placed by `origin` and `angles_deg`, which build_contact_model builds
-  !> (shape_from_spec).
+  !> (`surface`), or by its `description` (a kind of the geometry's registry
+  !> by its spec, or a tube, slide, blended or B-spline surface by its
+  !> geometry description, placed in the body), which build_contact_model
+  !> builds (build_shapes).
   type :: shape_t
     character(len=:), allocatable :: name
     class(surface_t), allocatable :: surface
-    type(spec_t) :: spec
-    real(wp) :: origin(3) = 0                    ! m
-    real(wp) :: angles_deg(3) = 0                ! deg, Cardan angles x-y'-z''
+    type(surface_description_t) :: description
   end type shape_t
 
   type :: body_spec_t
@@ -56,22 +55,21 @@ contains
     if (.not. status%ok()) call prefix_status(status, 'shape '''//name//'''')
   end subroutine shape_from_spec
 
-  !> Builds every shape of `shapes` given by its spec (and no surface).
+  !> Builds every shape of `shapes` given by its description (and no surface).
   subroutine build_shapes(shapes, status)
     type(shape_t), intent(inout) :: shapes(:)
     type(status_t), intent(inout) :: status
-    type(shape_t) :: built
     integer :: k
     do k = 1, size(shapes)
       if (.not. status%ok()) return
       if (allocated(shapes(k)%surface)) cycle
-      if (.not. allocated(shapes(k)%spec%kind)) then
+      if (.not. (allocated(shapes(k)%description%spec%kind) .or. allocated(shapes(k)%description%geometry))) then
         call set_status(status, STATUS_INVALID_INPUT, 'shape '''//shapes(k)%name//''': neither a surface nor '// &
-                        'the spec of one is given')
+                        'the description of one is given')
         return
       end if
-      call shape_from_spec(shapes(k)%name, shapes(k)%spec, built, status, shapes(k)%origin, shapes(k)%angles_deg)
-      if (status%ok()) call move_alloc(built%surface, shapes(k)%surface)
+      call build_surface(shapes(k)%description, shapes(k)%surface, status)
+      if (.not. status%ok()) call prefix_status(status, 'shape '''//shapes(k)%name//'''')
     end do
   end subroutine build_shapes
 

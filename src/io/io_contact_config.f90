@@ -11,7 +11,7 @@ module io_contact_config
   use contact_model, only: contact_system_t, LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
   use io_input, only: input_text_t, group_reader_t, open_group, group_count, format_vector
   use io_friction_config, only: friction_law_variables, friction_law_names, read_friction_law
-  use io_surface_config, only: read_surface_config, surface_variables
+  use io_surface_config, only: read_surface_config, surface_variables, surface_source_t
   implicit none (type, external)
   private
   public :: read_contact_config, contact_groups, contact_repeatable_groups
@@ -23,17 +23,19 @@ module io_contact_config
 
 contains
 
-  subroutine read_contact_config(input, system, status)
+  subroutine read_contact_config(input, system, status, shape_sources)
     type(input_text_t), intent(in) :: input
     type(contact_system_t), intent(out) :: system
     type(status_t), intent(inout) :: status
+    type(surface_source_t), allocatable, intent(out), optional :: shape_sources(:)
+    type(surface_source_t), allocatable :: sources(:)
     integer :: k
     call read_model_group(input, system, status)
     allocate (system%shapes(group_count(input, 'shape')), system%bodies(group_count(input, 'body')), &
-              system%contacts(group_count(input, 'contact')))
+              system%contacts(group_count(input, 'contact')), sources(group_count(input, 'shape')))
     do k = 1, size(system%shapes)
-      if (status%ok()) call read_surface_config(input, system%shapes(k)%surface, status, group='shape', &
-                                                occurrence=k, name=system%shapes(k)%name)
+      if (status%ok()) call read_surface_config(input, system%shapes(k)%description, status, sources(k), &
+                                                group='shape', occurrence=k, name=system%shapes(k)%name)
       if (status%ok()) call check_shape_name(input, k, system, status)
     end do
     do k = 1, size(system%bodies)
@@ -42,6 +44,7 @@ contains
     do k = 1, size(system%contacts)
       call read_contact(input, k, system, status)
     end do
+    if (present(shape_sources)) call move_alloc(sources, shape_sources)
     if (status%ok() .and. size(system%contacts) == 0) call missing('contact', 'a contact scenario needs at '// &
       'least one &contact (body_1 shape_1 touches body_2 shape_2)')
   contains

@@ -24,7 +24,8 @@ module io_geometry_config
   use io_declarations_geometry, only: max_patches
   implicit none (type, external)
   private
-  public :: read_geometry_config, read_geometry_description, geometry_groups, geometry_file_groups
+  public :: read_geometry_config, read_geometry_description, explain_geometry_failure
+  public :: geometry_groups, geometry_file_groups
 
   character(len=*), parameter :: geometry_groups(6) = [character(len=14) :: 'geometry', 'centerline', &
     'cross_section', 'slide_elements', 'blended', 'bspline']
@@ -43,11 +44,22 @@ contains
     type(geometry_description_t) :: description
     character(len=:), allocatable :: part, variable, bspline_file
     type(status_t) :: built
-    integer :: cut
 
     call read_geometry_description(input, description, status, kind, bspline_file)
     if (.not. status%ok()) return
     call build_geometry(description, surface, built, part, variable)
+    call explain_geometry_failure(input, built, part, variable, bspline_file, status)
+  end subroutine read_geometry_config
+
+  !> The failure `built` of building the geometry of `input` (build_geometry's
+  !> `part` and `variable`; `bspline_file` as given) put in `status`, naming
+  !> the line of the group at fault. Nothing when `built` is ok.
+  subroutine explain_geometry_failure(input, built, part, variable, bspline_file, status)
+    type(input_text_t), intent(in) :: input
+    type(status_t), intent(in) :: built
+    character(len=*), intent(in) :: part, variable, bspline_file
+    type(status_t), intent(inout) :: status
+    integer :: cut
     if (built%ok()) return
     status = built
     if (status%code /= STATUS_IO) status%code = STATUS_INVALID_INPUT
@@ -69,7 +81,7 @@ contains
     case default
       call prefix_status(status, where_given(input, part, variable)//': &'//part)
     end select
-  end subroutine read_geometry_config
+  end subroutine explain_geometry_failure
 
   !> The description of the surface the geometry groups of `input` give,
   !> every value checked; nothing built. `kind` as for read_geometry_config;

@@ -1,42 +1,57 @@
 !> &surface: which surface, its size, and where it sits in space. The kinds
 !> with parameters are those of the geometry's registry
 !> (geometry_surface_factory: elementary surfaces, sphere, ...), read by their
-!> declarations (io_kind_parameters) and built by surface_from_spec; the
-!> surfaces described by their own groups (tube, slide, blended, bspline)
-!> are read by io_geometry_config.
+!> declarations (io_kind_parameters); the surfaces described by their own
+!> groups (tube, slide, blended, bspline) are read by io_geometry_config.
+!> Nothing is built here: the reader returns the geometry layer's
+!> surface_description_t, which the caller builds (build_surface), and a
+!> surface_source_t that names the lines of a failure of that build
+!> (explain_surface_failure).
 module io_surface_config
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
-  use base_spec, only: spec_t
-  use geometry_surface, only: surface_t
   use geometry_surface_kind, only: surface_kind_t
-  use geometry_surface_factory, only: surface_kinds, surface_kind_index, surface_from_spec, place_surface
+  use geometry_surface_factory, only: surface_kinds, surface_kind_index
+  use geometry_surface_description, only: surface_description_t
   use io_input, only: input_text_t, group_reader_t, open_group, load_input_file, group_present, &
                       check_known_groups, where_given
   use io_kind_parameters, only: read_kind_parameters, refuse_other_parameters, parameter_variables
-  use io_geometry_config, only: read_geometry_config, geometry_groups, geometry_file_groups
+  use io_geometry_config, only: read_geometry_description, explain_geometry_failure, geometry_groups, &
+    geometry_file_groups
   implicit none (type, external)
   private
-  public :: read_surface_config, surface_variables, surface_kind_names
+  public :: read_surface_config, surface_variables, surface_kind_names, surface_source_t, explain_surface_failure
 
   integer, parameter :: name_length = 32
 
+  !> Where a surface description was read, to name the line of a failure of
+  !> its build: the &surface (&shape) group's kind and origin, and the input
+  !> of the geometry groups (this input or the geometry_file).
+  type :: surface_source_t
+    character(len=:), allocatable :: at_kind, at_origin
+    logical :: geometry = .false.                 !< described by the geometry groups
+    type(input_text_t) :: geometry_input
+    character(len=:), allocatable :: geometry_file_prefix   !< '' when the groups are in this input
+    character(len=:), allocatable :: bspline_file
+  end type surface_source_t
+
 contains
 
-  !> Builds the surface described by &surface, placed by `origin` and the Cardan
+  !> The description of the surface of &surface, placed by `origin` and the Cardan
   !> angles `angles_deg` (r -> origin + Rx Ry Rz r). The kinds tube, slide,
   !> blended and bspline are described by the geometry groups (&centerline,
   !> &cross_section, &slide_elements, &blended, &bspline; io_geometry_config),
   !> given in this input or in the file `geometry_file` (relative to this
   !> input's folder), not both. Named surfaces (the shapes of the contact
   !> scenario) are read from the occurrence-th of the repeatable group `group`
-  !> with a required `name` (returned). `described_as` says which surface was built
+  !> with a required `name` (returned). `described_as` says which surface it is
   !> and from which file, for reports ('slide of standard elements from
-  !> inputs/demo_slide/slide.nml').
-  subroutine read_surface_config(input, built_surface, status, group, occurrence, name, described_as)
+  !> inputs/demo_slide/slide.nml'). `source` is for explain_surface_failure.
+  subroutine read_surface_config(input, description, status, source, group, occurrence, name, described_as)
     type(input_text_t), intent(in) :: input
-    class(surface_t), allocatable, intent(out) :: built_surface
+    type(surface_description_t), intent(out) :: description
     type(status_t), intent(inout) :: status
+    type(surface_source_t), intent(out) :: source
     character(len=*), intent(in), optional :: group
     integer, intent(in), optional :: occurrence
     character(len=:), allocatable, intent(out), optional :: name
@@ -46,10 +61,7 @@ contains
     character(len=4096) :: geometry_file
     type(input_text_t) :: geometry_input
     real(wp) :: origin(3), angles_deg(3)
-    class(surface_t), allocatable :: local
-    type(status_t) :: built
     type(group_reader_t) :: r
-    type(spec_t) :: spec
     type(surface_kind_t), allocatable :: kinds(:)
     integer :: i
     character(len=:), allocatable :: g
@@ -108,9 +120,8 @@ contains
     end if
     select case (trim(kind))
     case default   ! a kind of the registry, by its parameters' declarations
-      call read_kind_parameters(r, 'kind', trim(kind), kinds(surface_kind_index(trim(kind)))%parameters, spec, &
-                                status)
-      if (status%ok()) call surface_from_spec(spec, local, built)
+      call read_kind_parameters(r, 'kind', trim(kind), kinds(surface_kind_index(trim(kind)))%parameters, &
+                                description%spec, status)
     case ('tube', 'slide', 'blended', 'bspline')
       call r%get('geometry_file', geometry_file, status)
       if (.not. status%ok()) return
@@ -120,7 +131,11 @@ contains
                          ' in this input, or geometry_file = ''<file with the geometry groups>''', status)
           return
         end if
-        call read_geometry_config(input, local, status, kind=trim(kind))
+        allocate (description%geometry)
+        call read_geometry_description(input, description%geometry, status, trim(kind), source%bspline_file)
+        source%geometry = .true.
+        source%geometry_input = input
+        source%geometry_file_prefix = ''
         if (present(described_as)) described_as = kind_words(kind)//' from '//input%name
       else
         do i = 1, size(geometry_groups)
@@ -146,32 +161,53 @@ contains
                             ', which a '//trim(kind)//' surface needs')
           end if
         end if
-        if (status%ok()) call read_geometry_config(geometry_input, local, status, kind=trim(kind))
+        allocate (description%geometry)
+        if (status%ok()) call read_geometry_description(geometry_input, description%geometry, status, trim(kind), &
+                                                        source%bspline_file)
         if (present(described_as)) described_as = kind_words(kind)//' from '//geometry_input%name
+        source%geometry = .true.
+        source%geometry_file_prefix = r%where('geometry_file')//': &'//g//': geometry_file = '''// &
+                                      trim(geometry_file)//''''
         if (.not. status%ok()) then
-          call prefix_status(status, r%where('geometry_file')//': &'//g//': geometry_file = '''// &
-                             trim(geometry_file)//'''')
+          call prefix_status(status, source%geometry_file_prefix)
           return
         end if
+        source%geometry_input = geometry_input
       end if
     end select
     if (.not. status%ok()) return
     if (present(described_as)) then
       if (.not. allocated(described_as)) described_as = kind_words(kind)//' of &'//g//' in '//input%name
     end if
-    if (.not. built%ok()) then
+    description%origin = origin
+    description%angles_deg = angles_deg
+    source%at_kind = r%where('kind')//': &'//g
+    source%at_origin = r%where('origin')//': &'//g
+  end subroutine read_surface_config
+
+  !> The failure `built` of building the surface read from `source`
+  !> (build_surface's `part` and `variable`) put in `status`, naming the line
+  !> at fault: the &surface (&shape) kind or origin, or the geometry group.
+  !> Nothing when `built` is ok.
+  subroutine explain_surface_failure(source, built, part, variable, status)
+    type(surface_source_t), intent(in) :: source
+    type(status_t), intent(in) :: built
+    character(len=*), intent(in) :: part, variable
+    type(status_t), intent(inout) :: status
+    if (built%ok()) return
+    if (part == 'origin' .or. .not. source%geometry) then
       status = built
       status%code = STATUS_INVALID_INPUT
-      call prefix_status(status, r%where('kind')//': &'//g)
+      if (part == 'origin') then
+        call prefix_status(status, source%at_origin)
+      else
+        call prefix_status(status, source%at_kind)
+      end if
       return
     end if
-    call place_surface(local, built_surface, built, origin, angles_deg)
-    if (.not. built%ok()) then
-      status = built
-      status%code = STATUS_INVALID_INPUT
-      call prefix_status(status, r%where('origin')//': &'//g)
-    end if
-  end subroutine read_surface_config
+    call explain_geometry_failure(source%geometry_input, built, part, variable, source%bspline_file, status)
+    if (len(source%geometry_file_prefix) > 0) call prefix_status(status, source%geometry_file_prefix)
+  end subroutine explain_surface_failure
 
   !> The variables of every registered surface kind's parameters (the names
   !> a &surface or &shape may hold beside kind, origin, angles_deg, geometry_file).

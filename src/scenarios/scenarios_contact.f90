@@ -14,6 +14,8 @@ module scenarios_contact
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config, contact_groups, contact_repeatable_groups
+  use io_surface_config, only: surface_source_t, explain_surface_failure
+  use geometry_surface_description, only: build_surface
   use scenarios_mechanism, only: run_mechanism
   use contact_flight, only: flight_ode_t, build_flight, starts_open
   use io_xdmf, only: body_shape_t
@@ -34,11 +36,21 @@ contains
     type(contact_model_t), target :: model
     integer :: f, ns
     real(wp), allocatable :: y0(:)
+    type(surface_source_t), allocatable :: shape_sources(:)
+    type(status_t) :: built
+    character(len=:), allocatable :: part, variable
+    integer :: k
 
     call check_known_groups(input, contact_groups, status, repeatable=contact_repeatable_groups)
     if (status%ok()) call read_solver_config(input, solver, status)
-    if (status%ok()) call read_contact_config(input, system, status)
+    if (status%ok()) call read_contact_config(input, system, status, shape_sources)
     if (.not. status%ok()) return
+    ! the shapes built here, so that a failure names its &shape's line
+    do k = 1, size(system%shapes)
+      call build_surface(system%shapes(k)%description, system%shapes(k)%surface, built, part, variable)
+      call explain_surface_failure(shape_sources(k), built, part, variable, status)
+      if (.not. status%ok()) return
+    end do
     if (solver%options%method == ODE_ADAMS) solver%options%convergence_coefficient = contact_convergence_coefficient
     if (starts_open(system)) then
       call run_flight(input, run, solver, system, status)

@@ -13,7 +13,8 @@ module scenarios_point_mass
   use io_input, only: input_text_t, check_known_groups, invalid, format_real, mark_input_failure, where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
-  use io_surface_config, only: read_surface_config
+  use io_surface_config, only: read_surface_config, surface_source_t, explain_surface_failure
+  use geometry_surface_description, only: surface_description_t, build_surface
   use io_geometry_config, only: geometry_groups
   use io_point_mass_config, only: read_point_mass_config
   use io_hdf5, only: result_file_t, run_outcome, run_message, units_per_second
@@ -46,10 +47,16 @@ contains
     type(status_t), intent(inout) :: status
     type(point_mass_description_t) :: description
     class(surface_t), allocatable :: surface
+    type(surface_description_t) :: surface_description
+    type(surface_source_t) :: surface_source
+    type(status_t) :: built
+    character(len=:), allocatable :: part, variable
 
     call check_known_groups(input, point_mass_groups, status)
     if (status%ok()) call read_solver_config(input, solver, status)
-    if (status%ok()) call read_surface_config(input, surface, status)
+    if (status%ok()) call read_surface_config(input, surface_description, status, surface_source)
+    if (status%ok()) call build_surface(surface_description, surface, built, part, variable)
+    if (status%ok()) call explain_surface_failure(surface_source, built, part, variable, status)
     if (status%ok()) call read_point_mass_config(input, description, status)
     call mark_input_failure(status)
     if (.not. status%ok()) return

@@ -12,7 +12,8 @@ module scenarios_sled
   use io_input, only: input_text_t, check_known_groups, invalid, format_real, mark_input_failure
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
-  use io_surface_config, only: read_surface_config
+  use io_surface_config, only: read_surface_config, surface_source_t, explain_surface_failure
+  use geometry_surface_description, only: surface_description_t, build_surface
   use io_mechanism_config, only: read_sled_config
   use io_geometry_config, only: geometry_groups
   use scenarios_mechanism, only: run_mechanism
@@ -36,10 +37,16 @@ contains
     character(len=:), allocatable :: u_units, v_units
     character(len=8) :: q_units(3), beta_units(3)
     real(wp), allocatable :: q0(:), qd0(:)
+    type(surface_description_t) :: surface_description
+    type(surface_source_t) :: surface_source
+    type(status_t) :: built
+    character(len=:), allocatable :: part, variable
 
     call check_known_groups(input, sled_groups, status)
     if (status%ok()) call read_solver_config(input, solver, status)
-    if (status%ok()) call read_surface_config(input, surface, status)
+    if (status%ok()) call read_surface_config(input, surface_description, status, surface_source)
+    if (status%ok()) call build_surface(surface_description, surface, built, part, variable)
+    if (status%ok()) call explain_surface_failure(surface_source, built, part, variable, status)
     if (status%ok()) call read_sled_config(input, config, status)
     if (.not. status%ok()) return
     if (.not. surface%in_domain(config%q0(1), config%q0(2))) then

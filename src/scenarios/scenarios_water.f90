@@ -20,7 +20,8 @@ module scenarios_water
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
   use io_geometry_config, only: geometry_groups
-  use io_surface_config, only: read_surface_config
+  use io_surface_config, only: read_surface_config, surface_source_t, explain_surface_failure
+  use geometry_surface_description, only: surface_description_t, build_surface
   use io_water_config, only: read_water_config, read_channel_config
   use io_hdf5, only: result_file_t, run_outcome, run_message
   use io_water_results, only: write_water_results
@@ -65,6 +66,10 @@ contains
     type(surface_point_t) :: start_point
     real(wp), parameter :: plausible_speed = 30   ! m/s
     integer :: i
+    type(surface_description_t) :: surface_description
+    type(surface_source_t) :: surface_source
+    type(status_t) :: built
+    character(len=:), allocatable :: part, variable
 
     if (present(stage)) then
       call read_solver_config(input, solver, status, group='water_solver')
@@ -80,7 +85,10 @@ contains
       return
     end if
     if (group_present(input, 'surface')) then
-      call read_surface_config(input, surface, status, described_as=description%slide_name)
+      call read_surface_config(input, surface_description, status, surface_source, &
+                               described_as=description%slide_name)
+      if (status%ok()) call build_surface(surface_description, surface, built, part, variable)
+      if (status%ok()) call explain_surface_failure(surface_source, built, part, variable, status)
       call mark_input_failure(status)
       if (.not. status%ok()) return
       select type (surface)

@@ -124,7 +124,8 @@ program test_kind_registration
   use geometry_surface, only: surface_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: build_sled, sled_description_t
-  use io_surface_config, only: read_surface_config
+  use io_surface_config, only: read_surface_config, surface_source_t
+  use geometry_surface_description, only: surface_description_t, build_surface
   use io_mechanism_config, only: read_sled_config
   use throwaway_kinds, only: test_slope_t, test_drag_t, slope_kind, drag_kind
   use testing, only: check, check_close, finish_tests
@@ -308,6 +309,8 @@ contains
     type(solver_config_t) :: solver
     type(sled_description_t) :: config
     class(surface_t), allocatable :: surface
+    type(surface_description_t) :: surface_description
+    type(surface_source_t) :: source
     type(mechanism_ode_t), target :: model
     type(driver_options_t) :: options
     type(driver_result_t) :: result
@@ -316,7 +319,8 @@ contains
     integer :: k_law
     call input_from_text('sled on the test slope', text, input, st)
     call read_solver_config(input, solver, st)
-    call read_surface_config(input, surface, st)
+    call read_surface_config(input, surface_description, st, source)
+    call build_surface(surface_description, surface, st)
     call read_sled_config(input, config, st)
     call check(st%ok(), 'sled input read: '//st%text())
     call build_sled(config%params, surface, config%q0, model%mechanism, st)

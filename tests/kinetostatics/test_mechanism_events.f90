@@ -110,7 +110,8 @@ program test_mechanism_events
   use kinetostatics_models, only: sled_params_t, build_sled, sled_description_t
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
-  use io_surface_config, only: read_surface_config
+  use io_surface_config, only: read_surface_config, surface_source_t
+  use geometry_surface_description, only: surface_description_t, build_surface
   use io_mechanism_config, only: read_sled_config
   use scenarios_mechanism, only: mechanism_driver_options
   use test_mechanism_events_laws, only: switched_viscous_t, new_switched_viscous
@@ -143,9 +144,12 @@ contains
     type(status_t), intent(inout) :: status
     type(input_text_t) :: input
     type(sled_description_t) :: sled
+    type(surface_description_t) :: surface_description
+    type(surface_source_t) :: source
     call load_input_file(path, input, status)
     if (status%ok()) call read_solver_config(input, solver, status)
-    if (status%ok()) call read_surface_config(input, surface, status)
+    if (status%ok()) call read_surface_config(input, surface_description, status, source)
+    if (status%ok()) call build_surface(surface_description, surface, status)
     if (status%ok()) call read_sled_config(input, sled, status)
     if (status%ok()) call build_sled(sled%params, surface, sled%q0, sys%mechanism, status)
     if (.not. status%ok()) return

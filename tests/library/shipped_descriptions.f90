@@ -26,7 +26,7 @@ program shipped_descriptions
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive
   use geometry_surface, only: surface_t
   use geometry_surface_factory, only: surface_from_spec
-  use geometry_bspline_surface, only: bspline_surface_t, bspline_from_table
+  use geometry_surface_description, only: surface_description_t, build_surface
   use geometry_slide_builder, only: slide_description_t, section_part_description_t
   use geometry_slide_elements, only: slide_element_t
   use geometry_tube, only: tube_surface_t
@@ -273,12 +273,14 @@ contains
   subroutine point_mass_hyperbolic_paraboloid()
     type(point_mass_description_t) :: d
     class(surface_t), allocatable :: surface
-    type(spec_t) :: spec
+    type(surface_description_t) :: placed
     type(status_t) :: st
-    spec%kind = 'hyperbolic_paraboloid'
-    call spec%set('a', [1.0_wp])
-    call spec%set('b', [1.0_wp])
-    call surface_from_spec(spec, surface, st, origin=[0.0_wp, 0.0_wp, 1.0_wp], angles_deg=[0.0_wp, 0.0_wp, 20.0_wp])
+    placed%spec%kind = 'hyperbolic_paraboloid'
+    call placed%spec%set('a', [1.0_wp])
+    call placed%spec%set('b', [1.0_wp])
+    placed%origin = [0.0_wp, 0.0_wp, 1.0_wp]
+    placed%angles_deg = [0.0_wp, 0.0_wp, 20.0_wp]
+    call build_surface(placed, surface, st)
     call expect_ok(st, 'the hyperbolic paraboloid')
     d%u0 = 0.2_wp; d%v0 = 0.05_wp; d%du0 = -1.0_wp; d%dv0 = 0.0_wp
     call run_point_mass('inputs/point_mass/hyperbolic_paraboloid.nml', d, surface, 1e-10_wp, 1e-10_wp, 0.005_wp)
@@ -357,9 +359,9 @@ contains
     type(shape_t) :: shape
     integer :: k
     shape%name = name
-    shape%spec%kind = kind
+    shape%description%spec%kind = kind
     do k = 1, size(parameters)
-      call shape%spec%set(trim(parameters(k)), [values(k)])
+      call shape%description%spec%set(trim(parameters(k)), [values(k)])
     end do
   end function spec_shape
 
@@ -367,13 +369,11 @@ contains
   !> z = (x^2 + y^2)/a2 on [-w, w]^2 of its CSV (written by
   !> scripts/make_contact_inputs.py with these a2 and w; the same arithmetic,
   !> x = -w + 2 w i/12, so the same numbers), layout 'scattered', degree 5,
-  !> smoothing 0.05.
+  !> smoothing 0.05, described (the contact layer builds it).
   function bspline_shape(name, a2, w) result(shape)
     character(len=*), intent(in) :: name
     real(wp), intent(in) :: a2, w
     type(shape_t) :: shape
-    type(bspline_surface_t) :: b
-    type(status_t) :: st
     real(wp) :: table(3, 169), x, y
     integer :: i, j
     do j = 0, 12
@@ -383,10 +383,13 @@ contains
         table(:, 13*j + i + 1) = [x, y, (x*x + y*y)/a2]
       end do
     end do
-    call bspline_from_table('scattered', table, 0.05_wp, 5, [.false., .false.], b, st)
-    call expect_ok(st, 'B-spline '//name)
     shape%name = name
-    allocate (shape%surface, source=b)
+    allocate (shape%description%geometry)   ! built by build_contact_model
+    shape%description%geometry%kind = 'bspline'
+    shape%description%geometry%bspline%layout = 'scattered'
+    shape%description%geometry%bspline%table = table
+    shape%description%geometry%bspline%smoothing = 0.05_wp
+    shape%description%geometry%bspline%degree = 5
   end function bspline_shape
 
   function body(name, mass, position, angles_deg) result(b)
