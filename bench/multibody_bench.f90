@@ -16,7 +16,8 @@ program multibody_bench
   use kinetostatics_force_law_factory, only: law_spec
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
-  use io_surface_config, only: read_surface_config
+  use io_surface_config, only: read_surface_config, surface_source_t
+  use geometry_surface_description, only: surface_description_t, build_surface
   use io_mechanism_config, only: read_sled_config
   use bench_timing, only: median
   implicit none (type, external)
@@ -46,6 +47,8 @@ contains
     type(fourbar_params_t) :: fp
     type(sled_params_t) :: sp
     class(surface_t), allocatable :: surface
+    type(surface_description_t) :: surface_description
+    type(surface_source_t) :: source
     real(wp) :: beta0(2)
     type(input_text_t) :: input
     type(solver_config_t) :: solver
@@ -69,7 +72,8 @@ contains
     case (7)   ! the sled input on the demo slide (run from the repository root)
       call load_input_file('inputs/sled/demo_slide.nml', input, status)
       if (status%ok()) call read_solver_config(input, solver, status)
-      if (status%ok()) call read_surface_config(input, surface, status)
+      if (status%ok()) call read_surface_config(input, surface_description, status, source)
+      if (status%ok()) call build_surface(surface_description, surface, status)
       if (status%ok()) call read_sled_config(input, sled, status)
       if (.not. status%ok()) return
       options = solver%options

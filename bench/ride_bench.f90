@@ -17,7 +17,8 @@ program ride_bench
   use geometry_surface, only: surface_t
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
-  use io_surface_config, only: read_surface_config
+  use io_surface_config, only: read_surface_config, surface_source_t
+  use geometry_surface_description, only: surface_description_t, build_surface
   use io_mechanism_config, only: read_sled_config
   use io_rider_config, only: read_rider_config
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive
@@ -121,6 +122,8 @@ contains
     type(solver_config_t) :: solver
     type(sled_description_t) :: sled
     class(surface_t), allocatable :: surface
+    type(surface_description_t) :: surface_description
+    type(surface_source_t) :: source
     type(mechanism_ode_t), target :: sys
     type(driver_options_t) :: driver
     type(driver_result_t) :: result
@@ -129,7 +132,8 @@ contains
     integer :: k
     call load_input_file('inputs/sled/demo_slide.nml', sled_input, status)
     if (status%ok()) call read_solver_config(sled_input, solver, status)
-    if (status%ok()) call read_surface_config(sled_input, surface, status)
+    if (status%ok()) call read_surface_config(sled_input, surface_description, status, source)
+    if (status%ok()) call build_surface(surface_description, surface, status)
     if (status%ok()) call read_sled_config(sled_input, sled, status)
     if (.not. status%ok()) error stop 1
     driver%ode = solver%options
