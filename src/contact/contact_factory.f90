@@ -1,6 +1,6 @@
-!> The shapes and bodies of a contact system, built from their specs: a
-!> shape is a named surface in its body's coordinates (any kind of the
-!> geometry's registry, geometry_surface_factory, placed in the body), a
+!> The shapes and bodies of a contact system, built from their descriptions:
+!> a shape is a named surface in its body's coordinates (any surface the
+!> geometry layer describes, geometry_surface_description, placed in the body), a
 !> body's mass properties are given or those of the homogeneous solid of
 !> one of its shapes. contact_model builds the mechanism from them.
 module contact_factory

@@ -129,7 +129,7 @@ contains
   !> Builds the mechanism of `system` and its start y0 (model%y0), checked:
   !> every name known, every body carried once and in order, loops closed on
   !> the physical branch, contacts pressing, start velocities consistent.
-  !> Shapes given by their specs are built first (contact_factory).
+  !> Shapes given by their descriptions are built first (contact_factory).
   subroutine build_contact_model(system, model, status)
     type(contact_system_t), intent(in) :: system
     type(contact_model_t), intent(out) :: model
