@@ -45,7 +45,7 @@ module contact_flight
   use base_series, only: resize
   use geometry_solid, only: solid_properties_t
   use contact_factory, only: body_from_spec
-  use contact_model, only: contact_system_t, contact_model_t, LEVEL_POSITION, CHAIN_AUTO
+  use contact_model, only: contact_system_t, contact_model_t, build_system_shapes, LEVEL_POSITION, CHAIN_AUTO
   use contact_gap, only: contact_gap_t, new_contact_gap
   implicit none (type, external)
   private
@@ -104,8 +104,22 @@ contains
   !> The free body of `system`'s contact at its given pose and twist:
   !> q0 = (x, y, z, a1, a2, a3), qd0 their rates, q_units; refused unless the
   !> description is a single contact on the ground that starts open with the
-  !> shapes apart.
+  !> shapes apart. Shapes given by their descriptions are built first
+  !> (build_system_shapes, as for a closed start).
   subroutine build_flight(system, flight, q0, qd0, q_units, status)
+    type(contact_system_t), intent(in) :: system
+    type(flight_ode_t), intent(out) :: flight
+    real(wp), allocatable, intent(out) :: q0(:), qd0(:)
+    character(len=8), allocatable, intent(out) :: q_units(:)
+    type(status_t), intent(inout) :: status
+    type(contact_system_t) :: shaped
+    if (.not. status%ok()) return
+    call build_system_shapes(system, shaped, status)
+    call build_shaped_flight(shaped, flight, q0, qd0, q_units, status)
+  end subroutine build_flight
+
+  !> build_flight of a system whose shapes are built.
+  subroutine build_shaped_flight(system, flight, q0, qd0, q_units, status)
     type(contact_system_t), intent(in) :: system
     type(flight_ode_t), intent(out) :: flight
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
@@ -182,7 +196,7 @@ contains
       allocate (flight%beta_units(0))
       call start_gap(flight, system, status)
     end associate
-  end subroutine build_flight
+  end subroutine build_shaped_flight
 
   !> The gap at the start, from the contact search; it must be open (> 0)
   !> and on the contact's branch (the normals against each other).

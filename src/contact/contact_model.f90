@@ -59,7 +59,7 @@ module contact_model
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t, contact_model_t, contact_link_t
-  public :: build_contact_model, contact_convergence_coefficient, body_size
+  public :: build_contact_model, contact_convergence_coefficient, body_size, build_system_shapes
   public :: LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
 
   integer, parameter :: LEVEL_POSITION = 1, LEVEL_VELOCITY = 2
@@ -135,18 +135,21 @@ contains
     type(contact_model_t), intent(out) :: model
     type(status_t), intent(inout) :: status
     type(contact_system_t) :: shaped
-    integer :: k
     if (.not. status%ok()) return
-    if (allocated(system%shapes)) then
-      if (.not. all([(allocated(system%shapes(k)%surface), k = 1, size(system%shapes))])) then
-        shaped = system
-        call build_shapes(shaped%shapes, status)
-        call build_shaped_model(shaped, model, status)
-        return
-      end if
-    end if
-    call build_shaped_model(system, model, status)
+    call build_system_shapes(system, shaped, status)
+    call build_shaped_model(shaped, model, status)
   end subroutine build_contact_model
+
+  !> `system` with the shapes given by their descriptions built
+  !> (contact_factory's build_shapes; built ones are kept): the model's and
+  !> the flight's builders start from it.
+  subroutine build_system_shapes(system, shaped, status)
+    type(contact_system_t), intent(in) :: system
+    type(contact_system_t), intent(out) :: shaped
+    type(status_t), intent(inout) :: status
+    shaped = system
+    if (allocated(shaped%shapes)) call build_shapes(shaped%shapes, status)
+  end subroutine build_system_shapes
 
   !> build_contact_model of a system whose shapes are built.
   subroutine build_shaped_model(system, model, status)
