@@ -33,7 +33,7 @@ module contact_gap
   use contact_surface_search, only: nearest_point, support_point
   implicit none (type, external)
   private
-  public :: contact_gap_t, new_contact_gap
+  public :: contact_gap_t, new_contact_gap, gap_equations
 
   integer, parameter :: max_newton_steps = 40
   integer, parameter :: max_halvings = 30
@@ -207,6 +207,19 @@ contains
       end associate
     end do
   end subroutine keep_charts
+
+  !> f(x) and its Jacobian at the gap's last poses, in its current charts;
+  !> the gap itself unchanged. For checking the Jacobian against
+  !> differences (it copies the gap: not for inner loops).
+  subroutine gap_equations(gap, x, f, jac, status)
+    type(contact_gap_t), intent(in) :: gap
+    real(wp), intent(in) :: x(4)
+    real(wp), intent(out) :: f(4), jac(4, 4)
+    type(status_t), intent(inout) :: status
+    type(contact_gap_t) :: probe
+    probe = gap
+    call residual(probe, x, f, jac, status)
+  end subroutine gap_equations
 
   !> f(x) and its Jacobian, and the points, normal and gap at x.
   subroutine residual(self, x, f, jac, status)

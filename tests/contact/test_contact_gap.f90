@@ -9,7 +9,53 @@
 !>   search), and the gap equals the smallest signed distance of 1,800 of its
 !>   points to the bowl (to the sampling's second order);
 !> - the gap's rate n . (v_2 - v_1) against central differences of the gap
-!>   along a motion of both bodies.
+!>   along a motion of both bodies;
+!> - the Newton Jacobian of the common-normal equations (4 x 4: second
+!>   derivatives and n_1's Weingarten derivatives) against central
+!>   differences (numerics_nonlinear's check_jacobian), for sphere/plane,
+!>   ellipsoid/plane, ellipsoid/ellipsoid, a bowl and an egg, at the solution
+!>   and away from it, near the poles of the base chart and in other charts.
+
+!> The gap's equations f(x) as a nonlinear system, for check_jacobian.
+module gap_equations_system
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  use numerics_nonlinear, only: nonlinear_system_t
+  use contact_gap, only: contact_gap_t, gap_equations
+  implicit none (type, external)
+  private
+  public :: gap_system_t
+
+  type, extends(nonlinear_system_t) :: gap_system_t
+    type(contact_gap_t) :: gap
+  contains
+    procedure :: residual => gap_system_residual
+    procedure :: jacobian => gap_system_jacobian
+  end type gap_system_t
+
+contains
+
+  subroutine gap_system_residual(self, x, f, status)
+    class(gap_system_t), intent(inout) :: self
+    real(wp), intent(in) :: x(:)
+    real(wp), intent(out) :: f(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: f4(4), jac(4, 4)
+    call gap_equations(self%gap, x, f4, jac, status)
+    f = f4
+  end subroutine gap_system_residual
+
+  subroutine gap_system_jacobian(self, x, jac, status)
+    class(gap_system_t), intent(inout) :: self
+    real(wp), intent(in) :: x(:)
+    real(wp), intent(out) :: jac(:, :)
+    type(status_t), intent(inout) :: status
+    real(wp) :: f(4), jac4(4, 4)
+    call gap_equations(self%gap, x, f, jac4, status)
+    jac = jac4
+  end subroutine gap_system_jacobian
+end module gap_equations_system
+
 program test_contact_gap
   use base_kinds, only: wp
   use base_status, only: status_t
@@ -18,17 +64,23 @@ program test_contact_gap
   use geometry_surface, only: surface_point_t
   use geometry_elementary, only: plane_t, ellipsoid_t, paraboloid_t
   use contact_surface_search, only: nearest_point
+  use geometry_surface, only: surface_t
+  use numerics_nonlinear, only: check_jacobian
   use contact_gap, only: contact_gap_t, new_contact_gap
+  use gap_equations_system, only: gap_system_t
   implicit none (type, external)
 
   real(wp), parameter :: pi = acos(-1.0_wp)
   real(wp), parameter :: w1 = 0.7_wp, w2 = -2.3_wp   ! check_rate's spins, rad/s
+  !> check_newton_jacobian's largest entry difference, relative to max(1, |J|).
+  real(wp), parameter :: jacobian_tolerance = 1e-7_wp
 
   call check_sphere_over_plane()
   call check_tumbling_ellipsoid()
   call check_two_spheres()
   call check_ellipsoid_in_bowl()
   call check_rate()
+  call check_newton_jacobian()
   call finish_tests('test_contact_gap')
 
 contains
@@ -188,6 +240,109 @@ contains
     fd = (g(2) - g(1))/(2*h)
     call check_close(rate, fd, 1e-9_wp, 1e-10_wp, 'gap rate = central difference')
   end subroutine check_rate
+
+  !> The Jacobian of f = [d.t1_u, d.t1_v, n_1.t2_u, n_1.t2_v] against central
+  !> differences, at the solution of a start and at points away from it
+  !> (the Jacobian is f's derivative everywhere, not only at a solution).
+  !> Tolerance: check_jacobian steps h = eps^(1/3) max(1, |x_j|) (<= 2e-5
+  !> here), so truncation h^2/6 |f'''| with f''' (third derivatives of the
+  !> surfaces, second of n_1: of the surfaces' size, 0.1-1 m, times 1/cos(v)^2
+  !> <= 30 at |v| = 1.37 near a pole) is below ~1e-9, and rounding eps |f|/h
+  !> ~1e-10; relative to max(1, |J|). 1e-7 leaves a factor 100 and still
+  !> sees any term dropped or mistaken: the smallest, d.r_uv or n_1.r_uv,
+  !> is 1e-2 or more at these points.
+  subroutine check_newton_jacobian()
+    type(plane_t) :: plane
+    type(ellipsoid_t) :: ball, egg, big
+    type(paraboloid_t) :: bowl
+    type(gap_system_t) :: system
+    type(status_t) :: status
+    integer :: i, k
+    plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], status)
+    ball = ellipsoid_t(0.3_wp, 0.3_wp, 0.3_wp, status)
+    egg = ellipsoid_t(0.3_wp, 0.2_wp, 0.45_wp, status)
+    big = ellipsoid_t(0.5_wp, 0.7_wp, 0.4_wp, status)
+    bowl = paraboloid_t(1.2_wp, 1.5_wp, 1.0_wp, status)
+    call jacobian_at_offsets('sphere/plane', plane, ball, rot_y(0.3_wp), [0.5_wp, -1.0_wp, 0.2_wp], &
+                             rot_z(0.4_wp), [0.7_wp, -0.8_wp, 1.1_wp])
+    call jacobian_at_offsets('ellipsoid/plane', plane, egg, rot_x(-0.2_wp), [0.0_wp, 0.0_wp, -0.1_wp], &
+                             matmul(rot_x(0.3_wp), rot_y(0.8_wp)), [0.2_wp, 0.1_wp, 0.9_wp])
+    call jacobian_at_offsets('ellipsoid/ellipsoid', big, egg, rot_z(0.3_wp), [0.1_wp, 0.0_wp, 0.0_wp], &
+                             matmul(rot_x(0.6_wp), rot_z(-0.5_wp)), [0.5_wp, 0.9_wp, 0.4_wp])
+    call jacobian_at_offsets('egg in bowl', bowl, egg, identity3(), [0.0_wp, 0.0_wp, 0.0_wp], &
+                             matmul(rot_x(0.7_wp), rot_z(0.4_wp)), [0.3_wp, -0.2_wp, 0.45_wp])
+
+    ! Near the poles: v = +-1.37 rad (a tracked point changes chart once
+    ! cos v - cos 1.4 < 0.02, at |v| ~ 1.38), where n_1's Weingarten terms
+    ! are largest; first in the base charts, then with the egg carried round
+    ! the big one over its poles until both points are in other charts.
+    system%gap = new_contact_gap(big, 1.0_wp, egg, 1.0_wp, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp])
+    call system%gap%start_from_search(identity3(), [0.0_wp, 0.0_wp, 0.0_wp], rot_x(0.2_wp), &
+                                      [0.0_wp, 1.3_wp, 0.1_wp], status)
+    call check(status%ok(), 'Jacobian near the poles: started '//status%text())
+    call jacobian_near_poles('base charts', system)
+    do i = 1, 400
+      call system%gap%update(rot_z(0.01_wp*i), [0.0_wp, 0.0_wp, 0.0_wp], matmul(rot_y(0.04_wp*i), rot_x(0.2_wp)), &
+                             1.3_wp*[0.0_wp, cos(0.01_wp*pi*i), sin(0.01_wp*pi*i)], status)
+      if (.not. status%ok()) exit
+      if (all([(any(system%gap%surface(k)%chart_rotation /= identity3()), k = 1, 2)])) exit
+    end do
+    call check(status%ok() .and. all([(any(system%gap%surface(k)%chart_rotation /= identity3()), k = 1, 2)]), &
+               'Jacobian near the poles: both points tracked into other charts '//status%text())
+    call jacobian_near_poles('other charts', system)
+  end subroutine check_newton_jacobian
+
+  !> The Jacobian at a start's solution and at two points away from it.
+  subroutine jacobian_at_offsets(label, surface_1, surface_2, rot1, o1, rot2, o2)
+    character(len=*), intent(in) :: label
+    class(surface_t), intent(in) :: surface_1, surface_2
+    real(wp), intent(in) :: rot1(3, 3), o1(3), rot2(3, 3), o2(3)
+    real(wp), parameter :: offsets(4, 3) = reshape([0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, &
+      0.3_wp, -0.2_wp, 0.25_wp, 0.15_wp, -0.4_wp, 0.1_wp, -0.3_wp, 0.35_wp], [4, 3])
+    type(gap_system_t) :: system
+    type(status_t) :: status
+    real(wp) :: err, worst
+    integer :: j
+    system%gap = new_contact_gap(surface_1, 1.0_wp, surface_2, 1.0_wp, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp])
+    call system%gap%start_from_search(rot1, o1, rot2, o2, status)
+    call check(status%ok() .and. system%gap%gap > 0, label//': started apart '//status%text())
+    worst = 0
+    do j = 1, size(offsets, 2)
+      call check_jacobian(system, system%gap%x + offsets(:, j), err, status)
+      if (.not. status%ok()) exit
+      worst = max(worst, err)
+    end do
+    call check(status%ok() .and. worst < jacobian_tolerance, label//': Jacobian = central differences ('// &
+               format_error(worst)//') '//status%text())
+  end subroutine jacobian_at_offsets
+
+  !> The Jacobian with both points at |v| = 1.37 in their current charts.
+  subroutine jacobian_near_poles(label, system)
+    character(len=*), intent(in) :: label
+    type(gap_system_t), intent(inout) :: system
+    type(status_t) :: status
+    real(wp) :: x(4), err, worst
+    integer :: j
+    worst = 0
+    do j = 1, 4
+      x = system%gap%x
+      x(2) = merge(1.37_wp, -1.37_wp, j <= 2)
+      x(4) = merge(1.37_wp, -1.37_wp, mod(j, 2) == 1)
+      call check_jacobian(system, x, err, status)
+      if (.not. status%ok()) exit
+      worst = max(worst, err)
+    end do
+    call check(status%ok() .and. worst < jacobian_tolerance, 'ellipsoid/ellipsoid near the poles, '//label// &
+               ': Jacobian = central differences ('//format_error(worst)//') '//status%text())
+  end subroutine jacobian_near_poles
+
+  function format_error(err) result(text)
+    real(wp), intent(in) :: err
+    character(len=:), allocatable :: text
+    character(len=12) :: buffer
+    write (buffer, '(es10.2)') err
+    text = 'worst '//trim(adjustl(buffer))
+  end function format_error
 
   function pose1(time) result(r)
     real(wp), intent(in) :: time
