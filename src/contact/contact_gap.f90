@@ -152,7 +152,8 @@ contains
         format_short(norm2(f))//')')
       return
     end if
-    call residual(self, self%x, f, jac, status)
+    ! The last residual call was at self%x (the start's or the accepted
+    ! trial's), so the points, normal and gap are already those of self%x.
   end subroutine gap_update
 
   !> The rate of the gap: n_1 . (v_2(P_2) - v_1(P_1)), each body moving with
