@@ -3,14 +3,10 @@
 !> kinetostatics layer builds (build_point_mass_model).
 !> The friction is any friction law of the core's registry
 !> (kinetostatics_force_law_factory), read by its declarations; the law's mu
-!> is the variable friction_coefficient here, and its regularization_speed
-!> defaults to 1e-9 m/s (the contact's 1e-6 m/s would blur the point mass's
-!> slow slides, the shipped inputs were computed with 1e-9).
+!> is the variable friction_coefficient here. A regularization_speed left
+!> unset is the point mass's own default (build_point_mass_model), not set here.
 module io_point_mass_config
-  use base_kinds, only: wp
   use base_status, only: status_t
-  use kinetostatics_force_law, only: force_law_kind_t
-  use kinetostatics_force_law_factory, only: force_law_kinds, force_law_kind_index
   use kinetostatics_point_mass, only: point_mass_description_t
   use io_input, only: input_text_t, group_reader_t, open_group, format_real
   use io_friction_config, only: friction_law_variables, friction_law_names, read_friction_law
@@ -29,9 +25,7 @@ contains
     type(point_mass_description_t), intent(out) :: config
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
-    type(force_law_kind_t), allocatable :: laws(:)
     character(len=name_length) :: friction
-    integer :: j
 
     friction = 'none'
     call open_group(input, 'point_mass', r, status, also=friction_law_variables(point_mass_renamed))
@@ -48,14 +42,6 @@ contains
     if (.not. status%ok()) return
     call read_friction_law(r, trim(friction), config%friction, status, rename=point_mass_renamed)
     if (.not. status%ok()) return
-    if (friction /= 'none') then
-      laws = force_law_kinds()
-      associate (law => laws(force_law_kind_index(trim(friction))))
-        if (any([(law%parameters(j)%name == 'regularization_speed', j = 1, size(law%parameters))]) .and. &
-            .not. config%friction%has('regularization_speed')) &
-          call config%friction%set('regularization_speed', [1e-9_wp])
-      end associate
-    end if
     if (abs(config%sigma) /= 1) then
       call r%invalid('sigma', format_real(config%sigma), 'must be +1 or -1 (side of the normal)', status)
     else if (config%alpha_u == 0 .and. config%alpha_v == 0) then

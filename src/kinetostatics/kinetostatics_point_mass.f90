@@ -9,7 +9,8 @@
 !> so N does not depend on it and Coulomb friction stays explicit. The friction
 !> is any friction law of the core (kinetostatics_force_law friction_law_t,
 !> built by kinetostatics_force_law_factory): its slip_force at the slip w and
-!> the normal force N.
+!> the normal force N. A law with a regularization_speed that the description
+!> leaves unset gets the point mass's own, 1e-9 m/s (point_mass_regularization_speed).
 !>
 !> The model runs through the integration driver (numerics_event_driver): it
 !> records its own series (point_mass_series_t) and decides at the edges of
@@ -30,11 +31,17 @@ module kinetostatics_point_mass
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use kinetostatics_surface_joint, only: domain_edge_margin
   use base_spec, only: spec_t
-  use kinetostatics_force_law, only: force_law_t, friction_law_t, law_place_t
-  use kinetostatics_force_law_factory, only: force_law_from_spec
+  use kinetostatics_force_law, only: force_law_t, friction_law_t, law_place_t, force_law_kind_t
+  use kinetostatics_force_law_factory, only: force_law_from_spec, force_law_kinds, force_law_kind_index
   implicit none (type, external)
   private
   public :: point_mass_t, point_mass_state_t, point_mass_series_t, point_mass_description_t, build_point_mass_model
+
+  !> The regularization_speed of the point mass's friction law (m/s) where
+  !> its description gives none, in place of the law's declared default: the
+  !> contact's 1e-6 m/s would blur the point mass's slow slides (the shipped
+  !> inputs were computed with 1e-9).
+  real(wp), parameter :: point_mass_regularization_speed = 1e-9_wp
 
   !> Time series of a run: one entry per record (start, outputs, events).
   !> The records of a run; grown as it goes (base_series).
@@ -115,7 +122,8 @@ contains
       return
     end if
     if (.not. allocated(d%friction%kind)) return
-    call force_law_from_spec(d%friction, law_place_t('friction', 0, d%mass*norm2(d%gravity)), law, status)
+    call force_law_from_spec(point_mass_friction(d%friction), law_place_t('friction', 0, d%mass*norm2(d%gravity)), &
+                             law, status)
     if (.not. status%ok()) return
     select type (law)
     class is (friction_law_t)
@@ -126,6 +134,22 @@ contains
                       'friction_law_t)')
     end select
   end subroutine build_point_mass_model
+
+  !> `friction` with the point mass's regularization_speed where its law
+  !> declares one and the spec leaves it unset (an unknown kind is left to
+  !> force_law_from_spec to refuse).
+  function point_mass_friction(friction) result(spec)
+    type(spec_t), intent(in) :: friction
+    type(spec_t) :: spec
+    type(force_law_kind_t), allocatable :: laws(:)
+    integer :: k, j
+    spec = friction
+    k = force_law_kind_index(friction%kind)
+    if (k == 0 .or. friction%has('regularization_speed')) return
+    laws = force_law_kinds()
+    if (any([(laws(k)%parameters(j)%name == 'regularization_speed', j = 1, size(laws(k)%parameters))])) &
+      call spec%set('regularization_speed', [point_mass_regularization_speed])
+  end function point_mass_friction
 
   !> The accelerations and forces at one state; the one place the dynamics live.
   pure subroutine dynamics(self, y, p, normal, udd, vdd, normal_force, friction, status)

@@ -11,8 +11,10 @@ program test_point_mass
                                  apex_paraboloid_t
   use geometry_placed_surface, only: placed_surface_t
   use geometry_surface, only: surface_t
-  use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t
-  use kinetostatics_force_laws, only: new_coulomb_friction, new_viscous_friction
+  use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t, point_mass_description_t, &
+    build_point_mass_model
+  use kinetostatics_force_laws, only: new_coulomb_friction, new_viscous_friction, coulomb_friction_t
+  use kinetostatics_force_law_factory, only: law_spec
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
 
@@ -26,6 +28,7 @@ program test_point_mass
   call geodesic_helix()
   call incline_coulomb()
   call incline_viscous()
+  call friction_from_description()
   call finish_tests('test_point_mass')
 
 contains
@@ -220,4 +223,39 @@ contains
     call check(status%ok(), 'incline viscous: '//status%text())
     call check_close(s%speed, w_inf + (w0 - w_inf)*exp(-c*t/m%mass), 1e-9_wp, 0.0_wp, 'incline viscous: speed at 3 s')
   end subroutine incline_viscous
+
+  !> The friction build_point_mass_model builds from a description: a
+  !> Coulomb law without regularization_speed gets the point mass's 1e-9 m/s
+  !> (not the law's declared 1e-6, the contact's), a given one is kept, and a
+  !> law without that parameter gets none (viscous builds).
+  subroutine friction_from_description()
+    type(point_mass_description_t) :: d
+    type(point_mass_t) :: m
+    type(status_t) :: status
+    real(wp) :: y0(5)
+    type(plane_t) :: plane
+    plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], status)
+    d%friction = law_spec('coulomb', 'mu', 0.2_wp)
+    call build_point_mass_model(d, plane, m, y0, status)
+    call check(status%ok(), 'friction from description: coulomb built '//status%text())
+    call check(regularization(m) == 1e-9_wp, 'friction from description: coulomb regularization_speed 1e-9 m/s')
+    call d%friction%set('regularization_speed', [3e-5_wp])
+    call build_point_mass_model(d, plane, m, y0, status)
+    call check(status%ok() .and. regularization(m) == 3e-5_wp, &
+               'friction from description: a given regularization_speed kept')
+    d%friction = law_spec('viscous', 'viscous_coefficient', 2.0_wp)
+    call build_point_mass_model(d, plane, m, y0, status)
+    call check(status%ok(), 'friction from description: viscous built, no regularization added '//status%text())
+  end subroutine friction_from_description
+
+  !> The regularization_speed of a model's Coulomb law (-1: none).
+  real(wp) function regularization(model)
+    type(point_mass_t), intent(in) :: model
+    regularization = -1
+    if (.not. allocated(model%friction)) return
+    select type (law => model%friction)
+    type is (coulomb_friction_t)
+      regularization = law%regularization_speed
+    end select
+  end function regularization
 end program test_point_mass

@@ -290,9 +290,8 @@ contains
     type(point_mass_description_t) :: d
     d%mass = 2.0_wp
     d%u0 = 0.0_wp; d%v0 = 0.0_wp; d%du0 = 0.5_wp; d%dv0 = 0.0_wp
-    ! friction_coefficient is the law's mu; &point_mass's regularization default 1e-9 m/s (io_point_mass_config)
+    ! friction_coefficient is the law's mu; the regularization is the point mass's default (build_point_mass_model)
     d%friction = law_spec('coulomb', 'mu', 0.2_wp)
-    call d%friction%set('regularization_speed', [1e-9_wp])
     call run_point_mass('inputs/point_mass/plane_coulomb.nml', d, incline(0.8660254037844386_wp, -0.5_wp), &
                         1e-10_wp, 1e-10_wp, 0.01_wp)
   end subroutine point_mass_plane_coulomb
