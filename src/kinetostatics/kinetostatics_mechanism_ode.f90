@@ -72,7 +72,6 @@ module kinetostatics_mechanism_ode
     integer, allocatable :: chart_angle(:)     ! position in y of each one's deciding coordinate
                                                ! (minus its scalar index: a dependent one)
     integer :: chart_changes = 0
-    logical :: lifted_off = .false.            ! the run stopped at a lift-off (a one-sided contact's N fell to zero)
   contains
     procedure :: state_size, initial_state, check_start, start_series
     procedure :: rhs => mechanism_rhs
@@ -192,7 +191,6 @@ contains
     integer, intent(in) :: capacity
     call self%series%init(self%mechanism, capacity)
     self%outcome = ''
-    self%lifted_off = .false.
   end subroutine start_series
 
   subroutine mechanism_rhs(self, t, y, ydot, status)

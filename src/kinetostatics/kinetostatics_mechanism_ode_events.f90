@@ -458,7 +458,6 @@ contains
         i = i + 1
         if (fired(i) /= -1) cycle
         action = EVENT_STOP
-        self%lifted_off = .true.
         call add_outcome(self, 'lift-off: the normal force of contact '''//m%contacts(k)%name// &
                          ''' fell to zero'//where)
       end do

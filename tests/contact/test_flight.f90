@@ -26,9 +26,9 @@ program test_flight
   use base_vector, only: cross
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_EVENT_STOP, DRIVE_END_TIME, &
     RECORD_EVENT, RECORD_OUTPUT
-  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
+  use contact_model, only: contact_system_t, contact_convergence_coefficient
   use contact_flight, only: flight_ode_t, build_flight
-  use contact_closing, only: drive_flight, flight_after_closed
+  use contact_closing, only: drive_flight
   use io_input, only: input_text_t, input_from_text
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
@@ -43,7 +43,6 @@ program test_flight
   call bouncing_ball()
   call rolling_after_impact()
   call rolling_on()
-  call dome_lift_off()
   call refusals()
   call finish_tests('test_flight')
 
@@ -381,99 +380,6 @@ contains
       call check_close(s%body_v(3, 1, n), 0.0_wp, 0.0_wp, 1e-10_wp, 'rolling on: no vertical speed (m/s)')
     end associate
   end subroutine rolling_on
-
-  !> A ball (radius r = 0.1 m) rolling without slip off a fixed sphere (the
-  !> dome, radius 1 m), from rest near its top at theta_0 from the vertical
-  !> (its centre on the sphere of radius R = 1.1 m): energy m g R (cos
-  !> theta_0 - cos theta) = 7/10 m v^2 (rolling: v = omega r, I = 2/5 m r^2)
-  !> and the normal force m g cos theta - m v^2/R falling to zero give the
-  !> lift-off at cos theta = 10/17 cos theta_0. With may_open the contact opens
-  !> there and the ball flies: its centre on the projectile c_L + v_L s +
-  !> g s^2/2 from the lift-off state (c_L, v_L; s since the lift-off), its
-  !> angular velocity kept (a sphere, torque-free), its pose and twist
-  !> continuous across the switch (1e-12 m, 1e-12 of v_L); it moves away from
-  !> the dome (the gap grows: no landing) to the end. Without may_open the
-  !> same input ends at the lift-off, as before. Tolerances: rtol 1e-10: the
-  !> lift-off's cos theta to 1e-7 as cli_contact_lift_off's dome, the flight
-  !> (a polynomial motion from the recorded lift-off state) to 1e-9 m.
-  subroutine dome_lift_off()
-    type(flight_ode_t), target :: flight
-    type(contact_model_t) :: model
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
-    type(contact_system_t) :: system
-    type(driver_options_t) :: options
-    type(driver_result_t) :: result
-    type(status_t) :: st
-    real(wp), allocatable :: q0(:), qd0(:)
-    integer, allocatable :: in_flight(:)
-    character(len=8), allocatable :: units(:)
-    character(len=:), allocatable :: text
-    real(wp) :: c0, c_l, s, worst_path, worst_spin, gap_min
-    integer :: n, lift, i
-    text = '&run scenario = ''contact'' /'//nl// &
-           '&solver rtol = 1e-10, atol = 1e-10, duration = 3, output_step = 0.01 /'//nl// &
-           '&shape name = ''dome'', kind = ''ellipsoid'', a = 1, b = 1, c = 1 /'//nl// &
-           '&shape name = ''ball'', kind = ''ellipsoid'', a = 0.1, b = 0.1, c = 0.1 /'//nl// &
-           '&body name = ''ball'', mass = 1, solid_of = ''ball'', position = 0.05, 0, 1.1, angles_deg = 90, 0, 0 /'// &
-           nl//'&contact name = ''ball_on_dome'', shape_1 = ''dome'', body_2 = ''ball'', shape_2 = ''ball'', '// &
-           'rolling = .true., may_open = .true. /'//nl
-    call input_from_text('dome', text, input, st)
-    call read_solver_config(input, solver, st)
-    call read_contact_config(input, system, st)
-    call build_contact_model(system, model, st)
-    call flight_after_closed(system, model, flight, q0, qd0, units, st)
-    call check(st%ok(), 'dome: built from the input: '//st%text())
-    if (.not. st%ok()) return
-    options%ode%rtol = 1e-10_wp
-    options%ode%atol = 1e-10_wp
-    options%ode%convergence_coefficient = contact_convergence_coefficient
-    options%t_end = 3
-    options%output_step = 0.01_wp
-    options%progress_seconds = 0
-    call flight%start_series(400)
-    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, in_flight)
-    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'dome: runs to the end: '//st%text())
-    call check(index(flight%outcome, 'lift-off: the normal force of contact ''ball_on_dome'' fell to zero') == 1 &
-               .and. index(flight%outcome, 'the contact opens (may_open), the body flies') > 0, &
-               'dome: the outcome says lift-off and flight: '//flight%outcome)
-    associate (sr => flight%series)
-      n = sr%n
-      call check(size(in_flight) == n .and. in_flight(1) == 0 .and. in_flight(n) == 1, &
-                 'dome: closed, then in flight')
-      if (size(in_flight) /= n .or. n < 3) return
-      lift = count(in_flight == 0)
-      call check(all(in_flight(:lift) == 0) .and. all(in_flight(lift + 1:) == 1), 'dome: one switch')
-      call check(sr%time(lift) == sr%time(lift + 1), 'dome: the closed contact''s last record and the flight''s '// &
-                 'first at the lift-off')
-      c0 = sr%body_r(3, 1, 1)/norm2(sr%body_r(:, 1, 1))
-      c_l = sr%body_r(3, 1, lift)/norm2(sr%body_r(:, 1, lift))
-      call check_close(c_l, 10.0_wp/17*c0, 1e-7_wp, 0.0_wp, 'dome: lift-off at cos theta = 10/17 cos theta_0')
-      call check_close(maxval(abs(sr%body_r(:, 1, lift + 1) - sr%body_r(:, 1, lift))), 0.0_wp, 0.0_wp, 1e-12_wp, &
-                       'dome: the position continuous across the switch (m)')
-      call check_close(maxval(abs(sr%body_rot(:, :, 1, lift + 1) - sr%body_rot(:, :, 1, lift))), 0.0_wp, 0.0_wp, &
-                       1e-12_wp, 'dome: the orientation continuous across the switch')
-      call check_close(maxval(abs(sr%body_v(:, 1, lift + 1) - sr%body_v(:, 1, lift))), 0.0_wp, 0.0_wp, &
-                       1e-12_wp*norm2(sr%body_v(:, 1, lift)), 'dome: the velocity continuous across the switch (m/s)')
-      call check_close(0.1_wp*maxval(abs(sr%body_omega(:, 1, lift + 1) - sr%body_omega(:, 1, lift))), 0.0_wp, &
-                       0.0_wp, 1e-12_wp*norm2(sr%body_v(:, 1, lift)), &
-                       'dome: the angular velocity continuous across the switch (r rad/s)')
-      worst_path = 0
-      worst_spin = 0
-      gap_min = huge(1.0_wp)
-      do i = lift + 1, n
-        s = sr%time(i) - sr%time(lift)
-        worst_path = max(worst_path, norm2(sr%body_r(:, 1, i) - (sr%body_r(:, 1, lift) + sr%body_v(:, 1, lift)*s + &
-                                                                  system%gravity*s**2/2)))
-        worst_spin = max(worst_spin, norm2(sr%body_omega(:, 1, i) - sr%body_omega(:, 1, lift)))
-        gap_min = min(gap_min, norm2(sr%body_r(:, 1, i)) - 1.1_wp)
-      end do
-      call check_close(worst_path, 0.0_wp, 0.0_wp, 1e-9_wp, 'dome: the projectile from the lift-off state (m)')
-      call check_close(worst_spin, 0.0_wp, 0.0_wp, 1e-9_wp, 'dome: the spin kept in flight (rad/s)')
-      call check(gap_min >= -1e-12_wp .and. norm2(sr%body_r(:, 1, n)) > 1.5_wp, &
-                 'dome: it flies away from the dome (no landing)')
-    end associate
-  end subroutine dome_lift_off
 
   subroutine refusals()
     type(flight_ode_t) :: flight
