@@ -1,82 +1,78 @@
 !> &channel and &water: the channel the water runs in (when no fitted slide is
 !> given) and the water model's parameters, start and outputs (docs/water.md),
-!> read into the water layer's own description (water_run's
-!> water_description_t): io reads, the water layer builds.
+!> read into the geometry layer's channel_description_t and the water layer's
+!> water_description_t (water_run): io reads, the layers build.
 module io_water_config
   use base_kinds, only: wp
   use base_text, only: format_integer
-  use base_constants, only: pi
   use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
-  use io_input, only: input_text_t, group_reader_t, open_group, format_real, group_count
-  use geometry_tube, only: tube_surface_t, new_straight_tube, new_helix_tube, new_s_bend_tube
+  use io_input, only: input_text_t, group_reader_t, open_group, format_real, group_count, where_given
+  use geometry_channel, only: channel_description_t
   use water_streamline, only: CORRECTION_FULL, CORRECTION_NO_RADIUS, CORRECTION_OFF
   use water_flow, only: START_EDGES, START_HEIGHT, START_SPEED, START_HEIGHT_SPEED
   use water_run, only: water_description_t, water_inlet_t
   implicit none (type, external)
   private
-  public :: read_water_config, read_channel_config, max_stations
+  public :: read_water_config, read_channel_config, explain_channel_failure, max_stations
 
   integer, parameter :: max_stations = 500
 
 contains
 
   !> &channel: kind = 'straight' | 'helix' | 's_bend' (circular tubes around
-  !> closed-form centerlines, geometry_tube).
-  subroutine read_channel_config(input, tube, status)
+  !> closed-form centerlines), read into the geometry layer's
+  !> channel_description_t (geometry_channel); build_channel builds it.
+  subroutine read_channel_config(input, channel, status)
     type(input_text_t), intent(in) :: input
-    type(tube_surface_t), intent(out) :: tube
+    type(channel_description_t), intent(out) :: channel
     type(status_t), intent(inout) :: status
-    character(len=8) :: kind
-    real(wp) :: radius, incline_deg, length, helix_radius, pitch, turn_sense, turns, amplitude, &
-                wavenumber, slope
     type(group_reader_t) :: r
-    type(status_t) :: built
     character(len=:), allocatable :: unused
 
-    kind = 'straight'; radius = 0.5_wp; incline_deg = 10; length = 50
-    helix_radius = 3; pitch = 0.3_wp; turn_sense = 1; turns = 2
-    amplitude = 1.5_wp; wavenumber = 0.4_wp; slope = 0.1_wp
     call open_group(input, 'channel', r, status)
-    call r%get('kind', kind, status)
-    call r%get('radius', radius, status)
+    call r%get('kind', channel%kind, status)
+    call r%get('radius', channel%radius, status)
     if (.not. status%ok()) return
-    unused = 'a '//trim(kind)//' channel does not use it (see docs/water.md)'
-    select case (trim(kind))
+    unused = 'a '//trim(channel%kind)//' channel does not use it (see docs/water.md)'
+    select case (trim(channel%kind))
     case ('helix')
       call r%refuse_given([character(len=12) :: 'incline_deg', 'length', 'amplitude', 'wavenumber', 'slope'], unused, status)
-      call r%get('helix_radius', helix_radius, status)
-      call r%get('pitch', pitch, status)
-      call r%get('turn_sense', turn_sense, status)
-      call r%get('turns', turns, status)
-      if (status%ok() .and. abs(turn_sense) /= 1) &
-        call r%invalid('turn_sense', format_real(turn_sense), 'must be +1 or -1', status)
-      if (status%ok() .and. helix_radius <= radius) &
-        call r%invalid('helix_radius', format_real(helix_radius), &
-                       'must exceed the tube radius '//format_real(radius)//' m (else the tube folds)', status)
-      if (status%ok()) tube = new_helix_tube(radius, helix_radius, pitch, turn_sense, 2*pi*turns, built)
+      call r%get('helix_radius', channel%helix_radius, status)
+      call r%get('pitch', channel%pitch, status)
+      call r%get('turn_sense', channel%turn_sense, status)
+      call r%get('turns', channel%turns, status)
     case ('s_bend')
       call r%refuse_given([character(len=12) :: 'incline_deg', 'helix_radius', 'pitch', 'turn_sense', 'turns'], unused, status)
-      call r%get('length', length, status)
-      call r%get('amplitude', amplitude, status)
-      call r%get('wavenumber', wavenumber, status)
-      call r%get('slope', slope, status)
-      if (status%ok()) tube = new_s_bend_tube(radius, amplitude, wavenumber, slope, length, built)
+      call r%get('length', channel%length, status)
+      call r%get('amplitude', channel%amplitude, status)
+      call r%get('wavenumber', channel%wavenumber, status)
+      call r%get('slope', channel%slope, status)
     case default
       call r%refuse_given([character(len=12) :: 'helix_radius', 'pitch', 'turn_sense', 'turns', 'amplitude', &
                           'wavenumber', 'slope'], unused, status)
-      call r%get('length', length, status)
-      call r%get('incline_deg', incline_deg, status)
-      if (status%ok()) tube = new_straight_tube(radius, incline_deg*pi/180, length, built)
+      call r%get('length', channel%length, status)
+      call r%get('incline_deg', channel%incline_deg, status)
     end select
-    ! the fold and clearance checks of every tube (no turn passing through another)
-    if (status%ok() .and. built%ok()) call tube%check(2000, built)
-    if (status%ok() .and. .not. built%ok()) then
-      status = built
-      status%code = STATUS_INVALID_INPUT
-      call prefix_status(status, r%where('kind')//': &channel')
-    end if
-
   end subroutine read_channel_config
+
+  !> The failure `built` of building &channel's tube (build_channel, whose
+  !> `variable` is the value at fault, '' for the tube as a whole) put in
+  !> `status`, naming the line of that value (else of &channel's kind).
+  !> Nothing when `built` is ok.
+  subroutine explain_channel_failure(input, built, variable, status)
+    type(input_text_t), intent(in) :: input
+    type(status_t), intent(in) :: built
+    character(len=*), intent(in) :: variable
+    type(status_t), intent(inout) :: status
+    if (built%ok()) return
+    status = built
+    status%code = STATUS_INVALID_INPUT
+    if (len(variable) > 0) then
+      call prefix_status(status, where_given(input, 'channel', variable)//': &channel')
+    else
+      call prefix_status(status, where_given(input, 'channel', 'kind')//': &channel')
+    end if
+  end subroutine explain_channel_failure
 
   !> The water's part of `config` from &water: everything but the slide
   !> (&surface or &channel) and the solver (&solver or &water_solver), which

@@ -22,7 +22,8 @@ module scenarios_water
   use io_geometry_config, only: geometry_groups
   use io_surface_config, only: read_surface_config, surface_source_t, explain_surface_failure
   use geometry_surface_description, only: surface_description_t, build_surface
-  use io_water_config, only: read_water_config, read_channel_config
+  use io_water_config, only: read_water_config, read_channel_config, explain_channel_failure
+  use geometry_channel, only: channel_description_t, build_channel
   use io_hdf5, only: result_file_t, run_outcome, run_message
   use io_water_results, only: write_water_results
   use io_system, only: write_standard_output
@@ -60,6 +61,7 @@ contains
     type(solver_config_t) :: solver
     class(surface_t), allocatable :: surface
     type(tube_surface_t) :: tube
+    type(channel_description_t) :: channel_description
     type(channel_t) :: channel
     type(streamline_t) :: model
     real(wp) :: u_min, u_max, v_min, v_max, total, start_speed, y0(7), start_arc
@@ -102,7 +104,9 @@ contains
       end select
     else
       call refuse_unselected_geometry(input, status)
-      call read_channel_config(input, tube, status)
+      call read_channel_config(input, channel_description, status)
+      if (status%ok()) call build_channel(channel_description, tube, built, variable)
+      if (status%ok()) call explain_channel_failure(input, built, variable, status)
       if (.not. status%ok()) return
       description%slide = tube
       if (group_present(input, 'channel')) then

@@ -90,6 +90,11 @@ expect flume_edges_outside 1 flume_edges_outside.nml '&water' 'v_left0, v_right0
 
 printf "&run scenario = 'water', output = 'w.h5' /\n&channel kind = 'helix', radius = 0.5, helix_radius = 0.4 /\n&water /\n" > "$work/folding_helix.nml"
 expect folding_helix 1 '&channel' 'helix_radius = 0.4' 'folds'
+# the geometry layer refuses these (build_channel); the line named is the variable's
+printf "&run scenario = 'water', output = 'w.h5' /\n&channel kind = 'helix',\n  turn_sense = 0.5 /\n&water /\n" > "$work/half_turn_sense.nml"
+expect half_turn_sense 1 'half_turn_sense.nml:3: &channel: turn_sense = 0.5 is not allowed: must be +1 or -1'
+printf "&run scenario = 'water', output = 'w.h5' /\n&channel kind = 's_bend',\n wavenumber = 3.0 /\n" > "$work/folding_s_bend.nml"
+expect folding_s_bend 1 'folding_s_bend.nml:2: &channel: tube surface: radius of curvature' 'fold'
 printf "&run scenario = 'water', output = 'w.h5' /\n&surface kind = 'ellipsoid' /\n&water /\n" > "$work/not_a_tube.nml"
 expect not_a_tube 1 '&surface' 'needs a tube'
 
