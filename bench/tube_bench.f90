@@ -16,18 +16,21 @@ program tube_bench
   use geometry_cross_section, only: circle_section_t
   use geometry_tube, only: tube_surface_t, new_tube_surface
   use io_input, only: input_text_t, load_input_file
-  use io_geometry_config, only: read_geometry_config
+  use io_geometry_config, only: read_geometry_description
+  use geometry_description, only: geometry_description_t, build_geometry
   use bench_timing, only: median
   implicit none (type, external)
 
   integer, parameter :: n_calls = 200000, repeats = 7
   class(surface_t), allocatable :: slide, exact
+  type(geometry_description_t) :: description
   type(tube_surface_t) :: helix_tube
   type(input_text_t) :: input, exact_input
   type(status_t) :: status
 
   call load_input_file('inputs/demo_slide/slide.nml', input, status)
-  if (status%ok()) call read_geometry_config(input, slide, status)
+  if (status%ok()) call read_geometry_description(input, description, status)
+  if (status%ok()) call build_geometry(description, slide, status)
   if (.not. status%ok()) then
     print '(a)', 'tube_bench: ' // status%text() // ' (run from the repository root)'
     stop 1
@@ -35,7 +38,8 @@ program tube_bench
   ! the same slide with the exact element centerline
   exact_input = input
   call exact_input%override('slide_elements%centerline_kind=''exact''', status)
-  if (status%ok()) call read_geometry_config(exact_input, exact, status)
+  if (status%ok()) call read_geometry_description(exact_input, description, status)
+  if (status%ok()) call build_geometry(description, exact, status)
   helix_tube = new_tube_surface(helix_curve_t(radius=4.0_wp, pitch=-0.4_wp, u_min=0.0_wp, u_max=two_pi), &
                                 constant_curve_t(), circle_section_t(radius=0.5_wp), status)
 

@@ -13,9 +13,8 @@ module io_geometry_config
   use base_kinds, only: wp
   use base_text, only: format_integer
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT, STATUS_IO
-  use geometry_surface, only: surface_t
   use geometry_description, only: geometry_description_t, patch_description_t, blended_description_t, &
-    bspline_description_t, build_geometry
+    bspline_description_t
   use io_input, only: input_text_t, group_reader_t, open_group, in_range, bounds_t, format_real, group_present, &
     where_given
   use io_csv, only: read_csv_table
@@ -24,7 +23,7 @@ module io_geometry_config
   use io_declarations_geometry, only: max_patches
   implicit none (type, external)
   private
-  public :: read_geometry_config, read_geometry_description, explain_geometry_failure
+  public :: read_geometry_description, explain_geometry_failure
   public :: geometry_groups, geometry_file_groups
 
   character(len=*), parameter :: geometry_groups(6) = [character(len=14) :: 'geometry', 'centerline', &
@@ -33,23 +32,6 @@ module io_geometry_config
   character(len=*), parameter :: geometry_file_groups(8) = [character(len=14) :: 'run', 'grid', geometry_groups]
 
 contains
-
-  !> Builds the surface described by the geometry groups of `input`. If `kind`
-  !> is given (by &surface kind = 'slide', ...) &geometry kind may only repeat it.
-  subroutine read_geometry_config(input, surface, status, kind)
-    type(input_text_t), intent(in) :: input
-    class(surface_t), allocatable, intent(out) :: surface
-    type(status_t), intent(inout) :: status
-    character(len=*), intent(in), optional :: kind
-    type(geometry_description_t) :: description
-    character(len=:), allocatable :: part, variable, bspline_file
-    type(status_t) :: built
-
-    call read_geometry_description(input, description, status, kind, bspline_file)
-    if (.not. status%ok()) return
-    call build_geometry(description, surface, built, part, variable)
-    call explain_geometry_failure(input, built, part, variable, bspline_file, status)
-  end subroutine read_geometry_config
 
   !> The failure `built` of building the geometry of `input` (build_geometry's
   !> `part` and `variable`; `bspline_file` as given) put in `status`, naming
@@ -84,7 +66,8 @@ contains
   end subroutine explain_geometry_failure
 
   !> The description of the surface the geometry groups of `input` give,
-  !> every value checked; nothing built. `kind` as for read_geometry_config;
+  !> every value checked; nothing built (build_geometry builds it). If `kind`
+  !> is given (by &surface kind = 'slide', ...) &geometry kind may only repeat it;
   !> `bspline_file` is &bspline file as given (for messages).
   subroutine read_geometry_description(input, description, status, kind, bspline_file)
     type(input_text_t), intent(in) :: input

@@ -14,7 +14,8 @@ module scenarios_geometry
   use geometry_tube, only: tube_surface_t
   use io_input, only: input_text_t, check_known_groups, group_reader_t, open_group, format_real
   use io_run_config, only: run_config_t
-  use io_geometry_config, only: read_geometry_config, geometry_groups
+  use io_geometry_config, only: read_geometry_description, explain_geometry_failure, geometry_groups
+  use geometry_description, only: geometry_description_t, build_geometry
   use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t, engineering
   use io_surface_grid, only: write_surface_grid
@@ -37,6 +38,9 @@ contains
     type(run_config_t), intent(in) :: run
     type(status_t), intent(inout) :: status
     class(surface_t), allocatable :: surface
+    type(geometry_description_t) :: description
+    character(len=:), allocatable :: part, variable, bspline_file
+    type(status_t) :: built
     type(result_file_t) :: file
     type(status_t) :: work
     integer :: n_u, n_v, n_frames
@@ -47,7 +51,9 @@ contains
 
     call check_known_groups(input, geometry_scenario_groups, status)
     if (status%ok()) call read_grid(input, n_u, n_v, n_frames, status)
-    if (status%ok()) call read_geometry_config(input, surface, status)
+    if (status%ok()) call read_geometry_description(input, description, status, bspline_file=bspline_file)
+    if (status%ok()) call build_geometry(description, surface, built, part, variable)
+    if (status%ok()) call explain_geometry_failure(input, built, part, variable, bspline_file, status)
     if (.not. status%ok() .or. run%check_only) return
     call file%create(trim(run%output), status)
     if (.not. status%ok()) return

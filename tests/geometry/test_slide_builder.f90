@@ -14,7 +14,8 @@ program test_slide_builder
   use geometry_slide_elements, only: slide_element_t
   use geometry_slide_builder, only: slide_description_t, section_part_description_t, build_slide
   use io_input, only: input_text_t, load_input_file
-  use io_geometry_config, only: read_geometry_config
+  use io_geometry_config, only: read_geometry_description
+  use geometry_description, only: geometry_description_t, build_geometry
   use testing, only: check, finish_tests
   implicit none (type, external)
 
@@ -72,12 +73,14 @@ contains
     character(len=*), intent(in) :: path, name
     type(input_text_t) :: input
     class(surface_t), allocatable :: b
+    type(geometry_description_t) :: description
     type(surface_point_t) :: pa, pb
     type(status_t) :: st
     real(wp) :: u_min, u_max, u, v, worst
     integer :: k
     call load_input_file(path, input, st)
-    if (st%ok()) call read_geometry_config(input, b, st)
+    if (st%ok()) call read_geometry_description(input, description, st)
+    if (st%ok()) call build_geometry(description, b, st)
     call check(st%ok(), name//': the reader''s surface: '//st%text())
     if (.not. st%ok()) return
     call a%centerline%domain(u_min, u_max)

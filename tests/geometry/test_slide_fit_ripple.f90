@@ -15,7 +15,8 @@ program test_slide_fit_ripple
   use geometry_tube, only: tube_surface_t
   use geometry_slide_elements, only: slide_element_t, element_chain_curve_t, new_element_chain, slide_points
   use io_input, only: input_text_t, load_input_file
-  use io_geometry_config, only: read_geometry_config
+  use io_geometry_config, only: read_geometry_description
+  use geometry_description, only: geometry_description_t, build_geometry
   use testing, only: check, check_close_array, finish_tests
   implicit none (type, external)
 
@@ -26,6 +27,7 @@ program test_slide_fit_ripple
   type(constant_curve_t) :: up
   type(input_text_t) :: input
   class(surface_t), allocatable :: surface
+  type(geometry_description_t) :: description
   type(curve_point_t) :: p, q
   real(wp) :: ripple_coarse, ripple_default, u
   integer :: i
@@ -58,7 +60,8 @@ program test_slide_fit_ripple
   ! the demo slide as read from its input is that default fit
   call load_input_file('inputs/demo_slide/slide.nml', input, st)
   call check(st%ok(), 'demo slide input read: ' // st%text())
-  call read_geometry_config(input, surface, st)
+  call read_geometry_description(input, description, st)
+  if (st%ok()) call build_geometry(description, surface, st)
   call check(st%ok(), 'demo slide built: ' // st%text())
   if (st%ok()) then
     select type (surface)
