@@ -13,6 +13,7 @@ module geometry_curve
   use base_status, only: status_t, set_status, prefix_status, STATUS_OK, STATUS_DOMAIN, &
                          STATUS_NOT_CONVERGED, STATUS_INVALID_INPUT
   use numerics_spline_curve, only: spline_curve_t
+  use numerics_quadrature, only: gl8_x, gl8_w
   implicit none (type, external)
   private
   public :: curve_t, curve_point_t, line_curve_t, helix_curve_t, constant_curve_t, polynomial_curve_t, &
@@ -135,13 +136,6 @@ module geometry_curve
     procedure :: parameter_unit => spline_parameter_unit
   end type spline_centerline_t
 
-  ! 8-point Gauss-Legendre nodes and weights on [-1, 1].
-  real(wp), parameter :: gl_x(8) = [-0.9602898564975363_wp, -0.7966664774136267_wp, &
-    -0.5255324099163290_wp, -0.1834346424956498_wp, 0.1834346424956498_wp, &
-    0.5255324099163290_wp, 0.7966664774136267_wp, 0.9602898564975363_wp]
-  real(wp), parameter :: gl_w(8) = [0.1012285362903763_wp, 0.2223810344533745_wp, &
-    0.3137066458778873_wp, 0.3626837833783620_wp, 0.3626837833783620_wp, &
-    0.3137066458778873_wp, 0.2223810344533745_wp, 0.1012285362903763_wp]
   !> Sub-intervals of the whole domain for the arc-length quadrature.
   integer, parameter :: arc_panels = 256
 
@@ -415,8 +409,8 @@ contains
       integer :: k
       q = 0
       do k = 1, 8
-        call self%evaluate(0.5_wp*(x0 + x1) + 0.5_wp*(x1 - x0)*gl_x(k), 1, p, st)
-        q = q + gl_w(k)*norm2(p%d(:, 1))
+        call self%evaluate(0.5_wp*(x0 + x1) + 0.5_wp*(x1 - x0)*gl8_x(k), 1, p, st)
+        q = q + gl8_w(k)*norm2(p%d(:, 1))
       end do
       q = 0.5_wp*(x1 - x0)*q
     end function panel

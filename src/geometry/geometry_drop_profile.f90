@@ -28,6 +28,7 @@ module geometry_drop_profile
   use base_constants, only: pi
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_text, only: format_real
+  use numerics_quadrature, only: gl8_x, gl8_w
   implicit none (type, external)
   private
   public :: drop_profile_t, new_drop_profile, smoothstep
@@ -50,13 +51,6 @@ module geometry_drop_profile
     procedure :: deviation => drop_deviation
     procedure :: pitch_sine => drop_pitch_sine
   end type drop_profile_t
-
-  real(wp), parameter :: gl_x(8) = [-0.9602898564975363_wp, -0.7966664774136267_wp, &
-    -0.5255324099163290_wp, -0.1834346424956498_wp, 0.1834346424956498_wp, &
-    0.5255324099163290_wp, 0.7966664774136267_wp, 0.9602898564975363_wp]
-  real(wp), parameter :: gl_w(8) = [0.1012285362903763_wp, 0.2223810344533745_wp, &
-    0.3137066458778873_wp, 0.3626837833783620_wp, 0.3626837833783620_wp, &
-    0.3137066458778873_wp, 0.2223810344533745_wp, 0.1012285362903763_wp]
 
 contains
 
@@ -115,7 +109,7 @@ contains
         d%node(k) = b
         x = 0
         do i = 1, 8
-          x = x + gl_w(i)*excess_gradient(d, 0.5_wp*(a + b) + 0.5_wp*(b - a)*gl_x(i))
+          x = x + gl8_w(i)*excess_gradient(d, 0.5_wp*(a + b) + 0.5_wp*(b - a)*gl8_x(i))
         end do
         d%excess(k) = d%excess(k - 1) + 0.5_wp*(b - a)*x
       end do
@@ -136,35 +130,34 @@ contains
     type(drop_profile_t), intent(in) :: d
     real(wp), intent(in) :: s
     real(wp), intent(out) :: q(0:3)
-    real(wp) :: s0(0:3), p0, s2(0:3), p2, t2
+    real(wp) :: s0(0:3), p0, s2(0:3), p2
     integer :: m
-    t2 = s - d%ramp_top - d%core
-    ! each ramp a smoothstep, or a step where its width is 0
-    if (d%ramp_top > 0) then
-      call smoothstep(s/d%ramp_top, s0, p0)
-      p0 = d%ramp_top*p0
-      do m = 1, 3
-        s0(m) = s0(m)/d%ramp_top**m
-      end do
-    else
-      s0 = 0; p0 = max(s, 0.0_wp)
-      if (s >= 0) s0(0) = 1
-    end if
-    if (d%ramp_exit > 0) then
-      call smoothstep(t2/d%ramp_exit, s2, p2)
-      p2 = d%ramp_exit*p2
-      do m = 1, 3
-        s2(m) = s2(m)/d%ramp_exit**m
-      end do
-    else
-      s2 = 0; p2 = max(t2, 0.0_wp)
-      if (t2 >= 0) s2(0) = 1
-    end if
+    call ramp(s, d%ramp_top, s0, p0)
+    call ramp(s - d%ramp_top - d%core, d%ramp_exit, s2, p2)
     q(0) = d%q_top - (p0 - p2)/d%radius
     do m = 1, 3
       q(m) = -(s0(m - 1) - s2(m - 1))/d%radius
     end do
   end subroutine curve_out_sine
+
+  !> A curvature ramp of horizontal width `width` that starts at s = 0: the
+  !> smoothstep S(s/width) and its s-derivatives (d(0:3)) and its integral
+  !> from 0 to s (m); a step at s = 0 where the width is 0.
+  pure subroutine ramp(s, width, d, integral)
+    real(wp), intent(in) :: s, width
+    real(wp), intent(out) :: d(0:3), integral
+    integer :: m
+    if (width > 0) then
+      call smoothstep(s/width, d, integral)
+      integral = width*integral
+      do m = 1, 3
+        d(m) = d(m)/width**m
+      end do
+    else
+      d = 0; integral = max(s, 0.0_wp)
+      if (s >= 0) d(0) = 1
+    end if
+  end subroutine ramp
 
   !> g - g_exit at sigma - fall = s (the table's integrand).
   pure real(wp) function excess_gradient(d, s)
@@ -229,7 +222,7 @@ contains
     a = self%node(lo)
     x = 0
     do n = 1, 8
-      x = x + gl_w(n)*excess_gradient(self, 0.5_wp*(a + s) + 0.5_wp*(s - a)*gl_x(n))
+      x = x + gl8_w(n)*excess_gradient(self, 0.5_wp*(a + s) + 0.5_wp*(s - a)*gl8_x(n))
     end do
     dint = (self%g_top - self%g_exit)*self%fall + self%excess(lo) + 0.5_wp*(s - a)*x
   end subroutine drop_deviation

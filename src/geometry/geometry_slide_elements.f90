@@ -30,6 +30,7 @@ module geometry_slide_elements
   use base_kinds, only: wp
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT
+  use numerics_quadrature, only: gl8_x, gl8_w
   use geometry_curve, only: curve_t, curve_point_t
   use geometry_drop_profile, only: drop_profile_t, new_drop_profile, smoothstep
   implicit none (type, external)
@@ -72,13 +73,6 @@ module geometry_slide_elements
     procedure :: parameter_unit => chain_parameter_unit
     procedure :: element_at => chain_element_at
   end type element_chain_curve_t
-
-  real(wp), parameter :: gl_x(8) = [-0.9602898564975363_wp, -0.7966664774136267_wp, &
-    -0.5255324099163290_wp, -0.1834346424956498_wp, 0.1834346424956498_wp, &
-    0.5255324099163290_wp, 0.7966664774136267_wp, 0.9602898564975363_wp]
-  real(wp), parameter :: gl_w(8) = [0.1012285362903763_wp, 0.2223810344533745_wp, &
-    0.3137066458778873_wp, 0.3626837833783620_wp, 0.3626837833783620_wp, &
-    0.3137066458778873_wp, 0.2223810344533745_wp, 0.1012285362903763_wp]
 
 contains
 
@@ -210,8 +204,8 @@ contains
       b = k*c%node_step
       xy = 0
       do i = 1, 8
-        s = 0.5_wp*(a + b) + 0.5_wp*(b - a)*gl_x(i)
-        xy = xy + gl_w(i)*direction_xy(c, s)
+        s = 0.5_wp*(a + b) + 0.5_wp*(b - a)*gl8_x(i)
+        xy = xy + gl8_w(i)*direction_xy(c, s)
       end do
       c%node_xy(:, k) = c%node_xy(:, k - 1) + 0.5_wp*(b - a)*xy
     end do
@@ -288,8 +282,8 @@ contains
       a = node*self%node_step
       xy = 0
       do i = 1, 8
-        s = 0.5_wp*(a + u) + 0.5_wp*(u - a)*gl_x(i)
-        xy = xy + gl_w(i)*direction_xy(self, s)
+        s = 0.5_wp*(a + u) + 0.5_wp*(u - a)*gl8_x(i)
+        xy = xy + gl8_w(i)*direction_xy(self, s)
       end do
       p%order = min(max(order, 0), 4)
       p%d(1:2, 0) = self%node_xy(:, node) + 0.5_wp*(u - a)*xy
