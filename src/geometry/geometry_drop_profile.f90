@@ -12,8 +12,9 @@
 !>   a ramp of width w2   curvature 1/R -> 0, ending at the exit slope,
 !> so q(sigma) = q_top - [w1 P(t0) - w2 P(t2)]/R, t0 = (sigma - fall)/w1,
 !> t2 = (sigma - fall - w1 - core)/w2, P the integral of S: the curvature is
-!> C3 (clothoid-like transitions; w = 0 gives a circle whose curvature jumps
-!> at its ends). A ramp is the chain's transition length L as arc length:
+!> C3 (clothoid-like transitions; w = 0, a circle whose curvature jumps at
+!> its ends, is refused: the speed of whatever rides it would jump there, as
+!> at a sharp joint of the chain). A ramp is the chain's transition length L as arc length:
 !> w = L cos(pitch) horizontally at its end of the circle (it turns the
 !> pitch by about L/(2R), as a clothoid of length L), at most a quarter of
 !> the turn R (q_top - q_exit), so the core is never shorter than a ramp.
@@ -71,8 +72,15 @@ contains
                       format_real(drop_max_slope_deg)//'] deg')
       return
     end if
-    if (.not. (radius > 0 .and. height > 0 .and. ramp >= 0)) then
+    if (.not. (radius > 0 .and. height > 0)) then
       call set_status(status, STATUS_INVALID_INPUT, 'a drop needs a radius > 0 m and a drop (height) > 0 m')
+      return
+    end if
+    if (.not. ramp > 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'transition_length = 0 would give the curve-out sharp '// &
+                      'ends: its curvature would jump between 0 and 1/R there, and a rider''s or the water''s '// &
+                      'speed with the slide''s parameter speed |r_u| (a wrong answer, not physics); give '// &
+                      'transition_length > 0')
       return
     end if
     d%q_top = sin(slope_deg*pi/180)
@@ -142,21 +150,16 @@ contains
 
   !> A curvature ramp of horizontal width `width` that starts at s = 0: the
   !> smoothstep S(s/width) and its s-derivatives (d(0:3)) and its integral
-  !> from 0 to s (m); a step at s = 0 where the width is 0.
+  !> from 0 to s (m). The width is > 0 (new_drop_profile).
   pure subroutine ramp(s, width, d, integral)
     real(wp), intent(in) :: s, width
     real(wp), intent(out) :: d(0:3), integral
     integer :: m
-    if (width > 0) then
-      call smoothstep(s/width, d, integral)
-      integral = width*integral
-      do m = 1, 3
-        d(m) = d(m)/width**m
-      end do
-    else
-      d = 0; integral = max(s, 0.0_wp)
-      if (s >= 0) d(0) = 1
-    end if
+    call smoothstep(s/width, d, integral)
+    integral = width*integral
+    do m = 1, 3
+      d(m) = d(m)/width**m
+    end do
   end subroutine ramp
 
   !> g - g_exit at sigma - fall = s (the table's integrand).

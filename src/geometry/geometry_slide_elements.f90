@@ -11,8 +11,13 @@
 !>   S(t) = 35 t^4 - 84 t^5 + 70 t^6 - 20 t^7  (C3: S', S'', S''' vanish at 0 and 1)
 !> — a clothoid-like transition (kappa varies smoothly instead of jumping), so
 !> the centerline is C4 and the tube's third partials are continuous. L is the
-!> transition length given by the user, shortened to the shorter neighbour;
-!> L = 0 gives sharp joints (continuous tangent, curvature jumps).
+!> transition length given by the user, shortened to the shorter neighbour.
+!> L = 0 is refused where a joint changes the slope or the curvature: such a
+!> sharp joint is a kink of the centerline (slope) or a jump of the tube's
+!> r_u off the centerline (curvature), and whatever moves on the slide has
+!> the state (u, v, u', v'), so carried across it its speed |r_u u' + r_v v'|
+!> would jump (~10 % at 0.5 m off the centerline into a curve of radius
+!> 6 m, test_sharp_joints): a silent wrong answer.
 !> A drop (geometry_drop_profile) has a gradient of its own that ends at the
 !> next element's: the chain takes that gradient for it and adds the drop's
 !> deviation from it, so the joint after a drop has no step in g and the
@@ -30,6 +35,7 @@ module geometry_slide_elements
   use base_kinds, only: wp
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT
+  use base_text, only: format_integer
   use numerics_quadrature, only: gl8_x, gl8_w
   use geometry_curve, only: curve_t, curve_point_t
   use geometry_drop_profile, only: drop_profile_t, new_drop_profile, smoothstep
@@ -194,6 +200,18 @@ contains
     do i = 1, n - 1
       c%joint(i) = c%ends(i)
       c%width(i) = min(transition, len_h(i), len_h(i + 1))
+      if (.not. c%width(i) > 0) then
+        why = sharp_jump(c%kappa(i + 1) /= c%kappa(i), c%grad(i + 1) /= c%grad(i))
+        if (len(why) > 0) then
+          call set_status(status, STATUS_INVALID_INPUT, 'slide elements: transition_length = 0 makes joint '// &
+            format_integer(i)//' (element '//format_integer(i)//', '//trim(elements(i)%kind)//', to element '// &
+            format_integer(i + 1)//', '//trim(elements(i + 1)%kind)//') sharp: '//why//' there, and a rider''s '// &
+            'or the water''s speed would jump with the slide''s parameter speed |r_u| (a wrong answer, not '// &
+            'physics); give transition_length > 0 (a short one makes a nearly sharp joint, as far as the '// &
+            'tube does not fold)')
+          return
+        end if
+      end if
     end do
     ! x, y at the nodes by Gauss-Legendre over each node interval
     nn = ceiling(c%total/c%node_step)
@@ -211,6 +229,21 @@ contains
     end do
 
   contains
+    !> What jumps at a sharp joint ('' where nothing does).
+    pure function sharp_jump(curvature, slope) result(what)
+      logical, intent(in) :: curvature, slope
+      character(len=:), allocatable :: what
+      if (curvature .and. slope) then
+        what = 'the slope (a kink of the centerline) and the curvature jump'
+      else if (slope) then
+        what = 'the slope jumps (a kink of the centerline)'
+      else if (curvature) then
+        what = 'the curvature jumps'
+      else
+        what = ''
+      end if
+    end function sharp_jump
+
     subroutine fail(what)
       character(len=*), intent(in) :: what
       call set_status(status, STATUS_INVALID_INPUT, 'slide element ' // trim(idx) // ' (' // &
@@ -234,21 +267,14 @@ contains
       w = c%width(j)
       dk = c%kappa(j + 1) - c%kappa(j)
       dg = c%grad(j + 1) - c%grad(j)
-      if (w > 0) then
-        t = (sigma - c%joint(j) + w/2)/w
-        call smoothstep(t, d, p)
-        ipart = w*p                       ! int_{-inf}^{sigma} S
-        do m = 0, 3
-          k(m) = k(m) + dk*d(m)/w**m
-          g(m) = g(m) + dg*d(m)/w**m
-        end do
-      else
-        ipart = max(sigma - c%joint(j), 0.0_wp)
-        if (sigma >= c%joint(j)) then
-          k(0) = k(0) + dk
-          g(0) = g(0) + dg
-        end if
-      end if
+      if (.not. w > 0) cycle              ! a sharp joint changes nothing (new_element_chain)
+      t = (sigma - c%joint(j) + w/2)/w
+      call smoothstep(t, d, p)
+      ipart = w*p                         ! int_{-inf}^{sigma} S
+      do m = 0, 3
+        k(m) = k(m) + dk*d(m)/w**m
+        g(m) = g(m) + dg*d(m)/w**m
+      end do
       psi = psi + dk*ipart
       gint = gint + dg*ipart
     end do

@@ -88,7 +88,8 @@ module io_declarations_geometry
     declaration_t(groups='slide_elements', name='heading_deg', unit='deg', default='0', low=-360.0_wp, &
       high=360.0_wp, meaning='first direction, from +x towards +y'), &
     declaration_t(groups='slide_elements', name='transition_length', unit='m', default='2', low=0.0_wp, &
-      high=100.0_wp, meaning='horizontal length of each transition (0: sharp joints, curvature jumps)'), &
+      high=100.0_wp, meaning='horizontal length of each transition (0 only where no joint changes the slope or the '// &
+      'curvature)'), &
     declaration_t(groups='slide_elements', name='centerline_kind', kind=VALUE_WORDS, default='''fitted''', &
       choices='fitted exact', meaning='fitted: a spline through points of the chain (the thesis); exact: '// &
       'the chain itself'), &
