@@ -4,7 +4,8 @@
 # runs and is plotted through cli_every_input and cli_plot_scripts): a bowl
 # (a surface of revolution) does not answer the slide query, so a ride or a
 # water run on it is refused before any work (exit 1, no file), the message
-# naming the surface; a drop that is not the first element is refused.
+# naming the surface; a drop that is not the first element is refused, and
+# so are sharp joints (transition_length = 0) that change slope or curvature.
 set -u
 slidesim=$1
 work=$(mktemp -d)
@@ -36,5 +37,12 @@ refused drop_last "slide element 1 (drop): a drop needs an element after it" \
 "&run scenario = 'geometry' /
 &geometry kind = 'slide' /
 &slide_elements n_elements = 1, kind = 'drop', slope_deg = 80, radius = 8, drop = 10 /"
+# sharp joints where the slope or the curvature changes: the speed of what
+# rides them would jump (tests/geometry/test_sharp_joints.f90)
+refused sharp_joint "&slide_elements: slide elements: transition_length = 0 makes joint 1 (element 1, straight, to element 2, curve) sharp: the curvature jumps there" \
+"&run scenario = 'geometry' /
+&geometry kind = 'slide' /
+&slide_elements n_elements = 2, transition_length = 0, kind = 'straight', 'curve', length = 5, 0,
+  slope_deg = 10, 10, radius = 0, 8, angle_deg = 0, 90 /"
 echo "$((checks - failures)) passed, $failures failed"
 [ $failures = 0 ]
