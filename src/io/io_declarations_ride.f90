@@ -86,8 +86,8 @@ module io_declarations_ride
     declaration_t(groups='rider water', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
       low=-1e3_wp, high=1e3_wp, meaning='gravity vector, one per run: a ride takes it from `&rider` or `&water` '// &
       '(both: the same, else refused); not zero for a rider (|gravity| is the unit g of felt accelerations)'), &
-    declaration_t(groups='rider sweep', name='u0', unit='surface parameter', default='0.5', low=-1e6_wp, &
-      high=1e6_wp, meaning='pelvis start along the slide (m of arc length on slides)'), &
+    declaration_t(groups='rider sweep', name='u0', unit='m', default='0.5', low=-1e6_wp, &
+      high=1e6_wp, meaning='pelvis start: arc length along the slide''s centerline from its start'), &
     declaration_t(groups='rider sweep', name='v0', unit='rad', default='pi/2', low=-10.0_wp, high=10.0_wp, &
       meaning='pelvis start across the slide (pi/2: the bottom)'), &
     declaration_t(groups='rider sweep', name='heading0_deg', unit='deg', default='0', low=-180.0_wp, &

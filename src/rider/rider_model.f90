@@ -31,7 +31,7 @@ module rider_model
   use water_field, only: water_field_t
   use rider_body, only: body_params_t, rigid_body_t, rider_body_t, build_rider_body
   use rider_drag, only: water_properties_t
-  use rider_start, only: contact_reach_t, reach_contact
+  use rider_start, only: contact_reach_t, reach_contact, start_parameter
   use rider_water_drag, only: new_water_drag, in_water_roots
   implicit none (type, external)
   private
@@ -61,7 +61,7 @@ module rider_model
     real(wp) :: drag_radius(N_CONTACTS) = [0.5_wp, 0.05_wp, 0.5_wp]   ! m: pelvis, heels, back (thesis 4.3)
     type(water_properties_t) :: water
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]     ! m/s^2
-    real(wp) :: u0 = 0.5_wp                         ! pelvis start: surface parameter (m on slides)
+    real(wp) :: u0 = 0.5_wp                         ! m, pelvis start: arc length along the centerline
     real(wp) :: v0 = pi/2                           ! rad (pi/2: the bottom of a tube)
     real(wp) :: heading0 = 0                        ! rad, body axis from x_D (down the slide) towards y_D
     real(wp) :: speed0 = 1                          ! m/s, along the body axis
@@ -86,8 +86,9 @@ module rider_model
 
 contains
 
-  !> The rider's mechanism at its start q0 = [u0, v0, heading0] with the
-  !> dependent coordinates where heels and back meet the slide (refused, with
+  !> The rider's mechanism at its start q0 = [u, v0, heading0] (u the
+  !> slide's parameter at the arc length u0: rider_start's start_parameter)
+  !> with the dependent coordinates where heels and back meet the slide (refused, with
   !> which contact and by how much, if they cannot), its three one-sided
   !> contacts with the friction law of p (rider_friction; a law per weight
   !> takes the weight of the segment the contact belongs to: pelvis, legs,
@@ -102,7 +103,7 @@ contains
     real(wp), intent(out) :: q0(3)
     type(status_t), intent(inout) :: status
     type(water_field_t), intent(in), optional :: water
-    real(wp) :: g(2)
+    real(wp) :: g(2), u_start
     type(surface_point_t) :: pt
     type(darboux_frame_t) :: fr
     type(contact_reach_t) :: heels, back
@@ -114,13 +115,15 @@ contains
 
     q0 = [p%u0, p%v0, p%heading0]
     call build_rider_body(p%body, layout%body, status)
+    if (status%ok()) call start_parameter(surface, p%u0, u_start, status)
     if (.not. status%ok()) return
-    if (.not. surface%in_domain(p%u0, p%v0)) then
-      call set_status(status, STATUS_INVALID_INPUT, 'the start u0 = '//format_short(p%u0)//', v0 = '// &
+    q0(1) = u_start
+    if (.not. surface%in_domain(u_start, p%v0)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'the start u0 = '//format_short(p%u0)//' m, v0 = '// &
                       format_short(p%v0)//' lies off the slide')
       return
     end if
-    call surface%evaluate(p%u0, p%v0, 3, pt, status)
+    call surface%evaluate(u_start, p%v0, 3, pt, status)
     if (status%ok()) call darboux_frame(pt, sigma, alpha_u, alpha_v, fr, status)
     if (.not. status%ok()) then
       call prefix_status(status, 'rider start')
@@ -132,9 +135,9 @@ contains
     axes(:, 2) = -sin(p%heading0)*fr%r(:, 1) + cos(p%heading0)*fr%r(:, 2)
     hip = pt%r + matmul(axes, layout%body%hip)
     call reach_contact(surface, sigma, alpha_u, alpha_v, hip + matmul(axes, layout%body%heel), hip, -axes(:, 2), &
-                       flexion_range, p%u0, p%v0, heels, status)
+                       flexion_range, u_start, p%v0, heels, status)
     if (status%ok()) call reach_contact(surface, sigma, alpha_u, alpha_v, hip + matmul(axes, layout%body%back), hip, &
-                                        axes(:, 2), tilt_range, p%u0, p%v0, back, status)
+                                        axes(:, 2), tilt_range, u_start, p%v0, back, status)
     if (.not. status%ok()) return
     if (.not. heels%reached) then
       call set_status(status, STATUS_INVALID_INPUT, 'at the start the heels cannot reach the slide: '//heels%problem)
@@ -147,7 +150,7 @@ contains
 
     ! pelvis: surface joint, heading, mass
     d_b = m%add_frame('pelvis_contact')
-    layout%u(CONTACT_PELVIS) = m%add_scalar('u_pelvis', p%u0)
+    layout%u(CONTACT_PELVIS) = m%add_scalar('u_pelvis', u_start)
     layout%v(CONTACT_PELVIS) = m%add_scalar('v_pelvis', p%v0)
     call m%add_element(new_surface_joint('pelvis_joint', 1, d_b, layout%u(CONTACT_PELVIS), &
                                          layout%v(CONTACT_PELVIS), surface, sigma, alpha_u, alpha_v))
@@ -300,9 +303,10 @@ contains
     type(status_t), intent(inout) :: status
     type(surface_point_t) :: pt
     type(darboux_frame_t) :: fr
-    real(wp) :: w(3), e11, e12, e22, b1, b2, det
+    real(wp) :: w(3), e11, e12, e22, b1, b2, det, u_start
     qd0 = 0
-    call surface%evaluate(p%u0, p%v0, 2, pt, status)
+    call start_parameter(surface, p%u0, u_start, status)
+    if (status%ok()) call surface%evaluate(u_start, p%v0, 2, pt, status)
     if (status%ok()) call darboux_frame(pt, sigma, alpha_u, alpha_v, fr, status)
     if (.not. status%ok()) return
     w = p%speed0*(cos(p%heading0)*fr%r(:, 1) + sin(p%heading0)*fr%r(:, 2))

@@ -3,7 +3,9 @@
 !> with its body about the hip, lies on the slide, and the surface parameters
 !> there. These are the dependent coordinates the closure (4.27) starts from.
 !> A start where a contact cannot reach the slide is refused before any work,
-!> with how far it stays from it.
+!> with how far it stays from it. The pelvis's start is given as arc length
+!> along the centerline (&rider u0) and turned into the slide's parameter
+!> here (start_parameter).
 !>
 !> The signed distance of a point p from the slide is d = (p - r(u*, v*)).z_D
 !> at its foot point (u*, v*) (geometry_foot_point's Newton on the two
@@ -16,14 +18,15 @@ module rider_start
   use base_constants, only: pi
   use base_text, only: format_short
   use base_vector, only: cross
-  use base_status, only: status_t
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_t, surface_point_t
+  use geometry_slide_query, only: slide_surface_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use geometry_foot_point, only: foot_point_options_t, foot_point_t, find_foot_point, FOOT_STOP_LENGTH, &
     FOOT_DOMAIN_STOP, FOOT_LEFT_DOMAIN
   implicit none (type, external)
   private
-  public :: contact_reach_t, reach_contact, foot_point, turned
+  public :: contact_reach_t, reach_contact, foot_point, turned, start_parameter
 
   type :: contact_reach_t
     logical :: reached = .false.
@@ -185,4 +188,37 @@ contains
       reach%gap = 0
     end subroutine accept
   end subroutine reach_contact
+
+  !> The pelvis's start parameter u from `u0`, its arc length along the
+  !> slide's centerline from the start (m; &rider u0, as declared): the
+  !> slide's parameter is not arc length (an exact element chain's is the
+  !> horizontal length, a fitted one's the chord length of its points). A
+  !> start off the centerline is refused with its length. A surface that is
+  !> not a slide takes u0 as its parameter (the ride refuses it anyway).
+  subroutine start_parameter(surface, u0, u, status)
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(in) :: u0
+    real(wp), intent(out) :: u
+    type(status_t), intent(inout) :: status
+    real(wp) :: total
+    character(len=:), allocatable :: side
+    u = u0
+    select type (surface)
+    class is (slide_surface_t)
+      total = surface%length()
+      if (.not. (u0 >= 0 .and. u0 <= total)) then
+        side = 'beyond the slide''s end'
+        if (u0 < 0) side = 'before the slide''s start'
+        call set_status(status, STATUS_INVALID_INPUT, 'the start u0 = '//format_short(u0)//' m (arc length '// &
+                        'along the centerline) lies '//side//' (its centerline is '//format_short(total)//' m long)')
+        return
+      end if
+      ! where the parameter already is arc length to rounding (a straight
+      ! tube; a fitted centerline near its start), u0 is kept as given: the
+      ! same point as the search would find, and the same bits
+      if (abs(surface%arc_length(u0) - u0) <= 8*epsilon(1.0_wp)*max(total, 1.0_wp)) return
+      call surface%parameter_at_length(u0, u, status)
+      if (.not. status%ok()) call prefix_status(status, 'the start u0 = '//format_short(u0)//' m')
+    end select
+  end subroutine start_parameter
 end module rider_start

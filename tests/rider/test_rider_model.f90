@@ -26,11 +26,18 @@
 !> (slip_force) for that contact's slip and normal force; and the ride under
 !> viscous_normal follows w(t) = w_inf + (w0 - w_inf) exp(-k t),
 !> k = mu g cos(theta), w_inf = tan(theta)/mu.
+!>
+!> &rider u0 is the arc length along the centerline: on an exact element
+!> chain (its parameter the horizontal length) the pelvis starts u0 m along
+!> the centerline from its start, on the straight as in the curve after it.
 program test_rider_model
   use base_kinds, only: wp
   use base_constants, only: pi, standard_gravity
   use base_status, only: status_t
-  use geometry_tube, only: tube_surface_t, new_straight_tube
+  use geometry_tube, only: tube_surface_t, new_straight_tube, new_tube_surface
+  use geometry_curve, only: curve_point_t, constant_curve_t
+  use geometry_cross_section, only: circle_section_t
+  use geometry_slide_elements, only: slide_element_t, element_chain_curve_t, new_element_chain
   use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, &
     CONTACT_PELVIS, CONTACT_HEELS, CONTACT_BACK, N_CONTACTS, rider_default_mu
@@ -44,6 +51,7 @@ program test_rider_model
   real(wp), parameter :: theta = 15*pi/180, g = standard_gravity
 
   call check_start_on_straight()
+  call check_start_on_chain()
   call check_refused_starts()
   call check_inclined_tube()
   call check_other_laws()
@@ -88,6 +96,46 @@ contains
     call check_close(m%scalars(lay%v(CONTACT_HEELS))%q, pi/2, 1e-14_wp, 0.0_wp, 'heels at the bottom')
     call check(m%closure_residual() <= 1e-12_wp, 'closure residual at the start')
   end subroutine check_start_on_straight
+
+  !> u0 as arc length on an exact chain: a 20 deg straight of 12 m
+  !> (horizontally), then a 90 deg curve of radius 8 m at 5 deg. On the
+  !> straight the centerline's arc length is the distance from its start
+  !> (the old start, u0 m horizontally, lay 1/cos(20 deg) - 1 = 6 % further);
+  !> in the curve the tube's own arc length (parameter_at_length solves to
+  !> 1e-12 of the length, so 1e-10 relative holds).
+  subroutine check_start_on_chain()
+    type(rider_params_t) :: p
+    type(rider_layout_t) :: lay
+    type(mechanism_t) :: m
+    type(status_t) :: st
+    type(element_chain_curve_t) :: chain
+    type(tube_surface_t) :: tube
+    type(curve_point_t) :: c0, c
+    real(wp) :: q0(3)
+    chain = new_element_chain([slide_element_t(kind='straight', length=12.0_wp, slope_deg=20.0_wp), &
+                               slide_element_t(kind='curve', radius=8.0_wp, angle_deg=90.0_wp, slope_deg=5.0_wp)], &
+                              [0.0_wp, 0.0_wp, 10.0_wp], 0.0_wp, 2.0_wp, st)
+    if (st%ok()) tube = new_tube_surface(chain, constant_curve_t(value=[0.0_wp, 0.0_wp, 1.0_wp]), &
+                                         circle_section_t(radius=0.5_wp), st)
+    call check(st%ok(), 'chain tube built: '//st%text())
+    if (.not. st%ok()) return
+    p%u0 = 4
+    call build_rider(p, tube, m, lay, q0, st)
+    call check(st%ok(), 'rider builds on the chain: '//st%text())
+    call chain%evaluate(0.0_wp, 0, c0, st)
+    call chain%evaluate(q0(1), 0, c, st)
+    call check_close(norm2(c%d(:, 0) - c0%d(:, 0)), 4.0_wp, 1e-10_wp, 0.0_wp, &
+                     'the pelvis starts u0 = 4 m along the straight''s centerline')
+    p%u0 = 20
+    call build_rider(p, tube, m, lay, q0, st)
+    call check(st%ok(), 'rider builds in the curve: '//st%text())
+    call check_close(tube%arc_length(q0(1)), 20.0_wp, 1e-10_wp, 0.0_wp, &
+                     'the pelvis starts u0 = 20 m along the centerline, in the curve')
+    p%u0 = 40
+    call build_rider(p, tube, m, lay, q0, st)
+    call check(.not. st%ok() .and. index(st%text(), 'beyond the slide''s end') > 0 .and. &
+               index(st%text(), 'arc length') > 0, 'a start beyond the end refused: '//st%text())
+  end subroutine check_start_on_chain
 
   !> Heels beyond the slide's end; the back before the start; a body turned
   !> across a tube narrower than the legs are long (no joint angle puts the
