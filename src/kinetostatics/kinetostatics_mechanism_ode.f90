@@ -22,6 +22,13 @@ module kinetostatics_mechanism_ode
   private
   public :: mechanism_ode_t
 
+  !> What stopped a run (mechanism_ode_t%stop_kind, with `outcome` its words):
+  !> a surface joint at its end or start in u, at a side edge in v, a
+  !> one-sided contact's normal force falling to zero; none (a caller's own
+  !> stop, the end time, a failure).
+  integer, parameter, public :: STOP_NONE = 0, STOP_END_OF_SURFACE = 1, STOP_START_OF_SURFACE = 2, &
+    STOP_SIDE_EDGE = 3, STOP_LIFT_OFF = 4
+
   !> How near zero N must be at a lift-off root, relative to the largest |N|
   !> of the contact at the start and the outputs (check_lift_off). At a
   !> true lift-off N there is the root location's error (N' times CVODE's
@@ -43,6 +50,11 @@ module kinetostatics_mechanism_ode
     real(wp), allocatable :: event_value(:)
     integer :: event_action = EVENT_RECORD
     character(len=:), allocatable :: outcome   !< why the run ended, set by the stopping event
+    !> the first of the mechanism's stopping events (STOP_*), the surface
+    !> joint's element (edges) and the contact (lift-off) it names (0: none)
+    integer :: stop_kind = STOP_NONE
+    integer :: stop_element = 0
+    integer :: stop_contact = 0
     integer :: rhs_count = 0
     integer :: n_roots = 0                     ! its own roots (not an extension's), counted in prepare
                                                ! (the right-hand side asks at every call)
@@ -158,6 +170,7 @@ contains
     self%normal_reference = 0
     self%started = .false.
     self%pending = .false.
+    call clear_stop(self)
   end function initial_state
 
   !> Before a run: the loops close and are regular at q0 (mechanism%check_start)
@@ -191,7 +204,15 @@ contains
     integer, intent(in) :: capacity
     call self%series%init(self%mechanism, capacity)
     self%outcome = ''
+    call clear_stop(self)
   end subroutine start_series
+
+  subroutine clear_stop(self)
+    class(mechanism_ode_t), intent(inout) :: self
+    self%stop_kind = STOP_NONE
+    self%stop_element = 0
+    self%stop_contact = 0
+  end subroutine clear_stop
 
   subroutine mechanism_rhs(self, t, y, ydot, status)
     class(mechanism_ode_t), intent(inout) :: self

@@ -439,15 +439,18 @@ contains
             action = EVENT_STOP
             call add_outcome(self, 'over the side edge: surface joint '''//name//''' reached the edge v = '// &
                              format_short(e%bound)//' of its surface'//where)
+            call note_stop(self, STOP_SIDE_EDGE, element=e%element)
             cycle
           end if
           action = EVENT_STOP
           if (e%upper) then
             call add_outcome(self, 'end of slide: surface joint '''//name//''' reached its end u = '// &
                              format_short(e%bound)//where)
+            call note_stop(self, STOP_END_OF_SURFACE, element=e%element)
           else
             call add_outcome(self, 'back at the start of the slide: surface joint '''//name// &
                              ''' reached its start u = '//format_short(e%bound)//where)
+            call note_stop(self, STOP_START_OF_SURFACE, element=e%element)
           end if
         end associate
       end do
@@ -460,6 +463,7 @@ contains
         action = EVENT_STOP
         call add_outcome(self, 'lift-off: the normal force of contact '''//m%contacts(k)%name// &
                          ''' fell to zero'//where)
+        call note_stop(self, STOP_LIFT_OFF, contact=k)
       end do
       do k = 1, m%n_laws
         associate (first => m%law_root_start(k), last => m%law_root_start(k + 1) - 1)
@@ -557,6 +561,17 @@ contains
       self%chart_changes = self%chart_changes + 1
     end associate
   end subroutine change_chart
+
+  !> The first stopping event's kind and what it names (the rest are in `outcome`).
+  subroutine note_stop(self, kind, element, contact)
+    class(mechanism_ode_t), intent(inout) :: self
+    integer, intent(in) :: kind
+    integer, intent(in), optional :: element, contact
+    if (self%stop_kind /= STOP_NONE) return
+    self%stop_kind = kind
+    if (present(element)) self%stop_element = element
+    if (present(contact)) self%stop_contact = contact
+  end subroutine note_stop
 
   subroutine add_outcome(self, text)
     class(mechanism_ode_t), intent(inout) :: self

@@ -73,6 +73,7 @@ module rider_model
     integer :: contact_frame(N_CONTACTS) = 0        ! Darboux frames D_B, D_U, D_O
     integer :: body_frame(N_CONTACTS) = 0           ! P, L, T (the body each contact belongs to)
     integer :: u(N_CONTACTS) = 0, v(N_CONTACTS) = 0 ! scalar indices of the contacts' (u, v)
+    integer :: joint(N_CONTACTS) = 0                ! element indices of the contacts' surface joints
     integer :: heading = 0, flexion = 0, tilt = 0   ! scalar indices of phi_B, phi_U, phi_O
     integer :: closure(6) = 0                       ! the six closure measurements
     integer :: contact(N_CONTACTS) = 0              ! mechanism contact indices
@@ -154,6 +155,7 @@ contains
     layout%v(CONTACT_PELVIS) = m%add_scalar('v_pelvis', p%v0)
     call m%add_element(new_surface_joint('pelvis_joint', 1, d_b, layout%u(CONTACT_PELVIS), &
                                          layout%v(CONTACT_PELVIS), surface, sigma, alpha_u, alpha_v))
+    layout%joint(CONTACT_PELVIS) = m%n_elements
     pelvis = m%add_frame('pelvis')
     layout%heading = m%add_scalar('heading', p%heading0)
     call m%add_element(new_revolute('heading', d_b, pelvis, layout%heading, ez))
@@ -225,6 +227,7 @@ contains
       layout%v(k) = m%add_scalar('v_'//contact, reach%v)
       call m%add_element(new_surface_joint(point//'_joint', 1, contact_frame, layout%u(k), layout%v(k), surface, &
                                            sigma, alpha_u, alpha_v))
+      layout%joint(k) = m%n_elements
       call close_point(contact, contact_frame, point_frame, [angle, layout%u(k), layout%v(k)], closure)
     end subroutine add_limb
 

@@ -28,7 +28,8 @@ module rider_ride
   use geometry_surface, only: surface_t
   use geometry_slide_query, only: slide_surface_t, as_slide
   use geometry_curve, only: curve_point_t
-  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_END_OF_SURFACE, STOP_START_OF_SURFACE, STOP_SIDE_EDGE, &
+    STOP_LIFT_OFF
   use water_field, only: water_field_t
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names, &
     CONTACT_PELVIS, N_CONTACTS, rider_coulomb_mu
@@ -37,6 +38,10 @@ module rider_ride
   private
   public :: ride_options_t, ride_series_t, contact_series_t, ride_result_t, rider_ode_t, simulate_ride, &
     check_ride_start, prepare_ride
+
+  !> How a ride ended (ride_result_t%ending; its outcome says it in words).
+  integer, parameter, public :: RIDE_FAILED = 0, RIDE_END_OF_SLIDE = 1, RIDE_LAST_STATION = 2, RIDE_LIFT_OFF = 3, &
+    RIDE_EJECTED = 4, RIDE_STALLED = 5, RIDE_BACK_AT_START = 6, RIDE_TIME_OUT = 7
 
   type :: ride_options_t
     !> thesis B.7 tolerances; the step is capped at 0.05 s: each closure starts
@@ -97,6 +102,9 @@ module rider_ride
     type(ride_series_t) :: series
     logical :: complete = .false.         ! reached the end of the slide
     character(len=:), allocatable :: outcome   ! how it ended, in words
+    integer :: ending = RIDE_FAILED            ! ... as a code (RIDE_*)
+    !> the contact (CONTACT_PELVIS ...) whose normal force fell to zero (RIDE_LIFT_OFF; else 0)
+    integer :: lifted_contact = 0
     type(driver_result_t) :: driver
     integer :: drag_switches = 0
     integer, allocatable :: station_record(:)   ! the record at each station (0: not reached)
@@ -118,6 +126,8 @@ module rider_ride
     integer :: pending_station = 0        ! a station crossed, its record comes next
     logical :: stop_at_last_station = .false.
     integer :: ejected_contact = 0        ! the contact that went over a wall's top (0: none)
+    integer :: ending = RIDE_FAILED       ! how the ride stopped (RIDE_*), set with outcome at the stop
+    integer :: lifted_contact = 0         ! the contact whose normal force fell to zero (0: none)
   contains
     procedure :: record => rider_record
     procedure :: handle_event => rider_handle_event
@@ -165,14 +175,17 @@ contains
     call drive(sys, y0, driver, result%driver, run_status)
     result%drag_switches = sys%drag_switches
     result%ejected_contact = sys%ejected_contact
+    result%lifted_contact = sys%lifted_contact
     call move_alloc(sys%station_record, result%station_record)
     call move_series(sys%ride, result%series)
     select case (result%driver%outcome)
     case (DRIVE_EVENT_STOP)
       result%outcome = sys%outcome
-      result%complete = index(sys%outcome, 'end of the slide') == 1 .or. index(sys%outcome, 'last station') == 1
+      result%ending = sys%ending
+      result%complete = sys%ending == RIDE_END_OF_SLIDE .or. sys%ending == RIDE_LAST_STATION
     case (DRIVE_END_TIME)
       result%outcome = 'the ride had not ended after '//format_short(options%max_duration)//' s'
+      result%ending = RIDE_TIME_OUT
     case default
       result%outcome = 'failed: '//run_status%text()
     end select
@@ -457,6 +470,7 @@ contains
     where = ' at arc length '//format_short(self%slide%arc_length(y(1)))//' m (t = '//format_short(t)//' s)'
     if (fired(1) < 0) then
       action = EVENT_STOP
+      self%ending = RIDE_STALLED
       self%outcome = 'the rider stalled or turned back: the speed along the slide fell below min_speed = '// &
                      format_short(self%min_speed)//' m/s'//where
       return
@@ -467,58 +481,39 @@ contains
       action = max(action, EVENT_RECORD)
       if (self%stop_at_last_station .and. k == size(self%station_record) .and. action /= EVENT_STOP) then
         action = EVENT_STOP
+        self%ending = RIDE_LAST_STATION
         self%outcome = 'last station: the pelvis reached it'//where
       end if
     end do
-    if (action == EVENT_STOP .and. allocated(self%outcome)) then
-      if (index(self%outcome, 'end of slide') == 1) then
-        self%outcome = 'end of the slide: the '//trim(leading_contact(self, self%outcome))//' reached it'//where
-      else if (index(self%outcome, 'over the side edge') == 1) then
-        self%ejected_contact = joint_contact(self%outcome)
-        self%outcome = 'ejected: the '//trim(leading_contact(self, self%outcome))//' went over the top of the '// &
+    if (action == EVENT_STOP .and. self%ending /= RIDE_LAST_STATION) then
+      ! the mechanism's stop, by its code (the first event; outcome has them all)
+      select case (self%stop_kind)
+      case (STOP_END_OF_SURFACE)
+        self%ending = RIDE_END_OF_SLIDE
+        self%outcome = 'end of the slide: the '//contact_name(findloc(self%layout%joint, self%stop_element, dim=1))// &
+                       ' reached it'//where
+      case (STOP_SIDE_EDGE)
+        self%ending = RIDE_EJECTED
+        self%ejected_contact = findloc(self%layout%joint, self%stop_element, dim=1)
+        self%outcome = 'ejected: the '//contact_name(self%ejected_contact)//' went over the top of the '// &
                        wall_side(self)//' wall of the open section'//where
-      else if (index(self%outcome, 'lift-off') == 1) then
-        self%outcome = 'lift-off: the normal force of the '//trim(lifted_contact(self%outcome))// &
-                       ' fell to zero'//where
-      end if
+      case (STOP_LIFT_OFF)
+        self%ending = RIDE_LIFT_OFF
+        self%lifted_contact = findloc(self%layout%contact, self%stop_contact, dim=1)
+        self%outcome = 'lift-off: the normal force of the '//contact_name(self%lifted_contact)//' fell to zero'//where
+      case (STOP_START_OF_SURFACE)
+        self%ending = RIDE_BACK_AT_START
+      end select
     end if
   end subroutine rider_handle_event
 
-  !> Which contact's joint the mechanism's end-of-slide outcome names.
-  function leading_contact(self, outcome) result(name)
-    class(rider_ode_t), intent(in) :: self
-    character(len=*), intent(in) :: outcome
+  !> The name of contact k ('rider' for 0: none of the three).
+  pure function contact_name(k) result(name)
+    integer, intent(in) :: k
     character(len=:), allocatable :: name
-    integer :: k
-    associate (unused => self)
-    end associate
-    k = joint_contact(outcome)
     name = 'rider'
     if (k > 0) name = trim(contact_names(k))
-  end function leading_contact
-
-  function lifted_contact(outcome) result(name)
-    character(len=*), intent(in) :: outcome
-    character(len=:), allocatable :: name
-    integer :: k
-    name = 'rider'
-    do k = 1, N_CONTACTS
-      if (index(outcome, ''''//trim(contact_names(k))//'''') > 0) name = trim(contact_names(k))
-    end do
-  end function lifted_contact
-
-  !> The contact whose surface joint the mechanism's outcome names (0: none;
-  !> the joints are named in rider_model: pelvis_joint, heel_joint, back_joint).
-  pure integer function joint_contact(outcome) result(contact)
-    character(len=*), intent(in) :: outcome
-    character(len=*), parameter :: joints(N_CONTACTS) = [character(len=12) :: 'pelvis_joint', 'heel_joint', &
-      'back_joint']
-    integer :: k
-    contact = 0
-    do k = 1, N_CONTACTS
-      if (index(outcome, ''''//trim(joints(k))//'''') > 0) contact = k
-    end do
-  end function joint_contact
+  end function contact_name
 
   !> Which wall the ejected contact went over: left (its v at the section's
   !> upper edge, +v) or right, from its surface parameters at the event.

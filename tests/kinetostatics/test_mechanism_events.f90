@@ -106,7 +106,7 @@ program test_mechanism_events
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_EVENT_STOP, &
     DRIVE_END_TIME, DRIVE_FAILED, RECORD_EVENT
   use numerics_ode, only: ODE_ADAMS
-  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_END_OF_SURFACE, STOP_LIFT_OFF
   use kinetostatics_models, only: sled_params_t, build_sled, sled_description_t
   use io_input, only: input_text_t, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
@@ -187,6 +187,11 @@ contains
       call check(sys%series%kind(n) == RECORD_EVENT .and. &
                  abs(m%scalars(m%scalar_index('u2'))%q - (u_max - 1e-7_wp*(u_max - u_min))) <= 1e-9_wp, &
                  'demo slide: the front contact stops at u = u_max (less 1e-7 of the domain)')
+      ! the stop as a code: the surface joint whose u is at the edge, not read from the words
+      call check(sys%stop_kind == STOP_END_OF_SURFACE .and. sys%stop_contact == 0 .and. sys%stop_element > 0, &
+                 'demo slide: stop code end of surface')
+      if (sys%stop_element > 0) call check(m%elements(sys%stop_element)%e%name == 'front', &
+                 'demo slide: the stop names the front joint: '//m%elements(max(sys%stop_element, 1))%e%name)
     end associate
     call check(sys%series%time(n) > 10 .and. sys%series%time(n) < 13, 'demo slide: the ride takes 10 to 13 s')
     print '(a, f8.4, a, i0, a, i0, a)', '  end of slide at t = ', sys%series%time(n), ' s, ', result%stats%steps, &
@@ -247,6 +252,8 @@ contains
     ! integration at rtol 1e-11 over ~1 s: the angle to ~1e-9
     call check_close(alpha_sim, lo, 1e-8_wp, 0.0_wp, 'cylinder: lift-off angle = closed form')
     n_front = sys%series%normal(2, n)
+    ! the stop as a code: the contact with N = 0 (the second, the front's)
+    call check(sys%stop_kind == STOP_LIFT_OFF .and. sys%stop_contact == 2, 'cylinder: stop code lift-off, contact 2')
     call check(abs(n_front) <= 1e-8_wp*p%mass*g .and. all(sys%series%normal(:, :n - 1) > 0), &
                'cylinder: N_front = 0 at the event, both contacts pressed before')
     call check(abs(sys%series%kinetic(n) + sys%series%potential(n) - sys%series%kinetic(1) - &

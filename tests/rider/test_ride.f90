@@ -47,7 +47,8 @@ program test_ride
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names
   use base_spec, only: spec_t
-  use rider_ride, only: ride_options_t, ride_result_t, simulate_ride, rider_ode_t, prepare_ride
+  use rider_ride, only: ride_options_t, ride_result_t, simulate_ride, rider_ode_t, prepare_ride, RIDE_LIFT_OFF, &
+    RIDE_STALLED
   use geometry_slide_query, only: general_wall_position
   use rider_water_drag, only: in_water_roots
   use scenarios_water, only: build_water
@@ -101,7 +102,7 @@ contains
     type(ride_result_t) :: ride
     type(status_t) :: st
     type(tube_surface_t) :: flat
-    integer :: n, k
+    integer :: n, k, lifted
     real(wp) :: smallest
     p%friction = spec_t('none')
     p%drag = .false.
@@ -112,11 +113,16 @@ contains
     call check(st%ok() .and. .not. ride%complete .and. index(ride%outcome, 'lift-off: the normal force of the ') == 1 &
                .and. index(ride%outcome, 'at arc length') > 0, 'frictionless: lift-off with where: '//ride%outcome)
     smallest = huge(1.0_wp)
+    lifted = 0
     do k = 1, N_CONTACTS
+      if (abs(ride%series%contact(k)%normal_force(n)) < smallest) lifted = k
       smallest = min(smallest, abs(ride%series%contact(k)%normal_force(n)))
     end do
     ! the root is located to the integrator's tolerance: N ~ 1e-7 of the weight
     call check(smallest < 1e-6_wp*p%body%mass*9.81_wp, 'lift-off: a normal force is zero at the stop')
+    ! the ending as a code from the mechanism's event (not read back from the words)
+    call check(ride%ending == RIDE_LIFT_OFF .and. ride%lifted_contact == lifted, &
+               'lift-off: ending code and the contact whose normal force is zero at the stop')
     print '(a)', 'frictionless, one-sided: '//ride%outcome
     ! 2 degrees against mu = 0.0724 (4.1 degrees): the rider slows down to a stall
     flat = new_straight_tube(0.5_wp, 2*acos(-1.0_wp)/180, 30.0_wp, st)
@@ -127,6 +133,7 @@ contains
     call simulate_ride(p, flat, opt, ride, st)
     call check(st%ok() .and. index(ride%outcome, 'the rider stalled or turned back') == 1, &
                'stall on a flat tube: '//ride%outcome)
+    call check(ride%ending == RIDE_STALLED .and. ride%lifted_contact == 0, 'stall: ending code')
     n = ride%series%n
     ! the stall speed 0.05 m/s along u: |c_u| = 1 on the straight tube
     call check_close(ride%series%speed(n), opt%min_speed, 1e-6_wp, 0.0_wp, 'stalls at min_speed')
