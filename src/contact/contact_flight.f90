@@ -9,7 +9,17 @@
 !>
 !> The contact's gap (contact_gap: the signed distance of its two shapes
 !> along their common normal) is recorded with every state and is a root
-!> function: where it falls through zero the body lands. Without a
+!> function: where it falls through zero the body lands. A flight that
+!> starts touching (a lift-off: restart_flight) starts with the gap 0 and
+!> its rate 0, and where the normal force fell to zero also its second
+!> derivative 0 (the free and the closed motion have the same acceleration
+!> there): the gap grows as s^3, below its rounding (~1e-16 m) for the first
+!> ~1e-5 s, where its sign is noise (CVODE saw roots there, and a root at and
+!> very near another: CV_ILL_INPUT). So until the gap has opened by
+!> opening_gap the root is opening_gap - |gap|: nonzero at the start, it
+!> falls to zero where the gap has clearly opened (the landing root is
+!> watched from there on: the gap, opening_gap there) or where the body went
+!> back into the surface by opening_gap without opening (a landing there). Without a
 !> restitution the run ends there (exit status 0, the outcome says "landing"
 !> with the approach speed). With one the landing is an impact
 !> (kinetostatics_impact): K = rigid_body_delassus of the body's mass, its
@@ -33,11 +43,11 @@
 module contact_flight
   use base_kinds, only: wp
   use base_text, only: format_short
-  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use numerics_event_driver, only: EVENT_STOP, EVENT_RESTART
   use numerics_linear_algebra, only: lu_factor, lu_solve
   use kinetostatics_joints, only: new_prismatic
-  use kinetostatics_free_rotation, only: new_free_rotation
+  use kinetostatics_free_rotation, only: free_rotation_t, new_free_rotation
   use kinetostatics_mass, only: new_mass_element
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_impact, only: impact_law_t, impact_outcome_t, resolve_impact, rigid_body_delassus
@@ -49,10 +59,20 @@ module contact_flight
   use contact_gap, only: contact_gap_t, new_contact_gap
   implicit none (type, external)
   private
-  public :: flight_ode_t, impact_record_t, build_flight, starts_open
+  public :: flight_ode_t, impact_record_t, build_flight, starts_open, restart_flight, touching_gap_limit
 
   real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
   real(wp), parameter :: ground_origin(3) = 0
+  !> m: how far a touching start (a lift-off, or a closed start that may
+  !> open) may overlap: the gap left by the contact's closure and the lift-off
+  !> root, ~1e-14 m; beyond it the pose is not a touching one and it fails.
+  !> Also the most a closing may move the body to touch (contact_closing).
+  real(wp), parameter :: touching_gap_limit = 1e-9_wp
+  !> m: how far a flight that starts touching must open before its landing
+  !> is watched (or go back in to land): far above the gap's rounding, and a
+  !> tenth of touching_gap_limit, so that such a landing is within the
+  !> closing's reach.
+  real(wp), parameter :: opening_gap = 1e-10_wp
 
   !> One impact, for the result's table.
   type :: impact_record_t
@@ -72,6 +92,7 @@ module contact_flight
     integer :: body_frame = 0
     integer :: gap_monitor = 0     ! the gap's place among the recorded monitors
     real(wp) :: last_gap = 1       ! kept where an update fails (a trial state)
+    logical :: touching = .false.  ! started touching, not yet opened by opening_gap (the root: opening_gap - |gap|)
     ! the impact law (bounces: has_impacts) and the body's mass properties (body axes)
     logical :: has_impacts = .false.
     type(impact_law_t) :: law
@@ -82,6 +103,9 @@ module contact_flight
     type(contact_system_t) :: system          ! the description the closed contact is built from
     character(len=8), allocatable :: q_units(:), beta_units(:)   ! of the series' coordinates and dependents
     logical :: closing = .false.              ! the last impact closed the contact: the flight stopped there
+    logical :: start_closed = .false.         ! the run starts with the closed contact (may_open: contact_closing)
+    integer :: coordinates(6) = 0             ! scalars x, y, z, a1, a2, a3
+    integer :: rotation_element = 0           ! the free rotation
     type(contact_model_t), allocatable :: closed   ! the closed contact after closing
     ! per record of the flight: the gap's point on shape_1 (m) and the body's
     ! nearest point's velocity relative to it along the surface (m/s), world
@@ -104,27 +128,30 @@ contains
   !> The free body of `system`'s contact at its given pose and twist:
   !> q0 = (x, y, z, a1, a2, a3), qd0 their rates, q_units; refused unless the
   !> description is a single contact on the ground that starts open with the
-  !> shapes apart. Shapes given by their descriptions are built first
-  !> (build_system_shapes, as for a closed start).
-  subroutine build_flight(system, flight, q0, qd0, q_units, status)
+  !> shapes apart (touching: a closed start that may open). Shapes given by
+  !> their descriptions are built first (build_system_shapes, as for a
+  !> closed start).
+  subroutine build_flight(system, flight, q0, qd0, q_units, status, touching)
     type(contact_system_t), intent(in) :: system
     type(flight_ode_t), intent(out) :: flight
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     character(len=8), allocatable, intent(out) :: q_units(:)
     type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: touching   ! the body may touch shape_1 (a closed start that may open)
     type(contact_system_t) :: shaped
     if (.not. status%ok()) return
     call build_system_shapes(system, shaped, status)
-    call build_shaped_flight(shaped, flight, q0, qd0, q_units, status)
+    call build_shaped_flight(shaped, flight, q0, qd0, q_units, status, touching)
   end subroutine build_flight
 
   !> build_flight of a system whose shapes are built.
-  subroutine build_shaped_flight(system, flight, q0, qd0, q_units, status)
+  subroutine build_shaped_flight(system, flight, q0, qd0, q_units, status, touching)
     type(contact_system_t), intent(in) :: system
     type(flight_ode_t), intent(out) :: flight
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     character(len=8), allocatable, intent(out) :: q_units(:)
     type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: touching   ! the body may touch shape_1 (a closed start that may open)
     character(len=*), parameter :: axis_name(3) = ['x', 'y', 'z']
     real(wp), parameter :: axes(3, 3) = identity
     type(solid_properties_t) :: props
@@ -134,13 +161,13 @@ contains
     associate (c => system%contacts(max(findloc(system%contacts%start_open, .true., dim=1), 1)), &
                m => flight%mechanism)
       if (size(system%contacts) /= 1 .or. size(system%bodies) /= 1 .or. c%body_1 /= 'ground') then
-        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': start = ''open'' is '// &
-          'supported for a single contact between the ground and one body (flight and landing, first slice); '// &
+        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': start = ''open'' and may_open '// &
+          'are supported for a single contact between the ground and one body (flight and landing); '// &
           'this description has '//format_count(size(system%contacts))//' contacts and '// &
           format_count(size(system%bodies))//' bodies')
         return
       end if
-      if (c%restitution < 0 .and. (allocated(c%friction%kind) .or. c%rolling .or. c%level /= LEVEL_POSITION &
+      if (c%start_open .and. c%restitution < 0 .and. (allocated(c%friction%kind) .or. c%rolling .or. c%level /= LEVEL_POSITION &
                                    .or. c%chain /= CHAIN_AUTO)) then
         call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': friction, rolling, level and '// &
           'chain of a contact that starts open are the closed contact''s after its body lands and the contact '// &
@@ -178,6 +205,8 @@ contains
       flight%body_frame = m%add_frame(c%body_2)
       call m%add_element(new_free_rotation(c%body_2//'.rotation', frames(4), flight%body_frame, coordinates(4:6), &
                                            [0.0_wp, 0.0_wp, 1.0_wp], system%bodies(b)%rotation))
+      flight%rotation_element = m%n_elements
+      flight%coordinates = coordinates
       call m%add_element(new_mass_element(c%body_2, flight%body_frame, system%bodies(b)%mass, props%inertia, &
                                           props%centre, system%gravity, status))
       if (.not. status%ok()) return
@@ -194,17 +223,22 @@ contains
       q_units = [character(len=8) :: 'm', 'm', 'm', 'rad', 'rad', 'rad']
       flight%q_units = q_units
       allocate (flight%beta_units(0))
-      call start_gap(flight, system, status)
+      call start_gap(flight, system, status, touching)
     end associate
   end subroutine build_shaped_flight
 
-  !> The gap at the start, from the contact search; it must be open (> 0)
-  !> and on the contact's branch (the normals against each other).
-  subroutine start_gap(flight, system, status)
+  !> The gap at the start, from the contact search; it must be open (> 0;
+  !> touching: not below -touching_gap_limit) and on the contact's branch
+  !> (the normals against each other).
+  subroutine start_gap(flight, system, status, touching)
     type(flight_ode_t), intent(inout) :: flight
     type(contact_system_t), intent(in) :: system
     type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: touching
     integer :: s1, s2, k
+    logical :: may_touch
+    may_touch = .false.
+    if (present(touching)) may_touch = touching
     associate (c => system%contacts(1), body => flight%mechanism%frames(flight%body_frame))
       s1 = findloc([(system%shapes(k)%name == c%shape_1, k = 1, size(system%shapes))], .true., dim=1)
       s2 = findloc([(system%shapes(k)%name == c%shape_2, k = 1, size(system%shapes))], .true., dim=1)
@@ -220,6 +254,11 @@ contains
         call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': at the start the normals of '// &
           'shape_1 and shape_2 point the same way at their nearest points (side_1, side_2 as for a closed '// &
           'contact: each normal out of its body towards the other); check side_1 and side_2')
+      else if (may_touch) then
+        if (.not. flight%gap%gap >= -touching_gap_limit) call set_status(status, STATUS_DOMAIN, 'contact '''// &
+          c%name//''': body '''//c%body_2//''' overlaps shape '''//c%shape_1//''' by '// &
+          format_short(-flight%gap%gap)//' m where it should touch (more than '//format_short(touching_gap_limit)// &
+          ' m)')
       else if (.not. flight%gap%gap > 0) then
         call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': start = ''open'' but body '''// &
           c%body_2//''' touches or overlaps shape '''//c%shape_1//''' at its start position (gap '// &
@@ -229,6 +268,41 @@ contains
       flight%last_gap = flight%gap%gap
     end associate
   end subroutine start_gap
+
+  !> The free body placed again at `rotation` and `position` (its frame's
+  !> axes and origin, world) with the twist [omega, v] (world; v of its
+  !> origin): the prismatic coordinates the origin, the free rotation's
+  !> angles 0 on a chart centred there, the rates solved for the twist; the
+  !> gap from the contact search there, touching allowed (a lift-off). y: its
+  !> state (contact_closing, a lift-off into flight).
+  subroutine restart_flight(flight, rotation, position, twist, y, status)
+    type(flight_ode_t), intent(inout) :: flight
+    real(wp), intent(in) :: rotation(3, 3), position(3), twist(6)
+    real(wp), allocatable, intent(out) :: y(:)
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: q0(:), qd0(:)
+    integer :: i
+    if (.not. status%ok()) return
+    associate (m => flight%mechanism)
+      do i = 1, 3
+        m%scalars(flight%coordinates(i))%q = position(i)
+        m%scalars(flight%coordinates(3 + i))%q = 0
+      end do
+      select type (turn => m%elements(flight%rotation_element)%e)
+      type is (free_rotation_t)
+        turn%ref_out = matmul(transpose(turn%ref_in), rotation)
+      end select
+      q0 = m%scalars(flight%coordinates)%q
+      call m%set_positions(flight%work, q0, status)
+      if (.not. status%ok()) return
+      call start_rates(flight, twist, qd0, status)
+      if (.not. status%ok()) return
+      call start_gap(flight, flight%system, status, touching=.true.)
+      if (.not. status%ok()) return
+      flight%touching = .true.
+      y = flight%initial_state(q0, qd0)
+    end associate
+  end subroutine restart_flight
 
   !> The rates of (x, y, z, a1, a2, a3) that give the body the twist
   !> [omega, v] (world; v of its frame's origin): the six columns of the
@@ -259,7 +333,8 @@ contains
     n = self%mechanism_ode_t%root_count() + 1
   end function flight_root_count
 
-  !> The mechanism's roots, then the gap at the pose y gives.
+  !> The mechanism's roots, then the gap at the pose y gives (while the
+  !> flight is touching: opening_gap - |gap|).
   subroutine flight_roots(self, t, y, g)
     class(flight_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
@@ -268,6 +343,7 @@ contains
     n = size(g) - 1
     call self%mechanism_ode_t%roots(t, y, g(1:n))
     g(n + 1) = gap_at(self, y)
+    if (self%touching) g(n + 1) = opening_gap - abs(g(n + 1))
   end subroutine flight_roots
 
   !> The gap at the pose of y (the last value where it cannot be found: a
@@ -292,7 +368,9 @@ contains
   end subroutine update_gap
 
   !> The mechanism's events, then the landing: the gap falling through zero
-  !> is an impact (with a restitution) or ends the run.
+  !> is an impact (with a restitution) or ends the run. A touching flight's
+  !> root: opened (the landing is watched from now on), or gone back in (a
+  !> landing).
   subroutine flight_handle_event(self, t, y, fired, action, status)
     class(flight_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t
@@ -311,6 +389,11 @@ contains
     call self%mechanism%set_velocities(self%work, y(f + 1:f + self%mechanism%ns))
     call update_gap(self, status)
     if (.not. status%ok()) return
+    if (self%touching) then
+      self%touching = .false.
+      ! opened: the root is the gap from here (opening_gap, nonzero, where CVODE looks again)
+      if (self%gap%gap > 0) return
+    end if
     associate (body => self%mechanism%frames(self%body_frame))
       speed = -self%gap%rate([0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], body%v, body%omega)
     end associate

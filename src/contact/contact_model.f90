@@ -85,6 +85,7 @@ module contact_model
     integer :: level = LEVEL_POSITION
     integer :: chain = CHAIN_AUTO
     logical :: start_open = .false.              ! starts apart, the body in flight (contact_flight)
+    logical :: may_open = .false.                ! a lift-off opens it: the body flies on (contact_closing)
     real(wp) :: restitution = -1                 ! energetic e of its landings (contact_flight); < 0: none given
     real(wp) :: impact_mu = 0                    ! Coulomb mu during its impacts
     real(wp) :: close_speed = 0.01_wp            ! m/s, a rebound below it would close the contact

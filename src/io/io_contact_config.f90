@@ -185,9 +185,10 @@ contains
       call r%get('restitution', c%restitution, status)
       call r%get('impact_mu', c%impact_mu, status)
       call r%get('close_speed', c%close_speed, status)
-      if (status%ok() .and. start /= 'open') call r%refuse_given([character(len=11) :: 'restitution', 'impact_mu', &
-        'close_speed'], 'the impact law is for a contact that starts open (start = ''open''): a closed contact '// &
-        'never lands', status)
+      call r%get('may_open', c%may_open, status)
+      if (status%ok() .and. start /= 'open' .and. .not. c%may_open) call r%refuse_given([character(len=11) :: &
+        'restitution', 'impact_mu', 'close_speed'], 'the impact law is for a contact that starts open (start = '// &
+        '''open'') or may open (may_open = .true.): a closed contact that may not open never lands', status)
       if (status%ok() .and. .not. r%has('restitution')) call r%refuse_given([character(len=11) :: 'impact_mu', &
         'close_speed'], 'without restitution the run ends at the landing: give restitution for impacts', status)
       if (status%ok() .and. .not. r%has('restitution')) c%restitution = -1

@@ -163,9 +163,13 @@ module io_declarations_multibody
     declaration_t(groups='contact', name='start', kind=VALUE_WORDS, default='''closed''', choices='closed open', &
       meaning='closed: body_2 is moved onto shape_1 and starts touching; open: it starts where &body puts it, '// &
       'apart, in free flight until it lands (docs/contact.md, "Flight")'), &
+    declaration_t(groups='contact', name='may_open', kind=VALUE_LOGICAL, default='.false.', &
+      meaning='a lift-off (the normal force falling to zero) opens the contact and the body flies on, landing '// &
+      'again with restitution, instead of ending the run; one contact between the ground and one body '// &
+      '(docs/contact.md, "Flight")'), &
     declaration_t(groups='contact', name='restitution', unit='1', default='none', &
       low=0.0_wp, high=1.0_wp, meaning='energetic coefficient of restitution of the landings (start = ''open'' '// &
-      'only): the body bounces (docs/contact.md, "Impact law"); without it the run ends at the landing'), &
+      'or may_open): the body bounces (docs/contact.md, "Impact law"); without it the run ends at the landing'), &
     declaration_t(groups='contact', name='impact_mu', unit='1', default='0', low=0.0_wp, high=10.0_wp, &
       meaning='Coulomb friction coefficient during an impact (with restitution)'), &
     declaration_t(groups='contact', name='close_speed', unit='m/s', default='0.01', low=0.0_wp, high=100.0_wp, &

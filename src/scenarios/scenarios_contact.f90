@@ -18,6 +18,7 @@ module scenarios_contact
   use geometry_surface_description, only: build_surface
   use scenarios_mechanism, only: run_mechanism
   use contact_flight, only: flight_ode_t, build_flight, starts_open
+  use contact_closing, only: flight_after_closed
   use io_xdmf, only: body_shape_t
   use base_grid, only: evenly_spaced
   use numerics_ode, only: ODE_ADAMS
@@ -72,6 +73,10 @@ contains
     end if
     if (status%ok()) call check_moves(input, system, model, status)
     if (.not. status%ok()) return
+    if (any(system%contacts%may_open)) then
+      call run_opening(input, run, solver, system, model, status)
+      return
+    end if
     call run_mechanism('contact', input, run, solver, model%ode, model%y0(1:f), model%y0(f + 1:f + ns), &
                        model%q_units, model%beta_units, status, &
                        surface=system%shapes(first_shape(system))%surface, shapes=bounded_body_shapes(system))
@@ -96,6 +101,28 @@ contains
     call run_mechanism('contact', input, run, solver, flight, q0, qd0, q_units, [character(len=8) ::], status, &
                        shapes=bounded_body_shapes(system))
   end subroutine run_flight
+
+  !> A closed contact that may open (may_open): it starts closed and flies
+  !> from its lift-off (contact_closing).
+  subroutine run_opening(input, run, solver, system, model, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(solver_config_t), intent(in) :: solver
+    type(contact_system_t), intent(in) :: system
+    type(contact_model_t), intent(in) :: model
+    type(status_t), intent(inout) :: status
+    type(flight_ode_t) :: flight
+    real(wp), allocatable :: q0(:), qd0(:)
+    character(len=8), allocatable :: q_units(:)
+    call flight_after_closed(system, model, flight, q0, qd0, q_units, status)
+    if (.not. status%ok()) then
+      call locate_failure(input, system, status)
+      call mark_input_failure(status)
+      return
+    end if
+    call run_mechanism('contact', input, run, solver, flight, q0, qd0, q_units, [character(len=8) ::], status, &
+                       shapes=bounded_body_shapes(system))
+  end subroutine run_opening
 
   !> Every bounded shape a body carries (an egg, a ball; not a plane or an
   !> open paraboloid), as a 24 x 13 grid in the body's axes for the XDMF view.

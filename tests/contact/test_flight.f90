@@ -12,6 +12,10 @@
 !>   - bounces of e = 0.5 (see bouncing_ball), closing at the partial Zeno
 !>     sum, then at rest; a ball landing with spin and sideways speed, rolling
 !>     after closing (rolling_on);
+!>   - lift-off (may_open): a ball rolling off a dome (dome_lift_off), and
+!>     one rolling round the inside of a sphere too slowly for the loop,
+!>     lifting off, flying and landing on the sphere again
+!>     (loop_lift_off_and_landing);
 !>   - refused: an open start that touches or overlaps, more than one
 !>     contact or body, friction on an open start without restitution
 !>     (unused: the run ends at the landing).
@@ -26,9 +30,9 @@ program test_flight
   use base_vector, only: cross
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_EVENT_STOP, DRIVE_END_TIME, &
     RECORD_EVENT, RECORD_OUTPUT
-  use contact_model, only: contact_system_t, contact_convergence_coefficient
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
   use contact_flight, only: flight_ode_t, build_flight
-  use contact_closing, only: drive_flight
+  use contact_closing, only: drive_flight, flight_after_closed
   use io_input, only: input_text_t, input_from_text
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
@@ -43,6 +47,8 @@ program test_flight
   call bouncing_ball()
   call rolling_after_impact()
   call rolling_on()
+  call dome_lift_off()
+  call loop_lift_off_and_landing()
   call refusals()
   call finish_tests('test_flight')
 
@@ -380,6 +386,238 @@ contains
       call check_close(s%body_v(3, 1, n), 0.0_wp, 0.0_wp, 1e-10_wp, 'rolling on: no vertical speed (m/s)')
     end associate
   end subroutine rolling_on
+
+  !> A ball (radius r = 0.1 m) rolling without slip off a fixed sphere (the
+  !> dome, radius 1 m), from rest near its top at theta_0 from the vertical
+  !> (its centre on the sphere of radius R = 1.1 m): energy m g R (cos
+  !> theta_0 - cos theta) = 7/10 m v^2 (rolling: v = omega r, I = 2/5 m r^2)
+  !> and the normal force m g cos theta - m v^2/R falling to zero give the
+  !> lift-off at cos theta = 10/17 cos theta_0. With may_open the contact opens
+  !> there and the ball flies: its centre on the projectile c_L + v_L s +
+  !> g s^2/2 from the lift-off state (c_L, v_L; s since the lift-off), its
+  !> angular velocity kept (a sphere, torque-free), its pose and twist
+  !> continuous across the switch (1e-12 m, 1e-12 of v_L); it moves away from
+  !> the dome (the gap grows: no landing) to the end. Without may_open the
+  !> same input ends at the lift-off, as before. Tolerances: rtol 1e-10: the
+  !> lift-off's cos theta to 1e-7 as cli_contact_lift_off's dome, the flight
+  !> (a polynomial motion from the recorded lift-off state) to 1e-9 m.
+  subroutine dome_lift_off()
+    type(flight_ode_t), target :: flight
+    type(contact_model_t) :: model
+    type(input_text_t) :: input
+    type(solver_config_t) :: solver
+    type(contact_system_t) :: system
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp), allocatable :: q0(:), qd0(:)
+    integer, allocatable :: in_flight(:)
+    character(len=8), allocatable :: units(:)
+    character(len=:), allocatable :: text
+    real(wp) :: c0, c_l, s, worst_path, worst_spin, gap_min
+    integer :: n, lift, i
+    text = '&run scenario = ''contact'' /'//nl// &
+           '&solver rtol = 1e-10, atol = 1e-10, duration = 3, output_step = 0.01 /'//nl// &
+           '&shape name = ''dome'', kind = ''ellipsoid'', a = 1, b = 1, c = 1 /'//nl// &
+           '&shape name = ''ball'', kind = ''ellipsoid'', a = 0.1, b = 0.1, c = 0.1 /'//nl// &
+           '&body name = ''ball'', mass = 1, solid_of = ''ball'', position = 0.05, 0, 1.1, angles_deg = 90, 0, 0 /'// &
+           nl//'&contact name = ''ball_on_dome'', shape_1 = ''dome'', body_2 = ''ball'', shape_2 = ''ball'', '// &
+           'rolling = .true., may_open = .true. /'//nl
+    call input_from_text('dome', text, input, st)
+    call read_solver_config(input, solver, st)
+    call read_contact_config(input, system, st)
+    call build_contact_model(system, model, st)
+    call flight_after_closed(system, model, flight, q0, qd0, units, st)
+    call check(st%ok(), 'dome: built from the input: '//st%text())
+    if (.not. st%ok()) return
+    options%ode%rtol = 1e-10_wp
+    options%ode%atol = 1e-10_wp
+    options%ode%convergence_coefficient = contact_convergence_coefficient
+    options%t_end = 3
+    options%output_step = 0.01_wp
+    options%progress_seconds = 0
+    call flight%start_series(400)
+    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, in_flight)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'dome: runs to the end: '//st%text())
+    call check(index(flight%outcome, 'lift-off: the normal force of contact ''ball_on_dome'' fell to zero') == 1 &
+               .and. index(flight%outcome, 'the contact opens (may_open), the body flies') > 0, &
+               'dome: the outcome says lift-off and flight: '//flight%outcome)
+    associate (sr => flight%series)
+      n = sr%n
+      call check(size(in_flight) == n .and. in_flight(1) == 0 .and. in_flight(n) == 1, &
+                 'dome: closed, then in flight')
+      if (size(in_flight) /= n .or. n < 3) return
+      lift = count(in_flight == 0)
+      call check(all(in_flight(:lift) == 0) .and. all(in_flight(lift + 1:) == 1), 'dome: one switch')
+      call check(sr%time(lift) == sr%time(lift + 1), 'dome: the closed contact''s last record and the flight''s '// &
+                 'first at the lift-off')
+      c0 = sr%body_r(3, 1, 1)/norm2(sr%body_r(:, 1, 1))
+      c_l = sr%body_r(3, 1, lift)/norm2(sr%body_r(:, 1, lift))
+      call check_close(c_l, 10.0_wp/17*c0, 1e-7_wp, 0.0_wp, 'dome: lift-off at cos theta = 10/17 cos theta_0')
+      call check_close(maxval(abs(sr%body_r(:, 1, lift + 1) - sr%body_r(:, 1, lift))), 0.0_wp, 0.0_wp, 1e-12_wp, &
+                       'dome: the position continuous across the switch (m)')
+      call check_close(maxval(abs(sr%body_rot(:, :, 1, lift + 1) - sr%body_rot(:, :, 1, lift))), 0.0_wp, 0.0_wp, &
+                       1e-12_wp, 'dome: the orientation continuous across the switch')
+      call check_close(maxval(abs(sr%body_v(:, 1, lift + 1) - sr%body_v(:, 1, lift))), 0.0_wp, 0.0_wp, &
+                       1e-12_wp*norm2(sr%body_v(:, 1, lift)), 'dome: the velocity continuous across the switch (m/s)')
+      call check_close(0.1_wp*maxval(abs(sr%body_omega(:, 1, lift + 1) - sr%body_omega(:, 1, lift))), 0.0_wp, &
+                       0.0_wp, 1e-12_wp*norm2(sr%body_v(:, 1, lift)), &
+                       'dome: the angular velocity continuous across the switch (r rad/s)')
+      worst_path = 0
+      worst_spin = 0
+      gap_min = huge(1.0_wp)
+      do i = lift + 1, n
+        s = sr%time(i) - sr%time(lift)
+        worst_path = max(worst_path, norm2(sr%body_r(:, 1, i) - (sr%body_r(:, 1, lift) + sr%body_v(:, 1, lift)*s + &
+                                                                  system%gravity*s**2/2)))
+        worst_spin = max(worst_spin, norm2(sr%body_omega(:, 1, i) - sr%body_omega(:, 1, lift)))
+        gap_min = min(gap_min, norm2(sr%body_r(:, 1, i)) - 1.1_wp)
+      end do
+      call check_close(worst_path, 0.0_wp, 0.0_wp, 1e-9_wp, 'dome: the projectile from the lift-off state (m)')
+      call check_close(worst_spin, 0.0_wp, 0.0_wp, 1e-9_wp, 'dome: the spin kept in flight (rad/s)')
+      call check(gap_min >= -1e-12_wp .and. norm2(sr%body_r(:, 1, n)) > 1.5_wp, &
+                 'dome: it flies away from the dome (no landing)')
+    end associate
+  end subroutine dome_lift_off
+
+  !> A ball (radius r = 0.1 m, rolling without slip) round the inside of a
+  !> fixed sphere (radius 1 m, its poles turned horizontal, out of the ball's
+  !> way) in the vertical x-z plane: from the bottom at v_0 with v_0^2 =
+  !> 3 g rho (rho = 0.9 m, the sphere its centre keeps to), too slow for the
+  !> loop. With theta from the top, rolling energy 7/10 m v^2 + m g rho cos
+  !> theta = 7/10 m v_0^2 - m g rho and the normal force m (v^2/rho - g cos
+  !> theta) falling to zero give the lift-off at cos theta_L = (7 v_0^2/(g
+  !> rho) - 10)/17 = 11/17, v_L^2 = g rho cos theta_L. There the contact
+  !> opens (may_open) and the ball flies the parabola c_L + v_L s + g s^2/2
+  !> inside the sphere until its centre is rho from the centre again: the
+  !> landing (no restitution: the run ends there, the outcome says so). The
+  !> landing's s solves |c(s)| = rho (bisection here, on the closed-form
+  !> parabola). Checked: the lift-off angle; the flight on the parabola from
+  !> the recorded lift-off state; the landing time, place and normal speed
+  !> from it, and from the closed-form lift-off state. Tolerances: rtol 1e-10:
+  !> cos theta_L to 1e-7 as the dome (1.6e-9 seen); the flight (a polynomial
+  !> motion from the recorded state) to 1e-9 m as the dome (7e-15 m seen);
+  !> the landing from the recorded lift-off state: CVODE locates the root to
+  !> 100 u (|t| + |h|) ~ 5e-14 s, so its time to 1e-12 s, its place to 1e-11 m
+  !> and its normal speed to 1e-11 m/s (at 5.5 m/s and g: 3e-13 m, 5e-13 m/s;
+  !> 2e-14 s, 9e-14 m, 1e-13 m/s seen); from the closed-form lift-off state
+  !> the lift-off's 1e-7 in cos theta moves the landing by ~0.25 s per unit
+  !> cos theta, so 1e-7 s and 1e-6 m (4e-10 s, 5e-9 m seen).
+  subroutine loop_lift_off_and_landing()
+    real(wp), parameter :: rho = 0.9_wp, cos_lift = 11.0_wp/17
+    type(flight_ode_t), target :: flight
+    type(contact_model_t) :: model
+    type(input_text_t) :: input
+    type(solver_config_t) :: solver
+    type(contact_system_t) :: system
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp), allocatable :: q0(:), qd0(:)
+    integer, allocatable :: in_flight(:)
+    character(len=8), allocatable :: units(:)
+    character(len=:), allocatable :: text
+    character(len=46) :: numbers
+    real(wp) :: v0, s, worst_path, s_land, s_ideal, sin_lift, c_ideal(3), v_ideal(3), c_end(3), v_end(3), e(3)
+    integer :: n, lift, i
+    v0 = sqrt(3*g*rho)
+    write (numbers, '(2(es22.15,1x))') v0, v0/radius
+    text = '&run scenario = ''contact'' /'//nl// &
+           '&solver rtol = 1e-10, atol = 1e-10, duration = 3, output_step = 0.01 /'//nl// &
+           '&shape name = ''loop'', kind = ''sphere'', radius = 1, angles_deg = 90, 0, 0 /'//nl// &
+           '&shape name = ''ball'', kind = ''sphere'', radius = 0.1 /'//nl// &
+           '&body name = ''ball'', mass = 1, solid_of = ''ball'', position = 0, 0, -0.9, velocity = '// &
+           numbers(1:22)//', 0, 0, angular_velocity = 0, '//numbers(24:45)//', 0 /'//nl// &
+           '&contact name = ''in_loop'', shape_1 = ''loop'', side_1 = -1, body_2 = ''ball'', shape_2 = ''ball'', '// &
+           'rolling = .true., may_open = .true. /'//nl
+    call input_from_text('loop', text, input, st)
+    call read_solver_config(input, solver, st)
+    call read_contact_config(input, system, st)
+    call build_contact_model(system, model, st)
+    call flight_after_closed(system, model, flight, q0, qd0, units, st)
+    call check(st%ok(), 'loop: built from the input: '//st%text())
+    if (.not. st%ok()) return
+    options%ode%rtol = 1e-10_wp
+    options%ode%atol = 1e-10_wp
+    options%ode%convergence_coefficient = contact_convergence_coefficient
+    options%t_end = 3
+    options%output_step = 0.01_wp
+    options%progress_seconds = 0
+    call flight%start_series(400)
+    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, in_flight)
+    call check(st%ok() .and. result%outcome == DRIVE_EVENT_STOP, 'loop: ends at the landing: '//st%text())
+    call check(index(flight%outcome, 'lift-off: the normal force of contact ''in_loop'' fell to zero') == 1 &
+               .and. index(flight%outcome, 'the contact opens (may_open), the body flies') > 0 .and. &
+               index(flight%outcome, 'landing: the gap of contact ''in_loop'' fell to zero') > 0, &
+               'loop: the outcome says lift-off, flight and landing: '//flight%outcome)
+    associate (sr => flight%series)
+      n = sr%n
+      call check(size(in_flight) == n .and. in_flight(1) == 0 .and. in_flight(n) == 1, &
+                 'loop: closed, then in flight')
+      if (size(in_flight) /= n .or. n < 3) return
+      lift = count(in_flight == 0)
+      call check(all(in_flight(:lift) == 0) .and. all(in_flight(lift + 1:) == 1), 'loop: one switch')
+      call check_close(sr%body_r(3, 1, lift)/norm2(sr%body_r(:, 1, lift)), cos_lift, 1e-7_wp, 0.0_wp, &
+                       'loop: lift-off at cos theta = 11/17')
+      call check_close(norm2(sr%body_v(:, 1, lift))**2, g*rho*cos_lift, 1e-7_wp, 0.0_wp, &
+                       'loop: lift-off at v^2 = g rho cos theta')
+      worst_path = 0
+      do i = lift + 1, n
+        s = sr%time(i) - sr%time(lift)
+        worst_path = max(worst_path, norm2(sr%body_r(:, 1, i) - parabola(sr%body_r(:, 1, lift), sr%body_v(:, 1, lift), s)))
+      end do
+      call check_close(worst_path, 0.0_wp, 0.0_wp, 1e-9_wp, 'loop: the projectile from the lift-off state (m)')
+      s_land = landing(sr%body_r(:, 1, lift), sr%body_v(:, 1, lift), rho)
+      call check_close(sr%time(n) - sr%time(lift), s_land, 0.0_wp, 1e-12_wp, &
+                       'loop: lands where the parabola from the lift-off state meets the sphere (s)')
+      c_end = parabola(sr%body_r(:, 1, lift), sr%body_v(:, 1, lift), s_land)
+      v_end = sr%body_v(:, 1, lift) + system%gravity*s_land
+      e = c_end/norm2(c_end)
+      call check_close(maxval(abs(sr%body_r(:, 1, n) - c_end)), 0.0_wp, 0.0_wp, 1e-11_wp, 'loop: the landing place (m)')
+      call check(dot_product(v_end, e) > 1, 'loop: lands approaching the wall (normal speed > 1 m/s)')
+      call check_close(dot_product(sr%body_v(:, 1, n), e), dot_product(v_end, e), 0.0_wp, 1e-11_wp, &
+                       'loop: the landing''s normal speed (m/s)')
+      ! from the closed-form lift-off state: going up the +x side, over towards -x
+      sin_lift = sqrt(1 - cos_lift**2)
+      c_ideal = rho*[sin_lift, 0.0_wp, cos_lift]
+      v_ideal = sqrt(g*rho*cos_lift)*[-cos_lift, 0.0_wp, sin_lift]
+      s_ideal = landing(c_ideal, v_ideal, rho)
+      call check_close(sr%time(n) - sr%time(lift), s_ideal, 0.0_wp, 1e-7_wp, &
+                       'loop: the flight time from the closed-form lift-off (s)')
+      call check_close(maxval(abs(sr%body_r(:, 1, n) - parabola(c_ideal, v_ideal, s_ideal))), 0.0_wp, 0.0_wp, &
+                       1e-6_wp, 'loop: the landing place from the closed-form lift-off (m)')
+    end associate
+  end subroutine loop_lift_off_and_landing
+
+  !> The centre at s on the parabola from (c, v) under standard gravity.
+  pure function parabola(c, v, s) result(p)
+    real(wp), intent(in) :: c(3), v(3), s
+    real(wp) :: p(3)
+    p = c + v*s + [0.0_wp, 0.0_wp, -g]*s**2/2
+  end function parabola
+
+  !> The first s > 0 where the parabola from (c, v) is rho from the origin
+  !> again (it starts there tangent, goes inside: steps of 1 ms to the
+  !> first point outside, then bisection to rounding).
+  pure real(wp) function landing(c, v, rho) result(s)
+    real(wp), intent(in) :: c(3), v(3), rho
+    real(wp) :: lo, hi
+    integer :: k
+    hi = 1e-3_wp
+    do while (norm2(parabola(c, v, hi)) < rho)
+      hi = hi + 1e-3_wp
+    end do
+    lo = hi - 1e-3_wp
+    do k = 1, 200
+      s = (lo + hi)/2
+      if (s <= lo .or. s >= hi) exit
+      if (norm2(parabola(c, v, s)) < rho) then
+        lo = s
+      else
+        hi = s
+      end if
+    end do
+  end function landing
 
   subroutine refusals()
     type(flight_ode_t) :: flight
