@@ -332,6 +332,7 @@ contains
     if (allocated(self%link%system_status%message)) deallocate (self%link%system_status%message)
     self%link%recoverable_status%code = STATUS_OK
     self%link%cvode_message = ''
+    t_reached = self%t   ! CVODE leaves it unset on some failures (a root at and very near the last one)
     flag = FCVode(self%cvode, t_out, self%y, t_reached, CV_NORMAL)
     if (flag == CV_TOO_MUCH_WORK .and. present(work_limit_reached)) then
       work_limit_reached = .true.

@@ -5,7 +5,7 @@ module test_ode_systems
   use numerics_ode, only: ode_system_t
   implicit none (type, external)
   private
-  public :: oscillator_t, ball_t, domain_t
+  public :: oscillator_t, ball_t, domain_t, plateau_t
 
   !> x'' = -omega^2 x as y = [x, x']; roots: g1 = x, g2 = t - t_mark.
   type, extends(ode_system_t) :: oscillator_t
@@ -26,6 +26,16 @@ module test_ode_systems
     procedure :: root_count => ball_root_count
     procedure :: roots => ball_roots
   end type ball_t
+
+  !> y' = 1 with the root g = min(y - 1, 0): exactly zero from y = 1 on, so
+  !> CVODE finds a root there and then refuses to go on (a root at and very
+  !> near the last one: CV_ILL_INPUT).
+  type, extends(ode_system_t) :: plateau_t
+  contains
+    procedure :: rhs => plateau_rhs
+    procedure :: root_count => plateau_root_count
+    procedure :: roots => plateau_roots
+  end type plateau_t
 
   !> y' = -1 with a domain y > 0.5: the right-hand side refuses outside it.
   type, extends(ode_system_t) :: domain_t
@@ -86,6 +96,32 @@ contains
     g(1) = y(1)
   end subroutine ball_roots
 
+  subroutine plateau_rhs(self, t, y, ydot, status)
+    class(plateau_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(out) :: ydot(:)
+    type(status_t), intent(inout) :: status
+    associate (unused_self => self, unused_t => t, unused_y => y, unused_status => status)
+    end associate
+    ydot = 1
+  end subroutine plateau_rhs
+
+  integer function plateau_root_count(self) result(n)
+    class(plateau_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    n = 1
+  end function plateau_root_count
+
+  subroutine plateau_roots(self, t, y, g)
+    class(plateau_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(out) :: g(:)
+    associate (unused_self => self, unused_t => t)
+    end associate
+    g(1) = min(y(1) - 1, 0.0_wp)
+  end subroutine plateau_roots
+
   subroutine domain_rhs(self, t, y, ydot, status)
     class(domain_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
@@ -105,7 +141,7 @@ program test_ode
     STATUS_INTERNAL
   use numerics_ode, only: ode_integrator_t, ode_options_t, ode_stats_t, ODE_ADAMS, ODE_BDF
   use testing, only: check, check_close, finish_tests
-  use test_ode_systems, only: oscillator_t, ball_t, domain_t
+  use test_ode_systems, only: oscillator_t, ball_t, domain_t, plateau_t
   implicit none (type, external)
 
   call oscillator_against_closed_form(ODE_ADAMS, 'Adams')
@@ -115,6 +151,7 @@ program test_ode
   call too_much_work()
   call system_status_comes_back()
   call stop_time_and_misuse()
+  call failure_time_is_the_last_reached()
   call finish_tests('test_ode')
 
 contains
@@ -332,4 +369,30 @@ contains
     call ode%destroy()
     call ode%destroy()   ! twice is harmless
   end subroutine stop_time_and_misuse
+
+  !> A failure that CVODE reports without the time it reached (its root
+  !> check before the first step: a root at and very near the last one) gives
+  !> the last time reached, here the root's (it was uninitialised memory, e.g.
+  !> 4.68e-310 s in a message).
+  subroutine failure_time_is_the_last_reached()
+    type(plateau_t), target :: system, other_system
+    type(ode_integrator_t) :: ode, other
+    type(ode_options_t) :: options
+    type(status_t) :: status
+    real(wp) :: t, t_root, y(1)
+    logical :: found
+    call ode%start(system, 0.0_wp, [0.0_wp], options, status)
+    call ode%advance(5.0_wp, t, y, status, found)
+    call check(status%ok() .and. found .and. t >= 1 .and. t < 5, 'plateau: the root where g becomes 0')
+    t_root = t
+    ! another integrator's advance in between (to 0.5 s) leaves its time where
+    ! an unset one would be read
+    call other%start(other_system, 0.0_wp, [0.0_wp], options, status)
+    call other%advance(0.5_wp, t, y, status, found)
+    call check(status%ok() .and. .not. found .and. t == 0.5_wp, 'plateau: another run to 0.5 s')
+    call ode%advance(5.0_wp, t, y, status, found)
+    call check(status%code == STATUS_INVALID_INPUT .and. index(status%text(), 'CV_ILL_INPUT') > 0, &
+               'plateau: CVODE refuses the root at and very near the last one: '//status%text())
+    call check(t == t_root, 'plateau: the failure''s time is the last time reached (the message''s too)')
+  end subroutine failure_time_is_the_last_reached
 end program test_ode
