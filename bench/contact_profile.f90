@@ -1,6 +1,7 @@
 !> One run of a contact input (no repeats, nothing recorded), for profiling
 !> with callgrind and for the integrator's counts: steps, right-hand sides,
-!> error-test and nonlinear failures, root evaluations, events, restarts.
+!> error-test and nonlinear failures, root evaluations, events, restarts, and
+!> the root calls the stored values served or that evaluated the dynamics.
 !>
 !> Usage (from the repository root):
 !>   contact_profile input.nml [p1|p2|ref] [mu] [seconds] [coefficient] [file]
@@ -98,4 +99,9 @@ program contact_profile
     '  nonlinear failures ', result%stats%nonlinear_failures, '  root evaluations ', result%stats%root_evaluations
   print '(a, i0, a, i0, a, i0)', 'events ', result%events, '  restarts ', result%restarts, &
     '  last order ', result%stats%last_order
+  associate (ode => model%ode)
+    print '(a, i0, a, i0, a, i0, a, i0, a, i0)', 'root calls ', ode%root_calls, '  served by stored values ', &
+      ode%root_cache_hits, '  dynamics ', ode%root_dynamics, ' (at outputs ', ode%root_dynamics_at_outputs, &
+      ')  partial ', ode%root_partial
+  end associate
 end program contact_profile

@@ -59,6 +59,10 @@ module kinetostatics_mechanism_ode
     integer :: n_roots = 0                     ! its own roots (not an extension's), counted in prepare
                                                ! (the right-hand side asks at every call)
     integer :: root_calls = 0, root_cache_hits = 0
+    ! root calls not served by stored values: those that evaluated the whole dynamics (lift-off
+    ! needs N), of them those at an output time (the record there reuses that evaluation), and
+    ! the others (positions, velocities and laws as far as their roots need)
+    integer :: root_dynamics = 0, root_dynamics_at_outputs = 0, root_partial = 0
     ! root values of the last evaluation and the state they belong to
     logical :: cached = .false.
     logical :: cache_exact = .true.            ! its normal forces evaluated, not interpolated

@@ -178,6 +178,12 @@ contains
     ! from the line between them, the rest at its own level
     interpolated = level == 3 .and. t /= self%t_output .and. settled(self, t)
     if (interpolated) level = 2
+    if (level == 3) then
+      self%root_dynamics = self%root_dynamics + 1
+      if (t == self%t_output) self%root_dynamics_at_outputs = self%root_dynamics_at_outputs + 1
+    else
+      self%root_partial = self%root_partial + 1
+    end if
     select case (level)
     case (3)
       call self%mechanism%dynamics(self%work, t, y(1:f), y(f + 1:n), self%work_ydot(1:n - f), status)

@@ -125,6 +125,7 @@ program test_mechanism_events
   call edge_in_v()
   call runaway_guard()
   call events_added_after_start()
+  call root_values_reused()
   call finish_tests('test_mechanism_events')
 
 contains
@@ -410,4 +411,56 @@ contains
     ! the same expression as root_values: exact
     call check(g(1) == y0(1) - sys%event_value(1), 'the added crossing''s root value is y(1) - value')
   end subroutine events_added_after_start
+
+  !> The root functions take the values of the right-hand side at its (t, y)
+  !> (CVODE asks there after a step's corrector) and evaluate nothing; at
+  !> another state they evaluate the whole dynamics (the lift-off roots need
+  !> N), which agrees with the stored values to the closure's tolerance (the
+  !> sled's loops are solved from another warm start). In a run with records
+  !> the evaluations at output times are those the records take again (the
+  !> mechanism's dynamics returns them): an output costs one evaluation.
+  subroutine root_values_reused()
+    type(solver_config_t) :: solver
+    class(surface_t), allocatable :: surface
+    type(mechanism_ode_t), target :: sys, run
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp), allocatable :: y0(:), ydot(:), g_stored(:), g_fresh(:)
+    integer :: evaluated
+    call load_sled('inputs/sled/demo_slide.nml', solver, surface, sys, y0, st)
+    call check(st%ok(), 'demo slide sled builds: '//st%text())
+    if (.not. st%ok()) return
+    allocate (ydot(size(y0)), g_stored(sys%root_count()), g_fresh(sys%root_count()))
+    call sys%rhs(0.0_wp, y0, ydot, st)
+    evaluated = sys%root_dynamics + sys%root_partial
+    call sys%roots(0.0_wp, y0, g_stored)
+    call check(st%ok() .and. sys%root_dynamics + sys%root_partial == evaluated .and. sys%root_cache_hits == 1, &
+               'root values at the right-hand side''s (t, y): taken from it, nothing evaluated')
+    ! a right-hand side 1 ms on: neither store holds (0, y0) any more
+    call sys%rhs(1e-3_wp, y0 + 1e-3_wp*ydot, ydot, st)
+    call sys%roots(0.0_wp, y0, g_fresh)
+    call check(st%ok() .and. sys%root_dynamics == 1 .and. sys%root_cache_hits == 1, &
+               'root values at another state: the dynamics evaluated')
+    call check(all(abs(g_fresh - g_stored) <= 1e-9_wp*max(1.0_wp, maxval(abs(g_fresh)))), &
+               'the stored root values = a fresh evaluation (closure tolerance)')
+
+    call load_sled('inputs/sled/demo_slide.nml', solver, surface, run, y0, st)
+    solver%duration = 1
+    options = mechanism_driver_options('sled', solver)
+    call quiet(options)
+    call run%start_series(200)
+    call drive(run, y0, options, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'demo slide sled, 1 s: '//st%text())
+    ! every output but the last, where CVODE's step ends at the stop time and
+    ! the right-hand side's values serve, is checked with an evaluation that
+    ! its record takes again
+    call check(run%root_dynamics_at_outputs >= result%outputs - 1 .and. &
+               run%root_dynamics_at_outputs <= result%outputs .and. &
+               run%work%dynamics_reused >= run%root_dynamics_at_outputs, &
+               'an output costs one dynamics evaluation: the root check''s, reused by its record')
+    print '(a, 6(i0, a))', '  sled 1 s: ', result%outputs, ' outputs, ', run%root_calls, ' root calls, ', &
+      run%root_cache_hits, ' served, ', run%root_dynamics, ' dynamics (', run%root_dynamics_at_outputs, &
+      ' at outputs), ', run%work%dynamics_reused, ' dynamics reused'
+  end subroutine root_values_reused
 end program test_mechanism_events
