@@ -48,6 +48,7 @@ module io_hdf5
     logical, allocatable :: scaled(:)    ! per Fortran dimension: a scale is attached
     logical :: is_scale = .false.
     logical :: is_real = .false.         ! a double-precision dataset (else integer or text)
+    logical :: is_integer = .false.      ! an integer dataset
   end type written_t
 
   type :: result_file_t

@@ -134,10 +134,10 @@ contains
     end if
   end procedure result_file_shape_of
 
-  !> The values of a double-precision dataset written to this file, read
-  !> back in the file's (C) order, the last index fastest: the rows of an
-  !> (n, 3) dataset as x1 y1 z1 x2 ...; size 0 if it was not written or
-  !> cannot be read.
+  !> The values of a double-precision or integer dataset written to this
+  !> file (integers as reals), read back in the file's (C) order, the last
+  !> index fastest: the rows of an (n, 3) dataset as x1 y1 z1 x2 ...; size 0
+  !> if it was not written, is text or cannot be read.
   module procedure result_file_values_of
     integer(hid_t) :: dataset_id
     type(c_ptr) :: buffer
@@ -145,7 +145,7 @@ contains
     k = find_written(self, name)
     allocate (values(0))
     if (k == 0) return
-    if (.not. self%written(k)%is_real) return
+    if (.not. (self%written(k)%is_real .or. self%written(k)%is_integer)) return
     deallocate (values)
     allocate (values(product(self%written(k)%shape)))
     call h5dopen_f(self%file_id, name, dataset_id, hdferr)
@@ -254,6 +254,7 @@ contains
     end if
     call remember(self, name, shape)
     self%written(self%n_written)%is_real = type_id == H5T_NATIVE_DOUBLE
+    self%written(self%n_written)%is_integer = type_id == H5T_NATIVE_INTEGER
   end subroutine write_dataset
 
   !> Remembers the first dataset or attribute that is not finite.

@@ -10,7 +10,8 @@
 !> - A surface grid is a structured grid (2DSMesh) with XYZ points; a path a
 !>   polyline with explicit connectivity (the Xdmf3 readers make no cell
 !>   without it), with the real (n) and (n, 3) datasets of its groups as
-!>   node scalars and vectors; the water band a 2 x n structured grid.
+!>   node scalars and vectors; the water band a 2 x n structured grid; a
+!>   set of points (the landings of a flight) a polyvertex.
 !> - Anything moving makes the file one temporal collection of spatial
 !>   collections (at most max_steps steps: every k-th sample and the last):
 !>   the Xdmf3 readers drop a grid that stands beside a temporal collection.
@@ -55,6 +56,7 @@ module io_xdmf
     procedure :: start => xdmf_start
     procedure :: surface => xdmf_surface
     procedure :: polyline => xdmf_polyline
+    procedure :: point_set => xdmf_point_set
     procedure :: band => xdmf_band
     procedure :: moving_points => xdmf_moving_points
     procedure :: moving_box => xdmf_moving_box
@@ -114,13 +116,17 @@ contains
   !> A polyline through the rows of `points` (shape (n, 3)) with the real
   !> datasets of `group` of shape (n) or (n, 3) as node attributes, and
   !> those of `more` (e.g. the rider's own beside its contact's) whose names
-  !> `group` does not have.
-  subroutine xdmf_polyline(self, file, name, points, group, more)
+  !> `group` does not have; then each dataset of `fields` (shape (n), real or
+  !> integer, e.g. a contact's open state) that was written, named by
+  !> `field_names`.
+  subroutine xdmf_polyline(self, file, name, points, group, more, field_names, fields)
     class(xdmf_t), intent(inout) :: self
     type(result_file_t), intent(in) :: file
     character(len=*), intent(in) :: name, points, group
     character(len=*), intent(in), optional :: more
+    character(len=*), intent(in), optional :: field_names(:), fields(:)
     integer, allocatable :: dims(:)
+    real(wp), allocatable :: values(:)
     character(len=:), allocatable :: taken
     integer :: k
     dims = file%shape_of(points)
@@ -137,33 +143,83 @@ contains
     call data_item(self%fixed, dims, file%values_of(points))
     call add(self%fixed, '  </Geometry>')
     taken = '/'
-    call group_attributes(group)
-    if (present(more)) call group_attributes(more)
+    call group_attributes(self%fixed, file, group, points, dims(1), .false., taken)
+    if (present(more)) call group_attributes(self%fixed, file, more, points, dims(1), .false., taken)
+    if (present(fields) .and. present(field_names)) then
+      do k = 1, min(size(fields), size(field_names))
+        values = file%values_of(trim(fields(k)))
+        if (size(values) == dims(1)) call attribute(self%fixed, trim(field_names(k)), 'Scalar', 'Node', &
+                                                    [dims(1)], values)
+      end do
+    end if
     call add(self%fixed, '</Grid>')
     self%n_fixed = self%n_fixed + 1
-  contains
-    subroutine group_attributes(g)
-      character(len=*), intent(in) :: g
-      character(len=:), allocatable :: names(:), base
-      integer, allocatable :: d(:)
-      names = file%names_in(g)
-      do k = 1, size(names)
-        if (trim(names(k)) == points .or. .not. file%is_real(trim(names(k)))) cycle
-        d = file%shape_of(trim(names(k)))
-        if (size(d) == 0) cycle
-        if (d(1) /= dims(1)) cycle
-        base = base_name(trim(names(k)))
-        if (index(taken, '/'//base//'/') > 0) cycle
-        if (size(d) == 1) then
-          call attribute(self%fixed, base, 'Scalar', 'Node', d, file%values_of(trim(names(k))))
-        else if (size(d) == 2) then
-          if (d(2) /= 3) cycle
-          call attribute(self%fixed, base, 'Vector', 'Node', d, file%values_of(trim(names(k))))
-        end if
-        taken = taken//base//'/'
-      end do
-    end subroutine group_attributes
   end subroutine xdmf_polyline
+
+  !> The rows of `points` (shape (k, 3), k >= 1) as a set of points (a
+  !> polyvertex) with the datasets of `group` of shape (k) or (k, 3), real or
+  !> integer, as node attributes (e.g. the impacts of a flight).
+  subroutine xdmf_point_set(self, file, name, points, group)
+    class(xdmf_t), intent(inout) :: self
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: name, points, group
+    integer, allocatable :: dims(:)
+    character(len=:), allocatable :: taken
+    integer :: k
+    dims = file%shape_of(points)
+    if (size(dims) /= 2) return
+    if (dims(1) < 1 .or. dims(2) /= 3) return
+    call add(self%fixed, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
+    call add(self%fixed, '  <Topology TopologyType="Polyvertex" NodesPerElement="1" NumberOfElements="'// &
+             format_integer(dims(1))//'">')
+    call add(self%fixed, '    <DataItem Dimensions="'//format_integer(dims(1))//' 1" NumberType="Int" Format="XML">')
+    call integer_lines(self%fixed, [(k, k = 0, dims(1) - 1)])
+    call add(self%fixed, '    </DataItem>')
+    call add(self%fixed, '  </Topology>')
+    call add(self%fixed, '  <Geometry GeometryType="XYZ">')
+    call data_item(self%fixed, dims, file%values_of(points))
+    call add(self%fixed, '  </Geometry>')
+    taken = '/'
+    call group_attributes(self%fixed, file, group, points, dims(1), .true., taken)
+    call add(self%fixed, '</Grid>')
+    self%n_fixed = self%n_fixed + 1
+  end subroutine xdmf_point_set
+
+  !> The datasets of `group` of shape (n) or (n, 3) as node attributes of a
+  !> grid of n points (not `points` itself, nor a name in `taken`, which
+  !> gains each one added): the real ones, and with `integers` the integer
+  !> ones too.
+  subroutine group_attributes(text, file, group, points, n, integers, taken)
+    type(text_t), intent(inout) :: text
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: group, points
+    integer, intent(in) :: n
+    logical, intent(in) :: integers
+    character(len=:), allocatable, intent(inout) :: taken
+    character(len=:), allocatable :: names(:), base
+    real(wp), allocatable :: values(:)
+    integer, allocatable :: d(:)
+    integer :: k
+    names = file%names_in(group)
+    do k = 1, size(names)
+      if (trim(names(k)) == points) cycle
+      if (.not. (file%is_real(trim(names(k))) .or. integers)) cycle
+      d = file%shape_of(trim(names(k)))
+      if (size(d) == 0) cycle
+      if (d(1) /= n) cycle
+      base = base_name(trim(names(k)))
+      if (index(taken, '/'//base//'/') > 0) cycle
+      values = file%values_of(trim(names(k)))   ! none for text
+      if (size(values) /= product(d)) cycle
+      if (size(d) == 1) then
+        call attribute(text, base, 'Scalar', 'Node', d, values)
+      else if (size(d) == 2) then
+        if (d(2) /= 3) cycle
+        call attribute(text, base, 'Vector', 'Node', d, values)
+      end if
+      taken = taken//base//'/'
+    end do
+  end subroutine group_attributes
 
   !> The band between two edges (shape (n, 3) each) as a 2 x n structured
   !> grid; `fields` (shape (n)) on both edges' nodes.
@@ -194,18 +250,27 @@ contains
   end subroutine xdmf_band
 
   !> Points moving over time: at each kept time step one point per dataset
-  !> in `points` (each of shape (n, 3)), joined by a polyline when `connect`.
-  subroutine xdmf_moving_points(self, file, name, time, points, connect)
+  !> in `points` (each of shape (n, 3)), joined by a polyline when `connect`;
+  !> node scalars(j, k, i) of point k at sample i named scalar_names(j).
+  subroutine xdmf_moving_points(self, file, name, time, points, connect, scalar_names, scalars)
     class(xdmf_t), intent(inout) :: self
     type(result_file_t), intent(in) :: file
     character(len=*), intent(in) :: name
     real(wp), intent(in) :: time(:)
     character(len=*), intent(in) :: points(:)
     logical, intent(in) :: connect
+    character(len=*), intent(in), optional :: scalar_names(:)
+    real(wp), intent(in), optional :: scalars(:, :, :)
     real(wp), allocatable :: xyz(:, :)   ! 3 n x m: every dataset's rows
     real(wp), allocatable :: values(:)
-    integer :: m, k, s, i
+    integer :: m, k, s, i, j
+    logical :: with_scalars
     m = size(points)
+    with_scalars = .false.
+    if (present(scalars) .and. present(scalar_names)) then
+      if (any(shape(scalars) /= [size(scalar_names), m, size(time)])) return
+      with_scalars = .true.
+    end if
     if (m < 1 .or. .not. steps_for(self, time)) return
     allocate (xyz(3*size(time), m))
     do k = 1, m
@@ -232,6 +297,11 @@ contains
         call add(t, '  <Geometry GeometryType="XYZ">')
         call data_item(t, [m, 3], reshape(xyz(3*i - 2:3*i, :), [3*m]))
         call add(t, '  </Geometry>')
+        if (with_scalars) then
+          do j = 1, size(scalar_names)
+            call attribute(t, trim(scalar_names(j)), 'Scalar', 'Node', [m], scalars(j, :, i))
+          end do
+        end if
         call add(t, '  </Grid>')
       end associate
     end do

@@ -3,7 +3,7 @@
 !> (outputs, events, progress lines, runaway guards), write, summarize.
 module scenarios_mechanism
   use base_kinds, only: wp
-  use base_status, only: status_t, prefix_status
+  use base_status, only: status_t, prefix_status, set_status, STATUS_INTERNAL
   use base_log, only: log_info
   use numerics_ode, only: ode_stats_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP
@@ -119,7 +119,7 @@ contains
                                 units, dependent_units, write_status, losses)
     select type (sys)
     class is (flight_ode_t)
-      call write_impacts(file, sys%impacts, write_status)
+      call write_impacts(file, sys, write_status)
       call write_phases(file, sys, in_flight, write_status)
     end select
     ! the grid around the first contact's path (u, v are its first two coordinates)
@@ -180,16 +180,44 @@ contains
     call file%write_integers('/contact/contacts/'//flight%contact_name//'/open', in_flight(:flight%series%n), '1', &
                              '1 while the contact is open (the body in flight, its gap in /contact/measurements), '// &
                              '0 while closed', status)
+    call file%attach_scale('/contact/time', '/contact/contacts', status)   ! written after the series's
   end subroutine write_phases
 
   !> The impacts table of a flight (docs/outputs.md, /contact/impacts), if
-  !> it had any: one row per impact.
-  subroutine write_impacts(file, impacts, status)
+  !> it had any: one row per impact. Its place is the contact point of the
+  !> first record at the impact's time (the driver records every impact: the
+  !> state after it, the flight's at a closing): the landing point.
+  subroutine write_impacts(file, flight, status)
+    type(result_file_t), intent(inout) :: file
+    type(flight_ode_t), intent(in) :: flight
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: position(:, :)
+    integer :: c, j, i, k
+    if (.not. status%ok()) return
+    associate (impacts => flight%impacts, s => flight%series)
+      if (size(impacts) == 0) return
+      c = findloc([(trim(s%contact_names(k)) == flight%contact_name, k = 1, s%nc)], .true., dim=1)
+      allocate (position(3, size(impacts)))
+      do j = 1, size(impacts)
+        i = findloc(s%time(:s%n), impacts(j)%time, dim=1)
+        if (c == 0 .or. i == 0) then
+          call set_status(status, STATUS_INTERNAL, 'the impact at t = '//format_real(impacts(j)%time)// &
+                          ' s has no record of contact '''//flight%contact_name//''' at its time')
+          return
+        end if
+        position(:, j) = s%contact_r(:, c, i)
+      end do
+      call write_impacts_table(file, impacts, position, status)
+    end associate
+  end subroutine write_impacts
+
+  !> The impacts table's datasets and their scales.
+  subroutine write_impacts_table(file, impacts, position, status)
     type(result_file_t), intent(inout) :: file
     type(impact_record_t), intent(in) :: impacts(:)
+    real(wp), intent(in) :: position(:, :)   ! 3 x k, m
     type(status_t), intent(inout) :: status
     character(len=*), parameter :: g = '/contact/impacts/'
-    if (size(impacts) == 0 .or. .not. status%ok()) return
     call file%write_vector(g//'time', impacts%time, 's', 'time of each impact', status)
     call file%write_integers(g//'contact', spread(1, 1, size(impacts)), '1', &
                              'the impact''s contact: its place among the &contact groups (1: the first)', status)
@@ -202,11 +230,19 @@ contains
     call file%write_vector(g//'tangential_impulse', impacts%tangential_impulse, 'N s', &
                            'size of the tangential (friction) impulse on the body', status)
     call file%write_vector(g//'energy_lost', impacts%energy_lost, 'J', 'kinetic energy the impact removed', status)
-  end subroutine write_impacts
+    call file%write_matrix(g//'position', position, 'm', &
+                           'where the impact happened: the contact point on shape_1 (k x 3)', status)
+    ! the table's rows by their time; position's columns by /contact/xyz
+    call file%make_scale(g//'time', status)
+    call file%attach_scale(g//'time', g, status)
+    call file%attach_scale('/contact/xyz', g, status, axis=1)
+  end subroutine write_impacts_table
 
   !> The XDMF file next to the result: the surface (sled), each body's and
   !> contact's path, the bodies and the contacts (joined: the sled's bar)
-  !> moving over time.
+  !> moving over time. A contact that can open (a flight) shows on its path
+  !> and its moving point whether it is open (1) and its gap (m), and the
+  !> impacts are a set of points at the landings (docs/outputs.md).
   subroutine write_xdmf(file, scenario, s, status, shapes)
     type(result_file_t), intent(inout) :: file
     character(len=*), intent(in) :: scenario
@@ -216,7 +252,8 @@ contains
     integer :: b, j
     type(xdmf_t) :: xdmf
     character(len=:), allocatable :: g
-    character(len=128) :: bodies(s%nb), contacts(s%nc)
+    character(len=128) :: bodies(s%nb), contacts(s%nc), phase(2, s%nc)
+    real(wp), allocatable :: phases(:, :, :), values(:)   ! open, gap x contact x record
     integer :: k
     g = '/'//scenario
     call xdmf%start()
@@ -226,13 +263,28 @@ contains
       call xdmf%polyline(file, 'path of '//trim(s%body_names(k)), trim(bodies(k)), &
                          g//'/bodies/'//trim(s%body_names(k)))
     end do
+    allocate (phases(2, s%nc, s%n), source=0.0_wp)
     do k = 1, s%nc
       contacts(k) = g//'/contacts/'//trim(s%contact_names(k))//'/position'
+      phase(:, k) = [character(len=128) :: g//'/contacts/'//trim(s%contact_names(k))//'/open', &
+                     g//'/measurements/'//trim(s%contact_names(k))//'.gap']
       call xdmf%polyline(file, 'path of contact '//trim(s%contact_names(k)), trim(contacts(k)), &
-                         g//'/contacts/'//trim(s%contact_names(k)))
+                         g//'/contacts/'//trim(s%contact_names(k)), field_names=['open', 'gap '], fields=phase(:, k))
+      do j = 1, 2
+        values = file%values_of(trim(phase(j, k)))
+        if (size(values) == s%n) phases(j, k, :) = values
+      end do
     end do
     if (s%nb > 0) call xdmf%moving_points(file, 'bodies', s%time(:s%n), bodies, .false.)
-    if (s%nc > 0) call xdmf%moving_points(file, 'contacts', s%time(:s%n), contacts, .true.)
+    if (s%nc > 0) then
+      ! a contact that can open: every contact's state (0 and no gap: closed)
+      if (any([(size(file%shape_of(trim(phase(1, k)))) > 0, k = 1, s%nc)])) then
+        call xdmf%moving_points(file, 'contacts', s%time(:s%n), contacts, .true., ['open', 'gap '], phases)
+      else
+        call xdmf%moving_points(file, 'contacts', s%time(:s%n), contacts, .true.)
+      end if
+    end if
+    call xdmf%point_set(file, 'impacts', g//'/impacts/position', g//'/impacts')
     if (present(shapes)) then
       do j = 1, size(shapes)
         ! (gfortran's findloc misses a shorter text in a character array)

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# --summary-json FILE: for every input in inputs/, the default (a ride) and a
-# run that failed part way the JSON loads, has the keys of the printed summary
-# with a unit for every number, and its numbers equal the HDF5 result's
-# (tests/cli/check_summary_json.py); a number that echoes an input variable
-# carries the unit declared for it (slidesim --input-reference); a JSON path that cannot be written is
+# --summary-json FILE: for every input in inputs/, the default (a ride), a run
+# that failed part way and a bouncing ball (impacts) the JSON loads, has the
+# keys of the printed summary with a unit for every number, and its numbers
+# equal the HDF5 result's (tests/cli/check_summary_json.py); a number that
+# echoes an input variable carries the unit declared for it (slidesim --input-reference); a JSON path that cannot be written is
 # exit status 3. The runs come from the fixture cli_every_input
 # (tests/cli/support/every_input.sh).
 set -u
@@ -15,7 +15,7 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 . "$root/tests/cli/support/every_input_results.sh"   # sets $results
 triples=()
-for name in $(cat "$results/names") stopped; do
+for name in $(cat "$results/names") stopped bouncing; do
   if [ -f "$results/$name.json" ]; then triples+=("$results/$name.json" "$results/$name.h5" "$results/$name.out")
   else echo "FAIL $name: no summary JSON"; failures=$((failures + 1)); fi
 done

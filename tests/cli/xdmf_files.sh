@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Every input in inputs/ (and the default, and a run that failed part way)
+# Every input in inputs/ (and the default, a run that failed part way and a
+# bouncing ball: a flight with impacts)
 # writes an XDMF file next to its result, whose structure holds (every value
 # inline, every DataItem as many numbers as it states, grids and attributes
 # agree, a surface grid equals the result's), and which ParaView opens with the
@@ -17,7 +18,7 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 . "$root/tests/cli/support/every_input_results.sh"   # sets $results
 files=()
-for name in $(cat "$results/names") stopped; do
+for name in $(cat "$results/names") stopped bouncing; do
   if [ -f "$results/$name.xmf" ]; then files+=("$results/$name.xmf"); else echo "FAIL $name: no XDMF file $name.xmf"; failures=$((failures + 1)); fi
 done
 command -v pvpython >/dev/null || { echo "FAIL pvpython not found (install paraview python3-paraview)"; exit 1; }

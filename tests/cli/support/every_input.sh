@@ -12,7 +12,10 @@
 # (--summary-json), NAME.out, NAME.err, NAME.rc (exit status), and the list
 # of NAMEs in FOLDER/names. Also "stopped": a run that fails part way (the
 # mass leaves the ellipsoid over its pole, exit status 2), whose files must
-# keep the same conventions. Exit status 1 if any run that should work did not.
+# keep the same conventions. And "bouncing": a ball dropped on a floor that
+# bounces six times and comes to rest (a flight with impacts: the XDMF file's
+# phases and impacts, /contact/impacts). Exit status 1 if any run that should
+# work did not.
 set -u
 slidesim=$1
 folder=$2
@@ -58,5 +61,17 @@ printf "&run output = 'stopped.h5' /\n&solver duration = 5 /\n&surface kind = 'e
 (cd "$folder" && "$slidesim" -q -o "$folder/stopped.h5" --summary-json "$folder/stopped.json" stopped.nml >stopped.out 2>stopped.err)
 echo $? >"$folder/stopped.rc"
 [ "$(cat "$folder/stopped.rc")" = 2 ] || { echo "FAIL stopped run: exit status $(cat "$folder/stopped.rc"), expected 2"; failures=$((failures + 1)); }
+cat >"$folder/bouncing.nml" <<'NML'
+&run scenario = 'contact', output = 'bouncing.h5' /
+&solver duration = 2, output_step = 0.01, rtol = 1e-10, atol = 1e-10 /
+&shape name = 'floor', kind = 'plane' /
+&shape name = 'ball', kind = 'sphere', radius = 0.1 /
+&body name = 'ball', mass = 1, solid_of = 'ball', position = 0, 0, 1.1, velocity = 0.5, 0, 0 /
+&contact name = 'on_floor', shape_1 = 'floor', body_2 = 'ball', shape_2 = 'ball', start = 'open',
+  restitution = 0.5, close_speed = 0.1 /
+NML
+(cd "$folder" && "$slidesim" -q -o "$folder/bouncing.h5" --summary-json "$folder/bouncing.json" bouncing.nml >bouncing.out 2>bouncing.err)
+echo $? >"$folder/bouncing.rc"
+[ "$(cat "$folder/bouncing.rc")" = 0 ] || { echo "FAIL bouncing run: exit status $(cat "$folder/bouncing.rc"): $(cat "$folder/bouncing.err")"; failures=$((failures + 1)); }
 echo "$(wc -l <"$folder/names") inputs run into $folder, $failures failures"
 [ "$failures" = 0 ]
