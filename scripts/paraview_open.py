@@ -9,10 +9,14 @@ Opens RESULT.xmf (the XDMF file next to RESULT.h5) with ParaView's "Xdmf3
 Reader (T)" (the "(S)" reader it picks by itself reads the same, but as
 pieces of one block without their names), shows the slide half transparent, the water band coloured
 by its speed, the rider's bodies by their normal force and the paths by the
-speed, sets the animation to the file's time steps and goes to the first.
+speed; of a contact result with flights (docs/contact.md, "Outputs") the
+contact's path and moving point by `open` (1 in flight, 0 closed) and the
+impacts as large points by their approach speed (normal_speed_before). It
+sets the animation to the file's time steps and goes to the first.
 With --screenshot it renders the last time step into OUT.png (needs a
 display, or a ParaView built for off-screen rendering); with --no-render
-it only builds the pipeline and prints each grid's points (what CI runs).
+it only builds the pipeline and prints each grid's points and the array it
+is coloured by (what CI runs).
 """
 import os
 import sys
@@ -27,7 +31,17 @@ COLOURS = {
     'rider legs': ('normal_force', 'CELLS'),
     'rider trunk': ('normal_force', 'CELLS'),
     'streamline': ('speed', 'POINTS'),
+    'impacts': ('normal_speed_before', 'POINTS'),
 }
+
+
+def colour_of(name, block):
+    """(array, centring) to colour a grid by, or None."""
+    if name in COLOURS:
+        return COLOURS[name]
+    if 'open' in block.PointData.keys():   # a contact that can open: its flight phases
+        return ('open', 'POINTS')
+    return ('speed', 'POINTS') if name.endswith('path') else None
 
 
 def grids(reader):
@@ -54,14 +68,18 @@ def open_result(xmf, screenshot=None, render=True):
     for name, selector in grids(reader).items():
         block = ExtractBlock(registrationName=name, Input=reader, Selectors=[selector])
         shown[name] = block
+        block.UpdatePipeline(times[0])
+        colour = colour_of(name, block)
         if not render:
-            block.UpdatePipeline(times[0])
-            print(f"{name}: {block.GetDataInformation().GetNumberOfPoints()} points")
+            print(f"{name}: {block.GetDataInformation().GetNumberOfPoints()} points"
+                  f"{', coloured by ' + colour[0] if colour else ''}")
             continue
         display = Show(block, view)
         if 'surface' in name:
             display.Opacity = 0.35
-        colour = COLOURS.get(name) or (('speed', 'POINTS') if name.endswith('path') else None)
+        if name == 'impacts':   # the landing points, seen among the paths
+            display.PointSize = 12
+            display.RenderPointsAsSpheres = 1
         if colour:
             display.ColorArrayName = [colour[1], colour[0]]
             display.RescaleTransferFunctionToDataRange(True, False)

@@ -11,10 +11,13 @@
 #   EJECTED line, /rider attribute `ejected`, /evaluation/ejected_arc_length
 #   equal to the pelvis's last arc length; the wall's side agrees with the
 #   contact's recorded wall angle (+: left);
+#   its plot (slidesim.plot, scripts/plot_ride.py) marks the ejection: a
+#   line at that arc length, a cross where the contact left the slide;
 # - the limit `ejection` (max 0, unit '1') is exceeded, and exits 4 when asked;
 #   a unit that does not count is refused (exit 1, nothing written);
-# - the same rider slower stays in the flume (no ejection, limit ok).
+# - the same rider slower stays in the flume (no ejection, limit ok, no mark).
 set -u
+root=$(pwd)
 slidesim=$1
 work=$(mktemp -d)
 trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
@@ -131,6 +134,45 @@ print('ok', who, side, at)
 EOF
 check '[ $? = 0 ]' "ejected rider, the file: $(cat "$work/ride.py.out")"
 
+# the plot's ejection marks (none for a ride that was not ejected)
+plot_marks() {   # result file: prints the marks' x (arc length) and points
+  DISPLAY= "$py" - "$root/python" "$work/$1" <<'EOF'
+import sys
+sys.path.insert(0, sys.argv[1])
+import matplotlib
+matplotlib.use('Agg')
+from slidesim.plot import figure
+fig = figure(sys.argv[2])
+lines = [a for ax in fig.axes for a in ax.lines if a.get_gid() == 'ejection']
+for a in lines:
+    data = a.get_data_3d() if hasattr(a, 'get_data_3d') else a.get_data()
+    print(a.get_linestyle(), *(f'{float(v[0]):.9f}' for v in data), sep='|')
+EOF
+}
+plot_marks ride.h5 >"$work/ride.marks" 2>&1
+"$py" - "$work/ride.h5" "$work/ride.marks" >"$work/marks.py.out" 2>&1 <<'EOF'
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1], 'r')
+who = f['rider'].attrs['ejected']
+who = who.decode() if isinstance(who, bytes) else who
+at = f['evaluation/ejected_arc_length'][()]
+marks = [line.strip().split('|') for line in open(sys.argv[2])]
+lines = [float(m[1]) for m in marks if m[0] == '-.']
+crosses = [[float(v) for v in m[1:]] for m in marks if m[0] == 'None']
+# speed, felt accelerations, normal forces: the vertical line at `at`
+assert len(lines) == 3 and np.allclose(lines, at, rtol=1e-9), (lines, at)
+# the unrolled slide (arc length, wall angle in degrees) and 3-D: the
+# contact's last record
+last_s = f[f'rider/{who}/arc_length'][-1]
+last_p = f[f'rider/{who}/position'][-1]
+assert len(crosses) == 2, marks
+assert abs(crosses[0][0] - last_s) < 1e-8 and abs(crosses[0][1] - np.degrees(f[f'rider/{who}/wall_angle'][-1])) < 1e-6, crosses
+assert np.allclose(crosses[1], last_p, atol=1e-8), (crosses[1], last_p)
+print('ok', who, at, len(marks), 'marks')
+EOF
+marks_rc=$?   # (not `$?` inside check: its message's substitutions reset it)
+check '[ $marks_rc = 0 ]' "ejected rider, the plot's marks: $(cat "$work/marks.py.out") $(head -c 600 "$work/ride.marks")"
+
 run ride_gate ride.nml --fail-on-limit
 check '[ $got = 4 ]' "ejected rider, --fail-on-limit: exit status $got, expected 4 ($(cat "$work/ride_gate.err"))"
 check 'grep -q "ejection" "$work/ride_gate.err"' "ejected rider, --fail-on-limit: the message names ejection: $(cat "$work/ride_gate.err")"
@@ -140,6 +182,9 @@ run slow ride.nml --set rider%speed0=2.0
 check '[ $got = 0 ]' "slower rider: exit status $got ($(cat "$work/slow.err"))"
 check 'grep -q "^  ride ended  *end of the slide" "$work/slow.out"' "slower rider: $(grep 'ride ended' "$work/slow.out")"
 check '! grep -q EJECTED "$work/slow.out"' "slower rider: an EJECTED line"
+plot_marks slow.h5 >"$work/slow.marks" 2>&1
+marks_rc=$?
+check '[ $marks_rc = 0 ] && [ ! -s "$work/slow.marks" ]' "slower rider: the plot marks an ejection or failed: $(head -c 600 "$work/slow.marks")"
 check 'grep -q "limit ejection <= 0: ok (closest 0 at" "$work/slow.out"' "slower rider: the ejection limit: $(grep 'ejection' "$work/slow.out")"
 
 # 4. a unit that does not count

@@ -3,6 +3,12 @@ the contact points in 3-D, the bodies' angular velocities (a spin's angle
 grows without bound, its rate tells more), the contacts' normal forces and sliding speeds, and the energy. (For the spinning
 egg against Moffatt-Shimomura see slidesim-plot --kind egg.)
 
+A run with flights (a contact that can open, `start = 'open'`) also shows
+the gap of each such contact; on every time plot its flight phases (the
+records where /contact/contacts/<c>/open is 1) are shaded, and its impacts
+(/contact/impacts) are marked where they happened (3-D), when (vertical
+lines) and how fast the body approached (the gap plot's labels).
+
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
 import numpy as np
@@ -11,6 +17,71 @@ from .common import equal_axes_3d
 from .multibody import body_paths, contact_forces, energy, suptitle
 
 SCENARIOS = ("contact",)
+FLIGHT_COLOUR = "tab:cyan"
+IMPACT_COLOUR = "tab:red"
+
+
+def open_intervals(t, is_open):
+    """The (start, end) times of the runs of records where a contact is open."""
+    runs, start = [], None
+    for i, flag in enumerate(is_open):
+        if flag and start is None:
+            start = i
+        elif not flag and start is not None:
+            runs.append((t[start], t[i - 1]))
+            start = None
+    if start is not None:
+        runs.append((t[start], t[-1]))
+    return runs
+
+
+def flights(r, g, t, contacts):
+    """{contact: its open intervals} for the contacts that can open."""
+    return {name: open_intervals(t, r[f"{g}/contacts/{name}/open"].values != 0)
+            for name in contacts if f"{g}/contacts/{name}/open" in r}
+
+
+def impacts(r, g):
+    """The impacts table as a dict of arrays (empty without impacts)."""
+    if g + "/impacts/time" not in r:
+        return {}
+    table = {key: r[f"{g}/impacts/{key}"].values for key in ("time", "normal_speed_before", "contact")}
+    if g + "/impacts/position" in r:
+        table["position"] = r[g + "/impacts/position"].values
+    return table
+
+
+def shade_flights(ax, phases, label=True):
+    """The flight phases as shaded spans (the legend names them once)."""
+    for k, (name, intervals) in enumerate(phases.items()):
+        for j, (start, end) in enumerate(intervals):
+            ax.axvspan(start, end, color=FLIGHT_COLOUR, alpha=0.12 + 0.08 * k, lw=0, gid="flight",
+                       label=f"in flight ({name} open)" if label and j == 0 else None)
+
+
+def mark_impact_times(ax, table):
+    for j, time in enumerate(table.get("time", [])):
+        ax.axvline(time, color=IMPACT_COLOUR, ls="--", lw=0.7, label="impact" if j == 0 else None)
+
+
+def gaps(ax, r, g, t, phases, table, contacts):
+    """The gap of each contact that can open over time, its impacts labelled
+    with the approach speed."""
+    for name in phases:
+        path = f"{g}/measurements/{name}.gap"
+        if path in r:
+            ax.plot(t, r[path].values, lw=1, label=f"{name} gap")
+    shade_flights(ax, phases)
+    for j, (time, speed) in enumerate(zip(table.get("time", []), table.get("normal_speed_before", []))):
+        ax.plot(time, 0.0, "v", color=IMPACT_COLOUR, ms=6, label="impact (approach speed)" if j == 0 else None)
+        # upright: impacts that follow closely (the last bounces) do not overlap
+        ax.annotate(f"{abs(speed):.3g} m/s", (time, 0.0), xytext=(0, 6), textcoords="offset points",
+                    ha="center", va="bottom", rotation=90, fontsize=7, color=IMPACT_COLOUR, gid="impact")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("gap [m]")
+    ax.set_title("gaps of the contacts that can open (0: touching), impacts")
+    ax.grid(True)
+    ax.legend(fontsize=8, loc="upper right")
 
 
 def draw(r, plt, args):
@@ -18,17 +89,23 @@ def draw(r, plt, args):
     g = "/contact"
     t = r[g + "/time"].values
     contacts = sorted(r.file[g + "/contacts"]) if g + "/contacts" in r else []
-    fig = plt.figure(figsize=(15, 9))
+    phases = flights(r, g, t, contacts)
+    table = impacts(r, g)
+    rows = 4 if phases else 3
+    fig = plt.figure(figsize=(15, 9 + 2.5 * (rows - 3)))
     ax = fig.add_subplot(1, 2, 1, projection="3d")
     drawn = [body_paths(ax, r, g)]
     for name in contacts:
         p = r[f"{g}/contacts/{name}/position"].values
         ax.plot(*p.T, "--", lw=0.8, label=f"contact {name}")
         drawn.append(p)
+    if "position" in table:
+        ax.scatter(*table["position"].T, marker="x", s=40, color=IMPACT_COLOUR, depthshade=False,
+                   label=f"impacts ({len(table['time'])})", gid="impact_position")
     ax.legend(loc="upper left", fontsize=8)
     equal_axes_3d(ax, np.vstack(drawn))
     ax.set_title("paths of the bodies (solid) and contact points (dashed)")
-    ax = fig.add_subplot(3, 2, 2)
+    ax = fig.add_subplot(rows, 2, 2)
     bodies = sorted(r.file[g + "/bodies"])
     for name in bodies:
         w = r[f"{g}/bodies/{name}/angular_velocity"].values
@@ -37,13 +114,27 @@ def draw(r, plt, args):
                 ax.plot(t, w[:, k], lw=1, label=f"{name} ω{axis}")
         else:
             ax.plot(t, np.linalg.norm(w, axis=1), lw=1, label=f"{name} |ω|")
+    shade_flights(ax, phases, label=False)
     ax.set_xlabel("time [s]")
     ax.set_ylabel("angular velocity [rad/s]")
     ax.set_title("angular velocities (world axes)" if len(bodies) == 1 else "angular speeds")
     ax.grid(True)
     ax.legend(fontsize=8)
-    contact_forces(fig.add_subplot(3, 2, 4), r, g, [(name, "-") for name in contacts], contacts)
-    energy(fig.add_subplot(3, 2, 6), r, g)
+    if phases:
+        gaps(fig.add_subplot(rows, 2, 4), r, g, t, phases, table, contacts)
+    ax = fig.add_subplot(rows, 2, 2 * rows - 2)
+    contact_forces(ax, r, g, [(name, "-") for name in contacts], contacts)
+    shade_flights(ax, phases)
+    mark_impact_times(ax, table)
+    if phases:
+        ax.legend(loc="upper left", fontsize=8)
+    ax = fig.add_subplot(rows, 2, 2 * rows)
+    energy(ax, r, g)
+    shade_flights(ax, phases, label=False)
+    mark_impact_times(ax, table)
+    if table:
+        ax.set_title("energy (each impact removes some: /contact/impacts/energy_lost)")
+        ax.legend(fontsize=8)
     suptitle(fig, r)
     fig.tight_layout()
     return fig

@@ -7,6 +7,10 @@
   with the user's acceleration limits;
 - the normal forces of the three contacts;
 - a 3-D view of the slide with the water band and the contacts' paths.
+A ride that ended ejected (a contact went over the top of a wall: /rider
+attribute `ejected`) marks where: a vertical line at
+/evaluation/ejected_arc_length on the plots over arc length, a cross where
+the contact left the slide on the unrolled slide and in 3-D.
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
@@ -45,6 +49,9 @@ def read(f):
         d[c] = {k: r[f"{c}/{k}"][:] for k in ("arc_length", "wall_angle", "normal_force", "in_water")}
         d[c]["position"] = rows(r[f"{c}/position"][:])
     w = f["/water"]
+    d["ejected"] = text(r.attrs["ejected"]) if "ejected" in r.attrs else None
+    if d["ejected"] and "/evaluation/ejected_arc_length" in f:
+        d["ejected_s"] = float(f["/evaluation/ejected_arc_length"][()])
     d["water_s"] = w["arc_length"][:]
     d["water_speed"] = w["speed"][:]
     t = f["/water/table"]
@@ -68,6 +75,22 @@ def read(f):
     return d
 
 
+def mark_ejection(ax, d, label=False):
+    """The arc length where the rider was ejected, as a vertical line."""
+    if d.get("ejected_s") is not None:
+        ax.axvline(d["ejected_s"], color="k", ls="-.", lw=1.0, gid="ejection",
+                   label=f"ejected ({d['ejected']} over the wall)" if label else None)
+
+
+def mark_ejected_contact(ax, d, x, y, z=None):
+    """A cross where the ejected contact left the slide (its last record)."""
+    if not d.get("ejected"):
+        return
+    points = (x[-1], y[-1]) if z is None else (x[-1], y[-1], z[-1])
+    ax.plot(*[[p] for p in points], "X", color=COLOURS[d["ejected"]], mec="k", ms=11, gid="ejection",
+            label=f"{d['ejected']} ejected here", zorder=5)
+
+
 def draw(result, plt, args):
     """The figure of a result; args: the command line's."""
     d = read(result.file)
@@ -84,6 +107,8 @@ def draw(result, plt, args):
     ax.plot(d["table_s"], (d["table_mid"] - math.pi / 2) * deg, color="tab:blue", lw=0.6, label="water middle")
     for c in CONTACTS:
         ax.plot(d[c]["arc_length"], d[c]["wall_angle"] * deg, color=COLOURS[c], lw=1.0, label=c)
+    if d["ejected"]:
+        mark_ejected_contact(ax, d, d[d["ejected"]]["arc_length"], d[d["ejected"]]["wall_angle"] * deg)
     ax.set_xlabel("arc length along the slide (m)")
     ax.set_ylabel("angle from the bottom (deg, + left)")
     ax.set_title("the unrolled slide: contacts and water")
@@ -97,6 +122,7 @@ def draw(result, plt, args):
         if lim["quantity"] in ("speed", "exit_speed") and "maximum" in lim:
             ax.axhline(lim["maximum"], color="tab:red", ls="--", lw=0.8,
                        label=f"{lim['quantity']} limit ({lim['verdict']})")
+    mark_ejection(ax, d, label=True)
     ax.set_xlabel("arc length (m)")
     ax.set_ylabel("speed (m/s)")
     ax.set_title("speed")
@@ -112,6 +138,7 @@ def draw(result, plt, args):
                     if b in lim:
                         ax.axhline(lim[b], color=ax.lines[-1].get_color(), ls="--", lw=0.8,
                                    label=f"{name} {b} ({lim['verdict']})")
+    mark_ejection(ax, d)
     ax.set_xlabel("arc length (m)")
     ax.set_ylabel("felt acceleration (g)")
     ax.set_title("felt accelerations at the pelvis (a - g)/|g|")
@@ -125,6 +152,7 @@ def draw(result, plt, args):
         if lim["quantity"] == "normal_force" and "minimum" in lim:
             ax.axhline(lim["minimum"], color="tab:red", ls="--", lw=0.8, label=f"minimum ({lim['verdict']})")
     ax.axhline(0, color="k", lw=0.5)
+    mark_ejection(ax, d, label=True)
     ax.set_xlabel("arc length (m)")
     ax.set_ylabel("normal force (N)")
     ax.set_title("normal forces (0: lift-off)")
@@ -140,6 +168,9 @@ def draw(result, plt, args):
     for c in CONTACTS:
         p = d[c]["position"]
         ax.plot(p[:, 0], p[:, 1], p[:, 2], color=COLOURS[c], lw=1.0, label=c)
+    if d["ejected"]:
+        p = d[d["ejected"]]["position"]
+        mark_ejected_contact(ax, d, p[:, 0], p[:, 1], p[:, 2])
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
     ax.set_zlabel("z (m)")
