@@ -385,7 +385,7 @@ contains
   logical function steps_for(self, time) result(ok)
     type(xdmf_t), intent(inout) :: self
     real(wp), intent(in) :: time(:)
-    integer :: n, stride, s
+    integer :: n, stride, s, kept
     n = size(time)
     ok = n >= 1 .and. (self%n_series == 0 .or. self%n_series == n)
     if (.not. ok .or. self%n_series == n) return
@@ -393,6 +393,15 @@ contains
     stride = (n + max_steps - 1)/max_steps
     self%step_row = [(s, s = 1, n, stride)]
     if (self%step_row(size(self%step_row)) /= n) self%step_row = [self%step_row, n]
+    ! records that share a time (a switch: the state before it and after,
+    ! e.g. a contact's lift-off) make one step, the later record's: the
+    ! readers want increasing times
+    kept = 1
+    do s = 2, size(self%step_row)
+      if (time(self%step_row(s)) > time(self%step_row(kept))) kept = kept + 1
+      self%step_row(kept) = self%step_row(s)
+    end do
+    self%step_row = self%step_row(:kept)
     self%step_time = time(self%step_row)
     allocate (self%steps(size(self%step_row)))
   end function steps_for

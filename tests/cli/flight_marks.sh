@@ -145,6 +145,15 @@ else
   fail "pvpython not found (install paraview python3-paraview)"
 fi
 
+# 1.5 s: few enough records (158) that every one is a time step, the two
+# at the closing (before and after the switch) too: they make one step (the
+# readers want increasing times; the old file repeated the time)
+sed -e "s|output = 'bounce.h5'|output = 'short.h5'|" -e 's|duration = 2,|duration = 1.5,|' "$work/bounce.nml" >"$work/short.nml"
+run_case short 0
+"$python" "$root/tests/cli/check_xdmf.py" "$work/short.xmf" >"$work/short_structure.out" 2>&1 ||
+  fail "short.xmf structure: $(grep FAIL "$work/short_structure.out" | head -5)"
+grep -c '<Time Value=' "$work/short.xmf" | grep -qx 157 || fail "short.xmf: $(grep -c '<Time Value=' "$work/short.xmf") steps, not 157 (158 records, two at the closing)"
+
 # the plot: a PNG, and in its figure the phases and the impacts
 (cd "$work" && "$python" "$root/scripts/plot_contact.py" bounce.h5 -o bounce.png) >"$work/plot.out" 2>&1 ||
   fail "plot_contact.py: $(cat "$work/plot.out")"
