@@ -65,6 +65,7 @@ module design_geometry_optimization
   public :: table_4_12_design, build_design_slide, evaluate_design, optimize_slide, design_points
   public :: CONSTRAINT_PENALTY, CONSTRAINT_EXACT, CONSTRAINT_NONE, start_record_t, start_points
   public :: OUTCOME_OPTIMUM, OUTCOME_CONSTRAINT, OUTCOME_NOT_MINIMUM, OUTCOME_FAILED, outcome_names
+  public :: constraint_violations
 
   integer, parameter :: CONSTRAINT_NONE = 0, CONSTRAINT_PENALTY = 1, CONSTRAINT_EXACT = 2
   !> How an optimisation (or one of its starts) ended: a minimum that meets

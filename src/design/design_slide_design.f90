@@ -1,23 +1,41 @@
 !> The design space of the geometry optimisation (design_geometry_optimization):
 !> a circular tube slide around a spline through points, some coordinates of
-!> which are the design variables with their bounds; table 4.12's design;
+!> which are the design variables with their bounds (table 4.12's design), or
+!> around a chain of standard elements (geometry_slide_elements), some
+!> parameters of which are the design variables (a curve's radius, turning
+!> angle, an element's slope or length: the parts a slide is built from);
 !> the slide of a design; the starts of a multi-start.
 module design_slide_design
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use geometry_tube, only: tube_surface_t
-  use geometry_slide_builder, only: slide_description_t, section_part_description_t, build_slide
+  use geometry_slide_builder, only: slide_description_t, section_part_description_t, build_slide, &
+    slide_elements_description_t
+  use geometry_slide_elements, only: slide_element_t
   use numerics_random, only: random_stream_t, new_random_stream, next_uniform
   implicit none (type, external)
   private
   public :: slide_design_t, table_4_12_design, design_points, start_x, build_design_slide, start_points
+  public :: design_elements, parameter_value, PARAMETER_LENGTH, PARAMETER_SLOPE, PARAMETER_RADIUS, &
+    PARAMETER_ANGLE, parameter_names, parameter_units
 
-  !> A tube slide around a spline through points, and which coordinates move.
+  !> The element parameters a design variable can be (slide_element_t's
+  !> length, slope_deg, radius, angle_deg), their names and units.
+  integer, parameter :: PARAMETER_LENGTH = 1, PARAMETER_SLOPE = 2, PARAMETER_RADIUS = 3, PARAMETER_ANGLE = 4
+  character(len=*), parameter :: parameter_names(4) = [character(len=6) :: 'length', 'slope', 'radius', 'angle']
+  character(len=*), parameter :: parameter_units(4) = [character(len=3) :: 'm', 'deg', 'm', 'deg']
+
+  !> A tube slide around a spline through points, and which coordinates
+  !> move; or around a chain of elements, and which parameters move.
   type :: slide_design_t
     real(wp), allocatable :: points(:, :)     !< m, 3 x n: the start design
     integer, allocatable :: point(:)          !< the point of each design variable (1-based)
     integer, allocatable :: coordinate(:)     !< its coordinate (1 x, 2 y, 3 z)
-    real(wp), allocatable :: lower(:), upper(:)   !< m, bounds of the design variables
+    logical :: from_elements = .false.        !< the design is `chain`, not `points`
+    type(slide_elements_description_t) :: chain   !< the start design (from_elements)
+    integer, allocatable :: element(:)        !< the element of each design variable (1-based; from_elements)
+    integer, allocatable :: parameter(:)      !< its parameter (PARAMETER_*)
+    real(wp), allocatable :: lower(:), upper(:)   !< bounds of the design variables (m; from_elements: m or deg)
     real(wp) :: radius = 0.7_wp               !< m, tube radius
     real(wp) :: horizon(3) = [0.0_wp, 0.0_wp, 1.0_wp]
     integer :: degree = 5                     !< of the interpolating spline (see docs/design.md)
@@ -41,25 +59,64 @@ contains
     d%upper = [6.0_wp, 6.0_wp, 7.0_wp, 10.0_wp, 10.0_wp]
   end function table_4_12_design
 
-  !> The points with the design variables set to x.
+  !> The points with the design variables set to x (none for an element design).
   pure function design_points(design, x) result(points)
     type(slide_design_t), intent(in) :: design
     real(wp), intent(in) :: x(:)
-    real(wp) :: points(3, size(design%points, 2))
+    real(wp), allocatable :: points(:, :)
     integer :: k
+    if (design%from_elements) then
+      allocate (points(3, 0))
+      return
+    end if
     points = design%points
     do k = 1, size(x)
       points(design%coordinate(k), design%point(k)) = x(k)
     end do
   end function design_points
 
+  !> The elements of an element design with the design variables set to x.
+  pure function design_elements(design, x) result(elements)
+    type(slide_design_t), intent(in) :: design
+    real(wp), intent(in) :: x(:)
+    type(slide_element_t), allocatable :: elements(:)
+    integer :: k
+    elements = design%chain%elements
+    do k = 1, size(x)
+      associate (e => elements(design%element(k)))
+        select case (design%parameter(k))
+        case (PARAMETER_LENGTH); e%length = x(k)
+        case (PARAMETER_SLOPE); e%slope_deg = x(k)
+        case (PARAMETER_RADIUS); e%radius = x(k)
+        case (PARAMETER_ANGLE); e%angle_deg = x(k)
+        end select
+      end associate
+    end do
+  end function design_elements
+
+  !> The value of parameter `kind` (PARAMETER_*) of element e.
+  elemental real(wp) function parameter_value(e, kind) result(value)
+    type(slide_element_t), intent(in) :: e
+    integer, intent(in) :: kind
+    select case (kind)
+    case (PARAMETER_LENGTH); value = e%length
+    case (PARAMETER_SLOPE); value = e%slope_deg
+    case (PARAMETER_RADIUS); value = e%radius
+    case default; value = e%angle_deg
+    end select
+  end function parameter_value
+
   !> The x of the start design.
   pure function start_x(design) result(x)
     type(slide_design_t), intent(in) :: design
-    real(wp) :: x(size(design%point))
+    real(wp) :: x(size(design%lower))
     integer :: k
     do k = 1, size(x)
-      x(k) = design%points(design%coordinate(k), design%point(k))
+      if (design%from_elements) then
+        x(k) = parameter_value(design%chain%elements(design%element(k)), design%parameter(k))
+      else
+        x(k) = design%points(design%coordinate(k), design%point(k))
+      end if
     end do
   end function start_x
 
@@ -70,12 +127,18 @@ contains
     type(tube_surface_t), intent(out) :: slide
     type(status_t), intent(out) :: status
     type(slide_description_t) :: d
-    d%kind = 'tube'
-    d%centerline%kind = 'points'
-    d%centerline%points = design_points(design, x)
-    d%centerline%degree = design%degree
-    d%centerline%smoothing = design%smoothing
-    d%centerline%horizon = design%horizon
+    if (design%from_elements) then
+      d%kind = 'slide'
+      d%elements = design%chain
+      d%elements%elements = design_elements(design, x)
+    else
+      d%kind = 'tube'
+      d%centerline%kind = 'points'
+      d%centerline%points = design_points(design, x)
+      d%centerline%degree = design%degree
+      d%centerline%smoothing = design%smoothing
+      d%centerline%horizon = design%horizon
+    end if
     d%section%parts = [section_part_description_t(kind='circle', radius=design%radius)]
     d%check_samples = design%check_samples
     status = status_t()
@@ -100,7 +163,7 @@ contains
     type(status_t) :: built
     real(wp) :: u
     integer :: k, j, draw
-    allocate (points(size(design%point), n))
+    allocate (points(size(design%lower), n))
     points(:, 1) = start_x(design)
     stream = new_random_stream(seed)
     do k = 2, n

@@ -1,4 +1,6 @@
-!> The declarations of the design groups (io_declaration): &optimize, and
+!> The declarations of the design groups (io_declaration): &optimize,
+!> &design_elements and &catalogue (an optimisation over element parameters
+!> and its standard parts), and
 !> &identify
 !> is read by two scenarios with different variables, declared as the
 !> tables identify_rider and identify_water (the variables both have are
@@ -152,5 +154,40 @@ module io_declarations_design
     declaration_t(groups='optimize', name='starts', kind=VALUE_INTEGER, unit='1', default='1', low=1.0_wp, &
       high=1000.0_wp, meaning='multi-start: the given design and starts - 1 drawn ones'), &
     declaration_t(groups='optimize', name='seed', kind=VALUE_INTEGER, unit='1', default='1', low=1.0_wp, &
-      high=2147483647.0_wp, meaning='the stream the drawn starts come from; only with `starts` > 1')]
+      high=2147483647.0_wp, meaning='the stream the drawn starts come from; only with `starts` > 1'), &
+    ! ---- &design_elements: element parameters as the design variables (with &slide_elements)
+    declaration_t(groups='design_elements', name='n_design', kind=VALUE_INTEGER, unit='1', default='none', &
+      low=1.0_wp, high=50.0_wp, meaning='number of design variables (with all four of their lists)'), &
+    declaration_t(groups='design_elements', name='element', shape='per design variable', &
+      unit='1', default='none', low=1.0_wp, high=40.0_wp, &
+      meaning='the element of &slide_elements of each design variable (1 = the first)'), &
+    declaration_t(groups='design_elements', name='parameter', kind=VALUE_WORDS, shape='per design variable', &
+      default='none', choices='length slope radius angle', meaning='its parameter: length (m; straight, '// &
+      'runout), slope (deg; straight, curve, runout), radius (m; curve, helix), angle (deg; curve)'), &
+    declaration_t(groups='design_elements', name='lower', shape='per design variable', unit='m or deg', &
+      default='none', low=-720.0_wp, high=1e4_wp, meaning='lower bound of each, in its parameter''s unit, held '// &
+      'exactly, at most its start value (&slide_elements)'), &
+    declaration_t(groups='design_elements', name='upper', shape='per design variable', unit='m or deg', &
+      default='none', low=-720.0_wp, high=1e4_wp, meaning='upper bound of each, above `lower`, at least its '// &
+      'start value'), &
+    ! ---- &catalogue: the standard parts (docs/design.md, "Designs from standard parts")
+    declaration_t(groups='catalogue', name='radii', shape='list of at most 200', unit='m', default='none', &
+      low=0.0_wp, high=1e4_wp, open_low=.true., meaning='the radii made (increasing); or radius_step'), &
+    declaration_t(groups='catalogue', name='radius_step', unit='m', default='none', low=0.0_wp, high=1e4_wp, &
+      open_low=.true., meaning='radii made: the whole multiples of it'), &
+    declaration_t(groups='catalogue', name='angles_deg', shape='list of at most 200', unit='deg', default='none', &
+      low=0.0_wp, high=720.0_wp, open_low=.true., meaning='the turning angles made (increasing); or angle_step_deg'), &
+    declaration_t(groups='catalogue', name='angle_step_deg', unit='deg', default='none', low=0.0_wp, &
+      high=720.0_wp, open_low=.true., meaning='turning angles made: the whole multiples of it'), &
+    declaration_t(groups='catalogue', name='slopes_deg', shape='list of at most 200', unit='deg', default='none', &
+      low=-60.0_wp, high=60.0_wp, meaning='the slopes made (increasing); or slope_step_deg'), &
+    declaration_t(groups='catalogue', name='slope_step_deg', unit='deg', default='none', low=0.0_wp, &
+      high=60.0_wp, open_low=.true., meaning='slopes made: the whole multiples of it'), &
+    declaration_t(groups='catalogue', name='lengths', shape='list of at most 200', unit='m', default='none', &
+      low=0.0_wp, high=1e4_wp, open_low=.true., meaning='the lengths made (increasing); or length_step'), &
+    declaration_t(groups='catalogue', name='length_step', unit='m', default='none', low=0.0_wp, high=1e4_wp, &
+      open_low=.true., meaning='lengths made: the whole multiples of it'), &
+    declaration_t(groups='catalogue', name='max_designs', kind=VALUE_INTEGER, unit='1', default='64', &
+      low=1.0_wp, high=100000.0_wp, meaning='designs of the neighbourhood of the nearest catalogue design '// &
+      'ridden at most (3^n_design for all)')]
 end module io_declarations_design

@@ -20,13 +20,15 @@ module io_input_declarations
   !> The groups of the reference, in its order (&water_solver has the
   !> declarations of &solver, and is named in its rows).
   character(len=*), parameter :: reference_groups(*) = [character(len=16) :: 'run', 'solver', 'evaluation', &
-    'channel', 'water', 'inlet', 'rider', 'sweep', 'identify_rider', 'identify_water', 'optimize', 'surface', 'shape', &
+    'channel', 'water', 'inlet', 'rider', 'sweep', 'identify_rider', 'identify_water', 'optimize', 'design_elements', 'catalogue', &
+    'surface', 'shape', &
     'geometry', 'centerline', 'slide_elements', 'cross_section', 'blended', 'bspline', 'grid', 'point_mass', &
     'pendulum', 'fourbar', 'sled', 'contact_model', 'body', 'contact']
   !> The heading of each (a group read differently by two scenarios names both).
   character(len=*), parameter :: reference_titles(size(reference_groups)) = [character(len=40) :: '&run', &
     '&solver', '&evaluation', '&channel', '&water', '&inlet', '&rider', '&sweep', '&identify (scenario identify_rider)', &
-    '&identify (scenario identify_water)', '&optimize', '&surface', '&shape', '&geometry', '&centerline', &
+    '&identify (scenario identify_water)', '&optimize', '&design_elements', '&catalogue', &
+    '&surface', '&shape', '&geometry', '&centerline', &
     '&slide_elements', '&cross_section', '&blended', '&bspline', '&grid', '&point_mass', &
     '&pendulum', '&fourbar', '&sled', '&contact_model', '&body', '&contact']
   !> A line under a group's heading, where the group needs one.
@@ -44,6 +46,10 @@ module io_input_declarations
     'The rider''s friction from measured wall angles and speeds (docs/design.md).', &
     'The water''s friction from measured flow middles and speeds (docs/design.md).', &
     'The geometry optimisation of a tube slide (thesis 4.7, docs/design.md).', &
+    'Element parameters of `&slide_elements` as the design variables of `&optimize` (docs/design.md, '// &
+    '"Designs from standard parts").', &
+    'The parts an element design may use: the optimum is snapped to them and ridden again (docs/design.md, '// &
+    '"Designs from standard parts").', &
     'Besides these, the parameters of the chosen kind (docs/inputs.md, "&surface"; declared with the kind).', &
     'A surface of the contact scenario: the variables of `&surface` and a name (docs/contact.md).', &
     'The geometry groups describe a tube, a slide, a blended or a B-spline surface: the geometry '// &

@@ -10,7 +10,7 @@ module io_optimization_config
   use design_cuboid_ride, only: ACCELERATION_KINEMATIC, ACCELERATION_FELT
   use design_geometry_optimization, only: optimization_setup_t, table_4_12_design, CONSTRAINT_PENALTY, &
     CONSTRAINT_EXACT, CONSTRAINT_NONE
-  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, format_real
+  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, format_real, group_present
   implicit none (type, external)
   private
   public :: read_optimization_config, max_points, max_design, max_rides
@@ -138,7 +138,9 @@ contains
     ! the rides
     call r%get_list('start_angles_deg', angles, max_rides, status)
     if (status%ok() .and. r%has('start_angles_deg')) setup%start_angles = angles*pi/180
-    if (status%ok() .and. 2*size(setup%start_angles) < n_design) &
+    ! (an element design's variables are counted by io_element_design_config)
+    if (status%ok() .and. 2*size(setup%start_angles) < n_design .and. &
+        .not. group_present(input, 'design_elements')) &
       call r%invalid('start_angles_deg', format_integer(size(setup%start_angles))//' rides', 'give at least '// &
                      format_integer((n_design + 1)/2)//' rides for '//format_integer(n_design)// &
                      ' design variables (each ride gives two residuals: its acceleration and its lever arm)', status)

@@ -2,7 +2,10 @@
 !> 4.7): the design points, five (or any number of) rides of a rigid body on
 !> a Darboux frame, the cost (4.49) and the tipping lever-arm limit
 !> (docs/design.md). Writes /optimize with the start and optimised
-!> designs, every ride's figures and samples before and after.
+!> designs, every ride's figures and samples before and after. The design
+!> is &optimize's points, or element parameters of &slide_elements
+!> (&design_elements), snapped to the standard parts of &catalogue
+!> (design_catalogue; scenarios_optimize_parts writes and reports them).
 module scenarios_optimize
   use base_kinds, only: wp
   use base_constants, only: pi
@@ -14,6 +17,10 @@ module scenarios_optimize
     evaluate_design, optimize_slide, design_points, build_design_slide, OUTCOME_OPTIMUM, OUTCOME_FAILED, &
     outcome_names
   use geometry_tube, only: tube_surface_t
+  use design_slide_design, only: start_x
+  use design_catalogue, only: catalogue_t, catalogue_result_t, choose_from_catalogue
+  use io_element_design_config, only: read_element_design, refuse_point_design
+  use scenarios_optimize_parts, only: write_element_variables, write_catalogue, report_element_design
   use geometry_curve, only: curve_point_t
   use io_input, only: input_text_t, check_known_groups, group_present, where_given
   use io_solver_config, only: solver_config_t, read_solver_config
@@ -30,7 +37,8 @@ module scenarios_optimize
   private
   public :: run_optimize, optimize_groups
 
-  character(len=*), parameter :: optimize_groups(3) = [character(len=8) :: 'run', 'solver', 'optimize']
+  character(len=*), parameter :: optimize_groups(6) = [character(len=15) :: 'run', 'solver', 'optimize', &
+    'slide_elements', 'design_elements', 'catalogue']
   integer, parameter :: grid_n_u = 300, grid_n_v = 48   ! the written surface grid
 
 contains
@@ -45,13 +53,17 @@ contains
     type(solver_config_t) :: solver
     type(result_file_t) :: file
     type(status_t) :: run_status, write_status
+    type(catalogue_t) :: catalogue
+    type(catalogue_result_t) :: chosen
     real(wp) :: cpu0, cpu1
-    logical :: complete, ended
+    logical :: complete, ended, with_catalogue
     character(len=:), allocatable :: message
 
     call check_known_groups(input, optimize_groups, status)
     if (status%ok()) call read_solver_config(input, solver, status)
+    if (status%ok()) call refuse_point_design(input, status)
     if (status%ok()) call read_optimization_config(input, setup, status)
+    if (status%ok()) call read_element_design(input, setup, catalogue, with_catalogue, status)
     if (.not. status%ok()) return
     ! &solver: the rides' integration, sampling of the maxima and time bound
     if (group_present(input, 'solver')) then
@@ -60,17 +72,19 @@ contains
       if (solver%duration_given) setup%ride%t_end = solver%duration
     end if
     ! the start design must be buildable and rideable: bad input otherwise
-    call evaluate_design(setup, start_x(setup), before, status, keep_series=.true.)
+    call evaluate_design(setup, start_x(setup%design), before, status, keep_series=.true.)
     if (.not. status%ok()) then
       call prefix_status(status, where_given(input, 'optimize', '')//': &optimize: the start design')
-      status%message = status%message//'; change points, radius or start_angles_deg (or &solver duration)'
+      status%message = status%message//'; change '// &
+                       trim(merge('points  ', 'elements', .not. setup%design%from_elements))// &
+                       ', radius or start_angles_deg (or &solver duration)'
       status%code = STATUS_INVALID_INPUT
       return
     end if
     if (run%check_only) return
     call file%create(trim(run%output), status)
     if (.not. status%ok()) return
-    call log_info('optimize: '//format_integer(size(setup%design%point))//' design variables, '// &
+    call log_info('optimize: '//format_integer(size(setup%design%lower))//' design variables, '// &
                   format_integer(size(setup%start_angles))//' rides per design')
     setup%log => log_info
     call cpu_time(cpu0)
@@ -78,28 +92,50 @@ contains
     call cpu_time(cpu1)
     if (run_status%ok()) call evaluate_design(setup, result%x, after, run_status, keep_series=.true.)
     ended = run_status%ok()   ! an end point, written and reported whatever its outcome
+    ! the end snapped to the catalogue and ridden again
+    if (ended .and. with_catalogue) then
+      call log_info('optimize: the end snapped to the catalogue, its neighbourhood ridden')
+      call choose_from_catalogue(setup, catalogue, result%x, chosen, run_status)
+      ended = run_status%ok()
+    end if
     ! an end that is not a minimum or violates a constraint is no optimum: exit 2, file incomplete
     if (ended .and. result%outcome /= OUTCOME_OPTIMUM) &
       call set_status(run_status, STATUS_NOT_CONVERGED, 'optimize: '//result%verdict)
+    if (ended .and. with_catalogue .and. run_status%ok()) then
+      if (.not. chosen%feasible) call set_status(run_status, STATUS_NOT_CONVERGED, 'optimize: catalogue: '// &
+                                                 chosen%verdict)
+    end if
     call write_results(file, input, run, setup, result, before, after, ended, cpu1 - cpu0, write_status)
+    if (setup%design%from_elements .and. ended .and. with_catalogue) then
+      call write_element_variables(file, setup%design, write_status, result%x, catalogue, chosen)
+      if (chosen%ridden) then
+        call write_evaluation(file, '/optimize/chosen/', chosen%chosen, write_status)
+        call scale_evaluation(file, '/optimize/chosen/', size(chosen%chosen%rides), write_status)
+      end if
+      call write_centerline(file, '/optimize/centerline_catalogue', setup, chosen%x, write_status)
+      call write_catalogue(file, chosen, write_status)
+    else if (setup%design%from_elements .and. ended) then
+      call write_element_variables(file, setup%design, write_status, result%x)
+    else if (setup%design%from_elements) then
+      call write_element_variables(file, setup%design, write_status)
+    end if
+    if (setup%design%from_elements) then   ! the scales of what was written here
+      call file%attach_scale('/optimize/centerline_fraction', '/optimize', write_status)
+      call file%attach_components('/optimize', write_status)
+    end if
     complete = run_status%ok() .and. write_status%ok()
     message = run_message('ok', run_status, write_status)
-    if (write_status%ok()) call write_xdmf(file, size(setup%start_angles), ended, write_status)
+    if (write_status%ok()) call write_xdmf(file, size(setup%start_angles), ended, &
+                                           ended .and. with_catalogue .and. chosen%ridden, write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()
-    if (ended) call report(setup, result, cpu1 - cpu0, file%final_path(), run, complete, message, write_status)
+    if (ended .and. with_catalogue) then
+      call report(setup, result, cpu1 - cpu0, file%final_path(), run, complete, message, write_status, chosen)
+    else if (ended) then
+      call report(setup, result, cpu1 - cpu0, file%final_path(), run, complete, message, write_status)
+    end if
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
   end subroutine run_optimize
-
-  function start_x(setup) result(x)
-    type(optimization_setup_t), intent(in) :: setup
-    real(wp), allocatable :: x(:)
-    integer :: k
-    allocate (x(size(setup%design%point)))
-    do k = 1, size(x)
-      x(k) = setup%design%points(setup%design%coordinate(k), setup%design%point(k))
-    end do
-  end function start_x
 
   subroutine write_results(file, input, run, setup, result, before, after, optimized, cpu, status)
     type(result_file_t), intent(inout) :: file
@@ -114,24 +150,30 @@ contains
     character(len=*), parameter :: g = '/optimize/'
     integer, parameter :: n_centerline = 400
     integer :: k
+    logical :: points
+    points = .not. setup%design%from_elements   ! else the variables are written by scenarios_optimize_parts
     call file%write_provenance('optimize', trim(run%title), input%name, input%text(), status)
-    call file%write_matrix(g//'points_start', setup%design%points, 'm', &
-                           'centerline points of the start design (x, y, z per column)', status)
-    call file%write_vector(g//'x_start', start_x(setup), 'm', 'design variables at the start', status)
-    call file%write_vector(g//'lower', setup%design%lower, 'm', 'lower bounds of the design variables', status)
-    call file%write_vector(g//'upper', setup%design%upper, 'm', 'upper bounds of the design variables', status)
-    call file%write_integers(g//'design_point', setup%design%point - 1, '1', &
-                             'the point of each design variable (0 = the first point)', status)
-    call file%write_integers(g//'design_coordinate', setup%design%coordinate, '1', &
-                             'the coordinate of each design variable (1 x, 2 y, 3 z)', status)
+    if (points) then
+      call file%write_matrix(g//'points_start', setup%design%points, 'm', &
+                             'centerline points of the start design (x, y, z per column)', status)
+      call file%write_vector(g//'x_start', start_x(setup%design), 'm', 'design variables at the start', status)
+      call file%write_vector(g//'lower', setup%design%lower, 'm', 'lower bounds of the design variables', status)
+      call file%write_vector(g//'upper', setup%design%upper, 'm', 'upper bounds of the design variables', status)
+      call file%write_integers(g//'design_point', setup%design%point - 1, '1', &
+                               'the point of each design variable (0 = the first point)', status)
+      call file%write_integers(g//'design_coordinate', setup%design%coordinate, '1', &
+                               'the coordinate of each design variable (1 x, 2 y, 3 z)', status)
+    end if
     call file%write_scalar(g//'lever_limit', setup%lever_limit, 'm', 'largest allowed tipping lever arm', status)
-    call write_centerline(file, g//'centerline_start', setup, start_x(setup), status)
+    call write_centerline(file, g//'centerline_start', setup, start_x(setup%design), status)
     call write_evaluation(file, g//'before/', before, status)
     if (optimized) then
       call write_centerline(file, g//'centerline', setup, result%x, status)
-      call file%write_matrix(g//'points', design_points(setup%design, result%x), 'm', &
-                             'centerline points of the optimised design', status)
-      call file%write_vector(g//'x', result%x, 'm', 'design variables at the optimum', status)
+      if (points) then
+        call file%write_matrix(g//'points', design_points(setup%design, result%x), 'm', &
+                               'centerline points of the optimised design', status)
+        call file%write_vector(g//'x', result%x, 'm', 'design variables at the optimum', status)
+      end if
       call file%write_scalar(g//'cost_start', result%cost_before, 'm^2/s^4', &
                              'the fit''s cost (4.49 with the constraint terms) at the start', status)
       call file%write_scalar(g//'cost', result%cost_after, 'm^2/s^4', 'the fit''s cost at the optimum', status)
@@ -142,53 +184,56 @@ contains
                             'augmented Lagrangian updates (constraint = exact), else 1', status)
       call file%write_scalar(g//'cpu_time', cpu, 's', 'process CPU time of the optimisation', status)
       call write_evaluation(file, g//'after/', after, status)
-      call write_outcome(file, result, status)
+      call write_outcome(file, result, points, status)
     end if
     ! the slide's surface (the optimum's, else the start's) for ParaView
     if (optimized) then
       call write_grid(file, setup, result%x, status)
     else
-      call write_grid(file, setup, start_x(setup), status)
+      call write_grid(file, setup, start_x(setup%design), status)
     end if
     ! dimension scales: each ride's time, the rides' start angles, the design
     ! variables, the points and the centerline samples
-    call scale_rides(g//'before/', size(before%rides))
-    if (optimized) call scale_rides(g//'after/', size(after%rides))
-    call file%write_vector(g//'point_number', [(real(k, wp), k=0, size(setup%design%points, 2) - 1)], '1', &
-                           'number of each centerline point (0 = the first)', status)
+    call scale_evaluation(file, g//'before/', size(before%rides), status)
+    if (optimized) call scale_evaluation(file, g//'after/', size(after%rides), status)
+    if (points) call file%write_vector(g//'point_number', [(real(k, wp), k=0, size(setup%design%points, 2) - 1)], &
+                                       '1', 'number of each centerline point (0 = the first)', status)
     call file%write_vector(g//'centerline_fraction', [(real(k, wp)/(n_centerline - 1), k=0, n_centerline - 1)], &
                            '1', 'fraction of the centerline''s parameter range of each centerline sample', status)
-    call file%make_scale(g//'x_start', status)
+    if (points) call file%make_scale(g//'x_start', status)
     if (optimized) call file%make_scale(g//'starts/start', status)
-    call file%make_scale(g//'point_number', status)
+    if (points) call file%make_scale(g//'point_number', status)
     call file%make_scale(g//'centerline_fraction', status)
     if (optimized) call file%attach_scale(g//'starts/start', g//'starts/', status)   ! before x_start's
-    call file%attach_scale(g//'x_start', g, status)
-    if (optimized) call file%attach_scale(g//'x_start', g//'starts/', status, axis=1)
-    call file%attach_scale(g//'point_number', g, status)
+    if (points) call file%attach_scale(g//'x_start', g, status)
+    if (optimized .and. points) call file%attach_scale(g//'x_start', g//'starts/', status, axis=1)
+    if (points) call file%attach_scale(g//'point_number', g, status)
     call file%attach_scale(g//'centerline_fraction', g, status)
-    call file%attach_components('/optimize', status)   ! the (x, y, z) axes: /optimize/xyz
-
-  contains
-
-    subroutine scale_rides(group, n)
-      character(len=*), intent(in) :: group
-      integer, intent(in) :: n
-      integer :: i
-      do i = 1, n
-        call file%make_scale(group//'ride_'//format_integer(i)//'/time', status)
-        call file%attach_scale(group//'ride_'//format_integer(i)//'/time', group//'ride_'//format_integer(i), status)
-      end do
-      call file%make_scale(group//'start_angle', status)
-      call file%attach_scale(group//'start_angle', group, status)
-    end subroutine scale_rides
+    ! the (x, y, z) axes (/optimize/xyz): an element design's after its catalogue's centerline
+    if (points) call file%attach_components('/optimize', status)
   end subroutine write_results
+
+  !> The scales of one evaluation's group: each ride's time, the start angles.
+  subroutine scale_evaluation(file, group, n, status)
+    type(result_file_t), intent(inout) :: file
+    character(len=*), intent(in) :: group
+    integer, intent(in) :: n
+    type(status_t), intent(inout) :: status
+    integer :: i
+    do i = 1, n
+      call file%make_scale(group//'ride_'//format_integer(i)//'/time', status)
+      call file%attach_scale(group//'ride_'//format_integer(i)//'/time', group//'ride_'//format_integer(i), status)
+    end do
+    call file%make_scale(group//'start_angle', status)
+    call file%attach_scale(group//'start_angle', group, status)
+  end subroutine scale_evaluation
 
   !> How the optimisation ended (attributes of /optimize) and every start
   !> (/optimize/starts).
-  subroutine write_outcome(file, result, status)
+  subroutine write_outcome(file, result, points, status)
     type(result_file_t), intent(inout) :: file
     type(optimization_result_t), intent(in) :: result
+    logical, intent(in) :: points   !< the design variables are coordinates (m), one unit for the matrices
     type(status_t), intent(inout) :: status
     character(len=*), parameter :: g = '/optimize', s = '/optimize/starts/'
     integer :: k, n
@@ -204,10 +249,12 @@ contains
     n = size(result%starts)
     call file%write_vector(s//'start', [(real(k, wp), k=1, n)], '1', &
                            'number of each start (1 = the given design); dimension scale', status)
-    call file%write_matrix(s//'start_design', reshape([(result%starts(k)%x_start, k=1, n)], [size(result%x), n]), &
-                           'm', 'design variables at each start (one column per start)', status)
-    call file%write_matrix(s//'end_design', reshape([(result%starts(k)%x, k=1, n)], [size(result%x), n]), 'm', &
-                           'design variables at each start''s end', status)
+    if (points) then
+      call file%write_matrix(s//'start_design', reshape([(result%starts(k)%x_start, k=1, n)], [size(result%x), n]), &
+                             'm', 'design variables at each start (one column per start)', status)
+      call file%write_matrix(s//'end_design', reshape([(result%starts(k)%x, k=1, n)], [size(result%x), n]), 'm', &
+                             'design variables at each start''s end', status)
+    end if
     call file%write_vector(s//'cost_start', result%starts%cost_start, 'm^2/s^4', 'the fit''s cost at each start', &
                            status)
     call file%write_vector(s//'cost', min(result%starts%cost, 1e30_wp), 'm^2/s^4', &
@@ -243,10 +290,10 @@ contains
   end subroutine write_grid
 
   !> The XDMF file: the slide and every ride's path, before and after.
-  subroutine write_xdmf(file, n, optimized, status)
+  subroutine write_xdmf(file, n, optimized, with_catalogue, status)
     type(result_file_t), intent(inout) :: file
     integer, intent(in) :: n
-    logical, intent(in) :: optimized
+    logical, intent(in) :: optimized, with_catalogue
     type(status_t), intent(inout) :: status
     type(xdmf_t) :: xdmf
     integer :: k
@@ -259,6 +306,10 @@ contains
       if (optimized) then
         r = '/optimize/after/ride_'//format_integer(k)
         call xdmf%polyline(file, 'optimum, ride '//format_integer(k), r//'/position', r)
+      end if
+      if (with_catalogue) then
+        r = '/optimize/chosen/ride_'//format_integer(k)
+        call xdmf%polyline(file, 'catalogue design, ride '//format_integer(k), r//'/position', r)
       end if
     end do
     call xdmf%attach(file, status)
@@ -332,7 +383,7 @@ contains
     end do
   end subroutine write_evaluation
 
-  subroutine report(setup, result, cpu, path, run, complete, message, status)
+  subroutine report(setup, result, cpu, path, run, complete, message, status, chosen)
     type(optimization_setup_t), intent(in) :: setup
     type(optimization_result_t), intent(in) :: result
     real(wp), intent(in) :: cpu
@@ -340,6 +391,7 @@ contains
     type(run_config_t), intent(in) :: run
     logical, intent(in) :: complete
     type(status_t), intent(inout) :: status
+    type(catalogue_result_t), intent(in), optional :: chosen   !< the design chosen from the catalogue
     type(summary_t) :: summary
     real(wp), allocatable :: table(:, :)
     integer :: k, n
@@ -363,21 +415,12 @@ contains
     call summary%add_count('evaluations', 'designs evaluated', result%evaluations, 'designs')
     call summary%add('cpu_time', 'CPU time', cpu, 's')
     if (size(result%starts) > 1) call add_starts()
-    allocate (table(5, size(result%x)))
-    do k = 1, size(result%x)
-      table(:, k) = [real(setup%design%point(k) - 1, wp), real(setup%design%coordinate(k), wp), &
-                     setup%design%points(setup%design%coordinate(k), setup%design%point(k)), result%x(k), &
-                     result%x(k) - setup%design%points(setup%design%coordinate(k), setup%design%point(k))]
-    end do
-    call summary%add_table('design', [character(len=10) :: 'point', 'coordinate', 'start', 'optimum', 'move'], &
-                           [character(len=2) :: '1', '1', 'm', 'm', 'm'], table)
-    call summary%add_line('  design variable      start (m)  optimum (m)   move (m)')
-    do k = 1, size(result%x)
-      call summary%add_line('    P'//format_integer(setup%design%point(k) - 1)//'.'// &
-        'xyz'(setup%design%coordinate(k):setup%design%coordinate(k))//repeat(' ', 12)// &
-        format_with(table(3, k), 'f12.4')//format_with(table(4, k), 'f12.4')//format_with(table(5, k), 'f12.4'))
-    end do
-    deallocate (table)
+    if (setup%design%from_elements) then
+      call summary%add('acceleration_cost', 'acceleration cost, '//end, result%after%acceleration_cost, 'm^2/s^4')
+      call report_element_design(summary, setup%design, result%x, chosen)
+    else
+      call add_points()
+    end if
     allocate (table(5, n))
     do k = 1, n
       table(:, k) = [setup%start_angles(k)*degrees, result%before%rides(k)%max_acceleration, &
@@ -396,6 +439,25 @@ contains
     call end_report(summary, run, path, complete, message, status)
 
   contains
+
+    !> The coordinates moved: their point, start, optimum and move.
+    subroutine add_points()
+      allocate (table(5, size(result%x)))
+      do k = 1, size(result%x)
+        table(:, k) = [real(setup%design%point(k) - 1, wp), real(setup%design%coordinate(k), wp), &
+                       setup%design%points(setup%design%coordinate(k), setup%design%point(k)), result%x(k), &
+                       result%x(k) - setup%design%points(setup%design%coordinate(k), setup%design%point(k))]
+      end do
+      call summary%add_table('design', [character(len=10) :: 'point', 'coordinate', 'start', 'optimum', 'move'], &
+                             [character(len=2) :: '1', '1', 'm', 'm', 'm'], table)
+      call summary%add_line('  design variable      start (m)  optimum (m)   move (m)')
+      do k = 1, size(result%x)
+        call summary%add_line('    P'//format_integer(setup%design%point(k) - 1)//'.'// &
+          'xyz'(setup%design%coordinate(k):setup%design%coordinate(k))//repeat(' ', 12)// &
+          format_with(table(3, k), 'f12.4')//format_with(table(4, k), 'f12.4')//format_with(table(5, k), 'f12.4'))
+      end do
+      deallocate (table)
+    end subroutine add_points
 
     !> Every start's costs and outcome, the best one and the spread.
     subroutine add_starts()

@@ -38,6 +38,24 @@ def close(name, got, expected):
         fail(f"{name}: JSON {got.tolist()} but the HDF5 file gives {expected.tolist()}")
 
 
+def check_element_design(g, values, need, close):
+    """An element design of optimize: each variable (start, optimum[, nearest, catalogue]; SI: angles in
+    rad) and, with a catalogue, the costs and the parts counted."""
+    k = 1
+    while f'variables/variable_{k}' in g:
+        v = g[f'variables/variable_{k}']
+        names = ('start', 'optimum', 'nearest', 'catalogue') if 'catalogue' in v else ('start', 'optimum')
+        scale = np.pi / 180 if v['start'].attrs['units'] == 'degree' else 1.0
+        if need(f'variable_{k}'):
+            close(f'variable_{k}', values[f'variable_{k}'], [float(v[n][()]) * scale for n in names])
+        k += 1
+    if 'parts' in g and need('acceleration_cost', 'catalogue_acceleration_cost', 'elements', 'parts'):
+        close('acceleration_cost', values['acceleration_cost'], g['after/acceleration_cost'][()])
+        close('catalogue_acceleration_cost', values['catalogue_acceleration_cost'], g['chosen/acceleration_cost'][()])
+        close('elements', values['elements'], g['parts/count'][:].sum())
+        close('parts', values['parts'], g['parts/count'].shape[0])
+
+
 def check_contact(g, values, need):
     """The contact summary in bodies' and contacts' terms (docs/outputs.md):
     energy in J, per contact slip, normal and friction forces, per body the
@@ -202,25 +220,31 @@ def check(json_path, h5_path, printed_path, reference=None):
             close('curvature_max', values['curvature_max'], c['chi'][:].max())
     elif scenario == 'optimize':
         g = f['/optimize']
-        if need('cost_start', 'lever_limit', 'evaluations', 'cpu_time', 'design', 'rides'):
+        points = 'x_start' in g   # else an element design: /optimize/variables
+        if need('cost_start', 'lever_limit', 'evaluations', 'cpu_time', 'rides') and (not points or need('design')):
             close('cost_start', values['cost_start'], g['cost_start'][()])
             close('lever_limit', values['lever_limit'], g['lever_limit'][()])
             close('evaluations', values['evaluations'], g['evaluations'][()])
             close('cpu_time', values['cpu_time'], g['cpu_time'][()])
-            design, rides = values['design'], values['rides']
-            close('design.point', [r['point'] for r in design], g['design_point'][:])
-            close('design.coordinate', [r['coordinate'] for r in design], g['design_coordinate'][:])
-            close('design.start', [r['start'] for r in design], g['x_start'][:])
+            rides = values['rides']
+            if points:
+                design = values['design']
+                close('design.point', [r['point'] for r in design], g['design_point'][:])
+                close('design.coordinate', [r['coordinate'] for r in design], g['design_coordinate'][:])
+                close('design.start', [r['start'] for r in design], g['x_start'][:])
             close('rides.start_angle', [r['start_angle'] for r in rides], np.degrees(g['before/start_angle'][:]))
             close('rides.max_a_start', [r['max_a_start'] for r in rides], g['before/max_acceleration'][:])
             close('rides.lever_arm_start', [r['lever_arm_start'] for r in rides], g['before/max_lever_arm'][:])
-            if 'x' in g and need('cost'):
+            if 'centerline' in g and need('cost'):
                 close('cost', values['cost'], g['cost'][()])
-                close('design.optimum', [r['optimum'] for r in design], g['x'][:])
-                close('design.move', [r['move'] for r in design], g['x'][:] - g['x_start'][:])
+                if points:
+                    close('design.optimum', [r['optimum'] for r in design], g['x'][:])
+                    close('design.move', [r['move'] for r in design], g['x'][:] - g['x_start'][:])
                 close('rides.max_a_optimum', [r['max_a_optimum'] for r in rides], g['after/max_acceleration'][:])
                 close('rides.lever_arm_optimum', [r['lever_arm_optimum'] for r in rides],
                       g['after/max_lever_arm'][:])
+            if not points and 'centerline' in g:
+                check_element_design(g, values, need, close)
     elif scenario in MULTIBODY:
         g = f['/' + scenario]
         if need('simulated_time', 'energy_change'):

@@ -55,7 +55,7 @@ picture() {   # NAME: the PNG written is one, and not almost empty
 }
 for name in ride_demo_slide water_demo_slide geometry_flume point_mass_ellipsoid pendulum_double \
             fourbar_crank_rocker sled_bowl contact_egg design_optimize_table_4_12 design_identify_rider_demo \
-            design_identify_water_demo sweep_demo_population; do
+            design_identify_water_demo sweep_demo_population design_optimize_standard_parts; do
   "$venv/slidesim-plot" "$results/$name.h5" -o "$work/out/$name.png" >"$work/$name.log" 2>&1 \
     || fail "slidesim-plot $name.h5: $(tail -3 "$work/$name.log")"
   picture "$work/out/$name.png"

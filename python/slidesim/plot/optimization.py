@@ -5,7 +5,11 @@
 - the tipping lever arm of every ride over time with the limit (a ride whose
   body lifts off has no lever arm there: the curve breaks);
 - the section angle of every ride (0 = the bottom of the tube, positive to the
-  +v side) over time.
+  +v side) over time;
+- for an element design snapped to a catalogue of standard parts
+  (docs/design.md): the catalogue design's centerline and largest
+  accelerations too, and a table of the design variables (start, optimum,
+  nearest allowed, chosen) and of the parts to build with their counts.
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
@@ -36,24 +40,37 @@ def draw(result, plt, args):
         limit = float(g["lever_limit"][()])
         angles = np.degrees(g["before/start_angle"][:])
         c0 = np.asarray(g["centerline_start"][:])
-        p0 = np.asarray(g["points_start"][:])
+        points = "points_start" in g  # else an element design
+        p0 = np.asarray(g["points_start"][:]) if points else None
         before = rides(g["before"])
-        optimized = "x" in g
+        optimized = "centerline" in g
         if optimized:
             c1 = np.asarray(g["centerline"][:])
-            p1 = np.asarray(g["points"][:])
+            p1 = np.asarray(g["points"][:]) if points else None
             after = rides(g["after"])
+        chosen = rides(g["chosen"]) if "chosen" in g else None
+        if chosen:
+            c2 = np.asarray(g["centerline_catalogue"][:])
+            variables, parts = variable_rows(g), g["parts/list"].asstr()[()].splitlines()
+            costs = (float(g["after/acceleration_cost"][()]), float(g["catalogue/acceleration_cost"][0]),
+                     float(g["chosen/acceleration_cost"][()]))
         title = result_title(r)
 
-    fig, ax = plt.subplots(2, 3, figsize=(16, 9))
+    fig = plt.figure(figsize=(16, 11.5 if chosen else 9))
+    grid = fig.add_gridspec(3, 3, height_ratios=[3, 3, 1.6]) if chosen else fig.add_gridspec(2, 3)
+    ax = np.array([[fig.add_subplot(grid[i, j]) for j in range(3)] for i in range(2)])
     ax[0, 0].plot(c0[:, 0], c0[:, 1], "k--", label="start")
-    ax[0, 0].plot(p0[:, 0], p0[:, 1], "ko", ms=4)
-    ax[0, 1].plot(np.r_[0, np.cumsum(np.linalg.norm(np.diff(c0, axis=0), axis=1))], c0[:, 2], "k--", label="start")
+    if points:
+        ax[0, 0].plot(p0[:, 0], p0[:, 1], "ko", ms=4)
+    ax[0, 1].plot(arc_length(c0), c0[:, 2], "k--", label="start")
     if optimized:
         ax[0, 0].plot(c1[:, 0], c1[:, 1], "C3", label="optimum")
-        ax[0, 0].plot(p1[:, 0], p1[:, 1], "C3s", ms=4)
-        ax[0, 1].plot(np.r_[0, np.cumsum(np.linalg.norm(np.diff(c1, axis=0), axis=1))], c1[:, 2], "C3",
-                      label="optimum")
+        if points:
+            ax[0, 0].plot(p1[:, 0], p1[:, 1], "C3s", ms=4)
+        ax[0, 1].plot(arc_length(c1), c1[:, 2], "C3", label="optimum")
+    if chosen:
+        ax[0, 0].plot(c2[:, 0], c2[:, 1], "C2", lw=2.5, alpha=0.6, label="catalogue design")
+        ax[0, 1].plot(arc_length(c2), c2[:, 2], "C2", lw=2.5, alpha=0.6, label="catalogue design")
     ax[0, 0].set(xlabel="x (m)", ylabel="y (m)", title="centerline from above")
     ax[0, 0].axis("equal")
     ax[0, 0].legend()
@@ -81,12 +98,51 @@ def draw(result, plt, args):
 
     # the maxima per ride
     x = np.arange(len(before))
-    ax[1, 2].bar(x - 0.2, [np.max(a) for _, a, _, _ in before], 0.4, color="0.6", label="start")
+    width = 0.27 if chosen else 0.4
+    ax[1, 2].bar(x - width / 2 * (2 if chosen else 1), [np.max(a) for _, a, _, _ in before], width, color="0.6",
+                 label="start")
     if optimized:
-        ax[1, 2].bar(x + 0.2, [np.max(a) for _, a, _, _ in after], 0.4, color="C3", label="optimum")
+        ax[1, 2].bar(x + (0 if chosen else width / 2), [np.max(a) for _, a, _, _ in after], width, color="C3",
+                     label="optimum")
+    if chosen:
+        ax[1, 2].bar(x + width, [np.max(a) for _, a, _, _ in chosen], width, color="C2", label="catalogue design")
     ax[1, 2].set_xticks(x, [f"{a:+.0f}" for a in angles])
     ax[1, 2].set(xlabel="start angle (deg)", ylabel="largest acceleration (m/s^2)", title="largest acceleration")
     ax[1, 2].legend()
+    if chosen:
+        table = fig.add_subplot(grid[2, :2])
+        table.axis("off")
+        cells = table.table(cellText=variables, colLabels=["design variable", "unit", "start", "optimum", "nearest",
+                                                           "catalogue"], loc="upper center", cellLoc="left")
+        cells.auto_set_column_width(list(range(6)))
+        cells.scale(1, 1.4)
+        nearest = f"{costs[1]:.6g}" if costs[1] < 1e29 else "not ridden"
+        table.set_title("design variables (nearest: the allowed value nearest to the optimum)\n"
+                        f"acceleration cost (m^2/s^4): optimum {costs[0]:.6g}, nearest {nearest}, "
+                        f"catalogue design {costs[2]:.6g}")
+        listing = fig.add_subplot(grid[2, 2])
+        listing.axis("off")
+        listing.set_title("parts to build")
+        listing.text(0, 1, "\n".join(parts), va="top", ha="left", fontsize=9, family="monospace", wrap=True)
     fig.suptitle(f"slidesim optimize: {title}")
     fig.tight_layout()
     return fig
+
+
+def arc_length(c):
+    """The arc length along centerline samples c (n, 3)."""
+    return np.r_[0, np.cumsum(np.linalg.norm(np.diff(c, axis=0), axis=1))]
+
+
+def variable_rows(g):
+    """The design variables of an element design: name, unit, start, optimum, nearest, catalogue."""
+    rows = []
+    k = 1
+    while f"variables/variable_{k}" in g:
+        v = g[f"variables/variable_{k}"]
+        unit = v["start"].attrs["units"]
+        unit = unit.decode() if isinstance(unit, bytes) else unit
+        values = [float(v[name][()]) for name in ("start", "optimum", "nearest", "catalogue")]
+        rows.append([v["name"].asstr()[()], "deg" if unit == "degree" else unit, *[f"{x:.4g}" for x in values]])
+        k += 1
+    return rows
