@@ -18,6 +18,8 @@ module io_optimization_config
   !> the largest n_points, n_design and start_angles_deg of the declarations
   !> (io_declarations_design; test_input_declarations checks they agree)
   integer, parameter :: max_points = 200, max_design = 50, max_rides = 50
+  !> The letters of the design coordinates 1, 2, 3 (slide_design_t%coordinate).
+  character(len=*), parameter :: axes = 'xyz'
 
 contains
 
@@ -69,8 +71,9 @@ contains
     lower = 0
     upper = 0
     if (.not. r%has('n_design') .and. n_design == size(setup%design%point)) then
+      ! table 4.12's design variables, as the design layer gives them
       point_real = real(setup%design%point - 1, wp)
-      coordinate = [character(len=1) :: 'y', 'y', 'x', 'y', 'y']
+      coordinate = [(axes(setup%design%coordinate(i):setup%design%coordinate(i)), i=1, n_design)]
       lower = setup%design%lower
       upper = setup%design%upper
     end if
@@ -95,7 +98,7 @@ contains
       return
     end if
     setup%design%point = nint(point_real) + 1
-    setup%design%coordinate = [(index('xyz', coordinate(i)), i=1, n_design)]
+    setup%design%coordinate = [(index(axes, coordinate(i)), i=1, n_design)]
     setup%design%lower = lower
     setup%design%upper = upper
     do i = 1, n_design
