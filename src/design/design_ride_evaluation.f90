@@ -27,6 +27,7 @@ module design_ride_evaluation
   use base_kinds, only: wp
   use base_constants, only: pi, standard_gravity
   use base_text, only: format_short, format_real, lower
+  use rider_extremes, only: felt_acceleration, tipping_lever_arm   ! re-exported: the formulas live with the ride
   implicit none (type, external)
   private
   public :: felt_acceleration, felt_acceleration_units, tipping_lever_arm
@@ -71,13 +72,6 @@ module design_ride_evaluation
 
 contains
 
-  !> (a - g)/|g| in the axes (columns) of a frame.
-  pure function felt_acceleration(a, gravity, axes) result(f)
-    real(wp), intent(in) :: a(3), gravity(3), axes(3, 3)
-    real(wp) :: f(3)
-    f = matmul(a - gravity, axes)/norm2(gravity)
-  end function felt_acceleration
-
   !> The unit of felt accelerations (multiples of |gravity|) as UDUNITS-2 and
   !> pint read it: 'gravity' when |gravity| is standard gravity (to a few
   !> ulps: the norm of a tilted standard-gravity vector), else |gravity| in
@@ -93,18 +87,6 @@ contains
       units = format_real(magnitude)//' m/s^2'
     end if
   end function felt_acceleration_units
-
-  !> l = (M_r . e_long)/(F_r . n) (E.3), huge() if F_r . n <= 0.
-  pure real(wp) function tipping_lever_arm(reaction_force, reaction_moment, long_axis, normal) result(l)
-    real(wp), intent(in) :: reaction_force(3), reaction_moment(3), long_axis(3), normal(3)
-    real(wp) :: pressing
-    pressing = dot_product(reaction_force, normal)
-    if (pressing > 0) then
-      l = dot_product(reaction_moment, long_axis)/pressing
-    else
-      l = huge(1.0_wp)
-    end if
-  end function tipping_lever_arm
 
   pure integer function quantity_index(quantity) result(k)
     character(len=*), intent(in) :: quantity

@@ -6,12 +6,17 @@
 !> went over the top of a wall, and each user limit's verdict.
 !> Computed from a recorded ride (rider_ride) with the pure functions of
 !> design_ride_evaluation; "where" is the pelvis's arc length along the
-!> slide. Every recorded sample counts (outputs and events).
+!> slide. The extremes are those the ride located between its records on
+!> the integrator's dense output (rider_extremes, docs/accuracy.md); a
+!> series without them (not from simulate_ride) gives the records' extremes.
+!> The limits judge every recorded sample (outputs and events).
 module design_ride_report
   use base_kinds, only: wp
   use base_constants, only: pi
   use rider_model, only: N_CONTACTS
   use rider_ride, only: ride_series_t
+  use rider_extremes, only: EXTREME_TOP_SPEED, EXTREME_FELT_MAX, EXTREME_FELT_MIN, EXTREME_CLIMB, &
+    EXTREME_NORMAL_MIN, EXTREME_LEVER
   use design_ride_evaluation, only: felt_acceleration, felt_acceleration_units, tipping_lever_arm, ride_limit_t, limit_verdict_t, &
     evaluate_limit, series_extreme
   implicit none (type, external)
@@ -89,6 +94,7 @@ contains
     report%lever_max = report%lever_arm(at)
     if (.not. abs(report%lever_max) < huge(1.0_wp)) report%lever_max = 0
     report%lever_max_at = where(at)
+    if (s%extremes%located .and. s%extremes%records == n) call take_located(s, report)
 
     report%limits = limits
     allocate (report%verdicts(size(limits)), report%judged(size(limits)))
@@ -127,4 +133,28 @@ contains
       call evaluate_limit(limits(k), values, where, report%verdicts(k))
     end do
   end subroutine evaluate_ride
+
+  !> The extremes the ride located between its records.
+  subroutine take_located(s, report)
+    type(ride_series_t), intent(in) :: s
+    type(ride_report_t), intent(inout) :: report
+    integer :: k
+    associate (x => s%extremes)
+      report%top_speed = x%value(EXTREME_TOP_SPEED)
+      report%top_speed_at = x%at(EXTREME_TOP_SPEED)
+      report%felt_max = x%value(EXTREME_FELT_MAX:EXTREME_FELT_MAX + 2)
+      report%felt_max_at = x%at(EXTREME_FELT_MAX:EXTREME_FELT_MAX + 2)
+      report%felt_min = x%value(EXTREME_FELT_MIN:EXTREME_FELT_MIN + 2)
+      report%felt_min_at = x%at(EXTREME_FELT_MIN:EXTREME_FELT_MIN + 2)
+      do k = 1, N_CONTACTS
+        report%climb_angle(k) = x%value(EXTREME_CLIMB + k - 1)
+        report%climb_distance(k) = x%wall_distance(EXTREME_CLIMB + k - 1)
+        report%climb_at(k) = x%at(EXTREME_CLIMB + k - 1)
+        report%normal_min(k) = x%value(EXTREME_NORMAL_MIN + k - 1)
+        report%normal_min_at(k) = x%at(EXTREME_NORMAL_MIN + k - 1)
+      end do
+      report%lever_max = x%value(EXTREME_LEVER)
+      report%lever_max_at = x%at(EXTREME_LEVER)
+    end associate
+  end subroutine take_located
 end module design_ride_report

@@ -52,6 +52,7 @@ module numerics_event_driver
   integer, parameter :: RECORD_START = 1, RECORD_OUTPUT = 2, RECORD_EVENT = 3
   integer, parameter :: DRIVE_END_TIME = 1, DRIVE_EVENT_STOP = 2, DRIVE_FAILED = 3
   integer, parameter :: chunk_steps = 5000   !< internal steps between two looks at guards and progress
+  integer, parameter :: max_dense_order = 12   !< CVODE's highest order (Adams)
 
   !> An ODE system with records and event handling.
   type, abstract, extends(ode_system_t) :: event_system_t
@@ -60,8 +61,14 @@ module numerics_event_driver
     !> when t_out lies inside its step); other calls between step ends are
     !> CVODE's root location
     real(wp) :: t_output = huge(1.0_wp)
+    !> true: the driver shows the system every internal step's dense output
+    !> (observe_step), for quantities located between the records; CVODE
+    !> then returns after each step (max_steps 1 per call: the same steps,
+    !> roots and outputs as in one call per output)
+    logical :: observes_steps = .false.
   contains
     procedure(record_i), deferred :: record
+    procedure :: observe_step => default_observe_step
     procedure :: handle_event => default_handle_event
     procedure :: progress => default_progress
     procedure :: diagnose => default_diagnose
@@ -143,6 +150,15 @@ contains
     action = EVENT_STOP
   end subroutine default_handle_event
 
+  !> Default: steps are not observed.
+  subroutine default_observe_step(self, t_n, h, taylor, status)
+    class(event_system_t), intent(inout) :: self
+    real(wp), intent(in) :: t_n, h, taylor(:, 0:)
+    type(status_t), intent(inout) :: status
+    associate (unused => self, unused_t => t_n, unused_h => h, unused_p => taylor, unused_s => status)
+    end associate
+  end subroutine default_observe_step
+
   !> Default progress: the fraction of [t_start, t_end] done (negative when the
   !> run has no time bound) and the time reached.
   subroutine default_progress(self, t, y, t_start, t_end, fraction, text)
@@ -182,6 +198,8 @@ contains
     type(ode_integrator_t) :: integrator
     type(ode_options_t) :: ode_options
     real(wp) :: y(size(y0)), t, t_out, cpu0, cpu1
+    real(wp), allocatable :: taylor(:, :)
+    real(wp) :: observed_t, observed_h
     integer, allocatable :: fired(:)
     integer :: action
     integer(int64) :: k, k_origin, clock_rate, clock_last, clock_now, steps_at_output
@@ -211,6 +229,12 @@ contains
     ! user's max_steps (per output interval) is counted here.
     ode_options = options%ode
     ode_options%max_steps = min(options%ode%max_steps, chunk_steps)
+    if (system%observes_steps) then
+      ode_options%max_steps = 1
+      allocate (taylor(size(y0), 0:max_dense_order))
+      observed_t = t
+      observed_h = 0
+    end if
     call integrator%start(system, t, y, ode_options, status)
     if (status%ok() .and. options%t_end < huge(options%t_end)) call integrator%set_stop_time(options%t_end, status)
     if (.not. status%ok()) then
@@ -235,6 +259,11 @@ contains
       result%t = t
       if (.not. status%ok()) then
         call prefix_status(status, label//' stopped at t = '//format_short(t)//' s')
+        exit
+      end if
+      if (system%observes_steps) call observe_step(status)
+      if (.not. status%ok()) then
+        call prefix_status(status, label//' at t = '//format_short(t)//' s')
         exit
       end if
       call check_runaway(status)
@@ -294,6 +323,20 @@ contains
       call cpu_time(cpu1)
       result%cpu = cpu1 - cpu0
     end subroutine finish
+
+    !> The system sees each internal step once, before the records and
+    !> events at its end (an event's handling may change the model).
+    subroutine observe_step(st)
+      type(status_t), intent(inout) :: st
+      real(wp) :: t_n, h
+      integer :: order
+      call integrator%step_polynomial(t_n, h, order, taylor, st)
+      if (.not. st%ok() .or. h == 0) return
+      if (t_n == observed_t .and. h == observed_h) return
+      observed_t = t_n
+      observed_h = h
+      call system%observe_step(t_n, h, taylor(:, 0:order), st)
+    end subroutine observe_step
 
     subroutine check_runaway(st)
       type(status_t), intent(inout) :: st

@@ -45,7 +45,7 @@ module numerics_ode
     FCVodeRootInit, FCVodeSetRootDirection, FCVodeGetRootInfo, FCVodeSetNoInactiveRootWarn, &
     FCVodeGetNumSteps, FCVodeGetNumRhsEvals, FCVodeGetNumLinRhsEvals, &
     FCVodeGetNumErrTestFails, FCVodeGetNumNonlinSolvConvFails, FCVodeGetNumGEvals, &
-    FCVodeGetLastStep, FCVodeGetLastOrder, &
+    FCVodeGetLastStep, FCVodeGetLastOrder, FCVodeGetCurrentTime, FCVodeGetDky, &
     CV_ADAMS, CV_BDF, CV_NORMAL, CV_SUCCESS, CV_TSTOP_RETURN, CV_ROOT_RETURN, CV_WARNING, &
     CV_TOO_MUCH_WORK, CV_TOO_MUCH_ACC, CV_ERR_FAILURE, CV_CONV_FAILURE, CV_LINIT_FAIL, &
     CV_LSETUP_FAIL, CV_LSOLVE_FAIL, CV_RHSFUNC_FAIL, CV_FIRST_RHSFUNC_ERR, &
@@ -123,6 +123,7 @@ module numerics_ode
     type(c_ptr) :: cvode = c_null_ptr
     type(N_Vector), pointer :: y => null()
     type(N_Vector), pointer :: abstol => null()
+    type(N_Vector), pointer :: dky => null()    !< CVodeGetDky's output (step_polynomial)
     type(SUNMatrix), pointer :: matrix => null()
     type(SUNLinearSolver), pointer :: linear_solver => null()
     type(SUNNonlinearSolver), pointer :: nonlinear_solver => null()
@@ -137,6 +138,7 @@ module numerics_ode
     procedure :: restart => ode_restart
     procedure :: set_stop_time => ode_set_stop_time
     procedure :: statistics => ode_statistics
+    procedure :: step_polynomial => ode_step_polynomial
     procedure :: destroy => ode_destroy
     final :: ode_finalize
   end type ode_integrator_t
@@ -425,6 +427,61 @@ contains
     stats%last_order = order(1)
   end function ode_statistics
 
+  !> The integrator's dense output over its last internal step [t_n - h, t_n]:
+  !> the polynomial CVODE interpolates with there (CVodeGetDky), as Taylor
+  !> coefficients at t_n, y(t) = sum_k taylor(:, k) (t - t_n)^k for k = 0 ..
+  !> order (the order of that step, at most size(taylor, 2) - 1). h = 0: no
+  !> step since the start or the last restart (nothing to interpolate).
+  subroutine ode_step_polynomial(self, t_n, h, order, taylor, status)
+    class(ode_integrator_t), intent(inout) :: self
+    real(wp), intent(out) :: t_n, h
+    integer, intent(out) :: order
+    real(wp), intent(inout) :: taylor(:, 0:)
+    type(status_t), intent(out) :: status
+    integer(c_int) :: flag, q(1)
+    real(c_double) :: t_now(1), h_last(1)
+    real(c_double), pointer :: v(:)
+    integer :: k
+    t_n = self%t
+    h = 0
+    order = 0
+    if (.not. c_associated(self%cvode)) then
+      call set_status(status, STATUS_INTERNAL, 'ODE step polynomial: integrator not started')
+      return
+    end if
+    flag = FCVodeGetCurrentTime(self%cvode, t_now)
+    if (flag == CV_SUCCESS) flag = FCVodeGetLastStep(self%cvode, h_last)
+    if (flag == CV_SUCCESS) flag = FCVodeGetLastOrder(self%cvode, q)
+    call cvode_status(flag, 'CVodeGetLastStep', self%t, self%link, status)
+    if (.not. status%ok()) return
+    t_n = t_now(1)
+    if (h_last(1) == 0 .or. q(1) < 1) return
+    if (q(1) > ubound(taylor, 2) .or. size(taylor, 1) /= self%n) then
+      call set_status(status, STATUS_INTERNAL, 'ODE step polynomial: taylor must be n x (0:'// &
+                      format_integer(int(q(1)))//')')
+      return
+    end if
+    if (.not. associated(self%dky)) self%dky => FN_VNew_Serial(int(self%n, c_long), self%context)
+    v => FN_VGetArrayPointer(self%dky)
+    do k = 0, q(1)
+      flag = FCVodeGetDky(self%cvode, t_now(1), int(k, c_int), self%dky)
+      call cvode_status(flag, 'CVodeGetDky', t_n, self%link, status)
+      if (.not. status%ok()) return
+      taylor(:, k) = v/factorial(k)
+    end do
+    h = h_last(1)
+    order = q(1)
+  contains
+    pure real(wp) function factorial(k)
+      integer, intent(in) :: k
+      integer :: i
+      factorial = 1
+      do i = 2, k
+        factorial = factorial*i
+      end do
+    end function factorial
+  end subroutine ode_step_polynomial
+
   !> Frees everything CVODE holds; the integrator can be started again.
   subroutine ode_destroy(self)
     class(ode_integrator_t), intent(inout) :: self
@@ -435,8 +492,9 @@ contains
     if (associated(self%linear_solver)) flag = FSUNLinSolFree(self%linear_solver)
     if (associated(self%matrix)) call FSUNMatDestroy(self%matrix)
     if (associated(self%abstol)) call FN_VDestroy(self%abstol)
+    if (associated(self%dky)) call FN_VDestroy(self%dky)
     if (associated(self%y)) call FN_VDestroy(self%y)
-    nullify (self%nonlinear_solver, self%linear_solver, self%matrix, self%abstol, self%y)
+    nullify (self%nonlinear_solver, self%linear_solver, self%matrix, self%abstol, self%dky, self%y)
     if (c_associated(self%context)) flag = FSUNContext_Free(self%context)
     self%context = c_null_ptr
     if (allocated(self%link)) deallocate (self%link)

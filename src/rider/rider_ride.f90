@@ -15,6 +15,12 @@
 !>   back at the start  a contact reaches u_min (after turning back).
 !> The water's drag switches itself on and off at the edges
 !> (rider_water_drag) and restarts the integrator there.
+!>
+!> The report's extremes (rider_extremes) are located between the records on
+!> the integrator's dense output (numerics_dense_extremes): the driver shows
+!> the ride every internal step, and a copy of the mechanism (the probe, so
+!> that the integration's own closure warm starts are not touched) evaluates
+!> the rider at the interpolated states.
 module rider_ride
   use base_kinds, only: wp
   use base_text, only: format_short
@@ -30,6 +36,10 @@ module rider_ride
   use geometry_curve, only: curve_point_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_END_OF_SURFACE, STOP_START_OF_SURFACE, STOP_SIDE_EDGE, &
     STOP_LIFT_OFF
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
+  use numerics_dense_extremes, only: dense_extremes_t, dense_quantities_t
+  use rider_extremes, only: ride_extremes_t, extreme_quantities, N_EXTREMES, N_ATTACHED
   use water_field, only: water_field_t
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names, &
     CONTACT_PELVIS, N_CONTACTS, rider_coulomb_mu
@@ -96,6 +106,7 @@ module rider_ride
     real(wp), allocatable :: friction_work(:), drag_work(:)          ! J (negative: taken out)
     real(wp), allocatable :: closure_residual(:)        ! m
     type(contact_series_t) :: contact(N_CONTACTS)
+    type(ride_extremes_t) :: extremes                   ! the report's extremes, located between the records
   end type ride_series_t
 
   type :: ride_result_t
@@ -113,6 +124,22 @@ module rider_ride
     integer :: ejected_contact = 0
   end type ride_result_t
 
+  !> The rider's report quantities at any state between the records: a copy
+  !> of the rider's mechanism (its closure warm starts are its own) with the
+  !> water drag switched as at the record that starts the stretch and its
+  !> closure started from that record's dependent coordinates (context: bit
+  !> k-1 of context(1) set when contact k is in the water, then beta).
+  type, extends(dense_quantities_t) :: ride_probe_t
+    type(mechanism_t) :: mechanism
+    type(mechanism_workspace_t) :: work
+    type(rider_layout_t) :: layout
+    class(slide_surface_t), allocatable :: slide
+    real(wp) :: gravity(3) = 0            ! m/s^2
+    real(wp), allocatable :: applied(:)   ! the context it was last switched to
+  contains
+    procedure :: evaluate => probe_evaluate
+  end type ride_probe_t
+
   !> The rider as a model of the integration driver.
   type, extends(mechanism_ode_t) :: rider_ode_t
     type(rider_layout_t) :: layout
@@ -128,8 +155,11 @@ module rider_ride
     integer :: ejected_contact = 0        ! the contact that went over a wall's top (0: none)
     integer :: ending = RIDE_FAILED       ! how the ride stopped (RIDE_*), set with outcome at the stop
     integer :: lifted_contact = 0         ! the contact whose normal force fell to zero (0: none)
+    type(dense_extremes_t) :: extremes    ! the report's extremes so far
+    type(ride_probe_t) :: probe           ! evaluates them between the records
   contains
     procedure :: record => rider_record
+    procedure :: observe_step => rider_observe_step
     procedure :: handle_event => rider_handle_event
     procedure :: progress => rider_progress
   end type rider_ode_t
@@ -156,6 +186,13 @@ contains
     if (.not. status%ok()) return
     call prepare_ride(params, surface, options, sys, y0, status, water)
     if (.not. status%ok()) return
+    sys%observes_steps = .true.
+    sys%probe%mechanism = sys%mechanism
+    sys%probe%layout = sys%layout
+    sys%probe%slide = sys%slide
+    sys%probe%gravity = params%gravity
+    sys%probe%applied = spread(huge(1.0_wp), 1, 1 + sys%mechanism%r)
+    call sys%extremes%start(size(y0), N_EXTREMES, N_ATTACHED, 1 + sys%mechanism%r)
     ! room for two minutes of outputs at first; the series grows as the ride goes
     call size_series(sys%ride, nint(min(options%max_duration, 120.0_wp)/options%output_step) + 16, size(y0))
     driver%ode = options%ode
@@ -173,6 +210,8 @@ contains
     driver%label = 'ride'
     if (present(label)) driver%label = label
     call drive(sys, y0, driver, result%driver, run_status)
+    if (run_status%ok()) call sys%extremes%finish(sys%probe, run_status)
+    call keep_extremes(sys)
     result%drag_switches = sys%drag_switches
     result%ejected_contact = sys%ejected_contact
     result%lifted_contact = sys%lifted_contact
@@ -359,6 +398,7 @@ contains
     do k = 1, N_CONTACTS
       b%contact(k) = a%contact(k)
     end do
+    b%extremes = a%extremes
   end subroutine move_series
 
   !> The complete state of the ride at (t, y).
@@ -367,7 +407,8 @@ contains
     real(wp), intent(in) :: t, y(:)
     integer, intent(in) :: kind
     type(status_t), intent(inout) :: status
-    real(wp) :: residual, kinetic, potential, s(3)
+    real(wp) :: residual, kinetic, potential
+    real(wp) :: values(N_EXTREMES), attached(N_ATTACHED, N_EXTREMES)
     integer :: f, n, k, i, grown
     f = self%mechanism%f
     call self%mechanism%evaluate(self%work, t, y(1:f), y(f + 1:2*f), residual, status)
@@ -385,16 +426,8 @@ contains
       r%time(n) = t
       r%kind(n) = kind
       r%state(:, n) = y
-      associate (d => m%frames(lay%contact_frame(CONTACT_PELVIS)), p => m%frames(lay%body_frame(CONTACT_PELVIS)))
-        r%speed(n) = norm2(d%v)
-        s = matmul(p%rot, lay%body%pelvis%com)
-        r%pelvis_acceleration(:, n) = p%a + cross(p%alpha, s) + cross(p%omega, cross(p%omega, s))
-        r%pelvis_axes(:, :, n) = p%rot
-        ! the slide's reaction on the rider at the pelvis contact is minus the
-        ! load the mechanism puts on the Darboux frame there (docs/rider.md)
-        r%reaction_force(:, n) = -d%force
-        r%reaction_moment(:, n) = -d%torque
-      end associate
+      call pelvis_state(m, lay, r%speed(n), r%pelvis_acceleration(:, n), r%pelvis_axes(:, :, n), &
+                        r%reaction_force(:, n), r%reaction_moment(:, n))
       r%heading(n) = m%scalars(lay%heading)%q
       r%phi_legs(n) = m%scalars(lay%flexion)%q
       r%phi_trunk(n) = m%scalars(lay%tilt)%q
@@ -444,8 +477,100 @@ contains
         end associate
       end do
       r%arc_length(n) = r%contact(CONTACT_PELVIS)%arc_length(n)
+      if (self%observes_steps) then
+        call extreme_quantities(r%speed(n), r%pelvis_acceleration(:, n), r%pelvis_axes(:, :, n), &
+          r%reaction_force(:, n), r%reaction_moment(:, n), r%arc_length(n), &
+          [(r%contact(k)%wall_angle(n), k = 1, N_CONTACTS)], [(r%contact(k)%wall_distance(n), k = 1, N_CONTACTS)], &
+          [(r%contact(k)%normal_force(n), k = 1, N_CONTACTS)], self%probe%gravity, values, attached)
+        call self%extremes%add_record(t, kind == RECORD_EVENT, &
+          [real(sum([(merge(2**(k - 1), 0, r%contact(k)%in_water(n) == 1), k = 1, N_CONTACTS)]), wp), &
+           (m%scalars(m%beta(k))%q, k = 1, m%r)], values, attached)
+      end if
     end associate
   end subroutine rider_record
+
+  !> Pelvis's speed, centre-of-mass acceleration, axes and the slide's
+  !> reaction on the rider there, from an evaluated mechanism.
+  subroutine pelvis_state(m, lay, speed, acceleration, axes, force, moment)
+    type(mechanism_t), intent(in) :: m
+    type(rider_layout_t), intent(in) :: lay
+    real(wp), intent(out) :: speed, acceleration(3), axes(3, 3), force(3), moment(3)
+    real(wp) :: s(3)
+    associate (d => m%frames(lay%contact_frame(CONTACT_PELVIS)), p => m%frames(lay%body_frame(CONTACT_PELVIS)))
+      speed = norm2(d%v)
+      s = matmul(p%rot, lay%body%pelvis%com)
+      acceleration = p%a + cross(p%alpha, s) + cross(p%omega, cross(p%omega, s))
+      axes = p%rot
+      ! the slide's reaction on the rider at the pelvis contact is minus the
+      ! load the mechanism puts on the Darboux frame there (docs/rider.md)
+      force = -d%force
+      moment = -d%torque
+    end associate
+  end subroutine pelvis_state
+
+  !> The report quantities at (t, y) with the water drag of `context`.
+  subroutine probe_evaluate(self, t, y, context, values, attached, status)
+    class(ride_probe_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(in) :: context(:)
+    real(wp), intent(out) :: values(:), attached(:, :)
+    type(status_t), intent(inout) :: status
+    real(wp) :: residual, speed, acceleration(3), axes(3, 3), force(3), moment(3)
+    real(wp) :: angle(N_CONTACTS), distance(N_CONTACTS), normal(N_CONTACTS)
+    integer :: f, k
+    associate (m => self%mechanism, lay => self%layout)
+      if (any(context /= self%applied)) then
+        ! another stretch: its drag, and the closure from its record (a cold
+        ! start: no predictor from the last solution, which may lie far off)
+        do k = 1, N_CONTACTS
+          if (lay%drag(k) > 0) m%laws(lay%drag(k))%law%active = btest(nint(context(1)), k - 1)
+        end do
+        do k = 1, m%r
+          m%scalars(m%beta(k))%q = context(1 + k)
+        end do
+        m%warm = .false.
+        m%converged = .false.
+        self%applied = context
+      end if
+      f = m%f
+      call m%evaluate(self%work, t, y(1:f), y(f + 1:2*f), residual, status)
+      if (.not. status%ok()) return
+      call pelvis_state(m, lay, speed, acceleration, axes, force, moment)
+      do k = 1, N_CONTACTS
+        call self%slide%wall_position(m%scalars(lay%u(k))%q, m%scalars(lay%v(k))%q, angle(k), distance(k), status)
+        if (.not. status%ok()) return
+        normal(k) = m%contacts(lay%contact(k))%normal_force
+      end do
+      call extreme_quantities(speed, acceleration, axes, force, moment, &
+        self%slide%arc_length(m%scalars(lay%u(CONTACT_PELVIS))%q), angle, distance, normal, self%gravity, &
+        values, attached)
+    end associate
+  end subroutine probe_evaluate
+
+  !> An internal step's dense output, for the extremes.
+  subroutine rider_observe_step(self, t_n, h, taylor, status)
+    class(rider_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t_n, h, taylor(:, 0:)
+    type(status_t), intent(inout) :: status
+    associate (unused => status)
+    end associate
+    call self%extremes%add_piece(t_n, h, taylor)
+  end subroutine rider_observe_step
+
+  !> The located extremes into the ride's series.
+  subroutine keep_extremes(sys)
+    type(rider_ode_t), intent(inout) :: sys
+    associate (e => sys%extremes, x => sys%ride%extremes)
+      x%located = e%records > 0
+      x%records = e%records
+      x%value = e%best_attached(1, :)
+      x%at = e%best_attached(2, :)
+      x%wall_distance = e%best_attached(3, :)
+      x%time = e%best_t
+      x%searches = e%searches
+      x%evaluations = e%evaluations
+    end associate
+  end subroutine keep_extremes
 
   !> The mechanism's events (ends, lift-off, drag on/off), then the rider's:
   !> the stall crossing (the one user crossing) stops the ride.

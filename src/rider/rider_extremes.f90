@@ -1,0 +1,93 @@
+!> The ride report's extremes (docs/rider.md, "Ride report"), as the ride
+!> locates them between its records on the integrator's dense output
+!> (numerics_dense_extremes, docs/accuracy.md): the top speed, the largest
+!> and smallest felt acceleration per body axis, the largest |wall angle| of
+!> each contact, the smallest normal force of each contact and the largest
+!> |tipping lever arm|, each with where (the pelvis's arc length) and when.
+!>
+!> Also the two formulas of what a rider feels that they are made of (the
+!> design layer's ride evaluation uses them too):
+!> felt specific force f = (a - g)/|g| in a body frame's axes (in g), and
+!> the tipping lever arm l = (M_r . e_long)/(F_r . n) (thesis E.3), huge()
+!> where the reaction does not press (F_r . n <= 0).
+module rider_extremes
+  use base_kinds, only: wp
+  use rider_model, only: N_CONTACTS
+  implicit none (type, external)
+  private
+  public :: felt_acceleration, tipping_lever_arm, ride_extremes_t, extreme_quantities
+  public :: N_EXTREMES, N_ATTACHED, EXTREME_TOP_SPEED, EXTREME_FELT_MAX, EXTREME_FELT_MIN, EXTREME_CLIMB, &
+    EXTREME_NORMAL_MIN, EXTREME_LEVER
+
+  !> the quantities (first of three for per-axis and per-contact ones)
+  integer, parameter :: EXTREME_TOP_SPEED = 1, EXTREME_FELT_MAX = 2, EXTREME_FELT_MIN = 5, &
+    EXTREME_CLIMB = 8, EXTREME_NORMAL_MIN = 11, EXTREME_LEVER = 14, N_EXTREMES = 14
+  !> numbers kept with each: the reported value (signed), the arc length, the wall distance
+  integer, parameter :: N_ATTACHED = 3
+
+  !> The located extremes of a ride, in report units (m/s, g, rad, N, m).
+  type :: ride_extremes_t
+    logical :: located = .false.          ! the ride located them (else: take them from the records)
+    integer :: records = 0                ! records they were located among
+    real(wp) :: value(N_EXTREMES) = 0     ! speed, felt (3 max, 3 min), wall angle, normal force, lever arm
+    real(wp) :: at(N_EXTREMES) = 0        ! m, the pelvis's arc length there
+    real(wp) :: time(N_EXTREMES) = 0      ! s
+    real(wp) :: wall_distance(N_EXTREMES) = 0   ! m, for the wall angles: along the wall there
+    integer :: searches = 0, evaluations = 0    ! brackets searched, model evaluations for them
+  end type ride_extremes_t
+
+contains
+
+  !> (a - g)/|g| in the axes (columns) of a frame.
+  pure function felt_acceleration(a, gravity, axes) result(f)
+    real(wp), intent(in) :: a(3), gravity(3), axes(3, 3)
+    real(wp) :: f(3)
+    f = matmul(a - gravity, axes)/norm2(gravity)
+  end function felt_acceleration
+
+  !> l = (M_r . e_long)/(F_r . n) (E.3), huge() if F_r . n <= 0.
+  pure real(wp) function tipping_lever_arm(reaction_force, reaction_moment, long_axis, normal) result(l)
+    real(wp), intent(in) :: reaction_force(3), reaction_moment(3), long_axis(3), normal(3)
+    real(wp) :: pressing
+    pressing = dot_product(reaction_force, normal)
+    if (pressing > 0) then
+      l = dot_product(reaction_moment, long_axis)/pressing
+    else
+      l = huge(1.0_wp)
+    end if
+  end function tipping_lever_arm
+
+  !> The quantities of one state as values to maximise (minima negated,
+  !> |wall angle|, |lever arm| or 0 where the pelvis does not press) and
+  !> their attached numbers.
+  pure subroutine extreme_quantities(speed, acceleration, axes, reaction_force, reaction_moment, arc_length, &
+                                     wall_angle, wall_distance, normal_force, gravity, values, attached)
+    real(wp), intent(in) :: speed, acceleration(3), axes(3, 3), reaction_force(3), reaction_moment(3), arc_length
+    real(wp), intent(in) :: wall_angle(N_CONTACTS), wall_distance(N_CONTACTS), normal_force(N_CONTACTS), gravity(3)
+    real(wp), intent(out) :: values(N_EXTREMES), attached(N_ATTACHED, N_EXTREMES)
+    real(wp) :: felt(3), lever
+    integer :: k
+    attached = 0
+    attached(2, :) = arc_length
+    values(EXTREME_TOP_SPEED) = speed
+    attached(1, EXTREME_TOP_SPEED) = speed
+    felt = felt_acceleration(acceleration, gravity, axes)
+    do k = 1, 3
+      values(EXTREME_FELT_MAX + k - 1) = felt(k)
+      attached(1, EXTREME_FELT_MAX + k - 1) = felt(k)
+      values(EXTREME_FELT_MIN + k - 1) = -felt(k)
+      attached(1, EXTREME_FELT_MIN + k - 1) = felt(k)
+    end do
+    do k = 1, N_CONTACTS
+      values(EXTREME_CLIMB + k - 1) = abs(wall_angle(k))
+      attached(1, EXTREME_CLIMB + k - 1) = wall_angle(k)
+      attached(3, EXTREME_CLIMB + k - 1) = wall_distance(k)
+      values(EXTREME_NORMAL_MIN + k - 1) = -normal_force(k)
+      attached(1, EXTREME_NORMAL_MIN + k - 1) = normal_force(k)
+    end do
+    lever = tipping_lever_arm(reaction_force, reaction_moment, axes(:, 1), axes(:, 3))
+    if (.not. abs(lever) < huge(1.0_wp)) lever = 0
+    values(EXTREME_LEVER) = abs(lever)
+    attached(1, EXTREME_LEVER) = lever
+  end subroutine extreme_quantities
+end module rider_extremes
