@@ -16,8 +16,9 @@ compared with a reference at rtol = 1e-12. Each number of the JSON summary
     with two near-equal peaks may move between them; that is reported, not
     hidden).
 A second part keeps rtol = 1e-12 and varies the output step (0.01 s shipped):
-the report's maxima and minima are taken over the output records, so their
-accuracy is bounded by the record spacing whatever the tolerance.
+the report's maxima and minima are located between the records on the
+integrator's dense output, so the output step should not limit them (before
+they were taken over the records and were good only to the record spacing).
 
 The tables it prints are the ones in docs/accuracy.md (made with a Release
 build; re-run it to check them).
