@@ -103,7 +103,9 @@ contains
   !> records 0.01 s and 0.0025 s apart (the same internal steps: outputs are
   !> interpolated) give the same extremes to 1e-7 relative (the integration's
   !> accuracy at the default rtol 1e-10, docs/accuracy.md; the study finds
-  !> them within 1e-9 across output steps at rtol 1e-12), while the records'
+  !> them within 1e-9 across output steps at rtol 1e-12; plus 1e-9 in their
+  !> unit, the atol: the lateral felt g of this straight start is ~3e-9 g,
+  !> zero to the integration's accuracy), while the records'
   !> own extremes differ by more than 1e-6 (checked: this is what the test
   !> would see with extremes over the records, ~1e-4). Every located extreme
   !> is at least as extreme as the records'.
@@ -121,7 +123,9 @@ contains
     if (.not. (coarse_job%status%ok() .and. fine_job%status%ok())) return
     a = located(coarse_job)
     b = located(fine_job)
-    call check(all(abs(a - b) <= 1e-7_wp*abs(b)), 'the extremes do not depend on the output step')
+    if (.not. all(abs(a - b) <= 1e-7_wp*abs(b) + 1e-9_wp)) print '(a, 10es24.16)', 'located at 0.01 s:   ', a, &
+      'located at 0.0025 s: ', b
+    call check(all(abs(a - b) <= 1e-7_wp*abs(b) + 1e-9_wp), 'the extremes do not depend on the output step')
     call check(abs(coarse_job%report%lever_max - fine_job%report%lever_max) <= 1e-7_wp*abs(fine_job%report%lever_max) &
                .and. all(abs(coarse_job%report%climb_angle - fine_job%report%climb_angle) <= &
                          1e-7_wp*abs(fine_job%report%climb_angle)), &
