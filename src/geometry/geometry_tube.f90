@@ -384,7 +384,7 @@ contains
     type(status_t), intent(inout) :: status
     integer, parameter :: max_samples = 4000
     real(wp), allocatable :: u(:), s(:), e(:), p(:, :), f(:, :)
-    real(wp) :: a, b, smallest, d, step, e_max
+    real(wp) :: a, b, smallest, d, step, e_max, spacings
     type(curve_point_t) :: c
     type(status_t) :: st
     integer :: n, i, j
@@ -394,7 +394,14 @@ contains
       smallest = min(smallest, self%section%extent(a + (b - a)*i/100.0_wp))
     end do
     if (.not. smallest > 0) return
-    n = max(100, min(max_samples, ceiling(4*self%length()/smallest) + 1))
+    ! the count in reals first: a wild spline (1e8 m from points 5 km apart)
+    ! would overflow the integer (a trap in Debug, a garbage count in Release)
+    spacings = 4*self%length()/smallest
+    if (spacings < max_samples) then
+      n = max(100, min(max_samples, ceiling(spacings) + 1))
+    else
+      n = max_samples
+    end if
     allocate (u(n), s(n), e(n), p(3, n), f(2, n))
     do i = 1, n
       u(i) = a + (b - a)*(i - 1)/real(n - 1, wp)
