@@ -26,7 +26,8 @@
 !> its records are joined to the others' (kinetostatics_recorder
 !> join_series): both records at a switch are kept, the last of one phase
 !> and the first of the next (the same pose and twist to rounding; the
-!> second marked an event, record_kind 3). Coordinates of one phase are 0 in
+!> second marked an event, record_kind 3); the force laws' work goes on
+!> across the switch (carry_work). Coordinates of one phase are 0 in
 !> the other's records (the result's `open` says which: 1 in flight); in the
 !> flight's records the contact's point is the gap's point on shape_1, its
 !> velocity the body's nearest point's along the surface, its normal force 0.
@@ -37,7 +38,7 @@ module contact_closing
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_EVENT_STOP, DRIVE_FAILED, &
     RECORD_EVENT
   use kinetostatics_recorder, only: mechanism_series_t, join_series
-  use kinetostatics_mechanism_ode, only: STOP_LIFT_OFF
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_LIFT_OFF
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model
   use contact_flight, only: flight_ode_t, build_flight, restart_flight, touching_gap_limit
   implicit none (type, external)
@@ -108,6 +109,7 @@ contains
           call close_contact(flight, flight%closed, status)
           if (.not. status%ok()) call prefix_status(status, 'closing the contact at t = '//format_short(phase%t)//' s')
           y = flight%closed%y0
+          if (status%ok()) call carry_work(run%series, flight%closed%ode, y)
         end if
       else
         call flight%closed%ode%start_series(16)
@@ -130,6 +132,7 @@ contains
           end associate
           if (.not. status%ok()) call prefix_status(status, 'the lift-off into flight at t = '// &
                                                     format_short(phase%t)//' s')
+          if (status%ok()) call carry_work(run%series, flight, y)
         end if
       end if
       call add_result(result, phase, first)
@@ -143,6 +146,26 @@ contains
     flight%chart_changes = flight%chart_changes + chart_changes
     in_flight = run%in_flight
   end subroutine drive_flight
+
+  !> The work integrals of the next phase's state y (mechanism_ode_t: y =
+  !> [q, s, W]) start where the run's records so far end, law by law by name
+  !> (the air's drag acts in flight and closed alike, contact_factory
+  !> add_air_drag): the work of the whole run, so that its energy balance
+  !> holds across the phases. A law new in the run starts at 0.
+  subroutine carry_work(series, next, y)
+    type(mechanism_series_t), intent(in) :: series
+    class(mechanism_ode_t), intent(in) :: next
+    real(wp), intent(inout) :: y(:)
+    character(len=len(series%law_names)) :: name
+    integer :: k, j, n
+    n = next%mechanism%f + next%mechanism%ns
+    if (series%n < 1) return
+    do k = 1, next%mechanism%n_laws
+      name = next%mechanism%laws(k)%law%name
+      j = findloc([(series%law_names(j) == name, j = 1, series%nl)], .true., dim=1)
+      if (j > 0) y(n + k) = series%law_work(j, series%n)
+    end do
+  end subroutine carry_work
 
   !> result := phase (the first) or the sum of both (the outcome, time and
   !> fired roots the later's).

@@ -2,7 +2,8 @@
 !> a shape is a named surface in its body's coordinates (any surface the
 !> geometry layer describes, geometry_surface_description, placed in the body), a
 !> body's mass properties are given or those of the homogeneous solid of
-!> one of its shapes. contact_model builds the mechanism from them.
+!> one of its shapes; a body with a drag_area feels the air's drag
+!> (add_air_drag). contact_model builds the mechanism from them.
 module contact_factory
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
@@ -11,9 +12,11 @@ module contact_factory
   use geometry_solid, only: solid_properties_t, solid_properties
   use geometry_surface_factory, only: surface_from_spec
   use geometry_surface_description, only: surface_description_t, build_surface
+  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_force_laws, only: new_air_drag
   implicit none (type, external)
   private
-  public :: shape_t, body_spec_t, shape_from_spec, body_from_spec, build_shapes
+  public :: shape_t, body_spec_t, shape_from_spec, body_from_spec, build_shapes, add_air_drag
 
   real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
 
@@ -38,6 +41,7 @@ module contact_factory
     real(wp) :: position(3) = 0                  ! m, start origin (world)
     real(wp) :: velocity(3) = 0                  ! m/s, of the origin (world)
     real(wp) :: angular_velocity(3) = 0          ! rad/s (world)
+    real(wp) :: drag_area = 0                    ! m^2, C_d A of the air's drag on it (0: none)
   end type body_spec_t
 
 contains
@@ -103,4 +107,21 @@ contains
     end if
     props%inertia = props%inertia*spec%mass/props%volume
   end subroutine body_from_spec
+
+  !> The air's drag on the body `spec` (kinetostatics_force_laws air_drag_t),
+  !> if it has a drag_area: on its frame `frame` at its centre of mass
+  !> `centre` (m, the frame's axes), in air of `density` (kg/m^3) moving at
+  !> `wind` (m/s, world). Named '<body>.air_drag' both in the closed
+  !> contact's mechanism (contact_model) and in the flight's
+  !> (contact_flight), so that its work goes on across the phases
+  !> (contact_closing).
+  subroutine add_air_drag(m, spec, density, wind, frame, centre, status)
+    type(mechanism_t), intent(inout) :: m
+    type(body_spec_t), intent(in) :: spec
+    real(wp), intent(in) :: density, wind(3), centre(3)
+    integer, intent(in) :: frame
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok() .or. spec%drag_area == 0) return
+    call m%add_law(new_air_drag(spec%name//'.air_drag', frame, centre, spec%drag_area, density, wind, status))
+  end subroutine add_air_drag
 end module contact_factory

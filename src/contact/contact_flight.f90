@@ -6,6 +6,8 @@
 !> carries its mass element under gravity. Its coordinates are the origin
 !> (x, y, z) and the rotation's angles, its speeds their rates: the state is
 !> the pose and twist, continuous (the rotation's chart changes keep them).
+!> A body with a drag_area feels the air's drag in flight as when closed
+!> (contact_factory add_air_drag).
 !>
 !> The contact's gap (contact_gap: the signed distance of its two shapes
 !> along their common normal) is recorded with every state and is a root
@@ -54,7 +56,7 @@ module contact_flight
   use base_vector, only: cross
   use base_series, only: resize
   use geometry_solid, only: solid_properties_t
-  use contact_factory, only: body_from_spec
+  use contact_factory, only: body_from_spec, add_air_drag
   use contact_model, only: contact_system_t, contact_model_t, build_system_shapes, LEVEL_POSITION, CHAIN_AUTO
   use contact_gap, only: contact_gap_t, new_contact_gap
   implicit none (type, external)
@@ -209,6 +211,7 @@ contains
       flight%coordinates = coordinates
       call m%add_element(new_mass_element(c%body_2, flight%body_frame, system%bodies(b)%mass, props%inertia, &
                                           props%centre, system%gravity, status))
+      call add_air_drag(m, system%bodies(b), system%air_density, system%wind, flight%body_frame, props%centre, status)
       if (.not. status%ok()) return
       call m%add_monitor(m%add_scalar(c%name//'.gap'), 'm')
       flight%gap_monitor = size(m%monitors)

@@ -37,7 +37,7 @@
 !> velocity into a surface, no slip where rolling) to 1e-9 of their size.
 module contact_model
   use base_kinds, only: wp
-  use base_constants, only: standard_gravity
+  use base_constants, only: standard_gravity, dry_air_density
   use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use base_spec, only: spec_t
@@ -55,7 +55,7 @@ module contact_model
     place_open_contact_pair, check_contact_branch, starts_in_other_chart
   use contact_rolling, only: new_no_slip
   use contact_velocity_level, only: new_velocity_contact
-  use contact_factory, only: shape_t, body_spec_t, body_from_spec, build_shapes
+  use contact_factory, only: shape_t, body_spec_t, body_from_spec, build_shapes, add_air_drag
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t, contact_model_t, contact_link_t
@@ -94,6 +94,8 @@ module contact_model
   !> The description: 'ground' names the fixed frame (it needs no body entry).
   type :: contact_system_t
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]   ! m/s^2
+    real(wp) :: air_density = dry_air_density    ! kg/m^3, of the air's drag on bodies with a drag_area
+    real(wp) :: wind(3) = 0                      ! m/s, the air's velocity (world)
     type(shape_t), allocatable :: shapes(:)
     type(body_spec_t), allocatable :: bodies(:)
     type(contact_spec_t), allocatable :: contacts(:)
@@ -385,6 +387,8 @@ contains
           call m%add_element(new_mass_element(c%body_2, link%frame_b, system%bodies(b2)%mass, props(b2)%inertia, &
                                               props(b2)%centre, system%gravity, status))
           if (.not. status%ok()) return
+          call add_air_drag(m, system%bodies(b2), system%air_density, system%wind, link%frame_b, props(b2)%centre, &
+                            status)
           call add_friction(m, c, link, system%bodies(b2)%mass*norm2(system%gravity), status)
           if (.not. status%ok()) return
         end associate

@@ -44,6 +44,7 @@ contains
     do k = 1, size(system%contacts)
       call read_contact(input, k, system, status)
     end do
+    call check_air_used(input, system, status)
     if (present(shape_sources)) call move_alloc(sources, shape_sources)
     if (status%ok() .and. size(system%contacts) == 0) call missing('contact', 'a contact scenario needs at '// &
       'least one &contact (body_1 shape_1 touches body_2 shape_2)')
@@ -61,7 +62,24 @@ contains
     type(group_reader_t) :: r
     call open_group(input, 'contact_model', r, status)
     call r%get('gravity', system%gravity, status)
+    call r%get('air_density', system%air_density, status)
+    call r%get('wind', system%wind, status)
   end subroutine read_model_group
+
+  !> The air (air_density, wind) is for the drag of bodies with a drag_area:
+  !> refused where no body has one (it would go unused).
+  subroutine check_air_used(input, system, status)
+    type(input_text_t), intent(in) :: input
+    type(contact_system_t), intent(in) :: system
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    integer :: k
+    if (.not. status%ok()) return
+    if (any([(system%bodies(k)%drag_area > 0, k = 1, size(system%bodies))])) return
+    call open_group(input, 'contact_model', r, status)
+    call r%refuse_given([character(len=11) :: 'air_density', 'wind'], 'the air is for the drag of bodies with '// &
+                        'a drag_area (&body drag_area = C_d A), and no &body has one', status)
+  end subroutine check_air_used
 
   !> The k-th &body.
   subroutine read_body(input, k, system, status)
@@ -90,6 +108,7 @@ contains
     call r%get('angles_deg', angles_deg, status)
     call r%get('velocity', system%bodies(k)%velocity, status)
     call r%get('angular_velocity', system%bodies(k)%angular_velocity, status)
+    call r%get('drag_area', system%bodies(k)%drag_area, status)
     if (.not. status%ok()) return
     if (len_trim(name) == 0) then
       call r%invalid('name', '''''', 'every &body needs a name', status)

@@ -118,6 +118,11 @@ module io_declarations_multibody
     ! ---- the contact scenario: &contact_model, &body, &contact (+ the parameters of the friction law)
     declaration_t(groups='contact_model', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
       low=-1e3_wp, high=1e3_wp, meaning='gravity vector'), &
+    declaration_t(groups='contact_model', name='air_density', unit='kg/m^3', default='1.2041', low=0.0_wp, &
+      high=1e3_wp, meaning='density of the air whose drag the bodies with a drag_area feel (default: dry air '// &
+      'at 20 C, 101.325 kPa)'), &
+    declaration_t(groups='contact_model', name='wind', shape='3', unit='m/s', default='0, 0, 0', low=-1e3_wp, &
+      high=1e3_wp, meaning='velocity of that air (world): the drag acts on a body''s velocity relative to it'), &
     declaration_t(groups='body', name='name', kind=VALUE_WORDS, default='none', &
       meaning='the body''s name (required, unique, not ''ground'')'), &
     declaration_t(groups='body', name='mass', unit='kg', default='1', low=0.0_wp, high=1e9_wp, open_low=.true., &
@@ -138,6 +143,9 @@ module io_declarations_multibody
       high=1e4_wp, meaning='start velocity of the body frame''s origin (world)'), &
     declaration_t(groups='body', name='angular_velocity', shape='3', unit='rad/s', default='0, 0, 0', &
       low=-1e5_wp, high=1e5_wp, meaning='start angular velocity (world)'), &
+    declaration_t(groups='body', name='drag_area', unit='m^2', default='0', low=0.0_wp, high=1e3_wp, &
+      meaning='C_d A, drag coefficient times reference area: the air''s quadratic drag at the centre of mass '// &
+      'against its velocity relative to the air, in flight and in contact (docs/contact.md, Air drag; 0: none)'), &
     declaration_t(groups='contact', name='name', kind=VALUE_WORDS, default='none', &
       meaning='the contact''s name, prefix of its coordinates and outputs (required, unique)'), &
     declaration_t(groups='contact', name='body_1', kind=VALUE_WORDS, default='''ground''', &

@@ -7,6 +7,8 @@
 !>                             law, METHOD-PART2 A.4.3)
 !>   spring_damper_t           between a point of frame i and a point of frame j
 !>   constant_load_t           a constant wrench at a frame (world or body axes)
+!>   air_drag_t                the air's quadratic drag on a body, at its centre
+!>                             of mass: F = -1/2 rho C_d A |w| w, w = v_S - wind
 !>
 !> The friction laws are friction_law_t (kinetostatics_force_law): a force
 !> F(w_t, N) with w_t the tangential part of the material slip velocity, F on
@@ -34,9 +36,9 @@ module kinetostatics_force_laws
   use kinetostatics_force_law, only: force_law_t, friction_law_t, frame_load_t, force_law_kind_t, law_place_t
   implicit none (type, external)
   private
-  public :: coulomb_friction_t, viscous_friction_t, spring_damper_t, constant_load_t
+  public :: coulomb_friction_t, viscous_friction_t, spring_damper_t, constant_load_t, air_drag_t
   public :: new_coulomb_friction, new_normal_viscous_friction, new_viscous_friction, new_spring_damper, &
-    new_constant_load
+    new_constant_load, new_air_drag
   public :: coulomb_kind, viscous_kind, viscous_weight_kind, viscous_normal_kind
 
   type, extends(friction_law_t) :: coulomb_friction_t
@@ -75,6 +77,22 @@ module kinetostatics_force_laws
   contains
     procedure :: evaluate => constant_evaluate
   end type constant_load_t
+
+  !> The air's drag on a body, F = -1/2 rho C_d A |w| w at its centre of
+  !> mass S, w = v_S - wind its velocity relative to the air (still air:
+  !> wind = 0): a force along -w only (no lift, no turning moment about S:
+  !> the rotational drag of a spinning body is not modelled). Its power
+  !> F.v_S is the work the air does on the body; in still air -F.v_S =
+  !> 1/2 rho C_d A |v_S|^3 >= 0 is dissipated.
+  type, extends(force_law_t) :: air_drag_t
+    integer :: frame = 0
+    real(wp) :: centre(3) = 0       ! m, the centre of mass in the frame's own axes
+    real(wp) :: drag_area = 0       ! m^2, C_d A
+    real(wp) :: density = 0         ! kg/m^3
+    real(wp) :: wind(3) = 0         ! m/s, the air's velocity (world)
+  contains
+    procedure :: evaluate => air_drag_evaluate
+  end type air_drag_t
 
 contains
 
@@ -304,4 +322,46 @@ contains
       self%loads(1) = frame_load_t(self%frame, self%force_value, self%torque_value)
     end if
   end subroutine constant_evaluate
+
+  !> The air's drag on the body of `frame` at its centre of mass `centre`
+  !> (m, the frame's own axes): drag_area C_d A (m^2), the air's density
+  !> (kg/m^3) and velocity `wind` (m/s, world).
+  function new_air_drag(name, frame, centre, drag_area, density, wind, status) result(law)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame
+    real(wp), intent(in) :: centre(3), drag_area, density, wind(3)
+    type(status_t), intent(inout) :: status
+    type(air_drag_t) :: law
+    law%name = name
+    law%frame = frame
+    law%centre = centre
+    law%drag_area = drag_area
+    law%density = density
+    law%wind = wind
+    allocate (law%loads(1))
+    call check_coefficient(name, 'drag area C_d A', drag_area, 'm^2', status)
+    call check_coefficient(name, 'air density', density, 'kg/m^3', status)
+    if (.not. all(abs(wind) < huge(1.0_wp))) call set_status(status, STATUS_INVALID_INPUT, 'force law '''// &
+      name//''': the wind must be finite')
+  end function new_air_drag
+
+  !> F = -1/2 rho C_d A |w| w at the centre S: the force, and its moment
+  !> arm x F about the frame's origin.
+  pure subroutine air_drag_evaluate(self, t, frames, scalars, contacts, status)
+    class(air_drag_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    type(frame_state_t), intent(in) :: frames(:)
+    type(scalar_state_t), intent(in) :: scalars(:)
+    type(contact_state_t), intent(in) :: contacts(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: arm(3), w(3), f(3)
+    associate (unused_t => t, unused_s => scalars, unused_c => contacts, unused_st => status)
+    end associate
+    associate (body => frames(self%frame))
+      arm = matmul(body%rot, self%centre)
+      w = body%v + cross(body%omega, arm) - self%wind
+      f = -0.5_wp*self%density*self%drag_area*norm2(w)*w
+      self%loads(1) = frame_load_t(self%frame, f, cross(arm, f))
+    end associate
+  end subroutine air_drag_evaluate
 end module kinetostatics_force_laws

@@ -169,7 +169,9 @@ contains
   !> contact). Each name list (coordinates, dependents, closures, bodies,
   !> contacts, laws, monitors) is the union, first's then second's new ones;
   !> a quantity holds 0 in the records of the phase that does not have it
-  !> (the caller says which records are which phase). Bodies keep second's
+  !> (the caller says which records are which phase), but for the work of a
+  !> law of first's only, which holds its last value in second's records
+  !> (the work done so far stays in the energy balance). Bodies keep second's
   !> frames where second has them (its mechanism describes the run's end).
   function join_series(first, second) result(s)
     type(mechanism_series_t), intent(in) :: first, second
@@ -219,6 +221,11 @@ contains
     do i = 1, second%n
       call copy_record(second, i, n1 + i, q2, r2, b2, c2, l2, m2)
     end do
+    if (n1 > 0) then
+      do k = 1, first%nl
+        if (.not. any(l2 == l1(k))) s%law_work(l1(k), n1 + 1:n) = first%law_work(k, n1)
+      end do
+    end if
   contains
     !> Record i of `from` into record j of s through the index maps.
     subroutine copy_record(from, i, j, q, r, b, c, l, m)
