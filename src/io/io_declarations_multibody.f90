@@ -115,14 +115,18 @@ module io_declarations_multibody
       high=1e3_wp, meaning='rate of v at t = 0'), &
     declaration_t(groups='sled', name='dphi0', unit='rad/s', default='0', low=-1e3_wp, high=1e3_wp, &
       meaning='rate of the heading at t = 0'), &
+    declaration_t(groups='sled', name='drag_area', unit='m^2', default='0', low=0.0_wp, high=1e3_wp, &
+      meaning='C_d A of the air''s quadratic drag on the bar at its centre of mass (docs/contact.md, Air drag; '// &
+      '0: none)'), &
+    declaration_t(groups='sled contact_model', name='air_density', unit='kg/m^3', default='1.2041', low=0.0_wp, &
+      high=1e3_wp, meaning='density of the air whose drag the bodies with a drag_area feel (default: dry air '// &
+      'at 20 C, 101.325 kPa)'), &
+    declaration_t(groups='sled contact_model', name='wind', shape='3', unit='m/s', default='0, 0, 0', &
+      low=-1e3_wp, high=1e3_wp, meaning='velocity of that air (world): the drag acts on a body''s velocity '// &
+      'relative to it'), &
     ! ---- the contact scenario: &contact_model, &body, &contact (+ the parameters of the friction law)
     declaration_t(groups='contact_model', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
       low=-1e3_wp, high=1e3_wp, meaning='gravity vector'), &
-    declaration_t(groups='contact_model', name='air_density', unit='kg/m^3', default='1.2041', low=0.0_wp, &
-      high=1e3_wp, meaning='density of the air whose drag the bodies with a drag_area feel (default: dry air '// &
-      'at 20 C, 101.325 kPa)'), &
-    declaration_t(groups='contact_model', name='wind', shape='3', unit='m/s', default='0, 0, 0', low=-1e3_wp, &
-      high=1e3_wp, meaning='velocity of that air (world): the drag acts on a body''s velocity relative to it'), &
     declaration_t(groups='body', name='name', kind=VALUE_WORDS, default='none', &
       meaning='the body''s name (required, unique, not ''ground'')'), &
     declaration_t(groups='body', name='mass', unit='kg', default='1', low=0.0_wp, high=1e9_wp, open_low=.true., &

@@ -94,6 +94,11 @@ contains
     call r%get('du0', du0, status)
     call r%get('dv0', dv0, status)
     call r%get('dphi0', dphi0, status)
+    call r%get('drag_area', config%params%drag_area, status)
+    call r%get('air_density', config%params%air_density, status)
+    call r%get('wind', config%params%wind, status)
+    if (status%ok() .and. config%params%drag_area == 0) call r%refuse_given([character(len=11) :: 'air_density', &
+      'wind'], 'the air is for the sled''s drag: give drag_area (C_d A) too', status)
     if (.not. status%ok()) return
     if (2*maxval(inertia) > sum(inertia)) then
       call r%invalid('inertia', format_vector(inertia), 'principal moments (kg m^2) must be >= 0 and each at '// &

@@ -4,7 +4,7 @@
 !> Scenarios, tests and benchmarks build their models here.
 module kinetostatics_models
   use base_kinds, only: wp
-  use base_constants, only: standard_gravity
+  use base_constants, only: standard_gravity, dry_air_density
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use base_text, only: format_short
   use geometry_surface, only: surface_t, surface_point_t
@@ -16,6 +16,7 @@ module kinetostatics_models
   use base_spec, only: spec_t
   use kinetostatics_force_law, only: force_law_t, law_place_t
   use kinetostatics_force_law_factory, only: force_law_from_spec
+  use kinetostatics_force_laws, only: new_air_drag
   use kinetostatics_mechanism, only: mechanism_t
   implicit none (type, external)
   private
@@ -64,6 +65,11 @@ module kinetostatics_models
     !> measurement front_z (the rider's heels and back, METHOD-PART2 B.3)
     !> instead of the force on the front Darboux frame; the two are equal.
     logical :: front_normal_from_cut_force = .false.
+    !> The air's drag on the bar at its centre of mass (air_drag_t, the law
+    !> 'bar.air_drag'): C_d A (0: none), the air's density and velocity
+    real(wp) :: drag_area = 0                   ! m^2
+    real(wp) :: air_density = dry_air_density   ! kg/m^3
+    real(wp) :: wind(3) = 0                     ! m/s, world
   end type sled_params_t
 
   !> A pendulum run as inputs say it (&pendulum): the model and its start.
@@ -346,6 +352,8 @@ contains
         call add_at_both(p%friction(k))
       end do
     end if
+    if (status%ok() .and. p%drag_area /= 0) call m%add_law(new_air_drag('bar.air_drag', bar, &
+      [p%length/2, 0.0_wp, 0.0_wp], p%drag_area, p%air_density, p%wind, status))
     if (.not. status%ok()) return
     call m%set_coordinates([su, sv, sphi])
     if (present(finish)) then

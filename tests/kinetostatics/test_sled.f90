@@ -3,7 +3,8 @@
 !> u2, v2), like the rider's legs (thesis 4.27). Friction laws at its two
 !> contacts: exact Coulomb solve against the incline's closed form, the two
 !> normal-force rules, loads on the bar equal to loads on the Darboux frames,
-!> energy balance with the work integrals.
+!> energy balance with the work integrals; the air's drag (drag_area)
+!> against the closed form of a bar sliding down a frictionless incline.
 program test_sled
   use base_kinds, only: wp
   use base_constants, only: pi
@@ -29,6 +30,7 @@ program test_sled
   call bowl(0.15_wp)
   call darboux_loads_equal_body_loads()
   call energy_balance()
+  call incline_drag()
   call finish_tests('test_sled')
 
 contains
@@ -388,4 +390,50 @@ contains
     print '(a, es10.2, a, es10.2, a)', '  energy balance: ', worst/dissipated, ' of the ', dissipated, &
       ' J dissipated'
   end subroutine energy_balance
+
+  !> The bar from rest on a frictionless plane inclined by theta, pointing
+  !> down the slope (u along it, unit speed), with the air's drag at its
+  !> centre: u'' = g sin theta - k u'^2 (k = rho C_d A/(2 m)), so u' = v_t
+  !> tanh(a t/v_t) and u = v_t^2/a ln cosh(a t/v_t), a = g sin theta, v_t =
+  !> sqrt(a/k); it stays on the line (the drag through the centre along the
+  !> bar turns it not) and E(t) - E(0) is the drag's work. Adams at rtol
+  !> 1e-11 over ~100 steps of a smooth motion: 1e-8 relative.
+  subroutine incline_drag()
+    real(wp), parameter :: theta = 20*pi/180, v_t = 2
+    type(sled_params_t) :: p
+    class(surface_t), allocatable :: plane
+    type(mechanism_ode_t), target :: sys
+    type(ode_integrator_t) :: integ
+    type(ode_options_t) :: opt
+    type(status_t) :: st
+    real(wp), allocatable :: y(:)
+    real(wp) :: t, a, tk, vk, e0
+    plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [cos(theta), 0.0_wp, -sin(theta)], [0.0_wp, 1.0_wp, 0.0_wp], st)
+    a = g*sin(theta)
+    p%air_density = 1.1_wp
+    p%drag_area = 2*p%mass*a/(p%air_density*v_t**2)
+    call build_sled(p, plane, [0.0_wp, 0.0_wp, 0.0_wp], sys%mechanism, st)
+    call sys%mechanism%check_start(sys%work, [0.0_wp, 0.0_wp, 0.0_wp], st)
+    call check(st%ok() .and. sys%mechanism%n_laws == 1, 'incline with drag: starts, one law: '//st%text())
+    if (.not. st%ok() .or. sys%mechanism%n_laws /= 1) return
+    call check(sys%mechanism%laws(1)%law%name == 'bar.air_drag', 'incline with drag: the law bar.air_drag')
+    y = sys%initial_state([0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp])
+    call sys%mechanism%set_velocities(sys%work, [0.0_wp, 0.0_wp, 0.0_wp])
+    call sys%mechanism%energy(tk, vk)
+    e0 = tk + vk
+    opt%rtol = 1e-11_wp
+    opt%atol = 1e-13_wp
+    call integ%start(sys, 0.0_wp, y, opt, st)
+    call integ%advance(2.0_wp, t, y, st)
+    call check(st%ok(), 'incline with drag: integrated 2 s: '//st%text())
+    call check_close(y(4), v_t*tanh(a*t/v_t), 1e-8_wp, 0.0_wp, 'incline with drag: u'' = v_t tanh(a t/v_t)')
+    call check_close(y(1), v_t**2/a*log(cosh(a*t/v_t)), 1e-8_wp, 0.0_wp, &
+                     'incline with drag: u = v_t^2/a ln cosh(a t/v_t)')
+    call check(abs(y(2)) + abs(y(3)) + abs(y(5)) + abs(y(6)) <= 1e-10_wp, 'incline with drag: straight down the slope')
+    call sys%mechanism%set_positions(sys%work, y(1:3), st)
+    call sys%mechanism%set_velocities(sys%work, y(4:6))
+    call sys%mechanism%energy(tk, vk)
+    call check(y(7) < 0, 'incline with drag: the air dissipates')
+    call check_close(tk + vk - e0, y(7), 1e-8_wp, 0.0_wp, 'incline with drag: E(t) - E(0) = the drag''s work')
+  end subroutine incline_drag
 end program test_sled
