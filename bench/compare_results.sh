@@ -39,7 +39,8 @@ else
           inputs/point_mass/elliptic_cylinder.nml inputs/point_mass/elliptic_paraboloid.nml
           inputs/point_mass/hyperbolic_paraboloid.nml inputs/point_mass/plane_coulomb.nml
           inputs/water/demo_slide.nml inputs/design/identify_rider_demo.nml inputs/design/identify_water_demo.nml
-          inputs/design/optimize_table_4_12.nml inputs/sweep/demo_population.nml inputs/geometry/*.nml)
+          inputs/design/optimize_table_4_12.nml inputs/sweep/demo_population.nml inputs/geometry/*.nml
+          inputs/parts/bowl_slide.nml)
 fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -1,7 +1,9 @@
 !> Slides from standard elements: straight (length, slope), curve (radius,
 !> turning angle, direction, slope), helix (radius, turns, drop, direction),
-!> run-out (length, slope) and drop (height, top slope, curve-out radius; the
-!> trap-door start, first in the chain), joined with continuous tangent.
+!> run-out (length, slope), drop (height, top slope, curve-out radius; the
+!> trap-door start, first in the chain) and bowl (a spiral down a spherical
+!> or conical bowl: entry radius, wall slope, drop, turns, direction;
+!> geometry_slide_bowl), joined with continuous tangent and curvature.
 !>
 !> The centerline is built from the horizontal curvature kappa(sigma) and the
 !> gradient g(sigma) = -dz/dsigma as functions of the horizontal arc length
@@ -21,7 +23,9 @@
 !> A drop (geometry_drop_profile) has a gradient of its own that ends at the
 !> next element's: the chain takes that gradient for it and adds the drop's
 !> deviation from it, so the joint after a drop has no step in g and the
-!> drop's own curvature ramps make it curvature-continuous.
+!> drop's own curvature ramps make it curvature-continuous. A bowl's own
+!> kappa and g vary along it: it adds their deviations from its entry values,
+!> blended in by its joints' windows (geometry_slide_bowl).
 !> Heading psi = int kappa and height z = z0 - int g are closed-form; x and y
 !> are int [cos psi, sin psi] dsigma, tabulated at nodes every 0.5 m and
 !> completed by 8-point Gauss-Legendre from the nearest node (no allocation,
@@ -39,13 +43,14 @@ module geometry_slide_elements
   use numerics_quadrature, only: gl8_x, gl8_w
   use geometry_curve, only: curve_t, curve_point_t
   use geometry_drop_profile, only: drop_profile_t, new_drop_profile, smoothstep
+  use geometry_slide_bowl, only: bowl_spiral_t, new_bowl_spiral
   implicit none (type, external)
   private
   public :: slide_element_t, element_chain_curve_t, new_element_chain, slide_points
   public :: element_kinds
 
-  character(len=*), parameter :: element_kinds(5) = [character(len=8) :: 'straight', 'curve', 'helix', 'runout', &
-    'drop']
+  character(len=*), parameter :: element_kinds(6) = [character(len=8) :: 'straight', 'curve', 'helix', 'runout', &
+    'drop', 'bowl']
 
   !> One element as given in the input. Angles in degrees, lengths in m;
   !> slope is the downhill angle (deg, > 0 going down).
@@ -57,7 +62,8 @@ module geometry_slide_elements
     real(wp) :: angle_deg = 0       ! deg, turning angle (curve)
     character(len=5) :: direction = 'left'   ! 'left' or 'right' (curve, helix)
     real(wp) :: turns = 0           ! full turns (helix)
-    real(wp) :: drop = 0            ! m, height lost over the helix or the drop
+    real(wp) :: drop = 0            ! m, height lost over the helix, the drop or the bowl
+    character(len=6) :: bowl_profile = 'sphere'   ! 'sphere' or 'cone' (bowl)
   end type slide_element_t
 
   type, extends(curve_t) :: element_chain_curve_t
@@ -73,6 +79,7 @@ module geometry_slide_elements
     real(wp) :: total = 0                   ! m, horizontal length
     logical :: starts_with_drop = .false.   ! element 1 is a drop
     type(drop_profile_t) :: drop            ! its profile (starts_with_drop)
+    type(bowl_spiral_t), allocatable :: bowls(:)   ! the bowls' spirals, in the order of the elements
   contains
     procedure :: evaluate => chain_evaluate
     procedure :: domain => chain_domain
@@ -90,7 +97,7 @@ contains
     real(wp), intent(in) :: start(3), heading_deg, transition
     type(status_t), intent(out) :: status
     type(element_chain_curve_t) :: c
-    integer :: n, i, k, nn
+    integer :: n, i, k, nn, nb
     real(wp) :: len_h(size(elements)), sgn, a, b, xy(2), s
     character(len=16) :: idx
     character(len=:), allocatable :: why
@@ -103,12 +110,12 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'slide elements: transition length must be >= 0 m')
       return
     end if
-    allocate (c%kappa(n), c%grad(n), c%ends(n))
+    allocate (c%kappa(n), c%grad(n), c%ends(n), c%bowls(0))
     do i = 1, n
       write (idx, '(i0)') i
       associate (e => elements(i))
         sgn = 1
-        if (e%kind == 'curve' .or. e%kind == 'helix') then
+        if (e%kind == 'curve' .or. e%kind == 'helix' .or. e%kind == 'bowl') then
           if (e%direction == 'right') then
             sgn = -1
           else if (e%direction /= 'left') then
@@ -169,8 +176,19 @@ contains
           c%kappa(i) = 0
           c%grad(i) = 0     ! set to the next element's gradient below
           len_h(i) = 0
+        case ('bowl')
+          c%bowls = [c%bowls, new_bowl_spiral(e%bowl_profile, e%radius, e%slope_deg, e%drop, e%turns, sgn, status)]
+          if (.not. status%ok()) then
+            why = status%text()
+            call fail(why)
+            return
+          end if
+          nb = size(c%bowls)
+          len_h(i) = c%bowls(nb)%length
+          c%kappa(i) = c%bowls(nb)%kappa_ref
+          c%grad(i) = c%bowls(nb)%grad_ref
         case default
-          call fail('kind must be one of straight, curve, helix, runout, drop')
+          call fail('kind must be one of straight, curve, helix, runout, drop, bowl')
           return
         end select
       end associate
@@ -211,6 +229,29 @@ contains
             'tube does not fold)')
           return
         end if
+      end if
+    end do
+    ! the bowls' own curvature and gradient vary along them: each is blended
+    ! in through its joints' windows, so a joint without a transition is sharp
+    nb = 0
+    do i = 1, n
+      if (elements(i)%kind /= 'bowl') cycle
+      write (idx, '(i0)') i
+      nb = nb + 1
+      if (.not. transition > 0) then
+        call fail('transition_length = 0 would make the bowl''s joints sharp (its curvature and gradient vary '// &
+                  'along it and are blended into its neighbours'' over the transitions); give transition_length > 0')
+        return
+      end if
+      a = 0
+      b = 0
+      if (i > 1) a = c%width(i - 1)
+      if (i < n) b = c%width(i)
+      call c%bowls(nb)%place(c%ends(i) - len_h(i), a, b, status)
+      if (.not. status%ok()) then
+        why = status%text()
+        call fail(why)
+        return
       end if
     end do
     ! x, y at the nodes by Gauss-Legendre over each node interval
@@ -257,7 +298,7 @@ contains
     class(element_chain_curve_t), intent(in) :: c
     real(wp), intent(in) :: sigma
     real(wp), intent(out) :: psi, k(0:3), g(0:3), gint
-    real(wp) :: d(0:3), p, t, w, dk, dg, ipart
+    real(wp) :: d(0:3), p, t, w, dk, dg, ipart, dev(0:3)
     integer :: j, m
     k = 0; g = 0
     k(0) = c%kappa(1); g(0) = c%grad(1)
@@ -283,6 +324,14 @@ contains
       g = g + d
       gint = gint + ipart
     end if
+    if (.not. allocated(c%bowls)) return
+    do j = 1, size(c%bowls)
+      call c%bowls(j)%deviation(sigma, d, p, dev, ipart)
+      k = k + d
+      psi = psi + p
+      g = g + dev
+      gint = gint + ipart
+    end do
   end subroutine profile
 
   pure function direction_xy(c, sigma) result(xy)

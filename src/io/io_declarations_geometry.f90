@@ -65,24 +65,26 @@ module io_declarations_geometry
       default='none', low=1.0_wp, high=real(max_elements, wp), &
       meaning='number of elements, the number of kinds given (or the rows of `elements_file`); required'), &
     declaration_t(groups='slide_elements', name='kind', kind=VALUE_WORDS, shape='one per element', &
-      default='none', choices='straight curve helix runout drop', meaning='element kind (a drop only first)'), &
+      default='none', choices='straight curve helix runout drop bowl', meaning='element kind (a drop only first)'), &
     declaration_t(groups='slide_elements', name='length', shape='one per element', unit='m', default='0', &
       low=0.0_wp, high=1e4_wp, meaning='horizontal length, > 0 (straight, runout)'), &
     declaration_t(groups='slide_elements', name='slope_deg', shape='one per element', unit='deg', &
       default='0', low=-45.0_wp, high=85.0_wp, meaning='downhill slope, > 0 goes down: in [-45, 45] (straight, '// &
-      'curve, runout); a drop''s top slope in [45, 85] (drop)'), &
+      'curve, runout); a drop''s top slope in [45, 85] (drop); the wall''s slope at the entry, in (0, 85] (bowl)'), &
     declaration_t(groups='slide_elements', name='radius', shape='one per element', unit='m', default='0', &
       low=0.0_wp, high=1e4_wp, meaning='horizontal radius, > 0 (curve, helix); the curve-out''s radius in '// &
-      'its vertical plane, > 0 (drop)'), &
+      'its vertical plane, > 0 (drop); the entry''s distance from the axis, > 0 (bowl)'), &
     declaration_t(groups='slide_elements', name='angle_deg', shape='one per element', unit='deg', &
       default='0', low=0.0_wp, high=720.0_wp, meaning='turning angle, >= 1e-6 (curve)'), &
     declaration_t(groups='slide_elements', name='direction', kind=VALUE_WORDS, shape='one per element', &
-      default='''left''', choices='left right', meaning='turning direction (curve, helix)'), &
+      default='''left''', choices='left right', meaning='turning direction (curve, helix, bowl)'), &
     declaration_t(groups='slide_elements', name='turns', shape='one per element', unit='1', default='0', &
-      low=0.0_wp, high=100.0_wp, meaning='helix turns, > 0 (helix)'), &
+      low=0.0_wp, high=100.0_wp, meaning='turns about the axis, > 0 (helix, bowl)'), &
     declaration_t(groups='slide_elements', name='drop', shape='one per element', unit='m', default='0', &
       low=-1e4_wp, high=1e4_wp, meaning='height lost over the helix, at most 2 pi radius turns (helix); over the '// &
-      'whole drop, fall and curve-out, > 0 (drop)'), &
+      'whole drop, fall and curve-out, > 0 (drop); from the bowl''s entry to its outlet, > 0 (bowl)'), &
+    declaration_t(groups='slide_elements', name='bowl_profile', kind=VALUE_WORDS, shape='one per element', &
+      default='''sphere''', choices='sphere cone', meaning='the bowl''s profile: a sphere or a cone (bowl)'), &
     declaration_t(groups='slide_elements', name='start', shape='3', unit='m', default='0, 0, 0', &
       low=-1e6_wp, high=1e6_wp, meaning='first centerline point'), &
     declaration_t(groups='slide_elements', name='heading_deg', unit='deg', default='0', low=-360.0_wp, &

@@ -136,6 +136,11 @@ contains
       integer :: outcome
       select case (c)
       case (1)
+        if (lower_trim(cell) == 'bowl') then
+          call refuse(table_columns(c), cell, 'a bowl is not a table row (its bowl_profile has no column): give '// &
+                      'a slide with a bowl in &slide_elements')
+          return
+        end if
         if (all(lower_trim(cell) /= [character(len=8) :: 'straight', 'curve', 'helix', 'runout', 'drop'])) then
           call refuse(table_columns(c), cell, 'the kind must be straight, curve, helix, runout or drop')
           return
@@ -203,11 +208,17 @@ contains
   !> kind does not use must be its default; the values a kind needs must be
   !> given. `variable` is the namelist's name (length, angle_deg, ...).
   subroutine check_element(kind, length, slope_deg, radius, angle_deg, direction, turns, drop, variable, &
-                                value, allowed)
+                                value, allowed, bowl_profile)
     character(len=*), intent(in) :: kind, direction
     real(wp), intent(in) :: length, slope_deg, radius, angle_deg, turns, drop
     character(len=:), allocatable, intent(out) :: variable, value, allowed
+    character(len=*), intent(in), optional :: bowl_profile   ! 'sphere' (the default) when absent
+    character(len=:), allocatable :: profile
     variable = ''; value = ''; allowed = ''
+    profile = 'sphere'
+    if (present(bowl_profile)) profile = trim(bowl_profile)
+    if (trim(kind) /= 'bowl' .and. profile /= 'sphere') call set('bowl_profile', ''''//profile//'''', &
+      'a '//trim(kind)//' is no bowl; give ''sphere'' (the default) or leave it out')
     select case (trim(kind))
     case ('straight', 'runout')
       call unused(radius, 'radius'); call unused(angle_deg, 'angle_deg')
@@ -242,6 +253,18 @@ contains
         'a drop needs the radius of its curve-out > 0 (m)')
       if (len(variable) == 0 .and. .not. drop > 0) call set('drop', format_real(drop), &
         'a drop needs the height it loses > 0 (m)')
+    case ('bowl')
+      call unused(length, 'length'); call unused(angle_deg, 'angle_deg')
+      if (len(variable) == 0 .and. profile /= 'sphere' .and. profile /= 'cone') call set('bowl_profile', &
+        ''''//profile//'''', 'a bowl''s profile is ''sphere'' or ''cone''')
+      if (len(variable) == 0 .and. .not. radius > 0) call set('radius', format_real(radius), &
+        'a bowl needs its entry''s distance from its axis > 0 (m)')
+      if (len(variable) == 0 .and. .not. (slope_deg > 0 .and. slope_deg <= 85)) call set('slope_deg', &
+        format_real(slope_deg), 'a bowl''s wall rises at its entry at a slope in (0, 85] (deg)')
+      if (len(variable) == 0 .and. .not. drop > 0) call set('drop', format_real(drop), &
+        'a bowl needs the height it loses from its entry to its outlet > 0 (m)')
+      if (len(variable) == 0 .and. .not. turns > 0) call set('turns', format_real(turns), &
+        'a bowl needs the turns of its spiral > 0')
     end select
   contains
     !> Only a drop is steeper than 45 deg.

@@ -206,6 +206,7 @@ contains
     integer :: n, i, degree
     character(len=8), allocatable :: kind(:)
     character(len=5), allocatable :: direction(:)
+    character(len=6), allocatable :: bowl_profile(:)
     real(wp), allocatable :: length(:), slope_deg(:), radius(:), angle_deg(:), turns(:), drop(:)
     logical, allocatable :: given_kind(:)
     real(wp) :: start(3), heading_deg, transition_length, fit_spacing, smoothing
@@ -233,8 +234,8 @@ contains
     if (.not. status%ok()) return
     if (len_trim(elements_file) > 0) then
       ! the elements from a manufacturer's table (io_element_table), checked there
-      call r%refuse_given([character(len=9) :: 'kind', 'length', 'slope_deg', 'radius', 'angle_deg', 'direction', &
-                           'turns', 'drop'], 'the elements come from elements_file', status)
+      call r%refuse_given([character(len=12) :: 'kind', 'length', 'slope_deg', 'radius', 'angle_deg', 'direction', &
+                           'turns', 'drop', 'bowl_profile'], 'the elements come from elements_file', status)
       if (status%ok()) call read_element_table(input%resolve_path(elements_file), max_elements, table, status)
       if (.not. status%ok()) then
         call prefix_status(status, r%where('elements_file')//': &'//g//': elements_file = '''// &
@@ -246,6 +247,8 @@ contains
       if (.not. status%ok()) return
       kind = table%kind; direction = table%direction; length = table%length; slope_deg = table%slope_deg
       radius = table%radius; angle_deg = table%angle_deg; turns = table%turns; drop = table%drop
+      allocate (bowl_profile(n))
+      bowl_profile = 'sphere'   ! a table has no bowl (io_element_table)
       allocate (given_kind(n), e(n))
       given_kind = .true.
     else
@@ -258,8 +261,8 @@ contains
       end if
       lim = 'n_elements = '//format_integer(n)
       allocate (kind(n), direction(n), length(n), slope_deg(n), radius(n), angle_deg(n), turns(n), drop(n), &
-                given_kind(n), e(n))
-      kind = ''; direction = 'left'
+                given_kind(n), e(n), bowl_profile(n))
+      kind = ''; direction = 'left'; bowl_profile = 'sphere'
       length = 0; slope_deg = 0; radius = 0; angle_deg = 0; turns = 0; drop = 0
       call r%get_parts('kind', kind, lim, status, given=given_kind)
       call r%get_parts('direction', direction, lim, status)
@@ -269,6 +272,7 @@ contains
       call r%get_parts('angle_deg', angle_deg, lim, status)
       call r%get_parts('turns', turns, lim, status)
       call r%get_parts('drop', drop, lim, status)
+      call r%get_parts('bowl_profile', bowl_profile, lim, status)
     end if
     call r%get('start', start, status)
     call r%get('heading_deg', heading_deg, status)
@@ -289,11 +293,12 @@ contains
     do i = 1, n
       if (.not. status%ok()) return
       call check_element(kind(i), length(i), slope_deg(i), radius(i), angle_deg(i), direction(i), turns(i), &
-                         drop(i), variable, value, allowed)
+                         drop(i), variable, value, allowed, bowl_profile(i))
       if (len(variable) > 0) call r%invalid(part(variable), value, allowed, status)
       if (.not. status%ok()) return
       e(i) = slide_element_t(kind=kind(i), length=length(i), slope_deg=slope_deg(i), radius=radius(i), &
-                             angle_deg=angle_deg(i), direction=direction(i), turns=turns(i), drop=drop(i))
+                             angle_deg=angle_deg(i), direction=direction(i), turns=turns(i), drop=drop(i), &
+                             bowl_profile=bowl_profile(i))
     end do
     described%elements = e
     described%start = start

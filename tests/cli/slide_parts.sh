@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # The slide parts of issue 26 at the command line (their physics:
 # tests/geometry/test_slide_parts.f90; every shipped input in inputs/parts/
-# runs and is plotted through cli_every_input and cli_plot_scripts): a bowl
-# (a surface of revolution) does not answer the slide query, so a ride or a
+# runs and is plotted through cli_every_input and cli_plot_scripts): a bare
+# surface of revolution does not answer the slide query, so a ride or a
 # water run on it is refused before any work (exit 1, no file), the message
 # naming the surface; a drop that is not the first element is refused, and
-# so are sharp joints (transition_length = 0) that change slope or curvature.
+# so are sharp joints (transition_length = 0) that change slope or curvature,
+# and bowl elements that do not fit; the rider and the water start inside a
+# bowl.
 set -u
 slidesim=$1
+root=$(pwd)   # tests run from the repository root
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0; checks=0
@@ -44,5 +47,36 @@ refused sharp_joint "&slide_elements: slide elements: transition_length = 0 make
 &geometry kind = 'slide' /
 &slide_elements n_elements = 2, transition_length = 0, kind = 'straight', 'curve', length = 5, 0,
   slope_deg = 10, 10, radius = 0, 8, angle_deg = 0, 90 /"
+# a bowl element (tests/geometry/test_slide_bowl.f90): what does not fit is
+# refused with the element, the value and why; a bowl_profile on another
+# kind is refused, and a bowl in an element table (no bowl_profile column)
+refused bowl_too_deep "slide element 2 (bowl): drop = 3.0 m reaches the bottom of the spherical bowl" \
+"&run scenario = 'geometry' /
+&geometry kind = 'slide' /
+&slide_elements n_elements = 2, kind = 'straight', 'bowl', length = 5, 0, slope_deg = 10, 50,
+  radius = 0, 6, drop = 0, 3, turns = 0, 1 /"
+refused bowl_profile_elsewhere "&slide_elements: bowl_profile(1) = 'cone' is not allowed: a straight is no bowl" \
+"&run scenario = 'geometry' /
+&geometry kind = 'slide' /
+&slide_elements n_elements = 2, kind = 'straight', 'bowl', length = 5, 0, slope_deg = 10, 50,
+  radius = 0, 6, drop = 0, 2, turns = 0, 1, bowl_profile = 'cone' /"
+printf 'kind, length, slope, radius, drop, turns\nstraight, 5, 10\nbowl, 0, 50, 6, 2, 1\n' >"$work/bowl_table.csv"
+refused bowl_table "bowl_table.csv:3: column 1 (kind): 'bowl': element 2: a bowl is not a table row" \
+"&run scenario = 'geometry' /
+&geometry kind = 'slide' /
+&slide_elements elements_file = 'bowl_table.csv' /"
+# the rider's and the water's start inside the bowl (20 m along the
+# centerline, in its spiral): the rider's start closes and presses (--check
+# builds it), the water runs from there to the end of the slide
+(cd "$work" && "$slidesim" --check --set rider%u0=20 --set water%u0=20 "$root/inputs/parts/bowl.nml" \
+  >bowl_check.out 2>&1); got=$?
+check '[ $got = 0 ] && grep -q "input ok" "$work/bowl_check.out"' "rider start in the bowl: exit $got: $(cat "$work/bowl_check.out")"
+printf "&run scenario = 'water', output = 'bowl_water.h5' /\n&surface kind = 'slide', geometry_file = '%s' /\n%s\n" \
+  "$root/inputs/parts/bowl_slide.nml" \
+  "&water flow_rate = 0.004, start = 'edges', u0 = 20.0, v_left0 = 1.9, v_right0 = 1.2415926535897932 /" \
+  >"$work/bowl_water.nml"
+(cd "$work" && "$slidesim" bowl_water.nml >bowl_water.out 2>&1); got=$?
+check '[ $got = 0 ] && grep -q "stopped at *end of slide" "$work/bowl_water.out"' \
+  "water start in the bowl: exit $got: $(cat "$work/bowl_water.out")"
 echo "$((checks - failures)) passed, $failures failed"
 [ $failures = 0 ]

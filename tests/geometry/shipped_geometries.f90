@@ -2,8 +2,8 @@
 !> point 2): inputs/geometry/*.nml, inputs/demo_slide/slide.nml (the demo
 !> slide of the ride, water, sweep, identification and sled inputs and of
 !> builtin:demo_slide, the default run's), inputs/design/second_slide.nml,
-!> inputs/parts/drop_slide.nml and inputs/parts/halfpipe_slide.nml
-!> (second_slide_water.nml's). Each description is written here by hand from
+!> (second_slide_water.nml's), inputs/parts/drop_slide.nml,
+!> inputs/parts/halfpipe_slide.nml and inputs/parts/bowl_slide.nml. Each description is written here by hand from
 !> its input file (the same values, in the same arithmetic as the reader:
 !> degrees times pi/180), the B-spline's points read from its CSV file by
 !> plain Fortran. This program links the geometry layer only (tests/
@@ -46,6 +46,7 @@ program shipped_geometries
   call put('design_second_slide', second_slide(), 600, 36)
   call put('parts_drop_slide', drop_slide(), 600, 36)
   call put('parts_halfpipe_slide', halfpipe_slide(), 600, 48)
+  call put('parts_bowl_slide', bowl_slide(), 800, 36)
   if (failures > 0) then
     print '(i0, a)', failures, ' shipped geometries not built'
     error stop 1
@@ -176,6 +177,21 @@ contains
       element('straight', 6.0_wp, 6.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
     d%slide%section%parts = [section_part_description_t(kind='flume', radius=2.0_wp, wall=1.5_wp)]
   end function halfpipe_slide
+
+  !> inputs/parts/bowl_slide.nml (the bowl's profile: 'sphere', the default)
+  function bowl_slide() result(d)
+    type(geometry_description_t) :: d
+    d%kind = 'slide'
+    d%slide%elements%start = [0.0_wp, 0.0_wp, 10.0_wp]
+    d%slide%elements%transition_length = 2.0_wp
+    d%slide%elements%exact = .true.
+    d%slide%elements%elements = [ &
+      element('straight', 12.0_wp, 10.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
+      element('bowl', 0.0_wp, 50.0_wp, 6.0_wp, 0.0_wp, 'left', 1.0_wp, 2.0_wp), &
+      element('straight', 10.0_wp, 14.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
+      element('runout', 8.0_wp, 2.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
+    d%slide%section%parts = [section_part_description_t(kind='flume', radius=0.6_wp, wall=0.3_wp)]
+  end function bowl_slide
 
   !> inputs/geometry/flume.nml
   function flume() result(d)

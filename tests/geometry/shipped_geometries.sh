@@ -17,7 +17,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 inputs=(inputs/geometry/*.nml inputs/demo_slide/slide.nml inputs/design/second_slide.nml inputs/parts/drop_slide.nml
-        inputs/parts/halfpipe_slide.nml)
+        inputs/parts/halfpipe_slide.nml inputs/parts/bowl_slide.nml)
 for input in "${inputs[@]}"; do
   name=$(echo "${input#inputs/}" | tr '/' '_' | sed 's/\.nml$//')
   if ! "$slidesim" -q -o "$work/$name.h5" "$input" >"$work/$name.out" 2>&1; then
