@@ -186,7 +186,9 @@ contains
   !> The impacts table of a flight (docs/outputs.md, /contact/impacts), if
   !> it had any: one row per impact. Its place is the contact point of the
   !> first record at the impact's time (the driver records every impact: the
-  !> state after it, the flight's at a closing): the landing point.
+  !> state after it, the flight's at a closing): the landing point. A run
+  !> that was one flight only (it never closed: the records are the flight's
+  !> and hold no contact) takes it from the flight's own gap points.
   subroutine write_impacts(file, flight, status)
     type(result_file_t), intent(inout) :: file
     type(flight_ode_t), intent(in) :: flight
@@ -200,6 +202,12 @@ contains
       allocate (position(3, size(impacts)))
       do j = 1, size(impacts)
         i = findloc(s%time(:s%n), impacts(j)%time, dim=1)
+        if (c == 0 .and. i > 0 .and. .not. allocated(flight%closed) .and. allocated(flight%gap_point)) then
+          if (i <= size(flight%gap_point, 2)) then
+            position(:, j) = flight%gap_point(:, i)
+            cycle
+          end if
+        end if
         if (c == 0 .or. i == 0) then
           call set_status(status, STATUS_INTERNAL, 'the impact at t = '//format_real(impacts(j)%time)// &
                           ' s has no record of contact '''//flight%contact_name//''' at its time')
