@@ -33,7 +33,8 @@ module io_input_declarations
     '&pendulum', '&fourbar', '&sled', '&contact_model', '&body', '&contact']
   !> A line under a group's heading, where the group needs one.
   character(len=*), parameter :: reference_notes(size(reference_groups)) = [character(len=240) :: '', &
-    'The ride''s `&water_solver` (the integration of its water) has the same variables. Some scenarios '// &
+    'The ride''s `&water_solver` (the integration of its water) has the same variables but `accuracy`. '// &
+    'Some scenarios '// &
     'start from defaults of their own (the ride, the water, optimize: their pages).', '', &
     'A closed-form tube instead of `&surface` (docs/water.md).', '', &
     'One group per inlet: more water joining along the slide (docs/water.md, "Several inlets"), in order of '// &

@@ -24,7 +24,7 @@ module scenarios_ride
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   use io_input, only: input_text_t, check_known_groups, format_real, invalid, where_given
   use io_run_config, only: run_config_t
-  use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
+  use io_solver_config, only: solver_config_t, read_solver_config, apply_accuracy, check_output_count
   use io_geometry_config, only: geometry_groups
   use io_rider_config, only: read_rider_config, read_ride_gravity
   use io_evaluation_config, only: evaluation_config_t, read_evaluation_config
@@ -124,8 +124,10 @@ contains
     call check_known_groups(input, ride_groups, status, repeatable=[character(len=5) :: 'inlet'])
     defaults%options = description%options%ode
     defaults%output_step = description%options%output_step
-    if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults)
+    if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults, presets=.true.)
     if (status%ok()) call build_water(input, description%water, status, stage=.true.)
+    ! a preset of &solver accuracy sets both integrators' tolerances
+    if (status%ok()) call apply_accuracy(input, solver, description%water%solver%ode, status)
     ! one gravity for the water and the rider
     if (status%ok()) call read_ride_gravity(input, gravity, status)
     if (status%ok()) description%water%gravity = gravity

@@ -24,7 +24,7 @@ module scenarios_sweep
                       where_given
   use io_output_files, only: claim_output
   use io_run_config, only: run_config_t
-  use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
+  use io_solver_config, only: solver_config_t, read_solver_config, apply_accuracy, check_output_count
   use io_rider_config, only: read_rider_config, read_ride_gravity, require_coulomb_rider, open_rider_group
   use rider_model, only: rider_coulomb_mu
   use io_sweep_config, only: sweep_config_t, read_sweep_config
@@ -69,8 +69,10 @@ contains
     call check_known_groups(input, [ride_groups, 'sweep         '], status)
     defaults%options = options%ode
     defaults%output_step = options%output_step
-    if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults)
+    if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults, presets=.true.)
     if (status%ok()) call build_water(input, sweep%water, status, stage=.true.)
+    ! a preset of &solver accuracy sets both integrators' tolerances
+    if (status%ok()) call apply_accuracy(input, solver, sweep%water%solver%ode, status)
     ! one gravity for the water and the rider
     if (status%ok()) call read_ride_gravity(input, gravity, status)
     if (status%ok()) sweep%water%gravity = gravity

@@ -106,8 +106,9 @@ contains
       paired = paired//trim(swept_names(k))//' '
     end do
     call check(trim(d%choices) == trim(paired), '&sweep paired: the swept names, in order')
-    call check(size(declared_names('water')) == 20 .and. size(declared_names('solver')) == 8, &
-               'the names of &water and &solver')
+    call check(size(declared_names('water')) == 20 .and. size(declared_names('solver')) == 9 .and. &
+               size(declared_names('water_solver')) == 8, 'the names of &water, &solver and &water_solver '// &
+               '(accuracy: &solver only)')
     ! what a fit estimates has the range of the variable it estimates
     do k = 1, declaration_count()
       d = declaration(k)
