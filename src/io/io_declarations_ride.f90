@@ -22,9 +22,9 @@ module io_declarations_ride
     declaration_t(groups='solver water_solver', name='method', kind=VALUE_WORDS, default='''adams''', &
       choices='adams bdf', meaning='integration method: variable-order Adams (non-stiff) or BDF (stiff)'), &
     declaration_t(groups='solver', name='accuracy', kind=VALUE_WORDS, default='''tolerances''', &
-      choices='tolerances reference report', meaning='ride, sweep: tolerances (rtol, atol as given), or both '// &
-      'integrators'' by what they guarantee: every report number within 1e-6 (reference) or 1e-4 (report) '// &
-      'of rtol 1e-12 (docs/accuracy.md)'), &
+      choices='tolerances reference report', meaning='ride, sweep: tolerances (rtol, atol as given) or a preset '// &
+      'of both integrators'': every report number within 1e-6 (reference) or 1e-4 (report) '// &
+      'of rtol 1e-12 (docs/accuracy.md); a sweep giving no rtol, atol: report, not the default'), &
     declaration_t(groups='solver water_solver', name='rtol', unit='1', default='1e-10', low=1e-14_wp, &
       high=1e-2_wp, meaning='relative tolerance'), &
     declaration_t(groups='solver water_solver', name='atol', unit='units of the state', default='1e-10', &

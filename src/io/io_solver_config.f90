@@ -27,6 +27,7 @@ module io_solver_config
     !> &solver accuracy: 'tolerances' (rtol and atol as given) or a preset
     !> of a ride's two integrators (apply_accuracy)
     character(len=16) :: accuracy = 'tolerances'
+    logical :: accuracy_given = .false. !< &solver accuracy was given (else the scenario's default)
   end type solver_config_t
 
 contains
@@ -72,6 +73,7 @@ contains
     end if
     if (.not. status%ok()) return
     config%duration_given = r%has('duration')
+    config%accuracy_given = r%group == 'solver' .and. r%has('accuracy')
     if (config%output_step > config%duration .and. config%duration_given) then
       call r%invalid('output_step', format_real(config%output_step), &
                      'must not exceed duration = '//format_real(config%duration)//' s', status)
@@ -82,8 +84,11 @@ contains
 
   !> &solver accuracy: a preset sets rtol and atol of both a ride's
   !> integrators, the rider's (`solver`) and the water's (`water`, read from
-  !> &water_solver); 'tolerances' leaves them as given. A preset and a
-  !> tolerance given together are refused (one would silently win).
+  !> &water_solver); 'tolerances' leaves them as given. A preset given with
+  !> a tolerance given is refused (one would silently win); a scenario's
+  !> default preset (the sweep's 'report', accuracy not given) yields to a
+  !> tolerance given: the input's tolerances are used, as they were before
+  !> the sweep had a default preset.
   subroutine apply_accuracy(input, solver, water, status)
     type(input_text_t), intent(in) :: input
     type(solver_config_t), intent(inout) :: solver
@@ -95,6 +100,13 @@ contains
     logical :: found
     integer :: k
     if (.not. status%ok() .or. solver%accuracy == 'tolerances') return
+    if (.not. solver%accuracy_given) then
+      do k = 1, size(groups)
+        call open_group(input, trim(groups(k)), r, status)
+        if (r%has('rtol') .or. r%has('atol')) solver%accuracy = 'tolerances'
+      end do
+      if (.not. status%ok() .or. solver%accuracy == 'tolerances') return
+    end if
     do k = 1, size(groups)
       call open_group(input, trim(groups(k)), r, status)
       call r%refuse_given(['rtol', 'atol'], 'not with &solver accuracy = '''//trim(solver%accuracy)// &

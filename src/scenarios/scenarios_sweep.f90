@@ -69,6 +69,9 @@ contains
     call check_known_groups(input, [ride_groups, 'sweep         '], status)
     defaults%options = options%ode
     defaults%output_step = options%output_step
+    ! a sweep rides at 'report' unless the input gives accuracy or a tolerance
+    ! (the shipped sweep's reported numbers measured there: docs/accuracy.md)
+    defaults%accuracy = 'report'
     if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults, presets=.true.)
     if (status%ok()) call build_water(input, sweep%water, status, stage=.true.)
     ! a preset of &solver accuracy sets both integrators' tolerances

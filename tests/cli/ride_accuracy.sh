@@ -9,7 +9,8 @@
 # the bit). Refused before any work (exit 1, the group, the variable and
 # the value named): a preset with a tolerance still given in &solver or in
 # &water_solver, a word that is no preset, a preset in a scenario other
-# than the ride and the sweep. The sweep takes it (--check).
+# than the ride and the sweep. A sweep rides at 'report' when its input
+# gives no tolerance, at the tolerances given otherwise.
 set -u
 slidesim=$1
 repo=$(pwd)   # tests run from the repository root
@@ -107,10 +108,45 @@ refused no_preset "&solver: accuracy = .?fast.? is not allowed.*reference.*repor
 refused point_mass "&solver: accuracy = .?report.? .*only the ride and the sweep" \
   --set solver%accuracy=report "$repo/inputs/parts/bowl_point_mass.nml"
 
-# ---- the sweep takes it (checked, not run)
-"$slidesim" --check --unset solver%rtol --unset solver%atol --unset water_solver%rtol --unset water_solver%atol \
-  --set solver%accuracy=report "$repo/inputs/sweep/demo_population.nml" >"$work/sweep.out" 2>&1; got=$?
-check '[ $got = 0 ]' "sweep with accuracy = 'report': exit status $got ($(cat "$work/sweep.out"))"
+# ---- the sweep: 'report' by default when the input gives no tolerance (its
+# four unset: the same CSV, to the bit, as accuracy = 'report' given, and
+# fewer steps than the shipped sweep); the tolerances given win over that
+# default (the shipped sweep, which gives them: the same CSV as with
+# accuracy = 'tolerances' given); 'report' given with them is refused
+sweep_input=$repo/inputs/sweep/demo_population.nml
+sweep() {   # name, arguments...
+  local name=$1; shift
+  "$slidesim" -q -o "$work/$name.h5" --set sweep%threads=1 "$@" "$sweep_input" >"$work/$name.out" 2>"$work/$name.err"
+}
+sweep sweep_default "${unset_tolerances[@]}"; got=$?
+check '[ $got = 0 ]' "sweep without tolerances: exit status $got ($(cat "$work/sweep_default.err"))"
+sweep sweep_report "${unset_tolerances[@]}" --set solver%accuracy=report; got=$?
+check '[ $got = 0 ]' "sweep with accuracy = 'report': exit status $got ($(cat "$work/sweep_report.err"))"
+sweep sweep_shipped; got=$?
+check '[ $got = 0 ]' "the shipped sweep: exit status $got ($(cat "$work/sweep_shipped.err"))"
+sweep sweep_tolerances --set solver%accuracy=tolerances; got=$?
+check '[ $got = 0 ]' "sweep with accuracy = 'tolerances': exit status $got ($(cat "$work/sweep_tolerances.err"))"
+"$python" - "$work" <<'EOF2' || failures=$((failures + 1))
+import csv, sys
+work = sys.argv[1]
+def rows(name):
+    with open(f"{work}/{name}.csv", newline="") as f:
+        return [{k: v for k, v in row.items() if k != "wall_time"} for row in csv.DictReader(f)]
+failed = False
+for a, b, why in [("sweep_default", "sweep_report", "a sweep given no tolerance rides at 'report'"),
+                  ("sweep_shipped", "sweep_tolerances", "a sweep's tolerances given win over its default")]:
+    if rows(a) != rows(b):
+        print(f"FAIL {why}: {a}.csv and {b}.csv differ")
+        failed = True
+steps = lambda name: sum(float(row["steps"]) for row in rows(name))
+if not steps("sweep_default") < steps("sweep_shipped"):
+    print(f"FAIL a sweep at 'report' takes no fewer steps ({steps('sweep_default')}) than the shipped "
+          f"sweep ({steps('sweep_shipped')})")
+    failed = True
+sys.exit(1 if failed else 0)
+EOF2
+refused sweep_with_rtol "demo_population.nml:13.*&solver: rtol = 1e-10 .*accuracy = 'report'" \
+  --set solver%accuracy=report "$sweep_input"
 
 [ "$failures" = 0 ] && echo "ride_accuracy: all checks passed"
 [ "$failures" = 0 ]
