@@ -4,7 +4,7 @@
 Usage: bench/accuracy_study.py BUILD [--quick] [--presets] [--sweep] [--plain]
 
 For every shipped ride (inputs/default.nml, inputs/ride/demo_slide.nml,
-inputs/parts/drop.nml, inputs/parts/halfpipe.nml) and the two riders of the
+inputs/parts/drop.nml, inputs/parts/halfpipe.nml, inputs/parts/bowl.nml) and the two riders of the
 shipped sweep (inputs/sweep/demo_population.nml) on the default slide, the
 ride is run with both integrators (the rider's &solver and the water's &water_solver) at
 rtol = 1e-4 ... 1e-11 (atol = 10 rtol, as the shipped 1e-10 / 1e-9) and
@@ -77,6 +77,7 @@ def cases():
         ("ride/demo_slide", os.path.join(ROOT, "inputs/ride/demo_slide.nml"), []),
         ("parts/drop", os.path.join(ROOT, "inputs/parts/drop.nml"), []),
         ("parts/halfpipe", os.path.join(ROOT, "inputs/parts/halfpipe.nml"), []),
+        ("parts/bowl", os.path.join(ROOT, "inputs/parts/bowl.nml"), []),
         ("female 50 kg", default, ["rider%sex=female", "rider%mass=50", "rider%height=1.6",
                                    "water%flow_rate=0.004"]),
         ("male 100 kg", default, ["rider%sex=male", "rider%mass=100", "rider%height=1.9",
