@@ -18,10 +18,13 @@
 !>   dynamics  kinetostatics_mechanism_dynamics: the equations of motion;
 !>   twists    kinetostatics_mechanism_twists: the mass matrix and the
 !>             normal-force maps from the partial twists;
-!> and the work arrays and the cache of the last dynamics in a workspace
+!> and the results of an evaluation (cut forces, rates, M, normal forces,
+!> the laws' powers and roots, the contacts' kinematics), the work arrays and
+!> the cache of the last dynamics in a workspace
 !> (kinetostatics_mechanism_workspace) that the caller owns (the ODE object
 !> of an integration) and passes to every procedure that computes: the
-!> mechanism itself is the model and its current state.
+!> mechanism itself is the model and the current state of its frames and
+!> scalars (and of its laws: their loads, switches and factors).
 !> Each room's module comment gives its method. The core names no element
 !> kind: what it needs of an element it asks element_t (kinetostatics_state).
 module kinetostatics_mechanism
@@ -82,7 +85,6 @@ module kinetostatics_mechanism
     type(loop_t), allocatable :: loops(:)
     type(rate_constraint_t), allocatable :: rate_constraints(:)
     type(contact_t), allocatable :: contacts(:)
-    type(contact_state_t), allocatable :: contact_states(:)   ! kinematics at the last law evaluation
     type(force_law_box_t), allocatable :: laws(:)
     type(surface_edge_t), allocatable :: edges(:)
     integer :: n_frames = 0, n_scalars = 0, n_elements = 0, n_laws = 0, f = 0, r = 0
@@ -104,17 +106,10 @@ module kinetostatics_mechanism
     !> position passes and law evaluations so far: a workspace's cached dynamics holds while this is unchanged
     integer :: evaluation = 0
     integer :: workspace_dims(WORKSPACE_SIZES) = 0   !< the sizes a workspace must have (prepare_workspace)
-    ! results of the last evaluation
-    real(wp), allocatable :: lambda(:)        ! cut forces of the closure measurements
-    real(wp), allocatable :: mu(:)            ! cut forces of the rate constraints
-    real(wp), allocatable :: rates(:)         ! q' of every coordinate (f), from the last set_velocities
-    real(wp), allocatable :: qdd(:)           ! s' of the speeds (ns)
-    real(wp), allocatable :: mass(:, :), bias(:)   ! M and Q_bar0 = -Q^
-    real(wp), allocatable :: normal(:)        ! N of every contact (from the last dynamics)
-    real(wp), allocatable :: law_factor(:)    ! 1 for explicit laws, |N| for scaled ones
-    real(wp), allocatable :: law_power(:)     ! W, power of each law's loads
-    real(wp), allocatable :: law_roots(:)     ! root functions of the laws, at the last law evaluation
-    integer, allocatable :: law_root_start(:) ! first index of law k's roots in law_roots
+    ! the laws' factors at the last dynamics (with the laws' loads, law_force): 1 for explicit laws,
+    ! |N| for scaled ones (the other results of an evaluation are the workspace's)
+    real(wp), allocatable :: law_factor(:)
+    integer, allocatable :: law_root_start(:) ! first index of law k's roots in a workspace's law_roots
     integer :: closure_solves = 0, hybrj_solves = 0
     !> the closure's blocks (kinetostatics_closure_blocks); set blocked = .false. before finalize
     !> for one block and full passes (the unblocked computation, for comparison)
@@ -124,10 +119,6 @@ module kinetostatics_mechanism
     integer, allocatable :: beta_pass(:)   ! the elements the dependent coordinates reach (downstream_of)
     integer, allocatable :: unknowns_pass(:)   ! ... and those the unknown rates [beta'; sigma'] reach
     integer, allocatable :: unknowns(:), rows(:)   ! scalars of x = [beta; sigma] and of the rows [g; c]
-    real(wp), allocatable :: gq(:)            ! generalized forces at the speeds of the last inverse dynamics
-    real(wp), allocatable :: unit_power(:)    ! power of each law's loads per unit factor (scaled: per |N|)
-    real(wp), allocatable :: g_mat(:, :), p_mat(:, :), h_mat(:, :)   ! G, P, H (kinetostatics_mechanism_twists,
-                                                                     ! kinetostatics_mechanism_dynamics)
     integer, allocatable :: scaled_laws(:)    ! indices of the scaled laws
     integer, allocatable :: block_row(:)      ! row (1..nb) of each scaled law's contact in the block
     integer, allocatable :: block_contact(:)  ! contact of each block row
@@ -313,10 +304,10 @@ module kinetostatics_mechanism
       class(mechanism_t), intent(inout) :: self
     end subroutine acceleration_pass
 
-    module subroutine force_pass(self, inertia, applied, lambda, loads)
+    module subroutine force_pass(self, inertia, applied, lambda, mu, loads)
       class(mechanism_t), intent(inout) :: self
       logical, intent(in) :: inertia, applied
-      real(wp), intent(in) :: lambda(:)
+      real(wp), intent(in) :: lambda(:), mu(:)
       integer, intent(in) :: loads
     end subroutine force_pass
 
@@ -339,13 +330,15 @@ module kinetostatics_mechanism
       integer, intent(in) :: loads
     end subroutine inverse_dynamics
 
-    module subroutine normal_forces(self, n)
+    module subroutine normal_forces(self, lambda, n)
       class(mechanism_t), intent(in) :: self
+      real(wp), intent(in) :: lambda(:)
       real(wp), intent(out) :: n(:)
     end subroutine normal_forces
 
-    module subroutine evaluate_laws(self, t, status)
+    module subroutine evaluate_laws(self, work, t, status)
       class(mechanism_t), intent(inout) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: t
       type(status_t), intent(inout) :: status
     end subroutine evaluate_laws

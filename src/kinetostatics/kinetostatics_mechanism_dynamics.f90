@@ -26,9 +26,9 @@ contains
 
   !> s' from M(q) s' + Q^(q, s) = Q_applied (3.36) (s = q' without rate
   !> constraints and kinematic coordinates; qd is s, qdd is s'), with every force law
-  !> and the normal forces of the contacts (see the module comment). Leaves M
-  !> in `mass`, Q_bar0 in `bias`, q'' in `qdd`, the normal forces in `normal`,
-  !> the laws' powers in `law_power`. The velocity and acceleration states are
+  !> and the normal forces of the contacts (see the module comment). Leaves,
+  !> in the workspace, M in `mass`, Q_bar0 in `bias`, q'' in `qdd`, the normal
+  !> forces in `normal`, the laws' powers in `law_power`. The velocity and acceleration states are
   !> overwritten (use `evaluate` for a consistent state). Called again at the
   !> same (t, q, s) with the same laws switched on and no position pass or law
   !> evaluation in between (with this workspace or another), it returns the
@@ -44,7 +44,7 @@ contains
     if (work%known_evaluation == self%evaluation .and. t == work%known_t) then
       if (all(q == work%known_q) .and. all(qd == work%known_s) .and. &
           same_switches(self, work)) then
-        qdd = self%qdd
+        qdd = work%qdd
         call self%set_velocities(work, qd)
         work%dynamics_reused = work%dynamics_reused + 1
         return
@@ -57,14 +57,14 @@ contains
     call self%set_positions(work, q, status)
     if (.not. status%ok()) return
     call self%set_velocities(work, qd)
-    call self%evaluate_laws(t, status)
+    call self%evaluate_laws(work, t, status)
     if (.not. status%ok()) return
     self%law_factor = 1
     work%work_f = 0
     call self%set_accelerations(work, work%work_f)
     call self%inverse_dynamics(work, .true., .true., LOADS_EXPLICIT)
-    self%bias(:) = self%gq   ! (:): no reallocation test
-    if (nc > 0) call self%normal_forces(work%n0)
+    work%bias(:) = work%gq   ! (:): no reallocation test
+    if (nc > 0) call self%normal_forces(work%lambda, work%n0)
 
     ! M and G, all velocities zero, applied forces off
     do k = 1, self%n_frames
@@ -82,7 +82,7 @@ contains
     if (.not. self%twist_route) then   ! (the twist route's M is symmetric and left its lower triangle in chol)
       do i = 1, self%ns   ! symmetric part's lower triangle, the factor's input (no temporary)
         do k = i, self%ns
-          work%chol(k, i) = 0.5_wp*(self%mass(k, i) + self%mass(i, k))
+          work%chol(k, i) = 0.5_wp*(work%mass(k, i) + work%mass(i, k))
         end do
       end do
     end if
@@ -94,11 +94,11 @@ contains
       return
     end if
     if (ns == 0) then
-      self%qdd(:) = self%bias
-      call cholesky_solve(work%chol, self%qdd, status)
-      qdd = self%qdd
+      work%qdd(:) = work%bias
+      call cholesky_solve(work%chol, work%qdd, status)
+      qdd = work%qdd
       call affine_normal_forces(self, work, qdd)
-      self%law_power(:) = self%unit_power
+      work%law_power(:) = work%unit_power
       call remember_dynamics(self, work, t, q, qd)
       return
     end if
@@ -109,29 +109,29 @@ contains
     else
       do k = 1, ns
         call self%inverse_dynamics(work, .false., .false., self%scaled_laws(k))
-        self%p_mat(:, k) = self%gq
-        call self%normal_forces(self%h_mat(:, k))
+        work%p_mat(:, k) = work%gq
+        call self%normal_forces(work%lambda, work%h_mat(:, k))
       end do
     end if
     work%signs = 1
     consistent = .false.
     do it = 1, 6
       work%block = 0
-      work%block(1:self%ns, 1:self%ns) = self%mass
+      work%block(1:self%ns, 1:self%ns) = work%mass
       do j = 1, nb
-        work%block(self%ns + j, 1:self%ns) = -self%g_mat(self%block_contact(j), :)
+        work%block(self%ns + j, 1:self%ns) = -work%g_mat(self%block_contact(j), :)
         work%block(self%ns + j, self%ns + j) = 1
       end do
       do k = 1, ns
         j = self%block_row(k)
         work%block(1:self%ns, self%ns + j) = work%block(1:self%ns, self%ns + j) &
-                                                  - self%p_mat(:, k)*work%signs(j)
+                                                  - work%p_mat(:, k)*work%signs(j)
         do i = 1, nb
           work%block(self%ns + i, self%ns + j) = work%block(self%ns + i, self%ns + j) &
-                                               - self%h_mat(self%block_contact(i), k)*work%signs(j)
+                                               - work%h_mat(self%block_contact(i), k)*work%signs(j)
         end do
       end do
-      work%block_rhs(1:self%ns) = self%bias
+      work%block_rhs(1:self%ns) = work%bias
       do j = 1, nb
         work%block_rhs(self%ns + j) = work%n0(self%block_contact(j))
       end do
@@ -159,20 +159,20 @@ contains
       return
     end if
     qdd = work%block_rhs(1:self%ns)
-    self%qdd = qdd
+    work%qdd = qdd
     call affine_normal_forces(self, work, qdd)
     do k = 1, ns
       j = self%block_row(k)
-      self%normal = self%normal + self%h_mat(:, k)*work%signs(j)*work%block_rhs(self%ns + j)
+      work%normal = work%normal + work%h_mat(:, k)*work%signs(j)*work%block_rhs(self%ns + j)
     end do
     do j = 1, nb
-      self%normal(self%block_contact(j)) = work%block_rhs(self%ns + j)
+      work%normal(self%block_contact(j)) = work%block_rhs(self%ns + j)
     end do
-    self%law_power = self%unit_power
+    work%law_power = work%unit_power
     do k = 1, ns
       c = self%laws(self%scaled_laws(k))%law%contact
-      self%law_factor(self%scaled_laws(k)) = abs(self%normal(c))
-      self%law_power(self%scaled_laws(k)) = abs(self%normal(c))*self%unit_power(self%scaled_laws(k))
+      self%law_factor(self%scaled_laws(k)) = abs(work%normal(c))
+      work%law_power(self%scaled_laws(k)) = abs(work%normal(c))*work%unit_power(self%scaled_laws(k))
     end do
     call remember_dynamics(self, work, t, q, qd)
   end procedure dynamics
@@ -188,8 +188,8 @@ contains
     work%work_f(i) = 1
     call self%set_accelerations(work, work%work_f)
     call self%inverse_dynamics(work, .true., .false., LOADS_NONE)
-    self%mass(:, i) = -self%gq
-    if (size(self%contacts) > 0) call self%normal_forces(self%g_mat(:, i))
+    work%mass(:, i) = -work%gq
+    if (size(self%contacts) > 0) call self%normal_forces(work%lambda, work%g_mat(:, i))
   end subroutine full_mass_column
 
   subroutine remember_dynamics(self, work, t, q, qd)
@@ -224,9 +224,9 @@ contains
     real(wp), intent(in) :: qdd(:)
     integer :: i, c
     do c = 1, size(work%n0)   ! no matmul: its result would be a heap temporary
-      self%normal(c) = work%n0(c)
+      work%normal(c) = work%n0(c)
       do i = 1, self%ns
-        self%normal(c) = self%normal(c) + self%g_mat(c, i)*qdd(i)
+        work%normal(c) = work%normal(c) + work%g_mat(c, i)*qdd(i)
       end do
     end do
   end subroutine affine_normal_forces
@@ -247,8 +247,8 @@ contains
     if (work%dynamics_reused == reused) call self%set_velocities(work, qd)
     call self%set_accelerations(work, qdd)
     call self%inverse_dynamics(work, .true., .true., LOADS_ALL)
-    residual = maxval(abs(self%gq))
-    call self%normal_forces(work%work_c)
+    residual = maxval(abs(work%gq))
+    call self%normal_forces(work%lambda, work%work_c)
     do c = 1, size(self%contacts)
       self%contacts(c)%normal_force = work%work_c(c)
     end do

@@ -232,8 +232,8 @@ contains
     self%rhs_cached = .false.
     call self%mechanism%dynamics(self%work, t, y(1:f), y(f + 1:n), ydot(f + 1:n), status)
     if (.not. status%ok()) return
-    ydot(1:f) = self%mechanism%rates
-    ydot(n + 1:) = self%mechanism%law_power
+    ydot(1:f) = self%work%rates
+    ydot(n + 1:) = self%work%law_power
     if (self%n_roots == 0) return
     call root_values(self, y, 3)
     ! the arrays have their sizes since prepare: plain copies

@@ -130,10 +130,16 @@ contains
   end procedure prepare
 
   module procedure mechanism_root_count
-    n = size(self%mechanism%edges) + count(self%mechanism%contacts%one_sided) + size(self%mechanism%law_roots)
+    n = size(self%mechanism%edges) + count(self%mechanism%contacts%one_sided) + n_law_roots(self%mechanism)
     if (allocated(self%event_index)) n = n + size(self%event_index)
     if (allocated(self%charts)) n = n + size(self%charts)
   end procedure mechanism_root_count
+
+  !> Number of the laws' root functions.
+  pure integer function n_law_roots(m)
+    type(mechanism_t), intent(in) :: m
+    n_law_roots = m%law_root_start(m%n_laws + 1) - 1
+  end function n_law_roots
 
   !> Number of user crossings.
   pure integer function n_user(self)
@@ -172,7 +178,7 @@ contains
     f = self%mechanism%f
     n = f + self%mechanism%ns
     level = 1
-    if (size(self%mechanism%law_roots) > 0) level = 2
+    if (n_law_roots(self%mechanism) > 0) level = 2
     if (any(self%mechanism%contacts%one_sided)) level = 3
     ! root location between two exact sets with settled normal forces: N
     ! from the line between them, the rest at its own level
@@ -190,7 +196,7 @@ contains
     case (2)
       call self%mechanism%set_positions(self%work, y(1:f), status)
       if (status%ok()) call self%mechanism%set_velocities(self%work, y(f + 1:n))
-      if (status%ok()) call self%mechanism%evaluate_laws(t, status)
+      if (status%ok()) call self%mechanism%evaluate_laws(self%work, t, status)
     case default   ! only the edges and charts: a position pass unless each is a coordinate in y
       if (any(self%edge_coordinate == 0) .or. any(self%chart_angle < 0)) &
         call self%mechanism%set_positions(self%work, y(1:f), status)
@@ -400,10 +406,10 @@ contains
       do k = 1, size(m%contacts)
         if (.not. m%contacts(k)%one_sided) cycle
         i = i + 1
-        if (level >= 3) self%cache_g(i) = m%normal(k)
+        if (level >= 3) self%cache_g(i) = self%work%normal(k)
       end do
-      if (level >= 2 .and. size(m%law_roots) > 0) self%cache_g(i + 1:i + size(m%law_roots)) = m%law_roots
-      i = i + size(m%law_roots)
+      if (level >= 2 .and. n_law_roots(m) > 0) self%cache_g(i + 1:i + n_law_roots(m)) = self%work%law_roots
+      i = i + n_law_roots(m)
       do k = 1, size(self%charts)
         call chart_root(self, y, k, .true., self%cache_g(i + k))
       end do
@@ -480,7 +486,7 @@ contains
           action = max(action, law_action)
         end associate
       end do
-      i = i + size(m%law_roots)
+      i = i + n_law_roots(m)
       do k = 1, size(self%charts)
         if (fired(i + k) /= -1) cycle
         call change_chart(self, self%charts(k), y, status)
@@ -520,11 +526,11 @@ contains
         j = j + 1
         if (fired(j) /= -1) cycle
         if (st%ok()) then
-          if (abs(m%normal(k)) <= lift_off_tolerance*self%normal_reference(j)) cycle
+          if (abs(self%work%normal(k)) <= lift_off_tolerance*self%normal_reference(j)) cycle
         end if
         if (count_singular > 0) which = which//', '
         which = which//''''//m%contacts(k)%name//''''
-        if (st%ok()) which = which//' (N = '//format_short(m%normal(k))//' N, at most '// &
+        if (st%ok()) which = which//' (N = '//format_short(self%work%normal(k))//' N, at most '// &
           format_short(self%normal_reference(j))//' N before)'
         count_singular = count_singular + 1
       end do

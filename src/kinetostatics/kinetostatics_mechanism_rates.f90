@@ -75,7 +75,7 @@ contains
       self%scalars(self%closure(k))%force = lambda(k)
     end do
     do k = 1, self%nd
-      self%scalars(self%rate_outputs(k))%force = self%mu(k)
+      self%scalars(self%rate_outputs(k))%force = mu(k)
     end do
     select case (loads)
     case (LOADS_NONE)
@@ -110,7 +110,7 @@ contains
 
   !> Sets the speeds s (positions already set, by set_positions with this
   !> workspace): the rates of the speed coordinates, then beta' (3.30) and the
-  !> dependent rates sigma' from [g'; c] = 0; `rates` gets q' of every
+  !> dependent rates sigma' from [g'; c] = 0; the workspace's `rates` gets q' of every
   !> coordinate (kinematic ones from their elements). Without rate
   !> constraints and kinematic coordinates s = q'.
   module procedure set_velocities
@@ -222,20 +222,20 @@ contains
     end if
     if (level == 1) then
       do k = 1, self%f
-        self%rates(k) = self%scalars(self%q(k))%qd
+        work%rates(k) = self%scalars(self%q(k))%qd
       end do
     end if
   end subroutine set_rates
 
-  !> Generalized forces at the speeds (into gq) with the loops and rate
+  !> Generalized forces at the speeds (into the workspace's gq) with the loops and rate
   !> constraints in equilibrium: lambda = -J_beta^-T Q^_beta (3.32)-(3.33), or
   !> [lambda; mu] = -J_x^-T [Q^_beta; Q^_sigma]. `loads` selects the laws'
   !> loads (LOADS_*).
   module procedure inverse_dynamics
     integer :: k
-    self%lambda = 0
-    self%mu = 0
-    call self%force_pass(inertia, applied, self%lambda, loads)
+    work%lambda = 0
+    work%mu = 0
+    call self%force_pass(inertia, applied, work%lambda, work%mu, loads)
     if (self%nd > 0) then
       do k = 1, self%r
         work%work_x(k) = self%scalars(self%beta(k))%force
@@ -244,19 +244,19 @@ contains
         work%work_x(self%r + k) = self%scalars(self%sigma(k))%force
       end do
       call self%blocks%solve(.true., work%work_x, .true.)
-      self%lambda = -work%work_x(1:self%r)
-      self%mu = -work%work_x(self%r + 1:)
-      call self%force_pass(inertia, applied, self%lambda, loads)
+      work%lambda = -work%work_x(1:self%r)
+      work%mu = -work%work_x(self%r + 1:)
+      call self%force_pass(inertia, applied, work%lambda, work%mu, loads)
     else if (self%r > 0) then
       do k = 1, self%r
-        self%lambda(k) = self%scalars(self%beta(k))%force
+        work%lambda(k) = self%scalars(self%beta(k))%force
       end do
-      call self%blocks%solve(.false., self%lambda, .true.)
-      self%lambda = -self%lambda
-      call self%force_pass(inertia, applied, self%lambda, loads)
+      call self%blocks%solve(.false., work%lambda, .true.)
+      work%lambda = -work%lambda
+      call self%force_pass(inertia, applied, work%lambda, work%mu, loads)
     end if
     do k = 1, self%ns
-      self%gq(k) = self%scalars(self%q(self%speeds(k)))%force
+      work%gq(k) = self%scalars(self%q(self%speeds(k)))%force
     end do
   end procedure inverse_dynamics
 
@@ -267,7 +267,7 @@ contains
     do k = 1, size(self%contacts)
       associate (c => self%contacts(k))
         if (c%normal_rule == NORMAL_CUT_FORCE) then
-          n(k) = c%normal_sign*self%lambda(c%normal_row)
+          n(k) = c%normal_sign*lambda(c%normal_row)
         else
           associate (fr => self%frames(c%normal_frame))
             n(k) = -c%normal_sign*dot_product(fr%rot(:, 3), fr%force)
@@ -283,15 +283,16 @@ contains
   module procedure evaluate_laws
     integer :: k, i
     real(wp) :: p
+    if (any(work%dims /= self%workspace_dims)) call self%prepare_workspace(work)
     self%evaluation = self%evaluation + 1
     do k = 1, size(self%contacts)
-      call contact_kinematics(self%contacts(k), self%frames, self%contact_states(k))
+      call contact_kinematics(self%contacts(k), self%frames, work%contact_states(k))
     end do
     do k = 1, self%n_laws
       associate (law => self%laws(k)%law)
         p = 0
         if (law%active) then
-          call law%evaluate(t, self%frames, self%scalars, self%contact_states, status)
+          call law%evaluate(t, self%frames, self%scalars, work%contact_states, status)
           if (.not. status%ok()) then
             call prefix_status(status, 'force law '''//law%name//'''')
             return
@@ -302,10 +303,10 @@ contains
             end associate
           end do
         end if
-        self%unit_power(k) = p
+        work%unit_power(k) = p
         if (self%law_root_start(k + 1) > self%law_root_start(k)) &
-          call law%roots(t, self%frames, self%scalars, self%contact_states, &
-                         self%law_roots(self%law_root_start(k):self%law_root_start(k + 1) - 1))
+          call law%roots(t, self%frames, self%scalars, work%contact_states, &
+                         work%law_roots(self%law_root_start(k):self%law_root_start(k + 1) - 1))
       end associate
     end do
   end procedure evaluate_laws

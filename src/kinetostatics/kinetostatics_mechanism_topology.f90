@@ -193,8 +193,8 @@ contains
     k = 0
   end procedure law_index
 
-  !> Checks the structure and allocates the results' arrays (the work arrays:
-  !> prepare_workspace).
+  !> Checks the structure and finds what the computations need of it (their
+  !> results and work arrays: prepare_workspace).
   module procedure finalize
     integer :: k, nc, ns, nb, nr
     if (.not. status%ok()) return
@@ -245,22 +245,8 @@ contains
     end do
     self%law_root_start(self%n_laws + 1) = nr + 1
 
-    associate (n => self%ns)
-      allocate (self%lambda(self%r), self%mu(self%nd), self%rates(self%f), self%qdd(n), self%mass(n, n), &
-                self%bias(n))
-      allocate (self%gq(n))
-      allocate (self%contact_states(nc), self%normal(nc), self%law_factor(self%n_laws), &
-                self%law_power(self%n_laws), self%unit_power(self%n_laws), self%law_roots(nr))
-      allocate (self%g_mat(nc, n), self%p_mat(n, ns), self%h_mat(nc, ns))
-    end associate
-    self%lambda = 0
-    self%mu = 0
-    self%rates = 0
-    self%qdd = 0
-    self%normal = 0
+    allocate (self%law_factor(self%n_laws))
     self%law_factor = 1
-    self%law_power = 0
-    self%law_roots = 1
     call find_workspace_dims(self)
     self%ready = .true.
   end procedure finalize
@@ -269,7 +255,8 @@ contains
   subroutine find_workspace_dims(self)
     class(mechanism_t), intent(inout) :: self
     self%workspace_dims = [self%f, self%ns, self%r, self%nd, size(self%contacts), self%n_laws, &
-                           size(self%block_contact), size(self%tracked), size(self%moving_unknowns)]
+                           size(self%block_contact), size(self%tracked), size(self%moving_unknowns), &
+                           size(self%scaled_laws), self%law_root_start(self%n_laws + 1) - 1]
     self%evaluation = self%evaluation + 1
   end subroutine find_workspace_dims
 
@@ -287,22 +274,40 @@ contains
 
   !> Sizes the workspace for this mechanism (kinetostatics_mechanism_workspace):
   !> on its first use and again only when the sizes changed (finalize,
-  !> set_blocked). No cached dynamics; the closure's warm start from the
-  !> current dependent coordinates.
+  !> set_blocked). No cached dynamics, no results (zero cut forces, rates,
+  !> accelerations, normal forces and powers); the closure's warm start from
+  !> the current dependent coordinates.
   module procedure prepare_workspace
-    integer :: n, nc, nb, nt, nx, k
+    integer :: n, nc, nb, nt, nx, ns, nr, k
     if (all(work%dims == self%workspace_dims)) return
     n = self%ns
     nc = size(self%contacts)
     nb = size(self%block_contact)
     nt = size(self%tracked)
     nx = self%r + self%nd
+    ns = size(self%scaled_laws)
+    nr = self%law_root_start(self%n_laws + 1) - 1
     if (allocated(work%known_q)) then
+      deallocate (work%lambda, work%mu, work%rates, work%qdd, work%mass, work%bias, work%normal, &
+                  work%law_power, work%unit_power, work%law_roots, work%contact_states, work%gq, &
+                  work%g_mat, work%p_mat, work%h_mat)
       deallocate (work%known_q, work%known_s, work%known_active, work%work_r, work%work_x, work%x_r, &
                   work%start_r, work%res_r, work%work_f, work%work_c, work%chol, work%n0, work%block, &
                   work%block_rhs, work%signs, work%ipiv_block, work%twist, work%wrench, work%unknown_twist, &
                   work%nu, work%load_wrench)
     end if
+    allocate (work%lambda(self%r), work%mu(self%nd), work%rates(self%f), work%qdd(n), work%mass(n, n), &
+              work%bias(n), work%gq(n))
+    allocate (work%contact_states(nc), work%normal(nc), work%law_power(self%n_laws), &
+              work%unit_power(self%n_laws), work%law_roots(nr))
+    allocate (work%g_mat(nc, n), work%p_mat(n, ns), work%h_mat(nc, ns))
+    work%lambda = 0
+    work%mu = 0
+    work%rates = 0
+    work%qdd = 0
+    work%normal = 0
+    work%law_power = 0
+    work%law_roots = 1
     allocate (work%known_q(self%f), work%known_s(n), work%known_active(self%n_laws))
     allocate (work%work_r(self%r), work%work_x(nx), work%x_r(self%r), work%start_r(self%r), work%res_r(self%r), &
               work%work_f(n), work%work_c(nc))

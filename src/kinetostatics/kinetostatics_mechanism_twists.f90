@@ -73,7 +73,7 @@ contains
     end do
     ! M(j, i) = -(twist_j . wrench_i), and its lower triangle, the factor's input
     call symmetric_transposed_product(6*size(self%tracked), self%ns, work%twist, work%wrench, -1.0_wp, &
-                                      self%mass, work%chol)
+                                      work%mass, work%chol)
     if (size(self%contacts) > 0) call twist_normal_forces(self, work)
   end procedure twist_mass_matrix
 
@@ -268,11 +268,11 @@ contains
       end do
     end do
     call transposed_product(6*size(self%tracked), size(self%contacts), self%ns, work%nu, work%wrench, &
-                            self%g_mat)
+                            work%g_mat)
     do c = 1, size(self%contacts)
       factor = -self%contacts(c)%normal_sign   ! +-1: the products are exact
       do i = 1, self%ns
-        self%g_mat(c, i) = factor*self%g_mat(c, i)
+        work%g_mat(c, i) = factor*work%g_mat(c, i)
       end do
     end do
   end subroutine twist_normal_forces
@@ -302,16 +302,16 @@ contains
       end associate
       if (.not. tracked) then
         call self%inverse_dynamics(work, .false., .false., self%scaled_laws(k))
-        self%p_mat(:, k) = self%gq
-        call self%normal_forces(self%h_mat(:, k))
+        work%p_mat(:, k) = work%gq
+        call self%normal_forces(work%lambda, work%h_mat(:, k))
         cycle
       end if
       call transposed_product(6*size(self%tracked), self%ns, 1, work%twist, work%load_wrench, &
-                              self%p_mat(:, k))
+                              work%p_mat(:, k))
       call transposed_product(6*size(self%tracked), size(self%contacts), 1, work%nu, work%load_wrench, &
-                              self%h_mat(:, k))
+                              work%h_mat(:, k))
       do c = 1, size(self%contacts)
-        self%h_mat(c, k) = -self%contacts(c)%normal_sign*self%h_mat(c, k)
+        work%h_mat(c, k) = -self%contacts(c)%normal_sign*work%h_mat(c, k)
       end do
     end do
   end procedure twist_unit_loads

@@ -1,28 +1,48 @@
 !> The workspace of a mechanism's computations (kinetostatics_mechanism):
-!> what a computation needs on its way and no caller reads, apart from the
-!> results. The closure solver's iterates and warm start, the rate and force
-!> solves' right-hand sides, the Cholesky factor and the block system of the
-!> equations of motion, the partial twists and wrenches of the tracked
-!> frames, and the cache of the last `dynamics` (its state, so that a record
-!> at the state a root function just saw reuses it).
+!> their results and what they need on their way. The results of the last
+!> evaluation with this workspace (cut forces lambda and mu, the rates q',
+!> the accelerations s', M and Q_bar0, the normal forces, the laws' powers,
+!> unit powers and root functions, the contacts' kinematics, the generalized
+!> forces of the last inverse dynamics, G, P and H), the closure solver's
+!> iterates and warm start, the rate and force solves' right-hand sides, the
+!> Cholesky factor and the block system of the equations of motion, the
+!> partial twists and wrenches of the tracked frames, and the cache of the
+!> last `dynamics` (its state, so that a record at the state a root function
+!> just saw reuses it).
 !>
 !> Owned by whoever runs the computations (the integration's ODE object,
 !> kinetostatics_mechanism_ode), not by the mechanism: the mechanism is the
-!> model, passed a workspace by every procedure that needs one. Sized by the
+!> model (and, still, its frames' and scalars' current state and the laws'
+!> loads), passed a workspace by every procedure that computes. Sized by the
 !> mechanism's prepare_workspace on its first use (and again only if the
 !> mechanism's sizes change), never inside a right-hand side. One workspace
 !> serves one mechanism (or its copies).
 module kinetostatics_mechanism_workspace
   use base_kinds, only: wp
+  use kinetostatics_contact, only: contact_state_t
   implicit none (type, external)
   private
   public :: mechanism_workspace_t, WORKSPACE_SIZES
 
   !> How many sizes of the mechanism the workspace is made for (dims).
-  integer, parameter :: WORKSPACE_SIZES = 9
+  integer, parameter :: WORKSPACE_SIZES = 11
 
   type :: mechanism_workspace_t
     integer :: dims(WORKSPACE_SIZES) = -1        ! the mechanism's sizes it was made for (prepare_workspace)
+    ! results of the last evaluation with this workspace (what callers read)
+    real(wp), allocatable :: lambda(:)           ! cut forces of the closure measurements
+    real(wp), allocatable :: mu(:)               ! cut forces of the rate constraints
+    real(wp), allocatable :: rates(:)            ! q' of every coordinate (f), from the last set_velocities
+    real(wp), allocatable :: qdd(:)              ! s' of the speeds (ns)
+    real(wp), allocatable :: mass(:, :), bias(:)   ! M and Q_bar0 = -Q^
+    real(wp), allocatable :: normal(:)           ! N of every contact (from the last dynamics)
+    real(wp), allocatable :: law_power(:)        ! W, power of each law's loads
+    real(wp), allocatable :: unit_power(:)       ! power of each law's loads per unit factor (scaled: per |N|)
+    real(wp), allocatable :: law_roots(:)        ! root functions of the laws, at the last law evaluation
+    type(contact_state_t), allocatable :: contact_states(:)   ! kinematics at the last law evaluation
+    real(wp), allocatable :: gq(:)               ! generalized forces at the speeds of the last inverse dynamics
+    real(wp), allocatable :: g_mat(:, :), p_mat(:, :), h_mat(:, :)   ! G, P, H (kinetostatics_mechanism_twists,
+                                                                     ! kinetostatics_mechanism_dynamics)
     ! the (t, q, s) and law switches of the last completed `dynamics`, and the mechanism's evaluation
     ! count then: its results still hold while no position pass or law evaluation has run since, with
     ! this workspace or any other (a record at the state a root function just saw)

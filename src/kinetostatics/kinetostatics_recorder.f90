@@ -131,7 +131,7 @@ contains
     do k = 1, m%r
       self%beta(k, i) = m%scalars(m%beta(k))%q
     end do
-    self%lambda(:, i) = m%lambda
+    self%lambda(:, i) = workspace%lambda
     self%closure(i) = m%closure_residual()
     do k = 1, self%nm
       self%monitor(k, i) = m%scalars(m%monitors(k))%q
@@ -148,7 +148,7 @@ contains
     self%friction(:, :, i) = 0
     do k = 1, self%nl
       self%law_force(:, k, i) = m%law_force(k)
-      self%law_power(k, i) = m%law_power(k)
+      self%law_power(k, i) = workspace%law_power(k)
       self%law_work(k, i) = work(k)
       self%law_active(k, i) = merge(1, 0, m%laws(k)%law%active)
       if (self%law_contact(k) > 0) self%friction(:, self%law_contact(k), i) = &
@@ -156,10 +156,10 @@ contains
     end do
     do k = 1, self%nc
       associate (c => m%contacts(k))
-        self%friction(:, k, i) = self%friction(:, k, i) + static_friction(m, c)
+        self%friction(:, k, i) = self%friction(:, k, i) + static_friction(m, workspace%mu, c)
         self%normal(k, i) = c%normal_force
-        self%contact_r(:, k, i) = m%contact_states(k)%point
-        self%slip(:, k, i) = m%contact_states(k)%slip
+        self%contact_r(:, k, i) = workspace%contact_states(k)%point
+        self%slip(:, k, i) = workspace%contact_states(k)%slip
       end associate
     end do
   end subroutine series_record
@@ -283,8 +283,9 @@ contains
   !> The static friction of a rolling contact on body B (N, world), the cut
   !> forces of its no-slip outputs along the contact frame's x and y at the
   !> evaluated state; zero for a contact that does not roll.
-  pure function static_friction(m, c) result(f)
+  pure function static_friction(m, mu, c) result(f)
     type(mechanism_t), intent(in) :: m
+    real(wp), intent(in) :: mu(:)
     type(contact_t), intent(in) :: c
     real(wp) :: f(3)
     integer :: axis, j
@@ -292,7 +293,7 @@ contains
     do axis = 1, 2
       if (c%tangential_outputs(axis) == 0) cycle
       j = findloc(m%rate_outputs, c%tangential_outputs(axis), dim=1)
-      if (j > 0) f = f + m%mu(j)*m%frames(c%point_frame)%rot(:, axis)
+      if (j > 0) f = f + mu(j)*m%frames(c%point_frame)%rot(:, axis)
     end do
   end function static_friction
 end module kinetostatics_recorder

@@ -174,28 +174,28 @@ contains
     call m%dynamics(work, t, q, s, a, st)
     call check(st%ok(), label//': dynamics '//st%text())
     if (.not. st%ok()) return
-    rates = m%rates   ! q' of (q, s), which the integrator reads after dynamics: no column may change it
-    m_twists = m%mass
-    g_twists = m%g_mat
+    rates = work%rates   ! q' of (q, s), which the integrator reads after dynamics: no column may change it
+    m_twists = work%mass
+    g_twists = work%g_mat
     n_scaled = size(m%scaled_laws)
-    p_twists = m%p_mat
-    h_twists = m%h_mat
+    p_twists = work%p_mat
+    h_twists = work%h_mat
     allocate (g_passes(size(m%contacts), size(s)), p_passes(size(s), n_scaled), h_passes(size(m%contacts), n_scaled))
     do k = 1, n_scaled   ! the laws' loads are those of the state dynamics saw
       call m%inverse_dynamics(work, .false., .false., m%scaled_laws(k))
-      p_passes(:, k) = m%gq
-      call m%normal_forces(h_passes(:, k))
+      p_passes(:, k) = work%gq
+      call m%normal_forces(work%lambda, h_passes(:, k))
     end do
     call m%set_velocities(work, s)
-    call check(all(m%rates == rates), label//': q'' after dynamics that of (q, s)')
+    call check(all(work%rates == rates), label//': q'' after dynamics that of (q, s)')
     call m%set_velocities(work, 0*s)
     do i = 1, size(s)
       unit_s = 0
       unit_s(i) = 1
       call m%set_accelerations(work, unit_s)
       call m%inverse_dynamics(work, .true., .false., LOADS_NONE)
-      m_passes(:, i) = -m%gq
-      call m%normal_forces(g_passes(:, i))
+      m_passes(:, i) = -work%gq
+      call m%normal_forces(work%lambda, g_passes(:, i))
     end do
     print '(a, 4(a, es9.2))', label, ': |M diff| ', maxval(abs(m_twists - m_passes)), ' of ', &
       maxval(abs(m_passes)), ', |G diff| ', maxval([0.0_wp, abs(g_twists - g_passes)]), ' of ', &

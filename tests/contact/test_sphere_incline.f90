@@ -123,7 +123,7 @@ contains
         worst_fr = max(worst_fr, norm2(s%friction(:, 1, i) + 2*mass*g*sin(theta)/7*downhill))
       end do
       ! the static friction = the cut forces of the no-slip constraint (last state)
-      worst_f = abs(norm2(m%mu) - 2*mass*g*sin(theta)/7)
+      worst_f = abs(norm2(model%ode%work%mu) - 2*mass*g*sin(theta)/7)
       ! the acceleration is algebraic (rounding); the path integrates it over
       ! ~100 steps at rtol 1e-12; the slip vanishes by construction (rounding)
       call check(worst_a <= 1e-12_wp*a, 'rolling: a = (5/7) g sin(theta) at every output')

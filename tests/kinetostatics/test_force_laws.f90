@@ -84,8 +84,8 @@ contains
     real(wp) :: scale
     do k = 1, m%n_laws
       call m%inverse_dynamics(work, .false., .false., k)
-      scale = max(sum(abs(m%gq*qd)), abs(m%unit_power(k)), tiny(1.0_wp))
-      call check(abs(dot_product(m%gq, qd) - m%unit_power(k)) <= power_tol*scale, &
+      scale = max(sum(abs(work%gq*qd)), abs(work%unit_power(k)), tiny(1.0_wp))
+      call check(abs(dot_product(work%gq, qd) - work%unit_power(k)) <= power_tol*scale, &
                  label//': virtual power of law '''//m%laws(k)%law%name//''': Q . q'' = sum f.v + tau.omega')
     end do
   end subroutine virtual_power
@@ -109,8 +109,8 @@ contains
       ! an interaction's power is its force on B times the slip: checks where
       ! the law puts its loads (forces and moment arms on both bodies)
       do k = 3, 4
-        associate (law => m%laws(k)%law, c => m%contact_states(1))
-          call check(abs(m%unit_power(k) - dot_product(law%loads(1)%force, c%slip)) <= &
+        associate (law => m%laws(k)%law, c => work%contact_states(1))
+          call check(abs(work%unit_power(k) - dot_product(law%loads(1)%force, c%slip)) <= &
                      power_tol*norm2(law%loads(1)%force)*(norm2(c%velocity_a) + norm2(c%velocity_b)), &
                      'contact law '''//law%name//''': power = F . slip')
         end associate
@@ -120,9 +120,9 @@ contains
       ! 4th-order differences, h = 1e-3 (truncation ~1e-13, rounding ~1e-13)
       call m%set_positions(work, q0, st)
       call m%set_velocities(work, qd0)
-      call m%evaluate_laws(0.0_wp, st)
+      call m%evaluate_laws(work, 0.0_wp, st)
       hh = 1e-3_wp
-      associate (c => m%contact_states(1))
+      associate (c => work%contact_states(1))
         block
           real(wp) :: p0(3), local_a(3), local_b(3)
           p0 = c%point
@@ -149,7 +149,7 @@ contains
     end associate
     ! the mass-matrix passes apply no law at all
     call m%inverse_dynamics(work, .false., .false., LOADS_NONE)
-    call check(maxval(abs(m%gq)) == 0, 'no loads, no inertia, no gravity: zero generalized forces')
+    call check(maxval(abs(work%gq)) == 0, 'no loads, no inertia, no gravity: zero generalized forces')
   end subroutine chain_laws
 
   !> The sled (a closed loop) with every friction law at both contacts: virtual
@@ -177,7 +177,7 @@ contains
       call check(st%ok(), 'sled dynamics with six laws: '//st%text())
       call virtual_power(m, work, qd, 'sled (closed loop)')
       ! the scaled laws' power is |N| times their unit power
-      call check_close(m%law_power(1), abs(m%normal(1))*m%unit_power(1), 1e-14_wp, 0.0_wp, &
+      call check_close(work%law_power(1), abs(work%normal(1))*work%unit_power(1), 1e-14_wp, 0.0_wp, &
                        'Coulomb power = |N| x unit power')
     end do
   end subroutine sled_laws
@@ -209,7 +209,7 @@ contains
     ! exact algebra: rounding only
     call check_close(qdd(1), g*sin(theta) - k*qd0(1), 1e-12_wp, 0.0_wp, &
                      'N-scaled viscous law: u'''' = g sin(theta) - mu g cos(theta) u'' (block solve)')
-    call check_close(sum(sys%mechanism%normal), p%mass*g*cos(theta), 1e-12_wp, 0.0_wp, &
+    call check_close(sum(sys%work%normal), p%mass*g*cos(theta), 1e-12_wp, 0.0_wp, &
                      'N-scaled viscous law: N_rear + N_front = m g cos(theta)')
     opt%rtol = 1e-11_wp
     opt%atol = 1e-12_wp

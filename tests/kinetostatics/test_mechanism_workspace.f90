@@ -7,6 +7,8 @@
 !>   at A with workspace 1 again is recomputed (the mechanism holds B's
 !>   state, so workspace 1's cache of A must not be used), with A's results;
 !>   at A twice with workspace 1 it is reused, bit for bit;
+!> - the results are the workspace's: workspace 1 keeps A's accelerations
+!>   and normal forces while workspace 2 computes B's;
 !> - two integrations of copies of one mechanism, each ODE object with its
 !>   own workspace, advanced in turns, give bit for bit the results of one
 !>   integration alone (nothing shared between them).
@@ -57,22 +59,25 @@ contains
     call m%check_start(work_1, q_a, st)
     call check(st%ok(), 'workspace: the sled starts: '//st%text())
     call m%dynamics(work_1, 0.0_wp, q_a, s_a, a, st)
-    normal_a = m%normal
+    normal_a = work_1%normal
     reused = work_1%dynamics_reused
     call m%dynamics(work_1, 0.0_wp, q_a, s_a, again, st)
     call check(st%ok() .and. work_1%dynamics_reused == reused + 1 .and. all(again == a) .and. &
-               all(m%normal == normal_a), 'workspace: the same state again with the same workspace: reused, '// &
+               all(work_1%normal == normal_a), 'workspace: the same state again with the same workspace: reused, '// &
                'the same results bit for bit')
     call m%dynamics(work_2, 0.0_wp, q_b, s_b, b, st)
     call check(st%ok() .and. maxval(abs(b - a)) > 1e-3_wp*maxval(abs(a)), &
                'workspace: another state with another workspace: other accelerations')
+    call check(all(work_1%normal == normal_a) .and. all(work_1%qdd == a) .and. all(work_2%qdd == b) .and. &
+               maxval(abs(work_2%normal - normal_a)) > 1e-3_wp*maxval(abs(normal_a)), &
+               'workspace: each workspace holds the results of its own last evaluation (A''s kept while B''s computed)')
     call m%dynamics(work_1, 0.0_wp, q_a, s_a, again, st)
     ! 1e-12: the closure solved again from B's warm start (to 1e-13 of the sled's lengths)
     scale = maxval(abs(a))
     call check(st%ok() .and. work_1%dynamics_reused == reused + 1, &
                'workspace: back at A with the first workspace after B: recomputed (the mechanism holds B)')
     call check(maxval(abs(again - a)) <= 1e-12_wp*scale .and. &
-               maxval(abs(m%normal - normal_a)) <= 1e-12_wp*maxval(abs(normal_a)), &
+               maxval(abs(work_1%normal - normal_a)) <= 1e-12_wp*maxval(abs(normal_a)), &
                'workspace: back at A: A''s accelerations and normal forces to 1e-12')
     call check(work_2%dynamics_reused == 0, 'workspace: the second workspace reused nothing')
   end subroutine cache_belongs_to_the_mechanism_state

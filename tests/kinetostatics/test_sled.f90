@@ -74,7 +74,7 @@ contains
       call check_close(m%scalars(m%scalar_index('pitch'))%q, 0.0_wp, 0.0_wp, 1e-12_wp, 'incline: pitch 0 on a plane')
       call m%evaluate(work, 0.0_wp, q0, qd0, res, st)
       call check(st%ok(), 'incline: evaluate: '//st%text())
-      qdd = m%qdd
+      qdd = work%qdd
       acc = g*(sin(theta) - mu*cos(theta))
       ! exact algebra; the only approximation is the regularization
       ! (eps/|w|)^2/2 = 5e-13 relative
@@ -91,9 +91,9 @@ contains
       ! the cut force of the plane-point condition along the front normal z_D2
       ! is the force on the bar's front end along that normal: N_front (with
       ! either rule for the front contact's normal force)
-      call check_close(m%lambda(3), m%contacts(2)%normal_force, 1e-10_wp, 0.0_wp, &
+      call check_close(work%lambda(3), m%contacts(2)%normal_force, 1e-10_wp, 0.0_wp, &
                        'incline: cut force of front_z = normal force at the front contact, '//label)
-      call check_close(m%law_power(1), -abs(m%contacts(1)%normal_force)*mu*qd0(1), 1e-10_wp, 0.0_wp, &
+      call check_close(work%law_power(1), -abs(m%contacts(1)%normal_force)*mu*qd0(1), 1e-10_wp, 0.0_wp, &
                        'incline: Coulomb power at the rear = -mu N |w|')
     end associate
     opt%rtol = 1e-10_wp
@@ -203,8 +203,9 @@ contains
     associate (m => sys%mechanism, work => sys%work)
       call m%evaluate(work, 0.0_wp, q0, qd0, res, st)
       call check(res <= 1e-10_wp*p%mass*g, 'bowl: inverse-dynamics residual zero at the computed q'''', mu = '//label)
-      call check(maxval(abs(m%mass - transpose(m%mass))) <= 1e-13_wp*maxval(abs(m%mass)), 'bowl: M symmetric')
-      chol = m%mass
+      call check(maxval(abs(work%mass - transpose(work%mass))) <= 1e-13_wp*maxval(abs(work%mass)), &
+                 'bowl: M symmetric')
+      chol = work%mass
       spd = .true.
       do j = 1, 3   ! Cholesky by hand: positive pivots <=> positive definite
         chol(j, j) = chol(j, j) - sum(chol(j, 1:j - 1)**2)
@@ -233,11 +234,11 @@ contains
           mpol(i, j) = tij
         end do
       end do
-      call check(maxval(abs(mpol - m%mass)) <= 1e-12_wp*maxval(abs(m%mass)), &
+      call check(maxval(abs(mpol - work%mass)) <= 1e-12_wp*maxval(abs(work%mass)), &
                  'bowl: M from the f+1 passes = M from the kinetic energy (through the closed loop)')
       call m%set_velocities(work, qd0)
       call m%energy(tk, vk)
-      call check_close(0.5_wp*dot_product(qd0, matmul(m%mass, qd0)), tk, 1e-12_wp, 0.0_wp, &
+      call check_close(0.5_wp*dot_product(qd0, matmul(work%mass, qd0)), tk, 1e-12_wp, 0.0_wp, &
                        'bowl: q''.M q''/2 = kinetic energy (M through the closed loop)')
       scale = p%mass*g*p%length + tk
       e0 = tk + vk
@@ -319,9 +320,9 @@ contains
       call body%mechanism%dynamics(body%work, 0.0_wp, q, qd, qdd_b, st)
       call darboux%mechanism%dynamics(darboux%work, 0.0_wp, q, qd, qdd_d, st)
       worst_qdd = max(worst_qdd, maxval(abs(qdd_b - qdd_d))/maxval(abs(qdd_b)))
-      worst_n = max(worst_n, maxval(abs(body%mechanism%normal - darboux%mechanism%normal))/(p%mass*g))
-      worst_p = max(worst_p, maxval(abs(body%mechanism%law_power - darboux%mechanism%law_power))/ &
-                             maxval(abs(body%mechanism%law_power)))
+      worst_n = max(worst_n, maxval(abs(body%work%normal - darboux%work%normal))/(p%mass*g))
+      worst_p = max(worst_p, maxval(abs(body%work%law_power - darboux%work%law_power))/ &
+                             maxval(abs(body%work%law_power)))
     end do
     call check(st%ok(), 'body and Darboux loads: dynamics at scattered states: '//st%text())
     ! rounding of O(10) terms through the f + 1 passes and the block solve

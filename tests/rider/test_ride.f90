@@ -306,7 +306,7 @@ contains
           f = m%law_force(law)
           w = m%frames(sys%layout%contact_frame(c))%v
           ! rtol 1e-12: one dot product against the mechanism's sum over loaded frames
-          call check_close(m%law_power(law), dot_product(f, w), 1e-12_wp, 1e-12_wp, &
+          call check_close(work%law_power(law), dot_product(f, w), 1e-12_wp, 1e-12_wp, &
                            'drag power = F.w_D at the '//trim(contact_names(c)))
           tested = tested + 1
         end do
@@ -338,10 +338,10 @@ contains
       law = sys%layout%drag(1)
       t = s%time(i)
       call m%dynamics(work, t, s%state(1:3, i), s%state(4:6, i), qdd, st)
-      n1 = m%normal
+      n1 = work%normal
       reused = work%dynamics_reused
       call m%dynamics(work, t, s%state(1:3, i), s%state(4:6, i), again, st)
-      call check(work%dynamics_reused == reused + 1 .and. all(again == qdd) .and. all(m%normal == n1), &
+      call check(work%dynamics_reused == reused + 1 .and. all(again == qdd) .and. all(work%normal == n1), &
                  'dynamics at the same state reused, the same results')
       m%laws(law)%law%active = .false.
       call m%dynamics(work, t, s%state(1:3, i), s%state(4:6, i), again, st)

@@ -180,9 +180,9 @@ contains
     call check(st%ok(), 'evaluates: '//st%text())
     ! rtol 1e-12: exact algebra up to the friction's regularization, (1e-6/2)^2/2
     mu = rider_default_mu   ! p's friction not set: the rider's Coulomb mu_D
-    call check_close(m%qdd(1), g*(sin(theta) - mu*cos(theta)), 1e-12_wp, 0.0_wp, &
+    call check_close(work%qdd(1), g*(sin(theta) - mu*cos(theta)), 1e-12_wp, 0.0_wp, &
                      'u'''' = g (sin theta - mu cos theta)')
-    call check(abs(m%qdd(2)) < 1e-12_wp .and. abs(m%qdd(3)) < 1e-12_wp, 'stays at the bottom, heading kept')
+    call check(abs(work%qdd(2)) < 1e-12_wp .and. abs(work%qdd(3)) < 1e-12_wp, 'stays at the bottom, heading kept')
     h = p%body%com_height
     mass = lay%body%pelvis%mass + lay%body%legs%mass + lay%body%trunk%mass
     n_heels = lay%body%legs%mass*g*cos(theta)*lay%body%legs%com(1)/(lay%body%heel(1) - mu*h)
@@ -230,16 +230,17 @@ contains
         expected = g*sin(theta) - values(j)*g*w
       end select
       ! rtol 1e-12: exact algebra (no regularization in these laws), a 3x3 solve
-      call check_close(m%qdd(1), expected, 1e-12_wp, 0.0_wp, trim(kinds(j))//': u'''' in closed form')
-      call check(abs(m%qdd(2)) < 1e-12_wp .and. abs(m%qdd(3)) < 1e-12_wp, trim(kinds(j))//': stays at the bottom')
+      call check_close(work%qdd(1), expected, 1e-12_wp, 0.0_wp, trim(kinds(j))//': u'''' in closed form')
+      call check(abs(work%qdd(2)) < 1e-12_wp .and. abs(work%qdd(3)) < 1e-12_wp, trim(kinds(j))//': stays at the bottom')
       call check_close(sum([(m%contacts(k)%normal_force, k = 1, N_CONTACTS)]), mass*g*cos(theta), 1e-12_wp, &
                        0.0_wp, trim(kinds(j))//': the normal forces carry m g cos(theta)')
       ! each contact: the law built for a point mass (no contact, the segment's weight) gives the same force
       weight = [lay%body%pelvis%mass, lay%body%legs%mass, lay%body%trunk%mass]*g
       do k = 1, N_CONTACTS
         call force_law_from_spec(p%friction, law_place_t('point', 0, weight(k)), law, st)
-        slip = m%contact_states(k)%slip - dot_product(m%contact_states(k)%slip, m%contact_states(k)%normal)* &
-               m%contact_states(k)%normal
+        associate (c => work%contact_states(k))
+          slip = c%slip - dot_product(c%slip, c%normal)*c%normal
+        end associate
         select type (law)
         class is (friction_law_t)
           force = law%slip_force(slip, m%contacts(k)%normal_force)

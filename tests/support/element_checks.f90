@@ -291,14 +291,14 @@ contains
         maxval(abs(fd2 - ref2)), maxloc(abs(fd1 - ref1)), maxloc(abs(fd2 - ref2))
     end if
     ! power of the explicit laws' loads through the closed loops
-    call m%evaluate_laws(t0, st)
+    call m%evaluate_laws(work, t0, st)
     call check(st%ok(), label//': force laws: '//st%text())
     call m%inverse_dynamics(work, .false., .false., LOADS_EXPLICIT)
     power = 0
     do i = 1, m%n_laws
-      if (.not. m%laws(i)%law%scaled) power = power + m%unit_power(i)
+      if (.not. m%laws(i)%law%scaled) power = power + work%unit_power(i)
     end do
-    call check_close(dot_product(m%gq, qd), power, power_tol, power_tol*max(1.0_wp, abs(power)), &
+    call check_close(dot_product(work%gq, qd), power, power_tol, power_tol*max(1.0_wp, abs(power)), &
                      label//': virtual power Q.q'' = power of the applied loads at t = '//tt)
   contains
     subroutine state_at(t)
