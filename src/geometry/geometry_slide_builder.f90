@@ -17,7 +17,7 @@ module geometry_slide_builder
   use base_kinds, only: wp
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
-  use base_text, only: format_real, format_integer
+  use base_text, only: format_real, format_short, format_integer
   use geometry_curve, only: curve_t, curve_point_t, line_curve_t, helix_curve_t, constant_curve_t, &
     spline_centerline_t, new_spline_centerline
   use geometry_cross_section, only: cross_section_t, section_holder_t, circle_section_t, ellipse_section_t, &
@@ -30,6 +30,12 @@ module geometry_slide_builder
     cross_section_description_t, slide_description_t
   public :: build_centerline_curve, build_horizon, build_element_centerline, build_section_part, &
     build_cross_section, build_slide, fit_chain
+
+  !> The most a spline through points may be longer than the polyline on any
+  !> segment between two of them (check_overshoot): the shipped inputs reach
+  !> 1.16 (docs/geometry.md, "&centerline"), a half circle between two
+  !> points 1.57
+  real(wp), parameter :: max_overshoot = 3
 
   !> &centerline: kind 'line' (start, end), 'helix' (center, radius, rise per
   !> turn, turns, phase) or 'points' (a spline through points); the horizon
@@ -98,12 +104,15 @@ module geometry_slide_builder
 contains
 
   !> The centerline curve of a &centerline description.
-  subroutine build_centerline_curve(d, curve, status)
+  !> `variable`: the value at fault when the points are ('points'), else ''.
+  subroutine build_centerline_curve(d, curve, status, variable)
     type(centerline_description_t), intent(in) :: d
     class(curve_t), allocatable, intent(out) :: curve
     type(status_t), intent(inout) :: status
+    character(len=:), allocatable, intent(out), optional :: variable
     type(spline_centerline_t) :: fitted
     type(status_t) :: built
+    if (present(variable)) variable = ''
     select case (trim(d%kind))
     case ('line')
       curve = line_curve_t(origin=d%start, direction=(d%end - d%start)/norm2(d%end - d%start), u_min=0.0_wp, &
@@ -126,6 +135,10 @@ contains
       else
         fitted = new_spline_centerline(d%points, d%smoothing, d%degree, built)
       end if
+      if (built%ok()) then
+        call check_overshoot(fitted, d%points, built)
+        if (.not. built%ok() .and. present(variable)) variable = 'points'
+      end if
       if (.not. built%ok()) then
         status = built
         return
@@ -136,6 +149,38 @@ contains
                       ''' is not one of line, helix, points')
     end select
   end subroutine build_centerline_curve
+
+  !> A spline through points that swings far away from them is refused: on
+  !> no segment between consecutive points may its arc length exceed
+  !> max_overshoot times their distance (docs/geometry.md, "&centerline").
+  !> Its parameter is the points' cumulative chord length, so the spline's
+  !> length over a segment is the chord's times its mean speed |c_u| there;
+  !> a point far off the others (a typing slip: 2.5e3 for 2.5) makes the
+  !> quintic overshoot by orders of magnitude (3.3e8 m of it from points 5 km
+  !> apart), which no ride on such a tube could mean.
+  subroutine check_overshoot(fitted, points, status)
+    type(spline_centerline_t), intent(in) :: fitted
+    real(wp), intent(in) :: points(:, :)
+    type(status_t), intent(inout) :: status
+    real(wp) :: u0, u1, chord, length
+    integer :: i
+    u1 = 0
+    do i = 2, size(points, 2)
+      chord = norm2(points(:, i) - points(:, i - 1))
+      u0 = u1
+      u1 = u1 + chord   ! the parameter at points(:, i), as new_spline_centerline sets it
+      length = fitted%arc_length(u0, u1)
+      if (.not. length <= max_overshoot*chord) then
+        call set_status(status, STATUS_INVALID_INPUT, 'points: the spline through them swings away '// &
+                        'between points(:, '//format_integer(i - 1)//') and points(:, '// &
+                        format_integer(i)//'), '//format_short(chord)//' m apart: it is '//format_short(length)// &
+                        ' m long there, '//format_short(length/chord)//' times their distance; at most '// &
+                        format_short(max_overshoot)//' times is allowed (a point far off the others? '// &
+                        'move it, or add points between)')
+        return
+      end if
+    end do
+  end subroutine check_overshoot
 
   !> The horizon field of a &centerline description: the constant horizon,
   !> or for points with horizon_points a spline through them over the
@@ -335,7 +380,7 @@ contains
     case ('tube')
       group = 'centerline'
       words = 'centerline'
-      call build_centerline_curve(d%centerline, centerline, status)
+      call build_centerline_curve(d%centerline, centerline, status, failed)
       if (status%ok()) then
         call build_horizon(d%centerline, horizon, status)
         if (.not. status%ok()) then

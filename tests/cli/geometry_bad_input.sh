@@ -58,6 +58,19 @@ printf "%s\n%s\n&centerline kind = 'points', n_points = 5, points = 0,0,0, 1,0,0
   "$run" "$tube" "$circle" > "$work/duplicate_points.nml"
 expect duplicate_points 1 duplicate_points.nml '&centerline' 'points(:, 3)' 'duplicate consecutive'
 
+# a point far off the others (inputs/geometry/points_tube.nml with a y of
+# 2.5e3 for 5, cli_mutation's mutant 433): the quintic through them swings
+# out to 1.5e8 m (3.3e8 m long), 15444 times the 2.5 km between points 4 and 5 there, and was
+# accepted ("input ok"); the spline may be at most 3 times as long as the
+# distance between two points. With 2.5e3 for 1 (point 3) it is 5.3 times
+# (refused before only because the swing happened to pass through the tube)
+sed "s/7.0, 5.0, -0.8/7.0, 2.5e3, -0.8/" inputs/geometry/points_tube.nml > "$work/point_far_off.nml"
+expect point_far_off 1 point_far_off.nml:11 '&centerline: points: ' 'between points(:, 4) and points(:, 5)' \
+  'it is 3.85629E+07 m long there' 'at most 3 times is allowed'
+sed "s/4.0, 1.0, -0.4/4.0, 2.5e3, -0.4/" inputs/geometry/points_tube.nml > "$work/point_off.nml"
+expect point_off 1 point_off.nml:11 '&centerline: points: ' 'between points(:, 2) and points(:, 3)' '5.2787' \
+  'at most 3 times is allowed'
+
 printf "%s\n%s\n&centerline kind = 'line', start = 0,0,10, end = 0,0,0, horizon = 0,0,1 /\n%s\n" \
   "$run" "$tube" "$circle" > "$work/horizon_parallel.nml"
 expect horizon_parallel 1 horizon_parallel.nml '&centerline' horizon 'parallel'
