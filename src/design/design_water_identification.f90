@@ -190,7 +190,7 @@ contains
     end if
     if (any(setup%model%stations <= setup%y0(1))) then
       call set_status(status, STATUS_INVALID_INPUT, 'the measurement places (sections, segments) must all '// &
-        'lie downstream of the start u0 = '//format_short(setup%y0(1)))
+        'lie downstream of the start (u = '//format_short(setup%y0(1))//')')
     end if
   end subroutine new_water_identification
 

@@ -113,8 +113,8 @@ module io_declarations_ride
       high=1.0_wp, meaning='water inflow Q (refused with start = ''height_speed'', where Q = A w)'), &
     declaration_t(groups='water', name='start', kind=VALUE_WORDS, default='''edges''', &
       choices='edges height speed height_speed', meaning='which start values are given (docs/water.md)'), &
-    declaration_t(groups='water', name='u0', unit='surface parameter', default='0', low=-1e6_wp, high=1e6_wp, &
-      meaning='centerline parameter of the first section (m of arc length on slides)'), &
+    declaration_t(groups='water', name='u0', unit='m', default='0', low=-1e6_wp, high=1e6_wp, &
+      meaning='the first section: arc length along the slide''s centerline from its start'), &
     declaration_t(groups='water', name='v0', unit='rad', default='pi/2', low=-10.0_wp, high=10.0_wp, &
       meaning='water middle at the start (not with `start = ''edges''`)'), &
     declaration_t(groups='water', name='v_left0', unit='rad', default='pi/2 + 0.3', low=-10.0_wp, &

@@ -132,9 +132,10 @@ contains
     channel = new_channel(description%slide)
     call channel%u_range(u_min, u_max)
     call channel%v_range(v_min, v_max)
-    if (description%start%u0 < u_min .or. description%start%u0 >= u_max) then
-      call invalid(input, 'water', 'u0', format_real(description%start%u0), 'the start must lie on the slide, ' // &
-                   'u in ['//format_real(u_min)//', '//format_real(u_max)//')', status)
+    total = channel%arc_length(u_max)
+    if (.not. (description%start%u0 >= 0 .and. description%start%u0 < total)) then
+      call invalid(input, 'water', 'u0', format_real(description%start%u0), 'the start must lie on the slide: '// &
+                   'its arc length along the centerline in [0, '//format_real(total)//') m', status)
       return
     end if
     ! the start edges (start = 'edges') or the water middle v0 (other starts)
@@ -152,7 +153,6 @@ contains
                    format_real(v_max)//'] rad', status)
       return
     end if
-    total = channel%arc_length(u_max)
     if (total/description%table_step > max_table_rows) then
       call invalid(input, 'water', 'table_step', format_real(description%table_step), 'the table over the '// &
                    format_real(total)//' m of slide would have more than '//format_real(max_table_rows)// &
@@ -167,7 +167,7 @@ contains
       end if
     end do
     ! the inlets on the slide, from the start to before the end
-    start_arc = channel%arc_length(description%start%u0)
+    start_arc = description%start%u0
     do i = 1, size(description%inlets)
       associate (at => description%inlets(i)%arc_length)
         if (at < start_arc - start_tolerance .or. .not. at < total) then

@@ -16,7 +16,7 @@ module water_run
   use numerics_ode, only: ode_options_t
   use geometry_slide_query, only: slide_surface_t
   use geometry_tube, only: tube_surface_t
-  use water_channel, only: new_channel
+  use water_channel, only: channel_t, new_channel
   use water_streamline, only: streamline_t, default_f1, default_f2, default_f3, CORRECTION_FULL, &
     CORRECTION_NO_RADIUS, CORRECTION_OFF
   use water_flow, only: water_start_t, water_series_t, water_initial_state, simulate_water, &
@@ -79,6 +79,7 @@ contains
     type(status_t), intent(inout) :: status
     type(water_inlet_t), allocatable, intent(out), optional :: inlets(:)
     type(water_inlet_t), allocatable :: joining(:)
+    type(water_start_t) :: start
     character(len=:), allocatable :: k
     real(wp) :: start_arc
     real(wp) :: total, u_min, u_max, v_min, v_max
@@ -157,7 +158,11 @@ contains
           if (.not. status%ok()) return
         end do
       end if
-      call water_initial_state(model, d%start, y0, status)
+      ! the start as the model takes it: at the centerline parameter of u0
+      start = d%start
+      call start_parameter(model%channel, d%start%u0, total, start%u0, status)
+      if (.not. status%ok()) return
+      call water_initial_state(model, start, y0, status)
       if (.not. status%ok()) then
         call prefix_status(status, 'water start')
         return
@@ -167,7 +172,7 @@ contains
       else
         allocate (joining(0))
       end if
-      start_arc = model%channel%arc_length(d%start%u0)
+      start_arc = model%channel%arc_length(start%u0)
       do i = 1, size(joining)
         k = format_integer(i)
         associate (inlet => joining(i))
@@ -190,7 +195,7 @@ contains
           if (.not. status%ok()) return
         end associate
       end do
-      call join_start_inlets(model, d%start, start_arc, joining, y0, status)
+      call join_start_inlets(model, start, start_arc, joining, y0, status)
       if (present(inlets)) call move_alloc(joining, inlets)
     end associate
 
@@ -201,6 +206,31 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'water description: '//message)
     end subroutine fail
   end subroutine new_streamline
+
+  !> The centerline parameter u of the start from `arc`, its arc length
+  !> along the centerline from the slide's start (m; water%start%u0, &water
+  !> u0, as declared): the parameter is not arc length on an exact element
+  !> chain (its horizontal length) nor on a fitted one (the chord length of
+  !> its points). A start off the slide, or at its end (`total` m), is
+  !> refused. Where the parameter already is arc length to rounding (a
+  !> straight tube; the start of a fitted one, u0 = 0) arc is kept as given:
+  !> the point the search would find, and the same bits.
+  subroutine start_parameter(channel, arc, total, u, status)
+    class(channel_t), intent(in) :: channel
+    real(wp), intent(in) :: arc, total
+    real(wp), intent(out) :: u
+    type(status_t), intent(inout) :: status
+    u = arc
+    if (.not. (arc >= 0 .and. arc < total)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'water description: start%u0 = '//format_short(arc)// &
+                      ' m: the start must lie on the slide, from 0 to before its end ('//format_short(total)// &
+                      ' m of arc length along the centerline)')
+      return
+    end if
+    if (abs(channel%arc_length(arc) - arc) <= 8*epsilon(1.0_wp)*max(total, 1.0_wp)) return
+    call channel%parameter_at_length(arc, u, status)
+    if (.not. status%ok()) call prefix_status(status, 'water description: start%u0 = '//format_short(arc)//' m')
+  end subroutine start_parameter
 
   !> A slide is given (a tube: with its centerline).
   pure logical function slide_built(slide)

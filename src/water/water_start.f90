@@ -20,7 +20,10 @@ module water_start
   !> How the water enters at u0 (thesis 4.33 or given values).
   type :: water_start_t
     integer :: mode = START_EDGES
-    real(wp) :: u0 = 0                 ! centerline parameter of the first section
+    !> the first section: its centerline parameter u here (start_state); in a
+    !> water description (water_run) its arc length along the centerline, m,
+    !> which new_streamline turns into u
+    real(wp) :: u0 = 0
     real(wp) :: v0 = pi/2              ! rad, water middle (START_EDGES: from the edges)
     real(wp) :: v_left = pi/2 + 0.3_wp, v_right = pi/2 - 0.3_wp   ! rad, edges (START_EDGES)
     real(wp) :: height = 0.01_wp       ! m (START_HEIGHT, START_HEIGHT_SPEED)

@@ -12,12 +12,19 @@
 !>   every sample, and the field gets its edges from those rows;
 !> - the safety bound is 200 L/min_speed;
 !> - every invalid description is refused before any work, the message naming
-!>   the component.
+!>   the component;
+!> - start%u0 is the arc length along the centerline (&water u0, as
+!>   declared): on an exact element chain, whose parameter is the horizontal
+!>   length, the water starts u0 m along the centerline, on the straight as
+!>   in the curve after it; beyond the slide's length it is refused.
 program test_water_run
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_status, only: status_t, STATUS_INVALID_INPUT
-  use geometry_tube, only: new_s_bend_tube, new_straight_tube
+  use geometry_tube, only: tube_surface_t, new_s_bend_tube, new_straight_tube, new_tube_surface
+  use geometry_curve, only: curve_point_t, constant_curve_t
+  use geometry_cross_section, only: circle_section_t
+  use geometry_slide_elements, only: slide_element_t, element_chain_curve_t, new_element_chain
   use testing, only: check, check_close, finish_tests
   use water_streamline, only: streamline_t
   use water_flow, only: OUTCOME_END, OUTCOME_DURATION, START_HEIGHT_SPEED, START_EDGES, safety_time_bound
@@ -41,6 +48,7 @@ program test_water_run
   call edges_at_rows(d)
   call safety_bound()
   call refused(d)
+  call start_on_chain()
   call finish_tests('test_water_run')
 
 contains
@@ -190,8 +198,50 @@ contains
     call refuse_with(d, 'table_step', -1.0_wp)
     call refuse_with(d, 'time_bound', -1.0_wp)
     call refuse_with(d, 'stations', 99.0_wp)
-    call refuse_with(d, 'u0', 31.0_wp)
+    call refuse_with(d, 'u0', 99.0_wp)
   end subroutine refused
+
+  !> u0 as arc length on an exact chain: a 20 deg straight of 12 m
+  !> (horizontally), then a 90 deg curve of radius 8 m at 5 deg (the rider's
+  !> test_rider_model check_start_on_chain). On the straight the arc length
+  !> is the distance from the centerline's start (u0 used as the parameter,
+  !> u0 m horizontally, lay 1/cos(20 deg) - 1 = 6 % further); in the curve
+  !> the tube's own arc length (parameter_at_length solves to 1e-12 of the
+  !> length, so 1e-10 relative holds).
+  subroutine start_on_chain()
+    type(water_description_t) :: w
+    type(element_chain_curve_t) :: chain
+    type(tube_surface_t) :: tube
+    type(streamline_t) :: model
+    type(curve_point_t) :: c0, c
+    type(status_t) :: st
+    real(wp) :: y0(7)
+    chain = new_element_chain([slide_element_t(kind='straight', length=12.0_wp, slope_deg=20.0_wp), &
+                               slide_element_t(kind='curve', radius=8.0_wp, angle_deg=90.0_wp, slope_deg=5.0_wp)], &
+                              [0.0_wp, 0.0_wp, 10.0_wp], 0.0_wp, 2.0_wp, st)
+    if (st%ok()) tube = new_tube_surface(chain, constant_curve_t(value=[0.0_wp, 0.0_wp, 1.0_wp]), &
+                                         circle_section_t(radius=0.5_wp), st)
+    call check(st%ok(), 'chain tube built: '//st%text())
+    if (.not. st%ok()) return
+    w%slide = tube
+    w%start%mode = START_EDGES
+    w%start%u0 = 4
+    call new_streamline(w, model, y0, st)
+    call check(st%ok(), 'water starts on the chain: '//st%text())
+    call chain%evaluate(0.0_wp, 0, c0, st)
+    call chain%evaluate(y0(1), 0, c, st)
+    call check_close(norm2(c%d(:, 0) - c0%d(:, 0)), 4.0_wp, 1e-10_wp, 0.0_wp, &
+                     'the water starts u0 = 4 m along the straight''s centerline')
+    w%start%u0 = 20
+    call new_streamline(w, model, y0, st)
+    call check(st%ok(), 'water starts in the curve: '//st%text())
+    call check_close(tube%arc_length(y0(1)), 20.0_wp, 1e-10_wp, 0.0_wp, &
+                     'the water starts u0 = 20 m along the centerline, in the curve')
+    w%start%u0 = 40
+    call new_streamline(w, model, y0, st)
+    call check(st%code == STATUS_INVALID_INPUT .and. index(st%text(), 'start%u0 = 40') > 0 .and. &
+               index(st%text(), 'arc length') > 0, 'a start beyond the end refused with the length: '//st%text())
+  end subroutine start_on_chain
 
   subroutine refuse_with(d, what, value)
     type(water_description_t), intent(in) :: d
