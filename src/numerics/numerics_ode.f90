@@ -300,6 +300,8 @@ contains
     integer(c_int) :: flag
     real(c_double) :: t_reached(1)
     real(c_double), pointer :: v(:)
+    logical :: started
+    type(ode_stats_t) :: stats
 
     if (present(root_found)) root_found = .false.
     if (present(work_limit_reached)) work_limit_reached = .false.
@@ -336,7 +338,13 @@ contains
       work_limit_reached = .true.
       flag = CV_SUCCESS
     end if
-    call cvode_status(flag, 'CVode', t_reached(1), self%link, status)
+    ! a failure once steps were taken is one part way, whatever the flag blames
+    started = .false.
+    if (flag < 0) then
+      stats = self%statistics()
+      started = stats%steps > 0
+    end if
+    call cvode_status(flag, 'CVode', t_reached(1), self%link, status, started)
 
     self%t = t_reached(1)
     t = self%t
@@ -374,7 +382,7 @@ contains
     self%t = t0
     self%link%cvode_message = ''
     flag = FCVodeReInit(self%cvode, t0, self%y)
-    call cvode_status(flag, 'CVodeReInit', t0, self%link, status)
+    call cvode_status(flag, 'CVodeReInit', t0, self%link, status, started=.true.)
   end subroutine ode_restart
 
   !> CVODE will not step past t_stop (advance returns at t_stop if t_out is beyond).
@@ -546,13 +554,18 @@ contains
   end subroutine check_options
 
   !> The one translation of CVODE return flags into statuses. A status set by
-  !> the system's right-hand side wins over the flag it caused.
-  subroutine cvode_status(flag, call_name, t, link, status)
+  !> the system's right-hand side wins over the flag it caused. `started`:
+  !> the integration had begun (steps taken, records made), so a flag that
+  !> blames CVODE's input (CV_ILL_INPUT: a root at and very near another, an
+  !> error weight that became zero) is a run failed part way (STATUS_SOLVER),
+  !> not bad input with nothing done.
+  subroutine cvode_status(flag, call_name, t, link, status, started)
     integer(c_int), intent(in) :: flag
     character(len=*), intent(in) :: call_name
     real(wp), intent(in) :: t
     type(ode_link_t), intent(in) :: link
     type(status_t), intent(out) :: status
+    logical, intent(in), optional :: started
     character(len=:), allocatable :: name, meaning
     character(len=32) :: time
     integer :: code
@@ -569,6 +582,9 @@ contains
       return
     end if
     write (time, '(es23.15)') t
+    if (present(started)) then
+      if (started .and. code == STATUS_INVALID_INPUT) code = STATUS_SOLVER
+    end if
     status%code = code
     status%message = call_name//' failed at t = '//trim(adjustl(time))//': '//name// &
       ' ('//format_integer(int(flag))//'), '//meaning

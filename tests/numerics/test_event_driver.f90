@@ -6,7 +6,7 @@ module test_event_driver_systems
     RECORD_OUTPUT, RECORD_EVENT
   implicit none (type, external)
   private
-  public :: bouncing_ball_t, stiff_t
+  public :: bouncing_ball_t, stiff_t, sticky_root_t
 
   !> A ball under gravity bouncing on the floor with restitution e: at h = 0
   !> (falling) v -> -e v and the integrator restarts; a station at height
@@ -36,7 +36,71 @@ module test_event_driver_systems
     procedure :: diagnose => stiff_diagnose
   end type stiff_t
 
+  !> y' = 1 with the root function g = min(t - t_stick, 0): zero from
+  !> t_stick on. Its root is recorded and the run goes on (EVENT_RECORD),
+  !> where CVODE finds g zero at the root and just after it: "root found at
+  !> and very near t", CV_ILL_INPUT, part way through the run.
+  type, extends(event_system_t) :: sticky_root_t
+    real(wp) :: t_stick = 0.45_wp   ! s, between two outputs
+    integer :: outputs = 0, events = 0
+  contains
+    procedure :: rhs => sticky_rhs
+    procedure :: root_count => sticky_root_count
+    procedure :: roots => sticky_roots
+    procedure :: record => sticky_record
+    procedure :: handle_event => sticky_event
+  end type sticky_root_t
+
 contains
+
+  subroutine sticky_rhs(self, t, y, ydot, status)
+    class(sticky_root_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(out) :: ydot(:)
+    type(status_t), intent(inout) :: status
+    associate (unused => self, unused_t => t, unused_y => y, unused_s => status)
+    end associate
+    ydot = 1
+  end subroutine sticky_rhs
+
+  integer function sticky_root_count(self) result(n)
+    class(sticky_root_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    n = 1
+  end function sticky_root_count
+
+  subroutine sticky_roots(self, t, y, g)
+    class(sticky_root_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(out) :: g(:)
+    associate (unused_y => y)
+    end associate
+    g(1) = min(t - self%t_stick, 0.0_wp)
+  end subroutine sticky_roots
+
+  subroutine sticky_record(self, t, y, kind, status)
+    class(sticky_root_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    integer, intent(in) :: kind
+    type(status_t), intent(inout) :: status
+    associate (unused_t => t, unused_y => y, unused_s => status)
+    end associate
+    if (kind == RECORD_OUTPUT) self%outputs = self%outputs + 1
+    if (kind == RECORD_EVENT) self%events = self%events + 1
+  end subroutine sticky_record
+
+  subroutine sticky_event(self, t, y, fired, action, status)
+    class(sticky_root_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    real(wp), intent(inout) :: y(:)
+    integer, intent(in) :: fired(:)
+    integer, intent(out) :: action
+    type(status_t), intent(inout) :: status
+    associate (unused => self, unused_t => t, unused_y => y, unused_f => fired, unused_s => status)
+    end associate
+    action = EVENT_RECORD
+  end subroutine sticky_event
 
   subroutine ball_rhs(self, t, y, ydot, status)
     class(bouncing_ball_t), intent(inout) :: self
@@ -143,11 +207,11 @@ end module test_event_driver_systems
 !> ending exactly at t_end, the runaway guards, failures passed on.
 program test_event_driver
   use base_kinds, only: wp, int64
-  use base_status, only: status_t
+  use base_status, only: status_t, STATUS_SOLVER
   use numerics_ode, only: ODE_ADAMS, ODE_BDF
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, &
     DRIVE_EVENT_STOP, DRIVE_FAILED, runaway_step_limit
-  use test_event_driver_systems, only: bouncing_ball_t, stiff_t
+  use test_event_driver_systems, only: bouncing_ball_t, stiff_t, sticky_root_t
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
 
@@ -155,6 +219,7 @@ program test_event_driver
   call bounded_run()
   call runaway_guards()
   call failure_passed_on()
+  call ill_input_part_way()
   call finish_tests('test_event_driver')
 
 contains
@@ -312,4 +377,28 @@ contains
     call drive(ball, [2.0_wp, 0.0_wp], options, result, status)
     call check(.not. status%ok() .and. index(status%text(), 'output_step') > 0, 'bad options refused')
   end subroutine failure_passed_on
+
+  !> CVODE's CV_ILL_INPUT after the run has started (records made) is a
+  !> failure part way (STATUS_SOLVER: exit 2, the file kept and marked
+  !> incomplete), not bad input with nothing written (STATUS_INVALID_INPUT:
+  !> exit 1), which it was taken for before.
+  subroutine ill_input_part_way()
+    type(sticky_root_t), target :: sticky
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    type(status_t) :: status
+    options%progress_seconds = 0
+    options%output_step = 0.1_wp
+    options%t_end = 2
+    call drive(sticky, [0.0_wp], options, result, status)
+    call check(.not. status%ok() .and. result%outcome == DRIVE_FAILED, 'ill input part way: the run failed')
+    call check(index(status%text(), 'CV_ILL_INPUT') > 0, 'ill input part way: CVODE''s flag named: '//status%text())
+    call check(status%code == STATUS_SOLVER, 'ill input part way: a failure part way (STATUS_SOLVER), not '// &
+               'bad input')
+    ! CVODE reports the root where its search first sees g = 0 (at t_stick or
+    ! up to the output time after it) and fails on the call after that
+    call check(sticky%outputs >= 4 .and. sticky%events == 1 .and. result%t >= sticky%t_stick .and. &
+               result%t <= sticky%t_stick + options%output_step, &
+               'ill input part way: the outputs before t_stick and the root were recorded')
+  end subroutine ill_input_part_way
 end program test_event_driver
