@@ -216,7 +216,7 @@ contains
     if (s%nl > 0 .and. .not. any(losses(:n) > 0)) call file%write_vector(g//'energy_balance', s%kinetic(:n) + &
       s%potential(:n) - s%kinetic(1) - s%potential(1) - sum(s%law_work(:, :n), dim=1), 'J', &
       'E(t) - E(0) - (work of all force laws): zero up to the integrator''s error', status)
-    if (s%nl > 0 .and. any(losses(:n) > 0)) call file%write_vector(g//'energy_balance', s%kinetic(:n) + &
+    if (any(losses(:n) > 0)) call file%write_vector(g//'energy_balance', s%kinetic(:n) + &
       s%potential(:n) - s%kinetic(1) - s%potential(1) - sum(s%law_work(:, :n), dim=1) + losses(:n), 'J', &
       'E(t) - E(0) - (work of all force laws) + (energy the impacts removed, /contact/impacts): zero up to '// &
       'the integrator''s error', status)

@@ -323,7 +323,7 @@ contains
     type(summary_t) :: summary
     real(wp) :: e0, scale
     integer :: n, k, i
-    character(len=:), allocatable :: q, u
+    character(len=:), allocatable :: q, u, note
     n = s%n
     if (n < 1) return
     e0 = s%kinetic(1) + s%potential(1)
@@ -370,12 +370,18 @@ contains
     if (scenario /= 'contact') call summary%add('energy_change', 'energy change', &
                                                 (s%kinetic(n) + s%potential(n) - e0)/scale, '1', &
                                                 '(relative to the largest kinetic/potential change)')
-    if (s%nl > 0) then
-      call summary%add('law_work', 'work of the force laws', sum(s%law_work(:, n)), 'J')
+    if (s%nl > 0) call summary%add('law_work', 'work of the force laws', sum(s%law_work(:, n)), 'J')
+    ! whatever takes energy out (force laws, impacts), the balance adds it back
+    if (s%nl > 0 .or. losses(n) > 0) then
+      if (s%nl == 0) then
+        note = '(E(t) - E(0) + impacts'' losses, same scale)'
+      else if (losses(n) > 0) then
+        note = '(E(t) - E(0) - work + impacts'' losses, same scale)'
+      else
+        note = '(E(t) - E(0) - work, same scale)'
+      end if
       call summary%add('energy_balance_error', 'energy balance error', &
-                       (s%kinetic(n) + s%potential(n) - e0 - sum(s%law_work(:, n)) + losses(n))/scale, '1', &
-                       trim(merge('(E(t) - E(0) - work + impacts'' losses, same scale)', &
-                                  '(E(t) - E(0) - work, same scale)                  ', losses(n) > 0)))
+                       (s%kinetic(n) + s%potential(n) - e0 - sum(s%law_work(:, n)) + losses(n))/scale, '1', note)
     end if
     if (s%r > 0) call summary%add('closure_residual_max', 'closure residual max', maxval(s%closure(:n)), 'm')
     if (chart_changes > 0) call summary%add_count('chart_changes', 'chart changes', chart_changes, &

@@ -17,7 +17,8 @@
 #             closed-form time and speed; sunk: an open start in the floor
 #             is refused (exit 1); bounce: with restitution the ball bounces
 #             until the contact closes, the impacts table, the phases and the
-#             summary say so.
+#             summary say so, and the energy balance (impacts, no force
+#             law) is printed and stored, ~0.
 set -u
 slidesim=$1
 repo=$(cd "$(dirname "$0")/../.." && pwd)
@@ -87,6 +88,10 @@ grep -qE "impacts +6 " "$work/bounce.out" || fail "bounce: the summary does not 
 grep -qF "contact 'on_floor' closed at the impact at t = 1.326577 s" "$work/bounce.out" ||
   fail "bounce: the outcome does not say the contact closed"
 grep -qF "the end of the simulated time" "$work/bounce.out" || fail "bounce: the run does not go on to the end"
+# the energy balance with impacts and no force law (it was left out: only
+# laws made it): E(t) - E(0) + the impacts' losses, ~0 (the bound below)
+grep -qE "energy balance error +-?[0-9.]+E-(09|1[0-9]) \(E\(t\) - E\(0\) \+ impacts' losses" "$work/bounce.out" ||
+  fail "bounce: the summary lacks the energy balance (or it is not below 1e-8): $(grep -i 'energy' "$work/bounce.out")"
 if [ -n "$h5python" ] && [ -f "$work/bounce.h5" ]; then
   "$h5python" - "$work/bounce.h5" <<'EOF' || fail "bounce: the impacts table, the phases"
 import sys, h5py, numpy as np
@@ -109,6 +114,21 @@ ok = ok and abs(time[-1] - 2) < 1e-12 and abs(c['bodies/ball/position'][-1, 2] -
 ok = ok and abs(c['contacts/on_floor/normal_force'][-1] - 9.80665) < 1e-8
 ok = ok and c['contacts/on_floor/open'].attrs['units'] in (b'1', '1')
 print('bounce: impacts table and phases', 'match' if ok else 'differ', t['normal_speed_after'][:], switch)
+# E(t) - E(0) + the energy the impacts removed up to t, every record, against
+# the 9.8 J fallen. rtol = atol = 1e-10 bound each step's local error in z
+# (~1 m) and v (<= 4.4 m/s) to ~2e-10 m and ~5e-10 m/s, ~5e-10 of the
+# energy (m g dz, m v dv); the free flights are parabolas, which Adams
+# follows to rounding, so the error comes from the restarts and the rest:
+# seven phases (six flights, the closed contact), ~3.5e-9; bound 1e-8
+balance = c['energy_balance'][:] if 'energy_balance' in c else None
+if balance is None:
+    print('bounce: no /contact/energy_balance')
+    ok = False
+else:
+    scale = c['kinetic_energy'][:].max()
+    worst = np.abs(balance).max() / scale
+    print(f'bounce: energy balance at most {worst:.2e} of the {scale:.4f} J fallen')
+    ok = ok and worst < 1e-8 and c['energy_balance'].attrs['units'] in (b'J', 'J') and len(balance) == len(time)
 sys.exit(0 if ok else 1)
 EOF
 fi
