@@ -196,7 +196,7 @@ contains
   !> Checks the structure and finds what the computations need of it (their
   !> results and work arrays: prepare_workspace).
   module procedure finalize
-    integer :: k, nc, ns, nb, nr
+    integer :: k, ns, nr
     if (.not. status%ok()) return
     call ensure_ground(self)
     if (.not. allocated(self%q)) allocate (self%q(0))
@@ -214,7 +214,6 @@ contains
     self%r = size(self%beta)
     call find_speeds(self, status)
     if (.not. status%ok()) return
-    nc = size(self%contacts)
     call check_contacts(self, status)
     if (status%ok()) call check_laws(self, status)
     if (.not. status%ok()) return
@@ -232,7 +231,6 @@ contains
         self%block_contact = [self%block_contact, self%laws(k)%law%contact]
     end do
     ns = size(self%scaled_laws)
-    nb = size(self%block_contact)
     allocate (self%block_row(ns))
     do k = 1, ns
       self%block_row(k) = findloc(self%block_contact, self%laws(self%scaled_laws(k))%law%contact, dim=1)
