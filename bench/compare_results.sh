@@ -32,7 +32,7 @@ else
   inputs=(default inputs/contact/egg.nml inputs/contact/egg_long_axis_z.nml inputs/contact/paraboloids.nml
           inputs/contact/tower5.nml inputs/contact/bouncing_ball.nml inputs/contact/dome.nml inputs/contact/loop.nml
           inputs/contact/ball_drop_drag.nml
-          inputs/ride/demo_slide.nml inputs/sled/bowl.nml inputs/sled/bowl_friction.nml
+          inputs/ride/demo_slide.nml inputs/ride/crest.nml inputs/sled/bowl.nml inputs/sled/bowl_friction.nml
           inputs/sled/demo_slide.nml inputs/sled/incline_coulomb.nml inputs/pendulum/simple.nml
           inputs/pendulum/double.nml inputs/fourbar/crank_rocker.nml inputs/demo_slide/point_mass.nml
           inputs/point_mass/apex_paraboloid.nml inputs/point_mass/ellipsoid.nml

@@ -32,26 +32,30 @@ module design_ride_evaluation
   private
   public :: felt_acceleration, felt_acceleration_units, tipping_lever_arm
   public :: ride_limit_t, limit_verdict_t, new_ride_limit, evaluate_limit, limit_quantities, &
-    limit_report_unit, limit_units_allowed, series_extreme, quantities_without_limit
+    limit_report_unit, limit_units_allowed, series_extreme, quantities_without_limit, flight_quantity
 
   !> ejection counts the rider's points that went over the top of an open
-  !> section's wall (0 or 1: the ride ends there); `limit_max = 0` forbids it
-  character(len=*), parameter :: limit_quantities(10) = [character(len=25) :: 'speed', 'exit_speed', &
+  !> section's wall (0 or 1: the ride ends there); `limit_max = 0` forbids it.
+  !> airtime (each flight of the heels) and drop_height (each landing's
+  !> v_n^2/(2 g)) need may_fly (the last n_flight_quantities).
+  character(len=*), parameter :: limit_quantities(12) = [character(len=25) :: 'speed', 'exit_speed', &
     'acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal', 'lever_arm', &
-    'normal_force', 'wall_angle', 'wall_distance', 'ejection']
+    'normal_force', 'wall_angle', 'wall_distance', 'ejection', 'airtime', 'drop_height']
+  integer, parameter :: n_flight_quantities = 2
 
   integer, parameter :: DIM_SPEED = 1, DIM_ACCELERATION = 2, DIM_LENGTH = 3, DIM_FORCE = 4, DIM_ANGLE = 5, &
-    DIM_COUNT = 6
-  integer, parameter :: quantity_dimension(10) = [DIM_SPEED, DIM_SPEED, DIM_ACCELERATION, DIM_ACCELERATION, &
-    DIM_ACCELERATION, DIM_LENGTH, DIM_FORCE, DIM_ANGLE, DIM_LENGTH, DIM_COUNT]
-  character(len=*), parameter :: report_units(6) = [character(len=3) :: 'm/s', 'g', 'm', 'N', 'deg', '1']
-  character(len=*), parameter :: units_allowed(6) = [character(len=48) :: &
+    DIM_COUNT = 6, DIM_TIME = 7
+  integer, parameter :: quantity_dimension(12) = [DIM_SPEED, DIM_SPEED, DIM_ACCELERATION, DIM_ACCELERATION, &
+    DIM_ACCELERATION, DIM_LENGTH, DIM_FORCE, DIM_ANGLE, DIM_LENGTH, DIM_COUNT, DIM_TIME, DIM_LENGTH]
+  character(len=*), parameter :: report_units(7) = [character(len=3) :: 'm/s', 'g', 'm', 'N', 'deg', '1', 's']
+  character(len=*), parameter :: units_allowed(7) = [character(len=48) :: &
     "'m s-1', 'm/s', 'km h-1', 'km/h'", &
     "'g' (multiples of |gravity|), 'm s-2', 'm/s^2'", &
     "'m', 'cm', 'mm'", &
     "'N', 'kN'", &
     "'deg', 'degree', 'rad'", &
-    "'1' (a count)"]
+    "'1' (a count)", &
+    "'s', 'ms'"]
 
   !> One limit, in the quantity's report unit.
   type :: ride_limit_t
@@ -152,6 +156,11 @@ contains
       end select
     case (DIM_COUNT)
       if (u == '1') f = 1
+    case (DIM_TIME)
+      select case (u)
+      case ('s'); f = 1
+      case ('ms'); f = 0.001_wp
+      end select
     end select
   end function unit_factor
 
@@ -201,18 +210,30 @@ contains
   end subroutine new_ride_limit
 
   !> The quantities that none of `limits` judges, as a list ('' when all are
-  !> limited): a report says what it did not check.
-  pure function quantities_without_limit(limits) result(text)
+  !> limited): a report says what it did not check; the flights' (airtime,
+  !> drop_height) only for a ride that may fly.
+  pure function quantities_without_limit(limits, may_fly) result(text)
     type(ride_limit_t), intent(in) :: limits(:)
+    logical, intent(in), optional :: may_fly
     character(len=:), allocatable :: text
-    integer :: k, i
+    integer :: k, i, last
     text = ''
-    do k = 1, size(limit_quantities)
+    last = size(limit_quantities) - n_flight_quantities
+    if (present(may_fly)) then
+      if (may_fly) last = size(limit_quantities)
+    end if
+    do k = 1, last
       if (any([(limits(i)%quantity == trim(limit_quantities(k)), i = 1, size(limits))])) cycle
       if (len(text) > 0) text = text//', '
       text = text//trim(limit_quantities(k))
     end do
   end function quantities_without_limit
+
+  !> Whether `quantity` is one of the flights' (it needs may_fly).
+  pure logical function flight_quantity(quantity)
+    character(len=*), intent(in) :: quantity
+    flight_quantity = quantity_index(quantity) > size(limit_quantities) - n_flight_quantities
+  end function flight_quantity
 
   pure function quantity_list() result(text)
     character(len=:), allocatable :: text

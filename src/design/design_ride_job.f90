@@ -132,7 +132,7 @@ contains
       allocate (limits(0))
     end if
     call evaluate_ride(result%ride%series, description%rider%gravity, result%ride%complete, limits, result%report, &
-                       result%ride%ejected_contact)
+                       result%ride%ejected_contact, result%ride%flights)
     call cpu_time(cpu1)
     result%ride_cpu = cpu1 - cpu0
     result%ridden = .true.

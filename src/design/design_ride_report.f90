@@ -15,6 +15,7 @@ module design_ride_report
   use base_constants, only: pi
   use rider_model, only: N_CONTACTS
   use rider_ride, only: ride_series_t
+  use rider_heels_flight, only: ride_flights_t
   use rider_extremes, only: EXTREME_TOP_SPEED, EXTREME_FELT_MAX, EXTREME_FELT_MIN, EXTREME_CLIMB, &
     EXTREME_NORMAL_MIN, EXTREME_LEVER
   use design_ride_evaluation, only: felt_acceleration, felt_acceleration_units, tipping_lever_arm, ride_limit_t, limit_verdict_t, &
@@ -49,14 +50,17 @@ module design_ride_report
 contains
 
   !> `ejected_contact`: the contact that went over the top of a wall and
-  !> ended the ride (rider_ride's ride_result_t; absent or 0: none).
-  subroutine evaluate_ride(s, gravity, complete, limits, report, ejected_contact)
+  !> ended the ride (rider_ride's ride_result_t; absent or 0: none);
+  !> `flights`: the heels' flights (may_fly), what airtime (each flight's,
+  !> at its take-off) and drop_height (each landing's, where it landed) judge.
+  subroutine evaluate_ride(s, gravity, complete, limits, report, ejected_contact, flights)
     type(ride_series_t), intent(in) :: s
     real(wp), intent(in) :: gravity(3)
     logical, intent(in) :: complete
     type(ride_limit_t), intent(in) :: limits(:)
     type(ride_report_t), intent(out) :: report
     integer, intent(in), optional :: ejected_contact
+    type(ride_flights_t), intent(in), optional :: flights
     real(wp), allocatable :: where(:), values(:), lever_abs(:)
     integer :: n, i, k, at
     n = s%n
@@ -126,12 +130,37 @@ contains
         call evaluate_limit(limits(k), [merge(1.0_wp, 0.0_wp, report%ejected_contact > 0)], where(n:n), &
                             report%verdicts(k))
         cycle
+      case ('airtime', 'drop_height')
+        call judge_flights(limits(k), report%verdicts(k))
+        cycle
       case default
         report%judged(k) = .false.
         cycle
       end select
       call evaluate_limit(limits(k), values, where, report%verdicts(k))
     end do
+
+  contains
+
+    !> A flights' limit: the longest airtime at its take-off, each landing's
+    !> drop height where it landed (none flown: 0 at the start).
+    subroutine judge_flights(limit, verdict)
+      type(ride_limit_t), intent(in) :: limit
+      type(limit_verdict_t), intent(out) :: verdict
+      real(wp), allocatable :: v(:), at(:)
+      v = [0.0_wp]
+      at = where(1:1)
+      if (present(flights)) then
+        if (limit%quantity == 'airtime' .and. flights%flights > 0) then
+          v = [flights%longest]
+          at = [flights%longest_arc_length]
+        else if (limit%quantity == 'drop_height' .and. flights%landings > 0) then
+          v = flights%landing%drop_height
+          at = flights%landing%arc_length
+        end if
+      end if
+      call evaluate_limit(limit, v, at, verdict)
+    end subroutine judge_flights
   end subroutine evaluate_ride
 
   !> The extremes the ride located between its records.

@@ -17,7 +17,7 @@ module io_rider_config
   use base_spec, only: spec_t
   use io_friction_config, only: friction_law_variables, friction_law_names, read_friction_law
   use rider_ride, only: ride_options_t
-  use design_ride_evaluation, only: ride_limit_t, new_ride_limit
+  use design_ride_evaluation, only: ride_limit_t, new_ride_limit, flight_quantity
   implicit none (type, external)
   private
   public :: read_rider_config, read_ride_gravity, require_coulomb_rider, open_rider_group, rider_friction_defaults, max_limits
@@ -71,6 +71,14 @@ contains
       call r%get('heading0_deg', heading_deg, status)
       call r%get('speed0', p%speed0, status)
       call r%get('min_speed', options%min_speed, status)
+      call r%get('may_fly', options%may_fly, status)
+      if (options%may_fly) then
+        call r%get('landing_restitution', options%landing%restitution, status)
+        call r%get('landing_mu', options%landing%mu, status)
+      else
+        call r%refuse_given([character(len=19) :: 'landing_restitution', 'landing_mu'], &
+                            'a ride without may_fly = .true. has no landing', status)
+      end if
       call r%get_parts('limit_quantity', quantity, count_text, status, given=has_quantity)
       call r%get_parts('limit_unit', unit, count_text, status, given=has_unit)
       call r%get_parts('limit_min', minimum, count_text, status, given=has_min)
@@ -114,6 +122,9 @@ contains
       end if
       call new_ride_limit(quantity(k), unit(k), minimum(k), has_min(k), maximum(k), has_max(k), &
                           norm2(rider%gravity), limits(k), problem)
+      if (len(problem) == 0 .and. flight_quantity(quantity(k)) .and. .not. options%may_fly) &
+        problem = trim(quantity(k))//' limits a flight: it needs may_fly = .true. (without it a lift-off ends '// &
+                  'the ride)'
       if (len(problem) > 0) then
         call r%invalid('limit_quantity, limit_unit ('//format_integer(k)//')', ''''//trim(quantity(k))//''', '''// &
                        trim(unit(k))//'''', problem, status)

@@ -79,6 +79,10 @@ module rider_model
     integer :: contact(N_CONTACTS) = 0              ! mechanism contact indices
     integer :: friction(N_CONTACTS) = 0             ! law indices of the friction (0: none)
     integer :: drag(N_CONTACTS) = 0                 ! law indices of the water drag (0: none)
+    integer :: heel_point = 0                       ! frame of the heel point (on the legs)
+    !> the heels' flight variant (build_rider's heels_open): phi_U a
+    !> coordinate, the heel point held on its contact's normal only (x, y)
+    logical :: heels_open = .false.
     type(rider_body_t) :: body
   end type rider_layout_t
 
@@ -96,7 +100,18 @@ contains
   !> trunk, which add up to the rider's), and, given the computed water
   !> and p%drag, the water drag at each contact (on where the contact starts
   !> between the water's edges). Finalized, ready to run.
-  subroutine build_rider(p, surface, m, layout, q0, status, water)
+  !>
+  !> heels_open (default false) builds the variant of the heels' flight
+  !> (docs/rider.md "Flight"): the legs' flexion phi_U is a fourth coordinate
+  !> (q = [u_B, v_B, phi_B, phi_U]), the heels' loop holds the heel point on
+  !> the normal through its contact's foot point only (the x and y
+  !> conditions, dependents u_U, v_U), so that its z measurement is the heel's
+  !> signed gap to the slide (positive on the rider's side), and the heels'
+  !> contact is two-sided: nothing presses there, its normal force is the
+  !> foot frame's load, zero (the foot frame carries no mass), and so is its
+  !> friction. Scalars, frames, elements, contacts and laws are the same, at
+  !> the same indices, as in the plain model: a state maps one to one.
+  subroutine build_rider(p, surface, m, layout, q0, status, water, heels_open)
     type(rider_params_t), intent(in) :: p
     class(surface_t), intent(in) :: surface
     type(mechanism_t), intent(out) :: m
@@ -104,6 +119,7 @@ contains
     real(wp), intent(out) :: q0(3)
     type(status_t), intent(inout) :: status
     type(water_field_t), intent(in), optional :: water
+    logical, intent(in), optional :: heels_open
     real(wp) :: g(2), u_start
     type(surface_point_t) :: pt
     type(darboux_frame_t) :: fr
@@ -115,6 +131,7 @@ contains
     real(wp) :: segment_weight(N_CONTACTS)   ! N
 
     q0 = [p%u0, p%v0, p%heading0]
+    if (present(heels_open)) layout%heels_open = heels_open
     call build_rider_body(p%body, layout%body, status)
     if (status%ok()) call start_parameter(surface, p%u0, u_start, status)
     if (.not. status%ok()) return
@@ -173,14 +190,18 @@ contains
 
     layout%contact_frame = [d_b, d_u, d_o]
     layout%body_frame = [pelvis, legs, trunk]
-    call m%set_coordinates([layout%u(CONTACT_PELVIS), layout%v(CONTACT_PELVIS), layout%heading])
+    if (layout%heels_open) then
+      call m%set_coordinates([layout%u(CONTACT_PELVIS), layout%v(CONTACT_PELVIS), layout%heading, layout%flexion])
+    else
+      call m%set_coordinates([layout%u(CONTACT_PELVIS), layout%v(CONTACT_PELVIS), layout%heading])
+    end if
 
     ! contacts (ground - body at the contact's Darboux frame), friction, drag
     friction = rider_friction(p)
     segment_weight = [layout%body%pelvis%mass, layout%body%legs%mass, layout%body%trunk%mass]*norm2(p%gravity)
     do k = 1, N_CONTACTS
       layout%contact(k) = m%add_contact(trim(contact_names(k)), 1, layout%body_frame(k), layout%contact_frame(k), &
-                                        one_sided=p%one_sided)
+                                        one_sided=p%one_sided .and. .not. (layout%heels_open .and. k == CONTACT_HEELS))
       if (friction%kind /= 'none') then   ! a law of the core's registry (kinetostatics_force_law_factory)
         call force_law_from_spec(friction, law_place_t(trim(contact_names(k))//'_friction', layout%contact(k), &
                                                        segment_weight(k)), law, status)
@@ -221,6 +242,7 @@ contains
       call m%add_element(new_revolute(hinge, hip_frame, frame, angle, axis))
       call m%add_element(new_mass_element(limb//'_mass', frame, part%mass, part%inertia, part%com, p%gravity, status))
       point_frame = m%add_frame(point//'_point')
+      if (k == CONTACT_HEELS) layout%heel_point = point_frame
       call m%add_element(new_rigid_offset(limb//'_to_'//point, frame, point_frame, offset))
       contact_frame = m%add_frame(point//'_contact')
       layout%u(k) = m%add_scalar('u_'//contact, reach%u)
@@ -228,22 +250,30 @@ contains
       call m%add_element(new_surface_joint(point//'_joint', 1, contact_frame, layout%u(k), layout%v(k), surface, &
                                            sigma, alpha_u, alpha_v))
       layout%joint(k) = m%n_elements
-      call close_point(contact, contact_frame, point_frame, [angle, layout%u(k), layout%v(k)], closure)
+      call close_point(contact, contact_frame, point_frame, [angle, layout%u(k), layout%v(k)], closure, &
+                       layout%heels_open .and. k == CONTACT_HEELS)
     end subroutine add_limb
 
     !> Point `point` held at the origin of the Darboux frame `contact`:
-    !> three plane-point measurements along its axes (4.27), one loop.
-    subroutine close_point(name, contact, point, dependents, measurements)
+    !> three plane-point measurements along its axes (4.27), one loop; open:
+    !> on its z axis only (x and y, the dependents' last two: the contact's
+    !> (u, v) at the point's foot point), z left free (the signed gap).
+    subroutine close_point(name, contact, point, dependents, measurements, open)
       character(len=*), intent(in) :: name
       integer, intent(in) :: contact, point, dependents(3)
       integer, intent(out) :: measurements(3)
+      logical, intent(in) :: open
       character(len=1), parameter :: axis_names(3) = ['x', 'y', 'z']
       integer :: i
       do i = 1, 3
         measurements(i) = m%add_scalar(name//'_'//axis_names(i))
       end do
       call m%add_element(new_point_coordinates(name, contact, point, measurements))
-      call m%add_loop(name, measurements, [0.0_wp, 0.0_wp, 0.0_wp], dependents, status)
+      if (open) then
+        call m%add_loop(name, measurements(1:2), [0.0_wp, 0.0_wp], dependents(2:3), status)
+      else
+        call m%add_loop(name, measurements, [0.0_wp, 0.0_wp, 0.0_wp], dependents, status)
+      end if
     end subroutine close_point
   end subroutine build_rider
 

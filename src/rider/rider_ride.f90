@@ -8,7 +8,10 @@
 !>   end of the slide   a contact's surface joint reaches u_max (the heels,
 !>                      first): the normal end, the ride is complete;
 !>   lift-off           a contact's normal force falls to zero: the ride
-!>                      stops, saying which contact and where;
+!>                      stops, saying which contact and where; with
+!>                      may_fly the heels' lift-off starts the heels'
+!>                      flight instead (rider_heels_flight): the ride goes
+!>                      on with the heels open until they land, and on;
 !>   stall / turn back  the pelvis's rate along the slide u' falls below
 !>                      min_speed/|c_u| (one root function): the ride stops
 !>                      with a message;
@@ -24,26 +27,28 @@
 module rider_ride
   use base_kinds, only: wp
   use base_text, only: format_short
-  use base_vector, only: cross
-  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
-  use base_series, only: growable_series_t, resize
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use base_log, only: log_sink_i
   use numerics_ode, only: ode_options_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP, &
-    EVENT_STOP, EVENT_RECORD, RECORD_EVENT
+    EVENT_STOP, EVENT_RECORD, EVENT_RESTART, RECORD_EVENT, RECORD_START
   use geometry_surface, only: surface_t
   use geometry_slide_query, only: slide_surface_t, as_slide
   use geometry_curve, only: curve_point_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_END_OF_SURFACE, STOP_START_OF_SURFACE, STOP_SIDE_EDGE, &
     STOP_LIFT_OFF
-  use kinetostatics_mechanism_ode, only: mechanism_ode_t
-  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
-  use numerics_dense_extremes, only: dense_extremes_t, dense_quantities_t
-  use rider_extremes, only: ride_extremes_t, extreme_quantities, N_EXTREMES, N_ATTACHED
+  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_impact, only: impact_law_t, impact_outcome_t
+  use numerics_dense_extremes, only: dense_extremes_t
+  use rider_extremes, only: extreme_quantities, N_EXTREMES, N_ATTACHED
+  use rider_probe, only: ride_probe_t, pelvis_state
+  use rider_series, only: contact_series_t, ride_series_t, size_series, move_series, values_per_record
   use water_field, only: water_field_t
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names, &
-    CONTACT_PELVIS, N_CONTACTS, rider_coulomb_mu
+    CONTACT_PELVIS, CONTACT_HEELS, N_CONTACTS, rider_coulomb_mu, rider_default_mu
   use rider_water_drag, only: water_drag_t
+  use rider_heels_flight, only: ride_flights_t, heels_landing_t, heels_gap, take_off_state, landing_state, &
+    heels_impact, add_landing
   implicit none (type, external)
   private
   public :: ride_options_t, ride_series_t, contact_series_t, ride_result_t, rider_ode_t, simulate_ride, &
@@ -52,6 +57,24 @@ module rider_ride
   !> How a ride ended (ride_result_t%ending; its outcome says it in words).
   integer, parameter, public :: RIDE_FAILED = 0, RIDE_END_OF_SLIDE = 1, RIDE_LAST_STATION = 2, RIDE_LIFT_OFF = 3, &
     RIDE_EJECTED = 4, RIDE_STALLED = 5, RIDE_BACK_AT_START = 6, RIDE_TIME_OUT = 7
+
+  !> What a stop of the driver asks simulate_ride to do: nothing (the ride
+  !> ends), the heels' take-off, their landing.
+  integer, parameter :: SWITCH_NONE = 0, SWITCH_TAKE_OFF = 1, SWITCH_LANDING = 2
+  !> m: how far the heels must open after their take-off before the landing
+  !> is watched. At the lift-off the gap, its rate and its second derivative
+  !> are zero and it grows as s^3; its values carry the integration's error
+  !> of the positions (rtol 1e-10 of the slide's parameter u ~ 10..100 plus
+  !> atol 1e-9: a few 1e-9 m; the crest's gap went to -1.5e-9 m and back
+  !> within 1e-4 s). So the landing is watched once the gap has opened by
+  !> opening_gap, far above that noise; until then a landing is a sink by
+  !> sink_gap (only a true return of the heels reaches it).
+  real(wp), parameter :: opening_gap = 1e-7_wp, sink_gap = 1e-6_wp
+  !> landings within quick_flight of their take-off, in a row, that end the
+  !> ride (the heels neither stay on nor leave: a chatter the model cannot
+  !> resolve)
+  real(wp), parameter :: quick_flight = 1e-9_wp
+  integer, parameter :: max_quick_landings = 5
 
   type :: ride_options_t
     !> thesis B.7 tolerances; the step is capped at 0.05 s: each closure starts
@@ -68,46 +91,14 @@ module rider_ride
     !> identification compares with measurements at stations)
     real(wp), allocatable :: stations(:)
     logical :: stop_at_last_station = .false.   ! end the ride there (nothing is measured after it)
+    !> the heels' lift-off starts their flight (rider_heels_flight; docs/rider.md
+    !> "Flight") instead of ending the ride
+    logical :: may_fly = .false.
+    !> the heels' landing: restitution e = 0 (plastic: the heels land on a
+    !> water film) and Coulomb mu, the rider's mu_D
+    type(impact_law_t) :: landing = impact_law_t(restitution=0, mu=rider_default_mu)
   end type ride_options_t
 
-  !> One contact over the ride (n samples).
-  type :: contact_series_t
-    real(wp), allocatable :: u(:), v(:)                 ! surface parameters
-    real(wp), allocatable :: arc_length(:)              ! m, centerline arc length at u
-    real(wp), allocatable :: wall_angle(:)              ! rad, normal's angle from the bottom's (+ towards +v)
-    real(wp), allocatable :: wall_distance(:)           ! m, along the section from v = pi/2 (+ towards +v)
-    real(wp), allocatable :: position(:, :), velocity(:, :)   ! 3 x n: m, m/s
-    real(wp), allocatable :: normal_force(:)            ! N
-    real(wp), allocatable :: friction_force(:, :)       ! 3 x n, N
-    real(wp), allocatable :: drag_force(:, :)           ! 3 x n, N
-    integer, allocatable :: in_water(:)                 ! 1: between the water's edges
-    real(wp), allocatable :: reynolds(:), drag_coefficient(:), projected_area(:)   ! 1, 1, m^2 (0 when dry)
-    real(wp), allocatable :: relative_velocity(:, :)    ! 3 x n, m/s: contact minus water (0 when dry)
-  end type contact_series_t
-
-  !> Numbers of one record of ride_series_t besides the state (the arrays
-  !> below: 31 of the pelvis and the rider, 25 per contact), for the memory bound.
-  integer, parameter :: values_per_record = 31 + 25*N_CONTACTS
-
-  !> The ride's records; grown as the ride goes (base_series).
-  type, extends(growable_series_t) :: ride_series_t
-    real(wp), allocatable :: time(:)                    ! s
-    integer, allocatable :: kind(:)                     ! RECORD_START, _OUTPUT, _EVENT
-    real(wp), allocatable :: state(:, :)                ! the integrator's state y = [q, q', W] (a ride can
-                                                        ! be restarted from any record)
-    real(wp), allocatable :: arc_length(:)              ! m, of the pelvis
-    real(wp), allocatable :: speed(:)                   ! m/s, of the pelvis contact
-    real(wp), allocatable :: heading(:), phi_legs(:), phi_trunk(:)   ! rad
-    real(wp), allocatable :: pelvis_acceleration(:, :)  ! 3 x n, m/s^2: of the pelvis's centre of mass
-    real(wp), allocatable :: pelvis_axes(:, :, :)       ! 3 x 3 x n: x (to the feet), y (left), z (normal)
-    real(wp), allocatable :: reaction_force(:, :)       ! 3 x n, N: the slide's reaction on the rider at the pelvis
-    real(wp), allocatable :: reaction_moment(:, :)      ! 3 x n, N m: ... its moment about the pelvis contact
-    real(wp), allocatable :: kinetic(:), potential(:), energy(:)    ! J
-    real(wp), allocatable :: friction_work(:), drag_work(:)          ! J (negative: taken out)
-    real(wp), allocatable :: closure_residual(:)        ! m
-    type(contact_series_t) :: contact(N_CONTACTS)
-    type(ride_extremes_t) :: extremes                   ! the report's extremes, located between the records
-  end type ride_series_t
 
   type :: ride_result_t
     type(ride_series_t) :: series
@@ -122,23 +113,9 @@ module rider_ride
     !> the contact (CONTACT_PELVIS ...) whose point went over the top edge of
     !> an open section's wall, ending the ride (0: none; docs/rider.md)
     integer :: ejected_contact = 0
+    type(ride_flights_t) :: flights   ! the heels' flights and landings (may_fly)
   end type ride_result_t
 
-  !> The rider's report quantities at any state between the records: a copy
-  !> of the rider's mechanism (its closure warm starts are its own) with the
-  !> water drag switched as at the record that starts the stretch and its
-  !> closure started from that record's dependent coordinates (context: bit
-  !> k-1 of context(1) set when contact k is in the water, then beta).
-  type, extends(dense_quantities_t) :: ride_probe_t
-    type(mechanism_t) :: mechanism
-    type(mechanism_workspace_t) :: work
-    type(rider_layout_t) :: layout
-    class(slide_surface_t), allocatable :: slide
-    real(wp) :: gravity(3) = 0            ! m/s^2
-    real(wp), allocatable :: applied(:)   ! the context it was last switched to
-  contains
-    procedure :: evaluate => probe_evaluate
-  end type ride_probe_t
 
   !> The rider as a model of the integration driver.
   type, extends(mechanism_ode_t) :: rider_ode_t
@@ -157,12 +134,67 @@ module rider_ride
     integer :: lifted_contact = 0         ! the contact whose normal force fell to zero (0: none)
     type(dense_extremes_t) :: extremes    ! the report's extremes so far
     type(ride_probe_t) :: probe           ! evaluates them between the records
+    ! the heels' flight (may_fly): the two builds (rider_heels_flight), the
+    ! phase, the switch the last stop asks for and its state
+    logical :: may_fly = .false.
+    type(impact_law_t) :: landing
+    real(wp) :: gravity = 0               ! m/s^2, |g|
+    type(mechanism_t) :: plain, open
+    logical :: heels_flying = .false.
+    logical :: opened = .false.           ! the gap has opened beyond opening_gap
+    integer :: switch = SWITCH_NONE
+    real(wp) :: switch_t = 0
+    real(wp), allocatable :: switch_y(:)
+    integer :: quick_landings = 0         ! landings right after their take-off, in a row
+    integer :: flight_size = 0            ! size of the state in the flight layout
+    real(wp), allocatable :: padded(:, :) ! a dense-output piece in that layout
+    type(ride_flights_t) :: flights
   contains
     procedure :: record => rider_record
     procedure :: observe_step => rider_observe_step
     procedure :: handle_event => rider_handle_event
     procedure :: progress => rider_progress
+    procedure :: root_count => rider_root_count
+    procedure :: roots => rider_roots
   end type rider_ode_t
+
+  interface
+    ! rider_ride_flight
+    integer module function rider_root_count(self) result(n)
+      class(rider_ode_t), intent(in) :: self
+    end function rider_root_count
+
+    module subroutine rider_roots(self, t, y, g)
+      class(rider_ode_t), intent(inout) :: self
+      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(out) :: g(:)
+    end subroutine rider_roots
+
+    module subroutine gap_event(self, t, y, action, status)
+      class(rider_ode_t), intent(inout) :: self
+      real(wp), intent(in) :: t, y(:)
+      integer, intent(inout) :: action
+      type(status_t), intent(inout) :: status
+    end subroutine gap_event
+
+    module subroutine switch_build(self, y, status)
+      class(rider_ode_t), intent(inout) :: self
+      real(wp), allocatable, intent(inout) :: y(:)
+      type(status_t), intent(inout) :: status
+    end subroutine switch_build
+
+    module subroutine track_highest(self, t)
+      class(rider_ode_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+    end subroutine track_highest
+
+    module subroutine flight_layout_state(self, y, state)
+      class(rider_ode_t), intent(in) :: self
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: state(:)
+    end subroutine flight_layout_state
+  end interface
+
 
 contains
 
@@ -180,8 +212,10 @@ contains
     character(len=*), intent(in), optional :: label
     type(rider_ode_t), target :: sys
     type(driver_options_t) :: driver
-    real(wp), allocatable :: y0(:)
+    type(driver_result_t) :: stretch
+    real(wp), allocatable :: y0(:), y(:)
     type(status_t) :: run_status
+    integer :: n_state, n_context
 
     if (.not. status%ok()) return
     call prepare_ride(params, surface, options, sys, y0, status, water)
@@ -191,10 +225,21 @@ contains
     sys%probe%layout = sys%layout
     sys%probe%slide = sys%slide
     sys%probe%gravity = params%gravity
-    sys%probe%applied = spread(huge(1.0_wp), 1, 1 + sys%mechanism%r)
-    call sys%extremes%start(size(y0), N_EXTREMES, N_ATTACHED, 1 + sys%mechanism%r)
+    n_state = size(y0)
+    n_context = 1 + sys%mechanism%r
+    if (sys%may_fly) then
+      ! the probe and the records see every state in the flight layout, the
+      ! context ends with the phase (1: the heels fly)
+      sys%probe%may_fly = .true.
+      sys%probe%open = sys%open
+      n_state = sys%flight_size
+      n_context = n_context + 1
+      allocate (sys%padded(n_state, 0:12))
+    end if
+    sys%probe%applied = spread(huge(1.0_wp), 1, n_context)
+    call sys%extremes%start(n_state, N_EXTREMES, N_ATTACHED, n_context)
     ! room for two minutes of outputs at first; the series grows as the ride goes
-    call size_series(sys%ride, nint(min(options%max_duration, 120.0_wp)/options%output_step) + 16, size(y0))
+    call size_series(sys%ride, nint(min(options%max_duration, 120.0_wp)/options%output_step) + 16, n_state)
     driver%ode = options%ode
     ! Adams' corrector stops at half the local error tolerance (CVODE's
     ! default: a tenth): most steps take one iteration instead of two, 10148
@@ -209,8 +254,20 @@ contains
     driver%log => options%log
     driver%label = 'ride'
     if (present(label)) driver%label = label
-    call drive(sys, y0, driver, result%driver, run_status)
+    ! a stretch of the ride per build: a stop that asks for a switch (the
+    ! heels' take-off or landing) goes on from there with the other build
+    y = y0
+    do
+      call drive(sys, y, driver, stretch, run_status)
+      call add_stretch(result%driver, stretch)
+      if (.not. run_status%ok() .or. stretch%outcome /= DRIVE_EVENT_STOP .or. sys%switch == SWITCH_NONE) exit
+      call switch_build(sys, y, run_status)
+      if (.not. run_status%ok()) exit
+      driver%t_start = sys%switch_t
+      driver%output_origin = 0
+    end do
     if (run_status%ok()) call sys%extremes%finish(sys%probe, run_status)
+    result%flights = sys%flights
     call keep_extremes(sys)
     result%drag_switches = sys%drag_switches
     result%ejected_contact = sys%ejected_contact
@@ -268,6 +325,21 @@ contains
       return
     end if
     sys%slide_length = sys%slide%length()
+    if (options%may_fly) then
+      ! the heels' flight build, from the same start (rider_heels_flight)
+      sys%may_fly = .true.
+      sys%flights%watched = .true.
+      sys%landing = options%landing
+      sys%gravity = norm2(params%gravity)
+      block
+        type(rider_layout_t) :: open_layout
+        real(wp) :: q_open(3)
+        call build_rider(params, surface, sys%open, open_layout, q_open, status, water, heels_open=.true.)
+      end block
+      if (.not. status%ok()) return
+      sys%plain = sys%mechanism
+      sys%flight_size = 2*sys%open%f + sys%open%n_laws
+    end if
     sys%min_speed = options%min_speed
     sys%min_rate = options%min_speed/speed
     if (params%speed0 == 0) then
@@ -354,52 +426,6 @@ contains
     text = 't = '//format_short(t)//' s, '//format_short(s)//' m down the slide'
   end subroutine rider_progress
 
-  !> Room for `capacity` records in every array of the series, the recorded
-  !> ones kept (first call: allocates). Every array of ride_series_t is listed
-  !> here once, so growing keeps them all.
-  subroutine size_series(s, capacity, state_size)
-    type(ride_series_t), intent(inout) :: s
-    integer, intent(in) :: capacity, state_size
-    integer :: k, n
-    n = capacity
-    call resize(s%time, n); call resize(s%kind, n); call resize(s%state, state_size, n)
-    call resize(s%arc_length, n); call resize(s%speed, n); call resize(s%heading, n)
-    call resize(s%phi_legs, n); call resize(s%phi_trunk, n); call resize(s%pelvis_acceleration, 3, n)
-    call resize(s%pelvis_axes, 3, 3, n); call resize(s%reaction_force, 3, n); call resize(s%reaction_moment, 3, n)
-    call resize(s%kinetic, n); call resize(s%potential, n); call resize(s%energy, n)
-    call resize(s%friction_work, n); call resize(s%drag_work, n); call resize(s%closure_residual, n)
-    do k = 1, N_CONTACTS
-      associate (c => s%contact(k))
-        call resize(c%u, n); call resize(c%v, n); call resize(c%arc_length, n); call resize(c%wall_angle, n)
-        call resize(c%wall_distance, n); call resize(c%position, 3, n); call resize(c%velocity, 3, n)
-        call resize(c%normal_force, n); call resize(c%friction_force, 3, n); call resize(c%drag_force, 3, n)
-        call resize(c%in_water, n); call resize(c%reynolds, n); call resize(c%drag_coefficient, n)
-        call resize(c%projected_area, n); call resize(c%relative_velocity, 3, n)
-      end associate
-    end do
-    s%capacity = capacity
-  end subroutine size_series
-
-  !> Moves every array of a into b (a is left empty).
-  subroutine move_series(a, b)
-    type(ride_series_t), intent(inout) :: a, b
-    integer :: k
-    b%n = a%n
-    b%capacity = a%capacity
-    if (allocated(a%time)) call move_alloc(a%time, b%time)
-    call move_alloc(a%kind, b%kind); call move_alloc(a%state, b%state); call move_alloc(a%arc_length, b%arc_length)
-    call move_alloc(a%speed, b%speed); call move_alloc(a%heading, b%heading)
-    call move_alloc(a%phi_legs, b%phi_legs); call move_alloc(a%phi_trunk, b%phi_trunk)
-    call move_alloc(a%pelvis_acceleration, b%pelvis_acceleration); call move_alloc(a%pelvis_axes, b%pelvis_axes)
-    call move_alloc(a%reaction_force, b%reaction_force); call move_alloc(a%reaction_moment, b%reaction_moment)
-    call move_alloc(a%kinetic, b%kinetic); call move_alloc(a%potential, b%potential)
-    call move_alloc(a%energy, b%energy); call move_alloc(a%friction_work, b%friction_work)
-    call move_alloc(a%drag_work, b%drag_work); call move_alloc(a%closure_residual, b%closure_residual)
-    do k = 1, N_CONTACTS
-      b%contact(k) = a%contact(k)
-    end do
-    b%extremes = a%extremes
-  end subroutine move_series
 
   !> The complete state of the ride at (t, y).
   subroutine rider_record(self, t, y, kind, status)
@@ -413,9 +439,9 @@ contains
     f = self%mechanism%f
     call self%mechanism%evaluate(self%work, t, y(1:f), y(f + 1:2*f), residual, status)
     if (.not. status%ok()) return
-    call self%ride%make_room(16, 8.0_wp*(values_per_record + size(y)), 'ride', t, grown, status)
+    call self%ride%make_room(16, 8.0_wp*(values_per_record + size(self%ride%state, 1)), 'ride', t, grown, status)
     if (.not. status%ok()) return
-    if (grown > 0) call size_series(self%ride, grown, size(y))
+    if (grown > 0) call size_series(self%ride, grown, size(self%ride%state, 1))
     self%ride%n = self%ride%n + 1
     n = self%ride%n
     if (kind == RECORD_EVENT .and. self%pending_station > 0) then
@@ -425,7 +451,12 @@ contains
     associate (m => self%mechanism, lay => self%layout, r => self%ride)
       r%time(n) = t
       r%kind(n) = kind
-      r%state(:, n) = y
+      if (self%may_fly) then
+        call flight_layout_state(self, y, r%state(:, n))
+        if (self%heels_flying) call track_highest(self, t)
+      else
+        r%state(:, n) = y
+      end if
       call pelvis_state(m, lay, r%speed(n), r%pelvis_acceleration(:, n), r%pelvis_axes(:, :, n), &
                         r%reaction_force(:, n), r%reaction_moment(:, n))
       r%heading(n) = m%scalars(lay%heading)%q
@@ -442,6 +473,7 @@ contains
         if (lay%drag(k) > 0) r%drag_work(n) = r%drag_work(n) + y(2*f + lay%drag(k))
       end do
       r%closure_residual(n) = m%closure_residual()
+      r%airborne(n) = merge(1, 0, self%heels_flying)
       do k = 1, N_CONTACTS
         associate (c => r%contact(k), d => m%frames(lay%contact_frame(k)))
           c%u(n) = m%scalars(lay%u(k))%q
@@ -482,79 +514,42 @@ contains
           r%reaction_force(:, n), r%reaction_moment(:, n), r%arc_length(n), &
           [(r%contact(k)%wall_angle(n), k = 1, N_CONTACTS)], [(r%contact(k)%wall_distance(n), k = 1, N_CONTACTS)], &
           [(r%contact(k)%normal_force(n), k = 1, N_CONTACTS)], self%probe%gravity, values, attached)
-        call self%extremes%add_record(t, kind == RECORD_EVENT, &
-          [real(sum([(merge(2**(k - 1), 0, r%contact(k)%in_water(n) == 1), k = 1, N_CONTACTS)]), wp), &
-           (m%scalars(m%beta(k))%q, k = 1, m%r)], values, attached)
+        if (self%may_fly) then
+          ! the context in the flight layout: the betas of either build, the phase
+          ! last; a stretch's start after a switch splits the brackets as an event does
+          call self%extremes%add_record(t, kind == RECORD_EVENT .or. (kind == RECORD_START .and. n > 1), &
+            [real(sum([(merge(2**(k - 1), 0, r%contact(k)%in_water(n) == 1), k = 1, N_CONTACTS)]), wp), &
+             (m%scalars(m%beta(k))%q, k = 1, m%r), spread(0.0_wp, 1, self%plain%r - m%r), &
+             merge(1.0_wp, 0.0_wp, self%heels_flying)], values, attached)
+        else
+          call self%extremes%add_record(t, kind == RECORD_EVENT, &
+            [real(sum([(merge(2**(k - 1), 0, r%contact(k)%in_water(n) == 1), k = 1, N_CONTACTS)]), wp), &
+             (m%scalars(m%beta(k))%q, k = 1, m%r)], values, attached)
+        end if
       end if
     end associate
   end subroutine rider_record
 
-  !> Pelvis's speed, centre-of-mass acceleration, axes and the slide's
-  !> reaction on the rider there, from an evaluated mechanism.
-  subroutine pelvis_state(m, lay, speed, acceleration, axes, force, moment)
-    type(mechanism_t), intent(in) :: m
-    type(rider_layout_t), intent(in) :: lay
-    real(wp), intent(out) :: speed, acceleration(3), axes(3, 3), force(3), moment(3)
-    real(wp) :: s(3)
-    associate (d => m%frames(lay%contact_frame(CONTACT_PELVIS)), p => m%frames(lay%body_frame(CONTACT_PELVIS)))
-      speed = norm2(d%v)
-      s = matmul(p%rot, lay%body%pelvis%com)
-      acceleration = p%a + cross(p%alpha, s) + cross(p%omega, cross(p%omega, s))
-      axes = p%rot
-      ! the slide's reaction on the rider at the pelvis contact is minus the
-      ! load the mechanism puts on the Darboux frame there (docs/rider.md)
-      force = -d%force
-      moment = -d%torque
-    end associate
-  end subroutine pelvis_state
-
-  !> The report quantities at (t, y) with the water drag of `context`.
-  subroutine probe_evaluate(self, t, y, context, values, attached, status)
-    class(ride_probe_t), intent(inout) :: self
-    real(wp), intent(in) :: t, y(:)
-    real(wp), intent(in) :: context(:)
-    real(wp), intent(out) :: values(:), attached(:, :)
-    type(status_t), intent(inout) :: status
-    real(wp) :: residual, speed, acceleration(3), axes(3, 3), force(3), moment(3)
-    real(wp) :: angle(N_CONTACTS), distance(N_CONTACTS), normal(N_CONTACTS)
-    integer :: f, k
-    associate (m => self%mechanism, lay => self%layout)
-      if (any(context /= self%applied)) then
-        ! another stretch: its drag, and the closure from its record (a cold
-        ! start: no predictor from the last solution, which may lie far off)
-        do k = 1, N_CONTACTS
-          if (lay%drag(k) > 0) m%laws(lay%drag(k))%law%active = btest(nint(context(1)), k - 1)
-        end do
-        do k = 1, m%r
-          m%scalars(m%beta(k))%q = context(1 + k)
-        end do
-        m%warm = .false.
-        m%converged = .false.
-        self%applied = context
-      end if
-      f = m%f
-      call m%evaluate(self%work, t, y(1:f), y(f + 1:2*f), residual, status)
-      if (.not. status%ok()) return
-      call pelvis_state(m, lay, speed, acceleration, axes, force, moment)
-      do k = 1, N_CONTACTS
-        call self%slide%wall_position(m%scalars(lay%u(k))%q, m%scalars(lay%v(k))%q, angle(k), distance(k), status)
-        if (.not. status%ok()) return
-        normal(k) = m%contacts(lay%contact(k))%normal_force
-      end do
-      call extreme_quantities(speed, acceleration, axes, force, moment, &
-        self%slide%arc_length(m%scalars(lay%u(CONTACT_PELVIS))%q), angle, distance, normal, self%gravity, &
-        values, attached)
-    end associate
-  end subroutine probe_evaluate
 
   !> An internal step's dense output, for the extremes.
   subroutine rider_observe_step(self, t_n, h, taylor, status)
     class(rider_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t_n, h, taylor(:, 0:)
     type(status_t), intent(inout) :: status
+    integer :: k
     associate (unused => status)
     end associate
-    call self%extremes%add_piece(t_n, h, taylor)
+    if (.not. self%may_fly) then
+      call self%extremes%add_piece(t_n, h, taylor)
+    else if (self%heels_flying) then
+      call self%extremes%add_piece(t_n, h, taylor)
+    else
+      ! the plain build's piece in the flight layout (phi_U and its rate: 0, unused)
+      do k = 0, ubound(taylor, 2)
+        self%padded(:, k) = [taylor(1:3, k), 0.0_wp, taylor(4:6, k), 0.0_wp, taylor(7:, k)]
+      end do
+      call self%extremes%add_piece(t_n, h, self%padded(:, 0:ubound(taylor, 2)))
+    end if
   end subroutine rider_observe_step
 
   !> The located extremes into the ride's series.
@@ -593,8 +588,14 @@ contains
       if (was_active(k) .neqv. self%mechanism%laws(k)%law%active) self%drag_switches = self%drag_switches + 1
     end do
     where = ' at arc length '//format_short(self%slide%arc_length(y(1)))//' m (t = '//format_short(t)//' s)'
+    self%switch = SWITCH_NONE
+    if (self%heels_flying) then
+      if (fired(self%n_roots + 1) /= 0) call gap_event(self, t, y, action, status)
+      if (.not. status%ok()) return
+    end if
     if (fired(1) < 0) then
       action = EVENT_STOP
+      self%switch = SWITCH_NONE   ! the stall ends the ride, whatever else happened here
       self%ending = RIDE_STALLED
       self%outcome = 'the rider stalled or turned back: the speed along the slide fell below min_speed = '// &
                      format_short(self%min_speed)//' m/s'//where
@@ -606,11 +607,12 @@ contains
       action = max(action, EVENT_RECORD)
       if (self%stop_at_last_station .and. k == size(self%station_record) .and. action /= EVENT_STOP) then
         action = EVENT_STOP
+        self%switch = SWITCH_NONE
         self%ending = RIDE_LAST_STATION
         self%outcome = 'last station: the pelvis reached it'//where
       end if
     end do
-    if (action == EVENT_STOP .and. self%ending /= RIDE_LAST_STATION) then
+    if (action == EVENT_STOP .and. self%ending /= RIDE_LAST_STATION .and. self%switch /= SWITCH_LANDING) then
       ! the mechanism's stop, by its code (the first event; outcome has them all)
       select case (self%stop_kind)
       case (STOP_END_OF_SURFACE)
@@ -626,6 +628,14 @@ contains
         self%ending = RIDE_LIFT_OFF
         self%lifted_contact = findloc(self%layout%contact, self%stop_contact, dim=1)
         self%outcome = 'lift-off: the normal force of the '//contact_name(self%lifted_contact)//' fell to zero'//where
+        if (self%may_fly .and. self%lifted_contact == CONTACT_HEELS) then
+          self%switch = SWITCH_TAKE_OFF
+          self%switch_t = t
+          self%switch_y = y
+        else if (self%heels_flying) then
+          self%outcome = self%outcome//' while the heels were in the air (the whole rider''s flight is not '// &
+                         'modelled: the ride ends here)'
+        end if
       case (STOP_START_OF_SURFACE)
         self%ending = RIDE_BACK_AT_START
       end select
@@ -659,4 +669,25 @@ contains
       side = 'right'
     end if
   end function wall_side
+
+  !> A stretch's driver result added to the ride's (the last stretch's
+  !> outcome, time and roots; counts and CPU time summed).
+  subroutine add_stretch(total, stretch)
+    type(driver_result_t), intent(inout) :: total
+    type(driver_result_t), intent(in) :: stretch
+    total%outcome = stretch%outcome
+    total%t = stretch%t
+    if (allocated(stretch%fired)) total%fired = stretch%fired
+    total%events = total%events + stretch%events
+    total%restarts = total%restarts + stretch%restarts
+    total%outputs = total%outputs + stretch%outputs
+    total%stats%steps = total%stats%steps + stretch%stats%steps
+    total%stats%rhs_evaluations = total%stats%rhs_evaluations + stretch%stats%rhs_evaluations
+    total%stats%error_test_failures = total%stats%error_test_failures + stretch%stats%error_test_failures
+    total%stats%nonlinear_failures = total%stats%nonlinear_failures + stretch%stats%nonlinear_failures
+    total%stats%root_evaluations = total%stats%root_evaluations + stretch%stats%root_evaluations
+    total%stats%last_step = stretch%stats%last_step
+    total%stats%last_order = stretch%stats%last_order
+    total%cpu = total%cpu + stretch%cpu
+  end subroutine add_stretch
 end module rider_ride

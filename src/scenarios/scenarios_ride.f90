@@ -34,6 +34,7 @@ module scenarios_ride
   use io_xdmf, only: xdmf_t
   use io_output_files, only: text_output_t
   use scenarios_water, only: build_water, write_slide_grid
+  use scenarios_ride_flights, only: add_flights, write_flights
   implicit none (type, external)
   private
   public :: run_ride_scenario, read_ride_description, ride_groups, check_sphere_radii, read_limit_gate, &
@@ -334,6 +335,8 @@ contains
         end associate
       end do
     end associate
+    if (ride%flights%watched) call file%write_integers(g//'airborne', ride%series%airborne(:n), '1', &
+                                                       '1 while the heels fly (may_fly)', status)
     call file%set_attribute('/rider', 'outcome', ride%outcome, status)
     call file%set_attribute('/rider', 'reached_end', merge(1, 0, ride%complete), status)
     if (ride%ejected_contact > 0) &
@@ -376,6 +379,7 @@ contains
     if (r%ejected_contact > 0) call file%write_scalar(g//'ejected_arc_length', r%ejected_at, 'm', &
       'where the '//trim(contact_names(r%ejected_contact))//' went over the top of a wall (pelvis arc length)', &
       status)
+    if (ride%flights%watched) call write_flights(file, ride%flights, g//'flight/', status)
     do k = 1, 3
       c = g//'acceleration_'//trim(axis(k))
       call file%write_scalar(c//'_max', r%felt_max(k), r%felt_units, 'largest felt acceleration along the '// &
@@ -646,6 +650,7 @@ contains
       else
         call summary%add('final_speed', 'speed at the stop', r%final_speed, 'm/s')
       end if
+      if (ride%flights%watched) call add_flights(summary, ride%flights)
       exceeded = 0
       do k = 1, size(r%limits)
         unit = spaced(si(limit_report_unit(r%limits(k)%quantity), r%felt_units))
@@ -664,7 +669,7 @@ contains
         end if
         call summary%add_line('  '//line)
       end do
-      unset = quantities_without_limit(r%limits)
+      unset = quantities_without_limit(r%limits, ride%flights%watched)
       if (len(unset) > 0) call summary%add_text('limits_not_set', 'no limit set for', unset)
       call summary%add_count('limits_exceeded', 'limits exceeded', exceeded, 'of the '// &
                              format_integer(size(r%limits))//' set')

@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# The heels' flight in a ride (issue 25 points 1 and 4; inputs/ride/crest.nml):
+# - the shipped crest ride with may_fly: exit 0, the heels fly and land and
+#   the ride goes on past their lift-off; the report, --summary-json and
+#   /evaluation/flight give the airtime, the heels' highest point and each
+#   landing, whose drop height is normal_speed^2/(2 |g|) and whose place is
+#   where the file's /rider/airborne series turns 1 -> 0;
+# - the limits airtime and drop_height: exceeded when set below the ride's
+#   (the verdict names where), exit 4 with --fail-on-limit;
+# - without may_fly: the heels' lift-off ends the ride (as before), and a
+#   flight limit or landing parameter is refused (exit 1, nothing written).
+set -u
+root=$(pwd)
+slidesim=$1
+work=$(mktemp -d)
+trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
+failures=0; checks=0
+check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+py=/usr/bin/python3; [ -x "$py" ] || py=python3
+run() {   # name, then slidesim's options and input
+  name=$1; shift
+  (cd "$root" && "$slidesim" -o "$work/$name.h5" "$@" >"$work/$name.out" 2>"$work/$name.err"); got=$?
+}
+
+run crest --summary-json "$work/crest.json" inputs/ride/crest.nml
+check '[ $got = 0 ]' "crest: exit status $got ($(cat "$work/crest.err"))"
+check 'grep -q "^  landing 1 at arc length .*stayed on$" "$work/crest.out"' "crest: no landing line: $(grep -i landing "$work/crest.out")"
+check 'grep -q "limit airtime <= 0.5 s: ok" "$work/crest.out"' "crest: airtime limit: $(grep airtime "$work/crest.out")"
+"$py" - "$work/crest.h5" "$work/crest.json" >"$work/check.out" 2>&1 <<'EOF'
+import sys, json
+import h5py, numpy as np
+f = h5py.File(sys.argv[1], 'r')
+j = json.load(open(sys.argv[2]))['values']
+fl = f['evaluation/flight']
+g = 9.80665
+assert fl['flights'][()] == 1 and fl['landings'][()] == 1, (fl['flights'][()], fl['landings'][()])
+vn = fl['landing/normal_speed'][:]
+assert np.allclose(fl['landing/drop_height'][:], vn**2/(2*g), rtol=1e-14), 'drop height'
+assert 0.1 < fl['airtime'][()] < 0.2 and fl['airtime'][()] == fl['airtime_longest'][()]
+air = f['rider/airborne'][:]
+t = f['rider/time'][:]
+up = np.flatnonzero(np.diff(air) == 1)
+down = np.flatnonzero(np.diff(air) == -1)
+assert len(up) == 1 and len(down) == 1, (up, down)
+# the switches: two records at one time each; the flight between them
+assert t[up[0]] == t[up[0] + 1] and t[down[0]] == t[down[0] + 1]
+assert abs((t[down[0]] - t[up[0]]) - fl['airtime'][()]) < 1e-12
+assert abs(t[down[0]] - fl['landing/time'][0]) < 1e-12
+assert abs(j['airtime'] - fl['airtime'][()]) < 1e-15 and abs(j['drop_height_max'] - fl['drop_height_max'][()]) < 1e-15
+# the heels' normal force is zero in flight and presses again after the landing
+n = f['rider/heels/normal_force'][:]
+assert np.all(np.abs(n[up[0] + 1:down[0] + 1]) < 1e-6), np.abs(n[up[0] + 1:down[0] + 1]).max()
+assert n[down[0] + 2] > 0
+print('ok')
+EOF
+rc=$?
+check '[ $rc = 0 ]' "crest: the file and JSON: $(cat "$work/check.out")"
+
+# limits set below the ride's: exceeded, exit 4 when asked
+run tight inputs/ride/crest.nml --set rider%limit_max=0.1,0.01 --fail-on-limit
+check '[ $got = 4 ]' "tight limits, --fail-on-limit: exit status $got, expected 4 ($(cat "$work/tight.err"))"
+check 'grep -q "LIMIT EXCEEDED: airtime <= 0.1 s; worst 0.12" "$work/tight.out"' "tight limits: airtime: $(grep airtime "$work/tight.out")"
+check 'grep -q "LIMIT EXCEEDED: drop_height <= 0.01 m; worst 0.021" "$work/tight.out"' "tight limits: drop_height: $(grep drop_height "$work/tight.out")"
+
+# without may_fly: a flight limit is refused; without limits the lift-off ends the ride
+run no_fly inputs/ride/crest.nml --set rider%may_fly=.false.
+check '[ $got = 1 ]' "flight limits without may_fly: exit status $got, expected 1"
+check 'grep -q "airtime limits a flight: it needs may_fly = .true." "$work/no_fly.err"' "flight limits without may_fly: $(cat "$work/no_fly.err")"
+check '! ls "$work"/no_fly.h5* >/dev/null 2>&1' "flight limits without may_fly: a file was written"
+sed -e '/may_fly/d' -e '/limit_/d' inputs/ride/crest.nml >"$work/plain.nml"
+sed -i "s#'../parts/crest_slide.nml'#'$root/inputs/parts/crest_slide.nml'#" "$work/plain.nml"
+run plain "$work/plain.nml"
+check '[ $got = 0 ] && grep -q "ride ended  *lift-off: the normal force of the heels fell to zero" "$work/plain.out"' \
+  "without may_fly: $(grep 'ride ended' "$work/plain.out") $(cat "$work/plain.err")"
+check '! grep -q "heels. flights" "$work/plain.out" && ! h5ls "$work/plain.h5/evaluation/flight" >/dev/null 2>&1' \
+  "without may_fly: flight figures reported"
+printf '%s\n' "$(sed 's/  u0 = 0.5/  landing_mu = 0.1\n  u0 = 0.5/' "$work/plain.nml")" >"$work/mu.nml"
+run mu "$work/mu.nml"
+check '[ $got = 1 ] && grep -q "landing_mu" "$work/mu.err"' "landing_mu without may_fly: exit $got: $(cat "$work/mu.err")"
+
+echo "$checks checks, $failures failed"
+[ $failures = 0 ]
