@@ -8,7 +8,7 @@ submodule (io_hdf5) io_hdf5_life_cycle
   use base_version, only: slidesim_version, slidesim_compiler, slidesim_compiler_options
   use base_build_commit, only: slidesim_git_commit
   use io_provenance, only: utc_timestamp, host_name
-  use io_system, only: remove_file, rename_file, system_error_text, nonregular_kind
+  use io_system, only: remove_file, rename_file, system_error_text, nonregular_kind, folder_lock_t
   use io_output_files, only: temporary_beside, text_output_t
   use io_hdf5_objects, only: write_string_attribute
   implicit none (type, external)
@@ -101,10 +101,11 @@ contains
   !> dataset): `status` is then not ok.
   module procedure result_file_finish
     integer :: hdferr, err
-    logical :: renamed, complete
+    logical :: renamed, complete, locked
     character(len=:), allocatable :: text, error, what
     type(text_output_t) :: companion
     type(status_t) :: companion_status
+    type(folder_lock_t) :: pair_lock
 
     if (self%file_id < 0) return
     complete = complete_asked
@@ -167,8 +168,13 @@ contains
                       'during the run), which slidesim never replaces; '//text//' (rename them yourself)')
       return
     end if
+    ! the pair renamed under the folder's lock: of two runs on one path, the
+    ! last to rename leaves both its files (its view reads its own result);
+    ! a folder that cannot be locked (not readable) is renamed into unlocked
+    if (allocated(self%companion_path)) call pair_lock%lock(folder_of(self%path), locked)
     call rename_file(self%temporary_path, self%path, renamed, error)
     if (.not. renamed) then
+      call pair_lock%unlock()
       call remove_file(self%temporary_path)
       call companion%discard()
       complete = .false.
@@ -184,7 +190,18 @@ contains
         call set_status(status, STATUS_IO, 'the results are in "'//self%path//'", but '//companion_status%text())
       end if
     end if
+    call pair_lock%unlock()
   end procedure result_file_finish
+
+  !> The folder of a file's path ('' for the working folder).
+  pure function folder_of(path) result(folder)
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable :: folder
+    integer :: slash
+    slash = index(path, '/', back=.true.)
+    folder = path(:max(slash - 1, 0))
+    if (slash == 1) folder = '/'
+  end function folder_of
 
   !> A write failed (a full disk, the file-size limit, an I/O error): the
   !> file will not be kept; the message says what and why.

@@ -4,7 +4,8 @@
 !> reported (a full disk), the text of the last system error, the path a
 !> path resolves to (realpath), which file a path names (device and inode),
 !> what kind of file a path names when it is not a
-!> regular one (statx: a device, a FIFO, a socket), ignoring SIGXFSZ so that a write beyond the
+!> regular one (statx: a device, a FIFO, a socket), an exclusive lock on a
+!> folder (flock on the folder itself: no lock file), ignoring SIGXFSZ so that a write beyond the
 !> file-size limit fails with an error we report instead of killing us, and
 !> standard output written so that a lost line is known (a closed pipe, a
 !> full disk, a closed stream: `guard_standard_streams`, `write_standard_output`).
@@ -16,7 +17,7 @@ module io_system
   private
   public :: create_unique_file, open_unique_file, write_descriptor, close_descriptor, remove_file, rename_file, &
             system_error_text, resolved_path, file_identity_t, file_identity, &
-            ignore_file_size_signal, process_id, nonregular_kind
+            ignore_file_size_signal, process_id, nonregular_kind, folder_lock_t
   public :: guard_standard_streams, write_standard_output, standard_output_lost, standard_input_closed
 
   integer(c_int), parameter :: sigxfsz = 25, sigpipe = 13   !< Linux (x86-64, arm64)
@@ -46,6 +47,17 @@ module io_system
   contains
     procedure :: same => identity_same
   end type file_identity_t
+
+  !> An exclusive lock on a folder, held from `lock` until `unlock` (or the
+  !> process ends): flock(2) on the open folder, so two processes that lock
+  !> one folder take turns; nothing is written.
+  type :: folder_lock_t
+    private
+    type(c_ptr) :: folder = c_null_ptr
+  contains
+    procedure :: lock => folder_lock
+    procedure :: unlock => folder_unlock
+  end type folder_lock_t
 
   !> What became of standard output: a line that could not be written (or the
   !> stream closed at the start) and why. Process state, not simulation state:
@@ -105,6 +117,26 @@ module io_system
       integer(c_int), value :: fd
       integer(c_int) :: new_fd
     end function c_dup
+    function c_opendir(path) bind(C, name='opendir') result(folder)
+      import :: c_char, c_ptr
+      character(kind=c_char), intent(in) :: path(*)
+      type(c_ptr) :: folder
+    end function c_opendir
+    function c_dirfd(folder) bind(C, name='dirfd') result(fd)
+      import :: c_ptr, c_int
+      type(c_ptr), value :: folder
+      integer(c_int) :: fd
+    end function c_dirfd
+    function c_closedir(folder) bind(C, name='closedir') result(rc)
+      import :: c_ptr, c_int
+      type(c_ptr), value :: folder
+      integer(c_int) :: rc
+    end function c_closedir
+    function c_flock(fd, operation) bind(C, name='flock') result(rc)
+      import :: c_int
+      integer(c_int), value :: fd, operation
+      integer(c_int) :: rc
+    end function c_flock
     function c_getpid() bind(C, name='getpid') result(pid)
       import :: c_int
       integer(c_int) :: pid
@@ -226,6 +258,48 @@ contains
     if (c_fsync(fd) /= 0) error = system_error_text()
     if (c_close(fd) /= 0 .and. len(error) == 0) error = system_error_text()
   end subroutine close_descriptor
+
+  !> Waits for the exclusive lock on the folder `path` ('' or '.': the
+  !> working folder); `locked` false if the folder cannot be opened or locked.
+  subroutine folder_lock(self, path, locked)
+    class(folder_lock_t), intent(inout) :: self
+    character(len=*), intent(in) :: path
+    logical, intent(out) :: locked
+    integer(c_int), parameter :: lock_exclusive = 2   ! LOCK_EX
+    integer(c_int) :: rc
+    call self%unlock()
+    locked = .false.
+    if (len(path) == 0) then
+      self%folder = c_opendir('.'//c_null_char)
+    else
+      self%folder = c_opendir(path//c_null_char)
+    end if
+    if (.not. c_associated(self%folder)) return
+    do
+      rc = c_flock(c_dirfd(self%folder), lock_exclusive)
+      if (rc == 0) exit
+      if (last_errno() /= eintr) then
+        call self%unlock()
+        return
+      end if
+    end do
+    locked = .true.
+  end subroutine folder_lock
+
+  !> Releases the lock (closing the folder releases it); nothing if none is held.
+  subroutine folder_unlock(self)
+    class(folder_lock_t), intent(inout) :: self
+    integer(c_int) :: rc
+    if (.not. c_associated(self%folder)) return
+    rc = c_closedir(self%folder)
+    self%folder = c_null_ptr
+  end subroutine folder_unlock
+
+  integer(c_int) function last_errno()
+    integer(c_int), pointer :: errno
+    call c_f_pointer(c_errno_location(), errno)
+    last_errno = errno
+  end function last_errno
 
   !> Removes a file; no error if it is not there.
   subroutine remove_file(path)
