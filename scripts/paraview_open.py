@@ -5,7 +5,7 @@
     in ParaView's Python shell: exec(open('scripts/paraview_open.py').read()) after
     setting xmf = 'RESULT.xmf'
 
-Opens RESULT.xmf (the XDMF file next to RESULT.h5) with ParaView's "Xdmf3
+Opens RESULT.xmf (the XDMF file next to RESULT.h5, whose arrays it reads) with ParaView's "Xdmf3
 Reader (T)" (the "(S)" reader it picks by itself reads the same, but as
 pieces of one block without their names), shows the slide half transparent, the water band coloured
 by its speed, the rider's bodies by their normal force and the paths by the
@@ -59,7 +59,12 @@ def open_result(xmf, screenshot=None, render=True):
     """Opens `xmf`; returns the reader and its grids {name: source}."""
     if not os.path.isfile(xmf):
         sys.exit(f"paraview_open.py: {xmf}: no such file (the .xmf next to a slidesim result)")
-    reader = Xdmf3ReaderT(FileName=[xmf])
+    h5 = os.path.splitext(xmf)[0] + '.h5'
+    if not os.path.isfile(h5):
+        sys.exit(f"paraview_open.py: {h5}: no such file (the .xmf reads its arrays from the result beside it)")
+    # by its full path: the Xdmf3 readers look for `ride.xmfride.h5` (and
+    # abort) when the .xmf is named without a folder
+    reader = Xdmf3ReaderT(FileName=[os.path.abspath(xmf)])
     reader.UpdatePipelineInformation()
     times = list(reader.TimestepValues or [0.0])
     reader.UpdatePipeline(times[0])

@@ -5,8 +5,10 @@
 !> (a unique name in the result's folder: two runs on one path never share
 !> it); `finish` marks the root attribute `status` complete or incomplete,
 !> closes and renames it to `<path>` in one step, so a file with the final
-!> name is always a finished one. A run killed on the way leaves only its
-!> temporary file. When a write fails (a full disk, the file-size limit) the
+!> name is always a finished one; with its XDMF companion (which reads the
+!> result's datasets) both are renamed under an exclusive lock on their
+!> folder, so that of two runs on one path the last leaves both of its
+!> files. A run killed on the way leaves only its temporary file. When a write fails (a full disk, the file-size limit) the
 !> temporary file is deleted and nothing is kept (STATUS_IO). A device, FIFO
 !> or socket found at the final name (or its companion's) is never replaced:
 !> the results stay in the temporary file(s), named in the message (STATUS_IO).
@@ -49,6 +51,7 @@ module io_hdf5
     logical :: is_scale = .false.
     logical :: is_real = .false.         ! a double-precision dataset (else integer or text)
     logical :: is_integer = .false.      ! an integer dataset
+    character(len=:), allocatable :: units
   end type written_t
 
   type :: result_file_t
@@ -78,6 +81,7 @@ module io_hdf5
     procedure :: values_of => result_file_values_of
     procedure :: names_in => result_file_names_in
     procedure :: is_real => result_file_is_real
+    procedure :: units_of => result_file_units_of
     procedure :: make_scale => result_file_make_scale
     procedure :: attach_scale => result_file_attach_scale
     procedure :: attach_components => result_file_attach_components
@@ -229,6 +233,12 @@ module io_hdf5
       class(result_file_t), intent(in) :: self
       character(len=*), intent(in) :: name
     end function result_file_is_real
+
+    module function result_file_units_of(self, name) result(units)
+      class(result_file_t), intent(in) :: self
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: units
+    end function result_file_units_of
 
     module function result_file_names_in(self, group) result(names)
       class(result_file_t), intent(in) :: self

@@ -169,6 +169,16 @@ contains
     if (k > 0) is_real = self%written(k)%is_real
   end procedure result_file_is_real
 
+  !> The units of a dataset written to this file ('' if it was not written).
+  module procedure result_file_units_of
+    integer :: k
+    k = find_written(self, name)
+    units = ''
+    if (k > 0) then
+      if (allocated(self%written(k)%units)) units = self%written(k)%units
+    end if
+  end procedure result_file_units_of
+
   !> The datasets written directly in `group` (not in its subgroups), in the
   !> order they were written.
   module procedure result_file_names_in
@@ -255,6 +265,7 @@ contains
     call remember(self, name, shape)
     self%written(self%n_written)%is_real = type_id == H5T_NATIVE_DOUBLE
     self%written(self%n_written)%is_integer = type_id == H5T_NATIVE_INTEGER
+    self%written(self%n_written)%units = units
   end subroutine write_dataset
 
   !> Remembers the first dataset or attribute that is not finite.

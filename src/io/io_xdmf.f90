@@ -2,11 +2,18 @@
 !> form that every reader ParaView has reads alike (the Xdmf3 readers it
 !> picks by itself for File > Open, and the "XDMF Reader"): checked with
 !> each by tests/cli/xdmf_files.sh.
-!> - Every value is in the XML itself (Format="XML"), copied from the result
-!>   file: ParaView's Xdmf3 readers resolve an HDF5 reference against the
-!>   folder of the .xmf, and abort (SIGABRT) when the .xmf was named
-!>   without a folder (`ride.xmf` gives `ride.xmfride.h5`); they read no
-!>   X_Y_Z geometry, no JOIN function and no hyperslab of ours (0 points).
+!> - The arrays are not copied: a DataItem names a dataset of the result
+!>   file (Format="HDF", `<name>.h5:/group/dataset`, the result's final file
+!>   name without folder: the two files sit side by side and move together).
+!>   ParaView 5.11's Xdmf3 readers read only whole datasets (no X_Y_Z
+!>   geometry, JOIN or hyperslab: 0 points), so a grid whose points or
+!>   values the result holds in another layout (a surface's x, y, z; the
+!>   water band's two edges) gets them in that layout under /xdmf (the
+!>   same numbers); they resolve a reference against the .xmf's folder and
+!>   abort (SIGABRT) when the .xmf is named without one (`ride.xmf` gives
+!>   `ride.xmfride.h5`): open `./ride.xmf` or a full path (File > Open does).
+!>   Only what a grid needs at each time step (a few points, a box's corners)
+!>   and the connectivities are inline (Format="XML").
 !> - A surface grid is a structured grid (2DSMesh) with XYZ points; a path a
 !>   polyline with explicit connectivity (the Xdmf3 readers make no cell
 !>   without it), with the real (n) and (n, 3) datasets of its groups as
@@ -22,7 +29,7 @@
 module io_xdmf
   use base_kinds, only: wp
   use base_text, only: format_integer, format_real
-  use base_status, only: status_t
+  use base_status, only: status_t, STATUS_OK
   use io_hdf5, only: result_file_t
   implicit none (type, external)
   private
@@ -52,6 +59,7 @@ module io_xdmf
     real(wp), allocatable :: step_time(:)   !< s, the kept time steps
     integer, allocatable :: step_row(:)     !< their samples in the series
     type(text_t), allocatable :: steps(:)   !< the moving grids of each kept step
+    type(status_t) :: written                !< of the arrays added to the result under /xdmf
   contains
     procedure :: start => xdmf_start
     procedure :: surface => xdmf_surface
@@ -89,25 +97,35 @@ contains
     self%n_fixed = 0
     self%n_series = 0
     if (allocated(self%steps)) deallocate (self%steps)
+    self%written = status_t()
   end subroutine xdmf_start
 
-  !> The surface grid of io_surface_grid (group/x, y, z of shape (n_u, n_v)).
+  !> The surface grid of io_surface_grid (group/x, y, z of shape (n_u, n_v)):
+  !> its points as /xdmf/<group>/points (n_u, n_v, 3), added to the result.
   subroutine xdmf_surface(self, file, name, group)
     class(xdmf_t), intent(inout) :: self
-    type(result_file_t), intent(in) :: file
+    type(result_file_t), intent(inout) :: file
     character(len=*), intent(in) :: name, group
     integer, allocatable :: dims(:)
     real(wp), allocatable :: x(:), y(:), z(:)
+    character(len=:), allocatable :: points
     dims = file%shape_of(group//'/x')
     if (size(dims) /= 2) return
-    x = file%values_of(group//'/x')
-    y = file%values_of(group//'/y')
-    z = file%values_of(group//'/z')
-    if (size(x) /= product(dims) .or. size(y) /= size(x) .or. size(z) /= size(x)) return
+    points = '/xdmf'//group//'/points'
+    if (.not. same_shape(file%shape_of(points), [dims, 3])) then
+      x = file%values_of(group//'/x')
+      y = file%values_of(group//'/y')
+      z = file%values_of(group//'/z')
+      if (size(x) /= product(dims) .or. size(y) /= size(x) .or. size(z) /= size(x)) return
+      call file%write_array3(points, reshape(transpose(reshape([x, y, z], [size(x), 3])), [3, dims(2), dims(1)]), &
+                             file%units_of(group//'/x'), 'the points of the XDMF view''s surface grid: '//group// &
+                             '/x, y and z side by side', self%written)
+      if (.not. self%written%ok()) return
+    end if
     call add(self%fixed, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
     call add(self%fixed, '  <Topology TopologyType="2DSMesh" Dimensions="'//dims_text(dims)//'"/>')
     call add(self%fixed, '  <Geometry GeometryType="XYZ">')
-    call data_item(self%fixed, [dims, 3], reshape(transpose(reshape([x, y, z], [size(x), 3])), [3*size(x)]))
+    call referenced_item(self%fixed, file, [dims, 3], points, .true.)
     call add(self%fixed, '  </Geometry>')
     call add(self%fixed, '</Grid>')
     self%n_fixed = self%n_fixed + 1
@@ -126,7 +144,6 @@ contains
     character(len=*), intent(in), optional :: more
     character(len=*), intent(in), optional :: field_names(:), fields(:)
     integer, allocatable :: dims(:)
-    real(wp), allocatable :: values(:)
     character(len=:), allocatable :: taken
     integer :: k
     dims = file%shape_of(points)
@@ -140,16 +157,16 @@ contains
     call add(self%fixed, '    </DataItem>')
     call add(self%fixed, '  </Topology>')
     call add(self%fixed, '  <Geometry GeometryType="XYZ">')
-    call data_item(self%fixed, dims, file%values_of(points))
+    call referenced_item(self%fixed, file, dims, points, .true.)
     call add(self%fixed, '  </Geometry>')
     taken = '/'
     call group_attributes(self%fixed, file, group, points, dims(1), .false., taken)
     if (present(more)) call group_attributes(self%fixed, file, more, points, dims(1), .false., taken)
     if (present(fields) .and. present(field_names)) then
       do k = 1, min(size(fields), size(field_names))
-        values = file%values_of(trim(fields(k)))
-        if (size(values) == dims(1)) call attribute(self%fixed, trim(field_names(k)), 'Scalar', 'Node', &
-                                                    [dims(1)], values)
+        if (.not. same_shape(file%shape_of(trim(fields(k))), [dims(1)])) cycle
+        if (.not. holds_numbers(file, trim(fields(k)))) cycle
+        call referenced_attribute(self%fixed, file, trim(field_names(k)), 'Scalar', [dims(1)], trim(fields(k)))
       end do
     end if
     call add(self%fixed, '</Grid>')
@@ -177,7 +194,7 @@ contains
     call add(self%fixed, '    </DataItem>')
     call add(self%fixed, '  </Topology>')
     call add(self%fixed, '  <Geometry GeometryType="XYZ">')
-    call data_item(self%fixed, dims, file%values_of(points))
+    call referenced_item(self%fixed, file, dims, points, .true.)
     call add(self%fixed, '  </Geometry>')
     taken = '/'
     call group_attributes(self%fixed, file, group, points, dims(1), .true., taken)
@@ -197,7 +214,6 @@ contains
     logical, intent(in) :: integers
     character(len=:), allocatable, intent(inout) :: taken
     character(len=:), allocatable :: names(:), base
-    real(wp), allocatable :: values(:)
     integer, allocatable :: d(:)
     integer :: k
     names = file%names_in(group)
@@ -209,41 +225,58 @@ contains
       if (d(1) /= n) cycle
       base = base_name(trim(names(k)))
       if (index(taken, '/'//base//'/') > 0) cycle
-      values = file%values_of(trim(names(k)))   ! none for text
-      if (size(values) /= product(d)) cycle
+      if (.not. holds_numbers(file, trim(names(k)))) cycle   ! not text
       if (size(d) == 1) then
-        call attribute(text, base, 'Scalar', 'Node', d, values)
+        call referenced_attribute(text, file, base, 'Scalar', d, trim(names(k)))
       else if (size(d) == 2) then
         if (d(2) /= 3) cycle
-        call attribute(text, base, 'Vector', 'Node', d, values)
+        call referenced_attribute(text, file, base, 'Vector', d, trim(names(k)))
       end if
       taken = taken//base//'/'
     end do
   end subroutine group_attributes
 
   !> The band between two edges (shape (n, 3) each) as a 2 x n structured
-  !> grid; `fields` (shape (n)) on both edges' nodes.
+  !> grid; `fields` (shape (n)) on both edges' nodes. Added to the result
+  !> under /xdmf/<the first edge's group>/band: points (2 n, 3), the first
+  !> edge's rows then the second's, and each field twice over (2 n).
   subroutine xdmf_band(self, file, name, first_edge, second_edge, fields)
     class(xdmf_t), intent(inout) :: self
-    type(result_file_t), intent(in) :: file
+    type(result_file_t), intent(inout) :: file
     character(len=*), intent(in) :: name, first_edge, second_edge
     character(len=*), intent(in) :: fields(:)
     integer, allocatable :: dims(:)
     real(wp), allocatable :: values(:)
+    character(len=:), allocatable :: band, twice
     integer :: k
     dims = file%shape_of(first_edge)
     if (size(dims) /= 2) return
-    if (dims(1) < 2) return
-    if (any(file%shape_of(second_edge) /= dims)) return
+    if (dims(1) < 2 .or. dims(2) /= 3) return
+    if (.not. same_shape(file%shape_of(second_edge), dims)) return
+    band = '/xdmf'//first_edge(:index(first_edge, '/', back=.true.))//'band'
+    if (.not. same_shape(file%shape_of(band//'/points'), [2*dims(1), 3])) then
+      call file%write_matrix(band//'/points', reshape([file%values_of(first_edge), file%values_of(second_edge)], &
+                                                      [3, 2*dims(1)]), file%units_of(first_edge), &
+                             'the points of the XDMF view''s band: the rows of '//first_edge//', then of '// &
+                             second_edge, self%written)
+      if (.not. self%written%ok()) return
+    end if
     call add(self%fixed, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
     call add(self%fixed, '  <Topology TopologyType="2DSMesh" Dimensions="2 '//format_integer(dims(1))//'"/>')
     call add(self%fixed, '  <Geometry GeometryType="XYZ">')
-    call data_item(self%fixed, [2*dims(1), 3], [file%values_of(first_edge), file%values_of(second_edge)])
+    call referenced_item(self%fixed, file, [2*dims(1), 3], band//'/points', .true.)
     call add(self%fixed, '  </Geometry>')
     do k = 1, size(fields)
-      values = file%values_of(trim(fields(k)))
-      if (size(values) /= dims(1)) cycle
-      call attribute(self%fixed, base_name(trim(fields(k))), 'Scalar', 'Node', [2*dims(1)], [values, values])
+      if (.not. same_shape(file%shape_of(trim(fields(k))), [dims(1)])) cycle
+      twice = band//'/'//base_name(trim(fields(k)))
+      if (.not. same_shape(file%shape_of(twice), [2*dims(1)])) then
+        values = file%values_of(trim(fields(k)))
+        if (size(values) /= dims(1)) cycle
+        call file%write_vector(twice, [values, values], file%units_of(trim(fields(k))), trim(fields(k))// &
+                               ' twice over, on both edges of the XDMF view''s band', self%written)
+        if (.not. self%written%ok()) exit
+      end if
+      call referenced_attribute(self%fixed, file, base_name(trim(fields(k))), 'Scalar', [2*dims(1)], twice)
     end do
     call add(self%fixed, '</Grid>')
     self%n_fixed = self%n_fixed + 1
@@ -322,8 +355,14 @@ contains
     integer, parameter :: triangles(36) = [0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4, &
                                            2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6]
     real(wp) :: corners(3, 0:7)
+    type(text_t) :: topology
     integer :: s, i, c, j
     if (.not. steps_for(self, time)) return
+    call add(topology, '  <Topology TopologyType="Triangle" NumberOfElements="12">')
+    call add(topology, '    <DataItem Dimensions="12 3" NumberType="Int" Format="XML">')
+    call integer_lines(topology, triangles)
+    call add(topology, '    </DataItem>')
+    call add(topology, '  </Topology>')
     do s = 1, size(self%step_row)
       i = self%step_row(s)
       do c = 0, 7
@@ -333,20 +372,20 @@ contains
       end do
       associate (t => self%steps(s))
         call add(t, '  <Grid Name="'//escaped(name)//'" GridType="Uniform">')
-        call add(t, '  <Topology TopologyType="Triangle" NumberOfElements="12">')
-        call add(t, '    <DataItem Dimensions="12 3" NumberType="Int" Format="XML">')
-        call integer_lines(t, triangles)
-        call add(t, '    </DataItem>')
-        call add(t, '  </Topology>')
+        call add(t, topology%s(:topology%used - 1))
         call add(t, '  <Geometry GeometryType="XYZ">')
         call data_item(t, [8, 3], reshape(corners, [24]))
         call add(t, '  </Geometry>')
+        ! a body's values are the same on its 12 cells: formatted once
         do j = 1, size(scalar_names)
-          call attribute(t, trim(scalar_names(j)), 'Scalar', 'Cell', [12], spread(scalars(j, i), 1, 12))
+          call add(t, '  <Attribute Name="'//escaped(trim(scalar_names(j)))//'" AttributeType="Scalar" Center="Cell">')
+          call repeated_item(t, [12], [scalars(j, i)], 12)
+          call add(t, '  </Attribute>')
         end do
         do j = 1, size(vector_names)
-          call attribute(t, trim(vector_names(j)), 'Vector', 'Cell', [12, 3], &
-                         reshape(spread(vectors(:, j, i), 2, 12), [36]))
+          call add(t, '  <Attribute Name="'//escaped(trim(vector_names(j)))//'" AttributeType="Vector" Center="Cell">')
+          call repeated_item(t, [12, 3], vectors(:, j, i), 12)
+          call add(t, '  </Attribute>')
         end do
         call add(t, '  </Grid>')
       end associate
@@ -411,9 +450,12 @@ contains
   subroutine xdmf_attach(self, file, status)
     class(xdmf_t), intent(inout) :: self
     type(result_file_t), intent(inout) :: file
-    type(status_t), intent(in) :: status   !< nothing is attached to a file whose writes failed
+    !> nothing is attached to a file whose writes failed (gains the failure
+    !> of an array added under /xdmf)
+    type(status_t), intent(inout) :: status
     type(text_t) :: xml
     integer :: s, k
+    if (status%ok() .and. self%written%code /= STATUS_OK) status = self%written
     if (.not. status%ok()) return
     call add(xml, '<?xml version="1.0" ?>')
     call add(xml, '<Xdmf xmlns:xi="http://www.w3.org/2001/XInclude" Version="2.0">')
@@ -499,6 +541,71 @@ contains
     end do
     call add(text, '    </DataItem>')
   end subroutine data_item
+
+  !> A DataItem of shape `dims` holding `values` (formatted once) `times`
+  !> over, in data_item's form.
+  subroutine repeated_item(text, dims, values, times)
+    type(text_t), intent(inout) :: text
+    integer, intent(in) :: dims(:), times
+    real(wp), intent(in) :: values(:)
+    integer, parameter :: width = 17   ! 1x, es16.8e3
+    character(len=width*size(values)) :: once
+    character(len=:), allocatable :: all
+    integer :: k
+    write (once, '(*(1x, es16.8e3))') values
+    all = repeat(once, times)
+    call add(text, '    <DataItem Dimensions="'//dims_text(dims)//'" NumberType="Float" Precision="8" Format="XML">')
+    do k = 1, len(all), width*per_line
+      call add(text, all(k:min(k + width*per_line - 1, len(all))))
+    end do
+    call add(text, '    </DataItem>')
+  end subroutine repeated_item
+
+  !> A DataItem naming the dataset `dataset` of shape `dims` in `file` (by
+  !> the result's final file name: the .xmf sits beside it): 8-byte reals,
+  !> or with floats = .false. the file's 4-byte integers.
+  subroutine referenced_item(text, file, dims, dataset, floats)
+    type(text_t), intent(inout) :: text
+    type(result_file_t), intent(in) :: file
+    integer, intent(in) :: dims(:)
+    character(len=*), intent(in) :: dataset
+    logical, intent(in) :: floats
+    character(len=:), allocatable :: number_type
+    number_type = 'NumberType="Int" Precision="4"'
+    if (floats) number_type = 'NumberType="Float" Precision="8"'
+    call add(text, '    <DataItem Dimensions="'//dims_text(dims)//'" '//number_type//' Format="HDF">'// &
+             escaped(base_name(file%final_path()))//':'//escaped(dataset)//'</DataItem>')
+  end subroutine referenced_item
+
+  !> A node attribute of `kind` (Scalar, Vector) naming the dataset `dataset`.
+  subroutine referenced_attribute(text, file, name, kind, dims, dataset)
+    type(text_t), intent(inout) :: text
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: name, kind, dataset
+    integer, intent(in) :: dims(:)
+    call add(text, '  <Attribute Name="'//escaped(name)//'" AttributeType="'//kind//'" Center="Node">')
+    call referenced_item(text, file, dims, dataset, file%is_real(dataset))
+    call add(text, '  </Attribute>')
+  end subroutine referenced_attribute
+
+  !> Whether `dataset` holds numbers (real or integer, not text) that read back.
+  logical function holds_numbers(file, dataset)
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: dataset
+    real(wp), allocatable :: values(:)
+    if (file%is_real(dataset)) then
+      holds_numbers = .true.
+      return
+    end if
+    values = file%values_of(dataset)   ! none for text
+    holds_numbers = size(values) == product(file%shape_of(dataset)) .and. size(values) > 0
+  end function holds_numbers
+
+  pure logical function same_shape(a, b)
+    integer, intent(in) :: a(:), b(:)
+    same_shape = size(a) == size(b)
+    if (same_shape) same_shape = all(a == b)
+  end function same_shape
 
   !> Integers as lines of at most 3 per_line values (a connectivity).
   subroutine integer_lines(text, values)

@@ -3,15 +3,20 @@
     check_xdmf.py [--docs OUTPUTS.md] FILE.xmf [...]              the structure (h5py, numpy)
     pvpython check_xdmf.py --paraview [--docs OUTPUTS.md] FILE.xmf [...]   also opens each in ParaView
 
-Structure: the XML parses; every value is in the file (no HDF5 reference:
-ParaView's Xdmf3 readers abort on a relative one when the .xmf is named
-without a folder); every DataItem holds as many numbers as its Dimensions
-say; every grid's geometry has as many points as its topology has nodes,
+    check_xdmf.py --same-values OLD.xmf NEW.xmf                     the same numbers in two views
+
+Structure: the XML parses; every DataItem is inline XML or a reference to a
+dataset of the result file beside the .xmf, named by the result's file name
+without folder (`NAME.h5:/path`; never a temporary file's name), which
+exists (h5py) with as many values as the DataItem's Dimensions say and of its
+NumberType (8-byte reals, 4-byte integers); every inline DataItem holds as
+many numbers as its Dimensions say; every grid's geometry has as many points as its topology has nodes,
 every connectivity index names one of them, every node attribute has as
 many values as points and every cell attribute as cells; a temporal
 collection's times increase, and its later steps include (xi:include) the
 first step's fixed grids; a surface grid has exactly the points of the
-result's /geometry/surface. With --docs, the grids against the table of
+result's /geometry/surface, a band exactly the rows of its two edges and
+each field twice over. With --docs, the grids against the table of
 docs/outputs.md ("ParaView and VisIt"): every grid of a file is listed there
 for the file's scenario, and every grid listed for a scenario is in some
 file of that scenario among those checked.
@@ -44,12 +49,39 @@ def dims(item):
     return [int(d) for d in item.get('Dimensions').split()]
 
 
+# the result file beside the .xmf being checked: {'name': file name, 'file': h5py.File}
+beside = {}
+
+
+def referenced(path, item):
+    """The values of the dataset an HDF DataItem names, or None."""
+    reference = item.text.strip()
+    name, _, dataset = reference.partition(':')
+    if name != beside['name']:
+        fail(path, f"DataItem names {reference!r}, not a dataset of {beside['name']} beside it")
+        return None
+    if dataset not in beside['file'] or not hasattr(beside['file'][dataset], 'dtype'):
+        fail(path, f"DataItem names {reference!r}, which {beside['name']} does not hold")
+        return None
+    data = beside['file'][dataset]
+    wanted = {('Float', '8'): np.float64, ('Int', '4'): np.int32}.get((item.get('NumberType'), item.get('Precision')))
+    if wanted is None or data.dtype != wanted:
+        fail(path, f"DataItem {reference!r} of {item.get('NumberType')} {item.get('Precision')}: the dataset is "
+                   f"{data.dtype}")
+    return np.asarray(data[()], dtype=float).ravel()
+
+
 def values(path, item):
-    """The numbers of an inline DataItem, checked against its Dimensions."""
-    if item.get('Format') != 'XML' or item.get('ItemType', 'Uniform') != 'Uniform':
-        fail(path, f"DataItem not inline XML: {item.attrib}")
+    """The numbers of a DataItem (inline or referenced), checked against its Dimensions."""
+    if item.get('ItemType', 'Uniform') != 'Uniform' or item.get('Format') not in ('XML', 'HDF'):
+        fail(path, f"DataItem neither inline XML nor a dataset: {item.attrib}")
         return np.zeros(0)
-    numbers = np.array(item.text.split(), dtype=float)
+    if item.get('Format') == 'HDF':
+        numbers = referenced(path, item)
+        if numbers is None:
+            return np.zeros(0)
+    else:
+        numbers = np.array(item.text.split(), dtype=float)
     if numbers.size != int(np.prod(dims(item))):
         fail(path, f"DataItem of Dimensions {dims(item)} holds {numbers.size} numbers")
     if not np.all(np.isfinite(numbers)):
@@ -129,28 +161,40 @@ def check_docs(docs, grids_of):
                 fail(docs, f"grid {name!r} listed for {scenario}, but no {scenario} file checked has it")
 
 
-def check_surface(path, name, xyz, h5_path):
-    """A surface grid holds the result's surface points (nine digits)."""
-    import h5py
-    with h5py.File(h5_path, 'r') as h5:
-        if '/geometry/surface/x' not in h5:
-            fail(path, f"grid {name}: the result has no /geometry/surface")
-            return
-        expected = np.stack([h5['/geometry/surface/' + c][()].ravel() for c in 'xyz'], axis=1)
-    scale = max(1.0, float(np.abs(expected).max()))
-    # the file holds nine significant digits: 5e-9 of the largest coordinate
-    if expected.shape != xyz.shape or np.abs(expected - xyz).max() > 1e-8 * scale:
+def check_surface(path, name, xyz):
+    """A surface grid holds the result's surface points (the same numbers)."""
+    h5 = beside['file']
+    if '/geometry/surface/x' not in h5:
+        fail(path, f"grid {name}: the result has no /geometry/surface")
+        return
+    expected = np.stack([h5['/geometry/surface/' + c][()].ravel() for c in 'xyz'], axis=1)
+    if expected.shape != xyz.shape or not np.array_equal(expected, xyz):
         fail(path, f"grid {name}: its points are not the result's /geometry/surface")
+
+
+def check_band(path, grid):
+    """The water band holds the rows of the result's two edges and each field twice over."""
+    h5 = beside['file']
+    n, _, names, xyz = check_uniform(path, grid)
+    edges = [h5[f'/water/{edge}_point'][()] for edge in ('right', 'left') if f'/water/{edge}_point' in h5]
+    if len(edges) != 2 or not np.array_equal(xyz, np.concatenate(edges)):
+        fail(path, f"grid {grid.get('Name')}: its points are not /water/right_point then /water/left_point")
+    for attribute in grid.findall('Attribute'):
+        field = attribute.get('Name')
+        got = values(path, attribute.find('DataItem'))
+        if f'/water/{field}' not in h5 or not np.array_equal(got, np.tile(h5[f'/water/{field}'][()], 2)):
+            fail(path, f"grid {grid.get('Name')}: {field} is not /water/{field} twice over")
 
 
 def check(path):
     """Checks one XDMF file; returns a dict: points at the first and last
     step, steps, arrays, scenario, top-level grid names."""
+    import h5py
     root = ET.parse(path).getroot()
     h5_path = os.path.join(os.path.dirname(path), os.path.basename(path)[:-4] + '.h5')
-    text = open(path, encoding='utf-8').read()
-    if 'Format="HDF"' in text:
-        fail(path, "an HDF5 reference (the Xdmf3 readers abort on it when the .xmf has no folder)")
+    if beside:
+        beside['file'].close()
+    beside.update(name=os.path.basename(h5_path), file=h5py.File(h5_path, 'r'))
     domain = root.find('Domain')
     collections = [g for g in domain.findall('Grid') if g.get('CollectionType') == 'Temporal']
     arrays = set()
@@ -199,12 +243,13 @@ def check(path):
         result = {'points': (points, points), 'steps': 0}
     for grid in grids_for_surface:
         if 'surface' in grid.get('Name'):
-            check_surface(path, grid.get('Name'), check_uniform(path, grid)[3], h5_path)
-    import h5py
-    with h5py.File(h5_path, 'r') as h5:
-        if '/geometry/surface/x' in h5 and not any('surface' in name for name in names):
-            fail(path, "the result has a surface grid, the XDMF file none")
-        scenario = h5.attrs['scenario']
+            check_surface(path, grid.get('Name'), check_uniform(path, grid)[3])
+        if grid.get('Name') == 'water band':
+            check_band(path, grid)
+    h5 = beside['file']
+    if '/geometry/surface/x' in h5 and not any('surface' in name for name in names):
+        fail(path, "the result has a surface grid, the XDMF file none")
+    scenario = h5.attrs['scenario']
     result.update(arrays=arrays, scenario=scenario, names=names)
     return result
 
@@ -239,7 +284,44 @@ def open_in_paraview(path, expected):
     print(f"{os.path.basename(path)}: {name}, {len(times)} steps, {len(shown_arrays)} arrays")
 
 
+def resolved_items(path):
+    """Every DataItem of a view in document order: (where, numbers)."""
+    import h5py
+    h5_path = os.path.join(os.path.dirname(path), os.path.basename(path)[:-4] + '.h5')
+    if beside:
+        beside['file'].close()
+    beside.update(name=os.path.basename(h5_path), file=h5py.File(h5_path, 'r'))
+    items = []
+
+    def walk(element, where):
+        for child in element:
+            if child.tag == 'DataItem':
+                items.append((where, values(path, child)))
+            elif child.tag != XINCLUDE:
+                walk(child, where + '/' + child.tag + (f"[{child.get('Name')}]" if child.get('Name') else ''))
+    walk(ET.parse(path).getroot(), '')
+    return items
+
+
+def same_values(old, new):
+    """The two views describe the same grids with the same numbers (the old
+    inline ones have nine significant digits: half a unit of the ninth)."""
+    a, b = resolved_items(old), resolved_items(new)
+    if [w for w, _ in a] != [w for w, _ in b]:
+        fail(new, f"not the DataItems of {old}")
+        return
+    for (where, x), (_, y) in zip(a, b):
+        if x.shape != y.shape or np.any(np.abs(x - y) > 5.0000001e-9 * np.maximum(np.abs(y), 1e-300)):
+            fail(new, f"{where}: not the numbers of {old}")
+    print(f"{new}: {len(b)} DataItems, the numbers of {old}")
+
+
 def main(args):
+    if args[:1] == ['--same-values']:
+        same_values(args[1], args[2])
+        for line in failures:
+            print('FAIL ' + line)
+        sys.exit(1 if failures else 0)
     paraview = bool(args) and args[0] == '--paraview'
     paths = args[1:] if paraview else args
     docs = None

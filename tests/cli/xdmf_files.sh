@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Every input in inputs/ (and the default, a run that failed part way and a
 # bouncing ball: a flight with impacts)
-# writes an XDMF file next to its result, whose structure holds (every value
-# inline, every DataItem as many numbers as it states, grids and attributes
-# agree, a surface grid equals the result's), and which ParaView opens with the
+# writes an XDMF file next to its result, whose structure holds (every array a
+# dataset of the result beside it, by its file name, that exists with as many
+# values as the DataItem states; inline DataItems as many numbers as they
+# state; grids and attributes agree, a surface grid and the water band equal
+# the result's), and which ParaView opens with the
 # reader it picks by itself (OpenDataFile, as File > Open: Xdmf3ReaderS),
 # without a crash, showing the file's time steps, arrays and points
 # (tests/cli/check_xdmf.py run by pvpython, from Debian's paraview and
@@ -22,10 +24,12 @@ for name in $(cat "$results/names") stopped bouncing; do
   if [ -f "$results/$name.xmf" ]; then files+=("$results/$name.xmf"); else echo "FAIL $name: no XDMF file $name.xmf"; failures=$((failures + 1)); fi
 done
 command -v pvpython >/dev/null || { echo "FAIL pvpython not found (install paraview python3-paraview)"; exit 1; }
-# each file opened by its bare name from its own folder, as a user types
-# OpenDataFile('ride.xmf'): the Xdmf3 readers resolved references wrongly so
+# each file opened from its own folder as ./NAME.xmf (docs/outputs.md: the
+# Xdmf3 readers resolve the result file against the folder the .xmf is named
+# with, and abort on a bare name); its arrays are read from NAME.h5 beside it
+names=("${files[@]##*/}")
 (cd "$results" && pvpython "$root/tests/cli/check_xdmf.py" --paraview --docs "$root/docs/outputs.md" \
-   "${files[@]##*/}") >"$work/check.out" 2>&1
+   "${names[@]/#/./}") >"$work/check.out" 2>&1
 rc=$?
 [ "$rc" = 0 ] || failures=$((failures + 1))
 grep -E '^FAIL|XDMF files checked|SIGABRT|SIGSEGV|terminate called' "$work/check.out"
