@@ -9,7 +9,6 @@
 program design_bench
   use, intrinsic :: iso_fortran_env, only: int64
   use base_kinds, only: wp
-  use base_constants, only: pi
   use base_status, only: status_t
   use io_input, only: input_text_t, load_input_file
   use scenarios_water, only: build_water
@@ -24,7 +23,7 @@ program design_bench
   use design_rider_identification, only: rider_identification_t, rider_fit_options_t, rider_fit_t, &
     rider_stations_t, new_rider_identification, simulate_rider, fit_rider_friction
   use design_geometry_optimization, only: optimization_setup_t, optimization_result_t, table_4_12_design, &
-    optimize_slide
+    thesis_start_angles, optimize_slide
   use bench_timing, only: median
   implicit none (type, external)
 
@@ -183,7 +182,7 @@ contains
     real(wp) :: cpu(repeats), wall(repeats)
     integer :: k
     setup%design = table_4_12_design()
-    setup%start_angles = [-30.0_wp, -15.0_wp, 0.0_wp, 15.0_wp, 30.0_wp]*pi/180
+    setup%start_angles = thesis_start_angles()
     setup%threads = threads
     do k = 1, repeats
       call clock(cpu(k), wall(k))

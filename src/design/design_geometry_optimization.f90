@@ -62,7 +62,7 @@ module design_geometry_optimization
   implicit none (type, external)
   private
   public :: slide_design_t, optimization_setup_t, design_evaluation_t, optimization_result_t
-  public :: table_4_12_design, build_design_slide, evaluate_design, optimize_slide, design_points
+  public :: table_4_12_design, thesis_start_angles, build_design_slide, evaluate_design, optimize_slide, design_points
   public :: CONSTRAINT_PENALTY, CONSTRAINT_EXACT, CONSTRAINT_NONE, start_record_t, start_points
   public :: OUTCOME_OPTIMUM, OUTCOME_CONSTRAINT, OUTCOME_NOT_MINIMUM, OUTCOME_FAILED, outcome_names
   public :: constraint_violations
@@ -78,7 +78,7 @@ module design_geometry_optimization
   type :: optimization_setup_t
     type(slide_design_t) :: design
     type(cuboid_t) :: body
-    real(wp), allocatable :: start_angles(:)  !< rad, one ride each (thesis: -30..30 deg)
+    real(wp), allocatable :: start_angles(:)  !< rad, one ride each (thesis_start_angles)
     real(wp) :: start_speed = 0.5_wp          !< m/s
     real(wp) :: start_v = pi/2                !< rad, the bottom of the section at u = 0
     type(cuboid_ride_options_t) :: ride
@@ -156,6 +156,13 @@ module design_geometry_optimization
   end type optimization_problem_t
 
 contains
+
+  !> The thesis's rides of each design (4.7, with table 4.12's slide): the
+  !> start directions -30, -15, 0, 15 and 30 degrees to the centerline, in rad.
+  pure function thesis_start_angles() result(angles)
+    real(wp) :: angles(5)
+    angles = [-30.0_wp, -15.0_wp, 0.0_wp, 15.0_wp, 30.0_wp]*pi/180
+  end function thesis_start_angles
 
   !> Every ride of design x (rides(i) from start_angles(i)), in `threads` threads.
   subroutine evaluate_design(setup, x, evaluation, status, keep_series)

@@ -8,8 +8,8 @@ module io_optimization_config
   use base_status, only: status_t
   use numerics_ode, only: ode_options_t
   use design_cuboid_ride, only: ACCELERATION_KINEMATIC, ACCELERATION_FELT
-  use design_geometry_optimization, only: optimization_setup_t, table_4_12_design, CONSTRAINT_PENALTY, &
-    CONSTRAINT_EXACT, CONSTRAINT_NONE
+  use design_geometry_optimization, only: optimization_setup_t, table_4_12_design, thesis_start_angles, &
+    CONSTRAINT_PENALTY, CONSTRAINT_EXACT, CONSTRAINT_NONE
   use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, format_real, group_present
   implicit none (type, external)
   private
@@ -36,7 +36,7 @@ contains
     type(bounds_t) :: point_bounds
 
     setup%design = table_4_12_design()
-    setup%start_angles = [-30.0_wp, -15.0_wp, 0.0_wp, 15.0_wp, 30.0_wp]*pi/180
+    setup%start_angles = thesis_start_angles()
     n_points = size(setup%design%points, 2)
     n_design = size(setup%design%point)
     acceleration = 'kinematic'

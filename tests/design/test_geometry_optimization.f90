@@ -20,7 +20,7 @@ program test_geometry_optimization
   use base_constants, only: pi
   use base_status, only: status_t
   use design_geometry_optimization, only: optimization_setup_t, optimization_result_t, design_evaluation_t, &
-    table_4_12_design, evaluate_design, optimize_slide, start_points, OUTCOME_OPTIMUM, OUTCOME_NOT_MINIMUM
+    table_4_12_design, thesis_start_angles, evaluate_design, optimize_slide, start_points, OUTCOME_OPTIMUM, OUTCOME_NOT_MINIMUM
   use testing, only: check, finish_tests
   implicit none (type, external)
 
@@ -34,7 +34,7 @@ program test_geometry_optimization
   integer :: i
 
   setup%design = table_4_12_design()
-  setup%start_angles = [-30.0_wp, -15.0_wp, 0.0_wp, 15.0_wp, 30.0_wp]*pi/180
+  setup%start_angles = thesis_start_angles()
 
   call cpu_time(cpu0)
   call optimize_slide(setup, serial, status)
@@ -102,7 +102,7 @@ contains
     s%design = table_4_12_design()
     s%design%lower = start - 0.4_wp
     s%design%upper = start + 0.4_wp
-    s%start_angles = [-30.0_wp, -15.0_wp, 0.0_wp, 15.0_wp, 30.0_wp]*pi/180
+    s%start_angles = thesis_start_angles()
     s%start_speed = 1.2_wp
     s%max_restarts = 1
     call optimize_slide(s, early, status)
