@@ -74,7 +74,7 @@ contains
     if (status%ok()) call check_moves(input, system, model, status)
     if (.not. status%ok()) return
     if (any(system%contacts%may_open)) then
-      call run_opening(input, run, solver, system, model, status)
+      call run_flight(input, run, solver, system, status, closed=model)
       return
     end if
     call run_mechanism('contact', input, run, solver, model%ode, model%y0(1:f), model%y0(f + 1:f + ns), &
@@ -82,17 +82,25 @@ contains
                        surface=system%shapes(first_shape(system))%surface, shapes=bounded_body_shapes(system))
   end subroutine run_contact
 
-  !> A body whose contact starts open: it flies until it lands (contact_flight).
-  subroutine run_flight(input, run, solver, system, status)
+  !> A flight: a body whose contact starts open flies until it lands
+  !> (contact_flight); given the `closed` model of a contact that may open
+  !> (may_open), the body starts closed and flies from its lift-off
+  !> (contact_closing).
+  subroutine run_flight(input, run, solver, system, status, closed)
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
     type(solver_config_t), intent(in) :: solver
     type(contact_system_t), intent(in) :: system
     type(status_t), intent(inout) :: status
+    type(contact_model_t), intent(in), optional :: closed
     type(flight_ode_t) :: flight
     real(wp), allocatable :: q0(:), qd0(:)
     character(len=8), allocatable :: q_units(:)
-    call build_flight(system, flight, q0, qd0, q_units, status)
+    if (present(closed)) then
+      call flight_after_closed(system, closed, flight, q0, qd0, q_units, status)
+    else
+      call build_flight(system, flight, q0, qd0, q_units, status)
+    end if
     if (.not. status%ok()) then
       call locate_failure(input, system, status)
       call mark_input_failure(status)
@@ -101,28 +109,6 @@ contains
     call run_mechanism('contact', input, run, solver, flight, q0, qd0, q_units, [character(len=8) ::], status, &
                        shapes=bounded_body_shapes(system))
   end subroutine run_flight
-
-  !> A closed contact that may open (may_open): it starts closed and flies
-  !> from its lift-off (contact_closing).
-  subroutine run_opening(input, run, solver, system, model, status)
-    type(input_text_t), intent(in) :: input
-    type(run_config_t), intent(in) :: run
-    type(solver_config_t), intent(in) :: solver
-    type(contact_system_t), intent(in) :: system
-    type(contact_model_t), intent(in) :: model
-    type(status_t), intent(inout) :: status
-    type(flight_ode_t) :: flight
-    real(wp), allocatable :: q0(:), qd0(:)
-    character(len=8), allocatable :: q_units(:)
-    call flight_after_closed(system, model, flight, q0, qd0, q_units, status)
-    if (.not. status%ok()) then
-      call locate_failure(input, system, status)
-      call mark_input_failure(status)
-      return
-    end if
-    call run_mechanism('contact', input, run, solver, flight, q0, qd0, q_units, [character(len=8) ::], status, &
-                       shapes=bounded_body_shapes(system))
-  end subroutine run_opening
 
   !> Every bounded shape a body carries (an egg, a ball; not a plane or an
   !> open paraboloid), as a 24 x 13 grid in the body's axes for the XDMF view.
