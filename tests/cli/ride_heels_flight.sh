@@ -8,7 +8,8 @@
 # - the limits airtime and drop_height: exceeded when set below the ride's
 #   (the verdict names where), exit 4 with --fail-on-limit;
 # - without may_fly: the heels' lift-off ends the ride (as before), and a
-#   flight limit or landing parameter is refused (exit 1, nothing written).
+#   flight limit or landing parameter is refused (exit 1, nothing written);
+# - the ride plot shades the flight and marks the landing.
 set -u
 root=$(pwd)
 slidesim=$1
@@ -55,6 +56,44 @@ print('ok')
 EOF
 rc=$?
 check '[ $rc = 0 ]' "crest: the file and JSON: $(cat "$work/check.out")"
+
+# the plot: the flight shaded from the take-off to the landing over the
+# pelvis's arc length on the three plots over arc length, the landing as a
+# dashed line there and as a diamond at the heels' arc length, labelled with
+# the drop height
+"$py" - "$root/python" "$work/crest.h5" >"$work/plot.out" 2>&1 <<'EOF2'
+import sys
+sys.path.insert(0, sys.argv[1])
+import h5py, numpy as np
+import matplotlib
+matplotlib.use('Agg')
+from slidesim.plot import figure
+with h5py.File(sys.argv[2], 'r') as f:
+    s = f['rider/arc_length'][:]
+    air = f['rider/airborne'][:]
+    heels_s = f['evaluation/flight/landing/arc_length'][0]
+    drop = f['evaluation/flight/landing/drop_height'][0]
+take_off = s[np.flatnonzero(air)[0]]
+landing = s[np.flatnonzero(np.diff(air) == -1)[0] + 1]
+fig = figure(sys.argv[2])
+over_s = [ax for ax in fig.axes if ax.get_xlabel() == 'arc length (m)']
+assert len(over_s) == 3, [ax.get_xlabel() for ax in fig.axes]
+for ax in over_s:
+    spans = [p for p in ax.patches if p.get_gid() == 'flight']
+    assert len(spans) == 1, (ax.get_title(), len(spans))
+    x = spans[0].get_xy()[:, 0]
+    assert abs(x.min() - take_off) < 1e-12 and abs(x.max() - landing) < 1e-12, (ax.get_title(), x, take_off, landing)
+    lines = [l for l in ax.lines if l.get_gid() == 'landing']
+    assert len(lines) == 1 and abs(lines[0].get_xdata()[0] - landing) < 1e-9, (ax.get_title(), len(lines))
+slide = fig.axes[0]
+marks = [l for l in slide.lines if l.get_gid() == 'landing']
+assert len(marks) == 1 and abs(marks[0].get_xdata()[0] - heels_s) < 1e-12, 'the landing on the unrolled slide'
+labels = [a.get_text() for a in slide.texts if a.get_gid() == 'landing']
+assert labels == [f"{100 * drop:.3g} cm drop"], labels
+print('ok')
+EOF2
+rc=$?
+check '[ $rc = 0 ]' "crest: the plot's flight marks: $(cat "$work/plot.out")"
 
 # limits set below the ride's: exceeded, exit 4 when asked
 run tight inputs/ride/crest.nml --set rider%limit_max=0.1,0.01 --fail-on-limit

@@ -11,6 +11,11 @@ A ride that ended ejected (a contact went over the top of a wall: /rider
 attribute `ejected`) marks where: a vertical line at
 /evaluation/ejected_arc_length on the plots over arc length, a cross where
 the contact left the slide on the unrolled slide and in 3-D.
+A ride with the heels' flights (`may_fly`, /rider/airborne) shades each
+flight over the pelvis's arc length on the plots over arc length and marks
+each landing (/evaluation/flight/landing): a dashed line where the pelvis was
+at the landing's time, and a diamond on the unrolled slide at the heels' own
+arc length, labelled with the drop height v_n^2/(2g).
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
@@ -21,6 +26,7 @@ import numpy as np
 from .common import title
 
 CONTACTS = ("pelvis", "heels", "back")
+FLIGHT_COLOUR = "tab:orange"
 COLOURS = {"pelvis": "tab:red", "heels": "tab:green", "back": "tab:purple"}
 AXES = ("longitudinal", "lateral", "normal")
 SCENARIOS = ("ride",)
@@ -52,6 +58,15 @@ def read(f):
     d["ejected"] = text(r.attrs["ejected"]) if "ejected" in r.attrs else None
     if d["ejected"] and "/evaluation/ejected_arc_length" in f:
         d["ejected_s"] = float(f["/evaluation/ejected_arc_length"][()])
+    d["flights"], d["landings"] = [], []
+    if "airborne" in r:
+        d["flights"] = airborne_spans(d["s"], r["airborne"][:] != 0)
+    if "/evaluation/flight/landing/time" in f:
+        land = f["/evaluation/flight/landing"]
+        time = r["time"][:]
+        for t, s_heels, h in zip(land["time"][:], land["arc_length"][:], land["drop_height"][:]):
+            d["landings"].append({"s": float(np.interp(t, time, d["s"])), "heels_s": float(s_heels),
+                                  "drop_height": float(h)})
     d["water_s"] = w["arc_length"][:]
     d["water_speed"] = w["speed"][:]
     t = f["/water/table"]
@@ -73,6 +88,45 @@ def read(f):
                     entry[b] = float(lim[b][()])
             d["limits"].append(entry)
     return d
+
+
+def airborne_spans(s, flying):
+    """(start, end) arc lengths of the pelvis over each run of records in
+    flight: from the take-off record to the first record back on (the
+    landing's), or to the last record."""
+    spans, start = [], None
+    for i, flag in enumerate(flying):
+        if flag and start is None:
+            start = i
+        elif not flag and start is not None:
+            spans.append((s[start], s[i]))
+            start = None
+    if start is not None:
+        spans.append((s[start], s[-1]))
+    return spans
+
+
+def mark_flights(ax, d, label=False):
+    """The heels' flights as shaded spans and their landings as dashed lines
+    (over the pelvis's arc length)."""
+    for j, (start, end) in enumerate(d["flights"]):
+        ax.axvspan(start, end, color=FLIGHT_COLOUR, alpha=0.15, lw=0, gid="flight",
+                   label="heels in flight" if label and j == 0 else None)
+    for j, landing in enumerate(d["landings"]):
+        ax.axvline(landing["s"], color=FLIGHT_COLOUR, ls="--", lw=0.9, gid="landing",
+                   label="heels land" if label and j == 0 else None)
+
+
+def mark_landings_on_slide(ax, d, deg):
+    """Each landing at the heels' arc length on the unrolled slide, with its
+    drop height."""
+    heels = d["heels"]
+    for j, landing in enumerate(d["landings"]):
+        angle = np.interp(landing["heels_s"], heels["arc_length"], heels["wall_angle"]) * deg
+        ax.plot([landing["heels_s"]], [angle], "D", color=FLIGHT_COLOUR, mec="k", ms=7, gid="landing",
+                label="heels' landing" if j == 0 else None, zorder=5)
+        ax.annotate(f"{100 * landing['drop_height']:.3g} cm drop", (landing["heels_s"], angle),
+                    textcoords="offset points", xytext=(4, 6), fontsize=7, gid="landing")
 
 
 def mark_ejection(ax, d, label=False):
@@ -109,6 +163,7 @@ def draw(result, plt, args):
         ax.plot(d[c]["arc_length"], d[c]["wall_angle"] * deg, color=COLOURS[c], lw=1.0, label=c)
     if d["ejected"]:
         mark_ejected_contact(ax, d, d[d["ejected"]]["arc_length"], d[d["ejected"]]["wall_angle"] * deg)
+    mark_landings_on_slide(ax, d, deg)
     ax.set_xlabel("arc length along the slide (m)")
     ax.set_ylabel("angle from the bottom (deg, + left)")
     ax.set_title("the unrolled slide: contacts and water")
@@ -123,6 +178,7 @@ def draw(result, plt, args):
             ax.axhline(lim["maximum"], color="tab:red", ls="--", lw=0.8,
                        label=f"{lim['quantity']} limit ({lim['verdict']})")
     mark_ejection(ax, d, label=True)
+    mark_flights(ax, d, label=True)
     ax.set_xlabel("arc length (m)")
     ax.set_ylabel("speed (m/s)")
     ax.set_title("speed")
@@ -139,6 +195,7 @@ def draw(result, plt, args):
                         ax.axhline(lim[b], color=ax.lines[-1].get_color(), ls="--", lw=0.8,
                                    label=f"{name} {b} ({lim['verdict']})")
     mark_ejection(ax, d)
+    mark_flights(ax, d)
     ax.set_xlabel("arc length (m)")
     ax.set_ylabel("felt acceleration (g)")
     ax.set_title("felt accelerations at the pelvis (a - g)/|g|")
@@ -153,6 +210,7 @@ def draw(result, plt, args):
             ax.axhline(lim["minimum"], color="tab:red", ls="--", lw=0.8, label=f"minimum ({lim['verdict']})")
     ax.axhline(0, color="k", lw=0.5)
     mark_ejection(ax, d, label=True)
+    mark_flights(ax, d, label=True)
     ax.set_xlabel("arc length (m)")
     ax.set_ylabel("normal force (N)")
     ax.set_title("normal forces (0: lift-off)")
