@@ -5,19 +5,20 @@
 !> Every input is checked before any work, including whether the rider's
 !> heels and back reach the slide at the start (read_ride_description: the
 !> input as a ride description); the ride itself is the library's
-!> (design_ride_job's run_ride), this module writes and prints its result.
+!> (design_ride_job's run_ride), this module prints its report and writes
+!> the XDMF view; the records in the file and the CSV are
+!> scenarios_ride_results'.
 module scenarios_ride
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_text, only: format_short, format_integer
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_LIMITS_EXCEEDED
   use base_log, only: log_info
-  use geometry_surface, only: surface_t
   use geometry_tube, only: tube_surface_t
   use geometry_slide_query, only: slide_surface_t
   use geometry_cross_section, only: circle_section_t
   use water_run, only: water_description_t
-  use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS, rider_friction_kind
+  use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
   use rider_ride, only: ride_result_t, ride_series_t, check_ride_start
   use design_ride_evaluation, only: limit_report_unit, ride_limit_t, quantities_without_limit
   use design_ride_report, only: ride_report_t
@@ -32,9 +33,9 @@ module scenarios_ride
   use io_water_results, only: write_water_results
   use io_summary, only: summary_t, degrees
   use io_xdmf, only: xdmf_t
-  use io_output_files, only: text_output_t
   use scenarios_water, only: build_water, write_slide_grid
-  use scenarios_ride_flights, only: add_flights, write_flights
+  use scenarios_ride_flights, only: add_flights
+  use scenarios_ride_results, only: friction_name, write_ride, write_evaluation, write_ride_csv, stored_unit
   implicit none (type, external)
   private
   public :: run_ride_scenario, read_ride_description, ride_groups, check_sphere_radii, read_limit_gate, &
@@ -245,201 +246,6 @@ contains
     end select
   end subroutine check_sphere_radii
 
-  !> /rider: the ride's samples (time scale), per contact a subgroup.
-  !> The rider's friction as the datasets describe it.
-  pure function friction_name(rider) result(name)
-    type(rider_params_t), intent(in) :: rider
-    character(len=:), allocatable :: name
-    character(len=:), allocatable :: kind
-    kind = rider_friction_kind(rider)
-    if (kind == 'coulomb') then
-      name = 'Coulomb friction'
-    else
-      name = 'friction (law '''//kind//''')'
-    end if
-  end function friction_name
-
-  !> /rider: the ride's records; `friction` names the rider's friction law.
-  subroutine write_ride(file, surface, ride, report, cpu, friction, status)
-    type(result_file_t), intent(inout) :: file
-    class(surface_t), intent(in) :: surface
-    type(ride_result_t), intent(in) :: ride
-    type(ride_report_t), intent(in) :: report
-    real(wp), intent(in) :: cpu
-    character(len=*), intent(in) :: friction
-    type(status_t), intent(inout) :: status
-    character(len=*), parameter :: g = '/rider/'
-    character(len=:), allocatable :: c, uu, vu
-    integer :: n, k
-    n = ride%series%n
-    call surface%parameter_units(uu, vu)
-    associate (s => ride%series)
-      call file%write_vector(g//'time', s%time(:n), 's', 'time from the start of the ride', status)
-      call file%write_vector(g//'arc_length', s%arc_length(:n), 'm', &
-                             'centerline arc length at the pelvis contact (from the slide''s start)', status)
-      call file%write_vector(g//'speed', s%speed(:n), 'm/s', 'speed of the pelvis contact', status)
-      call file%write_vector(g//'heading', s%heading(:n), 'rad', &
-                             'heading phi_B: body axis from down the slide towards +v', status)
-      call file%write_vector(g//'phi_legs', s%phi_legs(:n), 'rad', 'flexion of the legs at the hip (+ lifts '// &
-                             'the heels)', status)
-      call file%write_vector(g//'phi_trunk', s%phi_trunk(:n), 'rad', 'tilt of the trunk at the hip (+ lifts '// &
-                             'the head)', status)
-      call file%write_matrix(g//'acceleration_g', report%felt(:, :n), report%felt_units, &
-                             'felt specific force (a - g)/|g| at the pelvis centre of mass in the pelvis axes: '// &
-                             'longitudinal (towards the feet), '// &
-                             'lateral (to the left), normal (+ pressed onto the slide), in multiples of |g|', status)
-      call file%write_vector(g//'lever_arm', merge(report%lever_arm(:n), 0.0_wp, abs(report%lever_arm(:n)) < &
-                             huge(1.0_wp)), 'm', 'tipping lever arm at the pelvis contact (E.3): the slide''s '// &
-                             'moment about the body axis over the normal force (0 where it does not press)', status)
-      call file%write_vector(g//'energy', s%energy(:n), 'J', 'kinetic + potential energy of the three bodies', &
-                             status)
-      call file%write_vector(g//'kinetic_energy', s%kinetic(:n), 'J', 'kinetic energy', status)
-      call file%write_vector(g//'potential_energy', s%potential(:n), 'J', 'potential energy -m g.r', status)
-      call file%write_vector(g//'friction_work', s%friction_work(:n), 'J', &
-                             'work of the '//friction//' at the three contacts since the start (<= 0)', status)
-      call file%write_vector(g//'drag_work', s%drag_work(:n), 'J', &
-                             'work of the water drag since the start (> 0 where the water pushes)', status)
-      call file%write_vector(g//'closure_residual', s%closure_residual(:n), 'm', &
-                             'largest closure residual of heels and back (4.27)', status)
-      call file%write_integers(g//'record_kind', s%kind(:n), '1', '1: start, 2: output time, 3: event', status)
-      do k = 1, N_CONTACTS
-        c = g//trim(contact_names(k))//'/'
-        associate (x => s%contact(k))
-          call file%write_vector(c//'u', x%u(:n), uu, 'surface coordinate u of the contact', status)
-          call file%write_vector(c//'v', x%v(:n), vu, 'surface coordinate v (pi/2: the bottom)', status)
-          call file%write_vector(c//'arc_length', x%arc_length(:n), 'm', 'centerline arc length at u', status)
-          call file%write_vector(c//'wall_angle', x%wall_angle(:n), 'rad', &
-                                 'angle of the surface normal from the bottom''s (+ towards +v, the left)', status)
-          call file%write_vector(c//'wall_distance', x%wall_distance(:n), 'm', &
-                                 'distance along the wall from the bottom (+ towards +v)', status)
-          call file%write_matrix(c//'position', x%position(:, :n), 'm', 'contact point', status)
-          call file%write_matrix(c//'velocity', x%velocity(:, :n), 'm/s', 'velocity of the contact point', status)
-          call file%write_vector(c//'normal_force', x%normal_force(:n), 'N', &
-                                 'normal force of the slide (> 0 while pressing)', status)
-          call file%write_matrix(c//'friction_force', x%friction_force(:, :n), 'N', &
-                                 trim(friction//' on the rider'//merge(' (4.28)', '       ', &
-                                                                       friction == 'Coulomb friction')), status)
-          call file%write_matrix(c//'drag_force', x%drag_force(:, :n), 'N', 'water drag on the rider (4.29)', &
-                                 status)
-          call file%write_integers(c//'in_water', x%in_water(:n), '1', &
-                                   '1 while the contact is between the water''s edges (drag on)', status)
-          call file%write_vector(c//'reynolds', x%reynolds(:n), '1', &
-                                 'Reynolds number |w_D - w| 2 r_S/nu of the sphere (0 when dry)', status)
-          call file%write_vector(c//'drag_coefficient', x%drag_coefficient(:n), '1', &
-                                 'Morrison C_D at min(Re, 1e6) (0 when dry)', status)
-          call file%write_vector(c//'projected_area', x%projected_area(:n), 'm^2', &
-                                 'submerged cap projected across the relative velocity (appendix G; 0 when dry)', &
-                                 status)
-          call file%write_matrix(c//'relative_velocity', x%relative_velocity(:, :n), 'm/s', &
-                                 'velocity of the contact relative to the water, w_D - w (0 when dry)', status)
-        end associate
-      end do
-    end associate
-    if (ride%flights%watched) call file%write_integers(g//'airborne', ride%series%airborne(:n), '1', &
-                                                       '1 while the heels fly (may_fly)', status)
-    call file%set_attribute('/rider', 'outcome', ride%outcome, status)
-    call file%set_attribute('/rider', 'reached_end', merge(1, 0, ride%complete), status)
-    if (ride%ejected_contact > 0) &
-      call file%set_attribute('/rider', 'ejected', trim(contact_names(ride%ejected_contact)), status)
-    call file%write_count(g//'statistics/steps', int(ride%driver%stats%steps), '1', 'integrator steps', status)
-    call file%write_count(g//'statistics/rhs_evaluations', int(ride%driver%stats%rhs_evaluations), '1', &
-                          'right-hand-side evaluations', status)
-    call file%write_count(g//'statistics/error_test_failures', int(ride%driver%stats%error_test_failures), '1', &
-                          'error test failures', status)
-    call file%write_count(g//'statistics/events', ride%driver%events, '1', &
-                          'events (drag on/off, stops, stall crossings)', status)
-    call file%write_count(g//'statistics/drag_switches', ride%drag_switches, '1', &
-                          'times a contact entered or left the water', status)
-    call file%write_scalar(g//'statistics/cpu_time', cpu, 's', 'CPU time of the ride and its evaluation', status)
-    if (n > 0) then
-      call file%make_scale(g//'time', status)
-      call file%attach_scale(g//'time', '/rider', status)
-      call file%attach_components('/rider', status)
-    end if
-  end subroutine write_ride
-
-  !> /evaluation: the report's figures and each limit's verdict.
-  subroutine write_evaluation(file, ride, r, status)
-    type(result_file_t), intent(inout) :: file
-    type(ride_result_t), intent(in) :: ride
-    type(ride_report_t), intent(in) :: r
-    type(status_t), intent(inout) :: status
-    character(len=*), parameter :: g = '/evaluation/'
-    character(len=*), parameter :: axis(3) = [character(len=12) :: 'longitudinal', 'lateral', 'normal']
-    character(len=:), allocatable :: c, unit
-    integer :: k
-    if (r%n < 1) return
-    call file%write_scalar(g//'ride_time', r%ride_time, 's', 'time from the start to the stop', status)
-    call file%write_scalar(g//'distance', r%distance, 'm', 'arc length covered by the pelvis', status)
-    call file%write_scalar(g//'top_speed', r%top_speed, 'm/s', 'largest speed', status)
-    call file%write_scalar(g//'top_speed_arc_length', r%top_speed_at, 'm', 'where (pelvis arc length)', status)
-    call file%write_scalar(g//'final_speed', r%final_speed, 'm/s', 'speed at the stop', status)
-    if (ride%complete) call file%write_scalar(g//'exit_speed', r%final_speed, 'm/s', &
-                                              'speed when the rider leaves the slide (the run-out entry)', status)
-    if (r%ejected_contact > 0) call file%write_scalar(g//'ejected_arc_length', r%ejected_at, 'm', &
-      'where the '//trim(contact_names(r%ejected_contact))//' went over the top of a wall (pelvis arc length)', &
-      status)
-    if (ride%flights%watched) call write_flights(file, ride%flights, g//'flight/', status)
-    do k = 1, 3
-      c = g//'acceleration_'//trim(axis(k))
-      call file%write_scalar(c//'_max', r%felt_max(k), r%felt_units, 'largest felt acceleration along the '// &
-                             'pelvis''s '//trim(axis(k))//' axis, multiples of |g|', status)
-      call file%write_scalar(c//'_max_arc_length', r%felt_max_at(k), 'm', 'where (pelvis arc length)', status)
-      call file%write_scalar(c//'_min', r%felt_min(k), r%felt_units, 'smallest felt acceleration along the '// &
-                             'pelvis''s '//trim(axis(k))//' axis, multiples of |g|', status)
-      call file%write_scalar(c//'_min_arc_length', r%felt_min_at(k), 'm', 'where (pelvis arc length)', status)
-    end do
-    call file%write_scalar(g//'lever_arm_max', r%lever_max, 'm', 'largest tipping lever arm (signed)', status)
-    call file%write_scalar(g//'lever_arm_max_arc_length', r%lever_max_at, 'm', 'where', status)
-    do k = 1, N_CONTACTS
-      c = g//trim(contact_names(k))//'/'
-      call file%write_scalar(c//'wall_angle_max', r%climb_angle(k), 'rad', &
-                             'highest climb up the wall: angle from the bottom (signed, + to the left)', status)
-      call file%write_scalar(c//'wall_distance_max', r%climb_distance(k), 'm', 'the distance along the wall there', &
-                             status)
-      call file%write_scalar(c//'wall_arc_length', r%climb_at(k), 'm', 'where (pelvis arc length)', status)
-      call file%write_scalar(c//'normal_force_min', r%normal_min(k), 'N', 'smallest normal force (lift-off '// &
-                             'margin)', status)
-      call file%write_scalar(c//'normal_force_min_arc_length', r%normal_min_at(k), 'm', 'where', status)
-    end do
-    do k = 1, size(r%limits)
-      c = g//'limits/'//format_integer(k)//'_'//r%limits(k)%quantity//'/'
-      unit = si(limit_report_unit(r%limits(k)%quantity), r%felt_units)
-      call file%write_text(c//'quantity', r%limits(k)%quantity, 'what is limited', status)
-      if (r%limits(k)%has_minimum) call file%write_scalar(c//'minimum', r%limits(k)%minimum, unit, &
-                                                          'the lower limit', status)
-      if (r%limits(k)%has_maximum) call file%write_scalar(c//'maximum', r%limits(k)%maximum, unit, &
-                                                          'the upper limit', status)
-      call file%write_text(c//'given_unit', r%limits(k)%unit, 'the unit the limit was given in', status)
-      if (.not. r%judged(k)) then
-        call file%write_text(c//'verdict', 'not judged', 'the ride did not reach the exit', status)
-        cycle
-      end if
-      call file%write_text(c//'verdict', trim(merge('exceeded', 'ok      ', r%verdicts(k)%exceeded)), &
-                           'ok or exceeded', status)
-      call file%write_scalar(c//'worst', r%verdicts(k)%worst, unit, &
-                             'the value furthest beyond (or nearest to) a bound', status)
-      call file%write_scalar(c//'worst_arc_length', r%verdicts(k)%worst_where, 'm', 'where', status)
-      call file%write_scalar(c//'excess', r%verdicts(k)%excess, unit, 'by how much it is exceeded (0: not)', &
-                             status)
-      if (r%verdicts(k)%exceeded) call file%write_scalar(c//'first_arc_length', r%verdicts(k)%first_where, 'm', &
-                                                         'where it is first exceeded', status)
-    end do
-  end subroutine write_evaluation
-
-  !> The file's unit for a report unit (degrees stay degrees: pint and
-  !> UDUNITS parse 'degree'; multiples of |g| are in `felt_units`, the
-  !> report's felt_acceleration_units).
-  pure function si(unit, felt_units) result(text)
-    character(len=*), intent(in) :: unit, felt_units
-    character(len=:), allocatable :: text
-    select case (unit)
-    case ('g'); text = felt_units
-    case ('deg'); text = 'degree'
-    case default; text = unit
-    end select
-  end function si
-
   !> XDMF next to the result: the slide, the water band, the contacts' paths
   !> (each with its own data and the rider's), the rider's posture line and
   !> its three bodies as boxes moving with it.
@@ -534,52 +340,6 @@ contains
                   axes(1, 3)*axes(2, 1) - axes(2, 3)*axes(1, 1)]
   end subroutine segment_axes
 
-  !> --ride-csv: one line per record of the ride (as /rider in the result).
-  subroutine write_ride_csv(path, s, r, status)
-    character(len=*), intent(in) :: path
-    type(ride_series_t), intent(in) :: s
-    type(ride_report_t), intent(in) :: r
-    type(status_t), intent(inout) :: status
-    character(len=*), parameter :: names(20) = [character(len=24) :: 'time_s', 'arc_length_m', 'speed_m_per_s', &
-      'felt_longitudinal_g', 'felt_lateral_g', 'felt_normal_g', 'pelvis_x_m', 'pelvis_y_m', 'pelvis_z_m', &
-      'normal_force_pelvis_N', 'normal_force_heels_N', 'normal_force_back_N', 'wall_angle_pelvis_deg', &
-      'wall_angle_heels_deg', 'wall_angle_back_deg', 'lever_arm_m', 'heading_deg', 'kinetic_energy_J', &
-      'energy_J', 'in_water_pelvis']
-    real(wp), allocatable :: table(:, :)
-    real(wp), parameter :: deg = 180/acos(-1.0_wp)
-    type(text_output_t) :: out
-    character(len=20*size(names)) :: line
-    integer :: n, k, i
-    n = s%n
-    allocate (table(n, size(names)))
-    table(:, 1) = s%time(:n)
-    table(:, 2) = s%arc_length(:n)
-    table(:, 3) = s%speed(:n)
-    table(:, 4:6) = transpose(r%felt(:, :n))
-    table(:, 7:9) = transpose(s%contact(CONTACT_PELVIS)%position(:, :n))
-    do k = 1, N_CONTACTS
-      table(:, 9 + k) = s%contact(k)%normal_force(:n)
-      table(:, 12 + k) = s%contact(k)%wall_angle(:n)*deg
-    end do
-    table(:, 16) = merge(r%lever_arm(:n), 0.0_wp, abs(r%lever_arm(:n)) < huge(1.0_wp))
-    table(:, 17) = s%heading(:n)*deg
-    table(:, 18) = s%kinetic(:n)
-    table(:, 19) = s%energy(:n)
-    table(:, 20) = s%contact(CONTACT_PELVIS)%in_water(:n)
-    call out%create(path, 'the ride CSV', status)
-    if (.not. status%ok()) return
-    line = names(1)
-    do k = 2, size(names)
-      line = trim(line)//','//names(k)
-    end do
-    call out%write_line(trim(line))
-    do i = 1, n   ! nine significant digits
-      write (line, '(*(g0.9, :, ","))') table(i, :)
-      call out%write_line(trim(line))
-    end do
-    call out%finish(status)
-  end subroutine write_ride_csv
-
   !> The ride report (stdout) and, with --summary-json, its numbers as JSON.
   subroutine print_report(ride, r, water_done, water_cpu, ride_cpu, path, run, complete, message, status, water)
     type(ride_result_t), intent(in) :: ride
@@ -653,7 +413,7 @@ contains
       if (ride%flights%watched) call add_flights(summary, ride%flights)
       exceeded = 0
       do k = 1, size(r%limits)
-        unit = spaced(si(limit_report_unit(r%limits(k)%quantity), r%felt_units))
+        unit = spaced(stored_unit(limit_report_unit(r%limits(k)%quantity), r%felt_units))
         if (.not. r%judged(k)) then
           line = 'limit '//r%limits(k)%quantity//': not judged (the ride did not reach the exit)'
         else if (r%verdicts(k)%exceeded) then
