@@ -115,6 +115,14 @@ module io_declarations_multibody
       high=1e3_wp, meaning='rate of v at t = 0'), &
     declaration_t(groups='sled', name='dphi0', unit='rad/s', default='0', low=-1e3_wp, high=1e3_wp, &
       meaning='rate of the heading at t = 0'), &
+    declaration_t(groups='sled', name='vehicle', kind=VALUE_WORDS, default='''bar''', &
+      choices='bar mat sitting ring double_ring raft', meaning='what slides (docs/vehicles.md): the bar of length, '// &
+      'mass and inertia, or a vehicle with its riders, built from riders and scale'), &
+    declaration_t(groups='sled', name='riders', kind=VALUE_INTEGER, unit='1', default='1', low=1.0_wp, high=4.0_wp, &
+      meaning='riders on the vehicle: mat, sitting and ring 1, double_ring 1-2, raft 1-4 (not for the bar)'), &
+    declaration_t(groups='sled', name='scale', unit='1', default='1', low=0.6_wp, high=1.1_wp, &
+      meaning='every rider''s size: height scale x 1.741 m, mass scale^3 x 73.0 kg (0.6: a small child, 1.1: a '// &
+      'tall adult; not for the bar)'), &
     declaration_t(groups='sled', name='drag_area', unit='m^2', default='0', low=0.0_wp, high=1e3_wp, &
       meaning='C_d A of the air''s quadratic drag on the bar at its centre of mass (docs/contact.md, Air drag; '// &
       '0: none)'), &

@@ -6,8 +6,10 @@ module io_mechanism_config
   use base_kinds, only: wp
   use base_constants, only: standard_gravity
   use base_status, only: status_t
+  use base_text, only: format_integer
   use numerics_ode, only: ode_stats_t
   use kinetostatics_models, only: pendulum_description_t, fourbar_description_t, sled_description_t
+  use rider_vehicle, only: vehicle_t, vehicle_kinds, vehicle_kind_index, check_vehicle, riders_allowed, VEHICLE_BAR
   use kinetostatics_recorder, only: mechanism_series_t
   use base_spec, only: spec_t
   use io_input, only: input_text_t, group_reader_t, open_group, format_real, format_vector
@@ -63,13 +65,20 @@ contains
     if (status%ok() .and. config%branch == 0) call r%invalid('branch', '0', 'must be +1 or -1', status)
   end subroutine read_fourbar_config
 
-  subroutine read_sled_config(input, config, status)
+  !> &sled into the sled's description and, given `vehicle`, the vehicle
+  !> that replaces its bar (vehicle = 'bar': none; rider_vehicle's
+  !> build_vehicle_model builds both); without `vehicle` a vehicle is refused.
+  subroutine read_sled_config(input, config, status, vehicle)
     type(input_text_t), intent(in) :: input
     type(sled_description_t), intent(out) :: config
     type(status_t), intent(inout) :: status
+    type(vehicle_t), intent(out), optional :: vehicle
+    type(vehicle_t) :: given
     real(wp) :: inertia(3), u0, v0, phi0, du0, dv0, dphi0
     type(group_reader_t) :: r
     character(len=32) :: friction
+    character(len=16) :: kind
+    type(status_t) :: checked
     type(spec_t) :: law
     integer :: k
 
@@ -94,6 +103,24 @@ contains
     call r%get('du0', du0, status)
     call r%get('dv0', dv0, status)
     call r%get('dphi0', dphi0, status)
+    kind = 'bar'
+    call r%get('vehicle', kind, status, choices=vehicle_kinds)
+    given%kind = vehicle_kind_index(trim(kind))
+    call r%get('riders', given%riders, status)
+    call r%get('scale', given%scale, status)
+    if (status%ok() .and. given%kind == VEHICLE_BAR) then
+      call r%refuse_given([character(len=6) :: 'riders', 'scale'], 'they describe a vehicle: give vehicle too', &
+                          status)
+    else if (status%ok() .and. .not. present(vehicle)) then
+      call r%invalid('vehicle', trim(kind), 'this program rides the bar only (''bar'')', status)
+    else if (status%ok()) then
+      call r%refuse_given([character(len=7) :: 'length', 'mass', 'inertia'], 'the vehicle '''//trim(kind)// &
+                          ''' has them from its riders and scale (docs/vehicles.md)', status)
+      call check_vehicle(given, checked)
+      if (.not. checked%ok()) call r%invalid('riders', format_integer(given%riders), riders_allowed(given%kind), &
+                                             status)
+    end if
+    if (present(vehicle)) vehicle = given
     call r%get('drag_area', config%params%drag_area, status)
     call r%get('air_density', config%params%air_density, status)
     call r%get('wind', config%params%wind, status)

@@ -43,10 +43,15 @@ module kinetostatics_models
     real(wp) :: gravity(3) = [0.0_wp, -standard_gravity, 0.0_wp]           ! m/s^2
   end type fourbar_params_t
 
-  !> A rigid bar (length L, centre of mass at L/2 on its axis) on a surface.
+  !> A rigid bar (length L, centre of mass at L/2 on its axis unless
+  !> centre_offset moves it) on a surface.
   type :: sled_params_t
     real(wp) :: length = 0.5_wp                 ! m
     real(wp) :: mass = 10                       ! kg
+    !> m, bar frame: the centre of mass from the bar's middle [L/2, 0, 0]
+    !> (a body above its runners: z > 0 on the side of the normal; the
+    !> vehicles of rider_vehicle)
+    real(wp) :: centre_offset(3) = 0
     real(wp) :: inertia(3, 3) = reshape([0.02_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.25_wp, 0.0_wp, &
                                          0.0_wp, 0.0_wp, 0.25_wp], [3, 3])   ! kg m^2, bar frame
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]
@@ -317,8 +322,8 @@ contains
     bar = m%add_frame('bar')
     spitch = m%add_scalar('pitch', 0.0_wp)
     call m%add_element(new_revolute('pitch', heading, bar, spitch, [0.0_wp, 1.0_wp, 0.0_wp]))
-    call m%add_element(new_mass_element('bar_mass', bar, p%mass, p%inertia, [p%length/2, 0.0_wp, 0.0_wp], &
-                                        p%gravity, status))
+    call m%add_element(new_mass_element('bar_mass', bar, p%mass, p%inertia, [p%length/2, 0.0_wp, 0.0_wp] + &
+                                        p%centre_offset, p%gravity, status))
     front = m%add_frame('bar_front')
     call m%add_element(new_rigid_offset('bar_rod', bar, front, [p%length, 0.0_wp, 0.0_wp]))
     d2 = m%add_frame('front_contact')
@@ -353,7 +358,7 @@ contains
       end do
     end if
     if (status%ok() .and. p%drag_area /= 0) call m%add_law(new_air_drag('bar.air_drag', bar, &
-      [p%length/2, 0.0_wp, 0.0_wp], p%drag_area, p%air_density, p%wind, status))
+      [p%length/2, 0.0_wp, 0.0_wp] + p%centre_offset, p%drag_area, p%air_density, p%wind, status))
     if (.not. status%ok()) return
     call m%set_coordinates([su, sv, sphi])
     if (present(finish)) then

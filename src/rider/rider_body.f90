@@ -45,7 +45,7 @@ module rider_body
   use base_text, only: format_real
   implicit none (type, external)
   private
-  public :: body_params_t, rigid_body_t, rider_body_t, build_rider_body, check_body_params
+  public :: body_params_t, rigid_body_t, rider_body_t, build_rider_body, check_body_params, add_segment
   public :: segment_t, de_leva_segment, reference_height, sex_name
   public :: SEX_MALE, SEX_FEMALE
   public :: SEG_HEAD_NECK, SEG_UPPER_TRUNK, SEG_MIDDLE_TRUNK, SEG_LOWER_TRUNK, SEG_UPPER_ARM, SEG_FOREARM, &

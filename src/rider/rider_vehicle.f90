@@ -1,0 +1,265 @@
+!> Riders beyond the body slide (issue 26 point 2): a mat with a rider lying
+!> prone head first, a rider sitting up, a single or double ring with 1-2
+!> riders, a raft with 1-4 riders, each one rigid body on the slide at two
+!> contacts, ridden as the sled of kinetostatics_models (&sled vehicle).
+!> Every vehicle comes from data, not code of its own: persons from de
+!> Leva's segments (rider_body) in a posture, at one size `scale`; rings and
+!> rafts from torus geometry; the mat a box. The choices and their sources
+!> are in docs/vehicles.md; keep the two in step.
+!>
+!> Vehicle frame V (m): origin at the rear contact on the slide, x towards
+!> the front contact (down the slide when phi0 = 0), z the slide's normal on
+!> the vehicle's side, y = z x x. Both contacts lie on the slide (z = 0).
+!>
+!> A person of size s (`scale`): height s H_ref, H_ref = 1.741 m, mass
+!> s^3 M_ref, M_ref = 73.0 kg (de Leva's male reference subject, scaled
+!> isometrically), segment centres of mass h = 0.075 m (H/1.78 m) above the
+!> surface the person lies on (thesis table 4.10, scaled). The person is
+!> rigid: the three bodies of rider_body joined at the hip, either straight
+!> (lying) or with the trunk turned up by 90 degrees (sitting up).
+module rider_vehicle
+  use base_kinds, only: wp
+  use base_constants, only: pi
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_text, only: format_real, format_integer
+  use geometry_surface, only: surface_t
+  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_models, only: sled_description_t, build_sled_model
+  use rider_body, only: body_params_t, rigid_body_t, rider_body_t, build_rider_body, add_segment, SEX_MALE
+  implicit none (type, external)
+  private
+  public :: vehicle_t, vehicle_body_t, vehicle_body, check_vehicle, build_vehicle_model, vehicle_kind_index
+  public :: riders_allowed, vehicle_kinds
+  public :: VEHICLE_BAR, VEHICLE_MAT, VEHICLE_SITTING, VEHICLE_RING, VEHICLE_DOUBLE_RING, VEHICLE_RAFT
+  public :: person_reference_height, person_reference_mass, scale_range
+
+  integer, parameter :: VEHICLE_BAR = 1, VEHICLE_MAT = 2, VEHICLE_SITTING = 3, VEHICLE_RING = 4, &
+    VEHICLE_DOUBLE_RING = 5, VEHICLE_RAFT = 6
+  character(len=*), parameter :: vehicle_kinds(6) = [character(len=11) :: 'bar', 'mat', 'sitting', 'ring', &
+    'double_ring', 'raft']
+  !> how many riders each kind carries: fewest, most
+  integer, parameter :: rider_counts(2, 6) = reshape([0, 0, 1, 1, 1, 1, 1, 1, 1, 2, 1, 4], [2, 6])
+
+  !> de Leva (1996)'s male reference subject (Zatsiorsky's sample)
+  real(wp), parameter :: person_reference_height = 1.741_wp   ! m
+  real(wp), parameter :: person_reference_mass = 73.0_wp      ! kg
+  !> scale 0.6: 1.04 m, 15.8 kg (a 5th-percentile child of about 5 years);
+  !> 1.1: 1.92 m, 97 kg (beyond a 95th-percentile adult man)
+  real(wp), parameter :: scale_range(2) = [0.6_wp, 1.1_wp]
+
+  ! docs/vehicles.md "Vehicles": the mat (foam racing mat), the tubes
+  real(wp), parameter :: mat_size(3) = [1.0_wp, 0.6_wp, 0.04_wp]   ! m: length, width, thickness
+  real(wp), parameter :: mat_mass = 1.5_wp                         ! kg
+  real(wp), parameter :: ring_radii(2) = [0.45_wp, 0.15_wp]        ! m: torus R (tube centre), r (tube): 1.2 m outside
+  real(wp), parameter :: ring_mass = 7.0_wp                        ! kg, each torus of a single or double ring
+  real(wp), parameter :: raft_radii(2) = [0.75_wp, 0.22_wp]        ! m: 1.94 m outside
+  real(wp), parameter :: raft_mass = 30.0_wp                       ! kg, tube and floor
+  real(wp), parameter :: raft_floor = 0.03_wp                      ! m, the floor the raft's riders sit on
+
+  !> A vehicle as the input gives it (&sled vehicle, riders, scale).
+  type :: vehicle_t
+    integer :: kind = VEHICLE_BAR     ! VEHICLE_BAR: the plain bar of &sled, no vehicle
+    integer :: riders = 1
+    real(wp) :: scale = 1             ! every rider's size (see the header)
+  end type vehicle_t
+
+  !> The vehicle with its riders as one rigid body, in V.
+  type :: vehicle_body_t
+    type(rigid_body_t) :: body        ! all of it: mass, centre of mass and inertia about it
+    real(wp) :: length = 0            ! m, rear to front contact (along x)
+    real(wp) :: rider_mass = 0        ! kg, each rider
+    real(wp) :: vehicle_mass = 0      ! kg, the vehicle without riders (0: a rider sitting on the slide)
+  end type vehicle_body_t
+
+contains
+
+  !> How many riders a vehicle of `kind` carries, in words.
+  function riders_allowed(kind) result(text)
+    integer, intent(in) :: kind
+    character(len=:), allocatable :: text
+    text = 'a '//trim(vehicle_kinds(kind))//' carries '//format_integer(rider_counts(1, kind))//' to '// &
+           format_integer(rider_counts(2, kind))
+  end function riders_allowed
+
+  !> The index of the kind called `name` in vehicle_kinds, 0 if none.
+  pure integer function vehicle_kind_index(name)
+    character(len=*), intent(in) :: name
+    vehicle_kind_index = findloc(vehicle_kinds, name, dim=1)
+  end function vehicle_kind_index
+
+  !> Refuses a vehicle its kind cannot carry; the message names the variable.
+  subroutine check_vehicle(v, status)
+    type(vehicle_t), intent(in) :: v
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok()) return
+    if (v%kind < 1 .or. v%kind > size(vehicle_kinds)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'vehicle: not a kind of vehicle')
+    else if (v%kind == VEHICLE_BAR) then
+      return
+    else if (v%riders < rider_counts(1, v%kind) .or. v%riders > rider_counts(2, v%kind)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'riders = '//format_integer(v%riders)//': '// &
+                      riders_allowed(v%kind))
+    else if (.not. (v%scale >= scale_range(1) .and. v%scale <= scale_range(2))) then
+      call set_status(status, STATUS_INVALID_INPUT, 'scale = '//format_real(v%scale)//': must lie in ['// &
+                      format_real(scale_range(1))//', '//format_real(scale_range(2))//']')
+    end if
+  end subroutine check_vehicle
+
+  !> The vehicle `v` with its riders as one rigid body in V (see the header).
+  subroutine vehicle_body(v, vb, status)
+    type(vehicle_t), intent(in) :: v
+    type(vehicle_body_t), intent(out) :: vb
+    type(status_t), intent(inout) :: status
+    type(rigid_body_t) :: lying, sitting, part
+    real(wp) :: heel, psi, centre(3)
+    integer :: k
+
+    call check_vehicle(v, status)
+    if (.not. status%ok()) return
+    if (v%kind == VEHICLE_BAR) then
+      call set_status(status, STATUS_INVALID_INPUT, 'vehicle = ''bar'': the plain bar has no vehicle body')
+      return
+    end if
+    call person(v%scale, lying, sitting, heel, status)
+    if (.not. status%ok()) return
+    vb%rider_mass = lying%mass
+    select case (v%kind)
+    case (VEHICLE_MAT)
+      ! the box, then the rider prone, head first (turned by pi about z),
+      ! lying on it with the centre of mass over the mat's middle
+      part = rigid_body_t(mat_mass, [mat_size(1)/2, 0.0_wp, mat_size(3)/2], box_inertia(mat_mass, mat_size))
+      call add_body(vb%body, part, 0.0_wp, [0.0_wp, 0.0_wp, 0.0_wp])
+      call add_body(vb%body, lying, pi, [mat_size(1)/2 + lying%com(1), 0.0_wp, mat_size(3)])
+      vb%length = mat_size(1)
+      vb%vehicle_mass = mat_mass
+    case (VEHICLE_SITTING)
+      ! on the slide itself: seat (the pelvis contact) behind, heels in front
+      call add_body(vb%body, sitting, 0.0_wp, [0.0_wp, 0.0_wp, 0.0_wp])
+      vb%length = heel
+    case (VEHICLE_RING)
+      call add_body(vb%body, torus(ring_mass, ring_radii), 0.0_wp, [ring_radii(1), 0.0_wp, ring_radii(2)])
+      call add_body(vb%body, sitting, 0.0_wp, [ring_radii(1), 0.0_wp, ring_radii(2)])
+      vb%length = 2*ring_radii(1)
+      vb%vehicle_mass = ring_mass
+    case (VEHICLE_DOUBLE_RING)
+      ! two rings in line, touching (centres 2 (R + r) apart); the first
+      ! rider in the front ring, the second in the rear one
+      associate (r1 => ring_radii(1), r2 => ring_radii(2))
+        centre = [r1, 0.0_wp, r2]
+        call add_body(vb%body, torus(ring_mass, ring_radii), 0.0_wp, centre)
+        if (v%riders == 2) call add_body(vb%body, sitting, 0.0_wp, centre)
+        centre(1) = r1 + 2*(r1 + r2)
+        call add_body(vb%body, torus(ring_mass, ring_radii), 0.0_wp, centre)
+        call add_body(vb%body, sitting, 0.0_wp, centre)
+        vb%length = 4*r1 + 2*r2
+      end associate
+      vb%vehicle_mass = 2*ring_mass
+    case (VEHICLE_RAFT)
+      ! riders evenly round the floor, backs to the tube, legs to the
+      ! middle; the first at the rear facing forward
+      associate (r1 => raft_radii(1), r2 => raft_radii(2))
+        call add_body(vb%body, torus(raft_mass, raft_radii), 0.0_wp, [r1, 0.0_wp, r2])
+        do k = 1, v%riders
+          psi = pi + 2*pi*(k - 1)/v%riders
+          call add_body(vb%body, sitting, psi + pi, [r1 + (r1 - r2)*cos(psi), (r1 - r2)*sin(psi), raft_floor])
+        end do
+        vb%length = 2*r1
+      end associate
+      vb%vehicle_mass = raft_mass
+    end select
+  end subroutine vehicle_body
+
+  !> The sled of `d` with the body of vehicle `v` in place of its bar (its
+  !> length, mass, inertia and centre of mass), on `surface`, and its start
+  !> (build_sled_model).
+  subroutine build_vehicle_model(v, d, surface, m, q0, qd0, status)
+    type(vehicle_t), intent(in) :: v
+    type(sled_description_t), intent(in) :: d
+    class(surface_t), intent(in) :: surface
+    type(mechanism_t), intent(out) :: m
+    real(wp), allocatable, intent(out) :: q0(:), qd0(:)
+    type(status_t), intent(inout) :: status
+    type(sled_description_t) :: carried
+    type(vehicle_body_t) :: vb
+    if (.not. status%ok()) return
+    carried = d
+    if (v%kind /= VEHICLE_BAR) then
+      call vehicle_body(v, vb, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, 'vehicle '''//trim(vehicle_kinds(v%kind))//'''')
+        return
+      end if
+      carried%params%length = vb%length
+      carried%params%mass = vb%body%mass
+      carried%params%inertia = vb%body%inertia
+      carried%params%centre_offset = vb%body%com - [vb%length/2, 0.0_wp, 0.0_wp]
+    end if
+    call build_sled_model(carried, surface, m, q0, qd0, status)
+  end subroutine build_vehicle_model
+
+  !> One person of size `scale`, rigid, in the pelvis frame P of rider_body
+  !> (origin at the seat on the surface below the pelvis, x towards the feet,
+  !> z up): lying straight, and sitting up (the trunk turned by 90 degrees
+  !> about y at the hip, head up); `heel` the heels' x, on the surface.
+  subroutine person(scale, lying, sitting, heel, status)
+    real(wp), intent(in) :: scale
+    type(rigid_body_t), intent(out) :: lying, sitting
+    real(wp), intent(out) :: heel
+    type(status_t), intent(inout) :: status
+    type(body_params_t) :: p
+    type(rider_body_t) :: rb
+    real(wp) :: up(3, 3)
+    p%height = scale*person_reference_height
+    p%mass = scale**3*person_reference_mass
+    p%com_height = 0.075_wp*p%height/1.78_wp
+    p%sex = SEX_MALE
+    call build_rider_body(p, rb, status)
+    if (.not. status%ok()) return
+    call add_segment(lying, rb%pelvis%mass, rb%pelvis%com, rb%pelvis%inertia)
+    call add_segment(lying, rb%legs%mass, rb%legs%com + rb%hip, rb%legs%inertia)
+    sitting = lying
+    call add_segment(lying, rb%trunk%mass, rb%trunk%com + rb%hip, rb%trunk%inertia)
+    ! about +y by 90 degrees: (x, y, z) -> (z, y, -x), the trunk's -x up
+    up = reshape([0.0_wp, 0.0_wp, -1.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 0.0_wp], [3, 3])
+    call add_segment(sitting, rb%trunk%mass, matmul(up, rb%trunk%com) + rb%hip, &
+                     matmul(up, matmul(rb%trunk%inertia, transpose(up))))
+    heel = rb%hip(1) + rb%heel(1)
+  end subroutine person
+
+  !> Adds `part` (given in its own frame) turned by `psi` about z and moved
+  !> by `origin`, to `total`.
+  pure subroutine add_body(total, part, psi, origin)
+    type(rigid_body_t), intent(inout) :: total
+    type(rigid_body_t), intent(in) :: part
+    real(wp), intent(in) :: psi, origin(3)
+    real(wp) :: turn(3, 3)
+    turn = reshape([cos(psi), sin(psi), 0.0_wp, -sin(psi), cos(psi), 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [3, 3])
+    call add_segment(total, part%mass, matmul(turn, part%com) + origin, &
+                     matmul(turn, matmul(part%inertia, transpose(turn))))
+  end subroutine add_body
+
+  !> A thin-walled torus (axis z, centre at its origin): radii(1) = R from
+  !> the axis to the tube's centre, radii(2) = r the tube's. Over the shell
+  !> (area element ~ R + r cos t): I_z = m (R^2 + 3 r^2/2),
+  !> I_x = I_y = m (R^2/2 + 5 r^2/4).
+  pure function torus(mass, radii) result(b)
+    real(wp), intent(in) :: mass, radii(2)
+    type(rigid_body_t) :: b
+    b%mass = mass
+    b%com = 0
+    b%inertia = 0
+    b%inertia(1, 1) = mass*(radii(1)**2/2 + 5*radii(2)**2/4)
+    b%inertia(2, 2) = b%inertia(1, 1)
+    b%inertia(3, 3) = mass*(radii(1)**2 + 3*radii(2)**2/2)
+  end function torus
+
+  !> A solid box of sides a(1:3) about its centre.
+  pure function box_inertia(mass, a) result(inertia)
+    real(wp), intent(in) :: mass, a(3)
+    real(wp) :: inertia(3, 3)
+    inertia = 0
+    inertia(1, 1) = mass*(a(2)**2 + a(3)**2)/12
+    inertia(2, 2) = mass*(a(1)**2 + a(3)**2)/12
+    inertia(3, 3) = mass*(a(1)**2 + a(2)**2)/12
+  end function box_inertia
+end module rider_vehicle
