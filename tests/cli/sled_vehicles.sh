@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# The vehicles of &sled (docs/vehicles.md; their physics:
+# tests/rider/test_vehicle.f90; the shipped inputs/parts/mat.nml, ring.nml
+# and raft.nml run and are plotted through cli_every_input and
+# cli_plot_scripts): what a vehicle cannot carry and the bar's own values
+# given beside a vehicle are refused before any work (exit 1, no file), the
+# message naming the group, the variable, the value and what is allowed; a
+# mat rider and a ring ride the demo slide (exit 0) with the weight of
+# vehicle and riders on the two contacts at the start.
+set -u
+slidesim=$1
+python=${SLIDESIM_PYTHON:-/usr/bin/python3}
+root=$(pwd)   # tests run from the repository root
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0; checks=0
+check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+head="&run scenario = 'sled' /
+&solver duration = 1.0, output_step = 0.01 /
+&surface kind = 'slide', geometry_file = 'builtin:demo_slide' /"
+refused() {   # NAME EXPECTED SLED_GROUP
+  local name=$1 expected=$2
+  printf '%s\n%s\n' "$head" "$3" >"$work/$name.nml"
+  (cd "$work" && "$slidesim" -q -o "$name.h5" "$name.nml" >"$name.out" 2>"$name.err"); local got=$?
+  check '[ $got = 1 ]' "$name: exit status $got, expected 1 ($(cat "$work/$name.err"))"
+  check 'grep -qF -- "$expected" "$work/$name.err"' "$name: message lacks '$expected': $(cat "$work/$name.err")"
+  check '! ls "$work/$name".h5* >/dev/null 2>&1' "$name: a result file (or a temporary one) was written"
+}
+refused ring_two "&sled: riders = 2 is not allowed: a ring carries 1 to 1" \
+  "&sled vehicle = 'ring', riders = 2, u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
+refused raft_five "&sled: riders = 5 is not allowed" \
+  "&sled vehicle = 'raft', riders = 5, u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
+refused mat_mass "&sled: mass" \
+  "&sled vehicle = 'mat', mass = 80, u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
+refused bar_riders "&sled: riders" \
+  "&sled riders = 2, u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
+refused small_child "&sled: scale = 0.5 is not allowed" \
+  "&sled vehicle = 'sitting', scale = 0.5, u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
+refused boat "&sled: vehicle = 'boat' is not allowed" \
+  "&sled vehicle = 'boat', u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
+# a mat rider and a ring down the demo slide for a second: the two normal
+# forces at the start carry the weight of the vehicle and its riders (on the
+# straight entry, slope 12 deg: M g cos 12 deg, M = 1.5 + 73.0 kg for the
+# mat and an adult, 7.0 + 73.0 x 0.8^3 kg for the ring and a child)
+for spec in "mat 1.0 74.5" "ring 0.8 44.376"; do
+  set -- $spec
+  printf '%s\n%s\n' "$head" "&sled vehicle = '$1', scale = $2, friction = 'coulomb', mu = 0.07,
+  u0 = 0.5, v0 = 1.5707963267948966, du0 = 2 /" >"$work/$1.nml"
+  (cd "$work" && "$slidesim" -q -o "$1.h5" "$1.nml" >"$1.out" 2>"$1.err"); got=$?
+  check '[ $got = 0 ]' "$1 on the demo slide: exit $got: $(cat "$work/$1.err")"
+  "$python" - "$work/$1.h5" "$3" <<'PY' || { echo "FAIL $1: the normal forces (above)"; failures=$((failures + 1)); }
+import sys, math
+import h5py
+with h5py.File(sys.argv[1], "r") as f:
+    n = f["/sled/contacts/rear/normal_force"][0] + f["/sled/contacts/front/normal_force"][0]
+expected = float(sys.argv[2]) * 9.80665 * math.cos(math.radians(12.0))
+# the start is on the straight entry: the sum is the weight's normal part
+# to the closure's and the solve's rounding
+if abs(n - expected) > 1e-9 * expected:
+    print(f"N_rear + N_front = {n} N, expected {expected} N")
+    sys.exit(1)
+PY
+done
+echo "sled_vehicles: $checks checks, $failures failed"
+[ "$failures" = 0 ]
