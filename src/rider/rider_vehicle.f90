@@ -20,10 +20,14 @@
 module rider_vehicle
   use base_kinds, only: wp
   use base_constants, only: pi
-  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_INTERNAL
   use base_text, only: format_real, format_integer
   use geometry_surface, only: surface_t
-  use kinetostatics_mechanism, only: mechanism_t
+  use base_vector, only: cross
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
+  use kinetostatics_mass, only: mass_element_t
+  use kinetostatics_recorder, only: mechanism_series_t
+  use rider_extremes, only: felt_acceleration
   use kinetostatics_models, only: sled_description_t, build_sled_model
   use rider_body, only: body_params_t, rigid_body_t, rider_body_t, build_rider_body, add_segment, SEX_MALE
   implicit none (type, external)
@@ -31,7 +35,7 @@ module rider_vehicle
   public :: vehicle_t, vehicle_body_t, vehicle_body, check_vehicle, build_vehicle_model, vehicle_kind_index
   public :: riders_allowed, vehicle_kinds
   public :: VEHICLE_BAR, VEHICLE_MAT, VEHICLE_SITTING, VEHICLE_RING, VEHICLE_DOUBLE_RING, VEHICLE_RAFT
-  public :: person_reference_height, person_reference_mass, scale_range
+  public :: person_reference_height, person_reference_mass, scale_range, vehicle_ride_figures
 
   integer, parameter :: VEHICLE_BAR = 1, VEHICLE_MAT = 2, VEHICLE_SITTING = 3, VEHICLE_RING = 4, &
     VEHICLE_DOUBLE_RING = 5, VEHICLE_RAFT = 6
@@ -196,6 +200,56 @@ contains
     end if
     call build_sled_model(carried, surface, m, q0, qd0, status)
   end subroutine build_vehicle_model
+
+  !> The ride figures of a vehicle's run at each of its records `s`
+  !> (docs/vehicles.md, "What the run reports"): the speed of the centre of
+  !> mass (m/s) and the felt acceleration there, (a_c - g)/|g| along the
+  !> vehicle's x (forward), y (left) and z (the normal) axes (g), from the
+  !> vehicle's mechanism `m` evaluated at each record's state, its closure
+  !> started from the record's dependent coordinates.
+  subroutine vehicle_ride_figures(m, work, s, speed, felt, status)
+    type(mechanism_t), intent(inout) :: m
+    type(mechanism_workspace_t), intent(inout) :: work
+    type(mechanism_series_t), intent(in) :: s
+    real(wp), allocatable, intent(out) :: speed(:), felt(:, :)
+    type(status_t), intent(inout) :: status
+    real(wp) :: residual, arm(3), acceleration(3), gravity(3), com(3)
+    integer :: i, k, e, frame
+    allocate (speed(s%n), felt(3, s%n))
+    speed = 0
+    felt = 0
+    frame = 0
+    do e = 1, m%n_elements
+      select type (body => m%elements(e)%e)
+      type is (mass_element_t)
+        frame = body%frame
+        com = body%com
+        gravity = body%gravity
+      end select
+    end do
+    if (frame == 0) then
+      call set_status(status, STATUS_INTERNAL, 'vehicle figures: the mechanism has no body')
+      return
+    end if
+    do i = 1, s%n
+      do k = 1, m%r
+        m%scalars(m%beta(k))%q = s%beta(k, i)
+      end do
+      m%warm = .false.
+      m%converged = .false.
+      call m%evaluate(work, s%time(i), s%q(:, i), s%qd(:, i), residual, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, 'vehicle figures at t = '//format_real(s%time(i))//' s')
+        return
+      end if
+      associate (p => m%frames(frame))
+        arm = matmul(p%rot, com)
+        speed(i) = norm2(p%v + cross(p%omega, arm))
+        acceleration = p%a + cross(p%alpha, arm) + cross(p%omega, cross(p%omega, arm))
+        felt(:, i) = felt_acceleration(acceleration, gravity, p%rot)
+      end associate
+    end do
+  end subroutine vehicle_ride_figures
 
   !> One person of size `scale`, rigid, in the pelvis frame P of rider_body
   !> (origin at the seat on the surface below the pelvis, x towards the feet,

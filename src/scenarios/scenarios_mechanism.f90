@@ -26,7 +26,38 @@ module scenarios_mechanism
   use contact_closing, only: drive_flight
   implicit none (type, external)
   private
-  public :: run_mechanism, mechanism_driver_options
+  public :: run_mechanism, mechanism_driver_options, run_figures_t
+
+  !> Figures a scenario adds to its mechanism's run (the sled's vehicle,
+  !> scenarios_sled): computed from the run's records once it has run,
+  !> written into the result file before it is finished, and added to the
+  !> summary.
+  type, abstract :: run_figures_t
+  contains
+    procedure(figures_compute_i), deferred :: compute
+    procedure(figures_write_i), deferred :: write
+    procedure(figures_summarise_i), deferred :: summarise
+  end type run_figures_t
+
+  abstract interface
+    subroutine figures_compute_i(self, sys, status)
+      import :: run_figures_t, mechanism_ode_t, status_t
+      class(run_figures_t), intent(inout) :: self
+      class(mechanism_ode_t), intent(inout) :: sys
+      type(status_t), intent(inout) :: status
+    end subroutine figures_compute_i
+    subroutine figures_write_i(self, file, status)
+      import :: run_figures_t, result_file_t, status_t
+      class(run_figures_t), intent(in) :: self
+      type(result_file_t), intent(inout) :: file
+      type(status_t), intent(inout) :: status
+    end subroutine figures_write_i
+    subroutine figures_summarise_i(self, summary)
+      import :: run_figures_t, summary_t
+      class(run_figures_t), intent(in) :: self
+      type(summary_t), intent(inout) :: summary
+    end subroutine figures_summarise_i
+  end interface
 
   !> Runaway guard of the multibody scenarios: a mean step below 1e-4 s after
   !> the driver's guard_steps steps. Their regular runs take mean steps of
@@ -52,7 +83,7 @@ contains
 
   !> The common run of a multibody scenario from q0, q0'.
   subroutine run_mechanism(scenario, input, run, solver, sys, q0, qd0, q_units, beta_units, status, surface, &
-                           start_variables, shapes)
+                           start_variables, shapes, figures)
     character(len=*), intent(in) :: scenario
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
@@ -64,6 +95,7 @@ contains
     class(surface_t), intent(in), optional :: surface   ! the surface of the contacts, written as a grid
     character(len=*), intent(in), optional :: start_variables   ! of &<scenario>, named when the start fails
     type(body_shape_t), intent(in), optional :: shapes(:)   ! drawn moving with their bodies in the XDMF view
+    class(run_figures_t), intent(inout), optional :: figures   ! the scenario's own figures of the run
     type(result_file_t) :: file
     type(driver_result_t) :: result
     type(status_t) :: run_status, write_status
@@ -115,8 +147,10 @@ contains
       outcome = 'failed: '//run_status%text()
     end select
     losses = impact_losses(sys)
+    if (present(figures) .and. run_status%ok() .and. sys%series%n > 0) call figures%compute(sys, run_status)
     call write_mechanism_series(file, scenario, input, run%title, sys%series, outcome, result%stats, result%cpu, &
                                 units, dependent_units, write_status, losses)
+    if (present(figures) .and. run_status%ok()) call figures%write(file, write_status)
     select type (sys)
     class is (flight_ode_t)
       call write_impacts(file, sys, write_status)
@@ -142,7 +176,8 @@ contains
       end if
     class default
       call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
-                  message, outcome, sys%chart_changes, sys%mechanism, write_status, impacts_of(sys), losses)
+                  message, outcome, sys%chart_changes, sys%mechanism, write_status, impacts_of(sys), losses, &
+                  figures)
     end select
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
   end subroutine run_mechanism
@@ -307,7 +342,7 @@ contains
   !> The printed summary (angles in degrees) and, with --summary-json, the
   !> same numbers as JSON (SI).
   subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, outcome, chart_changes, m, &
-                    status, impacts, losses)
+                    status, impacts, losses, figures)
     character(len=*), intent(in) :: scenario, path, message, outcome
     integer, intent(in) :: chart_changes   ! coordinates re-based on a new chart (docs/multibody.md, events)
     type(mechanism_series_t), intent(in) :: s
@@ -320,6 +355,7 @@ contains
     type(status_t), intent(inout) :: status
     type(impact_record_t), intent(in) :: impacts(:)
     real(wp), intent(in) :: losses(:)   ! J, the impacts' energy lost up to each record
+    class(run_figures_t), intent(in), optional :: figures
     type(summary_t) :: summary
     real(wp) :: e0, scale
     integer :: n, k, i
@@ -384,6 +420,7 @@ contains
                        (s%kinetic(n) + s%potential(n) - e0 - sum(s%law_work(:, n)) + losses(n))/scale, '1', note)
     end if
     if (s%r > 0) call summary%add('closure_residual_max', 'closure residual max', maxval(s%closure(:n)), 'm')
+    if (present(figures) .and. complete) call figures%summarise(summary)
     if (chart_changes > 0) call summary%add_count('chart_changes', 'chart changes', chart_changes, &
                                                   '(coordinates re-based, the motion continuous)')
     call summary%add_count('steps', 'integrator', int(stats%steps), 'steps')

@@ -10,7 +10,11 @@ module scenarios_sled
   use geometry_surface, only: surface_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: sled_description_t
-  use rider_vehicle, only: vehicle_t, build_vehicle_model
+  use rider_vehicle, only: vehicle_t, build_vehicle_model, vehicle_ride_figures, vehicle_kinds, VEHICLE_BAR
+  use design_ride_evaluation, only: felt_acceleration_units
+  use io_hdf5, only: result_file_t
+  use io_summary, only: summary_t
+  use base_text, only: format_short
   use io_input, only: input_text_t, check_known_groups, invalid, format_real, mark_input_failure
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
@@ -18,13 +22,28 @@ module scenarios_sled
   use geometry_surface_description, only: surface_description_t, build_surface
   use io_mechanism_config, only: read_sled_config
   use io_geometry_config, only: geometry_groups
-  use scenarios_mechanism, only: run_mechanism
+  use scenarios_mechanism, only: run_mechanism, run_figures_t
   implicit none (type, external)
   private
   public :: run_sled, sled_groups
 
   character(len=*), parameter :: sled_groups(10) = [character(len=14) :: 'run', 'solver', 'surface', 'sled', &
     geometry_groups]
+
+  !> A vehicle's ride figures (docs/vehicles.md, "What the run reports"):
+  !> per record the speed of its centre of mass and the felt acceleration
+  !> there, in /sled/vehicle and the summary (largest speed, exit speed,
+  !> felt extremes).
+  type, extends(run_figures_t) :: vehicle_figures_t
+    type(vehicle_t) :: vehicle
+    real(wp) :: gravity(3) = 0
+    real(wp), allocatable :: speed(:), felt(:, :)   ! m/s; 3 x n, g
+    real(wp), allocatable :: time(:)                ! s
+  contains
+    procedure :: compute => vehicle_compute
+    procedure :: write => vehicle_write
+    procedure :: summarise => vehicle_summarise
+  end type vehicle_figures_t
 
 contains
 
@@ -35,6 +54,7 @@ contains
     type(solver_config_t) :: solver
     type(sled_description_t) :: config
     type(vehicle_t) :: vehicle
+    type(vehicle_figures_t) :: figures
     class(surface_t), allocatable :: surface
     type(mechanism_ode_t), target :: sys
     character(len=:), allocatable :: u_units, v_units
@@ -63,7 +83,55 @@ contains
     call surface%parameter_units(u_units, v_units)
     q_units(1) = u_units; q_units(2) = v_units; q_units(3) = 'rad'   ! u, v, phi
     beta_units(1) = 'rad'; beta_units(2) = u_units; beta_units(3) = v_units   ! pitch, u2, v2
-    call run_mechanism('sled', input, run, solver, sys, q0, qd0, q_units, beta_units, status, &
-                       surface=surface, start_variables='u0, v0, phi0, du0, dv0, dphi0')
+    if (vehicle%kind == VEHICLE_BAR) then
+      call run_mechanism('sled', input, run, solver, sys, q0, qd0, q_units, beta_units, status, &
+                         surface=surface, start_variables='u0, v0, phi0, du0, dv0, dphi0')
+    else
+      figures%vehicle = vehicle
+      figures%gravity = config%params%gravity
+      call run_mechanism('sled', input, run, solver, sys, q0, qd0, q_units, beta_units, status, &
+                         surface=surface, start_variables='u0, v0, phi0, du0, dv0, dphi0', figures=figures)
+    end if
   end subroutine run_sled
+
+  subroutine vehicle_compute(self, sys, status)
+    class(vehicle_figures_t), intent(inout) :: self
+    class(mechanism_ode_t), intent(inout) :: sys
+    type(status_t), intent(inout) :: status
+    call vehicle_ride_figures(sys%mechanism, sys%work, sys%series, self%speed, self%felt, status)
+    self%time = sys%series%time(:sys%series%n)
+  end subroutine vehicle_compute
+
+  subroutine vehicle_write(self, file, status)
+    class(vehicle_figures_t), intent(in) :: self
+    type(result_file_t), intent(inout) :: file
+    type(status_t), intent(inout) :: status
+    character(len=*), parameter :: g = '/sled/vehicle'
+    if (.not. allocated(self%speed)) return
+    call file%write_vector(g//'/speed', self%speed, 'm/s', 'speed of the vehicle''s centre of mass', status)
+    call file%write_matrix(g//'/felt_acceleration', self%felt, felt_acceleration_units(self%gravity), &
+                           'felt acceleration (a - g)/|g| at the vehicle''s centre of mass along its x (forward), '// &
+                           'y (left) and z (the normal) axes (3 x n; docs/vehicles.md)', status)
+    call file%set_attribute(g, 'vehicle', trim(vehicle_kinds(self%vehicle%kind)), status)
+    call file%attach_scale('/sled/time', g, status)
+  end subroutine vehicle_write
+
+  subroutine vehicle_summarise(self, summary)
+    class(vehicle_figures_t), intent(in) :: self
+    type(summary_t), intent(inout) :: summary
+    character(len=:), allocatable :: units
+    character(len=*), parameter :: axes(3) = [character(len=12) :: 'longitudinal', 'lateral', 'normal']
+    integer :: k, n
+    if (.not. allocated(self%speed)) return
+    n = size(self%speed)
+    if (n < 1) return
+    units = felt_acceleration_units(self%gravity)
+    call summary%add('vehicle_speed_max', 'vehicle top speed', maxval(self%speed), 'm/s', &
+                     'm/s at '//format_short(self%time(maxloc(self%speed, dim=1)))//' s')
+    call summary%add('vehicle_speed_final', 'vehicle final speed', self%speed(n), 'm/s')
+    do k = 1, 3
+      call summary%add_range('vehicle_felt_'//trim(axes(k)), 'felt '//trim(axes(k))//' min / max', &
+                             minval(self%felt(k, :)), maxval(self%felt(k, :)), units, 'g')
+    end do
+  end subroutine vehicle_summarise
 end module scenarios_sled

@@ -41,14 +41,20 @@ refused boat "&sled: vehicle = 'boat' is not allowed" \
 # a mat rider and a ring down the demo slide for a second: the two normal
 # forces at the start carry the weight of the vehicle and its riders (on the
 # straight entry, slope 12 deg: M g cos 12 deg, M = 1.5 + 73.0 kg for the
-# mat and an adult, 7.0 + 73.0 x 0.8^3 kg for the ring and a child)
+# mat and an adult, 7.0 + 73.0 x 0.8^3 kg for the ring and a child); the
+# felt acceleration at the start is (-mu cos 12, 0, cos 12) g along the
+# vehicle's axes, the summary and its JSON give the vehicle's figures
 for spec in "mat 1.0 74.5" "ring 0.8 44.376"; do
   set -- $spec
-  printf '%s\n%s\n' "$head" "&sled vehicle = '$1', scale = $2, friction = 'coulomb', mu = 0.07,
-  u0 = 0.5, v0 = 1.5707963267948966, du0 = 2 /" >"$work/$1.nml"
-  (cd "$work" && "$slidesim" -q -o "$1.h5" "$1.nml" >"$1.out" 2>"$1.err"); got=$?
-  check '[ $got = 0 ]' "$1 on the demo slide: exit $got: $(cat "$work/$1.err")"
-  "$python" - "$work/$1.h5" "$3" <<'PY' || { echo "FAIL $1: the normal forces (above)"; failures=$((failures + 1)); }
+  name=$1
+  printf '%s\n%s\n' "$head" "&sled vehicle = '$name', scale = $2, friction = 'coulomb', mu = 0.07,
+  u0 = 0.5, v0 = 1.5707963267948966, du0 = 2 /" >"$work/$name.nml"
+  (cd "$work" && "$slidesim" -o "$name.h5" --summary-json "$name.json" "$name.nml" >"$name.out" 2>"$name.err"); got=$?
+  check '[ $got = 0 ]' "$name on the demo slide: exit $got: $(cat "$work/$name.err")"
+  check 'grep -q "felt normal min / max" "$work/$name.out" && grep -q "vehicle top speed" "$work/$name.out"' \
+    "$name: the summary lacks the vehicle's figures: $(cat "$work/$name.out")"
+  check 'grep -q "\"vehicle_felt_normal_max\"" "$work/$name.json"' "$name: the JSON lacks vehicle_felt_normal_max"
+  "$python" - "$work/$name.h5" "$3" <<'PY' || { echo "FAIL $name: the normal forces or the felt acceleration (above)"; failures=$((failures + 1)); }
 import sys, math
 import h5py
 with h5py.File(sys.argv[1], "r") as f:
@@ -59,7 +65,20 @@ expected = float(sys.argv[2]) * 9.80665 * math.cos(math.radians(12.0))
 if abs(n - expected) > 1e-9 * expected:
     print(f"N_rear + N_front = {n} N, expected {expected} N")
     sys.exit(1)
+with h5py.File(sys.argv[1], "r") as f:
+    felt = f["/sled/vehicle/felt_acceleration"][0]
+    units = f["/sled/vehicle/felt_acceleration"].attrs["units"]
+    units = units.decode() if isinstance(units, bytes) else units
+c = math.cos(math.radians(12.0))
+# exact but for the closure's rounding
+if max(abs(felt[0] + 0.07 * c), abs(felt[1]), abs(felt[2] - c)) > 1e-9 or units != "gravity":
+    print(f"felt acceleration at the start {felt} {units}, expected ({-0.07 * c}, 0, {c}) gravity")
+    sys.exit(1)
 PY
 done
+# the plain bar has no vehicle figures (its results as before)
+printf '%s\n%s\n' "$head" "&sled u0 = 0.5, v0 = 1.5707963267948966, du0 = 2 /" >"$work/bar.nml"
+(cd "$work" && "$slidesim" -o bar.h5 bar.nml >bar.out 2>&1); got=$?
+check '[ $got = 0 ] && ! grep -q "vehicle top speed" "$work/bar.out"' "the bar: exit $got or vehicle figures: $(cat "$work/bar.out")"
 echo "sled_vehicles: $checks checks, $failures failed"
 [ "$failures" = 0 ]

@@ -4,7 +4,9 @@
 !> sliding without turning: u'' = g (sin a - mu cos a) whatever the mass, its
 !> distribution and the rider count; N_rear + N_front = M g cos a; the split
 !> from the moments about the centre of mass (x_c, z_c in V, L the contacts'
-!> distance): N_front = M g cos a (x_c + mu z_c)/L. The persons scale
+!> distance): N_front = M g cos a (x_c + mu z_c)/L; the ride figures: the
+!> felt acceleration at the centre of mass (-mu cos a, 0, cos a) g along the
+!> vehicle's axes and its speed u0' + a t (it does not turn). The persons scale
 !> isometrically: a rider sitting on the slide has mass ~ s^3, length ~ s and
 !> inertia ~ s^5.
 program test_vehicle
@@ -15,10 +17,12 @@ program test_vehicle
   use geometry_surface, only: surface_t
   use geometry_elementary, only: plane_t
   use numerics_ode, only: ode_integrator_t, ode_options_t
+  use numerics_event_driver, only: RECORD_START, RECORD_OUTPUT
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: sled_description_t
   use kinetostatics_force_law_factory, only: law_spec
   use rider_vehicle, only: vehicle_t, vehicle_body_t, vehicle_body, build_vehicle_model, vehicle_kinds, &
+    vehicle_ride_figures, &
     VEHICLE_MAT, VEHICLE_SITTING, VEHICLE_RING, VEHICLE_DOUBLE_RING, VEHICLE_RAFT, person_reference_mass
   implicit none (type, external)
 
@@ -54,7 +58,7 @@ contains
     type(ode_options_t) :: opt
     type(status_t) :: st
     real(wp) :: acc, t, res, weight_normal, n_front
-    real(wp), allocatable :: y(:), q0(:), qd0(:)
+    real(wp), allocatable :: y(:), q0(:), qd0(:), speed(:), felt(:, :)
     character(len=40) :: label
 
     write (label, '(a, 1x, i0, a, f4.2)') trim(vehicle_kinds(v%kind)), v%riders, ' rider(s), scale ', v%scale
@@ -96,6 +100,19 @@ contains
     call check_close(y(1), q0(1) + qd0(1) + acc/2, 1e-8_wp, 0.0_wp, 'incline: u(1 s) = u0 + u0'' + a/2, '// &
                      trim(label))
     call check_close(y(4), qd0(1) + acc, 1e-8_wp, 0.0_wp, 'incline: u''(1 s) = u0'' + a, '//trim(label))
+    ! the ride figures at the start and after 1 s: the closed forms to the
+    ! closure's rounding (felt) and to the integration's 1e-8 (speed)
+    call sys%record(0.0_wp, sys%initial_state(q0, qd0), RECORD_START, st)
+    call sys%record(t, y, RECORD_OUTPUT, st)
+    call vehicle_ride_figures(sys%mechanism, sys%work, sys%series, speed, felt, st)
+    call check(st%ok() .and. size(speed) == 2, 'incline: the ride figures at two records: '//st%text())
+    if (.not. st%ok()) return
+    call check(maxval(abs(felt(:, 1) - [-mu*cos(theta), 0.0_wp, cos(theta)])) <= 1e-10_wp .and. &
+               maxval(abs(felt(:, 2) - [-mu*cos(theta), 0.0_wp, cos(theta)])) <= 1e-10_wp, &
+               'incline: felt acceleration (-mu cos a, 0, cos a) g, '//trim(label))
+    call check_close(speed(1), qd0(1), 1e-12_wp, 0.0_wp, 'incline: speed of the centre at the start, '//trim(label))
+    call check_close(speed(2), qd0(1) + acc, 1e-8_wp, 0.0_wp, 'incline: speed of the centre after 1 s, '// &
+                     trim(label))
   end subroutine incline
 
   !> A rider sitting on the slide, no vehicle: every length ~ s, mass ~ s^3,

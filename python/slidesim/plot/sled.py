@@ -1,6 +1,8 @@
 """Plots a sled result (scenario sled): the bar's contact paths on the surface
 in 3-D with the bar drawn at intervals, the coordinates over time (angles in
-degrees), the contact normal forces and the sliding speed, and the energy.
+degrees), the contact normal forces and the sliding speed, and the energy;
+for a vehicle (docs/vehicles.md) also the felt acceleration at its centre of
+mass.
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
@@ -25,13 +27,30 @@ def draw(r, plt, args):
     ax.plot(*front.T, "b-", lw=1, label="front contact")
     for i in np.linspace(0, len(t) - 1, 12).astype(int):
         ax.plot(*np.column_stack([rear[i], front[i]]), "k-", lw=2)
-    ax.plot([], [], "k-", lw=2, label="the bar (12 instants)")
+    vehicle = g + "/vehicle/felt_acceleration" in r
+    body = "the vehicle" if vehicle else "the bar"
+    ax.plot([], [], "k-", lw=2, label=f"{body} (12 instants, rear to front contact)")
     ax.legend(loc="upper left", fontsize=8)
     equal_axes_3d(ax, np.vstack([pts, rear, front]))
-    ax.set_title("the bar on the surface")
-    coordinates(fig.add_subplot(3, 2, 2), r, g)
-    contact_forces(fig.add_subplot(3, 2, 4), r, g, [("rear", "r"), ("front", "b")], ["rear"])
-    energy(fig.add_subplot(3, 2, 6), r, g)
+    ax.set_title(f"{body} on the surface")
+    rows = 4 if vehicle else 3
+    coordinates(fig.add_subplot(rows, 2, 2), r, g)
+    contact_forces(fig.add_subplot(rows, 2, 4), r, g, [("rear", "r"), ("front", "b")], ["rear"])
+    if vehicle:
+        felt(fig.add_subplot(rows, 2, 6), r, g, t)
+    energy(fig.add_subplot(rows, 2, 2 * rows), r, g)
     suptitle(fig, r)
     fig.tight_layout()
     return fig
+
+
+def felt(ax, r, g, t):
+    """The felt acceleration at the vehicle's centre of mass along its axes, in g."""
+    f = r[g + "/vehicle/felt_acceleration"].values
+    for k, (name, style) in enumerate([("longitudinal", "g-"), ("lateral", "m-"), ("normal", "k-")]):
+        ax.plot(t, f[:, k], style, label=name)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("felt acceleration [g]")
+    ax.grid(True)
+    ax.legend(loc="upper left", fontsize=8)
+    ax.set_title("felt acceleration at the centre of mass")
