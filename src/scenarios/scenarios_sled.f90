@@ -114,6 +114,8 @@ contains
                            'y (left) and z (the normal) axes (3 x n; docs/vehicles.md)', status)
     call file%set_attribute(g, 'vehicle', trim(vehicle_kinds(self%vehicle%kind)), status)
     call file%attach_scale('/sled/time', g, status)
+    ! the components' scale of the sled's vectors (written with its series)
+    call file%attach_scale('/sled/xyz', g, status, axis=1)
   end subroutine vehicle_write
 
   subroutine vehicle_summarise(self, summary)
