@@ -13,11 +13,12 @@ module scenarios_ride
   use base_constants, only: pi
   use base_text, only: format_short, format_integer
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_LIMITS_EXCEEDED
-  use base_log, only: log_info
+  use base_log, only: log_info, log_warning
   use geometry_tube, only: tube_surface_t
   use geometry_slide_query, only: slide_surface_t
   use geometry_cross_section, only: circle_section_t
   use water_run, only: water_description_t
+  use water_curve_entry, only: curve_entry_note
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
   use rider_ride, only: ride_result_t, ride_series_t, check_ride_start
   use design_ride_evaluation, only: limit_report_unit, ride_limit_t, quantities_without_limit
@@ -60,7 +61,7 @@ contains
     type(ride_job_result_t) :: result
     type(result_file_t) :: file
     type(status_t) :: write_status
-    character(len=:), allocatable :: message
+    character(len=:), allocatable :: message, water_note
     logical :: complete, fail_on_limit
     integer :: k
 
@@ -73,6 +74,8 @@ contains
     call file%write_provenance('ride', trim(run%title), input%name, input%text(), write_status)
     description%log => log_info
     result = run_ride(description)
+    water_note = curve_entry_note(result%water%series, description%water%f3)
+    if (len(water_note) > 0) call log_warning(input%name//': water: '//water_note)
     associate (slide => description%water%slide, ride => result%ride, report => result%report)
       call write_water_results(file, description%water, result%water, write_status)
       call write_slide_grid(file, slide, write_status)

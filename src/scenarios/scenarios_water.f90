@@ -15,6 +15,7 @@ module scenarios_water
   use water_flow, only: water_series_t, outcome_name, START_EDGES
   use water_run, only: water_description_t, water_result_t, new_streamline, compute_water
   use water_inlet, only: start_tolerance
+  use water_curve_entry, only: curve_entry_note
   use io_input, only: input_text_t, check_known_groups, group_present, invalid, format_real, mark_input_failure, &
     where_given
   use io_run_config, only: run_config_t
@@ -326,7 +327,7 @@ contains
     type(status_t), intent(inout) :: status
     type(summary_t) :: summary
     real(wp), allocatable :: table(:, :)
-    character(len=:), allocatable :: uu, vu
+    character(len=:), allocatable :: uu, vu, note
     character(len=100) :: line
     integer :: n, i
     type(water_series_t), pointer :: s
@@ -372,6 +373,11 @@ contains
       ' m: an edge beyond the slide''s end (circle estimate)')
     if (s%edge_failures > 0) call summary%add_line('  water edges               '//format_integer(s%edge_failures)// &
       ' samples where the edge solve failed (circle estimate); first '//s%edge_message)
+    note = curve_entry_note(s, description%f3)
+    if (len(note) > 0) then
+      call summary%add_line('  friction law stretched    '//note)
+      call log_warning('water: '//note)
+    end if
     if (size(s%stations) > 0) then
       allocate (table(10, size(s%stations)))
       do i = 1, size(s%stations)

@@ -50,6 +50,7 @@ module water_streamline
   use water_section, only: circle_segment, profile_water
   implicit none (type, external)
   private
+  public :: streamline_mass
   public :: streamline_t, water_point_t, water_point, velocity_from_angle
   public :: water_rates_t, water_point_rates
   public :: CORRECTION_FULL, CORRECTION_NO_RADIUS, CORRECTION_OFF
@@ -60,13 +61,14 @@ module water_streamline
   real(wp), parameter :: default_f1 = 0.0274748_wp   ! kg/m
   real(wp), parameter :: default_f2 = 0.138285_wp    ! kg
   real(wp), parameter :: default_f3 = 0.979822_wp    ! kg m
+  real(wp), parameter :: streamline_mass = 1         ! kg, m_w (the thesis's virtual point mass)
 
   !> The model: the channel, the water's parameters, where the slide ends and
   !> the report stations. Evaluated by water_point (pure); a run (water_flow)
   !> never changes it.
   type :: streamline_t
     class(channel_t), allocatable :: channel
-    real(wp) :: mass = 1                                        ! kg (m_w)
+    real(wp) :: mass = streamline_mass                          ! kg (m_w)
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]  ! m/s^2
     real(wp) :: f1 = default_f1, f2 = default_f2, f3 = default_f3
     integer :: correction = CORRECTION_FULL

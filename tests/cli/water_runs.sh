@@ -97,6 +97,29 @@ begin
 grep -qE "water edges +[0-9]+ samples from arc length +66\.9[0-9]* m: an edge beyond the slide's end" "$work/default.out" \
   || fail "default: summary lacks the plain line about the edge beyond the end"
 grep -q 'HYBRJ' "$work/default.out" && fail "default: summary shows a solver message"
+grep -q 'friction law stretched' "$work/default.out" && fail "default: the demo slide's curves called a stretch of (4.7)"
+grep -q 'curve-entry term' "$work/default.err" && fail "default: a curve-entry warning on the demo slide"
+
+# the crest (inputs/ride/crest.nml): its 1 m vertical bend takes about 64 % of
+# the water's speed through (4.7)'s curve-entry term alone (exp(-f3 dchi/m_w),
+# dchi = 1.05 1/m): the water report and the ride both say so by place
+begin
+cat >"$work/crest_water.nml" <<EOF
+&run scenario = 'water' /
+&solver method = 'adams', rtol = 1e-10, atol = 1e-9, output_step = 0.005 /
+&surface kind = 'slide', geometry_file = '$repo/inputs/parts/crest_slide.nml' /
+&water flow_rate = 0.004, correction = 'off' /
+EOF
+(cd "$work" && "$slidesim" -q -o crest.h5 crest_water.nml >crest.out 2>crest.err); got=$?
+[ $got = 0 ] || fail "crest water: exit status $got ($(cat "$work/crest.err"))"
+grep -qE "friction law stretched .*rises by 1\.0[0-9]+ 1/m from arc length 5\.[0-9]+ to 5\.[0-9]+ m.* takes 6[0-9] % of" \
+  "$work/crest.out" || fail "crest water: no 'friction law stretched' line with the bend's place and loss"
+grep -q 'curve-entry term' "$work/crest.err" || fail "crest water: no warning on stderr"
+begin
+(cd "$work" && "$slidesim" -q -o crest_ride.h5 "$repo/inputs/ride/crest.nml" >crest_ride.out 2>crest_ride.err); got=$?
+[ $got = 0 ] || fail "crest ride: exit status $got ($(cat "$work/crest_ride.err"))"
+grep -qE "crest\.nml: water: .*rises by 1\.0[0-9]+ 1/m from arc length 5\.[0-9]+" "$work/crest_ride.err" \
+  || fail "crest ride: no curve-entry warning naming the bend"
 
 echo "$((checks - failures)) passed, $failures failed"
 [ $failures = 0 ]
