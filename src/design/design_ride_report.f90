@@ -15,7 +15,7 @@ module design_ride_report
   use base_constants, only: pi
   use rider_model, only: N_CONTACTS
   use rider_ride, only: ride_series_t
-  use rider_heels_flight, only: ride_flights_t
+  use rider_flight, only: ride_flights_t
   use rider_extremes, only: EXTREME_TOP_SPEED, EXTREME_FELT_MAX, EXTREME_FELT_MIN, EXTREME_CLIMB, &
     EXTREME_NORMAL_MIN, EXTREME_LEVER
   use design_ride_evaluation, only: felt_acceleration, felt_acceleration_units, tipping_lever_arm, ride_limit_t, limit_verdict_t, &

@@ -101,12 +101,13 @@ module io_declarations_ride
     declaration_t(groups='rider', name='min_speed', unit='m/s', default='0.05', low=0.0_wp, high=10.0_wp, &
       open_low=.true., meaning='the ride stops as stalled when the pelvis''s rate along the slide falls below'), &
     declaration_t(groups='rider', name='may_fly', kind=VALUE_LOGICAL, default='.false.', &
-      meaning='where the heels'' normal force falls to zero they leave the slide and the ride goes on until '// &
-      'they land (docs/rider.md, "Flight"); .false.: a lift-off ends the ride'), &
+      meaning='where a contact''s normal force falls to zero it leaves the slide and the ride goes on '// &
+      'through the flight, the whole rider''s too, until it lands (docs/rider.md, "Flight"); .false.: a '// &
+      'lift-off ends the ride'), &
     declaration_t(groups='rider', name='landing_restitution', unit='1', default='0', low=0.0_wp, high=1.0_wp, &
-      meaning='restitution e of the heels'' landing (0: plastic, on the water film; with may_fly only)'), &
+      meaning='restitution e of a landing (0: plastic, on the water film; with may_fly only)'), &
     declaration_t(groups='rider', name='landing_mu', unit='1', default='0.0724419', low=0.0_wp, high=10.0_wp, &
-      meaning='Coulomb mu during the heels'' landing (thesis table 4.8''s mu_D; with may_fly only)'), &
+      meaning='Coulomb mu during a landing (thesis table 4.8''s mu_D; with may_fly only)'), &
     declaration_t(groups='rider', name='limit_quantity', kind=VALUE_WORDS, shape='per limit, at most 20', &
       default='none', meaning='what limit k bounds (docs/rider.md lists the quantities), without gaps'), &
     declaration_t(groups='rider', name='limit_min', shape='per limit, at most 20', unit='the limit''s unit', &

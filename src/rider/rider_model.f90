@@ -20,7 +20,7 @@ module rider_model
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
-  use kinetostatics_joints, only: new_rigid_offset, new_revolute
+  use kinetostatics_joints, only: new_rigid_offset, new_revolute, new_prismatic
   use kinetostatics_surface_joint, only: new_surface_joint
   use kinetostatics_measurements, only: new_point_coordinates
   use kinetostatics_mass, only: new_mass_element
@@ -33,16 +33,19 @@ module rider_model
   use rider_drag, only: water_properties_t
   use rider_start, only: contact_reach_t, reach_contact, start_parameter
   use rider_water_drag, only: new_water_drag, in_water_roots
+  use rider_hip_hold, only: new_hip_hold
   implicit none (type, external)
   private
   public :: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names
   public :: rider_friction, rider_friction_kind, rider_coulomb_mu, set_rider_mu, rider_default_mu
-  public :: CONTACT_PELVIS, CONTACT_HEELS, CONTACT_BACK, N_CONTACTS
+  public :: CONTACT_PELVIS, CONTACT_HEELS, CONTACT_BACK, N_CONTACTS, flexion_range, tilt_range
 
   integer, parameter :: CONTACT_PELVIS = 1, CONTACT_HEELS = 2, CONTACT_BACK = 3, N_CONTACTS = 3
   character(len=*), parameter :: contact_names(N_CONTACTS) = [character(len=6) :: 'pelvis', 'heels', 'back']
 
-  !> Joint angles the start search may use (rad): legs' flexion, trunk's tilt.
+  !> Joint angles the start search may use (rad): legs' flexion, trunk's
+  !> tilt; a flight that swings a limb out of them ends the ride (the free
+  !> hip has no stiffness: rider_ride).
   real(wp), parameter :: flexion_range(2) = [-30, 90]*(pi/180)
   real(wp), parameter :: tilt_range(2) = [-30, 90]*(pi/180)
 
@@ -80,9 +83,16 @@ module rider_model
     integer :: friction(N_CONTACTS) = 0             ! law indices of the friction (0: none)
     integer :: drag(N_CONTACTS) = 0                 ! law indices of the water drag (0: none)
     integer :: heel_point = 0                       ! frame of the heel point (on the legs)
-    !> the heels' flight variant (build_rider's heels_open): phi_U a
-    !> coordinate, the heel point held on its contact's normal only (x, y)
-    logical :: heels_open = .false.
+    !> the flight builds (build_rider's `open`, may_fly): the contacts that
+    !> are open (pelvis, heels, back): an open limb's angle is a coordinate,
+    !> its point held on its contact's normal only (x, y); the open pelvis
+    !> is free (its lift and tilts coordinates)
+    logical :: open(N_CONTACTS) = .false.
+    !> the pelvis on the lift of the flight builds (free_pelvis): its lift h
+    !> along the normal at its foot point (scalar index; 0 without)
+    integer :: lift = 0
+    integer :: point(N_CONTACTS) = 0                ! frames of the contact points (pelvis, heel, back)
+    integer :: hold(2) = 0                          ! law indices of the hips' holds in flight (legs, trunk; 0: none)
     type(rider_body_t) :: body
   end type rider_layout_t
 
@@ -101,17 +111,27 @@ contains
   !> and p%drag, the water drag at each contact (on where the contact starts
   !> between the water's edges). Finalized, ready to run.
   !>
-  !> heels_open (default false) builds the variant of the heels' flight
-  !> (docs/rider.md "Flight"): the legs' flexion phi_U is a fourth coordinate
-  !> (q = [u_B, v_B, phi_B, phi_U]), the heels' loop holds the heel point on
-  !> the normal through its contact's foot point only (the x and y
-  !> conditions, dependents u_U, v_U), so that its z measurement is the heel's
-  !> signed gap to the slide (positive on the rider's side), and the heels'
-  !> contact is two-sided: nothing presses there, its normal force is the
-  !> foot frame's load, zero (the foot frame carries no mass), and so is its
-  !> friction. Scalars, frames, elements, contacts and laws are the same, at
-  !> the same indices, as in the plain model: a state maps one to one.
-  subroutine build_rider(p, surface, m, layout, q0, status, water, heels_open)
+  !> free_pelvis (default false; the flight builds, may_fly) adds the hips'
+  !> holds of the posture in flight (rider_hip_hold, off) and puts the pelvis
+  !> on a chain that can leave the slide: its foot point's surface joint
+  !> (u_B, v_B), a prismatic along the normal there (the lift h), then the
+  !> heading about the normal. With h at 0 (a constant while the pelvis is
+  !> on) the pelvis frame is the plain model's, exactly.
+  !>
+  !> open (default none; docs/rider.md "Flight") opens contacts: an open
+  !> heels' (back's) loop holds its point on the normal through the
+  !> contact's foot point only (the x and y conditions, dependents u, v), so
+  !> that its z measurement is the point's signed gap to the slide (positive
+  !> on the rider's side), and the limb's angle phi_U (phi_O) is a
+  !> coordinate; an open pelvis (free_pelvis needed) has its lift h as a
+  !> coordinate and keeps its attitude to the slide below it (the flat
+  !> seat's: docs/rider.md "Flight"). An open contact is two-sided: nothing presses there, its normal
+  !> force is its foot frame's load, zero, and so is its friction. The
+  !> coordinates are [u_B, v_B, phi_B], then phi_U, phi_O, h of the open
+  !> ones. Scalars, frames, elements, contacts and laws are the
+  !> same, at the same indices, in every build with one free_pelvis: a
+  !> state maps one to one (rider_flight).
+  subroutine build_rider(p, surface, m, layout, q0, status, water, open, free_pelvis)
     type(rider_params_t), intent(in) :: p
     class(surface_t), intent(in) :: surface
     type(mechanism_t), intent(out) :: m
@@ -119,19 +139,27 @@ contains
     real(wp), intent(out) :: q0(3)
     type(status_t), intent(inout) :: status
     type(water_field_t), intent(in), optional :: water
-    logical, intent(in), optional :: heels_open
+    logical, intent(in), optional :: open(N_CONTACTS), free_pelvis
     real(wp) :: g(2), u_start
     type(surface_point_t) :: pt
     type(darboux_frame_t) :: fr
     type(contact_reach_t) :: heels, back
     real(wp) :: axes(3, 3), hip(3)
-    integer :: d_b, pelvis, hip_frame, legs, d_u, trunk, d_o, k
+    integer :: d_b, pelvis, hip_frame, legs, d_u, trunk, d_o, k, lifted
+    logical :: chain
+    integer, allocatable :: coordinates(:)
     type(spec_t) :: friction
     class(force_law_t), allocatable :: law
     real(wp) :: segment_weight(N_CONTACTS)   ! N
 
     q0 = [p%u0, p%v0, p%heading0]
-    if (present(heels_open)) layout%heels_open = heels_open
+    if (present(open)) layout%open = open
+    chain = .false.
+    if (present(free_pelvis)) chain = free_pelvis
+    if (layout%open(CONTACT_PELVIS) .and. .not. chain) then
+      call set_status(status, STATUS_INVALID_INPUT, 'an open pelvis needs the free chain (free_pelvis)')
+      return
+    end if
     call build_rider_body(p%body, layout%body, status)
     if (status%ok()) call start_parameter(surface, p%u0, u_start, status)
     if (.not. status%ok()) return
@@ -173,9 +201,19 @@ contains
     call m%add_element(new_surface_joint('pelvis_joint', 1, d_b, layout%u(CONTACT_PELVIS), &
                                          layout%v(CONTACT_PELVIS), surface, sigma, alpha_u, alpha_v))
     layout%joint(CONTACT_PELVIS) = m%n_elements
-    pelvis = m%add_frame('pelvis')
-    layout%heading = m%add_scalar('heading', p%heading0)
-    call m%add_element(new_revolute('heading', d_b, pelvis, layout%heading, ez))
+    if (chain) then
+      ! foot point, lift along the normal, heading
+      lifted = m%add_frame('pelvis_lifted')
+      pelvis = m%add_frame('pelvis')
+      layout%heading = m%add_scalar('heading', p%heading0)
+      layout%lift = m%add_scalar('pelvis_lift', 0.0_wp)
+      call m%add_element(new_prismatic('pelvis_lift', d_b, lifted, layout%lift, ez))
+      call m%add_element(new_revolute('heading', lifted, pelvis, layout%heading, ez))
+    else
+      pelvis = m%add_frame('pelvis')
+      layout%heading = m%add_scalar('heading', p%heading0)
+      call m%add_element(new_revolute('heading', d_b, pelvis, layout%heading, ez))
+    end if
     call m%add_element(new_mass_element('pelvis_mass', pelvis, layout%body%pelvis%mass, layout%body%pelvis%inertia, &
                                         layout%body%pelvis%com, p%gravity, status))
     hip_frame = m%add_frame('hip')
@@ -190,18 +228,21 @@ contains
 
     layout%contact_frame = [d_b, d_u, d_o]
     layout%body_frame = [pelvis, legs, trunk]
-    if (layout%heels_open) then
-      call m%set_coordinates([layout%u(CONTACT_PELVIS), layout%v(CONTACT_PELVIS), layout%heading, layout%flexion])
-    else
-      call m%set_coordinates([layout%u(CONTACT_PELVIS), layout%v(CONTACT_PELVIS), layout%heading])
-    end if
+    layout%point(CONTACT_PELVIS) = pelvis
+    coordinates = [layout%u(CONTACT_PELVIS), layout%v(CONTACT_PELVIS), layout%heading]
+    if (layout%open(CONTACT_HEELS)) coordinates = [coordinates, layout%flexion]
+    if (layout%open(CONTACT_BACK)) coordinates = [coordinates, layout%tilt]
+    ! the open pelvis keeps its attitude to the slide below it (the flat
+    ! seat's moments, whose normal force alone falls to zero at the lift-off)
+    if (layout%open(CONTACT_PELVIS)) coordinates = [coordinates, layout%lift]
+    call m%set_coordinates(coordinates)
 
     ! contacts (ground - body at the contact's Darboux frame), friction, drag
     friction = rider_friction(p)
     segment_weight = [layout%body%pelvis%mass, layout%body%legs%mass, layout%body%trunk%mass]*norm2(p%gravity)
     do k = 1, N_CONTACTS
       layout%contact(k) = m%add_contact(trim(contact_names(k)), 1, layout%body_frame(k), layout%contact_frame(k), &
-                                        one_sided=p%one_sided .and. .not. (layout%heels_open .and. k == CONTACT_HEELS))
+                                        one_sided=p%one_sided .and. .not. layout%open(k))
       if (friction%kind /= 'none') then   ! a law of the core's registry (kinetostatics_force_law_factory)
         call force_law_from_spec(friction, law_place_t(trim(contact_names(k))//'_friction', layout%contact(k), &
                                                        segment_weight(k)), law, status)
@@ -217,6 +258,13 @@ contains
                                       layout%v(k), p%drag_radius(k), p%water, water, all(g > 0)))
         layout%drag(k) = m%n_laws
       end do
+    end if
+    if (chain) then
+      ! the posture's hold in flight (rider_hip_hold), off until a take-off
+      call m%add_law(new_hip_hold('legs_hold', layout%flexion, hip_frame, legs, -ey, layout%body%legs))
+      layout%hold(1) = m%n_laws
+      call m%add_law(new_hip_hold('trunk_hold', layout%tilt, hip_frame, trunk, ey, layout%body%trunk))
+      layout%hold(2) = m%n_laws
     end if
     call m%finalize(status)
 
@@ -243,6 +291,7 @@ contains
       call m%add_element(new_mass_element(limb//'_mass', frame, part%mass, part%inertia, part%com, p%gravity, status))
       point_frame = m%add_frame(point//'_point')
       if (k == CONTACT_HEELS) layout%heel_point = point_frame
+      layout%point(k) = point_frame
       call m%add_element(new_rigid_offset(limb//'_to_'//point, frame, point_frame, offset))
       contact_frame = m%add_frame(point//'_contact')
       layout%u(k) = m%add_scalar('u_'//contact, reach%u)
@@ -251,7 +300,7 @@ contains
                                            sigma, alpha_u, alpha_v))
       layout%joint(k) = m%n_elements
       call close_point(contact, contact_frame, point_frame, [angle, layout%u(k), layout%v(k)], closure, &
-                       layout%heels_open .and. k == CONTACT_HEELS)
+                       layout%open(k))
     end subroutine add_limb
 
     !> Point `point` held at the origin of the Darboux frame `contact`:

@@ -1,6 +1,6 @@
 !> The rider's report quantities at any state between a ride's records
 !> (rider_ride's extremes, numerics_dense_extremes): the probe, a copy of the
-!> rider's mechanism (and, with may_fly, of its heels' flight build) that
+!> rider's mechanism (and, with may_fly, of its flight builds) that
 !> evaluates the rider at the integrator's interpolated states.
 module rider_probe
   use base_kinds, only: wp
@@ -11,6 +11,7 @@ module rider_probe
   use numerics_dense_extremes, only: dense_quantities_t
   use rider_extremes, only: extreme_quantities
   use rider_model, only: rider_layout_t, N_CONTACTS, CONTACT_PELVIS
+  use rider_flight, only: set_holds
   implicit none (type, external)
   private
   public :: ride_probe_t, pelvis_state
@@ -23,12 +24,14 @@ module rider_probe
   type, extends(dense_quantities_t) :: ride_probe_t
     type(mechanism_t) :: mechanism
     type(mechanism_workspace_t) :: work
-    !> with may_fly: the heels' flight build, its work arrays, and whether
-    !> the probe's stretch is in flight (the context's last number)
+    !> with may_fly: the flight builds by their open contacts (the
+    !> context's last number), their work arrays, and each build's
+    !> coordinates in the full layout (rider_flight); the context's two
+    !> numbers before it are the posture held in flight
     logical :: may_fly = .false.
-    type(mechanism_t) :: open
-    type(mechanism_workspace_t) :: open_work
-    logical :: flying = .false.
+    type(mechanism_t), allocatable :: builds(:)
+    type(mechanism_workspace_t), allocatable :: works(:)
+    integer, allocatable :: picks(:, :)
     type(rider_layout_t) :: layout
     class(slide_surface_t), allocatable :: slide
     real(wp) :: gravity(3) = 0            ! m/s^2
@@ -47,7 +50,13 @@ contains
     real(wp), intent(out) :: speed, acceleration(3), axes(3, 3), force(3), moment(3)
     real(wp) :: s(3)
     associate (d => m%frames(lay%contact_frame(CONTACT_PELVIS)), p => m%frames(lay%body_frame(CONTACT_PELVIS)))
-      speed = norm2(d%v)
+      ! the pelvis's speed: its contact point's, which in flight (the free
+      ! chain, lay%lift > 0) is the pelvis frame's origin, not its foot point
+      if (lay%lift > 0) then
+        speed = norm2(p%v)
+      else
+        speed = norm2(d%v)
+      end if
       s = matmul(p%rot, lay%body%pelvis%com)
       acceleration = p%a + cross(p%alpha, s) + cross(p%omega, cross(p%omega, s))
       axes = p%rot
@@ -67,14 +76,14 @@ contains
     type(status_t), intent(inout) :: status
     real(wp) :: residual, speed, acceleration(3), axes(3, 3), force(3), moment(3)
     real(wp) :: angle(N_CONTACTS), distance(N_CONTACTS), normal(N_CONTACTS)
-    integer :: f, k
+    integer :: f, k, mask, n_full
     if (self%may_fly) then
-      ! the flight layout: the stretch's build at its own state
-      if (context(size(context)) > 0) then
-        call evaluate_build(self%open, self%open_work, y)
-      else
-        call evaluate_build(self%mechanism, self%work, [y(1:3), y(5:7), y(9:)])
-      end if
+      ! the full layout: the stretch's build at its own state
+      mask = nint(context(size(context)))
+      n_full = size(self%picks, 1)
+      associate (m => self%builds(mask), pick => self%picks(:, mask))
+        call evaluate_build(m, self%works(mask), [y(pick(1:m%f)), y(n_full + pick(1:m%f)), y(2*n_full + 1:)])
+      end associate
       return
     end if
     call evaluate_build(self%mechanism, self%work, y)
@@ -95,6 +104,9 @@ contains
         do k = 1, m%r
           m%scalars(m%beta(k))%q = context(1 + k)
         end do
+        ! the posture held in flight
+        if (self%may_fly) call set_holds(m, lay, nint(context(size(context))) /= 0, &
+                                         context(size(context) - 2:size(context) - 1))
         m%warm = .false.
         m%converged = .false.
         self%applied = context

@@ -9,9 +9,10 @@
 !>                      first): the normal end, the ride is complete;
 !>   lift-off           a contact's normal force falls to zero: the ride
 !>                      stops, saying which contact and where; with
-!>                      may_fly the heels' lift-off starts the heels'
-!>                      flight instead (rider_heels_flight): the ride goes
-!>                      on with the heels open until they land, and on;
+!>                      may_fly it opens that contact instead
+!>                      (rider_flight): its body flies, the ride goes on
+!>                      until it lands, and on; with all three open the
+!>                      whole rider flies;
 !>   stall / turn back  the pelvis's rate along the slide u' falls below
 !>                      min_speed/|c_u| (one root function): the ride stops
 !>                      with a message;
@@ -26,6 +27,7 @@
 !> the rider at the interpolated states.
 module rider_ride
   use base_kinds, only: wp
+  use base_constants, only: pi
   use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use base_log, only: log_sink_i
@@ -45,10 +47,10 @@ module rider_ride
   use rider_series, only: contact_series_t, ride_series_t, size_series, move_series, values_per_record
   use water_field, only: water_field_t
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names, &
-    CONTACT_PELVIS, CONTACT_HEELS, N_CONTACTS, rider_coulomb_mu, rider_default_mu
+    CONTACT_PELVIS, CONTACT_HEELS, N_CONTACTS, rider_coulomb_mu, rider_default_mu, flexion_range, tilt_range
   use rider_water_drag, only: water_drag_t
-  use rider_heels_flight, only: ride_flights_t, heels_landing_t, heels_gap, take_off_state, landing_state, &
-    heels_impact, add_landing
+  use rider_flight, only: ride_flights_t, rider_landing_t, contact_gap, full_state, build_state, contact_impact, &
+    add_landing, set_holds, full_scalars, centre_of_mass, N_FULL
   implicit none (type, external)
   private
   public :: ride_options_t, ride_series_t, contact_series_t, ride_result_t, rider_ode_t, simulate_ride, &
@@ -56,12 +58,12 @@ module rider_ride
 
   !> How a ride ended (ride_result_t%ending; its outcome says it in words).
   integer, parameter, public :: RIDE_FAILED = 0, RIDE_END_OF_SLIDE = 1, RIDE_LAST_STATION = 2, RIDE_LIFT_OFF = 3, &
-    RIDE_EJECTED = 4, RIDE_STALLED = 5, RIDE_BACK_AT_START = 6, RIDE_TIME_OUT = 7
+    RIDE_EJECTED = 4, RIDE_STALLED = 5, RIDE_BACK_AT_START = 6, RIDE_TIME_OUT = 7, RIDE_HIP_RANGE = 8
 
   !> What a stop of the driver asks simulate_ride to do: nothing (the ride
-  !> ends), the heels' take-off, their landing.
+  !> ends), a contact's take-off, its landing.
   integer, parameter :: SWITCH_NONE = 0, SWITCH_TAKE_OFF = 1, SWITCH_LANDING = 2
-  !> m: how far the heels must open after their take-off before the landing
+  !> m: how far a contact must open after its take-off before the landing
   !> is watched. At the lift-off the gap, its rate and its second derivative
   !> are zero and it grows as s^3; its values carry the integration's error
   !> of the positions (rtol 1e-10 of the slide's parameter u ~ 10..100 plus
@@ -91,11 +93,11 @@ module rider_ride
     !> identification compares with measurements at stations)
     real(wp), allocatable :: stations(:)
     logical :: stop_at_last_station = .false.   ! end the ride there (nothing is measured after it)
-    !> the heels' lift-off starts their flight (rider_heels_flight; docs/rider.md
+    !> a contact's lift-off starts its flight (rider_flight; docs/rider.md
     !> "Flight") instead of ending the ride
     logical :: may_fly = .false.
-    !> the heels' landing: restitution e = 0 (plastic: the heels land on a
-    !> water film) and Coulomb mu, the rider's mu_D
+    !> a landing: restitution e = 0 (plastic: the rider lands on a water
+    !> film) and Coulomb mu, the rider's mu_D
     type(impact_law_t) :: landing = impact_law_t(restitution=0, mu=rider_default_mu)
   end type ride_options_t
 
@@ -113,7 +115,7 @@ module rider_ride
     !> the contact (CONTACT_PELVIS ...) whose point went over the top edge of
     !> an open section's wall, ending the ride (0: none; docs/rider.md)
     integer :: ejected_contact = 0
-    type(ride_flights_t) :: flights   ! the heels' flights and landings (may_fly)
+    type(ride_flights_t) :: flights   ! the flights and landings (may_fly)
   end type ride_result_t
 
 
@@ -134,19 +136,25 @@ module rider_ride
     integer :: lifted_contact = 0         ! the contact whose normal force fell to zero (0: none)
     type(dense_extremes_t) :: extremes    ! the report's extremes so far
     type(ride_probe_t) :: probe           ! evaluates them between the records
-    ! the heels' flight (may_fly): the two builds (rider_heels_flight), the
-    ! phase, the switch the last stop asks for and its state
+    ! the flights (may_fly): the builds (rider_flight) by their open
+    ! contacts (bit k-1 for contact k), the open ones, the switch the last
+    ! stop asks for and its state
     logical :: may_fly = .false.
     type(impact_law_t) :: landing
     real(wp) :: gravity = 0               ! m/s^2, |g|
-    type(mechanism_t) :: plain, open
-    logical :: heels_flying = .false.
-    logical :: opened = .false.           ! the gap has opened beyond opening_gap
+    type(mechanism_t), allocatable :: builds(:)   ! (0:2**N_CONTACTS - 1)
+    integer, allocatable :: picks(:, :)   ! each build's coordinates in the full layout (rider_flight)
+    integer :: open_mask = 0
+    logical :: opened(N_CONTACTS) = .false.   ! the gap has opened beyond opening_gap
+    real(wp) :: take_off_time(N_CONTACTS) = 0 ! s, of each contact's last switch
+    real(wp) :: hold(2) = 0               ! rad, the posture the hips hold in flight (flexion, tilt)
     integer :: switch = SWITCH_NONE
+    integer :: switch_contact = 0
     real(wp) :: switch_t = 0
     real(wp), allocatable :: switch_y(:)
     integer :: quick_landings = 0         ! landings right after their take-off, in a row
-    integer :: flight_size = 0            ! size of the state in the flight layout
+    integer :: flight_size = 0            ! size of the state in the full layout
+    integer :: max_r = 0                  ! dependents of the build with every contact on
     real(wp), allocatable :: padded(:, :) ! a dense-output piece in that layout
     type(ride_flights_t) :: flights
   contains
@@ -170,9 +178,10 @@ module rider_ride
       real(wp), intent(out) :: g(:)
     end subroutine rider_roots
 
-    module subroutine gap_event(self, t, y, action, status)
+    module subroutine gap_event(self, t, y, fired, action, status)
       class(rider_ode_t), intent(inout) :: self
       real(wp), intent(in) :: t, y(:)
+      integer, intent(in) :: fired(:)
       integer, intent(inout) :: action
       type(status_t), intent(inout) :: status
     end subroutine gap_event
@@ -183,16 +192,15 @@ module rider_ride
       type(status_t), intent(inout) :: status
     end subroutine switch_build
 
+    module subroutine end_flights(self, t)
+      class(rider_ode_t), intent(inout) :: self
+      real(wp), intent(in) :: t
+    end subroutine end_flights
+
     module subroutine track_highest(self, t)
       class(rider_ode_t), intent(inout) :: self
       real(wp), intent(in) :: t
     end subroutine track_highest
-
-    module subroutine flight_layout_state(self, y, state)
-      class(rider_ode_t), intent(in) :: self
-      real(wp), intent(in) :: y(:)
-      real(wp), intent(out) :: state(:)
-    end subroutine flight_layout_state
   end interface
 
 
@@ -228,12 +236,14 @@ contains
     n_state = size(y0)
     n_context = 1 + sys%mechanism%r
     if (sys%may_fly) then
-      ! the probe and the records see every state in the flight layout, the
-      ! context ends with the phase (1: the heels fly)
+      ! the probe and the records see every state in the full layout, the
+      ! context ends with the posture held in flight and the open contacts
       sys%probe%may_fly = .true.
-      sys%probe%open = sys%open
+      sys%probe%builds = sys%builds
+      sys%probe%picks = sys%picks
+      allocate (sys%probe%works(0:ubound(sys%builds, 1)))
       n_state = sys%flight_size
-      n_context = n_context + 1
+      n_context = 1 + sys%max_r + 3
       allocate (sys%padded(n_state, 0:12))
     end if
     sys%probe%applied = spread(huge(1.0_wp), 1, n_context)
@@ -267,6 +277,8 @@ contains
       driver%output_origin = 0
     end do
     if (run_status%ok()) call sys%extremes%finish(sys%probe, run_status)
+    ! a flight under way at the end counts up to there
+    if (sys%may_fly) call end_flights(sys, result%driver%t)
     result%flights = sys%flights
     call keep_extremes(sys)
     result%drag_switches = sys%drag_switches
@@ -315,7 +327,7 @@ contains
     integer :: i
     call as_slide(surface, sys%slide, status)
     if (.not. status%ok()) return
-    call build_rider(params, surface, sys%mechanism, sys%layout, q0, status, water)
+    call build_rider(params, surface, sys%mechanism, sys%layout, q0, status, water, free_pelvis=options%may_fly)
     if (status%ok()) call rider_start_velocity(params, surface, qd0, status)
     if (status%ok()) call sys%slide%centerline_speed(q0(1), speed, status)
     if (.not. status%ok()) return
@@ -326,19 +338,35 @@ contains
     end if
     sys%slide_length = sys%slide%length()
     if (options%may_fly) then
-      ! the heels' flight build, from the same start (rider_heels_flight)
+      ! a build per set of open contacts, from the same start (rider_flight)
       sys%may_fly = .true.
       sys%flights%watched = .true.
       sys%landing = options%landing
       sys%gravity = norm2(params%gravity)
-      block
-        type(rider_layout_t) :: open_layout
-        real(wp) :: q_open(3)
-        call build_rider(params, surface, sys%open, open_layout, q_open, status, water, heels_open=.true.)
-      end block
-      if (.not. status%ok()) return
-      sys%plain = sys%mechanism
-      sys%flight_size = 2*sys%open%f + sys%open%n_laws
+      allocate (sys%builds(0:2**N_CONTACTS - 1), sys%picks(N_FULL, 0:2**N_CONTACTS - 1))
+      sys%picks = 0
+      sys%builds(0) = sys%mechanism
+      do i = 1, ubound(sys%builds, 1)
+        block
+          type(rider_layout_t) :: open_layout
+          real(wp) :: q_open(3)
+          integer :: k
+          call build_rider(params, surface, sys%builds(i), open_layout, q_open, status, water, &
+                           open=[(btest(i, k - 1), k = 1, N_CONTACTS)], free_pelvis=.true.)
+        end block
+        if (.not. status%ok()) return
+      end do
+      do i = 0, ubound(sys%builds, 1)
+        block
+          integer :: k, full(N_FULL)
+          full = full_scalars(sys%layout)
+          do k = 1, sys%builds(i)%f
+            sys%picks(k, i) = findloc(full, sys%builds(i)%q(k), dim=1)
+          end do
+        end block
+      end do
+      sys%max_r = sys%builds(0)%r
+      sys%flight_size = 2*N_FULL + sys%mechanism%n_laws
     end if
     sys%min_speed = options%min_speed
     sys%min_rate = options%min_speed/speed
@@ -452,8 +480,8 @@ contains
       r%time(n) = t
       r%kind(n) = kind
       if (self%may_fly) then
-        call flight_layout_state(self, y, r%state(:, n))
-        if (self%heels_flying) call track_highest(self, t)
+        call full_state(m, lay, y, r%state(:, n))
+        if (self%open_mask /= 0) call track_highest(self, t)
       else
         r%state(:, n) = y
       end if
@@ -473,7 +501,7 @@ contains
         if (lay%drag(k) > 0) r%drag_work(n) = r%drag_work(n) + y(2*f + lay%drag(k))
       end do
       r%closure_residual(n) = m%closure_residual()
-      r%airborne(n) = merge(1, 0, self%heels_flying)
+      r%airborne(n) = self%open_mask
       do k = 1, N_CONTACTS
         associate (c => r%contact(k), d => m%frames(lay%contact_frame(k)))
           c%u(n) = m%scalars(lay%u(k))%q
@@ -515,12 +543,14 @@ contains
           [(r%contact(k)%wall_angle(n), k = 1, N_CONTACTS)], [(r%contact(k)%wall_distance(n), k = 1, N_CONTACTS)], &
           [(r%contact(k)%normal_force(n), k = 1, N_CONTACTS)], self%probe%gravity, values, attached)
         if (self%may_fly) then
-          ! the context in the flight layout: the betas of either build, the phase
-          ! last; a stretch's start after a switch splits the brackets as an event does
+          ! the context in the full layout: the betas of the build, the
+          ! posture held, the open contacts last; a stretch's start
+          ! after a switch splits the brackets as an event does
           call self%extremes%add_record(t, kind == RECORD_EVENT .or. (kind == RECORD_START .and. n > 1), &
             [real(sum([(merge(2**(k - 1), 0, r%contact(k)%in_water(n) == 1), k = 1, N_CONTACTS)]), wp), &
-             (m%scalars(m%beta(k))%q, k = 1, m%r), spread(0.0_wp, 1, self%plain%r - m%r), &
-             merge(1.0_wp, 0.0_wp, self%heels_flying)], values, attached)
+             (m%scalars(m%beta(k))%q, k = 1, m%r), spread(0.0_wp, 1, self%max_r - m%r), self%hold, &
+             real(self%open_mask, wp)], &
+            values, attached)
         else
           call self%extremes%add_record(t, kind == RECORD_EVENT, &
             [real(sum([(merge(2**(k - 1), 0, r%contact(k)%in_water(n) == 1), k = 1, N_CONTACTS)]), wp), &
@@ -536,17 +566,21 @@ contains
     class(rider_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t_n, h, taylor(:, 0:)
     type(status_t), intent(inout) :: status
-    integer :: k
+    integer :: k, f, i
     associate (unused => status)
     end associate
     if (.not. self%may_fly) then
       call self%extremes%add_piece(t_n, h, taylor)
-    else if (self%heels_flying) then
-      call self%extremes%add_piece(t_n, h, taylor)
     else
-      ! the plain build's piece in the flight layout (phi_U and its rate: 0, unused)
+      ! the build's piece in the full layout (the others' coordinates: 0, unused)
+      f = self%mechanism%f
       do k = 0, ubound(taylor, 2)
-        self%padded(:, k) = [taylor(1:3, k), 0.0_wp, taylor(4:6, k), 0.0_wp, taylor(7:, k)]
+        self%padded(:, k) = 0
+        do i = 1, f
+          self%padded(self%picks(i, self%open_mask), k) = taylor(i, k)
+          self%padded(N_FULL + self%picks(i, self%open_mask), k) = taylor(f + i, k)
+        end do
+        self%padded(2*N_FULL + 1:, k) = taylor(2*f + 1:, k)
       end do
       call self%extremes%add_piece(t_n, h, self%padded(:, 0:ubound(taylor, 2)))
     end if
@@ -589,9 +623,23 @@ contains
     end do
     where = ' at arc length '//format_short(self%slide%arc_length(y(1)))//' m (t = '//format_short(t)//' s)'
     self%switch = SWITCH_NONE
-    if (self%heels_flying) then
-      if (fired(self%n_roots + 1) /= 0) call gap_event(self, t, y, action, status)
+    if (self%may_fly .and. self%open_mask /= 0) then
+      if (any(fired(self%n_roots + 1:self%n_roots + N_CONTACTS) /= 0)) &
+        call gap_event(self, t, y, fired(self%n_roots + 1:self%n_roots + N_CONTACTS), action, status)
       if (.not. status%ok()) return
+      if (any(fired(self%n_roots + N_CONTACTS + 1:self%n_roots + N_CONTACTS + 2) /= 0)) then
+        ! a limb swung out of the hip's range in flight (the free hip has no
+        ! stiffness): the model's end, not the rider's
+        action = EVENT_STOP
+        self%switch = SWITCH_NONE
+        self%ending = RIDE_HIP_RANGE
+        self%outcome = 'hip range: in flight the '//trim(merge('legs ', 'trunk', &
+          fired(self%n_roots + N_CONTACTS + 1) /= 0))//' swung out of the hip''s range (flexion '// &
+          format_short(flexion_range(1)*180/pi)//' to '//format_short(flexion_range(2)*180/pi)//' deg, tilt '// &
+          format_short(tilt_range(1)*180/pi)//' to '//format_short(tilt_range(2)*180/pi)//' deg: the free hip '// &
+          'has no stiffness, the model ends here)'//where
+        return
+      end if
     end if
     if (fired(1) < 0) then
       action = EVENT_STOP
@@ -628,13 +676,11 @@ contains
         self%ending = RIDE_LIFT_OFF
         self%lifted_contact = findloc(self%layout%contact, self%stop_contact, dim=1)
         self%outcome = 'lift-off: the normal force of the '//contact_name(self%lifted_contact)//' fell to zero'//where
-        if (self%may_fly .and. self%lifted_contact == CONTACT_HEELS) then
+        if (self%may_fly .and. self%lifted_contact > 0) then
           self%switch = SWITCH_TAKE_OFF
+          self%switch_contact = self%lifted_contact
           self%switch_t = t
           self%switch_y = y
-        else if (self%heels_flying) then
-          self%outcome = self%outcome//' while the heels were in the air (the whole rider''s flight is not '// &
-                         'modelled: the ride ends here)'
         end if
       case (STOP_START_OF_SURFACE)
         self%ending = RIDE_BACK_AT_START

@@ -46,7 +46,7 @@ module rider_series
     real(wp), allocatable :: kinetic(:), potential(:), energy(:)    ! J
     real(wp), allocatable :: friction_work(:), drag_work(:)          ! J (negative: taken out)
     real(wp), allocatable :: closure_residual(:)        ! m
-    integer, allocatable :: airborne(:)                 ! 1: the heels fly (may_fly; else 0)
+    integer, allocatable :: airborne(:)                 ! the open contacts: bit k-1 for contact k (may_fly; else 0)
     type(contact_series_t) :: contact(N_CONTACTS)
     type(ride_extremes_t) :: extremes                   ! the report's extremes, located between the records
   end type ride_series_t

@@ -1,24 +1,26 @@
-!> The heels' flights of a ride (may_fly; rider_heels_flight) in the ride
-!> report (stdout and --summary-json) and in the result file's /evaluation
+!> The flights of a ride (may_fly; rider_flight) in the ride report
+!> (stdout and --summary-json) and in the result file's /evaluation
 !> (docs/outputs.md, "flight"): airtime (total, the longest and where it
-!> took off), the heels' highest point above the slide and where, and each
-!> landing (time, place, normal impact speed, impulse, drop height
-!> v_n^2/(2 g), the energy the impact took, whether the heels stayed on).
+!> took off; the whole rider's apart), the highest point of a contact above
+!> the slide and where, and each landing (time, contact, place, normal
+!> impact speed, impulse, drop height v_n^2/(2 g), the energy the impact
+!> took, whether the contact stayed closed).
 module scenarios_ride_flights
   use base_kinds, only: wp
   use base_text, only: format_short, format_integer
   use base_status, only: status_t
-  use rider_heels_flight, only: ride_flights_t, highest_drop
+  use rider_flight, only: ride_flights_t, highest_drop
+  use rider_model, only: contact_names
   use io_hdf5, only: result_file_t
   use io_summary, only: summary_t
   implicit none (type, external)
   private
   public :: add_flights, write_flights
 
-  character(len=*), parameter :: landing_columns(8) = [character(len=14) :: 'time', 'arc_length', &
-    'normal_speed', 'impulse', 'normal_impulse', 'drop_height', 'energy_lost', 'closed']
-  character(len=*), parameter :: landing_units(8) = [character(len=4) :: 's', 'm', 'm/s', 'N s', 'N s', 'm', &
-    'J', '1']
+  character(len=*), parameter :: landing_columns(9) = [character(len=14) :: 'time', 'arc_length', &
+    'normal_speed', 'impulse', 'normal_impulse', 'drop_height', 'energy_lost', 'closed', 'contact']
+  character(len=*), parameter :: landing_units(9) = [character(len=4) :: 's', 'm', 'm/s', 'N s', 'N s', 'm', &
+    'J', '1', '1']
 
 contains
 
@@ -28,19 +30,25 @@ contains
     type(ride_flights_t), intent(in) :: flights
     real(wp) :: drop, drop_at
     integer :: k
-    call summary%add_count('flights', 'heels'' flights', flights%flights, 'take-offs')
+    call summary%add_count('flights', 'flights', flights%flights, 'take-offs (any contact)')
     call summary%add('airtime', '  airtime in all', flights%airtime, 's')
     call summary%add('airtime_longest', '  longest flight', flights%longest, 's')
     call summary%add('airtime_longest_arc_length', '  took off at arc length', flights%longest_arc_length, 'm')
-    call summary%add('heels_highest', '  heels highest above the slide', flights%highest, 'm')
-    call summary%add('heels_highest_arc_length', '  at arc length', flights%highest_arc_length, 'm')
+    call summary%add_count('whole_flights', '  whole rider in the air', flights%whole_flights, 'times')
+    call summary%add('whole_airtime', '    airtime in all', flights%whole_airtime, 's')
+    call summary%add('whole_airtime_longest', '    longest', flights%whole_longest, 's')
+    call summary%add('whole_airtime_longest_arc_length', '    took off at arc length', &
+                     flights%whole_longest_arc_length, 'm')
+    call summary%add('highest', '  highest above the slide: '//highest_name(flights), flights%highest, 'm')
+    call summary%add('highest_arc_length', '    at arc length', flights%highest_arc_length, 'm')
     call highest_drop(flights, drop, drop_at)
     call summary%add_count('landings', '  landings', flights%landings, '')
     call summary%add('drop_height_max', '  largest drop height', drop, 'm')
     call summary%add('drop_height_max_arc_length', '  at arc length', drop_at, 'm')
     do k = 1, flights%landings
       associate (l => flights%landing(k))
-        call summary%add_line('  landing '//format_integer(k)//' at arc length '//format_short(l%arc_length)// &
+        call summary%add_line('  landing '//format_integer(k)//' ('//trim(contact_names(l%contact))// &
+          ') at arc length '//format_short(l%arc_length)// &
           ' m (t = '//format_short(l%time)//' s): normal speed '//format_short(l%normal_speed)//' m/s, impulse '// &
           format_short(l%impulse)//' N s, drop height '//format_short(l%drop_height)//' m'// &
           trim(merge(', stayed on  ', ', flew on    ', l%closed)))
@@ -57,26 +65,37 @@ contains
     type(status_t), intent(inout) :: status
     real(wp) :: drop, drop_at
     real(wp), allocatable :: table(:, :)
-    character(len=*), parameter :: meaning(8) = [character(len=80) :: 'time of the landing', &
-      'where: the heels'' foot point on the slide (centerline arc length)', &
-      'the heel''s approach speed along the slide''s normal', '|impulse| of the landing on the heels', &
+    character(len=*), parameter :: meaning(9) = [character(len=80) :: 'time of the landing', &
+      'where: the contact''s foot point on the slide (centerline arc length)', &
+      'the contact point''s approach speed along the slide''s normal', '|impulse| of the landing at the contact', &
       'its part along the normal', 'normal_speed^2/(2 |g|): the equivalent drop height', &
-      'kinetic energy the impact took', '1: the heels stayed on the slide, 0: they flew on']
+      'kinetic energy the impact took', '1: the contact stayed closed, 0: it flew on', &
+      'the contact that landed: 1 pelvis, 2 heels, 3 back']
     integer :: k
-    call file%write_count(g//'flights', flights%flights, '1', 'take-offs of the heels (from the slide, rebounds)', &
-                          status)
-    call file%write_scalar(g//'airtime', flights%airtime, 's', 'time the heels were in the air, in all', status)
+    call file%write_count(g//'flights', flights%flights, '1', 'flights: take-offs of a contact while all were '// &
+                          'closed', status)
+    call file%write_scalar(g//'airtime', flights%airtime, 's', 'time any contact was open (in the air), in all', &
+                           status)
     call file%write_scalar(g//'airtime_longest', flights%longest, 's', 'the longest flight', status)
     call file%write_scalar(g//'airtime_longest_arc_length', flights%longest_arc_length, 'm', &
                            'where it took off (pelvis arc length)', status)
-    call file%write_scalar(g//'heels_highest', flights%highest, 'm', &
-                           'largest gap of the heels above the slide (at the records)', status)
-    call file%write_scalar(g//'heels_highest_arc_length', flights%highest_arc_length, 'm', &
-                           'where (the heels'' foot point)', status)
+    call file%write_count(g//'whole_flights', flights%whole_flights, '1', 'times the whole rider was in the air '// &
+                          '(every contact open)', status)
+    call file%write_scalar(g//'whole_airtime', flights%whole_airtime, 's', 'time the whole rider was in the air', &
+                           status)
+    call file%write_scalar(g//'whole_airtime_longest', flights%whole_longest, 's', 'the longest such flight', status)
+    call file%write_scalar(g//'whole_airtime_longest_arc_length', flights%whole_longest_arc_length, 'm', &
+                           'where it took off (pelvis arc length)', status)
+    call file%write_scalar(g//'highest', flights%highest, 'm', &
+                           'largest gap of a contact point above the slide (at the records)', status)
+    call file%write_count(g//'highest_contact', flights%highest_contact, '1', &
+                          'which: 1 pelvis, 2 heels, 3 back (0: none)', status)
+    call file%write_scalar(g//'highest_arc_length', flights%highest_arc_length, 'm', &
+                           'where (the contact''s foot point)', status)
     call highest_drop(flights, drop, drop_at)
     call file%write_scalar(g//'drop_height_max', drop, 'm', 'largest drop height of the landings', status)
     call file%write_scalar(g//'drop_height_max_arc_length', drop_at, 'm', 'where', status)
-    call file%write_count(g//'landings', flights%landings, '1', 'landings of the heels', status)
+    call file%write_count(g//'landings', flights%landings, '1', 'landings of a contact', status)
     if (flights%landings == 0) return
     table = landing_table(flights)
     do k = 1, size(landing_columns)
@@ -88,6 +107,14 @@ contains
     call file%attach_scale(g//'landing/time', g//'landing/', status)
   end subroutine write_flights
 
+  !> Which contact rose highest ('none' if none).
+  pure function highest_name(flights) result(name)
+    type(ride_flights_t), intent(in) :: flights
+    character(len=:), allocatable :: name
+    name = 'none'
+    if (flights%highest_contact > 0) name = trim(contact_names(flights%highest_contact))
+  end function highest_name
+
   !> The landings as a table (column, landing).
   pure function landing_table(flights) result(table)
     type(ride_flights_t), intent(in) :: flights
@@ -97,7 +124,7 @@ contains
     do k = 1, flights%landings
       associate (l => flights%landing(k))
         table(:, k) = [l%time, l%arc_length, l%normal_speed, l%impulse, l%normal_impulse, l%drop_height, &
-                       l%energy_lost, merge(1.0_wp, 0.0_wp, l%closed)]
+                       l%energy_lost, merge(1.0_wp, 0.0_wp, l%closed), real(l%contact, wp)]
       end associate
     end do
   end function landing_table

@@ -109,7 +109,8 @@ contains
       end do
     end associate
     if (ride%flights%watched) call file%write_integers(g//'airborne', ride%series%airborne(:n), '1', &
-                                                       '1 while the heels fly (may_fly)', status)
+                                                       'the open contacts (may_fly): bit 0 pelvis, 1 heels, 2 back; '// &
+                                                       '0 all on, 7 the whole rider in the air', status)
     call file%set_attribute('/rider', 'outcome', ride%outcome, status)
     call file%set_attribute('/rider', 'reached_end', merge(1, 0, ride%complete), status)
     if (ride%ejected_contact > 0) &

@@ -30,10 +30,12 @@ program test_rider_heels_flight
   use kinetostatics_mechanism, only: mechanism_workspace_t
   use rider_model, only: rider_params_t, CONTACT_HEELS, CONTACT_PELVIS, CONTACT_BACK, N_CONTACTS
   use rider_ride, only: ride_options_t, ride_result_t, rider_ode_t, prepare_ride, simulate_ride, RIDE_LIFT_OFF
-  use rider_heels_flight, only: heels_gap
+  use rider_flight, only: contact_gap, build_state, N_FULL
   use kinetostatics_impact, only: impact_law_t
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
+
+  integer, parameter :: heels_open = 2   ! the build with the heels' contact open (rider_ride)
 
   type(geometry_description_t) :: d
   class(surface_t), allocatable :: crest
@@ -80,16 +82,29 @@ program test_rider_heels_flight
 
 contains
 
-  !> Up to the lift-off the two rides agree record for record.
+  !> Up to the lift-off the two rides agree record for record, to the
+  !> integration's error: with may_fly the state also carries the hips'
+  !> holds' work integrals (zero until a flight), which change the
+  !> integrator's error norm and so its steps, not the motion.
   subroutine check_same_start()
     integer :: n
     logical :: same
-    n = stay%series%n
+    real(wp) :: de, dn
+    n = stay%series%n - 1   ! the lift-off's own record is located by a root: its time differs
     same = fly%series%n > n
-    if (same) same = all(fly%series%time(1:n) == stay%series%time(1:n)) .and. &
-      all(fly%series%contact(CONTACT_HEELS)%normal_force(1:n) == stay%series%contact(CONTACT_HEELS)%normal_force(1:n)) &
-      .and. all(fly%series%energy(1:n) == stay%series%energy(1:n)) .and. all(fly%series%airborne(1:n) == 0)
-    call check(same, 'up to the lift-off the ride is the one without may_fly')
+    de = 0
+    dn = 0
+    if (same) then
+      same = all(fly%series%time(1:n) == stay%series%time(1:n)) .and. all(fly%series%airborne(1:n) == 0)
+      de = maxval(abs(fly%series%energy(1:n) - stay%series%energy(1:n)))
+      dn = maxval(abs(fly%series%contact(CONTACT_HEELS)%normal_force(1:n) - &
+                      stay%series%contact(CONTACT_HEELS)%normal_force(1:n)))
+    end if
+    print '(a,es10.3,a,es10.3,a)', 'same start: energy off by ', de, ' J, heels'' normal force by ', dn, ' N'
+    ! two integrations with different steps differ by their global errors:
+    ! ~1e-8 of E ~ 7e3 J and of N ~ 300 N (rtol 1e-10 per step over ~1000
+    ! steps); a change of the motion (a force added) would be > 1 J
+    call check(same .and. de <= 1e-3_wp .and. dn <= 1e-3_wp, 'up to the lift-off the ride is the one without may_fly')
   end subroutine check_same_start
 
   !> At every switch (two records at one time): positions continuous, and
@@ -112,7 +127,7 @@ contains
         ! the heels' contact frame: the heel itself while on, its foot point in flight (gap 0 at a switch)
         dr = max(dr, norm2(s%contact(CONTACT_HEELS)%position(:, n) - s%contact(CONTACT_HEELS)%position(:, n - 1)))
         dr = max(dr, abs(s%phi_legs(n) - s%phi_legs(n - 1)), abs(s%phi_trunk(n) - s%phi_trunk(n - 1)))
-        if (s%airborne(n) == 1) then
+        if (iand(s%airborne(n), not(s%airborne(n - 1))) /= 0) then
           take_offs = take_offs + 1
           dv = max(dv, norm2(s%contact(CONTACT_HEELS)%velocity(:, n) - s%contact(CONTACT_HEELS)%velocity(:, n - 1)))
           ! the closure's tolerance (1e-10 m) bounds what the new build's closure may differ
@@ -124,7 +139,7 @@ contains
         end if
       end do
     end associate
-    call check(take_offs == fly%flights%flights, 'a take-off record pair per flight')
+    call check(take_offs >= fly%flights%flights, 'a take-off record pair per flight')
     print '(a,i0,a,i0)', 'take-offs ', take_offs, ' closing landings ', landings
   end subroutine check_switches
 
@@ -133,18 +148,19 @@ contains
     type(rider_ode_t), target :: sys
     type(ride_options_t) :: o
     type(mechanism_workspace_t) :: work
-    real(wp), allocatable :: y0(:)
+    real(wp), allocatable :: y0(:), y(:)
     real(wp) :: gap, lowest, balance, balance0, lost, worst
     integer :: n, k, landing
     o = options
     call prepare_ride(p, crest, o, sys, y0, st)
     call check(st%ok(), 'the open build: '//st%text())
     if (.not. st%ok()) return
-    call sys%open%prepare_workspace(work)
     lowest = huge(1.0_wp)
-    associate (s => fly%series, m => sys%open, lay => sys%layout)
+    associate (s => fly%series, m => sys%builds(heels_open), lay => sys%layout)
+      call m%prepare_workspace(work)
+      allocate (y(2*m%f + m%n_laws))
       do n = 1, s%n
-        if (s%airborne(n) == 0) cycle
+        if (s%airborne(n) /= heels_open) cycle
         ! the closure from the recorded dependents
         do k = 1, N_CONTACTS
           m%scalars(lay%u(k))%q = s%contact(k)%u(n)
@@ -153,9 +169,10 @@ contains
         m%scalars(lay%tilt)%q = s%phi_trunk(n)
         m%warm = .false.
         m%converged = .false.
-        call m%set_positions(work, s%state(1:4, n), st)
+        call build_state(m, lay, s%state(:, n), y)
+        call m%set_positions(work, y(1:m%f), st)
         if (.not. st%ok()) exit
-        gap = heels_gap(m, lay)
+        gap = contact_gap(m, lay, CONTACT_HEELS)
         lowest = min(lowest, gap)
       end do
       call check(st%ok(), 'the flight states re-evaluated: '//st%text())
@@ -166,11 +183,12 @@ contains
       ! energy: E - W_friction - W_drag + the landings' losses so far
       landing = 0
       lost = 0
-      balance0 = s%energy(1) - s%friction_work(1) - s%drag_work(1)
+      ! the laws' work: friction, drag and the hips' hold in flight (rider_hip_hold)
+      balance0 = s%energy(1) - sum(s%state(2*N_FULL + 1:, 1))
       worst = 0
       do n = 1, s%n
         if (n > 1 .and. landing < fly%flights%landings) then
-          if (s%time(n) == s%time(n - 1) .and. s%airborne(n - 1) == 1 .and. &
+          if (s%time(n) == s%time(n - 1) .and. s%airborne(n - 1) /= 0 .and. &
               s%time(n) == fly%flights%landing(landing + 1)%time) then
             landing = landing + 1
             lost = lost + fly%flights%landing(landing)%energy_lost
@@ -179,14 +197,15 @@ contains
                              1e-8_wp, 1e-9_wp, 'landing: the impact takes the kinetic energy''s drop')
           end if
         end if
-        balance = s%energy(n) - s%friction_work(n) - s%drag_work(n) + lost
+        balance = s%energy(n) - sum(s%state(2*N_FULL + 1:, n)) + lost
         worst = max(worst, abs(balance - balance0))
       end do
       ! the balance drifts with the integration's error alone: 1.2e-5 J on the
       ! ride without may_fly up to its lift-off (E ~ 7e3 J, rtol 1e-10 per
-      ! step); a force lost in flight (the legs' weight, the pelvis's
-      ! friction) would be ~ N v t ~ 100 J over the 0.13 s
-      call check(worst <= 3e-5_wp, 'energy balance through the flights: off by '//trim(format_real(worst))//' J')
+      ! step), ~1e-4 J with the hips' stiff hold in flight (4 Hz); a force
+      ! lost in flight (the legs' weight, the pelvis's friction) would be
+      ! ~ N v t ~ 100 J over the 0.13 s
+      call check(worst <= 3e-4_wp, 'energy balance through the flights: off by '//trim(format_real(worst))//' J')
       call check(landing == fly%flights%landings, 'every landing found among the records')
     end associate
   end subroutine check_gap_and_energy

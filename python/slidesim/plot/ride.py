@@ -11,11 +11,14 @@ A ride that ended ejected (a contact went over the top of a wall: /rider
 attribute `ejected`) marks where: a vertical line at
 /evaluation/ejected_arc_length on the plots over arc length, a cross where
 the contact left the slide on the unrolled slide and in 3-D.
-A ride with the heels' flights (`may_fly`, /rider/airborne) shades each
-flight over the pelvis's arc length on the plots over arc length and marks
-each landing (/evaluation/flight/landing): a dashed line where the pelvis was
-at the landing's time, and a diamond on the unrolled slide at the heels' own
-arc length, labelled with the drop height v_n^2/(2g).
+A ride with flights (`may_fly`, /rider/airborne: the open contacts, bit 0
+pelvis, 1 heels, 2 back) shades each flight (any contact open) over the
+pelvis's arc length on the plots over arc length, the whole rider's flights
+(every contact open) darker, and marks each landing
+(/evaluation/flight/landing): a dashed line where the pelvis was at the
+landing's time, and a diamond on the unrolled slide at the landing
+contact's own arc length (in its colour), labelled with the drop height
+v_n^2/(2g).
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
@@ -27,6 +30,7 @@ from .common import title
 
 CONTACTS = ("pelvis", "heels", "back")
 FLIGHT_COLOUR = "tab:orange"
+ALL_OPEN = 7
 COLOURS = {"pelvis": "tab:red", "heels": "tab:green", "back": "tab:purple"}
 AXES = ("longitudinal", "lateral", "normal")
 SCENARIOS = ("ride",)
@@ -58,15 +62,18 @@ def read(f):
     d["ejected"] = text(r.attrs["ejected"]) if "ejected" in r.attrs else None
     if d["ejected"] and "/evaluation/ejected_arc_length" in f:
         d["ejected_s"] = float(f["/evaluation/ejected_arc_length"][()])
-    d["flights"], d["landings"] = [], []
+    d["flights"], d["whole_flights"], d["landings"] = [], [], []
     if "airborne" in r:
         d["flights"] = airborne_spans(d["s"], r["airborne"][:] != 0)
+        d["whole_flights"] = airborne_spans(d["s"], r["airborne"][:] == ALL_OPEN)
     if "/evaluation/flight/landing/time" in f:
         land = f["/evaluation/flight/landing"]
         time = r["time"][:]
-        for t, s_heels, h in zip(land["time"][:], land["arc_length"][:], land["drop_height"][:]):
-            d["landings"].append({"s": float(np.interp(t, time, d["s"])), "heels_s": float(s_heels),
-                                  "drop_height": float(h)})
+        n = len(land["time"])
+        contact = land["contact"][:] if "contact" in land else np.full(n, 2)
+        for t, s_contact, h, c in zip(land["time"][:], land["arc_length"][:], land["drop_height"][:], contact):
+            d["landings"].append({"s": float(np.interp(t, time, d["s"])), "contact_s": float(s_contact),
+                                  "contact": CONTACTS[int(round(c)) - 1], "drop_height": float(h)})
     d["water_s"] = w["arc_length"][:]
     d["water_speed"] = w["speed"][:]
     t = f["/water/table"]
@@ -107,26 +114,33 @@ def airborne_spans(s, flying):
 
 
 def mark_flights(ax, d, label=False):
-    """The heels' flights as shaded spans and their landings as dashed lines
-    (over the pelvis's arc length)."""
+    """The flights as shaded spans (the whole rider's darker) and their
+    landings as dashed lines (over the pelvis's arc length)."""
     for j, (start, end) in enumerate(d["flights"]):
         ax.axvspan(start, end, color=FLIGHT_COLOUR, alpha=0.15, lw=0, gid="flight",
-                   label="heels in flight" if label and j == 0 else None)
+                   label="in flight (a contact open)" if label and j == 0 else None)
+    for j, (start, end) in enumerate(d["whole_flights"]):
+        ax.axvspan(start, end, color=FLIGHT_COLOUR, alpha=0.3, lw=0, gid="whole_flight",
+                   label="whole rider in the air" if label and j == 0 else None)
     for j, landing in enumerate(d["landings"]):
         ax.axvline(landing["s"], color=FLIGHT_COLOUR, ls="--", lw=0.9, gid="landing",
-                   label="heels land" if label and j == 0 else None)
+                   label="a landing" if label and j == 0 else None)
 
 
 def mark_landings_on_slide(ax, d, deg):
-    """Each landing at the heels' arc length on the unrolled slide, with its
-    drop height."""
-    heels = d["heels"]
+    """Each landing at its contact's arc length on the unrolled slide, with
+    its drop height."""
+    seen = set()
     for j, landing in enumerate(d["landings"]):
-        angle = np.interp(landing["heels_s"], heels["arc_length"], heels["wall_angle"]) * deg
-        ax.plot([landing["heels_s"]], [angle], "D", color=FLIGHT_COLOUR, mec="k", ms=7, gid="landing",
-                label="heels' landing" if j == 0 else None, zorder=5)
-        ax.annotate(f"{100 * landing['drop_height']:.3g} cm drop", (landing["heels_s"], angle),
-                    textcoords="offset points", xytext=(4, 6), fontsize=7, gid="landing")
+        c = landing["contact"]
+        path = d[c]
+        angle = np.interp(landing["contact_s"], path["arc_length"], path["wall_angle"]) * deg
+        ax.plot([landing["contact_s"]], [angle], "D", color=COLOURS[c], mec="k", ms=7, gid="landing",
+                label=f"{c}' landing" if c.endswith("s") and c not in seen else
+                (f"{c}'s landing" if c not in seen else None), zorder=5)
+        seen.add(c)
+        ax.annotate(f"{100 * landing['drop_height']:.3g} cm drop", (landing["contact_s"], angle),
+                    textcoords="offset points", xytext=(4, 6 + 10 * (j % 3)), fontsize=7, gid="landing")
 
 
 def mark_ejection(ax, d, label=False):
