@@ -24,6 +24,7 @@ module geometry_slide_builder
     flume_section_t, blended_section_t, new_blended_section, profile_section_t, new_profile_section
   use geometry_slide_elements, only: slide_element_t, element_chain_curve_t, new_element_chain
   use geometry_tube, only: tube_surface_t, new_tube_surface
+  use geometry_funnel_section, only: funnel_section_t, new_funnel_section
   implicit none (type, external)
   private
   public :: centerline_description_t, slide_elements_description_t, section_part_description_t, &
@@ -36,6 +37,10 @@ module geometry_slide_builder
   !> 1.16 (docs/geometry.md, "&centerline"), a half circle between two
   !> points 1.57
   real(wp), parameter :: max_overshoot = 3
+  !> The most a funnel's bottom radius may grow (or shrink) per m of
+  !> horizontal length (a wall flaring at 45 deg to the axis): steeper, the
+  !> rider meets the widening walls head-on (widen_for_funnels)
+  real(wp), parameter :: max_funnel_flare = 1
 
   !> &centerline: kind 'line' (start, end), 'helix' (center, radius, rise per
   !> turn, turns, phase) or 'points' (a spline through points); the horizon
@@ -371,7 +376,7 @@ contains
     character(len=:), allocatable, intent(out), optional :: part, variable
     class(curve_t), allocatable :: centerline, horizon
     class(cross_section_t), allocatable :: section
-    character(len=:), allocatable :: group, words, failed
+    character(len=:), allocatable :: group, words, failed, funnel_part
     failed = ''
     if (present(part)) part = ''
     if (present(variable)) variable = ''
@@ -406,6 +411,13 @@ contains
       call failure('cross_section', 'cross-section')
       return
     end if
+    if (trim(d%kind) == 'slide') then
+      call widen_for_funnels(d, centerline, section, status, funnel_part, failed)
+      if (.not. status%ok()) then
+        call failure(funnel_part, words)
+        return
+      end if
+    end if
     slide = new_tube_surface(centerline, horizon, section, status)
     if (status%ok()) call slide%check(d%check_samples, status)
     if (.not. status%ok()) call failure(group//' cross_section', words//' with the cross-section')
@@ -422,4 +434,88 @@ contains
       end if
     end subroutine failure
   end subroutine build_slide
+
+  !> The section of a chain with funnels (kind = 'funnel'): the slide's one
+  !> circle or flume section widened about its bottom along each funnel
+  !> (geometry_funnel_section): over the funnel's first third to its
+  !> `radius`, kept over the second, narrowed back over the last; the thirds
+  !> of its horizontal length, mapped to the tube's u (the fitted spline's by
+  !> the chain's arc length). Refused: another section, a funnel not wider
+  !> than the section, walls that flare faster than max_funnel_flare. On a
+  !> refusal `group` and `variable` name the value at fault.
+  subroutine widen_for_funnels(d, centerline, section, status, group, variable)
+    type(slide_description_t), intent(in) :: d
+    class(curve_t), intent(in) :: centerline
+    class(cross_section_t), allocatable, intent(inout) :: section
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable, intent(out) :: group, variable
+    type(element_chain_curve_t) :: chain
+    type(funnel_section_t) :: funnel
+    real(wp), allocatable :: u_ends(:, :), scale(:)
+    real(wp) :: r, sigma, third, flare, s
+    integer :: i, j, k, n
+    character(len=:), allocatable :: what
+    group = 'slide_elements'
+    variable = ''
+    n = count(d%elements%elements%kind == 'funnel')
+    if (n == 0) return
+    r = 0.5_wp   ! the default section, a circle
+    what = 'circle'
+    if (allocated(d%section%parts)) then
+      what = trim(d%section%parts(1)%kind)
+      r = d%section%parts(1)%radius
+      if (size(d%section%parts) > 1 .or. (what /= 'circle' .and. what /= 'flume')) then
+        group = 'cross_section'
+        variable = 'kind'
+        if (size(d%section%parts) > 1) what = what//' blended with others'
+        call set_status(status, STATUS_INVALID_INPUT, 'a funnel widens the slide''s section about its bottom, '// &
+                        'one circle or flume section (its radius the bottom''s): not '//what)
+        return
+      end if
+    end if
+    chain = new_element_chain(d%elements%elements, d%elements%start, d%elements%heading_deg, &
+                              d%elements%transition_length, status)
+    if (.not. status%ok()) return
+    allocate (u_ends(4, n), scale(n))
+    k = 0
+    do i = 1, size(d%elements%elements)
+      associate (e => d%elements%elements(i))
+        if (e%kind /= 'funnel') cycle
+        k = k + 1
+        variable = 'radius('//format_integer(i)//')'
+        if (.not. e%radius > r) then
+          call set_status(status, STATUS_INVALID_INPUT, 'radius('//format_integer(i)//') = '// &
+                          format_real(e%radius)//' m: a funnel widens the slide''s '//what//' section of radius '// &
+                          format_real(r)//' m; give its widest radius > '//format_real(r)//' m')
+          return
+        end if
+        third = e%length/3
+        flare = (e%radius - r)*(35.0_wp/16)/third   ! the smoothstep's steepest slope is 35/16
+        if (.not. flare <= max_funnel_flare) then
+          call set_status(status, STATUS_INVALID_INPUT, 'radius('//format_integer(i)//') = '// &
+                          format_real(e%radius)//' m: the funnel (element '//format_integer(i)//') would widen '// &
+                          'from '//format_real(r)//' m within a third of its length ('//format_short(third)// &
+                          ' m), its walls flaring at '//format_short(atan(flare)*180/pi)//' deg to '// &
+                          'its axis, more than 45: give a longer funnel (length >= '// &
+                          format_short(3*(e%radius - r)*35/16/max_funnel_flare)//' m) or a smaller radius')
+          return
+        end if
+        do j = 1, 4
+          sigma = chain%ends(i) - e%length + (j - 1)*third
+          if (d%elements%exact) then
+            u_ends(j, k) = sigma
+          else
+            s = chain%arc_length(0.0_wp, sigma)
+            call centerline%parameter_at_length(s, u_ends(j, k), status)
+            if (.not. status%ok()) return
+          end if
+        end do
+        scale(k) = e%radius/r
+      end associate
+    end do
+    variable = ''
+    funnel = new_funnel_section(section, u_ends, scale)
+    deallocate (section)
+    allocate (section, source=funnel)
+  end subroutine widen_for_funnels
 end module geometry_slide_builder

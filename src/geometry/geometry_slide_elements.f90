@@ -3,7 +3,10 @@
 !> run-out (length, slope), drop (height, top slope, curve-out radius; the
 !> trap-door start, first in the chain) and bowl (a spiral down a spherical
 !> or conical bowl: entry radius, wall slope, drop, turns, direction;
-!> geometry_slide_bowl), joined with continuous tangent and curvature.
+!> geometry_slide_bowl) and funnel (length, slope and the widest radius of
+!> the section; the centerline is a straight's, the section widens along it:
+!> geometry_funnel_section, built by geometry_slide_builder), joined with
+!> continuous tangent and curvature.
 !>
 !> The centerline is built from the horizontal curvature kappa(sigma) and the
 !> gradient g(sigma) = -dz/dsigma as functions of the horizontal arc length
@@ -49,8 +52,8 @@ module geometry_slide_elements
   public :: slide_element_t, element_chain_curve_t, new_element_chain, slide_points
   public :: element_kinds
 
-  character(len=*), parameter :: element_kinds(6) = [character(len=8) :: 'straight', 'curve', 'helix', 'runout', &
-    'drop', 'bowl']
+  character(len=*), parameter :: element_kinds(7) = [character(len=8) :: 'straight', 'curve', 'helix', 'runout', &
+    'drop', 'bowl', 'funnel']
 
   !> One element as given in the input. Angles in degrees, lengths in m;
   !> slope is the downhill angle (deg, > 0 going down).
@@ -58,7 +61,8 @@ module geometry_slide_elements
     character(len=8) :: kind = 'straight'
     real(wp) :: length = 0          ! m, horizontal (straight, runout)
     real(wp) :: slope_deg = 0       ! deg, downhill positive (straight, curve, runout; a drop's top)
-    real(wp) :: radius = 0          ! m, horizontal (curve, helix); vertical (a drop's curve-out)
+    real(wp) :: radius = 0          ! m, horizontal (curve, helix); vertical (a drop's curve-out); a
+                                    ! bowl's entry from its axis; a funnel's widest section radius
     real(wp) :: angle_deg = 0       ! deg, turning angle (curve)
     character(len=5) :: direction = 'left'   ! 'left' or 'right' (curve, helix)
     real(wp) :: turns = 0           ! full turns (helix)
@@ -128,7 +132,7 @@ contains
           end if
         end if
         select case (e%kind)
-        case ('straight', 'runout')
+        case ('straight', 'runout', 'funnel')
           if (.not. e%length > 0) then
             call fail('length must be > 0 m')
             return
@@ -188,7 +192,7 @@ contains
           c%kappa(i) = c%bowls(nb)%kappa_ref
           c%grad(i) = c%bowls(nb)%grad_ref
         case default
-          call fail('kind must be one of straight, curve, helix, runout, drop, bowl')
+          call fail('kind must be one of straight, curve, helix, runout, drop, bowl, funnel')
           return
         end select
       end associate

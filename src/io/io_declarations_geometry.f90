@@ -65,15 +65,18 @@ module io_declarations_geometry
       default='none', low=1.0_wp, high=real(max_elements, wp), &
       meaning='number of elements, the number of kinds given (or the rows of `elements_file`); required'), &
     declaration_t(groups='slide_elements', name='kind', kind=VALUE_WORDS, shape='one per element', &
-      default='none', choices='straight curve helix runout drop bowl', meaning='element kind (a drop only first)'), &
+      default='none', choices='straight curve helix runout drop bowl funnel', &
+      meaning='element kind (a drop only first)'), &
     declaration_t(groups='slide_elements', name='length', shape='one per element', unit='m', default='0', &
-      low=0.0_wp, high=1e4_wp, meaning='horizontal length, > 0 (straight, runout)'), &
+      low=0.0_wp, high=1e4_wp, meaning='horizontal length, > 0 (straight, runout, funnel)'), &
     declaration_t(groups='slide_elements', name='slope_deg', shape='one per element', unit='deg', &
       default='0', low=-45.0_wp, high=85.0_wp, meaning='downhill slope, > 0 goes down: in [-45, 45] (straight, '// &
-      'curve, runout); a drop''s top slope in [45, 85] (drop); the wall''s slope at the entry, in (0, 85] (bowl)'), &
+      'curve, runout, funnel); a drop''s top slope in [45, 85] (drop); the wall''s slope at the entry, in '// &
+      '(0, 85] (bowl)'), &
     declaration_t(groups='slide_elements', name='radius', shape='one per element', unit='m', default='0', &
       low=0.0_wp, high=1e4_wp, meaning='horizontal radius, > 0 (curve, helix); the curve-out''s radius in '// &
-      'its vertical plane, > 0 (drop); the entry''s distance from the axis, > 0 (bowl)'), &
+      'its vertical plane, > 0 (drop); the entry''s distance from the axis, > 0 (bowl); the widest section''s '// &
+      'radius, > the slide''s section''s (funnel)'), &
     declaration_t(groups='slide_elements', name='angle_deg', shape='one per element', unit='deg', &
       default='0', low=0.0_wp, high=720.0_wp, meaning='turning angle, >= 1e-6 (curve)'), &
     declaration_t(groups='slide_elements', name='direction', kind=VALUE_WORDS, shape='one per element', &

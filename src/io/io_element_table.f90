@@ -2,7 +2,7 @@
 !> &slide_elements elements_file): a header line naming the columns, then
 !> one element per line, in order. Columns (any order; only `kind` is
 !> required; an empty or missing cell is the namelist's default):
-!>   kind (straight, curve, helix, runout, drop), length (m), radius (m),
+!>   kind (straight, curve, helix, runout, drop, funnel), length (m), radius (m),
 !>   angle (deg, a curve's turning angle), slope (deg, downhill > 0),
 !>   direction (left, right), turns (helix), drop (m, helix, drop).
 !> Each row maps to one element of &slide_elements with the same meaning
@@ -86,7 +86,7 @@ contains
         if (.not. status%ok()) return
       end do
       if (len_trim(table%kind(n)) == 0) then
-        call refuse('kind', '', 'no kind given (straight, curve, helix, runout or drop)')
+        call refuse('kind', '', 'no kind given (straight, curve, helix, runout, drop or funnel)')
         return
       end if
       call check_element(table%kind(n), table%length(n), table%slope_deg(n), table%radius(n), table%angle_deg(n), &
@@ -125,7 +125,7 @@ contains
         column_of(c) = j
       end do
       if (column_of(1) == 0) call refuse_at(1, trim(names(1)), 'a column kind (straight, curve, helix, runout, '// &
-                                            'drop)')
+                                            'drop, funnel)')
     end subroutine read_header
 
     subroutine read_cell(c, cell)
@@ -141,8 +141,9 @@ contains
                       'a slide with a bowl in &slide_elements')
           return
         end if
-        if (all(lower_trim(cell) /= [character(len=8) :: 'straight', 'curve', 'helix', 'runout', 'drop'])) then
-          call refuse(table_columns(c), cell, 'the kind must be straight, curve, helix, runout or drop')
+        if (all(lower_trim(cell) /= [character(len=8) :: 'straight', 'curve', 'helix', 'runout', 'drop', &
+                                     'funnel'])) then
+          call refuse(table_columns(c), cell, 'the kind must be straight, curve, helix, runout, drop or funnel')
           return
         end if
         table%kind(n) = lower_trim(cell)
@@ -253,6 +254,15 @@ contains
         'a drop needs the radius of its curve-out > 0 (m)')
       if (len(variable) == 0 .and. .not. drop > 0) call set('drop', format_real(drop), &
         'a drop needs the height it loses > 0 (m)')
+    case ('funnel')
+      call unused(angle_deg, 'angle_deg'); call unused(turns, 'turns'); call unused(drop, 'drop')
+      if (len(variable) == 0 .and. direction /= 'left') call set('direction', ''''//trim(direction)//'''', &
+        'a funnel does not turn; give ''left'' (the default) or leave it out')
+      if (len(variable) == 0 .and. .not. length > 0) call set('length', format_real(length), &
+        'a funnel needs a length > 0 (m)')
+      call gentle(slope_deg)
+      if (len(variable) == 0 .and. .not. radius > 0) call set('radius', format_real(radius), &
+        'a funnel needs the radius of its widest section > 0 (m), wider than the slide''s section')
     case ('bowl')
       call unused(length, 'length'); call unused(angle_deg, 'angle_deg')
       if (len(variable) == 0 .and. profile /= 'sphere' .and. profile /= 'cone') call set('bowl_profile', &

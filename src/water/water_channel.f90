@@ -27,6 +27,7 @@ module water_channel
   use geometry_curve, only: curve_point_t
   use geometry_curve_frame, only: curve_curvature
   use geometry_cross_section, only: circle_section_t, blended_section_t
+  use geometry_funnel_section, only: funnel_section_t
   use geometry_slide_query, only: slide_surface_t
   use geometry_tube, only: tube_surface_t
   implicit none (type, external)
@@ -36,7 +37,7 @@ module water_channel
   type :: channel_t
     class(slide_surface_t), allocatable :: slide   ! the slide query (geometry_slide_query)
     real(wp) :: radius = 0        ! m, the circle's radius; 0 if the section is not a circle
-    logical :: varies = .false.   ! the profile changes along u (a blended section, a slide not a tube)
+    logical :: varies = .false.   ! the profile changes along u (a blended or funnel section, a slide not a tube)
   contains
     !> r(u, v) and partials to `order` (0..3).
     procedure :: evaluate => channel_evaluate
@@ -75,6 +76,8 @@ contains
       type is (circle_section_t)
         c%radius = s%radius
       type is (blended_section_t)
+        c%varies = .true.
+      type is (funnel_section_t)
         c%varies = .true.
       end select
     class default
