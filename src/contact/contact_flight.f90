@@ -49,7 +49,7 @@ module contact_flight
   use numerics_event_driver, only: EVENT_STOP, EVENT_RESTART
   use numerics_linear_algebra, only: lu_factor, lu_solve
   use kinetostatics_joints, only: new_prismatic
-  use kinetostatics_free_rotation, only: free_rotation_t, new_free_rotation
+  use kinetostatics_free_rotation, only: new_free_rotation
   use kinetostatics_mass, only: new_mass_element
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_impact, only: impact_law_t, impact_outcome_t, resolve_impact, rigid_body_delassus
@@ -291,10 +291,7 @@ contains
         m%scalars(flight%coordinates(i))%q = position(i)
         m%scalars(flight%coordinates(3 + i))%q = 0
       end do
-      select type (turn => m%elements(flight%rotation_element)%e)
-      type is (free_rotation_t)
-        turn%ref_out = matmul(transpose(turn%ref_in), rotation)
-      end select
+      call m%elements(flight%rotation_element)%e%centre_chart(rotation)
       q0 = m%scalars(flight%coordinates)%q
       call m%set_positions(flight%work, q0, status)
       if (.not. status%ok()) return

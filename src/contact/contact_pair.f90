@@ -52,11 +52,11 @@ module contact_pair
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   use kinetostatics_joints, only: new_prismatic, new_revolute
-  use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
-  use kinetostatics_inverse_surface_joint, only: inverse_surface_joint_t, new_inverse_surface_joint
+  use kinetostatics_state, only: surface_chart_t
+  use kinetostatics_surface_joint, only: new_surface_joint
+  use kinetostatics_inverse_surface_joint, only: new_inverse_surface_joint
   use kinetostatics_plane_joint, only: new_plane_joint
-  use geometry_elementary, only: plane_t
-  use kinetostatics_free_rotation, only: free_rotation_t, new_free_rotation
+  use kinetostatics_free_rotation, only: new_free_rotation
   use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT, MEASURE_PLANE_PLANE
   use kinetostatics_mechanism, only: mechanism_t
   use contact_surface_search, only: nearest_point, support_point
@@ -142,7 +142,8 @@ contains
     end do
     call m%add_element(new_free_rotation(name//'.turn', pair%frame_lift, pair%frame_b, pair%angles, ez, identity))
     pair%element_rotation = m%n_elements
-    call set_turn_after(m, pair%element_s12, pair%angles(1))   ! its first axis is S12's normal
+    ! the turn after S12 when it changes chart (kinetostatics_surface_joint, "Charts"): its first axis is S12's normal
+    call m%elements(pair%element_s12)%e%set_chart_turn(pair%angles(1))
     ! the two contact frames
     call add_contact_frame_1(m, surface_1, pair, status)
     pair%frame_2d = m%add_frame(name//'.2D')
@@ -191,7 +192,7 @@ contains
     pair%frame_turn = m%add_frame(name//'.turn')
     pair%phi = m%add_scalar(name//'.phi')
     call m%add_element(new_revolute(name//'.turn', pair%frame_1d, pair%frame_turn, pair%phi, ez))
-    call set_turn_after(m, pair%element_s1, pair%phi)
+    call m%elements(pair%element_s1)%e%set_chart_turn(pair%phi)   ! takes S1's chart changes
     pair%frame_b = m%add_frame(body_b)
     pair%u2 = m%add_scalar(name//'.u2')
     pair%v2 = m%add_scalar(name//'.v2')
@@ -223,11 +224,11 @@ contains
     pair%frame_a = frame_a
   end subroutine begin_pair
 
-  !> The contact frame K_1D = S1(u1, v1) on body A. In the open chain a
-  !> plane's by the plane joint (the same frame without the general joint's
-  !> Darboux-frame rates, which vanish on a plane); the loop keeps the general
-  !> joint (its placement reads the joint's surface, its results stay as
-  !> they were).
+  !> The contact frame K_1D = S1(u1, v1) on body A. In the open chain an
+  !> affine surface's (a plane's: surface_t's `affine`) by the plane joint
+  !> (the same frame without the general joint's Darboux-frame rates, which
+  !> vanish on a plane); the loop keeps the general joint (its placement
+  !> reads the joint's surface, its results stay as they were).
   subroutine add_contact_frame_1(m, surface_1, pair, status)
     type(mechanism_t), intent(inout) :: m
     class(surface_t), intent(in) :: surface_1
@@ -236,30 +237,16 @@ contains
     pair%frame_1d = m%add_frame(pair%name//'.1D')
     pair%u1 = m%add_scalar(pair%name//'.u1')
     pair%v1 = m%add_scalar(pair%name//'.v1')
-    select type (plane => surface_1)
-    type is (plane_t)
-      if (pair%open) then
-        call m%add_element(new_plane_joint(pair%name//'.s1', pair%frame_a, pair%frame_1d, pair%u1, pair%v1, &
-                                           plane, pair%side_1, 1.0_wp, 0.0_wp, status))
-        pair%element_s1 = m%n_elements
-        return
-      end if
-    end select
+    if (pair%open .and. surface_1%affine()) then
+      call m%add_element(new_plane_joint(pair%name//'.s1', pair%frame_a, pair%frame_1d, pair%u1, pair%v1, &
+                                         surface_1, pair%side_1, 1.0_wp, 0.0_wp, status))
+      pair%element_s1 = m%n_elements
+      return
+    end if
     call m%add_element(new_surface_joint(pair%name//'.s1', pair%frame_a, pair%frame_1d, pair%u1, pair%v1, &
                                          surface_1, pair%side_1, 1.0_wp, 0.0_wp, charts=.true.))
     pair%element_s1 = m%n_elements
   end subroutine add_contact_frame_1
-
-  !> The turn about the normal that follows the surface joint at element k
-  !> (a surface with charts: kinetostatics_surface_joint, "Charts").
-  subroutine set_turn_after(m, k, turn)
-    type(mechanism_t), intent(inout) :: m
-    integer, intent(in) :: k, turn
-    select type (joint => m%elements(k)%e)
-    type is (surface_joint_t)
-      if (joint%charts) joint%var_turn = turn
-    end select
-  end subroutine set_turn_after
 
   !> The scalars of the closure functions g1..g5.
   subroutine add_gap_scalars(m, pair)
@@ -281,6 +268,7 @@ contains
     type(contact_pair_t), intent(in) :: pair, closed
     type(mechanism_t), intent(in) :: mc
     real(wp) :: x2(3)
+    type(surface_chart_t) :: chart
     m%scalars(pair%u1)%q = mc%scalars(closed%u1)%q
     m%scalars(pair%v1)%q = mc%scalars(closed%v1)%q
     m%scalars(pair%u2)%q = mc%scalars(closed%u2)%q
@@ -288,31 +276,20 @@ contains
     x2 = mc%frames(closed%frame_2d)%rot(:, 1)
     m%scalars(pair%phi)%q = atan2(dot_product(x2, mc%frames(closed%frame_1d)%rot(:, 2)), &
                                   dot_product(x2, mc%frames(closed%frame_1d)%rot(:, 1)))
-    ! the charts the loop started in (start_chart), if it changed any
-    select type (loop_s1 => mc%elements(closed%element_s1)%e)
-    type is (surface_joint_t)
-      if (loop_s1%rebases > 0) then
-        select type (s1 => m%elements(pair%element_s1)%e)
-        type is (surface_joint_t)
-          s1%surface = loop_s1%surface
-          s1%chart = loop_s1%chart
-          s1%rebases = loop_s1%rebases
-          s1%chart_index = loop_s1%chart_index
-        end select
+    ! the charts the loop started in (place_contact_pair), if it changed any
+    associate (loop_s1 => mc%elements(closed%element_s1)%e)
+      if (loop_s1%chart_changes() > 0) then
+        call loop_s1%surface_chart(chart)
+        call m%elements(pair%element_s1)%e%take_surface_chart(chart, loop_s1%chart_changes())
       end if
-    end select
-    select type (loop_s2 => mc%elements(closed%element_s2)%e)
-    type is (surface_joint_t)
-      if (loop_s2%rebases > 0) then
-        select type (s2 => m%elements(pair%element_s2)%e)
-        type is (inverse_surface_joint_t)
-          s2%joint%surface = loop_s2%surface
-          s2%joint%chart = loop_s2%chart
-          s2%rebases = loop_s2%rebases
-          m%scalars(pair%chart)%q = loop_s2%chart_index
-        end select
+    end associate
+    associate (loop_s2 => mc%elements(closed%element_s2)%e)
+      if (loop_s2%chart_changes() > 0) then
+        call loop_s2%surface_chart(chart)
+        call m%elements(pair%element_s2)%e%take_surface_chart(chart, loop_s2%chart_changes())
+        m%scalars(pair%chart)%q = chart%index
       end if
-    end select
+    end associate
   end subroutine place_open_contact_pair
 
   !> Start values of the pair from the poses of A and B (world rotation and
@@ -332,12 +309,12 @@ contains
     real(wp) :: p(3), rel(3, 3), n_b(3), u12, v12, u2, v2, c_b(3)
     type(surface_point_t) :: pt1, pt2
     type(darboux_frame_t) :: d12
-    class(surface_t), allocatable :: surface_1, surface_2
+    type(surface_chart_t) :: chart_1, chart_2
     gap = 0
     if (.not. status%ok()) return
-    call surface_of(m, pair%element_s1, surface_1)
-    call surface_of(m, pair%element_s2, surface_2)
-    associate (s1 => surface_1, s2 => surface_2)
+    call m%elements(pair%element_s1)%e%surface_chart(chart_1)
+    call m%elements(pair%element_s2)%e%surface_chart(chart_2)
+    associate (s1 => chart_1%surface, s2 => chart_2%surface)
       p = matmul(transpose(rot_a), r_b - r_a)                ! B's origin in A's coordinates
       call nearest_point(s1, p, u12, v12, status)
       if (status%ok()) call s1%evaluate(u12, v12, 3, pt1, status)
@@ -367,17 +344,17 @@ contains
     m%scalars(pair%u2)%q = u2
     m%scalars(pair%v2)%q = v2
     m%scalars(pair%z12)%q = -c_b(3)
-    select type (turn => m%elements(pair%element_rotation)%e)
-    type is (free_rotation_t)
-      turn%ref_out = matmul(transpose(turn%ref_in), rel)
-    end select
-    call start_chart(m, pair%element_s12)
-    call start_chart(m, pair%element_s1)
-    call start_chart(m, pair%element_s2)
+    call m%elements(pair%element_rotation)%e%centre_chart(rel)
+    ! a contact that starts at (or within the margin of) a pole of a surface
+    ! with charts: its surface joints change chart before the loop is closed
+    ! (at rest), the turn after each taking its Darboux frame's turn
+    call m%elements(pair%element_s12)%e%start_chart(m%scalars)
+    call m%elements(pair%element_s1)%e%start_chart(m%scalars)
+    call m%elements(pair%element_s2)%e%start_chart(m%scalars)
   end subroutine place_contact_pair
 
   !> Whether a surface joint of the loop pair changed chart at its placement
-  !> (start_chart): its (u, v) are then not the surface's own parameters.
+  !> (place_contact_pair): its (u, v) are then not the surface's own parameters.
   logical function starts_in_other_chart(m, pair) result(other)
     type(mechanism_t), intent(in) :: m
     type(contact_pair_t), intent(in) :: pair
@@ -385,29 +362,9 @@ contains
     other = .false.
     joints = [pair%element_s12, pair%element_s1, pair%element_s2]
     do k = 1, 3
-      select type (joint => m%elements(joints(k))%e)
-      type is (surface_joint_t)
-        other = other .or. joint%rebases > 0
-      end select
+      other = other .or. m%elements(joints(k))%e%chart_changes() > 0
     end do
   end function starts_in_other_chart
-
-  !> A contact that starts at (or within the margin of) a pole of a surface
-  !> with charts: its surface joint changes chart before the loop is closed
-  !> (at rest: the rates are zero), the turn after it taking the Darboux
-  !> frame's turn (kinetostatics_surface_joint, "Charts").
-  subroutine start_chart(m, k)
-    type(mechanism_t), intent(inout) :: m
-    integer, intent(in) :: k
-    select type (joint => m%elements(k)%e)
-    type is (surface_joint_t)
-      if (.not. joint%charts) return
-      if (joint%chart_margin(m%scalars(joint%var_v)%q) > 0) return
-      m%scalars(joint%var_u)%qd = 0
-      m%scalars(joint%var_v)%qd = 0
-      call joint%rebase(m%scalars)
-    end select
-  end subroutine start_chart
 
   !> At the placement, before any closure: S2's normal (side_2) at its support
   !> point against S1's normal n_b (side_1, in B's coordinates) is -n_b on
@@ -454,14 +411,4 @@ contains
       'normal out of its body towards the other body)')
   end subroutine check_contact_branch
 
-  !> A copy of the surface of the surface joint at element k.
-  subroutine surface_of(m, k, surface)
-    type(mechanism_t), intent(in) :: m
-    integer, intent(in) :: k
-    class(surface_t), allocatable, intent(out) :: surface
-    select type (e => m%elements(k)%e)
-    type is (surface_joint_t)
-      allocate (surface, source=e%surface)
-    end select
-  end subroutine surface_of
 end module contact_pair

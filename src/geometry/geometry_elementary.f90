@@ -38,6 +38,7 @@ module geometry_elementary
     procedure :: evaluate => plane_evaluate
     procedure :: describe => plane_describe
     procedure :: parameter_units => plane_parameter_units
+    procedure :: affine => plane_affine
   end type plane_t
 
   !> Ellipsoid r = [a cos v cos u, b cos v sin u, c sin v], thesis (3.57);
@@ -485,6 +486,14 @@ contains
     u_min = 0; u_max = two_pi
     v_min = -huge(1.0_wp); v_max = huge(1.0_wp)
   end subroutine apex_domain
+
+  !> r = r_A + u e_u + v e_v: affine in (u, v).
+  pure logical function plane_affine(self) result(affine)
+    class(plane_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    affine = .true.
+  end function plane_affine
 
   pure function plane_describe(self) result(text)
     class(plane_t), intent(in) :: self

@@ -45,6 +45,9 @@ module geometry_surface
     !> r(u_i, v_j) on a grid (x, y, z of shape (size(v), size(u))); a surface
     !> may override it with a faster way than point by point.
     procedure :: points_on_grid => surface_points_on_grid
+    !> r(u, v) = r(0, 0) + u r_u + v r_v with constant r_u, r_v (a plane):
+    !> its Darboux frame never turns (kinetostatics_plane_joint; default: no)
+    procedure :: affine => surface_affine
     !> charts (module comment); the defaults: one chart, never changed
     procedure :: has_charts => surface_has_charts
     procedure :: chart_margin => surface_chart_margin
@@ -139,6 +142,13 @@ contains
     end associate
     u_units = '1'; v_units = '1'
   end subroutine surface_parameter_units
+
+  pure logical function surface_affine(self) result(affine)
+    class(surface_t), intent(in) :: self
+    associate (unused => self)   ! the default ignores the surface
+    end associate
+    affine = .false.
+  end function surface_affine
 
   !> Whether the surface has charts other than its own (default: no).
   pure logical function surface_has_charts(self) result(has)

@@ -38,6 +38,8 @@ module kinetostatics_free_rotation
     procedure :: chart_angle => free_rotation_chart_angle
     procedure :: chart_margin => free_rotation_chart_margin
     procedure :: rebase => free_rotation_rebase
+    procedure :: chart_changes => free_rotation_chart_changes
+    procedure :: centre_chart => free_rotation_centre_chart
   end type free_rotation_t
 
 contains
@@ -120,6 +122,19 @@ contains
     real(wp), intent(in) :: angle
     g = cos(angle) - cos(self%chart_limit)
   end function free_rotation_chart_margin
+
+  pure integer function free_rotation_chart_changes(self) result(n)
+    class(free_rotation_t), intent(in) :: self
+    n = self%rebases
+  end function free_rotation_chart_changes
+
+  !> The chart centred on the relative rotation `relative` (R_in^T R_out at
+  !> q = 0): R_b = R_a^T relative.
+  pure subroutine free_rotation_centre_chart(self, relative)
+    class(free_rotation_t), intent(inout) :: self
+    real(wp), intent(in) :: relative(3, 3)
+    self%ref_out = matmul(transpose(self%ref_in), relative)
+  end subroutine free_rotation_centre_chart
 
   !> Changes to the chart centred on the current pose (module comment). Needs
   !> the positions evaluated (the axes n) and the rates of q set.

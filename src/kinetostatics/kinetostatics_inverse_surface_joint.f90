@@ -60,7 +60,7 @@ module kinetostatics_inverse_surface_joint
   use base_status, only: status_t
   use base_vector, only: cross
   use geometry_surface, only: surface_t
-  use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
+  use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t, surface_chart_t
   use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
   implicit none (type, external)
   private
@@ -84,6 +84,8 @@ module kinetostatics_inverse_surface_joint
     procedure :: chart_angle => isj_chart_angle
     procedure :: chart_margin => isj_chart_margin
     procedure :: rebase => isj_rebase
+    procedure :: chart_changes => isj_chart_changes
+    procedure :: take_surface_chart => isj_take_surface_chart
     procedure :: velocity => isj_velocity
     procedure :: acceleration => isj_acceleration
     procedure :: force => isj_force
@@ -299,6 +301,22 @@ contains
     scalars(self%var_chart)%q = k
     self%rebases = self%rebases + 1
   end subroutine isj_rebase
+
+  pure integer function isj_chart_changes(self) result(n)
+    class(inverse_surface_joint_t), intent(in) :: self
+    n = self%rebases
+  end function isj_chart_changes
+
+  !> Takes the chart of B's surface from a forward joint on it (before a
+  !> run; the owner sets the chart scalar to chart%index).
+  pure subroutine isj_take_surface_chart(self, chart, changes)
+    class(inverse_surface_joint_t), intent(inout) :: self
+    type(surface_chart_t), intent(in) :: chart
+    integer, intent(in) :: changes
+    self%joint%surface = chart%surface
+    self%joint%chart = chart%rotation
+    self%rebases = changes
+  end subroutine isj_take_surface_chart
 
   !> Links for kinetostatics_closure_blocks: K_B moves rigidly with K_in while (u, v) rest.
   pure subroutine isj_links(self, links)

@@ -39,6 +39,7 @@ module kinetostatics_mass
     procedure :: links => mass_links
     procedure :: world_inertia => mass_world_inertia
     procedure :: mass_frame => mass_mass_frame
+    procedure :: mass_properties => mass_mass_properties
   end type mass_element_t
 
 contains
@@ -120,6 +121,15 @@ contains
     class(mass_element_t), intent(in) :: self
     frame = self%frame
   end function mass_mass_frame
+
+  pure subroutine mass_mass_properties(self, mass, com, inertia, gravity)
+    class(mass_element_t), intent(in) :: self
+    real(wp), intent(out) :: mass, com(3), inertia(3, 3), gravity(3)
+    mass = self%mass
+    com = self%com
+    inertia = self%inertia
+    gravity = self%gravity
+  end subroutine mass_mass_properties
 
   pure subroutine mass_nothing(self, frames, scalars)
     class(mass_element_t), intent(inout) :: self

@@ -17,10 +17,9 @@
 module kinetostatics_plane_joint
   use, intrinsic :: iso_fortran_env, only: int64
   use base_kinds, only: wp
-  use base_status, only: status_t, prefix_status
+  use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
   use base_vector, only: cross
-  use geometry_surface, only: surface_point_t
-  use geometry_elementary, only: plane_t
+  use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_axes
   use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t
   implicit none (type, external)
@@ -46,13 +45,14 @@ module kinetostatics_plane_joint
 
 contains
 
-  !> The joint of `plane` with the Darboux frame of sigma, alpha_u, alpha_v
+  !> The joint of `plane` (an affine surface: surface_t's `affine`; any
+  !> other is refused) with the Darboux frame of sigma, alpha_u, alpha_v
   !> ((3.38), (3.41)), as new_surface_joint.
   function new_plane_joint(name, frame_in, frame_out, var_u, var_v, plane, sigma, alpha_u, alpha_v, status) &
       result(e)
     character(len=*), intent(in) :: name
     integer, intent(in) :: frame_in, frame_out, var_u, var_v
-    type(plane_t), intent(in) :: plane
+    class(surface_t), intent(in) :: plane
     real(wp), intent(in) :: sigma, alpha_u, alpha_v
     type(status_t), intent(inout) :: status
     type(plane_joint_t) :: e
@@ -64,6 +64,11 @@ contains
     e%var_u = var_u
     e%var_v = var_v
     if (.not. status%ok()) return
+    if (.not. plane%affine()) then
+      call set_status(status, STATUS_INVALID_INPUT, 'plane joint '''//name//''': its surface ('// &
+                      plane%describe()//') is not a plane parametrised linearly (use the surface joint)')
+      return
+    end if
     call plane%evaluate(0.0_wp, 0.0_wp, 1, pt, status)
     if (status%ok()) call darboux_axes(pt, sigma, alpha_u, alpha_v, e%axes, singular, status)
     if (.not. status%ok()) then

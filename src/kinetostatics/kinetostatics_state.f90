@@ -19,9 +19,11 @@
 module kinetostatics_state
   use base_kinds, only: wp
   use base_status, only: status_t
+  use geometry_surface, only: surface_t
   implicit none (type, external)
   private
-  public :: frame_state_t, scalar_state_t, element_t, element_box_t, element_links_t, domain_edge_t, axis_rotation
+  public :: frame_state_t, scalar_state_t, element_t, element_box_t, element_links_t, domain_edge_t, surface_chart_t
+  public :: axis_rotation
 
   type :: frame_state_t
     real(wp) :: rot(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])  ! columns x, y, z
@@ -68,6 +70,17 @@ module kinetostatics_state
     logical :: along_u = .true.               ! an edge in u (else in v)
   end type domain_edge_t
 
+  !> The surface an element carries, in the chart it is in (a surface with
+  !> charts, kinetostatics_surface_joint "Charts"): the chart's surface, P
+  !> (r = P r', the surface's own coordinates from the chart's) and the
+  !> chart's name (surface_t's chart_toward; 0: its own chart). Handed from
+  !> one element on a surface to another on the same surface (contact_pair).
+  type :: surface_chart_t
+    class(surface_t), allocatable :: surface   ! not allocated: the element carries no surface
+    real(wp) :: rotation(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+    integer :: index = 0
+  end type surface_chart_t
+
   !> record_only: only records read the element's outputs (a monitor of the
   !> closure, contact_closure_monitor), nothing in the mechanism's dynamics
   !> does; the position pass skips it and the mechanism evaluates it for a
@@ -86,9 +99,16 @@ module kinetostatics_state
     procedure :: chart_angle => element_chart_angle
     procedure :: chart_margin => element_chart_margin
     procedure :: rebase => element_rebase
+    procedure :: chart_changes => element_chart_changes
+    procedure :: start_chart => element_start_chart
+    procedure :: centre_chart => element_centre_chart
+    procedure :: set_chart_turn => element_set_chart_turn
+    procedure :: surface_chart => element_surface_chart
+    procedure :: take_surface_chart => element_take_surface_chart
     !> queries of the mechanism's core (kinetostatics_mechanism): no element kind is named there
     procedure :: mass_frame => element_mass_frame
     procedure :: world_inertia => element_world_inertia
+    procedure :: mass_properties => element_mass_properties
     procedure :: domain_edges => element_domain_edges
     procedure :: set_eager => element_set_eager
     procedure :: singular_note => element_singular_note
@@ -178,6 +198,64 @@ contains
     end associate
   end subroutine element_rebase
 
+  !> How many times the element changed its chart so far (default 0).
+  pure integer function element_chart_changes(self) result(n)
+    class(element_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    n = 0
+  end function element_chart_changes
+
+  !> At a placement at rest, before any closure: an element whose position
+  !> lies at (or within the margin of) its chart's edge changes chart now
+  !> (the rates of its coordinates set to zero; default: nothing to change).
+  pure subroutine element_start_chart(self, scalars)
+    class(element_t), intent(inout) :: self
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    associate (unused => self, unused_s => scalars)
+    end associate
+  end subroutine element_start_chart
+
+  !> Centres the chart of the element's own rotation coordinates on the
+  !> relative rotation `relative` (R_in^T R_out where its coordinates are
+  !> zero; kinetostatics_free_rotation; default: no such chart).
+  pure subroutine element_centre_chart(self, relative)
+    class(element_t), intent(inout) :: self
+    real(wp), intent(in) :: relative(3, 3)
+    associate (unused => self, unused_r => relative)
+    end associate
+  end subroutine element_centre_chart
+
+  !> `turn`: the scalar of the turn about the element's output z that follows
+  !> it and takes back its output frame's turn when its surface changes
+  !> chart (kinetostatics_surface_joint "Charts"; default: no such change).
+  pure subroutine element_set_chart_turn(self, turn)
+    class(element_t), intent(inout) :: self
+    integer, intent(in) :: turn
+    associate (unused => self, unused_t => turn)
+    end associate
+  end subroutine element_set_chart_turn
+
+  !> The surface the element carries, in its current chart (default: none,
+  !> chart%surface not allocated).
+  pure subroutine element_surface_chart(self, chart)
+    class(element_t), intent(in) :: self
+    type(surface_chart_t), intent(out) :: chart
+    associate (unused => self, unused_c => chart)
+    end associate
+  end subroutine element_surface_chart
+
+  !> Takes the chart of the same surface from another element (`chart`
+  !> and the number of its changes, `changes`), before a run (default:
+  !> nothing to take).
+  pure subroutine element_take_surface_chart(self, chart, changes)
+    class(element_t), intent(inout) :: self
+    type(surface_chart_t), intent(in) :: chart
+    integer, intent(in) :: changes
+    associate (unused => self, unused_c => chart, unused_n => changes)
+    end associate
+  end subroutine element_take_surface_chart
+
   !> The frame whose body the element's mass belongs to (default 0: the
   !> element carries no mass; kinetostatics_mass).
   pure integer function element_mass_frame(self) result(frame)
@@ -199,6 +277,20 @@ contains
     s = 0
     inertia_w = 0
   end subroutine element_world_inertia
+
+  !> The mass m, the centre of mass c and the inertia tensor Theta about it
+  !> (both in the mass frame's coordinates) and the gravity g acting on it
+  !> (world), as given; zero without mass.
+  pure subroutine element_mass_properties(self, mass, com, inertia, gravity)
+    class(element_t), intent(in) :: self
+    real(wp), intent(out) :: mass, com(3), inertia(3, 3), gravity(3)
+    associate (unused => self)
+    end associate
+    mass = 0
+    com = 0
+    inertia = 0
+    gravity = 0
+  end subroutine element_mass_properties
 
   !> The finite, non-periodic edges of the element's parameter domain, in
   !> the order u_min, u_max, v_min, v_max (default: none).

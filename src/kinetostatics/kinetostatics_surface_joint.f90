@@ -68,7 +68,8 @@ module kinetostatics_surface_joint
   use base_text, only: format_short
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame, darboux_axes
-  use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t, domain_edge_t
+  use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t, domain_edge_t, &
+    surface_chart_t
   implicit none (type, external)
   private
   public :: surface_joint_t, new_surface_joint, domain_edge_margin
@@ -115,6 +116,11 @@ module kinetostatics_surface_joint
     procedure :: chart_angle => sj_chart_angle
     procedure :: chart_margin => sj_chart_margin
     procedure :: rebase => sj_rebase
+    procedure :: chart_changes => sj_chart_changes
+    procedure :: start_chart => sj_start_chart
+    procedure :: set_chart_turn => sj_set_chart_turn
+    procedure :: surface_chart => sj_surface_chart
+    procedure :: take_surface_chart => sj_take_surface_chart
   end type surface_joint_t
 
 contains
@@ -592,4 +598,50 @@ contains
     scalars(self%var_v)%qdd = 0
     self%complete = .false.
   end subroutine sj_rebase
+
+  pure integer function sj_chart_changes(self) result(n)
+    class(surface_joint_t), intent(in) :: self
+    n = self%rebases
+  end function sj_chart_changes
+
+  !> A joint that changes charts and starts at (or within the margin of) a
+  !> pole changes chart at once, at rest (its rates zero); the turn after
+  !> it takes the Darboux frame's turn (module comment).
+  pure subroutine sj_start_chart(self, scalars)
+    class(surface_joint_t), intent(inout) :: self
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    if (.not. self%charts) return
+    if (self%chart_margin(scalars(self%var_v)%q) > 0) return
+    scalars(self%var_u)%qd = 0
+    scalars(self%var_v)%qd = 0
+    call self%rebase(scalars)
+  end subroutine sj_start_chart
+
+  !> The turn about the output's z that follows the joint (module comment),
+  !> if the joint changes charts.
+  pure subroutine sj_set_chart_turn(self, turn)
+    class(surface_joint_t), intent(inout) :: self
+    integer, intent(in) :: turn
+    if (self%charts) self%var_turn = turn
+  end subroutine sj_set_chart_turn
+
+  !> The surface in the chart in use, P and the chart's name.
+  pure subroutine sj_surface_chart(self, chart)
+    class(surface_joint_t), intent(in) :: self
+    type(surface_chart_t), intent(out) :: chart
+    allocate (chart%surface, source=self%surface)
+    chart%rotation = self%chart
+    chart%index = self%chart_index
+  end subroutine sj_surface_chart
+
+  !> Takes the chart of another joint on the same surface (before a run).
+  pure subroutine sj_take_surface_chart(self, chart, changes)
+    class(surface_joint_t), intent(inout) :: self
+    type(surface_chart_t), intent(in) :: chart
+    integer, intent(in) :: changes
+    self%surface = chart%surface
+    self%chart = chart%rotation
+    self%rebases = changes
+    self%chart_index = chart%index
+  end subroutine sj_take_surface_chart
 end module kinetostatics_surface_joint

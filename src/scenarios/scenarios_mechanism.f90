@@ -10,7 +10,6 @@ module scenarios_mechanism
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_recorder, only: mechanism_series_t
   use kinetostatics_mechanism, only: mechanism_t
-  use kinetostatics_mass, only: mass_element_t
   use base_vector, only: cross
   use io_input, only: input_text_t, format_real, mark_input_failure, where_given
   use io_run_config, only: run_config_t
@@ -438,33 +437,31 @@ contains
     type(summary_t), intent(inout) :: summary
     type(mechanism_series_t), intent(in) :: s
     type(mechanism_t), intent(in) :: m
-    real(wp) :: up(3), centre(3, s%n), speed(s%n), tilt(s%n), spin(s%n)
+    real(wp) :: up(3), centre(3, s%n), speed(s%n), tilt(s%n), spin(s%n), mass, com(3), inertia(3, 3), gravity(3)
     integer :: k, i, e, axis
     character(len=:), allocatable :: b, axis_name
     do k = 1, s%nb
       b = trim(s%body_names(k))
       axis = 0
       do e = 1, m%n_elements
-        select type (body => m%elements(e)%e)
-        type is (mass_element_t)
-          if (body%frame /= s%body_frame(k)) cycle
-          up = -body%gravity
-          if (norm2(up) > 0) up = up/norm2(up)
-          if (.not. norm2(up) > 0) up = [0.0_wp, 0.0_wp, 1.0_wp]
-          axis = symmetry_axis(body%inertia)
-          do i = 1, s%n
-            associate (rot => s%body_rot(:, :, k, i), omega => s%body_omega(:, k, i))
-              centre(:, i) = s%body_r(:, k, i) + matmul(rot, body%com)
-              speed(i) = norm2(s%body_v(:, k, i) + cross(omega, matmul(rot, body%com)))
-              if (axis > 0) then
-                tilt(i) = acos(max(-1.0_wp, min(1.0_wp, dot_product(rot(:, axis), up))))
-                spin(i) = dot_product(omega, rot(:, axis))
-              else
-                spin(i) = norm2(omega)
-              end if
-            end associate
-          end do
-        end select
+        if (m%elements(e)%e%mass_frame() /= s%body_frame(k) .or. s%body_frame(k) == 0) cycle
+        call m%elements(e)%e%mass_properties(mass, com, inertia, gravity)
+        up = -gravity
+        if (norm2(up) > 0) up = up/norm2(up)
+        if (.not. norm2(up) > 0) up = [0.0_wp, 0.0_wp, 1.0_wp]
+        axis = symmetry_axis(inertia)
+        do i = 1, s%n
+          associate (rot => s%body_rot(:, :, k, i), omega => s%body_omega(:, k, i))
+            centre(:, i) = s%body_r(:, k, i) + matmul(rot, com)
+            speed(i) = norm2(s%body_v(:, k, i) + cross(omega, matmul(rot, com)))
+            if (axis > 0) then
+              tilt(i) = acos(max(-1.0_wp, min(1.0_wp, dot_product(rot(:, axis), up))))
+              spin(i) = dot_product(omega, rot(:, axis))
+            else
+              spin(i) = norm2(omega)
+            end if
+          end associate
+        end do
       end do
       call summary%add(b//'_height_final', b//' height final', dot_product(centre(:, s%n), up), 'm', &
                        'm (centre of mass, along the vertical)')
@@ -494,17 +491,16 @@ contains
     type(summary_t), intent(inout) :: summary
     type(mechanism_series_t), intent(in) :: s
     type(mechanism_t), intent(in) :: m
-    real(wp) :: weight, slip(s%n), friction(s%n)
+    real(wp) :: weight, slip(s%n), friction(s%n), mass, com(3), inertia(3, 3), gravity(3)
     integer :: k, i, e
     character(len=:), allocatable :: c
     do k = 1, s%nc
       c = trim(s%contact_names(k))
       weight = 0
       do e = 1, m%n_elements
-        select type (body => m%elements(e)%e)
-        type is (mass_element_t)
-          if (body%frame == m%contacts(k)%frame_b) weight = body%mass*norm2(body%gravity)
-        end select
+        if (m%elements(e)%e%mass_frame() /= m%contacts(k)%frame_b) cycle
+        call m%elements(e)%e%mass_properties(mass, com, inertia, gravity)
+        weight = mass*norm2(gravity)
       end do
       slip = [(norm2(s%slip(:, k, i)), i=1, s%n)]
       friction = [(norm2(s%friction(:, k, i)), i=1, s%n)]
