@@ -4,14 +4,14 @@
 !> conserves power to 1e-12), and against the general surface joint on the
 !> same plane at scattered inputs: the same output frame, velocities,
 !> accelerations and generalized forces to rounding (1e-13 of these O(1..10)
-!> numbers).
+!> numbers). A surface that is not affine (an ellipsoid) is refused.
 program test_plane_joint
   use, intrinsic :: iso_fortran_env, only: int64
   use base_kinds, only: wp
   use base_status, only: status_t
   use testing, only: check, finish_tests
   use element_checks, only: check_element, frame_motion, scalar_motion
-  use geometry_elementary, only: plane_t
+  use geometry_elementary, only: plane_t, ellipsoid_t
   use kinetostatics_state, only: frame_state_t, scalar_state_t
   use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
   use kinetostatics_plane_joint, only: plane_joint_t, new_plane_joint
@@ -35,9 +35,23 @@ program test_plane_joint
   call same_as_surface_joint(1.0_wp, 1.0_wp, 0.0_wp)
   call same_as_surface_joint(-1.0_wp, 0.6_wp, 0.8_wp)
   call kept_products()
+  call refuses_curved_surface()
   call finish_tests('test_plane_joint')
 
 contains
+
+  !> The plane joint's maps hold only for r = r(0, 0) + u r_u + v r_v.
+  subroutine refuses_curved_surface()
+    type(status_t) :: st, built
+    type(plane_joint_t) :: joint
+    type(ellipsoid_t) :: ball
+    ball = ellipsoid_t(1.0_wp, 1.0_wp, 1.0_wp, built)
+    call check(built%ok() .and. .not. ball%affine(), 'an ellipsoid is not affine')
+    call check(plane%affine(), 'a plane is affine')
+    joint = new_plane_joint('pj', 1, 2, 1, 2, ball, 1.0_wp, 1.0_wp, 0.0_wp, st)
+    call check(.not. st%ok() .and. index(st%text(), 'not a plane') > 0, 'an ellipsoid refused by the plane joint: '// &
+               st%text())
+  end subroutine refuses_curved_surface
 
   subroutine same_as_surface_joint(sigma, alpha_u, alpha_v)
     real(wp), intent(in) :: sigma, alpha_u, alpha_v
