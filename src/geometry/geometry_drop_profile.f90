@@ -29,7 +29,7 @@ module geometry_drop_profile
   use base_constants, only: pi
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_text, only: format_real
-  use numerics_quadrature, only: gl8_x, gl8_w
+  use numerics_quadrature, only: gl8_x, gl8_w, piecewise_nodes
   implicit none (type, external)
   private
   public :: drop_profile_t, new_drop_profile, smoothstep
@@ -64,7 +64,8 @@ contains
     type(status_t), intent(out) :: status
     type(drop_profile_t) :: d
     real(wp) :: turn, curve_out_height, a, b, x
-    integer :: piece, m, k, j, n, i
+    integer :: k, i
+    integer, allocatable :: pieces(:)
     real(wp) :: ends(0:3)
     if (.not. (slope_deg >= drop_min_slope_deg .and. slope_deg <= drop_max_slope_deg)) then
       call set_status(status, STATUS_INVALID_INPUT, 'slope_deg = '//format_real(slope_deg)// &
@@ -99,28 +100,17 @@ contains
     d%core = turn - (d%ramp_top + d%ramp_exit)/2
     ends = [0.0_wp, d%ramp_top, d%ramp_top + d%core, d%ramp_top + d%core + d%ramp_exit]
     ! the table over the curve-out, each piece in equal steps of <= node_spacing
-    n = 0
-    do piece = 1, 3
-      n = n + max(1, ceiling((ends(piece) - ends(piece - 1))/node_spacing))
-    end do
-    allocate (d%node(0:n), d%excess(0:n))
-    d%node(0) = 0
+    call piecewise_nodes(ends, node_spacing, d%node, pieces)
+    allocate (d%excess(0:ubound(d%node, 1)))
     d%excess(0) = 0
-    k = 0
-    do piece = 1, 3
-      m = max(1, ceiling((ends(piece) - ends(piece - 1))/node_spacing))
-      do j = 1, m
-        k = k + 1
-        a = d%node(k - 1)
-        b = ends(piece - 1) + (ends(piece) - ends(piece - 1))*j/real(m, wp)
-        if (j == m) b = ends(piece)
-        d%node(k) = b
-        x = 0
-        do i = 1, 8
-          x = x + gl8_w(i)*excess_gradient(d, 0.5_wp*(a + b) + 0.5_wp*(b - a)*gl8_x(i))
-        end do
-        d%excess(k) = d%excess(k - 1) + 0.5_wp*(b - a)*x
+    do k = 1, ubound(d%node, 1)
+      a = d%node(k - 1)
+      b = d%node(k)
+      x = 0
+      do i = 1, 8
+        x = x + gl8_w(i)*excess_gradient(d, 0.5_wp*(a + b) + 0.5_wp*(b - a)*gl8_x(i))
       end do
+      d%excess(k) = d%excess(k - 1) + 0.5_wp*(b - a)*x
     end do
     curve_out_height = d%excess(ubound(d%excess, 1)) + d%g_exit*ends(3)
     if (.not. height >= curve_out_height) then

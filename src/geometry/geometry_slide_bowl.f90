@@ -39,7 +39,7 @@ module geometry_slide_bowl
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_text, only: format_real
-  use numerics_quadrature, only: gl8_x, gl8_w
+  use numerics_quadrature, only: gl8_x, gl8_w, piecewise_nodes
   use geometry_drop_profile, only: smoothstep
   implicit none (type, external)
   private
@@ -181,7 +181,8 @@ contains
     real(wp), intent(in) :: sigma0, width_in, width_out
     type(status_t), intent(out) :: status
     real(wp) :: ends(0:3), a, c, x, y, dk(0:3), dg(0:3), s
-    integer :: n, piece, m, j, k, i
+    integer :: k, i
+    integer, allocatable :: pieces(:)
     if (.not. width_out*self%sin_beta/2 <= self%rho_out/2) then
       call set_status(status, STATUS_INVALID_INPUT, 'the transition after the bowl ('//format_real(width_out)// &
                       ' m) would carry its spiral to the axis: give a shorter transition_length or a wider outlet')
@@ -203,41 +204,30 @@ contains
     ends = [self%lo, sigma0 + width_in/2, sigma0 + self%length - width_out/2, self%hi]
     self%core_lo = ends(1)
     self%core_hi = ends(2)
-    n = 0
-    do piece = 1, 3
-      n = n + max(1, ceiling((ends(piece) - ends(piece - 1))/node_spacing))
-    end do
-    if (allocated(self%node)) deallocate (self%node, self%psi, self%rise)
-    allocate (self%node(0:n), self%psi(0:n), self%rise(0:n))
-    self%node(0) = self%lo
+    call piecewise_nodes(ends, node_spacing, self%node, pieces)
+    if (allocated(self%psi)) deallocate (self%psi, self%rise)
+    allocate (self%psi(0:ubound(self%node, 1)), self%rise(0:ubound(self%node, 1)))
     self%psi(0) = 0
     self%rise(0) = 0
-    k = 0
-    do piece = 1, 3
-      m = max(1, ceiling((ends(piece) - ends(piece - 1))/node_spacing))
-      do j = 1, m
-        k = k + 1
-        a = self%node(k - 1)
-        c = ends(piece - 1) + (ends(piece) - ends(piece - 1))*j/real(m, wp)
-        if (j == m) c = ends(piece)
-        self%node(k) = c
-        if (piece == 2) then
-          call core_integrals(self, c, x, y)
-          self%psi(k) = self%psi_core + x
-          self%rise(k) = self%rise_core + y
-          cycle
-        end if
-        x = 0; y = 0
-        do i = 1, 8
-          s = 0.5_wp*(a + c) + 0.5_wp*(c - a)*gl8_x(i)
-          call blended(self, s, dk, dg)
-          x = x + gl8_w(i)*dk(0)
-          y = y + gl8_w(i)*dg(0)
-        end do
-        self%psi(k) = self%psi(k - 1) + 0.5_wp*(c - a)*x
-        self%rise(k) = self%rise(k - 1) + 0.5_wp*(c - a)*y
+    do k = 1, ubound(self%node, 1)
+      a = self%node(k - 1)
+      c = self%node(k)
+      if (pieces(k) == 2) then
+        call core_integrals(self, c, x, y)
+        self%psi(k) = self%psi_core + x
+        self%rise(k) = self%rise_core + y
+        cycle
+      end if
+      x = 0; y = 0
+      do i = 1, 8
+        s = 0.5_wp*(a + c) + 0.5_wp*(c - a)*gl8_x(i)
+        call blended(self, s, dk, dg)
+        x = x + gl8_w(i)*dk(0)
+        y = y + gl8_w(i)*dg(0)
       end do
-      if (piece == 1) then
+      self%psi(k) = self%psi(k - 1) + 0.5_wp*(c - a)*x
+      self%rise(k) = self%rise(k - 1) + 0.5_wp*(c - a)*y
+      if (pieces(k) == 1) then   ! the core's integrals start at the first piece's end
         self%psi_core = self%psi(k)
         self%rise_core = self%rise(k)
       end if
