@@ -143,16 +143,45 @@ contains
     character(len=*), intent(in) :: name, points, group
     character(len=*), intent(in), optional :: more
     character(len=*), intent(in), optional :: field_names(:), fields(:)
+    call point_grid(self, file, name, points, group, .true., more, field_names, fields)
+  end subroutine xdmf_polyline
+
+  !> The rows of `points` (shape (k, 3), k >= 1) as a set of points (a
+  !> polyvertex) with the datasets of `group` of shape (k) or (k, 3), real or
+  !> integer, as node attributes (e.g. the impacts of a flight).
+  subroutine xdmf_point_set(self, file, name, points, group)
+    class(xdmf_t), intent(inout) :: self
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: name, points, group
+    call point_grid(self, file, name, points, group, .false.)
+  end subroutine xdmf_point_set
+
+  !> The grid of xdmf_polyline (`polyline`: the rows joined in order, real
+  !> attributes) or of xdmf_point_set (the rows alone, real and integer
+  !> attributes).
+  subroutine point_grid(self, file, name, points, group, polyline, more, field_names, fields)
+    class(xdmf_t), intent(inout) :: self
+    type(result_file_t), intent(in) :: file
+    character(len=*), intent(in) :: name, points, group
+    logical, intent(in) :: polyline
+    character(len=*), intent(in), optional :: more
+    character(len=*), intent(in), optional :: field_names(:), fields(:)
     integer, allocatable :: dims(:)
     character(len=:), allocatable :: taken
     integer :: k
     dims = file%shape_of(points)
     if (size(dims) /= 2) return
-    if (dims(1) < 2 .or. dims(2) /= 3) return
+    if (dims(1) < merge(2, 1, polyline) .or. dims(2) /= 3) return
     call add(self%fixed, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
-    call add(self%fixed, '  <Topology TopologyType="Polyline" NodesPerElement="'//format_integer(dims(1))// &
-             '" NumberOfElements="1">')
-    call add(self%fixed, '    <DataItem Dimensions="1 '//format_integer(dims(1))//'" NumberType="Int" Format="XML">')
+    if (polyline) then
+      call add(self%fixed, '  <Topology TopologyType="Polyline" NodesPerElement="'//format_integer(dims(1))// &
+               '" NumberOfElements="1">')
+      call add(self%fixed, '    <DataItem Dimensions="1 '//format_integer(dims(1))//'" NumberType="Int" Format="XML">')
+    else
+      call add(self%fixed, '  <Topology TopologyType="Polyvertex" NodesPerElement="1" NumberOfElements="'// &
+               format_integer(dims(1))//'">')
+      call add(self%fixed, '    <DataItem Dimensions="'//format_integer(dims(1))//' 1" NumberType="Int" Format="XML">')
+    end if
     call integer_lines(self%fixed, [(k, k = 0, dims(1) - 1)])
     call add(self%fixed, '    </DataItem>')
     call add(self%fixed, '  </Topology>')
@@ -160,7 +189,7 @@ contains
     call referenced_item(self%fixed, file, dims, points, .true.)
     call add(self%fixed, '  </Geometry>')
     taken = '/'
-    call group_attributes(self%fixed, file, group, points, dims(1), .false., taken)
+    call group_attributes(self%fixed, file, group, points, dims(1), .not. polyline, taken)
     if (present(more)) call group_attributes(self%fixed, file, more, points, dims(1), .false., taken)
     if (present(fields) .and. present(field_names)) then
       do k = 1, min(size(fields), size(field_names))
@@ -171,36 +200,7 @@ contains
     end if
     call add(self%fixed, '</Grid>')
     self%n_fixed = self%n_fixed + 1
-  end subroutine xdmf_polyline
-
-  !> The rows of `points` (shape (k, 3), k >= 1) as a set of points (a
-  !> polyvertex) with the datasets of `group` of shape (k) or (k, 3), real or
-  !> integer, as node attributes (e.g. the impacts of a flight).
-  subroutine xdmf_point_set(self, file, name, points, group)
-    class(xdmf_t), intent(inout) :: self
-    type(result_file_t), intent(in) :: file
-    character(len=*), intent(in) :: name, points, group
-    integer, allocatable :: dims(:)
-    character(len=:), allocatable :: taken
-    integer :: k
-    dims = file%shape_of(points)
-    if (size(dims) /= 2) return
-    if (dims(1) < 1 .or. dims(2) /= 3) return
-    call add(self%fixed, '<Grid Name="'//escaped(name)//'" GridType="Uniform">')
-    call add(self%fixed, '  <Topology TopologyType="Polyvertex" NodesPerElement="1" NumberOfElements="'// &
-             format_integer(dims(1))//'">')
-    call add(self%fixed, '    <DataItem Dimensions="'//format_integer(dims(1))//' 1" NumberType="Int" Format="XML">')
-    call integer_lines(self%fixed, [(k, k = 0, dims(1) - 1)])
-    call add(self%fixed, '    </DataItem>')
-    call add(self%fixed, '  </Topology>')
-    call add(self%fixed, '  <Geometry GeometryType="XYZ">')
-    call referenced_item(self%fixed, file, dims, points, .true.)
-    call add(self%fixed, '  </Geometry>')
-    taken = '/'
-    call group_attributes(self%fixed, file, group, points, dims(1), .true., taken)
-    call add(self%fixed, '</Grid>')
-    self%n_fixed = self%n_fixed + 1
-  end subroutine xdmf_point_set
+  end subroutine point_grid
 
   !> The datasets of `group` of shape (n) or (n, 3) as node attributes of a
   !> grid of n points (not `points` itself, nor a name in `taken`, which
