@@ -48,7 +48,7 @@ module kinetostatics_force_law
   implicit none (type, external)
   private
   public :: frame_load_t, force_law_t, force_law_box_t, contact_law_t, friction_law_t
-  public :: force_law_kind_t, law_place_t, build_law_i
+  public :: force_law_kind_t, law_place_t, build_law_i, force_at, set_interaction
 
   !> A wrench at a frame's origin, world coordinates.
   type :: frame_load_t
@@ -217,8 +217,7 @@ contains
     class(contact_law_t), intent(inout) :: self
     type(contact_state_t), intent(in) :: s
     real(wp), intent(in) :: force(3)
-    self%loads(1) = frame_load_t(s%frame_b, force, cross(s%arm_b, force))
-    self%loads(2) = frame_load_t(s%frame_a, -force, -cross(s%arm_a, force))
+    call set_interaction(self%loads, s%frame_b, s%arm_b, s%frame_a, s%arm_a, force)
   end subroutine set_contact_force
 
   !> A load from outside the two bodies (e.g. water drag): F on B at the contact point only.
@@ -226,7 +225,27 @@ contains
     class(contact_law_t), intent(inout) :: self
     type(contact_state_t), intent(in) :: s
     real(wp), intent(in) :: force(3)
-    self%loads(1) = frame_load_t(s%frame_b, force, cross(s%arm_b, force))
+    self%loads(1) = force_at(s%frame_b, s%arm_b, force)
     self%loads(2) = frame_load_t(s%frame_a, [0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp])
   end subroutine set_body_force
+
+  !> The load of the force `force` (N, world) at the point `arm` (m, world)
+  !> from the origin of frame `frame`: the force and its moment about the
+  !> origin, arm x force.
+  pure function force_at(frame, arm, force) result(load)
+    integer, intent(in) :: frame
+    real(wp), intent(in) :: arm(3), force(3)
+    type(frame_load_t) :: load
+    load = frame_load_t(frame, force, cross(arm, force))
+  end function force_at
+
+  !> An interaction: `force` on frame_b at arm_b (loads(1)), its reaction on
+  !> frame_a at arm_a (loads(2)).
+  pure subroutine set_interaction(loads, frame_b, arm_b, frame_a, arm_a, force)
+    type(frame_load_t), intent(inout) :: loads(:)
+    integer, intent(in) :: frame_b, frame_a
+    real(wp), intent(in) :: arm_b(3), arm_a(3), force(3)
+    loads(1) = force_at(frame_b, arm_b, force)
+    loads(2) = frame_load_t(frame_a, -force, -cross(arm_a, force))
+  end subroutine set_interaction
 end module kinetostatics_force_law

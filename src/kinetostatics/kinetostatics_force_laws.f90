@@ -33,7 +33,8 @@ module kinetostatics_force_laws
   use base_spec, only: spec_t, declare
   use kinetostatics_state, only: frame_state_t, scalar_state_t
   use kinetostatics_contact, only: contact_state_t
-  use kinetostatics_force_law, only: force_law_t, friction_law_t, frame_load_t, force_law_kind_t, law_place_t
+  use kinetostatics_force_law, only: force_law_t, friction_law_t, frame_load_t, force_law_kind_t, law_place_t, &
+    force_at, set_interaction
   implicit none (type, external)
   private
   public :: coulomb_friction_t, viscous_friction_t, spring_damper_t, constant_load_t, air_drag_t
@@ -287,8 +288,7 @@ contains
       end if
       tension = self%stiffness*(length - self%rest_length) + self%damping*dot_product(e, dv)
       f = -tension*e
-      self%loads(1) = frame_load_t(self%frame_j, f, cross(arm_j, f))
-      self%loads(2) = frame_load_t(self%frame_i, -f, -cross(arm_i, f))
+      call set_interaction(self%loads, self%frame_j, arm_j, self%frame_i, arm_i, f)
     end associate
   end subroutine spring_evaluate
 
@@ -361,7 +361,7 @@ contains
       arm = matmul(body%rot, self%centre)
       w = body%v + cross(body%omega, arm) - self%wind
       f = -0.5_wp*self%density*self%drag_area*norm2(w)*w
-      self%loads(1) = frame_load_t(self%frame, f, cross(arm, f))
+      self%loads(1) = force_at(self%frame, arm, f)
     end associate
   end subroutine air_drag_evaluate
 end module kinetostatics_force_laws
