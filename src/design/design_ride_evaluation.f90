@@ -32,7 +32,7 @@ module design_ride_evaluation
   private
   public :: felt_acceleration, felt_acceleration_units, tipping_lever_arm
   public :: ride_limit_t, limit_verdict_t, new_ride_limit, evaluate_limit, limit_quantities, &
-    limit_report_unit, limit_units_allowed, series_extreme, quantities_without_limit, flight_quantity
+    limit_report_unit, limit_stored_unit, limit_units_allowed, series_extreme, quantities_without_limit, flight_quantity
 
   !> ejection counts the rider's points that went over the top of an open
   !> section's wall (0 or 1: the ride ends there); `limit_max = 0` forbids it.
@@ -108,6 +108,19 @@ contains
     unit = ''
     if (k > 0) unit = trim(report_units(quantity_dimension(k)))
   end function limit_report_unit
+
+  !> The unit a result file gives limit `quantity`'s values in: its report
+  !> unit, but degrees as 'degree' (pint and UDUNITS parse it) and multiples
+  !> of |g| in `felt_units` (felt_acceleration_units).
+  pure function limit_stored_unit(quantity, felt_units) result(text)
+    character(len=*), intent(in) :: quantity, felt_units
+    character(len=:), allocatable :: text
+    text = limit_report_unit(quantity)
+    select case (text)
+    case ('g'); text = felt_units
+    case ('deg'); text = 'degree'
+    end select
+  end function limit_stored_unit
 
   pure function limit_units_allowed(quantity) result(text)
     character(len=*), intent(in) :: quantity

@@ -6,7 +6,7 @@ module io_sweep_results
   use base_kinds, only: wp
   use base_text, only: format_integer, format_real
   use base_status, only: status_t
-  use design_ride_evaluation, only: limit_report_unit, felt_acceleration_units
+  use design_ride_evaluation, only: limit_stored_unit, felt_acceleration_units
   use design_sweep, only: sweep_description_t, sweep_result_t, water_groups, N_SWEPT, swept_names, swept_units, &
     swept_descriptions, V_SEX, N_FIGURES, figure_names, figure_unit, figure_descriptions, ride_status_names, &
     V_FLOW_RATE, V_F1, V_F2, V_F3
@@ -60,7 +60,7 @@ contains
                          'it failed', status)
     do k = 1, size(sweep%limits)
       c = g//'limits/'//limit_column(k, sweep%limits(k)%quantity)//'/'
-      unit = si(limit_report_unit(sweep%limits(k)%quantity), felt_acceleration_units(sweep%rider%gravity))
+      unit = limit_stored_unit(sweep%limits(k)%quantity, felt_acceleration_units(sweep%rider%gravity))
       call file%write_text(c//'quantity', sweep%limits(k)%quantity, 'what is limited', status)
       if (sweep%limits(k)%has_minimum) call file%write_scalar(c//'minimum', sweep%limits(k)%minimum, unit, &
                                                               'the lower limit', status)
@@ -104,18 +104,6 @@ contains
     character(len=:), allocatable :: name
     name = format_integer(k)//'_'//trim(quantity)
   end function limit_column
-
-  !> The file's unit for a report unit (degrees stay degrees; g is
-  !> `felt_units`, the sweep's felt_acceleration_units).
-  pure function si(unit, felt_units) result(text)
-    character(len=*), intent(in) :: unit, felt_units
-    character(len=:), allocatable :: text
-    select case (unit)
-    case ('g'); text = felt_units
-    case ('deg'); text = 'degree'
-    case default; text = unit
-    end select
-  end function si
 
   !> One row per ride: number, status, the swept values, the water, every
   !> figure, each limit's verdict, worst and excess, the CPU time and the

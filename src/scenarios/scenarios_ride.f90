@@ -21,7 +21,7 @@ module scenarios_ride
   use water_curve_entry, only: curve_entry_note
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
   use rider_ride, only: ride_result_t, ride_series_t, check_ride_start
-  use design_ride_evaluation, only: limit_report_unit, ride_limit_t, quantities_without_limit
+  use design_ride_evaluation, only: limit_report_unit, limit_stored_unit, ride_limit_t, quantities_without_limit
   use design_ride_report, only: ride_report_t
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   use io_input, only: input_text_t, check_known_groups, format_real, invalid, where_given
@@ -36,7 +36,7 @@ module scenarios_ride
   use io_xdmf, only: xdmf_t
   use scenarios_water, only: build_water, write_slide_grid
   use scenarios_ride_flights, only: add_flights
-  use scenarios_ride_results, only: friction_name, write_ride, write_evaluation, write_ride_csv, stored_unit
+  use scenarios_ride_results, only: friction_name, write_ride, write_evaluation, write_ride_csv
   implicit none (type, external)
   private
   public :: run_ride_scenario, read_ride_description, ride_groups, check_sphere_radii, read_limit_gate, &
@@ -416,7 +416,7 @@ contains
       if (ride%flights%watched) call add_flights(summary, ride%flights)
       exceeded = 0
       do k = 1, size(r%limits)
-        unit = spaced(stored_unit(limit_report_unit(r%limits(k)%quantity), r%felt_units))
+        unit = spaced(limit_stored_unit(r%limits(k)%quantity, r%felt_units))
         if (.not. r%judged(k)) then
           line = 'limit '//r%limits(k)%quantity//': not judged (the ride did not reach the exit)'
         else if (r%verdicts(k)%exceeded) then

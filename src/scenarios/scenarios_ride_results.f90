@@ -8,14 +8,14 @@ module scenarios_ride_results
   use geometry_surface, only: surface_t
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, rider_friction_kind
   use rider_ride, only: ride_result_t, ride_series_t
-  use design_ride_evaluation, only: limit_report_unit
+  use design_ride_evaluation, only: limit_stored_unit
   use design_ride_report, only: ride_report_t
   use io_hdf5, only: result_file_t
   use io_output_files, only: text_output_t
   use scenarios_ride_flights, only: write_flights
   implicit none (type, external)
   private
-  public :: friction_name, write_ride, write_evaluation, write_ride_csv, stored_unit
+  public :: friction_name, write_ride, write_evaluation, write_ride_csv
 
 contains
 
@@ -178,7 +178,7 @@ contains
     end do
     do k = 1, size(r%limits)
       c = g//'limits/'//format_integer(k)//'_'//r%limits(k)%quantity//'/'
-      unit = stored_unit(limit_report_unit(r%limits(k)%quantity), r%felt_units)
+      unit = limit_stored_unit(r%limits(k)%quantity, r%felt_units)
       call file%write_text(c//'quantity', r%limits(k)%quantity, 'what is limited', status)
       if (r%limits(k)%has_minimum) call file%write_scalar(c//'minimum', r%limits(k)%minimum, unit, &
                                                           'the lower limit', status)
@@ -200,19 +200,6 @@ contains
                                                          'where it is first exceeded', status)
     end do
   end subroutine write_evaluation
-
-  !> The file's unit for a report unit (degrees stay degrees: pint and
-  !> UDUNITS parse 'degree'; multiples of |g| are in `felt_units`, the
-  !> report's felt_acceleration_units).
-  pure function stored_unit(unit, felt_units) result(text)
-    character(len=*), intent(in) :: unit, felt_units
-    character(len=:), allocatable :: text
-    select case (unit)
-    case ('g'); text = felt_units
-    case ('deg'); text = 'degree'
-    case default; text = unit
-    end select
-  end function stored_unit
 
   !> --ride-csv: one line per record of the ride (as /rider in the result).
   subroutine write_ride_csv(path, s, r, status)
