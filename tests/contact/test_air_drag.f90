@@ -40,12 +40,13 @@ program test_air_drag
   use kinetostatics_force_laws, only: air_drag_t, new_air_drag
   use kinetostatics_recorder, only: mechanism_series_t
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
-  use contact_flight, only: flight_ode_t, build_flight
+  use contact_flight, only: flight_ode_t
   use contact_closing, only: drive_flight, flight_after_closed
   use io_input, only: input_text_t, input_from_text
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
   use testing, only: check, check_close, finish_tests
+  use scenario_fixtures, only: number, ball_over_floor, read_flight
   implicit none (type, external)
 
   character(len=*), parameter :: nl = new_line('a')
@@ -61,33 +62,11 @@ program test_air_drag
 
 contains
 
-  function number(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=30) :: buffer
-    write (buffer, '(es24.17)') x
-    text = trim(adjustl(buffer))
-  end function number
-
   !> C_d A (m^2) of a body of `mass` whose terminal speed in air of `density` is v_t.
   pure real(wp) function drag_area_for(v_t, density) result(area)
     real(wp), intent(in) :: v_t, density
     area = 2*mass*g/(density*v_t**2)
   end function drag_area_for
-
-  !> A ball (radius 0.1 m, 0.2 kg) above a floor; `body` and `contact` are
-  !> the rest of their groups, `extra` more groups.
-  function floor_input(body, contact, extra) result(text)
-    character(len=*), intent(in) :: body, contact, extra
-    character(len=:), allocatable :: text
-    text = '&run scenario = ''contact'' /'//nl// &
-           '&solver rtol = 1e-12, atol = 1e-12, duration = 3, output_step = 0.01 /'//nl// &
-           '&shape name = ''floor'', kind = ''plane'' /'//nl// &
-           '&shape name = ''ball'', kind = ''sphere'', radius = 0.1 /'//nl// &
-           '&body name = ''ball'', mass = 0.2, '//body//' /'//nl// &
-           '&contact name = ''on_floor'', shape_1 = ''floor'', body_2 = ''ball'', shape_2 = ''ball'', '// &
-           'start = ''open'''//contact//' /'//nl//extra
-  end function floor_input
 
   !> Reads `text` and runs its open start (drive_flight) to `duration`.
   subroutine run(text, label, flight, duration, outcome, in_flight, system)
@@ -97,17 +76,11 @@ contains
     integer, intent(out) :: outcome
     integer, allocatable, intent(out) :: in_flight(:)
     type(contact_system_t), intent(out) :: system
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
     real(wp), allocatable :: q0(:), qd0(:)
-    character(len=8), allocatable :: units(:)
     type(status_t) :: st
     type(driver_result_t) :: result
     outcome = 0
-    call input_from_text(label, text, input, st)
-    call read_solver_config(input, solver, st)
-    call read_contact_config(input, system, st)
-    call build_flight(system, flight, q0, qd0, units, st)
+    call read_flight(text, label, flight, q0, qd0, st, system)
     call check(st%ok(), label//': built from the input: '//st%text())
     if (.not. st%ok()) return
     call flight%start_series(400)
@@ -191,7 +164,7 @@ contains
     integer, allocatable :: in_flight(:)
     real(wp), parameter :: h = 3, v_t = 3
     real(wp) :: t, worst_z, worst_v, worst_side, scale
-    call run(floor_input('solid_of = ''ball'', position = 0, 0, '//number(radius + h)//', drag_area = '// &
+    call run(ball_over_floor('3', 'solid_of = ''ball'', position = 0, 0, '//number(radius + h)//', drag_area = '// &
                          number(drag_area_for(v_t, dry_air_density)), '', ''), 'drop', flight, 3.0_wp, &
              outcome, in_flight, system)
     call check(outcome == DRIVE_EVENT_STOP, 'drop: ends at the landing')
@@ -239,7 +212,7 @@ contains
     integer, allocatable :: in_flight(:)
     real(wp), parameter :: h = 2, v_t = 4, arm0(3) = [0.05_wp, 0.0_wp, 0.0_wp], spin(3) = [0.0_wp, 0.0_wp, 10.0_wp]
     real(wp) :: t, centre(3), worst_centre, worst_spin, worst_v
-    call run(floor_input('centre = 0.05, 0, 0, inertia = 1e-3, 1e-3, 1e-3, position = 0, 0, '// &
+    call run(ball_over_floor('3', 'centre = 0.05, 0, 0, inertia = 1e-3, 1e-3, 1e-3, position = 0, 0, '// &
                          number(radius + h)//', velocity = 2, -0.5, 0, angular_velocity = 0, 0, 10, drag_area = '// &
                          number(drag_area_for(v_t, 1.0_wp)), '', '&contact_model air_density = 1, wind = 2, 0, 0 /'), &
              'wind', flight, 3.0_wp, outcome, in_flight, system)
@@ -282,7 +255,7 @@ contains
     integer, allocatable :: in_flight(:)
     real(wp), parameter :: h = 1, v_t = 6
     real(wp) :: k, v_s, worst_slide, scale
-    call run(floor_input('solid_of = ''ball'', position = 0, 0, '//number(radius + h)//', velocity = 0.3, 0, 0, '// &
+    call run(ball_over_floor('3', 'solid_of = ''ball'', position = 0, 0, '//number(radius + h)//', velocity = 0.3, 0, 0, '// &
                          'angular_velocity = 1, -2, 3, drag_area = '//number(drag_area_for(v_t, dry_air_density)), &
                          ', restitution = 0.5, close_speed = 0.1', ''), 'bouncing', flight, 3.0_wp, outcome, &
              in_flight, system)
@@ -370,14 +343,14 @@ contains
 
   !> The reader's refusals, each naming the group, the variable and the value.
   subroutine refusals()
-    call refused(floor_input('solid_of = ''ball'', position = 0, 0, 1, drag_area = -0.01', '', ''), &
+    call refused(ball_over_floor('3', 'solid_of = ''ball'', position = 0, 0, 1, drag_area = -0.01', '', ''), &
                  '&body: drag_area = -0.01', 'a negative drag_area')
-    call refused(floor_input('solid_of = ''ball'', position = 0, 0, 1, drag_area = 0.01', '', &
+    call refused(ball_over_floor('3', 'solid_of = ''ball'', position = 0, 0, 1, drag_area = 0.01', '', &
                              '&contact_model air_density = -1 /'), '&contact_model: air_density = -1', &
                  'a negative air_density')
-    call refused(floor_input('solid_of = ''ball'', position = 0, 0, 1', '', '&contact_model air_density = 1.1 /'), &
+    call refused(ball_over_floor('3', 'solid_of = ''ball'', position = 0, 0, 1', '', '&contact_model air_density = 1.1 /'), &
                  'no &body has one', 'the air with no drag_area')
-    call refused(floor_input('solid_of = ''ball'', position = 0, 0, 1', '', '&contact_model wind = 1, 0, 0 /'), &
+    call refused(ball_over_floor('3', 'solid_of = ''ball'', position = 0, 0, 1', '', '&contact_model wind = 1, 0, 0 /'), &
                  '&contact_model: wind', 'a wind with no drag_area')
   end subroutine refusals
 

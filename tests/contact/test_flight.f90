@@ -31,12 +31,13 @@ program test_flight
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_EVENT_STOP, DRIVE_END_TIME, &
     RECORD_EVENT, RECORD_OUTPUT
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
-  use contact_flight, only: flight_ode_t, build_flight
+  use contact_flight, only: flight_ode_t
   use contact_closing, only: drive_flight, flight_after_closed
   use io_input, only: input_text_t, input_from_text
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
   use testing, only: check, check_close, finish_tests
+  use scenario_fixtures, only: number, ball_over_floor, read_flight
   implicit none (type, external)
 
   character(len=*), parameter :: nl = new_line('a')
@@ -58,15 +59,9 @@ contains
     real(wp), intent(in) :: height   ! of the ball's lowest point above the plane (m)
     character(len=*), intent(in) :: extra   ! appended to the text
     character(len=:), allocatable :: text
-    text = '&run scenario = ''contact'' /'//nl// &
-           '&solver rtol = 1e-12, atol = 1e-12, duration = 2, output_step = 0.01 /'//nl// &
-           '&shape name = ''floor'', kind = ''plane'' /'//nl// &
-           '&shape name = ''ball'', kind = ''sphere'', radius = 0.1 /'//nl// &
-           '&body name = ''ball'', mass = 0.2, solid_of = ''ball'', position = 0, 0, '//number(radius + height)// &
-           ', velocity = '//number(u)//', 0, 0, angular_velocity = '//number(spin(1))//', '//number(spin(2))// &
-           ', '//number(spin(3))//' /'//nl// &
-           '&contact name = ''on_floor'', shape_1 = ''floor'', body_2 = ''ball'', shape_2 = ''ball'', '// &
-           'start = ''open'' /'//nl//extra
+    text = ball_over_floor('2', 'solid_of = ''ball'', position = 0, 0, '//number(radius + height)// &
+                           ', velocity = '//number(u)//', 0, 0, angular_velocity = '//number(spin(1))//', '// &
+                           number(spin(2))//', '//number(spin(3)), '', extra)
   end function ball_input
 
   !> text with its first `old` replaced by `new`.
@@ -78,29 +73,6 @@ contains
     changed = text(:at - 1)//new//text(at + len(old):)
   end function replace
 
-  function number(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=30) :: buffer
-    write (buffer, '(es24.17)') x
-    text = trim(adjustl(buffer))
-  end function number
-
-  subroutine build(text, label, flight, q0, qd0, st)
-    character(len=*), intent(in) :: text, label
-    type(flight_ode_t), intent(out) :: flight
-    real(wp), allocatable, intent(out) :: q0(:), qd0(:)
-    type(status_t), intent(out) :: st
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
-    type(contact_system_t) :: system
-    character(len=8), allocatable :: units(:)
-    call input_from_text(label, text, input, st)
-    call read_solver_config(input, solver, st)
-    call read_contact_config(input, system, st)
-    call build_flight(system, flight, q0, qd0, units, st)
-  end subroutine build
-
   subroutine dropped_ball()
     type(flight_ode_t), target :: flight
     real(wp), allocatable :: q0(:), qd0(:), e(:)
@@ -109,7 +81,7 @@ contains
     type(driver_result_t) :: result
     real(wp) :: t_land, worst_gap, worst_spin, t
     integer :: n, i
-    call build(ball_input(h, ''), 'dropped ball', flight, q0, qd0, st)
+    call read_flight(ball_input(h, ''), 'dropped ball', flight, q0, qd0, st)
     call check(st%ok(), 'dropped ball: built from the input: '//st%text())
     if (.not. st%ok()) return
     call check_close(flight%gap%gap, h, 0.0_wp, 1e-12_wp, 'dropped ball: the gap at the start (m)')
@@ -164,7 +136,7 @@ contains
     type(driver_options_t) :: options
     type(driver_result_t) :: result
     outcome = 0
-    call build(text, label, flight, q0, qd0, st)
+    call read_flight(text, label, flight, q0, qd0, st)
     call check(st%ok(), label//': built from the input: '//st%text())
     if (.not. st%ok()) return
     options%ode%rtol = 1e-12_wp
@@ -623,28 +595,28 @@ contains
     type(flight_ode_t) :: flight
     real(wp), allocatable :: q0(:), qd0(:)
     type(status_t) :: st
-    call build(ball_input(-0.01_wp, ''), 'overlap', flight, q0, qd0, st)
+    call read_flight(ball_input(-0.01_wp, ''), 'overlap', flight, q0, qd0, st)
     call check(.not. st%ok() .and. index(st%text(), 'touches or overlaps') > 0, &
                'an open start in the floor is refused: '//st%text())
-    call build(ball_input(h, '&shape name = ''ball2'', kind = ''sphere'', radius = 0.1 /'//nl// &
+    call read_flight(ball_input(h, '&shape name = ''ball2'', kind = ''sphere'', radius = 0.1 /'//nl// &
                           '&body name = ''ball2'', mass = 0.2, solid_of = ''ball2'', position = 1, 0, 0.1 /'//nl// &
                           '&contact name = ''second'', shape_1 = ''floor'', body_2 = ''ball2'', '// &
                           'shape_2 = ''ball2'' /'//nl), 'two contacts', flight, q0, qd0, st)
     call check(.not. st%ok() .and. index(st%text(), 'single contact') > 0, &
                'an open start among two contacts is refused: '//st%text())
-    call build(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', friction = ''coulomb'', mu = 0.5'), &
+    call read_flight(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', friction = ''coulomb'', mu = 0.5'), &
                'friction', flight, q0, qd0, st)
     call check(.not. st%ok() .and. index(st%text(), 'needs restitution') > 0, &
                'friction with an open start without restitution is refused (unused: the run ends at the '// &
                'landing): '//st%text())
-    call build(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', friction = ''coulomb'', '// &
+    call read_flight(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', friction = ''coulomb'', '// &
                        'mu = 0.5, restitution = 0.5'), 'friction with restitution', flight, q0, qd0, st)
     call check(st%ok(), 'friction with an open start and restitution: the closed contact''s: '//st%text())
-    call build(replace(ball_input(h, ''), 'start = ''open''', 'restitution = 0.5'), 'closed with restitution', &
+    call read_flight(replace(ball_input(h, ''), 'start = ''open''', 'restitution = 0.5'), 'closed with restitution', &
                flight, q0, qd0, st)
     call check(.not. st%ok() .and. index(st%text(), 'restitution') > 0 .and. index(st%text(), 'never lands') > 0, &
                'restitution on a closed start is refused (unused): '//st%text())
-    call build(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', close_speed = 0.1'), &
+    call read_flight(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', close_speed = 0.1'), &
                'close_speed alone', flight, q0, qd0, st)
     call check(.not. st%ok() .and. index(st%text(), 'close_speed') > 0, &
                'close_speed without restitution is refused (unused): '//st%text())

@@ -20,6 +20,7 @@ program test_revolution_bowl
   use io_input, only: input_text_t, input_from_text
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
+  use scenario_fixtures, only: number
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
 
@@ -58,14 +59,6 @@ contains
            '&contact name = ''in_bowl'', shape_1 = ''bowl'', side_1 = -1, body_2 = ''ball'', '// &
            'shape_2 = ''ball'''//contact//' /'//nl
   end function bowl_input
-
-  function number(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=30) :: buffer
-    write (buffer, '(es24.17)') x
-    text = trim(adjustl(buffer))
-  end function number
 
   subroutine run(text, model, label)
     character(len=*), intent(in) :: text, label

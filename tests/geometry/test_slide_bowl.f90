@@ -29,6 +29,7 @@ program test_slide_bowl
   use io_input, only: input_text_t, input_from_text
   use io_solver_config, only: solver_config_t
   use scenarios_point_mass, only: build_point_mass
+  use scenario_fixtures, only: joint_jumps, start_point_mass, real_text
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
 
@@ -142,32 +143,6 @@ contains
     end associate
   end subroutine bowl_geometry
 
-  !> The largest relative jump of position, unit tangent and curvature vector
-  !> (the last relative to `curvature`) between sigma -+ 1e-11 m at `at`.
-  subroutine joint_jumps(chain, at, curvature, jump)
-    type(element_chain_curve_t), intent(in) :: chain
-    real(wp), intent(in) :: at(:), curvature
-    real(wp), intent(out) :: jump(3)
-    real(wp), parameter :: h = 1e-11_wp
-    real(wp) :: r(3, 2), t(3, 2), k(3, 2), scale
-    type(curve_point_t) :: p
-    type(status_t) :: st
-    integer :: j, side
-    jump = 0
-    do j = 1, size(at)
-      do side = 1, 2
-        call chain%evaluate(at(j) + merge(-h, h, side == 1), 2, p, st)
-        r(:, side) = p%d(:, 0)
-        t(:, side) = p%d(:, 1)/norm2(p%d(:, 1))
-        k(:, side) = (p%d(:, 2) - dot_product(p%d(:, 2), t(:, side))*t(:, side))/norm2(p%d(:, 1))**2
-      end do
-      scale = max(norm2(r(:, 1)), 1.0_wp)
-      jump(1) = max(jump(1), norm2(r(:, 2) - r(:, 1))/scale)
-      jump(2) = max(jump(2), norm2(t(:, 2) - t(:, 1)))
-      jump(3) = max(jump(3), norm2(k(:, 2) - k(:, 1))/curvature)
-    end do
-  end subroutine joint_jumps
-
   !> A bowl that begins and one that ends the chain: no window there, the
   !> spiral itself up to the chain's end, derivatives included (the curvature's
   !> rate at sigma = 0 and at the end as just inside).
@@ -252,25 +227,20 @@ contains
   subroutine slide_across(transition, jump)
     character(len=*), intent(in) :: transition
     real(wp), intent(out) :: jump
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
     type(point_mass_t), target :: model
     type(ode_integrator_t) :: integrator
     type(point_mass_state_t) :: state
     type(status_t) :: st
     real(wp) :: y0(5), y(5), t, n_prev, u_end
     integer :: k
-    logical :: at_root
+    logical :: at_root, started
     type(element_chain_curve_t) :: chain
     chain = bowl_chain('sphere', 2.0_wp, st)
     u_end = chain%ends(2) + 1.5_wp   ! past the outlet's joint and its window (+- 1 m)
-    call input_from_text('<test>', point_mass_input(transition, '1'), input, st)
-    if (st%ok()) call build_point_mass(input, solver, model, y0, st)
-    call check(st%ok(), 'bowl point mass built ('//transition//'): '//st%text())
     jump = huge(1.0_wp)
-    if (.not. st%ok()) return
-    call model%state(y0, state, st)
-    call integrator%start(model, 0.0_wp, y0, solver%options, st)
+    call start_point_mass(point_mass_input(transition, '1'), 'bowl point mass ('//transition//')', model, &
+                          integrator, y0, state, started)
+    if (.not. started) return
     jump = 0
     n_prev = state%normal_force
     do k = 1, 20000
@@ -318,11 +288,4 @@ contains
                'a bowl whose turns overlap is refused by the self-intersection check: '//st%text())
   end subroutine bowl_self_intersection
 
-  function real_text(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=32) :: buf
-    write (buf, '(es10.3)') x
-    text = trim(adjustl(buf))
-  end function real_text
 end program test_slide_bowl

@@ -40,9 +40,7 @@ program test_slide_parts
   use geometry_slide_elements, only: slide_element_t, element_chain_curve_t, new_element_chain
   use numerics_ode, only: ode_integrator_t
   use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t
-  use io_input, only: input_text_t, input_from_text
-  use io_solver_config, only: solver_config_t
-  use scenarios_point_mass, only: build_point_mass
+  use scenario_fixtures, only: joint_jumps, start_point_mass, real_text
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
 
@@ -70,34 +68,6 @@ contains
     chain = new_element_chain(e, [0.0_wp, 0.0_wp, 14.0_wp], 0.0_wp, transition, status)
   end function drop_chain
 
-  !> The largest relative jump of position, unit tangent and curvature vector
-  !> between sigma - h and sigma + h (h = 1e-11 m: the functions move by
-  !> ~1e-11 of their size over it, far below 1e-9), over the joints `at`.
-  subroutine joint_jumps(chain, at, jump)
-    type(element_chain_curve_t), intent(in) :: chain
-    real(wp), intent(in) :: at(:)
-    real(wp), intent(out) :: jump(3)
-    real(wp), parameter :: h = 1e-11_wp
-    real(wp) :: r(3, 2), t(3, 2), k(3, 2), scale
-    type(curve_point_t) :: p
-    type(status_t) :: st
-    integer :: j, side
-    jump = 0
-    do j = 1, size(at)
-      do side = 1, 2
-        call chain%evaluate(at(j) + merge(-h, h, side == 1), 2, p, st)
-        r(:, side) = p%d(:, 0)
-        t(:, side) = p%d(:, 1)/norm2(p%d(:, 1))
-        k(:, side) = (p%d(:, 2) - dot_product(p%d(:, 2), t(:, side))*t(:, side))/norm2(p%d(:, 1))**2
-      end do
-      scale = max(norm2(r(:, 1)), 1.0_wp)
-      jump(1) = max(jump(1), norm2(r(:, 2) - r(:, 1))/scale)
-      jump(2) = max(jump(2), norm2(t(:, 2) - t(:, 1)))
-      ! relative to the curve-out's curvature 1/R (the curvature is 0 at some joints)
-      jump(3) = max(jump(3), norm2(k(:, 2) - k(:, 1))*radius)
-    end do
-  end subroutine joint_jumps
-
   subroutine drop_geometry()
     type(element_chain_curve_t) :: chain, sharp
     type(status_t) :: st
@@ -113,7 +83,7 @@ contains
       joints = [d%fall, d%fall + d%ramp_top, d%fall + d%ramp_top + d%core, d%total]
       call check(d%ramp_top > 0 .and. d%ramp_exit > 0 .and. d%core > 0 .and. d%fall > 0, 'the drop has all its pieces')
       call check_close(chain%ends(1), d%total, 0.0_wp, 0.0_wp, 'the drop is the first element, as long as its profile')
-      call joint_jumps(chain, joints, jump)
+      call joint_jumps(chain, joints, 1/radius, jump)   ! relative to the curve-out's 1/R
       call check(jump(1) <= 1e-9_wp, 'drop joints: position continuous to 1e-9')
       call check(jump(2) <= 1e-9_wp, 'drop joints: unit tangent continuous to 1e-9')
       call check(jump(3) <= 1e-9_wp, 'drop joints: curvature continuous to 1e-9 of 1/R')
@@ -164,7 +134,7 @@ contains
     sharp = drop_chain(1e-12_wp, st)
     call check(st%ok(), 'nearly sharp drop chain built')
     associate (d => sharp%drop)
-      call joint_jumps(sharp, [d%fall, d%total], jump)
+      call joint_jumps(sharp, [d%fall, d%total], 1/radius, jump)
     end associate
     call check(jump(3) > 0.9_wp, 'nearly sharp joints: the curvature jump is seen (the check can fail)')
     call check(jump(2) <= 1e-9_wp, 'nearly sharp joints: the tangent is still continuous')
@@ -247,8 +217,6 @@ contains
     character(len=*), intent(in) :: surface, v0, name
     real(wp), intent(in) :: speed, rho, normal
     real(wp), intent(out) :: drift(2)
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
     type(point_mass_t), target :: model
     type(ode_integrator_t) :: integrator
     type(point_mass_state_t) :: state
@@ -256,22 +224,19 @@ contains
     character(len=32) :: rate
     real(wp) :: y0(5), y(5), t, z0, worst, period
     integer :: k, n
-    logical :: at_root
+    logical :: at_root, started
     drift = huge(1.0_wp)
     write (rate, '(es23.16)') speed/rho
-    call input_from_text('<test>', '&run scenario = ''point_mass'' /'//nl// &
+    call start_point_mass('&run scenario = ''point_mass'' /'//nl// &
       '&solver method = ''adams'', rtol = 1e-12, atol = 1e-12 /'//nl//surface//nl// &
-      '&point_mass u0 = 0, v0 = '//v0//', du0 = '//trim(rate)//', dv0 = 0, friction = ''none'' /', input, st)
-    if (st%ok()) call build_point_mass(input, solver, model, y0, st)
-    call check(st%ok(), name//': built: '//st%text())
-    if (.not. st%ok()) return
-    call model%state(y0, state, st)
+      '&point_mass u0 = 0, v0 = '//v0//', du0 = '//trim(rate)//', dv0 = 0, friction = ''none'' /', name, model, &
+      integrator, y0, state, started)
+    if (.not. started) return
     call check_close(state%speed, speed, 1e-14_wp, 0.0_wp, name//': the start speed')
     call check_close(norm2(state%position(1:2)), rho, 1e-14_wp, 0.0_wp, name//': the circle''s radius')
     z0 = state%position(3)
     period = 2*pi*rho/speed
     n = 400
-    call integrator%start(model, 0.0_wp, y0, solver%options, st)
     drift = 0
     worst = 0
     do k = 1, 2*n
@@ -292,8 +257,6 @@ contains
   !> vertex of the parabola through the three records around the highest.
   subroutine halfpipe_point_mass()
     real(wp), parameter :: r = 2, wall = 2.5_wp, across = 8, along = 0.5_wp   ! m, m, m/s, m/s
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
     type(point_mass_t), target :: model
     type(ode_integrator_t) :: integrator
     type(point_mass_state_t) :: state
@@ -301,27 +264,23 @@ contains
     character(len=32) :: rate
     real(wp) :: y0(5), y(5), t, z(3), z_bottom, apex(2), e0, worst, v_min, v_max, h, drift
     integer :: k, walls, crossings
-    logical :: at_root, rising
+    logical :: at_root, rising, started
     write (rate, '(es23.16)') across/r
-    call input_from_text('<test>', '&run scenario = ''point_mass'' /'//nl// &
+    call start_point_mass('&run scenario = ''point_mass'' /'//nl// &
       '&solver method = ''adams'', rtol = 1e-12, atol = 1e-12 /'//nl// &
       '&surface kind = ''slide'' /'//nl//'&geometry kind = ''slide'' /'//nl// &
       '&slide_elements n_elements = 1, kind = ''straight'', length = 20, slope_deg = 0, '// &
       'centerline_kind = ''exact'' /'//nl// &
       '&cross_section kind = ''flume'', radius = 2, wall = 2.5 /'//nl// &
       '&point_mass u0 = 2, v0 = 1.5707963267948966, du0 = 0.5, dv0 = '//trim(rate)//', friction = ''none'' /', &
-      input, st)
-    if (st%ok()) call build_point_mass(input, solver, model, y0, st)
-    call check(st%ok(), 'halfpipe point mass built: '//st%text())
-    if (.not. st%ok()) return
-    call model%state(y0, state, st)
+      'halfpipe point mass', model, integrator, y0, state, started)
+    if (.not. started) return
     call check_close(state%speed, hypot(across, along), 1e-14_wp, 0.0_wp, 'halfpipe: the start speed')
     z_bottom = state%position(3)
     e0 = state%kinetic_energy + state%potential_energy
     h = across**2/(2*standard_gravity)
     call check(h > r + 0.5_wp .and. h < r + wall, 'halfpipe: the apex lies on the wall, 0.5 m above its joint')
     call model%surface%domain(t, z(1), v_min, v_max)
-    call integrator%start(model, 0.0_wp, y0, solver%options, st)
     z = z_bottom
     walls = 0
     crossings = 0
@@ -362,8 +321,6 @@ contains
   subroutine fall(transition, jump, v_bottom, h_bottom, v_start_height)
     character(len=*), intent(in) :: transition
     real(wp), intent(out) :: jump, v_bottom, h_bottom, v_start_height
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
     type(point_mass_t), target :: model
     type(ode_integrator_t) :: integrator
     type(point_mass_state_t) :: state
@@ -373,24 +330,21 @@ contains
     type(surface_point_t) :: pt
     real(wp) :: y0(5), y(5), t, z0, n_prev, worst, cos_pitch, kappa, kb, n_expected, z_end, length
     integer :: k
-    logical :: at_root, inside
+    logical :: at_root, inside, started
     read (transition, *) length
     chain = drop_chain(length, st)
-    call input_from_text('<test>', '&run scenario = ''point_mass'' /'//nl// &
+    jump = huge(1.0_wp); v_bottom = 0; h_bottom = 0; v_start_height = 0
+    call start_point_mass('&run scenario = ''point_mass'' /'//nl// &
       '&solver method = ''adams'', rtol = 1e-12, atol = 1e-12 /'//nl// &
       '&surface kind = ''slide'' /'//nl//'&geometry kind = ''slide'' /'//nl// &
       '&slide_elements n_elements = 3, start = 0, 0, 14, transition_length = '//transition//','// &
       ' centerline_kind = ''exact'', kind = ''drop'', ''straight'', ''curve'', length = 0, 6, 0,'// &
       ' slope_deg = 80, 3, 4, radius = 8, 0, 8, angle_deg = 0, 0, 90, drop = 10, 0, 0 /'//nl// &
       '&cross_section kind = ''circle'', radius = 0.5 /'//nl// &
-      '&point_mass u0 = 1e-4, v0 = 1.5707963267948966, du0 = 0, dv0 = 0, friction = ''none'' /', input, st)
-    if (st%ok()) call build_point_mass(input, solver, model, y0, st)
-    call check(st%ok(), 'drop point mass built: '//st%text())
-    jump = huge(1.0_wp); v_bottom = 0; h_bottom = 0; v_start_height = 0
-    if (.not. st%ok()) return
-    call model%state(y0, state, st)
+      '&point_mass u0 = 1e-4, v0 = 1.5707963267948966, du0 = 0, dv0 = 0, friction = ''none'' /', &
+      'drop point mass', model, integrator, y0, state, started)
+    if (.not. started) return
     z0 = state%position(3)
-    call integrator%start(model, 0.0_wp, y0, solver%options, st)
     jump = 0
     worst = 0
     inside = .true.
@@ -432,11 +386,4 @@ contains
     call integrator%destroy()
   end subroutine fall
 
-  function real_text(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=32) :: buf
-    write (buf, '(es10.3)') x
-    text = trim(adjustl(buf))
-  end function real_text
 end program test_slide_parts

@@ -1,0 +1,132 @@
+!> Set-ups several tests share: a number as input text or in a message, the continuity of
+!> an element chain across its joints, a point mass built from input text
+!> and started, a ball over a floor built as a flight from input text.
+module scenario_fixtures
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  use geometry_curve, only: curve_point_t
+  use geometry_slide_elements, only: element_chain_curve_t
+  use numerics_ode, only: ode_integrator_t
+  use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t
+  use contact_model, only: contact_system_t
+  use contact_flight, only: flight_ode_t, build_flight
+  use io_input, only: input_text_t, input_from_text
+  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_contact_config, only: read_contact_config
+  use scenarios_point_mass, only: build_point_mass
+  use testing, only: check
+  implicit none (type, external)
+  private
+  public :: number, real_text, joint_jumps, start_point_mass, ball_over_floor, read_flight
+
+  character(len=*), parameter :: nl = new_line('a')
+
+contains
+
+  !> x as input text, all 17 digits (es24.17).
+  function number(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=30) :: buffer
+    write (buffer, '(es24.17)') x
+    text = trim(adjustl(buffer))
+  end function number
+
+  !> x in short (es10.3), for messages.
+  function real_text(x) result(text)
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=32) :: buf
+    write (buf, '(es10.3)') x
+    text = trim(adjustl(buf))
+  end function real_text
+
+  !> The largest relative jump of position, unit tangent and curvature vector
+  !> (the last relative to `curvature`, 1/m) between sigma - h and sigma + h
+  !> (h = 1e-11 m: the functions move by ~1e-11 of their size over it, far
+  !> below 1e-9), over the joints `at`.
+  subroutine joint_jumps(chain, at, curvature, jump)
+    type(element_chain_curve_t), intent(in) :: chain
+    real(wp), intent(in) :: at(:), curvature
+    real(wp), intent(out) :: jump(3)
+    real(wp), parameter :: h = 1e-11_wp
+    real(wp) :: r(3, 2), t(3, 2), k(3, 2), scale
+    type(curve_point_t) :: p
+    type(status_t) :: st
+    integer :: j, side
+    jump = 0
+    do j = 1, size(at)
+      do side = 1, 2
+        call chain%evaluate(at(j) + merge(-h, h, side == 1), 2, p, st)
+        r(:, side) = p%d(:, 0)
+        t(:, side) = p%d(:, 1)/norm2(p%d(:, 1))
+        k(:, side) = (p%d(:, 2) - dot_product(p%d(:, 2), t(:, side))*t(:, side))/norm2(p%d(:, 1))**2
+      end do
+      scale = max(norm2(r(:, 1)), 1.0_wp)
+      jump(1) = max(jump(1), norm2(r(:, 2) - r(:, 1))/scale)
+      jump(2) = max(jump(2), norm2(t(:, 2) - t(:, 1)))
+      jump(3) = max(jump(3), norm2(k(:, 2) - k(:, 1))/curvature)
+    end do
+  end subroutine joint_jumps
+
+  !> The point mass of the input `text` (a point_mass scenario), built and
+  !> its integration started at t = 0 (checked under `name`): its start y0
+  !> and state there. `model` must be a target of the caller's (the
+  !> integrator keeps it); ok: built and started.
+  subroutine start_point_mass(text, name, model, integrator, y0, state, ok)
+    character(len=*), intent(in) :: text, name
+    type(point_mass_t), intent(inout), target :: model
+    type(ode_integrator_t), intent(inout) :: integrator
+    real(wp), intent(out) :: y0(5)
+    type(point_mass_state_t), intent(out) :: state
+    logical, intent(out) :: ok
+    type(input_text_t) :: input
+    type(solver_config_t) :: solver
+    type(status_t) :: st
+    y0 = 0
+    call input_from_text('<test>', text, input, st)
+    if (st%ok()) call build_point_mass(input, solver, model, y0, st)
+    call check(st%ok(), name//': built: '//st%text())
+    ok = st%ok()
+    if (.not. ok) return
+    call model%state(y0, state, st)
+    if (st%ok()) call integrator%start(model, 0.0_wp, y0, solver%options, st)
+    call check(st%ok(), name//': started: '//st%text())
+    ok = st%ok()
+  end subroutine start_point_mass
+
+  !> A contact scenario: a ball (radius 0.1 m, 0.2 kg) over a plane floor,
+  !> an open contact between them, solved to rtol = atol = 1e-12 for
+  !> `duration` s with records every 0.01 s; `body` and `contact` are the
+  !> rest of their groups, `extra` more groups.
+  function ball_over_floor(duration, body, contact, extra) result(text)
+    character(len=*), intent(in) :: duration, body, contact, extra
+    character(len=:), allocatable :: text
+    text = '&run scenario = ''contact'' /'//nl// &
+           '&solver rtol = 1e-12, atol = 1e-12, duration = '//duration//', output_step = 0.01 /'//nl// &
+           '&shape name = ''floor'', kind = ''plane'' /'//nl// &
+           '&shape name = ''ball'', kind = ''sphere'', radius = 0.1 /'//nl// &
+           '&body name = ''ball'', mass = 0.2, '//body//' /'//nl// &
+           '&contact name = ''on_floor'', shape_1 = ''floor'', body_2 = ''ball'', shape_2 = ''ball'', '// &
+           'start = ''open'''//contact//' /'//nl//extra
+  end function ball_over_floor
+
+  !> The flight of the contact scenario in `text` (named `label` in
+  !> messages), its start (q0, qd0) and the system read.
+  subroutine read_flight(text, label, flight, q0, qd0, st, system)
+    character(len=*), intent(in) :: text, label
+    type(flight_ode_t), intent(out) :: flight
+    real(wp), allocatable, intent(out) :: q0(:), qd0(:)
+    type(status_t), intent(out) :: st
+    type(contact_system_t), intent(out), optional :: system
+    type(input_text_t) :: input
+    type(solver_config_t) :: solver
+    type(contact_system_t) :: read
+    character(len=8), allocatable :: units(:)
+    call input_from_text(label, text, input, st)
+    call read_solver_config(input, solver, st)
+    call read_contact_config(input, read, st)
+    call build_flight(read, flight, q0, qd0, units, st)
+    if (present(system)) system = read
+  end subroutine read_flight
+end module scenario_fixtures
