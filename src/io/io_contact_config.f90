@@ -12,6 +12,7 @@ module io_contact_config
   use io_input, only: input_text_t, group_reader_t, open_group, group_count, format_vector
   use io_friction_config, only: friction_law_variables, friction_law_names, read_friction_law
   use io_surface_config, only: read_surface_config, surface_variables, surface_source_t
+  use io_xdmf, only: colon_refusal
   implicit none (type, external)
   private
   public :: read_contact_config, contact_groups, contact_repeatable_groups
@@ -114,6 +115,8 @@ contains
       call r%invalid('name', '''''', 'every &body needs a name', status)
     else if (trim(name) == 'ground') then
       call r%invalid('name', '''ground''', '''ground'' is the fixed frame; name the body otherwise', status)
+    else if (len(colon_refusal(name)) > 0) then
+      call r%invalid('name', ''''//trim(name)//'''', 'a body''s name '//colon_refusal(name), status)
     end if
     do j = 1, k - 1
       if (status%ok() .and. system%bodies(j)%name == trim(name)) &
@@ -221,6 +224,8 @@ contains
       call read_friction_law(r, trim(friction), c%friction, status)
       if (.not. status%ok()) return
       if (len_trim(name) == 0) call r%invalid('name', '''''', 'every &contact needs a name', status)
+      if (status%ok() .and. len(colon_refusal(name)) > 0) &
+        call r%invalid('name', ''''//trim(name)//'''', 'a contact''s name '//colon_refusal(name), status)
       do j = 1, k - 1
         if (status%ok() .and. system%contacts(j)%name == trim(name)) &
           call r%invalid('name', ''''//trim(name)//'''', 'another &contact has this name', status)

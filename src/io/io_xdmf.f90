@@ -13,7 +13,11 @@
 !>   abort (SIGABRT) when the .xmf is named without one (`ride.xmf` gives
 !>   `ride.xmfride.h5`): open `./ride.xmf` or a full path (File > Open does).
 !>   Only what a grid needs at each time step (a few points, a box's corners)
-!>   and the connectivities are inline (Format="XML").
+!>   and the connectivities are inline (Format="XML"). A ':' cannot stand in
+!>   a reference (no escape exists; the "XDMF Reader" splits it at the last
+!>   ':', the Xdmf3 readers at the first): the result file's name and every
+!>   name that becomes a referenced group (a body's, a contact's) are refused
+!>   with one (colon_refusal).
 !> - A surface grid is a structured grid (2DSMesh) with XYZ points; a path a
 !>   polyline with explicit connectivity (the Xdmf3 readers make no cell
 !>   without it), with the real (n) and (n, 3) datasets of its groups as
@@ -33,7 +37,7 @@ module io_xdmf
   use io_hdf5, only: result_file_t
   implicit none (type, external)
   private
-  public :: xdmf_t, xdmf_path, attach_surface_view, body_shape_t
+  public :: xdmf_t, xdmf_path, attach_surface_view, body_shape_t, colon_refusal
 
   integer, parameter :: max_steps = 200   ! time steps of a temporal collection
   integer, parameter :: per_line = 6      ! values per line of a DataItem
@@ -76,6 +80,16 @@ contains
 
   !> The XDMF file next to a result: `<name>.xmf` for `<name>.h5`, else the
   !> result's name with `.xmf` appended.
+  !> Why `name` cannot name a result file or a group that the XDMF view
+  !> references ('' when it can): a ':' in it (module comment).
+  pure function colon_refusal(name) result(why)
+    character(len=*), intent(in) :: name
+    character(len=:), allocatable :: why
+    why = ''
+    if (index(name, ':') > 0) why = 'must not contain '':'': the XDMF view beside the result names each dataset '// &
+      'as "file.h5:/group/dataset", and ParaView''s readers split that at a '':'''
+  end function colon_refusal
+
   pure function xdmf_path(h5_path) result(path)
     character(len=*), intent(in) :: h5_path
     character(len=:), allocatable :: path

@@ -6,7 +6,7 @@ module scenarios_registry
   use io_input, only: input_text_t, load_input_file, group_present, where_given
   use io_system, only: write_standard_output
   use io_output_files, only: start_run_files, claim_output
-  use io_xdmf, only: xdmf_path
+  use io_xdmf, only: xdmf_path, colon_refusal
   use io_mesh_export, only: export_result_meshes
   use io_builtin_inputs, only: builtin_input
   use io_templates, only: template_from_spec
@@ -52,7 +52,8 @@ contains
   !> creatable (its folder exists and is writable: exit 3 if not), not a
   !> folder, device, FIFO or socket (3: the finished file is renamed onto the
   !> path, which would replace it; -o /dev/null would destroy the device as
-  !> root), not a file the run reads (1) and not another output (1).
+  !> root), not a file the run reads (1) and not another output (1); the
+  !> result file's name has no ':' (1: the XDMF view could not name it).
   !> `from_command_line`: the result path came from -o.
   subroutine claim_outputs(input, run, from_command_line, status)
     type(input_text_t), intent(in) :: input
@@ -67,6 +68,13 @@ contains
     else
       where = where_given(input, 'run', 'output')//': &run: output = '''//path//''''
     end if
+    ! the file's own name (the view references it without its folder)
+    associate (file_name => path(index(path, '/', back=.true.) + 1:))
+      if (len(colon_refusal(file_name)) > 0) then
+        call set_status(status, STATUS_INVALID_INPUT, where//': the result file''s name '//colon_refusal(file_name))
+        return
+      end if
+    end associate
     call claim_output(path, where, 'the result file', status)
     if (status%ok()) call claim_output(xdmf_path(path), where, 'the result file', status, part='XDMF view')
     if (.not. allocated(run%summary_json)) return
