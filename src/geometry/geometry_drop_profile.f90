@@ -29,7 +29,7 @@ module geometry_drop_profile
   use base_constants, only: pi
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_text, only: format_real
-  use numerics_quadrature, only: gl8_x, gl8_w, piecewise_nodes
+  use numerics_quadrature, only: gl8_x, gl8_w, piecewise_nodes, node_below
   implicit none (type, external)
   private
   public :: drop_profile_t, new_drop_profile, smoothstep
@@ -63,8 +63,8 @@ contains
     real(wp), intent(in) :: height, slope_deg, radius, exit_gradient, ramp
     type(status_t), intent(out) :: status
     type(drop_profile_t) :: d
-    real(wp) :: turn, curve_out_height, a, b, x
-    integer :: k, i
+    real(wp) :: turn, curve_out_height
+    integer :: k
     integer, allocatable :: pieces(:)
     real(wp) :: ends(0:3)
     if (.not. (slope_deg >= drop_min_slope_deg .and. slope_deg <= drop_max_slope_deg)) then
@@ -104,13 +104,7 @@ contains
     allocate (d%excess(0:ubound(d%node, 1)))
     d%excess(0) = 0
     do k = 1, ubound(d%node, 1)
-      a = d%node(k - 1)
-      b = d%node(k)
-      x = 0
-      do i = 1, 8
-        x = x + gl8_w(i)*excess_gradient(d, 0.5_wp*(a + b) + 0.5_wp*(b - a)*gl8_x(i))
-      end do
-      d%excess(k) = d%excess(k - 1) + 0.5_wp*(b - a)*x
+      d%excess(k) = d%excess(k - 1) + excess_integral(d, d%node(k - 1), d%node(k))
     end do
     curve_out_height = d%excess(ubound(d%excess, 1)) + d%g_exit*ends(3)
     if (.not. height >= curve_out_height) then
@@ -161,6 +155,19 @@ contains
     excess_gradient = q(0)/sqrt(1 - q(0)**2) - d%g_exit
   end function excess_gradient
 
+  !> int_a^b (g - g_exit) ds over one step of the table (8-point Gauss-Legendre).
+  pure real(wp) function excess_integral(d, a, b) result(integral)
+    type(drop_profile_t), intent(in) :: d
+    real(wp), intent(in) :: a, b
+    real(wp) :: x
+    integer :: i
+    x = 0
+    do i = 1, 8
+      x = x + gl8_w(i)*excess_gradient(d, 0.5_wp*(a + b) + 0.5_wp*(b - a)*gl8_x(i))
+    end do
+    integral = 0.5_wp*(b - a)*x
+  end function excess_integral
+
   !> sin(pitch) at sigma (m) and its sigma-derivatives (q(0:3)).
   pure subroutine drop_pitch_sine(self, sigma, q)
     class(drop_profile_t), intent(in) :: self
@@ -181,8 +188,8 @@ contains
     class(drop_profile_t), intent(in) :: self
     real(wp), intent(in) :: sigma
     real(wp), intent(out) :: dg(0:3), dint
-    real(wp) :: q(0:3), c, g1, g2, g3, s, a, x
-    integer :: lo, hi, mid, n
+    real(wp) :: q(0:3), c, g1, g2, g3, s
+    integer :: lo
     dg = 0
     if (sigma >= self%total) then
       dint = (self%g_top - self%g_exit)*self%fall + self%excess(ubound(self%excess, 1))
@@ -202,22 +209,8 @@ contains
       return
     end if
     s = sigma - self%fall
-    lo = 0
-    hi = ubound(self%node, 1)
-    do while (hi - lo > 1)
-      mid = (lo + hi)/2
-      if (self%node(mid) <= s) then
-        lo = mid
-      else
-        hi = mid
-      end if
-    end do
-    a = self%node(lo)
-    x = 0
-    do n = 1, 8
-      x = x + gl8_w(n)*excess_gradient(self, 0.5_wp*(a + s) + 0.5_wp*(s - a)*gl8_x(n))
-    end do
-    dint = (self%g_top - self%g_exit)*self%fall + self%excess(lo) + 0.5_wp*(s - a)*x
+    lo = node_below(self%node, s)
+    dint = (self%g_top - self%g_exit)*self%fall + self%excess(lo) + excess_integral(self, self%node(lo), s)
   end subroutine drop_deviation
 
   !> Smoothstep S(t) and its t-derivatives (d(0:3)) and its integral P(t) =

@@ -39,7 +39,7 @@ module geometry_slide_bowl
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_text, only: format_real
-  use numerics_quadrature, only: gl8_x, gl8_w, piecewise_nodes
+  use numerics_quadrature, only: gl8_x, gl8_w, piecewise_nodes, node_below
   use geometry_drop_profile, only: smoothstep
   implicit none (type, external)
   private
@@ -180,8 +180,8 @@ contains
     class(bowl_spiral_t), intent(inout) :: self
     real(wp), intent(in) :: sigma0, width_in, width_out
     type(status_t), intent(out) :: status
-    real(wp) :: ends(0:3), a, c, x, y, dk(0:3), dg(0:3), s
-    integer :: k, i
+    real(wp) :: ends(0:3), a, c, x, y
+    integer :: k
     integer, allocatable :: pieces(:)
     if (.not. width_out*self%sin_beta/2 <= self%rho_out/2) then
       call set_status(status, STATUS_INVALID_INPUT, 'the transition after the bowl ('//format_real(width_out)// &
@@ -218,15 +218,9 @@ contains
         self%rise(k) = self%rise_core + y
         cycle
       end if
-      x = 0; y = 0
-      do i = 1, 8
-        s = 0.5_wp*(a + c) + 0.5_wp*(c - a)*gl8_x(i)
-        call blended(self, s, dk, dg)
-        x = x + gl8_w(i)*dk(0)
-        y = y + gl8_w(i)*dg(0)
-      end do
-      self%psi(k) = self%psi(k - 1) + 0.5_wp*(c - a)*x
-      self%rise(k) = self%rise(k - 1) + 0.5_wp*(c - a)*y
+      call deviation_integrals(self, a, c, x, y)
+      self%psi(k) = self%psi(k - 1) + x
+      self%rise(k) = self%rise(k - 1) + y
       if (pieces(k) == 1) then   ! the core's integrals start at the first piece's end
         self%psi_core = self%psi(k)
         self%rise_core = self%rise(k)
@@ -294,8 +288,8 @@ contains
     class(bowl_spiral_t), intent(in) :: self
     real(wp), intent(in) :: sigma
     real(wp), intent(out) :: dk(0:3), dpsi, dg(0:3), dint
-    real(wp) :: a, x, y, s, k(0:3), g(0:3)
-    integer :: lo, hi, mid, i
+    real(wp) :: x, y
+    integer :: lo
     dk = 0; dg = 0; dpsi = 0; dint = 0
     ! a bowl that begins or ends the chain has no window there: the spiral
     ! itself, with its derivatives, up to the chain's end
@@ -312,27 +306,30 @@ contains
       dint = self%rise_core + y
       return
     end if
-    lo = 0
-    hi = ubound(self%node, 1)
-    do while (hi - lo > 1)
-      mid = (lo + hi)/2
-      if (self%node(mid) <= sigma) then
-        lo = mid
-      else
-        hi = mid
-      end if
-    end do
-    a = self%node(lo)
+    lo = node_below(self%node, sigma)
+    call deviation_integrals(self, self%node(lo), sigma, x, y)
+    dpsi = self%psi(lo) + x
+    dint = self%rise(lo) + y
+  end subroutine bowl_deviation
+
+  !> The integrals of the blended deviations kappa_b and g_b from a to b
+  !> (8-point Gauss-Legendre over one step of the table).
+  pure subroutine deviation_integrals(self, a, b, dpsi, dint)
+    type(bowl_spiral_t), intent(in) :: self
+    real(wp), intent(in) :: a, b
+    real(wp), intent(out) :: dpsi, dint
+    real(wp) :: x, y, s, k(0:3), g(0:3)
+    integer :: i
     x = 0; y = 0
     do i = 1, 8
-      s = 0.5_wp*(a + sigma) + 0.5_wp*(sigma - a)*gl8_x(i)
+      s = 0.5_wp*(a + b) + 0.5_wp*(b - a)*gl8_x(i)
       call blended(self, s, k, g)
       x = x + gl8_w(i)*k(0)
       y = y + gl8_w(i)*g(0)
     end do
-    dpsi = self%psi(lo) + 0.5_wp*(sigma - a)*x
-    dint = self%rise(lo) + 0.5_wp*(sigma - a)*y
-  end subroutine bowl_deviation
+    dpsi = 0.5_wp*(b - a)*x
+    dint = 0.5_wp*(b - a)*y
+  end subroutine deviation_integrals
 
   !> The integrals of the deviations from core_lo to sigma, where W_b = 1,
   !> closed-form: int kappa_b = -s cot(beta) ln(rho/rho(core_lo)) and

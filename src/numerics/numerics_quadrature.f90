@@ -6,12 +6,13 @@
 !> ones to 16 digits.
 !>
 !> piecewise_nodes: the nodes of an integral table over consecutive pieces,
-!> each in equal steps (geometry_drop_profile, geometry_slide_bowl).
+!> each in equal steps (geometry_drop_profile, geometry_slide_bowl);
+!> node_below: where a value lies in such a table.
 module numerics_quadrature
   use base_kinds, only: wp
   implicit none (type, external)
   private
-  public :: piecewise_nodes
+  public :: piecewise_nodes, node_below
 
   real(wp), parameter, public :: gl8_x(8) = [-0.9602898564975363_wp, -0.7966664774136267_wp, &
     -0.5255324099163290_wp, -0.1834346424956498_wp, 0.1834346424956498_wp, &
@@ -55,4 +56,21 @@ contains
       steps = max(1, ceiling((ends(p) - ends(p - 1))/spacing))
     end function steps
   end subroutine piecewise_nodes
+
+  !> The index lo of the last node <= x of the increasing nodes(0:n), by
+  !> bisection (0 below nodes(1), n - 1 at or beyond nodes(n - 1)).
+  pure integer function node_below(nodes, x) result(lo)
+    real(wp), intent(in) :: nodes(0:), x
+    integer :: hi, mid
+    lo = 0
+    hi = ubound(nodes, 1)
+    do while (hi - lo > 1)
+      mid = (lo + hi)/2
+      if (nodes(mid) <= x) then
+        lo = mid
+      else
+        hi = mid
+      end if
+    end do
+  end function node_below
 end module numerics_quadrature
