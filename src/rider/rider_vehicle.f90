@@ -25,7 +25,6 @@ module rider_vehicle
   use geometry_surface, only: surface_t
   use base_vector, only: cross
   use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
-  use kinetostatics_mass, only: mass_element_t
   use kinetostatics_recorder, only: mechanism_series_t
   use rider_extremes, only: felt_acceleration
   use kinetostatics_models, only: sled_description_t, build_sled_model
@@ -213,19 +212,16 @@ contains
     type(mechanism_series_t), intent(in) :: s
     real(wp), allocatable, intent(out) :: speed(:), felt(:, :)
     type(status_t), intent(inout) :: status
-    real(wp) :: residual, arm(3), acceleration(3), gravity(3), com(3)
+    real(wp) :: residual, arm(3), acceleration(3), gravity(3), com(3), mass, inertia(3, 3)
     integer :: i, k, e, frame
     allocate (speed(s%n), felt(3, s%n))
     speed = 0
     felt = 0
     frame = 0
     do e = 1, m%n_elements
-      select type (body => m%elements(e)%e)
-      type is (mass_element_t)
-        frame = body%frame
-        com = body%com
-        gravity = body%gravity
-      end select
+      if (m%elements(e)%e%mass_frame() == 0) cycle   ! the element carries no mass
+      frame = m%elements(e)%e%mass_frame()
+      call m%elements(e)%e%mass_properties(mass, com, inertia, gravity)
     end do
     if (frame == 0) then
       call set_status(status, STATUS_INTERNAL, 'vehicle figures: the mechanism has no body')
