@@ -39,10 +39,19 @@
 !> and result depend only on the seed and its number. The best start (an optimum before any other
 !> outcome, then the least acceleration cost) is the result.
 !>
+!> Robust design (design_robust_cost): the rides may be a population's
+!> members (setup%members, each its own body and start), and the cost's
+!> acceleration part the worst ride or a quantile (setup%cost): then the
+!> first acceleration residual is that statistic and the others are 0, so
+!> the residuals keep their number (2 per ride) and a population of one is
+!> the ordinary optimisation of its one ride, to the bit.
+!>
 !> All rides of one evaluation, and of all difference points, are
 !> independent: they run in `threads` OpenMP threads, with the same numbers;
 !> with several starts the starts run in the threads instead (each one's
-!> rides one after the other), with the same numbers again.
+!> rides one after the other), with the same numbers again, except with a
+!> population: its rides are many, so the starts run one after the other
+!> and each design's rides share the threads.
 !>
 !> The design space (the slide of a design, the drawn starts) is
 !> design_slide_design; its names are public here too, as callers know them.
@@ -59,6 +68,7 @@ module design_geometry_optimization
     least_squares_result_t, solve_least_squares
   use design_cuboid_ride, only: cuboid_t, cuboid_start_t, cuboid_ride_options_t, cuboid_ride_t
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride, BODY_CUBOID
+  use design_robust_cost, only: ride_member_t, COST_SUM, robust_maximum, worst_ride
   implicit none (type, external)
   private
   public :: slide_design_t, optimization_setup_t, design_evaluation_t, optimization_result_t
@@ -82,6 +92,10 @@ module design_geometry_optimization
     real(wp) :: start_speed = 0.5_wp          !< m/s
     real(wp) :: start_v = pi/2                !< rad, the bottom of the section at u = 0
     type(cuboid_ride_options_t) :: ride
+    type(ride_member_t), allocatable :: members(:)   !< a population, ride i's body and start (its
+                                                     !< angle start_angles(i)); none: body, start_speed, start_v
+    integer :: cost = COST_SUM                !< the acceleration part of the cost (design_robust_cost)
+    real(wp) :: quantile = 0.9_wp             !< q of COST_QUANTILE
     real(wp) :: lever_limit = 0.25_wp         !< m (half the body's width)
     integer :: constraint = CONSTRAINT_PENALTY
     real(wp) :: penalty_factor = 5e3_wp       !< 1/m x m/s^2 (thesis: 5.0e3)
@@ -114,7 +128,9 @@ module design_geometry_optimization
   type :: design_evaluation_t
     real(wp), allocatable :: x(:)
     type(cuboid_ride_t), allocatable :: rides(:)
-    real(wp) :: acceleration_cost = 0      !< 1/2 sum max|a|^2, (m/s^2)^2
+    real(wp) :: acceleration_cost = 0      !< the cost without constraint terms (setup%cost), (m/s^2)^2
+    real(wp) :: robust_acceleration = 0    !< m/s^2, the worst ride's or the quantile (COST_SUM: the worst)
+    integer :: worst_ride = 0              !< the ride of the largest acceleration
     real(wp) :: max_lever_arm = 0          !< m, over all rides (huge if a body lifts off)
     real(wp) :: max_tipping_excess = 0     !< m, over all rides
   end type design_evaluation_t
@@ -194,7 +210,14 @@ contains
         return
       end if
     end do
-    evaluation%acceleration_cost = 0.5_wp*sum(evaluation%rides%max_acceleration**2)
+    evaluation%worst_ride = worst_ride(evaluation%rides%max_acceleration)
+    if (setup%cost == COST_SUM) then
+      evaluation%acceleration_cost = 0.5_wp*sum(evaluation%rides%max_acceleration**2)
+      evaluation%robust_acceleration = evaluation%rides(evaluation%worst_ride)%max_acceleration
+    else
+      evaluation%robust_acceleration = robust_maximum(evaluation%rides%max_acceleration, setup%cost, setup%quantile)
+      evaluation%acceleration_cost = 0.5_wp*evaluation%robust_acceleration**2
+    end if
     evaluation%max_lever_arm = maxval(evaluation%rides%max_lever_arm)
     evaluation%max_tipping_excess = maxval(evaluation%rides%max_tipping_excess)
   end subroutine evaluate_design
@@ -213,19 +236,37 @@ contains
     description%body = BODY_CUBOID
     description%with_water = .false.
     allocate (description%water%slide, source=slide)
-    description%cuboid = setup%body
-    description%cuboid_start = cuboid_start_t(u=u_min, v=setup%start_v, speed=setup%start_speed, &
-                                              angle=setup%start_angles(i))
+    if (allocated(setup%members)) then
+      description%cuboid = setup%members(i)%body
+      description%cuboid_start = cuboid_start_t(u=u_min, v=setup%members(i)%v, speed=setup%members(i)%speed, &
+                                                angle=setup%start_angles(i))
+    else
+      description%cuboid = setup%body
+      description%cuboid_start = cuboid_start_t(u=u_min, v=setup%start_v, speed=setup%start_speed, &
+                                                angle=setup%start_angles(i))
+    end if
     description%cuboid_options = options
     job = run_ride(description)
     ride = job%cuboid
     status = job%status
-    if (.not. status%ok()) call prefix_status(status, 'ride from '//format_short(setup%start_angles(i)*180/pi)// &
-                                              ' deg')
+    if (.not. status%ok()) call prefix_status(status, ride_name(setup, i))
   end subroutine ride_one
 
+  !> Ride i in words: its start angle, or its member number in a population.
+  function ride_name(setup, i) result(text)
+    type(optimization_setup_t), intent(in) :: setup
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    if (allocated(setup%members)) then
+      text = 'ride of member '//format_integer(i)
+    else
+      text = 'ride from '//format_short(setup%start_angles(i)*180/pi)//' deg'
+    end if
+  end function ride_name
+
   !> The residuals of an evaluated design: the maximum acceleration of each
-  !> ride, then one constraint residual per ride.
+  !> ride (COST_SUM; else the population's statistic, then zeros), then one
+  !> constraint residual per ride.
   pure subroutine residuals_of(problem, evaluation, r)
     class(optimization_problem_t), intent(in) :: problem
     type(design_evaluation_t), intent(in) :: evaluation
@@ -233,7 +274,12 @@ contains
     integer :: i, n
     real(wp) :: g
     n = size(evaluation%rides)
-    r(1:n) = evaluation%rides%max_acceleration
+    if (problem%setup%cost == COST_SUM) then
+      r(1:n) = evaluation%rides%max_acceleration
+    else
+      r(1) = robust_maximum(evaluation%rides%max_acceleration, problem%setup%cost, problem%setup%quantile)
+      r(2:n) = 0
+    end if
     do i = 1, n
       g = evaluation%rides(i)%max_tipping_excess
       select case (problem%mode)
@@ -296,7 +342,8 @@ contains
     if (real(now - self%clock_last, wp) < progress_interval()*real(rate, wp)) return
     self%clock_last = now
     call self%setup%log('optimize: '//self%label//format_integer(self%designs)//' designs evaluated ('// &
-                        format_integer(self%designs*size(self%setup%start_angles))//' rides)')
+                        format_integer(self%designs*size(self%setup%start_angles))//' rides), least cost so far '// &
+                        format_short(self%best_cost))
   end subroutine progress
 
   !> All rides of all points in one parallel loop.
@@ -356,6 +403,7 @@ contains
     type(status_t), allocatable :: statuses(:)
     real(wp), allocatable :: x0(:), points(:, :)
     integer :: k, best, total
+    logical :: parallel_starts
 
     if (size(setup%start_angles) < 1) then
       call set_status(status, STATUS_INVALID_INPUT, 'geometry optimisation: no rides (start_angles)')
@@ -370,9 +418,10 @@ contains
     points = start_points(setup%design, max(1, setup%starts), setup%seed)
     allocate (results(size(points, 2)), statuses(size(points, 2)))
     one = setup
-    if (size(results) > 1) one%threads = 1   ! the starts take the threads
+    parallel_starts = size(results) > 1 .and. .not. allocated(setup%members)
+    if (parallel_starts) one%threads = 1   ! the starts take the threads
     !$omp parallel do num_threads(max(1, setup%threads)) schedule(dynamic, 1) &
-    !$omp if (size(results) > 1 .and. setup%threads > 1)
+    !$omp if (parallel_starts .and. setup%threads > 1)
     do k = 1, size(results)
       call optimize_from(one, points(:, k), k, size(results) > 1, results(k), statuses(k))
     end do
@@ -591,6 +640,7 @@ contains
     do i = 1, size(e%rides)
       associate (r => e%rides(i))
         ride = 'ride at '//format_short(r%start_angle*180/pi)//' deg'
+        if (allocated(setup%members)) ride = 'member '//format_integer(i)
         if (r%lifts_off) then
           call append_item(text, ride//' lifts off: smallest normal force '//format_short(r%min_normal_force)// &
                            ' N, must stay > 0', '; ')

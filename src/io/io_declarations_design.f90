@@ -141,6 +141,12 @@ module io_declarations_design
       high=1e12_wp, open_low=.true., meaning='the thesis''s penalty factor'), &
     declaration_t(groups='optimize', name='lever_tolerance', unit='m', default='1e-4', low=0.0_wp, high=1.0_wp, &
       open_low=.true., meaning='largest tipping excess accepted at the end (the constraint check)'), &
+    declaration_t(groups='optimize', name='population_cost', kind=VALUE_WORDS, &
+      default='''worst'' with &sweep, else ''sum''', choices='sum worst quantile', &
+      meaning='the acceleration part of the cost over the rides: their sum (4.49), the worst ride, or the '// &
+      '`quantile` of the rides (docs/design.md, "Robust design over a population")'), &
+    declaration_t(groups='optimize', name='quantile', unit='1', default='0.9', low=0.0_wp, high=1.0_wp, &
+      meaning='q of `population_cost = ''quantile''` (1 the worst ride), linear between the rides'), &
     declaration_t(groups='optimize', name='threads', kind=VALUE_INTEGER, unit='1', default='1', low=1.0_wp, &
       high=1024.0_wp, meaning='OpenMP threads for the rides and the difference points (or the starts)'), &
     declaration_t(groups='optimize', name='ftol', unit='1', default='1e-4', low=1e-15_wp, high=1.0_wp, &

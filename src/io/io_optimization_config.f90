@@ -141,9 +141,10 @@ contains
     ! the rides
     call r%get_list('start_angles_deg', angles, max_rides, status)
     if (status%ok() .and. r%has('start_angles_deg')) setup%start_angles = angles*pi/180
-    ! (an element design's variables are counted by io_element_design_config)
+    ! (an element design's variables are counted by io_element_design_config,
+    ! a population's members by io_optimization_population)
     if (status%ok() .and. 2*size(setup%start_angles) < n_design .and. &
-        .not. group_present(input, 'design_elements')) &
+        .not. (group_present(input, 'design_elements') .or. group_present(input, 'sweep'))) &
       call r%invalid('start_angles_deg', format_integer(size(setup%start_angles))//' rides', 'give at least '// &
                      format_integer((n_design + 1)/2)//' rides for '//format_integer(n_design)// &
                      ' design variables (each ride gives two residuals: its acceleration and its lever arm)', status)

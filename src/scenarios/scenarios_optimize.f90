@@ -29,6 +29,8 @@ module scenarios_optimize
   use io_xdmf, only: xdmf_t
   use io_run_config, only: run_config_t
   use io_optimization_config, only: read_optimization_config
+  use io_optimization_population, only: read_optimization_population
+  use scenarios_optimize_population, only: write_population, report_population
   use io_hdf5, only: result_file_t, run_outcome, run_message
   use io_summary, only: summary_t, degrees
   use io_input_declarations, only: declared_unit
@@ -37,8 +39,8 @@ module scenarios_optimize
   private
   public :: run_optimize, optimize_groups
 
-  character(len=*), parameter :: optimize_groups(6) = [character(len=15) :: 'run', 'solver', 'optimize', &
-    'slide_elements', 'design_elements', 'catalogue']
+  character(len=*), parameter :: optimize_groups(7) = [character(len=15) :: 'run', 'solver', 'optimize', &
+    'slide_elements', 'design_elements', 'catalogue', 'sweep']
   integer, parameter :: grid_n_u = 300, grid_n_v = 48   ! the written surface grid
 
 contains
@@ -63,6 +65,7 @@ contains
     if (status%ok()) call read_solver_config(input, solver, status)
     if (status%ok()) call refuse_point_design(input, status)
     if (status%ok()) call read_optimization_config(input, setup, status)
+    if (status%ok()) call read_optimization_population(input, setup, status)
     if (status%ok()) call read_element_design(input, setup, catalogue, with_catalogue, status)
     if (.not. status%ok()) return
     ! &solver: the rides' integration, sampling of the maxima and time bound
@@ -106,6 +109,7 @@ contains
                                                  chosen%verdict)
     end if
     call write_results(file, input, run, setup, result, before, after, ended, cpu1 - cpu0, write_status)
+    call write_population(file, setup, before, after, ended, write_status)
     if (setup%design%from_elements .and. ended .and. with_catalogue) then
       call write_element_variables(file, setup%design, write_status, result%x, catalogue, chosen)
       if (chosen%ridden) then
@@ -415,11 +419,17 @@ contains
     call summary%add_count('evaluations', 'designs evaluated', result%evaluations, 'designs')
     call summary%add('cpu_time', 'CPU time', cpu, 's')
     if (size(result%starts) > 1) call add_starts()
+    call report_population(summary, setup, result%before, result%after, end)
     if (setup%design%from_elements) then
       call summary%add('acceleration_cost', 'acceleration cost, '//end, result%after%acceleration_cost, 'm^2/s^4')
       call report_element_design(summary, setup%design, result%x, chosen)
     else
       call add_points()
+    end if
+    if (allocated(setup%members)) then   ! the member table instead of the rides'
+      call summary%print()
+      call end_report(summary, run, path, complete, message, status)
+      return
     end if
     allocate (table(5, n))
     do k = 1, n
