@@ -43,7 +43,8 @@ module io_input_declarations
     '"&point_mass"; docs/rider.md): with `''coulomb''`, `mu` (default 0.0724419 here) and '// &
     '`regularization_speed`.', &
     'Each swept variable is a list (`mass = 50, 70, 90`) or a range (`mass_range = 50, 90, 5`: first, '// &
-    'last, count); one not swept keeps its `&rider` / `&water` value (docs/sweep.md).', &
+    'last, count); one not swept keeps its `&rider` / `&water` value (docs/sweep.md). In an `optimize` '// &
+    'input: the population of a robust optimisation (docs/design.md, "Robust design over a population").', &
     'The rider''s friction from measured wall angles and speeds (docs/design.md).', &
     'The water''s friction from measured flow middles and speeds (docs/design.md).', &
     'The geometry optimisation of a tube slide (thesis 4.7, docs/design.md).', &

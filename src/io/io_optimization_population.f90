@@ -107,8 +107,8 @@ contains
       call o%bounds('start_angles_deg', angle_bounds, status)
       do i = 1, n_rows
         if (status%ok() .and. .not. angle_bounds%allows(sweep%values(V_HEADING, i))) &
-          call r%invalid('heading0_deg', r%written(given_name(V_HEADING)), 'the optimiser''s start angles '// &
-                         'lie in '//angle_bounds%text()//' (as start_angles_deg)', status)
+          call r%invalid('heading0_deg', r%written(given_name(V_HEADING)), 'the optimiser''s start angles, '// &
+                         'as start_angles_deg: '//angle_bounds%text(), status)
       end do
       if (.not. status%ok()) return
       angles = sweep%values(V_HEADING, :)*pi/180

@@ -426,11 +426,6 @@ contains
     else
       call add_points()
     end if
-    if (allocated(setup%members)) then   ! the member table instead of the rides'
-      call summary%print()
-      call end_report(summary, run, path, complete, message, status)
-      return
-    end if
     allocate (table(5, n))
     do k = 1, n
       table(:, k) = [setup%start_angles(k)*degrees, result%before%rides(k)%max_acceleration, &
@@ -440,11 +435,13 @@ contains
     call summary%add_table('rides', [character(len=17) :: 'start_angle', 'max_a_start', 'max_a_optimum', &
                            'lever_arm_start', 'lever_arm_optimum'], &
                            [character(len=6) :: 'deg', 'm/s^2', 'm/s^2', 'm', 'm'], table)
-    call summary%add_line('  ride at (deg)   max |a| start, optimum (m/s^2)   lever arm start, optimum (m)')
-    do k = 1, n
-      call summary%add_line('    '//format_with(table(1, k), 'f12.4')//'      '//format_with(table(2, k), 'f12.4')// &
-        format_with(table(3, k), 'f12.4')//'        '//lever_text(table(4, k))//lever_text(table(5, k)))
-    end do
+    if (.not. allocated(setup%members)) then   ! else the members' lines of report_population
+      call summary%add_line('  ride at (deg)   max |a| start, optimum (m/s^2)   lever arm start, optimum (m)')
+      do k = 1, n
+        call summary%add_line('    '//format_with(table(1, k), 'f12.4')//'      '//format_with(table(2, k), 'f12.4')// &
+          format_with(table(3, k), 'f12.4')//'        '//lever_text(table(4, k))//lever_text(table(5, k)))
+      end do
+    end if
     call summary%print()
     call end_report(summary, run, path, complete, message, status)
 

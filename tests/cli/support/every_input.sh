@@ -49,6 +49,9 @@ for input in "$root"/inputs/*.nml "$root"/inputs/*/*.nml; do
     # constraint the end is checked and complete (tests/cli/optimize_verdicts.sh gates)
     templates_optimize) run "$name" --set optimize%ftol=0.1 --set optimize%xtol=0.1 \
       --set "optimize%constraint='none'" "$input" ;;
+    # the robust optimisation (50 rides x 3 starts, a minute in Release): 10 rides, 1 start, loose
+    design_optimize_robust) run "$name" --set "sweep%heading0_deg=0" --set optimize%starts=1 --unset optimize%seed \
+      --set optimize%ftol=0.1 --set optimize%xtol=0.1 --set "optimize%constraint='none'" "$input" ;;
     *) run "$name" "$input" ;;
   esac
 done
