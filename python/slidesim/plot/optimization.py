@@ -9,7 +9,10 @@
 - for an element design snapped to a catalogue of standard parts
   (docs/design.md): the catalogue design's centerline and largest
   accelerations too, and a table of the design variables (start, optimum,
-  nearest allowed, chosen) and of the parts to build with their counts.
+  nearest allowed, chosen) and of the parts to build with their counts;
+- for a robust optimisation over a population (docs/design.md, "Robust
+  design over a population"): the rides by member number, the worst member
+  of the optimum drawn thick and named in the legend.
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
@@ -39,6 +42,8 @@ def draw(result, plt, args):
         g = r.file["/optimize"]
         limit = float(g["lever_limit"][()])
         angles = np.degrees(g["before/start_angle"][:])
+        population = "population" in g
+        worst = int(g["after/worst_ride"][()]) - 1 if population and "after/worst_ride" in g else None
         c0 = np.asarray(g["centerline_start"][:])
         points = "points_start" in g  # else an element design
         p0 = np.asarray(g["points_start"][:]) if points else None
@@ -84,12 +89,17 @@ def draw(result, plt, args):
         ax[1, 1].plot(t, wall, "--", color=colors[k], lw=0.8)
     if optimized:
         for k, (t, a, lever, wall) in enumerate(after):
-            ax[0, 2].plot(t, a, color=colors[k], label=f"{angles[k]:+.0f} deg")
-            ax[1, 0].plot(t, lever, color=colors[k])
-            ax[1, 1].plot(t, wall, color=colors[k])
+            if population:   # many rides: only the worst member in the legend, drawn thick
+                label, lw = (f"worst: member {k + 1}", 2.5) if k == worst else (None, 0.8)
+            else:
+                label, lw = f"{angles[k]:+.0f} deg", 1.5
+            ax[0, 2].plot(t, a, color=colors[k], label=label, lw=lw)
+            ax[1, 0].plot(t, lever, color=colors[k], lw=lw)
+            ax[1, 1].plot(t, wall, color=colors[k], lw=lw)
     ax[0, 2].set(xlabel="time (s)", ylabel="acceleration (m/s^2)",
                  title="acceleration (dashed: start, solid: optimum)")
-    ax[0, 2].legend(title="start angle", fontsize=8)
+    if optimized:
+        ax[0, 2].legend(title="population" if population else "start angle", fontsize=8)
     for y in (limit, -limit):
         ax[1, 0].axhline(y, color="r", lw=1)
     ax[1, 0].set(xlabel="time (s)", ylabel="lever arm (m)", title="tipping lever arm (red: limit)")
@@ -106,8 +116,14 @@ def draw(result, plt, args):
                      label="optimum")
     if chosen:
         ax[1, 2].bar(x + width, [np.max(a) for _, a, _, _ in chosen], width, color="C2", label="catalogue design")
-    ax[1, 2].set_xticks(x, [f"{a:+.0f}" for a in angles])
-    ax[1, 2].set(xlabel="start angle (deg)", ylabel="largest acceleration (m/s^2)", title="largest acceleration")
+    if population:
+        ticks = x[:: max(1, len(x) // 10)]
+        ax[1, 2].set_xticks(ticks, [f"{k + 1}" for k in ticks])
+        ax[1, 2].set(xlabel="member", ylabel="largest acceleration (m/s^2)", title="largest acceleration")
+    else:
+        ax[1, 2].set_xticks(x, [f"{a:+.0f}" for a in angles])
+        ax[1, 2].set(xlabel="start angle (deg)", ylabel="largest acceleration (m/s^2)",
+                     title="largest acceleration")
     ax[1, 2].legend()
     if chosen:
         table = fig.add_subplot(grid[2, :2])
