@@ -51,7 +51,12 @@
 !> with several starts the starts run in the threads instead (each one's
 !> rides one after the other), with the same numbers again, except with a
 !> population: its rides are many, so the starts run one after the other
-!> and each design's rides share the threads.
+!> and each design's rides share the threads. Under MPI (setup%ranks > 1)
+!> every rank runs the same optimisation and rides its share of each
+!> batch of rides (design_optimize_ranks), the figures broadcast as they
+!> are: the same numbers on every rank as in one process; the starts then
+!> run one after the other. Rides that keep their series are ridden by
+!> every rank.
 !>
 !> The design space (the slide of a design, the drawn starts) is
 !> design_slide_design; its names are public here too, as callers know them.
@@ -69,6 +74,7 @@ module design_geometry_optimization
   use design_cuboid_ride, only: cuboid_t, cuboid_start_t, cuboid_ride_options_t, cuboid_ride_t
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride, BODY_CUBOID
   use design_robust_cost, only: ride_member_t, COST_SUM, robust_maximum, worst_ride
+  use design_optimize_ranks, only: ride_is_mine, share_rides
   implicit none (type, external)
   private
   public :: slide_design_t, optimization_setup_t, design_evaluation_t, optimization_result_t
@@ -106,6 +112,7 @@ module design_geometry_optimization
     integer :: starts = 1                     !< multi-start: the given design and starts - 1 drawn ones
     integer :: seed = 1                       !< of the drawn starts
     integer :: threads = 1
+    integer :: rank = 0, ranks = 1            !< MPI: this process's rank of `ranks` (design_optimize_ranks)
     procedure(log_sink_i), pointer, nopass :: log => null()   !< progress lines (none: not made)
     type(least_squares_options_t) :: solver = least_squares_options_t(ftol=1e-4_wp, xtol=1e-3_wp, &
                                                                       gtol=0.0_wp, epsfcn=1e-8_wp, &
@@ -191,6 +198,7 @@ contains
     type(status_t), allocatable :: statuses(:)
     type(cuboid_ride_options_t) :: ride_options
     integer :: i, n
+    logical :: shared
     n = size(setup%start_angles)
     evaluation%x = x
     allocate (evaluation%rides(n), statuses(n))
@@ -199,11 +207,16 @@ contains
     ride_options = setup%ride
     ride_options%lever_limit = setup%lever_limit
     if (present(keep_series)) ride_options%keep_series = keep_series
+    shared = setup%ranks > 1 .and. .not. ride_options%keep_series
     !$omp parallel do num_threads(max(1, setup%threads)) schedule(dynamic, 1) if (setup%threads > 1)
     do i = 1, n
+      if (shared) then
+        if (.not. ride_is_mine(i, setup%rank, setup%ranks)) cycle
+      end if
       call ride_one(setup, slide, ride_options, i, evaluation%rides(i), statuses(i))
     end do
     !$omp end parallel do
+    if (shared) call share_rides(evaluation%rides, statuses, setup%rank, setup%ranks)
     do i = 1, n
       if (.not. statuses(i)%ok()) then
         status = statuses(i)
@@ -354,12 +367,13 @@ contains
     type(status_t), intent(inout) :: statuses(:)
     type(tube_surface_t), allocatable :: slides(:)
     type(design_evaluation_t), allocatable :: evaluations(:)
-    type(status_t), allocatable :: ride_status(:, :)
+    type(status_t), allocatable :: ride_status(:)
+    type(cuboid_ride_t), allocatable :: rides(:)
     type(cuboid_ride_options_t) :: ride_options
     integer :: k, i, j, n, np
     np = size(p, 2)
     n = size(self%setup%start_angles)
-    allocate (slides(np), evaluations(np), ride_status(n, np))
+    allocate (slides(np), evaluations(np), ride_status(n*np), rides(n*np))
     ride_options = self%setup%ride
     ride_options%lever_limit = self%setup%lever_limit
     r = 0
@@ -373,15 +387,17 @@ contains
     do j = 1, n*np
       k = (j - 1)/n + 1
       i = j - (k - 1)*n
-      if (statuses(k)%ok()) call ride_one(self%setup, slides(k), ride_options, i, evaluations(k)%rides(i), &
-                                          ride_status(i, k))
+      if (.not. ride_is_mine(j, self%setup%rank, self%setup%ranks)) cycle
+      if (statuses(k)%ok()) call ride_one(self%setup, slides(k), ride_options, i, rides(j), ride_status(j))
     end do
     !$omp end parallel do
+    call share_rides(rides, ride_status, self%setup%rank, self%setup%ranks)
     do k = 1, np
       if (.not. statuses(k)%ok()) cycle
+      evaluations(k)%rides = rides((k - 1)*n + 1:k*n)
       do i = 1, n
-        if (.not. ride_status(i, k)%ok()) then
-          statuses(k) = ride_status(i, k)
+        if (.not. ride_status((k - 1)*n + i)%ok()) then
+          statuses(k) = ride_status((k - 1)*n + i)
           exit
         end if
       end do
@@ -418,7 +434,7 @@ contains
     points = start_points(setup%design, max(1, setup%starts), setup%seed)
     allocate (results(size(points, 2)), statuses(size(points, 2)))
     one = setup
-    parallel_starts = size(results) > 1 .and. .not. allocated(setup%members)
+    parallel_starts = size(results) > 1 .and. .not. allocated(setup%members) .and. setup%ranks < 2
     if (parallel_starts) one%threads = 1   ! the starts take the threads
     !$omp parallel do num_threads(max(1, setup%threads)) schedule(dynamic, 1) &
     !$omp if (parallel_starts .and. setup%threads > 1)

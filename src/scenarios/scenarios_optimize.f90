@@ -30,6 +30,8 @@ module scenarios_optimize
   use io_run_config, only: run_config_t
   use io_optimization_config, only: read_optimization_config
   use io_optimization_population, only: read_optimization_population
+  use design_sweep_ranks, only: start_ranks, finish_ranks
+  use design_optimize_ranks, only: share_flag
   use scenarios_optimize_population, only: write_population, report_population
   use io_hdf5, only: result_file_t, run_outcome, run_message
   use io_summary, only: summary_t, degrees
@@ -58,7 +60,7 @@ contains
     type(catalogue_t) :: catalogue
     type(catalogue_result_t) :: chosen
     real(wp) :: cpu0, cpu1
-    logical :: complete, ended, with_catalogue
+    logical :: complete, ended, with_catalogue, started, go
     character(len=:), allocatable :: message
 
     call check_known_groups(input, optimize_groups, status)
@@ -85,11 +87,22 @@ contains
       return
     end if
     if (run%check_only) return
-    call file%create(trim(run%output), status)
-    if (.not. status%ok()) return
-    call log_info('optimize: '//format_integer(size(setup%design%lower))//' design variables, '// &
-                  format_integer(size(setup%start_angles))//' rides per design')
-    setup%log => log_info
+    ! under MPI every rank optimises, sharing the rides; rank 0 writes and reports
+    call start_ranks(setup%rank, setup%ranks, started)
+    if (setup%rank == 0) call file%create(trim(run%output), status)
+    go = status%ok()
+    call share_flag(go, setup%ranks)
+    if (.not. go) then
+      call finish_ranks(started)
+      return
+    end if
+    if (setup%rank == 0) then
+      message = ''
+      if (setup%ranks > 1) message = ', '//format_integer(setup%ranks)//' MPI ranks'
+      call log_info('optimize: '//format_integer(size(setup%design%lower))//' design variables, '// &
+                    format_integer(size(setup%start_angles))//' rides per design'//message)
+      setup%log => log_info
+    end if
     call cpu_time(cpu0)
     call optimize_slide(setup, result, run_status)
     call cpu_time(cpu1)
@@ -97,10 +110,12 @@ contains
     ended = run_status%ok()   ! an end point, written and reported whatever its outcome
     ! the end snapped to the catalogue and ridden again
     if (ended .and. with_catalogue) then
-      call log_info('optimize: the end snapped to the catalogue, its neighbourhood ridden')
+      if (setup%rank == 0) call log_info('optimize: the end snapped to the catalogue, its neighbourhood ridden')
       call choose_from_catalogue(setup, catalogue, result%x, chosen, run_status)
       ended = run_status%ok()
     end if
+    call finish_ranks(started)
+    if (setup%rank /= 0) return   ! the same numbers as rank 0's, written by it
     ! an end that is not a minimum or violates a constraint is no optimum: exit 2, file incomplete
     if (ended .and. result%outcome /= OUTCOME_OPTIMUM) &
       call set_status(run_status, STATUS_NOT_CONVERGED, 'optimize: '//result%verdict)
