@@ -108,7 +108,8 @@ contains
     integer :: k, n
     n = size(setup%start_angles)
     if (.not. robust(setup)) return
-    if (allocated(setup%members)) call summary%add_count('members', 'population (&sweep)', n, 'members, one ride each')
+    if (allocated(setup%members)) call summary%add_count('population_size', 'population (&sweep)', n, &
+                                                         'members, one ride each')
     call summary%add_text('population_cost', 'cost over the rides', cost_description(setup%cost, setup%quantile))
     if (setup%cost /= COST_SUM) then
       call summary%add('robust_acceleration_start', 'cost''s max |a|, start', before%robust_acceleration, 'm/s^2')
