@@ -55,7 +55,7 @@ contains
                              '(scaled with the height)', status)
       call file%write_vector(g//'speed0', m%speed, 'm/s', 'start speed', status)
       call file%write_vector(g//'v0', m%v, 'rad', 'start section angle (pi/2 the bottom)', status)
-      call file%write_vector(g//'heading0_deg', setup%start_angles*degrees, 'deg', &
+      call file%write_vector(g//'heading0_deg', setup%start_angles*degrees, 'degree', &
                              'start direction to the centerline, + towards +v', status)
     end associate
     call file%make_scale(g//'member', status)

@@ -339,6 +339,9 @@ def main():
                     extra = ['--set', 'grid%n_u=40', '--set', 'grid%n_v=12', '--set', 'grid%n_frames=40']
                 elif scenario and scenario.group(1) == 'optimize':
                     extra = ['--set', 'optimize%ftol=0.1', '--set', 'optimize%xtol=0.1']   # a few iterations
+                    if '&sweep' in mutant.lower():   # a population: one start, 10 of its 50 rides
+                        extra += ['--set', 'sweep%heading0_deg=0', '--set', 'optimize%starts=1', '--unset',
+                                  'optimize%seed']
                 elif scenario:
                     extra = ['--set', 'solver%duration=0.5']
                 # the short run is another input: checked as such first
