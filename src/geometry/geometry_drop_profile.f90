@@ -32,7 +32,7 @@ module geometry_drop_profile
   use numerics_quadrature, only: gl8_x, gl8_w, piecewise_nodes, node_below
   implicit none (type, external)
   private
-  public :: drop_profile_t, new_drop_profile, smoothstep
+  public :: drop_profile_t, new_drop_profile, smoothstep, smoothstep_value, smoothstep_integral
 
   !> Steepest top slope and largest node spacing of the curve-out table.
   real(wp), parameter, public :: drop_max_slope_deg = 85, drop_min_slope_deg = 45
@@ -219,17 +219,40 @@ contains
     real(wp), intent(in) :: t
     real(wp), intent(out) :: d(0:3), integral
     d = 0
+    integral = smoothstep_integral(t)
     if (t <= 0) then
-      integral = 0
+      return
     else if (t >= 1) then
       d(0) = 1
-      integral = t - 0.5_wp
     else
-      d(0) = t**4*(35 - 84*t + 70*t**2 - 20*t**3)
+      d(0) = smoothstep_value(t)
       d(1) = 140*t**3*(1 - t)**3
       d(2) = 420*t**2*(1 - t)**2*(1 - 2*t)
       d(3) = 840*t*(1 - t)*((1 - 2*t)**2 - t*(1 - t))
-      integral = t**5*(7 - 14*t + 10*t**2 - 2.5_wp*t**3)
     end if
   end subroutine smoothstep
+
+  !> S(t) alone (smoothstep's d(0)), for the sums that need no derivative.
+  pure real(wp) function smoothstep_value(t) result(s)
+    real(wp), intent(in) :: t
+    if (t <= 0) then
+      s = 0
+    else if (t >= 1) then
+      s = 1
+    else
+      s = t**4*(35 - 84*t + 70*t**2 - 20*t**3)
+    end if
+  end function smoothstep_value
+
+  !> P(t) = int_0^t S alone (smoothstep's integral).
+  pure real(wp) function smoothstep_integral(t) result(p)
+    real(wp), intent(in) :: t
+    if (t <= 0) then
+      p = 0
+    else if (t >= 1) then
+      p = t - 0.5_wp
+    else
+      p = t**5*(7 - 14*t + 10*t**2 - 2.5_wp*t**3)
+    end if
+  end function smoothstep_integral
 end module geometry_drop_profile

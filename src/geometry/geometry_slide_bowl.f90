@@ -40,7 +40,7 @@ module geometry_slide_bowl
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_text, only: format_real
   use numerics_quadrature, only: gl8_x, gl8_w, piecewise_nodes, node_below
-  use geometry_drop_profile, only: smoothstep
+  use geometry_drop_profile, only: smoothstep, smoothstep_value
   implicit none (type, external)
   private
   public :: bowl_spiral_t, new_bowl_spiral
@@ -73,6 +73,7 @@ module geometry_slide_bowl
   contains
     procedure :: place => bowl_place
     procedure :: deviation => bowl_deviation
+    procedure :: heading => bowl_heading
     procedure :: own => bowl_own
     procedure :: radius_at => bowl_radius_at
     procedure :: height_above_bottom => bowl_height_above_bottom
@@ -331,6 +332,45 @@ contains
     dint = 0.5_wp*(b - a)*y
   end subroutine deviation_integrals
 
+  !> What the bowl adds to the heading at sigma (rad): bowl_deviation's dpsi
+  !> alone, by the same operations (the chain's quadrature of x and y needs
+  !> only the heading, at eight points per evaluation).
+  pure real(wp) function bowl_heading(self, sigma) result(dpsi)
+    class(bowl_spiral_t), intent(in) :: self
+    real(wp), intent(in) :: sigma
+    real(wp) :: a, x, s
+    integer :: lo, i
+    dpsi = 0
+    if (self%width_in > 0 .and. sigma <= self%lo) return
+    if (self%width_out > 0 .and. sigma >= self%hi) then
+      dpsi = self%psi(ubound(self%psi, 1))
+      return
+    end if
+    if ((sigma >= self%core_lo .or. self%width_in == 0) .and. (sigma <= self%core_hi .or. self%width_out == 0)) then
+      dpsi = self%psi_core + core_heading(self, sigma)
+      return
+    end if
+    lo = node_below(self%node, sigma)
+    a = self%node(lo)
+    x = 0
+    do i = 1, 8
+      s = 0.5_wp*(a + sigma) + 0.5_wp*(sigma - a)*gl8_x(i)
+      x = x + gl8_w(i)*blended_curvature(self, s)
+    end do
+    dpsi = self%psi(lo) + 0.5_wp*(sigma - a)*x
+  end function bowl_heading
+
+  !> blended's dk(0) alone, (kappa_b - kappa_ref) W_b, by the same operations.
+  pure real(wp) function blended_curvature(self, sigma) result(dk)
+    type(bowl_spiral_t), intent(in) :: self
+    real(wp), intent(in) :: sigma
+    real(wp) :: w
+    w = 1
+    if (self%width_in > 0) w = smoothstep_value((sigma - self%lo)/self%width_in)
+    if (self%width_out > 0) w = w - smoothstep_value((sigma - (self%hi - self%width_out))/self%width_out)
+    dk = (self%sense*self%cos_beta/self%radius_at(sigma) - self%kappa_ref)*w
+  end function blended_curvature
+
   !> The integrals of the deviations from core_lo to sigma, where W_b = 1,
   !> closed-form: int kappa_b = -s cot(beta) ln(rho/rho(core_lo)) and
   !> int g_b = f(rho(core_lo)) - f(rho), as d rho = -sin(beta) d sigma.
@@ -341,9 +381,17 @@ contains
     real(wp) :: rho_a, rho
     rho_a = self%radius_at(self%core_lo)
     rho = self%radius_at(sigma)
-    dpsi = -self%sense*self%cos_beta/self%sin_beta*log(rho/rho_a) - self%kappa_ref*(sigma - self%core_lo)
+    dpsi = core_heading(self, sigma)
     dint = self%height_above_bottom(rho_a) - self%height_above_bottom(rho) - self%grad_ref*(sigma - self%core_lo)
   end subroutine core_integrals
+
+  !> core_integrals' dpsi alone.
+  pure real(wp) function core_heading(self, sigma) result(dpsi)
+    type(bowl_spiral_t), intent(in) :: self
+    real(wp), intent(in) :: sigma
+    dpsi = -self%sense*self%cos_beta/self%sin_beta*log(self%radius_at(sigma)/self%radius_at(self%core_lo)) &
+      - self%kappa_ref*(sigma - self%core_lo)
+  end function core_heading
 
   !> rho at the chain's sigma (m from the axis, on the spiral).
   pure real(wp) function bowl_radius_at(self, sigma) result(rho)

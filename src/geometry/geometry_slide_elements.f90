@@ -45,7 +45,7 @@ module geometry_slide_elements
   use base_text, only: format_integer
   use numerics_quadrature, only: gl8_x, gl8_w
   use geometry_curve, only: curve_t, curve_point_t
-  use geometry_drop_profile, only: drop_profile_t, new_drop_profile, smoothstep
+  use geometry_drop_profile, only: drop_profile_t, new_drop_profile, smoothstep, smoothstep_integral
   use geometry_slide_bowl, only: bowl_spiral_t, new_bowl_spiral
   implicit none (type, external)
   private
@@ -89,6 +89,7 @@ module geometry_slide_elements
     procedure :: domain => chain_domain
     procedure :: parameter_unit => chain_parameter_unit
     procedure :: element_at => chain_element_at
+    procedure :: heading => chain_heading
   end type element_chain_curve_t
 
 contains
@@ -338,12 +339,35 @@ contains
     end do
   end subroutine profile
 
+  !> The heading psi at sigma (rad from +x): profile's psi alone, by the
+  !> same operations (to the bit, test_slide_bowl heading_alone): the
+  !> quadrature of x and y needs the heading at eight points per evaluation,
+  !> and the curvature, gradient and height terms (the drop's and the bowls'
+  !> quadratures among them) cost several times as much.
+  pure real(wp) function chain_heading(c, sigma) result(psi)
+    class(element_chain_curve_t), intent(in) :: c
+    real(wp), intent(in) :: sigma
+    real(wp) :: w, t
+    integer :: j
+    psi = c%heading0 + c%kappa(1)*sigma
+    do j = 1, size(c%joint)
+      w = c%width(j)
+      if (.not. w > 0) cycle
+      t = (sigma - c%joint(j) + w/2)/w
+      psi = psi + (c%kappa(j + 1) - c%kappa(j))*(w*smoothstep_integral(t))
+    end do
+    if (.not. allocated(c%bowls)) return
+    do j = 1, size(c%bowls)
+      psi = psi + c%bowls(j)%heading(sigma)
+    end do
+  end function chain_heading
+
   pure function direction_xy(c, sigma) result(xy)
     class(element_chain_curve_t), intent(in) :: c
     real(wp), intent(in) :: sigma
     real(wp) :: xy(2)
-    real(wp) :: psi, k(0:3), g(0:3), gint
-    call profile(c, sigma, psi, k, g, gint)
+    real(wp) :: psi
+    psi = chain_heading(c, sigma)
     xy = [cos(psi), sin(psi)]
   end function direction_xy
 

@@ -13,6 +13,11 @@
 !> wall's slope at the entry is the one asked and the outlet is as deep as
 !> the drop asked; impossible bowls are refused with a message naming why.
 !>
+!> heading alone: the chain's heading (what its quadrature of x and y
+!> evaluates, eight times per evaluation) is the evaluation's to the bit,
+!> cos and sin of it equal the unit tangent's x and y exactly, on a chain
+!> with a drop, a curve, a bowl of each profile and their windows.
+!>
 !> normal force: a frictionless point mass on the slide (flume section)
 !> slides across the bowl's joints: the normal force changes between 1 ms
 !> records by little (no jump); with transitions of 2 cm it jumps at the
@@ -42,6 +47,7 @@ program test_slide_bowl
   call bowl_at_the_ends()
   call bowl_normal_force()
   call bowl_self_intersection()
+  call heading_alone()
   call finish_tests('test_slide_bowl')
 
 contains
@@ -288,4 +294,59 @@ contains
                'a bowl whose turns overlap is refused by the self-intersection check: '//st%text())
   end subroutine bowl_self_intersection
 
+  !> chain%heading against the tangent of chain%evaluate, bit for bit, at
+  !> every 1 mm of two chains (a drop, a curve, a spherical bowl, a straight;
+  !> a conical bowl between straights) and at the ends of every window.
+  subroutine heading_alone()
+    type(slide_element_t) :: e(4)
+    type(element_chain_curve_t) :: chain
+    type(status_t) :: st
+    real(wp) :: u_min, u_max
+    integer :: i, k, mismatches, points
+    e(1) = slide_element_t(kind='drop', slope_deg=80.0_wp, radius=8.0_wp, drop=10.0_wp)
+    e(2) = slide_element_t(kind='curve', slope_deg=4.0_wp, radius=12.0_wp, angle_deg=90.0_wp)
+    e(3) = slide_element_t(kind='bowl', radius=rho_in, slope_deg=entry_deg, drop=depth, turns=turns)
+    e(4) = slide_element_t(kind='straight', length=6.0_wp, slope_deg=8.0_wp)
+    mismatches = 0
+    points = 0
+    do k = 1, 2
+      if (k == 1) then
+        chain = new_element_chain(e, [0.0_wp, 0.0_wp, 20.0_wp], 0.0_wp, 2.0_wp, st)
+      else
+        chain = bowl_chain('cone', 1.5_wp, st)
+      end if
+      call check(st%ok(), 'heading alone: chain built: '//st%text())
+      if (.not. st%ok()) return
+      call chain%domain(u_min, u_max)
+      do i = 0, floor((u_max - u_min)/1e-3_wp)
+        call compare_heading(chain, u_min + i*1e-3_wp, points, mismatches)
+      end do
+      do i = 1, size(chain%bowls)
+        associate (b => chain%bowls(i))
+          call compare_heading(chain, b%lo, points, mismatches)
+          call compare_heading(chain, b%core_lo, points, mismatches)
+          call compare_heading(chain, b%core_hi, points, mismatches)
+          call compare_heading(chain, b%hi, points, mismatches)
+          call compare_heading(chain, b%node(1), points, mismatches)
+          call compare_heading(chain, 0.5_wp*(b%lo + b%core_lo), points, mismatches)
+        end associate
+      end do
+    end do
+    call check(points > 20000 .and. mismatches == 0, 'heading alone: the evaluation''s tangent is cos and sin '// &
+               'of chain%heading to the bit ('//real_text(real(mismatches, wp))//' of '// &
+               real_text(real(points, wp))//' points differ)')
+  end subroutine heading_alone
+
+  subroutine compare_heading(chain, at, points, mismatches)
+    type(element_chain_curve_t), intent(in) :: chain
+    real(wp), intent(in) :: at
+    integer, intent(inout) :: points, mismatches
+    type(curve_point_t) :: p
+    type(status_t) :: st
+    real(wp) :: psi
+    call chain%evaluate(at, 1, p, st)
+    psi = chain%heading(at)
+    points = points + 1
+    if (.not. (st%ok() .and. cos(psi) == p%d(1, 1) .and. sin(psi) == p%d(2, 1))) mismatches = mismatches + 1
+  end subroutine compare_heading
 end program test_slide_bowl
