@@ -44,7 +44,7 @@ module geometry_slide_elements
   use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT
   use base_text, only: format_integer
   use numerics_quadrature, only: gl8_x, gl8_w
-  use geometry_curve, only: curve_t, curve_point_t
+  use geometry_curve, only: curve_t, curve_point_t, panel_arc_length, arc_length_prefix
   use geometry_drop_profile, only: drop_profile_t, new_drop_profile, smoothstep, smoothstep_integral
   use geometry_slide_bowl, only: bowl_spiral_t, new_bowl_spiral
   implicit none (type, external)
@@ -84,12 +84,14 @@ module geometry_slide_elements
     logical :: starts_with_drop = .false.   ! element 1 is a drop
     type(drop_profile_t) :: drop            ! its profile (starts_with_drop)
     type(bowl_spiral_t), allocatable :: bowls(:)   ! the bowls' spirals, in the order of the elements
+    real(wp), allocatable :: arc_prefix(:)  ! m, the arc length's whole panels from the start (geometry_curve)
   contains
     procedure :: evaluate => chain_evaluate
     procedure :: domain => chain_domain
     procedure :: parameter_unit => chain_parameter_unit
     procedure :: element_at => chain_element_at
     procedure :: heading => chain_heading
+    procedure :: arc_length => chain_arc_length
   end type element_chain_curve_t
 
 contains
@@ -273,6 +275,7 @@ contains
       end do
       c%node_xy(:, k) = c%node_xy(:, k - 1) + 0.5_wp*(b - a)*xy
     end do
+    c%arc_prefix = arc_length_prefix(c)
 
   contains
     !> What jumps at a sharp joint ('' where nothing does).
@@ -434,6 +437,20 @@ contains
       horizon(:, i) = [0.0_wp, 0.0_wp, 1.0_wp]
     end do
   end subroutine slide_points
+
+  !> Arc length from u0 to u1 (m): curve_t's quadrature, its whole panels
+  !> from the start taken from the table made with the chain (the same value
+  !> to the bit; a record asks for s(u) from the start for every contact).
+  pure function chain_arc_length(self, u0, u1) result(s)
+    class(element_chain_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u0, u1
+    real(wp) :: s
+    if (allocated(self%arc_prefix)) then
+      s = panel_arc_length(self, u0, u1, self%arc_prefix)
+    else
+      s = panel_arc_length(self, u0, u1)
+    end if
+  end function chain_arc_length
 
   !> u is the horizontal arc length sigma (m).
   pure function chain_parameter_unit(self) result(unit)

@@ -18,6 +18,11 @@
 !> cos and sin of it equal the unit tangent's x and y exactly, on a chain
 !> with a drop, a curve, a bowl of each profile and their windows.
 !>
+!> arc length table: the chain's arc length from its start (the whole panels
+!> from a table) is the quadrature's without the table to the bit, at every
+!> 10 cm, at the panels' ends and three roundings either side, beyond the
+!> end, backwards and from another start.
+!>
 !> normal force: a frictionless point mass on the slide (flume section)
 !> slides across the bowl's joints: the normal force changes between 1 ms
 !> records by little (no jump); with transitions of 2 cm it jumps at the
@@ -29,6 +34,7 @@ program test_slide_bowl
   use base_vector, only: cross
   use geometry_curve, only: curve_point_t
   use geometry_slide_elements, only: slide_element_t, element_chain_curve_t, new_element_chain
+  use geometry_curve, only: panel_arc_length
   use numerics_ode, only: ode_integrator_t
   use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t
   use io_input, only: input_text_t, input_from_text
@@ -48,6 +54,7 @@ program test_slide_bowl
   call bowl_normal_force()
   call bowl_self_intersection()
   call heading_alone()
+  call arc_length_table()
   call finish_tests('test_slide_bowl')
 
 contains
@@ -336,6 +343,44 @@ contains
                'of chain%heading to the bit ('//real_text(real(mismatches, wp))//' of '// &
                real_text(real(points, wp))//' points differ)')
   end subroutine heading_alone
+
+  subroutine arc_length_table()
+    type(element_chain_curve_t) :: chain
+    type(status_t) :: st
+    real(wp) :: lo, hi, u, width
+    integer :: i, j, mismatches, points
+    chain = bowl_chain('sphere', 2.0_wp, st)
+    call check(st%ok() .and. allocated(chain%arc_prefix), 'arc length table: chain built: '//st%text())
+    if (.not. st%ok()) return
+    call chain%domain(lo, hi)
+    width = (hi - lo)/256
+    mismatches = 0
+    points = 0
+    do i = 0, floor((hi - lo)/0.1_wp) + 10   ! to 1 m beyond the end
+      call compare_arc_length(chain, lo, lo + i*0.1_wp, points, mismatches)
+      call compare_arc_length(chain, lo + i*0.1_wp, lo, points, mismatches)   ! backwards: negative
+      call compare_arc_length(chain, lo + 0.3_wp, lo + i*0.1_wp, points, mismatches)   ! another start
+    end do
+    do i = 0, 256
+      u = lo + i*width
+      call compare_arc_length(chain, lo, u, points, mismatches)
+      do j = 1, 3
+        call compare_arc_length(chain, lo, u + j*spacing(u), points, mismatches)
+        call compare_arc_length(chain, lo, u - j*spacing(u), points, mismatches)
+      end do
+    end do
+    call check(points > 2000 .and. mismatches == 0, 'arc length table: the chain''s arc length is the quadrature''s '// &
+               'without the table to the bit ('//real_text(real(mismatches, wp))//' of '// &
+               real_text(real(points, wp))//' differ)')
+  end subroutine arc_length_table
+
+  subroutine compare_arc_length(chain, u0, u1, points, mismatches)
+    type(element_chain_curve_t), intent(in) :: chain
+    real(wp), intent(in) :: u0, u1
+    integer, intent(inout) :: points, mismatches
+    points = points + 1
+    if (.not. chain%arc_length(u0, u1) == panel_arc_length(chain, u0, u1)) mismatches = mismatches + 1
+  end subroutine compare_arc_length
 
   subroutine compare_heading(chain, at, points, mismatches)
     type(element_chain_curve_t), intent(in) :: chain
