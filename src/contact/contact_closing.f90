@@ -35,8 +35,8 @@ module contact_closing
   use base_kinds, only: wp
   use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_DOMAIN
-  use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_EVENT_STOP, DRIVE_FAILED, &
-    RECORD_EVENT
+  use numerics_event_driver, only: driver_options_t, driver_result_t, drive, add_driver_result, DRIVE_EVENT_STOP, &
+    DRIVE_FAILED, RECORD_EVENT
   use kinetostatics_recorder, only: mechanism_series_t, join_series
   use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_LIFT_OFF
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model
@@ -177,20 +177,7 @@ contains
       result = phase
       return
     end if
-    result%outcome = phase%outcome
-    result%t = phase%t
-    result%fired = phase%fired
-    result%events = result%events + phase%events
-    result%restarts = result%restarts + phase%restarts
-    result%outputs = result%outputs + phase%outputs
-    result%cpu = result%cpu + phase%cpu
-    result%stats%steps = result%stats%steps + phase%stats%steps
-    result%stats%rhs_evaluations = result%stats%rhs_evaluations + phase%stats%rhs_evaluations
-    result%stats%error_test_failures = result%stats%error_test_failures + phase%stats%error_test_failures
-    result%stats%nonlinear_failures = result%stats%nonlinear_failures + phase%stats%nonlinear_failures
-    result%stats%root_evaluations = result%stats%root_evaluations + phase%stats%root_evaluations
-    result%stats%last_step = phase%stats%last_step
-    result%stats%last_order = phase%stats%last_order
+    call add_driver_result(result, phase)
   end subroutine add_result
 
   !> Appends a phase's records (phase 1 in flight, 0 closed) and its outcome.

@@ -47,6 +47,7 @@ module numerics_event_driver
   public :: EVENT_IGNORE, EVENT_RECORD, EVENT_RESTART, EVENT_STOP
   public :: RECORD_START, RECORD_OUTPUT, RECORD_EVENT
   public :: DRIVE_END_TIME, DRIVE_EVENT_STOP, DRIVE_FAILED, drive_outcome_name, runaway_step_limit
+  public :: add_driver_result
 
   integer, parameter :: EVENT_IGNORE = 0, EVENT_RECORD = 1, EVENT_RESTART = 2, EVENT_STOP = 3
   integer, parameter :: RECORD_START = 1, RECORD_OUTPUT = 2, RECORD_EVENT = 3
@@ -116,6 +117,29 @@ module numerics_event_driver
   end type driver_result_t
 
 contains
+
+  !> A later stretch of one run (a drive after a switch of model or phase)
+  !> added to `total`: the stretch's outcome, time, fired roots and last
+  !> step; counts and CPU time summed.
+  pure subroutine add_driver_result(total, part)
+    type(driver_result_t), intent(inout) :: total
+    type(driver_result_t), intent(in) :: part
+    total%outcome = part%outcome
+    total%t = part%t
+    if (allocated(total%fired)) deallocate (total%fired)
+    if (allocated(part%fired)) total%fired = part%fired
+    total%events = total%events + part%events
+    total%restarts = total%restarts + part%restarts
+    total%outputs = total%outputs + part%outputs
+    total%cpu = total%cpu + part%cpu
+    total%stats%steps = total%stats%steps + part%stats%steps
+    total%stats%rhs_evaluations = total%stats%rhs_evaluations + part%stats%rhs_evaluations
+    total%stats%error_test_failures = total%stats%error_test_failures + part%stats%error_test_failures
+    total%stats%nonlinear_failures = total%stats%nonlinear_failures + part%stats%nonlinear_failures
+    total%stats%root_evaluations = total%stats%root_evaluations + part%stats%root_evaluations
+    total%stats%last_step = part%stats%last_step
+    total%stats%last_order = part%stats%last_order
+  end subroutine add_driver_result
 
   pure function drive_outcome_name(outcome) result(text)
     integer, intent(in) :: outcome

@@ -32,8 +32,8 @@ module rider_ride
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use base_log, only: log_sink_i
   use numerics_ode, only: ode_options_t
-  use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP, &
-    EVENT_STOP, EVENT_RECORD, EVENT_RESTART, RECORD_EVENT, RECORD_START
+  use numerics_event_driver, only: driver_options_t, driver_result_t, drive, add_driver_result, DRIVE_END_TIME, &
+    DRIVE_EVENT_STOP, EVENT_STOP, EVENT_RECORD, EVENT_RESTART, RECORD_EVENT, RECORD_START
   use geometry_surface, only: surface_t
   use geometry_slide_query, only: slide_surface_t, as_slide
   use geometry_curve, only: curve_point_t
@@ -269,7 +269,7 @@ contains
     y = y0
     do
       call drive(sys, y, driver, stretch, run_status)
-      call add_stretch(result%driver, stretch)
+      call add_driver_result(result%driver, stretch)
       if (.not. run_status%ok() .or. stretch%outcome /= DRIVE_EVENT_STOP .or. sys%switch == SWITCH_NONE) exit
       call switch_build(sys, y, run_status)
       if (.not. run_status%ok()) exit
@@ -715,25 +715,4 @@ contains
       side = 'right'
     end if
   end function wall_side
-
-  !> A stretch's driver result added to the ride's (the last stretch's
-  !> outcome, time and roots; counts and CPU time summed).
-  subroutine add_stretch(total, stretch)
-    type(driver_result_t), intent(inout) :: total
-    type(driver_result_t), intent(in) :: stretch
-    total%outcome = stretch%outcome
-    total%t = stretch%t
-    if (allocated(stretch%fired)) total%fired = stretch%fired
-    total%events = total%events + stretch%events
-    total%restarts = total%restarts + stretch%restarts
-    total%outputs = total%outputs + stretch%outputs
-    total%stats%steps = total%stats%steps + stretch%stats%steps
-    total%stats%rhs_evaluations = total%stats%rhs_evaluations + stretch%stats%rhs_evaluations
-    total%stats%error_test_failures = total%stats%error_test_failures + stretch%stats%error_test_failures
-    total%stats%nonlinear_failures = total%stats%nonlinear_failures + stretch%stats%nonlinear_failures
-    total%stats%root_evaluations = total%stats%root_evaluations + stretch%stats%root_evaluations
-    total%stats%last_step = stretch%stats%last_step
-    total%stats%last_order = stretch%stats%last_order
-    total%cpu = total%cpu + stretch%cpu
-  end subroutine add_stretch
 end module rider_ride
