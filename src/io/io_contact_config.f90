@@ -13,6 +13,7 @@ module io_contact_config
   use io_friction_config, only: friction_law_variables, friction_law_names, read_friction_law
   use io_surface_config, only: read_surface_config, surface_variables, surface_source_t
   use io_xdmf, only: colon_refusal
+  use io_hdf5_objects, only: link_name_refusal
   implicit none (type, external)
   private
   public :: read_contact_config, contact_groups, contact_repeatable_groups
@@ -117,6 +118,8 @@ contains
       call r%invalid('name', '''ground''', '''ground'' is the fixed frame; name the body otherwise', status)
     else if (len(colon_refusal(name)) > 0) then
       call r%invalid('name', ''''//trim(name)//'''', 'a body''s name '//colon_refusal(name), status)
+    else if (len(link_name_refusal(name)) > 0) then
+      call r%invalid('name', ''''//trim(name)//'''', 'a body''s name '//link_name_refusal(name), status)
     end if
     do j = 1, k - 1
       if (status%ok() .and. system%bodies(j)%name == trim(name)) &
@@ -226,6 +229,8 @@ contains
       if (len_trim(name) == 0) call r%invalid('name', '''''', 'every &contact needs a name', status)
       if (status%ok() .and. len(colon_refusal(name)) > 0) &
         call r%invalid('name', ''''//trim(name)//'''', 'a contact''s name '//colon_refusal(name), status)
+      if (status%ok() .and. len(link_name_refusal(name)) > 0) &
+        call r%invalid('name', ''''//trim(name)//'''', 'a contact''s name '//link_name_refusal(name), status)
       do j = 1, k - 1
         if (status%ok() .and. system%contacts(j)%name == trim(name)) &
           call r%invalid('name', ''''//trim(name)//'''', 'another &contact has this name', status)

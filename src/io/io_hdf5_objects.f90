@@ -11,9 +11,25 @@ module io_hdf5_objects
   implicit none (type, external)
   private
   public :: ensure_groups, utf8_string_type, c_string, write_string_attribute, write_string_attribute_on, &
-    write_attribute
+    write_attribute, link_name_refusal
 
 contains
+
+  !> Why `name` cannot be one link of a result's group path, or '' if it can:
+  !> HDF5 reads a '/' as a path separator ('on/floor' becomes a group 'on'
+  !> holding 'floor', and a reader listing the contacts finds 'on') and '.'
+  !> as the group itself.
+  pure function link_name_refusal(name) result(why)
+    character(len=*), intent(in) :: name
+    character(len=:), allocatable :: why
+    why = ''
+    if (index(name, '/') > 0) then
+      why = 'must not contain ''/'': the name becomes a group in the result file, and HDF5 reads a ''/'' '// &
+        'as a path separator'
+    else if (trim(name) == '.') then
+      why = 'must not be ''.'': HDF5 reads it as the group itself'
+    end if
+  end function link_name_refusal
 
   !> Creates the groups along `name` ("/a/b/dataset") that do not exist yet.
   subroutine ensure_groups(file_id, name, hdferr)

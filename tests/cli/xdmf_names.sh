@@ -29,6 +29,15 @@ ball 'body_name.h5' 'ball:1' on_floor >"$work/body_name.nml"
 run_case body_name 1 "&body: name = 'ball:1'" "a body's name must not contain ':'"
 ball 'contact_name.h5' ball 'on:floor' >"$work/contact_name.nml"
 run_case contact_name 1 "&contact: name = 'on:floor'" "a contact's name must not contain ':'"
+# A '/' or a lone '.' in a &body or &contact name: the name becomes a group
+# of the result, and HDF5 reads '/' as a path separator ('on/floor' wrote a
+# group 'on' holding 'floor') and '.' as the group itself. Refused likewise.
+ball 'body_slash.h5' 'b/all' on_floor >"$work/body_slash.nml"
+run_case body_slash 1 "&body: name = 'b/all'" "a body's name must not contain '/'"
+ball 'contact_slash.h5' ball 'on/floor' >"$work/contact_slash.nml"
+run_case contact_slash 1 "&contact: name = 'on/floor'" "a contact's name must not contain '/'"
+ball 'body_dot.h5' '.' on_floor >"$work/body_dot.nml"
+run_case body_dot 1 "&body: name = '.'" "a body's name must not be '.'"
 # -o: the same refusal, nothing written
 ball 'command_line.h5' ball on_floor >"$work/command_line.nml"
 checks=$((checks + 1))
