@@ -34,7 +34,7 @@ module rider_vehicle
   public :: vehicle_t, vehicle_body_t, vehicle_body, check_vehicle, build_vehicle_model, vehicle_kind_index
   public :: riders_allowed, vehicle_kinds
   public :: VEHICLE_BAR, VEHICLE_MAT, VEHICLE_SITTING, VEHICLE_RING, VEHICLE_DOUBLE_RING, VEHICLE_RAFT
-  public :: person_reference_height, person_reference_mass, scale_range, vehicle_ride_figures
+  public :: person_reference_height, person_reference_mass, scale_range, vehicle_ride_figures, torus
 
   integer, parameter :: VEHICLE_BAR = 1, VEHICLE_MAT = 2, VEHICLE_SITTING = 3, VEHICLE_RING = 4, &
     VEHICLE_DOUBLE_RING = 5, VEHICLE_RAFT = 6

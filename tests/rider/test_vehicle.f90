@@ -23,7 +23,8 @@ program test_vehicle
   use kinetostatics_force_law_factory, only: law_spec
   use rider_vehicle, only: vehicle_t, vehicle_body_t, vehicle_body, build_vehicle_model, vehicle_kinds, &
     vehicle_ride_figures, &
-    VEHICLE_MAT, VEHICLE_SITTING, VEHICLE_RING, VEHICLE_DOUBLE_RING, VEHICLE_RAFT, person_reference_mass
+    VEHICLE_MAT, VEHICLE_SITTING, VEHICLE_RING, VEHICLE_DOUBLE_RING, VEHICLE_RAFT, person_reference_mass, torus
+  use rider_body, only: rigid_body_t
   implicit none (type, external)
 
   real(wp), parameter :: g = 9.80665_wp
@@ -42,6 +43,8 @@ program test_vehicle
   call incline(vehicle_t(VEHICLE_MAT, 1, 0.6_wp))
   call incline(vehicle_t(VEHICLE_SITTING, 1, 1.0_wp))
   call scaling()
+  call torus_inertia(0.45_wp, 0.15_wp)
+  call torus_inertia(0.75_wp, 0.22_wp)
   call refusals()
   call finish_tests('test_vehicle')
 
@@ -132,6 +135,49 @@ contains
                'scaling: inertia ~ s^5')
     call check(abs(large%body%inertia(1, 3)) > 1e-3_wp, 'scaling: sitting up, the inertia has an x-z product')
   end subroutine scaling
+
+  !> The thin-walled torus's inertia against a quadrature over its shell:
+  !> r(theta, t) = ((R + r cos t) cos theta, (R + r cos t) sin theta, r sin t),
+  !> dA = r (R + r cos t) dtheta dt, mass spread evenly. The integrands are
+  !> trigonometric polynomials of degree <= 3 in each angle, so the
+  !> trapezoidal rule on 16 x 16 points is exact but for rounding (1e-14
+  !> relative); a coefficient of the closed form changed by a quarter moves
+  !> the result by > 1 %.
+  subroutine torus_inertia(big, small)
+    real(wp), intent(in) :: big, small
+    integer, parameter :: n = 16
+    real(wp), parameter :: mass = 7.0_wp
+    type(rigid_body_t) :: b
+    real(wp) :: theta, t, p(3), dm, inertia(3, 3), area
+    integer :: i, j, k
+    inertia = 0
+    area = 4*pi**2*big*small
+    do i = 0, n - 1
+      theta = 2*pi*i/n
+      do j = 0, n - 1
+        t = 2*pi*j/n
+        p = [(big + small*cos(t))*cos(theta), (big + small*cos(t))*sin(theta), small*sin(t)]
+        dm = mass*small*(big + small*cos(t))*(2*pi/n)**2/area
+        do k = 1, 3
+          inertia(k, k) = inertia(k, k) + dm*(dot_product(p, p) - p(k)**2)
+        end do
+        inertia(1, 2) = inertia(1, 2) - dm*p(1)*p(2)
+        inertia(1, 3) = inertia(1, 3) - dm*p(1)*p(3)
+        inertia(2, 3) = inertia(2, 3) - dm*p(2)*p(3)
+      end do
+    end do
+    inertia(2, 1) = inertia(1, 2); inertia(3, 1) = inertia(1, 3); inertia(3, 2) = inertia(2, 3)
+    b = torus(mass, [big, small])
+    call check_close(b%mass, mass, 0.0_wp, 0.0_wp, 'torus: mass')
+    call check(all(b%com == 0), 'torus: centre of mass at its centre')
+    do k = 1, 3
+      call check_close(b%inertia(k, k), inertia(k, k), 1e-13_wp, 0.0_wp, 'torus: inertia about axis '// &
+                       achar(iachar('w') + k)//' against the shell quadrature')
+    end do
+    call check(abs(b%inertia(1, 2)) + abs(b%inertia(1, 3)) + abs(b%inertia(2, 3)) == 0 .and. &
+               abs(inertia(1, 2)) + abs(inertia(1, 3)) + abs(inertia(2, 3)) <= 1e-14_wp*inertia(3, 3), &
+               'torus: no products of inertia')
+  end subroutine torus_inertia
 
   subroutine refusals()
     type(vehicle_body_t) :: vb
