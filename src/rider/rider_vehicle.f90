@@ -22,7 +22,8 @@ module rider_vehicle
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_INTERNAL
   use base_text, only: format_real, format_integer
-  use geometry_surface, only: surface_t
+  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_slide_query, only: slide_surface_t, slide_bottom_v
   use base_vector, only: cross
   use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use kinetostatics_recorder, only: mechanism_series_t
@@ -35,6 +36,7 @@ module rider_vehicle
   public :: riders_allowed, vehicle_kinds
   public :: VEHICLE_BAR, VEHICLE_MAT, VEHICLE_SITTING, VEHICLE_RING, VEHICLE_DOUBLE_RING, VEHICLE_RAFT
   public :: person_reference_height, person_reference_mass, scale_range, vehicle_ride_figures, torus
+  public :: narrowest_section, width_tolerance
 
   integer, parameter :: VEHICLE_BAR = 1, VEHICLE_MAT = 2, VEHICLE_SITTING = 3, VEHICLE_RING = 4, &
     VEHICLE_DOUBLE_RING = 5, VEHICLE_RAFT = 6
@@ -58,6 +60,18 @@ module rider_vehicle
   real(wp), parameter :: raft_radii(2) = [0.75_wp, 0.22_wp]        ! m: 1.94 m outside
   real(wp), parameter :: raft_mass = 30.0_wp                       ! kg, tube and floor
   real(wp), parameter :: raft_floor = 0.03_wp                      ! m, the floor the raft's riders sit on
+  !> a person's width at scale 1 (shoulders, biacromial breadth of an adult
+  !> man, about 0.40 m; de Leva's segments have no widths), scaled by `scale`
+  real(wp), parameter :: shoulder_breadth = 0.40_wp                ! m
+
+  !> The width check (narrowest_section): the slide's sections every
+  !> section_step of arc length, each at section_points points across; a
+  !> vehicle wider than a section by more than width_tolerance (the
+  !> sampling: a circle's width is found to r (1 - cos 1 deg) = 1.5e-4 r)
+  !> does not fit.
+  real(wp), parameter :: section_step = 0.25_wp    ! m
+  integer, parameter :: section_points = 181
+  real(wp), parameter :: width_tolerance = 1e-3_wp   ! m
 
   !> A vehicle as the input gives it (&sled vehicle, riders, scale).
   type :: vehicle_t
@@ -70,6 +84,7 @@ module rider_vehicle
   type :: vehicle_body_t
     type(rigid_body_t) :: body        ! all of it: mass, centre of mass and inertia about it
     real(wp) :: length = 0            ! m, rear to front contact (along x)
+    real(wp) :: width = 0             ! m, across (along y): the widest of vehicle and riders
     real(wp) :: rider_mass = 0        ! kg, each rider
     real(wp) :: vehicle_mass = 0      ! kg, the vehicle without riders (0: a rider sitting on the slide)
   end type vehicle_body_t
@@ -134,15 +149,18 @@ contains
       call add_body(vb%body, part, 0.0_wp, [0.0_wp, 0.0_wp, 0.0_wp])
       call add_body(vb%body, lying, pi, [mat_size(1)/2 + lying%com(1), 0.0_wp, mat_size(3)])
       vb%length = mat_size(1)
+      vb%width = max(mat_size(2), v%scale*shoulder_breadth)
       vb%vehicle_mass = mat_mass
     case (VEHICLE_SITTING)
       ! on the slide itself: seat (the pelvis contact) behind, heels in front
       call add_body(vb%body, sitting, 0.0_wp, [0.0_wp, 0.0_wp, 0.0_wp])
       vb%length = heel
+      vb%width = v%scale*shoulder_breadth
     case (VEHICLE_RING)
       call add_body(vb%body, torus(ring_mass, ring_radii), 0.0_wp, [ring_radii(1), 0.0_wp, ring_radii(2)])
       call add_body(vb%body, sitting, 0.0_wp, [ring_radii(1), 0.0_wp, ring_radii(2)])
       vb%length = 2*ring_radii(1)
+      vb%width = 2*sum(ring_radii)
       vb%vehicle_mass = ring_mass
     case (VEHICLE_DOUBLE_RING)
       ! two rings in line, touching (centres 2 (R + r) apart); the first
@@ -155,6 +173,7 @@ contains
         call add_body(vb%body, torus(ring_mass, ring_radii), 0.0_wp, centre)
         call add_body(vb%body, sitting, 0.0_wp, centre)
         vb%length = 4*r1 + 2*r2
+        vb%width = 2*(r1 + r2)
       end associate
       vb%vehicle_mass = 2*ring_mass
     case (VEHICLE_RAFT)
@@ -167,6 +186,7 @@ contains
           call add_body(vb%body, sitting, psi + pi, [r1 + (r1 - r2)*cos(psi), (r1 - r2)*sin(psi), raft_floor])
         end do
         vb%length = 2*r1
+        vb%width = 2*(r1 + r2)
       end associate
       vb%vehicle_mass = raft_mass
     end select
@@ -246,6 +266,50 @@ contains
       end associate
     end do
   end subroutine vehicle_ride_figures
+
+  !> The narrowest section of `surface` (docs/vehicles.md, "Does it fit?"):
+  !> the width of each section across its bottom, the extent of its points
+  !> along the surface's v tangent at the bottom (v = slide_bottom_v), every
+  !> section_step of arc length from the start to the end; `width` the
+  !> smallest (m) and `at` its arc length (m). `checked` is false, and
+  !> nothing is measured, on a surface that is not a slide (no sections: a
+  !> plane, a sphere).
+  subroutine narrowest_section(surface, width, at, checked, status)
+    class(surface_t), intent(in) :: surface
+    real(wp), intent(out) :: width, at
+    logical, intent(out) :: checked
+    type(status_t), intent(inout) :: status
+    type(surface_point_t) :: p
+    real(wp) :: u_min, u_max, v_min, v_max, u(1), across(3), v(section_points), section, d(section_points)
+    real(wp) :: x(section_points, 1), y(section_points, 1), z(section_points, 1)
+    integer :: i, n
+    width = huge(1.0_wp)
+    at = 0
+    checked = .false.
+    if (.not. status%ok()) return
+    select type (surface)
+    class is (slide_surface_t)
+      checked = .true.
+      call surface%domain(u_min, u_max, v_min, v_max)
+      v = [(v_min + (v_max - v_min)*(i - 1)/(section_points - 1), i = 1, section_points)]
+      n = max(2, ceiling(surface%length()/section_step) + 1)
+      do i = 1, n
+        u(1) = u_min + (u_max - u_min)*(i - 1)/(n - 1)
+        call surface%evaluate(u(1), slide_bottom_v, 1, p, status)
+        ! the section's points at once (a tube evaluates its centreline once)
+        if (status%ok()) call surface%points_on_grid(u, v, x, y, z, status)
+        if (.not. status%ok()) exit
+        across = p%rv/norm2(p%rv)
+        d = (x(:, 1) - p%r(1))*across(1) + (y(:, 1) - p%r(2))*across(2) + (z(:, 1) - p%r(3))*across(3)
+        section = max(maxval(d), 0.0_wp) - min(minval(d), 0.0_wp)
+        if (section < width - 1e-9_wp) then   ! ties: the first
+          width = section
+          at = surface%arc_length(u(1))
+        end if
+      end do
+      if (.not. status%ok()) call prefix_status(status, 'the width of the slide''s sections')
+    end select
+  end subroutine narrowest_section
 
   !> One person of size `scale`, rigid, in the pelvis frame P of rider_body
   !> (origin at the seat on the surface below the pelvis, x towards the feet,

@@ -10,7 +10,8 @@ module scenarios_sled
   use geometry_surface, only: surface_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_models, only: sled_description_t
-  use rider_vehicle, only: vehicle_t, build_vehicle_model, vehicle_ride_figures, vehicle_kinds, VEHICLE_BAR
+  use rider_vehicle, only: vehicle_t, vehicle_body_t, vehicle_body, build_vehicle_model, vehicle_ride_figures, &
+    vehicle_kinds, VEHICLE_BAR, narrowest_section, width_tolerance
   use design_ride_evaluation, only: felt_acceleration_units
   use io_hdf5, only: result_file_t
   use io_summary, only: summary_t
@@ -39,6 +40,9 @@ module scenarios_sled
     real(wp) :: gravity(3) = 0
     real(wp), allocatable :: speed(:), felt(:, :)   ! m/s; 3 x n, g
     real(wp), allocatable :: time(:)                ! s
+    real(wp) :: width = 0                           ! m, the vehicle's
+    logical :: fits_checked = .false.               ! the surface is a slide: its sections were measured
+    real(wp) :: narrowest = 0, narrowest_at = 0     ! m: the narrowest section's width and arc length
   contains
     procedure :: compute => vehicle_compute
     procedure :: write => vehicle_write
@@ -77,6 +81,8 @@ contains
                    'the start must lie in the parameter domain of the '//surface%describe(), status)
       return
     end if
+    if (vehicle%kind /= VEHICLE_BAR) call check_vehicle_fits(input, vehicle, surface, figures, status)
+    if (.not. status%ok()) return
     call build_vehicle_model(vehicle, config, surface, sys%mechanism, q0, qd0, status)
     call mark_input_failure(status)
     if (.not. status%ok()) return
@@ -93,6 +99,31 @@ contains
                          surface=surface, start_variables='u0, v0, phi0, du0, dv0, dphi0', figures=figures)
     end if
   end subroutine run_sled
+
+  !> A vehicle wider than the narrowest section of the slide (by more than
+  !> width_tolerance) is refused before any work: the sled's two contacts
+  !> under its long axis would carry it down a slide it cannot be in
+  !> (docs/vehicles.md, "Does it fit?"). On a surface that is not a slide
+  !> there is no section to check (the summary says so).
+  subroutine check_vehicle_fits(input, vehicle, surface, figures, status)
+    type(input_text_t), intent(in) :: input
+    type(vehicle_t), intent(in) :: vehicle
+    class(surface_t), intent(in) :: surface
+    type(vehicle_figures_t), intent(inout) :: figures
+    type(status_t), intent(inout) :: status
+    type(vehicle_body_t) :: vb
+    call vehicle_body(vehicle, vb, status)
+    call narrowest_section(surface, figures%narrowest, figures%narrowest_at, figures%fits_checked, status)
+    call mark_input_failure(status)
+    if (.not. status%ok()) return
+    figures%width = vb%width
+    if (figures%fits_checked .and. vb%width > figures%narrowest + width_tolerance) &
+      call invalid(input, 'sled', 'vehicle', ''''//trim(vehicle_kinds(vehicle%kind))//'''', 'it is '// &
+                   format_short(vb%width)//' m wide, but the slide''s section at arc length '// &
+                   format_short(figures%narrowest_at)//' m is only '//format_short(figures%narrowest)// &
+                   ' m wide across its bottom: a vehicle must fit every section of the slide (docs/vehicles.md, '// &
+                   '"Does it fit?")', status)
+  end subroutine check_vehicle_fits
 
   subroutine vehicle_compute(self, sys, status)
     class(vehicle_figures_t), intent(inout) :: self
@@ -124,6 +155,13 @@ contains
     character(len=:), allocatable :: units
     character(len=*), parameter :: axes(3) = [character(len=12) :: 'longitudinal', 'lateral', 'normal']
     integer :: k, n
+    call summary%add('vehicle_width', 'vehicle width', self%width, 'm')
+    if (self%fits_checked) then
+      call summary%add('narrowest_section', 'narrowest section', self%narrowest, 'm', &
+                       'm across its bottom, at arc length '//format_short(self%narrowest_at)//' m')
+    else
+      call summary%add_text('narrowest_section', 'narrowest section', 'not checked: the surface is not a slide')
+    end if
     if (.not. allocated(self%speed)) return
     n = size(self%speed)
     if (n < 1) return

@@ -38,13 +38,20 @@ refused small_child "&sled: scale = 0.5 is not allowed" \
   "&sled vehicle = 'sitting', scale = 0.5, u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
 refused boat "&sled: vehicle = 'boat' is not allowed" \
   "&sled vehicle = 'boat', u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
-# a mat rider and a ring down the demo slide for a second: the two normal
-# forces at the start carry the weight of the vehicle and its riders (on the
-# straight entry, slope 12 deg: M g cos 12 deg, M = 1.5 + 73.0 kg for the
-# mat and an adult, 7.0 + 73.0 x 0.8^3 kg for the ring and a child); the
+# a vehicle wider than the slide (the demo slide: a tube of radius 0.5 m,
+# 1 m across) is refused with both widths and where (exit 1, no file); on
+# 2572e9e a 1.2 m ring rode the 1 m tube (exit 0)
+refused ring_too_wide "&sled: vehicle = 'ring' is not allowed: it is 1.2 m wide, but the slide's section at arc length 0 m is only 1 m wide across its bottom" \
+  "&sled vehicle = 'ring', u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
+refused raft_too_wide "&sled: vehicle = 'raft' is not allowed: it is 1.94 m wide" \
+  "&sled vehicle = 'raft', riders = 4, u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
+# a mat rider and a sitting child down the demo slide for a second: the two
+# normal forces at the start carry the weight of the vehicle and its riders
+# (on the straight entry, slope 12 deg: M g cos 12 deg, M = 1.5 + 73.0 kg for
+# the mat and an adult, 73.0 x 0.8^3 kg for the child sitting up); the
 # felt acceleration at the start is (-mu cos 12, 0, cos 12) g along the
 # vehicle's axes, the summary and its JSON give the vehicle's figures
-for spec in "mat 1.0 74.5" "ring 0.8 44.376"; do
+for spec in "mat 1.0 74.5" "sitting 0.8 37.376"; do
   set -- $spec
   name=$1
   printf '%s\n%s\n' "$head" "&sled vehicle = '$name', scale = $2, friction = 'coulomb', mu = 0.07,
@@ -54,6 +61,8 @@ for spec in "mat 1.0 74.5" "ring 0.8 44.376"; do
   check 'grep -q "felt normal min / max" "$work/$name.out" && grep -q "vehicle top speed" "$work/$name.out"' \
     "$name: the summary lacks the vehicle's figures: $(cat "$work/$name.out")"
   check 'grep -q "\"vehicle_felt_normal_max\"" "$work/$name.json"' "$name: the JSON lacks vehicle_felt_normal_max"
+  check 'grep -q "narrowest section  *1.0000* m across its bottom" "$work/$name.out"' \
+    "$name: the summary lacks the narrowest section: $(cat "$work/$name.out")"
   "$python" - "$work/$name.h5" "$3" <<'PY' || { echo "FAIL $name: the normal forces or the felt acceleration (above)"; failures=$((failures + 1)); }
 import sys, math
 import h5py
