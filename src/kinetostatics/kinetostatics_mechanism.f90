@@ -105,10 +105,8 @@ module kinetostatics_mechanism
     logical :: converged = .false.             !< beta holds it (else the workspace's start_r does: the last solve failed)
     !> position passes and law evaluations so far: a workspace's cached dynamics holds while this is unchanged
     integer :: evaluation = 0
-    integer :: workspace_dims(WORKSPACE_SIZES) = 0   !< the sizes a workspace must have (prepare_workspace)
-    ! the laws' factors at the last dynamics (with the laws' loads, law_force): 1 for explicit laws,
-    ! |N| for scaled ones (the other results of an evaluation are the workspace's)
-    real(wp), allocatable :: law_factor(:)
+    !> the sizes a workspace must have and the model's stamp (prepare_workspace)
+    integer :: workspace_dims(WORKSPACE_SIZES) = 0
     integer, allocatable :: law_root_start(:) ! first index of law k's roots in a workspace's law_roots
     integer :: closure_solves = 0, hybrj_solves = 0
     !> the closure's blocks (kinetostatics_closure_blocks); set blocked = .false. before finalize
@@ -304,10 +302,10 @@ module kinetostatics_mechanism
       class(mechanism_t), intent(inout) :: self
     end subroutine acceleration_pass
 
-    module subroutine force_pass(self, inertia, applied, lambda, mu, loads)
+    module subroutine force_pass(self, work, inertia, applied, loads)
       class(mechanism_t), intent(inout) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
       logical, intent(in) :: inertia, applied
-      real(wp), intent(in) :: lambda(:), mu(:)
       integer, intent(in) :: loads
     end subroutine force_pass
 
@@ -343,8 +341,9 @@ module kinetostatics_mechanism
       type(status_t), intent(inout) :: status
     end subroutine evaluate_laws
 
-    pure module function law_force(self, k) result(force)
+    pure module function law_force(self, work, k) result(force)
       class(mechanism_t), intent(in) :: self
+      type(mechanism_workspace_t), intent(in) :: work
       integer, intent(in) :: k
       real(wp) :: force(3)
     end function law_force

@@ -59,7 +59,7 @@ contains
     call self%set_velocities(work, qd)
     call self%evaluate_laws(work, t, status)
     if (.not. status%ok()) return
-    self%law_factor = 1
+    work%law_factor = 1
     work%work_f = 0
     call self%set_accelerations(work, work%work_f)
     call self%inverse_dynamics(work, .true., .true., LOADS_EXPLICIT)
@@ -171,7 +171,7 @@ contains
     work%law_power = work%unit_power
     do k = 1, ns
       c = self%laws(self%scaled_laws(k))%law%contact
-      self%law_factor(self%scaled_laws(k)) = abs(work%normal(c))
+      work%law_factor(self%scaled_laws(k)) = abs(work%normal(c))
       work%law_power(self%scaled_laws(k)) = abs(work%normal(c))*work%unit_power(self%scaled_laws(k))
     end do
     call remember_dynamics(self, work, t, q, qd)
@@ -201,7 +201,7 @@ contains
     work%known_q(:) = q
     work%known_s(:) = qd
     do k = 1, self%n_laws
-      work%known_active(k) = self%laws(k)%law%active
+      work%known_active(k) = work%laws(k)%law%active
     end do
     work%known_evaluation = self%evaluation
   end subroutine remember_dynamics
@@ -213,7 +213,7 @@ contains
     integer :: k
     same = .true.
     do k = 1, self%n_laws
-      if (self%laws(k)%law%active .neqv. work%known_active(k)) same = .false.
+      if (work%laws(k)%law%active .neqv. work%known_active(k)) same = .false.
     end do
   end function same_switches
 

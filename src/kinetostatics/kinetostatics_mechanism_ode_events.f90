@@ -481,7 +481,7 @@ contains
         associate (first => m%law_root_start(k), last => m%law_root_start(k + 1) - 1)
           if (last < first) cycle
           if (all(fired(i + first:i + last) == 0)) cycle
-          call m%laws(k)%law%handle_event(t, fired(i + first:i + last), law_action, status)
+          call self%work%laws(k)%law%handle_event(t, fired(i + first:i + last), law_action, status)
           if (.not. status%ok()) return
           action = max(action, law_action)
         end associate

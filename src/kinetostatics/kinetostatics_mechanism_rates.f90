@@ -61,7 +61,8 @@ contains
   end procedure acceleration_pass
 
   !> Clears all forces, puts the cut forces lambda on the closure measurements
-  !> (and mu, a component, on the rate constraints' outputs) and the laws'
+  !> (and mu, a component, on the rate constraints' outputs) from the workspace
+  !> and its laws'
   !> loads selected by `loads` (LOADS_*) on their frames, and runs the elements
   !> backwards.
   module procedure force_pass
@@ -72,33 +73,34 @@ contains
     end do
     self%scalars%force = 0
     do k = 1, self%r
-      self%scalars(self%closure(k))%force = lambda(k)
+      self%scalars(self%closure(k))%force = work%lambda(k)
     end do
     do k = 1, self%nd
-      self%scalars(self%rate_outputs(k))%force = mu(k)
+      self%scalars(self%rate_outputs(k))%force = work%mu(k)
     end do
     select case (loads)
     case (LOADS_NONE)
     case (LOADS_EXPLICIT, LOADS_ALL)
       do k = 1, self%n_laws
-        if (.not. self%laws(k)%law%active) cycle
-        if (self%laws(k)%law%scaled .and. loads == LOADS_EXPLICIT) cycle
-        call put_loads(self, k, self%law_factor(k))
+        if (.not. work%laws(k)%law%active) cycle
+        if (work%laws(k)%law%scaled .and. loads == LOADS_EXPLICIT) cycle
+        call put_loads(self, work, k, work%law_factor(k))
       end do
     case default
-      call put_loads(self, loads, 1.0_wp)
+      call put_loads(self, work, loads, 1.0_wp)
     end select
     do k = self%n_elements, 1, -1
       call self%elements(k)%e%force(self%frames, self%scalars, inertia, applied)
     end do
   end procedure force_pass
 
-  subroutine put_loads(self, k, factor)
+  subroutine put_loads(self, work, k, factor)
     class(mechanism_t), intent(inout) :: self
+    type(mechanism_workspace_t), intent(in) :: work
     integer, intent(in) :: k
     real(wp), intent(in) :: factor
     integer :: i
-    associate (loads => self%laws(k)%law%loads)
+    associate (loads => work%laws(k)%law%loads)
       do i = 1, size(loads)
         associate (fr => self%frames(loads(i)%frame))
           fr%force = fr%force + factor*loads(i)%force
@@ -235,7 +237,7 @@ contains
     integer :: k
     work%lambda = 0
     work%mu = 0
-    call self%force_pass(inertia, applied, work%lambda, work%mu, loads)
+    call self%force_pass(work, inertia, applied, loads)
     if (self%nd > 0) then
       do k = 1, self%r
         work%work_x(k) = self%scalars(self%beta(k))%force
@@ -246,14 +248,14 @@ contains
       call self%blocks%solve(.true., work%work_x, .true.)
       work%lambda = -work%work_x(1:self%r)
       work%mu = -work%work_x(self%r + 1:)
-      call self%force_pass(inertia, applied, work%lambda, work%mu, loads)
+      call self%force_pass(work, inertia, applied, loads)
     else if (self%r > 0) then
       do k = 1, self%r
         work%lambda(k) = self%scalars(self%beta(k))%force
       end do
       call self%blocks%solve(.false., work%lambda, .true.)
       work%lambda = -work%lambda
-      call self%force_pass(inertia, applied, work%lambda, work%mu, loads)
+      call self%force_pass(work, inertia, applied, loads)
     end if
     do k = 1, self%ns
       work%gq(k) = self%scalars(self%q(self%speeds(k)))%force
@@ -289,7 +291,7 @@ contains
       call contact_kinematics(self%contacts(k), self%frames, work%contact_states(k))
     end do
     do k = 1, self%n_laws
-      associate (law => self%laws(k)%law)
+      associate (law => work%laws(k)%law)
         p = 0
         if (law%active) then
           call law%evaluate(t, self%frames, self%scalars, work%contact_states, status)
@@ -311,11 +313,13 @@ contains
     end do
   end procedure evaluate_laws
 
-  !> Force of law k at the last evaluation (its first load, i.e. on body B
-  !> for a contact law), N.
+  !> Force of law k at the last evaluation with this workspace (its first
+  !> load, i.e. on body B for a contact law), N.
   module procedure law_force
+    associate (unused => self)
+    end associate
     force = 0
-    if (self%laws(k)%law%active) force = self%law_factor(k)*self%laws(k)%law%loads(1)%force
+    if (work%laws(k)%law%active) force = work%law_factor(k)*work%laws(k)%law%loads(1)%force
   end procedure law_force
 
   !> Kinetic and potential energy of all mass elements at the current state (J).

@@ -6,6 +6,8 @@
 submodule (kinetostatics_mechanism) kinetostatics_mechanism_topology
   implicit none (type, external)
 
+  integer :: models_stamped = 0   ! stamps given so far (find_workspace_dims)
+
 contains
 
   !> Adds a frame and returns its index (the ground, index 1, exists from the start).
@@ -243,18 +245,19 @@ contains
     end do
     self%law_root_start(self%n_laws + 1) = nr + 1
 
-    allocate (self%law_factor(self%n_laws))
-    self%law_factor = 1
     call find_workspace_dims(self)
     self%ready = .true.
   end procedure finalize
 
-  !> Every size a workspace depends on (prepare_workspace).
+  !> Every size a workspace depends on and a stamp of this model, new at
+  !> every finalize and set_blocked (prepare_workspace): a workspace holds the
+  !> state of one model (its copies share the stamp).
   subroutine find_workspace_dims(self)
     class(mechanism_t), intent(inout) :: self
+    models_stamped = models_stamped + 1
     self%workspace_dims = [self%f, self%ns, self%r, self%nd, size(self%contacts), self%n_laws, &
                            size(self%block_contact), size(self%tracked), size(self%moving_unknowns), &
-                           size(self%scaled_laws), self%law_root_start(self%n_laws + 1) - 1]
+                           size(self%scaled_laws), self%law_root_start(self%n_laws + 1) - 1, models_stamped]
     self%evaluation = self%evaluation + 1
   end subroutine find_workspace_dims
 
@@ -270,11 +273,13 @@ contains
     self%warm = .false.
   end procedure set_blocked
 
-  !> Sizes the workspace for this mechanism (kinetostatics_mechanism_workspace):
-  !> on its first use and again only when the sizes changed (finalize,
-  !> set_blocked). No cached dynamics, no results (zero cut forces, rates,
-  !> accelerations, normal forces and powers); the closure's warm start from
-  !> the current dependent coordinates.
+  !> Sizes the workspace for this mechanism (kinetostatics_mechanism_workspace)
+  !> and gives it the model's state to start from: on its first use and again
+  !> only when the model changed (finalize, set_blocked, another mechanism).
+  !> The laws as the model holds them (loads, switches; factors 1), no
+  !> cached dynamics, no results (zero cut forces, rates, accelerations,
+  !> normal forces and powers); the closure's warm start from the current
+  !> dependent coordinates.
   module procedure prepare_workspace
     integer :: n, nc, nb, nt, nx, ns, nr, k
     if (all(work%dims == self%workspace_dims)) return
@@ -288,7 +293,7 @@ contains
     if (allocated(work%known_q)) then
       deallocate (work%lambda, work%mu, work%rates, work%qdd, work%mass, work%bias, work%normal, &
                   work%law_power, work%unit_power, work%law_roots, work%contact_states, work%gq, &
-                  work%g_mat, work%p_mat, work%h_mat)
+                  work%g_mat, work%p_mat, work%h_mat, work%laws, work%law_factor)
       deallocate (work%known_q, work%known_s, work%known_active, work%work_r, work%work_x, work%x_r, &
                   work%start_r, work%res_r, work%work_f, work%work_c, work%chol, work%n0, work%block, &
                   work%block_rhs, work%signs, work%ipiv_block, work%twist, work%wrench, work%unknown_twist, &
@@ -306,6 +311,9 @@ contains
     work%normal = 0
     work%law_power = 0
     work%law_roots = 1
+    work%laws = self%laws
+    allocate (work%law_factor(self%n_laws))
+    work%law_factor = 1
     allocate (work%known_q(self%f), work%known_s(n), work%known_active(self%n_laws))
     allocate (work%work_r(self%r), work%work_x(nx), work%x_r(self%r), work%start_r(self%r), work%res_r(self%r), &
               work%work_f(n), work%work_c(nc))

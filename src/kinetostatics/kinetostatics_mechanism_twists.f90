@@ -288,7 +288,7 @@ contains
     do k = 1, size(self%scaled_laws)
       work%load_wrench = 0
       tracked = .true.
-      associate (loads => self%laws(self%scaled_laws(k))%law%loads)
+      associate (loads => work%laws(self%scaled_laws(k))%law%loads)
         do j = 1, size(loads)
           if (loads(j)%frame == 1) cycle   ! the ground: no power
           t = self%tracked_slot(loads(j)%frame)

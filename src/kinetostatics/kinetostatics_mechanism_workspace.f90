@@ -20,15 +20,20 @@
 module kinetostatics_mechanism_workspace
   use base_kinds, only: wp
   use kinetostatics_contact, only: contact_state_t
+  use kinetostatics_force_law, only: force_law_box_t
   implicit none (type, external)
   private
   public :: mechanism_workspace_t, WORKSPACE_SIZES
 
   !> How many sizes of the mechanism the workspace is made for (dims).
-  integer, parameter :: WORKSPACE_SIZES = 11
+  integer, parameter :: WORKSPACE_SIZES = 12
 
   type :: mechanism_workspace_t
     integer :: dims(WORKSPACE_SIZES) = -1        ! the mechanism's sizes it was made for (prepare_workspace)
+    ! the state of an integration (copied from the mechanism's model by prepare_workspace)
+    type(force_law_box_t), allocatable :: laws(:)   ! the laws: their loads and switches (active)
+    real(wp), allocatable :: law_factor(:)       ! each law's factor at the last dynamics: 1 for explicit
+                                                 ! laws, |N| for scaled ones (law_force)
     ! results of the last evaluation with this workspace (what callers read)
     real(wp), allocatable :: lambda(:)           ! cut forces of the closure measurements
     real(wp), allocatable :: mu(:)               ! cut forces of the rate constraints

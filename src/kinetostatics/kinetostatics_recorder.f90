@@ -147,10 +147,10 @@ contains
     end do
     self%friction(:, :, i) = 0
     do k = 1, self%nl
-      self%law_force(:, k, i) = m%law_force(k)
+      self%law_force(:, k, i) = m%law_force(workspace, k)
       self%law_power(k, i) = workspace%law_power(k)
       self%law_work(k, i) = work(k)
-      self%law_active(k, i) = merge(1, 0, m%laws(k)%law%active)
+      self%law_active(k, i) = merge(1, 0, workspace%laws(k)%law%active)
       if (self%law_contact(k) > 0) self%friction(:, self%law_contact(k), i) = &
         self%friction(:, self%law_contact(k), i) + self%law_force(:, k, i)
     end do

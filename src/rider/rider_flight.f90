@@ -238,17 +238,17 @@ contains
     end if
   end subroutine contact_impact
 
-  !> The hips' holds of m (rider_hip_hold) on or off, holding `posture`
-  !> (flexion, tilt; rad).
-  subroutine set_holds(m, lay, on, posture)
-    type(mechanism_t), intent(inout) :: m
+  !> The hips' holds (rider_hip_hold) in the workspace `work` on or off,
+  !> holding `posture` (flexion, tilt; rad).
+  subroutine set_holds(work, lay, on, posture)
+    type(mechanism_workspace_t), intent(inout) :: work
     type(rider_layout_t), intent(in) :: lay
     logical, intent(in) :: on
     real(wp), intent(in) :: posture(2)
     integer :: k
     do k = 1, 2
       if (lay%hold(k) == 0) cycle
-      associate (law => m%laws(lay%hold(k))%law)
+      associate (law => work%laws(lay%hold(k))%law)
         law%active = on
         select type (law)
         type is (hip_hold_t)

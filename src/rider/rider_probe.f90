@@ -98,14 +98,15 @@ contains
       if (any(context /= self%applied)) then
         ! another stretch: its drag, and the closure from its record (a cold
         ! start: no predictor from the last solution, which may lie far off)
+        call m%prepare_workspace(work)
         do k = 1, N_CONTACTS
-          if (lay%drag(k) > 0) m%laws(lay%drag(k))%law%active = btest(nint(context(1)), k - 1)
+          if (lay%drag(k) > 0) work%laws(lay%drag(k))%law%active = btest(nint(context(1)), k - 1)
         end do
         do k = 1, m%r
           m%scalars(m%beta(k))%q = context(1 + k)
         end do
         ! the posture held in flight
-        if (self%may_fly) call set_holds(m, lay, nint(context(size(context))) /= 0, &
+        if (self%may_fly) call set_holds(work, lay, nint(context(size(context))) /= 0, &
                                          context(size(context) - 2:size(context) - 1))
         m%warm = .false.
         m%converged = .false.

@@ -513,7 +513,7 @@ contains
           c%velocity(:, n) = d%v
           c%normal_force(n) = m%contacts(lay%contact(k))%normal_force
           c%friction_force(:, n) = 0
-          if (lay%friction(k) > 0) c%friction_force(:, n) = m%law_force(lay%friction(k))
+          if (lay%friction(k) > 0) c%friction_force(:, n) = m%law_force(self%work, lay%friction(k))
           c%drag_force(:, n) = 0
           c%in_water(n) = 0
           c%reynolds(n) = 0
@@ -522,11 +522,11 @@ contains
           c%relative_velocity(:, n) = 0
           i = lay%drag(k)
           if (i > 0) then
-            select type (law => m%laws(i)%law)
+            select type (law => self%work%laws(i)%law)
             type is (water_drag_t)
               if (law%active) then
                 c%in_water(n) = 1
-                c%drag_force(:, n) = m%law_force(i)
+                c%drag_force(:, n) = m%law_force(self%work, i)
                 c%reynolds(n) = law%state%reynolds
                 c%drag_coefficient(n) = law%state%drag_coefficient
                 c%projected_area(n) = law%state%projected_area
@@ -614,12 +614,12 @@ contains
     integer :: k
     character(len=:), allocatable :: where
     do k = 1, self%mechanism%n_laws
-      was_active(k) = self%mechanism%laws(k)%law%active
+      was_active(k) = self%work%laws(k)%law%active
     end do
     call self%mechanism_ode_t%handle_event(t, y, fired, action, status)
     if (.not. status%ok()) return
     do k = 1, self%mechanism%n_laws
-      if (was_active(k) .neqv. self%mechanism%laws(k)%law%active) self%drag_switches = self%drag_switches + 1
+      if (was_active(k) .neqv. self%work%laws(k)%law%active) self%drag_switches = self%drag_switches + 1
     end do
     where = ' at arc length '//format_short(self%slide%arc_length(y(1)))//' m (t = '//format_short(t)//' s)'
     self%switch = SWITCH_NONE

@@ -217,22 +217,24 @@ contains
     real(wp), intent(in) :: full(:)
     real(wp), allocatable, intent(inout) :: y(:)
     real(wp), allocatable :: y_next(:)
+    logical, allocatable :: active(:)
     type(status_t) :: st
     integer :: k, f
     if (self%open_mask == 0 .and. mask /= 0) then
       ! a take-off from the slide: the posture to hold is the one here
       self%hold = [self%mechanism%scalars(self%layout%flexion)%q, self%mechanism%scalars(self%layout%tilt)%q]
     end if
-    associate (next => self%builds(mask))
-      next%scalars(:)%q = self%mechanism%scalars(:)%q
-      do k = 1, next%n_laws
-        next%laws(k)%law%active = self%mechanism%laws(k)%law%active
-      end do
-      call set_holds(next, self%layout, mask /= 0, self%hold)
-    end associate
+    active = [(self%work%laws(k)%law%active, k = 1, self%mechanism%n_laws)]
+    self%builds(mask)%scalars(:)%q = self%mechanism%scalars(:)%q
     self%builds(self%open_mask) = self%mechanism
     self%mechanism = self%builds(mask)
     self%open_mask = mask
+    ! the workspace takes the new build's laws; their switches carry over
+    call self%mechanism%prepare_workspace(self%work)
+    do k = 1, size(active)
+      self%work%laws(k)%law%active = active(k)
+    end do
+    call set_holds(self%work, self%layout, mask /= 0, self%hold)
     self%mechanism%warm = .false.
     self%mechanism%converged = .false.
     if (allocated(self%charts)) deallocate (self%charts, self%chart_angle)

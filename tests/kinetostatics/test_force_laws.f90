@@ -109,7 +109,7 @@ contains
       ! an interaction's power is its force on B times the slip: checks where
       ! the law puts its loads (forces and moment arms on both bodies)
       do k = 3, 4
-        associate (law => m%laws(k)%law, c => work%contact_states(1))
+        associate (law => work%laws(k)%law, c => work%contact_states(1))
           call check(abs(work%unit_power(k) - dot_product(law%loads(1)%force, c%slip)) <= &
                      power_tol*norm2(law%loads(1)%force)*(norm2(c%velocity_a) + norm2(c%velocity_b)), &
                      'contact law '''//law%name//''': power = F . slip')
@@ -143,7 +143,7 @@ contains
       end associate
     end do
     ! loads equal and opposite: the contact laws' forces on A and B cancel
-    associate (law => m%laws(3)%law)
+    associate (law => work%laws(3)%law)
       call check(maxval(abs(law%loads(1)%force + law%loads(2)%force)) == 0, &
                  'contact law: force on A = -force on B')
     end associate

@@ -7,8 +7,9 @@
 !>   at A with workspace 1 again is recomputed (the mechanism holds B's
 !>   state, so workspace 1's cache of A must not be used), with A's results;
 !>   at A twice with workspace 1 it is reused, bit for bit;
-!> - the results are the workspace's: workspace 1 keeps A's accelerations
-!>   and normal forces while workspace 2 computes B's;
+!> - the results are the workspace's: workspace 1 keeps A's accelerations,
+!>   normal forces and friction forces (the laws' loads and factors) while
+!>   workspace 2 computes B's;
 !> - two integrations of copies of one mechanism, each ODE object with its
 !>   own workspace, advanced in turns, give bit for bit the results of one
 !>   integration alone (nothing shared between them).
@@ -53,13 +54,14 @@ contains
     type(mechanism_t) :: m
     type(mechanism_workspace_t) :: work_1, work_2
     type(status_t) :: st
-    real(wp) :: a(3), again(3), b(3), normal_a(2), scale
+    real(wp) :: a(3), again(3), b(3), normal_a(2), scale, friction_a(3)
     integer :: reused
     m = sled
     call m%check_start(work_1, q_a, st)
     call check(st%ok(), 'workspace: the sled starts: '//st%text())
     call m%dynamics(work_1, 0.0_wp, q_a, s_a, a, st)
     normal_a = work_1%normal
+    friction_a = m%law_force(work_1, 1)
     reused = work_1%dynamics_reused
     call m%dynamics(work_1, 0.0_wp, q_a, s_a, again, st)
     call check(st%ok() .and. work_1%dynamics_reused == reused + 1 .and. all(again == a) .and. &
@@ -71,6 +73,9 @@ contains
     call check(all(work_1%normal == normal_a) .and. all(work_1%qdd == a) .and. all(work_2%qdd == b) .and. &
                maxval(abs(work_2%normal - normal_a)) > 1e-3_wp*maxval(abs(normal_a)), &
                'workspace: each workspace holds the results of its own last evaluation (A''s kept while B''s computed)')
+    call check(all(m%law_force(work_1, 1) == friction_a) .and. norm2(friction_a) > 0 .and. &
+               norm2(m%law_force(work_2, 1) - friction_a) > 1e-3_wp*norm2(friction_a), &
+               'workspace: each workspace holds its own laws'' loads and factors (A''s friction kept while B''s computed)')
     call m%dynamics(work_1, 0.0_wp, q_a, s_a, again, st)
     ! 1e-12: the closure solved again from B's warm start (to 1e-13 of the sled's lengths)
     scale = maxval(abs(a))

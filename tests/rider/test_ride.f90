@@ -230,7 +230,7 @@ contains
     character(len=64) :: label
     call prepare_ride(p, description%slide, opt, plain%inner, y_start, st, water%field)
     do k = 1, N_CONTACTS
-      plain%inner%mechanism%laws(plain%inner%layout%drag(k))%law%active = in_water(k)
+      plain%inner%work%laws(plain%inner%layout%drag(k))%law%active = in_water(k)
     end do
     lo = t0
     hi = t_event + 1e-7_wp
@@ -297,13 +297,13 @@ contains
       associate (s => ride%series, m => sys%mechanism, work => sys%work)
         do c = 1, N_CONTACTS
           law = sys%layout%drag(c)
-          m%laws(law)%law%active = s%contact(c)%in_water(i) == 1
+          work%laws(law)%law%active = s%contact(c)%in_water(i) == 1
         end do
         call m%evaluate(work, s%time(i), s%state(1:3, i), s%state(4:6, i), residual, st)
         do c = 1, N_CONTACTS
           law = sys%layout%drag(c)
-          if (.not. m%laws(law)%law%active) cycle
-          f = m%law_force(law)
+          if (.not. work%laws(law)%law%active) cycle
+          f = m%law_force(work, law)
           w = m%frames(sys%layout%contact_frame(c))%v
           ! rtol 1e-12: one dot product against the mechanism's sum over loaded frames
           call check_close(work%law_power(law), dot_product(f, w), 1e-12_wp, 1e-12_wp, &
@@ -333,7 +333,7 @@ contains
       call check(i > 0, 'a record with the pelvis in the water')
       if (i == 0) return
       do c = 1, N_CONTACTS
-        m%laws(sys%layout%drag(c))%law%active = s%contact(c)%in_water(i) == 1
+        work%laws(sys%layout%drag(c))%law%active = s%contact(c)%in_water(i) == 1
       end do
       law = sys%layout%drag(1)
       t = s%time(i)
@@ -343,11 +343,11 @@ contains
       call m%dynamics(work, t, s%state(1:3, i), s%state(4:6, i), again, st)
       call check(work%dynamics_reused == reused + 1 .and. all(again == qdd) .and. all(work%normal == n1), &
                  'dynamics at the same state reused, the same results')
-      m%laws(law)%law%active = .false.
+      work%laws(law)%law%active = .false.
       call m%dynamics(work, t, s%state(1:3, i), s%state(4:6, i), again, st)
       call check(work%dynamics_reused == reused + 1 .and. any(again /= qdd), &
                  'the pelvis''s drag switched off: recomputed, other accelerations')
-      m%laws(law)%law%active = .true.
+      work%laws(law)%law%active = .true.
       call m%dynamics(work, t, s%state(1:3, i + 1), s%state(4:6, i + 1), again, st)
       call m%dynamics(work, t, s%state(1:3, i), s%state(4:6, i), again, st)
       ! 1e-12: the closure solved again from another warm start (to 1e-13 m)

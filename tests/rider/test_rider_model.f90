@@ -248,7 +248,7 @@ contains
           force = huge(1.0_wp)
         end select
         ! atol 1e-12 N: the same arithmetic up to the scaled laws' |N| factor
-        call check(all(abs(m%law_force(lay%friction(k)) - force) <= 1e-12_wp*max(1.0_wp, norm2(force))), &
+        call check(all(abs(m%law_force(work, lay%friction(k)) - force) <= 1e-12_wp*max(1.0_wp, norm2(force))), &
                    trim(kinds(j))//': contact force = the point mass''s slip_force')
         call check(abs(norm2(slip) - w) <= 1e-12_wp, trim(kinds(j))//': every contact slips at w')
       end do
