@@ -127,7 +127,7 @@ contains
       if (.not. status%ok()) exit
       cpu(r) = (finish - start)/duration
       stats = ode%statistics()
-      hybrj = sys%mechanism%hybrj_solves
+      hybrj = sys%work%hybrj_solves
       root_calls = sys%root_calls
       hits = sys%root_cache_hits
     end do

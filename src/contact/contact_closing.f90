@@ -264,7 +264,7 @@ contains
     type(contact_system_t) :: placed
     if (.not. status%ok()) return
     placed = system
-    associate (body => model%ode%mechanism%frames(model%body_frame(2)))
+    associate (body => model%ode%work%frames(model%body_frame(2)))
       placed%bodies(1)%position = body%r
       placed%bodies(1)%rotation = body%rot
       placed%bodies(1)%velocity = body%v

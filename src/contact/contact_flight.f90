@@ -242,7 +242,7 @@ contains
     logical :: may_touch
     may_touch = .false.
     if (present(touching)) may_touch = touching
-    associate (c => system%contacts(1), body => flight%mechanism%frames(flight%body_frame))
+    associate (c => system%contacts(1), body => flight%work%frames(flight%body_frame))
       s1 = findloc([(system%shapes(k)%name == c%shape_1, k = 1, size(system%shapes))], .true., dim=1)
       s2 = findloc([(system%shapes(k)%name == c%shape_2, k = 1, size(system%shapes))], .true., dim=1)
       flight%gap = new_contact_gap(system%shapes(s1)%surface, c%side_1, system%shapes(s2)%surface, c%side_2, &
@@ -286,13 +286,14 @@ contains
     real(wp), allocatable :: q0(:), qd0(:)
     integer :: i
     if (.not. status%ok()) return
-    associate (m => flight%mechanism)
+    associate (m => flight%mechanism, work => flight%work)
+      call m%prepare_workspace(work)
       do i = 1, 3
-        m%scalars(flight%coordinates(i))%q = position(i)
-        m%scalars(flight%coordinates(3 + i))%q = 0
+        work%scalars(flight%coordinates(i))%q = position(i)
+        work%scalars(flight%coordinates(3 + i))%q = 0
       end do
-      call m%elements(flight%rotation_element)%e%centre_chart(rotation)
-      q0 = m%scalars(flight%coordinates)%q
+      call work%elements(flight%rotation_element)%e%centre_chart(rotation)
+      q0 = work%scalars(flight%coordinates)%q
       call m%set_positions(flight%work, q0, status)
       if (.not. status%ok()) return
       call start_rates(flight, twist, qd0, status)
@@ -319,7 +320,7 @@ contains
         unit = 0
         unit(k) = 1
         call m%set_velocities(flight%work, unit)
-        jac(:, k) = [m%frames(flight%body_frame)%omega, m%frames(flight%body_frame)%v]
+        jac(:, k) = [flight%work%frames(flight%body_frame)%omega, flight%work%frames(flight%body_frame)%v]
       end do
       qd0 = twist
       call lu_factor(jac, ipiv, status)
@@ -362,7 +363,7 @@ contains
   subroutine update_gap(self, status)
     class(flight_ode_t), intent(inout) :: self
     type(status_t), intent(inout) :: status
-    associate (body => self%mechanism%frames(self%body_frame))
+    associate (body => self%work%frames(self%body_frame))
       call self%gap%update(identity, ground_origin, body%rot, body%r, status)
     end associate
   end subroutine update_gap
@@ -394,7 +395,7 @@ contains
       ! opened: the root is the gap from here (opening_gap, nonzero, where CVODE looks again)
       if (self%gap%gap > 0) return
     end if
-    associate (body => self%mechanism%frames(self%body_frame))
+    associate (body => self%work%frames(self%body_frame))
       speed = -self%gap%rate([0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], body%v, body%omega)
     end associate
     if (self%has_impacts) then
@@ -427,7 +428,7 @@ contains
     integer :: f, ipiv(3)
     logical :: closes
     f = self%mechanism%f
-    associate (body => self%mechanism%frames(self%body_frame), n => self%gap%normal)
+    associate (body => self%work%frames(self%body_frame), n => self%gap%normal)
       inertia = matmul(body%rot, matmul(self%inertia, transpose(body%rot)))
       centre = body%r + matmul(body%rot, self%centre)
       arm = self%gap%point_2 - centre
@@ -526,7 +527,7 @@ contains
       call resize(self%gap_point, 3, 2*n)
       call resize(self%gap_velocity, 3, 2*n)
     end if
-    associate (body => self%mechanism%frames(self%body_frame))
+    associate (body => self%work%frames(self%body_frame))
       self%gap_point(:, n) = self%gap%point_1
       v = body%v + cross(body%omega, self%gap%point_2 - body%r)
       self%gap_velocity(:, n) = v - dot_product(v, self%gap%normal)*self%gap%normal

@@ -509,7 +509,7 @@ contains
     integer :: contact(5), pose(6), i
     real(wp) :: rel(3, 3), x2(3)
     character(len=2) :: digit
-    associate (cm => closed%ode%mechanism, cl => closed%links(k))
+    associate (cm => closed%ode%work, cl => closed%links(k))
       if (starts_in_other_chart(cm, cl%pair)) then
         call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': at velocity level a contact '// &
           'cannot start at (within 10 degrees of) a pole of its shapes'' parametrisation (its surfaces do not '// &
@@ -603,7 +603,7 @@ contains
         associate (c => system%contacts(k), link => model%links(k))
           if (link%open) then
             ! from the loop's closed configuration
-            call place_open_contact_pair(m, link%pair, closed%ode%mechanism, closed%links(k)%pair)
+            call place_open_contact_pair(m, link%pair, closed%ode%work, closed%links(k)%pair)
             link%start_gap = closed%links(k)%start_gap
           else if (link%level == LEVEL_POSITION) then
             b1 = body_index(system, c%body_1)
@@ -627,7 +627,7 @@ contains
       if (.not. status%ok()) return
       do k = 1, size(model%links)
         if (model%links(k)%level == LEVEL_POSITION .and. .not. model%links(k)%open) &
-          call check_contact_branch(m, model%links(k)%pair, status)
+          call check_contact_branch(model%ode%work, model%links(k)%pair, status)
       end do
       if (.not. status%ok()) return
       call start_speeds(system, model, carrier, s0, status)
@@ -661,7 +661,7 @@ contains
         unit(k) = 1
         call m%set_velocities(model%ode%work, unit)
         do b = 1, nb
-          associate (fr => m%frames(model%body_frame(b + 1)))
+          associate (fr => model%ode%work%frames(model%body_frame(b + 1)))
             jac(6*b - 5:6*b, k) = [fr%omega, fr%v]
           end associate
         end do

@@ -58,7 +58,7 @@ module contact_pair
   use kinetostatics_plane_joint, only: new_plane_joint
   use kinetostatics_free_rotation, only: new_free_rotation
   use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT, MEASURE_PLANE_PLANE
-  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use contact_surface_search, only: nearest_point, support_point
   use contact_closure_monitor, only: new_closure_monitor
   implicit none (type, external)
@@ -261,12 +261,12 @@ contains
   end subroutine add_gap_scalars
 
   !> Start values of an open pair from the closed configuration of a loop
-  !> pair (`closed` in mechanism `mc`): the same contact points, and phi the
-  !> angle from x_1D to x_2D about z_1D.
+  !> pair (`closed`, whose mechanism's state is `mc`): the same contact
+  !> points, and phi the angle from x_1D to x_2D about z_1D.
   subroutine place_open_contact_pair(m, pair, mc, closed)
     type(mechanism_t), intent(inout) :: m
     type(contact_pair_t), intent(in) :: pair, closed
-    type(mechanism_t), intent(in) :: mc
+    type(mechanism_workspace_t), intent(in) :: mc
     real(wp) :: x2(3)
     type(surface_chart_t) :: chart
     m%scalars(pair%u1)%q = mc%scalars(closed%u1)%q
@@ -356,7 +356,7 @@ contains
   !> Whether a surface joint of the loop pair changed chart at its placement
   !> (place_contact_pair): its (u, v) are then not the surface's own parameters.
   logical function starts_in_other_chart(m, pair) result(other)
-    type(mechanism_t), intent(in) :: m
+    type(mechanism_workspace_t), intent(in) :: m
     type(contact_pair_t), intent(in) :: pair
     integer :: k, joints(3)
     other = .false.
@@ -399,7 +399,7 @@ contains
 
   !> After a closure: the normals must be antiparallel (z_1D . z_2D < 0).
   subroutine check_contact_branch(m, pair, status)
-    type(mechanism_t), intent(in) :: m
+    type(mechanism_workspace_t), intent(in) :: m
     type(contact_pair_t), intent(in) :: pair
     type(status_t), intent(inout) :: status
     real(wp) :: c

@@ -255,7 +255,7 @@ contains
     if (.not. status%ok()) return
     call self%mechanism%set_velocities(self%work, y(3:4))
     call self%mechanism%set_accelerations(self%work, qdd)
-    associate (fr => self%mechanism%frames(self%frame), b => self%body)
+    associate (fr => self%work%frames(self%frame), b => self%body)
       rot = fr%rot
       if (self%kind == ACCELERATION_FELT) then
         a = norm2(fr%a - b%gravity)

@@ -63,7 +63,6 @@ module kinetostatics_contact
     integer :: normal_row = 0                  ! ... and its row among the closure measurements
     real(wp) :: normal_sign = 1                ! +1 or -1, see the module comment
     logical :: one_sided = .true.              ! lift-off (N falling through 0) is an event
-    real(wp) :: normal_force = 0               ! N, at the last complete evaluation
     !> a rolling contact's no-slip outputs along x_P and y_P (scalar indices;
     !> 0: none): their cut forces are its static friction on body B
     integer :: tangential_outputs(2) = 0

@@ -1,7 +1,7 @@
 !> The force-law seam: every applied load of a mechanism other than gravity
 !> (which stays in the mass elements, kinetostatics_mass) is a force law.
 !>
-!> A law is evaluated with the mechanism's state after the position and
+!> A law is evaluated with the state of a workspace after the position and
 !> velocity passes — the time t, every frame (positions, velocities), every
 !> scalar (joint variables and their rates) and every contact's kinematics
 !> (kinetostatics_contact: point, normal, slip velocity) — and fills its
@@ -14,7 +14,7 @@
 !> Two kinds:
 !>   explicit  (scaled = .false.) the loads depend on (t, q, q') only. Laws
 !>             must not read normal forces: they are unknown while the
-!>             accelerations are solved (contact%normal_force is the value of
+!>             accelerations are solved (a workspace's normal_force is the value of
 !>             the previous complete evaluation);
 !>   scaled    (scaled = .true.) the load is |N_c| times what `evaluate`
 !>             returns, N_c the normal force of the law's contact (Coulomb

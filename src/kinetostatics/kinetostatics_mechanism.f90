@@ -18,13 +18,20 @@
 !>   dynamics  kinetostatics_mechanism_dynamics: the equations of motion;
 !>   twists    kinetostatics_mechanism_twists: the mass matrix and the
 !>             normal-force maps from the partial twists;
-!> and the results of an evaluation (cut forces, rates, M, normal forces,
-!> the laws' powers and roots, the contacts' kinematics), the work arrays and
-!> the cache of the last dynamics in a workspace
+!> and the state of one integration (the frames' and scalars' positions,
+!> rates and forces, the elements' kept geometry and charts, the closure's
+!> factored blocks and warm start, the laws' loads, switches and factors),
+!> the results of an evaluation (cut forces, rates, M, normal forces, the
+!> laws' powers and roots, the contacts' kinematics), the work arrays and the
+!> cache of the last dynamics in a workspace
 !> (kinetostatics_mechanism_workspace) that the caller owns (the ODE object
-!> of an integration) and passes to every procedure that computes: the
-!> mechanism itself is the model and the current state of its frames and
-!> scalars (and of its laws: their loads, switches and factors).
+!> of an integration) and passes to every procedure that computes. The
+!> mechanism itself is the model: every procedure that computes takes it
+!> intent(in), so one mechanism object serves two integrations at once. Its
+!> frames, scalars, elements and laws are the state a workspace starts from
+!> (prepare_workspace copies them when the workspace first meets the model);
+!> a change to them after that does not reach that workspace (change the
+!> workspace's, or give a fresh one).
 !> Each room's module comment gives its method. The core names no element
 !> kind: what it needs of an element it asks element_t (kinetostatics_state).
 module kinetostatics_mechanism
@@ -76,16 +83,20 @@ module kinetostatics_mechanism
     integer :: element = 0                    ! the element (a surface joint)
   end type surface_edge_t
 
-  type, extends(nonlinear_system_t) :: mechanism_t
+  !> The model: what does not change while it computes (every procedure
+  !> that computes takes the mechanism intent(in) and a workspace with the
+  !> state of one integration, kinetostatics_mechanism_workspace).
+  type :: mechanism_t
+    ! the state a workspace starts from (prepare_workspace): the fixed joint values, the start guesses
     type(frame_state_t), allocatable :: frames(:)
     type(scalar_state_t), allocatable :: scalars(:)
     character(len=32), allocatable :: frame_names(:), scalar_names(:)
     integer, allocatable :: role(:)
-    type(element_box_t), allocatable :: elements(:)
+    type(element_box_t), allocatable :: elements(:)   ! as built (a workspace computes with copies)
     type(loop_t), allocatable :: loops(:)
     type(rate_constraint_t), allocatable :: rate_constraints(:)
     type(contact_t), allocatable :: contacts(:)
-    type(force_law_box_t), allocatable :: laws(:)
+    type(force_law_box_t), allocatable :: laws(:)     ! as built (a workspace evaluates copies)
     type(surface_edge_t), allocatable :: edges(:)
     integer :: n_frames = 0, n_scalars = 0, n_elements = 0, n_laws = 0, f = 0, r = 0
     integer :: ns = 0                         !< number of speeds (independent rates); f without rate constraints
@@ -101,19 +112,14 @@ module kinetostatics_mechanism
       residual_tolerance=1e-8_wp)
     real(wp) :: closure_tolerance = 1e-10_wp   !< max |g - target| accepted (measurement units)
     logical :: ready = .false.
-    logical :: warm = .false.                  !< a closure has converged in this run (a warm start exists)
-    logical :: converged = .false.             !< beta holds it (else the workspace's start_r does: the last solve failed)
-    !> position passes and law evaluations so far: a workspace's cached dynamics holds while this is unchanged
-    integer :: evaluation = 0
     !> the sizes a workspace must have and the model's stamp (prepare_workspace)
     integer :: workspace_dims(WORKSPACE_SIZES) = 0
     integer, allocatable :: law_root_start(:) ! first index of law k's roots in a workspace's law_roots
-    integer :: closure_solves = 0, hybrj_solves = 0
     !> the closure's blocks (kinetostatics_closure_blocks); set blocked = .false. before finalize
     !> for one block and full passes (the unblocked computation, for comparison)
     logical :: blocked = .true.
     type(element_reach_t) :: reach
-    type(closure_blocks_t) :: blocks
+    type(closure_blocks_t) :: blocks           ! their structure (a workspace fills and factors copies)
     integer, allocatable :: beta_pass(:)   ! the elements the dependent coordinates reach (downstream_of)
     integer, allocatable :: unknowns_pass(:)   ! ... and those the unknown rates [beta'; sigma'] reach
     integer, allocatable :: unknowns(:), rows(:)   ! scalars of x = [beta; sigma] and of the rows [g; c]
@@ -136,13 +142,21 @@ module kinetostatics_mechanism
     procedure :: add_frame, add_scalar, add_element, add_loop, add_contact, add_law, set_coordinates, finalize
     procedure :: add_rate_constraint, set_kinematic, set_loop_branch, add_monitor
     procedure :: frame_index, scalar_index, contact_index, law_index
-    procedure :: residual => mechanism_residual
-    procedure :: jacobian => mechanism_jacobian
     procedure :: position_pass, velocity_pass, acceleration_pass, force_pass, record_pass
     procedure :: set_positions, set_velocities, set_accelerations, inverse_dynamics, evaluate_laws
     procedure :: check_start, set_blocked, prepare_workspace
     procedure :: dynamics, evaluate, energy, closure_residual, normal_forces, law_force
   end type mechanism_t
+
+  !> The closure f(beta) = g - target for the nonlinear solver: the model and
+  !> the workspace whose scalars beta are (set_positions).
+  type, extends(nonlinear_system_t) :: closure_system_t
+    class(mechanism_t), pointer :: mechanism => null()
+    type(mechanism_workspace_t), pointer :: work => null()
+  contains
+    procedure :: residual => closure_system_residual
+    procedure :: jacobian => closure_system_jacobian
+  end type closure_system_t
 
   interface
     ! topology (kinetostatics_mechanism_topology)
@@ -251,91 +265,97 @@ module kinetostatics_mechanism
     end subroutine prepare_workspace
 
     ! closure (kinetostatics_mechanism_closure)
-    module subroutine mechanism_residual(self, x, f, status)
-      class(mechanism_t), intent(inout) :: self
+    module subroutine closure_system_residual(self, x, f, status)
+      class(closure_system_t), intent(inout) :: self
       real(wp), intent(in) :: x(:)
       real(wp), intent(out) :: f(:)
       type(status_t), intent(inout) :: status
-    end subroutine mechanism_residual
+    end subroutine closure_system_residual
 
-    module subroutine mechanism_jacobian(self, x, jac, status)
-      class(mechanism_t), intent(inout) :: self
+    module subroutine closure_system_jacobian(self, x, jac, status)
+      class(closure_system_t), intent(inout) :: self
       real(wp), intent(in) :: x(:)
       real(wp), intent(out) :: jac(:, :)
       type(status_t), intent(inout) :: status
-    end subroutine mechanism_jacobian
+    end subroutine closure_system_jacobian
 
     module subroutine set_positions(self, work, q, status)
-      class(mechanism_t), intent(inout) :: self
-      type(mechanism_workspace_t), intent(inout) :: work
+      class(mechanism_t), intent(in), target :: self
+      type(mechanism_workspace_t), intent(inout), target :: work
       real(wp), intent(in) :: q(:)
       type(status_t), intent(inout) :: status
     end subroutine set_positions
 
     module subroutine check_start(self, work, q, status)
-      class(mechanism_t), intent(inout) :: self
+      class(mechanism_t), intent(in) :: self
       type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: q(:)
       type(status_t), intent(inout) :: status
     end subroutine check_start
 
-    real(wp) module function closure_residual(self) result(e)
+    real(wp) module function closure_residual(self, work) result(e)
       class(mechanism_t), intent(in) :: self
+      type(mechanism_workspace_t), intent(in) :: work
     end function closure_residual
 
     ! rates (kinetostatics_mechanism_rates)
-    module subroutine position_pass(self, status)
-      class(mechanism_t), intent(inout) :: self
+    module subroutine position_pass(self, work, status)
+      class(mechanism_t), intent(in) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
       type(status_t), intent(inout) :: status
     end subroutine position_pass
 
-    module subroutine record_pass(self, status)
-      class(mechanism_t), intent(inout) :: self
+    module subroutine record_pass(self, work, status)
+      class(mechanism_t), intent(in) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
       type(status_t), intent(inout) :: status
     end subroutine record_pass
 
-    module subroutine velocity_pass(self)
-      class(mechanism_t), intent(inout) :: self
+    module subroutine velocity_pass(self, work)
+      class(mechanism_t), intent(in) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
     end subroutine velocity_pass
 
-    module subroutine acceleration_pass(self)
-      class(mechanism_t), intent(inout) :: self
+    module subroutine acceleration_pass(self, work)
+      class(mechanism_t), intent(in) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
     end subroutine acceleration_pass
 
     module subroutine force_pass(self, work, inertia, applied, loads)
-      class(mechanism_t), intent(inout) :: self
+      class(mechanism_t), intent(in) :: self
       type(mechanism_workspace_t), intent(inout) :: work
       logical, intent(in) :: inertia, applied
       integer, intent(in) :: loads
     end subroutine force_pass
 
     module subroutine set_velocities(self, work, s)
-      class(mechanism_t), intent(inout) :: self
+      class(mechanism_t), intent(in) :: self
       type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: s(:)
     end subroutine set_velocities
 
     module subroutine set_accelerations(self, work, sd)
-      class(mechanism_t), intent(inout) :: self
+      class(mechanism_t), intent(in) :: self
       type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: sd(:)
     end subroutine set_accelerations
 
     module subroutine inverse_dynamics(self, work, inertia, applied, loads)
-      class(mechanism_t), intent(inout) :: self
+      class(mechanism_t), intent(in) :: self
       type(mechanism_workspace_t), intent(inout) :: work
       logical, intent(in) :: inertia, applied
       integer, intent(in) :: loads
     end subroutine inverse_dynamics
 
-    module subroutine normal_forces(self, lambda, n)
+    module subroutine normal_forces(self, work, lambda, n)
       class(mechanism_t), intent(in) :: self
+      type(mechanism_workspace_t), intent(in) :: work
       real(wp), intent(in) :: lambda(:)
       real(wp), intent(out) :: n(:)
     end subroutine normal_forces
 
     module subroutine evaluate_laws(self, work, t, status)
-      class(mechanism_t), intent(inout) :: self
+      class(mechanism_t), intent(in) :: self
       type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: t
       type(status_t), intent(inout) :: status
@@ -348,14 +368,15 @@ module kinetostatics_mechanism
       real(wp) :: force(3)
     end function law_force
 
-    module subroutine energy(self, kinetic, potential)
+    module subroutine energy(self, work, kinetic, potential)
       class(mechanism_t), intent(in) :: self
+      type(mechanism_workspace_t), intent(in) :: work
       real(wp), intent(out) :: kinetic, potential
     end subroutine energy
 
     ! dynamics (kinetostatics_mechanism_dynamics)
     module subroutine dynamics(self, work, t, q, qd, qdd, status)
-      class(mechanism_t), intent(inout) :: self
+      class(mechanism_t), intent(in) :: self
       type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: t, q(:), qd(:)
       real(wp), intent(out) :: qdd(:)
@@ -363,7 +384,7 @@ module kinetostatics_mechanism
     end subroutine dynamics
 
     module subroutine evaluate(self, work, t, q, qd, residual, status)
-      class(mechanism_t), intent(inout) :: self
+      class(mechanism_t), intent(in) :: self
       type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: t, q(:), qd(:)
       real(wp), intent(out) :: residual
@@ -372,12 +393,12 @@ module kinetostatics_mechanism
 
     ! twists (kinetostatics_mechanism_twists)
     module subroutine twist_mass_matrix(self, work)
-      class(mechanism_t), intent(inout) :: self
+      class(mechanism_t), intent(in) :: self
       type(mechanism_workspace_t), intent(inout) :: work
     end subroutine twist_mass_matrix
 
     module subroutine twist_unit_loads(self, work)
-      class(mechanism_t), intent(inout) :: self
+      class(mechanism_t), intent(in) :: self
       type(mechanism_workspace_t), intent(inout) :: work
     end subroutine twist_unit_loads
   end interface

@@ -23,81 +23,97 @@ submodule (kinetostatics_mechanism) kinetostatics_mechanism_closure
 
 contains
 
-  module procedure mechanism_residual
+  module procedure closure_system_residual
+    call full_residual(self%mechanism, self%work, x, f, status)
+  end procedure closure_system_residual
+
+  !> The closure residual at beta = x: a position pass over every element.
+  subroutine full_residual(self, work, x, f, status)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
+    real(wp), intent(in) :: x(:)
+    real(wp), intent(out) :: f(:)
+    type(status_t), intent(inout) :: status
     integer :: k
     do k = 1, self%r
-      self%scalars(self%beta(k))%q = x(k)
+      work%scalars(self%beta(k))%q = x(k)
     end do
     f = 0
-    call self%position_pass(status)
+    call self%position_pass(work, status)
     if (.not. status%ok()) return
     do k = 1, self%r
-      f(k) = self%scalars(self%closure(k))%q - self%target(k)
+      f(k) = work%scalars(self%closure(k))%q - self%target(k)
     end do
-  end procedure mechanism_residual
+  end subroutine full_residual
 
   !> The closure residual after only beta changed since the last position
   !> pass (the Newton iterates of set_positions): the position maps of the
   !> elements beta reaches; the others' inputs and so their outputs are
   !> unchanged (for the rider: the pelvis's surface joint is not evaluated
   !> again). Same values to the bit as mechanism_residual.
-  subroutine beta_residual(self, x, f, status)
-    class(mechanism_t), intent(inout) :: self
+  subroutine beta_residual(self, work, x, f, status)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: x(:)
     real(wp), intent(out) :: f(:)
     type(status_t), intent(inout) :: status
     integer :: k
     do k = 1, self%r
-      self%scalars(self%beta(k))%q = x(k)
+      work%scalars(self%beta(k))%q = x(k)
     end do
     f = 0
-    self%evaluation = self%evaluation + 1
+    work%evaluation = work%evaluation + 1
     do k = 1, size(self%beta_pass)
-      call self%elements(self%beta_pass(k))%e%position(self%frames, self%scalars, status)
+      call work%elements(self%beta_pass(k))%e%position(work%frames, work%scalars, status)
       if (.not. status%ok()) return
     end do
     do k = 1, self%r
-      f(k) = self%scalars(self%closure(k))%q - self%target(k)
+      f(k) = work%scalars(self%closure(k))%q - self%target(k)
     end do
   end subroutine beta_residual
 
-  module procedure mechanism_jacobian
+  module procedure closure_system_jacobian
     integer :: k
-    do k = 1, self%r
-      self%scalars(self%beta(k))%q = x(k)
-    end do
-    jac = 0
-    call self%position_pass(status)
-    if (.not. status%ok()) return
-    call closure_jacobian(self, jac)
-  end procedure mechanism_jacobian
+    associate (m => self%mechanism, work => self%work)
+      do k = 1, m%r
+        work%scalars(m%beta(k))%q = x(k)
+      end do
+      jac = 0
+      call m%position_pass(work, status)
+      if (.not. status%ok()) return
+      call closure_jacobian(m, work, jac)
+    end associate
+  end procedure closure_system_jacobian
 
   !> J_beta column by column: velocity passes with q' = 0, beta' = e_k (3.21),
   !> each over the elements that rate reaches (kinetostatics_closure_blocks).
   !> Destroys the velocity state.
-  subroutine closure_jacobian(self, jac)
-    class(mechanism_t), intent(inout) :: self
+  subroutine closure_jacobian(self, work, jac)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(out) :: jac(:, :)
-    call fill_closure(self, self%r)
-    call self%blocks%assemble(.false., jac)
+    call fill_closure(self, work, self%r)
+    call work%blocks%assemble(.false., jac)
   end subroutine closure_jacobian
 
   !> Columns 1..last of J_x (last = r: J_beta) into the blocks.
-  subroutine fill_closure(self, last)
-    class(mechanism_t), intent(inout) :: self
+  subroutine fill_closure(self, work, last)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: last
-    call self%blocks%fill(self%elements, self%reach, self%frames, self%scalars, self%unknowns, self%rows, last)
+    call work%blocks%fill(work%elements, self%reach, work%frames, work%scalars, self%unknowns, self%rows, last)
   end subroutine fill_closure
 
   !> With rate constraints: J_x of the unknown rates [beta'; sigma'] against
   !> [g'; c] (filled), LU-factored block by block.
-  subroutine factor_filled_rates(self, status)
-    class(mechanism_t), intent(inout) :: self
+  subroutine factor_filled_rates(self, work, status)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     type(status_t), intent(inout) :: status
     type(status_t) :: lapack
     integer :: zero_pivot
     if (self%nd == 0 .or. .not. status%ok()) return
-    call self%blocks%factor(.true., lapack, zero_pivot)
+    call work%blocks%factor(.true., lapack, zero_pivot)
     if (.not. lapack%ok()) then
       if (zero_pivot > self%r) then
         call set_status(status, STATUS_NOT_CONVERGED, 'the rate constraints are singular: the rate of '''// &
@@ -110,29 +126,32 @@ contains
   end subroutine factor_filled_rates
 
   !> J_beta at the current positions, LU-factored block by block.
-  subroutine factor_closure(self, status)
-    class(mechanism_t), intent(inout) :: self
+  subroutine factor_closure(self, work, status)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     type(status_t), intent(inout) :: status
-    call fill_closure(self, self%r)
-    call factor_jbeta(self, status)
+    call fill_closure(self, work, self%r)
+    call factor_jbeta(self, work, status)
   end subroutine factor_closure
 
   !> With rate constraints: J_x filled and factored. Destroys the velocity state.
-  subroutine factor_rates(self, status)
-    class(mechanism_t), intent(inout) :: self
+  subroutine factor_rates(self, work, status)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     type(status_t), intent(inout) :: status
     if (self%nd == 0 .or. .not. status%ok()) return
-    call fill_closure(self, self%r + self%nd)
-    call factor_filled_rates(self, status)
+    call fill_closure(self, work, self%r + self%nd)
+    call factor_filled_rates(self, work, status)
   end subroutine factor_rates
 
   !> LU of the filled J_beta blocks.
-  subroutine factor_jbeta(self, status)
-    class(mechanism_t), intent(inout) :: self
+  subroutine factor_jbeta(self, work, status)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     type(status_t), intent(inout) :: status
     type(status_t) :: lapack
     integer :: zero_pivot
-    call self%blocks%factor(.false., lapack, zero_pivot)
+    call work%blocks%factor(.false., lapack, zero_pivot)
     if (.not. lapack%ok()) then
       call set_status(status, STATUS_NOT_CONVERGED, 'the closure Jacobian is singular: '// &
                       describe_dependent(self, zero_pivot)//' does not move the closure measurements')
@@ -155,8 +174,9 @@ contains
   end function describe_dependent
 
   !> The loop whose closure is worst at the current positions.
-  function worst_loop(self) result(text)
+  function worst_loop(self, work) result(text)
     class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(in) :: work
     character(len=:), allocatable :: text
     integer :: l, m
     real(wp) :: worst, e
@@ -165,7 +185,7 @@ contains
     text = ''
     do l = 1, size(self%loops)
       do m = 1, size(self%loops(l)%measurements)
-        e = abs(self%scalars(self%loops(l)%measurements(m))%q - self%loops(l)%targets(m))
+        e = abs(work%scalars(self%loops(l)%measurements(m))%q - self%loops(l)%targets(m))
         if (e > worst) then
           worst = e
           write (num, '(es10.3)') e
@@ -182,6 +202,7 @@ contains
   !> and inverse_dynamics then take the same workspace.
   module procedure set_positions
     type(nonlinear_result_t) :: result
+    type(closure_system_t) :: system
     type(status_t) :: solve_status
     integer :: k, it, fresh
     real(wp) :: size_res, last
@@ -189,26 +210,26 @@ contains
 
     if (any(work%dims /= self%workspace_dims)) call self%prepare_workspace(work)
 
-    predicted = self%r > 0 .and. self%converged
+    predicted = self%r > 0 .and. work%converged
     if (predicted) call predict_dependents(self, work, q)
     do k = 1, self%f
-      self%scalars(self%q(k))%q = q(k)
+      work%scalars(self%q(k))%q = q(k)
     end do
     if (self%r == 0) then
-      call self%position_pass(status)
-      call factor_rates(self, status)
+      call self%position_pass(work, status)
+      call factor_rates(self, work, status)
       return
     end if
-    self%closure_solves = self%closure_solves + 1
+    work%closure_solves = work%closure_solves + 1
     associate (x => work%x_r, start => work%start_r, res => work%res_r)
     ! the warm start: the last solution, kept in start_r after a failed solve
     ! (whose scalars hold its last iterate); before any solution, the scalars
-    if (self%converged .or. .not. self%warm) then
+    if (work%converged .or. .not. work%warm) then
       do k = 1, self%r
-        start(k) = self%scalars(self%beta(k))%q
+        start(k) = work%scalars(self%beta(k))%q
       end do
     end if
-    self%converged = .false.
+    work%converged = .false.
     ! Newton from the warm start, moved by the predictor; after the predictor
     ! first with J_beta of the last solution (still factored: each step costs
     ! one position pass instead of r velocity passes), then, if that contracts
@@ -223,12 +244,12 @@ contains
     do it = 1, 10
       ! the first pass at the new q over every element, then only beta changes
       if (it == 1) then
-        call self%residual(x, res, status)
+        call full_residual(self, work, x, res, status)
       else
-        call beta_residual(self, x, res, status)
+        call beta_residual(self, work, x, res, status)
       end if
       if (.not. status%ok()) then
-        if (status%code == STATUS_DOMAIN .and. self%warm) return   ! see the module comment
+        if (status%code == STATUS_DOMAIN .and. work%warm) return   ! see the module comment
         exit
       end if
       size_res = maxval(abs(res))
@@ -241,7 +262,7 @@ contains
         converged = .not. chord .or. polished .or. size_res <= 1e-4_wp*self%closure_tolerance
         if (converged) exit
         polished = .true.
-        call self%blocks%solve(.false., res, .false.)
+        call work%blocks%solve(.false., res, .false.)
         x = x - res
         cycle
       end if
@@ -249,16 +270,16 @@ contains
       if (.not. chord) then
         if (fresh == 4) exit
         fresh = fresh + 1
-        call factor_closure(self, solve_status)
+        call factor_closure(self, work, solve_status)
         if (.not. solve_status%ok()) exit
       end if
       last = size_res
-      call self%blocks%solve(.false., res, .false.)
+      call work%blocks%solve(.false., res, .false.)
       x = x - res
     end do
     if (.not. converged) then
       if (status%ok()) then
-        call beta_residual(self, x, res, status)
+        call beta_residual(self, work, x, res, status)
         converged = status%ok() .and. maxval(abs(res)) <= self%closure_tolerance
       end if
     end if
@@ -266,26 +287,28 @@ contains
       ! HYBRJ from the warm start (thesis (3.25) with MINPACK's safeguards)
       status = status_t()
       x = start
-      self%hybrj_solves = self%hybrj_solves + 1
-      call solve_nonlinear(self, x, self%closure_options, result, solve_status)
-      call self%residual(x, res, status)
+      work%hybrj_solves = work%hybrj_solves + 1
+      system%mechanism => self
+      system%work => work
+      call solve_nonlinear(system, x, self%closure_options, result, solve_status)
+      call full_residual(self, work, x, res, status)
       if (.not. solve_status%ok() .or. .not. status%ok()) then
         if (status%ok()) status = solve_status
-        call prefix_status(status, 'closure failed at '//worst_loop(self))
+        call prefix_status(status, 'closure failed at '//worst_loop(self, work))
         return
       end if
       ! polish with Newton steps
       do it = 1, 3
         if (maxval(abs(res)) <= 1e-3_wp*self%closure_tolerance) exit
-        call factor_closure(self, status)
+        call factor_closure(self, work, status)
         if (.not. status%ok()) return
-        call self%blocks%solve(.false., res, .false.)
+        call work%blocks%solve(.false., res, .false.)
         x = x - res
-        call self%residual(x, res, status)
+        call full_residual(self, work, x, res, status)
         if (.not. status%ok()) return
       end do
       if (maxval(abs(res)) > self%closure_tolerance) then
-        call set_status(status, STATUS_NOT_CONVERGED, 'closure failed at '//worst_loop(self))
+        call set_status(status, STATUS_NOT_CONVERGED, 'closure failed at '//worst_loop(self, work))
         return
       end if
     end if
@@ -293,20 +316,20 @@ contains
     ! J_beta at the solution; with rate constraints it is the first r columns
     ! of J_x, which are filled anyway
     if (self%nd > 0) then
-      call fill_closure(self, self%r + self%nd)
-      call factor_jbeta(self, status)
+      call fill_closure(self, work, self%r + self%nd)
+      call factor_jbeta(self, work, status)
     else
-      call factor_closure(self, status)
+      call factor_closure(self, work, status)
     end if
     if (.not. status%ok()) then
       call prefix_status(status, 'closure')
       return
     end if
-    call check_branches(self, status)
+    call check_branches(self, work, status)
     if (.not. status%ok()) return
-    self%warm = .true.
-    self%converged = .true.
-    call factor_filled_rates(self, status)
+    work%warm = .true.
+    work%converged = .true.
+    call factor_filled_rates(self, work, status)
   end procedure set_positions
 
   !> The tangent predictor of the warm start: the elements still hold the
@@ -318,19 +341,19 @@ contains
   !> Leaves the correction J_beta^-1 J_q (q - q0) in work_r; destroys the
   !> velocity state.
   subroutine predict_dependents(self, work, q)
-    class(mechanism_t), intent(inout) :: self
+    class(mechanism_t), intent(in) :: self
     type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: q(:)
     integer :: k
-    self%scalars%qd = 0
+    work%scalars%qd = 0
     do k = 1, self%f
-      self%scalars(self%q(k))%qd = q(k) - self%scalars(self%q(k))%q
+      work%scalars(self%q(k))%qd = q(k) - work%scalars(self%q(k))%q
     end do
-    call self%velocity_pass()
+    call self%velocity_pass(work)
     do k = 1, self%r
-      work%work_r(k) = self%scalars(self%closure(k))%qd
+      work%work_r(k) = work%scalars(self%closure(k))%qd
     end do
-    call self%blocks%solve(.false., work%work_r, .false.)
+    call work%blocks%solve(.false., work%work_r, .false.)
     if (self%nd > 0 .or. size(self%kinematic) > 0) return
     ! The second-order term: along beta(s) = beta(q0 + s (q - q0)), beta'(0) =
     ! -work_r, and g'' = 0 gives beta''(0) = -J_beta^-1 g''|beta''=0 (an
@@ -339,36 +362,37 @@ contains
     ! (a Taylor series that converges fast; on a jump of metres it would
     ! spoil the start); it saves a Newton step on most steps of an integrator.
     do k = 1, self%r
-      self%scalars(self%beta(k))%qd = -work%work_r(k)
+      work%scalars(self%beta(k))%qd = -work%work_r(k)
     end do
     do k = 1, size(self%beta_pass)   ! only beta' changed
-      call self%elements(self%beta_pass(k))%e%velocity(self%frames, self%scalars)
+      call work%elements(self%beta_pass(k))%e%velocity(work%frames, work%scalars)
     end do
-    self%scalars%qdd = 0
-    call self%acceleration_pass()
+    work%scalars%qdd = 0
+    call self%acceleration_pass(work)
     do k = 1, self%r
-      work%res_r(k) = self%scalars(self%closure(k))%qdd
+      work%res_r(k) = work%scalars(self%closure(k))%qdd
     end do
-    call self%blocks%solve(.false., work%res_r, .false.)
+    call work%blocks%solve(.false., work%res_r, .false.)
     if (0.5_wp*maxval(abs(work%res_r)) <= 0.1_wp*maxval(abs(work%work_r))) &
       work%work_r = work%work_r + 0.5_wp*work%res_r
   end subroutine predict_dependents
 
   !> Every loop with a branch condition on it (set_loop_branch).
-  subroutine check_branches(self, status)
-    class(mechanism_t), intent(inout) :: self
+  subroutine check_branches(self, work, status)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     type(status_t), intent(inout) :: status
     integer :: k
     real(wp) :: c
     do k = 1, size(self%loops)
       associate (pair => self%loops(k)%antiparallel)
         if (pair(1) == 0) cycle
-        c = dot_product(self%frames(pair(1))%rot(:, 3), self%frames(pair(2))%rot(:, 3))
+        c = dot_product(work%frames(pair(1))%rot(:, 3), work%frames(pair(2))%rot(:, 3))
         if (c > 0) then
           call set_status(status, STATUS_DOMAIN, 'loop '''//self%loops(k)%name//''' closed on the branch '// &
             'with parallel normals (z of '''//trim(self%frame_names(pair(1)))//''' . z of '''// &
             trim(self%frame_names(pair(2)))//''' = '//format_short(c)//'), not on the physical one')
-          self%converged = .false.
+          work%converged = .false.
           return
         end if
       end associate
@@ -384,8 +408,8 @@ contains
     integer :: i, k
     character(len=16) :: num
     if (.not. status%ok()) return
-    self%warm = .false.
-    self%converged = .false.
+    work%warm = .false.
+    work%converged = .false.
     call self%set_positions(work, q, status)
     if (.not. status%ok()) then
       call prefix_status(status, 'at the start')
@@ -394,7 +418,7 @@ contains
     if (self%r == 0) return
     ! the whole J_beta (its blocks already factored without a zero pivot)
     allocate (jbeta(self%r, self%r), pivots(self%r))
-    call self%blocks%assemble(.false., jbeta)
+    call work%blocks%assemble(.false., jbeta)
     jlu = jbeta
     call lu_factor(jlu, pivots, status)
     if (status%ok()) call lu_reciprocal_condition(jlu, one_norm(jbeta), rcond, status)
@@ -412,7 +436,7 @@ contains
     integer :: k
     e = 0
     do k = 1, self%r
-      e = max(e, abs(self%scalars(self%closure(k))%q - self%target(k)))
+      e = max(e, abs(work%scalars(self%closure(k))%q - self%target(k)))
     end do
   end procedure closure_residual
 end submodule kinetostatics_mechanism_closure

@@ -31,7 +31,7 @@ contains
   !> forces in `normal`, the laws' powers in `law_power`. The velocity and acceleration states are
   !> overwritten (use `evaluate` for a consistent state). Called again at the
   !> same (t, q, s) with the same laws switched on and no position pass or law
-  !> evaluation in between (with this workspace or another), it returns the
+  !> evaluation in between with this workspace, it returns the
   !> results it left (the positions and laws are still those of that state)
   !> and sets the velocities again.
   module procedure dynamics
@@ -41,7 +41,7 @@ contains
     logical :: consistent
 
     if (any(work%dims /= self%workspace_dims)) call self%prepare_workspace(work)
-    if (work%known_evaluation == self%evaluation .and. t == work%known_t) then
+    if (work%known_evaluation == work%evaluation .and. t == work%known_t) then
       if (all(q == work%known_q) .and. all(qd == work%known_s) .and. &
           same_switches(self, work)) then
         qdd = work%qdd
@@ -64,14 +64,14 @@ contains
     call self%set_accelerations(work, work%work_f)
     call self%inverse_dynamics(work, .true., .true., LOADS_EXPLICIT)
     work%bias(:) = work%gq   ! (:): no reallocation test
-    if (nc > 0) call self%normal_forces(work%lambda, work%n0)
+    if (nc > 0) call self%normal_forces(work, work%lambda, work%n0)
 
     ! M and G, all velocities zero, applied forces off
     do k = 1, self%n_frames
-      self%frames(k)%omega = 0
-      self%frames(k)%v = 0
+      work%frames(k)%omega = 0
+      work%frames(k)%v = 0
     end do
-    self%scalars%qd = 0
+    work%scalars%qd = 0
     if (self%twist_route) then
       call twist_mass_matrix(self, work)
     else
@@ -110,7 +110,7 @@ contains
       do k = 1, ns
         call self%inverse_dynamics(work, .false., .false., self%scaled_laws(k))
         work%p_mat(:, k) = work%gq
-        call self%normal_forces(work%lambda, work%h_mat(:, k))
+        call self%normal_forces(work, work%lambda, work%h_mat(:, k))
       end do
     end if
     work%signs = 1
@@ -181,7 +181,7 @@ contains
   !> mechanism with an element of unknown links): s' = e_i, velocities zero,
   !> applied forces off.
   subroutine full_mass_column(self, work, i)
-    class(mechanism_t), intent(inout) :: self
+    class(mechanism_t), intent(in) :: self
     type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: i
     work%work_f = 0
@@ -189,11 +189,11 @@ contains
     call self%set_accelerations(work, work%work_f)
     call self%inverse_dynamics(work, .true., .false., LOADS_NONE)
     work%mass(:, i) = -work%gq
-    if (size(self%contacts) > 0) call self%normal_forces(work%lambda, work%g_mat(:, i))
+    if (size(self%contacts) > 0) call self%normal_forces(work, work%lambda, work%g_mat(:, i))
   end subroutine full_mass_column
 
   subroutine remember_dynamics(self, work, t, q, qd)
-    class(mechanism_t), intent(inout) :: self
+    class(mechanism_t), intent(in) :: self
     type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: t, q(:), qd(:)
     integer :: k
@@ -203,7 +203,7 @@ contains
     do k = 1, self%n_laws
       work%known_active(k) = work%laws(k)%law%active
     end do
-    work%known_evaluation = self%evaluation
+    work%known_evaluation = work%evaluation
   end subroutine remember_dynamics
 
   !> Every law switched on or off as at the last completed `dynamics`.
@@ -219,7 +219,7 @@ contains
 
   !> N = N0 + G q'' for every contact (without the scaled laws' share).
   subroutine affine_normal_forces(self, work, qdd)
-    class(mechanism_t), intent(inout) :: self
+    class(mechanism_t), intent(in) :: self
     type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: qdd(:)
     integer :: i, c
@@ -241,16 +241,14 @@ contains
     residual = huge(1.0_wp)
     reused = work%dynamics_reused
     call self%dynamics(work, t, q, qd, qdd, status)
-    if (status%ok()) call self%record_pass(status)   ! at q: a reused dynamics left the positions there
+    if (status%ok()) call self%record_pass(work, status)   ! at q: a reused dynamics left the positions there
     if (.not. status%ok()) return
     ! a reused dynamics has just set these velocities; a computed one overwrote them
     if (work%dynamics_reused == reused) call self%set_velocities(work, qd)
     call self%set_accelerations(work, qdd)
     call self%inverse_dynamics(work, .true., .true., LOADS_ALL)
     residual = maxval(abs(work%gq))
-    call self%normal_forces(work%lambda, work%work_c)
-    do c = 1, size(self%contacts)
-      self%contacts(c)%normal_force = work%work_c(c)
-    end do
+    call self%normal_forces(work, work%lambda, work%work_c)
+    work%normal_force(:) = work%work_c
   end procedure evaluate
 end submodule kinetostatics_mechanism_dynamics

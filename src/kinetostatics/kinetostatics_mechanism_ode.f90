@@ -150,7 +150,7 @@ contains
     call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), st)
     if (.not. st%ok()) return
     do k = 1, self%mechanism%n_elements
-      note = self%mechanism%elements(k)%e%singular_note()
+      note = self%work%elements(k)%e%singular_note()
       if (len(note) == 0) cycle
       if (len(text) > 0) text = text//'; '
       text = text//note
@@ -193,9 +193,9 @@ contains
     if (.not. status%ok()) return
     do k = 1, size(self%mechanism%contacts)
       associate (c => self%mechanism%contacts(k))
-        if (c%one_sided .and. .not. c%normal_force > 0) then
+        if (c%one_sided .and. .not. self%work%normal_force(k) > 0) then
           call set_status(status, STATUS_INVALID_INPUT, 'at the start contact '''//c%name// &
-            ''' does not press (normal force '//format_short(c%normal_force)//' N): it would lift off at once')
+            ''' does not press (normal force '//format_short(self%work%normal_force(k))//' N): it would lift off at once')
           return
         end if
       end associate

@@ -90,11 +90,11 @@ contains
     integer, intent(in) :: k
     logical, intent(in) :: closed
     real(wp), intent(inout) :: g
-    associate (m => self%mechanism, a => self%chart_angle(k))
+    associate (work => self%work, a => self%chart_angle(k))
       if (a > 0) then
-        g = m%elements(self%charts(k))%e%chart_margin(y(a))
+        g = work%elements(self%charts(k))%e%chart_margin(y(a))
       else if (closed) then
-        g = m%elements(self%charts(k))%e%chart_margin(m%scalars(-a)%q)
+        g = work%elements(self%charts(k))%e%chart_margin(work%scalars(-a)%q)
       end if
     end associate
   end subroutine chart_root
@@ -370,7 +370,7 @@ contains
     self%cache_g(first:first + nc - 1) = (1 - w)*self%exact_n(:, 1) + w*self%exact_n(:, 2)
   end subroutine interpolate_normal_forces
 
-  !> Fills cache_g from the mechanism's state: user crossings always, edges
+  !> Fills cache_g from the workspace's state: user crossings always, edges
   !> from level 1, the laws' roots from level 2, lift-off from level 3 (the
   !> others are kept); a full evaluation (level 3) updates the scales G_i.
   module procedure root_values
@@ -395,7 +395,7 @@ contains
         if (self%edge_coordinate(k) > 0) then
           s = y(self%edge_coordinate(k))
         else
-          s = m%scalars(m%edges(k)%scalar)%q
+          s = self%work%scalars(m%edges(k)%scalar)%q
         end if
         if (m%edges(k)%upper) then
           self%cache_g(i) = m%edges(k)%bound - m%edges(k)%margin - s
@@ -438,7 +438,7 @@ contains
           if (.not. e%along_u) then
             ! an edge in v where the parametrisation is singular is a pole (an
             ! ellipsoid's v = +-pi/2): said so, with the surface and what to do
-            note = m%elements(m%edges(k)%element)%e%singular_note()
+            note = self%work%elements(m%edges(k)%element)%e%singular_note()
             if (len(note) > 0) then
               call set_status(status, STATUS_DOMAIN, 'surface joint '''//name//''' reached the pole v = '// &
                               format_short(e%bound)//' of its surface'//where//': '//note)
@@ -563,12 +563,12 @@ contains
       call m%set_positions(self%work, y(1:f), status)
       if (.not. status%ok()) return
       call m%set_velocities(self%work, y(f + 1:n))
-      call m%elements(k)%e%rebase(m%scalars)
+      call self%work%elements(k)%e%rebase(self%work%scalars)
       do i = 1, f
-        y(i) = m%scalars(m%q(i))%q
+        y(i) = self%work%scalars(m%q(i))%q
       end do
       do i = 1, m%ns
-        y(f + i) = m%scalars(m%q(m%speeds(i)))%qd
+        y(f + i) = self%work%scalars(m%q(m%speeds(i)))%qd
       end do
       self%chart_changes = self%chart_changes + 1
     end associate

@@ -27,10 +27,10 @@ contains
   !> Every element but the record-only ones (record_pass).
   module procedure position_pass
     integer :: k
-    self%evaluation = self%evaluation + 1
+    work%evaluation = work%evaluation + 1
     do k = 1, self%n_elements
-      if (self%elements(k)%e%record_only) cycle
-      call self%elements(k)%e%position(self%frames, self%scalars, status)
+      if (work%elements(k)%e%record_only) cycle
+      call work%elements(k)%e%position(work%frames, work%scalars, status)
       if (.not. status%ok()) return
     end do
   end procedure position_pass
@@ -40,8 +40,8 @@ contains
   module procedure record_pass
     integer :: k
     do k = 1, self%n_elements
-      if (.not. self%elements(k)%e%record_only) cycle
-      call self%elements(k)%e%position(self%frames, self%scalars, status)
+      if (.not. work%elements(k)%e%record_only) cycle
+      call work%elements(k)%e%position(work%frames, work%scalars, status)
       if (.not. status%ok()) return
     end do
   end procedure record_pass
@@ -49,14 +49,14 @@ contains
   module procedure velocity_pass
     integer :: k
     do k = 1, self%n_elements
-      call self%elements(k)%e%velocity(self%frames, self%scalars)
+      call work%elements(k)%e%velocity(work%frames, work%scalars)
     end do
   end procedure velocity_pass
 
   module procedure acceleration_pass
     integer :: k
     do k = 1, self%n_elements
-      call self%elements(k)%e%acceleration(self%frames, self%scalars)
+      call work%elements(k)%e%acceleration(work%frames, work%scalars)
     end do
   end procedure acceleration_pass
 
@@ -68,15 +68,15 @@ contains
   module procedure force_pass
     integer :: k
     do k = 1, self%n_frames
-      self%frames(k)%torque = 0
-      self%frames(k)%force = 0
+      work%frames(k)%torque = 0
+      work%frames(k)%force = 0
     end do
-    self%scalars%force = 0
+    work%scalars%force = 0
     do k = 1, self%r
-      self%scalars(self%closure(k))%force = work%lambda(k)
+      work%scalars(self%closure(k))%force = work%lambda(k)
     end do
     do k = 1, self%nd
-      self%scalars(self%rate_outputs(k))%force = work%mu(k)
+      work%scalars(self%rate_outputs(k))%force = work%mu(k)
     end do
     select case (loads)
     case (LOADS_NONE)
@@ -90,19 +90,19 @@ contains
       call put_loads(self, work, loads, 1.0_wp)
     end select
     do k = self%n_elements, 1, -1
-      call self%elements(k)%e%force(self%frames, self%scalars, inertia, applied)
+      call work%elements(k)%e%force(work%frames, work%scalars, inertia, applied)
     end do
   end procedure force_pass
 
   subroutine put_loads(self, work, k, factor)
-    class(mechanism_t), intent(inout) :: self
-    type(mechanism_workspace_t), intent(in) :: work
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: k
     real(wp), intent(in) :: factor
     integer :: i
     associate (loads => work%laws(k)%law%loads)
       do i = 1, size(loads)
-        associate (fr => self%frames(loads(i)%frame))
+        associate (fr => work%frames(loads(i)%frame))
           fr%force = fr%force + factor*loads(i)%force
           fr%torque = fr%torque + factor*loads(i)%torque
         end associate
@@ -128,33 +128,33 @@ contains
   !> are written out (no internal procedures: gfortran called them, ~800,000
   !> times in a default run).
   subroutine set_rates(self, work, given, level)
-    class(mechanism_t), intent(inout) :: self
+    class(mechanism_t), intent(in) :: self
     type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: given(:)
     integer, intent(in) :: level
     integer :: k
     if (level == 1) then
       do k = 1, self%ns
-        self%scalars(self%q(self%speeds(k)))%qd = given(k)
+        work%scalars(self%q(self%speeds(k)))%qd = given(k)
       end do
       do k = 1, self%r
-        self%scalars(self%beta(k))%qd = 0
+        work%scalars(self%beta(k))%qd = 0
       end do
       do k = 1, self%nd
-        self%scalars(self%sigma(k))%qd = 0
+        work%scalars(self%sigma(k))%qd = 0
       end do
-      call self%velocity_pass()
+      call self%velocity_pass(work)
     else
       do k = 1, self%ns
-        self%scalars(self%q(self%speeds(k)))%qdd = given(k)
+        work%scalars(self%q(self%speeds(k)))%qdd = given(k)
       end do
       do k = 1, self%r
-        self%scalars(self%beta(k))%qdd = 0
+        work%scalars(self%beta(k))%qdd = 0
       end do
       do k = 1, self%nd
-        self%scalars(self%sigma(k))%qdd = 0
+        work%scalars(self%sigma(k))%qdd = 0
       end do
-      call self%acceleration_pass()
+      call self%acceleration_pass(work)
     end if
     if (self%r + self%nd > 0) then
       ! the second pass only over the elements the unknown rates reach: the
@@ -162,69 +162,69 @@ contains
       if (self%nd == 0) then
         if (level == 1) then
           do k = 1, self%r
-            work%work_r(k) = self%scalars(self%closure(k))%qd
+            work%work_r(k) = work%scalars(self%closure(k))%qd
           end do
         else
           do k = 1, self%r
-            work%work_r(k) = self%scalars(self%closure(k))%qdd
+            work%work_r(k) = work%scalars(self%closure(k))%qdd
           end do
         end if
-        call self%blocks%solve(.false., work%work_r, .false.)
+        call work%blocks%solve(.false., work%work_r, .false.)
         if (level == 1) then
           do k = 1, self%r
-            self%scalars(self%beta(k))%qd = -work%work_r(k)
+            work%scalars(self%beta(k))%qd = -work%work_r(k)
           end do
         else
           do k = 1, self%r
-            self%scalars(self%beta(k))%qdd = -work%work_r(k)
+            work%scalars(self%beta(k))%qdd = -work%work_r(k)
           end do
         end if
       else
         if (level == 1) then
           do k = 1, self%r
-            work%work_x(k) = self%scalars(self%closure(k))%qd
+            work%work_x(k) = work%scalars(self%closure(k))%qd
           end do
           do k = 1, self%nd
-            work%work_x(self%r + k) = self%scalars(self%rate_outputs(k))%qd
+            work%work_x(self%r + k) = work%scalars(self%rate_outputs(k))%qd
           end do
         else
           do k = 1, self%r
-            work%work_x(k) = self%scalars(self%closure(k))%qdd
+            work%work_x(k) = work%scalars(self%closure(k))%qdd
           end do
           do k = 1, self%nd
-            work%work_x(self%r + k) = self%scalars(self%rate_outputs(k))%qdd
+            work%work_x(self%r + k) = work%scalars(self%rate_outputs(k))%qdd
           end do
         end if
-        call self%blocks%solve(.true., work%work_x, .false.)
+        call work%blocks%solve(.true., work%work_x, .false.)
         if (level == 1) then
           do k = 1, self%r
-            self%scalars(self%beta(k))%qd = -work%work_x(k)
+            work%scalars(self%beta(k))%qd = -work%work_x(k)
           end do
           do k = 1, self%nd
-            self%scalars(self%sigma(k))%qd = -work%work_x(self%r + k)
+            work%scalars(self%sigma(k))%qd = -work%work_x(self%r + k)
           end do
         else
           do k = 1, self%r
-            self%scalars(self%beta(k))%qdd = -work%work_x(k)
+            work%scalars(self%beta(k))%qdd = -work%work_x(k)
           end do
           do k = 1, self%nd
-            self%scalars(self%sigma(k))%qdd = -work%work_x(self%r + k)
+            work%scalars(self%sigma(k))%qdd = -work%work_x(self%r + k)
           end do
         end if
       end if
       if (level == 1) then
         do k = 1, size(self%unknowns_pass)
-          call self%elements(self%unknowns_pass(k))%e%velocity(self%frames, self%scalars)
+          call work%elements(self%unknowns_pass(k))%e%velocity(work%frames, work%scalars)
         end do
       else
         do k = 1, size(self%unknowns_pass)
-          call self%elements(self%unknowns_pass(k))%e%acceleration(self%frames, self%scalars)
+          call work%elements(self%unknowns_pass(k))%e%acceleration(work%frames, work%scalars)
         end do
       end if
     end if
     if (level == 1) then
       do k = 1, self%f
-        work%rates(k) = self%scalars(self%q(k))%qd
+        work%rates(k) = work%scalars(self%q(k))%qd
       end do
     end if
   end subroutine set_rates
@@ -240,25 +240,25 @@ contains
     call self%force_pass(work, inertia, applied, loads)
     if (self%nd > 0) then
       do k = 1, self%r
-        work%work_x(k) = self%scalars(self%beta(k))%force
+        work%work_x(k) = work%scalars(self%beta(k))%force
       end do
       do k = 1, self%nd
-        work%work_x(self%r + k) = self%scalars(self%sigma(k))%force
+        work%work_x(self%r + k) = work%scalars(self%sigma(k))%force
       end do
-      call self%blocks%solve(.true., work%work_x, .true.)
+      call work%blocks%solve(.true., work%work_x, .true.)
       work%lambda = -work%work_x(1:self%r)
       work%mu = -work%work_x(self%r + 1:)
       call self%force_pass(work, inertia, applied, loads)
     else if (self%r > 0) then
       do k = 1, self%r
-        work%lambda(k) = self%scalars(self%beta(k))%force
+        work%lambda(k) = work%scalars(self%beta(k))%force
       end do
-      call self%blocks%solve(.false., work%lambda, .true.)
+      call work%blocks%solve(.false., work%lambda, .true.)
       work%lambda = -work%lambda
       call self%force_pass(work, inertia, applied, loads)
     end if
     do k = 1, self%ns
-      work%gq(k) = self%scalars(self%q(self%speeds(k)))%force
+      work%gq(k) = work%scalars(self%q(self%speeds(k)))%force
     end do
   end procedure inverse_dynamics
 
@@ -271,7 +271,7 @@ contains
         if (c%normal_rule == NORMAL_CUT_FORCE) then
           n(k) = c%normal_sign*lambda(c%normal_row)
         else
-          associate (fr => self%frames(c%normal_frame))
+          associate (fr => work%frames(c%normal_frame))
             n(k) = -c%normal_sign*dot_product(fr%rot(:, 3), fr%force)
           end associate
         end if
@@ -286,28 +286,28 @@ contains
     integer :: k, i
     real(wp) :: p
     if (any(work%dims /= self%workspace_dims)) call self%prepare_workspace(work)
-    self%evaluation = self%evaluation + 1
+    work%evaluation = work%evaluation + 1
     do k = 1, size(self%contacts)
-      call contact_kinematics(self%contacts(k), self%frames, work%contact_states(k))
+      call contact_kinematics(self%contacts(k), work%frames, work%contact_states(k))
     end do
     do k = 1, self%n_laws
       associate (law => work%laws(k)%law)
         p = 0
         if (law%active) then
-          call law%evaluate(t, self%frames, self%scalars, work%contact_states, status)
+          call law%evaluate(t, work%frames, work%scalars, work%contact_states, status)
           if (.not. status%ok()) then
             call prefix_status(status, 'force law '''//law%name//'''')
             return
           end if
           do i = 1, size(law%loads)
-            associate (ld => law%loads(i), fr => self%frames(law%loads(i)%frame))
+            associate (ld => law%loads(i), fr => work%frames(law%loads(i)%frame))
               p = p + dot_product(ld%force, fr%v) + dot_product(ld%torque, fr%omega)
             end associate
           end do
         end if
         work%unit_power(k) = p
         if (self%law_root_start(k + 1) > self%law_root_start(k)) &
-          call law%roots(t, self%frames, self%scalars, work%contact_states, &
+          call law%roots(t, work%frames, work%scalars, work%contact_states, &
                          work%law_roots(self%law_root_start(k):self%law_root_start(k + 1) - 1))
       end associate
     end do
@@ -329,7 +329,7 @@ contains
     kinetic = 0
     potential = 0
     do k = 1, self%n_elements
-      call self%elements(k)%e%energy(self%frames, t, v)
+      call work%elements(k)%e%energy(work%frames, t, v)
       kinetic = kinetic + t
       potential = potential + v
     end do

@@ -258,28 +258,26 @@ contains
     self%workspace_dims = [self%f, self%ns, self%r, self%nd, size(self%contacts), self%n_laws, &
                            size(self%block_contact), size(self%tracked), size(self%moving_unknowns), &
                            size(self%scaled_laws), self%law_root_start(self%n_laws + 1) - 1, models_stamped]
-    self%evaluation = self%evaluation + 1
   end subroutine find_workspace_dims
 
   !> The closure in blocks with partial passes (blocked, the default) or as
   !> one block with full passes (the unblocked computation, for comparison);
-  !> after finalize. The next closure starts cold from the current scalars.
+  !> after finalize. A new model: a workspace starts again from its state
+  !> (prepare_workspace), the closure cold.
   module procedure set_blocked
     self%blocked = blocked
     if (.not. self%ready) return
     call find_closure_blocks(self)
     call find_workspace_dims(self)
-    self%converged = .false.
-    self%warm = .false.
   end procedure set_blocked
 
   !> Sizes the workspace for this mechanism (kinetostatics_mechanism_workspace)
   !> and gives it the model's state to start from: on its first use and again
   !> only when the model changed (finalize, set_blocked, another mechanism).
-  !> The laws as the model holds them (loads, switches; factors 1), no
-  !> cached dynamics, no results (zero cut forces, rates, accelerations,
-  !> normal forces and powers); the closure's warm start from the current
-  !> dependent coordinates.
+  !> The model's frames, scalars, elements, closure blocks and laws (loads,
+  !> switches; factors 1) as it holds them, the closure cold, no cached
+  !> dynamics, no results (zero cut forces, rates, accelerations, normal
+  !> forces and powers).
   module procedure prepare_workspace
     integer :: n, nc, nb, nt, nx, ns, nr, k
     if (all(work%dims == self%workspace_dims)) return
@@ -293,7 +291,7 @@ contains
     if (allocated(work%known_q)) then
       deallocate (work%lambda, work%mu, work%rates, work%qdd, work%mass, work%bias, work%normal, &
                   work%law_power, work%unit_power, work%law_roots, work%contact_states, work%gq, &
-                  work%g_mat, work%p_mat, work%h_mat, work%laws, work%law_factor)
+                  work%g_mat, work%p_mat, work%h_mat, work%laws, work%law_factor, work%normal_force)
       deallocate (work%known_q, work%known_s, work%known_active, work%work_r, work%work_x, work%x_r, &
                   work%start_r, work%res_r, work%work_f, work%work_c, work%chol, work%n0, work%block, &
                   work%block_rhs, work%signs, work%ipiv_block, work%twist, work%wrench, work%unknown_twist, &
@@ -311,9 +309,16 @@ contains
     work%normal = 0
     work%law_power = 0
     work%law_roots = 1
+    work%frames = self%frames
+    work%scalars = self%scalars
+    work%elements = self%elements
+    work%blocks = self%blocks
     work%laws = self%laws
-    allocate (work%law_factor(self%n_laws))
+    allocate (work%law_factor(self%n_laws), work%normal_force(nc))
     work%law_factor = 1
+    work%normal_force = 0
+    work%warm = .false.
+    work%converged = .false.
     allocate (work%known_q(self%f), work%known_s(n), work%known_active(self%n_laws))
     allocate (work%work_r(self%r), work%work_x(nx), work%x_r(self%r), work%start_r(self%r), work%res_r(self%r), &
               work%work_f(n), work%work_c(nc))
@@ -322,7 +327,7 @@ contains
     allocate (work%twist(6, nt, n), work%wrench(6, nt, n), work%unknown_twist(6, nt, size(self%moving_unknowns)), &
               work%nu(6, nt, nc), work%load_wrench(6, nt))
     do k = 1, self%r
-      work%start_r(k) = self%scalars(self%beta(k))%q
+      work%start_r(k) = work%scalars(self%beta(k))%q
     end do
     work%known_evaluation = -1
     work%dims = self%workspace_dims

@@ -25,14 +25,15 @@ submodule (kinetostatics_mechanism) kinetostatics_mechanism_twists
 
 contains
 
-  subroutine clear_accelerations(self)
-    class(mechanism_t), intent(inout) :: self
+  subroutine clear_accelerations(self, work)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     integer :: k
     do k = 1, self%n_frames
-      self%frames(k)%alpha = 0
-      self%frames(k)%a = 0
+      work%frames(k)%alpha = 0
+      work%frames(k)%a = 0
     end do
-    self%scalars%qdd = 0
+    work%scalars%qdd = 0
   end subroutine clear_accelerations
 
   !> M and G from the partial twists of the tracked frames (module comment),
@@ -43,13 +44,13 @@ contains
   module procedure twist_mass_matrix
     real(wp) :: mass, s(3), inertia_w(3, 3)
     integer :: i, b
-    call clear_accelerations(self)
+    call clear_accelerations(self, work)
     if (self%velocity_columns) then
       do i = self%ns, 1, -1
         call velocity_column(self, work, i)
       end do
       ! back to rest (the normal forces' passes are acceleration maps at rest)
-      call rest_velocities(self, self%blocks%mass_pass, self%blocks%mass_pass_start(1), &
+      call rest_velocities(self, work, self%blocks%mass_pass, self%blocks%mass_pass_start(1), &
                            self%blocks%mass_pass_start(2) - 1)
     else
       do i = 1, self%ns
@@ -59,15 +60,15 @@ contains
           work%work_f = 0
           work%work_f(i) = 1
           call self%set_accelerations(work, work%work_f)
-          call keep_twists(self, work%twist(:, :, i))
+          call keep_twists(self, work%frames, work%twist(:, :, i))
         end if
       end do
-      if (.not. self%blocks%mass_blocked) call clear_accelerations(self)
+      if (.not. self%blocks%mass_blocked) call clear_accelerations(self, work)
     end if
     call clear_sequence(size(work%wrench), work%wrench)
     do b = 1, size(self%masses)
       if (self%mass_slot(b) == 0) cycle   ! a mass on the ground
-      call self%elements(self%masses(b))%e%world_inertia(mass, s, inertia_w)
+      call work%elements(self%masses(b))%e%world_inertia(mass, s, inertia_w)
       call add_inertial_wrenches(self%ns, size(self%tracked), self%mass_slot(b), mass, s, inertia_w, work%twist, &
                                  work%wrench)
     end do
@@ -109,7 +110,7 @@ contains
   !> a second pass over what their unknowns move. Pass i of the sequence of
   !> clear_before.
   subroutine unit_column(self, work, i)
-    class(mechanism_t), intent(inout) :: self
+    class(mechanism_t), intent(in) :: self
     type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: i
     integer :: l, m, j, p, speed, first, last
@@ -118,37 +119,37 @@ contains
     speed = self%q(self%speeds(i))
     first = self%blocks%touched_start(i)
     last = self%blocks%touched_start(i + 1) - 1
-    call clear_before(self, i)
-    self%scalars(speed)%qdd = 1
+    call clear_before(self, work, i)
+    work%scalars(speed)%qdd = 1
     do p = self%blocks%mass_pass_start(i), self%blocks%mass_pass_start(i + 1) - 1
-      call self%elements(self%blocks%mass_pass(p))%e%acceleration(self%frames, self%scalars)
+      call work%elements(self%blocks%mass_pass(p))%e%acceleration(work%frames, work%scalars)
     end do
     if (last >= first) then
-      associate (bl => self%blocks, x => work%work_x, touched => self%blocks%touched(first:last))
+      associate (bl => work%blocks, x => work%work_x, touched => self%blocks%touched(first:last))
         do l = 1, size(touched)
           do m = 1, size(bl%blocks(touched(l))%members)
             j = bl%blocks(touched(l))%members(m)
-            x(j) = self%scalars(self%rows(j))%qdd
+            x(j) = work%scalars(self%rows(j))%qdd
           end do
         end do
         call bl%solve(self%nd > 0, x, .false., touched)
         do l = 1, size(touched)
           do m = 1, size(bl%blocks(touched(l))%members)
             j = bl%blocks(touched(l))%members(m)
-            self%scalars(self%unknowns(j))%qdd = -x(j)
+            work%scalars(self%unknowns(j))%qdd = -x(j)
           end do
         end do
       end associate
-      call accelerate(self, self%blocks%second_pass(self%blocks%second_pass_start(i): &
+      call accelerate(self, work, self%blocks%second_pass(self%blocks%second_pass_start(i): &
                                                     self%blocks%second_pass_start(i + 1) - 1))
     end if
-    call keep_twists(self, work%twist(:, :, i))
+    call keep_twists(self, work%frames, work%twist(:, :, i))
     ! the sources back to rest (the outputs: clear_before)
-    self%scalars(speed)%qdd = 0
+    work%scalars(speed)%qdd = 0
     do l = first, last
       associate (members => self%blocks%blocks(self%blocks%touched(l))%members)
         do m = 1, size(members)
-          self%scalars(self%unknowns(members(m)))%qdd = 0
+          work%scalars(self%unknowns(members(m)))%qdd = 0
         end do
       end associate
     end do
@@ -161,25 +162,26 @@ contains
   !> after a state at rest (build_velocity_clears); `rates` (q' of the
   !> state, read by the integrator) is not touched.
   subroutine velocity_column(self, work, i)
-    class(mechanism_t), intent(inout) :: self
+    class(mechanism_t), intent(in) :: self
     type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: i
     integer :: p, speed
     speed = self%q(self%speeds(i))
     if (self%velocity_clear_start(i + 1) > self%velocity_clear_start(i)) &
-      call rest_velocities(self, self%velocity_clear, self%velocity_clear_start(i), &
+      call rest_velocities(self, work, self%velocity_clear, self%velocity_clear_start(i), &
                            self%velocity_clear_start(i + 1) - 1)
-    self%scalars(speed)%qd = 1
+    work%scalars(speed)%qd = 1
     do p = self%blocks%mass_pass_start(i), self%blocks%mass_pass_start(i + 1) - 1
-      call self%elements(self%blocks%mass_pass(p))%e%velocity(self%frames, self%scalars)
+      call work%elements(self%blocks%mass_pass(p))%e%velocity(work%frames, work%scalars)
     end do
-    call keep_velocity_twists(self, work%twist(:, :, i))
-    self%scalars(speed)%qd = 0
+    call keep_velocity_twists(self, work%frames, work%twist(:, :, i))
+    work%scalars(speed)%qd = 0
   end subroutine velocity_column
 
   !> The velocities of the outputs of the elements list(first:last) set to rest.
-  subroutine rest_velocities(self, list, first, last)
-    class(mechanism_t), intent(inout) :: self
+  subroutine rest_velocities(self, work, list, first, last)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: list(:), first, last
     integer :: p, l, e
     !GCC$ unroll 1
@@ -187,25 +189,26 @@ contains
       e = list(p)
       !GCC$ unroll 1
       do l = self%reach%frame_out_start(e), self%reach%frame_out_start(e + 1) - 1
-        self%frames(self%reach%frame_out(l))%omega = 0
-        self%frames(self%reach%frame_out(l))%v = 0
+        work%frames(self%reach%frame_out(l))%omega = 0
+        work%frames(self%reach%frame_out(l))%v = 0
       end do
       !GCC$ unroll 1
       do l = self%reach%scalar_out_start(e), self%reach%scalar_out_start(e + 1) - 1
-        self%scalars(self%reach%scalar_out(l))%qd = 0
+        work%scalars(self%reach%scalar_out(l))%qd = 0
       end do
     end do
   end subroutine rest_velocities
 
   !> The tracked frames' (omega, v) (keep_twists of a velocity state).
-  subroutine keep_velocity_twists(self, twists)
+  subroutine keep_velocity_twists(self, frames, twists)
     class(mechanism_t), intent(in) :: self
+    type(frame_state_t), intent(in) :: frames(:)
     real(wp), intent(out) :: twists(6, size(self%tracked))
     integer :: t
     !GCC$ unroll 1
     do t = 1, size(self%tracked)
-      twists(1:3, t) = self%frames(self%tracked(t))%omega
-      twists(4:6, t) = self%frames(self%tracked(t))%v
+      twists(1:3, t) = frames(self%tracked(t))%omega
+      twists(4:6, t) = frames(self%tracked(t))%v
     end do
   end subroutine keep_velocity_twists
 
@@ -221,7 +224,7 @@ contains
   !> rows' rates of that motion (z_F . f_F is the power of W and of the cut
   !> forces on it). Velocities and accelerations zero.
   subroutine twist_normal_forces(self, work)
-    class(mechanism_t), intent(inout) :: self
+    class(mechanism_t), intent(in) :: self
     type(mechanism_workspace_t), intent(inout) :: work
     real(wp) :: factor
     integer :: i, k, l, c, f, nx, step
@@ -231,12 +234,12 @@ contains
     do l = 1, size(self%moving_unknowns)   ! the other unknowns move no tracked frame
       k = self%moving_unknowns(l)
       step = step + 1
-      call clear_before(self, step)
-      self%scalars(self%unknowns(k))%qdd = 1
-      call accelerate(self, self%blocks%unknown_pass(self%blocks%unknown_pass_start(k): &
+      call clear_before(self, work, step)
+      work%scalars(self%unknowns(k))%qdd = 1
+      call accelerate(self, work, self%blocks%unknown_pass(self%blocks%unknown_pass_start(k): &
                                                      self%blocks%unknown_pass_start(k + 1) - 1))
-      call keep_twists(self, work%unknown_twist(:, :, l))
-      self%scalars(self%unknowns(k))%qdd = 0
+      call keep_twists(self, work%frames, work%unknown_twist(:, :, l))
+      work%scalars(self%unknowns(k))%qdd = 0
     end do
     l = 0
     do c = 1, size(self%contacts)
@@ -249,19 +252,19 @@ contains
           l = l + 1
           f = contact%normal_frame
           step = step + 1
-          call clear_before(self, step)
-          self%frames(f)%a = self%frames(f)%rot(:, 3)
-          call accelerate(self, self%blocks%normal_pass(self%blocks%normal_pass_start(l): &
+          call clear_before(self, work, step)
+          work%frames(f)%a = work%frames(f)%rot(:, 3)
+          call accelerate(self, work, self%blocks%normal_pass(self%blocks%normal_pass_start(l): &
                                                         self%blocks%normal_pass_start(l + 1) - 1))
-          call keep_twists(self, work%nu(:, :, c))
+          call keep_twists(self, work%frames, work%nu(:, :, c))
           do k = 1, nx
-            work%work_x(k) = self%scalars(self%rows(k))%qdd
+            work%work_x(k) = work%scalars(self%rows(k))%qdd
           end do
-          self%frames(f)%a = 0
+          work%frames(f)%a = 0
         end if
       end associate
       if (size(self%moving_unknowns) == 0) cycle
-      call self%blocks%solve(self%nd > 0, work%work_x, .false.)
+      call work%blocks%solve(self%nd > 0, work%work_x, .false.)
       do k = 1, size(self%moving_unknowns)
         work%nu(:, :, c) = work%nu(:, :, c) &
                                 - work%work_x(self%moving_unknowns(k))*work%unknown_twist(:, :, k)
@@ -303,7 +306,7 @@ contains
       if (.not. tracked) then
         call self%inverse_dynamics(work, .false., .false., self%scaled_laws(k))
         work%p_mat(:, k) = work%gq
-        call self%normal_forces(work%lambda, work%h_mat(:, k))
+        call self%normal_forces(work, work%lambda, work%h_mat(:, k))
         cycle
       end if
       call transposed_product(6*size(self%tracked), self%ns, 1, work%twist, work%load_wrench, &
@@ -317,33 +320,36 @@ contains
   end procedure twist_unit_loads
 
   !> The acceleration maps of the elements `pass`, in order.
-  subroutine accelerate(self, pass)
-    class(mechanism_t), intent(inout) :: self
+  subroutine accelerate(self, work, pass)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: pass(:)
     integer :: p
     do p = 1, size(pass)
-      call self%elements(pass(p))%e%acceleration(self%frames, self%scalars)
+      call work%elements(pass(p))%e%acceleration(work%frames, work%scalars)
     end do
   end subroutine accelerate
 
   !> The tracked frames' (alpha, a). (Here and in clear_before the loops run
   !> a few times: not unrolled, -funroll-loops' remainder dispatch costs more.)
-  subroutine keep_twists(self, twists)
+  subroutine keep_twists(self, frames, twists)
     class(mechanism_t), intent(in) :: self
+    type(frame_state_t), intent(in) :: frames(:)
     real(wp), intent(out) :: twists(6, size(self%tracked))
     integer :: t
     !GCC$ unroll 1
     do t = 1, size(self%tracked)
-      twists(1:3, t) = self%frames(self%tracked(t))%alpha
-      twists(4:6, t) = self%frames(self%tracked(t))%a
+      twists(1:3, t) = frames(self%tracked(t))%alpha
+      twists(4:6, t) = frames(self%tracked(t))%a
     end do
   end subroutine keep_twists
 
   !> Before pass `step` of the mass matrix's sequence
   !> (kinetostatics_closure_blocks, build_mass_columns): the accelerations
   !> of the outputs the pass before wrote and this one does not, set to rest.
-  subroutine clear_before(self, step)
-    class(mechanism_t), intent(inout) :: self
+  subroutine clear_before(self, work, step)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: step
     integer :: p, l, e
     !GCC$ unroll 1
@@ -351,12 +357,12 @@ contains
       e = self%blocks%clear(p)
       !GCC$ unroll 1
       do l = self%reach%frame_out_start(e), self%reach%frame_out_start(e + 1) - 1
-        self%frames(self%reach%frame_out(l))%alpha = 0
-        self%frames(self%reach%frame_out(l))%a = 0
+        work%frames(self%reach%frame_out(l))%alpha = 0
+        work%frames(self%reach%frame_out(l))%a = 0
       end do
       !GCC$ unroll 1
       do l = self%reach%scalar_out_start(e), self%reach%scalar_out_start(e + 1) - 1
-        self%scalars(self%reach%scalar_out(l))%qdd = 0
+        work%scalars(self%reach%scalar_out(l))%qdd = 0
       end do
     end do
   end subroutine clear_before

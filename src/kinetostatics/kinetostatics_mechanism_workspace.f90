@@ -1,26 +1,32 @@
 !> The workspace of a mechanism's computations (kinetostatics_mechanism):
-!> their results and what they need on their way. The results of the last
-!> evaluation with this workspace (cut forces lambda and mu, the rates q',
-!> the accelerations s', M and Q_bar0, the normal forces, the laws' powers,
-!> unit powers and root functions, the contacts' kinematics, the generalized
-!> forces of the last inverse dynamics, G, P and H), the closure solver's
-!> iterates and warm start, the rate and force solves' right-hand sides, the
-!> Cholesky factor and the block system of the equations of motion, the
-!> partial twists and wrenches of the tracked frames, and the cache of the
-!> last `dynamics` (its state, so that a record at the state a root function
-!> just saw reuses it).
+!> the state of one integration of the model, the results of its last
+!> evaluation and what the computations need on their way. The state: every
+!> frame and scalar (positions, rates, forces), the elements (the geometry
+!> they keep from one pass to the next, their charts), the closure's blocks
+!> (J_x factored), the laws (loads, switches) and their factors, the
+!> closure's warm start and flags. The results of the last evaluation with
+!> this workspace (cut forces lambda and mu, the rates q', the accelerations
+!> s', M and Q_bar0, the normal forces, the laws' powers, unit powers and
+!> root functions, the contacts' kinematics, the generalized forces of the
+!> last inverse dynamics, G, P and H). The rate and force solves'
+!> right-hand sides, the Cholesky factor and the block system of the
+!> equations of motion, the partial twists and wrenches of the tracked
+!> frames, and the cache of the last `dynamics` (its state, so that a record
+!> at the state a root function just saw reuses it).
 !>
 !> Owned by whoever runs the computations (the integration's ODE object,
 !> kinetostatics_mechanism_ode), not by the mechanism: the mechanism is the
-!> model (and, still, its frames' and scalars' current state and the laws'
-!> loads), passed a workspace by every procedure that computes. Sized by the
-!> mechanism's prepare_workspace on its first use (and again only if the
-!> mechanism's sizes change), never inside a right-hand side. One workspace
-!> serves one mechanism (or its copies).
+!> model and does not change while it computes, so one mechanism serves any
+!> number of workspaces (two integrations at once). Sized and given the
+!> model's state to start from by the mechanism's prepare_workspace on its
+!> first use (and again only when it meets another model), never inside a
+!> right-hand side.
 module kinetostatics_mechanism_workspace
   use base_kinds, only: wp
   use kinetostatics_contact, only: contact_state_t
+  use kinetostatics_state, only: frame_state_t, scalar_state_t, element_box_t
   use kinetostatics_force_law, only: force_law_box_t
+  use kinetostatics_closure_blocks, only: closure_blocks_t
   implicit none (type, external)
   private
   public :: mechanism_workspace_t, WORKSPACE_SIZES
@@ -31,9 +37,19 @@ module kinetostatics_mechanism_workspace
   type :: mechanism_workspace_t
     integer :: dims(WORKSPACE_SIZES) = -1        ! the mechanism's sizes it was made for (prepare_workspace)
     ! the state of an integration (copied from the mechanism's model by prepare_workspace)
+    type(frame_state_t), allocatable :: frames(:)   ! every frame: pose, twist, its rates, the wrench on it
+    type(scalar_state_t), allocatable :: scalars(:) ! every scalar: value, rates, generalized or cut force
+    type(element_box_t), allocatable :: elements(:) ! the elements: the geometry they keep between
+                                                    ! passes, their charts (rebase)
+    type(closure_blocks_t) :: blocks             ! the closure's blocks: J_x filled and factored
     type(force_law_box_t), allocatable :: laws(:)   ! the laws: their loads and switches (active)
     real(wp), allocatable :: law_factor(:)       ! each law's factor at the last dynamics: 1 for explicit
                                                  ! laws, |N| for scaled ones (law_force)
+    logical :: warm = .false.                    ! a closure has converged (a warm start exists)
+    logical :: converged = .false.               ! beta holds it (else start_r does: the last solve failed)
+    integer :: evaluation = 0                    ! position passes and law evaluations so far
+    integer :: closure_solves = 0, hybrj_solves = 0
+    real(wp), allocatable :: normal_force(:)     ! N of every contact at the last `evaluate` (a complete state)
     ! results of the last evaluation with this workspace (what callers read)
     real(wp), allocatable :: lambda(:)           ! cut forces of the closure measurements
     real(wp), allocatable :: mu(:)               ! cut forces of the rate constraints
@@ -48,9 +64,9 @@ module kinetostatics_mechanism_workspace
     real(wp), allocatable :: gq(:)               ! generalized forces at the speeds of the last inverse dynamics
     real(wp), allocatable :: g_mat(:, :), p_mat(:, :), h_mat(:, :)   ! G, P, H (kinetostatics_mechanism_twists,
                                                                      ! kinetostatics_mechanism_dynamics)
-    ! the (t, q, s) and law switches of the last completed `dynamics`, and the mechanism's evaluation
-    ! count then: its results still hold while no position pass or law evaluation has run since, with
-    ! this workspace or any other (a record at the state a root function just saw)
+    ! the (t, q, s) and law switches of the last completed `dynamics`, and the evaluation count then:
+    ! its results still hold while no position pass or law evaluation has run since (a record at the
+    ! state a root function just saw)
     integer :: known_evaluation = -1             ! -1: none
     real(wp) :: known_t = 0
     real(wp), allocatable :: known_q(:), known_s(:)

@@ -104,7 +104,7 @@ contains
   !> (J) and the record kind.
   subroutine series_record(self, m, workspace, t, q, qd, work, kind, status)
     class(mechanism_series_t), intent(inout) :: self
-    type(mechanism_t), intent(inout) :: m
+    type(mechanism_t), intent(in) :: m
     type(mechanism_workspace_t), intent(inout) :: workspace
     real(wp), intent(in) :: t, q(:), qd(:), work(:)
     integer, intent(in) :: kind
@@ -124,21 +124,21 @@ contains
     ! the rates of every coordinate (qd holds the speeds, which differ from q'
     ! under rate constraints or kinematic coordinates)
     do k = 1, m%f
-      self%qd(k, i) = m%scalars(m%q(k))%qd
-      self%qdd(k, i) = m%scalars(m%q(k))%qdd
+      self%qd(k, i) = workspace%scalars(m%q(k))%qd
+      self%qdd(k, i) = workspace%scalars(m%q(k))%qdd
     end do
     self%residual(i) = res
     do k = 1, m%r
-      self%beta(k, i) = m%scalars(m%beta(k))%q
+      self%beta(k, i) = workspace%scalars(m%beta(k))%q
     end do
     self%lambda(:, i) = workspace%lambda
-    self%closure(i) = m%closure_residual()
+    self%closure(i) = m%closure_residual(workspace)
     do k = 1, self%nm
-      self%monitor(k, i) = m%scalars(m%monitors(k))%q
+      self%monitor(k, i) = workspace%scalars(m%monitors(k))%q
     end do
-    call m%energy(self%kinetic(i), self%potential(i))
+    call m%energy(workspace, self%kinetic(i), self%potential(i))
     do k = 1, self%nb
-      associate (fr => m%frames(self%body_frame(k)))
+      associate (fr => workspace%frames(self%body_frame(k)))
         self%body_r(:, k, i) = fr%r
         self%body_v(:, k, i) = fr%v
         self%body_omega(:, k, i) = fr%omega
@@ -156,8 +156,8 @@ contains
     end do
     do k = 1, self%nc
       associate (c => m%contacts(k))
-        self%friction(:, k, i) = self%friction(:, k, i) + static_friction(m, workspace%mu, c)
-        self%normal(k, i) = c%normal_force
+        self%friction(:, k, i) = self%friction(:, k, i) + static_friction(m, workspace, c)
+        self%normal(k, i) = workspace%normal_force(k)
         self%contact_r(:, k, i) = workspace%contact_states(k)%point
         self%slip(:, k, i) = workspace%contact_states(k)%slip
       end associate
@@ -283,9 +283,9 @@ contains
   !> The static friction of a rolling contact on body B (N, world), the cut
   !> forces of its no-slip outputs along the contact frame's x and y at the
   !> evaluated state; zero for a contact that does not roll.
-  pure function static_friction(m, mu, c) result(f)
+  pure function static_friction(m, workspace, c) result(f)
     type(mechanism_t), intent(in) :: m
-    real(wp), intent(in) :: mu(:)
+    type(mechanism_workspace_t), intent(in) :: workspace
     type(contact_t), intent(in) :: c
     real(wp) :: f(3)
     integer :: axis, j
@@ -293,7 +293,7 @@ contains
     do axis = 1, 2
       if (c%tangential_outputs(axis) == 0) cycle
       j = findloc(m%rate_outputs, c%tangential_outputs(axis), dim=1)
-      if (j > 0) f = f + mu(j)*m%frames(c%point_frame)%rot(:, axis)
+      if (j > 0) f = f + workspace%mu(j)*workspace%frames(c%point_frame)%rot(:, axis)
     end do
   end function static_friction
 end module kinetostatics_recorder

@@ -103,36 +103,37 @@ contains
   !> Contact k's point's signed distance from the slide along the normal at
   !> its foot point (positive on the rider's side), positions set (a build
   !> with k open; closed: 0 to the closure's rounding).
-  pure real(wp) function contact_gap(m, lay, k) result(gap)
-    type(mechanism_t), intent(in) :: m
+  pure real(wp) function contact_gap(work, lay, k) result(gap)
+    type(mechanism_workspace_t), intent(in) :: work
     type(rider_layout_t), intent(in) :: lay
     integer, intent(in) :: k
-    associate (p => m%frames(lay%point(k)), d => m%frames(lay%contact_frame(k)))
+    associate (p => work%frames(lay%point(k)), d => work%frames(lay%contact_frame(k)))
       gap = dot_product(p%r - d%r, d%rot(:, 3))
     end associate
   end function contact_gap
 
   !> Contact k's point's velocity along that normal (velocities set).
-  pure real(wp) function contact_gap_rate(m, lay, k) result(rate)
-    type(mechanism_t), intent(in) :: m
+  pure real(wp) function contact_gap_rate(work, lay, k) result(rate)
+    type(mechanism_workspace_t), intent(in) :: work
     type(rider_layout_t), intent(in) :: lay
     integer, intent(in) :: k
-    associate (p => m%frames(lay%point(k)), d => m%frames(lay%contact_frame(k)))
+    associate (p => work%frames(lay%point(k)), d => work%frames(lay%contact_frame(k)))
       rate = dot_product(p%v, d%rot(:, 3))   ! d%v is tangent to the slide
     end associate
   end function contact_gap_rate
 
   !> The full layout's state [q(N_FULL), q'(N_FULL), W] of m at its state y
-  !> (positions and velocities set: the dependents' values and rates from
-  !> its last evaluation).
-  pure subroutine full_state(m, lay, y, full)
+  !> (positions and velocities set in work: the dependents' values and rates
+  !> from its last evaluation).
+  pure subroutine full_state(m, work, lay, y, full)
     type(mechanism_t), intent(in) :: m
+    type(mechanism_workspace_t), intent(in) :: work
     type(rider_layout_t), intent(in) :: lay
     real(wp), intent(in) :: y(:)
     real(wp), intent(out) :: full(:)
     integer :: k(N_FULL)
     k = full_scalars(lay)
-    full = [m%scalars(k)%q, m%scalars(k)%qd, y(2*m%f + 1:)]
+    full = [work%scalars(k)%q, work%scalars(k)%qd, y(2*m%f + 1:)]
   end subroutine full_state
 
   !> m's state [q, s, W] from a full layout's (its coordinates picked).
@@ -157,7 +158,7 @@ contains
   !> `closed`: the contact closes. closing_impulse: the closing's impulse at
   !> the point (N s), closing_energy (J) what it took.
   subroutine contact_impact(m, work, lay, c, y, law, outcome, closed, closing_impulse, closing_energy, status)
-    type(mechanism_t), intent(inout) :: m
+    type(mechanism_t), intent(in) :: m
     type(mechanism_workspace_t), intent(inout) :: work
     type(rider_layout_t), intent(in) :: lay
     integer, intent(in) :: c
@@ -184,8 +185,8 @@ contains
       e = 0
       e(i) = 1
       call m%set_velocities(work, e)
-      jac(:, i) = m%frames(lay%point(c))%v
-      call m%energy(energy(i), potential)
+      jac(:, i) = work%frames(lay%point(c))%v
+      call m%energy(work, energy(i), potential)
       mass(i, i) = 2*energy(i)
     end do
     do i = 1, n
@@ -194,14 +195,14 @@ contains
         e(i) = 1
         e(j) = 1
         call m%set_velocities(work, e)
-        call m%energy(kinetic, potential)
+        call m%energy(work, kinetic, potential)
         mass(i, j) = kinetic - energy(i) - energy(j)
         mass(j, i) = mass(i, j)
       end do
     end do
     call m%set_velocities(work, s)
-    v = m%frames(lay%point(c))%v
-    normal = m%frames(lay%contact_frame(c))%rot(:, 3)
+    v = work%frames(lay%point(c))%v
+    normal = work%frames(lay%contact_frame(c))%rot(:, 3)
     lu = mass
     call lu_factor(lu, ipiv, status)
     minv_jt = transpose(jac)
@@ -232,9 +233,9 @@ contains
     end if
     y(n + 1:2*n) = s
     call m%set_velocities(work, s)
-    if (closed .and. abs(contact_gap_rate(m, lay, c)) > 1e-9_wp*max(1.0_wp, abs(outcome%normal_speed_before))) then
+    if (closed .and. abs(contact_gap_rate(work, lay, c)) > 1e-9_wp*max(1.0_wp, abs(outcome%normal_speed_before))) then
       call set_status(status, STATUS_DOMAIN, 'the '//trim(contact_names(c))//'''s landing: the closing left a '// &
-                      'normal speed of '//format_short(contact_gap_rate(m, lay, c))//' m/s')
+                      'normal speed of '//format_short(contact_gap_rate(work, lay, c))//' m/s')
     end if
   end subroutine contact_impact
 
@@ -258,9 +259,10 @@ contains
     end do
   end subroutine set_holds
 
-  !> The rider's centre of mass and its velocity (positions and velocities set).
-  subroutine centre_of_mass(m, lay, com, velocity)
-    type(mechanism_t), intent(in) :: m
+  !> The rider's centre of mass and its velocity (positions and velocities
+  !> set in work).
+  subroutine centre_of_mass(work, lay, com, velocity)
+    type(mechanism_workspace_t), intent(in) :: work
     type(rider_layout_t), intent(in) :: lay
     real(wp), intent(out) :: com(3), velocity(3)
     real(wp) :: mass, s(3)
@@ -271,7 +273,7 @@ contains
     mass = 0
     do k = 1, N_CONTACTS
       part = body_part(k)
-      associate (fr => m%frames(lay%body_frame(k)))
+      associate (fr => work%frames(lay%body_frame(k)))
         s = matmul(fr%rot, part%com)
         com = com + part%mass*(fr%r + s)
         velocity = velocity + part%mass*(fr%v + cross(fr%omega, s))

@@ -43,13 +43,13 @@ module rider_probe
 contains
 
   !> Pelvis's speed, centre-of-mass acceleration, axes and the slide's
-  !> reaction on the rider there, from an evaluated mechanism.
-  subroutine pelvis_state(m, lay, speed, acceleration, axes, force, moment)
-    type(mechanism_t), intent(in) :: m
+  !> reaction on the rider there, from a mechanism evaluated in work.
+  subroutine pelvis_state(work, lay, speed, acceleration, axes, force, moment)
+    type(mechanism_workspace_t), intent(in) :: work
     type(rider_layout_t), intent(in) :: lay
     real(wp), intent(out) :: speed, acceleration(3), axes(3, 3), force(3), moment(3)
     real(wp) :: s(3)
-    associate (d => m%frames(lay%contact_frame(CONTACT_PELVIS)), p => m%frames(lay%body_frame(CONTACT_PELVIS)))
+    associate (d => work%frames(lay%contact_frame(CONTACT_PELVIS)), p => work%frames(lay%body_frame(CONTACT_PELVIS)))
       ! the pelvis's speed: its contact point's, which in flight (the free
       ! chain, lay%lift > 0) is the pelvis frame's origin, not its foot point
       if (lay%lift > 0) then
@@ -91,7 +91,7 @@ contains
   contains
 
     subroutine evaluate_build(m, work, y)
-      type(mechanism_t), intent(inout) :: m
+      type(mechanism_t), intent(in) :: m
       type(mechanism_workspace_t), intent(inout) :: work
       real(wp), intent(in) :: y(:)
     associate (lay => self%layout)
@@ -103,26 +103,26 @@ contains
           if (lay%drag(k) > 0) work%laws(lay%drag(k))%law%active = btest(nint(context(1)), k - 1)
         end do
         do k = 1, m%r
-          m%scalars(m%beta(k))%q = context(1 + k)
+          work%scalars(m%beta(k))%q = context(1 + k)
         end do
         ! the posture held in flight
         if (self%may_fly) call set_holds(work, lay, nint(context(size(context))) /= 0, &
                                          context(size(context) - 2:size(context) - 1))
-        m%warm = .false.
-        m%converged = .false.
+        work%warm = .false.
+        work%converged = .false.
         self%applied = context
       end if
       f = m%f
       call m%evaluate(work, t, y(1:f), y(f + 1:2*f), residual, status)
       if (.not. status%ok()) return
-      call pelvis_state(m, lay, speed, acceleration, axes, force, moment)
+      call pelvis_state(work, lay, speed, acceleration, axes, force, moment)
       do k = 1, N_CONTACTS
-        call self%slide%wall_position(m%scalars(lay%u(k))%q, m%scalars(lay%v(k))%q, angle(k), distance(k), status)
+        call self%slide%wall_position(work%scalars(lay%u(k))%q, work%scalars(lay%v(k))%q, angle(k), distance(k), status)
         if (.not. status%ok()) return
-        normal(k) = m%contacts(lay%contact(k))%normal_force
+        normal(k) = work%normal_force(lay%contact(k))
       end do
       call extreme_quantities(speed, acceleration, axes, force, moment, &
-        self%slide%arc_length(m%scalars(lay%u(CONTACT_PELVIS))%q), angle, distance, normal, self%gravity, &
+        self%slide%arc_length(work%scalars(lay%u(CONTACT_PELVIS))%q), angle, distance, normal, self%gravity, &
         values, attached)
     end associate
     end subroutine evaluate_build

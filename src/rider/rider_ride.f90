@@ -476,21 +476,21 @@ contains
       self%station_record(self%pending_station) = n
       self%pending_station = 0
     end if
-    associate (m => self%mechanism, lay => self%layout, r => self%ride)
+    associate (m => self%mechanism, w => self%work, lay => self%layout, r => self%ride)
       r%time(n) = t
       r%kind(n) = kind
       if (self%may_fly) then
-        call full_state(m, lay, y, r%state(:, n))
+        call full_state(m, w, lay, y, r%state(:, n))
         if (self%open_mask /= 0) call track_highest(self, t)
       else
         r%state(:, n) = y
       end if
-      call pelvis_state(m, lay, r%speed(n), r%pelvis_acceleration(:, n), r%pelvis_axes(:, :, n), &
+      call pelvis_state(w, lay, r%speed(n), r%pelvis_acceleration(:, n), r%pelvis_axes(:, :, n), &
                         r%reaction_force(:, n), r%reaction_moment(:, n))
-      r%heading(n) = m%scalars(lay%heading)%q
-      r%phi_legs(n) = m%scalars(lay%flexion)%q
-      r%phi_trunk(n) = m%scalars(lay%tilt)%q
-      call m%energy(kinetic, potential)
+      r%heading(n) = w%scalars(lay%heading)%q
+      r%phi_legs(n) = w%scalars(lay%flexion)%q
+      r%phi_trunk(n) = w%scalars(lay%tilt)%q
+      call m%energy(w, kinetic, potential)
       r%kinetic(n) = kinetic
       r%potential(n) = potential
       r%energy(n) = kinetic + potential
@@ -500,20 +500,20 @@ contains
         if (lay%friction(k) > 0) r%friction_work(n) = r%friction_work(n) + y(2*f + lay%friction(k))
         if (lay%drag(k) > 0) r%drag_work(n) = r%drag_work(n) + y(2*f + lay%drag(k))
       end do
-      r%closure_residual(n) = m%closure_residual()
+      r%closure_residual(n) = m%closure_residual(w)
       r%airborne(n) = self%open_mask
       do k = 1, N_CONTACTS
-        associate (c => r%contact(k), d => m%frames(lay%contact_frame(k)))
-          c%u(n) = m%scalars(lay%u(k))%q
-          c%v(n) = m%scalars(lay%v(k))%q
+        associate (c => r%contact(k), d => w%frames(lay%contact_frame(k)))
+          c%u(n) = w%scalars(lay%u(k))%q
+          c%v(n) = w%scalars(lay%v(k))%q
           c%arc_length(n) = self%slide%arc_length(c%u(n))
           call self%slide%wall_position(c%u(n), c%v(n), c%wall_angle(n), c%wall_distance(n), status)
           if (.not. status%ok()) return
           c%position(:, n) = d%r
           c%velocity(:, n) = d%v
-          c%normal_force(n) = m%contacts(lay%contact(k))%normal_force
+          c%normal_force(n) = w%normal_force(lay%contact(k))
           c%friction_force(:, n) = 0
-          if (lay%friction(k) > 0) c%friction_force(:, n) = m%law_force(self%work, lay%friction(k))
+          if (lay%friction(k) > 0) c%friction_force(:, n) = m%law_force(w, lay%friction(k))
           c%drag_force(:, n) = 0
           c%in_water(n) = 0
           c%reynolds(n) = 0
@@ -522,11 +522,11 @@ contains
           c%relative_velocity(:, n) = 0
           i = lay%drag(k)
           if (i > 0) then
-            select type (law => self%work%laws(i)%law)
+            select type (law => w%laws(i)%law)
             type is (water_drag_t)
               if (law%active) then
                 c%in_water(n) = 1
-                c%drag_force(:, n) = m%law_force(self%work, i)
+                c%drag_force(:, n) = m%law_force(w, i)
                 c%reynolds(n) = law%state%reynolds
                 c%drag_coefficient(n) = law%state%drag_coefficient
                 c%projected_area(n) = law%state%projected_area
@@ -548,13 +548,13 @@ contains
           ! after a switch splits the brackets as an event does
           call self%extremes%add_record(t, kind == RECORD_EVENT .or. (kind == RECORD_START .and. n > 1), &
             [real(sum([(merge(2**(k - 1), 0, r%contact(k)%in_water(n) == 1), k = 1, N_CONTACTS)]), wp), &
-             (m%scalars(m%beta(k))%q, k = 1, m%r), spread(0.0_wp, 1, self%max_r - m%r), self%hold, &
+             (w%scalars(m%beta(k))%q, k = 1, m%r), spread(0.0_wp, 1, self%max_r - m%r), self%hold, &
              real(self%open_mask, wp)], &
             values, attached)
         else
           call self%extremes%add_record(t, kind == RECORD_EVENT, &
             [real(sum([(merge(2**(k - 1), 0, r%contact(k)%in_water(n) == 1), k = 1, N_CONTACTS)]), wp), &
-             (m%scalars(m%beta(k))%q, k = 1, m%r)], values, attached)
+             (w%scalars(m%beta(k))%q, k = 1, m%r)], values, attached)
         end if
       end if
     end associate
@@ -704,9 +704,9 @@ contains
     real(wp) :: u, v, v_min, v_max
     side = 'side'
     if (self%ejected_contact == 0) return
-    associate (m => self%mechanism, lay => self%layout)
-      u = m%scalars(lay%u(self%ejected_contact))%q
-      v = m%scalars(lay%v(self%ejected_contact))%q
+    associate (w => self%work, lay => self%layout)
+      u = w%scalars(lay%u(self%ejected_contact))%q
+      v = w%scalars(lay%v(self%ejected_contact))%q
     end associate
     call self%slide%section_edges(u, v_min, v_max)
     if (abs(v - v_max) < abs(v - v_min)) then

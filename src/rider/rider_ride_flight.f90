@@ -39,15 +39,15 @@ contains
     self%rhs_cached = .false.
     do k = 1, N_CONTACTS
       if (.not. btest(self%open_mask, k - 1)) cycle
-      gap = contact_gap(self%mechanism, self%layout, k)
+      gap = contact_gap(self%work, self%layout, k)
       if (self%opened(k)) then
         g(n + k) = gap
       else
         g(n + k) = (opening_gap - gap)*(gap + sink_gap)
       end if
     end do
-    associate (flexion => self%mechanism%scalars(self%layout%flexion)%q, &
-               tilt => self%mechanism%scalars(self%layout%tilt)%q)
+    associate (flexion => self%work%scalars(self%layout%flexion)%q, &
+               tilt => self%work%scalars(self%layout%tilt)%q)
       g(n + N_CONTACTS + 1) = (flexion - flexion_range(1))*(flexion_range(2) - flexion)
       g(n + N_CONTACTS + 2) = (tilt - tilt_range(1))*(tilt_range(2) - tilt)
     end associate
@@ -68,7 +68,7 @@ contains
     if (.not. status%ok()) return
     do k = 1, N_CONTACTS
       if (fired(k) == 0 .or. .not. btest(self%open_mask, k - 1)) cycle
-      if (.not. self%opened(k) .and. contact_gap(self%mechanism, self%layout, k) > 0) then
+      if (.not. self%opened(k) .and. contact_gap(self%work, self%layout, k) > 0) then
         self%opened(k) = .true.
         action = max(action, EVENT_RESTART)
         cycle
@@ -109,7 +109,7 @@ contains
       f = self%mechanism%f
       call self%mechanism%evaluate(self%work, t, self%switch_y(1:f), self%switch_y(f + 1:2*f), residual, status)
       if (.not. status%ok()) return
-      call full_state(self%mechanism, self%layout, self%switch_y, full)
+      call full_state(self%mechanism, self%work, self%layout, self%switch_y, full)
       call use_build(self, ibset(before, c - 1), full, y)
       self%opened(c) = .false.
     case (SWITCH_LANDING)
@@ -119,7 +119,7 @@ contains
       if (.not. status%ok()) return
       landing%time = t
       landing%contact = c
-      landing%arc_length = self%slide%arc_length(self%mechanism%scalars(self%layout%u(c))%q)
+      landing%arc_length = self%slide%arc_length(self%work%scalars(self%layout%u(c))%q)
       landing%normal_speed = -impact%normal_speed_before
       landing%impulse = norm2(impact%impulse + closing)
       landing%normal_impulse = impact%normal_impulse + norm2(closing)
@@ -138,7 +138,7 @@ contains
         return
       end if
       ! the positions at y_open and the speeds after the impact are set
-      call full_state(self%mechanism, self%layout, y_open, full)
+      call full_state(self%mechanism, self%work, self%layout, y_open, full)
       if (closed) then
         call use_build(self, ibclr(before, c - 1), full, y)
         ! pressing again? Else the contact flies on from the slide (its
@@ -146,9 +146,9 @@ contains
         f = self%mechanism%f
         call self%mechanism%evaluate(self%work, t, y(1:f), y(f + 1:2*f), residual, status)
         if (.not. status%ok()) return
-        if (.not. self%mechanism%contacts(self%layout%contact(c))%normal_force > 0) then
+        if (.not. self%work%normal_force(self%layout%contact(c)) > 0) then
           landing%closed = .false.
-          call full_state(self%mechanism, self%layout, y, full)
+          call full_state(self%mechanism, self%work, self%layout, y, full)
           call use_build(self, before, full, y)
         end if
       else
@@ -177,7 +177,7 @@ contains
       if (before == 0 .and. now /= 0) then
         fl%flights = fl%flights + 1
         fl%take_off_time = t
-        fl%take_off_arc_length = self%slide%arc_length(self%mechanism%scalars(self%layout%u(CONTACT_PELVIS))%q)
+        fl%take_off_arc_length = self%slide%arc_length(self%work%scalars(self%layout%u(CONTACT_PELVIS))%q)
       else if (before /= 0 .and. now == 0) then
         airtime = t - fl%take_off_time
         fl%airtime = fl%airtime + airtime
@@ -190,9 +190,9 @@ contains
       if (before /= all_open .and. now == all_open) then
         fl%whole_flights = fl%whole_flights + 1
         fl%whole_take_off_time = t
-        fl%whole_take_off_arc_length = self%slide%arc_length(self%mechanism%scalars(self%layout%u(CONTACT_PELVIS))%q)
+        fl%whole_take_off_arc_length = self%slide%arc_length(self%work%scalars(self%layout%u(CONTACT_PELVIS))%q)
         ! the switch evaluated the new build's positions and velocities
-        call centre_of_mass(self%mechanism, self%layout, com, velocity)
+        call centre_of_mass(self%work, self%layout, com, velocity)
         fl%whole_take_off_com = com
         fl%whole_take_off_velocity = velocity
       else if (before == all_open .and. now /= all_open) then
@@ -216,27 +216,29 @@ contains
     integer, intent(in) :: mask
     real(wp), intent(in) :: full(:)
     real(wp), allocatable, intent(inout) :: y(:)
-    real(wp), allocatable :: y_next(:)
+    real(wp), allocatable :: y_next(:), values(:)
     logical, allocatable :: active(:)
     type(status_t) :: st
     integer :: k, f
     if (self%open_mask == 0 .and. mask /= 0) then
       ! a take-off from the slide: the posture to hold is the one here
-      self%hold = [self%mechanism%scalars(self%layout%flexion)%q, self%mechanism%scalars(self%layout%tilt)%q]
+      self%hold = [self%work%scalars(self%layout%flexion)%q, self%work%scalars(self%layout%tilt)%q]
     end if
+    values = self%work%scalars(:)%q
     active = [(self%work%laws(k)%law%active, k = 1, self%mechanism%n_laws)]
-    self%builds(mask)%scalars(:)%q = self%mechanism%scalars(:)%q
-    self%builds(self%open_mask) = self%mechanism
     self%mechanism = self%builds(mask)
     self%open_mask = mask
-    ! the workspace takes the new build's laws; their switches carry over
+    ! the workspace takes the new build's state (another model: its stamp);
+    ! then the values, switches and holds carried over are written into it
+    ! (the builds are models: nothing written into them would be seen)
     call self%mechanism%prepare_workspace(self%work)
+    self%work%scalars(:)%q = values
     do k = 1, size(active)
       self%work%laws(k)%law%active = active(k)
     end do
     call set_holds(self%work, self%layout, mask /= 0, self%hold)
-    self%mechanism%warm = .false.
-    self%mechanism%converged = .false.
+    self%work%warm = .false.
+    self%work%converged = .false.
     if (allocated(self%charts)) deallocate (self%charts, self%chart_angle)
     f = self%mechanism%f
     allocate (y_next(2*f + self%mechanism%n_laws))
@@ -266,12 +268,12 @@ contains
     integer :: k
     do k = 1, N_CONTACTS
       if (.not. btest(self%open_mask, k - 1)) cycle
-      gap = contact_gap(self%mechanism, self%layout, k)
+      gap = contact_gap(self%work, self%layout, k)
       if (gap > self%flights%highest) then
         self%flights%highest = gap
         self%flights%highest_contact = k
         self%flights%highest_time = t
-        self%flights%highest_arc_length = self%slide%arc_length(self%mechanism%scalars(self%layout%u(k))%q)
+        self%flights%highest_arc_length = self%slide%arc_length(self%work%scalars(self%layout%u(k))%q)
       end if
     end do
   end subroutine track_highest

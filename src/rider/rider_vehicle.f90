@@ -227,7 +227,7 @@ contains
   !> vehicle's mechanism `m` evaluated at each record's state, its closure
   !> started from the record's dependent coordinates.
   subroutine vehicle_ride_figures(m, work, s, speed, felt, status)
-    type(mechanism_t), intent(inout) :: m
+    type(mechanism_t), intent(in) :: m
     type(mechanism_workspace_t), intent(inout) :: work
     type(mechanism_series_t), intent(in) :: s
     real(wp), allocatable, intent(out) :: speed(:), felt(:, :)
@@ -247,18 +247,19 @@ contains
       call set_status(status, STATUS_INTERNAL, 'vehicle figures: the mechanism has no body')
       return
     end if
+    call m%prepare_workspace(work)
     do i = 1, s%n
       do k = 1, m%r
-        m%scalars(m%beta(k))%q = s%beta(k, i)
+        work%scalars(m%beta(k))%q = s%beta(k, i)
       end do
-      m%warm = .false.
-      m%converged = .false.
+      work%warm = .false.
+      work%converged = .false.
       call m%evaluate(work, s%time(i), s%q(:, i), s%qd(:, i), residual, status)
       if (.not. status%ok()) then
         call prefix_status(status, 'vehicle figures at t = '//format_real(s%time(i))//' s')
         return
       end if
-      associate (p => m%frames(frame))
+      associate (p => work%frames(frame))
         arm = matmul(p%rot, com)
         speed(i) = norm2(p%v + cross(p%omega, arm))
         acceleration = p%a + cross(p%alpha, arm) + cross(p%omega, cross(p%omega, arm))

@@ -90,24 +90,24 @@ contains
     call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], egg_orientation(tilt), r0, gap, st)
     q0 = m%scalars(pair%coordinates())%q
     call m%check_start(work, q0, st)
-    call check_contact_branch(m, pair, st)
+    call check_contact_branch(work, pair, st)
     call check(st%ok(), 'egg closes at the start: '//st%text())
     ! support height of the ellipsoid: sqrt(n^T A^2 n), n = world z in body axes
     height = sqrt((egg_a*sin(tilt))**2 + (egg_b*cos(tilt))**2)
-    call check_close(m%frames(pair%frame_b)%r(3), height, 0.0_wp, 1e-15_wp, &
+    call check_close(work%frames(pair%frame_b)%r(3), height, 0.0_wp, 1e-15_wp, &
                      'egg centre at its support height (exact to rounding)')
     call check_close(gap, r0(3) - height, 0.0_wp, 1e-15_wp, 'placement reports the gap it closed')
-    call check(maxval(abs(m%frames(pair%frame_b)%r(1:2) - r0(1:2))) <= 1e-15_wp, &
+    call check(maxval(abs(work%frames(pair%frame_b)%r(1:2) - r0(1:2))) <= 1e-15_wp, &
                'the closure moves the egg along the table normal only')
-    call check(maxval(abs(m%frames(pair%frame_b)%rot - egg_orientation(tilt))) <= 1e-15_wp, &
+    call check(maxval(abs(work%frames(pair%frame_b)%rot - egg_orientation(tilt))) <= 1e-15_wp, &
                'the closure keeps the egg''s orientation')
-    call check(abs(m%frames(pair%frame_1d)%r(3)) <= 1e-15_wp .and. &
-               norm2(m%frames(pair%frame_1d)%r - m%frames(pair%frame_2d)%r) <= 1e-15_wp, &
+    call check(abs(work%frames(pair%frame_1d)%r(3)) <= 1e-15_wp .and. &
+               norm2(work%frames(pair%frame_1d)%r - work%frames(pair%frame_2d)%r) <= 1e-15_wp, &
                'contact points coincide on the table')
-    call check_close(dot_product(m%frames(pair%frame_1d)%rot(:, 3), m%frames(pair%frame_2d)%rot(:, 3)), &
+    call check_close(dot_product(work%frames(pair%frame_1d)%rot(:, 3), work%frames(pair%frame_2d)%rot(:, 3)), &
                      -1.0_wp, 0.0_wp, 1e-15_wp, 'normals antiparallel')
     do trial = 1, 3
-      call check_mechanism_motion('egg on table', m, q0, 0.3_wp, 0.4_wp*(trial - 2))
+      call check_mechanism_motion('egg on table', m, work, q0, 0.3_wp, 0.4_wp*(trial - 2))
     end do
   end subroutine egg_on_table
 
@@ -143,7 +143,7 @@ contains
     end associate
     q0 = m%scalars([s, pair%coordinates()])%q
     call m%check_start(work, q0, st)
-    call check_contact_branch(m, pair, st)
+    call check_contact_branch(work, pair, st)
     call check(st%ok(), 'cup in bowl closes at the start: '//st%text())
     ! the open chain, started from the closed loop
     call moving_bowl(mo, f2, s)
@@ -157,21 +157,21 @@ contains
     call mo%set_coordinates([s, open%coordinates()])
     call mo%finalize(st)
     call check(st%ok(), 'cup in bowl, open chain built: '//st%text())
-    call place_open_contact_pair(mo, open, m, pair)
+    call place_open_contact_pair(mo, open, work, pair)
     qo = mo%scalars([s, open%coordinates()])%q
     call mo%check_start(work_mo, qo, st)
     call check(st%ok(), 'cup in bowl, open chain starts: '//st%text())
     ! rounding of O(1) poses (the loop is closed to ~1e-15)
-    call check(maxval(abs(mo%frames(open%frame_b)%rot - m%frames(pair%frame_b)%rot)) <= 1e-14_wp .and. &
-               maxval(abs(mo%frames(open%frame_b)%r - m%frames(pair%frame_b)%r)) <= 1e-14_wp, &
+    call check(maxval(abs(work_mo%frames(open%frame_b)%rot - work%frames(pair%frame_b)%rot)) <= 1e-14_wp .and. &
+               maxval(abs(work_mo%frames(open%frame_b)%r - work%frames(pair%frame_b)%r)) <= 1e-14_wp, &
                'open chain: the cup where the closed loop has it')
-    call mo%record_pass(st)   ! the monitor is record-only (the position passes skip it)
-    call check(st%ok() .and. maxval(abs(mo%scalars(open%gaps)%q)) <= 1e-14_wp, 'open chain: g1..g5 zero (rounding)')
+    call mo%record_pass(work_mo, st)   ! the monitor is record-only (the position passes skip it)
+    call check(st%ok() .and. maxval(abs(work_mo%scalars(open%gaps)%q)) <= 1e-14_wp, 'open chain: g1..g5 zero (rounding)')
     do trial = 1, 3
-      call check_mechanism_motion('cup in moving bowl', m, q0, 0.2_wp, 0.4_wp*(trial - 2))
-      call check_mechanism_motion('cup in moving bowl, open chain', mo, qo, 0.2_wp, 0.4_wp*(trial - 2))
-      call mo%record_pass(st)
-      call check(st%ok() .and. maxval(abs(mo%scalars(open%gaps)%q)) <= 1e-14_wp, &
+      call check_mechanism_motion('cup in moving bowl', m, work, q0, 0.2_wp, 0.4_wp*(trial - 2))
+      call check_mechanism_motion('cup in moving bowl, open chain', mo, work_mo, qo, 0.2_wp, 0.4_wp*(trial - 2))
+      call mo%record_pass(work_mo, st)
+      call check(st%ok() .and. maxval(abs(work_mo%scalars(open%gaps)%q)) <= 1e-14_wp, &
                  'open chain: g1..g5 zero along the motion')
     end do
   end subroutine paraboloid_in_moving_bowl
@@ -217,7 +217,7 @@ contains
     type(status_t) :: st
     type(bspline_surface_t) :: big, small
     real(wp) :: gap
-    type(mechanism_workspace_t) :: work
+    type(mechanism_workspace_t) :: work, again   ! again: a fresh one takes the second placement
     big = quadratic_patch(3.0_wp, 2.0_wp, st)
     small = quadratic_patch(0.5_wp, 0.5_wp, st)
     call add_contact_pair(m, 'cup_in_bowl', 1, big, 1.0_wp, 'cup', small, -1.0_wp, pair, st)
@@ -232,7 +232,7 @@ contains
     st = status_t()
     call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], rot_y(-0.2_wp), &
                             [1.74_wp, 0.0_wp, 1.3_wp], gap, st)
-    call m%check_start(work, m%scalars(pair%coordinates())%q, st)
+    call m%check_start(again, m%scalars(pair%coordinates())%q, st)
     call check(.not. st%ok() .and. index(st%text(), 'cup_in_bowl') > 0 .and. index(st%text(), 'off by') > 0, &
                'a contact that cannot close is refused naming it and by how much: '//st%text())
   end subroutine no_closure_named
@@ -293,10 +293,10 @@ contains
       do i = 1, 4
         call integ%advance(0.005_wp*i, t, y, st)
         if (st%ok()) call sys%record(t, y, RECORD_OUTPUT, st)
-        m%scalars(gaps)%q = sentinel
+        work%scalars(gaps)%q = sentinel
         if (st%ok()) call sys%rhs(t, y + 1e-6_wp, ydot, st)   ! another state: a position pass
         if (st%ok()) call sys%rhs(t, y, ydot, st)
-        call check(all(m%scalars(gaps)%q == sentinel), 'records: right-hand sides leave the monitor alone')
+        call check(all(work%scalars(gaps)%q == sentinel), 'records: right-hand sides leave the monitor alone')
         if (st%ok()) call sys%record(t, y, RECORD_OUTPUT, st)   ! reuses the right-hand side's dynamics
       end do
       call check(st%ok(), 'records: integrated 0.02 s: '//st%text())
@@ -307,9 +307,9 @@ contains
     do i = 1, sys%series%n
       direct = sys%mechanism
       call direct%set_positions(work_direct, sys%series%q(:, i), st)
-      if (st%ok()) call direct%elements(monitor)%e%position(direct%frames, direct%scalars, st)
+      if (st%ok()) call work_direct%elements(monitor)%e%position(work_direct%frames, work_direct%scalars, st)
       if (.not. st%ok()) exit
-      worst = max(worst, maxval(abs(sys%series%monitor(:, i) - direct%scalars(gaps)%q)))
+      worst = max(worst, maxval(abs(sys%series%monitor(:, i) - work_direct%scalars(gaps)%q)))
     end do
     change = maxval(abs(sys%series%monitor(:, sys%series%n) - sys%series%monitor(:, 1)))
     ! the same operations on the same q, up to the compiler's contractions: a

@@ -184,7 +184,7 @@ contains
     do k = 1, n_scaled   ! the laws' loads are those of the state dynamics saw
       call m%inverse_dynamics(work, .false., .false., m%scaled_laws(k))
       p_passes(:, k) = work%gq
-      call m%normal_forces(work%lambda, h_passes(:, k))
+      call m%normal_forces(work, work%lambda, h_passes(:, k))
     end do
     call m%set_velocities(work, s)
     call check(all(work%rates == rates), label//': q'' after dynamics that of (q, s)')
@@ -195,7 +195,7 @@ contains
       call m%set_accelerations(work, unit_s)
       call m%inverse_dynamics(work, .true., .false., LOADS_NONE)
       m_passes(:, i) = -work%gq
-      call m%normal_forces(work%lambda, g_passes(:, i))
+      call m%normal_forces(work, work%lambda, g_passes(:, i))
     end do
     print '(a, 4(a, es9.2))', label, ': |M diff| ', maxval(abs(m_twists - m_passes)), ' of ', &
       maxval(abs(m_passes)), ', |G diff| ', maxval([0.0_wp, abs(g_twists - g_passes)]), ' of ', &

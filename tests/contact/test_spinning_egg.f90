@@ -248,7 +248,7 @@ contains
     call diagnose_near_pole(system)
     call run_egg(0.3_wp, p1, 3.0_wp, turned, system)
     if (turned%ode%series%n < 2 .or. shipped%ode%series%n < 2) return
-    call check(nint(turned%ode%mechanism%scalars(turned%links(1)%pair%chart)%q) /= 3, &
+    call check(nint(turned%ode%work%scalars(turned%links(1)%pair%chart)%q) /= 3, &
                'long axis on z: the chart of (u2, v2) changed as the egg stood up')
     worst_r = 0
     worst_theta = 0

@@ -126,13 +126,13 @@ contains
         block
           real(wp) :: p0(3), local_a(3), local_b(3)
           p0 = c%point
-          local_a = matmul(transpose(m%frames(c%frame_a)%rot), p0 - m%frames(c%frame_a)%r)
-          local_b = matmul(transpose(m%frames(c%frame_b)%rot), p0 - m%frames(c%frame_b)%r)
+          local_a = matmul(transpose(work%frames(c%frame_a)%rot), p0 - work%frames(c%frame_a)%r)
+          local_b = matmul(transpose(work%frames(c%frame_b)%rot), p0 - work%frames(c%frame_b)%r)
           do k = -2, 2
             tt = k*hh
             call m%set_positions(work, q0 + qd0*tt + qdd0*tt**2/2, st)
-            material(:, k) = m%frames(c%frame_b)%r + matmul(m%frames(c%frame_b)%rot, local_b) &
-                             - m%frames(c%frame_a)%r - matmul(m%frames(c%frame_a)%rot, local_a)
+            material(:, k) = work%frames(c%frame_b)%r + matmul(work%frames(c%frame_b)%rot, local_b) &
+                             - work%frames(c%frame_a)%r - matmul(work%frames(c%frame_a)%rot, local_a)
           end do
         end block
         fd = (material(:, -2) - 8*material(:, -1) + 8*material(:, 1) - material(:, 2))/(12*hh)
@@ -253,9 +253,9 @@ contains
       y = sys%initial_state([0.4_wp, -0.3_wp], [1.0_wp, 2.0_wp])
       call m%set_positions(work, y(1:2), st)
       call m%set_velocities(work, y(3:4))
-      call m%energy(tk, vk)
+      call m%energy(work, tk, vk)
       e0 = tk + vk
-      l0 = norm2(m%frames(link2)%r + matmul(m%frames(link2)%rot, b) - a)
+      l0 = norm2(work%frames(link2)%r + matmul(work%frames(link2)%rot, b) - a)
       opt%rtol = 1e-11_wp
       opt%atol = 1e-11_wp
       call integ%start(sys, 0.0_wp, y, opt, st)
@@ -263,9 +263,9 @@ contains
       call check(st%ok(), 'pendulum with a spring: integrated 3 s: '//st%text())
       call m%set_positions(work, y(1:2), st)
       call m%set_velocities(work, y(3:4))
-      call m%energy(tk, vk)
+      call m%energy(work, tk, vk)
       e1 = tk + vk
-      l1 = norm2(m%frames(link2)%r + matmul(m%frames(link2)%rot, b) - a)
+      l1 = norm2(work%frames(link2)%r + matmul(work%frames(link2)%rot, b) - a)
     end associate
     ! integrated with the motion at rtol 1e-11: 1e-8 of the energies involved
     call check_close(y(5), -k_spring/2*((l1 - rest)**2 - (l0 - rest)**2), 1e-8_wp, 1e-8_wp*abs(e0), &

@@ -186,7 +186,7 @@ contains
       ! at the event, 1e-7 of the domain inside the edge; located to CVODE's
       ! root tolerance in time: ~1e-13 s x 7 m/s
       call check(sys%series%kind(n) == RECORD_EVENT .and. &
-                 abs(m%scalars(m%scalar_index('u2'))%q - (u_max - 1e-7_wp*(u_max - u_min))) <= 1e-9_wp, &
+                 abs(sys%work%scalars(m%scalar_index('u2'))%q - (u_max - 1e-7_wp*(u_max - u_min))) <= 1e-9_wp, &
                  'demo slide: the front contact stops at u = u_max (less 1e-7 of the domain)')
       ! the stop as a code: the surface joint whose u is at the edge, not read from the words
       call check(sys%stop_kind == STOP_END_OF_SURFACE .and. sys%stop_contact == 0 .and. sys%stop_element > 0, &

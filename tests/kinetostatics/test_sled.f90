@@ -70,8 +70,8 @@ contains
     call sys%mechanism%check_start(sys%work, q0, st)
     call check(st%ok(), 'sled on the incline starts: '//st%text())
     associate (m => sys%mechanism, work => sys%work)
-      call check(m%closure_residual() <= 1e-10_wp, 'incline: closed at the start')
-      call check_close(m%scalars(m%scalar_index('pitch'))%q, 0.0_wp, 0.0_wp, 1e-12_wp, 'incline: pitch 0 on a plane')
+      call check(m%closure_residual(work) <= 1e-10_wp, 'incline: closed at the start')
+      call check_close(work%scalars(m%scalar_index('pitch'))%q, 0.0_wp, 0.0_wp, 1e-12_wp, 'incline: pitch 0 on a plane')
       call m%evaluate(work, 0.0_wp, q0, qd0, res, st)
       call check(st%ok(), 'incline: evaluate: '//st%text())
       qdd = work%qdd
@@ -83,17 +83,17 @@ contains
                  'incline: v'''' = phi'''' = 0, phi = '//label)
       ! N > 0 presses along z_D: with sigma = -1 z_D points into the plane,
       ! away from the bar, so the plane must pull (N < 0)
-      call check_close(sigma*(m%contacts(1)%normal_force + m%contacts(2)%normal_force), p%mass*g*cos(theta), &
+      call check_close(sigma*(work%normal_force(1) + work%normal_force(2)), p%mass*g*cos(theta), &
                        1e-10_wp, 0.0_wp, 'incline: N_rear + N_front = m g cos theta, '//label)
-      call check_close(m%contacts(1)%normal_force, m%contacts(2)%normal_force, 1e-10_wp, 0.0_wp, &
+      call check_close(work%normal_force(1), work%normal_force(2), 1e-10_wp, 0.0_wp, &
                        'incline: centre of mass halfway: equal normal forces')
       call check(res <= 1e-10_wp*p%mass*g, 'incline: inverse dynamics with the friction found has zero residual')
       ! the cut force of the plane-point condition along the front normal z_D2
       ! is the force on the bar's front end along that normal: N_front (with
       ! either rule for the front contact's normal force)
-      call check_close(work%lambda(3), m%contacts(2)%normal_force, 1e-10_wp, 0.0_wp, &
+      call check_close(work%lambda(3), work%normal_force(2), 1e-10_wp, 0.0_wp, &
                        'incline: cut force of front_z = normal force at the front contact, '//label)
-      call check_close(work%law_power(1), -abs(m%contacts(1)%normal_force)*mu*qd0(1), 1e-10_wp, 0.0_wp, &
+      call check_close(work%law_power(1), -abs(work%normal_force(1))*mu*qd0(1), 1e-10_wp, 0.0_wp, &
                        'incline: Coulomb power at the rear = -mu N |w|')
     end associate
     opt%rtol = 1e-10_wp
@@ -223,13 +223,13 @@ contains
       do i = 1, 3
         do j = 1, 3
           call m%set_velocities(work, unit(i) + unit(j))
-          call m%energy(tk, vk)
+          call m%energy(work, tk, vk)
           tij = tk
           call m%set_velocities(work, unit(i))
-          call m%energy(tk, vk)
+          call m%energy(work, tk, vk)
           tij = tij - tk
           call m%set_velocities(work, unit(j))
-          call m%energy(tk, vk)
+          call m%energy(work, tk, vk)
           tij = tij - tk
           mpol(i, j) = tij
         end do
@@ -237,7 +237,7 @@ contains
       call check(maxval(abs(mpol - work%mass)) <= 1e-12_wp*maxval(abs(work%mass)), &
                  'bowl: M from the f+1 passes = M from the kinetic energy (through the closed loop)')
       call m%set_velocities(work, qd0)
-      call m%energy(tk, vk)
+      call m%energy(work, tk, vk)
       call check_close(0.5_wp*dot_product(qd0, matmul(work%mass, qd0)), tk, 1e-12_wp, 0.0_wp, &
                        'bowl: q''.M q''/2 = kinetic energy (M through the closed loop)')
       scale = p%mass*g*p%length + tk
@@ -263,9 +263,9 @@ contains
       if (.not. st%ok()) exit
       call sys%mechanism%set_positions(sys%work, y(1:3), st)
       call sys%mechanism%set_velocities(sys%work, y(4:6))
-      call sys%mechanism%energy(tk, vk)
+      call sys%mechanism%energy(sys%work, tk, vk)
       e = tk + vk
-      worst = max(worst, sys%mechanism%closure_residual())
+      worst = max(worst, sys%mechanism%closure_residual(sys%work))
       drift = max(drift, abs(e - e0))
       decreasing = decreasing .and. e <= e_prev + 1e-9_wp*scale
       e_prev = e
@@ -369,7 +369,7 @@ contains
     call sys%mechanism%check_start(sys%work, q0, st)
     y = sys%initial_state(q0, qd0)
     call sys%mechanism%set_velocities(sys%work, qd0)
-    call sys%mechanism%energy(tk, vk)
+    call sys%mechanism%energy(sys%work, tk, vk)
     e0 = tk + vk
     opt%rtol = 1e-11_wp
     opt%atol = 1e-11_wp
@@ -380,7 +380,7 @@ contains
       if (.not. st%ok()) exit
       call sys%mechanism%set_positions(sys%work, y(1:3), st)
       call sys%mechanism%set_velocities(sys%work, y(4:6))
-      call sys%mechanism%energy(tk, vk)
+      call sys%mechanism%energy(sys%work, tk, vk)
       worst = max(worst, abs(tk + vk - e0 - sum(y(7:))))
     end do
     dissipated = -sum(y(7:))
@@ -420,7 +420,7 @@ contains
     call check(sys%mechanism%laws(1)%law%name == 'bar.air_drag', 'incline with drag: the law bar.air_drag')
     y = sys%initial_state([0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp])
     call sys%mechanism%set_velocities(sys%work, [0.0_wp, 0.0_wp, 0.0_wp])
-    call sys%mechanism%energy(tk, vk)
+    call sys%mechanism%energy(sys%work, tk, vk)
     e0 = tk + vk
     opt%rtol = 1e-11_wp
     opt%atol = 1e-13_wp
@@ -433,7 +433,7 @@ contains
     call check(abs(y(2)) + abs(y(3)) + abs(y(5)) + abs(y(6)) <= 1e-10_wp, 'incline with drag: straight down the slope')
     call sys%mechanism%set_positions(sys%work, y(1:3), st)
     call sys%mechanism%set_velocities(sys%work, y(4:6))
-    call sys%mechanism%energy(tk, vk)
+    call sys%mechanism%energy(sys%work, tk, vk)
     call check(y(7) < 0, 'incline with drag: the air dissipates')
     call check_close(tk + vk - e0, y(7), 1e-8_wp, 0.0_wp, 'incline with drag: E(t) - E(0) = the drag''s work')
   end subroutine incline_drag

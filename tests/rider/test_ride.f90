@@ -273,8 +273,8 @@ contains
       if (st%ok()) call integrator%advance(t, tr, y, st)
     end if
     call plain%inner%mechanism%set_positions(plain%inner%work, y(1:3), st)
-    associate (m => plain%inner%mechanism, lay => plain%inner%layout)
-      call in_water_roots(water%field, m%scalars(lay%u(c))%q, m%scalars(lay%v(c))%q, gg)
+    associate (work => plain%inner%work, lay => plain%inner%layout)
+      call in_water_roots(water%field, work%scalars(lay%u(c))%q, work%scalars(lay%v(c))%q, gg)
     end associate
     g = minval(gg)
     if (.not. st%ok()) g = huge(1.0_wp)
@@ -304,7 +304,7 @@ contains
           law = sys%layout%drag(c)
           if (.not. work%laws(law)%law%active) cycle
           f = m%law_force(work, law)
-          w = m%frames(sys%layout%contact_frame(c))%v
+          w = work%frames(sys%layout%contact_frame(c))%v
           ! rtol 1e-12: one dot product against the mechanism's sum over loaded frames
           call check_close(work%law_power(law), dot_product(f, w), 1e-12_wp, 1e-12_wp, &
                            'drag power = F.w_D at the '//trim(contact_names(c)))

@@ -114,16 +114,16 @@ contains
         if (s%airborne(n) /= all_open .or. s%arc_length(n) < straight_from) cycle
         ! the closure from the recorded dependents
         do k = 1, N_CONTACTS
-          m%scalars(lay%u(k))%q = s%contact(k)%u(n)
-          m%scalars(lay%v(k))%q = s%contact(k)%v(n)
+          work%scalars(lay%u(k))%q = s%contact(k)%u(n)
+          work%scalars(lay%v(k))%q = s%contact(k)%v(n)
         end do
-        m%warm = .false.
-        m%converged = .false.
+        work%warm = .false.
+        work%converged = .false.
         call build_state(m, lay, s%state(:, n), y)
         call m%set_positions(work, y(1:m%f), st)
         if (.not. st%ok()) exit
         call m%set_velocities(work, y(m%f + 1:2*m%f))
-        call centre_of_mass(m, lay, com, velocity)
+        call centre_of_mass(work, lay, com, velocity)
         if (.not. started) then
           started = .true.
           r0 = com

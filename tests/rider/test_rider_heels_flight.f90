@@ -163,16 +163,16 @@ contains
         if (s%airborne(n) /= heels_open) cycle
         ! the closure from the recorded dependents
         do k = 1, N_CONTACTS
-          m%scalars(lay%u(k))%q = s%contact(k)%u(n)
-          m%scalars(lay%v(k))%q = s%contact(k)%v(n)
+          work%scalars(lay%u(k))%q = s%contact(k)%u(n)
+          work%scalars(lay%v(k))%q = s%contact(k)%v(n)
         end do
-        m%scalars(lay%tilt)%q = s%phi_trunk(n)
-        m%warm = .false.
-        m%converged = .false.
+        work%scalars(lay%tilt)%q = s%phi_trunk(n)
+        work%warm = .false.
+        work%converged = .false.
         call build_state(m, lay, s%state(:, n), y)
         call m%set_positions(work, y(1:m%f), st)
         if (.not. st%ok()) exit
-        gap = contact_gap(m, lay, CONTACT_HEELS)
+        gap = contact_gap(work, lay, CONTACT_HEELS)
         lowest = min(lowest, gap)
       end do
       call check(st%ok(), 'the flight states re-evaluated: '//st%text())

@@ -87,14 +87,14 @@ contains
     call m%check_start(work, q0, st)
     call check(st%ok(), 'the loops close at the start: '//st%text())
     ! atol 1e-12 rad: the start search bisects to 1e-13 rad, Newton polishes
-    call check_close(m%scalars(lay%flexion)%q, 0.0_wp, 0.0_wp, 1e-12_wp, 'legs straight')
-    call check_close(m%scalars(lay%tilt)%q, 0.0_wp, 0.0_wp, 1e-12_wp, 'trunk straight')
-    call check_close(m%scalars(lay%u(CONTACT_HEELS))%q, 5 + lay%body%hip(1) + lay%body%heel(1), 1e-14_wp, 0.0_wp, &
+    call check_close(work%scalars(lay%flexion)%q, 0.0_wp, 0.0_wp, 1e-12_wp, 'legs straight')
+    call check_close(work%scalars(lay%tilt)%q, 0.0_wp, 0.0_wp, 1e-12_wp, 'trunk straight')
+    call check_close(work%scalars(lay%u(CONTACT_HEELS))%q, 5 + lay%body%hip(1) + lay%body%heel(1), 1e-14_wp, 0.0_wp, &
                      'heels ahead by hip + leg length')
-    call check_close(m%scalars(lay%u(CONTACT_BACK))%q, 5 + lay%body%hip(1) + lay%body%back(1), 1e-14_wp, 0.0_wp, &
+    call check_close(work%scalars(lay%u(CONTACT_BACK))%q, 5 + lay%body%hip(1) + lay%body%back(1), 1e-14_wp, 0.0_wp, &
                      'back behind')
-    call check_close(m%scalars(lay%v(CONTACT_HEELS))%q, pi/2, 1e-14_wp, 0.0_wp, 'heels at the bottom')
-    call check(m%closure_residual() <= 1e-12_wp, 'closure residual at the start')
+    call check_close(work%scalars(lay%v(CONTACT_HEELS))%q, pi/2, 1e-14_wp, 0.0_wp, 'heels at the bottom')
+    call check(m%closure_residual(work) <= 1e-12_wp, 'closure residual at the start')
   end subroutine check_start_on_straight
 
   !> u0 as arc length on an exact chain: a 20 deg straight of 12 m
@@ -188,9 +188,9 @@ contains
     n_heels = lay%body%legs%mass*g*cos(theta)*lay%body%legs%com(1)/(lay%body%heel(1) - mu*h)
     n_back = -lay%body%trunk%mass*g*cos(theta)*lay%body%trunk%com(1)/(mu*h - lay%body%back(1))
     n_pelvis = mass*g*cos(theta) - n_heels - n_back
-    call check_close(m%contacts(CONTACT_HEELS)%normal_force, n_heels, 1e-12_wp, 0.0_wp, 'heels normal force')
-    call check_close(m%contacts(CONTACT_BACK)%normal_force, n_back, 1e-12_wp, 0.0_wp, 'back normal force')
-    call check_close(m%contacts(CONTACT_PELVIS)%normal_force, n_pelvis, 1e-12_wp, 0.0_wp, 'pelvis normal force')
+    call check_close(work%normal_force(CONTACT_HEELS), n_heels, 1e-12_wp, 0.0_wp, 'heels normal force')
+    call check_close(work%normal_force(CONTACT_BACK), n_back, 1e-12_wp, 0.0_wp, 'back normal force')
+    call check_close(work%normal_force(CONTACT_PELVIS), n_pelvis, 1e-12_wp, 0.0_wp, 'pelvis normal force')
   end subroutine check_inclined_tube
 
   !> The viscous laws of the registry through &rider friction: u'' in closed
@@ -232,7 +232,7 @@ contains
       ! rtol 1e-12: exact algebra (no regularization in these laws), a 3x3 solve
       call check_close(work%qdd(1), expected, 1e-12_wp, 0.0_wp, trim(kinds(j))//': u'''' in closed form')
       call check(abs(work%qdd(2)) < 1e-12_wp .and. abs(work%qdd(3)) < 1e-12_wp, trim(kinds(j))//': stays at the bottom')
-      call check_close(sum([(m%contacts(k)%normal_force, k = 1, N_CONTACTS)]), mass*g*cos(theta), 1e-12_wp, &
+      call check_close(sum([(work%normal_force(k), k = 1, N_CONTACTS)]), mass*g*cos(theta), 1e-12_wp, &
                        0.0_wp, trim(kinds(j))//': the normal forces carry m g cos(theta)')
       ! each contact: the law built for a point mass (no contact, the segment's weight) gives the same force
       weight = [lay%body%pelvis%mass, lay%body%legs%mass, lay%body%trunk%mass]*g
@@ -243,7 +243,7 @@ contains
         end associate
         select type (law)
         class is (friction_law_t)
-          force = law%slip_force(slip, m%contacts(k)%normal_force)
+          force = law%slip_force(slip, work%normal_force(k))
         class default
           force = huge(1.0_wp)
         end select

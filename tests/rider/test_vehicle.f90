@@ -84,13 +84,13 @@ contains
       call check_close(work%qdd(1), acc, 1e-8_wp, 0.0_wp, 'incline: u'''' = g (sin a - mu cos a), '//trim(label))
       call check(abs(work%qdd(2)) <= 1e-8_wp*g .and. abs(work%qdd(3)) <= 1e-8_wp*g, &
                  'incline: v'''' = phi'''' = 0, '//trim(label))
-      call check_close(m%contacts(1)%normal_force + m%contacts(2)%normal_force, weight_normal, 1e-10_wp, 0.0_wp, &
+      call check_close(work%normal_force(1) + work%normal_force(2), weight_normal, 1e-10_wp, 0.0_wp, &
                        'incline: N_rear + N_front = M g cos a, '//trim(label))
       ! no pitch: the moments about the centre of mass balance
       n_front = weight_normal*(vb%body%com(1) + mu*vb%body%com(3))/vb%length
-      call check_close(m%contacts(2)%normal_force, n_front, 1e-10_wp, 0.0_wp, &
+      call check_close(work%normal_force(2), n_front, 1e-10_wp, 0.0_wp, &
                        'incline: N_front = M g cos a (x_c + mu z_c)/L, '//trim(label))
-      call check(min(m%contacts(1)%normal_force, m%contacts(2)%normal_force) > 0, &
+      call check(min(work%normal_force(1), work%normal_force(2)) > 0, &
                  'incline: both contacts pressed, '//trim(label))
     end associate
     opt%rtol = 1e-10_wp

@@ -241,16 +241,16 @@ contains
   !> the generalized forces of the explicit force laws (inverse dynamics with
   !> the loops' cut forces, inertia and weights off) against their power,
   !> Q.q' = sum f.v + tau.omega.
-  subroutine check_mechanism_motion(label, m, q0, amplitude, t0)
+  subroutine check_mechanism_motion(label, m, work, q0, amplitude, t0)
     character(len=*), intent(in) :: label
-    type(mechanism_t), intent(inout) :: m
+    type(mechanism_t), intent(in) :: m
+    type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: q0(:), amplitude, t0
     real(wp) :: q(size(q0)), qd(size(q0)), qdd(size(q0)), rdot(3, 3), skewm(3, 3), power, c(4)
     real(wp), allocatable :: x(:, :), rate(:, :), ref1(:), ref2(:), fd1(:), fd2(:)
     type(status_t) :: st
     integer :: k, i, nf, ns
     character(len=8) :: tt
-    type(mechanism_workspace_t) :: work
     write (tt, '(f6.2)') t0
     nf = m%n_frames
     ns = m%n_scalars
@@ -261,24 +261,24 @@ contains
       if (.not. st%ok()) return
       if (k <= 2) then
         do i = 1, nf
-          x(12*(i - 1) + 1:12*i, k) = [reshape(m%frames(i)%rot, [9]), m%frames(i)%r]
-          rate(6*(i - 1) + 1:6*i, k) = [m%frames(i)%omega, m%frames(i)%v]
+          x(12*(i - 1) + 1:12*i, k) = [reshape(work%frames(i)%rot, [9]), work%frames(i)%r]
+          rate(6*(i - 1) + 1:6*i, k) = [work%frames(i)%omega, work%frames(i)%v]
         end do
-        x(12*nf + 1:, k) = m%scalars%q
-        rate(6*nf + 1:, k) = m%scalars%qd
+        x(12*nf + 1:, k) = work%scalars%q
+        rate(6*nf + 1:, k) = work%scalars%qd
       end if
     end do
     do i = 1, nf
-      ref1(6*(i - 1) + 1:6*i) = [m%frames(i)%omega, m%frames(i)%v]
-      ref2(6*(i - 1) + 1:6*i) = [m%frames(i)%alpha, m%frames(i)%a]
+      ref1(6*(i - 1) + 1:6*i) = [work%frames(i)%omega, work%frames(i)%v]
+      ref2(6*(i - 1) + 1:6*i) = [work%frames(i)%alpha, work%frames(i)%a]
       rdot = reshape(d4(x(12*(i - 1) + 1:12*(i - 1) + 9, :)), [3, 3])
-      skewm = matmul(rdot, transpose(m%frames(i)%rot))
+      skewm = matmul(rdot, transpose(work%frames(i)%rot))
       fd1(6*(i - 1) + 1:6*(i - 1) + 3) = 0.5_wp*[skewm(3, 2) - skewm(2, 3), skewm(1, 3) - skewm(3, 1), &
                                                  skewm(2, 1) - skewm(1, 2)]
       fd1(6*(i - 1) + 4:6*i) = d4(x(12*(i - 1) + 10:12*i, :))
     end do
-    ref1(6*nf + 1:) = m%scalars%qd
-    ref2(6*nf + 1:) = m%scalars%qdd
+    ref1(6*nf + 1:) = work%scalars%qd
+    ref2(6*nf + 1:) = work%scalars%qdd
     fd1(6*nf + 1:) = d4(x(12*nf + 1:, :))
     fd2 = d4(rate)
     call check(maxval(abs(fd1 - ref1)) <= fd_tol*max(1.0_wp, maxval(abs(ref1))), &
