@@ -25,6 +25,8 @@ module geometry_slide_builder
   use geometry_slide_elements, only: slide_element_t, element_chain_curve_t, new_element_chain
   use geometry_tube, only: tube_surface_t, new_tube_surface
   use geometry_funnel_section, only: funnel_section_t, new_funnel_section
+  use geometry_patch_section, only: patch_grid_t, patch_offset_t, patch_section_t, new_patch_offset, &
+    new_patch_section
   implicit none (type, external)
   private
   public :: centerline_description_t, slide_elements_description_t, section_part_description_t, &
@@ -73,6 +75,7 @@ module geometry_slide_builder
     real(wp) :: fit_spacing = 0.125_wp         !< m
     real(wp) :: smoothing = 0                  !< m^2
     integer :: degree = 5                      !< 3 or 5
+    type(patch_grid_t), allocatable :: patches(:)   !< one per element of kind 'patch'
   end type slide_elements_description_t
 
   !> One cross-section: 'circle' (radius), 'ellipse' (half width and
@@ -413,6 +416,7 @@ contains
     end if
     if (trim(d%kind) == 'slide') then
       call widen_for_funnels(d, centerline, section, status, funnel_part, failed)
+      if (status%ok()) call place_patches(d, centerline, section, status, funnel_part, failed)
       if (.not. status%ok()) then
         call failure(funnel_part, words)
         return
@@ -518,4 +522,104 @@ contains
     deallocate (section)
     allocate (section, source=funnel)
   end subroutine widen_for_funnels
+
+  !> The section of a chain with patches (kind = 'patch'): the free-form
+  !> patches laid on the slide's one circle or flume section (a funnel's
+  !> too), each over its element (geometry_patch_section): its stations (m
+  !> of horizontal length from the element's start) mapped to the tube's u
+  !> (the fitted spline's by the chain's arc length), its angles within the
+  !> circle's 360 deg or the flume's round part, 0 to 180 deg. Refused: a
+  !> patch element without its grid or a grid on another element, another
+  !> section, the grid's own faults (new_patch_offset). On a refusal `group`
+  !> and `variable` name the value at fault.
+  subroutine place_patches(d, centerline, section, status, group, variable)
+    type(slide_description_t), intent(in) :: d
+    class(curve_t), intent(in) :: centerline
+    class(cross_section_t), allocatable, intent(inout) :: section
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable, intent(out) :: group, variable
+    type(element_chain_curve_t) :: chain
+    type(patch_offset_t), allocatable :: placed(:)
+    type(patch_grid_t), allocatable :: grids(:)
+    type(patch_section_t) :: patched
+    real(wp), allocatable :: u(:)
+    real(wp) :: r, max_angle, sigma0
+    integer :: i, k, n, e
+    character(len=:), allocatable :: what
+    group = 'slide_elements'
+    variable = ''
+    n = count(d%elements%elements%kind == 'patch')
+    allocate (grids(0))
+    if (allocated(d%elements%patches)) grids = d%elements%patches
+    do i = 1, size(grids)
+      e = grids(i)%element
+      variable = 'patch_file('//format_integer(max(e, 1))//')'
+      if (e < 1 .or. e > size(d%elements%elements)) then
+        call set_status(status, STATUS_INVALID_INPUT, 'a patch grid is given for element '//format_integer(e)// &
+                        ', which the chain of '//format_integer(size(d%elements%elements))//' elements does not have')
+        return
+      end if
+      if (d%elements%elements(e)%kind /= 'patch' .or. count(grids%element == e) > 1) then
+        call set_status(status, STATUS_INVALID_INPUT, 'element '//format_integer(e)//' ('// &
+                        trim(d%elements%elements(e)%kind)//') has '//format_integer(count(grids%element == e))// &
+                        ' patch grids: only an element of kind ''patch'' has one, and exactly one')
+        return
+      end if
+    end do
+    do i = 1, size(d%elements%elements)
+      if (d%elements%elements(i)%kind == 'patch' .and. .not. any(grids%element == i)) then
+        variable = 'patch_file('//format_integer(i)//')'
+        call set_status(status, STATUS_INVALID_INPUT, 'element '//format_integer(i)//' is a patch without its '// &
+                        'grid of offsets: give patch_file('//format_integer(i)//')')
+        return
+      end if
+    end do
+    if (n == 0) then
+      variable = ''
+      return
+    end if
+    r = 0.5_wp   ! the default section, a circle
+    what = 'circle'
+    max_angle = 360
+    if (allocated(d%section%parts)) then
+      what = trim(d%section%parts(1)%kind)
+      r = d%section%parts(1)%radius
+      if (what == 'flume') max_angle = 180
+      if (size(d%section%parts) > 1 .or. (what /= 'circle' .and. what /= 'flume')) then
+        group = 'cross_section'
+        variable = 'kind'
+        if (size(d%section%parts) > 1) what = what//' blended with others'
+        call set_status(status, STATUS_INVALID_INPUT, 'a patch lies on the slide''s section as offsets along its '// &
+                        'radius: one circle or flume section, not '//what)
+        return
+      end if
+    end if
+    chain = new_element_chain(d%elements%elements, d%elements%start, d%elements%heading_deg, &
+                              d%elements%transition_length, status)
+    if (.not. status%ok()) return
+    allocate (placed(n))
+    do k = 1, n
+      associate (grid => grids(k))
+        e = grid%element
+        variable = 'patch_file('//format_integer(e)//')'
+        sigma0 = chain%ends(e) - d%elements%elements(e)%length
+        allocate (u(size(grid%station)))
+        do i = 1, size(u)
+          if (d%elements%exact) then
+            u(i) = sigma0 + grid%station(i)
+          else
+            call centerline%parameter_at_length(chain%arc_length(0.0_wp, sigma0 + grid%station(i)), u(i), status)
+            if (.not. status%ok()) return
+          end if
+        end do
+        placed(k) = new_patch_offset(grid, u, d%elements%elements(e)%length, r, max_angle, status)
+        if (.not. status%ok()) return
+        deallocate (u)
+      end associate
+    end do
+    variable = ''
+    patched = new_patch_section(section, placed)
+    deallocate (section)
+    allocate (section, source=patched)
+  end subroutine place_patches
 end module geometry_slide_builder

@@ -5,7 +5,9 @@
 !> or conical bowl: entry radius, wall slope, drop, turns, direction;
 !> geometry_slide_bowl) and funnel (length, slope and the widest radius of
 !> the section; the centerline is a straight's, the section widens along it:
-!> geometry_funnel_section, built by geometry_slide_builder), joined with
+!> geometry_funnel_section, built by geometry_slide_builder) and patch
+!> (length and slope; the centerline is a straight's, a free-form surface
+!> from points lies on its wall: geometry_patch_section), joined with
 !> continuous tangent and curvature.
 !>
 !> The centerline is built from the horizontal curvature kappa(sigma) and the
@@ -52,14 +54,14 @@ module geometry_slide_elements
   public :: slide_element_t, element_chain_curve_t, new_element_chain, slide_points
   public :: element_kinds
 
-  character(len=*), parameter :: element_kinds(7) = [character(len=8) :: 'straight', 'curve', 'helix', 'runout', &
-    'drop', 'bowl', 'funnel']
+  character(len=*), parameter :: element_kinds(8) = [character(len=8) :: 'straight', 'curve', 'helix', 'runout', &
+    'drop', 'bowl', 'funnel', 'patch']
 
   !> One element as given in the input. Angles in degrees, lengths in m;
   !> slope is the downhill angle (deg, > 0 going down).
   type :: slide_element_t
     character(len=8) :: kind = 'straight'
-    real(wp) :: length = 0          ! m, horizontal (straight, runout)
+    real(wp) :: length = 0          ! m, horizontal (straight, runout, funnel, patch)
     real(wp) :: slope_deg = 0       ! deg, downhill positive (straight, curve, runout; a drop's top)
     real(wp) :: radius = 0          ! m, horizontal (curve, helix); vertical (a drop's curve-out); a
                                     ! bowl's entry from its axis; a funnel's widest section radius
@@ -135,7 +137,7 @@ contains
           end if
         end if
         select case (e%kind)
-        case ('straight', 'runout', 'funnel')
+        case ('straight', 'runout', 'funnel', 'patch')
           if (.not. e%length > 0) then
             call fail('length must be > 0 m')
             return
@@ -195,7 +197,7 @@ contains
           c%kappa(i) = c%bowls(nb)%kappa_ref
           c%grad(i) = c%bowls(nb)%grad_ref
         case default
-          call fail('kind must be one of straight, curve, helix, runout, drop, bowl, funnel')
+          call fail('kind must be one of straight, curve, helix, runout, drop, bowl, funnel, patch')
           return
         end select
       end associate

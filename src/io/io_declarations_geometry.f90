@@ -65,13 +65,13 @@ module io_declarations_geometry
       default='none', low=1.0_wp, high=real(max_elements, wp), &
       meaning='number of elements, the number of kinds given (or the rows of `elements_file`); required'), &
     declaration_t(groups='slide_elements', name='kind', kind=VALUE_WORDS, shape='one per element', &
-      default='none', choices='straight curve helix runout drop bowl funnel', &
+      default='none', choices='straight curve helix runout drop bowl funnel patch', &
       meaning='element kind (a drop only first)'), &
     declaration_t(groups='slide_elements', name='length', shape='one per element', unit='m', default='0', &
-      low=0.0_wp, high=1e4_wp, meaning='horizontal length, > 0 (straight, runout, funnel)'), &
+      low=0.0_wp, high=1e4_wp, meaning='horizontal length, > 0 (straight, runout, funnel, patch)'), &
     declaration_t(groups='slide_elements', name='slope_deg', shape='one per element', unit='deg', &
       default='0', low=-45.0_wp, high=85.0_wp, meaning='downhill slope, > 0 goes down: in [-45, 45] (straight, '// &
-      'curve, runout, funnel); a drop''s top slope in [45, 85] (drop); the wall''s slope at the entry, in '// &
+      'curve, runout, funnel, patch); a drop''s top slope in [45, 85] (drop); the wall''s slope at the entry, in '// &
       '(0, 85] (bowl)'), &
     declaration_t(groups='slide_elements', name='radius', shape='one per element', unit='m', default='0', &
       low=0.0_wp, high=1e4_wp, meaning='horizontal radius, > 0 (curve, helix); the curve-out''s radius in '// &
@@ -88,6 +88,9 @@ module io_declarations_geometry
       'whole drop, fall and curve-out, > 0 (drop); from the bowl''s entry to its outlet, > 0 (bowl)'), &
     declaration_t(groups='slide_elements', name='bowl_profile', kind=VALUE_WORDS, shape='one per element', &
       default='''sphere''', choices='sphere cone', meaning='the bowl''s profile: a sphere or a cone (bowl)'), &
+    declaration_t(groups='slide_elements', name='patch_file', kind=VALUE_WORDS, shape='one per element', &
+      default='''''', meaning='CSV file (relative to this input''s folder) of the patch''s offsets: `station, '// &
+      'angle, offset` per line, a grid, 0 on its border (patch; docs/geometry.md)'), &
     declaration_t(groups='slide_elements', name='start', shape='3', unit='m', default='0, 0, 0', &
       low=-1e6_wp, high=1e6_wp, meaning='first centerline point'), &
     declaration_t(groups='slide_elements', name='heading_deg', unit='deg', default='0', low=-360.0_wp, &

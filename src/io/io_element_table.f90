@@ -221,7 +221,7 @@ contains
     if (trim(kind) /= 'bowl' .and. profile /= 'sphere') call set('bowl_profile', ''''//profile//'''', &
       'a '//trim(kind)//' is no bowl; give ''sphere'' (the default) or leave it out')
     select case (trim(kind))
-    case ('straight', 'runout')
+    case ('straight', 'runout', 'patch')
       call unused(radius, 'radius'); call unused(angle_deg, 'angle_deg')
       call unused(turns, 'turns'); call unused(drop, 'drop')
       if (len(variable) == 0 .and. direction /= 'left') call set('direction', ''''//trim(direction)//'''', &

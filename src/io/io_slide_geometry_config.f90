@@ -22,6 +22,8 @@ module io_slide_geometry_config
   use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, format_real, format_vector, group_present
   use io_csv, only: read_csv_table
   use io_element_table, only: element_table_t, read_element_table, check_element
+  use io_patch_grid, only: read_patch_grid
+  use geometry_patch_section, only: patch_grid_t
   use io_declarations_geometry, only: max_centerline_points, max_elements, max_profile_points
   implicit none (type, external)
   private
@@ -218,6 +220,8 @@ contains
     character(len=4096) :: elements_file
     type(element_table_t) :: table
     character(len=:), allocatable :: variable, value, allowed
+    character(len=1024), allocatable :: patch_file(:)
+    logical, allocatable :: given_patch(:)
 
     n = 0
     start = [0, 0, 0]; heading_deg = 0; transition_length = 2
@@ -235,7 +239,8 @@ contains
     if (len_trim(elements_file) > 0) then
       ! the elements from a manufacturer's table (io_element_table), checked there
       call r%refuse_given([character(len=12) :: 'kind', 'length', 'slope_deg', 'radius', 'angle_deg', 'direction', &
-                           'turns', 'drop', 'bowl_profile'], 'the elements come from elements_file', status)
+                           'turns', 'drop', 'bowl_profile', 'patch_file'], 'the elements come from elements_file', &
+                          status)
       if (status%ok()) call read_element_table(input%resolve_path(elements_file), max_elements, table, status)
       if (.not. status%ok()) then
         call prefix_status(status, r%where('elements_file')//': &'//g//': elements_file = '''// &
@@ -249,8 +254,9 @@ contains
       radius = table%radius; angle_deg = table%angle_deg; turns = table%turns; drop = table%drop
       allocate (bowl_profile(n))
       bowl_profile = 'sphere'   ! a table has no bowl (io_element_table)
-      allocate (given_kind(n), e(n))
+      allocate (given_kind(n), e(n), patch_file(n), given_patch(n))
       given_kind = .true.
+      given_patch = .false.
     else
       call r%get('n_elements', n, status)
       if (.not. status%ok()) return
@@ -261,7 +267,7 @@ contains
       end if
       lim = 'n_elements = '//format_integer(n)
       allocate (kind(n), direction(n), length(n), slope_deg(n), radius(n), angle_deg(n), turns(n), drop(n), &
-                given_kind(n), e(n), bowl_profile(n))
+                given_kind(n), e(n), bowl_profile(n), patch_file(n), given_patch(n))
       kind = ''; direction = 'left'; bowl_profile = 'sphere'
       length = 0; slope_deg = 0; radius = 0; angle_deg = 0; turns = 0; drop = 0
       call r%get_parts('kind', kind, lim, status, given=given_kind)
@@ -273,6 +279,8 @@ contains
       call r%get_parts('turns', turns, lim, status)
       call r%get_parts('drop', drop, lim, status)
       call r%get_parts('bowl_profile', bowl_profile, lim, status)
+      patch_file = ''
+      call r%get_parts('patch_file', patch_file, lim, status, given=given_patch)
     end if
     call r%get('start', start, status)
     call r%get('heading_deg', heading_deg, status)
@@ -301,6 +309,8 @@ contains
                              bowl_profile=bowl_profile(i))
     end do
     described%elements = e
+    call read_patches(status)
+    if (.not. status%ok()) return
     described%start = start
     described%heading_deg = heading_deg
     described%transition_length = transition_length
@@ -316,6 +326,35 @@ contains
       character(len=:), allocatable :: text
       text = name//'('//format_integer(i)//')'
     end function part
+
+    !> The grid of every patch from its patch_file (io_patch_grid); a
+    !> patch_file for another kind is refused.
+    subroutine read_patches(status)
+      type(status_t), intent(inout) :: status
+      type(patch_grid_t) :: grid
+      allocate (described%patches(0))
+      do i = 1, n
+        if (kind(i) /= 'patch') then
+          if (given_patch(i)) call r%invalid(part('patch_file'), ''''//trim(patch_file(i))//'''', &
+                                             'a '//trim(kind(i))//' has no patch; leave it out', status)
+          if (.not. status%ok()) return
+          cycle
+        end if
+        if (len_trim(patch_file(i)) == 0) then
+          call r%invalid(part('patch_file'), '''''', 'a patch needs the CSV file of its offsets '// &
+                         '(station, angle, offset per line; docs/geometry.md)', status)
+          return
+        end if
+        call read_patch_grid(input%resolve_path(trim(patch_file(i))), i, grid, status)
+        if (.not. status%ok()) then
+          call prefix_status(status, r%where('patch_file')//': &'//g//': '//part('patch_file')//' = '''// &
+                             trim(patch_file(i))//'''')
+          return
+        end if
+        grid%source = part('patch_file')//' = '''//trim(patch_file(i))//''''
+        described%patches = [described%patches, grid]
+      end do
+    end subroutine read_patches
   end subroutine read_slide_elements
 
   !> &cross_section: n_sections sections (circle, ellipse, flume, profile)

@@ -28,6 +28,7 @@ module water_channel
   use geometry_curve_frame, only: curve_curvature
   use geometry_cross_section, only: circle_section_t, blended_section_t
   use geometry_funnel_section, only: funnel_section_t
+  use geometry_patch_section, only: patch_section_t
   use geometry_slide_query, only: slide_surface_t
   use geometry_tube, only: tube_surface_t
   implicit none (type, external)
@@ -78,6 +79,8 @@ contains
       type is (blended_section_t)
         c%varies = .true.
       type is (funnel_section_t)
+        c%varies = .true.
+      type is (patch_section_t)
         c%varies = .true.
       end select
     class default

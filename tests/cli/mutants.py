@@ -174,8 +174,8 @@ def variable_names(*texts):
     return {m.group(1).lower() for text in texts for m in NAME.finditer(text.lower())}
 
 
-# a file an input names: variable = 'path' outside comments (not built-in inputs)
-FILE_NAMED = re.compile(r"\b(\w*file)\s*=\s*'([^']+)'")
+# a file an input names: variable = 'path' or variable(i) = 'path' (patch_file(3)) outside comments (not built-in inputs)
+FILE_NAMED = re.compile(r"\b(\w*file)(?:\(\d+\))?\s*=\s*'([^']+)'")
 
 
 def output_mutants(slidesim, tree, work, failures, counts):

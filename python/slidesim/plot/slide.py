@@ -2,7 +2,9 @@
 and its frames; for tubes and slides also the plan view coloured by the
 turning curvature, the elevation profile and the curvature chi over arc
 length split into its turning part (positive: turning left, seen from above)
-and its vertical part (positive: concave up, as a drop's curve-out).
+and its vertical part (positive: concave up, as a drop's curve-out); where
+the wall's distance from the centerline changes along the slide (a funnel,
+a free-form patch, blended sections) a map of it over arc length and v.
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
@@ -29,6 +31,17 @@ def curvature_parts(points, s, chi):
     return chi * np.sum(k * left, axis=1), chi * np.sum(k * up, axis=1)
 
 
+def wall_distance(r, points, s):
+    """The wall's distance from the centerline on the surface grid, with the
+    arc length of the grid's u (the centerline's points taken at the grid's
+    u by interpolation where the two grids differ)."""
+    u = r["/geometry/surface/u"].values
+    c_u = r["/geometry/centerline/u"].values
+    wall = np.stack([r["/geometry/surface/" + a].values for a in "xyz"], axis=-1)
+    centre = np.stack([np.interp(u, c_u, points[:, k]) for k in range(3)], axis=-1)
+    return np.interp(u, c_u, s), np.linalg.norm(wall - centre[:, None, :], axis=-1)
+
+
 def draw(r, plt, args):
     """The figure of a result; args: the command line's."""
     tube = "/geometry/centerline/points" in r
@@ -51,7 +64,10 @@ def draw(r, plt, args):
     ax.set_title(f"{r.attrs.get('surface', 'surface')}\n(frames: x red, y green, z blue)")
     if tube:
         turning, vertical = curvature_parts(points, s, chi)
-        plan = fig.add_subplot(2, 4, 3)
+        s_grid, distance = wall_distance(r, points, s)
+        varies = np.ptp(distance, axis=0).max() > 1e-3
+        rows = 3 if varies else 2
+        plan = fig.add_subplot(rows, 4, 3)
         limit = max(np.abs(turning).max(), 1e-12)
         sc = plan.scatter(points[:, 0], points[:, 1], c=turning, s=4, cmap="coolwarm", vmin=-limit, vmax=limit)
         plan.plot(points[0, 0], points[0, 1], "go", label="start")
@@ -61,13 +77,21 @@ def draw(r, plt, args):
         plan.set_title("plan view")
         plan.legend(fontsize=8)
         fig.colorbar(sc, ax=plan, label="turning curvature [1/m]")
-        profile = fig.add_subplot(2, 4, 4)
+        profile = fig.add_subplot(rows, 4, 4)
         profile.plot(s, points[:, 2], "k-")
         profile.set_xlabel("arc length [m]")
         profile.set_ylabel("elevation z [m]")
         profile.set_title(f"elevation profile (drop {points[0, 2] - points[-1, 2]:.2f} m)")
         profile.grid(True)
-        curv = fig.add_subplot(2, 2, 4)
+        if varies:
+            wall = fig.add_subplot(rows, 2, 6)
+            v = r["/geometry/surface/v"]
+            mesh = wall.pcolormesh(s_grid, v.values, distance.T, shading="auto", cmap="viridis")
+            fig.colorbar(mesh, ax=wall, label="distance [m]")
+            wall.set_xlabel("arc length [m]")
+            wall.set_ylabel(f"v [{getattr(v, 'units', '')}]")
+            wall.set_title("the wall's distance from the centerline")
+        curv = fig.add_subplot(rows, 2, 4)
         curv.plot(s, turning, "b-", label="turning (+ left)")
         curv.plot(s, vertical, "r-", label="vertical (+ concave up)")
         curv.axhline(0, color="gray", lw=0.5)
