@@ -10,14 +10,19 @@
 !> the integrator's dense output (rider_extremes, docs/accuracy.md); a
 !> series without them (not from simulate_ride) gives the records' extremes.
 !> The limits judge every recorded sample (outputs and events).
+!> With may_fly the felt accelerations and the tipping lever arm (their
+!> extremes and limits) are judged on rider_extremes' felt_basis (docs/rider.md
+!> "What the felt figures cover"): the model's with the pelvis and another
+!> contact on the slide, 0 with the whole rider in the air (a free body),
+!> and not judged between (the model holds the pelvis's attitude there).
 module design_ride_report
   use base_kinds, only: wp
   use base_constants, only: pi
   use rider_model, only: N_CONTACTS
   use rider_ride, only: ride_series_t
   use rider_flight, only: ride_flights_t
-  use rider_extremes, only: EXTREME_TOP_SPEED, EXTREME_FELT_MAX, EXTREME_FELT_MIN, EXTREME_CLIMB, &
-    EXTREME_NORMAL_MIN, EXTREME_LEVER
+  use rider_extremes, only: felt_basis, FELT_FREE_FALL, FELT_NOT_JUDGED, EXTREME_TOP_SPEED, EXTREME_FELT_MAX, &
+    EXTREME_FELT_MIN, EXTREME_CLIMB, EXTREME_NORMAL_MIN, EXTREME_LEVER
   use design_ride_evaluation, only: felt_acceleration, felt_acceleration_units, tipping_lever_arm, ride_limit_t, limit_verdict_t, &
     evaluate_limit, series_extreme
   implicit none (type, external)
@@ -29,6 +34,9 @@ module design_ride_report
     real(wp), allocatable :: felt(:, :)          ! 3 x n, g: longitudinal, lateral, normal at the pelvis CoM
     character(len=:), allocatable :: felt_units  ! the unit g of felt in files (felt_acceleration_units)
     real(wp), allocatable :: lever_arm(:)        ! n, m (huge where the pelvis does not press)
+    logical, allocatable :: felt_judged(:)       ! n: felt and lever_arm judged at the record (felt_basis)
+    real(wp), allocatable :: judged_felt(:, :)   ! 3 x n, g: felt as judged (the model's; 0 in a free fall)
+    real(wp) :: not_judged_time = 0              ! s where they are not (may_fly: the pelvis's attitude held)
     real(wp) :: ride_time = 0                    ! s
     real(wp) :: distance = 0                     ! m of arc length from the start to the stop
     real(wp) :: top_speed = 0, top_speed_at = 0  ! m/s, m
@@ -62,6 +70,7 @@ contains
     integer, intent(in), optional :: ejected_contact
     type(ride_flights_t), intent(in), optional :: flights
     real(wp), allocatable :: where(:), values(:), lever_abs(:)
+    integer, allocatable :: basis(:)
     integer :: n, i, k, at
     n = s%n
     report%n = n
@@ -70,10 +79,21 @@ contains
     allocate (report%felt(3, n), report%lever_arm(n))
     if (n < 1) return
     where = s%arc_length(:n)
+    basis = felt_basis([(0, i = 1, n)])
+    if (allocated(s%airborne)) then
+      if (size(s%airborne) >= n) basis = felt_basis(s%airborne(:n))
+    end if
+    report%felt_judged = basis /= FELT_NOT_JUDGED
+    report%not_judged_time = sum(s%time(2:n) - s%time(:n - 1), mask=.not. report%felt_judged(:n - 1))
     do i = 1, n
       report%felt(:, i) = felt_acceleration(s%pelvis_acceleration(:, i), gravity, s%pelvis_axes(:, :, i))
       report%lever_arm(i) = tipping_lever_arm(s%reaction_force(:, i), s%reaction_moment(:, i), &
                                               s%pelvis_axes(:, 1, i), s%pelvis_axes(:, 3, i))
+    end do
+    ! what is judged: the model's, 0 in a free fall, only where judged
+    report%judged_felt = report%felt
+    do i = 1, n
+      if (basis(i) == FELT_FREE_FALL) report%judged_felt(:, i) = 0
     end do
     if (present(ejected_contact)) report%ejected_contact = ejected_contact
     if (report%ejected_contact > 0) report%ejected_at = s%arc_length(n)
@@ -81,10 +101,12 @@ contains
     report%distance = s%arc_length(n) - s%arc_length(1)
     call series_extreme(s%speed(:n), where, .true., report%top_speed, report%top_speed_at)
     report%final_speed = s%speed(n)
-    do k = 1, 3
-      call series_extreme(report%felt(k, :), where, .true., report%felt_max(k), report%felt_max_at(k))
-      call series_extreme(report%felt(k, :), where, .false., report%felt_min(k), report%felt_min_at(k))
-    end do
+    associate (on => report%felt_judged, felt => report%judged_felt)
+      do k = 1, 3
+        call series_extreme(pack(felt(k, :), on), pack(where, on), .true., report%felt_max(k), report%felt_max_at(k))
+        call series_extreme(pack(felt(k, :), on), pack(where, on), .false., report%felt_min(k), report%felt_min_at(k))
+      end do
+    end associate
     do k = 1, N_CONTACTS
       at = maxloc(abs(s%contact(k)%wall_angle(:n)), dim=1)
       report%climb_angle(k) = s%contact(k)%wall_angle(at)
@@ -93,9 +115,10 @@ contains
       call series_extreme(s%contact(k)%normal_force(:n), where, .false., report%normal_min(k), &
                           report%normal_min_at(k))
     end do
-    lever_abs = merge(abs(report%lever_arm), 0.0_wp, abs(report%lever_arm) < huge(1.0_wp))
-    at = maxloc(lever_abs, dim=1)
+    lever_abs = merge(abs(report%lever_arm), 0.0_wp, abs(report%lever_arm) < huge(1.0_wp) .and. basis /= FELT_FREE_FALL)
+    at = maxloc(lever_abs, dim=1, mask=report%felt_judged)
     report%lever_max = report%lever_arm(at)
+    if (basis(at) == FELT_FREE_FALL) report%lever_max = 0
     if (.not. abs(report%lever_max) < huge(1.0_wp)) report%lever_max = 0
     report%lever_max_at = where(at)
     if (s%extremes%located .and. s%extremes%records == n) call take_located(s, report)
@@ -112,14 +135,15 @@ contains
         if (.not. complete) cycle
         call evaluate_limit(limits(k), s%speed(n:n), where(n:n), report%verdicts(k))
         cycle
-      case ('acceleration_longitudinal')
-        values = report%felt(1, :)
-      case ('acceleration_lateral')
-        values = report%felt(2, :)
-      case ('acceleration_normal')
-        values = report%felt(3, :)
-      case ('lever_arm')
-        values = lever_abs
+      case ('acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal', 'lever_arm')
+        ! where judged (felt_basis)
+        if (limits(k)%quantity == 'lever_arm') then
+          values = pack(lever_abs, report%felt_judged)
+        else
+          values = pack(report%judged_felt(felt_axis(limits(k)%quantity), :), report%felt_judged)
+        end if
+        call evaluate_limit(limits(k), values, pack(where, report%felt_judged), report%verdicts(k))
+        cycle
       case ('normal_force')
         values = [(minval([(s%contact(i)%normal_force(at), i = 1, N_CONTACTS)]), at = 1, n)]
       case ('wall_angle')
@@ -141,6 +165,13 @@ contains
     end do
 
   contains
+
+    !> The felt acceleration's axis a limit's quantity names.
+    pure integer function felt_axis(quantity)
+      character(len=*), intent(in) :: quantity
+      felt_axis = findloc([character(len=25) :: 'acceleration_longitudinal', 'acceleration_lateral', &
+                           'acceleration_normal'], quantity, dim=1)
+    end function felt_axis
 
     !> A flights' limit: the longest airtime at its take-off, each landing's
     !> drop height where it landed (none flown: 0 at the start).

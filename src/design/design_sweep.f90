@@ -349,8 +349,9 @@ contains
     at = 1
     magnitude = -1
     do i = 1, r%n
-      if (norm2(r%felt(:, i)) > magnitude) then
-        magnitude = norm2(r%felt(:, i))
+      if (.not. r%felt_judged(i)) cycle   ! the model's value, not judged (design_ride_report)
+      if (norm2(r%judged_felt(:, i)) > magnitude) then
+        magnitude = norm2(r%judged_felt(:, i))
         at = i
       end if
     end do

@@ -10,12 +10,23 @@
 !> felt specific force f = (a - g)/|g| in a body frame's axes (in g), and
 !> the tipping lever arm l = (M_r . e_long)/(F_r . n) (thesis E.3), huge()
 !> where the reaction does not press (F_r . n <= 0).
+!>
+!> With may_fly, what the report takes as felt depends on the open contacts
+!> (`felt_basis`; docs/rider.md "What the felt figures cover"): the
+!> model's felt acceleration and lever arm while the pelvis and at least one
+!> more contact are on the slide; 0 g and no lever arm while the whole rider
+!> is in the air (a free body feels nothing; air drag is not modelled); and
+!> nothing (not judged) while the pelvis is open with another contact on, or
+!> on the slide alone: there the model holds the pelvis's attitude (the
+!> couple in the air, the flat seat's moments at no load), forces a free
+!> rider does not feel (jump.nml's 2.7 g braking and -0.96 g normal).
 module rider_extremes
   use base_kinds, only: wp
-  use rider_model, only: N_CONTACTS
+  use rider_model, only: N_CONTACTS, CONTACT_PELVIS
   implicit none (type, external)
   private
-  public :: felt_acceleration, tipping_lever_arm, ride_extremes_t, extreme_quantities
+  public :: felt_acceleration, tipping_lever_arm, ride_extremes_t, extreme_quantities, felt_basis
+  public :: FELT_MODEL, FELT_FREE_FALL, FELT_NOT_JUDGED
   public :: N_EXTREMES, N_ATTACHED, EXTREME_TOP_SPEED, EXTREME_FELT_MAX, EXTREME_FELT_MIN, EXTREME_CLIMB, &
     EXTREME_NORMAL_MIN, EXTREME_LEVER
 
@@ -24,6 +35,9 @@ module rider_extremes
     EXTREME_CLIMB = 8, EXTREME_NORMAL_MIN = 11, EXTREME_LEVER = 14, N_EXTREMES = 14
   !> numbers kept with each: the reported value (signed), the arc length, the wall distance
   integer, parameter :: N_ATTACHED = 3
+
+  !> felt_basis: the model's values count, a free fall (0 g), not judged
+  integer, parameter :: FELT_MODEL = 1, FELT_FREE_FALL = 2, FELT_NOT_JUDGED = 3
 
   !> The located extremes of a ride, in report units (m/s, g, rad, N, m).
   type :: ride_extremes_t
@@ -37,6 +51,24 @@ module rider_extremes
   end type ride_extremes_t
 
 contains
+
+  !> What the felt acceleration and the lever arm are with the contacts
+  !> `airborne` open (bit k-1 for contact k): the model's (FELT_MODEL) with
+  !> the pelvis and at least one more contact on the slide, 0 (FELT_FREE_FALL)
+  !> with every contact open, else not judged (FELT_NOT_JUDGED).
+  elemental integer function felt_basis(airborne)
+    integer, intent(in) :: airborne
+    logical :: on(N_CONTACTS)
+    integer :: k
+    on = [(.not. btest(airborne, k - 1), k = 1, N_CONTACTS)]
+    if (.not. any(on)) then
+      felt_basis = FELT_FREE_FALL
+    else if (on(CONTACT_PELVIS) .and. count(on) >= 2) then
+      felt_basis = FELT_MODEL
+    else
+      felt_basis = FELT_NOT_JUDGED
+    end if
+  end function felt_basis
 
   !> (a - g)/|g| in the axes (columns) of a frame.
   pure function felt_acceleration(a, gravity, axes) result(f)
@@ -59,11 +91,14 @@ contains
 
   !> The quantities of one state as values to maximise (minima negated,
   !> |wall angle|, |lever arm| or 0 where the pelvis does not press) and
-  !> their attached numbers.
+  !> their attached numbers, with the contacts `airborne` open: the felt
+  !> acceleration and the lever arm on felt_basis (0 in a free fall; -huge,
+  !> never a maximum, where not judged).
   pure subroutine extreme_quantities(speed, acceleration, axes, reaction_force, reaction_moment, arc_length, &
-                                     wall_angle, wall_distance, normal_force, gravity, values, attached)
+                                     wall_angle, wall_distance, normal_force, gravity, airborne, values, attached)
     real(wp), intent(in) :: speed, acceleration(3), axes(3, 3), reaction_force(3), reaction_moment(3), arc_length
     real(wp), intent(in) :: wall_angle(N_CONTACTS), wall_distance(N_CONTACTS), normal_force(N_CONTACTS), gravity(3)
+    integer, intent(in) :: airborne
     real(wp), intent(out) :: values(N_EXTREMES), attached(N_ATTACHED, N_EXTREMES)
     real(wp) :: felt(3), lever
     integer :: k
@@ -72,6 +107,7 @@ contains
     values(EXTREME_TOP_SPEED) = speed
     attached(1, EXTREME_TOP_SPEED) = speed
     felt = felt_acceleration(acceleration, gravity, axes)
+    if (felt_basis(airborne) == FELT_FREE_FALL) felt = 0
     do k = 1, 3
       values(EXTREME_FELT_MAX + k - 1) = felt(k)
       attached(1, EXTREME_FELT_MAX + k - 1) = felt(k)
@@ -86,8 +122,12 @@ contains
       attached(1, EXTREME_NORMAL_MIN + k - 1) = normal_force(k)
     end do
     lever = tipping_lever_arm(reaction_force, reaction_moment, axes(:, 1), axes(:, 3))
-    if (.not. abs(lever) < huge(1.0_wp)) lever = 0
+    if (.not. abs(lever) < huge(1.0_wp) .or. felt_basis(airborne) == FELT_FREE_FALL) lever = 0
     values(EXTREME_LEVER) = abs(lever)
     attached(1, EXTREME_LEVER) = lever
+    if (felt_basis(airborne) == FELT_NOT_JUDGED) then
+      values(EXTREME_FELT_MAX:EXTREME_FELT_MIN + 2) = -huge(1.0_wp)
+      values(EXTREME_LEVER) = -huge(1.0_wp)
+    end if
   end subroutine extreme_quantities
 end module rider_extremes

@@ -77,6 +77,7 @@ contains
     real(wp) :: residual, speed, acceleration(3), axes(3, 3), force(3), moment(3)
     real(wp) :: angle(N_CONTACTS), distance(N_CONTACTS), normal(N_CONTACTS)
     integer :: f, k, mask, n_full
+    mask = 0   ! the open contacts (without may_fly none)
     if (self%may_fly) then
       ! the full layout: the stretch's build at its own state
       mask = nint(context(size(context)))
@@ -123,7 +124,7 @@ contains
       end do
       call extreme_quantities(speed, acceleration, axes, force, moment, &
         self%slide%arc_length(work%scalars(lay%u(CONTACT_PELVIS))%q), angle, distance, normal, self%gravity, &
-        values, attached)
+        mask, values, attached)
     end associate
     end subroutine evaluate_build
   end subroutine probe_evaluate

@@ -541,7 +541,7 @@ contains
         call extreme_quantities(r%speed(n), r%pelvis_acceleration(:, n), r%pelvis_axes(:, :, n), &
           r%reaction_force(:, n), r%reaction_moment(:, n), r%arc_length(n), &
           [(r%contact(k)%wall_angle(n), k = 1, N_CONTACTS)], [(r%contact(k)%wall_distance(n), k = 1, N_CONTACTS)], &
-          [(r%contact(k)%normal_force(n), k = 1, N_CONTACTS)], self%probe%gravity, values, attached)
+          [(r%contact(k)%normal_force(n), k = 1, N_CONTACTS)], self%probe%gravity, self%open_mask, values, attached)
         if (self%may_fly) then
           ! the context in the full layout: the betas of the build, the
           ! posture held, the open contacts last; a stretch's start

@@ -385,7 +385,7 @@ contains
         call summary%add('felt_longitudinal_max', 'felt pushing max', r%felt_max(1), r%felt_units, 'g')
       else
         call summary%add('felt_longitudinal_max', 'felt braking min', r%felt_max(1), r%felt_units, &
-                         'g (braked all the way)', -1.0_wp)
+                         trim(merge('g (braked all the way)', 'g                     ', r%felt_max(1) < 0)), -1.0_wp)
       end if
       call summary%add('felt_longitudinal_max_arc_length', '  at arc length', r%felt_max_at(1), 'm')
       do k = 2, 3
@@ -399,15 +399,19 @@ contains
       end do
       do k = 1, N_CONTACTS
         c = trim(contact_names(k))
-        call summary%add(c//'_wall_angle', c//' highest on the wall', r%climb_angle(k), 'rad', &
-                         'deg from the bottom'//side(r%climb_angle(k)), degrees)
-        call summary%add(c//'_wall_distance', '  along the wall', r%climb_distance(k), 'm')
+        call summary%add(c//'_wall_angle', c//' highest on the wall', resolved(k, r%climb_angle(k)), 'rad', &
+                         'deg from the bottom'//side(resolved(k, r%climb_angle(k))), degrees)
+        call summary%add(c//'_wall_distance', '  along the wall', resolved(k, r%climb_distance(k)), 'm')
         call summary%add(c//'_wall_arc_length', '  at arc length', r%climb_at(k), 'm')
         call summary%add(c//'_normal_force_min', c//' normal force min', r%normal_min(k), 'N')
         call summary%add(c//'_normal_force_min_arc_length', '  at arc length', r%normal_min_at(k), 'm')
       end do
       call summary%add('lever_arm_max', 'largest tipping lever arm', r%lever_max, 'm')
       call summary%add('lever_arm_max_arc_length', '  at arc length', r%lever_max_at, 'm')
+      ! with may_fly: what the felt figures and the lever arm leave out (rider_extremes' felt_basis)
+      if (ride%flights%watched) call summary%add('felt_not_judged_time', 'felt g not judged', r%not_judged_time, &
+        's', 's with the pelvis in the air or alone on the slide (the model holds its attitude there: not what '// &
+        'a rider feels); the whole rider in the air counts as 0 g (docs/rider.md)')
       if (ride%complete) then
         call summary%add('exit_speed', 'exit speed (into the run-out)', r%final_speed, 'm/s')
       else
@@ -448,12 +452,25 @@ contains
 
   contains
 
+    !> A climb of contact k as printed: 0 where the contact stayed within the
+    !> closure's tolerance (1e-10 m, mechanism_t's closure_tolerance) of the
+    !> bottom, which a position solved to that tolerance does not resolve
+    !> (rounding noise such as 5e-14 deg on a straight slide); the file keeps
+    !> the computed value.
+    pure real(wp) function resolved(k, climb)
+      integer, intent(in) :: k
+      real(wp), intent(in) :: climb
+      real(wp), parameter :: closure_tolerance = 1e-10_wp   ! m
+      resolved = merge(0.0_wp, climb, abs(r%climb_distance(k)) < closure_tolerance)
+    end function resolved
+
     !> What the sign of a felt acceleration along axis k (2 lateral, 3 normal) means.
     pure function sense(k, value) result(text)
       integer, intent(in) :: k
       real(wp), intent(in) :: value
       character(len=:), allocatable :: text
       text = ''
+      if (k == 3 .and. value == 0) text = ', weightless'
       if (value == 0) return
       if (k == 2) text = trim(merge(', pushed to the left ', ', pushed to the right', value > 0))
       if (k == 3) text = trim(merge(', pressed onto the slide', ', pulled off the slide  ', value > 0))

@@ -42,9 +42,12 @@ contains
     character(len=*), intent(in) :: friction
     type(status_t), intent(inout) :: status
     character(len=*), parameter :: g = '/rider/'
-    character(len=:), allocatable :: c, uu, vu
+    character(len=:), allocatable :: c, uu, vu, in_flight
     integer :: n, k
     n = ride%series%n
+    in_flight = ''
+    if (ride%flights%watched) in_flight = '; with a contact open (airborne > 0) the model''s value (its held '// &
+      'posture and attitude), not what a rider feels (docs/rider.md, "Flight")'
     call surface%parameter_units(uu, vu)
     associate (s => ride%series)
       call file%write_vector(g//'time', s%time(:n), 's', 'time from the start of the ride', status)
@@ -60,10 +63,12 @@ contains
       call file%write_matrix(g//'acceleration_g', report%felt(:, :n), report%felt_units, &
                              'felt specific force (a - g)/|g| at the pelvis centre of mass in the pelvis axes: '// &
                              'longitudinal (towards the feet), '// &
-                             'lateral (to the left), normal (+ pressed onto the slide), in multiples of |g|', status)
+                             'lateral (to the left), normal (+ pressed onto the slide), in multiples of |g|'// &
+                             in_flight, status)
       call file%write_vector(g//'lever_arm', merge(report%lever_arm(:n), 0.0_wp, abs(report%lever_arm(:n)) < &
                              huge(1.0_wp)), 'm', 'tipping lever arm at the pelvis contact (E.3): the slide''s '// &
-                             'moment about the body axis over the normal force (0 where it does not press)', status)
+                             'moment about the body axis over the normal force (0 where it does not press)'// &
+                             in_flight, status)
       call file%write_vector(g//'energy', s%energy(:n), 'J', 'kinetic + potential energy of the three bodies', &
                              status)
       call file%write_vector(g//'kinetic_energy', s%kinetic(:n), 'J', 'kinetic energy', status)
@@ -140,7 +145,7 @@ contains
     type(status_t), intent(inout) :: status
     character(len=*), parameter :: g = '/evaluation/'
     character(len=*), parameter :: axis(3) = [character(len=12) :: 'longitudinal', 'lateral', 'normal']
-    character(len=:), allocatable :: c, unit
+    character(len=:), allocatable :: c, unit, judged_where
     integer :: k
     if (r%n < 1) return
     call file%write_scalar(g//'ride_time', r%ride_time, 's', 'time from the start to the stop', status)
@@ -153,17 +158,26 @@ contains
     if (r%ejected_contact > 0) call file%write_scalar(g//'ejected_arc_length', r%ejected_at, 'm', &
       'where the '//trim(contact_names(r%ejected_contact))//' went over the top of a wall (pelvis arc length)', &
       status)
-    if (ride%flights%watched) call write_flights(file, ride%flights, g//'flight/', status)
+    judged_where = ''
+    if (ride%flights%watched) then
+      call write_flights(file, ride%flights, g//'flight/', status)
+      call file%write_scalar(g//'flight/felt_not_judged_time', r%not_judged_time, 's', 'time with a contact '// &
+        'open: the felt accelerations and the lever arm there are the model''s (its held posture and attitude), '// &
+        'left out of /evaluation''s extremes and limits; in the air a free body feels 0 g', status)
+      judged_where = '; where judged: 0 with the whole rider in the air, none with the pelvis in the air while '// &
+                 'another contact is on or alone on the slide (docs/rider.md)'
+    end if
     do k = 1, 3
       c = g//'acceleration_'//trim(axis(k))
       call file%write_scalar(c//'_max', r%felt_max(k), r%felt_units, 'largest felt acceleration along the '// &
-                             'pelvis''s '//trim(axis(k))//' axis, multiples of |g|', status)
+                             'pelvis''s '//trim(axis(k))//' axis, multiples of |g|'//judged_where, status)
       call file%write_scalar(c//'_max_arc_length', r%felt_max_at(k), 'm', 'where (pelvis arc length)', status)
       call file%write_scalar(c//'_min', r%felt_min(k), r%felt_units, 'smallest felt acceleration along the '// &
-                             'pelvis''s '//trim(axis(k))//' axis, multiples of |g|', status)
+                             'pelvis''s '//trim(axis(k))//' axis, multiples of |g|'//judged_where, status)
       call file%write_scalar(c//'_min_arc_length', r%felt_min_at(k), 'm', 'where (pelvis arc length)', status)
     end do
-    call file%write_scalar(g//'lever_arm_max', r%lever_max, 'm', 'largest tipping lever arm (signed)', status)
+    call file%write_scalar(g//'lever_arm_max', r%lever_max, 'm', 'largest tipping lever arm (signed)'//judged_where, &
+                           status)
     call file%write_scalar(g//'lever_arm_max_arc_length', r%lever_max_at, 'm', 'where', status)
     do k = 1, N_CONTACTS
       c = g//trim(contact_names(k))//'/'

@@ -215,6 +215,18 @@ def check(json_path, h5_path, printed_path, reference=None):
             if not recorded <= top <= recorded * (1 + 1e-4):
                 fail(f"top_speed: JSON {top} is not within 1e-4 above the HDF5 series' largest speed {recorded}")
             close('ride_steps', values['ride_steps'], g['statistics/steps'][()])
+        if 'airborne' in g:
+            # with may_fly (docs/rider.md "What the felt figures cover"): the time
+            # the felt figures leave out, that of the records with the pelvis in
+            # the air while another contact is on, or alone on the slide
+            airborne, time = g['airborne'][:], g['time'][:]
+            left_out = np.isin(airborne, [1, 3, 5, 6])[:-1]
+            if need('felt_not_judged_time'):
+                close('felt_not_judged_time', values['felt_not_judged_time'],
+                      f['/evaluation/flight/felt_not_judged_time'][()])
+                if not abs(values['felt_not_judged_time'] - np.diff(time)[left_out].sum()) <= 1e-9:
+                    fail(f"felt_not_judged_time: {values['felt_not_judged_time']} s, but the records with the "
+                         f"pelvis in the air or alone on the slide span {np.diff(time)[left_out].sum()} s")
     elif scenario == 'geometry':
         if need('grid_n_u', 'grid_n_v'):
             close('grid_n_u', values['grid_n_u'], f['/geometry/surface/u'].shape[0])
