@@ -33,6 +33,7 @@
 module io_xdmf
   use base_kinds, only: wp
   use base_text, only: format_integer, format_real
+  use base_scientific_text, only: scientific_text
   use base_status, only: status_t, STATUS_OK
   use io_hdf5, only: result_file_t
   implicit none (type, external)
@@ -41,6 +42,7 @@ module io_xdmf
 
   integer, parameter :: max_steps = 200   ! time steps of a temporal collection
   integer, parameter :: per_line = 6      ! values per line of a DataItem
+  integer, parameter :: width = 17        ! characters per value: a blank and ES16.8E3
 
   !> Text that grows by doubling (appending stays linear).
   type :: text_t
@@ -540,18 +542,20 @@ contains
   end subroutine attribute
 
   !> A DataItem holding `values` (C order) of shape `dims`: nine significant
-  !> digits, below a micrometre over a kilometre.
+  !> digits, below a micrometre over a kilometre (the text of the formatted
+  !> write '(*(1x, es16.8e3))', made by scientific_text).
   subroutine data_item(text, dims, values)
     type(text_t), intent(inout) :: text
     integer, intent(in) :: dims(:)
     real(wp), intent(in) :: values(:)
-    character(len=17*per_line) :: line
-    integer :: k, last
+    character(len=width*per_line) :: line
+    integer :: k, j
     call add(text, '    <DataItem Dimensions="'//dims_text(dims)//'" NumberType="Float" Precision="8" Format="XML">')
     do k = 1, size(values), per_line
-      last = min(k + per_line - 1, size(values))
-      write (line, '(*(1x, es16.8e3))') values(k:last)
-      call add(text, trim(line))
+      do j = k, min(k + per_line - 1, size(values))
+        line((j - k)*width + 1:(j - k + 1)*width) = ' '//scientific_text(values(j))
+      end do
+      call add(text, line(:(j - k)*width))
     end do
     call add(text, '    </DataItem>')
   end subroutine data_item
@@ -562,11 +566,12 @@ contains
     type(text_t), intent(inout) :: text
     integer, intent(in) :: dims(:), times
     real(wp), intent(in) :: values(:)
-    integer, parameter :: width = 17   ! 1x, es16.8e3
     character(len=width*size(values)) :: once
     character(len=:), allocatable :: all
     integer :: k
-    write (once, '(*(1x, es16.8e3))') values
+    do k = 1, size(values)
+      once((k - 1)*width + 1:k*width) = ' '//scientific_text(values(k))
+    end do
     all = repeat(once, times)
     call add(text, '    <DataItem Dimensions="'//dims_text(dims)//'" NumberType="Float" Precision="8" Format="XML">')
     do k = 1, len(all), width*per_line
