@@ -1,7 +1,10 @@
-!> Phases of a contact that opens and closes (issue 25): a flight
-!> (contact_flight) whose landing closes the contact goes on as the closed
-!> contact, and a closed contact that may open (may_open) goes on in flight
-!> from its lift-off, to the end of the run.
+!> Phases of contacts that open and close (issue 25): a flight
+!> (contact_flight) whose landing closes a contact goes on as that contact
+!> closed, and a closed contact that may open (may_open) goes on in flight
+!> from its lift-off, to the end of the run. A body with several contacts
+!> (the surfaces it may land on) is carried by one at a time, built alone
+!> (contact_flight closed_part); the others' gaps are watched meanwhile
+!> (contact_open_gaps carried_ode_t).
 !>
 !> Closing: when an impact's rebound is below close_speed the flight stops
 !> there with the contact points' normal velocity taken away
@@ -28,9 +31,10 @@
 !> and the first of the next (the same pose and twist to rounding; the
 !> second marked an event, record_kind 3); the force laws' work goes on
 !> across the switch (carry_work). Coordinates of one phase are 0 in
-!> the other's records (the result's `open` says which: 1 in flight); in the
-!> flight's records the contact's point is the gap's point on shape_1, its
-!> velocity the body's nearest point's along the surface, its normal force 0.
+!> the other's records (the result's `open` says which contact is open at
+!> each record); at an open contact's records its point is the gap's point
+!> on shape_1, its velocity the body's nearest point's along the surface,
+!> its normal force 0.
 module contact_closing
   use base_kinds, only: wp
   use base_text, only: format_short
@@ -40,7 +44,8 @@ module contact_closing
   use kinetostatics_recorder, only: mechanism_series_t, join_series
   use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_LIFT_OFF
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model
-  use contact_flight, only: flight_ode_t, build_flight, restart_flight, touching_gap_limit
+  use contact_flight, only: flight_ode_t, build_flight, restart_flight, closed_part, carrying_contact
+  use contact_open_gaps, only: carried_ode_t, carry, touching_gap_limit
   implicit none (type, external)
   private
   public :: drive_flight, close_contact, flight_after_closed
@@ -49,11 +54,15 @@ module contact_closing
   type :: phases_t
     type(mechanism_series_t) :: series
     character(len=8), allocatable :: q_units(:), beta_units(:)
-    integer, allocatable :: in_flight(:)                   ! per record: 1 in flight, 0 closed
-    real(wp), allocatable :: point(:, :), velocity(:, :)   ! 3 x records: the flight's gap point and velocity
+    integer, allocatable :: open(:, :)                     ! contacts x records: 1 open, 0 closed
+    real(wp), allocatable :: gap(:, :)                     ! contacts x records, m (0 closed)
+    real(wp), allocatable :: point(:, :, :), velocity(:, :, :)   ! 3 x contacts x records: point, slip
     character(len=:), allocatable :: history               ! every phase's outcome
   contains
     procedure :: add => phases_add
+    procedure :: add_flight => phases_add_flight
+    procedure :: add_carried => phases_add_carried
+    procedure :: append => phases_append
     procedure :: finish => phases_finish
   end type phases_t
 
@@ -62,71 +71,75 @@ contains
   !> Drives the run's phases from y0 (numerics_event_driver drive each): the
   !> flight (from y0), or the closed contact first when the flight was built
   !> after it (start_closed: from flight%closed%y0); a flight whose landing
-  !> closes the contact goes on closed, a closed contact that lifts off and
-  !> may open goes on in flight, until the end time or another stop.
-  !> flight%series becomes the joined records, flight%q_units and
-  !> beta_units their units, in_flight the phase of each record (1 in
-  !> flight, 0 closed), flight%outcome every phase's; result sums the
-  !> drives (its outcome, time and fired roots the last's).
-  subroutine drive_flight(flight, y0, options, result, status, in_flight)
+  !> closes a contact goes on closed on it, a closed contact that lifts off
+  !> and may open goes on in flight, until the end time or another stop.
+  !> While a contact carries the body its other contacts' gaps are watched
+  !> (contact_open_gaps carried_ode_t). flight%series becomes the joined
+  !> records, flight%q_units and beta_units their units, open the state of
+  !> each contact at each record (1 open, 0 closed), flight%gap_point and
+  !> gap_velocity every contact's point and slip at every record,
+  !> flight%outcome every phase's; result sums the drives (its outcome, time
+  !> and fired roots the last's).
+  subroutine drive_flight(flight, y0, options, result, status, open)
     type(flight_ode_t), intent(inout), target :: flight
     real(wp), intent(in) :: y0(:)
     type(driver_options_t), intent(in) :: options
     type(driver_result_t), intent(out) :: result
     type(status_t), intent(out) :: status
-    integer, allocatable, intent(out) :: in_flight(:)   ! per record: 1 in flight, 0 closed
+    integer, allocatable, intent(out) :: open(:, :)   ! contacts x records: 1 open, 0 closed
     type(phases_t) :: run
     type(driver_options_t) :: phase_options
     type(driver_result_t) :: phase
+    type(carried_ode_t) :: carried
     real(wp), allocatable :: y(:)
     logical :: flying, first, next
-    integer :: chart_changes, n
+    integer :: chart_changes, nc
     flying = .not. flight%start_closed
     y = y0
-    if (.not. flying) y = flight%closed%y0
+    if (.not. flying) then
+      y = flight%closed%y0
+      call carry(flight%closed%ode, flight%closed%body_frame(2), flight%system, flight%closed_on, carried, status)
+      if (.not. status%ok()) return
+    end if
     phase_options = options
     if (.not. options%output_origin < huge(1.0_wp)) phase_options%output_origin = options%t_start
     first = .true.
     chart_changes = 0
-    allocate (run%in_flight(0), run%point(3, 0), run%velocity(3, 0))
+    nc = size(flight%system%contacts)
+    allocate (run%open(nc, 0), run%gap(nc, 0), run%point(3, nc, 0), run%velocity(3, nc, 0))
     run%history = ''
     do
       if (flying) then
-        flight%closing = .false.
+        flight%landed = 0
         if (.not. first) call flight%start_series(16)
         call drive(flight, y, phase_options, phase, status)
-        n = flight%series%n
-        call run%add(flight%series, flight%q_units, flight%beta_units, 1, flight%outcome)
-        if (n > 0) then
-          run%point = reshape([run%point, flight%gap_point(:, :n)], [3, size(run%in_flight)])
-          run%velocity = reshape([run%velocity, flight%gap_velocity(:, :n)], [3, size(run%in_flight)])
-        end if
-        next = status%ok() .and. phase%outcome == DRIVE_EVENT_STOP .and. flight%closing .and. &
+        call run%add(flight%series, flight%q_units, flight%beta_units, flight%outcome)
+        call run%add_flight(flight)
+        next = status%ok() .and. phase%outcome == DRIVE_EVENT_STOP .and. flight%landed > 0 .and. &
                phase%t < options%t_end
         if (next) then
+          flight%closed_on = flight%landed
           if (allocated(flight%closed)) deallocate (flight%closed)
           allocate (flight%closed)
           call close_contact(flight, flight%closed, status)
+          if (status%ok()) call carry(flight%closed%ode, flight%closed%body_frame(2), flight%system, &
+                                      flight%closed_on, carried, status)
           if (.not. status%ok()) call prefix_status(status, 'closing the contact at t = '//format_short(phase%t)//' s')
           y = flight%closed%y0
           if (status%ok()) call carry_work(run%series, flight%closed%ode, y)
         end if
       else
-        call flight%closed%ode%start_series(16)
-        call drive(flight%closed%ode, y, phase_options, phase, status)
-        chart_changes = chart_changes + flight%closed%ode%chart_changes
-        next = status%ok() .and. phase%outcome == DRIVE_EVENT_STOP .and. &
-               flight%closed%ode%stop_kind == STOP_LIFT_OFF .and. flight%system%contacts(1)%may_open .and. &
-               phase%t < options%t_end
-        if (next) flight%closed%ode%outcome = flight%closed%ode%outcome//': the contact opens (may_open), '// &
-                                              'the body flies'
-        call run%add(flight%closed%ode%series, flight%closed%q_units, flight%closed%beta_units, 0, &
-                     flight%closed%ode%outcome)
-        n = flight%closed%ode%series%n
-        run%point = reshape([run%point, spread(0.0_wp, 1, 3*n)], [3, size(run%in_flight)])
-        run%velocity = reshape([run%velocity, spread(0.0_wp, 1, 3*n)], [3, size(run%in_flight)])
+        call carried%start_series(16)
+        call drive(carried, y, phase_options, phase, status)
+        chart_changes = chart_changes + carried%chart_changes
+        next = status%ok() .and. phase%outcome == DRIVE_EVENT_STOP .and. carried%stop_kind == STOP_LIFT_OFF .and. &
+               flight%system%contacts(flight%closed_on)%may_open .and. phase%t < options%t_end
+        if (next) carried%outcome = carried%outcome//': the contact opens (may_open), the body flies'
+        call run%add(carried%series, flight%closed%q_units, flight%closed%beta_units, carried%outcome)
+        call run%add_carried(carried)
+        flight%closed%ode = carried%mechanism_ode_t
         if (next) then
-          associate (s => flight%closed%ode%series)
+          associate (s => carried%series, n => carried%series%n)
             call restart_flight(flight, s%body_rot(:, :, 1, n), s%body_r(:, 1, n), &
                                 [s%body_omega(:, 1, n), s%body_v(:, 1, n)], y, status)
           end associate
@@ -144,7 +157,7 @@ contains
     end do
     call run%finish(flight)
     flight%chart_changes = flight%chart_changes + chart_changes
-    in_flight = run%in_flight
+    open = run%open
   end subroutine drive_flight
 
   !> The work integrals of the next phase's state y (mechanism_ode_t: y =
@@ -180,12 +193,11 @@ contains
     call add_driver_result(result, phase)
   end subroutine add_result
 
-  !> Appends a phase's records (phase 1 in flight, 0 closed) and its outcome.
-  subroutine phases_add(self, series, q_units, beta_units, phase, outcome)
+  !> Appends a phase's records and its outcome.
+  subroutine phases_add(self, series, q_units, beta_units, outcome)
     class(phases_t), intent(inout) :: self
     type(mechanism_series_t), intent(in) :: series
     character(len=*), intent(in) :: q_units(:), beta_units(:), outcome
-    integer, intent(in) :: phase
     integer :: n1
     if (.not. allocated(self%series%q_names)) then
       self%series = series
@@ -199,28 +211,83 @@ contains
       ! a phase's start is a switch, an event of the run
       if (self%series%n > n1) self%series%kind(n1 + 1) = RECORD_EVENT
     end if
-    self%in_flight = [self%in_flight, spread(phase, 1, series%n)]
     if (len(outcome) == 0) return
     if (len(self%history) > 0) self%history = self%history//'; '
     self%history = self%history//outcome
   end subroutine phases_add
 
-  !> The joined records into the flight: its series (the contact's point and
-  !> velocity in flight from the gap's records; bodies on the closed
-  !> contact's frames, whose mechanism reports the run), units and outcome.
+  !> The contacts of a flight's records: all open, their gaps, points and slips.
+  subroutine phases_add_flight(self, flight)
+    class(phases_t), intent(inout) :: self
+    type(flight_ode_t), intent(in) :: flight
+    integer :: n, c
+    real(wp), allocatable :: gap(:, :)
+    n = flight%series%n
+    allocate (gap(size(self%open, 1), n))
+    do c = 1, size(gap, 1)
+      gap(c, :) = flight%series%monitor(flight%gap_monitors(c), :n)
+    end do
+    if (n == 0) return
+    call self%append(spread(spread(1, 1, size(gap, 1)), 2, n), gap, flight%gap_point(:, :, :n), &
+                     flight%gap_velocity(:, :, :n))
+  end subroutine phases_add_flight
+
+  !> The contacts of a closed phase's records: the carrying one closed (its
+  !> point and slip the model's), the others open (their watched gaps).
+  subroutine phases_add_carried(self, carried)
+    class(phases_t), intent(inout) :: self
+    type(carried_ode_t), intent(in) :: carried
+    integer :: n, k
+    integer, allocatable :: open(:, :)
+    real(wp), allocatable :: point(:, :, :), velocity(:, :, :)
+    n = carried%series%n
+    if (n == 0) return
+    k = carried%gaps%closed
+    open = spread(spread(1, 1, size(self%open, 1)), 2, n)
+    open(k, :) = 0
+    point = carried%gap_point(:, :, :n)
+    velocity = carried%gap_velocity(:, :, :n)
+    ! the closed model's one contact
+    point(:, k, :) = carried%series%contact_r(:, 1, :n)
+    velocity(:, k, :) = carried%series%slip(:, 1, :n)
+    call self%append(open, carried%gap_value(:, :n), point, velocity)
+  end subroutine phases_add_carried
+
+  !> Appends the contacts' states of a phase's records.
+  subroutine phases_append(self, open, gap, point, velocity)
+    class(phases_t), intent(inout) :: self
+    integer, intent(in) :: open(:, :)
+    real(wp), intent(in) :: gap(:, :), point(:, :, :), velocity(:, :, :)
+    integer :: nc, n
+    nc = size(open, 1)
+    n = size(self%open, 2) + size(open, 2)
+    self%open = reshape([self%open, open], [nc, n])
+    self%gap = reshape([self%gap, gap], [nc, n])
+    self%point = reshape([self%point, point], [3, nc, n])
+    self%velocity = reshape([self%velocity, velocity], [3, nc, n])
+  end subroutine phases_append
+
+  !> The joined records into the flight: its series (each open contact's
+  !> point and slip and every contact's gap from the phases' own; bodies on
+  !> the closed contact's frames, whose mechanism reports the run), units,
+  !> every contact's points and slips, and outcome.
   subroutine phases_finish(self, flight)
     class(phases_t), intent(inout) :: self
     type(flight_ode_t), intent(inout) :: flight
-    integer :: c, i, k, j
+    integer :: c, i, k, j, cs, gm
     associate (s => self%series)
-      c = findloc([(trim(s%contact_names(k)) == flight%contact_name, k = 1, s%nc)], .true., dim=1)
-      if (c > 0) then
+      do c = 1, size(self%open, 1)
+        associate (name => flight%system%contacts(c)%name)
+          cs = findloc([(trim(s%contact_names(k)) == name, k = 1, s%nc)], .true., dim=1)
+          gm = findloc([(trim(s%monitor_names(k)) == name//'.gap', k = 1, s%nm)], .true., dim=1)
+        end associate
         do i = 1, s%n
-          if (self%in_flight(i) == 0) cycle
-          s%contact_r(:, c, i) = self%point(:, i)
-          s%slip(:, c, i) = self%velocity(:, i)
+          if (gm > 0) s%monitor(gm, i) = self%gap(c, i)
+          if (cs == 0 .or. self%open(c, i) == 0) cycle
+          s%contact_r(:, cs, i) = self%point(:, c, i)
+          s%slip(:, cs, i) = self%velocity(:, c, i)
         end do
-      end if
+      end do
       if (allocated(flight%closed)) then
         associate (closed => flight%closed%ode%series)
           do k = 1, s%nb
@@ -232,6 +299,8 @@ contains
     end associate
     call move_alloc(self%q_units, flight%q_units)
     call move_alloc(self%beta_units, flight%beta_units)
+    call move_alloc(self%point, flight%gap_point)
+    call move_alloc(self%velocity, flight%gap_velocity)
     flight%series = self%series
     flight%outcome = self%history
   end subroutine phases_finish
@@ -250,10 +319,12 @@ contains
     end do
   end function united_units
 
-  !> The flight of a closed contact that may open (may_open): the free body
-  !> built at the closed model's start pose and twist (touching shape_1),
-  !> holding the model, driven closed first (drive_flight). q0, qd0, q_units
-  !> as build_flight's.
+  !> The flight of a body carried at the start by a closed contact (the
+  !> description's one contact that does not start open; `model` built from
+  !> it alone, contact_flight closed_part) that may open, or with other
+  !> contacts to land on: the free body built at the closed model's start
+  !> pose and twist (touching that contact's shape_1), holding the model,
+  !> driven closed first (drive_flight). q0, qd0, q_units as build_flight's.
   subroutine flight_after_closed(system, model, flight, q0, qd0, q_units, status)
     type(contact_system_t), intent(in) :: system
     type(contact_model_t), intent(in) :: model
@@ -262,7 +333,9 @@ contains
     character(len=8), allocatable, intent(out) :: q_units(:)
     type(status_t), intent(inout) :: status
     type(contact_system_t) :: placed
+    integer :: k
     if (.not. status%ok()) return
+    k = carrying_contact(system)
     placed = system
     associate (body => model%ode%work%frames(model%body_frame(2)))
       placed%bodies(1)%position = body%r
@@ -270,14 +343,15 @@ contains
       placed%bodies(1)%velocity = body%v
       placed%bodies(1)%angular_velocity = body%omega
     end associate
-    call build_flight(placed, flight, q0, qd0, q_units, status, touching=.true.)
+    call build_flight(placed, flight, q0, qd0, q_units, status, touching=k)
     if (.not. status%ok()) return
     flight%start_closed = .true.
+    flight%closed_on = k
     allocate (flight%closed, source=model)
   end subroutine flight_after_closed
 
   !> The closed contact at the flight's last record: its description with
-  !> the contact closed and the body at the record's pose and twist, built
+  !> the contact landed on alone, closed, and the body at the record's pose and twist, built
   !> and started (contact_model); refused (STATUS_DOMAIN) if the body had to
   !> move more than touching_gap_limit to touch.
   subroutine close_contact(flight, model, status)
@@ -286,9 +360,8 @@ contains
     type(status_t), intent(inout) :: status
     type(contact_system_t) :: system
     integer :: n
-    system = flight%system
+    system = closed_part(flight%system, flight%landed)
     n = flight%series%n
-    system%contacts(1)%start_open = .false.
     system%bodies(1)%position = flight%series%body_r(:, 1, n)
     system%bodies(1)%rotation = flight%series%body_rot(:, :, 1, n)
     system%bodies(1)%velocity = flight%series%body_v(:, 1, n)

@@ -17,7 +17,7 @@ module scenarios_contact
   use io_surface_config, only: surface_source_t, explain_surface_failure
   use geometry_surface_description, only: build_surface
   use scenarios_mechanism, only: run_mechanism
-  use contact_flight, only: flight_ode_t, build_flight, starts_open
+  use contact_flight, only: flight_ode_t, build_flight, starts_open, check_flight_system, carrying_contact, closed_part
   use contact_closing, only: flight_after_closed
   use io_xdmf, only: body_shape_t
   use base_grid, only: evenly_spaced
@@ -33,8 +33,9 @@ contains
     type(run_config_t), intent(in) :: run
     type(status_t), intent(inout) :: status
     type(solver_config_t) :: solver
-    type(contact_system_t) :: system
+    type(contact_system_t) :: system, carried
     type(contact_model_t), target :: model
+    logical :: flies
     integer :: f, ns
     real(wp), allocatable :: y0(:)
     type(surface_source_t), allocatable :: shape_sources(:)
@@ -53,11 +54,21 @@ contains
       if (.not. status%ok()) return
     end do
     if (solver%options%method == ODE_ADAMS) solver%options%convergence_coefficient = contact_convergence_coefficient
-    if (starts_open(system)) then
+    flies = starts_open(system) .or. any(system%contacts%may_open)
+    if (flies) call check_flight_system(system, status)
+    if (.not. status%ok()) then
+      call locate_failure(input, system, status)
+      call mark_input_failure(status)
+      return
+    end if
+    if (flies .and. carrying_contact(system) == 0) then
       call run_flight(input, run, solver, system, status)
       return
     end if
-    call build_contact_model(system, model, status)
+    ! a body with contacts to land on starts carried by its closed one alone
+    carried = system
+    if (flies) carried = closed_part(system, carrying_contact(system))
+    call build_contact_model(carried, model, status)
     f = model%ode%mechanism%f
     ns = model%ode%mechanism%ns
     ! the start is judged here too (run_mechanism does it again), so that
@@ -71,9 +82,9 @@ contains
       call mark_input_failure(status)
       return
     end if
-    if (status%ok()) call check_moves(input, system, model, status)
+    if (status%ok()) call check_moves(input, carried, model, status)
     if (.not. status%ok()) return
-    if (any(system%contacts%may_open)) then
+    if (flies) then
       call run_flight(input, run, solver, system, status, closed=model)
       return
     end if
@@ -82,10 +93,10 @@ contains
                        surface=system%shapes(first_shape(system))%surface, shapes=bounded_body_shapes(system))
   end subroutine run_contact
 
-  !> A flight: a body whose contact starts open flies until it lands
-  !> (contact_flight); given the `closed` model of a contact that may open
-  !> (may_open), the body starts closed and flies from its lift-off
-  !> (contact_closing).
+  !> A flight: a body whose contacts start open flies until it lands
+  !> (contact_flight); given the `closed` model of its contact that starts
+  !> closed (and may open, or has others to land on), the body starts closed
+  !> and flies from its lift-off (contact_closing).
   subroutine run_flight(input, run, solver, system, status, closed)
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run

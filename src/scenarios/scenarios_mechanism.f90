@@ -102,7 +102,7 @@ contains
     logical :: complete
     character(len=:), allocatable :: message, outcome
     character(len=8), allocatable :: units(:), dependent_units(:)
-    integer, allocatable :: in_flight(:)
+    integer, allocatable :: open(:, :)
 
     y0 = sys%initial_state(q0, qd0)
     call sys%check_start(y0, status)
@@ -129,7 +129,7 @@ contains
     select type (sys)
     class is (flight_ode_t)
       ! a flight may close its contact and go on closed (contact_closing)
-      call drive_flight(sys, y0, mechanism_driver_options(scenario, solver), result, run_status, in_flight)
+      call drive_flight(sys, y0, mechanism_driver_options(scenario, solver), result, run_status, open)
       units = sys%q_units
       dependent_units = sys%beta_units
     class default
@@ -139,7 +139,7 @@ contains
     case (DRIVE_END_TIME)
       outcome = 'the end of the simulated time'
       ! what happened on the way (a flight's closing)
-      if (allocated(in_flight) .and. len(sys%outcome) > 0) outcome = sys%outcome//'; '//outcome
+      if (allocated(open) .and. len(sys%outcome) > 0) outcome = sys%outcome//'; '//outcome
     case (DRIVE_EVENT_STOP)
       outcome = sys%outcome
     case default
@@ -153,7 +153,7 @@ contains
     select type (sys)
     class is (flight_ode_t)
       call write_impacts(file, sys, write_status)
-      call write_phases(file, sys, in_flight, write_status)
+      call write_phases(file, sys, open, write_status)
     end select
     ! the grid around the first contact's path (u, v are its first two coordinates)
     if (present(surface)) call write_surface_grid_around(file, surface, sys%series%q(1, :sys%series%n), &
@@ -203,51 +203,48 @@ contains
     losses = [(sum(impacts%energy_lost, mask=impacts%time <= sys%series%time(i)), i = 1, sys%series%n)]
   end function impact_losses
 
-  !> Per record whether the flight's contact was open (1, in flight) or
-  !> closed (0), /contact/contacts/<name>/open (docs/outputs.md).
-  subroutine write_phases(file, flight, in_flight, status)
+  !> Per record and contact of a flight whether it was open (1, the body in
+  !> flight or carried by another) or closed (0),
+  !> /contact/contacts/<name>/open (docs/outputs.md).
+  subroutine write_phases(file, flight, open, status)
     type(result_file_t), intent(inout) :: file
     type(flight_ode_t), intent(in) :: flight
-    integer, intent(in) :: in_flight(:)
+    integer, intent(in) :: open(:, :)
     type(status_t), intent(inout) :: status
+    integer :: c
     if (.not. status%ok() .or. flight%series%n == 0) return
-    call file%write_integers('/contact/contacts/'//flight%contact_name//'/open', in_flight(:flight%series%n), '1', &
-                             '1 while the contact is open (the body in flight, its gap in /contact/measurements), '// &
-                             '0 while closed', status)
+    do c = 1, size(open, 1)
+      call file%write_integers('/contact/contacts/'//flight%system%contacts(c)%name//'/open', &
+                               open(c, :flight%series%n), '1', '1 while the contact is open (its body in '// &
+                               'flight or on another contact, its gap in /contact/measurements), 0 while closed', &
+                               status)
+    end do
     call file%attach_scale('/contact/time', '/contact/contacts', status)   ! written after the series's
   end subroutine write_phases
 
   !> The impacts table of a flight (docs/outputs.md, /contact/impacts), if
-  !> it had any: one row per impact. Its place is the contact point of the
-  !> first record at the impact's time (the driver records every impact: the
-  !> state after it, the flight's at a closing): the landing point. A run
-  !> that was one flight only (it never closed: the records are the flight's
-  !> and hold no contact) takes it from the flight's own gap points.
+  !> it had any: one row per impact. Its place is the point of its contact
+  !> (drive_flight: the gap's point on shape_1 while open) at the first
+  !> record at the impact's time (the driver records every impact: the state
+  !> after it, the flight's at a closing): the landing point.
   subroutine write_impacts(file, flight, status)
     type(result_file_t), intent(inout) :: file
     type(flight_ode_t), intent(in) :: flight
     type(status_t), intent(inout) :: status
     real(wp), allocatable :: position(:, :)
-    integer :: c, j, i, k
+    integer :: j, i
     if (.not. status%ok()) return
     associate (impacts => flight%impacts, s => flight%series)
       if (size(impacts) == 0) return
-      c = findloc([(trim(s%contact_names(k)) == flight%contact_name, k = 1, s%nc)], .true., dim=1)
       allocate (position(3, size(impacts)))
       do j = 1, size(impacts)
         i = findloc(s%time(:s%n), impacts(j)%time, dim=1)
-        if (c == 0 .and. i > 0 .and. .not. allocated(flight%closed) .and. allocated(flight%gap_point)) then
-          if (i <= size(flight%gap_point, 2)) then
-            position(:, j) = flight%gap_point(:, i)
-            cycle
-          end if
-        end if
-        if (c == 0 .or. i == 0) then
+        if (i == 0) then
           call set_status(status, STATUS_INTERNAL, 'the impact at t = '//format_real(impacts(j)%time)// &
-                          ' s has no record of contact '''//flight%contact_name//''' at its time')
+                          ' s has no record at its time')
           return
         end if
-        position(:, j) = s%contact_r(:, c, i)
+        position(:, j) = flight%gap_point(:, impacts(j)%contact, i)
       end do
       call write_impacts_table(file, impacts, position, status)
     end associate
@@ -261,7 +258,7 @@ contains
     type(status_t), intent(inout) :: status
     character(len=*), parameter :: g = '/contact/impacts/'
     call file%write_vector(g//'time', impacts%time, 's', 'time of each impact', status)
-    call file%write_integers(g//'contact', spread(1, 1, size(impacts)), '1', &
+    call file%write_integers(g//'contact', impacts%contact, '1', &
                              'the impact''s contact: its place among the &contact groups (1: the first)', status)
     call file%write_vector(g//'normal_speed_before', impacts%normal_speed_before, 'm/s', &
                            'separation speed of the contact points before (< 0: approaching)', status)
@@ -492,13 +489,22 @@ contains
     type(mechanism_series_t), intent(in) :: s
     type(mechanism_t), intent(in) :: m
     real(wp) :: weight, slip(s%n), friction(s%n), mass, com(3), inertia(3, 3), gravity(3)
-    integer :: k, i, e
+    integer :: k, i, e, j, frame_b
     character(len=:), allocatable :: c
     do k = 1, s%nc
       c = trim(s%contact_names(k))
+      ! the series' contacts may be more than the mechanism's (a flight's
+      ! phases: the last closed contact's); in a series of one body that body
+      frame_b = 0
+      j = findloc([(trim(m%contacts(j)%name) == c, j = 1, size(m%contacts))], .true., dim=1)
+      if (j > 0) then
+        frame_b = m%contacts(j)%frame_b
+      else if (s%nb == 1) then
+        frame_b = s%body_frame(1)
+      end if
       weight = 0
       do e = 1, m%n_elements
-        if (m%elements(e)%e%mass_frame() /= m%contacts(k)%frame_b) cycle
+        if (m%elements(e)%e%mass_frame() /= frame_b) cycle
         call m%elements(e)%e%mass_properties(mass, com, inertia, gravity)
         weight = mass*norm2(gravity)
       end do
@@ -510,7 +516,7 @@ contains
                              maxval(s%normal(k, :s%n)), 'N')
       if (weight > 0) call summary%add_range(c//'_normal_force_weights', c//' normal force in weights', &
                                              minval(s%normal(k, :s%n))/weight, maxval(s%normal(k, :s%n))/weight, &
-                                             '1', 'of '//trim(body_name(s, m%contacts(k)%frame_b))//'''s weight')
+                                             '1', 'of '//trim(body_name(s, frame_b))//'''s weight')
       call summary%add(c//'_friction_force_max', c//' friction force max', maxval(friction), 'N')
     end do
   end subroutine add_contact_terms

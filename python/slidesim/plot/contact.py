@@ -5,7 +5,8 @@ egg against Moffatt-Shimomura see slidesim-plot --kind egg.)
 
 A run with flights (a contact that can open, `start = 'open'`) also shows
 the gap of each such contact; on every time plot its flight phases (the
-records where /contact/contacts/<c>/open is 1) are shaded, and its impacts
+records where /contact/contacts/<c>/open is 1 for every such contact) are
+shaded, and its impacts
 (/contact/impacts) are marked where they happened (3-D), when (vertical
 lines) and how fast the body approached (the gap plot's labels).
 
@@ -36,9 +37,14 @@ def open_intervals(t, is_open):
 
 
 def flights(r, g, t, contacts):
-    """{contact: its open intervals} for the contacts that can open."""
-    return {name: open_intervals(t, r[f"{g}/contacts/{name}/open"].values != 0)
-            for name in contacts if f"{g}/contacts/{name}/open" in r}
+    """{the contacts that can open: the flight's intervals}, none without
+    them. The flights are the records where all of them are open: the body
+    touches none (several are the surfaces one body may land on)."""
+    names = [name for name in contacts if f"{g}/contacts/{name}/open" in r]
+    if not names:
+        return {}
+    is_open = np.all([r[f"{g}/contacts/{name}/open"].values != 0 for name in names], axis=0)
+    return {", ".join(names): open_intervals(t, is_open)}
 
 
 def impacts(r, g):
@@ -67,8 +73,10 @@ def mark_impact_times(ax, table):
 def gaps(ax, r, g, t, phases, table, contacts):
     """The gap of each contact that can open over time, its impacts labelled
     with the approach speed."""
-    for name in phases:
+    for name in contacts:
         path = f"{g}/measurements/{name}.gap"
+        if f"{g}/contacts/{name}/open" not in r:
+            continue
         if path in r:
             ax.plot(t, r[path].values, lw=1, label=f"{name} gap")
     shade_flights(ax, phases)

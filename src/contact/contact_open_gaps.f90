@@ -1,0 +1,331 @@
+!> The gaps of a body's open contacts (issue 25): one body may have several
+!> contacts with the ground, the surfaces it may touch (a dome and the floor
+!> it lands on, a wall and a floor). At most one carries it closed; the gap of
+!> every other (contact_gap: the signed distance of its two shapes along their
+!> common normal, through the foot-point solver) is a root function. In
+!> flight (contact_flight) every contact is open and a gap falling through
+!> zero is a landing on that contact; while one contact carries the body
+!> (contact_closing) a gap of another falling to zero ends the run (two closed
+!> contacts on one body are not built).
+!>
+!> A contact that starts touching (a lift-off from it) starts with its gap 0,
+!> its rate 0 and where the normal force fell to zero its second derivative
+!> 0: the gap grows as s^3, below its rounding (~1e-16 m) for the first ~1e-5
+!> s, where its sign is noise (CVODE saw roots there, and a root at and very
+!> near another: CV_ILL_INPUT). So until the gap has opened by opening_gap
+!> its root is opening_gap - |gap|: nonzero at the start, it falls to zero
+!> where the gap has clearly opened (from there the gap is watched) or where
+!> the body went back into the surface by opening_gap without opening (a
+!> landing there).
+module contact_open_gaps
+  use base_kinds, only: wp
+  use base_text, only: format_short
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
+  use base_vector, only: cross
+  use numerics_event_driver, only: EVENT_STOP
+  use kinetostatics_mechanism, only: mechanism_workspace_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use contact_model, only: contact_system_t
+  use contact_gap, only: contact_gap_t, new_contact_gap
+  implicit none (type, external)
+  private
+  public :: open_gaps_t, start_open_gaps, touching_gap_limit, opening_gap, carried_ode_t, carry
+
+
+  real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+  real(wp), parameter :: ground_origin(3) = 0
+  !> m: how far a touching start (a lift-off, or a closed start that may
+  !> open) may overlap: the gap left by the contact's closure and the lift-off
+  !> root, ~1e-14 m; beyond it the pose is not a touching one and it fails.
+  !> Also the most a closing may move the body to touch (contact_closing).
+  real(wp), parameter :: touching_gap_limit = 1e-9_wp
+  !> m: how far a contact that starts touching must open before its landing
+  !> is watched (or go back in to land): far above the gap's rounding, and a
+  !> tenth of touching_gap_limit, so that such a landing is within the
+  !> closing's reach.
+  real(wp), parameter :: opening_gap = 1e-10_wp
+
+  !> The gaps of the body's contacts, in the order of the description's
+  !> contacts (all between the ground and the body).
+  type :: open_gaps_t
+    type(contact_gap_t), allocatable :: gap(:)
+    real(wp), allocatable :: last(:)   ! m, each gap's last value (kept where an update fails: a trial state)
+    integer :: closed = 0              ! the contact that carries the body (not watched; 0: none)
+    integer :: touching = 0            ! the contact that started touching, not yet opened (0: none)
+  contains
+    procedure :: update => gaps_update
+    procedure :: roots => gaps_roots
+    procedure :: opened => gaps_opened
+  end type open_gaps_t
+
+  !> A closed contact's model (contact_model) carrying the body while its
+  !> other contacts are open: their gaps are roots after the model's own; one
+  !> falling to zero ends the run (the body touches a second surface while
+  !> carried: not built). The body's pose for the gaps comes from a second
+  !> workspace of the model (`shadow_work`, a copy of the model's, taken again
+  !> after each chart change so that y means the same there), so that the
+  !> model's own evaluations and their caches (its workspace) are left as
+  !> they are. Per record: each contact's gap, its point
+  !> on shape_1 and the body's nearest point's velocity along the surface (the
+  !> carrying contact's 0).
+  type, extends(mechanism_ode_t) :: carried_ode_t
+    type(open_gaps_t) :: gaps
+    type(contact_system_t) :: system
+    integer :: body_frame = 0
+    type(mechanism_workspace_t) :: shadow_work
+    integer :: shadow_charts = 0   ! the model's chart_changes when shadow_work was copied
+    real(wp), allocatable :: gap_value(:, :)                       ! contacts x records, m
+    real(wp), allocatable :: gap_point(:, :, :), gap_velocity(:, :, :)   ! 3 x contacts x records
+  contains
+    procedure :: root_count => carried_root_count
+    procedure :: roots => carried_roots
+    procedure :: handle_event => carried_handle_event
+    procedure :: record => carried_record
+  end type carried_ode_t
+
+contains
+
+  !> The gaps at the body's pose (rotation, position: its frame, world), each
+  !> from the contact search, on its contact's branch (the normals against
+  !> each other) and open (> 0); the contact `touching` may touch (its gap
+  !> not below -touching_gap_limit); the contact `closed` carries the body
+  !> and is not watched. At the run's start a gap that is not open is the
+  !> input's; at a switch (restarting) the motion's.
+  subroutine start_open_gaps(gaps, system, rotation, position, status, touching, closed, restarting)
+    type(open_gaps_t), intent(out) :: gaps
+    type(contact_system_t), intent(in) :: system
+    real(wp), intent(in) :: rotation(3, 3), position(3)
+    type(status_t), intent(inout) :: status
+    integer, intent(in) :: touching, closed
+    logical, intent(in) :: restarting   ! a switch during the run (not the run's start, the input's)
+    integer :: c, s1, s2, k
+    gaps%touching = touching
+    gaps%closed = closed
+    allocate (gaps%gap(size(system%contacts)), gaps%last(size(system%contacts)))
+    gaps%last = 0
+    do c = 1, size(system%contacts)
+      if (c == closed) cycle
+      associate (contact => system%contacts(c), gap => gaps%gap(c))
+        s1 = findloc([(system%shapes(k)%name == contact%shape_1, k = 1, size(system%shapes))], .true., dim=1)
+        s2 = findloc([(system%shapes(k)%name == contact%shape_2, k = 1, size(system%shapes))], .true., dim=1)
+        gap = new_contact_gap(system%shapes(s1)%surface, contact%side_1, system%shapes(s2)%surface, contact%side_2, &
+                              [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp])
+        call gap%start_from_search(identity, ground_origin, rotation, position, status)
+        if (.not. status%ok()) then
+          status%message = 'contact '''//contact%name//''': the gap between '''//contact%shape_1//''' and '''// &
+                           contact%shape_2//''' at the start: '//status%text()
+          return
+        end if
+        if (.not. gap%normals_cosine < 0) then
+          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//contact%name//''': at the start the '// &
+            'normals of shape_1 and shape_2 point the same way at their nearest points (side_1, side_2 as for a '// &
+            'closed contact: each normal out of its body towards the other); check side_1 and side_2')
+        else if (c == touching) then
+          if (.not. gap%gap >= -touching_gap_limit) call set_status(status, STATUS_DOMAIN, 'contact '''// &
+            contact%name//''': body '''//contact%body_2//''' overlaps shape '''//contact%shape_1//''' by '// &
+            format_short(-gap%gap)//' m where it should touch (more than '//format_short(touching_gap_limit)// &
+            ' m)')
+        else if (.not. gap%gap > 0 .and. .not. restarting) then
+          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//contact%name//''': start = ''open'' but '// &
+            'body '''//contact%body_2//''' touches or overlaps shape '''//contact%shape_1//''' at its start '// &
+            'position (gap '//format_short(gap%gap)//' m); an open contact starts with its shapes apart (raise '// &
+            '&body position, or start closed)')
+        else if (.not. gap%gap > 0) then
+          call set_status(status, STATUS_DOMAIN, 'contact '''//contact%name//''': body '''//contact%body_2// &
+            ''' touches or overlaps shape '''//contact%shape_1//''' (gap '//format_short(gap%gap)//' m) where '// &
+            'it leaves another contact: two contacts of one body touching at once are not built')
+        end if
+        if (.not. status%ok()) return
+        gaps%last(c) = gap%gap
+      end associate
+    end do
+  end subroutine start_open_gaps
+
+  !> Every watched gap at the body's pose (rotation, position: world). A
+  !> failed update leaves the status failed and the gap's last value.
+  subroutine gaps_update(self, rotation, position, status)
+    class(open_gaps_t), intent(inout) :: self
+    real(wp), intent(in) :: rotation(3, 3), position(3)
+    type(status_t), intent(inout) :: status
+    integer :: c
+    do c = 1, size(self%gap)
+      if (c == self%closed) cycle
+      call self%gap(c)%update(identity, ground_origin, rotation, position, status)
+      if (.not. status%ok()) return
+      self%last(c) = self%gap(c)%gap
+    end do
+  end subroutine gaps_update
+
+  !> The root of each contact at the body's pose: its gap (the last where it
+  !> cannot be found: a trial state the integrator does not keep); the
+  !> touching contact's opening_gap - |gap|; the closed one's 1 (never zero).
+  subroutine gaps_roots(self, rotation, position, located, g)
+    class(open_gaps_t), intent(inout) :: self
+    real(wp), intent(in) :: rotation(3, 3), position(3)
+    logical, intent(in) :: located   ! the body is at the pose (else the last values)
+    real(wp), intent(out) :: g(:)
+    type(status_t) :: status
+    integer :: c
+    do c = 1, size(self%gap)
+      if (c == self%closed) cycle
+      if (located) then
+        call self%gap(c)%update(identity, ground_origin, rotation, position, status)
+        if (status%ok()) self%last(c) = self%gap(c)%gap
+      end if
+    end do
+    g = self%last
+    if (self%closed > 0) g(self%closed) = 1
+    if (self%touching > 0) g(self%touching) = opening_gap - abs(g(self%touching))
+  end subroutine gaps_roots
+
+  !> At an event where the touching contact's root fired (the gaps updated):
+  !> whether it opened (its landing is watched from now on: the gap,
+  !> opening_gap there), else it went back in (a landing on it).
+  logical function gaps_opened(self) result(opened)
+    class(open_gaps_t), intent(inout) :: self
+    opened = self%gap(self%touching)%gap > 0
+    self%touching = 0
+  end function gaps_opened
+
+  !> The closed model `model` (its body on frame body_frame) carried by
+  !> contact `closed` of `system`, the gaps of the others watched.
+  subroutine carry(model, body_frame, system, closed, carried, status)
+    type(mechanism_ode_t), intent(in) :: model
+    integer, intent(in) :: body_frame, closed
+    type(contact_system_t), intent(in) :: system
+    type(carried_ode_t), intent(out) :: carried
+    type(status_t), intent(inout) :: status
+    carried%mechanism_ode_t = model
+    carried%system = system
+    carried%body_frame = body_frame
+    carried%shadow_work = carried%work
+    carried%shadow_charts = carried%chart_changes
+    allocate (carried%gap_value(size(system%contacts), 0), carried%gap_point(3, size(system%contacts), 0), &
+              carried%gap_velocity(3, size(system%contacts), 0))
+    associate (body => carried%work%frames(body_frame))
+      call start_open_gaps(carried%gaps, system, body%rot, body%r, status, 0, closed, .true.)
+    end associate
+  end subroutine carry
+
+  integer function carried_root_count(self) result(n)
+    class(carried_ode_t), intent(in) :: self
+    n = self%mechanism_ode_t%root_count() + size(self%gaps%gap) - 1
+  end function carried_root_count
+
+  !> The model's roots, then the gap of each contact but the carrying one.
+  subroutine carried_roots(self, t, y, g)
+    class(carried_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(out) :: g(:)
+    real(wp) :: all(size(self%gaps%gap))
+    type(status_t) :: status
+    integer :: n
+    n = self%mechanism_ode_t%root_count()
+    call self%mechanism_ode_t%roots(t, y, g(1:n))
+    if (n == size(g)) return
+    call follow_charts(self)
+    call self%mechanism%set_positions(self%shadow_work, y(1:self%mechanism%f), status)
+    associate (body => self%shadow_work%frames(self%body_frame))
+      call self%gaps%roots(body%rot, body%r, status%ok(), all)
+    end associate
+    call drop_closed(self, all, g(n + 1:))
+  end subroutine carried_roots
+
+  !> The shadow workspace on the model's charts: copied again after the
+  !> model changed a chart (its coordinates re-based: y means another pose
+  !> on the old chart).
+  subroutine follow_charts(self)
+    class(carried_ode_t), intent(inout) :: self
+    if (self%shadow_charts == self%chart_changes) return
+    self%shadow_work = self%work
+    self%shadow_charts = self%chart_changes
+  end subroutine follow_charts
+
+  !> The values of every contact but the carrying one, in order.
+  pure subroutine drop_closed(self, all, watched)
+    class(carried_ode_t), intent(in) :: self
+    real(wp), intent(in) :: all(:)
+    real(wp), intent(out) :: watched(:)
+    integer :: c, j
+    j = 0
+    do c = 1, size(all)
+      if (c == self%gaps%closed) cycle
+      j = j + 1
+      watched(j) = all(c)
+    end do
+  end subroutine drop_closed
+
+  !> The model's events, then a watched gap falling through zero: the body
+  !> touches a second surface while carried; the run ends there.
+  subroutine carried_handle_event(self, t, y, fired, action, status)
+    class(carried_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    real(wp), intent(inout) :: y(:)
+    integer, intent(in) :: fired(:)
+    integer, intent(out) :: action
+    type(status_t), intent(inout) :: status
+    integer :: n, c, j
+    character(len=:), allocatable :: text
+    n = self%mechanism_ode_t%root_count()
+    call self%mechanism_ode_t%handle_event(t, y, fired(1:n), action, status)
+    if (.not. status%ok() .or. all(fired(n + 1:) /= -1)) return
+    j = n
+    do c = 1, size(self%gaps%gap)
+      if (c == self%gaps%closed) cycle
+      j = j + 1
+      if (fired(j) /= -1) cycle
+      text = 'contact '''//self%system%contacts(c)%name//''': body '''//self%system%contacts(c)%body_2// &
+             ''' touches shape '''//self%system%contacts(c)%shape_1//''' at t = '//format_short(t)// &
+             ' s while contact '''//self%system%contacts(self%gaps%closed)%name//''' carries it (two closed '// &
+             'contacts on one body are not built): the run ends here'
+      if (len(self%outcome) > 0) text = '; '//text
+      self%outcome = self%outcome//text
+      action = max(action, EVENT_STOP)
+    end do
+  end subroutine carried_handle_event
+
+  !> The model's record, then each watched contact's gap, point and slip.
+  subroutine carried_record(self, t, y, kind, status)
+    class(carried_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    integer, intent(in) :: kind
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: grown(:, :, :), grown_value(:, :)
+    real(wp) :: v(3)
+    integer :: n, c, nc, f
+    call self%mechanism_ode_t%record(t, y, kind, status)
+    if (.not. status%ok()) return
+    n = self%series%n
+    nc = size(self%gaps%gap)
+    if (size(self%gap_value, 2) < n) then
+      allocate (grown_value(nc, 2*n), source=0.0_wp)
+      grown_value(:, :size(self%gap_value, 2)) = self%gap_value
+      call move_alloc(grown_value, self%gap_value)
+      allocate (grown(3, nc, 2*n), source=0.0_wp)
+      grown(:, :, :size(self%gap_point, 3)) = self%gap_point
+      call move_alloc(grown, self%gap_point)
+      allocate (grown(3, nc, 2*n), source=0.0_wp)
+      grown(:, :, :size(self%gap_velocity, 3)) = self%gap_velocity
+      call move_alloc(grown, self%gap_velocity)
+    end if
+    if (nc == 1) return
+    f = self%mechanism%f
+    call follow_charts(self)
+    call self%mechanism%set_positions(self%shadow_work, y(1:f), status)
+    if (.not. status%ok()) return
+    call self%mechanism%set_velocities(self%shadow_work, y(f + 1:f + self%mechanism%ns))
+    associate (body => self%shadow_work%frames(self%body_frame))
+      call self%gaps%update(body%rot, body%r, status)
+      if (.not. status%ok()) return
+      do c = 1, nc
+        if (c == self%gaps%closed) cycle
+        associate (gap => self%gaps%gap(c))
+          self%gap_value(c, n) = gap%gap
+          self%gap_point(:, c, n) = gap%point_1
+          v = body%v + cross(body%omega, gap%point_2 - body%r)
+          self%gap_velocity(:, c, n) = v - dot_product(v, gap%normal)*gap%normal
+        end associate
+      end do
+    end associate
+  end subroutine carried_record
+end module contact_open_gaps
