@@ -126,10 +126,10 @@ module io_declarations_multibody
     declaration_t(groups='sled', name='drag_area', unit='m^2', default='0', low=0.0_wp, high=1e3_wp, &
       meaning='C_d A of the air''s quadratic drag on the bar at its centre of mass (docs/contact.md, Air drag; '// &
       '0: none)'), &
-    declaration_t(groups='sled contact_model', name='air_density', unit='kg/m^3', default='1.2041', low=0.0_wp, &
-      high=1e3_wp, meaning='density of the air whose drag the bodies with a drag_area feel (default: dry air '// &
-      'at 20 C, 101.325 kPa)'), &
-    declaration_t(groups='sled contact_model', name='wind', shape='3', unit='m/s', default='0, 0, 0', &
+    declaration_t(groups='sled contact_model point_mass', name='air_density', unit='kg/m^3', default='1.2041', &
+      low=0.0_wp, high=1e3_wp, meaning='density of the air whose drag the bodies (the mass) with a drag_area '// &
+      'feel (default: dry air at 20 C, 101.325 kPa)'), &
+    declaration_t(groups='sled contact_model point_mass', name='wind', shape='3', unit='m/s', default='0, 0, 0', &
       low=-1e3_wp, high=1e3_wp, meaning='velocity of that air (world): the drag acts on a body''s velocity '// &
       'relative to it'), &
     ! ---- the contact scenario: &contact_model, &body, &contact (+ the parameters of the friction law)
@@ -155,9 +155,10 @@ module io_declarations_multibody
       high=1e4_wp, meaning='start velocity of the body frame''s origin (world)'), &
     declaration_t(groups='body', name='angular_velocity', shape='3', unit='rad/s', default='0, 0, 0', &
       low=-1e5_wp, high=1e5_wp, meaning='start angular velocity (world)'), &
-    declaration_t(groups='body', name='drag_area', unit='m^2', default='0', low=0.0_wp, high=1e3_wp, &
+    declaration_t(groups='body point_mass', name='drag_area', unit='m^2', default='0', low=0.0_wp, high=1e3_wp, &
       meaning='C_d A, drag coefficient times reference area: the air''s quadratic drag at the centre of mass '// &
-      'against its velocity relative to the air, in flight and in contact (docs/contact.md, Air drag; 0: none)'), &
+      'against its velocity relative to the air (a body: in flight and in contact; docs/contact.md, Air drag; '// &
+      '0: none)'), &
     declaration_t(groups='contact', name='name', kind=VALUE_WORDS, default='none', &
       meaning='the contact''s name, prefix of its coordinates and outputs (required, unique)'), &
     declaration_t(groups='contact', name='body_1', kind=VALUE_WORDS, default='''ground''', &
@@ -182,11 +183,12 @@ module io_declarations_multibody
       'five conditions (3.86)'), &
     declaration_t(groups='contact', name='start', kind=VALUE_WORDS, default='''closed''', choices='closed open', &
       meaning='closed: body_2 is moved onto shape_1 and starts touching; open: it starts where &body puts it, '// &
-      'apart, in free flight until it lands (docs/contact.md, "Flight")'), &
+      'apart, in free flight until it lands, or a surface it may land on while another contact carries it '// &
+      '(docs/contact.md, "Flight")'), &
     declaration_t(groups='contact', name='may_open', kind=VALUE_LOGICAL, default='.false.', &
       meaning='a lift-off (the normal force falling to zero) opens the contact and the body flies on, landing '// &
-      'again with restitution, instead of ending the run; one contact between the ground and one body '// &
-      '(docs/contact.md, "Flight")'), &
+      'again with restitution, instead of ending the run; the contacts of one body with the ground, at most '// &
+      'one closed at a time (docs/contact.md, "Flight")'), &
     declaration_t(groups='contact', name='restitution', unit='1', default='none', &
       low=0.0_wp, high=1.0_wp, meaning='energetic coefficient of restitution of the landings (start = ''open'' '// &
       'or may_open): the body bounces (docs/contact.md, "Impact law"); without it the run ends at the landing'), &

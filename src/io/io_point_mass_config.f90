@@ -1,5 +1,6 @@
-!> &point_mass: the mass, where it starts on the surface, gravity and friction,
-!> read into its description (kinetostatics_point_mass), which the
+!> &point_mass: the mass, where it starts on the surface, gravity, friction
+!> and the air's drag (drag_area, air_density, wind: the declarations of the
+!> contact scenario's &body and &contact_model), read into its description (kinetostatics_point_mass), which the
 !> kinetostatics layer builds (build_point_mass_model).
 !> The friction is any friction law of the core's registry
 !> (kinetostatics_force_law_factory), read by its declarations; the law's mu
@@ -39,6 +40,11 @@ contains
     call r%get('sigma', config%sigma, status)
     call r%get('alpha_u', config%alpha_u, status)
     call r%get('alpha_v', config%alpha_v, status)
+    call r%get('drag_area', config%drag_area, status)
+    call r%get('air_density', config%air_density, status)
+    call r%get('wind', config%wind, status)
+    if (status%ok() .and. config%drag_area == 0) call r%refuse_given([character(len=11) :: 'air_density', &
+      'wind'], 'the air is for the mass''s drag: give drag_area (C_d A) too', status)
     if (.not. status%ok()) return
     call read_friction_law(r, trim(friction), config%friction, status, rename=point_mass_renamed)
     if (.not. status%ok()) return

@@ -37,7 +37,7 @@ module kinetostatics_force_laws
     force_at, set_interaction
   implicit none (type, external)
   private
-  public :: coulomb_friction_t, viscous_friction_t, spring_damper_t, constant_load_t, air_drag_t
+  public :: coulomb_friction_t, viscous_friction_t, spring_damper_t, constant_load_t, air_drag_t, air_drag_force
   public :: new_coulomb_friction, new_normal_viscous_friction, new_viscous_friction, new_spring_damper, &
     new_constant_load, new_air_drag
   public :: coulomb_kind, viscous_kind, viscous_weight_kind, viscous_normal_kind
@@ -354,14 +354,23 @@ contains
     type(scalar_state_t), intent(in) :: scalars(:)
     type(contact_state_t), intent(in) :: contacts(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: arm(3), w(3), f(3)
+    real(wp) :: arm(3), f(3)
     associate (unused_t => t, unused_s => scalars, unused_c => contacts, unused_st => status)
     end associate
     associate (body => frames(self%frame))
       arm = matmul(body%rot, self%centre)
-      w = body%v + cross(body%omega, arm) - self%wind
-      f = -0.5_wp*self%density*self%drag_area*norm2(w)*w
+      f = air_drag_force(body%v + cross(body%omega, arm), self%drag_area, self%density, self%wind)
       self%loads(1) = force_at(self%frame, arm, f)
     end associate
   end subroutine air_drag_evaluate
+
+  !> The air's drag F = -1/2 rho C_d A |w| w on a body moving at `velocity`
+  !> (m/s, world), w = velocity - wind its velocity relative to the air: the
+  !> one law of air_drag_t and of the point mass (kinetostatics_point_mass).
+  pure function air_drag_force(velocity, drag_area, density, wind) result(f)
+    real(wp), intent(in) :: velocity(3), drag_area, density, wind(3)
+    real(wp) :: f(3), w(3)
+    w = velocity - wind
+    f = -0.5_wp*density*drag_area*norm2(w)*w
+  end function air_drag_force
 end module kinetostatics_force_laws

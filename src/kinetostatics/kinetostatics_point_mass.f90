@@ -1,12 +1,16 @@
 !> A point mass sliding on a surface under gravity, in surface coordinates.
 !>
 !> State y = [u, v, u', v', W] with W the work done on the mass by friction (J,
-!> negative), integrated alongside so that energy + |W| can be checked. With
+!> negative), integrated alongside so that energy + |W| can be checked; with
+!> the air's drag (drag_area > 0) one more, W_d, the drag's work. With
 !> w = r_u u' + r_v v' the velocity and h = r_uu u'^2 + 2 r_uv u'v' + r_vv v'^2,
-!> Newton's law m (r_u u'' + r_v v'' + h) = m g + N n + F_friction projected on
-!> r_u and r_v gives u'', v''; projected on the normal n it gives the normal force
-!> N = m n.(h - g) (as thesis eq. 4.12 does for the water). Friction is tangential,
-!> so N does not depend on it and Coulomb friction stays explicit. The friction
+!> Newton's law m (r_u u'' + r_v v'' + h) = m g + N n + F_friction + F_drag
+!> projected on r_u and r_v gives u'', v''; projected on the normal n it gives
+!> the normal force N = m n.(h - g) - n.F_drag (as thesis eq. 4.12 does for
+!> the water). Friction is tangential, so N does not depend on it and Coulomb
+!> friction stays explicit. The drag is the contact scenario's law
+!> (kinetostatics_force_laws air_drag_force): F_drag = -1/2 rho C_d A |w_r| w_r,
+!> w_r = w - wind the velocity relative to the air. The friction
 !> is any friction law of the core (kinetostatics_force_law friction_law_t,
 !> built by kinetostatics_force_law_factory): its slip_force at the slip w and
 !> the normal force N. A law with a regularization_speed that the description
@@ -33,6 +37,8 @@ module kinetostatics_point_mass
   use base_spec, only: spec_t
   use kinetostatics_force_law, only: force_law_t, friction_law_t, law_place_t, force_law_kind_t
   use kinetostatics_force_law_factory, only: force_law_from_spec, force_law_kinds, force_law_kind_index
+  use kinetostatics_force_laws, only: air_drag_force
+  use base_constants, only: dry_air_density
   implicit none (type, external)
   private
   public :: point_mass_t, point_mass_state_t, point_mass_series_t, point_mass_description_t, build_point_mass_model
@@ -46,12 +52,13 @@ module kinetostatics_point_mass
   !> Time series of a run: one entry per record (start, outputs, events).
   !> The records of a run; grown as it goes (base_series).
   !> Numbers of one record of point_mass_series_t (its arrays), for the memory bound
-  integer, parameter :: values_per_record = 31
+  integer, parameter :: values_per_record = 35
 
   type, extends(growable_series_t) :: point_mass_series_t
     real(wp), allocatable :: time(:), u(:), v(:), du(:), dv(:), speed(:), normal_force(:), &
-      kinetic(:), potential(:), friction_work(:)
-    real(wp), allocatable :: position(:, :), velocity(:, :), acceleration(:, :), friction_force(:, :)
+      kinetic(:), potential(:), friction_work(:), drag_work(:)
+    real(wp), allocatable :: position(:, :), velocity(:, :), acceleration(:, :), friction_force(:, :), &
+      drag_force(:, :)
     real(wp), allocatable :: frame(:, :, :)
   end type point_mass_series_t
 
@@ -60,6 +67,9 @@ module kinetostatics_point_mass
     real(wp) :: mass = 1                 ! kg
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]   ! m/s^2
     class(friction_law_t), allocatable :: friction   ! none: frictionless
+    real(wp) :: drag_area = 0                  ! m^2, C_d A of the air's drag (0: none)
+    real(wp) :: air_density = dry_air_density  ! kg/m^3
+    real(wp) :: wind(3) = 0                    ! m/s, the air's velocity (world)
     real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0   ! Darboux frame parameters (3.38, 3.41)
     type(point_mass_series_t) :: series
     character(len=:), allocatable :: outcome   ! why the run ended, set by the stopping event
@@ -82,6 +92,9 @@ module kinetostatics_point_mass
     real(wp) :: du0 = 0, dv0 = 0                   ! their rates at t = 0 (1/s)
     real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]   ! m/s^2
     type(spec_t) :: friction                       ! a force law kind and its parameters (no kind: none)
+    real(wp) :: drag_area = 0                      ! m^2, C_d A of the air's drag (0: none)
+    real(wp) :: air_density = dry_air_density      ! kg/m^3
+    real(wp) :: wind(3) = 0                        ! m/s, the air's velocity (world)
     real(wp) :: sigma = 1, alpha_u = 1, alpha_v = 0
   end type point_mass_description_t
 
@@ -91,6 +104,7 @@ module kinetostatics_point_mass
     real(wp) :: speed                                       ! m/s
     real(wp) :: normal_force                                ! N, along the frame's z
     real(wp) :: friction_force(3)                           ! N
+    real(wp) :: drag_force(3)                               ! N, the air's
     real(wp) :: kinetic_energy, potential_energy            ! J (potential -m g.r)
     real(wp) :: frame(3, 3)                                 ! Darboux frame, columns x, y, z
   end type point_mass_state_t
@@ -100,19 +114,24 @@ contains
   !> The model of `d` on `surface` (copied into it) and its start y0. The
   !> friction is built from its spec (kinetostatics_force_law_factory) and
   !> must be a friction law (of the slip and the normal force); the start
-  !> must lie in the surface's domain.
+  !> must lie in the surface's domain. y0 = [u0, v0, du0, dv0, 0] and with
+  !> the air's drag one more 0 (its work).
   subroutine build_point_mass_model(d, surface, model, y0, status)
     type(point_mass_description_t), intent(in) :: d
     class(surface_t), intent(in) :: surface
     type(point_mass_t), intent(out) :: model
-    real(wp), intent(out) :: y0(5)
+    real(wp), allocatable, intent(out) :: y0(:)
     type(status_t), intent(inout) :: status
     class(force_law_t), allocatable :: law
     y0 = [d%u0, d%v0, d%du0, d%dv0, 0.0_wp]
+    if (d%drag_area > 0) y0 = [y0, 0.0_wp]
     if (.not. status%ok()) return
     allocate (model%surface, source=surface)
     model%mass = d%mass
     model%gravity = d%gravity
+    model%drag_area = d%drag_area
+    model%air_density = d%air_density
+    model%wind = d%wind
     model%sigma = d%sigma
     model%alpha_u = d%alpha_u
     model%alpha_v = d%alpha_v
@@ -152,11 +171,11 @@ contains
   end function point_mass_friction
 
   !> The accelerations and forces at one state; the one place the dynamics live.
-  pure subroutine dynamics(self, y, p, normal, udd, vdd, normal_force, friction, status)
+  pure subroutine dynamics(self, y, p, normal, udd, vdd, normal_force, friction, drag, status)
     class(point_mass_t), intent(in) :: self
     real(wp), intent(in) :: y(:)
     type(surface_point_t), intent(out) :: p
-    real(wp), intent(out) :: normal(3), udd, vdd, normal_force, friction(3)
+    real(wp), intent(out) :: normal(3), udd, vdd, normal_force, friction(3), drag(3)
     type(status_t), intent(inout) :: status
     real(wp) :: w(3), h(3), rhs(3), e, f, g, det, bu, bv, n(3), n_norm
     type(darboux_frame_t) :: frame
@@ -184,7 +203,10 @@ contains
 
     w = p%ru*y(3) + p%rv*y(4)
     h = p%ruu*y(3)**2 + 2*p%ruv*y(3)*y(4) + p%rvv*y(4)**2
+    drag = 0
+    if (self%drag_area > 0) drag = air_drag_force(w, self%drag_area, self%air_density, self%wind)
     normal_force = self%mass*dot_product(normal, h - self%gravity)
+    if (self%drag_area > 0) normal_force = normal_force - dot_product(normal, drag)
 
     if (allocated(self%friction)) then
       friction = self%friction%slip_force(w, normal_force)
@@ -193,6 +215,7 @@ contains
     end if
 
     rhs = self%gravity + friction/self%mass - h
+    if (self%drag_area > 0) rhs = rhs + drag/self%mass
     e = dot_product(p%ru, p%ru)
     f = dot_product(p%ru, p%rv)
     g = dot_product(p%rv, p%rv)
@@ -216,11 +239,11 @@ contains
     real(wp), intent(out) :: ydot(:)
     type(status_t), intent(inout) :: status
     type(surface_point_t) :: p
-    real(wp) :: normal(3), udd, vdd, normal_force, friction(3)
+    real(wp) :: normal(3), udd, vdd, normal_force, friction(3), drag(3)
 
     associate (unused => t)   ! autonomous: no explicit time dependence
     end associate
-    call dynamics(self, y, p, normal, udd, vdd, normal_force, friction, status)
+    call dynamics(self, y, p, normal, udd, vdd, normal_force, friction, drag, status)
     if (.not. status%ok()) then
       ydot = 0
       return
@@ -230,6 +253,7 @@ contains
     ydot(3) = udd
     ydot(4) = vdd
     ydot(5) = dot_product(friction, p%ru*y(3) + p%rv*y(4))   ! friction power, W
+    if (size(ydot) > 5) ydot(6) = dot_product(drag, p%ru*y(3) + p%rv*y(4))   ! the drag's power, W
   end subroutine point_mass_rhs
 
   !> Four root functions: the distances to the edges u_min, u_max, v_min, v_max
@@ -311,9 +335,9 @@ contains
     integer, intent(in) :: n
     call resize(s%time, n); call resize(s%u, n); call resize(s%v, n); call resize(s%du, n)
     call resize(s%dv, n); call resize(s%speed, n); call resize(s%normal_force, n); call resize(s%kinetic, n)
-    call resize(s%potential, n); call resize(s%friction_work, n)
+    call resize(s%potential, n); call resize(s%friction_work, n); call resize(s%drag_work, n)
     call resize(s%position, 3, n); call resize(s%velocity, 3, n); call resize(s%acceleration, 3, n)
-    call resize(s%friction_force, 3, n); call resize(s%frame, 3, 3, n)
+    call resize(s%friction_force, 3, n); call resize(s%drag_force, 3, n); call resize(s%frame, 3, 3, n)
     s%capacity = n
   end subroutine allocate_series
 
@@ -339,12 +363,15 @@ contains
       s%time(i) = t
       s%u(i) = y(1); s%v(i) = y(2); s%du(i) = y(3); s%dv(i) = y(4)
       s%friction_work(i) = y(5)
+      s%drag_work(i) = 0
+      if (size(y) > 5) s%drag_work(i) = y(6)
       s%position(:, i) = state%position
       s%velocity(:, i) = state%velocity
       s%acceleration(:, i) = state%acceleration
       s%speed(i) = state%speed
       s%normal_force(i) = state%normal_force
       s%friction_force(:, i) = state%friction_force
+      s%drag_force(:, i) = state%drag_force
       s%kinetic(i) = state%kinetic_energy
       s%potential(i) = state%potential_energy
       s%frame(:, :, i) = state%frame
@@ -360,7 +387,7 @@ contains
     type(darboux_frame_t) :: frame
     real(wp) :: normal(3), udd, vdd
 
-    call dynamics(self, y, p, normal, udd, vdd, state%normal_force, state%friction_force, status)
+    call dynamics(self, y, p, normal, udd, vdd, state%normal_force, state%friction_force, state%drag_force, status)
     if (.not. status%ok()) return
     call self%surface%evaluate(y(1), y(2), 3, p, status)   ! order 3: singular points need it
     if (.not. status%ok()) return

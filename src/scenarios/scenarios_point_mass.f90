@@ -29,7 +29,7 @@ module scenarios_point_mass
   character(len=*), parameter :: point_mass_groups(10) = [character(len=14) :: &
     'run', 'solver', 'surface', 'point_mass', geometry_groups]
   !> numbers stored per output time (point_mass_series_t)
-  integer, parameter :: values_per_output = 31
+  integer, parameter :: values_per_output = 35
   !> Runaway guard: a mean step below 1e-4 s after the driver's guard_steps
   !> steps. The shipped inputs take mean steps of 1e-3 s or more; a mass at
   !> rest under regularized Coulomb friction with Adams takes microseconds.
@@ -43,7 +43,7 @@ contains
     type(input_text_t), intent(in) :: input
     type(solver_config_t), intent(out) :: solver
     type(point_mass_t), intent(out) :: model
-    real(wp), intent(out) :: y0(5)
+    real(wp), allocatable, intent(out) :: y0(:)   ! [u, v, u', v', W] (+ the drag's work W_d, kinetostatics_point_mass)
     type(status_t), intent(inout) :: status
     type(point_mass_description_t) :: description
     class(surface_t), allocatable :: surface
@@ -83,7 +83,7 @@ contains
     type(driver_options_t) :: options
     type(driver_result_t) :: result
     type(status_t) :: run_status, write_status
-    real(wp) :: y0(5)
+    real(wp), allocatable :: y0(:)
     character(len=:), allocatable :: outcome, message
     logical :: complete
 
@@ -159,6 +159,12 @@ contains
     call file%write_vector(g//'energy', s%kinetic(:n) + s%potential(:n), 'J', 'kinetic + potential energy', status)
     call file%write_vector(g//'friction_work', s%friction_work(:n), 'J', &
                            'work done on the mass by friction since t = 0 (<= 0)', status)
+    if (model%drag_area > 0) then
+      call file%write_matrix(g//'drag_force', s%drag_force(:, :n), 'N', 'the air''s drag on the mass (3 x n)', &
+                             status)
+      call file%write_vector(g//'drag_work', s%drag_work(:n), 'J', &
+                             'work done on the mass by the air''s drag since t = 0 (<= 0 in still air)', status)
+    end if
     call file%write_array3(g//'frame', s%frame(:, :, :n), '1', &
                            'Darboux frame in world coordinates: frame[i, k, :] is axis k (0 x, 1 y, 2 z: the normal) '// &
                            'at sample i as h5py reads it (a row; the columns of the 3 x 3 x n Fortran array)', status)
@@ -208,7 +214,7 @@ contains
     n = s%n
     if (n < 1) return
     e0 = s%kinetic(1) + s%potential(1)
-    drift = maxval(abs(s%kinetic(:n) + s%potential(:n) - s%friction_work(:n) - e0))
+    drift = maxval(abs(s%kinetic(:n) + s%potential(:n) - s%friction_work(:n) - s%drag_work(:n) - e0))
     accel = maxval([(norm2(s%acceleration(:, i)), i=1, n)])
     call summary%start('point_mass', 'slidesim point_mass on '//model%surface%describe())
     call summary%add('simulated_time', 'simulated time', s%time(n), 's')
@@ -222,6 +228,10 @@ contains
                            maxval(s%normal_force(:n)), 'N')
     call summary%add('drop', 'height drop', s%position(3, 1) - s%position(3, n), 'm')
     call summary%add('friction_work', 'friction work', s%friction_work(n), 'J')
+    if (model%drag_area > 0) then
+      call summary%add('drag_work', 'air drag work', s%drag_work(n), 'J')
+      call summary%add('drag_force_max', 'air drag force max', maxval([(norm2(s%drag_force(:, i)), i=1, n)]), 'N')
+    end if
     call summary%add('energy_balance_error', 'energy balance error', drift/max(abs(e0), s%kinetic(1), &
                      maxval(s%kinetic(:n)), tiny(1.0_wp)), '1', '(relative)')
     call summary%add_count('steps', 'integrator', int(stats%steps), 'steps')

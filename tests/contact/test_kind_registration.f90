@@ -203,7 +203,8 @@ contains
     type(driver_options_t) :: options
     type(driver_result_t) :: result
     type(status_t) :: st
-    real(wp) :: y0(5), w_inf, theta
+    real(wp), allocatable :: y0(:)
+    real(wp) :: w_inf, theta
     call input_from_text('point mass', point_mass_input('mass = 1.5, du0 = 0.2, friction = ''test_linear_drag'', '// &
                          'drag_k = 0.7'), input, st)
     call build_point_mass(input, solver, model, y0, st)
@@ -366,7 +367,7 @@ contains
     type(solver_config_t) :: solver
     type(point_mass_t), target :: model
     type(status_t) :: st
-    real(wp) :: y0(5)
+    real(wp), allocatable :: y0(:)
     call input_from_text('refused', point_mass_input(point_mass), input, st)
     call build_point_mass(input, solver, model, y0, st)
     call check(st%code == STATUS_INVALID_INPUT .and. index(st%text(), expected) > 0, &

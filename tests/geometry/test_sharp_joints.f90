@@ -107,7 +107,8 @@ contains
     type(ode_integrator_t) :: integrator
     type(point_mass_state_t) :: state
     type(status_t) :: st
-    real(wp) :: y0(5), y(5), t, e0, k0, speed_prev
+    real(wp), allocatable :: y0(:)
+    real(wp) :: y(5), t, e0, k0, speed_prev
     integer :: k
     logical :: at_root
     energy_drift = huge(1.0_wp); speed_step = huge(1.0_wp); passed = 0

@@ -244,7 +244,8 @@ contains
     type(ode_integrator_t) :: integrator
     type(point_mass_state_t) :: state
     type(status_t) :: st
-    real(wp) :: y0(5), y(5), t, n_prev, u_end
+    real(wp), allocatable :: y0(:)
+    real(wp) :: y(5), t, n_prev, u_end
     integer :: k
     logical :: at_root, started
     type(element_chain_curve_t) :: chain
@@ -294,7 +295,7 @@ contains
     type(solver_config_t) :: solver
     type(point_mass_t), target :: model
     type(status_t) :: st
-    real(wp) :: y0(5)
+    real(wp), allocatable :: y0(:)
     call input_from_text('<test>', point_mass_input('2.0', '1.25'), input, st)
     if (st%ok()) call build_point_mass(input, solver, model, y0, st)
     call check(.not. st%ok() .and. index(st%text(), 'the tube passes through itself') > 0, &

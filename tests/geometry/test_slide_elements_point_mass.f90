@@ -57,7 +57,8 @@ contains
     type(ode_integrator_t) :: integrator
     type(point_mass_state_t) :: state
     type(status_t) :: st
-    real(wp) :: y0(5), y(5), t, e0, e, worst, scale, u_min, u_max, v_min, v_max
+    real(wp), allocatable :: y0(:)
+    real(wp) :: y(5), t, e0, e, worst, scale, u_min, u_max, v_min, v_max
     integer :: k, edge(4)
     logical :: inside, at_root, ended
 

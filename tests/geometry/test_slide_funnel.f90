@@ -208,7 +208,8 @@ contains
     type(ode_integrator_t) :: integrator
     type(ode_options_t) :: options
     type(status_t) :: st
-    real(wp) :: y0(5), y(5), t, z_bottom, highest, u_start
+    real(wp), allocatable :: y0(:)
+    real(wp) :: y(5), t, z_bottom, highest, u_start
     integer :: k
     logical :: at_root, back
     u_start = 17
@@ -246,7 +247,7 @@ contains
   subroutine build(text, model, y0, options, st)
     character(len=*), intent(in) :: text
     type(point_mass_t), intent(out) :: model
-    real(wp), intent(out) :: y0(5)
+    real(wp), allocatable, intent(out) :: y0(:)
     type(ode_options_t), intent(out) :: options
     type(status_t), intent(out) :: st
     type(input_text_t) :: input
@@ -315,7 +316,8 @@ contains
     type(ode_integrator_t) :: integrator
     type(ode_options_t) :: options
     type(status_t) :: st
-    real(wp) :: y0(5), y(5), t, n_prev
+    real(wp), allocatable :: y0(:)
+    real(wp) :: y(5), t, n_prev
     integer :: k
     logical :: at_root
     jump = huge(1.0_wp)

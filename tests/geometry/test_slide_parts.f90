@@ -222,7 +222,8 @@ contains
     type(point_mass_state_t) :: state
     type(status_t) :: st
     character(len=32) :: rate
-    real(wp) :: y0(5), y(5), t, z0, worst, period
+    real(wp), allocatable :: y0(:)
+    real(wp) :: y(5), t, z0, worst, period
     integer :: k, n
     logical :: at_root, started
     drift = huge(1.0_wp)
@@ -262,7 +263,8 @@ contains
     type(point_mass_state_t) :: state
     type(status_t) :: st
     character(len=32) :: rate
-    real(wp) :: y0(5), y(5), t, z(3), z_bottom, apex(2), e0, worst, v_min, v_max, h, drift
+    real(wp), allocatable :: y0(:)
+    real(wp) :: y(5), t, z(3), z_bottom, apex(2), e0, worst, v_min, v_max, h, drift
     integer :: k, walls, crossings
     logical :: at_root, rising, started
     write (rate, '(es23.16)') across/r
@@ -328,7 +330,8 @@ contains
     type(element_chain_curve_t) :: chain
     type(curve_point_t) :: c
     type(surface_point_t) :: pt
-    real(wp) :: y0(5), y(5), t, z0, n_prev, worst, cos_pitch, kappa, kb, n_expected, z_end, length
+    real(wp), allocatable :: y0(:)
+    real(wp) :: y(5), t, z0, n_prev, worst, cos_pitch, kappa, kb, n_expected, z_end, length
     integer :: k
     logical :: at_root, inside, started
     read (transition, *) length

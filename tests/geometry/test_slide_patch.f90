@@ -358,7 +358,8 @@ contains
     type(input_text_t) :: input
     type(solver_config_t) :: solver
     type(status_t) :: st
-    real(wp) :: y0(5), y(5), t, n_prev, jump, drift, energy0, worst_joint, ends(2)
+    real(wp), allocatable :: y0(:)
+    real(wp) :: y(5), t, n_prev, jump, drift, energy0, worst_joint, ends(2)
     integer :: k
     logical :: at_root
     call input_from_text('<test>', text, input, st)

@@ -232,7 +232,7 @@ contains
     type(point_mass_description_t) :: d
     type(point_mass_t) :: m
     type(status_t) :: status
-    real(wp) :: y0(5)
+    real(wp), allocatable :: y0(:)
     type(plane_t) :: plane
     plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], status)
     d%friction = law_spec('coulomb', 'mu', 0.2_wp)

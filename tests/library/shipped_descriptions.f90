@@ -325,7 +325,7 @@ contains
     type(driver_options_t) :: options
     type(driver_result_t) :: result
     type(status_t) :: st
-    real(wp) :: y0(5)
+    real(wp), allocatable :: y0(:)
     call build_point_mass_model(d, surface, model, y0, st)
     call expect_ok(st, name//': built')
     if (.not. st%ok()) return

@@ -77,13 +77,12 @@ contains
     character(len=*), intent(in) :: text, name
     type(point_mass_t), intent(inout), target :: model
     type(ode_integrator_t), intent(inout) :: integrator
-    real(wp), intent(out) :: y0(5)
+    real(wp), allocatable, intent(out) :: y0(:)
     type(point_mass_state_t), intent(out) :: state
     logical, intent(out) :: ok
     type(input_text_t) :: input
     type(solver_config_t) :: solver
     type(status_t) :: st
-    y0 = 0
     call input_from_text('<test>', text, input, st)
     if (st%ok()) call build_point_mass(input, solver, model, y0, st)
     call check(st%ok(), name//': built: '//st%text())
