@@ -187,8 +187,8 @@ module io_declarations_multibody
       '(docs/contact.md, "Flight")'), &
     declaration_t(groups='contact', name='may_open', kind=VALUE_LOGICAL, default='.false.', &
       meaning='a lift-off (the normal force falling to zero) opens the contact and the body flies on, landing '// &
-      'again with restitution, instead of ending the run; the contacts of one body with the ground, at most '// &
-      'one closed at a time (docs/contact.md, "Flight")'), &
+      'again with restitution, instead of ending the run; contacts of one body with the ground (docs/contact.md, '// &
+      '"Flight")'), &
     declaration_t(groups='contact', name='restitution', unit='1', default='none', &
       low=0.0_wp, high=1.0_wp, meaning='energetic coefficient of restitution of the landings (start = ''open'' '// &
       'or may_open): the body bounces (docs/contact.md, "Impact law"); without it the run ends at the landing'), &
