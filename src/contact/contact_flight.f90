@@ -53,7 +53,8 @@ module contact_flight
   use base_vector, only: cross
   use geometry_solid, only: solid_properties_t
   use contact_factory, only: body_from_spec, add_air_drag
-  use contact_model, only: contact_system_t, contact_model_t, build_system_shapes, LEVEL_POSITION, CHAIN_AUTO
+  use contact_model, only: contact_system_t, contact_model_t, build_system_shapes, body_index, LEVEL_POSITION, &
+    CHAIN_AUTO
   use contact_open_gaps, only: open_gaps_t, start_open_gaps
   implicit none (type, external)
   private
@@ -66,6 +67,7 @@ module contact_flight
   type :: impact_record_t
     real(wp) :: time = 0                   ! s
     integer :: contact = 1                 ! the contact landed on: its place among the &contact groups
+    integer :: body_1 = 0, body_2 = 1      ! its bodies: their places among the &body groups (0: the ground)
     real(wp) :: normal_speed_before = 0    ! m/s, separation speed of the contact points (< 0: approaching)
     real(wp) :: normal_speed_after = 0     ! m/s
     real(wp) :: normal_impulse = 0         ! N s, on the body
@@ -141,8 +143,9 @@ contains
       if (size(system%bodies) /= 1 .or. any([(system%contacts(k)%body_1 /= 'ground', k = 1, size(system%contacts))]) &
           .or. any([(system%contacts(k)%body_2 /= c%body_2, k = 1, size(system%contacts))])) then
         call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': start = ''open'' and may_open '// &
-          'are supported for the contacts of one body with the ground (flight and landing on any of them); '// &
-          'this description has '//format_count(size(system%contacts))//' contacts and '// &
+          'are supported for the contacts of one body with the ground (flight and landing on any of them; '// &
+          'several bodies flying at once, or one flying while another stays in contact, are not built: the '// &
+          'flight is one free body); this description has '//format_count(size(system%contacts))//' contacts and '// &
           format_count(size(system%bodies))//' bodies')
       else if (count(.not. system%contacts%start_open) > 1) then
         call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': of the contacts of body '''// &
@@ -453,7 +456,9 @@ contains
       call start_rates(self, [omega, v_centre - cross(omega, centre - body%r)], rates, status)
       if (.not. status%ok()) return
       y(f + 1:f + self%mechanism%ns) = rates
-      row = impact_record_t(time=t, contact=c, normal_speed_before=outcome%normal_speed_before, &
+      row = impact_record_t(time=t, contact=c, body_1=body_index(self%system, contact%body_1), &
+                            body_2=body_index(self%system, contact%body_2), &
+                            normal_speed_before=outcome%normal_speed_before, &
                             normal_speed_after=dot_product(velocity_after, n), &
                             normal_impulse=dot_product(impulse, n), &
                             tangential_impulse=norm2(impulse - dot_product(impulse, n)*n), &

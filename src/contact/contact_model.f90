@@ -59,7 +59,7 @@ module contact_model
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t, contact_model_t, contact_link_t
-  public :: build_contact_model, contact_convergence_coefficient, body_size, build_system_shapes
+  public :: build_contact_model, contact_convergence_coefficient, body_size, build_system_shapes, body_index
   public :: LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
 
   integer, parameter :: LEVEL_POSITION = 1, LEVEL_VELOCITY = 2

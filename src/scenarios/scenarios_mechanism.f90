@@ -260,6 +260,10 @@ contains
     call file%write_vector(g//'time', impacts%time, 's', 'time of each impact', status)
     call file%write_integers(g//'contact', impacts%contact, '1', &
                              'the impact''s contact: its place among the &contact groups (1: the first)', status)
+    call file%write_integers(g//'body_1', impacts%body_1, '1', 'the impact''s first body, its contact''s '// &
+                             'body_1: its place among the &body groups (1: the first; 0: the ground)', status)
+    call file%write_integers(g//'body_2', impacts%body_2, '1', 'the impact''s second body, its contact''s '// &
+                             'body_2: its place among the &body groups (1: the first; 0: the ground)', status)
     call file%write_vector(g//'normal_speed_before', impacts%normal_speed_before, 'm/s', &
                            'separation speed of the contact points before (< 0: approaching)', status)
     call file%write_vector(g//'normal_speed_after', impacts%normal_speed_after, 'm/s', &

@@ -104,6 +104,8 @@ ok = (np.allclose(t['normal_speed_before'][:], -v[:6], atol=1e-8)
       and np.allclose(t['normal_speed_after'][:], v[1:], atol=1e-8)
       and np.allclose(t['energy_lost'][:], 0.5 * (v[:6] ** 2 - v[1:] ** 2), atol=1e-8)
       and list(t['contact'][:]) == [1] * 6
+      # the bodies (issue 25 point 5): the ground (0) and the ball (&body 1)
+      and list(t['body_1'][:]) == [0] * 6 and list(t['body_2'][:]) == [1] * 6
       and t['energy_lost'].attrs['units'] in (b'J', 'J'))
 c = f['contact']
 open_ = c['contacts/on_floor/open'][:]

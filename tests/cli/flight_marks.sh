@@ -15,7 +15,8 @@
 # - the plot (scripts/plot_contact.py): a PNG; its figure shades the flight
 #   phases on every time plot (one span: the records with open = 1, from the
 #   start to the closing impact), labels every impact with its approach speed
-#   and marks the landing points in 3-D.
+#   and marks the landing points in 3-D, the legend naming the bodies that
+#   met ("ball on ground": /contact/impacts/body_1, body_2).
 set -u
 slidesim=$1
 root=$(pwd)
@@ -82,7 +83,8 @@ if impacts is not None:
         check(np.allclose(xyz[:, 0], 0.5 * table['time'][:], rtol=1e-8) and np.abs(xyz[:, 1:]).max() < 1e-12,
               f"points are not the landing points (0.5 t, 0, 0): {xyz}")
         a = attributes(impacts)
-        for name in ('time', 'normal_speed_before', 'normal_speed_after', 'normal_impulse', 'energy_lost', 'contact'):
+        for name in ('time', 'normal_speed_before', 'normal_speed_after', 'normal_impulse', 'energy_lost', 'contact',
+                     'body_1', 'body_2'):
             check(name in a and np.allclose(a[name], table[name][:], rtol=1e-8, atol=1e-12),
                   f"'impacts' point data {name} is not the table's")
 
@@ -197,6 +199,8 @@ elif not np.allclose([a.xy[0] for a in labels], t_impacts):
 marks = [c for ax in fig.axes for c in ax.collections if c.get_gid() == 'impact_position']
 if len(marks) != 1 or not np.allclose(np.column_stack(marks[0]._offsets3d), landings):
     failures.append("the landing points are not marked in 3-D")
+elif marks[0].get_label() != 'impacts (6): ball on ground':
+    failures.append(f"the landing points' legend {marks[0].get_label()!r} does not name the bodies")
 if len(time_axes) != 4:
     failures.append(f"{len(time_axes)} time plots, expected 4 (angular velocity, gap, forces, energy)")
 for line in failures:

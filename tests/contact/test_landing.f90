@@ -137,6 +137,8 @@ contains
       call check(size(flight%impacts) == 6, 'dome to floor: six impacts')
       if (size(flight%impacts) /= 6) return
       call check(all(flight%impacts%contact == 2), 'dome to floor: every impact on the floor (contact 2)')
+      call check(all(flight%impacts%body_1 == 0) .and. all(flight%impacts%body_2 == 1), &
+                 'dome to floor: every impact between the ground (0) and the ball (&body 1)')
       t_k = t_l + s1
       v_k = v1
       do k = 1, 6

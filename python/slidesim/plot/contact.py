@@ -7,11 +7,14 @@ A run with flights (a contact that can open, `start = 'open'`) also shows
 the gap of each such contact; on every time plot its flight phases (the
 records where /contact/contacts/<c>/open is 1 for every such contact) are
 shaded, and its impacts
-(/contact/impacts) are marked where they happened (3-D), when (vertical
-lines) and how fast the body approached (the gap plot's labels).
+(/contact/impacts) are marked where they happened (3-D, the legend naming
+the bodies that met), when (vertical lines) and how fast the body approached
+(the gap plot's labels).
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
+import re
+
 import numpy as np
 
 from .common import equal_axes_3d
@@ -52,9 +55,34 @@ def impacts(r, g):
     if g + "/impacts/time" not in r:
         return {}
     table = {key: r[f"{g}/impacts/{key}"].values for key in ("time", "normal_speed_before", "contact")}
+    for key in ("body_1", "body_2"):   # results before they were written have neither
+        if f"{g}/impacts/{key}" in r:
+            table[key] = r[f"{g}/impacts/{key}"].values
     if g + "/impacts/position" in r:
         table["position"] = r[g + "/impacts/position"].values
     return table
+
+
+def body_names(r):
+    """The &body names in the input's order (the impacts table's body_1 and
+    body_2 count them from 1; 0 is the ground)."""
+    text = r.file["/input/namelist"].asstr()[()] if "/input/namelist" in r.file else ""
+    groups = re.findall(r"&body\b(.*?)(?=&\w|\Z)", text, flags=re.S | re.I)
+    names = [re.search(r"\bname\s*=\s*(['\"])(.*?)\1", group, flags=re.S | re.I) for group in groups]
+    return ["ground"] + [m.group(2) if m else "?" for m in names]
+
+
+def impact_pairs(r, table):
+    """Which bodies met at the impacts ("ball on ground"), in order of first
+    meeting, comma-separated ("" without the bodies columns)."""
+    if "body_1" not in table:
+        return ""
+    names = body_names(r)
+
+    def name(k):
+        return names[k] if 0 <= k < len(names) else f"body {k}"
+    pairs = [f"{name(b2)} on {name(b1)}" for b1, b2 in zip(table["body_1"], table["body_2"])]
+    return ", ".join(dict.fromkeys(pairs))
 
 
 def shade_flights(ax, phases, label=True):
@@ -109,7 +137,8 @@ def draw(r, plt, args):
         drawn.append(p)
     if "position" in table:
         ax.scatter(*table["position"].T, marker="x", s=40, color=IMPACT_COLOUR, depthshade=False,
-                   label=f"impacts ({len(table['time'])})", gid="impact_position")
+                   label=f"impacts ({len(table['time'])}): {impact_pairs(r, table)}".rstrip(": "),
+                   gid="impact_position")
     ax.legend(loc="upper left", fontsize=8)
     equal_axes_3d(ax, np.vstack(drawn))
     ax.set_title("paths of the bodies (solid) and contact points (dashed)")
