@@ -49,8 +49,9 @@ module rider_ride
   use rider_model, only: rider_params_t, rider_layout_t, build_rider, rider_start_velocity, contact_names, &
     CONTACT_PELVIS, CONTACT_HEELS, N_CONTACTS, rider_coulomb_mu, rider_default_mu, flexion_range, tilt_range
   use rider_water_drag, only: water_drag_t
-  use rider_flight, only: ride_flights_t, rider_landing_t, contact_gap, full_state, build_state, contact_impact, &
-    add_landing, set_holds, full_scalars, centre_of_mass, N_FULL
+  use rider_flight, only: ride_flights_t, rider_landing_t, contact_gap, full_state, contact_impact, add_landing, &
+    centre_of_mass
+  use rider_flight_builds, only: flight_builds_t, make_flight_builds
   implicit none (type, external)
   private
   public :: ride_options_t, ride_series_t, contact_series_t, ride_result_t, rider_ode_t, simulate_ride, &
@@ -136,26 +137,20 @@ module rider_ride
     integer :: lifted_contact = 0         ! the contact whose normal force fell to zero (0: none)
     type(dense_extremes_t) :: extremes    ! the report's extremes so far
     type(ride_probe_t) :: probe           ! evaluates them between the records
-    ! the flights (may_fly): the builds (rider_flight) by their open
-    ! contacts (bit k-1 for contact k), the open ones, the switch the last
-    ! stop asks for and its state
+    ! the flights (may_fly): the builds by their open contacts and the one
+    ! in use (rider_flight_builds), the switch the last stop asks for and
+    ! its state
     logical :: may_fly = .false.
     type(impact_law_t) :: landing
     real(wp) :: gravity = 0               ! m/s^2, |g|
-    type(mechanism_t), allocatable :: builds(:)   ! (0:2**N_CONTACTS - 1)
-    integer, allocatable :: picks(:, :)   ! each build's coordinates in the full layout (rider_flight)
-    integer :: open_mask = 0
+    type(flight_builds_t) :: fly
     logical :: opened(N_CONTACTS) = .false.   ! the gap has opened beyond opening_gap
     real(wp) :: take_off_time(N_CONTACTS) = 0 ! s, of each contact's last switch
-    real(wp) :: hold(2) = 0               ! rad, the posture the hips hold in flight (flexion, tilt)
     integer :: switch = SWITCH_NONE
     integer :: switch_contact = 0
     real(wp) :: switch_t = 0
     real(wp), allocatable :: switch_y(:)
     integer :: quick_landings = 0         ! landings right after their take-off, in a row
-    integer :: flight_size = 0            ! size of the state in the full layout
-    integer :: max_r = 0                  ! dependents of the build with every contact on
-    real(wp), allocatable :: padded(:, :) ! a dense-output piece in that layout
     type(ride_flights_t) :: flights
   contains
     procedure :: record => rider_record
@@ -239,12 +234,11 @@ contains
       ! the probe and the records see every state in the full layout, the
       ! context ends with the posture held in flight and the open contacts
       sys%probe%may_fly = .true.
-      sys%probe%builds = sys%builds
-      sys%probe%picks = sys%picks
-      allocate (sys%probe%works(0:ubound(sys%builds, 1)))
-      n_state = sys%flight_size
-      n_context = 1 + sys%max_r + 3
-      allocate (sys%padded(n_state, 0:12))
+      sys%probe%builds = sys%fly%builds
+      sys%probe%picks = sys%fly%picks
+      allocate (sys%probe%works(0:ubound(sys%fly%builds, 1)))
+      n_state = sys%fly%flight_size
+      n_context = 1 + sys%fly%max_r + 3
     end if
     sys%probe%applied = spread(huge(1.0_wp), 1, n_context)
     call sys%extremes%start(n_state, N_EXTREMES, N_ATTACHED, n_context)
@@ -338,35 +332,13 @@ contains
     end if
     sys%slide_length = sys%slide%length()
     if (options%may_fly) then
-      ! a build per set of open contacts, from the same start (rider_flight)
+      ! a build per set of open contacts, from the same start (rider_flight_builds)
       sys%may_fly = .true.
       sys%flights%watched = .true.
       sys%landing = options%landing
       sys%gravity = norm2(params%gravity)
-      allocate (sys%builds(0:2**N_CONTACTS - 1), sys%picks(N_FULL, 0:2**N_CONTACTS - 1))
-      sys%picks = 0
-      sys%builds(0) = sys%mechanism
-      do i = 1, ubound(sys%builds, 1)
-        block
-          type(rider_layout_t) :: open_layout
-          real(wp) :: q_open(3)
-          integer :: k
-          call build_rider(params, surface, sys%builds(i), open_layout, q_open, status, water, &
-                           open=[(btest(i, k - 1), k = 1, N_CONTACTS)], free_pelvis=.true.)
-        end block
-        if (.not. status%ok()) return
-      end do
-      do i = 0, ubound(sys%builds, 1)
-        block
-          integer :: k, full(N_FULL)
-          full = full_scalars(sys%layout)
-          do k = 1, sys%builds(i)%f
-            sys%picks(k, i) = findloc(full, sys%builds(i)%q(k), dim=1)
-          end do
-        end block
-      end do
-      sys%max_r = sys%builds(0)%r
-      sys%flight_size = 2*N_FULL + sys%mechanism%n_laws
+      call make_flight_builds(params, surface, sys%mechanism, sys%layout, sys%fly, status, water)
+      if (.not. status%ok()) return
     end if
     sys%min_speed = options%min_speed
     sys%min_rate = options%min_speed/speed
@@ -481,7 +453,7 @@ contains
       r%kind(n) = kind
       if (self%may_fly) then
         call full_state(m, w, lay, y, r%state(:, n))
-        if (self%open_mask /= 0) call track_highest(self, t)
+        if (self%fly%open_mask /= 0) call track_highest(self, t)
       else
         r%state(:, n) = y
       end if
@@ -501,7 +473,7 @@ contains
         if (lay%drag(k) > 0) r%drag_work(n) = r%drag_work(n) + y(2*f + lay%drag(k))
       end do
       r%closure_residual(n) = m%closure_residual(w)
-      r%airborne(n) = self%open_mask
+      r%airborne(n) = self%fly%open_mask
       do k = 1, N_CONTACTS
         associate (c => r%contact(k), d => w%frames(lay%contact_frame(k)))
           c%u(n) = w%scalars(lay%u(k))%q
@@ -541,15 +513,15 @@ contains
         call extreme_quantities(r%speed(n), r%pelvis_acceleration(:, n), r%pelvis_axes(:, :, n), &
           r%reaction_force(:, n), r%reaction_moment(:, n), r%arc_length(n), &
           [(r%contact(k)%wall_angle(n), k = 1, N_CONTACTS)], [(r%contact(k)%wall_distance(n), k = 1, N_CONTACTS)], &
-          [(r%contact(k)%normal_force(n), k = 1, N_CONTACTS)], self%probe%gravity, self%open_mask, values, attached)
+          [(r%contact(k)%normal_force(n), k = 1, N_CONTACTS)], self%probe%gravity, self%fly%open_mask, values, attached)
         if (self%may_fly) then
           ! the context in the full layout: the betas of the build, the
           ! posture held, the open contacts last; a stretch's start
           ! after a switch splits the brackets as an event does
           call self%extremes%add_record(t, kind == RECORD_EVENT .or. (kind == RECORD_START .and. n > 1), &
             [real(sum([(merge(2**(k - 1), 0, r%contact(k)%in_water(n) == 1), k = 1, N_CONTACTS)]), wp), &
-             (w%scalars(m%beta(k))%q, k = 1, m%r), spread(0.0_wp, 1, self%max_r - m%r), self%hold, &
-             real(self%open_mask, wp)], &
+             (w%scalars(m%beta(k))%q, k = 1, m%r), spread(0.0_wp, 1, self%fly%max_r - m%r), self%fly%hold, &
+             real(self%fly%open_mask, wp)], &
             values, attached)
         else
           call self%extremes%add_record(t, kind == RECORD_EVENT, &
@@ -566,23 +538,14 @@ contains
     class(rider_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t_n, h, taylor(:, 0:)
     type(status_t), intent(inout) :: status
-    integer :: k, f, i
     associate (unused => status)
     end associate
     if (.not. self%may_fly) then
       call self%extremes%add_piece(t_n, h, taylor)
     else
-      ! the build's piece in the full layout (the others' coordinates: 0, unused)
-      f = self%mechanism%f
-      do k = 0, ubound(taylor, 2)
-        self%padded(:, k) = 0
-        do i = 1, f
-          self%padded(self%picks(i, self%open_mask), k) = taylor(i, k)
-          self%padded(N_FULL + self%picks(i, self%open_mask), k) = taylor(f + i, k)
-        end do
-        self%padded(2*N_FULL + 1:, k) = taylor(2*f + 1:, k)
-      end do
-      call self%extremes%add_piece(t_n, h, self%padded(:, 0:ubound(taylor, 2)))
+      ! the build's piece in the full layout
+      call self%fly%full_piece(self%mechanism%f, taylor)
+      call self%extremes%add_piece(t_n, h, self%fly%padded(:, 0:ubound(taylor, 2)))
     end if
   end subroutine rider_observe_step
 
@@ -623,7 +586,7 @@ contains
     end do
     where = ' at arc length '//format_short(self%slide%arc_length(y(1)))//' m (t = '//format_short(t)//' s)'
     self%switch = SWITCH_NONE
-    if (self%may_fly .and. self%open_mask /= 0) then
+    if (self%may_fly .and. self%fly%open_mask /= 0) then
       if (any(fired(self%n_roots + 1:self%n_roots + N_CONTACTS) /= 0)) &
         call gap_event(self, t, y, fired(self%n_roots + 1:self%n_roots + N_CONTACTS), action, status)
       if (.not. status%ok()) return

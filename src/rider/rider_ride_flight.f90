@@ -3,6 +3,7 @@
 !> builds (one per set of open contacts) that simulate_ride's stretches go
 !> through.
 submodule (rider_ride) rider_ride_flight
+  use rider_flight_builds, only: use_build
   implicit none (type, external)
 
 contains
@@ -30,7 +31,7 @@ contains
     call self%mechanism_ode_t%roots(t, y, g(1:n))
     if (.not. self%may_fly) return
     g(n + 1:n + N_CONTACTS + 2) = 1
-    if (self%open_mask == 0) return
+    if (self%fly%open_mask == 0) return
     ! the positions at y (the closure warm from the last solution); a trial
     ! state the closure cannot reach keeps the last value
     call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), st)
@@ -38,7 +39,7 @@ contains
     self%cached = .false.
     self%rhs_cached = .false.
     do k = 1, N_CONTACTS
-      if (.not. btest(self%open_mask, k - 1)) cycle
+      if (.not. btest(self%fly%open_mask, k - 1)) cycle
       gap = contact_gap(self%work, self%layout, k)
       if (self%opened(k)) then
         g(n + k) = gap
@@ -67,7 +68,7 @@ contains
     call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), status)
     if (.not. status%ok()) return
     do k = 1, N_CONTACTS
-      if (fired(k) == 0 .or. .not. btest(self%open_mask, k - 1)) cycle
+      if (fired(k) == 0 .or. .not. btest(self%fly%open_mask, k - 1)) cycle
       if (.not. self%opened(k) .and. contact_gap(self%work, self%layout, k) > 0) then
         self%opened(k) = .true.
         action = max(action, EVENT_RESTART)
@@ -98,19 +99,19 @@ contains
     integer :: f, c, before
     t = self%switch_t
     c = self%switch_contact
-    before = self%open_mask
+    before = self%fly%open_mask
     ! the ride goes on: the stop's words and codes were not its end
     self%ending = RIDE_FAILED
     self%lifted_contact = 0
     self%outcome = ''
-    allocate (full(self%flight_size))
+    allocate (full(self%fly%flight_size))
     select case (self%switch)
     case (SWITCH_TAKE_OFF)
       f = self%mechanism%f
       call self%mechanism%evaluate(self%work, t, self%switch_y(1:f), self%switch_y(f + 1:2*f), residual, status)
       if (.not. status%ok()) return
       call full_state(self%mechanism, self%work, self%layout, self%switch_y, full)
-      call use_build(self, ibset(before, c - 1), full, y)
+      call use_build(self%mechanism_ode_t, self%fly, self%layout, ibset(before, c - 1), full, y)
       self%opened(c) = .false.
     case (SWITCH_LANDING)
       y_open = self%switch_y
@@ -140,7 +141,7 @@ contains
       ! the positions at y_open and the speeds after the impact are set
       call full_state(self%mechanism, self%work, self%layout, y_open, full)
       if (closed) then
-        call use_build(self, ibclr(before, c - 1), full, y)
+        call use_build(self%mechanism_ode_t, self%fly, self%layout, ibclr(before, c - 1), full, y)
         ! pressing again? Else the contact flies on from the slide (its
         ! normal force would pull: the free motion leaves it)
         f = self%mechanism%f
@@ -149,7 +150,7 @@ contains
         if (.not. self%work%normal_force(self%layout%contact(c)) > 0) then
           landing%closed = .false.
           call full_state(self%mechanism, self%work, self%layout, y, full)
-          call use_build(self, before, full, y)
+          call use_build(self%mechanism_ode_t, self%fly, self%layout, before, full, y)
         end if
       else
         y = y_open
@@ -173,7 +174,7 @@ contains
     real(wp), intent(in) :: t
     integer, parameter :: all_open = 2**N_CONTACTS - 1
     real(wp) :: airtime, com(3), velocity(3)
-    associate (fl => self%flights, now => self%open_mask)
+    associate (fl => self%flights, now => self%fly%open_mask)
       if (before == 0 .and. now /= 0) then
         fl%flights = fl%flights + 1
         fl%take_off_time = t
@@ -206,58 +207,15 @@ contains
     end associate
   end subroutine count_flights
 
-  !> The build of the open contacts `mask` takes over at the full layout's
-  !> state `full` from the current one: every scalar's value (its closure
-  !> starts there; the pelvis's lift, a constant while it is on, keeps its
-  !> own), the laws' switches (the water drag; the hips' holds on in
-  !> flight), the work integrals. Its positions and velocities are set at y.
-  subroutine use_build(self, mask, full, y)
-    class(rider_ode_t), intent(inout) :: self
-    integer, intent(in) :: mask
-    real(wp), intent(in) :: full(:)
-    real(wp), allocatable, intent(inout) :: y(:)
-    real(wp), allocatable :: y_next(:), values(:)
-    logical, allocatable :: active(:)
-    type(status_t) :: st
-    integer :: k, f
-    if (self%open_mask == 0 .and. mask /= 0) then
-      ! a take-off from the slide: the posture to hold is the one here
-      self%hold = [self%work%scalars(self%layout%flexion)%q, self%work%scalars(self%layout%tilt)%q]
-    end if
-    values = self%work%scalars(:)%q
-    active = [(self%work%laws(k)%law%active, k = 1, self%mechanism%n_laws)]
-    self%mechanism = self%builds(mask)
-    self%open_mask = mask
-    ! the workspace takes the new build's state (another model: its stamp);
-    ! then the values, switches and holds carried over are written into it
-    ! (the builds are models: nothing written into them would be seen)
-    call self%mechanism%prepare_workspace(self%work)
-    self%work%scalars(:)%q = values
-    do k = 1, size(active)
-      self%work%laws(k)%law%active = active(k)
-    end do
-    call set_holds(self%work, self%layout, mask /= 0, self%hold)
-    self%work%warm = .false.
-    self%work%converged = .false.
-    if (allocated(self%charts)) deallocate (self%charts, self%chart_angle)
-    f = self%mechanism%f
-    allocate (y_next(2*f + self%mechanism%n_laws))
-    call build_state(self%mechanism, self%layout, full, y_next)
-    y = self%initial_state(y_next(1:f), y_next(f + 1:2*f))
-    y(2*f + 1:) = y_next(2*f + 1:)
-    call self%mechanism%set_positions(self%work, y(1:f), st)
-    if (st%ok()) call self%mechanism%set_velocities(self%work, y(f + 1:2*f))
-  end subroutine use_build
-
   !> The ride ended at t with contacts open: their flight counts up to t.
   module subroutine end_flights(self, t)
     class(rider_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t
     integer :: before
-    before = self%open_mask
-    self%open_mask = 0
+    before = self%fly%open_mask
+    self%fly%open_mask = 0
     call count_flights(self, before, t)
-    self%open_mask = before
+    self%fly%open_mask = before
   end subroutine end_flights
 
   !> The open contacts' largest gap so far, at a record in flight (positions set).
@@ -267,7 +225,7 @@ contains
     real(wp) :: gap
     integer :: k
     do k = 1, N_CONTACTS
-      if (.not. btest(self%open_mask, k - 1)) cycle
+      if (.not. btest(self%fly%open_mask, k - 1)) cycle
       gap = contact_gap(self%work, self%layout, k)
       if (gap > self%flights%highest) then
         self%flights%highest = gap

@@ -107,7 +107,7 @@ contains
     records = 0
     started = .false.
     t_end = 0
-    associate (s => fly%series, m => sys%builds(all_open), lay => sys%layout)
+    associate (s => fly%series, m => sys%fly%builds(all_open), lay => sys%layout)
       call m%prepare_workspace(work)
       allocate (y(2*m%f + m%n_laws))
       do n = 1, s%n

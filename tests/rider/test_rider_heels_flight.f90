@@ -156,7 +156,7 @@ contains
     call check(st%ok(), 'the open build: '//st%text())
     if (.not. st%ok()) return
     lowest = huge(1.0_wp)
-    associate (s => fly%series, m => sys%builds(heels_open), lay => sys%layout)
+    associate (s => fly%series, m => sys%fly%builds(heels_open), lay => sys%layout)
       call m%prepare_workspace(work)
       allocate (y(2*m%f + m%n_laws))
       do n = 1, s%n
