@@ -20,7 +20,13 @@
 !>           rho_out = sqrt(R^2 - (drop + R cos(theta_in))^2), so the drop is
 !>           less than the depth below the entry, R (1 - cos(theta_in));
 !>   cone    f = rho tan(theta) (theta = theta_in throughout): g constant;
-!>           rho_out = rho_in - drop/tan(theta) > 0.
+!>           rho_out = rho_in - drop/tan(theta) > 0;
+!>   table   f the quintic spline interpolating a table of (rho_i, z_i)
+!>           (numerics_spline_curve over the parameter rho; f'''' is
+!>           continuous, piecewise linear), theta_in from f'(rho_in);
+!>           rho_out where f falls by `drop` below f(rho_in), found by
+!>           bisection after f' > 0 is checked on a fine grid down to it
+!>           (the wall must rise outward all the way, within the table).
 !> In the chain the bowl is an element whose own kappa and g vary: the chain
 !> blends each element's constants by windows W_i = S_(i-1) - S_i of its
 !> joints' smoothsteps, and the bowl adds (kappa_b - kappa_ref) W_b and
@@ -38,14 +44,19 @@ module geometry_slide_bowl
   use base_kinds, only: wp
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
-  use base_text, only: format_real
+  use base_text, only: format_real, format_integer
   use numerics_quadrature, only: gl8_x, gl8_w, piecewise_nodes, node_below
+  use numerics_spline_curve, only: spline_curve_t
   use geometry_drop_profile, only: smoothstep, smoothstep_value
   implicit none (type, external)
   private
   public :: bowl_spiral_t, new_bowl_spiral
 
-  integer, parameter :: PROFILE_SPHERE = 1, PROFILE_CONE = 2
+  integer, parameter :: PROFILE_SPHERE = 1, PROFILE_CONE = 2, PROFILE_TABLE = 3
+  !> The fewest points of a profile table (a quintic interpolant)
+  integer, parameter :: min_table_points = 6
+  !> Grid steps over the table on which a table profile's wall must rise
+  integer, parameter :: rise_checks = 4000
   real(wp), parameter :: node_spacing = 0.05_wp    ! m, of the integral tables
   !> The steepest slope of a chain's centerline (geometry_slide_elements).
   real(wp), parameter :: max_slope_deg = 60
@@ -59,6 +70,8 @@ module geometry_slide_bowl
     real(wp) :: rho_in = 0, rho_out = 0        ! m, from the axis at the entry and the outlet
     real(wp) :: sphere_radius = 0              ! m (sphere)
     real(wp) :: tan_wall = 0                   ! the cone's wall slope, tan(theta)
+    type(spline_curve_t) :: table              ! z over rho (table)
+    real(wp) :: table_lo = 0, table_hi = 0     ! m, the table's first and last rho
     real(wp) :: sin_beta = 0, cos_beta = 0     ! the spiral's angle to the circles rho = const
     real(wp) :: sense = 1                      ! +1 left (anticlockwise seen from above), -1 right
     real(wp) :: length = 0                     ! m, horizontal
@@ -81,17 +94,24 @@ module geometry_slide_bowl
 
 contains
 
-  !> The spiral of a bowl of `profile` ('sphere', 'cone') entered at `rho_in`
-  !> m from its axis where the wall rises at `slope_deg`, losing `drop` m over
-  !> `turns` turns in `sense` (+1 left, -1 right). The message names the value.
-  function new_bowl_spiral(profile, rho_in, slope_deg, drop, turns, sense, status) result(b)
+  !> The spiral of a bowl of `profile` ('sphere', 'cone', 'table') entered
+  !> at `rho_in` m from its axis where the wall rises at `slope_deg` (not a
+  !> table's: its own slope there), losing `drop` m over `turns` turns in
+  !> `sense` (+1 left, -1 right); a table profile's points (`table_rho`
+  !> increasing, `table_z`, m). The message names the value.
+  function new_bowl_spiral(profile, rho_in, slope_deg, drop, turns, sense, status, table_rho, table_z) result(b)
     character(len=*), intent(in) :: profile
     real(wp), intent(in) :: rho_in, slope_deg, drop, turns, sense
     type(status_t), intent(out) :: status
+    real(wp), intent(in), optional :: table_rho(:), table_z(:)
     type(bowl_spiral_t) :: b
-    real(wp) :: theta, depth, cot_beta, q_out, f(0:3)
+    real(wp) :: theta, depth, cot_beta, q_out, f(0:3), steepest, rho_steepest, rho
+    integer :: i
+    character(len=:), allocatable :: place
     if (.not. rho_in > 0) then
       call refuse('radius = '//format_real(rho_in)//' m: a bowl needs the entry''s distance from its axis > 0')
+    else if (trim(profile) == 'table') then
+      continue   ! the table gives the slope
     else if (.not. (slope_deg > 0 .and. slope_deg <= max_wall_deg)) then
       call refuse('slope_deg = '//format_real(slope_deg)//': the bowl''s wall at the entry must rise at a slope '// &
                   'in (0, '//format_real(max_wall_deg)//'] deg (a sphere''s wall is vertical at its equator, the '// &
@@ -106,6 +126,14 @@ contains
     b%rho_in = rho_in
     b%sense = sense
     select case (trim(profile))
+    case ('table')
+      b%profile = PROFILE_TABLE
+      if (.not. (present(table_rho) .and. present(table_z))) then
+        call refuse('bowl_profile = ''table'' needs the profile''s points (bowl_rho, bowl_z)')
+        return
+      end if
+      call table_profile(b, table_rho, table_z, drop, status)
+      if (.not. status%ok()) return
     case ('sphere')
       b%profile = PROFILE_SPHERE
       b%sphere_radius = rho_in/sin(theta)
@@ -129,7 +157,7 @@ contains
         return
       end if
     case default
-      call refuse('bowl_profile = '''//trim(profile)//''' is not one of sphere, cone')
+      call refuse('bowl_profile = '''//trim(profile)//''' is not one of sphere, cone, table')
       return
     end select
     if (.not. b%rho_out >= 1e-3_wp*rho_in) then
@@ -144,10 +172,25 @@ contains
     call profile_slope(b, rho_in, f)
     b%kappa_ref = sense*b%cos_beta/rho_in
     b%grad_ref = b%sin_beta*f(0)
-    ! the gradient is largest at the entry (f' grows with rho)
-    if (.not. atan(b%grad_ref) < max_slope_deg*pi/180) then
-      call refuse('the spiral would descend at '//format_real(atan(b%grad_ref)*180/pi)//' deg at the entry, '// &
-                  'steeper than '//format_real(max_slope_deg)//' deg: give more turns or a gentler wall')
+    ! the gradient is largest at the entry (f' grows with rho) but on a
+    ! table, whose wall may steepen inward: there on the grid of its check
+    steepest = b%grad_ref
+    rho_steepest = rho_in
+    if (b%profile == PROFILE_TABLE) then
+      do i = 1, rise_checks
+        rho = rho_in - (rho_in - b%rho_out)*i/real(rise_checks, wp)
+        call profile_slope(b, rho, f)
+        if (b%sin_beta*f(0) > steepest) then
+          steepest = b%sin_beta*f(0)
+          rho_steepest = rho
+        end if
+      end do
+    end if
+    if (.not. atan(steepest) < max_slope_deg*pi/180) then
+      place = 'at the entry'
+      if (rho_steepest < rho_in) place = format_real(rho_steepest)//' m from the axis'
+      call refuse('the spiral would descend at '//format_real(atan(steepest)*180/pi)//' deg '//place// &
+                  ', steeper than '//format_real(max_slope_deg)//' deg: give more turns or a gentler wall')
     end if
 
   contains
@@ -158,13 +201,93 @@ contains
     end subroutine refuse
   end function new_bowl_spiral
 
+  !> A table profile: the quintic interpolant of the points, the entry
+  !> within them on a rising wall no steeper than max_wall_deg, and rho_out
+  !> where the wall has fallen by `drop`, rising all the way down to it.
+  subroutine table_profile(b, rho, z, drop, status)
+    type(bowl_spiral_t), intent(inout) :: b
+    real(wp), intent(in) :: rho(:), z(:), drop
+    type(status_t), intent(inout) :: status
+    real(wp) :: d(1, 0:1), target, lo, hi, step, mid, slope_deg
+    integer :: n, i
+    n = size(rho)
+    if (size(z) /= n) then
+      call refuse('the profile table has '//format_integer(n)//' radii (bowl_rho) but '//format_integer(size(z))// &
+                  ' heights (bowl_z): give one height per radius')
+    else if (n < min_table_points) then
+      call refuse('the profile table has '//format_integer(n)//' points: a bowl''s profile needs at least '// &
+                  format_integer(min_table_points)//' (a quintic through them)')
+    else if (.not. (all(rho(2:) > rho(:n - 1)) .and. rho(1) >= 0)) then
+      call refuse('the profile table''s radii (bowl_rho) must be >= 0 and increase from point to point')
+    else if (.not. (b%rho_in >= rho(1) .and. b%rho_in <= rho(n))) then
+      call refuse('radius = '//format_real(b%rho_in)//' m: the entry must lie within the profile table''s radii, '// &
+                  format_real(rho(1))//' to '//format_real(rho(n))//' m')
+    end if
+    if (.not. status%ok()) return
+    call b%table%fit(reshape(z, [1, n]), 0.0_wp, 5, status, parameters=rho)
+    if (.not. status%ok()) return
+    b%table_lo = rho(1)
+    b%table_hi = rho(n)
+    call b%table%evaluate(b%rho_in, d, 1)
+    slope_deg = atan(d(1, 1))*180/pi
+    if (.not. (d(1, 1) > 0 .and. slope_deg <= max_wall_deg)) then
+      call refuse('the profile table''s wall rises at '//format_real(slope_deg)//' deg at the entry (radius = '// &
+                  format_real(b%rho_in)//' m): a bowl''s wall must rise outward there, at most '// &
+                  format_real(max_wall_deg)//' deg')
+      return
+    end if
+    ! down from the entry on a fine grid: the wall rises outward until it has
+    ! fallen by the drop; then bisection between the last two grid points
+    target = d(1, 0) - drop
+    step = (b%rho_in - b%table_lo)/rise_checks
+    hi = b%rho_in
+    do i = 1, rise_checks
+      lo = b%rho_in - i*step
+      call b%table%evaluate(lo, d, 1)
+      if (.not. d(1, 1) > 0) then
+        call refuse('drop = '//format_real(drop)//' m: the profile table''s wall stops rising outward at '// &
+                    format_real(lo)//' m from the axis, before the bowl has lost its drop: give a smaller drop '// &
+                    'or a profile that rises outward all the way down')
+        return
+      end if
+      if (d(1, 0) <= target) exit
+      hi = lo
+    end do
+    if (.not. d(1, 0) <= target) then
+      call refuse('drop = '//format_real(drop)//' m reaches below the profile table''s first point ('// &
+                  format_real(b%table_lo)//' m from the axis): give a smaller drop or a deeper table')
+      return
+    end if
+    do i = 1, 200
+      mid = (lo + hi)/2
+      if (mid <= lo .or. mid >= hi) exit
+      call b%table%evaluate(mid, d, 0)
+      if (d(1, 0) > target) then
+        hi = mid
+      else
+        lo = mid
+      end if
+    end do
+    b%rho_out = hi
+
+  contains
+
+    subroutine refuse(what)
+      character(len=*), intent(in) :: what
+      call set_status(status, STATUS_INVALID_INPUT, what)
+    end subroutine refuse
+  end subroutine table_profile
+
   !> f'(rho) .. f''''(rho) (f(0:3)), the profile's slope and its derivatives.
   pure subroutine profile_slope(b, rho, f)
     type(bowl_spiral_t), intent(in) :: b
     real(wp), intent(in) :: rho
     real(wp), intent(out) :: f(0:3)
-    real(wp) :: big, q
-    if (b%profile == PROFILE_CONE) then
+    real(wp) :: big, q, d(1, 0:4)
+    if (b%profile == PROFILE_TABLE) then
+      call b%table%evaluate(rho, d, 4)
+      f = d(1, 1:4)
+    else if (b%profile == PROFILE_CONE) then
       f = [b%tan_wall, 0.0_wp, 0.0_wp, 0.0_wp]
     else
       big = b%sphere_radius**2
@@ -194,6 +317,16 @@ contains
         call set_status(status, STATUS_INVALID_INPUT, 'the transition before the bowl ('//format_real(width_in)// &
                         ' m) would carry its spiral up the sphere''s wall beyond '//format_real(max_wall_deg)// &
                         ' deg: give a gentler entry slope_deg or a shorter transition_length')
+        return
+      end if
+    end if
+    if (self%profile == PROFILE_TABLE) then
+      if (.not. (self%rho_in + width_in*self%sin_beta/2 <= self%table_hi .and. &
+                 self%rho_out - width_out*self%sin_beta/2 >= self%table_lo)) then
+        call set_status(status, STATUS_INVALID_INPUT, 'the transitions around the bowl ('//format_real(width_in)// &
+                        ' m, '//format_real(width_out)//' m) would carry its spiral beyond the profile table''s '// &
+                        'radii, '//format_real(self%table_lo)//' to '//format_real(self%table_hi)//' m: give a '// &
+                        'wider table or a shorter transition_length')
         return
       end if
     end if
@@ -405,7 +538,11 @@ contains
   pure real(wp) function bowl_height_above_bottom(self, rho) result(f)
     class(bowl_spiral_t), intent(in) :: self
     real(wp), intent(in) :: rho
-    if (self%profile == PROFILE_CONE) then
+    real(wp) :: d(1, 0:0)
+    if (self%profile == PROFILE_TABLE) then
+      call self%table%evaluate(rho, d, 0)
+      f = d(1, 0)
+    else if (self%profile == PROFILE_CONE) then
       f = rho*self%tan_wall
     else
       f = self%sphere_radius - sqrt(self%sphere_radius**2 - rho**2)

@@ -2,7 +2,8 @@
 !> turning angle, direction, slope), helix (radius, turns, drop, direction),
 !> run-out (length, slope), drop (height, top slope, curve-out radius; the
 !> trap-door start, first in the chain) and bowl (a spiral down a spherical
-!> or conical bowl: entry radius, wall slope, drop, turns, direction;
+!> or conical bowl or one of a profile table: entry radius, wall slope,
+!> drop, turns, direction;
 !> geometry_slide_bowl) and funnel (length, slope and the widest radius of
 !> the section; the centerline is a straight's, the section widens along it:
 !> geometry_funnel_section, built by geometry_slide_builder) and patch
@@ -69,7 +70,8 @@ module geometry_slide_elements
     character(len=5) :: direction = 'left'   ! 'left' or 'right' (curve, helix)
     real(wp) :: turns = 0           ! full turns (helix)
     real(wp) :: drop = 0            ! m, height lost over the helix, the drop or the bowl
-    character(len=6) :: bowl_profile = 'sphere'   ! 'sphere' or 'cone' (bowl)
+    character(len=6) :: bowl_profile = 'sphere'   ! 'sphere', 'cone' or 'table' (bowl)
+    real(wp), allocatable :: bowl_rho(:), bowl_z(:)   ! m, the profile's points (bowl_profile = 'table')
   end type slide_element_t
 
   type, extends(curve_t) :: element_chain_curve_t
@@ -186,7 +188,12 @@ contains
           c%grad(i) = 0     ! set to the next element's gradient below
           len_h(i) = 0
         case ('bowl')
-          c%bowls = [c%bowls, new_bowl_spiral(e%bowl_profile, e%radius, e%slope_deg, e%drop, e%turns, sgn, status)]
+          if (e%bowl_profile == 'table' .and. allocated(e%bowl_rho) .and. allocated(e%bowl_z)) then
+            c%bowls = [c%bowls, new_bowl_spiral(e%bowl_profile, e%radius, e%slope_deg, e%drop, e%turns, sgn, &
+                                                status, e%bowl_rho, e%bowl_z)]
+          else
+            c%bowls = [c%bowls, new_bowl_spiral(e%bowl_profile, e%radius, e%slope_deg, e%drop, e%turns, sgn, status)]
+          end if
           if (.not. status%ok()) then
             why = status%text()
             call fail(why)

@@ -87,7 +87,17 @@ module io_declarations_geometry
       low=-1e4_wp, high=1e4_wp, meaning='height lost over the helix, at most 2 pi radius turns (helix); over the '// &
       'whole drop, fall and curve-out, > 0 (drop); from the bowl''s entry to its outlet, > 0 (bowl)'), &
     declaration_t(groups='slide_elements', name='bowl_profile', kind=VALUE_WORDS, shape='one per element', &
-      default='''sphere''', choices='sphere cone', meaning='the bowl''s profile: a sphere or a cone (bowl)'), &
+      default='''sphere''', choices='sphere cone table', meaning='the bowl''s profile: a sphere, a cone or the '// &
+      'quintic spline through `bowl_rho`, `bowl_z` (bowl)'), &
+    declaration_t(groups='slide_elements', name='n_bowl_points', kind=VALUE_INTEGER, unit='1', default='none', &
+      low=6.0_wp, high=real(max_profile_points, wp), meaning='the number of points of the bowls'' profile table, '// &
+      'in `bowl_rho` and in `bowl_z`; only with a bowl_profile = ''table'''), &
+    declaration_t(groups='slide_elements', name='bowl_rho', shape='one per bowl point', unit='m', &
+      default='none', low=0.0_wp, high=1e4_wp, meaning='the profile table''s distances from the bowl''s axis, '// &
+      'increasing (every table bowl of the chain)'), &
+    declaration_t(groups='slide_elements', name='bowl_z', shape='one per bowl point', unit='m', &
+      default='none', low=-1e4_wp, high=1e4_wp, meaning='the profile table''s heights of the wall, rising '// &
+      'outward over the bowl'), &
     declaration_t(groups='slide_elements', name='patch_file', kind=VALUE_WORDS, shape='one per element', &
       default='''''', meaning='CSV file (relative to this input''s folder) of the patch''s offsets: `station, '// &
       'angle, offset` per line, a grid, 0 on its border (patch; docs/geometry.md)'), &

@@ -4,7 +4,9 @@
 !> required; an empty or missing cell is the namelist's default):
 !>   kind (straight, curve, helix, runout, drop, funnel), length (m), radius (m),
 !>   angle (deg, a curve's turning angle), slope (deg, downhill > 0),
-!>   direction (left, right), turns (helix), drop (m, helix, drop).
+!>   direction (left, right), turns (helix, bowl), drop (m, helix, drop,
+!>   bowl), profile (a bowl's: sphere, cone, table; a table bowl's points
+!>   are the namelist's bowl_rho, bowl_z).
 !> Each row maps to one element of &slide_elements with the same meaning
 !> (length, radius, angle_deg, slope_deg, direction, turns, drop) and the
 !> same checks (check_element, shared with the namelist): every refusal
@@ -23,14 +25,15 @@ module io_element_table
   public :: element_table_t, read_element_table, check_element, table_columns
 
   !> The columns of a table and the namelist variables they stand for.
-  character(len=*), parameter :: table_columns(8) = [character(len=9) :: 'kind', 'length', 'radius', &
-    'angle', 'slope', 'direction', 'turns', 'drop']
-  character(len=*), parameter :: variables(8) = [character(len=9) :: 'kind', 'length', 'radius', &
-    'angle_deg', 'slope_deg', 'direction', 'turns', 'drop']
+  character(len=*), parameter :: table_columns(9) = [character(len=12) :: 'kind', 'length', 'radius', &
+    'angle', 'slope', 'direction', 'turns', 'drop', 'profile']
+  character(len=*), parameter :: variables(9) = [character(len=12) :: 'kind', 'length', 'radius', &
+    'angle_deg', 'slope_deg', 'direction', 'turns', 'drop', 'bowl_profile']
 
   type :: element_table_t
     character(len=8), allocatable :: kind(:)
     character(len=5), allocatable :: direction(:)
+    character(len=6), allocatable :: bowl_profile(:)
     real(wp), allocatable :: length(:), radius(:), angle_deg(:), slope_deg(:), turns(:), drop(:)
     integer, allocatable :: line(:)       !< the file's line of each element
   end type element_table_t
@@ -44,13 +47,14 @@ contains
     type(element_table_t), intent(out) :: table
     type(status_t), intent(inout) :: status
     character(len=:), allocatable :: text, line, cells(:), variable, value, allowed
-    integer :: column_of(8), start, line_no, n, k, c
+    integer :: column_of(9), start, line_no, n, k, c
     logical :: header_read
 
     allocate (table%kind(max_elements), table%direction(max_elements), table%length(max_elements), &
               table%radius(max_elements), table%angle_deg(max_elements), table%slope_deg(max_elements), &
-              table%turns(max_elements), table%drop(max_elements), table%line(max_elements))
-    table%kind = ''; table%direction = 'left'
+              table%turns(max_elements), table%drop(max_elements), table%line(max_elements), &
+              table%bowl_profile(max_elements))
+    table%kind = ''; table%direction = 'left'; table%bowl_profile = 'sphere'
     table%length = 0; table%radius = 0; table%angle_deg = 0; table%slope_deg = 0; table%turns = 0; table%drop = 0
     call read_text_file(path, 'element table', text, status)
     if (.not. status%ok()) return
@@ -78,7 +82,7 @@ contains
                     format_integer(count(column_of > 0)))
         return
       end if
-      do c = 1, 8
+      do c = 1, 9
         k = column_of(c)
         if (k == 0 .or. k > size(cells)) cycle
         if (len_trim(cells(k)) == 0) cycle
@@ -86,11 +90,12 @@ contains
         if (.not. status%ok()) return
       end do
       if (len_trim(table%kind(n)) == 0) then
-        call refuse('kind', '', 'no kind given (straight, curve, helix, runout, drop or funnel)')
+        call refuse('kind', '', 'no kind given (straight, curve, helix, runout, drop, bowl or funnel)')
         return
       end if
       call check_element(table%kind(n), table%length(n), table%slope_deg(n), table%radius(n), table%angle_deg(n), &
-                         table%direction(n), table%turns(n), table%drop(n), variable, value, allowed)
+                         table%direction(n), table%turns(n), table%drop(n), variable, value, allowed, &
+                         table%bowl_profile(n))
       if (len(variable) > 0) then
         call refuse(table_columns(position(variables, variable)), value, allowed)
         return
@@ -105,6 +110,7 @@ contains
     table%kind = table%kind(:n); table%direction = table%direction(:n); table%length = table%length(:n)
     table%radius = table%radius(:n); table%angle_deg = table%angle_deg(:n); table%slope_deg = table%slope_deg(:n)
     table%turns = table%turns(:n); table%drop = table%drop(:n); table%line = table%line(:n)
+    table%bowl_profile = table%bowl_profile(:n)
 
   contains
 
@@ -125,7 +131,7 @@ contains
         column_of(c) = j
       end do
       if (column_of(1) == 0) call refuse_at(1, trim(names(1)), 'a column kind (straight, curve, helix, runout, '// &
-                                            'drop, funnel)')
+                                            'drop, bowl, funnel)')
     end subroutine read_header
 
     subroutine read_cell(c, cell)
@@ -136,14 +142,9 @@ contains
       integer :: outcome
       select case (c)
       case (1)
-        if (lower_trim(cell) == 'bowl') then
-          call refuse(table_columns(c), cell, 'a bowl is not a table row (its bowl_profile has no column): give '// &
-                      'a slide with a bowl in &slide_elements')
-          return
-        end if
         if (all(lower_trim(cell) /= [character(len=8) :: 'straight', 'curve', 'helix', 'runout', 'drop', &
-                                     'funnel'])) then
-          call refuse(table_columns(c), cell, 'the kind must be straight, curve, helix, runout, drop or funnel')
+                                     'bowl', 'funnel'])) then
+          call refuse(table_columns(c), cell, 'the kind must be straight, curve, helix, runout, drop, bowl or funnel')
           return
         end if
         table%kind(n) = lower_trim(cell)
@@ -153,6 +154,12 @@ contains
           return
         end if
         table%direction(n) = lower_trim(cell)
+      case (9)
+        if (all(lower_trim(cell) /= [character(len=6) :: 'sphere', 'cone', 'table'])) then
+          call refuse(table_columns(c), cell, 'a bowl''s profile must be sphere, cone or table')
+          return
+        end if
+        table%bowl_profile(n) = lower_trim(cell)
       case default
         number%text = cell
         call read_real_token(number, x, outcome)
@@ -265,12 +272,16 @@ contains
         'a funnel needs the radius of its widest section > 0 (m), wider than the slide''s section')
     case ('bowl')
       call unused(length, 'length'); call unused(angle_deg, 'angle_deg')
-      if (len(variable) == 0 .and. profile /= 'sphere' .and. profile /= 'cone') call set('bowl_profile', &
-        ''''//profile//'''', 'a bowl''s profile is ''sphere'' or ''cone''')
+      if (len(variable) == 0 .and. all(profile /= [character(len=6) :: 'sphere', 'cone', 'table'])) &
+        call set('bowl_profile', ''''//profile//'''', 'a bowl''s profile is ''sphere'', ''cone'' or ''table''')
       if (len(variable) == 0 .and. .not. radius > 0) call set('radius', format_real(radius), &
         'a bowl needs its entry''s distance from its axis > 0 (m)')
-      if (len(variable) == 0 .and. .not. (slope_deg > 0 .and. slope_deg <= 85)) call set('slope_deg', &
-        format_real(slope_deg), 'a bowl''s wall rises at its entry at a slope in (0, 85] (deg)')
+      if (profile == 'table') then
+        if (len(variable) == 0 .and. slope_deg /= 0) call set('slope_deg', format_real(slope_deg), &
+          'a table bowl''s wall rises as its table says at the entry; give 0 or leave it out')
+      else if (len(variable) == 0 .and. .not. (slope_deg > 0 .and. slope_deg <= 85)) then
+        call set('slope_deg', format_real(slope_deg), 'a bowl''s wall rises at its entry at a slope in (0, 85] (deg)')
+      end if
       if (len(variable) == 0 .and. .not. drop > 0) call set('drop', format_real(drop), &
         'a bowl needs the height it loses from its entry to its outlet > 0 (m)')
       if (len(variable) == 0 .and. .not. turns > 0) call set('turns', format_real(turns), &

@@ -205,7 +205,8 @@ contains
     type(input_text_t), intent(in) :: input
     type(slide_elements_description_t), intent(out) :: described
     type(status_t), intent(inout) :: status
-    integer :: n, i, degree
+    integer :: n, i, degree, n_bowl
+    real(wp), allocatable :: bowl_rho(:), bowl_z(:)
     character(len=8), allocatable :: kind(:)
     character(len=5), allocatable :: direction(:)
     character(len=6), allocatable :: bowl_profile(:)
@@ -252,8 +253,7 @@ contains
       if (.not. status%ok()) return
       kind = table%kind; direction = table%direction; length = table%length; slope_deg = table%slope_deg
       radius = table%radius; angle_deg = table%angle_deg; turns = table%turns; drop = table%drop
-      allocate (bowl_profile(n))
-      bowl_profile = 'sphere'   ! a table has no bowl (io_element_table)
+      bowl_profile = table%bowl_profile
       allocate (given_kind(n), e(n), patch_file(n), given_patch(n))
       given_kind = .true.
       given_patch = .false.
@@ -282,6 +282,22 @@ contains
       patch_file = ''
       call r%get_parts('patch_file', patch_file, lim, status, given=given_patch)
     end if
+    ! the profile table of the bowls with bowl_profile = 'table' (one for all)
+    if (.not. status%ok()) return
+    if (.not. any(bowl_profile == 'table')) then
+      call r%refuse_given([character(len=13) :: 'n_bowl_points', 'bowl_rho', 'bowl_z'], &
+                          'only a bowl with bowl_profile = ''table'' uses it', status)
+    else
+      call r%get('n_bowl_points', n_bowl, status)
+      call r%get_list('bowl_rho', bowl_rho, max_profile_points, status)
+      call r%get_list('bowl_z', bowl_z, max_profile_points, status)
+      if (status%ok() .and. .not. r%has('n_bowl_points')) &
+        call r%invalid('n_bowl_points', '0', 'a bowl with bowl_profile = ''table'' needs its profile''s points: '// &
+                       'give n_bowl_points, bowl_rho and bowl_z', status)
+      if (.not. status%ok()) return
+      call check_list_length(r, 'n_bowl_points', n_bowl, 'bowl_rho', size(bowl_rho), 'points', status)
+      call check_list_length(r, 'n_bowl_points', n_bowl, 'bowl_z', size(bowl_z), 'points', status)
+    end if
     call r%get('start', start, status)
     call r%get('heading_deg', heading_deg, status)
     call r%get('transition_length', transition_length, status)
@@ -307,6 +323,10 @@ contains
       e(i) = slide_element_t(kind=kind(i), length=length(i), slope_deg=slope_deg(i), radius=radius(i), &
                              angle_deg=angle_deg(i), direction=direction(i), turns=turns(i), drop=drop(i), &
                              bowl_profile=bowl_profile(i))
+      if (bowl_profile(i) == 'table') then
+        e(i)%bowl_rho = bowl_rho
+        e(i)%bowl_z = bowl_z
+      end if
     end do
     described%elements = e
     call read_patches(status)

@@ -33,7 +33,7 @@ bad() {   # NAME TEXT EXPECTED [HEADER]
   [ -e "$work/$name/out.h5" ] && fail "$name: a result was written"
 }
 bad kind 'straight, 6.0,,,12.0
-slope, 3.0' "table.csv:3: column 1 (kind): 'slope': element 2: the kind must be straight, curve, helix, runout, drop or funnel"
+slope, 3.0' "table.csv:3: column 1 (kind): 'slope': element 2: the kind must be straight, curve, helix, runout, drop, bowl or funnel"
 bad number 'straight, six' "table.csv:2: column 2 (length): 'six': element 1: not a number"
 bad range 'straight, 6.0,,,90' "table.csv:2: column 5 (slope): '90': element 1: must be in [-45.0, 85.0] deg"
 bad steep 'straight, 6.0,,,50' "table.csv:2: column 5 (slope): '50.0': element 1: a straight's slope must lie in [-45, 45] (deg; only a drop is steeper)"

@@ -6,8 +6,8 @@
 # water run on it is refused before any work (exit 1, no file), the message
 # naming the surface; a drop that is not the first element is refused, and
 # so are sharp joints (transition_length = 0) that change slope or curvature,
-# and bowl elements that do not fit; the rider and the water start inside a
-# bowl.
+# and bowl elements that do not fit; a bowl is a row of an element table;
+# the rider and the water start inside a bowl.
 set -u
 slidesim=$1
 root=$(pwd)   # tests run from the repository root
@@ -49,7 +49,7 @@ refused sharp_joint "&slide_elements: slide elements: transition_length = 0 make
   slope_deg = 10, 10, radius = 0, 8, angle_deg = 0, 90 /"
 # a bowl element (tests/geometry/test_slide_bowl.f90): what does not fit is
 # refused with the element, the value and why; a bowl_profile on another
-# kind is refused, and a bowl in an element table (no bowl_profile column)
+# kind is refused
 refused bowl_too_deep "slide element 2 (bowl): drop = 3.0 m reaches the bottom of the spherical bowl" \
 "&run scenario = 'geometry' /
 &geometry kind = 'slide' /
@@ -60,11 +60,42 @@ refused bowl_profile_elsewhere "&slide_elements: bowl_profile(1) = 'cone' is not
 &geometry kind = 'slide' /
 &slide_elements n_elements = 2, kind = 'straight', 'bowl', length = 5, 0, slope_deg = 10, 50,
   radius = 0, 6, drop = 0, 2, turns = 0, 1, bowl_profile = 'cone' /"
-printf 'kind, length, slope, radius, drop, turns\nstraight, 5, 10\nbowl, 0, 50, 6, 2, 1\n' >"$work/bowl_table.csv"
-refused bowl_table "bowl_table.csv:3: column 1 (kind): 'bowl': element 2: a bowl is not a table row" \
+# a bowl is a row of an element table (with its profile column): the same
+# slide as from the namelist; a table bowl takes the namelist's points
+printf 'kind, length, slope, radius, drop, turns, profile\nstraight, 5, 10\nbowl, 0, 35, 6, 2, 1, cone\n' \
+  >"$work/bowl_rows.csv"
+printf 'kind, length, slope, radius, drop, turns, profile\nstraight, 5, 10\nbowl, 0, 0, 6, 2, 1, table\n' \
+  >"$work/bowl_table_rows.csv"
+bowl_points="n_bowl_points = 6, bowl_rho = 1, 2, 3, 4, 5, 7, bowl_z = 0.7, 1.4, 2.1, 2.8, 3.5, 4.9"
+for how in rows namelist table_rows table_namelist; do
+  case $how in
+    rows) given="&slide_elements elements_file = 'bowl_rows.csv' /" ;;
+    namelist) given="&slide_elements n_elements = 2, kind = 'straight', 'bowl', length = 5, 0, slope_deg = 10, 35,
+  radius = 0, 6, drop = 0, 2, turns = 0, 1, bowl_profile = 'sphere', 'cone' /" ;;
+    table_rows) given="&slide_elements elements_file = 'bowl_table_rows.csv', $bowl_points /" ;;
+    table_namelist) given="&slide_elements n_elements = 2, kind = 'straight', 'bowl', length = 5, 0,
+  slope_deg = 10, 0, radius = 0, 6, drop = 0, 2, turns = 0, 1, bowl_profile = 'sphere', 'table', $bowl_points /" ;;
+  esac
+  printf '%s\n' "&run scenario = 'geometry', output = 'bowl_$how.h5' /" "&geometry kind = 'slide' /" "$given" \
+    >"$work/bowl_$how.nml"
+  (cd "$work" && "$slidesim" -q "bowl_$how.nml" >"bowl_$how.out" 2>&1); got=$?
+  check '[ $got = 0 ]' "bowl from $how: exit $got: $(cat "$work/bowl_$how.out")"
+done
+check 'h5diff -q "$work/bowl_rows.h5" "$work/bowl_namelist.h5" /geometry/surface /geometry/surface' \
+  "a bowl row of a table and the namelist's bowl differ"
+check 'h5diff -q "$work/bowl_table_rows.h5" "$work/bowl_table_namelist.h5" /geometry/surface /geometry/surface' \
+  "a table bowl row and the namelist's table bowl differ"
+refused bowl_points_elsewhere "&slide_elements: bowl_rho = 1, 2, 3 is not allowed: only a bowl with bowl_profile = 'table' uses it" \
 "&run scenario = 'geometry' /
 &geometry kind = 'slide' /
-&slide_elements elements_file = 'bowl_table.csv' /"
+&slide_elements n_elements = 2, kind = 'straight', 'bowl', length = 5, 0, slope_deg = 10, 50,
+  radius = 0, 6, drop = 0, 2, turns = 0, 1, bowl_rho = 1, 2, 3 /"
+refused bowl_table_short "n_bowl_points = 5 is not allowed: must be a whole number in [6, 400]" \
+"&run scenario = 'geometry' /
+&geometry kind = 'slide' /
+&slide_elements n_elements = 2, kind = 'straight', 'bowl', length = 5, 0, slope_deg = 10, 0,
+  radius = 0, 4, drop = 0, 2, turns = 0, 1, bowl_profile = 'sphere', 'table', n_bowl_points = 5,
+  bowl_rho = 1, 2, 3, 4, 5, bowl_z = 0.7, 1.4, 2.1, 2.8, 3.5 /"
 # the rider's and the water's start inside the bowl (20 m along the
 # centerline, in its spiral): the rider's start closes and presses (--check
 # builds it), the water runs from there to the end of the slide
