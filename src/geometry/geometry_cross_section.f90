@@ -47,6 +47,14 @@ module geometry_cross_section
     procedure :: periodic => section_not_periodic
     procedure :: extent => section_extent
     procedure :: parameter_unit => section_parameter_unit
+    !> The radius of a section that is one circle at every u (m), 0 for any
+    !> other: the closed forms of a circle (the water's segment, the wall
+    !> position) are taken only where a kind says it is one.
+    procedure :: circle_radius => section_not_circle
+    !> Whether the section changes along u. A kind that does not say is
+    !> taken to change (the water then takes its area's rate along u: right
+    !> for every section, only slower where it does not change).
+    procedure :: varies_along => section_varies_along
   end type cross_section_t
 
   abstract interface
@@ -78,6 +86,8 @@ module geometry_cross_section
     procedure :: v_range => circle_range
     procedure :: periodic => circle_periodic
     procedure :: extent => circle_extent
+    procedure :: circle_radius => circle_circle_radius
+    procedure :: varies_along => circle_varies_along
   end type circle_section_t
 
   !> Ellipse s = [0, -a cos v, -b sin v]: half-width a (m), half-height b (m).
@@ -88,6 +98,7 @@ module geometry_cross_section
     procedure :: evaluate => ellipse_evaluate
     procedure :: v_range => ellipse_range
     procedure :: periodic => ellipse_periodic
+    procedure :: varies_along => ellipse_varies_along
   end type ellipse_section_t
 
   !> Open flume: semicircle of radius `radius` (v in [0, pi], bottom at pi/2)
@@ -101,6 +112,7 @@ module geometry_cross_section
   contains
     procedure :: evaluate => flume_evaluate
     procedure :: v_range => flume_range
+    procedure :: varies_along => flume_varies_along
   end type flume_section_t
 
   !> A profile given as points (y, z) in the frame, fitted by a spline curve
@@ -114,6 +126,7 @@ module geometry_cross_section
     procedure :: v_range => profile_range
     procedure :: periodic => profile_periodic
     procedure :: parameter_unit => profile_parameter_unit
+    procedure :: varies_along => profile_varies_along
   end type profile_section_t
 
   !> n sections blended along u (3.69): transition j (between sections j-1 and
@@ -139,6 +152,55 @@ contains
     end associate
     periodic = .false.
   end function section_not_periodic
+
+  pure real(wp) function section_not_circle(self) result(radius)
+    class(cross_section_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    radius = 0
+  end function section_not_circle
+
+  pure logical function section_varies_along(self) result(varies)
+    class(cross_section_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    varies = .true.
+  end function section_varies_along
+
+  ! the kinds that are one profile at every u
+
+  pure logical function circle_varies_along(self) result(varies)
+    class(circle_section_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    varies = .false.
+  end function circle_varies_along
+
+  pure logical function ellipse_varies_along(self) result(varies)
+    class(ellipse_section_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    varies = .false.
+  end function ellipse_varies_along
+
+  pure logical function flume_varies_along(self) result(varies)
+    class(flume_section_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    varies = .false.
+  end function flume_varies_along
+
+  pure logical function profile_varies_along(self) result(varies)
+    class(profile_section_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    varies = .false.
+  end function profile_varies_along
+
+  pure real(wp) function circle_circle_radius(self) result(radius)
+    class(circle_section_t), intent(in) :: self
+    radius = self%radius
+  end function circle_circle_radius
 
   !> Largest distance |s| of the section from the centerline at u (m), sampled
   !> at 181 values of v (used to check that the tube does not fold).

@@ -18,7 +18,24 @@
 !>                            give closed forms);
 !>   evaluate_with_centerline the surface point and the centerline point to
 !>                            order + 1 from one evaluation (the water's hook:
-!>                            its curvature and centerline speed).
+!>                            its curvature and centerline speed);
+!>   slice(u), evaluate_in_slice(slice, v)
+!>                            points across the section at one u, the
+!>                            centerline and its frame evaluated once for
+!>                            all of them (the water's section profile; a
+!>                            slide that keeps nothing evaluates each point);
+!>   section_circle_radius()  the radius if the section is one circle all
+!>                            along, else 0 (closed forms; general: 0);
+!>   section_varies()         whether the section changes along u (general:
+!>                            it may);
+!>   bottom_radius()          the smallest radius of curvature across the
+!>                            bottom (v = slide_bottom_v) along the slide:
+!>                            the room of a sphere resting there (general:
+!>                            sampled from the surface);
+!>   built()                  whether the slide has been built (general: yes).
+!> Each has a general answer that holds for any slide, so that a new kind
+!> is checked and read right without an edit elsewhere; a kind may answer
+!> more exactly or faster.
 !> The tube (geometry_tube) implements it; a bowl, a funnel or a half-pipe
 !> carries the rider and the water (water_channel) by implementing it too. A
 !> surface that does not gets the refusal of as_slide (the rider's first
@@ -28,16 +45,31 @@ module geometry_slide_query
   use base_constants, only: pi
   use base_vector, only: cross
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
+  use base_text, only: format_short
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_curve, only: curve_point_t
   use geometry_curve_frame, only: curve_frame_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
   implicit none (type, external)
   private
-  public :: slide_surface_t, as_slide, general_wall_position, slide_bottom_v
+  public :: slide_surface_t, slide_slice_t, as_slide, general_wall_position, general_bottom_radius, slide_bottom_v
 
   !> v at the bottom of a slide's section (the wall position's origin).
   real(wp), parameter :: slide_bottom_v = pi/2
+
+  !> Samples along u of the general bottom radius.
+  integer, parameter :: bottom_samples = 401
+
+  !> The slide at one u (slice): what a slide keeps there to evaluate points
+  !> across its section (`kept`: a swept slide's centerline point to order
+  !> + 1 and its frame to `order`); the general slide keeps only u.
+  type :: slide_slice_t
+    real(wp) :: u = 0
+    integer :: order = 0
+    logical :: kept = .false.
+    type(curve_point_t) :: c
+    type(curve_frame_t) :: f
+  end type slide_slice_t
 
   type, abstract, extends(surface_t) :: slide_surface_t
   contains
@@ -50,6 +82,12 @@ module geometry_slide_query
     procedure(section_edges_i), deferred :: section_edges
     procedure(evaluate_with_centerline_i), deferred :: evaluate_with_centerline
     procedure :: wall_position => general_wall_position
+    procedure :: slice => general_slice
+    procedure :: evaluate_in_slice => general_evaluate_in_slice
+    procedure :: section_circle_radius => general_no_circle
+    procedure :: section_varies => general_section_varies
+    procedure :: bottom_radius => general_bottom_radius
+    procedure :: built => general_built
   end type slide_surface_t
 
   abstract interface
@@ -181,4 +219,88 @@ contains
       distance = distance + w(i)*half*norm2(p%rv)
     end do
   end subroutine general_wall_position
+
+  !> The slice at u for points to `order`: the general slide keeps u alone.
+  pure subroutine general_slice(self, u, order, slice, status)
+    class(slide_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(slide_slice_t), intent(out) :: slice
+    type(status_t), intent(out) :: status
+    associate (unused => self)
+    end associate
+    status%code = 0
+    slice%u = u
+    slice%order = order
+  end subroutine general_slice
+
+  !> The surface point at (slice%u, v) to `order` (at most the slice's): the
+  !> same point as evaluate gives.
+  pure subroutine general_evaluate_in_slice(self, slice, v, order, p, status)
+    class(slide_surface_t), intent(in) :: self
+    type(slide_slice_t), intent(in) :: slice
+    real(wp), intent(in) :: v
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    call self%evaluate(slice%u, v, order, p, status)
+  end subroutine general_evaluate_in_slice
+
+  pure real(wp) function general_no_circle(self) result(radius)
+    class(slide_surface_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    radius = 0
+  end function general_no_circle
+
+  pure logical function general_section_varies(self) result(varies)
+    class(slide_surface_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    varies = .true.
+  end function general_section_varies
+
+  pure logical function general_built(self) result(built)
+    class(slide_surface_t), intent(in) :: self
+    associate (unused => self)
+    end associate
+    built = .true.
+  end function general_built
+
+  !> The smallest radius of curvature across the slide at its bottom
+  !> (v = slide_bottom_v), m, over bottom_samples values of u from start to
+  !> end, and the u where it is (huge where the bottom is nowhere hollow):
+  !> the normal curvature of the v-curve, n.r_vv/|r_v|^2 with the normal
+  !> r_u x r_v (into the slide), positive where the bottom is hollow. A
+  !> bottom that cannot be evaluated is an error naming u.
+  subroutine general_bottom_radius(self, radius, u_at, status)
+    class(slide_surface_t), intent(in) :: self
+    real(wp), intent(out) :: radius, u_at
+    type(status_t), intent(inout) :: status
+    type(surface_point_t) :: p
+    real(wp) :: u_min, u_max, v_min, v_max, u, n(3), bend
+    integer :: i
+    character(len=:), allocatable :: why
+    call self%domain(u_min, u_max, v_min, v_max)
+    radius = huge(1.0_wp)
+    u_at = u_min
+    do i = 0, bottom_samples - 1
+      u = u_min + (u_max - u_min)*i/real(bottom_samples - 1, wp)
+      call self%evaluate(u, slide_bottom_v, 2, p, status)
+      if (.not. status%ok()) then
+        why = status%text()
+        call set_status(status, STATUS_INVALID_INPUT, 'the slide''s bottom (v = pi/2) at u = '// &
+                        format_short(u)//': '//why)
+        return
+      end if
+      n = cross(p%ru, p%rv)
+      bend = dot_product(n, p%rvv)/norm2(n)
+      if (bend > 0) then
+        if (dot_product(p%rv, p%rv)/bend < radius) then
+          radius = dot_product(p%rv, p%rv)/bend
+          u_at = u
+        end if
+      end if
+    end do
+  end subroutine general_bottom_radius
 end module geometry_slide_query

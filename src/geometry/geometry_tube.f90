@@ -11,10 +11,11 @@
 !> the slide query (geometry_slide_query): it carries a rider.
 module geometry_tube
   use base_kinds, only: wp
-  use base_text, only: format_short, format_vector
+  use base_text, only: format_short, format_vector, format_integer
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_point_t
-  use geometry_slide_query, only: slide_surface_t, slide_bottom_v, general_wall_position
+  use geometry_slide_query, only: slide_surface_t, slide_slice_t, slide_bottom_v, general_wall_position, &
+                                  general_bottom_radius
   use geometry_curve, only: curve_t, curve_point_t, line_curve_t, helix_curve_t, s_bend_curve_t, constant_curve_t
   use geometry_curve_frame, only: curve_frame_t, curve_frame_from_points
   use geometry_cross_section, only: cross_section_t, section_point_t, circle_section_t
@@ -43,6 +44,12 @@ module geometry_tube
     procedure :: centerline_point => tube_centerline_point
     procedure :: section_edges => tube_section_edges
     procedure :: wall_position => tube_wall_position
+    procedure :: slice => tube_slice
+    procedure :: evaluate_in_slice => tube_evaluate_in_slice
+    procedure :: section_circle_radius => tube_section_circle_radius
+    procedure :: section_varies => tube_section_varies
+    procedure :: bottom_radius => tube_bottom_radius
+    procedure :: built => tube_built
     procedure :: check => tube_check
   end type tube_surface_t
 
@@ -124,7 +131,7 @@ contains
 
   !> The surface point and, from the same evaluation, the centerline point c
   !> with its derivatives to order + 1 (for the curvature, without evaluating
-  !> the centerline twice).
+  !> the centerline twice): the slice at u and the point in it.
   pure subroutine tube_evaluate_with_centerline(self, u, v, order, p, c, status)
     class(tube_surface_t), intent(in) :: self
     real(wp), intent(in) :: u, v
@@ -132,53 +139,87 @@ contains
     type(surface_point_t), intent(out) :: p
     type(curve_point_t), intent(out) :: c
     type(status_t), intent(out) :: status
+    type(slide_slice_t) :: slice
+    call tube_slice(self, u, order, slice, status)
+    if (.not. status%ok()) return
+    c = slice%c
+    call tube_evaluate_in_slice(self, slice, v, order, p, status)
+  end subroutine tube_evaluate_with_centerline
+
+  !> The tube at u: its centerline point to order + 1 and frame to `order`.
+  pure subroutine tube_slice(self, u, order, slice, status)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(slide_slice_t), intent(out) :: slice
+    type(status_t), intent(out) :: status
     type(curve_point_t) :: h
-    type(curve_frame_t) :: f
-    type(section_point_t) :: s
-    real(wp) :: t(3, 0:3, 0:3)   ! the section's part of d^(i+j) r/du^i dv^j (Leibniz in u)
-    integer :: i, j, m
     if (order < 0 .or. order > 3) then
       call set_status(status, STATUS_INVALID_INPUT, 'tube surface: order must be 0..3')
       return
     end if
-    call self%centerline%evaluate(u, order + 1, c, status)
+    slice%u = u
+    slice%order = order
+    call self%centerline%evaluate(u, order + 1, slice%c, status)
     if (.not. status%ok()) return
     call self%horizon%evaluate(u, order, h, status)
     if (.not. status%ok()) return
-    call curve_frame_from_points(c, h, order, f, status, with_curvature=.false.)
-    if (.not. status%ok()) return
-    call self%section%evaluate(u, v, order, s, status)
-    if (.not. status%ok()) return
-    ! a section that does not change along u (all but blended ones) leaves
-    ! one term of the sum over m
-    if (all(s%s(:, 1:order, 0:order - 1) == 0)) then
-      do j = 0, order
-        do i = 0, order - j
-          t(:, i, j) = f%y(:, i)*s%s(1, 0, j) + f%z(:, i)*s%s(2, 0, j)
-        end do
-      end do
-    else
-      do j = 0, order
-        do i = 0, order - j
-          t(:, i, j) = 0
-          do m = 0, i
-            t(:, i, j) = t(:, i, j) + binom(m, i)*(f%y(:, m)*s%s(1, i - m, j) + f%z(:, m)*s%s(2, i - m, j))
+    call curve_frame_from_points(slice%c, h, order, slice%f, status, with_curvature=.false.)
+    slice%kept = status%ok()
+  end subroutine tube_slice
+
+  !> The point at (slice%u, v) to `order` from the slice's centerline and
+  !> frame (Leibniz in u, module comment); the order must be the slice's
+  !> (the same bits as evaluate).
+  pure subroutine tube_evaluate_in_slice(self, slice, v, order, p, status)
+    class(tube_surface_t), intent(in) :: self
+    type(slide_slice_t), intent(in) :: slice
+    real(wp), intent(in) :: v
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    type(section_point_t) :: s
+    real(wp) :: t(3, 0:3, 0:3)   ! the section's part of d^(i+j) r/du^i dv^j (Leibniz in u)
+    integer :: i, j, m
+    if (.not. (slice%kept .and. order == slice%order)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'tube surface: a point of order '//format_integer(order)// &
+                      ' in a slice kept for order '//format_integer(slice%order))
+      return
+    end if
+    associate (u => slice%u, c => slice%c, f => slice%f)
+      call self%section%evaluate(u, v, order, s, status)
+      if (.not. status%ok()) return
+      ! a section that does not change along u (all but blended ones) leaves
+      ! one term of the sum over m
+      if (all(s%s(:, 1:order, 0:order - 1) == 0)) then
+        do j = 0, order
+          do i = 0, order - j
+            t(:, i, j) = f%y(:, i)*s%s(1, 0, j) + f%z(:, i)*s%s(2, 0, j)
           end do
         end do
-      end do
-    end if
-    p%order = order
-    p%r = c%d(:, 0) + t(:, 0, 0)
-    if (order >= 1) then
-      p%ru = c%d(:, 1) + t(:, 1, 0); p%rv = t(:, 0, 1)
-    end if
-    if (order >= 2) then
-      p%ruu = c%d(:, 2) + t(:, 2, 0); p%ruv = t(:, 1, 1); p%rvv = t(:, 0, 2)
-    end if
-    if (order >= 3) then
-      p%ruuu = c%d(:, 3) + t(:, 3, 0); p%ruuv = t(:, 2, 1); p%ruvv = t(:, 1, 2); p%rvvv = t(:, 0, 3)
-    end if
-  end subroutine tube_evaluate_with_centerline
+      else
+        do j = 0, order
+          do i = 0, order - j
+            t(:, i, j) = 0
+            do m = 0, i
+              t(:, i, j) = t(:, i, j) + binom(m, i)*(f%y(:, m)*s%s(1, i - m, j) + f%z(:, m)*s%s(2, i - m, j))
+            end do
+          end do
+        end do
+      end if
+      p%order = order
+      p%r = c%d(:, 0) + t(:, 0, 0)
+      if (order >= 1) then
+        p%ru = c%d(:, 1) + t(:, 1, 0); p%rv = t(:, 0, 1)
+      end if
+      if (order >= 2) then
+        p%ruu = c%d(:, 2) + t(:, 2, 0); p%ruv = t(:, 1, 1); p%rvv = t(:, 0, 2)
+      end if
+      if (order >= 3) then
+        p%ruuu = c%d(:, 3) + t(:, 3, 0); p%ruuv = t(:, 2, 1); p%ruvv = t(:, 1, 2); p%rvvv = t(:, 0, 3)
+      end if
+    end associate
+  end subroutine tube_evaluate_in_slice
 
   !> r = c + y s_y + z s_z on a grid: the centerline and its frame once per u.
   pure subroutine tube_points_on_grid(self, u, v, x, y, z, status)
@@ -361,14 +402,48 @@ contains
     real(wp), intent(in) :: u, v
     real(wp), intent(out) :: angle, distance
     type(status_t), intent(inout) :: status
-    select type (section => self%section)
-    type is (circle_section_t)
+    real(wp) :: radius
+    radius = self%section%circle_radius()
+    if (radius > 0) then
       angle = v - slide_bottom_v
-      distance = section%radius*angle
-    class default
+      distance = radius*angle
+    else
       call general_wall_position(self, u, v, angle, distance, status)
-    end select
+    end if
   end subroutine tube_wall_position
+
+  !> The section's circle radius (0: not a circle), from the section.
+  pure real(wp) function tube_section_circle_radius(self) result(radius)
+    class(tube_surface_t), intent(in) :: self
+    radius = self%section%circle_radius()
+  end function tube_section_circle_radius
+
+  pure logical function tube_section_varies(self) result(varies)
+    class(tube_surface_t), intent(in) :: self
+    varies = self%section%varies_along()
+  end function tube_section_varies
+
+  !> A tube is built with its centerline (a default tube_surface_t is not).
+  pure logical function tube_built(self) result(built)
+    class(tube_surface_t), intent(in) :: self
+    built = allocated(self%centerline) .and. allocated(self%horizon) .and. allocated(self%section)
+  end function tube_built
+
+  !> A circle's radius is its bottom's everywhere (and that of any arc of
+  !> the tube's surface across it: the circle is a line of curvature);
+  !> other sections: the general sampling.
+  subroutine tube_bottom_radius(self, radius, u_at, status)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(out) :: radius, u_at
+    type(status_t), intent(inout) :: status
+    real(wp) :: v_min, v_max, u_max
+    radius = self%section%circle_radius()
+    if (radius > 0) then
+      call self%domain(u_at, u_max, v_min, v_max)
+    else
+      call general_bottom_radius(self, radius, u_at, status)
+    end if
+  end subroutine tube_bottom_radius
 
   !> No part of the tube passes through another (the fold check above is
   !> local): centerline points far apart along the tube, by more than

@@ -1,7 +1,8 @@
 !> Scenario `geometry`: builds a surface from the geometry groups (a tube, a
 !> slide from standard elements, a blended surface) and writes to HDF5 a
-!> surface grid for plotting and, for tubes and slides, the centerline, the
-!> frames along it, the curvature chi, its derivative chi_u and the arc length.
+!> surface grid for plotting and, for every slide (a surface answering the
+!> slide query: tubes, slides of elements), the centerline, the frames along
+!> it, the curvature chi, its derivative chi_u and the arc length.
 !> Layout and units: docs/geometry.md.
 module scenarios_geometry
   use base_kinds, only: wp
@@ -11,7 +12,7 @@ module scenarios_geometry
   use geometry_surface, only: surface_t
   use geometry_curve, only: curve_point_t
   use geometry_curve_frame, only: curve_frame_t
-  use geometry_tube, only: tube_surface_t
+  use geometry_slide_query, only: slide_surface_t
   use io_input, only: input_text_t, check_known_groups, group_reader_t, open_group, format_real
   use io_run_config, only: run_config_t
   use io_geometry_config, only: read_geometry_description, explain_geometry_failure, geometry_groups
@@ -66,7 +67,7 @@ contains
     call summary%add_count('grid_n_u', 'surface grid along u', n_u, 'points')
     call summary%add_count('grid_n_v', 'surface grid along v', n_v, 'points')
     select type (surface)
-    type is (tube_surface_t)
+    class is (slide_surface_t)
       if (work%ok()) call write_centerline(file, surface, n_frames, summary, work)
     end select
     if (.not. work%ok()) call prefix_status(work, 'geometry')
@@ -115,9 +116,9 @@ contains
   end subroutine write_grid
 
   !> The centerline samples, and its length, drop and curvature in the summary.
-  subroutine write_centerline(file, tube, n, summary, status)
+  subroutine write_centerline(file, slide, n, summary, status)
     type(result_file_t), intent(inout) :: file
-    type(tube_surface_t), intent(in) :: tube
+    class(slide_surface_t), intent(in) :: slide
     integer, intent(in) :: n
     type(summary_t), intent(inout) :: summary
     type(status_t), intent(inout) :: status
@@ -127,27 +128,28 @@ contains
     type(curve_frame_t) :: f
     type(curve_point_t) :: c
     integer :: i
-    character(len=:), allocatable :: speed_units, chi_u_units
-    call tube%domain(u_min, u_max, v_min, v_max)
-    select case (tube%centerline%parameter_unit())   ! units of ds/du and d chi/du
+    character(len=:), allocatable :: speed_units, chi_u_units, u_unit, v_unit
+    call slide%domain(u_min, u_max, v_min, v_max)
+    call slide%parameter_units(u_unit, v_unit)
+    select case (u_unit)   ! units of ds/du and d chi/du
     case ('m'); speed_units = '1'; chi_u_units = 'm^-2'
     case ('1'); speed_units = 'm'; chi_u_units = 'm^-1'
     case default
-      speed_units = 'm/'//tube%centerline%parameter_unit()
-      chi_u_units = 'm^-1 '//tube%centerline%parameter_unit()//'^-1'
+      speed_units = 'm/'//u_unit
+      chi_u_units = 'm^-1 '//u_unit//'^-1'
     end select
     allocate (u(n), s(n), points(3, n), xa(3, n), ya(3, n), za(3, n), chi(n), chi_u(n), tangent_speed(n))
     do i = 1, n
       u(i) = u_min + (u_max - u_min)*(i - 1)/real(n - 1, wp)
-      call tube%frame(u(i), 2, f, status, c)
+      call slide%frame(u(i), 2, f, status, c)
       if (.not. status%ok()) return
-      s(i) = tube%arc_length(u(i))
+      s(i) = slide%arc_length(u(i))
       points(:, i) = c%d(:, 0)
       tangent_speed(i) = norm2(c%d(:, 1))
       xa(:, i) = f%x(:, 0); ya(:, i) = f%y(:, 0); za(:, i) = f%z(:, 0)
       chi(i) = f%chi; chi_u(i) = f%chi_u
     end do
-    call file%write_vector('/geometry/centerline/u', u, tube%centerline%parameter_unit(), &
+    call file%write_vector('/geometry/centerline/u', u, u_unit, &
                            'centerline parameter u (horizontal arc length in m for slides)', status)
     call file%write_vector('/geometry/centerline/arc_length', s, 'm', 'arc length s(u) from the start', status)
     call file%write_matrix('/geometry/centerline/points', points, 'm', 'c(u) (3 x n)', status)
@@ -157,11 +159,11 @@ contains
     call file%write_matrix('/geometry/centerline/frame_z', za, '1', 'frame z axis (3.63) (3 x n)', status)
     call file%write_vector('/geometry/centerline/chi', chi, 'm^-1', 'centerline curvature chi (4.8)', status)
     call file%write_vector('/geometry/centerline/chi_u', chi_u, chi_u_units, 'd chi/du (4.9)', status)
-    call file%write_scalar('/geometry/centerline/length', tube%length(), 'm', 'total centerline length', status)
+    call file%write_scalar('/geometry/centerline/length', slide%length(), 'm', 'total centerline length', status)
     call file%make_scale('/geometry/centerline/arc_length', status)
     call file%attach_scale('/geometry/centerline/arc_length', '/geometry/centerline', status)
     call file%attach_components('/geometry/centerline', status)
-    call summary%add('centerline_length', 'centerline length', tube%length(), 'm')
+    call summary%add('centerline_length', 'centerline length', slide%length(), 'm')
     call summary%add('drop', 'height drop', points(3, 1) - points(3, n), 'm')
     if (maxval(chi) > 1e-9_wp) then
       call summary%add('curvature_max', 'curvature max', maxval(chi), 'm^-1', '1/m (radius '// &

@@ -14,9 +14,7 @@ module scenarios_ride
   use base_text, only: format_short, format_integer
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_LIMITS_EXCEEDED
   use base_log, only: log_info, log_warning
-  use geometry_tube, only: tube_surface_t
   use geometry_slide_query, only: slide_surface_t
-  use geometry_cross_section, only: circle_section_t
   use water_run, only: water_description_t
   use water_curve_entry, only: curve_entry_note
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
@@ -224,29 +222,37 @@ contains
     end associate
   end subroutine refuse_start
 
-  !> The spheres must fit in the tube (a circular section's radius; other
-  !> sections and slides: no check).
+  !> The spheres must fit in the slide: none larger than the smallest radius
+  !> of curvature across its bottom along the slide (the slide query's
+  !> bottom_radius: a circle's radius; any other slide or section sampled
+  !> from its surface). A bottom that cannot be read is refused with why.
   subroutine check_sphere_radii(input, rider, slide, status)
     type(input_text_t), intent(in) :: input
     type(rider_params_t), intent(in) :: rider
     class(slide_surface_t), intent(in) :: slide
     type(status_t), intent(inout) :: status
+    type(status_t) :: st
+    real(wp) :: room, u_at
     integer :: k
-    select type (slide)
-    type is (tube_surface_t)
-      select type (section => slide%section)
-      type is (circle_section_t)
-        do k = 1, N_CONTACTS
-          if (rider%drag_radius(k) > section%radius) then
-            call invalid(input, 'rider', 'drag_radius('//format_integer(k)//')', &
-                         format_real(rider%drag_radius(k)), 'the '//trim(contact_names(k))// &
-                         ' sphere must fit in the tube: at most its radius '//format_real(section%radius)//' m', &
-                         status)
-            return
-          end if
-        end do
-      end select
-    end select
+    if (.not. status%ok()) return
+    call slide%bottom_radius(room, u_at, st)
+    if (.not. st%ok()) then
+      call invalid(input, 'rider', 'drag_radius', format_real(maxval(rider%drag_radius)), &
+                   'the spheres'' room in the slide could not be checked: '//st%text(), status)
+      return
+    end if
+    do k = 1, N_CONTACTS
+      ! a sampled room carries rounding (~1e-15 relative): a sphere of the
+      ! section's own radius fits
+      if (rider%drag_radius(k) > room*(1 + 1e-9_wp)) then
+        call invalid(input, 'rider', 'drag_radius('//format_integer(k)//')', &
+                     format_real(rider%drag_radius(k)), 'the '//trim(contact_names(k))// &
+                     ' sphere must fit in the slide: at most the radius of curvature across its bottom, '// &
+                     format_short(room)//' m (the smallest, at '//format_short(slide%arc_length(u_at))// &
+                     ' m of arc length)', status)
+        return
+      end if
+    end do
   end subroutine check_sphere_radii
 
   !> XDMF next to the result: the slide, the water band, the contacts' paths

@@ -6,11 +6,12 @@
 !> needs of it: the surface r(u, v) (u along the centerline, v across;
 !> v = pi/2 at the bottom of a circular tube, growing to the left of the
 !> direction of travel), the centerline c(u) for the curvature chi (thesis
-!> 4.8) and its rate, and the cross-section: a tube's circle of radius r in
-!> closed form, any other profile read from the surface itself (thesis 4.6).
-!> A slide that is not a tube says nothing of its section: its profile is
-!> read from the surface, and taken to change along u (the area's rate by
-!> differences), which holds for any section.
+!> 4.8) and its rate, and the cross-section: a circle of radius r in closed
+!> form where the slide says its section is one (section_circle_radius), any
+!> other profile read from the surface itself (thesis 4.6), taken to change
+!> along u (the area's rate by differences) unless the slide says it does not
+!> (section_varies: a slide or section kind that says nothing is read the
+!> general way, which holds for any section).
 !>
 !> chi_s: the thesis (4.9) differentiates chi by the centerline parameter u.
 !> With f3 in kg m the friction term f3 chi_u w^2 is a force only if u is an
@@ -26,11 +27,7 @@ module water_channel
   use geometry_surface, only: surface_point_t
   use geometry_curve, only: curve_point_t
   use geometry_curve_frame, only: curve_curvature
-  use geometry_cross_section, only: circle_section_t, blended_section_t
-  use geometry_funnel_section, only: funnel_section_t
-  use geometry_patch_section, only: patch_section_t
-  use geometry_slide_query, only: slide_surface_t
-  use geometry_tube, only: tube_surface_t
+  use geometry_slide_query, only: slide_surface_t, slide_slice_t
   implicit none (type, external)
   private
   public :: channel_t, new_channel
@@ -38,10 +35,14 @@ module water_channel
   type :: channel_t
     class(slide_surface_t), allocatable :: slide   ! the slide query (geometry_slide_query)
     real(wp) :: radius = 0        ! m, the circle's radius; 0 if the section is not a circle
-    logical :: varies = .false.   ! the profile changes along u (a blended or funnel section, a slide not a tube)
+    logical :: varies = .false.   ! the profile changes along u (the slide's section_varies)
   contains
     !> r(u, v) and partials to `order` (0..3).
     procedure :: evaluate => channel_evaluate
+    !> The slide at u for points to `order` across its section, and a point
+    !> in it: the centerline evaluated once for the section's profile.
+    procedure :: slice => channel_slice
+    procedure :: evaluate_in_slice => channel_evaluate_in_slice
     !> The surface point to order 2 with chi, chi_s, |c_u| and d|c_u|/du from
     !> one evaluation of the centerline (the water model's hot path).
     procedure :: evaluate_with_curvature => channel_evaluate_with_curvature
@@ -65,27 +66,14 @@ module water_channel
 
 contains
 
-  !> The channel of a slide: a tube's section read from its cross-section, any
-  !> other slide's from the surface (module comment).
+  !> The channel of a slide: its section as the slide says it is (module
+  !> comment).
   function new_channel(slide) result(c)
     class(slide_surface_t), intent(in) :: slide
     type(channel_t) :: c
     c%slide = slide
-    select type (slide)
-    type is (tube_surface_t)
-      select type (s => slide%section)
-      type is (circle_section_t)
-        c%radius = s%radius
-      type is (blended_section_t)
-        c%varies = .true.
-      type is (funnel_section_t)
-        c%varies = .true.
-      type is (patch_section_t)
-        c%varies = .true.
-      end select
-    class default
-      c%varies = .true.
-    end select
+    c%radius = slide%section_circle_radius()
+    c%varies = slide%section_varies()
   end function new_channel
 
   pure subroutine channel_evaluate(self, u, v, order, p, status)
@@ -96,6 +84,25 @@ contains
     type(status_t), intent(out) :: status
     call self%slide%evaluate(u, v, order, p, status)
   end subroutine channel_evaluate
+
+  pure subroutine channel_slice(self, u, order, slice, status)
+    class(channel_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    integer, intent(in) :: order
+    type(slide_slice_t), intent(out) :: slice
+    type(status_t), intent(out) :: status
+    call self%slide%slice(u, order, slice, status)
+  end subroutine channel_slice
+
+  pure subroutine channel_evaluate_in_slice(self, slice, v, order, p, status)
+    class(channel_t), intent(in) :: self
+    type(slide_slice_t), intent(in) :: slice
+    real(wp), intent(in) :: v
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    call self%slide%evaluate_in_slice(slice, v, order, p, status)
+  end subroutine channel_evaluate_in_slice
 
   pure subroutine channel_evaluate_with_curvature(self, u, v, p, chi, chi_s, speed, speed_u, status)
     class(channel_t), intent(in) :: self

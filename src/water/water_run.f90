@@ -15,7 +15,6 @@ module water_run
   use base_log, only: log_sink_i
   use numerics_ode, only: ode_options_t
   use geometry_slide_query, only: slide_surface_t
-  use geometry_tube, only: tube_surface_t
   use water_channel, only: channel_t, new_channel
   use water_streamline, only: streamline_t, default_f1, default_f2, default_f3, CORRECTION_FULL, &
     CORRECTION_NO_RADIUS, CORRECTION_OFF
@@ -232,15 +231,12 @@ contains
     if (.not. status%ok()) call prefix_status(status, 'water description: start%u0 = '//format_short(arc)//' m')
   end subroutine start_parameter
 
-  !> A slide is given (a tube: with its centerline).
+  !> A slide is given and built (the slide query's built: a tube with its
+  !> centerline).
   pure logical function slide_built(slide)
     class(slide_surface_t), allocatable, intent(in) :: slide
     slide_built = allocated(slide)
-    if (.not. slide_built) return
-    select type (slide)
-    type is (tube_surface_t)
-      slide_built = allocated(slide%centerline)
-    end select
+    if (slide_built) slide_built = slide%built()
   end function slide_built
 
   !> Runs the water of `description` to the end of the slide (or its time

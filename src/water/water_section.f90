@@ -24,6 +24,7 @@ module water_section
   use base_status, only: status_t, set_status, STATUS_DOMAIN, STATUS_NOT_CONVERGED
   use base_vector, only: cross
   use geometry_surface, only: surface_point_t
+  use geometry_slide_query, only: slide_slice_t
   use water_channel, only: channel_t
   implicit none (type, external)
   private
@@ -88,13 +89,17 @@ contains
       0.1420961093183820_wp, 0.1316886384491766_wp, 0.1181945319615184_wp, 0.1019301198172404_wp, &
       0.0832767415767048_wp, 0.0626720483341091_wp, 0.0406014298003869_wp, 0.0176140071391521_wp]
     type(surface_point_t) :: p0, q
+    type(slide_slice_t) :: slice
     real(wp) :: c(3, 0:3), t(3), n(3), e(3), mid, half, eta_l, eta_r, zeta, vv
     integer :: j, k
 
     area = 0; width = 0; v_left = v0; v_right = v0
     call channel%centerline(u, c, status)
     if (.not. status%ok()) return
-    call channel%evaluate(u, v0, 1, p0, status)
+    ! every point below is at this u: the centerline and its frame once
+    call channel%slice(u, 1, slice, status)
+    if (.not. status%ok()) return
+    call channel%evaluate_in_slice(slice, v0, 1, p0, status)
     if (.not. status%ok()) return
     t = c(:, 1)/norm2(c(:, 1))
     n = cross(p0%ru, p0%rv)
@@ -111,7 +116,7 @@ contains
     do j = 1, 10
       do k = -1, 1, 2
         vv = mid + k*half*x(j)
-        call channel%evaluate(u, vv, 1, q, status)
+        call channel%evaluate_in_slice(slice, vv, 1, q, status)
         if (.not. status%ok()) return
         zeta = dot_product(q%r - p0%r, n)
         area = area + half*wt(j)*(h - zeta)*dot_product(q%rv, e)
@@ -134,7 +139,7 @@ contains
       do i = 1, 200
         hi = lo + dir*step
         if (hi < v_min .or. hi > v_max) hi = merge(v_max, v_min, dir > 0)
-        call channel%evaluate(u, hi, 1, s, st)
+        call channel%evaluate_in_slice(slice, hi, 1, s, st)
         if (.not. st%ok()) return
         if (dot_product(s%r - p0%r, n) >= h) exit
         if (hi == v_min .or. hi == v_max .or. i == 200) then
@@ -148,7 +153,7 @@ contains
       ! zeta(lo) < h <= zeta(hi); bracketed Newton in v
       v_edge = hi
       do i = 1, 100
-        call channel%evaluate(u, v_edge, 1, s, st)
+        call channel%evaluate_in_slice(slice, v_edge, 1, s, st)
         if (.not. st%ok()) return
         z = dot_product(s%r - p0%r, n) - h
         dz = dot_product(s%rv, n)

@@ -4,7 +4,7 @@
 # are refused before any work (exit status 1, no result file), each message
 # naming what is wrong: a negative mass, a start where the heels cannot reach
 # the slide (which contact and by how much), a drag sphere larger than the
-# tube, a limit in a unit of the wrong kind, a rider at rest where the start
+# tube or than a flume's bottom, a limit in a unit of the wrong kind, a rider at rest where the start
 # is not steeper than its friction holds. A ride that fails part way (too
 # few steps allowed) prints its whole report, the results line last, before
 # the error, also when both streams go to one file.
@@ -43,6 +43,15 @@ bad heels_across "s/heading0_deg = 0.0/heading0_deg = 90.0/; s/height = 1.78/hei
 bad sphere_too_large "s/drag_radius = 0.5, 0.05, 0.5/drag_radius = 0.6, 0.05, 0.5/" "drag_radius(1) = 0.6 is not allowed"
 # at rest (speed0 = 0, a drop's trap door) only where the start is steeper than mu holds (12 deg: tan 0.21)
 bad at_rest_held "s/speed0 = 1.0/speed0 = 0.0/; s/mu = 0.0724419/mu = 0.3/" "needs a start steeper than its friction holds: tan(slope) = 0.2125"
+# the spheres are checked on every slide, not only a circular tube: the bowl
+# slide's open U (a flume of radius 0.6 m) holds no 0.7 m sphere (before, no
+# check: the ride ran)
+sed -e "s/drag_radius = 0.5, 0.05, 0.5/drag_radius = 0.7, 0.05, 0.5/" "$repo/inputs/parts/bowl.nml" | \
+  sed "s|'bowl_slide.nml'|'$repo/inputs/parts/bowl_slide.nml'|" >"$work/flume_sphere.nml"
+(cd "$work" && "$slidesim" -q --check flume_sphere.nml >flume_sphere.out 2>flume_sphere.err); got=$?
+check '[ $got = 1 ]' "flume_sphere: exit status $got, expected 1 ($(cat "$work/flume_sphere.err"))"
+check 'grep -q "drag_radius(1) = 0.7 is not allowed.*must fit in the slide.* 0.6 m" "$work/flume_sphere.err"' \
+  "flume_sphere: message: $(cat "$work/flume_sphere.err")"
 bad limit_unit "s/limit_unit     = 'm\/s',        'm\/s',   'm'/limit_unit = 'g', 'm\/s', 'm'/" "unit 'g' does not measure exit_speed"
 
 # failed part way, standard output and error into one file: the report's
