@@ -174,8 +174,9 @@ def variable_names(*texts):
     return {m.group(1).lower() for text in texts for m in NAME.finditer(text.lower())}
 
 
-# a file an input names: variable = 'path' or variable(i) = 'path' (patch_file(3)) outside comments (not built-in inputs)
-FILE_NAMED = re.compile(r"\b(\w*file)(?:\(\d+\))?\s*=\s*'([^']+)'")
+# a file an input names: variable = 'path' or variable(i) = 'path' (patch_file(3)) outside comments (not built-in inputs);
+# a file variable is `file` or `<something>_file` (not `bowl_profile`)
+FILE_NAMED = re.compile(r"\b((?:\w+_)?file)(?:\(\d+\))?\s*=\s*'([^']+)'")
 
 
 def output_mutants(slidesim, tree, work, failures, counts):
