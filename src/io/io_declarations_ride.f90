@@ -108,13 +108,14 @@ module io_declarations_ride
       meaning='restitution e of a landing (0: plastic, on the water film; with may_fly only)'), &
     declaration_t(groups='rider', name='landing_mu', unit='1', default='0.0724419', low=0.0_wp, high=10.0_wp, &
       meaning='Coulomb mu during a landing (thesis table 4.8''s mu_D; with may_fly only)'), &
-    declaration_t(groups='rider', name='limit_quantity', kind=VALUE_WORDS, shape='per limit, at most 20', &
-      default='none', meaning='what limit k bounds (docs/rider.md lists the quantities), without gaps'), &
-    declaration_t(groups='rider', name='limit_min', shape='per limit, at most 20', unit='the limit''s unit', &
+    declaration_t(groups='rider sled', name='limit_quantity', kind=VALUE_WORDS, shape='per limit, at most 20', &
+      default='none', meaning='what limit k bounds (docs/rider.md lists the quantities; a vehicle''s: '// &
+      'docs/vehicles.md), without gaps'), &
+    declaration_t(groups='rider sled', name='limit_min', shape='per limit, at most 20', unit='the limit''s unit', &
       default='none', low=-1e6_wp, high=1e6_wp, meaning='lower bound of limit k'), &
-    declaration_t(groups='rider', name='limit_max', shape='per limit, at most 20', unit='the limit''s unit', &
+    declaration_t(groups='rider sled', name='limit_max', shape='per limit, at most 20', unit='the limit''s unit', &
       default='none', low=-1e6_wp, high=1e6_wp, meaning='upper bound of limit k'), &
-    declaration_t(groups='rider', name='limit_unit', kind=VALUE_WORDS, shape='per limit, at most 20', &
+    declaration_t(groups='rider sled', name='limit_unit', kind=VALUE_WORDS, shape='per limit, at most 20', &
       default='none', meaning='the unit of limit k''s bounds (required; docs/rider.md)'), &
     ! ---- &water (flow_rate, f1, f2, f3 also in &sweep)
     declaration_t(groups='water sweep', name='flow_rate', unit='m^3/s', default='0.004', low=1e-6_wp, &

@@ -21,6 +21,7 @@ module io_rider_config
   implicit none (type, external)
   private
   public :: read_rider_config, read_ride_gravity, require_coulomb_rider, open_rider_group, rider_friction_defaults, max_limits
+  public :: read_limits
 
   integer, parameter :: max_limits = 20
 
@@ -40,20 +41,11 @@ contains
     type(group_reader_t) :: r
     character(len=8) :: sex
     character(len=32) :: friction
-    character(len=32) :: quantity(max_limits), unit(max_limits)
-    real(wp) :: minimum(max_limits), maximum(max_limits), heading_deg
-    logical :: has_quantity(max_limits), has_unit(max_limits), has_min(max_limits), has_max(max_limits)
-    character(len=:), allocatable :: problem
-    character(len=*), parameter :: count_text = 'at most 20 limits'
-    integer :: n, k
+    real(wp) :: heading_deg
 
     sex = 'male'
     friction = 'coulomb'
     heading_deg = 0
-    quantity = ''
-    unit = ''
-    minimum = 0
-    maximum = 0
     associate (p => rider)
       call open_rider_group(input, r, status)
       call r%get('sex', sex, status)
@@ -79,10 +71,6 @@ contains
         call r%refuse_given([character(len=19) :: 'landing_restitution', 'landing_mu'], &
                             'a ride without may_fly = .true. has no landing', status)
       end if
-      call r%get_parts('limit_quantity', quantity, count_text, status, given=has_quantity)
-      call r%get_parts('limit_unit', unit, count_text, status, given=has_unit)
-      call r%get_parts('limit_min', minimum, count_text, status, given=has_min)
-      call r%get_parts('limit_max', maximum, count_text, status, given=has_max)
       if (.not. status%ok()) return
       ! the law at the three contacts, Coulomb's mu the rider's mu_D unless given
       p%friction%kind = trim(friction)
@@ -99,6 +87,37 @@ contains
       end if
     end associate
 
+    call read_limits(r, norm2(rider%gravity), options%may_fly, limits, status)
+  end subroutine read_rider_config
+
+  !> The limits of the group `r` reads (&rider; &sled for a vehicle):
+  !> limit_quantity, limit_unit, limit_min, limit_max, entries 1..n, each a
+  !> known quantity with a unit and a bound (design_ride_evaluation);
+  !> `gravity_magnitude` (m/s^2) defines 'g'; a flight's quantity needs
+  !> `may_fly`.
+  subroutine read_limits(r, gravity_magnitude, may_fly, limits, status)
+    type(group_reader_t), intent(in) :: r
+    real(wp), intent(in) :: gravity_magnitude
+    logical, intent(in) :: may_fly
+    type(ride_limit_t), allocatable, intent(out) :: limits(:)
+    type(status_t), intent(inout) :: status
+    character(len=32) :: quantity(max_limits), unit(max_limits)
+    real(wp) :: minimum(max_limits), maximum(max_limits)
+    logical :: has_quantity(max_limits), has_unit(max_limits), has_min(max_limits), has_max(max_limits)
+    character(len=:), allocatable :: problem
+    character(len=*), parameter :: count_text = 'at most 20 limits'
+    integer :: n, k
+
+    quantity = ''
+    unit = ''
+    minimum = 0
+    maximum = 0
+    allocate (limits(0))
+    call r%get_parts('limit_quantity', quantity, count_text, status, given=has_quantity)
+    call r%get_parts('limit_unit', unit, count_text, status, given=has_unit)
+    call r%get_parts('limit_min', minimum, count_text, status, given=has_min)
+    call r%get_parts('limit_max', maximum, count_text, status, given=has_max)
+    if (.not. status%ok()) return
     ! limits: entries 1..n, each a known quantity with a unit and a bound
     n = count(has_quantity)
     if (any(has_quantity(n + 1:))) then
@@ -113,6 +132,7 @@ contains
         return
       end if
     end do
+    deallocate (limits)
     allocate (limits(n))
     do k = 1, n
       if (.not. has_unit(k)) then
@@ -121,8 +141,8 @@ contains
         return
       end if
       call new_ride_limit(quantity(k), unit(k), minimum(k), has_min(k), maximum(k), has_max(k), &
-                          norm2(rider%gravity), limits(k), problem)
-      if (len(problem) == 0 .and. flight_quantity(quantity(k)) .and. .not. options%may_fly) &
+                          gravity_magnitude, limits(k), problem)
+      if (len(problem) == 0 .and. flight_quantity(quantity(k)) .and. .not. may_fly) &
         problem = trim(quantity(k))//' limits a flight: it needs may_fly = .true. (without it a lift-off ends '// &
                   'the ride)'
       if (len(problem) > 0) then
@@ -131,7 +151,7 @@ contains
         return
       end if
     end do
-  end subroutine read_rider_config
+  end subroutine read_limits
 
   !> The rider's own defaults of its friction laws' parameters: Coulomb's mu
   !> is mu_D (thesis table 4.8).

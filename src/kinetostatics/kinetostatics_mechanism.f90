@@ -48,7 +48,7 @@ module kinetostatics_mechanism
   use kinetostatics_contact, only: contact_t, contact_state_t, contact_kinematics, NORMAL_FRAME_FORCE, &
     NORMAL_CUT_FORCE
   use kinetostatics_force_law, only: force_law_t, force_law_box_t
-  use kinetostatics_mechanism_workspace, only: mechanism_workspace_t, WORKSPACE_SIZES
+  use kinetostatics_mechanism_workspace, only: mechanism_workspace_t, WORKSPACE_SIZES, recent_solutions
   use kinetostatics_closure_blocks, only: closure_blocks_t, element_reach_t, build_closure_blocks, &
     find_element_links, downstream_of
   implicit none (type, external)

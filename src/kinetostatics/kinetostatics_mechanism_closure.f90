@@ -236,6 +236,7 @@ contains
     ! slowly, with J_beta at the iterate (at most 4 such steps)
     x = start
     if (predicted) x = start - work%work_r
+    if (work%warm .and. .not. predicted) call nearer_solution(self, work, q, x)
     converged = .false.
     chord = predicted
     polished = .false.
@@ -329,6 +330,7 @@ contains
     if (.not. status%ok()) return
     work%warm = .true.
     work%converged = .true.
+    call keep_solution(self, work, q)
     call factor_filled_rates(self, work, status)
   end procedure set_positions
 
@@ -376,6 +378,62 @@ contains
     if (0.5_wp*maxval(abs(work%res_r)) <= 0.1_wp*maxval(abs(work%work_r))) &
       work%work_r = work%work_r + 0.5_wp*work%res_r
   end subroutine predict_dependents
+
+  !> The solution just found (beta in the scalars, at `q`) joins the recent
+  !> ones, in place of the oldest.
+  subroutine keep_solution(self, work, q)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(inout) :: work
+    real(wp), intent(in) :: q(:)
+    integer :: k
+    associate (slot => work%recent_next)
+      do k = 1, self%r
+        work%recent_r(k, slot) = work%scalars(self%beta(k))%q
+      end do
+      work%recent_q(:, slot) = q
+      work%recent_charts(slot) = charts_changed(self, work)
+      slot = 1 + mod(slot, recent_solutions)
+    end associate
+  end subroutine keep_solution
+
+  !> After a failed solve: the warm start `x` is the recent solution found
+  !> at the q nearest `q` (max norm), in the same charts. The last solution
+  !> alone will not do: the integrator's rejected trial step leaves its
+  !> solutions as the last ones, and from there, at the retry's q far
+  !> behind, Newton can leave the surface's domain on every retry (a double
+  !> ring on the bowl slide, docs/vehicles.md: 4.7 m behind).
+  subroutine nearer_solution(self, work, q, x)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(in) :: work
+    real(wp), intent(in) :: q(:)
+    real(wp), intent(inout) :: x(:)
+    integer :: charts, k, best
+    real(wp) :: distance, nearest
+    charts = charts_changed(self, work)
+    best = 0
+    nearest = huge(1.0_wp)
+    do k = 1, recent_solutions
+      if (work%recent_charts(k) /= charts) cycle
+      distance = maxval(abs(q - work%recent_q(:, k)))
+      if (distance < nearest) then
+        nearest = distance
+        best = k
+      end if
+    end do
+    if (best > 0) x = work%recent_r(:, best)
+  end subroutine nearer_solution
+
+  !> How many times the elements' charts have changed (a solution's
+  !> coordinates hold only in the charts it was found in).
+  integer function charts_changed(self, work) result(n)
+    class(mechanism_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(in) :: work
+    integer :: k
+    n = 0
+    do k = 1, self%n_elements
+      n = n + work%elements(k)%e%chart_changes()
+    end do
+  end function charts_changed
 
   !> Every loop with a branch condition on it (set_loop_branch).
   subroutine check_branches(self, work, status)

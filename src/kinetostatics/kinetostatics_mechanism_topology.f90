@@ -293,7 +293,8 @@ contains
                   work%law_power, work%unit_power, work%law_roots, work%contact_states, work%gq, &
                   work%g_mat, work%p_mat, work%h_mat, work%laws, work%law_factor, work%normal_force)
       deallocate (work%known_q, work%known_s, work%known_active, work%work_r, work%work_x, work%x_r, &
-                  work%start_r, work%res_r, work%work_f, work%work_c, work%chol, work%n0, work%block, &
+                  work%start_r, work%res_r, work%recent_r, work%recent_q, &
+                  work%work_f, work%work_c, work%chol, work%n0, work%block, &
                   work%block_rhs, work%signs, work%ipiv_block, work%twist, work%wrench, work%unknown_twist, &
                   work%nu, work%load_wrench)
     end if
@@ -322,6 +323,9 @@ contains
     allocate (work%known_q(self%f), work%known_s(n), work%known_active(self%n_laws))
     allocate (work%work_r(self%r), work%work_x(nx), work%x_r(self%r), work%start_r(self%r), work%res_r(self%r), &
               work%work_f(n), work%work_c(nc))
+    allocate (work%recent_r(self%r, recent_solutions), work%recent_q(self%f, recent_solutions))
+    work%recent_charts = -1
+    work%recent_next = 1
     allocate (work%chol(n, n), work%n0(nc), work%block(n + nb, n + nb), work%block_rhs(n + nb), work%signs(nb), &
               work%ipiv_block(n + nb))
     allocate (work%twist(6, nt, n), work%wrench(6, nt, n), work%unknown_twist(6, nt, size(self%moving_unknowns)), &

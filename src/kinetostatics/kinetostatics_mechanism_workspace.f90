@@ -34,6 +34,10 @@ module kinetostatics_mechanism_workspace
   !> How many sizes of the mechanism the workspace is made for (dims).
   integer, parameter :: WORKSPACE_SIZES = 12
 
+  !> How many recent closure solutions a workspace keeps (below): more than
+  !> the solves of one rejected trial step (Adams: up to 4 per stage).
+  integer, parameter, public :: recent_solutions = 8
+
   type :: mechanism_workspace_t
     integer :: dims(WORKSPACE_SIZES) = -1        ! the mechanism's sizes it was made for (prepare_workspace)
     ! the state of an integration (copied from the mechanism's model by prepare_workspace)
@@ -76,6 +80,14 @@ module kinetostatics_mechanism_workspace
     real(wp), allocatable :: work_r(:)                       ! r: J_beta solves, the predictor's correction
     real(wp), allocatable :: work_x(:)                       ! r + nd: the combined [beta'; sigma'] system
     real(wp), allocatable :: x_r(:), start_r(:), res_r(:)    ! r: Newton's iterate, warm start, residual
+    ! the last closure solutions (beta, q), a ring of `recent_solutions`, and
+    ! the charts' changes when each was found (-1: none): after a failed
+    ! solve the warm start is the one nearest the new q (a trial step the
+    ! integrator rejected leaves its solutions far ahead;
+    ! kinetostatics_mechanism_closure)
+    real(wp), allocatable :: recent_r(:, :), recent_q(:, :)  ! r x recent_solutions, f x recent_solutions
+    integer :: recent_charts(recent_solutions) = -1
+    integer :: recent_next = 1                               ! the slot the next solution takes
     real(wp), allocatable :: work_f(:)                       ! ns: a unit s' (mass-matrix columns)
     real(wp), allocatable :: work_c(:)                       ! contacts: normal forces of a record
     ! the equations of motion

@@ -196,9 +196,9 @@ contains
     if (.not. allocated(run%export_obj)) run%export_obj = ''
     call read_run_config(input, scenario_names, run, status)
     if (.not. status%ok()) return
-    if (run%fail_on_limit .and. all(trim(run%scenario) /= [character(len=5) :: 'ride', 'sweep'])) then
+    if (run%fail_on_limit .and. all(trim(run%scenario) /= [character(len=5) :: 'ride', 'sweep', 'sled'])) then
       call set_status(status, STATUS_INVALID_INPUT, input%name//': --fail-on-limit: scenario '// &
-                      trim(run%scenario)//' judges no ride limits (ride and sweep do)')
+                      trim(run%scenario)//' judges no ride limits (ride, sweep and a vehicle''s sled do)')
       return
     end if
     cli_output = .false.

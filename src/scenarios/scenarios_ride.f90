@@ -163,24 +163,28 @@ contains
   !> Whether a limit exceeded fails the run (exit status 4): --fail-on-limit
   !> or &evaluation fail_on_limit. Asked with no limit to judge, the run
   !> would pass whatever the ride did: refused.
-  subroutine read_limit_gate(input, run, limits, fail_on_limit, status)
+  subroutine read_limit_gate(input, run, limits, fail_on_limit, status, limits_group)
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
     type(ride_limit_t), intent(in) :: limits(:)
     logical, intent(out) :: fail_on_limit
     type(status_t), intent(inout) :: status
+    character(len=*), intent(in), optional :: limits_group   ! the group of the limits ('rider')
     type(evaluation_config_t) :: evaluation
+    character(len=:), allocatable :: group
     fail_on_limit = .false.
+    group = 'rider'
+    if (present(limits_group)) group = limits_group
     call read_evaluation_config(input, evaluation, status)
     if (.not. status%ok()) return
     fail_on_limit = evaluation%fail_on_limit .or. run%fail_on_limit
     if (fail_on_limit .and. size(limits) == 0) then
       if (evaluation%fail_on_limit) then
         call invalid(input, 'evaluation', 'fail_on_limit', '.true.', 'there is no limit to fail on: set '// &
-                     'limits in &rider (limit_quantity, limit_unit, limit_min or limit_max)', status)
+                     'limits in &'//group//' (limit_quantity, limit_unit, limit_min or limit_max)', status)
       else
         call set_status(status, STATUS_INVALID_INPUT, input%name//': --fail-on-limit: there is no limit to '// &
-                        'fail on: set limits in &rider (limit_quantity, limit_unit, limit_min or limit_max)')
+                        'fail on: set limits in &'//group//' (limit_quantity, limit_unit, limit_min or limit_max)')
       end if
     end if
   end subroutine read_limit_gate

@@ -8,7 +8,14 @@ module scenarios_sled
   use base_kinds, only: wp
   use base_status, only: status_t
   use geometry_surface, only: surface_t
-  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_END_OF_SURFACE
+  use geometry_slide_query, only: slide_surface_t
+  use design_ride_evaluation, only: ride_limit_t, limit_verdict_t, evaluate_limit, limit_report_unit
+  use io_input, only: group_reader_t, open_group
+  use io_friction_config, only: friction_law_variables
+  use io_rider_config, only: read_limits
+  use scenarios_ride, only: read_limit_gate, limits_exceeded_status
+  use base_text, only: format_integer
   use kinetostatics_models, only: sled_description_t
   use rider_vehicle, only: vehicle_t, vehicle_body_t, vehicle_body, build_vehicle_model, vehicle_ride_figures, &
     vehicle_kinds, VEHICLE_BAR, narrowest_section, width_tolerance
@@ -28,8 +35,12 @@ module scenarios_sled
   private
   public :: run_sled, sled_groups
 
-  character(len=*), parameter :: sled_groups(10) = [character(len=14) :: 'run', 'solver', 'surface', 'sled', &
-    geometry_groups]
+  character(len=*), parameter :: sled_groups(11) = [character(len=14) :: 'run', 'solver', 'surface', 'sled', &
+    'evaluation', geometry_groups]
+  !> The limits a vehicle's ride is judged on (docs/vehicles.md, "Limits"):
+  !> the quantities of the body-slide rider that a rigid vehicle has.
+  character(len=*), parameter :: vehicle_quantities(6) = [character(len=25) :: 'speed', 'exit_speed', &
+    'acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal', 'normal_force']
 
   !> A vehicle's ride figures (docs/vehicles.md, "What the run reports"):
   !> per record the speed of its centre of mass and the felt acceleration
@@ -43,6 +54,10 @@ module scenarios_sled
     real(wp) :: width = 0                           ! m, the vehicle's
     logical :: fits_checked = .false.               ! the surface is a slide: its sections were measured
     real(wp) :: narrowest = 0, narrowest_at = 0     ! m: the narrowest section's width and arc length
+    type(ride_limit_t), allocatable :: limits(:)    ! &sled limit_*
+    class(slide_surface_t), allocatable :: slide    ! where the limits are judged (arc length of the rear contact)
+    type(limit_verdict_t), allocatable :: verdicts(:)
+    logical, allocatable :: judged(:)               ! exit_speed: only when the vehicle reached the end
   contains
     procedure :: compute => vehicle_compute
     procedure :: write => vehicle_write
@@ -68,6 +83,8 @@ contains
     type(surface_source_t) :: surface_source
     type(status_t) :: built
     character(len=:), allocatable :: part, variable
+    logical :: fail_on_limit
+    integer :: k
 
     call check_known_groups(input, sled_groups, status)
     if (status%ok()) call read_solver_config(input, solver, status)
@@ -82,6 +99,7 @@ contains
       return
     end if
     if (vehicle%kind /= VEHICLE_BAR) call check_vehicle_fits(input, vehicle, surface, figures, status)
+    if (status%ok()) call read_vehicle_limits(input, run, vehicle, config, surface, figures, fail_on_limit, status)
     if (.not. status%ok()) return
     call build_vehicle_model(vehicle, config, surface, sys%mechanism, q0, qd0, status)
     call mark_input_failure(status)
@@ -97,8 +115,58 @@ contains
       figures%gravity = config%params%gravity
       call run_mechanism('sled', input, run, solver, sys, q0, qd0, q_units, beta_units, status, &
                          surface=surface, start_variables='u0, v0, phi0, du0, dv0, dphi0', figures=figures)
+      if (status%ok() .and. fail_on_limit .and. allocated(figures%verdicts)) &
+        call limits_exceeded_status(input%name, figures%limits, [(merge(1, 0, figures%judged(k) .and. &
+                                    figures%verdicts(k)%exceeded), k = 1, size(figures%limits))], .false., status)
     end if
   end subroutine run_sled
+
+  !> &sled's limits (limit_quantity, limit_unit, limit_min, limit_max, read
+  !> as &rider's) and whether one exceeded fails the run (&evaluation
+  !> fail_on_limit, --fail-on-limit: exit status 4). Only a vehicle's ride is
+  !> judged, on a slide (where: the rear contact's arc length), on the
+  !> quantities it has (vehicle_quantities); the others are refused, naming
+  !> why (docs/vehicles.md, "Limits").
+  subroutine read_vehicle_limits(input, run, vehicle, config, surface, figures, fail_on_limit, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(vehicle_t), intent(in) :: vehicle
+    type(sled_description_t), intent(in) :: config
+    class(surface_t), intent(in) :: surface
+    type(vehicle_figures_t), intent(inout) :: figures
+    logical, intent(out) :: fail_on_limit
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    integer :: k
+    fail_on_limit = .false.
+    call open_group(input, 'sled', r, status, also=friction_law_variables())
+    call read_limits(r, norm2(config%params%gravity), .true., figures%limits, status)
+    if (.not. status%ok()) return
+    if (size(figures%limits) > 0 .and. vehicle%kind == VEHICLE_BAR) then
+      call r%invalid('limit_quantity', r%written('limit_quantity'), 'limits judge a vehicle''s ride (docs/'// &
+                     'vehicles.md, "Limits"): the bar has no ride figures; give vehicle', status)
+      return
+    end if
+    do k = 1, size(figures%limits)
+      if (any(vehicle_quantities == figures%limits(k)%quantity)) cycle
+      call r%invalid('limit_quantity('//format_integer(k)//')', ''''//figures%limits(k)%quantity//'''', &
+                     'a vehicle''s ride is judged on speed, exit_speed, acceleration_longitudinal, '// &
+                     'acceleration_lateral, acceleration_normal and normal_force; '//figures%limits(k)%quantity// &
+                     ' belongs to the body-slide rider''s contacts on the wall (docs/vehicles.md, "Limits")', status)
+      return
+    end do
+    if (size(figures%limits) > 0) then
+      select type (surface)
+      class is (slide_surface_t)
+        allocate (figures%slide, source=surface)
+      class default
+        call r%invalid('limit_quantity', r%written('limit_quantity'), 'limits are judged along a slide (at '// &
+                       'arc lengths); the '//surface%describe()//' is not one', status)
+        return
+      end select
+    end if
+    call read_limit_gate(input, run, figures%limits, fail_on_limit, status, limits_group='sled')
+  end subroutine read_vehicle_limits
 
   !> A vehicle wider than the narrowest section of the slide (by more than
   !> width_tolerance) is refused before any work: the sled's two contacts
@@ -129,8 +197,35 @@ contains
     class(vehicle_figures_t), intent(inout) :: self
     class(mechanism_ode_t), intent(inout) :: sys
     type(status_t), intent(inout) :: status
+    real(wp), allocatable :: values(:), where(:)
+    integer :: k, i, n
     call vehicle_ride_figures(sys%mechanism, sys%work, sys%series, self%speed, self%felt, status)
-    self%time = sys%series%time(:sys%series%n)
+    n = sys%series%n
+    self%time = sys%series%time(:n)
+    if (.not. (status%ok() .and. allocated(self%slide))) return
+    ! the limits, judged as the body-slide rider's (design_ride_report)
+    where = [(self%slide%arc_length(sys%series%q(1, i)), i = 1, n)]
+    allocate (self%verdicts(size(self%limits)), self%judged(size(self%limits)))
+    self%judged = .true.
+    do k = 1, size(self%limits)
+      select case (self%limits(k)%quantity)
+      case ('speed')
+        values = self%speed
+      case ('exit_speed')
+        self%judged(k) = sys%stop_kind == STOP_END_OF_SURFACE
+        if (self%judged(k)) call evaluate_limit(self%limits(k), self%speed(n:n), where(n:n), self%verdicts(k))
+        cycle
+      case ('acceleration_longitudinal')
+        values = self%felt(1, :)
+      case ('acceleration_lateral')
+        values = self%felt(2, :)
+      case ('acceleration_normal')
+        values = self%felt(3, :)
+      case ('normal_force')
+        values = [(minval(sys%series%normal(:, i)), i = 1, n)]   ! the smaller of the two contacts'
+      end select
+      call evaluate_limit(self%limits(k), values, where, self%verdicts(k))
+    end do
   end subroutine vehicle_compute
 
   subroutine vehicle_write(self, file, status)
@@ -154,7 +249,8 @@ contains
     type(summary_t), intent(inout) :: summary
     character(len=:), allocatable :: units
     character(len=*), parameter :: axes(3) = [character(len=12) :: 'longitudinal', 'lateral', 'normal']
-    integer :: k, n
+    character(len=:), allocatable :: unit, line, unset
+    integer :: k, n, i, exceeded
     call summary%add('vehicle_width', 'vehicle width', self%width, 'm')
     if (self%fits_checked) then
       call summary%add('narrowest_section', 'narrowest section', self%narrowest, 'm', &
@@ -173,5 +269,51 @@ contains
       call summary%add_range('vehicle_felt_'//trim(axes(k)), 'felt '//trim(axes(k))//' min / max', &
                              minval(self%felt(k, :)), maxval(self%felt(k, :)), units, 'g')
     end do
+    if (.not. allocated(self%verdicts)) return
+    exceeded = 0
+    do k = 1, size(self%limits)
+      associate (l => self%limits(k), v => self%verdicts(k))
+        unit = spaced(limit_report_unit(l%quantity))
+        if (.not. self%judged(k)) then
+          line = 'limit '//l%quantity//': not judged (the vehicle did not reach the end of the slide)'
+        else if (v%exceeded) then
+          exceeded = exceeded + 1
+          line = 'LIMIT EXCEEDED: '//l%quantity//' '//bounds(l)//'; worst '//format_short(v%worst)//unit// &
+                 ' at arc length '//format_short(v%worst_where)//' m (first at '//format_short(v%first_where)//' m)'
+        else
+          line = 'limit '//l%quantity//' '//bounds(l)//': ok (closest '//format_short(v%worst)//unit// &
+                 ' at arc length '//format_short(v%worst_where)//' m)'
+        end if
+      end associate
+      call summary%add_line('  '//line)
+    end do
+    unset = ''
+    do k = 1, size(vehicle_quantities)
+      if (any([(self%limits(i)%quantity == trim(vehicle_quantities(k)), i = 1, size(self%limits))])) cycle
+      if (len(unset) > 0) unset = unset//', '
+      unset = unset//trim(vehicle_quantities(k))
+    end do
+    if (len(unset) > 0) call summary%add_text('limits_not_set', 'no limit set for', unset)
+    call summary%add_count('limits_exceeded', 'limits exceeded', exceeded, 'of the '// &
+                           format_integer(size(self%limits))//' set')
+
+  contains
+
+    function bounds(l) result(text)
+      type(ride_limit_t), intent(in) :: l
+      character(len=:), allocatable :: text
+      text = ''
+      if (l%has_minimum) text = '>= '//format_short(l%minimum)//spaced(limit_report_unit(l%quantity))
+      if (l%has_minimum .and. l%has_maximum) text = text//' and '
+      if (l%has_maximum) text = text//'<= '//format_short(l%maximum)//spaced(limit_report_unit(l%quantity))
+    end function bounds
+
+    !> ' unit' after a number; nothing for a count (unit '1').
+    pure function spaced(unit) result(text)
+      character(len=*), intent(in) :: unit
+      character(len=:), allocatable :: text
+      text = ''
+      if (unit /= '1') text = ' '//unit
+    end function spaced
   end subroutine vehicle_summarise
 end module scenarios_sled
