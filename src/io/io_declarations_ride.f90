@@ -109,8 +109,7 @@ module io_declarations_ride
     declaration_t(groups='rider', name='landing_mu', unit='1', default='0.0724419', low=0.0_wp, high=10.0_wp, &
       meaning='Coulomb mu during a landing (thesis table 4.8''s mu_D; with may_fly only)'), &
     declaration_t(groups='rider sled', name='limit_quantity', kind=VALUE_WORDS, shape='per limit, at most 20', &
-      default='none', meaning='what limit k bounds (docs/rider.md lists the quantities; a vehicle''s: '// &
-      'docs/vehicles.md), without gaps'), &
+      default='none', meaning='what limit k bounds (docs/rider.md lists the quantities), without gaps'), &
     declaration_t(groups='rider sled', name='limit_min', shape='per limit, at most 20', unit='the limit''s unit', &
       default='none', low=-1e6_wp, high=1e6_wp, meaning='lower bound of limit k'), &
     declaration_t(groups='rider sled', name='limit_max', shape='per limit, at most 20', unit='the limit''s unit', &

@@ -42,7 +42,7 @@ CASES = [
     ('point_mass', 'demo_slide/point_mass.nml', {'run', 'solver', 'surface', 'point_mass'}, None, None),
     ('pendulum', 'pendulum/simple.nml', {'run', 'solver', 'pendulum'}, None, None),
     ('fourbar', 'fourbar/crank_rocker.nml', {'run', 'solver', 'fourbar'}, None, None),
-    ('sled', 'sled/bowl.nml', {'run', 'solver', 'surface', 'sled'}, None, None),
+    ('sled', 'sled/bowl.nml', {'run', 'solver', 'surface', 'sled', 'evaluation'}, None, None),
     ('contact', 'contact/paraboloids.nml', {'run', 'solver', 'contact_model', 'shape', 'body', 'contact'},
      'contact/paraboloids/bowl_2.geo', {'run', 'grid', 'geometry', 'bspline'}),
     ('optimize', 'design/optimize_table_4_12.nml', {'run', 'solver', 'optimize'}, None, None),
