@@ -206,7 +206,7 @@ contains
     type(status_t) :: solve_status
     integer :: k, it, fresh
     real(wp) :: size_res, last
-    logical :: converged, predicted, chord, polished
+    logical :: converged, predicted, chord, polished, retry
 
     if (any(work%dims /= self%workspace_dims)) call self%prepare_workspace(work)
 
@@ -230,13 +230,15 @@ contains
       end do
     end if
     work%converged = .false.
+    retry = work%solve_failed
+    work%solve_failed = .true.   ! until a solution is found below
     ! Newton from the warm start, moved by the predictor; after the predictor
     ! first with J_beta of the last solution (still factored: each step costs
     ! one position pass instead of r velocity passes), then, if that contracts
     ! slowly, with J_beta at the iterate (at most 4 such steps)
     x = start
     if (predicted) x = start - work%work_r
-    if (work%warm .and. .not. predicted) call nearer_solution(self, work, q, x)
+    if (retry .and. work%warm .and. .not. predicted) call nearer_solution(self, work, q, x)
     converged = .false.
     chord = predicted
     polished = .false.
@@ -330,6 +332,7 @@ contains
     if (.not. status%ok()) return
     work%warm = .true.
     work%converged = .true.
+    work%solve_failed = .false.
     call keep_solution(self, work, q)
     call factor_filled_rates(self, work, status)
   end procedure set_positions

@@ -326,6 +326,7 @@ contains
     allocate (work%recent_r(self%r, recent_solutions), work%recent_q(self%f, recent_solutions))
     work%recent_charts = -1
     work%recent_next = 1
+    work%solve_failed = .false.
     allocate (work%chol(n, n), work%n0(nc), work%block(n + nb, n + nb), work%block_rhs(n + nb), work%signs(nb), &
               work%ipiv_block(n + nb))
     allocate (work%twist(6, nt, n), work%wrench(6, nt, n), work%unknown_twist(6, nt, size(self%moving_unknowns)), &

@@ -51,6 +51,8 @@ module kinetostatics_mechanism_workspace
                                                  ! laws, |N| for scaled ones (law_force)
     logical :: warm = .false.                    ! a closure has converged (a warm start exists)
     logical :: converged = .false.               ! beta holds it (else start_r does: the last solve failed)
+    logical :: solve_failed = .false.            ! the last solve ended without a solution: the next one
+                                                 ! starts from the recent solution nearest its q
     integer :: evaluation = 0                    ! position passes and law evaluations so far
     integer :: closure_solves = 0, hybrj_solves = 0
     real(wp), allocatable :: normal_force(:)     ! N of every contact at the last `evaluate` (a complete state)
