@@ -32,7 +32,8 @@ module design_ride_evaluation
   private
   public :: felt_acceleration, felt_acceleration_units, tipping_lever_arm
   public :: ride_limit_t, limit_verdict_t, new_ride_limit, evaluate_limit, limit_quantities, &
-    limit_report_unit, limit_stored_unit, limit_units_allowed, series_extreme, quantities_without_limit, flight_quantity
+    limit_report_unit, limit_bounds_text, spaced_unit, &
+    limit_stored_unit, limit_units_allowed, series_extreme, quantities_without_limit, flight_quantity
 
   !> ejection counts the rider's points that went over the top of an open
   !> section's wall (0 or 1: the ride ends there); `limit_max = 0` forbids it.
@@ -108,6 +109,24 @@ contains
     unit = ''
     if (k > 0) unit = trim(report_units(quantity_dimension(k)))
   end function limit_report_unit
+
+  !> A limit's bounds as the reports print them: '>= 2 m/s and <= 14 m/s'.
+  pure function limit_bounds_text(limit) result(text)
+    type(ride_limit_t), intent(in) :: limit
+    character(len=:), allocatable :: text
+    text = ''
+    if (limit%has_minimum) text = '>= '//format_short(limit%minimum)//spaced_unit(limit_report_unit(limit%quantity))
+    if (limit%has_minimum .and. limit%has_maximum) text = text//' and '
+    if (limit%has_maximum) text = text//'<= '//format_short(limit%maximum)//spaced_unit(limit_report_unit(limit%quantity))
+  end function limit_bounds_text
+
+  !> ' unit' after a number; nothing for a count (unit '1').
+  pure function spaced_unit(unit) result(text)
+    character(len=*), intent(in) :: unit
+    character(len=:), allocatable :: text
+    text = ''
+    if (unit /= '1') text = ' '//unit
+  end function spaced_unit
 
   !> The unit a result file gives limit `quantity`'s values in: its report
   !> unit, but degrees as 'degree' (pint and UDUNITS parse it) and multiples

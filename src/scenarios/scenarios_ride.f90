@@ -19,7 +19,7 @@ module scenarios_ride
   use water_curve_entry, only: curve_entry_note
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
   use rider_ride, only: ride_result_t, ride_series_t, check_ride_start
-  use design_ride_evaluation, only: limit_report_unit, limit_stored_unit, ride_limit_t, quantities_without_limit
+  use design_ride_evaluation, only: limit_stored_unit, limit_bounds_text, spaced_unit, ride_limit_t, quantities_without_limit
   use design_ride_report, only: ride_report_t
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   use io_input, only: input_text_t, check_known_groups, format_real, invalid, where_given
@@ -430,17 +430,17 @@ contains
       if (ride%flights%watched) call add_flights(summary, ride%flights)
       exceeded = 0
       do k = 1, size(r%limits)
-        unit = spaced(limit_stored_unit(r%limits(k)%quantity, r%felt_units))
+        unit = spaced_unit(limit_stored_unit(r%limits(k)%quantity, r%felt_units))
         if (.not. r%judged(k)) then
           line = 'limit '//r%limits(k)%quantity//': not judged (the ride did not reach the exit)'
         else if (r%verdicts(k)%exceeded) then
           exceeded = exceeded + 1
-          line = 'LIMIT EXCEEDED: '//r%limits(k)%quantity//' '//bounds(k)//'; worst '// &
+          line = 'LIMIT EXCEEDED: '//r%limits(k)%quantity//' '//limit_bounds_text(r%limits(k))//'; worst '// &
                  format_short(r%verdicts(k)%worst)//unit//' at arc length '// &
                  format_short(r%verdicts(k)%worst_where)//' m (first at '// &
                  format_short(r%verdicts(k)%first_where)//' m)'
         else
-          line = 'limit '//r%limits(k)%quantity//' '//bounds(k)//': ok (closest '// &
+          line = 'limit '//r%limits(k)%quantity//' '//limit_bounds_text(r%limits(k))//': ok (closest '// &
                  format_short(r%verdicts(k)%worst)//unit//' at arc length '// &
                  format_short(r%verdicts(k)%worst_where)//' m)'
         end if
@@ -495,23 +495,5 @@ contains
       if (angle < 0) text = ', on the right'
     end function side
 
-    function bounds(k) result(text)
-      integer, intent(in) :: k
-      character(len=:), allocatable :: text
-      text = ''
-      associate (l => r%limits(k))
-        if (l%has_minimum) text = '>= '//format_short(l%minimum)//spaced(limit_report_unit(l%quantity))
-        if (l%has_minimum .and. l%has_maximum) text = text//' and '
-        if (l%has_maximum) text = text//'<= '//format_short(l%maximum)//spaced(limit_report_unit(l%quantity))
-      end associate
-    end function bounds
-
-    !> ' unit' after a number; nothing for a count (unit '1').
-    pure function spaced(unit) result(text)
-      character(len=*), intent(in) :: unit
-      character(len=:), allocatable :: text
-      text = ''
-      if (unit /= '1') text = ' '//unit
-    end function spaced
   end subroutine print_report
 end module scenarios_ride

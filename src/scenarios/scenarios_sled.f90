@@ -10,7 +10,7 @@ module scenarios_sled
   use geometry_surface, only: surface_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_END_OF_SURFACE
   use geometry_slide_query, only: slide_surface_t
-  use design_ride_evaluation, only: ride_limit_t, limit_verdict_t, evaluate_limit, limit_report_unit
+  use design_ride_evaluation, only: ride_limit_t, limit_verdict_t, evaluate_limit, limit_report_unit, limit_bounds_text, spaced_unit
   use io_input, only: group_reader_t, open_group
   use io_friction_config, only: friction_law_variables
   use io_rider_config, only: read_limits
@@ -273,15 +273,15 @@ contains
     exceeded = 0
     do k = 1, size(self%limits)
       associate (l => self%limits(k), v => self%verdicts(k))
-        unit = spaced(limit_report_unit(l%quantity))
+        unit = spaced_unit(limit_report_unit(l%quantity))
         if (.not. self%judged(k)) then
           line = 'limit '//l%quantity//': not judged (the vehicle did not reach the end of the slide)'
         else if (v%exceeded) then
           exceeded = exceeded + 1
-          line = 'LIMIT EXCEEDED: '//l%quantity//' '//bounds(l)//'; worst '//format_short(v%worst)//unit// &
+          line = 'LIMIT EXCEEDED: '//l%quantity//' '//limit_bounds_text(l)//'; worst '//format_short(v%worst)//unit// &
                  ' at arc length '//format_short(v%worst_where)//' m (first at '//format_short(v%first_where)//' m)'
         else
-          line = 'limit '//l%quantity//' '//bounds(l)//': ok (closest '//format_short(v%worst)//unit// &
+          line = 'limit '//l%quantity//' '//limit_bounds_text(l)//': ok (closest '//format_short(v%worst)//unit// &
                  ' at arc length '//format_short(v%worst_where)//' m)'
         end if
       end associate
@@ -296,24 +296,5 @@ contains
     if (len(unset) > 0) call summary%add_text('limits_not_set', 'no limit set for', unset)
     call summary%add_count('limits_exceeded', 'limits exceeded', exceeded, 'of the '// &
                            format_integer(size(self%limits))//' set')
-
-  contains
-
-    function bounds(l) result(text)
-      type(ride_limit_t), intent(in) :: l
-      character(len=:), allocatable :: text
-      text = ''
-      if (l%has_minimum) text = '>= '//format_short(l%minimum)//spaced(limit_report_unit(l%quantity))
-      if (l%has_minimum .and. l%has_maximum) text = text//' and '
-      if (l%has_maximum) text = text//'<= '//format_short(l%maximum)//spaced(limit_report_unit(l%quantity))
-    end function bounds
-
-    !> ' unit' after a number; nothing for a count (unit '1').
-    pure function spaced(unit) result(text)
-      character(len=*), intent(in) :: unit
-      character(len=:), allocatable :: text
-      text = ''
-      if (unit /= '1') text = ' '//unit
-    end function spaced
   end subroutine vehicle_summarise
 end module scenarios_sled
