@@ -32,7 +32,7 @@ module io_input_declarations
     '&slide_elements', '&cross_section', '&blended', '&bspline', '&grid', '&point_mass', &
     '&pendulum', '&fourbar', '&sled', '&contact_model', '&body', '&contact']
   !> A line under a group's heading, where the group needs one.
-  character(len=*), parameter :: reference_notes(size(reference_groups)) = [character(len=240) :: '', &
+  character(len=*), parameter :: reference_notes(size(reference_groups)) = [character(len=320) :: '', &
     'The ride''s `&water_solver` (the integration of its water) has the same variables but `accuracy`. '// &
     'Some scenarios '// &
     'start from defaults of their own (the ride, the water, optimize: their pages).', '', &
