@@ -1,6 +1,6 @@
-!> Flight: a body whose contacts are open (issue 25).
+!> Flight: bodies whose contacts are open (issue 25).
 !>
-!> The body flies free: it hangs from the ground by three prismatic joints
+!> Each body flies free: it hangs from the ground by three prismatic joints
 !> along the world axes (the origin of its frame) and a free rotation
 !> (kinetostatics_free_rotation, its chart centred on the start pose), and
 !> carries its mass element under gravity. Its coordinates are the origin
@@ -30,15 +30,23 @@
 !> contact_closing goes on with it closed from there. Bounces that would
 !> never end (Zeno: rebounds e^k v0, endless in number, their flights summing
 !> to a finite time) end so after finitely many, where e^k v0 falls below
-!> close_speed. A landing on two contacts at once (an impact at two points)
+!> close_speed. A landing of one body on two contacts at once (an impact at two points)
 !> is not built: the run ends there, saying so.
 !>
-!> The contacts that can open are those of one body with the ground (each
-!> shape_1 fixed, at the ground's pose), at most one of them closed at the
-!> start; the friction, rolling, level and chain of a contact that starts
-!> open are the closed contact's after closing, so they need restitution
-!> (without it the run ends at the landing and they would be unused);
-!> anything else is refused.
+!> Several bodies may fly at once (one mechanism: each body its own six
+!> coordinates, its gaps at its own pose, its impacts changing its own
+!> twist only; landings of different bodies at the same instant are
+!> impacts one after the other). They do not close: a rebound below
+!> close_speed ends the run there, saying so (a body at rest beside a flying
+!> one is not built).
+!>
+!> The contacts that can open are those of bodies with the ground (each
+!> shape_1 fixed, at the ground's pose); a single body may start carried by
+!> one of them closed; the friction, rolling, level and chain of a contact
+!> that starts open are the closed contact's after closing, so they need
+!> restitution (without it the run ends at the landing and they would be
+!> unused); with several bodies every contact starts open and has none of
+!> them (nor may_open); anything else is refused.
 module contact_flight
   use base_kinds, only: wp
   use base_text, only: format_short
@@ -78,11 +86,11 @@ module contact_flight
   !> The free body as a model of the integration driver: the mechanism's own
   !> roots and events, and after them the contacts' gaps.
   type, extends(mechanism_ode_t) :: flight_ode_t
-    type(open_gaps_t) :: gaps                 ! of every contact of the body
-    integer :: body_frame = 0
+    type(open_gaps_t) :: gaps                 ! of every contact
+    integer, allocatable :: body_frame(:)     ! each body's frame (the &body groups' order)
     integer, allocatable :: gap_monitors(:)   ! each contact's gap's place among the recorded monitors
-    ! the body's mass properties (body axes), for the impacts
-    real(wp) :: mass = 0, inertia(3, 3) = 0, centre(3) = 0
+    ! each body's mass properties (body axes), for the impacts
+    real(wp), allocatable :: mass(:), inertia(:, :, :), centre(:, :)   ! kg; 3 x 3 x bodies, kg m^2; 3 x bodies, m
     type(impact_record_t), allocatable :: impacts(:)
     ! closing (contact_closing)
     type(contact_system_t) :: system          ! the description the closed contact is built from
@@ -90,8 +98,8 @@ module contact_flight
     integer :: landed = 0                     ! the contact the last impact closed: the flight stopped there (0: none)
     integer :: closed_on = 0                  ! the contact of `closed` (contact_closing)
     logical :: start_closed = .false.         ! the run starts with the closed contact (contact_closing)
-    integer :: coordinates(6) = 0             ! scalars x, y, z, a1, a2, a3
-    integer :: rotation_element = 0           ! the free rotation
+    integer, allocatable :: coordinates(:, :)   ! 6 x bodies: each body's scalars x, y, z, a1, a2, a3
+    integer, allocatable :: rotation_element(:)   ! each body's free rotation
     type(contact_model_t), allocatable :: closed   ! the closed contact after closing
     ! per record of the flight and contact: the gap's point on shape_1 (m)
     ! and the body's nearest point's velocity relative to it along the
@@ -129,33 +137,43 @@ contains
     part%contacts(1)%start_open = .false.
   end function closed_part
 
-  !> Refused unless every contact is between the ground and the one body and
-  !> at most one of them starts closed (a description with a contact that
-  !> starts open or may open: a flight).
+  !> Refused unless every contact is between the ground and a body; with one
+  !> body at most one of its contacts starts closed; with several (flying at
+  !> once) every contact starts open and none has what only a closed contact
+  !> uses (a description with a contact that starts open or may open: a
+  !> flight).
   subroutine check_flight_system(system, status)
     type(contact_system_t), intent(in) :: system
     type(status_t), intent(inout) :: status
     integer :: k
     if (.not. status%ok()) return
-    ! the first open one names the refusals
-    associate (c => system%contacts(max(findloc(system%contacts%start_open .or. system%contacts%may_open, .true., &
-                                                dim=1), 1)))
-      if (size(system%bodies) /= 1 .or. any([(system%contacts(k)%body_1 /= 'ground', k = 1, size(system%contacts))]) &
-          .or. any([(system%contacts(k)%body_2 /= c%body_2, k = 1, size(system%contacts))])) then
-        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': start = ''open'' and may_open '// &
-          'are supported for the contacts of one body with the ground (flight and landing on any of them; '// &
-          'several bodies flying at once, or one flying while another stays in contact, are not built: the '// &
-          'flight is one free body); this description has '//format_count(size(system%contacts))//' contacts and '// &
-          format_count(size(system%bodies))//' bodies')
-      else if (count(.not. system%contacts%start_open) > 1) then
+    k = findloc([(system%contacts(k)%body_1 /= 'ground', k = 1, size(system%contacts))], .true., dim=1)
+    if (k > 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'contact '''//system%contacts(k)%name//''': body_1 = '''// &
+        system%contacts(k)%body_1//''': where contacts open and close (start = ''open'', may_open) every '// &
+        'contact is between the ground and a body (a body landing on another body, or one flying while '// &
+        'another stays in contact on it, is not built)')
+      return
+    end if
+    do k = 1, size(system%contacts)
+      associate (c => system%contacts(k))
+        if (body_index(system, c%body_2) <= 0) then
+          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_2 = '''//c%body_2// &
+            ''' is not a body')
+          return
+        end if
+      end associate
+    end do
+    if (size(system%bodies) > 1) then
+      call check_bodies_flying(system, status)
+    else if (count(.not. system%contacts%start_open) > 1) then
+      associate (c => system%contacts(findloc(system%contacts%start_open .or. system%contacts%may_open, .true., &
+                                              dim=1)))
         call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': of the contacts of body '''// &
           c%body_2//''' with the ground at most one starts closed (it carries the body; the others are '// &
           'surfaces it may land on): give the others start = ''open''')
-      else if (system%bodies(1)%name /= c%body_2) then
-        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_2 = '''//c%body_2// &
-          ''' is not a body')
-      end if
-    end associate
+      end associate
+    end if
     do k = 1, size(system%contacts)
       if (.not. status%ok()) return
       associate (c => system%contacts(k))
@@ -168,6 +186,32 @@ contains
       end associate
     end do
   end subroutine check_flight_system
+
+  !> Several bodies flying at once: every contact starts open (a body
+  !> carried by a closed contact beside a flying one is not built), and as no
+  !> contact closes (a rebound below close_speed ends the run) none has what
+  !> only a closed contact uses.
+  subroutine check_bodies_flying(system, status)
+    type(contact_system_t), intent(in) :: system
+    type(status_t), intent(inout) :: status
+    integer :: k
+    do k = 1, size(system%contacts)
+      associate (c => system%contacts(k))
+        if (.not. c%start_open) then
+          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': with several bodies ('// &
+            format_count(size(system%bodies))//') every contact starts open (start = ''open''): they fly at '// &
+            'once; one flying while another stays in contact (a closed contact beside a flight) is not built')
+        else if (c%may_open .or. allocated(c%friction%kind) .or. c%rolling .or. c%level /= LEVEL_POSITION .or. &
+                 c%chain /= CHAIN_AUTO) then
+          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': with several bodies ('// &
+            format_count(size(system%bodies))//') flying at once a contact does not close after a landing (a '// &
+            'rebound below close_speed ends the run: a body at rest beside a flying one is not built), so '// &
+            'may_open, friction, rolling, level and chain would be unused: leave them out')
+        end if
+      end associate
+      if (.not. status%ok()) return
+    end do
+  end subroutine check_bodies_flying
 
   !> The free body of `system` at its given pose and twist: q0 = (x, y, z,
   !> a1, a2, a3), qd0 their rates, q_units; refused unless the description
@@ -189,7 +233,8 @@ contains
     call build_shaped_flight(shaped, flight, q0, qd0, q_units, status, touching)
   end subroutine build_flight
 
-  !> build_flight of a system whose shapes are built.
+  !> build_flight of a system whose shapes are built: every body free, in
+  !> the order of the &body groups.
   subroutine build_shaped_flight(system, flight, q0, qd0, q_units, status, touching)
     type(contact_system_t), intent(in) :: system
     type(flight_ode_t), intent(out) :: flight
@@ -197,21 +242,66 @@ contains
     character(len=8), allocatable, intent(out) :: q_units(:)
     type(status_t), intent(inout) :: status
     integer, intent(in), optional :: touching
+    character(len=8), parameter :: body_units(6) = [character(len=8) :: 'm', 'm', 'm', 'rad', 'rad', 'rad']
+    integer :: i, b, nb
+    if (.not. status%ok()) return
+    nb = size(system%bodies)
+    flight%system = system
+    allocate (flight%mass(nb), flight%inertia(3, 3, nb), flight%centre(3, nb), flight%body_frame(nb), &
+              flight%coordinates(6, nb), flight%rotation_element(nb), flight%impacts(0))
+    associate (m => flight%mechanism)
+      do b = 1, nb
+        call add_free_body(flight, b, status)
+        if (.not. status%ok()) return
+      end do
+      allocate (flight%gap_monitors(size(system%contacts)))
+      do i = 1, size(system%contacts)
+        call m%add_monitor(m%add_scalar(system%contacts(i)%name//'.gap'), 'm')
+        flight%gap_monitors(i) = size(m%monitors)
+      end do
+      call m%set_coordinates(reshape(flight%coordinates, [6*nb]))
+      call m%finalize(status)
+      if (.not. status%ok()) return
+      q0 = m%scalars(reshape(flight%coordinates, [6*nb]))%q
+      call m%set_positions(flight%work, q0, status)
+      if (.not. status%ok()) return
+      allocate (qd0(6*nb), source=0.0_wp)
+      do b = 1, nb
+        associate (spec => system%bodies(b))
+          call start_rates(flight, b, [spec%angular_velocity, spec%velocity], qd0, status)
+        end associate
+        if (.not. status%ok()) return
+      end do
+      q_units = [(body_units, b = 1, nb)]
+      flight%q_units = q_units
+      allocate (flight%beta_units(0))
+      if (present(touching)) then
+        call start_open_gaps(flight%gaps, system, flight%work, flight%body_frame, status, touching, 0, .false.)
+      else
+        call start_open_gaps(flight%gaps, system, flight%work, flight%body_frame, status, 0, 0, .false.)
+      end if
+    end associate
+  end subroutine build_shaped_flight
+
+  !> Body b of the description, free: it hangs from the ground by three
+  !> prismatic joints along the world axes and a free rotation, with its mass
+  !> element and its air drag.
+  subroutine add_free_body(flight, b, status)
+    type(flight_ode_t), intent(inout) :: flight
+    integer, intent(in) :: b
+    type(status_t), intent(inout) :: status
     character(len=*), parameter :: axis_name(3) = ['x', 'y', 'z']
     real(wp), parameter :: axes(3, 3) = identity
     type(solid_properties_t) :: props
-    integer :: frames(4), coordinates(6), i
+    integer :: frames(4), i
     character(len=:), allocatable :: body
-    if (.not. status%ok()) return
-    associate (spec => system%bodies(1), m => flight%mechanism)
+    associate (spec => flight%system%bodies(b), m => flight%mechanism, coordinates => flight%coordinates(:, b))
       body = spec%name
-      call body_from_spec(spec, system%shapes, props, status)
+      call body_from_spec(spec, flight%system%shapes, props, status)
       if (.not. status%ok()) return
-      flight%system = system
-      flight%mass = spec%mass
-      flight%inertia = props%inertia
-      flight%centre = props%centre
-      allocate (flight%impacts(0))
+      flight%mass(b) = spec%mass
+      flight%inertia(:, :, b) = props%inertia
+      flight%centre(:, b) = props%centre
       frames(1) = 1   ! the ground
       do i = 1, 3
         frames(i + 1) = m%add_frame(body//'.'//axis_name(i))
@@ -222,42 +312,19 @@ contains
       do i = 1, 3
         coordinates(3 + i) = m%add_scalar(body//'.a'//achar(iachar('0') + i), 0.0_wp)
       end do
-      flight%body_frame = m%add_frame(body)
-      call m%add_element(new_free_rotation(body//'.rotation', frames(4), flight%body_frame, coordinates(4:6), &
+      flight%body_frame(b) = m%add_frame(body)
+      call m%add_element(new_free_rotation(body//'.rotation', frames(4), flight%body_frame(b), coordinates(4:6), &
                                            [0.0_wp, 0.0_wp, 1.0_wp], spec%rotation))
-      flight%rotation_element = m%n_elements
-      flight%coordinates = coordinates
-      call m%add_element(new_mass_element(body, flight%body_frame, spec%mass, props%inertia, props%centre, &
-                                          system%gravity, status))
-      call add_air_drag(m, spec, system%air_density, system%wind, flight%body_frame, props%centre, status)
-      if (.not. status%ok()) return
-      allocate (flight%gap_monitors(size(system%contacts)))
-      do i = 1, size(system%contacts)
-        call m%add_monitor(m%add_scalar(system%contacts(i)%name//'.gap'), 'm')
-        flight%gap_monitors(i) = size(m%monitors)
-      end do
-      call m%set_coordinates(coordinates)
-      call m%finalize(status)
-      if (.not. status%ok()) return
-      q0 = m%scalars(coordinates)%q
-      call m%set_positions(flight%work, q0, status)
-      if (.not. status%ok()) return
-      call start_rates(flight, [spec%angular_velocity, spec%velocity], qd0, status)
-      if (.not. status%ok()) return
-      q_units = [character(len=8) :: 'm', 'm', 'm', 'rad', 'rad', 'rad']
-      flight%q_units = q_units
-      allocate (flight%beta_units(0))
-      associate (frame => flight%work%frames(flight%body_frame))
-        if (present(touching)) then
-          call start_open_gaps(flight%gaps, system, frame%rot, frame%r, status, touching, 0, .false.)
-        else
-          call start_open_gaps(flight%gaps, system, frame%rot, frame%r, status, 0, 0, .false.)
-        end if
-      end associate
+      flight%rotation_element(b) = m%n_elements
+      call m%add_element(new_mass_element(body, flight%body_frame(b), spec%mass, props%inertia, props%centre, &
+                                          flight%system%gravity, status))
+      call add_air_drag(m, spec, flight%system%air_density, flight%system%wind, flight%body_frame(b), props%centre, &
+                        status)
     end associate
-  end subroutine build_shaped_flight
+  end subroutine add_free_body
 
-  !> The free body placed again at `rotation` and `position` (its frame's
+  !> The free body (the description's one body) placed again at `rotation`
+  !> and `position` (its frame's
   !> axes and origin, world) with the twist [omega, v] (world; v of its
   !> origin): the prismatic coordinates the origin, the free rotation's
   !> angles 0 on a chart centred there, the rates solved for the twist; the
@@ -274,44 +341,49 @@ contains
     associate (m => flight%mechanism, work => flight%work)
       call m%prepare_workspace(work)
       do i = 1, 3
-        work%scalars(flight%coordinates(i))%q = position(i)
-        work%scalars(flight%coordinates(3 + i))%q = 0
+        work%scalars(flight%coordinates(i, 1))%q = position(i)
+        work%scalars(flight%coordinates(3 + i, 1))%q = 0
       end do
-      call work%elements(flight%rotation_element)%e%centre_chart(rotation)
-      q0 = work%scalars(flight%coordinates)%q
+      call work%elements(flight%rotation_element(1))%e%centre_chart(rotation)
+      q0 = work%scalars(flight%coordinates(:, 1))%q
       call m%set_positions(flight%work, q0, status)
       if (.not. status%ok()) return
-      call start_rates(flight, twist, qd0, status)
+      allocate (qd0(6), source=0.0_wp)
+      call start_rates(flight, 1, twist, qd0, status)
       if (.not. status%ok()) return
-      associate (frame => flight%work%frames(flight%body_frame))
-        call start_open_gaps(flight%gaps, flight%system, frame%rot, frame%r, status, flight%closed_on, 0, .true.)
-      end associate
+      call start_open_gaps(flight%gaps, flight%system, flight%work, flight%body_frame, status, flight%closed_on, 0, &
+                           .true.)
       if (.not. status%ok()) return
       y = flight%initial_state(q0, qd0)
     end associate
   end subroutine restart_flight
 
-  !> The rates of (x, y, z, a1, a2, a3) that give the body the twist
-  !> [omega, v] (world; v of its frame's origin): the six columns of the
-  !> body's twist per unit rate, solved (a free body: any twist is reached).
-  subroutine start_rates(flight, twist, qd0, status)
+  !> The rates of body b's (x, y, z, a1, a2, a3) that give it the twist
+  !> [omega, v] (world; v of its frame's origin): the six columns of its
+  !> twist per unit rate, solved (a free body: any twist is reached). rates:
+  !> every body's, body b's replaced; the mechanism's velocities set to them.
+  subroutine start_rates(flight, b, twist, rates, status)
     class(flight_ode_t), intent(inout) :: flight
+    integer, intent(in) :: b
     real(wp), intent(in) :: twist(6)
-    real(wp), allocatable, intent(out) :: qd0(:)
+    real(wp), intent(inout) :: rates(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: jac(6, 6), unit(6)
-    integer :: k, ipiv(6)
-    associate (m => flight%mechanism)
+    real(wp) :: jac(6, 6), unit(size(rates)), block(6)
+    integer :: k, ipiv(6), first
+    first = 6*(b - 1)
+    associate (m => flight%mechanism, frame => flight%work%frames(flight%body_frame(b)))
       do k = 1, 6
         unit = 0
-        unit(k) = 1
+        unit(first + k) = 1
         call m%set_velocities(flight%work, unit)
-        jac(:, k) = [flight%work%frames(flight%body_frame)%omega, flight%work%frames(flight%body_frame)%v]
+        jac(:, k) = [frame%omega, frame%v]
       end do
-      qd0 = twist
+      block = twist
       call lu_factor(jac, ipiv, status)
-      if (status%ok()) call lu_solve(jac, ipiv, qd0, status)
-      if (status%ok()) call m%set_velocities(flight%work, qd0)
+      if (status%ok()) call lu_solve(jac, ipiv, block, status)
+      if (.not. status%ok()) return
+      rates(first + 1:first + 6) = block
+      call m%set_velocities(flight%work, rates)
     end associate
   end subroutine start_rates
 
@@ -331,15 +403,15 @@ contains
     n = size(g) - size(self%gaps%gap)
     call self%mechanism_ode_t%roots(t, y, g(1:n))
     call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), status)
-    associate (body => self%work%frames(self%body_frame))
-      call self%gaps%roots(body%rot, body%r, status%ok(), g(n + 1:))
-    end associate
+    call self%gaps%roots(self%work, self%body_frame, status%ok(), g(n + 1:))
   end subroutine flight_roots
 
-  !> The mechanism's events, then a landing: a contact's gap falling through
-  !> zero is an impact (with its restitution) or ends the run. The touching
-  !> contact's root: opened (its landing is watched from now on), or gone
-  !> back in (a landing on it).
+  !> The mechanism's events, then landings: a contact's gap falling through
+  !> zero is an impact (with its restitution) or ends the run. Landings of
+  !> different bodies at once are independent impacts, one after the other;
+  !> two of one body at once (an impact at two points) end the run. The
+  !> touching contact's root: opened (its landing is watched from now on),
+  !> or gone back in (a landing on it).
   subroutine flight_handle_event(self, t, y, fired, action, status)
     class(flight_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t
@@ -347,7 +419,7 @@ contains
     integer, intent(in) :: fired(:)
     integer, intent(out) :: action
     type(status_t), intent(inout) :: status
-    integer :: n, f, c
+    integer :: n, f, c, b
     logical, allocatable :: lands(:)
     real(wp) :: speed
     n = size(fired) - size(self%gaps%gap)
@@ -358,34 +430,37 @@ contains
     call self%mechanism%set_positions(self%work, y(1:f), status)
     if (.not. status%ok()) return
     call self%mechanism%set_velocities(self%work, y(f + 1:f + self%mechanism%ns))
-    associate (body => self%work%frames(self%body_frame))
-      call self%gaps%update(body%rot, body%r, status)
-    end associate
+    call self%gaps%update(self%work, self%body_frame, status)
     if (.not. status%ok()) return
     if (self%gaps%touching > 0) then
       c = self%gaps%touching
       ! opened: the root is the gap from here (opening_gap, nonzero, where CVODE looks again)
       if (lands(c)) lands(c) = .not. self%gaps%opened()
     end if
-    if (count(lands) > 1) then
+    do b = 1, size(self%body_frame)
+      if (count(lands .and. self%gaps%body == b) > 1) then
+        action = max(action, EVENT_STOP)
+        call add_outcome(self, 'landing on two contacts at once at t = '//format_short(t)//' s ('// &
+                         landed_names(self, lands .and. self%gaps%body == b)//'): an impact at two points is '// &
+                         'not built; the run ends here')
+        return
+      end if
+    end do
+    do c = 1, size(lands)
+      if (.not. lands(c)) cycle
+      if (self%system%contacts(c)%restitution >= 0) then
+        call impact(self, c, t, y, action, status)
+        if (.not. status%ok()) return
+        cycle
+      end if
+      associate (body => self%work%frames(self%body_frame(self%gaps%body(c))))
+        speed = -self%gaps%gap(c)%rate([0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], body%v, body%omega)
+      end associate
       action = max(action, EVENT_STOP)
-      call add_outcome(self, 'landing on two contacts at once at t = '//format_short(t)//' s ('// &
-                       landed_names(self, lands)//'): an impact at two points is not built; the run ends here')
-      return
-    end if
-    if (.not. any(lands)) return
-    c = findloc(lands, .true., dim=1)
-    if (self%system%contacts(c)%restitution >= 0) then
-      call impact(self, c, t, y, action, status)
-      return
-    end if
-    associate (body => self%work%frames(self%body_frame))
-      speed = -self%gaps%gap(c)%rate([0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], body%v, body%omega)
-    end associate
-    action = max(action, EVENT_STOP)
-    call add_outcome(self, 'landing: the gap of contact '''//self%system%contacts(c)%name//''' fell to zero at '// &
-                     't = '//format_short(t)//' s, approaching at '//format_short(speed)//' m/s (no restitution '// &
-                     'given: the run ends at the landing)')
+      call add_outcome(self, 'landing: the gap of contact '''//self%system%contacts(c)%name//''' fell to zero '// &
+                       'at t = '//format_short(t)//' s, approaching at '//format_short(speed)//' m/s (no '// &
+                       'restitution given: the run ends at the landing)')
+    end do
   end subroutine flight_handle_event
 
   !> The names of the contacts landed on, quoted, comma-separated.
@@ -403,12 +478,14 @@ contains
   end function landed_names
 
   !> The impact at the landing on contact c (the mechanism at y's pose and
-  !> speeds, the gaps updated): the impulse L on the body at its contact
+  !> speeds, the gaps updated): the impulse L on its body at its contact
   !> point, from K and the contact points' relative velocity with c's law;
   !> the body's centre of mass speeds up by L/m, its angular velocity by I^-1
-  !> (arm x L); its new twist becomes y's rates. A rebound below c's
-  !> close_speed closes it (closing_impulse added to L) and stops the flight
-  !> there.
+  !> (arm x L); its new twist becomes its rates in y (the other bodies' kept).
+  !> A rebound below c's close_speed closes it (closing_impulse added to L)
+  !> and stops the flight there; with other bodies flying it ends the run
+  !> there instead (no closing impulse: a body at rest beside a flying one is
+  !> not built).
   subroutine impact(self, c, t, y, action, status)
     class(flight_ode_t), intent(inout) :: self
     integer, intent(in) :: c
@@ -422,23 +499,25 @@ contains
     type(impact_law_t) :: law
     type(impact_outcome_t) :: outcome
     type(impact_record_t) :: row
-    integer :: f, ipiv(3)
-    logical :: closes
+    integer :: f, ipiv(3), b
+    logical :: slow, closes
     f = self%mechanism%f
-    associate (body => self%work%frames(self%body_frame), n => self%gaps%gap(c)%normal, &
+    b = self%gaps%body(c)
+    associate (body => self%work%frames(self%body_frame(b)), n => self%gaps%gap(c)%normal, &
                point => self%gaps%gap(c)%point_2, contact => self%system%contacts(c))
       law = impact_law_t(restitution=contact%restitution, mu=contact%impact_mu)
-      inertia = matmul(body%rot, matmul(self%inertia, transpose(body%rot)))
-      centre = body%r + matmul(body%rot, self%centre)
+      inertia = matmul(body%rot, matmul(self%inertia(:, :, b), transpose(body%rot)))
+      centre = body%r + matmul(body%rot, self%centre(:, b))
       arm = point - centre
-      k = rigid_body_delassus(self%mass, inertia, arm)
+      k = rigid_body_delassus(self%mass(b), inertia, arm)
       ! the ground is the law's body 2: v is the body's contact point's velocity, n from the ground to it
       call resolve_impact(law, k, n, body%v + cross(body%omega, point - body%r), outcome, status)
       if (.not. status%ok()) return
       impulse = outcome%impulse
       velocity_after = outcome%velocity_after
       closing_lost = 0
-      closes = outcome%normal_speed_after < contact%close_speed
+      slow = outcome%normal_speed_after < contact%close_speed
+      closes = slow .and. size(self%body_frame) == 1
       if (closes) then
         call closing_impulse(k, n, outcome%velocity_after, contact%rolling, closing, status)
         if (.not. status%ok()) return
@@ -451,9 +530,10 @@ contains
       call lu_factor(factored, ipiv, status)
       if (status%ok()) call lu_solve(factored, ipiv, spin_change, status)
       if (.not. status%ok()) return
-      v_centre = body%v + cross(body%omega, centre - body%r) + impulse/self%mass
+      v_centre = body%v + cross(body%omega, centre - body%r) + impulse/self%mass(b)
       omega = body%omega + spin_change
-      call start_rates(self, [omega, v_centre - cross(omega, centre - body%r)], rates, status)
+      rates = y(f + 1:f + self%mechanism%ns)
+      call start_rates(self, b, [omega, v_centre - cross(omega, centre - body%r)], rates, status)
       if (.not. status%ok()) return
       y(f + 1:f + self%mechanism%ns) = rates
       row = impact_record_t(time=t, contact=c, body_1=body_index(self%system, contact%body_1), &
@@ -465,15 +545,22 @@ contains
                             energy_lost=outcome%energy_lost + closing_lost)
     end associate
     self%impacts = [self%impacts, row]
-    if (closes) then
-      action = max(action, EVENT_STOP)
-      self%landed = c
-      call add_outcome(self, 'contact '''//self%system%contacts(c)%name//''' closed at the impact at t = '// &
-                       format_short(t)//' s: the rebound, '//format_short(outcome%normal_speed_after)// &
-                       ' m/s, is below close_speed')
-    else
-      action = max(action, EVENT_RESTART)
-    end if
+    associate (name => self%system%contacts(c)%name)
+      if (closes) then
+        action = max(action, EVENT_STOP)
+        self%landed = c
+        call add_outcome(self, 'contact '''//name//''' closed at the impact at t = '//format_short(t)// &
+                         ' s: the rebound, '//format_short(outcome%normal_speed_after)//' m/s, is below close_speed')
+      else if (slow) then
+        action = max(action, EVENT_STOP)
+        call add_outcome(self, 'contact '''//name//''': the rebound of body '''//self%system%bodies(b)%name// &
+                         ''' at t = '//format_short(t)//' s, '//format_short(outcome%normal_speed_after)// &
+                         ' m/s, is below close_speed: the contact would close while other bodies fly (a body '// &
+                         'at rest beside a flying one is not built); the run ends here')
+      else
+        action = max(action, EVENT_RESTART)
+      end if
+    end associate
   end subroutine impact
 
   !> The impulse (on the body, N s) that closes a contact whose points move
@@ -506,8 +593,8 @@ contains
     self%outcome = self%outcome//text
   end subroutine add_outcome
 
-  !> The mechanism's record, with each contact's gap at its pose, its point
-  !> on shape_1 and the body's nearest point's velocity along the surface
+  !> The mechanism's record, with each contact's gap at its body's pose, its
+  !> point on shape_1 and the body's nearest point's velocity along the surface
   !> (the slip it would have: the normal part is the gap's rate).
   subroutine flight_record(self, t, y, kind, status)
     class(flight_ode_t), intent(inout) :: self
@@ -519,25 +606,23 @@ contains
     call self%mechanism_ode_t%record(t, y, kind, status)
     if (.not. status%ok()) return
     ! the record's evaluate left the mechanism at y's pose and speeds
-    associate (body => self%work%frames(self%body_frame))
-      call self%gaps%update(body%rot, body%r, status)
-      if (.not. status%ok()) return
-      n = self%series%n
-      nc = size(self%gaps%gap)
-      if (.not. allocated(self%gap_point)) allocate (self%gap_point(3, nc, 0), self%gap_velocity(3, nc, 0))
-      if (size(self%gap_point, 3) < n) then
-        call grow(self%gap_point, 2*n)
-        call grow(self%gap_velocity, 2*n)
-      end if
-      do c = 1, nc
-        associate (gap => self%gaps%gap(c))
-          self%series%monitor(self%gap_monitors(c), n) = gap%gap
-          self%gap_point(:, c, n) = gap%point_1
-          v = body%v + cross(body%omega, gap%point_2 - body%r)
-          self%gap_velocity(:, c, n) = v - dot_product(v, gap%normal)*gap%normal
-        end associate
-      end do
-    end associate
+    call self%gaps%update(self%work, self%body_frame, status)
+    if (.not. status%ok()) return
+    n = self%series%n
+    nc = size(self%gaps%gap)
+    if (.not. allocated(self%gap_point)) allocate (self%gap_point(3, nc, 0), self%gap_velocity(3, nc, 0))
+    if (size(self%gap_point, 3) < n) then
+      call grow(self%gap_point, 2*n)
+      call grow(self%gap_velocity, 2*n)
+    end if
+    do c = 1, nc
+      associate (gap => self%gaps%gap(c), body => self%work%frames(self%body_frame(self%gaps%body(c))))
+        self%series%monitor(self%gap_monitors(c), n) = gap%gap
+        self%gap_point(:, c, n) = gap%point_1
+        v = body%v + cross(body%omega, gap%point_2 - body%r)
+        self%gap_velocity(:, c, n) = v - dot_product(v, gap%normal)*gap%normal
+      end associate
+    end do
   end subroutine flight_record
 
   !> a with room for n records (its last dimension), its values kept.

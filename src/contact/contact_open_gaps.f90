@@ -1,6 +1,8 @@
-!> The gaps of a body's open contacts (issue 25): one body may have several
+!> The gaps of the bodies' open contacts (issue 25): a body may have several
 !> contacts with the ground, the surfaces it may touch (a dome and the floor
-!> it lands on, a wall and a floor). At most one carries it closed; the gap of
+!> it lands on, a wall and a floor), and several bodies may fly at once, each
+!> gap at its own body's pose (contact_flight). At most one contact carries a
+!> (single) body closed; the gap of
 !> every other (contact_gap: the signed distance of its two shapes along their
 !> common normal, through the foot-point solver) is a root function. In
 !> flight (contact_flight) every contact is open and a gap falling through
@@ -25,7 +27,7 @@ module contact_open_gaps
   use numerics_event_driver, only: EVENT_STOP
   use kinetostatics_mechanism, only: mechanism_workspace_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
-  use contact_model, only: contact_system_t
+  use contact_model, only: contact_system_t, body_index
   use contact_gap, only: contact_gap_t, new_contact_gap
   implicit none (type, external)
   private
@@ -45,10 +47,11 @@ module contact_open_gaps
   !> closing's reach.
   real(wp), parameter :: opening_gap = 1e-10_wp
 
-  !> The gaps of the body's contacts, in the order of the description's
-  !> contacts (all between the ground and the body).
+  !> The gaps of the bodies' contacts, in the order of the description's
+  !> contacts (each between the ground and a body).
   type :: open_gaps_t
     type(contact_gap_t), allocatable :: gap(:)
+    integer, allocatable :: body(:)    ! each contact's body_2: its place among the description's bodies
     real(wp), allocatable :: last(:)   ! m, each gap's last value (kept where an update fails: a trial state)
     integer :: closed = 0              ! the contact that carries the body (not watched; 0: none)
     integer :: touching = 0            ! the contact that started touching, not yet opened (0: none)
@@ -85,16 +88,17 @@ module contact_open_gaps
 
 contains
 
-  !> The gaps at the body's pose (rotation, position: its frame, world), each
-  !> from the contact search, on its contact's branch (the normals against
+  !> The gaps at the bodies' poses (work%frames(frames(b)) of body b of the
+  !> description: its frame, world), each from the contact search, on its contact's branch (the normals against
   !> each other) and open (> 0); the contact `touching` may touch (its gap
   !> not below -touching_gap_limit); the contact `closed` carries the body
   !> and is not watched. At the run's start a gap that is not open is the
   !> input's; at a switch (restarting) the motion's.
-  subroutine start_open_gaps(gaps, system, rotation, position, status, touching, closed, restarting)
+  subroutine start_open_gaps(gaps, system, work, frames, status, touching, closed, restarting)
     type(open_gaps_t), intent(out) :: gaps
     type(contact_system_t), intent(in) :: system
-    real(wp), intent(in) :: rotation(3, 3), position(3)
+    type(mechanism_workspace_t), intent(in) :: work
+    integer, intent(in) :: frames(:)   ! each body's frame in work
     type(status_t), intent(inout) :: status
     integer, intent(in) :: touching, closed
     logical, intent(in) :: restarting   ! a switch during the run (not the run's start, the input's)
@@ -103,14 +107,15 @@ contains
     gaps%closed = closed
     allocate (gaps%gap(size(system%contacts)), gaps%last(size(system%contacts)))
     gaps%last = 0
+    gaps%body = [(body_index(system, system%contacts(c)%body_2), c = 1, size(system%contacts))]
     do c = 1, size(system%contacts)
       if (c == closed) cycle
-      associate (contact => system%contacts(c), gap => gaps%gap(c))
+      associate (contact => system%contacts(c), gap => gaps%gap(c), body => work%frames(frames(gaps%body(c))))
         s1 = findloc([(system%shapes(k)%name == contact%shape_1, k = 1, size(system%shapes))], .true., dim=1)
         s2 = findloc([(system%shapes(k)%name == contact%shape_2, k = 1, size(system%shapes))], .true., dim=1)
         gap = new_contact_gap(system%shapes(s1)%surface, contact%side_1, system%shapes(s2)%surface, contact%side_2, &
                               [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp])
-        call gap%start_from_search(identity, ground_origin, rotation, position, status)
+        call gap%start_from_search(identity, ground_origin, body%rot, body%r, status)
         if (.not. status%ok()) then
           status%message = 'contact '''//contact%name//''': the gap between '''//contact%shape_1//''' and '''// &
                            contact%shape_2//''' at the start: '//status%text()
@@ -141,35 +146,42 @@ contains
     end do
   end subroutine start_open_gaps
 
-  !> Every watched gap at the body's pose (rotation, position: world). A
-  !> failed update leaves the status failed and the gap's last value.
-  subroutine gaps_update(self, rotation, position, status)
+  !> Every watched gap at its body's pose (work%frames(frames(b)) of body b:
+  !> world). A failed update leaves the status failed and the gap's last value.
+  subroutine gaps_update(self, work, frames, status)
     class(open_gaps_t), intent(inout) :: self
-    real(wp), intent(in) :: rotation(3, 3), position(3)
+    type(mechanism_workspace_t), intent(in) :: work
+    integer, intent(in) :: frames(:)
     type(status_t), intent(inout) :: status
     integer :: c
     do c = 1, size(self%gap)
       if (c == self%closed) cycle
-      call self%gap(c)%update(identity, ground_origin, rotation, position, status)
+      associate (body => work%frames(frames(self%body(c))))
+        call self%gap(c)%update(identity, ground_origin, body%rot, body%r, status)
+      end associate
       if (.not. status%ok()) return
       self%last(c) = self%gap(c)%gap
     end do
   end subroutine gaps_update
 
-  !> The root of each contact at the body's pose: its gap (the last where it
-  !> cannot be found: a trial state the integrator does not keep); the
-  !> touching contact's opening_gap - |gap|; the closed one's 1 (never zero).
-  subroutine gaps_roots(self, rotation, position, located, g)
+  !> The root of each contact at its body's pose (as gaps_update): its gap
+  !> (the last where it cannot be found: a trial state the integrator does
+  !> not keep); the touching contact's opening_gap - |gap|; the closed one's
+  !> 1 (never zero).
+  subroutine gaps_roots(self, work, frames, located, g)
     class(open_gaps_t), intent(inout) :: self
-    real(wp), intent(in) :: rotation(3, 3), position(3)
-    logical, intent(in) :: located   ! the body is at the pose (else the last values)
+    type(mechanism_workspace_t), intent(in) :: work
+    integer, intent(in) :: frames(:)
+    logical, intent(in) :: located   ! the bodies are at their poses (else the last values)
     real(wp), intent(out) :: g(:)
     type(status_t) :: status
     integer :: c
     do c = 1, size(self%gap)
       if (c == self%closed) cycle
       if (located) then
-        call self%gap(c)%update(identity, ground_origin, rotation, position, status)
+        associate (body => work%frames(frames(self%body(c))))
+          call self%gap(c)%update(identity, ground_origin, body%rot, body%r, status)
+        end associate
         if (status%ok()) self%last(c) = self%gap(c)%gap
       end if
     end do
@@ -202,9 +214,7 @@ contains
     carried%shadow_charts = carried%chart_changes
     allocate (carried%gap_value(size(system%contacts), 0), carried%gap_point(3, size(system%contacts), 0), &
               carried%gap_velocity(3, size(system%contacts), 0))
-    associate (body => carried%work%frames(body_frame))
-      call start_open_gaps(carried%gaps, system, body%rot, body%r, status, 0, closed, .true.)
-    end associate
+    call start_open_gaps(carried%gaps, system, carried%work, [body_frame], status, 0, closed, .true.)
   end subroutine carry
 
   integer function carried_root_count(self) result(n)
@@ -225,9 +235,7 @@ contains
     if (n == size(g)) return
     call follow_charts(self)
     call self%mechanism%set_positions(self%shadow_work, y(1:self%mechanism%f), status)
-    associate (body => self%shadow_work%frames(self%body_frame))
-      call self%gaps%roots(body%rot, body%r, status%ok(), all)
-    end associate
+    call self%gaps%roots(self%shadow_work, [self%body_frame], status%ok(), all)
     call drop_closed(self, all, g(n + 1:))
   end subroutine carried_roots
 
@@ -315,7 +323,7 @@ contains
     if (.not. status%ok()) return
     call self%mechanism%set_velocities(self%shadow_work, y(f + 1:f + self%mechanism%ns))
     associate (body => self%shadow_work%frames(self%body_frame))
-      call self%gaps%update(body%rot, body%r, status)
+      call self%gaps%update(self%shadow_work, [self%body_frame], status)
       if (.not. status%ok()) return
       do c = 1, nc
         if (c == self%gaps%closed) cycle

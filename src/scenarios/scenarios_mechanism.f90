@@ -11,6 +11,7 @@ module scenarios_mechanism
   use kinetostatics_recorder, only: mechanism_series_t
   use kinetostatics_mechanism, only: mechanism_t
   use base_vector, only: cross
+  use base_text, only: format_integer
   use io_input, only: input_text_t, format_real, mark_input_failure, where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, check_output_count
@@ -247,8 +248,22 @@ contains
         position(:, j) = flight%gap_point(:, impacts(j)%contact, i)
       end do
       call write_impacts_table(file, impacts, position, status)
+      call file%write_text('/contact/impacts/body_names', body_names(flight), 'the bodies of body_1 and body_2 '// &
+                           'by their numbers: 0 the ground, then each &body''s name after its place', status)
     end associate
   end subroutine write_impacts
+
+  !> "0 ground, 1 <name of the first &body>, 2 ...": the numbers of the
+  !> impacts table's bodies.
+  function body_names(flight) result(text)
+    type(flight_ode_t), intent(in) :: flight
+    character(len=:), allocatable :: text
+    integer :: b
+    text = '0 ground'
+    do b = 1, size(flight%system%bodies)
+      text = text//', '//format_integer(b)//' '//flight%system%bodies(b)%name
+    end do
+  end function body_names
 
   !> The impacts table's datasets and their scales.
   subroutine write_impacts_table(file, impacts, position, status)

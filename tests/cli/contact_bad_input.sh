@@ -7,8 +7,9 @@
 # (which contact, which side to flip), inertia tensors that are not positive
 # definite (at the &body), start velocities that push into the surface; a
 # chain that does not apply (the open chain with rolling, a chain at velocity
-# level) or is unknown; a friction law without mu; several bodies in flight
-# (contacts that start open or may open on two bodies). A message about a contact
+# level) or is unknown; a friction law without mu; what several bodies in
+# flight cannot do yet (one closed beside a flight, a contact between two
+# bodies that may open). A message about a contact
 # or body names it once, by its place.
 set -u
 slidesim=$1
@@ -109,16 +110,23 @@ printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_
   "$head" "$ball" > "$work/unknown_chain.nml"
 expect unknown_chain 1 'unknown_chain.nml:' '&contact' chain "'closed'" 'open loop'
 
-# several bodies in flight at once (issue 25): the flight is one free body,
-# so two balls dropped on the table, or a stacked ball that may lift off its
-# carrier while the carrier stays on the table, are refused naming the input
-printf "%s\n%s\n&body name = 'other', mass = 1, solid_of = 'ball', position = 1, 0, 0.5 /\n&contact name = 'c', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', start = 'open', restitution = 0.5 /\n&contact name = 'c2', shape_1 = 'table', body_2 = 'other', shape_2 = 'ball', start = 'open', restitution = 0.5 /\n" \
-  "$head" "$ball" > "$work/two_flying.nml"
-expect two_flying 1 'two_flying.nml:7:' "&contact name = 'c'" 'one body with the ground' \
-  'several bodies flying at once' '2 contacts and 2 bodies'
+# several bodies in flight at once (issue 25): they fly and bounce, but one
+# flying while another stays in contact is not built, so two balls on the
+# table of which one starts closed, two flying balls with what only a closed
+# contact uses (may_open, friction: a rebound below close_speed ends such a
+# run), and a stacked ball that may lift off its carrier (a contact between
+# two bodies) are refused naming the input
+printf "%s\n%s\n&body name = 'other', mass = 1, solid_of = 'ball', position = 1, 0, 0.5 /\n&contact name = 'c', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n&contact name = 'c2', shape_1 = 'table', body_2 = 'other', shape_2 = 'ball', start = 'open', restitution = 0.5 /\n" \
+  "$head" "$ball" > "$work/one_closed.nml"
+expect one_closed 1 'one_closed.nml:7:' "&contact name = 'c'" 'with several bodies (2) every contact starts open' \
+  'one flying while another stays in contact'
+printf "%s\n%s\n&body name = 'other', mass = 1, solid_of = 'ball', position = 1, 0, 0.5 /\n&contact name = 'c', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', start = 'open', restitution = 0.5 /\n&contact name = 'c2', shape_1 = 'table', body_2 = 'other', shape_2 = 'ball', start = 'open', restitution = 0.5, may_open = .true. /\n" \
+  "$head" "$ball" > "$work/two_may_open.nml"
+expect two_may_open 1 'two_may_open.nml:8:' "&contact name = 'c2'" 'does not close after a landing' 'may_open'
 printf "%s\n%s\n&body name = 'top', mass = 1, solid_of = 'ball', position = 0, 0, 0.4 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n&contact name = 'stack', body_1 = 'ball', shape_1 = 'ball', body_2 = 'top', shape_2 = 'ball', may_open = .true. /\n" \
   "$head" "$ball" > "$work/top_lifts.nml"
-expect top_lifts 1 'top_lifts.nml:8:' "&contact name = 'stack'" 'one flying while another stays in contact'
+expect top_lifts 1 'top_lifts.nml:8:' "&contact name = 'stack'" "body_1 = 'ball'" 'a body landing on another body' \
+  'one flying while another stays in contact'
 
 # a cup that cannot close in a B-spline bowl (table 3.2's paraboloids): which
 # contact, by how much
