@@ -8,14 +8,14 @@ module scenarios_ride_results
   use geometry_surface, only: surface_t
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, rider_friction_kind
   use rider_ride, only: ride_result_t, ride_series_t
-  use design_ride_evaluation, only: limit_stored_unit
+  use design_ride_evaluation, only: limit_stored_unit, ride_limit_t, limit_verdict_t
   use design_ride_report, only: ride_report_t
   use io_hdf5, only: result_file_t
   use io_output_files, only: text_output_t
   use scenarios_ride_flights, only: write_flights
   implicit none (type, external)
   private
-  public :: friction_name, write_ride, write_evaluation, write_ride_csv
+  public :: friction_name, write_ride, write_evaluation, write_ride_csv, write_limit_verdicts
 
 contains
 
@@ -145,7 +145,7 @@ contains
     type(status_t), intent(inout) :: status
     character(len=*), parameter :: g = '/evaluation/'
     character(len=*), parameter :: axis(3) = [character(len=12) :: 'longitudinal', 'lateral', 'normal']
-    character(len=:), allocatable :: c, unit, judged_where
+    character(len=:), allocatable :: c, judged_where
     integer :: k
     if (r%n < 1) return
     call file%write_scalar(g//'ride_time', r%ride_time, 's', 'time from the start to the stop', status)
@@ -190,30 +190,49 @@ contains
                              'margin)', status)
       call file%write_scalar(c//'normal_force_min_arc_length', r%normal_min_at(k), 'm', 'where', status)
     end do
-    do k = 1, size(r%limits)
-      c = g//'limits/'//format_integer(k)//'_'//r%limits(k)%quantity//'/'
-      unit = limit_stored_unit(r%limits(k)%quantity, r%felt_units)
-      call file%write_text(c//'quantity', r%limits(k)%quantity, 'what is limited', status)
-      if (r%limits(k)%has_minimum) call file%write_scalar(c//'minimum', r%limits(k)%minimum, unit, &
-                                                          'the lower limit', status)
-      if (r%limits(k)%has_maximum) call file%write_scalar(c//'maximum', r%limits(k)%maximum, unit, &
-                                                          'the upper limit', status)
-      call file%write_text(c//'given_unit', r%limits(k)%unit, 'the unit the limit was given in', status)
-      if (.not. r%judged(k)) then
-        call file%write_text(c//'verdict', 'not judged', 'the ride did not reach the exit', status)
+    if (size(r%limits) > 0) call write_limit_verdicts(file, g//'limits/', r%limits, r%verdicts, r%judged, &
+                                                      r%felt_units, 'the ride did not reach the exit', status)
+  end subroutine write_evaluation
+
+  !> One group per limit under `group` (`<k>_<quantity>/`): the quantity,
+  !> its bounds in the unit stored (felt accelerations in `felt_units`), the
+  !> unit given and the verdict with its worst value, where and by how much;
+  !> `not_judged` says why a limit was not judged (judged(k) false). The
+  !> ride's /evaluation/limits and a vehicle's /sled/vehicle/limits
+  !> (docs/outputs.md).
+  subroutine write_limit_verdicts(file, group, limits, verdicts, judged, felt_units, not_judged, status)
+    type(result_file_t), intent(inout) :: file
+    character(len=*), intent(in) :: group, felt_units, not_judged
+    type(ride_limit_t), intent(in) :: limits(:)
+    type(limit_verdict_t), intent(in) :: verdicts(:)
+    logical, intent(in) :: judged(:)
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: c, unit
+    integer :: k
+    do k = 1, size(limits)
+      c = group//format_integer(k)//'_'//limits(k)%quantity//'/'
+      unit = limit_stored_unit(limits(k)%quantity, felt_units)
+      call file%write_text(c//'quantity', limits(k)%quantity, 'what is limited', status)
+      if (limits(k)%has_minimum) call file%write_scalar(c//'minimum', limits(k)%minimum, unit, &
+                                                        'the lower limit', status)
+      if (limits(k)%has_maximum) call file%write_scalar(c//'maximum', limits(k)%maximum, unit, &
+                                                        'the upper limit', status)
+      call file%write_text(c//'given_unit', limits(k)%unit, 'the unit the limit was given in', status)
+      if (.not. judged(k)) then
+        call file%write_text(c//'verdict', 'not judged', not_judged, status)
         cycle
       end if
-      call file%write_text(c//'verdict', trim(merge('exceeded', 'ok      ', r%verdicts(k)%exceeded)), &
+      call file%write_text(c//'verdict', trim(merge('exceeded', 'ok      ', verdicts(k)%exceeded)), &
                            'ok or exceeded', status)
-      call file%write_scalar(c//'worst', r%verdicts(k)%worst, unit, &
+      call file%write_scalar(c//'worst', verdicts(k)%worst, unit, &
                              'the value furthest beyond (or nearest to) a bound', status)
-      call file%write_scalar(c//'worst_arc_length', r%verdicts(k)%worst_where, 'm', 'where', status)
-      call file%write_scalar(c//'excess', r%verdicts(k)%excess, unit, 'by how much it is exceeded (0: not)', &
+      call file%write_scalar(c//'worst_arc_length', verdicts(k)%worst_where, 'm', 'where', status)
+      call file%write_scalar(c//'excess', verdicts(k)%excess, unit, 'by how much it is exceeded (0: not)', &
                              status)
-      if (r%verdicts(k)%exceeded) call file%write_scalar(c//'first_arc_length', r%verdicts(k)%first_where, 'm', &
-                                                         'where it is first exceeded', status)
+      if (verdicts(k)%exceeded) call file%write_scalar(c//'first_arc_length', verdicts(k)%first_where, 'm', &
+                                                       'where it is first exceeded', status)
     end do
-  end subroutine write_evaluation
+  end subroutine write_limit_verdicts
 
   !> --ride-csv: one line per record of the ride (as /rider in the result).
   subroutine write_ride_csv(path, s, r, status)

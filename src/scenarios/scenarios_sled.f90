@@ -31,6 +31,7 @@ module scenarios_sled
   use io_mechanism_config, only: read_sled_config
   use io_geometry_config, only: geometry_groups
   use scenarios_mechanism, only: run_mechanism, run_figures_t
+  use scenarios_ride_results, only: write_limit_verdicts
   implicit none (type, external)
   private
   public :: run_sled, sled_groups
@@ -233,6 +234,19 @@ contains
     type(result_file_t), intent(inout) :: file
     type(status_t), intent(inout) :: status
     character(len=*), parameter :: g = '/sled/vehicle'
+    ! the width check's verdict (docs/vehicles.md, "Does it fit?")
+    call file%write_scalar(g//'/width', self%width, 'm', 'the vehicle''s width (across, the widest of vehicle '// &
+                           'and riders)', status)
+    if (self%fits_checked) then
+      call file%write_scalar(g//'/narrowest_section', self%narrowest, 'm', 'the width of the slide''s narrowest '// &
+                             'section across its bottom (the vehicle fits: not wider by more than 1 mm)', status)
+      call file%write_scalar(g//'/narrowest_section_arc_length', self%narrowest_at, 'm', 'where', status)
+    else
+      call file%write_text(g//'/narrowest_section', 'not checked', 'the surface is not a slide (no sections)', &
+                           status)
+    end if
+    if (allocated(self%verdicts)) call write_limit_verdicts(file, g//'/limits/', self%limits, self%verdicts, &
+      self%judged, felt_acceleration_units(self%gravity), 'the vehicle did not reach the end of the slide', status)
     if (.not. allocated(self%speed)) return
     call file%write_vector(g//'/speed', self%speed, 'm/s', 'speed of the vehicle''s centre of mass', status)
     call file%write_matrix(g//'/felt_acceleration', self%felt, felt_acceleration_units(self%gravity), &
