@@ -123,6 +123,10 @@ module io_declarations_multibody
     declaration_t(groups='sled', name='scale', unit='1', default='1', low=0.6_wp, high=1.1_wp, &
       meaning='every rider''s size: height scale x 1.741 m, mass scale^3 x 73.0 kg (0.6: a small child, 1.1: a '// &
       'tall adult; not for the bar)'), &
+    declaration_t(groups='sled', name='water', kind=VALUE_WORDS, &
+      default='''computed'' (a vehicle), ''dry'' (the bar)', &
+      choices='computed dry', meaning='a vehicle rides in the water computed on the slide (&water, &water_solver, '// &
+      '&inlet; the water''s drag at both contacts, docs/vehicles.md, "In the water") or dry; the bar rides dry'), &
     declaration_t(groups='sled', name='drag_area', unit='m^2', default='0', low=0.0_wp, high=1e3_wp, &
       meaning='C_d A of the air''s quadratic drag on the bar at its centre of mass (docs/contact.md, Air drag; '// &
       '0: none)'), &

@@ -83,9 +83,9 @@ module io_declarations_ride
       meaning='water drag on the three spheres'), &
     declaration_t(groups='rider', name='drag_radius', shape='3', unit='m', default='0.5, 0.05, 0.5', &
       low=0.0_wp, high=5.0_wp, open_low=.true., meaning='sphere radii: pelvis, heels, back (thesis 4.3)'), &
-    declaration_t(groups='rider', name='water_density', unit='kg/m^3', default='1000', low=100.0_wp, &
+    declaration_t(groups='rider sled', name='water_density', unit='kg/m^3', default='1000', low=100.0_wp, &
       high=5000.0_wp, meaning='density of the water (drag)'), &
-    declaration_t(groups='rider', name='water_viscosity', unit='m^2/s', default='1e-6', low=1e-8_wp, &
+    declaration_t(groups='rider sled', name='water_viscosity', unit='m^2/s', default='1e-6', low=1e-8_wp, &
       high=1e-3_wp, meaning='kinematic viscosity of the water (Reynolds number of the drag)'), &
     declaration_t(groups='rider water', name='gravity', shape='3', unit='m/s^2', default='0, 0, -9.80665', &
       low=-1e3_wp, high=1e3_wp, meaning='gravity vector, one per run: a ride takes it from `&rider` or `&water` '// &

@@ -77,7 +77,7 @@ contains
     real(wp) :: inertia(3), u0, v0, phi0, du0, dv0, dphi0
     type(group_reader_t) :: r
     character(len=32) :: friction
-    character(len=16) :: kind
+    character(len=16) :: kind, water
     type(status_t) :: checked
     type(spec_t) :: law
     integer :: k
@@ -119,6 +119,23 @@ contains
       call check_vehicle(given, checked)
       if (.not. checked%ok()) call r%invalid('riders', format_integer(given%riders), riders_allowed(given%kind), &
                                              status)
+    end if
+    ! the water (docs/vehicles.md, "In the water"): a vehicle rides in the
+    ! computed water unless water = 'dry' says otherwise; the bar rides dry
+    water = trim(merge('computed', 'dry     ', given%kind /= VEHICLE_BAR))
+    call r%get('water', water, status, choices=[character(len=8) :: 'computed', 'dry'])
+    given%in_water = water == 'computed'
+    call r%get('water_density', given%water%density, status)
+    call r%get('water_viscosity', given%water%kinematic_viscosity, status)
+    if (status%ok() .and. given%in_water .and. given%kind == VEHICLE_BAR) then
+      call r%invalid('water', '''computed''', 'the water''s drag acts on a vehicle''s contacts (docs/vehicles.md); '// &
+                     'the bar rides dry', status)
+    else if (status%ok() .and. .not. given%in_water) then
+      call r%refuse_given([character(len=15) :: 'water_density', 'water_viscosity'], 'they describe the water''s '// &
+                          'drag, and the sled rides dry (water = ''dry'')', status)
+    else if (status%ok() .and. .not. (given%water%density > 0 .and. given%water%kinematic_viscosity > 0)) then
+      call r%invalid('water_density, water_viscosity', format_real(given%water%density)//', '// &
+                     format_real(given%water%kinematic_viscosity), 'both must be > 0 (kg/m^3, m^2/s)', status)
     end if
     if (present(vehicle)) vehicle = given
     call r%get('drag_area', config%params%drag_area, status)

@@ -135,20 +135,22 @@ contains
     qd0 = [d%dcrank0]
   end subroutine build_fourbar_model
 
-  !> The sled of `d` on `surface` and its start: (u, v, phi) and their rates.
-  subroutine build_sled_model(d, surface, m, q0, qd0, status)
+  !> The sled of `d` on `surface` and its start: (u, v, phi) and their rates
+  !> (finish = .false.: left open for more laws, as build_sled).
+  subroutine build_sled_model(d, surface, m, q0, qd0, status, finish)
     type(sled_description_t), intent(in) :: d
     class(surface_t), intent(in) :: surface
     type(mechanism_t), intent(out) :: m
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: finish
     if (.not. status%ok()) return
     if (.not. surface%in_domain(d%q0(1), d%q0(2))) then
       call set_status(status, STATUS_INVALID_INPUT, 'sled: the start (u0, v0) = ('//format_short(d%q0(1))//', '// &
                       format_short(d%q0(2))//') must lie in the parameter domain of the '//surface%describe())
       return
     end if
-    call build_sled(d%params, surface, d%q0, m, status)
+    call build_sled(d%params, surface, d%q0, m, status, finish)
     q0 = d%q0
     qd0 = d%qd0
   end subroutine build_sled_model

@@ -10,6 +10,7 @@ module kinetostatics_recorder
   use base_series, only: growable_series_t, resize
   use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use kinetostatics_contact, only: contact_t
+  use kinetostatics_force_law, only: friction_law_t
   implicit none (type, external)
   private
   public :: mechanism_series_t, join_series
@@ -21,7 +22,10 @@ module kinetostatics_recorder
       contact_names(:), law_names(:), monitor_names(:)
     character(len=8), allocatable :: monitor_units(:)
     integer, allocatable :: body_frame(:)
-    integer, allocatable :: law_contact(:)            ! contact of each law (0: none)
+    !> the contact of each friction law (0: none, or a law that is not a
+    !> friction: the water's drag at a vehicle's contact is not summed into
+    !> the contact's friction)
+    integer, allocatable :: law_contact(:)
     real(wp), allocatable :: time(:)                   ! s
     integer, allocatable :: kind(:)                    ! RECORD_START, _OUTPUT or _EVENT (numerics_event_driver)
     real(wp), allocatable :: q(:, :), qd(:, :), qdd(:, :)    ! f x n: every coordinate, its rates
@@ -73,7 +77,11 @@ contains
     end do
     do k = 1, self%nl
       self%law_names(k) = m%laws(k)%law%name
-      self%law_contact(k) = m%laws(k)%law%contact
+      self%law_contact(k) = 0
+      select type (law => m%laws(k)%law)
+      class is (friction_law_t)
+        self%law_contact(k) = law%contact
+      end select
     end do
     call allocate_arrays(self, max(capacity, 2))
   end subroutine series_init

@@ -30,6 +30,9 @@ module rider_vehicle
   use rider_extremes, only: felt_acceleration
   use kinetostatics_models, only: sled_description_t, build_sled_model
   use rider_body, only: body_params_t, rigid_body_t, rider_body_t, build_rider_body, add_segment, SEX_MALE
+  use rider_drag, only: water_properties_t
+  use rider_water_drag, only: new_water_drag, in_water_roots
+  use water_field, only: water_field_t
   implicit none (type, external)
   private
   public :: vehicle_t, vehicle_body_t, vehicle_body, check_vehicle, build_vehicle_model, vehicle_kind_index
@@ -60,6 +63,14 @@ module rider_vehicle
   real(wp), parameter :: raft_radii(2) = [0.75_wp, 0.22_wp]        ! m: 1.94 m outside
   real(wp), parameter :: raft_mass = 30.0_wp                       ! kg, tube and floor
   real(wp), parameter :: raft_floor = 0.03_wp                      ! m, the floor the raft's riders sit on
+  !> The water's drag on a vehicle (docs/vehicles.md, "In the water"): the
+  !> rider's drag model (rider_drag) on a sphere at each contact, the
+  !> sphere standing for what the vehicle wets there: a tube's cross-section
+  !> (its radius r) under a ring or a raft, the body-slide rider's pelvis
+  !> and back spheres (0.5 m, thesis 4.3) under a mat and a seat, its heels'
+  !> (0.05 m) under a sitting rider's heels.
+  real(wp), parameter :: body_sphere = 0.5_wp, heel_sphere = 0.05_wp   ! m
+
   !> a person's width at scale 1 (shoulders, biacromial breadth of an adult
   !> man, about 0.40 m; de Leva's segments have no widths), scaled by `scale`
   real(wp), parameter :: shoulder_breadth = 0.40_wp                ! m
@@ -78,6 +89,10 @@ module rider_vehicle
     integer :: kind = VEHICLE_BAR     ! VEHICLE_BAR: the plain bar of &sled, no vehicle
     integer :: riders = 1
     real(wp) :: scale = 1             ! every rider's size (see the header)
+    !> in the computed water (&sled water = 'computed', the default for a
+    !> vehicle) or dry (water = 'dry'); the bar rides dry
+    logical :: in_water = .false.
+    type(water_properties_t) :: water
   end type vehicle_t
 
   !> The vehicle with its riders as one rigid body, in V.
@@ -87,6 +102,7 @@ module rider_vehicle
     real(wp) :: width = 0             ! m, across (along y): the widest of vehicle and riders
     real(wp) :: rider_mass = 0        ! kg, each rider
     real(wp) :: vehicle_mass = 0      ! kg, the vehicle without riders (0: a rider sitting on the slide)
+    real(wp) :: drag_radius(2) = 0    ! m, the water drag's sphere at the rear and the front contact
   end type vehicle_body_t
 
 contains
@@ -151,17 +167,20 @@ contains
       vb%length = mat_size(1)
       vb%width = max(mat_size(2), v%scale*shoulder_breadth)
       vb%vehicle_mass = mat_mass
+      vb%drag_radius = body_sphere
     case (VEHICLE_SITTING)
       ! on the slide itself: seat (the pelvis contact) behind, heels in front
       call add_body(vb%body, sitting, 0.0_wp, [0.0_wp, 0.0_wp, 0.0_wp])
       vb%length = heel
       vb%width = v%scale*shoulder_breadth
+      vb%drag_radius = [body_sphere, heel_sphere]
     case (VEHICLE_RING)
       call add_body(vb%body, torus(ring_mass, ring_radii), 0.0_wp, [ring_radii(1), 0.0_wp, ring_radii(2)])
       call add_body(vb%body, sitting, 0.0_wp, [ring_radii(1), 0.0_wp, ring_radii(2)])
       vb%length = 2*ring_radii(1)
       vb%width = 2*sum(ring_radii)
       vb%vehicle_mass = ring_mass
+      vb%drag_radius = ring_radii(2)
     case (VEHICLE_DOUBLE_RING)
       ! two rings in line, touching (centres 2 (R + r) apart); the first
       ! rider in the front ring, the second in the rear one
@@ -176,6 +195,7 @@ contains
         vb%width = 2*(r1 + r2)
       end associate
       vb%vehicle_mass = 2*ring_mass
+      vb%drag_radius = ring_radii(2)
     case (VEHICLE_RAFT)
       ! riders evenly round the floor, backs to the tube, legs to the
       ! middle; the first at the rear facing forward
@@ -189,21 +209,31 @@ contains
         vb%width = 2*(r1 + r2)
       end associate
       vb%vehicle_mass = raft_mass
+      vb%drag_radius = raft_radii(2)
     end select
   end subroutine vehicle_body
 
   !> The sled of `d` with the body of vehicle `v` in place of its bar (its
   !> length, mass, inertia and centre of mass), on `surface`, and its start
-  !> (build_sled_model).
-  subroutine build_vehicle_model(v, d, surface, m, q0, qd0, status)
+  !> (build_sled_model). Given `water` (the computed water on `surface`),
+  !> the water's drag at both contacts ('rear_water_drag',
+  !> 'front_water_drag': rider_water_drag with the vehicle's spheres and
+  !> v%water), each on where its contact starts between the water's edges.
+  subroutine build_vehicle_model(v, d, surface, m, q0, qd0, status, water)
     type(vehicle_t), intent(in) :: v
     type(sled_description_t), intent(in) :: d
     class(surface_t), intent(in) :: surface
     type(mechanism_t), intent(out) :: m
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     type(status_t), intent(inout) :: status
+    type(water_field_t), intent(in), optional :: water
+    character(len=*), parameter :: contacts(2) = [character(len=5) :: 'rear', 'front']
+    character(len=*), parameter :: u_names(2) = [character(len=2) :: 'u', 'u2']
+    character(len=*), parameter :: v_names(2) = [character(len=2) :: 'v', 'v2']
     type(sled_description_t) :: carried
     type(vehicle_body_t) :: vb
+    real(wp) :: g(2)
+    integer :: k, su, sv
     if (.not. status%ok()) return
     carried = d
     if (v%kind /= VEHICLE_BAR) then
@@ -217,7 +247,24 @@ contains
       carried%params%inertia = vb%body%inertia
       carried%params%centre_offset = vb%body%com - [vb%length/2, 0.0_wp, 0.0_wp]
     end if
-    call build_sled_model(carried, surface, m, q0, qd0, status)
+    if (.not. present(water)) then
+      call build_sled_model(carried, surface, m, q0, qd0, status)
+      return
+    end if
+    if (v%kind == VEHICLE_BAR) then
+      call set_status(status, STATUS_INTERNAL, 'the water''s drag acts on a vehicle''s contacts, not on the bar')
+      return
+    end if
+    call build_sled_model(carried, surface, m, q0, qd0, status, finish=.false.)
+    if (.not. status%ok()) return
+    do k = 1, 2
+      su = m%scalar_index(trim(u_names(k)))
+      sv = m%scalar_index(trim(v_names(k)))
+      call in_water_roots(water, m%scalars(su)%q, m%scalars(sv)%q, g)
+      call m%add_law(new_water_drag(trim(contacts(k))//'_water_drag', m%contact_index(trim(contacts(k))), su, sv, &
+                                    vb%drag_radius(k), v%water, water, all(g > 0)))
+    end do
+    call m%finalize(status)
   end subroutine build_vehicle_model
 
   !> The ride figures of a vehicle's run at each of its records `s`

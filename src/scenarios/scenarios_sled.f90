@@ -20,7 +20,7 @@ module scenarios_sled
   use rider_vehicle, only: vehicle_t, vehicle_body_t, vehicle_body, build_vehicle_model, vehicle_ride_figures, &
     vehicle_kinds, VEHICLE_BAR, narrowest_section, width_tolerance
   use design_ride_evaluation, only: felt_acceleration_units
-  use io_hdf5, only: result_file_t
+  use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t
   use base_text, only: format_short
   use io_input, only: input_text_t, check_known_groups, invalid, format_real, mark_input_failure
@@ -32,12 +32,22 @@ module scenarios_sled
   use io_geometry_config, only: geometry_groups
   use scenarios_mechanism, only: run_mechanism, run_figures_t
   use scenarios_ride_results, only: write_limit_verdicts
+  use scenarios_water, only: build_water
+  use water_run, only: water_description_t, water_result_t, compute_water
+  use water_flow, only: outcome_name
+  use io_water_results, only: write_water_results
+  use io_input, only: group_present, where_given
+  use geometry_tube, only: tube_surface_t
+  use base_log, only: log_info
+  use base_status, only: set_status, prefix_status, STATUS_INVALID_INPUT
   implicit none (type, external)
   private
   public :: run_sled, sled_groups
 
-  character(len=*), parameter :: sled_groups(11) = [character(len=14) :: 'run', 'solver', 'surface', 'sled', &
-    'evaluation', geometry_groups]
+  character(len=*), parameter :: sled_groups(14) = [character(len=14) :: 'run', 'solver', 'surface', 'sled', &
+    'evaluation', 'water', 'water_solver', 'inlet', geometry_groups]
+  !> the groups of the water a vehicle rides in (scenarios_water's build_water)
+  character(len=*), parameter :: water_only_groups(3) = [character(len=12) :: 'water', 'water_solver', 'inlet']
   !> The limits a vehicle's ride is judged on (docs/vehicles.md, "Limits"):
   !> the quantities of the body-slide rider that a rigid vehicle has.
   character(len=*), parameter :: vehicle_quantities(6) = [character(len=25) :: 'speed', 'exit_speed', &
@@ -59,6 +69,9 @@ module scenarios_sled
     class(slide_surface_t), allocatable :: slide    ! where the limits are judged (arc length of the rear contact)
     type(limit_verdict_t), allocatable :: verdicts(:)
     logical, allocatable :: judged(:)               ! exit_speed: only when the vehicle reached the end
+    logical :: in_water = .false.                   ! the water computed on the slide, its drag at the contacts
+    type(water_description_t) :: water             ! (in_water) the water as given
+    type(water_result_t) :: water_result            ! (in_water) the computed water, written under /water
   contains
     procedure :: compute => vehicle_compute
     procedure :: write => vehicle_write
@@ -87,7 +100,7 @@ contains
     logical :: fail_on_limit
     integer :: k
 
-    call check_known_groups(input, sled_groups, status)
+    call check_known_groups(input, sled_groups, status, repeatable=[character(len=5) :: 'inlet'])
     if (status%ok()) call read_solver_config(input, solver, status)
     if (status%ok()) call read_surface_config(input, surface_description, status, surface_source)
     if (status%ok()) call build_surface(surface_description, surface, built, part, variable)
@@ -101,8 +114,22 @@ contains
     end if
     if (vehicle%kind /= VEHICLE_BAR) call check_vehicle_fits(input, vehicle, surface, figures, status)
     if (status%ok()) call read_vehicle_limits(input, run, vehicle, config, surface, figures, fail_on_limit, status)
+    if (status%ok()) call read_vehicle_water(input, vehicle, config, surface, figures, status)
     if (.not. status%ok()) return
-    call build_vehicle_model(vehicle, config, surface, sys%mechanism, q0, qd0, status)
+    ! a check (--check) builds the vehicle dry: the water is work
+    if (figures%in_water .and. .not. run%check_only) then
+      call log_info('sled: the water first ('//format_real(figures%water%flow_rate)//' m^3/s)')
+      call compute_water(figures%water, figures%water_result, status, log_info)
+      if (.not. status%ok()) then
+        call prefix_status(status, input%name//': the water the vehicle rides in')
+        call keep_failed_water(input, run, figures, status)
+        return
+      end if
+      call build_vehicle_model(vehicle, config, surface, sys%mechanism, q0, qd0, status, &
+                               water=figures%water_result%field)
+    else
+      call build_vehicle_model(vehicle, config, surface, sys%mechanism, q0, qd0, status)
+    end if
     call mark_input_failure(status)
     if (.not. status%ok()) return
     call surface%parameter_units(u_units, v_units)
@@ -169,6 +196,90 @@ contains
     call read_limit_gate(input, run, figures%limits, fail_on_limit, status, limits_group='sled')
   end subroutine read_vehicle_limits
 
+  !> A water that failed before the vehicle rode: the result file with
+  !> its provenance and /water as far as it ran, marked incomplete (exit
+  !> status 2 keeps a file, as the ride's).
+  subroutine keep_failed_water(input, run, figures, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(vehicle_figures_t), intent(in) :: figures
+    type(status_t), intent(inout) :: status
+    type(result_file_t) :: file
+    type(status_t) :: write_status
+    call file%create(trim(run%output), write_status)
+    if (write_status%ok()) then
+      call file%write_provenance('sled', trim(run%title), input%name, input%text(), write_status)
+      call write_water_results(file, figures%water, figures%water_result, write_status)
+      call file%finish(.false., status%text(), write_status)
+    end if
+    status = run_outcome(status, write_status)
+  end subroutine keep_failed_water
+
+  !> The water a vehicle rides in (docs/vehicles.md, "In the water"): with
+  !> &sled water = 'computed' (a vehicle's default) the water of &water,
+  !> &water_solver and &inlet on the slide, read and checked as the ride's
+  !> (build_water), its gravity the sled's; a surface without water (not a
+  !> tube or slide) is refused unless water = 'dry' says so. Riding dry,
+  !> the water's groups are refused (they would not be used).
+  subroutine read_vehicle_water(input, vehicle, config, surface, figures, status)
+    type(input_text_t), intent(in) :: input
+    type(vehicle_t), intent(in) :: vehicle
+    type(sled_description_t), intent(in) :: config
+    class(surface_t), intent(in) :: surface
+    type(vehicle_figures_t), intent(inout) :: figures
+    type(status_t), intent(inout) :: status
+    type(group_reader_t) :: r
+    type(vehicle_body_t) :: vb
+    real(wp) :: room, u_at
+    character(len=:), allocatable :: given
+    integer :: k
+    if (.not. status%ok()) return
+    figures%in_water = vehicle%in_water
+    if (.not. vehicle%in_water) then
+      do k = 1, size(water_only_groups)
+        if (.not. group_present(input, trim(water_only_groups(k)))) cycle
+        call set_status(status, STATUS_INVALID_INPUT, where_given(input, trim(water_only_groups(k)), '')// &
+                        ': &'//trim(water_only_groups(k))//' is not read: the sled rides dry (&sled water = '// &
+                        '''dry'', or the plain bar); a vehicle rides in the water with water = ''computed''')
+        return
+      end do
+      return
+    end if
+    select type (surface)
+    type is (tube_surface_t)
+    class default
+      call open_group(input, 'sled', r, status, also=friction_law_variables())
+      given = '''computed'''
+      if (r%has('water')) given = r%written('water')
+      call r%invalid('water', given, 'the water is computed '// &
+                     'on a slide (&surface kind = ''slide'' or ''tube''), not on the '//surface%describe()// &
+                     '; give water = ''dry'' to ride dry (docs/vehicles.md, "In the water")', status)
+      return
+    end select
+    call build_water(input, figures%water, status, stage=.true.)
+    if (.not. status%ok()) return
+    ! the drag's spheres must fit in the slide, as the rider's (check_sphere_radii)
+    call vehicle_body(vehicle, vb, status)
+    if (status%ok()) call figures%water%slide%bottom_radius(room, u_at, status)
+    call mark_input_failure(status)
+    if (.not. status%ok()) return
+    if (maxval(vb%drag_radius) > room*(1 + 1e-9_wp)) then
+      call invalid(input, 'sled', 'water', '''computed''', 'the water''s drag acts on a sphere of '// &
+                   format_short(maxval(vb%drag_radius))//' m under the '//trim(vehicle_kinds(vehicle%kind))// &
+                   ', which must fit in the slide: at most the radius of curvature across its bottom, '// &
+                   format_short(room)//' m (the smallest, at '// &
+                   format_short(figures%water%slide%arc_length(u_at))//' m of arc length)', status)
+      return
+    end if
+    if (any(figures%water%gravity /= config%params%gravity)) then
+      call open_group(input, 'water', r, status)
+      call r%invalid('gravity', r%written('gravity'), 'a ride has one gravity, and &sled''s is '// &
+                     format_real(config%params%gravity(1))//', '//format_real(config%params%gravity(2))//', '// &
+                     format_real(config%params%gravity(3))//' m/s^2: give it in &sled only, or the same in both', &
+                     status)
+    end if
+  end subroutine read_vehicle_water
+
   !> A vehicle wider than the narrowest section of the slide (by more than
   !> width_tolerance) is refused before any work: the sled's two contacts
   !> under its long axis would carry it down a slide it cannot be in
@@ -234,6 +345,7 @@ contains
     type(result_file_t), intent(inout) :: file
     type(status_t), intent(inout) :: status
     character(len=*), parameter :: g = '/sled/vehicle'
+    if (self%in_water) call write_water_results(file, self%water, self%water_result, status)
     ! the width check's verdict (docs/vehicles.md, "Does it fit?")
     call file%write_scalar(g//'/width', self%width, 'm', 'the vehicle''s width (across, the widest of vehicle '// &
                            'and riders)', status)
@@ -266,6 +378,12 @@ contains
     character(len=:), allocatable :: unit, line, unset
     integer :: k, n, i, exceeded
     call summary%add('vehicle_width', 'vehicle width', self%width, 'm')
+    if (self%in_water) then
+      call summary%add_text('water', 'water', 'computed, '//format_short(self%water%flow_rate)//' m^3/s, '// &
+                            outcome_name(self%water_result%series%outcome)//' (its drag at both contacts)')
+    else
+      call summary%add_text('water', 'water', 'none: the vehicle rides dry (&sled water = ''dry'')')
+    end if
     if (self%fits_checked) then
       call summary%add('narrowest_section', 'narrowest section', self%narrowest, 'm', &
                        'm across its bottom, at arc length '//format_short(self%narrowest_at)//' m')

@@ -8,7 +8,9 @@
 !> felt acceleration at the centre of mass (-mu cos a, 0, cos a) g along the
 !> vehicle's axes and its speed u0' + a t (it does not turn). The persons scale
 !> isometrically: a rider sitting on the slide has mass ~ s^3, length ~ s and
-!> inertia ~ s^5.
+!> inertia ~ s^5. In the water (uniform water on the incline, a constant
+!> drag coefficient): the speed against the closed form of quadratic drag
+!> balancing g (sin a - mu cos a), v = w + v_t tanh(t/T + atanh(1/2)).
 program test_vehicle
   use base_kinds, only: wp
   use base_constants, only: pi
@@ -25,6 +27,9 @@ program test_vehicle
     vehicle_ride_figures, &
     VEHICLE_MAT, VEHICLE_SITTING, VEHICLE_RING, VEHICLE_DOUBLE_RING, VEHICLE_RAFT, person_reference_mass, torus
   use rider_body, only: rigid_body_t
+  use rider_drag, only: morrison_drag_coefficient, morrison_reynolds_max
+  use water_series, only: water_series_t
+  use water_field, only: water_field_t, new_water_field
   implicit none (type, external)
 
   real(wp), parameter :: g = 9.80665_wp
@@ -42,6 +47,11 @@ program test_vehicle
   call incline(vehicle_t(VEHICLE_MAT, 1, 1.0_wp))
   call incline(vehicle_t(VEHICLE_MAT, 1, 0.6_wp))
   call incline(vehicle_t(VEHICLE_SITTING, 1, 1.0_wp))
+  call terminal_speed(vehicle_t(VEHICLE_RING, 1, 1.0_wp))
+  call terminal_speed(vehicle_t(VEHICLE_DOUBLE_RING, 2, 1.0_wp))
+  call terminal_speed(vehicle_t(VEHICLE_RAFT, 4, 1.0_wp))
+  call terminal_speed(vehicle_t(VEHICLE_MAT, 1, 1.0_wp))
+  call terminal_speed(vehicle_t(VEHICLE_SITTING, 1, 0.8_wp))
   call scaling()
   call torus_inertia(0.45_wp, 0.15_wp)
   call torus_inertia(0.75_wp, 0.22_wp)
@@ -117,6 +127,130 @@ contains
     call check_close(speed(2), qd0(1) + acc, 1e-8_wp, 0.0_wp, 'incline: speed of the centre after 1 s, '// &
                      trim(label))
   end subroutine incline
+
+  !> The vehicle in water flowing down the incline of `incline` (a = 20
+  !> degrees, mu = 0.2) at w = 2 m/s, 1.2 m deep everywhere (every drag
+  !> sphere, r <= 0.5 m, under water: the projected area pi r^2), its
+  !> kinematic viscosity 1e-8 m^2/s so that Re = |v - w| 2 r/nu > 1e6 at
+  !> every speed the run reaches (C_D held at C_D(1e6), rider_drag): the
+  !> drag is k (v - w)^2 against the motion relative to the water,
+  !> k = rho C_D pi sum(r^2)/2 over both contacts, along the fall line (no
+  !> normal part: N_rear + N_front = M g cos a, the friction mu M g cos a),
+  !> so M v' = M g (sin a - mu cos a) - k (v - w)^2: the terminal speed
+  !> w + v_t, v_t = sqrt(M g (sin a - mu cos a)/k), approached from
+  !> w + v_t/2 as v = w + v_t tanh(t/T + atanh(1/2)), T = M/(k v_t) (from
+  !> below: above it the drag's moment about the centre of mass, its force
+  !> at the contacts under it, would lift a ring's rear off). The
+  !> integration at rtol 1e-10 follows it to 1e-8 relative (the tolerance
+  !> argued as incline's); a drag at one contact only, or with the wrong
+  !> area, misses by > 10 %.
+  subroutine terminal_speed(v)
+    type(vehicle_t), intent(in) :: v
+    real(wp), parameter :: theta = 20*pi/180, mu = 0.2_wp, w = 2.0_wp, depth = 1.2_wp
+    type(vehicle_t) :: wet
+    type(sled_description_t) :: d
+    type(vehicle_body_t) :: vb
+    class(surface_t), allocatable :: plane
+    type(water_field_t) :: water
+    type(mechanism_ode_t), target :: sys
+    type(ode_integrator_t) :: integ
+    type(ode_options_t) :: opt
+    type(status_t) :: st
+    real(wp) :: k, v_t, period, t, t_out, res, expected, down(3), normal(3)
+    real(wp), allocatable :: y(:), q0(:), qd0(:)
+    character(len=40) :: label
+    integer :: i
+
+    write (label, '(a, 1x, i0, a, f4.2)') trim(vehicle_kinds(v%kind)), v%riders, ' rider(s), scale ', v%scale
+    down = [cos(theta), 0.0_wp, -sin(theta)]
+    normal = [sin(theta), 0.0_wp, cos(theta)]   ! down x (0, 1, 0): the side the vehicle is on
+    plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], down, [0.0_wp, 1.0_wp, 0.0_wp], st)
+    water = uniform_water(down, normal, w, depth, st)
+    call check(st%ok(), 'terminal speed: the water field: '//st%text())
+    wet = v
+    wet%in_water = .true.
+    wet%water%kinematic_viscosity = 1e-8_wp
+    call vehicle_body(wet, vb, st)
+    k = wet%water%density*morrison_drag_coefficient(morrison_reynolds_max)*pi*sum(vb%drag_radius**2)/2
+    v_t = sqrt(vb%body%mass*g*(sin(theta) - mu*cos(theta))/k)
+    period = vb%body%mass/(k*v_t)
+    call check(2*minval(vb%drag_radius)*0.49_wp*v_t/wet%water%kinematic_viscosity > morrison_reynolds_max, &
+               'terminal speed: Re > 1e6 from v_t/2 (C_D constant), '//trim(label))
+    d%params%friction = [law_spec('coulomb', 'mu', mu)]
+    d%q0 = [0.5_wp, 0.2_wp, 0.0_wp]
+    d%qd0 = [w + v_t/2, 0.0_wp, 0.0_wp]
+    call build_vehicle_model(wet, d, plane, sys%mechanism, q0, qd0, st, water=water)
+    if (st%ok()) call sys%mechanism%check_start(sys%work, q0, st)
+    call check(st%ok(), 'terminal speed: '//trim(label)//' starts: '//st%text())
+    if (.not. st%ok()) return
+    call check(sys%mechanism%law_index('rear_water_drag') > 0 .and. sys%mechanism%law_index('front_water_drag') > 0, &
+               'terminal speed: the water''s drag at both contacts, '//trim(label))
+    associate (m => sys%mechanism, work => sys%work)
+      call m%evaluate(work, 0.0_wp, q0, qd0, res, st)
+      call check_close(work%normal_force(1) + work%normal_force(2), vb%body%mass*g*cos(theta), 1e-10_wp, 0.0_wp, &
+                       'terminal speed: the drag has no normal part, N_rear + N_front = M g cos a, '//trim(label))
+      ! at w + v_t/2: M u'' = M g (sin a - mu cos a) (1 - 1/4)
+      call check_close(work%qdd(1), 0.75_wp*g*(sin(theta) - mu*cos(theta)), 1e-8_wp, 0.0_wp, &
+                       'terminal speed: u'''' at the start = 3/4 g (sin a - mu cos a), '//trim(label))
+      call check(min(work%normal_force(1), work%normal_force(2)) > 0, &
+                 'terminal speed: both contacts pressed, '//trim(label))
+    end associate
+    opt%rtol = 1e-10_wp
+    opt%atol = 1e-12_wp
+    y = sys%initial_state(q0, qd0)
+    call integ%start(sys, 0.0_wp, y, opt, st)
+    do i = 1, 4
+      t_out = period*2**(i - 2)   ! T/2 ... 4 T
+      call integ%advance(t_out, t, y, st)
+      call check(st%ok(), 'terminal speed: integrated: '//st%text())
+      expected = w + v_t*tanh(t/period + log(3.0_wp)/2)
+      call check_close(y(4), expected, 1e-8_wp, 0.0_wp, 'terminal speed: u''(t) = w + v_t tanh(t/T + atanh 1/2), '// &
+                       trim(label))
+    end do
+  end subroutine terminal_speed
+
+  !> Water flowing at speed w along `down` over the plane through the origin,
+  !> `depth` deep everywhere, its edges 5 m to either side: a water field
+  !> (water_field) from three samples with their rates, u the arc length.
+  function uniform_water(down, normal, w, depth, status) result(field)
+    real(wp), intent(in) :: down(3), normal(3), w, depth
+    type(status_t), intent(out) :: status
+    type(water_field_t) :: field
+    type(water_series_t) :: s
+    integer, parameter :: n = 3
+    real(wp), parameter :: u(n) = [-10.0_wp, 500.0_wp, 1010.0_wp]
+    integer :: i
+    s%n = n
+    s%flow_rate = 1
+    s%u = u
+    s%arc_length = u
+    s%time = u/w
+    s%du = [(w, i = 1, n)]
+    s%flow = [(1.0_wp, i = 1, n)]
+    s%v = [(0.0_wp, i = 1, n)]
+    s%dv = s%v
+    s%speed = s%du
+    s%height = [(depth, i = 1, n)]
+    s%width = [(10.0_wp, i = 1, n)]
+    s%centerline_speed = [(1.0_wp, i = 1, n)]
+    s%speed_rate = s%v; s%height_rate = s%v; s%width_rate = s%v; s%udd = s%v; s%vdd = s%v
+    allocate (s%position(3, n), s%velocity(3, n), s%acceleration(3, n), s%x_m(3, n), s%z_m(3, n), &
+              s%x_m_rate(3, n), s%z_m_rate(3, n), s%left_edge(2, n), s%right_edge(2, n), s%left_edge_rate(2, n), &
+              s%right_edge_rate(2, n))
+    do i = 1, n
+      s%position(:, i) = u(i)*down
+      s%velocity(:, i) = w*down
+      s%x_m(:, i) = [0.0_wp, 1.0_wp, 0.0_wp]
+      s%z_m(:, i) = normal
+      s%left_edge(:, i) = [u(i), 5.0_wp]
+      s%right_edge(:, i) = [u(i), -5.0_wp]
+      s%left_edge_rate(:, i) = [w, 0.0_wp]
+      s%right_edge_rate(:, i) = [w, 0.0_wp]
+    end do
+    s%acceleration = 0; s%x_m_rate = 0; s%z_m_rate = 0
+    s%edge_solved = [(1, i = 1, n)]
+    field = new_water_field(s, status)
+  end function uniform_water
 
   !> A rider sitting on the slide, no vehicle: every length ~ s, mass ~ s^3,
   !> so the inertia ~ s^5, the contacts' distance ~ s and the centre of mass ~ s.
