@@ -72,8 +72,9 @@ def parse_docs(path):
     return rows
 
 
-def applies(row_name, scenario):
-    """Whether a docs row can occur in a file of this scenario."""
+def applies(row_name, scenario, groups=()):
+    """Whether a docs row can occur in a file of this scenario (`groups`:
+    the file's top-level groups)."""
     head = row_name.split('/')[1]
     if head == '<s>':
         return scenario in MULTIBODY
@@ -81,6 +82,8 @@ def applies(row_name, scenario):
         return True
     if scenario == 'ride':   # the ride's stages
         return head in ('water', 'rider', 'evaluation')
+    if scenario == 'sled' and head == 'water':   # a vehicle in the water (docs/vehicles.md)
+        return 'water' in groups
     return head == scenario
 
 
@@ -148,7 +151,7 @@ def check_file(path, rows):
 
     datasets = {}
     f.visititems(lambda name, obj: datasets.__setitem__('/' + name, obj) if isinstance(obj, h5py.Dataset) else None)
-    documented = [r for r in rows if applies(r[0], scenario)]
+    documented = [r for r in rows if applies(r[0], scenario, tuple(f.keys()))]
     for name, d in sorted(datasets.items()):
         check_string(path, name, d.dtype, None)
         if 'units' not in d.attrs or 'description' not in d.attrs:
