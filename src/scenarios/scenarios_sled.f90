@@ -9,6 +9,7 @@ module scenarios_sled
   use base_status, only: status_t
   use geometry_surface, only: surface_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_END_OF_SURFACE
+  use base_constants, only: pi
   use geometry_slide_query, only: slide_surface_t
   use design_ride_evaluation, only: ride_limit_t, limit_verdict_t, evaluate_limit, limit_report_unit, limit_bounds_text, spaced_unit
   use io_input, only: group_reader_t, open_group
@@ -50,8 +51,10 @@ module scenarios_sled
   character(len=*), parameter :: water_only_groups(3) = [character(len=12) :: 'water', 'water_solver', 'inlet']
   !> The limits a vehicle's ride is judged on (docs/vehicles.md, "Limits"):
   !> the quantities of the body-slide rider that a rigid vehicle has.
-  character(len=*), parameter :: vehicle_quantities(6) = [character(len=25) :: 'speed', 'exit_speed', &
-    'acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal', 'normal_force']
+  character(len=*), parameter :: vehicle_quantities(8) = [character(len=25) :: 'speed', 'exit_speed', &
+    'acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal', 'normal_force', 'wall_angle', &
+    'wall_distance']
+  character(len=*), parameter :: contact_names(2) = [character(len=5) :: 'rear', 'front']
 
   !> A vehicle's ride figures (docs/vehicles.md, "What the run reports"):
   !> per record the speed of its centre of mass and the felt acceleration
@@ -66,7 +69,12 @@ module scenarios_sled
     logical :: fits_checked = .false.               ! the surface is a slide: its sections were measured
     real(wp) :: narrowest = 0, narrowest_at = 0     ! m: the narrowest section's width and arc length
     type(ride_limit_t), allocatable :: limits(:)    ! &sled limit_*
-    class(slide_surface_t), allocatable :: slide    ! where the limits are judged (arc length of the rear contact)
+    !> on a slide: where the limits are judged (the rear contact's arc
+    !> length) and the contacts' wall positions
+    class(slide_surface_t), allocatable :: slide
+    real(wp), allocatable :: wall_angle(:, :)       ! 2 x n, rad: each contact's, from the bottom (+ towards +v)
+    real(wp), allocatable :: wall_distance(:, :)    ! 2 x n, m: along the section from the bottom (signed)
+    real(wp), allocatable :: where(:)               ! n, m: the rear contact's arc length
     type(limit_verdict_t), allocatable :: verdicts(:)
     logical, allocatable :: judged(:)               ! exit_speed: only when the vehicle reached the end
     logical :: in_water = .false.                   ! the water computed on the slide, its drag at the contacts
@@ -179,14 +187,18 @@ contains
       if (any(vehicle_quantities == figures%limits(k)%quantity)) cycle
       call r%invalid('limit_quantity('//format_integer(k)//')', ''''//figures%limits(k)%quantity//'''', &
                      'a vehicle''s ride is judged on speed, exit_speed, acceleration_longitudinal, '// &
-                     'acceleration_lateral, acceleration_normal and normal_force; '//figures%limits(k)%quantity// &
-                     ' belongs to the body-slide rider''s contacts on the wall (docs/vehicles.md, "Limits")', status)
+                     'acceleration_lateral, acceleration_normal, normal_force, wall_angle and wall_distance; '// &
+                     figures%limits(k)%quantity//' belongs to the body-slide rider (its tipping, its flight: '// &
+                     'docs/vehicles.md, "Limits")', status)
       return
     end do
+    select type (surface)
+    class is (slide_surface_t)
+      allocate (figures%slide, source=surface)
+    end select
     if (size(figures%limits) > 0) then
       select type (surface)
       class is (slide_surface_t)
-        allocate (figures%slide, source=surface)
       class default
         call r%invalid('limit_quantity', r%written('limit_quantity'), 'limits are judged along a slide (at '// &
                        'arc lengths); the '//surface%describe()//' is not one', status)
@@ -315,8 +327,11 @@ contains
     n = sys%series%n
     self%time = sys%series%time(:n)
     if (.not. (status%ok() .and. allocated(self%slide))) return
+    call contacts_on_the_wall(self, sys, status)
+    if (.not. (status%ok() .and. allocated(self%limits))) return
+    if (size(self%limits) == 0) return
     ! the limits, judged as the body-slide rider's (design_ride_report)
-    where = [(self%slide%arc_length(sys%series%q(1, i)), i = 1, n)]
+    where = self%where
     allocate (self%verdicts(size(self%limits)), self%judged(size(self%limits)))
     self%judged = .true.
     do k = 1, size(self%limits)
@@ -335,16 +350,58 @@ contains
         values = self%felt(3, :)
       case ('normal_force')
         values = [(minval(sys%series%normal(:, i)), i = 1, n)]   ! the smaller of the two contacts'
+      case ('wall_angle')
+        values = maxval(abs(self%wall_angle), dim=1)*180/pi       ! the higher of the two contacts'
+      case ('wall_distance')
+        values = maxval(abs(self%wall_distance), dim=1)
       end select
       call evaluate_limit(self%limits(k), values, where, self%verdicts(k))
     end do
   end subroutine vehicle_compute
+
+  !> Each contact's wall position at each record (the slide's
+  !> wall_position: the angle of the slide's normal there from the
+  !> bottom's, + towards +v, and the distance along the section), as the
+  !> body-slide rider's; the rear contact's arc length.
+  subroutine contacts_on_the_wall(self, sys, status)
+    class(vehicle_figures_t), intent(inout) :: self
+    class(mechanism_ode_t), intent(in) :: sys
+    type(status_t), intent(inout) :: status
+    integer :: coordinate(2, 2), k, i, n
+    logical :: dependent(2)
+    real(wp) :: u, v
+    ! where each contact's (u, v) is recorded: a coordinate (q) or a
+    ! dependent one of the closure (beta)
+    associate (m => sys%mechanism, s => sys%series)
+      coordinate(:, 1) = [findloc(m%q, m%scalar_index('u'), 1), findloc(m%q, m%scalar_index('v'), 1)]
+      coordinate(:, 2) = [findloc(m%beta, m%scalar_index('u2'), 1), findloc(m%beta, m%scalar_index('v2'), 1)]
+      dependent = [.false., .true.]
+      n = s%n
+      allocate (self%wall_angle(2, n), self%wall_distance(2, n))
+      do i = 1, n
+        do k = 1, 2
+          if (dependent(k)) then
+            u = s%beta(coordinate(1, k), i); v = s%beta(coordinate(2, k), i)
+          else
+            u = s%q(coordinate(1, k), i); v = s%q(coordinate(2, k), i)
+          end if
+          call self%slide%wall_position(u, v, self%wall_angle(k, i), self%wall_distance(k, i), status)
+        end do
+        if (.not. status%ok()) then
+          call prefix_status(status, 'the contacts'' wall positions at t = '//format_real(s%time(i))//' s')
+          return
+        end if
+      end do
+      self%where = [(self%slide%arc_length(s%q(coordinate(1, 1), i)), i = 1, n)]
+    end associate
+  end subroutine contacts_on_the_wall
 
   subroutine vehicle_write(self, file, status)
     class(vehicle_figures_t), intent(in) :: self
     type(result_file_t), intent(inout) :: file
     type(status_t), intent(inout) :: status
     character(len=*), parameter :: g = '/sled/vehicle'
+    integer :: k
     if (self%in_water) call write_water_results(file, self%water, self%water_result, status)
     ! the width check's verdict (docs/vehicles.md, "Does it fit?")
     call file%write_scalar(g//'/width', self%width, 'm', 'the vehicle''s width (across, the widest of vehicle '// &
@@ -364,6 +421,15 @@ contains
     call file%write_matrix(g//'/felt_acceleration', self%felt, felt_acceleration_units(self%gravity), &
                            'felt acceleration (a - g)/|g| at the vehicle''s centre of mass along its x (forward), '// &
                            'y (left) and z (the normal) axes (3 x n; docs/vehicles.md)', status)
+    if (allocated(self%wall_angle)) then
+      do k = 1, 2
+        call file%write_vector(g//'/'//trim(contact_names(k))//'/wall_angle', self%wall_angle(k, :), 'rad', &
+                               'the '//trim(contact_names(k))//' contact''s angle up the wall: the slide''s normal '// &
+                               'there from the bottom''s (signed, + to the left, +v)', status)
+        call file%write_vector(g//'/'//trim(contact_names(k))//'/wall_distance', self%wall_distance(k, :), 'm', &
+                               'its distance along the section from the bottom (signed)', status)
+      end do
+    end if
     call file%set_attribute(g, 'vehicle', trim(vehicle_kinds(self%vehicle%kind)), status)
     call file%attach_scale('/sled/time', g, status)
     ! the components' scale of the sled's vectors (written with its series)
@@ -401,6 +467,15 @@ contains
       call summary%add_range('vehicle_felt_'//trim(axes(k)), 'felt '//trim(axes(k))//' min / max', &
                              minval(self%felt(k, :)), maxval(self%felt(k, :)), units, 'g')
     end do
+    if (allocated(self%wall_angle)) then
+      do k = 1, 2
+        i = maxloc(abs(self%wall_angle(k, :)), dim=1)
+        call summary%add('vehicle_'//trim(contact_names(k))//'_wall_angle', trim(contact_names(k))// &
+                         ' wall angle max', self%wall_angle(k, i)*180/pi, 'deg', 'deg ('// &
+                         format_short(self%wall_distance(k, i))//' m up the wall) at arc length '// &
+                         format_short(self%where(i))//' m')
+      end do
+    end if
     if (.not. allocated(self%verdicts)) return
     exceeded = 0
     do k = 1, size(self%limits)

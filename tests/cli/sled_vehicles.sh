@@ -178,6 +178,37 @@ if abs(t - 4.205761) > 1e-3 or abs(u - 13.368) > 0.01:
     print(f"lift-off at t = {t} s, u = {u} m; expected 4.2058 s, 13.368 m")
     sys.exit(1)
 PY
+# up the wall (docs/vehicles.md, "How high it climbs"; on 3e73489 a
+# vehicle's wall angle was refused): a mat started 0.2 rad up the demo
+# slide's tube (radius 0.5 m) on its straight entry: both contacts at wall
+# angle 0.2 rad (+: towards +v), 0.1 m along the wall, at the start; a
+# limit wall_angle <= 5 deg is judged on the larger of the two contacts'
+# |angle| at each record (the file's own series), exceeded at the start
+printf '%s\n%s\n' "$head" "&sled vehicle = 'mat', friction = 'coulomb', mu = 0.07, water = 'dry', u0 = 0.5,
+  v0 = 1.7707963267948966, du0 = 2, limit_quantity = 'wall_angle', limit_unit = 'deg', limit_max = 5.0 /" >"$work/wall.nml"
+(cd "$work" && "$slidesim" -o wall.h5 --summary-json wall.json wall.nml >wall.out 2>wall.err); got=$?
+check '[ $got = 0 ] && grep -q "rear wall angle max" "$work/wall.out" && grep -q "LIMIT EXCEEDED: wall_angle <= 5 deg" "$work/wall.out"' \
+  "a mat up the wall: exit $got or the summary lacks the wall angle: $(cat "$work/wall.out" "$work/wall.err")"
+"$python" - "$work/wall.h5" <<'PY' || { echo "FAIL a mat up the wall (above)"; failures=$((failures + 1)); }
+import sys, math
+import h5py
+import numpy as np
+bad = []
+with h5py.File(sys.argv[1], "r") as f:
+    g = f["/sled/vehicle"]
+    angle = np.array([g["rear/wall_angle"][:], g["front/wall_angle"][:]])
+    distance = np.array([g["rear/wall_distance"][:], g["front/wall_distance"][:]])
+    # the rear is the start's (u0, v0), the front the closure's (1e-10)
+    if abs(angle[0, 0] - 0.2) > 1e-12 or abs(angle[1, 0] - 0.2) > 1e-8 or np.max(np.abs(distance[:, 0] - 0.1)) > 1e-8:
+        bad.append(f"at the start: wall angles {angle[:, 0]} rad, distances {distance[:, 0]} m; expected 0.2, 0.1")
+    worst = np.max(np.abs(angle)) * 180 / math.pi
+    lim = g["limits/1_wall_angle"]
+    if abs(lim["worst"][()] - worst) > 1e-9 * worst or lim["verdict"][()] not in (b"exceeded", "exceeded"):
+        bad.append(f"limit: worst {lim['worst'][()]} deg, the series' largest {worst} deg, verdict {lim['verdict'][()]}")
+for b in bad:
+    print(b)
+sys.exit(1 if bad else 0)
+PY
 # in the water (docs/vehicles.md, "In the water"; on 3e73489 a vehicle rode
 # dry only): a mat rider in the demo slide's water (the default &water),
 # the water's drag at both contacts from the start (the water starts at
