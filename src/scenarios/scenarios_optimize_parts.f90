@@ -109,7 +109,7 @@ contains
                              status)
       call file%write_integers(p//'count', chosen%parts%count, '1', 'how many of the part the slide needs', status)
       call file%write_integers(p//'kind', [(findloc(element_kinds, e(k)%kind, 1), k=1, n)], '1', &
-                               'its kind: 1 straight, 2 curve, 3 helix, 4 runout, 5 drop', status)
+                               'its kind: '//kind_legend(), status)
       call file%write_integers(p//'direction', [(direction(k), k=1, n)], '1', &
                                'its direction: 1 left, -1 right (curve, helix), 0 none', status)
       call file%write_vector(p//'length', e%length, 'm', 'its horizontal length (straight, runout; else 0)', status)
@@ -234,4 +234,17 @@ contains
     call summary%add_line('  catalogue designs ridden: '//format_integer(size(chosen%acceleration_cost))// &
                           ', feasible: '//format_integer(count(chosen%candidate_feasible)))
   end subroutine report_element_design
+
+  !> The kinds' numbers as /optimize/parts/kind stores them (the index in
+  !> element_kinds): '1 straight, 2 curve, ...', from the list itself so
+  !> that a new kind cannot leave it stale.
+  function kind_legend() result(text)
+    character(len=:), allocatable :: text
+    integer :: k
+    text = ''
+    do k = 1, size(element_kinds)
+      if (k > 1) text = text//', '
+      text = text//format_integer(k)//' '//trim(element_kinds(k))
+    end do
+  end function kind_legend
 end module scenarios_optimize_parts

@@ -63,6 +63,12 @@ with h5py.File(sys.argv[1], "r") as f:
         bad.append(f"parts counted {g['parts/count'][:]}, expected 2 x the straight and 1 x four others")
     if not np.all(np.isin(g["parts/radius"][:][g["parts/kind"][:] == 2], g["variables/variable_1/allowed"][:])):
         bad.append(f"a curve's radius is not in the catalogue: {g['parts/radius'][:]}")
+    # the kinds' numbers name every kind of a slide chain (on 3e73489 the
+    # text stopped at "5 drop": no bowl, funnel or patch)
+    legend = g["parts/kind"].attrs["description"]
+    legend = legend.decode() if isinstance(legend, bytes) else legend
+    if "1 straight, 2 curve, 3 helix, 4 runout, 5 drop, 6 bowl, 7 funnel, 8 patch" not in legend:
+        bad.append(f"parts/kind's description lacks a kind: {legend}")
     values = json.load(open(sys.argv[2]))["values"]
     if values.get("elements") != 6 or values.get("catalogue_acceleration_cost") != chosen:
         bad.append(f"JSON: elements {values.get('elements')}, catalogue cost {values.get('catalogue_acceleration_cost')}")
