@@ -271,7 +271,8 @@ contains
       if (b < newest) then
         under = .false.
         do k = 1, self%candidates
-          under = under .or. (self%candidate_t(1, k) <= b .and. a <= self%candidate_t(3, k))
+          under = self%candidate_t(1, k) <= b .and. a <= self%candidate_t(3, k)
+          if (under) exit
         end do
         if (.not. under) cycle
       end if
