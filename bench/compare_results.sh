@@ -4,7 +4,8 @@
 # may differ: the attributes git_commit, created_utc, compiler and
 # compiler_options and the cpu_time datasets; in a sweep also the wall_time
 # datasets and the dimension scales' REFERENCE_LIST (its threads attach them
-# in any order: two runs of one build differ there).
+# in any order: two runs of one build differ there). An object or attribute
+# in one file only is a difference too.
 #
 #     bench/compare_results.sh BASE_BUILD NEW_BUILD [INPUT.nml ...]
 #
@@ -35,6 +36,11 @@ else
   mapfile -t inputs < <(cd "$root" && ls inputs/*/*.nml)
   inputs=(default "${inputs[@]}")
 fi
+# Every object of a result file (path and kind) and every attribute (object@name).
+object_names() {
+  h5ls -r -v "$1" | awk '/^\// { object = $1; print object, $2; next }
+                         /^    Attribute: / { print object "@" $2 }' | sort
+}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failed=0
@@ -69,6 +75,12 @@ for input in "${inputs[@]}"; do
     }
     /Not comparable|exist only|not found|Some objects are not comparable/ { print }
   ' "$work/diff_$tag.txt")
+  # h5diff 1.10 passes over an object or attribute present in one file only
+  # (it only sets its exit status, which provenance sets too): compare the
+  # two files' lists of objects and attribute names as well
+  one_sided=$(diff <(object_names "$work/base_$tag.h5") <(object_names "$work/new_$tag.h5") |
+              sed -n 's/^< /only in base: /p; s/^> /only in new: /p')
+  [ -z "$one_sided" ] || unexpected=$(printf '%s\n%s' "$unexpected" "$one_sided" | sed '/^$/d')
   if [ -n "$unexpected" ]; then
     echo "DIFFERENT $input (exit $rc_base):"
     echo "$unexpected" | sed 's/^/  /'
