@@ -34,7 +34,7 @@ module kinetostatics_closure_blocks
   implicit none (type, external)
   private
   public :: closure_blocks_t, dense_block_t, element_reach_t, build_closure_blocks, find_element_links, &
-    reach_of, downstream_of
+    reach_of, downstream_of, feeding
 
   !> One block: its members (positions in x and in the rows, ascending: the
   !> dependent coordinates and closure rows first), J_x's block and its LU, and
@@ -151,13 +151,15 @@ contains
   !> The structural sweep of a unit rate of the scalars `sources` (module
   !> comment), or of a rigid motion of the frames `frame_sources` (their
   !> writers stay at rest): moving(s) for every scalar that moves, live(e) for
-  !> every element whose outputs move, frame classes (0: at rest).
-  subroutine reach_of(reach, sources, n_frames, n_scalars, moving, live, frame_sources)
+  !> every element whose outputs move, frame classes (0: at rest; `classes`
+  !> if asked: frames of one class move with one rigid motion).
+  subroutine reach_of(reach, sources, n_frames, n_scalars, moving, live, frame_sources, classes)
     type(element_reach_t), intent(in) :: reach
     integer, intent(in) :: sources(:), n_frames, n_scalars
     logical, intent(out) :: moving(n_scalars)
     logical, intent(out) :: live(:)
     integer, intent(in), optional :: frame_sources(:)
+    integer, intent(out), optional :: classes(n_frames)
     integer :: frame_class(n_frames), e, c
     logical :: scalars_move, one_motion
     frame_class = 0
@@ -185,6 +187,7 @@ contains
         if (.not. (one_motion .and. reach%relative(e))) moving(s_out) = .true.
       end associate
     end do
+    if (present(classes)) classes = frame_class
   end subroutine reach_of
 
   !> The blocks of the unknowns `unknowns` (scalar indices of x, the first r

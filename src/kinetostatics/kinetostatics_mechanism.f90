@@ -18,6 +18,8 @@
 !>   dynamics  kinetostatics_mechanism_dynamics: the equations of motion;
 !>   twists    kinetostatics_mechanism_twists: the mass matrix and the
 !>             normal-force maps from the partial twists;
+!>   tree      kinetostatics_mechanism_tree: the equations of motion of a
+!>             chain or tree of bodies in linear time (kinetostatics_tree);
 !> and the state of one integration (the frames' and scalars' positions,
 !> rates and forces, the elements' kept geometry and charts, the closure's
 !> factored blocks and warm start, the laws' loads, switches and factors),
@@ -51,6 +53,7 @@ module kinetostatics_mechanism
   use kinetostatics_mechanism_workspace, only: mechanism_workspace_t, WORKSPACE_SIZES, recent_solutions
   use kinetostatics_closure_blocks, only: closure_blocks_t, element_reach_t, build_closure_blocks, &
     find_element_links, downstream_of
+  use kinetostatics_tree, only: tree_t, find_tree
   implicit none (type, external)
   private
   public :: mechanism_t, mechanism_workspace_t, loop_t, rate_constraint_t, surface_edge_t
@@ -138,13 +141,17 @@ module kinetostatics_mechanism
     integer, allocatable :: masses(:), mass_slot(:)   ! the mass elements, their frames' places in tracked
     integer, allocatable :: normal_contacts(:)   ! contacts with N from the force on a frame (normal_pass order)
     integer, allocatable :: moving_unknowns(:)   ! the unknowns whose open motion moves a tracked frame
+    ! a chain or tree of at least recursion_bodies bodies: the recursion instead of M
+    ! (kinetostatics_tree; set_recursion); 0: never
+    integer :: recursion_bodies = 3
+    type(tree_t) :: tree
   contains
     procedure :: add_frame, add_scalar, add_element, add_loop, add_contact, add_law, set_coordinates, finalize
     procedure :: add_rate_constraint, set_kinematic, set_loop_branch, add_monitor
     procedure :: frame_index, scalar_index, contact_index, law_index
     procedure :: position_pass, velocity_pass, acceleration_pass, force_pass, record_pass
     procedure :: set_positions, set_velocities, set_accelerations, inverse_dynamics, evaluate_laws
-    procedure :: check_start, set_blocked, prepare_workspace
+    procedure :: check_start, set_blocked, set_recursion, prepare_workspace
     procedure :: dynamics, evaluate, energy, closure_residual, normal_forces, law_force
   end type mechanism_t
 
@@ -258,6 +265,11 @@ module kinetostatics_mechanism
       class(mechanism_t), intent(inout) :: self
       logical, intent(in) :: blocked
     end subroutine set_blocked
+
+    module subroutine set_recursion(self, from_bodies)
+      class(mechanism_t), intent(inout) :: self
+      integer, intent(in) :: from_bodies
+    end subroutine set_recursion
 
     module subroutine prepare_workspace(self, work)
       class(mechanism_t), intent(in) :: self
@@ -401,5 +413,14 @@ module kinetostatics_mechanism
       class(mechanism_t), intent(in) :: self
       type(mechanism_workspace_t), intent(inout) :: work
     end subroutine twist_unit_loads
+
+    ! tree (kinetostatics_mechanism_tree)
+    module subroutine tree_dynamics(self, work, t, q, qd, qdd, status)
+      class(mechanism_t), intent(in) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
+      real(wp), intent(in) :: t, q(:), qd(:)
+      real(wp), intent(out) :: qdd(:)
+      type(status_t), intent(inout) :: status
+    end subroutine tree_dynamics
   end interface
 end module kinetostatics_mechanism

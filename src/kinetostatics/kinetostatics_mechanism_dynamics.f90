@@ -27,8 +27,10 @@ contains
   !> s' from M(q) s' + Q^(q, s) = Q_applied (3.36) (s = q' without rate
   !> constraints and kinematic coordinates; qd is s, qdd is s'), with every force law
   !> and the normal forces of the contacts (see the module comment). Leaves,
-  !> in the workspace, M in `mass`, Q_bar0 in `bias`, q'' in `qdd`, the normal
-  !> forces in `normal`, the laws' powers in `law_power`. The velocity and acceleration states are
+  !> in the workspace, M in `mass` (not for a chain or tree of bodies, which
+  !> takes the recursion: kinetostatics_mechanism_tree), Q_bar0 in `bias`, q''
+  !> in `qdd`, the normal forces in `normal`, the laws' powers in `law_power`.
+  !> The velocity and acceleration states are
   !> overwritten (use `evaluate` for a consistent state). Called again at the
   !> same (t, q, s) with the same laws switched on and no position pass or law
   !> evaluation in between with this workspace, it returns the
@@ -49,6 +51,13 @@ contains
         work%dynamics_reused = work%dynamics_reused + 1
         return
       end if
+    end if
+    if (self%tree%active) then   ! a chain or tree of bodies: linear time (kinetostatics_mechanism_tree)
+      call tree_dynamics(self, work, t, q, qd, qdd, status)
+      if (.not. status%ok()) return
+      work%law_power(:) = work%unit_power
+      call remember_dynamics(self, work, t, q, qd)
+      return
     end if
     qdd = 0
     nc = size(self%contacts)

@@ -237,6 +237,7 @@ contains
     do k = 1, ns
       self%block_row(k) = findloc(self%block_contact, self%laws(self%scaled_laws(k))%law%contact, dim=1)
     end do
+    call find_recursion(self)
     allocate (self%law_root_start(self%n_laws + 1))
     nr = 0
     do k = 1, self%n_laws
@@ -268,8 +269,38 @@ contains
     self%blocked = blocked
     if (.not. self%ready) return
     call find_closure_blocks(self)
+    call find_recursion(self)
     call find_workspace_dims(self)
   end procedure set_blocked
+
+  !> The equations of motion by the tree recursion where the mechanism is a
+  !> chain or tree of at least from_bodies bodies (kinetostatics_tree; 2: any
+  !> tree), or always by the dense mass matrix (0: for comparison); before
+  !> or after finalize. A new model, as for set_blocked.
+  module procedure set_recursion
+    self%recursion_bodies = from_bodies
+    if (.not. self%ready) return
+    call find_recursion(self)
+    call find_workspace_dims(self)
+  end procedure set_recursion
+
+  !> The tree of the bodies if the recursion is asked for (recursion_bodies
+  !> bodies or more: below, the dense path costs less) and covers the
+  !> mechanism: no scaled laws (their block system needs M) and no
+  !> kinematic coordinates (velocity-level contacts: not compared), else none.
+  subroutine find_recursion(self)
+    class(mechanism_t), intent(inout) :: self
+    integer :: k
+    if (self%recursion_bodies > 0 .and. size(self%tracked) >= self%recursion_bodies .and. &
+        size(self%scaled_laws) == 0 .and. size(self%kinematic) == 0) then
+      call find_tree(self%tree, self%reach, self%blocks, self%n_frames, self%n_scalars, self%q(self%speeds), &
+                     self%unknowns, self%rows, self%tracked, self%masses, &
+                     [(self%elements(self%masses(k))%e%mass_frame(), k = 1, size(self%masses))])
+    else
+      self%tree%active = .false.
+      self%tree%n_bodies = 0
+    end if
+  end subroutine find_recursion
 
   !> Sizes the workspace for this mechanism (kinetostatics_mechanism_workspace)
   !> and gives it the model's state to start from: on its first use and again
@@ -331,6 +362,7 @@ contains
               work%ipiv_block(n + nb))
     allocate (work%twist(6, nt, n), work%wrench(6, nt, n), work%unknown_twist(6, nt, size(self%moving_unknowns)), &
               work%nu(6, nt, nc), work%load_wrench(6, nt))
+    call work%tree%size_for(self%tree, n)
     do k = 1, self%r
       work%start_r(k) = work%scalars(self%beta(k))%q
     end do

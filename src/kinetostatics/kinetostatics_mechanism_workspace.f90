@@ -27,6 +27,7 @@ module kinetostatics_mechanism_workspace
   use kinetostatics_state, only: frame_state_t, scalar_state_t, element_box_t
   use kinetostatics_force_law, only: force_law_box_t
   use kinetostatics_closure_blocks, only: closure_blocks_t
+  use kinetostatics_tree, only: tree_work_t
   implicit none (type, external)
   private
   public :: mechanism_workspace_t, WORKSPACE_SIZES
@@ -103,5 +104,6 @@ module kinetostatics_mechanism_workspace
     real(wp), allocatable :: unknown_twist(:, :, :)   ! (6, tracked, moving unknowns): per unit rate, nothing solved
     real(wp), allocatable :: nu(:, :, :)         ! (6, tracked, contacts): N = -normal_sign nu_c . wrenches
     real(wp), allocatable :: load_wrench(:, :)   ! (6, tracked): a scaled law's unit loads
+    type(tree_work_t) :: tree                    ! the recursion's arrays (a chain or tree of bodies)
   end type mechanism_workspace_t
 end module kinetostatics_mechanism_workspace

@@ -123,6 +123,7 @@ contains
     call full%set_blocked(.false.)
     call check(full%blocks%block_count() == 1 .and. .not. full%blocks%blocked, label//': unblocked copy')
     call m%set_blocked(.true.)
+    call m%set_recursion(0)   ! the dense path (the tower's recursion forms no M: test_tree_dynamics)
     call m%dynamics(work, t, q, s, a_blocked, st)
     call check(st%ok(), label//': blocked dynamics '//st%text())
     nx = m%r + m%nd

@@ -171,6 +171,7 @@ contains
       h_passes(:, :)
     integer :: i, k, n_scaled
     call check(m%twist_route, label//': M from the twists')
+    call m%set_recursion(0)   ! M and G are the dense path's (the tower's recursion forms neither: test_tree_dynamics)
     call m%dynamics(work, t, q, s, a, st)
     call check(st%ok(), label//': dynamics '//st%text())
     if (.not. st%ok()) return
