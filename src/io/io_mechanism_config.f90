@@ -246,7 +246,7 @@ contains
       call file%write_vector(b//'/normal_force', s%normal(k, :n), 'N', &
                              'normal force, positive while the body presses on the surface', status)
       call file%write_matrix(b//'/friction_force', s%friction(:, k, :n), 'N', &
-                             'force of the contact''s force laws on the body (3 x n)', status)
+                             'force of the contact''s friction laws on the body (3 x n)', status)
     end do
     do k = 1, s%nl
       b = g//'laws/'//trim(s%law_names(k))
