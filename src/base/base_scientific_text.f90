@@ -23,6 +23,8 @@ module base_scientific_text
     1e7_wp, 1e8_wp, 1e9_wp, 1e10_wp, 1e11_wp, 1e12_wp, 1e13_wp, 1e14_wp, 1e15_wp, 1e16_wp, 1e17_wp, &
     1e18_wp, 1e19_wp, 1e20_wp, 1e21_wp, 1e22_wp]
   real(wp), parameter :: near_half = 1e-6_wp   ! > 2.3e-7, the scaled value's largest error
+  real(wp), parameter :: log10_of_2 = 0.30102999566398120_wp
+  integer, parameter :: zero = iachar('0')
 
 contains
 
@@ -31,9 +33,8 @@ contains
     real(wp), intent(in) :: x
     character(len=16) :: text
     real(wp) :: a, y, whole, fraction_part
-    integer(int64) :: digits
-    integer :: e, k, tries, direction
-    character(len=1), parameter :: numeral(0:9) = ['0', '1', '2', '3', '4', '5', '6', '7', '8', '9']
+    integer :: digits   ! nine of them: below 2^31
+    integer :: e, tries, direction, high
     if (.not. ieee_is_finite(x)) then   ! tested alone: a NaN compared signals 'invalid'
       write (text, '(es16.8e3)') x
       return
@@ -43,7 +44,10 @@ contains
       write (text, '(es16.8e3)') x
       return
     end if
-    e = floor(log10(a))   ! may be one off next to a power of ten: corrected below
+    ! floor(log10(a)) or one less, from the binary exponent b of a normal a (in
+    ! [2^b, 2^(b+1)), its stored bits 52..62 hold b + 1023): corrected below;
+    ! log10 cost a third of this function
+    e = floor(real(ibits(transfer(a, 0_int64), 52, 11) - 1023, wp)*log10_of_2)
     direction = 0
     do tries = 1, 3
       y = scaled(a, 8 - e)
@@ -59,28 +63,36 @@ contains
         whole = aint(y)
         fraction_part = y - whole   ! exact: y < 2^30
         if (abs(fraction_part - 0.5_wp) < near_half) exit
-        digits = int(whole, int64)
+        digits = int(whole)
         if (fraction_part > 0.5_wp) digits = digits + 1
-        if (digits == 1000000000_int64) then   ! 9.999999995.. rounds up to 1.00000000E(e+1)
-          digits = 100000000_int64
+        if (digits == 1000000000) then   ! 9.999999995.. rounds up to 1.00000000E(e+1)
+          digits = 100000000
           e = e + 1
         end if
+        high = digits/1000000   ! the first three digits
         text(1:1) = merge('-', ' ', x < 0)
-        do k = 11, 3, -1
-          text(k:k) = numeral(mod(digits, 10_int64))
-          digits = digits/10
-        end do
-        text(2:2) = text(3:3)
+        text(2:2) = achar(zero + high/100)
         text(3:3) = '.'
+        text(4:4) = achar(zero + mod(high/10, 10))
+        text(5:5) = achar(zero + mod(high, 10))
+        call put_three(mod(digits/1000, 1000), text(6:8))
+        call put_three(mod(digits, 1000), text(9:11))
         text(12:13) = merge('E-', 'E+', e < 0)
-        text(14:14) = numeral(abs(e)/100)
-        text(15:15) = numeral(mod(abs(e)/10, 10))
-        text(16:16) = numeral(mod(abs(e), 10))
+        call put_three(abs(e), text(14:16))
         return
       end if
     end do
     write (text, '(es16.8e3)') x
   end function scientific_text
+
+  !> The three numerals of n (0 <= n < 1000), with leading zeros.
+  pure subroutine put_three(n, text)
+    integer, intent(in) :: n
+    character(len=3), intent(out) :: text
+    text(1:1) = achar(zero + n/100)
+    text(2:2) = achar(zero + mod(n/10, 10))
+    text(3:3) = achar(zero + mod(n, 10))
+  end subroutine put_three
 
   !> a 10^p by at most two exact powers of ten (|p| <= 44; one rounding each;
   !> scientific_text's range gives |p| <= 39)

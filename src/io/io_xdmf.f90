@@ -414,20 +414,34 @@ contains
     class(xdmf_t), intent(inout) :: self
     character(len=*), intent(in) :: name
     real(wp), intent(in) :: time(:), points(:, :, :), rotation(:, :, :), origin(:, :)
-    real(wp), allocatable :: moved(:, :)
-    integer :: s, k, n
+    real(wp), allocatable :: body(:, :), moved(:)
+    integer :: s, k, n, j, i
+    real(wp) :: total
     n = size(points, 2)*size(points, 3)
     if (n < 4 .or. .not. steps_for(self, time)) return
+    body = reshape(points, [3, n])
+    allocate (moved(3*n))
     do s = 1, size(self%step_row)
       k = self%step_row(s)
-      moved = matmul(rotation(:, :, k), reshape(points, [3, n])) + spread(origin(:, k), 2, n)
+      ! rotation p + origin, the sums in the order of the inlined matmul of
+      ! a Release build (from 0, over the columns; the .xmf stays the same),
+      ! without its temporaries and its memset per point
+      do j = 1, n
+        do i = 1, 3
+          total = 0
+          total = total + rotation(i, 1, k)*body(1, j)
+          total = total + rotation(i, 2, k)*body(2, j)
+          total = total + rotation(i, 3, k)*body(3, j)
+          moved(3*(j - 1) + i) = total + origin(i, k)
+        end do
+      end do
       associate (t => self%steps(s))
         call add(t, '  <Grid Name="'//escaped(name)//'" GridType="Uniform">')
         ! points(:, i, j): i runs fastest, the last of XDMF's dimensions
         call add(t, '  <Topology TopologyType="2DSMesh" Dimensions="'//format_integer(size(points, 3))//' '// &
                  format_integer(size(points, 2))//'"/>')
         call add(t, '  <Geometry GeometryType="XYZ">')
-        call data_item(t, [n, 3], reshape(moved, [3*n]))
+        call data_item(t, [n, 3], moved)
         call add(t, '  </Geometry>')
         call add(t, '  </Grid>')
       end associate
@@ -553,7 +567,9 @@ contains
     call add(text, '    <DataItem Dimensions="'//dims_text(dims)//'" NumberType="Float" Precision="8" Format="XML">')
     do k = 1, size(values), per_line
       do j = k, min(k + per_line - 1, size(values))
-        line((j - k)*width + 1:(j - k + 1)*width) = ' '//scientific_text(values(j))
+        ! (no concatenation: a temporary per number)
+        line((j - k)*width + 1:(j - k)*width + 1) = ' '
+        line((j - k)*width + 2:(j - k + 1)*width) = scientific_text(values(j))
       end do
       call add(text, line(:(j - k)*width))
     end do
