@@ -2,8 +2,11 @@
 !> locates them between its records on the integrator's dense output
 !> (numerics_dense_extremes, docs/accuracy.md): the top speed, the largest
 !> and smallest felt acceleration per body axis, the largest |wall angle| of
-!> each contact, the smallest normal force of each contact and the largest
-!> |tipping lever arm|, each with where (the pelvis's arc length) and when.
+!> each contact, the smallest normal force of each contact, the largest
+!> |tipping lever arm| and, with may_fly, each open contact's highest gap
+!> above the slide (the flight's highest point: on dense output, so it does
+!> not depend on the output step), each with where (the pelvis's arc
+!> length; for a gap its contact's foot point's) and when.
 !>
 !> Also the two formulas of what a rider feels that they are made of (the
 !> design layer's ride evaluation uses them too):
@@ -28,11 +31,11 @@ module rider_extremes
   public :: felt_acceleration, tipping_lever_arm, ride_extremes_t, extreme_quantities, felt_basis
   public :: FELT_MODEL, FELT_FREE_FALL, FELT_NOT_JUDGED
   public :: N_EXTREMES, N_ATTACHED, EXTREME_TOP_SPEED, EXTREME_FELT_MAX, EXTREME_FELT_MIN, EXTREME_CLIMB, &
-    EXTREME_NORMAL_MIN, EXTREME_LEVER
+    EXTREME_NORMAL_MIN, EXTREME_LEVER, EXTREME_GAP
 
   !> the quantities (first of three for per-axis and per-contact ones)
   integer, parameter :: EXTREME_TOP_SPEED = 1, EXTREME_FELT_MAX = 2, EXTREME_FELT_MIN = 5, &
-    EXTREME_CLIMB = 8, EXTREME_NORMAL_MIN = 11, EXTREME_LEVER = 14, N_EXTREMES = 14
+    EXTREME_CLIMB = 8, EXTREME_NORMAL_MIN = 11, EXTREME_LEVER = 14, EXTREME_GAP = 15, N_EXTREMES = 17
   !> numbers kept with each: the reported value (signed), the arc length, the wall distance
   integer, parameter :: N_ATTACHED = 3
 
@@ -43,8 +46,8 @@ module rider_extremes
   type :: ride_extremes_t
     logical :: located = .false.          ! the ride located them (else: take them from the records)
     integer :: records = 0                ! records they were located among
-    real(wp) :: value(N_EXTREMES) = 0     ! speed, felt (3 max, 3 min), wall angle, normal force, lever arm
-    real(wp) :: at(N_EXTREMES) = 0        ! m, the pelvis's arc length there
+    real(wp) :: value(N_EXTREMES) = 0     ! speed, felt (3 max, 3 min), wall angle, normal force, lever arm, gap
+    real(wp) :: at(N_EXTREMES) = 0        ! m, the pelvis's arc length there (a gap: its contact's)
     real(wp) :: time(N_EXTREMES) = 0      ! s
     real(wp) :: wall_distance(N_EXTREMES) = 0   ! m, for the wall angles: along the wall there
     integer :: searches = 0, evaluations = 0    ! brackets searched, model evaluations for them
@@ -93,12 +96,16 @@ contains
   !> |wall angle|, |lever arm| or 0 where the pelvis does not press) and
   !> their attached numbers, with the contacts `airborne` open: the felt
   !> acceleration and the lever arm on felt_basis (0 in a free fall; -huge,
-  !> never a maximum, where not judged).
+  !> never a maximum, where not judged); the open contacts' gaps (m, above
+  !> the slide, at their foot points' arc lengths gap_arc_length; a closed
+  !> contact's: -huge).
   pure subroutine extreme_quantities(speed, acceleration, axes, reaction_force, reaction_moment, arc_length, &
-                                     wall_angle, wall_distance, normal_force, gravity, airborne, values, attached)
+                                     wall_angle, wall_distance, normal_force, gravity, airborne, gap, gap_arc_length, &
+                                     values, attached)
     real(wp), intent(in) :: speed, acceleration(3), axes(3, 3), reaction_force(3), reaction_moment(3), arc_length
     real(wp), intent(in) :: wall_angle(N_CONTACTS), wall_distance(N_CONTACTS), normal_force(N_CONTACTS), gravity(3)
     integer, intent(in) :: airborne
+    real(wp), intent(in) :: gap(N_CONTACTS), gap_arc_length(N_CONTACTS)
     real(wp), intent(out) :: values(N_EXTREMES), attached(N_ATTACHED, N_EXTREMES)
     real(wp) :: felt(3), lever
     integer :: k
@@ -120,6 +127,9 @@ contains
       attached(3, EXTREME_CLIMB + k - 1) = wall_distance(k)
       values(EXTREME_NORMAL_MIN + k - 1) = -normal_force(k)
       attached(1, EXTREME_NORMAL_MIN + k - 1) = normal_force(k)
+      values(EXTREME_GAP + k - 1) = merge(gap(k), -huge(1.0_wp), btest(airborne, k - 1))
+      attached(1, EXTREME_GAP + k - 1) = values(EXTREME_GAP + k - 1)
+      attached(2, EXTREME_GAP + k - 1) = gap_arc_length(k)
     end do
     lever = tipping_lever_arm(reaction_force, reaction_moment, axes(:, 1), axes(:, 3))
     if (.not. abs(lever) < huge(1.0_wp) .or. felt_basis(airborne) == FELT_FREE_FALL) lever = 0

@@ -72,7 +72,7 @@ module rider_flight
     real(wp) :: longest = 0              ! s
     real(wp) :: longest_time = 0         ! s, its take-off
     real(wp) :: longest_arc_length = 0   ! m, its take-off (the pelvis)
-    real(wp) :: highest = 0              ! m, the largest gap of a contact above the slide (at the records)
+    real(wp) :: highest = 0              ! m, the largest gap of a contact above the slide (dense output)
     integer :: highest_contact = 0       ! which
     real(wp) :: highest_time = 0         ! s
     real(wp) :: highest_arc_length = 0   ! m, of its foot point there

@@ -11,7 +11,7 @@ module rider_probe
   use numerics_dense_extremes, only: dense_quantities_t
   use rider_extremes, only: extreme_quantities
   use rider_model, only: rider_layout_t, N_CONTACTS, CONTACT_PELVIS
-  use rider_flight, only: set_holds
+  use rider_flight, only: set_holds, contact_gap
   implicit none (type, external)
   private
   public :: ride_probe_t, pelvis_state
@@ -75,7 +75,7 @@ contains
     real(wp), intent(out) :: values(:), attached(:, :)
     type(status_t), intent(inout) :: status
     real(wp) :: residual, speed, acceleration(3), axes(3, 3), force(3), moment(3)
-    real(wp) :: angle(N_CONTACTS), distance(N_CONTACTS), normal(N_CONTACTS)
+    real(wp) :: angle(N_CONTACTS), distance(N_CONTACTS), normal(N_CONTACTS), gap(N_CONTACTS), gap_at(N_CONTACTS)
     integer :: f, k, mask, n_full
     mask = 0   ! the open contacts (without may_fly none)
     if (self%may_fly) then
@@ -121,10 +121,15 @@ contains
         call self%slide%wall_position(work%scalars(lay%u(k))%q, work%scalars(lay%v(k))%q, angle(k), distance(k), status)
         if (.not. status%ok()) return
         normal(k) = work%normal_force(lay%contact(k))
+        gap(k) = 0
+        gap_at(k) = 0
+        if (.not. btest(mask, k - 1)) cycle
+        gap(k) = contact_gap(work, lay, k)
+        gap_at(k) = self%slide%arc_length(work%scalars(lay%u(k))%q)
       end do
       call extreme_quantities(speed, acceleration, axes, force, moment, &
         self%slide%arc_length(work%scalars(lay%u(CONTACT_PELVIS))%q), angle, distance, normal, self%gravity, &
-        mask, values, attached)
+        mask, gap, gap_at, values, attached)
     end associate
     end subroutine evaluate_build
   end subroutine probe_evaluate

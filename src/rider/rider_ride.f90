@@ -42,7 +42,7 @@ module rider_ride
   use kinetostatics_mechanism, only: mechanism_t
   use kinetostatics_impact, only: impact_law_t, impact_outcome_t
   use numerics_dense_extremes, only: dense_extremes_t
-  use rider_extremes, only: extreme_quantities, N_EXTREMES, N_ATTACHED
+  use rider_extremes, only: extreme_quantities, N_EXTREMES, N_ATTACHED, EXTREME_GAP
   use rider_probe, only: ride_probe_t, pelvis_state
   use rider_series, only: contact_series_t, ride_series_t, size_series, move_series, values_per_record
   use water_field, only: water_field_t
@@ -192,10 +192,6 @@ module rider_ride
       real(wp), intent(in) :: t
     end subroutine end_flights
 
-    module subroutine track_highest(self, t)
-      class(rider_ode_t), intent(inout) :: self
-      real(wp), intent(in) :: t
-    end subroutine track_highest
   end interface
 
 
@@ -273,8 +269,9 @@ contains
     if (run_status%ok()) call sys%extremes%finish(sys%probe, run_status)
     ! a flight under way at the end counts up to there
     if (sys%may_fly) call end_flights(sys, result%driver%t)
-    result%flights = sys%flights
     call keep_extremes(sys)
+    if (sys%may_fly) call keep_highest(sys)
+    result%flights = sys%flights
     result%drag_switches = sys%drag_switches
     result%ejected_contact = sys%ejected_contact
     result%lifted_contact = sys%lifted_contact
@@ -453,7 +450,6 @@ contains
       r%kind(n) = kind
       if (self%may_fly) then
         call full_state(m, w, lay, y, r%state(:, n))
-        if (self%fly%open_mask /= 0) call track_highest(self, t)
       else
         r%state(:, n) = y
       end if
@@ -513,7 +509,9 @@ contains
         call extreme_quantities(r%speed(n), r%pelvis_acceleration(:, n), r%pelvis_axes(:, :, n), &
           r%reaction_force(:, n), r%reaction_moment(:, n), r%arc_length(n), &
           [(r%contact(k)%wall_angle(n), k = 1, N_CONTACTS)], [(r%contact(k)%wall_distance(n), k = 1, N_CONTACTS)], &
-          [(r%contact(k)%normal_force(n), k = 1, N_CONTACTS)], self%probe%gravity, self%fly%open_mask, values, attached)
+          [(r%contact(k)%normal_force(n), k = 1, N_CONTACTS)], self%probe%gravity, self%fly%open_mask, &
+          [(merge(contact_gap(w, lay, k), 0.0_wp, btest(self%fly%open_mask, k - 1)), k = 1, N_CONTACTS)], &
+          [(r%contact(k)%arc_length(n), k = 1, N_CONTACTS)], values, attached)
         if (self%may_fly) then
           ! the context in the full layout: the betas of the build, the
           ! posture held, the open contacts last; a stretch's start
@@ -563,6 +561,21 @@ contains
       x%evaluations = e%evaluations
     end associate
   end subroutine keep_extremes
+
+  !> The flights' highest point: the open contacts' largest gap above the
+  !> slide as the extremes located it (0 and contact 0 if none rose).
+  subroutine keep_highest(sys)
+    type(rider_ode_t), intent(inout) :: sys
+    integer :: k
+    k = maxloc(sys%ride%extremes%value(EXTREME_GAP:EXTREME_GAP + N_CONTACTS - 1), dim=1)
+    associate (x => sys%ride%extremes, j => EXTREME_GAP + k - 1, fl => sys%flights)
+      if (.not. (x%located .and. x%value(j) > 0)) return
+      fl%highest = x%value(j)
+      fl%highest_contact = k
+      fl%highest_time = x%time(j)
+      fl%highest_arc_length = x%at(j)
+    end associate
+  end subroutine keep_highest
 
   !> The mechanism's events (ends, lift-off, drag on/off), then the rider's:
   !> the stall crossing (the one user crossing) stops the ride.

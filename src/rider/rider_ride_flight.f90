@@ -217,22 +217,4 @@ contains
     call count_flights(self, before, t)
     self%fly%open_mask = before
   end subroutine end_flights
-
-  !> The open contacts' largest gap so far, at a record in flight (positions set).
-  module subroutine track_highest(self, t)
-    class(rider_ode_t), intent(inout) :: self
-    real(wp), intent(in) :: t
-    real(wp) :: gap
-    integer :: k
-    do k = 1, N_CONTACTS
-      if (.not. btest(self%fly%open_mask, k - 1)) cycle
-      gap = contact_gap(self%work, self%layout, k)
-      if (gap > self%flights%highest) then
-        self%flights%highest = gap
-        self%flights%highest_contact = k
-        self%flights%highest_time = t
-        self%flights%highest_arc_length = self%slide%arc_length(self%work%scalars(self%layout%u(k))%q)
-      end if
-    end do
-  end subroutine track_highest
 end submodule rider_ride_flight

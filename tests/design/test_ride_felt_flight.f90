@@ -49,17 +49,17 @@ contains
     real(wp), parameter :: zero3(N_CONTACTS) = 0
     a = g + standard_gravity*[-2.67_wp, 0.0_wp, 1.0_wp]
     call extreme_quantities(5.0_wp, a, eye, [0.0_wp, 0.0_wp, 0.01_wp], [0.2_wp, 0.0_wp, 0.0_wp], 8.0_wp, zero3, &
-                            zero3, zero3, g, 0, values, attached)
+                            zero3, zero3, g, 0, zero3, zero3, values, attached)
     call check_close(attached(1, EXTREME_FELT_MIN), -2.67_wp, 1e-14_wp, 0.0_wp, 'all on: the model''s felt')
     call check_close(values(EXTREME_LEVER), 20.0_wp, 1e-14_wp, 0.0_wp, 'all on: the model''s lever arm')
     call extreme_quantities(5.0_wp, a, eye, [0.0_wp, 0.0_wp, 0.01_wp], [0.2_wp, 0.0_wp, 0.0_wp], 8.0_wp, zero3, &
-                            zero3, zero3, g, 7, values, attached)
+                            zero3, zero3, g, 7, zero3, zero3, values, attached)
     call check(all(values(EXTREME_FELT_MAX:EXTREME_FELT_MIN + 2) == 0) .and. &
                all(attached(1, EXTREME_FELT_MAX:EXTREME_FELT_MIN + 2) == 0), 'in the air: 0 g')
     call check(values(EXTREME_LEVER) == 0 .and. attached(1, EXTREME_LEVER) == 0, 'in the air: no lever arm')
     call check(values(EXTREME_TOP_SPEED) == 5, 'in the air: the speed counts')
     call extreme_quantities(5.0_wp, a, eye, [0.0_wp, 0.0_wp, 0.01_wp], [0.2_wp, 0.0_wp, 0.0_wp], 8.0_wp, zero3, &
-                            zero3, zero3, g, 6, values, attached)
+                            zero3, zero3, g, 6, zero3, zero3, values, attached)
     call check(all(values(EXTREME_FELT_MAX:EXTREME_FELT_MIN + 2) == -huge(1.0_wp)) .and. &
                values(EXTREME_LEVER) == -huge(1.0_wp), 'pelvis alone on the slide: never a maximum')
     call check(values(EXTREME_TOP_SPEED) == 5, 'pelvis alone on the slide: the speed counts')
