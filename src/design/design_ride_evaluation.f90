@@ -23,6 +23,10 @@
 !> (limit_report_units): speeds m/s, felt accelerations g, lengths m, forces N,
 !> angles degrees. A unit of the wrong kind is refused with the list of units
 !> the quantity accepts.
+!>
+!> Rounding noise (noise_free): a figure whose size is below
+!> report_noise_floor times its quantity's scale is not a finding; the
+!> report prints it as 0 and names no direction for it.
 module design_ride_evaluation
   use base_kinds, only: wp
   use base_constants, only: pi, standard_gravity
@@ -33,7 +37,19 @@ module design_ride_evaluation
   public :: felt_acceleration, felt_acceleration_units, tipping_lever_arm
   public :: ride_limit_t, limit_verdict_t, new_ride_limit, evaluate_limit, limit_quantities, &
     limit_report_unit, limit_bounds_text, spaced_unit, &
-    limit_stored_unit, limit_units_allowed, series_extreme, quantities_without_limit, flight_quantity
+    limit_stored_unit, limit_units_allowed, series_extreme, quantities_without_limit, flight_quantity, &
+    noise_free, report_noise_floor
+
+  !> The size, relative to its quantity's scale, below which a report's
+  !> figure is rounding noise. The ride is integrated to rtol 1e-10 and its
+  !> closure solved to 1e-10 m on a rider ~1 m long, so no figure derived
+  !> from its states (felt g, forces, lever arms) is resolved much below
+  !> 1e-10 of its scale; rounding itself leaves 1e-16..1e-12 (jump.nml: a
+  !> lateral felt 3e-16 g on a straight path, a lever arm -4e-17 m, the
+  !> flying pelvis's normal force -7e-10 N of ~700 N). Ten times the
+  !> solvers' tolerance sits above all of that and far below any figure an
+  !> engineer reads (printed to 3-4 digits, limits of 0.1 g, 0.1 m, 1 N).
+  real(wp), parameter :: report_noise_floor = 1e-9_wp
 
   !> ejection counts the rider's points that went over the top of an open
   !> section's wall (0 or 1: the ride ends there); `limit_max = 0` forbids it.
@@ -76,6 +92,13 @@ module design_ride_evaluation
   end type limit_verdict_t
 
 contains
+
+  !> value, or 0 where |value| is below report_noise_floor*scale (scale > 0:
+  !> the quantity's scale, in value's unit).
+  elemental real(wp) function noise_free(value, scale)
+    real(wp), intent(in) :: value, scale
+    noise_free = merge(0.0_wp, value, abs(value) < report_noise_floor*scale)
+  end function noise_free
 
   !> The unit of felt accelerations (multiples of |gravity|) as UDUNITS-2 and
   !> pint read it: 'gravity' when |gravity| is standard gravity (to a few

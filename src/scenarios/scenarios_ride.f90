@@ -19,7 +19,8 @@ module scenarios_ride
   use water_curve_entry, only: curve_entry_note
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
   use rider_ride, only: ride_result_t, ride_series_t, check_ride_start
-  use design_ride_evaluation, only: limit_stored_unit, limit_bounds_text, spaced_unit, ride_limit_t, quantities_without_limit
+  use design_ride_evaluation, only: limit_report_unit, limit_bounds_text, spaced_unit, ride_limit_t, &
+    quantities_without_limit, noise_free
   use design_ride_report, only: ride_report_t
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   use io_input, only: input_text_t, check_known_groups, format_real, invalid, where_given
@@ -367,6 +368,9 @@ contains
     character(len=*), parameter :: axis(3) = [character(len=12) :: 'longitudinal', 'lateral', 'normal']
     character(len=:), allocatable :: c, line, unit, unset
     integer :: k, exceeded
+    real(wp) :: felt_min(3), felt_max(3), force_scale
+    !> m: the rider's size (legs ~0.9 m, trunk ~0.6 m), the lever arm's scale
+    real(wp), parameter :: rider_size = 1
     call summary%start('ride', 'slidesim ride')
     if (allocated(water%slide_name)) call summary%add_text('slide', 'slide', water%slide_name)
     call summary%add('slide_length', 'slide centreline length', water%slide%length(), 'm')
@@ -385,26 +389,32 @@ contains
       ! longitudinal: in words, braking (the slide and water push towards the
       ! head, f < 0) and pushing (towards the feet, f > 0), printed >= 0; the
       ! JSON keeps the signed values (felt_longitudinal_max, _min)
-      if (r%felt_min(1) < 0) then
-        call summary%add('felt_longitudinal_min', 'felt braking max', r%felt_min(1), r%felt_units, 'g', -1.0_wp)
+      ! rounding noise (design_ride_evaluation's noise_free) prints as 0,
+      ! without a direction: felt g on the scale of 1 g, normal forces on
+      ! the ride's largest, the lever arm on the rider's size
+      felt_min = noise_free(r%felt_min, 1.0_wp)
+      felt_max = noise_free(r%felt_max, 1.0_wp)
+      force_scale = max(maxval([(abs(ride%series%contact(k)%normal_force(:r%n)), k = 1, N_CONTACTS)]), tiny(1.0_wp))
+      if (felt_min(1) < 0) then
+        call summary%add('felt_longitudinal_min', 'felt braking max', felt_min(1), r%felt_units, 'g', -1.0_wp)
       else
-        call summary%add('felt_longitudinal_min', 'felt pushing min', r%felt_min(1), '1', 'g (never braked)')
+        call summary%add('felt_longitudinal_min', 'felt pushing min', felt_min(1), '1', 'g (never braked)')
       end if
       call summary%add('felt_longitudinal_min_arc_length', '  at arc length', r%felt_min_at(1), 'm')
-      if (r%felt_max(1) > 0) then
-        call summary%add('felt_longitudinal_max', 'felt pushing max', r%felt_max(1), r%felt_units, 'g')
+      if (felt_max(1) > 0) then
+        call summary%add('felt_longitudinal_max', 'felt pushing max', felt_max(1), r%felt_units, 'g')
       else
-        call summary%add('felt_longitudinal_max', 'felt braking min', r%felt_max(1), r%felt_units, &
-                         trim(merge('g (braked all the way)', 'g                     ', r%felt_max(1) < 0)), -1.0_wp)
+        call summary%add('felt_longitudinal_max', 'felt braking min', felt_max(1), r%felt_units, &
+                         trim(merge('g (braked all the way)', 'g                     ', felt_max(1) < 0)), -1.0_wp)
       end if
       call summary%add('felt_longitudinal_max_arc_length', '  at arc length', r%felt_max_at(1), 'm')
       do k = 2, 3
         c = trim(axis(k))
-        call summary%add('felt_'//c//'_max', 'felt '//c//' max', r%felt_max(k), r%felt_units, &
-                         'g'//sense(k, r%felt_max(k)))
+        call summary%add('felt_'//c//'_max', 'felt '//c//' max', felt_max(k), r%felt_units, &
+                         'g'//sense(k, felt_max(k)))
         call summary%add('felt_'//c//'_max_arc_length', '  at arc length', r%felt_max_at(k), 'm')
-        call summary%add('felt_'//c//'_min', 'felt '//c//' min', r%felt_min(k), r%felt_units, &
-                         'g'//sense(k, r%felt_min(k)))
+        call summary%add('felt_'//c//'_min', 'felt '//c//' min', felt_min(k), r%felt_units, &
+                         'g'//sense(k, felt_min(k)))
         call summary%add('felt_'//c//'_min_arc_length', '  at arc length', r%felt_min_at(k), 'm')
       end do
       do k = 1, N_CONTACTS
@@ -413,10 +423,10 @@ contains
                          'deg from the bottom'//side(resolved(k, r%climb_angle(k))), degrees)
         call summary%add(c//'_wall_distance', '  along the wall', resolved(k, r%climb_distance(k)), 'm')
         call summary%add(c//'_wall_arc_length', '  at arc length', r%climb_at(k), 'm')
-        call summary%add(c//'_normal_force_min', c//' normal force min', r%normal_min(k), 'N')
+        call summary%add(c//'_normal_force_min', c//' normal force min', noise_free(r%normal_min(k), force_scale), 'N')
         call summary%add(c//'_normal_force_min_arc_length', '  at arc length', r%normal_min_at(k), 'm')
       end do
-      call summary%add('lever_arm_max', 'largest tipping lever arm', r%lever_max, 'm')
+      call summary%add('lever_arm_max', 'largest tipping lever arm', noise_free(r%lever_max, rider_size), 'm')
       call summary%add('lever_arm_max_arc_length', '  at arc length', r%lever_max_at, 'm')
       ! with may_fly: what the felt figures and the lever arm leave out (rider_extremes' felt_basis)
       if (ride%flights%watched) call summary%add('felt_not_judged_time', 'felt g not judged', r%not_judged_time, &
@@ -430,18 +440,18 @@ contains
       if (ride%flights%watched) call add_flights(summary, ride%flights)
       exceeded = 0
       do k = 1, size(r%limits)
-        unit = spaced_unit(limit_stored_unit(r%limits(k)%quantity, r%felt_units))
+        unit = spaced_unit(limit_report_unit(r%limits(k)%quantity))
         if (.not. r%judged(k)) then
           line = 'limit '//r%limits(k)%quantity//': not judged (the ride did not reach the exit)'
         else if (r%verdicts(k)%exceeded) then
           exceeded = exceeded + 1
           line = 'LIMIT EXCEEDED: '//r%limits(k)%quantity//' '//limit_bounds_text(r%limits(k))//'; worst '// &
-                 format_short(r%verdicts(k)%worst)//unit//' at arc length '// &
+                 format_short(noise_free(r%verdicts(k)%worst, limit_scale(k)))//unit//' at arc length '// &
                  format_short(r%verdicts(k)%worst_where)//' m (first at '// &
                  format_short(r%verdicts(k)%first_where)//' m)'
         else
           line = 'limit '//r%limits(k)%quantity//' '//limit_bounds_text(r%limits(k))//': ok (closest '// &
-                 format_short(r%verdicts(k)%worst)//unit//' at arc length '// &
+                 format_short(noise_free(r%verdicts(k)%worst, limit_scale(k)))//unit//' at arc length '// &
                  format_short(r%verdicts(k)%worst_where)//' m)'
         end if
         call summary%add_line('  '//line)
@@ -473,6 +483,24 @@ contains
       real(wp), parameter :: closure_tolerance = 1e-10_wp   ! m
       resolved = merge(0.0_wp, climb, abs(r%climb_distance(k)) < closure_tolerance)
     end function resolved
+
+    !> The scale of limit k's quantity in its report unit, for noise_free
+    !> (0: no floor; speeds, times, counts are no rounding noise)
+    real(wp) function limit_scale(k) result(scale)
+      integer, intent(in) :: k
+      select case (r%limits(k)%quantity)
+      case ('acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal')
+        scale = 1
+      case ('lever_arm', 'wall_distance')
+        scale = rider_size
+      case ('normal_force')
+        scale = force_scale
+      case ('wall_angle')
+        scale = 180/pi   ! 1 rad in deg
+      case default
+        scale = 0
+      end select
+    end function limit_scale
 
     !> What the sign of a felt acceleration along axis k (2 lateral, 3 normal) means.
     pure function sense(k, value) result(text)

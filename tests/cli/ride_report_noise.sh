@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Rounding noise is no finding (design_ride_evaluation's noise_free: below
+# 1e-9 of the quantity's scale, printed as 0 with no direction), on the
+# shipped jump (inputs/ride/jump.nml: a straight slide, no sideways force):
+# - the felt lateral max and min print "0 g" and name no side (on 3e73489
+#   "3.07E-16 g, pushed to the left"), the largest tipping lever arm "0 m"
+#   (was -4.04E-17 m), the pelvis's normal force min "0 N" (was -7.19E-10 N:
+#   the flying pelvis presses nothing); no figure of the report is printed
+#   in E-notation below 1e-9; --summary-json has the same zeros;
+# - the limit lines give felt accelerations in g, as their bounds (was
+#   "worst 0 gravity"), and angles in deg;
+# - a felt acceleration above the floor keeps its sign and direction:
+#   the demo ride's lateral max "0.0.. g, pushed to the left" (report_words).
+set -u
+root=$(pwd)
+slidesim=$1
+work=$(mktemp -d)
+trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
+failures=0; checks=0
+check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+py=/usr/bin/python3; [ -x "$py" ] || py=python3
+
+(cd "$root" && "$slidesim" -o "$work/jump.h5" --summary-json "$work/jump.json" \
+  --set "rider%limit_quantity='airtime','drop_height','acceleration_lateral','acceleration_normal','wall_angle'" \
+  --set "rider%limit_unit='s','m','g','g','deg'" \
+  --set "rider%limit_min=0,0,-1,0.2,0" \
+  --set "rider%limit_max=0.6,0.2,1,10,60" \
+  inputs/ride/jump.nml >"$work/jump.out" 2>"$work/jump.err"); got=$?
+check '[ $got = 0 ]' "jump: exit status $got ($(cat "$work/jump.err"))"
+check '[ $(grep -c "^  felt lateral m[ai][xn]  *0 g$" "$work/jump.out") = 2 ]' \
+  "lateral: $(grep 'felt lateral' "$work/jump.out")"
+check '! grep -q "pushed to the" "$work/jump.out"' "a side named: $(grep 'pushed to the' "$work/jump.out")"
+check 'grep -q "^  largest tipping lever arm  *0 m$" "$work/jump.out"' "lever arm: $(grep 'lever arm' "$work/jump.out")"
+check 'grep -q "^  pelvis normal force min  *0 N$" "$work/jump.out"' \
+  "pelvis normal force: $(grep 'pelvis normal force' "$work/jump.out")"
+check '! grep -E -q "[0-9]E-(09|[1-9][0-9])" "$work/jump.out"' "noise printed: $(grep -E '[0-9]E-(09|[1-9][0-9])' "$work/jump.out")"
+check 'grep -q "LIMIT EXCEEDED: acceleration_normal >= 0.2 g and <= 10 g; worst 0 g at arc length" "$work/jump.out"' \
+  "normal limit: $(grep acceleration_normal "$work/jump.out")"
+check 'grep -q "limit acceleration_lateral >= -1 g and <= 1 g: ok (closest 0 g at" "$work/jump.out"' \
+  "lateral limit: $(grep acceleration_lateral "$work/jump.out")"
+check 'grep -q "limit wall_angle >= 0 deg and <= 60 deg: ok (closest [0-9.]* deg at" "$work/jump.out"' \
+  "wall angle limit: $(grep 'limit wall_angle' "$work/jump.out")"
+check '! grep -q "gravity\|degree" "$work/jump.out"' "units spelt for files: $(grep 'gravity\|degree' "$work/jump.out")"
+"$py" - "$work/jump.json" >"$work/check.out" 2>&1 <<'EOF'
+import sys, json
+j = json.load(open(sys.argv[1]))['values']
+bad = [k for k in ('felt_lateral_max', 'felt_lateral_min', 'lever_arm_max', 'pelvis_normal_force_min')
+       if j[k] != 0]
+assert not bad, [(k, j[k]) for k in bad]
+print('ok')
+EOF
+rc=$?
+check '[ $rc = 0 ]' "the JSON: $(cat "$work/check.out")"
+
+echo "ride_report_noise: $checks checks, $failures failed"
+[ $failures = 0 ]
