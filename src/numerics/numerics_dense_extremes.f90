@@ -90,6 +90,7 @@ module numerics_dense_extremes
     procedure :: start => extremes_start
     procedure :: add_piece => extremes_add_piece
     procedure :: add_record => extremes_add_record
+    procedure :: add_bracket => extremes_add_bracket
     procedure :: finish => extremes_finish
     procedure :: state_at => extremes_state_at
   end type dense_extremes_t
@@ -215,7 +216,7 @@ contains
     class(dense_extremes_t), intent(inout) :: self
     class(dense_quantities_t), intent(inout) :: model
     type(status_t), intent(inout) :: status
-    integer :: j, i, next
+    integer :: j, i, next, k
     if (self%filled >= 2) call examine(self, self%filled, self%filled - 1, 0)
     do j = 1, self%n_quantities
       do
@@ -239,9 +240,42 @@ contains
         end associate
         if (.not. status%ok()) return
         self%candidate_bound(next) = -huge(1.0_wp)   ! searched
+        ! the same quantity's candidates inside what was searched (a bracket
+        ! the caller gave and the records' own around it) need no search
+        do i = 1, self%candidates
+          if (self%candidate_quantity(i) /= j .or. i == next) cycle
+          if (all([(covered(self, i, k, next), k = 1, 2)])) self%candidate_bound(i) = -huge(1.0_wp)
+        end do
       end do
     end do
   end subroutine extremes_finish
+
+  !> Part k (1: before the middle, 2: after) of candidate i's search lies
+  !> inside a part of candidate s's (or is empty).
+  logical function covered(self, i, k, s)
+    type(dense_extremes_t), intent(in) :: self
+    integer, intent(in) :: i, k, s
+    real(wp) :: a, b
+    integer :: m
+    associate (t => self%candidate_t(:, i), u => self%candidate_t(:, s))
+      if (self%candidate_split(i)) then
+        a = t(k)
+        b = t(k + 1)
+      else
+        a = t(1)
+        b = t(3)
+        if (k == 2) b = a   ! one part only
+      end if
+      covered = .not. b > a
+      if (self%candidate_split(s)) then
+        do m = 1, 2
+          covered = covered .or. (a >= u(m) .and. b <= u(m + 1))
+        end do
+      else
+        covered = covered .or. (a >= u(1) .and. b <= u(3))
+      end if
+    end associate
+  end function covered
 
   !> Drops the candidates that cannot beat their quantity's best, and the
   !> steps that are under no candidate and before the newest bracket.
@@ -297,20 +331,28 @@ contains
 
   !> Window record c with its neighbours l (before) and r (after; 0: none):
   !> a candidate for each quantity it may hold the maximum of.
+  !> A neighbour where the quantity has no value (-huge: the model there
+  !> does not have it, as a switch's other side at the same time) is no
+  !> neighbour: its side is not searched and does not raise the bound.
   subroutine examine(self, c, l, r)
     type(dense_extremes_t), intent(inout) :: self
     integer, intent(in) :: c, l, r
     integer :: j, n
     real(wp) :: v, lowest
+    logical :: left, right
     do j = 1, self%n_quantities
       v = self%window_values(j, c)
+      left = l > 0
+      if (left) left = self%window_values(j, l) > -huge(1.0_wp)
+      right = r > 0
+      if (right) right = self%window_values(j, r) > -huge(1.0_wp)
       lowest = v
-      if (l > 0) lowest = min(lowest, self%window_values(j, l))
-      if (r > 0) lowest = min(lowest, self%window_values(j, r))
-      if (l > 0) then
+      if (left) lowest = min(lowest, self%window_values(j, l))
+      if (right) lowest = min(lowest, self%window_values(j, r))
+      if (left) then
         if (self%window_values(j, l) > v) cycle
       end if
-      if (r > 0) then
+      if (right) then
         if (self%window_values(j, r) > v) cycle
       end if
       ! flat (nothing between to find) or unable to beat the best
@@ -323,14 +365,36 @@ contains
       self%candidate_t(:, n) = self%window_t(c)
       self%candidate_context(:, 1, n) = self%window_context(:, c)
       self%candidate_context(:, 2, n) = self%window_context(:, c)
-      if (l > 0) then
+      if (left) then
         self%candidate_t(1, n) = self%window_t(l)
         self%candidate_context(:, 1, n) = self%window_context(:, l)
       end if
-      if (r > 0) self%candidate_t(3, n) = self%window_t(r)
-      self%candidate_split(n) = l == 0 .or. r == 0 .or. self%window_event(c)
+      if (right) self%candidate_t(3, n) = self%window_t(r)
+      self%candidate_split(n) = .not. left .or. .not. right .or. self%window_event(c)
     end do
   end subroutine examine
+
+  !> The caller knows that quantity j has a maximum between the newest
+  !> record and the one before it (its rate falls through zero there), which
+  !> the records' values may not show (a peak between two records that both
+  !> lie low): that interval is searched at the end, with the earlier
+  !> record's context, whatever the records' values.
+  subroutine extremes_add_bracket(self, j)
+    class(dense_extremes_t), intent(inout) :: self
+    integer, intent(in) :: j
+    integer :: n
+    if (self%filled < 2) return
+    if (self%candidates == size(self%candidate_bound)) call grow_candidates(self)
+    n = self%candidates + 1
+    self%candidates = n
+    self%candidate_quantity(n) = j
+    self%candidate_bound(n) = huge(1.0_wp)
+    self%candidate_t(:, n) = [self%window_t(self%filled - 1), self%window_t(self%filled - 1), &
+                              self%window_t(self%filled)]
+    self%candidate_context(:, 1, n) = self%window_context(:, self%filled - 1)
+    self%candidate_context(:, 2, n) = self%window_context(:, self%filled - 1)
+    self%candidate_split(n) = .false.
+  end subroutine extremes_add_bracket
 
   subroutine grow_candidates(self)
     type(dense_extremes_t), intent(inout) :: self

@@ -125,8 +125,10 @@ contains
       values(EXTREME_CLIMB + k - 1) = abs(wall_angle(k))
       attached(1, EXTREME_CLIMB + k - 1) = wall_angle(k)
       attached(3, EXTREME_CLIMB + k - 1) = wall_distance(k)
-      values(EXTREME_NORMAL_MIN + k - 1) = -normal_force(k)
-      attached(1, EXTREME_NORMAL_MIN + k - 1) = normal_force(k)
+      ! an open contact carries nothing: 0, not the closure's noise (which
+      ! the extremes would search as candidates for the minimum)
+      values(EXTREME_NORMAL_MIN + k - 1) = merge(0.0_wp, -normal_force(k), btest(airborne, k - 1))
+      attached(1, EXTREME_NORMAL_MIN + k - 1) = merge(0.0_wp, normal_force(k), btest(airborne, k - 1))
       values(EXTREME_GAP + k - 1) = merge(gap(k), -huge(1.0_wp), btest(airborne, k - 1))
       attached(1, EXTREME_GAP + k - 1) = values(EXTREME_GAP + k - 1)
       attached(2, EXTREME_GAP + k - 1) = gap_arc_length(k)

@@ -29,7 +29,7 @@ module rider_probe
     !> coordinates in the full layout (rider_flight); the context's two
     !> numbers before it are the posture held in flight
     logical :: may_fly = .false.
-    type(mechanism_t), allocatable :: builds(:)
+    type(mechanism_t), pointer :: builds(:) => null()   ! the ride's own (models: never written)
     type(mechanism_workspace_t), allocatable :: works(:)
     integer, allocatable :: picks(:, :)
     type(rider_layout_t) :: layout

@@ -151,6 +151,7 @@ module rider_ride
     real(wp) :: switch_t = 0
     real(wp), allocatable :: switch_y(:)
     integer :: quick_landings = 0         ! landings right after their take-off, in a row
+    logical :: gap_rising(N_CONTACTS) = .false.   ! an open contact's gap rose at the last record
     type(ride_flights_t) :: flights
   contains
     procedure :: record => rider_record
@@ -187,6 +188,15 @@ module rider_ride
       type(status_t), intent(inout) :: status
     end subroutine switch_build
 
+    module subroutine keep_highest(sys)
+      type(rider_ode_t), intent(inout) :: sys
+    end subroutine keep_highest
+
+    module subroutine watch_gap_apexes(self, kind)
+      class(rider_ode_t), intent(inout) :: self
+      integer, intent(in) :: kind
+    end subroutine watch_gap_apexes
+
     module subroutine end_flights(self, t)
       class(rider_ode_t), intent(inout) :: self
       real(wp), intent(in) :: t
@@ -220,7 +230,7 @@ contains
     call prepare_ride(params, surface, options, sys, y0, status, water)
     if (.not. status%ok()) return
     sys%observes_steps = .true.
-    sys%probe%mechanism = sys%mechanism
+    if (.not. sys%may_fly) sys%probe%mechanism = sys%mechanism
     sys%probe%layout = sys%layout
     sys%probe%slide = sys%slide
     sys%probe%gravity = params%gravity
@@ -230,7 +240,7 @@ contains
       ! the probe and the records see every state in the full layout, the
       ! context ends with the posture held in flight and the open contacts
       sys%probe%may_fly = .true.
-      sys%probe%builds = sys%fly%builds
+      sys%probe%builds => sys%fly%builds
       sys%probe%picks = sys%fly%picks
       allocate (sys%probe%works(0:ubound(sys%fly%builds, 1)))
       n_state = sys%fly%flight_size
@@ -521,6 +531,7 @@ contains
              (w%scalars(m%beta(k))%q, k = 1, m%r), spread(0.0_wp, 1, self%fly%max_r - m%r), self%fly%hold, &
              real(self%fly%open_mask, wp)], &
             values, attached)
+          call watch_gap_apexes(self, kind)
         else
           call self%extremes%add_record(t, kind == RECORD_EVENT, &
             [real(sum([(merge(2**(k - 1), 0, r%contact(k)%in_water(n) == 1), k = 1, N_CONTACTS)]), wp), &
@@ -561,21 +572,6 @@ contains
       x%evaluations = e%evaluations
     end associate
   end subroutine keep_extremes
-
-  !> The flights' highest point: the open contacts' largest gap above the
-  !> slide as the extremes located it (0 and contact 0 if none rose).
-  subroutine keep_highest(sys)
-    type(rider_ode_t), intent(inout) :: sys
-    integer :: k
-    k = maxloc(sys%ride%extremes%value(EXTREME_GAP:EXTREME_GAP + N_CONTACTS - 1), dim=1)
-    associate (x => sys%ride%extremes, j => EXTREME_GAP + k - 1, fl => sys%flights)
-      if (.not. (x%located .and. x%value(j) > 0)) return
-      fl%highest = x%value(j)
-      fl%highest_contact = k
-      fl%highest_time = x%time(j)
-      fl%highest_arc_length = x%at(j)
-    end associate
-  end subroutine keep_highest
 
   !> The mechanism's events (ends, lift-off, drag on/off), then the rider's:
   !> the stall crossing (the one user crossing) stops the ride.

@@ -4,6 +4,7 @@
 !> through.
 submodule (rider_ride) rider_ride_flight
   use rider_flight_builds, only: use_build
+  use rider_flight, only: contact_gap_rate
   implicit none (type, external)
 
 contains
@@ -32,12 +33,17 @@ contains
     if (.not. self%may_fly) return
     g(n + 1:n + N_CONTACTS + 2) = 1
     if (self%fly%open_mask == 0) return
-    ! the positions at y (the closure warm from the last solution); a trial
-    ! state the closure cannot reach keeps the last value
-    call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), st)
-    if (.not. st%ok()) return
-    self%cached = .false.
-    self%rhs_cached = .false.
+    ! the positions at y: the mechanism's roots just evaluated them unless
+    ! stored values served (then another state's are set), else the closure
+    ! (warm from the last solution); a trial state the closure cannot reach
+    ! keeps the last value
+    if (.not. (self%work%converged .and. &
+               all(self%work%scalars(self%mechanism%q)%q == y(1:self%mechanism%f)))) then
+      call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), st)
+      if (.not. st%ok()) return
+      self%cached = .false.
+      self%rhs_cached = .false.
+    end if
     do k = 1, N_CONTACTS
       if (.not. btest(self%fly%open_mask, k - 1)) cycle
       gap = contact_gap(self%work, self%layout, k)
@@ -206,6 +212,48 @@ contains
       end if
     end associate
   end subroutine count_flights
+
+  !> The flights' highest point: the open contacts' largest gap above the
+  !> slide as the extremes located it (0 and contact 0 if none rose).
+  module subroutine keep_highest(sys)
+    type(rider_ode_t), intent(inout) :: sys
+    integer :: k
+    k = maxloc(sys%ride%extremes%value(EXTREME_GAP:EXTREME_GAP + N_CONTACTS - 1), dim=1)
+    associate (x => sys%ride%extremes, j => EXTREME_GAP + k - 1, fl => sys%flights)
+      if (.not. (x%located .and. x%value(j) > 0)) return
+      fl%highest = x%value(j)
+      fl%highest_contact = k
+      fl%highest_time = x%time(j)
+      fl%highest_arc_length = x%at(j)
+    end associate
+  end subroutine keep_highest
+
+  !> At a record (velocities set, its extremes added): an open contact's
+  !> gap that rose at the stretch's last record and falls now had its apex
+  !> between the two; the extremes search that interval for it, so that a
+  !> flight with no record near its apex (shorter than the output step: only
+  !> its take-off and landing) still has its highest point. A gap rate above
+  !> -apex_rate_noise counts as rising: the take-off's is 0 to the closure's
+  !> noise, either sign.
+  module subroutine watch_gap_apexes(self, kind)
+    class(rider_ode_t), intent(inout) :: self
+    integer, intent(in) :: kind
+    !> m/s: a gap rising slower rises (1e-6)^2/(2 g) ~ 5e-14 m more
+    real(wp), parameter :: apex_rate_noise = 1e-6_wp
+    real(wp) :: rate
+    integer :: k
+    do k = 1, N_CONTACTS
+      if (.not. btest(self%fly%open_mask, k - 1)) then
+        self%gap_rising(k) = .false.
+        cycle
+      end if
+      rate = contact_gap_rate(self%work, self%layout, k)
+      ! a stretch's first record follows the last build's at the same time
+      if (self%gap_rising(k) .and. rate < 0 .and. kind /= RECORD_START) &
+        call self%extremes%add_bracket(EXTREME_GAP + k - 1)
+      self%gap_rising(k) = rate > -apex_rate_noise
+    end do
+  end subroutine watch_gap_apexes
 
   !> The ride ended at t with contacts open: their flight counts up to t.
   module subroutine end_flights(self, t)

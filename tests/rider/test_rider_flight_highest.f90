@@ -4,9 +4,12 @@
 !> deg, 3 m at 2 deg, a convex bend of 1 m into 15 deg), ridden dry with
 !> may_fly: the heels fly, then the whole rider.
 !>
-!>   spacing     the ride at output steps 0.01, 0.0037 and 0.023 s: the
-!>               highest point (and each contact's highest gap) the same to
-!>               1e-8 m. The rides themselves differ by that much: each
+!>   spacing     the ride at output steps 0.01, 0.0037, 0.023 and 0.25 s:
+!>               the highest point (and each contact's highest gap) the
+!>               same to 1e-8 m. At 0.25 s the back's flight has no record
+!>               near its apex: the ride hands the records around its gap
+!>               rate's fall through zero to the search (without that the
+!>               back's apex was missed by 3.5e-5 m). The rides themselves differ by that much: each
 !>               record re-solves the closure in the integration's
 !>               workspace (tolerance 1e-10 m), so its warm starts differ
 !>               (found ~2e-9 m). Taken at the records, as before, the
@@ -31,7 +34,7 @@ program test_rider_flight_highest
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
 
-  real(wp), parameter :: steps(3) = [0.01_wp, 0.0037_wp, 0.023_wp]
+  real(wp), parameter :: steps(4) = [0.01_wp, 0.0037_wp, 0.023_wp, 0.25_wp]
   type(geometry_description_t) :: d
   class(surface_t), allocatable :: crest
   type(status_t) :: st
