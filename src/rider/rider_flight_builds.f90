@@ -52,7 +52,7 @@ contains
     type(rider_layout_t), intent(in) :: layout
     type(flight_builds_t), intent(out) :: fly
     type(status_t), intent(inout) :: status
-    type(water_field_t), intent(in), optional :: water
+    type(water_field_t), intent(in), optional, target :: water
     type(rider_layout_t) :: open_layout
     real(wp) :: q_open(3)
     integer :: i, k, full(N_FULL)

@@ -109,7 +109,8 @@ contains
   !> takes the weight of the segment the contact belongs to: pelvis, legs,
   !> trunk, which add up to the rider's), and, given the computed water
   !> and p%drag, the water drag at each contact (on where the contact starts
-  !> between the water's edges). Finalized, ready to run.
+  !> between the water's edges). Finalized, ready to run. The drag laws
+  !> point at `water` (rider_water_drag): its actual argument outlives m.
   !>
   !> free_pelvis (default false; the flight builds, may_fly) adds the hips'
   !> holds of the posture in flight (rider_hip_hold, off) and puts the pelvis
@@ -138,7 +139,7 @@ contains
     type(rider_layout_t), intent(out) :: layout
     real(wp), intent(out) :: q0(3)
     type(status_t), intent(inout) :: status
-    type(water_field_t), intent(in), optional :: water
+    type(water_field_t), intent(in), optional, target :: water
     logical, intent(in), optional :: open(N_CONTACTS), free_pelvis
     real(wp) :: g(2), u_start
     type(surface_point_t) :: pt

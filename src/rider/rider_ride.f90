@@ -217,7 +217,7 @@ contains
     type(ride_options_t), intent(in) :: options
     type(ride_result_t), intent(out) :: result
     type(status_t), intent(inout) :: status
-    type(water_field_t), intent(in), optional :: water
+    type(water_field_t), intent(in), optional, target :: water
     character(len=*), intent(in), optional :: label
     type(rider_ode_t), target :: sys
     type(driver_options_t) :: driver
@@ -314,7 +314,8 @@ contains
     call prepare_ride(params, surface, options, sys, y0, status)
   end subroutine check_ride_start
 
-  !> The rider's model of the driver at its start state y0.
+  !> The rider's model of the driver at its start state y0 (its drag laws
+  !> point at `water`, which outlives sys).
   subroutine prepare_ride(params, surface, options, sys, y0, status, water)
     type(rider_params_t), intent(in) :: params
     class(surface_t), intent(in) :: surface
@@ -322,7 +323,7 @@ contains
     type(rider_ode_t), intent(inout) :: sys
     real(wp), allocatable, intent(out) :: y0(:)
     type(status_t), intent(inout) :: status
-    type(water_field_t), intent(in), optional :: water
+    type(water_field_t), intent(in), optional, target :: water
     real(wp) :: q0(3), qd0(3), speed
     real(wp), allocatable :: station_u(:)
     integer :: i

@@ -218,7 +218,8 @@ contains
   !> (build_sled_model). Given `water` (the computed water on `surface`),
   !> the water's drag at both contacts ('rear_water_drag',
   !> 'front_water_drag': rider_water_drag with the vehicle's spheres and
-  !> v%water), each on where its contact starts between the water's edges.
+  !> v%water), each on where its contact starts between the water's edges;
+  !> the laws point at `water` (no copy), which outlives m.
   subroutine build_vehicle_model(v, d, surface, m, q0, qd0, status, water)
     type(vehicle_t), intent(in) :: v
     type(sled_description_t), intent(in) :: d
@@ -226,7 +227,7 @@ contains
     type(mechanism_t), intent(out) :: m
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     type(status_t), intent(inout) :: status
-    type(water_field_t), intent(in), optional :: water
+    type(water_field_t), intent(in), optional, target :: water
     character(len=*), parameter :: contacts(2) = [character(len=5) :: 'rear', 'front']
     character(len=*), parameter :: u_names(2) = [character(len=2) :: 'u', 'u2']
     character(len=*), parameter :: v_names(2) = [character(len=2) :: 'v', 'v2']

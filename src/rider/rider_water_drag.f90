@@ -10,6 +10,14 @@
 !> (before the water's start, after its end) both are -1 (dry). A root
 !> rising switches the drag on, a root falling switches it off; either asks
 !> the driver to restart the integrator (the force jumps there).
+!>
+!> The law does not own the water: it points at the field the model's
+!> builder was given (new_water_drag's `water`, a TARGET), and every copy of
+!> the mechanism (the integrator's and the probe's workspaces, the flight
+!> builds) shares that one field, which is only read. Whoever owns the
+!> field keeps it, unchanged, for as long as any mechanism built with it is
+!> used: simulate_ride's `water` argument for the rider (the mechanisms live
+!> inside that call), run_sled's figures for a vehicle.
 module rider_water_drag
   use base_kinds, only: wp
   use base_status, only: status_t
@@ -24,7 +32,7 @@ module rider_water_drag
   public :: water_drag_t, new_water_drag, in_water_roots
 
   type, extends(contact_law_t) :: water_drag_t
-    type(water_field_t) :: water                 ! the computed water
+    type(water_field_t), pointer :: water => null()   ! the computed water (not owned, only read)
     type(water_properties_t) :: properties
     real(wp) :: radius = 0                       ! m, sphere radius r_S
     integer :: var_u = 0, var_v = 0              ! scalar indices of the contact's (u, v)
@@ -40,12 +48,14 @@ contains
 
   !> The drag at contact `contact` (index of mechanism%add_contact) whose
   !> surface parameters are the scalars var_u, var_v; `active` at the start.
+  !> The law points at `water` (no copy): its actual argument must outlive
+  !> every mechanism the law is added to.
   function new_water_drag(name, contact, var_u, var_v, radius, properties, water, active) result(law)
     character(len=*), intent(in) :: name
     integer, intent(in) :: contact, var_u, var_v
     real(wp), intent(in) :: radius
     type(water_properties_t), intent(in) :: properties
-    type(water_field_t), intent(in) :: water
+    type(water_field_t), intent(in), target :: water
     logical, intent(in) :: active
     type(water_drag_t) :: law
     call law%set_up_contact_law(name, contact, scaled=.false.)
@@ -53,7 +63,7 @@ contains
     law%var_v = var_v
     law%radius = radius
     law%properties = properties
-    law%water = water
+    law%water => water
     law%active = active
   end function new_water_drag
 

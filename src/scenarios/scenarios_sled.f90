@@ -95,7 +95,7 @@ contains
     type(solver_config_t) :: solver
     type(sled_description_t) :: config
     type(vehicle_t) :: vehicle
-    type(vehicle_figures_t) :: figures
+    type(vehicle_figures_t), target :: figures   ! its water_result%field: the drag laws of sys point at it
     class(surface_t), allocatable :: surface
     type(mechanism_ode_t), target :: sys
     character(len=:), allocatable :: u_units, v_units

@@ -50,14 +50,14 @@ program test_ride
   use rider_ride, only: ride_options_t, ride_result_t, simulate_ride, rider_ode_t, prepare_ride, RIDE_LIFT_OFF, &
     RIDE_STALLED
   use geometry_slide_query, only: general_wall_position
-  use rider_water_drag, only: in_water_roots
+  use rider_water_drag, only: in_water_roots, water_drag_t
   use scenarios_water, only: build_water
   use geometry_tube, only: tube_surface_t, new_straight_tube
   use testing, only: check, check_close, finish_tests
   implicit none (type, external)
 
   type(water_description_t) :: description
-  type(water_result_t) :: water
+  type(water_result_t), target :: water   ! the drag laws of prepare_ride's models point at its field
   type(input_text_t) :: input
   type(status_t) :: st
 
@@ -292,6 +292,7 @@ contains
     real(wp) :: residual, f(3), w(3)
     integer :: i, c, law, tested
     call prepare_ride(p, description%slide, opt, sys, y0, st, water%field)
+    call check_water_shared(sys)
     tested = 0
     do i = 1, ride%series%n, 37
       associate (s => ride%series, m => sys%mechanism, work => sys%work)
@@ -314,6 +315,32 @@ contains
     end do
     call check(tested > 10, 'drag power checked at records in the water')
   end subroutine check_drag_power
+
+  !> Every contact's drag law, in the model and in the integrator's
+  !> workspace, points at the one water field given (no copies:
+  !> rider_water_drag), and so does a copy of the model.
+  subroutine check_water_shared(sys)
+    type(rider_ode_t), intent(in) :: sys
+    type(rider_ode_t) :: copy
+    integer :: c, shared
+    copy = sys
+    shared = 0
+    do c = 1, N_CONTACTS
+      shared = shared + points_at_water(sys%mechanism%laws(sys%layout%drag(c))%law) + &
+               points_at_water(sys%work%laws(sys%layout%drag(c))%law) + &
+               points_at_water(copy%mechanism%laws(sys%layout%drag(c))%law)
+    end do
+    call check(shared == 3*N_CONTACTS, 'every drag law points at the water given (no copies)')
+  end subroutine check_water_shared
+
+  integer function points_at_water(law) result(n)
+    class(*), intent(in) :: law
+    n = 0
+    select type (law)
+    type is (water_drag_t)
+      if (associated(law%water, water%field)) n = 1
+    end select
+  end function points_at_water
 
   !> The mechanism's dynamics at the state of its last evaluation is reused
   !> (a record at the state a root function just saw) with the same results,

@@ -151,7 +151,7 @@ contains
     type(sled_description_t) :: d
     type(vehicle_body_t) :: vb
     class(surface_t), allocatable :: plane
-    type(water_field_t) :: water
+    type(water_field_t), target :: water   ! the drag laws point at it
     type(mechanism_ode_t), target :: sys
     type(ode_integrator_t) :: integ
     type(ode_options_t) :: opt
