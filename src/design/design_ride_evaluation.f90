@@ -38,7 +38,7 @@ module design_ride_evaluation
   public :: ride_limit_t, limit_verdict_t, new_ride_limit, evaluate_limit, limit_quantities, &
     limit_report_unit, limit_bounds_text, spaced_unit, &
     limit_stored_unit, limit_units_allowed, series_extreme, quantities_without_limit, flight_quantity, &
-    noise_free, report_noise_floor
+    noise_free, report_noise_floor, limit_noise_scale, rider_size
 
   !> The size, relative to its quantity's scale, below which a report's
   !> figure is rounding noise. The ride is integrated to rtol 1e-10 and its
@@ -50,6 +50,9 @@ module design_ride_evaluation
   !> solvers' tolerance sits above all of that and far below any figure an
   !> engineer reads (printed to 3-4 digits, limits of 0.1 g, 0.1 m, 1 N).
   real(wp), parameter :: report_noise_floor = 1e-9_wp
+  !> m: the rider's size (legs ~0.9 m, trunk ~0.6 m), the scale of its lever
+  !> arm and of how far it climbs a wall
+  real(wp), parameter :: rider_size = 1
 
   !> ejection counts the rider's points that went over the top of an open
   !> section's wall (0 or 1: the ride ends there); `limit_max = 0` forbids it.
@@ -99,6 +102,31 @@ contains
     real(wp), intent(in) :: value, scale
     noise_free = merge(0.0_wp, value, abs(value) < report_noise_floor*scale)
   end function noise_free
+
+  !> The scale, in the report unit of a limit's quantity, below
+  !> report_noise_floor of which its value is rounding noise (0: none, the
+  !> value is judged as it is): felt accelerations 1 g, lever arm and wall
+  !> distance the rider's size, wall angle 1 rad, normal force
+  !> `force_scale` (the ride's largest). A verdict judges the values as the
+  !> report prints them, so that noise on either side of a bound (a flying
+  !> pelvis's -7e-10 N against normal_force >= 0) neither exceeds it nor
+  !> prints a worst of 0 beside "LIMIT EXCEEDED".
+  pure real(wp) function limit_noise_scale(quantity, force_scale) result(scale)
+    character(len=*), intent(in) :: quantity
+    real(wp), intent(in) :: force_scale
+    select case (quantity)
+    case ('acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal')
+      scale = 1
+    case ('lever_arm', 'wall_distance')
+      scale = rider_size
+    case ('normal_force')
+      scale = force_scale
+    case ('wall_angle')
+      scale = 180/pi   ! 1 rad in deg
+    case default
+      scale = 0
+    end select
+  end function limit_noise_scale
 
   !> The unit of felt accelerations (multiples of |gravity|) as UDUNITS-2 and
   !> pint read it: 'gravity' when |gravity| is standard gravity (to a few

@@ -24,7 +24,7 @@ module design_ride_report
   use rider_extremes, only: felt_basis, FELT_FREE_FALL, FELT_NOT_JUDGED, EXTREME_TOP_SPEED, EXTREME_FELT_MAX, &
     EXTREME_FELT_MIN, EXTREME_CLIMB, EXTREME_NORMAL_MIN, EXTREME_LEVER
   use design_ride_evaluation, only: felt_acceleration, felt_acceleration_units, tipping_lever_arm, ride_limit_t, limit_verdict_t, &
-    evaluate_limit, series_extreme
+    evaluate_limit, series_extreme, noise_free, limit_noise_scale
   implicit none (type, external)
   private
   public :: ride_report_t, evaluate_ride
@@ -72,6 +72,7 @@ contains
     real(wp), allocatable :: where(:), values(:), lever_abs(:)
     integer, allocatable :: basis(:)
     integer :: n, i, k, at
+    real(wp) :: force_scale
     n = s%n
     report%n = n
     report%complete = complete
@@ -124,6 +125,8 @@ contains
     if (s%extremes%located .and. s%extremes%records == n) call take_located(s, report)
 
     report%limits = limits
+    ! the scale of the normal forces' noise: the ride's largest (as printed)
+    force_scale = max(maxval([(abs(s%contact(k)%normal_force(:n)), k = 1, N_CONTACTS)]), tiny(1.0_wp))
     allocate (report%verdicts(size(limits)), report%judged(size(limits)))
     report%judged = .true.
     do k = 1, size(limits)
@@ -142,7 +145,8 @@ contains
         else
           values = pack(report%judged_felt(felt_axis(limits(k)%quantity), :), report%felt_judged)
         end if
-        call evaluate_limit(limits(k), values, pack(where, report%felt_judged), report%verdicts(k))
+        call evaluate_limit(limits(k), noise_free(values, limit_noise_scale(limits(k)%quantity, force_scale)), &
+                            pack(where, report%felt_judged), report%verdicts(k))
         cycle
       case ('normal_force')
         values = [(minval([(s%contact(i)%normal_force(at), i = 1, N_CONTACTS)]), at = 1, n)]
@@ -161,7 +165,8 @@ contains
         report%judged(k) = .false.
         cycle
       end select
-      call evaluate_limit(limits(k), values, where, report%verdicts(k))
+      call evaluate_limit(limits(k), noise_free(values, limit_noise_scale(limits(k)%quantity, force_scale)), where, &
+                          report%verdicts(k))
     end do
 
   contains

@@ -20,7 +20,7 @@ module scenarios_ride
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
   use rider_ride, only: ride_result_t, ride_series_t, check_ride_start
   use design_ride_evaluation, only: limit_report_unit, limit_bounds_text, spaced_unit, ride_limit_t, &
-    quantities_without_limit, noise_free
+    quantities_without_limit, noise_free, rider_size
   use design_ride_report, only: ride_report_t
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   use io_input, only: input_text_t, check_known_groups, format_real, invalid, where_given
@@ -369,8 +369,6 @@ contains
     character(len=:), allocatable :: c, line, unit, unset
     integer :: k, exceeded
     real(wp) :: felt_min(3), felt_max(3), force_scale
-    !> m: the rider's size (legs ~0.9 m, trunk ~0.6 m), the lever arm's scale
-    real(wp), parameter :: rider_size = 1
     call summary%start('ride', 'slidesim ride')
     if (allocated(water%slide_name)) call summary%add_text('slide', 'slide', water%slide_name)
     call summary%add('slide_length', 'slide centreline length', water%slide%length(), 'm')
@@ -446,12 +444,12 @@ contains
         else if (r%verdicts(k)%exceeded) then
           exceeded = exceeded + 1
           line = 'LIMIT EXCEEDED: '//r%limits(k)%quantity//' '//limit_bounds_text(r%limits(k))//'; worst '// &
-                 format_short(noise_free(r%verdicts(k)%worst, limit_scale(k)))//unit//' at arc length '// &
+                 format_short(r%verdicts(k)%worst)//unit//' at arc length '// &
                  format_short(r%verdicts(k)%worst_where)//' m (first at '// &
                  format_short(r%verdicts(k)%first_where)//' m)'
         else
           line = 'limit '//r%limits(k)%quantity//' '//limit_bounds_text(r%limits(k))//': ok (closest '// &
-                 format_short(noise_free(r%verdicts(k)%worst, limit_scale(k)))//unit//' at arc length '// &
+                 format_short(r%verdicts(k)%worst)//unit//' at arc length '// &
                  format_short(r%verdicts(k)%worst_where)//' m)'
         end if
         call summary%add_line('  '//line)
@@ -486,22 +484,6 @@ contains
 
     !> The scale of limit k's quantity in its report unit, for noise_free
     !> (0: no floor; speeds, times, counts are no rounding noise)
-    real(wp) function limit_scale(k) result(scale)
-      integer, intent(in) :: k
-      select case (r%limits(k)%quantity)
-      case ('acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal')
-        scale = 1
-      case ('lever_arm', 'wall_distance')
-        scale = rider_size
-      case ('normal_force')
-        scale = force_scale
-      case ('wall_angle')
-        scale = 180/pi   ! 1 rad in deg
-      case default
-        scale = 0
-      end select
-    end function limit_scale
-
     !> What the sign of a felt acceleration along axis k (2 lateral, 3 normal) means.
     pure function sense(k, value) result(text)
       integer, intent(in) :: k

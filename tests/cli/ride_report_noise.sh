@@ -9,6 +9,8 @@
 #   in E-notation below 1e-9; --summary-json has the same zeros;
 # - the limit lines give felt accelerations in g, as their bounds (was
 #   "worst 0 gravity"), and angles in deg;
+# - a limit's verdict judges the values as printed (noise is 0): the
+#   normal force >= 0 N and lever arm <= 0 m limits hold;
 # - a felt acceleration above the floor keeps its sign and direction:
 #   the demo ride's lateral max "0.0.. g, pushed to the left" (report_words).
 set -u
@@ -21,10 +23,10 @@ check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=
 py=/usr/bin/python3; [ -x "$py" ] || py=python3
 
 (cd "$root" && "$slidesim" -o "$work/jump.h5" --summary-json "$work/jump.json" \
-  --set "rider%limit_quantity='airtime','drop_height','acceleration_lateral','acceleration_normal','wall_angle'" \
-  --set "rider%limit_unit='s','m','g','g','deg'" \
-  --set "rider%limit_min=0,0,-1,0.2,0" \
-  --set "rider%limit_max=0.6,0.2,1,10,60" \
+  --set "rider%limit_quantity='airtime','drop_height','acceleration_lateral','acceleration_normal','wall_angle','normal_force','lever_arm'" \
+  --set "rider%limit_unit='s','m','g','g','deg','N','m'" \
+  --set "rider%limit_min=0,0,-1,0.2,0,0,-1" \
+  --set "rider%limit_max=0.6,0.2,1,10,60,5000,0" \
   inputs/ride/jump.nml >"$work/jump.out" 2>"$work/jump.err"); got=$?
 check '[ $got = 0 ]' "jump: exit status $got ($(cat "$work/jump.err"))"
 check '[ $(grep -c "^  felt lateral m[ai][xn]  *0 g$" "$work/jump.out") = 2 ]' \
@@ -40,6 +42,13 @@ check 'grep -q "limit acceleration_lateral >= -1 g and <= 1 g: ok (closest 0 g a
   "lateral limit: $(grep acceleration_lateral "$work/jump.out")"
 check 'grep -q "limit wall_angle >= 0 deg and <= 60 deg: ok (closest [0-9.]* deg at" "$work/jump.out"' \
   "wall angle limit: $(grep 'limit wall_angle' "$work/jump.out")"
+# a verdict judges what the report prints: the flying pelvis's -7e-10 N and
+# the lever arm's 4e-17 m are no excess (on 07f4aea both "LIMIT EXCEEDED ...
+# worst 0 N" / "worst 0 m")
+check 'grep -q "limit normal_force >= 0 N and <= 5000 N: ok (closest 0 N at" "$work/jump.out"' \
+  "normal force limit: $(grep 'normal_force' "$work/jump.out")"
+check 'grep -q "limit lever_arm >= -1 m and <= 0 m: ok (closest 0 m at" "$work/jump.out"' \
+  "lever arm limit: $(grep 'limit lever_arm\|LIMIT.*lever_arm' "$work/jump.out")"
 check '! grep -q "gravity\|degree" "$work/jump.out"' "units spelt for files: $(grep 'gravity\|degree' "$work/jump.out")"
 "$py" - "$work/jump.json" >"$work/check.out" 2>&1 <<'EOF'
 import sys, json
