@@ -97,7 +97,15 @@ contains
     call move_alloc(a%drag_work, b%drag_work); call move_alloc(a%closure_residual, b%closure_residual)
     call move_alloc(a%airborne, b%airborne)
     do k = 1, N_CONTACTS
-      b%contact(k) = a%contact(k)
+      associate (x => a%contact(k), y => b%contact(k))
+        call move_alloc(x%u, y%u); call move_alloc(x%v, y%v); call move_alloc(x%arc_length, y%arc_length)
+        call move_alloc(x%wall_angle, y%wall_angle); call move_alloc(x%wall_distance, y%wall_distance)
+        call move_alloc(x%position, y%position); call move_alloc(x%velocity, y%velocity)
+        call move_alloc(x%normal_force, y%normal_force); call move_alloc(x%friction_force, y%friction_force)
+        call move_alloc(x%drag_force, y%drag_force); call move_alloc(x%in_water, y%in_water)
+        call move_alloc(x%reynolds, y%reynolds); call move_alloc(x%drag_coefficient, y%drag_coefficient)
+        call move_alloc(x%projected_area, y%projected_area); call move_alloc(x%relative_velocity, y%relative_velocity)
+      end associate
     end do
     b%extremes = a%extremes
   end subroutine move_series
