@@ -46,6 +46,7 @@ module contact_closing
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model
   use contact_flight, only: flight_ode_t, build_flight, restart_flight, closed_part, carrying_contact
   use contact_open_gaps, only: carried_ode_t, carry, touching_gap_limit
+  use contact_bodies, only: build_bodies
   implicit none (type, external)
   private
   public :: drive_flight, close_contact, flight_after_closed
@@ -94,6 +95,10 @@ contains
     real(wp), allocatable :: y(:)
     logical :: flying, first, next
     integer :: chart_changes, nc
+    if (size(flight%system%bodies) > 1) then
+      call drive_bodies(flight, y0, options, result, status, open)
+      return
+    end if
     flying = .not. flight%start_closed
     y = y0
     if (.not. flying) then
@@ -160,6 +165,119 @@ contains
     open = run%open
   end subroutine drive_flight
 
+  !> drive_flight of several bodies (contact_bodies): each phase one
+  !> mechanism of the bodies as they are (each carried by its closed contact
+  !> or flying), `flight` the first; at a closing (an impact's rebound below
+  !> close_speed) or a lift-off of a contact that may open the next phase is
+  !> built from every body's pose and twist at the last record, the switched
+  !> body's part changed, and driven on from there. A lift-off of a contact
+  !> that may not open, or any other stop, ends the run.
+  subroutine drive_bodies(flight, y0, options, result, status, open)
+    type(flight_ode_t), intent(inout), target :: flight
+    real(wp), intent(in) :: y0(:)
+    type(driver_options_t), intent(in) :: options
+    type(driver_result_t), intent(out) :: result
+    type(status_t), intent(out) :: status
+    integer, allocatable, intent(out) :: open(:, :)
+    type(phases_t) :: run
+    type(driver_options_t) :: phase_options
+    type(driver_result_t) :: phase
+    type(flight_ode_t), allocatable, target :: current, next_phase
+    type(flight_ode_t), pointer :: p
+    type(contact_system_t) :: placed
+    real(wp), allocatable :: y(:), q0(:), qd0(:)
+    character(len=8), allocatable :: units(:)
+    integer, allocatable :: carrier(:)
+    integer :: nc, k, c, touching, chart_changes
+    logical :: first, next, lifted
+    p => flight
+    y = y0
+    phase_options = options
+    if (.not. options%output_origin < huge(1.0_wp)) phase_options%output_origin = options%t_start
+    first = .true.
+    chart_changes = 0
+    nc = size(flight%system%contacts)
+    allocate (run%open(nc, 0), run%gap(nc, 0), run%point(3, nc, 0), run%velocity(3, nc, 0))
+    run%history = ''
+    do
+      p%landed = 0
+      p%closings = [integer ::]
+      if (.not. first) call p%start_series(16)
+      call drive(p, y, phase_options, phase, status)
+      call run%add(p%series, p%q_units, p%beta_units, p%outcome)
+      call run%add_flight(p)
+      if (.not. first) chart_changes = chart_changes + p%chart_changes
+      lifted = .false.
+      c = 0
+      if (p%stop_kind == STOP_LIFT_OFF) then
+        c = findloc(p%mechanism_contact, p%stop_contact, dim=1)
+        if (c > 0) lifted = p%system%contacts(c)%may_open
+      end if
+      next = status%ok() .and. phase%outcome == DRIVE_EVENT_STOP .and. phase%t < options%t_end .and. &
+             (size(p%closings) > 0 .or. lifted)
+      if (next) then
+        carrier = p%carrier
+        touching = p%gaps%touching
+        do k = 1, size(p%closings)
+          carrier(p%gaps%body(p%closings(k))) = p%closings(k)
+          if (touching == p%closings(k)) touching = 0
+        end do
+        if (lifted) then
+          carrier(p%gaps%body(c)) = 0
+          touching = c
+          run%history = run%history//': the contact opens (may_open), the body flies'
+        end if
+        placed = at_last_record(p)
+        allocate (next_phase)
+        call build_bodies(placed, carrier, next_phase, q0, qd0, units, status, touching, .true.)
+        if (.not. status%ok()) call prefix_status(status, 'the switch at t = '//format_short(phase%t)//' s')
+        if (status%ok()) then
+          next_phase%impacts = p%impacts
+          y = next_phase%initial_state(q0, qd0)
+          call carry_work(run%series, next_phase, y)
+        end if
+      end if
+      call add_result(result, phase, first)
+      if (next .and. .not. status%ok()) result%outcome = DRIVE_FAILED
+      if (.not. (next .and. status%ok())) exit
+      if (.not. associated(p, flight)) flight%impacts = p%impacts
+      call move_alloc(next_phase, current)
+      p => current
+      first = .false.
+      phase_options%t_start = phase%t
+    end do
+    if (.not. associated(p, flight)) flight%impacts = p%impacts
+    call run%finish(flight)
+    ! the bodies on the first phase's frames, whose mechanism (flight's) reports the run
+    associate (s => flight%series)
+      do k = 1, s%nb
+        c = findloc([(flight%system%bodies(c)%name == trim(s%body_names(k)), c = 1, size(flight%body_frame))], &
+                    .true., dim=1)
+        if (c > 0) s%body_frame(k) = flight%body_frame(c)
+      end do
+    end associate
+    flight%chart_changes = flight%chart_changes + chart_changes
+    open = run%open
+  end subroutine drive_bodies
+
+  !> The description of `phase` with every body at its pose and twist of the
+  !> phase's last record (the series' bodies by name).
+  function at_last_record(phase) result(placed)
+    type(flight_ode_t), intent(in) :: phase
+    type(contact_system_t) :: placed
+    integer :: b, j
+    placed = phase%system
+    associate (s => phase%series, n => phase%series%n)
+      do b = 1, size(placed%bodies)
+        j = findloc([(trim(s%body_names(j)) == placed%bodies(b)%name, j = 1, s%nb)], .true., dim=1)
+        placed%bodies(b)%position = s%body_r(:, j, n)
+        placed%bodies(b)%rotation = s%body_rot(:, :, j, n)
+        placed%bodies(b)%velocity = s%body_v(:, j, n)
+        placed%bodies(b)%angular_velocity = s%body_omega(:, j, n)
+      end do
+    end associate
+  end function at_last_record
+
   !> The work integrals of the next phase's state y (mechanism_ode_t: y =
   !> [q, s, W]) start where the run's records so far end, law by law by name
   !> (the air's drag acts in flight and closed alike, contact_factory
@@ -216,7 +334,8 @@ contains
     self%history = self%history//outcome
   end subroutine phases_add
 
-  !> The contacts of a flight's records: all open, their gaps, points and slips.
+  !> The contacts of a flight's records: open (closed: a contact carrying
+  !> its body among several, contact_bodies), their gaps, points and slips.
   subroutine phases_add_flight(self, flight)
     class(phases_t), intent(inout) :: self
     type(flight_ode_t), intent(in) :: flight
@@ -228,7 +347,7 @@ contains
       gap(c, :) = flight%series%monitor(flight%gap_monitors(c), :n)
     end do
     if (n == 0) return
-    call self%append(spread(spread(1, 1, size(gap, 1)), 2, n), gap, flight%gap_point(:, :, :n), &
+    call self%append(spread(merge(0, 1, flight%gaps%carried), 2, n), gap, flight%gap_point(:, :, :n), &
                      flight%gap_velocity(:, :, :n))
   end subroutine phases_add_flight
 

@@ -36,31 +36,33 @@
 !> Several bodies may fly at once (one mechanism: each body its own six
 !> coordinates, its gaps at its own pose, its impacts changing its own
 !> twist only; landings of different bodies at the same instant are
-!> impacts one after the other). They do not close: a rebound below
-!> close_speed ends the run there, saying so (a body at rest beside a flying
-!> one is not built).
+!> impacts one after the other), and beside bodies carried by closed
+!> contacts (contact_bodies builds such a flight: the mechanism of the
+!> closed contacts with the flying bodies free, the closed contacts' gaps
+!> not watched): a closing stops the flight there as for one body, and
+!> contact_closing (drive_bodies) goes on with that body carried, the others
+!> as they were. A carried body touching another surface ends the run (two
+!> closed contacts on one body are not built).
 !>
 !> The contacts that can open are those of bodies with the ground (each
-!> shape_1 fixed, at the ground's pose); a single body may start carried by
-!> one of them closed; the friction, rolling, level and chain of a contact
-!> that starts open are the closed contact's after closing, so they need
-!> restitution (without it the run ends at the landing and they would be
-!> unused); with several bodies every contact starts open and has none of
-!> them (nor may_open); anything else is refused.
+!> shape_1 fixed, at the ground's pose); of each body's contacts at most one
+!> starts closed (it carries the body); the friction, rolling, level and
+!> chain of a contact that starts open are the closed contact's after
+!> closing, so they need restitution (without it the run ends at the
+!> landing and they would be unused); anything else is refused (a contact
+!> between two bodies: a body landing on another body is not built).
 module contact_flight
   use base_kinds, only: wp
   use base_text, only: format_short
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use numerics_event_driver, only: EVENT_STOP, EVENT_RESTART
   use numerics_linear_algebra, only: lu_factor, lu_solve
-  use kinetostatics_joints, only: new_prismatic
-  use kinetostatics_free_rotation, only: new_free_rotation
-  use kinetostatics_mass, only: new_mass_element
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_impact, only: impact_law_t, impact_outcome_t, resolve_impact, rigid_body_delassus
   use base_vector, only: cross
   use geometry_solid, only: solid_properties_t
-  use contact_factory, only: body_from_spec, add_air_drag
+  use contact_factory, only: body_from_spec
+  use contact_free_body, only: add_free_body_to => add_free_body, free_body_units
   use contact_model, only: contact_system_t, contact_model_t, build_system_shapes, body_index, LEVEL_POSITION, &
     CHAIN_AUTO
   use contact_open_gaps, only: open_gaps_t, start_open_gaps
@@ -68,8 +70,6 @@ module contact_flight
   private
   public :: flight_ode_t, impact_record_t, build_flight, starts_open, restart_flight, check_flight_system, &
     closed_part, carrying_contact
-
-  real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
 
   !> One impact, for the result's table.
   type :: impact_record_t
@@ -99,6 +99,11 @@ module contact_flight
     integer :: closed_on = 0                  ! the contact of `closed` (contact_closing)
     logical :: start_closed = .false.         ! the run starts with the closed contact (contact_closing)
     integer, allocatable :: coordinates(:, :)   ! 6 x bodies: each body's scalars x, y, z, a1, a2, a3
+    integer, allocatable :: speeds(:, :)        ! 6 x bodies: the places of their rates among the speeds
+    ! several bodies, each carried by a closed contact or flying (contact_bodies)
+    integer, allocatable :: carrier(:)          ! each body's closed contact (0: it flies)
+    integer, allocatable :: mechanism_contact(:)   ! each contact's place among the mechanism's (0: open)
+    integer, allocatable :: closings(:)         ! the contacts the impacts of the last event closed
     integer, allocatable :: rotation_element(:)   ! each body's free rotation
     type(contact_model_t), allocatable :: closed   ! the closed contact after closing
     ! per record of the flight and contact: the gap's point on shape_1 (m)
@@ -137,15 +142,15 @@ contains
     part%contacts(1)%start_open = .false.
   end function closed_part
 
-  !> Refused unless every contact is between the ground and a body; with one
-  !> body at most one of its contacts starts closed; with several (flying at
-  !> once) every contact starts open and none has what only a closed contact
-  !> uses (a description with a contact that starts open or may open: a
-  !> flight).
+  !> Refused unless every contact is between the ground and a body and of
+  !> the contacts of each body at most one starts closed (it carries the
+  !> body; the others are surfaces it may land on), and unless a contact that
+  !> starts open has restitution where it has what only a closed contact uses
+  !> (a description with a contact that starts open or may open: a flight).
   subroutine check_flight_system(system, status)
     type(contact_system_t), intent(in) :: system
     type(status_t), intent(inout) :: status
-    integer :: k
+    integer :: k, b
     if (.not. status%ok()) return
     k = findloc([(system%contacts(k)%body_1 /= 'ground', k = 1, size(system%contacts))], .true., dim=1)
     if (k > 0) then
@@ -164,18 +169,20 @@ contains
         end if
       end associate
     end do
-    if (size(system%bodies) > 1) then
-      call check_bodies_flying(system, status)
-    else if (count(.not. system%contacts%start_open) > 1) then
-      associate (c => system%contacts(findloc(system%contacts%start_open .or. system%contacts%may_open, .true., &
-                                              dim=1)))
-        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': of the contacts of body '''// &
-          c%body_2//''' with the ground at most one starts closed (it carries the body; the others are '// &
-          'surfaces it may land on): give the others start = ''open''')
+    do b = 1, size(system%bodies)
+      associate (name => system%bodies(b)%name)
+        if (count([(system%contacts(k)%body_2 == name .and. .not. system%contacts(k)%start_open, &
+                    k = 1, size(system%contacts))]) <= 1) cycle
+        k = findloc([(system%contacts(k)%body_2 == name .and. (system%contacts(k)%start_open .or. &
+                      system%contacts(k)%may_open), k = 1, size(system%contacts))], .true., dim=1)
+        if (k == 0) k = findloc([(system%contacts(k)%body_2 == name, k = 1, size(system%contacts))], .true., dim=1)
+        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//system%contacts(k)%name//''': of the '// &
+          'contacts of body '''//name//''' with the ground at most one starts closed (it carries the body; the '// &
+          'others are surfaces it may land on): give the others start = ''open''')
+        return
       end associate
-    end if
+    end do
     do k = 1, size(system%contacts)
-      if (.not. status%ok()) return
       associate (c => system%contacts(k))
         if (c%start_open .and. c%restitution < 0 .and. (allocated(c%friction%kind) .or. c%rolling .or. &
                                                         c%level /= LEVEL_POSITION .or. c%chain /= CHAIN_AUTO)) &
@@ -184,34 +191,9 @@ contains
             'closes, which needs restitution (without it the run ends at the landing: they would be unused); '// &
             'give restitution, or leave them out')
       end associate
-    end do
-  end subroutine check_flight_system
-
-  !> Several bodies flying at once: every contact starts open (a body
-  !> carried by a closed contact beside a flying one is not built), and as no
-  !> contact closes (a rebound below close_speed ends the run) none has what
-  !> only a closed contact uses.
-  subroutine check_bodies_flying(system, status)
-    type(contact_system_t), intent(in) :: system
-    type(status_t), intent(inout) :: status
-    integer :: k
-    do k = 1, size(system%contacts)
-      associate (c => system%contacts(k))
-        if (.not. c%start_open) then
-          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': with several bodies ('// &
-            format_count(size(system%bodies))//') every contact starts open (start = ''open''): they fly at '// &
-            'once; one flying while another stays in contact (a closed contact beside a flight) is not built')
-        else if (c%may_open .or. allocated(c%friction%kind) .or. c%rolling .or. c%level /= LEVEL_POSITION .or. &
-                 c%chain /= CHAIN_AUTO) then
-          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': with several bodies ('// &
-            format_count(size(system%bodies))//') flying at once a contact does not close after a landing (a '// &
-            'rebound below close_speed ends the run: a body at rest beside a flying one is not built), so '// &
-            'may_open, friction, rolling, level and chain would be unused: leave them out')
-        end if
-      end associate
       if (.not. status%ok()) return
     end do
-  end subroutine check_bodies_flying
+  end subroutine check_flight_system
 
   !> The free body of `system` at its given pose and twist: q0 = (x, y, z,
   !> a1, a2, a3), qd0 their rates, q_units; refused unless the description
@@ -229,6 +211,11 @@ contains
     type(contact_system_t) :: shaped
     call check_flight_system(system, status)
     if (.not. status%ok()) return
+    if (size(system%bodies) > 1 .and. .not. all(system%contacts%start_open)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'several bodies of which one starts closed: built by '// &
+                      'contact_bodies build_bodies (build_flight builds bodies that all fly)')
+      return
+    end if
     call build_system_shapes(system, shaped, status)
     call build_shaped_flight(shaped, flight, q0, qd0, q_units, status, touching)
   end subroutine build_flight
@@ -242,13 +229,16 @@ contains
     character(len=8), allocatable, intent(out) :: q_units(:)
     type(status_t), intent(inout) :: status
     integer, intent(in), optional :: touching
-    character(len=8), parameter :: body_units(6) = [character(len=8) :: 'm', 'm', 'm', 'rad', 'rad', 'rad']
     integer :: i, b, nb
     if (.not. status%ok()) return
     nb = size(system%bodies)
     flight%system = system
     allocate (flight%mass(nb), flight%inertia(3, 3, nb), flight%centre(3, nb), flight%body_frame(nb), &
-              flight%coordinates(6, nb), flight%rotation_element(nb), flight%impacts(0))
+              flight%coordinates(6, nb), flight%rotation_element(nb), flight%impacts(0), flight%speeds(6, nb), &
+              flight%carrier(nb), flight%mechanism_contact(size(system%contacts)), flight%closings(0))
+    flight%speeds = reshape([(i, i = 1, 6*nb)], [6, nb])
+    flight%carrier = 0
+    flight%mechanism_contact = 0
     associate (m => flight%mechanism)
       do b = 1, nb
         call add_free_body(flight, b, status)
@@ -272,7 +262,7 @@ contains
         end associate
         if (.not. status%ok()) return
       end do
-      q_units = [(body_units, b = 1, nb)]
+      q_units = [(free_body_units, b = 1, nb)]
       flight%q_units = q_units
       allocate (flight%beta_units(0))
       if (present(touching)) then
@@ -283,43 +273,22 @@ contains
     end associate
   end subroutine build_shaped_flight
 
-  !> Body b of the description, free: it hangs from the ground by three
-  !> prismatic joints along the world axes and a free rotation, with its mass
-  !> element and its air drag.
+  !> Body b of the description, free (contact_free_body), its mass
+  !> properties kept for the impacts.
   subroutine add_free_body(flight, b, status)
     type(flight_ode_t), intent(inout) :: flight
     integer, intent(in) :: b
     type(status_t), intent(inout) :: status
-    character(len=*), parameter :: axis_name(3) = ['x', 'y', 'z']
-    real(wp), parameter :: axes(3, 3) = identity
     type(solid_properties_t) :: props
-    integer :: frames(4), i
-    character(len=:), allocatable :: body
-    associate (spec => flight%system%bodies(b), m => flight%mechanism, coordinates => flight%coordinates(:, b))
-      body = spec%name
+    associate (spec => flight%system%bodies(b))
       call body_from_spec(spec, flight%system%shapes, props, status)
       if (.not. status%ok()) return
       flight%mass(b) = spec%mass
       flight%inertia(:, :, b) = props%inertia
       flight%centre(:, b) = props%centre
-      frames(1) = 1   ! the ground
-      do i = 1, 3
-        frames(i + 1) = m%add_frame(body//'.'//axis_name(i))
-        coordinates(i) = m%add_scalar(body//'.'//axis_name(i), spec%position(i))
-        call m%add_element(new_prismatic(body//'.'//axis_name(i), frames(i), frames(i + 1), coordinates(i), &
-                                         axes(:, i)))
-      end do
-      do i = 1, 3
-        coordinates(3 + i) = m%add_scalar(body//'.a'//achar(iachar('0') + i), 0.0_wp)
-      end do
-      flight%body_frame(b) = m%add_frame(body)
-      call m%add_element(new_free_rotation(body//'.rotation', frames(4), flight%body_frame(b), coordinates(4:6), &
-                                           [0.0_wp, 0.0_wp, 1.0_wp], spec%rotation))
-      flight%rotation_element(b) = m%n_elements
-      call m%add_element(new_mass_element(body, flight%body_frame(b), spec%mass, props%inertia, props%centre, &
-                                          flight%system%gravity, status))
-      call add_air_drag(m, spec, flight%system%air_density, flight%system%wind, flight%body_frame(b), props%centre, &
-                        status)
+      call add_free_body_to(flight%mechanism, spec, props, flight%system%gravity, flight%system%air_density, &
+                            flight%system%wind, flight%coordinates(:, b), flight%body_frame(b), &
+                            flight%rotation_element(b), status)
     end associate
   end subroutine add_free_body
 
@@ -369,12 +338,11 @@ contains
     real(wp), intent(inout) :: rates(:)
     type(status_t), intent(inout) :: status
     real(wp) :: jac(6, 6), unit(size(rates)), block(6)
-    integer :: k, ipiv(6), first
-    first = 6*(b - 1)
+    integer :: k, ipiv(6)
     associate (m => flight%mechanism, frame => flight%work%frames(flight%body_frame(b)))
       do k = 1, 6
         unit = 0
-        unit(first + k) = 1
+        unit(flight%speeds(k, b)) = 1
         call m%set_velocities(flight%work, unit)
         jac(:, k) = [frame%omega, frame%v]
       end do
@@ -382,7 +350,7 @@ contains
       call lu_factor(jac, ipiv, status)
       if (status%ok()) call lu_solve(jac, ipiv, block, status)
       if (.not. status%ok()) return
-      rates(first + 1:first + 6) = block
+      rates(flight%speeds(:, b)) = block
       call m%set_velocities(flight%work, rates)
     end associate
   end subroutine start_rates
@@ -437,6 +405,17 @@ contains
       ! opened: the root is the gap from here (opening_gap, nonzero, where CVODE looks again)
       if (lands(c)) lands(c) = .not. self%gaps%opened()
     end if
+    do c = 1, size(lands)
+      if (.not. lands(c)) cycle
+      if (self%carrier(self%gaps%body(c)) == 0) cycle
+      action = max(action, EVENT_STOP)
+      call add_outcome(self, 'contact '''//self%system%contacts(c)%name//''': body '''// &
+                       self%system%contacts(c)%body_2//''' touches shape '''//self%system%contacts(c)%shape_1// &
+                       ''' at t = '//format_short(t)//' s while contact '''// &
+                       self%system%contacts(self%carrier(self%gaps%body(c)))%name//''' carries it (two closed '// &
+                       'contacts on one body are not built): the run ends here')
+      return
+    end do
     do b = 1, size(self%body_frame)
       if (count(lands .and. self%gaps%body == b) > 1) then
         action = max(action, EVENT_STOP)
@@ -483,9 +462,8 @@ contains
   !> the body's centre of mass speeds up by L/m, its angular velocity by I^-1
   !> (arm x L); its new twist becomes its rates in y (the other bodies' kept).
   !> A rebound below c's close_speed closes it (closing_impulse added to L)
-  !> and stops the flight there; with other bodies flying it ends the run
-  !> there instead (no closing impulse: a body at rest beside a flying one is
-  !> not built).
+  !> and stops the flight there (with several bodies the others go on as
+  !> they are: contact_closing drive_bodies).
   subroutine impact(self, c, t, y, action, status)
     class(flight_ode_t), intent(inout) :: self
     integer, intent(in) :: c
@@ -500,7 +478,7 @@ contains
     type(impact_outcome_t) :: outcome
     type(impact_record_t) :: row
     integer :: f, ipiv(3), b
-    logical :: slow, closes
+    logical :: closes
     f = self%mechanism%f
     b = self%gaps%body(c)
     associate (body => self%work%frames(self%body_frame(b)), n => self%gaps%gap(c)%normal, &
@@ -516,8 +494,7 @@ contains
       impulse = outcome%impulse
       velocity_after = outcome%velocity_after
       closing_lost = 0
-      slow = outcome%normal_speed_after < contact%close_speed
-      closes = slow .and. size(self%body_frame) == 1
+      closes = outcome%normal_speed_after < contact%close_speed
       if (closes) then
         call closing_impulse(k, n, outcome%velocity_after, contact%rolling, closing, status)
         if (.not. status%ok()) return
@@ -549,14 +526,9 @@ contains
       if (closes) then
         action = max(action, EVENT_STOP)
         self%landed = c
+        self%closings = [self%closings, c]
         call add_outcome(self, 'contact '''//name//''' closed at the impact at t = '//format_short(t)// &
                          ' s: the rebound, '//format_short(outcome%normal_speed_after)//' m/s, is below close_speed')
-      else if (slow) then
-        action = max(action, EVENT_STOP)
-        call add_outcome(self, 'contact '''//name//''': the rebound of body '''//self%system%bodies(b)%name// &
-                         ''' at t = '//format_short(t)//' s, '//format_short(outcome%normal_speed_after)// &
-                         ' m/s, is below close_speed: the contact would close while other bodies fly (a body '// &
-                         'at rest beside a flying one is not built); the run ends here')
       else
         action = max(action, EVENT_RESTART)
       end if
@@ -595,7 +567,8 @@ contains
 
   !> The mechanism's record, with each contact's gap at its body's pose, its
   !> point on shape_1 and the body's nearest point's velocity along the surface
-  !> (the slip it would have: the normal part is the gap's rate).
+  !> (the slip it would have: the normal part is the gap's rate); a closed
+  !> contact's (several bodies) gap 0, its point and slip the mechanism's.
   subroutine flight_record(self, t, y, kind, status)
     class(flight_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
@@ -616,6 +589,13 @@ contains
       call grow(self%gap_velocity, 2*n)
     end if
     do c = 1, nc
+      if (self%gaps%carried(c)) then
+        ! closed (several bodies): the mechanism's contact point and slip
+        self%series%monitor(self%gap_monitors(c), n) = 0
+        self%gap_point(:, c, n) = self%series%contact_r(:, self%mechanism_contact(c), n)
+        self%gap_velocity(:, c, n) = self%series%slip(:, self%mechanism_contact(c), n)
+        cycle
+      end if
       associate (gap => self%gaps%gap(c), body => self%work%frames(self%body_frame(self%gaps%body(c))))
         self%series%monitor(self%gap_monitors(c), n) = gap%gap
         self%gap_point(:, c, n) = gap%point_1
@@ -634,12 +614,4 @@ contains
     grown(:, :, :size(a, 3)) = a
     call move_alloc(grown, a)
   end subroutine grow
-
-  pure function format_count(n) result(text)
-    integer, intent(in) :: n
-    character(len=:), allocatable :: text
-    character(len=12) :: buffer
-    write (buffer, '(i0)') n
-    text = trim(buffer)
-  end function format_count
 end module contact_flight

@@ -37,10 +37,8 @@
 !> velocity into a surface, no slip where rolling) to 1e-9 of their size.
 module contact_model
   use base_kinds, only: wp
-  use base_constants, only: standard_gravity, dry_air_density
   use base_text, only: format_short
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
-  use base_spec, only: spec_t
   use geometry_surface, only: surface_t
   use geometry_solid, only: solid_properties_t
   use numerics_linear_algebra, only: cholesky_factor, cholesky_solve
@@ -55,17 +53,17 @@ module contact_model
     place_open_contact_pair, check_contact_branch, starts_in_other_chart
   use contact_rolling, only: new_no_slip
   use contact_velocity_level, only: new_velocity_contact
-  use contact_factory, only: shape_t, body_spec_t, body_from_spec, build_shapes, add_air_drag
+  use contact_factory, only: body_from_spec, add_air_drag
+  use contact_free_body, only: add_free_body, free_body_units
+  use contact_system, only: shape_t, body_spec_t, contact_spec_t, contact_system_t, build_system_shapes, &
+    check_names, open_chain, body_size, body_index, shape_index, LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, &
+    CHAIN_OPEN, CHAIN_LOOP
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t, contact_model_t, contact_link_t
   public :: build_contact_model, contact_convergence_coefficient, body_size, build_system_shapes, body_index
   public :: LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
 
-  integer, parameter :: LEVEL_POSITION = 1, LEVEL_VELOCITY = 2
-  !> The chain of a position-level contact: open where it applies (no
-  !> rolling), else the loop (CHAIN_AUTO); or either chosen.
-  integer, parameter :: CHAIN_AUTO = 0, CHAIN_OPEN = 1, CHAIN_LOOP = 2
   real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
   !> CVODE's nonlinear convergence coefficient for contact runs with Adams (its
   !> default 0.1). The corrector stops once its change is below this fraction of
@@ -77,36 +75,13 @@ module contact_model
   !> "Corrector"; bench/convergence_scan.sh).
   real(wp), parameter :: contact_convergence_coefficient = 0.03_wp
 
-  type :: contact_spec_t
-    character(len=:), allocatable :: name, body_1, shape_1, body_2, shape_2
-    real(wp) :: side_1 = 1, side_2 = 1           ! normal towards the other body (+1/-1)
-    type(spec_t) :: friction                     ! a force law kind and its parameters (no kind: none)
-    logical :: rolling = .false.
-    integer :: level = LEVEL_POSITION
-    integer :: chain = CHAIN_AUTO
-    logical :: start_open = .false.              ! starts apart, the body in flight (contact_flight)
-    logical :: may_open = .false.                ! a lift-off opens it: the body flies on (contact_closing)
-    real(wp) :: restitution = -1                 ! energetic e of its landings (contact_flight); < 0: none given
-    real(wp) :: impact_mu = 0                    ! Coulomb mu during its impacts
-    real(wp) :: close_speed = 0.01_wp            ! m/s, a rebound below it would close the contact
-  end type contact_spec_t
-
-  !> The description: 'ground' names the fixed frame (it needs no body entry).
-  type :: contact_system_t
-    real(wp) :: gravity(3) = [0.0_wp, 0.0_wp, -standard_gravity]   ! m/s^2
-    real(wp) :: air_density = dry_air_density    ! kg/m^3, of the air's drag on bodies with a drag_area
-    real(wp) :: wind(3) = 0                      ! m/s, the air's velocity (world)
-    type(shape_t), allocatable :: shapes(:)
-    type(body_spec_t), allocatable :: bodies(:)
-    type(contact_spec_t), allocatable :: contacts(:)
-  end type contact_system_t
-
   !> What one contact became in the mechanism.
   type :: contact_link_t
     character(len=:), allocatable :: name
     integer :: level = LEVEL_POSITION
     logical :: rolling = .false.
     logical :: open = .false.                    ! position level by the open chain
+    logical :: apart = .false.                   ! open (start_open): not built, its body flies or another carries it
     integer :: frame_a = 0, frame_b = 0, frame_1d = 0, frame_2d = 0   ! frame_2d: 0 in the open chain
     integer :: coordinates(4) = 0                ! scalars u1, v1, u2, v2
     integer :: gaps(5) = 0                       ! closure measurements g1..g5
@@ -125,6 +100,11 @@ module contact_model
     type(contact_link_t), allocatable :: links(:)
     real(wp), allocatable :: y0(:)
     character(len=8), allocatable :: q_units(:), beta_units(:)   ! of the coordinates and dependents
+    ! bodies that fly (a description with contacts that start open: each
+    ! body not carried by a closed contact is free, contact_free_body)
+    integer, allocatable :: free(:, :)             ! 6 x bodies: a free body's scalars x, y, z, a1, a2, a3 (else 0)
+    integer, allocatable :: rotation_element(:)    ! each free body's free rotation (else 0)
+    integer, allocatable :: gap_monitors(:)        ! each contact's <name>.gap among the monitors (flights only)
   end type contact_model_t
 
 contains
@@ -133,200 +113,52 @@ contains
   !> every name known, every body carried once and in order, loops closed on
   !> the physical branch, contacts pressing, start velocities consistent.
   !> Shapes given by their descriptions are built first (contact_factory).
-  subroutine build_contact_model(system, model, status)
+  !> flying (contact_bodies): the contacts that start open are not built,
+  !> every body no closed contact carries is free (contact_free_body) and
+  !> every contact's gap is a monitor (add_free_bodies).
+  subroutine build_contact_model(system, model, status, flying)
     type(contact_system_t), intent(in) :: system
     type(contact_model_t), intent(out) :: model
     type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: flying
     type(contact_system_t) :: shaped
+    logical :: flies
     if (.not. status%ok()) return
+    flies = .false.
+    if (present(flying)) flies = flying
     call build_system_shapes(system, shaped, status)
-    call build_shaped_model(shaped, model, status)
+    call build_shaped_model(shaped, model, status, flies)
   end subroutine build_contact_model
 
-  !> `system` with the shapes given by their descriptions built
-  !> (contact_factory's build_shapes; built ones are kept): the model's and
-  !> the flight's builders start from it.
-  subroutine build_system_shapes(system, shaped, status)
-    type(contact_system_t), intent(in) :: system
-    type(contact_system_t), intent(out) :: shaped
-    type(status_t), intent(inout) :: status
-    shaped = system
-    if (allocated(shaped%shapes)) call build_shapes(shaped%shapes, status)
-  end subroutine build_system_shapes
-
   !> build_contact_model of a system whose shapes are built.
-  subroutine build_shaped_model(system, model, status)
+  subroutine build_shaped_model(system, model, status, flies)
     type(contact_system_t), intent(in) :: system
     type(contact_model_t), intent(out) :: model
     type(status_t), intent(inout) :: status
+    logical, intent(in) :: flies
     type(contact_model_t) :: closed
     if (.not. status%ok()) return
     call check_names(system, status)
     if (.not. status%ok()) return
-    if (.not. any(system%contacts%level == LEVEL_VELOCITY .or. open_chain(system%contacts))) then
-      call build(system, model, status)
+    if (.not. any((system%contacts%level == LEVEL_VELOCITY .or. open_chain(system%contacts)) .and. &
+                  .not. system%contacts%start_open)) then
+      call build(system, model, status, flies)
       return
     end if
     ! velocity level and open chains: start from the closed configuration of the loops
-    call build(system, closed, status, all_position=.true.)
+    call build(system, closed, status, flies, all_position=.true.)
     if (.not. status%ok()) return
-    call build(system, model, status, closed=closed)
+    call build(system, model, status, flies, closed=closed)
   end subroutine build_shaped_model
-
-  !> Every name defined once and every reference known.
-  subroutine check_names(system, status)
-    type(contact_system_t), intent(in) :: system
-    type(status_t), intent(inout) :: status
-    integer :: k, j
-    if (.not. allocated(system%shapes) .or. .not. allocated(system%bodies) .or. &
-        .not. allocated(system%contacts)) then
-      call set_status(status, STATUS_INVALID_INPUT, 'contact system: shapes, bodies and contacts must be given')
-      return
-    end if
-    if (size(system%contacts) == 0) then
-      call set_status(status, STATUS_INVALID_INPUT, 'contact system: no contact')
-      return
-    end if
-    do k = 1, size(system%bodies)
-      if (system%bodies(k)%name == 'ground') call fail('a body may not be called ''ground'' (the fixed frame)')
-      do j = 1, k - 1
-        if (system%bodies(j)%name == system%bodies(k)%name) call fail('body '''//system%bodies(k)%name// &
-                                                                      ''' is defined twice')
-      end do
-      if (allocated(system%bodies(k)%solid_of)) then
-        if (shape_index(system, system%bodies(k)%solid_of) == 0) call fail('body '''//system%bodies(k)%name// &
-          ''': solid_of = '''//system%bodies(k)%solid_of//''' is not a shape'//known_shapes(system))
-      end if
-    end do
-    do k = 1, size(system%shapes)
-      do j = 1, k - 1
-        if (system%shapes(j)%name == system%shapes(k)%name) call fail('shape '''//system%shapes(k)%name// &
-                                                                      ''' is defined twice')
-      end do
-    end do
-    do k = 1, size(system%contacts)
-      associate (c => system%contacts(k))
-        do j = 1, k - 1
-          if (system%contacts(j)%name == c%name) call fail('contact '''//c%name//''' is defined twice')
-        end do
-        if (body_index(system, c%body_1) < 0) call fail('contact '''//c%name//''': body_1 = '''//c%body_1// &
-                                                        ''' is not a body'//known_bodies(system))
-        if (body_index(system, c%body_2) <= 0) call fail('contact '''//c%name//''': body_2 = '''//c%body_2// &
-                                                         ''' is not a body (the ground cannot be body_2)'// &
-                                                         known_bodies(system))
-        if (shape_index(system, c%shape_1) == 0) call fail('contact '''//c%name//''': shape_1 = '''// &
-                                                           c%shape_1//''' is not a shape'//known_shapes(system))
-        if (shape_index(system, c%shape_2) == 0) call fail('contact '''//c%name//''': shape_2 = '''// &
-                                                           c%shape_2//''' is not a shape'//known_shapes(system))
-        if (c%body_1 == c%body_2) call fail('contact '''//c%name//''': a body cannot touch itself')
-        if (c%rolling .and. allocated(c%friction%kind)) call fail('contact '''//c%name//''': a rolling '// &
-          'contact has no sliding friction (the no-slip constraint carries the tangential force)')
-        if (c%chain == CHAIN_OPEN .and. c%rolling) call fail('contact '''//c%name//''': chain = ''open'' '// &
-          'is for sliding contacts; a rolling contact needs the loop (chain = ''loop'')')
-        if (c%chain /= CHAIN_AUTO .and. c%level == LEVEL_VELOCITY) call fail('contact '''//c%name// &
-          ''': the chain is chosen for position-level contacts only')
-      end associate
-    end do
-  contains
-    subroutine fail(text)
-      character(len=*), intent(in) :: text
-      if (status%ok()) call set_status(status, STATUS_INVALID_INPUT, text)
-    end subroutine fail
-  end subroutine check_names
-
-  !> Whether a contact is built as the open chain: position level, no
-  !> rolling, not chain = loop.
-  elemental logical function open_chain(c)
-    type(contact_spec_t), intent(in) :: c
-    open_chain = c%level == LEVEL_POSITION .and. .not. c%rolling .and. c%chain /= CHAIN_LOOP
-  end function open_chain
-
-  !> The size of body k (m): the largest diagonal of the boxes around the
-  !> bounded shapes it carries in its contacts, each sampled on a 21 x 21
-  !> grid of its parameter domain; 0 if it carries none (a plane, a domain
-  !> beyond 1e6): unknown.
-  function body_size(system, k) result(length)
-    type(contact_system_t), intent(in) :: system
-    integer, intent(in) :: k
-    real(wp) :: length
-    integer :: j
-    length = 0
-    do j = 1, size(system%contacts)
-      associate (c => system%contacts(j))
-        if (c%body_1 == system%bodies(k)%name) &
-          length = max(length, extent(system%shapes(shape_index(system, c%shape_1))%surface))
-        if (c%body_2 == system%bodies(k)%name) &
-          length = max(length, extent(system%shapes(shape_index(system, c%shape_2))%surface))
-      end associate
-    end do
-  contains
-    real(wp) function extent(surface)
-      class(surface_t), intent(in) :: surface
-      integer, parameter :: n = 21
-      real(wp) :: box(4), u(n), v(n), x(n, n), y(n, n), z(n, n)
-      type(status_t) :: st
-      integer :: i
-      extent = 0
-      call surface%domain(box(1), box(2), box(3), box(4))
-      if (.not. maxval(abs(box)) < 1e6_wp) return
-      u = [(box(1) + (box(2) - box(1))*i/real(n - 1, wp), i = 0, n - 1)]
-      v = [(box(3) + (box(4) - box(3))*i/real(n - 1, wp), i = 0, n - 1)]
-      call surface%points_on_grid(u, v, x, y, z, st)
-      if (.not. st%ok()) return
-      extent = norm2([maxval(x) - minval(x), maxval(y) - minval(y), maxval(z) - minval(z)])
-    end function extent
-  end function body_size
-
-  !> 0 for 'ground', the index of a body, -1 if unknown.
-  pure integer function body_index(system, name) result(k)
-    type(contact_system_t), intent(in) :: system
-    character(len=*), intent(in) :: name
-    if (name == 'ground') then
-      k = 0
-      return
-    end if
-    do k = 1, size(system%bodies)
-      if (system%bodies(k)%name == name) return
-    end do
-    k = -1
-  end function body_index
-
-  pure integer function shape_index(system, name) result(k)
-    type(contact_system_t), intent(in) :: system
-    character(len=*), intent(in) :: name
-    do k = 1, size(system%shapes)
-      if (system%shapes(k)%name == name) return
-    end do
-    k = 0
-  end function shape_index
-
-  function known_bodies(system) result(text)
-    type(contact_system_t), intent(in) :: system
-    character(len=:), allocatable :: text
-    integer :: k
-    text = '; the bodies are ''ground'''
-    do k = 1, size(system%bodies)
-      text = text//', '''//system%bodies(k)%name//''''
-    end do
-  end function known_bodies
-
-  function known_shapes(system) result(text)
-    type(contact_system_t), intent(in) :: system
-    character(len=:), allocatable :: text
-    integer :: k
-    text = '; the shapes are'
-    do k = 1, size(system%shapes)
-      text = text//merge(' ', ',', k == 1)//' '''//system%shapes(k)%name//''''
-    end do
-  end function known_shapes
 
   !> One build. all_position: every contact at position level by the loop
   !> (the start of velocity-level contacts and open chains); closed: that
   !> model, whose closed configuration starts them.
-  subroutine build(system, model, status, all_position, closed)
+  subroutine build(system, model, status, flies, all_position, closed)
     type(contact_system_t), intent(in) :: system
     type(contact_model_t), intent(out) :: model
     type(status_t), intent(inout) :: status
+    logical, intent(in) :: flies
     logical, intent(in), optional :: all_position
     type(contact_model_t), intent(in), optional :: closed
     integer :: nb, k, b1, b2, level
@@ -347,6 +179,9 @@ contains
     associate (m => model%ode%mechanism)
       do k = 1, size(system%contacts)
         associate (c => system%contacts(k), link => model%links(k))
+          link%name = c%name
+          link%apart = c%start_open
+          if (c%start_open) cycle
           b1 = body_index(system, c%body_1)
           b2 = body_index(system, c%body_2)
           if (b1 > 0) then
@@ -365,7 +200,6 @@ contains
           carrier(b2) = k
           level = c%level
           if (present(all_position)) level = LEVEL_POSITION
-          link%name = c%name
           link%level = level
           link%rolling = c%rolling
           link%open = open_chain(c) .and. .not. present(all_position)
@@ -393,6 +227,10 @@ contains
           if (.not. status%ok()) return
         end associate
       end do
+      if (flies) then
+        call add_free_bodies(system, model, props, carrier, q, status)
+        if (.not. status%ok()) return
+      end if
       do k = 1, nb
         if (carrier(k) == 0) then
           call set_status(status, STATUS_INVALID_INPUT, 'body '''//system%bodies(k)%name//''' is not body_2 '// &
@@ -407,6 +245,41 @@ contains
     end associate
     call start(system, model, carrier, status, closed)
   end subroutine build
+
+  !> The bodies no closed contact carries, each free (contact_free_body,
+  !> carrier -1) at its given pose, in the order of the &body groups; then
+  !> the gap of every contact as a monitor (<contact>.gap, m; the flight
+  !> records its value, contact_flight): a description whose contacts may
+  !> start open (contact_bodies).
+  subroutine add_free_bodies(system, model, props, carrier, q, status)
+    type(contact_system_t), intent(in) :: system
+    type(contact_model_t), intent(inout) :: model
+    type(solid_properties_t), intent(in) :: props(:)
+    integer, intent(inout) :: carrier(:)
+    integer, allocatable, intent(inout) :: q(:)
+    type(status_t), intent(inout) :: status
+    integer :: b, c
+    associate (m => model%ode%mechanism, nb => size(system%bodies))
+      allocate (model%free(6, nb), model%rotation_element(nb), model%gap_monitors(size(system%contacts)))
+      model%free = 0
+      model%rotation_element = 0
+      do b = 1, nb
+        if (carrier(b) /= 0) cycle
+        call add_free_body(m, system%bodies(b), props(b), system%gravity, system%air_density, system%wind, &
+                           model%free(:, b), model%body_frame(b + 1), model%rotation_element(b), status)
+        if (.not. status%ok()) return
+        carrier(b) = -1
+        model%body_names(b + 1) = system%bodies(b)%name
+        model%body_mass(b + 1) = system%bodies(b)%mass
+        q = [q, model%free(:, b)]
+        model%q_units = [model%q_units, free_body_units]
+      end do
+      do c = 1, size(system%contacts)
+        call m%add_monitor(m%add_scalar(system%contacts(c)%name//'.gap'), 'm')
+        model%gap_monitors(c) = size(m%monitors)
+      end do
+    end associate
+  end subroutine add_free_bodies
 
   !> Units of the coordinates (and dependents) the contact added, in their order.
   subroutine add_units(model, level, rolling, open, s1, s2)
@@ -601,7 +474,9 @@ contains
     associate (m => model%ode%mechanism)
       do k = 1, size(system%contacts)
         associate (c => system%contacts(k), link => model%links(k))
-          if (link%open) then
+          if (link%apart) then
+            link%start_gap = 0
+          else if (link%open) then
             ! from the loop's closed configuration
             call place_open_contact_pair(m, link%pair, closed%ode%work, closed%links(k)%pair)
             link%start_gap = closed%links(k)%start_gap
@@ -626,7 +501,7 @@ contains
       call m%check_start(model%ode%work, q0, status)
       if (.not. status%ok()) return
       do k = 1, size(model%links)
-        if (model%links(k)%level == LEVEL_POSITION .and. .not. model%links(k)%open) &
+        if (model%links(k)%level == LEVEL_POSITION .and. .not. (model%links(k)%open .or. model%links(k)%apart)) &
           call check_contact_branch(model%ode%work, model%links(k)%pair, status)
       end do
       if (.not. status%ok()) return
@@ -682,7 +557,7 @@ contains
         b = (worst + 5)/6
         call set_status(status, STATUS_INVALID_INPUT, 'the start velocities are not consistent with the '// &
           'contacts: body '''//system%bodies(b)%name//''' (carried by contact '''// &
-          system%contacts(carrier(b))%name//''') can only have a twist that differs by '//format_short(miss)// &
+          system%contacts(max(carrier(b), 1))%name//''') can only have a twist that differs by '//format_short(miss)// &
           trim(merge(' rad/s', ' m/s  ', mod(worst - 1, 6) < 3))//' in its '// &
           trim(merge('angular velocity', 'velocity        ', mod(worst - 1, 6) < 3))// &
           ' (component '//achar(iachar('x') + mod(worst - 1, 3))//'); give a twist with no velocity into '// &

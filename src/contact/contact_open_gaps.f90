@@ -1,12 +1,12 @@
 !> The gaps of the bodies' open contacts (issue 25): a body may have several
 !> contacts with the ground, the surfaces it may touch (a dome and the floor
 !> it lands on, a wall and a floor), and several bodies may fly at once, each
-!> gap at its own body's pose (contact_flight). At most one contact carries a
-!> (single) body closed; the gap of
-!> every other (contact_gap: the signed distance of its two shapes along their
-!> common normal, through the foot-point solver) is a root function. In
-!> flight (contact_flight) every contact is open and a gap falling through
-!> zero is a landing on that contact; while one contact carries the body
+!> gap at its own body's pose (contact_flight). At most one contact carries
+!> each body closed (`closed`, or `carried` with several bodies:
+!> contact_bodies); the gap of every other (contact_gap: the signed distance
+!> of its two shapes along their common normal, through the foot-point
+!> solver) is a root function. A gap of a flying body falling through zero
+!> is a landing on that contact; while a contact carries the body
 !> (contact_closing) a gap of another falling to zero ends the run (two closed
 !> contacts on one body are not built).
 !>
@@ -54,6 +54,7 @@ module contact_open_gaps
     integer, allocatable :: body(:)    ! each contact's body_2: its place among the description's bodies
     real(wp), allocatable :: last(:)   ! m, each gap's last value (kept where an update fails: a trial state)
     integer :: closed = 0              ! the contact that carries the body (not watched; 0: none)
+    logical, allocatable :: carried(:) ! each contact: closed, carrying its body (not watched)
     integer :: touching = 0            ! the contact that started touching, not yet opened (0: none)
   contains
     procedure :: update => gaps_update
@@ -92,9 +93,11 @@ contains
   !> description: its frame, world), each from the contact search, on its contact's branch (the normals against
   !> each other) and open (> 0); the contact `touching` may touch (its gap
   !> not below -touching_gap_limit); the contact `closed` carries the body
-  !> and is not watched. At the run's start a gap that is not open is the
-  !> input's; at a switch (restarting) the motion's.
-  subroutine start_open_gaps(gaps, system, work, frames, status, touching, closed, restarting)
+  !> and is not watched, as are those of `carried` (several bodies, each
+  !> carried by one of them or flying: contact_bodies). At the run's start a
+  !> gap that is not open is the input's; at a switch (restarting) the
+  !> motion's.
+  subroutine start_open_gaps(gaps, system, work, frames, status, touching, closed, restarting, carried)
     type(open_gaps_t), intent(out) :: gaps
     type(contact_system_t), intent(in) :: system
     type(mechanism_workspace_t), intent(in) :: work
@@ -102,14 +105,19 @@ contains
     type(status_t), intent(inout) :: status
     integer, intent(in) :: touching, closed
     logical, intent(in) :: restarting   ! a switch during the run (not the run's start, the input's)
+    logical, intent(in), optional :: carried(:)   ! each contact: closed (the body it carries, its other contacts open)
     integer :: c, s1, s2, k
     gaps%touching = touching
     gaps%closed = closed
-    allocate (gaps%gap(size(system%contacts)), gaps%last(size(system%contacts)))
+    allocate (gaps%gap(size(system%contacts)), gaps%last(size(system%contacts)), &
+              gaps%carried(size(system%contacts)))
+    gaps%carried = .false.
+    if (closed > 0) gaps%carried(closed) = .true.
+    if (present(carried)) gaps%carried = carried
     gaps%last = 0
     gaps%body = [(body_index(system, system%contacts(c)%body_2), c = 1, size(system%contacts))]
     do c = 1, size(system%contacts)
-      if (c == closed) cycle
+      if (gaps%carried(c)) cycle
       associate (contact => system%contacts(c), gap => gaps%gap(c), body => work%frames(frames(gaps%body(c))))
         s1 = findloc([(system%shapes(k)%name == contact%shape_1, k = 1, size(system%shapes))], .true., dim=1)
         s2 = findloc([(system%shapes(k)%name == contact%shape_2, k = 1, size(system%shapes))], .true., dim=1)
@@ -155,7 +163,7 @@ contains
     type(status_t), intent(inout) :: status
     integer :: c
     do c = 1, size(self%gap)
-      if (c == self%closed) cycle
+      if (self%carried(c)) cycle
       associate (body => work%frames(frames(self%body(c))))
         call self%gap(c)%update(identity, ground_origin, body%rot, body%r, status)
       end associate
@@ -166,7 +174,7 @@ contains
 
   !> The root of each contact at its body's pose (as gaps_update): its gap
   !> (the last where it cannot be found: a trial state the integrator does
-  !> not keep); the touching contact's opening_gap - |gap|; the closed one's
+  !> not keep); the touching contact's opening_gap - |gap|; the closed ones'
   !> 1 (never zero).
   subroutine gaps_roots(self, work, frames, located, g)
     class(open_gaps_t), intent(inout) :: self
@@ -177,7 +185,7 @@ contains
     type(status_t) :: status
     integer :: c
     do c = 1, size(self%gap)
-      if (c == self%closed) cycle
+      if (self%carried(c)) cycle
       if (located) then
         associate (body => work%frames(frames(self%body(c))))
           call self%gap(c)%update(identity, ground_origin, body%rot, body%r, status)
@@ -186,7 +194,7 @@ contains
       end if
     end do
     g = self%last
-    if (self%closed > 0) g(self%closed) = 1
+    where (self%carried) g = 1
     if (self%touching > 0) g(self%touching) = opening_gap - abs(g(self%touching))
   end subroutine gaps_roots
 

@@ -19,6 +19,7 @@ module scenarios_contact
   use scenarios_mechanism, only: run_mechanism
   use contact_flight, only: flight_ode_t, build_flight, starts_open, check_flight_system, carrying_contact, closed_part
   use contact_closing, only: flight_after_closed
+  use contact_bodies, only: build_bodies, start_carriers
   use io_xdmf, only: body_shape_t
   use base_grid, only: evenly_spaced
   use numerics_ode, only: ODE_ADAMS
@@ -63,6 +64,10 @@ contains
     end if
     if (flies .and. carrying_contact(system) == 0) then
       call run_flight(input, run, solver, system, status)
+      return
+    end if
+    if (flies .and. size(system%bodies) > 1) then
+      call run_bodies(input, run, solver, system, status)
       return
     end if
     ! a body with contacts to land on starts carried by its closed one alone
@@ -120,6 +125,35 @@ contains
     call run_mechanism('contact', input, run, solver, flight, q0, qd0, q_units, [character(len=8) ::], status, &
                        shapes=bounded_body_shapes(system))
   end subroutine run_flight
+
+  !> Several bodies, some carried by a closed contact at the start, the
+  !> others flying (contact_bodies): one mechanism of them all, driven as a
+  !> flight whose bodies land, close, lift off (contact_closing).
+  subroutine run_bodies(input, run, solver, system, status)
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    type(solver_config_t), intent(in) :: solver
+    type(contact_system_t), intent(in) :: system
+    type(status_t), intent(inout) :: status
+    type(flight_ode_t) :: flight
+    type(contact_model_t) :: model
+    real(wp), allocatable :: q0(:), qd0(:), y0(:)
+    character(len=8), allocatable :: q_units(:)
+    call build_bodies(system, start_carriers(system), flight, q0, qd0, q_units, status, 0, .false., model)
+    if (status%ok()) then
+      y0 = flight%initial_state(q0, qd0)
+      call flight%check_start(y0, status)
+    end if
+    if (.not. status%ok()) then
+      call locate_failure(input, system, status)
+      call mark_input_failure(status)
+      return
+    end if
+    call check_moves(input, system, model, status)
+    if (.not. status%ok()) return
+    call run_mechanism('contact', input, run, solver, flight, q0, qd0, q_units, [character(len=8) ::], status, &
+                       shapes=bounded_body_shapes(system))
+  end subroutine run_bodies
 
   !> Every bounded shape a body carries (an egg, a ball; not a plane or an
   !> open paraboloid), as a 24 x 13 grid in the body's axes for the XDMF view.

@@ -1,0 +1,123 @@
+!> Several bodies, each carried by one closed contact with the ground or
+!> flying (issue 25): one phase of the run as one mechanism, built from the
+!> current set of closed contacts (contact_model: a closed contact carries
+!> its body as in a closed run; every body no closed contact carries is free,
+!> contact_free_body) and driven as a flight (contact_flight flight_ode_t:
+!> the open contacts' gaps are its roots, a landing of a flying body is an
+!> impact, a rebound below close_speed closes that contact; a closed
+!> contact's lift-off is the mechanism's). A switch (a closing, a lift-off
+!> of a contact that may open) builds the next phase from every body's
+!> pose and twist at the switch (contact_closing drive_bodies): the body
+!> that switched changes its part, the others keep their poses and twists
+!> to rounding (a closed contact's coordinates come again from the contact
+!> search at its body's pose; a free body's from its pose, its rates from
+!> its twist).
+!>
+!> A closed contact's body touching another surface while carried (two
+!> closed contacts on one body) ends the run (contact_flight), as do
+!> body-to-body contacts (refused at the start: check_flight_system).
+module contact_bodies
+  use base_kinds, only: wp
+  use base_text, only: format_short
+  use base_status, only: status_t, set_status, STATUS_DOMAIN
+  use geometry_solid, only: solid_properties_t
+  use contact_factory, only: body_from_spec
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, build_system_shapes, body_index
+  use contact_flight, only: flight_ode_t, check_flight_system
+  use contact_open_gaps, only: start_open_gaps, touching_gap_limit
+  implicit none (type, external)
+  private
+  public :: build_bodies, start_carriers
+
+contains
+
+  !> Each body's contact that starts closed (0: it starts in flight).
+  pure function start_carriers(system) result(carrier)
+    type(contact_system_t), intent(in) :: system
+    integer :: carrier(size(system%bodies))
+    integer :: c
+    carrier = 0
+    do c = 1, size(system%contacts)
+      if (.not. system%contacts(c)%start_open) carrier(body_index(system, system%contacts(c)%body_2)) = c
+    end do
+  end function start_carriers
+
+  !> The phase of `system` where body b is carried by its contact
+  !> carrier(b) (closed), or flies (0), each at its pose and twist of the
+  !> description: the mechanism (contact_model), its start q0, qd0 and
+  !> units, its open contacts' gaps (the contact `touching` may touch: it
+  !> has just lifted off). restarting: a switch during the run (the closed
+  !> contacts must touch to touching_gap_limit, the gaps are the motion's);
+  !> else the run's start (checked as the input: check_flight_system;
+  !> model, if present, is the built contact model, for the start's moves).
+  subroutine build_bodies(system, carrier, flight, q0, qd0, q_units, status, touching, restarting, model)
+    type(contact_system_t), intent(in) :: system
+    integer, intent(in) :: carrier(:)
+    type(flight_ode_t), intent(out) :: flight
+    real(wp), allocatable, intent(out) :: q0(:), qd0(:)
+    character(len=8), allocatable, intent(out) :: q_units(:)
+    type(status_t), intent(inout) :: status
+    integer, intent(in) :: touching
+    logical, intent(in) :: restarting
+    type(contact_model_t), intent(out), optional :: model
+    type(contact_model_t) :: built
+    type(contact_system_t) :: part
+    type(solid_properties_t) :: props
+    integer :: b, c, k, f, nb, nc, j
+    if (.not. status%ok()) return
+    if (.not. restarting) call check_flight_system(system, status)
+    call build_system_shapes(system, part, status)
+    if (.not. status%ok()) return
+    nb = size(system%bodies)
+    nc = size(system%contacts)
+    part%contacts%start_open = .true.
+    do b = 1, nb
+      if (carrier(b) > 0) part%contacts(carrier(b))%start_open = .false.
+    end do
+    call build_contact_model(part, built, status, flying=.true.)
+    if (.not. status%ok()) return
+    if (restarting) then
+      do c = 1, nc
+        if (built%links(c)%apart .or. abs(built%links(c)%start_gap) <= touching_gap_limit) cycle
+        call set_status(status, STATUS_DOMAIN, 'contact '''//system%contacts(c)%name//''': the closed contact '// &
+          'moved its body by '//format_short(built%links(c)%start_gap)//' m to touch (more than '// &
+          format_short(touching_gap_limit)//' m): the pose at the switch is not a touching one')
+        return
+      end do
+    end if
+    flight%mechanism_ode_t = built%ode
+    flight%system = part
+    allocate (flight%mass(nb), flight%inertia(3, 3, nb), flight%centre(3, nb), flight%impacts(0), &
+              flight%speeds(6, nb), flight%closings(0))
+    flight%body_frame = built%body_frame(2:)
+    flight%coordinates = built%free
+    flight%rotation_element = built%rotation_element
+    flight%gap_monitors = built%gap_monitors
+    flight%carrier = carrier
+    flight%mechanism_contact = [(merge(0, built%links(c)%contact, built%links(c)%apart), c = 1, nc)]
+    flight%q_units = built%q_units
+    flight%beta_units = built%beta_units
+    q_units = built%q_units
+    associate (m => flight%mechanism)
+      flight%speeds = 0
+      do b = 1, nb
+        call body_from_spec(part%bodies(b), part%shapes, props, status)
+        if (.not. status%ok()) return
+        flight%mass(b) = system%bodies(b)%mass
+        flight%inertia(:, :, b) = props%inertia
+        flight%centre(:, b) = props%centre
+        if (carrier(b) > 0) cycle
+        do k = 1, 6
+          j = findloc(m%q, flight%coordinates(k, b), dim=1)
+          flight%speeds(k, b) = findloc(m%speeds, j, dim=1)
+        end do
+      end do
+      f = m%f
+      q0 = built%y0(1:f)
+      qd0 = built%y0(f + 1:f + m%ns)
+    end associate
+    call start_open_gaps(flight%gaps, part, flight%work, flight%body_frame, status, touching, 0, restarting, &
+                         carried=.not. part%contacts%start_open)
+    if (present(model)) model = built
+  end subroutine build_bodies
+end module contact_bodies
