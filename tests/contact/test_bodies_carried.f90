@@ -25,6 +25,12 @@
 !>   - energy_pair: a slides on the slope (closed) while b bounces on the
 !>     floor with e = 1, both frictionless: the total energy (kinetic and
 !>     potential of both) stays at its start to 1e-8 over 2 s.
+!>   - lift_off_beside_flying: a rolls off a dome (inputs/contact/
+!>     dome_floor.nml's ball: may_open, the floor a second contact with e =
+!>     0.5) while b bounces beside it: a's contact with the dome opens at its
+!>     lift-off (a switch of a's part only), a flies, lands on the floor and
+!>     bounces until that contact closes; a against its run alone (the one
+!>     body's phases) and b against its flight alone, 1e-9.
 program test_bodies_carried
   use base_kinds, only: wp
   use base_constants, only: standard_gravity, pi
@@ -34,9 +40,10 @@ program test_bodies_carried
   use io_input, only: input_text_t, input_from_text
   use io_contact_config, only: read_contact_config
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
-  use contact_flight, only: flight_ode_t, build_flight
+  use contact_flight, only: flight_ode_t, build_flight, impact_record_t
   use contact_bodies, only: build_bodies, start_carriers
-  use contact_closing, only: drive_flight
+  use contact_closing, only: drive_flight, flight_after_closed
+  use contact_flight, only: closed_part, carrying_contact
   use kinetostatics_recorder, only: mechanism_series_t
   use testing, only: check, check_close, finish_tests
   use scenario_fixtures, only: number
@@ -51,6 +58,7 @@ program test_bodies_carried
   call slide_beside_bounce(.true.)
   call rest_beside_flying()
   call energy_pair()
+  call lift_off_beside_flying()
   call finish_tests('test_bodies_carried')
 
 contains
@@ -127,6 +135,7 @@ contains
     integer, intent(out) :: outcome
     integer, allocatable, intent(out) :: open(:, :)
     type(contact_system_t) :: system
+    type(contact_model_t) :: model
     real(wp), allocatable :: q0(:), qd0(:)
     character(len=8), allocatable :: units(:)
     type(status_t) :: st
@@ -137,6 +146,10 @@ contains
     if (.not. ok) return
     if (size(system%bodies) > 1 .and. .not. all(system%contacts%start_open)) then
       call build_bodies(system, start_carriers(system), flight, q0, qd0, units, st, 0, .false.)
+    else if (carrying_contact(system) > 0) then
+      ! one body that starts closed (as scenarios_contact runs it)
+      call build_contact_model(closed_part(system, carrying_contact(system)), model, st)
+      call flight_after_closed(system, model, flight, q0, qd0, units, st)
     else
       call build_flight(system, flight, q0, qd0, units, st)
     end if
@@ -375,6 +388,65 @@ contains
       print '(a, es10.3)', '  '//label//': energy relative to its start ', worst/e0
     end associate
   end subroutine energy_pair
+
+  subroutine lift_off_beside_flying()
+    type(flight_ode_t), target :: both, a_alone, b_alone
+    integer :: outcome, n, i, opened, opened_1
+    integer, allocatable :: open(:, :), open_1(:, :)
+    real(wp) :: worst_a, worst_b
+    character(len=*), parameter :: label = 'lift-off beside flying'
+    type(impact_record_t), allocatable :: rows(:)
+    character(len=:), allocatable :: a_text, b_text, dome
+    dome = '&shape name = ''dome'', kind = ''sphere'', radius = 1.0 /'//nl
+    a_text = '&body name = ''a'', mass = 1.0, solid_of = ''a'', position = 0.05, 0.0, 1.1, '// &
+             'angles_deg = 90, 0, 0 /'//nl// &
+             '&contact name = ''a_dome'', shape_1 = ''dome'', body_2 = ''a'', shape_2 = ''a'', rolling = .true., '// &
+             'may_open = .true. /'//nl// &
+             '&contact name = ''a_floor'', shape_1 = ''floor'', body_2 = ''a'', shape_2 = ''a'', start = ''open'', '// &
+             'restitution = 0.5, close_speed = 0.1 /'//nl
+    b_text = dropped('b', rb, mb, -3.0_wp, 1.0_wp, -0.2_wp, 0.9_wp)
+    call run(head(2.8_wp)//dome//a_text//b_text, label, 2.8_wp, both, outcome, open)
+    call check(outcome == DRIVE_END_TIME, label//': runs to the end: '//both%outcome)
+    if (outcome /= DRIVE_END_TIME) return
+    call check(index(both%outcome, 'the contact opens (may_open)') > 0 .and. &
+               index(both%outcome, 'contact ''a_floor'' closed at the impact') > 0, &
+               label//': a lifts off the dome, lands on the floor and its contact there closes: '//both%outcome)
+    call check(count(both%impacts%contact == 3) == 4, label//': b''s four impacts')
+    call check_bounces(both, 3, 1.0_wp, 0.9_wp, 4, label//': b')
+    call run(head(2.8_wp)//dome//a_text, 'a alone', 2.8_wp, a_alone, outcome, open_1)
+    call check(outcome == DRIVE_END_TIME, label//': a alone runs to the end: '//a_alone%outcome)
+    ! the lift-off: the first record with a's dome contact open
+    opened = findloc(open(1, :both%series%n), 1, dim=1)
+    opened_1 = findloc(open_1(1, :a_alone%series%n), 1, dim=1)
+    call check(opened > 1 .and. opened_1 > 1, label//': a''s dome contact opens during the run')
+    if (opened > 1 .and. opened_1 > 1) then
+      call check_close(both%series%time(opened), a_alone%series%time(opened_1), 0.0_wp, 1e-9_wp, &
+                       label//': a lifts off as alone (s)')
+      call check(all(open(1, :opened - 1) == 0) .and. all(open(1, opened:both%series%n) == 1), &
+                 label//': the dome contact closed before the lift-off, open after')
+    end if
+    call check(count(both%impacts%contact == 2) == count(a_alone%impacts%contact == 2) .and. &
+               count(a_alone%impacts%contact == 2) >= 2, label//': a''s impacts on the floor as alone')
+    if (count(both%impacts%contact == 2) == count(a_alone%impacts%contact == 2)) then
+      rows = pack(both%impacts, both%impacts%contact == 2)
+      associate (one => a_alone%impacts)
+        worst_a = 0
+        do i = 1, size(rows)
+          worst_a = max(worst_a, abs(rows(i)%time - one(i)%time), &
+                        abs(rows(i)%normal_speed_before - one(i)%normal_speed_before))
+        end do
+        call check_close(worst_a, 0.0_wp, 0.0_wp, 1e-9_wp, label//': a''s impacts as alone (s, m/s)')
+        print '(a, es10.3)', '  '//label//': a''s impacts against alone ', worst_a
+      end associate
+    end if
+    call against_alone(both%series, a_alone%series, 'a', 2.8_wp, worst_a, n)
+    call check(n >= 270, label//': a: the runs share the output times')
+    call check_close(worst_a, 0.0_wp, 0.0_wp, 1e-9_wp, label//': a as in its run alone (m, m/s)')
+    call run(head(2.8_wp)//b_text, 'b alone', 2.8_wp, b_alone, outcome, open_1)
+    call against_alone(both%series, b_alone%series, 'b', 2.8_wp, worst_b, n)
+    call check_close(worst_b, 0.0_wp, 0.0_wp, 1e-9_wp, label//': b as in its flight alone (m, m/s)')
+    print '(a, 2es10.3)', '  '//label//': a, b against alone (m, m/s) ', worst_a, worst_b
+  end subroutine lift_off_beside_flying
 
   !> The kinetic and potential energy of balls a (body k) and b (body kb) at record i (J).
   real(wp) function energy(s, k, kb, i)
