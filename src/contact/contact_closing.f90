@@ -25,6 +25,11 @@
 !> twist exactly), and it flies on: it may land again (with restitution) and
 !> close again.
 !>
+!> Several bodies (drive_bodies): each phase is one mechanism of every body
+!> as it is, carried by its closed contact or flying (contact_bodies); a
+!> closing or a lift-off of one body builds the next phase from every
+!> body's pose and twist at the switch, the others going on as they were.
+!>
 !> Each phase starts where the last stopped, on the run's output grid, and
 !> its records are joined to the others' (kinetostatics_recorder
 !> join_series): both records at a switch are kept, the last of one phase
