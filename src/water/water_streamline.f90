@@ -123,6 +123,21 @@ contains
     real(wp), intent(in) :: y(:)
     type(water_point_t), intent(out) :: q
     type(status_t), intent(inout) :: status
+    call point_at(self, y, q, status, .true.)
+  end subroutine water_point
+
+  !> water_point's work; with_area_rate false (water_point_rates' points,
+  !> which need the width alone): a profile that changes along u is not
+  !> differenced along u (D = 0, two profiles fewer), so that the width, the
+  !> area and every check that can fail are water_point's, to the bit, and
+  !> the rates that follow from D (speed, height, u'', v'') are not the
+  !> model's.
+  pure subroutine point_at(self, y, q, status, with_area_rate)
+    class(streamline_t), intent(in) :: self
+    real(wp), intent(in) :: y(:)
+    type(water_point_t), intent(out) :: q
+    type(status_t), intent(inout) :: status
+    logical, intent(in) :: with_area_rate
     real(wp) :: u, v, du, dv, h, n(3), rv_norm, xmu(3), xmv(3), xm_dot(3), tb, theta_dot, &
                 beta_dot, r, m, a_plus, a_minus, b_plus, b_minus, vl, vr, du_step, &
                 mat(2, 2), rhs(2), det, denom, kappa_d, v_min, v_max
@@ -192,7 +207,7 @@ contains
       if (.not. status%ok()) return
       q%alpha = 0
       q%area_rate = 0
-      if (self%channel%section_varies()) then
+      if (with_area_rate .and. self%channel%section_varies()) then
         du_step = 1e-5_wp*max(1.0_wp, abs(u))
         call profile_water(self%channel, u + du_step, v, h, a_plus, b_plus, vl, vr, st)
         if (st%ok()) call profile_water(self%channel, u - du_step, v, h, a_minus, b_minus, vl, vr, st)
@@ -235,7 +250,7 @@ contains
     q%udd = (mat(2, 2)*rhs(1) - mat(1, 2)*rhs(2))/det                      ! (4.23)
     q%vdd = (mat(1, 1)*rhs(2) - mat(2, 1)*rhs(1))/det
     q%acceleration = q%p%ru*q%udd + q%p%rv*q%vdd + q%a_hat
-  end subroutine water_point
+  end subroutine point_at
 
   !> The rates d/dt along the motion at the water point q (from water_point at
   !> state y, same model). With r_u' = r_uu u' + r_uv v' and r_v' = r_uv u' + r_vv v':
@@ -244,7 +259,9 @@ contains
   !>   y_w' = z_M' x x_w + z_M x x_w',
   !>   circle: b^2 = 8 R h - 4 h^2, so b' = 4 (R' h + (R - h) h')/b (R' from F.5);
   !>   other profiles: b' by central differences of b along the motion,
-  !>   b(y + d y') - b(y - d y') over 2 d with d moving the point 1e-5 m.
+  !>   b(y + d y') - b(y - d y') over 2 d with d moving the point 1e-5 m
+  !>   (the two points without the area's rate along u, which b does not
+  !>   need: point_at).
   !> Checked against differences along the motion in test_water_field.
   pure subroutine water_point_rates(self, y, q, rates, status)
     class(streamline_t), intent(in) :: self
@@ -269,8 +286,9 @@ contains
       ydot = 0
       ydot(1:5) = [y(3), y(4), q%udd, q%vdd, q%height_rate]
       delta = 1e-5_wp/q%speed
-      call water_point(self, y + delta*ydot, q_plus, status)
-      if (status%ok()) call water_point(self, y - delta*ydot, q_minus, status)
+      ! the widths alone: the area's rate along u is not needed there
+      call point_at(self, y + delta*ydot, q_plus, status, .false.)
+      if (status%ok()) call point_at(self, y - delta*ydot, q_minus, status, .false.)
       if (.not. status%ok()) return
       rates%width = (q_plus%width - q_minus%width)/(2*delta)
     end if

@@ -8,6 +8,9 @@
 !>   times as often (CVODE interpolates both from the same steps); errors and
 !>   their h^4 convergence on a smooth run (S-bend, f2 = f3 = 0), and the
 !>   errors at the thesis's output step on the demo slide;
+!> - the width's rate of a profile is the central difference of water_point's
+!>   widths, to the bit, also where the profile changes along u (the patch
+!>   slide): its two points skip only the area's rate along u;
 !> - C1: the reported d/du are the derivatives of the reported values, and
 !>   continuous across nodes;
 !> - the arc-length query agrees with the u query; outside the computed range
@@ -19,7 +22,7 @@ program test_water_field
   use geometry_curve, only: line_curve_t, constant_curve_t
   use geometry_cross_section, only: flume_section_t
   use geometry_tube, only: tube_surface_t, new_tube_surface
-  use io_input, only: input_text_t, load_input_file
+  use io_input, only: input_text_t, load_input_file, input_from_text
   use water_run, only: water_description_t, new_streamline
   use numerics_ode, only: ode_options_t
   use testing, only: check, finish_tests
@@ -35,18 +38,28 @@ program test_water_field
   use scenarios_water, only: build_water
   implicit none (type, external)
 
-  type(streamline_t), target :: sbend, smooth, demo, flume
-  real(wp) :: y_sbend(7), y_smooth(7), y_demo(7), y_flume(7)
+  character(len=*), parameter :: nl = new_line('a')
+  type(streamline_t), target :: sbend, smooth, demo, flume, patch
+  real(wp) :: y_sbend(7), y_smooth(7), y_demo(7), y_flume(7), y_patch(7)
   real(wp) :: err_coarse(9), err_fine(9), err_demo(9), ratio(9), jump, start
 
   call make_sbend(sbend, y_sbend, 0.138285_wp, 0.979822_wp)
   call make_sbend(smooth, y_smooth, 0.0_wp, 0.0_wp)
-  call make_demo(demo, y_demo)
+  call make_input(demo, y_demo, 'inputs/water/demo_slide.nml')
   call make_flume(flume, y_flume)
 
   call rates_against_differences(sbend, y_sbend, 'S-bend')
   call rates_against_differences(demo, y_demo, 'demo slide')
   call rates_against_differences(flume, y_flume, 'open flume')
+  call width_rate_exact(flume, y_flume, 'open flume')
+  ! the water of inputs/parts/patch.nml (a ride input) as a water run
+  call make_input(patch, y_patch, 'patch water', &
+    "&run scenario = 'water' /"//nl// &
+    "&surface kind = 'slide', geometry_file = 'inputs/parts/patch_slide.nml' /"//nl// &
+    "&water flow_rate = 0.004, start = 'edges', v_left0 = 1.9, v_right0 = 1.2415926535897932, "// &
+    "f1 = 0.0274748, f2 = 0.138285, f3 = 0.979822, correction = 'full' /"//nl)
+  call check(patch%channel%section_varies(), 'the patch slide''s profile changes along u')
+  call width_rate_exact(patch, y_patch, 'patch slide')
 
   ! accuracy against dense output
   call accuracy(smooth, y_smooth, 0.02_wp, 'smooth S-bend, h = 0.02 s', err_coarse, jump, start)
@@ -92,18 +105,25 @@ contains
     call check(st%ok(), 'S-bend start: '//st%text())
   end subroutine make_sbend
 
-  subroutine make_demo(model, y0)
+  !> The water of the input file `file`, or of `text` (named `file`).
+  subroutine make_input(model, y0, file, text)
     type(streamline_t), intent(out) :: model
     real(wp), intent(out) :: y0(7)
+    character(len=*), intent(in) :: file
+    character(len=*), intent(in), optional :: text
     type(input_text_t) :: input
     type(water_description_t) :: description
     type(status_t) :: st
-    call load_input_file('inputs/water/demo_slide.nml', input, st)
+    if (present(text)) then
+      call input_from_text(file, text, input, st)
+    else
+      call load_input_file(file, input, st)
+    end if
     if (st%ok()) call build_water(input, description, st)
     if (st%ok()) call new_streamline(description, model, y0, st)
-    call check(st%ok(), 'demo slide built: '//st%text())
+    call check(st%ok(), file//': water built: '//st%text())
     if (.not. st%ok()) call finish_tests('test_water_field')
-  end subroutine make_demo
+  end subroutine make_input
 
   subroutine make_flume(model, y0)
     type(streamline_t), intent(out) :: model
@@ -178,6 +198,42 @@ contains
     print '(a, i0, a, 5es9.1)', '  '//label//': ', checked, ' samples, rate errors / tolerance (K_M, K_w, '// &
       'width, edges, speed): ', err
   end subroutine rates_against_differences
+
+  !> At every 10th sample of a run (a profile, not a circle): the width's
+  !> rate that water_point_rates gives is (b(y + d y') - b(y - d y'))/(2 d)
+  !> of water_point's own widths, d = 1e-5/w (its step), to the bit.
+  subroutine width_rate_exact(model, y0, label)
+    type(streamline_t), intent(inout), target :: model
+    real(wp), intent(in) :: y0(7)
+    character(len=*), intent(in) :: label
+    type(water_series_t) :: s
+    type(ode_options_t) :: opt
+    type(status_t) :: st
+    type(water_point_t) :: q, qp, qm
+    type(water_rates_t) :: rates
+    real(wp) :: y(7), ydot(7), d
+    integer :: i, checked, differ
+    opt%rtol = 1e-8_wp; opt%atol = 1e-8_wp
+    call simulate_water(model, y0, opt, 100.0_wp, 0.02_wp, s, st, edges=.false.)
+    call check(st%ok() .and. s%outcome == OUTCOME_END, label//': run to the end '//st%text())
+    checked = 0; differ = 0
+    do i = 2, s%n - 1, 10
+      y = [s%u(i), s%v(i), s%du(i), s%dv(i), s%height(i), 0.0_wp, 0.0_wp]
+      call water_point(model, y, q, st)
+      if (st%ok()) call water_point_rates(model, y, q, rates, st)
+      ydot = [y(3), y(4), q%udd, q%vdd, q%height_rate, 0.0_wp, 0.0_wp]
+      d = 1e-5_wp/q%speed
+      if (st%ok()) call water_point(model, y + d*ydot, qp, st)
+      if (st%ok()) call water_point(model, y - d*ydot, qm, st)
+      call check(st%ok() .and. q%radius == 0, label//': a profile''s point, rates and neighbours '//st%text())
+      if (.not. st%ok()) return
+      if (rates%width /= (qp%width - qm%width)/(2*d)) differ = differ + 1
+      checked = checked + 1
+    end do
+    print '(a, i0, a, i0, a)', '  '//label//': width rate at ', checked, ' samples, ', differ, ' not to the bit'
+    call check(checked >= 20 .and. differ == 0, label//': the width''s rate is the difference of '// &
+               'water_point''s widths, to the bit')
+  end subroutine width_rate_exact
 
   !> max over components of |a - b| / (atol + rtol |b|) (<= 1 passes), tolerances
   !> of rates_against_differences
