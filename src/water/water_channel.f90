@@ -94,12 +94,15 @@ contains
     call self%slide%slice(u, order, slice, status)
   end subroutine channel_slice
 
+  !> p is intent(inout) only so that the point is not default-initialized
+  !> twice (here and in the slide's evaluate_in_slice, which writes it
+  !> whole): the profile's hot path.
   pure subroutine channel_evaluate_in_slice(self, slice, v, order, p, status)
     class(channel_t), intent(in) :: self
     type(slide_slice_t), intent(in) :: slice
     real(wp), intent(in) :: v
     integer, intent(in) :: order
-    type(surface_point_t), intent(out) :: p
+    type(surface_point_t), intent(inout) :: p
     type(status_t), intent(out) :: status
     call self%slide%evaluate_in_slice(slice, v, order, p, status)
   end subroutine channel_evaluate_in_slice

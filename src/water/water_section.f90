@@ -94,14 +94,19 @@ contains
     integer :: j, k
 
     area = 0; width = 0; v_left = v0; v_right = v0
-    call channel%centerline(u, c, status)
-    if (.not. status%ok()) return
     ! every point below is at this u: the centerline and its frame once
     call channel%slice(u, 1, slice, status)
     if (.not. status%ok()) return
+    if (slice%kept) then   ! a swept slide's slice holds the centerline's c_u
+      t = slice%c%d(:, 1)
+    else
+      call channel%centerline(u, c, status)
+      if (.not. status%ok()) return
+      t = c(:, 1)
+    end if
     call channel%evaluate_in_slice(slice, v0, 1, p0, status)
     if (.not. status%ok()) return
-    t = c(:, 1)/norm2(c(:, 1))
+    t = t/norm2(t)
     n = cross(p0%ru, p0%rv)
     n = n - t*dot_product(n, t)
     n = n/norm2(n)
