@@ -152,16 +152,20 @@ contains
 
   !> The window W over [e(1), e(4)] at x and its derivatives w(0:3);
   !> `inside` false outside (open) [e(1), e(4)], where W and all its
-  !> derivatives are 0.
-  pure subroutine window(e, x, w, inside)
+  !> derivatives are 0; `flat` true on [e(2), e(3)], where W is 1 and its
+  !> derivatives 0 (the rising S is 1 there, the falling one 0: the same
+  !> numbers without evaluating them).
+  pure subroutine window(e, x, w, inside, flat)
     real(wp), intent(in) :: e(4), x
     real(wp), intent(out) :: w(0:3)
-    logical, intent(out) :: inside
+    logical, intent(out) :: inside, flat
     real(wp) :: rise(0:3), fall(0:3), p
     integer :: m
     w = 0
     inside = x > e(1) .and. x < e(4)
-    if (.not. inside) return
+    flat = inside .and. x >= e(2) .and. x <= e(3)
+    if (flat) w(0) = 1
+    if (flat .or. .not. inside) return
     call smoothstep((x - e(1))/(e(2) - e(1)), rise, p)
     call smoothstep((x - e(3))/(e(4) - e(3)), fall, p)
     do m = 0, 3
@@ -169,47 +173,82 @@ contains
     end do
   end subroutine window
 
-  !> f and its partials f(i, j) = d^(i+j) f / du^i dv^j (i + j <= 3) at
-  !> (u, v), the sum over the patches (0 outside them).
-  pure subroutine patch_offset_at(self, u, v, f)
+  !> f and its partials f(i, j) = d^(i+j) f / du^i dv^j (i + j <= order,
+  !> 0..3; the others 0) at (u, v), the sum over the patches (0 outside
+  !> them); on_patch: whether (u, v) lies inside some patch's windows (else
+  !> f is 0 without evaluating anything). Each partial has the same bits
+  !> whatever the order asked.
+  pure subroutine patch_offset_at(self, u, v, order, f, on_patch)
     class(patch_section_t), intent(in) :: self
     real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
     real(wp), intent(out) :: f(0:3, 0:3)
-    real(wp) :: wu(0:3), wv(0:3), d(0:3, 0:3), vv, v_min, v_max
-    type(spline_surface_eval_t) :: e
-    type(status_t) :: st
-    integer :: k, i, j, a, b
-    logical :: inside
+    logical, intent(out) :: on_patch
+    real(wp) :: vv, v_min, v_max
+    integer :: k
+    logical :: wrapped, inside
     f = 0
+    on_patch = .false.
     vv = v
-    if (self%base%periodic()) then
-      call self%base%v_range(v_min, v_max)
-      vv = v_min + modulo(v - v_min, v_max - v_min)
-    end if
+    wrapped = .false.
     do k = 1, size(self%patches)
-      associate (pk => self%patches(k))
-        call window(pk%u_ends, u, wu, inside)
-        if (.not. inside) cycle
-        call window(pk%v_ends, vv, wv, inside)
-        if (.not. inside) cycle
-        call pk%spline%evaluate(u, vv, e, st)   ! inside its domain
-        d = 0
-        d(0, 0) = e%f(1)
-        d(1, 0) = e%fu(1); d(0, 1) = e%fv(1)
-        d(2, 0) = e%fuu(1); d(1, 1) = e%fuv(1); d(0, 2) = e%fvv(1)
-        d(3, 0) = e%fuuu(1); d(2, 1) = e%fuuv(1); d(1, 2) = e%fuvv(1); d(0, 3) = e%fvvv(1)
-        do i = 0, 3
-          do j = 0, 3 - i
-            do a = 0, i
-              do b = 0, j
-                f(i, j) = f(i, j) + binom(a, i)*binom(b, j)*wu(a)*wv(b)*d(i - a, j - b)
-              end do
-            end do
-          end do
-        end do
-      end associate
+      if (.not. (u > self%patches(k)%u_ends(1) .and. u < self%patches(k)%u_ends(4))) cycle
+      if (.not. wrapped) then   ! v into the base's range, once for all patches
+        if (self%base%periodic()) then
+          call self%base%v_range(v_min, v_max)
+          vv = v_min + modulo(v - v_min, v_max - v_min)
+        end if
+        wrapped = .true.
+      end if
+      call add_patch(self%patches(k), u, vv, order, f, inside)
+      on_patch = on_patch .or. inside
     end do
   end subroutine patch_offset_at
+
+  !> f += patch's W(u) W(v) d(u, v) and its partials to `order` at (u, vv),
+  !> vv in the base's range; inside: (u, vv) inside both windows (else f
+  !> is left as it was). Where both windows are flat (W = 1, derivatives 0)
+  !> Leibniz's sum is the spline's partial alone (its other terms are
+  !> zeros: the same number).
+  pure subroutine add_patch(patch, u, vv, order, f, inside)
+    type(patch_offset_t), intent(in) :: patch
+    real(wp), intent(in) :: u, vv
+    integer, intent(in) :: order
+    real(wp), intent(inout) :: f(0:3, 0:3)
+    logical, intent(out) :: inside
+    real(wp) :: wu(0:3), wv(0:3), d(0:3, 0:3)
+    type(spline_surface_eval_t) :: e
+    type(status_t) :: st
+    integer :: i, j, a, b
+    logical :: flat_u, flat_v
+    call window(patch%u_ends, u, wu, inside, flat_u)
+    if (.not. inside) return
+    call window(patch%v_ends, vv, wv, inside, flat_v)
+    if (.not. inside) return
+    call patch%spline%evaluate(u, vv, e, st, order)   ! inside its domain
+    d = 0
+    d(0, 0) = e%f(1)
+    d(1, 0) = e%fu(1); d(0, 1) = e%fv(1)
+    d(2, 0) = e%fuu(1); d(1, 1) = e%fuv(1); d(0, 2) = e%fvv(1)
+    d(3, 0) = e%fuuu(1); d(2, 1) = e%fuuv(1); d(1, 2) = e%fuvv(1); d(0, 3) = e%fvvv(1)
+    if (flat_u .and. flat_v) then
+      do i = 0, order
+        do j = 0, order - i
+          f(i, j) = f(i, j) + d(i, j)
+        end do
+      end do
+      return
+    end if
+    do i = 0, order
+      do j = 0, order - i
+        do a = 0, i
+          do b = 0, j
+            f(i, j) = f(i, j) + binom(a, i)*binom(b, j)*wu(a)*wv(b)*d(i - a, j - b)
+          end do
+        end do
+      end do
+    end do
+  end subroutine add_patch
 
   pure subroutine patch_evaluate(self, u, v, order, p, status)
     class(patch_section_t), intent(in) :: self
@@ -219,9 +258,11 @@ contains
     type(status_t), intent(out) :: status
     real(wp) :: f(0:3, 0:3), n(2, 0:3), c, s
     integer :: i, j, b
+    logical :: on_patch
     call self%base%evaluate(u, v, order, p, status)
     if (.not. status%ok()) return
-    call self%offset_at(u, v, f)
+    call self%offset_at(u, v, order, f, on_patch)
+    if (.not. on_patch) return
     if (all(f == 0)) return
     c = cos(v); s = sin(v)
     ! n = -[cos v, sin v] and its v-derivatives

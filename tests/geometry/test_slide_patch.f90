@@ -17,6 +17,10 @@
 !>   (each side 1e-7 m off carried across by its next derivative), exact and
 !>   fitted; every partial matches central differences of the one below
 !>   (1e-6 relative);
+!> - every partial of the patch's section has the same bits whatever order
+!>   of derivatives is asked (0..3): outside the patch, on its windows'
+!>   ramps and where both windows are flat (the shortcuts of
+!>   patch_offset_at change no number);
 !> - impossible patches are refused with a message naming why, and the
 !>   global check of the tube sees a patch's bulge (a U-turn whose patch
 !>   reaches the straight before it).
@@ -37,6 +41,7 @@ program test_slide_patch
   use geometry_patch_section, only: patch_grid_t, patch_section_t
   use geometry_drop_profile, only: smoothstep
   use geometry_tube, only: tube_surface_t
+  use geometry_cross_section, only: section_point_t
   use geometry_curve, only: curve_point_t
   use geometry_curve_frame, only: curve_frame_t
   use numerics_ode, only: ode_integrator_t, ode_options_t
@@ -55,6 +60,7 @@ program test_slide_patch
   call quartic_patch()
   call patch_continuity(.true.)
   call patch_continuity(.false.)
+  call patch_orders_agree()
   call patch_refusals()
   call patch_normal_force()
   call finish_tests('test_slide_patch')
@@ -419,6 +425,48 @@ contains
     real(wp) :: e(3)
     e = x/norm2(x)
   end function unit
+
+  !> The section of the quartic patch (angles 30..150 deg, windows' ramps
+  !> 30-50 and 130-150 deg, stations 0-1 and 9-10 m) on a grid of u over
+  !> the whole slide and v around it: the partials asked to order k are
+  !> those asked to order 3, bit for bit, i + j <= k.
+  subroutine patch_orders_agree()
+    type(tube_surface_t) :: slide
+    type(section_point_t) :: p(0:3)
+    type(status_t) :: st
+    real(wp) :: u0, u1, v0, v1, u, v
+    integer :: i, j, k, m, n, mismatches, on_patch, on_ramp
+    call build_slide(patch_slide(.true., 'patch', 1.0_wp), slide, st)
+    call check(st%ok(), 'slide with the quartic patch built: '//st%text())
+    if (.not. st%ok()) return
+    call slide%domain(u0, u1, v0, v1)
+    mismatches = 0; on_patch = 0; on_ramp = 0
+    do i = 0, 400
+      u = u0 + (u1 - u0)*i/400
+      do j = 0, 144
+        v = 2*pi*j/144 + 0.001_wp
+        do k = 0, 3
+          call slide%section%evaluate(u, v, k, p(k), st)
+          call check(st%ok(), 'the patch''s section evaluated: '//st%text())
+        end do
+        do k = 0, 2
+          do m = 0, k
+            do n = 0, k - m
+              if (any(p(k)%s(:, m, n) /= p(3)%s(:, m, n))) mismatches = mismatches + 1
+            end do
+          end do
+        end do
+        if (any(p(3)%s(:, 1, 0) /= 0)) then
+          on_patch = on_patch + 1
+          if (any(abs(v*180/pi - [40.0_wp, 140.0_wp]) < 10)) on_ramp = on_ramp + 1
+        end if
+      end do
+    end do
+    print '(a, i0, a, i0, a)', '  orders agree: ', on_patch, ' points on the patch, ', on_ramp, ' on a ramp in v'
+    call check(on_patch > 1000 .and. on_ramp > 100, 'the grid covers the patch and its windows'' ramps')
+    call check(mismatches == 0, 'the patch''s partials are the same bits at every order asked ('// &
+               real_text(real(mismatches, wp))//' differ)')
+  end subroutine patch_orders_agree
 
   function real_text(x) result(text)
     real(wp), intent(in) :: x
