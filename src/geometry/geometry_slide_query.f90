@@ -186,7 +186,9 @@ contains
   !> bottom v = pi/2: the angle of the Darboux normal from the normal at
   !> (u, pi/2) about the section's tangent direction (+ towards +v), and the
   !> length of the v-curve between them (5-point Gauss-Legendre; exact for a
-  !> circle). Any slide; a slide with a closed form overrides it.
+  !> circle). Any slide; a slide with a closed form overrides it. All the
+  !> points lie at u: two slices (orders 2 and 1) hold what they share, the
+  !> same points as evaluate gives.
   subroutine general_wall_position(self, u, v, angle, distance, status)
     class(slide_surface_t), intent(in) :: self
     real(wp), intent(in) :: u, v
@@ -198,14 +200,17 @@ contains
                                    0.4786286704993665_wp, 0.2369268850561891_wp]
     type(surface_point_t) :: p, b
     type(darboux_frame_t) :: fp, fb
+    type(slide_slice_t) :: slice
     real(wp) :: mid, half, n(3)
     integer :: i
     angle = 0
     distance = 0
-    call self%evaluate(u, v, 2, p, status)
+    call self%slice(u, 2, slice, status)
+    if (status%ok()) call self%evaluate_in_slice(slice, v, 2, p, status)
     if (status%ok()) call darboux_frame(p, 1.0_wp, 1.0_wp, 0.0_wp, fp, status)
-    if (status%ok()) call self%evaluate(u, slide_bottom_v, 2, b, status)
+    if (status%ok()) call self%evaluate_in_slice(slice, slide_bottom_v, 2, b, status)
     if (status%ok()) call darboux_frame(b, 1.0_wp, 1.0_wp, 0.0_wp, fb, status)
+    if (status%ok()) call self%slice(u, 1, slice, status)
     if (.not. status%ok()) return
     ! the angle between the bottom's normal and the point's, signed by the
     ! turn about the bottom's x (along r_u): + towards +v
@@ -214,7 +219,7 @@ contains
     mid = 0.5_wp*(v + slide_bottom_v)
     half = 0.5_wp*(v - slide_bottom_v)
     do i = 1, 5
-      call self%evaluate(u, mid + half*x(i), 1, p, status)
+      call self%evaluate_in_slice(slice, mid + half*x(i), 1, p, status)
       if (.not. status%ok()) return
       distance = distance + w(i)*half*norm2(p%rv)
     end do
