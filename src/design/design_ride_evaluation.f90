@@ -155,11 +155,19 @@ contains
   pure function limit_report_unit(quantity) result(unit)
     character(len=*), intent(in) :: quantity
     character(len=:), allocatable :: unit
+    unit = dimension_entry(quantity, report_units)
+  end function limit_report_unit
+
+  !> The entry of `table` (one per dimension) for limit `quantity`'s
+  !> dimension; '' for an unknown quantity.
+  pure function dimension_entry(quantity, table) result(text)
+    character(len=*), intent(in) :: quantity, table(:)
+    character(len=:), allocatable :: text
     integer :: k
     k = quantity_index(quantity)
-    unit = ''
-    if (k > 0) unit = trim(report_units(quantity_dimension(k)))
-  end function limit_report_unit
+    text = ''
+    if (k > 0) text = trim(table(quantity_dimension(k)))
+  end function dimension_entry
 
   !> A limit's bounds as the reports print them: '>= 2 m/s and <= 14 m/s'.
   pure function limit_bounds_text(limit) result(text)
@@ -195,10 +203,7 @@ contains
   pure function limit_units_allowed(quantity) result(text)
     character(len=*), intent(in) :: quantity
     character(len=:), allocatable :: text
-    integer :: k
-    k = quantity_index(quantity)
-    text = ''
-    if (k > 0) text = trim(units_allowed(quantity_dimension(k)))
+    text = dimension_entry(quantity, units_allowed)
   end function limit_units_allowed
 
   !> Factor from `unit` to the report unit of dimension `dim`; 0 if the unit

@@ -27,7 +27,7 @@ module design_rider_identification
   use base_kinds, only: wp
   use base_sorting, only: unique_sorted
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
-  use base_text, only: format_short, format_integer
+  use base_text, only: format_short
   use geometry_slide_query, only: slide_surface_t
   use water_field, only: water_field_t
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, rider_friction_kind, &
@@ -36,6 +36,7 @@ module design_rider_identification
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   use numerics_least_squares, only: least_squares_problem_t, least_squares_options_t, &
     least_squares_result_t, solve_least_squares
+  use design_measurements, only: check_measured_places
   use design_cost, only: cost_group_t, new_cost_group, position_factor, speed_factor, group_part, &
     group_rmse, group_mae, group_max_abs, append_residuals
   implicit none (type, external)
@@ -133,24 +134,8 @@ contains
                         'one speed per segment')
         return
       end if
-      if (n + m == 0) then
-        call set_status(status, STATUS_INVALID_INPUT, 'rider measurements: no stations and no segments')
-        return
-      end if
-      do i = 2, n
-        if (.not. d%station_arc_length(i) > d%station_arc_length(i - 1)) then
-          call set_status(status, STATUS_INVALID_INPUT, 'rider measurements: station '//format_integer(i)// &
-            ' at '//format_short(d%station_arc_length(i))//' m does not lie after the one before it')
-          return
-        end if
-      end do
-      do i = 1, m
-        if (.not. d%segment_end(i) > d%segment_start(i)) then
-          call set_status(status, STATUS_INVALID_INPUT, 'rider measurements: segment '//format_integer(i)// &
-            ' must end after its start')
-          return
-        end if
-      end do
+      call check_measured_places('rider', 'station', d%station_arc_length, d%segment_start, d%segment_end, status)
+      if (.not. status%ok()) return
       s = unique_sorted([d%station_arc_length, d%segment_start, d%segment_end])
       setup%section_station = [(findloc(s, d%station_arc_length(i), dim=1), i=1, n)]
       setup%start_station = [(findloc(s, d%segment_start(i), dim=1), i=1, m)]

@@ -13,6 +13,7 @@
 !> pressed and within the lever-arm limit, whatever the cost's statistic.
 module design_robust_cost
   use base_kinds, only: wp
+  use base_sorting, only: sort_ascending
   use design_cuboid_ride, only: cuboid_t
   implicit none (type, external)
   private
@@ -50,20 +51,11 @@ contains
   !> h = (n - 1) q + 1, x_(floor h) + (h - floor h)(x_(floor h + 1) - x_(floor h)).
   pure real(wp) function quantile(x, q) result(value)
     real(wp), intent(in) :: x(:), q
-    real(wp) :: sorted(size(x)), h, key
-    integer :: i, j, low, n
+    real(wp) :: sorted(size(x)), h
+    integer :: low, n
     n = size(x)
     sorted = x
-    do i = 2, n   ! insertion sort: populations are small, evaluations rare
-      key = sorted(i)
-      j = i - 1
-      do while (j >= 1)
-        if (sorted(j) <= key) exit
-        sorted(j + 1) = sorted(j)
-        j = j - 1
-      end do
-      sorted(j + 1) = key
-    end do
+    call sort_ascending(sorted)   ! insertion sort: populations are small, evaluations rare
     h = (n - 1)*q + 1
     low = min(n, max(1, floor(h)))
     if (low == n) then

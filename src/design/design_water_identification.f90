@@ -33,13 +33,14 @@ module design_water_identification
   use base_kinds, only: wp
   use base_sorting, only: unique_sorted
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
-  use base_text, only: format_short, format_integer
+  use base_text, only: format_short
   use numerics_ode, only: ode_options_t
   use numerics_least_squares, only: least_squares_problem_t, least_squares_options_t, &
     least_squares_result_t, solve_least_squares
   use water_streamline, only: streamline_t
   use water_flow, only: water_series_t, simulate_water
   use water_run, only: water_description_t, new_streamline
+  use design_measurements, only: check_measured_places
   use design_cost, only: cost_group_t, new_cost_group, position_factor, speed_factor, group_part, &
     group_rmse, group_mae, group_max_abs, append_residuals
   implicit none (type, external)
@@ -147,24 +148,8 @@ contains
         call set_status(status, STATUS_INVALID_INPUT, 'water measurements: one value per section and segment')
         return
       end if
-      if (n + m == 0) then
-        call set_status(status, STATUS_INVALID_INPUT, 'water measurements: no sections and no segments')
-        return
-      end if
-      do i = 2, n
-        if (.not. d%section_arc_length(i) > d%section_arc_length(i - 1)) then
-          call set_status(status, STATUS_INVALID_INPUT, 'water measurements: section '//format_integer(i)// &
-            ' at '//format_short(d%section_arc_length(i))//' m does not lie after the one before it')
-          return
-        end if
-      end do
-      do i = 1, m
-        if (.not. d%segment_end(i) > d%segment_start(i)) then
-          call set_status(status, STATUS_INVALID_INPUT, 'water measurements: segment '//format_integer(i)// &
-            ' must end after its start')
-          return
-        end if
-      end do
+      call check_measured_places('water', 'section', d%section_arc_length, d%segment_start, d%segment_end, status)
+      if (.not. status%ok()) return
       ! every place a run stops at, in order along the slide: the model's stations
       places = [d%section_arc_length, (d%segment_start + d%segment_end)/2, d%segment_start, d%segment_end]
       s = unique_sorted(places)

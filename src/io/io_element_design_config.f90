@@ -12,7 +12,7 @@ module io_element_design_config
     PARAMETER_SLOPE, PARAMETER_RADIUS, PARAMETER_ANGLE
   use design_geometry_optimization, only: optimization_setup_t
   use design_catalogue, only: catalogue_t
-  use io_input, only: input_text_t, group_reader_t, open_group, group_present, format_real
+  use io_input, only: input_text_t, group_reader_t, open_group, group_present, format_real, indexed_name
   use io_slide_geometry_config, only: read_slide_elements
   implicit none (type, external)
   private
@@ -87,37 +87,39 @@ contains
         if (.not. status%ok()) return
         p = d%parameter(i)
         if (abs(element_real(i) - d%element(i)) > 0 .or. d%element(i) > size(elements)) then
-          call r%invalid(part('element'), format_real(element_real(i)), 'must be the number of an element of '// &
+          call r%invalid(indexed_name('element', i), format_real(element_real(i)), 'must be the number of an element of '// &
                          '&slide_elements, 1 to n_elements = '//format_integer(size(elements)), status)
           cycle
         end if
         if (.not. uses(elements(d%element(i))%kind, p)) then
-          call r%invalid(part('parameter'), ''''//trim(parameter(i))//'''', 'element '// &
+          call r%invalid(indexed_name('parameter', i), ''''//trim(parameter(i))//'''', 'element '// &
                          format_integer(d%element(i))//' is a '//trim(elements(d%element(i))%kind)//', which '// &
                          'has no '//trim(parameter_names(p))//' to vary ('//kinds_using(p)//')', status)
           cycle
         end if
         if (.not. lower(i) < upper(i)) then
-          call r%invalid(part('upper'), format_real(upper(i)), 'must exceed lower('//format_integer(i)//') = '// &
+          call r%invalid(indexed_name('upper', i), format_real(upper(i)), 'must exceed '//indexed_name('lower', i)//' = '// &
                          format_real(lower(i)), status)
           cycle
         end if
         if (.not. (lower(i) > lowest(p) .and. (upper(i) < highest(p) .or. &
                                                 (.not. open_high(p) .and. upper(i) == highest(p))))) then
-          call r%invalid(part('lower')//', '//part('upper'), format_real(lower(i))//', '//format_real(upper(i)), &
+          call r%invalid(indexed_name('lower', i)//', '//indexed_name('upper', i), &
+                         format_real(lower(i))//', '//format_real(upper(i)), &
                          'the '//trim(parameter_names(p))//' must lie in '//range_text(p), status)
           cycle
         end if
         x = parameter_value(elements(d%element(i)), p)
         if (x < lower(i) .or. x > upper(i)) then
-          call r%invalid(part('lower')//', '//part('upper'), format_real(lower(i))//', '//format_real(upper(i)), &
+          call r%invalid(indexed_name('lower', i)//', '//indexed_name('upper', i), &
+                         format_real(lower(i))//', '//format_real(upper(i)), &
                          'must hold the start value '//format_short(x)//' '//trim(parameter_units(p))// &
                          ' of element '//format_integer(d%element(i))//' (&slide_elements)', status)
           cycle
         end if
         do k = 1, i - 1
           if (d%element(k) == d%element(i) .and. d%parameter(k) == p) then
-            call r%invalid(part('parameter'), ''''//trim(parameter(i))//'''', 'the '//trim(parameter_names(p))// &
+            call r%invalid(indexed_name('parameter', i), ''''//trim(parameter(i))//'''', 'the '//trim(parameter_names(p))// &
                            ' of element '//format_integer(d%element(i))//' is already design variable '// &
                            format_integer(k), status)
             exit
@@ -137,12 +139,6 @@ contains
     if (with_catalogue) call read_catalogue(input, setup, catalogue, status)
 
   contains
-
-    pure function part(name) result(text)
-      character(len=*), intent(in) :: name
-      character(len=:), allocatable :: text
-      text = name//'('//format_integer(i)//')'
-    end function part
 
     subroutine refuse_group(name)
       character(len=*), intent(in) :: name
@@ -231,7 +227,7 @@ contains
           if (.not. status%ok()) return
           do k = 2, size(list)
             if (.not. list(k) > list(k - 1)) then
-              call r%invalid(name//'('//format_integer(k)//')', format_real(list(k)), 'must exceed '//name// &
+              call r%invalid(indexed_name(name, k), format_real(list(k)), 'must exceed '//name// &
                              '('//format_integer(k - 1)//') = '//format_real(list(k - 1))//' (increasing, '// &
                              'each once)', status)
               return
@@ -239,7 +235,7 @@ contains
           end do
           do k = 1, size(list)
             if (.not. any(d%parameter == p .and. d%lower <= list(k) .and. list(k) <= d%upper)) then
-              call r%invalid(name//'('//format_integer(k)//')', format_real(list(k)), 'lies outside the bounds '// &
+              call r%invalid(indexed_name(name, k), format_real(list(k)), 'lies outside the bounds '// &
                              'of every '//trim(parameter_names(p))//' variable ('//bounds_of(p)//'): an unused '// &
                              'part; leave it out or widen the bounds (&design_elements lower, upper)', status)
               return

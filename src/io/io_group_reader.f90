@@ -23,7 +23,7 @@ module io_group_reader
   use io_input_bounds, only: bounds_t, in_range, above
   implicit none (type, external)
   private
-  public :: group_reader_t, open_group, invalid, where_given
+  public :: group_reader_t, open_group, invalid, where_given, indexed_name
   ! for the submodule io_group_reader_values (gfortran drops a private
   ! procedure that only a submodule calls)
   public :: item_where, shown_values, find_declared, declared_words
@@ -517,4 +517,12 @@ contains
     if (.not. status%ok()) return
     call get_integer(self, name, i, nint(d%low), nint(d%high), status)
   end subroutine get_declared_integer
+
+  !> 'name(i)': element i of a list variable, as messages name it.
+  pure function indexed_name(name, i) result(text)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    text = name//'('//format_integer(i)//')'
+  end function indexed_name
 end module io_group_reader

@@ -131,7 +131,7 @@ contains
     case (0)
       text = name
     case (1)
-      text = name//'('//format_integer(p)//')'
+      text = indexed_name(name, p)
     case default
       text = name//'('//format_integer(mod(p - 1, dims(1)) + 1)//', '//format_integer((p - 1)/dims(1) + 1)//')'
     end select

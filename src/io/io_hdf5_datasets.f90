@@ -5,11 +5,11 @@
 submodule (io_hdf5) io_hdf5_datasets
   use, intrinsic :: iso_c_binding, only: c_char, c_ptr, c_loc
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use hdf5, only: h5screate_f, h5screate_simple_f, h5sclose_f, H5S_SCALAR_F, h5tclose_f, &
+  use hdf5, only: h5sclose_f, h5tclose_f, &
                   H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, h5dcreate_f, h5dwrite_f, h5dread_f, h5dclose_f, &
                   h5dopen_f, h5pcreate_f, h5pset_buffer_f, h5pclose_f, H5P_DATASET_XFER_F
   use io_hdf5_objects, only: ensure_groups, utf8_string_type, c_string, write_string_attribute, &
-                             write_string_attribute_on, write_attribute
+                             write_string_attribute_on, write_attribute, create_dataspace
   implicit none (type, external)
 
   !> Conversion buffer of a text dataset's write: one variable-length string
@@ -234,13 +234,7 @@ contains
     if (.not. status%ok() .or. self%file_id < 0) return
     if (present(finite)) call note_finite(self, name, finite)
     call ensure_groups(self%file_id, name, hdferr)
-    if (hdferr == 0) then
-      if (size(shape) == 0) then
-        call h5screate_f(H5S_SCALAR_F, space_id, hdferr)
-      else
-        call h5screate_simple_f(size(shape), shape, space_id, hdferr)
-      end if
-    end if
+    if (hdferr == 0) call create_dataspace(shape, space_id, hdferr)
     if (hdferr == 0) then
       call h5dcreate_f(self%file_id, name, type_id, space_id, dataset_id, hdferr)
       if (hdferr == 0) then

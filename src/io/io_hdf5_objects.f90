@@ -11,7 +11,7 @@ module io_hdf5_objects
   implicit none (type, external)
   private
   public :: ensure_groups, utf8_string_type, c_string, write_string_attribute, write_string_attribute_on, &
-    write_attribute, link_name_refusal
+    write_attribute, link_name_refusal, create_dataspace
 
 contains
 
@@ -131,11 +131,7 @@ contains
     call h5aexists_f(object_id, name, exists, hdferr)
     if (hdferr == 0 .and. exists) call h5adelete_f(object_id, name, hdferr)
     if (hdferr == 0) then
-      if (size(shape) == 0) then
-        call h5screate_f(H5S_SCALAR_F, space_id, hdferr)
-      else
-        call h5screate_simple_f(size(shape), shape, space_id, hdferr)
-      end if
+      call create_dataspace(shape, space_id, hdferr)
       if (hdferr == 0) then
         call h5acreate_f(object_id, name, type_id, space_id, attribute_id, hdferr)
         if (hdferr == 0) then
@@ -147,4 +143,16 @@ contains
     end if
     call h5oclose_f(object_id, err)
   end subroutine write_attribute
+
+  !> The dataspace of a dataset or attribute of `shape`: a scalar for no extents.
+  subroutine create_dataspace(shape, space_id, hdferr)
+    integer(hsize_t), intent(in) :: shape(:)
+    integer(hid_t), intent(out) :: space_id
+    integer, intent(out) :: hdferr
+    if (size(shape) == 0) then
+      call h5screate_f(H5S_SCALAR_F, space_id, hdferr)
+    else
+      call h5screate_simple_f(size(shape), shape, space_id, hdferr)
+    end if
+  end subroutine create_dataspace
 end module io_hdf5_objects

@@ -38,11 +38,8 @@ contains
     character(len=*), intent(in) :: group, variable, unit
     real(wp), intent(in) :: value
     type(status_t), intent(inout) :: status
-    type(bounds_t) :: b
-    if (.not. status%ok()) return
-    b = above(0.0_wp, huge(1.0_wp), unit)
-    if (.not. b%allows(value)) &
-      call invalid(input, group, variable, format_real(value), 'must be a finite number > 0 ('//unit//')', status)
+    call check_bounds(input, group, variable, value, above(0.0_wp, huge(1.0_wp), unit), &
+                      'must be a finite number > 0 ('//unit//')', status)
   end subroutine check_positive
 
   subroutine check_nonnegative(input, group, variable, value, unit, status)
@@ -50,11 +47,8 @@ contains
     character(len=*), intent(in) :: group, variable, unit
     real(wp), intent(in) :: value
     type(status_t), intent(inout) :: status
-    type(bounds_t) :: b
-    if (.not. status%ok()) return
-    b = in_range(0.0_wp, huge(1.0_wp), unit)
-    if (.not. b%allows(value)) &
-      call invalid(input, group, variable, format_real(value), 'must be a finite number >= 0 ('//unit//')', status)
+    call check_bounds(input, group, variable, value, in_range(0.0_wp, huge(1.0_wp), unit), &
+                      'must be a finite number >= 0 ('//unit//')', status)
   end subroutine check_nonnegative
 
   subroutine check_range(input, group, variable, value, low, high, unit, status)
@@ -63,10 +57,20 @@ contains
     real(wp), intent(in) :: value, low, high
     type(status_t), intent(inout) :: status
     type(bounds_t) :: b
-    if (.not. status%ok()) return
     b = in_range(low, high, unit)
-    if (.not. b%allows(value)) call invalid(input, group, variable, format_real(value), b%text(), status)
+    call check_bounds(input, group, variable, value, b, b%text(), status)
   end subroutine check_range
+
+  !> value within `b`, else the reader's message with `allowed`.
+  subroutine check_bounds(input, group, variable, value, b, allowed, status)
+    type(input_text_t), intent(in) :: input
+    character(len=*), intent(in) :: group, variable, allowed
+    real(wp), intent(in) :: value
+    type(bounds_t), intent(in) :: b
+    type(status_t), intent(inout) :: status
+    if (.not. status%ok()) return
+    if (.not. b%allows(value)) call invalid(input, group, variable, format_real(value), allowed, status)
+  end subroutine check_bounds
 
   !> A keyword among `choices` (compared in lower case, trailing blanks ignored).
   subroutine check_choice(input, group, variable, value, choices, status)

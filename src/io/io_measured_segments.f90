@@ -11,7 +11,7 @@ module io_measured_segments
   use base_kinds, only: wp
   use base_text, only: format_integer
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
-  use io_input, only: input_text_t, group_reader_t, bounds_t, format_real
+  use io_input, only: input_text_t, group_reader_t, bounds_t, format_real, indexed_name
   use io_csv, only: read_csv_table
   implicit none (type, external)
   private
@@ -173,7 +173,7 @@ contains
                       ' is not allowed: '//allowed//' (the file named by '//r%where(file_variable)//': &'// &
                       r%group//' '//file_variable//')')
     else
-      call r%invalid(variable//'('//format_integer(k)//')', value, allowed, status)
+      call r%invalid(indexed_name(variable, k), value, allowed, status)
     end if
   end subroutine refuse_measured
 

@@ -26,7 +26,7 @@ module io_optimization_population
   use design_robust_cost, only: ride_member_t, COST_SUM, COST_WORST, COST_QUANTILE
   use design_geometry_optimization, only: optimization_setup_t
   use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, format_real, group_present
-  use io_sweep_config, only: sweep_config_t, read_sweep_config
+  use io_sweep_config, only: sweep_config_t, read_sweep_config, open_sweep_group, swept_given_name
   implicit none (type, external)
   private
   public :: read_optimization_population
@@ -43,7 +43,6 @@ contains
     type(sweep_config_t) :: sweep
     type(bounds_t) :: angle_bounds
     character(len=10) :: cost
-    character(len=24) :: ranges(N_SWEPT - 1)
     real(wp) :: base(N_SWEPT)
     real(wp), allocatable :: angles(:)
     logical :: population
@@ -75,19 +74,13 @@ contains
     base(V_SPEED) = setup%start_speed
     call read_sweep_config(input, base, sweep, status)
     if (.not. status%ok()) return
-    j = 0
-    do k = 1, N_SWEPT
-      if (k == V_SEX) cycle
-      j = j + 1
-      ranges(j) = trim(swept_names(k))//'_range'
-    end do
-    call open_group(input, 'sweep', r, status, also=ranges)
+    call open_sweep_group(input, r, status)
     if (.not. status%ok()) return
     do k = 1, N_SWEPT
       if (.not. sweep%swept(k)) cycle
       if (any(k == [V_SEX, V_MU, V_U0, V_FLOW_RATE, V_F1, V_F2, V_F3])) then
-        call r%invalid(trim(swept_names(k)), r%written(given_name(k)), 'not a variable of the optimiser''s '// &
-                       'body, a dry frictionless cuboid from the first section (scenario optimize: sweep mass, '// &
+        call r%invalid(trim(swept_names(k)), r%written(swept_given_name(r, k)), 'not a variable of the '// &
+                       'optimiser''s body, a dry frictionless cuboid from the first section (scenario optimize: sweep mass, '// &
                        'height, v0, heading0_deg or speed0)', status)
         return
       end if
@@ -107,7 +100,7 @@ contains
       call o%bounds('start_angles_deg', angle_bounds, status)
       do i = 1, n_rows
         if (status%ok() .and. .not. angle_bounds%allows(sweep%values(V_HEADING, i))) &
-          call r%invalid('heading0_deg', r%written(given_name(V_HEADING)), 'the optimiser''s start angles, '// &
+          call r%invalid('heading0_deg', r%written(swept_given_name(r, V_HEADING)), 'the optimiser''s start angles, '// &
                          'as start_angles_deg: '//angle_bounds%text(), status)
       end do
       if (.not. status%ok()) return
@@ -150,12 +143,5 @@ contains
       m%speed = v(V_SPEED)
       m%v = v(V_V0)
     end function member
-
-    function given_name(k) result(name)
-      integer, intent(in) :: k
-      character(len=:), allocatable :: name
-      name = trim(swept_names(k))
-      if (k /= V_SEX .and. r%has(name//'_range')) name = name//'_range'
-    end function given_name
   end subroutine read_optimization_population
 end module io_optimization_population

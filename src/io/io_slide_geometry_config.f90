@@ -19,7 +19,8 @@ module io_slide_geometry_config
   use geometry_slide_elements, only: slide_element_t
   use geometry_slide_builder, only: centerline_description_t, slide_elements_description_t, &
     section_part_description_t, cross_section_description_t
-  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, format_real, format_vector, group_present
+  use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, format_real, format_vector, group_present, &
+    indexed_name
   use io_csv, only: read_csv_table
   use io_element_table, only: element_table_t, read_element_table, check_element
   use io_patch_grid, only: read_patch_grid
@@ -318,7 +319,7 @@ contains
       if (.not. status%ok()) return
       call check_element(kind(i), length(i), slope_deg(i), radius(i), angle_deg(i), direction(i), turns(i), &
                          drop(i), variable, value, allowed, bowl_profile(i))
-      if (len(variable) > 0) call r%invalid(part(variable), value, allowed, status)
+      if (len(variable) > 0) call r%invalid(indexed_name(variable, i), value, allowed, status)
       if (.not. status%ok()) return
       e(i) = slide_element_t(kind=kind(i), length=length(i), slope_deg=slope_deg(i), radius=radius(i), &
                              angle_deg=angle_deg(i), direction=direction(i), turns=turns(i), drop=drop(i), &
@@ -341,12 +342,6 @@ contains
 
   contains
 
-    pure function part(name) result(text)
-      character(len=*), intent(in) :: name
-      character(len=:), allocatable :: text
-      text = name//'('//format_integer(i)//')'
-    end function part
-
     !> The grid of every patch from its patch_file (io_patch_grid); a
     !> patch_file for another kind is refused.
     subroutine read_patches(status)
@@ -355,23 +350,23 @@ contains
       allocate (described%patches(0))
       do i = 1, n
         if (kind(i) /= 'patch') then
-          if (given_patch(i)) call r%invalid(part('patch_file'), ''''//trim(patch_file(i))//'''', &
+          if (given_patch(i)) call r%invalid(indexed_name('patch_file', i), ''''//trim(patch_file(i))//'''', &
                                              'a '//trim(kind(i))//' has no patch; leave it out', status)
           if (.not. status%ok()) return
           cycle
         end if
         if (len_trim(patch_file(i)) == 0) then
-          call r%invalid(part('patch_file'), '''''', 'a patch needs the CSV file of its offsets '// &
+          call r%invalid(indexed_name('patch_file', i), '''''', 'a patch needs the CSV file of its offsets '// &
                          '(station, angle, offset per line; docs/geometry.md)', status)
           return
         end if
         call read_patch_grid(input%resolve_path(trim(patch_file(i))), i, grid, status)
         if (.not. status%ok()) then
-          call prefix_status(status, r%where('patch_file')//': &'//g//': '//part('patch_file')//' = '''// &
+          call prefix_status(status, r%where('patch_file')//': &'//g//': '//indexed_name('patch_file', i)//' = '''// &
                              trim(patch_file(i))//'''')
           return
         end if
-        grid%source = part('patch_file')//' = '''//trim(patch_file(i))//''''
+        grid%source = indexed_name('patch_file', i)//' = '''//trim(patch_file(i))//''''
         described%patches = [described%patches, grid]
       end do
     end subroutine read_patches
@@ -482,7 +477,7 @@ contains
     subroutine unused(given, name)
       logical, intent(in) :: given(:)
       character(len=*), intent(in) :: name
-      if (status%ok() .and. given(i)) call r%invalid(name//'('//format_integer(i)//')', r%written(name), &
+      if (status%ok() .and. given(i)) call r%invalid(indexed_name(name, i), r%written(name), &
         'a '//trim(kind(i))//' section does not use '//name, status)
     end subroutine unused
   end subroutine read_cross_section

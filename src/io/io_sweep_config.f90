@@ -16,7 +16,7 @@ module io_sweep_config
     V_FLOW_RATE, V_F1, V_F2, V_F3
   implicit none (type, external)
   private
-  public :: sweep_config_t, read_sweep_config, max_rides, max_values
+  public :: sweep_config_t, read_sweep_config, max_rides, max_values, open_sweep_group, swept_given_name
 
   !> most rides of one sweep, most values of one list
   integer, parameter :: max_rides = 1000000, max_values = 10000
@@ -43,7 +43,7 @@ contains
     type(sweep_config_t), intent(out) :: config
     type(status_t), intent(inout) :: status
     type(group_reader_t) :: r
-    character(len=24) :: ranges(N_SWEPT - 1), paired(N_SWEPT), combine
+    character(len=24) :: paired(N_SWEPT), combine
     character(len=1024) :: csv
     type(bounds_t) :: bounds(N_SWEPT)
     type(real_list_t) :: lists(N_SWEPT)
@@ -51,15 +51,7 @@ contains
     integer :: k, j, n_rides, count_together
     real(wp) :: rides
 
-    ! the declared variables (the swept ones shared with &rider and &water),
-    ! and a range of each swept number
-    j = 0
-    do k = 1, N_SWEPT
-      if (k == V_SEX) cycle
-      j = j + 1
-      ranges(j) = trim(swept_names(k))//'_range'
-    end do
-    call open_group(input, 'sweep', r, status, also=ranges)
+    call open_sweep_group(input, r, status)
     do k = 1, N_SWEPT
       if (k /= V_SEX) call r%bounds(trim(swept_names(k)), bounds(k), status)
     end do
@@ -128,7 +120,7 @@ contains
       if (.not. together(k)) cycle
       j = findloc(together, .true., dim=1)
       if (size(lists(k)%x) /= size(lists(j)%x)) then
-        call r%invalid(trim(swept_names(k)), r%written(trim(given_name(k))), 'paired with '// &
+        call r%invalid(trim(swept_names(k)), r%written(trim(swept_given_name(r, k))), 'paired with '// &
                        trim(swept_names(j))//': it needs as many values ('//format_integer(size(lists(j)%x))// &
                        '), it has '//format_integer(size(lists(k)%x)), status)
         return
@@ -151,14 +143,6 @@ contains
     call expand()
 
   contains
-
-    !> The name the user wrote for variable k (its list or its range).
-    function given_name(k) result(name)
-      integer, intent(in) :: k
-      character(len=:), allocatable :: name
-      name = trim(swept_names(k))
-      if (k /= V_SEX .and. r%has(name//'_range')) name = name//'_range'
-    end function given_name
 
     subroutine read_sex(list)
       type(real_list_t), intent(out) :: list
@@ -260,4 +244,30 @@ contains
       text = text//trim(swept_names(k))
     end do
   end function list_names
+
+  !> &sweep opened with its declared variables (the swept ones shared with
+  !> &rider and &water) and a range of each swept number (mass_range, ...).
+  subroutine open_sweep_group(input, r, status)
+    type(input_text_t), intent(in) :: input
+    type(group_reader_t), intent(out) :: r
+    type(status_t), intent(inout) :: status
+    character(len=24) :: ranges(N_SWEPT - 1)
+    integer :: k, j
+    j = 0
+    do k = 1, N_SWEPT
+      if (k == V_SEX) cycle
+      j = j + 1
+      ranges(j) = trim(swept_names(k))//'_range'
+    end do
+    call open_group(input, 'sweep', r, status, also=ranges)
+  end subroutine open_sweep_group
+
+  !> The name the user wrote in &sweep for swept variable k (its list or its range).
+  function swept_given_name(r, k) result(name)
+    type(group_reader_t), intent(in) :: r
+    integer, intent(in) :: k
+    character(len=:), allocatable :: name
+    name = trim(swept_names(k))
+    if (k /= V_SEX .and. r%has(name//'_range')) name = name//'_range'
+  end function swept_given_name
 end module io_sweep_config

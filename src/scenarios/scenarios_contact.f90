@@ -57,11 +57,8 @@ contains
     if (solver%options%method == ODE_ADAMS) solver%options%convergence_coefficient = contact_convergence_coefficient
     flies = starts_open(system) .or. any(system%contacts%may_open)
     if (flies) call check_flight_system(system, status)
-    if (.not. status%ok()) then
-      call locate_failure(input, system, status)
-      call mark_input_failure(status)
-      return
-    end if
+    call locate_failure(input, system, status)
+    if (.not. status%ok()) return
     if (flies .and. carrying_contact(system) == 0) then
       call run_flight(input, run, solver, system, status)
       return
@@ -82,12 +79,9 @@ contains
       y0 = model%ode%initial_state(model%y0(1:f), model%y0(f + 1:f + ns))
       call model%ode%check_start(y0, status)
     end if
-    if (.not. status%ok()) then
-      call locate_failure(input, system, status)
-      call mark_input_failure(status)
-      return
-    end if
-    if (status%ok()) call check_moves(input, carried, model, status)
+    call locate_failure(input, system, status)
+    if (.not. status%ok()) return
+    call check_moves(input, carried, model, status)
     if (.not. status%ok()) return
     if (flies) then
       call run_flight(input, run, solver, system, status, closed=model)
@@ -117,11 +111,8 @@ contains
     else
       call build_flight(system, flight, q0, qd0, q_units, status)
     end if
-    if (.not. status%ok()) then
-      call locate_failure(input, system, status)
-      call mark_input_failure(status)
-      return
-    end if
+    call locate_failure(input, system, status)
+    if (.not. status%ok()) return
     call run_mechanism('contact', input, run, solver, flight, q0, qd0, q_units, [character(len=8) ::], status, &
                        shapes=bounded_body_shapes(system))
   end subroutine run_flight
@@ -235,12 +226,14 @@ contains
   !> about: the &contact or &body (file and line) whose name the message
   !> quotes first, else the file and the scenario. A message that begins
   !> with that group and name ("contact 'x': ...") loses them: the place
-  !> names them already.
+  !> names them already. Such a failure is bad input (mark_input_failure);
+  !> a status that is ok stays as it is.
   subroutine locate_failure(input, system, status)
     type(input_text_t), intent(in) :: input
     type(contact_system_t), intent(in) :: system
     type(status_t), intent(inout) :: status
     character(len=:), allocatable :: message, where, lead
+    if (status%ok()) return
     message = status%text()
     where = failure_where(input, system, message, lead)
     if (len(lead) > 0) then
@@ -249,6 +242,7 @@ contains
     status%message = message
     if (where == input%name) where = where//': contact'
     call prefix_status(status, where)
+    call mark_input_failure(status)
   end subroutine locate_failure
 
   !> The &contact or &body (file and line) whose name `message` quotes first,

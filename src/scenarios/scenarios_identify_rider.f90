@@ -18,18 +18,20 @@ module scenarios_identify_rider
     new_rider_identification, simulate_rider, fit_rider_friction, rider_body_sensitivity
   use io_input, only: input_text_t, check_known_groups
   use io_run_config, only: run_config_t
-  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_solver_config, only: solver_config_t
   use io_geometry_config, only: geometry_groups
-  use io_rider_config, only: read_rider_config, read_ride_gravity, require_coulomb_rider
+  use io_rider_config, only: require_coulomb_rider
   use io_rider_identification_config, only: rider_identification_config_t, read_rider_identification_config
   use io_hdf5, only: result_file_t, run_outcome, run_message
+  use io_identification_results, only: write_identification_segments
   use io_summary, only: summary_t
   use io_input_declarations, only: declared_unit
   use io_xdmf, only: attach_surface_view
-  use scenarios_water, only: build_water, write_slide_grid
-  use scenarios_ride, only: refuse_start
+  use scenarios_water, only: write_slide_grid
+  use scenarios_ride, only: refuse_start, read_water_and_rider
   use rider_ride, only: check_ride_start
   use design_ride_evaluation, only: ride_limit_t
+  use scenarios_report, only: close_report
   implicit none (type, external)
   private
   public :: run_identify_rider, identify_rider_groups
@@ -51,7 +53,6 @@ contains
     type(water_description_t) :: water_description
     type(water_result_t) :: water
     type(ride_limit_t), allocatable :: limits(:)
-    real(wp) :: gravity(3)   ! m/s^2
     type(rider_identification_config_t) :: config
     type(rider_identification_t) :: setup
     type(rider_fit_t) :: fit
@@ -64,12 +65,8 @@ contains
     character(len=:), allocatable :: message
 
     call check_known_groups(input, identify_rider_groups, status)
-    if (status%ok()) call read_solver_config(input, solver, status, defaults=default_solver(setup))
-    if (status%ok()) call build_water(input, water_description, status, stage=.true.)
-    ! one gravity for the water and the rider
-    if (status%ok()) call read_ride_gravity(input, gravity, status)
-    if (status%ok()) water_description%gravity = gravity
-    if (status%ok()) call read_rider_config(input, setup%params, setup%options, limits, status, gravity)
+    call read_water_and_rider(input, default_solver(setup), .false., solver, water_description, setup%params, &
+                              setup%options, limits, status)
     if (status%ok()) call require_coulomb_rider(input, setup%params, .false., 'identify_rider fits the '// &
                                                 'Coulomb mu_D of the three contacts (&rider mu is its start)', status)
     if (status%ok()) call read_rider_identification_config(input, config, status)
@@ -240,16 +237,10 @@ contains
       call file%attach_scale(g//'contact_number', g//'stations/', status, axis=1)
     end if
     if (size(setup%data%segment_start) > 0) then
-      call file%write_vector(g//'segments/start', setup%data%segment_start, 'm', &
-                             'arc length where each segment starts; dimension scale', status)
-      call file%write_vector(g//'segments/end', setup%data%segment_end, 'm', 'arc length where it ends', status)
-      call file%write_vector(g//'segments/measured_speed', setup%data%segment_speed, 'm/s', &
-                             'measured speed: length over the passage time', status)
-      call file%write_vector(g//'segments/simulated_speed', fit%simulated%segment_speed, 'm/s', &
-                             'simulated speed at the optimum (the pelvis''s passage)', status)
-      call file%write_vector(g//'segments/error', fit%error_speed, 'm/s', 'simulated - measured', status)
-      call file%make_scale(g//'segments/start', status)
-      call file%attach_scale(g//'segments/start', g//'segments/', status)
+      call write_identification_segments(file, g, setup%data%segment_start, setup%data%segment_end, &
+                                         setup%data%segment_speed, fit%simulated%segment_speed, fit%error_speed, &
+                                         'measured speed: length over the passage time', &
+                                         'simulated speed at the optimum (the pelvis''s passage)', status)
     end if
   end subroutine write_fit
 
@@ -329,10 +320,6 @@ contains
         end if
       end do
     end if
-    call summary%add_results(path, complete)
-    call summary%print()
-    if (allocated(run%summary_json)) then
-      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
-    end if
+    call close_report(summary, run, path, complete, message, status)
   end subroutine report
 end module scenarios_identify_rider

@@ -21,10 +21,12 @@ module scenarios_identify_water
   use io_geometry_config, only: geometry_groups
   use io_water_identification_config, only: water_identification_config_t, read_water_identification_config
   use io_hdf5, only: result_file_t, run_outcome, run_message
+  use io_identification_results, only: write_identification_segments
   use io_summary, only: summary_t
   use io_input_declarations, only: declared_unit
   use io_xdmf, only: attach_surface_view
   use scenarios_water, only: build_water, write_slide_grid
+  use scenarios_report, only: close_report
   implicit none (type, external)
   private
   public :: run_identify_water, identify_water_groups
@@ -161,16 +163,9 @@ contains
       call file%attach_scale(g//'sections/arc_length', g//'sections/', status)
     end if
     if (size(setup%data%segment_speed) > 0) then
-      call file%write_vector(g//'segments/start', setup%data%segment_start, 'm', &
-                             'arc length where each segment starts; dimension scale', status)
-      call file%write_vector(g//'segments/end', setup%data%segment_end, 'm', 'arc length where it ends', status)
-      call file%write_vector(g//'segments/measured_speed', setup%data%segment_speed, 'm/s', 'measured speed', &
-                             status)
-      call file%write_vector(g//'segments/simulated_speed', fit%simulated_speed, 'm/s', &
-                             'simulated speed at the optimum', status)
-      call file%write_vector(g//'segments/error', fit%error_speed, 'm/s', 'simulated - measured', status)
-      call file%make_scale(g//'segments/start', status)
-      call file%attach_scale(g//'segments/start', g//'segments/', status)
+      call write_identification_segments(file, g, setup%data%segment_start, setup%data%segment_end, &
+                                         setup%data%segment_speed, fit%simulated_speed, fit%error_speed, &
+                                         'measured speed', 'simulated speed at the optimum', status)
     end if
   end subroutine write_fit
 
@@ -238,10 +233,6 @@ contains
         call summary%add_line('  '//format_with(table(1, k), 'f11.3')//'   '//format_with(table(2, k), 'es12.4'))
       end do
     end if
-    call summary%add_results(path, complete)
-    call summary%print()
-    if (allocated(run%summary_json)) then
-      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
-    end if
+    call close_report(summary, run, path, complete, message, status)
   end subroutine report
 end module scenarios_identify_water

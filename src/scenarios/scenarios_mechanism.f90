@@ -21,7 +21,7 @@ module scenarios_mechanism
   use io_surface_grid, only: write_surface_grid_around
   use io_xdmf, only: xdmf_t, body_shape_t
   use geometry_surface, only: surface_t
-  use scenarios_report, only: end_report
+  use scenarios_report, only: end_report, add_run_cost
   use contact_flight, only: flight_ode_t, impact_record_t
   use contact_closing, only: drive_flight
   implicit none (type, external)
@@ -438,9 +438,7 @@ contains
     if (present(figures) .and. complete) call figures%summarise(summary)
     if (chart_changes > 0) call summary%add_count('chart_changes', 'chart changes', chart_changes, &
                                                   '(coordinates re-based, the motion continuous)')
-    call summary%add_count('steps', 'integrator', int(stats%steps), 'steps')
-    call summary%add_count('rhs_evaluations', 'right-hand sides', int(stats%rhs_evaluations), 'evaluations')
-    call summary%add('cpu_time', 'CPU time', cpu, 's')
+    call add_run_cost(summary, stats, cpu)
     call summary%print()
     call end_report(summary, run, path, complete, message, status)
   end subroutine report

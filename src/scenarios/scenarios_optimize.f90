@@ -32,7 +32,7 @@ module scenarios_optimize
   use io_optimization_population, only: read_optimization_population
   use design_sweep_ranks, only: start_ranks, finish_ranks
   use design_optimize_ranks, only: share_flag
-  use scenarios_optimize_population, only: write_population, report_population
+  use scenarios_optimize_population, only: write_population, report_population, lever_text
   use io_hdf5, only: result_file_t, run_outcome, run_message
   use io_summary, only: summary_t, degrees
   use io_input_declarations, only: declared_unit
@@ -454,7 +454,7 @@ contains
       call summary%add_line('  ride at (deg)   max |a| start, optimum (m/s^2)   lever arm start, optimum (m)')
       do k = 1, n
         call summary%add_line('    '//format_with(table(1, k), 'f12.4')//'      '//format_with(table(2, k), 'f12.4')// &
-          format_with(table(3, k), 'f12.4')//'        '//lever_text(table(4, k))//lever_text(table(5, k)))
+          format_with(table(3, k), 'f12.4')//'        '//lever_text(table(4, k), 12)//lever_text(table(5, k), 12))
       end do
     end if
     call summary%print()
@@ -525,14 +525,4 @@ contains
     text = format_integer(i)
     text = repeat(' ', max(0, width - len(text)))//text
   end function padded
-
-  pure function lever_text(x) result(text)
-    real(wp), intent(in) :: x
-    character(len=12) :: text
-    if (x >= 1e30_wp) then
-      text = '    lift-off'
-    else
-      text = format_with(x, 'f12.4')
-    end if
-  end function lever_text
 end module scenarios_optimize

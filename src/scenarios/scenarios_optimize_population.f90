@@ -13,7 +13,7 @@ module scenarios_optimize_population
   use design_geometry_optimization, only: optimization_setup_t, design_evaluation_t
   implicit none (type, external)
   private
-  public :: write_population, report_population, worst_member_text
+  public :: write_population, report_population, worst_member_text, lever_text
 
 contains
 
@@ -135,17 +135,20 @@ contains
       call summary%add_line('  '//repeat(' ', max(0, 6 - len(format_integer(k))))//format_integer(k)// &
         format_with(table(2, k), 'f12.3')// &
         format_with(table(3, k), 'f11.1')//format_with(table(4, k), 'f14.3')//format_with(table(5, k), 'f12.2')// &
-        format_with(table(6, k), 'f15.2')//format_with(table(7, k), 'f21.4')//lever(table(8, k)))
+        format_with(table(6, k), 'f15.2')//format_with(table(7, k), 'f21.4')//lever_text(table(8, k), 19))
     end do
-  contains
-    pure function lever(x) result(text)
-      real(wp), intent(in) :: x
-      character(len=19) :: text
-      if (x >= 1e30_wp) then
-        text = '           lift-off'
-      else
-        text = format_with(x, 'f19.4')
-      end if
-    end function lever
   end subroutine report_population
+
+  !> A lever arm in a table column of `width`: 'f<width>.4', or 'lift-off'
+  !> right-aligned for the lift-off mark (1e30 or more).
+  pure function lever_text(x, width) result(text)
+    real(wp), intent(in) :: x
+    integer, intent(in) :: width
+    character(len=width) :: text
+    if (x >= 1e30_wp) then
+      text = repeat(' ', width - 8)//'lift-off'
+    else
+      text = format_with(x, 'f'//format_integer(width)//'.4')
+    end if
+  end function lever_text
 end module scenarios_optimize_population

@@ -21,7 +21,7 @@ module scenarios_point_mass
   use io_summary, only: summary_t, standard_g, engineering
   use io_surface_grid, only: write_surface_grid_around
   use io_xdmf, only: xdmf_t
-  use scenarios_report, only: end_report
+  use scenarios_report, only: end_report, add_run_cost
   implicit none (type, external)
   private
   public :: run_point_mass, build_point_mass, point_mass_groups
@@ -234,9 +234,7 @@ contains
     end if
     call summary%add('energy_balance_error', 'energy balance error', drift/max(abs(e0), s%kinetic(1), &
                      maxval(s%kinetic(:n)), tiny(1.0_wp)), '1', '(relative)')
-    call summary%add_count('steps', 'integrator', int(stats%steps), 'steps')
-    call summary%add_count('rhs_evaluations', 'right-hand sides', int(stats%rhs_evaluations), 'evaluations')
-    call summary%add('cpu_time', 'CPU time', cpu, 's')
+    call add_run_cost(summary, stats, cpu)
     call summary%print()
     call end_report(summary, run, path, complete, message, status)
   end subroutine report

@@ -18,7 +18,7 @@ module scenarios_ride
   use water_run, only: water_description_t
   use water_curve_entry, only: curve_entry_note
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
-  use rider_ride, only: ride_result_t, ride_series_t, check_ride_start
+  use rider_ride, only: ride_result_t, ride_series_t, ride_options_t, check_ride_start
   use design_ride_evaluation, only: limit_report_unit, limit_bounds_text, spaced_unit, ride_limit_t, &
     quantities_without_limit, noise_free, rider_size
   use design_ride_report, only: ride_report_t
@@ -36,10 +36,11 @@ module scenarios_ride
   use scenarios_water, only: build_water, write_slide_grid
   use scenarios_ride_flights, only: add_flights
   use scenarios_ride_results, only: friction_name, write_ride, write_evaluation, write_ride_csv
+  use scenarios_report, only: close_report
   implicit none (type, external)
   private
   public :: run_ride_scenario, read_ride_description, ride_groups, check_sphere_radii, read_limit_gate, &
-    limits_exceeded_status, refuse_start
+    limits_exceeded_status, refuse_start, read_water_and_rider, set_ride_duration
 
   character(len=*), parameter :: ride_groups(14) = [character(len=14) :: 'run', 'solver', 'water_solver', &
     'surface', 'water', 'inlet', 'rider', 'evaluation', geometry_groups]
@@ -122,37 +123,20 @@ contains
     logical, intent(out) :: fail_on_limit
     type(status_t), intent(inout) :: status
     type(solver_config_t) :: solver, defaults
-    real(wp) :: gravity(3)   ! m/s^2
 
     fail_on_limit = .false.
     call check_known_groups(input, ride_groups, status, repeatable=[character(len=5) :: 'inlet'])
     defaults%options = description%options%ode
     defaults%output_step = description%options%output_step
-    if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults, presets=.true.)
-    if (status%ok()) call build_water(input, description%water, status, stage=.true.)
-    ! a preset of &solver accuracy sets both integrators' tolerances
-    if (status%ok()) call apply_accuracy(input, solver, description%water%solver%ode, status)
-    ! one gravity for the water and the rider
-    if (status%ok()) call read_ride_gravity(input, gravity, status)
-    if (status%ok()) description%water%gravity = gravity
-    if (status%ok()) call read_rider_config(input, description%rider, description%options, description%limits, &
-                                            status, gravity)
+    call read_water_and_rider(input, defaults, .true., solver, description%water, description%rider, &
+                              description%options, description%limits, status)
     if (status%ok()) call read_limit_gate(input, run, description%limits, fail_on_limit, status)
     if (.not. status%ok()) return
     associate (slide => description%water%slide, options => description%options)
       call check_sphere_radii(input, description%rider, slide, status)
       if (.not. status%ok()) return
-      options%ode = solver%options
-      options%output_step = solver%output_step
-      options%max_duration = safety_factor*slide%length()/options%min_speed
-      ! the outputs of a duration the user gave are bounded before the run;
-      ! without it the series grows with what the ride records (a safety
-      ! bound on the time must not size, or refuse, a sound ride)
-      if (solver%duration_given) then
-        options%max_duration = solver%duration
-        call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
-        if (.not. status%ok()) return
-      end if
+      call set_ride_duration(input, solver, slide%length(), options, status)
+      if (.not. status%ok()) return
       call check_ride_start(description%rider, slide, options, status)
       if (.not. status%ok()) then
         call refuse_start(input, description%rider, status)
@@ -160,6 +144,51 @@ contains
       end if
     end associate
   end subroutine read_ride_description
+
+  !> The water and the rider of a ride, a sweep or a rider identification,
+  !> read in one order: &solver (from `defaults`; with `presets` a preset of
+  !> its accuracy sets both integrators' tolerances), the water (staged), one
+  !> gravity for the water and the rider, the rider with its limits. Nothing
+  !> is read after a failure.
+  subroutine read_water_and_rider(input, defaults, presets, solver, water, rider, options, limits, status)
+    type(input_text_t), intent(in) :: input
+    type(solver_config_t), intent(in) :: defaults
+    logical, intent(in) :: presets
+    type(solver_config_t), intent(inout) :: solver
+    type(water_description_t), intent(inout) :: water
+    type(rider_params_t), intent(inout) :: rider
+    type(ride_options_t), intent(inout) :: options
+    type(ride_limit_t), allocatable, intent(inout) :: limits(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: gravity(3)   ! m/s^2
+    if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults, presets=presets)
+    if (status%ok()) call build_water(input, water, status, stage=.true.)
+    if (status%ok() .and. presets) call apply_accuracy(input, solver, water%solver%ode, status)
+    if (status%ok()) call read_ride_gravity(input, gravity, status)
+    if (status%ok()) water%gravity = gravity
+    if (status%ok()) call read_rider_config(input, rider, options, limits, status, gravity)
+  end subroutine read_water_and_rider
+
+  !> A ride's integration from &solver: the integrator, the output step and
+  !> the longest duration. The outputs of a duration the user gave are
+  !> bounded before the run; without it the series grows with what the ride
+  !> records (a safety bound on the time must not size, or refuse, a sound
+  !> ride): `safety_factor` times the time the slide of `slide_length` (m)
+  !> takes at the stall speed.
+  subroutine set_ride_duration(input, solver, slide_length, options, status)
+    type(input_text_t), intent(in) :: input
+    type(solver_config_t), intent(in) :: solver
+    real(wp), intent(in) :: slide_length
+    type(ride_options_t), intent(inout) :: options
+    type(status_t), intent(inout) :: status
+    options%ode = solver%options
+    options%output_step = solver%output_step
+    options%max_duration = safety_factor*slide_length/options%min_speed
+    if (solver%duration_given) then
+      options%max_duration = solver%duration
+      call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
+    end if
+  end subroutine set_ride_duration
 
   !> Whether a limit exceeded fails the run (exit status 4): --fail-on-limit
   !> or &evaluation fail_on_limit. Asked with no limit to judge, the run
@@ -462,11 +491,7 @@ contains
     call summary%add('water_cpu_time', 'CPU time water', water_cpu, 's')
     call summary%add('ride_cpu_time', 'CPU time rider', ride_cpu, 's')
     call summary%add_count('ride_steps', 'integrator', int(ride%driver%stats%steps), 'steps')
-    call summary%add_results(path, complete)
-    call summary%print()
-    if (allocated(run%summary_json)) then
-      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
-    end if
+    call close_report(summary, run, path, complete, message, status)
 
   contains
 

@@ -24,8 +24,8 @@ module scenarios_sweep
                       where_given
   use io_output_files, only: claim_output
   use io_run_config, only: run_config_t
-  use io_solver_config, only: solver_config_t, read_solver_config, apply_accuracy, check_output_count
-  use io_rider_config, only: read_rider_config, read_ride_gravity, require_coulomb_rider, open_rider_group
+  use io_solver_config, only: solver_config_t
+  use io_rider_config, only: require_coulomb_rider, open_rider_group
   use rider_model, only: rider_coulomb_mu
   use io_sweep_config, only: sweep_config_t, read_sweep_config
   use io_sweep_results, only: write_sweep_results, write_sweep_csv
@@ -33,17 +33,15 @@ module scenarios_sweep
   use io_summary, only: summary_t
   use water_run, only: new_streamline
   use water_streamline, only: streamline_t
-  use scenarios_water, only: build_water, write_slide_grid
+  use scenarios_water, only: write_slide_grid
   use io_xdmf, only: xdmf_t
-  use scenarios_ride, only: ride_groups, check_sphere_radii, read_limit_gate, limits_exceeded_status
+  use scenarios_ride, only: ride_groups, check_sphere_radii, read_limit_gate, limits_exceeded_status, &
+    read_water_and_rider, set_ride_duration
   use design_ride_evaluation, only: quantities_without_limit, felt_acceleration_units
+  use scenarios_report, only: close_report
   implicit none (type, external)
   private
   public :: run_sweep_scenario
-
-  !> numbers stored per output time of one ride (ride_series_t), for the memory bound
-  integer, parameter :: values_per_output = 120
-  real(wp), parameter :: safety_factor = 10   ! as the ride: the bound on a ride without &solver duration
 
 contains
 
@@ -52,7 +50,6 @@ contains
     type(run_config_t), intent(in) :: run
     type(status_t), intent(inout) :: status
     type(solver_config_t) :: solver, defaults
-    real(wp) :: gravity(3)   ! m/s^2
     type(sweep_config_t) :: config
     type(sweep_description_t) :: sweep
     type(sweep_result_t) :: result
@@ -72,14 +69,7 @@ contains
     ! a sweep rides at 'report' unless the input gives accuracy or a tolerance
     ! (the shipped sweep's reported numbers measured there: docs/accuracy.md)
     defaults%accuracy = 'report'
-    if (status%ok()) call read_solver_config(input, solver, status, defaults=defaults, presets=.true.)
-    if (status%ok()) call build_water(input, sweep%water, status, stage=.true.)
-    ! a preset of &solver accuracy sets both integrators' tolerances
-    if (status%ok()) call apply_accuracy(input, solver, sweep%water%solver%ode, status)
-    ! one gravity for the water and the rider
-    if (status%ok()) call read_ride_gravity(input, gravity, status)
-    if (status%ok()) sweep%water%gravity = gravity
-    if (status%ok()) call read_rider_config(input, sweep%rider, options, sweep%limits, status, gravity)
+    call read_water_and_rider(input, defaults, .true., solver, sweep%water, sweep%rider, options, sweep%limits, status)
     if (status%ok()) call require_coulomb_rider(input, sweep%rider, .true., 'the sweep varies and records '// &
                                                 'the rider''s Coulomb mu (0: none)', status)
     if (status%ok()) call read_limit_gate(input, run, sweep%limits, fail_on_limit, status)
@@ -103,16 +93,9 @@ contains
     end associate
     call read_sweep_config(input, base, config, status)
     if (.not. status%ok()) return
-    options%ode = solver%options
-    options%output_step = solver%output_step
-    options%max_duration = safety_factor*sweep%water%slide%length()/options%min_speed
     options%progress_seconds = 0   ! the sweep reports progress, not each ride
-    ! as the ride: a duration given bounds the outputs before the run, else they grow as each ride goes
-    if (solver%duration_given) then
-      options%max_duration = solver%duration
-      call check_output_count(input, solver, options%max_duration, values_per_output, 'ride', status)
-      if (.not. status%ok()) return
-    end if
+    call set_ride_duration(input, solver, sweep%water%slide%length(), options, status)
+    if (.not. status%ok()) return
     sweep%options = options
     sweep%values = config%values
     call check_waters(input, sweep, status)
@@ -309,10 +292,6 @@ contains
     call summary%add_count('threads', 'threads per rank', threads, '')
     call summary%add_count('ranks', 'MPI ranks', ranks, '')
     if (csv_tried) call summary%add_text('csv', 'CSV summary', csv_path)
-    call summary%add_results(path, complete)
-    call summary%print()
-    if (allocated(run%summary_json)) then
-      if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
-    end if
+    call close_report(summary, run, path, complete, message, status)
   end subroutine print_summary
 end module scenarios_sweep

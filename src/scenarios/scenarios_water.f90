@@ -34,7 +34,7 @@ module scenarios_water
   use io_surface_grid, only: write_surface_grid
   use base_grid, only: evenly_spaced
   use io_xdmf, only: xdmf_t
-  use scenarios_report, only: end_report
+  use scenarios_report, only: end_report, add_run_cost
   implicit none (type, external)
   private
   public :: run_water, build_water, water_groups, write_slide_grid
@@ -365,9 +365,7 @@ contains
     else
       call summary%add_range('v', 'v min / max', minval(s%v(:n)), maxval(s%v(:n)), vu)
     end if
-    call summary%add_count('steps', 'integrator', int(s%stats%steps), 'steps')
-    call summary%add_count('rhs_evaluations', 'right-hand sides', int(s%stats%rhs_evaluations), 'evaluations')
-    call summary%add('cpu_time', 'CPU time', result%cpu, 's')
+    call add_run_cost(summary, s%stats, result%cpu)
     if (s%edge_beyond > 0) call summary%add_line('  water edges               '//format_integer(s%edge_beyond)// &
       ' samples from arc length '//format_short(s%edge_beyond_from)// &
       ' m: an edge beyond the slide''s end (circle estimate)')
