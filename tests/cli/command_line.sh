@@ -1,12 +1,8 @@
 #!/usr/bin/env bash
 # The command itself: --help lists the scenarios, --version prints a version, the
 # built-in default runs and writes a complete result file with the input stored.
-set -u
 slidesim=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+. "$(dirname "$0")/support/checks.sh"
 
 check '"$slidesim" --help | grep -q point_mass' "--help lists point_mass"
 check '"$slidesim" --version | grep -Eq "^slidesim [0-9]+\.[0-9]+\.[0-9]+"' "--version"

@@ -8,13 +8,9 @@
 # the file (/sweep rides_failed) when some fail, exit status 2 and an
 # incomplete file when all do; asked to fail on a limit, a sweep with any
 # ride over one exits 4.
-set -u
 slidesim=$1
 repo=$(pwd)   # tests run from the repository root
-work=$(mktemp -d)
-trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+. "$(dirname "$0")/support/checks.sh"
 status_of() { h5dump -a /status "$work/$1" 2>/dev/null | grep -o '"[a-z]*"' | tail -n 1; }
 
 # the demo ride, 2.5 s long (the speed limit 8 m/s holds, 2 m/s does not)

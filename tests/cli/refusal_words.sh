@@ -7,13 +7,9 @@
 # cannot be taken (v0 = 0: the pelvis on the tube's edge) is refused as bad
 # input (exit 1, nothing written) by ride and by identify_rider alike,
 # naming &rider and the start's variables.
-set -u
 slidesim=$1
 repo=$(pwd)   # tests run from the repository root
-work=$(mktemp -d)
-trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+. "$(dirname "$0")/support/checks.sh"
 refused() {   # name, expected message part (a grep pattern), then slidesim's options and input
   name=$1; expected=$2; shift 2
   (cd "$work" && "$slidesim" -q -o "$name.h5" "$@" >"$name.out" 2>"$name.err"); got=$?

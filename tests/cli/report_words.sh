@@ -4,13 +4,9 @@
 # negative), the side of the wall each contact climbed, what the sign of a
 # lateral or normal felt acceleration means; a closed standard input is a
 # read error (exit 3) that says so, not "the input is empty".
-set -u
 slidesim=$1
 repo=$(pwd)   # tests run from the repository root
-work=$(mktemp -d)
-trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+. "$(dirname "$0")/support/checks.sh"
 
 # the demo ride: braked all the way (f_long from -0.146 to -0.060 g), the
 # highest climbs on the left wall (the helix turns left)

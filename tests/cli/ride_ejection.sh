@@ -16,15 +16,9 @@
 # - the limit `ejection` (max 0, unit '1') is exceeded, and exits 4 when asked;
 #   a unit that does not count is refused (exit 1, nothing written);
 # - the same rider slower stays in the flume (no ejection, limit ok, no mark).
-set -u
-root=$(pwd)
 slidesim=$1
-work=$(mktemp -d)
-trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+. "$(dirname "$0")/support/checks.sh"
 status_of() { h5dump -a /status "$work/$1" 2>/dev/null | grep -o '"[a-z]*"' | tail -n 1; }
-py=/usr/bin/python3; [ -x "$py" ] || py=python3
 run() {   # name, then slidesim's options and input
   name=$1; shift
   (cd "$work" && "$slidesim" -o "$name.h5" "$@" >"$name.out" 2>"$name.err"); got=$?

@@ -19,22 +19,11 @@
 #   fails where the free fall begins (0 g at 7.84 m);
 # - a straight slide's wall climbs print as 0 (rounding noise below the
 #   closure's 1e-10 m; on 2572e9e "5.0889E-14 deg").
-set -u
-root=$(pwd)
 slidesim=$1
-work=$(mktemp -d)
-trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
-py=/usr/bin/python3; [ -x "$py" ] || py=python3
+. "$(dirname "$0")/support/checks.sh"
 
-(cd "$root" && "$slidesim" -o "$work/jump.h5" --summary-json "$work/jump.json" \
-  --set "rider%limit_quantity='airtime','drop_height','acceleration_longitudinal','lever_arm','acceleration_normal'" \
-  --set "rider%limit_unit='s','m','g','m','g'" \
-  --set "rider%limit_min=0,0,-1,0,0.2" \
-  --set "rider%limit_max=0.6,0.2,10,0.25,10" \
-  inputs/ride/jump.nml >"$work/jump.out" 2>"$work/jump.err"); got=$?
-check '[ $got = 0 ]' "jump: exit status $got ($(cat "$work/jump.err"))"
+ride_with_limits inputs/ride/jump.nml "'airtime','drop_height','acceleration_longitudinal','lever_arm','acceleration_normal'" \
+  "'s','m','g','m','g'" "0,0,-1,0,0.2" "0.6,0.2,10,0.25,10"
 check 'grep -q "limit acceleration_longitudinal .*: ok" "$work/jump.out"' \
   "braking limit: $(grep acceleration_longitudinal "$work/jump.out")"
 check 'grep -q "limit lever_arm .*: ok" "$work/jump.out"' "lever arm limit: $(grep -i 'limit.*lever_arm' "$work/jump.out")"

@@ -7,14 +7,8 @@
 # ~2e-9 m: each record re-solves the closure in the integration's
 # workspace, tolerance 1e-10 m) and the same place to 1e-6 m. Taken at the
 # records (3e73489) it moved by 8.5e-4 m (0.21410 and 0.21496 m).
-set -u
-root=$(pwd)
 slidesim=$1
-work=$(mktemp -d)
-trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
-py=/usr/bin/python3; [ -x "$py" ] || py=python3
+. "$(dirname "$0")/support/checks.sh"
 
 for step in 0.01 0.0037; do
   (cd "$root" && "$slidesim" -o "$work/jump$step.h5" --set solver%output_step=$step inputs/ride/jump.nml \

@@ -12,14 +12,8 @@
 # - without may_fly: the heels' lift-off ends the ride (as before), and a
 #   flight limit or landing parameter is refused (exit 1, nothing written);
 # - the ride plot shades the flight and marks the landing.
-set -u
-root=$(pwd)
 slidesim=$1
-work=$(mktemp -d)
-trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
-py=/usr/bin/python3; [ -x "$py" ] || py=python3
+. "$(dirname "$0")/support/checks.sh"
 run() {   # name, then slidesim's options and input
   name=$1; shift
   (cd "$root" && "$slidesim" -o "$work/$name.h5" "$@" >"$work/$name.out" 2>"$work/$name.err"); got=$?

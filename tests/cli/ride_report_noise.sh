@@ -13,22 +13,12 @@
 #   normal force >= 0 N and lever arm <= 0 m limits hold;
 # - a felt acceleration above the floor keeps its sign and direction:
 #   the demo ride's lateral max "0.0.. g, pushed to the left" (report_words).
-set -u
-root=$(pwd)
 slidesim=$1
-work=$(mktemp -d)
-trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
-py=/usr/bin/python3; [ -x "$py" ] || py=python3
+. "$(dirname "$0")/support/checks.sh"
 
-(cd "$root" && "$slidesim" -o "$work/jump.h5" --summary-json "$work/jump.json" \
-  --set "rider%limit_quantity='airtime','drop_height','acceleration_lateral','acceleration_normal','wall_angle','normal_force','lever_arm'" \
-  --set "rider%limit_unit='s','m','g','g','deg','N','m'" \
-  --set "rider%limit_min=0,0,-1,0.2,0,0,-1" \
-  --set "rider%limit_max=0.6,0.2,1,10,60,5000,0" \
-  inputs/ride/jump.nml >"$work/jump.out" 2>"$work/jump.err"); got=$?
-check '[ $got = 0 ]' "jump: exit status $got ($(cat "$work/jump.err"))"
+ride_with_limits inputs/ride/jump.nml \
+  "'airtime','drop_height','acceleration_lateral','acceleration_normal','wall_angle','normal_force','lever_arm'" \
+  "'s','m','g','g','deg','N','m'" "0,0,-1,0.2,0,0,-1" "0.6,0.2,1,10,60,5000,0"
 check '[ $(grep -c "^  felt lateral m[ai][xn]  *0 g$" "$work/jump.out") = 2 ]' \
   "lateral: $(grep 'felt lateral' "$work/jump.out")"
 check '! grep -q "pushed to the" "$work/jump.out"' "a side named: $(grep 'pushed to the' "$work/jump.out")"

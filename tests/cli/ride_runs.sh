@@ -8,13 +8,9 @@
 # is not steeper than its friction holds. A ride that fails part way (too
 # few steps allowed) prints its whole report, the results line last, before
 # the error, also when both streams go to one file.
-set -u
 slidesim=$1
 repo=$(pwd)   # tests run from the repository root
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+. "$(dirname "$0")/support/checks.sh"
 
 (cd "$work" && "$slidesim" -q -o ride.h5 "$repo/inputs/ride/demo_slide.nml" >ride.out 2>ride.err); got=$?
 check '[ $got = 0 ]' "demo ride: exit status $got ($(cat "$work/ride.err"))"

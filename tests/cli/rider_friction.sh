@@ -10,13 +10,9 @@
 # range, another law's parameter given, mu = 0 (friction = 'none' is no
 # friction), parameters with 'none'; the sweep (which varies Coulomb's mu)
 # and identify_rider (which fits it) refuse another law by name.
-set -u
 slidesim=$1
 repo=$(pwd)   # tests run from the repository root
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+. "$(dirname "$0")/support/checks.sh"
 
 # the demo input with its slide's path made absolute and one change (sed)
 variant() {   # source input, name, sed expression

@@ -7,14 +7,9 @@
 # message naming the group, the variable, the value and what is allowed; a
 # mat rider and a ring ride the demo slide (exit 0) with the weight of
 # vehicle and riders on the two contacts at the start.
-set -u
 slidesim=$1
 python=${SLIDESIM_PYTHON:-/usr/bin/python3}
-root=$(pwd)   # tests run from the repository root
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+. "$(dirname "$0")/support/checks.sh"
 head="&run scenario = 'sled' /
 &solver duration = 1.0, output_step = 0.01 /
 &surface kind = 'slide', geometry_file = 'builtin:demo_slide' /"

@@ -5,13 +5,8 @@
 # cannot be built is refused naming the group, the value and why (exit 1,
 # no file); a funnel is a row of an element table; the rider and the water
 # start inside the funnel.
-set -u
 slidesim=$1
-root=$(pwd)   # tests run from the repository root
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+. "$(dirname "$0")/support/checks.sh"
 refused() {   # NAME EXPECTED TEXT
   local name=$1 expected=$2
   printf '%s\n' "$3" >"$work/$name.nml"

@@ -5,13 +5,8 @@
 # cannot be built is refused naming the file (and line), the group, the
 # value and why (exit 1, no file); a missing patch file is exit 3; the
 # rider and the water start on the patch.
-set -u
 slidesim=$1
-root=$(pwd)   # tests run from the repository root
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+. "$(dirname "$0")/support/checks.sh"
 refused() {   # NAME STATUS EXPECTED TEXT
   local name=$1 status=$2 expected=$3
   printf '%s\n' "$4" >"$work/$name.nml"

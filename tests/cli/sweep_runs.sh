@@ -7,14 +7,10 @@
 # the others finish; bad &sweep inputs are refused before any work (exit 1,
 # no file), naming the file, the group, the variable, the value and what is
 # allowed.
-set -u
 slidesim=$1
 repo=$(pwd)   # tests run from the repository root
 python=${SLIDESIM_PYTHON:-/usr/bin/python3}
-work=$(mktemp -d)
-trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
-failures=0; checks=0
-check() { checks=$((checks + 1)); if ! eval "$1"; then echo "FAIL $2"; failures=$((failures + 1)); fi; }
+. "$(dirname "$0")/support/checks.sh"
 
 # the demo ride as the base, &solver duration 2.5 s, eight rides: (male 90 kg,
 # female 55 kg) paired x start u0 (0.5, 66.5: the heels beyond the end) x

@@ -34,19 +34,17 @@ program test_air_drag
   use base_constants, only: standard_gravity, dry_air_density
   use base_status, only: status_t
   use base_vector, only: cross
-  use numerics_event_driver, only: driver_options_t, driver_result_t, DRIVE_EVENT_STOP, DRIVE_END_TIME
+  use numerics_event_driver, only: driver_result_t, DRIVE_EVENT_STOP, DRIVE_END_TIME
   use kinetostatics_state, only: frame_state_t, scalar_state_t
   use kinetostatics_contact, only: contact_state_t
   use kinetostatics_force_laws, only: air_drag_t, new_air_drag
   use kinetostatics_recorder, only: mechanism_series_t
-  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
+  use contact_model, only: contact_system_t
   use contact_flight, only: flight_ode_t
-  use contact_closing, only: drive_flight, flight_after_closed
   use io_input, only: input_text_t, input_from_text
-  use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
   use testing, only: check, check_close, finish_tests
-  use scenario_fixtures, only: number, ball_over_floor, read_flight
+  use scenario_fixtures, only: number, ball_over_floor, read_flight, read_closed_flight, fly
   implicit none (type, external)
 
   character(len=*), parameter :: nl = new_line('a')
@@ -84,23 +82,11 @@ contains
     call read_flight(text, label, flight, q0, qd0, st, system)
     call check(st%ok(), label//': built from the input: '//st%text())
     if (.not. st%ok()) return
-    call flight%start_series(400)
-    call drive_flight(flight, flight%initial_state(q0, qd0), options(duration, 1e-12_wp), result, st, open)
+    call fly(flight, q0, qd0, 1e-12_wp, duration, 400, result, st, open)
     in_flight = open(1, :)   ! the one contact
     call check(st%ok(), label//': ran: '//st%text())
     outcome = result%outcome
   end subroutine run
-
-  function options(duration, tolerance) result(o)
-    real(wp), intent(in) :: duration, tolerance
-    type(driver_options_t) :: o
-    o%ode%rtol = tolerance
-    o%ode%atol = tolerance
-    o%ode%convergence_coefficient = contact_convergence_coefficient
-    o%t_end = duration
-    o%output_step = 0.01_wp
-    o%progress_seconds = 0
-  end function options
 
   !> The largest |E(t) - E(0) - (work of the laws) + (impacts' losses)| over the records (J).
   function balance_error(s, flight) result(worst)
@@ -294,15 +280,10 @@ contains
   !> once the friction is gone, the drag's goes on.
   subroutine dome()
     type(flight_ode_t), target :: flight
-    type(contact_model_t) :: model
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
-    type(contact_system_t) :: system
     type(driver_result_t) :: result
     type(status_t) :: st
     real(wp), allocatable :: q0(:), qd0(:)
     integer, allocatable :: in_flight(:), open(:, :)
-    character(len=8), allocatable :: units(:)
     integer :: n, lift, friction, drag
     character(len=:), allocatable :: text
     text = '&run scenario = ''contact'' /'//nl// &
@@ -313,15 +294,10 @@ contains
            'angles_deg = 90, 0, 0, drag_area = 0.02 /'//nl// &
            '&contact name = ''ball_on_dome'', shape_1 = ''dome'', body_2 = ''ball'', shape_2 = ''ball'', '// &
            'friction = ''viscous'', viscous_coefficient = 0.1, may_open = .true. /'//nl
-    call input_from_text('dome', text, input, st)
-    call read_solver_config(input, solver, st)
-    call read_contact_config(input, system, st)
-    call build_contact_model(system, model, st)
-    call flight_after_closed(system, model, flight, q0, qd0, units, st)
+    call read_closed_flight(text, 'dome', flight, q0, qd0, st)
     call check(st%ok(), 'dome: built from the input: '//st%text())
     if (.not. st%ok()) return
-    call flight%start_series(400)
-    call drive_flight(flight, flight%initial_state(q0, qd0), options(1.5_wp, 1e-11_wp), result, st, open)
+    call fly(flight, q0, qd0, 1e-11_wp, 1.5_wp, 400, result, st, open)
     in_flight = open(1, :)   ! the one contact
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'dome: runs to the end: '//st%text())
     associate (s => flight%series)

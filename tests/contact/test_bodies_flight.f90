@@ -32,14 +32,10 @@
 program test_bodies_flight
   use base_kinds, only: wp
   use base_constants, only: standard_gravity
-  use base_status, only: status_t
-  use numerics_event_driver, only: driver_options_t, driver_result_t, DRIVE_END_TIME, &
-    RECORD_OUTPUT
-  use contact_model, only: contact_convergence_coefficient
+  use numerics_event_driver, only: DRIVE_END_TIME, RECORD_OUTPUT
   use contact_flight, only: flight_ode_t, impact_record_t
-  use contact_closing, only: drive_flight
   use testing, only: check, check_close, finish_tests
-  use scenario_fixtures, only: number, read_flight
+  use scenario_fixtures, only: number, run_flight
   implicit none (type, external)
 
   character(len=*), parameter :: nl = new_line('a')
@@ -85,34 +81,6 @@ contains
            '&shape name = ''floor'', kind = ''plane'' /'//nl//balls
   end function floor_input
 
-  !> Runs the flight of `text` for 2 s (or `duration`); the driver's outcome.
-  subroutine run(text, label, flight, outcome, duration)
-    character(len=*), intent(in) :: text, label
-    type(flight_ode_t), intent(out), target :: flight
-    integer, intent(out) :: outcome
-    real(wp), intent(in), optional :: duration
-    integer, allocatable :: phases(:, :)
-    real(wp), allocatable :: q0(:), qd0(:)
-    type(status_t) :: st
-    type(driver_options_t) :: options
-    type(driver_result_t) :: result
-    outcome = 0
-    call read_flight(text, label, flight, q0, qd0, st)
-    call check(st%ok(), label//': built from the input: '//st%text())
-    if (.not. st%ok()) return
-    options%ode%rtol = 1e-12_wp
-    options%ode%atol = 1e-12_wp
-    options%ode%convergence_coefficient = contact_convergence_coefficient
-    options%t_end = 2
-    if (present(duration)) options%t_end = duration
-    options%output_step = 0.01_wp
-    options%progress_seconds = 0
-    call flight%start_series(300)
-    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, phases)
-    call check(st%ok(), label//': ran: '//st%text())
-    outcome = result%outcome
-  end subroutine run
-
   !> Ball k's closed form: its impact times t(1:n) and speeds v(0:n) (v(j) after impact j).
   subroutine bounces(k, n, t, v)
     integer, intent(in) :: k, n
@@ -146,7 +114,8 @@ contains
     real(wp) :: t_a(6), v_a(0:6), t_b(4), v_b(0:4), worst_gap(2), worst_alone(2), worst_spin(2), worst_impact(2), &
                 t_stop
     type(impact_record_t), allocatable :: rows(:)
-    call run(floor_input(ball_groups(1, height(1))//ball_groups(2, height(2))), 'two balls', both, outcome)
+    call run_flight(floor_input(ball_groups(1, height(1))//ball_groups(2, height(2))), 'two balls', both, 2.0_wp, &
+                    outcome)
     call check(outcome == DRIVE_END_TIME, 'two balls: the run goes on to its end (a at rest beside b flying)')
     call check(index(both%outcome, 'contact ''a_floor'' closed at the impact') > 0, &
                'two balls: the outcome says a''s contact closed: '//both%outcome)
@@ -204,8 +173,8 @@ contains
       end do
     end associate
     ! each ball alone
-    call run(floor_input(ball_groups(1, height(1))), 'a alone', alone(1), outcome)
-    call run(floor_input(ball_groups(2, height(2))), 'b alone', alone(2), outcome)
+    call run_flight(floor_input(ball_groups(1, height(1))), 'a alone', alone(1), 2.0_wp, outcome)
+    call run_flight(floor_input(ball_groups(2, height(2))), 'b alone', alone(2), 2.0_wp, outcome)
     worst_impact = 0
     do k = 1, 2
       rows = pack(both%impacts, both%impacts%body_2 == k)
@@ -279,7 +248,7 @@ contains
     second = replace_all(second, '''a''', '''twin''')
     second = replace_all(second, '''a_floor''', '''twin_floor''')
     second = replace_all(second, 'position = '//number(0.0_wp), 'position = '//number(1.0_wp))
-    call run(floor_input(ball_groups(1, height(1))//second), 'same instant', flight, outcome, 1.0_wp)
+    call run_flight(floor_input(ball_groups(1, height(1))//second), 'same instant', flight, 1.0_wp, outcome)
     call check(outcome == DRIVE_END_TIME, 'same instant: runs to the end (1 s, before any rebound is slow): '// &
                flight%outcome)
     call bounces(1, 2, t, v)

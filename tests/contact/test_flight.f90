@@ -30,14 +30,10 @@ program test_flight
   use base_vector, only: cross
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_EVENT_STOP, DRIVE_END_TIME, &
     RECORD_EVENT, RECORD_OUTPUT
-  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
+  use contact_model, only: contact_system_t, contact_convergence_coefficient
   use contact_flight, only: flight_ode_t
-  use contact_closing, only: drive_flight, flight_after_closed
-  use io_input, only: input_text_t, input_from_text
-  use io_solver_config, only: solver_config_t, read_solver_config
-  use io_contact_config, only: read_contact_config
   use testing, only: check, check_close, finish_tests
-  use scenario_fixtures, only: number, ball_over_floor, read_flight
+  use scenario_fixtures, only: number, ball_over_floor, read_flight, read_closed_flight, fly, run_flight
   implicit none (type, external)
 
   character(len=*), parameter :: nl = new_line('a')
@@ -123,35 +119,6 @@ contains
     end associate
   end subroutine dropped_ball
 
-  !> Runs an open-start input to its end; the driver's outcome.
-  subroutine run(text, label, flight, duration, outcome, in_flight)
-    character(len=*), intent(in) :: text, label
-    type(flight_ode_t), intent(out), target :: flight
-    real(wp), intent(in) :: duration
-    integer, intent(out) :: outcome
-    integer, allocatable, intent(out), optional :: in_flight(:)
-    integer, allocatable :: phases(:, :)
-    real(wp), allocatable :: q0(:), qd0(:)
-    type(status_t) :: st
-    type(driver_options_t) :: options
-    type(driver_result_t) :: result
-    outcome = 0
-    call read_flight(text, label, flight, q0, qd0, st)
-    call check(st%ok(), label//': built from the input: '//st%text())
-    if (.not. st%ok()) return
-    options%ode%rtol = 1e-12_wp
-    options%ode%atol = 1e-12_wp
-    options%ode%convergence_coefficient = contact_convergence_coefficient
-    options%t_end = duration
-    options%output_step = 0.01_wp
-    options%progress_seconds = 0
-    call flight%start_series(300)
-    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, phases)
-    call check(st%ok(), label//': ran: '//st%text())
-    outcome = result%outcome
-    if (present(in_flight)) in_flight = phases(1, :)
-  end subroutine run
-
   !> e = 0.5 (energetic; frictionless and spinless it is Newton's too): the
   !> k-th impact meets the ball at v_(k-1) = e^(k-1) v_0 (v_0 = sqrt(2 g h))
   !> and sends it up at v_k = e v_(k-1); between impacts the gap is
@@ -180,7 +147,7 @@ contains
                 worst_spin
     real(wp), allocatable :: e(:)
     real(wp), parameter :: restitution = 0.5_wp, mass = 0.2_wp
-    call run(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', restitution = 0.5, '// &
+    call run_flight(replace(ball_input(h, ''), 'start = ''open''', 'start = ''open'', restitution = 0.5, '// &
                      'close_speed = 0.1'), 'bouncing ball', flight, 3.0_wp, outcome, in_flight)
     call check(outcome == DRIVE_END_TIME, 'bouncing ball: runs to the end, closed after the bounces')
     call check(index(flight%outcome, 'contact ''on_floor'' closed at the impact') == 1, &
@@ -293,7 +260,7 @@ contains
     integer :: outcome, i, n
     real(wp), parameter :: omega_y = -5.0_wp, v_x = (5*u + 2*radius*omega_y)/7
     real(wp) :: contact_velocity(3)
-    call run(replace(replace(ball_input(0.2_wp, ''), 'start = ''open''', 'start = ''open'', restitution = 0.5, '// &
+    call run_flight(replace(replace(ball_input(0.2_wp, ''), 'start = ''open''', 'start = ''open'', restitution = 0.5, '// &
                      'impact_mu = 10'), 'angular_velocity = '//number(spin(1))//', '//number(spin(2))//', '// &
                      number(spin(3)), 'angular_velocity = 0, '//number(omega_y)//', 0'), 'rolling after impact', &
              flight, 0.5_wp, outcome)
@@ -330,7 +297,7 @@ contains
     integer, allocatable :: in_flight(:)
     real(wp), parameter :: omega_y = -5.0_wp, v_x = (5*u + 2*radius*omega_y)/7, drop = 0.2_wp
     real(wp) :: t_1, worst_x, worst_spin
-    call run(replace(replace(ball_input(drop, ''), 'start = ''open''', 'start = ''open'', restitution = 0.5, '// &
+    call run_flight(replace(replace(ball_input(drop, ''), 'start = ''open''', 'start = ''open'', restitution = 0.5, '// &
                      'impact_mu = 10, rolling = .true.'), 'angular_velocity = '//number(spin(1))//', '// &
                      number(spin(2))//', '//number(spin(3)), 'angular_velocity = 0, '//number(omega_y)//', 0'), &
              'rolling on', flight, 1.0_wp, outcome, in_flight)
@@ -375,16 +342,11 @@ contains
   !> (a polynomial motion from the recorded lift-off state) to 1e-9 m.
   subroutine dome_lift_off()
     type(flight_ode_t), target :: flight
-    type(contact_model_t) :: model
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
     type(contact_system_t) :: system
-    type(driver_options_t) :: options
     type(driver_result_t) :: result
     type(status_t) :: st
     real(wp), allocatable :: q0(:), qd0(:)
     integer, allocatable :: in_flight(:), open(:, :)
-    character(len=8), allocatable :: units(:)
     character(len=:), allocatable :: text
     real(wp) :: c0, c_l, s, worst_path, worst_spin, gap_min
     integer :: n, lift, i
@@ -395,21 +357,10 @@ contains
            '&body name = ''ball'', mass = 1, solid_of = ''ball'', position = 0.05, 0, 1.1, angles_deg = 90, 0, 0 /'// &
            nl//'&contact name = ''ball_on_dome'', shape_1 = ''dome'', body_2 = ''ball'', shape_2 = ''ball'', '// &
            'rolling = .true., may_open = .true. /'//nl
-    call input_from_text('dome', text, input, st)
-    call read_solver_config(input, solver, st)
-    call read_contact_config(input, system, st)
-    call build_contact_model(system, model, st)
-    call flight_after_closed(system, model, flight, q0, qd0, units, st)
+    call read_closed_flight(text, 'dome', flight, q0, qd0, st, system)
     call check(st%ok(), 'dome: built from the input: '//st%text())
     if (.not. st%ok()) return
-    options%ode%rtol = 1e-10_wp
-    options%ode%atol = 1e-10_wp
-    options%ode%convergence_coefficient = contact_convergence_coefficient
-    options%t_end = 3
-    options%output_step = 0.01_wp
-    options%progress_seconds = 0
-    call flight%start_series(400)
-    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, open)
+    call fly(flight, q0, qd0, 1e-10_wp, 3.0_wp, 400, result, st, open)
     in_flight = open(1, :)   ! the one contact
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'dome: runs to the end: '//st%text())
     call check(index(flight%outcome, 'lift-off: the normal force of contact ''ball_on_dome'' fell to zero') == 1 &
@@ -479,16 +430,11 @@ contains
   subroutine loop_lift_off_and_landing()
     real(wp), parameter :: rho = 0.9_wp, cos_lift = 11.0_wp/17
     type(flight_ode_t), target :: flight
-    type(contact_model_t) :: model
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
     type(contact_system_t) :: system
-    type(driver_options_t) :: options
     type(driver_result_t) :: result
     type(status_t) :: st
     real(wp), allocatable :: q0(:), qd0(:)
     integer, allocatable :: in_flight(:), open(:, :)
-    character(len=8), allocatable :: units(:)
     character(len=:), allocatable :: text
     character(len=46) :: numbers
     real(wp) :: v0, s, worst_path, s_land, s_ideal, sin_lift, c_ideal(3), v_ideal(3), c_end(3), v_end(3), e(3)
@@ -503,21 +449,10 @@ contains
            numbers(1:22)//', 0, 0, angular_velocity = 0, '//numbers(24:45)//', 0 /'//nl// &
            '&contact name = ''in_loop'', shape_1 = ''loop'', side_1 = -1, body_2 = ''ball'', shape_2 = ''ball'', '// &
            'rolling = .true., may_open = .true. /'//nl
-    call input_from_text('loop', text, input, st)
-    call read_solver_config(input, solver, st)
-    call read_contact_config(input, system, st)
-    call build_contact_model(system, model, st)
-    call flight_after_closed(system, model, flight, q0, qd0, units, st)
+    call read_closed_flight(text, 'loop', flight, q0, qd0, st, system)
     call check(st%ok(), 'loop: built from the input: '//st%text())
     if (.not. st%ok()) return
-    options%ode%rtol = 1e-10_wp
-    options%ode%atol = 1e-10_wp
-    options%ode%convergence_coefficient = contact_convergence_coefficient
-    options%t_end = 3
-    options%output_step = 0.01_wp
-    options%progress_seconds = 0
-    call flight%start_series(400)
-    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, open)
+    call fly(flight, q0, qd0, 1e-10_wp, 3.0_wp, 400, result, st, open)
     in_flight = open(1, :)   ! the one contact
     call check(st%ok() .and. result%outcome == DRIVE_EVENT_STOP, 'loop: ends at the landing: '//st%text())
     call check(index(flight%outcome, 'lift-off: the normal force of contact ''in_loop'' fell to zero') == 1 &

@@ -25,17 +25,14 @@ program test_rider_flight_highest
   use base_status, only: status_t
   use base_text, only: format_real
   use geometry_surface, only: surface_t
-  use geometry_slide_elements, only: slide_element_t
-  use geometry_slide_builder, only: section_part_description_t
-  use geometry_description, only: geometry_description_t, build_geometry
   use rider_model, only: rider_params_t, N_CONTACTS
   use rider_ride, only: ride_options_t, ride_result_t, simulate_ride, RIDE_END_OF_SLIDE
   use rider_extremes, only: EXTREME_GAP
   use testing, only: check, check_close, finish_tests
+  use scenario_fixtures, only: crest_slide
   implicit none (type, external)
 
   real(wp), parameter :: steps(4) = [0.01_wp, 0.0037_wp, 0.023_wp, 0.25_wp]
-  type(geometry_description_t) :: d
   class(surface_t), allocatable :: crest
   type(status_t) :: st
   type(rider_params_t) :: p
@@ -44,16 +41,7 @@ program test_rider_flight_highest
   real(wp) :: gap(N_CONTACTS, size(steps))
   integer :: i, k
 
-  d%kind = 'slide'
-  d%slide%elements%start = [0.0_wp, 0.0_wp, 10.0_wp]
-  d%slide%elements%transition_length = 1
-  d%slide%elements%exact = .true.
-  d%slide%elements%elements = [slide_element_t(kind='straight', length=5.0_wp, slope_deg=30.0_wp), &
-                               slide_element_t(kind='straight', length=3.0_wp, slope_deg=2.0_wp), &
-                               slide_element_t(kind='straight', length=8.0_wp, slope_deg=15.0_wp), &
-                               slide_element_t(kind='runout', length=6.0_wp, slope_deg=1.0_wp)]
-  d%slide%section%parts = [section_part_description_t(kind='circle', radius=0.5_wp)]
-  call build_geometry(d, crest, st)
+  call crest_slide(crest, st)
   call check(st%ok(), 'the crest slide: '//st%text())
   p%drag = .false.
   options%progress_seconds = 0

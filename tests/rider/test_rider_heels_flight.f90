@@ -24,20 +24,17 @@ program test_rider_heels_flight
   use base_kinds, only: wp
   use base_status, only: status_t
   use geometry_surface, only: surface_t
-  use geometry_slide_elements, only: slide_element_t
-  use geometry_slide_builder, only: section_part_description_t
-  use geometry_description, only: geometry_description_t, build_geometry
   use kinetostatics_mechanism, only: mechanism_workspace_t
   use rider_model, only: rider_params_t, CONTACT_HEELS, CONTACT_PELVIS, CONTACT_BACK, N_CONTACTS
   use rider_ride, only: ride_options_t, ride_result_t, rider_ode_t, prepare_ride, simulate_ride, RIDE_LIFT_OFF
   use rider_flight, only: contact_gap, build_state, N_FULL
   use kinetostatics_impact, only: impact_law_t
   use testing, only: check, check_close, finish_tests
+  use scenario_fixtures, only: crest_slide
   implicit none (type, external)
 
   integer, parameter :: heels_open = 2   ! the build with the heels' contact open (rider_ride)
 
-  type(geometry_description_t) :: d
   class(surface_t), allocatable :: crest
   type(status_t) :: st
   type(rider_params_t) :: p
@@ -45,16 +42,7 @@ program test_rider_heels_flight
   type(ride_result_t) :: stay, fly
   real(wp) :: g
 
-  d%kind = 'slide'
-  d%slide%elements%start = [0.0_wp, 0.0_wp, 10.0_wp]
-  d%slide%elements%transition_length = 1
-  d%slide%elements%exact = .true.
-  d%slide%elements%elements = [slide_element_t(kind='straight', length=5.0_wp, slope_deg=30.0_wp), &
-                               slide_element_t(kind='straight', length=3.0_wp, slope_deg=2.0_wp), &
-                               slide_element_t(kind='straight', length=8.0_wp, slope_deg=15.0_wp), &
-                               slide_element_t(kind='runout', length=6.0_wp, slope_deg=1.0_wp)]
-  d%slide%section%parts = [section_part_description_t(kind='circle', radius=0.5_wp)]
-  call build_geometry(d, crest, st)
+  call crest_slide(crest, st)
   call check(st%ok(), 'the crest slide: '//st%text())
   p%drag = .false.
   g = norm2(p%gravity)

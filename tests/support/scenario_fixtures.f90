@@ -1,15 +1,22 @@
 !> Set-ups several tests share: a number as input text or in a message, the continuity of
 !> an element chain across its joints, a point mass built from input text
-!> and started, a ball over a floor built as a flight from input text.
+!> and started, a ball over a floor built as a flight from input text, a
+!> flight driven to its end, the crest slide of the rider's flight tests.
 module scenario_fixtures
   use base_kinds, only: wp
   use base_status, only: status_t
   use geometry_curve, only: curve_point_t
+  use geometry_surface, only: surface_t
+  use geometry_slide_elements, only: slide_element_t
+  use geometry_slide_builder, only: section_part_description_t
+  use geometry_description, only: geometry_description_t, build_geometry
   use geometry_slide_elements, only: element_chain_curve_t
   use numerics_ode, only: ode_integrator_t
+  use numerics_event_driver, only: driver_options_t, driver_result_t
   use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t
-  use contact_model, only: contact_system_t
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
   use contact_flight, only: flight_ode_t, build_flight
+  use contact_closing, only: drive_flight, flight_after_closed
   use io_input, only: input_text_t, input_from_text
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
@@ -17,7 +24,8 @@ module scenario_fixtures
   use testing, only: check
   implicit none (type, external)
   private
-  public :: number, real_text, joint_jumps, start_point_mass, ball_over_floor, read_flight
+  public :: number, real_text, joint_jumps, start_point_mass, ball_over_floor, read_flight, fly, run_flight, &
+    read_closed_flight, crest_slide
 
   character(len=*), parameter :: nl = new_line('a')
 
@@ -128,4 +136,91 @@ contains
     call build_flight(read, flight, q0, qd0, units, st)
     if (present(system)) system = read
   end subroutine read_flight
+
+  !> The flight of the contact scenario in `text` (named `label`) that starts
+  !> closed: the model of its whole system, closed, and the flight from its
+  !> lift-off (contact_closing's flight_after_closed), with its start.
+  subroutine read_closed_flight(text, label, flight, q0, qd0, st, system)
+    character(len=*), intent(in) :: text, label
+    type(flight_ode_t), intent(out) :: flight
+    real(wp), allocatable, intent(out) :: q0(:), qd0(:)
+    type(status_t), intent(out) :: st
+    type(contact_system_t), intent(out), optional :: system
+    type(input_text_t) :: input
+    type(solver_config_t) :: solver
+    type(contact_system_t) :: read
+    type(contact_model_t) :: model
+    character(len=8), allocatable :: units(:)
+    call input_from_text(label, text, input, st)
+    call read_solver_config(input, solver, st)
+    call read_contact_config(input, read, st)
+    call build_contact_model(read, model, st)
+    call flight_after_closed(read, model, flight, q0, qd0, units, st)
+    if (present(system)) system = read
+  end subroutine read_closed_flight
+
+  !> Drives `flight` from (q0, qd0) for `duration` s at rtol = atol =
+  !> `tolerance` (the contact scenario's convergence coefficient), records
+  !> every 0.01 s (room for `records` at the start): the driver's result and
+  !> each contact's open (1) or closed (0) at each record.
+  subroutine fly(flight, q0, qd0, tolerance, duration, records, result, st, open)
+    type(flight_ode_t), intent(inout), target :: flight
+    real(wp), intent(in) :: q0(:), qd0(:), tolerance, duration
+    integer, intent(in) :: records
+    type(driver_result_t), intent(out) :: result
+    type(status_t), intent(out) :: st
+    integer, allocatable, intent(out) :: open(:, :)
+    type(driver_options_t) :: options
+    options%ode%rtol = tolerance
+    options%ode%atol = tolerance
+    options%ode%convergence_coefficient = contact_convergence_coefficient
+    options%t_end = duration
+    options%output_step = 0.01_wp
+    options%progress_seconds = 0
+    call flight%start_series(records)
+    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, open)
+  end subroutine fly
+
+  !> The flight of the contact scenario in `text` (named `label` in the
+  !> checks) built and flown for `duration` s at 1e-12 (fly): the driver's
+  !> outcome (0 when it was not built), and with `in_flight` the first
+  !> contact's open (1) or closed (0) at each record.
+  subroutine run_flight(text, label, flight, duration, outcome, in_flight)
+    character(len=*), intent(in) :: text, label
+    type(flight_ode_t), intent(out), target :: flight
+    real(wp), intent(in) :: duration
+    integer, intent(out) :: outcome
+    integer, allocatable, intent(out), optional :: in_flight(:)
+    integer, allocatable :: open(:, :)
+    real(wp), allocatable :: q0(:), qd0(:)
+    type(status_t) :: st
+    type(driver_result_t) :: result
+    outcome = 0
+    call read_flight(text, label, flight, q0, qd0, st)
+    call check(st%ok(), label//': built from the input: '//st%text())
+    if (.not. st%ok()) return
+    call fly(flight, q0, qd0, 1e-12_wp, duration, 300, result, st, open)
+    call check(st%ok(), label//': ran: '//st%text())
+    outcome = result%outcome
+    if (present(in_flight)) in_flight = open(1, :)
+  end subroutine run_flight
+
+  !> The crest of inputs/parts/crest_slide.nml, built in code: 5 m at 30
+  !> deg, 3 m at 2 deg, a convex bend (transition 1 m) into 8 m at 15 deg,
+  !> a run-out of 6 m at 1 deg; a tube of radius 0.5 m from (0, 0, 10).
+  subroutine crest_slide(crest, st)
+    class(surface_t), allocatable, intent(out) :: crest
+    type(status_t), intent(out) :: st
+    type(geometry_description_t) :: d
+    d%kind = 'slide'
+    d%slide%elements%start = [0.0_wp, 0.0_wp, 10.0_wp]
+    d%slide%elements%transition_length = 1
+    d%slide%elements%exact = .true.
+    d%slide%elements%elements = [slide_element_t(kind='straight', length=5.0_wp, slope_deg=30.0_wp), &
+                                 slide_element_t(kind='straight', length=3.0_wp, slope_deg=2.0_wp), &
+                                 slide_element_t(kind='straight', length=8.0_wp, slope_deg=15.0_wp), &
+                                 slide_element_t(kind='runout', length=6.0_wp, slope_deg=1.0_wp)]
+    d%slide%section%parts = [section_part_description_t(kind='circle', radius=0.5_wp)]
+    call build_geometry(d, crest, st)
+  end subroutine crest_slide
 end module scenario_fixtures
