@@ -223,8 +223,13 @@ contains
     case default
       denom = q%criticality
       if (denom <= 0) then
-        call set_status(status, STATUS_DOMAIN, 'the flow reached critical (Fr <= 1): the ' // &
-                        'Saint-Venant correction is singular there')
+        ! said with what to change: a slow or wide start is the usual cause
+        call set_status(status, STATUS_DOMAIN, 'the flow reached critical (Fr = '// &
+                        format_short(sqrt(1/(1 - q%criticality)))//' <= 1: deeper and '// &
+                        'slower than the shallow supercritical flow of the model at u = '//format_short(u)// &
+                        '): the Saint-Venant correction is singular there; start the water faster or '// &
+                        'as a narrower band (&water start, speed0, v_left0, v_right0: docs/water.md) or '// &
+                        'switch the correction off (correction = ''off'')')
         return
       end if
       kappa_d = q%area_rate
