@@ -1,7 +1,7 @@
 !> The figures of a ride an engineer asks for (docs/rider.md, "Ride report"):
 !> ride time, top speed and where, the largest and smallest felt
-!> acceleration per body axis and where, how high each contact climbs the
-!> wall, the smallest normal force per contact (the lift-off margin), the
+!> acceleration per body axis and where, how steep and how high each contact
+!> rides up the wall, the smallest normal force per contact (the lift-off margin), the
 !> largest tipping lever arm, the exit speed, whether (and where) the rider
 !> went over the top of a wall, and each user limit's verdict.
 !> Computed from a recorded ride (rider_ride) with the pure functions of
@@ -22,7 +22,7 @@ module design_ride_report
   use rider_ride, only: ride_series_t
   use rider_flight, only: ride_flights_t
   use rider_extremes, only: felt_basis, FELT_FREE_FALL, FELT_NOT_JUDGED, EXTREME_TOP_SPEED, EXTREME_FELT_MAX, &
-    EXTREME_FELT_MIN, EXTREME_CLIMB, EXTREME_NORMAL_MIN, EXTREME_LEVER
+    EXTREME_FELT_MIN, EXTREME_CLIMB, EXTREME_NORMAL_MIN, EXTREME_LEVER, EXTREME_WALL_DISTANCE
   use design_ride_evaluation, only: felt_acceleration, felt_acceleration_units, tipping_lever_arm, ride_limit_t, limit_verdict_t, &
     evaluate_limit, series_extreme, noise_free, limit_noise_scale
   implicit none (type, external)
@@ -46,6 +46,10 @@ module design_ride_report
     real(wp) :: climb_angle(N_CONTACTS) = 0      ! rad, largest |wall angle| (signed: + towards +v)
     real(wp) :: climb_distance(N_CONTACTS) = 0   ! m along the wall there (signed)
     real(wp) :: climb_at(N_CONTACTS) = 0         ! m, where
+    ! the highest climb: the largest |distance along the wall from the bottom|,
+    ! not where the angle is largest on a vertical wall or a widening section
+    real(wp) :: wall_distance_max(N_CONTACTS) = 0   ! m (signed: + towards +v)
+    real(wp) :: wall_distance_at(N_CONTACTS) = 0    ! m, where
     real(wp) :: normal_min(N_CONTACTS) = 0, normal_min_at(N_CONTACTS) = 0   ! N, m
     real(wp) :: lever_max = 0, lever_max_at = 0  ! m (signed, largest |l|), m
     type(ride_limit_t), allocatable :: limits(:)
@@ -113,6 +117,9 @@ contains
       report%climb_angle(k) = s%contact(k)%wall_angle(at)
       report%climb_distance(k) = s%contact(k)%wall_distance(at)
       report%climb_at(k) = where(at)
+      at = maxloc(abs(s%contact(k)%wall_distance(:n)), dim=1)
+      report%wall_distance_max(k) = s%contact(k)%wall_distance(at)
+      report%wall_distance_at(k) = where(at)
       call series_extreme(s%contact(k)%normal_force(:n), where, .false., report%normal_min(k), &
                           report%normal_min_at(k))
     end do
@@ -215,6 +222,8 @@ contains
         report%climb_angle(k) = x%value(EXTREME_CLIMB + k - 1)
         report%climb_distance(k) = x%wall_distance(EXTREME_CLIMB + k - 1)
         report%climb_at(k) = x%at(EXTREME_CLIMB + k - 1)
+        report%wall_distance_max(k) = x%value(EXTREME_WALL_DISTANCE + k - 1)
+        report%wall_distance_at(k) = x%at(EXTREME_WALL_DISTANCE + k - 1)
         report%normal_min(k) = x%value(EXTREME_NORMAL_MIN + k - 1)
         report%normal_min_at(k) = x%at(EXTREME_NORMAL_MIN + k - 1)
       end do

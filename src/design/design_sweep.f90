@@ -79,10 +79,13 @@ module design_sweep
     'smallest felt normal acceleration (pressed onto the slide), multiples of |g|', 'where', &
     'largest magnitude of the felt acceleration (a - g)/|g|', 'where', &
     'largest tipping lever arm at the pelvis (signed)', 'where', &
-    'highest climb of the pelvis up the wall: angle from the bottom (+ to the left)', &
-    'the distance along the wall there', 'where (pelvis arc length)', &
-    'highest climb of the heels up the wall', 'the distance along the wall there', 'where', &
-    'highest climb of the back up the wall', 'the distance along the wall there', 'where', &
+    'steepest on the wall: the pelvis''s largest angle from the bottom (+ to the left)', &
+    'highest on the wall: the pelvis''s largest distance along the wall from the bottom', &
+    'where the angle is largest (pelvis arc length)', &
+    'the heels'' largest angle from the bottom', 'the heels'' largest distance along the wall', &
+    'where the angle is largest', &
+    'the back''s largest angle from the bottom', 'the back''s largest distance along the wall', &
+    'where the angle is largest', &
     'smallest normal force at the pelvis (lift-off margin)', 'smallest normal force at the heels', &
     'smallest normal force at the back', 'times a contact entered or left the water', 'integrator steps']
 
@@ -358,7 +361,7 @@ contains
     f(18:19) = [magnitude, ride%series%arc_length(at)]
     f(20:21) = [r%lever_max, r%lever_max_at]
     do k = 1, N_CONTACTS
-      f(22 + 3*(k - 1):24 + 3*(k - 1)) = [r%climb_angle(k), r%climb_distance(k), r%climb_at(k)]
+      f(22 + 3*(k - 1):24 + 3*(k - 1)) = [r%climb_angle(k), r%wall_distance_max(k), r%climb_at(k)]
       f(30 + k) = r%normal_min(k)
     end do
     f(34) = ride%drag_switches

@@ -2,7 +2,10 @@
 !> locates them between its records on the integrator's dense output
 !> (numerics_dense_extremes, docs/accuracy.md): the top speed, the largest
 !> and smallest felt acceleration per body axis, the largest |wall angle| of
-!> each contact, the smallest normal force of each contact, the largest
+!> each contact (the steepest it rides), the largest |distance along the
+!> wall| of each contact (the highest it climbs: on a flume's vertical wall
+!> or a widening section not where the angle is largest), the smallest
+!> normal force of each contact, the largest
 !> |tipping lever arm| and, with may_fly, each open contact's highest gap
 !> above the slide (the flight's highest point: on dense output, so it does
 !> not depend on the output step), each with where (the pelvis's arc
@@ -31,11 +34,12 @@ module rider_extremes
   public :: felt_acceleration, tipping_lever_arm, ride_extremes_t, extreme_quantities, felt_basis
   public :: FELT_MODEL, FELT_FREE_FALL, FELT_NOT_JUDGED
   public :: N_EXTREMES, N_ATTACHED, EXTREME_TOP_SPEED, EXTREME_FELT_MAX, EXTREME_FELT_MIN, EXTREME_CLIMB, &
-    EXTREME_NORMAL_MIN, EXTREME_LEVER, EXTREME_GAP
+    EXTREME_NORMAL_MIN, EXTREME_LEVER, EXTREME_GAP, EXTREME_WALL_DISTANCE
 
   !> the quantities (first of three for per-axis and per-contact ones)
   integer, parameter :: EXTREME_TOP_SPEED = 1, EXTREME_FELT_MAX = 2, EXTREME_FELT_MIN = 5, &
-    EXTREME_CLIMB = 8, EXTREME_NORMAL_MIN = 11, EXTREME_LEVER = 14, EXTREME_GAP = 15, N_EXTREMES = 17
+    EXTREME_CLIMB = 8, EXTREME_NORMAL_MIN = 11, EXTREME_LEVER = 14, EXTREME_GAP = 15, &
+    EXTREME_WALL_DISTANCE = 18, N_EXTREMES = 20
   !> numbers kept with each: the reported value (signed), the arc length, the wall distance
   integer, parameter :: N_ATTACHED = 3
 
@@ -46,10 +50,11 @@ module rider_extremes
   type :: ride_extremes_t
     logical :: located = .false.          ! the ride located them (else: take them from the records)
     integer :: records = 0                ! records they were located among
-    real(wp) :: value(N_EXTREMES) = 0     ! speed, felt (3 max, 3 min), wall angle, normal force, lever arm, gap
+    real(wp) :: value(N_EXTREMES) = 0     ! speed, felt (3 max, 3 min), wall angle, normal force, lever arm, gap,
+                                          ! wall distance
     real(wp) :: at(N_EXTREMES) = 0        ! m, the pelvis's arc length there (a gap: its contact's)
     real(wp) :: time(N_EXTREMES) = 0      ! s
-    real(wp) :: wall_distance(N_EXTREMES) = 0   ! m, for the wall angles: along the wall there
+    real(wp) :: wall_distance(N_EXTREMES) = 0   ! m, along the wall there (for the wall angles and distances)
     integer :: searches = 0, evaluations = 0    ! brackets searched, model evaluations for them
   end type ride_extremes_t
 
@@ -93,7 +98,7 @@ contains
   end function tipping_lever_arm
 
   !> The quantities of one state as values to maximise (minima negated,
-  !> |wall angle|, |lever arm| or 0 where the pelvis does not press) and
+  !> |wall angle|, |wall distance|, |lever arm| or 0 where the pelvis does not press) and
   !> their attached numbers, with the contacts `airborne` open: the felt
   !> acceleration and the lever arm on felt_basis (0 in a free fall; -huge,
   !> never a maximum, where not judged); the open contacts' gaps (m, above
@@ -125,6 +130,9 @@ contains
       values(EXTREME_CLIMB + k - 1) = abs(wall_angle(k))
       attached(1, EXTREME_CLIMB + k - 1) = wall_angle(k)
       attached(3, EXTREME_CLIMB + k - 1) = wall_distance(k)
+      values(EXTREME_WALL_DISTANCE + k - 1) = abs(wall_distance(k))
+      attached(1, EXTREME_WALL_DISTANCE + k - 1) = wall_distance(k)
+      attached(3, EXTREME_WALL_DISTANCE + k - 1) = wall_distance(k)
       ! an open contact carries nothing: 0, not the closure's noise (which
       ! the extremes would search as candidates for the minimum)
       values(EXTREME_NORMAL_MIN + k - 1) = merge(0.0_wp, -normal_force(k), btest(airborne, k - 1))

@@ -446,10 +446,13 @@ contains
       end do
       do k = 1, N_CONTACTS
         c = trim(contact_names(k))
-        call summary%add(c//'_wall_angle', c//' highest on the wall', resolved(k, r%climb_angle(k)), 'rad', &
+        call summary%add(c//'_wall_angle', c//' steepest on the wall', resolved(k, r%climb_angle(k)), 'rad', &
                          'deg from the bottom'//side(resolved(k, r%climb_angle(k))), degrees)
-        call summary%add(c//'_wall_distance', '  along the wall', resolved(k, r%climb_distance(k)), 'm')
         call summary%add(c//'_wall_arc_length', '  at arc length', r%climb_at(k), 'm')
+        call summary%add(c//'_wall_distance', c//' highest on the wall', &
+                         resolved_distance(r%wall_distance_max(k)), 'm', &
+                         'm along the wall from the bottom'//side(resolved_distance(r%wall_distance_max(k))))
+        call summary%add(c//'_wall_distance_arc_length', '  at arc length', r%wall_distance_at(k), 'm')
         call summary%add(c//'_normal_force_min', c//' normal force min', noise_free(r%normal_min(k), force_scale), 'N')
         call summary%add(c//'_normal_force_min_arc_length', '  at arc length', r%normal_min_at(k), 'm')
       end do
@@ -496,19 +499,30 @@ contains
   contains
 
     !> A climb of contact k as printed: 0 where the contact stayed within the
-    !> closure's tolerance (1e-10 m, mechanism_t's closure_tolerance) of the
-    !> bottom, which a position solved to that tolerance does not resolve
-    !> (rounding noise such as 5e-14 deg on a straight slide); the file keeps
-    !> the computed value.
+    !> closure's tolerance of the bottom (unresolved); the file keeps the
+    !> computed value.
     pure real(wp) function resolved(k, climb)
       integer, intent(in) :: k
       real(wp), intent(in) :: climb
-      real(wp), parameter :: closure_tolerance = 1e-10_wp   ! m
-      resolved = merge(0.0_wp, climb, abs(r%climb_distance(k)) < closure_tolerance)
+      resolved = merge(0.0_wp, climb, unresolved(r%climb_distance(k)))
     end function resolved
 
-    !> The scale of limit k's quantity in its report unit, for noise_free
-    !> (0: no floor; speeds, times, counts are no rounding noise)
+    !> A distance up the wall as printed: 0 where unresolved.
+    pure real(wp) function resolved_distance(distance)
+      real(wp), intent(in) :: distance
+      resolved_distance = merge(0.0_wp, distance, unresolved(distance))
+    end function resolved_distance
+
+    !> Within the closure's tolerance (1e-10 m, mechanism_t's
+    !> closure_tolerance) of the bottom, which a position solved to that
+    !> tolerance does not resolve (rounding noise such as 5e-14 deg on a
+    !> straight slide).
+    pure logical function unresolved(distance)
+      real(wp), intent(in) :: distance
+      real(wp), parameter :: closure_tolerance = 1e-10_wp   ! m
+      unresolved = abs(distance) < closure_tolerance
+    end function unresolved
+
     !> What the sign of a felt acceleration along axis k (2 lateral, 3 normal) means.
     pure function sense(k, value) result(text)
       integer, intent(in) :: k

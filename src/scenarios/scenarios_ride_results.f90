@@ -182,10 +182,12 @@ contains
     do k = 1, N_CONTACTS
       c = g//trim(contact_names(k))//'/'
       call file%write_scalar(c//'wall_angle_max', r%climb_angle(k), 'rad', &
-                             'highest climb up the wall: angle from the bottom (signed, + to the left)', status)
-      call file%write_scalar(c//'wall_distance_max', r%climb_distance(k), 'm', 'the distance along the wall there', &
-                             status)
+                             'steepest on the wall: the largest angle from the bottom (signed, + to the left)', status)
       call file%write_scalar(c//'wall_arc_length', r%climb_at(k), 'm', 'where (pelvis arc length)', status)
+      call file%write_scalar(c//'wall_distance_max', r%wall_distance_max(k), 'm', 'highest on the wall: the '// &
+                             'largest distance along the wall from the bottom (signed, + to the left)', status)
+      call file%write_scalar(c//'wall_distance_max_arc_length', r%wall_distance_at(k), 'm', &
+                             'where (pelvis arc length)', status)
       call file%write_scalar(c//'normal_force_min', r%normal_min(k), 'N', 'smallest normal force (lift-off '// &
                              'margin)', status)
       call file%write_scalar(c//'normal_force_min_arc_length', r%normal_min_at(k), 'm', 'where', status)

@@ -469,11 +469,15 @@ contains
     end do
     if (allocated(self%wall_angle)) then
       do k = 1, 2
+        ! the steepest and the highest: apart on a vertical wall or a widening section
         i = maxloc(abs(self%wall_angle(k, :)), dim=1)
         call summary%add('vehicle_'//trim(contact_names(k))//'_wall_angle', trim(contact_names(k))// &
-                         ' wall angle max', self%wall_angle(k, i)*180/pi, 'deg', 'deg ('// &
-                         format_short(self%wall_distance(k, i))//' m up the wall) at arc length '// &
+                         ' wall angle max', self%wall_angle(k, i)*180/pi, 'deg', 'deg at arc length '// &
                          format_short(self%where(i))//' m')
+        i = maxloc(abs(self%wall_distance(k, :)), dim=1)
+        call summary%add('vehicle_'//trim(contact_names(k))//'_wall_distance', trim(contact_names(k))// &
+                         ' highest on the wall', self%wall_distance(k, i), 'm', 'm along the wall from the '// &
+                         'bottom at arc length '//format_short(self%where(i))//' m')
       end do
     end if
     if (.not. allocated(self%verdicts)) return

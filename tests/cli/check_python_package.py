@@ -98,6 +98,7 @@ def check_ride(run, datasets, path):
             if report.loc[name, "value"] != e[name][()]:
                 fail(f"{path}: report {name} {report.loc[name, 'value']} != {e[name][()]}")
         for name, where in (("top_speed", "top_speed_arc_length"), ("heels/wall_angle_max", "heels/wall_arc_length"),
+                            ("heels/wall_distance_max", "heels/wall_distance_max_arc_length"),
                             ("acceleration_normal_max", "acceleration_normal_max_arc_length")):
             if report.loc[name, "where_arc_length_m"] != e[where][()]:
                 fail(f"{path}: report {name} where {report.loc[name, 'where_arc_length_m']} != {e[where][()]}")

@@ -21,7 +21,9 @@ check '! grep -q "^  felt .*  *-[0-9.e]* g$" "$work/ride.out"' "a felt figure pr
 check 'grep -q "^  felt lateral max  *0\.0[0-9]* g, pushed to the left$" "$work/ride.out"' "lateral max: $(grep lateral "$work/ride.out")"
 check 'grep -q "^  felt lateral min  *-0\.0[0-9]* g, pushed to the right$" "$work/ride.out"' "lateral min: $(grep lateral "$work/ride.out")"
 for c in pelvis heels back; do
-  check 'grep -q "^  $c highest on the wall  *[0-9.]* deg from the bottom, on the left$" "$work/ride.out"' \
+  check 'grep -q "^  $c steepest on the wall  *[0-9.]* deg from the bottom, on the left$" "$work/ride.out"' \
+    "$c: the wall's side: $(grep "$c steepest" "$work/ride.out")"
+  check 'grep -q "^  $c highest on the wall  *[0-9.]* m along the wall from the bottom, on the left$" "$work/ride.out"' \
     "$c: the wall's side: $(grep "$c highest" "$work/ride.out")"
 done
 # the JSON keeps the signed values under their names

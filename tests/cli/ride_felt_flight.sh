@@ -32,7 +32,9 @@ check 'grep -q "LIMIT EXCEEDED: acceleration_normal >= 0.2 g .*; worst 0 [a-z]* 
 check 'grep -q "felt normal min  *0 g, weightless" "$work/jump.out"' "normal min: $(grep 'felt normal min' "$work/jump.out")"
 check 'grep -q "felt g not judged  *0.0174.. s with the pelvis in the air or alone on the slide" "$work/jump.out"' \
   "time not judged: $(grep 'not judged' "$work/jump.out")"
-check '[ $(grep -c "highest on the wall *0 deg from the bottom$" "$work/jump.out") = 3 ]' \
+check '[ $(grep -c "steepest on the wall *0 deg from the bottom$" "$work/jump.out") = 3 ]' \
+  "wall climbs on the straight: $(grep 'steepest on the wall' "$work/jump.out")"
+check '[ $(grep -c "highest on the wall *0 m along the wall from the bottom$" "$work/jump.out") = 3 ]' \
   "wall climbs on the straight: $(grep 'highest on the wall' "$work/jump.out")"
 "$py" - "$work/jump.h5" "$work/jump.json" >"$work/check.out" 2>&1 <<'EOF'
 import sys, json
