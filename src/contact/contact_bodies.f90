@@ -14,8 +14,9 @@
 !> its twist).
 !>
 !> A closed contact's body touching another surface while carried (two
-!> closed contacts on one body) ends the run (contact_flight), as do
-!> body-to-body contacts (refused at the start: check_flight_system).
+!> closed contacts on one body) ends the run (contact_flight), as does a
+!> flying body hitting a carried one; two flying bodies hitting each other
+!> is an impact of the pair (contact_body_impact), and they fly on.
 module contact_bodies
   use base_kinds, only: wp
   use base_text, only: format_short

@@ -18,9 +18,10 @@
 !> opening first (contact_open_gaps, opening_gap). Without a restitution
 !> the run ends at the landing (exit status 0, the outcome says "landing"
 !> with the approach speed). With one the landing is an impact
-!> (kinetostatics_impact): K = rigid_body_delassus of the body's mass, its
-!> inertia in world axes and the arm from its centre of mass to the contact
-!> point, the impulse from resolve_impact with that contact's restitution
+!> (contact_body_impact collide): K of the pair at the contact point (the
+!> body's rigid_body_delassus from its mass, its inertia in world axes and
+!> the arm from its centre of mass to the contact point; the ground adds
+!> nothing), the impulse from resolve_impact with that contact's restitution
 !> and impact mu, the body's twist changed by it (the pose kept), and the
 !> body flies on (the integrator restarts). A rebound slower than the
 !> contact's close_speed closes it: a further impulse takes away what is
@@ -44,13 +45,24 @@
 !> as they were. A carried body touching another surface ends the run (two
 !> closed contacts on one body are not built).
 !>
-!> The contacts that can open are those of bodies with the ground (each
-!> shape_1 fixed, at the ground's pose); of each body's contacts at most one
-!> starts closed (it carries the body); the friction, rolling, level and
-!> chain of a contact that starts open are the closed contact's after
-!> closing, so they need restitution (without it the run ends at the
-!> landing and they would be unused); anything else is refused (a contact
-!> between two bodies: a body landing on another body is not built).
+!> Bodies hit each other: a contact between two bodies (body_1 a body, its
+!> shape_1 on body_1's frame) that starts open is watched as the ground's
+!> are, its gap at both bodies' poses; its landing is an impact of the
+!> pair (contact_body_impact: K = K_1 + K_2, +L on body_2, -L on body_1, the
+!> pair's momentum kept) while both fly, and the bodies fly on. A rebound
+!> below its close_speed, or a hit on a body that a closed contact carries
+!> (whose carrying contact would take an impulse too), ends the run there,
+!> saying so (bodies closed on each other, and impacts through a closed
+!> contact, are not built).
+!>
+!> The contacts that can open and close are those of bodies with the ground
+!> (each shape_1 fixed, at the ground's pose); of each body's contacts at
+!> most one starts closed (it carries the body); the friction, rolling,
+!> level and chain of a contact that starts open are the closed contact's
+!> after closing, so they need restitution (without it the run ends at the
+!> landing and they would be unused). A contact between two bodies starts
+!> open, may not open (may_open) and has no friction, rolling, level or
+!> chain (it never closes); anything else is refused.
 module contact_flight
   use base_kinds, only: wp
   use base_text, only: format_short
@@ -58,7 +70,7 @@ module contact_flight
   use numerics_event_driver, only: EVENT_STOP, EVENT_RESTART
   use numerics_linear_algebra, only: lu_factor, lu_solve
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
-  use kinetostatics_impact, only: impact_law_t, impact_outcome_t, resolve_impact, rigid_body_delassus
+  use kinetostatics_impact, only: impact_law_t
   use base_vector, only: cross
   use geometry_solid, only: solid_properties_t
   use contact_factory, only: body_from_spec
@@ -66,6 +78,7 @@ module contact_flight
   use contact_model, only: contact_system_t, contact_model_t, build_system_shapes, body_index, LEVEL_POSITION, &
     CHAIN_AUTO
   use contact_open_gaps, only: open_gaps_t, start_open_gaps
+  use contact_body_impact, only: impact_body_t, collision_t, collide
   implicit none (type, external)
   private
   public :: flight_ode_t, impact_record_t, build_flight, starts_open, restart_flight, check_flight_system, &
@@ -152,14 +165,6 @@ contains
     type(status_t), intent(inout) :: status
     integer :: k, b
     if (.not. status%ok()) return
-    k = findloc([(system%contacts(k)%body_1 /= 'ground', k = 1, size(system%contacts))], .true., dim=1)
-    if (k > 0) then
-      call set_status(status, STATUS_INVALID_INPUT, 'contact '''//system%contacts(k)%name//''': body_1 = '''// &
-        system%contacts(k)%body_1//''': where contacts open and close (start = ''open'', may_open) every '// &
-        'contact is between the ground and a body (a body landing on another body, or one flying while '// &
-        'another stays in contact on it, is not built)')
-      return
-    end if
     do k = 1, size(system%contacts)
       associate (c => system%contacts(k))
         if (body_index(system, c%body_2) <= 0) then
@@ -167,6 +172,23 @@ contains
             ''' is not a body')
           return
         end if
+        if (c%body_1 == 'ground') cycle
+        if (body_index(system, c%body_1) <= 0) then
+          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_1 = '''//c%body_1// &
+            ''' is not a body')
+        else if (.not. c%start_open .or. c%may_open) then
+          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_1 = '''//c%body_1// &
+            ''': where contacts open and close (start = ''open'', may_open) a contact between two bodies starts '// &
+            'open and may not open (a body carried by another while bodies fly, or lifting off it, is not '// &
+            'built): give start = ''open'' and no may_open, or make every contact closed')
+        else if (allocated(c%friction%kind) .or. c%rolling .or. c%level /= LEVEL_POSITION .or. &
+                 c%chain /= CHAIN_AUTO) then
+          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': friction, rolling, level and '// &
+            'chain are the closed contact''s, and a contact between two bodies never closes (its impacts make '// &
+            'the bodies fly apart; a rebound below close_speed ends the run): leave them out (impact_mu is the '// &
+            'friction of its impacts)')
+        end if
+        if (.not. status%ok()) return
       end associate
     end do
     do b = 1, size(system%bodies)
@@ -407,21 +429,32 @@ contains
     end if
     do c = 1, size(lands)
       if (.not. lands(c)) cycle
-      if (self%carrier(self%gaps%body(c)) == 0) cycle
-      action = max(action, EVENT_STOP)
-      call add_outcome(self, 'contact '''//self%system%contacts(c)%name//''': body '''// &
-                       self%system%contacts(c)%body_2//''' touches shape '''//self%system%contacts(c)%shape_1// &
-                       ''' at t = '//format_short(t)//' s while contact '''// &
-                       self%system%contacts(self%carrier(self%gaps%body(c)))%name//''' carries it (two closed '// &
-                       'contacts on one body are not built): the run ends here')
-      return
+      associate (contact => self%system%contacts(c))
+        if (self%carrier(self%gaps%body(c)) > 0) then
+          action = max(action, EVENT_STOP)
+          call add_outcome(self, 'contact '''//contact%name//''': body '''//contact%body_2//''' touches shape '''// &
+                           contact%shape_1//''' at t = '//format_short(t)//' s while contact '''// &
+                           self%system%contacts(self%carrier(self%gaps%body(c)))%name//''' carries it (two '// &
+                           'closed contacts on one body are not built): the run ends here')
+          return
+        end if
+        if (self%gaps%body_1(c) == 0) cycle
+        if (self%carrier(self%gaps%body_1(c)) == 0) cycle
+        action = max(action, EVENT_STOP)
+        call add_outcome(self, 'contact '''//contact%name//''': body '''//contact%body_2//''' hits body '''// &
+                         contact%body_1//''' at t = '//format_short(t)//' s while contact '''// &
+                         self%system%contacts(self%carrier(self%gaps%body_1(c)))%name//''' carries '''// &
+                         contact%body_1//''' (an impact on a carried body, whose carrying contact would take an '// &
+                         'impulse too, is not built): the run ends here')
+        return
+      end associate
     end do
     do b = 1, size(self%body_frame)
-      if (count(lands .and. self%gaps%body == b) > 1) then
+      if (count(lands .and. (self%gaps%body == b .or. self%gaps%body_1 == b)) > 1) then
         action = max(action, EVENT_STOP)
-        call add_outcome(self, 'landing on two contacts at once at t = '//format_short(t)//' s ('// &
-                         landed_names(self, lands .and. self%gaps%body == b)//'): an impact at two points is '// &
-                         'not built; the run ends here')
+        call add_outcome(self, 'body '''//self%system%bodies(b)%name//''' lands on two contacts at once at t = '// &
+                         format_short(t)//' s ('//landed_names(self, lands .and. (self%gaps%body == b .or. &
+                         self%gaps%body_1 == b))//'): an impact at two points is not built; the run ends here')
         return
       end if
     end do
@@ -432,9 +465,7 @@ contains
         if (.not. status%ok()) return
         cycle
       end if
-      associate (body => self%work%frames(self%body_frame(self%gaps%body(c))))
-        speed = -self%gaps%gap(c)%rate([0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp], body%v, body%omega)
-      end associate
+      speed = -approach_rate(self, c)
       action = max(action, EVENT_STOP)
       call add_outcome(self, 'landing: the gap of contact '''//self%system%contacts(c)%name//''' fell to zero '// &
                        'at t = '//format_short(t)//' s, approaching at '//format_short(speed)//' m/s (no '// &
@@ -457,13 +488,15 @@ contains
   end function landed_names
 
   !> The impact at the landing on contact c (the mechanism at y's pose and
-  !> speeds, the gaps updated): the impulse L on its body at its contact
-  !> point, from K and the contact points' relative velocity with c's law;
-  !> the body's centre of mass speeds up by L/m, its angular velocity by I^-1
-  !> (arm x L); its new twist becomes its rates in y (the other bodies' kept).
-  !> A rebound below c's close_speed closes it (closing_impulse added to L)
-  !> and stops the flight there (with several bodies the others go on as
-  !> they are: contact_closing drive_bodies).
+  !> speeds, the gaps updated): the impulse L from K of the pair (its body
+  !> and the ground, or its two bodies: contact_body_impact) and the contact
+  !> points' relative velocity with c's law, +L on body_2 at its point, -L
+  !> on body_1; each body's new twist becomes its rates in y (the other
+  !> bodies' kept). A rebound below c's close_speed closes a contact with the
+  !> ground (closing_impulse added to L) and stops the flight there (with
+  !> several bodies the others go on as they are: contact_closing
+  !> drive_bodies); between two bodies it ends the run (two bodies closed on
+  !> each other are not built), the impact kept.
   subroutine impact(self, c, t, y, action, status)
     class(flight_ode_t), intent(inout) :: self
     integer, intent(in) :: c
@@ -471,92 +504,63 @@ contains
     real(wp), intent(inout) :: y(:)
     integer, intent(inout) :: action
     type(status_t), intent(inout) :: status
-    real(wp) :: inertia(3, 3), factored(3, 3), centre(3), arm(3), v_centre(3), omega(3), spin_change(3), k(3, 3)
-    real(wp) :: impulse(3), closing(3), closing_lost, velocity_after(3)
     real(wp), allocatable :: rates(:)
-    type(impact_law_t) :: law
-    type(impact_outcome_t) :: outcome
-    type(impact_record_t) :: row
-    integer :: f, ipiv(3), b
-    logical :: closes
+    type(collision_t) :: hit
+    type(impact_body_t) :: pair(2)
+    integer :: f, b(2), i
     f = self%mechanism%f
-    b = self%gaps%body(c)
-    associate (body => self%work%frames(self%body_frame(b)), n => self%gaps%gap(c)%normal, &
-               point => self%gaps%gap(c)%point_2, contact => self%system%contacts(c))
-      law = impact_law_t(restitution=contact%restitution, mu=contact%impact_mu)
-      inertia = matmul(body%rot, matmul(self%inertia(:, :, b), transpose(body%rot)))
-      centre = body%r + matmul(body%rot, self%centre(:, b))
-      arm = point - centre
-      k = rigid_body_delassus(self%mass(b), inertia, arm)
-      ! the ground is the law's body 2: v is the body's contact point's velocity, n from the ground to it
-      call resolve_impact(law, k, n, body%v + cross(body%omega, point - body%r), outcome, status)
+    b = [self%gaps%body_1(c), self%gaps%body(c)]
+    do i = 1, 2
+      if (b(i) > 0) pair(i) = impact_body(self, b(i))
+    end do
+    associate (gap => self%gaps%gap(c), contact => self%system%contacts(c))
+      call collide(impact_law_t(restitution=contact%restitution, mu=contact%impact_mu), gap%normal, gap%point_1, &
+                   gap%point_2, pair(1), pair(2), contact%close_speed, contact%rolling, hit, status)
       if (.not. status%ok()) return
-      impulse = outcome%impulse
-      velocity_after = outcome%velocity_after
-      closing_lost = 0
-      closes = outcome%normal_speed_after < contact%close_speed
-      if (closes) then
-        call closing_impulse(k, n, outcome%velocity_after, contact%rolling, closing, status)
-        if (.not. status%ok()) return
-        velocity_after = outcome%velocity_after + matmul(k, closing)
-        closing_lost = -dot_product(closing, outcome%velocity_after + velocity_after)/2
-        impulse = impulse + closing
-      end if
-      factored = inertia
-      spin_change = cross(arm, impulse)
-      call lu_factor(factored, ipiv, status)
-      if (status%ok()) call lu_solve(factored, ipiv, spin_change, status)
-      if (.not. status%ok()) return
-      v_centre = body%v + cross(body%omega, centre - body%r) + impulse/self%mass(b)
-      omega = body%omega + spin_change
       rates = y(f + 1:f + self%mechanism%ns)
-      call start_rates(self, b, [omega, v_centre - cross(omega, centre - body%r)], rates, status)
-      if (.not. status%ok()) return
+      do i = 1, 2
+        if (b(i) > 0) call start_rates(self, b(i), [pair(i)%omega, pair(i)%velocity], rates, status)
+        if (.not. status%ok()) return
+      end do
       y(f + 1:f + self%mechanism%ns) = rates
-      row = impact_record_t(time=t, contact=c, body_1=body_index(self%system, contact%body_1), &
-                            body_2=body_index(self%system, contact%body_2), &
-                            normal_speed_before=outcome%normal_speed_before, &
-                            normal_speed_after=dot_product(velocity_after, n), &
-                            normal_impulse=dot_product(impulse, n), &
-                            tangential_impulse=norm2(impulse - dot_product(impulse, n)*n), &
-                            energy_lost=outcome%energy_lost + closing_lost)
-    end associate
-    self%impacts = [self%impacts, row]
-    associate (name => self%system%contacts(c)%name)
-      if (closes) then
+      self%impacts = [self%impacts, impact_record_t(time=t, contact=c, body_1=b(1), body_2=b(2), &
+                      normal_speed_before=hit%outcome%normal_speed_before, &
+                      normal_speed_after=dot_product(hit%velocity_after, gap%normal), &
+                      normal_impulse=dot_product(hit%impulse, gap%normal), &
+                      tangential_impulse=norm2(hit%impulse - dot_product(hit%impulse, gap%normal)*gap%normal), &
+                      energy_lost=hit%energy_lost)]
+      if (hit%closed) then
         action = max(action, EVENT_STOP)
         self%landed = c
         self%closings = [self%closings, c]
-        call add_outcome(self, 'contact '''//name//''' closed at the impact at t = '//format_short(t)// &
-                         ' s: the rebound, '//format_short(outcome%normal_speed_after)//' m/s, is below close_speed')
+        call add_outcome(self, 'contact '''//contact%name//''' closed at the impact at t = '//format_short(t)// &
+                         ' s: the rebound, '//format_short(hit%outcome%normal_speed_after)//' m/s, is below '// &
+                         'close_speed')
+      else if (hit%slow) then
+        action = max(action, EVENT_STOP)
+        call add_outcome(self, 'contact '''//contact%name//''': the rebound at the impact at t = '// &
+                         format_short(t)//' s, '//format_short(hit%outcome%normal_speed_after)//' m/s, is below '// &
+                         'close_speed: bodies '''//contact%body_1//''' and '''//contact%body_2//''' would stay in '// &
+                         'contact (two bodies closed on each other are not built): the run ends here')
       else
         action = max(action, EVENT_RESTART)
       end if
     end associate
   end subroutine impact
 
-  !> The impulse (on the body, N s) that closes a contact whose points move
-  !> apart at v after the impact (relative velocity, world; K the Delassus
-  !> matrix): it takes away their normal velocity n.v along n, frictionless,
-  !> p = -(n.v)/(n.K n); at a rolling contact their whole relative velocity,
-  !> K^-1 (-v) (the no-slip contact cannot start slipping). Either is a
-  !> plastic impulse: it removes energy, -(P.(v + v'))/2 >= 0.
-  subroutine closing_impulse(k, n, v, rolling, impulse, status)
-    real(wp), intent(in) :: k(3, 3), n(3), v(3)
-    logical, intent(in) :: rolling
-    real(wp), intent(out) :: impulse(3)
-    type(status_t), intent(inout) :: status
-    real(wp) :: factored(3, 3)
-    integer :: ipiv(3)
-    if (rolling) then
-      factored = k
-      impulse = -v
-      call lu_factor(factored, ipiv, status)
-      if (status%ok()) call lu_solve(factored, ipiv, impulse, status)
-    else
-      impulse = -dot_product(n, v)/dot_product(n, matmul(k, n))*n
-    end if
-  end subroutine closing_impulse
+  !> Body b at the mechanism's pose and twist (the workspace's), its mass
+  !> properties in world axes: for its impact.
+  function impact_body(self, b) result(body)
+    class(flight_ode_t), intent(in) :: self
+    integer, intent(in) :: b
+    type(impact_body_t) :: body
+    associate (frame => self%work%frames(self%body_frame(b)))
+      body = impact_body_t(mass=self%mass(b), &
+                           inertia=matmul(frame%rot, matmul(self%inertia(:, :, b), transpose(frame%rot))), &
+                           origin=frame%r, centre=frame%r + matmul(frame%rot, self%centre(:, b)), &
+                           omega=frame%omega, velocity=frame%v)
+    end associate
+  end function impact_body
 
   subroutine add_outcome(self, text)
     class(flight_ode_t), intent(inout) :: self
@@ -596,14 +600,37 @@ contains
         self%gap_velocity(:, c, n) = self%series%slip(:, self%mechanism_contact(c), n)
         cycle
       end if
-      associate (gap => self%gaps%gap(c), body => self%work%frames(self%body_frame(self%gaps%body(c))))
+      associate (gap => self%gaps%gap(c))
         self%series%monitor(self%gap_monitors(c), n) = gap%gap
         self%gap_point(:, c, n) = gap%point_1
-        v = body%v + cross(body%omega, gap%point_2 - body%r)
+        v = gap_velocity(self, c)
         self%gap_velocity(:, c, n) = v - dot_product(v, gap%normal)*gap%normal
       end associate
     end do
   end subroutine flight_record
+
+  !> The velocity of body_2's nearest point of contact c relative to body_1's
+  !> (the ground's: 0), at the workspace's pose and twist (world, m/s).
+  function gap_velocity(self, c) result(v)
+    class(flight_ode_t), intent(in) :: self
+    integer, intent(in) :: c
+    real(wp) :: v(3)
+    associate (gap => self%gaps%gap(c), body => self%work%frames(self%body_frame(self%gaps%body(c))))
+      v = body%v + cross(body%omega, gap%point_2 - body%r)
+      if (self%gaps%body_1(c) == 0) return
+      associate (other => self%work%frames(self%body_frame(self%gaps%body_1(c))))
+        v = v - (other%v + cross(other%omega, gap%point_1 - other%r))
+      end associate
+    end associate
+  end function gap_velocity
+
+  !> The rate of contact c's gap (m/s, < 0 approaching), at the workspace's
+  !> pose and twist.
+  real(wp) function approach_rate(self, c) result(rate)
+    class(flight_ode_t), intent(in) :: self
+    integer, intent(in) :: c
+    rate = dot_product(self%gaps%gap(c)%normal, gap_velocity(self, c))
+  end function approach_rate
 
   !> a with room for n records (its last dimension), its values kept.
   subroutine grow(a, n)

@@ -1,7 +1,8 @@
 !> The gaps of the bodies' open contacts (issue 25): a body may have several
 !> contacts with the ground, the surfaces it may touch (a dome and the floor
 !> it lands on, a wall and a floor), and several bodies may fly at once, each
-!> gap at its own body's pose (contact_flight). At most one contact carries
+!> gap at its own body's pose (contact_flight), a gap between two bodies
+!> (body_1 not the ground) at both bodies' poses. At most one contact carries
 !> each body closed (`closed`, or `carried` with several bodies:
 !> contact_bodies); the gap of every other (contact_gap: the signed distance
 !> of its two shapes along their common normal, through the foot-point
@@ -52,6 +53,7 @@ module contact_open_gaps
   type :: open_gaps_t
     type(contact_gap_t), allocatable :: gap(:)
     integer, allocatable :: body(:)    ! each contact's body_2: its place among the description's bodies
+    integer, allocatable :: body_1(:)  ! each contact's body_1: its place (0: the ground)
     real(wp), allocatable :: last(:)   ! m, each gap's last value (kept where an update fails: a trial state)
     integer :: closed = 0              ! the contact that carries the body (not watched; 0: none)
     logical, allocatable :: carried(:) ! each contact: closed, carrying its body (not watched)
@@ -116,14 +118,15 @@ contains
     if (present(carried)) gaps%carried = carried
     gaps%last = 0
     gaps%body = [(body_index(system, system%contacts(c)%body_2), c = 1, size(system%contacts))]
+    gaps%body_1 = [(max(0, body_index(system, system%contacts(c)%body_1)), c = 1, size(system%contacts))]
     do c = 1, size(system%contacts)
       if (gaps%carried(c)) cycle
-      associate (contact => system%contacts(c), gap => gaps%gap(c), body => work%frames(frames(gaps%body(c))))
+      associate (contact => system%contacts(c), gap => gaps%gap(c))
         s1 = findloc([(system%shapes(k)%name == contact%shape_1, k = 1, size(system%shapes))], .true., dim=1)
         s2 = findloc([(system%shapes(k)%name == contact%shape_2, k = 1, size(system%shapes))], .true., dim=1)
         gap = new_contact_gap(system%shapes(s1)%surface, contact%side_1, system%shapes(s2)%surface, contact%side_2, &
                               [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp])
-        call gap%start_from_search(identity, ground_origin, body%rot, body%r, status)
+        call place_gap(gaps, c, work, frames, status, search=.true.)
         if (.not. status%ok()) then
           status%message = 'contact '''//contact%name//''': the gap between '''//contact%shape_1//''' and '''// &
                            contact%shape_2//''' at the start: '//status%text()
@@ -164,13 +167,40 @@ contains
     integer :: c
     do c = 1, size(self%gap)
       if (self%carried(c)) cycle
-      associate (body => work%frames(frames(self%body(c))))
-        call self%gap(c)%update(identity, ground_origin, body%rot, body%r, status)
-      end associate
+      call place_gap(self, c, work, frames, status)
       if (.not. status%ok()) return
       self%last(c) = self%gap(c)%gap
     end do
   end subroutine gaps_update
+
+  !> Contact c's gap at its bodies' poses (work%frames(frames(b)) of body b,
+  !> world; the ground's the world axes): updated from its last points, or
+  !> with search = .true. from the contact search.
+  subroutine place_gap(self, c, work, frames, status, search)
+    class(open_gaps_t), intent(inout) :: self
+    integer, intent(in) :: c
+    type(mechanism_workspace_t), intent(in) :: work
+    integer, intent(in) :: frames(:)
+    type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: search
+    real(wp) :: rotation_1(3, 3), origin_1(3)
+    logical :: searching
+    searching = .false.
+    if (present(search)) searching = search
+    rotation_1 = identity
+    origin_1 = ground_origin
+    if (self%body_1(c) > 0) then
+      rotation_1 = work%frames(frames(self%body_1(c)))%rot
+      origin_1 = work%frames(frames(self%body_1(c)))%r
+    end if
+    associate (body => work%frames(frames(self%body(c))))
+      if (searching) then
+        call self%gap(c)%start_from_search(rotation_1, origin_1, body%rot, body%r, status)
+      else
+        call self%gap(c)%update(rotation_1, origin_1, body%rot, body%r, status)
+      end if
+    end associate
+  end subroutine place_gap
 
   !> The root of each contact at its body's pose (as gaps_update): its gap
   !> (the last where it cannot be found: a trial state the integrator does
@@ -187,9 +217,7 @@ contains
     do c = 1, size(self%gap)
       if (self%carried(c)) cycle
       if (located) then
-        associate (body => work%frames(frames(self%body(c))))
-          call self%gap(c)%update(identity, ground_origin, body%rot, body%r, status)
-        end associate
+        call place_gap(self, c, work, frames, status)
         if (status%ok()) self%last(c) = self%gap(c)%gap
       end if
     end do

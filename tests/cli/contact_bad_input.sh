@@ -9,7 +9,7 @@
 # chain that does not apply (the open chain with rolling, a chain at velocity
 # level) or is unknown; a friction law without mu; what several bodies in
 # flight cannot do yet (one closed beside a flight, a contact between two
-# bodies that may open). A message about a contact
+# bodies that may open or has friction: it never closes). A message about a contact
 # or body names it once, by its place.
 set -u
 slidesim=$1
@@ -112,15 +112,21 @@ expect unknown_chain 1 'unknown_chain.nml:' '&contact' chain "'closed'" 'open lo
 
 # several bodies (issue 25): each carried by one closed contact or flying,
 # so a body with two contacts that start closed among several bodies, and a
-# stacked ball that may lift off its carrier (a contact between two bodies),
-# are refused naming the input
+# stacked ball that may lift off its carrier (a contact between two bodies
+# that may open), are refused naming the input
 printf "%s\n%s\n&body name = 'other', mass = 1, solid_of = 'ball', position = 1, 0, 0.5 /\n&contact name = 'c', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n&contact name = 'c2', shape_1 = 'table', body_2 = 'other', shape_2 = 'ball', start = 'open', restitution = 0.5 /\n&contact name = 'c3', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', may_open = .true. /\n" \
   "$head" "$ball" > "$work/two_closed.nml"
 expect two_closed 1 'two_closed.nml:9:' "&contact name = 'c3'" "of the contacts of body 'ball'" 'at most one starts closed'
 printf "%s\n%s\n&body name = 'top', mass = 1, solid_of = 'ball', position = 0, 0, 0.4 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n&contact name = 'stack', body_1 = 'ball', shape_1 = 'ball', body_2 = 'top', shape_2 = 'ball', may_open = .true. /\n" \
   "$head" "$ball" > "$work/top_lifts.nml"
-expect top_lifts 1 'top_lifts.nml:8:' "&contact name = 'stack'" "body_1 = 'ball'" 'a body landing on another body' \
-  'one flying while another stays in contact'
+expect top_lifts 1 'top_lifts.nml:8:' "&contact name = 'stack'" "body_1 = 'ball'" \
+  'a contact between two bodies starts open and may not open' "give start = 'open' and no may_open"
+# a contact between two flying bodies (an impact of the pair) never closes:
+# friction, rolling, level, chain would go unused
+printf "%s\n%s\n&body name = 'top', mass = 1, solid_of = 'ball', position = 0, 0, 0.6 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', start = 'open', restitution = 0.5 /\n&contact name = 'hit', body_1 = 'ball', shape_1 = 'ball', body_2 = 'top', shape_2 = 'ball', start = 'open', restitution = 0.5, friction = 'coulomb', mu = 0.3 /\n" \
+  "$head" "$ball" > "$work/pair_friction.nml"
+expect pair_friction 1 'pair_friction.nml:8:' "&contact name = 'hit'" 'a contact between two bodies never closes' \
+  'leave them out'
 
 # a cup that cannot close in a B-spline bowl (table 3.2's paraboloids): which
 # contact, by how much

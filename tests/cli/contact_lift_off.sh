@@ -21,7 +21,9 @@
 #             law) is printed and stored, ~0;
 #   two_balls two balls bouncing at once (inputs/contact/two_balls.nml), each
 #             as alone; one comes to rest (its contact closes) while the
-#             other bounces on.
+#             other bounces on;
+#   stacked   inputs/contact/stacked_balls.nml: the impacts table's rows,
+#             the two balls' impact naming both bodies.
 set -u
 slidesim=$1
 repo=$(cd "$(dirname "$0")/../.." && pwd)
@@ -171,6 +173,27 @@ for b, e, h in ((1, 0.5, 1.0), (2, 0.8, 0.6)):
     ok = ok and np.allclose(t['normal_speed_after'][body == b], after, atol=1e-8)
     ok = ok and np.allclose(t['energy_lost'][body == b], lost, atol=1e-8)
 print('two_balls: impacts table', 'matches' if ok else 'differs', names, body)
+sys.exit(0 if ok else 1)
+EOF
+fi
+
+# a small ball dropped on a big one (inputs/contact/stacked_balls.nml): the
+# big one's floor impact, then the two balls' (body_1 1 big, body_2 2
+# small), then the big one's on the floor twice more
+cp "$repo/inputs/contact/stacked_balls.nml" "$work/stacked_balls.nml"
+run_case stacked_balls 0
+grep -qE "impacts +4 " "$work/stacked_balls.out" || fail "stacked_balls: the summary does not count 4 impacts"
+if [ -n "$h5python" ] && [ -f "$work/stacked_balls.h5" ]; then
+  "$h5python" - "$work/stacked_balls.h5" <<'EOF' || fail "stacked_balls: the impacts table"
+import sys, h5py
+f = h5py.File(sys.argv[1], 'r')
+t = f['contact/impacts']
+names = t['body_names'][()]
+names = names.decode() if isinstance(names, bytes) else names
+ok = names == '0 ground, 1 big, 2 small'
+ok = ok and list(t['contact'][:]) == [1, 2, 1, 1] and list(t['body_1'][:]) == [0, 1, 0, 0]
+ok = ok and list(t['body_2'][:]) == [1, 2, 1, 1]
+print('stacked_balls: impacts table', 'matches' if ok else 'differs', names, t['body_1'][:], t['body_2'][:])
 sys.exit(0 if ok else 1)
 EOF
 fi

@@ -1,0 +1,148 @@
+!> The impact of two free rigid bodies at a point, or of one on the ground
+!> (issue 25): the impulse from the impact law (kinetostatics_impact:
+!> restitution e on the normal relative speed, Coulomb-limited tangential
+!> impulse) with the Delassus matrix of the PAIR at the contact point,
+!>   K = K_1 + K_2,  K_i = E/m_i + skew(r_i)^T I_i^-1 skew(r_i)
+!> (r_i from body i's centre of mass to its contact point, I_i its inertia
+!> in world axes; the ground adds nothing: it does not move), and each
+!> body's twist changed by it: +L on body 2 at its point, -L on body 1 at
+!> its, so that the pair's momentum is kept (to rounding) and, about any
+!> point, its angular momentum (both points the same to the gap's rounding,
+!> ~1e-14 m, at a located landing).
+!>
+!> Body 2 is the contact's body_2, body 1 its body_1 (the ground or a body);
+!> n is the gap's normal, out of shape_1 towards body 2, and the relative
+!> velocity is body 2's point's less body 1's: the law's body 1 is the
+!> contact's body_2 (kinetostatics_impact resolve_impact: separation n.v > 0).
+!> The arithmetic of a body on the ground is that of the flight's impact on
+!> the ground before bodies could hit each other, to the bit.
+module contact_body_impact
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  use base_vector, only: cross
+  use numerics_linear_algebra, only: lu_factor, lu_solve
+  use kinetostatics_impact, only: impact_law_t, impact_outcome_t, resolve_impact, rigid_body_delassus
+  implicit none (type, external)
+  private
+  public :: impact_body_t, collision_t, collide, pair_delassus, relative_velocity, apply_impulse
+
+  !> A free rigid body at an impact (world): its pose's origin and centre of
+  !> mass, its twist (omega and the origin's velocity), mass and inertia
+  !> about the centre of mass. mass 0: the ground (fixed, at rest).
+  type :: impact_body_t
+    real(wp) :: mass = 0                   ! kg (0: the ground)
+    real(wp) :: inertia(3, 3) = 0          ! kg m^2, about the centre of mass, world axes
+    real(wp) :: origin(3) = 0, centre(3) = 0   ! m, world
+    real(wp) :: omega(3) = 0, velocity(3) = 0  ! rad/s; m/s of the origin
+  end type impact_body_t
+
+  !> What an impact did (collide).
+  type :: collision_t
+    type(impact_outcome_t) :: outcome      ! the impact law's (resolve_impact)
+    real(wp) :: impulse(3) = 0             ! N s, on body 2 (-impulse on body 1), the closing's included
+    real(wp) :: velocity_after(3) = 0      ! m/s, body 2's point relative to body 1's after it all
+    real(wp) :: energy_lost = 0            ! J, the impact's and the closing's
+    logical :: slow = .false.              ! the rebound is below close_speed
+    logical :: closed = .false.            ! slow on the ground: the closing impulse was added
+  end type collision_t
+
+contains
+
+  !> The impact of body_2 on body_1 (the ground: mass 0) at their points
+  !> point_1, point_2 with the common normal n (out of body 1), by `law`;
+  !> both bodies' twists changed. A rebound below close_speed is `slow`; on
+  !> the ground the contact then closes: closing_impulse takes away what is
+  !> left of the points' normal velocity (all of their relative velocity
+  !> where `rolling`), its energy added to the impact's.
+  subroutine collide(law, n, point_1, point_2, body_1, body_2, close_speed, rolling, result, status)
+    type(impact_law_t), intent(in) :: law
+    real(wp), intent(in) :: n(3), point_1(3), point_2(3), close_speed
+    type(impact_body_t), intent(inout) :: body_1, body_2
+    logical, intent(in) :: rolling
+    type(collision_t), intent(out) :: result
+    type(status_t), intent(inout) :: status
+    real(wp) :: k(3, 3), closing(3)
+    k = pair_delassus(body_1, body_2, point_1, point_2)
+    call resolve_impact(law, k, n, relative_velocity(body_1, body_2, point_1, point_2), result%outcome, status)
+    if (.not. status%ok()) return
+    associate (outcome => result%outcome)
+      result%impulse = outcome%impulse
+      result%velocity_after = outcome%velocity_after
+      result%energy_lost = outcome%energy_lost
+      result%slow = outcome%normal_speed_after < close_speed
+      result%closed = result%slow .and. .not. body_1%mass > 0
+      if (result%closed) then
+        call closing_impulse(k, n, outcome%velocity_after, rolling, closing, status)
+        if (.not. status%ok()) return
+        result%velocity_after = outcome%velocity_after + matmul(k, closing)
+        result%energy_lost = outcome%energy_lost - dot_product(closing, outcome%velocity_after + &
+                                                               result%velocity_after)/2
+        result%impulse = result%impulse + closing
+      end if
+    end associate
+    call apply_impulse(body_2, point_2, result%impulse, status)
+    call apply_impulse(body_1, point_1, -result%impulse, status)
+  end subroutine collide
+
+  !> K of the pair at the contact points point_1 (on body_1) and point_2
+  !> (on body_2), m/s per N s.
+  pure function pair_delassus(body_1, body_2, point_1, point_2) result(k)
+    type(impact_body_t), intent(in) :: body_1, body_2
+    real(wp), intent(in) :: point_1(3), point_2(3)
+    real(wp) :: k(3, 3)
+    k = rigid_body_delassus(body_2%mass, body_2%inertia, point_2 - body_2%centre)
+    if (body_1%mass > 0) k = k + rigid_body_delassus(body_1%mass, body_1%inertia, point_1 - body_1%centre)
+  end function pair_delassus
+
+  !> The velocity of body_2's point point_2 relative to body_1's point_1 (m/s).
+  pure function relative_velocity(body_1, body_2, point_1, point_2) result(v)
+    type(impact_body_t), intent(in) :: body_1, body_2
+    real(wp), intent(in) :: point_1(3), point_2(3)
+    real(wp) :: v(3)
+    v = body_2%velocity + cross(body_2%omega, point_2 - body_2%origin)
+    if (body_1%mass > 0) v = v - (body_1%velocity + cross(body_1%omega, point_1 - body_1%origin))
+  end function relative_velocity
+
+  !> The impulse `impulse` (N s) on `body` at `point`: its centre of mass
+  !> speeds up by impulse/m, its angular velocity by I^-1 (arm x impulse);
+  !> its twist becomes the new one (the origin's velocity from the centre's).
+  !> The ground (mass 0) is left as it is.
+  subroutine apply_impulse(body, point, impulse, status)
+    type(impact_body_t), intent(inout) :: body
+    real(wp), intent(in) :: point(3), impulse(3)
+    type(status_t), intent(inout) :: status
+    real(wp) :: factored(3, 3), spin_change(3), v_centre(3)
+    integer :: ipiv(3)
+    if (.not. body%mass > 0) return
+    factored = body%inertia
+    spin_change = cross(point - body%centre, impulse)
+    call lu_factor(factored, ipiv, status)
+    if (status%ok()) call lu_solve(factored, ipiv, spin_change, status)
+    if (.not. status%ok()) return
+    v_centre = body%velocity + cross(body%omega, body%centre - body%origin) + impulse/body%mass
+    body%omega = body%omega + spin_change
+    body%velocity = v_centre - cross(body%omega, body%centre - body%origin)
+  end subroutine apply_impulse
+  !> The impulse (on the body, N s) that closes a contact whose points move
+  !> apart at v after the impact (relative velocity, world; K the Delassus
+  !> matrix): it takes away their normal velocity n.v along n, frictionless,
+  !> p = -(n.v)/(n.K n); at a rolling contact their whole relative velocity,
+  !> K^-1 (-v) (the no-slip contact cannot start slipping). Either is a
+  !> plastic impulse: it removes energy, -(P.(v + v'))/2 >= 0.
+  subroutine closing_impulse(k, n, v, rolling, impulse, status)
+    real(wp), intent(in) :: k(3, 3), n(3), v(3)
+    logical, intent(in) :: rolling
+    real(wp), intent(out) :: impulse(3)
+    type(status_t), intent(inout) :: status
+    real(wp) :: factored(3, 3)
+    integer :: ipiv(3)
+    if (rolling) then
+      factored = k
+      impulse = -v
+      call lu_factor(factored, ipiv, status)
+      if (status%ok()) call lu_solve(factored, ipiv, impulse, status)
+    else
+      impulse = -dot_product(n, v)/dot_product(n, matmul(k, n))*n
+    end if
+  end subroutine closing_impulse
+end module contact_body_impact

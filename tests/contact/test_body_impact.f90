@@ -1,0 +1,531 @@
+!> Impacts between two bodies (issue 25): the impulse of the pair at the
+!> contact point from its Delassus matrix K = K_1 + K_2 (contact_body_impact),
+!> against closed forms, and in flight (contact_flight: a contact between
+!> two bodies that starts open, its gap a root, its landing an impact).
+!>   - head_on: two spheres (m1 = 0.2 kg, R1 = 0.1 m; m2 = 0.5 kg, R2 =
+!>     0.05 m) meeting along the line of their centres at v1 = 2, v2 = -1
+!>     m/s, e in {0, 0.6, 1}, frictionless: v1' = ((m1 - e m2) v1 + (1 + e)
+!>     m2 v2)/(m1 + m2) (and v2' alike), the energy lost (1 - e^2) m1 m2/(2
+!>     (m1 + m2)) dv^2, no spin; momentum to rounding.
+!>   - oblique: the same spheres meeting along n = (1, 0.6, -0.3)/|..|,
+!>     spinning, frictionless: each centre's speed across n and each spin
+!>     unchanged, the normal speeds by the head-on law; momentum to rounding.
+!>   - general: two bodies of unequal principal inertias, turned, the
+!>     contact point off the line of centres, spinning, with friction (mu =
+!>     0.4, e = 0.7): momentum and angular momentum (about the world origin,
+!>     the impulse acting at one point on both) kept to rounding, the energy
+!>     lost the kinetic energy's fall (to rounding) and >= 0; K against the
+!>     bodies' response: an impulse L (+L on body 2, -L on body 1) changes
+!>     the points' relative velocity by K L (to rounding); a body 1 of mass
+!>     and inertia 1e12 times larger acts as the ground (to 1e-11).
+!>   - head_on_flight: the spheres of head_on thrown at each other at one
+!>     height 0.5 m apart (centres), e = 0.6: the impact at t* = (0.5 - R1 -
+!>     R2)/3 s, the speeds after by the closed form, the gap at every record
+!>     the distance of the centres less R1 + R2 (both fall alike), the
+!>     pair's horizontal momentum kept and its vertical m g t.
+!>   - oblique_flight: the same with ball 2 0.1 m aside: frictionless, each
+!>     ball's velocity across the normal at the impact unchanged.
+!>   - stacked (inputs/contact/stacked_balls.nml): a small ball dropped with
+!>     a big one just below it; the big one bounces off the floor (e_f) and
+!>     meets the small one coming down: approach speed (1 + e_f) v0, the
+!>     meeting at t0 + gap/((1 + e_f) v0), and the speeds after by the
+!>     head-on law with the pair's e.
+!>   - on_carried: a ball dropped onto a ball carried by the floor (start
+!>     closed): the run ends at the touch, saying why (not built).
+!>   - two_at_once: a ball dropped into a V of two planes at +-45 degrees
+!>     lands on both at once (an impact at two points: not built): the run
+!>     ends at t = sqrt(2 (z_0 - R sqrt(2))/g), naming the body and both
+!>     contacts.
+program test_body_impact
+  use base_kinds, only: wp
+  use base_constants, only: standard_gravity
+  use base_status, only: status_t
+  use base_vector, only: cross
+  use numerics_event_driver, only: driver_result_t, driver_options_t, DRIVE_END_TIME, DRIVE_EVENT_STOP
+  use kinetostatics_impact, only: impact_law_t
+  use contact_body_impact, only: impact_body_t, collision_t, collide, pair_delassus, relative_velocity, &
+    apply_impulse
+  use contact_model, only: contact_system_t, contact_model_t, contact_convergence_coefficient, build_contact_model
+  use contact_flight, only: flight_ode_t, build_flight, carrying_contact, closed_part
+  use contact_closing, only: drive_flight, flight_after_closed
+  use contact_bodies, only: build_bodies, start_carriers
+  use io_input, only: input_text_t, input_from_text, load_input_file
+  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_contact_config, only: read_contact_config
+  use testing, only: check, check_close, finish_tests
+  use scenario_fixtures, only: number
+  implicit none (type, external)
+
+  character(len=*), parameter :: nl = new_line('a')
+  real(wp), parameter :: g = standard_gravity
+  real(wp), parameter :: m1 = 0.2_wp, r1 = 0.1_wp, m2 = 0.5_wp, r2 = 0.05_wp
+  real(wp), parameter :: rounding = 16*epsilon(1.0_wp)
+
+  call head_on()
+  call oblique()
+  call general()
+  call head_on_flight()
+  call oblique_flight()
+  call stacked()
+  call on_carried()
+  call two_at_once()
+  call finish_tests('test_body_impact')
+
+contains
+
+  !> A solid sphere of mass m and radius r at centre c (its origin there).
+  function sphere(m, r, c, v, omega) result(body)
+    real(wp), intent(in) :: m, r, c(3), v(3), omega(3)
+    type(impact_body_t) :: body
+    integer :: i
+    body%mass = m
+    body%inertia = 0
+    do i = 1, 3
+      body%inertia(i, i) = 2*m*r**2/5
+    end do
+    body%origin = c
+    body%centre = c
+    body%velocity = v
+    body%omega = omega
+  end function sphere
+
+  !> The velocity of a body's centre of mass.
+  pure function centre_velocity(body) result(v)
+    type(impact_body_t), intent(in) :: body
+    real(wp) :: v(3)
+    v = body%velocity + cross(body%omega, body%centre - body%origin)
+  end function centre_velocity
+
+  pure function momentum(a, b) result(p)
+    type(impact_body_t), intent(in) :: a, b
+    real(wp) :: p(3)
+    p = a%mass*centre_velocity(a) + b%mass*centre_velocity(b)
+  end function momentum
+
+  !> Angular momentum of both about the world origin.
+  pure function angular_momentum(a, b) result(h)
+    type(impact_body_t), intent(in) :: a, b
+    real(wp) :: h(3)
+    h = matmul(a%inertia, a%omega) + cross(a%centre, a%mass*centre_velocity(a)) + &
+        matmul(b%inertia, b%omega) + cross(b%centre, b%mass*centre_velocity(b))
+  end function angular_momentum
+
+  pure real(wp) function kinetic_energy(a, b) result(e)
+    type(impact_body_t), intent(in) :: a, b
+    e = (a%mass*sum(centre_velocity(a)**2) + dot_product(a%omega, matmul(a%inertia, a%omega)) + &
+         b%mass*sum(centre_velocity(b)**2) + dot_product(b%omega, matmul(b%inertia, b%omega)))/2
+  end function kinetic_energy
+
+  pure function unit(v) result(u)
+    real(wp), intent(in) :: v(3)
+    real(wp) :: u(3)
+    u = v/norm2(v)
+  end function unit
+
+  !> The head-on law along one line: the speeds after (v1, v2 before).
+  pure function head_on_law(e, v1, v2) result(after)
+    real(wp), intent(in) :: e, v1, v2
+    real(wp) :: after(2)
+    after(1) = ((m1 - e*m2)*v1 + (1 + e)*m2*v2)/(m1 + m2)
+    after(2) = ((m2 - e*m1)*v2 + (1 + e)*m1*v1)/(m1 + m2)
+  end function head_on_law
+
+  subroutine head_on()
+    real(wp), parameter :: es(3) = [0.0_wp, 0.6_wp, 1.0_wp], v1 = 2, v2 = -1
+    real(wp), parameter :: x(3) = [1.0_wp, 0.0_wp, 0.0_wp]
+    type(impact_body_t) :: a, b
+    type(collision_t) :: hit
+    type(status_t) :: st
+    real(wp) :: p0(3), after(2)
+    integer :: i
+    character(len=:), allocatable :: label
+    do i = 1, size(es)
+      label = 'head on, e = '//number(es(i))//': '
+      a = sphere(m1, r1, [0.0_wp, 0.0_wp, 0.0_wp], v1*x, [0.0_wp, 0.0_wp, 0.0_wp])
+      b = sphere(m2, r2, (r1 + r2)*x, v2*x, [0.0_wp, 0.0_wp, 0.0_wp])
+      p0 = momentum(a, b)
+      call collide(impact_law_t(restitution=es(i), mu=0.0_wp), x, r1*x, r1*x, a, b, 1e-3_wp, .false., hit, st)
+      call check(st%ok(), label//'resolved: '//st%text())
+      after = head_on_law(es(i), v1, v2)
+      call check_close(a%velocity(1), after(1), 0.0_wp, rounding*abs(v1), label//'v1'' (m/s)')
+      call check_close(b%velocity(1), after(2), 0.0_wp, rounding*abs(v1), label//'v2'' (m/s)')
+      call check(all(a%velocity(2:) == 0) .and. all(b%velocity(2:) == 0), label//'along the line only')
+      call check(all(a%omega == 0) .and. all(b%omega == 0), label//'no spin (the impulse through the centres)')
+      call check_close(hit%energy_lost, (1 - es(i)**2)*m1*m2/(2*(m1 + m2))*(v1 - v2)**2, 0.0_wp, &
+                       rounding*m1*v1**2, label//'energy lost (1 - e^2) m1 m2/(2 (m1 + m2)) dv^2 (J)')
+      call check_close(hit%outcome%normal_speed_before, v2 - v1, 0.0_wp, 0.0_wp, label//'approach (m/s)')
+      call check_close(hit%outcome%normal_speed_after, es(i)*(v1 - v2), 0.0_wp, rounding*abs(v1), &
+                       label//'rebound e dv (m/s)')
+      call check_close(norm2(momentum(a, b) - p0), 0.0_wp, 0.0_wp, rounding*norm2(p0), &
+                       label//'momentum kept (kg m/s)')
+      call check(.not. hit%closed .and. (hit%slow .eqv. es(i) == 0), label//'slow (below close_speed 1e-3 '// &
+                 'm/s) only at e = 0, never closed between bodies')
+    end do
+  end subroutine head_on
+
+  subroutine oblique()
+    real(wp), parameter :: e = 0.6_wp
+    type(impact_body_t) :: a, b, a0, b0
+    type(collision_t) :: hit
+    type(status_t) :: st
+    real(wp) :: n(3), p0(3), after(2)
+    n = unit([1.0_wp, 0.6_wp, -0.3_wp])
+    a = sphere(m1, r1, [0.1_wp, 0.2_wp, 0.3_wp], [2.0_wp, 0.5_wp, 0.3_wp], [3.0_wp, -1.0_wp, 2.0_wp])
+    b = sphere(m2, r2, a%centre + (r1 + r2)*n, [-1.0_wp, 0.2_wp, -0.4_wp], [-5.0_wp, 4.0_wp, 1.0_wp])
+    a0 = a
+    b0 = b
+    p0 = momentum(a, b)
+    call collide(impact_law_t(restitution=e, mu=0.0_wp), n, a%centre + r1*n, a%centre + r1*n, a, b, 0.01_wp, &
+                 .false., hit, st)
+    call check(st%ok(), 'oblique: resolved: '//st%text())
+    after = head_on_law(e, dot_product(a0%velocity, n), dot_product(b0%velocity, n))
+    call check_close(dot_product(a%velocity, n), after(1), 0.0_wp, 4*rounding, 'oblique: a''s normal speed (m/s)')
+    call check_close(dot_product(b%velocity, n), after(2), 0.0_wp, 4*rounding, 'oblique: b''s normal speed (m/s)')
+    call check_close(norm2(a%velocity - dot_product(a%velocity, n)*n - (a0%velocity - dot_product(a0%velocity, n)*n)), &
+                     0.0_wp, 0.0_wp, 4*rounding, 'oblique: a''s speed across n unchanged (m/s)')
+    call check_close(norm2(b%velocity - dot_product(b%velocity, n)*n - (b0%velocity - dot_product(b0%velocity, n)*n)), &
+                     0.0_wp, 0.0_wp, 4*rounding, 'oblique: b''s speed across n unchanged (m/s)')
+    ! the arm along n to rounding: a torque of rounding |L| R, turned into spin by I = 2/5 m R^2
+    call check_close(norm2(a%omega - a0%omega) + norm2(b%omega - b0%omega), 0.0_wp, 0.0_wp, &
+                     rounding*norm2(hit%impulse)*(r1/(0.4_wp*m1*r1**2) + r2/(0.4_wp*m2*r2**2)), &
+                     'oblique: spins unchanged (rad/s, to the rounding of the arm)')
+    call check_close(norm2(hit%impulse - dot_product(hit%impulse, n)*n), 0.0_wp, 0.0_wp, rounding*norm2(hit%impulse), &
+                     'oblique: no tangential impulse (N s)')
+    call check_close(norm2(momentum(a, b) - p0), 0.0_wp, 0.0_wp, rounding*norm2(p0), 'oblique: momentum kept')
+  end subroutine oblique
+
+  !> A turned body of principal inertias diag(j) (kg m^2), its centre of
+  !> mass `offset` (body axes) from its origin at `origin`.
+  function turned_body(m, j, angle, origin, offset, v, omega) result(body)
+    real(wp), intent(in) :: m, j(3), angle, origin(3), offset(3), v(3), omega(3)
+    type(impact_body_t) :: body
+    real(wp) :: rot(3, 3), c, s
+    c = cos(angle)
+    s = sin(angle)
+    ! about the axis (1, 1, 1)/sqrt(3) (Rodrigues)
+    rot = reshape([c + (1 - c)/3, (1 - c)/3 + s/sqrt(3.0_wp), (1 - c)/3 - s/sqrt(3.0_wp), &
+                   (1 - c)/3 - s/sqrt(3.0_wp), c + (1 - c)/3, (1 - c)/3 + s/sqrt(3.0_wp), &
+                   (1 - c)/3 + s/sqrt(3.0_wp), (1 - c)/3 - s/sqrt(3.0_wp), c + (1 - c)/3], [3, 3])
+    body%mass = m
+    body%inertia = matmul(rot, matmul(reshape([j(1), 0.0_wp, 0.0_wp, 0.0_wp, j(2), 0.0_wp, 0.0_wp, 0.0_wp, j(3)], &
+                                              [3, 3]), transpose(rot)))
+    body%origin = origin
+    body%centre = origin + matmul(rot, offset)
+    body%velocity = v
+    body%omega = omega
+  end function turned_body
+
+  subroutine general()
+    type(impact_body_t) :: a, b, a0, b0, ground, heavy, b_ground, b_heavy
+    type(collision_t) :: hit, on_ground, on_heavy
+    type(status_t) :: st
+    real(wp) :: n(3), point(3), p0(3), h0(3), e0, k(3, 3), impulse(3), v0(3)
+    n = unit([0.2_wp, -0.3_wp, 1.0_wp])
+    point = [0.05_wp, -0.02_wp, 0.4_wp]
+    a = turned_body(1.3_wp, [0.02_wp, 0.05_wp, 0.07_wp], 0.7_wp, [0.0_wp, 0.1_wp, 0.2_wp], &
+                    [0.03_wp, -0.01_wp, 0.02_wp], [0.5_wp, -0.2_wp, 1.5_wp], [4.0_wp, -2.0_wp, 1.0_wp])
+    b = turned_body(0.4_wp, [0.004_wp, 0.006_wp, 0.003_wp], -1.1_wp, [0.1_wp, -0.1_wp, 0.55_wp], &
+                    [-0.02_wp, 0.01_wp, 0.0_wp], [-0.7_wp, 0.9_wp, -2.0_wp], [-3.0_wp, 6.0_wp, 2.0_wp])
+    a0 = a
+    b0 = b
+    ! K against the bodies' response to an impulse: linear, K L exactly
+    impulse = [0.3_wp, -0.7_wp, 0.2_wp]
+    k = pair_delassus(a, b, point, point)
+    v0 = relative_velocity(a, b, point, point)
+    call apply_impulse(b, point, impulse, st)
+    call apply_impulse(a, point, -impulse, st)
+    call check(st%ok(), 'general: impulses applied')
+    call check_close(norm2(relative_velocity(a, b, point, point) - v0 - matmul(k, impulse)), 0.0_wp, 0.0_wp, &
+                     4*rounding*norm2(v0), 'general: the relative velocity changes by K L (m/s)')
+    call check_close(maxval(abs(k - transpose(k))), 0.0_wp, 0.0_wp, rounding*maxval(abs(k)), 'general: K symmetric')
+    a = a0
+    b = b0
+    p0 = momentum(a, b)
+    h0 = angular_momentum(a, b)
+    e0 = kinetic_energy(a, b)
+    call check(dot_product(n, relative_velocity(a, b, point, point)) < 0, 'general: the points approach')
+    call collide(impact_law_t(restitution=0.7_wp, mu=0.4_wp), n, point, point, a, b, 0.01_wp, .false., hit, st)
+    call check(st%ok(), 'general: resolved: '//st%text())
+    call check(norm2(hit%impulse - dot_product(hit%impulse, n)*n) > 1e-3_wp*norm2(hit%impulse), &
+               'general: friction acts (a tangential impulse)')
+    call check_close(norm2(momentum(a, b) - p0), 0.0_wp, 0.0_wp, rounding*norm2(p0), 'general: momentum kept')
+    call check_close(norm2(angular_momentum(a, b) - h0), 0.0_wp, 0.0_wp, rounding*norm2(h0), &
+                     'general: angular momentum about the origin kept')
+    call check(hit%energy_lost >= 0, 'general: energy lost >= 0')
+    call check_close(e0 - kinetic_energy(a, b), hit%energy_lost, 0.0_wp, rounding*e0, &
+                     'general: the energy lost is the kinetic energy''s fall (J)')
+    ! a body 1 1e12 times heavier is the ground (both at rest there)
+    ground = impact_body_t()
+    heavy = a0
+    heavy%mass = 1e12_wp*a0%mass
+    heavy%inertia = 1e12_wp*a0%inertia
+    heavy%velocity = 0
+    heavy%omega = 0
+    b_ground = b0
+    b_heavy = b0
+    call collide(impact_law_t(restitution=0.7_wp, mu=0.4_wp), n, point, point, ground, b_ground, 0.01_wp, .false., &
+                 on_ground, st)
+    call collide(impact_law_t(restitution=0.7_wp, mu=0.4_wp), n, point, point, heavy, b_heavy, 0.01_wp, .false., &
+                 on_heavy, st)
+    call check(st%ok(), 'general: on the ground and on a heavy body: resolved')
+    call check_close(norm2(b_ground%velocity - b_heavy%velocity) + norm2(b_ground%omega - b_heavy%omega)*0.1_wp, &
+                     0.0_wp, 0.0_wp, 1e-11_wp*norm2(b0%velocity), 'general: a heavy body 1 acts as the ground')
+    call check(ground%mass == 0 .and. all(ground%velocity == 0) .and. all(ground%omega == 0), &
+               'general: the ground does not move')
+  end subroutine general
+
+  !> The contact scenario's groups of two balls 'a' (m1, r1) and 'b' (m2,
+  !> r2) at height 1 m, b at (0.5, aside, 1), thrown at each other (2 and -1
+  !> m/s along x), the contact 'a_b' between them (restitution e); no floor.
+  function pair_input(aside, e) result(text)
+    real(wp), intent(in) :: aside, e
+    character(len=:), allocatable :: text
+    text = '&run scenario = ''contact'' /'//nl// &
+           '&solver rtol = 1e-12, atol = 1e-12, duration = 0.3, output_step = 0.01 /'//nl// &
+           '&shape name = ''a'', kind = ''sphere'', radius = '//number(r1)//' /'//nl// &
+           '&shape name = ''b'', kind = ''sphere'', radius = '//number(r2)//' /'//nl// &
+           '&body name = ''a'', mass = '//number(m1)//', solid_of = ''a'', position = 0, 0, 1, velocity = 2, 0, 0 /'// &
+           nl//'&body name = ''b'', mass = '//number(m2)//', solid_of = ''b'', position = 0.5, '//number(aside)// &
+           ', 1, velocity = -1, 0, 0 /'//nl// &
+           '&contact name = ''a_b'', body_1 = ''a'', shape_1 = ''a'', body_2 = ''b'', shape_2 = ''b'', '// &
+           'start = ''open'', restitution = '//number(e)//' /'//nl
+  end function pair_input
+
+  !> The contact scenario of `input` driven as the command would (its
+  !> solver's tolerances and output step): the flight, each contact's
+  !> open flags and the driver's result.
+  subroutine run_input(input, flight, result, st)
+    type(input_text_t), intent(in) :: input
+    type(flight_ode_t), intent(out), target :: flight
+    type(driver_result_t), intent(out) :: result
+    type(status_t), intent(out) :: st
+    type(solver_config_t) :: solver
+    type(contact_system_t) :: system
+    type(driver_options_t) :: options
+    type(contact_model_t) :: model
+    real(wp), allocatable :: q0(:), qd0(:)
+    integer, allocatable :: open(:, :)
+    character(len=8), allocatable :: units(:)
+    call read_solver_config(input, solver, st)
+    if (st%ok()) call read_contact_config(input, system, st)
+    if (.not. st%ok()) return
+    if (carrying_contact(system) == 0) then
+      call build_flight(system, flight, q0, qd0, units, st)
+    else
+      call build_bodies(system, start_carriers(system), flight, q0, qd0, units, st, 0, .false., model)
+    end if
+    if (.not. st%ok()) return
+    options%ode = solver%options
+    options%ode%convergence_coefficient = contact_convergence_coefficient
+    options%t_end = solver%duration
+    options%output_step = solver%output_step
+    options%progress_seconds = 0
+    call flight%start_series(400)
+    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, open)
+  end subroutine run_input
+
+  subroutine run_text(text, label, flight, result, st)
+    character(len=*), intent(in) :: text, label
+    type(flight_ode_t), intent(out), target :: flight
+    type(driver_result_t), intent(out) :: result
+    type(status_t), intent(out) :: st
+    type(input_text_t) :: input
+    call input_from_text(label, text, input, st)
+    if (st%ok()) call run_input(input, flight, result, st)
+  end subroutine run_text
+
+  subroutine head_on_flight()
+    real(wp), parameter :: e = 0.6_wp
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp) :: t_hit, after(2), gap, worst_gap, worst_p, worst_v, worst_spin, p0(3), p(3)
+    integer :: i
+    call run_text(pair_input(0.0_wp, e), 'head on flight', flight, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'head on flight: runs to its end: '//st%text()// &
+               ' '//flight%outcome)
+    if (.not. st%ok()) return
+    t_hit = (0.5_wp - r1 - r2)/3
+    after = head_on_law(e, 2.0_wp, -1.0_wp)
+    call check(size(flight%impacts) == 1, 'head on flight: one impact')
+    if (size(flight%impacts) /= 1) return
+    associate (row => flight%impacts(1))
+      call check(row%contact == 1 .and. row%body_1 == 1 .and. row%body_2 == 2, 'head on flight: between a and b')
+      call check_close(row%time, t_hit, 0.0_wp, 1e-10_wp, 'head on flight: at t* = (0.5 - R1 - R2)/3 (s)')
+      call check_close(row%normal_speed_before, -3.0_wp, 0.0_wp, 1e-10_wp, 'head on flight: approach 3 m/s')
+      call check_close(row%normal_speed_after, 3*e, 0.0_wp, 1e-10_wp, 'head on flight: rebound 3 e (m/s)')
+      call check_close(row%normal_impulse, m2*(after(2) + 1), 0.0_wp, 1e-10_wp, &
+                       'head on flight: impulse m2 (v2'' - v2) (N s)')
+      call check_close(row%tangential_impulse, 0.0_wp, 0.0_wp, 1e-12_wp, 'head on flight: no tangential impulse')
+      call check_close(row%energy_lost, (1 - e**2)*m1*m2/(2*(m1 + m2))*9, 0.0_wp, 1e-10_wp, &
+                       'head on flight: energy lost (1 - e^2) m1 m2 dv^2/(2 (m1 + m2)) (J)')
+    end associate
+    worst_gap = 0
+    worst_p = 0
+    worst_v = 0
+    worst_spin = 0
+    associate (s => flight%series)
+      p0 = m1*s%body_v(:, 1, 1) + m2*s%body_v(:, 2, 1)
+      do i = 1, s%n
+        if (s%time(i) < t_hit) then
+          gap = 0.5_wp - 3*s%time(i) - r1 - r2
+        else
+          gap = (after(2) - after(1))*(s%time(i) - t_hit)
+          worst_v = max(worst_v, abs(s%body_v(1, 1, i) - after(1)), abs(s%body_v(1, 2, i) - after(2)))
+        end if
+        worst_gap = max(worst_gap, abs(s%monitor(1, i) - gap))
+        p = m1*s%body_v(:, 1, i) + m2*s%body_v(:, 2, i)
+        worst_p = max(worst_p, norm2(p - p0 - [0.0_wp, 0.0_wp, -(m1 + m2)*g*s%time(i)]))
+        worst_spin = max(worst_spin, maxval(abs(s%body_omega(:, :, i))))
+      end do
+      call check(s%time(s%n) == 0.3_wp, 'head on flight: to 0.3 s')
+    end associate
+    call check_close(worst_gap, 0.0_wp, 0.0_wp, 1e-10_wp, 'head on flight: the gap at every record (m)')
+    call check_close(worst_v, 0.0_wp, 0.0_wp, 1e-10_wp, 'head on flight: the speeds after by the closed form')
+    call check_close(worst_p, 0.0_wp, 0.0_wp, 1e-10_wp, 'head on flight: momentum p0 + (m1 + m2) g t')
+    call check_close(worst_spin, 0.0_wp, 0.0_wp, 1e-10_wp, 'head on flight: no spin (rad/s)')
+    print '(a, 4es10.2)', '  head on flight: gap, speeds, momentum, spin ', worst_gap, worst_v, worst_p, worst_spin
+  end subroutine head_on_flight
+
+  subroutine oblique_flight()
+    real(wp), parameter :: e = 0.8_wp, aside = 0.1_wp
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp) :: t_hit, n(3), after(2), va(3), vb(3), worst
+    integer :: i
+    call run_text(pair_input(aside, e), 'oblique flight', flight, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'oblique flight: runs to its end: '//st%text())
+    if (.not. st%ok()) return
+    n = [sqrt((r1 + r2)**2 - aside**2), aside, 0.0_wp]/(r1 + r2)
+    t_hit = (0.5_wp - n(1)*(r1 + r2))/3
+    call check(size(flight%impacts) == 1, 'oblique flight: one impact')
+    if (size(flight%impacts) /= 1) return
+    call check_close(flight%impacts(1)%time, t_hit, 0.0_wp, 1e-10_wp, 'oblique flight: the impact''s time (s)')
+    call check_close(flight%impacts(1)%tangential_impulse, 0.0_wp, 0.0_wp, 1e-12_wp, &
+                     'oblique flight: no tangential impulse')
+    after = head_on_law(e, 2*n(1), -n(1))
+    worst = 0
+    associate (s => flight%series)
+      i = findloc(s%time(:s%n), flight%impacts(1)%time, dim=1)
+      call check(i > 0, 'oblique flight: the impact recorded')
+      if (i == 0) return
+      ! the state after the impact; the vertical speed -g t* of both
+      va = s%body_v(:, 1, i) + [0.0_wp, 0.0_wp, g*t_hit]
+      vb = s%body_v(:, 2, i) + [0.0_wp, 0.0_wp, g*t_hit]
+      worst = max(norm2(va - dot_product(va, n)*n - ([2.0_wp, 0.0_wp, 0.0_wp] - 2*n(1)*n)), &
+                  norm2(vb - dot_product(vb, n)*n - ([-1.0_wp, 0.0_wp, 0.0_wp] + n(1)*n)), &
+                  abs(dot_product(va, n) - after(1)), abs(dot_product(vb, n) - after(2)))
+    end associate
+    call check_close(worst, 0.0_wp, 0.0_wp, 1e-10_wp, 'oblique flight: speeds across n kept, along n by the '// &
+                     'head-on law (m/s)')
+    print '(a, es10.2)', '  oblique flight: speeds after ', worst
+  end subroutine oblique_flight
+
+  !> inputs/contact/stacked_balls.nml against the closed form of its
+  !> first two impacts: the big ball on the floor at t0 = sqrt(2 h/g), the
+  !> small ball, gap d above it and still falling at v0 = g t0, met at t0 +
+  !> d/((1 + e_f) v0) (the approach speed (1 + e_f) v0: gravity moves both
+  !> alike), each then at its speed by the head-on law.
+  subroutine stacked()
+    real(wp), parameter :: h = 1.0_wp, d = 0.01_wp, e_f = 0.8_wp, e_p = 0.9_wp, mb = 0.6_wp, ms = 0.057_wp
+    type(input_text_t) :: input
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp) :: t0, v0, s, ub, us, ub_after, us_after
+    integer :: i
+    call load_input_file('inputs/contact/stacked_balls.nml', input, st)
+    if (st%ok()) call run_input(input, flight, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'stacked: runs to its end: '//st%text()//' '// &
+               flight%outcome)
+    if (.not. st%ok()) return
+    t0 = sqrt(2*h/g)
+    v0 = g*t0
+    s = d/((1 + e_f)*v0)
+    ub = e_f*v0 - g*s
+    us = -v0 - g*s
+    ub_after = ((mb - e_p*ms)*ub + (1 + e_p)*ms*us)/(mb + ms)
+    us_after = ((ms - e_p*mb)*us + (1 + e_p)*mb*ub)/(mb + ms)
+    call check(size(flight%impacts) >= 2, 'stacked: the floor''s impact and the pair''s')
+    if (size(flight%impacts) < 2) return
+    associate (floor => flight%impacts(1), pair => flight%impacts(2))
+      call check(floor%contact == 1 .and. floor%body_1 == 0 .and. floor%body_2 == 1, 'stacked: first the big '// &
+                 'ball on the floor')
+      call check_close(floor%time, t0, 0.0_wp, 1e-9_wp, 'stacked: the big ball lands at sqrt(2 h/g) (s)')
+      call check(pair%contact == 2 .and. pair%body_1 == 1 .and. pair%body_2 == 2, 'stacked: then the small '// &
+                 'ball on the big one (body_1 big, body_2 small)')
+      call check_close(pair%time, t0 + s, 0.0_wp, 1e-9_wp, 'stacked: they meet at t0 + d/((1 + e_f) v0) (s)')
+      call check_close(pair%normal_speed_before, us - ub, 0.0_wp, 1e-8_wp, 'stacked: approach (1 + e_f) v0 (m/s)')
+      call check_close(pair%normal_speed_after, e_p*(ub - us), 0.0_wp, 1e-8_wp, 'stacked: rebound e_p dv (m/s)')
+      call check_close(pair%normal_impulse, ms*(us_after - us), 0.0_wp, 1e-8_wp, 'stacked: impulse on the small '// &
+                       'ball m_s (u_s'' - u_s) (N s)')
+      call check_close(pair%energy_lost, (1 - e_p**2)*mb*ms/(2*(mb + ms))*(ub - us)**2, 0.0_wp, 1e-8_wp, &
+                       'stacked: energy lost (J)')
+      i = findloc(flight%series%time(:flight%series%n), pair%time, dim=1)
+      call check(i > 0, 'stacked: the pair''s impact recorded')
+      if (i == 0) return
+      call check_close(flight%series%body_v(3, 2, i), us_after, 0.0_wp, 1e-8_wp, 'stacked: the small ball '// &
+                       'leaves at the head-on law''s speed (m/s)')
+      call check_close(flight%series%body_v(3, 1, i), ub_after, 0.0_wp, 1e-8_wp, 'stacked: the big ball '// &
+                       'leaves at the head-on law''s speed (m/s)')
+      print '(a, 2f9.4)', '  stacked: the speeds after (m/s) ', us_after, ub_after
+    end associate
+    call check(all(flight%impacts(3:)%contact == 1), 'stacked: then only the big ball on the floor')
+  end subroutine stacked
+
+  !> A ball dropped from 0.3 m above the top of a ball that the floor
+  !> carries (start closed): the run ends where they touch, saying why.
+  subroutine on_carried()
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    character(len=:), allocatable :: text
+    text = '&run scenario = ''contact'' /'//nl// &
+           '&solver rtol = 1e-12, atol = 1e-12, duration = 1, output_step = 0.01 /'//nl// &
+           '&shape name = ''floor'', kind = ''plane'' /'//nl// &
+           '&shape name = ''low'', kind = ''sphere'', radius = 0.1 /'//nl// &
+           '&shape name = ''high'', kind = ''sphere'', radius = 0.05 /'//nl// &
+           '&body name = ''low'', mass = 1, solid_of = ''low'', position = 0, 0, 0.1 /'//nl// &
+           '&body name = ''high'', mass = 0.1, solid_of = ''high'', position = 0, 0, 0.55 /'//nl// &
+           '&contact name = ''low_on_floor'', shape_1 = ''floor'', body_2 = ''low'', shape_2 = ''low'' /'//nl// &
+           '&contact name = ''high_on_low'', body_1 = ''low'', shape_1 = ''low'', body_2 = ''high'', '// &
+           'shape_2 = ''high'', start = ''open'', restitution = 0.5 /'//nl
+    call run_text(text, 'on carried', flight, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_EVENT_STOP, 'on carried: stops: '//st%text())
+    call check(index(flight%outcome, 'contact ''high_on_low'': body ''high'' hits body ''low'' at t = ') == 1 .and. &
+               index(flight%outcome, 'while contact ''low_on_floor'' carries ''low'' (an impact on a carried body') &
+               > 0, 'on carried: the outcome says why: '//flight%outcome)
+    call check_close(flight%series%time(flight%series%n), sqrt(2*0.3_wp/g), 0.0_wp, 1e-9_wp, &
+                     'on carried: at the touch, sqrt(2 h/g) (s)')
+    call check(size(flight%impacts) == 0, 'on carried: no impact made')
+  end subroutine on_carried
+
+  subroutine two_at_once()
+    real(wp), parameter :: z0 = 0.5_wp, radius = 0.1_wp
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    character(len=:), allocatable :: text
+    text = '&run scenario = ''contact'' /'//nl// &
+           '&solver rtol = 1e-12, atol = 1e-12, duration = 1, output_step = 0.01 /'//nl// &
+           '&shape name = ''left'', kind = ''plane'', angles_deg = 0, 45, 0 /'//nl// &
+           '&shape name = ''right'', kind = ''plane'', angles_deg = 0, -45, 0 /'//nl// &
+           '&shape name = ''ball'', kind = ''sphere'', radius = '//number(radius)//' /'//nl// &
+           '&body name = ''ball'', mass = 1, solid_of = ''ball'', position = 0, 0, '//number(z0)//' /'//nl// &
+           '&contact name = ''on_left'', shape_1 = ''left'', body_2 = ''ball'', shape_2 = ''ball'', '// &
+           'start = ''open'', restitution = 0.5 /'//nl// &
+           '&contact name = ''on_right'', shape_1 = ''right'', body_2 = ''ball'', shape_2 = ''ball'', '// &
+           'start = ''open'', restitution = 0.5 /'//nl
+    call run_text(text, 'two at once', flight, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_EVENT_STOP, 'two at once: stops: '//st%text()//' '// &
+               flight%outcome)
+    if (.not. st%ok()) return
+    call check(index(flight%outcome, 'body ''ball'' lands on two contacts at once at t = ') == 1 .and. &
+               index(flight%outcome, '(''on_left'', ''on_right''): an impact at two points is not built; the run '// &
+                     'ends here') > 0, 'two at once: the outcome names the body and both contacts: '//flight%outcome)
+    call check_close(flight%series%time(flight%series%n), sqrt(2*(z0 - radius*sqrt(2.0_wp))/g), 0.0_wp, 1e-9_wp, &
+                     'two at once: where both gaps reach zero, sqrt(2 (z0 - R sqrt 2)/g) (s)')
+    call check(size(flight%impacts) == 0, 'two at once: no impact made')
+  end subroutine two_at_once
+end program test_body_impact
