@@ -22,6 +22,7 @@ module scenarios_mechanism
   use io_xdmf, only: xdmf_t, body_shape_t
   use geometry_surface, only: surface_t
   use scenarios_report, only: end_report, add_run_cost
+  use design_ride_evaluation, only: noise_free
   use contact_flight, only: flight_ode_t, impact_record_t
   use contact_closing, only: drive_flight
   implicit none (type, external)
@@ -172,7 +173,8 @@ contains
                     message, outcome, sys%chart_changes, sys%closed%ode%mechanism, write_status, sys%impacts, losses)
       else
         call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
-                    message, outcome, sys%chart_changes, sys%mechanism, write_status, sys%impacts, losses)
+                    message, outcome, sys%chart_changes, sys%mechanism, write_status, sys%impacts, losses, &
+                    carried_frames=carried_frames(sys, open))
       end if
     class default
       call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
@@ -357,7 +359,7 @@ contains
   !> The printed summary (angles in degrees) and, with --summary-json, the
   !> same numbers as JSON (SI).
   subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, outcome, chart_changes, m, &
-                    status, impacts, losses, figures)
+                    status, impacts, losses, figures, carried_frames)
     character(len=*), intent(in) :: scenario, path, message, outcome
     integer, intent(in) :: chart_changes   ! coordinates re-based on a new chart (docs/multibody.md, events)
     type(mechanism_series_t), intent(in) :: s
@@ -371,6 +373,7 @@ contains
     type(impact_record_t), intent(in) :: impacts(:)
     real(wp), intent(in) :: losses(:)   ! J, the impacts' energy lost up to each record
     class(run_figures_t), intent(in), optional :: figures
+    integer, intent(in), optional :: carried_frames(:)   ! each contact's body's frame where it closed (else 0)
     type(summary_t) :: summary
     real(wp) :: e0, scale
     integer :: n, k, i
@@ -386,7 +389,7 @@ contains
       ! bodies and contacts in engineering terms (docs/contact.md, Outputs)
       if (.not. complete) call summary%add_text('failure', 'stopped because', message)
       call add_body_terms(summary, s, m)
-      call add_contact_terms(summary, s, m)
+      call add_contact_terms(summary, s, m, carried_frames)
       if (size(impacts) > 0) then
         call summary%add_count('impacts', 'impacts', size(impacts), '(landings, /contact/impacts)')
         call summary%add('impact_speed_max', 'impact speed max', maxval(-impacts%normal_speed_before), 'm/s', &
@@ -447,11 +450,16 @@ contains
   !> tilt of its symmetry axis from the vertical and its spin about that axis
   !> (a body with two equal principal moments and a third apart; a sphere:
   !> its angular speed; none: its angular speed), the speed of its centre.
+  !> An angular speed below report_noise_floor of the body's turning scale
+  !> (its largest centre speed over its radius of gyration, plus its largest
+  !> angular speed) is rounding noise and prints as 0 (design_ride_evaluation
+  !> noise_free: a ball that never spins shows no 5e-15 rad/s).
   subroutine add_body_terms(summary, s, m)
     type(summary_t), intent(inout) :: summary
     type(mechanism_series_t), intent(in) :: s
     type(mechanism_t), intent(in) :: m
     real(wp) :: up(3), centre(3, s%n), speed(s%n), tilt(s%n), spin(s%n), mass, com(3), inertia(3, 3), gravity(3)
+    real(wp) :: gyration, turning
     integer :: k, i, e, axis
     character(len=:), allocatable :: b, axis_name
     do k = 1, s%nb
@@ -493,18 +501,25 @@ contains
                          'rad/s (about '//axis_name//', '//engineering(spin(s%n)*30/acos(-1.0_wp))//' rpm)')
         call summary%add(b//'_spin_max', b//' spin max', maxval(abs(spin)), 'rad/s')
       else
-        call summary%add(b//'_angular_speed_final', b//' angular speed final', spin(s%n), 'rad/s')
-        call summary%add(b//'_angular_speed_max', b//' angular speed max', maxval(spin), 'rad/s')
+        gyration = sqrt((inertia(1, 1) + inertia(2, 2) + inertia(3, 3))/(3*mass))
+        turning = maxval(speed)/gyration + maxval(spin)
+        call summary%add(b//'_angular_speed_final', b//' angular speed final', noise_free(spin(s%n), turning), &
+                         'rad/s')
+        call summary%add(b//'_angular_speed_max', b//' angular speed max', noise_free(maxval(spin), turning), 'rad/s')
       end if
     end do
   end subroutine add_body_terms
 
   !> Per contact: its slip speed, its normal force in N and in weights of
-  !> the body it carries (body 2), its friction force.
-  subroutine add_contact_terms(summary, s, m)
+  !> the body it carries (body 2), its friction force. The series' contacts
+  !> may be more than the mechanism's (a flight's phases: m is the first's);
+  !> carried_frames gives each contact's body's frame (of m) where the
+  !> contact closed in a later phase.
+  subroutine add_contact_terms(summary, s, m, carried_frames)
     type(summary_t), intent(inout) :: summary
     type(mechanism_series_t), intent(in) :: s
     type(mechanism_t), intent(in) :: m
+    integer, intent(in), optional :: carried_frames(:)
     real(wp) :: weight, slip(s%n), friction(s%n), mass, com(3), inertia(3, 3), gravity(3)
     integer :: k, i, e, j, frame_b
     character(len=:), allocatable :: c
@@ -518,6 +533,8 @@ contains
         frame_b = m%contacts(j)%frame_b
       else if (s%nb == 1) then
         frame_b = s%body_frame(1)
+      else if (present(carried_frames)) then
+        frame_b = carried_frames(k)
       end if
       weight = 0
       do e = 1, m%n_elements
@@ -537,6 +554,27 @@ contains
       call summary%add(c//'_friction_force_max', c//' friction force max', maxval(friction), 'N')
     end do
   end subroutine add_contact_terms
+
+  !> Each series contact's body_2's frame (the series' body_frame, the first
+  !> phase's) where the contact was closed at some record (open(c, :) of the
+  !> description's contact c has a 0), else 0: the report's weights of the
+  !> contacts a later phase closed.
+  function carried_frames(flight, open) result(frames)
+    type(flight_ode_t), intent(in) :: flight
+    integer, intent(in) :: open(:, :)
+    integer, allocatable :: frames(:)
+    integer :: k, c, j
+    associate (s => flight%series, contacts => flight%system%contacts)
+      allocate (frames(s%nc), source=0)
+      do k = 1, s%nc
+        c = findloc([(contacts(c)%name == trim(s%contact_names(k)), c = 1, size(contacts))], .true., dim=1)
+        if (c == 0 .or. c > size(open, 1)) cycle
+        if (all(open(c, :) /= 0)) cycle
+        j = findloc([(trim(s%body_names(j)) == contacts(c)%body_2, j = 1, s%nb)], .true., dim=1)
+        if (j > 0) frames(k) = s%body_frame(j)
+      end do
+    end associate
+  end function carried_frames
 
   !> The name of the body whose frame is `frame`.
   function body_name(s, frame) result(name)

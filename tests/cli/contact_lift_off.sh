@@ -21,7 +21,8 @@
 #             law) is printed and stored, ~0;
 #   two_balls two balls bouncing at once (inputs/contact/two_balls.nml), each
 #             as alone; one comes to rest (its contact closes) while the
-#             other bounces on;
+#             other bounces on; the report's spins (no rounding noise) and
+#             the weights of the contact closed in the second phase;
 #   stacked   inputs/contact/stacked_balls.nml: the impacts table's rows,
 #             the two balls' impact naming both bodies.
 set -u
@@ -151,6 +152,14 @@ run_case two_balls 0
 grep -qF "contact 'big_on_floor' closed at the impact at t = 1.326577 s" "$work/two_balls.out" ||
   fail "two_balls: the outcome does not say where the big ball's contact closed"
 grep -qE "impacts +10 " "$work/two_balls.out" || fail "two_balls: the summary does not count 10 impacts"
+# the report: balls that never spin print no rounding noise (a spin of
+# ~1e-14 rad/s, below 1e-9 of the turning scale, is 0), and the big ball's
+# contact, closed only in the second phase, has its weights line
+grep -qE "^  big angular speed final +0 rad/s" "$work/two_balls.out" &&
+  grep -qE "^  small angular speed max +0 rad/s" "$work/two_balls.out" ||
+  fail "two_balls: the report prints rounding noise as the balls' angular speed"
+grep -qF "big_on_floor normal force in weights 0 / 1.0000 of big's weight" "$work/two_balls.out" ||
+  fail "two_balls: no weights line for the contact closed in a later phase"
 if [ -n "$h5python" ] && [ -f "$work/two_balls.h5" ]; then
   "$h5python" - "$work/two_balls.h5" <<'EOF' || fail "two_balls: the impacts table"
 import sys, h5py, numpy as np
