@@ -18,13 +18,13 @@
 !> the ground before bodies could hit each other, to the bit.
 module contact_body_impact
   use base_kinds, only: wp
-  use base_status, only: status_t
+  use base_status, only: status_t, set_status, STATUS_DOMAIN
   use base_vector, only: cross
   use numerics_linear_algebra, only: lu_factor, lu_solve
   use kinetostatics_impact, only: impact_law_t, impact_outcome_t, resolve_impact, rigid_body_delassus
   implicit none (type, external)
   private
-  public :: impact_body_t, collision_t, collide, pair_delassus, relative_velocity, apply_impulse
+  public :: impact_body_t, collision_t, collide, collide_at_once, pair_delassus, relative_velocity, apply_impulse
 
   !> A free rigid body at an impact (world): its pose's origin and centre of
   !> mass, its twist (omega and the origin's velocity), mass and inertia
@@ -123,6 +123,91 @@ contains
     body%omega = body%omega + spin_change
     body%velocity = v_centre - cross(body%omega, body%centre - body%origin)
   end subroutine apply_impulse
+
+  !> A frictionless impact at several contacts at once (a body landing on
+  !> two surfaces in one instant), Newton's restitution at each: the normal
+  !> impulses P >= 0 with the normal speeds after v+ = v- + W P, and at each
+  !> contact either P_i = 0 and v+_i >= -e_i v-_i, or v+_i = -e_i v-_i
+  !> (a linear complementarity problem; W, the Delassus matrix of the normal
+  !> directions, is found column by column from each body's response to a
+  !> unit impulse, and is positive definite where the contacts' normals are
+  !> independent on the bodies, so the solution is one: found among the
+  !> sets of active contacts). Contact i is between bodies(pair(1, i)) and
+  !> bodies(pair(2, i)) (index 0: the ground) at points_1(:, i),
+  !> points_2(:, i) with normal normals(:, i) out of body 1; every body's
+  !> twist is changed. Per contact: P_i, v-_i, v+_i and the energy it took,
+  !> -P_i (v-_i + v+_i)/2 (their sum the kinetic energy's fall).
+  subroutine collide_at_once(restitution, normals, points_1, points_2, pair, bodies, impulse, speed_before, &
+                             speed_after, energy_lost, status)
+    real(wp), intent(in) :: restitution(:), normals(:, :), points_1(:, :), points_2(:, :)
+    integer, intent(in) :: pair(:, :)
+    type(impact_body_t), intent(inout) :: bodies(0:)
+    real(wp), intent(out) :: impulse(:), speed_before(:), speed_after(:), energy_lost(:)
+    type(status_t), intent(inout) :: status
+    type(impact_body_t) :: pushed(0:ubound(bodies, 1))
+    real(wp) :: w(size(restitution), size(restitution))
+    real(wp), allocatable :: a(:, :), rhs(:)
+    integer :: i, j, m, set
+    integer, allocatable :: active(:), ipiv(:)
+    logical :: found
+    type(status_t) :: solved
+    m = size(restitution)
+    speed_before = [(normal_speed(bodies, i), i = 1, m)]
+    do j = 1, m
+      pushed = bodies
+      call push(pushed, j, 1.0_wp, status)
+      w(:, j) = [(normal_speed(pushed, i), i = 1, m)] - speed_before
+    end do
+    if (.not. status%ok()) return
+    found = .false.
+    do set = 1, 2**m - 1
+      active = pack([(i, i = 1, m)], [(btest(set, i - 1), i = 1, m)])
+      a = w(active, active)
+      rhs = -(1 + restitution(active))*speed_before(active)
+      allocate (ipiv(size(active)))
+      solved = status_t()
+      call lu_factor(a, ipiv, solved)
+      if (solved%ok()) call lu_solve(a, ipiv, rhs, solved)
+      deallocate (ipiv)
+      if (.not. solved%ok()) cycle   ! these contacts' normals dependent: another set
+      impulse = 0
+      impulse(active) = rhs
+      speed_after = speed_before + matmul(w, impulse)
+      found = all(impulse >= 0) .and. all(speed_after >= -restitution*speed_before - &
+                                          64*epsilon(1.0_wp)*maxval(abs(speed_before)))
+      if (found) exit
+    end do
+    if (.not. found) then
+      call set_status(status, STATUS_DOMAIN, 'impact at several contacts at once: no impulses found that keep '// &
+                      'every contact from going in (its normals dependent on the bodies)')
+      return
+    end if
+    do j = 1, m
+      call push(bodies, j, impulse(j), status)
+    end do
+    if (.not. status%ok()) return
+    speed_after = [(normal_speed(bodies, i), i = 1, m)]
+    energy_lost = -impulse*(speed_before + speed_after)/2
+  contains
+    !> The normal speed of contact i (body 2's point relative to body 1's).
+    real(wp) function normal_speed(set_of, i) result(speed)
+      type(impact_body_t), intent(in) :: set_of(0:)
+      integer, intent(in) :: i
+      speed = dot_product(normals(:, i), relative_velocity(set_of(pair(1, i)), set_of(pair(2, i)), points_1(:, i), &
+                                                           points_2(:, i)))
+    end function normal_speed
+
+    !> The normal impulse p at contact j: +p n on its body 2, -p n on its body 1.
+    subroutine push(set_of, j, p, st)
+      type(impact_body_t), intent(inout) :: set_of(0:)
+      integer, intent(in) :: j
+      real(wp), intent(in) :: p
+      type(status_t), intent(inout) :: st
+      call apply_impulse(set_of(pair(2, j)), points_2(:, j), p*normals(:, j), st)
+      call apply_impulse(set_of(pair(1, j)), points_1(:, j), -p*normals(:, j), st)
+    end subroutine push
+  end subroutine collide_at_once
+
   !> The impulse (on the body, N s) that closes a contact whose points move
   !> apart at v after the impact (relative velocity, world; K the Delassus
   !> matrix): it takes away their normal velocity n.v along n, frictionless,

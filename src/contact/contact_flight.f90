@@ -31,8 +31,13 @@
 !> contact_closing goes on with it closed from there. Bounces that would
 !> never end (Zeno: rebounds e^k v0, endless in number, their flights summing
 !> to a finite time) end so after finitely many, where e^k v0 falls below
-!> close_speed. A landing of one body on two contacts at once (an impact at two points)
-!> is not built: the run ends there, saying so.
+!> close_speed. A body landing on several contacts at once (a ball into a
+!> V, on the floor and another body) is one frictionless impact at all of
+!> the event's contacts (impact_at_once: contact_body_impact collide_at_once,
+!> Newton's restitution at each, the normal impulses >= 0 from the Delassus
+!> matrix of the normal directions); with friction or without restitution,
+!> or where a rebound is below close_speed (closing at several contacts at
+!> once), the run ends there, saying so.
 !>
 !> Several bodies may fly at once (one mechanism: each body its own six
 !> coordinates, its gaps at its own pose, its impacts changing its own
@@ -71,14 +76,13 @@ module contact_flight
   use numerics_linear_algebra, only: lu_factor, lu_solve
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_impact, only: impact_law_t
-  use base_vector, only: cross
   use geometry_solid, only: solid_properties_t
   use contact_factory, only: body_from_spec
   use contact_free_body, only: add_free_body_to => add_free_body, free_body_units
   use contact_model, only: contact_system_t, contact_model_t, build_system_shapes, body_index, LEVEL_POSITION, &
     CHAIN_AUTO
   use contact_open_gaps, only: open_gaps_t, start_open_gaps
-  use contact_body_impact, only: impact_body_t, collision_t, collide
+  use contact_body_impact, only: impact_body_t, collision_t, collide, collide_at_once
   implicit none (type, external)
   private
   public :: flight_ode_t, impact_record_t, build_flight, starts_open, restart_flight, check_flight_system, &
@@ -399,7 +403,8 @@ contains
   !> The mechanism's events, then landings: a contact's gap falling through
   !> zero is an impact (with its restitution) or ends the run. Landings of
   !> different bodies at once are independent impacts, one after the other;
-  !> two of one body at once (an impact at two points) end the run. The
+  !> several of one body at once are one impact at all of them
+  !> (impact_at_once). The
   !> touching contact's root: opened (its landing is watched from now on),
   !> or gone back in (a landing on it).
   subroutine flight_handle_event(self, t, y, fired, action, status)
@@ -451,10 +456,8 @@ contains
     end do
     do b = 1, size(self%body_frame)
       if (count(lands .and. (self%gaps%body == b .or. self%gaps%body_1 == b)) > 1) then
-        action = max(action, EVENT_STOP)
-        call add_outcome(self, 'body '''//self%system%bodies(b)%name//''' lands on two contacts at once at t = '// &
-                         format_short(t)//' s ('//landed_names(self, lands .and. (self%gaps%body == b .or. &
-                         self%gaps%body_1 == b))//'): an impact at two points is not built; the run ends here')
+        ! a body on several contacts at once: one impact at all of this event's
+        call impact_at_once(self, lands, t, y, action, status)
         return
       end if
     end do
@@ -465,7 +468,7 @@ contains
         if (.not. status%ok()) return
         cycle
       end if
-      speed = -approach_rate(self, c)
+      speed = -dot_product(self%gaps%gap(c)%normal, self%gaps%velocity(c, self%work, self%body_frame))
       action = max(action, EVENT_STOP)
       call add_outcome(self, 'landing: the gap of contact '''//self%system%contacts(c)%name//''' fell to zero '// &
                        'at t = '//format_short(t)//' s, approaching at '//format_short(speed)//' m/s (no '// &
@@ -548,6 +551,68 @@ contains
     end associate
   end subroutine impact
 
+  !> The landings of one event where a body lands on several contacts at
+  !> once (`lands`, every contact landed on; no carried body among them): one
+  !> frictionless impact at all of them (contact_body_impact
+  !> collide_at_once, Newton's restitution at each), a row per contact, and
+  !> the bodies fly on. Not built, the run ending here, saying so: such an
+  !> impact with friction (impact_mu) or without restitution, and one that
+  !> leaves a contact slower than its close_speed (closing several contacts
+  !> at once).
+  subroutine impact_at_once(self, lands, t, y, action, status)
+    class(flight_ode_t), intent(inout) :: self
+    logical, intent(in) :: lands(:)
+    real(wp), intent(in) :: t
+    real(wp), intent(inout) :: y(:)
+    integer, intent(inout) :: action
+    type(status_t), intent(inout) :: status
+    type(impact_body_t) :: bodies(0:size(self%body_frame))
+    integer, allocatable :: c(:), pair(:, :)
+    real(wp), allocatable :: normals(:, :), points_1(:, :), points_2(:, :), rates(:)
+    real(wp), dimension(count(lands)) :: impulse, before, after, lost
+    integer :: f, i, b, m
+    c = pack([(i, i = 1, size(lands))], lands)
+    m = size(c)
+    if (any(self%system%contacts(c)%restitution < 0) .or. any(self%system%contacts(c)%impact_mu > 0)) then
+      action = max(action, EVENT_STOP)
+      call add_outcome(self, 'landing on several contacts at once at t = '//format_short(t)//' s ('// &
+                       landed_names(self, lands)//'): an impact at several points needs restitution at each and '// &
+                       'is built frictionless only (impact_mu 0); the run ends here')
+      return
+    end if
+    pair = reshape([(self%gaps%body_1(c(i)), self%gaps%body(c(i)), i = 1, m)], [2, m])
+    do b = 1, size(self%body_frame)
+      if (any(pair == b)) bodies(b) = impact_body(self, b)
+    end do
+    normals = reshape([(self%gaps%gap(c(i))%normal, i = 1, m)], [3, m])
+    points_1 = reshape([(self%gaps%gap(c(i))%point_1, i = 1, m)], [3, m])
+    points_2 = reshape([(self%gaps%gap(c(i))%point_2, i = 1, m)], [3, m])
+    call collide_at_once(self%system%contacts(c)%restitution, normals, points_1, points_2, pair, bodies, impulse, &
+                         before, after, lost, status)
+    if (.not. status%ok()) return
+    f = self%mechanism%f
+    rates = y(f + 1:f + self%mechanism%ns)
+    do b = 1, size(self%body_frame)
+      if (any(pair == b)) call start_rates(self, b, [bodies(b)%omega, bodies(b)%velocity], rates, status)
+      if (.not. status%ok()) return
+    end do
+    y(f + 1:f + self%mechanism%ns) = rates
+    do i = 1, m
+      self%impacts = [self%impacts, impact_record_t(time=t, contact=c(i), body_1=pair(1, i), body_2=pair(2, i), &
+                      normal_speed_before=before(i), normal_speed_after=after(i), normal_impulse=impulse(i), &
+                      tangential_impulse=0.0_wp, energy_lost=lost(i))]
+    end do
+    if (any(after < self%system%contacts(c)%close_speed)) then
+      action = max(action, EVENT_STOP)
+      call add_outcome(self, 'the impact at several contacts at once at t = '//format_short(t)//' s ('// &
+                       landed_names(self, lands)//') leaves '//landed_names(self, unpack(after < &
+                       self%system%contacts(c)%close_speed, lands, .false.))//' slower than close_speed (closing '// &
+                       'several contacts at once is not built): the run ends here')
+    else
+      action = max(action, EVENT_RESTART)
+    end if
+  end subroutine impact_at_once
+
   !> Body b at the mechanism's pose and twist (the workspace's), its mass
   !> properties in world axes: for its impact.
   function impact_body(self, b) result(body)
@@ -603,34 +668,11 @@ contains
       associate (gap => self%gaps%gap(c))
         self%series%monitor(self%gap_monitors(c), n) = gap%gap
         self%gap_point(:, c, n) = gap%point_1
-        v = gap_velocity(self, c)
+        v = self%gaps%velocity(c, self%work, self%body_frame)
         self%gap_velocity(:, c, n) = v - dot_product(v, gap%normal)*gap%normal
       end associate
     end do
   end subroutine flight_record
-
-  !> The velocity of body_2's nearest point of contact c relative to body_1's
-  !> (the ground's: 0), at the workspace's pose and twist (world, m/s).
-  function gap_velocity(self, c) result(v)
-    class(flight_ode_t), intent(in) :: self
-    integer, intent(in) :: c
-    real(wp) :: v(3)
-    associate (gap => self%gaps%gap(c), body => self%work%frames(self%body_frame(self%gaps%body(c))))
-      v = body%v + cross(body%omega, gap%point_2 - body%r)
-      if (self%gaps%body_1(c) == 0) return
-      associate (other => self%work%frames(self%body_frame(self%gaps%body_1(c))))
-        v = v - (other%v + cross(other%omega, gap%point_1 - other%r))
-      end associate
-    end associate
-  end function gap_velocity
-
-  !> The rate of contact c's gap (m/s, < 0 approaching), at the workspace's
-  !> pose and twist.
-  real(wp) function approach_rate(self, c) result(rate)
-    class(flight_ode_t), intent(in) :: self
-    integer, intent(in) :: c
-    rate = dot_product(self%gaps%gap(c)%normal, gap_velocity(self, c))
-  end function approach_rate
 
   !> a with room for n records (its last dimension), its values kept.
   subroutine grow(a, n)

@@ -62,6 +62,7 @@ module contact_open_gaps
     procedure :: update => gaps_update
     procedure :: roots => gaps_roots
     procedure :: opened => gaps_opened
+    procedure :: velocity => gaps_velocity
   end type open_gaps_t
 
   !> A closed contact's model (contact_model) carrying the body while its
@@ -201,6 +202,24 @@ contains
       end if
     end associate
   end subroutine place_gap
+
+  !> The velocity of body_2's nearest point of contact c relative to body_1's
+  !> (the ground's: 0), at the bodies' poses and twists (work%frames(frames(b))
+  !> of body b; world, m/s): along the normal the gap's rate.
+  function gaps_velocity(self, c, work, frames) result(v)
+    class(open_gaps_t), intent(in) :: self
+    integer, intent(in) :: c
+    type(mechanism_workspace_t), intent(in) :: work
+    integer, intent(in) :: frames(:)
+    real(wp) :: v(3)
+    associate (gap => self%gap(c), body => work%frames(frames(self%body(c))))
+      v = body%v + cross(body%omega, gap%point_2 - body%r)
+      if (self%body_1(c) == 0) return
+      associate (other => work%frames(frames(self%body_1(c))))
+        v = v - (other%v + cross(other%omega, gap%point_1 - other%r))
+      end associate
+    end associate
+  end function gaps_velocity
 
   !> The root of each contact at its body's pose (as gaps_update): its gap
   !> (the last where it cannot be found: a trial state the integrator does

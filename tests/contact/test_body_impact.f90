@@ -32,10 +32,11 @@
 !>     head-on law with the pair's e.
 !>   - on_carried: a ball dropped onto a ball carried by the floor (start
 !>     closed): the run ends at the touch, saying why (not built).
-!>   - two_at_once: a ball dropped into a V of two planes at +-45 degrees
-!>     lands on both at once (an impact at two points: not built): the run
-!>     ends at t = sqrt(2 (z_0 - R sqrt(2))/g), naming the body and both
-!>     contacts.
+!>   - two_at_once: a ball dropped into a V of two planes at +-30 degrees
+!>     lands on both at once: the frictionless impact at two points
+!>     (Newton's restitution at each; W's off-diagonal cos60/m) on its
+!>     closed form, five bounces as on a floor, then the run ends, saying
+!>     why; with friction not built (the run ends at the landing).
 program test_body_impact
   use base_kinds, only: wp
   use base_constants, only: standard_gravity
@@ -501,31 +502,92 @@ contains
     call check(size(flight%impacts) == 0, 'on carried: no impact made')
   end subroutine on_carried
 
-  subroutine two_at_once()
-    real(wp), parameter :: z0 = 0.5_wp, radius = 0.1_wp
-    type(flight_ode_t), target :: flight
-    type(driver_result_t) :: result
-    type(status_t) :: st
+  !> The groups of a ball (radius, 1 kg) at height z0 over a V of two planes
+  !> tilted +-angle about y (their normals (+-sin, 0, cos)), a contact with
+  !> each (restitution e, impact_mu mu, close_speed 0.1 m/s).
+  function v_input(angle, z0, radius, e, mu) result(text)
+    real(wp), intent(in) :: angle, z0, radius, e, mu
     character(len=:), allocatable :: text
     text = '&run scenario = ''contact'' /'//nl// &
-           '&solver rtol = 1e-12, atol = 1e-12, duration = 1, output_step = 0.01 /'//nl// &
-           '&shape name = ''left'', kind = ''plane'', angles_deg = 0, 45, 0 /'//nl// &
-           '&shape name = ''right'', kind = ''plane'', angles_deg = 0, -45, 0 /'//nl// &
+           '&solver rtol = 1e-12, atol = 1e-12, duration = 3, output_step = 0.01 /'//nl// &
+           '&shape name = ''left'', kind = ''plane'', angles_deg = 0, '//number(angle)//', 0 /'//nl// &
+           '&shape name = ''right'', kind = ''plane'', angles_deg = 0, '//number(-angle)//', 0 /'//nl// &
            '&shape name = ''ball'', kind = ''sphere'', radius = '//number(radius)//' /'//nl// &
            '&body name = ''ball'', mass = 1, solid_of = ''ball'', position = 0, 0, '//number(z0)//' /'//nl// &
            '&contact name = ''on_left'', shape_1 = ''left'', body_2 = ''ball'', shape_2 = ''ball'', '// &
-           'start = ''open'', restitution = 0.5 /'//nl// &
-           '&contact name = ''on_right'', shape_1 = ''right'', body_2 = ''ball'', shape_2 = ''ball'', '// &
-           'start = ''open'', restitution = 0.5 /'//nl
-    call run_text(text, 'two at once', flight, result, st)
+           'start = ''open'', restitution = '//number(e)//', impact_mu = '//number(mu)//', close_speed = 0.1 /'// &
+           nl//'&contact name = ''on_right'', shape_1 = ''right'', body_2 = ''ball'', shape_2 = ''ball'', '// &
+           'start = ''open'', restitution = '//number(e)//', impact_mu = '//number(mu)//', close_speed = 0.1 /'//nl
+  end function v_input
+
+  !> A ball dropped into a V of planes at +-30 degrees lands on both at
+  !> once: the frictionless impact at two points (Newton's restitution e =
+  !> 0.5 at each, W = [1 cos60; cos60 1]/m): each normal impulse (1 + e) m
+  !> v cos30/(1 + cos60), the ball thrown straight up at e v (v = e^(k-1)
+  !> v0), each contact's normal speed -v cos30 before and e v cos30 after,
+  !> the pair's energy (1 - e^2) m v^2/2; bounces e^(2k) high at the times
+  !> of a ball on a floor; at the fifth the rebound e^5 v0 cos30 is below
+  !> close_speed and the run ends, saying so (closing at two points is not
+  !> built). With friction (impact_mu > 0) such an impact is not built: the
+  !> run ends at the landing, naming the body's contacts.
+  subroutine two_at_once()
+    real(wp), parameter :: z0 = 0.5_wp, radius = 0.1_wp, e = 0.5_wp, angle = 30
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp) :: c30, v0, v, t, worst_x, worst_spin
+    integer :: k, i
+    c30 = cos(angle*acos(-1.0_wp)/180)
+    call run_text(v_input(angle, z0, radius, e, 0.0_wp), 'two at once', flight, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_EVENT_STOP, 'two at once: stops: '//st%text()//' '// &
                flight%outcome)
     if (.not. st%ok()) return
-    call check(index(flight%outcome, 'body ''ball'' lands on two contacts at once at t = ') == 1 .and. &
-               index(flight%outcome, '(''on_left'', ''on_right''): an impact at two points is not built; the run '// &
-                     'ends here') > 0, 'two at once: the outcome names the body and both contacts: '//flight%outcome)
-    call check_close(flight%series%time(flight%series%n), sqrt(2*(z0 - radius*sqrt(2.0_wp))/g), 0.0_wp, 1e-9_wp, &
-                     'two at once: where both gaps reach zero, sqrt(2 (z0 - R sqrt 2)/g) (s)')
-    call check(size(flight%impacts) == 0, 'two at once: no impact made')
+    call check(index(flight%outcome, '(''on_left'', ''on_right'') leaves ''on_left'', ''on_right'' slower than '// &
+                     'close_speed (closing several contacts at once is not built): the run ends here') > 0, &
+               'two at once: the outcome says the fifth rebound is too slow to go on: '//flight%outcome)
+    call check(size(flight%impacts) == 10, 'two at once: five impacts at two points each')
+    if (size(flight%impacts) /= 10) return
+    v0 = sqrt(2*g*(z0 - radius/c30))
+    t = v0/g
+    v = v0
+    do k = 1, 5
+      associate (left => flight%impacts(2*k - 1), right => flight%impacts(2*k))
+        call check(left%contact == 1 .and. right%contact == 2 .and. left%time == right%time, &
+                   'two at once: both contacts in one impact')
+        call check_close(left%time, t, 0.0_wp, 1e-9_wp, 'two at once: impact times as on a floor (s)')
+        do i = 2*k - 1, 2*k
+          call check_close(flight%impacts(i)%normal_speed_before, -v*c30, 0.0_wp, 1e-9_wp, &
+                           'two at once: approach v cos30 (m/s)')
+          call check_close(flight%impacts(i)%normal_speed_after, e*v*c30, 0.0_wp, 1e-9_wp, &
+                           'two at once: rebound e v cos30 at each (m/s)')
+          call check_close(flight%impacts(i)%normal_impulse, (1 + e)*v*c30/1.5_wp, 0.0_wp, 1e-9_wp, &
+                           'two at once: impulse (1 + e) m v cos30/(1 + cos60) at each (N s)')
+        end do
+        call check_close(left%energy_lost + right%energy_lost, (1 - e**2)*v**2/2, 0.0_wp, 1e-9_wp, &
+                         'two at once: the pair takes (1 - e^2) m v^2/2 (J)')
+      end associate
+      t = t + 2*e*v/g
+      v = e*v
+    end do
+    worst_x = 0
+    worst_spin = 0
+    associate (s => flight%series)
+      do i = 1, s%n
+        worst_x = max(worst_x, abs(s%body_r(1, 1, i)), abs(s%body_v(1, 1, i)))
+        worst_spin = max(worst_spin, maxval(abs(s%body_omega(:, 1, i))))
+      end do
+    end associate
+    call check_close(worst_x + worst_spin, 0.0_wp, 0.0_wp, 1e-12_wp, 'two at once: straight up and down, no spin')
+    print '(a, 2es10.2)', '  two at once: sideways, spin ', worst_x, worst_spin
+    ! with friction: not built
+    call run_text(v_input(angle, z0, radius, e, 0.3_wp), 'two at once, friction', flight, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_EVENT_STOP, 'two at once, friction: stops: '//st%text())
+    call check(index(flight%outcome, 'landing on several contacts at once at t = ') == 1 .and. &
+               index(flight%outcome, '(''on_left'', ''on_right''): an impact at several points needs restitution '// &
+                     'at each and is built frictionless only (impact_mu 0); the run ends here') > 0, &
+               'two at once, friction: the outcome says why: '//flight%outcome)
+    call check_close(flight%series%time(flight%series%n), v0/g, 0.0_wp, 1e-9_wp, &
+                     'two at once, friction: at the landing (s)')
+    call check(size(flight%impacts) == 0, 'two at once, friction: no impact made')
   end subroutine two_at_once
 end program test_body_impact
