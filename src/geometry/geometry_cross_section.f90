@@ -33,6 +33,7 @@ module geometry_cross_section
   public :: circle_section_t, ellipse_section_t, flume_section_t, blended_section_t
   public :: logistic, logistic_rate, blend_weights, new_blended_section
   public :: profile_section_t, new_profile_section, polyline_self_intersection
+  public :: extent_intervals, extent_sample_v, sampled_extent, ellipse_point
 
   !> s(:, i, j) = d^(i+j) [s_y, s_z] / du^i dv^j for i + j <= order.
   type :: section_point_t
@@ -144,6 +145,9 @@ module geometry_cross_section
 
   integer, parameter :: binom(0:3, 0:3) = reshape([1, 0, 0, 0, 1, 1, 0, 0, 1, 2, 1, 0, 1, 3, 3, 1], [4, 4])
 
+  !> The sampled extent's intervals across the v range (its points i = 0..180)
+  integer, parameter :: extent_intervals = 180
+
 contains
 
   pure logical function section_not_periodic(self) result(periodic)
@@ -203,22 +207,41 @@ contains
   end function circle_circle_radius
 
   !> Largest distance |s| of the section from the centerline at u (m), sampled
-  !> at 181 values of v (used to check that the tube does not fold).
+  !> at the extent_intervals + 1 values of v of extent_sample_v (used to check
+  !> that the tube does not fold): sampled_extent.
   pure function section_extent(self, u) result(r)
     class(cross_section_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp) :: r
+    r = sampled_extent(self, u)
+  end function section_extent
+
+  !> The general extent of any section at u: the largest |s(u, v)| over v at
+  !> the samples extent_sample_v(v_min, v_max, i), i = 0..extent_intervals
+  !> (points that fail to evaluate left out). A kind that overrides extent
+  !> for speed may call it.
+  pure function sampled_extent(section, u) result(r)
+    class(cross_section_t), intent(in) :: section
     real(wp), intent(in) :: u
     real(wp) :: r
     real(wp) :: a, b
     type(section_point_t) :: p
     type(status_t) :: st
     integer :: i
-    call self%v_range(a, b)
+    call section%v_range(a, b)
     r = 0
-    do i = 0, 180
-      call self%evaluate(u, a + (b - a)*i/180.0_wp, 0, p, st)
+    do i = 0, extent_intervals
+      call section%evaluate(u, extent_sample_v(a, b, i), 0, p, st)
       if (st%ok()) r = max(r, norm2(p%s(:, 0, 0)))
     end do
-  end function section_extent
+  end function sampled_extent
+
+  !> v of the extent's sample i (0..extent_intervals) over [a, b].
+  elemental real(wp) function extent_sample_v(a, b, i) result(v)
+    real(wp), intent(in) :: a, b
+    integer, intent(in) :: i
+    v = a + (b - a)*i/real(extent_intervals, wp)
+  end function extent_sample_v
 
   !> A circle's extent is its radius, on any arc of it (no sampling).
   pure function circle_extent(self, u) result(r)
@@ -299,22 +322,22 @@ contains
     type(status_t), intent(out) :: status
     associate (unused => u)
     end associate
-    call ellipse_terms(self%radius, self%radius, v, order, p)
+    call ellipse_point(self%radius, self%radius, cos(v), sin(v), order, p)
     status%code = STATUS_OK
   end subroutine circle_evaluate
 
-  pure subroutine ellipse_terms(a, b, v, order, p)
-    real(wp), intent(in) :: a, b, v
+  !> The ellipse's (a circle's: a = b) point and v-partials to `order` at the
+  !> v of c = cos v, s = sin v (for a caller that has them already).
+  pure subroutine ellipse_point(a, b, c, s, order, p)
+    real(wp), intent(in) :: a, b, c, s
     integer, intent(in) :: order
     type(section_point_t), intent(out) :: p
-    real(wp) :: c, s
-    c = cos(v); s = sin(v)
     p%order = order
     p%s(:, 0, 0) = [-a*c, -b*s]
     if (order >= 1) p%s(:, 0, 1) = [a*s, -b*c]
     if (order >= 2) p%s(:, 0, 2) = [a*c, b*s]
     if (order >= 3) p%s(:, 0, 3) = [-a*s, b*c]
-  end subroutine ellipse_terms
+  end subroutine ellipse_point
 
   pure subroutine circle_range(self, v_min, v_max)
     class(circle_section_t), intent(in) :: self
@@ -335,7 +358,7 @@ contains
     type(status_t), intent(out) :: status
     associate (unused => u)
     end associate
-    call ellipse_terms(self%a, self%b, v, order, p)
+    call ellipse_point(self%a, self%b, cos(v), sin(v), order, p)
     status%code = STATUS_OK
   end subroutine ellipse_evaluate
 

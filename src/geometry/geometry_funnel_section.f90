@@ -18,7 +18,8 @@
 module geometry_funnel_section
   use base_kinds, only: wp
   use base_status, only: status_t
-  use geometry_cross_section, only: cross_section_t, section_point_t
+  use geometry_cross_section, only: cross_section_t, section_point_t, extent_intervals, extent_sample_v, &
+                                    sampled_extent
   use geometry_drop_profile, only: smoothstep
   implicit none (type, external)
   private
@@ -32,8 +33,14 @@ module geometry_funnel_section
     real(wp) :: bottom(2) = 0                     ! m, its bottom (y, z) in the frame
     real(wp), allocatable :: u_ends(:, :)         ! (4, k): u0 .. u3 of funnel k
     real(wp), allocatable :: scale(:)             ! A_k, > 1
+    !> The base's points s0 at the extent's samples of v (m; the base does
+    !> not vary along u) and whether each evaluated: the extent at any u
+    !> from them (unallocated: sampled at each u)
+    real(wp), allocatable :: base_samples(:, :)   ! (2, 0:extent_intervals)
+    logical, allocatable :: sampled(:)            ! (0:extent_intervals)
   contains
     procedure :: evaluate => funnel_evaluate
+    procedure :: extent => funnel_extent
     procedure :: v_range => funnel_range
     procedure :: periodic => funnel_periodic
     procedure :: parameter_unit => funnel_parameter_unit
@@ -50,12 +57,48 @@ contains
     type(funnel_section_t) :: f
     type(section_point_t) :: p
     type(status_t) :: st
+    real(wp) :: a, b
+    integer :: i
     allocate (f%base, source=base)
     call base%evaluate(0.0_wp, bottom_v, 0, p, st)
     f%bottom = p%s(:, 0, 0)
     f%u_ends = u_ends
     f%scale = scale
+    if (base%varies_along()) return
+    call base%v_range(a, b)
+    allocate (f%base_samples(2, 0:extent_intervals), f%sampled(0:extent_intervals))
+    do i = 0, extent_intervals
+      call base%evaluate(0.0_wp, extent_sample_v(a, b, i), 0, p, st)
+      f%sampled(i) = st%ok()
+      f%base_samples(:, i) = p%s(:, 0, 0)
+    end do
   end function new_funnel_section
+
+  !> The largest |s(u, v)| over the extent's samples of v (m): the general
+  !> sampled_extent's number, from the base's points kept at construction
+  !> (b + a(u) (s0 - b) by funnel_evaluate's operations) instead of
+  !> evaluating the base at 181 points for each u.
+  pure function funnel_extent(self, u) result(r)
+    class(funnel_section_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp) :: r
+    real(wp) :: a(0:3), d(2), s(2)
+    integer :: i
+    if (.not. allocated(self%base_samples)) then
+      r = sampled_extent(self, u)
+      return
+    end if
+    call self%scale_at(u, a)
+    r = 0
+    do i = 0, extent_intervals
+      if (.not. self%sampled(i)) cycle
+      d = self%base_samples(:, i)
+      d = d - self%bottom
+      s = a(0)*d
+      s = s + self%bottom
+      r = max(r, norm2(s))
+    end do
+  end function funnel_extent
 
   !> a(u) and its u-derivatives a(0:3).
   pure subroutine funnel_scale_at(self, u, a)

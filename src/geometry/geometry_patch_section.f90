@@ -23,10 +23,11 @@
 module geometry_patch_section
   use base_kinds, only: wp
   use base_constants, only: pi
-  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_OK
   use base_text, only: format_integer, format_short
   use numerics_spline_surface, only: spline_surface_t, spline_surface_eval_t, fit_grid
-  use geometry_cross_section, only: cross_section_t, section_point_t
+  use geometry_cross_section, only: cross_section_t, section_point_t, circle_section_t, ellipse_point, &
+                                    extent_intervals, extent_sample_v
   use geometry_drop_profile, only: smoothstep
   implicit none (type, external)
   private
@@ -59,6 +60,11 @@ module geometry_patch_section
   type, extends(cross_section_t) :: patch_section_t
     class(cross_section_t), allocatable :: base   ! the slide's section
     type(patch_offset_t), allocatable :: patches(:)
+    !> At the extent's samples of v: the base's points (m; a base that does
+    !> not vary along u), whether each evaluated, and n(v) = -[cos v, sin v]:
+    !> the extent on a patch from them (unallocated: each point evaluated)
+    real(wp), allocatable :: base_samples(:, :), normals(:, :)   ! (2, 0:extent_intervals)
+    logical, allocatable :: sampled(:)                           ! (0:extent_intervals)
   contains
     procedure :: evaluate => patch_evaluate
     procedure :: v_range => patch_range
@@ -146,8 +152,23 @@ contains
     class(cross_section_t), intent(in) :: base
     type(patch_offset_t), intent(in) :: patches(:)
     type(patch_section_t) :: s
+    type(section_point_t) :: p
+    type(status_t) :: st
+    real(wp) :: a, b, v
+    integer :: i
     allocate (s%base, source=base)
     s%patches = patches
+    if (base%varies_along()) return
+    call base%v_range(a, b)
+    allocate (s%base_samples(2, 0:extent_intervals), s%normals(2, 0:extent_intervals), &
+              s%sampled(0:extent_intervals))
+    do i = 0, extent_intervals
+      v = extent_sample_v(a, b, i)
+      call base%evaluate(0.0_wp, v, 0, p, st)
+      s%sampled(i) = st%ok()
+      s%base_samples(:, i) = p%s(:, 0, 0)
+      s%normals(:, i) = [-cos(v), -sin(v)]
+    end do
   end function new_patch_section
 
   !> The window W over [e(1), e(4)] at x and its derivatives w(0:3);
@@ -250,6 +271,9 @@ contains
     end do
   end subroutine add_patch
 
+  !> The base's point plus f n and its partials (Leibniz in v). Off the
+  !> patches (or where f and its partials are 0) the base's point itself;
+  !> on them, over a circle, cos v and sin v once for the circle and n.
   pure subroutine patch_evaluate(self, u, v, order, p, status)
     class(patch_section_t), intent(in) :: self
     real(wp), intent(in) :: u, v
@@ -259,12 +283,21 @@ contains
     real(wp) :: f(0:3, 0:3), n(2, 0:3), c, s
     integer :: i, j, b
     logical :: on_patch
-    call self%base%evaluate(u, v, order, p, status)
-    if (.not. status%ok()) return
     call self%offset_at(u, v, order, f, on_patch)
-    if (.not. on_patch) return
-    if (all(f == 0)) return
+    if (on_patch) on_patch = .not. all(f == 0)
+    if (.not. on_patch) then
+      call self%base%evaluate(u, v, order, p, status)
+      return
+    end if
     c = cos(v); s = sin(v)
+    select type (base => self%base)
+    type is (circle_section_t)
+      call ellipse_point(base%radius, base%radius, c, s, order, p)   ! circle_evaluate's point
+      status%code = STATUS_OK
+    class default
+      call base%evaluate(u, v, order, p, status)
+      if (.not. status%ok()) return
+    end select
     ! n = -[cos v, sin v] and its v-derivatives
     n(:, 0) = [-c, -s]; n(:, 1) = [s, -c]; n(:, 2) = [c, s]; n(:, 3) = [-s, c]
     do i = 0, order
@@ -277,22 +310,38 @@ contains
   end subroutine patch_evaluate
 
   !> The base's extent off the patches (a circle's radius without
-  !> sampling); on a patch the largest distance of 181 points around the
-  !> section, as any section's.
+  !> sampling); on a patch the largest distance of the points at the
+  !> extent's samples of v, as any section's (geometry_cross_section's
+  !> sampled_extent), and at least the base's. Over a base that does not vary
+  !> along u the points are those patch_evaluate gives (base point + f n, the
+  !> same operations) from the base's points and normals kept at
+  !> construction: only f is evaluated at each u.
   pure function patch_extent(self, u) result(r)
     class(patch_section_t), intent(in) :: self
     real(wp), intent(in) :: u
     real(wp) :: r
-    real(wp) :: a, b
+    real(wp) :: a, b, f(0:3, 0:3), s(2)
     type(section_point_t) :: p
     type(status_t) :: st
     integer :: i
+    logical :: on_patch
     r = self%base%extent(u)
     if (.not. any(self%patches%u_ends(1) < u .and. self%patches%u_ends(4) > u)) return
     call self%v_range(a, b)
-    do i = 0, 180
-      call self%evaluate(u, a + (b - a)*i/180.0_wp, 0, p, st)
-      if (st%ok()) r = max(r, norm2(p%s(:, 0, 0)))
+    if (.not. allocated(self%base_samples)) then
+      do i = 0, extent_intervals
+        call self%evaluate(u, extent_sample_v(a, b, i), 0, p, st)
+        if (st%ok()) r = max(r, norm2(p%s(:, 0, 0)))
+      end do
+      return
+    end if
+    do i = 0, extent_intervals
+      if (.not. self%sampled(i)) cycle
+      s = self%base_samples(:, i)
+      call self%offset_at(u, extent_sample_v(a, b, i), 0, f, on_patch)
+      if (on_patch) on_patch = .not. all(f == 0)
+      if (on_patch) s = s + f(0, 0)*self%normals(:, i)
+      r = max(r, norm2(s))
     end do
   end function patch_extent
 

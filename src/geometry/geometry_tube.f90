@@ -310,18 +310,20 @@ contains
   !> Checks the whole tube before it is used, at n_samples values of u: the
   !> frame exists (horizon not parallel to the tangent) and the centerline's
   !> radius of curvature 1/chi stays above the section's extent (else the tube
-  !> folds onto itself). The message says where (u, arc length, point).
+  !> folds onto itself). The message says where (u, arc length, point). A
+  !> section that does not change along u has one extent, taken once.
   subroutine tube_check(self, n_samples, status)
     class(tube_surface_t), intent(in) :: self
     integer, intent(in) :: n_samples
     type(status_t), intent(inout) :: status
-    real(wp) :: a, b, u, extent, worst_ratio, worst_u, worst_chi, worst_extent
+    real(wp) :: a, b, u, extent, worst_ratio, worst_u, worst_chi, worst_extent, fixed
     type(curve_frame_t) :: f
     type(curve_point_t) :: c
     type(status_t) :: st
     integer :: i
     character(len=300) :: buf
     call self%centerline%domain(a, b)
+    fixed = fixed_extent(self, a)
     worst_ratio = 0; worst_u = a; worst_chi = 0; worst_extent = 0
     do i = 0, n_samples - 1
       u = a + (b - a)*i/real(max(n_samples - 1, 1), wp)
@@ -333,7 +335,8 @@ contains
         call prefix_status(status, 'tube surface' // trim(buf))
         return
       end if
-      extent = self%section%extent(u)
+      extent = fixed
+      if (extent < 0) extent = self%section%extent(u)
       if (f%chi*extent > worst_ratio) then
         worst_ratio = f%chi*extent; worst_u = u; worst_chi = f%chi; worst_extent = extent
       end if
@@ -347,8 +350,17 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'tube surface: ' // trim(buf))
       return
     end if
-    call tube_check_clearance(self, status)
+    call tube_check_clearance(self, fixed, status)
   end subroutine tube_check
+
+  !> The section's extent if it is one at every u (a kind that does not vary
+  !> along u: the same number as extent(u) at any u), else -1.
+  pure real(wp) function fixed_extent(self, u) result(extent)
+    class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    extent = -1
+    if (.not. self%section%varies_along()) extent = self%section%extent(u)
+  end function fixed_extent
 
   !> u is the centerline's parameter, v the cross-section's.
   pure subroutine tube_parameter_units(self, u_units, v_units)
@@ -453,9 +465,11 @@ contains
   !> ensures) are always that far apart, so only a tube that comes back to
   !> itself (a flat helix, a loop) fails. Samples every quarter of the
   !> smallest extent (at most max_samples): an overlap deeper than about
-  !> that spacing is found.
-  subroutine tube_check_clearance(self, status)
+  !> that spacing is found. fixed: the section's extent at every u
+  !> (fixed_extent; < 0: taken at each u).
+  subroutine tube_check_clearance(self, fixed, status)
     class(tube_surface_t), intent(in) :: self
+    real(wp), intent(in) :: fixed
     type(status_t), intent(inout) :: status
     integer, parameter :: max_samples = 4000
     real(wp), allocatable :: u(:), s(:), e(:), p(:, :), f(:, :)
@@ -464,10 +478,13 @@ contains
     type(status_t) :: st
     integer :: n, i, j
     call self%centerline%domain(a, b)
-    smallest = huge(1.0_wp)
-    do i = 0, 100
-      smallest = min(smallest, self%section%extent(a + (b - a)*i/100.0_wp))
-    end do
+    smallest = min(huge(1.0_wp), fixed)
+    if (fixed < 0) then
+      smallest = huge(1.0_wp)
+      do i = 0, 100
+        smallest = min(smallest, self%section%extent(a + (b - a)*i/100.0_wp))
+      end do
+    end if
     if (.not. smallest > 0) return
     ! the count in reals first: a wild spline (1e8 m from points 5 km apart)
     ! would overflow the integer (a trap in Debug, a garbage count in Release)
@@ -483,7 +500,8 @@ contains
       call self%centerline%evaluate(u(i), 2, c, st)
       if (.not. st%ok()) return   ! reported by the frame check
       p(:, i) = c%d(:, 0)
-      e(i) = self%section%extent(u(i))
+      e(i) = fixed
+      if (fixed < 0) e(i) = self%section%extent(u(i))
       f(:, i) = [norm2(c%d(:, 1)), dot_product(c%d(:, 1), c%d(:, 2))/norm2(c%d(:, 1))]   ! |c_u| and its rate
       if (i == 1) then
         s(i) = 0

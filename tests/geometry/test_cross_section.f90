@@ -118,6 +118,24 @@ program test_cross_section
   call flume%evaluate(0.0_wp, pi/2, 0, p, st)
   call check_close_array(p%s(:, 0, 0), [0.0_wp, -0.52_wp], 0.0_wp, 1e-14_wp, 'flume bottom')
 
+  ! The extent (the tube's fold and clearance checks): the largest |s| of the
+  ! sampled points, the flume's at its walls' tops, the ellipse's its half
+  ! width; a kind that says it does not vary along u gives the same number
+  ! at every u (the tube takes it once), a blend says it varies.
+  call check_close(flume%extent(0.0_wp), hypot(0.52_wp, 0.164_wp), 0.0_wp, 1e-12_wp, &
+                   'flume extent: its walls'' tops')
+  call check_close(ellipse%extent(0.0_wp), 0.6_wp, 0.0_wp, 1e-15_wp, 'ellipse extent: its half width')
+  call check(circle%extent(0.0_wp) == 0.7_wp, 'circle extent: its radius')
+  do i = 1, 20
+    v = -5 + 1.7_wp*i   ! a u
+    call check(flume%extent(v) == flume%extent(0.0_wp) .and. ellipse%extent(v) == ellipse%extent(0.0_wp) .and. &
+               circle%extent(v) == circle%extent(0.0_wp), 'one extent at every u where the section does not vary')
+  end do
+  call check(.not. (flume%varies_along() .or. ellipse%varies_along() .or. circle%varies_along()) .and. &
+             blend%varies_along(), 'circle, ellipse, flume one section along u; a blend varies')
+  call check(abs(blend%extent(0.0_wp) - 0.7_wp) < 1e-12_wp .and. abs(blend%extent(5.0_wp) - 0.7_wp) < 1e-12_wp, &
+             'the blend''s extent: the larger of its sections''')
+
   ! Invalid blends.
   blend = new_blended_section(parts, [2.0_wp], [1.5_wp], st)
   call check(st%code == STATUS_INVALID_INPUT, 'u_99 before midpoint rejected')

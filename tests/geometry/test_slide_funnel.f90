@@ -11,7 +11,9 @@
 !> differences of the one below (to 1e-6 relative); the bottom line
 !> (v = pi/2) is the narrow slide's all along; in the widest third the section
 !> is a circle of the funnel's radius resting on that bottom; impossible
-!> funnels are refused with a message naming why.
+!> funnels are refused with a message naming why. The funnel's extent (from
+!> the flume's points kept at construction) is the general sampled extent to
+!> the bit, and the widened walls' tops in the widest third.
 !>
 !> point mass (closed form): in the widest third of a level funnel of radius
 !> R a frictionless point mass crossing the bottom at lateral speed V (and 1
@@ -34,6 +36,7 @@ program test_slide_funnel
   use geometry_slide_builder, only: slide_description_t, section_part_description_t, build_slide
   use geometry_funnel_section, only: funnel_section_t
   use geometry_tube, only: tube_surface_t
+  use geometry_cross_section, only: sampled_extent
   use geometry_curve_frame, only: curve_frame_t
   use geometry_curve, only: curve_point_t
   use numerics_ode, only: ode_integrator_t, ode_options_t
@@ -100,6 +103,7 @@ contains
                  'one funnel, widened to its radius ('//label//')')
       call s%scale_at((ends(2) + ends(3))/2, a)
       call check_close(a(0), r_funnel/r_slide, 1e-14_wp, 0.0_wp, 'the widest third scales the section by R/r')
+      call funnel_extent_checks(s, label)
     class default
       call check(.false., 'the funnel slide''s section is a funnel section ('//label//')')
       return
@@ -156,6 +160,31 @@ contains
     call check(worst_circle <= 1e-9_wp, 'the widest third is a circle of the funnel''s radius ('//label//'): '// &
                real_text(worst_circle)//' m')
   end subroutine funnel_geometry
+
+  !> The funnel's extent (the tube's fold and clearance checks), taken from
+  !> the base's points kept at construction, is the general sampled extent
+  !> (every point evaluated through funnel_evaluate) to the bit at every u
+  !> across the slide; in the widest third it is the widened flume's walls'
+  !> tops, |b + A (s0 - b)| at s0 = [-r, wall] (b = [0, -r], A = R/r), and
+  !> before the funnel the flume's own.
+  subroutine funnel_extent_checks(s, label)
+    type(funnel_section_t), intent(in) :: s
+    character(len=*), intent(in) :: label
+    real(wp) :: u, scale
+    integer :: i, mismatches
+    mismatches = 0
+    do i = 0, 400
+      u = s%u_ends(1, 1) - 10 + (s%u_ends(4, 1) - s%u_ends(1, 1) + 20)*i/400
+      if (s%extent(u) /= sampled_extent(s, u)) mismatches = mismatches + 1
+    end do
+    call check(mismatches == 0, 'the funnel''s extent from the kept points is the sampled extent, bit for bit ('// &
+               label//'): '//real_text(real(mismatches, wp))//' of 401 differ')
+    scale = r_funnel/r_slide
+    call check_close(s%extent((s%u_ends(2, 1) + s%u_ends(3, 1))/2), hypot(scale*r_slide, scale*(r_slide + wall) - &
+                     r_slide), 0.0_wp, 1e-9_wp, 'the widest third''s extent: the widened walls'' tops ('//label//')')
+    call check_close(s%extent(s%u_ends(1, 1) - 1), hypot(r_slide, wall), 0.0_wp, 1e-9_wp, &
+                     'the extent before the funnel: the flume''s ('//label//')')
+  end subroutine funnel_extent_checks
 
   !> The largest relative error of the partials at (u, v) against central
   !> differences of the order below (h = 1e-5 m: truncation h^2 ~ 1e-10

@@ -21,6 +21,10 @@
 !>   of derivatives is asked (0..3): outside the patch, on its windows'
 !>   ramps and where both windows are flat (the shortcuts of
 !>   patch_offset_at change no number);
+!> - over the slide's circle the patch's section (cos v and sin v once for
+!>   the circle and the offset's normal) and its extent (from the circle's
+!>   points and normals kept at construction) are the general path's (a
+!>   circle the patch does not know as one) bit for bit;
 !> - impossible patches are refused with a message naming why, and the
 !>   global check of the tube sees a patch's bulge (a U-turn whose patch
 !>   reaches the straight before it).
@@ -30,6 +34,56 @@
 !> normal force changes between 1 ms records by little; evaluated just
 !> before and just after each end of the patch (1e-9 m apart, the same
 !> velocity) it differs by less than 1e-7 g: no jump.
+!> A circle that the patch does not know as one: its evaluate, range and
+!> extent are the circle's, but over it patch_evaluate takes the general
+!> path (the base evaluated, cos v and sin v again) and, as it does not say
+!> that it is one section along u, patch_extent evaluates every point.
+module test_slide_patch_support
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  use geometry_cross_section, only: cross_section_t, section_point_t, circle_section_t
+  implicit none (type, external)
+  private
+  public :: plain_circle_t
+
+  type, extends(cross_section_t) :: plain_circle_t
+    type(circle_section_t) :: circle
+  contains
+    procedure :: evaluate => plain_evaluate
+    procedure :: v_range => plain_range
+    procedure :: periodic => plain_periodic
+    procedure :: extent => plain_extent
+  end type plain_circle_t
+
+contains
+
+  pure subroutine plain_evaluate(self, u, v, order, p, status)
+    class(plain_circle_t), intent(in) :: self
+    real(wp), intent(in) :: u, v
+    integer, intent(in) :: order
+    type(section_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    call self%circle%evaluate(u, v, order, p, status)
+  end subroutine plain_evaluate
+
+  pure subroutine plain_range(self, v_min, v_max)
+    class(plain_circle_t), intent(in) :: self
+    real(wp), intent(out) :: v_min, v_max
+    call self%circle%v_range(v_min, v_max)
+  end subroutine plain_range
+
+  pure logical function plain_periodic(self) result(periodic)
+    class(plain_circle_t), intent(in) :: self
+    periodic = self%circle%periodic()
+  end function plain_periodic
+
+  pure real(wp) function plain_extent(self, u) result(r)
+    class(plain_circle_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    r = self%circle%extent(u)
+  end function plain_extent
+end module test_slide_patch_support
+
 program test_slide_patch
   use base_kinds, only: wp
   use base_constants, only: pi, standard_gravity
@@ -38,10 +92,11 @@ program test_slide_patch
   use geometry_surface, only: surface_point_t
   use geometry_slide_elements, only: slide_element_t
   use geometry_slide_builder, only: slide_description_t, section_part_description_t, build_slide
-  use geometry_patch_section, only: patch_grid_t, patch_section_t
+  use geometry_patch_section, only: patch_grid_t, patch_section_t, new_patch_section
   use geometry_drop_profile, only: smoothstep
   use geometry_tube, only: tube_surface_t
-  use geometry_cross_section, only: section_point_t
+  use geometry_cross_section, only: section_point_t, circle_section_t
+  use test_slide_patch_support, only: plain_circle_t
   use geometry_curve, only: curve_point_t
   use geometry_curve_frame, only: curve_frame_t
   use numerics_ode, only: ode_integrator_t, ode_options_t
@@ -61,6 +116,7 @@ program test_slide_patch
   call patch_continuity(.true.)
   call patch_continuity(.false.)
   call patch_orders_agree()
+  call patch_circle_shortcuts()
   call patch_refusals()
   call patch_normal_force()
   call finish_tests('test_slide_patch')
@@ -467,6 +523,54 @@ contains
     call check(mismatches == 0, 'the patch''s partials are the same bits at every order asked ('// &
                real_text(real(mismatches, wp))//' differ)')
   end subroutine patch_orders_agree
+
+  !> The quartic patch's section over its circle against the same patches
+  !> over plain_circle_t (the general path), on a grid of u over the whole
+  !> slide and v around it: every partial at every order 0..3, and the
+  !> extent at every u, the same bits.
+  subroutine patch_circle_shortcuts()
+    type(tube_surface_t) :: slide
+    type(patch_section_t) :: general
+    type(section_point_t) :: p, q
+    type(status_t) :: st, st_general
+    real(wp) :: u0, u1, v0, v1, u, v
+    integer :: i, j, k, mismatches, extent_mismatches, on_patch, extents_on_patch
+    call build_slide(patch_slide(.true., 'patch', 1.0_wp), slide, st)
+    call check(st%ok(), 'slide with the quartic patch built: '//st%text())
+    if (.not. st%ok()) return
+    select type (patched => slide%section)
+    type is (patch_section_t)
+      general = new_patch_section(plain_circle_t(circle=circle_section_t(radius=r_slide)), patched%patches)
+      call check(allocated(patched%base_samples) .and. .not. allocated(general%base_samples), &
+                 'the circle''s points kept for the extent, the plain circle''s not')
+      call slide%domain(u0, u1, v0, v1)
+      mismatches = 0; extent_mismatches = 0; on_patch = 0; extents_on_patch = 0
+      do i = 0, 400
+        u = u0 + (u1 - u0)*i/400
+        if (patched%extent(u) /= general%extent(u)) extent_mismatches = extent_mismatches + 1
+        if (patched%extent(u) > r_slide) extents_on_patch = extents_on_patch + 1
+        do j = 0, 144
+          v = 2*pi*j/144 + 0.001_wp
+          do k = 0, 3
+            call patched%evaluate(u, v, k, p, st)
+            call general%evaluate(u, v, k, q, st_general)
+            if (.not. (st%ok() .and. st_general%ok()) .or. p%order /= q%order .or. any(p%s /= q%s)) &
+              mismatches = mismatches + 1
+          end do
+          if (any(p%s(:, 1, 0) /= 0)) on_patch = on_patch + 1
+        end do
+      end do
+      print '(a, i0, a, i0, a)', '  circle shortcuts: ', on_patch, ' points and ', extents_on_patch, &
+        ' extents on the patch'
+      call check(on_patch > 1000 .and. extents_on_patch > 50, 'the grid covers the patch')
+      call check(mismatches == 0, 'the patch over its circle is the general path''s, bit for bit ('// &
+                 real_text(real(mismatches, wp))//' differ)')
+      call check(extent_mismatches == 0, 'the patch''s extent from the kept points is the general one, bit '// &
+                 'for bit ('//real_text(real(extent_mismatches, wp))//' differ)')
+    class default
+      call check(.false., 'the slide''s section is a patch section')
+    end select
+  end subroutine patch_circle_shortcuts
 
   function real_text(x) result(text)
     real(wp), intent(in) :: x
