@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Compares the shipped inputs built through the library without io
 (shipped_descriptions, tests/library/shipped_descriptions.f90) with the
-command's run of the same files: both over DURATION s, the command's numbers
-from --summary-json.
+command's run of the same files: both over DURATION s (or over the duration
+the library names for an input, its line `<input> duration <seconds>`: the
+flights run their shipped durations, so that they land), the command's
+numbers from --summary-json.
 
     compare_shipped.py SLIDESIM SHIPPED_DESCRIPTIONS
 
@@ -40,9 +42,10 @@ def main():
     checked = 0
     with tempfile.TemporaryDirectory() as work:
         for name, values in expected.items():
+            duration = values.pop("duration", DURATION)
             summary = os.path.join(work, "summary.json")
             cli = subprocess.run([slidesim, name, "-o", os.path.join(work, "result.h5"), "--summary-json", summary,
-                                  "--set", f"solver%duration={DURATION}"], capture_output=True, text=True,
+                                  "--set", f"solver%duration={float(duration)!r}"], capture_output=True, text=True,
                                  timeout=1200)
             if cli.returncode != 0:
                 print(f"FAIL {name}: slidesim exit {cli.returncode}\n{cli.stdout}{cli.stderr}")

@@ -1,12 +1,15 @@
-!> Every shipped input of the contact, point-mass, pendulum, four-bar and sled
-!> scenarios, built through the library WITHOUT io (issue 24 point 2): the
+!> The shipped inputs of the contact, point-mass, pendulum, four-bar and sled
+!> scenarios, built through the library WITHOUT io (issue 24 point 2; those
+!> not yet here are listed in tests/library/not_yet_through_library.txt,
+!> checked by check_library_coverage.py): the
 !> descriptions are filled here by hand from the shipped files (each case
 !> names its file; the values are copied from it, the defaults not given
 !> there are the types' own), built by their layers (build_contact_model,
 !> build_point_mass_model, build_pendulum_model, build_fourbar_model,
-!> build_sled_model) and run over `duration` s with the input's solver
-!> settings, as the command runs them (scenarios_mechanism, scenarios_point_mass:
-!> the same start checks, driver and options).
+!> build_sled_model; the flights by build_flight, build_bodies or
+!> flight_after_closed) and run over `duration` s with the input's solver
+!> settings, as the command runs them (scenarios_mechanism, scenarios_point_mass,
+!> scenarios_contact: the same start checks, driver and options).
 !>
 !> This program links no io module (tests/CMakeLists.txt links it against
 !> the contact layer and the layers above it only: a `use io_...` here does
@@ -15,7 +18,8 @@
 !> tests/library/compare_shipped.py runs slidesim on each input with
 !> `--set solver%duration=<duration>` and compares.
 !>
-!> Usage: shipped_descriptions DURATION
+!> Usage: shipped_descriptions DURATION   (a flight runs over its input's own
+!> duration and prints it, `<input> duration <seconds>`, first)
 program shipped_descriptions
   use base_kinds, only: wp
   use base_constants, only: pi
@@ -38,6 +42,9 @@ program shipped_descriptions
     build_pendulum_model, build_fourbar_model, build_sled_model
   use contact_model, only: contact_system_t, contact_model_t, contact_spec_t, body_spec_t, shape_t, &
     build_contact_model, contact_convergence_coefficient
+  use contact_flight, only: flight_ode_t, build_flight, check_flight_system, carrying_contact, closed_part
+  use contact_closing, only: drive_flight, flight_after_closed
+  use contact_bodies, only: build_bodies, start_carriers
   implicit none (type, external)
 
   !> Runaway guard of the command's multibody and point-mass runs
@@ -63,12 +70,21 @@ program shipped_descriptions
   call point_mass_elliptic_paraboloid()
   call point_mass_hyperbolic_paraboloid()
   call point_mass_plane_coulomb()
+  call point_mass_incline_drag()
   call point_mass_demo_slide()
   call contact_egg('inputs/contact/egg.nml', [0.025_wp, 0.033_wp, 0.025_wp], [-90.0_wp, 0.0_wp, -103.0_wp])
   call contact_egg('inputs/contact/egg_long_axis_z.nml', [0.025_wp, 0.025_wp, 0.033_wp], [77.0_wp, 0.0_wp, 0.0_wp])
   call contact_ball_in_cone()
   call contact_paraboloids()
   call contact_tower5()
+  call contact_bouncing_ball()
+  call contact_ball_drop_drag()
+  call contact_two_balls()
+  call contact_dome(.false.)
+  call contact_dome(.true.)
+  call contact_loop()
+  call contact_roll_beside_bounce()
+  call contact_stacked_balls()
   if (failures > 0) error stop 1
 
 contains
@@ -296,6 +312,14 @@ contains
                         1e-10_wp, 1e-10_wp, 0.01_wp)
   end subroutine point_mass_plane_coulomb
 
+  subroutine point_mass_incline_drag()
+    type(point_mass_description_t) :: d
+    d%mass = 2.0_wp
+    d%drag_area = 0.05_wp   ! m^2; still air of the default density
+    call run_point_mass('inputs/point_mass/incline_drag.nml', d, incline(0.8660254037844386_wp, -0.5_wp), &
+                        1e-10_wp, 1e-10_wp, 0.05_wp)
+  end subroutine point_mass_incline_drag
+
   subroutine point_mass_demo_slide()
     type(point_mass_description_t) :: d
     d%u0 = 0.5_wp; d%v0 = 1.5707963267948966_wp; d%du0 = 2.0_wp; d%dv0 = 0.0_wp
@@ -326,6 +350,7 @@ contains
     type(driver_result_t) :: result
     type(status_t) :: st
     real(wp), allocatable :: y0(:)
+    integer :: k
     call build_point_mass_model(d, surface, model, y0, st)
     call expect_ok(st, name//': built')
     if (.not. st%ok()) return
@@ -344,6 +369,10 @@ contains
       call put(name, 'final_speed', s%speed(n))
       call put(name, 'drop', s%position(3, 1) - s%position(3, n))
       call put(name, 'friction_work', s%friction_work(n))
+      if (d%drag_area > 0) then
+        call put(name, 'drag_work', s%drag_work(n))
+        call put(name, 'drag_force_max', maxval([(norm2(s%drag_force(:, k)), k = 1, n)]))
+      end if
     end associate
     call put_count(name, 'steps', int(result%stats%steps))
     call put_count(name, 'rhs_evaluations', int(result%stats%rhs_evaluations))
@@ -529,6 +558,192 @@ contains
     call run_multibody(name, model%ode, model%y0(1:f), model%y0(f + 1:f + ns), ODE_ADAMS, rtol, atol, output_step, &
                        .true., st)
   end subroutine run_contact
+
+  ! ---------------------------------------------------------------- contact: flights
+
+  !> A contact that starts open, with its impact law: shape_1 of the ground,
+  !> body_2's shape_2 (the shapes named as their bodies).
+  function landing(name, shape_1, body_2, restitution, close_speed) result(c)
+    character(len=*), intent(in) :: name, shape_1, body_2
+    real(wp), intent(in) :: restitution, close_speed
+    type(contact_spec_t) :: c
+    c = contact(name, 'ground', shape_1, 1.0_wp, body_2, body_2, 1.0_wp, .false.)
+    c%start_open = .true.
+    c%restitution = restitution
+    c%close_speed = close_speed
+  end function landing
+
+  function ball_shape(name, radius) result(shape)
+    character(len=*), intent(in) :: name
+    real(wp), intent(in) :: radius
+    type(shape_t) :: shape
+    shape = spec_shape(name, 'sphere', [character(len=6) :: 'radius'], [radius])
+  end function ball_shape
+
+  function solid_ball(name, mass, position, velocity) result(b)
+    character(len=*), intent(in) :: name
+    real(wp), intent(in) :: mass, position(3), velocity(3)
+    type(body_spec_t) :: b
+    b = body(name, mass, position, [0.0_wp, 0.0_wp, 0.0_wp])
+    b%solid_of = name
+    b%velocity = velocity
+  end function solid_ball
+
+  subroutine contact_bouncing_ball()
+    type(contact_system_t) :: system
+    system%shapes = [spec_shape('floor', 'plane', [character(len=1) ::], [real(wp) ::]), ball_shape('ball', 0.1_wp)]
+    system%bodies = [solid_ball('ball', 0.2_wp, [0.0_wp, 0.0_wp, 1.1_wp], [0.3_wp, 0.0_wp, 0.0_wp])]
+    system%contacts = [landing('on_floor', 'floor', 'ball', 0.5_wp, 0.1_wp)]
+    call run_flying('inputs/contact/bouncing_ball.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 3.0_wp)
+  end subroutine contact_bouncing_ball
+
+  subroutine contact_ball_drop_drag()
+    type(contact_system_t) :: system
+    system%shapes = [spec_shape('floor', 'plane', [character(len=1) ::], [real(wp) ::]), ball_shape('ball', 0.1_wp)]
+    system%bodies = [solid_ball('ball', 0.05_wp, [0.0_wp, 0.0_wp, 20.1_wp], [0.0_wp, 0.0_wp, 0.0_wp])]
+    system%bodies(1)%drag_area = 0.01_wp   ! m^2, still air of the default density
+    system%contacts = [landing('on_floor', 'floor', 'ball', 0.5_wp, 0.1_wp)]
+    call run_flying('inputs/contact/ball_drop_drag.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 6.0_wp)
+  end subroutine contact_ball_drop_drag
+
+  subroutine contact_two_balls()
+    type(contact_system_t) :: system
+    system%shapes = [spec_shape('floor', 'plane', [character(len=1) ::], [real(wp) ::]), ball_shape('big', 0.1_wp), &
+                     ball_shape('small', 0.05_wp)]
+    system%bodies = [solid_ball('big', 0.2_wp, [0.0_wp, 0.0_wp, 1.1_wp], [0.3_wp, 0.0_wp, 0.0_wp]), &
+                     solid_ball('small', 0.5_wp, [1.0_wp, 0.0_wp, 0.65_wp], [-0.2_wp, 0.0_wp, 0.0_wp])]
+    system%contacts = [landing('big_on_floor', 'floor', 'big', 0.5_wp, 0.1_wp), &
+                       landing('small_on_floor', 'floor', 'small', 0.8_wp, 0.1_wp)]
+    call run_flying('inputs/contact/two_balls.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 2.0_wp)
+  end subroutine contact_two_balls
+
+  !> inputs/contact/dome.nml, and with the floor to land on dome_floor.nml:
+  !> the ball starts closed, rolling on the dome, and may lift off.
+  subroutine contact_dome(floor)
+    logical, intent(in) :: floor
+    type(contact_system_t) :: system
+    system%shapes = [ball_shape('dome', 1.0_wp), ball_shape('ball', 0.1_wp)]
+    system%bodies = [body('ball', 1.0_wp, [0.05_wp, 0.0_wp, 1.1_wp], [90.0_wp, 0.0_wp, 0.0_wp])]
+    system%bodies(1)%solid_of = 'ball'
+    system%contacts = [contact('ball_on_dome', 'ground', 'dome', 1.0_wp, 'ball', 'ball', 1.0_wp, .true.)]
+    system%contacts(1)%may_open = .true.
+    if (floor) then
+      system%shapes = [system%shapes(1), spec_shape('floor', 'plane', [character(len=1) ::], [real(wp) ::]), &
+                       system%shapes(2)]
+      system%contacts = [system%contacts, landing('ball_on_floor', 'floor', 'ball', 0.5_wp, 0.1_wp)]
+      call run_flying('inputs/contact/dome_floor.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 3.0_wp)
+    else
+      call run_flying('inputs/contact/dome.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 2.0_wp)
+    end if
+  end subroutine contact_dome
+
+  subroutine contact_loop()
+    type(contact_system_t) :: system
+    system%shapes = [ball_shape('loop', 1.0_wp), ball_shape('ball', 0.1_wp)]
+    system%shapes(1)%description%angles_deg = [90.0_wp, 0.0_wp, 0.0_wp]
+    system%bodies = [solid_ball('ball', 1.0_wp, [0.0_wp, 0.0_wp, -0.9_wp], [5.145673425315680_wp, 0.0_wp, 0.0_wp])]
+    system%bodies(1)%angular_velocity = [0.0_wp, 51.45673425315680_wp, 0.0_wp]
+    system%contacts = [contact('in_loop', 'ground', 'loop', -1.0_wp, 'ball', 'ball', 1.0_wp, .true.)]
+    system%contacts(1)%may_open = .true.
+    system%contacts(1)%restitution = 0.3_wp
+    system%contacts(1)%close_speed = 0.5_wp
+    call run_flying('inputs/contact/loop.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 3.0_wp)
+  end subroutine contact_loop
+
+  subroutine contact_roll_beside_bounce()
+    type(contact_system_t) :: system
+    system%shapes = [spec_shape('floor', 'plane', [character(len=1) ::], [real(wp) ::]), &
+                     spec_shape('slope', 'plane', [character(len=1) ::], [real(wp) ::]), &
+                     ball_shape('roller', 0.1_wp), ball_shape('bouncer', 0.05_wp)]
+    system%shapes(2)%description%angles_deg = [0.0_wp, 10.0_wp, 0.0_wp]
+    system%bodies = [body('roller', 0.2_wp, [0.01736481776669303_wp, 0.0_wp, 0.09848077530122080_wp], &
+                          [-90.0_wp, 0.0_wp, 0.0_wp]), &
+                     solid_ball('bouncer', 0.5_wp, [0.0_wp, 1.0_wp, 0.55_wp], [0.4_wp, 0.0_wp, 0.0_wp])]
+    system%bodies(1)%solid_of = 'roller'
+    system%contacts = [contact('roller_on_slope', 'ground', 'slope', 1.0_wp, 'roller', 'roller', 1.0_wp, .true.), &
+                       landing('bouncer_on_floor', 'floor', 'bouncer', 0.5_wp, 0.1_wp)]
+    call run_flying('inputs/contact/roll_beside_bounce.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 2.0_wp)
+  end subroutine contact_roll_beside_bounce
+
+  subroutine contact_stacked_balls()
+    type(contact_system_t) :: system
+    system%shapes = [spec_shape('floor', 'plane', [character(len=1) ::], [real(wp) ::]), ball_shape('big', 0.12_wp), &
+                     ball_shape('small', 0.033_wp)]
+    system%bodies = [solid_ball('big', 0.6_wp, [0.0_wp, 0.0_wp, 1.12_wp], [0.0_wp, 0.0_wp, 0.0_wp]), &
+                     solid_ball('small', 0.057_wp, [0.0_wp, 0.0_wp, 1.283_wp], [0.0_wp, 0.0_wp, 0.0_wp])]
+    system%contacts = [landing('big_on_floor', 'floor', 'big', 0.8_wp, 0.1_wp), &
+                       contact('small_on_big', 'big', 'big', 1.0_wp, 'small', 'small', 1.0_wp, .false.), &
+                       landing('small_on_floor', 'floor', 'small', 0.8_wp, 0.1_wp)]
+    system%contacts(2)%start_open = .true.
+    system%contacts(2)%restitution = 0.9_wp   ! close_speed: the default
+    call run_flying('inputs/contact/stacked_balls.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 1.5_wp)
+  end subroutine contact_stacked_balls
+
+  !> As scenarios_contact runs a system whose contacts start open or may
+  !> open: a flight from the start (build_flight), several bodies some carried
+  !> (build_bodies), or a body starting on its closed contact and flying from
+  !> its lift-off (flight_after_closed); driven by drive_flight. Run over
+  !> the input's own duration `seconds` (a fraction of a second each), not
+  !> the program's, so that the landings, closings and lift-offs happen:
+  !> the line `<input> duration <seconds>` tells compare_shipped.py.
+  subroutine run_flying(name, system, rtol, atol, output_step, seconds)
+    character(len=*), intent(in) :: name
+    type(contact_system_t), intent(in) :: system
+    real(wp), intent(in) :: rtol, atol, output_step, seconds
+    type(flight_ode_t), target :: flight
+    type(contact_model_t) :: model
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp), allocatable :: q0(:), qd0(:), y0(:)
+    character(len=8), allocatable :: q_units(:)
+    integer, allocatable :: open(:, :)
+    integer :: f, ns
+    call check_flight_system(system, st)
+    if (carrying_contact(system) == 0) then
+      call build_flight(system, flight, q0, qd0, q_units, st)
+    else if (size(system%bodies) > 1) then
+      call build_bodies(system, start_carriers(system), flight, q0, qd0, q_units, st, 0, .false., model)
+    else
+      call build_contact_model(closed_part(system, carrying_contact(system)), model, st)
+      if (st%ok()) then
+        f = model%ode%mechanism%f
+        ns = model%ode%mechanism%ns
+        y0 = model%ode%initial_state(model%y0(1:f), model%y0(f + 1:f + ns))
+        call model%ode%check_start(y0, st)
+      end if
+      call flight_after_closed(system, model, flight, q0, qd0, q_units, st)
+    end if
+    call expect_ok(st, name//': built')
+    if (.not. st%ok()) return
+    y0 = flight%initial_state(q0, qd0)
+    call flight%check_start(y0, st)
+    call expect_ok(st, name//': start')
+    if (.not. st%ok()) return
+    options%ode%method = ODE_ADAMS
+    options%ode%rtol = rtol
+    options%ode%atol = atol
+    options%ode%convergence_coefficient = contact_convergence_coefficient
+    options%t_end = seconds
+    options%output_step = output_step
+    options%min_mean_step = min_mean_step
+    options%progress_seconds = 0
+    call put(name, 'duration', seconds)
+    call flight%start_series(nint(seconds/output_step) + 2)
+    call drive_flight(flight, y0, options, result, st, open)
+    call expect_ok(st, name//': ran')
+    associate (s => flight%series, n => flight%series%n)
+      call put(name, 'simulated_time', s%time(n))
+      call put(name, 'energy_change_joules', s%kinetic(n) + s%potential(n) - (s%kinetic(1) + s%potential(1)))
+    end associate
+    if (size(flight%impacts) > 0) then
+      call put_count(name, 'impacts', size(flight%impacts))
+      call put(name, 'impact_speed_max', maxval(-flight%impacts%normal_speed_before))
+      call put(name, 'impact_energy_lost', sum(flight%impacts%energy_lost))
+    end if
+    call put_count(name, 'steps', int(result%stats%steps))
+    call put_count(name, 'rhs_evaluations', int(result%stats%rhs_evaluations))
+  end subroutine run_flying
 
   ! ---------------------------------------------------------------- the common run
 
