@@ -35,6 +35,7 @@ program shipped_descriptions
   use geometry_slide_elements, only: slide_element_t
   use geometry_tube, only: tube_surface_t
   use geometry_slide_builder, only: build_slide
+  use geometry_description, only: geometry_description_t, build_geometry
   use kinetostatics_force_law_factory, only: law_spec
   use kinetostatics_point_mass, only: point_mass_t, point_mass_description_t, build_point_mass_model
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
@@ -59,11 +60,14 @@ program shipped_descriptions
   failures = 0
   call pendulum_simple()
   call pendulum_double()
-  call fourbar_crank_rocker()
+  call fourbar_crank_rocker('inputs/fourbar/crank_rocker.nml')
+  call fourbar_crank_rocker('inputs/templates/fourbar.nml')   ! the same four-bar, every variable written
+  call pendulum_template()
   call sled_bowl()
   call sled_bowl_friction()
   call sled_demo_slide()
   call sled_incline_coulomb()
+  call sled_template()
   call point_mass_apex_paraboloid()
   call point_mass_ellipsoid()
   call point_mass_elliptic_cylinder()
@@ -71,9 +75,14 @@ program shipped_descriptions
   call point_mass_hyperbolic_paraboloid()
   call point_mass_plane_coulomb()
   call point_mass_incline_drag()
+  call point_mass_template()
+  call point_mass_bowl()
+  call point_mass_halfpipe()
   call point_mass_demo_slide()
   call contact_egg('inputs/contact/egg.nml', [0.025_wp, 0.033_wp, 0.025_wp], [-90.0_wp, 0.0_wp, -103.0_wp])
   call contact_egg('inputs/contact/egg_long_axis_z.nml', [0.025_wp, 0.025_wp, 0.033_wp], [77.0_wp, 0.0_wp, 0.0_wp])
+  ! the egg of inputs/contact/egg.nml with every variable written out (gravity: the default)
+  call contact_egg('inputs/templates/contact.nml', [0.025_wp, 0.033_wp, 0.025_wp], [-90.0_wp, 0.0_wp, -103.0_wp])
   call contact_ball_in_cone()
   call contact_paraboloids()
   call contact_tower5()
@@ -111,6 +120,17 @@ contains
     call run_pendulum('inputs/pendulum/double.nml', d)
   end subroutine pendulum_double
 
+  subroutine pendulum_template()
+    type(pendulum_description_t) :: d
+    d%params%links = 2
+    d%params%length = [1.0_wp, 0.8_wp]
+    d%params%mass = [1.0_wp, 0.5_wp]
+    d%params%inertia = [0.0_wp, 0.0_wp]
+    d%theta0 = [0.5_wp, 0.0_wp]
+    d%dtheta0 = [0.0_wp, 0.0_wp]
+    call run_pendulum('inputs/templates/pendulum.nml', d)
+  end subroutine pendulum_template
+
   subroutine run_pendulum(name, d)
     character(len=*), intent(in) :: name
     type(pendulum_description_t), intent(in) :: d
@@ -121,7 +141,8 @@ contains
     call run_multibody(name, sys, q0, qd0, ODE_ADAMS, 1e-12_wp, 1e-12_wp, 0.01_wp, .false., st)
   end subroutine run_pendulum
 
-  subroutine fourbar_crank_rocker()
+  subroutine fourbar_crank_rocker(name)
+    character(len=*), intent(in) :: name
     type(fourbar_description_t) :: d
     type(mechanism_ode_t), target :: sys
     real(wp), allocatable :: q0(:), qd0(:)
@@ -132,8 +153,7 @@ contains
     d%dcrank0 = 12.0_wp
     d%branch = 1
     call build_fourbar_model(d, sys%mechanism, q0, qd0, st)
-    call run_multibody('inputs/fourbar/crank_rocker.nml', sys, q0, qd0, ODE_ADAMS, 1e-12_wp, 1e-12_wp, 0.01_wp, &
-                       .false., st)
+    call run_multibody(name, sys, q0, qd0, ODE_ADAMS, 1e-12_wp, 1e-12_wp, 0.01_wp, .false., st)
   end subroutine fourbar_crank_rocker
 
   ! ---------------------------------------------------------------- sled
@@ -191,6 +211,17 @@ contains
     call run_sled('inputs/sled/incline_coulomb.nml', d, incline(0.9396926207859084_wp, -0.3420201433256687_wp), &
                   ODE_ADAMS, 1e-10_wp, 1e-12_wp)
   end subroutine sled_incline_coulomb
+
+  !> inputs/templates/sled.nml: the incline of incline_coulomb.nml with the
+  !> law's regularization_speed written out.
+  subroutine sled_template()
+    type(sled_description_t) :: d
+    d = sled([0.5_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp])
+    d%params%friction = [law_spec('coulomb', 'mu', 0.2_wp)]
+    call d%params%friction(1)%set('regularization_speed', [1e-6_wp])
+    call run_sled('inputs/templates/sled.nml', d, incline(0.9396926207859084_wp, -0.3420201433256687_wp), &
+                  ODE_ADAMS, 1e-10_wp, 1e-12_wp)
+  end subroutine sled_template
 
   subroutine run_sled(name, d, surface, method, rtol, atol)
     character(len=*), intent(in) :: name
@@ -319,6 +350,57 @@ contains
     call run_point_mass('inputs/point_mass/incline_drag.nml', d, incline(0.8660254037844386_wp, -0.5_wp), &
                         1e-10_wp, 1e-10_wp, 0.05_wp)
   end subroutine point_mass_incline_drag
+
+  !> inputs/templates/point_mass.nml: plane_coulomb.nml's block with every
+  !> variable written out (the regularization_speed the point mass's own).
+  subroutine point_mass_template()
+    type(point_mass_description_t) :: d
+    d%mass = 2.0_wp
+    d%u0 = 0.0_wp; d%v0 = 0.0_wp; d%du0 = 0.5_wp; d%dv0 = 0.0_wp
+    d%friction = law_spec('coulomb', 'mu', 0.2_wp)
+    call d%friction%set('regularization_speed', [1e-9_wp])
+    d%sigma = 1; d%alpha_u = 1.0_wp; d%alpha_v = 0.0_wp
+    call run_point_mass('inputs/templates/point_mass.nml', d, incline(0.8660254037844386_wp, -0.5_wp), &
+                        1e-10_wp, 1e-10_wp, 0.01_wp)
+  end subroutine point_mass_template
+
+  !> inputs/parts/bowl_point_mass.nml: circling in a sphere zone of 3 m, no friction.
+  subroutine point_mass_bowl()
+    type(point_mass_description_t) :: d
+    class(surface_t), allocatable :: surface
+    type(spec_t) :: spec
+    type(status_t) :: st
+    spec%kind = 'sphere_zone'
+    call spec%set('radius', [3.0_wp])
+    call spec%set('latitude_min_deg', [-89.0_wp])
+    call spec%set('latitude_max_deg', [0.0_wp])
+    call surface_from_spec(spec, surface, st)
+    call expect_ok(st, 'the bowl zone')
+    d%u0 = 0.0_wp; d%v0 = -0.6981317007977318_wp; d%du0 = 2.2551008156828716_wp; d%dv0 = 0.0_wp
+    call run_point_mass('inputs/parts/bowl_point_mass.nml', d, surface, 1e-12_wp, 1e-12_wp, 0.01_wp)
+  end subroutine point_mass_bowl
+
+  !> inputs/parts/halfpipe_point_mass.nml on parts/halfpipe_slide.nml: an
+  !> exact centre line, a flume of radius 2 m with walls of 1.5 m; no friction.
+  subroutine point_mass_halfpipe()
+    type(point_mass_description_t) :: d
+    type(geometry_description_t) :: slide
+    class(surface_t), allocatable :: surface
+    type(status_t) :: st
+    slide%kind = 'slide'
+    slide%slide%elements%start = [0.0_wp, 0.0_wp, 6.0_wp]
+    slide%slide%elements%transition_length = 2.0_wp
+    slide%slide%elements%exact = .true.
+    slide%slide%elements%elements = [ &
+      slide_element_t(kind='straight', length=6.0_wp, slope_deg=12.0_wp), &
+      slide_element_t(kind='curve', slope_deg=5.0_wp, radius=8.0_wp, angle_deg=150.0_wp), &
+      slide_element_t(kind='straight', length=6.0_wp, slope_deg=6.0_wp)]
+    slide%slide%section%parts = [section_part_description_t(kind='flume', radius=2.0_wp, wall=1.5_wp)]
+    call build_geometry(slide, surface, st)
+    call expect_ok(st, 'the half-pipe slide')
+    d%u0 = 0.5_wp; d%v0 = 1.5707963267948966_wp; d%du0 = 4.0_wp; d%dv0 = 0.0_wp
+    call run_point_mass('inputs/parts/halfpipe_point_mass.nml', d, surface, 1e-12_wp, 1e-12_wp, 0.01_wp)
+  end subroutine point_mass_halfpipe
 
   subroutine point_mass_demo_slide()
     type(point_mass_description_t) :: d
