@@ -30,11 +30,11 @@ module kinetostatics_closure_blocks
   use base_kinds, only: wp
   use base_status, only: status_t
   use numerics_linear_algebra, only: lu_factor, lu_solve, small_lu_solve, small_order
-  use kinetostatics_state, only: element_box_t, element_links_t, frame_state_t, scalar_state_t
+  use kinetostatics_state, only: element_box_t, element_links_t, frame_state_t, scalar_state_t, rest_velocities
   implicit none (type, external)
   private
   public :: closure_blocks_t, dense_block_t, element_reach_t, build_closure_blocks, find_element_links, &
-    reach_of, downstream_of, feeding
+    reach_of, downstream_of, feeding, rest_outputs
 
   !> One block: its members (positions in x and in the rows, ascending: the
   !> dependent coordinates and closure rows first), J_x's block and its LU, and
@@ -69,7 +69,7 @@ module kinetostatics_closure_blocks
       second_pass_start(:), second_pass(:), unknown_pass_start(:), unknown_pass(:), normal_pass_start(:), &
       normal_pass(:), clear_start(:), clear(:)
   contains
-    procedure :: fill, factor, solve, assemble, block_count, build_mass_columns
+    procedure :: fill, factor, solve, solve_rates, rest_rates, assemble, block_count, build_mass_columns
   end type closure_blocks_t
 
 contains
@@ -433,12 +433,8 @@ contains
     type(frame_state_t), intent(inout) :: frames(:)
     type(scalar_state_t), intent(inout) :: scalars(:)
     integer, intent(in) :: unknowns(:), rows(:), last
-    integer :: k, i, e, j
-    do k = 1, size(frames)
-      frames(k)%omega = 0
-      frames(k)%v = 0
-    end do
-    scalars%qd = 0
+    integer :: k, i, j
+    call rest_velocities(frames, scalars)
     do k = 1, last
       scalars(unknowns(k))%qd = 1
       do j = self%pass_start(k), self%pass_start(k + 1) - 1
@@ -453,18 +449,32 @@ contains
       scalars(unknowns(k))%qd = 0
       if (.not. self%blocked) cycle
       ! back to rest for the next column: the outputs this one moved
-      do j = self%pass_start(k), self%pass_start(k + 1) - 1
-        e = self%pass(j)
-        do i = reach%frame_out_start(e), reach%frame_out_start(e + 1) - 1
-          frames(reach%frame_out(i))%omega = 0
-          frames(reach%frame_out(i))%v = 0
-        end do
-        do i = reach%scalar_out_start(e), reach%scalar_out_start(e + 1) - 1
-          scalars(reach%scalar_out(i))%qd = 0
-        end do
-      end do
+      call rest_outputs(reach, self%pass, self%pass_start(k), self%pass_start(k + 1) - 1, frames, scalars)
     end do
   end subroutine fill
+
+  !> The velocities of the outputs of the elements list(first:last) set to
+  !> rest (loops of a few turns: not unrolled, the remainder costs more).
+  subroutine rest_outputs(reach, list, first, last, frames, scalars)
+    type(element_reach_t), intent(in) :: reach
+    integer, intent(in) :: list(:), first, last
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    integer :: p, l, e
+    !GCC$ unroll 1
+    do p = first, last
+      e = list(p)
+      !GCC$ unroll 1
+      do l = reach%frame_out_start(e), reach%frame_out_start(e + 1) - 1
+        frames(reach%frame_out(l))%omega = 0
+        frames(reach%frame_out(l))%v = 0
+      end do
+      !GCC$ unroll 1
+      do l = reach%scalar_out_start(e), reach%scalar_out_start(e + 1) - 1
+        scalars(reach%scalar_out(l))%qd = 0
+      end do
+    end do
+  end subroutine rest_outputs
 
   !> LU of every block's J_beta part (with_rates false) or of its whole J_x
   !> (true); zero_pivot: the position in x of the first zero pivot (0: none).
@@ -529,6 +539,62 @@ contains
       end associate
     end do
   end subroutine solve
+
+  !> The closure of the blocks `only` solved at rate level (velocity: the
+  !> scalars' qd, else their qdd), the other rates as they stand: their
+  !> members' rows' rates x(j) = rate(rows(j)), x := J_x^-1 x (with_rates;
+  !> else J_beta^-1), and their unknowns' rates rate(unknowns(j)) = -x(j).
+  !> x: work space (length nx). (Not an array of the qd or qdd: a copy.)
+  subroutine solve_rates(self, with_rates, rows, unknowns, x, scalars, velocity, only)
+    class(closure_blocks_t), intent(inout) :: self
+    logical, intent(in) :: with_rates, velocity
+    integer, intent(in) :: rows(:), unknowns(:), only(:)
+    real(wp), intent(inout) :: x(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    integer :: l, m, j
+    do l = 1, size(only)
+      do m = 1, size(self%blocks(only(l))%members)
+        j = self%blocks(only(l))%members(m)
+        if (velocity) then
+          x(j) = scalars(rows(j))%qd
+        else
+          x(j) = scalars(rows(j))%qdd
+        end if
+      end do
+    end do
+    call self%solve(with_rates, x, .false., only)
+    do l = 1, size(only)
+      do m = 1, size(self%blocks(only(l))%members)
+        j = self%blocks(only(l))%members(m)
+        if (velocity) then
+          scalars(unknowns(j))%qd = -x(j)
+        else
+          scalars(unknowns(j))%qdd = -x(j)
+        end if
+      end do
+    end do
+  end subroutine solve_rates
+
+  !> The rates of the unknowns of the blocks `only` set to rest (velocity:
+  !> their qd, else their qdd).
+  subroutine rest_rates(self, unknowns, scalars, velocity, only)
+    class(closure_blocks_t), intent(in) :: self
+    integer, intent(in) :: unknowns(:), only(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    logical, intent(in) :: velocity
+    integer :: l, m
+    do l = 1, size(only)
+      associate (members => self%blocks(only(l))%members)
+        do m = 1, size(members)
+          if (velocity) then
+            scalars(unknowns(members(m)))%qd = 0
+          else
+            scalars(unknowns(members(m)))%qdd = 0
+          end if
+        end do
+      end associate
+    end do
+  end subroutine rest_rates
 
   !> The same for a block above small_order (LAPACK through lu_solve).
   subroutine large_block_solve(b, with_rates, m, v, transpose)

@@ -46,13 +46,14 @@ module kinetostatics_mechanism
     solve_nonlinear
   use numerics_linear_algebra, only: lu_factor, lu_solve, lu_reciprocal_condition, one_norm, cholesky_factor, &
     cholesky_solve, transposed_product, symmetric_transposed_product
-  use kinetostatics_state, only: element_t, element_box_t, frame_state_t, scalar_state_t, domain_edge_t
+  use kinetostatics_state, only: element_t, element_box_t, frame_state_t, scalar_state_t, domain_edge_t, &
+    rest_velocities
   use kinetostatics_contact, only: contact_t, contact_state_t, contact_kinematics, NORMAL_FRAME_FORCE, &
     NORMAL_CUT_FORCE
   use kinetostatics_force_law, only: force_law_t, force_law_box_t
   use kinetostatics_mechanism_workspace, only: mechanism_workspace_t, WORKSPACE_SIZES, recent_solutions
   use kinetostatics_closure_blocks, only: closure_blocks_t, element_reach_t, build_closure_blocks, &
-    find_element_links, downstream_of
+    find_element_links, downstream_of, rest_outputs
   use kinetostatics_tree, only: tree_t, find_tree
   implicit none (type, external)
   private
@@ -413,6 +414,20 @@ module kinetostatics_mechanism
       class(mechanism_t), intent(in) :: self
       type(mechanism_workspace_t), intent(inout) :: work
     end subroutine twist_unit_loads
+
+    ! shared by the dense and the tree dynamics (kinetostatics_mechanism_dynamics)
+    module subroutine bias_forces(self, work, t, status)
+      class(mechanism_t), intent(in) :: self
+      type(mechanism_workspace_t), intent(inout) :: work
+      real(wp), intent(in) :: t
+      type(status_t), intent(inout) :: status
+    end subroutine bias_forces
+
+    module subroutine no_inertia(self, column, status)
+      class(mechanism_t), intent(in) :: self
+      integer, intent(in) :: column
+      type(status_t), intent(inout) :: status
+    end subroutine no_inertia
 
     ! tree (kinetostatics_mechanism_tree)
     module subroutine tree_dynamics(self, work, t, q, qd, qdd, status)

@@ -66,21 +66,12 @@ contains
     call self%set_positions(work, q, status)
     if (.not. status%ok()) return
     call self%set_velocities(work, qd)
-    call self%evaluate_laws(work, t, status)
+    call bias_forces(self, work, t, status)
     if (.not. status%ok()) return
-    work%law_factor = 1
-    work%work_f = 0
-    call self%set_accelerations(work, work%work_f)
-    call self%inverse_dynamics(work, .true., .true., LOADS_EXPLICIT)
-    work%bias(:) = work%gq   ! (:): no reallocation test
     if (nc > 0) call self%normal_forces(work, work%lambda, work%n0)
 
     ! M and G, all velocities zero, applied forces off
-    do k = 1, self%n_frames
-      work%frames(k)%omega = 0
-      work%frames(k)%v = 0
-    end do
-    work%scalars%qd = 0
+    call rest_velocities(work%frames, work%scalars)
     if (self%twist_route) then
       call twist_mass_matrix(self, work)
     else
@@ -97,9 +88,7 @@ contains
     end if
     call cholesky_factor(work%chol, lapack, column)
     if (.not. lapack%ok()) then
-      call set_status(status, STATUS_DOMAIN, 'the mass matrix is not positive definite: generalized '// &
-        'coordinate '''//trim(self%scalar_names(self%q(self%speeds(column))))//''' has no inertia (a massless body or '// &
-        'a mass without rotational inertia on a pure rotation)')
+      call no_inertia(self, column, status)
       return
     end if
     if (ns == 0) then
@@ -185,6 +174,28 @@ contains
     end do
     call remember_dynamics(self, work, t, q, qd)
   end procedure dynamics
+
+  !> Q_bar0 = -Q^ (the module comment) in the workspace's `bias`, at the
+  !> positions and velocities set: the laws evaluated at t, every law at
+  !> full load, the inverse dynamics at s' = 0 with inertia, the applied
+  !> forces and the explicit laws. Leaves the acceleration state at s' = 0.
+  module procedure bias_forces
+    call self%evaluate_laws(work, t, status)
+    if (.not. status%ok()) return
+    work%law_factor = 1
+    work%work_f = 0
+    call self%set_accelerations(work, work%work_f)
+    call self%inverse_dynamics(work, .true., .true., LOADS_EXPLICIT)
+    work%bias(:) = work%gq   ! (:): no reallocation test
+  end procedure bias_forces
+
+  !> The status of a mass matrix that is not positive definite, at the
+  !> speed `column` (its factor's first zero or negative pivot).
+  module procedure no_inertia
+    call set_status(status, STATUS_DOMAIN, 'the mass matrix is not positive definite: generalized '// &
+      'coordinate '''//trim(self%scalar_names(self%q(self%speeds(column))))//''' has no inertia (a massless body or '// &
+      'a mass without rotational inertia on a pure rotation)')
+  end procedure no_inertia
 
   !> Column i of M and of G by inverse-dynamics passes (the route for a
   !> mechanism with an element of unknown links): s' = e_i, velocities zero,

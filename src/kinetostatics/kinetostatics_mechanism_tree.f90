@@ -26,22 +26,13 @@ contains
     qdd = 0
     call self%set_positions(work, q, status)
     if (.not. status%ok()) return
-    do k = 1, self%n_frames
-      work%frames(k)%omega = 0
-      work%frames(k)%v = 0
-    end do
-    work%scalars%qd = 0
+    call rest_velocities(work%frames, work%scalars)
     do k = 1, size(self%tree%speed)
       call subspace_column(self, work, k)
     end do
     call self%set_velocities(work, qd)
-    call self%evaluate_laws(work, t, status)
+    call bias_forces(self, work, t, status)
     if (.not. status%ok()) return
-    work%law_factor = 1
-    work%work_f = 0
-    call self%set_accelerations(work, work%work_f)
-    call self%inverse_dynamics(work, .true., .true., LOADS_EXPLICIT)
-    work%bias(:) = work%gq
     associate (w => work%tree)
       do b = 1, self%tree%n_bodies
         w%origin(:, b) = work%frames(self%tree%frame(b))%r
@@ -54,9 +45,7 @@ contains
       call articulated_solve(self%tree, w, work%bias, work%qdd, failed)
     end associate
     if (failed > 0) then
-      call set_status(status, STATUS_DOMAIN, 'the mass matrix is not positive definite: generalized '// &
-        'coordinate '''//trim(self%scalar_names(self%q(self%speeds(failed))))//''' has no inertia (a massless body or '// &
-        'a mass without rotational inertia on a pure rotation)')
+      call no_inertia(self, failed, status)
       return
     end if
     qdd = work%qdd
@@ -72,7 +61,7 @@ contains
     class(mechanism_t), intent(in) :: self
     type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: k
-    integer :: p, l, m, j, speed, first, last, body
+    integer :: p, speed, first, last, body
     associate (tree => self%tree)
       speed = self%q(self%speeds(tree%speed(k)))
       body = tree%frame(tree%column_body(k))
@@ -83,21 +72,8 @@ contains
         call work%elements(tree%pass(p))%e%velocity(work%frames, work%scalars)
       end do
       if (last >= first) then
-        associate (bl => work%blocks, x => work%work_x, touched => tree%touched(first:last))
-          do l = 1, size(touched)
-            do m = 1, size(bl%blocks(touched(l))%members)
-              j = bl%blocks(touched(l))%members(m)
-              x(j) = work%scalars(self%rows(j))%qd
-            end do
-          end do
-          call bl%solve(self%nd > 0, x, .false., touched)
-          do l = 1, size(touched)
-            do m = 1, size(bl%blocks(touched(l))%members)
-              j = bl%blocks(touched(l))%members(m)
-              work%scalars(self%unknowns(j))%qd = -x(j)
-            end do
-          end do
-        end associate
+        call work%blocks%solve_rates(self%nd > 0, self%rows, self%unknowns, work%work_x, work%scalars, .true., &
+                                     tree%touched(first:last))
         do p = tree%second_start(k), tree%second_start(k + 1) - 1
           call work%elements(tree%second(p))%e%velocity(work%frames, work%scalars)
         end do
@@ -106,33 +82,11 @@ contains
       work%tree%subspace(4:6, k) = work%frames(body)%v
       ! back to rest: the sources and every output the passes wrote
       work%scalars(speed)%qd = 0
-      do l = first, last
-        associate (members => self%blocks%blocks(tree%touched(l))%members)
-          do m = 1, size(members)
-            work%scalars(self%unknowns(members(m)))%qd = 0
-          end do
-        end associate
-      end do
-      call rest_outputs(self, work, tree%pass(tree%pass_start(k):tree%pass_start(k + 1) - 1))
-      call rest_outputs(self, work, tree%second(tree%second_start(k):tree%second_start(k + 1) - 1))
+      if (last >= first) call work%blocks%rest_rates(self%unknowns, work%scalars, .true., tree%touched(first:last))
+      call rest_outputs(self%reach, tree%pass, tree%pass_start(k), tree%pass_start(k + 1) - 1, work%frames, &
+                        work%scalars)
+      call rest_outputs(self%reach, tree%second, tree%second_start(k), tree%second_start(k + 1) - 1, work%frames, &
+                        work%scalars)
     end associate
   end subroutine subspace_column
-
-  !> The velocities of the outputs of the elements `list` set to rest.
-  subroutine rest_outputs(self, work, list)
-    class(mechanism_t), intent(in) :: self
-    type(mechanism_workspace_t), intent(inout) :: work
-    integer, intent(in) :: list(:)
-    integer :: p, l, e
-    do p = 1, size(list)
-      e = list(p)
-      do l = self%reach%frame_out_start(e), self%reach%frame_out_start(e + 1) - 1
-        work%frames(self%reach%frame_out(l))%omega = 0
-        work%frames(self%reach%frame_out(l))%v = 0
-      end do
-      do l = self%reach%scalar_out_start(e), self%reach%scalar_out_start(e + 1) - 1
-        work%scalars(self%reach%scalar_out(l))%qd = 0
-      end do
-    end do
-  end subroutine rest_outputs
 end submodule kinetostatics_mechanism_tree

@@ -50,8 +50,8 @@ contains
         call velocity_column(self, work, i)
       end do
       ! back to rest (the normal forces' passes are acceleration maps at rest)
-      call rest_velocities(self, work, self%blocks%mass_pass, self%blocks%mass_pass_start(1), &
-                           self%blocks%mass_pass_start(2) - 1)
+      call rest_outputs(self%reach, self%blocks%mass_pass, self%blocks%mass_pass_start(1), &
+                        self%blocks%mass_pass_start(2) - 1, work%frames, work%scalars)
     else
       do i = 1, self%ns
         if (self%blocks%mass_blocked) then
@@ -113,7 +113,7 @@ contains
     class(mechanism_t), intent(in) :: self
     type(mechanism_workspace_t), intent(inout) :: work
     integer, intent(in) :: i
-    integer :: l, m, j, p, speed, first, last
+    integer :: p, speed, first, last
     ! index bounds, not associated slices: descriptors cost more than the
     ! work for the usual column that touches no block
     speed = self%q(self%speeds(i))
@@ -125,34 +125,15 @@ contains
       call work%elements(self%blocks%mass_pass(p))%e%acceleration(work%frames, work%scalars)
     end do
     if (last >= first) then
-      associate (bl => work%blocks, x => work%work_x, touched => self%blocks%touched(first:last))
-        do l = 1, size(touched)
-          do m = 1, size(bl%blocks(touched(l))%members)
-            j = bl%blocks(touched(l))%members(m)
-            x(j) = work%scalars(self%rows(j))%qdd
-          end do
-        end do
-        call bl%solve(self%nd > 0, x, .false., touched)
-        do l = 1, size(touched)
-          do m = 1, size(bl%blocks(touched(l))%members)
-            j = bl%blocks(touched(l))%members(m)
-            work%scalars(self%unknowns(j))%qdd = -x(j)
-          end do
-        end do
-      end associate
+      call work%blocks%solve_rates(self%nd > 0, self%rows, self%unknowns, work%work_x, work%scalars, .false., &
+                                   self%blocks%touched(first:last))
       call accelerate(self, work, self%blocks%second_pass(self%blocks%second_pass_start(i): &
                                                     self%blocks%second_pass_start(i + 1) - 1))
     end if
     call keep_twists(self, work%frames, work%twist(:, :, i))
     ! the sources back to rest (the outputs: clear_before)
     work%scalars(speed)%qdd = 0
-    do l = first, last
-      associate (members => self%blocks%blocks(self%blocks%touched(l))%members)
-        do m = 1, size(members)
-          work%scalars(self%unknowns(members(m)))%qdd = 0
-        end do
-      end associate
-    end do
+    if (last >= first) call work%blocks%rest_rates(self%unknowns, work%scalars, .false., self%blocks%touched(first:last))
   end subroutine unit_column
 
   !> Column i of the twists when no column touches a block: the velocity
@@ -168,8 +149,8 @@ contains
     integer :: p, speed
     speed = self%q(self%speeds(i))
     if (self%velocity_clear_start(i + 1) > self%velocity_clear_start(i)) &
-      call rest_velocities(self, work, self%velocity_clear, self%velocity_clear_start(i), &
-                           self%velocity_clear_start(i + 1) - 1)
+      call rest_outputs(self%reach, self%velocity_clear, self%velocity_clear_start(i), &
+                        self%velocity_clear_start(i + 1) - 1, work%frames, work%scalars)
     work%scalars(speed)%qd = 1
     do p = self%blocks%mass_pass_start(i), self%blocks%mass_pass_start(i + 1) - 1
       call work%elements(self%blocks%mass_pass(p))%e%velocity(work%frames, work%scalars)
@@ -177,27 +158,6 @@ contains
     call keep_velocity_twists(self, work%frames, work%twist(:, :, i))
     work%scalars(speed)%qd = 0
   end subroutine velocity_column
-
-  !> The velocities of the outputs of the elements list(first:last) set to rest.
-  subroutine rest_velocities(self, work, list, first, last)
-    class(mechanism_t), intent(in) :: self
-    type(mechanism_workspace_t), intent(inout) :: work
-    integer, intent(in) :: list(:), first, last
-    integer :: p, l, e
-    !GCC$ unroll 1
-    do p = first, last
-      e = list(p)
-      !GCC$ unroll 1
-      do l = self%reach%frame_out_start(e), self%reach%frame_out_start(e + 1) - 1
-        work%frames(self%reach%frame_out(l))%omega = 0
-        work%frames(self%reach%frame_out(l))%v = 0
-      end do
-      !GCC$ unroll 1
-      do l = self%reach%scalar_out_start(e), self%reach%scalar_out_start(e + 1) - 1
-        work%scalars(self%reach%scalar_out(l))%qd = 0
-      end do
-    end do
-  end subroutine rest_velocities
 
   !> The tracked frames' (omega, v) (keep_twists of a velocity state).
   subroutine keep_velocity_twists(self, frames, twists)

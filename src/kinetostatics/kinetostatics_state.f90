@@ -23,7 +23,7 @@ module kinetostatics_state
   implicit none (type, external)
   private
   public :: frame_state_t, scalar_state_t, element_t, element_box_t, element_links_t, domain_edge_t, surface_chart_t
-  public :: axis_rotation
+  public :: axis_rotation, rest_velocities
 
   type :: frame_state_t
     real(wp) :: rot(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])  ! columns x, y, z
@@ -340,4 +340,16 @@ contains
       r(i, i) = r(i, i) + 1
     end do
   end function axis_rotation
+
+  !> Every velocity at rest: the frames' (omega, v), the scalars' rates.
+  pure subroutine rest_velocities(frames, scalars)
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    integer :: k
+    do k = 1, size(frames)
+      frames(k)%omega = 0
+      frames(k)%v = 0
+    end do
+    scalars%qd = 0
+  end subroutine rest_velocities
 end module kinetostatics_state
