@@ -26,7 +26,7 @@
 module contact_gap
   use base_kinds, only: wp
   use base_text, only: format_short
-  use base_vector, only: cross
+  use base_vector, only: cross, identity3
   use base_status, only: status_t, set_status, prefix_status, STATUS_NOT_CONVERGED, STATUS_DOMAIN
   use geometry_surface, only: surface_t, surface_point_t
   use numerics_linear_algebra, only: lu_factor, lu_solve
@@ -90,8 +90,8 @@ contains
     type(status_t), intent(inout) :: status
     type(surface_point_t) :: pt
     real(wp) :: n1(3)
-    self%surface(1)%chart_rotation = identity()
-    self%surface(2)%chart_rotation = identity()
+    self%surface(1)%chart_rotation = identity3()
+    self%surface(2)%chart_rotation = identity3()
     deallocate (self%surface(1)%chart, self%surface(2)%chart)
     allocate (self%surface(1)%chart, source=self%surface(1)%base)
     allocate (self%surface(2)%chart, source=self%surface(2)%base)
@@ -277,9 +277,4 @@ contains
     real(wp), intent(in) :: jac(4, 4)
     tangent_scale = max(1.0_wp, maxval(abs(jac)))
   end function tangent_scale
-
-  pure function identity() result(m)
-    real(wp) :: m(3, 3)
-    m = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
-  end function identity
 end module contact_gap

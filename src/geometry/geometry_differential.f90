@@ -10,7 +10,7 @@
 !> difference of nearly equal numbers is formed.
 module geometry_differential
   use base_kinds, only: wp
-  use base_vector, only: cross
+  use base_vector, only: cross, unit_vector
   use geometry_surface, only: surface_point_t
   implicit none (type, external)
   private
@@ -34,14 +34,8 @@ contains
   !> Unit normal (r_u x r_v)/|r_u x r_v|, thesis (2.24); zero where degenerate.
   pure function unit_normal(p) result(n)
     type(surface_point_t), intent(in) :: p
-    real(wp) :: n(3), c(3), length
-    c = cross(p%ru, p%rv)
-    length = norm2(c)
-    if (length > 0) then
-      n = c/length
-    else
-      n = 0
-    end if
+    real(wp) :: n(3)
+    n = unit_vector(cross(p%ru, p%rv))
   end function unit_normal
 
   !> [E, F, G], thesis (2.15).

@@ -61,7 +61,7 @@ module kinetostatics_inverse_surface_joint
   use base_vector, only: cross
   use geometry_surface, only: surface_t
   use kinetostatics_state, only: element_t, element_links_t, frame_state_t, scalar_state_t, surface_chart_t
-  use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint
+  use kinetostatics_surface_joint, only: surface_joint_t, new_surface_joint, put_chart_coordinates
   implicit none (type, external)
   private
   public :: inverse_surface_joint_t, new_inverse_surface_joint
@@ -292,12 +292,7 @@ contains
       phi%qd = phi%qd + dot_product(axis, omega_new - omega_old)
       phi%qdd = 0
     end associate
-    scalars(self%var_u)%q = q(1)
-    scalars(self%var_v)%q = q(2)
-    scalars(self%var_u)%qd = qd(1)
-    scalars(self%var_v)%qd = qd(2)
-    scalars(self%var_u)%qdd = 0
-    scalars(self%var_v)%qdd = 0
+    call put_chart_coordinates(scalars, self%var_u, self%var_v, q, qd)
     scalars(self%var_chart)%q = k
     self%rebases = self%rebases + 1
   end subroutine isj_rebase

@@ -24,14 +24,20 @@ submodule (kinetostatics_mechanism) kinetostatics_mechanism_closure
 contains
 
   module procedure closure_system_residual
-    call full_residual(self%mechanism, self%work, x, f, status)
+    call residual_at(self%mechanism, self%work, x, .true., f, status)
   end procedure closure_system_residual
 
-  !> The closure residual at beta = x: a position pass over every element.
-  subroutine full_residual(self, work, x, f, status)
+  !> The closure residual at beta = x: a position pass over every element
+  !> (full), or, after only beta changed since the last position pass (the
+  !> Newton iterates of set_positions), the position maps of the elements
+  !> beta reaches: the others' inputs and so their outputs are unchanged
+  !> (for the rider: the pelvis's surface joint is not evaluated again).
+  !> Same values to the bit either way.
+  subroutine residual_at(self, work, x, full, f, status)
     class(mechanism_t), intent(in) :: self
     type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: x(:)
+    logical, intent(in) :: full
     real(wp), intent(out) :: f(:)
     type(status_t), intent(inout) :: status
     integer :: k
@@ -39,38 +45,20 @@ contains
       work%scalars(self%beta(k))%q = x(k)
     end do
     f = 0
-    call self%position_pass(work, status)
+    if (full) then
+      call self%position_pass(work, status)
+    else
+      work%evaluation = work%evaluation + 1
+      do k = 1, size(self%beta_pass)
+        call work%elements(self%beta_pass(k))%e%position(work%frames, work%scalars, status)
+        if (.not. status%ok()) exit
+      end do
+    end if
     if (.not. status%ok()) return
     do k = 1, self%r
       f(k) = work%scalars(self%closure(k))%q - self%target(k)
     end do
-  end subroutine full_residual
-
-  !> The closure residual after only beta changed since the last position
-  !> pass (the Newton iterates of set_positions): the position maps of the
-  !> elements beta reaches; the others' inputs and so their outputs are
-  !> unchanged (for the rider: the pelvis's surface joint is not evaluated
-  !> again). Same values to the bit as mechanism_residual.
-  subroutine beta_residual(self, work, x, f, status)
-    class(mechanism_t), intent(in) :: self
-    type(mechanism_workspace_t), intent(inout) :: work
-    real(wp), intent(in) :: x(:)
-    real(wp), intent(out) :: f(:)
-    type(status_t), intent(inout) :: status
-    integer :: k
-    do k = 1, self%r
-      work%scalars(self%beta(k))%q = x(k)
-    end do
-    f = 0
-    work%evaluation = work%evaluation + 1
-    do k = 1, size(self%beta_pass)
-      call work%elements(self%beta_pass(k))%e%position(work%frames, work%scalars, status)
-      if (.not. status%ok()) return
-    end do
-    do k = 1, self%r
-      f(k) = work%scalars(self%closure(k))%q - self%target(k)
-    end do
-  end subroutine beta_residual
+  end subroutine residual_at
 
   module procedure closure_system_jacobian
     integer :: k
@@ -246,11 +234,7 @@ contains
     fresh = 0
     do it = 1, 10
       ! the first pass at the new q over every element, then only beta changes
-      if (it == 1) then
-        call full_residual(self, work, x, res, status)
-      else
-        call beta_residual(self, work, x, res, status)
-      end if
+      call residual_at(self, work, x, it == 1, res, status)
       if (.not. status%ok()) then
         if (status%code == STATUS_DOMAIN .and. work%warm) return   ! see the module comment
         exit
@@ -282,7 +266,7 @@ contains
     end do
     if (.not. converged) then
       if (status%ok()) then
-        call beta_residual(self, work, x, res, status)
+        call residual_at(self, work, x, .false., res, status)
         converged = status%ok() .and. maxval(abs(res)) <= self%closure_tolerance
       end if
     end if
@@ -294,7 +278,7 @@ contains
       system%mechanism => self
       system%work => work
       call solve_nonlinear(system, x, self%closure_options, result, solve_status)
-      call full_residual(self, work, x, res, status)
+      call residual_at(self, work, x, .true., res, status)
       if (.not. solve_status%ok() .or. .not. status%ok()) then
         if (status%ok()) status = solve_status
         call prefix_status(status, 'closure failed at '//worst_loop(self, work))
@@ -307,7 +291,7 @@ contains
         if (.not. status%ok()) return
         call work%blocks%solve(.false., res, .false.)
         x = x - res
-        call full_residual(self, work, x, res, status)
+        call residual_at(self, work, x, .true., res, status)
         if (.not. status%ok()) return
       end do
       if (maxval(abs(res)) > self%closure_tolerance) then

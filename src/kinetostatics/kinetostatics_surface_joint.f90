@@ -72,7 +72,7 @@ module kinetostatics_surface_joint
     surface_chart_t
   implicit none (type, external)
   private
-  public :: surface_joint_t, new_surface_joint, domain_edge_margin
+  public :: surface_joint_t, new_surface_joint, domain_edge_margin, put_chart_coordinates
 
   type, extends(element_t) :: surface_joint_t
     class(surface_t), allocatable :: surface
@@ -553,6 +553,20 @@ contains
     self%chart_index = k
   end subroutine sj_change_chart
 
+  !> (u, v) = q and their rates qd after a chart change (change_chart), in
+  !> the scalars var_u, var_v; their accelerations zero.
+  pure subroutine put_chart_coordinates(scalars, var_u, var_v, q, qd)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    integer, intent(in) :: var_u, var_v
+    real(wp), intent(in) :: q(2), qd(2)
+    scalars(var_u)%q = q(1)
+    scalars(var_v)%q = q(2)
+    scalars(var_u)%qd = qd(1)
+    scalars(var_v)%qd = qd(2)
+    scalars(var_u)%qdd = 0
+    scalars(var_v)%qdd = 0
+  end subroutine put_chart_coordinates
+
   !> v decides the chart (module comment), if the joint changes charts.
   pure integer function sj_chart_angle(self) result(k)
     class(surface_joint_t), intent(in) :: self
@@ -590,12 +604,7 @@ contains
         phi%qdd = 0
       end associate
     end if
-    scalars(self%var_u)%q = q(1)
-    scalars(self%var_v)%q = q(2)
-    scalars(self%var_u)%qd = qd(1)
-    scalars(self%var_v)%qd = qd(2)
-    scalars(self%var_u)%qdd = 0
-    scalars(self%var_v)%qdd = 0
+    call put_chart_coordinates(scalars, self%var_u, self%var_v, q, qd)
     self%complete = .false.
   end subroutine sj_rebase
 

@@ -39,6 +39,7 @@
 !> dense path's N0 + G s': the same linear map, evaluated at once).
 module kinetostatics_tree
   use base_kinds, only: wp
+  use base_vector, only: skew
   use kinetostatics_closure_blocks, only: closure_blocks_t, element_reach_t, reach_of, feeding
   implicit none (type, external)
   private
@@ -279,12 +280,6 @@ contains
       inertia(i, i) = inertia(i, i) + mass
     end do
   end subroutine spatial_inertia
-
-  pure function skew(d) result(m)
-    real(wp), intent(in) :: d(3)
-    real(wp) :: m(3, 3)
-    m = reshape([0.0_wp, d(3), -d(2), -d(3), 0.0_wp, d(1), d(2), -d(1), 0.0_wp], [3, 3])
-  end function skew
 
   !> s' from M s' = tau by the articulated-body recursion (module comment):
   !> w%origin, w%inertia (I_b), w%subspace (S) set; tau and qdd by speed
