@@ -1,12 +1,13 @@
-!> The index by name that a registry of kinds keeps beside its kinds (the
-!> factories geometry_surface_factory and kinetostatics_force_law_factory):
-!> the names in the order registered, the refusal of a name that is empty or
-!> taken, the index of a name, and the names as a list for messages.
+!> The index by name that the registry of kinds keeps beside its kinds
+!> (base_kind_registry, for the factories geometry_surface_factory and
+!> kinetostatics_force_law_factory): the names in the order registered, the
+!> refusal of a name that is empty or taken, the index of a name, and the
+!> names as a list for messages.
 !>
-!> It holds no lock of its own: a factory keeps its kinds and this index in
-!> module variables and reads and changes both inside its one OpenMP critical
-!> section, so that a registration in one thread and a build in another see
-!> either all of a kind or none of it.
+!> It holds no lock of its own: base_kind_registry reads and changes it only
+!> inside its one OpenMP critical section, with the kinds, so that a
+!> registration in one thread and a build in another see either all of a
+!> kind or none of it.
 module base_kind_index
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   implicit none (type, external)

@@ -13,17 +13,17 @@
 !> is read). docs/DESIGN.md, "How to add a surface kind".
 !>
 !> The registry is the one module variable of the layer: kinds, not
-!> simulation state, with their index by name (base_kind_index). Every read
-!> and change of it (the built-in kinds on first use, a registration, a
-!> look-up) runs inside one OpenMP critical section, so a kind registered
-!> while another thread builds is seen whole or not at all; a build copies
-!> its kind and runs outside it.
+!> simulation state, kept by base_kind_registry (the force laws' registry is
+!> the same), whose one OpenMP critical section covers every read and change
+!> of it (the built-in kinds on first use, a registration, a look-up), so a
+!> kind registered while another thread builds is seen whole or not at all;
+!> a build copies its kind and runs outside it.
 module geometry_surface_factory
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
   use base_spec, only: spec_t, complete_spec
-  use base_kind_index, only: kind_index_t
+  use base_kind_registry, only: kind_t, kind_box_t, kind_registry_t
   use geometry_surface, only: surface_t
   use geometry_surface_kind, only: surface_kind_t
   use geometry_placed_surface, only: placed_surface_t
@@ -35,24 +35,24 @@ module geometry_surface_factory
   private
   public :: register_surface_kind, surface_kinds, surface_kind_index, surface_from_spec, place_surface
 
-  type(surface_kind_t), allocatable, save :: registry(:)
-  type(kind_index_t), save :: names   !< registry(k)%name is names' k-th
+  character(len=*), parameter :: WHAT = 'surface kind'
+  type(kind_registry_t), save :: registry
 
 contains
 
-  !> The kinds every build knows, in the order inputs list them (inside the
-  !> critical section, on first use).
-  subroutine ensure_builtins()
-    type(status_t) :: status
+  !> The kinds every build knows, in the order inputs list them.
+  subroutine builtins(kinds)
+    type(kind_box_t), allocatable, intent(out) :: kinds(:)
+    type(surface_kind_t), allocatable :: known(:)
     integer :: k
-    if (allocated(registry)) return
-    registry = [plane_kind(), ellipsoid_kind(), elliptic_paraboloid_kind(), hyperbolic_paraboloid_kind(), &
-                elliptic_cylinder_kind(), apex_paraboloid_kind(), sphere_kind(), cone_kind(), sphere_zone_kind(), &
-                revolution_kind()]
-    do k = 1, size(registry)
-      call names%add(registry(k)%name, 'surface kind', status)
+    known = [plane_kind(), ellipsoid_kind(), elliptic_paraboloid_kind(), hyperbolic_paraboloid_kind(), &
+             elliptic_cylinder_kind(), apex_paraboloid_kind(), sphere_kind(), cone_kind(), sphere_zone_kind(), &
+             revolution_kind()]
+    allocate (kinds(size(known)))
+    do k = 1, size(known)
+      allocate (kinds(k)%kind, source=known(k))
     end do
-  end subroutine ensure_builtins
+  end subroutine builtins
 
   !> Adds a kind; refused if its name is taken or empty, or it has no builder.
   subroutine register_surface_kind(kind, status)
@@ -64,29 +64,28 @@ contains
                       'a builder')
       return
     end if
-    !$omp critical (surface_kind_registry)
-    call ensure_builtins()
-    call names%add(kind%name, 'surface kind', status)
-    if (status%ok()) registry = [registry, kind]
-    !$omp end critical (surface_kind_registry)
+    call registry%register(builtins, WHAT, kind, status)
   end subroutine register_surface_kind
 
   !> Every registered kind (their names, parameters and meanings).
   function surface_kinds() result(kinds)
     type(surface_kind_t), allocatable :: kinds(:)
-    !$omp critical (surface_kind_registry)
-    call ensure_builtins()
-    kinds = registry
-    !$omp end critical (surface_kind_registry)
+    type(kind_box_t), allocatable :: boxes(:)
+    integer :: k
+    call registry%copy_all(builtins, WHAT, boxes)
+    allocate (kinds(size(boxes)))
+    do k = 1, size(boxes)
+      select type (kind => boxes(k)%kind)
+      type is (surface_kind_t)   ! (every kind registered here is one)
+        kinds(k) = kind
+      end select
+    end do
   end function surface_kinds
 
   !> The index of the kind `name` in surface_kinds(), 0 if unknown.
   integer function surface_kind_index(name) result(k)
     character(len=*), intent(in) :: name
-    !$omp critical (surface_kind_registry)
-    call ensure_builtins()
-    k = names%find(name)
-    !$omp end critical (surface_kind_registry)
+    k = registry%find(builtins, WHAT, name)
   end function surface_kind_index
 
   !> The surface of `spec`, checked against its kind's declarations (defaults
@@ -99,26 +98,20 @@ contains
     real(wp), intent(in), optional :: origin(3), angles_deg(3)
     class(surface_t), allocatable :: local
     type(spec_t) :: completed
-    type(surface_kind_t) :: kind
+    class(kind_t), allocatable :: found
     character(len=:), allocatable :: known
-    integer :: k
     if (.not. status%ok()) return
-    !$omp critical (surface_kind_registry)
-    call ensure_builtins()
-    k = names%find(spec%kind)
-    if (k > 0) then
-      kind = registry(k)
-    else
-      known = names%listing()
-    end if
-    !$omp end critical (surface_kind_registry)
-    if (k == 0) then
+    call registry%copy_kind(builtins, WHAT, spec%kind, found, known)
+    if (.not. allocated(found)) then
       call set_status(status, STATUS_INVALID_INPUT, 'unknown surface kind '''//spec%kind//'''; the kinds are'//known)
       return
     end if
     completed = spec
-    call complete_spec(completed, kind%parameters, 'surface '''//spec%kind//'''', status)
-    if (status%ok()) call kind%build(completed, local, status)
+    call complete_spec(completed, found%parameters, 'surface '''//spec%kind//'''', status)
+    select type (found)
+    type is (surface_kind_t)
+      if (status%ok()) call found%build(completed, local, status)
+    end select
     if (.not. status%ok()) return
     call place_surface(local, surface, status, origin, angles_deg)
   end subroutine surface_from_spec

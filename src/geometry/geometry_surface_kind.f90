@@ -4,15 +4,15 @@
 !> geometry_surface_factory; docs/DESIGN.md, "How to add a surface kind".
 module geometry_surface_kind
   use base_status, only: status_t
-  use base_spec, only: spec_t, parameter_t
+  use base_spec, only: spec_t
+  use base_kind_registry, only: kind_t
   use geometry_surface, only: surface_t
   implicit none (type, external)
   private
   public :: surface_kind_t, build_surface_i
 
-  type :: surface_kind_t
-    character(len=:), allocatable :: name, meaning
-    type(parameter_t), allocatable :: parameters(:)
+  !> A kind_t (name, meaning, parameters) with its builder.
+  type, extends(kind_t) :: surface_kind_t
     procedure(build_surface_i), pointer, nopass :: build => null()
   end type surface_kind_t
 

@@ -41,7 +41,8 @@ module kinetostatics_force_law
   use base_kinds, only: wp
   use base_vector, only: cross
   use base_status, only: status_t
-  use base_spec, only: spec_t, parameter_t
+  use base_spec, only: spec_t
+  use base_kind_registry, only: kind_t
   use numerics_event_driver, only: EVENT_IGNORE
   use kinetostatics_state, only: frame_state_t, scalar_state_t
   use kinetostatics_contact, only: contact_state_t
@@ -105,11 +106,10 @@ module kinetostatics_force_law
     real(wp) :: weight = 0
   end type law_place_t
 
-  !> A kind of force law that inputs name: its parameters (declared once: the
-  !> reader's checks and the factory's come from them) and its builder.
-  type :: force_law_kind_t
-    character(len=:), allocatable :: name, meaning
-    type(parameter_t), allocatable :: parameters(:)
+  !> A kind of force law that inputs name: a kind_t (base_kind_registry: its
+  !> name, meaning and parameters, declared once: the reader's checks and the
+  !> factory's come from them) with its builder.
+  type, extends(kind_t) :: force_law_kind_t
     procedure(build_law_i), pointer, nopass :: build => null()
   end type force_law_kind_t
 

@@ -13,39 +13,39 @@
 !> add a force law".
 !>
 !> The registry is the one module variable of the layer: kinds, not
-!> simulation state, with their index by name (base_kind_index). Every read
-!> and change of it (the built-in kinds on first use, a registration, a
-!> look-up) runs inside one OpenMP critical section, so that threads
-!> building models at once (a sweep's rides) find it complete, and a kind
-!> registered meanwhile is seen whole or not at all; a build copies its kind
-!> and runs outside it.
+!> simulation state, kept by base_kind_registry (the surface kinds' registry
+!> is the same), whose one OpenMP critical section covers every read and
+!> change of it (the built-in kinds on first use, a registration, a
+!> look-up), so that threads building models at once (a sweep's rides) find
+!> it complete, and a kind registered meanwhile is seen whole or not at all;
+!> a build copies its kind and runs outside it.
 module kinetostatics_force_law_factory
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use base_spec, only: spec_t, complete_spec
-  use base_kind_index, only: kind_index_t
+  use base_kind_registry, only: kind_t, kind_box_t, kind_registry_t
   use kinetostatics_force_law, only: force_law_t, force_law_kind_t, law_place_t
   use kinetostatics_force_laws, only: coulomb_kind, viscous_kind, viscous_weight_kind, viscous_normal_kind
   implicit none (type, external)
   private
   public :: register_force_law, force_law_kinds, force_law_kind_index, force_law_from_spec, law_spec
 
-  type(force_law_kind_t), allocatable, save :: registry(:)
-  type(kind_index_t), save :: names   !< registry(k)%name is names' k-th
+  character(len=*), parameter :: WHAT = 'force law kind'
+  type(kind_registry_t), save :: registry
 
 contains
 
-  !> The kinds every build knows, in the order inputs list them (inside the
-  !> critical section, on first use).
-  subroutine ensure_builtins()
-    type(status_t) :: status
+  !> The kinds every build knows, in the order inputs list them.
+  subroutine builtins(kinds)
+    type(kind_box_t), allocatable, intent(out) :: kinds(:)
+    type(force_law_kind_t), allocatable :: known(:)
     integer :: k
-    if (allocated(registry)) return
-    registry = [coulomb_kind(), viscous_kind(), viscous_weight_kind(), viscous_normal_kind()]
-    do k = 1, size(registry)
-      call names%add(registry(k)%name, 'force law kind', status)
+    known = [coulomb_kind(), viscous_kind(), viscous_weight_kind(), viscous_normal_kind()]
+    allocate (kinds(size(known)))
+    do k = 1, size(known)
+      allocate (kinds(k)%kind, source=known(k))
     end do
-  end subroutine ensure_builtins
+  end subroutine builtins
 
   !> Adds a kind; refused if its name is taken, empty or 'none' (no law), or it has no builder.
   subroutine register_force_law(kind, status)
@@ -57,29 +57,28 @@ contains
                       'other than ''none'' and a builder')
       return
     end if
-    !$omp critical (force_law_registry)
-    call ensure_builtins()
-    call names%add(kind%name, 'force law kind', status)
-    if (status%ok()) registry = [registry, kind]
-    !$omp end critical (force_law_registry)
+    call registry%register(builtins, WHAT, kind, status)
   end subroutine register_force_law
 
   !> Every registered kind (their names, parameters and meanings).
   function force_law_kinds() result(kinds)
     type(force_law_kind_t), allocatable :: kinds(:)
-    !$omp critical (force_law_registry)
-    call ensure_builtins()
-    kinds = registry
-    !$omp end critical (force_law_registry)
+    type(kind_box_t), allocatable :: boxes(:)
+    integer :: k
+    call registry%copy_all(builtins, WHAT, boxes)
+    allocate (kinds(size(boxes)))
+    do k = 1, size(boxes)
+      select type (kind => boxes(k)%kind)
+      type is (force_law_kind_t)   ! (every kind registered here is one)
+        kinds(k) = kind
+      end select
+    end do
   end function force_law_kinds
 
   !> The index of the kind `name` in force_law_kinds(), 0 if unknown.
   integer function force_law_kind_index(name) result(k)
     character(len=*), intent(in) :: name
-    !$omp critical (force_law_registry)
-    call ensure_builtins()
-    k = names%find(name)
-    !$omp end critical (force_law_registry)
+    k = registry%find(builtins, WHAT, name)
   end function force_law_kind_index
 
   !> The spec of a law of kind `kind` with its parameter `name` = `value`
@@ -101,26 +100,20 @@ contains
     class(force_law_t), allocatable, intent(out) :: law
     type(status_t), intent(inout) :: status
     type(spec_t) :: completed
-    type(force_law_kind_t) :: kind
+    class(kind_t), allocatable :: found
     character(len=:), allocatable :: known
-    integer :: k
     if (.not. status%ok()) return
-    !$omp critical (force_law_registry)
-    call ensure_builtins()
-    k = names%find(spec%kind)
-    if (k > 0) then
-      kind = registry(k)
-    else
-      known = names%listing()
-    end if
-    !$omp end critical (force_law_registry)
-    if (k == 0) then
+    call registry%copy_kind(builtins, WHAT, spec%kind, found, known)
+    if (.not. allocated(found)) then
       call set_status(status, STATUS_INVALID_INPUT, 'force law '''//place%name//''': unknown kind '''// &
                       spec%kind//'''; the kinds are'//known)
       return
     end if
     completed = spec
-    call complete_spec(completed, kind%parameters, 'force law '''//place%name//''' ('//spec%kind//')', status)
-    if (status%ok()) call kind%build(completed, place, law, status)
+    call complete_spec(completed, found%parameters, 'force law '''//place%name//''' ('//spec%kind//')', status)
+    select type (found)
+    type is (force_law_kind_t)
+      if (status%ok()) call found%build(completed, place, law, status)
+    end select
   end subroutine force_law_from_spec
 end module kinetostatics_force_law_factory

@@ -110,10 +110,12 @@ program test_kind_registration
   use base_constants, only: pi, standard_gravity
   use base_status, only: status_t, STATUS_INVALID_INPUT
   use base_spec, only: spec_t
+  use base_kind_registry, only: registry_locks
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
   use geometry_surface_kind, only: surface_kind_t
   use geometry_surface_factory, only: register_surface_kind, surface_kinds, surface_kind_index
-  use kinetostatics_force_law_factory, only: register_force_law
+  use kinetostatics_force_law, only: force_law_kind_t
+  use kinetostatics_force_law_factory, only: register_force_law, force_law_kinds, force_law_kind_index
   use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
   use contact_factory, only: shape_t, shape_from_spec
@@ -151,33 +153,48 @@ program test_kind_registration
 
 contains
 
-  !> Registrations and look-ups from 8 threads at once (the registry's one
-  !> critical section): of 8 registrations of one name exactly one is
-  !> taken; the 8 distinct names all are, each once, and look-ups meanwhile
-  !> find a kind whole or not at all (its builder with its name).
+  !> Registrations and look-ups from 8 threads at once (the one critical
+  !> section of base_kind_registry, shared by both registries): of 8
+  !> registrations of one name exactly one is taken; the 8 distinct names
+  !> all are, each once, in either registry, and look-ups meanwhile find a
+  !> kind whole or not at all (its builder with its name, at its index).
   subroutine concurrent_registration()
     integer, parameter :: n = 8
-    type(status_t) :: twin(n), own(n)
+    type(status_t) :: twin(n), own(n), own_law(n)
     type(surface_kind_t) :: kind
     type(surface_kind_t), allocatable :: kinds(:)
+    type(force_law_kind_t) :: law
+    type(force_law_kind_t), allocatable :: laws(:)
     logical :: whole(n)
     integer :: i, j
-    !$omp parallel do num_threads(n) private(kind, kinds, j) schedule(static, 1)
+    call check(registry_locks(), 'the registry is built with its lock (base compiled with OpenMP)')
+    !$omp parallel do num_threads(n) private(kind, kinds, law, laws, j) schedule(static, 1)
     do i = 1, n
       kind = slope_kind()
       kind%name = 'test_slope_twin'
       call register_surface_kind(kind, twin(i))
       kind%name = 'test_slope_'//achar(iachar('a') + i - 1)
       call register_surface_kind(kind, own(i))
+      law = drag_kind()
+      law%name = 'test_drag_'//achar(iachar('a') + i - 1)
+      call register_force_law(law, own_law(i))
       kinds = surface_kinds()
-      whole(i) = .true.
+      laws = force_law_kinds()
+      whole(i) = force_law_kind_index(law%name) > 0
       do j = 1, size(kinds)
         whole(i) = whole(i) .and. associated(kinds(j)%build) .and. surface_kind_index(kinds(j)%name) == j
+      end do
+      do j = 1, size(laws)
+        whole(i) = whole(i) .and. associated(laws(j)%build) .and. force_law_kind_index(laws(j)%name) == j
       end do
     end do
     !$omp end parallel do
     call check(count([(twin(i)%ok(), i=1, n)]) == 1, 'of 8 threads registering one name at once, one succeeds')
     call check(all([(own(i)%ok(), i=1, n)]), '8 threads registering 8 names at once: all registered')
+    call check(all([(own_law(i)%ok(), i=1, n)]), '8 threads registering 8 force laws at once: all registered')
+    laws = force_law_kinds()
+    call check(all([(count([(laws(j)%name == 'test_drag_'//achar(iachar('a') + i - 1), j=1, size(laws))]) == 1, &
+                     i=1, n)]), 'every force law registered once')
     kinds = surface_kinds()
     call check(count([(kinds(j)%name == 'test_slope_twin', j=1, size(kinds))]) == 1 .and. &
                all([(count([(kinds(j)%name == 'test_slope_'//achar(iachar('a') + i - 1), j=1, size(kinds))]) == 1, &
