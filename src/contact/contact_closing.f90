@@ -111,13 +111,10 @@ contains
       call carry(flight%closed%ode, flight%closed%body_frame(2), flight%system, flight%closed_on, carried, status)
       if (.not. status%ok()) return
     end if
-    phase_options = options
-    if (.not. options%output_origin < huge(1.0_wp)) phase_options%output_origin = options%t_start
+    nc = size(flight%system%contacts)
+    call start_phases(options, nc, phase_options, run)
     first = .true.
     chart_changes = 0
-    nc = size(flight%system%contacts)
-    allocate (run%open(nc, 0), run%gap(nc, 0), run%point(3, nc, 0), run%velocity(3, nc, 0))
-    run%history = ''
     do
       if (flying) then
         flight%landed = 0
@@ -170,6 +167,20 @@ contains
     open = run%open
   end subroutine drive_flight
 
+  !> The start of a run of phases: each phase's options (the output origin
+  !> fixed at the run's start) and an empty record of the phases of nc
+  !> contacts.
+  subroutine start_phases(options, nc, phase_options, run)
+    type(driver_options_t), intent(in) :: options
+    integer, intent(in) :: nc
+    type(driver_options_t), intent(out) :: phase_options
+    type(phases_t), intent(out) :: run
+    phase_options = options
+    if (.not. options%output_origin < huge(1.0_wp)) phase_options%output_origin = options%t_start
+    allocate (run%open(nc, 0), run%gap(nc, 0), run%point(3, nc, 0), run%velocity(3, nc, 0))
+    run%history = ''
+  end subroutine start_phases
+
   !> drive_flight of several bodies (contact_bodies): each phase one
   !> mechanism of the bodies as they are (each carried by its closed contact
   !> or flying), `flight` the first; at a closing (an impact's rebound below
@@ -197,13 +208,10 @@ contains
     logical :: first, next, lifted
     p => flight
     y = y0
-    phase_options = options
-    if (.not. options%output_origin < huge(1.0_wp)) phase_options%output_origin = options%t_start
+    nc = size(flight%system%contacts)
+    call start_phases(options, nc, phase_options, run)
     first = .true.
     chart_changes = 0
-    nc = size(flight%system%contacts)
-    allocate (run%open(nc, 0), run%gap(nc, 0), run%point(3, nc, 0), run%velocity(3, nc, 0))
-    run%history = ''
     do
       p%landed = 0
       p%closings = [integer ::]
