@@ -12,7 +12,7 @@ module contact_system
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t
-  public :: build_system_shapes, check_names, open_chain, body_size, body_index, shape_index
+  public :: build_system_shapes, check_names, open_chain, body_size, body_index, shape_index, known_shapes
   public :: LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
 
   integer, parameter :: LEVEL_POSITION = 1, LEVEL_VELOCITY = 2
@@ -194,6 +194,7 @@ contains
     end do
   end function known_bodies
 
+  !> '; the shapes are ''a'', ''b''': the shape names for a refusal's message.
   function known_shapes(system) result(text)
     type(contact_system_t), intent(in) :: system
     character(len=:), allocatable :: text

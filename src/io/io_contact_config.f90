@@ -9,6 +9,7 @@ module io_contact_config
   use base_vector, only: rotation_xyz
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use contact_model, only: contact_system_t, LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
+  use contact_system, only: known_shapes
   use io_input, only: input_text_t, group_reader_t, open_group, group_count, format_vector
   use io_friction_config, only: friction_law_variables, friction_law_names, read_friction_law
   use io_surface_config, only: read_surface_config, surface_variables, surface_source_t
@@ -129,7 +130,7 @@ contains
     system%bodies(k)%name = trim(name)
     if (len_trim(solid_of) > 0) then
       if (.not. any([(system%shapes(j)%name == trim(solid_of), j = 1, size(system%shapes))])) then
-        call r%invalid('solid_of', ''''//trim(solid_of)//'''', 'must name a &shape'//shape_list(system), status)
+        call r%invalid('solid_of', ''''//trim(solid_of)//'''', 'must name a &shape'//known_shapes(system), status)
         return
       end if
       call r%refuse_given([character(len=8) :: 'centre', 'inertia', 'products'], 'solid_of gives the centre '// &
@@ -315,16 +316,6 @@ contains
     do j = 1, size(system%shapes)
       if (system%shapes(j)%name == trim(name)) return
     end do
-    call r%invalid(variable, ''''//trim(name)//'''', 'must name a &shape'//shape_list(system), status)
+    call r%invalid(variable, ''''//trim(name)//'''', 'must name a &shape'//known_shapes(system), status)
   end subroutine check_shape
-
-  function shape_list(system) result(text)
-    type(contact_system_t), intent(in) :: system
-    character(len=:), allocatable :: text
-    integer :: j
-    text = '; the shapes are'
-    do j = 1, size(system%shapes)
-      text = text//' '''//system%shapes(j)%name//''''
-    end do
-  end function shape_list
 end module io_contact_config

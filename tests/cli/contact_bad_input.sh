@@ -42,7 +42,11 @@ ball="&body name = 'ball', mass = 1, solid_of = 'ball', position = 0, 0, 0.2, an
 
 printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'tabel', body_2 = 'ball', shape_2 = 'ball' /\n" \
   "$head" "$ball" > "$work/unknown_shape.nml"
-expect unknown_shape 1 'unknown_shape.nml:' '&contact' shape_1 "'tabel'" "'table'"
+expect unknown_shape 1 'unknown_shape.nml:' '&contact' shape_1 "'tabel'" "the shapes are 'table', 'ball'"
+
+printf "%s\n&body name = 'ball', mass = 1, solid_of = 'bal', position = 0, 0, 0.2 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
+  "$head" > "$work/unknown_solid.nml"
+expect unknown_solid 1 'unknown_solid.nml:' '&body' solid_of "'bal'" "the shapes are 'table', 'ball'"
 
 printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'bal', shape_2 = 'ball' /\n" \
   "$head" "$ball" > "$work/unknown_body.nml"
