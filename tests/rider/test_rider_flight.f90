@@ -31,21 +31,18 @@ program test_rider_flight
   use base_status, only: status_t
   use geometry_surface, only: surface_t
   use geometry_slide_elements, only: slide_element_t
-  use geometry_slide_builder, only: section_part_description_t
-  use geometry_description, only: geometry_description_t, build_geometry
   use kinetostatics_mechanism, only: mechanism_workspace_t
-  use rider_model, only: rider_params_t, CONTACT_HEELS, CONTACT_PELVIS, CONTACT_BACK, N_CONTACTS
-  use rider_ride, only: ride_options_t, ride_result_t, rider_ode_t, prepare_ride, simulate_ride, RIDE_LIFT_OFF, &
-    RIDE_END_OF_SLIDE
+  use rider_model, only: rider_params_t, CONTACT_PELVIS, CONTACT_BACK, N_CONTACTS
+  use rider_ride, only: ride_options_t, ride_result_t, rider_ode_t, prepare_ride, RIDE_END_OF_SLIDE
   use rider_flight, only: centre_of_mass, build_state, N_FULL
   use testing, only: check, check_close, finish_tests
+  use scenario_fixtures, only: element_slide, ride_stay_and_fly
   implicit none (type, external)
 
   integer, parameter :: all_open = 7
   !> m: the pelvis's foot point past the lip (the joint at 7 m, its
   !> transition 1 m): the slide below is straight from here
   real(wp), parameter :: straight_from = 8.8_wp
-  type(geometry_description_t) :: d
   class(surface_t), allocatable :: jump
   type(status_t) :: st
   type(rider_params_t) :: p
@@ -53,27 +50,14 @@ program test_rider_flight
   type(ride_result_t) :: stay, fly
   real(wp) :: g(3)
 
-  d%kind = 'slide'
-  d%slide%elements%start = [0.0_wp, 0.0_wp, 10.0_wp]
-  d%slide%elements%transition_length = 1
-  d%slide%elements%exact = .true.
-  d%slide%elements%elements = [slide_element_t(kind='straight', length=5.0_wp, slope_deg=35.0_wp), &
-                               slide_element_t(kind='straight', length=2.0_wp, slope_deg=2.0_wp), &
-                               slide_element_t(kind='straight', length=6.0_wp, slope_deg=20.0_wp), &
-                               slide_element_t(kind='runout', length=6.0_wp, slope_deg=1.0_wp)]
-  d%slide%section%parts = [section_part_description_t(kind='circle', radius=0.5_wp)]
-  call build_geometry(d, jump, st)
+  call element_slide([slide_element_t(kind='straight', length=5.0_wp, slope_deg=35.0_wp), &
+                      slide_element_t(kind='straight', length=2.0_wp, slope_deg=2.0_wp), &
+                      slide_element_t(kind='straight', length=6.0_wp, slope_deg=20.0_wp), &
+                      slide_element_t(kind='runout', length=6.0_wp, slope_deg=1.0_wp)], jump, st)
   call check(st%ok(), 'the jump slide: '//st%text())
   p%drag = .false.
   g = p%gravity
-  options%progress_seconds = 0
-  call simulate_ride(p, jump, options, stay, st)
-  call check(st%ok() .and. stay%ending == RIDE_LIFT_OFF .and. stay%lifted_contact == CONTACT_HEELS, &
-             'without may_fly the heels'' lift-off ends the ride: '//stay%outcome)
-  options%may_fly = .true.
-  call simulate_ride(p, jump, options, fly, st)
-  call check(st%ok(), 'with may_fly the ride runs: '//st%text())
-  print '(a)', 'jump with may_fly: '//fly%outcome
+  call ride_stay_and_fly(p, jump, 'jump', options, stay, fly)
   print '(a,i0,a,es12.4,a,i0,a,es12.4,a,i0)', 'flights ', fly%flights%flights, ' airtime ', fly%flights%airtime, &
     ' whole ', fly%flights%whole_flights, ' whole airtime ', fly%flights%whole_airtime, ' landings ', &
     fly%flights%landings

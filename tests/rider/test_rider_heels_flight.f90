@@ -30,7 +30,7 @@ program test_rider_heels_flight
   use rider_flight, only: contact_gap, build_state, N_FULL
   use kinetostatics_impact, only: impact_law_t
   use testing, only: check, check_close, finish_tests
-  use scenario_fixtures, only: crest_slide
+  use scenario_fixtures, only: crest_slide, ride_stay_and_fly
   implicit none (type, external)
 
   integer, parameter :: heels_open = 2   ! the build with the heels' contact open (rider_ride)
@@ -46,14 +46,7 @@ program test_rider_heels_flight
   call check(st%ok(), 'the crest slide: '//st%text())
   p%drag = .false.
   g = norm2(p%gravity)
-  options%progress_seconds = 0
-  call simulate_ride(p, crest, options, stay, st)
-  call check(st%ok() .and. stay%ending == RIDE_LIFT_OFF .and. stay%lifted_contact == CONTACT_HEELS, &
-             'without may_fly the heels'' lift-off ends the ride: '//stay%outcome)
-  options%may_fly = .true.
-  call simulate_ride(p, crest, options, fly, st)
-  call check(st%ok(), 'with may_fly the ride runs: '//st%text())
-  print '(a)', 'crest with may_fly: '//fly%outcome
+  call ride_stay_and_fly(p, crest, 'crest', options, stay, fly)
   print '(a,i0,a,es12.4,a,es12.4,a,es12.4,a,i0)', 'flights ', fly%flights%flights, ' airtime ', &
     fly%flights%airtime, ' longest ', fly%flights%longest, ' highest ', fly%flights%highest, &
     ' landings ', fly%flights%landings

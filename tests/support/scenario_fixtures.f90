@@ -1,7 +1,8 @@
 !> Set-ups several tests share: a number as input text or in a message, the continuity of
 !> an element chain across its joints, a point mass built from input text
 !> and started, a ball over a floor built as a flight from input text, a
-!> flight driven to its end, the crest slide of the rider's flight tests.
+!> flight driven to its end, the slides of the rider's flight tests and
+!> their rides without and with may_fly.
 module scenario_fixtures
   use base_kinds, only: wp
   use base_status, only: status_t
@@ -21,11 +22,13 @@ module scenario_fixtures
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
   use scenarios_point_mass, only: build_point_mass
+  use rider_model, only: rider_params_t, CONTACT_HEELS
+  use rider_ride, only: ride_options_t, ride_result_t, simulate_ride, RIDE_LIFT_OFF
   use testing, only: check
   implicit none (type, external)
   private
   public :: number, real_text, joint_jumps, start_point_mass, ball_over_floor, read_flight, fly, run_flight, &
-    read_closed_flight, crest_slide
+    read_closed_flight, crest_slide, element_slide, ride_stay_and_fly
 
   character(len=*), parameter :: nl = new_line('a')
 
@@ -126,16 +129,25 @@ contains
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     type(status_t), intent(out) :: st
     type(contact_system_t), intent(out), optional :: system
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
     type(contact_system_t) :: read
     character(len=8), allocatable :: units(:)
-    call input_from_text(label, text, input, st)
-    call read_solver_config(input, solver, st)
-    call read_contact_config(input, read, st)
+    call read_system(text, label, read, st)
     call build_flight(read, flight, q0, qd0, units, st)
     if (present(system)) system = read
   end subroutine read_flight
+
+  !> The contact system of the contact scenario in `text` (named `label`),
+  !> its &solver read and checked too, as the scenario does.
+  subroutine read_system(text, label, system, st)
+    character(len=*), intent(in) :: text, label
+    type(contact_system_t), intent(out) :: system
+    type(status_t), intent(out) :: st
+    type(input_text_t) :: input
+    type(solver_config_t) :: solver
+    call input_from_text(label, text, input, st)
+    call read_solver_config(input, solver, st)
+    call read_contact_config(input, system, st)
+  end subroutine read_system
 
   !> The flight of the contact scenario in `text` (named `label`) that starts
   !> closed: the model of its whole system, closed, and the flight from its
@@ -146,14 +158,10 @@ contains
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     type(status_t), intent(out) :: st
     type(contact_system_t), intent(out), optional :: system
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
     type(contact_system_t) :: read
     type(contact_model_t) :: model
     character(len=8), allocatable :: units(:)
-    call input_from_text(label, text, input, st)
-    call read_solver_config(input, solver, st)
-    call read_contact_config(input, read, st)
+    call read_system(text, label, read, st)
     call build_contact_model(read, model, st)
     call flight_after_closed(read, model, flight, q0, qd0, units, st)
     if (present(system)) system = read
@@ -207,20 +215,50 @@ contains
 
   !> The crest of inputs/parts/crest_slide.nml, built in code: 5 m at 30
   !> deg, 3 m at 2 deg, a convex bend (transition 1 m) into 8 m at 15 deg,
-  !> a run-out of 6 m at 1 deg; a tube of radius 0.5 m from (0, 0, 10).
+  !> a run-out of 6 m at 1 deg (element_slide).
   subroutine crest_slide(crest, st)
     class(surface_t), allocatable, intent(out) :: crest
+    type(status_t), intent(out) :: st
+    call element_slide([slide_element_t(kind='straight', length=5.0_wp, slope_deg=30.0_wp), &
+                        slide_element_t(kind='straight', length=3.0_wp, slope_deg=2.0_wp), &
+                        slide_element_t(kind='straight', length=8.0_wp, slope_deg=15.0_wp), &
+                        slide_element_t(kind='runout', length=6.0_wp, slope_deg=1.0_wp)], crest, st)
+  end subroutine crest_slide
+
+  !> The rider's flight tests' slides: the exact chain of `elements` from
+  !> (0, 0, 10) with transitions of 1 m, a tube of radius 0.5 m.
+  subroutine element_slide(elements, slide, st)
+    type(slide_element_t), intent(in) :: elements(:)
+    class(surface_t), allocatable, intent(out) :: slide
     type(status_t), intent(out) :: st
     type(geometry_description_t) :: d
     d%kind = 'slide'
     d%slide%elements%start = [0.0_wp, 0.0_wp, 10.0_wp]
     d%slide%elements%transition_length = 1
     d%slide%elements%exact = .true.
-    d%slide%elements%elements = [slide_element_t(kind='straight', length=5.0_wp, slope_deg=30.0_wp), &
-                                 slide_element_t(kind='straight', length=3.0_wp, slope_deg=2.0_wp), &
-                                 slide_element_t(kind='straight', length=8.0_wp, slope_deg=15.0_wp), &
-                                 slide_element_t(kind='runout', length=6.0_wp, slope_deg=1.0_wp)]
+    d%slide%elements%elements = elements
     d%slide%section%parts = [section_part_description_t(kind='circle', radius=0.5_wp)]
-    call build_geometry(d, crest, st)
-  end subroutine crest_slide
+    call build_geometry(d, slide, st)
+  end subroutine element_slide
+
+  !> The ride of `p` down `slide` (`name` in the checks) without may_fly,
+  !> which the heels' lift-off must end (stay), and with may_fly, which must
+  !> run (fly); `options` comes back with may_fly on.
+  subroutine ride_stay_and_fly(p, slide, name, options, stay, fly)
+    type(rider_params_t), intent(in) :: p
+    class(surface_t), intent(in) :: slide
+    character(len=*), intent(in) :: name
+    type(ride_options_t), intent(inout) :: options
+    type(ride_result_t), intent(out) :: stay, fly
+    type(status_t) :: st
+    options%progress_seconds = 0
+    options%may_fly = .false.
+    call simulate_ride(p, slide, options, stay, st)
+    call check(st%ok() .and. stay%ending == RIDE_LIFT_OFF .and. stay%lifted_contact == CONTACT_HEELS, &
+               'without may_fly the heels'' lift-off ends the ride: '//stay%outcome)
+    options%may_fly = .true.
+    call simulate_ride(p, slide, options, fly, st)
+    call check(st%ok(), 'with may_fly the ride runs: '//st%text())
+    print '(a)', name//' with may_fly: '//fly%outcome
+  end subroutine ride_stay_and_fly
 end module scenario_fixtures
