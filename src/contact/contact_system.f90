@@ -199,9 +199,10 @@ contains
     type(contact_system_t), intent(in) :: system
     character(len=:), allocatable :: text
     integer :: k
-    text = '; the shapes are'
+    text = '; the shapes are '
     do k = 1, size(system%shapes)
-      text = text//merge(' ', ',', k == 1)//' '''//system%shapes(k)%name//''''
+      if (k > 1) text = text//', '
+      text = text//''''//system%shapes(k)%name//''''
     end do
   end function known_shapes
 end module contact_system
