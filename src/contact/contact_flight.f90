@@ -79,8 +79,8 @@ module contact_flight
   use geometry_solid, only: solid_properties_t
   use contact_factory, only: body_from_spec
   use contact_free_body, only: add_free_body_to => add_free_body, free_body_units
-  use contact_model, only: contact_system_t, contact_model_t, build_system_shapes, body_index, LEVEL_POSITION, &
-    CHAIN_AUTO
+  use contact_model, only: contact_system_t, contact_spec_t, contact_model_t, build_system_shapes, body_index, &
+    LEVEL_POSITION, CHAIN_AUTO
   use contact_open_gaps, only: open_gaps_t, start_open_gaps
   use contact_body_impact, only: impact_body_t, collision_t, collide, collide_at_once
   implicit none (type, external)
@@ -185,8 +185,7 @@ contains
             ''': where contacts open and close (start = ''open'', may_open) a contact between two bodies starts '// &
             'open and may not open (a body carried by another while bodies fly, or lifting off it, is not '// &
             'built): give start = ''open'' and no may_open, or make every contact closed')
-        else if (allocated(c%friction%kind) .or. c%rolling .or. c%level /= LEVEL_POSITION .or. &
-                 c%chain /= CHAIN_AUTO) then
+        else if (closed_settings(c)) then
           call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': friction, rolling, level and '// &
             'chain are the closed contact''s, and a contact between two bodies never closes (its impacts make '// &
             'the bodies fly apart; a rebound below close_speed ends the run): leave them out (impact_mu is the '// &
@@ -210,8 +209,7 @@ contains
     end do
     do k = 1, size(system%contacts)
       associate (c => system%contacts(k))
-        if (c%start_open .and. c%restitution < 0 .and. (allocated(c%friction%kind) .or. c%rolling .or. &
-                                                        c%level /= LEVEL_POSITION .or. c%chain /= CHAIN_AUTO)) &
+        if (c%start_open .and. c%restitution < 0 .and. closed_settings(c)) &
           call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': friction, rolling, level and '// &
             'chain of a contact that starts open are the closed contact''s after its body lands and the contact '// &
             'closes, which needs restitution (without it the run ends at the landing: they would be unused); '// &
@@ -220,6 +218,14 @@ contains
       if (.not. status%ok()) return
     end do
   end subroutine check_flight_system
+
+  !> Whether the contact gives any of the closed contact's settings
+  !> (friction, rolling, level, chain).
+  pure logical function closed_settings(c)
+    type(contact_spec_t), intent(in) :: c
+    closed_settings = allocated(c%friction%kind) .or. c%rolling .or. c%level /= LEVEL_POSITION .or. &
+                      c%chain /= CHAIN_AUTO
+  end function closed_settings
 
   !> The free body of `system` at its given pose and twist: q0 = (x, y, z,
   !> a1, a2, a3), qd0 their rates, q_units; refused unless the description
