@@ -16,23 +16,18 @@
 !> closure's rounding.
 !>
 !> The landing (contact_impact): the gap closes with an approaching normal
-!> speed; the impulse L at the contact point comes from kinetostatics_impact's
-!> law (restitution, Coulomb mu) with the Delassus matrix K = J M^-1 J^T of
-!> the build in flight (J: the point's velocity per speed, M: the mass
-!> matrix in the speeds, from the kinetic energy), so the effective mass is
-!> that of the rider at that point, whatever else holds it; the speeds
-!> change by M^-1 J^T L, the positions not. A rebound slower than
-!> close_speed closes the contact with a further frictionless plastic
-!> impulse that stops its normal speed; its energy is added to the
-!> impact's.
+!> speed; the impulse at the contact point is kinetostatics_point_impact's
+!> (the law of kinetostatics_impact with the effective mass of the build in
+!> flight at that point, K = J M^-1 J^T, whatever else holds it); a rebound
+!> slower than close_speed closes the contact, its closing impulse's energy
+!> added to the impact's.
 module rider_flight
   use base_kinds, only: wp
-  use base_text, only: format_short
   use base_vector, only: cross
-  use base_status, only: status_t, set_status, STATUS_DOMAIN
-  use numerics_linear_algebra, only: lu_factor, lu_solve
+  use base_status, only: status_t
   use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
-  use kinetostatics_impact, only: impact_law_t, impact_outcome_t, resolve_impact
+  use kinetostatics_impact, only: impact_law_t, impact_outcome_t
+  use kinetostatics_point_impact, only: point_gap, point_gap_rate, point_impact
   use rider_model, only: rider_layout_t, contact_names, CONTACT_PELVIS, CONTACT_HEELS, N_CONTACTS
   use rider_hip_hold, only: hip_hold_t
   use rider_body, only: rigid_body_t
@@ -107,9 +102,7 @@ contains
     type(mechanism_workspace_t), intent(in) :: work
     type(rider_layout_t), intent(in) :: lay
     integer, intent(in) :: k
-    associate (p => work%frames(lay%point(k)), d => work%frames(lay%contact_frame(k)))
-      gap = dot_product(p%r - d%r, d%rot(:, 3))
-    end associate
+    gap = point_gap(work, lay%point(k), lay%contact_frame(k))
   end function contact_gap
 
   !> Contact k's point's velocity along that normal (velocities set).
@@ -117,9 +110,7 @@ contains
     type(mechanism_workspace_t), intent(in) :: work
     type(rider_layout_t), intent(in) :: lay
     integer, intent(in) :: k
-    associate (p => work%frames(lay%point(k)), d => work%frames(lay%contact_frame(k)))
-      rate = dot_product(p%v, d%rot(:, 3))   ! d%v is tangent to the slide
-    end associate
+    rate = point_gap_rate(work, lay%point(k), lay%contact_frame(k))
   end function contact_gap_rate
 
   !> The full layout's state [q(N_FULL), q'(N_FULL), W] of m at its state y
@@ -153,8 +144,8 @@ contains
   end subroutine build_state
 
   !> Contact c's impact on m (a build with c open) at state y: the impulse
-  !> of `law` and, for a rebound slower than close_speed, the closing one;
-  !> s updated in y.
+  !> of `law` and, for a rebound slower than close_speed, the closing one
+  !> (kinetostatics_point_impact); s updated in y.
   !> `closed`: the contact closes. closing_impulse: the closing's impulse at
   !> the point (N s), closing_energy (J) what it took.
   subroutine contact_impact(m, work, lay, c, y, law, outcome, closed, closing_impulse, closing_energy, status)
@@ -168,75 +159,8 @@ contains
     logical, intent(out) :: closed
     real(wp), intent(out) :: closing_impulse(3), closing_energy
     type(status_t), intent(inout) :: status
-    real(wp), allocatable :: jac(:, :), mass(:, :), minv_jt(:, :), e(:), s(:), energy(:), lu(:, :)
-    real(wp) :: k(3, 3), normal(3), v(3), kinetic, potential, vn
-    integer, allocatable :: ipiv(:)
-    integer :: i, j, n
-    n = m%f
-    allocate (jac(3, n), mass(n, n), minv_jt(n, 3), e(n), s(n), energy(n), lu(n, n), ipiv(n))
-    closed = .false.
-    closing_impulse = 0
-    closing_energy = 0
-    s = y(n + 1:2*n)
-    call m%set_positions(work, y(1:n), status)
-    if (.not. status%ok()) return
-    ! J: the point's velocity per unit speed; M from T(e_i), T(e_i + e_j)
-    do i = 1, n
-      e = 0
-      e(i) = 1
-      call m%set_velocities(work, e)
-      jac(:, i) = work%frames(lay%point(c))%v
-      call m%energy(work, energy(i), potential)
-      mass(i, i) = 2*energy(i)
-    end do
-    do i = 1, n
-      do j = i + 1, n
-        e = 0
-        e(i) = 1
-        e(j) = 1
-        call m%set_velocities(work, e)
-        call m%energy(work, kinetic, potential)
-        mass(i, j) = kinetic - energy(i) - energy(j)
-        mass(j, i) = mass(i, j)
-      end do
-    end do
-    call m%set_velocities(work, s)
-    v = work%frames(lay%point(c))%v
-    normal = work%frames(lay%contact_frame(c))%rot(:, 3)
-    lu = mass
-    call lu_factor(lu, ipiv, status)
-    minv_jt = transpose(jac)
-    if (status%ok()) call lu_solve(lu, ipiv, minv_jt, status)
-    if (.not. status%ok()) then
-      call set_status(status, STATUS_DOMAIN, 'the '//trim(contact_names(c))//'''s landing: the rider''s mass '// &
-                      'matrix is singular there')
-      return
-    end if
-    k = matmul(jac, minv_jt)
-    k = (k + transpose(k))/2
-    call resolve_impact(law, k, normal, v, outcome, status)
-    if (.not. status%ok()) return
-    if (.not. outcome%approaching) then
-      ! the gap closed, so the point moved towards the slide: a separating
-      ! speed here is a root found on the wrong side, not a landing
-      call set_status(status, STATUS_DOMAIN, 'the '//trim(contact_names(c))//'''s landing: it leaves the slide '// &
-                      '(normal speed '//format_short(outcome%normal_speed_before)//' m/s) where its gap closed')
-      return
-    end if
-    s = s + matmul(minv_jt, outcome%impulse)
-    vn = dot_product(normal, outcome%velocity_after)
-    if (vn < close_speed) then
-      closed = .true.
-      closing_impulse = -vn/dot_product(normal, matmul(k, normal))*normal
-      closing_energy = vn**2/(2*dot_product(normal, matmul(k, normal)))
-      s = s + matmul(minv_jt, closing_impulse)
-    end if
-    y(n + 1:2*n) = s
-    call m%set_velocities(work, s)
-    if (closed .and. abs(contact_gap_rate(work, lay, c)) > 1e-9_wp*max(1.0_wp, abs(outcome%normal_speed_before))) then
-      call set_status(status, STATUS_DOMAIN, 'the '//trim(contact_names(c))//'''s landing: the closing left a '// &
-                      'normal speed of '//format_short(contact_gap_rate(work, lay, c))//' m/s')
-    end if
+    call point_impact(m, work, lay%point(c), lay%contact_frame(c), trim(contact_names(c)), y, law, close_speed, &
+                      outcome, closed, closing_impulse, closing_energy, status)
   end subroutine contact_impact
 
   !> The hips' holds (rider_hip_hold) in the workspace `work` on or off,

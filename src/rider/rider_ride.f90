@@ -64,15 +64,8 @@ module rider_ride
   !> What a stop of the driver asks simulate_ride to do: nothing (the ride
   !> ends), a contact's take-off, its landing.
   integer, parameter :: SWITCH_NONE = 0, SWITCH_TAKE_OFF = 1, SWITCH_LANDING = 2
-  !> m: how far a contact must open after its take-off before the landing
-  !> is watched. At the lift-off the gap, its rate and its second derivative
-  !> are zero and it grows as s^3; its values carry the integration's error
-  !> of the positions (rtol 1e-10 of the slide's parameter u ~ 10..100 plus
-  !> atol 1e-9: a few 1e-9 m; the crest's gap went to -1.5e-9 m and back
-  !> within 1e-4 s). So the landing is watched once the gap has opened by
-  !> opening_gap, far above that noise; until then a landing is a sink by
-  !> sink_gap (only a true return of the heels reaches it).
-  real(wp), parameter :: opening_gap = 1e-7_wp, sink_gap = 1e-6_wp
+  ! opening_gap, sink_gap: kinetostatics_point_impact (the gap's root
+  ! after a take-off)
   !> landings within quick_flight of their take-off, in a row, that end the
   !> ride (the heels neither stay on nor leave: a chatter the model cannot
   !> resolve)

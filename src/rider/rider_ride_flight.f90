@@ -5,6 +5,7 @@
 submodule (rider_ride) rider_ride_flight
   use rider_flight_builds, only: use_build
   use rider_flight, only: contact_gap_rate
+  use kinetostatics_point_impact, only: gap_root
   implicit none (type, external)
 
 contains
@@ -17,16 +18,13 @@ contains
     if (self%may_fly) n = n + N_CONTACTS + 2
   end function rider_root_count
 
-  !> An open contact's root: until its gap has opened by opening_gap,
-  !> (opening_gap - gap)(gap + sink_gap) (zero where it opens or sinks
-  !> back), then the gap. In flight, the hip's range: the legs' flexion and
+  !> An open contact's root: kinetostatics_point_impact's gap_root. In flight, the hip's range: the legs' flexion and
   !> the trunk's tilt within flexion_range, tilt_range.
   module subroutine rider_roots(self, t, y, g)
     class(rider_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
     real(wp), intent(out) :: g(:)
     integer :: n, k
-    real(wp) :: gap
     type(status_t) :: st
     n = self%n_roots
     call self%mechanism_ode_t%roots(t, y, g(1:n))
@@ -46,12 +44,7 @@ contains
     end if
     do k = 1, N_CONTACTS
       if (.not. btest(self%fly%open_mask, k - 1)) cycle
-      gap = contact_gap(self%work, self%layout, k)
-      if (self%opened(k)) then
-        g(n + k) = gap
-      else
-        g(n + k) = (opening_gap - gap)*(gap + sink_gap)
-      end if
+      g(n + k) = gap_root(contact_gap(self%work, self%layout, k), self%opened(k))
     end do
     associate (flexion => self%work%scalars(self%layout%flexion)%q, &
                tilt => self%work%scalars(self%layout%tilt)%q)
