@@ -27,7 +27,7 @@ module design_ride_report
     evaluate_limit, series_extreme, noise_free, limit_noise_scale
   implicit none (type, external)
   private
-  public :: ride_report_t, evaluate_ride
+  public :: ride_report_t, evaluate_ride, judge_flights
 
   type :: ride_report_t
     integer :: n = 0
@@ -166,7 +166,11 @@ contains
                             report%verdicts(k))
         cycle
       case ('airtime', 'drop_height')
-        call judge_flights(limits(k), report%verdicts(k))
+        if (present(flights)) then
+          call judge_flights(limits(k), where(1), report%verdicts(k), flights)
+        else
+          call judge_flights(limits(k), where(1), report%verdicts(k))
+        end if
         cycle
       case default
         report%judged(k) = .false.
@@ -185,26 +189,31 @@ contains
                            'acceleration_normal'], quantity, dim=1)
     end function felt_axis
 
-    !> A flights' limit: the longest airtime at its take-off, each landing's
-    !> drop height where it landed (none flown: 0 at the start).
-    subroutine judge_flights(limit, verdict)
-      type(ride_limit_t), intent(in) :: limit
-      type(limit_verdict_t), intent(out) :: verdict
-      real(wp), allocatable :: v(:), at(:)
-      v = [0.0_wp]
-      at = where(1:1)
-      if (present(flights)) then
-        if (limit%quantity == 'airtime' .and. flights%flights > 0) then
-          v = [flights%longest]
-          at = [flights%longest_arc_length]
-        else if (limit%quantity == 'drop_height' .and. flights%landings > 0) then
-          v = flights%landing%drop_height
-          at = flights%landing%arc_length
-        end if
-      end if
-      call evaluate_limit(limit, v, at, verdict)
-    end subroutine judge_flights
   end subroutine evaluate_ride
+
+  !> A flights' limit (airtime, drop_height): the longest airtime at its
+  !> take-off, each landing's drop height where it landed (none flown, or no
+  !> `flights`: 0 at `start`, the start's place). The rider's and a
+  !> vehicle's (scenarios_sled).
+  subroutine judge_flights(limit, start, verdict, flights)
+    type(ride_limit_t), intent(in) :: limit
+    real(wp), intent(in) :: start
+    type(limit_verdict_t), intent(out) :: verdict
+    type(ride_flights_t), intent(in), optional :: flights
+    real(wp), allocatable :: v(:), at(:)
+    v = [0.0_wp]
+    at = [start]
+    if (present(flights)) then
+      if (limit%quantity == 'airtime' .and. flights%flights > 0) then
+        v = [flights%longest]
+        at = [flights%longest_arc_length]
+      else if (limit%quantity == 'drop_height' .and. flights%landings > 0) then
+        v = flights%landing%drop_height
+        at = flights%landing%arc_length
+      end if
+    end if
+    call evaluate_limit(limit, v, at, verdict)
+  end subroutine judge_flights
 
   !> The extremes the ride located between its records.
   subroutine take_located(s, report)

@@ -127,6 +127,14 @@ module io_declarations_multibody
       default='''computed'' (a vehicle), ''dry'' (the bar)', &
       choices='computed dry', meaning='a vehicle rides in the water computed on the slide (&water, &water_solver, '// &
       '&inlet; the water''s drag at both contacts, docs/vehicles.md, "In the water") or dry; the bar rides dry'), &
+    declaration_t(groups='sled', name='may_fly', kind=VALUE_LOGICAL, default='.false.', &
+      meaning='a vehicle flies: where a contact''s normal force falls to zero it leaves the slide and the ride '// &
+      'goes on, on the other contact or in the air, until it lands (docs/vehicles.md, "Flight"); .false.: a '// &
+      'lift-off ends the run'), &
+    declaration_t(groups='sled', name='landing_restitution', unit='1', default='0', low=0.0_wp, high=1.0_wp, &
+      meaning='restitution e of a vehicle''s landing (0: plastic; with may_fly only)'), &
+    declaration_t(groups='sled', name='landing_mu', unit='1', default='the friction''s mu, else 0', low=0.0_wp, &
+      high=10.0_wp, meaning='Coulomb mu during a vehicle''s landing (with may_fly only)'), &
     declaration_t(groups='sled', name='drag_area', unit='m^2', default='0', low=0.0_wp, high=1e3_wp, &
       meaning='C_d A of the air''s quadratic drag on the bar at its centre of mass (docs/contact.md, Air drag; '// &
       '0: none)'), &

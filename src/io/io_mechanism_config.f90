@@ -137,6 +137,23 @@ contains
       call r%invalid('water_density, water_viscosity', format_real(given%water%density)//', '// &
                      format_real(given%water%kinematic_viscosity), 'both must be > 0 (kg/m^3, m^2/s)', status)
     end if
+    ! flight (docs/vehicles.md, "Flight"): a vehicle's lift-off opens its
+    ! contact; the landings' law, Coulomb's mu the friction's unless given
+    call r%get('may_fly', given%may_fly, status)
+    if (status%ok() .and. given%may_fly .and. given%kind == VEHICLE_BAR) then
+      call r%invalid('may_fly', '.true.', 'a vehicle flies (docs/vehicles.md, "Flight"); the bar''s lift-off ends '// &
+                     'its run: give vehicle', status)
+    else if (status%ok() .and. given%may_fly) then
+      given%landing%mu = 0
+      if (allocated(law%values)) then
+        if (law%has('mu')) given%landing%mu = law%value('mu')
+      end if
+      call r%get('landing_restitution', given%landing%restitution, status)
+      call r%get('landing_mu', given%landing%mu, status)
+    else if (status%ok()) then
+      call r%refuse_given([character(len=19) :: 'landing_restitution', 'landing_mu'], &
+                          'a vehicle without may_fly = .true. has no landing', status)
+    end if
     if (present(vehicle)) vehicle = given
     call r%get('drag_area', config%params%drag_area, status)
     call r%get('air_density', config%params%air_density, status)

@@ -9,7 +9,7 @@ module kinetostatics_models
   use base_text, only: format_short
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_darboux, only: darboux_frame_t, darboux_frame
-  use kinetostatics_joints, only: new_rigid_offset, new_revolute
+  use kinetostatics_joints, only: new_rigid_offset, new_revolute, new_prismatic
   use kinetostatics_surface_joint, only: new_surface_joint
   use kinetostatics_measurements, only: new_measurement, MEASURE_PLANE_POINT
   use kinetostatics_mass, only: new_mass_element
@@ -136,21 +136,22 @@ contains
   end subroutine build_fourbar_model
 
   !> The sled of `d` on `surface` and its start: (u, v, phi) and their rates
-  !> (finish = .false.: left open for more laws, as build_sled).
-  subroutine build_sled_model(d, surface, m, q0, qd0, status, finish)
+  !> (finish = .false.: left open for more laws; lift, open: the flight
+  !> builds; as build_sled).
+  subroutine build_sled_model(d, surface, m, q0, qd0, status, finish, lift, open)
     type(sled_description_t), intent(in) :: d
     class(surface_t), intent(in) :: surface
     type(mechanism_t), intent(out) :: m
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     type(status_t), intent(inout) :: status
-    logical, intent(in), optional :: finish
+    logical, intent(in), optional :: finish, lift, open(2)
     if (.not. status%ok()) return
     if (.not. surface%in_domain(d%q0(1), d%q0(2))) then
       call set_status(status, STATUS_INVALID_INPUT, 'sled: the start (u0, v0) = ('//format_short(d%q0(1))//', '// &
                       format_short(d%q0(2))//') must lie in the parameter domain of the '//surface%describe())
       return
     end if
-    call build_sled(d%params, surface, d%q0, m, status, finish)
+    call build_sled(d%params, surface, d%q0, m, status, finish, lift, open)
     q0 = d%q0
     qd0 = d%qd0
   end subroutine build_sled_model
@@ -287,15 +288,32 @@ contains
   !> 'front_<kind>', in the order given. With
   !> finish = .false. the mechanism is left open for more laws or contacts
   !> (then call m%finalize).
-  subroutine build_sled(p, surface, q0, m, status, finish)
+  !>
+  !> The flight builds (&sled may_fly, rider_vehicle_flight): `lift` puts
+  !> the bar's rear end on a prismatic along the rear Darboux frame's normal
+  !> (scalar 'rear_lift', 0 while the rear is on: the frames are the plain
+  !> model's); `open` = [rear, front] opens contacts: an open rear has its
+  !> lift as a coordinate (the bar keeps its roll to the slide below its
+  !> rear end, as the rider's open pelvis), an open front is held on the
+  !> normal through its foot point only (front_x, front_y; dependents u2,
+  !> v2), so that front_z is its signed gap and the pitch a coordinate. An
+  !> open contact is two-sided (its normal force its foot frame's load,
+  !> zero, and so its friction). The coordinates are [u, v, phi], then pitch
+  !> (front open) and rear_lift (rear open); scalars, frames, elements,
+  !> contacts and laws are the same, at the same indices, in every build
+  !> with `lift` (whose closed front pairs front_z with the pitch, front_x
+  !> and front_y with u2 and v2, as the open front does).
+  subroutine build_sled(p, surface, q0, m, status, finish, lift, open)
     type(sled_params_t), intent(in) :: p
     class(surface_t), intent(in) :: surface
     real(wp), intent(in) :: q0(3)
     type(mechanism_t), intent(out) :: m
     type(status_t), intent(inout) :: status
-    logical, intent(in), optional :: finish
+    logical, intent(in), optional :: finish, lift, open(2)
     integer :: d1, heading, bar, front, d2, su, sv, sphi, spitch, su2, sv2, gx, gy, gz, rear_contact, &
-               front_contact, front_body
+               front_contact, front_body, lifted, slift
+    logical :: chain, opened(2)
+    integer, allocatable :: coordinates(:)
     type(surface_point_t) :: pt
     type(darboux_frame_t) :: fr
     real(wp) :: dvec(3), e11, e12, e22, b1, b2, det, du, dv
@@ -314,13 +332,30 @@ contains
     du = (e22*b1 - e12*b2)/det
     dv = (e11*b2 - e12*b1)/det
 
+    chain = .false.
+    if (present(lift)) chain = lift
+    opened = .false.
+    if (present(open)) opened = open
+    if (opened(1) .and. .not. chain) then
+      call set_status(status, STATUS_INVALID_INPUT, 'sled: an open rear contact needs its lift (lift = .true.)')
+      return
+    end if
     d1 = m%add_frame('rear_contact')
     su = m%add_scalar('u', q0(1))
     sv = m%add_scalar('v', q0(2))
     call m%add_element(new_surface_joint('rear', 1, d1, su, sv, surface, p%sigma, p%alpha_u, p%alpha_v))
     heading = m%add_frame('heading')
     sphi = m%add_scalar('phi', q0(3))
-    call m%add_element(new_revolute('yaw', d1, heading, sphi, [0.0_wp, 0.0_wp, 1.0_wp]))
+    slift = 0
+    if (chain) then
+      ! the rear end on the normal through its foot point, lifted by rear_lift
+      lifted = m%add_frame('rear_lifted')
+      slift = m%add_scalar('rear_lift', 0.0_wp)
+      call m%add_element(new_prismatic('rear_lift', d1, lifted, slift, [0.0_wp, 0.0_wp, 1.0_wp]))
+      call m%add_element(new_revolute('yaw', lifted, heading, sphi, [0.0_wp, 0.0_wp, 1.0_wp]))
+    else
+      call m%add_element(new_revolute('yaw', d1, heading, sphi, [0.0_wp, 0.0_wp, 1.0_wp]))
+    end if
     bar = m%add_frame('bar')
     spitch = m%add_scalar('pitch', 0.0_wp)
     call m%add_element(new_revolute('pitch', heading, bar, spitch, [0.0_wp, 1.0_wp, 0.0_wp]))
@@ -338,11 +373,21 @@ contains
     call m%add_element(new_measurement('front_x', MEASURE_PLANE_POINT, d2, front, gx, axis_i=[1.0_wp, 0.0_wp, 0.0_wp]))
     call m%add_element(new_measurement('front_y', MEASURE_PLANE_POINT, d2, front, gy, axis_i=[0.0_wp, 1.0_wp, 0.0_wp]))
     call m%add_element(new_measurement('front_z', MEASURE_PLANE_POINT, d2, front, gz, axis_i=[0.0_wp, 0.0_wp, 1.0_wp]))
-    call m%add_loop('front contact', [gx, gy, gz], [0.0_wp, 0.0_wp, 0.0_wp], [spitch, su2, sv2], status)
+    if (opened(2)) then
+      call m%add_loop('front contact', [gx, gy], [0.0_wp, 0.0_wp], [su2, sv2], status)
+    else if (chain) then
+      ! each condition with the same dependent as in the open loop (the
+      ! records of the builds are joined by the dependents' names)
+      call m%add_loop('front contact', [gz, gx, gy], [0.0_wp, 0.0_wp, 0.0_wp], [spitch, su2, sv2], status)
+    else
+      call m%add_loop('front contact', [gx, gy, gz], [0.0_wp, 0.0_wp, 0.0_wp], [spitch, su2, sv2], status)
+    end if
     ! contacts of the bar with the ground's surface: sigma orients the Darboux
     ! z axes towards the side the bar is on, so N > 0 while it presses
     if (p%loads_on_darboux_frames) then
       rear_contact = m%add_contact('rear', 1, d1, d1)
+    else if (chain) then
+      rear_contact = m%add_contact('rear', 1, bar, d1, one_sided=.not. opened(1))
     else
       rear_contact = m%add_contact('rear', 1, bar, d1)
     end if
@@ -350,6 +395,8 @@ contains
     if (p%loads_on_darboux_frames) front_body = d2
     if (p%front_normal_from_cut_force) then
       front_contact = m%add_contact('front', 1, front_body, d2, normal_measurement=gz)
+    else if (chain) then
+      front_contact = m%add_contact('front', 1, front_body, d2, one_sided=.not. opened(2))
     else
       front_contact = m%add_contact('front', 1, front_body, d2)
     end if
@@ -362,7 +409,10 @@ contains
     if (status%ok() .and. p%drag_area /= 0) call m%add_law(new_air_drag('bar.air_drag', bar, &
       [p%length/2, 0.0_wp, 0.0_wp] + p%centre_offset, p%drag_area, p%air_density, p%wind, status))
     if (.not. status%ok()) return
-    call m%set_coordinates([su, sv, sphi])
+    coordinates = [su, sv, sphi]
+    if (opened(2)) coordinates = [coordinates, spitch]
+    if (opened(1)) coordinates = [coordinates, slift]
+    call m%set_coordinates(coordinates)
     if (present(finish)) then
       if (.not. finish) return
     end if

@@ -33,6 +33,7 @@ module rider_vehicle
   use rider_drag, only: water_properties_t
   use rider_water_drag, only: new_water_drag, in_water_roots
   use water_field, only: water_field_t
+  use kinetostatics_impact, only: impact_law_t
   implicit none (type, external)
   private
   public :: vehicle_t, vehicle_body_t, vehicle_body, check_vehicle, build_vehicle_model, vehicle_kind_index
@@ -93,6 +94,10 @@ module rider_vehicle
     !> vehicle) or dry (water = 'dry'); the bar rides dry
     logical :: in_water = .false.
     type(water_properties_t) :: water
+    !> a lift-off opens the contact and the vehicle flies (&sled may_fly;
+    !> rider_vehicle_flight), landing by `landing`'s law
+    logical :: may_fly = .false.
+    type(impact_law_t) :: landing
   end type vehicle_t
 
   !> The vehicle with its riders as one rigid body, in V.
@@ -220,7 +225,8 @@ contains
   !> 'front_water_drag': rider_water_drag with the vehicle's spheres and
   !> v%water), each on where its contact starts between the water's edges;
   !> the laws point at `water` (no copy), which outlives m.
-  subroutine build_vehicle_model(v, d, surface, m, q0, qd0, status, water)
+  !> lift, open: a flight build (build_sled; rider_vehicle_flight).
+  subroutine build_vehicle_model(v, d, surface, m, q0, qd0, status, water, lift, open)
     type(vehicle_t), intent(in) :: v
     type(sled_description_t), intent(in) :: d
     class(surface_t), intent(in) :: surface
@@ -228,6 +234,7 @@ contains
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     type(status_t), intent(inout) :: status
     type(water_field_t), intent(in), optional, target :: water
+    logical, intent(in), optional :: lift, open(2)
     character(len=*), parameter :: contacts(2) = [character(len=5) :: 'rear', 'front']
     character(len=*), parameter :: u_names(2) = [character(len=2) :: 'u', 'u2']
     character(len=*), parameter :: v_names(2) = [character(len=2) :: 'v', 'v2']
@@ -249,14 +256,14 @@ contains
       carried%params%centre_offset = vb%body%com - [vb%length/2, 0.0_wp, 0.0_wp]
     end if
     if (.not. present(water)) then
-      call build_sled_model(carried, surface, m, q0, qd0, status)
+      call build_sled_model(carried, surface, m, q0, qd0, status, lift=lift, open=open)
       return
     end if
     if (v%kind == VEHICLE_BAR) then
       call set_status(status, STATUS_INTERNAL, 'the water''s drag acts on a vehicle''s contacts, not on the bar')
       return
     end if
-    call build_sled_model(carried, surface, m, q0, qd0, status, finish=.false.)
+    call build_sled_model(carried, surface, m, q0, qd0, status, finish=.false., lift=lift, open=open)
     if (.not. status%ok()) return
     do k = 1, 2
       su = m%scalar_index(trim(u_names(k)))

@@ -25,6 +25,7 @@ module scenarios_mechanism
   use design_ride_evaluation, only: noise_free
   use contact_flight, only: flight_ode_t, impact_record_t
   use contact_closing, only: drive_flight
+  use rider_vehicle_flight, only: vehicle_flight_ode_t, drive_vehicle, vehicle_units
   implicit none (type, external)
   private
   public :: run_mechanism, mechanism_driver_options, run_figures_t
@@ -134,14 +135,23 @@ contains
       call drive_flight(sys, y0, mechanism_driver_options(scenario, solver), result, run_status, open)
       units = sys%q_units
       dependent_units = sys%beta_units
+    class is (vehicle_flight_ode_t)
+      ! a vehicle that may fly: stretch by stretch through its builds, the
+      ! units of the joined records by their names (u, v the first two's)
+      call drive_vehicle(sys, y0, mechanism_driver_options(scenario, solver), result, run_status)
+      call vehicle_units(sys%series, q_units(1), q_units(2), units, dependent_units)
     class default
       call drive(sys, y0, mechanism_driver_options(scenario, solver), result, run_status)
     end select
     select case (result%outcome)
     case (DRIVE_END_TIME)
       outcome = 'the end of the simulated time'
-      ! what happened on the way (a flight's closing)
+      ! what happened on the way (a flight's closing, a vehicle's flights)
       if (allocated(open) .and. len(sys%outcome) > 0) outcome = sys%outcome//'; '//outcome
+      select type (sys)
+      class is (vehicle_flight_ode_t)
+        if (len(sys%outcome) > 0) outcome = sys%outcome//'; '//outcome
+      end select
     case (DRIVE_EVENT_STOP)
       outcome = sys%outcome
     case default
@@ -202,6 +212,11 @@ contains
     real(wp), allocatable :: losses(:)
     type(impact_record_t), allocatable :: impacts(:)
     integer :: i
+    select type (sys)
+    class is (vehicle_flight_ode_t)
+      losses = sys%losses   ! a vehicle's landings (drive_vehicle)
+      return
+    end select
     impacts = impacts_of(sys)
     losses = [(sum(impacts%energy_lost, mask=impacts%time <= sys%series%time(i)), i = 1, sys%series%n)]
   end function impact_losses

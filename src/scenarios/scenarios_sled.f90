@@ -20,7 +20,11 @@ module scenarios_sled
   use kinetostatics_models, only: sled_description_t
   use rider_vehicle, only: vehicle_t, vehicle_body_t, vehicle_body, build_vehicle_model, vehicle_ride_figures, &
     vehicle_kinds, VEHICLE_BAR, narrowest_section, width_tolerance
+  use rider_vehicle_flight, only: vehicle_flight_ode_t, build_vehicle_flight, vehicle_contact_names
+  use rider_flight, only: ride_flights_t
+  use scenarios_ride_flights, only: add_flights, write_flights
   use design_ride_evaluation, only: felt_acceleration_units
+  use design_ride_report, only: judge_flights
   use io_hdf5, only: result_file_t, run_outcome
   use io_summary, only: summary_t
   use base_text, only: format_short
@@ -55,6 +59,8 @@ module scenarios_sled
     'acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal', 'normal_force', 'wall_angle', &
     'wall_distance']
   character(len=*), parameter :: contact_names(2) = [character(len=5) :: 'rear', 'front']
+  !> ... and those of a vehicle that may fly (&sled may_fly)
+  character(len=*), parameter :: flight_quantities(2) = [character(len=12) :: 'airtime', 'drop_height']
 
   !> A vehicle's ride figures (docs/vehicles.md, "What the run reports"):
   !> per record the speed of its centre of mass and the felt acceleration
@@ -80,6 +86,10 @@ module scenarios_sled
     logical :: in_water = .false.                   ! the water computed on the slide, its drag at the contacts
     type(water_description_t) :: water             ! (in_water) the water as given
     type(water_result_t) :: water_result            ! (in_water) the computed water, written under /water
+    !> a vehicle that may fly (&sled may_fly): its flights and landings,
+    !> each record's open contacts (bit 0 the rear, bit 1 the front)
+    type(ride_flights_t) :: flights
+    integer, allocatable :: open(:)
   contains
     procedure :: compute => vehicle_compute
     procedure :: write => vehicle_write
@@ -98,6 +108,7 @@ contains
     type(vehicle_figures_t), target :: figures   ! its water_result%field: the drag laws of sys point at it
     class(surface_t), allocatable :: surface
     type(mechanism_ode_t), target :: sys
+    type(vehicle_flight_ode_t), target :: flying   ! a vehicle that may fly (its builds)
     character(len=:), allocatable :: u_units, v_units
     character(len=8) :: q_units(3), beta_units(3)
     real(wp), allocatable :: q0(:), qd0(:)
@@ -133,8 +144,14 @@ contains
         call keep_failed_water(input, run, figures, status)
         return
       end if
-      call build_vehicle_model(vehicle, config, surface, sys%mechanism, q0, qd0, status, &
-                               water=figures%water_result%field)
+      if (vehicle%may_fly) then
+        call build_vehicle_flight(vehicle, config, surface, flying, q0, qd0, status, water=figures%water_result%field)
+      else
+        call build_vehicle_model(vehicle, config, surface, sys%mechanism, q0, qd0, status, &
+                                 water=figures%water_result%field)
+      end if
+    else if (vehicle%may_fly) then
+      call build_vehicle_flight(vehicle, config, surface, flying, q0, qd0, status)
     else
       call build_vehicle_model(vehicle, config, surface, sys%mechanism, q0, qd0, status)
     end if
@@ -149,8 +166,13 @@ contains
     else
       figures%vehicle = vehicle
       figures%gravity = config%params%gravity
-      call run_mechanism('sled', input, run, solver, sys, q0, qd0, q_units, beta_units, status, &
-                         surface=surface, start_variables='u0, v0, phi0, du0, dv0, dphi0', figures=figures)
+      if (vehicle%may_fly) then
+        call run_mechanism('sled', input, run, solver, flying, q0, qd0, q_units, beta_units, status, &
+                           surface=surface, start_variables='u0, v0, phi0, du0, dv0, dphi0', figures=figures)
+      else
+        call run_mechanism('sled', input, run, solver, sys, q0, qd0, q_units, beta_units, status, &
+                           surface=surface, start_variables='u0, v0, phi0, du0, dv0, dphi0', figures=figures)
+      end if
       if (status%ok() .and. fail_on_limit .and. allocated(figures%verdicts)) &
         call limits_exceeded_status(input%name, figures%limits, [(merge(1, 0, figures%judged(k) .and. &
                                     figures%verdicts(k)%exceeded), k = 1, size(figures%limits))], .false., status)
@@ -185,10 +207,18 @@ contains
     end if
     do k = 1, size(figures%limits)
       if (any(vehicle_quantities == figures%limits(k)%quantity)) cycle
+      if (vehicle%may_fly .and. any(flight_quantities == figures%limits(k)%quantity)) cycle
+      if (any(flight_quantities == figures%limits(k)%quantity)) then
+        call r%invalid('limit_quantity('//format_integer(k)//')', ''''//figures%limits(k)%quantity//'''', &
+                       figures%limits(k)%quantity//' limits a flight: it needs may_fly = .true. (without it a '// &
+                       'lift-off ends the run; docs/vehicles.md, "Limits")', status)
+        return
+      end if
       call r%invalid('limit_quantity('//format_integer(k)//')', ''''//figures%limits(k)%quantity//'''', &
                      'a vehicle''s ride is judged on speed, exit_speed, acceleration_longitudinal, '// &
-                     'acceleration_lateral, acceleration_normal, normal_force, wall_angle and wall_distance; '// &
-                     figures%limits(k)%quantity//' belongs to the body-slide rider (its tipping, its flight: '// &
+                     'acceleration_lateral, acceleration_normal, normal_force, wall_angle and wall_distance, '// &
+                     'and with may_fly on airtime and drop_height; '// &
+                     figures%limits(k)%quantity//' belongs to the body-slide rider (its tipping: '// &
                      'docs/vehicles.md, "Limits")', status)
       return
     end do
@@ -323,7 +353,16 @@ contains
     type(status_t), intent(inout) :: status
     real(wp), allocatable :: values(:), where(:)
     integer :: k, i, n
-    call vehicle_ride_figures(sys%mechanism, sys%work, sys%series, self%speed, self%felt, status)
+    select type (sys)
+    class is (vehicle_flight_ode_t)
+      ! computed stretch by stretch, each with its build (drive_vehicle)
+      self%speed = sys%speed
+      self%felt = sys%felt
+      self%flights = sys%flights
+      self%open = sys%open_record
+    class default
+      call vehicle_ride_figures(sys%mechanism, sys%work, sys%series, self%speed, self%felt, status)
+    end select
     n = sys%series%n
     self%time = sys%series%time(:n)
     if (.not. (status%ok() .and. allocated(self%slide))) return
@@ -354,6 +393,9 @@ contains
         values = maxval(abs(self%wall_angle), dim=1)*180/pi       ! the higher of the two contacts'
       case ('wall_distance')
         values = maxval(abs(self%wall_distance), dim=1)
+      case ('airtime', 'drop_height')
+        call judge_flights(self%limits(k), where(1), self%verdicts(k), self%flights)
+        cycle
       end select
       call evaluate_limit(self%limits(k), values, where, self%verdicts(k))
     end do
@@ -371,10 +413,11 @@ contains
     logical :: dependent(2)
     real(wp) :: u, v
     ! where each contact's (u, v) is recorded: a coordinate (q) or a
-    ! dependent one of the closure (beta)
-    associate (m => sys%mechanism, s => sys%series)
-      coordinate(:, 1) = [findloc(m%q, m%scalar_index('u'), 1), findloc(m%q, m%scalar_index('v'), 1)]
-      coordinate(:, 2) = [findloc(m%beta, m%scalar_index('u2'), 1), findloc(m%beta, m%scalar_index('v2'), 1)]
+    ! dependent one of the closure (beta), by the records' names (a flying
+    ! vehicle's records join its builds')
+    associate (s => sys%series)
+      coordinate(:, 1) = [findloc(s%q_names, 'u', 1), findloc(s%q_names, 'v', 1)]
+      coordinate(:, 2) = [findloc(s%beta_names, 'u2', 1), findloc(s%beta_names, 'v2', 1)]
       dependent = [.false., .true.]
       n = s%n
       allocate (self%wall_angle(2, n), self%wall_distance(2, n))
@@ -430,6 +473,12 @@ contains
                                'its distance along the section from the bottom (signed)', status)
       end do
     end if
+    if (self%vehicle%may_fly) then
+      call write_flights(file, self%flights, g//'/flight/', status, vehicle_contact_names)
+      if (allocated(self%open)) call file%write_integers(g//'/open', self%open, '1', 'the contacts open at each '// &
+        'record: 0 none, 1 the rear, 2 the front, 3 both (the vehicle in the air; docs/vehicles.md, "Flight")', &
+        status)
+    end if
     call file%set_attribute(g, 'vehicle', trim(vehicle_kinds(self%vehicle%kind)), status)
     call file%attach_scale('/sled/time', g, status)
     ! the components' scale of the sled's vectors (written with its series)
@@ -441,7 +490,7 @@ contains
     type(summary_t), intent(inout) :: summary
     character(len=:), allocatable :: units
     character(len=*), parameter :: axes(3) = [character(len=12) :: 'longitudinal', 'lateral', 'normal']
-    character(len=:), allocatable :: unit, line, unset
+    character(len=:), allocatable :: unit, line, unset, quantity
     integer :: k, n, i, exceeded
     call summary%add('vehicle_width', 'vehicle width', self%width, 'm')
     if (self%in_water) then
@@ -480,6 +529,7 @@ contains
                          'bottom at arc length '//format_short(self%where(i))//' m')
       end do
     end if
+    if (self%vehicle%may_fly) call add_flights(summary, self%flights, vehicle_contact_names)
     if (.not. allocated(self%verdicts)) return
     exceeded = 0
     do k = 1, size(self%limits)
@@ -499,10 +549,15 @@ contains
       call summary%add_line('  '//line)
     end do
     unset = ''
-    do k = 1, size(vehicle_quantities)
-      if (any([(self%limits(i)%quantity == trim(vehicle_quantities(k)), i = 1, size(self%limits))])) cycle
+    do k = 1, size(vehicle_quantities) + merge(size(flight_quantities), 0, self%vehicle%may_fly)
+      if (k <= size(vehicle_quantities)) then
+        quantity = trim(vehicle_quantities(k))
+      else
+        quantity = trim(flight_quantities(k - size(vehicle_quantities)))
+      end if
+      if (any([(self%limits(i)%quantity == quantity, i = 1, size(self%limits))])) cycle
       if (len(unset) > 0) unset = unset//', '
-      unset = unset//trim(vehicle_quantities(k))
+      unset = unset//quantity
     end do
     if (len(unset) > 0) call summary%add_text('limits_not_set', 'no limit set for', unset)
     call summary%add_count('limits_exceeded', 'limits exceeded', exceeded, 'of the '// &

@@ -282,6 +282,61 @@ with h5py.File(sys.argv[1], "r") as f:
         print(f"status {status}, groups {list(f)}")
         sys.exit(1)
 PY
+# flight (docs/vehicles.md, "Flight"): only a vehicle flies; the landing's
+# law and the flight limits need may_fly
+refused bar_flies "&sled: may_fly = .true. is not allowed: a vehicle flies" \
+  "&sled u0 = 0.5, v0 = 1.5707963267948966, du0 = 1, may_fly = .true. /"
+refused landing_without_flight "&sled: landing_restitution" \
+  "&sled vehicle = 'mat', u0 = 0.5, v0 = 1.5707963267948966, du0 = 1, landing_restitution = 0.3 /"
+refused airtime_without_flight "&sled: limit_quantity(1) = 'airtime' is not allowed: airtime limits a flight: it needs may_fly = .true." \
+  "&sled vehicle = 'mat', u0 = 0.5, v0 = 1.5707963267948966, du0 = 1, limit_quantity = 'airtime', limit_unit = 's', limit_max = 0.1 /"
+# a mat over the jump that may fly (inputs/parts/mat_jump.nml): its front
+# lifts off at the lip, then its rear; it lands and rides on to the end of
+# the slide (exit 0); the flights in the summary, the JSON and the file, the
+# airtime and drop_height limits judged. Without may_fly the front's
+# lift-off ends the run where the flying one's first take-off is.
+sed -e "s|'jump_slide.nml'|'$root/inputs/parts/jump_slide.nml'|" "$root/inputs/parts/mat_jump.nml" >"$work/mat_jump.nml"
+(cd "$work" && "$slidesim" -o mat_jump.h5 --summary-json mat_jump.json mat_jump.nml >mat_jump.out 2>mat_jump.err); got=$?
+check '[ $got = 0 ] && grep -q "the front contact opens (may_fly)" "$work/mat_jump.out" && grep -q "stopped at .*end of slide" "$work/mat_jump.out" && grep -q "landing 1 (front)" "$work/mat_jump.out" && grep -q "limit airtime <= 1 s: ok" "$work/mat_jump.out"' \
+  "a mat over the jump that may fly: exit $got: $(cat "$work/mat_jump.out" "$work/mat_jump.err")"
+sed -e "s|may_fly = .true., landing_restitution = 0.0|may_fly = .false.|" -e "/limit_/d" "$work/mat_jump.nml" >"$work/mat_stays.nml"
+(cd "$work" && "$slidesim" -o mat_stays.h5 --summary-json mat_stays.json mat_stays.nml >mat_stays.out 2>mat_stays.err); got=$?
+check '[ $got = 0 ] && grep -q "lift-off: the normal force of contact .front. fell to zero" "$work/mat_stays.out"' \
+  "the mat over the jump without may_fly: exit $got: $(cat "$work/mat_stays.out" "$work/mat_stays.err")"
+"$python" - "$work/mat_jump.json" "$work/mat_jump.h5" "$work/mat_stays.json" <<'PY' || { echo "FAIL a mat over the jump that may fly (above)"; failures=$((failures + 1)); }
+import json, sys
+import h5py
+import numpy as np
+d = json.load(open(sys.argv[1]))["values"]
+stays = json.load(open(sys.argv[3]))["values"]
+bad = []
+if not (d["flights"] >= 1 and d["whole_flights"] >= 1 and d["landings"] >= 2 and 0 < d["airtime"] < 1):
+    bad.append(f"flights {d['flights']}, whole {d['whole_flights']}, landings {d['landings']}, airtime {d['airtime']}")
+with h5py.File(sys.argv[2], "r") as f:
+    g = f["/sled/vehicle"]
+    opened = g["open"][:]
+    t = f["/sled/time"][:]
+    land = g["flight/landing/time"][:]
+    drop = g["flight/landing/drop_height"][:]
+    speed = g["flight/landing/normal_speed"][:]
+    if opened.shape != t.shape or not np.any(opened == 3):
+        bad.append(f"/sled/vehicle/open: {opened.shape} for {t.shape} records, the whole mat in the air at none")
+    first = t[np.argmax(opened != 0)]
+    if abs(first - stays["simulated_time"]) > 1e-9:
+        bad.append(f"the first take-off at t = {first} s, the run without flight lifted off at {stays['simulated_time']} s")
+    if not np.all(np.isin(land, t)):
+        bad.append("a landing without its records")
+    if np.max(np.abs(drop - speed**2 / (2 * 9.80665))) > 1e-12:
+        bad.append(f"drop heights {drop} are not v_n^2/(2 g) of {speed}")
+    # a take-off or landing: two records at one time, the same pose
+    same = np.flatnonzero(np.diff(t) == 0)
+    r = f["/sled/bodies/bar_mass/position"][:]
+    if len(same) < 4 or np.max(np.abs(r[same + 1] - r[same])) > 1e-9:
+        bad.append(f"{len(same)} switches, pose jumps {np.max(np.abs(r[same + 1] - r[same])) if len(same) else 0}")
+if bad:
+    print("; ".join(bad))
+    sys.exit(1)
+PY
 # the plain bar has no vehicle figures (its results as before)
 printf '%s\n%s\n' "$head" "&sled u0 = 0.5, v0 = 1.5707963267948966, du0 = 2 /" >"$work/bar.nml"
 (cd "$work" && "$slidesim" -o bar.h5 bar.nml >bar.out 2>&1); got=$?

@@ -1,0 +1,530 @@
+!> A vehicle that flies (&sled may_fly; issues 25 and 26, docs/vehicles.md
+!> "Flight"): where a contact's normal force falls to zero that contact opens
+!> and the vehicle goes on, on the other contact or with both open, until a
+!> contact lands again.
+!>
+!> The ride switches between four builds of the vehicle (build_vehicle_model
+!> with lift and open, kinetostatics_models build_sled: the rear end on a
+!> prismatic along the normal at its foot point), one per set of open
+!> contacts (bit 0 the rear, bit 1 the front; 0: the sled of today with the
+!> lift held at 0), whose scalars, frames, contacts and laws sit at the same
+!> indices. A state carries over through the full layout [u, v, phi, pitch,
+!> rear_lift], their rates, then the laws' work integrals: positions and
+!> velocities are continuous through a switch, to the closure's rounding.
+!> The bar keeps its roll to the slide below its rear end in every build
+!> (as the sled always did, and as the rider's open pelvis): with both
+!> contacts open the vehicle has five coordinates, not six.
+!>
+!> An open contact's gap (kinetostatics_point_impact point_gap: the rear's
+!> is its lift, the front's the front_z measurement of its open loop) is a
+!> root (gap_root: watched once it opened by opening_gap); its zero is a
+!> landing: the impact of kinetostatics_point_impact with the law of
+!> &sled landing_restitution and landing_mu and the effective mass of the
+!> whole vehicle at that contact (K = J M^-1 J^T of the build in flight). A
+!> rebound slower than rider_flight's close_speed closes the contact (if it
+!> then presses; else it flies on from the slide).
+!>
+!> Each stretch between switches is driven on its own (drive_vehicle), its
+!> records computed into the vehicle's ride figures (rider_vehicle
+!> vehicle_ride_figures, with the stretch's build) and joined to the others'
+!> (kinetostatics_recorder join_series: the coordinates of one build are 0
+!> in the others' records; open_mask says which contacts were open).
+module rider_vehicle_flight
+  use base_kinds, only: wp
+  use base_text, only: format_short
+  use base_status, only: status_t, set_status, prefix_status, STATUS_DOMAIN
+  use geometry_surface, only: surface_t
+  use geometry_slide_query, only: slide_surface_t
+  use numerics_event_driver, only: driver_options_t, driver_result_t, drive, add_driver_result, &
+    DRIVE_EVENT_STOP, EVENT_STOP, EVENT_RESTART
+  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_LIFT_OFF
+  use kinetostatics_recorder, only: mechanism_series_t, join_series
+  use kinetostatics_models, only: sled_description_t
+  use kinetostatics_impact, only: impact_outcome_t
+  use kinetostatics_point_impact, only: point_gap, point_impact, gap_root
+  use rider_flight, only: ride_flights_t, rider_landing_t, add_landing, close_speed
+  use rider_vehicle, only: vehicle_t, build_vehicle_model, vehicle_ride_figures
+  use water_field, only: water_field_t
+  implicit none (type, external)
+  private
+  public :: vehicle_flight_ode_t, build_vehicle_flight, drive_vehicle, vehicle_contact_names, vehicle_units
+
+  !> the contacts, bit k-1 of a build's open mask
+  character(len=*), parameter :: vehicle_contact_names(2) = [character(len=5) :: 'rear', 'front']
+  integer, parameter :: N_FULL = 5   ! u, v, phi, pitch, rear_lift
+  character(len=*), parameter :: full_names(N_FULL) = [character(len=9) :: 'u', 'v', 'phi', 'pitch', 'rear_lift']
+  integer, parameter :: SWITCH_NONE = 0, SWITCH_TAKE_OFF = 1, SWITCH_LANDING = 2
+  !> landings within quick_flight of their take-off, in a row, that end the
+  !> run (a contact neither stays on nor leaves: a chatter the model cannot
+  !> resolve), as the rider's
+  real(wp), parameter :: quick_flight = 1e-9_wp
+  integer, parameter :: max_quick_landings = 5
+
+  !> The vehicle's integration with its four builds.
+  type, extends(mechanism_ode_t) :: vehicle_flight_ode_t
+    type(mechanism_t) :: builds(0:3)
+    integer :: open_mask = 0
+    integer :: full(N_FULL) = 0          ! the full layout's scalars
+    integer :: point(2) = 0, foot(2) = 0 ! each contact's point frame and its foot point's frame
+    integer :: contact(2) = 0            ! the mechanism's contacts 'rear', 'front'
+    logical :: opened(2) = .false.       ! the gap has opened beyond opening_gap
+    type(vehicle_t) :: vehicle           ! its landing law
+    real(wp) :: gravity = 0              ! m/s^2, |g|
+    class(slide_surface_t), allocatable :: slide   ! where: arc lengths (none: the rear's u)
+    type(ride_flights_t) :: flights
+    integer :: switch = SWITCH_NONE, switch_contact = 0, quick_landings = 0
+    real(wp) :: switch_t = 0, take_off_time(2) = 0
+    real(wp), allocatable :: switch_y(:)
+    ! the run's records: each one's open contacts and the ride figures
+    integer, allocatable :: open_record(:)
+    real(wp), allocatable :: speed(:), felt(:, :)   ! m/s; 3 x n, g
+    real(wp), allocatable :: losses(:)              ! J, the landings' energy lost up to each record
+    character(len=:), allocatable :: history        ! every stretch's outcome
+  contains
+    procedure :: root_count => flight_root_count
+    procedure :: roots => flight_roots
+    procedure :: handle_event => flight_handle_event
+  end type vehicle_flight_ode_t
+
+contains
+
+  !> The four builds of vehicle v (v%may_fly) on `surface` from the start of
+  !> d, the one with both contacts on in use: sys ready to run from q0, qd0.
+  subroutine build_vehicle_flight(v, d, surface, sys, q0, qd0, status, water)
+    type(vehicle_t), intent(in) :: v
+    type(sled_description_t), intent(in) :: d
+    class(surface_t), intent(in) :: surface
+    type(vehicle_flight_ode_t), intent(inout) :: sys
+    real(wp), allocatable, intent(out) :: q0(:), qd0(:)
+    type(status_t), intent(inout) :: status
+    type(water_field_t), intent(in), optional, target :: water
+    real(wp), allocatable :: q_open(:), qd_open(:)
+    integer :: mask, k
+    if (.not. status%ok()) return
+    do mask = 3, 0, -1
+      if (mask == 0) then
+        call build_vehicle_model(v, d, surface, sys%builds(0), q0, qd0, status, water, lift=.true., &
+                                 open=[.false., .false.])
+      else
+        call build_vehicle_model(v, d, surface, sys%builds(mask), q_open, qd_open, status, water, lift=.true., &
+                                 open=[btest(mask, 0), btest(mask, 1)])
+      end if
+      if (.not. status%ok()) then
+        call prefix_status(status, 'the vehicle''s flight builds')
+        return
+      end if
+    end do
+    sys%mechanism = sys%builds(0)
+    sys%open_mask = 0
+    associate (m => sys%builds(0))
+      do k = 1, N_FULL
+        sys%full(k) = m%scalar_index(trim(full_names(k)))
+      end do
+      sys%point = [m%frame_index('bar'), m%frame_index('bar_front')]
+      sys%foot = [m%frame_index('rear_contact'), m%frame_index('front_contact')]
+      sys%contact = [m%contact_index('rear'), m%contact_index('front')]
+    end associate
+    sys%vehicle = v
+    sys%gravity = norm2(d%params%gravity)
+    select type (surface)
+    class is (slide_surface_t)
+      allocate (sys%slide, source=surface)
+    end select
+    sys%flights%watched = .true.
+    sys%history = ''
+  end subroutine build_vehicle_flight
+
+  !> Where the vehicle is: the rear contact's arc length on a slide (else
+  !> its u).
+  real(wp) function where_now(self) result(s)
+    class(vehicle_flight_ode_t), intent(in) :: self
+    s = self%work%scalars(self%full(1))%q
+    if (allocated(self%slide)) s = self%slide%arc_length(s)
+  end function where_now
+
+  integer function flight_root_count(self) result(n)
+    class(vehicle_flight_ode_t), intent(in) :: self
+    n = self%mechanism_ode_t%root_count() + 2
+  end function flight_root_count
+
+  !> The mechanism's roots, then each open contact's gap root (a constant
+  !> while it is closed).
+  subroutine flight_roots(self, t, y, g)
+    class(vehicle_flight_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(out) :: g(:)
+    type(status_t) :: st
+    integer :: n, k
+    n = size(g) - 2
+    call self%mechanism_ode_t%roots(t, y, g(1:n))
+    g(n + 1:) = 1
+    if (self%open_mask == 0) return
+    ! the positions at y: the mechanism's roots just set them unless stored
+    ! values served; a trial state the closure cannot reach keeps the last
+    if (.not. (self%work%converged .and. &
+               all(self%work%scalars(self%mechanism%q)%q == y(1:self%mechanism%f)))) then
+      call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), st)
+      if (.not. st%ok()) return
+      self%cached = .false.
+      self%rhs_cached = .false.
+    end if
+    do k = 1, 2
+      if (btest(self%open_mask, k - 1)) g(n + k) = gap_root(point_gap(self%work, self%point(k), self%foot(k)), &
+                                                             self%opened(k))
+    end do
+  end subroutine flight_roots
+
+  !> The mechanism's events; a lift-off of a contact asks for its take-off
+  !> (a stop, then the switch); an open contact's gap root: it opened (watch
+  !> the landing from now on) or it landed (a stop that asks for the
+  !> landing's switch).
+  subroutine flight_handle_event(self, t, y, fired, action, status)
+    class(vehicle_flight_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    real(wp), intent(inout) :: y(:)
+    integer, intent(in) :: fired(:)
+    integer, intent(out) :: action
+    type(status_t), intent(inout) :: status
+    integer :: n, k
+    n = size(fired) - 2
+    self%switch = SWITCH_NONE
+    call self%mechanism_ode_t%handle_event(t, y, fired(1:n), action, status)
+    if (.not. status%ok()) return
+    if (action == EVENT_STOP) then
+      if (self%stop_kind /= STOP_LIFT_OFF) return   ! the slide's end, an edge: the run ends
+      k = findloc(self%contact, self%stop_contact, dim=1)
+      if (k == 0) return
+      self%switch = SWITCH_TAKE_OFF
+      self%switch_contact = k
+      self%switch_t = t
+      self%switch_y = y
+      return
+    end if
+    if (all(fired(n + 1:) == 0)) return
+    call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), status)
+    if (.not. status%ok()) return
+    do k = 1, 2
+      if (fired(n + k) == 0 .or. .not. btest(self%open_mask, k - 1)) cycle
+      if (.not. self%opened(k) .and. point_gap(self%work, self%point(k), self%foot(k)) > 0) then
+        self%opened(k) = .true.
+        action = max(action, EVENT_RESTART)
+        cycle
+      end if
+      if (self%switch == SWITCH_LANDING) cycle   ! two at once: the first, the other's root fires again
+      self%switch = SWITCH_LANDING
+      self%switch_contact = k
+      self%switch_t = t
+      self%switch_y = y
+      action = EVENT_STOP
+      self%outcome = 'landing of the '//trim(vehicle_contact_names(k))//' contact at t = '//format_short(t)//' s'
+    end do
+  end subroutine flight_handle_event
+
+  !> Drives the run from y0 stretch by stretch: after a stop that asks for a
+  !> switch the next build goes on from there. sys%series becomes the joined
+  !> records, sys%open_record, speed and felt each record's open contacts and
+  !> ride figures; result sums the drives (its outcome and time the last's).
+  subroutine drive_vehicle(sys, y0, options, result, status)
+    type(vehicle_flight_ode_t), intent(inout), target :: sys
+    real(wp), intent(in) :: y0(:)
+    type(driver_options_t), intent(in) :: options
+    type(driver_result_t), intent(out) :: result
+    type(status_t), intent(out) :: status
+    type(driver_options_t) :: stretch_options
+    type(driver_result_t) :: stretch
+    type(mechanism_series_t) :: joined
+    real(wp), allocatable :: y(:), speed(:), felt(:, :)
+    real(wp) :: lost
+    logical :: first, next
+    stretch_options = options
+    if (.not. options%output_origin < huge(1.0_wp)) stretch_options%output_origin = options%t_start
+    allocate (sys%open_record(0), sys%speed(0), sys%felt(3, 0), sys%losses(0))
+    y = y0
+    first = .true.
+    do
+      if (.not. first) call sys%start_series(16)
+      call drive(sys, y, stretch_options, stretch, status)
+      if (first) then
+        result = stretch
+      else
+        call add_driver_result(result, stretch)
+      end if
+      if (len(sys%history) > 0 .and. len(sys%outcome) > 0) sys%history = sys%history//'; '
+      sys%history = sys%history//sys%outcome
+      ! the stretch's figures with its own build (its records are its layout)
+      if (status%ok() .and. sys%series%n > 0) then
+        call vehicle_ride_figures(sys%mechanism, sys%work, sys%series, speed, felt, status)
+        if (status%ok()) then
+          sys%speed = [sys%speed, speed]
+          sys%felt = reshape([sys%felt, felt], [3, size(sys%speed)])
+        end if
+      end if
+      sys%open_record = [sys%open_record, spread(sys%open_mask, 1, sys%series%n)]
+      ! a landing starts a stretch: its energy counts from the next one's records
+      lost = 0
+      if (sys%flights%landings > 0) lost = sum(sys%flights%landing%energy_lost)
+      sys%losses = [sys%losses, spread(lost, 1, sys%series%n)]
+      if (first) then
+        joined = sys%series
+      else
+        joined = join_series(joined, sys%series)
+      end if
+      next = status%ok() .and. stretch%outcome == DRIVE_EVENT_STOP .and. sys%switch /= SWITCH_NONE .and. &
+             stretch%t < options%t_end
+      if (.not. next) exit
+      call switch_build(sys, y, status)
+      if (.not. status%ok()) then
+        call prefix_status(status, 'the vehicle''s '//trim(merge('take-off', 'landing ', &
+                           sys%switch == SWITCH_TAKE_OFF))//' at t = '//format_short(sys%switch_t)//' s')
+        exit
+      end if
+      stretch_options%t_start = sys%switch_t
+      first = .false.
+    end do
+    ! a flight under way at the end counts up to there
+    if (sys%open_mask /= 0) call count_flights(sys, sys%open_mask, 0, result%t)
+    sys%series = joined
+    sys%outcome = sys%history
+  end subroutine drive_vehicle
+
+  !> The switch the last stop asked for, at (switch_t, switch_y): y becomes
+  !> the state of the next build (or of the same, flying on after a
+  !> landing's rebound).
+  subroutine switch_build(self, y, status)
+    type(vehicle_flight_ode_t), intent(inout) :: self
+    real(wp), allocatable, intent(inout) :: y(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: residual, t, closing(3), closing_energy
+    real(wp), allocatable :: y_open(:), full(:)
+    type(impact_outcome_t) :: impact
+    type(rider_landing_t) :: landing
+    logical :: closed
+    integer :: f, c, before
+    t = self%switch_t
+    c = self%switch_contact
+    before = self%open_mask
+    f = self%mechanism%f
+    select case (self%switch)
+    case (SWITCH_TAKE_OFF)
+      call self%mechanism%evaluate(self%work, t, self%switch_y(1:f), self%switch_y(f + 1:2*f), residual, status)
+      if (.not. status%ok()) return
+      full = full_state(self, self%switch_y)
+      call use_build(self, ibset(before, c - 1), full, y, status)
+      self%opened(c) = .false.
+      self%history = self%history//': the '//trim(vehicle_contact_names(c))//' contact opens (may_fly)'
+      if (status%ok()) call press_or_open(self, t, y, status)
+    case (SWITCH_LANDING)
+      y_open = self%switch_y
+      call point_impact(self%mechanism, self%work, self%point(c), self%foot(c), trim(vehicle_contact_names(c))// &
+                        ' contact', y_open, self%vehicle%landing, close_speed, impact, closed, closing, &
+                        closing_energy, status)
+      if (.not. status%ok()) return
+      landing%time = t
+      landing%contact = c
+      landing%arc_length = where_foot(self, c)
+      landing%normal_speed = -impact%normal_speed_before
+      landing%impulse = norm2(impact%impulse + closing)
+      landing%normal_impulse = impact%normal_impulse + norm2(closing)
+      landing%drop_height = landing%normal_speed**2/(2*self%gravity)
+      landing%energy_lost = impact%energy_lost + closing_energy
+      landing%closed = closed
+      if (t - self%take_off_time(c) < quick_flight) then
+        self%quick_landings = self%quick_landings + 1
+      else
+        self%quick_landings = 0
+      end if
+      if (self%quick_landings > max_quick_landings) then
+        call set_status(status, STATUS_DOMAIN, 'the '//trim(vehicle_contact_names(c))//' contact neither stays on '// &
+                        'the slide nor leaves it (landing after landing within '//format_short(quick_flight)//' s)')
+        return
+      end if
+      ! the positions at y_open and the speeds after the impact are set
+      full = full_state(self, y_open)
+      if (closed) then
+        call use_build(self, ibclr(before, c - 1), full, y, status)
+        if (status%ok()) call press_or_open(self, t, y, status)
+        if (.not. status%ok()) return
+        ! the landing one pulls: it did not stay on, it flies on from the slide
+        landing%closed = .not. btest(self%open_mask, c - 1)
+      else
+        y = y_open
+      end if
+      self%history = self%history//': '//trim(merge('it stays on', 'it flies on', landing%closed))
+      self%opened(c) = .false.
+      call add_landing(self%flights, landing)
+    end select
+    self%take_off_time(c) = t
+    call count_flights(self, before, self%open_mask, t)
+    self%switch = SWITCH_NONE
+    self%cached = .false.
+    self%rhs_cached = .false.
+  end subroutine switch_build
+
+  !> After a switch at t to the state y: every closed contact must press;
+  !> one that would pull (its normal force not > 0: a landing's impulse, a
+  !> take-off changing what holds the vehicle) opens too, from the slide
+  !> (its gap watched from 0).
+  subroutine press_or_open(self, t, y, status)
+    type(vehicle_flight_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t
+    real(wp), allocatable, intent(inout) :: y(:)
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: full(:)
+    real(wp) :: residual
+    integer :: after, k, f
+    f = self%mechanism%f
+    call self%mechanism%evaluate(self%work, t, y(1:f), y(f + 1:2*f), residual, status)
+    if (.not. status%ok()) return
+    after = self%open_mask
+    do k = 1, 2
+      if (.not. btest(after, k - 1) .and. .not. self%work%normal_force(self%contact(k)) > 0) after = ibset(after, k - 1)
+    end do
+    if (after == self%open_mask) return
+    do k = 1, 2
+      if (btest(after, k - 1) .and. .not. btest(self%open_mask, k - 1)) self%opened(k) = .false.
+    end do
+    self%history = self%history//': the contacts then open ('//trim(open_words(after))//')'
+    full = full_state(self, y)
+    call use_build(self, after, full, y, status)
+  end subroutine press_or_open
+
+  !> The open contacts of a mask in words.
+  pure function open_words(mask) result(words)
+    integer, intent(in) :: mask
+    character(len=:), allocatable :: words
+    select case (mask)
+    case (1)
+      words = 'rear'
+    case (2)
+      words = 'front'
+    case (3)
+      words = 'both'
+    case default
+      words = 'none'
+    end select
+  end function open_words
+
+  !> Contact c's foot point's arc length on a slide (else its u).
+  real(wp) function where_foot(self, c) result(s)
+    type(vehicle_flight_ode_t), intent(in) :: self
+    integer, intent(in) :: c
+    s = self%work%scalars(self%mechanism%scalar_index(trim(merge('u ', 'u2', c == 1))))%q
+    if (allocated(self%slide)) s = self%slide%arc_length(s)
+  end function where_foot
+
+  !> The full layout's state [q(N_FULL), q'(N_FULL), W] at state y of the
+  !> build in use, its positions and velocities set (an evaluation at y).
+  function full_state(self, y) result(full)
+    type(vehicle_flight_ode_t), intent(in) :: self
+    real(wp), intent(in) :: y(:)
+    real(wp), allocatable :: full(:)
+    full = [self%work%scalars(self%full)%q, self%work%scalars(self%full)%qd, y(2*self%mechanism%f + 1:)]
+  end function full_state
+
+  !> The build of the open contacts `mask` takes over at the full layout's
+  !> state `full`: every scalar's value (its closure starts there), the
+  !> laws' switches (the water's drag), the work integrals; y its state.
+  subroutine use_build(self, mask, full, y, status)
+    type(vehicle_flight_ode_t), intent(inout) :: self
+    integer, intent(in) :: mask
+    real(wp), intent(in) :: full(:)
+    real(wp), allocatable, intent(inout) :: y(:)
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: values(:), q(:), qd(:)
+    logical, allocatable :: active(:)
+    integer :: k, j, f
+    values = self%work%scalars(:)%q
+    active = [(self%work%laws(k)%law%active, k = 1, self%mechanism%n_laws)]
+    self%mechanism = self%builds(mask)
+    self%open_mask = mask
+    call self%mechanism%prepare_workspace(self%work)
+    self%work%scalars(:)%q = values
+    do k = 1, size(active)
+      self%work%laws(k)%law%active = active(k)
+    end do
+    ! a closed rear holds its lift at 0 (its landing left it there, to the root's rounding)
+    if (.not. btest(mask, 0)) self%work%scalars(self%full(N_FULL))%q = 0
+    self%work%warm = .false.
+    self%work%converged = .false.
+    if (allocated(self%charts)) deallocate (self%charts, self%chart_angle)
+    f = self%mechanism%f
+    allocate (q(f), qd(f))
+    do k = 1, f
+      j = findloc(self%full, self%mechanism%q(k), dim=1)
+      q(k) = full(j)
+      qd(k) = full(N_FULL + j)
+    end do
+    y = self%initial_state(q, qd)
+    y(2*f + 1:) = full(2*N_FULL + 1:)
+    call self%mechanism%set_positions(self%work, q, status)
+    if (status%ok()) call self%mechanism%set_velocities(self%work, qd)
+  end subroutine use_build
+
+  !> The units of the joined records' coordinates and dependents by their
+  !> names: u, u2 in u_unit, v, v2 in v_unit, the angles rad, the lift m.
+  subroutine vehicle_units(series, u_unit, v_unit, q_units, beta_units)
+    type(mechanism_series_t), intent(in) :: series
+    character(len=*), intent(in) :: u_unit, v_unit
+    character(len=8), allocatable, intent(out) :: q_units(:), beta_units(:)
+    integer :: k
+    allocate (q_units(series%f), beta_units(series%r))
+    do k = 1, series%f
+      q_units(k) = unit_of(series%q_names(k))
+    end do
+    do k = 1, series%r
+      beta_units(k) = unit_of(series%beta_names(k))
+    end do
+  contains
+    function unit_of(name) result(unit)
+      character(len=*), intent(in) :: name
+      character(len=8) :: unit
+      select case (trim(name))
+      case ('u', 'u2')
+        unit = u_unit
+      case ('v', 'v2')
+        unit = v_unit
+      case ('rear_lift')
+        unit = 'm'
+      case default
+        unit = 'rad'
+      end select
+    end function unit_of
+  end subroutine vehicle_units
+
+  !> The flights' counts and airtimes after a switch at t from the open
+  !> contacts `before` to `now`.
+  subroutine count_flights(self, before, now, t)
+    type(vehicle_flight_ode_t), intent(inout) :: self
+    integer, intent(in) :: before, now
+    real(wp), intent(in) :: t
+    real(wp) :: airtime
+    associate (fl => self%flights)
+      if (before == 0 .and. now /= 0) then
+        fl%flights = fl%flights + 1
+        fl%take_off_time = t
+        fl%take_off_arc_length = where_now(self)
+      else if (before /= 0 .and. now == 0) then
+        airtime = t - fl%take_off_time
+        fl%airtime = fl%airtime + airtime
+        if (airtime > fl%longest) then
+          fl%longest = airtime
+          fl%longest_time = fl%take_off_time
+          fl%longest_arc_length = fl%take_off_arc_length
+        end if
+      end if
+      if (before /= 3 .and. now == 3) then
+        fl%whole_flights = fl%whole_flights + 1
+        fl%whole_take_off_time = t
+        fl%whole_take_off_arc_length = where_now(self)
+      else if (before == 3 .and. now /= 3) then
+        airtime = t - fl%whole_take_off_time
+        fl%whole_airtime = fl%whole_airtime + airtime
+        if (airtime > fl%whole_longest) then
+          fl%whole_longest = airtime
+          fl%whole_longest_arc_length = fl%whole_take_off_arc_length
+        end if
+      end if
+    end associate
+  end subroutine count_flights
+end module rider_vehicle_flight

@@ -1,0 +1,312 @@
+!> A vehicle that flies (&sled may_fly; rider_vehicle_flight), against
+!> closed forms:
+!>
+!>   drop        a ring dropped from h0 = 0.5 m, pitched 0.05 rad nose up,
+!>               onto a level plane (frictionless landing, restitution e):
+!>               its rear lands first at t = sqrt(2 h0/g) with the normal
+!>               speed sqrt(2 g h0) (drop height h0), and the landing's
+!>               normal impulse is (1 + e) m_eff v_n, m_eff = 1/(n.K n),
+!>               K = kinetostatics_impact's rigid_body_delassus of the
+!>               vehicle's mass and inertia (vehicle_body) at the arm from
+!>               its centre of mass to the rear contact: the free rigid body's
+!>               formula against the mechanism's J M^-1 J^T; the energy lost
+!>               (1 - e^2) m_eff v_n^2/2 and the rear's rebound e v_n.
+!>               With e = 0 the rear stays on and the front, pivoting down
+!>               about it, lands next.
+!>   jump        a mat on the jump of test_rider_flight (35 deg, 2 deg, a lip
+!>               into 20 deg), dry, frictionless: it leaves the lip and the
+!>               whole vehicle flies. In the flight gravity alone acts on it
+!>               (the motion stays in the slide's symmetry plane, where the
+!>               kept roll needs no torque), so its centre of mass follows
+!>               r0 + v0 t + g t^2/2 and it turns at a constant rate from the
+!>               take-off state the run records (1e-7 m, 1e-6 m/s: the
+!>               integration's rtol 1e-10 over ~10 m); the landing time and
+!>               the landing contact's normal speed against that projectile
+!>               meeting the 20 deg straight (1e-7 s, 1e-6 relative); at
+!>               every switch the body's pose and twist are continuous
+!>               (1e-9: the closure's tolerance).
+program test_vehicle_flight
+  use base_kinds, only: wp
+  use base_status, only: status_t
+  use base_vector, only: cross
+  use testing, only: check, check_close, finish_tests
+  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_elementary, only: plane_t
+  use geometry_slide_elements, only: slide_element_t
+  use geometry_slide_builder, only: section_part_description_t
+  use geometry_description, only: geometry_description_t, build_geometry
+  use numerics_ode, only: ode_options_t
+  use numerics_event_driver, only: driver_options_t, driver_result_t
+  use kinetostatics_models, only: sled_description_t
+  use kinetostatics_recorder, only: mechanism_series_t
+  use kinetostatics_impact, only: impact_law_t, rigid_body_delassus
+  use rider_vehicle, only: vehicle_t, vehicle_body_t, vehicle_body, VEHICLE_RING, VEHICLE_MAT
+  use rider_vehicle_flight, only: vehicle_flight_ode_t, build_vehicle_flight, drive_vehicle
+  implicit none (type, external)
+
+  real(wp), parameter :: g = 9.80665_wp
+
+  call drop(0.5_wp)
+  call drop(0.0_wp)
+  call jump()
+  call finish_tests('test_vehicle_flight')
+
+contains
+
+  !> y of a vehicle `sys` (its builds made) put in the air: both contacts
+  !> open, q = [u, v, phi, pitch, rear_lift], at rest.
+  function in_the_air(sys, q) result(y)
+    type(vehicle_flight_ode_t), intent(inout) :: sys
+    real(wp), intent(in) :: q(5)
+    real(wp), allocatable :: y(:)
+    sys%mechanism = sys%builds(3)
+    call sys%mechanism%prepare_workspace(sys%work)
+    sys%open_mask = 3
+    sys%opened = .true.
+    y = sys%initial_state(q, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp])
+  end function in_the_air
+
+  subroutine drop(e)
+    real(wp), intent(in) :: e
+    real(wp), parameter :: h0 = 0.5_wp, pitch0 = -0.05_wp
+    type(vehicle_t) :: v
+    type(vehicle_body_t) :: vb
+    type(sled_description_t) :: d
+    class(surface_t), allocatable :: plane
+    type(vehicle_flight_ode_t), target :: sys
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp), allocatable :: q0(:), qd0(:), y(:)
+    real(wp) :: t_land, v_n, rot(3, 3), k(3, 3), m_eff
+    character(len=:), allocatable :: label
+    integer :: i
+    label = 'drop, e = '//merge('0.5', '0  ', e > 0)
+    plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], st)
+    v = vehicle_t(VEHICLE_RING, 1, 1.0_wp)
+    v%may_fly = .true.
+    v%landing = impact_law_t(restitution=e, mu=0)
+    d%q0 = 0
+    d%qd0 = 0
+    call build_vehicle_flight(v, d, plane, sys, q0, qd0, st)
+    call check(st%ok(), label//': the builds: '//st%text())
+    if (.not. st%ok()) return
+    y = in_the_air(sys, [0.0_wp, 0.0_wp, 0.0_wp, pitch0, h0])
+    t_land = sqrt(2*h0/g)
+    options%ode = ode_options_t(rtol=1e-10_wp, atol=1e-12_wp, max_step=0.05_wp)
+    options%t_end = merge(t_land + 0.02_wp, 1.5_wp, e > 0)
+    options%output_step = 0.01_wp
+    options%progress_seconds = 0
+    call drive_vehicle(sys, y, options, result, st)
+    call check(st%ok(), label//': runs: '//st%text())
+    call check(sys%flights%landings >= 1, label//': lands')
+    if (sys%flights%landings < 1) return
+    v_n = sqrt(2*g*h0)
+    call vehicle_body(v, vb, st)
+    ! at the landing: pitched by pitch0 about y (rot_y), not turned
+    rot = reshape([cos(pitch0), 0.0_wp, -sin(pitch0), 0.0_wp, 1.0_wp, 0.0_wp, sin(pitch0), 0.0_wp, cos(pitch0)], &
+                  [3, 3])
+    k = rigid_body_delassus(vb%body%mass, matmul(rot, matmul(vb%body%inertia, transpose(rot))), &
+                            -matmul(rot, vb%body%com))
+    m_eff = 1/k(3, 3)
+    associate (l => sys%flights%landing(1))
+      call check(l%contact == 1, label//': the rear lands first')
+      ! the root's location and the integration (rtol 1e-10)
+      call check_close(l%time, t_land, 1e-8_wp, 0.0_wp, label//': lands at sqrt(2 h0/g)')
+      call check_close(l%normal_speed, v_n, 1e-8_wp, 0.0_wp, label//': normal speed sqrt(2 g h0)')
+      call check_close(l%drop_height, h0, 1e-8_wp, 0.0_wp, label//': drop height h0')
+      ! the impulse of the recorded speed: the effective mass alone (rounding)
+      call check_close(l%normal_impulse, (1 + e)*m_eff*l%normal_speed, 1e-10_wp, 0.0_wp, &
+                       label//': normal impulse (1 + e) m_eff v_n')
+      call check_close(l%energy_lost, (1 - e**2)*m_eff*l%normal_speed**2/2, 1e-10_wp, 0.0_wp, &
+                       label//': energy lost (1 - e^2) m_eff v_n^2/2')
+      call check(l%closed .eqv. (e == 0), label//': '//merge('stays on', 'flies on', e == 0))
+      ! the rebound: the rear's velocity (the bar's origin) at the first record after the impact
+      associate (s => sys%series)
+        i = findloc(s%time(:s%n), l%time, dim=1, back=.true.)
+        call check(i > 1, label//': a record after the landing')
+        if (i > 1) call check_close(s%body_v(3, 1, i), e*l%normal_speed, 1e-10_wp, 1e-12_wp, &
+                                    label//': the rear rebounds at e v_n')
+      end associate
+    end associate
+    if (e == 0) then
+      call check(sys%flights%landings >= 2, label//': the front lands next')
+      if (sys%flights%landings >= 2) call check(sys%flights%landing(2)%contact == 2 .and. &
+                                                sys%flights%landing(2)%time > sys%flights%landing(1)%time, &
+                                                label//': the front lands after the rear')
+    end if
+  end subroutine drop
+
+  subroutine jump()
+    type(geometry_description_t) :: gd
+    class(surface_t), allocatable :: slide
+    type(vehicle_t) :: v
+    type(vehicle_body_t) :: vb
+    type(sled_description_t) :: d
+    type(vehicle_flight_ode_t), target :: sys
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    type(surface_point_t) :: pt
+    real(wp), allocatable :: q0(:), qd0(:), y(:)
+    real(wp) :: c0(3), v0(3), w0(3), r0(3), c(3), vc(3), tau, worst_r, worst_v, worst_w, jump_r, jump_v
+    real(wp) :: normal(3), base(3), t_hit, speed_hit, t_land
+    integer :: i, first, last, k, contact, switches
+    gd%kind = 'slide'
+    gd%slide%elements%start = [0.0_wp, 0.0_wp, 10.0_wp]
+    gd%slide%elements%transition_length = 1
+    gd%slide%elements%exact = .true.
+    gd%slide%elements%elements = [slide_element_t(kind='straight', length=5.0_wp, slope_deg=35.0_wp), &
+                                  slide_element_t(kind='straight', length=2.0_wp, slope_deg=2.0_wp), &
+                                  slide_element_t(kind='straight', length=8.0_wp, slope_deg=20.0_wp), &
+                                  slide_element_t(kind='runout', length=6.0_wp, slope_deg=1.0_wp)]
+    gd%slide%section%parts = [section_part_description_t(kind='circle', radius=0.5_wp)]
+    call build_geometry(gd, slide, st)
+    call check(st%ok(), 'jump: the slide: '//st%text())
+    if (.not. st%ok()) return
+    v = vehicle_t(VEHICLE_MAT, 1, 1.0_wp)
+    v%may_fly = .true.
+    v%landing = impact_law_t(restitution=0, mu=0)
+    d%q0 = [1.0_wp, 1.5707963267948966_wp, 0.0_wp]
+    d%qd0 = [2.0_wp, 0.0_wp, 0.0_wp]
+    call build_vehicle_flight(v, d, slide, sys, q0, qd0, st)
+    call check(st%ok(), 'jump: the builds: '//st%text())
+    if (.not. st%ok()) return
+    call vehicle_body(v, vb, st)
+    y = sys%initial_state(q0, qd0)
+    options%ode = ode_options_t(rtol=1e-10_wp, atol=1e-9_wp, max_step=0.05_wp)
+    options%t_end = 6
+    options%output_step = 0.01_wp
+    options%progress_seconds = 0
+    call drive_vehicle(sys, y, options, result, st)
+    print '(a)', 'jump: '//sys%outcome
+    call check(st%ok(), 'jump: runs: '//st%text())
+    call check(sys%flights%whole_flights >= 1, 'jump: the whole vehicle flies')
+    associate (s => sys%series, open => sys%open_record)
+      call check(size(open) == s%n, 'jump: an open state per record')
+      ! every switch: two records at one time, the body's pose and twist the same
+      jump_r = 0
+      jump_v = 0
+      switches = 0
+      do i = 2, s%n
+        if (s%time(i) /= s%time(i - 1)) cycle
+        switches = switches + 1
+        jump_r = max(jump_r, maxval(abs(s%body_r(:, 1, i) - s%body_r(:, 1, i - 1))), &
+                     maxval(abs(s%body_rot(:, :, 1, i) - s%body_rot(:, :, 1, i - 1))))
+        ! a take-off (no landing's impulse between): a contact more open
+        if (open(i) /= open(i - 1) .and. iand(open(i), open(i - 1)) == open(i - 1)) &
+          jump_v = max(jump_v, maxval(abs(s%body_v(:, 1, i) - s%body_v(:, 1, i - 1))), &
+                       maxval(abs(s%body_omega(:, 1, i) - s%body_omega(:, 1, i - 1))))
+      end do
+      print '(a, i0, a, 2es10.2)', 'jump: pose, twist jumps at the ', switches, ' switches ', jump_r, jump_v
+      call check(switches == 4, 'jump: four switches (front, rear off; front, rear on)')
+      call check(jump_r <= 1e-9_wp, 'jump: the pose continuous through every switch')
+      call check(jump_v <= 1e-9_wp, 'jump: the twist continuous through every take-off')
+      ! the whole flight: the first stretch with both contacts open
+      first = findloc(open, 3, dim=1)
+      if (first == 0) return
+      last = first
+      do while (last < s%n)
+        if (open(last + 1) /= 3) exit
+        last = last + 1
+      end do
+      c0 = centre(s, vb%body%com, first)
+      w0 = s%body_omega(:, 1, first)
+      v0 = s%body_v(:, 1, first) + cross(w0, c0 - s%body_r(:, 1, first))
+      worst_r = 0
+      worst_v = 0
+      worst_w = 0
+      do i = first, last
+        tau = s%time(i) - s%time(first)
+        c = centre(s, vb%body%com, i)
+        vc = s%body_v(:, 1, i) + cross(s%body_omega(:, 1, i), c - s%body_r(:, 1, i))
+        worst_r = max(worst_r, norm2(c - (c0 + v0*tau + [0.0_wp, 0.0_wp, -g]*tau**2/2)))
+        worst_v = max(worst_v, norm2(vc - (v0 + [0.0_wp, 0.0_wp, -g]*tau)))
+        worst_w = max(worst_w, norm2(s%body_omega(:, 1, i) - w0))
+      end do
+      print '(a, i0, a, 3es10.2)', 'jump: whole flight over ', last - first + 1, ' records; parabola, speed, '// &
+        'turn rate off by ', worst_r, worst_v, worst_w
+      call check(last > first + 5, 'jump: the whole flight spans records')
+      call check(worst_r <= 1e-7_wp, 'jump: the centre of mass on the parabola from the take-off')
+      call check(worst_v <= 1e-6_wp, 'jump: its velocity v0 + g t')
+      call check(worst_w <= 1e-6_wp, 'jump: it turns at a constant rate')
+      ! the landing that ends it: the projectile meeting the 20 deg straight
+      ! (its bottom line: the point and normal at v = pi/2 under the foot)
+      k = findloc(sys%flights%landing%time, s%time(last), dim=1)
+      call check(k > 0, 'jump: the whole flight ends at a landing')
+      if (k == 0) return
+      contact = sys%flights%landing(k)%contact
+      t_land = sys%flights%landing(k)%time
+      call slide%evaluate(s%q(1, last) + 0.5_wp, 1.5707963267948966_wp, 1, pt, st)
+      normal = cross(pt%ru, pt%rv)
+      normal = normal/norm2(normal)
+      if (normal(3) < 0) normal = -normal
+      base = pt%r
+      call projectile_landing(s%body_r(:, 1, first), s%body_rot(:, :, 1, first), c0, v0, w0, vb%length, contact, &
+                              normal, base, t_hit, speed_hit)
+      call check_close(s%time(first) + t_hit, t_land, 0.0_wp, 1e-7_wp, 'jump: the landing time of the projectile')
+      call check_close(sys%flights%landing(k)%normal_speed, speed_hit, 1e-6_wp, 0.0_wp, &
+                       'jump: the landing speed of the projectile')
+    end associate
+  end subroutine jump
+
+  !> The vehicle's centre of mass at record i of s (the bar frame's pose;
+  !> com: its place in the bar frame).
+  function centre(s, com, i) result(c)
+    type(mechanism_series_t), intent(in) :: s
+    real(wp), intent(in) :: com(3)
+    integer, intent(in) :: i
+    real(wp) :: c(3)
+    c = s%body_r(:, 1, i) + matmul(s%body_rot(:, :, 1, i), com)
+  end function centre
+
+  !> The free rigid body from its take-off (the bar frame's origin o0 and
+  !> axes rot0, centre of mass c0 with velocity v0, angular velocity w0,
+  !> gravity alone): when contact k's point (1: the bar's origin, 2: length
+  !> along its x) meets the plane through `base` with `normal`, and its
+  !> approach speed there. The point is c(t) + R(w0 t) (p0 - c0) (Rodrigues);
+  !> its height above the plane falls through zero: bisection to 1e-13 s.
+  subroutine projectile_landing(o0, rot0, c0, v0, w0, length, k, normal, base, t_hit, speed)
+    real(wp), intent(in) :: o0(3), rot0(3, 3), c0(3), v0(3), w0(3), length, normal(3), base(3)
+    integer, intent(in) :: k
+    real(wp), intent(out) :: t_hit, speed
+    real(wp) :: p0(3), a, b, m
+    integer :: i
+    p0 = o0 + merge(0.0_wp, length, k == 1)*rot0(:, 1)
+    a = 0
+    b = 0.01_wp
+    do while (height(b, c0, v0, w0, p0, normal, base) > 0 .and. b < 10)
+      a = b
+      b = b + 0.01_wp
+    end do
+    do i = 1, 200
+      m = (a + b)/2
+      if (height(m, c0, v0, w0, p0, normal, base) > 0) then
+        a = m
+      else
+        b = m
+      end if
+      if (b - a < 1e-13_wp) exit
+    end do
+    t_hit = (a + b)/2
+    speed = -dot_product(normal, v0 + [0.0_wp, 0.0_wp, -g]*t_hit + cross(w0, turned(p0 - c0, w0, t_hit)))
+  end subroutine projectile_landing
+
+  !> The height above the plane (base, normal) at time t of the point p0
+  !> of the free body of projectile_landing.
+  real(wp) function height(t, c0, v0, w0, p0, normal, base)
+    real(wp), intent(in) :: t, c0(3), v0(3), w0(3), p0(3), normal(3), base(3)
+    height = dot_product(normal, c0 + v0*t + [0.0_wp, 0.0_wp, -g]*t**2/2 + turned(p0 - c0, w0, t) - base)
+  end function height
+
+  !> x turned at the constant angular velocity w0 for the time t (Rodrigues).
+  function turned(x, w0, t) result(r)
+    real(wp), intent(in) :: x(3), w0(3), t
+    real(wp) :: r(3), axis(3), angle
+    r = x
+    if (norm2(w0) == 0) return
+    angle = norm2(w0)*t
+    axis = w0/norm2(w0)
+    r = x*cos(angle) + cross(axis, x)*sin(angle) + axis*dot_product(axis, x)*(1 - cos(angle))
+  end function turned
+end program test_vehicle_flight
