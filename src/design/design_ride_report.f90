@@ -166,11 +166,7 @@ contains
                             report%verdicts(k))
         cycle
       case ('airtime', 'drop_height')
-        if (present(flights)) then
-          call judge_flights(limits(k), where(1), report%verdicts(k), flights)
-        else
-          call judge_flights(limits(k), where(1), report%verdicts(k))
-        end if
+        call judge_flights(limits(k), where(1), report%verdicts(k), flights)
         cycle
       case default
         report%judged(k) = .false.

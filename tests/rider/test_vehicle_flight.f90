@@ -149,7 +149,7 @@ contains
     type(status_t) :: st
     type(surface_point_t) :: pt
     real(wp), allocatable :: q0(:), qd0(:), y(:)
-    real(wp) :: c0(3), v0(3), w0(3), r0(3), c(3), vc(3), tau, worst_r, worst_v, worst_w, jump_r, jump_v
+    real(wp) :: c0(3), v0(3), w0(3), c(3), vc(3), tau, worst_r, worst_v, worst_w, jump_r, jump_v
     real(wp) :: normal(3), base(3), t_hit, speed_hit, t_land
     integer :: i, first, last, k, contact, switches
     gd%kind = 'slide'
