@@ -133,8 +133,9 @@ module io_declarations_multibody
       'lift-off ends the run'), &
     declaration_t(groups='sled', name='landing_restitution', unit='1', default='0', low=0.0_wp, high=1.0_wp, &
       meaning='restitution e of a vehicle''s landing (0: plastic; with may_fly only)'), &
-    declaration_t(groups='sled', name='landing_mu', unit='1', default='the friction''s mu, else 0', low=0.0_wp, &
-      high=10.0_wp, meaning='Coulomb mu during a vehicle''s landing (with may_fly only)'), &
+    declaration_t(groups='sled', name='landing_mu', unit='1', default='none', low=0.0_wp, high=10.0_wp, &
+      meaning='Coulomb mu during a vehicle''s landing (with may_fly only; none given: the friction law''s mu, '// &
+      'else 0)'), &
     declaration_t(groups='sled', name='drag_area', unit='m^2', default='0', low=0.0_wp, high=1e3_wp, &
       meaning='C_d A of the air''s quadratic drag on the bar at its centre of mass (docs/contact.md, Air drag; '// &
       '0: none)'), &
