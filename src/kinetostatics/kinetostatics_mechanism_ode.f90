@@ -96,6 +96,7 @@ module kinetostatics_mechanism_ode
     procedure :: record => mechanism_record
     procedure :: handle_event => mechanism_handle_event
     procedure :: diagnose => mechanism_diagnose
+    procedure :: positions_at
   end type mechanism_ode_t
 
   interface
@@ -246,6 +247,22 @@ contains
     self%rhs_g(:) = self%cache_g
     self%rhs_cached = .true.
   end subroutine mechanism_rhs
+
+  !> The positions at y for an extension's own roots (the flights' gaps):
+  !> kept where the mechanism's roots just set them (the closure converged
+  !> at the same independent coordinates), else solved again, warm from the
+  !> last solution (the stored root values then belong to another state).
+  !> A trial state the closure cannot reach returns the closure's status.
+  subroutine positions_at(self, y, status)
+    class(mechanism_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: y(:)
+    type(status_t), intent(inout) :: status
+    if (self%work%converged .and. all(self%work%scalars(self%mechanism%q)%q == y(1:self%mechanism%f))) return
+    call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), status)
+    if (.not. status%ok()) return
+    self%cached = .false.
+    self%rhs_cached = .false.
+  end subroutine positions_at
 
   !> Records the complete state (series of kinetostatics_recorder): the
   !> mechanism's evaluate at (t, y), which also evaluates its record-only

@@ -33,6 +33,7 @@ module rider_flight
   use rider_body, only: rigid_body_t
   implicit none (type, external)
   private
+  public :: landing_record, quick_landings_exceeded, count_switch
   public :: rider_landing_t, ride_flights_t, contact_gap, contact_gap_rate, full_state, build_state, &
     contact_impact, add_landing, highest_drop, full_scalars, set_holds, centre_of_mass, N_FULL
 
@@ -40,6 +41,13 @@ module rider_flight
   !> start rises v^2/(2 g) ~ 5e-8 m: below any slide's tolerance; it also
   !> ends a restitution's endless bounces, e^k v0).
   real(wp), parameter, public :: close_speed = 1e-3_wp
+
+  !> Landings within quick_flight (s) of their take-off, more than
+  !> max_quick_landings in a row, end the run (a contact neither stays on
+  !> nor leaves: a chatter the model cannot resolve): the rider's and the
+  !> vehicle's.
+  real(wp), parameter, public :: quick_flight = 1e-9_wp
+  integer, parameter, public :: max_quick_landings = 5
 
   !> The coordinates of the full layout: u_B, v_B, phi_B, phi_U, phi_O, h.
   integer, parameter :: N_FULL = 6
@@ -235,6 +243,78 @@ contains
     height = flights%landing(k)%drop_height
     arc_length = flights%landing(k)%arc_length
   end subroutine highest_drop
+
+  !> A landing's record from its impact and the closing impulse after it
+  !> (at contact c, time t, arc_length of its foot point, |g| gravity).
+  pure function landing_record(t, c, arc_length, impact, closing, closing_energy, closed, gravity) result(landing)
+    real(wp), intent(in) :: t, arc_length, closing(3), closing_energy, gravity
+    integer, intent(in) :: c
+    type(impact_outcome_t), intent(in) :: impact
+    logical, intent(in) :: closed
+    type(rider_landing_t) :: landing
+    landing%time = t
+    landing%contact = c
+    landing%arc_length = arc_length
+    landing%normal_speed = -impact%normal_speed_before
+    landing%impulse = norm2(impact%impulse + closing)
+    landing%normal_impulse = impact%normal_impulse + norm2(closing)
+    landing%drop_height = landing%normal_speed**2/(2*gravity)
+    landing%energy_lost = impact%energy_lost + closing_energy
+    landing%closed = closed
+  end function landing_record
+
+  !> Counts a landing `flight_time` after its take-off in the row of quick
+  !> ones (a slower one ends the row); true when the row has grown past
+  !> max_quick_landings.
+  logical function quick_landings_exceeded(row, flight_time) result(exceeded)
+    integer, intent(inout) :: row
+    real(wp), intent(in) :: flight_time
+    if (flight_time < quick_flight) then
+      row = row + 1
+    else
+      row = 0
+    end if
+    exceeded = row > max_quick_landings
+  end function quick_landings_exceeded
+
+  !> The flights' counts and airtimes after a switch at t from the open
+  !> contacts `before` to `now` (bit masks; all_open: every contact open): a
+  !> flight starts when the first contact opens and ends when the last one
+  !> closes, a whole flight likewise with every contact open; arc_length is
+  !> where the body is at the switch.
+  subroutine count_switch(flights, before, now, all_open, t, arc_length)
+    type(ride_flights_t), intent(inout) :: flights
+    integer, intent(in) :: before, now, all_open
+    real(wp), intent(in) :: t, arc_length
+    real(wp) :: airtime
+    associate (fl => flights)
+      if (before == 0 .and. now /= 0) then
+        fl%flights = fl%flights + 1
+        fl%take_off_time = t
+        fl%take_off_arc_length = arc_length
+      else if (before /= 0 .and. now == 0) then
+        airtime = t - fl%take_off_time
+        fl%airtime = fl%airtime + airtime
+        if (airtime > fl%longest) then
+          fl%longest = airtime
+          fl%longest_time = fl%take_off_time
+          fl%longest_arc_length = fl%take_off_arc_length
+        end if
+      end if
+      if (before /= all_open .and. now == all_open) then
+        fl%whole_flights = fl%whole_flights + 1
+        fl%whole_take_off_time = t
+        fl%whole_take_off_arc_length = arc_length
+      else if (before == all_open .and. now /= all_open) then
+        airtime = t - fl%whole_take_off_time
+        fl%whole_airtime = fl%whole_airtime + airtime
+        if (airtime > fl%whole_longest) then
+          fl%whole_longest = airtime
+          fl%whole_longest_arc_length = fl%whole_take_off_arc_length
+        end if
+      end if
+    end associate
+  end subroutine count_switch
 
   !> Adds a landing to the ride's flights (grown by one).
   subroutine add_landing(flights, landing)

@@ -66,11 +66,6 @@ module rider_ride
   integer, parameter :: SWITCH_NONE = 0, SWITCH_TAKE_OFF = 1, SWITCH_LANDING = 2
   ! opening_gap, sink_gap: kinetostatics_point_impact (the gap's root
   ! after a take-off)
-  !> landings within quick_flight of their take-off, in a row, that end the
-  !> ride (the heels neither stay on nor leave: a chatter the model cannot
-  !> resolve)
-  real(wp), parameter :: quick_flight = 1e-9_wp
-  integer, parameter :: max_quick_landings = 5
 
   type :: ride_options_t
     !> thesis B.7 tolerances; the step is capped at 0.05 s: each closure starts

@@ -4,7 +4,7 @@
 !> through.
 submodule (rider_ride) rider_ride_flight
   use rider_flight_builds, only: use_build
-  use rider_flight, only: contact_gap_rate
+  use rider_flight, only: contact_gap_rate, landing_record, quick_landings_exceeded, quick_flight, count_switch
   use kinetostatics_point_impact, only: gap_root
   implicit none (type, external)
 
@@ -31,17 +31,9 @@ contains
     if (.not. self%may_fly) return
     g(n + 1:n + N_CONTACTS + 2) = 1
     if (self%fly%open_mask == 0) return
-    ! the positions at y: the mechanism's roots just evaluated them unless
-    ! stored values served (then another state's are set), else the closure
-    ! (warm from the last solution); a trial state the closure cannot reach
-    ! keeps the last value
-    if (.not. (self%work%converged .and. &
-               all(self%work%scalars(self%mechanism%q)%q == y(1:self%mechanism%f)))) then
-      call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), st)
-      if (.not. st%ok()) return
-      self%cached = .false.
-      self%rhs_cached = .false.
-    end if
+    ! the positions at y; a trial state the closure cannot reach keeps the last value
+    call self%positions_at(y, st)
+    if (.not. st%ok()) return
     do k = 1, N_CONTACTS
       if (.not. btest(self%fly%open_mask, k - 1)) cycle
       g(n + k) = gap_root(contact_gap(self%work, self%layout, k), self%opened(k))
@@ -117,21 +109,9 @@ contains
       call contact_impact(self%mechanism, self%work, self%layout, c, y_open, self%landing, impact, closed, closing, &
                           closing_energy, status)
       if (.not. status%ok()) return
-      landing%time = t
-      landing%contact = c
-      landing%arc_length = self%slide%arc_length(self%work%scalars(self%layout%u(c))%q)
-      landing%normal_speed = -impact%normal_speed_before
-      landing%impulse = norm2(impact%impulse + closing)
-      landing%normal_impulse = impact%normal_impulse + norm2(closing)
-      landing%drop_height = landing%normal_speed**2/(2*self%gravity)
-      landing%energy_lost = impact%energy_lost + closing_energy
-      landing%closed = closed
-      if (t - self%take_off_time(c) < quick_flight) then
-        self%quick_landings = self%quick_landings + 1
-      else
-        self%quick_landings = 0
-      end if
-      if (self%quick_landings > max_quick_landings) then
+      landing = landing_record(t, c, self%slide%arc_length(self%work%scalars(self%layout%u(c))%q), impact, &
+                               closing, closing_energy, closed, self%gravity)
+      if (quick_landings_exceeded(self%quick_landings, t - self%take_off_time(c))) then
         call set_status(status, STATUS_DOMAIN, 'the '//trim(contact_names(c))//' neither stay on the slide nor '// &
                         'leave it (landing after landing within '//format_short(quick_flight)//' s)'//' at t = '// &
                         format_short(t)//' s')
@@ -172,38 +152,15 @@ contains
     integer, intent(in) :: before
     real(wp), intent(in) :: t
     integer, parameter :: all_open = 2**N_CONTACTS - 1
-    real(wp) :: airtime, com(3), velocity(3)
-    associate (fl => self%flights, now => self%fly%open_mask)
-      if (before == 0 .and. now /= 0) then
-        fl%flights = fl%flights + 1
-        fl%take_off_time = t
-        fl%take_off_arc_length = self%slide%arc_length(self%work%scalars(self%layout%u(CONTACT_PELVIS))%q)
-      else if (before /= 0 .and. now == 0) then
-        airtime = t - fl%take_off_time
-        fl%airtime = fl%airtime + airtime
-        if (airtime > fl%longest) then
-          fl%longest = airtime
-          fl%longest_time = fl%take_off_time
-          fl%longest_arc_length = fl%take_off_arc_length
-        end if
-      end if
-      if (before /= all_open .and. now == all_open) then
-        fl%whole_flights = fl%whole_flights + 1
-        fl%whole_take_off_time = t
-        fl%whole_take_off_arc_length = self%slide%arc_length(self%work%scalars(self%layout%u(CONTACT_PELVIS))%q)
-        ! the switch evaluated the new build's positions and velocities
-        call centre_of_mass(self%work, self%layout, com, velocity)
-        fl%whole_take_off_com = com
-        fl%whole_take_off_velocity = velocity
-      else if (before == all_open .and. now /= all_open) then
-        airtime = t - fl%whole_take_off_time
-        fl%whole_airtime = fl%whole_airtime + airtime
-        if (airtime > fl%whole_longest) then
-          fl%whole_longest = airtime
-          fl%whole_longest_arc_length = fl%whole_take_off_arc_length
-        end if
-      end if
-    end associate
+    real(wp) :: com(3), velocity(3)
+    call count_switch(self%flights, before, self%fly%open_mask, all_open, t, &
+                      self%slide%arc_length(self%work%scalars(self%layout%u(CONTACT_PELVIS))%q))
+    if (before /= all_open .and. self%fly%open_mask == all_open) then
+      ! the switch evaluated the new build's positions and velocities
+      call centre_of_mass(self%work, self%layout, com, velocity)
+      self%flights%whole_take_off_com = com
+      self%flights%whole_take_off_velocity = velocity
+    end if
   end subroutine count_flights
 
   !> The flights' highest point: the open contacts' largest gap above the

@@ -43,7 +43,8 @@ module rider_vehicle_flight
   use kinetostatics_models, only: sled_description_t
   use kinetostatics_impact, only: impact_outcome_t
   use kinetostatics_point_impact, only: point_gap, point_impact, gap_root
-  use rider_flight, only: ride_flights_t, rider_landing_t, add_landing, close_speed
+  use rider_flight, only: ride_flights_t, rider_landing_t, add_landing, close_speed, landing_record, &
+    quick_landings_exceeded, quick_flight, count_switch
   use rider_vehicle, only: vehicle_t, build_vehicle_model, vehicle_ride_figures
   use water_field, only: water_field_t
   implicit none (type, external)
@@ -55,11 +56,6 @@ module rider_vehicle_flight
   integer, parameter :: N_FULL = 5   ! u, v, phi, pitch, rear_lift
   character(len=*), parameter :: full_names(N_FULL) = [character(len=9) :: 'u', 'v', 'phi', 'pitch', 'rear_lift']
   integer, parameter :: SWITCH_NONE = 0, SWITCH_TAKE_OFF = 1, SWITCH_LANDING = 2
-  !> landings within quick_flight of their take-off, in a row, that end the
-  !> run (a contact neither stays on nor leaves: a chatter the model cannot
-  !> resolve), as the rider's
-  real(wp), parameter :: quick_flight = 1e-9_wp
-  integer, parameter :: max_quick_landings = 5
 
   !> The vehicle's integration with its four builds.
   type, extends(mechanism_ode_t) :: vehicle_flight_ode_t
@@ -160,15 +156,9 @@ contains
     call self%mechanism_ode_t%roots(t, y, g(1:n))
     g(n + 1:) = 1
     if (self%open_mask == 0) return
-    ! the positions at y: the mechanism's roots just set them unless stored
-    ! values served; a trial state the closure cannot reach keeps the last
-    if (.not. (self%work%converged .and. &
-               all(self%work%scalars(self%mechanism%q)%q == y(1:self%mechanism%f)))) then
-      call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), st)
-      if (.not. st%ok()) return
-      self%cached = .false.
-      self%rhs_cached = .false.
-    end if
+    ! the positions at y; a trial state the closure cannot reach keeps the last value
+    call self%positions_at(y, st)
+    if (.not. st%ok()) return
     do k = 1, 2
       if (btest(self%open_mask, k - 1)) g(n + k) = gap_root(point_gap(self%work, self%point(k), self%foot(k)), &
                                                              self%opened(k))
@@ -320,21 +310,8 @@ contains
                         ' contact', y_open, self%vehicle%landing, close_speed, impact, closed, closing, &
                         closing_energy, status)
       if (.not. status%ok()) return
-      landing%time = t
-      landing%contact = c
-      landing%arc_length = where_foot(self, c)
-      landing%normal_speed = -impact%normal_speed_before
-      landing%impulse = norm2(impact%impulse + closing)
-      landing%normal_impulse = impact%normal_impulse + norm2(closing)
-      landing%drop_height = landing%normal_speed**2/(2*self%gravity)
-      landing%energy_lost = impact%energy_lost + closing_energy
-      landing%closed = closed
-      if (t - self%take_off_time(c) < quick_flight) then
-        self%quick_landings = self%quick_landings + 1
-      else
-        self%quick_landings = 0
-      end if
-      if (self%quick_landings > max_quick_landings) then
+      landing = landing_record(t, c, where_foot(self, c), impact, closing, closing_energy, closed, self%gravity)
+      if (quick_landings_exceeded(self%quick_landings, t - self%take_off_time(c))) then
         call set_status(status, STATUS_DOMAIN, 'the '//trim(vehicle_contact_names(c))//' contact neither stays on '// &
                         'the slide nor leaves it (landing after landing within '//format_short(quick_flight)//' s)')
         return
@@ -498,33 +475,6 @@ contains
     type(vehicle_flight_ode_t), intent(inout) :: self
     integer, intent(in) :: before, now
     real(wp), intent(in) :: t
-    real(wp) :: airtime
-    associate (fl => self%flights)
-      if (before == 0 .and. now /= 0) then
-        fl%flights = fl%flights + 1
-        fl%take_off_time = t
-        fl%take_off_arc_length = where_now(self)
-      else if (before /= 0 .and. now == 0) then
-        airtime = t - fl%take_off_time
-        fl%airtime = fl%airtime + airtime
-        if (airtime > fl%longest) then
-          fl%longest = airtime
-          fl%longest_time = fl%take_off_time
-          fl%longest_arc_length = fl%take_off_arc_length
-        end if
-      end if
-      if (before /= 3 .and. now == 3) then
-        fl%whole_flights = fl%whole_flights + 1
-        fl%whole_take_off_time = t
-        fl%whole_take_off_arc_length = where_now(self)
-      else if (before == 3 .and. now /= 3) then
-        airtime = t - fl%whole_take_off_time
-        fl%whole_airtime = fl%whole_airtime + airtime
-        if (airtime > fl%whole_longest) then
-          fl%whole_longest = airtime
-          fl%whole_longest_arc_length = fl%whole_take_off_arc_length
-        end if
-      end if
-    end associate
+    call count_switch(self%flights, before, now, 3, t, where_now(self))
   end subroutine count_flights
 end module rider_vehicle_flight
