@@ -51,6 +51,7 @@ module geometry_drop_profile
   contains
     procedure :: deviation => drop_deviation
     procedure :: pitch_sine => drop_pitch_sine
+    procedure :: gradient_deviation => drop_gradient_deviation
   end type drop_profile_t
 
 contains
@@ -212,6 +213,18 @@ contains
     lo = node_below(self%node, s)
     dint = (self%g_top - self%g_exit)*self%fall + self%excess(lo) + excess_integral(self, self%node(lo), s)
   end subroutine drop_deviation
+
+  !> drop_deviation's dg(0) alone, g - g_exit at sigma (the chain's arc
+  !> length needs only the gradient).
+  pure real(wp) function drop_gradient_deviation(self, sigma) result(dg)
+    class(drop_profile_t), intent(in) :: self
+    real(wp), intent(in) :: sigma
+    real(wp) :: q(0:3)
+    dg = 0
+    if (sigma >= self%total) return
+    call self%pitch_sine(sigma, q)
+    dg = q(0)/sqrt(1 - q(0)**2) - self%g_exit
+  end function drop_gradient_deviation
 
   !> Smoothstep S(t) and its t-derivatives (d(0:3)) and its integral P(t) =
   !> int_0^t S, with S = 0 for t < 0 and 1 for t > 1 (P continued).

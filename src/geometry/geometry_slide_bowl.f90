@@ -87,6 +87,7 @@ module geometry_slide_bowl
     procedure :: place => bowl_place
     procedure :: deviation => bowl_deviation
     procedure :: heading => bowl_heading
+    procedure :: gradient_deviation => bowl_gradient_deviation
     procedure :: own => bowl_own
     procedure :: radius_at => bowl_radius_at
     procedure :: height_above_bottom => bowl_height_above_bottom
@@ -492,6 +493,22 @@ contains
     end do
     dpsi = self%psi(lo) + 0.5_wp*(sigma - a)*x
   end function bowl_heading
+
+  !> What the bowl adds to g at sigma: bowl_deviation's dg(0) alone,
+  !> (g_b - g_ref) W_b (the chain's arc length needs only the gradient).
+  pure real(wp) function bowl_gradient_deviation(self, sigma) result(dg)
+    class(bowl_spiral_t), intent(in) :: self
+    real(wp), intent(in) :: sigma
+    real(wp) :: w, f(0:3)
+    dg = 0
+    if (self%width_in > 0 .and. sigma <= self%lo) return
+    if (self%width_out > 0 .and. sigma >= self%hi) return
+    w = 1
+    if (self%width_in > 0) w = smoothstep_value((sigma - self%lo)/self%width_in)
+    if (self%width_out > 0) w = w - smoothstep_value((sigma - (self%hi - self%width_out))/self%width_out)
+    call profile_slope(self, self%radius_at(sigma), f)
+    dg = (self%sin_beta*f(0) - self%grad_ref)*w
+  end function bowl_gradient_deviation
 
   !> blended's dk(0) alone, (kappa_b - kappa_ref) W_b, by the same operations.
   pure real(wp) function blended_curvature(self, sigma) result(dk)

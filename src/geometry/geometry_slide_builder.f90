@@ -251,8 +251,7 @@ contains
     n = max(degree + 1, ceiling(chain%total/spacing) + 1)
     allocate (pts(3, n))
     do i = 1, n
-      call chain%evaluate(chain%total*(i - 1)/real(n - 1, wp), 0, p, status)
-      pts(:, i) = p%d(:, 0)
+      pts(:, i) = chain%quadrature_point(chain%total*(i - 1)/real(n - 1, wp))
     end do
     call chain%evaluate(0.0_wp, 1, p, status)
     call chain%evaluate(chain%total, 1, q, status)

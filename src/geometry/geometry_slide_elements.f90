@@ -34,8 +34,21 @@
 !> blended in by its joints' windows (geometry_slide_bowl).
 !> Heading psi = int kappa and height z = z0 - int g are closed-form; x and y
 !> are int [cos psi, sin psi] dsigma, tabulated at nodes every 0.5 m and
-!> completed by 8-point Gauss-Legendre from the nearest node (no allocation,
-!> exact to ~1e-14 m). Derivatives are closed-form:
+!> completed from the nearest node: where the heading is linear over the
+!> node's half-steps (no transition that changes kappa, no bowl: a straight,
+!> a curve's or a helix's arc, a drop) by the chord of the arc,
+!>   int_a^u [cos psi, sin psi] = (u - a) sinc(kappa (u - a)/2) [cos, sin](psi_mid),
+!> the direction [cos, sin](psi_mid) the bisector of the node's and u's
+!> (kept per node; exact to rounding), elsewhere by 8-point Gauss-Legendre
+!> of the heading from the node (no allocation), where one transition alone
+!> reaches in of the node's heading plus that transition's ramp. The
+!> quadrature is exact to ~1e-14 m where the heading is smooth on the scale
+!> of a half-step, not across a transition's ramp: there the nodes' values
+!> and the completions jump by ~2e-10 m at 2 m transitions (~5e-7 m at 0.3
+!> m; test_slide_chain_evaluation, bench/README.md "The exact chain made
+!> cheap"). The fits of the chain (geometry_slide_builder) take their points
+!> by the quadrature everywhere (quadrature_point), as they always have.
+!> Derivatives are closed-form:
 !>   c' = [cos psi, sin psi, -g], c'' = [-k sin psi, k cos psi, -g'],
 !>   c''' = [-k^2 cos psi - k' sin psi, -k^2 sin psi + k' cos psi, -g''],
 !>   c'''' = [k^3 sin psi - 3 k k' cos psi - k'' sin psi,
@@ -48,7 +61,7 @@ module geometry_slide_elements
   use base_text, only: format_integer
   use numerics_quadrature, only: gl8_x, gl8_w
   use geometry_curve, only: curve_t, curve_point_t, panel_arc_length, arc_length_prefix
-  use geometry_drop_profile, only: drop_profile_t, new_drop_profile, smoothstep, smoothstep_integral
+  use geometry_drop_profile, only: drop_profile_t, new_drop_profile, smoothstep, smoothstep_value, smoothstep_integral
   use geometry_slide_bowl, only: bowl_spiral_t, new_bowl_spiral
   implicit none (type, external)
   private
@@ -83,6 +96,15 @@ module geometry_slide_elements
     real(wp), allocatable :: width(:)       ! m, transition length at each joint
     real(wp), allocatable :: ends(:)        ! m, sigma at the end of each element
     real(wp), allocatable :: node_xy(:, :)  ! m, x, y at sigma = k*node_step
+    ! how x, y are completed from each node over its half-steps (chain_evaluate):
+    ! node_kind 0 the chord (the heading linear there), j > 0 the quadrature of
+    ! the heading from the node with joint j's transition alone reaching in,
+    ! -1 the quadrature of the whole heading (bowls, several transitions)
+    integer, allocatable :: node_kind(:)
+    real(wp), allocatable :: node_psi(:)    ! rad, the heading at each node
+    real(wp), allocatable :: node_dir(:, :) ! its cos and sin
+    real(wp), allocatable :: node_kappa(:)  ! 1/m, kappa of the heading's linear part (kind >= 0)
+    real(wp), allocatable :: node_ramp(:)   ! the smoothstep's integral P(t) of joint node_kind at the node (kind > 0)
     real(wp) :: node_step = 0.5_wp
     real(wp) :: total = 0                   ! m, horizontal length
     logical :: starts_with_drop = .false.   ! element 1 is a drop
@@ -96,6 +118,8 @@ module geometry_slide_elements
     procedure :: element_at => chain_element_at
     procedure :: heading => chain_heading
     procedure :: arc_length => chain_arc_length
+    procedure :: speed => chain_speed
+    procedure :: quadrature_point => chain_quadrature_point
   end type element_chain_curve_t
 
 contains
@@ -108,7 +132,7 @@ contains
     real(wp), intent(in) :: start(3), heading_deg, transition
     type(status_t), intent(out) :: status
     type(element_chain_curve_t) :: c
-    integer :: n, i, k, nn, nb
+    integer :: n, i, j, k, nn, nb
     real(wp) :: len_h(size(elements)), sgn, a, b, xy(2), s
     character(len=16) :: idx
     character(len=:), allocatable :: why
@@ -284,6 +308,21 @@ contains
       end do
       c%node_xy(:, k) = c%node_xy(:, k - 1) + 0.5_wp*(b - a)*xy
     end do
+    ! how each node's half-steps are completed (chain_evaluate)
+    allocate (c%node_kind(0:nn), c%node_psi(0:nn), c%node_dir(2, 0:nn), c%node_kappa(0:nn), c%node_ramp(0:nn))
+    do k = 0, nn
+      s = k*c%node_step
+      c%node_psi(k) = chain_heading(c, s)
+      c%node_dir(:, k) = [cos(c%node_psi(k)), sin(c%node_psi(k))]
+      c%node_kind(k) = heading_kind(c, s - c%node_step/2, s + c%node_step/2)
+      c%node_kappa(k) = c%kappa(c%element_at(s))
+      c%node_ramp(k) = 0
+      if (c%node_kind(k) > 0) then
+        j = c%node_kind(k)
+        c%node_kappa(k) = c%kappa(j)
+        c%node_ramp(k) = smoothstep_integral((s - c%joint(j) + c%width(j)/2)/c%width(j))
+      end if
+    end do
     c%arc_prefix = arc_length_prefix(c)
 
   contains
@@ -327,6 +366,15 @@ contains
       dg = c%grad(j + 1) - c%grad(j)
       if (.not. w > 0) cycle              ! a sharp joint changes nothing (new_element_chain)
       t = (sigma - c%joint(j) + w/2)/w
+      if (t <= 0) cycle                   ! before the transition: S = 0 adds nothing
+      if (t >= 1) then                    ! after it: S = 1, smoothstep's values by its operations
+        ipart = w*(t - 0.5_wp)
+        k(0) = k(0) + dk
+        g(0) = g(0) + dg
+        psi = psi + dk*ipart
+        gint = gint + dg*ipart
+        cycle
+      end if
       call smoothstep(t, d, p)
       ipart = w*p                         ! int_{-inf}^{sigma} S
       do m = 0, 3
@@ -366,6 +414,7 @@ contains
       w = c%width(j)
       if (.not. w > 0) cycle
       t = (sigma - c%joint(j) + w/2)/w
+      if (t <= 0) cycle                   ! before the transition: nothing added
       psi = psi + (c%kappa(j + 1) - c%kappa(j))*(w*smoothstep_integral(t))
     end do
     if (.not. allocated(c%bowls)) return
@@ -389,28 +438,158 @@ contains
     integer, intent(in) :: order
     type(curve_point_t), intent(out) :: p
     type(status_t), intent(out) :: status
-    real(wp) :: psi, k(0:3), g(0:3), gint, cs, sn, xy(2), s, a
-    integer :: node, i
-      call profile(self, u, psi, k, g, gint)
-      node = nint(u/self%node_step)
-      node = max(0, min(node, ubound(self%node_xy, 2)))
-      a = node*self%node_step
-      xy = 0
-      do i = 1, 8
-        s = 0.5_wp*(a + u) + 0.5_wp*(u - a)*gl8_x(i)
-        xy = xy + gl8_w(i)*direction_xy(self, s)
-      end do
-      p%order = min(max(order, 0), 4)
-      p%d(1:2, 0) = self%node_xy(:, node) + 0.5_wp*(u - a)*xy
-      p%d(3, 0) = self%start(3) - gint
-      cs = cos(psi); sn = sin(psi)
-      if (order >= 1) p%d(:, 1) = [cs, sn, -g(0)]
-      if (order >= 2) p%d(:, 2) = [-k(0)*sn, k(0)*cs, -g(1)]
-      if (order >= 3) p%d(:, 3) = [-k(0)**2*cs - k(1)*sn, -k(0)**2*sn + k(1)*cs, -g(2)]
-      if (order >= 4) p%d(:, 4) = [k(0)**3*sn - 3*k(0)*k(1)*cs - k(2)*sn, &
-                                   -k(0)**3*cs - 3*k(0)*k(1)*sn + k(2)*cs, -g(3)]
+    real(wp) :: psi, k(0:3), g(0:3), gint, cs, sn, a, du, m(2)
+    integer :: node
+    call profile(self, u, psi, k, g, gint)
+    cs = cos(psi); sn = sin(psi)
+    node = nearest_node(self, u)
+    a = node*self%node_step
+    du = u - a
+    if (self%node_kind(node) == 0 .and. abs(du) <= self%node_step/2) then
+      ! the chord of the arc from the node: its direction the bisector of the
+      ! headings at both ends, its length du sinc(kappa du/2)
+      m = self%node_dir(:, node) + [cs, sn]
+      p%d(1:2, 0) = self%node_xy(:, node) + (du*sinc(0.5_wp*self%node_kappa(node)*du)/norm2(m))*m
+    else if (self%node_kind(node) > 0 .and. abs(du) <= self%node_step/2) then
+      p%d(1:2, 0) = transition_xy(self, u, node)
+    else
+      p%d(1:2, 0) = quadrature_xy(self, u, node)
+    end if
+    p%order = min(max(order, 0), 4)
+    p%d(3, 0) = self%start(3) - gint
+    if (order >= 1) p%d(:, 1) = [cs, sn, -g(0)]
+    if (order >= 2) p%d(:, 2) = [-k(0)*sn, k(0)*cs, -g(1)]
+    if (order >= 3) p%d(:, 3) = [-k(0)**2*cs - k(1)*sn, -k(0)**2*sn + k(1)*cs, -g(2)]
+    if (order >= 4) p%d(:, 4) = [k(0)**3*sn - 3*k(0)*k(1)*cs - k(2)*sn, &
+                                 -k(0)**3*cs - 3*k(0)*k(1)*sn + k(2)*cs, -g(3)]
     status%code = STATUS_OK
   end subroutine chain_evaluate
+
+  !> The node nearest to sigma (0 .. the last).
+  pure integer function nearest_node(c, sigma) result(node)
+    class(element_chain_curve_t), intent(in) :: c
+    real(wp), intent(in) :: sigma
+    node = nint(sigma/c%node_step)
+    node = max(0, min(node, ubound(c%node_xy, 2)))
+  end function nearest_node
+
+  !> x, y at sigma by 8-point Gauss-Legendre of the heading from `node`.
+  pure function quadrature_xy(c, sigma, node) result(xy)
+    class(element_chain_curve_t), intent(in) :: c
+    real(wp), intent(in) :: sigma
+    integer, intent(in) :: node
+    real(wp) :: xy(2)
+    real(wp) :: a, s, acc(2)
+    integer :: i
+    a = node*c%node_step
+    acc = 0
+    do i = 1, 8
+      s = 0.5_wp*(a + sigma) + 0.5_wp*(sigma - a)*gl8_x(i)
+      acc = acc + gl8_w(i)*direction_xy(c, s)
+    end do
+    xy = c%node_xy(:, node) + 0.5_wp*(sigma - a)*acc
+  end function quadrature_xy
+
+  !> quadrature_xy where joint j = node_kind(node) alone of the transitions
+  !> reaches into the node's half-steps (and no bowl): the heading there is
+  !> the node's plus its linear part and the ramp's,
+  !>   psi(s) = psi_node + kappa_j (s - a) + dkappa_j w_j (P(t(s)) - P(t(a))).
+  pure function transition_xy(c, sigma, node) result(xy)
+    class(element_chain_curve_t), intent(in) :: c
+    real(wp), intent(in) :: sigma
+    integer, intent(in) :: node
+    real(wp) :: xy(2)
+    real(wp) :: a, s, acc(2), psi, dk, w
+    integer :: i, j
+    j = c%node_kind(node)
+    a = node*c%node_step
+    w = c%width(j)
+    dk = (c%kappa(j + 1) - c%kappa(j))*w
+    acc = 0
+    do i = 1, 8
+      s = 0.5_wp*(a + sigma) + 0.5_wp*(sigma - a)*gl8_x(i)
+      psi = c%node_psi(node) + c%node_kappa(node)*(s - a) + &
+            dk*(smoothstep_integral((s - c%joint(j) + w/2)/w) - c%node_ramp(node))
+      acc = acc + gl8_w(i)*[cos(psi), sin(psi)]
+    end do
+    xy = c%node_xy(:, node) + 0.5_wp*(sigma - a)*acc
+  end function transition_xy
+
+  !> The point at u with x, y by the quadrature from the nearest node
+  !> wherever the heading is (the evaluation's chord differs from it by
+  !> rounding): the points the chain's fits take (geometry_slide_builder),
+  !> the same as before the chord.
+  pure function chain_quadrature_point(self, u) result(x)
+    class(element_chain_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp) :: x(3)
+    real(wp) :: psi, k(0:3), g(0:3), gint
+    call profile(self, u, psi, k, g, gint)
+    x(1:2) = quadrature_xy(self, u, nearest_node(self, u))
+    x(3) = self%start(3) - gint
+  end function chain_quadrature_point
+
+  !> sin(x)/x (1 at 0; the series below 0.1, error < 3e-18).
+  pure real(wp) function sinc(x)
+    real(wp), intent(in) :: x
+    real(wp) :: x2
+    if (abs(x) < 0.1_wp) then
+      x2 = x*x
+      sinc = 1 - x2/6*(1 - x2/20*(1 - x2/42*(1 - x2/72)))
+    else
+      sinc = sin(x)/x
+    end if
+  end function sinc
+
+  !> How the heading behaves over [lo, hi] (node_kind): 0 linear in sigma
+  !> (no transition that changes kappa reaches into it, nor any bowl: its
+  !> spiral and its windows, beyond the chain's end where it begins or ends
+  !> it), j > 0 joint j's transition alone reaches in, -1 otherwise.
+  pure integer function heading_kind(c, lo, hi) result(kind)
+    class(element_chain_curve_t), intent(in) :: c
+    real(wp), intent(in) :: lo, hi
+    real(wp) :: b_lo, b_hi
+    integer :: j
+    kind = -1
+    do j = 1, size(c%bowls)
+      b_lo = merge(-huge(1.0_wp), c%bowls(j)%lo, c%bowls(j)%width_in == 0)
+      b_hi = merge(huge(1.0_wp), c%bowls(j)%hi, c%bowls(j)%width_out == 0)
+      if (b_lo < hi .and. b_hi > lo) return
+    end do
+    kind = 0
+    do j = 1, size(c%joint)
+      if (.not. (c%width(j) > 0 .and. c%kappa(j + 1) /= c%kappa(j))) cycle
+      if (c%joint(j) - c%width(j)/2 < hi .and. c%joint(j) + c%width(j)/2 > lo) then
+        if (kind /= 0) then
+          kind = -1
+          return
+        end if
+        kind = j
+      end if
+    end do
+  end function heading_kind
+
+  !> |c_u| = sqrt(1 + g^2) at u (the arc length's integrand, geometry_curve):
+  !> the gradient alone, without the heading and the position.
+  pure real(wp) function chain_speed(self, u) result(speed)
+    class(element_chain_curve_t), intent(in) :: self
+    real(wp), intent(in) :: u
+    real(wp) :: g, w, t
+    integer :: j
+    g = self%grad(1)
+    do j = 1, size(self%joint)
+      w = self%width(j)
+      if (.not. w > 0) cycle
+      t = (u - self%joint(j) + w/2)/w
+      if (t <= 0) cycle
+      g = g + (self%grad(j + 1) - self%grad(j))*smoothstep_value(t)
+    end do
+    if (self%starts_with_drop) g = g + self%drop%gradient_deviation(u)
+    do j = 1, size(self%bowls)
+      g = g + self%bowls(j)%gradient_deviation(u)
+    end do
+    speed = sqrt(1 + g*g)
+  end function chain_speed
 
   pure subroutine chain_domain(self, u_min, u_max)
     class(element_chain_curve_t), intent(in) :: self
@@ -435,14 +614,11 @@ contains
     real(wp), intent(in) :: spacing
     real(wp), allocatable, intent(out) :: points(:, :), horizon(:, :), sigma(:)
     integer :: n, i
-    type(curve_point_t) :: p
-    type(status_t) :: st
     n = max(2, ceiling(chain%total/spacing) + 1)
     allocate (points(3, n), horizon(3, n), sigma(n))
     do i = 1, n
       sigma(i) = chain%total*(i - 1)/real(n - 1, wp)
-      call chain%evaluate(sigma(i), 0, p, st)
-      points(:, i) = p%d(:, 0)
+      points(:, i) = chain%quadrature_point(sigma(i))
       horizon(:, i) = [0.0_wp, 0.0_wp, 1.0_wp]
     end do
   end subroutine slide_points
