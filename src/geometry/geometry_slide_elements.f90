@@ -33,21 +33,23 @@
 !> kappa and g vary along it: it adds their deviations from its entry values,
 !> blended in by its joints' windows (geometry_slide_bowl).
 !> Heading psi = int kappa and height z = z0 - int g are closed-form; x and y
-!> are int [cos psi, sin psi] dsigma, tabulated at nodes every 0.5 m and
-!> completed from the nearest node: where the heading is linear over the
-!> node's half-steps (no transition that changes kappa, no bowl: a straight,
-!> a curve's or a helix's arc, a drop) by the chord of the arc,
-!>   int_a^u [cos psi, sin psi] = (u - a) sinc(kappa (u - a)/2) [cos, sin](psi_mid),
-!> the direction [cos, sin](psi_mid) the bisector of the node's and u's
-!> (kept per node; exact to rounding), elsewhere by 8-point Gauss-Legendre
-!> of the heading from the node (no allocation), where one transition alone
-!> reaches in of the node's heading plus that transition's ramp. The
-!> quadrature is exact to ~1e-14 m where the heading is smooth on the scale
-!> of a half-step, not across a transition's ramp: there the nodes' values
-!> and the completions jump by ~2e-10 m at 2 m transitions (~5e-7 m at 0.3
-!> m; test_slide_chain_evaluation, bench/README.md "The exact chain made
-!> cheap"). The fits of the chain (geometry_slide_builder) take their points
-!> by the quadrature everywhere (quadrature_point), as they always have.
+!> are int [cos psi, sin psi] dsigma, tabulated at knots and completed from
+!> the nearer knot of the span (geometry_slide_chain_xy): the knots lie every
+!> <= 0.5 m, and where a transition bends the heading at its window's ends
+!> and every w/16 inside it, so the 8-point Gauss-Legendre quadratures that
+!> make and complete the table never cross a window's end (where the
+!> heading is only C4) and span at most w/16 of a ramp; where the heading
+!> is linear the completion is the chord of the arc (exact to rounding).
+!> Positions are exact to ~1e-14 m everywhere, across the ramps too
+!> (test_slide_chain_evaluation against a fine reference quadrature).
+!> The fits of the chain (geometry_slide_builder) take their points from
+!> the table they always had (quadrature_point: nodes every 0.5 m, each by
+!> 8-point Gauss-Legendre over a whole node step, completed by the same
+!> quadrature from the nearest node), kept apart so the fitted slides stay
+!> the same to the bit: its quadratures across the windows' ends leave up
+!> to 2e-9 m with 1.5 to 2 m transitions, 1.6e-6 m with 0.3 m ones
+!> (carried on to the nodes after them; bench/README.md "The exact chain's
+!> positions exact"), small beside the fit's own error at 2 m.
 !> Derivatives are closed-form:
 !>   c' = [cos psi, sin psi, -g], c'' = [-k sin psi, k cos psi, -g'],
 !>   c''' = [-k^2 cos psi - k' sin psi, -k^2 sin psi + k' cos psi, -g''],
@@ -59,7 +61,6 @@ module geometry_slide_elements
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, set_status, STATUS_OK, STATUS_INVALID_INPUT
   use base_text, only: format_integer
-  use numerics_quadrature, only: gl8_x, gl8_w
   use geometry_curve, only: curve_t, curve_point_t, panel_arc_length, arc_length_prefix
   use geometry_drop_profile, only: drop_profile_t, new_drop_profile, smoothstep, smoothstep_value, smoothstep_integral
   use geometry_slide_bowl, only: bowl_spiral_t, new_bowl_spiral
@@ -95,16 +96,19 @@ module geometry_slide_elements
     real(wp), allocatable :: joint(:)       ! m, sigma of each joint (middle of its transition)
     real(wp), allocatable :: width(:)       ! m, transition length at each joint
     real(wp), allocatable :: ends(:)        ! m, sigma at the end of each element
-    real(wp), allocatable :: node_xy(:, :)  ! m, x, y at sigma = k*node_step
-    ! how x, y are completed from each node over its half-steps (chain_evaluate):
-    ! node_kind 0 the chord (the heading linear there), j > 0 the quadrature of
-    ! the heading from the node with joint j's transition alone reaching in,
-    ! -1 the quadrature of the whole heading (bowls, several transitions)
-    integer, allocatable :: node_kind(:)
-    real(wp), allocatable :: node_psi(:)    ! rad, the heading at each node
-    real(wp), allocatable :: node_dir(:, :) ! its cos and sin
-    real(wp), allocatable :: node_kappa(:)  ! 1/m, kappa of the heading's linear part (kind >= 0)
-    real(wp), allocatable :: node_ramp(:)   ! the smoothstep's integral P(t) of joint node_kind at the node (kind > 0)
+    real(wp), allocatable :: node_xy(:, :)  ! m, x, y at sigma = k*node_step: the fits' table (quadrature_point)
+    ! the evaluation's x, y (chain_evaluate, geometry_slide_chain_xy): knots
+    ! from 0 to total, span i from knot(i - 1) to knot(i)
+    real(wp), allocatable :: knot(:)        ! m, sigma of the knots (0:n)
+    real(wp), allocatable :: knot_xy(:, :)  ! m, x, y there
+    real(wp), allocatable :: knot_psi(:)    ! rad, the heading there
+    real(wp), allocatable :: knot_dir(:, :) ! its cos and sin
+    ! per span (1:n): 0 the heading linear (the chord), j > 0 within joint j's
+    ! window (the quadrature of the node's heading plus its ramp), -1 a bowl
+    ! reaches in (the quadrature of the whole heading)
+    integer, allocatable :: span_kind(:)
+    real(wp), allocatable :: span_kappa(:)  ! 1/m, kappa of the heading's linear part (kind >= 0)
+    integer, allocatable :: cell_knot(:)    ! the last knot at or below k*node_step (k = 0 .. cells)
     real(wp) :: node_step = 0.5_wp
     real(wp) :: total = 0                   ! m, horizontal length
     logical :: starts_with_drop = .false.   ! element 1 is a drop
@@ -122,6 +126,30 @@ module geometry_slide_elements
     procedure :: quadrature_point => chain_quadrature_point
   end type element_chain_curve_t
 
+  interface
+    ! the chain's x, y (geometry_slide_chain_xy)
+
+    !> Tabulates x, y: the fits' nodes and the evaluation's knots.
+    module subroutine build_xy_table(c)
+      type(element_chain_curve_t), intent(inout) :: c
+    end subroutine build_xy_table
+
+    !> x, y at sigma from the knots; dir the cos and sin of the heading there.
+    pure module function chain_xy(c, sigma, dir) result(xy)
+      class(element_chain_curve_t), intent(in) :: c
+      real(wp), intent(in) :: sigma, dir(2)
+      real(wp) :: xy(2)
+    end function chain_xy
+
+    !> x, y at sigma by 8-point Gauss-Legendre of the whole heading from a
+    !> (where x, y are xy_a).
+    pure module function heading_quadrature(c, a, xy_a, sigma) result(xy)
+      class(element_chain_curve_t), intent(in) :: c
+      real(wp), intent(in) :: a, xy_a(2), sigma
+      real(wp) :: xy(2)
+    end function heading_quadrature
+  end interface
+
 contains
 
   !> The chain of `elements` starting at `start` (m) with heading `heading_deg`
@@ -132,8 +160,8 @@ contains
     real(wp), intent(in) :: start(3), heading_deg, transition
     type(status_t), intent(out) :: status
     type(element_chain_curve_t) :: c
-    integer :: n, i, j, k, nn, nb
-    real(wp) :: len_h(size(elements)), sgn, a, b, xy(2), s
+    integer :: n, i, nb
+    real(wp) :: len_h(size(elements)), sgn, a, b
     character(len=16) :: idx
     character(len=:), allocatable :: why
     n = size(elements)
@@ -294,35 +322,7 @@ contains
         return
       end if
     end do
-    ! x, y at the nodes by Gauss-Legendre over each node interval
-    nn = ceiling(c%total/c%node_step)
-    allocate (c%node_xy(2, 0:nn))
-    c%node_xy(:, 0) = start(1:2)
-    do k = 1, nn
-      a = (k - 1)*c%node_step
-      b = k*c%node_step
-      xy = 0
-      do i = 1, 8
-        s = 0.5_wp*(a + b) + 0.5_wp*(b - a)*gl8_x(i)
-        xy = xy + gl8_w(i)*direction_xy(c, s)
-      end do
-      c%node_xy(:, k) = c%node_xy(:, k - 1) + 0.5_wp*(b - a)*xy
-    end do
-    ! how each node's half-steps are completed (chain_evaluate)
-    allocate (c%node_kind(0:nn), c%node_psi(0:nn), c%node_dir(2, 0:nn), c%node_kappa(0:nn), c%node_ramp(0:nn))
-    do k = 0, nn
-      s = k*c%node_step
-      c%node_psi(k) = chain_heading(c, s)
-      c%node_dir(:, k) = [cos(c%node_psi(k)), sin(c%node_psi(k))]
-      c%node_kind(k) = heading_kind(c, s - c%node_step/2, s + c%node_step/2)
-      c%node_kappa(k) = c%kappa(c%element_at(s))
-      c%node_ramp(k) = 0
-      if (c%node_kind(k) > 0) then
-        j = c%node_kind(k)
-        c%node_kappa(k) = c%kappa(j)
-        c%node_ramp(k) = smoothstep_integral((s - c%joint(j) + c%width(j)/2)/c%width(j))
-      end if
-    end do
+    call build_xy_table(c)
     c%arc_prefix = arc_length_prefix(c)
 
   contains
@@ -423,38 +423,16 @@ contains
     end do
   end function chain_heading
 
-  pure function direction_xy(c, sigma) result(xy)
-    class(element_chain_curve_t), intent(in) :: c
-    real(wp), intent(in) :: sigma
-    real(wp) :: xy(2)
-    real(wp) :: psi
-    psi = chain_heading(c, sigma)
-    xy = [cos(psi), sin(psi)]
-  end function direction_xy
-
   pure subroutine chain_evaluate(self, u, order, p, status)
     class(element_chain_curve_t), intent(in) :: self
     real(wp), intent(in) :: u
     integer, intent(in) :: order
     type(curve_point_t), intent(out) :: p
     type(status_t), intent(out) :: status
-    real(wp) :: psi, k(0:3), g(0:3), gint, cs, sn, a, du, m(2)
-    integer :: node
+    real(wp) :: psi, k(0:3), g(0:3), gint, cs, sn
     call profile(self, u, psi, k, g, gint)
     cs = cos(psi); sn = sin(psi)
-    node = nearest_node(self, u)
-    a = node*self%node_step
-    du = u - a
-    if (self%node_kind(node) == 0 .and. abs(du) <= self%node_step/2) then
-      ! the chord of the arc from the node: its direction the bisector of the
-      ! headings at both ends, its length du sinc(kappa du/2)
-      m = self%node_dir(:, node) + [cs, sn]
-      p%d(1:2, 0) = self%node_xy(:, node) + (du*sinc(0.5_wp*self%node_kappa(node)*du)/norm2(m))*m
-    else if (self%node_kind(node) > 0 .and. abs(du) <= self%node_step/2) then
-      p%d(1:2, 0) = transition_xy(self, u, node)
-    else
-      p%d(1:2, 0) = quadrature_xy(self, u, node)
-    end if
+    p%d(1:2, 0) = chain_xy(self, u, [cs, sn])
     p%order = min(max(order, 0), 4)
     p%d(3, 0) = self%start(3) - gint
     if (order >= 1) p%d(:, 1) = [cs, sn, -g(0)]
@@ -473,48 +451,6 @@ contains
     node = max(0, min(node, ubound(c%node_xy, 2)))
   end function nearest_node
 
-  !> x, y at sigma by 8-point Gauss-Legendre of the heading from `node`.
-  pure function quadrature_xy(c, sigma, node) result(xy)
-    class(element_chain_curve_t), intent(in) :: c
-    real(wp), intent(in) :: sigma
-    integer, intent(in) :: node
-    real(wp) :: xy(2)
-    real(wp) :: a, s, acc(2)
-    integer :: i
-    a = node*c%node_step
-    acc = 0
-    do i = 1, 8
-      s = 0.5_wp*(a + sigma) + 0.5_wp*(sigma - a)*gl8_x(i)
-      acc = acc + gl8_w(i)*direction_xy(c, s)
-    end do
-    xy = c%node_xy(:, node) + 0.5_wp*(sigma - a)*acc
-  end function quadrature_xy
-
-  !> quadrature_xy where joint j = node_kind(node) alone of the transitions
-  !> reaches into the node's half-steps (and no bowl): the heading there is
-  !> the node's plus its linear part and the ramp's,
-  !>   psi(s) = psi_node + kappa_j (s - a) + dkappa_j w_j (P(t(s)) - P(t(a))).
-  pure function transition_xy(c, sigma, node) result(xy)
-    class(element_chain_curve_t), intent(in) :: c
-    real(wp), intent(in) :: sigma
-    integer, intent(in) :: node
-    real(wp) :: xy(2)
-    real(wp) :: a, s, acc(2), psi, dk, w
-    integer :: i, j
-    j = c%node_kind(node)
-    a = node*c%node_step
-    w = c%width(j)
-    dk = (c%kappa(j + 1) - c%kappa(j))*w
-    acc = 0
-    do i = 1, 8
-      s = 0.5_wp*(a + sigma) + 0.5_wp*(sigma - a)*gl8_x(i)
-      psi = c%node_psi(node) + c%node_kappa(node)*(s - a) + &
-            dk*(smoothstep_integral((s - c%joint(j) + w/2)/w) - c%node_ramp(node))
-      acc = acc + gl8_w(i)*[cos(psi), sin(psi)]
-    end do
-    xy = c%node_xy(:, node) + 0.5_wp*(sigma - a)*acc
-  end function transition_xy
-
   !> The point at u with x, y by the quadrature from the nearest node
   !> wherever the heading is (the evaluation's chord differs from it by
   !> rounding): the points the chain's fits take (geometry_slide_builder),
@@ -524,50 +460,12 @@ contains
     real(wp), intent(in) :: u
     real(wp) :: x(3)
     real(wp) :: psi, k(0:3), g(0:3), gint
+    integer :: node
     call profile(self, u, psi, k, g, gint)
-    x(1:2) = quadrature_xy(self, u, nearest_node(self, u))
+    node = nearest_node(self, u)
+    x(1:2) = heading_quadrature(self, node*self%node_step, self%node_xy(:, node), u)
     x(3) = self%start(3) - gint
   end function chain_quadrature_point
-
-  !> sin(x)/x (1 at 0; the series below 0.1, error < 3e-18).
-  pure real(wp) function sinc(x)
-    real(wp), intent(in) :: x
-    real(wp) :: x2
-    if (abs(x) < 0.1_wp) then
-      x2 = x*x
-      sinc = 1 - x2/6*(1 - x2/20*(1 - x2/42*(1 - x2/72)))
-    else
-      sinc = sin(x)/x
-    end if
-  end function sinc
-
-  !> How the heading behaves over [lo, hi] (node_kind): 0 linear in sigma
-  !> (no transition that changes kappa reaches into it, nor any bowl: its
-  !> spiral and its windows, beyond the chain's end where it begins or ends
-  !> it), j > 0 joint j's transition alone reaches in, -1 otherwise.
-  pure integer function heading_kind(c, lo, hi) result(kind)
-    class(element_chain_curve_t), intent(in) :: c
-    real(wp), intent(in) :: lo, hi
-    real(wp) :: b_lo, b_hi
-    integer :: j
-    kind = -1
-    do j = 1, size(c%bowls)
-      b_lo = merge(-huge(1.0_wp), c%bowls(j)%lo, c%bowls(j)%width_in == 0)
-      b_hi = merge(huge(1.0_wp), c%bowls(j)%hi, c%bowls(j)%width_out == 0)
-      if (b_lo < hi .and. b_hi > lo) return
-    end do
-    kind = 0
-    do j = 1, size(c%joint)
-      if (.not. (c%width(j) > 0 .and. c%kappa(j + 1) /= c%kappa(j))) cycle
-      if (c%joint(j) - c%width(j)/2 < hi .and. c%joint(j) + c%width(j)/2 > lo) then
-        if (kind /= 0) then
-          kind = -1
-          return
-        end if
-        kind = j
-      end if
-    end do
-  end function heading_kind
 
   !> |c_u| = sqrt(1 + g^2) at u (the arc length's integrand, geometry_curve):
   !> the gradient alone, without the heading and the position.
