@@ -2,11 +2,15 @@
 !> point 2): inputs/geometry/*.nml, inputs/demo_slide/slide.nml (the demo
 !> slide of the ride, water, sweep, identification and sled inputs and of
 !> builtin:demo_slide, the default run's), inputs/design/second_slide.nml,
-!> (second_slide_water.nml's), inputs/parts/drop_slide.nml,
-!> inputs/parts/halfpipe_slide.nml and inputs/parts/bowl_slide.nml. Each description is written here by hand from
+!> (second_slide_water.nml's), the parts' slides (inputs/parts/*_slide.nml:
+!> drop, halfpipe, bowl, bowl_table, crest, jump, funnel, patch) and
+!> inputs/templates/geometry.nml; the list is tests/library/
+!> built_through_library.txt's. Each description is written by hand from
 !> its input file (the same values, in the same arithmetic as the reader:
-!> degrees times pi/180), the B-spline's points read from its CSV file by
-!> plain Fortran. This program links the geometry layer only (tests/
+!> degrees times pi/180; the slides of standard elements in tests/library/
+!> shipped_slides.f90, shared with library_without_io), the B-spline's
+!> points and the patch's offsets read from their CSV files by plain
+!> Fortran. This program links the geometry layer only (tests/
 !> CMakeLists.txt: no io module, no HDF5).
 !>
 !>     shipped_geometries [FOLDER]
@@ -23,9 +27,10 @@ program shipped_geometries
   use base_grid, only: evenly_spaced
   use base_status, only: status_t
   use geometry_surface, only: surface_t
-  use geometry_slide_elements, only: slide_element_t
   use geometry_slide_builder, only: section_part_description_t
   use geometry_description, only: geometry_description_t, patch_description_t, build_geometry
+  use shipped_slides, only: element, circle, demo_slide, template_slide, second_slide, drop_slide, &
+    halfpipe_slide, bowl_slide, bowl_table_slide, crest_slide, jump_slide, funnel_slide, patch_slide
   implicit none (type, external)
 
   character(len=4096) :: folder
@@ -47,6 +52,12 @@ program shipped_geometries
   call put('parts_drop_slide', drop_slide(), 600, 36)
   call put('parts_halfpipe_slide', halfpipe_slide(), 600, 48)
   call put('parts_bowl_slide', bowl_slide(), 800, 36)
+  call put('parts_bowl_table_slide', bowl_table_slide(), 800, 36)
+  call put('parts_crest_slide', crest_slide(), 400, 36)
+  call put('parts_jump_slide', jump_slide(), 400, 36)
+  call put('parts_funnel_slide', funnel_slide(), 800, 36)
+  call put('parts_patch_slide', patch_slide(), 800, 48)
+  call put('templates_geometry', template_slide(), 400, 48)
   if (failures > 0) then
     print '(i0, a)', failures, ' shipped geometries not built'
     error stop 1
@@ -94,104 +105,8 @@ contains
     close (unit)
   end subroutine put
 
-  !> One slide element, every value given (the reader's defaults: 0, 'left').
-  pure function element(kind, length, slope_deg, radius, angle_deg, direction, turns, drop) result(e)
-    character(len=*), intent(in) :: kind, direction
-    real(wp), intent(in) :: length, slope_deg, radius, angle_deg, turns, drop
-    type(slide_element_t) :: e
-    e = slide_element_t(kind=kind, length=length, slope_deg=slope_deg, radius=radius, angle_deg=angle_deg, &
-                        direction=direction, turns=turns, drop=drop)
-  end function element
-
-  !> A single circle cross-section of radius r.
-  pure function circle(r) result(parts)
-    real(wp), intent(in) :: r
-    type(section_part_description_t) :: parts(1)
-    parts(1) = section_part_description_t(kind='circle', radius=r)
-  end function circle
-
   ! ----------------------------------------------------------- the inputs
-
-  !> inputs/demo_slide/slide.nml (and geometry/demo_slide_table.nml, its
-  !> elements from demo_slide/elements.csv).
-  function demo_slide() result(d)
-    type(geometry_description_t) :: d
-    d%kind = 'slide'
-    d%slide%elements%start = [0.0_wp, 0.0_wp, 10.0_wp]
-    d%slide%elements%heading_deg = 0.0_wp
-    d%slide%elements%transition_length = 2.0_wp
-    d%slide%elements%elements = [ &
-      element('straight', 6.0_wp, 12.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('curve', 0.0_wp, 6.0_wp, 5.0_wp, 90.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('straight', 4.0_wp, 8.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('helix', 0.0_wp, 0.0_wp, 4.0_wp, 0.0_wp, 'right', 1.0_wp, 2.5_wp), &
-      element('straight', 3.0_wp, 7.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('curve', 0.0_wp, 6.0_wp, 6.0_wp, 60.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('curve', 0.0_wp, 6.0_wp, 6.0_wp, 60.0_wp, 'right', 0.0_wp, 0.0_wp), &
-      element('runout', 8.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
-    d%slide%section%parts = circle(0.5_wp)
-  end function demo_slide
-
-  !> inputs/design/second_slide.nml
-  function second_slide() result(d)
-    type(geometry_description_t) :: d
-    d%kind = 'slide'
-    d%slide%elements%start = [0.0_wp, 0.0_wp, 9.0_wp]
-    d%slide%elements%heading_deg = 30.0_wp
-    d%slide%elements%transition_length = 2.5_wp
-    d%slide%elements%elements = [ &
-      element('straight', 5.0_wp, 10.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('curve', 0.0_wp, 7.0_wp, 7.0_wp, 120.0_wp, 'right', 0.0_wp, 0.0_wp), &
-      element('helix', 0.0_wp, 0.0_wp, 3.5_wp, 0.0_wp, 'left', 1.25_wp, 2.6_wp), &
-      element('straight', 4.0_wp, 8.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('curve', 0.0_wp, 5.0_wp, 5.0_wp, 75.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('runout', 7.0_wp, 1.5_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
-    d%slide%section%parts = circle(0.52_wp)
-  end function second_slide
-
-  !> inputs/parts/drop_slide.nml
-  function drop_slide() result(d)
-    type(geometry_description_t) :: d
-    d%kind = 'slide'
-    d%slide%elements%start = [0.0_wp, 0.0_wp, 14.0_wp]
-    d%slide%elements%transition_length = 2.0_wp
-    d%slide%elements%exact = .true.
-    d%slide%elements%elements = [ &
-      element('drop', 0.0_wp, 80.0_wp, 8.0_wp, 0.0_wp, 'left', 0.0_wp, 10.0_wp), &
-      element('straight', 6.0_wp, 3.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('curve', 0.0_wp, 4.0_wp, 12.0_wp, 90.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('runout', 8.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
-    d%slide%section%parts = circle(0.5_wp)
-  end function drop_slide
-
-  !> inputs/parts/halfpipe_slide.nml
-  function halfpipe_slide() result(d)
-    type(geometry_description_t) :: d
-    d%kind = 'slide'
-    d%slide%elements%start = [0.0_wp, 0.0_wp, 6.0_wp]
-    d%slide%elements%transition_length = 2.0_wp
-    d%slide%elements%exact = .true.
-    d%slide%elements%elements = [ &
-      element('straight', 6.0_wp, 12.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('curve', 0.0_wp, 5.0_wp, 8.0_wp, 150.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('straight', 6.0_wp, 6.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
-    d%slide%section%parts = [section_part_description_t(kind='flume', radius=2.0_wp, wall=1.5_wp)]
-  end function halfpipe_slide
-
-  !> inputs/parts/bowl_slide.nml (the bowl's profile: 'sphere', the default)
-  function bowl_slide() result(d)
-    type(geometry_description_t) :: d
-    d%kind = 'slide'
-    d%slide%elements%start = [0.0_wp, 0.0_wp, 10.0_wp]
-    d%slide%elements%transition_length = 2.0_wp
-    d%slide%elements%exact = .true.
-    d%slide%elements%elements = [ &
-      element('straight', 12.0_wp, 10.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('bowl', 0.0_wp, 50.0_wp, 6.0_wp, 0.0_wp, 'left', 1.0_wp, 2.0_wp), &
-      element('straight', 10.0_wp, 14.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
-      element('runout', 8.0_wp, 2.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
-    d%slide%section%parts = [section_part_description_t(kind='flume', radius=0.6_wp, wall=0.3_wp)]
-  end function bowl_slide
+  ! (the slides of standard elements: tests/library/shipped_slides.f90)
 
   !> inputs/geometry/flume.nml
   function flume() result(d)

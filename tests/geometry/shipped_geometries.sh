@@ -8,6 +8,9 @@
 # same number. Both build through geometry_description's build_geometry, so
 # the numbers agree to the bit; any difference is a description that no
 # longer says what its input says, or a reader that fills it differently.
+# The inputs are those tests/library/built_through_library.txt gives to
+# shipped_geometries (what check_library_coverage counts): the test fails
+# when the program writes no grid for one of them, or a grid for another.
 #
 #     shipped_geometries.sh SLIDESIM SHIPPED_GEOMETRIES     (from the repository root)
 set -u
@@ -16,8 +19,12 @@ program=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
-inputs=(inputs/geometry/*.nml inputs/demo_slide/slide.nml inputs/design/second_slide.nml inputs/parts/drop_slide.nml
-        inputs/parts/halfpipe_slide.nml inputs/parts/bowl_slide.nml)
+python=python3
+command -v "$python" >/dev/null || python=/usr/bin/python3
+mapfile -t inputs < <("$python" -c 'import sys; sys.path.insert(0, "tests/library")
+from built_inputs import inputs_of
+print("\n".join(inputs_of("shipped_geometries")))')
+[ "${#inputs[@]}" -gt 0 ] || { echo "FAIL no inputs given to shipped_geometries in tests/library/built_through_library.txt"; exit 1; }
 for input in "${inputs[@]}"; do
   name=$(echo "${input#inputs/}" | tr '/' '_' | sed 's/\.nml$//')
   if ! "$slidesim" -q -o "$work/$name.h5" "$input" >"$work/$name.out" 2>&1; then
@@ -29,12 +36,19 @@ done
 for python in python3 /usr/bin/python3; do
   if command -v "$python" >/dev/null && "$python" -c 'import h5py' 2>/dev/null; then
     "$python" - "$work" "${inputs[@]}" <<'PYEOF' || failures=$((failures + 1))
+import os
 import sys
 import h5py
 import numpy as np
 
 work, inputs = sys.argv[1], sys.argv[2:]
 failures = 0
+written = {name[:-len('.txt')] for name in os.listdir(work) if name.endswith('.txt')}
+names = {path[len('inputs/'):-len('.nml')].replace('/', '_'): path for path in inputs}
+for name in sorted(written - set(names)):
+    print(f'FAIL {name}: shipped_geometries wrote this grid, but tests/library/built_through_library.txt gives '
+          f'shipped_geometries no input of that name: add the line')
+    failures += 1
 for path in inputs:
     name = path[len('inputs/'):-len('.nml')].replace('/', '_')
     try:

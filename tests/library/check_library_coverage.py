@@ -6,34 +6,24 @@ without io").
 
     check_library_coverage.py      (run from the repository root)
 
-An input counts as built through the library when one of the tests that
-build shipped inputs from descriptions written in code names it in its
-sources (tests/library/shipped_descriptions.f90 and library_without_io.f90,
-tests/geometry/shipped_geometries.f90 and .sh; a pattern such as
-inputs/geometry/*.nml there counts for every file it matches). Fails, naming
-the file, when an input is in neither place, when a listed input is covered
-already (the table is stale: take its line out), when a listed input does
-not exist, or when the table lists one twice.
+An input counts as built through the library when
+tests/library/built_through_library.txt gives it to one of the three tests
+that build shipped inputs from descriptions written in code
+(shipped_descriptions, library_without_io, shipped_geometries). Those tests
+read the same file and fail unless their programs build and compare exactly
+the inputs it gives them (library.built_inputs), so a line there is an input
+really built, not a path named somewhere in a source (a comment, a message).
+Fails, naming the file and the line, when an input is in neither list, in
+both, not a shipped input, listed twice, or given to an unknown test.
 """
 import glob
-import re
+import os
 import sys
 
-SOURCES = ["tests/library/shipped_descriptions.f90", "tests/library/library_without_io.f90",
-           "tests/geometry/shipped_geometries.f90", "tests/geometry/shipped_geometries.sh"]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from built_inputs import BUILT, TESTS, read_built  # noqa: E402
+
 TABLE = "tests/library/not_yet_through_library.txt"
-NAMED = re.compile(r"inputs/[a-z_0-9]+/(?:[a-z_0-9]+|\*)\.nml")
-
-
-def covered_inputs():
-    covered = {}
-    for source in SOURCES:
-        with open(source) as f:
-            text = f.read()
-        for pattern in NAMED.findall(text):
-            for path in glob.glob(pattern):
-                covered.setdefault(path, source)
-    return covered
 
 
 def table_entries():
@@ -57,21 +47,28 @@ def main():
     if not shipped:
         print("FAIL no inputs/*/*.nml found: run from the repository root")
         return 1
-    covered = covered_inputs()
-    listed, problems = table_entries()
+    built, problems = read_built()
+    listed, table_problems = table_entries()
+    problems += table_problems
     for path in shipped:
-        if path not in covered and path not in listed:
-            problems.append(f"{path}: built by no library test ({', '.join(SOURCES)}) and not listed in {TABLE}: "
-                            "describe it in one of those tests, or list it with the reason")
-        if path in covered and path in listed:
+        if path not in built and path not in listed:
+            problems.append(f"{path}: built by no library test (not in {BUILT}) and not listed in {TABLE}: "
+                            f"describe it in one of the tests ({', '.join(TESTS)}) and add its line to {BUILT}, "
+                            "or list it with the reason")
+        if path in built and path in listed:
             problems.append(f"{TABLE}:{listed[path]}: {path} is built through the library already "
-                            f"({covered[path]}): take its line out")
+                            f"({built[path][0]}, {BUILT}:{built[path][1]}): take its line out")
+    for path, (test, number) in built.items():
+        if path not in shipped:
+            problems.append(f"{BUILT}:{number}: {path} is not a shipped input (inputs/*/*.nml)")
     for path, number in listed.items():
         if path not in shipped:
             problems.append(f"{TABLE}:{number}: {path} is not a shipped input (inputs/*/*.nml)")
     for problem in problems:
         print("FAIL " + problem)
-    print(f"{len(shipped)} shipped inputs: {sum(p in covered for p in shipped)} through the library, "
+    per_test = {t: sum(1 for p in shipped if p in built and built[p][0] == t) for t in TESTS}
+    print(f"{len(shipped)} shipped inputs: {sum(p in built for p in shipped)} through the library "
+          f"({', '.join(f'{t} {n}' for t, n in per_test.items())}), "
           f"{sum(p in listed for p in shipped)} listed as not yet")
     return 1 if problems else 0
 

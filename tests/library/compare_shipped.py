@@ -14,13 +14,18 @@ rounding of the JSON's decimal numbers (17 significant digits; the
 tolerance, 1e-14 relative, is a few units of the last of them); the step and
 right-hand-side counts agree exactly. Any other difference (a value copied
 wrongly, a default the description misses, a builder doing otherwise than
-the scenario) fails, naming the input, the number and both values.
+the scenario) fails, naming the input, the number and both values. The
+inputs built must be exactly those tests/library/built_through_library.txt
+gives to shipped_descriptions (what check_library_coverage counts).
 """
 import json
 import os
 import subprocess
 import sys
 import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from built_inputs import check_built  # noqa: E402
 
 DURATION = "0.05"   # s: short, past the start's transients (several output steps)
 RELATIVE = 1e-14
@@ -38,7 +43,10 @@ def main():
     for line in run.stdout.splitlines():
         name, key, value = line.split()
         expected.setdefault(name, {})[key] = value
-    bad = 0
+    listed = check_built("shipped_descriptions", list(expected))
+    for line in listed:
+        print(line)
+    bad = len(listed)
     checked = 0
     with tempfile.TemporaryDirectory() as work:
         for name, values in expected.items():
