@@ -1,117 +1,145 @@
-!> The shipped water and ride inputs (inputs/water/demo_slide.nml,
-!> inputs/ride/demo_slide.nml) run through the library alone: the demo slide
-!> built by geometry_slide_builder, the water by water_run, the ride by
+!> The shipped water and ride inputs run through the library alone (issue 24
+!> point 2): each slide built by geometry_slide_builder from its description
+!> (tests/library/shipped_slides.f90), the water by water_run, the ride by
 !> design_ride_job, every description filled here in code from the values
-!> those files (and inputs/demo_slide/slide.nml) give. No io module is linked
-!> (tests/CMakeLists.txt links slidesim_design only). Prints "scenario key
-!> value" lines with the summary's keys and its number texts (format_real,
-!> as --summary-json writes them); tests/library/library_without_io.sh
-!> compares them with the command's runs of the same inputs. Exit status 1
-!> when a build or a run fails.
+!> the input files give (the defaults they do not give: the description
+!> types' own, which are the reader's). A ride takes a slide (a chain of
+!> parts) and the rider's settings; the water takes a slide and its inlets.
+!> No io module is linked (tests/CMakeLists.txt links slidesim_design only).
+!>
+!> Prints `<input> <key> <value>` lines under the keys of the command's
+!> --summary-json, with its number texts (format_real); a table row's
+!> values as `<table>.<row>.<column>` (the stations, the landings).
+!> tests/library/library_without_io.sh compares them with the command's runs
+!> of the same inputs (the fixture cli_every_input, with its tolerances:
+!> rtol 1e-6, atol 1e-5 for the demo ride, its template and the parts'
+!> rides). Exit status 1 when a build or a run fails.
 program library_without_io
   use base_kinds, only: wp
   use base_status, only: status_t
-  use base_text, only: format_real
+  use base_text, only: format_real, format_integer
   use numerics_ode, only: ODE_ADAMS
-  use geometry_slide_elements, only: slide_element_t
-  use geometry_slide_builder, only: slide_description_t, section_part_description_t, build_slide
+  use geometry_description, only: geometry_description_t
+  use geometry_slide_builder, only: build_slide
   use geometry_tube, only: tube_surface_t
   use water_flow, only: water_series_t, START_EDGES
-  use water_streamline, only: CORRECTION_FULL
+  use water_inlet, only: water_inlet_t
+  use water_streamline, only: CORRECTION_FULL, CORRECTION_OFF
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_body, only: SEX_MALE
+  use rider_model, only: N_CONTACTS, contact_names
+  use rider_flight, only: ride_flights_t, highest_drop
   use kinetostatics_force_law_factory, only: law_spec
-  use design_ride_evaluation, only: new_ride_limit
+  use design_ride_evaluation, only: new_ride_limit, noise_free, rider_size
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
+  use shipped_slides, only: demo_slide, second_slide, drop_slide, halfpipe_slide, bowl_slide, bowl_table_slide, &
+    crest_slide, jump_slide, funnel_slide, patch_slide
   implicit none (type, external)
-  type(tube_surface_t) :: slide
-  type(water_description_t) :: water
-  type(water_result_t) :: flow
-  type(ride_description_t) :: ride
-  type(ride_job_result_t) :: ridden
-  type(status_t) :: status
+  real(wp), parameter :: pi_2 = 1.5707963267948966_wp   ! the inputs' v0 (the bottom)
 
-  call build_demo_slide(slide, status)
-  call stop_unless_ok('the demo slide')
-
-  ! ---- inputs/water/demo_slide.nml
-  water = demo_water(slide)
-  water%stations = [5.0_wp, 10.0_wp, 15.0_wp, 20.0_wp, 25.0_wp, 30.0_wp, 35.0_wp, 40.0_wp, 45.0_wp, 50.0_wp, &
-                    55.0_wp, 60.0_wp, 65.0_wp]   ! m
-  water%solver%output_step = 0.005_wp
-  water%solver%time_bound = 60                           ! &solver duration (s)
-  call compute_water(water, flow, status)
-  call stop_unless_ok('the water')
-  call print_water(water, flow%series)
-
-  ! ---- inputs/ride/demo_slide.nml, with the tolerances the runs of every
-  ! input give it (tests/cli/support/every_input.sh: rtol 1e-6, atol 1e-5)
-  ride%water = demo_water(slide)
-  ride%water%solver%output_step = 0.005_wp
-  associate (p => ride%rider)
-    p%body%sex = SEX_MALE
-    p%body%mass = 68.5_wp
-    p%body%height = 1.78_wp
-    p%body%com_height = 0.075_wp
-    p%friction = law_spec('coulomb', 'mu', 0.0724419_wp)
-    p%drag = .true.
-    p%drag_radius = [0.5_wp, 0.05_wp, 0.5_wp]
-    p%u0 = 0.5_wp
-    p%v0 = 1.5707963267948966_wp
-    p%heading0 = 0
-    p%speed0 = 1
-  end associate
-  ride%options%ode%method = ODE_ADAMS
-  ride%options%ode%rtol = 1e-6_wp
-  ride%options%ode%atol = 1e-5_wp
-  ride%options%ode%max_step = 0.05_wp
-  ride%options%output_step = 0.01_wp
-  ride%options%min_speed = 0.05_wp
-  ! without &solver duration: ten times the slide at the stall speed (scenarios_ride)
-  ride%options%max_duration = 10*slide%length()/ride%options%min_speed
-  allocate (ride%limits(3))
-  call add_limit(1, 'exit_speed', 'm/s', 10.0_wp)
-  call add_limit(2, 'speed', 'm/s', 8.0_wp)
-  call add_limit(3, 'lever_arm', 'm', 0.25_wp)
-  ridden = run_ride(ride)
-  status = ridden%status
-  call stop_unless_ok('the ride')
-  call print_ride(slide, ridden)
+  call water_demo_slide()
+  call water_template()
+  call water_two_inlets()
+  call water_second_slide()
+  call ride_demo_slide('inputs/ride/demo_slide.nml')
+  call ride_demo_slide('inputs/templates/ride.nml')   ! the same ride, every variable written
+  call ride_part('inputs/parts/bowl.nml', bowl_slide(), 1.9_wp, 1.2415926535897932_wp, 1.0_wp, 1.0_wp, 10.0_wp)
+  call ride_part('inputs/parts/bowl_table.nml', bowl_table_slide(), 1.9_wp, 1.2415926535897932_wp, 1.0_wp, &
+                 1.0_wp, 10.0_wp)
+  call ride_part('inputs/parts/funnel.nml', funnel_slide(), 1.9_wp, 1.2415926535897932_wp, 1.0_wp, 1.0_wp, 10.0_wp)
+  call ride_part('inputs/parts/patch.nml', patch_slide(), 1.9_wp, 1.2415926535897932_wp, 1.0_wp, 1.0_wp, 10.0_wp)
+  call ride_part('inputs/parts/halfpipe.nml', halfpipe_slide(), 1.6707963267948966_wp, 1.4707963267948966_wp, &
+                 1.0_wp, 1.0_wp, 10.0_wp)
+  ! the drop: the water's start edges the defaults (pi/2 +- 0.3), a trap-door start
+  call ride_part('inputs/parts/drop.nml', drop_slide(), pi_2 + 0.3_wp, pi_2 - 0.3_wp, 0.9_wp, 0.0_wp, 12.0_wp)
+  call ride_flight('inputs/ride/crest.nml', crest_slide(), 0.01_wp, 0.5_wp, 0.05_wp)
+  call ride_flight('inputs/ride/jump.nml', jump_slide(), 0.002_wp, 0.6_wp, 0.2_wp)
 
 contains
 
-  !> inputs/demo_slide/slide.nml: eight elements, a circle of 0.5 m.
-  subroutine build_demo_slide(slide, status)
-    type(tube_surface_t), intent(out) :: slide
-    type(status_t), intent(inout) :: status
-    type(slide_description_t) :: d
-    d%kind = 'slide'
-    d%elements%start = [0.0_wp, 0.0_wp, 10.0_wp]
-    d%elements%heading_deg = 0
-    d%elements%transition_length = 2
-    d%elements%elements = [ &
-      slide_element_t(kind='straight', length=6, slope_deg=12, direction='left'), &
-      slide_element_t(kind='curve', slope_deg=6, radius=5, angle_deg=90, direction='left'), &
-      slide_element_t(kind='straight', length=4, slope_deg=8, direction='left'), &
-      slide_element_t(kind='helix', radius=4, direction='right', turns=1, drop=2.5_wp), &
-      slide_element_t(kind='straight', length=3, slope_deg=7, direction='left'), &
-      slide_element_t(kind='curve', slope_deg=6, radius=6, angle_deg=60, direction='left'), &
-      slide_element_t(kind='curve', slope_deg=6, radius=6, angle_deg=60, direction='right'), &
-      slide_element_t(kind='runout', length=8, slope_deg=1, direction='left')]
-    d%section%parts = [section_part_description_t(kind='circle', radius=0.5_wp)]
-    call build_slide(d, slide, status)
-  end subroutine build_demo_slide
+  ! ------------------------------------------------------------------ water
 
-  !> The &water of both inputs (and their &water_solver / &solver tolerances).
+  !> inputs/water/demo_slide.nml: the &water of the demo ride, 13 stations,
+  !> &solver duration 60 s.
+  subroutine water_demo_slide()
+    type(water_description_t) :: w
+    w = demo_water(slide_of(demo_slide()))
+    w%stations = [5.0_wp, 10.0_wp, 15.0_wp, 20.0_wp, 25.0_wp, 30.0_wp, 35.0_wp, 40.0_wp, 45.0_wp, 50.0_wp, &
+                  55.0_wp, 60.0_wp, 65.0_wp]   ! m
+    w%solver%time_bound = 60
+    call run_water('inputs/water/demo_slide.nml', w)
+  end subroutine water_demo_slide
+
+  !> inputs/templates/water.nml: the demo slide's water with every variable
+  !> written (builtin:demo_slide, beta0, mass, gravity, the stall and
+  !> criticality bounds, the edges), six stations, no duration.
+  subroutine water_template()
+    type(water_description_t) :: w
+    w = demo_water(slide_of(demo_slide()))
+    w%start%beta = 0
+    w%mass = 1
+    w%gravity = [0.0_wp, 0.0_wp, -9.80665_wp]
+    w%min_speed = 0.05_wp
+    w%min_criticality = 0.02_wp
+    w%stations = [10.0_wp, 20.0_wp, 30.0_wp, 40.0_wp, 50.0_wp, 60.0_wp]
+    w%edges = .true.
+    call run_water('inputs/templates/water.nml', w)
+  end subroutine water_template
+
+  !> inputs/water/two_inlets.nml: 3 l/s from the start of the demo slide,
+  !> 2 l/s more joining at 25 m (speed 2 m/s, angle 0.2 rad); f1-f3, the
+  !> correction and the table step the defaults.
+  subroutine water_two_inlets()
+    type(water_description_t) :: w
+    w%slide = slide_of(demo_slide())
+    w%flow_rate = 0.003_wp
+    w%start%mode = START_EDGES
+    w%start%u0 = 0
+    w%start%v_left = 1.8707963267948966_wp
+    w%start%v_right = 1.2707963267948966_wp
+    w%stations = [20.0_wp, 30.0_wp, 40.0_wp]
+    w%inlets = [water_inlet_t(arc_length=25.0_wp, flow_rate=0.002_wp, speed=2.0_wp, beta=0.2_wp)]
+    w%solver%ode%method = ODE_ADAMS
+    w%solver%ode%rtol = 1e-10_wp
+    w%solver%ode%atol = 1e-9_wp
+    w%solver%output_step = 0.005_wp
+    call run_water('inputs/water/two_inlets.nml', w)
+  end subroutine water_two_inlets
+
+  !> inputs/design/second_slide_water.nml: 6 l/s on the second slide
+  !> (design/second_slide.nml), eleven stations, &solver duration 60 s.
+  subroutine water_second_slide()
+    type(water_description_t) :: w
+    w = demo_water(slide_of(second_slide()))
+    w%flow_rate = 0.006_wp
+    w%start%v_left = 1.9707963267948966_wp
+    w%start%v_right = 1.1707963267948966_wp
+    w%stations = [5.0_wp, 10.0_wp, 15.0_wp, 20.0_wp, 25.0_wp, 30.0_wp, 35.0_wp, 40.0_wp, 45.0_wp, 50.0_wp, 55.0_wp]
+    w%solver%time_bound = 60
+    call run_water('inputs/design/second_slide_water.nml', w)
+  end subroutine water_second_slide
+
+  !> The &water the demo inputs share (and their &water_solver / &solver
+  !> method and tolerances, output every 5 ms) on `slide`.
   function demo_water(slide) result(w)
     type(tube_surface_t), intent(in) :: slide
+    type(water_description_t) :: w
+    w = parts_water(slide, 1.9207963267948966_wp, 1.2207963267948966_wp)
+  end function demo_water
+
+  !> The &water of the parts' rides (and the demo's): 4 l/s from the start
+  !> edges v_left, v_right, f1-f3 of the thesis, the full correction, a
+  !> table every 0.1 m, Adams at rtol 1e-10, atol 1e-9, output every 5 ms.
+  function parts_water(slide, v_left, v_right) result(w)
+    type(tube_surface_t), intent(in) :: slide
+    real(wp), intent(in) :: v_left, v_right   ! rad
     type(water_description_t) :: w
     w%slide = slide
     w%flow_rate = 0.004_wp
     w%start%mode = START_EDGES
     w%start%u0 = 0
-    w%start%v_left = 1.9207963267948966_wp
-    w%start%v_right = 1.2207963267948966_wp
+    w%start%v_left = v_left
+    w%start%v_right = v_right
     w%f1 = 0.0274748_wp
     w%f2 = 0.138285_wp
     w%f3 = 0.979822_wp
@@ -120,9 +148,118 @@ contains
     w%solver%ode%method = ODE_ADAMS
     w%solver%ode%rtol = 1e-10_wp
     w%solver%ode%atol = 1e-9_wp
-  end function demo_water
+    w%solver%output_step = 0.005_wp
+  end function parts_water
 
-  subroutine add_limit(k, quantity, unit, maximum)
+  subroutine run_water(input, w)
+    character(len=*), intent(in) :: input
+    type(water_description_t), intent(in) :: w
+    type(water_result_t) :: flow
+    type(status_t) :: status
+    call compute_water(w, flow, status)
+    call stop_unless_ok(input, 'the water', status)
+    call print_water(input, w, flow%series)
+  end subroutine run_water
+
+  ! ------------------------------------------------------------------ rides
+
+  !> inputs/ride/demo_slide.nml (and its template): the demo water, the
+  !> standard rider from u0 = 0.5 m at 1 m/s, limits on the exit speed, the
+  !> speed and the lever arm; the fixture's tolerances.
+  subroutine ride_demo_slide(input)
+    character(len=*), intent(in) :: input
+    type(ride_description_t) :: ride
+    ride = standard_ride(demo_water(slide_of(demo_slide())), 0.5_wp, 1.0_wp)
+    call loosen(ride)
+    allocate (ride%limits(3))
+    call add_limit(ride, 1, 'exit_speed', 'm/s', 10.0_wp)
+    call add_limit(ride, 2, 'speed', 'm/s', 8.0_wp)
+    call add_limit(ride, 3, 'lever_arm', 'm', 0.25_wp)
+    call ride_and_print(input, ride)
+  end subroutine ride_demo_slide
+
+  !> A part's ride (inputs/parts/*.nml): the parts' water from the start
+  !> edges v_left, v_right on `slide`, the standard rider from u0 at speed0,
+  !> limits on the exit speed (at most exit_max) and the speed (14 m/s); the
+  !> fixture's tolerances.
+  subroutine ride_part(input, slide, v_left, v_right, u0, speed0, exit_max)
+    character(len=*), intent(in) :: input
+    type(geometry_description_t), intent(in) :: slide
+    real(wp), intent(in) :: v_left, v_right, u0, speed0, exit_max
+    type(ride_description_t) :: ride
+    ride = standard_ride(parts_water(slide_of(slide), v_left, v_right), u0, speed0)
+    call loosen(ride)
+    allocate (ride%limits(2))
+    call add_limit(ride, 1, 'exit_speed', 'm/s', exit_max)
+    call add_limit(ride, 2, 'speed', 'm/s', 14.0_wp)
+    call ride_and_print(input, ride)
+  end subroutine ride_part
+
+  !> A ride that may fly (inputs/ride/crest.nml, jump.nml): water without the
+  !> Saint-Venant correction from the default edges, the standard rider from
+  !> 0.5 m at 1 m/s, output every `output_step` s, landings by the defaults
+  !> (restitution 0, the rider's mu), limits on the airtime and the drop
+  !> height; the inputs' own tolerances (the fixture runs them as given).
+  subroutine ride_flight(input, slide, output_step, airtime_max, drop_max)
+    character(len=*), intent(in) :: input
+    type(geometry_description_t), intent(in) :: slide
+    real(wp), intent(in) :: output_step, airtime_max, drop_max
+    type(ride_description_t) :: ride
+    type(water_description_t) :: water
+    water = parts_water(slide_of(slide), pi_2 + 0.3_wp, pi_2 - 0.3_wp)
+    water%correction = CORRECTION_OFF
+    ride = standard_ride(water, 0.5_wp, 1.0_wp)
+    ride%options%output_step = output_step
+    ride%options%may_fly = .true.
+    allocate (ride%limits(2))
+    call add_limit(ride, 1, 'airtime', 's', airtime_max)
+    call add_limit(ride, 2, 'drop_height', 'm', drop_max)
+    call ride_and_print(input, ride)
+  end subroutine ride_flight
+
+  !> The rider every shipped ride has (thesis tables 4.8, 4.10: male, 68.5
+  !> kg, 1.78 m, Coulomb mu_D, water drag on spheres of 0.5, 0.05, 0.5 m),
+  !> starting on the bottom (v0 = pi/2) heading down the slide from u0 at
+  !> speed0, in `water`; &solver as the inputs give it (Adams, rtol 1e-10,
+  !> atol 1e-9, steps of at most 0.05 s, output every 0.01 s) and without a
+  !> duration: ten times the slide at the stall speed (scenarios_ride).
+  function standard_ride(water, u0, speed0) result(ride)
+    type(water_description_t), intent(in) :: water
+    real(wp), intent(in) :: u0, speed0
+    type(ride_description_t) :: ride
+    ride%water = water
+    associate (p => ride%rider)
+      p%body%sex = SEX_MALE
+      p%body%mass = 68.5_wp
+      p%body%height = 1.78_wp
+      p%body%com_height = 0.075_wp
+      p%friction = law_spec('coulomb', 'mu', 0.0724419_wp)
+      p%drag = .true.
+      p%drag_radius = [0.5_wp, 0.05_wp, 0.5_wp]
+      p%u0 = u0
+      p%v0 = pi_2
+      p%heading0 = 0
+      p%speed0 = speed0
+    end associate
+    ride%options%ode%method = ODE_ADAMS
+    ride%options%ode%rtol = 1e-10_wp
+    ride%options%ode%atol = 1e-9_wp
+    ride%options%ode%max_step = 0.05_wp
+    ride%options%output_step = 0.01_wp
+    ride%options%min_speed = 0.05_wp
+    ride%options%max_duration = 10*ride%water%slide%length()/ride%options%min_speed
+  end function standard_ride
+
+  !> The tolerances the fixture cli_every_input runs the demo ride, its
+  !> template and the parts' rides with (rtol 1e-6, atol 1e-5).
+  subroutine loosen(ride)
+    type(ride_description_t), intent(inout) :: ride
+    ride%options%ode%rtol = 1e-6_wp
+    ride%options%ode%atol = 1e-5_wp
+  end subroutine loosen
+
+  subroutine add_limit(ride, k, quantity, unit, maximum)
+    type(ride_description_t), intent(inout) :: ride
     integer, intent(in) :: k
     character(len=*), intent(in) :: quantity, unit
     real(wp), intent(in) :: maximum
@@ -135,61 +272,178 @@ contains
     end if
   end subroutine add_limit
 
-  subroutine stop_unless_ok(what)
-    character(len=*), intent(in) :: what
+  subroutine ride_and_print(input, ride)
+    character(len=*), intent(in) :: input
+    type(ride_description_t), intent(in) :: ride
+    type(ride_job_result_t) :: ridden
+    ridden = run_ride(ride)
+    call stop_unless_ok(input, 'the ride', ridden%status)
+    call print_ride(input, ride, ridden)
+  end subroutine ride_and_print
+
+  ! --------------------------------------------------------------- building
+
+  !> The tube of a slide description (build_slide, as build_geometry builds
+  !> a &geometry kind = 'slide').
+  function slide_of(d) result(slide)
+    type(geometry_description_t), intent(in) :: d
+    type(tube_surface_t) :: slide
+    type(status_t) :: status
+    call build_slide(d%slide, slide, status)
+    call stop_unless_ok('a slide', 'its build', status)
+  end function slide_of
+
+  subroutine stop_unless_ok(input, what, status)
+    character(len=*), intent(in) :: input, what
+    type(status_t), intent(in) :: status
     if (status%ok()) return
-    print '(a)', what//': '//status%text()
+    print '(a)', 'FAIL '//input//': '//what//': '//status%text()
     error stop 1
   end subroutine stop_unless_ok
 
-  subroutine put(scenario, key, x)
-    character(len=*), intent(in) :: scenario, key
+  ! --------------------------------------------------------------- printing
+
+  subroutine put(input, key, x)
+    character(len=*), intent(in) :: input, key
     real(wp), intent(in) :: x
-    print '(a)', scenario//' '//key//' '//format_real(x)
+    print '(a)', input//' '//key//' '//format_real(x)
   end subroutine put
 
-  subroutine print_water(w, s)
+  !> The water's summary numbers (scenarios_water's print_summary).
+  subroutine print_water(input, w, s)
+    character(len=*), intent(in) :: input
     type(water_description_t), intent(in) :: w
     type(water_series_t), intent(in) :: s
-    integer :: n
+    integer :: n, i
+    character(len=:), allocatable :: row
     n = s%n
-    call put('water', 'slide_length', w%slide%length())
-    call put('water', 'flow_rate', s%flow_rate)
-    call put('water', 'flow_time', s%time(n))
-    call put('water', 'slide_length_covered', s%arc_length(n) - s%arc_length(1))
-    call put('water', 'speed_min', minval(s%speed(:n)))
-    call put('water', 'speed_max', maxval(s%speed(:n)))
-    call put('water', 'final_speed', s%speed(n))
-    call put('water', 'height_min', minval(s%height(:n)))
-    call put('water', 'height_max', maxval(s%height(:n)))
-    call put('water', 'width_min', minval(s%width(:n)))
-    call put('water', 'width_max', maxval(s%width(:n)))
-    call put('water', 'flow_angle_min', minval(s%beta(:n)))
-    call put('water', 'flow_angle_max', maxval(s%beta(:n)))
+    call put(input, 'slide_length', w%slide%length())
+    call put(input, 'flow_rate', s%flow_rate)
+    if (allocated(s%inlets)) then
+      if (size(s%inlets) > 0) then
+        call put(input, 'inlets_joined', real(count(s%inlets%joined), wp))
+        call put(input, 'final_flow_rate', s%flow(n))
+      end if
+    end if
+    call put(input, 'flow_time', s%time(n))
+    call put(input, 'slide_length_covered', s%arc_length(n) - s%arc_length(1))
+    call put(input, 'speed_min', minval(s%speed(:n)))
+    call put(input, 'speed_max', maxval(s%speed(:n)))
+    call put(input, 'final_speed', s%speed(n))
+    call put(input, 'height_min', minval(s%height(:n)))
+    call put(input, 'height_max', maxval(s%height(:n)))
+    call put(input, 'width_min', minval(s%width(:n)))
+    call put(input, 'width_max', maxval(s%width(:n)))
+    call put(input, 'flow_angle_min', minval(s%beta(:n)))
+    call put(input, 'flow_angle_max', maxval(s%beta(:n)))
+    call put(input, 'v_min', minval(s%v(:n)))
+    call put(input, 'v_max', maxval(s%v(:n)))
+    call put(input, 'steps', real(s%stats%steps, wp))
+    call put(input, 'rhs_evaluations', real(s%stats%rhs_evaluations, wp))
+    do i = 1, size(s%stations)
+      row = 'stations.'//format_integer(i)//'.'
+      associate (st => s%stations(i))
+        call put(input, row//'arc_length', st%arc_length)
+        call put(input, row//'time', st%time)
+        call put(input, row//'v_middle', st%v_middle)
+        call put(input, row//'v_right', st%v_right)
+        call put(input, row//'v_left', st%v_left)
+        call put(input, row//'speed', st%speed)
+        call put(input, row//'height', st%height)
+        call put(input, row//'width', st%width)
+        call put(input, row//'u', st%u)
+        call put(input, row//'reached', merge(1.0_wp, 0.0_wp, st%reached))
+      end associate
+    end do
   end subroutine print_water
 
-  subroutine print_ride(slide, result)
-    type(tube_surface_t), intent(in) :: slide
+  !> The ride's summary numbers (scenarios_ride's print_report, the same
+  !> rounding-noise rules: felt g on 1 g, normal forces on the ride's
+  !> largest, the lever arm on the rider's size, a wall climb within the
+  !> closure's tolerance of the bottom as 0).
+  subroutine print_ride(input, ride, result)
+    character(len=*), intent(in) :: input
+    type(ride_description_t), intent(in) :: ride
     type(ride_job_result_t), intent(in) :: result
     character(len=*), parameter :: axis(3) = [character(len=12) :: 'longitudinal', 'lateral', 'normal']
+    real(wp), parameter :: closure_tolerance = 1e-10_wp   ! m (scenarios_ride's `unresolved`)
+    character(len=:), allocatable :: c
+    real(wp) :: force_scale
     integer :: k
-    call put('ride', 'slide_length', slide%length())
-    associate (r => result%report)
-      call put('ride', 'ride_time', r%ride_time)
-      call put('ride', 'distance', r%distance)
-      call put('ride', 'top_speed', r%top_speed)
-      call put('ride', 'top_speed_arc_length', r%top_speed_at)
+    call put(input, 'slide_length', ride%water%slide%length())
+    associate (r => result%report, s => result%ride%series)
+      call put(input, 'ride_time', r%ride_time)
+      call put(input, 'distance', r%distance)
+      call put(input, 'top_speed', r%top_speed)
+      call put(input, 'top_speed_arc_length', r%top_speed_at)
       do k = 1, 3
-        call put('ride', 'felt_'//trim(axis(k))//'_max', r%felt_max(k))
-        call put('ride', 'felt_'//trim(axis(k))//'_min', r%felt_min(k))
+        call put(input, 'felt_'//trim(axis(k))//'_max', noise_free(r%felt_max(k), 1.0_wp))
+        call put(input, 'felt_'//trim(axis(k))//'_max_arc_length', r%felt_max_at(k))
+        call put(input, 'felt_'//trim(axis(k))//'_min', noise_free(r%felt_min(k), 1.0_wp))
+        call put(input, 'felt_'//trim(axis(k))//'_min_arc_length', r%felt_min_at(k))
       end do
-      call put('ride', 'lever_arm_max', r%lever_max)
-      call put('ride', 'lever_arm_max_arc_length', r%lever_max_at)
+      force_scale = max(maxval([(abs(s%contact(k)%normal_force(:r%n)), k = 1, N_CONTACTS)]), tiny(1.0_wp))
+      do k = 1, N_CONTACTS
+        c = trim(contact_names(k))
+        call put(input, c//'_wall_angle', merge(0.0_wp, r%climb_angle(k), &
+                                                abs(r%climb_distance(k)) < closure_tolerance))
+        call put(input, c//'_wall_arc_length', r%climb_at(k))
+        call put(input, c//'_wall_distance', merge(0.0_wp, r%wall_distance_max(k), &
+                                                   abs(r%wall_distance_max(k)) < closure_tolerance))
+        call put(input, c//'_wall_distance_arc_length', r%wall_distance_at(k))
+        call put(input, c//'_normal_force_min', noise_free(r%normal_min(k), force_scale))
+        call put(input, c//'_normal_force_min_arc_length', r%normal_min_at(k))
+      end do
+      call put(input, 'lever_arm_max', noise_free(r%lever_max, rider_size))
+      call put(input, 'lever_arm_max_arc_length', r%lever_max_at)
       if (result%complete) then
-        call put('ride', 'exit_speed', r%final_speed)
+        call put(input, 'exit_speed', r%final_speed)
       else
-        call put('ride', 'final_speed', r%final_speed)
+        call put(input, 'final_speed', r%final_speed)
       end if
+      if (result%ride%flights%watched) then
+        call put(input, 'felt_not_judged_time', r%not_judged_time)
+        call print_flights(input, result%ride%flights)
+      end if
+      call put(input, 'limits_exceeded', real(count(r%judged .and. r%verdicts%exceeded), wp))
     end associate
+    call put(input, 'ride_steps', real(result%ride%driver%stats%steps, wp))
   end subroutine print_ride
+
+  !> The flights of a ride that may fly (scenarios_ride_flights' add_flights).
+  subroutine print_flights(input, f)
+    character(len=*), intent(in) :: input
+    type(ride_flights_t), intent(in) :: f
+    real(wp) :: drop, drop_at
+    character(len=:), allocatable :: row
+    integer :: k
+    call put(input, 'flights', real(f%flights, wp))
+    call put(input, 'airtime', f%airtime)
+    call put(input, 'airtime_longest', f%longest)
+    call put(input, 'airtime_longest_arc_length', f%longest_arc_length)
+    call put(input, 'whole_flights', real(f%whole_flights, wp))
+    call put(input, 'whole_airtime', f%whole_airtime)
+    call put(input, 'whole_airtime_longest', f%whole_longest)
+    call put(input, 'whole_airtime_longest_arc_length', f%whole_longest_arc_length)
+    call put(input, 'highest', f%highest)
+    call put(input, 'highest_arc_length', f%highest_arc_length)
+    call highest_drop(f, drop, drop_at)
+    call put(input, 'landings', real(f%landings, wp))
+    call put(input, 'drop_height_max', drop)
+    call put(input, 'drop_height_max_arc_length', drop_at)
+    do k = 1, f%landings
+      row = 'landing.'//format_integer(k)//'.'
+      associate (l => f%landing(k))
+        call put(input, row//'time', l%time)
+        call put(input, row//'arc_length', l%arc_length)
+        call put(input, row//'normal_speed', l%normal_speed)
+        call put(input, row//'impulse', l%impulse)
+        call put(input, row//'normal_impulse', l%normal_impulse)
+        call put(input, row//'drop_height', l%drop_height)
+        call put(input, row//'energy_lost', l%energy_lost)
+        call put(input, row//'closed', merge(1.0_wp, 0.0_wp, l%closed))
+        call put(input, row//'contact', real(l%contact, wp))
+      end associate
+    end do
+  end subroutine print_flights
 end program library_without_io

@@ -2,13 +2,16 @@
 # The shipped water and ride inputs through the library without io
 # (library_without_io.f90, descriptions filled in code) give the numbers the
 # command's runs of the same inputs give (--summary-json of the fixture
-# cli_every_input: water_demo_slide, ride_demo_slide). Both compute the same
-# operations from the same values, so the numbers must agree to the last
-# digit; 1e-13 relative allows a rounding in a sum the compiler may order
-# differently between the two programs, and nothing more (a wrong
-# description, e.g. another friction, moves them by far more).
+# cli_every_input, tests/cli/support/every_input.sh: NAME.json per input).
+# Both compute the same operations from the same values, so the numbers
+# must agree to the last digit and the step counts exactly; 1e-13 relative
+# allows a rounding in a sum the compiler may order differently between the
+# two programs, and nothing more (a wrong description, e.g. another
+# friction, moves them by far more). The inputs the program builds must be
+# exactly those tests/library/built_through_library.txt gives to
+# library_without_io (what check_library_coverage counts).
 #
-#     library_without_io.sh PROGRAM EVERY_INPUT_FOLDER
+#     library_without_io.sh PROGRAM EVERY_INPUT_FOLDER     (from the repository root)
 set -u
 program=$1
 results=$2
@@ -17,26 +20,47 @@ trap 'rm -rf "$work"' EXIT
 "$program" > "$work/library.txt" || { echo "FAIL $program: $(tail -3 "$work/library.txt")"; exit 1; }
 python=/usr/bin/python3
 command -v "$python" >/dev/null || python=python3
-"$python" - "$work/library.txt" "$results/water_demo_slide.json" "$results/ride_demo_slide.json" <<'PY'
-import json, sys
+"$python" - "$work/library.txt" "$results" <<'PY'
+import json, os, sys
+sys.path.insert(0, "tests/library")
+from built_inputs import check_built
+
+COUNTS = {"steps", "rhs_evaluations", "ride_steps", "flights", "whole_flights", "landings", "inlets_joined",
+          "limits_exceeded"}
 library = {}
 for line in open(sys.argv[1]):
-    scenario, key, value = line.split()
-    library.setdefault(scenario, {})[key] = float(value)
-failures = 0
-for scenario, path in (('water', sys.argv[2]), ('ride', sys.argv[3])):
-    command = json.load(open(path))['values']
-    if scenario not in library or len(library[scenario]) < 10:
-        print(f"FAIL {scenario}: the library program printed {library.get(scenario)}")
+    path, key, value = line.split()
+    library.setdefault(path, {})[key] = float(value)
+failures = check_built("library_without_io", list(library))
+for failure in failures:
+    print(failure)
+failures = len(failures)
+for path, numbers in library.items():
+    name = path[len("inputs/"):-len(".nml")].replace("/", "_")
+    summary = os.path.join(sys.argv[2], name + ".json")
+    command = {}
+    for key, value in json.load(open(summary))["values"].items():
+        if isinstance(value, list):   # a table: its rows' columns as table.row.column
+            for row, columns in enumerate(value, 1):
+                for column, x in columns.items():
+                    command[f"{key}.{row}.{column}"] = x
+        else:
+            command[key] = value
+    if len(numbers) < 10:
+        print(f"FAIL {path}: the library program printed only {numbers}")
         failures += 1
         continue
-    for key, value in library[scenario].items():
+    before = failures
+    for key, value in numbers.items():
         if key not in command:
-            print(f"FAIL {scenario} {key}: not in the command's summary {path}")
+            print(f"FAIL {path} {key}: not in the command's summary {summary}")
+            failures += 1
+        elif key in COUNTS and value != command[key]:
+            print(f"FAIL {path} {key}: library {value!r}, command {command[key]!r}")
             failures += 1
         elif abs(value - command[key]) > 1e-13 * abs(command[key]):
-            print(f"FAIL {scenario} {key}: library {value!r}, command {command[key]!r}")
+            print(f"FAIL {path} {key}: library {value!r}, command {command[key]!r}")
             failures += 1
-    print(f"{scenario}: {len(library[scenario])} numbers compared")
+    print(f"{'same' if failures == before else 'DIFF'} {path}: {len(numbers)} numbers compared with {summary}")
 sys.exit(1 if failures else 0)
 PY
