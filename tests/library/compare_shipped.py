@@ -60,7 +60,17 @@ def main():
                 bad += 1
                 continue
             with open(summary) as f:
-                got = json.load(f)["values"]
+                got = {}
+                for key, value in json.load(f)["values"].items():
+                    if isinstance(value, list):   # a table (the landings): its rows' columns as table.row.column
+                        for row, columns in enumerate(value, 1):
+                            if not isinstance(columns, dict):   # a vector: key.row
+                                got[f"{key}.{row}"] = columns
+                                continue
+                            for column, x in columns.items():
+                                got[f"{key}.{row}.{column}"] = x
+                    else:
+                        got[key] = value
             before = bad
             for key, text in values.items():
                 checked += 1
