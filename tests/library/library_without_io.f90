@@ -1,19 +1,22 @@
-!> The shipped water and ride inputs run through the library alone (issue 24
-!> point 2): each slide built by geometry_slide_builder from its description
-!> (tests/library/shipped_slides.f90), the water by water_run, the ride by
-!> design_ride_job, every description filled here in code from the values
-!> the input files give (the defaults they do not give: the description
-!> types' own, which are the reader's). A ride takes a slide (a chain of
-!> parts) and the rider's settings; the water takes a slide and its inlets.
+!> The shipped water, ride and sweep inputs run through the library alone
+!> (issue 24 point 2): each slide built by geometry_slide_builder from its
+!> description (tests/library/shipped_slides.f90), the water by water_run,
+!> the ride by design_ride_job, the sweep by design_sweep, every description
+!> filled here in code from the values the input files give (the defaults
+!> they do not give: the description types' own, which are the reader's). A
+!> ride takes a slide (a chain of parts) and the rider's settings; the water
+!> takes a slide and its inlets; a sweep, the base ride and its rides' values.
 !> No io module is linked (tests/CMakeLists.txt links slidesim_design only).
 !>
 !> Prints `<input> <key> <value>` lines under the keys of the command's
 !> --summary-json, with its number texts (format_real); a table row's
-!> values as `<table>.<row>.<column>` (the stations, the landings).
-!> tests/library/library_without_io.sh compares them with the command's runs
-!> of the same inputs (the fixture cli_every_input, with its tolerances:
-!> rtol 1e-6, atol 1e-5 for the demo ride, its template and the parts'
-!> rides). Exit status 1 when a build or a run fails.
+!> values as `<table>.<row>.<column>` (the stations, the landings; a
+!> sweep's rides as the rows of its CSV). tests/library/library_without_io.sh
+!> compares them with the command's runs of the same inputs (the fixture
+!> cli_every_input, with its tolerances: rtol 1e-6, atol 1e-5 for the demo
+!> ride, its template and the parts' rides); the inputs are those
+!> tests/library/built_through_library.txt gives it. Exit status 1 when a
+!> build or a run fails.
 program library_without_io
   use base_kinds, only: wp
   use base_status, only: status_t
@@ -26,12 +29,15 @@ program library_without_io
   use water_inlet, only: water_inlet_t
   use water_streamline, only: CORRECTION_FULL, CORRECTION_OFF
   use water_run, only: water_description_t, water_result_t, compute_water
-  use rider_body, only: SEX_MALE
+  use rider_body, only: SEX_MALE, SEX_FEMALE
   use rider_model, only: N_CONTACTS, contact_names
   use rider_flight, only: ride_flights_t, highest_drop
   use kinetostatics_force_law_factory, only: law_spec
   use design_ride_evaluation, only: new_ride_limit, noise_free, rider_size
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
+  use design_sweep, only: sweep_description_t, sweep_result_t, run_sweep, water_groups, N_SWEPT, N_FIGURES, &
+    figure_names, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, V_HEADING, V_SPEED, V_FLOW_RATE, V_F1, V_F2, V_F3, &
+    RIDE_COMPLETE
   use shipped_slides, only: demo_slide, second_slide, drop_slide, halfpipe_slide, bowl_slide, bowl_table_slide, &
     crest_slide, jump_slide, funnel_slide, patch_slide
   implicit none (type, external)
@@ -54,6 +60,8 @@ program library_without_io
   call ride_part('inputs/parts/drop.nml', drop_slide(), pi_2 + 0.3_wp, pi_2 - 0.3_wp, 0.9_wp, 0.0_wp, 12.0_wp)
   call ride_flight('inputs/ride/crest.nml', crest_slide(), 0.01_wp, 0.5_wp, 0.05_wp)
   call ride_flight('inputs/ride/jump.nml', jump_slide(), 0.002_wp, 0.6_wp, 0.2_wp)
+  call sweep_demo_population()
+  call sweep_template()
 
 contains
 
@@ -280,6 +288,126 @@ contains
     call stop_unless_ok(input, 'the ride', ridden%status)
     call print_ride(input, ride, ridden)
   end subroutine ride_and_print
+
+  ! ----------------------------------------------------------------- sweeps
+
+  !> inputs/sweep/demo_population.nml: the demo ride's water and rider (sex,
+  !> mass and height from each ride; the limits add the felt normal
+  !> acceleration) over two riders (female 50 kg 1.60 m, male 100 kg 1.90 m,
+  !> paired) crossed with two flow rates (4 and 6 l/s), the paired axis the
+  !> slowest (io_sweep_config's order), at the input's tolerances.
+  subroutine sweep_demo_population()
+    type(sweep_description_t) :: sweep
+    real(wp) :: base(N_SWEPT)
+    call standard_sweep(sweep, base)
+    allocate (sweep%limits(4))
+    call add_sweep_limit(sweep, 1, 'exit_speed', 'm/s', 10.0_wp)
+    call add_sweep_limit(sweep, 2, 'speed', 'm/s', 8.0_wp)
+    call add_sweep_limit(sweep, 3, 'lever_arm', 'm', 0.25_wp)
+    call add_sweep_limit(sweep, 4, 'acceleration_normal', 'g', 2.6_wp)
+    sweep%values = reshape([rider_values(base, SEX_FEMALE, 50.0_wp, 1.60_wp, 0.004_wp), &
+                            rider_values(base, SEX_FEMALE, 50.0_wp, 1.60_wp, 0.006_wp), &
+                            rider_values(base, SEX_MALE, 100.0_wp, 1.90_wp, 0.004_wp), &
+                            rider_values(base, SEX_MALE, 100.0_wp, 1.90_wp, 0.006_wp)], [N_SWEPT, 4])
+    call sweep_and_print('inputs/sweep/demo_population.nml', sweep)
+  end subroutine sweep_demo_population
+
+  !> inputs/templates/sweep.nml: the demo ride with every variable written,
+  !> two riders (male 75 kg 1.80 m, female 55 kg 1.65 m, paired), its three
+  !> limits.
+  subroutine sweep_template()
+    type(sweep_description_t) :: sweep
+    real(wp) :: base(N_SWEPT)
+    call standard_sweep(sweep, base)
+    allocate (sweep%limits(3))
+    call add_sweep_limit(sweep, 1, 'exit_speed', 'm/s', 10.0_wp)
+    call add_sweep_limit(sweep, 2, 'speed', 'm/s', 8.0_wp)
+    call add_sweep_limit(sweep, 3, 'lever_arm', 'm', 0.25_wp)
+    sweep%values = reshape([rider_values(base, SEX_MALE, 75.0_wp, 1.80_wp, 0.004_wp), &
+                            rider_values(base, SEX_FEMALE, 55.0_wp, 1.65_wp, 0.004_wp)], [N_SWEPT, 2])
+    call sweep_and_print('inputs/templates/sweep.nml', sweep)
+  end subroutine sweep_template
+
+  !> The base ride of both sweeps: the demo ride (its water, the standard
+  !> rider, the inputs' tolerances, no progress lines) and its values as
+  !> scenarios_sweep takes them (`base`, N_SWEPT: heading in degrees).
+  subroutine standard_sweep(sweep, base)
+    type(sweep_description_t), intent(out) :: sweep
+    real(wp), intent(out) :: base(N_SWEPT)
+    type(ride_description_t) :: ride
+    ride = standard_ride(demo_water(slide_of(demo_slide())), 0.5_wp, 1.0_wp)
+    sweep%water = ride%water
+    sweep%rider = ride%rider
+    sweep%options = ride%options
+    sweep%options%progress_seconds = 0
+    base = 0
+    base(V_SEX) = SEX_MALE
+    base(V_MASS) = 68.5_wp
+    base(V_HEIGHT) = 1.78_wp
+    base(V_MU) = 0.0724419_wp
+    base(V_U0) = 0.5_wp
+    base(V_V0) = pi_2
+    base(V_HEADING) = 0
+    base(V_SPEED) = 1
+    base(V_FLOW_RATE) = 0.004_wp
+    base(V_F1) = 0.0274748_wp
+    base(V_F2) = 0.138285_wp
+    base(V_F3) = 0.979822_wp
+  end subroutine standard_sweep
+
+  !> A ride of a sweep: `base` with the rider's sex, mass and height and the
+  !> flow rate.
+  pure function rider_values(base, sex, mass, height, flow_rate) result(v)
+    real(wp), intent(in) :: base(N_SWEPT), mass, height, flow_rate
+    integer, intent(in) :: sex
+    real(wp) :: v(N_SWEPT)
+    v = base
+    v(V_SEX) = sex
+    v(V_MASS) = mass
+    v(V_HEIGHT) = height
+    v(V_FLOW_RATE) = flow_rate
+  end function rider_values
+
+  subroutine add_sweep_limit(sweep, k, quantity, unit, maximum)
+    type(sweep_description_t), intent(inout) :: sweep
+    integer, intent(in) :: k
+    character(len=*), intent(in) :: quantity, unit
+    real(wp), intent(in) :: maximum
+    character(len=:), allocatable :: problem
+    call new_ride_limit(quantity, unit, 0.0_wp, .false., maximum, .true., norm2(sweep%rider%gravity), &
+                        sweep%limits(k), problem)
+    if (len(problem) > 0) then
+      print '(a)', 'limit '//quantity//': '//problem
+      error stop 1
+    end if
+  end subroutine add_sweep_limit
+
+  !> Runs every ride of `sweep` in one thread (the rides are the same in any
+  !> number: docs/sweep.md) and prints the summary's counts and each ride's
+  !> figures as `rides.<ride>.<figure>` (the CSV's row and column).
+  subroutine sweep_and_print(input, sweep)
+    character(len=*), intent(in) :: input
+    type(sweep_description_t), intent(in) :: sweep
+    type(sweep_result_t) :: result
+    integer, allocatable :: group(:), first(:)
+    integer :: i, k
+    call run_sweep(sweep, [(.true., i = 1, size(sweep%values, 2))], 1, result)
+    call water_groups(sweep%values, group, first)
+    call put(input, 'rides', real(result%n, wp))
+    call put(input, 'complete', real(count(result%status == RIDE_COMPLETE), wp))
+    call put(input, 'waters', real(size(first), wp))
+    call put(input, 'rides_over_limit', real(count(any(result%verdict == 1, dim=1)), wp))
+    do i = 1, result%n
+      if (result%status(i) /= RIDE_COMPLETE) then
+        print '(a)', 'FAIL '//input//': ride '//format_integer(i)//': '//trim(result%message(i))
+        error stop 1
+      end if
+      call put(input, 'rides.'//format_integer(i)//'.water_group', real(result%water_group(i), wp))
+      do k = 1, N_FIGURES
+        call put(input, 'rides.'//format_integer(i)//'.'//trim(figure_names(k)), result%figures(k, i))
+      end do
+    end do
+  end subroutine sweep_and_print
 
   ! --------------------------------------------------------------- building
 

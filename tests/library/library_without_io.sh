@@ -2,7 +2,8 @@
 # The shipped water and ride inputs through the library without io
 # (library_without_io.f90, descriptions filled in code) give the numbers the
 # command's runs of the same inputs give (--summary-json of the fixture
-# cli_every_input, tests/cli/support/every_input.sh: NAME.json per input).
+# cli_every_input, tests/cli/support/every_input.sh: NAME.json per input, and
+# a sweep's NAME.csv, a row per ride).
 # Both compute the same operations from the same values, so the numbers
 # must agree to the last digit and the step counts exactly; 1e-13 relative
 # allows a rounding in a sum the compiler may order differently between the
@@ -21,12 +22,12 @@ trap 'rm -rf "$work"' EXIT
 python=/usr/bin/python3
 command -v "$python" >/dev/null || python=python3
 "$python" - "$work/library.txt" "$results" <<'PY'
-import json, os, sys
+import csv, json, os, sys
 sys.path.insert(0, "tests/library")
 from built_inputs import check_built
 
 COUNTS = {"steps", "rhs_evaluations", "ride_steps", "flights", "whole_flights", "landings", "inlets_joined",
-          "limits_exceeded"}
+          "limits_exceeded", "rides", "complete", "waters", "rides_over_limit"}
 library = {}
 for line in open(sys.argv[1]):
     path, key, value = line.split()
@@ -42,10 +43,21 @@ for path, numbers in library.items():
     for key, value in json.load(open(summary))["values"].items():
         if isinstance(value, list):   # a table: its rows' columns as table.row.column
             for row, columns in enumerate(value, 1):
+                if not isinstance(columns, dict):   # a vector: key.row
+                    command[f"{key}.{row}"] = columns
+                    continue
                 for column, x in columns.items():
                     command[f"{key}.{row}.{column}"] = x
         else:
             command[key] = value
+    table = os.path.join(sys.argv[2], name + ".csv")   # a sweep's rides: a row each, as rides.row.column
+    if os.path.exists(table):
+        for row in csv.DictReader(open(table)):
+            for column, text in row.items():
+                try:
+                    command[f"rides.{row['ride']}.{column}"] = float(text)
+                except ValueError:
+                    pass
     if len(numbers) < 10:
         print(f"FAIL {path}: the library program printed only {numbers}")
         failures += 1
