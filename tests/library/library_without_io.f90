@@ -30,7 +30,7 @@ program library_without_io
   use water_streamline, only: CORRECTION_FULL, CORRECTION_OFF
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_body, only: SEX_MALE, SEX_FEMALE
-  use rider_model, only: N_CONTACTS, contact_names
+  use rider_model, only: N_CONTACTS, contact_names, rider_params_t, set_rider_mu, CONTACT_PELVIS
   use rider_flight, only: ride_flights_t, highest_drop
   use kinetostatics_force_law_factory, only: law_spec
   use design_ride_evaluation, only: new_ride_limit, noise_free, rider_size
@@ -38,6 +38,10 @@ program library_without_io
   use design_sweep, only: sweep_description_t, sweep_result_t, run_sweep, water_groups, N_SWEPT, N_FIGURES, &
     figure_names, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, V_HEADING, V_SPEED, V_FLOW_RATE, V_F1, V_F2, V_F3, &
     RIDE_COMPLETE
+  use design_water_identification, only: water_identification_t, water_fit_options_t, water_fit_t, &
+    new_water_identification, simulate_measurements, fit_water_friction
+  use design_rider_identification, only: rider_identification_t, rider_fit_options_t, rider_fit_t, &
+    rider_stations_t, new_rider_identification, simulate_rider, fit_rider_friction, rider_body_sensitivity
   use shipped_slides, only: demo_slide, second_slide, drop_slide, halfpipe_slide, bowl_slide, bowl_table_slide, &
     crest_slide, jump_slide, funnel_slide, patch_slide
   implicit none (type, external)
@@ -62,6 +66,10 @@ program library_without_io
   call ride_flight('inputs/ride/jump.nml', jump_slide(), 0.002_wp, 0.6_wp, 0.2_wp)
   call sweep_demo_population()
   call sweep_template()
+  call identify_water('inputs/design/identify_water_demo.nml')
+  call identify_water('inputs/templates/identify_water.nml')   ! the same, every variable written
+  call identify_rider_demo()
+  call identify_rider_template()
 
 contains
 
@@ -408,6 +416,252 @@ contains
       end do
     end do
   end subroutine sweep_and_print
+
+  ! --------------------------------------------------------- identification
+
+  !> inputs/design/identify_water_demo.nml (and its template): f1, f2, f3
+  !> of a twin experiment on the demo slide: the measurements synthesised
+  !> with table 4.3's f at 12 sections and on 3 segments, the fit started
+  !> 50 % off (the &water's f), weight 0.8, k1 1, all three estimated, lower
+  !> bounds 0, the thesis's midpoint speed and edges' middle, LMDER at ftol
+  !> and xtol 1e-8, one thread; Adams at rtol 1e-10, atol 1e-9 (thesis C.4).
+  subroutine identify_water(input)
+    character(len=*), intent(in) :: input
+    type(water_identification_t) :: setup
+    type(water_fit_options_t) :: options
+    type(water_fit_t) :: fit
+    type(status_t) :: status
+    real(wp), parameter :: twin_f(3) = [0.0274748_wp, 0.138285_wp, 0.979822_wp]
+    integer :: k
+    setup%water = demo_water(slide_of(demo_slide()))
+    setup%water%f1 = 0.0412122_wp
+    setup%water%f2 = 0.0691425_wp
+    setup%water%f3 = 1.469733_wp
+    setup%ode%method = ODE_ADAMS
+    setup%ode%rtol = 1e-10_wp
+    setup%ode%atol = 1e-9_wp
+    associate (d => setup%data)
+      d%section_arc_length = [5.0_wp, 10.0_wp, 15.0_wp, 20.0_wp, 25.0_wp, 30.0_wp, 35.0_wp, 40.0_wp, 45.0_wp, &
+                              50.0_wp, 55.0_wp, 60.0_wp]
+      d%segment_start = [10.0_wp, 30.0_wp, 50.0_wp]
+      d%segment_end = [12.0_wp, 32.0_wp, 52.0_wp]
+      allocate (d%section_v(size(d%section_arc_length)), d%segment_speed(size(d%segment_start)))
+      d%section_v = 0
+      d%segment_speed = 0
+    end associate
+    setup%threads = 1
+    options%weight = 0.8_wp
+    options%k1 = 1
+    options%estimate = .true.
+    options%lower = 0
+    options%solver%ftol = 1e-8_wp
+    options%solver%xtol = 1e-8_wp
+    call new_water_identification(setup, status)
+    call stop_unless_ok(input, 'the identification', status)
+    call simulate_measurements(setup, twin_f, setup%data%section_v, setup%data%segment_speed, status)
+    call stop_unless_ok(input, 'the twin measurements', status)
+    call fit_water_friction(setup, options, [setup%water%f1, setup%water%f2, setup%water%f3], fit, status)
+    call stop_unless_ok(input, 'the fit', status)
+    do k = 1, 3
+      call put(input, 'f'//format_integer(k), fit%f(k))
+      call put(input, 'f'//format_integer(k)//'_standard_error', fit%standard_error(k))
+    end do
+    call put(input, 'correlation_12', fit%correlation(1, 2))
+    call put(input, 'correlation_13', fit%correlation(1, 3))
+    call put(input, 'correlation_23', fit%correlation(2, 3))
+    call put(input, 'cost', fit%cost)
+    call put(input, 'position_part', fit%position_part)
+    call put(input, 'speed_part', fit%speed_part)
+    call put(input, 'rmse_position', fit%rmse_position)
+    call put(input, 'rmse_speed', fit%rmse_speed)
+    call put(input, 'evaluations', real(fit%evaluations, wp))
+    do k = 1, size(fit%error_v)
+      call put(input, 'sections.'//format_integer(k)//'.arc_length', setup%data%section_arc_length(k))
+      call put(input, 'sections.'//format_integer(k)//'.error', fit%error_v(k))
+    end do
+  end subroutine identify_water
+
+  !> inputs/design/identify_rider_demo.nml: mu_D from the measurements of
+  !> inputs/design/rider_stations.csv and rider_segments.csv (read here by
+  !> plain Fortran), the fit started at 0.036, weight 0.0932, bounds 0 and
+  !> 0.11, LMDER at ftol and xtol 1e-6, two threads; then the body-parameter
+  !> study of thesis table 4.10 at the identified mu_D (the ten variants of
+  !> scenarios_identify_rider's make_variants). No &solver: the ride's
+  !> defaults; no &water_solver: the water at the solver's defaults (rtol
+  !> 1e-10, atol 1e-10, output every 0.01 s).
+  subroutine identify_rider_demo()
+    character(len=*), parameter :: input = 'inputs/design/identify_rider_demo.nml'
+    type(rider_identification_t) :: setup
+    type(rider_fit_options_t) :: options
+    type(rider_params_t) :: variants(10)
+    type(status_t) :: statuses(10), status
+    real(wp) :: deviation(10)
+    real(wp), allocatable :: table(:, :)
+    type(rider_fit_t) :: fit
+    integer :: k
+    call identification_rider(setup)
+    table = csv_numbers('inputs/design/rider_stations.csv', 4)
+    setup%data%station_arc_length = table(1, :)
+    setup%data%angle = table(2:4, :)
+    table = csv_numbers('inputs/design/rider_segments.csv', 3)
+    setup%data%segment_start = table(1, :)
+    setup%data%segment_end = table(2, :)
+    setup%data%segment_speed = table(3, :)
+    setup%threads = 2
+    options%weight = 0.0932_wp
+    options%lower = 0
+    options%upper = 0.11_wp
+    options%solver%ftol = 1e-6_wp
+    options%solver%xtol = 1e-6_wp
+    call identification_water(input, setup)
+    call fit_rider_friction(setup, options, 0.036_wp, fit, status)
+    call stop_unless_ok(input, 'the fit', status)
+    call print_rider_fit(input, setup, fit)
+    call set_rider_mu(setup%params, fit%mu)
+    variants = setup%params
+    variants(1)%body%mass = 1.01_wp*setup%params%body%mass
+    variants(2)%body%mass = 0.99_wp*setup%params%body%mass
+    variants(3)%body%height = 1.01_wp*setup%params%body%height
+    variants(4)%body%height = 0.99_wp*setup%params%body%height
+    variants(5)%body%com_height = 1.01_wp*setup%params%body%com_height
+    variants(6)%body%com_height = 0.99_wp*setup%params%body%com_height
+    variants(7)%drag_radius(CONTACT_PELVIS) = 1.01_wp*setup%params%drag_radius(CONTACT_PELVIS)
+    variants(8)%drag_radius(CONTACT_PELVIS) = 0.99_wp*setup%params%drag_radius(CONTACT_PELVIS)
+    variants(9)%drag_radius(CONTACT_PELVIS) = 0.6_wp*setup%params%drag_radius(CONTACT_PELVIS)
+    variants(10)%drag = .false.
+    call rider_body_sensitivity(setup, variants, deviation, statuses, status)
+    call stop_unless_ok(input, 'the body-parameter study', status)
+    do k = 1, 10
+      call stop_unless_ok(input, 'variant '//format_integer(k), statuses(k))
+      call put(input, 'deviation_'//format_integer(k), deviation(k))
+    end do
+  end subroutine identify_rider_demo
+
+  !> inputs/templates/identify_rider.nml: a twin experiment (the angles and
+  !> speeds simulated with mu_D = 0.0724419) at five stations and two
+  !> segments, the fit started at 0.036, weight 0.6, k2 1, bounds 0 and
+  !> 0.11, LMDER at 1e-8, one thread; &water_solver as the demo ride's.
+  subroutine identify_rider_template()
+    character(len=*), parameter :: input = 'inputs/templates/identify_rider.nml'
+    type(rider_identification_t) :: setup
+    type(rider_fit_options_t) :: options
+    type(rider_params_t) :: twin
+    type(rider_stations_t) :: simulated
+    type(rider_fit_t) :: fit
+    type(status_t) :: status
+    call identification_rider(setup)
+    setup%data%station_arc_length = [2.5_wp, 4.375_wp, 6.25_wp, 8.125_wp, 10.0_wp]
+    allocate (setup%data%angle(3, 5))
+    setup%data%angle = 0
+    setup%data%segment_start = [3.0_wp, 6.5_wp]
+    setup%data%segment_end = [5.0_wp, 8.5_wp]
+    setup%data%segment_speed = [0.0_wp, 0.0_wp]
+    setup%threads = 1
+    options%weight = 0.6_wp
+    options%k2 = 1
+    options%lower = 0
+    options%upper = 0.11_wp
+    options%solver%ftol = 1e-8_wp
+    options%solver%xtol = 1e-8_wp
+    call identification_water(input, setup, demo_water(slide_of(demo_slide())))
+    twin = setup%params
+    call set_rider_mu(twin, 0.0724419_wp)
+    call simulate_rider(setup, twin, simulated, status)
+    call stop_unless_ok(input, 'the twin measurements', status)
+    setup%data%angle = simulated%angle
+    setup%data%segment_speed = simulated%segment_speed
+    call fit_rider_friction(setup, options, 0.036_wp, fit, status)
+    call stop_unless_ok(input, 'the fit', status)
+    call print_rider_fit(input, setup, fit)
+  end subroutine identify_rider_template
+
+  !> The rider both identifications measure: the standard rider on the
+  !> bottom from 0.5 m at 1 m/s, its friction's start mu 0.036, the ride's
+  !> default integration (no &solver) and its safety bound on the duration.
+  subroutine identification_rider(setup)
+    type(rider_identification_t), intent(out) :: setup
+    type(ride_description_t) :: ride
+    ride = standard_ride(demo_water(slide_of(demo_slide())), 0.5_wp, 1.0_wp)
+    allocate (setup%slide, source=ride%water%slide)
+    setup%params = ride%rider
+    setup%params%friction = law_spec('coulomb', 'mu', 0.036_wp)
+    setup%options%max_duration = 10*setup%slide%length()/setup%options%min_speed
+    setup%with_water = .true.
+  end subroutine identification_rider
+
+  !> The setup's derived places, then its water (`water`, or the demo
+  !> slide's &water at the solver's defaults) as the drag's field.
+  subroutine identification_water(input, setup, water)
+    character(len=*), intent(in) :: input
+    type(rider_identification_t), intent(inout) :: setup
+    type(water_description_t), intent(in), optional :: water
+    type(water_description_t) :: w
+    type(water_result_t) :: computed
+    type(status_t) :: status
+    call new_rider_identification(setup, status)
+    call stop_unless_ok(input, 'the identification', status)
+    if (present(water)) then
+      w = water
+    else
+      w = demo_water(slide_of(demo_slide()))
+      w%solver%ode%atol = 1e-10_wp
+      w%solver%output_step = 0.01_wp
+    end if
+    call compute_water(w, computed, status)
+    call stop_unless_ok(input, 'the water', status)
+    setup%water = computed%field
+  end subroutine identification_water
+
+  !> The summary's numbers of a rider identification (scenarios_identify_rider).
+  subroutine print_rider_fit(input, setup, fit)
+    character(len=*), intent(in) :: input
+    type(rider_identification_t), intent(in) :: setup
+    type(rider_fit_t), intent(in) :: fit
+    character(len=*), parameter :: errors(3) = [character(len=12) :: 'error_pelvis', 'error_heels', 'error_back']
+    character(len=:), allocatable :: row
+    integer :: k, c
+    call put(input, 'mu', fit%mu)
+    call put(input, 'standard_error', fit%standard_error)
+    call put(input, 'cost', fit%cost)
+    call put(input, 'position_part', fit%position_part)
+    call put(input, 'speed_part', fit%speed_part)
+    do c = 1, N_CONTACTS
+      call put(input, 'rmse_'//trim(contact_names(c)), fit%rmse_angle(c))
+    end do
+    call put(input, 'rmse_speed', fit%rmse_speed)
+    call put(input, 'evaluations', real(fit%evaluations, wp))
+    do k = 1, size(setup%data%station_arc_length)
+      row = 'stations.'//format_integer(k)//'.'
+      call put(input, row//'arc_length', setup%data%station_arc_length(k))
+      do c = 1, 3
+        call put(input, row//trim(errors(c)), fit%error_angle(c, k))
+      end do
+      call put(input, row//'rmse', fit%station_rmse(k))
+    end do
+  end subroutine print_rider_fit
+
+  !> The numbers of a CSV file of `columns` columns (lines after the
+  !> comments and the header), columns x rows.
+  function csv_numbers(path, columns) result(table)
+    character(len=*), intent(in) :: path
+    integer, intent(in) :: columns
+    real(wp), allocatable :: table(:, :)
+    character(len=512) :: line
+    real(wp) :: rows(columns, 10000)
+    integer :: unit, n, outcome
+    n = 0
+    open (newunit=unit, file=path, status='old', action='read')
+    do
+      read (unit, '(a)', iostat=outcome) line
+      if (outcome /= 0) exit
+      line = adjustl(line)
+      if (len_trim(line) == 0 .or. line(1:1) == '#' .or. verify(line(1:1), '0123456789-+.') /= 0) cycle
+      n = n + 1
+      read (line, *) rows(:, n)
+    end do
+    close (unit)
+    table = rows(:, :n)
+  end function csv_numbers
 
   ! --------------------------------------------------------------- building
 

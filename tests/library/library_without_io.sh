@@ -27,7 +27,8 @@ sys.path.insert(0, "tests/library")
 from built_inputs import check_built
 
 COUNTS = {"steps", "rhs_evaluations", "ride_steps", "flights", "whole_flights", "landings", "inlets_joined",
-          "limits_exceeded", "rides", "complete", "waters", "rides_over_limit"}
+          "limits_exceeded", "rides", "complete", "waters", "rides_over_limit",
+          "evaluations"}
 library = {}
 for line in open(sys.argv[1]):
     path, key, value = line.split()
