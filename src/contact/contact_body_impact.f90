@@ -22,6 +22,7 @@ module contact_body_impact
   use base_vector, only: cross
   use numerics_linear_algebra, only: lu_factor, lu_solve
   use kinetostatics_impact, only: impact_law_t, impact_outcome_t, resolve_impact, rigid_body_delassus
+  use kinetostatics_point_impacts, only: resolve_impacts
   implicit none (type, external)
   private
   public :: impact_body_t, collision_t, collide, collide_at_once, pair_delassus, relative_velocity, apply_impulse
@@ -124,25 +125,30 @@ contains
     body%velocity = v_centre - cross(body%omega, body%centre - body%origin)
   end subroutine apply_impulse
 
-  !> A frictionless impact at several contacts at once (a body landing on
-  !> two surfaces in one instant), Newton's restitution at each: the normal
-  !> impulses P >= 0 with the normal speeds after v+ = v- + W P, and at each
-  !> contact either P_i = 0 and v+_i >= -e_i v-_i, or v+_i = -e_i v-_i
-  !> (a linear complementarity problem; W, the Delassus matrix of the normal
-  !> directions, is found column by column from each body's response to a
-  !> unit impulse, and is positive definite where the contacts' normals are
-  !> independent on the bodies, so the solution is one: found among the
-  !> sets of active contacts). Contact i is between bodies(pair(1, i)) and
-  !> bodies(pair(2, i)) (index 0: the ground) at points_1(:, i),
-  !> points_2(:, i) with normal normals(:, i) out of body 1; every body's
-  !> twist is changed. Per contact: P_i, v-_i, v+_i and the energy it took,
-  !> -P_i (v-_i + v+_i)/2 (their sum the kinetic energy's fall).
-  subroutine collide_at_once(restitution, normals, points_1, points_2, pair, bodies, impulse, speed_before, &
-                             speed_after, energy_lost, status)
-    real(wp), intent(in) :: restitution(:), normals(:, :), points_1(:, :), points_2(:, :)
+  !> An impact at several contacts at once (a body landing on two surfaces
+  !> in one instant, three balls meeting), Newton's restitution at each.
+  !> Frictionless (every mu 0): the normal impulses P >= 0 with the normal
+  !> speeds after v+ = v- + W P, and at each contact either P_i = 0 and
+  !> v+_i >= -e_i v-_i, or v+_i = -e_i v-_i (a linear complementarity
+  !> problem; W, the Delassus matrix of the normal directions, is found
+  !> column by column from each body's response to a unit impulse, and is
+  !> positive definite where the contacts' normals are independent on the
+  !> bodies, so the solution is one: found among the sets of active
+  !> contacts). With friction at any contact: kinetostatics_point_impacts
+  !> resolve_impacts (the same law with Coulomb's friction on the velocities
+  !> after), with the full W of the contacts (3 x 3 blocks, world axes) from
+  !> the bodies' responses at rest to unit impulses along x, y, z. Contact i
+  !> is between bodies(pair(1, i)) and bodies(pair(2, i)) (index 0: the
+  !> ground) at points_1(:, i), points_2(:, i) with normal normals(:, i) out
+  !> of body 1; every body's twist is changed. Per contact: the normal
+  !> impulse P_i, the tangential impulse's size, v-_i, v+_i and the energy it
+  !> took, -P_i.(v-_i + v+_i)/2 (their sum the kinetic energy's fall).
+  subroutine collide_at_once(restitution, mu, normals, points_1, points_2, pair, bodies, impulse, tangential, &
+                             speed_before, speed_after, energy_lost, status)
+    real(wp), intent(in) :: restitution(:), mu(:), normals(:, :), points_1(:, :), points_2(:, :)
     integer, intent(in) :: pair(:, :)
     type(impact_body_t), intent(inout) :: bodies(0:)
-    real(wp), intent(out) :: impulse(:), speed_before(:), speed_after(:), energy_lost(:)
+    real(wp), intent(out) :: impulse(:), tangential(:), speed_before(:), speed_after(:), energy_lost(:)
     type(status_t), intent(inout) :: status
     type(impact_body_t) :: pushed(0:ubound(bodies, 1))
     real(wp) :: w(size(restitution), size(restitution))
@@ -152,10 +158,15 @@ contains
     logical :: found
     type(status_t) :: solved
     m = size(restitution)
+    tangential = 0
+    if (any(mu > 0)) then
+      call with_friction()
+      return
+    end if
     speed_before = [(normal_speed(bodies, i), i = 1, m)]
     do j = 1, m
       pushed = bodies
-      call push(pushed, j, 1.0_wp, status)
+      call push(pushed, j, normals(:, j), status)
       w(:, j) = [(normal_speed(pushed, i), i = 1, m)] - speed_before
     end do
     if (.not. status%ok()) return
@@ -183,28 +194,65 @@ contains
       return
     end if
     do j = 1, m
-      call push(bodies, j, impulse(j), status)
+      call push(bodies, j, impulse(j)*normals(:, j), status)
     end do
     if (.not. status%ok()) return
     speed_after = [(normal_speed(bodies, i), i = 1, m)]
     energy_lost = -impulse*(speed_before + speed_after)/2
   contains
+    !> The law with friction on the full W of the contacts.
+    subroutine with_friction()
+      real(wp) :: full(3*m, 3*m), v_before(3, m), v_after(3, m), p(3, m)
+      integer :: k, b
+      v_before = reshape([(relative(bodies, i), i = 1, m)], [3, m])
+      do j = 1, m
+        do k = 1, 3
+          pushed = bodies
+          do b = 0, ubound(bodies, 1)   ! at rest: W exactly, not a difference of speeds
+            pushed(b)%omega = 0
+            pushed(b)%velocity = 0
+          end do
+          call push(pushed, j, merge(1.0_wp, 0.0_wp, [1, 2, 3] == k), status)
+          full(:, 3*j - 3 + k) = [(relative(pushed, i), i = 1, m)]
+        end do
+      end do
+      if (.not. status%ok()) return
+      full = (full + transpose(full))/2
+      call resolve_impacts(full, normals, v_before, restitution, mu, p, v_after, energy_lost, status)
+      if (.not. status%ok()) return
+      do j = 1, m
+        call push(bodies, j, p(:, j), status)
+      end do
+      if (.not. status%ok()) return
+      speed_before = [(dot_product(normals(:, i), v_before(:, i)), i = 1, m)]
+      speed_after = [(normal_speed(bodies, i), i = 1, m)]
+      impulse = [(dot_product(normals(:, i), p(:, i)), i = 1, m)]
+      tangential = [(norm2(p(:, i) - impulse(i)*normals(:, i)), i = 1, m)]
+    end subroutine with_friction
+
+    !> The relative velocity of contact i (body 2's point relative to body 1's).
+    function relative(set_of, i) result(v)
+      type(impact_body_t), intent(in) :: set_of(0:)
+      integer, intent(in) :: i
+      real(wp) :: v(3)
+      v = relative_velocity(set_of(pair(1, i)), set_of(pair(2, i)), points_1(:, i), points_2(:, i))
+    end function relative
+
     !> The normal speed of contact i (body 2's point relative to body 1's).
     real(wp) function normal_speed(set_of, i) result(speed)
       type(impact_body_t), intent(in) :: set_of(0:)
       integer, intent(in) :: i
-      speed = dot_product(normals(:, i), relative_velocity(set_of(pair(1, i)), set_of(pair(2, i)), points_1(:, i), &
-                                                           points_2(:, i)))
+      speed = dot_product(normals(:, i), relative(set_of, i))
     end function normal_speed
 
-    !> The normal impulse p at contact j: +p n on its body 2, -p n on its body 1.
+    !> The impulse p at contact j: +p on its body 2, -p on its body 1.
     subroutine push(set_of, j, p, st)
       type(impact_body_t), intent(inout) :: set_of(0:)
       integer, intent(in) :: j
-      real(wp), intent(in) :: p
+      real(wp), intent(in) :: p(3)
       type(status_t), intent(inout) :: st
-      call apply_impulse(set_of(pair(2, j)), points_2(:, j), p*normals(:, j), st)
-      call apply_impulse(set_of(pair(1, j)), points_1(:, j), -p*normals(:, j), st)
+      call apply_impulse(set_of(pair(2, j)), points_2(:, j), p, st)
+      call apply_impulse(set_of(pair(1, j)), points_1(:, j), -p, st)
     end subroutine push
   end subroutine collide_at_once
 

@@ -32,12 +32,12 @@
 !> never end (Zeno: rebounds e^k v0, endless in number, their flights summing
 !> to a finite time) end so after finitely many, where e^k v0 falls below
 !> close_speed. A body landing on several contacts at once (a ball into a
-!> V, on the floor and another body) is one frictionless impact at all of
-!> the event's contacts (impact_at_once: contact_body_impact collide_at_once,
-!> Newton's restitution at each, the normal impulses >= 0 from the Delassus
-!> matrix of the normal directions); with friction or without restitution,
-!> or where a rebound is below close_speed (closing at several contacts at
-!> once), the run ends there, saying so.
+!> V, on the floor and another body) is one impact at all of the event's
+!> contacts (impact_at_once: contact_body_impact collide_at_once, Newton's
+!> restitution at each, Coulomb's impact_mu on the velocities after, from
+!> the Delassus matrix of the contacts); without restitution, or where a
+!> rebound is below close_speed (closing at several contacts at once), the
+!> run ends there, saying so.
 !>
 !> Several bodies may fly at once (one mechanism: each body its own six
 !> coordinates, its gaps at its own pose, its impacts changing its own
@@ -409,8 +409,8 @@ contains
   !> The mechanism's events, then landings: a contact's gap falling through
   !> zero is an impact (with its restitution) or ends the run. Landings of
   !> different bodies at once are independent impacts, one after the other;
-  !> several of one body at once are one impact at all of them
-  !> (impact_at_once). The
+  !> several of one body at once (with those within together_gap, closing)
+  !> are one impact at all of them (impact_at_once). The
   !> touching contact's root: opened (its landing is watched from now on),
   !> or gone back in (a landing on it).
   subroutine flight_handle_event(self, t, y, fired, action, status)
@@ -438,6 +438,7 @@ contains
       ! opened: the root is the gap from here (opening_gap, nonzero, where CVODE looks again)
       if (lands(c)) lands(c) = .not. self%gaps%opened()
     end if
+    lands = self%gaps%together(lands, self%work, self%body_frame)
     do c = 1, size(lands)
       if (.not. lands(c)) cycle
       associate (contact => self%system%contacts(c))
@@ -559,12 +560,11 @@ contains
 
   !> The landings of one event where a body lands on several contacts at
   !> once (`lands`, every contact landed on; no carried body among them): one
-  !> frictionless impact at all of them (contact_body_impact
-  !> collide_at_once, Newton's restitution at each), a row per contact, and
-  !> the bodies fly on. Not built, the run ending here, saying so: such an
-  !> impact with friction (impact_mu) or without restitution, and one that
-  !> leaves a contact slower than its close_speed (closing several contacts
-  !> at once).
+  !> impact at all of them (contact_body_impact collide_at_once, Newton's
+  !> restitution and impact_mu at each), a row per contact, and the bodies
+  !> fly on. Not built, the run ending here, saying so: such an impact
+  !> without restitution, and one that leaves a contact slower than its
+  !> close_speed (closing several contacts at once).
   subroutine impact_at_once(self, lands, t, y, action, status)
     class(flight_ode_t), intent(inout) :: self
     logical, intent(in) :: lands(:)
@@ -575,15 +575,15 @@ contains
     type(impact_body_t) :: bodies(0:size(self%body_frame))
     integer, allocatable :: c(:), pair(:, :)
     real(wp), allocatable :: normals(:, :), points_1(:, :), points_2(:, :), rates(:)
-    real(wp), dimension(count(lands)) :: impulse, before, after, lost
+    real(wp), dimension(count(lands)) :: impulse, tangential, before, after, lost
     integer :: f, i, b, m
     c = pack([(i, i = 1, size(lands))], lands)
     m = size(c)
-    if (any(self%system%contacts(c)%restitution < 0) .or. any(self%system%contacts(c)%impact_mu > 0)) then
+    if (any(self%system%contacts(c)%restitution < 0)) then
       action = max(action, EVENT_STOP)
       call add_outcome(self, 'landing on several contacts at once at t = '//format_short(t)//' s ('// &
-                       landed_names(self, lands)//'): an impact at several points needs restitution at each and '// &
-                       'is built frictionless only (impact_mu 0); the run ends here')
+                       landed_names(self, lands)//'): an impact at several points needs restitution at each; '// &
+                       'the run ends here')
       return
     end if
     pair = reshape([(self%gaps%body_1(c(i)), self%gaps%body(c(i)), i = 1, m)], [2, m])
@@ -593,8 +593,8 @@ contains
     normals = reshape([(self%gaps%gap(c(i))%normal, i = 1, m)], [3, m])
     points_1 = reshape([(self%gaps%gap(c(i))%point_1, i = 1, m)], [3, m])
     points_2 = reshape([(self%gaps%gap(c(i))%point_2, i = 1, m)], [3, m])
-    call collide_at_once(self%system%contacts(c)%restitution, normals, points_1, points_2, pair, bodies, impulse, &
-                         before, after, lost, status)
+    call collide_at_once(self%system%contacts(c)%restitution, self%system%contacts(c)%impact_mu, normals, points_1, &
+                         points_2, pair, bodies, impulse, tangential, before, after, lost, status)
     if (.not. status%ok()) return
     f = self%mechanism%f
     rates = y(f + 1:f + self%mechanism%ns)
@@ -606,7 +606,7 @@ contains
     do i = 1, m
       self%impacts = [self%impacts, impact_record_t(time=t, contact=c(i), body_1=pair(1, i), body_2=pair(2, i), &
                       normal_speed_before=before(i), normal_speed_after=after(i), normal_impulse=impulse(i), &
-                      tangential_impulse=0.0_wp, energy_lost=lost(i))]
+                      tangential_impulse=tangential(i), energy_lost=lost(i))]
     end do
     if (any(after < self%system%contacts(c)%close_speed)) then
       action = max(action, EVENT_STOP)

@@ -47,6 +47,13 @@ module contact_open_gaps
   !> tenth of touching_gap_limit, so that such a landing is within the
   !> closing's reach.
   real(wp), parameter :: opening_gap = 1e-10_wp
+  !> m: a contact of a body that lands (or of either body of a pair that
+  !> lands) whose gap is within together_gap and closing lands with it, in
+  !> one impact at several contacts: impacts that close together (1e-9 s
+  !> apart at 1 m/s) are one to the integration's error of the positions,
+  !> and their order would be rounding's (a ball dropped into a V whose
+  !> friction's impulses leave it 1e-14 m off the middle).
+  real(wp), parameter :: together_gap = 1e-9_wp
 
   !> The gaps of the bodies' contacts, in the order of the description's
   !> contacts (each between the ground and a body).
@@ -63,6 +70,7 @@ module contact_open_gaps
     procedure :: roots => gaps_roots
     procedure :: opened => gaps_opened
     procedure :: velocity => gaps_velocity
+    procedure :: together => gaps_together
   end type open_gaps_t
 
   !> A closed contact's model (contact_model) carrying the body while its
@@ -220,6 +228,30 @@ contains
       end associate
     end associate
   end function gaps_velocity
+
+  !> The contacts that land at an event: those whose roots fired (`lands`)
+  !> and the others of their bodies within together_gap and closing (the
+  !> gaps updated at the event's pose, the velocities set).
+  function gaps_together(self, lands, work, frames) result(together)
+    class(open_gaps_t), intent(in) :: self
+    logical, intent(in) :: lands(:)
+    type(mechanism_workspace_t), intent(in) :: work
+    integer, intent(in) :: frames(:)
+    logical :: together(size(lands))
+    logical :: involved(0:size(frames))
+    integer :: c
+    involved = .false.
+    do c = 1, size(lands)
+      if (lands(c)) involved([self%body(c), self%body_1(c)]) = .true.
+    end do
+    involved(0) = .false.
+    together = lands
+    do c = 1, size(lands)
+      if (lands(c) .or. self%carried(c) .or. c == self%touching) cycle
+      if (involved(self%body(c)) .or. involved(self%body_1(c))) together(c) = self%gap(c)%gap <= together_gap &
+        .and. dot_product(self%gap(c)%normal, self%velocity(c, work, frames)) < 0
+    end do
+  end function gaps_together
 
   !> The root of each contact at its body's pose (as gaps_update): its gap
   !> (the last where it cannot be found: a trial state the integrator does

@@ -37,7 +37,7 @@ module kinetostatics_impact
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT, STATUS_DOMAIN, STATUS_INTERNAL
   implicit none (type, external)
   private
-  public :: impact_law_t, impact_outcome_t, resolve_impact, rigid_body_delassus
+  public :: impact_law_t, impact_outcome_t, resolve_impact, rigid_body_delassus, tangent_basis
 
   !> Restitution e (energetic, 1) and Coulomb mu (1) during an impact.
   type :: impact_law_t

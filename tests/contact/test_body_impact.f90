@@ -36,7 +36,8 @@
 !>     lands on both at once: the frictionless impact at two points
 !>     (Newton's restitution at each; W's off-diagonal cos60/m) on its
 !>     closed form, five bounces as on a floor, then the run ends, saying
-!>     why; with friction not built (the run ends at the landing).
+!>     why; with friction the same bounces, each contact slipping
+!>     (test_impacts_at_once has the law's closed forms).
 program test_body_impact
   use base_kinds, only: wp
   use base_constants, only: standard_gravity
@@ -528,10 +529,11 @@ contains
   !> the pair's energy (1 - e^2) m v^2/2; bounces e^(2k) high at the times
   !> of a ball on a floor; at the fifth the rebound e^5 v0 cos30 is below
   !> close_speed and the run ends, saying so (closing at two points is not
-  !> built). With friction (impact_mu > 0) such an impact is not built: the
-  !> run ends at the landing, naming the body's contacts.
+  !> built). With friction (impact_mu 0.3; kinetostatics_point_impacts) the
+  !> same bounces, each contact slipping: normal impulses (1 + e) m v/(2
+  !> (cos30 - mu sin30)), friction mu of them.
   subroutine two_at_once()
-    real(wp), parameter :: z0 = 0.5_wp, radius = 0.1_wp, e = 0.5_wp, angle = 30
+    real(wp), parameter :: z0 = 0.5_wp, radius = 0.1_wp, e = 0.5_wp, angle = 30, mu = 0.3_wp
     type(flight_ode_t), target :: flight
     type(driver_result_t) :: result
     type(status_t) :: st
@@ -579,15 +581,34 @@ contains
     end associate
     call check_close(worst_x + worst_spin, 0.0_wp, 0.0_wp, 1e-12_wp, 'two at once: straight up and down, no spin')
     print '(a, 2es10.2)', '  two at once: sideways, spin ', worst_x, worst_spin
-    ! with friction: not built
-    call run_text(v_input(angle, z0, radius, e, 0.3_wp), 'two at once, friction', flight, result, st)
+    ! with friction (kinetostatics_point_impacts): by symmetry the ball goes
+    ! straight up at e v as without it, its contact points slipping up the
+    ! planes after the impact; friction mu P against that slip: the vertical
+    ! impulse 2 P (cos30 - mu sin30) = (1 + e) m v
+    call run_text(v_input(angle, z0, radius, e, mu), 'two at once, friction', flight, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_EVENT_STOP, 'two at once, friction: stops: '//st%text())
-    call check(index(flight%outcome, 'landing on several contacts at once at t = ') == 1 .and. &
-               index(flight%outcome, '(''on_left'', ''on_right''): an impact at several points needs restitution '// &
-                     'at each and is built frictionless only (impact_mu 0); the run ends here') > 0, &
-               'two at once, friction: the outcome says why: '//flight%outcome)
-    call check_close(flight%series%time(flight%series%n), v0/g, 0.0_wp, 1e-9_wp, &
-                     'two at once, friction: at the landing (s)')
-    call check(size(flight%impacts) == 0, 'two at once, friction: no impact made')
+    call check(index(flight%outcome, 'slower than close_speed (closing several contacts at once is not built)') > 0, &
+               'two at once, friction: the fifth rebound is too slow to go on: '//flight%outcome)
+    call check(size(flight%impacts) == 10, 'two at once, friction: five impacts at two points each')
+    if (size(flight%impacts) /= 10) return
+    t = v0/g
+    v = v0
+    do k = 1, 5
+      do i = 2*k - 1, 2*k
+        associate (row => flight%impacts(i))
+          call check_close(row%time, t, 0.0_wp, 1e-9_wp, 'two at once, friction: impact times as on a floor (s)')
+          call check_close(row%normal_speed_after, e*v*c30, 0.0_wp, 1e-9_wp, &
+                           'two at once, friction: rebound e v cos30 at each (m/s)')
+          call check_close(row%normal_impulse, (1 + e)*v/(2*(c30 - mu/2)), 0.0_wp, 1e-9_wp, &
+                           'two at once, friction: impulse (1 + e) m v/(2 (cos30 - mu sin30)) at each (N s)')
+          call check_close(row%tangential_impulse, mu*row%normal_impulse, 0.0_wp, 1e-9_wp, &
+                           'two at once, friction: each slips: friction mu P (N s)')
+        end associate
+      end do
+      call check_close(flight%impacts(2*k - 1)%energy_lost + flight%impacts(2*k)%energy_lost, (1 - e**2)*v**2/2, &
+                       0.0_wp, 1e-9_wp, 'two at once, friction: the pair takes (1 - e^2) m v^2/2 (J)')
+      t = t + 2*e*v/g
+      v = e*v
+    end do
   end subroutine two_at_once
 end program test_body_impact
