@@ -111,6 +111,7 @@ program shipped_descriptions
   call contact_loop()
   call contact_roll_beside_bounce()
   call contact_stacked_balls()
+  call contact_box_landing()
   if (failures > 0) error stop 1
 
 contains
@@ -884,6 +885,23 @@ contains
     system%contacts(2)%restitution = 0.9_wp   ! close_speed: the default
     call run_flying('inputs/contact/stacked_balls.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 1.5_wp)
   end subroutine contact_stacked_balls
+
+  subroutine contact_box_landing()
+    type(contact_system_t) :: system
+    system%shapes = [spec_shape('floor', 'plane', [character(len=1) ::], [real(wp) ::]), ball_shape('rear', 0.02_wp), &
+                     ball_shape('front', 0.02_wp)]
+    system%shapes(2)%description%origin = [-0.2_wp, 0.0_wp, -0.1_wp]
+    system%shapes(3)%description%origin = [0.2_wp, 0.0_wp, -0.1_wp]
+    system%bodies = [given_body('box', 2.0_wp, [0.0_wp, 0.0_wp, 0.0_wp], [0.0216666666666667_wp, 0.0333333333333333_wp, &
+                                0.0416666666666667_wp], [0.0_wp, 0.0_wp, 0.42_wp], [0.0_wp, 0.0_wp, 0.0_wp])]
+    system%bodies(1)%velocity = [2.0_wp, 0.0_wp, 0.0_wp]
+    system%contacts = [landing('rear_on_floor', 'floor', 'box', 0.5_wp, 0.1_wp), &
+                       landing('front_on_floor', 'floor', 'box', 0.5_wp, 0.1_wp)]
+    system%contacts(1)%shape_2 = 'rear'
+    system%contacts(2)%shape_2 = 'front'
+    system%contacts%impact_mu = 0.4_wp
+    call run_flying('inputs/contact/box_landing.nml', system, 1e-10_wp, 1e-10_wp, 0.005_wp, 1.0_wp)
+  end subroutine contact_box_landing
 
   !> As scenarios_contact runs a system whose contacts start open or may
   !> open: a flight from the start (build_flight), several bodies some carried

@@ -131,7 +131,9 @@ def draw(r, plt, args):
     fig = plt.figure(figsize=(15, 9 + 2.5 * (rows - 3)))
     ax = fig.add_subplot(1, 2, 1, projection="3d")
     drawn = [body_paths(ax, r, g)]
-    for name in contacts:
+    # a contact open all through (bodies that only fly and hit) has no contact point or force
+    closed = [name for name in contacts if f"{g}/contacts/{name}/position" in r]
+    for name in closed:
         p = r[f"{g}/contacts/{name}/position"].values
         ax.plot(*p.T, "--", lw=0.8, label=f"contact {name}")
         drawn.append(p)
@@ -160,7 +162,7 @@ def draw(r, plt, args):
     if phases:
         gaps(fig.add_subplot(rows, 2, 4), r, g, t, phases, table, contacts)
     ax = fig.add_subplot(rows, 2, 2 * rows - 2)
-    contact_forces(ax, r, g, [(name, "-") for name in contacts], contacts)
+    contact_forces(ax, r, g, [(name, "-") for name in closed], closed)
     shade_flights(ax, phases)
     mark_impact_times(ax, table)
     if phases:
