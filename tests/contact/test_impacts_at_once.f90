@@ -31,6 +31,12 @@
 !>   - box_flight: the box on two ball feet dropped flat with sideways speed
 !>     (contact scenario): both feet land at once, the impact at both on the
 !>     slip closed form; it bounces flat.
+!>   - law_conditions: resolve_impacts itself on 400 random impacts at two
+!>     and three contacts (W = A A^T + I/10, random normals and velocities,
+!>     e in {0, 0.5}, mu up to 1): after each, at every contact, the normal
+!>     speed (shifted by e) >= 0, the impulse >= 0, one of them zero; the
+!>     friction inside the cone with no slip, or on its edge against the
+!>     slip; v+ = v- + W P; the energy's fall >= 0 where it was resolved.
 !>   - energy_refused: a two-point impact where Newton's e = 1 with friction
 !>     would raise the kinetic energy (found by a search: 29 of 300 random
 !>     ones at e = 1, mu <= 0.6; none of 300 at e = 0.5 or e = 0): refused,
@@ -41,6 +47,7 @@ program test_impacts_at_once
   use base_status, only: status_t
   use base_vector, only: cross, rotation_xyz
   use numerics_event_driver, only: DRIVE_END_TIME, DRIVE_EVENT_STOP
+  use kinetostatics_point_impacts, only: resolve_impacts
   use contact_body_impact, only: impact_body_t, collide_at_once, relative_velocity
   use contact_flight, only: flight_ode_t
   use testing, only: check, check_close, finish_tests
@@ -61,6 +68,7 @@ program test_impacts_at_once
   call general()
   call box_flight()
   call energy_refused()
+  call law_conditions()
   call finish_tests('test_impacts_at_once')
 
 contains
@@ -449,4 +457,63 @@ contains
       end if
     end do
   end subroutine energy_refused
+  subroutine law_conditions()
+    real(wp), parameter :: tol = 1e-9_wp   ! relative to the speeds (the slip direction's bisection, the sweeps)
+    integer, parameter :: cases = 400
+    real(wp), allocatable :: a(:, :), w(:, :), normals(:, :), v(:, :), p(:, :), after(:, :), lost(:), e(:), mu(:)
+    real(wp) :: x(3), vn, pn, pt(3), vt(3), scale, worst
+    integer :: k, m, i, unresolved, seed_size
+    integer, allocatable :: seed(:)
+    type(status_t) :: st
+    call random_seed(size=seed_size)
+    seed = [(7919*i, i = 1, seed_size)]
+    call random_seed(put=seed)
+    unresolved = 0
+    worst = 0
+    do k = 1, cases
+      m = 2 + mod(k, 2)
+      allocate (a(3*m, 3*m), normals(3, m), v(3, m), p(3, m), after(3, m), lost(m), e(m), mu(m))
+      call random_number(a)
+      w = matmul(a - 0.5_wp, transpose(a - 0.5_wp))
+      do i = 1, 3*m
+        w(i, i) = w(i, i) + 0.1_wp
+      end do
+      do i = 1, m
+        call random_number(x)
+        normals(:, i) = (x - 0.5_wp)/norm2(x - 0.5_wp)
+        call random_number(x)
+        v(:, i) = 2*x - 1 - normals(:, i)*(0.2_wp + x(1))   ! mostly approaching
+      end do
+      call random_number(mu)
+      e = merge(0.0_wp, 0.5_wp, k <= cases/2)
+      st = status_t()
+      call resolve_impacts(w, normals, v, e, mu, p, after, lost, st)
+      if (.not. st%ok()) then
+        unresolved = unresolved + 1
+        deallocate (a, normals, v, p, after, lost, e, mu)
+        cycle
+      end if
+      scale = maxval(abs(v))
+      worst = max(worst, maxval(abs(after - v - reshape(matmul(w, reshape(p, [3*m])), [3, m])))/scale)
+      do i = 1, m
+        vn = dot_product(normals(:, i), after(:, i)) + e(i)*min(dot_product(normals(:, i), v(:, i)), 0.0_wp)
+        pn = dot_product(normals(:, i), p(:, i))
+        pt = p(:, i) - pn*normals(:, i)
+        vt = after(:, i) - dot_product(normals(:, i), after(:, i))*normals(:, i)
+        worst = max(worst, -vn/scale, -pn/scale, min(vn, pn)/scale, (norm2(pt) - mu(i)*pn)/scale)
+        if (norm2(pt) < mu(i)*pn*(1 - 1e-6_wp)) then
+          worst = max(worst, norm2(vt)/scale)
+        else if (norm2(vt) > tol*scale .and. norm2(pt) > 0) then
+          worst = max(worst, norm2(pt/norm2(pt) + vt/norm2(vt))*min(1.0_wp, norm2(vt)/scale))
+        end if
+      end do
+      if (e(1) == 0) worst = max(worst, -sum(lost)/scale**2)
+      deallocate (a, normals, v, p, after, lost, e, mu)
+    end do
+    call check(worst <= tol, 'law conditions: at every contact after the impact (relative to the speeds): '// &
+               number(worst))
+    call check(unresolved <= cases/20, 'law conditions: at most one in 20 not resolved (energy, settling): '// &
+               number(real(unresolved, wp)))
+    print '(a, es10.2, a, i0, a, i0)', '  law conditions: worst ', worst, ', not resolved ', unresolved, ' of ', cases
+  end subroutine law_conditions
 end program test_impacts_at_once
