@@ -280,7 +280,9 @@ contains
   !> mass (m/s) and the felt acceleration there, (a_c - g)/|g| along the
   !> vehicle's x (forward), y (left) and z (the normal) axes (g), from the
   !> vehicle's mechanism `m` evaluated at each record's state, its closure
-  !> started from the record's dependent coordinates.
+  !> started from the record's dependent coordinates and its force laws on
+  !> or off as they were at that record (the water's drag switches during a
+  !> ride: the workspace holds the run's last state; restored on return).
   subroutine vehicle_ride_figures(m, work, s, speed, felt, status)
     type(mechanism_t), intent(in) :: m
     type(mechanism_workspace_t), intent(inout) :: work
@@ -288,6 +290,7 @@ contains
     real(wp), allocatable, intent(out) :: speed(:), felt(:, :)
     type(status_t), intent(inout) :: status
     real(wp) :: residual, arm(3), acceleration(3), gravity(3), com(3), mass, inertia(3, 3)
+    logical :: run_active(m%n_laws)
     integer :: i, k, e, frame
     allocate (speed(s%n), felt(3, s%n))
     speed = 0
@@ -303,16 +306,20 @@ contains
       return
     end if
     call m%prepare_workspace(work)
+    run_active = [(work%laws(k)%law%active, k = 1, m%n_laws)]
     do i = 1, s%n
       do k = 1, m%r
         work%scalars(m%beta(k))%q = s%beta(k, i)
+      end do
+      do k = 1, m%n_laws
+        work%laws(k)%law%active = s%law_active(k, i) > 0.5_wp
       end do
       work%warm = .false.
       work%converged = .false.
       call m%evaluate(work, s%time(i), s%q(:, i), s%qd(:, i), residual, status)
       if (.not. status%ok()) then
         call prefix_status(status, 'vehicle figures at t = '//format_real(s%time(i))//' s')
-        return
+        exit
       end if
       associate (p => work%frames(frame))
         arm = matmul(p%rot, com)
@@ -320,6 +327,9 @@ contains
         acceleration = p%a + cross(p%alpha, arm) + cross(p%omega, cross(p%omega, arm))
         felt(:, i) = felt_acceleration(acceleration, gravity, p%rot)
       end associate
+    end do
+    do k = 1, m%n_laws
+      work%laws(k)%law%active = run_active(k)
     end do
   end subroutine vehicle_ride_figures
 

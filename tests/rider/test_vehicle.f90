@@ -10,7 +10,9 @@
 !> isometrically: a rider sitting on the slide has mass ~ s^3, length ~ s and
 !> inertia ~ s^5. In the water (uniform water on the incline, a constant
 !> drag coefficient): the speed against the closed form of quadratic drag
-!> balancing g (sin a - mu cos a), v = w + v_t tanh(t/T + atanh(1/2)).
+!> balancing g (sin a - mu cos a), v = w + v_t tanh(t/T + atanh(1/2)), and
+!> the felt acceleration with the drag of the record, whatever the run's
+!> last state.
 program test_vehicle
   use base_kinds, only: wp
   use base_constants, only: pi
@@ -157,9 +159,9 @@ contains
     type(ode_options_t) :: opt
     type(status_t) :: st
     real(wp) :: k, v_t, period, t, t_out, res, expected, down(3), normal(3)
-    real(wp), allocatable :: y(:), q0(:), qd0(:)
+    real(wp), allocatable :: y(:), q0(:), qd0(:), speed(:), felt(:, :)
     character(len=40) :: label
-    integer :: i
+    integer :: i, drag(2)
 
     write (label, '(a, 1x, i0, a, f4.2)') trim(vehicle_kinds(v%kind)), v%riders, ' rider(s), scale ', v%scale
     down = [cos(theta), 0.0_wp, -sin(theta)]
@@ -207,6 +209,23 @@ contains
       call check_close(y(4), expected, 1e-8_wp, 0.0_wp, 'terminal speed: u''(t) = w + v_t tanh(t/T + atanh 1/2), '// &
                        trim(label))
     end do
+    ! The ride figures take each record's drag as it was then, not as the
+    ! run left it: recorded in the water, then the drag switched off (as
+    ! at the end of a ride whose vehicle left the water), the felt
+    ! acceleration along the fall line is still (a - g sin a)/g
+    ! = -mu cos a - k (v - w)^2/(M g), not the dry -mu cos a.
+    call sys%record(t, y, RECORD_OUTPUT, st)
+    drag = [sys%mechanism%law_index('rear_water_drag'), sys%mechanism%law_index('front_water_drag')]
+    do i = 1, 2
+      sys%work%laws(drag(i))%law%active = .false.
+    end do
+    call vehicle_ride_figures(sys%mechanism, sys%work, sys%series, speed, felt, st)
+    call check(st%ok() .and. size(speed) == 1, 'terminal speed: the ride figures at one record: '//st%text())
+    if (.not. st%ok()) return
+    call check_close(felt(1, 1), -mu*cos(theta) - k*(y(4) - w)**2/(vb%body%mass*g), 1e-8_wp, 0.0_wp, &
+                     'terminal speed: felt along the fall line with the record''s drag, '//trim(label))
+    call check(.not. (sys%work%laws(drag(1))%law%active .or. sys%work%laws(drag(2))%law%active), &
+               'terminal speed: the run''s last drag flags restored after the figures, '//trim(label))
   end subroutine terminal_speed
 
   !> Water flowing at speed w along `down` over the plane through the origin,
