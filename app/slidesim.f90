@@ -23,6 +23,8 @@ program slidesim
                        standard_output_lost, standard_input_closed
   use io_namelist, only: nml_value_t, read_real_token, NUMBER_OK
   use io_input_declarations, only: input_reference
+  use io_provenance, only: set_build_commit
+  use app_build_commit, only: slidesim_git_commit
   implicit none (type, external)
 
   type(status_t) :: status
@@ -32,6 +34,8 @@ program slidesim
   integer :: i, n, equals
   logical :: options_ended, has_value, found
 
+  ! the result files' git_commit (stamped into the program alone: app/CMakeLists.txt)
+  call set_build_commit(slidesim_git_commit())
   ! a write beyond the file-size limit then fails and is reported (exit 3)
   call ignore_file_size_signal()
   ! a closed pipe or stream on standard output is reported (exit 3), not a kill part way
@@ -73,7 +77,7 @@ program slidesim
       call end_with_output_checked()
     case ('-V', '--version')
       call no_value()
-      call write_standard_output('slidesim '//slidesim_version)
+      call write_standard_output('slidesim '//slidesim_version//' (git '//slidesim_git_commit()//')')
       call end_with_output_checked()
     case ('-q', '--quiet')
       call no_value()
@@ -249,7 +253,7 @@ contains
     call write_standard_output('                            runs (default 2)')
     call write_standard_output('  -q, --quiet               no progress messages')
     call write_standard_output('  -h, --help                this help')
-    call write_standard_output('  -V, --version             the version')
+    call write_standard_output('  -V, --version             the version and the git commit of the build')
     call write_standard_output('')
     call write_standard_output('scenarios:')
     call print_scenarios()

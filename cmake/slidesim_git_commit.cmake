@@ -17,7 +17,7 @@ if(GIT_FOUND)
   endif()
 endif()
 set(text "!> Generated at build time by cmake/slidesim_git_commit.cmake: do not edit.
-module base_build_commit
+module app_build_commit
   implicit none (type, external)
   private
   public :: slidesim_git_commit
@@ -27,7 +27,7 @@ contains
     character(len=:), allocatable :: commit
     commit = '${commit}'
   end function slidesim_git_commit
-end module base_build_commit
+end module app_build_commit
 ")
 if(EXISTS ${OUT})
   file(READ ${OUT} old)

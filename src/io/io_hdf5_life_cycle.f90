@@ -6,8 +6,7 @@ submodule (io_hdf5) io_hdf5_life_cycle
   use base_status, only: set_status
   use base_sha256, only: sha256_hex
   use base_version, only: slidesim_version, slidesim_compiler, slidesim_compiler_options
-  use base_build_commit, only: slidesim_git_commit
-  use io_provenance, only: utc_timestamp, host_name
+  use io_provenance, only: utc_timestamp, host_name, build_commit
   use io_system, only: remove_file, rename_file, system_error_text, nonregular_kind, folder_lock_t
   use io_output_files, only: temporary_beside, text_output_t
   use io_hdf5_objects, only: write_string_attribute
@@ -77,7 +76,7 @@ contains
     call self%set_attribute('/', 'title', title, status)
     call self%set_attribute('/', 'layout_version', result_layout_version, status)
     call self%set_attribute('/', 'slidesim_version', slidesim_version, status)
-    call self%set_attribute('/', 'git_commit', slidesim_git_commit(), status)
+    call self%set_attribute('/', 'git_commit', build_commit(), status)
     call self%set_attribute('/', 'compiler', slidesim_compiler, status)
     call self%set_attribute('/', 'compiler_options', slidesim_compiler_options, status)
     call self%set_attribute('/', 'created_utc', utc_timestamp(), status)

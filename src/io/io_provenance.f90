@@ -1,11 +1,18 @@
 !> Where and when a result was made: the UTC time and the host name, from the
-!> C library (time, gmtime, strftime, gethostname).
+!> C library (time, gmtime, strftime, gethostname), and the git commit the
+!> program was built from.
 module io_provenance
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_size_t, c_long, c_ptr, c_null_char, &
                                          c_associated
   implicit none (type, external)
   private
-  public :: utc_timestamp, host_name
+  public :: utc_timestamp, host_name, set_build_commit, build_commit
+
+  ! Set once by the program at its start (app/: its build stamps the commit,
+  ! so a new commit relinks the program alone, not every test and
+  ! benchmark); a program of its own on the library writes 'unknown'
+  ! unless it sets it.
+  character(len=:), allocatable, save :: commit_of_build
 
   interface
     function c_time(t) bind(C, name='time') result(now)
@@ -35,6 +42,20 @@ module io_provenance
   end interface
 
 contains
+
+  !> Records the git commit of the program's build for the result files'
+  !> provenance (call once, before any run).
+  subroutine set_build_commit(commit)
+    character(len=*), intent(in) :: commit
+    commit_of_build = commit
+  end subroutine set_build_commit
+
+  !> The git commit set by set_build_commit, or 'unknown'.
+  function build_commit() result(commit)
+    character(len=:), allocatable :: commit
+    commit = 'unknown'
+    if (allocated(commit_of_build)) commit = commit_of_build
+  end function build_commit
 
   !> The current UTC time as ISO 8601, e.g. 2026-11-24T02:03:04Z.
   function utc_timestamp() result(text)

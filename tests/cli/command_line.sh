@@ -6,6 +6,7 @@ slidesim=$1
 
 check '"$slidesim" --help | grep -q point_mass' "--help lists point_mass"
 check '"$slidesim" --version | grep -Eq "^slidesim [0-9]+\.[0-9]+\.[0-9]+"' "--version"
+check '"$slidesim" --version | grep -Eq "\(git ([0-9a-f]{40}(-dirty)?|unknown)\)$"' "--version names the build's commit"
 check '! "$slidesim" --no-such-option 2>/dev/null' "unknown option fails"
 (cd "$work" && "$slidesim" -q > default.out 2> default.err); got=$?
 check '[ $got = 0 ]' "default run exit status ($got): $(cat "$work/default.err")"
@@ -14,6 +15,10 @@ check '[ -f "$work/slidesim_default.h5" ]' "default run writes slidesim_default.
 check 'h5dump -a /status "$work/slidesim_default.h5" | grep -q "\"complete\""' "default result marked complete"
 check 'h5dump -d /input/namelist "$work/slidesim_default.h5" | grep -q "scenario = .*ride"' "input text stored"
 check 'h5dump -a /water/position/units "$work/slidesim_default.h5" | grep -q "\"m\""' "units attribute"
+# The file names the commit the program was built from (--version's), not 'unknown'.
+commit=$("$slidesim" --version | sed -n 's/.*(git \(.*\))$/\1/p')
+check '[ -n "$commit" ] && h5dump -a /git_commit "$work/slidesim_default.h5" | grep -q "\"$commit\""' \
+  "result's git_commit is the build's ($commit)"
 # The printed default input is a valid input file that gives the same run.
 "$slidesim" --default-input > "$work/template.nml"
 (cd "$work" && "$slidesim" -q -o again.h5 template.nml > again.out 2>&1); got=$?
