@@ -23,7 +23,7 @@
 !> zones (|v - joint| > ~6 widths) and deviates from it by at most about
 !> r dv^2/2 inside (0.65 mm for the default 0.99-width dv = 0.05 rad).
 module geometry_cross_section
-  use base_kinds, only: wp
+  use base_kinds, only: wp, int64
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_OK, STATUS_INVALID_INPUT
   use numerics_spline_curve, only: spline_curve_t
@@ -33,7 +33,7 @@ module geometry_cross_section
   public :: circle_section_t, ellipse_section_t, flume_section_t, blended_section_t
   public :: logistic, logistic_rate, blend_weights, new_blended_section
   public :: profile_section_t, new_profile_section, polyline_self_intersection
-  public :: extent_intervals, extent_sample_v, sampled_extent, ellipse_point
+  public :: extent_intervals, extent_sample_v, sampled_extent, ellipse_point, flume_circle_alone
 
   !> s(:, i, j) = d^(i+j) [s_y, s_z] / du^i dv^j for i + j <= order.
   type :: section_point_t
@@ -375,30 +375,44 @@ contains
 
   ! ------------------------------------------------------------------- flume
 
+  !> The flume's point: its three parts (the walls and the circle) blended
+  !> by the logistic weights of its joints. Where flume_circle_alone holds,
+  !> the blend is the circle's part to the last bit (its weight 1, the
+  !> others' terms below a quarter of its spacing): it is taken without the
+  !> two exp and the sums (the same numbers).
   pure subroutine flume_evaluate(self, u, v, order, p, status)
     class(flume_section_t), intent(in) :: self
     real(wp), intent(in) :: u, v
     integer, intent(in) :: order
     type(section_point_t), intent(out) :: p
     type(status_t), intent(out) :: status
-    real(wp) :: lam(0:3, 2), w(0:3, 3), part(2, 0:3, 3), xi, r
+    real(wp) :: lam(0:3, 2), w(0:3, 3), part(2, 0:3, 3), xi, r, c, s
     integer :: k, m, j
     associate (unused => u)
     end associate
     r = self%radius
     xi = logistic_rate(0.0_wp, self%transition)
+    c = cos(v); s = sin(v)
+    status%code = STATUS_OK
+    p%order = order
+    if (flume_circle_alone(xi, r, v, c, s)) then
+      p%s(:, 0, 0) = [-r*c, -r*s]
+      if (order >= 1) p%s(:, 0, 1) = [r*s, -r*c]
+      if (order >= 2) p%s(:, 0, 2) = [r*c, r*s]
+      if (order >= 3) p%s(:, 0, 3) = [-r*s, r*c]
+      return
+    end if
     call logistic(v, 0.0_wp, xi, lam(:, 1))
     call logistic(v, pi, xi, lam(:, 2))
     call blend_weights(lam, w)
     part = 0
     ! wall 1 (v < 0, going up at y = -r), the circle, wall 2 (v > pi, at y = +r)
     part(:, 0, 1) = [-r, -r*v];        part(:, 1, 1) = [0.0_wp, -r]
-    part(:, 0, 2) = [-r*cos(v), -r*sin(v)]
-    part(:, 1, 2) = [r*sin(v), -r*cos(v)]
-    part(:, 2, 2) = [r*cos(v), r*sin(v)]
-    part(:, 3, 2) = [-r*sin(v), r*cos(v)]
+    part(:, 0, 2) = [-r*c, -r*s]
+    part(:, 1, 2) = [r*s, -r*c]
+    part(:, 2, 2) = [r*c, r*s]
+    part(:, 3, 2) = [-r*s, r*c]
     part(:, 0, 3) = [r, r*(v - pi)];   part(:, 1, 3) = [0.0_wp, r]
-    p%order = order
     do k = 0, order
       do j = 1, 3
         do m = 0, k
@@ -406,8 +420,36 @@ contains
         end do
       end do
     end do
-    status%code = STATUS_OK
   end subroutine flume_evaluate
+
+  !> Whether the flume's blend (flume_evaluate) at v, c = cos v, s = sin v,
+  !> is its circle's part to the last bit, shown without evaluating it: with
+  !> t the smaller of xi v and xi (pi - v) (v inside (0, pi)), each joint's
+  !> e <= exp(-t). Then the circle's weight is 1 exactly (1/(1 + e) and
+  !> 1 - e/(1 + e) round to 1), the walls' weight 0, and the other terms of
+  !> a partial's sum (at most 10, each at most 6 X (e_1 + e_2) r pi, X =
+  !> max(1, xi)^3) add up to less than 1024 X r exp(-t). That is below a
+  !> quarter of the spacing of the smallest of the circle's partials (m =
+  !> r min(|c|, |s|), spacing > m 2^-53) where X r 2^(66 - n) < m, n =
+  !> floor(t log2 e) (2^(1 - n) > exp(-t); t at most 700, where logistic
+  !> clamps): then adding them leaves the circle's number as it is. 2^(66 - n)
+  !> is formed from its exponent bits (no libm call).
+  pure logical function flume_circle_alone(xi, r, v, c, s) result(alone)
+    real(wp), intent(in) :: xi, r, v, c, s
+    real(wp), parameter :: log2e = 1.4426950408889634_wp
+    real(wp) :: t
+    alone = .false.
+    if (.not. (xi > 0 .and. r > 0)) return
+    t = min(xi*v, -(xi*(v - pi)), 700.0_wp)
+    if (.not. t > 1) return
+    alone = max(1.0_wp, xi)**3*r*power_of_two(66 - floor(t*log2e)) < min(abs(r*c), abs(r*s))
+  end function flume_circle_alone
+
+  !> 2^k for -1022 <= k <= 1023 (a normal double: its exponent bits alone).
+  elemental real(wp) function power_of_two(k) result(x)
+    integer, intent(in) :: k
+    x = transfer(shiftl(int(k + 1023, int64), 52), 1.0_wp)
+  end function power_of_two
 
   pure subroutine flume_range(self, v_min, v_max)
     class(flume_section_t), intent(in) :: self
