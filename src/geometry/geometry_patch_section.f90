@@ -205,7 +205,7 @@ contains
     integer, intent(in) :: order
     real(wp), intent(out) :: f(0:3, 0:3)
     logical, intent(out) :: on_patch
-    real(wp) :: vv, v_min, v_max
+    real(wp) :: vv
     integer :: k
     logical :: wrapped, inside
     f = 0
@@ -215,10 +215,7 @@ contains
     do k = 1, size(self%patches)
       if (.not. (u > self%patches(k)%u_ends(1) .and. u < self%patches(k)%u_ends(4))) cycle
       if (.not. wrapped) then   ! v into the base's range, once for all patches
-        if (self%base%periodic()) then
-          call self%base%v_range(v_min, v_max)
-          vv = v_min + modulo(v - v_min, v_max - v_min)
-        end if
+        vv = base_v(self, v)
         wrapped = .true.
       end if
       call add_patch(self%patches(k), u, vv, order, f, inside)
@@ -226,33 +223,57 @@ contains
     end do
   end subroutine patch_offset_at
 
+  !> v in the base's range (wrapped where the base is periodic).
+  pure real(wp) function base_v(self, v) result(vv)
+    class(patch_section_t), intent(in) :: self
+    real(wp), intent(in) :: v
+    real(wp) :: v_min, v_max
+    vv = v
+    if (self%base%periodic()) then
+      call self%base%v_range(v_min, v_max)
+      vv = v_min + modulo(v - v_min, v_max - v_min)
+    end if
+  end function base_v
+
   !> f += patch's W(u) W(v) d(u, v) and its partials to `order` at (u, vv),
   !> vv in the base's range; inside: (u, vv) inside both windows (else f
-  !> is left as it was). Where both windows are flat (W = 1, derivatives 0)
-  !> Leibniz's sum is the spline's partial alone (its other terms are
-  !> zeros: the same number).
+  !> is left as it was).
   pure subroutine add_patch(patch, u, vv, order, f, inside)
     type(patch_offset_t), intent(in) :: patch
     real(wp), intent(in) :: u, vv
     integer, intent(in) :: order
     real(wp), intent(inout) :: f(0:3, 0:3)
     logical, intent(out) :: inside
-    real(wp) :: wu(0:3), wv(0:3), d(0:3, 0:3)
+    real(wp) :: wu(0:3), wv(0:3)
     type(spline_surface_eval_t) :: e
     type(status_t) :: st
-    integer :: i, j, a, b
     logical :: flat_u, flat_v
     call window(patch%u_ends, u, wu, inside, flat_u)
     if (.not. inside) return
     call window(patch%v_ends, vv, wv, inside, flat_v)
     if (.not. inside) return
     call patch%spline%evaluate(u, vv, e, st, order)   ! inside its domain
+    call add_weighted(e, wu, wv, flat_u .and. flat_v, order, f)
+  end subroutine add_patch
+
+  !> f += W(u) W(v) d and its partials to `order` (Leibniz) from the
+  !> spline's partials e and the windows wu, wv; where both windows are
+  !> flat (W = 1, derivatives 0) the sum is the spline's partial alone (its
+  !> other terms are zeros: the same number).
+  pure subroutine add_weighted(e, wu, wv, flat, order, f)
+    type(spline_surface_eval_t), intent(in) :: e
+    real(wp), intent(in) :: wu(0:3), wv(0:3)
+    logical, intent(in) :: flat
+    integer, intent(in) :: order
+    real(wp), intent(inout) :: f(0:3, 0:3)
+    real(wp) :: d(0:3, 0:3)
+    integer :: i, j, a, b
     d = 0
     d(0, 0) = e%f(1)
     d(1, 0) = e%fu(1); d(0, 1) = e%fv(1)
     d(2, 0) = e%fuu(1); d(1, 1) = e%fuv(1); d(0, 2) = e%fvv(1)
     d(3, 0) = e%fuuu(1); d(2, 1) = e%fuuv(1); d(1, 2) = e%fuvv(1); d(0, 3) = e%fvvv(1)
-    if (flat_u .and. flat_v) then
+    if (flat) then
       do i = 0, order
         do j = 0, order - i
           f(i, j) = f(i, j) + d(i, j)
@@ -269,7 +290,7 @@ contains
         end do
       end do
     end do
-  end subroutine add_patch
+  end subroutine add_weighted
 
   !> The base's point plus f n and its partials (Leibniz in v). Off the
   !> patches (or where f and its partials are 0) the base's point itself;
@@ -315,16 +336,21 @@ contains
   !> sampled_extent), and at least the base's. Over a base that does not vary
   !> along u the points are those patch_evaluate gives (base point + f n, the
   !> same operations) from the base's points and normals kept at
-  !> construction: only f is evaluated at each u.
+  !> construction: only f is evaluated at each sample, patch_offset_at's sum
+  !> (add_weighted from each patch's windows) with each patch's spline on
+  !> the samples in its window by one evaluate_grid (its shifts along u once
+  !> per u, not at every sample; every partial the same bits as evaluate's).
   pure function patch_extent(self, u) result(r)
     class(patch_section_t), intent(in) :: self
     real(wp), intent(in) :: u
     real(wp) :: r
-    real(wp) :: a, b, f(0:3, 0:3), s(2)
+    real(wp) :: a, b, s(2), wu(0:3), wv(0:3, 0:extent_intervals), f(0:3, 0:3), f0(0:extent_intervals)
+    real(wp) :: vv(0:extent_intervals)
     type(section_point_t) :: p
+    type(spline_surface_eval_t) :: e(1, extent_intervals + 1)
     type(status_t) :: st
-    integer :: i
-    logical :: on_patch
+    integer :: i, k, m, n, at(extent_intervals + 1)
+    logical :: on_patch(0:extent_intervals), inside, flat_u, flat_v(0:extent_intervals)
     r = self%base%extent(u)
     if (.not. any(self%patches%u_ends(1) < u .and. self%patches%u_ends(4) > u)) return
     call self%v_range(a, b)
@@ -336,11 +362,38 @@ contains
       return
     end if
     do i = 0, extent_intervals
+      vv(i) = base_v(self, extent_sample_v(a, b, i))
+    end do
+    ! patch_offset_at's f(0, 0) at every sample, patch by patch in its order
+    f0 = 0
+    on_patch = .false.
+    do k = 1, size(self%patches)
+      call window(self%patches(k)%u_ends, u, wu, inside, flat_u)
+      if (.not. inside) cycle
+      n = 0
+      do i = 0, extent_intervals
+        if (.not. self%sampled(i)) cycle
+        call window(self%patches(k)%v_ends, vv(i), wv(:, i), inside, flat_v(i))
+        if (.not. inside) cycle
+        n = n + 1
+        at(n) = i
+      end do
+      if (n == 0) cycle
+      call self%patches(k)%spline%evaluate_grid([u], vv(at(:n)), e(:, :n), st)
+      do m = 1, n
+        i = at(m)
+        f = 0
+        f(0, 0) = f0(i)
+        call add_weighted(e(1, m), wu, wv(:, i), flat_u .and. flat_v(i), 0, f)
+        f0(i) = f(0, 0)
+        on_patch(i) = .true.
+      end do
+    end do
+    do i = 0, extent_intervals
       if (.not. self%sampled(i)) cycle
       s = self%base_samples(:, i)
-      call self%offset_at(u, extent_sample_v(a, b, i), 0, f, on_patch)
-      if (on_patch) on_patch = .not. all(f == 0)
-      if (on_patch) s = s + f(0, 0)*self%normals(:, i)
+      if (on_patch(i)) on_patch(i) = f0(i) /= 0   ! all of f: at order 0 only f(0, 0) is formed
+      if (on_patch(i)) s = s + f0(i)*self%normals(:, i)
       r = max(r, norm2(s))
     end do
   end function patch_extent
