@@ -36,7 +36,7 @@ module design_catalogue
   implicit none (type, external)
   private
   public :: allowed_values_t, catalogue_t, catalogue_result_t, part_t, choose_from_catalogue, nearest_allowed, &
-    neighbourhood, parts_of, part_text
+    neighbourhood, parts_of, part_text, allowed_in_list, allowed_by_step, step_indices
 
   !> The allowed values of one design variable: increasing, inside its bounds.
   type :: allowed_values_t
@@ -72,6 +72,33 @@ module design_catalogue
   end type catalogue_result_t
 
 contains
+
+  !> The values of an increasing `list` (a catalogue's parts) that a variable
+  !> within [lower, upper] may take.
+  pure function allowed_in_list(list, lower, upper) result(values)
+    real(wp), intent(in) :: list(:), lower, upper
+    real(wp), allocatable :: values(:)
+    values = pack(list, lower <= list .and. list <= upper)
+  end function allowed_in_list
+
+  !> The multiples k step (k = first .. last) inside [lower, upper], a bound
+  !> taken within 1e-9 steps (so that a bound written as a multiple is one).
+  pure subroutine step_indices(step, lower, upper, first, last)
+    real(wp), intent(in) :: step, lower, upper
+    integer, intent(out) :: first, last
+    first = ceiling(lower/step - 1e-9_wp)
+    last = floor(upper/step + 1e-9_wp)
+  end subroutine step_indices
+
+  !> The values a variable within [lower, upper] may take from a catalogue
+  !> made in steps of `step`: its multiples there (step_indices).
+  pure function allowed_by_step(step, lower, upper) result(values)
+    real(wp), intent(in) :: step, lower, upper
+    real(wp), allocatable :: values(:)
+    integer :: first, last, k
+    call step_indices(step, lower, upper, first, last)
+    values = [(k*step, k=first, last)]
+  end function allowed_by_step
 
   !> The index of the allowed value nearest to x (a tie: the lower one).
   pure integer function nearest_allowed(values, x) result(j)

@@ -28,7 +28,7 @@ module design_sweep
   implicit none (type, external)
   private
   public :: sweep_description_t, sweep_result_t, run_sweep, water_groups, ride_description, new_sweep_result, &
-    rides_of_rank
+    rides_of_rank, swept_values_t, sweep_row_count, sweep_rows
   public :: N_SWEPT, swept_names, swept_units, swept_descriptions, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, &
     V_HEADING, V_SPEED, V_FLOW_RATE, V_F1, V_F2, V_F3
   public :: N_FIGURES, figure_names, figure_unit, figure_descriptions, F_FELT_MAGNITUDE_MAX
@@ -105,6 +105,11 @@ module design_sweep
     real(wp), allocatable :: values(:, :)              !< N_SWEPT x rides (heading in degrees, sex 1 or 2)
   end type sweep_description_t
 
+  !> The values one swept variable takes (a list, or a range's values).
+  type :: swept_values_t
+    real(wp), allocatable :: x(:)
+  end type swept_values_t
+
   !> Every ride's outcome and figures (columns: rides); limits x rides for
   !> the verdicts. Figures are 0 where a ride failed.
   type :: sweep_result_t
@@ -121,6 +126,61 @@ module design_sweep
   end type sweep_result_t
 
 contains
+
+  !> How many rides sweep_rows makes of `lists` (a real: the product can
+  !> overflow an integer): the product of the crossed variables' counts, the
+  !> paired ones (`together`, each as many values) one axis.
+  pure real(wp) function sweep_row_count(lists, together) result(rides)
+    type(swept_values_t), intent(in) :: lists(N_SWEPT)
+    logical, intent(in) :: together(N_SWEPT)
+    integer :: k
+    rides = 1
+    do k = 1, N_SWEPT
+      if (together(k) .and. k /= findloc(together, .true., dim=1)) cycle
+      rides = rides*size(lists(k)%x)
+    end do
+  end function sweep_row_count
+
+  !> The rides of a sweep (docs/sweep.md, "Input"; N_SWEPT x rides, the
+  !> values of sweep_description_t): every variable's list (one value: not
+  !> swept) crossed with the others, every combination, the first variable of
+  !> swept_names varying slowest, the last fastest; the variables `together`
+  !> (paired: each as many values) vary together, element by element, as one
+  !> axis in the place of the first of them.
+  pure function sweep_rows(lists, together) result(values)
+    type(swept_values_t), intent(in) :: lists(N_SWEPT)
+    logical, intent(in) :: together(N_SWEPT)
+    real(wp), allocatable :: values(:, :)
+    integer :: axes(N_SWEPT), sizes(N_SWEPT), index(N_SWEPT), n_axes, a, i, j, k, first_together
+    allocate (values(N_SWEPT, nint(sweep_row_count(lists, together))))
+    first_together = findloc(together, .true., dim=1)
+    n_axes = 0
+    do k = 1, N_SWEPT
+      if (together(k) .and. k /= first_together) cycle
+      n_axes = n_axes + 1
+      axes(n_axes) = k
+      sizes(n_axes) = size(lists(k)%x)
+    end do
+    index = 1
+    do i = 1, size(values, 2)
+      do a = 1, n_axes
+        k = axes(a)
+        if (together(k)) then
+          do j = 1, N_SWEPT
+            if (together(j)) values(j, i) = lists(j)%x(index(a))
+          end do
+        else
+          values(k, i) = lists(k)%x(index(a))
+        end if
+      end do
+      ! the next combination: the last axis fastest
+      do a = n_axes, 1, -1
+        index(a) = index(a) + 1
+        if (index(a) <= sizes(a)) exit
+        index(a) = 1
+      end do
+    end do
+  end function sweep_rows
 
   !> The file's unit of figure k in a sweep under `gravity` (m/s^2): felt
   !> accelerations in its |gravity| (felt_acceleration_units).

@@ -11,7 +11,7 @@ module io_element_design_config
   use design_slide_design, only: parameter_value, parameter_names, parameter_units, PARAMETER_LENGTH, &
     PARAMETER_SLOPE, PARAMETER_RADIUS, PARAMETER_ANGLE
   use design_geometry_optimization, only: optimization_setup_t
-  use design_catalogue, only: catalogue_t
+  use design_catalogue, only: catalogue_t, allowed_in_list, allowed_by_step, step_indices
   use io_input, only: input_text_t, group_reader_t, open_group, group_present, format_real, indexed_name
   use io_slide_geometry_config, only: read_slide_elements
   implicit none (type, external)
@@ -248,17 +248,16 @@ contains
         do i = 1, size(d%parameter)
           if (d%parameter(i) /= p) cycle
           if (r%has(name)) then
-            values = pack(list, d%lower(i) <= list .and. list <= d%upper(i))
+            values = allowed_in_list(list, d%lower(i), d%upper(i))
           else
-            first = ceiling(d%lower(i)/step - 1e-9_wp)
-            last = floor(d%upper(i)/step + 1e-9_wp)
+            call step_indices(step, d%lower(i), d%upper(i), first, last)
             if (real(last - first, wp) >= max_allowed) then
               call r%invalid(step_name, r%written(step_name), 'gives more than '//format_integer(max_allowed)// &
                              ' values inside the bounds of design variable '//format_integer(i)//' ('// &
                              variable_name(i)//'): a larger step', status)
               return
             end if
-            values = [(k*step, k=first, last)]
+            values = allowed_by_step(step, d%lower(i), d%upper(i))
           end if
           if (size(values) == 0) then
             call r%invalid(given, r%written(given), &

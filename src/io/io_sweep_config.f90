@@ -12,18 +12,13 @@ module io_sweep_config
   use base_status, only: status_t
   use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, in_range, format_real
   use rider_body, only: SEX_MALE, SEX_FEMALE
-  use design_sweep, only: N_SWEPT, swept_names, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, V_HEADING, V_SPEED, &
-    V_FLOW_RATE, V_F1, V_F2, V_F3
+  use design_sweep, only: N_SWEPT, swept_names, V_SEX, swept_values_t, sweep_row_count, sweep_rows
   implicit none (type, external)
   private
   public :: sweep_config_t, read_sweep_config, max_rides, max_values, open_sweep_group, swept_given_name
 
   !> most rides of one sweep, most values of one list
   integer, parameter :: max_rides = 1000000, max_values = 10000
-
-  type :: real_list_t
-    real(wp), allocatable :: x(:)
-  end type real_list_t
 
   type :: sweep_config_t
     real(wp), allocatable :: values(:, :)        !< N_SWEPT x rides
@@ -46,9 +41,9 @@ contains
     character(len=24) :: paired(N_SWEPT), combine
     character(len=1024) :: csv
     type(bounds_t) :: bounds(N_SWEPT)
-    type(real_list_t) :: lists(N_SWEPT)
+    type(swept_values_t) :: lists(N_SWEPT)
     logical :: together(N_SWEPT), paired_given(N_SWEPT)
-    integer :: k, j, n_rides, count_together
+    integer :: k, j, count_together
     real(wp) :: rides
 
     call open_sweep_group(input, r, status)
@@ -127,25 +122,19 @@ contains
       end if
     end do
 
-    ! ---- the rides: one axis per crossed variable, one for the paired ones
-    rides = 1
-    do k = 1, N_SWEPT
-      if (together(k) .and. k /= findloc(together, .true., dim=1)) cycle
-      rides = rides*size(lists(k)%x)
-    end do
+    ! ---- the rides: one axis per crossed variable, one for the paired ones (design_sweep)
+    rides = sweep_row_count(lists, together)
     if (rides > max_rides) then
       call r%invalid('(swept variables)', format_real(rides)//' rides', 'at most '//format_integer(max_rides)// &
                      ' rides in one sweep; split it', status)
       return
     end if
-    n_rides = nint(rides)
-    allocate (config%values(N_SWEPT, n_rides))
-    call expand()
+    config%values = sweep_rows(lists, together)
 
   contains
 
     subroutine read_sex(list)
-      type(real_list_t), intent(out) :: list
+      type(swept_values_t), intent(out) :: list
       character(len=8) :: words(max_values)
       logical :: given(max_values)
       integer :: n
@@ -162,7 +151,7 @@ contains
 
     subroutine read_numbers(k, list)
       integer, intent(in) :: k
-      type(real_list_t), intent(out) :: list
+      type(swept_values_t), intent(out) :: list
       character(len=:), allocatable :: name
       real(wp) :: range(3)
       real(wp), allocatable :: x(:)
@@ -200,39 +189,6 @@ contains
       list%x = [(range(1) + (range(2) - range(1))*real(i - 1, wp)/(n - 1), i=1, n)]
       list%x(n) = range(2)
     end subroutine read_numbers
-
-    !> Every combination, the first axis slowest; a paired axis takes the
-    !> place of its first variable.
-    subroutine expand()
-      integer :: axes(N_SWEPT), sizes(N_SWEPT), index(N_SWEPT), n_axes, a, i, first_together
-      first_together = findloc(together, .true., dim=1)
-      n_axes = 0
-      do k = 1, N_SWEPT
-        if (together(k) .and. k /= first_together) cycle
-        n_axes = n_axes + 1
-        axes(n_axes) = k
-        sizes(n_axes) = size(lists(k)%x)
-      end do
-      index = 1
-      do i = 1, n_rides
-        do a = 1, n_axes
-          k = axes(a)
-          if (together(k)) then
-            do j = 1, N_SWEPT
-              if (together(j)) config%values(j, i) = lists(j)%x(index(a))
-            end do
-          else
-            config%values(k, i) = lists(k)%x(index(a))
-          end if
-        end do
-        ! the next combination: the last axis fastest
-        do a = n_axes, 1, -1
-          index(a) = index(a) + 1
-          if (index(a) <= sizes(a)) exit
-          index(a) = 1
-        end do
-      end do
-    end subroutine expand
   end subroutine read_sweep_config
 
   pure function list_names() result(text)
