@@ -43,7 +43,13 @@ module design_rider_identification
   private
   public :: rider_measurements_t, rider_identification_t, rider_fit_options_t, rider_fit_t, rider_stations_t
   public :: new_rider_identification, simulate_rider, rider_cost_groups, fit_rider_friction, rider_weight_sweep
-  public :: rider_body_sensitivity
+  public :: rider_body_sensitivity, body_variants, N_BODY_VARIANTS, body_variant_names
+
+  !> Table 4.10's variants of the identified rider (body_variants), in words.
+  integer, parameter :: N_BODY_VARIANTS = 10
+  character(len=*), parameter :: body_variant_names(N_BODY_VARIANTS) = [character(len=24) :: 'mass +1%', &
+    'mass -1%', 'height +1%', 'height -1%', 'com_height +1%', 'com_height -1%', 'pelvis radius +1%', &
+    'pelvis radius -1%', 'pelvis radius -40%', 'no drag']
 
   type :: rider_measurements_t
     real(wp), allocatable :: station_arc_length(:)   !< m, where the pelvis crosses; increasing
@@ -384,6 +390,26 @@ contains
       end if
     end do
   end subroutine rider_weight_sweep
+
+  !> Table 4.10's variants of the rider p (body_variant_names): its mass,
+  !> height, centre-of-mass height and pelvis drag radius each 1 % up and
+  !> down, the pelvis radius 40 % down, and no drag (the thesis's pelvis
+  !> radius 0: a sphere needs a radius > 0).
+  pure function body_variants(p) result(v)
+    type(rider_params_t), intent(in) :: p
+    type(rider_params_t) :: v(N_BODY_VARIANTS)
+    v = p
+    v(1)%body%mass = 1.01_wp*p%body%mass
+    v(2)%body%mass = 0.99_wp*p%body%mass
+    v(3)%body%height = 1.01_wp*p%body%height
+    v(4)%body%height = 0.99_wp*p%body%height
+    v(5)%body%com_height = 1.01_wp*p%body%com_height
+    v(6)%body%com_height = 0.99_wp*p%body%com_height
+    v(7)%drag_radius(CONTACT_PELVIS) = 1.01_wp*p%drag_radius(CONTACT_PELVIS)
+    v(8)%drag_radius(CONTACT_PELVIS) = 0.99_wp*p%drag_radius(CONTACT_PELVIS)
+    v(9)%drag_radius(CONTACT_PELVIS) = 0.6_wp*p%drag_radius(CONTACT_PELVIS)
+    v(10)%drag = .false.
+  end function body_variants
 
   !> Table 4.10: the mean absolute deviation (m) of the pelvis's position
   !> across the slide (its wall distance) at the stations between the ride

@@ -13,9 +13,10 @@ module scenarios_identify_rider
   use base_text, only: format_integer, format_short, format_with
   use base_log, only: log_info
   use water_run, only: water_description_t, water_result_t, compute_water
-  use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, rider_coulomb_mu, set_rider_mu
+  use rider_model, only: rider_params_t, N_CONTACTS, contact_names, rider_coulomb_mu, set_rider_mu
   use design_rider_identification, only: rider_identification_t, rider_fit_t, rider_stations_t, &
-    new_rider_identification, simulate_rider, fit_rider_friction, rider_body_sensitivity
+    new_rider_identification, simulate_rider, fit_rider_friction, rider_body_sensitivity, body_variants, &
+    n_variants => N_BODY_VARIANTS, variant_names => body_variant_names
   use io_input, only: input_text_t, check_known_groups
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t
@@ -38,10 +39,6 @@ module scenarios_identify_rider
 
   character(len=*), parameter :: identify_rider_groups(13) = [character(len=14) :: 'run', 'solver', &
     'water_solver', 'surface', 'water', 'rider', 'identify', geometry_groups]
-  integer, parameter :: n_variants = 10
-  character(len=*), parameter :: variant_names(n_variants) = [character(len=24) :: 'mass +1%', 'mass -1%', &
-    'height +1%', 'height -1%', 'com_height +1%', 'com_height -1%', 'pelvis radius +1%', 'pelvis radius -1%', &
-    'pelvis radius -40%', 'no drag']
 
 contains
 
@@ -132,7 +129,7 @@ contains
     if (run_status%ok() .and. config%sensitivity) then
       call log_info('identify_rider: the body-parameter study (table 4.10)')
       call set_rider_mu(setup%params, fit%mu)
-      call make_variants(setup%params, variants)
+      variants = body_variants(setup%params)
       call rider_body_sensitivity(setup, variants, deviation, variant_status, run_status)
       if (run_status%ok()) call write_sensitivity(file, deviation, write_status)
     end if
@@ -171,24 +168,6 @@ contains
     defaults%options = setup%options%ode
     defaults%output_step = setup%options%output_step
   end function default_solver
-
-  !> Table 4.10's variants of the identified rider (its pelvis radius 0 is
-  !> covered by 'no drag': a sphere of radius 0 is refused).
-  subroutine make_variants(p, v)
-    type(rider_params_t), intent(in) :: p
-    type(rider_params_t), intent(out) :: v(n_variants)
-    v = p
-    v(1)%body%mass = 1.01_wp*p%body%mass
-    v(2)%body%mass = 0.99_wp*p%body%mass
-    v(3)%body%height = 1.01_wp*p%body%height
-    v(4)%body%height = 0.99_wp*p%body%height
-    v(5)%body%com_height = 1.01_wp*p%body%com_height
-    v(6)%body%com_height = 0.99_wp*p%body%com_height
-    v(7)%drag_radius(CONTACT_PELVIS) = 1.01_wp*p%drag_radius(CONTACT_PELVIS)
-    v(8)%drag_radius(CONTACT_PELVIS) = 0.99_wp*p%drag_radius(CONTACT_PELVIS)
-    v(9)%drag_radius(CONTACT_PELVIS) = 0.6_wp*p%drag_radius(CONTACT_PELVIS)
-    v(10)%drag = .false.   ! the thesis's radius 0 as well: a sphere needs a radius > 0
-  end subroutine make_variants
 
   subroutine write_fit(file, setup, config, fit, cpu, status)
     type(result_file_t), intent(inout) :: file
