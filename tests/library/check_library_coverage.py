@@ -7,14 +7,17 @@ without io").
     check_library_coverage.py      (run from the repository root)
 
 An input counts as built through the library when
-tests/library/built_through_library.txt gives it to one of the three tests
-that build shipped inputs from descriptions written in code
-(shipped_descriptions, library_without_io, shipped_geometries). Those tests
+tests/library/built_through_library.txt gives it to one of the tests that
+build shipped inputs from descriptions written in code (built_inputs.TESTS:
+shipped_descriptions, library_without_io, library_optimize,
+shipped_geometries). Those tests
 read the same file and fail unless their programs build and compare exactly
 the inputs it gives them (library.built_inputs), so a line there is an input
 really built, not a path named somewhere in a source (a comment, a message).
 Fails, naming the file and the line, when an input is in neither list, in
-both, not a shipped input, listed twice, or given to an unknown test.
+both, not a shipped input, listed twice, or given to an unknown test. The
+list of inputs not yet through the library may be empty (its comment only):
+the check goes on guarding new inputs.
 """
 import glob
 import os

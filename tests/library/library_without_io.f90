@@ -30,18 +30,19 @@ program library_without_io
   use water_streamline, only: CORRECTION_FULL, CORRECTION_OFF
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_body, only: SEX_MALE, SEX_FEMALE
-  use rider_model, only: N_CONTACTS, contact_names, rider_params_t, set_rider_mu, CONTACT_PELVIS
+  use rider_model, only: N_CONTACTS, contact_names, rider_params_t, set_rider_mu
   use rider_flight, only: ride_flights_t, highest_drop
   use kinetostatics_force_law_factory, only: law_spec
   use design_ride_evaluation, only: new_ride_limit, noise_free, rider_size
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   use design_sweep, only: sweep_description_t, sweep_result_t, run_sweep, water_groups, N_SWEPT, N_FIGURES, &
     figure_names, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, V_HEADING, V_SPEED, V_FLOW_RATE, V_F1, V_F2, V_F3, &
-    RIDE_COMPLETE
+    RIDE_COMPLETE, swept_values_t, sweep_rows
   use design_water_identification, only: water_identification_t, water_fit_options_t, water_fit_t, &
     new_water_identification, simulate_measurements, fit_water_friction
   use design_rider_identification, only: rider_identification_t, rider_fit_options_t, rider_fit_t, &
-    rider_stations_t, new_rider_identification, simulate_rider, fit_rider_friction, rider_body_sensitivity
+    rider_stations_t, new_rider_identification, simulate_rider, fit_rider_friction, rider_body_sensitivity, &
+    body_variants
   use shipped_slides, only: demo_slide, second_slide, drop_slide, halfpipe_slide, bowl_slide, bowl_table_slide, &
     crest_slide, jump_slide, funnel_slide, patch_slide
   implicit none (type, external)
@@ -302,21 +303,25 @@ contains
   !> inputs/sweep/demo_population.nml: the demo ride's water and rider (sex,
   !> mass and height from each ride; the limits add the felt normal
   !> acceleration) over two riders (female 50 kg 1.60 m, male 100 kg 1.90 m,
-  !> paired) crossed with two flow rates (4 and 6 l/s), the paired axis the
-  !> slowest (io_sweep_config's order), at the input's tolerances.
+  !> paired) crossed with two flow rates (4 and 6 l/s): the rides by
+  !> design_sweep's sweep_rows, at the input's tolerances.
   subroutine sweep_demo_population()
     type(sweep_description_t) :: sweep
-    real(wp) :: base(N_SWEPT)
-    call standard_sweep(sweep, base)
+    type(swept_values_t) :: lists(N_SWEPT)
+    logical :: together(N_SWEPT)
+    call standard_sweep(sweep, lists)
     allocate (sweep%limits(4))
     call add_sweep_limit(sweep, 1, 'exit_speed', 'm/s', 10.0_wp)
     call add_sweep_limit(sweep, 2, 'speed', 'm/s', 8.0_wp)
     call add_sweep_limit(sweep, 3, 'lever_arm', 'm', 0.25_wp)
     call add_sweep_limit(sweep, 4, 'acceleration_normal', 'g', 2.6_wp)
-    sweep%values = reshape([rider_values(base, SEX_FEMALE, 50.0_wp, 1.60_wp, 0.004_wp), &
-                            rider_values(base, SEX_FEMALE, 50.0_wp, 1.60_wp, 0.006_wp), &
-                            rider_values(base, SEX_MALE, 100.0_wp, 1.90_wp, 0.004_wp), &
-                            rider_values(base, SEX_MALE, 100.0_wp, 1.90_wp, 0.006_wp)], [N_SWEPT, 4])
+    lists(V_SEX)%x = [real(SEX_FEMALE, wp), real(SEX_MALE, wp)]
+    lists(V_MASS)%x = [50.0_wp, 100.0_wp]
+    lists(V_HEIGHT)%x = [1.60_wp, 1.90_wp]
+    lists(V_FLOW_RATE)%x = [0.004_wp, 0.006_wp]
+    together = .false.
+    together([V_SEX, V_MASS, V_HEIGHT]) = .true.
+    sweep%values = sweep_rows(lists, together)
     call sweep_and_print('inputs/sweep/demo_population.nml', sweep)
   end subroutine sweep_demo_population
 
@@ -325,56 +330,48 @@ contains
   !> limits.
   subroutine sweep_template()
     type(sweep_description_t) :: sweep
-    real(wp) :: base(N_SWEPT)
-    call standard_sweep(sweep, base)
+    type(swept_values_t) :: lists(N_SWEPT)
+    logical :: together(N_SWEPT)
+    call standard_sweep(sweep, lists)
     allocate (sweep%limits(3))
     call add_sweep_limit(sweep, 1, 'exit_speed', 'm/s', 10.0_wp)
     call add_sweep_limit(sweep, 2, 'speed', 'm/s', 8.0_wp)
     call add_sweep_limit(sweep, 3, 'lever_arm', 'm', 0.25_wp)
-    sweep%values = reshape([rider_values(base, SEX_MALE, 75.0_wp, 1.80_wp, 0.004_wp), &
-                            rider_values(base, SEX_FEMALE, 55.0_wp, 1.65_wp, 0.004_wp)], [N_SWEPT, 2])
+    lists(V_SEX)%x = [real(SEX_MALE, wp), real(SEX_FEMALE, wp)]
+    lists(V_MASS)%x = [75.0_wp, 55.0_wp]
+    lists(V_HEIGHT)%x = [1.80_wp, 1.65_wp]
+    together = .false.
+    together([V_SEX, V_MASS, V_HEIGHT]) = .true.
+    sweep%values = sweep_rows(lists, together)
     call sweep_and_print('inputs/templates/sweep.nml', sweep)
   end subroutine sweep_template
 
   !> The base ride of both sweeps: the demo ride (its water, the standard
-  !> rider, the inputs' tolerances, no progress lines) and its values as
-  !> scenarios_sweep takes them (`base`, N_SWEPT: heading in degrees).
-  subroutine standard_sweep(sweep, base)
+  !> rider, the inputs' tolerances, no progress lines) and every swept
+  !> variable's one value where not swept, as scenarios_sweep takes them
+  !> (heading in degrees).
+  subroutine standard_sweep(sweep, lists)
     type(sweep_description_t), intent(out) :: sweep
-    real(wp), intent(out) :: base(N_SWEPT)
+    type(swept_values_t), intent(out) :: lists(N_SWEPT)
     type(ride_description_t) :: ride
     ride = standard_ride(demo_water(slide_of(demo_slide())), 0.5_wp, 1.0_wp)
     sweep%water = ride%water
     sweep%rider = ride%rider
     sweep%options = ride%options
     sweep%options%progress_seconds = 0
-    base = 0
-    base(V_SEX) = SEX_MALE
-    base(V_MASS) = 68.5_wp
-    base(V_HEIGHT) = 1.78_wp
-    base(V_MU) = 0.0724419_wp
-    base(V_U0) = 0.5_wp
-    base(V_V0) = pi_2
-    base(V_HEADING) = 0
-    base(V_SPEED) = 1
-    base(V_FLOW_RATE) = 0.004_wp
-    base(V_F1) = 0.0274748_wp
-    base(V_F2) = 0.138285_wp
-    base(V_F3) = 0.979822_wp
+    lists(V_SEX)%x = [real(SEX_MALE, wp)]
+    lists(V_MASS)%x = [68.5_wp]
+    lists(V_HEIGHT)%x = [1.78_wp]
+    lists(V_MU)%x = [0.0724419_wp]
+    lists(V_U0)%x = [0.5_wp]
+    lists(V_V0)%x = [pi_2]
+    lists(V_HEADING)%x = [0.0_wp]
+    lists(V_SPEED)%x = [1.0_wp]
+    lists(V_FLOW_RATE)%x = [0.004_wp]
+    lists(V_F1)%x = [0.0274748_wp]
+    lists(V_F2)%x = [0.138285_wp]
+    lists(V_F3)%x = [0.979822_wp]
   end subroutine standard_sweep
-
-  !> A ride of a sweep: `base` with the rider's sex, mass and height and the
-  !> flow rate.
-  pure function rider_values(base, sex, mass, height, flow_rate) result(v)
-    real(wp), intent(in) :: base(N_SWEPT), mass, height, flow_rate
-    integer, intent(in) :: sex
-    real(wp) :: v(N_SWEPT)
-    v = base
-    v(V_SEX) = sex
-    v(V_MASS) = mass
-    v(V_HEIGHT) = height
-    v(V_FLOW_RATE) = flow_rate
-  end function rider_values
 
   subroutine add_sweep_limit(sweep, k, quantity, unit, maximum)
     type(sweep_description_t), intent(inout) :: sweep
@@ -486,7 +483,7 @@ contains
   !> plain Fortran), the fit started at 0.036, weight 0.0932, bounds 0 and
   !> 0.11, LMDER at ftol and xtol 1e-6, two threads; then the body-parameter
   !> study of thesis table 4.10 at the identified mu_D (the ten variants of
-  !> scenarios_identify_rider's make_variants). No &solver: the ride's
+  !> design_rider_identification's body_variants). No &solver: the ride's
   !> defaults; no &water_solver: the water at the solver's defaults (rtol
   !> 1e-10, atol 1e-10, output every 0.01 s).
   subroutine identify_rider_demo()
@@ -518,17 +515,7 @@ contains
     call stop_unless_ok(input, 'the fit', status)
     call print_rider_fit(input, setup, fit)
     call set_rider_mu(setup%params, fit%mu)
-    variants = setup%params
-    variants(1)%body%mass = 1.01_wp*setup%params%body%mass
-    variants(2)%body%mass = 0.99_wp*setup%params%body%mass
-    variants(3)%body%height = 1.01_wp*setup%params%body%height
-    variants(4)%body%height = 0.99_wp*setup%params%body%height
-    variants(5)%body%com_height = 1.01_wp*setup%params%body%com_height
-    variants(6)%body%com_height = 0.99_wp*setup%params%body%com_height
-    variants(7)%drag_radius(CONTACT_PELVIS) = 1.01_wp*setup%params%drag_radius(CONTACT_PELVIS)
-    variants(8)%drag_radius(CONTACT_PELVIS) = 0.99_wp*setup%params%drag_radius(CONTACT_PELVIS)
-    variants(9)%drag_radius(CONTACT_PELVIS) = 0.6_wp*setup%params%drag_radius(CONTACT_PELVIS)
-    variants(10)%drag = .false.
+    variants = body_variants(setup%params)
     call rider_body_sensitivity(setup, variants, deviation, statuses, status)
     call stop_unless_ok(input, 'the body-parameter study', status)
     do k = 1, 10
