@@ -20,6 +20,8 @@ program test_robust_optimization
   use design_robust_cost, only: ride_member_t, quantile, COST_SUM, COST_WORST, COST_QUANTILE
   use design_geometry_optimization, only: optimization_setup_t, optimization_result_t, design_evaluation_t, &
     table_4_12_design, thesis_start_angles, evaluate_design, optimize_slide
+  use design_sweep, only: N_SWEPT, V_MASS, V_HEIGHT, V_V0, V_HEADING, V_SPEED, swept_values_t, sweep_rows
+  use design_population, only: population_base, set_population
   use testing, only: check, finish_tests
   implicit none (type, external)
 
@@ -27,6 +29,7 @@ program test_robust_optimization
   integer :: i
 
   call quantile_known_values()
+  call population_from_rows()
   ! a small problem: table 4.12 with two design variables (P3.y, P4.x)
   base%design = table_4_12_design()
   base%design%point = base%design%point(2:3)
@@ -41,6 +44,70 @@ program test_robust_optimization
   call finish_tests('test_robust_optimization')
 
 contains
+
+  !> A population from a sweep's lists (design_sweep's sweep_rows,
+  !> design_population's set_population), by hand: two persons (mass and
+  !> height paired) crossed with two speeds are four rows, the slower speed
+  !> first; without heading0_deg each row rides from each of three start
+  !> angles (the angles fastest), with it from its own; a member's width,
+  !> thickness and centre-of-mass height scale with its height, its start v
+  !> and speed are its row's, what is not swept the optimiser's.
+  subroutine population_from_rows()
+    type(optimization_setup_t) :: setup
+    type(swept_values_t) :: lists(N_SWEPT)
+    logical :: together(N_SWEPT)
+    real(wp) :: b(N_SWEPT), angles(3)
+    real(wp), allocatable :: rows(:, :)
+    integer :: k, j
+    setup%body%length = 2
+    setup%body%width = 0.6_wp
+    setup%body%height = 0.3_wp
+    setup%body%com_height = 0.12_wp
+    setup%start_v = 1.5_wp
+    angles = [-0.2_wp, 0.0_wp, 0.3_wp]
+    setup%start_angles = angles
+    b = population_base(setup)
+    call check(b(V_MASS) == setup%body%mass .and. b(V_HEIGHT) == 2 .and. b(V_V0) == 1.5_wp .and. &
+               b(V_SPEED) == setup%start_speed, 'population_base: the optimiser''s body and start')
+    do k = 1, N_SWEPT
+      lists(k)%x = [b(k)]
+    end do
+    lists(V_MASS)%x = [60.0_wp, 80.0_wp]
+    lists(V_HEIGHT)%x = [1.5_wp, 1.9_wp]
+    lists(V_SPEED)%x = [0.4_wp, 0.8_wp]
+    together = .false.
+    together([V_MASS, V_HEIGHT]) = .true.
+    rows = sweep_rows(lists, together)
+    call check(size(rows, 2) == 4, 'two persons x two speeds: four rows')
+    call check(all(rows(V_MASS, :) == [60.0_wp, 60.0_wp, 80.0_wp, 80.0_wp]) .and. &
+               all(rows(V_HEIGHT, :) == [1.5_wp, 1.5_wp, 1.9_wp, 1.9_wp]) .and. &
+               all(rows(V_SPEED, :) == [0.4_wp, 0.8_wp, 0.4_wp, 0.8_wp]), &
+               'the paired axis slowest, the speeds fastest')
+    call set_population(setup, rows, heading_swept=.false.)
+    call check(size(setup%members) == 12 .and. size(setup%start_angles) == 12, &
+               'four rows from three angles: twelve members')
+    do k = 1, 4
+      do j = 1, 3
+        associate (m => setup%members(3*(k - 1) + j))
+          call check(setup%start_angles(3*(k - 1) + j) == angles(j), 'member of row and angle: its angle')
+          call check(m%body%mass == rows(V_MASS, k) .and. m%height == rows(V_HEIGHT, k) .and. &
+                     m%body%length == rows(V_HEIGHT, k) .and. m%speed == rows(V_SPEED, k) .and. m%v == 1.5_wp, &
+                     'member of row and angle: its row''s mass, height, speed and start')
+          call check(abs(m%body%width - 0.3_wp*rows(V_HEIGHT, k)) < 1e-15_wp .and. &
+                     abs(m%body%height - 0.15_wp*rows(V_HEIGHT, k)) < 1e-15_wp .and. &
+                     abs(m%body%com_height - 0.06_wp*rows(V_HEIGHT, k)) < 1e-15_wp, &
+                     'the body scaled with the height (width, thickness, centre of mass)')
+        end associate
+      end do
+    end do
+    lists(V_HEADING)%x = [-10.0_wp, 20.0_wp]
+    rows = sweep_rows(lists, together)
+    call set_population(setup, rows, heading_swept=.true.)
+    call check(size(setup%members) == 8, 'the headings swept: one member per row, 2 x 2 x 2')
+    call check(all(abs(setup%start_angles - [-10.0_wp, -10.0_wp, 20.0_wp, 20.0_wp, -10.0_wp, -10.0_wp, 20.0_wp, &
+                                             20.0_wp]*pi/180) < 1e-15_wp), &
+               'the headings swept: each row''s own, in rad (the heading before the speed)')
+  end subroutine population_from_rows
 
   subroutine quantile_known_values()
     real(wp), parameter :: x(5) = [4.0_wp, 1.0_wp, 5.0_wp, 2.0_wp, 3.0_wp]
