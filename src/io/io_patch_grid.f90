@@ -3,8 +3,9 @@
 !> per line (m along the element's horizontal length from its start, deg
 !> around the section with 90 the bottom, m outward along the section's
 !> radius), the points filling a rectangular grid of stations x angles in
-!> any order. Checked here, naming the file and the line: the numbers and
-!> their ranges (io_csv), a point given twice, a point of the grid missing.
+!> any order (the grid built by geometry_patch_grid). Checked here, naming
+!> the file and the line: the numbers and their ranges (io_csv), a point
+!> given twice, a point of the grid missing.
 !> What needs the slide (the element's length, the section's radius and
 !> angles, the border's offsets 0, at least 6 stations and angles) the
 !> geometry layer checks when it builds the slide.
@@ -15,6 +16,7 @@ module io_patch_grid
   use io_input, only: bounds_t, in_range, format_real
   use io_csv, only: read_csv_table
   use geometry_patch_section, only: patch_grid_t
+  use geometry_patch_grid, only: patch_grid_from_points
   implicit none (type, external)
   private
   public :: read_patch_grid
@@ -30,36 +32,26 @@ contains
     type(patch_grid_t), intent(out) :: grid
     type(status_t), intent(inout) :: status
     real(wp), allocatable :: table(:, :)
-    integer, allocatable :: lines(:), line_of(:, :)
-    integer :: k, i, j
+    integer, allocatable :: lines(:), given(:, :)
+    integer :: i, j, twice
     type(bounds_t) :: station, angle, offset
     station = in_range(0.0_wp, 1e4_wp, 'm')
     angle = in_range(0.0_wp, 360.0_wp, 'deg')
     offset = in_range(-100.0_wp, 100.0_wp, 'm')
-    grid%element = element
     call read_csv_table(path, 3, 3, max_patch_points, [station, angle, offset], table, status, lines)
     if (.not. status%ok()) return
-    grid%station = distinct(table(1, :))
-    grid%angle_deg = distinct(table(2, :))
-    allocate (grid%offset(size(grid%station), size(grid%angle_deg)), line_of(size(grid%station), &
-              size(grid%angle_deg)))
-    grid%offset = 0
-    line_of = 0
-    do k = 1, size(table, 2)
-      i = findloc(grid%station, table(1, k), 1)
-      j = findloc(grid%angle_deg, table(2, k), 1)
-      if (line_of(i, j) > 0) then
-        call set_status(status, STATUS_INVALID_INPUT, path//':'//format_integer(lines(k))//': station '// &
-                        format_real(table(1, k))//' m, angle '//format_real(table(2, k))//' deg is given '// &
-                        'already on line '//format_integer(line_of(i, j))//': each point of the grid once')
-        return
-      end if
-      line_of(i, j) = lines(k)
-      grid%offset(i, j) = table(3, k)
-    end do
+    call patch_grid_from_points(element, table, grid, given, twice)
+    if (twice > 0) then
+      i = findloc(grid%station, table(1, twice), 1)
+      j = findloc(grid%angle_deg, table(2, twice), 1)
+      call set_status(status, STATUS_INVALID_INPUT, path//':'//format_integer(lines(twice))//': station '// &
+                      format_real(table(1, twice))//' m, angle '//format_real(table(2, twice))//' deg is given '// &
+                      'already on line '//format_integer(lines(given(i, j)))//': each point of the grid once')
+      return
+    end if
     do j = 1, size(grid%angle_deg)
       do i = 1, size(grid%station)
-        if (line_of(i, j) > 0) cycle
+        if (given(i, j) > 0) cycle
         call set_status(status, STATUS_INVALID_INPUT, path//': no offset at station '// &
                         format_real(grid%station(i))//' m, angle '//format_real(grid%angle_deg(j))//' deg: '// &
                         'the points must fill the grid of the stations and angles given ('// &
@@ -68,17 +60,4 @@ contains
       end do
     end do
   end subroutine read_patch_grid
-
-  !> The distinct values of x, increasing.
-  pure function distinct(x) result(values)
-    real(wp), intent(in) :: x(:)
-    real(wp), allocatable :: values(:)
-    real(wp) :: low
-    values = [real(wp) ::]
-    low = -huge(1.0_wp)
-    do while (any(x > low))
-      low = minval(x, mask=x > low)
-      values = [values, low]
-    end do
-  end function distinct
 end module io_patch_grid

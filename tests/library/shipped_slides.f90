@@ -13,6 +13,7 @@ module shipped_slides
   use geometry_slide_elements, only: slide_element_t
   use geometry_slide_builder, only: section_part_description_t
   use geometry_patch_section, only: patch_grid_t
+  use geometry_patch_grid, only: patch_grid_from_points
   use geometry_description, only: geometry_description_t
   implicit none (type, external)
   private
@@ -233,15 +234,17 @@ contains
   end function patch_slide
 
   !> The grid of a patch from its CSV file (`station, angle, offset` per
-  !> line after the comments and the header): the distinct stations and
-  !> angles, increasing, and the offset at each (the file fills the grid).
+  !> line after the comments and the header), built by geometry_patch_grid
+  !> (the distinct stations and angles, increasing, and the offset at each);
+  !> stops unless the file fills the grid, each point once.
   function patch_grid(path, element_index) result(grid)
     character(len=*), intent(in) :: path
     integer, intent(in) :: element_index
     type(patch_grid_t) :: grid
     character(len=256) :: line
     real(wp) :: rows(3, 10000)
-    integer :: unit, n, outcome, k
+    integer, allocatable :: given(:, :)
+    integer :: unit, n, outcome, twice
     n = 0
     open (newunit=unit, file=path, status='old', action='read')
     do
@@ -253,26 +256,10 @@ contains
       read (line, *) rows(:, n)
     end do
     close (unit)
-    grid%element = element_index
-    grid%station = distinct(rows(1, :n))
-    grid%angle_deg = distinct(rows(2, :n))
-    allocate (grid%offset(size(grid%station), size(grid%angle_deg)))
-    grid%offset = 0
-    do k = 1, n
-      grid%offset(findloc(grid%station, rows(1, k), 1), findloc(grid%angle_deg, rows(2, k), 1)) = rows(3, k)
-    end do
+    call patch_grid_from_points(element_index, rows(:, :n), grid, given, twice)
+    if (twice > 0 .or. any(given == 0)) then
+      print '(a)', 'FAIL '//path//': the points do not fill the grid, each once'
+      error stop 1
+    end if
   end function patch_grid
-
-  !> The distinct values of x, increasing.
-  pure function distinct(x) result(values)
-    real(wp), intent(in) :: x(:)
-    real(wp), allocatable :: values(:)
-    real(wp) :: low
-    values = [real(wp) ::]
-    low = -huge(1.0_wp)
-    do while (any(x > low))
-      low = minval(x, mask=x > low)
-      values = [values, low]
-    end do
-  end function distinct
 end module shipped_slides
