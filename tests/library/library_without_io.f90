@@ -33,7 +33,7 @@ program library_without_io
   use rider_model, only: N_CONTACTS, contact_names, rider_params_t, set_rider_mu
   use rider_flight, only: ride_flights_t, highest_drop
   use kinetostatics_force_law_factory, only: law_spec
-  use design_ride_evaluation, only: new_ride_limit, noise_free, rider_size
+  use design_ride_evaluation, only: ride_limit_t, new_ride_limit, noise_free, rider_size
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
   use design_sweep, only: sweep_description_t, sweep_result_t, run_sweep, water_groups, N_SWEPT, N_FIGURES, &
     figure_names, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, V_HEADING, V_SPEED, V_FLOW_RATE, V_F1, V_F2, V_F3, &
@@ -189,9 +189,9 @@ contains
     ride = standard_ride(demo_water(slide_of(demo_slide())), 0.5_wp, 1.0_wp)
     call loosen(ride)
     allocate (ride%limits(3))
-    call add_limit(ride, 1, 'exit_speed', 'm/s', 10.0_wp)
-    call add_limit(ride, 2, 'speed', 'm/s', 8.0_wp)
-    call add_limit(ride, 3, 'lever_arm', 'm', 0.25_wp)
+    ride%limits(1) = upper_limit('exit_speed', 'm/s', 10.0_wp, ride%rider%gravity)
+    ride%limits(2) = upper_limit('speed', 'm/s', 8.0_wp, ride%rider%gravity)
+    ride%limits(3) = upper_limit('lever_arm', 'm', 0.25_wp, ride%rider%gravity)
     call ride_and_print(input, ride)
   end subroutine ride_demo_slide
 
@@ -207,8 +207,8 @@ contains
     ride = standard_ride(parts_water(slide_of(slide), v_left, v_right), u0, speed0)
     call loosen(ride)
     allocate (ride%limits(2))
-    call add_limit(ride, 1, 'exit_speed', 'm/s', exit_max)
-    call add_limit(ride, 2, 'speed', 'm/s', 14.0_wp)
+    ride%limits(1) = upper_limit('exit_speed', 'm/s', exit_max, ride%rider%gravity)
+    ride%limits(2) = upper_limit('speed', 'm/s', 14.0_wp, ride%rider%gravity)
     call ride_and_print(input, ride)
   end subroutine ride_part
 
@@ -229,8 +229,8 @@ contains
     ride%options%output_step = output_step
     ride%options%may_fly = .true.
     allocate (ride%limits(2))
-    call add_limit(ride, 1, 'airtime', 's', airtime_max)
-    call add_limit(ride, 2, 'drop_height', 'm', drop_max)
+    ride%limits(1) = upper_limit('airtime', 's', airtime_max, ride%rider%gravity)
+    ride%limits(2) = upper_limit('drop_height', 'm', drop_max, ride%rider%gravity)
     call ride_and_print(input, ride)
   end subroutine ride_flight
 
@@ -275,20 +275,6 @@ contains
     ride%options%ode%atol = 1e-5_wp
   end subroutine loosen
 
-  subroutine add_limit(ride, k, quantity, unit, maximum)
-    type(ride_description_t), intent(inout) :: ride
-    integer, intent(in) :: k
-    character(len=*), intent(in) :: quantity, unit
-    real(wp), intent(in) :: maximum
-    character(len=:), allocatable :: problem
-    call new_ride_limit(quantity, unit, 0.0_wp, .false., maximum, .true., norm2(ride%rider%gravity), &
-                        ride%limits(k), problem)
-    if (len(problem) > 0) then
-      print '(a)', 'limit '//quantity//': '//problem
-      error stop 1
-    end if
-  end subroutine add_limit
-
   subroutine ride_and_print(input, ride)
     character(len=*), intent(in) :: input
     type(ride_description_t), intent(in) :: ride
@@ -311,10 +297,10 @@ contains
     logical :: together(N_SWEPT)
     call standard_sweep(sweep, lists)
     allocate (sweep%limits(4))
-    call add_sweep_limit(sweep, 1, 'exit_speed', 'm/s', 10.0_wp)
-    call add_sweep_limit(sweep, 2, 'speed', 'm/s', 8.0_wp)
-    call add_sweep_limit(sweep, 3, 'lever_arm', 'm', 0.25_wp)
-    call add_sweep_limit(sweep, 4, 'acceleration_normal', 'g', 2.6_wp)
+    sweep%limits(1) = upper_limit('exit_speed', 'm/s', 10.0_wp, sweep%rider%gravity)
+    sweep%limits(2) = upper_limit('speed', 'm/s', 8.0_wp, sweep%rider%gravity)
+    sweep%limits(3) = upper_limit('lever_arm', 'm', 0.25_wp, sweep%rider%gravity)
+    sweep%limits(4) = upper_limit('acceleration_normal', 'g', 2.6_wp, sweep%rider%gravity)
     lists(V_SEX)%x = [real(SEX_FEMALE, wp), real(SEX_MALE, wp)]
     lists(V_MASS)%x = [50.0_wp, 100.0_wp]
     lists(V_HEIGHT)%x = [1.60_wp, 1.90_wp]
@@ -334,9 +320,9 @@ contains
     logical :: together(N_SWEPT)
     call standard_sweep(sweep, lists)
     allocate (sweep%limits(3))
-    call add_sweep_limit(sweep, 1, 'exit_speed', 'm/s', 10.0_wp)
-    call add_sweep_limit(sweep, 2, 'speed', 'm/s', 8.0_wp)
-    call add_sweep_limit(sweep, 3, 'lever_arm', 'm', 0.25_wp)
+    sweep%limits(1) = upper_limit('exit_speed', 'm/s', 10.0_wp, sweep%rider%gravity)
+    sweep%limits(2) = upper_limit('speed', 'm/s', 8.0_wp, sweep%rider%gravity)
+    sweep%limits(3) = upper_limit('lever_arm', 'm', 0.25_wp, sweep%rider%gravity)
     lists(V_SEX)%x = [real(SEX_MALE, wp), real(SEX_FEMALE, wp)]
     lists(V_MASS)%x = [75.0_wp, 55.0_wp]
     lists(V_HEIGHT)%x = [1.80_wp, 1.65_wp]
@@ -373,19 +359,19 @@ contains
     lists(V_F3)%x = [0.979822_wp]
   end subroutine standard_sweep
 
-  subroutine add_sweep_limit(sweep, k, quantity, unit, maximum)
-    type(sweep_description_t), intent(inout) :: sweep
-    integer, intent(in) :: k
+  !> A limit on the largest `quantity` (a ride's or a sweep's), felt
+  !> accelerations in multiples of |gravity|.
+  function upper_limit(quantity, unit, maximum, gravity) result(limit)
     character(len=*), intent(in) :: quantity, unit
-    real(wp), intent(in) :: maximum
+    real(wp), intent(in) :: maximum, gravity(3)
+    type(ride_limit_t) :: limit
     character(len=:), allocatable :: problem
-    call new_ride_limit(quantity, unit, 0.0_wp, .false., maximum, .true., norm2(sweep%rider%gravity), &
-                        sweep%limits(k), problem)
+    call new_ride_limit(quantity, unit, 0.0_wp, .false., maximum, .true., norm2(gravity), limit, problem)
     if (len(problem) > 0) then
       print '(a)', 'limit '//quantity//': '//problem
       error stop 1
     end if
-  end subroutine add_sweep_limit
+  end function upper_limit
 
   !> Runs every ride of `sweep` in one thread (the rides are the same in any
   !> number: docs/sweep.md) and prints the summary's counts and each ride's
