@@ -136,22 +136,22 @@ contains
   end subroutine build_fourbar_model
 
   !> The sled of `d` on `surface` and its start: (u, v, phi) and their rates
-  !> (finish = .false.: left open for more laws; lift, open: the flight
-  !> builds; as build_sled).
-  subroutine build_sled_model(d, surface, m, q0, qd0, status, finish, lift, open)
+  !> (finish = .false.: left open for more laws; lift, open, solve_yaw: the
+  !> flight builds; as build_sled).
+  subroutine build_sled_model(d, surface, m, q0, qd0, status, finish, lift, open, solve_yaw)
     type(sled_description_t), intent(in) :: d
     class(surface_t), intent(in) :: surface
     type(mechanism_t), intent(out) :: m
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     type(status_t), intent(inout) :: status
-    logical, intent(in), optional :: finish, lift, open(2)
+    logical, intent(in), optional :: finish, lift, open(2), solve_yaw
     if (.not. status%ok()) return
     if (.not. surface%in_domain(d%q0(1), d%q0(2))) then
       call set_status(status, STATUS_INVALID_INPUT, 'sled: the start (u0, v0) = ('//format_short(d%q0(1))//', '// &
                       format_short(d%q0(2))//') must lie in the parameter domain of the '//surface%describe())
       return
     end if
-    call build_sled(d%params, surface, d%q0, m, status, finish, lift, open)
+    call build_sled(d%params, surface, d%q0, m, status, finish, lift, open, solve_yaw)
     q0 = d%q0
     qd0 = d%qd0
   end subroutine build_sled_model
@@ -302,17 +302,22 @@ contains
   !> (front open) and rear_lift (rear open); scalars, frames, elements,
   !> contacts and laws are the same, at the same indices, in every build
   !> with `lift` (whose closed front pairs front_z with the pitch, front_x
-  !> and front_y with u2 and v2, as the open front does).
-  subroutine build_sled(p, surface, q0, m, status, finish, lift, open)
+  !> and front_y with u2 and v2, as the open front does). `solve_yaw` (with
+  !> `lift` and the front closed): the front's closure solves front_z for
+  !> the heading phi instead of the pitch, which becomes a coordinate
+  !> ([u, v, pitch], then rear_lift): where the front's normal lies across
+  !> the rear's, the pitch no longer moves the front off the slide but the
+  !> heading does (rider_vehicle_flight picks the one by the normals).
+  subroutine build_sled(p, surface, q0, m, status, finish, lift, open, solve_yaw)
     type(sled_params_t), intent(in) :: p
     class(surface_t), intent(in) :: surface
     real(wp), intent(in) :: q0(3)
     type(mechanism_t), intent(out) :: m
     type(status_t), intent(inout) :: status
-    logical, intent(in), optional :: finish, lift, open(2)
+    logical, intent(in), optional :: finish, lift, open(2), solve_yaw
     integer :: d1, heading, bar, front, d2, su, sv, sphi, spitch, su2, sv2, gx, gy, gz, rear_contact, &
                front_contact, front_body, lifted, slift
-    logical :: chain, opened(2)
+    logical :: chain, opened(2), yaw
     integer, allocatable :: coordinates(:)
     type(surface_point_t) :: pt
     type(darboux_frame_t) :: fr
@@ -338,6 +343,13 @@ contains
     if (present(open)) opened = open
     if (opened(1) .and. .not. chain) then
       call set_status(status, STATUS_INVALID_INPUT, 'sled: an open rear contact needs its lift (lift = .true.)')
+      return
+    end if
+    yaw = .false.
+    if (present(solve_yaw)) yaw = solve_yaw
+    if (yaw .and. (opened(2) .or. .not. chain)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'sled: the heading is solved by a closed front with its '// &
+                      'lift (lift = .true., the front not open)')
       return
     end if
     d1 = m%add_frame('rear_contact')
@@ -375,6 +387,8 @@ contains
     call m%add_element(new_measurement('front_z', MEASURE_PLANE_POINT, d2, front, gz, axis_i=[0.0_wp, 0.0_wp, 1.0_wp]))
     if (opened(2)) then
       call m%add_loop('front contact', [gx, gy], [0.0_wp, 0.0_wp], [su2, sv2], status)
+    else if (yaw) then
+      call m%add_loop('front contact', [gz, gx, gy], [0.0_wp, 0.0_wp, 0.0_wp], [sphi, su2, sv2], status)
     else if (chain) then
       ! each condition with the same dependent as in the open loop (the
       ! records of the builds are joined by the dependents' names)
@@ -410,6 +424,7 @@ contains
       [p%length/2, 0.0_wp, 0.0_wp] + p%centre_offset, p%drag_area, p%air_density, p%wind, status))
     if (.not. status%ok()) return
     coordinates = [su, sv, sphi]
+    if (yaw) coordinates = [su, sv, spitch]
     if (opened(2)) coordinates = [coordinates, spitch]
     if (opened(1)) coordinates = [coordinates, slift]
     call m%set_coordinates(coordinates)

@@ -225,8 +225,8 @@ contains
   !> 'front_water_drag': rider_water_drag with the vehicle's spheres and
   !> v%water), each on where its contact starts between the water's edges;
   !> the laws point at `water` (no copy), which outlives m.
-  !> lift, open: a flight build (build_sled; rider_vehicle_flight).
-  subroutine build_vehicle_model(v, d, surface, m, q0, qd0, status, water, lift, open)
+  !> lift, open, solve_yaw: a flight build (build_sled; rider_vehicle_flight).
+  subroutine build_vehicle_model(v, d, surface, m, q0, qd0, status, water, lift, open, solve_yaw)
     type(vehicle_t), intent(in) :: v
     type(sled_description_t), intent(in) :: d
     class(surface_t), intent(in) :: surface
@@ -234,7 +234,7 @@ contains
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     type(status_t), intent(inout) :: status
     type(water_field_t), intent(in), optional, target :: water
-    logical, intent(in), optional :: lift, open(2)
+    logical, intent(in), optional :: lift, open(2), solve_yaw
     character(len=*), parameter :: contacts(2) = [character(len=5) :: 'rear', 'front']
     character(len=*), parameter :: u_names(2) = [character(len=2) :: 'u', 'u2']
     character(len=*), parameter :: v_names(2) = [character(len=2) :: 'v', 'v2']
@@ -256,14 +256,15 @@ contains
       carried%params%centre_offset = vb%body%com - [vb%length/2, 0.0_wp, 0.0_wp]
     end if
     if (.not. present(water)) then
-      call build_sled_model(carried, surface, m, q0, qd0, status, lift=lift, open=open)
+      call build_sled_model(carried, surface, m, q0, qd0, status, lift=lift, open=open, solve_yaw=solve_yaw)
       return
     end if
     if (v%kind == VEHICLE_BAR) then
       call set_status(status, STATUS_INTERNAL, 'the water''s drag acts on a vehicle''s contacts, not on the bar')
       return
     end if
-    call build_sled_model(carried, surface, m, q0, qd0, status, finish=.false., lift=lift, open=open)
+    call build_sled_model(carried, surface, m, q0, qd0, status, finish=.false., lift=lift, open=open, &
+                          solve_yaw=solve_yaw)
     if (.not. status%ok()) return
     do k = 1, 2
       su = m%scalar_index(trim(u_names(k)))

@@ -24,20 +24,39 @@
 !> rebound slower than rider_flight's close_speed closes the contact (if it
 !> then presses; else it flies on from the slide).
 !>
+!> While the front is on (open masks 0 and 1) its closure solves front_z
+!> for one coordinate: the pitch, or the heading phi (build_sled solve_yaw;
+!> a second build of each of the two masks). A coordinate's column of the
+!> closure Jacobian is the front point's speed along the front's normal per
+!> unit of it, n_2 . (a x (r_front - r_rear)) with a its axis (solve_columns:
+!> the pitch's is the heading's y, the heading's its z); the other two
+!> columns (u2, v2) lie in the tangent plane, so J_beta's determinant is
+!> that column times theirs. Where the front's normal turns across the
+!> rear's (a vehicle whose ends ride opposite walls: the double ring in the
+!> bowl) the pitch's column goes to zero and the heading's grows. The
+!> margin |column of the solved one| - solve_ratio |the other's| is a root:
+!> falling through zero the run stops and the same open contacts go on in
+!> the other build (a switch as a take-off's: the full layout's positions
+!> and rates carry over, continuous to the closure's rounding).
+!>
 !> Each stretch between switches is driven on its own (drive_vehicle), its
 !> records computed into the vehicle's ride figures (rider_vehicle
-!> vehicle_ride_figures, with the stretch's build) and joined to the others'
-!> (kinetostatics_recorder join_series: the coordinates of one build are 0
-!> in the others' records; open_mask says which contacts were open).
+!> vehicle_ride_figures, with the stretch's build), written in the full
+!> layout (full_records: every record has u, v, phi, pitch, rear_lift, their
+!> rates and accelerations, whichever of them its build solves or holds)
+!> and joined to the others' (kinetostatics_recorder join_series: a
+!> dependent of one build is 0 in the others' records; open_mask says which
+!> contacts were open).
 module rider_vehicle_flight
   use base_kinds, only: wp
-  use base_text, only: format_short
+  use base_text, only: format_short, format_real
+  use base_vector, only: cross
   use base_status, only: status_t, set_status, prefix_status, STATUS_DOMAIN
   use geometry_surface, only: surface_t
   use geometry_slide_query, only: slide_surface_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, add_driver_result, &
     DRIVE_EVENT_STOP, EVENT_STOP, EVENT_RESTART
-  use kinetostatics_mechanism, only: mechanism_t
+  use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_LIFT_OFF
   use kinetostatics_recorder, only: mechanism_series_t, join_series
   use kinetostatics_models, only: sled_description_t
@@ -46,21 +65,38 @@ module rider_vehicle_flight
   use rider_flight, only: ride_flights_t, rider_landing_t, add_landing, close_speed, landing_record, &
     quick_landings_exceeded, quick_flight, count_switch
   use rider_vehicle, only: vehicle_t, build_vehicle_model, vehicle_ride_figures
+  use rider_vehicle_layout, only: vehicle_contact_names, vehicle_units, open_words, N_FULL, full_names
   use water_field, only: water_field_t
   implicit none (type, external)
   private
   public :: vehicle_flight_ode_t, build_vehicle_flight, drive_vehicle, vehicle_contact_names, vehicle_units
+  public :: solve_columns, SOLVE_PITCH, SOLVE_YAW, solve_ratio
 
-  !> the contacts, bit k-1 of a build's open mask
-  character(len=*), parameter :: vehicle_contact_names(2) = [character(len=5) :: 'rear', 'front']
-  integer, parameter :: N_FULL = 5   ! u, v, phi, pitch, rear_lift
-  character(len=*), parameter :: full_names(N_FULL) = [character(len=9) :: 'u', 'v', 'phi', 'pitch', 'rear_lift']
-  integer, parameter :: SWITCH_NONE = 0, SWITCH_TAKE_OFF = 1, SWITCH_LANDING = 2
+  integer, parameter :: SWITCH_NONE = 0, SWITCH_TAKE_OFF = 1, SWITCH_LANDING = 2, SWITCH_SOLVE = 3
+  !> what the closed front's closure solves front_z for (the header)
+  integer, parameter :: SOLVE_PITCH = 1, SOLVE_YAW = 2
+  !> the solved coordinate gives way when its column falls below this
+  !> fraction of the other's (after the switch the new one's is twice the
+  !> old one's: the way back needs the ratio of the two to change fourfold)
+  real(wp), parameter :: solve_ratio = 0.5_wp
+  !> the roots after the mechanism's: the rear's and the front's gap, the
+  !> solved coordinate's margin
+  integer, parameter :: N_OWN_ROOTS = 3
 
   !> The vehicle's integration with its four builds.
   type, extends(mechanism_ode_t) :: vehicle_flight_ode_t
     type(mechanism_t) :: builds(0:3)
+    type(mechanism_t) :: yaw_builds(0:1)    ! masks 0, 1 with the front's closure solving the heading
     integer :: open_mask = 0
+    integer :: solved = SOLVE_PITCH         ! the build in use's (masks 0, 1)
+    integer :: solve_switches = 0           ! how often the solved coordinate changed
+    integer :: heading = 0                  ! the heading's frame (its y the pitch's axis, z the yaw's)
+    !> the positions of the margin's root (flight_roots), apart from the run's work
+    type(mechanism_workspace_t) :: margin_work
+    !> the margin at the last right-hand side's (t, y), the largest |margin| met
+    logical :: margin_stored = .false.
+    real(wp) :: margin_t = 0, margin_value = 0, margin_scale = 0
+    real(wp), allocatable :: margin_y(:)
     integer :: full(N_FULL) = 0          ! the full layout's scalars
     integer :: point(2) = 0, foot(2) = 0 ! each contact's point frame and its foot point's frame
     integer :: contact(2) = 0            ! the mechanism's contacts 'rear', 'front'
@@ -78,6 +114,7 @@ module rider_vehicle_flight
     real(wp), allocatable :: losses(:)              ! J, the landings' energy lost up to each record
     character(len=:), allocatable :: history        ! every stretch's outcome
   contains
+    procedure :: rhs => flight_rhs
     procedure :: root_count => flight_root_count
     procedure :: roots => flight_roots
     procedure :: handle_event => flight_handle_event
@@ -106,6 +143,8 @@ contains
         call build_vehicle_model(v, d, surface, sys%builds(mask), q_open, qd_open, status, water, lift=.true., &
                                  open=[btest(mask, 0), btest(mask, 1)])
       end if
+      if (mask < 2) call build_vehicle_model(v, d, surface, sys%yaw_builds(mask), q_open, qd_open, status, water, &
+                                             lift=.true., open=[btest(mask, 0), .false.], solve_yaw=.true.)
       if (.not. status%ok()) then
         call prefix_status(status, 'the vehicle''s flight builds')
         return
@@ -113,6 +152,8 @@ contains
     end do
     sys%mechanism = sys%builds(0)
     sys%open_mask = 0
+    sys%solved = SOLVE_PITCH
+    sys%solve_switches = 0
     associate (m => sys%builds(0))
       do k = 1, N_FULL
         sys%full(k) = m%scalar_index(trim(full_names(k)))
@@ -120,6 +161,7 @@ contains
       sys%point = [m%frame_index('bar'), m%frame_index('bar_front')]
       sys%foot = [m%frame_index('rear_contact'), m%frame_index('front_contact')]
       sys%contact = [m%contact_index('rear'), m%contact_index('front')]
+      sys%heading = m%frame_index('heading')
     end associate
     sys%vehicle = v
     sys%gravity = norm2(d%params%gravity)
@@ -139,24 +181,62 @@ contains
     if (allocated(self%slide)) s = self%slide%arc_length(s)
   end function where_now
 
+  !> The mechanism's right-hand side; while the front is on, the margin at
+  !> its positions is kept with (t, y) for the root calls (flight_roots).
+  subroutine flight_rhs(self, t, y, ydot, status)
+    class(vehicle_flight_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp), intent(out) :: ydot(:)
+    type(status_t), intent(inout) :: status
+    call self%mechanism_ode_t%rhs(t, y, ydot, status)
+    self%margin_stored = status%ok() .and. self%open_mask < 2
+    if (.not. self%margin_stored) return
+    self%margin_value = solve_margin(self, self%work)
+    self%margin_scale = max(self%margin_scale, abs(self%margin_value))
+    self%margin_t = t
+    if (allocated(self%margin_y)) then
+      if (size(self%margin_y) /= size(y)) deallocate (self%margin_y)
+    end if
+    if (.not. allocated(self%margin_y)) allocate (self%margin_y(size(y)))
+    self%margin_y(:) = y
+  end subroutine flight_rhs
+
   integer function flight_root_count(self) result(n)
     class(vehicle_flight_ode_t), intent(in) :: self
-    n = self%mechanism_ode_t%root_count() + 2
+    n = self%mechanism_ode_t%root_count() + N_OWN_ROOTS
   end function flight_root_count
 
   !> The mechanism's roots, then each open contact's gap root (a constant
-  !> while it is closed).
+  !> while it is closed), then, while the front is on, the margin of the
+  !> coordinate its closure solves (solve_margin; a constant while it is
+  !> open).
   subroutine flight_roots(self, t, y, g)
     class(vehicle_flight_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
     real(wp), intent(out) :: g(:)
     type(status_t) :: st
     integer :: n, k
-    n = size(g) - 2
+    n = size(g) - N_OWN_ROOTS
     call self%mechanism_ode_t%roots(t, y, g(1:n))
     g(n + 1:) = 1
+    ! the margin: the last right-hand side's where it serves (as the
+    ! mechanism's roots: the same t, y within 1e-5 relative and the value
+    ! far from zero), from the run's positions where they are y's, else
+    ! from positions of its own (the run's work and its cached root values
+    ! stay as the mechanism's roots left them)
+    if (self%open_mask < 2) then
+      if (margin_serves(self, t, y)) then
+        g(n + 3) = self%margin_value
+      else if (self%work%converged .and. all(self%work%scalars(self%mechanism%q)%q == y(1:self%mechanism%f))) then
+        g(n + 3) = solve_margin(self, self%work)
+      else
+        call self%mechanism%set_positions(self%margin_work, y(1:self%mechanism%f), st)
+        if (st%ok()) g(n + 3) = solve_margin(self, self%margin_work)
+      end if
+    end if
     if (self%open_mask == 0) return
     ! the positions at y; a trial state the closure cannot reach keeps the last value
+    st = status_t()
     call self%positions_at(y, st)
     if (.not. st%ok()) return
     do k = 1, 2
@@ -164,6 +244,50 @@ contains
                                                              self%opened(k))
     end do
   end subroutine flight_roots
+
+  !> The margin stored by the last right-hand side serves at (t, y): the
+  !> same t and y, or y within d <= 1e-5 of it (each entry relative to
+  !> max(1, |y_c|)) with |margin| >= max(1e4 d, 1e-9) times the largest met
+  !> (kinetostatics_mechanism_ode_events: the value's error, its
+  !> sensitivity times d, then cannot change its sign).
+  logical function margin_serves(self, t, y) result(serves)
+    class(vehicle_flight_ode_t), intent(in) :: self
+    real(wp), intent(in) :: t, y(:)
+    real(wp) :: d
+    serves = .false.
+    if (.not. self%margin_stored .or. t /= self%margin_t) return
+    if (size(y) /= size(self%margin_y)) return
+    d = maxval(abs(y - self%margin_y)/max(1.0_wp, abs(self%margin_y)))
+    serves = d <= 1e-5_wp .and. abs(self%margin_value) >= max(1e4_wp*d, 1e-9_wp)*self%margin_scale
+  end function margin_serves
+
+  !> The columns of the closure Jacobian of front_z (the front point's
+  !> signed distance along its foot frame's normal) for the pitch and the
+  !> heading (m/rad), at the positions in `work`: |n_2 . (a x arm)|, a the
+  !> axis (the heading frame's y, z), arm from the rear end (both axes pass
+  !> through it) to the front point. Exact: the foot point moves in its
+  !> tangent plane, and the normal's turn is across the gap's own direction.
+  pure function solve_columns(work, heading, front, foot) result(c)
+    type(mechanism_workspace_t), intent(in) :: work
+    integer, intent(in) :: heading, front, foot
+    real(wp) :: c(2)
+    real(wp) :: arm(3)
+    associate (h => work%frames(heading), n => work%frames(foot)%rot(:, 3))
+      arm = work%frames(front)%r - h%r
+      c(SOLVE_PITCH) = abs(dot_product(n, cross(h%rot(:, 2), arm)))
+      c(SOLVE_YAW) = abs(dot_product(n, cross(h%rot(:, 3), arm)))
+    end associate
+  end function solve_columns
+
+  !> The solved coordinate's column less solve_ratio times the other's (m)
+  !> at the positions in `work`: it gives way where this falls through zero.
+  real(wp) function solve_margin(self, work) result(margin)
+    class(vehicle_flight_ode_t), intent(in) :: self
+    type(mechanism_workspace_t), intent(in) :: work
+    real(wp) :: c(2)
+    c = solve_columns(work, self%heading, self%point(2), self%foot(2))
+    margin = c(self%solved) - solve_ratio*c(3 - self%solved)
+  end function solve_margin
 
   !> The mechanism's events; a lift-off of a contact asks for its take-off
   !> (a stop, then the switch); an open contact's gap root: it opened (watch
@@ -177,7 +301,7 @@ contains
     integer, intent(out) :: action
     type(status_t), intent(inout) :: status
     integer :: n, k
-    n = size(fired) - 2
+    n = size(fired) - N_OWN_ROOTS
     self%switch = SWITCH_NONE
     call self%mechanism_ode_t%handle_event(t, y, fired(1:n), action, status)
     if (.not. status%ok()) return
@@ -209,6 +333,15 @@ contains
       action = EVENT_STOP
       self%outcome = 'landing of the '//trim(vehicle_contact_names(k))//' contact at t = '//format_short(t)//' s'
     end do
+    ! the solved coordinate's margin falling through zero: the other from here
+    ! (a landing at the same time picks by the normals itself, use_build)
+    if (fired(n + 3) < 0 .and. self%open_mask < 2 .and. self%switch == SWITCH_NONE) then
+      self%switch = SWITCH_SOLVE
+      self%switch_t = t
+      self%switch_y = y
+      action = EVENT_STOP
+      self%outcome = ''
+    end if
   end subroutine flight_handle_event
 
   !> Drives the run from y0 stretch by stretch: after a stop that asks for a
@@ -227,6 +360,7 @@ contains
     real(wp), allocatable :: y(:), speed(:), felt(:, :)
     real(wp) :: lost
     logical :: first, next
+    type(status_t) :: records   ! of the stretch's records in the full layout
     stretch_options = options
     if (.not. options%output_origin < huge(1.0_wp)) stretch_options%output_origin = options%t_start
     allocate (sys%open_record(0), sys%speed(0), sys%felt(3, 0), sys%losses(0))
@@ -242,13 +376,20 @@ contains
       end if
       if (len(sys%history) > 0 .and. len(sys%outcome) > 0) sys%history = sys%history//'; '
       sys%history = sys%history//sys%outcome
-      ! the stretch's figures with its own build (its records are its layout)
-      if (status%ok() .and. sys%series%n > 0) then
-        call vehicle_ride_figures(sys%mechanism, sys%work, sys%series, speed, felt, status)
+      ! the stretch's figures with its own build (its records are its
+      ! layout), then its records in the full layout (also those of a
+      ! stretch that failed: they are written)
+      if (sys%series%n > 0) then
         if (status%ok()) then
-          sys%speed = [sys%speed, speed]
-          sys%felt = reshape([sys%felt, felt], [3, size(sys%speed)])
+          call vehicle_ride_figures(sys%mechanism, sys%work, sys%series, speed, felt, status)
+          if (status%ok()) then
+            sys%speed = [sys%speed, speed]
+            sys%felt = reshape([sys%felt, felt], [3, size(sys%speed)])
+          end if
         end if
+        records = status_t()
+        call full_records(sys, records)
+        if (status%ok() .and. .not. records%ok()) status = records
       end if
       sys%open_record = [sys%open_record, spread(sys%open_mask, 1, sys%series%n)]
       ! a landing starts a stretch: its energy counts from the next one's records
@@ -296,6 +437,18 @@ contains
     before = self%open_mask
     f = self%mechanism%f
     select case (self%switch)
+    case (SWITCH_SOLVE)
+      ! the same open contacts, the front's closure solving the other coordinate
+      call self%mechanism%evaluate(self%work, t, self%switch_y(1:f), self%switch_y(f + 1:2*f), residual, status)
+      if (.not. status%ok()) return
+      full = full_state(self, self%switch_y)
+      call use_build(self, before, full, y, status, 3 - self%solved)
+      self%solve_switches = self%solve_switches + 1
+      self%switch = SWITCH_NONE
+      self%cached = .false.
+      self%rhs_cached = .false.
+      self%margin_stored = .false.
+      return
     case (SWITCH_TAKE_OFF)
       call self%mechanism%evaluate(self%work, t, self%switch_y(1:f), self%switch_y(f + 1:2*f), residual, status)
       if (.not. status%ok()) return
@@ -336,6 +489,7 @@ contains
     self%switch = SWITCH_NONE
     self%cached = .false.
     self%rhs_cached = .false.
+    self%margin_stored = .false.
   end subroutine switch_build
 
   !> After a switch at t to the state y: every closed contact must press;
@@ -366,22 +520,6 @@ contains
     call use_build(self, after, full, y, status)
   end subroutine press_or_open
 
-  !> The open contacts of a mask in words.
-  pure function open_words(mask) result(words)
-    integer, intent(in) :: mask
-    character(len=:), allocatable :: words
-    select case (mask)
-    case (1)
-      words = 'rear'
-    case (2)
-      words = 'front'
-    case (3)
-      words = 'both'
-    case default
-      words = 'none'
-    end select
-  end function open_words
-
   !> Contact c's foot point's arc length on a slide (else its u).
   real(wp) function where_foot(self, c) result(s)
     type(vehicle_flight_ode_t), intent(in) :: self
@@ -402,18 +540,41 @@ contains
   !> The build of the open contacts `mask` takes over at the full layout's
   !> state `full`: every scalar's value (its closure starts there), the
   !> laws' switches (the water's drag), the work integrals; y its state.
-  subroutine use_build(self, mask, full, y, status)
+  !> With the front on, its closure solves `solve` if given; else the
+  !> coordinate it solved, unless that has degraded (solve_ratio), or, after
+  !> a flight of the front, the better of the two (solve_columns at the
+  !> positions in the work now, the pose of `full`).
+  subroutine use_build(self, mask, full, y, status, solve)
     type(vehicle_flight_ode_t), intent(inout) :: self
     integer, intent(in) :: mask
     real(wp), intent(in) :: full(:)
     real(wp), allocatable, intent(inout) :: y(:)
     type(status_t), intent(inout) :: status
+    integer, intent(in), optional :: solve
     real(wp), allocatable :: values(:), q(:), qd(:)
+    real(wp) :: c(2)
     logical, allocatable :: active(:)
     integer :: k, j, f
+    self%margin_stored = .false.
     values = self%work%scalars(:)%q
     active = [(self%work%laws(k)%law%active, k = 1, self%mechanism%n_laws)]
-    self%mechanism = self%builds(mask)
+    if (mask < 2) then
+      c = solve_columns(self%work, self%heading, self%point(2), self%foot(2))
+      if (present(solve)) then
+        self%solved = solve
+      else if (self%open_mask < 2) then
+        if (c(self%solved) < solve_ratio*c(3 - self%solved)) self%solved = 3 - self%solved
+      else
+        self%solved = merge(SOLVE_PITCH, SOLVE_YAW, c(SOLVE_PITCH) >= c(SOLVE_YAW))
+      end if
+      if (self%solved == SOLVE_YAW) then
+        self%mechanism = self%yaw_builds(mask)
+      else
+        self%mechanism = self%builds(mask)
+      end if
+    else
+      self%mechanism = self%builds(mask)
+    end if
     self%open_mask = mask
     call self%mechanism%prepare_workspace(self%work)
     self%work%scalars(:)%q = values
@@ -436,38 +597,58 @@ contains
     y(2*f + 1:) = full(2*N_FULL + 1:)
     call self%mechanism%set_positions(self%work, q, status)
     if (status%ok()) call self%mechanism%set_velocities(self%work, qd)
+    ! the margin's positions start from here (not from the build's start)
+    if (status%ok() .and. mask < 2) self%margin_work = self%work
   end subroutine use_build
 
-  !> The units of the joined records' coordinates and dependents by their
-  !> names: u, u2 in u_unit, v, v2 in v_unit, the angles rad, the lift m.
-  subroutine vehicle_units(series, u_unit, v_unit, q_units, beta_units)
-    type(mechanism_series_t), intent(in) :: series
-    character(len=*), intent(in) :: u_unit, v_unit
-    character(len=8), allocatable, intent(out) :: q_units(:), beta_units(:)
-    integer :: k
-    allocate (q_units(series%f), beta_units(series%r))
-    do k = 1, series%f
-      q_units(k) = unit_of(series%q_names(k))
-    end do
-    do k = 1, series%r
-      beta_units(k) = unit_of(series%beta_names(k))
-    end do
-  contains
-    function unit_of(name) result(unit)
-      character(len=*), intent(in) :: name
-      character(len=8) :: unit
-      select case (trim(name))
-      case ('u', 'u2')
-        unit = u_unit
-      case ('v', 'v2')
-        unit = v_unit
-      case ('rear_lift')
-        unit = 'm'
-      case default
-        unit = 'rad'
-      end select
-    end function unit_of
-  end subroutine vehicle_units
+  !> The stretch's records (sys%series, in its build's layout) in the full
+  !> layout: q, q', q'' of u, v, phi, pitch, rear_lift at every record,
+  !> whichever of them the build integrates, solves (its closure at the
+  !> record's coordinates, started from the record's dependents; the rates
+  !> from the record's) or holds (a closed rear's lift, 0). The dependents
+  !> stay as recorded, but where the front's closure solved the heading its
+  !> row is the pitch's: the cut force of front_z is one quantity whichever
+  !> coordinate it solves (the joined records have one front_z), and the
+  !> heading is a coordinate of the full layout.
+  subroutine full_records(self, status)
+    type(vehicle_flight_ode_t), intent(inout) :: self
+    type(status_t), intent(inout) :: status
+    real(wp), allocatable :: q(:, :), qd(:, :), qdd(:, :)
+    integer :: i, k, n, row
+    n = self%series%n
+    allocate (q(N_FULL, n), qd(N_FULL, n), qdd(N_FULL, n))
+    associate (m => self%mechanism, s => self%series, work => self%work)
+      do i = 1, n
+        do k = 1, m%r
+          work%scalars(m%beta(k))%q = s%beta(k, i)
+        end do
+        work%warm = .false.
+        work%converged = .false.
+        call m%set_positions(work, s%q(:, i), status)
+        if (.not. status%ok()) then
+          call prefix_status(status, 'the vehicle''s record at t = '//format_real(s%time(i))//' s')
+          return
+        end if
+        call m%set_velocities(work, s%qd(:, i))
+        call m%set_accelerations(work, s%qdd(:, i))
+        q(:, i) = work%scalars(self%full)%q
+        qd(:, i) = work%scalars(self%full)%qd
+        qdd(:, i) = work%scalars(self%full)%qdd
+      end do
+      s%f = N_FULL
+      deallocate (s%q_names)
+      allocate (s%q_names(N_FULL))
+      s%q_names = full_names
+      s%q = q
+      s%qd = qd
+      s%qdd = qdd
+      row = findloc(s%beta_names, 'phi', dim=1)
+      if (row > 0) then
+        s%beta_names(row) = 'pitch'
+        s%beta(row, :n) = q(4, :)
+      end if
+    end associate
+  end subroutine full_records
 
   !> The flights' counts and airtimes after a switch at t from the open
   !> contacts `before` to `now`.

@@ -90,6 +90,7 @@ module scenarios_sled
     !> each record's open contacts (bit 0 the rear, bit 1 the front)
     type(ride_flights_t) :: flights
     integer, allocatable :: open(:)
+    integer :: solve_switches = 0    ! how often the front's closure changed the coordinate it solves
   contains
     procedure :: compute => vehicle_compute
     procedure :: write => vehicle_write
@@ -360,6 +361,7 @@ contains
       self%felt = sys%felt
       self%flights = sys%flights
       self%open = sys%open_record
+      self%solve_switches = sys%solve_switches
     class default
       call vehicle_ride_figures(sys%mechanism, sys%work, sys%series, self%speed, self%felt, status)
     end select
@@ -530,6 +532,8 @@ contains
       end do
     end if
     if (self%vehicle%may_fly) call add_flights(summary, self%flights, vehicle_contact_names)
+    if (self%solve_switches > 0) call summary%add_count('front_closure_switches', 'front closure switches', &
+      self%solve_switches, '(pitch <-> heading, by the normals; docs/vehicles.md, "Flight")')
     if (.not. allocated(self%verdicts)) return
     exceeded = 0
     do k = 1, size(self%limits)
