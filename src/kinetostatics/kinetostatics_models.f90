@@ -136,22 +136,22 @@ contains
   end subroutine build_fourbar_model
 
   !> The sled of `d` on `surface` and its start: (u, v, phi) and their rates
-  !> (finish = .false.: left open for more laws; lift, open, solve_yaw: the
-  !> flight builds; as build_sled).
-  subroutine build_sled_model(d, surface, m, q0, qd0, status, finish, lift, open, solve_yaw)
+  !> (finish = .false.: left open for more laws; lift, open, solve_yaw,
+  !> free_roll: the flight builds; as build_sled).
+  subroutine build_sled_model(d, surface, m, q0, qd0, status, finish, lift, open, solve_yaw, free_roll)
     type(sled_description_t), intent(in) :: d
     class(surface_t), intent(in) :: surface
     type(mechanism_t), intent(out) :: m
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     type(status_t), intent(inout) :: status
-    logical, intent(in), optional :: finish, lift, open(2), solve_yaw
+    logical, intent(in), optional :: finish, lift, open(2), solve_yaw, free_roll
     if (.not. status%ok()) return
     if (.not. surface%in_domain(d%q0(1), d%q0(2))) then
       call set_status(status, STATUS_INVALID_INPUT, 'sled: the start (u0, v0) = ('//format_short(d%q0(1))//', '// &
                       format_short(d%q0(2))//') must lie in the parameter domain of the '//surface%describe())
       return
     end if
-    call build_sled(d%params, surface, d%q0, m, status, finish, lift, open, solve_yaw)
+    call build_sled(d%params, surface, d%q0, m, status, finish, lift, open, solve_yaw, free_roll)
     q0 = d%q0
     qd0 = d%qd0
   end subroutine build_sled_model
@@ -308,15 +308,21 @@ contains
   !> ([u, v, pitch], then rear_lift): where the front's normal lies across
   !> the rear's, the pitch no longer moves the front off the slide but the
   !> heading does (rider_vehicle_flight picks the one by the normals).
-  subroutine build_sled(p, surface, q0, m, status, finish, lift, open, solve_yaw)
+  !> Every build with `lift` has the bar on a roll revolute about its own x
+  !> after the pitch (scalar 'roll', frame 'pitched' between), held at its
+  !> value (0 from the start); with both contacts open and `free_roll` it
+  !> is the sixth coordinate ([u, v, phi, pitch, rear_lift, roll]: a free
+  !> rigid body; the roll's axis passes through both contact points, so
+  !> neither contact's gap depends on it).
+  subroutine build_sled(p, surface, q0, m, status, finish, lift, open, solve_yaw, free_roll)
     type(sled_params_t), intent(in) :: p
     class(surface_t), intent(in) :: surface
     real(wp), intent(in) :: q0(3)
     type(mechanism_t), intent(out) :: m
     type(status_t), intent(inout) :: status
-    logical, intent(in), optional :: finish, lift, open(2), solve_yaw
+    logical, intent(in), optional :: finish, lift, open(2), solve_yaw, free_roll
     integer :: d1, heading, bar, front, d2, su, sv, sphi, spitch, su2, sv2, gx, gy, gz, rear_contact, &
-               front_contact, front_body, lifted, slift
+               front_contact, front_body, lifted, slift, pitched, sroll
     logical :: chain, opened(2), yaw
     integer, allocatable :: coordinates(:)
     type(surface_point_t) :: pt
@@ -368,9 +374,18 @@ contains
     else
       call m%add_element(new_revolute('yaw', d1, heading, sphi, [0.0_wp, 0.0_wp, 1.0_wp]))
     end if
-    bar = m%add_frame('bar')
     spitch = m%add_scalar('pitch', 0.0_wp)
-    call m%add_element(new_revolute('pitch', heading, bar, spitch, [0.0_wp, 1.0_wp, 0.0_wp]))
+    sroll = 0
+    if (chain) then
+      pitched = m%add_frame('pitched')
+      call m%add_element(new_revolute('pitch', heading, pitched, spitch, [0.0_wp, 1.0_wp, 0.0_wp]))
+      bar = m%add_frame('bar')
+      sroll = m%add_scalar('roll', 0.0_wp)
+      call m%add_element(new_revolute('roll', pitched, bar, sroll, [1.0_wp, 0.0_wp, 0.0_wp]))
+    else
+      bar = m%add_frame('bar')
+      call m%add_element(new_revolute('pitch', heading, bar, spitch, [0.0_wp, 1.0_wp, 0.0_wp]))
+    end if
     call m%add_element(new_mass_element('bar_mass', bar, p%mass, p%inertia, [p%length/2, 0.0_wp, 0.0_wp] + &
                                         p%centre_offset, p%gravity, status))
     front = m%add_frame('bar_front')
@@ -427,6 +442,9 @@ contains
     if (yaw) coordinates = [su, sv, spitch]
     if (opened(2)) coordinates = [coordinates, spitch]
     if (opened(1)) coordinates = [coordinates, slift]
+    if (present(free_roll) .and. all(opened) .and. chain) then
+      if (free_roll) coordinates = [coordinates, sroll]
+    end if
     call m%set_coordinates(coordinates)
     if (present(finish)) then
       if (.not. finish) return

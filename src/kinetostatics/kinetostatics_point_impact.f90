@@ -28,7 +28,7 @@ module kinetostatics_point_impact
   use kinetostatics_impact, only: impact_law_t, impact_outcome_t, resolve_impact
   implicit none (type, external)
   private
-  public :: point_gap, point_gap_rate, point_impact, gap_root
+  public :: point_gap, point_gap_rate, point_impact, gap_root, speeds_mass
 
   !> m: how far a contact must open after its take-off before the landing
   !> is watched. At the lift-off the gap, its rate and its second derivative
@@ -92,38 +92,26 @@ contains
     logical, intent(out) :: closed
     real(wp), intent(out) :: closing_impulse(3), closing_energy
     type(status_t), intent(inout) :: status
-    real(wp), allocatable :: jac(:, :), mass(:, :), minv_jt(:, :), e(:), s(:), energy(:), lu(:, :)
-    real(wp) :: k(3, 3), normal(3), v(3), kinetic, potential, vn
+    real(wp), allocatable :: jac(:, :), mass(:, :), minv_jt(:, :), e(:), s(:), lu(:, :)
+    real(wp) :: k(3, 3), normal(3), v(3), vn
     integer, allocatable :: ipiv(:)
-    integer :: i, j, n
+    integer :: i, n
     n = m%f
-    allocate (jac(3, n), mass(n, n), minv_jt(n, 3), e(n), s(n), energy(n), lu(n, n), ipiv(n))
+    allocate (jac(3, n), minv_jt(n, 3), e(n), s(n), lu(n, n), ipiv(n))
     closed = .false.
     closing_impulse = 0
     closing_energy = 0
     s = y(n + 1:2*n)
     call m%set_positions(work, y(1:n), status)
     if (.not. status%ok()) return
-    ! J: the point's velocity per unit speed; M from T(e_i), T(e_i + e_j)
+    ! J: the point's velocity per unit speed
     do i = 1, n
       e = 0
       e(i) = 1
       call m%set_velocities(work, e)
       jac(:, i) = work%frames(point)%v
-      call m%energy(work, energy(i), potential)
-      mass(i, i) = 2*energy(i)
     end do
-    do i = 1, n
-      do j = i + 1, n
-        e = 0
-        e(i) = 1
-        e(j) = 1
-        call m%set_velocities(work, e)
-        call m%energy(work, kinetic, potential)
-        mass(i, j) = kinetic - energy(i) - energy(j)
-        mass(j, i) = mass(i, j)
-      end do
-    end do
+    mass = speeds_mass(m, work)
     call m%set_velocities(work, s)
     v = work%frames(point)%v
     normal = work%frames(foot)%rot(:, 3)
@@ -162,4 +150,36 @@ contains
                       format_short(point_gap_rate(work, point, foot))//' m/s')
     end if
   end subroutine point_impact
+
+  !> The mass matrix of m in its speeds at the positions in `work` (set):
+  !> M_ii = 2 T(e_i), M_ij = T(e_i + e_j) - T(e_i) - T(e_j). The velocities
+  !> in `work` are left at the last probe's.
+  function speeds_mass(m, work) result(mass)
+    type(mechanism_t), intent(in) :: m
+    type(mechanism_workspace_t), intent(inout) :: work
+    real(wp), allocatable :: mass(:, :)
+    real(wp), allocatable :: e(:), energy(:)
+    real(wp) :: kinetic, potential
+    integer :: i, j, n
+    n = m%f
+    allocate (mass(n, n), e(n), energy(n))
+    do i = 1, n
+      e = 0
+      e(i) = 1
+      call m%set_velocities(work, e)
+      call m%energy(work, energy(i), potential)
+      mass(i, i) = 2*energy(i)
+    end do
+    do i = 1, n
+      do j = i + 1, n
+        e = 0
+        e(i) = 1
+        e(j) = 1
+        call m%set_velocities(work, e)
+        call m%energy(work, kinetic, potential)
+        mass(i, j) = kinetic - energy(i) - energy(j)
+        mass(j, i) = mass(i, j)
+      end do
+    end do
+  end function speeds_mass
 end module kinetostatics_point_impact

@@ -225,8 +225,9 @@ contains
   !> 'front_water_drag': rider_water_drag with the vehicle's spheres and
   !> v%water), each on where its contact starts between the water's edges;
   !> the laws point at `water` (no copy), which outlives m.
-  !> lift, open, solve_yaw: a flight build (build_sled; rider_vehicle_flight).
-  subroutine build_vehicle_model(v, d, surface, m, q0, qd0, status, water, lift, open, solve_yaw)
+  !> lift, open, solve_yaw, free_roll: a flight build (build_sled;
+  !> rider_vehicle_flight).
+  subroutine build_vehicle_model(v, d, surface, m, q0, qd0, status, water, lift, open, solve_yaw, free_roll)
     type(vehicle_t), intent(in) :: v
     type(sled_description_t), intent(in) :: d
     class(surface_t), intent(in) :: surface
@@ -234,7 +235,7 @@ contains
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     type(status_t), intent(inout) :: status
     type(water_field_t), intent(in), optional, target :: water
-    logical, intent(in), optional :: lift, open(2), solve_yaw
+    logical, intent(in), optional :: lift, open(2), solve_yaw, free_roll
     character(len=*), parameter :: contacts(2) = [character(len=5) :: 'rear', 'front']
     character(len=*), parameter :: u_names(2) = [character(len=2) :: 'u', 'u2']
     character(len=*), parameter :: v_names(2) = [character(len=2) :: 'v', 'v2']
@@ -256,7 +257,8 @@ contains
       carried%params%centre_offset = vb%body%com - [vb%length/2, 0.0_wp, 0.0_wp]
     end if
     if (.not. present(water)) then
-      call build_sled_model(carried, surface, m, q0, qd0, status, lift=lift, open=open, solve_yaw=solve_yaw)
+      call build_sled_model(carried, surface, m, q0, qd0, status, lift=lift, open=open, solve_yaw=solve_yaw, &
+                            free_roll=free_roll)
       return
     end if
     if (v%kind == VEHICLE_BAR) then
@@ -264,7 +266,7 @@ contains
       return
     end if
     call build_sled_model(carried, surface, m, q0, qd0, status, finish=.false., lift=lift, open=open, &
-                          solve_yaw=solve_yaw)
+                          solve_yaw=solve_yaw, free_roll=free_roll)
     if (.not. status%ok()) return
     do k = 1, 2
       su = m%scalar_index(trim(u_names(k)))

@@ -9,11 +9,16 @@
 !> contacts (bit 0 the rear, bit 1 the front; 0: the sled of today with the
 !> lift held at 0), whose scalars, frames, contacts and laws sit at the same
 !> indices. A state carries over through the full layout [u, v, phi, pitch,
-!> rear_lift], their rates, then the laws' work integrals: positions and
-!> velocities are continuous through a switch, to the closure's rounding.
-!> The bar keeps its roll to the slide below its rear end in every build
-!> (as the sled always did, and as the rider's open pelvis): with both
-!> contacts open the vehicle has five coordinates, not six.
+!> rear_lift, roll], their rates, then the laws' work integrals: positions
+!> and velocities are continuous through a switch, to the closure's
+!> rounding. With both contacts open the vehicle is a free rigid body in
+!> six coordinates (build_sled free_roll: the roll about the bar's axis
+!> after the pitch); with a contact on, the roll is held (the sled's model:
+!> the bar keeps its roll to the slide below its rear end), at 0 until the
+!> vehicle has flown, then at the roll it landed with. A landing from the
+!> whole vehicle's flight first stops the roll's rate by a plastic impulse
+!> about the bar's axis (rider_vehicle_roll; its energy is the landing's),
+!> then the contact's impact in the build with the roll held (held_air).
 !>
 !> An open contact's gap (kinetostatics_point_impact point_gap: the rear's
 !> is its lift, the front's the front_z measurement of its open loop) is a
@@ -62,10 +67,11 @@ module rider_vehicle_flight
   use kinetostatics_models, only: sled_description_t
   use kinetostatics_impact, only: impact_outcome_t
   use kinetostatics_point_impact, only: point_gap, point_impact, gap_root
+  use rider_vehicle_roll, only: stop_coordinate
   use rider_flight, only: ride_flights_t, rider_landing_t, add_landing, close_speed, landing_record, &
     quick_landings_exceeded, quick_flight, count_switch
   use rider_vehicle, only: vehicle_t, build_vehicle_model, vehicle_ride_figures
-  use rider_vehicle_layout, only: vehicle_contact_names, vehicle_units, open_words, N_FULL, full_names
+  use rider_vehicle_layout, only: vehicle_contact_names, vehicle_units, open_words, N_FULL, full_names, LIFT, ROLL
   use water_field, only: water_field_t
   implicit none (type, external)
   private
@@ -87,6 +93,7 @@ module rider_vehicle_flight
   type, extends(mechanism_ode_t) :: vehicle_flight_ode_t
     type(mechanism_t) :: builds(0:3)
     type(mechanism_t) :: yaw_builds(0:1)    ! masks 0, 1 with the front's closure solving the heading
+    type(mechanism_t) :: held_air           ! mask 3 with the roll held: a landing's impact from the air
     integer :: open_mask = 0
     integer :: solved = SOLVE_PITCH         ! the build in use's (masks 0, 1)
     integer :: solve_switches = 0           ! how often the solved coordinate changed
@@ -135,13 +142,15 @@ contains
     real(wp), allocatable :: q_open(:), qd_open(:)
     integer :: mask, k
     if (.not. status%ok()) return
+    call build_vehicle_model(v, d, surface, sys%held_air, q_open, qd_open, status, water, lift=.true., &
+                             open=[.true., .true.])
     do mask = 3, 0, -1
       if (mask == 0) then
         call build_vehicle_model(v, d, surface, sys%builds(0), q0, qd0, status, water, lift=.true., &
                                  open=[.false., .false.])
       else
         call build_vehicle_model(v, d, surface, sys%builds(mask), q_open, qd_open, status, water, lift=.true., &
-                                 open=[btest(mask, 0), btest(mask, 1)])
+                                 open=[btest(mask, 0), btest(mask, 1)], free_roll=mask == 3)
       end if
       if (mask < 2) call build_vehicle_model(v, d, surface, sys%yaw_builds(mask), q_open, qd_open, status, water, &
                                              lift=.true., open=[btest(mask, 0), .false.], solve_yaw=.true.)
@@ -426,7 +435,7 @@ contains
     type(vehicle_flight_ode_t), intent(inout) :: self
     real(wp), allocatable, intent(inout) :: y(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: residual, t, closing(3), closing_energy
+    real(wp) :: residual, t, closing(3), closing_energy, roll_energy
     real(wp), allocatable :: y_open(:), full(:)
     type(impact_outcome_t) :: impact
     type(rider_landing_t) :: landing
@@ -459,11 +468,22 @@ contains
       if (status%ok()) call press_or_open(self, t, y, status)
     case (SWITCH_LANDING)
       y_open = self%switch_y
+      roll_energy = 0
+      if (before == 3) then
+        ! the roll's rate stops, then the contact's impact with the roll held
+        call stop_coordinate(self%mechanism, self%work, y_open, findloc(self%mechanism%q, self%full(ROLL), dim=1), &
+                             roll_energy, status)
+        if (.not. status%ok()) return
+        full = full_state(self, y_open)
+        call use_build(self, before, full, y_open, status, held=.true.)
+        if (.not. status%ok()) return
+      end if
       call point_impact(self%mechanism, self%work, self%point(c), self%foot(c), trim(vehicle_contact_names(c))// &
                         ' contact', y_open, self%vehicle%landing, close_speed, impact, closed, closing, &
                         closing_energy, status)
       if (.not. status%ok()) return
-      landing = landing_record(t, c, where_foot(self, c), impact, closing, closing_energy, closed, self%gravity)
+      landing = landing_record(t, c, where_foot(self, c), impact, closing, closing_energy + roll_energy, closed, &
+                               self%gravity)
       if (quick_landings_exceeded(self%quick_landings, t - self%take_off_time(c))) then
         call set_status(status, STATUS_DOMAIN, 'the '//trim(vehicle_contact_names(c))//' contact neither stays on '// &
                         'the slide nor leaves it (landing after landing within '//format_short(quick_flight)//' s)')
@@ -477,6 +497,10 @@ contains
         if (.not. status%ok()) return
         ! the landing one pulls: it did not stay on, it flies on from the slide
         landing%closed = .not. btest(self%open_mask, c - 1)
+      else if (before == 3) then
+        ! the whole vehicle flies on, its roll free again from rest
+        call use_build(self, before, full, y, status)
+        if (.not. status%ok()) return
       else
         y = y_open
       end if
@@ -543,14 +567,18 @@ contains
   !> With the front on, its closure solves `solve` if given; else the
   !> coordinate it solved, unless that has degraded (solve_ratio), or, after
   !> a flight of the front, the better of the two (solve_columns at the
-  !> positions in the work now, the pose of `full`).
-  subroutine use_build(self, mask, full, y, status, solve)
+  !> positions in the work now, the pose of `full`). Both open: the free
+  !> roll's build, or with `held` the one holding the roll (held_air). A
+  !> held coordinate's rate is 0 (the roll's stopped before a landing, a
+  !> closed rear's lift's by its closing).
+  subroutine use_build(self, mask, full, y, status, solve, held)
     type(vehicle_flight_ode_t), intent(inout) :: self
     integer, intent(in) :: mask
     real(wp), intent(in) :: full(:)
     real(wp), allocatable, intent(inout) :: y(:)
     type(status_t), intent(inout) :: status
     integer, intent(in), optional :: solve
+    logical, intent(in), optional :: held
     real(wp), allocatable :: values(:), q(:), qd(:)
     real(wp) :: c(2)
     logical, allocatable :: active(:)
@@ -572,6 +600,8 @@ contains
       else
         self%mechanism = self%builds(mask)
       end if
+    else if (present(held)) then
+      self%mechanism = self%held_air
     else
       self%mechanism = self%builds(mask)
     end if
@@ -581,8 +611,14 @@ contains
     do k = 1, size(active)
       self%work%laws(k)%law%active = active(k)
     end do
-    ! a closed rear holds its lift at 0 (its landing left it there, to the root's rounding)
-    if (.not. btest(mask, 0)) self%work%scalars(self%full(N_FULL))%q = 0
+    ! a closed rear holds its lift at 0 (its landing left it there, to the
+    ! root's rounding); a held scalar is at rest
+    if (.not. btest(mask, 0)) self%work%scalars(self%full(LIFT))%q = 0
+    do k = LIFT, ROLL
+      if (any(self%mechanism%q == self%full(k))) cycle
+      self%work%scalars(self%full(k))%qd = 0
+      self%work%scalars(self%full(k))%qdd = 0
+    end do
     self%work%warm = .false.
     self%work%converged = .false.
     if (allocated(self%charts)) deallocate (self%charts, self%chart_angle)
@@ -602,7 +638,7 @@ contains
   end subroutine use_build
 
   !> The stretch's records (sys%series, in its build's layout) in the full
-  !> layout: q, q', q'' of u, v, phi, pitch, rear_lift at every record,
+  !> layout: q, q', q'' of u, v, phi, pitch, rear_lift, roll at every record,
   !> whichever of them the build integrates, solves (its closure at the
   !> record's coordinates, started from the record's dependents; the rates
   !> from the record's) or holds (a closed rear's lift, 0). The dependents

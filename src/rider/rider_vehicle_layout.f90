@@ -5,12 +5,14 @@ module rider_vehicle_layout
   use kinetostatics_recorder, only: mechanism_series_t
   implicit none (type, external)
   private
-  public :: vehicle_contact_names, vehicle_units, open_words, N_FULL, full_names
+  public :: vehicle_contact_names, vehicle_units, open_words, N_FULL, full_names, LIFT, ROLL
 
   !> the contacts, bit k-1 of a build's open mask
   character(len=*), parameter :: vehicle_contact_names(2) = [character(len=5) :: 'rear', 'front']
-  integer, parameter :: N_FULL = 5   ! u, v, phi, pitch, rear_lift
-  character(len=*), parameter :: full_names(N_FULL) = [character(len=9) :: 'u', 'v', 'phi', 'pitch', 'rear_lift']
+  integer, parameter :: N_FULL = 6   ! u, v, phi, pitch, rear_lift, roll
+  integer, parameter :: LIFT = 5, ROLL = 6
+  character(len=*), parameter :: full_names(N_FULL) = [character(len=9) :: 'u', 'v', 'phi', 'pitch', 'rear_lift', &
+                                                       'roll']
 
 contains
 

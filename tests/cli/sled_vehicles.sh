@@ -385,10 +385,10 @@ PY
 # normal lies across the rear's. Now the closure solves for the heading
 # there (a switch at t = 4.1247 s, both contacts still on), the rear lifts
 # off at 4.2058 s as without may_fly and the ring swings on its front to
-# the end (4.25 s: the whole ring's flight after 4.28 s is the 5-coordinate
-# model's, docs/vehicles.md "Flight", and not checked here); at every switch
-# (two records at one time) the coordinates u, v, phi, pitch, rear_lift and
-# their rates are continuous (1e-9); the energy balance holds (1e-6)
+# the end (4.25 s: what follows the front's lift-off at 4.28 s is not
+# checked here, docs/vehicles.md "Flight"); at every switch (two records at
+# one time) the coordinates u, v, phi, pitch, rear_lift, roll and their
+# rates are continuous (1e-9); the energy balance holds (1e-6)
 sed -e "s|duration = 30.0|duration = 4.25|" -e "s|du0 = 1.0 /|du0 = 1.0, may_fly = .true., landing_restitution = 0.0 /|" \
   "$work/bowl_ring.nml" >"$work/bowl_ring_fly.nml"
 (cd "$work" && "$slidesim" -o bowl_ring_fly.h5 --summary-json bowl_ring_fly.json bowl_ring_fly.nml >bowl_ring_fly.out 2>bowl_ring_fly.err); got=$?
@@ -411,7 +411,7 @@ with h5py.File(sys.argv[1], "r") as f:
     opened = f["/sled/vehicle/open"][:]
     c = f["/sled/coordinates"]
     names = sorted(c.keys())
-    if names != ["phi", "pitch", "rear_lift", "u", "v"]:
+    if names != ["phi", "pitch", "rear_lift", "roll", "u", "v"]:
         bad.append(f"the coordinates {names}, not the full layout")
     lift_off = t[np.argmax(opened != 0)]
     if abs(lift_off - 4.205761) > 1e-3 or np.any(opened[t > lift_off] != 1):

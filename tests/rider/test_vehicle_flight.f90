@@ -32,6 +32,13 @@
 !>               tube at poses with its rear up one wall (1e-7); in a
 !>               round tube the pitch's column stays the larger (the bowl,
 !>               where it does not: tests/cli/sled_vehicles.sh).
+!>   free        a ring with both contacts open in a round tube, thrown
+!>               up, turning about all three axes (the roll too): a free
+!>               rigid body in six coordinates: its centre of mass flies
+!>               the projectile's parabola, its angular momentum about the
+!>               centre of mass stays (1e-9 of it) and its energy (1e-9);
+!>               (the five-coordinate flight before held the roll to the
+!>               slide by a couple: no free body, the test not possible).
 !>   solved      the same ring, both contacts on, driven 0.4 s in the
 !>               build whose closure solves the pitch and in the one that
 !>               solves the heading: the same motion (the body's pose to
@@ -67,21 +74,28 @@ program test_vehicle_flight
   call jump()
   call columns()
   call solved()
+  call free()
   call finish_tests('test_vehicle_flight')
 
 contains
 
   !> y of a vehicle `sys` (its builds made) put in the air: both contacts
-  !> open, q = [u, v, phi, pitch, rear_lift], at rest.
-  function in_the_air(sys, q) result(y)
+  !> open, q = [u, v, phi, pitch, rear_lift, roll], at rest (or with the
+  !> rates qd).
+  function in_the_air(sys, q, qd) result(y)
     type(vehicle_flight_ode_t), intent(inout) :: sys
-    real(wp), intent(in) :: q(5)
+    real(wp), intent(in) :: q(6)
+    real(wp), intent(in), optional :: qd(6)
     real(wp), allocatable :: y(:)
     sys%mechanism = sys%builds(3)
     call sys%mechanism%prepare_workspace(sys%work)
     sys%open_mask = 3
     sys%opened = .true.
-    y = sys%initial_state(q, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp])
+    if (present(qd)) then
+      y = sys%initial_state(q, qd)
+    else
+      y = sys%initial_state(q, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp])
+    end if
   end function in_the_air
 
   subroutine drop(e)
@@ -109,7 +123,7 @@ contains
     call build_vehicle_flight(v, d, plane, sys, q0, qd0, st)
     call check(st%ok(), label//': the builds: '//st%text())
     if (.not. st%ok()) return
-    y = in_the_air(sys, [0.0_wp, 0.0_wp, 0.0_wp, pitch0, h0])
+    y = in_the_air(sys, [0.0_wp, 0.0_wp, 0.0_wp, pitch0, h0, 0.0_wp])
     t_land = sqrt(2*h0/g)
     options%ode = ode_options_t(rtol=1e-10_wp, atol=1e-12_wp, max_step=0.05_wp)
     options%t_end = merge(t_land + 0.02_wp, 1.5_wp, e > 0)
@@ -300,17 +314,18 @@ contains
     type(status_t) :: st
     real(wp), allocatable :: q0(:), qd0(:)
     real(wp), parameter :: h = 1e-6_wp, half_pi = 1.5707963267948966_wp
-    real(wp) :: poses(5, 4), c(2), fd(2), q(5), gap(2), worst
+    real(wp) :: poses(6, 4), c(2), fd(2), q(6), gap(2), worst
     integer :: i, k, j
     call ring_in_tube(sys, slide, q0, qd0, st)
     call check(st%ok(), 'columns: the builds: '//st%text())
     if (.not. st%ok()) return
-    ! [u, v, phi, pitch, rear_lift] of the open build: the rear up the
-    ! wall (v), turned, pitched, lifted; the last with the rear 80 deg up
-    poses = reshape([3.0_wp, half_pi + 0.4_wp, 0.3_wp, 0.1_wp, 0.05_wp, &
-                     3.0_wp, half_pi - 0.7_wp, -0.5_wp, 0.3_wp, 0.1_wp, &
-                     3.0_wp, half_pi + 1.0_wp, 0.8_wp, 0.6_wp, 0.0_wp, &
-                     3.0_wp, half_pi + 1.4_wp, 0.0_wp, 0.8_wp, 0.0_wp], [5, 4])
+    ! [u, v, phi, pitch, rear_lift, roll] of the open build: the rear up
+    ! the wall (v), turned, pitched, lifted, rolled (the roll moves neither
+    ! contact point); the last with the rear 80 deg up
+    poses = reshape([3.0_wp, half_pi + 0.4_wp, 0.3_wp, 0.1_wp, 0.05_wp, 0.2_wp, &
+                     3.0_wp, half_pi - 0.7_wp, -0.5_wp, 0.3_wp, 0.1_wp, -0.4_wp, &
+                     3.0_wp, half_pi + 1.0_wp, 0.8_wp, 0.6_wp, 0.0_wp, 0.0_wp, &
+                     3.0_wp, half_pi + 1.4_wp, 0.0_wp, 0.8_wp, 0.0_wp, 1.0_wp], [6, 4])
     sys%mechanism = sys%builds(3)
     call sys%mechanism%prepare_workspace(sys%work)
     worst = 0
@@ -400,6 +415,65 @@ contains
     call check(maxval(abs(by_pitch%series%normal(:, n1) - by_yaw%series%normal(:, n2))) <= &
                1e-6_wp*maxval(abs(by_pitch%series%normal(:, n1))), 'solved: the same normal forces')
   end subroutine solved
+
+  !> A ring thrown up in the round tube of ring_in_tube with both contacts
+  !> open, turning about its heading, pitch and roll axes at once, for
+  !> 0.25 s (no landing: its rear 0.3 m up, rising at 1.5 m/s): the free
+  !> rigid body. Its centre of mass c(t) = c0 + v0 t + g t^2/2, its angular
+  !> momentum about c, R I R^T w, constant, its energy constant.
+  subroutine free()
+    type(vehicle_flight_ode_t), target :: sys
+    class(surface_t), allocatable :: slide
+    type(vehicle_body_t) :: vb
+    type(status_t) :: st
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    real(wp), allocatable :: q0(:), qd0(:), y(:)
+    real(wp) :: c0(3), v0(3), l0(3), l(3), c(3), tau, worst_r, worst_l, worst_e, e0, rot(3, 3), roll_span(2)
+    integer :: i
+    call ring_in_tube(sys, slide, q0, qd0, st)
+    call check(st%ok(), 'free: the builds: '//st%text())
+    if (.not. st%ok()) return
+    call vehicle_body(sys%vehicle, vb, st)
+    y = in_the_air(sys, [3.0_wp, 1.5707963267948966_wp + 0.1_wp, 0.2_wp, -0.1_wp, 0.3_wp, 0.1_wp], &
+                   [1.0_wp, 0.1_wp, 0.8_wp, -0.5_wp, 1.5_wp, 3.0_wp])
+    options%ode = ode_options_t(rtol=1e-12_wp, atol=1e-12_wp, max_step=0.01_wp)
+    options%t_end = 0.25_wp
+    options%output_step = 0.01_wp
+    options%progress_seconds = 0
+    call drive_vehicle(sys, y, options, result, st)
+    call check(st%ok(), 'free: runs: '//st%text())
+    if (.not. st%ok()) return
+    associate (s => sys%series)
+      call check(sys%flights%landings == 0 .and. all(sys%open_record == 3) .and. s%n >= 25, &
+                 'free: in the air all the way, no landing')
+      c0 = centre(s, vb%body%com, 1)
+      v0 = s%body_v(:, 1, 1) + cross(s%body_omega(:, 1, 1), c0 - s%body_r(:, 1, 1))
+      rot = s%body_rot(:, :, 1, 1)
+      l0 = matmul(rot, matmul(vb%body%inertia, matmul(transpose(rot), s%body_omega(:, 1, 1))))
+      e0 = s%kinetic(1) + s%potential(1)
+      worst_r = 0
+      worst_l = 0
+      worst_e = 0
+      roll_span = [huge(1.0_wp), -huge(1.0_wp)]
+      do i = 1, s%n
+        tau = s%time(i) - s%time(1)
+        c = centre(s, vb%body%com, i)
+        worst_r = max(worst_r, norm2(c - (c0 + v0*tau + [0.0_wp, 0.0_wp, -g]*tau**2/2)))
+        rot = s%body_rot(:, :, 1, i)
+        l = matmul(rot, matmul(vb%body%inertia, matmul(transpose(rot), s%body_omega(:, 1, i))))
+        worst_l = max(worst_l, norm2(l - l0)/norm2(l0))
+        worst_e = max(worst_e, abs(s%kinetic(i) + s%potential(i) - e0)/s%kinetic(1))
+        roll_span = [min(roll_span(1), s%q(6, i)), max(roll_span(2), s%q(6, i))]
+      end do
+      print '(a, i0, a, 3es10.2, a, 2f8.4)', 'free: ', s%n, ' records; parabola (m), angular momentum, energy '// &
+        '(relative) off by ', worst_r, worst_l, worst_e, '; roll from, to (rad) ', roll_span
+      call check(roll_span(2) - roll_span(1) > 0.3_wp, 'free: the roll turns')
+      call check(worst_r <= 1e-9_wp, 'free: the centre of mass a projectile')
+      call check(worst_l <= 1e-9_wp, 'free: the angular momentum about the centre of mass conserved')
+      call check(worst_e <= 1e-9_wp, 'free: the energy conserved')
+    end associate
+  end subroutine free
 
   !> The vehicle's centre of mass at record i of s (the bar frame's pose;
   !> com: its place in the bar frame).
