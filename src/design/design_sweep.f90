@@ -28,7 +28,7 @@ module design_sweep
   implicit none (type, external)
   private
   public :: sweep_description_t, sweep_result_t, run_sweep, water_groups, ride_description, new_sweep_result, &
-    rides_of_rank, swept_values_t, sweep_row_count, sweep_rows
+    rides_of_rank, swept_values_t, sweep_row_count, sweep_rows, range_values
   public :: N_SWEPT, swept_names, swept_units, swept_descriptions, V_SEX, V_MASS, V_HEIGHT, V_MU, V_U0, V_V0, &
     V_HEADING, V_SPEED, V_FLOW_RATE, V_F1, V_F2, V_F3
   public :: N_FIGURES, figure_names, figure_unit, figure_descriptions, F_FELT_MAGNITUDE_MAX
@@ -126,6 +126,17 @@ module design_sweep
   end type sweep_result_t
 
 contains
+
+  !> The values of a swept range (`NAME_range = first, last, count`): count
+  !> values evenly from first to last, both ends exactly as written.
+  pure function range_values(first, last, count) result(x)
+    real(wp), intent(in) :: first, last
+    integer, intent(in) :: count
+    real(wp) :: x(count)
+    integer :: i
+    x = [(first + (last - first)*real(i - 1, wp)/(count - 1), i=1, count)]
+    x(count) = last
+  end function range_values
 
   !> How many rides sweep_rows makes of `lists` (a real: the product can
   !> overflow an integer): the product of the crossed variables' counts, the

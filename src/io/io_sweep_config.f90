@@ -12,7 +12,8 @@ module io_sweep_config
   use base_status, only: status_t
   use io_input, only: input_text_t, group_reader_t, open_group, bounds_t, in_range, format_real
   use rider_body, only: SEX_MALE, SEX_FEMALE
-  use design_sweep, only: N_SWEPT, swept_names, V_SEX, swept_values_t, sweep_row_count, sweep_rows
+  use design_sweep, only: N_SWEPT, swept_names, V_SEX, swept_values_t, sweep_row_count, sweep_rows, &
+    range_values
   implicit none (type, external)
   private
   public :: sweep_config_t, read_sweep_config, max_rides, max_values, open_sweep_group, swept_given_name
@@ -155,7 +156,7 @@ contains
       character(len=:), allocatable :: name
       real(wp) :: range(3)
       real(wp), allocatable :: x(:)
-      integer :: i, n
+      integer :: i
       name = trim(swept_names(k))
       if (r%has(name) .and. r%has(name//'_range')) then
         call r%invalid(name//'_range', r%written(name//'_range'), 'give '//name//' either as a list or as a '// &
@@ -184,10 +185,7 @@ contains
           return
         end if
       end do
-      n = nint(range(3))
-      ! both ends exactly as written; the others evenly between
-      list%x = [(range(1) + (range(2) - range(1))*real(i - 1, wp)/(n - 1), i=1, n)]
-      list%x(n) = range(2)
+      list%x = range_values(range(1), range(2), nint(range(3)))
     end subroutine read_numbers
   end subroutine read_sweep_config
 

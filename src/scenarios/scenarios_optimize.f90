@@ -6,19 +6,23 @@
 !> is &optimize's points, or element parameters of &slide_elements
 !> (&design_elements), snapped to the standard parts of &catalogue
 !> (design_catalogue; scenarios_optimize_parts writes and reports them).
+!> The optimisation itself, its end's rides and the catalogue's design are
+!> the library's job (design_optimization_job's run_optimization); here the
+!> input is read, the start design checked, the ranks started, and the job
+!> written and reported.
 module scenarios_optimize
   use base_kinds, only: wp
   use base_constants, only: pi
-  use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT, STATUS_NOT_CONVERGED
+  use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT
   use base_text, only: format_integer, format_short, format_with
   use base_log, only: log_info
   use design_cuboid_ride, only: cuboid_ride_t
   use design_geometry_optimization, only: optimization_setup_t, optimization_result_t, design_evaluation_t, &
-    evaluate_design, optimize_slide, design_points, build_design_slide, OUTCOME_OPTIMUM, OUTCOME_FAILED, &
-    outcome_names
+    evaluate_design, design_points, build_design_slide, OUTCOME_OPTIMUM, OUTCOME_FAILED, outcome_names
   use geometry_tube, only: tube_surface_t
   use design_slide_design, only: start_x
-  use design_catalogue, only: catalogue_t, catalogue_result_t, choose_from_catalogue
+  use design_catalogue, only: catalogue_t, catalogue_result_t
+  use design_optimization_job, only: optimization_job_t, run_optimization
   use io_element_design_config, only: read_element_design, refuse_point_design
   use scenarios_optimize_parts, only: write_element_variables, write_catalogue, report_element_design
   use geometry_curve, only: curve_point_t
@@ -52,14 +56,12 @@ contains
     type(run_config_t), intent(in) :: run
     type(status_t), intent(inout) :: status
     type(optimization_setup_t) :: setup
-    type(optimization_result_t) :: result
-    type(design_evaluation_t) :: before, after
+    type(optimization_job_t) :: job
+    type(design_evaluation_t) :: before
     type(solver_config_t) :: solver
     type(result_file_t) :: file
     type(status_t) :: run_status, write_status
     type(catalogue_t) :: catalogue
-    type(catalogue_result_t) :: chosen
-    real(wp) :: cpu0, cpu1
     logical :: complete, ended, with_catalogue, started, go
     character(len=:), allocatable :: message
 
@@ -103,38 +105,29 @@ contains
                     format_integer(size(setup%start_angles))//' rides per design'//message)
       setup%log => log_info
     end if
-    call cpu_time(cpu0)
-    call optimize_slide(setup, result, run_status)
-    call cpu_time(cpu1)
-    if (run_status%ok()) call evaluate_design(setup, result%x, after, run_status, keep_series=.true.)
-    ended = run_status%ok()   ! an end point, written and reported whatever its outcome
-    ! the end snapped to the catalogue and ridden again
-    if (ended .and. with_catalogue) then
-      if (setup%rank == 0) call log_info('optimize: the end snapped to the catalogue, its neighbourhood ridden')
-      call choose_from_catalogue(setup, catalogue, result%x, chosen, run_status)
-      ended = run_status%ok()
+    if (with_catalogue) then
+      call run_optimization(setup, job, run_status, catalogue)
+    else
+      call run_optimization(setup, job, run_status)
     end if
     call finish_ranks(started)
     if (setup%rank /= 0) return   ! the same numbers as rank 0's, written by it
-    ! an end that is not a minimum or violates a constraint is no optimum: exit 2, file incomplete
-    if (ended .and. result%outcome /= OUTCOME_OPTIMUM) &
-      call set_status(run_status, STATUS_NOT_CONVERGED, 'optimize: '//result%verdict)
-    if (ended .and. with_catalogue .and. run_status%ok()) then
-      if (.not. chosen%feasible) call set_status(run_status, STATUS_NOT_CONVERGED, 'optimize: catalogue: '// &
-                                                 chosen%verdict)
-    end if
-    call write_results(file, input, run, setup, result, before, after, ended, cpu1 - cpu0, write_status)
-    call write_population(file, setup, before, after, ended, write_status)
+    ! an end that is not a minimum or violates a constraint is no optimum (or
+    ! a catalogue without a feasible design): exit 2, file incomplete
+    ended = job%ended
+    call write_results(file, input, run, setup, job%result, before, job%after, ended, job%cpu_seconds, &
+                       write_status)
+    call write_population(file, setup, before, job%after, ended, write_status)
     if (setup%design%from_elements .and. ended .and. with_catalogue) then
-      call write_element_variables(file, setup%design, write_status, result%x, catalogue, chosen)
-      if (chosen%ridden) then
-        call write_evaluation(file, '/optimize/chosen/', chosen%chosen, write_status)
-        call scale_evaluation(file, '/optimize/chosen/', size(chosen%chosen%rides), write_status)
+      call write_element_variables(file, setup%design, write_status, job%result%x, catalogue, job%chosen)
+      if (job%chosen%ridden) then
+        call write_evaluation(file, '/optimize/chosen/', job%chosen%chosen, write_status)
+        call scale_evaluation(file, '/optimize/chosen/', size(job%chosen%chosen%rides), write_status)
       end if
-      call write_centerline(file, '/optimize/centerline_catalogue', setup, chosen%x, write_status)
-      call write_catalogue(file, chosen, write_status)
+      call write_centerline(file, '/optimize/centerline_catalogue', setup, job%chosen%x, write_status)
+      call write_catalogue(file, job%chosen, write_status)
     else if (setup%design%from_elements .and. ended) then
-      call write_element_variables(file, setup%design, write_status, result%x)
+      call write_element_variables(file, setup%design, write_status, job%result%x)
     else if (setup%design%from_elements) then
       call write_element_variables(file, setup%design, write_status)
     end if
@@ -145,13 +138,14 @@ contains
     complete = run_status%ok() .and. write_status%ok()
     message = run_message('ok', run_status, write_status)
     if (write_status%ok()) call write_xdmf(file, size(setup%start_angles), ended, &
-                                           ended .and. with_catalogue .and. chosen%ridden, write_status)
+                                           ended .and. with_catalogue .and. job%chosen%ridden, write_status)
     call file%finish(complete, message, write_status)
     complete = complete .and. write_status%ok()
     if (ended .and. with_catalogue) then
-      call report(setup, result, cpu1 - cpu0, file%final_path(), run, complete, message, write_status, chosen)
+      call report(setup, job%result, job%cpu_seconds, file%final_path(), run, complete, message, write_status, &
+                  job%chosen)
     else if (ended) then
-      call report(setup, result, cpu1 - cpu0, file%final_path(), run, complete, message, write_status)
+      call report(setup, job%result, job%cpu_seconds, file%final_path(), run, complete, message, write_status)
     end if
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
   end subroutine run_optimize

@@ -5,7 +5,8 @@
 !> members) and the catalogue of standard parts (design_catalogue's allowed
 !> values) filled here in code from the values the input files give (the
 !> defaults they do not give: the types' own, which are the reader's), then
-!> optimize_slide and, with a catalogue, choose_from_catalogue: the calls the
+!> run by design_optimization_job's run_optimization (optimize_slide, the
+!> end's rides and, with a catalogue, choose_from_catalogue), the call the
 !> `optimize` scenario makes. No io module is linked (tests/CMakeLists.txt
 !> links slidesim_design only).
 !>
@@ -31,9 +32,9 @@ program library_optimize
   use design_robust_cost, only: COST_WORST
   use design_slide_design, only: table_4_12_design, start_x, PARAMETER_RADIUS, PARAMETER_SLOPE
   use design_geometry_optimization, only: optimization_setup_t, optimization_result_t, thesis_start_angles, &
-    optimize_slide, outcome_names, CONSTRAINT_NONE, CONSTRAINT_PENALTY
-  use design_catalogue, only: catalogue_t, catalogue_result_t, choose_from_catalogue, allowed_in_list, &
-    allowed_by_step, part_text
+    outcome_names, CONSTRAINT_NONE, CONSTRAINT_PENALTY
+  use design_catalogue, only: catalogue_t, allowed_in_list, allowed_by_step, part_text
+  use design_optimization_job, only: optimization_job_t, run_optimization
   use shipped_slides, only: element
   implicit none (type, external)
   real(wp), parameter :: degrees = 45/atan(1.0_wp)   ! io_summary's degrees per radian
@@ -55,10 +56,10 @@ contains
     real(wp), intent(in) :: ftol, xtol
     integer, intent(in) :: constraint, threads
     type(optimization_setup_t) :: setup
-    type(optimization_result_t) :: result
+    type(optimization_job_t) :: job
     call thesis_setup(setup, ftol, xtol, constraint, threads)
-    call optimize_and_print(input, setup, result)
-    call print_points(input, setup, result)
+    call optimize_and_print(input, setup, job)
+    call print_points(input, setup, job%result)
   end subroutine table_4_12
 
   !> The setup of table 4.12 as the &optimize reader fills it.
@@ -89,7 +90,7 @@ contains
   subroutine robust()
     character(len=*), parameter :: input = 'inputs/design/optimize_robust.nml'
     type(optimization_setup_t) :: setup
-    type(optimization_result_t) :: result
+    type(optimization_job_t) :: job
     type(swept_values_t) :: lists(N_SWEPT)
     real(wp) :: base(N_SWEPT)
     logical :: together(N_SWEPT)
@@ -108,11 +109,11 @@ contains
     together = .false.
     together([V_MASS, V_HEIGHT]) = .true.
     call set_population(setup, sweep_rows(lists, together), heading_swept=.true.)
-    call optimize_and_print(input, setup, result)
-    call print_points(input, setup, result)
+    call optimize_and_print(input, setup, job)
+    call print_points(input, setup, job%result)
     call put(input, 'population_size', real(size(setup%members), wp))
-    call put(input, 'robust_acceleration_start', result%before%robust_acceleration)
-    call put(input, 'robust_acceleration', result%after%robust_acceleration)
+    call put(input, 'robust_acceleration_start', job%result%before%robust_acceleration)
+    call put(input, 'robust_acceleration', job%result%after%robust_acceleration)
     do k = 1, size(setup%members)
       associate (m => setup%members(k), row => 'members.'//format_integer(k)//'.')
         call put(input, row//'member', real(k, wp))
@@ -121,8 +122,8 @@ contains
         call put(input, row//'speed0', m%speed)
         call put(input, row//'wall_angle', (m%v - pi/2)*degrees)
         call put(input, row//'heading', setup%start_angles(k)*degrees)
-        call put(input, row//'max_a_end', result%after%rides(k)%max_acceleration)
-        call put(input, row//'lever_arm_end', min(result%after%rides(k)%max_lever_arm, 1e30_wp))
+        call put(input, row//'max_a_end', job%result%after%rides(k)%max_acceleration)
+        call put(input, row//'lever_arm_end', min(job%result%after%rides(k)%max_lever_arm, 1e30_wp))
       end associate
     end do
   end subroutine robust
@@ -136,11 +137,9 @@ contains
   subroutine standard_parts()
     character(len=*), parameter :: input = 'inputs/design/optimize_standard_parts.nml'
     type(optimization_setup_t) :: setup
-    type(optimization_result_t) :: result
+    type(optimization_job_t) :: job
     type(catalogue_t) :: catalogue
-    type(catalogue_result_t) :: chosen
     type(slide_elements_description_t) :: chain
-    type(status_t) :: status
     real(wp), allocatable :: x0(:), values(:)
     real(wp), parameter :: radii(5) = [3.0_wp, 4.0_wp, 5.0_wp, 6.0_wp, 8.0_wp]
     real(wp) :: scale
@@ -175,28 +174,26 @@ contains
       catalogue%allowed(k)%values = allowed_in_list(radii, setup%design%lower(k), setup%design%upper(k))
     end do
     catalogue%allowed(3)%values = allowed_by_step(2.0_wp, setup%design%lower(3), setup%design%upper(3))
-    call optimize_and_print(input, setup, result)
-    call choose_from_catalogue(setup, catalogue, result%x, chosen, status)
-    call stop_unless_ok(input, 'the catalogue', status)
-    call put(input, 'acceleration_cost', result%after%acceleration_cost)
+    call optimize_and_print(input, setup, job, catalogue)
+    call put(input, 'acceleration_cost', job%result%after%acceleration_cost)
     ! each variable (start, optimum, nearest, catalogue) in SI: the slope in rad
     x0 = start_x(setup%design)
     do k = 1, 3
-      values = [x0(k), result%x(k), chosen%x_nearest(k), chosen%x(k)]
+      values = [x0(k), job%result%x(k), job%chosen%x_nearest(k), job%chosen%x(k)]
       scale = merge(degrees, 1.0_wp, setup%design%parameter(k) == PARAMETER_SLOPE)
       do j = 1, 4
         call put(input, 'variable_'//format_integer(k)//'.'//format_integer(j), values(j)/scale)
       end do
     end do
-    call text(input, 'catalogue', chosen%verdict)
-    call put(input, 'nearest_acceleration_cost', chosen%acceleration_cost(1))
-    call put(input, 'catalogue_acceleration_cost', chosen%chosen%acceleration_cost)
-    call put(input, 'catalogue_max_lever_arm', chosen%chosen%max_lever_arm)
-    call put(input, 'parts', real(size(chosen%parts), wp))
-    call put(input, 'elements', real(sum(chosen%parts%count), wp))
+    call text(input, 'catalogue', job%chosen%verdict)
+    call put(input, 'nearest_acceleration_cost', job%chosen%acceleration_cost(1))
+    call put(input, 'catalogue_acceleration_cost', job%chosen%chosen%acceleration_cost)
+    call put(input, 'catalogue_max_lever_arm', job%chosen%chosen%max_lever_arm)
+    call put(input, 'parts', real(size(job%chosen%parts), wp))
+    call put(input, 'elements', real(sum(job%chosen%parts%count), wp))
     ! the parts list: '2 x straight, length 3 m, slope 8 deg (elements 1, 5)'
-    do k = 1, size(chosen%parts)
-      associate (part => chosen%parts(k))
+    do k = 1, size(job%chosen%parts)
+      associate (part => job%chosen%parts(k))
         line = format_integer(part%count)//' x '//part_text(part%element)//' (element'// &
                trim(merge('s', ' ', part%count > 1))//' '
         do j = 1, size(part%elements)
@@ -208,34 +205,37 @@ contains
     end do
   end subroutine standard_parts
 
-  !> optimize_slide on `setup` and the summary's numbers of every
-  !> optimisation: the outcome, the costs, the lever arms, the designs
-  !> evaluated, each ride's largest acceleration and lever arm.
-  subroutine optimize_and_print(input, setup, result)
+  !> The job of `setup` (with `catalogue`: snapped to it) and the summary's
+  !> numbers of every optimisation: the outcome, the costs, the lever arms,
+  !> the designs evaluated, each ride's largest acceleration and lever arm.
+  subroutine optimize_and_print(input, setup, job, catalogue)
     character(len=*), intent(in) :: input
     type(optimization_setup_t), intent(in) :: setup
-    type(optimization_result_t), intent(out) :: result
+    type(optimization_job_t), intent(out) :: job
+    type(catalogue_t), intent(in), optional :: catalogue
     type(status_t) :: status
     integer :: k
-    call optimize_slide(setup, result, status)
+    call run_optimization(setup, job, status, catalogue)
     call stop_unless_ok(input, 'the optimisation', status)
-    call text(input, 'outcome', trim(outcome_names(result%outcome)))
-    call put(input, 'restarts', real(result%restarts, wp))
-    call put(input, 'cost_start', result%cost_before)
-    call put(input, 'cost', result%cost_after)
-    call lever(input, 'max_lever_arm_start', result%before%max_lever_arm)
-    call lever(input, 'max_lever_arm', result%after%max_lever_arm)
-    call put(input, 'lever_limit', setup%lever_limit)
-    call put(input, 'evaluations', real(result%evaluations, wp))
-    do k = 1, size(setup%start_angles)
-      associate (row => 'rides.'//format_integer(k)//'.')
-        call put(input, row//'start_angle', setup%start_angles(k)*degrees)
-        call put(input, row//'max_a_start', result%before%rides(k)%max_acceleration)
-        call put(input, row//'max_a_optimum', result%after%rides(k)%max_acceleration)
-        call put(input, row//'lever_arm_start', min(result%before%rides(k)%max_lever_arm, 1e30_wp))
-        call put(input, row//'lever_arm_optimum', min(result%after%rides(k)%max_lever_arm, 1e30_wp))
-      end associate
-    end do
+    associate (result => job%result)
+      call text(input, 'outcome', trim(outcome_names(result%outcome)))
+      call put(input, 'restarts', real(result%restarts, wp))
+      call put(input, 'cost_start', result%cost_before)
+      call put(input, 'cost', result%cost_after)
+      call lever(input, 'max_lever_arm_start', result%before%max_lever_arm)
+      call lever(input, 'max_lever_arm', result%after%max_lever_arm)
+      call put(input, 'lever_limit', setup%lever_limit)
+      call put(input, 'evaluations', real(result%evaluations, wp))
+      do k = 1, size(setup%start_angles)
+        associate (row => 'rides.'//format_integer(k)//'.')
+          call put(input, row//'start_angle', setup%start_angles(k)*degrees)
+          call put(input, row//'max_a_start', result%before%rides(k)%max_acceleration)
+          call put(input, row//'max_a_optimum', result%after%rides(k)%max_acceleration)
+          call put(input, row//'lever_arm_start', min(result%before%rides(k)%max_lever_arm, 1e30_wp))
+          call put(input, row//'lever_arm_optimum', min(result%after%rides(k)%max_lever_arm, 1e30_wp))
+        end associate
+      end do
+    end associate
   end subroutine optimize_and_print
 
   !> A design of points: each variable's point, coordinate, start, optimum.
