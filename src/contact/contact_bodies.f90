@@ -32,28 +32,26 @@ module contact_bodies
 
 contains
 
-  !> Each body's contact that starts closed (0: it starts in flight).
-  pure function start_carriers(system) result(carrier)
+  !> The contacts that start closed (a body none of whose contacts does
+  !> starts in flight).
+  pure function start_carriers(system) result(closed)
     type(contact_system_t), intent(in) :: system
-    integer :: carrier(size(system%bodies))
-    integer :: c
-    carrier = 0
-    do c = 1, size(system%contacts)
-      if (.not. system%contacts(c)%start_open) carrier(body_index(system, system%contacts(c)%body_2)) = c
-    end do
+    logical :: closed(size(system%contacts))
+    closed = .not. system%contacts%start_open
   end function start_carriers
 
-  !> The phase of `system` where body b is carried by its contact
-  !> carrier(b) (closed), or flies (0), each at its pose and twist of the
-  !> description: the mechanism (contact_model), its start q0, qd0 and
+  !> The phase of `system` where the contacts `closed` carry their bodies
+  !> (the first of a body's as a chain, the others as loops: contact_loops)
+  !> and every body none of them carries flies, each at its pose and twist
+  !> of the description: the mechanism (contact_model), its start q0, qd0 and
   !> units, its open contacts' gaps (the contact `touching` may touch: it
   !> has just lifted off). restarting: a switch during the run (the closed
   !> contacts must touch to touching_gap_limit, the gaps are the motion's);
   !> else the run's start (checked as the input: check_flight_system;
   !> model, if present, is the built contact model, for the start's moves).
-  subroutine build_bodies(system, carrier, flight, q0, qd0, q_units, status, touching, restarting, model)
+  subroutine build_bodies(system, closed, flight, q0, qd0, q_units, status, touching, restarting, model)
     type(contact_system_t), intent(in) :: system
-    integer, intent(in) :: carrier(:)
+    logical, intent(in) :: closed(:)   ! each contact: closed
     type(flight_ode_t), intent(out) :: flight
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     character(len=8), allocatable, intent(out) :: q_units(:)
@@ -65,15 +63,18 @@ contains
     type(contact_system_t) :: part
     type(solid_properties_t) :: props
     integer :: b, c, k, f, nb, nc, j
+    integer :: carrier(size(system%bodies))
     if (.not. status%ok()) return
     if (.not. restarting) call check_flight_system(system, status)
     call build_system_shapes(system, part, status)
     if (.not. status%ok()) return
     nb = size(system%bodies)
     nc = size(system%contacts)
-    part%contacts%start_open = .true.
-    do b = 1, nb
-      if (carrier(b) > 0) part%contacts(carrier(b))%start_open = .false.
+    part%contacts%start_open = .not. closed
+    ! each body's first closed contact carries it (0: it flies)
+    carrier = 0
+    do c = nc, 1, -1
+      if (closed(c)) carrier(body_index(system, system%contacts(c)%body_2)) = c
     end do
     call build_contact_model(part, built, status, flying=.true.)
     if (.not. status%ok()) return

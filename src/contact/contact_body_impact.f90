@@ -25,7 +25,7 @@ module contact_body_impact
   use kinetostatics_point_impacts, only: resolve_impacts
   implicit none (type, external)
   private
-  public :: impact_body_t, collision_t, collide, collide_at_once, pair_delassus, relative_velocity, apply_impulse
+  public :: impact_body_t, collision_t, collide, collide_at_once, close_at_once, pair_delassus, relative_velocity, apply_impulse
 
   !> A free rigid body at an impact (world): its pose's origin and centre of
   !> mass, its twist (omega and the origin's velocity), mass and inertia
@@ -255,6 +255,73 @@ contains
       call apply_impulse(set_of(pair(1, j)), points_1(:, j), -p, st)
     end subroutine push
   end subroutine collide_at_once
+
+  !> The contacts `closing` of an impact at several contacts at once
+  !> (collide_at_once's, with the bodies after it) closed together: the
+  !> normal impulses P_S on them (frictionless, as closing_impulse's) that
+  !> take away their normal speeds v_S, W_SS P_S = -v_S (W the Delassus
+  !> matrix of the normals, each column a body's response at rest to a unit
+  !> impulse), applied to the bodies; a plastic impulse, its energy
+  !> v_S . W_SS^-1 v_S / 2 >= 0 taken, -P_i (v_i + v'_i)/2 at each contact
+  !> (every contact's speed after changes). Contact i's normal impulse,
+  !> speed after and energy lost are added to impulse(i), speed_after(i)
+  !> becomes the new speed, energy_lost(i) grows. A W_SS that is singular
+  !> (the closing contacts' normals dependent on the bodies) fails.
+  subroutine close_at_once(closing, normals, points_1, points_2, pair, bodies, impulse, speed_after, energy_lost, &
+                           status)
+    logical, intent(in) :: closing(:)
+    real(wp), intent(in) :: normals(:, :), points_1(:, :), points_2(:, :)
+    integer, intent(in) :: pair(:, :)
+    type(impact_body_t), intent(inout) :: bodies(0:)
+    real(wp), intent(inout) :: impulse(:), speed_after(:), energy_lost(:)
+    type(status_t), intent(inout) :: status
+    type(impact_body_t) :: pushed(0:ubound(bodies, 1))
+    real(wp) :: w(size(closing), size(closing)), v(size(closing)), p(size(closing))
+    real(wp), allocatable :: a(:, :), rhs(:)
+    integer, allocatable :: s(:), ipiv(:)
+    integer :: i, j, b, m
+    m = size(closing)
+    v = [(normal_speed(bodies, i), i = 1, m)]
+    do j = 1, m
+      pushed = bodies
+      do b = 0, ubound(bodies, 1)   ! at rest: W exactly
+        pushed(b)%omega = 0
+        pushed(b)%velocity = 0
+      end do
+      call apply_impulse(pushed(pair(2, j)), points_2(:, j), normals(:, j), status)
+      call apply_impulse(pushed(pair(1, j)), points_1(:, j), -normals(:, j), status)
+      w(:, j) = [(normal_speed(pushed, i), i = 1, m)]
+    end do
+    if (.not. status%ok()) return
+    s = pack([(i, i = 1, m)], closing)
+    a = w(s, s)
+    rhs = -v(s)
+    allocate (ipiv(size(s)))
+    call lu_factor(a, ipiv, status)
+    if (status%ok()) call lu_solve(a, ipiv, rhs, status)
+    if (.not. status%ok()) then
+      call set_status(status, STATUS_DOMAIN, 'closing several contacts at once: their normals are dependent on '// &
+                      'the bodies (no impulses take away their normal speeds)')
+      return
+    end if
+    p = 0
+    p(s) = rhs
+    do j = 1, m
+      call apply_impulse(bodies(pair(2, j)), points_2(:, j), p(j)*normals(:, j), status)
+      call apply_impulse(bodies(pair(1, j)), points_1(:, j), -p(j)*normals(:, j), status)
+    end do
+    if (.not. status%ok()) return
+    speed_after = [(normal_speed(bodies, i), i = 1, m)]
+    impulse = impulse + p
+    energy_lost = energy_lost - p*(v + speed_after)/2
+  contains
+    real(wp) function normal_speed(set_of, i) result(speed)
+      type(impact_body_t), intent(in) :: set_of(0:)
+      integer, intent(in) :: i
+      speed = dot_product(normals(:, i), relative_velocity(set_of(pair(1, i)), set_of(pair(2, i)), points_1(:, i), &
+                                                          points_2(:, i)))
+    end function normal_speed
+  end subroutine close_at_once
 
   !> The impulse (on the body, N s) that closes a contact whose points move
   !> apart at v after the impact (relative velocity, world; K the Delassus

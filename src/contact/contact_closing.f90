@@ -98,9 +98,9 @@ contains
     type(driver_result_t) :: phase
     type(carried_ode_t) :: carried
     real(wp), allocatable :: y(:)
-    logical :: flying, first, next
+    logical :: flying, first, next, handed_over
     integer :: chart_changes, nc
-    if (size(flight%system%bodies) > 1) then
+    if (size(flight%system%bodies) > 1 .or. any(flight%gaps%carried)) then
       call drive_bodies(flight, y0, options, result, status, open)
       return
     end if
@@ -114,6 +114,7 @@ contains
     nc = size(flight%system%contacts)
     call start_phases(options, nc, phase_options, run)
     first = .true.
+    handed_over = .false.
     chart_changes = 0
     do
       if (flying) then
@@ -124,6 +125,13 @@ contains
         call run%add_flight(flight)
         next = status%ok() .and. phase%outcome == DRIVE_EVENT_STOP .and. flight%landed > 0 .and. &
                phase%t < options%t_end
+        if (next .and. size(flight%closings) > 1) then
+          ! several contacts closed at once: the body on them all (contact_bodies) from here
+          call add_result(result, phase, first)
+          call several_closed(flight, run, phase, options, phase_options, result, chart_changes, status)
+          handed_over = .true.
+          exit
+        end if
         if (next) then
           flight%closed_on = flight%landed
           if (allocated(flight%closed)) deallocate (flight%closed)
@@ -163,9 +171,54 @@ contains
       phase_options%t_start = phase%t
     end do
     call run%finish(flight)
+    if (handed_over) call on_first_frames(flight)
     flight%chart_changes = flight%chart_changes + chart_changes
     open = run%open
   end subroutine drive_flight
+
+  !> A flight phase of one body that stopped where an impact closed several
+  !> of its contacts at once (flight%closings): the body carried by them
+  !> all (contact_bodies build_bodies at the last record's pose and twist)
+  !> and the run's phases on from there (drive_phases).
+  subroutine several_closed(flight, run, phase, options, phase_options, result, chart_changes, status)
+    type(flight_ode_t), intent(inout), target :: flight
+    type(phases_t), intent(inout) :: run
+    type(driver_result_t), intent(in) :: phase
+    type(driver_options_t), intent(in) :: options
+    type(driver_options_t), intent(inout) :: phase_options
+    type(driver_result_t), intent(inout) :: result
+    integer, intent(inout) :: chart_changes
+    type(status_t), intent(inout) :: status
+    type(flight_ode_t), allocatable :: start
+    real(wp), allocatable :: q0(:), qd0(:), y(:)
+    character(len=8), allocatable :: units(:)
+    logical :: closed(size(flight%system%contacts))
+    integer :: k
+    closed = .false.
+    closed(flight%closings) = .true.
+    allocate (start)
+    call build_bodies(at_last_record(flight), closed, start, q0, qd0, units, status, 0, .true.)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'closing contacts '//closing_names(flight)//' at t = '//format_short(phase%t)//' s')
+      result%outcome = DRIVE_FAILED
+      return
+    end if
+    start%impacts = flight%impacts
+    y = start%initial_state(q0, qd0)
+    call carry_work(run%series, start, y)
+    phase_options%t_start = phase%t
+    call drive_phases(flight, start, y, options, phase_options, run, result, .false., chart_changes, status)
+  contains
+    function closing_names(f) result(text)
+      type(flight_ode_t), intent(in) :: f
+      character(len=:), allocatable :: text
+      text = ''
+      do k = 1, size(f%closings)
+        if (k > 1) text = text//', '
+        text = text//''''//f%system%contacts(f%closings(k))%name//''''
+      end do
+    end function closing_names
+  end subroutine several_closed
 
   !> The start of a run of phases: each phase's options (the output origin
   !> fixed at the run's start) and an empty record of the phases of nc
@@ -181,13 +234,9 @@ contains
     run%history = ''
   end subroutine start_phases
 
-  !> drive_flight of several bodies (contact_bodies): each phase one
-  !> mechanism of the bodies as they are (each carried by its closed contact
-  !> or flying), `flight` the first; at a closing (an impact's rebound below
-  !> close_speed) or a lift-off of a contact that may open the next phase is
-  !> built from every body's pose and twist at the last record, the switched
-  !> body's part changed, and driven on from there. A lift-off of a contact
-  !> that may not open, or any other stop, ends the run.
+  !> drive_flight of several bodies (contact_bodies), or of one on several
+  !> closed contacts: each phase one mechanism of the bodies as they are
+  !> (each carried by its closed contacts or flying), `flight` the first.
   subroutine drive_bodies(flight, y0, options, result, status, open)
     type(flight_ode_t), intent(inout), target :: flight
     real(wp), intent(in) :: y0(:)
@@ -197,29 +246,60 @@ contains
     integer, allocatable, intent(out) :: open(:, :)
     type(phases_t) :: run
     type(driver_options_t) :: phase_options
+    type(flight_ode_t), allocatable :: none
+    integer :: chart_changes
+    call start_phases(options, size(flight%system%contacts), phase_options, run)
+    chart_changes = 0
+    call drive_phases(flight, none, y0, options, phase_options, run, result, .true., chart_changes, status)
+    call run%finish(flight)
+    call on_first_frames(flight)
+    flight%chart_changes = flight%chart_changes + chart_changes
+    open = run%open
+  end subroutine drive_bodies
+
+  !> The phases from `start` (built, its state y; not allocated: `flight`
+  !> itself) on: at a closing (an impact's rebound below close_speed, at one
+  !> contact or several at once) or a lift-off of a contact that may open
+  !> the next phase is built from every body's pose and twist at the last
+  !> record, the switched contacts closed or opened (a body stays carried
+  !> while any of its contacts is closed), and driven on from there. A
+  !> lift-off of a contact that may not open, or any other stop, ends the
+  !> run. first: the first phase of the run (result is set, not added to).
+  subroutine drive_phases(flight, start, y0, options, phase_options, run, result, first, chart_changes, status)
+    type(flight_ode_t), intent(inout), target :: flight
+    type(flight_ode_t), allocatable, intent(inout) :: start
+    real(wp), intent(in) :: y0(:)
+    type(driver_options_t), intent(in) :: options
+    type(driver_options_t), intent(inout) :: phase_options
+    type(phases_t), intent(inout) :: run
+    type(driver_result_t), intent(inout) :: result
+    logical, intent(in) :: first
+    integer, intent(inout) :: chart_changes
+    type(status_t), intent(out) :: status
     type(driver_result_t) :: phase
     type(flight_ode_t), allocatable, target :: current, next_phase
     type(flight_ode_t), pointer :: p
     type(contact_system_t) :: placed
     real(wp), allocatable :: y(:), q0(:), qd0(:)
     character(len=8), allocatable :: units(:)
-    integer, allocatable :: carrier(:)
-    integer :: nc, k, c, touching, chart_changes
-    logical :: first, next, lifted
+    logical, allocatable :: closed(:)
+    integer :: k, c, touching
+    logical :: next, lifted, starting
     p => flight
+    if (allocated(start)) then
+      call move_alloc(start, current)
+      p => current
+    end if
     y = y0
-    nc = size(flight%system%contacts)
-    call start_phases(options, nc, phase_options, run)
-    first = .true.
-    chart_changes = 0
+    starting = first
     do
       p%landed = 0
       p%closings = [integer ::]
-      if (.not. first) call p%start_series(16)
+      if (.not. starting) call p%start_series(16)
       call drive(p, y, phase_options, phase, status)
       call run%add(p%series, p%q_units, p%beta_units, p%outcome)
       call run%add_flight(p)
-      if (.not. first) chart_changes = chart_changes + p%chart_changes
+      if (.not. starting) chart_changes = chart_changes + p%chart_changes
       lifted = .false.
       c = 0
       if (p%stop_kind == STOP_LIFT_OFF) then
@@ -229,20 +309,25 @@ contains
       next = status%ok() .and. phase%outcome == DRIVE_EVENT_STOP .and. phase%t < options%t_end .and. &
              (size(p%closings) > 0 .or. lifted)
       if (next) then
-        carrier = p%carrier
+        closed = p%gaps%carried
         touching = p%gaps%touching
         do k = 1, size(p%closings)
-          carrier(p%gaps%body(p%closings(k))) = p%closings(k)
+          closed(p%closings(k)) = .true.
           if (touching == p%closings(k)) touching = 0
         end do
         if (lifted) then
-          carrier(p%gaps%body(c)) = 0
+          closed(c) = .false.
           touching = c
-          run%history = run%history//': the contact opens (may_open), the body flies'
+          if (any(closed .and. p%gaps%body == p%gaps%body(c))) then
+            run%history = run%history//': the contact opens (may_open), the body goes on on its other closed '// &
+                          'contacts'
+          else
+            run%history = run%history//': the contact opens (may_open), the body flies'
+          end if
         end if
         placed = at_last_record(p)
         allocate (next_phase)
-        call build_bodies(placed, carrier, next_phase, q0, qd0, units, status, touching, .true.)
+        call build_bodies(placed, closed, next_phase, q0, qd0, units, status, touching, .true.)
         if (.not. status%ok()) call prefix_status(status, 'the switch at t = '//format_short(phase%t)//' s')
         if (status%ok()) then
           next_phase%impacts = p%impacts
@@ -250,18 +335,23 @@ contains
           call carry_work(run%series, next_phase, y)
         end if
       end if
-      call add_result(result, phase, first)
+      call add_result(result, phase, starting)
       if (next .and. .not. status%ok()) result%outcome = DRIVE_FAILED
       if (.not. (next .and. status%ok())) exit
       if (.not. associated(p, flight)) flight%impacts = p%impacts
       call move_alloc(next_phase, current)
       p => current
-      first = .false.
+      starting = .false.
       phase_options%t_start = phase%t
     end do
     if (.not. associated(p, flight)) flight%impacts = p%impacts
-    call run%finish(flight)
-    ! the bodies on the first phase's frames, whose mechanism (flight's) reports the run
+  end subroutine drive_phases
+
+  !> The bodies of flight's series on the first phase's frames, whose
+  !> mechanism (flight's) reports the run.
+  subroutine on_first_frames(flight)
+    type(flight_ode_t), intent(inout) :: flight
+    integer :: k, c
     associate (s => flight%series)
       do k = 1, s%nb
         c = findloc([(flight%system%bodies(c)%name == trim(s%body_names(k)), c = 1, size(flight%body_frame))], &
@@ -269,9 +359,7 @@ contains
         if (c > 0) s%body_frame(k) = flight%body_frame(c)
       end do
     end associate
-    flight%chart_changes = flight%chart_changes + chart_changes
-    open = run%open
-  end subroutine drive_bodies
+  end subroutine on_first_frames
 
   !> The description of `phase` with every body at its pose and twist of the
   !> phase's last record (the series' bodies by name).

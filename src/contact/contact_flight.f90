@@ -82,7 +82,7 @@ module contact_flight
   use contact_model, only: contact_system_t, contact_spec_t, contact_model_t, build_system_shapes, body_index, &
     LEVEL_POSITION, CHAIN_AUTO
   use contact_open_gaps, only: open_gaps_t, start_open_gaps
-  use contact_body_impact, only: impact_body_t, collision_t, collide, collide_at_once
+  use contact_body_impact, only: impact_body_t, collision_t, collide, collide_at_once, close_at_once
   implicit none (type, external)
   private
   public :: flight_ode_t, impact_record_t, build_flight, starts_open, restart_flight, check_flight_system, &
@@ -159,15 +159,15 @@ contains
     part%contacts(1)%start_open = .false.
   end function closed_part
 
-  !> Refused unless every contact is between the ground and a body and of
-  !> the contacts of each body at most one starts closed (it carries the
-  !> body; the others are surfaces it may land on), and unless a contact that
+  !> Refused unless every contact is between the ground and a body (a
+  !> body's several closed contacts carry it together, contact_loops; its
+  !> open ones are surfaces it may land on), and unless a contact that
   !> starts open has restitution where it has what only a closed contact uses
   !> (a description with a contact that starts open or may open: a flight).
   subroutine check_flight_system(system, status)
     type(contact_system_t), intent(in) :: system
     type(status_t), intent(inout) :: status
-    integer :: k, b
+    integer :: k
     if (.not. status%ok()) return
     do k = 1, size(system%contacts)
       associate (c => system%contacts(k))
@@ -192,19 +192,6 @@ contains
             'friction of its impacts)')
         end if
         if (.not. status%ok()) return
-      end associate
-    end do
-    do b = 1, size(system%bodies)
-      associate (name => system%bodies(b)%name)
-        if (count([(system%contacts(k)%body_2 == name .and. .not. system%contacts(k)%start_open, &
-                    k = 1, size(system%contacts))]) <= 1) cycle
-        k = findloc([(system%contacts(k)%body_2 == name .and. (system%contacts(k)%start_open .or. &
-                      system%contacts(k)%may_open), k = 1, size(system%contacts))], .true., dim=1)
-        if (k == 0) k = findloc([(system%contacts(k)%body_2 == name, k = 1, size(system%contacts))], .true., dim=1)
-        call set_status(status, STATUS_INVALID_INPUT, 'contact '''//system%contacts(k)%name//''': of the '// &
-          'contacts of body '''//name//''' with the ground at most one starts closed (it carries the body; the '// &
-          'others are surfaces it may land on): give the others start = ''open''')
-        return
       end associate
     end do
     do k = 1, size(system%contacts)
@@ -576,6 +563,8 @@ contains
     integer, allocatable :: c(:), pair(:, :)
     real(wp), allocatable :: normals(:, :), points_1(:, :), points_2(:, :), rates(:)
     real(wp), dimension(count(lands)) :: impulse, tangential, before, after, lost
+    logical :: closing(count(lands))
+    character(len=:), allocatable :: stopped
     integer :: f, i, b, m
     c = pack([(i, i = 1, size(lands))], lands)
     m = size(c)
@@ -596,6 +585,21 @@ contains
     call collide_at_once(self%system%contacts(c)%restitution, self%system%contacts(c)%impact_mu, normals, points_1, &
                          points_2, pair, bodies, impulse, tangential, before, after, lost, status)
     if (.not. status%ok()) return
+    closing = after < self%system%contacts(c)%close_speed
+    if (any(closing .and. (pair(1, :) > 0 .or. self%system%contacts(c)%rolling))) then
+      stopped = 'the impact at several contacts at once at t = '//format_short(t)//' s ('// &
+                landed_names(self, lands)//') leaves '//landed_names(self, unpack(closing, lands, .false.))// &
+                ' slower than close_speed (closing a contact between two bodies, or a rolling one, among several '// &
+                'at once is not built): the run ends here'
+    else if (any(closing)) then
+      ! those slower than close_speed close together; one the closing leaves slower closes with them
+      do i = 1, m
+        call close_at_once(closing, normals, points_1, points_2, pair, bodies, impulse, after, lost, status)
+        if (.not. status%ok()) return
+        if (.not. any(after < self%system%contacts(c)%close_speed .and. .not. closing)) exit
+        closing = closing .or. after < self%system%contacts(c)%close_speed
+      end do
+    end if
     f = self%mechanism%f
     rates = y(f + 1:f + self%mechanism%ns)
     do b = 1, size(self%body_frame)
@@ -608,12 +612,16 @@ contains
                       normal_speed_before=before(i), normal_speed_after=after(i), normal_impulse=impulse(i), &
                       tangential_impulse=tangential(i), energy_lost=lost(i))]
     end do
-    if (any(after < self%system%contacts(c)%close_speed)) then
+    if (allocated(stopped)) then
       action = max(action, EVENT_STOP)
-      call add_outcome(self, 'the impact at several contacts at once at t = '//format_short(t)//' s ('// &
-                       landed_names(self, lands)//') leaves '//landed_names(self, unpack(after < &
-                       self%system%contacts(c)%close_speed, lands, .false.))//' slower than close_speed (closing '// &
-                       'several contacts at once is not built): the run ends here')
+      call add_outcome(self, stopped)
+    else if (any(closing)) then
+      action = max(action, EVENT_STOP)
+      self%closings = [self%closings, pack(c, closing)]
+      self%landed = self%closings(size(self%closings))
+      call add_outcome(self, 'contacts '//landed_names(self, unpack(closing, lands, .false.))//' closed at the '// &
+                       'impact at several contacts at once at t = '//format_short(t)//' s: their rebounds are '// &
+                       'below close_speed')
     else
       action = max(action, EVENT_RESTART)
     end if

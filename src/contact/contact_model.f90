@@ -50,7 +50,8 @@ module contact_model
   use kinetostatics_mechanism, only: mechanism_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use contact_pair, only: contact_pair_t, add_contact_pair, add_open_contact_pair, place_contact_pair, &
-    place_open_contact_pair, check_contact_branch, starts_in_other_chart
+    place_open_contact_pair, check_contact_branch, starts_in_other_chart, add_loop_contact_pair
+  use contact_loops, only: loop_start_t, second_contacts, start_loops
   use contact_rolling, only: new_no_slip
   use contact_velocity_level, only: new_velocity_contact
   use contact_factory, only: body_from_spec, add_air_drag
@@ -82,6 +83,7 @@ module contact_model
     logical :: rolling = .false.
     logical :: open = .false.                    ! position level by the open chain
     logical :: apart = .false.                   ! open (start_open): not built, its body flies or another carries it
+    logical :: loop = .false.                    ! a second closed contact of its body: a closure loop (contact_loops)
     integer :: frame_a = 0, frame_b = 0, frame_1d = 0, frame_2d = 0   ! frame_2d: 0 in the open chain
     integer :: coordinates(4) = 0                ! scalars u1, v1, u2, v2
     integer :: gaps(5) = 0                       ! closure measurements g1..g5
@@ -136,39 +138,64 @@ contains
     type(contact_model_t), intent(out) :: model
     type(status_t), intent(inout) :: status
     logical, intent(in) :: flies
-    type(contact_model_t) :: closed
+    type(contact_model_t) :: closed, tree
+    type(contact_system_t) :: chains
+    type(loop_start_t), allocatable :: loops(:)
+    logical :: staged
     if (.not. status%ok()) return
     call check_names(system, status)
     if (.not. status%ok()) return
-    if (.not. any((system%contacts%level == LEVEL_VELOCITY .or. open_chain(system%contacts)) .and. &
-                  .not. system%contacts%start_open)) then
-      call build(system, model, status, flies)
+    ! a body's second closed contacts: loops on the mechanism of the others (contact_loops)
+    chains = system
+    chains%contacts%start_open = system%contacts%start_open .or. second_contacts(system)
+    staged = any((chains%contacts%level == LEVEL_VELOCITY .or. open_chain(chains%contacts)) .and. &
+                 .not. chains%contacts%start_open)
+    if (.not. any(second_contacts(system))) then
+      if (.not. staged) then
+        call build(system, model, status, flies)
+        return
+      end if
+      ! velocity level and open chains: start from the closed configuration of the loops
+      call build(system, closed, status, flies, all_position=.true.)
+      if (.not. status%ok()) return
+      call build(system, model, status, flies, closed=closed)
       return
     end if
-    ! velocity level and open chains: start from the closed configuration of the loops
-    call build(system, closed, status, flies, all_position=.true.)
+    if (staged) then
+      call build(chains, closed, status, flies, all_position=.true.)
+      call build(chains, tree, status, flies, closed=closed)
+    else
+      call build(chains, tree, status, flies)
+    end if
+    call start_loops(system, tree%ode%mechanism, tree%ode%work, tree%body_frame, loops, status)
     if (.not. status%ok()) return
-    call build(system, model, status, flies, closed=closed)
+    if (staged) then
+      call build(system, model, status, flies, closed=closed, loops=loops)
+    else
+      call build(system, model, status, flies, loops=loops)
+    end if
   end subroutine build_shaped_model
+
 
   !> One build. all_position: every contact at position level by the loop
   !> (the start of velocity-level contacts and open chains); closed: that
   !> model, whose closed configuration starts them.
-  subroutine build(system, model, status, flies, all_position, closed)
+  subroutine build(system, model, status, flies, all_position, closed, loops)
     type(contact_system_t), intent(in) :: system
     type(contact_model_t), intent(out) :: model
     type(status_t), intent(inout) :: status
     logical, intent(in) :: flies
     logical, intent(in), optional :: all_position
     type(contact_model_t), intent(in), optional :: closed
+    type(loop_start_t), intent(in), optional :: loops(:)   ! each contact's: a second closed contact's loop (used)
     integer :: nb, k, b1, b2, level
-    integer, allocatable :: q(:), kinematic(:), carrier(:)
+    integer, allocatable :: q(:), kinematic(:), carrier(:), extras(:)
     real(wp), allocatable :: mass(:)
     type(solid_properties_t), allocatable :: props(:)
     nb = size(system%bodies)
     allocate (model%body_names(nb + 1), model%body_frame(nb + 1), model%body_mass(nb + 1), carrier(nb))
     allocate (model%links(size(system%contacts)), q(0), kinematic(0), mass(nb), props(nb))
-    allocate (model%q_units(0), model%beta_units(0))
+    allocate (model%q_units(0), model%beta_units(0), extras(0))
     model%body_names(1) = 'ground'
     model%body_frame = 0
     model%body_frame(1) = 1
@@ -189,6 +216,18 @@ contains
               call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_1 = '''//c%body_1// &
                 ''' is not placed yet: list the contact that carries it (its body_2) before '''//c%name//'''')
               return
+            end if
+          end if
+          if (carrier(b2) /= 0 .and. present(loops)) then
+            if (loops(k)%used) then
+              call add_loop_contact(m, c, link, model%body_frame(b1 + 1), model%body_frame(b2 + 1), &
+                                    system%shapes(shape_index(system, c%shape_1))%surface, &
+                                    system%shapes(shape_index(system, c%shape_2))%surface, loops(k), q, extras, model, &
+                                    status)
+              if (.not. status%ok()) return
+              call add_friction(m, c, link, system%bodies(b2)%mass*norm2(system%gravity), status)
+              if (.not. status%ok()) return
+              cycle
             end if
           end if
           if (carrier(b2) /= 0) then
@@ -238,13 +277,60 @@ contains
           return
         end if
       end do
+      if (size(extras) > 0) then
+        ! the loops' dependents of the carrying chains are no coordinates
+        model%q_units = pack(model%q_units, [(.not. any(extras == q(k)), k = 1, size(q))])
+        q = pack(q, [(.not. any(extras == q(k)), k = 1, size(q))])
+      end if
       call m%set_coordinates(q)
       if (size(kinematic) > 0) call m%set_kinematic(kinematic)
       call m%finalize(status)
       if (.not. status%ok()) return
     end associate
-    call start(system, model, carrier, status, closed)
+    call start(system, model, carrier, status, closed, loops)
   end subroutine build
+
+  !> A second closed contact of a carried body (frame_b): a closure loop
+  !> (contact_pair add_loop_contact_pair) whose fifth dependent is the
+  !> carrying chain's coordinate start%extra (contact_loops), added to
+  !> `extras`; its units moved from the coordinates' to the dependents'
+  !> after the loop's own four. N is the cut force of g3, as in a loop pair.
+  subroutine add_loop_contact(m, c, link, frame_a, frame_b, s1, s2, start, q, extras, model, status)
+    type(mechanism_t), intent(inout) :: m
+    type(contact_spec_t), intent(in) :: c
+    type(contact_link_t), intent(inout) :: link
+    integer, intent(in) :: frame_a, frame_b
+    class(surface_t), intent(in) :: s1, s2
+    type(loop_start_t), intent(in) :: start
+    integer, intent(in) :: q(:)   ! the coordinates so far (model%q_units theirs)
+    integer, allocatable, intent(inout) :: extras(:)
+    type(contact_model_t), intent(inout) :: model
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: u1, v1, u2, v2
+    integer :: extra, j
+    extra = m%scalar_index(start%extra)
+    j = findloc(q, extra, dim=1)
+    if (j == 0) then
+      call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': the coordinate '''//start%extra// &
+                      ''' its loop would make dependent is not one of the carrying contact''s')
+      return
+    end if
+    link%loop = .true.
+    link%frame_a = frame_a
+    call add_loop_contact_pair(m, c%name, frame_a, s1, c%side_1, frame_b, s2, c%side_2, extra, link%pair, status)
+    if (.not. status%ok()) return
+    link%frame_b = frame_b
+    link%frame_1d = link%pair%frame_1d
+    link%frame_2d = link%pair%frame_2d
+    link%coordinates = [link%pair%u1, link%pair%v1, link%pair%u2, link%pair%v2]
+    link%gaps = link%pair%gaps
+    link%contact = m%add_contact(c%name, frame_a, frame_b, link%frame_1d, 1.0_wp, normal_measurement=link%gaps(3))
+    call add_monitors(m, link)
+    extras = [extras, extra]
+    call s1%parameter_units(u1, v1)
+    call s2%parameter_units(u2, v2)
+    model%beta_units = [character(len=8) :: model%beta_units, u1, v1, u2, v2, model%q_units(j)]
+  end subroutine add_loop_contact
 
   !> The bodies no closed contact carries, each free (contact_free_body,
   !> carrier -1) at its given pose, in the order of the &body groups; then
@@ -462,12 +548,13 @@ contains
 
   !> Places every contact from the bodies' poses (or copies the closed
   !> configuration), closes and checks the loops, and finds the speeds.
-  subroutine start(system, model, carrier, status, closed)
+  subroutine start(system, model, carrier, status, closed, loops)
     type(contact_system_t), intent(in) :: system
     type(contact_model_t), intent(inout) :: model
     integer, intent(in) :: carrier(:)
     type(status_t), intent(inout) :: status
     type(contact_model_t), intent(in), optional :: closed
+    type(loop_start_t), intent(in), optional :: loops(:)
     real(wp), allocatable :: q0(:), s0(:)
     real(wp) :: rot_a(3, 3), r_a(3)
     integer :: k, b1
@@ -476,6 +563,15 @@ contains
         associate (c => system%contacts(k), link => model%links(k))
           if (link%apart) then
             link%start_gap = 0
+          else if (link%loop) then
+            ! from the contact search at the pose the chains placed (contact_loops)
+            m%scalars(link%pair%u1)%q = loops(k)%x(1)
+            m%scalars(link%pair%v1)%q = loops(k)%x(2)
+            m%scalars(link%pair%u2)%q = loops(k)%x(3)
+            m%scalars(link%pair%v2)%q = loops(k)%x(4)
+            call m%elements(link%pair%element_s1)%e%start_chart(m%scalars)
+            call m%elements(link%pair%element_s2)%e%start_chart(m%scalars)
+            link%start_gap = loops(k)%gap
           else if (link%open) then
             ! from the loop's closed configuration
             call place_open_contact_pair(m, link%pair, closed%ode%work, closed%links(k)%pair)

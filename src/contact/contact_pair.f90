@@ -63,7 +63,8 @@ module contact_pair
   use contact_closure_monitor, only: new_closure_monitor
   implicit none (type, external)
   private
-  public :: contact_pair_t, add_contact_pair, add_open_contact_pair, place_contact_pair, place_open_contact_pair
+  public :: contact_pair_t, add_contact_pair, add_loop_contact_pair, add_open_contact_pair, place_contact_pair, &
+    place_open_contact_pair
   public :: check_contact_branch, starts_in_other_chart
 
   !> What one contact expanded into: indices into the mechanism's frames,
@@ -73,6 +74,7 @@ module contact_pair
     integer :: frame_a = 0, frame_b = 0                   ! the two bodies
     integer :: frame_12 = 0, frame_lift = 0, frame_1d = 0, frame_2d = 0
     integer :: u12 = 0, v12 = 0, z12 = 0, angles(3) = 0  ! relative chain
+    integer :: extra = 0   ! a second contact's loop (add_loop_contact_pair): its dependent of the carrying chain
     integer :: u1 = 0, v1 = 0, u2 = 0, v2 = 0            ! contact points
     integer :: gaps(5) = 0                               ! closure measurements g1..g5
     integer :: element_s1 = 0, element_s2 = 0, element_s12 = 0, element_rotation = 0
@@ -100,11 +102,13 @@ contains
     end if
   end function pair_coordinates
 
-  !> Dependent coordinates of its loop: u1, v1, u2, v2, z12.
+  !> Dependent coordinates of its loop: u1, v1, u2, v2, z12 (a second
+  !> contact's loop: extra for z12).
   pure function pair_dependents(self) result(beta)
     class(contact_pair_t), intent(in) :: self
     integer :: beta(5)
     beta = [self%u1, self%v1, self%u2, self%v2, self%z12]
+    if (self%extra > 0) beta(5) = self%extra
   end function pair_dependents
 
   !> Adds the contact `name` between surface_1 on the body frame `frame_a` and
@@ -167,6 +171,49 @@ contains
     call m%add_loop(name, pair%gaps, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], pair%dependents(), status)
     call m%set_loop_branch(name, pair%frame_1d, pair%frame_2d, status)
   end subroutine add_contact_pair
+
+  !> A second contact of a body the mechanism carries already (its frame
+  !> `frame_b`): a closure loop, not a chain. The contact frames K_1D =
+  !> S1(u1, v1) on frame_a and K_2D = S2(u2, v2) on frame_b, closed by the
+  !> five conditions (3.86) as in add_contact_pair, with the dependent
+  !> coordinates (u1, v1, u2, v2, extra): `extra` a coordinate of the
+  !> chain that carries the body (the one that moves this contact most along
+  !> its normal: contact_model). N is the cut force of g3, as in the loop.
+  subroutine add_loop_contact_pair(m, name, frame_a, surface_1, side_1, frame_b, surface_2, side_2, extra, pair, &
+                                   status)
+    type(mechanism_t), intent(inout) :: m
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: frame_a, frame_b, extra
+    class(surface_t), intent(in) :: surface_1, surface_2
+    real(wp), intent(in) :: side_1, side_2
+    type(contact_pair_t), intent(out) :: pair
+    type(status_t), intent(inout) :: status
+    real(wp), parameter :: ex(3) = [1, 0, 0], ey(3) = [0, 1, 0], ez(3) = [0, 0, 1]
+    call begin_pair(name, frame_a, side_1, side_2, pair, status)
+    if (.not. status%ok()) return
+    pair%frame_b = frame_b
+    call add_contact_frame_1(m, surface_1, pair, status)
+    pair%frame_2d = m%add_frame(name//'.2D')
+    pair%u2 = m%add_scalar(name//'.u2')
+    pair%v2 = m%add_scalar(name//'.v2')
+    call m%add_element(new_surface_joint(name//'.s2', pair%frame_b, pair%frame_2d, pair%u2, pair%v2, surface_2, &
+                                         side_2, 1.0_wp, 0.0_wp, charts=.true.))
+    pair%element_s2 = m%n_elements
+    call add_gap_scalars(m, pair)
+    call m%add_element(new_measurement(name//'.g1', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
+                                       pair%gaps(1), axis_i=ex))
+    call m%add_element(new_measurement(name//'.g2', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
+                                       pair%gaps(2), axis_i=ey))
+    call m%add_element(new_measurement(name//'.g3', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
+                                       pair%gaps(3), axis_i=ez))
+    call m%add_element(new_measurement(name//'.g4', MEASURE_PLANE_PLANE, pair%frame_1d, pair%frame_2d, &
+                                       pair%gaps(4), axis_i=ez, axis_j=ex))
+    call m%add_element(new_measurement(name//'.g5', MEASURE_PLANE_PLANE, pair%frame_1d, pair%frame_2d, &
+                                       pair%gaps(5), axis_i=ez, axis_j=ey))
+    pair%extra = extra
+    call m%add_loop(name, pair%gaps, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], pair%dependents(), status)
+    call m%set_loop_branch(name, pair%frame_1d, pair%frame_2d, status)
+  end subroutine add_loop_contact_pair
 
   !> The open chain of the contact `name` (module comment): S1 on the body
   !> frame `frame_a`, the turn phi about its normal and body B (frame named

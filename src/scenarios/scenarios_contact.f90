@@ -63,7 +63,8 @@ contains
       call run_flight(input, run, solver, system, status)
       return
     end if
-    if (flies .and. size(system%bodies) > 1) then
+    if (flies .and. (size(system%bodies) > 1 .or. count(.not. system%contacts%start_open) > 1)) then
+      ! several bodies, or one on several closed contacts (contact_loops)
       call run_bodies(input, run, solver, system, status)
       return
     end if

@@ -35,8 +35,9 @@
 !>   - two_at_once: a ball dropped into a V of two planes at +-30 degrees
 !>     lands on both at once: the frictionless impact at two points
 !>     (Newton's restitution at each; W's off-diagonal cos60/m) on its
-!>     closed form, five bounces as on a floor, then the run ends, saying
-!>     why; with friction the same bounces, each contact slipping
+!>     closed form, four bounces as on a floor; the fifth closes both
+!>     planes and the ball rests in the V (N = m g/(2 cos30) at each); with
+!>     friction the same bounces, each contact slipping
 !>     (test_impacts_at_once has the law's closed forms).
 program test_body_impact
   use base_kinds, only: wp
@@ -528,25 +529,27 @@ contains
   !> v0), each contact's normal speed -v cos30 before and e v cos30 after,
   !> the pair's energy (1 - e^2) m v^2/2; bounces e^(2k) high at the times
   !> of a ball on a floor; at the fifth the rebound e^5 v0 cos30 is below
-  !> close_speed and the run ends, saying so (closing at two points is not
-  !> built). With friction (impact_mu 0.3; kinetostatics_point_impacts) the
-  !> same bounces, each contact slipping: normal impulses (1 + e) m v/(2
-  !> (cos30 - mu sin30)), friction mu of them.
+  !> close_speed and both contacts close (contact_body_impact close_at_once:
+  !> the impulses v cos30/(1 + cos60) at each in all, the ball stopped, its
+  !> m v^2/2 taken): the ball rests in the V to the end, N = m g/(2 cos30)
+  !> at each plane. With friction (impact_mu 0.3;
+  !> kinetostatics_point_impacts) the same bounces, each contact slipping:
+  !> normal impulses (1 + e) m v/(2 (cos30 - mu sin30)), friction mu of
+  !> them.
   subroutine two_at_once()
     real(wp), parameter :: z0 = 0.5_wp, radius = 0.1_wp, e = 0.5_wp, angle = 30, mu = 0.3_wp
     type(flight_ode_t), target :: flight
     type(driver_result_t) :: result
     type(status_t) :: st
-    real(wp) :: c30, v0, v, t, worst_x, worst_spin
-    integer :: k, i
+    real(wp) :: c30, v0, v, t, worst_x, worst_spin, worst_n, rest
+    integer :: k, i, j
     c30 = cos(angle*acos(-1.0_wp)/180)
     call run_text(v_input(angle, z0, radius, e, 0.0_wp), 'two at once', flight, result, st)
-    call check(st%ok() .and. result%outcome == DRIVE_EVENT_STOP, 'two at once: stops: '//st%text()//' '// &
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'two at once: runs to its end: '//st%text()//' '// &
                flight%outcome)
     if (.not. st%ok()) return
-    call check(index(flight%outcome, '(''on_left'', ''on_right'') leaves ''on_left'', ''on_right'' slower than '// &
-                     'close_speed (closing several contacts at once is not built): the run ends here') > 0, &
-               'two at once: the outcome says the fifth rebound is too slow to go on: '//flight%outcome)
+    call check(index(flight%outcome, 'contacts ''on_left'', ''on_right'' closed at the impact at several contacts '// &
+                     'at once') > 0, 'two at once: the outcome says the fifth closes both: '//flight%outcome)
     call check(size(flight%impacts) == 10, 'two at once: five impacts at two points each')
     if (size(flight%impacts) /= 10) return
     v0 = sqrt(2*g*(z0 - radius/c30))
@@ -557,16 +560,17 @@ contains
         call check(left%contact == 1 .and. right%contact == 2 .and. left%time == right%time, &
                    'two at once: both contacts in one impact')
         call check_close(left%time, t, 0.0_wp, 1e-9_wp, 'two at once: impact times as on a floor (s)')
+        rest = merge(0.0_wp, 1.0_wp, k == 5)   ! the fifth closes: no rebound
         do i = 2*k - 1, 2*k
           call check_close(flight%impacts(i)%normal_speed_before, -v*c30, 0.0_wp, 1e-9_wp, &
                            'two at once: approach v cos30 (m/s)')
-          call check_close(flight%impacts(i)%normal_speed_after, e*v*c30, 0.0_wp, 1e-9_wp, &
-                           'two at once: rebound e v cos30 at each (m/s)')
-          call check_close(flight%impacts(i)%normal_impulse, (1 + e)*v*c30/1.5_wp, 0.0_wp, 1e-9_wp, &
-                           'two at once: impulse (1 + e) m v cos30/(1 + cos60) at each (N s)')
+          call check_close(flight%impacts(i)%normal_speed_after, rest*e*v*c30, 0.0_wp, 1e-9_wp, &
+                           'two at once: rebound e v cos30 at each, 0 at the fifth (m/s)')
+          call check_close(flight%impacts(i)%normal_impulse, (1 + rest*e)*v*c30/1.5_wp, 0.0_wp, 1e-9_wp, &
+                           'two at once: impulse (1 + e) m v cos30/(1 + cos60) at each, e 0 at the fifth (N s)')
         end do
-        call check_close(left%energy_lost + right%energy_lost, (1 - e**2)*v**2/2, 0.0_wp, 1e-9_wp, &
-                         'two at once: the pair takes (1 - e^2) m v^2/2 (J)')
+        call check_close(left%energy_lost + right%energy_lost, (1 - (rest*e)**2)*v**2/2, 0.0_wp, 1e-9_wp, &
+                         'two at once: the pair takes (1 - e^2) m v^2/2, all at the fifth (J)')
       end associate
       t = t + 2*e*v/g
       v = e*v
@@ -581,19 +585,33 @@ contains
     end associate
     call check_close(worst_x + worst_spin, 0.0_wp, 0.0_wp, 1e-12_wp, 'two at once: straight up and down, no spin')
     print '(a, 2es10.2)', '  two at once: sideways, spin ', worst_x, worst_spin
+    ! at rest in the V after the fifth: each plane's N = m g/(2 cos30)
+    worst_n = 0
+    associate (s => flight%series)
+      do i = 1, s%n
+        if (s%time(i) <= t) cycle
+        do j = 1, s%nc
+          worst_n = max(worst_n, abs(s%normal(j, i)*2*c30/g - 1))
+        end do
+        worst_n = max(worst_n, norm2(s%body_v(:, 1, i)))
+      end do
+      call check(s%nc == 2 .and. s%time(s%n) > t + 1, 'two at once: the ball rests in the V to the end')
+    end associate
+    call check_close(worst_n, 0.0_wp, 0.0_wp, 1e-9_wp, 'two at once: at rest, N = m g/(2 cos30) at each (relative)')
+    print '(a, es10.2)', '  two at once: at rest, N relative and speed ', worst_n
     ! with friction (kinetostatics_point_impacts): by symmetry the ball goes
     ! straight up at e v as without it, its contact points slipping up the
     ! planes after the impact; friction mu P against that slip: the vertical
     ! impulse 2 P (cos30 - mu sin30) = (1 + e) m v
     call run_text(v_input(angle, z0, radius, e, mu), 'two at once, friction', flight, result, st)
-    call check(st%ok() .and. result%outcome == DRIVE_EVENT_STOP, 'two at once, friction: stops: '//st%text())
-    call check(index(flight%outcome, 'slower than close_speed (closing several contacts at once is not built)') > 0, &
-               'two at once, friction: the fifth rebound is too slow to go on: '//flight%outcome)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'two at once, friction: runs to its end: '//st%text())
+    call check(index(flight%outcome, 'contacts ''on_left'', ''on_right'' closed at the impact at several contacts '// &
+                     'at once') > 0, 'two at once, friction: the fifth closes both: '//flight%outcome)
     call check(size(flight%impacts) == 10, 'two at once, friction: five impacts at two points each')
     if (size(flight%impacts) /= 10) return
     t = v0/g
     v = v0
-    do k = 1, 5
+    do k = 1, 4   ! (the fifth closes both)
       do i = 2*k - 1, 2*k
         associate (row => flight%impacts(i))
           call check_close(row%time, t, 0.0_wp, 1e-9_wp, 'two at once, friction: impact times as on a floor (s)')

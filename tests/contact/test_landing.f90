@@ -22,7 +22,6 @@
 !>     the wall (watched all the while: its gap 1 - r - x).
 !>   - carried_into_a_wall: a ball sliding on the floor at u into the wall
 !>     (open): the run ends at t = (0.9 - x_0)/u, saying so.
-!>   - refused: two contacts of the body closed at the start.
 !> Tolerances: rtol = atol = 1e-10 (the dome, as test_flight's dome) or
 !> 1e-12 (the planes): the projectile to 1e-9 m from the recorded lift-off
 !> state (test_flight), so the landing time to 1e-9 m / 3.9 m/s; each
@@ -51,7 +50,6 @@ program test_landing
   call dome_to_floor()
   call wall_then_floor()
   call carried_into_a_wall()
-  call refusals()
   call finish_tests('test_landing')
 
 contains
@@ -278,26 +276,4 @@ contains
                'carried into a wall: the wall open, the floor closed')
   end subroutine carried_into_a_wall
 
-  subroutine refusals()
-    type(input_text_t) :: input
-    type(flight_ode_t), target :: flight
-    type(contact_system_t) :: system
-    type(driver_result_t) :: result
-    type(status_t) :: st
-    integer, allocatable :: open(:, :)
-    call input_from_text('two closed', replace(wall_input('position = 0.2, 0, 0.1', 'start = ''closed'''), &
-                                               'start = ''open'', restitution = 0.8', 'may_open = .true.'), input, st)
-    if (st%ok()) call run(input, flight, system, open, result, st)
-    call check(.not. st%ok() .and. index(st%text(), 'at most one starts closed') > 0, &
-               'two closed contacts of one body are refused: '//st%text())
-  end subroutine refusals
-
-  !> text with its first `old` replaced by `new`.
-  function replace(text, old, new) result(changed)
-    character(len=*), intent(in) :: text, old, new
-    character(len=:), allocatable :: changed
-    integer :: at
-    at = index(text, old)
-    changed = text(:at - 1)//new//text(at + len(old):)
-  end function replace
 end program test_landing

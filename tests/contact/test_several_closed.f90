@@ -1,0 +1,338 @@
+!> A body on several closed contacts (issue 25, contact_loops): the first
+!> of its closed contacts carries it as a chain, each other is a closure
+!> loop; an impact that leaves several contacts slower than close_speed
+!> closes them all (contact_body_impact close_at_once), and a closed
+!> contact whose normal force falls to zero opens while the others carry
+!> the body on. Against closed forms:
+!>   - box_flat_rest: a box (m = 2 kg) on two ball feet (radius 0.02 m at
+!>     +-0.2 m along x, 0.1 m below its centre) dropped flat from h = 0.1 m
+!>     with e = 0: one impact at both feet (each m v/2, v = sqrt(2 g h);
+!>     the pair takes m v^2/2), both close, and the box rests on them: N =
+!>     m g/2 at each, its centre 0.12 m above the floor, at rest.
+!>   - slope_slide: the box closed on both feet from the start on a floor
+!>     whose gravity is tilted by alpha = 20 degrees (g sin alpha along x),
+!>     sliding along x at 1 m/s with Coulomb's mu = 0.2 at each foot:
+!>     a = g (sin alpha - mu cos alpha), N_front + N_rear = m g cos alpha,
+!>     friction h = 0.12 m below the centre pitching it forward, N_front -
+!>     N_rear = mu h/d (N_front + N_rear) (d = 0.2 m): N = m g cos alpha
+!>     (1 +- mu h/d)/2.
+!>   - ladder: a rod (ball ends 1 m apart, radius 0.05 m) leaning at
+!>     theta_0 = 60 degrees on a frictionless floor and wall, released at
+!>     rest: at the start N_wall = m (L/2) sin theta_0 m g (L/2) cos
+!>     theta_0/J and N_floor = m g - m (L/2)^2 cos^2 theta_0 m g/J (J = m
+!>     L^2/4 + I_yy); energy kept; the wall's normal force falls to zero at
+!>     sin theta = 2/3 sin theta_0 (the horizontal speed of the centre
+!>     sin theta sqrt(sin theta_0 - sin theta) at its largest, for any
+!>     I_yy), where the wall opens (may_open) and the rod goes on on the
+!>     floor alone to the end of the run.
+!>   - box_landing (inputs/contact/box_landing.nml): its fifth impact closes
+!>     both feet and the box rests on them to the end: N = m g/2 each.
+!>   - refused: a second closed contact that rolls.
+program test_several_closed
+  use base_kinds, only: wp
+  use base_constants, only: standard_gravity
+  use base_status, only: status_t
+  use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
+  use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
+  use contact_flight, only: flight_ode_t, build_flight, carrying_contact
+  use contact_closing, only: drive_flight
+  use contact_bodies, only: build_bodies, start_carriers
+  use io_input, only: input_text_t, input_from_text, load_input_file
+  use io_solver_config, only: solver_config_t, read_solver_config
+  use io_contact_config, only: read_contact_config
+  use testing, only: check, check_close, finish_tests
+  use scenario_fixtures, only: number
+  implicit none (type, external)
+
+  character(len=*), parameter :: nl = new_line('a')
+  real(wp), parameter :: g = standard_gravity, pi = acos(-1.0_wp)
+  real(wp), parameter :: box_mass = 2, d = 0.2_wp, h_centre = 0.12_wp
+
+  call box_flat_rest()
+  call slope_slide()
+  call ladder()
+  call box_landing()
+  call refusals()
+  call finish_tests('test_several_closed')
+
+contains
+
+  !> The box on two ball feet; `start` and `extra` for both contacts,
+  !> `model` the &contact_model group (or '').
+  function box_input(z, start, extra, model, duration) result(text)
+    real(wp), intent(in) :: z, duration
+    character(len=*), intent(in) :: start, extra, model
+    character(len=:), allocatable :: text
+    text = '&run scenario = ''contact'' /'//nl// &
+           '&solver method = ''adams'', rtol = 1e-10, atol = 1e-10, duration = '//number(duration)// &
+           ', output_step = 0.01 /'//nl//model//nl// &
+           '&shape name = ''floor'', kind = ''plane'' /'//nl// &
+           '&shape name = ''rear'', kind = ''sphere'', radius = 0.02, origin = -0.2, 0, -0.1 /'//nl// &
+           '&shape name = ''front'', kind = ''sphere'', radius = 0.02, origin = 0.2, 0, -0.1 /'//nl// &
+           '&body name = ''box'', mass = 2, inertia = 0.0216666666666667, 0.0333333333333333, '// &
+           '0.0416666666666667, position = 0, 0, '//number(z)//' /'//nl// &
+           '&contact name = ''rear_on_floor'', shape_1 = ''floor'', body_2 = ''box'', shape_2 = ''rear'', '// &
+           start//', '//extra//' /'//nl// &
+           '&contact name = ''front_on_floor'', shape_1 = ''floor'', body_2 = ''box'', shape_2 = ''front'', '// &
+           start//', '//extra//' /'//nl
+  end function box_input
+
+  !> Runs a description that may fly (a contact open or that may open) as
+  !> the contact scenario does: drive_flight of its flight, or of its bodies
+  !> as they start (build_bodies).
+  subroutine run_flight(input, flight, open, result, st)
+    type(input_text_t), intent(in) :: input
+    type(flight_ode_t), intent(out), target :: flight
+    integer, allocatable, intent(out) :: open(:, :)
+    type(driver_result_t), intent(out) :: result
+    type(status_t), intent(out) :: st
+    type(solver_config_t) :: solver
+    type(contact_system_t) :: system
+    type(driver_options_t) :: options
+    real(wp), allocatable :: q0(:), qd0(:)
+    character(len=8), allocatable :: units(:)
+    call read_solver_config(input, solver, st)
+    if (st%ok()) call read_contact_config(input, system, st)
+    if (.not. st%ok()) return
+    if (carrying_contact(system) == 0) then
+      call build_flight(system, flight, q0, qd0, units, st)
+    else
+      call build_bodies(system, start_carriers(system), flight, q0, qd0, units, st, 0, .false.)
+    end if
+    if (.not. st%ok()) return
+    options%ode = solver%options
+    options%ode%convergence_coefficient = contact_convergence_coefficient
+    options%t_end = solver%duration
+    options%output_step = solver%output_step
+    options%progress_seconds = 0
+    call flight%start_series(400)
+    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, open)
+  end subroutine run_flight
+
+  !> The place of contact `name` among the series' (0: none).
+  integer function contact_place(names, name) result(k)
+    character(len=*), intent(in) :: names(:), name
+    do k = 1, size(names)
+      if (trim(names(k)) == name) return
+    end do
+    k = 0
+  end function contact_place
+
+  subroutine box_flat_rest()
+    real(wp), parameter :: h = 0.1_wp
+    type(input_text_t) :: input
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    integer, allocatable :: open(:, :)
+    real(wp) :: v, worst_n, worst_z, worst_v
+    integer :: i, k, rear, front, after
+    call input_from_text('box flat', box_input(h_centre + h, 'start = ''open''', &
+                         'restitution = 0, close_speed = 0.1', '', 0.5_wp), input, st)
+    if (st%ok()) call run_flight(input, flight, open, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'box flat: runs to its end: '//st%text()//' '// &
+               flight%outcome)
+    if (.not. st%ok()) return
+    call check(index(flight%outcome, 'contacts ''rear_on_floor'', ''front_on_floor'' closed at the impact at '// &
+                     'several contacts at once') > 0, 'box flat: the outcome says both closed: '//flight%outcome)
+    v = sqrt(2*g*h)
+    call check(size(flight%impacts) == 2, 'box flat: one impact at both feet')
+    if (size(flight%impacts) /= 2) return
+    do k = 1, 2
+      associate (row => flight%impacts(k))
+        call check_close(row%time, sqrt(2*h/g), 0.0_wp, 1e-9_wp, 'box flat: lands at sqrt(2 h/g) (s)')
+        call check_close(row%normal_speed_before, -v, 0.0_wp, 1e-9_wp, 'box flat: approach sqrt(2 g h) (m/s)')
+        call check_close(row%normal_speed_after, 0.0_wp, 0.0_wp, 1e-12_wp, 'box flat: no rebound (m/s)')
+        call check_close(row%normal_impulse, box_mass*v/2, 0.0_wp, 1e-9_wp, 'box flat: m v/2 at each (N s)')
+      end associate
+    end do
+    call check_close(sum(flight%impacts%energy_lost), box_mass*v**2/2, 1e-9_wp, 0.0_wp, &
+                     'box flat: the impact takes m v^2/2 (J)')
+    associate (s => flight%series)
+      rear = contact_place(s%contact_names(:s%nc), 'rear_on_floor')
+      front = contact_place(s%contact_names(:s%nc), 'front_on_floor')
+      call check(rear > 0 .and. front > 0 .and. size(open, 2) == s%n, 'box flat: both contacts recorded')
+      if (rear == 0 .or. front == 0 .or. size(open, 2) /= s%n) return
+      after = findloc(open(1, :), 0, dim=1)
+      call check(after > 0 .and. all(open(:, after:) == 0) .and. all(open(:, :after - 1) == 1), &
+                 'box flat: both open, then both closed for good')
+      if (after == 0) return
+      worst_n = 0
+      worst_z = 0
+      worst_v = 0
+      do i = after, s%n
+        worst_n = max(worst_n, abs(s%normal(rear, i)/(box_mass*g/2) - 1), abs(s%normal(front, i)/(box_mass*g/2) - 1))
+        worst_z = max(worst_z, abs(s%body_r(3, 1, i) - h_centre))
+        worst_v = max(worst_v, norm2(s%body_v(:, 1, i)), norm2(s%body_omega(:, 1, i)))
+      end do
+      call check_close(worst_n, 0.0_wp, 0.0_wp, 1e-9_wp, 'box flat: at rest N = m g/2 at each foot (relative)')
+      call check_close(worst_z, 0.0_wp, 0.0_wp, 1e-12_wp, 'box flat: its centre 0.12 m above the floor (m)')
+      call check_close(worst_v, 0.0_wp, 0.0_wp, 1e-12_wp, 'box flat: at rest (m/s, rad/s)')
+      print '(a, 3es10.2)', '  box flat: N relative, height, speed ', worst_n, worst_z, worst_v
+    end associate
+  end subroutine box_flat_rest
+
+  subroutine slope_slide()
+    real(wp), parameter :: alpha = 20*pi/180, mu = 0.2_wp, v0 = 1
+    type(input_text_t) :: input
+    type(solver_config_t) :: solver
+    type(contact_system_t) :: system
+    type(contact_model_t) :: model
+    type(driver_options_t) :: options
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp) :: a, t, worst_x, worst_v, worst_n(2), n_sum
+    integer :: i, rear, front
+    call input_from_text('slope', box_input(h_centre, 'start = ''closed''', 'friction = ''coulomb'', mu = '// &
+                         number(mu), '&contact_model gravity = '//number(g*sin(alpha))//', 0, '// &
+                         number(-g*cos(alpha))//' /', 1.0_wp), input, st)
+    if (st%ok()) call read_solver_config(input, solver, st)
+    if (st%ok()) call read_contact_config(input, system, st)
+    if (.not. st%ok()) then
+      call check(.false., 'slope: reads: '//st%text())
+      return
+    end if
+    system%bodies(1)%velocity = [v0, 0.0_wp, 0.0_wp]
+    call build_contact_model(system, model, st)
+    call check(st%ok(), 'slope: the box on both feet builds (the front a loop): '//st%text())
+    if (.not. st%ok()) return
+    call check(model%ode%mechanism%f == 4, 'slope: 4 coordinates (6 less one per contact)')
+    options%ode = solver%options
+    options%ode%convergence_coefficient = contact_convergence_coefficient
+    options%t_end = solver%duration
+    options%output_step = solver%output_step
+    options%progress_seconds = 0
+    call model%ode%start_series(200)
+    call drive(model%ode, model%y0, options, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'slope: runs to its end: '//st%text()//' '// &
+               model%ode%outcome)
+    if (.not. st%ok()) return
+    a = g*(sin(alpha) - mu*cos(alpha))
+    n_sum = box_mass*g*cos(alpha)
+    worst_x = 0
+    worst_v = 0
+    worst_n = 0
+    associate (s => model%ode%series)
+      rear = contact_place(s%contact_names(:s%nc), 'rear_on_floor')
+      front = contact_place(s%contact_names(:s%nc), 'front_on_floor')
+      do i = 1, s%n
+        t = s%time(i)
+        worst_x = max(worst_x, abs(s%body_r(1, 1, i) - (v0*t + a*t**2/2)), abs(s%body_r(2, 1, i)), &
+                      abs(s%body_r(3, 1, i) - h_centre))
+        worst_v = max(worst_v, abs(s%body_v(1, 1, i) - (v0 + a*t)), norm2(s%body_omega(:, 1, i)))
+        worst_n(1) = max(worst_n(1), abs(s%normal(front, i) - n_sum*(1 + mu*h_centre/d)/2))
+        worst_n(2) = max(worst_n(2), abs(s%normal(rear, i) - n_sum*(1 - mu*h_centre/d)/2))
+      end do
+    end associate
+    call check_close(worst_x, 0.0_wp, 0.0_wp, 1e-8_wp, 'slope: x = v0 t + a t^2/2, a = g (sin a - mu cos a) (m)')
+    call check_close(worst_v, 0.0_wp, 0.0_wp, 1e-8_wp, 'slope: v = v0 + a t, no spin (m/s)')
+    call check_close(maxval(worst_n)/n_sum, 0.0_wp, 0.0_wp, 1e-9_wp, &
+                     'slope: N = m g cos a (1 +- mu h/d)/2, front and rear (relative)')
+    print '(a, 4es10.2)', '  slope: position, speed, N front, rear ', worst_x, worst_v, worst_n/n_sum
+  end subroutine slope_slide
+
+  subroutine ladder()
+    real(wp), parameter :: theta0 = 60*pi/180, length = 1, r = 0.05_wp, m = 1, iyy = 0.1_wp
+    type(input_text_t) :: input
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    integer, allocatable :: open(:, :)
+    real(wp) :: j, n_wall, n_floor, e0, worst_e
+    integer :: i, wall, floor, lift
+    j = m*length**2/4 + iyy
+    call input_from_text('ladder', '&run scenario = ''contact'' /'//nl// &
+      '&solver method = ''adams'', rtol = 1e-11, atol = 1e-11, duration = 0.6, output_step = 0.005 /'//nl// &
+      '&shape name = ''floor'', kind = ''plane'' /'//nl// &
+      '&shape name = ''wall'', kind = ''plane'', angles_deg = 0, 90, 0 /'//nl// &
+      '&shape name = ''head'', kind = ''sphere'', radius = '//number(r)//', origin = -0.5, 0, 0 /'//nl// &
+      '&shape name = ''foot'', kind = ''sphere'', radius = '//number(r)//', origin = 0.5, 0, 0 /'//nl// &
+      '&body name = ''rod'', mass = '//number(m)//', inertia = 0.001, '//number(iyy)//', '//number(iyy)// &
+      ', angles_deg = 0, 60, 0, position = '//number(r + length*cos(theta0)/2)//', 0, '// &
+      number(r + length*sin(theta0)/2)//' /'//nl// &
+      '&contact name = ''on_floor'', shape_1 = ''floor'', body_2 = ''rod'', shape_2 = ''foot'' /'//nl// &
+      '&contact name = ''on_wall'', shape_1 = ''wall'', body_2 = ''rod'', shape_2 = ''head'', '// &
+      'may_open = .true. /'//nl, input, st)
+    if (st%ok()) call run_flight(input, flight, open, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'ladder: runs to its end: '//st%text()//' '// &
+               flight%outcome)
+    if (.not. st%ok()) return
+    call check(index(flight%outcome, 'lift-off: the normal force of contact ''on_wall'' fell to zero') > 0 .and. &
+               index(flight%outcome, 'the body goes on on its other closed contacts') > 0, &
+               'ladder: the wall opens, the floor carries on: '//flight%outcome)
+    associate (s => flight%series)
+      wall = contact_place(s%contact_names(:s%nc), 'on_wall')
+      floor = contact_place(s%contact_names(:s%nc), 'on_floor')
+      call check(wall > 0 .and. floor > 0 .and. size(open, 2) == s%n, 'ladder: both contacts recorded')
+      if (wall == 0 .or. floor == 0 .or. size(open, 2) /= s%n) return
+      n_wall = m*(length/2)*sin(theta0)*m*g*(length/2)*cos(theta0)/j
+      n_floor = m*g - m*((length/2)*cos(theta0))**2*m*g/j
+      call check_close(s%normal(wall, 1), n_wall, 1e-9_wp, 0.0_wp, 'ladder: N_wall at the start (N)')
+      call check_close(s%normal(floor, 1), n_floor, 1e-9_wp, 0.0_wp, 'ladder: N_floor at the start (N)')
+      lift = findloc(open(2, :), 1, dim=1) - 1
+      call check(lift > 1 .and. all(open(2, lift + 1:) == 1) .and. all(open(1, :) == 0), &
+                 'ladder: the wall closed, then open; the floor closed throughout')
+      if (lift <= 1) return
+      call check_close((s%body_r(3, 1, lift) - r)/(length/2), 2*sin(theta0)/3, 1e-8_wp, 0.0_wp, &
+                       'ladder: the wall opens at sin theta = 2/3 sin theta_0')
+      call check_close(s%time(s%n), 0.6_wp, 0.0_wp, 1e-12_wp, 'ladder: on the floor to the end (s)')
+      e0 = s%kinetic(1) + s%potential(1)
+      worst_e = maxval(abs(s%kinetic(:s%n) + s%potential(:s%n) - e0))
+      call check_close(worst_e, 0.0_wp, 0.0_wp, 1e-8_wp, 'ladder: energy kept (frictionless) (J)')
+      print '(a, 2es10.2)', '  ladder: lift-off sin ratio error, energy ', &
+        (s%body_r(3, 1, lift) - r)/(length/2)/(2*sin(theta0)/3) - 1, worst_e
+    end associate
+  end subroutine ladder
+
+  subroutine box_landing()
+    type(input_text_t) :: input
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    integer, allocatable :: open(:, :)
+    real(wp) :: worst_n, e_fall
+    integer :: i, k, rear, front, after
+    call load_input_file('inputs/contact/box_landing.nml', input, st)
+    if (st%ok()) call run_flight(input, flight, open, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'box landing: runs to its end: '//st%text()//' '// &
+               flight%outcome)
+    if (.not. st%ok()) return
+    call check(size(flight%impacts) == 10, 'box landing: five impacts at both feet')
+    associate (s => flight%series)
+      rear = contact_place(s%contact_names(:s%nc), 'rear_on_floor')
+      front = contact_place(s%contact_names(:s%nc), 'front_on_floor')
+      after = findloc(open(1, :), 0, dim=1)
+      call check(after > 0 .and. all(open(:, after:) == 0), 'box landing: both closed for good after the fifth')
+      if (after == 0 .or. rear == 0 .or. front == 0) return
+      worst_n = 0
+      do i = after, s%n
+        worst_n = max(worst_n, abs(s%normal(rear, i)/(box_mass*g/2) - 1), abs(s%normal(front, i)/(box_mass*g/2) - 1))
+      end do
+      call check_close(worst_n, 0.0_wp, 0.0_wp, 1e-9_wp, 'box landing: at rest N = m g/2 at each foot (relative)')
+      ! every impact's energies sum to the kinetic energy's fall across it
+      do k = 1, 5
+        associate (a => flight%impacts(2*k - 1), b => flight%impacts(2*k))
+          call check(a%time == b%time .and. a%energy_lost + b%energy_lost >= 0, &
+                     'box landing: both feet at once, no energy gained')
+        end associate
+      end do
+      e_fall = s%kinetic(1) + s%potential(1) - s%kinetic(s%n) - s%potential(s%n)
+      call check_close(sum(flight%impacts%energy_lost), e_fall, 1e-8_wp, 0.0_wp, &
+                       'box landing: the impacts take all the energy lost (J)')
+      print '(a, es10.2)', '  box landing: N relative at rest ', worst_n
+    end associate
+  end subroutine box_landing
+
+  subroutine refusals()
+    type(input_text_t) :: input
+    type(contact_system_t) :: system
+    type(contact_model_t) :: model
+    type(status_t) :: st
+    call input_from_text('rolling', box_input(h_centre, 'start = ''closed''', 'rolling = .true.', '', 1.0_wp), &
+                         input, st)
+    if (st%ok()) call read_contact_config(input, system, st)
+    if (st%ok()) call build_contact_model(system, model, st)
+    call check(.not. st%ok() .and. index(st%text(), 'is a closure loop, built at position level without '// &
+               'rolling') > 0, 'a second closed contact that rolls is refused: '//st%text())
+  end subroutine refusals
+end program test_several_closed
