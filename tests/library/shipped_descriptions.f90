@@ -112,6 +112,7 @@ program shipped_descriptions
   call contact_roll_beside_bounce()
   call contact_stacked_balls()
   call contact_box_landing()
+  call contact_ladder()
   if (failures > 0) error stop 1
 
 contains
@@ -903,6 +904,22 @@ contains
     call run_flying('inputs/contact/box_landing.nml', system, 1e-10_wp, 1e-10_wp, 0.005_wp, 1.0_wp)
   end subroutine contact_box_landing
 
+  subroutine contact_ladder()
+    type(contact_system_t) :: system
+    system%shapes = [spec_shape('floor', 'plane', [character(len=1) ::], [real(wp) ::]), &
+                     spec_shape('wall', 'plane', [character(len=1) ::], [real(wp) ::]), ball_shape('head', 0.05_wp), &
+                     ball_shape('foot', 0.05_wp)]
+    system%shapes(2)%description%angles_deg = [0.0_wp, 90.0_wp, 0.0_wp]
+    system%shapes(3)%description%origin = [-0.5_wp, 0.0_wp, 0.0_wp]
+    system%shapes(4)%description%origin = [0.5_wp, 0.0_wp, 0.0_wp]
+    system%bodies = [given_body('rod', 1.0_wp, [0.0_wp, 0.0_wp, 0.0_wp], [0.001_wp, 0.1_wp, 0.1_wp], &
+                                [0.3_wp, 0.0_wp, 0.483012701892219_wp], [0.0_wp, 60.0_wp, 0.0_wp])]
+    system%contacts = [contact('on_floor', 'ground', 'floor', 1.0_wp, 'rod', 'foot', 1.0_wp, .false.), &
+                       contact('on_wall', 'ground', 'wall', 1.0_wp, 'rod', 'head', 1.0_wp, .false.)]
+    system%contacts(2)%may_open = .true.
+    call run_flying('inputs/contact/ladder.nml', system, 1e-11_wp, 1e-11_wp, 0.005_wp, 0.4_wp)
+  end subroutine contact_ladder
+
   !> As scenarios_contact runs a system whose contacts start open or may
   !> open: a flight from the start (build_flight), several bodies some carried
   !> (build_bodies), or a body starting on its closed contact and flying from
@@ -926,7 +943,8 @@ contains
     call check_flight_system(system, st)
     if (carrying_contact(system) == 0) then
       call build_flight(system, flight, q0, qd0, q_units, st)
-    else if (size(system%bodies) > 1) then
+    else if (size(system%bodies) > 1 .or. count(.not. system%contacts%start_open) > 1) then
+      ! several bodies, or one on several closed contacts
       call build_bodies(system, start_carriers(system), flight, q0, qd0, q_units, st, 0, .false., model)
     else
       call build_contact_model(closed_part(system, carrying_contact(system)), model, st)
