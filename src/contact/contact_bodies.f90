@@ -1,5 +1,6 @@
-!> Several bodies, each carried by one closed contact with the ground or
-!> flying (issue 25): one phase of the run as one mechanism, built from the
+!> Several bodies, each carried by its closed contacts with the ground (one,
+!> or several: contact_loops) or flying (issue 25): one phase of the run as
+!> one mechanism, built from the
 !> current set of closed contacts (contact_model: a closed contact carries
 !> its body as in a closed run; every body no closed contact carries is free,
 !> contact_free_body) and driven as a flight (contact_flight flight_ode_t:

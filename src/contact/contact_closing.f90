@@ -4,7 +4,9 @@
 !> from its lift-off, to the end of the run. A body with several contacts
 !> (the surfaces it may land on) is carried by one at a time, built alone
 !> (contact_flight closed_part); the others' gaps are watched meanwhile
-!> (contact_open_gaps carried_ode_t).
+!> (contact_open_gaps carried_ode_t). An impact that closes several at once,
+!> or a start closed on several, goes on through the phases of
+!> contact_bodies (drive_phases): the body on them all (contact_loops).
 !>
 !> Closing: when an impact's rebound is below close_speed the flight stops
 !> there with the contact points' normal velocity taken away

@@ -35,9 +35,11 @@
 !> V, on the floor and another body) is one impact at all of the event's
 !> contacts (impact_at_once: contact_body_impact collide_at_once, Newton's
 !> restitution at each, Coulomb's impact_mu on the velocities after, from
-!> the Delassus matrix of the contacts); without restitution, or where a
-!> rebound is below close_speed (closing at several contacts at once), the
-!> run ends there, saying so.
+!> the Delassus matrix of the contacts); those it leaves slower than their
+!> close_speed close together (contact_body_impact close_at_once) and the
+!> flight stops there with `closings` set to them (contact_closing goes on
+!> with the body on them all: contact_loops); without restitution the run
+!> ends there, saying so.
 !>
 !> Several bodies may fly at once (one mechanism: each body its own six
 !> coordinates, its gaps at its own pose, its impacts changing its own
@@ -61,8 +63,8 @@
 !> contact, are not built).
 !>
 !> The contacts that can open and close are those of bodies with the ground
-!> (each shape_1 fixed, at the ground's pose); of each body's contacts at
-!> most one starts closed (it carries the body); the friction, rolling,
+!> (each shape_1 fixed, at the ground's pose); those of a body that start
+!> closed carry it (several together: contact_loops); the friction, rolling,
 !> level and chain of a contact that starts open are the closed contact's
 !> after closing, so they need restitution (without it the run ends at the
 !> landing and they would be unused). A contact between two bodies starts

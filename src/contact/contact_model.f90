@@ -4,8 +4,9 @@
 !> ("body_1 shape_1 touches body_2 shape_2", friction, rolling, position or
 !> velocity level). One generic builder; no mechanism is coded by hand.
 !>
-!> Every body other than the ground is carried by exactly one contact, the one
-!> that names it body_2 (its relative chain, contact_pair); contacts are
+!> Every body other than the ground is carried by one contact, the first
+!> closed one that names it body_2 (its relative chain, contact_pair); each
+!> further closed contact of it is a closure loop (contact_loops); contacts are
 !> built in the order given, so a contact's body_1 must be the ground or
 !> carried by an earlier contact. Friction laws are any kind of the multibody
 !> core's registry (kinetostatics_force_law_factory), built from the

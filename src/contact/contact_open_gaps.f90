@@ -2,9 +2,9 @@
 !> contacts with the ground, the surfaces it may touch (a dome and the floor
 !> it lands on, a wall and a floor), and several bodies may fly at once, each
 !> gap at its own body's pose (contact_flight), a gap between two bodies
-!> (body_1 not the ground) at both bodies' poses. At most one contact carries
-!> each body closed (`closed`, or `carried` with several bodies:
-!> contact_bodies); the gap of every other (contact_gap: the signed distance
+!> (body_1 not the ground) at both bodies' poses. The closed contacts carry
+!> their bodies (`closed`, or `carried` with several bodies or several
+!> closed contacts of one: contact_bodies); the gap of every other (contact_gap: the signed distance
 !> of its two shapes along their common normal, through the foot-point
 !> solver) is a root function. A gap of a flying body falling through zero
 !> is a landing on that contact; while a contact carries the body
