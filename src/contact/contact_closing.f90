@@ -121,6 +121,7 @@ contains
     do
       if (flying) then
         flight%landed = 0
+        flight%closings = [integer ::]
         if (.not. first) call flight%start_series(16)
         call drive(flight, y, phase_options, phase, status)
         call run%add(flight%series, flight%q_units, flight%beta_units, flight%outcome)
