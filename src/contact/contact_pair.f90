@@ -123,7 +123,7 @@ contains
     real(wp), intent(in) :: side_1, side_2
     type(contact_pair_t), intent(out) :: pair
     type(status_t), intent(inout) :: status
-    real(wp), parameter :: ex(3) = [1, 0, 0], ey(3) = [0, 1, 0], ez(3) = [0, 0, 1]
+    real(wp), parameter :: ez(3) = [0, 0, 1]
     real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
     integer :: k
     character(len=2) :: digit
@@ -156,20 +156,7 @@ contains
     call m%add_element(new_surface_joint(name//'.s2', pair%frame_b, pair%frame_2d, pair%u2, pair%v2, surface_2, &
                                          side_2, 1.0_wp, 0.0_wp, charts=.true.))
     pair%element_s2 = m%n_elements
-    ! closure (3.86)
-    call add_gap_scalars(m, pair)
-    call m%add_element(new_measurement(name//'.g1', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
-                                       pair%gaps(1), axis_i=ex))
-    call m%add_element(new_measurement(name//'.g2', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
-                                       pair%gaps(2), axis_i=ey))
-    call m%add_element(new_measurement(name//'.g3', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
-                                       pair%gaps(3), axis_i=ez))
-    call m%add_element(new_measurement(name//'.g4', MEASURE_PLANE_PLANE, pair%frame_1d, pair%frame_2d, &
-                                       pair%gaps(4), axis_i=ez, axis_j=ex))
-    call m%add_element(new_measurement(name//'.g5', MEASURE_PLANE_PLANE, pair%frame_1d, pair%frame_2d, &
-                                       pair%gaps(5), axis_i=ez, axis_j=ey))
-    call m%add_loop(name, pair%gaps, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], pair%dependents(), status)
-    call m%set_loop_branch(name, pair%frame_1d, pair%frame_2d, status)
+    call add_closure(m, pair, status)
   end subroutine add_contact_pair
 
   !> A second contact of a body the mechanism carries already (its frame
@@ -188,7 +175,6 @@ contains
     real(wp), intent(in) :: side_1, side_2
     type(contact_pair_t), intent(out) :: pair
     type(status_t), intent(inout) :: status
-    real(wp), parameter :: ex(3) = [1, 0, 0], ey(3) = [0, 1, 0], ez(3) = [0, 0, 1]
     call begin_pair(name, frame_a, side_1, side_2, pair, status)
     if (.not. status%ok()) return
     pair%frame_b = frame_b
@@ -199,21 +185,34 @@ contains
     call m%add_element(new_surface_joint(name//'.s2', pair%frame_b, pair%frame_2d, pair%u2, pair%v2, surface_2, &
                                          side_2, 1.0_wp, 0.0_wp, charts=.true.))
     pair%element_s2 = m%n_elements
-    call add_gap_scalars(m, pair)
-    call m%add_element(new_measurement(name//'.g1', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
-                                       pair%gaps(1), axis_i=ex))
-    call m%add_element(new_measurement(name//'.g2', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
-                                       pair%gaps(2), axis_i=ey))
-    call m%add_element(new_measurement(name//'.g3', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
-                                       pair%gaps(3), axis_i=ez))
-    call m%add_element(new_measurement(name//'.g4', MEASURE_PLANE_PLANE, pair%frame_1d, pair%frame_2d, &
-                                       pair%gaps(4), axis_i=ez, axis_j=ex))
-    call m%add_element(new_measurement(name//'.g5', MEASURE_PLANE_PLANE, pair%frame_1d, pair%frame_2d, &
-                                       pair%gaps(5), axis_i=ez, axis_j=ey))
     pair%extra = extra
-    call m%add_loop(name, pair%gaps, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], pair%dependents(), status)
-    call m%set_loop_branch(name, pair%frame_1d, pair%frame_2d, status)
+    call add_closure(m, pair, status)
   end subroutine add_loop_contact_pair
+
+  !> The closure (3.86) of the pair's contact frames K_1D and K_2D: g1..g5
+  !> measured, a loop of them on pair%dependents() (its branch: the normals
+  !> against each other).
+  subroutine add_closure(m, pair, status)
+    type(mechanism_t), intent(inout) :: m
+    type(contact_pair_t), intent(inout) :: pair
+    type(status_t), intent(inout) :: status
+    real(wp), parameter :: ex(3) = [1, 0, 0], ey(3) = [0, 1, 0], ez(3) = [0, 0, 1]
+    associate (name => pair%name)
+      call add_gap_scalars(m, pair)
+      call m%add_element(new_measurement(name//'.g1', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
+                                         pair%gaps(1), axis_i=ex))
+      call m%add_element(new_measurement(name//'.g2', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
+                                         pair%gaps(2), axis_i=ey))
+      call m%add_element(new_measurement(name//'.g3', MEASURE_PLANE_POINT, pair%frame_1d, pair%frame_2d, &
+                                         pair%gaps(3), axis_i=ez))
+      call m%add_element(new_measurement(name//'.g4', MEASURE_PLANE_PLANE, pair%frame_1d, pair%frame_2d, &
+                                         pair%gaps(4), axis_i=ez, axis_j=ex))
+      call m%add_element(new_measurement(name//'.g5', MEASURE_PLANE_PLANE, pair%frame_1d, pair%frame_2d, &
+                                         pair%gaps(5), axis_i=ez, axis_j=ey))
+      call m%add_loop(name, pair%gaps, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], pair%dependents(), status)
+      call m%set_loop_branch(name, pair%frame_1d, pair%frame_2d, status)
+    end associate
+  end subroutine add_closure
 
   !> The open chain of the contact `name` (module comment): S1 on the body
   !> frame `frame_a`, the turn phi about its normal and body B (frame named

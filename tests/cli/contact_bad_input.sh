@@ -97,10 +97,11 @@ printf "%s\n&body name = 'ball', mass = 1, inertia = 1e-5, 1e-5, 1e-5, products 
   "$head" > "$work/indefinite.nml"
 expect indefinite 1 'indefinite.nml:5:' '&body' 'products = [1.0E-04, 0.0, 0.0]' "body 'ball'" 'positive definite'
 
-# a body carried twice: the contact is named once, by its place
+# a body carried twice by the same shapes: its second contact (a closure
+# loop, contact_loops) takes no degree of freedom of its own
 printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n&contact name = 'again', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n" \
   "$head" "$ball" > "$work/twice.nml"
-expect twice 1 'twice.nml:7:' "&contact name = 'again': body_2 = 'ball' is already carried by contact 'c'"
+expect twice 1 'twice.nml:7:' "&contact name = 'again': no coordinate of the contact that carries its body moves it along its normal" 'several closed contacts of one body must each take a degree of freedom of its own'
 
 printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', rolling = .true., chain = 'open' /\n" \
   "$head" "$ball" > "$work/open_rolling.nml"
@@ -114,13 +115,14 @@ printf "%s\n%s\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_
   "$head" "$ball" > "$work/unknown_chain.nml"
 expect unknown_chain 1 'unknown_chain.nml:' '&contact' chain "'closed'" 'open loop'
 
-# several bodies (issue 25): each carried by one closed contact or flying,
-# so a body with two contacts that start closed among several bodies, and a
-# stacked ball that may lift off its carrier (a contact between two bodies
-# that may open), are refused naming the input
+# several bodies (issue 25): each carried by its closed contacts or flying,
+# so a body with two contacts that start closed on the same shapes among
+# several bodies (no degree of freedom for the second), and a stacked ball
+# that may lift off its carrier (a contact between two bodies that may
+# open), are refused naming the input
 printf "%s\n%s\n&body name = 'other', mass = 1, solid_of = 'ball', position = 1, 0, 0.5 /\n&contact name = 'c', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n&contact name = 'c2', shape_1 = 'table', body_2 = 'other', shape_2 = 'ball', start = 'open', restitution = 0.5 /\n&contact name = 'c3', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', may_open = .true. /\n" \
   "$head" "$ball" > "$work/two_closed.nml"
-expect two_closed 1 'two_closed.nml:9:' "&contact name = 'c3'" "of the contacts of body 'ball'" 'at most one starts closed'
+expect two_closed 1 'two_closed.nml:9:' "&contact name = 'c3'" 'no coordinate of the contact that carries its body moves it along its normal'
 printf "%s\n%s\n&body name = 'top', mass = 1, solid_of = 'ball', position = 0, 0, 0.4 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n&contact name = 'stack', body_1 = 'ball', shape_1 = 'ball', body_2 = 'top', shape_2 = 'ball', may_open = .true. /\n" \
   "$head" "$ball" > "$work/top_lifts.nml"
 expect top_lifts 1 'top_lifts.nml:8:' "&contact name = 'stack'" "body_1 = 'ball'" \
