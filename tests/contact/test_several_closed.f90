@@ -239,7 +239,7 @@ contains
     type(status_t) :: st
     integer, allocatable :: open(:, :)
     real(wp) :: j, n_wall, n_floor, e0, worst_e
-    integer :: i, wall, floor, lift
+    integer :: wall, floor, lift
     j = m*length**2/4 + iyy
     call input_from_text('ladder', '&run scenario = ''contact'' /'//nl// &
       '&solver method = ''adams'', rtol = 1e-11, atol = 1e-11, duration = 0.6, output_step = 0.005 /'//nl// &
