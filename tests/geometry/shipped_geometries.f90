@@ -3,7 +3,7 @@
 !> slide of the ride, water, sweep, identification and sled inputs and of
 !> builtin:demo_slide, the default run's), inputs/design/second_slide.nml,
 !> (second_slide_water.nml's), the parts' slides (inputs/parts/*_slide.nml:
-!> drop, halfpipe, bowl, bowl_table, crest, jump, funnel, patch) and
+!> drop, halfpipe, bowl, bowl_table, crest, jump, funnel, patch, bowl_halfpipe) and
 !> inputs/templates/geometry.nml; the list is tests/library/
 !> built_through_library.txt's. Each description is written by hand from
 !> its input file (the same values, in the same arithmetic as the reader:
@@ -30,7 +30,8 @@ program shipped_geometries
   use geometry_slide_builder, only: section_part_description_t
   use geometry_description, only: geometry_description_t, patch_description_t, build_geometry
   use shipped_slides, only: element, circle, demo_slide, template_slide, second_slide, drop_slide, &
-    halfpipe_slide, bowl_slide, bowl_table_slide, crest_slide, jump_slide, funnel_slide, patch_slide
+    halfpipe_slide, bowl_slide, bowl_table_slide, crest_slide, jump_slide, funnel_slide, patch_slide, &
+    bowl_halfpipe_slide
   implicit none (type, external)
 
   character(len=4096) :: folder
@@ -57,6 +58,7 @@ program shipped_geometries
   call put('parts_jump_slide', jump_slide(), 400, 36)
   call put('parts_funnel_slide', funnel_slide(), 800, 36)
   call put('parts_patch_slide', patch_slide(), 800, 48)
+  call put('parts_bowl_halfpipe_slide', bowl_halfpipe_slide(), 800, 36)
   call put('templates_geometry', template_slide(), 400, 48)
   if (failures > 0) then
     print '(i0, a)', failures, ' shipped geometries not built'

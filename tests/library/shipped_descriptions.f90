@@ -58,7 +58,7 @@ program shipped_descriptions
   use rider_flight, only: ride_flights_t, highest_drop
   use rider_vehicle, only: vehicle_t, vehicle_kind_index, build_vehicle_model
   use rider_vehicle_flight, only: vehicle_flight_ode_t, build_vehicle_flight, drive_vehicle
-  use shipped_slides, only: demo_slide_description => demo_slide, halfpipe_slide, jump_slide
+  use shipped_slides, only: demo_slide_description => demo_slide, halfpipe_slide, jump_slide, bowl_halfpipe_slide
   implicit none (type, external)
 
   !> Runaway guard of the command's multibody and point-mass runs
@@ -83,6 +83,8 @@ program shipped_descriptions
   call sled_template()
   call sled_mat()
   call sled_ring()
+  call sled_bowl_halfpipe('mat')
+  call sled_bowl_halfpipe('ring')
   call sled_raft()
   call sled_mat_jump()
   call point_mass_apex_paraboloid()
@@ -290,6 +292,29 @@ contains
     call run_vehicle('inputs/parts/ring.nml', vehicle('double_ring', 2, 1.0_wp, .true.), &
                      vehicle_start(0.5_wp, 1.0_wp), water%slide, water)
   end subroutine sled_ring
+
+  !> inputs/parts/bowl_halfpipe_mat.nml, bowl_halfpipe_ring.nml: a mat or
+  !> a ring with one rider down the half-pipe and bowl slide (docs/
+  !> geometry.md's worked example) in its water, started 1 m down at 1 m/s
+  !> of u (the horizontal length).
+  subroutine sled_bowl_halfpipe(kind)
+    character(len=*), intent(in) :: kind
+    type(water_description_t) :: water
+    allocate (water%slide, source=tube_of(bowl_halfpipe_slide()))
+    water%flow_rate = 0.004_wp
+    water%start%v_left = 1.7207963267948966_wp
+    water%start%v_right = 1.4207963267948966_wp
+    water%f1 = 0.0274748_wp
+    water%f2 = 0.138285_wp
+    water%f3 = 0.979822_wp
+    water%table_step = 0.1_wp
+    water%solver%ode%method = ODE_ADAMS
+    water%solver%ode%rtol = 1e-10_wp
+    water%solver%ode%atol = 1e-9_wp
+    water%solver%output_step = 0.005_wp
+    call run_vehicle('inputs/parts/bowl_halfpipe_'//kind//'.nml', vehicle(kind, 1, 1.0_wp, .true.), &
+                     vehicle_start(1.0_wp, 1.0_wp), water%slide, water)
+  end subroutine sled_bowl_halfpipe
 
   !> inputs/parts/raft.nml: a raft with four children (scale 0.7) down the
   !> half-pipe slide, dry.

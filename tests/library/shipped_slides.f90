@@ -17,6 +17,7 @@ module shipped_slides
   use geometry_description, only: geometry_description_t
   implicit none (type, external)
   private
+  public :: bowl_halfpipe_slide
   public :: element, circle, demo_slide, template_slide, second_slide, drop_slide, halfpipe_slide, bowl_slide, &
     bowl_table_slide, crest_slide, jump_slide, funnel_slide, patch_slide
 
@@ -139,6 +140,25 @@ contains
       element('runout', 8.0_wp, 2.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
     d%slide%section%parts = [section_part_description_t(kind='flume', radius=0.6_wp, wall=0.3_wp)]
   end function bowl_slide
+
+  !> inputs/parts/bowl_halfpipe_slide.nml: the worked example of
+  !> docs/geometry.md, a half-pipe curve and a spherical bowl in one 2.4 m
+  !> flume.
+  function bowl_halfpipe_slide() result(d)
+    type(geometry_description_t) :: d
+    d%kind = 'slide'
+    d%slide%elements%start = [0.0_wp, 0.0_wp, 14.0_wp]
+    d%slide%elements%transition_length = 2.0_wp
+    d%slide%elements%exact = .true.
+    d%slide%elements%elements = [ &
+      element('straight', 8.0_wp, 10.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
+      element('curve', 0.0_wp, 4.0_wp, 8.0_wp, 120.0_wp, 'left', 0.0_wp, 0.0_wp), &
+      element('straight', 4.0_wp, 8.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
+      element('bowl', 0.0_wp, 45.0_wp, 10.0_wp, 0.0_wp, 'left', 0.75_wp, 2.5_wp), &
+      element('straight', 10.0_wp, 14.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
+      element('runout', 8.0_wp, 2.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
+    d%slide%section%parts = [section_part_description_t(kind='flume', radius=1.2_wp, wall=1.0_wp)]
+  end function bowl_halfpipe_slide
 
   !> inputs/parts/bowl_table_slide.nml: the bowl of bowl_slide with its
   !> profile from a table of 15 points (slope 0: the table gives it).

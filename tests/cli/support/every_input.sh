@@ -43,7 +43,8 @@ for input in "$root"/inputs/*.nml "$root"/inputs/*/*.nml; do
     templates_contact) run "$name" --set solver%duration=1 "$input" ;;  # the egg again
     contact_paraboloids) run "$name" --set solver%duration=2 "$input" ;;   # of 20 s
     contact_tower5) run "$name" --set solver%duration=0.5 "$input" ;;   # of the 5 s of the five-body tower input
-    ride_demo_slide | templates_ride | parts_drop | parts_halfpipe | parts_bowl | parts_funnel | parts_patch | parts_bowl_table)   # the default is this ride in full; the parts: test_slide_parts, test_slide_funnel, test_slide_patch, test_slide_bowl_table
+    ride_demo_slide | templates_ride | parts_drop | parts_halfpipe | parts_bowl | parts_funnel | parts_patch | parts_bowl_table \
+      | parts_bowl_halfpipe_mat | parts_bowl_halfpipe_ring)   # the default is this ride in full; the parts: test_slide_parts, test_slide_funnel, test_slide_patch, test_slide_bowl_table, bowl_halfpipe
       run "$name" --set solver%rtol=1e-6 --set solver%atol=1e-5 "$input" ;;
     # loose tolerances end before the lever-arm limit holds (exit 2): without the
     # constraint the end is checked and complete (tests/cli/optimize_verdicts.sh gates)
