@@ -160,12 +160,12 @@ lines = [float(m[1]) for m in marks if m[0] == '-.']
 crosses = [[float(v) for v in m[1:]] for m in marks if m[0] == 'None']
 # speed, felt accelerations, normal forces: the vertical line at `at`
 assert len(lines) == 3 and np.allclose(lines, at, rtol=1e-9), (lines, at)
-# the unrolled slide (arc length, wall angle in degrees) and 3-D: the
+# the unrolled slide (arc length, distance along the wall) and 3-D: the
 # contact's last record
 last_s = f[f'rider/{who}/arc_length'][-1]
 last_p = f[f'rider/{who}/position'][-1]
 assert len(crosses) == 2, marks
-assert abs(crosses[0][0] - last_s) < 1e-8 and abs(crosses[0][1] - np.degrees(f[f'rider/{who}/wall_angle'][-1])) < 1e-6, crosses
+assert abs(crosses[0][0] - last_s) < 1e-8 and abs(crosses[0][1] - f[f'rider/{who}/wall_distance'][-1]) < 1e-9, crosses
 assert np.allclose(crosses[1], last_p, atol=1e-8), (crosses[1], last_p)
 print('ok', who, at, len(marks), 'marks')
 EOF

@@ -1,8 +1,13 @@
 """Plots a ride result file (scenario `ride`, docs/rider.md):
-- the unrolled slide: the angle of the three contacts (pelvis, heels, back)
-  and the water band between its edges over the centerline arc length
-  (0 deg = the bottom of the tube, positive to the left);
-- the rider's speed and the water's;
+- the unrolled slide: the distance along the wall from the bottom of the
+  three contacts (pelvis, heels, back: /rider/<c>/wall_distance) and of the
+  water band between its edges (the table's v measured along the section on
+  the surface grid) over the centerline arc length (0 = the bottom, positive
+  to the left); the distance, not the wall angle, which stops at 90 deg on
+  a flume's vertical wall while the rider climbs on (the angles are in the
+  summary and the CSV);
+- the rider's speed and the water's, with the user's speed limit across
+  the ride and the exit-speed limit as a short line at the exit only;
 - the felt accelerations in g (longitudinal, lateral, normal at the pelvis)
   with the user's acceleration limits;
 - the normal forces of the three contacts;
@@ -17,7 +22,7 @@ pelvis's arc length on the plots over arc length, the whole rider's flights
 (every contact open) darker, and marks each landing
 (/evaluation/flight/landing): a dashed line where the pelvis was at the
 landing's time, and a diamond on the unrolled slide at the landing
-contact's own arc length (in its colour), labelled with the drop height
+contact's own arc length and wall distance (in its colour), labelled with the drop height
 v_n^2/(2g).
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
@@ -56,7 +61,7 @@ def read(f):
     d["speed"] = r["speed"][:]
     d["felt"] = rows(r["acceleration_g"][:])
     for c in CONTACTS:
-        d[c] = {k: r[f"{c}/{k}"][:] for k in ("arc_length", "wall_angle", "normal_force", "in_water")}
+        d[c] = {k: r[f"{c}/{k}"][:] for k in ("arc_length", "wall_distance", "normal_force", "in_water")}
         d[c]["position"] = rows(r[f"{c}/position"][:])
     w = f["/water"]
     d["ejected"] = text(r.attrs["ejected"]) if "ejected" in r.attrs else None
@@ -78,13 +83,13 @@ def read(f):
     d["water_speed"] = w["speed"][:]
     t = f["/water/table"]
     d["table_s"] = t["arc_length"][:]
-    d["table_left"] = t["v_left"][:]
-    d["table_right"] = t["v_right"][:]
-    d["table_mid"] = t["v"][:]
-    d["water_left"] = rows(w["left_point"][:])
-    d["water_right"] = rows(w["right_point"][:])
     g = f["/geometry/surface"]
     d["grid"] = [g[k][:] for k in ("x", "y", "z")]
+    along = section_distance(g["u"][:], g["v"][:], d["grid"])
+    for key, name in (("table_left", "v_left"), ("table_right", "v_right"), ("table_mid", "v")):
+        d[key] = along(t["u"][:], t[name][:])
+    d["water_left"] = rows(w["left_point"][:])
+    d["water_right"] = rows(w["right_point"][:])
     d["limits"] = []
     if "/evaluation/limits" in f:
         for name in f["/evaluation/limits"]:
@@ -95,6 +100,25 @@ def read(f):
                     entry[b] = float(lim[b][()])
             d["limits"].append(entry)
     return d
+
+
+def section_distance(grid_u, grid_v, grid):
+    """A function (u, v) -> the distance along the section at u from its
+    bottom (v = pi/2, as the contacts' wall_distance) to v, positive towards
+    +v (left): the chords of the surface grid's rows either side of u,
+    summed from the bottom, interpolated linearly in u (the grid's chords
+    shorten a circle of radius r by about r dv^2/24 per radian of it)."""
+    points = np.stack(grid, axis=-1)                       # (n_u, n_v, 3)
+    chords = np.linalg.norm(np.diff(points, axis=1), axis=2)
+    along = np.concatenate([np.zeros((len(grid_u), 1)), np.cumsum(chords, axis=1)], axis=1)
+    along -= np.array([np.interp(math.pi / 2, grid_v, row) for row in along])[:, None]
+
+    def at(u, v):
+        k = np.clip(np.searchsorted(grid_u, u), 1, len(grid_u) - 1)
+        w = np.clip((u - grid_u[k - 1]) / (grid_u[k] - grid_u[k - 1]), 0.0, 1.0)
+        return np.array([(1 - wi) * np.interp(vi, grid_v, along[ki - 1]) + wi * np.interp(vi, grid_v, along[ki])
+                         for vi, ki, wi in zip(v, k, w)])
+    return at
 
 
 def airborne_spans(s, flying):
@@ -127,19 +151,19 @@ def mark_flights(ax, d, label=False):
                    label="a landing" if label and j == 0 else None)
 
 
-def mark_landings_on_slide(ax, d, deg):
+def mark_landings_on_slide(ax, d):
     """Each landing at its contact's arc length on the unrolled slide, with
     its drop height."""
     seen = set()
     for j, landing in enumerate(d["landings"]):
         c = landing["contact"]
         path = d[c]
-        angle = np.interp(landing["contact_s"], path["arc_length"], path["wall_angle"]) * deg
-        ax.plot([landing["contact_s"]], [angle], "D", color=COLOURS[c], mec="k", ms=7, gid="landing",
+        height = np.interp(landing["contact_s"], path["arc_length"], path["wall_distance"])
+        ax.plot([landing["contact_s"]], [height], "D", color=COLOURS[c], mec="k", ms=7, gid="landing",
                 label=f"{c}' landing" if c.endswith("s") and c not in seen else
                 (f"{c}'s landing" if c not in seen else None), zorder=5)
         seen.add(c)
-        ax.annotate(f"{100 * landing['drop_height']:.3g} cm drop", (landing["contact_s"], angle),
+        ax.annotate(f"{100 * landing['drop_height']:.3g} cm drop", (landing["contact_s"], height),
                     textcoords="offset points", xytext=(4, 6 + 10 * (j % 3)), fontsize=7, gid="landing")
 
 
@@ -162,7 +186,6 @@ def mark_ejected_contact(ax, d, x, y, z=None):
 def draw(result, plt, args):
     """The figure of a result; args: the command line's."""
     d = read(result.file)
-    deg = 180 / math.pi
     s = d["s"]
 
     fig = plt.figure(figsize=(15, 14))
@@ -170,17 +193,17 @@ def draw(result, plt, args):
     grid = fig.add_gridspec(3, 2, height_ratios=[1, 1, 1.7])
 
     ax = fig.add_subplot(grid[0, 0])
-    ax.fill_between(d["table_s"], (d["table_right"] - math.pi / 2) * deg, (d["table_left"] - math.pi / 2) * deg,
-                    color="tab:blue", alpha=0.25, label="water band")
-    ax.plot(d["table_s"], (d["table_mid"] - math.pi / 2) * deg, color="tab:blue", lw=0.6, label="water middle")
+    ax.fill_between(d["table_s"], d["table_right"], d["table_left"], color="tab:blue", alpha=0.25,
+                    label="water band")
+    ax.plot(d["table_s"], d["table_mid"], color="tab:blue", lw=0.6, label="water middle")
     for c in CONTACTS:
-        ax.plot(d[c]["arc_length"], d[c]["wall_angle"] * deg, color=COLOURS[c], lw=1.0, label=c)
+        ax.plot(d[c]["arc_length"], d[c]["wall_distance"], color=COLOURS[c], lw=1.0, label=c)
     if d["ejected"]:
-        mark_ejected_contact(ax, d, d[d["ejected"]]["arc_length"], d[d["ejected"]]["wall_angle"] * deg)
-    mark_landings_on_slide(ax, d, deg)
+        mark_ejected_contact(ax, d, d[d["ejected"]]["arc_length"], d[d["ejected"]]["wall_distance"])
+    mark_landings_on_slide(ax, d)
     ax.set_xlabel("arc length along the slide (m)")
-    ax.set_ylabel("angle from the bottom (deg, + left)")
-    ax.set_title("the unrolled slide: contacts and water")
+    ax.set_ylabel("distance along the wall from the bottom (m, + left)")
+    ax.set_title("the unrolled slide: contacts and water, distance up the wall")
     ax.legend(fontsize=7, loc="lower left")
     ax.grid(alpha=0.3)
 
@@ -188,9 +211,12 @@ def draw(result, plt, args):
     ax.plot(s, d["speed"], color="k", label="rider (pelvis)")
     ax.plot(d["water_s"], d["water_speed"], color="tab:blue", lw=0.8, label="water")
     for lim in d["limits"]:
-        if lim["quantity"] in ("speed", "exit_speed") and "maximum" in lim:
-            ax.axhline(lim["maximum"], color="tab:red", ls="--", lw=0.8,
-                       label=f"{lim['quantity']} limit ({lim['verdict']})")
+        if lim["quantity"] == "speed" and "maximum" in lim:
+            ax.axhline(lim["maximum"], color="tab:red", ls="--", lw=0.8, gid="limit",
+                       label=f"speed limit ({lim['verdict']})")
+        elif lim["quantity"] == "exit_speed" and "maximum" in lim:   # judged at the exit only
+            ax.plot([s[-1] - 0.08 * (s[-1] - s[0]), s[-1]], [lim["maximum"]] * 2, color="tab:red", lw=2.0,
+                    gid="limit", label=f"exit_speed limit, at the exit ({lim['verdict']})")
     mark_ejection(ax, d, label=True)
     mark_flights(ax, d, label=True)
     ax.set_xlabel("arc length (m)")
