@@ -274,16 +274,19 @@ contains
     type(group_reader_t) :: r
     type(vehicle_body_t) :: vb
     real(wp) :: room, u_at
-    character(len=:), allocatable :: given
+    character(len=:), allocatable :: given, why
     integer :: k
     if (.not. status%ok()) return
     figures%in_water = vehicle%in_water
     if (.not. vehicle%in_water) then
       do k = 1, size(water_only_groups)
         if (.not. group_present(input, trim(water_only_groups(k)))) cycle
+        why = '&sled water = ''dry'''
+        if (vehicle%kind == VEHICLE_BAR) why = 'it is the plain bar: &sled gives no vehicle'
         call set_status(status, STATUS_INVALID_INPUT, where_given(input, trim(water_only_groups(k)), '')// &
-                        ': &'//trim(water_only_groups(k))//' is not read: the sled rides dry (&sled water = '// &
-                        '''dry'', or the plain bar); a vehicle rides in the water with water = ''computed''')
+                        ': &'//trim(water_only_groups(k))//' is not read: the sled rides dry ('//why// &
+                        '); a vehicle (&sled vehicle = ''mat'', ''ring'', ...) rides in the water with water = '// &
+                        '''computed''')
         return
       end do
       return

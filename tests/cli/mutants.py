@@ -142,10 +142,13 @@ def non_finite(path):
     return (status.decode() if isinstance(status, bytes) else status), bad
 
 
-# exit-1 messages about the structure of the file, where no variable is involved
+# exit-1 messages about the structure of the file, where no variable is involved; also a whole
+# group the run does not read ("FILE:LINE: &water is not read: the sled rides dry (it is the plain
+# bar: &sled gives no vehicle)": the group and its line are the place, as group_injection.py asks)
 STRUCTURAL = re.compile(r'is not closed|text outside a group|is empty|is not text|&end without|'
                         r'unknown namelist group|no &run group|appears more than once|without "=" and a value|'
-                        r'unexpected "|not a namelist|expected a variable name|is missing: |without a group name')
+                        r'unexpected "|not a namelist|expected a variable name|is missing: |without a group name|'
+                        r'error: [^ ]+:\d+: &[a-z_]+ is not read: ')
 # how a message names a variable: "&group: var ...", "var = value", "var(i) = value", unknown variable "var"
 VARIABLE_NAMED = [re.compile(r'&[a-z_]+: ([a-z_][a-z0-9_]*)'),
                   re.compile(r'(?<![\w&%])([a-z_][a-z0-9_]*)(?:\([^)]*\))? = '),
