@@ -10,7 +10,8 @@
 # water band's middle is the table's v measured along the section, which
 # matches the pelvis's own wall distance where the pelvis is in the water's
 # middle; a vehicle's plot has the same panel from
-# /sled/vehicle/<contact>/wall_distance.
+# /sled/vehicle/<contact>/wall_distance. A point mass circling in a bowl at
+# constant speed has its speed and normal force drawn flat.
 set -u
 slidesim=$1
 root=$(pwd)
@@ -33,7 +34,8 @@ for input in "$root"/inputs/parts/*.nml; do
 done
 [ "$count" -ge 23 ] || fail "only $count inputs in inputs/parts"
 # what the unrolled panels draw (a ride on the half-pipe, the ring on it)
-"$python" - "$root/python" "$results/parts_halfpipe.h5" "$results/parts_ring.h5" >"$work/panels.out" 2>&1 <<'EOF' \
+"$python" - "$root/python" "$results/parts_halfpipe.h5" "$results/parts_ring.h5" "$results/parts_bowl_point_mass.h5" \
+  >"$work/panels.out" 2>&1 <<'EOF' \
   || fail "the unrolled panels: $(cat "$work/panels.out")"
 import sys
 sys.path.insert(0, sys.argv[1])
@@ -43,7 +45,7 @@ import h5py
 import numpy as np
 from slidesim.plot import figure
 
-ride, sled = sys.argv[2:4]
+ride, sled, circling = sys.argv[2:5]
 fig = figure(ride)
 ax = fig.axes[0]
 assert "distance along the wall" in ax.get_ylabel(), ax.get_ylabel()
@@ -74,6 +76,21 @@ with h5py.File(sled, "r") as f:
         c = l.get_label().split()[0]
         assert np.array_equal(l.get_ydata(), f[f"sled/vehicle/{c}/wall_distance"][...]), c
     print("sled: the contacts' wall distance drawn")
+# a point mass circling in a bowl at constant speed: its speed and normal
+# force drawn flat, not a spread of 1e-12 stretched over the axis against
+# an offset (which read as a speed falling from 8 to 4 m/s)
+fig = figure(circling)
+fig.canvas.draw()
+with h5py.File(circling, "r") as f:
+    for name in ("speed", "normal_force"):
+        values = f[f"point_mass/{name}"][...]
+        ax = [a for a in fig.axes if a.get_ylabel().startswith(name.replace("_", " "))][0]
+        low, high = ax.get_ylim()
+        assert np.ptp(values) < 1e-9 * np.abs(values).max(), (name, np.ptp(values))
+        assert high - low > 1e-3 * np.abs(values).max(), (name, low, high)
+        assert ax.yaxis.get_offset_text().get_text() == "", (name, ax.yaxis.get_offset_text().get_text())
+        assert ax.get_legend().get_texts()[0].get_text().startswith("constant to "), name
+    print("point mass: speed and normal force drawn flat")
 EOF
 echo "$count inputs of inputs/parts run and plotted, $failures failures"
 [ "$failures" = 0 ]

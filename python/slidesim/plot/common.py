@@ -36,6 +36,26 @@ def draw_surface(ax, result, alpha=0.35, u_range=None):
     return np.column_stack([x.ravel(), y.ravel(), z.ravel()])
 
 
+def plot_nearly_constant(ax, t, values, unit):
+    """values over t, drawn so that a quantity constant to rounding looks
+    constant: matplotlib would stretch a spread of 1e-12 over the whole axis
+    and label the ticks against an offset ('1e-13+5.18'), which reads as a
+    speed falling from 8 to 4 m/s. A spread below 1e-6 of the values' size
+    is drawn on an axis 1e-3 of it either side, the spread said in the
+    legend."""
+    import numpy as np
+    ax.ticklabel_format(axis="y", useOffset=False)
+    size = float(np.max(np.abs(values))) if len(values) else 0.0
+    spread = float(np.ptp(values)) if len(values) else 0.0
+    if size > 0 and spread < 1e-6 * size:
+        mid = float(np.mean(values))
+        ax.plot(t, values, label=f"constant to {spread:.1e} {unit}")
+        ax.set_ylim(mid - 1e-3 * size, mid + 1e-3 * size)
+        ax.legend(loc="upper right", fontsize=8)
+    else:
+        ax.plot(t, values)
+
+
 def title(result):
     """The file's title, scenario and how the run ended."""
     text = result.attrs.get("title") or result.scenario

@@ -1,12 +1,14 @@
 """Plots a point-mass result (scenario point_mass): the path on the surface in
-3-D, speed and normal force over time, and the energy balance (energy minus
-friction work, which must stay constant).
+3-D, speed and normal force over time (a value constant to rounding, as on
+a horizontal circle in a bowl, drawn flat with its spread in the legend),
+and the energy balance (energy minus friction work, which must stay
+constant).
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
 import numpy as np
 
-from .common import draw_surface, equal_axes_3d, title
+from .common import draw_surface, equal_axes_3d, plot_nearly_constant, title
 
 SCENARIOS = ("point_mass",)
 
@@ -26,11 +28,11 @@ def draw(r, plt, args):
     equal_axes_3d(ax, np.vstack([pts, xyz]))
     ax.set_title("path on the surface")
     ax = fig.add_subplot(3, 2, 2)
-    ax.plot(t, r[g + "speed"].values)
+    plot_nearly_constant(ax, t, r[g + "speed"].values, "m/s")
     ax.set_ylabel("speed [m/s]")
     ax.grid(True)
     ax = fig.add_subplot(3, 2, 4)
-    ax.plot(t, r[g + "normal_force"].values)
+    plot_nearly_constant(ax, t, r[g + "normal_force"].values, "N")
     ax.set_ylabel("normal force [N]")
     ax.grid(True)
     ax = fig.add_subplot(3, 2, 6)
