@@ -10,17 +10,19 @@
 module io_surface_config
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status, set_status, STATUS_INVALID_INPUT
+  use geometry_surface, only: surface_t
   use geometry_surface_kind, only: surface_kind_t
   use geometry_surface_factory, only: surface_kinds, surface_kind_index
   use geometry_surface_description, only: surface_description_t
   use io_input, only: input_text_t, group_reader_t, open_group, load_input_file, group_present, &
-                      check_known_groups, where_given
+                      check_known_groups, where_given, format_real
   use io_kind_parameters, only: read_kind_parameters, refuse_other_parameters, parameter_variables
   use io_geometry_config, only: read_geometry_description, explain_geometry_failure, geometry_groups, &
     geometry_file_groups
   implicit none (type, external)
   private
   public :: read_surface_config, surface_variables, surface_kind_names, surface_source_t, explain_surface_failure
+  public :: start_domain_words
 
   integer, parameter :: name_length = 32
 
@@ -208,6 +210,31 @@ contains
     call explain_geometry_failure(source%geometry_input, built, part, variable, source%bspline_file, status)
     if (len(source%geometry_file_prefix) > 0) call prefix_status(status, source%geometry_file_prefix)
   end subroutine explain_surface_failure
+
+  !> What a start (u0, v0) outside `surface`'s domain is refused with: the
+  !> domain's bounds (a slide of elements: u its horizontal length with
+  !> centerline_kind = 'exact', docs/geometry.md; not the arc length).
+  function start_domain_words(surface) result(words)
+    class(surface_t), intent(in) :: surface
+    character(len=:), allocatable :: words
+    real(wp) :: u_min, u_max, v_min, v_max
+    call surface%domain(u_min, u_max, v_min, v_max)
+    words = 'the start must lie in the parameter domain of the '//surface%describe()//': u '// &
+            bounds_words(u_min, u_max, surface%periodic_u())//', v '//bounds_words(v_min, v_max, surface%periodic_v())
+  contains
+    function bounds_words(low, high, periodic) result(text)
+      real(wp), intent(in) :: low, high
+      logical, intent(in) :: periodic
+      character(len=:), allocatable :: text
+      if (periodic) then
+        text = 'any (periodic)'
+      else if (low <= -huge(1.0_wp) .and. high >= huge(1.0_wp)) then
+        text = 'any'
+      else
+        text = 'in ['//format_real(low)//', '//format_real(high)//']'
+      end if
+    end function bounds_words
+  end function start_domain_words
 
   !> The variables of every registered surface kind's parameters (the names
   !> a &surface or &shape may hold beside kind, origin, angles_deg, geometry_file).

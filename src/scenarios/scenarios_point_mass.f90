@@ -13,7 +13,7 @@ module scenarios_point_mass
   use io_input, only: input_text_t, check_known_groups, invalid, format_real, mark_input_failure, where_given
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config, check_output_count
-  use io_surface_config, only: read_surface_config, surface_source_t, explain_surface_failure
+  use io_surface_config, only: read_surface_config, surface_source_t, explain_surface_failure, start_domain_words
   use geometry_surface_description, only: surface_description_t, build_surface
   use io_geometry_config, only: geometry_groups
   use io_point_mass_config, only: read_point_mass_config
@@ -63,7 +63,7 @@ contains
     ! said here too, with the line of the start
     if (.not. surface%in_domain(description%u0, description%v0)) then
       call invalid(input, 'point_mass', 'u0, v0', format_real(description%u0)//', '//format_real(description%v0), &
-                   'the start must lie in the parameter domain of the '//surface%describe(), status)
+                   start_domain_words(surface), status)
       return
     end if
     call build_point_mass_model(description, surface, model, y0, status)

@@ -31,7 +31,7 @@ module scenarios_sled
   use io_input, only: input_text_t, check_known_groups, invalid, format_real, mark_input_failure
   use io_run_config, only: run_config_t
   use io_solver_config, only: solver_config_t, read_solver_config
-  use io_surface_config, only: read_surface_config, surface_source_t, explain_surface_failure
+  use io_surface_config, only: read_surface_config, surface_source_t, explain_surface_failure, start_domain_words
   use geometry_surface_description, only: surface_description_t, build_surface
   use io_mechanism_config, only: read_sled_config
   use io_geometry_config, only: geometry_groups
@@ -129,7 +129,7 @@ contains
     if (.not. status%ok()) return
     if (.not. surface%in_domain(config%q0(1), config%q0(2))) then
       call invalid(input, 'sled', 'u0, v0', format_real(config%q0(1))//', '//format_real(config%q0(2)), &
-                   'the start must lie in the parameter domain of the '//surface%describe(), status)
+                   start_domain_words(surface), status)
       return
     end if
     if (vehicle%kind /= VEHICLE_BAR) call check_vehicle_fits(input, vehicle, surface, figures, status)
