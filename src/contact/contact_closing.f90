@@ -49,7 +49,7 @@ module contact_closing
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, add_driver_result, DRIVE_EVENT_STOP, &
     DRIVE_FAILED, RECORD_EVENT
   use kinetostatics_recorder, only: mechanism_series_t, join_series
-  use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_LIFT_OFF
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_LIFT_OFF, STOP_NOT_BUILT
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model
   use contact_flight, only: flight_ode_t, build_flight, restart_flight, closed_part, carrying_contact
   use contact_open_gaps, only: carried_ode_t, carry, touching_gap_limit
@@ -66,6 +66,7 @@ module contact_closing
     real(wp), allocatable :: gap(:, :)                     ! contacts x records, m (0 closed)
     real(wp), allocatable :: point(:, :, :), velocity(:, :, :)   ! 3 x contacts x records: point, slip
     character(len=:), allocatable :: history               ! every phase's outcome
+    logical :: not_built = .false.                         ! the last phase stopped where the model is not built
   contains
     procedure :: add => phases_add
     procedure :: add_flight => phases_add_flight
@@ -126,8 +127,9 @@ contains
         call drive(flight, y, phase_options, phase, status)
         call run%add(flight%series, flight%q_units, flight%beta_units, flight%outcome)
         call run%add_flight(flight)
+        run%not_built = flight%stop_kind == STOP_NOT_BUILT
         next = status%ok() .and. phase%outcome == DRIVE_EVENT_STOP .and. flight%landed > 0 .and. &
-               phase%t < options%t_end
+               phase%t < options%t_end .and. .not. run%not_built
         if (next .and. size(flight%closings) > 1) then
           ! several contacts closed at once: the body on them all (contact_bodies) from here
           call add_result(result, phase, first)
@@ -150,6 +152,7 @@ contains
         call carried%start_series(16)
         call drive(carried, y, phase_options, phase, status)
         chart_changes = chart_changes + carried%chart_changes
+        run%not_built = carried%stop_kind == STOP_NOT_BUILT
         next = status%ok() .and. phase%outcome == DRIVE_EVENT_STOP .and. carried%stop_kind == STOP_LIFT_OFF .and. &
                flight%system%contacts(flight%closed_on)%may_open .and. phase%t < options%t_end
         if (next) carried%outcome = carried%outcome//': the contact opens (may_open), the body flies'
@@ -174,6 +177,7 @@ contains
       phase_options%t_start = phase%t
     end do
     call run%finish(flight)
+    call fail_where_not_built(run, flight, result, status)
     if (handed_over) call on_first_frames(flight)
     flight%chart_changes = flight%chart_changes + chart_changes
     open = run%open
@@ -255,6 +259,7 @@ contains
     chart_changes = 0
     call drive_phases(flight, none, y0, options, phase_options, run, result, .true., chart_changes, status)
     call run%finish(flight)
+    call fail_where_not_built(run, flight, result, status)
     call on_first_frames(flight)
     flight%chart_changes = flight%chart_changes + chart_changes
     open = run%open
@@ -303,6 +308,7 @@ contains
       call run%add(p%series, p%q_units, p%beta_units, p%outcome)
       call run%add_flight(p)
       if (.not. starting) chart_changes = chart_changes + p%chart_changes
+      run%not_built = p%stop_kind == STOP_NOT_BUILT
       lifted = .false.
       c = 0
       if (p%stop_kind == STOP_LIFT_OFF) then
@@ -310,7 +316,7 @@ contains
         if (c > 0) lifted = p%system%contacts(c)%may_open
       end if
       next = status%ok() .and. phase%outcome == DRIVE_EVENT_STOP .and. phase%t < options%t_end .and. &
-             (size(p%closings) > 0 .or. lifted)
+             (size(p%closings) > 0 .or. lifted) .and. .not. run%not_built
       if (next) then
         closed = p%gaps%carried
         touching = p%gaps%touching
@@ -349,6 +355,21 @@ contains
     end do
     if (.not. associated(p, flight)) flight%impacts = p%impacts
   end subroutine drive_phases
+
+  !> A run whose last phase stopped at a case the model does not follow
+  !> (STOP_NOT_BUILT: contact_flight's add_outcome, carried_handle_event) has
+  !> failed part way: its status says where and why (the whole run's
+  !> outcome), the records up to there kept (exit status 2, the file marked
+  !> incomplete), not a normal end.
+  subroutine fail_where_not_built(run, flight, result, status)
+    type(phases_t), intent(in) :: run
+    type(flight_ode_t), intent(in) :: flight
+    type(driver_result_t), intent(inout) :: result
+    type(status_t), intent(inout) :: status
+    if (.not. (run%not_built .and. status%ok())) return
+    call set_status(status, STATUS_DOMAIN, flight%outcome//' (the results up to here are kept)')
+    result%outcome = DRIVE_FAILED
+  end subroutine fail_where_not_built
 
   !> The bodies of flight's series on the first phase's frames, whose
   !> mechanism (flight's) reports the run.

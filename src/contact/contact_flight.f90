@@ -1,13 +1,10 @@
 !> Flight: bodies whose contacts are open (issue 25).
 !>
-!> Each body flies free: it hangs from the ground by three prismatic joints
-!> along the world axes (the origin of its frame) and a free rotation
-!> (kinetostatics_free_rotation, its chart centred on the start pose), and
-!> carries its mass element under gravity. Its coordinates are the origin
-!> (x, y, z) and the rotation's angles, its speeds their rates: the state is
-!> the pose and twist, continuous (the rotation's chart changes keep them).
-!> A body with a drag_area feels the air's drag in flight as when closed
-!> (contact_factory add_air_drag).
+!> Each body flies free, hung from the ground by three prismatic joints along
+!> the world axes (its frame's origin) and a free rotation (kinetostatics_free_rotation,
+!> chart centred on the start pose), its mass element under gravity: the state, the
+!> origin, the rotation's angles and their rates, is the pose and twist, continuous
+!> across chart changes. A drag_area gives the air's drag as when closed (add_air_drag).
 !>
 !> The body may have several contacts with the ground: the surfaces it may
 !> land on (a dome and the floor below it). The gap of each (contact_open_gaps:
@@ -49,8 +46,8 @@
 !> closed contacts with the flying bodies free, the closed contacts' gaps
 !> not watched): a closing stops the flight there as for one body, and
 !> contact_closing (drive_bodies) goes on with that body carried, the others
-!> as they were. A carried body touching another surface ends the run (two
-!> closed contacts on one body are not built).
+!> as they were. A carried body touching another surface fails the run (two
+!> closed contacts on one body are not built: add_outcome's not_built).
 !>
 !> Bodies hit each other: a contact between two bodies (body_1 a body, its
 !> shape_1 on body_1's frame) that starts open is watched as the ground's
@@ -58,9 +55,8 @@
 !> pair (contact_body_impact: K = K_1 + K_2, +L on body_2, -L on body_1, the
 !> pair's momentum kept) while both fly, and the bodies fly on. A rebound
 !> below its close_speed, or a hit on a body that a closed contact carries
-!> (whose carrying contact would take an impulse too), ends the run there,
-!> saying so (bodies closed on each other, and impacts through a closed
-!> contact, are not built).
+!> (whose carrying contact would take an impulse too), fails the run there
+!> (not built: bodies closed on each other, impacts through a closed contact).
 !>
 !> The contacts that can open and close are those of bodies with the ground
 !> (each shape_1 fixed, at the ground's pose); those of a body that start
@@ -76,7 +72,7 @@ module contact_flight
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use numerics_event_driver, only: EVENT_STOP, EVENT_RESTART
   use numerics_linear_algebra, only: lu_factor, lu_solve
-  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_NOT_BUILT
   use kinetostatics_impact, only: impact_law_t
   use geometry_solid, only: solid_properties_t
   use contact_factory, only: body_from_spec
@@ -436,7 +432,7 @@ contains
           call add_outcome(self, 'contact '''//contact%name//''': body '''//contact%body_2//''' touches shape '''// &
                            contact%shape_1//''' at t = '//format_short(t)//' s while contact '''// &
                            self%system%contacts(self%carrier(self%gaps%body(c)))%name//''' carries it (two '// &
-                           'closed contacts on one body are not built): the run ends here')
+                           'closed contacts on one body are not built): the run ends here', not_built=.true.)
           return
         end if
         if (self%gaps%body_1(c) == 0) cycle
@@ -446,7 +442,7 @@ contains
                          contact%body_1//''' at t = '//format_short(t)//' s while contact '''// &
                          self%system%contacts(self%carrier(self%gaps%body_1(c)))%name//''' carries '''// &
                          contact%body_1//''' (an impact on a carried body, whose carrying contact would take an '// &
-                         'impulse too, is not built): the run ends here')
+                         'impulse too, is not built): the run ends here', not_built=.true.)
         return
       end associate
     end do
@@ -540,7 +536,8 @@ contains
         call add_outcome(self, 'contact '''//contact%name//''': the rebound at the impact at t = '// &
                          format_short(t)//' s, '//format_short(hit%outcome%normal_speed_after)//' m/s, is below '// &
                          'close_speed: bodies '''//contact%body_1//''' and '''//contact%body_2//''' would stay in '// &
-                         'contact (two bodies closed on each other are not built): the run ends here')
+                         'contact (two bodies closed on each other are not built): the run ends here', &
+                         not_built=.true.)
       else
         action = max(action, EVENT_RESTART)
       end if
@@ -616,7 +613,7 @@ contains
     end do
     if (allocated(stopped)) then
       action = max(action, EVENT_STOP)
-      call add_outcome(self, stopped)
+      call add_outcome(self, stopped, not_built=.true.)
     else if (any(closing)) then
       action = max(action, EVENT_STOP)
       self%closings = [self%closings, pack(c, closing)]
@@ -643,11 +640,14 @@ contains
     end associate
   end function impact_body
 
-  subroutine add_outcome(self, text)
+  !> not_built: a stop the model cannot go on from; drive_flight fails the run there (exit 2, records kept)
+  subroutine add_outcome(self, text, not_built)
     class(flight_ode_t), intent(inout) :: self
     character(len=*), intent(in) :: text
+    logical, intent(in), optional :: not_built
     if (len(self%outcome) > 0) self%outcome = self%outcome//'; '
     self%outcome = self%outcome//text
+    if (present(not_built)) self%stop_kind = merge(STOP_NOT_BUILT, self%stop_kind, not_built)
   end subroutine add_outcome
 
   !> The mechanism's record, with each contact's gap at its body's pose, its

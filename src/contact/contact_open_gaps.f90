@@ -27,7 +27,7 @@ module contact_open_gaps
   use base_vector, only: cross
   use numerics_event_driver, only: EVENT_STOP
   use kinetostatics_mechanism, only: mechanism_workspace_t
-  use kinetostatics_mechanism_ode, only: mechanism_ode_t
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_NOT_BUILT
   use contact_model, only: contact_system_t, body_index
   use contact_gap, only: contact_gap_t, new_contact_gap
   implicit none (type, external)
@@ -375,6 +375,7 @@ contains
              'contacts on one body are not built): the run ends here'
       if (len(self%outcome) > 0) text = '; '//text
       self%outcome = self%outcome//text
+      self%stop_kind = STOP_NOT_BUILT   ! drive_flight fails the run here (a lift-off with it would fly on)
       action = max(action, EVENT_STOP)
     end do
   end subroutine carried_handle_event

@@ -24,10 +24,12 @@ module kinetostatics_mechanism_ode
 
   !> What stopped a run (mechanism_ode_t%stop_kind, with `outcome` its words):
   !> a surface joint at its end or start in u, at a side edge in v, a
-  !> one-sided contact's normal force falling to zero; none (a caller's own
-  !> stop, the end time, a failure).
+  !> one-sided contact's normal force falling to zero; a case the model does
+  !> not follow (an extension's STOP_NOT_BUILT: its runner fails the run there,
+  !> the results up to it kept); none (a caller's own stop, the end time, a
+  !> failure).
   integer, parameter, public :: STOP_NONE = 0, STOP_END_OF_SURFACE = 1, STOP_START_OF_SURFACE = 2, &
-    STOP_SIDE_EDGE = 3, STOP_LIFT_OFF = 4
+    STOP_SIDE_EDGE = 3, STOP_LIFT_OFF = 4, STOP_NOT_BUILT = 5
 
   !> How near zero N must be at a lift-off root, relative to the largest |N|
   !> of the contact at the start and the outputs (check_lift_off). At a
