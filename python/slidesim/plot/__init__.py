@@ -7,7 +7,8 @@ writes PICTURE (png, pdf or svg; default: the result's name with .png) and,
 with --show and a display, also opens a window; without a display matplotlib
 runs headless (Agg). --kind picks another plot of the same scenario (egg: the
 spinning egg's tilt against Moffatt-Shimomura, from several contact results
-compared) or insists on one (a file of another scenario is refused).
+compared) or insists on one (a file of another scenario is refused; --kind
+water draws the /water group of any result that has one: water, ride, sled).
 --movie FILM (when the package has slidesim.movie) films a ride. Exit
 status 0 done, 1 the file is not a result of a scenario with a plot (the
 message names the file and what it is) or a module is missing (the message
@@ -80,7 +81,13 @@ def _choose(result, kind):
         if result.scenario not in DEFAULT_KIND:
             raise ResultFileError(f"{result.path}: a '{result.scenario}' result, which has no plot")
         return DEFAULT_KIND[result.scenario]
-    wanted = plot_module(kind).SCENARIOS
+    module = plot_module(kind)
+    if hasattr(module, "refusal"):   # a plot of a part any of several scenarios may hold (the water's)
+        reason = module.refusal(result)
+        if reason:
+            raise ResultFileError(f"{result.path}: a '{result.scenario}' result, {reason}")
+        return kind
+    wanted = module.SCENARIOS
     if result.scenario not in wanted:
         raise ResultFileError(f"{result.path}: a '{result.scenario}' result, but this needs a result of "
                               f"{' or '.join(repr(w) for w in wanted)}")

@@ -8,16 +8,34 @@ from .common import DEGREES, draw_surface, equal_axes_3d, title
 
 
 def coordinates(ax, r, group):
-    """Every generalized coordinate over time, angles in degrees."""
+    """Every generalized coordinate over time (angles in degrees), one y axis
+    per unit: the coordinates of the first unit (by name) on `ax`, each
+    further unit dashed on its own axis at the right (a sled's u in m beside
+    its angle phi in deg), each axis labelled with its coordinates and unit.
+    Returns the axes, `ax` first."""
+    import matplotlib
     t = r[group + "/time"].values
+    by_unit = {}
     for name in sorted(r.file[group + "/coordinates"]):
         q = r[f"{group}/coordinates/{name}/value"]
-        scale, unit = (DEGREES, "deg") if q.units == "rad" else (1.0, q.units)
-        ax.plot(t, q.values * scale, label=f"{name} [{unit}]")
+        scale, unit = (DEGREES, "deg") if q.units == "rad" else (1.0, q.units or "1")
+        by_unit.setdefault(unit, []).append((name, q.values * scale))
+    colors = matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]
+    axes, lines = [ax], []
+    for k, (unit, curves) in enumerate(by_unit.items()):
+        if k > 0:
+            axes.append(ax.twinx())
+            if k > 1:
+                axes[-1].spines["right"].set_position(("axes", 1 + 0.15 * (k - 1)))
+        for name, values in curves:   # ax's own colour cycle goes on (a caller may add lines to it)
+            style = {"color": colors[len(lines) % len(colors)], "ls": "--"} if k > 0 else {}
+            lines += axes[-1].plot(t, values, label=f"{name} [{unit}]", **style)
+        axes[-1].set_ylabel(f"{', '.join(name for name, _ in curves)} [{unit}]")
     ax.set_xlabel("time [s]")
-    ax.set_title("coordinates")
+    ax.set_title("coordinates" + (" (dashed: right axis)" if len(axes) > 1 else ""))
     ax.grid(True)
-    ax.legend(fontsize=8)
+    ax.legend(lines, [line.get_label() for line in lines], fontsize=8)
+    return axes
 
 
 def energy(ax, r, group):

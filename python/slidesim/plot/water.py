@@ -1,17 +1,34 @@
-"""Plots a water result (scenario water): the unrolled slide (the angle of the
+"""Plots the water of a result: the unrolled slide (the angle of the
 water's middle and of its edges over the centerline arc length, as thesis
 fig. 4.11: 0 deg is the bottom, positive to the left) with the stations;
 speed and water height over arc length (with several inlets, the flow
 rate and where each inlet joined); the water band drawn on the slide
-surface in 3-D.
+surface in 3-D. The plot of a water result, and of any other result that
+holds the water's group /water (a ride, a sled riding in water: --kind
+water); a result without it is refused, the message naming the file.
 
-    slidesim-plot RESULT.h5 [-o PICTURE] [--show]
+    slidesim-plot RESULT.h5 [-o PICTURE] [--show] [--kind water]
 """
 import numpy as np
 
 from .common import DEGREES, draw_surface, equal_axes_3d, title
 
-SCENARIOS = ("water",)
+# what the plot draws from /water (the band's edges: at the samples or at the table's rows)
+NEEDED = ("arc_length", "u", "v", "speed", "height", "position")
+BAND = (("left_edge_v", "right_edge_v"), ("table/arc_length", "table/v_left", "table/v_right"))
+
+
+def refusal(r):
+    """Why result `r` has no water to plot (None when it has)."""
+    if "/water" not in r:
+        return ("which holds no water (no group /water): the water plot draws the /water of a water run, "
+                "or of a ride or sled that rides in water")
+    missing = [name for name in NEEDED if f"/water/{name}" not in r]
+    if not any(all(f"/water/{name}" in r for name in band) for band in BAND):
+        missing.append("left_edge_v or table/v_left")
+    if missing:
+        return f"whose group /water lacks {', '.join(missing)}"
+    return None
 
 
 def draw(r, plt, args):
