@@ -112,12 +112,20 @@ module rider_vehicle
 
 contains
 
-  !> How many riders a vehicle of `kind` carries, in words.
+  !> How many riders a vehicle of `kind` carries, in words: 'a bar carries
+  !> no riders', 'a ring carries 1 rider only', 'a raft carries 1 to 4 riders'.
   function riders_allowed(kind) result(text)
     integer, intent(in) :: kind
     character(len=:), allocatable :: text
-    text = 'a '//trim(vehicle_kinds(kind))//' carries '//format_integer(rider_counts(1, kind))//' to '// &
-           format_integer(rider_counts(2, kind))
+    text = 'a '//trim(vehicle_kinds(kind))//' carries '
+    if (rider_counts(2, kind) == 0) then
+      text = text//'no riders'
+    else if (rider_counts(1, kind) == rider_counts(2, kind)) then
+      text = text//format_integer(rider_counts(1, kind))//' rider'//trim(merge('s', ' ', rider_counts(1, kind) > 1))// &
+             ' only'
+    else
+      text = text//format_integer(rider_counts(1, kind))//' to '//format_integer(rider_counts(2, kind))//' riders'
+    end if
   end function riders_allowed
 
   !> The index of the kind called `name` in vehicle_kinds, 0 if none.

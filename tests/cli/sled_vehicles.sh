@@ -21,9 +21,9 @@ refused() {   # NAME EXPECTED SLED_GROUP
   check 'grep -qF -- "$expected" "$work/$name.err"' "$name: message lacks '$expected': $(cat "$work/$name.err")"
   check '! ls "$work/$name".h5* >/dev/null 2>&1' "$name: a result file (or a temporary one) was written"
 }
-refused ring_two "&sled: riders = 2 is not allowed: a ring carries 1 to 1" \
+refused ring_two "&sled: riders = 2 is not allowed: a ring carries 1 rider only" \
   "&sled vehicle = 'ring', riders = 2, u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
-refused raft_five "&sled: riders = 5 is not allowed" \
+refused raft_five "&sled: riders = 5 is not allowed: a raft carries 1 to 4 riders" \
   "&sled vehicle = 'raft', riders = 5, u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
 refused mat_mass "&sled: mass" \
   "&sled vehicle = 'mat', mass = 80, u0 = 0.5, v0 = 1.5707963267948966, du0 = 1 /"
