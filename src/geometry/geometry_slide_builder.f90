@@ -422,6 +422,7 @@ contains
       end if
     end if
     slide = new_tube_surface(centerline, horizon, section, status)
+    if (trim(d%kind) == 'slide') slide%name = element_slide_name(d%elements%elements, d%section)
     if (status%ok()) call slide%check(d%check_samples, status)
     if (.not. status%ok()) call failure(group//' cross_section', words//' with the cross-section')
 
@@ -437,6 +438,40 @@ contains
       end if
     end subroutine failure
   end subroutine build_slide
+
+  !> What a slide from elements is, in words (its surface's describe): 'slide
+  !> of 4 elements (straight, bowl, straight, runout) with a flume section';
+  !> more than six elements counted by kind in the order of their first
+  !> appearance, '(5 straight, 4 curve, 1 runout)'; several sections blended
+  !> along it, 'with 2 sections blended (circle, flume)'.
+  pure function element_slide_name(elements, section) result(text)
+    type(slide_element_t), intent(in) :: elements(:)
+    type(cross_section_description_t), intent(in) :: section
+    character(len=:), allocatable :: text
+    character(len=:), allocatable :: list
+    integer :: i
+    list = ''
+    do i = 1, size(elements)
+      if (size(elements) <= 6) then
+        list = list//', '//trim(elements(i)%kind)
+      else if (findloc(elements(:i - 1)%kind, elements(i)%kind, dim=1) == 0) then
+        list = list//', '//format_integer(count(elements%kind == elements(i)%kind))//' '//trim(elements(i)%kind)
+      end if
+    end do
+    text = 'slide of '//format_integer(size(elements))//' element'//trim(merge('s', ' ', size(elements) /= 1))// &
+           ' ('//list(3:)//') with '
+    if (.not. allocated(section%parts)) then
+      text = text//'a circle section'
+    else if (size(section%parts) == 1) then
+      text = text//'a '//trim(section%parts(1)%kind)//' section'
+    else
+      list = ''
+      do i = 1, size(section%parts)
+        list = list//', '//trim(section%parts(i)%kind)
+      end do
+      text = text//format_integer(size(section%parts))//' sections blended ('//list(3:)//')'
+    end if
+  end function element_slide_name
 
   !> The section of a chain with funnels (kind = 'funnel'): the slide's one
   !> circle or flume section widened about its bottom along each funnel

@@ -28,6 +28,9 @@ module geometry_tube
     class(curve_t), allocatable :: centerline
     class(curve_t), allocatable :: horizon
     class(cross_section_t), allocatable :: section
+    !> what it is, in words (describe): a slide from elements names them
+    !> (geometry_slide_builder); unset: 'tube surface'
+    character(len=:), allocatable :: name
   contains
     procedure :: evaluate => tube_evaluate
     procedure :: evaluate_with_centerline => tube_evaluate_with_centerline
@@ -263,7 +266,11 @@ contains
     character(len=:), allocatable :: text
     character(len=32) :: buf
     write (buf, '(f0.3)') self%centerline%total_length()
-    text = 'tube surface (centerline length ' // trim(buf) // ' m)'
+    if (allocated(self%name)) then
+      text = self%name // ' (centerline length ' // trim(buf) // ' m)'
+    else
+      text = 'tube surface (centerline length ' // trim(buf) // ' m)'
+    end if
   end function tube_describe
 
   !> The centerline frame at u with derivatives to `order`, chi and chi_u.

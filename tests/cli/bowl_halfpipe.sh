@@ -125,7 +125,7 @@ check '[ $rc = 0 ]' "bowl and half-pipe against physics: $(grep PROBLEM "$work/p
 # + 4 + 38.746 + 10 + 8 = 85.502 m); the refusal names the domain's bounds,
 # v as a flume's [-wall/radius, pi + wall/radius]
 (cd "$root/inputs/parts" && "$slidesim" --check --set sled%u0=86 bowl_halfpipe_ring.nml >"$work/beyond.out" 2>&1); got=$?
-check '[ $got = 1 ] && grep -q ": &sled: u0, v0 = 86.0, 1.5707963267948966 is not allowed: the start must lie in the parameter domain of the tube surface (centerline length 86.090 m): u in \[0.0, 85.50207[0-9]*\], v in \[-0.8333333[0-9]*, 3.974925[0-9]*\]" "$work/beyond.out"' \
+check '[ $got = 1 ] && grep -q ": &sled: u0, v0 = 86.0, 1.5707963267948966 is not allowed: the start must lie in the parameter domain of the slide of 6 elements (straight, curve, straight, bowl, straight, runout) with a flume section (centerline length 86.090 m): u in \[0.0, 85.50207[0-9]*\], v in \[-0.8333333[0-9]*, 3.974925[0-9]*\]" "$work/beyond.out"' \
   "a start beyond the chain's horizontal length: exit $got: $(cat "$work/beyond.out")"
 echo "$((checks - failures)) passed, $failures failed"
 [ $failures = 0 ]
