@@ -4,7 +4,8 @@
 module scenarios_point_mass
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status
-  use base_log, only: log_info
+  use base_log, only: log_info, log_warning
+  use base_text, only: format_short, format_integer
   use numerics_ode, only: ode_stats_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP
   use geometry_surface, only: surface_t
@@ -151,8 +152,9 @@ contains
     call file%write_matrix(g//'velocity', s%velocity(:, :n), 'm/s', 'velocity (3 x n)', status)
     call file%write_matrix(g//'acceleration', s%acceleration(:, :n), 'm/s^2', 'acceleration (3 x n)', status)
     call file%write_vector(g//'speed', s%speed(:n), 'm/s', 'speed |velocity|', status)
-    call file%write_vector(g//'normal_force', s%normal_force(:n), 'N', &
-                           'normal force along the Darboux frame z axis (positive pushes the mass to the side of z)', status)
+    call file%write_vector(g//'normal_force', pressing_force(s), 'N', 'normal force, positive while the mass '// &
+                           'presses on the surface from its side (the side of frame z at the start; negative: the '// &
+                           'surface pulls)', status)
     call file%write_matrix(g//'friction_force', s%friction_force(:, :n), 'N', 'friction force (3 x n)', status)
     call file%write_vector(g//'kinetic_energy', s%kinetic(:n), 'J', 'kinetic energy', status)
     call file%write_vector(g//'potential_energy', s%potential(:n), 'J', 'potential energy -m g.r', status)
@@ -209,6 +211,8 @@ contains
     type(status_t), intent(inout) :: status
     type(summary_t) :: summary
     real(wp) :: e0, drift, accel
+    real(wp), allocatable :: pressing(:)
+    character(len=:), allocatable :: note
     integer :: n, i
 
     n = s%n
@@ -224,8 +228,14 @@ contains
     call summary%add('max_speed', 'max speed', maxval(s%speed(:n)), 'm/s', 'm/s ('// &
                      engineering(3.6_wp*maxval(s%speed(:n)))//' km/h)')
     call summary%add('max_acceleration', 'max acceleration', accel, 'm/s^2', 'g', 1/standard_g)
-    call summary%add_range('normal_force', 'normal force min / max', minval(s%normal_force(:n)), &
-                           maxval(s%normal_force(:n)), 'N')
+    pressing = pressing_force(s)
+    call summary%add_range('normal_force', 'normal force min / max', minval(pressing), maxval(pressing), 'N', &
+                           'N (> 0 pressing)')
+    note = pulled_note(s, pressing)
+    if (len(note) > 0) then
+      call summary%add_line('  surface pulls the mass    '//note)
+      call log_warning('point_mass: the surface pulls the mass '//note)
+    end if
     call summary%add('drop', 'height drop', s%position(3, 1) - s%position(3, n), 'm')
     call summary%add('friction_work', 'friction work', s%friction_work(n), 'J')
     if (model%drag_area > 0) then
@@ -238,4 +248,51 @@ contains
     call summary%print()
     call end_report(summary, run, path, complete, message, status)
   end subroutine report
+
+  !> The normal force as the mass feels it: positive while the mass presses
+  !> on the surface. The mass rides on the side the frame's z points to at
+  !> the start (sigma turns z, docs/inputs.md); where the parametrisation
+  !> turns z over between two records (through a singular apex, where
+  !> r_u x r_v changes sign: z(i).z(i-1) < 0) the mass stays on its side of
+  !> the surface, so the sign turns with z. Negative: the surface pulls the
+  !> mass, which the point mass model allows (it is held to the surface) and a
+  !> real mass would not (pulled_note).
+  pure function pressing_force(s) result(pressing)
+    type(point_mass_series_t), intent(in) :: s
+    real(wp) :: pressing(s%n)
+    real(wp) :: side
+    integer :: i
+    side = 1
+    do i = 1, s%n
+      if (i > 1) then
+        if (dot_product(s%frame(:, 3, i), s%frame(:, 3, i - 1)) < 0) side = -side
+      end if
+      pressing(i) = side*s%normal_force(i)
+    end do
+  end function pressing_force
+
+  !> Where the surface pulls the mass (the pressing force below zero by more
+  !> than rounding, 1e-9 of its largest size), in words: the first such
+  !> stretch of records, where it starts and how many records pull; '' when
+  !> none does.
+  function pulled_note(s, pressing) result(text)
+    type(point_mass_series_t), intent(in) :: s
+    real(wp), intent(in) :: pressing(:)
+    character(len=:), allocatable :: text
+    logical :: pulled(size(pressing))
+    integer :: first, last
+    text = ''
+    pulled = pressing < -1e-9_wp*maxval(abs(pressing))
+    if (.not. any(pulled)) return
+    first = findloc(pulled, .true., dim=1)
+    last = first
+    do while (last < size(pulled))
+      if (.not. pulled(last + 1)) exit
+      last = last + 1
+    end do
+    text = 'from t = '//format_short(s%time(first))//' to '//format_short(s%time(last))//' s (u, v = '// &
+           format_short(s%u(first))//', '//format_short(s%v(first))//' at its start; '// &
+           format_integer(count(pulled))//' records in all, normal force down to '//format_short(minval(pressing))// &
+           ' N): a real mass would leave the surface there; the point mass model holds it on'
+  end function pulled_note
 end module scenarios_point_mass

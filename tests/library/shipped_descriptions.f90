@@ -431,7 +431,7 @@ contains
   subroutine point_mass_apex_paraboloid()
     type(point_mass_description_t) :: d
     d%u0 = 0.0_wp; d%v0 = 0.6_wp; d%du0 = 0.0_wp; d%dv0 = -0.5_wp
-    d%alpha_u = 1.0_wp; d%alpha_v = 1.0_wp
+    d%alpha_u = 1.0_wp; d%alpha_v = 1.0_wp; d%sigma = -1.0_wp
     call run_point_mass('inputs/point_mass/apex_paraboloid.nml', d, surface_ab('apex_paraboloid', 1.0_wp, 1.5_wp), &
                         1e-10_wp, 1e-10_wp, 0.005_wp)
   end subroutine point_mass_apex_paraboloid
@@ -528,6 +528,7 @@ contains
     call surface_from_spec(spec, surface, st)
     call expect_ok(st, 'the bowl zone')
     d%u0 = 0.0_wp; d%v0 = -0.6981317007977318_wp; d%du0 = 2.2551008156828716_wp; d%dv0 = 0.0_wp
+    d%sigma = -1.0_wp
     call run_point_mass('inputs/parts/bowl_point_mass.nml', d, surface, 1e-12_wp, 1e-12_wp, 0.01_wp)
   end subroutine point_mass_bowl
 
