@@ -16,7 +16,7 @@ module scenarios_ride
   use base_log, only: log_info, log_warning
   use geometry_slide_query, only: slide_surface_t
   use water_run, only: water_description_t
-  use water_curve_entry, only: curve_entry_note
+  use water_curve_entry, only: curve_entry_note, splash_note
   use rider_model, only: rider_params_t, N_CONTACTS, contact_names, CONTACT_PELVIS, CONTACT_HEELS
   use rider_ride, only: ride_result_t, ride_series_t, ride_options_t, check_ride_start
   use design_ride_evaluation, only: limit_report_unit, limit_bounds_text, spaced_unit, ride_limit_t, &
@@ -75,6 +75,8 @@ contains
     description%log => log_info
     result = run_ride(description)
     water_note = curve_entry_note(result%water%series, description%water%f3)
+    if (len(water_note) > 0) call log_warning(input%name//': water: '//water_note)
+    water_note = splash_note(result%water%series, description%water%f3)
     if (len(water_note) > 0) call log_warning(input%name//': water: '//water_note)
     associate (slide => description%water%slide, ride => result%ride, report => result%report)
       call write_water_results(file, description%water, result%water, write_status)

@@ -43,7 +43,8 @@ module scenarios_sled
   use io_water_results, only: write_water_results
   use io_input, only: group_present, where_given
   use geometry_tube, only: tube_surface_t
-  use base_log, only: log_info
+  use base_log, only: log_info, log_warning
+  use water_curve_entry, only: curve_entry_note, splash_note
   use base_status, only: set_status, prefix_status, STATUS_INVALID_INPUT
   implicit none (type, external)
   private
@@ -145,6 +146,8 @@ contains
         call keep_failed_water(input, run, figures, status)
         return
       end if
+      call warn(curve_entry_note(figures%water_result%series, figures%water%f3))
+      call warn(splash_note(figures%water_result%series, figures%water%f3))
       if (vehicle%may_fly) then
         call build_vehicle_flight(vehicle, config, surface, flying, q0, qd0, status, water=figures%water_result%field)
       else
@@ -178,6 +181,14 @@ contains
         call limits_exceeded_status(input%name, figures%limits, [(merge(1, 0, figures%judged(k) .and. &
                                     figures%verdicts(k)%exceeded), k = 1, size(figures%limits))], .false., status)
     end if
+
+  contains
+
+    !> A note on the water (water_curve_entry), as the ride warns of it.
+    subroutine warn(note)
+      character(len=*), intent(in) :: note
+      if (len(note) > 0) call log_warning(input%name//': water: '//note)
+    end subroutine warn
   end subroutine run_sled
 
   !> &sled's limits (limit_quantity, limit_unit, limit_min, limit_max, read

@@ -15,7 +15,7 @@ module scenarios_water
   use water_flow, only: water_series_t, outcome_name, START_EDGES
   use water_run, only: water_description_t, water_result_t, new_streamline, compute_water
   use water_inlet, only: start_tolerance
-  use water_curve_entry, only: curve_entry_note
+  use water_curve_entry, only: curve_entry_note, splash_note
   use io_input, only: input_text_t, check_known_groups, group_present, invalid, format_real, mark_input_failure, &
     where_given
   use io_run_config, only: run_config_t
@@ -374,6 +374,11 @@ contains
     note = curve_entry_note(s, description%f3)
     if (len(note) > 0) then
       call summary%add_line('  friction law stretched    '//note)
+      call log_warning('water: '//note)
+    end if
+    note = splash_note(s, description%f3)
+    if (len(note) > 0) then
+      call summary%add_line('  friction law not valid    '//note)
       call log_warning('water: '//note)
     end if
     if (size(s%stations) > 0) then
