@@ -1,6 +1,8 @@
 """Plots a point-mass result (scenario point_mass): the path on the surface in
-3-D, speed and normal force over time (a value constant to rounding, as on
-a horizontal circle in a bowl, drawn flat with its spread in the legend),
+3-D, speed and normal force over time (the pressing force: > 0 while the
+mass presses on the surface, docs/outputs.md; a value constant to rounding,
+as on a horizontal circle in a bowl, drawn flat with its spread in the
+legend),
 and the energy balance (energy minus friction work, which must stay
 constant).
 
@@ -33,7 +35,7 @@ def draw(r, plt, args):
     ax.grid(True)
     ax = fig.add_subplot(3, 2, 4)
     plot_nearly_constant(ax, t, r[g + "normal_force"].values, "N")
-    ax.set_ylabel("normal force [N]")
+    ax.set_ylabel("normal force [N]\n(> 0 pressing)")
     ax.grid(True)
     ax = fig.add_subplot(3, 2, 6)
     ax.plot(t, balance - balance[0])
