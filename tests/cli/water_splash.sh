@@ -12,8 +12,9 @@
 #   while the term takes 20 %: the water report says so in a line "friction
 #   law not valid" naming the place, and the run warns on stderr (exit 0);
 # - the ride of the same slide (the fixture's parts_bowl) warns too, naming
-#   the input; the demo slide's water and ride do not (their curves turn
-#   far more than the loss needs).
+#   the input, and so does a sled in water (parts_bowl_halfpipe_mat, the
+#   same bend on the bowl + half-pipe slide); the demo slide's water and ride
+#   do not (their curves turn far more than the loss needs).
 set -u
 slidesim=$1
 root=$(pwd)
@@ -67,6 +68,9 @@ print(f"bowl: F_R {abs(friction[k]):.3f} N at {s[k]:.2f} m, (4.7) from the recor
 EOF
 grep -qE "parts/bowl\.nml: water: .*$place" "$results/parts_bowl.err" \
   || fail "the bowl ride: no warning naming the input and the bend: $(cat "$results/parts_bowl.err")"
+# a sled in the water of the bowl + half-pipe slide (the same outlet bend, 77 m along it) warns the same way
+grep -qE "parts/bowl_halfpipe_mat\.nml: water: .*at arc length 77\.0[0-9] to 79\.0[0-9] m \(20\.0 % in a bend of 12\.0 deg" \
+  "$results/parts_bowl_halfpipe_mat.err" || fail "the mat sled: no warning naming the bend: $(cat "$results/parts_bowl_halfpipe_mat.err")"
 for name in water_demo_slide ride_demo_slide; do
   grep -q 'a splash' "$results/$name.err" "$results/$name.out" && fail "$name: a splash warning on the demo slide"
 done
