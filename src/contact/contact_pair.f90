@@ -150,12 +150,7 @@ contains
     call m%elements(pair%element_s12)%e%set_chart_turn(pair%angles(1))
     ! the two contact frames
     call add_contact_frame_1(m, surface_1, pair, status)
-    pair%frame_2d = m%add_frame(name//'.2D')
-    pair%u2 = m%add_scalar(name//'.u2')
-    pair%v2 = m%add_scalar(name//'.v2')
-    call m%add_element(new_surface_joint(name//'.s2', pair%frame_b, pair%frame_2d, pair%u2, pair%v2, surface_2, &
-                                         side_2, 1.0_wp, 0.0_wp, charts=.true.))
-    pair%element_s2 = m%n_elements
+    call add_contact_frame_2(m, surface_2, pair)
     call add_closure(m, pair, status)
   end subroutine add_contact_pair
 
@@ -179,12 +174,7 @@ contains
     if (.not. status%ok()) return
     pair%frame_b = frame_b
     call add_contact_frame_1(m, surface_1, pair, status)
-    pair%frame_2d = m%add_frame(name//'.2D')
-    pair%u2 = m%add_scalar(name//'.u2')
-    pair%v2 = m%add_scalar(name//'.v2')
-    call m%add_element(new_surface_joint(name//'.s2', pair%frame_b, pair%frame_2d, pair%u2, pair%v2, surface_2, &
-                                         side_2, 1.0_wp, 0.0_wp, charts=.true.))
-    pair%element_s2 = m%n_elements
+    call add_contact_frame_2(m, surface_2, pair)
     pair%extra = extra
     call add_closure(m, pair, status)
   end subroutine add_loop_contact_pair
@@ -293,6 +283,20 @@ contains
                                          surface_1, pair%side_1, 1.0_wp, 0.0_wp, charts=.true.))
     pair%element_s1 = m%n_elements
   end subroutine add_contact_frame_1
+
+  !> The contact frame K_2D = S2(u2, v2) on the body's frame_b (a surface
+  !> joint with charts), of add_contact_pair and add_loop_contact_pair alike.
+  subroutine add_contact_frame_2(m, surface_2, pair)
+    type(mechanism_t), intent(inout) :: m
+    class(surface_t), intent(in) :: surface_2
+    type(contact_pair_t), intent(inout) :: pair
+    pair%frame_2d = m%add_frame(pair%name//'.2D')
+    pair%u2 = m%add_scalar(pair%name//'.u2')
+    pair%v2 = m%add_scalar(pair%name//'.v2')
+    call m%add_element(new_surface_joint(pair%name//'.s2', pair%frame_b, pair%frame_2d, pair%u2, pair%v2, &
+                                         surface_2, pair%side_2, 1.0_wp, 0.0_wp, charts=.true.))
+    pair%element_s2 = m%n_elements
+  end subroutine add_contact_frame_2
 
   !> The scalars of the closure functions g1..g5.
   subroutine add_gap_scalars(m, pair)
