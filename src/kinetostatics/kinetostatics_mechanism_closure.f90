@@ -32,21 +32,35 @@ contains
   !> Newton iterates of set_positions), the position maps of the elements
   !> beta reaches: the others' inputs and so their outputs are unchanged
   !> (for the rider: the pelvis's surface joint is not evaluated again).
-  !> Same values to the bit either way.
-  subroutine residual_at(self, work, x, full, f, status)
+  !> Same values to the bit either way. `last` (a pass over what beta
+  !> reaches, expected to be the solve's last: after the polishing step)
+  !> takes the elements' position_complete: a lazy surface joint computes
+  !> its whole geometry there, which J_beta at the solution needs next,
+  !> instead of its frame first and the whole again (the same numbers).
+  subroutine residual_at(self, work, x, full, f, status, last)
     class(mechanism_t), intent(in) :: self
     type(mechanism_workspace_t), intent(inout) :: work
     real(wp), intent(in) :: x(:)
     logical, intent(in) :: full
     real(wp), intent(out) :: f(:)
     type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: last
     integer :: k
+    logical :: complete
+    complete = .false.
+    if (present(last)) complete = last
     do k = 1, self%r
       work%scalars(self%beta(k))%q = x(k)
     end do
     f = 0
     if (full) then
       call self%position_pass(work, status)
+    else if (complete) then
+      work%evaluation = work%evaluation + 1
+      do k = 1, size(self%beta_pass)
+        call work%elements(self%beta_pass(k))%e%position_complete(work%frames, work%scalars, status)
+        if (.not. status%ok()) exit
+      end do
     else
       work%evaluation = work%evaluation + 1
       do k = 1, size(self%beta_pass)
@@ -234,7 +248,7 @@ contains
     fresh = 0
     do it = 1, 10
       ! the first pass at the new q over every element, then only beta changes
-      call residual_at(self, work, x, it == 1, res, status)
+      call residual_at(self, work, x, it == 1, res, status, last=polished)
       if (.not. status%ok()) then
         if (status%code == STATUS_DOMAIN .and. work%warm) return   ! see the module comment
         exit

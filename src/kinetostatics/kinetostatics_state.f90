@@ -111,6 +111,7 @@ module kinetostatics_state
     procedure :: mass_properties => element_mass_properties
     procedure :: domain_edges => element_domain_edges
     procedure :: set_eager => element_set_eager
+    procedure :: position_complete => element_position_complete
     procedure :: singular_note => element_singular_note
   end type element_t
 
@@ -311,6 +312,19 @@ contains
     associate (unused => self)
     end associate
   end subroutine element_set_eager
+
+  !> The position map where a velocity pass at the same positions is known
+  !> to follow (the closure's last Newton iterate): an element that computes
+  !> its geometry lazily computes all of it now, not first the part the
+  !> position needs and then the whole again (the same numbers either way;
+  !> default: the position map).
+  pure subroutine element_position_complete(self, frames, scalars, status)
+    class(element_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t), intent(inout) :: status
+    call self%position(frames, scalars, status)
+  end subroutine element_position_complete
 
   !> For a run that fails by its step count: a note when the element's
   !> contact point lies near a singular point of its surface's

@@ -111,6 +111,7 @@ module kinetostatics_surface_joint
     procedure :: links => sj_links
     procedure :: domain_edges => sj_domain_edges
     procedure :: set_eager => sj_set_eager
+    procedure :: position_complete => sj_position_complete
     procedure :: singular_note => sj_singular_note
     procedure :: change_chart => sj_change_chart
     procedure :: chart_angle => sj_chart_angle
@@ -484,6 +485,20 @@ contains
     class(surface_joint_t), intent(inout) :: self
     self%lazy = .false.
   end subroutine sj_set_eager
+
+  !> The position with the whole geometry at once (element_t's
+  !> position_complete): as an eager joint, whatever `lazy` says.
+  pure subroutine sj_position_complete(self, frames, scalars, status)
+    class(surface_joint_t), intent(inout) :: self
+    type(frame_state_t), intent(inout) :: frames(:)
+    type(scalar_state_t), intent(inout) :: scalars(:)
+    type(status_t), intent(inout) :: status
+    logical :: lazy
+    lazy = self%lazy
+    self%lazy = .false.
+    call sj_position(self, frames, scalars, status)
+    self%lazy = lazy
+  end subroutine sj_position_complete
 
   !> The contact point at the last position near a singular point of the
   !> surface's parametrisation (an ellipsoid's pole, an apex: |r_u x r_v|

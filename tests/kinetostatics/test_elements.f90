@@ -185,6 +185,23 @@ contains
     same = same .and. all(fl(2)%omega == fe(2)%omega) .and. all(fl(2)%v == fe(2)%v) &
            .and. all(fl(2)%alpha == fe(2)%alpha) .and. all(fl(2)%a == fe(2)%a)
     call check(st%ok() .and. same, 'surface joint: lazy geometry = eager geometry to the last bit')
+    ! position_complete (the closure's last iterate): the whole geometry at
+    ! once, the same bits, and the joint stays lazy for the next positions
+    sl(1)%q = 0.95_wp
+    se(1)%q = 0.95_wp
+    call lazy%position_complete(fl, sl, st)
+    same = lazy%complete .and. lazy%lazy
+    call eager%position(fe, se, st)
+    call lazy%velocity(fl, sl)
+    call eager%velocity(fe, se)
+    call lazy%acceleration(fl, sl)
+    call eager%acceleration(fe, se)
+    same = same .and. all(fl(2)%rot == fe(2)%rot) .and. all(fl(2)%r == fe(2)%r) &
+           .and. all(fl(2)%omega == fe(2)%omega) .and. all(fl(2)%v == fe(2)%v) &
+           .and. all(fl(2)%alpha == fe(2)%alpha) .and. all(fl(2)%a == fe(2)%a)
+    call lazy%position(fl, sl, st)
+    same = same .and. .not. lazy%complete
+    call check(st%ok() .and. same, 'surface joint: position_complete = eager position, the joint stays lazy')
   end subroutine lazy_equals_eager
 
   !> The chain K_1 -> S1(u, v) -> K_1D -> turn phi about z -> K_T near the
