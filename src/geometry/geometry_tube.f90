@@ -12,7 +12,7 @@
 module geometry_tube
   use base_kinds, only: wp
   use base_text, only: format_short, format_vector, format_integer
-  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_status, only: status_t, set_status, prefix_status, STATUS_OK, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_point_t
   use geometry_slide_query, only: slide_surface_t, slide_slice_t, slide_bottom_v, general_wall_position, &
                                   general_bottom_radius
@@ -128,8 +128,10 @@ contains
     integer, intent(in) :: order
     type(surface_point_t), intent(out) :: p
     type(status_t), intent(out) :: status
-    type(curve_point_t) :: c
-    call tube_evaluate_with_centerline(self, u, v, order, p, c, status)
+    type(slide_slice_t) :: slice
+    call tube_slice(self, u, order, slice, status)
+    if (.not. status%ok()) return
+    call tube_evaluate_in_slice(self, slice, v, order, p, status)
   end subroutine tube_evaluate
 
   !> The surface point and, from the same evaluation, the centerline point c
@@ -173,8 +175,70 @@ contains
 
   !> The point at (slice%u, v) to `order` from the slice's centerline and
   !> frame (Leibniz in u, module comment); the order must be the slice's
-  !> (the same bits as evaluate).
+  !> (the same bits as evaluate). A circular section (the shipped slides'
+  !> tubes) takes circle_in_slice: the same numbers without the general
+  !> section point.
   pure subroutine tube_evaluate_in_slice(self, slice, v, order, p, status)
+    class(tube_surface_t), intent(in) :: self
+    type(slide_slice_t), intent(in) :: slice
+    real(wp), intent(in) :: v
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    type(status_t), intent(out) :: status
+    if (.not. (slice%kept .and. order == slice%order)) then
+      call set_status(status, STATUS_INVALID_INPUT, 'tube surface: a point of order '//format_integer(order)// &
+                      ' in a slice kept for order '//format_integer(slice%order))
+      return
+    end if
+    select type (section => self%section)
+    type is (circle_section_t)
+      call circle_in_slice(section%radius, slice%c, slice%f, v, order, p)
+      status%code = STATUS_OK
+    class default
+      call section_in_slice(self, slice, v, order, p, status)
+    end select
+  end subroutine tube_evaluate_in_slice
+
+  !> tube_evaluate_in_slice for a circle of radius a: its section point
+  !> s = [-a cos v, -a sin v] and v-partials (circle_evaluate's products)
+  !> enter the sum of section_in_slice's constant section term by term, in
+  !> the same order, so the bits are the same; no section point is built
+  !> (its default initialisation, the test for u-derivatives, the array of
+  !> terms: ~400 of ~560 instructions a point).
+  pure subroutine circle_in_slice(a, c, f, v, order, p)
+    real(wp), intent(in) :: a, v
+    type(curve_point_t), intent(in) :: c
+    type(curve_frame_t), intent(in) :: f
+    integer, intent(in) :: order
+    type(surface_point_t), intent(out) :: p
+    real(wp) :: cv, sv, sy(0:3), sz(0:3)
+    cv = cos(v)
+    sv = sin(v)
+    sy(0) = -a*cv; sz(0) = -a*sv
+    sy(1) = a*sv; sz(1) = -a*cv
+    sy(2) = a*cv; sz(2) = a*sv
+    sy(3) = -a*sv; sz(3) = a*cv
+    p%order = order
+    p%r = c%d(:, 0) + (f%y(:, 0)*sy(0) + f%z(:, 0)*sz(0))
+    if (order >= 1) then
+      p%ru = c%d(:, 1) + (f%y(:, 1)*sy(0) + f%z(:, 1)*sz(0))
+      p%rv = f%y(:, 0)*sy(1) + f%z(:, 0)*sz(1)
+    end if
+    if (order >= 2) then
+      p%ruu = c%d(:, 2) + (f%y(:, 2)*sy(0) + f%z(:, 2)*sz(0))
+      p%ruv = f%y(:, 1)*sy(1) + f%z(:, 1)*sz(1)
+      p%rvv = f%y(:, 0)*sy(2) + f%z(:, 0)*sz(2)
+    end if
+    if (order >= 3) then
+      p%ruuu = c%d(:, 3) + (f%y(:, 3)*sy(0) + f%z(:, 3)*sz(0))
+      p%ruuv = f%y(:, 2)*sy(1) + f%z(:, 2)*sz(1)
+      p%ruvv = f%y(:, 1)*sy(2) + f%z(:, 1)*sz(2)
+      p%rvvv = f%y(:, 0)*sy(3) + f%z(:, 0)*sz(3)
+    end if
+  end subroutine circle_in_slice
+
+  !> tube_evaluate_in_slice for any section (Leibniz in u, module comment).
+  pure subroutine section_in_slice(self, slice, v, order, p, status)
     class(tube_surface_t), intent(in) :: self
     type(slide_slice_t), intent(in) :: slice
     real(wp), intent(in) :: v
@@ -184,11 +248,6 @@ contains
     type(section_point_t) :: s
     real(wp) :: t(3, 0:3, 0:3)   ! the section's part of d^(i+j) r/du^i dv^j (Leibniz in u)
     integer :: i, j, m
-    if (.not. (slice%kept .and. order == slice%order)) then
-      call set_status(status, STATUS_INVALID_INPUT, 'tube surface: a point of order '//format_integer(order)// &
-                      ' in a slice kept for order '//format_integer(slice%order))
-      return
-    end if
     associate (u => slice%u, c => slice%c, f => slice%f)
       call self%section%evaluate(u, v, order, s, status)
       if (.not. status%ok()) return
@@ -222,7 +281,7 @@ contains
         p%ruuu = c%d(:, 3) + t(:, 3, 0); p%ruuv = t(:, 2, 1); p%ruvv = t(:, 1, 2); p%rvvv = t(:, 0, 3)
       end if
     end associate
-  end subroutine tube_evaluate_in_slice
+  end subroutine section_in_slice
 
   !> r = c + y s_y + z s_z on a grid: the centerline and its frame once per u.
   pure subroutine tube_points_on_grid(self, u, v, x, y, z, status)

@@ -9,7 +9,7 @@ program test_tube
   use base_constants, only: pi, two_pi
   use base_status, only: status_t, STATUS_INVALID_INPUT
   use geometry_surface, only: surface_t, surface_point_t
-  use geometry_curve, only: line_curve_t, helix_curve_t, constant_curve_t, polynomial_curve_t
+  use geometry_curve, only: curve_t, line_curve_t, helix_curve_t, constant_curve_t, polynomial_curve_t
   use geometry_cross_section, only: circle_section_t, ellipse_section_t, flume_section_t, &
                                     blended_section_t, section_holder_t, new_blended_section
   use geometry_tube, only: tube_surface_t, new_tube_surface
@@ -152,9 +152,41 @@ program test_tube
   call check(index(st%text(), 'arc length') > 0 .and. index(st%text(), 'fold') > 0, &
              'folding message says where: ' // st%text())
 
+  ! 6. A circular section takes its own path (circle_in_slice); an ellipse
+  ! with a = b = r takes the general one with the same products: every
+  ! partial to every order the same to the bit (helix, varying horizon).
+  call same_as_general(helix, hhelix, 0.5_wp)
+  call same_as_general(poly, up, 0.8_wp)
+
   call finish_tests('test_tube')
 
 contains
+
+  subroutine same_as_general(centerline, horizon, r)
+    class(curve_t), intent(in) :: centerline, horizon
+    real(wp), intent(in) :: r
+    type(tube_surface_t) :: circle_tube, ellipse_tube
+    type(surface_point_t) :: pc, pe
+    type(status_t) :: sc, se
+    logical :: same
+    integer :: i, j, order
+    circle_tube = new_tube_surface(centerline, horizon, circle_section_t(radius=r), sc)
+    ellipse_tube = new_tube_surface(centerline, horizon, ellipse_section_t(a=r, b=r), se)
+    same = sc%ok() .and. se%ok()
+    do order = 0, 3
+      do i = 1, size(us)
+        do j = 1, size(vs)
+          call circle_tube%evaluate(us(i), vs(j), order, pc, sc)
+          call ellipse_tube%evaluate(us(i), vs(j), order, pe, se)
+          same = same .and. sc%ok() .and. se%ok() .and. pc%order == pe%order .and. all(pc%r == pe%r) &
+                 .and. all(pc%ru == pe%ru) .and. all(pc%rv == pe%rv) .and. all(pc%ruu == pe%ruu) &
+                 .and. all(pc%ruv == pe%ruv) .and. all(pc%rvv == pe%rvv) .and. all(pc%ruuu == pe%ruuu) &
+                 .and. all(pc%ruuv == pe%ruuv) .and. all(pc%ruvv == pe%ruvv) .and. all(pc%rvvv == pe%rvvv)
+        end do
+      end do
+    end do
+    call check(same, 'circular section: the same bits as the general path (ellipse a = b)')
+  end subroutine same_as_general
 
   !> points_on_grid (the centerline and frame once per u) = evaluate at every point
   subroutine grid_points(surf, name, v_lo, v_hi)
