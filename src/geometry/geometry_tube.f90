@@ -175,9 +175,9 @@ contains
 
   !> The point at (slice%u, v) to `order` from the slice's centerline and
   !> frame (Leibniz in u, module comment); the order must be the slice's
-  !> (the same bits as evaluate). A circular section (the shipped slides'
-  !> tubes) takes circle_in_slice: the same numbers without the general
-  !> section point.
+  !> (the same bits as evaluate). A section that says it is one circle at
+  !> every u (`circle_radius`, the shipped slides' tubes) takes
+  !> circle_in_slice: the same numbers without the general section point.
   pure subroutine tube_evaluate_in_slice(self, slice, v, order, p, status)
     class(tube_surface_t), intent(in) :: self
     type(slide_slice_t), intent(in) :: slice
@@ -185,22 +185,24 @@ contains
     integer, intent(in) :: order
     type(surface_point_t), intent(out) :: p
     type(status_t), intent(out) :: status
+    real(wp) :: radius
     if (.not. (slice%kept .and. order == slice%order)) then
       call set_status(status, STATUS_INVALID_INPUT, 'tube surface: a point of order '//format_integer(order)// &
                       ' in a slice kept for order '//format_integer(slice%order))
       return
     end if
-    select type (section => self%section)
-    type is (circle_section_t)
-      call circle_in_slice(section%radius, slice%c, slice%f, v, order, p)
+    radius = self%section%circle_radius()
+    if (radius > 0) then
+      call circle_in_slice(radius, slice%c, slice%f, v, order, p)
       status%code = STATUS_OK
-    class default
+    else
       call section_in_slice(self, slice, v, order, p, status)
-    end select
+    end if
   end subroutine tube_evaluate_in_slice
 
   !> tube_evaluate_in_slice for a circle of radius a: its section point
-  !> s = [-a cos v, -a sin v] and v-partials (circle_evaluate's products)
+  !> s = [-a cos v, -a sin v] (thesis 4.2, the circle every `circle_radius`
+  !> stands for) and v-partials (circle_section_t's evaluate's products)
   !> enter the sum of section_in_slice's constant section term by term, in
   !> the same order, so the bits are the same; no section point is built
   !> (its default initialisation, the test for u-derivatives, the array of
