@@ -29,7 +29,7 @@
 module kinetostatics_closure_blocks
   use base_kinds, only: wp
   use base_status, only: status_t
-  use numerics_linear_algebra, only: lu_factor, lu_solve, small_lu_solve, small_order
+  use numerics_linear_algebra, only: lu_factor, lu_solve, small_lu_solve, small_lu_solve_3, small_order
   use kinetostatics_state, only: element_box_t, element_links_t, frame_state_t, scalar_state_t, rest_velocities
   implicit none (type, external)
   private
@@ -613,7 +613,8 @@ contains
   end subroutine large_block_solve
 
   !> x := A^-1 x or A^-T x for x = v(members(1:m)), m <= small_order, from
-  !> P A = L U (lu_factor): small_lu_solve on a local copy (m = 3 written out).
+  !> P A = L U (lu_factor): small_lu_solve on a local copy (m = 3, a contact
+  !> point's loop, the rider's blocks: small_lu_solve_3, its loops unrolled).
   pure subroutine small_block_solve(lu, ipiv, m, members, v, transpose)
     integer, intent(in) :: m
     real(wp), intent(in) :: lu(m, m)
@@ -623,7 +624,11 @@ contains
     real(wp) :: x(small_order)
     integer :: i
     if (m == 3) then
-      call solve_3(lu, ipiv, members, v, transpose)
+      x(1:3) = [v(members(1)), v(members(2)), v(members(3))]
+      call small_lu_solve_3(lu, ipiv, x(1:3), transpose)
+      v(members(1)) = x(1)
+      v(members(2)) = x(2)
+      v(members(3)) = x(3)
       return
     end if
     do i = 1, m
@@ -634,52 +639,6 @@ contains
       v(members(i)) = x(i)
     end do
   end subroutine small_block_solve
-
-  !> small_block_solve for m = 3 (a contact point's loop: the rider's
-  !> blocks), written out: the same operations in the same order.
-  pure subroutine solve_3(lu, ipiv, members, v, transpose)
-    real(wp), intent(in) :: lu(3, 3)
-    integer, intent(in) :: ipiv(3), members(3)
-    real(wp), intent(inout) :: v(:)
-    logical, intent(in) :: transpose
-    real(wp) :: x(3), t
-    integer :: k
-    x = [v(members(1)), v(members(2)), v(members(3))]
-    if (.not. transpose) then
-      do k = 1, 2   ! ipiv(3) = 3
-        if (ipiv(k) /= k) then
-          t = x(k)
-          x(k) = x(ipiv(k))
-          x(ipiv(k)) = t
-        end if
-      end do
-      x(2) = x(2) - lu(2, 1)*x(1)
-      x(3) = x(3) - lu(3, 1)*x(1)
-      x(3) = x(3) - lu(3, 2)*x(2)
-      x(3) = x(3)/lu(3, 3)
-      x(1) = x(1) - lu(1, 3)*x(3)
-      x(2) = x(2) - lu(2, 3)*x(3)
-      x(2) = x(2)/lu(2, 2)
-      x(1) = x(1) - lu(1, 2)*x(2)
-      x(1) = x(1)/lu(1, 1)
-    else
-      x(1) = x(1)/lu(1, 1)
-      x(2) = (x(2) - lu(1, 2)*x(1))/lu(2, 2)
-      x(3) = ((x(3) - lu(1, 3)*x(1)) - lu(2, 3)*x(2))/lu(3, 3)
-      x(2) = x(2) - lu(3, 2)*x(3)
-      x(1) = (x(1) - lu(2, 1)*x(2)) - lu(3, 1)*x(3)
-      do k = 2, 1, -1
-        if (ipiv(k) /= k) then
-          t = x(k)
-          x(k) = x(ipiv(k))
-          x(ipiv(k)) = t
-        end if
-      end do
-    end if
-    v(members(1)) = x(1)
-    v(members(2)) = x(2)
-    v(members(3)) = x(3)
-  end subroutine solve_3
 
   !> The full J_beta (with_rates false, r x r) or J_x (nx x nx) from the blocks.
   subroutine assemble(self, with_rates, jac)

@@ -25,7 +25,7 @@ module numerics_linear_algebra
   public :: lu_factor, lu_solve, lu_reciprocal_condition, one_norm
   public :: cholesky_factor, cholesky_solve
   public :: qr_factor, triangular_inverse, normal_matrix_inverse
-  public :: small_order, small_lu_solve
+  public :: small_order, small_lu_solve, small_lu_solve_3
   public :: transposed_product, symmetric_transposed_product
 
   integer, parameter :: small_order = 12   !< up to this order LU and Cholesky run without LAPACK
@@ -116,6 +116,20 @@ contains
     end if
   end subroutine translate_info
 
+  !> The start of lu_factor and cholesky_factor: a wrong shape is refused
+  !> (STATUS_INTERNAL, `message`: a caller's bug) and an n x n matrix with
+  !> n = 0 has nothing to factor; either way failed_index = 0 and true.
+  logical function nothing_to_factor(shape_ok, n, message, status, failed_index) result(done)
+    logical, intent(in) :: shape_ok
+    integer, intent(in) :: n
+    character(len=*), intent(in) :: message
+    type(status_t), intent(inout) :: status
+    integer, intent(out), optional :: failed_index
+    done = .not. shape_ok .or. n == 0
+    if (.not. shape_ok) call set_status(status, STATUS_INTERNAL, message)
+    if (done .and. present(failed_index)) failed_index = 0
+  end function nothing_to_factor
+
   !> PA = LU of the square matrix a, in place. A zero pivot U(k,k) = 0 (the
   !> matrix is exactly singular) sets STATUS_DOMAIN and failed_index = k; the
   !> factors are then complete but must not be used for solving.
@@ -125,15 +139,8 @@ contains
     type(status_t), intent(inout) :: status
     integer, intent(out), optional :: failed_index
     integer :: info
-    if (size(a, 1) /= size(a, 2) .or. size(ipiv) < size(a, 1)) then
-      call set_status(status, STATUS_INTERNAL, 'lu_factor: a must be square and ipiv as long as a side')
-      if (present(failed_index)) failed_index = 0
-      return
-    end if
-    if (size(a, 1) == 0) then
-      if (present(failed_index)) failed_index = 0
-      return
-    end if
+    if (nothing_to_factor(size(a, 1) == size(a, 2) .and. size(ipiv) >= size(a, 1), size(a, 1), &
+                          'lu_factor: a must be square and ipiv as long as a side', status, failed_index)) return
     if (size(a, 1) <= small_order) then
       call small_lu_factor(a, ipiv, info)
       call translate_info('lu_factor', info, 'the matrix is singular, a zero pivot', status, failed_index)
@@ -185,7 +192,9 @@ contains
   end subroutine small_lu_factor
 
   !> Solves with the factors of small_lu_factor: P A = L U, so A x = b is
-  !> L U x = P b and A^T x = b is U^T L^T (P x) = b.
+  !> L U x = P b and A^T x = b is U^T L^T (P x) = b. The text is
+  !> numerics_small_lu_solve.inc, here at any order and in small_lu_solve_3
+  !> at order 3.
   pure subroutine small_lu_solve(lu, ipiv, b, transpose)
     real(wp), intent(in), contiguous :: lu(:, :)
     integer, intent(in), contiguous :: ipiv(:)
@@ -194,51 +203,23 @@ contains
     real(wp) :: t
     integer :: n, i, k
     n = size(lu, 1)
-    if (.not. transpose) then
-      do k = 1, n
-        if (ipiv(k) /= k) then
-          t = b(k)
-          b(k) = b(ipiv(k))
-          b(ipiv(k)) = t
-        end if
-      end do
-      do k = 1, n   ! L y = P b (unit diagonal), column by column
-        t = b(k)
-        do i = k + 1, n
-          b(i) = b(i) - lu(i, k)*t
-        end do
-      end do
-      do k = n, 1, -1   ! U x = y
-        b(k) = b(k)/lu(k, k)
-        t = b(k)
-        do i = 1, k - 1
-          b(i) = b(i) - lu(i, k)*t
-        end do
-      end do
-    else
-      do k = 1, n   ! U^T z = b, row k of U^T is column k of U
-        t = b(k)
-        do i = 1, k - 1
-          t = t - lu(i, k)*b(i)
-        end do
-        b(k) = t/lu(k, k)
-      end do
-      do k = n, 1, -1   ! L^T w = z
-        t = b(k)
-        do i = k + 1, n
-          t = t - lu(i, k)*b(i)
-        end do
-        b(k) = t
-      end do
-      do k = n, 1, -1   ! x = P^T w
-        if (ipiv(k) /= k) then
-          t = b(k)
-          b(k) = b(ipiv(k))
-          b(ipiv(k)) = t
-        end if
-      end do
-    end if
+    include 'numerics_small_lu_solve.inc'
   end subroutine small_lu_solve
+
+  !> small_lu_solve for n = 3 (a contact point's loop: the rider's closure
+  !> blocks in kinetostatics_closure_blocks), the same text with the order a
+  !> constant, so that every loop unrolls (written out by hand before, the
+  !> default run's block solves took 115.8M -> 49.9M instructions, 0386394).
+  pure subroutine small_lu_solve_3(lu, ipiv, b, transpose)
+    integer, parameter :: n = 3
+    real(wp), intent(in) :: lu(n, n)
+    integer, intent(in) :: ipiv(n)
+    real(wp), intent(inout) :: b(n)
+    logical, intent(in) :: transpose
+    real(wp) :: t
+    integer :: i, k
+    include 'numerics_small_lu_solve.inc'
+  end subroutine small_lu_solve_3
 
   subroutine lu_solve_vector(lu, ipiv, b, status, transpose)
     real(wp), intent(in), contiguous :: lu(:, :)
@@ -316,15 +297,8 @@ contains
     type(status_t), intent(inout) :: status
     integer, intent(out), optional :: failed_index
     integer :: info
-    if (size(a, 1) /= size(a, 2)) then
-      call set_status(status, STATUS_INTERNAL, 'cholesky_factor: a must be square')
-      if (present(failed_index)) failed_index = 0
-      return
-    end if
-    if (size(a, 1) == 0) then
-      if (present(failed_index)) failed_index = 0
-      return
-    end if
+    if (nothing_to_factor(size(a, 1) == size(a, 2), size(a, 1), 'cholesky_factor: a must be square', status, &
+                          failed_index)) return
     if (size(a, 1) <= small_order) then
       call small_cholesky_factor(a, info)
       call translate_info('cholesky_factor', info, 'the matrix is not positive definite', status, failed_index)
@@ -340,8 +314,8 @@ contains
   !> with the sum in k order: the operations of column-by-column updates in
   !> the same order, without storing the partial sums (5 x 5: 0.51k
   !> instructions instead of 0.73k; right-looking updates cost more). The
-  !> loops run 0 to n - 1 times: not unrolled (-funroll-loops' remainder
-  !> dispatch cost more than it saved, 5 x 5: 0.46k instead of 0.51k).
+  !> text is numerics_small_cholesky_factor.inc, here at any order and in
+  !> cholesky_factor_5 at order 5.
   pure subroutine small_cholesky_factor(a, info)
     real(wp), intent(inout), contiguous :: a(:, :)
     integer, intent(out) :: info
@@ -352,35 +326,12 @@ contains
       call cholesky_factor_5(a, info)
       return
     end if
-    info = 0
-    do j = 1, n
-      d = a(j, j)
-      !GCC$ unroll 1
-      do k = 1, j - 1
-        d = d - a(j, k)**2
-      end do
-      if (.not. d > 0) then
-        a(j, j) = d
-        info = j
-        return
-      end if
-      d = sqrt(d)
-      a(j, j) = d
-      !GCC$ unroll 1
-      do i = j + 1, n
-        t = a(i, j)
-        !GCC$ unroll 1
-        do k = 1, j - 1
-          t = t - a(i, k)*a(j, k)
-        end do
-        a(i, j) = t/d
-      end do
-    end do
+    include 'numerics_small_cholesky_factor.inc'
   end subroutine small_cholesky_factor
 
   !> Solves L L^T x = b with the factor of small_cholesky_factor (both
   !> triangles by rows: each x(k) from one sum in the order of the column
-  !> updates).
+  !> updates); the text is numerics_small_cholesky_solve.inc, as the factor's.
   pure subroutine small_cholesky_solve(l, b)
     real(wp), intent(in), contiguous :: l(:, :)
     real(wp), intent(inout), contiguous :: b(:)
@@ -391,53 +342,19 @@ contains
       call cholesky_solve_5(l, b)
       return
     end if
-    do k = 1, n   ! L y = b
-      t = b(k)
-      do i = 1, k - 1
-        t = t - l(k, i)*b(i)
-      end do
-      b(k) = t/l(k, k)
-    end do
-    do k = n, 1, -1   ! L^T x = y
-      t = b(k)
-      do i = k + 1, n
-        t = t - l(i, k)*b(i)
-      end do
-      b(k) = t/l(k, k)
-    end do
+    include 'numerics_small_cholesky_solve.inc'
   end subroutine small_cholesky_solve
 
   !> small_cholesky_factor for n = 5 (a body on a surface: the contact
-  !> mechanisms' 5 speeds): the same operations in the same order, with the
-  !> order a constant so the loops unroll completely (0.21k instructions
-  !> instead of 0.46k).
+  !> mechanisms' 5 speeds): the same text with the order a constant, so the
+  !> loops unroll completely (0.21k instructions instead of 0.46k).
   pure subroutine cholesky_factor_5(a, info)
     integer, parameter :: n = 5
     real(wp), intent(inout) :: a(n, n)
     integer, intent(out) :: info
     real(wp) :: d, t
     integer :: i, j, k
-    info = 0
-    do j = 1, n
-      d = a(j, j)
-      do k = 1, j - 1
-        d = d - a(j, k)**2
-      end do
-      if (.not. d > 0) then
-        a(j, j) = d
-        info = j
-        return
-      end if
-      d = sqrt(d)
-      a(j, j) = d
-      do i = j + 1, n
-        t = a(i, j)
-        do k = 1, j - 1
-          t = t - a(i, k)*a(j, k)
-        end do
-        a(i, j) = t/d
-      end do
-    end do
+    include 'numerics_small_cholesky_factor.inc'
   end subroutine cholesky_factor_5
 
   !> small_cholesky_solve for n = 5, the same way (0.10k instructions
@@ -448,20 +365,7 @@ contains
     real(wp), intent(inout) :: b(n)
     real(wp) :: t
     integer :: i, k
-    do k = 1, n   ! L y = b
-      t = b(k)
-      do i = 1, k - 1
-        t = t - l(k, i)*b(i)
-      end do
-      b(k) = t/l(k, k)
-    end do
-    do k = n, 1, -1   ! L^T x = y
-      t = b(k)
-      do i = k + 1, n
-        t = t - l(i, k)*b(i)
-      end do
-      b(k) = t/l(k, k)
-    end do
+    include 'numerics_small_cholesky_solve.inc'
   end subroutine cholesky_solve_5
 
   subroutine cholesky_solve_vector(l, b, status)
