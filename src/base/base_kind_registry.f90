@@ -19,12 +19,12 @@
 !> through intent(out) arguments, not function results (gfortran 12 frees a
 !> polymorphic function result twice).
 module base_kind_registry
-  use base_status, only: status_t
-  use base_spec, only: parameter_t
+  use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
+  use base_spec, only: parameter_t, spec_t, complete_spec
   use base_kind_index, only: kind_index_t
   implicit none (type, external)
   private
-  public :: kind_t, kind_box_t, kind_registry_t, builtins_i, registry_locks
+  public :: kind_t, kind_box_t, kind_registry_t, builtins_i, registry_locks, box_kinds
 
   !> What every kind has; a factory's kind extends it with its builder.
   type :: kind_t
@@ -41,7 +41,7 @@ module base_kind_registry
     type(kind_box_t), allocatable :: kinds(:)
     type(kind_index_t) :: names   !< kinds(k)%kind%name is names' k-th
   contains
-    procedure :: register, copy_all, find, copy_kind
+    procedure :: register, copy_all, find, copy_kind, copy_completed
   end type kind_registry_t
 
   abstract interface
@@ -59,6 +59,17 @@ contains
     locks = .false.
     !$ locks = .true.
   end function registry_locks
+
+  !> The kinds `known` boxed (copies), as a factory's `builtins` gives them.
+  subroutine box_kinds(known, kinds)
+    class(kind_t), intent(in) :: known(:)
+    type(kind_box_t), allocatable, intent(out) :: kinds(:)
+    integer :: k
+    allocate (kinds(size(known)))
+    do k = 1, size(known)
+      allocate (kinds(k)%kind, source=known(k))
+    end do
+  end subroutine box_kinds
 
   !> The built-in kinds on first use (inside the critical section).
   subroutine ensure_builtins(self, builtins, what)
@@ -146,4 +157,28 @@ contains
     end if
     !$omp end critical (base_kind_registry)
   end subroutine copy_kind
+
+  !> A copy of the kind of `spec` and the spec checked against its
+  !> declarations, defaults filled in (complete_spec; `context` names it in
+  !> a message). An unknown kind: STATUS_INVALID_INPUT with `unknown` (e.g.
+  !> 'unknown surface kind'), the kind's name and the known names, and
+  !> `kind` not allocated. The factory then builds with its own kind's builder.
+  subroutine copy_completed(self, builtins, what, spec, unknown, context, kind, completed, status)
+    class(kind_registry_t), intent(inout) :: self
+    procedure(builtins_i) :: builtins
+    character(len=*), intent(in) :: what, unknown, context
+    type(spec_t), intent(in) :: spec
+    class(kind_t), allocatable, intent(out) :: kind
+    type(spec_t), intent(out) :: completed
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: known
+    if (.not. status%ok()) return
+    call self%copy_kind(builtins, what, spec%kind, kind, known)
+    if (.not. allocated(kind)) then
+      call set_status(status, STATUS_INVALID_INPUT, unknown//' '''//spec%kind//'''; the kinds are'//known)
+      return
+    end if
+    completed = spec
+    call complete_spec(completed, kind%parameters, context, status)
+  end subroutine copy_completed
 end module base_kind_registry

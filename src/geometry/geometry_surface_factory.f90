@@ -22,8 +22,8 @@ module geometry_surface_factory
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
-  use base_spec, only: spec_t, complete_spec
-  use base_kind_registry, only: kind_t, kind_box_t, kind_registry_t
+  use base_spec, only: spec_t
+  use base_kind_registry, only: kind_t, kind_box_t, kind_registry_t, box_kinds
   use geometry_surface, only: surface_t
   use geometry_surface_kind, only: surface_kind_t
   use geometry_placed_surface, only: placed_surface_t
@@ -44,14 +44,12 @@ contains
   subroutine builtins(kinds)
     type(kind_box_t), allocatable, intent(out) :: kinds(:)
     type(surface_kind_t), allocatable :: known(:)
-    integer :: k
     known = [plane_kind(), ellipsoid_kind(), elliptic_paraboloid_kind(), hyperbolic_paraboloid_kind(), &
              elliptic_cylinder_kind(), apex_paraboloid_kind(), sphere_kind(), cone_kind(), sphere_zone_kind(), &
              revolution_kind()]
-    allocate (kinds(size(known)))
-    do k = 1, size(known)
-      allocate (kinds(k)%kind, source=known(k))
-    end do
+    ! (assigned first: gfortran 12 frees the components of function results in an
+    ! array constructor passed as an argument twice: the run aborts in free)
+    call box_kinds(known, kinds)
   end subroutine builtins
 
   !> Adds a kind; refused if its name is taken or empty, or it has no builder.
@@ -99,18 +97,12 @@ contains
     class(surface_t), allocatable :: local
     type(spec_t) :: completed
     class(kind_t), allocatable :: found
-    character(len=:), allocatable :: known
+    call registry%copy_completed(builtins, WHAT, spec, 'unknown surface kind', 'surface '''//spec%kind//'''', found, &
+                                 completed, status)
     if (.not. status%ok()) return
-    call registry%copy_kind(builtins, WHAT, spec%kind, found, known)
-    if (.not. allocated(found)) then
-      call set_status(status, STATUS_INVALID_INPUT, 'unknown surface kind '''//spec%kind//'''; the kinds are'//known)
-      return
-    end if
-    completed = spec
-    call complete_spec(completed, found%parameters, 'surface '''//spec%kind//'''', status)
     select type (found)
     type is (surface_kind_t)
-      if (status%ok()) call found%build(completed, local, status)
+      call found%build(completed, local, status)
     end select
     if (.not. status%ok()) return
     call place_surface(local, surface, status, origin, angles_deg)

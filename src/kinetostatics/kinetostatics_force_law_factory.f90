@@ -22,8 +22,8 @@
 module kinetostatics_force_law_factory
   use base_kinds, only: wp
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
-  use base_spec, only: spec_t, complete_spec
-  use base_kind_registry, only: kind_t, kind_box_t, kind_registry_t
+  use base_spec, only: spec_t
+  use base_kind_registry, only: kind_t, kind_box_t, kind_registry_t, box_kinds
   use kinetostatics_force_law, only: force_law_t, force_law_kind_t, law_place_t
   use kinetostatics_force_laws, only: coulomb_kind, viscous_kind, viscous_weight_kind, viscous_normal_kind
   implicit none (type, external)
@@ -39,12 +39,10 @@ contains
   subroutine builtins(kinds)
     type(kind_box_t), allocatable, intent(out) :: kinds(:)
     type(force_law_kind_t), allocatable :: known(:)
-    integer :: k
     known = [coulomb_kind(), viscous_kind(), viscous_weight_kind(), viscous_normal_kind()]
-    allocate (kinds(size(known)))
-    do k = 1, size(known)
-      allocate (kinds(k)%kind, source=known(k))
-    end do
+    ! (assigned first: gfortran 12 frees the components of function results in an
+    ! array constructor passed as an argument twice: the run aborts in free)
+    call box_kinds(known, kinds)
   end subroutine builtins
 
   !> Adds a kind; refused if its name is taken, empty or 'none' (no law), or it has no builder.
@@ -101,19 +99,12 @@ contains
     type(status_t), intent(inout) :: status
     type(spec_t) :: completed
     class(kind_t), allocatable :: found
-    character(len=:), allocatable :: known
+    call registry%copy_completed(builtins, WHAT, spec, 'force law '''//place%name//''': unknown kind', &
+                                 'force law '''//place%name//''' ('//spec%kind//')', found, completed, status)
     if (.not. status%ok()) return
-    call registry%copy_kind(builtins, WHAT, spec%kind, found, known)
-    if (.not. allocated(found)) then
-      call set_status(status, STATUS_INVALID_INPUT, 'force law '''//place%name//''': unknown kind '''// &
-                      spec%kind//'''; the kinds are'//known)
-      return
-    end if
-    completed = spec
-    call complete_spec(completed, found%parameters, 'force law '''//place%name//''' ('//spec%kind//')', status)
     select type (found)
     type is (force_law_kind_t)
-      if (status%ok()) call found%build(completed, place, law, status)
+      call found%build(completed, place, law, status)
     end select
   end subroutine force_law_from_spec
 end module kinetostatics_force_law_factory
