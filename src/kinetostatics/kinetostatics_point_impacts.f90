@@ -25,7 +25,8 @@
 !>
 !> Solved by nonsmooth Gauss-Seidel: each contact's own problem (its 3 x 3
 !> block, the others' impulses fixed) is solved exactly (no impulse, stick,
-!> or slip in the direction found by bisection in the tangent plane), sweep
+!> stick on the cone's edge to rounding, or slip in the direction found by
+!> bisection in the tangent plane), sweep
 !> after sweep until no impulse changes by more than sweep_tolerance of the
 !> largest. Where the contacts hold one rigid body at more than one point,
 !> W is singular: the bodies' velocities after are one, the split of the
@@ -49,6 +50,7 @@ module kinetostatics_point_impacts
   integer, parameter :: max_sweeps = 100000
   real(wp), parameter :: sweep_tolerance = 1e-14_wp   ! of the largest impulse
   integer, parameter :: slip_samples = 720             ! angles searched for a contact's slip direction
+  real(wp), parameter :: edge_rounding = 16            ! a stick on the cone's edge to rounding: eps's (contact_impulse)
 
 contains
 
@@ -127,7 +129,7 @@ contains
     real(wp), intent(in) :: a(3, 3), c(3), n(3), mu
     real(wp), intent(out) :: p(3)
     type(status_t), intent(inout) :: status
-    real(wp) :: factored(3, 3), cn, t1(3), t2(3), free(3), angle0
+    real(wp) :: factored(3, 3), cn, t1(3), t2(3), free(3), angle0, pn, pt(3), edge(3)
     integer :: ipiv(3)
     cn = dot_product(n, c)
     p = 0
@@ -142,7 +144,25 @@ contains
     call lu_factor(factored, ipiv, status)
     if (status%ok()) call lu_solve(factored, ipiv, p, status)
     if (.not. status%ok()) return
-    if (dot_product(n, p) > 0 .and. norm2(p - dot_product(n, p)*n) <= mu*dot_product(n, p)) return
+    pn = dot_product(n, p)
+    pt = p - pn*n
+    if (pn > 0 .and. norm2(pt) <= mu*pn) return
+    ! On the cone's edge stick and slip meet (the slip speed zero), and no
+    ! slip direction can be found there. A sticking impulse outside the
+    ! cone by no more than the velocity's rounding (its tangential part
+    ! brought onto the edge changes a p + c by less than edge_rounding eps
+    ! of |a| |p| + |c|, the size of the velocities' own rounding, W P and
+    ! c being sums of such terms) is taken onto the edge: the law then holds
+    ! exactly for the impulse and to rounding for the velocity after.
+    ! Gauss-Seidel at a body held at two points leaves one contact there as
+    ! a rule: it pushes the squeeze between them until one friction is full.
+    if (pn > 0) then
+      edge = pn*n + mu*pn*pt/norm2(pt)
+      if (norm2(matmul(a, edge - p)) <= edge_rounding*epsilon(1.0_wp)*(maxval(abs(a))*norm2(p) + norm2(c))) then
+        p = edge
+        return
+      end if
+    end if
     call slip_impulse(a, c, n, t1, t2, mu, angle0, p, status)
   end subroutine contact_impulse
 

@@ -37,6 +37,16 @@
 !>     speed (shifted by e) >= 0, the impulse >= 0, one of them zero; the
 !>     friction inside the cone with no slip, or on its edge against the
 !>     slip; v+ = v- + W P; the energy's fall >= 0 where it was resolved.
+!>   - near_rest: box_landing.nml's fourth impact when run for 2 s (W,
+!>     the normals and the velocities before as the flight had them, 17
+!>     digits): both feet approach at V = 0.3032 m/s, forward at 8e-16 m/s
+!>     (stopped at the second impact), e = 0.5, mu = 0.4. Gauss-Seidel
+!>     leaves the front foot's own stick impulse on its cone's edge (the
+!>     squeeze between the feet pushed until one friction is full), 2e-16
+!>     outside by rounding, where its slip speed is zero: it failed there
+!>     ("neither sticks nor slips"). The stick closed form: both feet leave
+!>     at e V straight up, no slip, P_1 + P_2 = m (1 + e) V, the energy's
+!>     fall m V^2 (1 - e^2)/2; each friction inside its cone.
 !>   - energy_refused: a two-point impact where Newton's e = 1 with friction
 !>     would raise the kinetic energy (found by a search: 29 of 300 random
 !>     ones at e = 1, mu <= 0.6; none of 300 at e = 0.5 or e = 0): refused,
@@ -69,6 +79,7 @@ program test_impacts_at_once
   call box_flight()
   call energy_refused()
   call law_conditions()
+  call near_rest()
   call finish_tests('test_impacts_at_once')
 
 contains
@@ -516,4 +527,46 @@ contains
                number(real(unresolved, wp)))
     print '(a, es10.2, a, i0, a, i0)', '  law conditions: worst ', worst, ', not resolved ', unresolved, ' of ', cases
   end subroutine law_conditions
+  !> box_landing.nml's fourth impact when run for 2 s (the box m = 2 kg,
+  !> its feet at -+0.2 m along x, 0.12 m below its centre; the numbers as
+  !> the flight passed them to resolve_impacts): both stick, against the
+  !> closed form.
+  subroutine near_rest()
+    real(wp), parameter :: m = 2, e = 0.5_wp, mu = 0.4_wp
+    real(wp), parameter :: w(6, 6) = reshape([ &
+      9.32000000000007489e-01_wp, 1.28176380125027734e-15_wp, -7.20000000000004969e-01_wp, &
+      9.32000000000000606e-01_wp, -1.37794362599941321e-15_wp, 7.20000000000008411e-01_wp, &
+      1.28176380125027734e-15_wp, 2.12461538461538391e+00_wp, 7.07684894524816815e-16_wp, &
+      1.67869641132602716e-15_wp, 2.04615384615384366e-01_wp, 2.07718891362699502e-15_wp, &
+      -7.20000000000004969e-01_wp, 7.07684894524816815e-16_wp, 1.69999999999999551e+00_wp, &
+      -7.19999999999993312e-01_wp, 1.77948945607016254e-15_wp, -7.00000000000001399e-01_wp, &
+      9.32000000000000606e-01_wp, 1.67869641132602716e-15_wp, -7.19999999999993312e-01_wp, &
+      9.31999999999993500e-01_wp, -1.77487623607516540e-15_wp, 7.19999999999996754e-01_wp, &
+      -1.37794362599941321e-15_wp, 2.04615384615384366e-01_wp, 1.77948945607016254e-15_wp, &
+      -1.77487623607516540e-15_wp, 2.12461538461538213e+00_wp, 1.00538435208162031e-15_wp, &
+      7.20000000000008411e-01_wp, 2.07718891362699502e-15_wp, -7.00000000000001399e-01_wp, &
+      7.19999999999996754e-01_wp, 1.00538435208162031e-15_wp, 1.70000000000000728e+00_wp], [6, 6])
+    real(wp), parameter :: v(3, 2) = reshape([ &
+      8.14903700074868238e-16_wp, 2.16936748935778246e-30_wp, -3.03211706166279515e-01_wp, &
+      8.14903700074861335e-16_wp, 1.40927985290833957e-16_wp, -3.03211706166278072e-01_wp], [3, 2])
+    real(wp) :: normals(3, 2), p(3, 2), after(3, 2), lost(2), big_v, pn
+    integer :: i
+    type(status_t) :: st
+    normals = reshape([0, 0, 1, 0, 0, 1], [3, 2])
+    big_v = -sum(v(3, :))/2
+    call resolve_impacts(w, normals, v, [e, e], [mu, mu], p, after, lost, st)
+    call check(st%ok(), 'near rest: resolved: '//st%text())
+    if (.not. st%ok()) return
+    do i = 1, 2
+      call check_close(after(3, i), e*big_v, 1e-12_wp, 0.0_wp, 'near rest: leaves at e V (m/s)')
+      call check_close(norm2(after(1:2, i)), 0.0_wp, 0.0_wp, 1e-12_wp*big_v, 'near rest: no slip after (m/s)')
+      pn = p(3, i)
+      call check(pn >= 0 .and. norm2(p(1:2, i)) <= mu*pn*(1 + 4*epsilon(1.0_wp)), &
+                 'near rest: each friction inside its cone: '//number(norm2(p(1:2, i)))//' <= '//number(mu*pn))
+    end do
+    call check_close(p(3, 1) + p(3, 2), m*(1 + e)*big_v, 1e-12_wp, 0.0_wp, 'near rest: P_1 + P_2 = m (1 + e) V (N s)')
+    call check_close(sum(lost), m*big_v**2*(1 - e**2)/2, 1e-12_wp, 0.0_wp, &
+                     'near rest: the energy''s fall m V^2 (1 - e^2)/2 (J)')
+    print '(a, 2es10.2)', '  near rest: friction over mu p_n ', [(norm2(p(1:2, i))/(mu*p(3, i)), i = 1, 2)]
+  end subroutine near_rest
 end program test_impacts_at_once
