@@ -14,9 +14,10 @@
 !> search at its body's pose; a free body's from its pose, its rates from
 !> its twist).
 !>
-!> A closed contact's body touching another surface while carried (two
-!> closed contacts on one body) ends the run (contact_flight), as does a
-!> flying body hitting a carried one; two flying bodies hitting each other
+!> A closed contact's body landing on another surface while carried is one
+!> impact through its carrying contacts too (contact_flight
+!> impact_on_carried); a flying body hitting a carried one ends the run
+!> (not built); two flying bodies hitting each other
 !> is an impact of the pair (contact_body_impact), and they fly on.
 module contact_bodies
   use base_kinds, only: wp
@@ -93,6 +94,7 @@ contains
     allocate (flight%mass(nb), flight%inertia(3, 3, nb), flight%centre(3, nb), flight%impacts(0), &
               flight%speeds(6, nb), flight%closings(0))
     flight%body_frame = built%body_frame(2:)
+    call flight%clear_switches()
     flight%coordinates = built%free
     flight%rotation_element = built%rotation_element
     flight%gap_monitors = built%gap_monitors

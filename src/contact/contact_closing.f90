@@ -51,7 +51,8 @@ module contact_closing
   use kinetostatics_recorder, only: mechanism_series_t, join_series
   use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_LIFT_OFF, STOP_NOT_BUILT
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model
-  use contact_flight, only: flight_ode_t, build_flight, restart_flight, closed_part, carrying_contact
+  use contact_flight, only: flight_ode_t, build_flight, restart_flight, closed_part, carrying_contact, &
+    impact_on_carried
   use contact_open_gaps, only: carried_ode_t, carry, touching_gap_limit
   use contact_bodies, only: build_bodies
   implicit none (type, external)
@@ -74,6 +75,36 @@ module contact_closing
     procedure :: append => phases_append
     procedure :: finish => phases_finish
   end type phases_t
+
+  interface
+    ! the joined records (contact_closing_phases)
+    module subroutine phases_add(self, series, q_units, beta_units, outcome)
+      class(phases_t), intent(inout) :: self
+      type(mechanism_series_t), intent(in) :: series
+      character(len=*), intent(in) :: q_units(:), beta_units(:), outcome
+    end subroutine phases_add
+
+    module subroutine phases_add_flight(self, flight)
+      class(phases_t), intent(inout) :: self
+      type(flight_ode_t), intent(in) :: flight
+    end subroutine phases_add_flight
+
+    module subroutine phases_add_carried(self, carried)
+      class(phases_t), intent(inout) :: self
+      type(carried_ode_t), intent(in) :: carried
+    end subroutine phases_add_carried
+
+    module subroutine phases_append(self, open, gap, point, velocity)
+      class(phases_t), intent(inout) :: self
+      integer, intent(in) :: open(:, :)
+      real(wp), intent(in) :: gap(:, :), point(:, :, :), velocity(:, :, :)
+    end subroutine phases_append
+
+    module subroutine phases_finish(self, flight)
+      class(phases_t), intent(inout) :: self
+      type(flight_ode_t), intent(inout) :: flight
+    end subroutine phases_finish
+  end interface
 
 contains
 
@@ -121,8 +152,7 @@ contains
     chart_changes = 0
     do
       if (flying) then
-        flight%landed = 0
-        flight%closings = [integer ::]
+        call flight%clear_switches()
         if (.not. first) call flight%start_series(16)
         call drive(flight, y, phase_options, phase, status)
         call run%add(flight%series, flight%q_units, flight%beta_units, flight%outcome)
@@ -159,6 +189,15 @@ contains
         call run%add(carried%series, flight%closed%q_units, flight%closed%beta_units, carried%outcome)
         call run%add_carried(carried)
         flight%closed%ode = carried%mechanism_ode_t
+        if (.not. next .and. status%ok() .and. phase%outcome == DRIVE_EVENT_STOP .and. carried%touched > 0 .and. &
+            phase%t < options%t_end) then
+          ! it lands on another contact while carried: the impact through both, the phases of contact_bodies on
+          call add_result(result, phase, first)
+          call impact_while_carried(flight, carried, run, phase, options, phase_options, result, chart_changes, &
+                                    status)
+          handed_over = .true.
+          exit
+        end if
         if (next) then
           associate (s => carried%series, n => carried%series%n)
             call restart_flight(flight, s%body_rot(:, :, 1, n), s%body_r(:, 1, n), &
@@ -182,6 +221,82 @@ contains
     flight%chart_changes = flight%chart_changes + chart_changes
     open = run%open
   end subroutine drive_flight
+
+  !> A closed phase of one body (carried) that stopped where it touched
+  !> another of its contacts (carried%touched): the body carried by its
+  !> closed contact as a phase of contact_bodies (build_bodies at the last
+  !> record's pose and twist, the touched contact touching), the impact
+  !> through both (contact_flight impact_on_carried), and the run's phases
+  !> on from there (drive_phases) with the contacts it closed and opened and
+  !> the body's twist after it. An impact that ends the run (said so in the
+  !> outcome) ends it here.
+  subroutine impact_while_carried(flight, carried, run, phase, options, phase_options, result, chart_changes, status)
+    type(flight_ode_t), intent(inout), target :: flight
+    type(carried_ode_t), intent(in) :: carried
+    type(phases_t), intent(inout) :: run
+    type(driver_result_t), intent(in) :: phase
+    type(driver_options_t), intent(in) :: options
+    type(driver_options_t), intent(inout) :: phase_options
+    type(driver_result_t), intent(inout) :: result
+    integer, intent(inout) :: chart_changes
+    type(status_t), intent(inout) :: status
+    type(flight_ode_t), allocatable :: hit, start
+    type(contact_system_t) :: placed
+    real(wp), allocatable :: q0(:), qd0(:), y(:)
+    character(len=8), allocatable :: units(:)
+    logical :: closed(size(flight%system%contacts)), lands(size(flight%system%contacts))
+    integer :: action
+    placed = flight%system
+    associate (s => carried%series, n => carried%series%n)
+      placed%bodies(1)%position = s%body_r(:, 1, n)
+      placed%bodies(1)%rotation = s%body_rot(:, :, 1, n)
+      placed%bodies(1)%velocity = s%body_v(:, 1, n)
+      placed%bodies(1)%angular_velocity = s%body_omega(:, 1, n)
+    end associate
+    closed = .false.
+    closed(flight%closed_on) = .true.
+    allocate (hit)
+    call build_bodies(placed, closed, hit, q0, qd0, units, status, carried%touched, .true.)
+    if (status%ok()) then
+      hit%impacts = flight%impacts
+      hit%outcome = ''
+      call hit%clear_switches()
+      lands = .false.
+      lands(carried%touched) = .true.
+      action = 0
+      ! the pose and twist of the last record (build_bodies's start), the gaps there
+      call hit%mechanism%set_positions(hit%work, q0, status)
+      if (status%ok()) call hit%mechanism%set_velocities(hit%work, qd0)
+      if (status%ok()) call hit%gaps%update(hit%work, hit%body_frame, status)
+      if (status%ok()) call impact_on_carried(hit, lands, 1, phase%t, action, status)
+    end if
+    if (.not. status%ok()) then
+      call prefix_status(status, 'the impact on the carried body at t = '//format_short(phase%t)//' s')
+      result%outcome = DRIVE_FAILED
+      return
+    end if
+    flight%impacts = hit%impacts
+    run%history = run%history//': '//hit%outcome
+    run%not_built = hit%stop_kind == STOP_NOT_BUILT
+    if (.not. hit%twisted(1)) return   ! the impact ended the run, saying why
+    closed = hit%gaps%carried
+    closed(hit%closings) = .true.
+    if (size(hit%openings) > 0) closed(hit%openings) = .false.
+    placed%bodies(1)%angular_velocity = hit%twist_after(1:3, 1)
+    placed%bodies(1)%velocity = hit%twist_after(4:6, 1)
+    allocate (start)
+    call build_bodies(placed, closed, start, q0, qd0, units, status, hit%bounced, .true.)
+    if (.not. status%ok()) then
+      call prefix_status(status, 'after the impact on the carried body at t = '//format_short(phase%t)//' s')
+      result%outcome = DRIVE_FAILED
+      return
+    end if
+    start%impacts = flight%impacts
+    y = start%initial_state(q0, qd0)
+    call carry_work(run%series, start, y)
+    phase_options%t_start = phase%t
+    call drive_phases(flight, start, y, options, phase_options, run, result, .false., chart_changes, status)
+  end subroutine impact_while_carried
 
   !> A flight phase of one body that stopped where an impact closed several
   !> of its contacts at once (flight%closings): the body carried by them
@@ -301,8 +416,7 @@ contains
     y = y0
     starting = first
     do
-      p%landed = 0
-      p%closings = [integer ::]
+      call p%clear_switches()
       if (.not. starting) call p%start_series(16)
       call drive(p, y, phase_options, phase, status)
       call run%add(p%series, p%q_units, p%beta_units, p%outcome)
@@ -316,7 +430,7 @@ contains
         if (c > 0) lifted = p%system%contacts(c)%may_open
       end if
       next = status%ok() .and. phase%outcome == DRIVE_EVENT_STOP .and. phase%t < options%t_end .and. &
-             (size(p%closings) > 0 .or. lifted) .and. .not. run%not_built
+             (size(p%closings) > 0 .or. lifted .or. any(p%twisted)) .and. .not. run%not_built
       if (next) then
         closed = p%gaps%carried
         touching = p%gaps%touching
@@ -324,6 +438,9 @@ contains
           closed(p%closings(k)) = .true.
           if (touching == p%closings(k)) touching = 0
         end do
+        ! an impact on a carried body: the contacts it opened, the one it left at gap 0
+        if (size(p%openings) > 0) closed(p%openings) = .false.
+        if (p%bounced > 0) touching = p%bounced
         if (lifted) then
           closed(c) = .false.
           touching = c
@@ -335,6 +452,11 @@ contains
           end if
         end if
         placed = at_last_record(p)
+        do k = 1, size(placed%bodies)
+          if (.not. p%twisted(k)) cycle
+          placed%bodies(k)%angular_velocity = p%twist_after(1:3, k)
+          placed%bodies(k)%velocity = p%twist_after(4:6, k)
+        end do
         allocate (next_phase)
         call build_bodies(placed, closed, next_phase, q0, qd0, units, status, touching, .true.)
         if (.not. status%ok()) call prefix_status(status, 'the switch at t = '//format_short(phase%t)//' s')
@@ -435,133 +557,6 @@ contains
     end if
     call add_driver_result(result, phase)
   end subroutine add_result
-
-  !> Appends a phase's records and its outcome.
-  subroutine phases_add(self, series, q_units, beta_units, outcome)
-    class(phases_t), intent(inout) :: self
-    type(mechanism_series_t), intent(in) :: series
-    character(len=*), intent(in) :: q_units(:), beta_units(:), outcome
-    integer :: n1
-    if (.not. allocated(self%series%q_names)) then
-      self%series = series
-      self%q_units = q_units
-      self%beta_units = beta_units
-    else
-      n1 = self%series%n
-      self%q_units = united_units(self%series%q_names, self%q_units, series%q_names, q_units)
-      self%beta_units = united_units(self%series%beta_names, self%beta_units, series%beta_names, beta_units)
-      self%series = join_series(self%series, series)
-      ! a phase's start is a switch, an event of the run
-      if (self%series%n > n1) self%series%kind(n1 + 1) = RECORD_EVENT
-    end if
-    if (len(outcome) == 0) return
-    if (len(self%history) > 0) self%history = self%history//'; '
-    self%history = self%history//outcome
-  end subroutine phases_add
-
-  !> The contacts of a flight's records: open (closed: a contact carrying
-  !> its body among several, contact_bodies), their gaps, points and slips.
-  subroutine phases_add_flight(self, flight)
-    class(phases_t), intent(inout) :: self
-    type(flight_ode_t), intent(in) :: flight
-    integer :: n, c
-    real(wp), allocatable :: gap(:, :)
-    n = flight%series%n
-    allocate (gap(size(self%open, 1), n))
-    do c = 1, size(gap, 1)
-      gap(c, :) = flight%series%monitor(flight%gap_monitors(c), :n)
-    end do
-    if (n == 0) return
-    call self%append(spread(merge(0, 1, flight%gaps%carried), 2, n), gap, flight%gap_point(:, :, :n), &
-                     flight%gap_velocity(:, :, :n))
-  end subroutine phases_add_flight
-
-  !> The contacts of a closed phase's records: the carrying one closed (its
-  !> point and slip the model's), the others open (their watched gaps).
-  subroutine phases_add_carried(self, carried)
-    class(phases_t), intent(inout) :: self
-    type(carried_ode_t), intent(in) :: carried
-    integer :: n, k
-    integer, allocatable :: open(:, :)
-    real(wp), allocatable :: point(:, :, :), velocity(:, :, :)
-    n = carried%series%n
-    if (n == 0) return
-    k = carried%gaps%closed
-    open = spread(spread(1, 1, size(self%open, 1)), 2, n)
-    open(k, :) = 0
-    point = carried%gap_point(:, :, :n)
-    velocity = carried%gap_velocity(:, :, :n)
-    ! the closed model's one contact
-    point(:, k, :) = carried%series%contact_r(:, 1, :n)
-    velocity(:, k, :) = carried%series%slip(:, 1, :n)
-    call self%append(open, carried%gap_value(:, :n), point, velocity)
-  end subroutine phases_add_carried
-
-  !> Appends the contacts' states of a phase's records.
-  subroutine phases_append(self, open, gap, point, velocity)
-    class(phases_t), intent(inout) :: self
-    integer, intent(in) :: open(:, :)
-    real(wp), intent(in) :: gap(:, :), point(:, :, :), velocity(:, :, :)
-    integer :: nc, n
-    nc = size(open, 1)
-    n = size(self%open, 2) + size(open, 2)
-    self%open = reshape([self%open, open], [nc, n])
-    self%gap = reshape([self%gap, gap], [nc, n])
-    self%point = reshape([self%point, point], [3, nc, n])
-    self%velocity = reshape([self%velocity, velocity], [3, nc, n])
-  end subroutine phases_append
-
-  !> The joined records into the flight: its series (each open contact's
-  !> point and slip and every contact's gap from the phases' own; bodies on
-  !> the closed contact's frames, whose mechanism reports the run), units,
-  !> every contact's points and slips, and outcome.
-  subroutine phases_finish(self, flight)
-    class(phases_t), intent(inout) :: self
-    type(flight_ode_t), intent(inout) :: flight
-    integer :: c, i, k, j, cs, gm
-    associate (s => self%series)
-      do c = 1, size(self%open, 1)
-        associate (name => flight%system%contacts(c)%name)
-          cs = findloc([(trim(s%contact_names(k)) == name, k = 1, s%nc)], .true., dim=1)
-          gm = findloc([(trim(s%monitor_names(k)) == name//'.gap', k = 1, s%nm)], .true., dim=1)
-        end associate
-        do i = 1, s%n
-          if (gm > 0) s%monitor(gm, i) = self%gap(c, i)
-          if (cs == 0 .or. self%open(c, i) == 0) cycle
-          s%contact_r(:, cs, i) = self%point(:, c, i)
-          s%slip(:, cs, i) = self%velocity(:, c, i)
-        end do
-      end do
-      if (allocated(flight%closed)) then
-        associate (closed => flight%closed%ode%series)
-          do k = 1, s%nb
-            j = findloc([(closed%body_names(j) == s%body_names(k), j = 1, closed%nb)], .true., dim=1)
-            if (j > 0) s%body_frame(k) = closed%body_frame(j)
-          end do
-        end associate
-      end if
-    end associate
-    call move_alloc(self%q_units, flight%q_units)
-    call move_alloc(self%beta_units, flight%beta_units)
-    call move_alloc(self%point, flight%gap_point)
-    call move_alloc(self%velocity, flight%gap_velocity)
-    flight%series = self%series
-    flight%outcome = self%history
-  end subroutine phases_finish
-
-  !> The units of join_series's united names: a's, then those of b's names
-  !> not in a.
-  function united_units(names_a, units_a, names_b, units_b) result(units)
-    character(len=*), intent(in) :: names_a(:), names_b(:)
-    character(len=*), intent(in) :: units_a(:), units_b(:)
-    character(len=8), allocatable :: units(:)
-    integer :: k, j
-    units = units_a
-    do k = 1, size(names_b)
-      if (any([(names_a(j) == names_b(k), j = 1, size(names_a))])) cycle
-      units = [character(len=8) :: units, units_b(k)]
-    end do
-  end function united_units
 
   !> The flight of a body carried at the start by a closed contact (the
   !> description's one contact that does not start open; `model` built from

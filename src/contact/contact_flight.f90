@@ -46,8 +46,10 @@
 !> closed contacts with the flying bodies free, the closed contacts' gaps
 !> not watched): a closing stops the flight there as for one body, and
 !> contact_closing (drive_bodies) goes on with that body carried, the others
-!> as they were. A carried body touching another surface fails the run (two
-!> closed contacts on one body are not built: add_outcome's not_built).
+!> as they were. A carried body landing on another surface is one impact
+!> through its carrying contacts too (impact_on_carried, in the submodule
+!> contact_flight_impacts with impact_at_once): the phase stops there and
+!> contact_closing goes on with the body's twist after it.
 !>
 !> Bodies hit each other: a contact between two bodies (body_1 a body, its
 !> shape_1 on body_1's frame) that starts open is watched as the ground's
@@ -82,7 +84,7 @@ module contact_flight
   implicit none (type, external)
   private
   public :: flight_ode_t, impact_record_t, build_flight, starts_open, restart_flight, check_flight_system, &
-    closed_part, carrying_contact
+    closed_part, carrying_contact, impact_on_carried
 
   !> One impact, for the result's table.
   type :: impact_record_t
@@ -117,6 +119,11 @@ module contact_flight
     integer, allocatable :: carrier(:)          ! each body's closed contact (0: it flies)
     integer, allocatable :: mechanism_contact(:)   ! each contact's place among the mechanism's (0: open)
     integer, allocatable :: closings(:)         ! the contacts the impacts of the last event closed
+    ! an impact on a carried body (impact_on_carried) stops the phase with:
+    integer, allocatable :: openings(:)         ! the closed contacts it opened
+    integer :: bounced = 0                      ! the contact at gap 0 it left open (0: none)
+    logical, allocatable :: twisted(:)          ! each body: its twist changed by it, twist_after
+    real(wp), allocatable :: twist_after(:, :)  ! 6 x bodies: [omega, v] (world; v of its origin)
     integer, allocatable :: rotation_element(:)   ! each body's free rotation
     type(contact_model_t), allocatable :: closed   ! the closed contact after closing
     ! per record of the flight and contact: the gap's point on shape_1 (m)
@@ -124,6 +131,7 @@ module contact_flight
     ! surface (m/s, the velocity's tangential part), world; 3 x contacts x records
     real(wp), allocatable :: gap_point(:, :, :), gap_velocity(:, :, :)
   contains
+    procedure :: clear_switches
     procedure :: root_count => flight_root_count
     procedure :: roots => flight_roots
     procedure :: handle_event => flight_handle_event
@@ -158,9 +166,59 @@ module contact_flight
       real(wp), intent(inout) :: rates(:)
       type(status_t), intent(inout) :: status
     end subroutine start_rates
+    ! the impacts of several contacts (contact_flight_impacts)
+    module function landed_names(self, lands) result(text)
+      class(flight_ode_t), intent(in) :: self
+      logical, intent(in) :: lands(:)
+      character(len=:), allocatable :: text
+    end function landed_names
+
+    module subroutine impact_at_once(self, lands, t, y, action, status)
+      class(flight_ode_t), intent(inout) :: self
+      logical, intent(in) :: lands(:)
+      real(wp), intent(in) :: t
+      real(wp), intent(inout) :: y(:)
+      integer, intent(inout) :: action
+      type(status_t), intent(inout) :: status
+    end subroutine impact_at_once
+
+    module subroutine impact_on_carried(self, lands, b, t, action, status)
+      class(flight_ode_t), intent(inout) :: self
+      logical, intent(in) :: lands(:)
+      integer, intent(in) :: b
+      real(wp), intent(in) :: t
+      integer, intent(inout) :: action
+      type(status_t), intent(inout) :: status
+    end subroutine impact_on_carried
+
+    !> not_built: a stop the model cannot go on from; drive_flight fails the run there (exit 2, records kept)
+    module subroutine add_outcome(self, text, not_built)
+      class(flight_ode_t), intent(inout) :: self
+      character(len=*), intent(in) :: text
+      logical, intent(in), optional :: not_built
+    end subroutine add_outcome
+
+    module function impact_body(self, b) result(body)
+      class(flight_ode_t), intent(in) :: self
+      integer, intent(in) :: b
+      type(impact_body_t) :: body
+    end function impact_body
   end interface
 
 contains
+
+  !> A phase's switches cleared: no closing, opening or impact on a
+  !> carried body yet (each body's twist its own).
+  subroutine clear_switches(self)
+    class(flight_ode_t), intent(inout) :: self
+    self%landed = 0
+    self%closings = [integer ::]
+    self%openings = [integer ::]
+    self%bounced = 0
+    self%twisted = spread(.false., 1, size(self%body_frame))
+    if (.not. allocated(self%twist_after)) allocate (self%twist_after(6, size(self%body_frame)))
+    self%twist_after = 0
+  end subroutine clear_switches
 
   !> Whether any contact of the description starts open.
   logical function starts_open(system)
@@ -241,11 +299,8 @@ contains
       if (.not. lands(c)) cycle
       associate (contact => self%system%contacts(c))
         if (self%carrier(self%gaps%body(c)) > 0) then
-          action = max(action, EVENT_STOP)
-          call add_outcome(self, 'contact '''//contact%name//''': body '''//contact%body_2//''' touches shape '''// &
-                           contact%shape_1//''' at t = '//format_short(t)//' s while contact '''// &
-                           self%system%contacts(self%carrier(self%gaps%body(c)))%name//''' carries it (two '// &
-                           'closed contacts on one body are not built): the run ends here', not_built=.true.)
+          ! an impact through the contacts that carry the body (impact_on_carried)
+          call impact_on_carried(self, lands, self%gaps%body(c), t, action, status)
           return
         end if
         if (self%gaps%body_1(c) == 0) cycle
@@ -280,20 +335,6 @@ contains
                        'restitution given: the run ends at the landing)')
     end do
   end subroutine flight_handle_event
-
-  !> The names of the contacts landed on, quoted, comma-separated.
-  function landed_names(self, lands) result(text)
-    class(flight_ode_t), intent(in) :: self
-    logical, intent(in) :: lands(:)
-    character(len=:), allocatable :: text
-    integer :: c
-    text = ''
-    do c = 1, size(lands)
-      if (.not. lands(c)) cycle
-      if (len(text) > 0) text = text//', '
-      text = text//''''//self%system%contacts(c)%name//''''
-    end do
-  end function landed_names
 
   !> The impact at the landing on contact c (the mechanism at y's pose and
   !> speeds, the gaps updated): the impulse L from K of the pair (its body
@@ -356,112 +397,6 @@ contains
       end if
     end associate
   end subroutine impact
-
-  !> The landings of one event where a body lands on several contacts at
-  !> once (`lands`, every contact landed on; no carried body among them): one
-  !> impact at all of them (contact_body_impact collide_at_once, Newton's
-  !> restitution and impact_mu at each), a row per contact, and the bodies
-  !> fly on. Not built, the run ending here, saying so: such an impact
-  !> without restitution, and one that leaves a contact slower than its
-  !> close_speed (closing several contacts at once).
-  subroutine impact_at_once(self, lands, t, y, action, status)
-    class(flight_ode_t), intent(inout) :: self
-    logical, intent(in) :: lands(:)
-    real(wp), intent(in) :: t
-    real(wp), intent(inout) :: y(:)
-    integer, intent(inout) :: action
-    type(status_t), intent(inout) :: status
-    type(impact_body_t) :: bodies(0:size(self%body_frame))
-    integer, allocatable :: c(:), pair(:, :)
-    real(wp), allocatable :: normals(:, :), points_1(:, :), points_2(:, :), rates(:)
-    real(wp), dimension(count(lands)) :: impulse, tangential, before, after, lost
-    logical :: closing(count(lands))
-    character(len=:), allocatable :: stopped
-    integer :: f, i, b, m
-    c = pack([(i, i = 1, size(lands))], lands)
-    m = size(c)
-    if (any(self%system%contacts(c)%restitution < 0)) then
-      action = max(action, EVENT_STOP)
-      call add_outcome(self, 'landing on several contacts at once at t = '//format_short(t)//' s ('// &
-                       landed_names(self, lands)//'): an impact at several points needs restitution at each; '// &
-                       'the run ends here')
-      return
-    end if
-    pair = reshape([(self%gaps%body_1(c(i)), self%gaps%body(c(i)), i = 1, m)], [2, m])
-    do b = 1, size(self%body_frame)
-      if (any(pair == b)) bodies(b) = impact_body(self, b)
-    end do
-    normals = reshape([(self%gaps%gap(c(i))%normal, i = 1, m)], [3, m])
-    points_1 = reshape([(self%gaps%gap(c(i))%point_1, i = 1, m)], [3, m])
-    points_2 = reshape([(self%gaps%gap(c(i))%point_2, i = 1, m)], [3, m])
-    call collide_at_once(self%system%contacts(c)%restitution, self%system%contacts(c)%impact_mu, normals, points_1, &
-                         points_2, pair, bodies, impulse, tangential, before, after, lost, status)
-    if (.not. status%ok()) return
-    closing = after < self%system%contacts(c)%close_speed
-    if (any(closing .and. (pair(1, :) > 0 .or. self%system%contacts(c)%rolling))) then
-      stopped = 'the impact at several contacts at once at t = '//format_short(t)//' s ('// &
-                landed_names(self, lands)//') leaves '//landed_names(self, unpack(closing, lands, .false.))// &
-                ' slower than close_speed (closing a contact between two bodies, or a rolling one, among several '// &
-                'at once is not built): the run ends here'
-    else if (any(closing)) then
-      ! those slower than close_speed close together; one the closing leaves slower closes with them
-      do i = 1, m
-        call close_at_once(closing, normals, points_1, points_2, pair, bodies, impulse, after, lost, status)
-        if (.not. status%ok()) return
-        if (.not. any(after < self%system%contacts(c)%close_speed .and. .not. closing)) exit
-        closing = closing .or. after < self%system%contacts(c)%close_speed
-      end do
-    end if
-    f = self%mechanism%f
-    rates = y(f + 1:f + self%mechanism%ns)
-    do b = 1, size(self%body_frame)
-      if (any(pair == b)) call start_rates(self, b, [bodies(b)%omega, bodies(b)%velocity], rates, status)
-      if (.not. status%ok()) return
-    end do
-    y(f + 1:f + self%mechanism%ns) = rates
-    do i = 1, m
-      self%impacts = [self%impacts, impact_record_t(time=t, contact=c(i), body_1=pair(1, i), body_2=pair(2, i), &
-                      normal_speed_before=before(i), normal_speed_after=after(i), normal_impulse=impulse(i), &
-                      tangential_impulse=tangential(i), energy_lost=lost(i))]
-    end do
-    if (allocated(stopped)) then
-      action = max(action, EVENT_STOP)
-      call add_outcome(self, stopped, not_built=.true.)
-    else if (any(closing)) then
-      action = max(action, EVENT_STOP)
-      self%closings = [self%closings, pack(c, closing)]
-      self%landed = self%closings(size(self%closings))
-      call add_outcome(self, 'contacts '//landed_names(self, unpack(closing, lands, .false.))//' closed at the '// &
-                       'impact at several contacts at once at t = '//format_short(t)//' s: their rebounds are '// &
-                       'below close_speed')
-    else
-      action = max(action, EVENT_RESTART)
-    end if
-  end subroutine impact_at_once
-
-  !> Body b at the mechanism's pose and twist (the workspace's), its mass
-  !> properties in world axes: for its impact.
-  function impact_body(self, b) result(body)
-    class(flight_ode_t), intent(in) :: self
-    integer, intent(in) :: b
-    type(impact_body_t) :: body
-    associate (frame => self%work%frames(self%body_frame(b)))
-      body = impact_body_t(mass=self%mass(b), &
-                           inertia=matmul(frame%rot, matmul(self%inertia(:, :, b), transpose(frame%rot))), &
-                           origin=frame%r, centre=frame%r + matmul(frame%rot, self%centre(:, b)), &
-                           omega=frame%omega, velocity=frame%v)
-    end associate
-  end function impact_body
-
-  !> not_built: a stop the model cannot go on from; drive_flight fails the run there (exit 2, records kept)
-  subroutine add_outcome(self, text, not_built)
-    class(flight_ode_t), intent(inout) :: self
-    character(len=*), intent(in) :: text
-    logical, intent(in), optional :: not_built
-    if (len(self%outcome) > 0) self%outcome = self%outcome//'; '
-    self%outcome = self%outcome//text
-    if (present(not_built)) self%stop_kind = merge(STOP_NOT_BUILT, self%stop_kind, not_built)
-  end subroutine add_outcome
 
   !> The mechanism's record, with each contact's gap at its body's pose, its
   !> point on shape_1 and the body's nearest point's velocity along the surface

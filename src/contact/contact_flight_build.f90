@@ -105,6 +105,7 @@ contains
               flight%coordinates(6, nb), flight%rotation_element(nb), flight%impacts(0), flight%speeds(6, nb), &
               flight%carrier(nb), flight%mechanism_contact(size(system%contacts)), flight%closings(0))
     flight%speeds = reshape([(i, i = 1, 6*nb)], [6, nb])
+    call flight%clear_switches()
     flight%carrier = 0
     flight%mechanism_contact = 0
     associate (m => flight%mechanism)

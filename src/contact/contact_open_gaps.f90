@@ -8,8 +8,8 @@
 !> of its two shapes along their common normal, through the foot-point
 !> solver) is a root function. A gap of a flying body falling through zero
 !> is a landing on that contact; while a contact carries the body
-!> (contact_closing) a gap of another falling to zero ends the run (two closed
-!> contacts on one body are not built).
+!> (contact_closing) a gap of another falling to zero stops the phase there
+!> (`touched`), and contact_closing takes the impact through both.
 !>
 !> A contact that starts touching (a lift-off from it) starts with its gap 0,
 !> its rate 0 and where the normal force fell to zero its second derivative
@@ -75,8 +75,8 @@ module contact_open_gaps
 
   !> A closed contact's model (contact_model) carrying the body while its
   !> other contacts are open: their gaps are roots after the model's own; one
-  !> falling to zero ends the run (the body touches a second surface while
-  !> carried: not built). The body's pose for the gaps comes from a second
+  !> falling to zero stops the phase (the body touches a second surface while
+  !> carried: `touched`; two at once are not built). The body's pose for the gaps comes from a second
   !> workspace of the model (`shadow_work`, a copy of the model's, taken again
   !> after each chart change so that y means the same there), so that the
   !> model's own evaluations and their caches (its workspace) are left as
@@ -89,6 +89,7 @@ module contact_open_gaps
     integer :: body_frame = 0
     type(mechanism_workspace_t) :: shadow_work
     integer :: shadow_charts = 0   ! the model's chart_changes when shadow_work was copied
+    integer :: touched = 0         ! the watched contact whose gap fell to zero (the run stopped there; 0: none)
     real(wp), allocatable :: gap_value(:, :)                       ! contacts x records, m
     real(wp), allocatable :: gap_point(:, :, :), gap_velocity(:, :, :)   ! 3 x contacts x records
   contains
@@ -351,7 +352,8 @@ contains
   end subroutine drop_closed
 
   !> The model's events, then a watched gap falling through zero: the body
-  !> touches a second surface while carried; the run ends there.
+  !> touches a second surface while carried; the run stops there (touched:
+  !> that contact), its impact contact_closing's (impact_while_carried).
   subroutine carried_handle_event(self, t, y, fired, action, status)
     class(carried_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t
@@ -369,13 +371,18 @@ contains
       if (c == self%gaps%closed) cycle
       j = j + 1
       if (fired(j) /= -1) cycle
-      text = 'contact '''//self%system%contacts(c)%name//''': body '''//self%system%contacts(c)%body_2// &
-             ''' touches shape '''//self%system%contacts(c)%shape_1//''' at t = '//format_short(t)// &
-             ' s while contact '''//self%system%contacts(self%gaps%closed)%name//''' carries it (two closed '// &
-             'contacts on one body are not built): the run ends here'
-      if (len(self%outcome) > 0) text = '; '//text
+      if (self%touched > 0) then   ! two at once
+        text = '; contact '''//self%system%contacts(c)%name//''' too (two landings on a carried body at once are '// &
+               'not built): the run ends here'
+      else
+        text = 'contact '''//self%system%contacts(c)%name//''': body '''//self%system%contacts(c)%body_2// &
+               ''' touches shape '''//self%system%contacts(c)%shape_1//''' at t = '//format_short(t)// &
+               ' s while contact '''//self%system%contacts(self%gaps%closed)%name//''' carries it'
+        if (len(self%outcome) > 0) text = '; '//text
+      end if
       self%outcome = self%outcome//text
-      self%stop_kind = STOP_NOT_BUILT   ! drive_flight fails the run here (a lift-off with it would fly on)
+      self%touched = merge(c, -1, self%touched == 0)
+      if (self%touched < 0) self%stop_kind = STOP_NOT_BUILT   ! drive_flight fails the run here
       action = max(action, EVENT_STOP)
     end do
   end subroutine carried_handle_event

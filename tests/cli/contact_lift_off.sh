@@ -25,10 +25,12 @@
 #             the weights of the contact closed in the second phase;
 #   stacked   inputs/contact/stacked_balls.nml: the impacts table's rows,
 #             the two balls' impact naming both bodies;
-#   walled    a ball carried by the floor rolls into a wall it may land on:
-#             two closed contacts on one body touching so are not built, and
-#             the run fails there (exit 2, the file kept and marked
-#             incomplete), not a normal end (it was exit 0 before).
+#   walled    a ball carried by the floor slides into a wall it may land on:
+#             one impact through the wall and the floor (an impact on a
+#             carried body), and it slides back to the end (exit 0; it
+#             failed there, exit 2, before that was built); rolling on the
+#             floor, the same impact is not built: the run fails there
+#             (exit 2, the file kept and marked incomplete).
 set -u
 slidesim=$1
 repo=$(cd "$(dirname "$0")/../.." && pwd)
@@ -221,7 +223,11 @@ cat > "$work/walled.nml" <<'EOF'
 &contact name = 'on_wall', shape_1 = 'wall', body_2 = 'ball', shape_2 = 'ball', start = 'open', restitution = 0.8 /
 &contact name = 'on_floor', shape_1 = 'floor', body_2 = 'ball', shape_2 = 'ball', start = 'closed' /
 EOF
-run_case walled 2 "body 'ball' touches shape 'wall' at t = 0.7 s while contact 'on_floor' carries it" \
-  'two closed contacts on one body are not built' '(the results up to here are kept)'
+run_case walled 0
+grep -qE "impacts +2 " "$work/walled.out" || fail "walled: the summary does not count 2 impact rows (wall, floor)"
+sed -e "s/walled.h5/walled_rolling.h5/" -e "s/velocity = 1, 0, 0/velocity = 1, 0, 0, angular_velocity = 0, 10, 0/" \
+  -e "s/start = 'closed' \//start = 'closed', rolling = .true. \//" "$work/walled.nml" > "$work/walled_rolling.nml"
+run_case walled_rolling 2 "body 'ball' lands on 'on_wall' at t = 0.7 s while 'on_floor' carries it" \
+  'an impact through a rolling contact is not built' '(the results up to here are kept)'
 
 finish

@@ -30,6 +30,15 @@
 !>     same run to 1.5, 2 and 3 s (other integration paths, other impact
 !>     states): each to its end, every impact taking energy, the energy
 !>     never rising, the box at rest on both feet at the end.
+!>   - rocking: the box tilted by 10 degrees on its rear foot (closed,
+!>     may_open) over a frictionless floor, released at rest: its centre
+!>     falls straight down, and at the level pose (omega^2 (m d^2 + I_y) =
+!>     2 m g dz) the front foot (e = 0) lands while the rear carries it: one
+!>     impact through both (contact_flight impact_on_carried), P_r + P_f =
+!>     m d omega, P_r - P_f = -I_y omega/d, the box stopped, then at rest
+!>     on both feet (N = m g/2); as the scenario runs one body (closed
+!>     first: contact_closing impact_while_carried) and as several bodies
+!>     run (build_bodies, drive_phases).
 !>   - refused: a second closed contact that rolls.
 program test_several_closed
   use base_kinds, only: wp
@@ -37,8 +46,8 @@ program test_several_closed
   use base_status, only: status_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
-  use contact_flight, only: flight_ode_t, build_flight, carrying_contact
-  use contact_closing, only: drive_flight
+  use contact_flight, only: flight_ode_t, build_flight, carrying_contact, closed_part
+  use contact_closing, only: drive_flight, flight_after_closed
   use contact_bodies, only: build_bodies, start_carriers
   use io_input, only: input_text_t, input_from_text, load_input_file
   use io_solver_config, only: solver_config_t, read_solver_config
@@ -58,6 +67,9 @@ program test_several_closed
   call box_landing_longer(1.5_wp)
   call box_landing_longer(2.0_wp)
   call box_landing_longer(3.0_wp)
+  call rocking(.false.)
+  call rocking(.true.)
+  call rocking_elastic()
   call refusals()
   call finish_tests('test_several_closed')
 
@@ -84,15 +96,20 @@ contains
   end function box_input
 
   !> Runs a description that may fly (a contact open or that may open) as
-  !> the contact scenario does: drive_flight of its flight, or of its bodies
-  !> as they start (build_bodies); for `duration` where given.
-  subroutine run_flight(input, flight, open, result, st, duration)
+  !> the contact scenario does: drive_flight of its flight, of its bodies
+  !> as they start (build_bodies: several closed contacts, or
+  !> through_bodies), or of its closed contact first (flight_after_closed);
+  !> for `duration` where given.
+  subroutine run_flight(input, flight, open, result, st, duration, through_bodies)
     type(input_text_t), intent(in) :: input
     type(flight_ode_t), intent(out), target :: flight
     integer, allocatable, intent(out) :: open(:, :)
     type(driver_result_t), intent(out) :: result
     type(status_t), intent(out) :: st
     real(wp), intent(in), optional :: duration   ! s (the input's where not given)
+    logical, intent(in), optional :: through_bodies
+    type(contact_model_t) :: model
+    logical :: bodies
     type(solver_config_t) :: solver
     type(contact_system_t) :: system
     type(driver_options_t) :: options
@@ -101,10 +118,15 @@ contains
     call read_solver_config(input, solver, st)
     if (st%ok()) call read_contact_config(input, system, st)
     if (.not. st%ok()) return
+    bodies = count(start_carriers(system)) > 1
+    if (present(through_bodies)) bodies = bodies .or. through_bodies
     if (carrying_contact(system) == 0) then
       call build_flight(system, flight, q0, qd0, units, st)
-    else
+    else if (bodies) then
       call build_bodies(system, start_carriers(system), flight, q0, qd0, units, st, 0, .false.)
+    else
+      call build_contact_model(closed_part(system, carrying_contact(system)), model, st)
+      call flight_after_closed(system, model, flight, q0, qd0, units, st)
     end if
     if (.not. st%ok()) return
     options%ode = solver%options
@@ -388,6 +410,149 @@ contains
         size(flight%impacts)/2, ', energy rise ', rise, ', N relative ', worst_n
     end associate
   end subroutine box_landing_longer
+
+  !> The box tilted by beta = 10 degrees on its rear foot (closed, may_open)
+  !> over a frictionless floor, its front foot open (e = 0), released at
+  !> rest: no horizontal force, so its centre falls straight down while the
+  !> rear sphere's centre stays at its radius (v_z = -d omega); at the level
+  !> pose the energy gives omega^2 (m d^2 + I_y) = 2 m g dz (dz = z_0 -
+  !> 0.12 m). There the front foot lands while the rear carries the box: one
+  !> impact at both (impact_on_carried), each normal impulse vertical, so
+  !> the box stops (v_x was 0): P_r + P_f = m d omega, P_r - P_f = -I_y
+  !> omega/d; both closed, it rests on them (N = m g/2).
+  subroutine rocking(through_bodies)
+    logical, intent(in) :: through_bodies   ! as several bodies are run (build_bodies), not as the scenario runs one
+    real(wp), parameter :: beta = 10*pi/180, iyy = 0.0333333333333333_wp
+    type(input_text_t) :: input
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    integer, allocatable :: open(:, :)
+    real(wp) :: z0, omega, worst, e0
+    integer :: i, after, rear, front
+    z0 = 0.02_wp + d*sin(beta) + 0.1_wp*cos(beta)
+    call input_from_text('rocking', rocking_input(z0, beta, 0.0_wp, 1.0_wp), input, st)
+    if (st%ok()) call run_flight(input, flight, open, result, st, through_bodies=through_bodies)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'rocking: runs to its end: '//st%text()//' '// &
+               flight%outcome)
+    if (.not. st%ok()) return
+    call check(index(flight%outcome, 'body ''box'' lands on ''front_on_floor'' at t = ') > 0 .and. &
+               index(flight%outcome, 'while ''rear_on_floor'' carries it: one impact at them all, after it '// &
+               '''rear_on_floor'', ''front_on_floor'' closed') > 0, &
+               'rocking: the outcome says the front lands while the rear carries it: '//flight%outcome)
+    call check(size(flight%impacts) == 2, 'rocking: one impact, rows for both feet')
+    if (size(flight%impacts) /= 2) return
+    omega = sqrt(2*box_mass*g*(z0 - h_centre)/(box_mass*d**2 + iyy))
+    associate (r => flight%impacts(1), f => flight%impacts(2))
+      call check(r%contact == 1 .and. f%contact == 2 .and. r%time == f%time, 'rocking: rear and front at once')
+      call check_close(f%normal_speed_before, -2*d*omega, 1e-8_wp, 0.0_wp, &
+                       'rocking: the front foot lands at 2 d omega (m/s)')
+      call check_close(r%normal_speed_before, 0.0_wp, 0.0_wp, 1e-12_wp, 'rocking: the rear closed (m/s)')
+      call check_close(r%normal_impulse + f%normal_impulse, box_mass*d*omega, 1e-8_wp, 0.0_wp, &
+                       'rocking: P_r + P_f = m d omega (N s)')
+      call check_close(r%normal_impulse - f%normal_impulse, -iyy*omega/d, 1e-8_wp, 0.0_wp, &
+                       'rocking: P_r - P_f = -I_y omega/d (N s)')
+      call check_close(r%energy_lost + f%energy_lost, box_mass*g*(z0 - h_centre), 1e-8_wp, 0.0_wp, &
+                       'rocking: the impact takes the energy of the fall (J)')
+    end associate
+    associate (s => flight%series)
+      rear = contact_place(s%contact_names(:s%nc), 'rear_on_floor')
+      front = contact_place(s%contact_names(:s%nc), 'front_on_floor')
+      after = findloc(open(2, :), 0, dim=1)
+      call check(after > 0 .and. all(open(:, after:) == 0) .and. all(open(1, :) == 0), &
+                 'rocking: the rear closed throughout, the front closed after the impact')
+      if (after == 0 .or. rear == 0 .or. front == 0) return
+      e0 = s%kinetic(1) + s%potential(1)
+      worst = 0
+      do i = 1, after - 1
+        worst = max(worst, abs(s%body_r(1, 1, i)), abs(s%body_v(1, 1, i)), &
+                    abs(s%kinetic(i) + s%potential(i) - e0))
+      end do
+      call check_close(worst, 0.0_wp, 0.0_wp, 1e-9_wp, 'rocking: before, straight down, energy kept')
+      worst = 0
+      do i = after, s%n
+        worst = max(worst, abs(s%normal(rear, i)/(box_mass*g/2) - 1), abs(s%normal(front, i)/(box_mass*g/2) - 1), &
+                    norm2(s%body_v(:, 1, i)), norm2(s%body_omega(:, 1, i)))
+      end do
+      call check_close(worst, 0.0_wp, 0.0_wp, 1e-9_wp, 'rocking: at rest after, N = m g/2 at each foot')
+      print '(a, es10.2)', '  rocking: at rest after ', worst
+    end associate
+  end subroutine rocking
+
+  !> The box on its rear foot (closed, may_open) tilted by beta about y
+  !> (its front up), the front foot open (e = 0), at z0.
+  function rocking_input(z0, beta, e, duration) result(text)
+    real(wp), intent(in) :: z0, beta, e, duration
+    character(len=:), allocatable :: text
+    text = '&run scenario = ''contact'' /'//nl// &
+           '&solver method = ''adams'', rtol = 1e-11, atol = 1e-11, duration = '//number(duration)// &
+           ', output_step = 0.01 /'//nl// &
+           '&shape name = ''floor'', kind = ''plane'' /'//nl// &
+           '&shape name = ''rear'', kind = ''sphere'', radius = 0.02, origin = -0.2, 0, -0.1 /'//nl// &
+           '&shape name = ''front'', kind = ''sphere'', radius = 0.02, origin = 0.2, 0, -0.1 /'//nl// &
+           '&body name = ''box'', mass = 2, inertia = 0.0216666666666667, 0.0333333333333333, '// &
+           '0.0416666666666667, angles_deg = 0, '//number(-beta*180/pi)//', 0, position = 0, 0, '//number(z0)// &
+           ' /'//nl// &
+           '&contact name = ''rear_on_floor'', shape_1 = ''floor'', body_2 = ''box'', shape_2 = ''rear'', '// &
+           'may_open = .true. /'//nl// &
+           '&contact name = ''front_on_floor'', shape_1 = ''floor'', body_2 = ''box'', shape_2 = ''front'', '// &
+           'start = ''open'', restitution = '//number(e)//', close_speed = 0.1 /'//nl
+  end function rocking_input
+
+  !> The rocking box with e = 1 at the front foot: at the level pose the
+  !> impact through both feet (the rear with restitution 0, staying closed)
+  !> turns the box's motion back: v_z = d omega up, omega' = -omega (rear
+  !> at rest, front leaving at 2 d omega), P_r + P_f = 2 m d omega, P_r -
+  !> P_f = -2 I_y omega/d, no energy lost; the rear carries it back up to
+  !> the start's tilt and down again (time reversal): the impacts at t_1,
+  !> 3 t_1, 5 t_1, ..., each the same, the energy kept throughout (1.2 s).
+  subroutine rocking_elastic()
+    real(wp), parameter :: beta = 10*pi/180, iyy = 0.0333333333333333_wp
+    type(input_text_t) :: input
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    integer, allocatable :: open(:, :)
+    real(wp) :: z0, omega, t1, worst, e0
+    integer :: k, i
+    z0 = 0.02_wp + d*sin(beta) + 0.1_wp*cos(beta)
+    omega = sqrt(2*box_mass*g*(z0 - h_centre)/(box_mass*d**2 + iyy))
+    call input_from_text('rocking', rocking_input(z0, beta, 1.0_wp, 1.2_wp), input, st)
+    if (st%ok()) call run_flight(input, flight, open, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'rocking, e = 1: runs to its end: '//st%text()// &
+               ' '//flight%outcome)
+    if (.not. st%ok()) return
+    call check(mod(size(flight%impacts), 2) == 0 .and. size(flight%impacts) >= 6, 'rocking, e = 1: impacts, '// &
+               'rows for both feet: '//number(real(size(flight%impacts), wp)))
+    if (mod(size(flight%impacts), 2) /= 0) return
+    t1 = flight%impacts(1)%time
+    call check(1.2_wp - (size(flight%impacts) - 1)*t1 < 2*t1, 'rocking, e = 1: no impact left out')
+    do k = 1, size(flight%impacts)/2
+      associate (r => flight%impacts(2*k - 1), f => flight%impacts(2*k))
+        call check(r%contact == 1 .and. f%contact == 2 .and. r%time == f%time, 'rocking, e = 1: rear and front at once')
+        call check_close(r%time, (2*k - 1)*t1, 0.0_wp, 1e-9_wp, 'rocking, e = 1: the impacts at (2 k - 1) t_1 (s)')
+        call check_close(f%normal_speed_before, -2*d*omega, 1e-8_wp, 0.0_wp, 'rocking, e = 1: lands at 2 d omega (m/s)')
+        call check_close(f%normal_speed_after, 2*d*omega, 1e-8_wp, 0.0_wp, 'rocking, e = 1: leaves at 2 d omega (m/s)')
+        call check_close(r%normal_speed_after, 0.0_wp, 0.0_wp, 1e-12_wp, 'rocking, e = 1: the rear stays (m/s)')
+        call check_close(r%normal_impulse + f%normal_impulse, 2*box_mass*d*omega, 1e-8_wp, 0.0_wp, &
+                         'rocking, e = 1: P_r + P_f = 2 m d omega (N s)')
+        call check_close(r%normal_impulse - f%normal_impulse, -2*iyy*omega/d, 1e-8_wp, 0.0_wp, &
+                         'rocking, e = 1: P_r - P_f = -2 I_y omega/d (N s)')
+        call check_close(r%energy_lost + f%energy_lost, 0.0_wp, 0.0_wp, 1e-12_wp, 'rocking, e = 1: no energy lost (J)')
+      end associate
+    end do
+    associate (s => flight%series)
+      e0 = s%kinetic(1) + s%potential(1)
+      worst = 0
+      do i = 1, s%n
+        worst = max(worst, abs(s%kinetic(i) + s%potential(i) - e0))
+      end do
+      call check_close(worst, 0.0_wp, 0.0_wp, 1e-9_wp*e0, 'rocking, e = 1: the energy kept (J, 1e-9 of it)')
+      call check(all(open(1, :) == 0), 'rocking, e = 1: the rear closed throughout')
+      print '(a, f8.5, a, i0, a, es10.2)', '  rocking, e = 1: t_1 ', t1, ' s, impacts ', size(flight%impacts)/2, &
+        ', energy ', worst
+    end associate
+  end subroutine rocking_elastic
 
   subroutine refusals()
     type(input_text_t) :: input

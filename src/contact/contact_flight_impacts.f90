@@ -1,0 +1,235 @@
+!> The impacts at several contacts of a flight (contact_flight): a body
+!> landing on several at once, and a body landing while closed contacts
+!> carry it (issue 25).
+submodule (contact_flight) contact_flight_impacts
+  implicit none (type, external)
+
+contains
+
+  !> The names of the contacts landed on, quoted, comma-separated.
+  module procedure landed_names
+    integer :: c
+    text = ''
+    do c = 1, size(lands)
+      if (.not. lands(c)) cycle
+      if (len(text) > 0) text = text//', '
+      text = text//''''//self%system%contacts(c)%name//''''
+    end do
+  end procedure landed_names
+
+  !> The landings of one event where a body lands on several contacts at
+  !> once (`lands`, every contact landed on; no carried body among them): one
+  !> impact at all of them (contact_body_impact collide_at_once, Newton's
+  !> restitution and impact_mu at each), a row per contact, and the bodies
+  !> fly on; those it leaves slower than their close_speed close together
+  !> (close_at_once; the flight stops, `closings` them). Not built, the run
+  !> ending here, saying so: such an impact without restitution, and one
+  !> that would close a contact between two bodies or a rolling one.
+  module procedure impact_at_once
+    type(impact_body_t) :: bodies(0:size(self%body_frame))
+    integer, allocatable :: c(:), pair(:, :)
+    real(wp), allocatable :: normals(:, :), points_1(:, :), points_2(:, :), rates(:)
+    real(wp), dimension(count(lands)) :: impulse, tangential, before, after, lost
+    logical :: closing(count(lands))
+    character(len=:), allocatable :: stopped
+    integer :: f, i, b, m
+    c = pack([(i, i = 1, size(lands))], lands)
+    m = size(c)
+    if (any(self%system%contacts(c)%restitution < 0)) then
+      action = max(action, EVENT_STOP)
+      call add_outcome(self, 'landing on several contacts at once at t = '//format_short(t)//' s ('// &
+                       landed_names(self, lands)//'): an impact at several points needs restitution at each; '// &
+                       'the run ends here')
+      return
+    end if
+    pair = reshape([(self%gaps%body_1(c(i)), self%gaps%body(c(i)), i = 1, m)], [2, m])
+    do b = 1, size(self%body_frame)
+      if (any(pair == b)) bodies(b) = impact_body(self, b)
+    end do
+    normals = reshape([(self%gaps%gap(c(i))%normal, i = 1, m)], [3, m])
+    points_1 = reshape([(self%gaps%gap(c(i))%point_1, i = 1, m)], [3, m])
+    points_2 = reshape([(self%gaps%gap(c(i))%point_2, i = 1, m)], [3, m])
+    call collide_at_once(self%system%contacts(c)%restitution, self%system%contacts(c)%impact_mu, normals, points_1, &
+                         points_2, pair, bodies, impulse, tangential, before, after, lost, status)
+    if (.not. status%ok()) return
+    closing = after < self%system%contacts(c)%close_speed
+    if (any(closing .and. (pair(1, :) > 0 .or. self%system%contacts(c)%rolling))) then
+      stopped = 'the impact at several contacts at once at t = '//format_short(t)//' s ('// &
+                landed_names(self, lands)//') leaves '//landed_names(self, unpack(closing, lands, .false.))// &
+                ' slower than close_speed (closing a contact between two bodies, or a rolling one, among several '// &
+                'at once is not built): the run ends here'
+    else if (any(closing)) then
+      ! those slower than close_speed close together; one the closing leaves slower closes with them
+      do i = 1, m
+        call close_at_once(closing, normals, points_1, points_2, pair, bodies, impulse, after, lost, status)
+        if (.not. status%ok()) return
+        if (.not. any(after < self%system%contacts(c)%close_speed .and. .not. closing)) exit
+        closing = closing .or. after < self%system%contacts(c)%close_speed
+      end do
+    end if
+    f = self%mechanism%f
+    rates = y(f + 1:f + self%mechanism%ns)
+    do b = 1, size(self%body_frame)
+      if (any(pair == b)) call start_rates(self, b, [bodies(b)%omega, bodies(b)%velocity], rates, status)
+      if (.not. status%ok()) return
+    end do
+    y(f + 1:f + self%mechanism%ns) = rates
+    do i = 1, m
+      self%impacts = [self%impacts, impact_record_t(time=t, contact=c(i), body_1=pair(1, i), body_2=pair(2, i), &
+                      normal_speed_before=before(i), normal_speed_after=after(i), normal_impulse=impulse(i), &
+                      tangential_impulse=tangential(i), energy_lost=lost(i))]
+    end do
+    if (allocated(stopped)) then
+      action = max(action, EVENT_STOP)
+      call add_outcome(self, stopped, not_built=.true.)
+    else if (any(closing)) then
+      action = max(action, EVENT_STOP)
+      self%closings = [self%closings, pack(c, closing)]
+      self%landed = self%closings(size(self%closings))
+      call add_outcome(self, 'contacts '//landed_names(self, unpack(closing, lands, .false.))//' closed at the '// &
+                       'impact at several contacts at once at t = '//format_short(t)//' s: their rebounds are '// &
+                       'below close_speed')
+    else
+      action = max(action, EVENT_RESTART)
+    end if
+  end procedure impact_at_once
+
+  !> Body b at the mechanism's pose and twist (the workspace's), its mass
+  !> properties in world axes: for its impact.
+  module procedure impact_body
+    associate (frame => self%work%frames(self%body_frame(b)))
+      body = impact_body_t(mass=self%mass(b), &
+                           inertia=matmul(frame%rot, matmul(self%inertia(:, :, b), transpose(frame%rot))), &
+                           origin=frame%r, centre=frame%r + matmul(frame%rot, self%centre(:, b)), &
+                           omega=frame%omega, velocity=frame%v)
+    end associate
+  end procedure impact_body
+
+  !> A landing (`lands`) of body b, which closed contacts carry: one impact
+  !> at the landed contacts and the carrying ones (collide_at_once; a closed
+  !> contact's normal speed before is 0, its restitution 0: it stays closed
+  !> or is pushed open, P >= 0 either way; its impact_mu during the impact),
+  !> with the free body's mass properties: the carrying contacts' impulses
+  !> are the impact's own. The contacts it leaves slower than their
+  !> close_speed close (close_at_once), a carrying one it leaves faster
+  !> opens (it must have may_open); the phase stops (EVENT_STOP) with
+  !> `closings`, `openings`, the body's twist after (`twist_after`: a
+  !> twist the carried body's coordinates may not take) and the contact left
+  !> at gap 0 (`bounced`), and contact_closing goes on from there. A row per
+  !> contact (the energies summing to the kinetic energy's fall). A landing
+  !> without restitution ends the run there (the input's choice, as in
+  !> flight). Not built, the run failing here, saying so: rolling carrying
+  !> contacts, landings of other bodies in the same event, a landing on
+  !> another body (a body hitting a carried one), a carrying
+  !> contact that would open without may_open, a rolling landed contact
+  !> that would close, more than one contact left open at gap 0.
+  module procedure impact_on_carried
+    type(impact_body_t) :: bodies(0:size(self%body_frame))
+    integer, allocatable :: c(:), pair(:, :)
+    real(wp), allocatable :: normals(:, :), points_1(:, :), points_2(:, :), e(:), close_speed(:)
+    real(wp), allocatable, dimension(:) :: impulse, tangential, before, after, lost
+    logical, allocatable :: closing(:), carrying(:), both(:)
+    character(len=:), allocatable :: why, carriers, head, left_open
+    integer :: i, m, k
+    carrying = self%gaps%carried .and. self%gaps%body == b
+    both = lands .or. carrying
+    carriers = landed_names(self, carrying)
+    head = 'body '''//self%system%bodies(b)%name//''' lands on '//landed_names(self, lands)//' at t = '// &
+           format_short(t)//' s while '//carriers//' carry it'
+    if (count(carrying) == 1) head = head(:len(head) - len(' carry it'))//' carries it'
+    if (any(lands .and. self%system%contacts%restitution < 0)) then
+      ! the input's choice, as for a landing in flight
+      action = max(action, EVENT_STOP)
+      call add_outcome(self, head//' (no restitution given: the run ends at the landing)')
+      return
+    end if
+    why = ''
+    if (any(lands .and. self%gaps%body /= b)) then
+      why = 'other bodies landing in the same instant are not built'
+    else if (any(lands .and. self%gaps%body_1 > 0)) then
+      why = 'a body hitting a carried one is not built'
+    else if (any(carrying .and. self%system%contacts%rolling)) then
+      why = 'an impact through a rolling contact is not built'
+    end if
+    if (len(why) > 0) then
+      action = max(action, EVENT_STOP)
+      call add_outcome(self, head//' ('//why//'): the run ends here', not_built=.true.)
+      return
+    end if
+    c = pack([(i, i = 1, size(lands))], both)
+    m = size(c)
+    allocate (normals(3, m), points_1(3, m), points_2(3, m), impulse(m), tangential(m), before(m), after(m), &
+              lost(m), closing(m))
+    do i = 1, m
+      if (lands(c(i))) then
+        normals(:, i) = self%gaps%gap(c(i))%normal
+        points_1(:, i) = self%gaps%gap(c(i))%point_1
+        points_2(:, i) = self%gaps%gap(c(i))%point_2
+      else   ! a carrying contact: its contact frame K_1D (z out of shape_1), both points its origin
+        associate (closed => self%mechanism%contacts(self%mechanism_contact(c(i))))
+          k = closed%point_frame
+          normals(:, i) = closed%normal_sign*self%work%frames(k)%rot(:, 3)
+        end associate
+        points_1(:, i) = self%work%frames(k)%r
+        points_2(:, i) = self%work%frames(k)%r
+      end if
+    end do
+    e = merge(self%system%contacts(c)%restitution, 0.0_wp, lands(c))
+    close_speed = self%system%contacts(c)%close_speed
+    pair = reshape([(0, b, i = 1, m)], [2, m])
+    bodies(b) = impact_body(self, b)
+    call collide_at_once(e, self%system%contacts(c)%impact_mu, normals, points_1, points_2, pair, bodies, impulse, &
+                         tangential, before, after, lost, status)
+    if (.not. status%ok()) return
+    closing = after < close_speed
+    if (any(carrying(c) .and. .not. closing .and. .not. self%system%contacts(c)%may_open)) then
+      action = max(action, EVENT_STOP)
+      call add_outcome(self, head//': the impact would lift '//landed_names(self, unpack(carrying(c) .and. &
+                       .not. closing, both, .false.))//' off, which may not open (may_open): the run ends here', &
+                       not_built=.true.)
+      return
+    end if
+    if (any(closing)) then
+      do i = 1, m
+        call close_at_once(closing, normals, points_1, points_2, pair, bodies, impulse, after, lost, status)
+        if (.not. status%ok()) return
+        if (.not. any(after < close_speed .and. .not. closing)) exit
+        closing = closing .or. after < close_speed
+      end do
+    end if
+    if (any(closing .and. lands(c) .and. self%system%contacts(c)%rolling)) then
+      action = max(action, EVENT_STOP)
+      call add_outcome(self, head//': the impact would close '//landed_names(self, unpack(closing .and. lands(c) &
+                       .and. self%system%contacts(c)%rolling, both, .false.))//', which rolls (a second closed '// &
+                       'contact that rolls is not built): the run ends here', not_built=.true.)
+      return
+    end if
+    do i = 1, m
+      self%impacts = [self%impacts, impact_record_t(time=t, contact=c(i), body_1=0, body_2=b, &
+                      normal_speed_before=before(i), normal_speed_after=after(i), normal_impulse=impulse(i), &
+                      tangential_impulse=tangential(i), energy_lost=lost(i))]
+    end do
+    action = max(action, EVENT_STOP)
+    left_open = landed_names(self, unpack(.not. closing, both, .false.))
+    if (count(.not. closing) > 1) then
+      call add_outcome(self, head//': the impact leaves '//left_open//' open at gap 0 (more than one contact '// &
+                       'opening at once is not built): the run ends here', not_built=.true.)
+      return
+    end if
+    self%closings = [self%closings, pack(c, closing .and. lands(c))]
+    self%openings = [self%openings, pack(c, .not. closing .and. carrying(c))]
+    if (any(.not. closing)) self%bounced = c(findloc(closing, .false., dim=1))
+    self%twisted(b) = .true.
+    self%twist_after(:, b) = [bodies(b)%omega, bodies(b)%velocity]
+    if (len(left_open) > 0) left_open = ', '//left_open//' open'
+    call add_outcome(self, head//': one impact at them all, after it '// &
+                     landed_names(self, unpack(closing, both, .false.))//' closed'//left_open)
+  end procedure impact_on_carried
+
+  !> The phase's outcome extended by text.
+  module procedure add_outcome
+    if (len(self%outcome) > 0) self%outcome = self%outcome//'; '
+    self%outcome = self%outcome//text
+    if (present(not_built)) self%stop_kind = merge(STOP_NOT_BUILT, self%stop_kind, not_built)
+  end procedure add_outcome
+end submodule contact_flight_impacts
