@@ -240,9 +240,9 @@ contains
     type(driver_result_t), intent(inout) :: result
     integer, intent(inout) :: chart_changes
     type(status_t), intent(inout) :: status
-    type(flight_ode_t), allocatable :: hit, start
+    type(flight_ode_t), allocatable :: hit
     type(contact_system_t) :: placed
-    real(wp), allocatable :: q0(:), qd0(:), y(:)
+    real(wp), allocatable :: q0(:), qd0(:)
     character(len=8), allocatable :: units(:)
     logical :: closed(size(flight%system%contacts)), lands(size(flight%system%contacts))
     integer :: action
@@ -284,10 +284,35 @@ contains
     if (size(hit%openings) > 0) closed(hit%openings) = .false.
     placed%bodies(1)%angular_velocity = hit%twist_after(1:3, 1)
     placed%bodies(1)%velocity = hit%twist_after(4:6, 1)
+    call phases_from(flight, placed, closed, hit%bounced, 'after the impact on the carried body', run, phase, &
+                     options, phase_options, result, chart_changes, status)
+  end subroutine impact_while_carried
+
+  !> The run's phases on from phase%t (drive_phases) with the bodies of
+  !> `placed` at their poses and twists and the contacts `closed` closed
+  !> (contact_bodies build_bodies; `touching` the one left at gap 0, 0:
+  !> none); a build that fails fails the run, its status prefixed by `what`.
+  subroutine phases_from(flight, placed, closed, touching, what, run, phase, options, phase_options, result, &
+                         chart_changes, status)
+    type(flight_ode_t), intent(inout), target :: flight
+    type(contact_system_t), intent(in) :: placed
+    logical, intent(in) :: closed(:)
+    integer, intent(in) :: touching
+    character(len=*), intent(in) :: what
+    type(phases_t), intent(inout) :: run
+    type(driver_result_t), intent(in) :: phase
+    type(driver_options_t), intent(in) :: options
+    type(driver_options_t), intent(inout) :: phase_options
+    type(driver_result_t), intent(inout) :: result
+    integer, intent(inout) :: chart_changes
+    type(status_t), intent(inout) :: status
+    type(flight_ode_t), allocatable :: start
+    real(wp), allocatable :: q0(:), qd0(:), y(:)
+    character(len=8), allocatable :: units(:)
     allocate (start)
-    call build_bodies(placed, closed, start, q0, qd0, units, status, hit%bounced, .true.)
+    call build_bodies(placed, closed, start, q0, qd0, units, status, touching, .true.)
     if (.not. status%ok()) then
-      call prefix_status(status, 'after the impact on the carried body at t = '//format_short(phase%t)//' s')
+      call prefix_status(status, what//' at t = '//format_short(phase%t)//' s')
       result%outcome = DRIVE_FAILED
       return
     end if
@@ -296,7 +321,7 @@ contains
     call carry_work(run%series, start, y)
     phase_options%t_start = phase%t
     call drive_phases(flight, start, y, options, phase_options, run, result, .false., chart_changes, status)
-  end subroutine impact_while_carried
+  end subroutine phases_from
 
   !> A flight phase of one body that stopped where an impact closed several
   !> of its contacts at once (flight%closings): the body carried by them
@@ -311,25 +336,12 @@ contains
     type(driver_result_t), intent(inout) :: result
     integer, intent(inout) :: chart_changes
     type(status_t), intent(inout) :: status
-    type(flight_ode_t), allocatable :: start
-    real(wp), allocatable :: q0(:), qd0(:), y(:)
-    character(len=8), allocatable :: units(:)
     logical :: closed(size(flight%system%contacts))
     integer :: k
     closed = .false.
     closed(flight%closings) = .true.
-    allocate (start)
-    call build_bodies(at_last_record(flight), closed, start, q0, qd0, units, status, 0, .true.)
-    if (.not. status%ok()) then
-      call prefix_status(status, 'closing contacts '//closing_names(flight)//' at t = '//format_short(phase%t)//' s')
-      result%outcome = DRIVE_FAILED
-      return
-    end if
-    start%impacts = flight%impacts
-    y = start%initial_state(q0, qd0)
-    call carry_work(run%series, start, y)
-    phase_options%t_start = phase%t
-    call drive_phases(flight, start, y, options, phase_options, run, result, .false., chart_changes, status)
+    call phases_from(flight, at_last_record(flight), closed, 0, 'closing contacts '//closing_names(flight), run, &
+                     phase, options, phase_options, result, chart_changes, status)
   contains
     function closing_names(f) result(text)
       type(flight_ode_t), intent(in) :: f
