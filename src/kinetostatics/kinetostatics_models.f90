@@ -310,10 +310,11 @@ contains
   !> heading does (rider_vehicle_flight picks the one by the normals).
   !> Every build with `lift` has the bar on a roll revolute about its own x
   !> after the pitch (scalar 'roll', frame 'pitched' between), held at its
-  !> value (0 from the start); with both contacts open and `free_roll` it
-  !> is the sixth coordinate ([u, v, phi, pitch, rear_lift, roll]: a free
-  !> rigid body; the roll's axis passes through both contact points, so
-  !> neither contact's gap depends on it).
+  !> value (0 from the start); with a contact open and `free_roll` it is
+  !> the last coordinate (both open: [u, v, phi, pitch, rear_lift, roll], a
+  !> free rigid body; one open: five, a rigid body on one point contact;
+  !> the roll's axis passes through both contact points, so neither
+  !> contact's gap nor closure depends on it).
   subroutine build_sled(p, surface, q0, m, status, finish, lift, open, solve_yaw, free_roll)
     type(sled_params_t), intent(in) :: p
     class(surface_t), intent(in) :: surface
@@ -442,7 +443,7 @@ contains
     if (yaw) coordinates = [su, sv, spitch]
     if (opened(2)) coordinates = [coordinates, spitch]
     if (opened(1)) coordinates = [coordinates, slift]
-    if (present(free_roll) .and. all(opened) .and. chain) then
+    if (present(free_roll) .and. any(opened) .and. chain) then
       if (free_roll) coordinates = [coordinates, sroll]
     end if
     call m%set_coordinates(coordinates)

@@ -3,55 +3,45 @@
 !> and the vehicle goes on, on the other contact or with both open, until a
 !> contact lands again.
 !>
-!> The ride switches between four builds of the vehicle (build_vehicle_model
-!> with lift and open, kinetostatics_models build_sled: the rear end on a
-!> prismatic along the normal at its foot point), one per set of open
-!> contacts (bit 0 the rear, bit 1 the front; 0: the sled of today with the
-!> lift held at 0), whose scalars, frames, contacts and laws sit at the same
-!> indices. A state carries over through the full layout [u, v, phi, pitch,
-!> rear_lift, roll], their rates, then the laws' work integrals: positions
+!> The ride switches between builds of the vehicle (build_vehicle_model
+!> with lift and open, build_sled: the rear end on a prismatic along the
+!> normal at its foot point), per set of open contacts (bit 0 the rear,
+!> bit 1 the front; 0: the sled with the lift held at 0), their scalars,
+!> frames, contacts and laws at the same indices. A state carries over
+!> through the full layout [u, v, phi, pitch, rear_lift, roll], their
+!> rates, then the laws' work integrals: positions
 !> and velocities are continuous through a switch, to the closure's
-!> rounding. With both contacts open the vehicle is a free rigid body in
-!> six coordinates (build_sled free_roll: the roll about the bar's axis
-!> after the pitch); with a contact on, the roll is held (the sled's model:
-!> the bar keeps its roll to the slide below its rear end), at 0 until the
-!> vehicle has flown, then at the roll it landed with. A landing from the
-!> whole vehicle's flight first stops the roll's rate by a plastic impulse
-!> about the bar's axis (rider_vehicle_roll; its energy is the landing's),
-!> then the contact's impact in the build with the roll held (held_air).
+!> rounding. With a contact open the roll about the bar's axis (after the
+!> pitch) is free (build_sled free_roll): both open, a free rigid body in
+!> six coordinates; one open, a rigid body on one point contact in five,
+!> whose lift-offs are decided in that build. With both contacts on the
+!> roll is held (the sled's model: the bar keeps its roll to the slide
+!> below its rear end), at 0 until the vehicle has flown, then at the roll
+!> it landed with. A landing that closes the last open contact first stops
+!> the roll's rate by a plastic impulse about the bar's axis
+!> (rider_vehicle_roll; its energy is the landing's), then the contact's
+!> impact in the build with the roll held (held, held_yaw).
 !>
-!> An open contact's gap (kinetostatics_point_impact point_gap: the rear's
-!> is its lift, the front's the front_z measurement of its open loop) is a
-!> root (gap_root: watched once it opened by opening_gap); its zero is a
-!> landing: the impact of kinetostatics_point_impact with the law of
-!> &sled landing_restitution and landing_mu and the effective mass of the
-!> whole vehicle at that contact (K = J M^-1 J^T of the build in flight). A
-!> rebound slower than rider_flight's close_speed closes the contact (if it
-!> then presses; else it flies on from the slide).
+!> An open contact's gap (point_gap: the rear's lift, the front's front_z)
+!> is a root (gap_root); its zero a landing: kinetostatics_point_impact's
+!> impact (&sled landing_restitution, landing_mu) with the effective mass
+!> of the whole vehicle there (J M^-1 J^T of the build in flight). A
+!> rebound slower than close_speed closes the contact (if it then presses;
+!> else it flies on from the slide).
 !>
 !> While the front is on (open masks 0 and 1) its closure solves front_z
-!> for one coordinate: the pitch, or the heading phi (build_sled solve_yaw;
-!> a second build of each of the two masks). A coordinate's column of the
-!> closure Jacobian is the front point's speed along the front's normal per
-!> unit of it, n_2 . (a x (r_front - r_rear)) with a its axis (solve_columns:
-!> the pitch's is the heading's y, the heading's its z); the other two
-!> columns (u2, v2) lie in the tangent plane, so J_beta's determinant is
-!> that column times theirs. Where the front's normal turns across the
-!> rear's (a vehicle whose ends ride opposite walls: the double ring in the
-!> bowl) the pitch's column goes to zero and the heading's grows. The
-!> margin |column of the solved one| - solve_ratio |the other's| is a root:
-!> falling through zero the run stops and the same open contacts go on in
-!> the other build (a switch as a take-off's: the full layout's positions
-!> and rates carry over, continuous to the closure's rounding).
+!> for the pitch or the heading phi (build_sled solve_yaw), by their
+!> columns of the closure Jacobian (solve_columns: the front point's speed
+!> along the front's normal per unit of each); where the solved one's
+!> column falls below solve_ratio of the other's (ends on opposite walls:
+!> the double ring in the bowl) the same open contacts go on in the other
+!> build (a switch as a take-off's, docs/vehicles.md).
 !>
 !> Each stretch between switches is driven on its own (drive_vehicle), its
-!> records computed into the vehicle's ride figures (rider_vehicle
-!> vehicle_ride_figures, with the stretch's build), written in the full
-!> layout (full_records: every record has u, v, phi, pitch, rear_lift, their
-!> rates and accelerations, whichever of them its build solves or holds)
-!> and joined to the others' (kinetostatics_recorder join_series: a
-!> dependent of one build is 0 in the others' records; open_mask says which
-!> contacts were open).
+!> ride figures computed with its build (vehicle_ride_figures), its records
+!> written in the full layout (full_records) and joined to the others'
+!> (join_series: a dependent of one build is 0 in the others' records;
+!> open_mask says which contacts were open).
 module rider_vehicle_flight
   use base_kinds, only: wp
   use base_text, only: format_short, format_real
@@ -66,8 +56,8 @@ module rider_vehicle_flight
   use kinetostatics_recorder, only: mechanism_series_t, join_series
   use kinetostatics_models, only: sled_description_t
   use kinetostatics_impact, only: impact_outcome_t
-  use kinetostatics_point_impact, only: point_gap, point_impact, gap_root
-  use rider_vehicle_roll, only: stop_coordinate
+  use kinetostatics_point_impact, only: point_gap, point_gap_rate, point_impact, gap_root, sink_gap
+  use rider_vehicle_roll, only: stop_coordinate, landing_cause
   use rider_flight, only: ride_flights_t, rider_landing_t, add_landing, close_speed, landing_record, &
     quick_landings_exceeded, quick_flight, count_switch
   use rider_vehicle, only: vehicle_t, build_vehicle_model, vehicle_ride_figures
@@ -93,7 +83,8 @@ module rider_vehicle_flight
   type, extends(mechanism_ode_t) :: vehicle_flight_ode_t
     type(mechanism_t) :: builds(0:3)
     type(mechanism_t) :: yaw_builds(0:1)    ! masks 0, 1 with the front's closure solving the heading
-    type(mechanism_t) :: held_air           ! mask 3 with the roll held: a landing's impact from the air
+    type(mechanism_t) :: held(1:2)          ! masks 1, 2 with the roll held: the last open contact's landing
+    type(mechanism_t) :: held_yaw           ! mask 1 solving the heading, the roll held
     integer :: open_mask = 0
     integer :: solved = SOLVE_PITCH         ! the build in use's (masks 0, 1)
     integer :: solve_switches = 0           ! how often the solved coordinate changed
@@ -142,18 +133,21 @@ contains
     real(wp), allocatable :: q_open(:), qd_open(:)
     integer :: mask, k
     if (.not. status%ok()) return
-    call build_vehicle_model(v, d, surface, sys%held_air, q_open, qd_open, status, water, lift=.true., &
-                             open=[.true., .true.])
+    call build_vehicle_model(v, d, surface, sys%held_yaw, q_open, qd_open, status, water, lift=.true., &
+                             open=[.true., .false.], solve_yaw=.true.)
     do mask = 3, 0, -1
       if (mask == 0) then
         call build_vehicle_model(v, d, surface, sys%builds(0), q0, qd0, status, water, lift=.true., &
                                  open=[.false., .false.])
       else
         call build_vehicle_model(v, d, surface, sys%builds(mask), q_open, qd_open, status, water, lift=.true., &
-                                 open=[btest(mask, 0), btest(mask, 1)], free_roll=mask == 3)
+                                 open=[btest(mask, 0), btest(mask, 1)], free_roll=.true.)
       end if
+      if (mask == 1 .or. mask == 2) call build_vehicle_model(v, d, surface, sys%held(mask), q_open, qd_open, &
+                                                             status, water, lift=.true., open=[mask == 1, mask == 2])
       if (mask < 2) call build_vehicle_model(v, d, surface, sys%yaw_builds(mask), q_open, qd_open, status, water, &
-                                             lift=.true., open=[btest(mask, 0), .false.], solve_yaw=.true.)
+                                             lift=.true., open=[btest(mask, 0), .false.], solve_yaw=.true., &
+                                             free_roll=.true.)
       if (.not. status%ok()) then
         call prefix_status(status, 'the vehicle''s flight builds')
         return
@@ -435,11 +429,11 @@ contains
     type(vehicle_flight_ode_t), intent(inout) :: self
     real(wp), allocatable, intent(inout) :: y(:)
     type(status_t), intent(inout) :: status
-    real(wp) :: residual, t, closing(3), closing_energy, roll_energy
+    real(wp) :: residual, t, closing(3), closing_energy, roll_energy, approach
     real(wp), allocatable :: y_open(:), full(:)
     type(impact_outcome_t) :: impact
     type(rider_landing_t) :: landing
-    logical :: closed
+    logical :: closed, last
     integer :: f, c, before
     t = self%switch_t
     c = self%switch_contact
@@ -469,8 +463,14 @@ contains
     case (SWITCH_LANDING)
       y_open = self%switch_y
       roll_energy = 0
-      if (before == 3) then
-        ! the roll's rate stops, then the contact's impact with the roll held
+      last = ibclr(before, c - 1) == 0
+      call self%mechanism%set_positions(self%work, y_open(1:f), status)
+      if (.not. status%ok()) return
+      call self%mechanism%set_velocities(self%work, y_open(f + 1:2*f))
+      approach = point_gap_rate(self%work, self%point(c), self%foot(c))
+      if (last) then
+        ! on both contacts the roll is held: its rate stops, then the
+        ! contact's impact with the roll held
         call stop_coordinate(self%mechanism, self%work, y_open, findloc(self%mechanism%q, self%full(ROLL), dim=1), &
                              roll_energy, status)
         if (.not. status%ok()) return
@@ -481,7 +481,11 @@ contains
       call point_impact(self%mechanism, self%work, self%point(c), self%foot(c), trim(vehicle_contact_names(c))// &
                         ' contact', y_open, self%vehicle%landing, close_speed, impact, closed, closing, &
                         closing_energy, status)
-      if (.not. status%ok()) return
+      if (.not. status%ok()) then
+        status%message = status%message//landing_cause(trim(vehicle_contact_names(c)), self%opened(c), &
+          t - self%take_off_time(c), sink_gap, last, last, approach)
+        return
+      end if
       landing = landing_record(t, c, where_foot(self, c), impact, closing, closing_energy + roll_energy, closed, &
                                self%gravity)
       if (quick_landings_exceeded(self%quick_landings, t - self%take_off_time(c))) then
@@ -497,8 +501,8 @@ contains
         if (.not. status%ok()) return
         ! the landing one pulls: it did not stay on, it flies on from the slide
         landing%closed = .not. btest(self%open_mask, c - 1)
-      else if (before == 3) then
-        ! the whole vehicle flies on, its roll free again from rest
+      else if (last) then
+        ! it flies on, its roll free again from rest
         call use_build(self, before, full, y, status)
         if (.not. status%ok()) return
       else
@@ -567,8 +571,8 @@ contains
   !> With the front on, its closure solves `solve` if given; else the
   !> coordinate it solved, unless that has degraded (solve_ratio), or, after
   !> a flight of the front, the better of the two (solve_columns at the
-  !> positions in the work now, the pose of `full`). Both open: the free
-  !> roll's build, or with `held` the one holding the roll (held_air). A
+  !> positions in the work now, the pose of `full`). With `held` (a contact
+  !> open) the build that holds the roll (held, held_yaw). A
   !> held coordinate's rate is 0 (the roll's stopped before a landing, a
   !> closed rear's lift's by its closing).
   subroutine use_build(self, mask, full, y, status, solve, held)
@@ -595,13 +599,17 @@ contains
       else
         self%solved = merge(SOLVE_PITCH, SOLVE_YAW, c(SOLVE_PITCH) >= c(SOLVE_YAW))
       end if
-      if (self%solved == SOLVE_YAW) then
+      if (self%solved == SOLVE_YAW .and. present(held)) then
+        self%mechanism = self%held_yaw
+      else if (self%solved == SOLVE_YAW) then
         self%mechanism = self%yaw_builds(mask)
+      else if (present(held)) then
+        self%mechanism = self%held(mask)
       else
         self%mechanism = self%builds(mask)
       end if
     else if (present(held)) then
-      self%mechanism = self%held_air
+      self%mechanism = self%held(mask)
     else
       self%mechanism = self%builds(mask)
     end if

@@ -8,16 +8,18 @@
 !> kinetic energy s_r^2/(2 (M^-1)_rr) (M the mass matrix in the speeds,
 !> kinetostatics_point_impact speeds_mass). The roll's angle stays: the
 !> vehicle lands with the roll it has and keeps it relative to the slide
-!> below its rear.
+!> below its rear. And why such a landing found its contact leaving the
+!> slide, where that is known (landing_cause).
 module rider_vehicle_roll
   use base_kinds, only: wp
+  use base_text, only: format_short
   use base_status, only: status_t, set_status, STATUS_DOMAIN
   use numerics_linear_algebra, only: lu_factor, lu_solve
   use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use kinetostatics_point_impact, only: speeds_mass
   implicit none (type, external)
   private
-  public :: stop_coordinate
+  public :: stop_coordinate, landing_cause
 
 contains
 
@@ -57,4 +59,33 @@ contains
     y(n + 1:2*n) = s
     call m%set_velocities(work, s)
   end subroutine stop_coordinate
+
+  !> The cause (words to append to point_impact's "it leaves the slide")
+  !> of a landing of contact `name` whose point leaves the slide where its
+  !> gap closed, where known: it had not `opened` (risen by opening_gap,
+  !> `since` s after its take-off, it sank back by sink_gap m), so the
+  !> build it took off from (`held`: both contacts on, the roll held) had
+  !> its normal force at zero and the flight's (the roll free) presses it
+  !> back; and/or the roll's stop turned its `approach` (m/s, the gap's
+  !> rate before it, < 0) into a separation.
+  function landing_cause(name, opened, since, sink, held, stopped, approach) result(cause)
+    character(len=*), intent(in) :: name
+    logical, intent(in) :: opened, held, stopped
+    real(wp), intent(in) :: since, sink, approach
+    character(len=:), allocatable :: cause
+    cause = ''
+    if (.not. opened) then
+      cause = ': it sank back by '//format_short(sink)//' m '//format_short(since)//' s after its take-off, '// &
+              'before it had risen: where it took off its normal force was zero'
+      if (held) then
+        cause = cause//' with both contacts on and the roll held; in the flight''s build, the roll free (a '// &
+                'rigid body on one point contact), the '//name//' presses on: the held roll''s couple lifted it'
+      else
+        cause = cause//', in the flight''s build it presses on'
+      end if
+    end if
+    if (stopped .and. approach < 0) cause = cause//trim(merge('; and', ':    ', len(cause) > 0))// &
+      ' the roll''s stop (both contacts on hold it) turned its approach at '//format_short(-approach)// &
+      ' m/s into a separation'
+  end function landing_cause
 end module rider_vehicle_roll
