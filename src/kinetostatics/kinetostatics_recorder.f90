@@ -272,7 +272,8 @@ contains
     do k = 1, size(b)
       j = findloc([(names(j) == b(k), j = 1, size(names))], .true., dim=1)
       if (j == 0) then
-        names = [names, b(k)]
+        ! typed: gfortran's length check misreads a zero-size names as length 1
+        names = [character(len=32) :: names, b(k)]
         j = size(names)
       end if
       in_b(k) = j
