@@ -225,6 +225,11 @@ cat > "$work/walled.nml" <<'EOF'
 EOF
 run_case walled 0
 grep -qE "impacts +2 " "$work/walled.out" || fail "walled: the summary does not count 2 impact rows (wall, floor)"
+# the summary's body terms of a run whose phases changed mechanisms (they once read the
+# first phase's frames: a height of 9e-285 m, a speed of 7e252 m/s)
+grep -qE "ball height min / max +0.10000 / 0.10000 m" "$work/walled.out" ||
+  fail "walled: the ball's height is not 0.1 m throughout (its summary terms)"
+grep -qE "ball speed max +1.0000 m/s" "$work/walled.out" || fail "walled: the ball's speed max is not 1 m/s"
 sed -e "s/walled.h5/walled_rolling.h5/" -e "s/velocity = 1, 0, 0/velocity = 1, 0, 0, angular_velocity = 0, 10, 0/" \
   -e "s/start = 'closed' \//start = 'closed', rolling = .true. \//" "$work/walled.nml" > "$work/walled_rolling.nml"
 run_case walled_rolling 2 "body 'ball' lands on 'on_wall' at t = 0.7 s while 'on_floor' carries it" \
