@@ -16,9 +16,10 @@
 !>
 !> A closed contact's body landing on another surface while carried is one
 !> impact through its carrying contacts too (contact_flight
-!> impact_on_carried); a flying body hitting a carried one ends the run
-!> (not built); two flying bodies hitting each other
-!> is an impact of the pair (contact_body_impact), and they fly on.
+!> impact_on_carried), and so is a flying body hitting a carried one (the
+!> carried body's closed contacts take impulses of their own); two flying
+!> bodies hitting each other is an impact of the pair (contact_body_impact),
+!> and they fly on.
 module contact_bodies
   use base_kinds, only: wp
   use base_text, only: format_short

@@ -268,7 +268,7 @@ contains
       call hit%mechanism%set_positions(hit%work, q0, status)
       if (status%ok()) call hit%mechanism%set_velocities(hit%work, qd0)
       if (status%ok()) call hit%gaps%update(hit%work, hit%body_frame, status)
-      if (status%ok()) call impact_on_carried(hit, lands, 1, phase%t, action, status)
+      if (status%ok()) call impact_on_carried(hit, lands, phase%t, action, status)
     end if
     if (.not. status%ok()) then
       call prefix_status(status, 'the impact on the carried body at t = '//format_short(phase%t)//' s')

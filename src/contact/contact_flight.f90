@@ -55,10 +55,10 @@
 !> shape_1 on body_1's frame) that starts open is watched as the ground's
 !> are, its gap at both bodies' poses; its landing is an impact of the
 !> pair (contact_body_impact: K = K_1 + K_2, +L on body_2, -L on body_1, the
-!> pair's momentum kept) while both fly, and the bodies fly on. A rebound
-!> below its close_speed, or a hit on a body that a closed contact carries
-!> (whose carrying contact would take an impulse too), fails the run there
-!> (not built: bodies closed on each other, impacts through a closed contact).
+!> pair's momentum kept) while both fly, and the bodies fly on. A hit on a
+!> body that closed contacts carry is one impact at the hit and the
+!> carrying contacts (impact_on_carried). A rebound below its close_speed
+!> fails the run there (not built: bodies closed on each other).
 !>
 !> The contacts that can open and close are those of bodies with the ground
 !> (each shape_1 fixed, at the ground's pose); those of a body that start
@@ -182,10 +182,9 @@ module contact_flight
       type(status_t), intent(inout) :: status
     end subroutine impact_at_once
 
-    module subroutine impact_on_carried(self, lands, b, t, action, status)
+    module subroutine impact_on_carried(self, lands, t, action, status)
       class(flight_ode_t), intent(inout) :: self
       logical, intent(in) :: lands(:)
-      integer, intent(in) :: b
       real(wp), intent(in) :: t
       integer, intent(inout) :: action
       type(status_t), intent(inout) :: status
@@ -297,22 +296,13 @@ contains
     lands = self%gaps%together(lands, self%work, self%body_frame)
     do c = 1, size(lands)
       if (.not. lands(c)) cycle
-      associate (contact => self%system%contacts(c))
-        if (self%carrier(self%gaps%body(c)) > 0) then
-          ! an impact through the contacts that carry the body (impact_on_carried)
-          call impact_on_carried(self, lands, self%gaps%body(c), t, action, status)
-          return
-        end if
-        if (self%gaps%body_1(c) == 0) cycle
-        if (self%carrier(self%gaps%body_1(c)) == 0) cycle
-        action = max(action, EVENT_STOP)
-        call add_outcome(self, 'contact '''//contact%name//''': body '''//contact%body_2//''' hits body '''// &
-                         contact%body_1//''' at t = '//format_short(t)//' s while contact '''// &
-                         self%system%contacts(self%carrier(self%gaps%body_1(c)))%name//''' carries '''// &
-                         contact%body_1//''' (an impact on a carried body, whose carrying contact would take an '// &
-                         'impulse too, is not built): the run ends here', not_built=.true.)
-        return
-      end associate
+      b = self%gaps%body_1(c)
+      if (self%carrier(self%gaps%body(c)) > 0) b = self%gaps%body(c)
+      if (b == 0) cycle
+      if (self%carrier(b) == 0) cycle
+      ! an impact through the contacts that carry a body: one that lands, or is hit, or hits (impact_on_carried)
+      call impact_on_carried(self, lands, t, action, status)
+      return
     end do
     do b = 1, size(self%body_frame)
       if (count(lands .and. (self%gaps%body == b .or. self%gaps%body_1 == b)) > 1) then

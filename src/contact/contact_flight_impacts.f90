@@ -105,49 +105,78 @@ contains
     end associate
   end procedure impact_body
 
-  !> A landing (`lands`) of body b, which closed contacts carry: one impact
-  !> at the landed contacts and the carrying ones (collide_at_once; a closed
-  !> contact's normal speed before is 0, its restitution 0: it stays closed
-  !> or is pushed open, P >= 0 either way; its impact_mu during the impact),
-  !> with the free body's mass properties: the carrying contacts' impulses
-  !> are the impact's own. The contacts it leaves slower than their
-  !> close_speed close (close_at_once), a carrying one it leaves faster
-  !> opens (it must have may_open); the phase stops (EVENT_STOP) with
-  !> `closings`, `openings`, the body's twist after (`twist_after`: a
-  !> twist the carried body's coordinates may not take) and the contact left
-  !> at gap 0 (`bounced`), and contact_closing goes on from there. A row per
-  !> contact (the energies summing to the kinetic energy's fall). A landing
-  !> without restitution ends the run there (the input's choice, as in
-  !> flight). Not built, the run failing here, saying so: rolling carrying
-  !> contacts, landings of other bodies in the same event, a landing on
-  !> another body (a body hitting a carried one), a carrying
-  !> contact that would open without may_open, a rolling landed contact
-  !> that would close, more than one contact left open at gap 0.
+  !> A landing (`lands`) that involves a body closed contacts carry: the
+  !> body lands on another of its contacts, or a body hits it, or it hits
+  !> another (a contact between two bodies, either carried). One impact at
+  !> the landed contacts and at every contact carrying the bodies they join
+  !> (collide_at_once; a carrying contact's normal speed before is 0, its
+  !> restitution 0: it stays closed or is pushed open, P >= 0 either way;
+  !> its impact_mu during the impact), each body with its free mass
+  !> properties: the carrying contacts' impulses are the impact's own, so a
+  !> carried body meets a hit with its effective mass through its closed
+  !> contacts (a ball resting on the floor hit from above passes the
+  !> impulse on to the floor and stays at rest). The contacts it leaves
+  !> slower than their close_speed close (close_at_once), a carrying one it
+  !> leaves faster opens (it must have may_open); the phase stops
+  !> (EVENT_STOP) with `closings`, `openings`, the bodies' twists after
+  !> (`twist_after`: a twist the carried body's coordinates may not take)
+  !> and the contact left at gap 0 (`bounced`), and contact_closing goes on
+  !> from there. A row per contact (the energies summing to the kinetic
+  !> energy's fall). A landing without restitution ends the run there (the
+  !> input's choice, as in flight). Not built, the run failing here, saying
+  !> so: rolling carrying contacts, landings the impact does not join in
+  !> the same event (bodies neither carried nor hitting a carried one), a
+  !> carrying contact that would open without may_open, a contact between
+  !> two bodies left slower than its close_speed (two bodies closed on each
+  !> other), a rolling landed contact that would close, more than one
+  !> contact left open at gap 0.
   module procedure impact_on_carried
     type(impact_body_t) :: bodies(0:size(self%body_frame))
     integer, allocatable :: c(:), pair(:, :)
     real(wp), allocatable :: normals(:, :), points_1(:, :), points_2(:, :), e(:), close_speed(:)
     real(wp), allocatable, dimension(:) :: impulse, tangential, before, after, lost
-    logical, allocatable :: closing(:), carrying(:), both(:)
-    character(len=:), allocatable :: why, carriers, head, left_open
-    integer :: i, m, k
-    carrying = self%gaps%carried .and. self%gaps%body == b
-    both = lands .or. carrying
+    logical, allocatable :: closing(:), carrying(:), both(:), joined(:), between(:)
+    logical :: involved(size(self%body_frame)), carried(size(self%body_frame))
+    character(len=:), allocatable :: why, carriers, head, left_open, hit
+    integer :: i, m, k, b
+    carried = .false.
+    do i = 1, size(lands)
+      if (self%gaps%carried(i)) carried(self%gaps%body(i)) = .true.
+    end do
+    ! the landed contacts this impact joins: those of a carried body (either of a pair's)
+    joined = lands .and. carried(self%gaps%body)
+    do i = 1, size(lands)
+      if (lands(i) .and. self%gaps%body_1(i) > 0) joined(i) = joined(i) .or. carried(max(1, self%gaps%body_1(i)))
+    end do
+    involved = .false.
+    do i = 1, size(lands)
+      if (.not. joined(i)) cycle
+      involved(self%gaps%body(i)) = .true.
+      if (self%gaps%body_1(i) > 0) involved(self%gaps%body_1(i)) = .true.
+    end do
+    carrying = self%gaps%carried .and. involved(self%gaps%body)
+    both = joined .or. carrying
     carriers = landed_names(self, carrying)
-    head = 'body '''//self%system%bodies(b)%name//''' lands on '//landed_names(self, lands)//' at t = '// &
-           format_short(t)//' s while '//carriers//' carry it'
-    if (count(carrying) == 1) head = head(:len(head) - len(' carry it'))//' carries it'
-    if (any(lands .and. self%system%contacts%restitution < 0)) then
+    b = self%gaps%body(findloc(joined, .true., dim=1))
+    hit = ''
+    do k = 1, size(self%body_frame)
+      if (.not. (involved(k) .and. carried(k))) cycle
+      if (len(hit) > 0) hit = hit//', '
+      hit = hit//''''//self%system%bodies(k)%name//''''
+    end do
+    if (count(involved .and. carried) == 1 .and. carried(b)) hit = 'it'
+    head = 'body '''//self%system%bodies(b)%name//''' lands on '//landed_names(self, joined)//' at t = '// &
+           format_short(t)//' s while '//carriers//' carry '//hit
+    if (count(carrying) == 1) head = head(:len(head) - len(' carry '//hit))//' carries '//hit
+    if (any(joined .and. self%system%contacts%restitution < 0)) then
       ! the input's choice, as for a landing in flight
       action = max(action, EVENT_STOP)
       call add_outcome(self, head//' (no restitution given: the run ends at the landing)')
       return
     end if
     why = ''
-    if (any(lands .and. self%gaps%body /= b)) then
+    if (any(lands .and. .not. joined)) then
       why = 'other bodies landing in the same instant are not built'
-    else if (any(lands .and. self%gaps%body_1 > 0)) then
-      why = 'a body hitting a carried one is not built'
     else if (any(carrying .and. self%system%contacts%rolling)) then
       why = 'an impact through a rolling contact is not built'
     end if
@@ -161,7 +190,7 @@ contains
     allocate (normals(3, m), points_1(3, m), points_2(3, m), impulse(m), tangential(m), before(m), after(m), &
               lost(m), closing(m))
     do i = 1, m
-      if (lands(c(i))) then
+      if (joined(c(i))) then
         normals(:, i) = self%gaps%gap(c(i))%normal
         points_1(:, i) = self%gaps%gap(c(i))%point_1
         points_2(:, i) = self%gaps%gap(c(i))%point_2
@@ -174,14 +203,17 @@ contains
         points_2(:, i) = self%work%frames(k)%r
       end if
     end do
-    e = merge(self%system%contacts(c)%restitution, 0.0_wp, lands(c))
+    e = merge(self%system%contacts(c)%restitution, 0.0_wp, joined(c))
     close_speed = self%system%contacts(c)%close_speed
-    pair = reshape([(0, b, i = 1, m)], [2, m])
-    bodies(b) = impact_body(self, b)
+    pair = reshape([(self%gaps%body_1(c(i)), self%gaps%body(c(i)), i = 1, m)], [2, m])
+    between = pair(1, :) > 0
+    do k = 1, size(self%body_frame)
+      if (involved(k)) bodies(k) = impact_body(self, k)
+    end do
     call collide_at_once(e, self%system%contacts(c)%impact_mu, normals, points_1, points_2, pair, bodies, impulse, &
                          tangential, before, after, lost, status)
     if (.not. status%ok()) return
-    closing = after < close_speed
+    closing = after < close_speed .and. .not. between
     if (any(carrying(c) .and. .not. closing .and. .not. self%system%contacts(c)%may_open)) then
       action = max(action, EVENT_STOP)
       call add_outcome(self, head//': the impact would lift '//landed_names(self, unpack(carrying(c) .and. &
@@ -190,37 +222,48 @@ contains
       return
     end if
     if (any(closing)) then
+      ! a contact between two bodies never closes (below)
       do i = 1, m
         call close_at_once(closing, normals, points_1, points_2, pair, bodies, impulse, after, lost, status)
         if (.not. status%ok()) return
-        if (.not. any(after < close_speed .and. .not. closing)) exit
-        closing = closing .or. after < close_speed
+        if (.not. any(after < close_speed .and. .not. closing .and. .not. between)) exit
+        closing = closing .or. (after < close_speed .and. .not. between)
       end do
     end if
-    if (any(closing .and. lands(c) .and. self%system%contacts(c)%rolling)) then
+    if (any(closing .and. joined(c) .and. self%system%contacts(c)%rolling)) then
       action = max(action, EVENT_STOP)
-      call add_outcome(self, head//': the impact would close '//landed_names(self, unpack(closing .and. lands(c) &
+      call add_outcome(self, head//': the impact would close '//landed_names(self, unpack(closing .and. joined(c) &
                        .and. self%system%contacts(c)%rolling, both, .false.))//', which rolls (a second closed '// &
                        'contact that rolls is not built): the run ends here', not_built=.true.)
       return
     end if
     do i = 1, m
-      self%impacts = [self%impacts, impact_record_t(time=t, contact=c(i), body_1=0, body_2=b, &
+      self%impacts = [self%impacts, impact_record_t(time=t, contact=c(i), body_1=pair(1, i), body_2=pair(2, i), &
                       normal_speed_before=before(i), normal_speed_after=after(i), normal_impulse=impulse(i), &
                       tangential_impulse=tangential(i), energy_lost=lost(i))]
     end do
     action = max(action, EVENT_STOP)
+    if (any(between .and. after < close_speed)) then
+      ! the impact kept, as for two flying bodies (contact_flight impact)
+      call add_outcome(self, head//': the impact leaves '//landed_names(self, unpack(between .and. after < &
+                       close_speed, both, .false.))//' slower than close_speed: the bodies would stay in contact '// &
+                       '(two bodies closed on each other are not built): the run ends here', not_built=.true.)
+      return
+    end if
     left_open = landed_names(self, unpack(.not. closing, both, .false.))
     if (count(.not. closing) > 1) then
       call add_outcome(self, head//': the impact leaves '//left_open//' open at gap 0 (more than one contact '// &
                        'opening at once is not built): the run ends here', not_built=.true.)
       return
     end if
-    self%closings = [self%closings, pack(c, closing .and. lands(c))]
+    self%closings = [self%closings, pack(c, closing .and. joined(c))]
     self%openings = [self%openings, pack(c, .not. closing .and. carrying(c))]
     if (any(.not. closing)) self%bounced = c(findloc(closing, .false., dim=1))
-    self%twisted(b) = .true.
-    self%twist_after(:, b) = [bodies(b)%omega, bodies(b)%velocity]
+    do k = 1, size(self%body_frame)
+      if (.not. involved(k)) cycle
+      self%twisted(k) = .true.
+      self%twist_after(:, k) = [bodies(k)%omega, bodies(k)%velocity]
+    end do
     if (len(left_open) > 0) left_open = ', '//left_open//' open'
     call add_outcome(self, head//': one impact at them all, after it '// &
                      landed_names(self, unpack(closing, both, .false.))//' closed'//left_open)

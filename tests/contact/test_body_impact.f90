@@ -30,8 +30,20 @@
 !>     meets the small one coming down: approach speed (1 + e_f) v0, the
 !>     meeting at t0 + gap/((1 + e_f) v0), and the speeds after by the
 !>     head-on law with the pair's e.
-!>   - on_carried: a ball dropped onto a ball carried by the floor (start
-!>     closed): the run fails at the touch (exit 2), saying why (not built).
+!>   - on_carried: a ball dropped centrally onto a ball carried by the
+!>     floor (start closed), e = 0.5: one impact at the hit and the floor
+!>     (Newton's restitution at each, the floor's 0): the low ball stays at
+!>     rest, the floor takes m (1 + e) v, the high ball bounces at e^k v,
+!>     impact times t_1 + (2 v/g) (e + .. + e^(k-1)), N = m g between; the
+!>     eighth rebound is below close_speed: not built (exit 2), said so.
+!>   - on_carried_elastic: the same with e = 1, the balls' energy kept.
+!>   - on_carried_oblique: dropped 0.05 m aside: the low ball's effective
+!>     mass through the floor, P = (1 + e) v cos a/(1/m_h + sin^2 a/m_l),
+!>     the low ball sliding off on its closed form, energy kept (e = 1).
+!>   - hit_from_below: the law itself: hit from below the floor opens (P =
+!>     0, its speed after > 0, the free pair's law at the hit); from above
+!>     it takes the whole impulse; in a run both contacts left open at gap
+!>     0 are not built (exit 2), said so.
 !>   - two_at_once: a ball dropped into a V of two planes at +-30 degrees
 !>     lands on both at once: the frictionless impact at two points
 !>     (Newton's restitution at each; W's off-diagonal cos60/m) on its
@@ -46,8 +58,9 @@ program test_body_impact
   use base_vector, only: cross
   use numerics_event_driver, only: driver_result_t, driver_options_t, DRIVE_END_TIME, DRIVE_FAILED
   use kinetostatics_impact, only: impact_law_t
-  use contact_body_impact, only: impact_body_t, collision_t, collide, pair_delassus, relative_velocity, &
-    apply_impulse
+  use contact_body_impact, only: impact_body_t, collision_t, collide, collide_at_once, pair_delassus, &
+    relative_velocity, apply_impulse
+  use kinetostatics_recorder, only: mechanism_series_t
   use contact_model, only: contact_system_t, contact_model_t, contact_convergence_coefficient, build_contact_model
   use contact_flight, only: flight_ode_t, build_flight, carrying_contact, closed_part
   use contact_closing, only: drive_flight, flight_after_closed
@@ -71,6 +84,9 @@ program test_body_impact
   call oblique_flight()
   call stacked()
   call on_carried()
+  call on_carried_elastic()
+  call on_carried_oblique()
+  call hit_from_below()
   call two_at_once()
   call finish_tests('test_body_impact')
 
@@ -477,34 +493,318 @@ contains
     call check(all(flight%impacts(3:)%contact == 1), 'stacked: then only the big ball on the floor')
   end subroutine stacked
 
-  !> A ball dropped from 0.3 m above the top of a ball that the floor
-  !> carries (start closed): the run ends where they touch, saying why.
-  subroutine on_carried()
-    type(flight_ode_t), target :: flight
-    type(driver_result_t) :: result
-    type(status_t) :: st
+  !> The groups of a ball 'high' (0.05 m, 0.1 kg) dropped from rest at
+  !> (dx, 0, 0.55) onto a ball 'low' (0.1 m, 1 kg) that the frictionless
+  !> floor carries (start closed, its centre at (0, 0, 0.1)); the contact
+  !> 'high_on_low' between them (restitution e). `extra`: more groups.
+  function carried_input(dx, e, duration, extra) result(text)
+    real(wp), intent(in) :: dx, e, duration
+    character(len=*), intent(in) :: extra
     character(len=:), allocatable :: text
     text = '&run scenario = ''contact'' /'//nl// &
-           '&solver rtol = 1e-12, atol = 1e-12, duration = 1, output_step = 0.01 /'//nl// &
+           '&solver rtol = 1e-12, atol = 1e-12, duration = '//number(duration)//', output_step = 0.01 /'//nl// &
            '&shape name = ''floor'', kind = ''plane'' /'//nl// &
            '&shape name = ''low'', kind = ''sphere'', radius = 0.1 /'//nl// &
            '&shape name = ''high'', kind = ''sphere'', radius = 0.05 /'//nl// &
            '&body name = ''low'', mass = 1, solid_of = ''low'', position = 0, 0, 0.1 /'//nl// &
-           '&body name = ''high'', mass = 0.1, solid_of = ''high'', position = 0, 0, 0.55 /'//nl// &
-           '&contact name = ''low_on_floor'', shape_1 = ''floor'', body_2 = ''low'', shape_2 = ''low'' /'//nl// &
-           '&contact name = ''high_on_low'', body_1 = ''low'', shape_1 = ''low'', body_2 = ''high'', '// &
-           'shape_2 = ''high'', start = ''open'', restitution = 0.5 /'//nl
-    call run_text(text, 'on carried', flight, result, st)
-    ! not built: the run fails there (exit status 2), its records kept
+           '&body name = ''high'', mass = 0.1, solid_of = ''high'', position = '//number(dx)//', 0, 0.55 /'//nl// &
+           '&contact name = ''low_on_floor'', shape_1 = ''floor'', body_2 = ''low'', shape_2 = ''low'' '//extra// &
+           ' /'//nl//'&contact name = ''high_on_low'', body_1 = ''low'', shape_1 = ''low'', body_2 = ''high'', '// &
+           'shape_2 = ''high'', start = ''open'', restitution = '//number(e)//' /'//nl
+  end function carried_input
+
+  !> The energy of the balls of carried_input at record i (J): kinetic,
+  !> spin included, and potential.
+  real(wp) function balls_energy(s, i) result(energy)
+    type(mechanism_series_t), intent(in) :: s
+    integer, intent(in) :: i
+    real(wp), parameter :: mass(2) = [1.0_wp, 0.1_wp], radius(2) = [0.1_wp, 0.05_wp]
+    integer :: b
+    energy = 0
+    do b = 1, 2
+      energy = energy + mass(b)*(sum(s%body_v(:, b, i)**2)/2 + g*s%body_r(3, b, i)) + &
+               mass(b)*radius(b)**2*sum(s%body_omega(:, b, i)**2)/5
+    end do
+  end function balls_energy
+
+  !> Complementarity at the impact rows of the contact `floor` (1): each
+  !> normal impulse >= 0, its separation speed after >= 0, one of them 0
+  !> (to the speeds' rounding); returns the worst breach (m/s or N s).
+  real(wp) function floor_complementarity(flight, floor, scale) result(worst)
+    type(flight_ode_t), intent(in) :: flight
+    integer, intent(in) :: floor
+    real(wp), intent(in) :: scale   ! N s and m/s: the impact's size
+    integer :: i
+    worst = 0
+    do i = 1, size(flight%impacts)
+      associate (row => flight%impacts(i))
+        if (row%contact /= floor) cycle
+        worst = max(worst, -row%normal_impulse, -row%normal_speed_after, &
+                    min(row%normal_impulse, abs(row%normal_speed_after)))
+      end associate
+    end do
+    worst = worst/scale
+  end function floor_complementarity
+
+  !> A ball dropped centrally from 0.3 m above the top of a ball that the
+  !> floor carries, e = 0.5 (the simultaneous impact: Newton's restitution
+  !> at the hit and at the floor, the floor's restitution 0 as a carrying
+  !> contact's): the low ball stays at rest, the floor takes the whole
+  !> impulse m (1 + e) v, the high ball leaves at e v; so it bounces on the
+  !> resting ball at t_k = t_1 + (2 v/g) (e + .. + e^(k-1)), t_1 = sqrt(2
+  !> h/g), approach e^(k-1) v, and between the impacts the floor carries the
+  !> low ball alone, N = m g. The eighth rebound, e^8 v, is below the
+  !> contact's close_speed (0.01 m/s): the balls would stay in contact, not
+  !> built: the run fails there (exit 2), saying so.
+  subroutine on_carried()
+    real(wp), parameter :: e = 0.5_wp, h = 0.3_wp, m = 0.1_wp
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp) :: v, t_k, v_k, worst_low, worst_n, worst_time, worst_speed, worst_p, worst_lost
+    integer :: i, k, floor_c
+    call run_text(carried_input(0.0_wp, e, 1.0_wp, ''), 'on carried', flight, result, st)
     call check(st%code == STATUS_DOMAIN .and. result%outcome == DRIVE_FAILED .and. &
-               index(st%text(), '(the results up to here are kept)') > 0, 'on carried: fails there: '//st%text())
-    call check(index(flight%outcome, 'contact ''high_on_low'': body ''high'' hits body ''low'' at t = ') == 1 .and. &
-               index(flight%outcome, 'while contact ''low_on_floor'' carries ''low'' (an impact on a carried body') &
-               > 0, 'on carried: the outcome says why: '//flight%outcome)
-    call check_close(flight%series%time(flight%series%n), sqrt(2*0.3_wp/g), 0.0_wp, 1e-9_wp, &
-                     'on carried: at the touch, sqrt(2 h/g) (s)')
-    call check(size(flight%impacts) == 0, 'on carried: no impact made')
+               index(st%text(), '(the results up to here are kept)') > 0, 'on carried: fails at the eighth '// &
+               'impact: '//st%text())
+    call check(index(flight%outcome, 'body ''high'' lands on ''high_on_low'' at t = ') > 0 .and. &
+               index(flight%outcome, 'while ''low_on_floor'' carries ''low'': the impact leaves ''high_on_low'' '// &
+               'slower than close_speed: the bodies would stay in contact (two bodies closed on each other are '// &
+               'not built)') > 0, 'on carried: the outcome says why: '//flight%outcome)
+    v = sqrt(2*g*h)
+    call check(size(flight%impacts) == 16, 'on carried: eight impacts, a row at the floor and at the hit each')
+    if (size(flight%impacts) /= 16) return
+    worst_time = 0
+    worst_speed = 0
+    worst_p = 0
+    worst_lost = 0
+    t_k = sqrt(2*h/g)
+    do k = 1, 8
+      v_k = e**(k - 1)*v
+      associate (floor => flight%impacts(2*k - 1), hit => flight%impacts(2*k))
+        call check(floor%contact == 1 .and. floor%body_1 == 0 .and. floor%body_2 == 1 .and. hit%contact == 2 .and. &
+                   hit%body_1 == 1 .and. hit%body_2 == 2 .and. floor%time == hit%time, 'on carried: impact '// &
+                   number(real(k, wp))//' at the floor and the hit at once')
+        worst_time = max(worst_time, abs(hit%time - t_k))
+        worst_speed = max(worst_speed, abs(hit%normal_speed_before + v_k), abs(hit%normal_speed_after - e*v_k), &
+                          abs(floor%normal_speed_before), abs(floor%normal_speed_after))
+        worst_p = max(worst_p, abs(hit%normal_impulse - m*(1 + e)*v_k), abs(floor%normal_impulse - m*(1 + e)*v_k))
+        worst_lost = max(worst_lost, abs(hit%energy_lost - (1 - e**2)*m*v_k**2/2), abs(floor%energy_lost))
+      end associate
+      t_k = t_k + 2*e**k*v/g
+    end do
+    call check_close(worst_time, 0.0_wp, 0.0_wp, 1e-9_wp, 'on carried: the impacts at t_1 + (2 v/g) (e + .. + '// &
+                     'e^(k-1)) (s)')
+    ! the speeds to g times the times' tolerance (an impact found 1e-9 s off meets the ball g 1e-9 m/s off)
+    call check_close(worst_speed, 0.0_wp, 0.0_wp, 1e-9_wp*g, 'on carried: approach e^(k-1) v, rebound e^k v at '// &
+                     'the hit, the floor''s normal speed 0 before and after (m/s)')
+    call check_close(worst_p, 0.0_wp, 0.0_wp, 1e-9_wp, 'on carried: the impulse m (1 + e) e^(k-1) v at the hit '// &
+                     'and at the floor (N s)')
+    call check_close(worst_lost, 0.0_wp, 0.0_wp, 1e-9_wp, 'on carried: the energy (1 - e^2) m (e^(k-1) v)^2/2 '// &
+                     'lost at the hit, none at the floor (J)')
+    call check_close(floor_complementarity(flight, 1, m*v), 0.0_wp, 0.0_wp, rounding, 'on carried: the floor''s '// &
+                     'impulse >= 0, its speed after >= 0, one of them 0')
+    worst_low = 0
+    worst_n = 0
+    associate (s => flight%series)
+      floor_c = findloc(s%contact_names, 'low_on_floor', dim=1)
+      call check(floor_c > 0, 'on carried: the floor''s normal force recorded')
+      if (floor_c == 0) return
+      do i = 1, s%n
+        worst_low = max(worst_low, abs(s%body_r(3, 1, i) - 0.1_wp), norm2(s%body_r(1:2, 1, i)), &
+                        norm2(s%body_v(:, 1, i)), norm2(s%body_omega(:, 1, i)))
+        worst_n = max(worst_n, abs(s%normal(floor_c, i) - g))
+      end do
+      call check_close(s%time(s%n), flight%impacts(16)%time, 0.0_wp, 0.0_wp, 'on carried: the records end at '// &
+                       'the eighth impact')
+    end associate
+    call check_close(worst_low, 0.0_wp, 0.0_wp, 1e-12_wp, 'on carried: the low ball at rest on the floor at '// &
+                     'every record (m, m/s, rad/s)')
+    call check_close(worst_n, 0.0_wp, 0.0_wp, 1e-9_wp*g, 'on carried: the floor carries the low ball, N = m g (N)')
+    print '(a, 6es10.2)', '  on carried: time, speed, impulse, energy, low ball, N ', worst_time, worst_speed, &
+      worst_p, worst_lost, worst_low, worst_n
   end subroutine on_carried
+
+  !> on_carried with e = 1 for 2 s: the high ball bounces on the resting
+  !> low one at t_1 + 2 (k - 1) v/g, back at v each time, the balls' energy
+  !> kept at every record (frictionless, elastic: 1e-9 of it), the run to
+  !> its end.
+  subroutine on_carried_elastic()
+    real(wp), parameter :: h = 0.3_wp
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp) :: v, e0, worst_e, worst_t, worst_v
+    integer :: i, k
+    call run_text(carried_input(0.0_wp, 1.0_wp, 2.0_wp, ''), 'on carried elastic', flight, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'on carried elastic: runs to its end: '// &
+               st%text()//' '//flight%outcome)
+    if (.not. st%ok()) return
+    v = sqrt(2*g*h)
+    call check(size(flight%impacts) == 8, 'on carried elastic: four impacts, each at the floor and the hit')
+    if (size(flight%impacts) /= 8) return
+    worst_t = 0
+    worst_v = 0
+    do k = 1, 4
+      worst_t = max(worst_t, abs(flight%impacts(2*k)%time - sqrt(2*h/g) - 2*(k - 1)*v/g))
+      worst_v = max(worst_v, abs(flight%impacts(2*k)%normal_speed_before + v), &
+                    abs(flight%impacts(2*k)%normal_speed_after - v), abs(flight%impacts(2*k)%energy_lost), &
+                    abs(flight%impacts(2*k - 1)%energy_lost))
+    end do
+    worst_e = 0
+    associate (s => flight%series)
+      e0 = balls_energy(s, 1)
+      do i = 1, s%n
+        worst_e = max(worst_e, abs(balls_energy(s, i) - e0))
+      end do
+      call check(s%time(s%n) == 2.0_wp, 'on carried elastic: to 2 s')
+    end associate
+    call check_close(worst_t, 0.0_wp, 0.0_wp, 1e-9_wp, 'on carried elastic: impacts at t_1 + 2 (k - 1) v/g (s)')
+    call check_close(worst_v, 0.0_wp, 0.0_wp, 1e-9_wp, 'on carried elastic: back at v, no energy lost')
+    call check_close(worst_e, 0.0_wp, 0.0_wp, 1e-9_wp*e0, 'on carried elastic: the balls'' energy kept (J)')
+    print '(a, 3es10.2)', '  on carried elastic: times, speeds, energy ', worst_t, worst_v, worst_e
+  end subroutine on_carried_elastic
+
+  !> The high ball dropped 0.05 m aside (the normal n = (sin a, 0, cos a)
+  !> at the touch, sin a = 1/3) onto the low ball on the frictionless floor,
+  !> e = 1: the low ball can move only along the floor, so the hit meets
+  !> its effective mass through its closed contact: the normal impulse
+  !> P = (1 + e) v cos a/(1/m_h + sin^2 a/m_l), the floor's P cos a (its
+  !> speed after 0), the low ball sliding away at -P sin a/m_l without
+  !> spin, the high one leaving at (0, 0, -v) + P n/m_h; then the low ball
+  !> on x = -P sin a/m_l (t - t_h), z = 0.1 to the end, and the balls'
+  !> energy kept at every record (1e-9 of it).
+  subroutine on_carried_oblique()
+    real(wp), parameter :: dx = 0.05_wp, ml = 1, mh = 0.1_wp, e = 1
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp) :: sin_a, cos_a, n(3), z_hit, v, t_hit, p, u, e0, worst_e, worst_low, worst_high, high_after(3)
+    integer :: i, j
+    call run_text(carried_input(dx, e, 0.5_wp, ''), 'on carried oblique', flight, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'on carried oblique: runs to its end: '// &
+               st%text()//' '//flight%outcome)
+    if (.not. st%ok()) return
+    sin_a = dx/0.15_wp
+    cos_a = sqrt(1 - sin_a**2)
+    n = [sin_a, 0.0_wp, cos_a]
+    z_hit = 0.1_wp + 0.15_wp*cos_a
+    v = sqrt(2*g*(0.55_wp - z_hit))
+    t_hit = v/g
+    p = (1 + e)*v*cos_a/(1/mh + sin_a**2/ml)
+    u = -p*sin_a/ml
+    high_after = [0.0_wp, 0.0_wp, -v] + p*n/mh
+    call check(size(flight%impacts) == 2, 'on carried oblique: one impact, at the floor and the hit')
+    if (size(flight%impacts) /= 2) return
+    associate (floor => flight%impacts(1), hit => flight%impacts(2))
+      call check_close(hit%time, t_hit, 0.0_wp, 1e-9_wp, 'on carried oblique: the touch at v/g (s)')
+      call check_close(hit%normal_speed_before, -v*cos_a, 0.0_wp, 1e-9_wp, 'on carried oblique: approach v cos a')
+      call check_close(hit%normal_impulse, p, 0.0_wp, 1e-9_wp, 'on carried oblique: P = (1 + e) v cos a/(1/m_h '// &
+                       '+ sin^2 a/m_l) (N s)')
+      call check_close(hit%normal_speed_after, v*cos_a, 0.0_wp, 1e-9_wp, 'on carried oblique: rebound e v cos a')
+      call check_close(floor%normal_impulse, p*cos_a, 0.0_wp, 1e-9_wp, 'on carried oblique: the floor''s P cos a')
+      call check_close(floor%normal_speed_after, 0.0_wp, 0.0_wp, 1e-12_wp, 'on carried oblique: the floor stays '// &
+                       'closed (its speed after 0)')
+    end associate
+    worst_e = 0
+    worst_low = 0
+    worst_high = 0
+    associate (s => flight%series)
+      e0 = balls_energy(s, 1)
+      j = findloc(s%time(:s%n), flight%impacts(1)%time, dim=1, back=.true.)
+      call check(j > 1 .and. s%time(j - 1) == s%time(j), 'on carried oblique: the records before and after the '// &
+                 'impact')
+      if (j < 2) return
+      worst_high = norm2(s%body_v(:, 2, j) - high_after)
+      do i = 1, s%n
+        worst_e = max(worst_e, abs(balls_energy(s, i) - e0))
+        if (i < j) cycle
+        worst_low = max(worst_low, abs(s%body_r(1, 1, i) - u*(s%time(i) - t_hit)), abs(s%body_r(3, 1, i) - 0.1_wp), &
+                        norm2(s%body_v(:, 1, i) - [u, 0.0_wp, 0.0_wp]), norm2(s%body_omega(:, 1, i)))
+      end do
+      call check(s%time(s%n) == 0.5_wp, 'on carried oblique: to 0.5 s')
+    end associate
+    call check_close(worst_high, 0.0_wp, 0.0_wp, 1e-9_wp, 'on carried oblique: the high ball leaves at (0, 0, -v) '// &
+                     '+ P n/m_h (m/s)')
+    call check_close(worst_low, 0.0_wp, 0.0_wp, 1e-9_wp, 'on carried oblique: the low ball slides on x = -P sin '// &
+                     'a/m_l (t - t_h), z = 0.1, without spin')
+    call check_close(worst_e, 0.0_wp, 0.0_wp, 1e-9_wp*e0, 'on carried oblique: the balls'' energy kept (J)')
+    print '(a, 3es10.2)', '  on carried oblique: high, low, energy ', worst_high, worst_low, worst_e
+  end subroutine on_carried_oblique
+
+  !> The law at a carried body hit from below: the low ball at rest on the
+  !> floor (its carrying contact, restitution 0) hit by the high ball coming
+  !> up along -n, n = (sin a, 0, -cos a) out of the low ball at a = 75 deg
+  !> (contact_body_impact collide_at_once, the contacts the flight gives
+  !> it): the hit lifts the low ball, so the floor takes nothing and opens
+  !> (P = 0, its speed after P_h cos a/m_l > 0) and the hit is the free
+  !> pair's head-on law, P_h = (1 + e) u/(1/m_l + 1/m_h); the centrally
+  !> dropped ball of on_carried at the law's level: the floor takes
+  !> P_h (its speed after 0). Then, in a run, the floor (may_open) and the
+  !> hit both left open at gap 0: not built, the run fails there, saying so.
+  subroutine hit_from_below()
+    real(wp), parameter :: ml = 1, mh = 0.1_wp, e = 0.5_wp, u = 2
+    type(impact_body_t) :: bodies(0:2)
+    type(flight_ode_t), target :: flight
+    type(driver_result_t) :: result
+    type(status_t) :: st
+    real(wp) :: a, n(3), normals(3, 2), points_1(3, 2), points_2(3, 2), ph, low(3)
+    real(wp), dimension(2) :: impulse, tangential, before, after, lost
+    character(len=:), allocatable :: text
+    a = 75*acos(-1.0_wp)/180
+    n = [sin(a), 0.0_wp, -cos(a)]
+    low = [0.0_wp, 0.0_wp, 0.1_wp]
+    bodies(1) = sphere(ml, 0.1_wp, low, [0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp])
+    bodies(2) = sphere(mh, 0.05_wp, low + 0.15_wp*n, -u*n, [0.0_wp, 0.0_wp, 0.0_wp])
+    normals = reshape([0.0_wp, 0.0_wp, 1.0_wp, n], [3, 2])
+    points_1 = reshape([0.0_wp, 0.0_wp, 0.0_wp, low + 0.1_wp*n], [3, 2])
+    points_2 = points_1
+    call collide_at_once([0.0_wp, e], [0.0_wp, 0.0_wp], normals, points_1, points_2, reshape([0, 1, 1, 2], [2, 2]), &
+                         bodies, impulse, tangential, before, after, lost, st)
+    call check(st%ok(), 'from below: resolved: '//st%text())
+    ph = (1 + e)*u/(1/ml + 1/mh)
+    call check(impulse(1) == 0 .and. after(1) > 0, 'from below: the floor takes nothing and opens')
+    call check_close(after(1), ph*cos(a)/ml, 0.0_wp, rounding*u, 'from below: the floor''s speed after P_h cos '// &
+                     'a/m_l (m/s)')
+    call check_close(impulse(2), ph, 0.0_wp, rounding*mh*u, 'from below: the free pair''s head-on impulse (N s)')
+    call check_close(after(2), e*u, 0.0_wp, rounding*u, 'from below: the rebound e u (m/s)')
+    call check(all(lost >= -rounding*mh*u**2), 'from below: no contact gives energy')
+    ! dropped centrally from above at u: the floor takes it all
+    bodies(1) = sphere(ml, 0.1_wp, low, [0.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp, 0.0_wp])
+    bodies(2) = sphere(mh, 0.05_wp, low + [0.0_wp, 0.0_wp, 0.15_wp], [0.0_wp, 0.0_wp, -u], [0.0_wp, 0.0_wp, 0.0_wp])
+    normals(:, 2) = [0.0_wp, 0.0_wp, 1.0_wp]
+    points_1(:, 2) = low + [0.0_wp, 0.0_wp, 0.1_wp]
+    points_2 = points_1
+    call collide_at_once([0.0_wp, e], [0.0_wp, 0.0_wp], normals, points_1, points_2, reshape([0, 1, 1, 2], [2, 2]), &
+                         bodies, impulse, tangential, before, after, lost, st)
+    call check(st%ok(), 'from above: resolved: '//st%text())
+    call check_close(impulse(1), mh*(1 + e)*u, 0.0_wp, rounding*mh*u, 'from above: the floor takes m_h (1 + e) u')
+    call check_close(after(1), 0.0_wp, 0.0_wp, rounding*u, 'from above: the floor stays closed')
+    call check(norm2(bodies(1)%velocity) <= rounding*u, 'from above: the low ball stays at rest')
+    ! in a run: the floor may open; both contacts left open at gap 0 are not built
+    text = '&run scenario = ''contact'' /'//nl// &
+           '&solver rtol = 1e-12, atol = 1e-12, duration = 0.5, output_step = 0.01 /'//nl// &
+           '&shape name = ''floor'', kind = ''plane'' /'//nl// &
+           '&shape name = ''low'', kind = ''sphere'', radius = 0.1 /'//nl// &
+           '&shape name = ''high'', kind = ''sphere'', radius = 0.05 /'//nl// &
+           '&body name = ''low'', mass = 1, solid_of = ''low'', position = 0, 0, 0.1 /'//nl// &
+           '&body name = ''high'', mass = 0.1, solid_of = ''high'', position = '// &
+           number(0.17_wp*sin(a))//', 0, '//number(0.1_wp - 0.17_wp*cos(a))//', velocity = '// &
+           number(-u*sin(a))//', 0, '//number(u*cos(a))//' /'//nl// &
+           '&contact name = ''low_on_floor'', shape_1 = ''floor'', body_2 = ''low'', shape_2 = ''low'', '// &
+           'may_open = .true. /'//nl// &
+           '&contact name = ''high_on_low'', body_1 = ''low'', shape_1 = ''low'', body_2 = ''high'', '// &
+           'shape_2 = ''high'', start = ''open'', restitution = '//number(e)//' /'//nl
+    call run_text(text, 'from below', flight, result, st)
+    call check(st%code == STATUS_DOMAIN .and. result%outcome == DRIVE_FAILED .and. &
+               index(flight%outcome, 'the impact leaves ''low_on_floor'', ''high_on_low'' open at gap 0 (more than '// &
+               'one contact opening at once is not built): the run ends here') > 0, &
+               'from below: the run fails at the hit, saying why: '//st%text())
+    call check(size(flight%impacts) == 2, 'from below: the impact''s rows kept')
+    if (size(flight%impacts) == 2) call check(flight%impacts(1)%normal_impulse == 0 .and. &
+                                              flight%impacts(1)%normal_speed_after > 0, 'from below: the floor '// &
+                                              'takes nothing and opens')
+  end subroutine hit_from_below
 
   !> The groups of a ball (radius, 1 kg) at height z0 over a V of two planes
   !> tilted +-angle about y (their normals (+-sin, 0, cos)), a contact with
