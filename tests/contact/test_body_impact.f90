@@ -29,7 +29,10 @@
 !>     a big one just below it; the big one bounces off the floor (e_f) and
 !>     meets the small one coming down: approach speed (1 + e_f) v0, the
 !>     meeting at t0 + gap/((1 + e_f) v0), and the speeds after by the
-!>     head-on law with the pair's e.
+!>     head-on law with the pair's e; later the small ball falls twice on
+!>     the big one resting on the floor: each hit one impact at the hit and
+!>     the floor, the rebound e_p of the approach, the floor taking the
+!>     whole impulse, the big ball at rest, back after 2 u/g.
 !>   - on_carried: a ball dropped centrally onto a ball carried by the
 !>     floor (start closed), e = 0.5: one impact at the hit and the floor
 !>     (Newton's restitution at each, the floor's 0): the low ball stays at
@@ -452,8 +455,9 @@ contains
     type(flight_ode_t), target :: flight
     type(driver_result_t) :: result
     type(status_t) :: st
-    real(wp) :: t0, v0, s, ub, us, ub_after, us_after
-    integer :: i
+    real(wp) :: t0, v0, s, ub, us, ub_after, us_after, worst_speed, worst_p
+    integer :: i, k
+    integer, allocatable :: hits(:)
     call load_input_file('inputs/contact/stacked_balls.nml', input, st)
     if (st%ok()) call run_input(input, flight, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'stacked: runs to its end: '//st%text()//' '// &
@@ -490,7 +494,36 @@ contains
                        'leaves at the head-on law''s speed (m/s)')
       print '(a, 2f9.4)', '  stacked: the speeds after (m/s) ', us_after, ub_after
     end associate
-    call check(all(flight%impacts(3:)%contact == 1), 'stacked: then only the big ball on the floor')
+    call check(size(flight%impacts) == 27 .and. flight%series%time(flight%series%n) == 5.5_wp, 'stacked: to 5.5 '// &
+               's, 27 impact rows')
+    ! the hits on the big ball resting on the floor (closed at its Zeno sum)
+    hits = pack([(i, i = 1, size(flight%impacts))], flight%impacts%contact == 2 .and. flight%impacts%time > 3)
+    call check(size(hits) == 2, 'stacked: the small ball falls twice on the resting big one')
+    if (size(hits) /= 2) return
+    worst_speed = 0
+    worst_p = 0
+    do k = 1, 2
+      associate (hit => flight%impacts(hits(k)), floor => flight%impacts(hits(k) - 1))
+        call check(floor%contact == 1 .and. floor%time == hit%time .and. hit%body_1 == 1 .and. hit%body_2 == 2, &
+                   'stacked: each hit one impact at the hit and the floor')
+        worst_speed = max(worst_speed, abs(hit%normal_speed_after + e_p*hit%normal_speed_before), &
+                          abs(floor%normal_speed_before), abs(floor%normal_speed_after))
+        worst_p = max(worst_p, abs(hit%normal_impulse + ms*(1 + e_p)*hit%normal_speed_before), &
+                      abs(floor%normal_impulse - hit%normal_impulse))
+        i = findloc(flight%series%time(:flight%series%n), hit%time, dim=1, back=.true.)
+        worst_speed = max(worst_speed, abs(flight%series%body_v(3, 1, i)), abs(flight%series%body_r(3, 1, i) - 0.12_wp))
+      end associate
+    end do
+    call check_close(worst_speed, 0.0_wp, 0.0_wp, 1e-9_wp, 'stacked: rebound e_p of the approach, the floor''s '// &
+                     'speed 0 before and after, the big ball at rest after (m/s)')
+    call check_close(worst_p, 0.0_wp, 0.0_wp, 1e-9_wp, 'stacked: the floor takes the hit''s whole impulse m_s (1 '// &
+                     '+ e_p) v (N s)')
+    ! the small ball's flight from the first hit back onto the resting big one: 2 u/g
+    call check_close(flight%impacts(hits(2))%time - flight%impacts(hits(1))%time, &
+                     2*flight%impacts(hits(1))%normal_speed_after/g, 0.0_wp, 1e-9_wp, 'stacked: back after 2 u/g (s)')
+    call check_close(flight%impacts(hits(2))%normal_speed_before, -flight%impacts(hits(1))%normal_speed_after, &
+                     0.0_wp, 1e-9_wp, 'stacked: back at the speed it left (m/s)')
+    print '(a, 2es10.2)', '  stacked: the hits on the resting ball, speeds and impulses ', worst_speed, worst_p
   end subroutine stacked
 
   !> The groups of a ball 'high' (0.05 m, 0.1 kg) dropped from rest at

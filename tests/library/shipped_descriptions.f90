@@ -910,7 +910,7 @@ contains
                        landing('small_on_floor', 'floor', 'small', 0.8_wp, 0.1_wp)]
     system%contacts(2)%start_open = .true.
     system%contacts(2)%restitution = 0.9_wp   ! close_speed: the default
-    call run_flying('inputs/contact/stacked_balls.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 1.5_wp)
+    call run_flying('inputs/contact/stacked_balls.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 5.5_wp)
   end subroutine contact_stacked_balls
 
   subroutine contact_box_landing()
