@@ -47,6 +47,9 @@
 !>     0, its speed after > 0, the free pair's law at the hit); from above
 !>     it takes the whole impulse; in a run both contacts left open at gap
 !>     0 are not built (exit 2), said so.
+!>   - carried_law_random: 300 random frictionless hits on a box resting on
+!>     three feet: complementarity at every contact, the energy never
+!>     rising (kept at e = 1), its fall the rows' sum.
 !>   - two_at_once: a ball dropped into a V of two planes at +-30 degrees
 !>     lands on both at once: the frictionless impact at two points
 !>     (Newton's restitution at each; W's off-diagonal cos60/m) on its
@@ -90,6 +93,7 @@ program test_body_impact
   call on_carried_elastic()
   call on_carried_oblique()
   call hit_from_below()
+  call carried_law_random()
   call two_at_once()
   call finish_tests('test_body_impact')
 
@@ -838,6 +842,73 @@ contains
                                               flight%impacts(1)%normal_speed_after > 0, 'from below: the floor '// &
                                               'takes nothing and opens')
   end subroutine hit_from_below
+
+  !> The law at a carried body, at random: a box (2 kg, half sides 0.2,
+  !> 0.1, 0.05 m) resting on three feet on the floor (carrying contacts,
+  !> restitution 0, normal speed 0 before) hit on its top by a ball (0.3
+  !> kg) at a random point, along a random normal within 70 deg of the
+  !> vertical, at a random approaching velocity and spin, with a random e
+  !> in [0, 1], frictionless (collide_at_once): 300 hits, at every contact
+  !> the impulse >= 0; at each foot its speed after >= 0 and one of the two
+  !> 0; at the hit the speed after >= -e v- and either P = 0 or it is -e
+  !> v-; the kinetic energy never rises and its fall is the rows' sum; with
+  !> e = 1 everywhere the hit keeps it (to the speeds' rounding).
+  subroutine carried_law_random()
+    real(wp), parameter :: half(3) = [0.2_wp, 0.1_wp, 0.05_wp], mb = 2
+    type(impact_body_t) :: bodies(0:2)
+    type(status_t) :: st
+    real(wp) :: normals(3, 4), points(3, 4), r(8), n(3), e, e_before, e_after, scale, worst_c, worst_e
+    real(wp), dimension(4) :: impulse, tangential, before, after, lost, restitution
+    integer :: k, i, fails, seed_size
+    integer, allocatable :: seed(:)
+    call random_seed(size=seed_size)
+    seed = [(7919*i, i = 1, seed_size)]
+    call random_seed(put=seed)
+    worst_c = 0
+    worst_e = 0
+    fails = 0
+    do k = 1, 300
+      call random_number(r)
+      bodies(1) = impact_body_t(mass=mb, inertia=0, origin=[0.0_wp, 0.0_wp, half(3)], &
+                                centre=[0.0_wp, 0.0_wp, half(3)])
+      do i = 1, 3
+        bodies(1)%inertia(i, i) = mb*(4*sum(half**2) - 4*half(i)**2)/12
+      end do
+      n = [2*r(1) - 1, 2*r(2) - 1, 0.0_wp]
+      n = n*sin(70*acos(-1.0_wp)/180*r(3))/max(norm2(n), tiny(1.0_wp))
+      n(3) = sqrt(1 - sum(n(1:2)**2))
+      points(:, 4) = [half(1)*(2*r(4) - 1), half(2)*(2*r(5) - 1), 2*half(3)]
+      bodies(2) = sphere(0.3_wp, 0.05_wp, points(:, 4) + 0.05_wp*n, -(1 + 3*r(6))*n + [r(7), -r(8), 0.0_wp], &
+                         [r(8), 2*r(7), -r(6)])
+      normals(:, 1:3) = spread([0.0_wp, 0.0_wp, 1.0_wp], 2, 3)
+      normals(:, 4) = n
+      points(:, 1:3) = reshape([half(1), half(2), 0.0_wp, half(1), -half(2), 0.0_wp, -half(1), 0.0_wp, 0.0_wp], &
+                               [3, 3])
+      e = merge(1.0_wp, r(2), k > 250)
+      restitution = [0.0_wp, 0.0_wp, 0.0_wp, e]
+      e_before = kinetic_energy(bodies(1), bodies(2))
+      call collide_at_once(restitution, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp], normals, points, points, &
+                           reshape([0, 1, 0, 1, 0, 1, 1, 2], [2, 4]), bodies, impulse, tangential, before, after, &
+                           lost, st)
+      if (.not. st%ok()) then
+        fails = fails + 1
+        cycle
+      end if
+      e_after = kinetic_energy(bodies(1), bodies(2))
+      scale = rounding*(4 + maxval(abs(before)))   ! 16 eps of the speeds (m/s)
+      worst_c = max(worst_c, max(maxval(-impulse)/0.3_wp, maxval(-after(1:3)), &
+                                 maxval(min(impulse(1:3)/0.3_wp, abs(after(1:3)))), -(after(4) + e*before(4)), &
+                                 min(impulse(4)/0.3_wp, abs(after(4) + e*before(4))))/scale)
+      worst_e = max(worst_e, (e_after - e_before)/e_before, abs(e_before - e_after - sum(lost))/e_before)
+      if (k > 250) worst_e = max(worst_e, abs(e_after - e_before)/e_before)
+    end do
+    call check(fails == 0, 'carried at random: every hit resolved')
+    call check(worst_c <= 1, 'carried at random: complementarity at the feet and the hit (in the speeds'' '// &
+               'rounding): '//number(worst_c))
+    call check_close(worst_e, 0.0_wp, 0.0_wp, 1e-14_wp, 'carried at random: the energy never rises, its fall the '// &
+                     'rows'' sum, kept at e = 1 (relative)')
+    print '(a, 2es10.2)', '  carried at random: complementarity (of the rounding), energy ', worst_c, worst_e
+  end subroutine carried_law_random
 
   !> The groups of a ball (radius, 1 kg) at height z0 over a V of two planes
   !> tilted +-angle about y (their normals (+-sin, 0, cos)), a contact with
