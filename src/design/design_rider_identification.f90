@@ -22,7 +22,10 @@
 !>
 !> The water is computed once by the caller (it does not depend on mu_D);
 !> every evaluation builds its own rider from the setup, which it only reads,
-!> so evaluations run in parallel with the same numbers as serially.
+!> so evaluations run in parallel with the same numbers as serially. The fit
+!> itself, its record and the figures at the optimum are design_identification's:
+!> this module gives the rider's sample (rider_stations_t), its run
+!> (simulate_rider) and its cost groups (rider_cost_groups).
 module design_rider_identification
   use base_kinds, only: wp
   use base_sorting, only: unique_sorted
@@ -34,11 +37,12 @@ module design_rider_identification
     rider_coulomb_mu, set_rider_mu
   use rider_ride, only: ride_options_t
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
-  use numerics_least_squares, only: least_squares_problem_t, least_squares_options_t, &
-    least_squares_result_t, solve_least_squares
+  use numerics_least_squares, only: least_squares_options_t, least_squares_result_t
+  use design_identification, only: identification_sample_t, identification_problem_t, identification_fit_t, &
+    fit_identification, identification_solver
   use design_measurements, only: check_measured_places
   use design_cost, only: cost_group_t, new_cost_group, position_factor, speed_factor, group_part, &
-    group_rmse, group_mae, group_max_abs, append_residuals
+    group_rmse, group_mae, group_max_abs
   implicit none (type, external)
   private
   public :: rider_measurements_t, rider_identification_t, rider_fit_options_t, rider_fit_t, rider_stations_t
@@ -76,46 +80,36 @@ module design_rider_identification
     real(wp) :: weight = 0.6_wp          !< w_RP of (4.43), thesis table 4.7's choice
     real(wp) :: k2 = 1                   !< rad s/m
     real(wp) :: lower = 0, upper = 0.11_wp   !< bounds of mu_D, held exactly (table 4.8)
-    type(least_squares_options_t) :: solver = least_squares_options_t(ftol=1e-8_wp, xtol=1e-8_wp, &
-                                                                      gtol=1e-10_wp, epsfcn=1e-10_wp)
+    type(least_squares_options_t) :: solver = identification_solver
   end type rider_fit_options_t
 
   !> What a simulated ride gives at the measurement places.
-  type :: rider_stations_t
+  type, extends(identification_sample_t) :: rider_stations_t
     real(wp), allocatable :: angle(:, :)          !< rad, N_CONTACTS x n
     real(wp), allocatable :: wall_distance(:, :)  !< m, N_CONTACTS x n, along the section from the bottom
     real(wp), allocatable :: segment_speed(:)     !< m/s
   end type rider_stations_t
 
-  type :: rider_fit_t
+  !> The shared record (design_identification) and the rider's own figures.
+  type, extends(identification_fit_t) :: rider_fit_t
     real(wp) :: mu = 0
     logical :: at_bound = .false.
     real(wp) :: standard_error = 0
-    logical :: covariance_valid = .false.
-    real(wp) :: weight = 0, k2 = 0
-    real(wp) :: cost = 0, position_part = 0, speed_part = 0   !< rad^2
+    real(wp) :: k2 = 0
     real(wp) :: contact_part(N_CONTACTS) = 0                  !< rad^2, the position part per contact
     real(wp) :: rmse_angle(N_CONTACTS) = 0, mae_angle(N_CONTACTS) = 0, max_angle(N_CONTACTS) = 0   !< rad
-    real(wp) :: rmse_speed = 0, mae_speed = 0, max_speed = 0   !< m/s
     type(rider_stations_t) :: simulated
     real(wp), allocatable :: error_angle(:, :)    !< rad, simulated - measured
     real(wp), allocatable :: station_rmse(:)      !< rad, over the three contacts at each station
-    real(wp), allocatable :: error_speed(:)       !< m/s
-    integer :: evaluations = 0, rejected = 0, info = 0
   end type rider_fit_t
 
-  type, extends(least_squares_problem_t) :: rider_fit_problem_t
+  !> The fit's problem: mu_D is its one parameter.
+  type, extends(identification_problem_t) :: rider_fit_problem_t
     type(rider_identification_t) :: setup
     type(rider_fit_options_t) :: options
-    ! the single evaluation of least cost so far: LMDER ends on it, so the
-    ! report at the optimum needs no ride of its own
-    logical :: has_best = .false.
-    real(wp) :: best_cost = huge(1.0_wp)
-    real(wp) :: best_mu = 0
-    type(rider_stations_t) :: best
   contains
-    procedure :: residuals => fit_residuals
-    procedure :: residuals_batch => fit_residuals_batch
+    procedure :: simulate => problem_simulate
+    procedure :: cost_groups => problem_cost_groups
   end type rider_fit_problem_t
 
 contains
@@ -231,58 +225,31 @@ contains
       simulated%segment_speed - setup%data%segment_speed)
   end subroutine rider_cost_groups
 
-  subroutine evaluate(self, p, r, status, simulated)
+  !> The ride with mu_D = p(1).
+  subroutine problem_simulate(self, p, sample, status)
     class(rider_fit_problem_t), intent(in) :: self
     real(wp), intent(in) :: p(:)
-    real(wp), intent(out) :: r(:)
-    type(status_t), intent(inout) :: status
-    type(rider_stations_t), intent(out) :: simulated
+    class(identification_sample_t), allocatable, intent(out) :: sample
+    type(status_t), intent(out) :: status
     type(rider_params_t) :: params
-    type(cost_group_t) :: groups(N_CONTACTS + 1)
-    integer :: offset, g
-    r = 0
+    type(rider_stations_t), allocatable :: simulated
     params = self%setup%params
     call set_rider_mu(params, p(1))
+    allocate (simulated)
     call simulate_rider(self%setup, params, simulated, status)
-    if (.not. status%ok()) return
-    call rider_cost_groups(self%setup, self%options, simulated, groups)
-    offset = 0
-    do g = 1, size(groups)
-      call append_residuals(groups(g), r, offset)
-    end do
-  end subroutine evaluate
+    call move_alloc(simulated, sample)
+  end subroutine problem_simulate
 
-  subroutine fit_residuals(self, p, r, status)
-    class(rider_fit_problem_t), intent(inout) :: self
-    real(wp), intent(in) :: p(:)
-    real(wp), intent(out) :: r(:)
-    type(status_t), intent(inout) :: status
-    type(rider_stations_t) :: simulated
-    call evaluate(self, p, r, status, simulated)
-    if (.not. status%ok()) return
-    if (0.5_wp*sum(r**2) < self%best_cost) then
-      self%has_best = .true.
-      self%best_cost = 0.5_wp*sum(r**2)
-      self%best_mu = p(1)
-      self%best = simulated
-    end if
-  end subroutine fit_residuals
-
-  !> Independent rides in `threads` OpenMP threads (each its own rider).
-  subroutine fit_residuals_batch(self, p, r, statuses)
-    class(rider_fit_problem_t), intent(inout) :: self
-    real(wp), intent(in) :: p(:, :)
-    real(wp), intent(out) :: r(:, :)
-    type(status_t), intent(inout) :: statuses(:)
-    type(rider_stations_t) :: simulated
-    integer :: k
-    !$omp parallel do num_threads(max(1, self%setup%threads)) schedule(dynamic, 1) private(simulated) &
-    !$omp if (self%setup%threads > 1 .and. size(p, 2) > 1)
-    do k = 1, size(p, 2)
-      call evaluate(self, p(:, k), r(:, k), statuses(k), simulated)
-    end do
-    !$omp end parallel do
-  end subroutine fit_residuals_batch
+  subroutine problem_cost_groups(self, sample, groups)
+    class(rider_fit_problem_t), intent(in) :: self
+    class(identification_sample_t), intent(in) :: sample
+    type(cost_group_t), allocatable, intent(out) :: groups(:)
+    allocate (groups(N_CONTACTS + 1))
+    select type (sample)
+    type is (rider_stations_t)
+      call rider_cost_groups(self%setup, self%options, sample, groups)
+    end select
+  end subroutine problem_cost_groups
 
   !> Fits mu_D from `mu` (the start) within the bounds; `fit` holds the
   !> optimum, its report and the simulated measurements there.
@@ -294,8 +261,11 @@ contains
     type(status_t), intent(out) :: status
     type(rider_fit_problem_t) :: problem
     type(least_squares_result_t) :: result
+    class(identification_sample_t), allocatable :: sample
+    type(cost_group_t), allocatable :: groups(:)
     real(wp) :: p(1), start
     logical :: coulomb
+    integer :: k
 
     call rider_coulomb_mu(setup%params, start, coulomb)
     if (.not. coulomb) then
@@ -312,63 +282,32 @@ contains
     end if
     problem%setup = setup
     problem%options = options
+    problem%threads = setup%threads
     p = mu
-    call solve_least_squares(problem, N_CONTACTS*size(setup%data%station_arc_length) + &
-                             size(setup%data%segment_speed), p, [options%lower], [options%upper], &
-                             options%solver, result, status)
+    call fit_identification('rider friction identification', problem, N_CONTACTS*size(setup%data%station_arc_length) + &
+                            size(setup%data%segment_speed), p, [options%lower], [options%upper], &
+                            options%solver, fit, result, sample, groups, status)
     fit%mu = p(1)
-    fit%evaluations = result%evaluations
-    fit%rejected = result%rejected_evaluations
-    fit%info = result%info
-    if (.not. status%ok()) then
-      call prefix_status(status, 'rider friction identification')
-      return
-    end if
+    if (.not. status%ok()) return
     fit%at_bound = result%at_bound(1)
-    fit%covariance_valid = result%covariance_valid
     if (result%covariance_valid) fit%standard_error = result%standard_error(1)
-    call report(problem, fit, status)
+    ! the rider's own figures at the optimum
+    select type (sample)
+    type is (rider_stations_t)
+      fit%simulated = sample
+    end select
+    fit%error_angle = fit%simulated%angle - setup%data%angle
+    fit%error_speed = fit%simulated%segment_speed - setup%data%segment_speed
+    fit%station_rmse = sqrt(sum(fit%error_angle**2, dim=1)/N_CONTACTS)
+    fit%weight = options%weight
+    fit%k2 = options%k2
+    do k = 1, N_CONTACTS
+      fit%contact_part(k) = group_part(groups(k))
+      fit%rmse_angle(k) = group_rmse(groups(k))
+      fit%mae_angle(k) = group_mae(groups(k))
+      fit%max_angle(k) = group_max_abs(groups(k))
+    end do
   end subroutine fit_rider_friction
-
-  !> The simulated measurements, errors and figures at fit%mu (the fit's own
-  !> ride there when it kept it, else one more ride).
-  subroutine report(problem, fit, status)
-    type(rider_fit_problem_t), intent(in) :: problem
-    type(rider_fit_t), intent(inout) :: fit
-    type(status_t), intent(inout) :: status
-    type(cost_group_t) :: groups(N_CONTACTS + 1)
-    type(rider_params_t) :: params
-    integer :: k
-    associate (setup => problem%setup, options => problem%options)
-      if (problem%has_best .and. problem%best_mu == fit%mu) then
-        fit%simulated = problem%best
-      else
-        params = setup%params
-        call set_rider_mu(params, fit%mu)
-        call simulate_rider(setup, params, fit%simulated, status)
-        fit%evaluations = fit%evaluations + 1
-        if (.not. status%ok()) return
-      end if
-      fit%error_angle = fit%simulated%angle - setup%data%angle
-      fit%error_speed = fit%simulated%segment_speed - setup%data%segment_speed
-      fit%station_rmse = sqrt(sum(fit%error_angle**2, dim=1)/N_CONTACTS)
-      call rider_cost_groups(setup, options, fit%simulated, groups)
-      fit%weight = options%weight
-      fit%k2 = options%k2
-      do k = 1, N_CONTACTS
-        fit%contact_part(k) = group_part(groups(k))
-        fit%rmse_angle(k) = group_rmse(groups(k))
-        fit%mae_angle(k) = group_mae(groups(k))
-        fit%max_angle(k) = group_max_abs(groups(k))
-      end do
-      fit%position_part = sum(fit%contact_part)
-      fit%speed_part = group_part(groups(N_CONTACTS + 1))
-      fit%cost = fit%position_part + fit%speed_part
-      fit%rmse_speed = group_rmse(groups(N_CONTACTS + 1))
-      fit%mae_speed = group_mae(groups(N_CONTACTS + 1))
-      fit%max_speed = group_max_abs(groups(N_CONTACTS + 1))
-    end associate
-  end subroutine report
 
   !> The fit for every weight w_RP (table 4.7), each from the same start.
   subroutine rider_weight_sweep(setup, options, weights, mu, fits, status)

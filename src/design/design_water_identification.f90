@@ -29,20 +29,25 @@
 !> Every evaluation runs its own water model built from the setup, which it
 !> only reads: evaluations are independent and run in parallel (OpenMP,
 !> `threads`) for the difference Jacobian, with the same numbers as serially.
+!> The fit itself, its record and the figures at the optimum are
+!> design_identification's: this module gives the water's sample
+!> (water_sample_t), its run (simulate_measurements) and its cost groups
+!> (water_cost_groups).
 module design_water_identification
   use base_kinds, only: wp
   use base_sorting, only: unique_sorted
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use base_text, only: format_short
   use numerics_ode, only: ode_options_t
-  use numerics_least_squares, only: least_squares_problem_t, least_squares_options_t, &
-    least_squares_result_t, solve_least_squares
+  use numerics_least_squares, only: least_squares_options_t, least_squares_result_t
+  use design_identification, only: identification_sample_t, identification_problem_t, identification_fit_t, &
+    fit_identification, identification_solver
   use water_streamline, only: streamline_t
   use water_flow, only: water_series_t, simulate_water
   use water_run, only: water_description_t, new_streamline
   use design_measurements, only: check_measured_places
-  use design_cost, only: cost_group_t, new_cost_group, position_factor, speed_factor, group_part, &
-    group_rmse, group_mae, group_max_abs, append_residuals
+  use design_cost, only: cost_group_t, new_cost_group, position_factor, speed_factor, group_rmse, group_mae, &
+    group_max_abs
   implicit none (type, external)
   private
   public :: water_measurements_t, water_identification_t, water_fit_options_t, water_fit_t
@@ -84,25 +89,25 @@ module design_water_identification
     real(wp) :: upper(3) = huge(1.0_wp)
     logical, allocatable :: use_section(:)   !< default: all
     logical, allocatable :: use_segment(:)   !< default: all
-    type(least_squares_options_t) :: solver = least_squares_options_t(ftol=1e-8_wp, xtol=1e-8_wp, &
-                                                                      gtol=1e-10_wp, epsfcn=1e-10_wp)
+    type(least_squares_options_t) :: solver = identification_solver
   end type water_fit_options_t
 
-  type :: water_fit_t
+  !> The shared record (design_identification; its correlation 3 x 3) and the water's own figures.
+  type, extends(identification_fit_t) :: water_fit_t
     real(wp) :: f(3) = 0                    !< kg/m, kg, kg m
     logical :: estimated(3) = .false.
     logical :: at_bound(3) = .false.
     real(wp) :: standard_error(3) = 0
-    real(wp) :: correlation(3, 3) = 0
-    logical :: covariance_valid = .false.
-    real(wp) :: weight = 0, k1 = 0
-    real(wp) :: cost = 0, position_part = 0, speed_part = 0   !< rad^2
+    real(wp) :: k1 = 0
     real(wp) :: rmse_position = 0, mae_position = 0, max_position = 0   !< rad
-    real(wp) :: rmse_speed = 0, mae_speed = 0, max_speed = 0            !< m/s
     real(wp), allocatable :: simulated_v(:), simulated_speed(:)   !< at every section / segment
-    real(wp), allocatable :: error_v(:), error_speed(:)           !< simulated - measured
-    integer :: evaluations = 0, rejected = 0, info = 0
+    real(wp), allocatable :: error_v(:)                           !< simulated - measured
   end type water_fit_t
+
+  !> What one water run gives at the measurement places.
+  type, extends(identification_sample_t) :: water_sample_t
+    real(wp), allocatable :: section_v(:), segment_speed(:)
+  end type water_sample_t
 
   type :: water_start_values_t
     real(wp) :: f1_energy = 0      !< step 1: energy balance (4.35), kg/m
@@ -112,19 +117,14 @@ module design_water_identification
     integer :: evaluations = 0
   end type water_start_values_t
 
-  !> The least-squares problem of one fit: residuals of the used groups.
-  type, extends(least_squares_problem_t) :: water_fit_problem_t
+  !> The least-squares problem of one fit: residuals of the used groups; its
+  !> parameters f1, f2, f3 (the held ones with lower = upper).
+  type, extends(identification_problem_t) :: water_fit_problem_t
     type(water_identification_t) :: setup
     type(water_fit_options_t) :: options
-    ! the single evaluation of least cost so far: LMDER ends on it, so the
-    ! report at the optimum needs no run of its own
-    logical :: has_best = .false.
-    real(wp) :: best_cost = huge(1.0_wp)
-    real(wp) :: best_f(3) = 0
-    real(wp), allocatable :: best_v(:), best_speed(:)
   contains
-    procedure :: residuals => fit_residuals
-    procedure :: residuals_batch => fit_residuals_batch
+    procedure :: simulate => problem_simulate
+    procedure :: cost_groups => problem_cost_groups
   end type water_fit_problem_t
 
 contains
@@ -258,55 +258,30 @@ contains
     if (allocated(options%use_segment)) use_segment = options%use_segment
   end subroutine used
 
-  subroutine evaluate(self, p, r, status, sv, sw)
+  !> The water run with f = p.
+  subroutine problem_simulate(self, p, sample, status)
     class(water_fit_problem_t), intent(in) :: self
     real(wp), intent(in) :: p(:)
-    real(wp), intent(out) :: r(:)
-    type(status_t), intent(inout) :: status
-    real(wp), intent(out) :: sv(:), sw(:)   !< the simulated measurements
-    type(cost_group_t) :: groups(2)
-    integer :: offset
-    r = 0
-    call simulate_measurements(self%setup, p, sv, sw, status)
-    if (.not. status%ok()) return
-    call water_cost_groups(self%setup, self%options, sv, sw, groups)
-    offset = 0
-    call append_residuals(groups(1), r, offset)
-    call append_residuals(groups(2), r, offset)
-  end subroutine evaluate
+    class(identification_sample_t), allocatable, intent(out) :: sample
+    type(status_t), intent(out) :: status
+    type(water_sample_t), allocatable :: simulated
+    allocate (simulated)
+    allocate (simulated%section_v(size(self%setup%data%section_v)), &
+              simulated%segment_speed(size(self%setup%data%segment_speed)))
+    call simulate_measurements(self%setup, p, simulated%section_v, simulated%segment_speed, status)
+    call move_alloc(simulated, sample)
+  end subroutine problem_simulate
 
-  subroutine fit_residuals(self, p, r, status)
-    class(water_fit_problem_t), intent(inout) :: self
-    real(wp), intent(in) :: p(:)
-    real(wp), intent(out) :: r(:)
-    type(status_t), intent(inout) :: status
-    real(wp) :: sv(size(self%setup%data%section_v)), sw(size(self%setup%data%segment_speed))
-    call evaluate(self, p, r, status, sv, sw)
-    if (.not. status%ok()) return
-    if (0.5_wp*sum(r**2) < self%best_cost) then
-      self%has_best = .true.
-      self%best_cost = 0.5_wp*sum(r**2)
-      self%best_f = p
-      self%best_v = sv
-      self%best_speed = sw
-    end if
-  end subroutine fit_residuals
-
-  !> Independent evaluations in `threads` OpenMP threads (each its own model).
-  subroutine fit_residuals_batch(self, p, r, statuses)
-    class(water_fit_problem_t), intent(inout) :: self
-    real(wp), intent(in) :: p(:, :)
-    real(wp), intent(out) :: r(:, :)
-    type(status_t), intent(inout) :: statuses(:)
-    real(wp) :: sv(size(self%setup%data%section_v)), sw(size(self%setup%data%segment_speed))
-    integer :: k
-    !$omp parallel do num_threads(max(1, self%setup%threads)) schedule(dynamic, 1) private(sv, sw) &
-    !$omp if (self%setup%threads > 1 .and. size(p, 2) > 1)
-    do k = 1, size(p, 2)
-      call evaluate(self, p(:, k), r(:, k), statuses(k), sv, sw)
-    end do
-    !$omp end parallel do
-  end subroutine fit_residuals_batch
+  subroutine problem_cost_groups(self, sample, groups)
+    class(water_fit_problem_t), intent(in) :: self
+    class(identification_sample_t), intent(in) :: sample
+    type(cost_group_t), allocatable, intent(out) :: groups(:)
+    allocate (groups(2))
+    select type (sample)
+    type is (water_sample_t)
+      call water_cost_groups(self%setup, self%options, sample%section_v, sample%segment_speed, groups)
+    end select
+  end subroutine problem_cost_groups
 
   !> Fits the estimated friction parameters from f (the start; the others stay
   !> as given) within the bounds. `fit` holds the optimum, its report and the
@@ -319,74 +294,41 @@ contains
     type(status_t), intent(out) :: status
     type(water_fit_problem_t) :: problem
     type(least_squares_result_t) :: result
+    class(identification_sample_t), allocatable :: sample
+    type(cost_group_t), allocatable :: groups(:)
     real(wp) :: p(3), lower(3), upper(3)
     logical :: use_section(size(setup%data%section_v)), use_segment(size(setup%data%segment_speed))
-    integer :: m, i, j
+    integer :: m
 
     problem%setup = setup
     problem%options = options
+    problem%threads = setup%threads
     call used(options, size(use_section), size(use_segment), use_section, use_segment)
     m = count(use_section) + count(use_segment)
     p = f
     lower = merge(options%lower, f, options%estimate)
     upper = merge(options%upper, f, options%estimate)
-    call solve_least_squares(problem, m, p, lower, upper, options%solver, result, status)
+    call fit_identification('water friction identification', problem, m, p, lower, upper, options%solver, fit, &
+                            result, sample, groups, status)
     fit%f = p
     fit%estimated = options%estimate
-    fit%evaluations = result%evaluations
-    fit%rejected = result%rejected_evaluations
-    fit%info = result%info
-    if (.not. status%ok()) then
-      call prefix_status(status, 'water friction identification')
-      return
-    end if
+    if (.not. status%ok()) return
     fit%at_bound = result%at_bound .and. options%estimate
-    fit%covariance_valid = result%covariance_valid
-    if (result%covariance_valid) then
-      fit%standard_error = result%standard_error
-      do j = 1, 3
-        do i = 1, 3
-          if (fit%standard_error(i) > 0 .and. fit%standard_error(j) > 0) &
-            fit%correlation(i, j) = result%covariance(i, j)/(fit%standard_error(i)*fit%standard_error(j))
-        end do
-      end do
-    end if
-    call report(problem, fit, status)
+    if (result%covariance_valid) fit%standard_error = result%standard_error
+    ! the water's own figures at the optimum
+    select type (sample)
+    type is (water_sample_t)
+      fit%simulated_v = sample%section_v
+      fit%simulated_speed = sample%segment_speed
+    end select
+    fit%error_v = fit%simulated_v - setup%data%section_v
+    fit%error_speed = fit%simulated_speed - setup%data%segment_speed
+    fit%weight = options%weight
+    fit%k1 = options%k1
+    fit%rmse_position = group_rmse(groups(1))
+    fit%mae_position = group_mae(groups(1))
+    fit%max_position = group_max_abs(groups(1))
   end subroutine fit_water_friction
-
-  !> The simulated measurements, errors and figures at fit%f (the fit's
-  !> own run there when it kept it, else one more run).
-  subroutine report(problem, fit, status)
-    type(water_fit_problem_t), intent(in) :: problem
-    type(water_fit_t), intent(inout) :: fit
-    type(status_t), intent(inout) :: status
-    type(cost_group_t) :: groups(2)
-    associate (setup => problem%setup, options => problem%options)
-      if (problem%has_best .and. all(problem%best_f == fit%f)) then
-        fit%simulated_v = problem%best_v
-        fit%simulated_speed = problem%best_speed
-      else
-        allocate (fit%simulated_v(size(setup%data%section_v)), fit%simulated_speed(size(setup%data%segment_speed)))
-        call simulate_measurements(setup, fit%f, fit%simulated_v, fit%simulated_speed, status)
-        fit%evaluations = fit%evaluations + 1
-        if (.not. status%ok()) return
-      end if
-      fit%error_v = fit%simulated_v - setup%data%section_v
-      fit%error_speed = fit%simulated_speed - setup%data%segment_speed
-      call water_cost_groups(setup, options, fit%simulated_v, fit%simulated_speed, groups)
-      fit%weight = options%weight
-      fit%k1 = options%k1
-      fit%position_part = group_part(groups(1))
-      fit%speed_part = group_part(groups(2))
-      fit%cost = fit%position_part + fit%speed_part
-      fit%rmse_position = group_rmse(groups(1))
-      fit%mae_position = group_mae(groups(1))
-      fit%max_position = group_max_abs(groups(1))
-      fit%rmse_speed = group_rmse(groups(2))
-      fit%mae_speed = group_mae(groups(2))
-      fit%max_speed = group_max_abs(groups(2))
-    end associate
-  end subroutine report
 
   !> The thesis's start values (C.5): (1) f1 from the energy balance over the
   !> slide with the last segment's speed, m g dh = f1 w^2 s (4.35), then f1
