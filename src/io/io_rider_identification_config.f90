@@ -8,6 +8,7 @@ module io_rider_identification_config
   use design_rider_identification, only: rider_measurements_t, rider_fit_options_t
   use io_input, only: input_text_t, group_reader_t, open_group, format_real
   use io_measured_segments, only: read_measured_segments, read_measured_places
+  use io_identification_config, only: read_identify_weight, read_identify_solver
   implicit none (type, external)
   private
   public :: rider_identification_config_t, read_rider_identification_config
@@ -75,20 +76,12 @@ contains
     call read_measured_segments(input, r, segments_file, config%twin, config%data%segment_start, &
                                 config%data%segment_end, config%data%segment_speed, config%segments_file, status)
     if (.not. status%ok()) return
-    if (size(config%data%station_arc_length) + size(config%data%segment_start) == 0) then
-      call r%invalid('station_arc_length', 'nothing', 'give stations or segments (or their CSV files)', status)
-      return
-    end if
-    if (size(config%data%segment_start) == 0 .and. r%has('weight')) then
-      call r%invalid('weight', 'given', 'without segments only the positions are fitted (w is 0)', status)
-      return
-    end if
 
     ! the fit
     associate (o => config%options)
-      if (size(config%data%segment_start) == 0) o%weight = 0
-      if (size(config%data%station_arc_length) == 0) o%weight = 1
-      call r%get('weight', o%weight, status)
+      call read_identify_weight(r, size(config%data%station_arc_length), size(config%data%segment_start), &
+                                'station_arc_length', 'stations', .true., o%weight, status)
+      if (.not. status%ok()) return
       call r%get('k2', o%k2, status)
       call r%get('lower', o%lower, status)
       call r%get('upper', o%upper, status)
@@ -97,10 +90,8 @@ contains
         call r%invalid('upper', format_real(o%upper), 'must exceed lower = '//format_real(o%lower), status)
         return
       end if
-      call r%get('ftol', o%solver%ftol, status)
-      call r%get('xtol', o%solver%xtol, status)
+      call read_identify_solver(r, o%solver, config%threads, status)
     end associate
-    call r%get('threads', config%threads, status)
     call r%get('sensitivity', config%sensitivity, status)
   end subroutine read_rider_identification_config
 end module io_rider_identification_config

@@ -9,6 +9,7 @@ module io_water_identification_config
     SPEED_PASSAGE, MIDDLE_EDGES, MIDDLE_STREAMLINE
   use io_input, only: input_text_t, group_reader_t, open_group, format_real
   use io_measured_segments, only: read_measured_segments, read_measured_places
+  use io_identification_config, only: read_identify_weight, read_identify_solver
   implicit none (type, external)
   private
   public :: water_identification_config_t, read_water_identification_config
@@ -68,15 +69,11 @@ contains
     call read_measured_segments(input, r, segments_file, config%twin, config%data%segment_start, &
                                 config%data%segment_end, config%data%segment_speed, config%segments_file, status)
     if (.not. status%ok()) return
-    if (size(config%data%section_arc_length) + size(config%data%segment_start) == 0) then
-      call r%invalid('section_arc_length', 'nothing', 'give sections or segments (or their CSV files)', status)
-      return
-    end if
 
     associate (o => config%options)
-      if (size(config%data%segment_start) == 0) o%weight = 0
-      if (size(config%data%section_arc_length) == 0) o%weight = 1
-      call r%get('weight', o%weight, status)
+      call read_identify_weight(r, size(config%data%section_arc_length), size(config%data%segment_start), &
+                                'section_arc_length', 'sections', .false., o%weight, status)
+      if (.not. status%ok()) return
       call r%get('k1', o%k1, status)
       call r%get_parts('estimate', o%estimate, 'f1, f2, f3', status)
       call r%get_parts('lower', o%lower, 'f1, f2, f3', status)
@@ -91,8 +88,7 @@ contains
         call r%invalid('estimate', '.false., .false., .false.', 'estimate at least one of f1, f2, f3', status)
         return
       end if
-      call r%get('ftol', o%solver%ftol, status)
-      call r%get('xtol', o%solver%xtol, status)
+      call read_identify_solver(r, o%solver, config%threads, status)
     end associate
     speed_kind = 'midpoint'
     middle_kind = 'edges'
@@ -100,7 +96,6 @@ contains
     call r%get('middle', middle_kind, status)
     config%speed_kind = merge(SPEED_MIDPOINT, SPEED_PASSAGE, speed_kind == 'midpoint')
     config%middle_kind = merge(MIDDLE_EDGES, MIDDLE_STREAMLINE, middle_kind == 'edges')
-    call r%get('threads', config%threads, status)
     call r%get_list('sweep_weights', config%sweep_weights, max_weights, status)
   end subroutine read_water_identification_config
 end module io_water_identification_config

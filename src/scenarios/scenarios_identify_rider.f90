@@ -24,7 +24,9 @@ module scenarios_identify_rider
   use io_rider_config, only: require_coulomb_rider
   use io_rider_identification_config, only: rider_identification_config_t, read_rider_identification_config
   use io_hdf5, only: result_file_t, run_outcome, run_message
-  use io_identification_results, only: write_identification_segments
+  use io_identification_results, only: identification_words_t, write_identification_segments, &
+    write_identification_cost, write_identification_runs, summarise_identification_cost, &
+    summarise_identification_runs
   use io_summary, only: summary_t
   use io_input_declarations, only: declared_unit
   use io_xdmf, only: attach_surface_view
@@ -39,6 +41,7 @@ module scenarios_identify_rider
 
   character(len=*), parameter :: identify_rider_groups(13) = [character(len=14) :: 'run', 'solver', &
     'water_solver', 'surface', 'water', 'rider', 'identify', geometry_groups]
+
 
 contains
 
@@ -183,20 +186,13 @@ contains
                            'standard error of mu_D, s^2 (J^T J)^-1 at the optimum (0: at a bound)', status)
     if (config%twin) call file%write_scalar(g//'twin_mu', config%twin_mu, '1', &
       'the mu_D the twin measurements were simulated with', status)
-    call file%write_scalar(g//'weight', fit%weight, '1', 'w_RP of (4.43)', status)
-    call file%write_scalar(g//'k2', fit%k2, 'rad s/m', 'k2 of (4.43)', status)
-    call file%write_scalar(g//'cost', fit%cost, 'rad^2', 'F2 (4.43) at the optimum', status)
-    call file%write_scalar(g//'position_part', fit%position_part, 'rad^2', 'its position part', status)
-    call file%write_scalar(g//'speed_part', fit%speed_part, 'rad^2', 'its speed part', status)
+    call write_identification_cost(file, g, fit, fit%k2, words(), status)
     call file%write_vector(g//'contact_part', fit%contact_part, 'rad^2', &
                            'the position part of each contact: pelvis, heels, back', status)
     call file%write_vector(g//'rmse_angle', fit%rmse_angle, 'rad', 'RMSE of each contact''s angle', status)
     call file%write_vector(g//'max_angle_error', fit%max_angle, 'rad', 'largest |error| of each contact''s angle', &
                            status)
-    call file%write_scalar(g//'rmse_speed', fit%rmse_speed, 'm/s', 'RMSE of the segment speeds', status)
-    call file%write_count(g//'evaluations', fit%evaluations, '1', 'rides run by the fit', status)
-    call file%write_count(g//'rejected', fit%rejected, '1', 'rides that ended early (rejected steps)', status)
-    call file%write_scalar(g//'cpu_time', cpu, 's', 'process CPU time of the fit', status)
+    call write_identification_runs(file, g, fit, cpu, words(), status)
     call file%write_vector(g//'contact_number', [(real(k, wp), k=1, N_CONTACTS)], '1', &
                            '1 pelvis, 2 heels, 3 back; dimension scale', status)
     call file%make_scale(g//'contact_number', status)
@@ -256,15 +252,11 @@ contains
     call summary%add('mu', 'mu_D', fit%mu, declared_unit('sweep', 'mu'))
     call summary%add('standard_error', 'standard error', fit%standard_error, '1')
     if (fit%at_bound) call summary%add_text('at_bound', 'at a bound', 'yes: mu_D lies on lower or upper')
-    call summary%add('cost', 'cost F2 (4.43)', fit%cost, 'rad^2')
-    call summary%add('position_part', 'position part', fit%position_part, 'rad^2')
-    call summary%add('speed_part', 'speed part', fit%speed_part, 'rad^2')
+    call summarise_identification_cost(summary, fit, words())
     do k = 1, N_CONTACTS
       call summary%add('rmse_'//trim(contact_names(k)), 'RMSE '//trim(contact_names(k)), fit%rmse_angle(k), 'rad')
     end do
-    call summary%add('rmse_speed', 'RMSE speed', fit%rmse_speed, 'm/s')
-    call summary%add_count('evaluations', 'rides', fit%evaluations, 'rides')
-    call summary%add('cpu_time', 'CPU time', cpu, 's')
+    call summarise_identification_runs(summary, fit, cpu, words())
     if (n > 0) then
       allocate (table(5, n))
       do k = 1, n
@@ -301,4 +293,12 @@ contains
     end if
     call close_report(summary, run, path, complete, message, status)
   end subroutine report
+
+  !> How the results name the fit's pieces (io_identification_results).
+  pure function words() result(w)
+    type(identification_words_t) :: w
+    w = identification_words_t(weight='w_RP', k='k2', cost='F2', &
+      equation='(4.43)', runs_note='rides run by the fit', rejected_note='rides that ended early (rejected steps)', &
+      runs_label='rides', runs_unit='rides')
+  end function words
 end module scenarios_identify_rider

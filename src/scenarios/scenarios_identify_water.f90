@@ -21,7 +21,9 @@ module scenarios_identify_water
   use io_geometry_config, only: geometry_groups
   use io_water_identification_config, only: water_identification_config_t, read_water_identification_config
   use io_hdf5, only: result_file_t, run_outcome, run_message
-  use io_identification_results, only: write_identification_segments
+  use io_identification_results, only: identification_words_t, write_identification_segments, &
+    write_identification_cost, write_identification_runs, summarise_identification_cost, &
+    summarise_identification_runs
   use io_summary, only: summary_t
   use io_input_declarations, only: declared_unit
   use io_xdmf, only: attach_surface_view
@@ -33,6 +35,7 @@ module scenarios_identify_water
 
   character(len=*), parameter :: identify_water_groups(12) = [character(len=14) :: 'run', 'solver', 'surface', &
     'channel', 'water', 'identify', geometry_groups]
+
 
 contains
 
@@ -141,16 +144,9 @@ contains
     call file%make_scale(g//'parameter_number', status)
     call file%attach_scale(g//'parameter_number', g, status)
     call file%attach_scale(g//'parameter_number', g, status, axis=1)   ! the correlation's columns
-    call file%write_scalar(g//'weight', fit%weight, '1', 'w of (4.34)', status)
-    call file%write_scalar(g//'k1', fit%k1, 'rad s/m', 'k1 of (4.34)', status)
-    call file%write_scalar(g//'cost', fit%cost, 'rad^2', 'F1 (4.34) at the optimum', status)
-    call file%write_scalar(g//'position_part', fit%position_part, 'rad^2', 'its position part', status)
-    call file%write_scalar(g//'speed_part', fit%speed_part, 'rad^2', 'its speed part', status)
+    call write_identification_cost(file, g, fit, fit%k1, words(), status)
     call file%write_scalar(g//'rmse_position', fit%rmse_position, 'rad', 'RMSE of the middle angles', status)
-    call file%write_scalar(g//'rmse_speed', fit%rmse_speed, 'm/s', 'RMSE of the segment speeds', status)
-    call file%write_count(g//'evaluations', fit%evaluations, '1', 'water runs of the fit', status)
-    call file%write_count(g//'rejected', fit%rejected, '1', 'water runs that failed (rejected steps)', status)
-    call file%write_scalar(g//'cpu_time', cpu, 's', 'process CPU time of the fit', status)
+    call write_identification_runs(file, g, fit, cpu, words(), status)
     if (size(setup%data%section_v) > 0) then
       call file%write_vector(g//'sections/arc_length', setup%data%section_arc_length, 'm', &
                              'centerline arc length of each section; dimension scale', status)
@@ -215,13 +211,9 @@ contains
     call summary%add('correlation_12', 'correlation f1, f2', fit%correlation(1, 2), '1')
     call summary%add('correlation_13', 'correlation f1, f3', fit%correlation(1, 3), '1')
     call summary%add('correlation_23', 'correlation f2, f3', fit%correlation(2, 3), '1')
-    call summary%add('cost', 'cost F1 (4.34)', fit%cost, 'rad^2')
-    call summary%add('position_part', 'position part', fit%position_part, 'rad^2')
-    call summary%add('speed_part', 'speed part', fit%speed_part, 'rad^2')
+    call summarise_identification_cost(summary, fit, words())
     call summary%add('rmse_position', 'RMSE middle angle', fit%rmse_position, 'rad')
-    call summary%add('rmse_speed', 'RMSE speed', fit%rmse_speed, 'm/s')
-    call summary%add_count('evaluations', 'water runs', fit%evaluations, 'runs')
-    call summary%add('cpu_time', 'CPU time', cpu, 's')
+    call summarise_identification_runs(summary, fit, cpu, words())
     if (n > 0) then
       allocate (table(2, n))
       table(1, :) = setup%data%section_arc_length
@@ -235,4 +227,12 @@ contains
     end if
     call close_report(summary, run, path, complete, message, status)
   end subroutine report
+
+  !> How the results name the fit's pieces (io_identification_results).
+  pure function words() result(w)
+    type(identification_words_t) :: w
+    w = identification_words_t(weight='w', k='k1', cost='F1', &
+      equation='(4.34)', runs_note='water runs of the fit', rejected_note='water runs that failed (rejected steps)', &
+      runs_label='water runs', runs_unit='runs')
+  end function words
 end module scenarios_identify_water
