@@ -45,6 +45,14 @@ module scenarios_identify_rider
 
 contains
 
+  !> How the results name the fit's pieces (io_identification_results).
+  pure function words() result(w)
+    type(identification_words_t) :: w
+    w = identification_words_t(weight='w_RP', k='k2', cost='F2', &
+      equation='(4.43)', runs_note='rides run by the fit', rejected_note='rides that ended early (rejected steps)', &
+      runs_label='rides', runs_unit='rides')
+  end function words
+
   subroutine run_identify_rider(input, run, status)
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
@@ -293,12 +301,4 @@ contains
     end if
     call close_report(summary, run, path, complete, message, status)
   end subroutine report
-
-  !> How the results name the fit's pieces (io_identification_results).
-  pure function words() result(w)
-    type(identification_words_t) :: w
-    w = identification_words_t(weight='w_RP', k='k2', cost='F2', &
-      equation='(4.43)', runs_note='rides run by the fit', rejected_note='rides that ended early (rejected steps)', &
-      runs_label='rides', runs_unit='rides')
-  end function words
 end module scenarios_identify_rider

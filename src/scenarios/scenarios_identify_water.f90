@@ -39,6 +39,14 @@ module scenarios_identify_water
 
 contains
 
+  !> How the results name the fit's pieces (io_identification_results).
+  pure function words() result(w)
+    type(identification_words_t) :: w
+    w = identification_words_t(weight='w', k='k1', cost='F1', &
+      equation='(4.34)', runs_note='water runs of the fit', rejected_note='water runs that failed (rejected steps)', &
+      runs_label='water runs', runs_unit='runs')
+  end function words
+
   subroutine run_identify_water(input, run, status)
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
@@ -227,12 +235,4 @@ contains
     end if
     call close_report(summary, run, path, complete, message, status)
   end subroutine report
-
-  !> How the results name the fit's pieces (io_identification_results).
-  pure function words() result(w)
-    type(identification_words_t) :: w
-    w = identification_words_t(weight='w', k='k1', cost='F1', &
-      equation='(4.34)', runs_note='water runs of the fit', rejected_note='water runs that failed (rejected steps)', &
-      runs_label='water runs', runs_unit='runs')
-  end function words
 end module scenarios_identify_water
