@@ -74,8 +74,8 @@ contains
     entry = largest_curve_entry(s, f3, streamline_mass)
     text = ''
     if (1 - entry%speed_kept <= curve_entry_warning_loss) return
-    text = 'the centreline''s curvature rises by '//format_with(entry%rise, 'f0.3')//' 1/m from arc length '// &
-           format_with(entry%from, 'f0.2')//' to '//format_with(entry%to, 'f0.2')//' m: the curve-entry term '// &
+    text = 'the centreline''s curvature rises by '//fixed(entry%rise, 'f0.3')//' 1/m from arc length '// &
+           fixed(entry%from, 'f0.2')//' to '//fixed(entry%to, 'f0.2')//' m: the curve-entry term '// &
            'f3 chi_s w^2 of the friction law (4.7) alone takes '//format_integer(nint(100*(1 - entry%speed_kept)))// &
            ' % of the water''s speed there (factor exp(-f3 dchi/m_w)); (4.7) was identified on the curves '// &
            'of a body slide, so the water past this bend is an extrapolation (docs/water.md)'

@@ -56,10 +56,23 @@ def plot_nearly_constant(ax, t, values, unit):
         ax.plot(t, values)
 
 
-def title(result):
-    """The file's title, scenario and how the run ended."""
+def title(result, extra=""):
+    """The file's title, scenario and how the run ended (and `extra`), in
+    lines that fit a figure (wrapped)."""
     text = result.attrs.get("title") or result.scenario
     status = result.status
     if status != "complete":
         text += f" (INCOMPLETE: {result.status_message})"
-    return text
+    return wrapped(text + extra)
+
+
+def wrapped(text, width=130, lines=3):
+    """text in at most `lines` lines of `width` characters, the rest cut with
+    a pointer to where the whole text is (a failure's message can run to
+    hundreds of characters and off the picture)."""
+    import textwrap
+    parts = textwrap.wrap(text, width)
+    if len(parts) > lines:
+        parts = parts[:lines]
+        parts[-1] = parts[-1][:width - 40].rstrip() + " ... (whole text: the file's status_message)"
+    return "\n".join(parts)

@@ -189,7 +189,7 @@ def draw(result, plt, args):
     s = d["s"]
 
     fig = plt.figure(figsize=(15, 14))
-    fig.suptitle(f"{title(result)}: {d['outcome']}", fontsize=9)
+    fig.suptitle(title(result, f": {d['outcome']}"), fontsize=9)
     grid = fig.add_gridspec(3, 2, height_ratios=[1, 1, 1.7])
 
     ax = fig.add_subplot(grid[0, 0])
