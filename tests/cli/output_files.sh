@@ -55,7 +55,7 @@ refused() {
 
 # ---- outputs that would overwrite a file the run reads (exit 1)
 cd demo_slide || exit 1
-refused geometry 1 slide.nml "point_mass.nml:14: &surface: geometry_file" \
+refused geometry 1 slide.nml "point_mass.nml:17: &surface: geometry_file" \
   'input file "slide.nml" is the file the result file (-o slide.nml) would overwrite' -- \
   -o slide.nml point_mass.nml
 ln -s slide.nml link.nml
