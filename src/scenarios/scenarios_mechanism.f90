@@ -29,25 +29,18 @@ module scenarios_mechanism
   implicit none (type, external)
   private
   public :: run_mechanism, mechanism_driver_options, run_figures_t
+  public :: refuse_start, values_per_record, open_run_file, write_mechanism_run
 
   !> Figures a scenario adds to its mechanism's run (the sled's vehicle,
-  !> scenarios_sled): computed from the run's records once it has run,
-  !> written into the result file before it is finished, and added to the
-  !> summary.
+  !> scenarios_sled, computed by the library's ride): written into the
+  !> result file before it is finished, and added to the summary.
   type, abstract :: run_figures_t
   contains
-    procedure(figures_compute_i), deferred :: compute
     procedure(figures_write_i), deferred :: write
     procedure(figures_summarise_i), deferred :: summarise
   end type run_figures_t
 
   abstract interface
-    subroutine figures_compute_i(self, sys, status)
-      import :: run_figures_t, mechanism_ode_t, status_t
-      class(run_figures_t), intent(inout) :: self
-      class(mechanism_ode_t), intent(inout) :: sys
-      type(status_t), intent(inout) :: status
-    end subroutine figures_compute_i
     subroutine figures_write_i(self, file, status)
       import :: run_figures_t, result_file_t, status_t
       class(run_figures_t), intent(in) :: self
@@ -85,7 +78,7 @@ contains
 
   !> The common run of a multibody scenario from q0, q0'.
   subroutine run_mechanism(scenario, input, run, solver, sys, q0, qd0, q_units, beta_units, status, surface, &
-                           start_variables, shapes, figures)
+                           start_variables, shapes)
     character(len=*), intent(in) :: scenario
     type(input_text_t), intent(in) :: input
     type(run_config_t), intent(in) :: run
@@ -97,35 +90,24 @@ contains
     class(surface_t), intent(in), optional :: surface   ! the surface of the contacts, written as a grid
     character(len=*), intent(in), optional :: start_variables   ! of &<scenario>, named when the start fails
     type(body_shape_t), intent(in), optional :: shapes(:)   ! drawn moving with their bodies in the XDMF view
-    class(run_figures_t), intent(inout), optional :: figures   ! the scenario's own figures of the run
     type(result_file_t) :: file
     type(driver_result_t) :: result
-    type(status_t) :: run_status, write_status
-    real(wp), allocatable :: y0(:), losses(:)
-    logical :: complete
-    character(len=:), allocatable :: message, outcome
+    type(status_t) :: run_status
+    real(wp), allocatable :: y0(:)
+    character(len=:), allocatable :: outcome
     character(len=8), allocatable :: units(:), dependent_units(:)
     integer, allocatable :: open(:, :)
 
     y0 = sys%initial_state(q0, qd0)
     call sys%check_start(y0, status)
     if (.not. status%ok()) then
-      ! the group of the scenario's own name holds its start
-      call prefix_status(status, where_given(input, scenario, '')//': &'//scenario//': '//scenario)
-      if (present(start_variables)) status%message = status%message//'; change the start ('// &
-                                                     start_variables//')'
-      call mark_input_failure(status)
+      call refuse_start(scenario, input, status, start_variables)
       return
     end if
-    ! numbers stored per output time (mechanism_series_t; every element counted as a body)
-    call check_output_count(input, solver, solver%duration, 6 + 3*sys%mechanism%f + 2*sys%mechanism%r + &
-                            18*sys%mechanism%n_elements + 10*size(sys%mechanism%contacts) + &
-                            6*sys%mechanism%n_laws, scenario, status)
+    call check_output_count(input, solver, solver%duration, values_per_record(sys), scenario, status)
     if (.not. status%ok() .or. run%check_only) return
-    call file%create(trim(run%output), status)
+    call open_run_file(scenario, run, solver, file, status)
     if (.not. status%ok()) return
-    call log_info(scenario//': '//format_real(solver%duration)//' s, output every '// &
-                  format_real(solver%output_step)//' s')
     call sys%start_series(nint(solver%duration/solver%output_step) + 2)
     units = q_units
     dependent_units = beta_units
@@ -157,8 +139,70 @@ contains
     case default
       outcome = 'failed: '//run_status%text()
     end select
+    call write_mechanism_run(scenario, input, run, sys, file, result, run_status, outcome, units, dependent_units, &
+                             open, status, surface, shapes)
+  end subroutine run_mechanism
+
+  !> A start the model refuses (check_start): the input's failure, named at
+  !> the scenario's group, which holds the start (`start_variables`).
+  subroutine refuse_start(scenario, input, status, start_variables)
+    character(len=*), intent(in) :: scenario
+    type(input_text_t), intent(in) :: input
+    type(status_t), intent(inout) :: status
+    character(len=*), intent(in), optional :: start_variables
+    call prefix_status(status, where_given(input, scenario, '')//': &'//scenario//': '//scenario)
+    if (present(start_variables)) status%message = status%message//'; change the start ('//start_variables//')'
+    call mark_input_failure(status)
+  end subroutine refuse_start
+
+  !> The numbers stored per output time (mechanism_series_t; every element
+  !> counted as a body), for check_output_count.
+  integer function values_per_record(sys) result(n)
+    class(mechanism_ode_t), intent(in) :: sys
+    n = 6 + 3*sys%mechanism%f + 2*sys%mechanism%r + 18*sys%mechanism%n_elements + 10*size(sys%mechanism%contacts) + &
+        6*sys%mechanism%n_laws
+  end function values_per_record
+
+  !> The result file of a run, opened before it runs (a file that cannot
+  !> be written fails before any work), and the run's first progress line.
+  subroutine open_run_file(scenario, run, solver, file, status)
+    character(len=*), intent(in) :: scenario
+    type(run_config_t), intent(in) :: run
+    type(solver_config_t), intent(in) :: solver
+    type(result_file_t), intent(inout) :: file
+    type(status_t), intent(inout) :: status
+    call file%create(trim(run%output), status)
+    if (.not. status%ok()) return
+    call log_info(scenario//': '//format_real(solver%duration)//' s, output every '// &
+                  format_real(solver%output_step)//' s')
+  end subroutine open_run_file
+
+  !> A run's records (sys%series, the driver's `result`, ended as `outcome`;
+  !> run_status its failure) into the open `file`, with the scenario's own
+  !> figures (the sled's vehicle), the flight's impacts and phases (`open`),
+  !> the surface's grid and the XDMF view; the file finished, the summary
+  !> printed; status the run's or the writing's failure.
+  subroutine write_mechanism_run(scenario, input, run, sys, file, result, run_status, outcome, units, dependent_units, &
+                                 open, status, surface, shapes, figures)
+    character(len=*), intent(in) :: scenario, outcome
+    type(input_text_t), intent(in) :: input
+    type(run_config_t), intent(in) :: run
+    class(mechanism_ode_t), intent(in) :: sys
+    type(result_file_t), intent(inout) :: file
+    type(driver_result_t), intent(in) :: result
+    type(status_t), intent(in) :: run_status
+    character(len=*), intent(in) :: units(:), dependent_units(:)
+    integer, allocatable, intent(in) :: open(:, :)   ! a flight's (drive_flight)
+    type(status_t), intent(inout) :: status
+    class(surface_t), intent(in), optional :: surface
+    type(body_shape_t), intent(in), optional :: shapes(:)
+    class(run_figures_t), intent(in), optional :: figures   ! the scenario's own figures of the run
+    type(status_t) :: write_status
+    real(wp), allocatable :: losses(:)
+    logical :: complete
+    character(len=:), allocatable :: message
+
     losses = impact_losses(sys)
-    if (present(figures) .and. run_status%ok() .and. sys%series%n > 0) call figures%compute(sys, run_status)
     call write_mechanism_series(file, scenario, input, run%title, sys%series, outcome, result%stats, result%cpu, &
                                 units, dependent_units, write_status, losses)
     if (present(figures) .and. run_status%ok()) call figures%write(file, write_status)
@@ -192,7 +236,7 @@ contains
                   figures)
     end select
     if (.not. (run_status%ok() .and. write_status%ok())) status = run_outcome(run_status, write_status)
-  end subroutine run_mechanism
+  end subroutine write_mechanism_run
 
   !> The impacts of a flight (contact_flight), none for any other run.
   function impacts_of(sys) result(impacts)

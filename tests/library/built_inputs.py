@@ -2,13 +2,13 @@
 tests/library/built_through_library.txt (one line each: the test, the
 input). Read by check_library_coverage.py (what counts as built) and by the
 tests themselves (compare_shipped.py, library_without_io.sh for
-library_without_io and library_optimize, shipped_geometries.sh), each of which fails unless its program built and
+library_without_io, library_optimize and library_vehicle, shipped_geometries.sh), each of which fails unless its program built and
 compared exactly the inputs given to it here (`check_built`).
 """
 import os
 
 BUILT = "tests/library/built_through_library.txt"
-TESTS = ("shipped_descriptions", "library_without_io", "library_optimize", "shipped_geometries")
+TESTS = ("shipped_descriptions", "library_without_io", "library_optimize", "library_vehicle", "shipped_geometries")
 
 
 def read_built(path=None):

@@ -9,7 +9,7 @@ without io").
 An input counts as built through the library when
 tests/library/built_through_library.txt gives it to one of the tests that
 build shipped inputs from descriptions written in code (built_inputs.TESTS:
-shipped_descriptions, library_without_io, library_optimize,
+shipped_descriptions, library_without_io, library_optimize, library_vehicle,
 shipped_geometries). Those tests
 read the same file and fail unless their programs build and compare exactly
 the inputs it gives them (library.built_inputs), so a line there is an input

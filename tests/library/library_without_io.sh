@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The shipped inputs run through the library without io by PROGRAM
 # (library_without_io.f90: the water, ride, sweep and identification inputs;
-# library_optimize.f90: the optimisations; descriptions filled in code) give
+# library_optimize.f90: the optimisations; library_vehicle.f90: the vehicles'
+# rides; descriptions filled in code) give
 # the numbers the command's runs of the same inputs give (--summary-json of
 # the fixture cli_every_input, tests/cli/support/every_input.sh: NAME.json
 # per input, and a sweep's NAME.csv, a row per ride).

@@ -1,5 +1,5 @@
 !> The shipped inputs of the contact, point-mass, pendulum, four-bar and sled
-!> scenarios (the sled's vehicles too), built through the library WITHOUT io
+!> scenarios (the sled's vehicles: library_vehicle.f90), built through the library WITHOUT io
 !> (issue 24 point 2; the inputs this program builds are those
 !> tests/library/built_through_library.txt gives it, the ones no test builds
 !> yet are listed in tests/library/not_yet_through_library.txt, both checked
@@ -9,8 +9,7 @@
 !> there are the types' own), built by their layers (build_contact_model,
 !> build_point_mass_model, build_pendulum_model, build_fourbar_model,
 !> build_sled_model; the flights by build_flight, build_bodies or
-!> flight_after_closed; a vehicle by build_vehicle_model or
-!> build_vehicle_flight in the water compute_water gives) and run over
+!> flight_after_closed) and run over
 !> `duration` s with the input's solver settings, as the command runs them
 !> (scenarios_mechanism, scenarios_point_mass, scenarios_contact,
 !> scenarios_sled: the same start checks, driver and options).
@@ -23,9 +22,8 @@
 !> tests/library/compare_shipped.py runs slidesim on each input with
 !> `--set solver%duration=<duration>` and compares.
 !>
-!> Usage: shipped_descriptions DURATION   (a flight and a vehicle run over
-!> their input's own duration and print it, `<input> duration <seconds>`,
-!> first)
+!> Usage: shipped_descriptions DURATION   (a flight runs over its input's
+!> own duration and prints it, `<input> duration <seconds>`, first)
 program shipped_descriptions
   use base_kinds, only: wp
   use base_constants, only: pi
@@ -53,12 +51,7 @@ program shipped_descriptions
   use contact_flight, only: flight_ode_t, build_flight, check_flight_system, carrying_contact, closed_part
   use contact_closing, only: drive_flight, flight_after_closed
   use contact_bodies, only: build_bodies, start_carriers
-  use kinetostatics_impact, only: impact_law_t
-  use water_run, only: water_description_t, water_result_t, compute_water
-  use rider_flight, only: ride_flights_t, highest_drop
-  use rider_vehicle, only: vehicle_t, vehicle_kind_index, build_vehicle_model
-  use rider_vehicle_flight, only: vehicle_flight_ode_t, build_vehicle_flight, drive_vehicle
-  use shipped_slides, only: demo_slide_description => demo_slide, halfpipe_slide, jump_slide, bowl_halfpipe_slide
+  use shipped_slides, only: demo_slide_description => demo_slide
   implicit none (type, external)
 
   !> Runaway guard of the command's multibody and point-mass runs
@@ -81,12 +74,6 @@ program shipped_descriptions
   call sled_demo_slide()
   call sled_incline_coulomb()
   call sled_template()
-  call sled_mat()
-  call sled_ring()
-  call sled_bowl_halfpipe('mat')
-  call sled_bowl_halfpipe('ring')
-  call sled_raft()
-  call sled_mat_jump()
   call point_mass_apex_paraboloid()
   call point_mass_ellipsoid()
   call point_mass_elliptic_cylinder()
@@ -257,108 +244,6 @@ contains
     call run_multibody(name, sys, q0, qd0, method, rtol, atol, 0.01_wp, .false., st)
   end subroutine run_sled
 
-  ! ---------------------------------------------------------------- vehicles
-
-  !> inputs/parts/mat.nml: a mat with one rider (scale 1) down the demo
-  !> slide in the computed water of &water (flow_rate only: the start edges,
-  !> f1-f3, the correction and the table step the defaults; no
-  !> &water_solver: its defaults, rtol 1e-10, atol 1e-10, output every
-  !> 0.01 s, to the slide's end).
-  subroutine sled_mat()
-    type(water_description_t) :: water
-    allocate (water%slide, source=tube_of(demo_slide_description()))
-    water%flow_rate = 0.004_wp
-    water%solver%output_step = 0.01_wp
-    call run_vehicle('inputs/parts/mat.nml', vehicle('mat', 1, 1.0_wp, .true.), vehicle_start(0.5_wp, 2.0_wp), &
-                     water%slide, water)
-  end subroutine sled_mat
-
-  !> inputs/parts/ring.nml: a double ring with two riders down the half-pipe
-  !> slide in its water (&water and &water_solver as the half-pipe ride's).
-  subroutine sled_ring()
-    type(water_description_t) :: water
-    allocate (water%slide, source=tube_of(halfpipe_slide()))
-    water%flow_rate = 0.004_wp
-    water%start%v_left = 1.6707963267948966_wp
-    water%start%v_right = 1.4707963267948966_wp
-    water%f1 = 0.0274748_wp
-    water%f2 = 0.138285_wp
-    water%f3 = 0.979822_wp
-    water%table_step = 0.1_wp
-    water%solver%ode%method = ODE_ADAMS
-    water%solver%ode%rtol = 1e-10_wp
-    water%solver%ode%atol = 1e-9_wp
-    water%solver%output_step = 0.005_wp
-    call run_vehicle('inputs/parts/ring.nml', vehicle('double_ring', 2, 1.0_wp, .true.), &
-                     vehicle_start(0.5_wp, 1.0_wp), water%slide, water)
-  end subroutine sled_ring
-
-  !> inputs/parts/bowl_halfpipe_mat.nml, bowl_halfpipe_ring.nml: a mat or
-  !> a ring with one rider down the half-pipe and bowl slide (docs/
-  !> geometry.md's worked example) in its water, started 1 m down at 1 m/s
-  !> of u (the horizontal length).
-  subroutine sled_bowl_halfpipe(kind)
-    character(len=*), intent(in) :: kind
-    type(water_description_t) :: water
-    allocate (water%slide, source=tube_of(bowl_halfpipe_slide()))
-    water%flow_rate = 0.004_wp
-    water%start%v_left = 1.7207963267948966_wp
-    water%start%v_right = 1.4207963267948966_wp
-    water%f1 = 0.0274748_wp
-    water%f2 = 0.138285_wp
-    water%f3 = 0.979822_wp
-    water%table_step = 0.1_wp
-    water%solver%ode%method = ODE_ADAMS
-    water%solver%ode%rtol = 1e-10_wp
-    water%solver%ode%atol = 1e-9_wp
-    water%solver%output_step = 0.005_wp
-    call run_vehicle('inputs/parts/bowl_halfpipe_'//kind//'.nml', vehicle(kind, 1, 1.0_wp, .true.), &
-                     vehicle_start(1.0_wp, 1.0_wp), water%slide, water)
-  end subroutine sled_bowl_halfpipe
-
-  !> inputs/parts/raft.nml: a raft with four children (scale 0.7) down the
-  !> half-pipe slide, dry.
-  subroutine sled_raft()
-    call run_vehicle('inputs/parts/raft.nml', vehicle('raft', 4, 0.7_wp, .false.), vehicle_start(0.5_wp, 1.0_wp), &
-                     tube_of(halfpipe_slide()))
-  end subroutine sled_raft
-
-  !> inputs/parts/mat_jump.nml: the mat, dry, over the jump slide from 1 m
-  !> at 2 m/s; it may fly and lands plastically (restitution 0) with
-  !> Coulomb's mu the friction's (the reader's default for landing_mu).
-  subroutine sled_mat_jump()
-    type(vehicle_t) :: v
-    v = vehicle('mat', 1, 1.0_wp, .false.)
-    v%may_fly = .true.
-    v%landing = impact_law_t(restitution=0.0_wp, mu=0.0724419_wp)
-    call run_vehicle('inputs/parts/mat_jump.nml', v, vehicle_start(1.0_wp, 2.0_wp), tube_of(jump_slide()))
-  end subroutine sled_mat_jump
-
-  !> A vehicle of &sled: its kind's name, riders and scale, in the water or dry.
-  function vehicle(kind, riders, scale, in_water) result(v)
-    character(len=*), intent(in) :: kind
-    integer, intent(in) :: riders
-    real(wp), intent(in) :: scale
-    logical, intent(in) :: in_water
-    type(vehicle_t) :: v
-    v%kind = vehicle_kind_index(kind)
-    v%riders = riders
-    v%scale = scale
-    v%in_water = in_water
-  end function vehicle
-
-  !> The &sled of every shipped vehicle: Coulomb mu_D (thesis table 4.8) at
-  !> both contacts, the start on the bottom (v0 = pi/2, phi0 = 0) at u0
-  !> with the rate du0 (the bar's length, mass and inertia: the vehicle's
-  !> own, not read).
-  function vehicle_start(u0, du0) result(d)
-    real(wp), intent(in) :: u0, du0
-    type(sled_description_t) :: d
-    d%params%friction = [law_spec('coulomb', 'mu', 0.0724419_wp)]
-    d%q0 = [u0, 1.5707963267948966_wp, 0.0_wp]
-    d%qd0 = [du0, 0.0_wp, 0.0_wp]
-  end function vehicle_start
-
   !> The tube of a slide description.
   function tube_of(d) result(tube)
     type(geometry_description_t), intent(in) :: d
@@ -367,43 +252,6 @@ contains
     call build_slide(d%slide, tube, st)
     call expect_ok(st, 'a slide')
   end function tube_of
-
-  !> As scenarios_sled runs a vehicle: the water first (given `water`),
-  !> the vehicle built on `surface` (with the water's drag at its contacts;
-  !> a vehicle that may fly with its four builds), driven over the input's
-  !> &solver duration, 30 s (each ends at the slide's end) with Adams at
-  !> rtol 1e-10, atol 1e-9, output every 0.01 s.
-  subroutine run_vehicle(name, v, d, surface, water)
-    character(len=*), intent(in) :: name
-    type(vehicle_t), intent(in) :: v
-    type(sled_description_t), intent(in) :: d
-    class(surface_t), intent(in) :: surface
-    type(water_description_t), intent(in), optional :: water
-    type(water_result_t), target :: computed
-    type(mechanism_ode_t), target :: sys
-    type(vehicle_flight_ode_t), target :: flying
-    real(wp), allocatable :: q0(:), qd0(:)
-    type(status_t) :: st
-    if (present(water)) then
-      call compute_water(water, computed, st)
-      call expect_ok(st, name//': the water')
-      if (.not. st%ok()) return
-      if (v%may_fly) then
-        call build_vehicle_flight(v, d, surface, flying, q0, qd0, st, water=computed%field)
-      else
-        call build_vehicle_model(v, d, surface, sys%mechanism, q0, qd0, st, water=computed%field)
-      end if
-    else if (v%may_fly) then
-      call build_vehicle_flight(v, d, surface, flying, q0, qd0, st)
-    else
-      call build_vehicle_model(v, d, surface, sys%mechanism, q0, qd0, st)
-    end if
-    if (v%may_fly) then
-      call run_multibody(name, flying, q0, qd0, ODE_ADAMS, 1e-10_wp, 1e-9_wp, 0.01_wp, .false., st, 30.0_wp)
-    else
-      call run_multibody(name, sys, q0, qd0, ODE_ADAMS, 1e-10_wp, 1e-9_wp, 0.01_wp, .false., st, 30.0_wp)
-    end if
-  end subroutine run_vehicle
 
   !> &surface kind = 'plane' through the origin, point_b, point_c = (0, 1, 0).
   function incline(bx, bz) result(surface)
@@ -1017,17 +865,14 @@ contains
 
   !> As scenarios_mechanism's run_mechanism: the start checked, the series
   !> started, the driver run; then the summary's numbers.
-  subroutine run_multibody(name, sys, q0, qd0, method, rtol, atol, output_step, contact_scenario, status, seconds)
+  subroutine run_multibody(name, sys, q0, qd0, method, rtol, atol, output_step, contact_scenario, status)
     character(len=*), intent(in) :: name
-    class(mechanism_ode_t), intent(inout), target :: sys   ! or a vehicle that may fly
+    class(mechanism_ode_t), intent(inout), target :: sys
     real(wp), intent(in) :: q0(:), qd0(:)
     integer, intent(in) :: method
     real(wp), intent(in) :: rtol, atol, output_step
     logical, intent(in) :: contact_scenario
     type(status_t), intent(inout) :: status
-    !> the input's own duration (s): the vehicles run to the slide's end
-    !> (printed as `<input> duration <seconds>`); else the program's
-    real(wp), intent(in), optional :: seconds
     type(driver_options_t) :: options
     real(wp) :: t_end
     type(driver_result_t) :: result
@@ -1045,24 +890,13 @@ contains
     if (contact_scenario .and. method == ODE_ADAMS) options%ode%convergence_coefficient = &
       contact_convergence_coefficient
     t_end = duration
-    if (present(seconds)) then
-      t_end = seconds
-      call put(name, 'duration', seconds)
-    end if
     options%t_end = t_end
     options%output_step = output_step
     options%min_mean_step = min_mean_step
     options%progress_seconds = 0
     call sys%start_series(nint(t_end/output_step) + 2)
-    select type (sys)
-    class is (vehicle_flight_ode_t)
-      call drive_vehicle(sys, y0, options, result, status)
-      call expect_ok(status, name//': ran')
-      call put_flights(name, sys%flights)
-    class default
-      call drive(sys, y0, options, result, status)
-      call expect_ok(status, name//': ran')
-    end select
+    call drive(sys, y0, options, result, status)
+    call expect_ok(status, name//': ran')
     associate (s => sys%series, n => sys%series%n)
       call put(name, 'simulated_time', s%time(n))
       if (contact_scenario) then
@@ -1080,42 +914,6 @@ contains
     call put_count(name, 'steps', int(result%stats%steps))
     call put_count(name, 'rhs_evaluations', int(result%stats%rhs_evaluations))
   end subroutine run_multibody
-
-  !> A vehicle's flights as its summary gives them (scenarios_ride_flights'
-  !> add_flights; a vehicle has no highest point).
-  subroutine put_flights(name, f)
-    character(len=*), intent(in) :: name
-    type(ride_flights_t), intent(in) :: f
-    real(wp) :: drop, drop_at
-    integer :: k
-    character(len=:), allocatable :: row
-    call put_count(name, 'flights', f%flights)
-    call put(name, 'airtime', f%airtime)
-    call put(name, 'airtime_longest', f%longest)
-    call put(name, 'airtime_longest_arc_length', f%longest_arc_length)
-    call put_count(name, 'whole_flights', f%whole_flights)
-    call put(name, 'whole_airtime', f%whole_airtime)
-    call put(name, 'whole_airtime_longest', f%whole_longest)
-    call put(name, 'whole_airtime_longest_arc_length', f%whole_longest_arc_length)
-    call highest_drop(f, drop, drop_at)
-    call put_count(name, 'landings', f%landings)
-    call put(name, 'drop_height_max', drop)
-    call put(name, 'drop_height_max_arc_length', drop_at)
-    do k = 1, f%landings
-      row = 'landing.'//format_integer(k)//'.'
-      associate (l => f%landing(k))
-        call put(name, row//'time', l%time)
-        call put(name, row//'arc_length', l%arc_length)
-        call put(name, row//'normal_speed', l%normal_speed)
-        call put(name, row//'impulse', l%impulse)
-        call put(name, row//'normal_impulse', l%normal_impulse)
-        call put(name, row//'drop_height', l%drop_height)
-        call put(name, row//'energy_lost', l%energy_lost)
-        call put(name, row//'closed', merge(1.0_wp, 0.0_wp, l%closed))
-        call put_count(name, row//'contact', l%contact)
-      end associate
-    end do
-  end subroutine put_flights
 
   subroutine put(name, key, value)
     character(len=*), intent(in) :: name, key
