@@ -189,12 +189,14 @@ contains
 
   !> The ride from its start over d%driver%t_end (built first unless
   !> build_vehicle_ride was called), then its figures and the limits'
-  !> verdicts. A failure on the way keeps the records up to there
-  !> (FAILED_RUN).
+  !> verdicts. A failure on the way keeps the records up to there and
+  !> their figures (FAILED_RUN; status the run's failure, the figures of
+  !> the records as far as they could be computed, exit_speed not judged).
   subroutine run_vehicle_ride(d, ride)
     type(vehicle_ride_description_t), intent(in) :: d
     type(vehicle_ride_t), intent(inout), target :: ride
     class(mechanism_ode_t), pointer :: sys
+    type(status_t) :: run_status
     if (.not. ride%built) call build_vehicle_ride(d, ride)
     if (.not. ride%built) return
     sys => ride%model()
@@ -215,7 +217,13 @@ contains
     case default
       ride%outcome = 'failed: '//ride%status%text()
     end select
-    if (ride%status%ok() .and. sys%series%n > 0) call ride_figures(d, ride)
+    if (sys%series%n > 0) then
+      ! a failed run's figures too: its records are kept; its failure comes first
+      run_status = ride%status
+      ride%status = status_t()
+      call ride_figures(d, ride)
+      if (.not. run_status%ok()) ride%status = run_status
+    end if
     if (.not. ride%status%ok()) ride%failed = FAILED_RUN
   end subroutine run_vehicle_ride
 
@@ -316,11 +324,16 @@ contains
     real(wp), allocatable :: values(:)
     class(mechanism_ode_t), pointer :: sys
     integer :: k, i, n
+    sys => ride%model()
+    n = sys%series%n
     if (ride%flies) then
-      ! computed stretch by stretch, each with its build (drive_vehicle)
+      ! computed stretch by stretch, each with its build (drive_vehicle);
+      ! a failed stretch's only where they could be
       associate (flying => ride%flying)
-        ride%speed = flying%speed
-        ride%felt = flying%felt
+        if (size(flying%speed) == n) then
+          ride%speed = flying%speed
+          ride%felt = flying%felt
+        end if
         ride%flights = flying%flights
         ride%open = flying%open_record
         ride%solve_switches = flying%solve_switches
@@ -328,11 +341,11 @@ contains
     else
       call vehicle_ride_figures(ride%closed%mechanism, ride%closed%work, ride%closed%series, ride%speed, ride%felt, &
                                 ride%status)
+      ! not at every record: none (a failed run's file keeps its records without them)
+      if (.not. ride%status%ok()) deallocate (ride%speed, ride%felt)
     end if
-    sys => ride%model()
-    n = sys%series%n
     ride%time = sys%series%time(:n)
-    if (.not. ride%status%ok()) return
+    if (.not. (ride%status%ok() .and. allocated(ride%speed))) return
     select type (slide => d%surface)
     class is (slide_surface_t)
       call contacts_on_the_wall(slide, ride)
@@ -405,6 +418,7 @@ contains
         end do
         if (.not. ride%status%ok()) then
           call prefix_status(ride%status, 'the contacts'' wall positions at t = '//format_real(s%time(i))//' s')
+          deallocate (ride%wall_angle, ride%wall_distance)   ! not at every record: none
           return
         end if
       end do

@@ -67,6 +67,8 @@ module rider_vehicle_flight
   private
   public :: vehicle_flight_ode_t, build_vehicle_flight, drive_vehicle, vehicle_contact_names, vehicle_units
   public :: solve_columns, SOLVE_PITCH, SOLVE_YAW, solve_ratio
+  !> (its contract tested alone: test_vehicle_flight take_off_at_press_or_open)
+  public :: press_or_open
 
   integer, parameter :: SWITCH_NONE = 0, SWITCH_TAKE_OFF = 1, SWITCH_LANDING = 2, SWITCH_SOLVE = 3
   !> what the closed front's closure solves front_z for (the header)
@@ -364,6 +366,7 @@ contains
     real(wp) :: lost
     logical :: first, next
     type(status_t) :: records   ! of the stretch's records in the full layout
+    type(status_t) :: figures   ! of the stretch's ride figures
     stretch_options = options
     if (.not. options%output_origin < huge(1.0_wp)) stretch_options%output_origin = options%t_start
     allocate (sys%open_record(0), sys%speed(0), sys%felt(3, 0), sys%losses(0))
@@ -381,15 +384,15 @@ contains
       sys%history = sys%history//sys%outcome
       ! the stretch's figures with its own build (its records are its
       ! layout), then its records in the full layout (also those of a
-      ! stretch that failed: they are written)
+      ! stretch that failed: they are written, its figures with them)
       if (sys%series%n > 0) then
-        if (status%ok()) then
-          call vehicle_ride_figures(sys%mechanism, sys%work, sys%series, speed, felt, status)
-          if (status%ok()) then
-            sys%speed = [sys%speed, speed]
-            sys%felt = reshape([sys%felt, felt], [3, size(sys%speed)])
-          end if
+        figures = status_t()
+        call vehicle_ride_figures(sys%mechanism, sys%work, sys%series, speed, felt, figures)
+        if (figures%ok()) then
+          sys%speed = [sys%speed, speed]
+          sys%felt = reshape([sys%felt, felt], [3, size(sys%speed)])
         end if
+        if (status%ok() .and. .not. figures%ok()) status = figures
         records = status_t()
         call full_records(sys, records)
         if (status%ok() .and. .not. records%ok()) status = records
@@ -523,7 +526,7 @@ contains
   !> After a switch at t to the state y: every closed contact must press;
   !> one that would pull (its normal force not > 0: a landing's impulse, a
   !> take-off changing what holds the vehicle) opens too, from the slide
-  !> (its gap watched from 0).
+  !> (its gap watched from 0), taking off at t.
   subroutine press_or_open(self, t, y, status)
     type(vehicle_flight_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t
@@ -541,7 +544,10 @@ contains
     end do
     if (after == self%open_mask) return
     do k = 1, 2
-      if (btest(after, k - 1) .and. .not. btest(self%open_mask, k - 1)) self%opened(k) = .false.
+      if (btest(after, k - 1) .and. .not. btest(self%open_mask, k - 1)) then
+        self%opened(k) = .false.
+        self%take_off_time(k) = t
+      end if
     end do
     self%history = self%history//': the contacts then open ('//trim(open_words(after))//')'
     full = full_state(self, y)

@@ -205,7 +205,8 @@ contains
     losses = impact_losses(sys)
     call write_mechanism_series(file, scenario, input, run%title, sys%series, outcome, result%stats, result%cpu, &
                                 units, dependent_units, write_status, losses)
-    if (present(figures) .and. run_status%ok()) call figures%write(file, write_status)
+    ! a failed run's too: what of them its records gave (the sled's vehicle)
+    if (present(figures)) call figures%write(file, write_status)
     select type (sys)
     class is (flight_ode_t)
       call write_impacts(file, sys, write_status)
@@ -497,7 +498,7 @@ contains
                        (s%kinetic(n) + s%potential(n) - e0 - sum(s%law_work(:, n)) + losses(n))/scale, '1', note)
     end if
     if (s%r > 0) call summary%add('closure_residual_max', 'closure residual max', maxval(s%closure(:n)), 'm')
-    if (present(figures) .and. complete) call figures%summarise(summary)
+    if (present(figures)) call figures%summarise(summary)
     if (chart_changes > 0) call summary%add_count('chart_changes', 'chart changes', chart_changes, &
                                                   '(coordinates re-based, the motion continuous)')
     call add_run_cost(summary, stats, cpu)

@@ -64,7 +64,7 @@ program test_vehicle_flight
   use kinetostatics_impact, only: impact_law_t, rigid_body_delassus
   use rider_vehicle, only: vehicle_t, vehicle_body_t, vehicle_body, VEHICLE_RING, VEHICLE_MAT
   use rider_vehicle_flight, only: vehicle_flight_ode_t, build_vehicle_flight, drive_vehicle, solve_columns, &
-    SOLVE_PITCH, SOLVE_YAW
+    SOLVE_PITCH, SOLVE_YAW, press_or_open
   implicit none (type, external)
 
   real(wp), parameter :: g = 9.80665_wp
@@ -75,6 +75,7 @@ program test_vehicle_flight
   call columns()
   call solved()
   call free()
+  call take_off_at_press_or_open()
   call finish_tests('test_vehicle_flight')
 
 contains
@@ -474,6 +475,56 @@ contains
       call check(worst_e <= 1e-9_wp, 'free: the energy conserved')
     end associate
   end subroutine free
+
+  !> press_or_open's contract: a closed contact that would pull after a
+  !> switch opens, taking off at the switch's time (its take_off_time: the
+  !> landing's cause names the time since, the quick landings count from
+  !> it). A ring on a level plane on its rear contact alone (the front open,
+  !> mask 2), pitched 0.5 rad nose up and turning nose up at 20 rad/s: its
+  !> centre of mass circles the rear contact, whose normal force would be
+  !> m (g - w^2 r sin(pitch) ...) < 0, so the rear opens too (mask 3) at
+  !> t = 0.7 s; on 8f2e33d its take_off_time stayed 0 (the time of its last
+  !> switch: none), so a landing of it named 0.7 s more than its flight.
+  subroutine take_off_at_press_or_open()
+    type(vehicle_t) :: v
+    type(sled_description_t) :: d
+    class(surface_t), allocatable :: plane
+    type(vehicle_flight_ode_t), target :: sys
+    type(status_t) :: st
+    real(wp), allocatable :: q0(:), qd0(:), y(:), q(:), qd(:)
+    ! the full layout u, v, phi, pitch, rear_lift, roll and its rates
+    real(wp), parameter :: full_q(6) = [0.0_wp, 0.0_wp, 0.0_wp, -0.5_wp, 0.0_wp, 0.0_wp], &
+                           full_qd(6) = [0.0_wp, 0.0_wp, 0.0_wp, -20.0_wp, 0.0_wp, 0.0_wp]
+    integer :: k, j
+    plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], st)
+    v = vehicle_t(VEHICLE_RING, 1, 1.0_wp)
+    v%may_fly = .true.
+    v%landing = impact_law_t(restitution=0, mu=0)
+    d%q0 = 0
+    d%qd0 = 0
+    call build_vehicle_flight(v, d, plane, sys, q0, qd0, st)
+    call check(st%ok(), 'take-off at press_or_open: the builds: '//st%text())
+    if (.not. st%ok()) return
+    ! on the rear alone: the build of mask 2 (the front open), the rear's lift 0
+    sys%mechanism = sys%builds(2)
+    call sys%mechanism%prepare_workspace(sys%work)
+    sys%open_mask = 2
+    sys%opened = [.false., .true.]
+    sys%take_off_time = [0.0_wp, 0.3_wp]
+    allocate (q(sys%mechanism%f), qd(sys%mechanism%f))
+    do k = 1, sys%mechanism%f
+      j = findloc(sys%full, sys%mechanism%q(k), dim=1)
+      q(k) = full_q(j)
+      qd(k) = full_qd(j)
+    end do
+    y = sys%initial_state(q, qd)
+    call press_or_open(sys, 0.7_wp, y, st)
+    call check(st%ok(), 'take-off at press_or_open: runs: '//st%text())
+    call check(sys%open_mask == 3, 'take-off at press_or_open: the rear opens too')
+    call check(sys%take_off_time(1) == 0.7_wp, 'take-off at press_or_open: the rear takes off at the switch''s time')
+    call check(sys%take_off_time(2) == 0.3_wp, 'take-off at press_or_open: the front''s take-off stays')
+    call check(.not. sys%opened(1), 'take-off at press_or_open: the rear''s gap watched from 0')
+  end subroutine take_off_at_press_or_open
 
   !> The vehicle's centre of mass at record i of s (the bar frame's pose;
   !> com: its place in the bar frame).
