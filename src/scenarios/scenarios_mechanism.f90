@@ -229,7 +229,7 @@ contains
       else
         call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
                     message, outcome, sys%chart_changes, sys%mechanism, write_status, sys%impacts, losses, &
-                    carried_frames=carried_frames(sys, open))
+                    carried_bodies=carried_bodies(sys, open))
       end if
     class default
       call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
@@ -419,7 +419,7 @@ contains
   !> The printed summary (angles in degrees) and, with --summary-json, the
   !> same numbers as JSON (SI).
   subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, outcome, chart_changes, m, &
-                    status, impacts, losses, figures, carried_frames)
+                    status, impacts, losses, figures, carried_bodies)
     character(len=*), intent(in) :: scenario, path, message, outcome
     integer, intent(in) :: chart_changes   ! coordinates re-based on a new chart (docs/multibody.md, events)
     type(mechanism_series_t), intent(in) :: s
@@ -433,7 +433,7 @@ contains
     type(impact_record_t), intent(in) :: impacts(:)
     real(wp), intent(in) :: losses(:)   ! J, the impacts' energy lost up to each record
     class(run_figures_t), intent(in), optional :: figures
-    integer, intent(in), optional :: carried_frames(:)   ! each contact's body's frame where it closed (else 0)
+    character(len=*), intent(in), optional :: carried_bodies(:)   ! each contact's body_2 where it closed (else '')
     type(summary_t) :: summary
     real(wp) :: e0, scale
     integer :: n, k, i
@@ -449,7 +449,7 @@ contains
       ! bodies and contacts in engineering terms (docs/contact.md, Outputs)
       if (.not. complete) call summary%add_text('failure', 'stopped because', message)
       call add_body_terms(summary, s, m)
-      call add_contact_terms(summary, s, m, carried_frames)
+      call add_contact_terms(summary, s, m, carried_bodies)
       if (size(impacts) > 0) then
         call summary%add_count('impacts', 'impacts', size(impacts), '(landings, /contact/impacts)')
         call summary%add('impact_speed_max', 'impact speed max', maxval(-impacts%normal_speed_before), 'm/s', &
@@ -574,35 +574,39 @@ contains
   !> Per contact: its slip speed, its normal force in N and in weights of
   !> the body it carries (body 2), its friction force. The series' contacts
   !> may be more than the mechanism's (a flight's phases: m is the first's);
-  !> carried_frames gives each contact's body's frame (of m) where the
-  !> contact closed in a later phase.
-  subroutine add_contact_terms(summary, s, m, carried_frames)
+  !> carried_bodies names each contact's body 2 where the contact closed in
+  !> a later phase. Bodies are found by name: the series' frames may be a
+  !> later phase's, m's are the first phase's.
+  subroutine add_contact_terms(summary, s, m, carried_bodies)
     type(summary_t), intent(inout) :: summary
     type(mechanism_series_t), intent(in) :: s
     type(mechanism_t), intent(in) :: m
-    integer, intent(in), optional :: carried_frames(:)
+    character(len=*), intent(in), optional :: carried_bodies(:)
     real(wp) :: weight, slip(s%n), friction(s%n), mass, com(3), inertia(3, 3), gravity(3)
-    integer :: k, i, e, j, frame_b
-    character(len=:), allocatable :: c
+    integer :: k, i, e, j
+    character(len=:), allocatable :: c, body
     do k = 1, s%nc
       c = trim(s%contact_names(k))
       ! the series' contacts may be more than the mechanism's (a flight's
       ! phases: the last closed contact's); in a series of one body that body
-      frame_b = 0
+      body = ''
       j = findloc([(trim(m%contacts(j)%name) == c, j = 1, size(m%contacts))], .true., dim=1)
       if (j > 0) then
-        frame_b = m%contacts(j)%frame_b
+        e = findloc([(m%elements(m%masses(e))%e%mass_frame() == m%contacts(j)%frame_b, e = 1, size(m%masses))], &
+                    .true., dim=1)
+        if (e > 0) body = trim(m%elements(m%masses(e))%e%name)
       else if (s%nb == 1) then
-        frame_b = s%body_frame(1)
-      else if (present(carried_frames)) then
-        frame_b = carried_frames(k)
+        body = trim(s%body_names(1))
+      else if (present(carried_bodies)) then
+        body = trim(carried_bodies(k))
       end if
       weight = 0
-      do e = 1, m%n_elements
-        if (m%elements(e)%e%mass_frame() /= frame_b) cycle
-        call m%elements(e)%e%mass_properties(mass, com, inertia, gravity)
+      e = 0
+      if (len(body) > 0) e = findloc([(m%elements(m%masses(e))%e%name == body, e = 1, size(m%masses))], .true., dim=1)
+      if (e > 0) then
+        call m%elements(m%masses(e))%e%mass_properties(mass, com, inertia, gravity)
         weight = mass*norm2(gravity)
-      end do
+      end if
       slip = [(norm2(s%slip(:, k, i)), i=1, s%n)]
       friction = [(norm2(s%friction(:, k, i)), i=1, s%n)]
       call summary%add(c//'_slip_speed_final', c//' slip speed final', slip(s%n), 'm/s')
@@ -611,42 +615,30 @@ contains
                              maxval(s%normal(k, :s%n)), 'N')
       if (weight > 0) call summary%add_range(c//'_normal_force_weights', c//' normal force in weights', &
                                              minval(s%normal(k, :s%n))/weight, maxval(s%normal(k, :s%n))/weight, &
-                                             '1', 'of '//trim(body_name(s, frame_b))//'''s weight')
+                                             '1', 'of '//body//'''s weight')
       call summary%add(c//'_friction_force_max', c//' friction force max', maxval(friction), 'N')
     end do
   end subroutine add_contact_terms
 
-  !> Each series contact's body_2's frame (the series' body_frame, the first
-  !> phase's) where the contact was closed at some record (open(c, :) of the
-  !> description's contact c has a 0), else 0: the report's weights of the
-  !> contacts a later phase closed.
-  function carried_frames(flight, open) result(frames)
+  !> Each series contact's body_2 (its name) where the contact was closed at
+  !> some record (open(c, :) of the description's contact c has a 0), else
+  !> '': the report's weights of the contacts a later phase closed.
+  function carried_bodies(flight, open) result(bodies)
     type(flight_ode_t), intent(in) :: flight
     integer, intent(in) :: open(:, :)
-    integer, allocatable :: frames(:)
-    integer :: k, c, j
+    character(len=32), allocatable :: bodies(:)
+    integer :: k, c
     associate (s => flight%series, contacts => flight%system%contacts)
-      allocate (frames(s%nc), source=0)
+      allocate (bodies(s%nc))
+      bodies = ''
       do k = 1, s%nc
         c = findloc([(contacts(c)%name == trim(s%contact_names(k)), c = 1, size(contacts))], .true., dim=1)
         if (c == 0 .or. c > size(open, 1)) cycle
         if (all(open(c, :) /= 0)) cycle
-        j = findloc([(trim(s%body_names(j)) == contacts(c)%body_2, j = 1, s%nb)], .true., dim=1)
-        if (j > 0) frames(k) = s%body_frame(j)
+        bodies(k) = contacts(c)%body_2
       end do
     end associate
-  end function carried_frames
-
-  !> The name of the body whose frame is `frame`.
-  function body_name(s, frame) result(name)
-    type(mechanism_series_t), intent(in) :: s
-    integer, intent(in) :: frame
-    character(len=32) :: name
-    integer :: k
-    name = 'body 2'
-    k = findloc(s%body_frame, frame, dim=1)
-    if (k > 0) name = s%body_names(k)
-  end function body_name
+  end function carried_bodies
 
   !> The symmetry axis of an inertia tensor (body axes): the axis whose
   !> moment differs from two equal others (1e-6 relative), the products zero;

@@ -236,6 +236,12 @@ grep -qE "impacts +2 " "$work/walled.out" || fail "walled: the summary does not 
 grep -qE "ball height min / max +0.10000 / 0.10000 m" "$work/walled.out" ||
   fail "walled: the ball's height is not 0.1 m throughout (its summary terms)"
 grep -qE "ball speed max +1.0000 m/s" "$work/walled.out" || fail "walled: the ball's speed max is not 1 m/s"
+# ... and its contact terms: the floor carries the ball's weight, the body found by its name
+# (looked up by frame, the first phase's frame matched none of the joined series' bodies,
+# whose frames are the last phase's: "of body 2's weight")
+grep -qE "on_floor normal force in weights +1.0000 / 1.0000 of ball's weight" "$work/walled.out" ||
+  fail "walled: the floor's normal force is not 1 of the ball's weight: $(grep 'on_floor normal force in' \
+    "$work/walled.out")"
 sed -e "s/walled.h5/walled_rolling.h5/" -e "s/velocity = 1, 0, 0/velocity = 1, 0, 0, angular_velocity = 0, 10, 0/" \
   -e "s/start = 'closed' \//start = 'closed', rolling = .true. \//" "$work/walled.nml" > "$work/walled_rolling.nml"
 run_case walled_rolling 2 "body 'ball' lands on 'on_wall' at t = 0.7 s while 'on_floor' carries it" \
