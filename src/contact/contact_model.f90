@@ -359,7 +359,7 @@ contains
         model%body_names(b + 1) = system%bodies(b)%name
         model%body_mass(b + 1) = system%bodies(b)%mass
         q = [q, model%free(:, b)]
-        model%q_units = [model%q_units, free_body_units]
+        model%q_units = [character(len=8) :: model%q_units, free_body_units]
       end do
       do c = 1, size(system%contacts)
         call m%add_monitor(m%add_scalar(system%contacts(c)%name//'.gap'), 'm')

@@ -63,7 +63,7 @@ contains
     character(len=:), allocatable :: csv_path, message, where
 
     ! ---- everything checked before any work
-    call check_known_groups(input, [ride_groups, 'sweep         '], status)
+    call check_known_groups(input, [character(len=len(ride_groups)) :: ride_groups, 'sweep'], status)
     defaults%options = options%ode
     defaults%output_step = options%output_step
     ! a sweep rides at 'report' unless the input gives accuracy or a tolerance
