@@ -99,10 +99,26 @@ contains
     problem%weight = 0.3_wp
   end function line_problem
 
+  !> The line fitted from p within [-10, 10]^2, its model failing where
+  !> the slope exceeds `fails_beyond` if given.
+  subroutine fit_line(p, fit, sample, groups, status, fails_beyond)
+    real(wp), intent(inout) :: p(2)
+    type(identification_fit_t), intent(out) :: fit
+    class(identification_sample_t), allocatable, intent(out) :: sample
+    type(cost_group_t), allocatable, intent(out) :: groups(:)
+    type(status_t), intent(out) :: status
+    real(wp), intent(in), optional :: fails_beyond
+    type(line_problem_t) :: problem
+    type(least_squares_result_t) :: result
+    problem = line_problem()
+    if (present(fails_beyond)) problem%fails_beyond = fails_beyond
+    call fit_identification('line', problem, n, p, [-10.0_wp, -10.0_wp], [10.0_wp, 10.0_wp], identification_solver, &
+                            fit, result, sample, groups, status)
+  end subroutine fit_line
+
   subroutine closed_forms()
     type(line_problem_t) :: problem
     type(identification_fit_t) :: fit
-    type(least_squares_result_t) :: result
     class(identification_sample_t), allocatable :: sample
     type(cost_group_t), allocatable :: groups(:)
     type(status_t) :: status
@@ -119,8 +135,7 @@ contains
     expected = [cc*d - b*e, a*e - b*d]/(a*cc - b**2)
     p = [0.0_wp, 0.0_wp]
     runs = 0
-    call fit_identification('line', problem, n, p, [-10.0_wp, -10.0_wp], [10.0_wp, 10.0_wp], identification_solver, &
-                            fit, result, sample, groups, status)
+    call fit_line(p, fit, sample, groups, status)
     call check(status%ok(), 'line fit: '//status%text())
     if (.not. status%ok()) return
     call check_close(p(1), expected(1), 1e-9_wp, 1e-12_wp, 'line: intercept of the normal equations')
@@ -149,18 +164,13 @@ contains
   end subroutine closed_forms
 
   subroutine stopped_early()
-    type(line_problem_t) :: problem
     type(identification_fit_t) :: fit
-    type(least_squares_result_t) :: result
     class(identification_sample_t), allocatable :: sample
     type(cost_group_t), allocatable :: groups(:)
     type(status_t) :: status
     real(wp) :: p(2)
-    problem = line_problem()
-    problem%fails_beyond = 0.5_wp
     p = [0.0_wp, 0.0_wp]
-    call fit_identification('line', problem, n, p, [-10.0_wp, -10.0_wp], [10.0_wp, 10.0_wp], identification_solver, &
-                            fit, result, sample, groups, status)
+    call fit_line(p, fit, sample, groups, status, fails_beyond=0.5_wp)
     call check(status%ok(), 'failing line: the fit stands at its last accepted point: '//status%text())
     call check(p(2) <= 0.5_wp, 'failing line: the slope within the model''s reach')
     call check(fit%rejected > 0, 'failing line: rejected steps counted')
@@ -170,18 +180,13 @@ contains
   end subroutine stopped_early
 
   subroutine failed_start()
-    type(line_problem_t) :: problem
     type(identification_fit_t) :: fit
-    type(least_squares_result_t) :: result
     class(identification_sample_t), allocatable :: sample
     type(cost_group_t), allocatable :: groups(:)
     type(status_t) :: status
     real(wp) :: p(2)
-    problem = line_problem()
-    problem%fails_beyond = 0.5_wp
     p = [0.0_wp, 1.0_wp]
-    call fit_identification('line', problem, n, p, [-10.0_wp, -10.0_wp], [10.0_wp, 10.0_wp], identification_solver, &
-                            fit, result, sample, groups, status)
+    call fit_line(p, fit, sample, groups, status, fails_beyond=0.5_wp)
     call check(.not. status%ok(), 'a model failing at the start ends the fit')
     call check(index(status%text(), 'line') > 0 .and. index(status%text(), 'slope bound') > 0, &
                'the failure named by the identification and the model: '//status%text())

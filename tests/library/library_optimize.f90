@@ -25,7 +25,7 @@ program library_optimize
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_status, only: status_t
-  use base_text, only: format_real, format_integer
+  use base_text, only: format_integer
   use geometry_slide_builder, only: slide_elements_description_t
   use design_sweep, only: N_SWEPT, V_MASS, V_HEIGHT, V_V0, V_HEADING, V_SPEED, swept_values_t, sweep_rows
   use design_population, only: population_base, set_population
@@ -35,6 +35,7 @@ program library_optimize
     outcome_names, CONSTRAINT_NONE, CONSTRAINT_PENALTY
   use design_catalogue, only: catalogue_t, allowed_in_list, allowed_by_step, part_text
   use design_optimization_job, only: optimization_job_t, run_optimization
+  use library_lines, only: put, put_text, stop_unless_ok
   use shipped_slides, only: element
   implicit none (type, external)
   real(wp), parameter :: degrees = 45/atan(1.0_wp)   ! io_summary's degrees per radian
@@ -185,7 +186,7 @@ contains
         call put(input, 'variable_'//format_integer(k)//'.'//format_integer(j), values(j)/scale)
       end do
     end do
-    call text(input, 'catalogue', job%chosen%verdict)
+    call put_text(input, 'catalogue', job%chosen%verdict)
     call put(input, 'nearest_acceleration_cost', job%chosen%acceleration_cost(1))
     call put(input, 'catalogue_acceleration_cost', job%chosen%chosen%acceleration_cost)
     call put(input, 'catalogue_max_lever_arm', job%chosen%chosen%max_lever_arm)
@@ -200,7 +201,7 @@ contains
           if (j > 1) line = line//', '
           line = line//format_integer(part%elements(j))
         end do
-        call text(input, 'line', line//')')
+        call put_text(input, 'line', line//')')
       end associate
     end do
   end subroutine standard_parts
@@ -218,7 +219,7 @@ contains
     call run_optimization(setup, job, status, catalogue)
     call stop_unless_ok(input, 'the optimisation', status)
     associate (result => job%result)
-      call text(input, 'outcome', trim(outcome_names(result%outcome)))
+      call put_text(input, 'outcome', trim(outcome_names(result%outcome)))
       call put(input, 'restarts', real(result%restarts, wp))
       call put(input, 'cost_start', result%cost_before)
       call put(input, 'cost', result%cost_after)
@@ -262,28 +263,9 @@ contains
     character(len=*), intent(in) :: input, key
     real(wp), intent(in) :: x
     if (x >= 1e30_wp) then
-      call text(input, key, 'lift-off (a body does not stay pressed on the slide)')
+      call put_text(input, key, 'lift-off (a body does not stay pressed on the slide)')
     else
       call put(input, key, x)
     end if
   end subroutine lever
-
-  subroutine stop_unless_ok(input, what, status)
-    character(len=*), intent(in) :: input, what
-    type(status_t), intent(in) :: status
-    if (status%ok()) return
-    print '(a)', 'FAIL '//input//': '//what//': '//status%text()
-    error stop 1
-  end subroutine stop_unless_ok
-
-  subroutine put(input, key, x)
-    character(len=*), intent(in) :: input, key
-    real(wp), intent(in) :: x
-    print '(a)', input//' '//key//' '//format_real(x)
-  end subroutine put
-
-  subroutine text(input, key, words)
-    character(len=*), intent(in) :: input, key, words
-    print '(a)', 'TEXT '//input//' '//key//' '//words
-  end subroutine text
 end program library_optimize

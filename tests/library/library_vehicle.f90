@@ -34,13 +34,12 @@ program library_vehicle
   use design_ride_evaluation, only: ride_limit_t, limit_bounds_text, limit_report_unit, spaced_unit
   use design_vehicle_ride, only: vehicle_ride_description_t, vehicle_ride_t, run_vehicle_ride
   use shipped_slides, only: demo_slide, halfpipe_slide, jump_slide, bowl_halfpipe_slide
+  use library_lines, only: put, put_count, put_text, expect_ok, failures
   implicit none (type, external)
 
   !> Runaway guard of the command's multibody runs (scenarios_mechanism min_mean_step).
   real(wp), parameter :: min_mean_step = 1e-4_wp
-  integer :: failures
 
-  failures = 0
   call mat()
   call ring()
   call bowl_halfpipe('mat')
@@ -192,10 +191,10 @@ contains
     call put(name, 'u_final', sys%series%q(1, n))
     call put_count(name, 'steps', int(r%driven%stats%steps))
     call put_count(name, 'rhs_evaluations', int(r%driven%stats%rhs_evaluations))
-    print '(a)', 'TEXT '//name//' outcome '//r%outcome
+    call put_text(name, 'outcome', r%outcome)
     if (d%vehicle%in_water) then
-      print '(a)', 'TEXT '//name//' water computed, '//format_short(d%water%flow_rate)//' m^3/s, '// &
-        outcome_name(r%water%series%outcome)//' (its drag at both contacts)'
+      call put_text(name, 'water', 'computed, '//format_short(d%water%flow_rate)//' m^3/s, '// &
+                    outcome_name(r%water%series%outcome)//' (its drag at both contacts)')
     end if
     call put(name, 'vehicle_width', r%width)
     call put(name, 'narrowest_section', r%narrowest)
@@ -218,13 +217,13 @@ contains
       associate (l => d%limits(k), v => r%verdicts(k))
         if (v%exceeded) then
           exceeded = exceeded + 1
-          print '(a)', 'TEXT '//name//' line LIMIT EXCEEDED: '//l%quantity//' '//limit_bounds_text(l)//'; worst '// &
-            format_short(v%worst)//spaced_unit(limit_report_unit(l%quantity))//' at arc length '// &
-            format_short(v%worst_where)//' m (first at '//format_short(v%first_where)//' m)'
+          call put_text(name, 'line', 'LIMIT EXCEEDED: '//l%quantity//' '//limit_bounds_text(l)//'; worst '// &
+                        format_short(v%worst)//spaced_unit(limit_report_unit(l%quantity))//' at arc length '// &
+                        format_short(v%worst_where)//' m (first at '//format_short(v%first_where)//' m)')
         else
-          print '(a)', 'TEXT '//name//' line limit '//l%quantity//' '//limit_bounds_text(l)//': ok (closest '// &
-            format_short(v%worst)//spaced_unit(limit_report_unit(l%quantity))//' at arc length '// &
-            format_short(v%worst_where)//' m)'
+          call put_text(name, 'line', 'limit '//l%quantity//' '//limit_bounds_text(l)//': ok (closest '// &
+                        format_short(v%worst)//spaced_unit(limit_report_unit(l%quantity))//' at arc length '// &
+                        format_short(v%worst_where)//' m)')
         end if
       end associate
     end do
@@ -266,24 +265,4 @@ contains
       end associate
     end do
   end subroutine put_flights
-
-  subroutine put(name, key, value)
-    character(len=*), intent(in) :: name, key
-    real(wp), intent(in) :: value
-    print '(a, 1x, a, 1x, es25.17e3)', name, key, value
-  end subroutine put
-
-  subroutine put_count(name, key, value)
-    character(len=*), intent(in) :: name, key
-    integer, intent(in) :: value
-    print '(a, 1x, a, 1x, i0)', name, key, value
-  end subroutine put_count
-
-  subroutine expect_ok(status, what)
-    type(status_t), intent(in) :: status
-    character(len=*), intent(in) :: what
-    if (status%ok()) return
-    print '(a)', 'FAIL '//what//': '//status%text()
-    failures = failures + 1
-  end subroutine expect_ok
 end program library_vehicle

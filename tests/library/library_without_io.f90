@@ -20,7 +20,7 @@
 program library_without_io
   use base_kinds, only: wp
   use base_status, only: status_t
-  use base_text, only: format_real, format_integer
+  use base_text, only: format_integer
   use numerics_ode, only: ODE_ADAMS
   use geometry_description, only: geometry_description_t
   use geometry_slide_builder, only: build_slide
@@ -45,6 +45,7 @@ program library_without_io
     body_variants
   use shipped_slides, only: demo_slide, second_slide, drop_slide, halfpipe_slide, bowl_slide, bowl_table_slide, &
     crest_slide, jump_slide, funnel_slide, patch_slide
+  use library_lines, only: put, stop_unless_ok
   implicit none (type, external)
   real(wp), parameter :: pi_2 = 1.5707963267948966_wp   ! the inputs' v0 (the bottom)
 
@@ -648,21 +649,7 @@ contains
     call stop_unless_ok('a slide', 'its build', status)
   end function slide_of
 
-  subroutine stop_unless_ok(input, what, status)
-    character(len=*), intent(in) :: input, what
-    type(status_t), intent(in) :: status
-    if (status%ok()) return
-    print '(a)', 'FAIL '//input//': '//what//': '//status%text()
-    error stop 1
-  end subroutine stop_unless_ok
-
   ! --------------------------------------------------------------- printing
-
-  subroutine put(input, key, x)
-    character(len=*), intent(in) :: input, key
-    real(wp), intent(in) :: x
-    print '(a)', input//' '//key//' '//format_real(x)
-  end subroutine put
 
   !> The water's summary numbers (scenarios_water's print_summary).
   subroutine print_water(input, w, s)

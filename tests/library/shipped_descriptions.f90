@@ -52,6 +52,7 @@ program shipped_descriptions
   use contact_closing, only: drive_flight, flight_after_closed
   use contact_bodies, only: build_bodies, start_carriers
   use shipped_slides, only: demo_slide_description => demo_slide
+  use library_lines, only: put, put_count, expect_ok, failures
   implicit none (type, external)
 
   !> Runaway guard of the command's multibody and point-mass runs
@@ -59,11 +60,9 @@ program shipped_descriptions
   real(wp), parameter :: min_mean_step = 1e-4_wp
   real(wp) :: duration
   character(len=64) :: argument
-  integer :: failures
 
   call get_command_argument(1, argument)
   read (argument, *) duration
-  failures = 0
   call pendulum_simple()
   call pendulum_double()
   call fourbar_crank_rocker('inputs/fourbar/crank_rocker.nml')
@@ -914,24 +913,4 @@ contains
     call put_count(name, 'steps', int(result%stats%steps))
     call put_count(name, 'rhs_evaluations', int(result%stats%rhs_evaluations))
   end subroutine run_multibody
-
-  subroutine put(name, key, value)
-    character(len=*), intent(in) :: name, key
-    real(wp), intent(in) :: value
-    print '(a, 1x, a, 1x, es25.17e3)', name, key, value
-  end subroutine put
-
-  subroutine put_count(name, key, value)
-    character(len=*), intent(in) :: name, key
-    integer, intent(in) :: value
-    print '(a, 1x, a, 1x, i0)', name, key, value
-  end subroutine put_count
-
-  subroutine expect_ok(status, what)
-    type(status_t), intent(in) :: status
-    character(len=*), intent(in) :: what
-    if (status%ok()) return
-    print '(a)', 'FAIL '//what//': '//status%text()
-    failures = failures + 1
-  end subroutine expect_ok
 end program shipped_descriptions

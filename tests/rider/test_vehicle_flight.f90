@@ -55,16 +55,15 @@ program test_vehicle_flight
   use geometry_slide_elements, only: slide_element_t
   use geometry_slide_builder, only: section_part_description_t
   use geometry_description, only: geometry_description_t, build_geometry
-  use numerics_ode, only: ode_options_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use kinetostatics_point_impact, only: point_gap
   use kinetostatics_models, only: sled_description_t
-  use kinetostatics_recorder, only: mechanism_series_t
   use kinetostatics_impact, only: impact_law_t, rigid_body_delassus
-  use rider_vehicle, only: vehicle_t, vehicle_body_t, vehicle_body, VEHICLE_RING, VEHICLE_MAT
+  use rider_vehicle, only: vehicle_t, vehicle_body_t, vehicle_body, VEHICLE_MAT
   use rider_vehicle_flight, only: vehicle_flight_ode_t, build_vehicle_flight, drive_vehicle, solve_columns, &
     SOLVE_PITCH, SOLVE_YAW, press_or_open
+  use vehicle_fixtures, only: flying_ring, on_contacts, centre, quiet_options
   implicit none (type, external)
 
   real(wp), parameter :: g = 9.80665_wp
@@ -80,34 +79,12 @@ program test_vehicle_flight
 
 contains
 
-  !> y of a vehicle `sys` (its builds made) put in the air: both contacts
-  !> open, q = [u, v, phi, pitch, rear_lift, roll], at rest (or with the
-  !> rates qd).
-  function in_the_air(sys, q, qd) result(y)
-    type(vehicle_flight_ode_t), intent(inout) :: sys
-    real(wp), intent(in) :: q(6)
-    real(wp), intent(in), optional :: qd(6)
-    real(wp), allocatable :: y(:)
-    sys%mechanism = sys%builds(3)
-    call sys%mechanism%prepare_workspace(sys%work)
-    sys%open_mask = 3
-    sys%opened = .true.
-    if (present(qd)) then
-      y = sys%initial_state(q, qd)
-    else
-      y = sys%initial_state(q, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp])
-    end if
-  end function in_the_air
-
   subroutine drop(e)
     real(wp), intent(in) :: e
     real(wp), parameter :: h0 = 0.5_wp, pitch0 = -0.05_wp
-    type(vehicle_t) :: v
     type(vehicle_body_t) :: vb
-    type(sled_description_t) :: d
     class(surface_t), allocatable :: plane
     type(vehicle_flight_ode_t), target :: sys
-    type(driver_options_t) :: options
     type(driver_result_t) :: result
     type(status_t) :: st
     real(wp), allocatable :: q0(:), qd0(:), y(:)
@@ -116,26 +93,19 @@ contains
     integer :: i
     label = 'drop, e = '//merge('0.5', '0  ', e > 0)
     plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], st)
-    v = vehicle_t(VEHICLE_RING, 1, 1.0_wp)
-    v%may_fly = .true.
-    v%landing = impact_law_t(restitution=e, mu=0)
-    d%q0 = 0
-    d%qd0 = 0
-    call build_vehicle_flight(v, d, plane, sys, q0, qd0, st)
+    call flying_ring(plane, e, sys, q0, qd0, st)
     call check(st%ok(), label//': the builds: '//st%text())
     if (.not. st%ok()) return
-    y = in_the_air(sys, [0.0_wp, 0.0_wp, 0.0_wp, pitch0, h0, 0.0_wp])
+    ! in the air (both contacts open), at rest
+    y = on_contacts(sys, 3, [0.0_wp, 0.0_wp, 0.0_wp, pitch0, h0, 0.0_wp], spread(0.0_wp, 1, 6))
     t_land = sqrt(2*h0/g)
-    options%ode = ode_options_t(rtol=1e-10_wp, atol=1e-12_wp, max_step=0.05_wp)
-    options%t_end = merge(t_land + 0.02_wp, 1.5_wp, e > 0)
-    options%output_step = 0.01_wp
-    options%progress_seconds = 0
-    call drive_vehicle(sys, y, options, result, st)
+    call drive_vehicle(sys, y, quiet_options(1e-10_wp, 1e-12_wp, 0.05_wp, merge(t_land + 0.02_wp, 1.5_wp, e > 0), &
+                                             0.01_wp), result, st)
     call check(st%ok(), label//': runs: '//st%text())
     call check(sys%flights%landings >= 1, label//': lands')
     if (sys%flights%landings < 1) return
     v_n = sqrt(2*g*h0)
-    call vehicle_body(v, vb, st)
+    call vehicle_body(sys%vehicle, vb, st)
     ! at the landing: pitched by pitch0 about y (rot_y), not turned
     rot = reshape([cos(pitch0), 0.0_wp, -sin(pitch0), 0.0_wp, 1.0_wp, 0.0_wp, sin(pitch0), 0.0_wp, cos(pitch0)], &
                   [3, 3])
@@ -177,7 +147,6 @@ contains
     type(vehicle_body_t) :: vb
     type(sled_description_t) :: d
     type(vehicle_flight_ode_t), target :: sys
-    type(driver_options_t) :: options
     type(driver_result_t) :: result
     type(status_t) :: st
     type(surface_point_t) :: pt
@@ -207,11 +176,7 @@ contains
     if (.not. st%ok()) return
     call vehicle_body(v, vb, st)
     y = sys%initial_state(q0, qd0)
-    options%ode = ode_options_t(rtol=1e-10_wp, atol=1e-9_wp, max_step=0.05_wp)
-    options%t_end = 6
-    options%output_step = 0.01_wp
-    options%progress_seconds = 0
-    call drive_vehicle(sys, y, options, result, st)
+    call drive_vehicle(sys, y, quiet_options(1e-10_wp, 1e-9_wp, 0.05_wp, 6.0_wp, 0.01_wp), result, st)
     print '(a)', 'jump: '//sys%outcome
     call check(st%ok(), 'jump: runs: '//st%text())
     call check(sys%flights%whole_flights >= 1, 'jump: the whole vehicle flies')
@@ -291,8 +256,6 @@ contains
     real(wp), allocatable, intent(out) :: q0(:), qd0(:)
     type(status_t), intent(inout) :: st
     type(geometry_description_t) :: gd
-    type(vehicle_t) :: v
-    type(sled_description_t) :: d
     gd%kind = 'slide'
     gd%slide%elements%start = [0.0_wp, 0.0_wp, 10.0_wp]
     gd%slide%elements%transition_length = 1
@@ -301,12 +264,8 @@ contains
     gd%slide%section%parts = [section_part_description_t(kind='circle', radius=1.0_wp)]
     call build_geometry(gd, slide, st)
     if (.not. st%ok()) return
-    v = vehicle_t(VEHICLE_RING, 1, 1.0_wp)
-    v%may_fly = .true.
-    v%landing = impact_law_t(restitution=0, mu=0)
-    d%q0 = [3.0_wp, 1.5707963267948966_wp, 0.0_wp]
-    d%qd0 = [1.0_wp, 0.0_wp, 0.0_wp]
-    call build_vehicle_flight(v, d, slide, sys, q0, qd0, st)
+    call flying_ring(slide, 0.0_wp, sys, q0, qd0, st, start=[3.0_wp, 1.5707963267948966_wp, 0.0_wp], &
+                     start_rate=[1.0_wp, 0.0_wp, 0.0_wp])
   end subroutine ring_in_tube
 
   subroutine columns()
@@ -393,10 +352,7 @@ contains
     call check_close(phi, q0(3), 0.0_wp, 1e-10_wp, 'solved: the heading''s closure gives back the heading')
     call check_close(by_yaw%work%scalars(by_yaw%mechanism%scalar_index('phi'))%qd, qd0(3), 0.0_wp, 1e-10_wp, &
                      'solved: ... and its rate')
-    options%ode = ode_options_t(rtol=1e-10_wp, atol=1e-12_wp, max_step=0.05_wp)
-    options%t_end = 0.4_wp
-    options%output_step = 0.1_wp
-    options%progress_seconds = 0
+    options = quiet_options(1e-10_wp, 1e-12_wp, 0.05_wp, 0.4_wp, 0.1_wp)
     y = by_pitch%initial_state(q0, qd0)
     call drive(by_pitch, y, options, result, st)
     call check(st%ok(), 'solved: the pitch build runs: '//st%text())
@@ -427,7 +383,6 @@ contains
     class(surface_t), allocatable :: slide
     type(vehicle_body_t) :: vb
     type(status_t) :: st
-    type(driver_options_t) :: options
     type(driver_result_t) :: result
     real(wp), allocatable :: q0(:), qd0(:), y(:)
     real(wp) :: c0(3), v0(3), l0(3), l(3), c(3), tau, worst_r, worst_l, worst_e, e0, rot(3, 3), roll_span(2)
@@ -436,13 +391,9 @@ contains
     call check(st%ok(), 'free: the builds: '//st%text())
     if (.not. st%ok()) return
     call vehicle_body(sys%vehicle, vb, st)
-    y = in_the_air(sys, [3.0_wp, 1.5707963267948966_wp + 0.1_wp, 0.2_wp, -0.1_wp, 0.3_wp, 0.1_wp], &
-                   [1.0_wp, 0.1_wp, 0.8_wp, -0.5_wp, 1.5_wp, 3.0_wp])
-    options%ode = ode_options_t(rtol=1e-12_wp, atol=1e-12_wp, max_step=0.01_wp)
-    options%t_end = 0.25_wp
-    options%output_step = 0.01_wp
-    options%progress_seconds = 0
-    call drive_vehicle(sys, y, options, result, st)
+    y = on_contacts(sys, 3, [3.0_wp, 1.5707963267948966_wp + 0.1_wp, 0.2_wp, -0.1_wp, 0.3_wp, 0.1_wp], &
+                    [1.0_wp, 0.1_wp, 0.8_wp, -0.5_wp, 1.5_wp, 3.0_wp])
+    call drive_vehicle(sys, y, quiet_options(1e-12_wp, 1e-12_wp, 0.01_wp, 0.25_wp, 0.01_wp), result, st)
     call check(st%ok(), 'free: runs: '//st%text())
     if (.not. st%ok()) return
     associate (s => sys%series)
@@ -486,38 +437,18 @@ contains
   !> t = 0.7 s; on 8f2e33d its take_off_time stayed 0 (the time of its last
   !> switch: none), so a landing of it named 0.7 s more than its flight.
   subroutine take_off_at_press_or_open()
-    type(vehicle_t) :: v
-    type(sled_description_t) :: d
     class(surface_t), allocatable :: plane
     type(vehicle_flight_ode_t), target :: sys
     type(status_t) :: st
-    real(wp), allocatable :: q0(:), qd0(:), y(:), q(:), qd(:)
-    ! the full layout u, v, phi, pitch, rear_lift, roll and its rates
-    real(wp), parameter :: full_q(6) = [0.0_wp, 0.0_wp, 0.0_wp, -0.5_wp, 0.0_wp, 0.0_wp], &
-                           full_qd(6) = [0.0_wp, 0.0_wp, 0.0_wp, -20.0_wp, 0.0_wp, 0.0_wp]
-    integer :: k, j
+    real(wp), allocatable :: q0(:), qd0(:), y(:)
     plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [1.0_wp, 0.0_wp, 0.0_wp], [0.0_wp, 1.0_wp, 0.0_wp], st)
-    v = vehicle_t(VEHICLE_RING, 1, 1.0_wp)
-    v%may_fly = .true.
-    v%landing = impact_law_t(restitution=0, mu=0)
-    d%q0 = 0
-    d%qd0 = 0
-    call build_vehicle_flight(v, d, plane, sys, q0, qd0, st)
+    call flying_ring(plane, 0.0_wp, sys, q0, qd0, st)
     call check(st%ok(), 'take-off at press_or_open: the builds: '//st%text())
     if (.not. st%ok()) return
     ! on the rear alone: the build of mask 2 (the front open), the rear's lift 0
-    sys%mechanism = sys%builds(2)
-    call sys%mechanism%prepare_workspace(sys%work)
-    sys%open_mask = 2
-    sys%opened = [.false., .true.]
+    y = on_contacts(sys, 2, [0.0_wp, 0.0_wp, 0.0_wp, -0.5_wp, 0.0_wp, 0.0_wp], &
+                    [0.0_wp, 0.0_wp, 0.0_wp, -20.0_wp, 0.0_wp, 0.0_wp])
     sys%take_off_time = [0.0_wp, 0.3_wp]
-    allocate (q(sys%mechanism%f), qd(sys%mechanism%f))
-    do k = 1, sys%mechanism%f
-      j = findloc(sys%full, sys%mechanism%q(k), dim=1)
-      q(k) = full_q(j)
-      qd(k) = full_qd(j)
-    end do
-    y = sys%initial_state(q, qd)
     call press_or_open(sys, 0.7_wp, y, st)
     call check(st%ok(), 'take-off at press_or_open: runs: '//st%text())
     call check(sys%open_mask == 3, 'take-off at press_or_open: the rear opens too')
@@ -525,16 +456,6 @@ contains
     call check(sys%take_off_time(2) == 0.3_wp, 'take-off at press_or_open: the front''s take-off stays')
     call check(.not. sys%opened(1), 'take-off at press_or_open: the rear''s gap watched from 0')
   end subroutine take_off_at_press_or_open
-
-  !> The vehicle's centre of mass at record i of s (the bar frame's pose;
-  !> com: its place in the bar frame).
-  function centre(s, com, i) result(c)
-    type(mechanism_series_t), intent(in) :: s
-    real(wp), intent(in) :: com(3)
-    integer, intent(in) :: i
-    real(wp) :: c(3)
-    c = s%body_r(:, 1, i) + matmul(s%body_rot(:, :, 1, i), com)
-  end function centre
 
   !> The free rigid body from its take-off (the bar frame's origin o0 and
   !> axes rot0, centre of mass c0 with velocity v0, angular velocity w0,

@@ -34,13 +34,12 @@ program test_vehicle_one_contact
   use testing, only: check, check_close, finish_tests
   use geometry_surface, only: surface_t
   use geometry_elementary, only: plane_t
-  use numerics_ode, only: ode_options_t
-  use numerics_event_driver, only: driver_options_t, driver_result_t
-  use kinetostatics_models, only: sled_description_t
+  use numerics_event_driver, only: driver_result_t
   use kinetostatics_recorder, only: mechanism_series_t
-  use kinetostatics_impact, only: impact_law_t, rigid_body_delassus
-  use rider_vehicle, only: vehicle_t, vehicle_body_t, vehicle_body, VEHICLE_RING
-  use rider_vehicle_flight, only: vehicle_flight_ode_t, build_vehicle_flight, drive_vehicle
+  use kinetostatics_impact, only: rigid_body_delassus
+  use rider_vehicle, only: vehicle_body_t, vehicle_body
+  use rider_vehicle_flight, only: vehicle_flight_ode_t, drive_vehicle
+  use vehicle_fixtures, only: flying_ring, on_contacts, centre, quiet_options
   implicit none (type, external)
 
   real(wp), parameter :: g = 9.80665_wp
@@ -62,45 +61,31 @@ contains
     character(len=*), intent(in) :: label
     real(wp), intent(in) :: slope, q(6), qd(6)
     integer, intent(in) :: mask
-    type(vehicle_t) :: v
     type(vehicle_body_t) :: vb
-    type(sled_description_t) :: d
     class(surface_t), allocatable :: plane
     type(vehicle_flight_ode_t), target :: sys
-    type(driver_options_t) :: options
     type(driver_result_t) :: result
     type(status_t) :: st
     real(wp), allocatable :: q0(:), qd0(:), y(:)
     real(wp) :: a, n(3), grav(3), g_t(3), residual, n_exact, alpha(3), w(3), rot(3, 3), inertia(3, 3)
     real(wp) :: c0(3), vc0(3), lz0, e0, c(3), vc(3), tau, worst_n, worst_h, worst_l, worst_e, worst_b, worst_p
     real(wp) :: worst_q, rho(3), roll_span(2)
-    integer :: i, k, f, on, records, landing
+    integer :: i, f, on, records, landing
     a = slope*pi/180
     n = [sin(a), 0.0_wp, cos(a)]
     grav = [0.0_wp, 0.0_wp, -g]
     g_t = grav - n*dot_product(n, grav)
     plane = plane_t([0.0_wp, 0.0_wp, 0.0_wp], [cos(a), 0.0_wp, -sin(a)], [0.0_wp, 1.0_wp, 0.0_wp], st)
-    v = vehicle_t(VEHICLE_RING, 1, 1.0_wp)
-    v%may_fly = .true.
-    v%landing = impact_law_t(restitution=0, mu=0)
-    d%q0 = 0
-    d%qd0 = 0
-    call build_vehicle_flight(v, d, plane, sys, q0, qd0, st)
+    call flying_ring(plane, 0.0_wp, sys, q0, qd0, st)
     call check(st%ok(), label//': the builds: '//st%text())
     if (.not. st%ok()) return
-    call vehicle_body(v, vb, st)
+    call vehicle_body(sys%vehicle, vb, st)
     on = 3 - mask   ! the contact on: 1 the rear, 2 the front
     ! the state on one contact; the mechanism evaluated there
-    sys%mechanism = sys%builds(mask)
-    call sys%mechanism%prepare_workspace(sys%work)
-    sys%open_mask = mask
-    sys%opened = [btest(mask, 0), btest(mask, 1)]
+    y = on_contacts(sys, mask, q, qd)
     f = sys%mechanism%f
     call check(f == 5, label//': five coordinates on one contact')
-    q0 = [(q(findloc(sys%full, sys%mechanism%q(k), dim=1)), k = 1, f)]
-    qd0 = [(qd(findloc(sys%full, sys%mechanism%q(k), dim=1)), k = 1, f)]
-    y = sys%initial_state(q0, qd0)
-    call sys%mechanism%evaluate(sys%work, 0.0_wp, q0, qd0, residual, st)
+    call sys%mechanism%evaluate(sys%work, 0.0_wp, y(1:f), y(f + 1:2*f), residual, st)
     call check(st%ok(), label//': the start: '//st%text())
     if (.not. st%ok()) return
     sys%margin_work = sys%work
@@ -118,11 +103,7 @@ contains
       call check(maxval(abs(bar%alpha - alpha)) <= 1e-9_wp*max(1.0_wp, maxval(abs(alpha))), &
                  label//': the start''s tipping, the free rigid body''s')
     end associate
-    options%ode = ode_options_t(rtol=1e-12_wp, atol=1e-12_wp, max_step=0.01_wp)
-    options%t_end = 1
-    options%output_step = 0.01_wp
-    options%progress_seconds = 0
-    call drive_vehicle(sys, y, options, result, st)
+    call drive_vehicle(sys, y, quiet_options(1e-12_wp, 1e-12_wp, 0.01_wp, 1.0_wp, 0.01_wp), result, st)
     print '(a)', label//': '//sys%outcome
     call check(st%ok(), label//': runs: '//st%text())
     if (.not. st%ok()) return
@@ -228,15 +209,6 @@ contains
     real(wp) :: p(3)
     p = x - n*dot_product(n, x)
   end function along
-
-  !> The vehicle's centre of mass at record i of s.
-  function centre(s, com, i) result(c)
-    type(mechanism_series_t), intent(in) :: s
-    real(wp), intent(in) :: com(3)
-    integer, intent(in) :: i
-    real(wp) :: c(3)
-    c = s%body_r(:, 1, i) + matmul(s%body_rot(:, :, 1, i), com)
-  end function centre
 
   !> The vertical component of the angular momentum about the centre of
   !> mass at record i (R I R^T w).
