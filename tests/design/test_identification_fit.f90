@@ -84,8 +84,7 @@ program test_identification_fit
                                       0.0_wp, 0.01_wp, -0.005_wp, 0.02_wp, -0.01_wp]
 
   call closed_forms()
-  call stopped_early()
-  call failed_start()
+  call failing_model()
   call finish_tests('test_identification_fit')
 
 contains
@@ -163,7 +162,10 @@ contains
     call check(size(groups) == 2, 'line: the groups at the optimum')
   end subroutine closed_forms
 
-  subroutine stopped_early()
+  !> The model failing beyond p2 = 0.5: from (0, 0) the fit ends on
+  !> rejected steps (it stopped early); from (0, 1), beyond, it fails at the
+  !> start.
+  subroutine failing_model()
     type(identification_fit_t) :: fit
     class(identification_sample_t), allocatable :: sample
     type(cost_group_t), allocatable :: groups(:)
@@ -177,19 +179,11 @@ contains
     call check(fit%stopped_early .eqv. (fit%info == 2), 'failing line: stopped early exactly when the xtol '// &
                'test ended it after rejections (info 2)')
     call check(fit%stopped_early, 'failing line: it stopped early (info '//char(48 + fit%info)//')')
-  end subroutine stopped_early
-
-  subroutine failed_start()
-    type(identification_fit_t) :: fit
-    class(identification_sample_t), allocatable :: sample
-    type(cost_group_t), allocatable :: groups(:)
-    type(status_t) :: status
-    real(wp) :: p(2)
     p = [0.0_wp, 1.0_wp]
     call fit_line(p, fit, sample, groups, status, fails_beyond=0.5_wp)
     call check(.not. status%ok(), 'a model failing at the start ends the fit')
     call check(index(status%text(), 'line') > 0 .and. index(status%text(), 'slope bound') > 0, &
                'the failure named by the identification and the model: '//status%text())
     call check(.not. allocated(sample), 'no sample after a failed fit')
-  end subroutine failed_start
+  end subroutine failing_model
 end program test_identification_fit

@@ -29,12 +29,11 @@ program library_vehicle
   use kinetostatics_mechanism_ode, only: mechanism_ode_t
   use water_run, only: water_description_t
   use water_flow, only: outcome_name
-  use rider_flight, only: ride_flights_t, highest_drop
   use rider_vehicle, only: vehicle_kind_index
   use design_ride_evaluation, only: ride_limit_t, limit_bounds_text, limit_report_unit, spaced_unit
   use design_vehicle_ride, only: vehicle_ride_description_t, vehicle_ride_t, run_vehicle_ride
   use shipped_slides, only: demo_slide, halfpipe_slide, jump_slide, bowl_halfpipe_slide
-  use library_lines, only: put, put_count, put_text, expect_ok, failures
+  use library_lines, only: put, put_count, put_text, put_flights, expect_ok, failures
   implicit none (type, external)
 
   !> Runaway guard of the command's multibody runs (scenarios_mechanism min_mean_step).
@@ -210,7 +209,7 @@ contains
       i = maxloc(abs(r%wall_distance(k, :)), dim=1)
       call put(name, 'vehicle_'//trim(contacts(k))//'_wall_distance', r%wall_distance(k, i))
     end do
-    if (d%vehicle%may_fly) call put_flights(name, r%flights)
+    if (d%vehicle%may_fly) call put_flights(name, r%flights, highest=.false.)
     if (.not. allocated(r%verdicts)) return
     exceeded = 0
     do k = 1, size(d%limits)
@@ -229,40 +228,4 @@ contains
     end do
     call put_count(name, 'limits_exceeded', exceeded)
   end subroutine ride
-
-  !> A vehicle's flights as its summary gives them (scenarios_ride_flights'
-  !> add_flights; a vehicle has no highest point).
-  subroutine put_flights(name, f)
-    character(len=*), intent(in) :: name
-    type(ride_flights_t), intent(in) :: f
-    real(wp) :: drop, drop_at
-    integer :: k
-    character(len=:), allocatable :: row
-    call put_count(name, 'flights', f%flights)
-    call put(name, 'airtime', f%airtime)
-    call put(name, 'airtime_longest', f%longest)
-    call put(name, 'airtime_longest_arc_length', f%longest_arc_length)
-    call put_count(name, 'whole_flights', f%whole_flights)
-    call put(name, 'whole_airtime', f%whole_airtime)
-    call put(name, 'whole_airtime_longest', f%whole_longest)
-    call put(name, 'whole_airtime_longest_arc_length', f%whole_longest_arc_length)
-    call highest_drop(f, drop, drop_at)
-    call put_count(name, 'landings', f%landings)
-    call put(name, 'drop_height_max', drop)
-    call put(name, 'drop_height_max_arc_length', drop_at)
-    do k = 1, f%landings
-      row = 'landing.'//format_integer(k)//'.'
-      associate (l => f%landing(k))
-        call put(name, row//'time', l%time)
-        call put(name, row//'arc_length', l%arc_length)
-        call put(name, row//'normal_speed', l%normal_speed)
-        call put(name, row//'impulse', l%impulse)
-        call put(name, row//'normal_impulse', l%normal_impulse)
-        call put(name, row//'drop_height', l%drop_height)
-        call put(name, row//'energy_lost', l%energy_lost)
-        call put(name, row//'closed', merge(1.0_wp, 0.0_wp, l%closed))
-        call put_count(name, row//'contact', l%contact)
-      end associate
-    end do
-  end subroutine put_flights
 end program library_vehicle

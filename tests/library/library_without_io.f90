@@ -31,7 +31,6 @@ program library_without_io
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_body, only: SEX_MALE, SEX_FEMALE
   use rider_model, only: N_CONTACTS, contact_names, rider_params_t, set_rider_mu
-  use rider_flight, only: ride_flights_t, highest_drop
   use kinetostatics_force_law_factory, only: law_spec
   use design_ride_evaluation, only: ride_limit_t, new_ride_limit, noise_free, rider_size
   use design_ride_job, only: ride_description_t, ride_job_result_t, run_ride
@@ -45,7 +44,7 @@ program library_without_io
     body_variants
   use shipped_slides, only: demo_slide, second_slide, drop_slide, halfpipe_slide, bowl_slide, bowl_table_slide, &
     crest_slide, jump_slide, funnel_slide, patch_slide
-  use library_lines, only: put, stop_unless_ok
+  use library_lines, only: put, put_flights, stop_unless_ok
   implicit none (type, external)
   real(wp), parameter :: pi_2 = 1.5707963267948966_wp   ! the inputs' v0 (the bottom)
 
@@ -745,47 +744,10 @@ contains
       end if
       if (result%ride%flights%watched) then
         call put(input, 'felt_not_judged_time', r%not_judged_time)
-        call print_flights(input, result%ride%flights)
+        call put_flights(input, result%ride%flights, highest=.true.)
       end if
       call put(input, 'limits_exceeded', real(count(r%judged .and. r%verdicts%exceeded), wp))
     end associate
     call put(input, 'ride_steps', real(result%ride%driver%stats%steps, wp))
   end subroutine print_ride
-
-  !> The flights of a ride that may fly (scenarios_ride_flights' add_flights).
-  subroutine print_flights(input, f)
-    character(len=*), intent(in) :: input
-    type(ride_flights_t), intent(in) :: f
-    real(wp) :: drop, drop_at
-    character(len=:), allocatable :: row
-    integer :: k
-    call put(input, 'flights', real(f%flights, wp))
-    call put(input, 'airtime', f%airtime)
-    call put(input, 'airtime_longest', f%longest)
-    call put(input, 'airtime_longest_arc_length', f%longest_arc_length)
-    call put(input, 'whole_flights', real(f%whole_flights, wp))
-    call put(input, 'whole_airtime', f%whole_airtime)
-    call put(input, 'whole_airtime_longest', f%whole_longest)
-    call put(input, 'whole_airtime_longest_arc_length', f%whole_longest_arc_length)
-    call put(input, 'highest', f%highest)
-    call put(input, 'highest_arc_length', f%highest_arc_length)
-    call highest_drop(f, drop, drop_at)
-    call put(input, 'landings', real(f%landings, wp))
-    call put(input, 'drop_height_max', drop)
-    call put(input, 'drop_height_max_arc_length', drop_at)
-    do k = 1, f%landings
-      row = 'landing.'//format_integer(k)//'.'
-      associate (l => f%landing(k))
-        call put(input, row//'time', l%time)
-        call put(input, row//'arc_length', l%arc_length)
-        call put(input, row//'normal_speed', l%normal_speed)
-        call put(input, row//'impulse', l%impulse)
-        call put(input, row//'normal_impulse', l%normal_impulse)
-        call put(input, row//'drop_height', l%drop_height)
-        call put(input, row//'energy_lost', l%energy_lost)
-        call put(input, row//'closed', merge(1.0_wp, 0.0_wp, l%closed))
-        call put(input, row//'contact', real(l%contact, wp))
-      end associate
-    end do
-  end subroutine print_flights
 end program library_without_io
