@@ -170,8 +170,10 @@ contains
       end if
       if (.not. r%has(name//'_range')) return
       range = 0
-      call r%get(name//'_range', range, in_range(-1e6_wp, 1e6_wp, 'first, last: '//bounds(k)%unit//'; count'), &
-                 status)
+      ! Read finite only: first and last have the declaration's bounds, the
+      ! count its own (both checked below), no third bound here.
+      call r%get(name//'_range', range, in_range(-huge(1.0_wp), huge(1.0_wp), 'first, last: '// &
+                 bounds(k)%unit//'; count'), status)
       if (.not. status%ok()) return
       if (.not. (range(3) >= 2 .and. range(3) <= max_values .and. range(3) == aint(range(3)))) then
         call r%invalid(name//'_range', r%written(name//'_range'), 'first, last, count: the count must be a '// &
@@ -180,8 +182,8 @@ contains
       end if
       do i = 1, 2
         if (.not. bounds(k)%allows(range(i))) then
-          call r%invalid(name//'_range', r%written(name//'_range'), 'first and last must lie in '// &
-                         bounds(k)%text(), status)
+          call r%invalid(name//'_range', r%written(name//'_range'), 'first and last: '//bounds(k)%text(), &
+                         status)
           return
         end if
       end do

@@ -96,6 +96,9 @@ bad flow_zero "  flow_rate = 0.004, 0.0" "&sweep: flow_rate(2) = 0.0 is not allo
 bad flow_high "  flow_rate = 0.004, 2.0" "&sweep: flow_rate(2) = 2.0 is not allowed: must be a finite number in [1.0E-06, 1] (m^3/s)"
 bad f1_high "  f1 = 0.03, 2000.0" "&sweep: f1(2) = 2000.0 is not allowed: must be a finite number in [0, 1000] (kg/m)"
 bad threads "  mass = 60.0\n  threads = -1" "&sweep: threads = -1 is not allowed: must be a whole number in [0, 1024]"
+# a range's first and last have the shared declaration's bounds and no other (was a reader's own -1e6 .. 1e6)
+bad f1_range_high "  f1_range = 0.03, 2000, 3" "&sweep: f1_range = 0.03, 2000, 3 is not allowed: first and last: must be a finite number in [0, 1000] (kg/m)"
+bad f1_range_far "  f1_range = 0.03, 2e7, 3" "&sweep: f1_range = 0.03, 2e7, 3 is not allowed: first and last: must be a finite number in [0, 1000] (kg/m)"
 bad too_many "  mass_range = 50, 100, 10000\n  height_range = 1.5, 1.9, 10000" "at most 1000000 rides"
 
 echo "$checks checks, $failures failed"
