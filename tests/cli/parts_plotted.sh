@@ -11,7 +11,11 @@
 # matches the pelvis's own wall distance where the pelvis is in the water's
 # middle; a vehicle's plot has the same panel from
 # /sled/vehicle/<contact>/wall_distance. A point mass circling in a bowl at
-# constant speed has its speed and normal force drawn flat.
+# constant speed has its speed and normal force drawn flat. A vehicle that
+# flies (mat_jump) has its flights shaded and its landings marked on every
+# plot over time, from /sled/vehicle/open and its landing table, and its
+# wall panel (the mat on the bottom line: rounding noise) drawn flat. Every
+# title of a slide's picture lies inside the picture.
 set -u
 slidesim=$1
 root=$(pwd)
@@ -35,7 +39,7 @@ done
 [ "$count" -ge 23 ] || fail "only $count inputs in inputs/parts"
 # what the unrolled panels draw (a ride on the half-pipe, the ring on it)
 "$python" - "$root/python" "$results/parts_halfpipe.h5" "$results/parts_ring.h5" "$results/parts_bowl_point_mass.h5" \
-  >"$work/panels.out" 2>&1 <<'EOF' \
+  "$results/parts_mat_jump.h5" >"$work/panels.out" 2>&1 <<'EOF' \
   || fail "the unrolled panels: $(cat "$work/panels.out")"
 import sys
 sys.path.insert(0, sys.argv[1])
@@ -45,7 +49,7 @@ import h5py
 import numpy as np
 from slidesim.plot import figure
 
-ride, sled, circling = sys.argv[2:5]
+ride, sled, circling, jump = sys.argv[2:6]
 fig = figure(ride)
 ax = fig.axes[0]
 assert "distance along the wall" in ax.get_ylabel(), ax.get_ylabel()
@@ -91,6 +95,63 @@ with h5py.File(circling, "r") as f:
         assert ax.yaxis.get_offset_text().get_text() == "", (name, ax.yaxis.get_offset_text().get_text())
         assert ax.get_legend().get_texts()[0].get_text().startswith("constant to "), name
     print("point mass: speed and normal force drawn flat")
+# a vehicle that flies (mat_jump): every plot over time shades its flights
+# (a contact open; both open darker) from /sled/vehicle/open and draws each
+# landing at /sled/vehicle/flight/landing/time; its wall panel, the mat on
+# the bottom line (1e-15 m of rounding), spans at least 1 cm either side
+fig = figure(jump)
+fig.canvas.draw()
+with h5py.File(jump, "r") as f:
+    t = f["sled/time"][...]
+    is_open = f["sled/vehicle/open"][...]
+    landings = f["sled/vehicle/flight/landing/time"][...]
+    wall = np.concatenate([f[f"sled/vehicle/{c}/wall_distance"][...] for c in ("rear", "front")])
+def runs(flying):
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], flying.astype(int), [0]])))
+    return [(t[a], t[min(b, len(t) - 1)]) for a, b in zip(edges[::2], edges[1::2])]
+expected = {"flight": runs(is_open != 0), "whole_flight": runs(is_open == 3)}
+assert len(expected["flight"]) >= 1 and len(expected["whole_flight"]) >= 1 and len(landings) >= 2, \
+    (expected, landings)
+over_time = [a for a in fig.axes if a.get_xlabel() == "time [s]"]
+assert len(over_time) == 5, [a.get_title() for a in fig.axes]
+for a in over_time:
+    for gid, spans in expected.items():
+        drawn = sorted((min(p.get_xy()[:, 0]), max(p.get_xy()[:, 0])) for p in a.patches if p.get_gid() == gid)
+        assert np.allclose(drawn, spans, rtol=0, atol=1e-12), (a.get_title(), gid, drawn, spans)
+    lines = sorted(l.get_xdata()[0] for l in a.lines if l.get_gid() == "landing")
+    assert np.allclose(lines, np.sort(landings), rtol=0, atol=1e-12), (a.get_title(), lines, landings)
+assert np.abs(wall).max() < 1e-9, np.abs(wall).max()
+panel = [a for a in fig.axes if "distance along the wall" in a.get_ylabel()][0]
+low, high = panel.get_ylim()
+assert low <= -0.01 and high >= 0.01, (low, high)
+assert panel.yaxis.get_offset_text().get_text() == "", panel.yaxis.get_offset_text().get_text()
+print(f"mat_jump: {len(expected['flight'])} flight(s), {len(landings)} landings marked on {len(over_time)} plots; "
+      "the wall panel flat")
+EOF
+# every title of a slide's picture inside the picture (the 3-D panel's title,
+# the slide's description, ran off its left edge in one line for a chain of
+# six elements: bowl_halfpipe_slide)
+"$python" - "$root/python" "$results"/parts_*_slide.h5 >"$work/titles.out" 2>&1 <<'EOF' \
+  || fail "the slides' titles: $(cat "$work/titles.out")"
+import sys
+sys.path.insert(0, sys.argv[1])
+import matplotlib
+matplotlib.use("Agg")
+from slidesim.plot import figure
+
+assert len(sys.argv) > 6, sys.argv
+for name in sys.argv[2:]:
+    fig = figure(name)
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    width, height = fig.canvas.get_width_height()
+    texts = [a.title for a in fig.axes] + [t for t in fig.texts]
+    for text in texts:
+        if not text.get_text():
+            continue
+        box = text.get_window_extent(renderer)
+        assert box.x0 >= 0 and box.x1 <= width and box.y1 <= height, (name, text.get_text(), box, width)
+    print(f"{name}: {len(texts)} titles inside the picture")
 EOF
 echo "$count inputs of inputs/parts run and plotted, $failures failures"
 [ "$failures" = 0 ]

@@ -5,7 +5,12 @@ for a vehicle (docs/vehicles.md) also the felt acceleration at its centre of
 mass and, on a slide, how high each contact climbs the wall: its distance
 along the section from the bottom (/sled/vehicle/<contact>/wall_distance; the
 wall angle stops at 90 deg on a flume's vertical wall while the vehicle climbs
-on).
+on). A vehicle that flies (`&sled may_fly`, /sled/vehicle/open: bit 0 the
+rear contact, 1 the front) has its flights shaded on every plot over time
+(a contact open; both open, the whole vehicle in the air, darker) and each
+landing (/sled/vehicle/flight/landing/time) a dashed line. The wall panel
+spans at least 1 cm either side of the bottom, so that a vehicle riding the
+bottom line (rounding noise of 1e-15 m) is drawn flat, not as a climb.
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
@@ -15,6 +20,9 @@ from .common import draw_surface, equal_axes_3d
 from .multibody import contact_forces, coordinates, energy, suptitle
 
 SCENARIOS = ("sled",)
+FLIGHT_COLOUR = "tab:orange"
+BOTH_OPEN = 3
+WALL_SPAN = 0.01   # m, the wall panel's least extent either side of the bottom
 
 
 def draw(r, plt, args):
@@ -38,13 +46,22 @@ def draw(r, plt, args):
     ax.legend(loc="upper left", fontsize=8)
     equal_axes_3d(ax, np.vstack([pts, rear, front]))
     ax.set_title(f"{body} on the surface")
-    coordinates(fig.add_subplot(rows, 2, 2), r, g)
-    contact_forces(fig.add_subplot(rows, 2, 4), r, g, [("rear", "r"), ("front", "b")], ["rear"])
+    over_time = [coordinates(fig.add_subplot(rows, 2, 2), r, g)[0]]
+    forces = fig.add_subplot(rows, 2, 4)
+    contact_forces(forces, r, g, [("rear", "r"), ("front", "b")], ["rear"])
+    over_time.append(forces)
     if vehicle:
-        felt(fig.add_subplot(rows, 2, 6), r, g, t)
+        over_time.append(fig.add_subplot(rows, 2, 6))
+        felt(over_time[-1], r, g, t)
     if on_slide:
-        wall(fig.add_subplot(rows, 2, 8), r, g, t)
-    energy(fig.add_subplot(rows, 2, 2 * rows), r, g)
+        over_time.append(fig.add_subplot(rows, 2, 8))
+        wall(over_time[-1], r, g, t)
+    over_time.append(fig.add_subplot(rows, 2, 2 * rows))
+    energy(over_time[-1], r, g)
+    if g + "/vehicle/open" in r:
+        for a in over_time:
+            mark_flights(a, r, g, t, label=a is forces)
+        forces.legend(loc="upper left", fontsize=8)
     suptitle(fig, r)
     fig.tight_layout()
     return fig
@@ -68,8 +85,42 @@ def wall(ax, r, g, t):
     for name, style in (("rear", "r-"), ("front", "b-")):
         ax.plot(t, r[f"{g}/vehicle/{name}/wall_distance"].values, style, label=f"{name} contact")
     ax.axhline(0, color="k", lw=0.5)
+    low, high = ax.get_ylim()
+    ax.set_ylim(min(low, -WALL_SPAN), max(high, WALL_SPAN))
     ax.set_xlabel("time [s]")
     ax.set_ylabel("distance along the wall\nfrom the bottom [m, + left]")
     ax.grid(True)
     ax.legend(loc="upper left", fontsize=8)
     ax.set_title("how high it climbs: distance up the wall (not the wall angle)")
+
+
+def flight_spans(t, flying):
+    """(start, end) times of each run of records in flight: from the
+    take-off record to the first record back on (the landing's), or to the
+    last record."""
+    spans, start = [], None
+    for i, flag in enumerate(flying):
+        if flag and start is None:
+            start = i
+        elif not flag and start is not None:
+            spans.append((t[start], t[i]))
+            start = None
+    if start is not None:
+        spans.append((t[start], t[-1]))
+    return spans
+
+
+def mark_flights(ax, r, g, t, label=False):
+    """The vehicle's flights as shaded spans over time (both contacts open
+    darker) and its landings as dashed lines."""
+    is_open = r[g + "/vehicle/open"].values
+    for j, (start, end) in enumerate(flight_spans(t, is_open != 0)):
+        ax.axvspan(start, end, color=FLIGHT_COLOUR, alpha=0.15, lw=0, gid="flight",
+                   label="in flight (a contact open)" if label and j == 0 else None)
+    for j, (start, end) in enumerate(flight_spans(t, is_open == BOTH_OPEN)):
+        ax.axvspan(start, end, color=FLIGHT_COLOUR, alpha=0.3, lw=0, gid="whole_flight",
+                   label="whole vehicle in the air" if label and j == 0 else None)
+    if g + "/vehicle/flight/landing/time" in r:
+        for j, when in enumerate(r[g + "/vehicle/flight/landing/time"].values):
+            ax.axvline(when, color=FLIGHT_COLOUR, ls="--", lw=0.9, gid="landing",
+                       label="a landing" if label and j == 0 else None)

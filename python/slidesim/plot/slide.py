@@ -8,11 +8,14 @@ a free-form patch, blended sections) a map of it over arc length and v.
 
     slidesim-plot RESULT.h5 [-o PICTURE] [--show]
 """
+import textwrap
+
 import numpy as np
 
 from .common import draw_surface, equal_axes_3d, title
 
 SCENARIOS = ("geometry",)
+SURFACE_TITLE_WIDTH = 70   # characters a line of the 3-D panel's title holds
 
 
 def curvature_parts(points, s, chi):
@@ -61,7 +64,10 @@ def draw(r, plt, args):
             ax.quiver(p[:, 0], p[:, 1], p[:, 2], d[:, 0], d[:, 1], d[:, 2], color=colour, lw=0.8)
         ax.legend(loc="upper left")
     equal_axes_3d(ax, pts)
-    ax.set_title(f"{r.attrs.get('surface', 'surface')}\n(frames: x red, y green, z blue)")
+    # the surface's description in lines that fit the 3-D panel (half the
+    # figure: a slide of six elements ran off its left edge in one line)
+    surface = "\n".join(textwrap.wrap(r.attrs.get("surface", "surface"), SURFACE_TITLE_WIDTH))
+    ax.set_title(f"{surface}\n(frames: x red, y green, z blue)")
     if tube:
         turning, vertical = curvature_parts(points, s, chi)
         s_grid, distance = wall_distance(r, points, s)
