@@ -247,7 +247,7 @@ contains
 
   !> The parts list of a chain: one entry per kind of element that differs
   !> in kind, direction or a parameter its kind uses, with its count, in the
-  !> order of first use.
+  !> order of first use (every patch a part of its own).
   pure function parts_of(elements) result(parts)
     type(slide_element_t), intent(in) :: elements(:)
     type(part_t), allocatable :: parts(:)
@@ -269,7 +269,8 @@ contains
     parts = parts(:n)
   end function parts_of
 
-  !> Whether two elements are the same part: kind, and every value the kind uses.
+  !> Whether two elements are the same part: kind, and every value the kind uses
+  !> (a bowl's profile and its table too; a free-form patch is never another's).
   pure logical function alike(a, b)
     type(slide_element_t), intent(in) :: a, b
     alike = a%kind == b%kind
@@ -282,10 +283,27 @@ contains
               a%direction == b%direction
     case ('helix')
       alike = a%radius == b%radius .and. a%turns == b%turns .and. a%drop == b%drop .and. a%direction == b%direction
-    case default   ! a drop
+    case ('drop')
       alike = a%drop == b%drop .and. a%slope_deg == b%slope_deg .and. a%radius == b%radius
+    case ('bowl')
+      alike = a%radius == b%radius .and. a%slope_deg == b%slope_deg .and. a%drop == b%drop .and. &
+              a%turns == b%turns .and. a%direction == b%direction .and. a%bowl_profile == b%bowl_profile
+      if (alike .and. a%bowl_profile == 'table') alike = same_points(a%bowl_rho, b%bowl_rho) .and. &
+                                                        same_points(a%bowl_z, b%bowl_z)
+    case ('funnel')
+      alike = a%length == b%length .and. a%slope_deg == b%slope_deg .and. a%radius == b%radius
+    case default   ! a patch: free-form, its wall from a file of its own, each one a part of its own
+      alike = .false.
     end select
   end function alike
+
+  !> Whether two profile tables (a table bowl's points) are the same.
+  pure logical function same_points(a, b)
+    real(wp), allocatable, intent(in) :: a(:), b(:)
+    same_points = allocated(a) .eqv. allocated(b)
+    if (same_points .and. allocated(a)) same_points = size(a) == size(b)
+    if (same_points .and. allocated(a)) same_points = all(a == b)
+  end function same_points
 
   !> A part in words: 'curve left, radius 5 m, angle 90 deg, slope 6 deg'.
   function part_text(e) result(text)
@@ -300,9 +318,18 @@ contains
     case ('helix')
       text = 'helix '//trim(e%direction)//', '//value_text(e, PARAMETER_RADIUS)//', turns '// &
              format_short(e%turns)//', drop '//format_short(e%drop)//' m'
-    case default
+    case ('drop')
       text = 'drop, height '//format_short(e%drop)//' m, top '//value_text(e, PARAMETER_SLOPE)//', curve-out '// &
              value_text(e, PARAMETER_RADIUS)
+    case ('bowl')
+      text = 'bowl '//trim(e%direction)//', '//trim(e%bowl_profile)//', entry '//value_text(e, PARAMETER_RADIUS)// &
+             ' from its axis, wall '//value_text(e, PARAMETER_SLOPE)//', drop '//format_short(e%drop)//' m, turns '// &
+             format_short(e%turns)
+    case ('funnel')
+      text = 'funnel, '//value_text(e, PARAMETER_LENGTH)//', '//value_text(e, PARAMETER_SLOPE)//', widest '// &
+             value_text(e, PARAMETER_RADIUS)
+    case default
+      text = trim(e%kind)//' (free-form), '//value_text(e, PARAMETER_LENGTH)//', '//value_text(e, PARAMETER_SLOPE)
     end select
   end function part_text
 

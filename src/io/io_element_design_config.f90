@@ -93,8 +93,8 @@ contains
         end if
         if (.not. uses(elements(d%element(i))%kind, p)) then
           call r%invalid(indexed_name('parameter', i), ''''//trim(parameter(i))//'''', 'element '// &
-                         format_integer(d%element(i))//' is a '//trim(elements(d%element(i))%kind)//', which '// &
-                         'has no '//trim(parameter_names(p))//' to vary ('//kinds_using(p)//')', status)
+                         format_integer(d%element(i))//' is a '//trim(elements(d%element(i))%kind)//', whose '// &
+                         trim(parameter_names(p))//' is not a design variable ('//kinds_using(p)//')', status)
           cycle
         end if
         if (.not. lower(i) < upper(i)) then

@@ -111,15 +111,17 @@ contains
       call file%write_integers(p//'kind', [(findloc(element_kinds, e(k)%kind, 1), k=1, n)], '1', &
                                'its kind: '//kind_legend(), status)
       call file%write_integers(p//'direction', [(direction(k), k=1, n)], '1', &
-                               'its direction: 1 left, -1 right (curve, helix), 0 none', status)
-      call file%write_vector(p//'length', e%length, 'm', 'its horizontal length (straight, runout; else 0)', status)
+                               'its direction: 1 left, -1 right (curve, helix, bowl), 0 none', status)
+      call file%write_vector(p//'length', e%length, 'm', 'its horizontal length (straight, runout, funnel, patch; else 0)', status)
       call file%write_vector(p//'slope', e%slope_deg, 'degree', &
-                             'its slope, downhill positive (straight, curve, runout; a drop''s top; else 0)', status)
-      call file%write_vector(p//'radius', e%radius, 'm', 'its radius (curve, helix; a drop''s curve-out; else 0)', &
+                             'its slope, downhill positive (straight, curve, runout, funnel, patch; a drop''s top; a bowl''s '// &
+                             'wall at the entry; else 0)', status)
+      call file%write_vector(p//'radius', e%radius, 'm', 'its radius (curve, helix; a drop''s curve-out; a bowl''s entry '// &
+                             'from its axis; a funnel''s widest; else 0)', &
                              status)
       call file%write_vector(p//'angle', e%angle_deg, 'degree', 'its turning angle (curve; else 0)', status)
-      call file%write_vector(p//'turns', e%turns, '1', 'its turns (helix; else 0)', status)
-      call file%write_vector(p//'drop', e%drop, 'm', 'the height it loses (helix, drop; else 0)', status)
+      call file%write_vector(p//'turns', e%turns, '1', 'its turns (helix, bowl; else 0)', status)
+      call file%write_vector(p//'drop', e%drop, 'm', 'the height it loses (helix, drop, bowl; else 0)', status)
     end associate
     call file%write_text(p//'list', parts_list(chosen), 'the parts list in words: count, part, its elements', &
                          status)
@@ -132,7 +134,7 @@ contains
       integer, intent(in) :: k
       direction = 0
       associate (e => chosen%parts(k)%element)
-        if (e%kind == 'curve' .or. e%kind == 'helix') direction = merge(1, -1, e%direction == 'left')
+        if (e%kind == 'curve' .or. e%kind == 'helix' .or. e%kind == 'bowl') direction = merge(1, -1, e%direction == 'left')
       end associate
     end function direction
   end subroutine write_catalogue

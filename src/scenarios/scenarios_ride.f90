@@ -99,7 +99,8 @@ contains
                                                      write_status, description%water)
       ! the time series as CSV only for a complete run: a CSV cannot say it is cut short
       if (complete .and. write_status%ok() .and. allocated(run%ride_csv)) then
-        if (len(run%ride_csv) > 0) call write_ride_csv(run%ride_csv, ride%series, report, write_status)
+        if (len(run%ride_csv) > 0) call write_ride_csv(run%ride_csv, ride%series, report, ride%flights%watched, &
+                                                        write_status)
       end if
       if (.not. result%status%ok()) then
         status = result%status
@@ -465,7 +466,7 @@ contains
         's', 's with the pelvis in the air or alone on the slide (the model holds its attitude there: not what '// &
         'a rider feels); the whole rider in the air counts as 0 g (docs/rider.md)')
       if (ride%complete) then
-        call summary%add('exit_speed', 'exit speed (into the run-out)', r%final_speed, 'm/s')
+        call summary%add('exit_speed', 'exit speed (end of the slide)', r%final_speed, 'm/s')
       else
         call summary%add('final_speed', 'speed at the stop', r%final_speed, 'm/s')
       end if

@@ -154,7 +154,7 @@ contains
     call file%write_scalar(g//'top_speed_arc_length', r%top_speed_at, 'm', 'where (pelvis arc length)', status)
     call file%write_scalar(g//'final_speed', r%final_speed, 'm/s', 'speed at the stop', status)
     if (ride%complete) call file%write_scalar(g//'exit_speed', r%final_speed, 'm/s', &
-                                              'speed when the rider leaves the slide (the run-out entry)', status)
+                                              'speed when the rider leaves the slide (at its end)', status)
     if (r%ejected_contact > 0) call file%write_scalar(g//'ejected_arc_length', r%ejected_at, 'm', &
       'where the '//trim(contact_names(r%ejected_contact))//' went over the top of a wall (pelvis arc length)', &
       status)
@@ -236,24 +236,29 @@ contains
     end do
   end subroutine write_limit_verdicts
 
-  !> --ride-csv: one line per record of the ride (as /rider in the result).
-  subroutine write_ride_csv(path, s, r, status)
+  !> --ride-csv: one line per record of the ride (as /rider in the result);
+  !> a ride that may fly (`flights`) adds the column airborne (the open
+  !> contacts, as /rider/airborne: its felt values there are the model's,
+  !> not what a rider feels).
+  subroutine write_ride_csv(path, s, r, flights, status)
     character(len=*), intent(in) :: path
     type(ride_series_t), intent(in) :: s
     type(ride_report_t), intent(in) :: r
+    logical, intent(in) :: flights
     type(status_t), intent(inout) :: status
-    character(len=*), parameter :: names(20) = [character(len=24) :: 'time_s', 'arc_length_m', 'speed_m_per_s', &
+    character(len=*), parameter :: names(21) = [character(len=24) :: 'time_s', 'arc_length_m', 'speed_m_per_s', &
       'felt_longitudinal_g', 'felt_lateral_g', 'felt_normal_g', 'pelvis_x_m', 'pelvis_y_m', 'pelvis_z_m', &
       'normal_force_pelvis_N', 'normal_force_heels_N', 'normal_force_back_N', 'wall_angle_pelvis_deg', &
       'wall_angle_heels_deg', 'wall_angle_back_deg', 'lever_arm_m', 'heading_deg', 'kinetic_energy_J', &
-      'energy_J', 'in_water_pelvis']
+      'energy_J', 'in_water_pelvis', 'airborne']
     real(wp), allocatable :: table(:, :)
     real(wp), parameter :: deg = 180/acos(-1.0_wp)
     type(text_output_t) :: out
     character(len=20*size(names)) :: line
-    integer :: n, k, i
+    integer :: n, k, i, columns
     n = s%n
-    allocate (table(n, size(names)))
+    columns = size(names) - merge(0, 1, flights)
+    allocate (table(n, columns))
     table(:, 1) = s%time(:n)
     table(:, 2) = s%arc_length(:n)
     table(:, 3) = s%speed(:n)
@@ -268,10 +273,11 @@ contains
     table(:, 18) = s%kinetic(:n)
     table(:, 19) = s%energy(:n)
     table(:, 20) = s%contact(CONTACT_PELVIS)%in_water(:n)
+    if (flights) table(:, 21) = real(s%airborne(:n), wp)
     call out%create(path, 'the ride CSV', status)
     if (.not. status%ok()) return
     line = names(1)
-    do k = 2, size(names)
+    do k = 2, columns
       line = trim(line)//','//names(k)
     end do
     call out%write_line(trim(line))

@@ -97,7 +97,7 @@ refuse list_and_step 'give radii or radius_step, not both' --set 'catalogue%radi
 refuse no_value_inside 'holds no value inside the bounds 4 … 12 deg of design variable 3' \
   --set 'catalogue%slope_step_deg=13' "$input"
 refuse empty '&catalogue is empty' --unset catalogue%radii --unset catalogue%slope_step_deg "$input"
-refuse wrong_parameter 'element 1 is a straight, which has no radius to vary' \
+refuse wrong_parameter 'element 1 is a straight, whose radius is not a design variable (a radius: curve, helix)' \
   --set 'design_elements%element=1,4,3' "$input"
 refuse start_outside 'must hold the start value 4 m of element 2' --set 'design_elements%lower=4.5,3,4' "$input"
 refuse out_of_range 'the slope must lie in (-60, 60) deg' --set 'design_elements%upper=8,8,70' "$input"

@@ -2,7 +2,8 @@
 # Words that do not mislead (issue 27, point 6): the ride report says braking
 # and pushing for the longitudinal felt acceleration (never a "max" that is
 # negative), the side of the wall each contact climbed, what the sign of a
-# lateral or normal felt acceleration means; a closed standard input is a
+# lateral or normal felt acceleration means, where the exit speed is taken
+# (the end of the slide); a closed standard input is a
 # read error (exit 3) that says so, not "the input is empty".
 slidesim=$1
 repo=$(pwd)   # tests run from the repository root
@@ -26,6 +27,11 @@ for c in pelvis heels back; do
   check 'grep -q "^  $c highest on the wall  *[0-9.]* m along the wall from the bottom, on the left$" "$work/ride.out"' \
     "$c: the wall's side: $(grep "$c highest" "$work/ride.out")"
 done
+# the exit speed is the speed where the ride leaves the slide, at the end of
+# its last element (the demo's run-out), not as it enters the run-out
+check 'grep -q "^  exit speed (end of the slide)  *[0-9.]* m/s$" "$work/ride.out"' \
+  "exit speed: $(grep 'exit speed' "$work/ride.out")"
+check '! grep -q "into the run-out" "$work/ride.out"' "the exit speed said to be into the run-out"
 # the JSON keeps the signed values under their names
 check 'grep -q "\"felt_longitudinal_max\": *-0\.06" "$work/ride.json" && grep -q "\"felt_longitudinal_min\": *-0\.14" "$work/ride.json"' \
   "the JSON's signed longitudinal values: $(grep -o '"felt_longitudinal_m[a-z]*": *[-0-9.e]*' "$work/ride.json")"

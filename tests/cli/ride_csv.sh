@@ -3,7 +3,8 @@
 # JSON: the header names the columns of docs/outputs.md, one row per record
 # of /rider, and its columns equal the result's datasets to its nine digits
 # (time, speed, felt g, the pelvis's position, normal forces, wall angles in
-# degrees). Refused: another scenario (exit 1), a device (a private
+# degrees); a ride that may fly adds the column airborne, equal to
+# /rider/airborne. Refused: another scenario (exit 1), a device (a private
 # /dev/full node: exit 3, nothing run).
 set -u
 slidesim=$1
@@ -44,6 +45,24 @@ else:
 for line in bad:
     print('FAIL ' + line)
 sys.exit(1 if bad else 0)
+PY
+# a ride that may fly (inputs/ride/jump.nml): the column airborne after
+# the documented ones, equal to /rider/airborne (the felt values where it is
+# not 0 are the model's, not the rider's: the CSV must say where they are)
+"$slidesim" -q -o "$work/jump.h5" --ride-csv "$work/jump.csv" "$root/inputs/ride/jump.nml" >"$work/out" 2>&1 \
+  || fail "the jump ride with --ride-csv: $(cat "$work/out")"
+"$python" - "$work/jump.csv" "$work/jump.h5" "$work/ride.csv" <<'PY' || fail "jump.csv: the column airborne"
+import sys
+import numpy as np, h5py
+csv, h5, plain = sys.argv[1:]
+header = open(csv).readline().strip().split(',')
+assert header == open(plain).readline().strip().split(',') + ['airborne'], header
+table = np.loadtxt(csv, delimiter=',', skiprows=1)
+with h5py.File(h5) as f:
+    airborne = f['/rider/airborne'][()]
+assert len(table) == len(airborne) and np.array_equal(table[:, -1], airborne), 'airborne differs from the result'
+assert (airborne == 7).any(), 'the jump has no whole flight'
+print(f"jump.csv: airborne on {np.count_nonzero(airborne)} of {len(airborne)} rows")
 PY
 ls -a "$work" | grep -q '\.tmp' && fail "a temporary file was left"
 "$slidesim" -q -o "$work/g.h5" --ride-csv "$work/g.csv" "$root/inputs/geometry/flume.nml" >"$work/out" 2>&1

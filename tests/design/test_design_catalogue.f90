@@ -4,7 +4,8 @@
 !>   documented order (moved variables 0, 1, 2; lower neighbour first), cut
 !>   at the budget, clipped at the ends of the allowed lists;
 !> - the parts list counts identical elements (two straights alike, a curve
-!>   left and one right apart);
+!>   left and one right apart); bowls, funnels, patches and drops each as
+!>   their own kind, alike only in every value their kind uses;
 !> - on a small slide, snapping a given continuous point: every variable of
 !>   the design chosen is an allowed value, the design is the feasible one
 !>   of least acceleration cost among all 9 of the neighbourhood (ridden
@@ -20,7 +21,7 @@ program test_design_catalogue
   use design_geometry_optimization, only: optimization_setup_t, design_evaluation_t, evaluate_design, &
     constraint_violations
   use design_catalogue, only: catalogue_t, catalogue_result_t, allowed_values_t, choose_from_catalogue, &
-    neighbourhood, parts_of, part_t, nearest_allowed
+    neighbourhood, parts_of, part_t, part_text, nearest_allowed
   use testing, only: check, finish_tests
   implicit none (type, external)
 
@@ -60,7 +61,48 @@ contains
     call check(all(parts%count == [2, 2, 1, 1]), 'parts: counts 2, 2, 1, 1')
     call check(all(parts(1)%elements == [1, 3]) .and. all(parts(2)%elements == [2, 5]), &
                'parts: the elements of each part')
+    call check_parts_beyond_the_tube()
   end subroutine check_parts
+
+  !> Bowls, funnels, patches and drops are parts of their own kind, named as
+  !> such (the parts list once called a bowl or a funnel a 'drop', and two
+  !> funnels of different lengths one part), alike only in every value their
+  !> kind uses.
+  subroutine check_parts_beyond_the_tube()
+    type(part_t), allocatable :: parts(:)
+    type(slide_element_t) :: bowl, cone, deeper, table_bowl, other_table, funnel, longer, patch, drop
+    character(len=:), allocatable :: text
+    integer :: k
+    bowl = slide_element_t(kind='bowl', radius=6.0_wp, slope_deg=50.0_wp, drop=2.0_wp, turns=1.0_wp)
+    cone = bowl; cone%bowl_profile = 'cone'
+    deeper = bowl; deeper%turns = 1.5_wp
+    table_bowl = bowl; table_bowl%bowl_profile = 'table'; table_bowl%slope_deg = 0
+    table_bowl%bowl_rho = [0.0_wp, 2.0_wp, 4.0_wp, 6.0_wp, 8.0_wp, 10.0_wp]
+    table_bowl%bowl_z = 0.1_wp*table_bowl%bowl_rho**2
+    other_table = table_bowl; other_table%bowl_z(6) = 11.0_wp
+    funnel = slide_element_t(kind='funnel', length=20.0_wp, slope_deg=3.0_wp, radius=2.4_wp)
+    longer = funnel; longer%length = 24.0_wp
+    patch = slide_element_t(kind='patch', length=12.0_wp, slope_deg=5.0_wp)
+    drop = slide_element_t(kind='drop', slope_deg=80.0_wp, radius=8.0_wp, drop=10.0_wp)
+    parts = parts_of([drop, bowl, funnel, bowl, cone, deeper, longer, table_bowl, other_table, table_bowl, patch, &
+                      patch, funnel])
+    call check(size(parts) == 10, 'parts beyond the tube: 10 parts (drop, bowl, funnel, cone, deeper bowl, longer '// &
+               'funnel, two tables, two patches)')
+    if (size(parts) /= 10) return
+    call check(all(parts%count == [1, 2, 2, 1, 1, 1, 2, 1, 1, 1]), 'parts beyond the tube: counts')
+    call check(all(parts(2)%elements == [2, 4]) .and. all(parts(3)%elements == [3, 13]) .and. &
+               all(parts(7)%elements == [8, 10]), 'parts beyond the tube: the alike elements together')
+    call check(all([(parts(k)%element%kind, k=1, 10)] == [character(len=8) :: 'drop', 'bowl', 'funnel', 'bowl', &
+               'bowl', 'funnel', 'bowl', 'bowl', 'patch', 'patch']), 'parts beyond the tube: each its own kind')
+    do k = 1, 10
+      text = part_text(parts(k)%element)
+      call check(index(text, trim(parts(k)%element%kind)) == 1, 'part '//text//': named by its kind')
+    end do
+    call check(part_text(bowl) == 'bowl left, sphere, entry radius 6 m from its axis, wall slope 50 deg, drop 2 m, '// &
+               'turns 1', 'part text of a bowl: '//part_text(bowl))
+    call check(part_text(funnel) == 'funnel, length 20 m, slope 3 deg, widest radius 2.4 m', &
+               'part text of a funnel: '//part_text(funnel))
+  end subroutine check_parts_beyond_the_tube
 
   subroutine check_snapping()
     type(optimization_setup_t) :: setup
