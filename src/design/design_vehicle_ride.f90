@@ -24,7 +24,7 @@ module design_vehicle_ride
   use geometry_surface, only: surface_t
   use geometry_slide_query, only: slide_surface_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, DRIVE_END_TIME, DRIVE_EVENT_STOP
-  use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_END_OF_SURFACE
+  use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_END_OF_SURFACE, STOP_SIDE_EDGE
   use kinetostatics_models, only: sled_description_t
   use water_run, only: water_description_t, water_result_t, compute_water
   use rider_flight, only: ride_flights_t
@@ -40,10 +40,12 @@ module design_vehicle_ride
   public :: FAILED_NONE, FAILED_REFUSED, FAILED_WATER, FAILED_BUILD, FAILED_START, FAILED_RUN
 
   !> The limits a vehicle's ride is judged on (docs/vehicles.md, "Limits"):
-  !> the quantities of the body-slide rider that a rigid vehicle has ...
-  character(len=*), parameter :: vehicle_quantities(8) = [character(len=25) :: 'speed', 'exit_speed', &
+  !> the quantities of the body-slide rider that a rigid vehicle has (its
+  !> ejection: a contact over the top of an open section's wall, where the
+  !> run stops at the surface's side edge) ...
+  character(len=*), parameter :: vehicle_quantities(9) = [character(len=25) :: 'speed', 'exit_speed', &
     'acceleration_longitudinal', 'acceleration_lateral', 'acceleration_normal', 'normal_force', 'wall_angle', &
-    'wall_distance']
+    'wall_distance', 'ejection']
   !> ... and those of a vehicle that may fly (vehicle%may_fly)
   character(len=*), parameter :: flight_quantities(2) = [character(len=12) :: 'airtime', 'drop_height']
 
@@ -377,6 +379,10 @@ contains
           values = maxval(abs(ride%wall_angle), dim=1)*180/pi       ! the higher of the two contacts'
         case ('wall_distance')
           values = maxval(abs(ride%wall_distance), dim=1)
+        case ('ejection')   ! 1: a contact went over the top of a wall (the run stopped there), else 0
+          call evaluate_limit(d%limits(k), [merge(1.0_wp, 0.0_wp, sys%stop_kind == STOP_SIDE_EDGE)], where(n:n), &
+                              ride%verdicts(k))
+          cycle
         case ('airtime', 'drop_height')
           call judge_flights(d%limits(k), where(1), ride%verdicts(k), ride%flights)
           cycle

@@ -40,6 +40,7 @@ module scenarios_sled
   use scenarios_water, only: build_water
   use water_run, only: water_description_t, water_result_t
   use water_flow, only: outcome_name
+  use water_series, only: water_series_t
   use io_water_results, only: write_water_results
   use io_input, only: group_present, where_given
   use geometry_tube, only: tube_surface_t
@@ -234,8 +235,8 @@ contains
       end if
       call r%invalid('limit_quantity('//format_integer(k)//')', ''''//limits(k)%quantity//'''', &
                      'a vehicle''s ride is judged on speed, exit_speed, acceleration_longitudinal, '// &
-                     'acceleration_lateral, acceleration_normal, normal_force, wall_angle and wall_distance, '// &
-                     'and with may_fly on airtime and drop_height; '// &
+                     'acceleration_lateral, acceleration_normal, normal_force, wall_angle, wall_distance and '// &
+                     'ejection, and with may_fly on airtime and drop_height; '// &
                      limits(k)%quantity//' belongs to the body-slide rider (its tipping: '// &
                      'docs/vehicles.md, "Limits")', status)
       return
@@ -384,8 +385,9 @@ contains
     associate (d => self%description, ride => self%ride)
       call summary%add('vehicle_width', 'vehicle width', ride%width, 'm')
       if (d%vehicle%in_water) then
-        call summary%add_text('water', 'water', 'computed, '//format_short(d%water%flow_rate)//' m^3/s, '// &
-                              outcome_name(ride%water%series%outcome)//' (its drag at both contacts)')
+        call summary%add_text('water', 'water', 'computed, '//format_short(d%water%flow_rate)//' m^3/s'// &
+                              inlets_text(ride%water%series)//', '//outcome_name(ride%water%series%outcome)// &
+                              ' (its drag at both contacts)')
       else
         call summary%add_text('water', 'water', 'none: the vehicle rides dry (&sled water = ''dry'')')
       end if
@@ -456,4 +458,18 @@ contains
                              format_integer(size(d%limits))//' set')
     end associate
   end subroutine vehicle_summarise
+
+  !> The summary's words for the inlets downstream of the start: '' without
+  !> any, else how many joined and the flow at the end (the water line's
+  !> flow rate is the start's).
+  function inlets_text(series) result(text)
+    type(water_series_t), intent(in) :: series
+    character(len=:), allocatable :: text
+    text = ''
+    if (.not. allocated(series%inlets)) return
+    if (size(series%inlets) == 0 .or. series%n < 1) return
+    text = ' at the start, '//format_short(series%flow(series%n))//' m^3/s at the end ('// &
+           format_integer(count(series%inlets%joined))//' of '//format_integer(size(series%inlets))// &
+           ' inlets joined)'
+  end function inlets_text
 end module scenarios_sled

@@ -173,6 +173,22 @@ if abs(t - 4.205761) > 1e-3 or abs(u - 13.368) > 0.01:
     print(f"lift-off at t = {t} s, u = {u} m; expected 4.2058 s, 13.368 m")
     sys.exit(1)
 PY
+# ejection (docs/vehicles.md, "Limits"; refused for a vehicle before, while
+# a vehicle does go over a wall's top, ending its run with exit 0): the ring
+# of inputs/parts/bowl_halfpipe_ring.nml started at 15 m/s climbs the
+# half-pipe's right wall and goes over its top on the entry straight (the
+# run stops at the side edge); a limit ejection <= 0 is exceeded (exit 4
+# with --fail-on-limit, the file complete); at the shipped 1 m/s it is met
+ring_input=$root/inputs/parts/bowl_halfpipe_ring.nml
+eject_limit=(--set "sled%limit_quantity='ejection'" --set "sled%limit_unit='1'" --set "sled%limit_max=0")
+(cd "$work" && "$slidesim" --fail-on-limit -o eject.h5 --summary-json eject.json --set sled%du0=15 "${eject_limit[@]}" \
+  "$ring_input" >eject.out 2>eject.err); got=$?
+check '[ $got = 4 ] && grep -q "stopped at  *over the side edge" "$work/eject.out" && grep -q "LIMIT EXCEEDED: ejection <= 0; worst 1" "$work/eject.out" && [ -f "$work/eject.h5" ]' \
+  "a ring over the wall's top: exit $got, expected 4 and ejection exceeded: $(cat "$work/eject.out" "$work/eject.err")"
+check 'grep -q "\"limits_exceeded\": *1" "$work/eject.json"' "the ring over the wall: the JSON's limits_exceeded"
+(cd "$work" && "$slidesim" --fail-on-limit -o kept.h5 "${eject_limit[@]}" "$ring_input" >kept.out 2>kept.err); got=$?
+check '[ $got = 0 ] && grep -q "stopped at  *end of slide" "$work/kept.out" && grep -q "limit ejection <= 0: ok (closest 0 " "$work/kept.out"' \
+  "the shipped ring with an ejection limit: exit $got, expected 0 and the limit met: $(cat "$work/kept.out" "$work/kept.err")"
 # up the wall (docs/vehicles.md, "How high it climbs"; on 3e73489 a
 # vehicle's wall angle was refused): a mat started 0.2 rad up the demo
 # slide's tube (radius 0.5 m) on its straight entry: both contacts at wall
@@ -216,6 +232,13 @@ printf '%s\n%s\n' "$head" "&sled vehicle = 'mat', friction = 'coulomb', mu = 0.0
 (cd "$work" && "$slidesim" -o wet.h5 --summary-json wet.json wet.nml >wet.out 2>wet.err); got=$?
 check '[ $got = 0 ] && grep -q "water  *computed, 0.004 m^3/s, end of slide (its drag at both contacts)" "$work/wet.out"' \
   "the mat in the water: exit $got or the summary lacks the water: $(cat "$work/wet.out" "$work/wet.err")"
+# with a second inlet downstream the water line's flow rate is the start's:
+# it says so, and gives the flow at the end (the summary said 0.004 m^3/s
+# alone, with 6 l/s flowing past the inlet)
+printf '%s\n' "&inlet arc_length = 30.0, flow_rate = 0.002, speed = 3.0 /" | cat "$work/wet.nml" - >"$work/wet_inlet.nml"
+(cd "$work" && "$slidesim" -o wet_inlet.h5 wet_inlet.nml >wet_inlet.out 2>wet_inlet.err); got=$?
+check '[ $got = 0 ] && grep -q "water  *computed, 0.004 m^3/s at the start, 0.006 m^3/s at the end (1 of 1 inlets joined), end of slide (its drag at both contacts)" "$work/wet_inlet.out"' \
+  "the mat in the water of two inlets: exit $got or the summary's water line: $(grep water "$work/wet_inlet.out") $(cat "$work/wet_inlet.err")"
 "$python" - "$work/wet.h5" <<'PY' || { echo "FAIL the mat in the water (above)"; failures=$((failures + 1)); }
 import sys
 import h5py
