@@ -99,7 +99,6 @@ contains
     flight%coordinates = built%free
     flight%rotation_element = built%rotation_element
     flight%gap_monitors = built%gap_monitors
-    flight%carrier = carrier
     flight%mechanism_contact = [(merge(0, built%links(c)%contact, built%links(c)%apart), c = 1, nc)]
     flight%q_units = built%q_units
     flight%beta_units = built%beta_units

@@ -43,18 +43,17 @@ module contact_body_impact
     real(wp) :: impulse(3) = 0             ! N s, on body 2 (-impulse on body 1), the closing's included
     real(wp) :: velocity_after(3) = 0      ! m/s, body 2's point relative to body 1's after it all
     real(wp) :: energy_lost = 0            ! J, the impact's and the closing's
-    logical :: slow = .false.              ! the rebound is below close_speed
-    logical :: closed = .false.            ! slow on the ground: the closing impulse was added
+    logical :: closed = .false.            ! the rebound was below close_speed: the closing impulse was added
   end type collision_t
 
 contains
 
   !> The impact of body_2 on body_1 (the ground: mass 0) at their points
   !> point_1, point_2 with the common normal n (out of body 1), by `law`;
-  !> both bodies' twists changed. A rebound below close_speed is `slow`; on
-  !> the ground the contact then closes: closing_impulse takes away what is
-  !> left of the points' normal velocity (all of their relative velocity
-  !> where `rolling`), its energy added to the impact's.
+  !> both bodies' twists changed. A rebound below close_speed closes the
+  !> contact (`closed`): closing_impulse takes away what is left of the
+  !> points' normal velocity (all of their relative velocity where
+  !> `rolling`), its energy added to the impact's.
   subroutine collide(law, n, point_1, point_2, body_1, body_2, close_speed, rolling, result, status)
     type(impact_law_t), intent(in) :: law
     real(wp), intent(in) :: n(3), point_1(3), point_2(3), close_speed
@@ -70,8 +69,7 @@ contains
       result%impulse = outcome%impulse
       result%velocity_after = outcome%velocity_after
       result%energy_lost = outcome%energy_lost
-      result%slow = outcome%normal_speed_after < close_speed
-      result%closed = result%slow .and. .not. body_1%mass > 0
+      result%closed = outcome%normal_speed_after < close_speed
       if (result%closed) then
         call closing_impulse(k, n, outcome%velocity_after, rolling, closing, status)
         if (.not. status%ok()) return

@@ -56,18 +56,24 @@
 !> are, its gap at both bodies' poses; its landing is an impact of the
 !> pair (contact_body_impact: K = K_1 + K_2, +L on body_2, -L on body_1, the
 !> pair's momentum kept) while both fly, and the bodies fly on. A hit on a
-!> body that closed contacts carry is one impact at the hit and the
-!> carrying contacts (impact_on_carried). A rebound below its close_speed
-!> fails the run there (not built: bodies closed on each other).
+!> body that closed contacts carry or join to others is one impact at the
+!> hit and every closed contact of the bodies they join (impact_on_carried).
+!> A rebound below its close_speed at a hit on a body of closed contacts
+!> closes the contact: body_1 carries body_2 from there (contact_bodies,
+!> contact_model: body_2 on body_1 by the open chain), and with may_open it
+!> opens again where its normal force falls to zero; between two flying
+!> bodies it ends the run (not built: their contact would press with
+!> nothing).
 !>
-!> The contacts that can open and close are those of bodies with the ground
-!> (each shape_1 fixed, at the ground's pose); those of a body that start
-!> closed carry it (several together: contact_loops); the friction, rolling,
-!> level and chain of a contact that starts open are the closed contact's
-!> after closing, so they need restitution (without it the run ends at the
-!> landing and they would be unused). A contact between two bodies starts
-!> open, may not open (may_open) and has no friction, rolling, level or
-!> chain (it never closes); anything else is refused.
+!> Contacts open and close between the ground and a body (each shape_1
+!> fixed, at the ground's pose) and between two bodies; those that start
+!> closed carry their bodies (several of one body together:
+!> contact_loops); the friction, rolling, level and chain of a contact that
+!> starts open are the closed contact's after closing, so they need
+!> restitution (without it the run ends at the landing and they would be
+!> unused). A contact between two bodies has no friction, rolling, level or
+!> chain (it closes frictionless by the open chain); anything else is
+!> refused.
 !>
 !> The flight's construction (the checks, the free bodies, a restart, a
 !> twist's rates) is in the submodule contact_flight_build.
@@ -116,7 +122,6 @@ module contact_flight
     integer, allocatable :: coordinates(:, :)   ! 6 x bodies: each body's scalars x, y, z, a1, a2, a3
     integer, allocatable :: speeds(:, :)        ! 6 x bodies: the places of their rates among the speeds
     ! several bodies, each carried by a closed contact or flying (contact_bodies)
-    integer, allocatable :: carrier(:)          ! each body's closed contact (0: it flies)
     integer, allocatable :: mechanism_contact(:)   ! each contact's place among the mechanism's (0: open)
     integer, allocatable :: closings(:)         ! the contacts the impacts of the last event closed
     ! an impact on a carried body (impact_on_carried) stops the phase with:
@@ -296,11 +301,8 @@ contains
     lands = self%gaps%together(lands, self%work, self%body_frame)
     do c = 1, size(lands)
       if (.not. lands(c)) cycle
-      b = self%gaps%body_1(c)
-      if (self%carrier(self%gaps%body(c)) > 0) b = self%gaps%body(c)
-      if (b == 0) cycle
-      if (self%carrier(b) == 0) cycle
-      ! an impact through the contacts that carry a body: one that lands, or is hit, or hits (impact_on_carried)
+      if (.not. (of_closed(self%gaps%body(c)) .or. of_closed(self%gaps%body_1(c)))) cycle
+      ! an impact through the closed contacts of a body: one that lands, or is hit, or hits (impact_on_carried)
       call impact_on_carried(self, lands, t, action, status)
       return
     end do
@@ -324,6 +326,13 @@ contains
                        'at t = '//format_short(t)//' s, approaching at '//format_short(speed)//' m/s (no '// &
                        'restitution given: the run ends at the landing)')
     end do
+  contains
+    !> Whether body b (0: the ground) is a body of a closed contact, carried or carrying another.
+    logical function of_closed(b)
+      integer, intent(in) :: b
+      of_closed = b > 0
+      if (of_closed) of_closed = any(self%gaps%carried .and. (self%gaps%body == b .or. self%gaps%body_1 == b))
+    end function of_closed
   end subroutine flight_handle_event
 
   !> The impact at the landing on contact c (the mechanism at y's pose and
@@ -331,11 +340,12 @@ contains
   !> and the ground, or its two bodies: contact_body_impact) and the contact
   !> points' relative velocity with c's law, +L on body_2 at its point, -L
   !> on body_1; each body's new twist becomes its rates in y (the other
-  !> bodies' kept). A rebound below c's close_speed closes a contact with the
-  !> ground (closing_impulse added to L) and stops the flight there (with
-  !> several bodies the others go on as they are: contact_closing
-  !> drive_bodies); between two bodies it ends the run (two bodies closed on
-  !> each other are not built), the impact kept.
+  !> bodies' kept). A rebound below c's close_speed closes the contact
+  !> (closing_impulse added to L) and stops the flight there (with several
+  !> bodies the others go on as they are: contact_closing drive_bodies);
+  !> between two flying bodies it ends the run, not built (their contact
+  !> would press with nothing in uniform gravity: its lift-off at once),
+  !> the impact kept.
   subroutine impact(self, c, t, y, action, status)
     class(flight_ode_t), intent(inout) :: self
     integer, intent(in) :: c
@@ -368,20 +378,21 @@ contains
                       normal_impulse=dot_product(hit%impulse, gap%normal), &
                       tangential_impulse=norm2(hit%impulse - dot_product(hit%impulse, gap%normal)*gap%normal), &
                       energy_lost=hit%energy_lost)]
-      if (hit%closed) then
+      if (hit%closed .and. b(1) > 0) then
+        ! two flying bodies (a hit on a body of closed contacts is impact_on_carried's)
+        action = max(action, EVENT_STOP)
+        call add_outcome(self, 'contact '''//contact%name//''': the rebound at the impact at t = '// &
+                         format_short(t)//' s, '//format_short(hit%outcome%normal_speed_after)//' m/s, is below '// &
+                         'close_speed: bodies '''//contact%body_1//''' and '''//contact%body_2//''' would fly on '// &
+                         'closed on each other, their contact pressing with nothing in uniform gravity (two '// &
+                         'flying bodies closed on each other are not built): the run ends here', not_built=.true.)
+      else if (hit%closed) then
         action = max(action, EVENT_STOP)
         self%landed = c
         self%closings = [self%closings, c]
         call add_outcome(self, 'contact '''//contact%name//''' closed at the impact at t = '//format_short(t)// &
                          ' s: the rebound, '//format_short(hit%outcome%normal_speed_after)//' m/s, is below '// &
                          'close_speed')
-      else if (hit%slow) then
-        action = max(action, EVENT_STOP)
-        call add_outcome(self, 'contact '''//contact%name//''': the rebound at the impact at t = '// &
-                         format_short(t)//' s, '//format_short(hit%outcome%normal_speed_after)//' m/s, is below '// &
-                         'close_speed: bodies '''//contact%body_1//''' and '''//contact%body_2//''' would stay in '// &
-                         'contact (two bodies closed on each other are not built): the run ends here', &
-                         not_built=.true.)
       else
         action = max(action, EVENT_RESTART)
       end if

@@ -16,11 +16,13 @@ submodule (contact_flight) contact_flight_build
 
 contains
 
-  !> Refused unless every contact is between the ground and a body (a
-  !> body's several closed contacts carry it together, contact_loops; its
-  !> open ones are surfaces it may land on), and unless a contact that
-  !> starts open has restitution where it has what only a closed contact uses
-  !> (a description with a contact that starts open or may open: a flight).
+  !> Refused unless every contact is between the ground or a body and a
+  !> body (a body's several closed contacts carry it together,
+  !> contact_loops; its open ones are surfaces it may land on; one between
+  !> two bodies without friction, rolling, level or chain: it closes by the
+  !> open chain), and unless a contact that starts open has restitution
+  !> where it has what only a closed contact uses (a description with a
+  !> contact that starts open or may open: a flight).
   module procedure check_flight_system
     integer :: k
     if (.not. status%ok()) return
@@ -35,16 +37,11 @@ contains
         if (body_index(system, c%body_1) <= 0) then
           call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_1 = '''//c%body_1// &
             ''' is not a body')
-        else if (.not. c%start_open .or. c%may_open) then
-          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_1 = '''//c%body_1// &
-            ''': where contacts open and close (start = ''open'', may_open) a contact between two bodies starts '// &
-            'open and may not open (a body carried by another while bodies fly, or lifting off it, is not '// &
-            'built): give start = ''open'' and no may_open, or make every contact closed')
         else if (closed_settings(c)) then
-          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': friction, rolling, level and '// &
-            'chain are the closed contact''s, and a contact between two bodies never closes (its impacts make '// &
-            'the bodies fly apart; a rebound below close_speed ends the run): leave them out (impact_mu is the '// &
-            'friction of its impacts)')
+          call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_1 = '''//c%body_1// &
+            ''': where contacts open and close (start = ''open'', may_open) a contact between two bodies closes '// &
+            'frictionless, at position level, by the open chain (friction, rolling, level and chain there are '// &
+            'not built): leave them out (impact_mu is the friction of its impacts)')
         end if
         if (.not. status%ok()) return
       end associate
@@ -103,10 +100,9 @@ contains
     flight%system = system
     allocate (flight%mass(nb), flight%inertia(3, 3, nb), flight%centre(3, nb), flight%body_frame(nb), &
               flight%coordinates(6, nb), flight%rotation_element(nb), flight%impacts(0), flight%speeds(6, nb), &
-              flight%carrier(nb), flight%mechanism_contact(size(system%contacts)), flight%closings(0))
+              flight%mechanism_contact(size(system%contacts)), flight%closings(0))
     flight%speeds = reshape([(i, i = 1, 6*nb)], [6, nb])
     call flight%clear_switches()
-    flight%carrier = 0
     flight%mechanism_contact = 0
     associate (m => flight%mechanism)
       do b = 1, nb

@@ -105,11 +105,13 @@ contains
     end associate
   end procedure impact_body
 
-  !> A landing (`lands`) that involves a body closed contacts carry: the
-  !> body lands on another of its contacts, or a body hits it, or it hits
-  !> another (a contact between two bodies, either carried). One impact at
-  !> the landed contacts and at every contact carrying the bodies they join
-  !> (collide_at_once; a carrying contact's normal speed before is 0, its
+  !> A landing (`lands`) that involves a body of a closed contact (carried,
+  !> or carrying another): the body lands on another of its contacts, or a
+  !> body hits it, or it hits another (a contact between two bodies, either
+  !> of a closed contact). One impact at the landed contacts and at every
+  !> closed contact of the bodies they join, those the closed contacts
+  !> join to them too (a ball hit on a ball resting on the floor: both
+  !> balls, the contact between them and the floor's) (collide_at_once; a carrying contact's normal speed before is 0, its
   !> restitution 0: it stays closed or is pushed open, P >= 0 either way;
   !> its impact_mu during the impact), each body with its free mass
   !> properties: the carrying contacts' impulses are the impact's own, so a
@@ -126,33 +128,47 @@ contains
   !> input's choice, as in flight). Not built, the run failing here, saying
   !> so: rolling carrying contacts, landings the impact does not join in
   !> the same event (bodies neither carried nor hitting a carried one), a
-  !> carrying contact that would open without may_open, a contact between
-  !> two bodies left slower than its close_speed (two bodies closed on each
-  !> other), a rolling landed contact that would close, more than one
-  !> contact left open at gap 0.
+  !> carrying contact that would open without may_open, a rolling landed
+  !> contact that would close, more than one contact left open at gap 0.
+  !> A contact between two bodies left slower than its close_speed closes
+  !> as the ground's do: body_1 carries body_2 from there.
   module procedure impact_on_carried
     type(impact_body_t) :: bodies(0:size(self%body_frame))
     integer, allocatable :: c(:), pair(:, :)
     real(wp), allocatable :: normals(:, :), points_1(:, :), points_2(:, :), e(:), close_speed(:)
     real(wp), allocatable, dimension(:) :: impulse, tangential, before, after, lost
-    logical, allocatable :: closing(:), carrying(:), both(:), joined(:), between(:)
-    logical :: involved(size(self%body_frame)), carried(size(self%body_frame))
+    logical, allocatable :: closing(:), carrying(:), both(:), joined(:)
+    logical :: involved(0:size(self%body_frame)), carried(0:size(self%body_frame))
     character(len=:), allocatable :: why, carriers, head, left_open, hit
     integer :: i, m, k, b
+    ! the bodies of closed contacts (carried, or carrying another)
     carried = .false.
     do i = 1, size(lands)
-      if (self%gaps%carried(i)) carried(self%gaps%body(i)) = .true.
+      if (.not. self%gaps%carried(i)) cycle
+      carried(self%gaps%body(i)) = .true.
+      carried(self%gaps%body_1(i)) = .true.
     end do
-    ! the landed contacts this impact joins: those of a carried body (either of a pair's)
-    joined = lands .and. carried(self%gaps%body)
-    do i = 1, size(lands)
-      if (lands(i) .and. self%gaps%body_1(i) > 0) joined(i) = joined(i) .or. carried(max(1, self%gaps%body_1(i)))
-    end do
+    carried(0) = .false.
+    ! the landed contacts this impact joins: those of a body of a closed contact (either of a pair's)
+    joined = lands .and. (carried(self%gaps%body) .or. carried(self%gaps%body_1))
     involved = .false.
     do i = 1, size(lands)
       if (.not. joined(i)) cycle
       involved(self%gaps%body(i)) = .true.
-      if (self%gaps%body_1(i) > 0) involved(self%gaps%body_1(i)) = .true.
+      involved(self%gaps%body_1(i)) = .true.
+    end do
+    involved(0) = .false.
+    ! and every body the closed contacts join to them (a stack: the ball under the ball hit, and its floor)
+    do
+      k = count(involved)
+      do i = 1, size(lands)
+        if (.not. (self%gaps%carried(i) .and. (involved(self%gaps%body(i)) .or. involved(self%gaps%body_1(i))))) &
+          cycle
+        involved(self%gaps%body(i)) = .true.
+        involved(self%gaps%body_1(i)) = .true.
+        involved(0) = .false.
+      end do
+      if (count(involved) == k) exit
     end do
     carrying = self%gaps%carried .and. involved(self%gaps%body)
     both = joined .or. carrying
@@ -206,14 +222,13 @@ contains
     e = merge(self%system%contacts(c)%restitution, 0.0_wp, joined(c))
     close_speed = self%system%contacts(c)%close_speed
     pair = reshape([(self%gaps%body_1(c(i)), self%gaps%body(c(i)), i = 1, m)], [2, m])
-    between = pair(1, :) > 0
     do k = 1, size(self%body_frame)
       if (involved(k)) bodies(k) = impact_body(self, k)
     end do
     call collide_at_once(e, self%system%contacts(c)%impact_mu, normals, points_1, points_2, pair, bodies, impulse, &
                          tangential, before, after, lost, status)
     if (.not. status%ok()) return
-    closing = after < close_speed .and. .not. between
+    closing = after < close_speed
     if (any(carrying(c) .and. .not. closing .and. .not. self%system%contacts(c)%may_open)) then
       action = max(action, EVENT_STOP)
       call add_outcome(self, head//': the impact would lift '//landed_names(self, unpack(carrying(c) .and. &
@@ -222,12 +237,11 @@ contains
       return
     end if
     if (any(closing)) then
-      ! a contact between two bodies never closes (below)
       do i = 1, m
         call close_at_once(closing, normals, points_1, points_2, pair, bodies, impulse, after, lost, status)
         if (.not. status%ok()) return
-        if (.not. any(after < close_speed .and. .not. closing .and. .not. between)) exit
-        closing = closing .or. (after < close_speed .and. .not. between)
+        if (.not. any(after < close_speed .and. .not. closing)) exit
+        closing = closing .or. after < close_speed
       end do
     end if
     if (any(closing .and. joined(c) .and. self%system%contacts(c)%rolling)) then
@@ -243,13 +257,6 @@ contains
                       tangential_impulse=tangential(i), energy_lost=lost(i))]
     end do
     action = max(action, EVENT_STOP)
-    if (any(between .and. after < close_speed)) then
-      ! the impact kept, as for two flying bodies (contact_flight impact)
-      call add_outcome(self, head//': the impact leaves '//landed_names(self, unpack(between .and. after < &
-                       close_speed, both, .false.))//' slower than close_speed: the bodies would stay in contact '// &
-                       '(two bodies closed on each other are not built): the run ends here', not_built=.true.)
-      return
-    end if
     left_open = landed_names(self, unpack(.not. closing, both, .false.))
     if (count(.not. closing) > 1) then
       call add_outcome(self, head//': the impact leaves '//left_open//' open at gap 0 (more than one contact '// &

@@ -8,7 +8,9 @@
 !> closed one that names it body_2 (its relative chain, contact_pair); each
 !> further closed contact of it is a closure loop (contact_loops); contacts are
 !> built in the order given, so a contact's body_1 must be the ground or
-!> carried by an earlier contact. Friction laws are any kind of the multibody
+!> carried by an earlier contact (where bodies fly, contact_bodies: a
+!> contact waits for its body_1's carrier, and a flying body_1 is free
+!> before it: contact_system build_order). Friction laws are any kind of the multibody
 !> core's registry (kinetostatics_force_law_factory), built from the
 !> contact's spec: viscous -mu M g w_t (the egg, METHOD-PART2 A.4.3, M the
 !> mass of body_2, g = |gravity|), viscous -mu |N| w_t, Coulomb -mu |N|
@@ -58,8 +60,8 @@ module contact_model
   use contact_factory, only: body_from_spec, add_air_drag
   use contact_free_body, only: add_free_body, free_body_units
   use contact_system, only: shape_t, body_spec_t, contact_spec_t, contact_system_t, build_system_shapes, &
-    check_names, open_chain, body_size, body_index, shape_index, LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, &
-    CHAIN_OPEN, CHAIN_LOOP
+    check_names, open_chain, body_size, body_index, shape_index, build_order, flies_free, LEVEL_POSITION, &
+    LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t, contact_model_t, contact_link_t
@@ -189,8 +191,8 @@ contains
     logical, intent(in), optional :: all_position
     type(contact_model_t), intent(in), optional :: closed
     type(loop_start_t), intent(in), optional :: loops(:)   ! each contact's: a second closed contact's loop (used)
-    integer :: nb, k, b1, b2, level
-    integer, allocatable :: q(:), kinematic(:), carrier(:), extras(:)
+    integer :: nb, k, b1, b2, level, i
+    integer, allocatable :: q(:), kinematic(:), carrier(:), extras(:), order(:)
     real(wp), allocatable :: mass(:)
     type(solid_properties_t), allocatable :: props(:)
     nb = size(system%bodies)
@@ -204,8 +206,12 @@ contains
     carrier = 0
     call mass_properties(system, props, status)
     if (.not. status%ok()) return
+    if (flies) allocate (model%free(6, nb), model%rotation_element(nb), model%gap_monitors(size(system%contacts)), &
+                         source=0)
+    order = build_order(system, flies)
     associate (m => model%ode%mechanism)
-      do k = 1, size(system%contacts)
+      do i = 1, size(order)
+        k = order(i)
         associate (c => system%contacts(k), link => model%links(k))
           link%name = c%name
           link%apart = c%start_open
@@ -213,6 +219,10 @@ contains
           b1 = body_index(system, c%body_1)
           b2 = body_index(system, c%body_2)
           if (b1 > 0) then
+            ! a flying body carrying another (contact_bodies): free, before the contact
+            if (carrier(b1) == 0 .and. flies .and. flies_free(system, b1)) &
+              call add_free(system, model, props, b1, carrier, q, status)
+            if (.not. status%ok()) return
             if (carrier(b1) == 0) then
               call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_1 = '''//c%body_1// &
                 ''' is not placed yet: list the contact that carries it (its body_2) before '''//c%name//'''')
@@ -333,11 +343,12 @@ contains
     model%beta_units = [character(len=8) :: model%beta_units, u1, v1, u2, v2, model%q_units(j)]
   end subroutine add_loop_contact
 
-  !> The bodies no closed contact carries, each free (contact_free_body,
-  !> carrier -1) at its given pose, in the order of the &body groups; then
-  !> the gap of every contact as a monitor (<contact>.gap, m; the flight
-  !> records its value, contact_flight): a description whose contacts may
-  !> start open (contact_bodies).
+  !> The bodies no closed contact carries, each free (add_free) at its
+  !> given pose, in the order of the &body groups (but those a closed
+  !> contact's body_1 needed first); then the gap of every contact as a
+  !> monitor (<contact>.gap, m; the flight records its value,
+  !> contact_flight): a description whose contacts may start open
+  !> (contact_bodies).
   subroutine add_free_bodies(system, model, props, carrier, q, status)
     type(contact_system_t), intent(in) :: system
     type(contact_model_t), intent(inout) :: model
@@ -347,19 +358,10 @@ contains
     type(status_t), intent(inout) :: status
     integer :: b, c
     associate (m => model%ode%mechanism, nb => size(system%bodies))
-      allocate (model%free(6, nb), model%rotation_element(nb), model%gap_monitors(size(system%contacts)))
-      model%free = 0
-      model%rotation_element = 0
       do b = 1, nb
         if (carrier(b) /= 0) cycle
-        call add_free_body(m, system%bodies(b), props(b), system%gravity, system%air_density, system%wind, &
-                           model%free(:, b), model%body_frame(b + 1), model%rotation_element(b), status)
+        call add_free(system, model, props, b, carrier, q, status)
         if (.not. status%ok()) return
-        carrier(b) = -1
-        model%body_names(b + 1) = system%bodies(b)%name
-        model%body_mass(b + 1) = system%bodies(b)%mass
-        q = [q, model%free(:, b)]
-        model%q_units = [character(len=8) :: model%q_units, free_body_units]
       end do
       do c = 1, size(system%contacts)
         call m%add_monitor(m%add_scalar(system%contacts(c)%name//'.gap'), 'm')
@@ -367,6 +369,26 @@ contains
       end do
     end associate
   end subroutine add_free_bodies
+
+  !> Body b free (contact_free_body, carrier -1) at its given pose, its
+  !> coordinates after q.
+  subroutine add_free(system, model, props, b, carrier, q, status)
+    type(contact_system_t), intent(in) :: system
+    type(contact_model_t), intent(inout) :: model
+    type(solid_properties_t), intent(in) :: props(:)
+    integer, intent(in) :: b
+    integer, intent(inout) :: carrier(:)
+    integer, allocatable, intent(inout) :: q(:)
+    type(status_t), intent(inout) :: status
+    call add_free_body(model%ode%mechanism, system%bodies(b), props(b), system%gravity, system%air_density, &
+                       system%wind, model%free(:, b), model%body_frame(b + 1), model%rotation_element(b), status)
+    if (.not. status%ok()) return
+    carrier(b) = -1
+    model%body_names(b + 1) = system%bodies(b)%name
+    model%body_mass(b + 1) = system%bodies(b)%mass
+    q = [q, model%free(:, b)]
+    model%q_units = [character(len=8) :: model%q_units, free_body_units]
+  end subroutine add_free
 
   !> Units of the coordinates (and dependents) the contact added, in their order.
   subroutine add_units(model, level, rolling, open, s1, s2)

@@ -12,7 +12,8 @@ module contact_system
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t
-  public :: build_system_shapes, check_names, open_chain, body_size, body_index, shape_index, known_shapes
+  public :: build_system_shapes, check_names, open_chain, body_size, body_index, shape_index, known_shapes, &
+    build_order, flies_free
   public :: LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
 
   integer, parameter :: LEVEL_POSITION = 1, LEVEL_VELOCITY = 2
@@ -160,6 +161,62 @@ contains
       extent = norm2([maxval(x) - minval(x), maxval(y) - minval(y), maxval(z) - minval(z)])
     end function extent
   end function body_size
+
+  !> The order in which contact_model builds the contacts: the description's,
+  !> except that where bodies fly (`flies`: contacts open and close during a
+  !> run, contact_bodies) a closed contact whose body_1 is not placed yet
+  !> waits until the contact that carries it is built (the closed set
+  !> changes during a run: no one order of the description fits every set),
+  !> and a body_1 that no closed contact carries is free (flies_free: built
+  !> before the contact). Contacts that still wait (a ring of bodies
+  !> carrying each other) come last, where the builder refuses them.
+  pure function build_order(system, flies) result(order)
+    type(contact_system_t), intent(in) :: system
+    logical, intent(in) :: flies
+    integer :: order(size(system%contacts))
+    logical :: placed(0:size(system%bodies)), done(size(system%contacts))
+    integer :: n, k, b1
+    logical :: progress
+    order = [(k, k = 1, size(system%contacts))]
+    if (.not. flies) return
+    placed = .false.
+    placed(0) = .true.
+    done = .false.
+    n = 0
+    progress = .true.
+    do while (progress)
+      progress = .false.
+      do k = 1, size(system%contacts)
+        if (done(k)) cycle
+        associate (c => system%contacts(k))
+          if (.not. c%start_open) then
+            b1 = max(0, body_index(system, c%body_1))
+            if (.not. (placed(b1) .or. flies_free(system, b1))) cycle
+            placed(max(0, body_index(system, c%body_2))) = .true.
+          end if
+        end associate
+        done(k) = .true.
+        n = n + 1
+        order(n) = k
+        progress = .true.
+      end do
+    end do
+    order(n + 1:) = pack([(k, k = 1, size(system%contacts))], .not. done)
+  end function build_order
+
+  !> Whether body b flies where bodies may (contact_bodies): no closed
+  !> contact carries it (names it body_2). b 0 (the ground): no.
+  pure logical function flies_free(system, b)
+    type(contact_system_t), intent(in) :: system
+    integer, intent(in) :: b
+    integer :: k
+    flies_free = b > 0
+    if (.not. flies_free) return
+    do k = 1, size(system%contacts)
+      if (.not. system%contacts(k)%start_open .and. system%contacts(k)%body_2 == system%bodies(b)%name) &
+        flies_free = .false.
+    end do
+  end function flies_free
 
   !> 0 for 'ground', the index of a body, -1 if unknown.
   pure integer function body_index(system, name) result(k)
