@@ -47,12 +47,14 @@ contains
   !> (the first of a body's as a chain, the others as loops: contact_loops)
   !> and every body none of them carries flies, each at its pose and twist
   !> of the description: the mechanism (contact_model), its start q0, qd0 and
-  !> units, its open contacts' gaps (the contact `touching` may touch: it
-  !> has just lifted off). restarting: a switch during the run (the closed
+  !> units, its open contacts' gaps (the contact `touching` and those of
+  !> `also_touching` may touch: they have just lifted off, or an impact left
+  !> them at gap 0; each watched from its opening). restarting: a switch during the run (the closed
   !> contacts must touch to touching_gap_limit, the gaps are the motion's);
   !> else the run's start (checked as the input: check_flight_system;
   !> model, if present, is the built contact model, for the start's moves).
-  subroutine build_bodies(system, closed, flight, q0, qd0, q_units, status, touching, restarting, model)
+  subroutine build_bodies(system, closed, flight, q0, qd0, q_units, status, touching, restarting, model, &
+                          also_touching)
     type(contact_system_t), intent(in) :: system
     logical, intent(in) :: closed(:)   ! each contact: closed
     type(flight_ode_t), intent(out) :: flight
@@ -62,6 +64,7 @@ contains
     integer, intent(in) :: touching
     logical, intent(in) :: restarting
     type(contact_model_t), intent(out), optional :: model
+    logical, intent(in), optional :: also_touching(:)   ! each contact: it may touch too (left at gap 0)
     type(contact_model_t) :: built
     type(contact_system_t) :: part
     type(solid_properties_t) :: props
@@ -122,7 +125,7 @@ contains
       qd0 = built%y0(f + 1:f + m%ns)
     end associate
     call start_open_gaps(flight%gaps, part, flight%work, flight%body_frame, status, touching, 0, restarting, &
-                         carried=.not. part%contacts%start_open)
+                         carried=.not. part%contacts%start_open, also_touching=also_touching)
     if (present(model)) model = built
   end subroutine build_bodies
 end module contact_bodies

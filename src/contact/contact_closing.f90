@@ -284,20 +284,21 @@ contains
     if (size(hit%openings) > 0) closed(hit%openings) = .false.
     placed%bodies(1)%angular_velocity = hit%twist_after(1:3, 1)
     placed%bodies(1)%velocity = hit%twist_after(4:6, 1)
-    call phases_from(flight, placed, closed, hit%bounced, 'after the impact on the carried body', run, phase, &
-                     options, phase_options, result, chart_changes, status)
+    lands = .false.
+    lands(hit%bounced) = .true.   ! those left at gap 0
+    call phases_from(flight, placed, closed, lands, 'after the impact on the carried body', run, phase, options, &
+                     phase_options, result, chart_changes, status)
   end subroutine impact_while_carried
 
   !> The run's phases on from phase%t (drive_phases) with the bodies of
   !> `placed` at their poses and twists and the contacts `closed` closed
-  !> (contact_bodies build_bodies; `touching` the one left at gap 0, 0:
-  !> none); a build that fails fails the run, its status prefixed by `what`.
+  !> (contact_bodies build_bodies; `touching` those left at gap 0); a
+  !> build that fails fails the run, its status prefixed by `what`.
   subroutine phases_from(flight, placed, closed, touching, what, run, phase, options, phase_options, result, &
                          chart_changes, status)
     type(flight_ode_t), intent(inout), target :: flight
     type(contact_system_t), intent(in) :: placed
-    logical, intent(in) :: closed(:)
-    integer, intent(in) :: touching
+    logical, intent(in) :: closed(:), touching(:)
     character(len=*), intent(in) :: what
     type(phases_t), intent(inout) :: run
     type(driver_result_t), intent(in) :: phase
@@ -310,7 +311,7 @@ contains
     real(wp), allocatable :: q0(:), qd0(:), y(:)
     character(len=8), allocatable :: units(:)
     allocate (start)
-    call build_bodies(placed, closed, start, q0, qd0, units, status, touching, .true.)
+    call build_bodies(placed, closed, start, q0, qd0, units, status, 0, .true., also_touching=touching)
     if (.not. status%ok()) then
       call prefix_status(status, what//' at t = '//format_short(phase%t)//' s')
       result%outcome = DRIVE_FAILED
@@ -340,7 +341,8 @@ contains
     integer :: k
     closed = .false.
     closed(flight%closings) = .true.
-    call phases_from(flight, at_last_record(flight), closed, 0, 'closing contacts '//closing_names(flight), run, &
+    call phases_from(flight, at_last_record(flight), closed, spread(.false., 1, size(closed)), 'closing contacts '// &
+                     closing_names(flight), run, &
                      phase, options, phase_options, result, chart_changes, status)
   contains
     function closing_names(f) result(text)
@@ -417,8 +419,8 @@ contains
     type(contact_system_t) :: placed
     real(wp), allocatable :: y(:), q0(:), qd0(:)
     character(len=8), allocatable :: units(:)
-    logical, allocatable :: closed(:)
-    integer :: k, c, touching
+    logical, allocatable :: closed(:), touching(:)
+    integer :: k, c
     logical :: next, lifted, starting
     p => flight
     if (allocated(start)) then
@@ -448,14 +450,14 @@ contains
         touching = p%gaps%touching
         do k = 1, size(p%closings)
           closed(p%closings(k)) = .true.
-          if (touching == p%closings(k)) touching = 0
+          touching(p%closings(k)) = .false.
         end do
-        ! an impact on a carried body: the contacts it opened, the one it left at gap 0
+        ! an impact on a carried body: the contacts it opened, those it left at gap 0
         if (size(p%openings) > 0) closed(p%openings) = .false.
-        if (p%bounced > 0) touching = p%bounced
+        if (size(p%bounced) > 0) touching(p%bounced) = .true.
         if (lifted) then
           closed(c) = .false.
-          touching = c
+          touching(c) = .true.
           if (any(closed .and. p%gaps%body == p%gaps%body(c))) then
             run%history = run%history//': the contact opens (may_open), the body goes on on its other closed '// &
                           'contacts'
@@ -470,7 +472,7 @@ contains
           placed%bodies(k)%velocity = p%twist_after(4:6, k)
         end do
         allocate (next_phase)
-        call build_bodies(placed, closed, next_phase, q0, qd0, units, status, touching, .true.)
+        call build_bodies(placed, closed, next_phase, q0, qd0, units, status, 0, .true., also_touching=touching)
         if (.not. status%ok()) call prefix_status(status, 'the switch at t = '//format_short(phase%t)//' s')
         if (status%ok()) then
           next_phase%impacts = p%impacts

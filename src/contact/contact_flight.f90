@@ -126,7 +126,7 @@ module contact_flight
     integer, allocatable :: closings(:)         ! the contacts the impacts of the last event closed
     ! an impact on a carried body (impact_on_carried) stops the phase with:
     integer, allocatable :: openings(:)         ! the closed contacts it opened
-    integer :: bounced = 0                      ! the contact at gap 0 it left open (0: none)
+    integer, allocatable :: bounced(:)          ! the contacts at gap 0 it left open
     logical, allocatable :: twisted(:)          ! each body: its twist changed by it, twist_after
     real(wp), allocatable :: twist_after(:, :)  ! 6 x bodies: [omega, v] (world; v of its origin)
     integer, allocatable :: rotation_element(:)   ! each body's free rotation
@@ -218,7 +218,7 @@ contains
     self%landed = 0
     self%closings = [integer ::]
     self%openings = [integer ::]
-    self%bounced = 0
+    self%bounced = [integer ::]
     self%twisted = spread(.false., 1, size(self%body_frame))
     if (.not. allocated(self%twist_after)) allocate (self%twist_after(6, size(self%body_frame)))
     self%twist_after = 0
@@ -293,11 +293,10 @@ contains
     call self%mechanism%set_velocities(self%work, y(f + 1:f + self%mechanism%ns))
     call self%gaps%update(self%work, self%body_frame, status)
     if (.not. status%ok()) return
-    if (self%gaps%touching > 0) then
-      c = self%gaps%touching
-      ! opened: the root is the gap from here (opening_gap, nonzero, where CVODE looks again)
-      if (lands(c)) lands(c) = .not. self%gaps%opened()
-    end if
+    do c = 1, size(lands)
+      ! a touching contact opened: the root is the gap from here (opening_gap, nonzero, where CVODE looks again)
+      if (lands(c) .and. self%gaps%touching(c)) lands(c) = .not. self%gaps%opened(c)
+    end do
     lands = self%gaps%together(lands, self%work, self%body_frame)
     do c = 1, size(lands)
       if (.not. lands(c)) cycle

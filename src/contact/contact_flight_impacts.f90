@@ -111,8 +111,9 @@ contains
   !> of a closed contact). One impact at the landed contacts and at every
   !> closed contact of the bodies they join, those the closed contacts
   !> join to them too (a ball hit on a ball resting on the floor: both
-  !> balls, the contact between them and the floor's) (collide_at_once; a carrying contact's normal speed before is 0, its
-  !> restitution 0: it stays closed or is pushed open, P >= 0 either way;
+  !> balls, the contact between them and the floor's) (collide_at_once; a
+  !> carrying contact's normal speed before is 0, its restitution 0: it
+  !> stays closed or is pushed open, P >= 0 either way;
   !> its impact_mu during the impact), each body with its free mass
   !> properties: the carrying contacts' impulses are the impact's own, so a
   !> carried body meets a hit with its effective mass through its closed
@@ -122,14 +123,15 @@ contains
   !> leaves faster opens (it must have may_open); the phase stops
   !> (EVENT_STOP) with `closings`, `openings`, the bodies' twists after
   !> (`twist_after`: a twist the carried body's coordinates may not take)
-  !> and the contact left at gap 0 (`bounced`), and contact_closing goes on
+  !> and the contacts left at gap 0 (`bounced`, each watched from its
+  !> opening: contact_open_gaps), and contact_closing goes on
   !> from there. A row per contact (the energies summing to the kinetic
   !> energy's fall). A landing without restitution ends the run there (the
   !> input's choice, as in flight). Not built, the run failing here, saying
   !> so: rolling carrying contacts, landings the impact does not join in
   !> the same event (bodies neither carried nor hitting a carried one), a
   !> carrying contact that would open without may_open, a rolling landed
-  !> contact that would close, more than one contact left open at gap 0.
+  !> contact that would close.
   !> A contact between two bodies left slower than its close_speed closes
   !> as the ground's do: body_1 carries body_2 from there.
   module procedure impact_on_carried
@@ -258,22 +260,19 @@ contains
     end do
     action = max(action, EVENT_STOP)
     left_open = landed_names(self, unpack(.not. closing, both, .false.))
-    if (count(.not. closing) > 1) then
-      call add_outcome(self, head//': the impact leaves '//left_open//' open at gap 0 (more than one contact '// &
-                       'opening at once is not built): the run ends here', not_built=.true.)
-      return
-    end if
     self%closings = [self%closings, pack(c, closing .and. joined(c))]
     self%openings = [self%openings, pack(c, .not. closing .and. carrying(c))]
-    if (any(.not. closing)) self%bounced = c(findloc(closing, .false., dim=1))
+    ! each left at gap 0, watched from its opening (contact_open_gaps)
+    self%bounced = pack(c, .not. closing)
     do k = 1, size(self%body_frame)
       if (.not. involved(k)) cycle
       self%twisted(k) = .true.
       self%twist_after(:, k) = [bodies(k)%omega, bodies(k)%velocity]
     end do
-    if (len(left_open) > 0) left_open = ', '//left_open//' open'
-    call add_outcome(self, head//': one impact at them all, after it '// &
-                     landed_names(self, unpack(closing, both, .false.))//' closed'//left_open)
+    if (len(left_open) > 0) left_open = left_open//' open'
+    if (any(closing) .and. len(left_open) > 0) left_open = ', '//left_open
+    if (any(closing)) left_open = landed_names(self, unpack(closing, both, .false.))//' closed'//left_open
+    call add_outcome(self, head//': one impact at them all, after it '//left_open)
   end procedure impact_on_carried
 
   !> The phase's outcome extended by text.

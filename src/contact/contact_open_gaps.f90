@@ -64,7 +64,7 @@ module contact_open_gaps
     real(wp), allocatable :: last(:)   ! m, each gap's last value (kept where an update fails: a trial state)
     integer :: closed = 0              ! the contact that carries the body (not watched; 0: none)
     logical, allocatable :: carried(:) ! each contact: closed, carrying its body (not watched)
-    integer :: touching = 0            ! the contact that started touching, not yet opened (0: none)
+    logical, allocatable :: touching(:) ! each contact: it started touching, not yet opened
   contains
     procedure :: update => gaps_update
     procedure :: roots => gaps_roots
@@ -103,13 +103,15 @@ contains
 
   !> The gaps at the bodies' poses (work%frames(frames(b)) of body b of the
   !> description: its frame, world), each from the contact search, on its contact's branch (the normals against
-  !> each other) and open (> 0); the contact `touching` may touch (its gap
-  !> not below -touching_gap_limit); the contact `closed` carries the body
+  !> each other) and open (> 0); the contact `touching` and those of
+  !> `also_touching` may touch (their gaps not below -touching_gap_limit:
+  !> an impact left them at gap 0, each watched from its opening); the contact `closed` carries the body
   !> and is not watched, as are those of `carried` (several bodies, each
   !> carried by one of them or flying: contact_bodies). At the run's start a
   !> gap that is not open is the input's; at a switch (restarting) the
   !> motion's.
-  subroutine start_open_gaps(gaps, system, work, frames, status, touching, closed, restarting, carried)
+  subroutine start_open_gaps(gaps, system, work, frames, status, touching, closed, restarting, carried, &
+                             also_touching)
     type(open_gaps_t), intent(out) :: gaps
     type(contact_system_t), intent(in) :: system
     type(mechanism_workspace_t), intent(in) :: work
@@ -118,8 +120,11 @@ contains
     integer, intent(in) :: touching, closed
     logical, intent(in) :: restarting   ! a switch during the run (not the run's start, the input's)
     logical, intent(in), optional :: carried(:)   ! each contact: closed (the body it carries, its other contacts open)
+    logical, intent(in), optional :: also_touching(:)   ! each contact: it may touch too
     integer :: c, s1, s2, k
-    gaps%touching = touching
+    gaps%touching = spread(.false., 1, size(system%contacts))
+    if (touching > 0) gaps%touching(touching) = .true.
+    if (present(also_touching)) gaps%touching = gaps%touching .or. also_touching
     gaps%closed = closed
     allocate (gaps%gap(size(system%contacts)), gaps%last(size(system%contacts)), &
               gaps%carried(size(system%contacts)))
@@ -146,7 +151,7 @@ contains
           call set_status(status, STATUS_INVALID_INPUT, 'contact '''//contact%name//''': at the start the '// &
             'normals of shape_1 and shape_2 point the same way at their nearest points (side_1, side_2 as for a '// &
             'closed contact: each normal out of its body towards the other); check side_1 and side_2')
-        else if (c == touching) then
+        else if (gaps%touching(c)) then
           if (.not. gap%gap >= -touching_gap_limit) call set_status(status, STATUS_DOMAIN, 'contact '''// &
             contact%name//''': body '''//contact%body_2//''' overlaps shape '''//contact%shape_1//''' by '// &
             format_short(-gap%gap)//' m where it should touch (more than '//format_short(touching_gap_limit)// &
@@ -248,7 +253,7 @@ contains
     involved(0) = .false.
     together = lands
     do c = 1, size(lands)
-      if (lands(c) .or. self%carried(c) .or. c == self%touching) cycle
+      if (lands(c) .or. self%carried(c) .or. self%touching(c)) cycle
       if (involved(self%body(c)) .or. involved(self%body_1(c))) together(c) = self%gap(c)%gap <= together_gap &
         .and. dot_product(self%gap(c)%normal, self%velocity(c, work, frames)) < 0
     end do
@@ -256,7 +261,7 @@ contains
 
   !> The root of each contact at its body's pose (as gaps_update): its gap
   !> (the last where it cannot be found: a trial state the integrator does
-  !> not keep); the touching contact's opening_gap - |gap|; the closed ones'
+  !> not keep); each touching contact's opening_gap - |gap|; the closed ones'
   !> 1 (never zero).
   subroutine gaps_roots(self, work, frames, located, g)
     class(open_gaps_t), intent(inout) :: self
@@ -275,16 +280,17 @@ contains
     end do
     g = self%last
     where (self%carried) g = 1
-    if (self%touching > 0) g(self%touching) = opening_gap - abs(g(self%touching))
+    where (self%touching) g = opening_gap - abs(g)
   end subroutine gaps_roots
 
-  !> At an event where the touching contact's root fired (the gaps updated):
-  !> whether it opened (its landing is watched from now on: the gap,
-  !> opening_gap there), else it went back in (a landing on it).
-  logical function gaps_opened(self) result(opened)
+  !> At an event where the root of touching contact c fired (the gaps
+  !> updated): whether it opened (its landing is watched from now on: the
+  !> gap, opening_gap there), else it went back in (a landing on it).
+  logical function gaps_opened(self, c) result(opened)
     class(open_gaps_t), intent(inout) :: self
-    opened = self%gap(self%touching)%gap > 0
-    self%touching = 0
+    integer, intent(in) :: c
+    opened = self%gap(c)%gap > 0
+    self%touching(c) = .false.
   end function gaps_opened
 
   !> The closed model `model` (its body on frame body_frame) carried by

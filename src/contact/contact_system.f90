@@ -166,7 +166,8 @@ contains
   !> except that where bodies fly (`flies`: contacts open and close during a
   !> run, contact_bodies) a closed contact whose body_1 is not placed yet
   !> waits until the contact that carries it is built (the closed set
-  !> changes during a run: no one order of the description fits every set),
+  !> changes during a run: no one order of the description fits every set;
+  !> a body's second closed contact waits for its first),
   !> and a body_1 that no closed contact carries is free (flies_free: built
   !> before the contact). Contacts that still wait (a ring of bodies
   !> carrying each other) come last, where the builder refuses them.
@@ -175,7 +176,7 @@ contains
     logical, intent(in) :: flies
     integer :: order(size(system%contacts))
     logical :: placed(0:size(system%bodies)), done(size(system%contacts))
-    integer :: n, k, b1
+    integer :: n, k, b1, b2, j
     logical :: progress
     order = [(k, k = 1, size(system%contacts))]
     if (.not. flies) return
@@ -191,8 +192,12 @@ contains
         associate (c => system%contacts(k))
           if (.not. c%start_open) then
             b1 = max(0, body_index(system, c%body_1))
+            b2 = max(0, body_index(system, c%body_2))
             if (.not. (placed(b1) .or. flies_free(system, b1))) cycle
-            placed(max(0, body_index(system, c%body_2))) = .true.
+            ! a body's second closed contact (a loop, contact_loops) after its first
+            if (any([(.not. system%contacts(j)%start_open .and. system%contacts(j)%body_2 == c%body_2, &
+                      j = 1, k - 1)]) .and. .not. placed(b2)) cycle
+            placed(b2) = .true.
           end if
         end associate
         done(k) = .true.
