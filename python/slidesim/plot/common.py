@@ -76,3 +76,19 @@ def wrapped(text, width=130, lines=3):
         parts = parts[:lines]
         parts[-1] = parts[-1][:width - 40].rstrip() + " ... (whole text: the file's status_message)"
     return "\n".join(parts)
+
+
+def flag_spans(x, flags):
+    """(start, end) values of x over each run of records whose flag is set
+    (a flight: from the take-off record to the first record back on, the
+    landing's, or to the last record)."""
+    spans, start = [], None
+    for i, flag in enumerate(flags):
+        if flag and start is None:
+            start = i
+        elif not flag and start is not None:
+            spans.append((x[start], x[i]))
+            start = None
+    if start is not None:
+        spans.append((x[start], x[-1]))
+    return spans

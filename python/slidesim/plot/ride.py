@@ -31,7 +31,7 @@ import math
 
 import numpy as np
 
-from .common import title
+from .common import flag_spans, title
 
 CONTACTS = ("pelvis", "heels", "back")
 FLIGHT_COLOUR = "tab:orange"
@@ -69,8 +69,8 @@ def read(f):
         d["ejected_s"] = float(f["/evaluation/ejected_arc_length"][()])
     d["flights"], d["whole_flights"], d["landings"] = [], [], []
     if "airborne" in r:
-        d["flights"] = airborne_spans(d["s"], r["airborne"][:] != 0)
-        d["whole_flights"] = airborne_spans(d["s"], r["airborne"][:] == ALL_OPEN)
+        d["flights"] = flag_spans(d["s"], r["airborne"][:] != 0)
+        d["whole_flights"] = flag_spans(d["s"], r["airborne"][:] == ALL_OPEN)
     if "/evaluation/flight/landing/time" in f:
         land = f["/evaluation/flight/landing"]
         time = r["time"][:]
@@ -119,22 +119,6 @@ def section_distance(grid_u, grid_v, grid):
         return np.array([(1 - wi) * np.interp(vi, grid_v, along[ki - 1]) + wi * np.interp(vi, grid_v, along[ki])
                          for vi, ki, wi in zip(v, k, w)])
     return at
-
-
-def airborne_spans(s, flying):
-    """(start, end) arc lengths of the pelvis over each run of records in
-    flight: from the take-off record to the first record back on (the
-    landing's), or to the last record."""
-    spans, start = [], None
-    for i, flag in enumerate(flying):
-        if flag and start is None:
-            start = i
-        elif not flag and start is not None:
-            spans.append((s[start], s[i]))
-            start = None
-    if start is not None:
-        spans.append((s[start], s[-1]))
-    return spans
 
 
 def mark_flights(ax, d, label=False):

@@ -16,7 +16,7 @@ bottom line (rounding noise of 1e-15 m) is drawn flat, not as a climb.
 """
 import numpy as np
 
-from .common import draw_surface, equal_axes_3d
+from .common import draw_surface, equal_axes_3d, flag_spans
 from .multibody import contact_forces, coordinates, energy, suptitle
 
 SCENARIOS = ("sled",)
@@ -94,30 +94,14 @@ def wall(ax, r, g, t):
     ax.set_title("how high it climbs: distance up the wall (not the wall angle)")
 
 
-def flight_spans(t, flying):
-    """(start, end) times of each run of records in flight: from the
-    take-off record to the first record back on (the landing's), or to the
-    last record."""
-    spans, start = [], None
-    for i, flag in enumerate(flying):
-        if flag and start is None:
-            start = i
-        elif not flag and start is not None:
-            spans.append((t[start], t[i]))
-            start = None
-    if start is not None:
-        spans.append((t[start], t[-1]))
-    return spans
-
-
 def mark_flights(ax, r, g, t, label=False):
     """The vehicle's flights as shaded spans over time (both contacts open
     darker) and its landings as dashed lines."""
     is_open = r[g + "/vehicle/open"].values
-    for j, (start, end) in enumerate(flight_spans(t, is_open != 0)):
+    for j, (start, end) in enumerate(flag_spans(t, is_open != 0)):
         ax.axvspan(start, end, color=FLIGHT_COLOUR, alpha=0.15, lw=0, gid="flight",
                    label="in flight (a contact open)" if label and j == 0 else None)
-    for j, (start, end) in enumerate(flight_spans(t, is_open == BOTH_OPEN)):
+    for j, (start, end) in enumerate(flag_spans(t, is_open == BOTH_OPEN)):
         ax.axvspan(start, end, color=FLIGHT_COLOUR, alpha=0.3, lw=0, gid="whole_flight",
                    label="whole vehicle in the air" if label and j == 0 else None)
     if g + "/vehicle/flight/landing/time" in r:
