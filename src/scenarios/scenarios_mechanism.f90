@@ -225,11 +225,12 @@ contains
       if (allocated(sys%closed)) then
         ! the joined series' contacts and bodies are the closed contact's
         call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
-                    message, outcome, sys%chart_changes, sys%closed%ode%mechanism, write_status, sys%impacts, losses)
+                    message, outcome, sys%chart_changes, sys%closed%ode%mechanism, write_status, sys%impacts, losses, &
+                    closed=closed_records(sys, open))
       else
         call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
                     message, outcome, sys%chart_changes, sys%mechanism, write_status, sys%impacts, losses, &
-                    carried_bodies=carried_bodies(sys, open))
+                    carried_bodies=carried_bodies(sys, open), closed=closed_records(sys, open))
       end if
     class default
       call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
@@ -419,7 +420,7 @@ contains
   !> The printed summary (angles in degrees) and, with --summary-json, the
   !> same numbers as JSON (SI).
   subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, outcome, chart_changes, m, &
-                    status, impacts, losses, figures, carried_bodies)
+                    status, impacts, losses, figures, carried_bodies, closed)
     character(len=*), intent(in) :: scenario, path, message, outcome
     integer, intent(in) :: chart_changes   ! coordinates re-based on a new chart (docs/multibody.md, events)
     type(mechanism_series_t), intent(in) :: s
@@ -434,6 +435,7 @@ contains
     real(wp), intent(in) :: losses(:)   ! J, the impacts' energy lost up to each record
     class(run_figures_t), intent(in), optional :: figures
     character(len=*), intent(in), optional :: carried_bodies(:)   ! each contact's body_2 where it closed (else '')
+    logical, intent(in), optional :: closed(:, :)   ! (contact, record): closed there (a flight's); absent: always
     type(summary_t) :: summary
     real(wp) :: e0, scale
     integer :: n, k, i
@@ -449,7 +451,7 @@ contains
       ! bodies and contacts in engineering terms (docs/contact.md, Outputs)
       if (.not. complete) call summary%add_text('failure', 'stopped because', message)
       call add_body_terms(summary, s, m)
-      call add_contact_terms(summary, s, m, carried_bodies)
+      call add_contact_terms(summary, s, m, carried_bodies, closed)
       if (size(impacts) > 0) then
         call summary%add_count('impacts', 'impacts', size(impacts), '(landings, /contact/impacts)')
         call summary%add('impact_speed_max', 'impact speed max', maxval(-impacts%normal_speed_before), 'm/s', &
@@ -577,14 +579,16 @@ contains
   !> carried_bodies names each contact's body 2 where the contact closed in
   !> a later phase. Bodies are found by name: the series' frames may be a
   !> later phase's, m's are the first phase's.
-  subroutine add_contact_terms(summary, s, m, carried_bodies)
+  subroutine add_contact_terms(summary, s, m, carried_bodies, closed)
     type(summary_t), intent(inout) :: summary
     type(mechanism_series_t), intent(in) :: s
     type(mechanism_t), intent(in) :: m
     character(len=*), intent(in), optional :: carried_bodies(:)
-    real(wp) :: weight, slip(s%n), friction(s%n), mass, com(3), inertia(3, 3), gravity(3)
+    logical, intent(in), optional :: closed(:, :)   ! (contact, record) closed; absent: closed throughout
+    real(wp) :: weight, slip(s%n), friction(s%n), normal(s%n), mass, com(3), inertia(3, 3), gravity(3)
+    logical :: is_closed(s%n)
     integer :: k, i, e, j
-    character(len=:), allocatable :: c, body
+    character(len=:), allocatable :: c, body, while
     do k = 1, s%nc
       c = trim(s%contact_names(k))
       ! the series' contacts may be more than the mechanism's (a flight's
@@ -607,16 +611,25 @@ contains
         call m%elements(m%masses(e))%e%mass_properties(mass, com, inertia, gravity)
         weight = mass*norm2(gravity)
       end if
+      ! a contact's slip and forces while it is closed: while open its
+      ! velocity is the flight's relative speed, its forces zero
+      is_closed = .true.
+      if (present(closed)) is_closed = closed(k, :s%n)
+      if (.not. any(is_closed)) cycle
+      while = ''
+      if (.not. all(is_closed)) while = ' (while closed)'
       slip = [(norm2(s%slip(:, k, i)), i=1, s%n)]
       friction = [(norm2(s%friction(:, k, i)), i=1, s%n)]
-      call summary%add(c//'_slip_speed_final', c//' slip speed final', slip(s%n), 'm/s')
-      call summary%add(c//'_slip_speed_max', c//' slip speed max', maxval(slip), 'm/s')
-      call summary%add_range(c//'_normal_force', c//' normal force min / max', minval(s%normal(k, :s%n)), &
-                             maxval(s%normal(k, :s%n)), 'N')
+      normal = s%normal(k, :s%n)
+      if (is_closed(s%n)) call summary%add(c//'_slip_speed_final', c//' slip speed final', slip(s%n), 'm/s')
+      call summary%add(c//'_slip_speed_max', c//' slip speed max', maxval(slip, mask=is_closed), 'm/s', 'm/s'//while)
+      call summary%add_range(c//'_normal_force', c//' normal force min / max', minval(normal, mask=is_closed), &
+                             maxval(normal, mask=is_closed), 'N', 'N'//while)
       if (weight > 0) call summary%add_range(c//'_normal_force_weights', c//' normal force in weights', &
-                                             minval(s%normal(k, :s%n))/weight, maxval(s%normal(k, :s%n))/weight, &
-                                             '1', 'of '//body//'''s weight')
-      call summary%add(c//'_friction_force_max', c//' friction force max', maxval(friction), 'N')
+                                             minval(normal, mask=is_closed)/weight, &
+                                             maxval(normal, mask=is_closed)/weight, '1', 'of '//body//'''s weight'//while)
+      call summary%add(c//'_friction_force_max', c//' friction force max', maxval(friction, mask=is_closed), 'N', &
+                       'N'//while)
     end do
   end subroutine add_contact_terms
 
@@ -639,6 +652,25 @@ contains
       end do
     end associate
   end function carried_bodies
+
+  !> Per series contact and record of a flight whether the contact was
+  !> closed there (open(c, :) of the description's contact c is 0); a
+  !> contact the description does not name, closed throughout.
+  function closed_records(flight, open) result(closed)
+    type(flight_ode_t), intent(in) :: flight
+    integer, intent(in) :: open(:, :)
+    logical, allocatable :: closed(:, :)
+    integer :: k, c
+    associate (s => flight%series, contacts => flight%system%contacts)
+      allocate (closed(s%nc, s%n))
+      closed = .true.
+      do k = 1, s%nc
+        c = findloc([(contacts(c)%name == trim(s%contact_names(k)), c = 1, size(contacts))], .true., dim=1)
+        if (c == 0 .or. c > size(open, 1)) cycle
+        closed(k, :) = open(c, :s%n) == 0
+      end do
+    end associate
+  end function closed_records
 
   !> The symmetry axis of an inertia tensor (body axes): the axis whose
   !> moment differs from two equal others (1e-6 relative), the products zero;
