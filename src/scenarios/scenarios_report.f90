@@ -10,9 +10,11 @@ module scenarios_report
   use io_run_config, only: run_config_t
   use io_summary, only: summary_t
   use io_system, only: write_standard_output
+  use base_text, only: format_short, format_integer
+  use water_series, only: water_series_t
   implicit none (type, external)
   private
-  public :: end_report, close_report, add_run_cost
+  public :: end_report, close_report, add_run_cost, inlets_text
 
 contains
 
@@ -65,4 +67,18 @@ contains
       if (len(run%summary_json) > 0) call summary%write_json(run%summary_json, complete, message, path, status)
     end if
   end subroutine write_json
+
+  !> The summary's words for the inlets downstream of the start: '' without
+  !> any, else how many joined and the flow at the end (the water line's
+  !> flow rate is the start's).
+  function inlets_text(series) result(text)
+    type(water_series_t), intent(in) :: series
+    character(len=:), allocatable :: text
+    text = ''
+    if (.not. allocated(series%inlets)) return
+    if (size(series%inlets) == 0 .or. series%n < 1) return
+    text = ' at the start, '//format_short(series%flow(series%n))//' m^3/s at the end ('// &
+           format_integer(count(series%inlets%joined))//' of '//format_integer(size(series%inlets))// &
+           ' inlets joined)'
+  end function inlets_text
 end module scenarios_report

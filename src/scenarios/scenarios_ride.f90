@@ -36,7 +36,8 @@ module scenarios_ride
   use scenarios_water, only: build_water, write_slide_grid
   use scenarios_ride_flights, only: add_flights
   use scenarios_ride_results, only: friction_name, write_ride, write_evaluation, write_ride_csv
-  use scenarios_report, only: close_report
+  use scenarios_report, only: close_report, inlets_text
+  use water_series, only: water_series_t
   implicit none (type, external)
   private
   public :: run_ride_scenario, read_ride_description, ride_groups, check_sphere_radii, read_limit_gate, &
@@ -96,7 +97,7 @@ contains
       call file%finish(complete, message, write_status)
       if (allocated(ride%outcome)) call print_report(ride, report, result%water_outcome, result%water_cpu, &
                                                      result%ride_cpu, file%final_path(), run, complete, message, &
-                                                     write_status, description%water)
+                                                     write_status, description%water, result%water%series)
       ! the time series as CSV only for a complete run: a CSV cannot say it is cut short
       if (complete .and. write_status%ok() .and. allocated(run%ride_csv)) then
         if (len(run%ride_csv) > 0) call write_ride_csv(run%ride_csv, ride%series, report, ride%flights%watched, &
@@ -387,9 +388,11 @@ contains
   end subroutine segment_axes
 
   !> The ride report (stdout) and, with --summary-json, its numbers as JSON.
-  subroutine print_report(ride, r, water_done, water_cpu, ride_cpu, path, run, complete, message, status, water)
+  subroutine print_report(ride, r, water_done, water_cpu, ride_cpu, path, run, complete, message, status, water, &
+                          water_series)
     type(ride_result_t), intent(in) :: ride
     type(water_description_t), intent(in) :: water   !< the slide ridden: named in the report
+    type(water_series_t), intent(in) :: water_series   !< its water: the inlets named in the report
     type(ride_report_t), intent(in) :: r
     character(len=*), intent(in) :: water_done, path, message
     real(wp), intent(in) :: water_cpu, ride_cpu
@@ -404,7 +407,13 @@ contains
     call summary%start('ride', 'slidesim ride')
     if (allocated(water%slide_name)) call summary%add_text('slide', 'slide', water%slide_name)
     call summary%add('slide_length', 'slide centreline length', water%slide%length(), 'm')
-    call summary%add_text('water', 'water', water_done)
+    if (len(inlets_text(water_series)) > 0) then
+      ! the start's flow and the end's, the inlets joined (the ride's water)
+      call summary%add_text('water', 'water', water_done//'; '//format_short(water_series%flow(1))//' m^3/s'// &
+                            inlets_text(water_series))
+    else
+      call summary%add_text('water', 'water', water_done)
+    end if
     call summary%add_text('outcome', 'ride ended', ride%outcome)
     if (r%ejected_contact > 0) then
       call summary%add_text('ejected', 'EJECTED', 'the '//trim(contact_names(r%ejected_contact))// &

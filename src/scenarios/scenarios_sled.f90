@@ -38,9 +38,9 @@ module scenarios_sled
     values_per_record, open_run_file, write_mechanism_run
   use scenarios_ride_results, only: write_limit_verdicts
   use scenarios_water, only: build_water
+  use scenarios_report, only: inlets_text
   use water_run, only: water_description_t, water_result_t
   use water_flow, only: outcome_name
-  use water_series, only: water_series_t
   use io_water_results, only: write_water_results
   use io_input, only: group_present, where_given
   use geometry_tube, only: tube_surface_t
@@ -458,18 +458,4 @@ contains
                              format_integer(size(d%limits))//' set')
     end associate
   end subroutine vehicle_summarise
-
-  !> The summary's words for the inlets downstream of the start: '' without
-  !> any, else how many joined and the flow at the end (the water line's
-  !> flow rate is the start's).
-  function inlets_text(series) result(text)
-    type(water_series_t), intent(in) :: series
-    character(len=:), allocatable :: text
-    text = ''
-    if (.not. allocated(series%inlets)) return
-    if (size(series%inlets) == 0 .or. series%n < 1) return
-    text = ' at the start, '//format_short(series%flow(series%n))//' m^3/s at the end ('// &
-           format_integer(count(series%inlets%joined))//' of '//format_integer(size(series%inlets))// &
-           ' inlets joined)'
-  end function inlets_text
 end module scenarios_sled

@@ -3,7 +3,7 @@
 # and pushing for the longitudinal felt acceleration (never a "max" that is
 # negative), the side of the wall each contact climbed, what the sign of a
 # lateral or normal felt acceleration means, where the exit speed is taken
-# (the end of the slide); a closed standard input is a
+# (the end of the slide), the inlets of its water; a closed standard input is a
 # read error (exit 3) that says so, not "the input is empty".
 slidesim=$1
 repo=$(pwd)   # tests run from the repository root
@@ -35,6 +35,14 @@ check '! grep -q "into the run-out" "$work/ride.out"' "the exit speed said to be
 # the JSON keeps the signed values under their names
 check 'grep -q "\"felt_longitudinal_max\": *-0\.06" "$work/ride.json" && grep -q "\"felt_longitudinal_min\": *-0\.14" "$work/ride.json"' \
   "the JSON's signed longitudinal values: $(grep -o '"felt_longitudinal_m[a-z]*": *[-0-9.e]*' "$work/ride.json")"
+# the ride's water from two inlets: the report names them (it said only
+# where the water stopped, as if all of it entered at the start)
+{ cat "$work/ride.nml"; printf '&inlet\n  arc_length = 25.0\n  flow_rate = 0.002\n  speed = 2.0\n/\n'; } >"$work/inlet.nml"
+(cd "$work" && "$slidesim" -q -o inlet.h5 --summary-json inlet.json inlet.nml >inlet.out 2>inlet.err); got=$?
+check '[ $got = 0 ]' "ride with an inlet: exit status $got ($(cat "$work/inlet.err"))"
+check 'grep -q "^  water  *.*; 0\.004 m^3/s at the start, 0\.006 m^3/s at the end (1 of 1 inlets joined)$" "$work/inlet.out"' \
+  "ride with an inlet: the water line: $(grep '^  water ' "$work/inlet.out")"
+check '! grep -q "inlets" "$work/ride.out"' "the one-inlet ride speaks of inlets: $(grep inlets "$work/ride.out")"
 
 # standard input closed: a read error, not an empty input
 (cd "$work" && "$slidesim" -q -o stdin.h5 - <&- >stdin.out 2>stdin.err); got=$?
