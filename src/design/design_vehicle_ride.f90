@@ -59,7 +59,7 @@ module design_vehicle_ride
 
   !> Everything one vehicle's ride needs.
   type :: vehicle_ride_description_t
-    type(vehicle_t) :: vehicle                !< its kind (not the bar), riders, scale, water or dry, may_fly
+    type(vehicle_t) :: vehicle                !< its kind (not the bar), riders, their scales, its parts, ...
     type(sled_description_t) :: sled          !< its start and the sled's parameters (gravity, friction)
     class(surface_t), allocatable :: surface  !< what it rides on (a slide: its sections and limits)
     type(water_description_t) :: water        !< vehicle%in_water: the water on the slide, gravity the sled's

@@ -122,7 +122,30 @@ module io_declarations_multibody
       meaning='riders on the vehicle: mat, sitting and ring 1, double_ring 1-2, raft 1-4 (not for the bar)'), &
     declaration_t(groups='sled', name='scale', unit='1', default='1', low=0.6_wp, high=1.1_wp, &
       meaning='every rider''s size: height scale x 1.741 m, mass scale^3 x 73.0 kg (0.6: a small child, 1.1: a '// &
-      'tall adult; not for the bar)'), &
+      'tall adult; not for the bar); scales gives each rider''s'), &
+    declaration_t(groups='sled', name='scales', shape='per rider', unit='1', default='none', low=0.6_wp, &
+      high=1.1_wp, meaning='each rider''s size as scale, rider by rider (a double ring''s first in the front '// &
+      'ring, a raft''s first at the rear); none given: scale (docs/vehicles.md)'), &
+    declaration_t(groups='sled', name='mat_length', unit='m', default='1', low=0.3_wp, high=3.0_wp, &
+      meaning='the mat''s length, its two contacts'' distance (vehicle = ''mat'' only)'), &
+    declaration_t(groups='sled', name='mat_width', unit='m', default='0.6', low=0.2_wp, high=1.5_wp, &
+      meaning='the mat''s width (vehicle = ''mat'' only; the width check, docs/vehicles.md)'), &
+    declaration_t(groups='sled', name='mat_thickness', unit='m', default='0.04', low=0.005_wp, high=0.3_wp, &
+      meaning='the mat''s thickness: its rider lies on it (vehicle = ''mat'' only)'), &
+    declaration_t(groups='sled', name='mat_mass', unit='kg', default='1.5', low=0.1_wp, high=50.0_wp, &
+      meaning='the mat''s mass, a solid box (vehicle = ''mat'' only)'), &
+    declaration_t(groups='sled', name='ring_radii', shape='2', unit='m', default='0.45, 0.15', low=0.05_wp, &
+      high=1.5_wp, meaning='a ring''s torus: R from its centre to the tube''s centre, r the tube''s, r < R (ring, '// &
+      'double_ring only)'), &
+    declaration_t(groups='sled', name='ring_mass', unit='kg', default='7', low=0.5_wp, high=100.0_wp, &
+      meaning='the mass of each ring, a thin-walled torus (ring, double_ring only)'), &
+    declaration_t(groups='sled', name='raft_radii', shape='2', unit='m', default='0.75, 0.22', low=0.05_wp, &
+      high=3.0_wp, meaning='the raft''s torus: R from its centre to the tube''s centre, r the tube''s, r < R '// &
+      '(vehicle = ''raft'' only)'), &
+    declaration_t(groups='sled', name='raft_mass', unit='kg', default='30', low=1.0_wp, high=1000.0_wp, &
+      meaning='the raft''s mass with its floor, as a thin-walled torus (vehicle = ''raft'' only)'), &
+    declaration_t(groups='sled', name='raft_floor', unit='m', default='0.03', low=0.0_wp, high=1.0_wp, &
+      meaning='the height of the floor the raft''s riders sit on, at most 2 r (vehicle = ''raft'' only)'), &
     declaration_t(groups='sled', name='water', kind=VALUE_WORDS, &
       default='''computed'' (a vehicle), ''dry'' (the bar)', &
       choices='computed dry', meaning='a vehicle rides in the water computed on the slide (&water, &water_solver, '// &

@@ -9,7 +9,8 @@ module io_mechanism_config
   use base_text, only: format_integer
   use numerics_ode, only: ode_stats_t
   use kinetostatics_models, only: pendulum_description_t, fourbar_description_t, sled_description_t
-  use rider_vehicle, only: vehicle_t, vehicle_kinds, vehicle_kind_index, check_vehicle, riders_allowed, VEHICLE_BAR
+  use rider_vehicle, only: vehicle_t, vehicle_kinds, vehicle_kind_index, vehicle_problem, VEHICLE_BAR, VEHICLE_MAT, &
+    VEHICLE_RING, VEHICLE_DOUBLE_RING, VEHICLE_RAFT, max_riders
   use kinetostatics_recorder, only: mechanism_series_t
   use base_spec, only: spec_t
   use io_input, only: input_text_t, group_reader_t, open_group, format_real, format_vector
@@ -18,6 +19,12 @@ module io_mechanism_config
   implicit none (type, external)
   private
   public :: read_pendulum_config, read_fourbar_config, read_sled_config, write_mechanism_series
+
+  !> a vehicle's own parts (&sled), each kind's: refused on another kind
+  character(len=*), parameter :: mat_parts(4) = [character(len=13) :: 'mat_length', 'mat_width', 'mat_thickness', &
+                                                 'mat_mass']
+  character(len=*), parameter :: ring_parts(2) = [character(len=13) :: 'ring_radii', 'ring_mass']
+  character(len=*), parameter :: raft_parts(3) = [character(len=13) :: 'raft_radii', 'raft_mass', 'raft_floor']
 
 contains
 
@@ -78,7 +85,6 @@ contains
     type(group_reader_t) :: r
     character(len=32) :: friction
     character(len=16) :: kind, water
-    type(status_t) :: checked
     type(spec_t) :: law
     integer :: k
 
@@ -106,19 +112,15 @@ contains
     kind = 'bar'
     call r%get('vehicle', kind, status, choices=vehicle_kinds)
     given%kind = vehicle_kind_index(trim(kind))
-    call r%get('riders', given%riders, status)
-    call r%get('scale', given%scale, status)
     if (status%ok() .and. given%kind == VEHICLE_BAR) then
-      call r%refuse_given([character(len=6) :: 'riders', 'scale'], 'they describe a vehicle: give vehicle too', &
-                          status)
+      call r%refuse_given([character(len=13) :: 'riders', 'scale', 'scales', mat_parts, ring_parts, raft_parts], &
+                          'they describe a vehicle: give vehicle too', status)
     else if (status%ok() .and. .not. present(vehicle)) then
       call r%invalid('vehicle', trim(kind), 'this program rides the bar only (''bar'')', status)
     else if (status%ok()) then
       call r%refuse_given([character(len=7) :: 'length', 'mass', 'inertia'], 'the vehicle '''//trim(kind)// &
                           ''' has them from its riders and scale (docs/vehicles.md)', status)
-      call check_vehicle(given, checked)
-      if (.not. checked%ok()) call r%invalid('riders', format_integer(given%riders), riders_allowed(given%kind), &
-                                             status)
+      call read_vehicle(r, trim(kind), given, status)
     end if
     ! the water (docs/vehicles.md, "In the water"): a vehicle rides in the
     ! computed water unless water = 'dry' says otherwise; the bar rides dry
@@ -180,6 +182,52 @@ contains
     config%q0 = [u0, v0, phi0]
     config%qd0 = [du0, dv0, dphi0]
   end subroutine read_sled_config
+
+  !> A vehicle's riders, their sizes and the vehicle's own parts (&sled
+  !> riders, scale, scales, mat_*, ring_*, raft_*; docs/vehicles.md, "The
+  !> input") into `v` (its kind set): a part of another kind of vehicle is
+  !> refused, each value checked (rider_vehicle's vehicle_problem).
+  subroutine read_vehicle(r, kind, v, status)
+    type(group_reader_t), intent(in) :: r
+    character(len=*), intent(in) :: kind
+    type(vehicle_t), intent(inout) :: v
+    type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: variable, value, allowed
+    real(wp) :: scale
+    logical :: each(max_riders)
+    call r%get('riders', v%riders, status)
+    if (status%ok()) then
+      call vehicle_problem(vehicle_t(kind=v%kind, riders=v%riders), variable, value, allowed)
+      if (variable == 'riders') call r%invalid('riders', value, allowed, status)
+    end if
+    scale = 1
+    each = .false.
+    call r%get('scale', scale, status)
+    v%scales = scale
+    if (status%ok()) call r%get_parts('scales', v%scales(:v%riders), 'riders = '//format_integer(v%riders), status, &
+                                      given=each(:v%riders))
+    if (status%ok() .and. all(each(:v%riders))) &
+      call r%refuse_given(['scale'], 'scales gives every rider''s size (scale is for those it does not give)', status)
+    if (v%kind /= VEHICLE_MAT) call r%refuse_given(mat_parts, 'the vehicle '''//kind//''' has no mat (vehicle = '// &
+                                                   '''mat'' only)', status)
+    if (v%kind /= VEHICLE_RING .and. v%kind /= VEHICLE_DOUBLE_RING) &
+      call r%refuse_given(ring_parts, 'the vehicle '''//kind//''' has no ring (vehicle = ''ring'' or '// &
+                          '''double_ring'' only)', status)
+    if (v%kind /= VEHICLE_RAFT) call r%refuse_given(raft_parts, 'the vehicle '''//kind//''' is not a raft '// &
+                                                    '(vehicle = ''raft'' only)', status)
+    call r%get('mat_length', v%mat_size(1), status)
+    call r%get('mat_width', v%mat_size(2), status)
+    call r%get('mat_thickness', v%mat_size(3), status)
+    call r%get('mat_mass', v%mat_mass, status)
+    call r%get('ring_radii', v%ring_radii, status)
+    call r%get('ring_mass', v%ring_mass, status)
+    call r%get('raft_radii', v%raft_radii, status)
+    call r%get('raft_mass', v%raft_mass, status)
+    call r%get('raft_floor', v%raft_floor, status)
+    if (.not. status%ok()) return
+    call vehicle_problem(v, variable, value, allowed)
+    if (len(variable) > 0) call r%invalid(variable, value, allowed, status)
+  end subroutine read_vehicle
 
   pure function digit(k) result(text)
     integer, intent(in) :: k

@@ -11,12 +11,18 @@
 !> the front contact (down the slide when phi0 = 0), z the slide's normal on
 !> the vehicle's side, y = z x x. Both contacts lie on the slide (z = 0).
 !>
-!> A person of size s (`scale`): height s H_ref, H_ref = 1.741 m, mass
-!> s^3 M_ref, M_ref = 73.0 kg (de Leva's male reference subject, scaled
-!> isometrically), segment centres of mass h = 0.075 m (H/1.78 m) above the
-!> surface the person lies on (thesis table 4.10, scaled). The person is
-!> rigid: the three bodies of rider_body joined at the hip, either straight
-!> (lying) or with the trunk turned up by 90 degrees (sitting up).
+!> A person of size s (`scales(k)` for rider k): height s H_ref, H_ref =
+!> 1.741 m, mass s^3 M_ref, M_ref = 73.0 kg (de Leva's male reference
+!> subject, scaled isometrically), segment centres of mass h = 0.075 m
+!> (H/1.78 m) above the surface the person lies on (thesis table 4.10,
+!> scaled). The person is rigid: the three bodies of rider_body joined at the
+!> hip, either straight (lying) or with the trunk turned up by 90 degrees
+!> (sitting up).
+!>
+!> The vehicle's own parts (the mat's sizes and mass, the rings' and the
+!> raft's torus radii and masses, the raft's floor) are the vehicle_t's, from
+!> input (&sled mat_length, ..., raft_floor); its defaults are those of
+!> common commercial mats and tubes (docs/vehicles.md, "The input").
 module rider_vehicle
   use base_kinds, only: wp
   use base_constants, only: pi
@@ -37,7 +43,7 @@ module rider_vehicle
   implicit none (type, external)
   private
   public :: vehicle_t, vehicle_body_t, vehicle_body, check_vehicle, build_vehicle_model, vehicle_kind_index
-  public :: riders_allowed, vehicle_kinds
+  public :: riders_allowed, vehicle_kinds, vehicle_problem, max_riders
   public :: VEHICLE_BAR, VEHICLE_MAT, VEHICLE_SITTING, VEHICLE_RING, VEHICLE_DOUBLE_RING, VEHICLE_RAFT
   public :: person_reference_height, person_reference_mass, scale_range, vehicle_ride_figures, torus
   public :: narrowest_section, width_tolerance
@@ -55,20 +61,15 @@ module rider_vehicle
   !> scale 0.6: 1.04 m, 15.8 kg (a 5th-percentile child of about 5 years);
   !> 1.1: 1.92 m, 97 kg (beyond a 95th-percentile adult man)
   real(wp), parameter :: scale_range(2) = [0.6_wp, 1.1_wp]
+  !> the most riders a vehicle carries (a raft's)
+  integer, parameter :: max_riders = 4
 
-  ! docs/vehicles.md "Vehicles": the mat (foam racing mat), the tubes
-  real(wp), parameter :: mat_size(3) = [1.0_wp, 0.6_wp, 0.04_wp]   ! m: length, width, thickness
-  real(wp), parameter :: mat_mass = 1.5_wp                         ! kg
-  real(wp), parameter :: ring_radii(2) = [0.45_wp, 0.15_wp]        ! m: torus R (tube centre), r (tube): 1.2 m outside
-  real(wp), parameter :: ring_mass = 7.0_wp                        ! kg, each torus of a single or double ring
-  real(wp), parameter :: raft_radii(2) = [0.75_wp, 0.22_wp]        ! m: 1.94 m outside
-  real(wp), parameter :: raft_mass = 30.0_wp                       ! kg, tube and floor
-  real(wp), parameter :: raft_floor = 0.03_wp                      ! m, the floor the raft's riders sit on
   !> The water's drag on a vehicle (docs/vehicles.md, "In the water"): the
   !> rider's drag model (rider_drag) on a sphere at each contact, the
   !> sphere standing for what the vehicle wets there: a tube's cross-section
-  !> (its radius r) under a ring or a raft, the body-slide rider's pelvis
-  !> and back spheres (0.5 m, thesis 4.3) under a mat and a seat, its heels'
+  !> (its radius r, from input) under a ring or a raft, the body-slide
+  !> rider's pelvis and back spheres (0.5 m, thesis 4.3: &rider
+  !> drag_radius's defaults, fixed here) under a mat and a seat, its heels'
   !> (0.05 m) under a sitting rider's heels.
   real(wp), parameter :: body_sphere = 0.5_wp, heel_sphere = 0.05_wp   ! m
 
@@ -85,11 +86,15 @@ module rider_vehicle
   integer, parameter :: section_points = 181
   real(wp), parameter :: width_tolerance = 1e-3_wp   ! m
 
-  !> A vehicle as the input gives it (&sled vehicle, riders, scale).
+  !> A vehicle as the input gives it (&sled vehicle, riders, scale, scales
+  !> and the parts' values): the one description every ride of it takes.
   type :: vehicle_t
     integer :: kind = VEHICLE_BAR     ! VEHICLE_BAR: the plain bar of &sled, no vehicle
     integer :: riders = 1
-    real(wp) :: scale = 1             ! every rider's size (see the header)
+    !> each rider's size (see the header): rider k's scales(k), k <= riders
+    !> (a double ring's first rider in the front ring; a raft's first at
+    !> the rear, the others on round it)
+    real(wp) :: scales(max_riders) = 1
     !> in the computed water (&sled water = 'computed', the default for a
     !> vehicle) or dry (water = 'dry'); the bar rides dry
     logical :: in_water = .false.
@@ -98,6 +103,22 @@ module rider_vehicle
     !> rider_vehicle_flight), landing by `landing`'s law
     logical :: may_fly = .false.
     type(impact_law_t) :: landing
+    !> The vehicle's own parts (docs/vehicles.md, "The input"; the defaults
+    !> are io_declarations_multibody's, chosen, not measured: racing mats
+    !> about 1 m, 1-2 kg; single tubes 1.1-1.2 m across, 6-8 kg; four-seat
+    !> round rafts about 2 m, 25-35 kg). The mat: length (the contacts'
+    !> distance), width, thickness (m), a solid box of mass mat_mass (kg).
+    real(wp) :: mat_size(3) = [1.0_wp, 0.6_wp, 0.04_wp]
+    real(wp) :: mat_mass = 1.5_wp
+    !> a ring's thin-walled torus: R to the tube's centre, r the tube's (m),
+    !> 1.2 m outside; the mass of each torus of a single or double ring (kg)
+    real(wp) :: ring_radii(2) = [0.45_wp, 0.15_wp]
+    real(wp) :: ring_mass = 7.0_wp
+    !> the raft's torus (R, r; m), its mass with the floor (kg) and the
+    !> height of the floor its riders sit on (m)
+    real(wp) :: raft_radii(2) = [0.75_wp, 0.22_wp]
+    real(wp) :: raft_mass = 30.0_wp
+    real(wp) :: raft_floor = 0.03_wp
   end type vehicle_t
 
   !> The vehicle with its riders as one rigid body, in V.
@@ -105,7 +126,6 @@ module rider_vehicle
     type(rigid_body_t) :: body        ! all of it: mass, centre of mass and inertia about it
     real(wp) :: length = 0            ! m, rear to front contact (along x)
     real(wp) :: width = 0             ! m, across (along y): the widest of vehicle and riders
-    real(wp) :: rider_mass = 0        ! kg, each rider
     real(wp) :: vehicle_mass = 0      ! kg, the vehicle without riders (0: a rider sitting on the slide)
     real(wp) :: drag_radius(2) = 0    ! m, the water drag's sphere at the rear and the front contact
   end type vehicle_body_t
@@ -134,31 +154,97 @@ contains
     vehicle_kind_index = findloc(vehicle_kinds, name, dim=1)
   end function vehicle_kind_index
 
-  !> Refuses a vehicle its kind cannot carry; the message names the variable.
+  !> Refuses a vehicle its kind cannot carry or whose parts cannot be; the
+  !> message names the variable (vehicle_problem).
   subroutine check_vehicle(v, status)
     type(vehicle_t), intent(in) :: v
     type(status_t), intent(inout) :: status
+    character(len=:), allocatable :: variable, value, allowed
     if (.not. status%ok()) return
     if (v%kind < 1 .or. v%kind > size(vehicle_kinds)) then
       call set_status(status, STATUS_INVALID_INPUT, 'vehicle: not a kind of vehicle')
-    else if (v%kind == VEHICLE_BAR) then
       return
-    else if (v%riders < rider_counts(1, v%kind) .or. v%riders > rider_counts(2, v%kind)) then
-      call set_status(status, STATUS_INVALID_INPUT, 'riders = '//format_integer(v%riders)//': '// &
-                      riders_allowed(v%kind))
-    else if (.not. (v%scale >= scale_range(1) .and. v%scale <= scale_range(2))) then
-      call set_status(status, STATUS_INVALID_INPUT, 'scale = '//format_real(v%scale)//': must lie in ['// &
-                      format_real(scale_range(1))//', '//format_real(scale_range(2))//']')
     end if
+    call vehicle_problem(v, variable, value, allowed)
+    if (len(variable) > 0) call set_status(status, STATUS_INVALID_INPUT, variable//' = '//value//': '//allowed)
   end subroutine check_vehicle
+
+  !> The first value of vehicle `v` (a kind of vehicle_kinds) that its kind
+  !> cannot carry or that cannot be: the variable as &sled names it, its
+  !> value and what is allowed in words; variable = '' if none. The parts of
+  !> other kinds are not looked at (the reader refuses them given).
+  subroutine vehicle_problem(v, variable, value, allowed)
+    type(vehicle_t), intent(in) :: v
+    character(len=:), allocatable, intent(out) :: variable, value, allowed
+    integer :: k
+    variable = ''
+    value = ''
+    allowed = ''
+    if (v%kind == VEHICLE_BAR) return
+    if (v%riders < rider_counts(1, v%kind) .or. v%riders > rider_counts(2, v%kind)) then
+      call found('riders', format_integer(v%riders), riders_allowed(v%kind))
+      return
+    end if
+    do k = 1, v%riders
+      if (.not. (v%scales(k) >= scale_range(1) .and. v%scales(k) <= scale_range(2))) then
+        call found('scales('//format_integer(k)//')', format_real(v%scales(k)), 'must lie in ['// &
+                   format_real(scale_range(1))//', '//format_real(scale_range(2))//']')
+        return
+      end if
+    end do
+    select case (v%kind)
+    case (VEHICLE_MAT)
+      if (.not. all(v%mat_size > 0)) then
+        call found('mat_length, mat_width, mat_thickness', vector_text(v%mat_size), 'each must be > 0 (m)')
+      else if (.not. v%mat_mass > 0) then
+        call found('mat_mass', format_real(v%mat_mass), 'must be > 0 (kg)')
+      end if
+    case (VEHICLE_RING, VEHICLE_DOUBLE_RING)
+      call torus_problem('ring', v%ring_radii, v%ring_mass)
+    case (VEHICLE_RAFT)
+      call torus_problem('raft', v%raft_radii, v%raft_mass)
+      if (len(variable) == 0 .and. .not. (v%raft_floor >= 0 .and. v%raft_floor <= 2*v%raft_radii(2))) &
+        call found('raft_floor', format_real(v%raft_floor), 'must lie in [0, 2 r] = [0, '// &
+                   format_real(2*v%raft_radii(2))//'] m: within the tube''s height')
+    end select
+  contains
+    subroutine found(name, text, words)
+      character(len=*), intent(in) :: name, text, words
+      variable = name
+      value = text
+      allowed = words
+    end subroutine found
+    !> a torus of radii (R, r) is a ring only with 0 < r < R
+    subroutine torus_problem(part, radii, mass)
+      character(len=*), intent(in) :: part
+      real(wp), intent(in) :: radii(2), mass
+      if (.not. (radii(2) > 0 .and. radii(2) < radii(1))) then
+        call found(part//'_radii', vector_text(radii), 'the tube''s radius r (the second) must be > 0 and less '// &
+                   'than R (the first, from the '//part//'''s centre to the tube''s centre)')
+      else if (.not. mass > 0) then
+        call found(part//'_mass', format_real(mass), 'must be > 0 (kg)')
+      end if
+    end subroutine torus_problem
+  end subroutine vehicle_problem
+
+  !> 'x1, x2, ...' as a message gives a vector.
+  pure function vector_text(x) result(text)
+    real(wp), intent(in) :: x(:)
+    character(len=:), allocatable :: text
+    integer :: k
+    text = format_real(x(1))
+    do k = 2, size(x)
+      text = text//', '//format_real(x(k))
+    end do
+  end function vector_text
 
   !> The vehicle `v` with its riders as one rigid body in V (see the header).
   subroutine vehicle_body(v, vb, status)
     type(vehicle_t), intent(in) :: v
     type(vehicle_body_t), intent(out) :: vb
     type(status_t), intent(inout) :: status
-    type(rigid_body_t) :: lying, sitting, part
-    real(wp) :: heel, psi, centre(3)
+    type(rigid_body_t) :: lying(max_riders), sitting(max_riders)
+    real(wp) :: heel(max_riders), psi, centre(3)
     integer :: k
 
     call check_vehicle(v, status)
@@ -167,62 +253,67 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'vehicle = ''bar'': the plain bar has no vehicle body')
       return
     end if
-    call person(v%scale, lying, sitting, heel, status)
-    if (.not. status%ok()) return
-    vb%rider_mass = lying%mass
+    do k = 1, v%riders
+      call person(v%scales(k), lying(k), sitting(k), heel(k), status)
+      if (.not. status%ok()) return
+    end do
     select case (v%kind)
     case (VEHICLE_MAT)
       ! the box, then the rider prone, head first (turned by pi about z),
       ! lying on it with the centre of mass over the mat's middle
-      part = rigid_body_t(mat_mass, [mat_size(1)/2, 0.0_wp, mat_size(3)/2], box_inertia(mat_mass, mat_size))
-      call add_body(vb%body, part, 0.0_wp, [0.0_wp, 0.0_wp, 0.0_wp])
-      call add_body(vb%body, lying, pi, [mat_size(1)/2 + lying%com(1), 0.0_wp, mat_size(3)])
-      vb%length = mat_size(1)
-      vb%width = max(mat_size(2), v%scale*shoulder_breadth)
-      vb%vehicle_mass = mat_mass
+      associate (a => v%mat_size)
+        call add_body(vb%body, rigid_body_t(v%mat_mass, [a(1)/2, 0.0_wp, a(3)/2], box_inertia(v%mat_mass, a)), &
+                      0.0_wp, [0.0_wp, 0.0_wp, 0.0_wp])
+        call add_body(vb%body, lying(1), pi, [a(1)/2 + lying(1)%com(1), 0.0_wp, a(3)])
+        vb%length = a(1)
+        vb%width = max(a(2), v%scales(1)*shoulder_breadth)
+      end associate
+      vb%vehicle_mass = v%mat_mass
       vb%drag_radius = body_sphere
     case (VEHICLE_SITTING)
       ! on the slide itself: seat (the pelvis contact) behind, heels in front
-      call add_body(vb%body, sitting, 0.0_wp, [0.0_wp, 0.0_wp, 0.0_wp])
-      vb%length = heel
-      vb%width = v%scale*shoulder_breadth
+      call add_body(vb%body, sitting(1), 0.0_wp, [0.0_wp, 0.0_wp, 0.0_wp])
+      vb%length = heel(1)
+      vb%width = v%scales(1)*shoulder_breadth
       vb%drag_radius = [body_sphere, heel_sphere]
     case (VEHICLE_RING)
-      call add_body(vb%body, torus(ring_mass, ring_radii), 0.0_wp, [ring_radii(1), 0.0_wp, ring_radii(2)])
-      call add_body(vb%body, sitting, 0.0_wp, [ring_radii(1), 0.0_wp, ring_radii(2)])
-      vb%length = 2*ring_radii(1)
-      vb%width = 2*sum(ring_radii)
-      vb%vehicle_mass = ring_mass
-      vb%drag_radius = ring_radii(2)
+      associate (r1 => v%ring_radii(1), r2 => v%ring_radii(2))
+        call add_body(vb%body, torus(v%ring_mass, v%ring_radii), 0.0_wp, [r1, 0.0_wp, r2])
+        call add_body(vb%body, sitting(1), 0.0_wp, [r1, 0.0_wp, r2])
+        vb%length = 2*r1
+        vb%width = 2*(r1 + r2)
+        vb%drag_radius = r2
+      end associate
+      vb%vehicle_mass = v%ring_mass
     case (VEHICLE_DOUBLE_RING)
       ! two rings in line, touching (centres 2 (R + r) apart); the first
       ! rider in the front ring, the second in the rear one
-      associate (r1 => ring_radii(1), r2 => ring_radii(2))
+      associate (r1 => v%ring_radii(1), r2 => v%ring_radii(2))
         centre = [r1, 0.0_wp, r2]
-        call add_body(vb%body, torus(ring_mass, ring_radii), 0.0_wp, centre)
-        if (v%riders == 2) call add_body(vb%body, sitting, 0.0_wp, centre)
+        call add_body(vb%body, torus(v%ring_mass, v%ring_radii), 0.0_wp, centre)
+        if (v%riders == 2) call add_body(vb%body, sitting(2), 0.0_wp, centre)
         centre(1) = r1 + 2*(r1 + r2)
-        call add_body(vb%body, torus(ring_mass, ring_radii), 0.0_wp, centre)
-        call add_body(vb%body, sitting, 0.0_wp, centre)
+        call add_body(vb%body, torus(v%ring_mass, v%ring_radii), 0.0_wp, centre)
+        call add_body(vb%body, sitting(1), 0.0_wp, centre)
         vb%length = 4*r1 + 2*r2
         vb%width = 2*(r1 + r2)
+        vb%drag_radius = r2
       end associate
-      vb%vehicle_mass = 2*ring_mass
-      vb%drag_radius = ring_radii(2)
+      vb%vehicle_mass = 2*v%ring_mass
     case (VEHICLE_RAFT)
       ! riders evenly round the floor, backs to the tube, legs to the
       ! middle; the first at the rear facing forward
-      associate (r1 => raft_radii(1), r2 => raft_radii(2))
-        call add_body(vb%body, torus(raft_mass, raft_radii), 0.0_wp, [r1, 0.0_wp, r2])
+      associate (r1 => v%raft_radii(1), r2 => v%raft_radii(2))
+        call add_body(vb%body, torus(v%raft_mass, v%raft_radii), 0.0_wp, [r1, 0.0_wp, r2])
         do k = 1, v%riders
           psi = pi + 2*pi*(k - 1)/v%riders
-          call add_body(vb%body, sitting, psi + pi, [r1 + (r1 - r2)*cos(psi), (r1 - r2)*sin(psi), raft_floor])
+          call add_body(vb%body, sitting(k), psi + pi, [r1 + (r1 - r2)*cos(psi), (r1 - r2)*sin(psi), v%raft_floor])
         end do
         vb%length = 2*r1
         vb%width = 2*(r1 + r2)
+        vb%drag_radius = r2
       end associate
-      vb%vehicle_mass = raft_mass
-      vb%drag_radius = raft_radii(2)
+      vb%vehicle_mass = v%raft_mass
     end select
   end subroutine vehicle_body
 

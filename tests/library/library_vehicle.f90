@@ -123,7 +123,7 @@ contains
     call expect_ok(st, kind//': its slide')
     d%vehicle%kind = vehicle_kind_index(kind)
     d%vehicle%riders = riders
-    d%vehicle%scale = scale
+    d%vehicle%scales = scale
     d%vehicle%in_water = in_water
     d%sled%params%friction = [law_spec('coulomb', 'mu', 0.0724419_wp)]
     d%sled%q0 = [u0, 1.5707963267948966_wp, 0.0_wp]
