@@ -41,6 +41,7 @@ program library_vehicle
 
   call mat()
   call ring()
+  call ring_child_adult()
   call bowl_halfpipe('mat')
   call bowl_halfpipe('ring')
   call raft()
@@ -71,6 +72,19 @@ contains
     call halfpipe_water(d%water, 1.6707963267948966_wp, 1.4707963267948966_wp)
     call ride('inputs/parts/ring.nml', d)
   end subroutine ring
+
+  !> inputs/parts/ring_child_adult.nml: the same double ring of larger
+  !> tubes (R = 0.5 m, r = 0.17 m, 8 kg each), a child (scale 0.6) in front
+  !> and an adult (1.08) behind.
+  subroutine ring_child_adult()
+    type(vehicle_ride_description_t) :: d
+    d = vehicle('double_ring', 2, 1.0_wp, .true., 0.5_wp, 1.0_wp, halfpipe_slide())
+    d%vehicle%scales(:2) = [0.6_wp, 1.08_wp]
+    d%vehicle%ring_radii = [0.5_wp, 0.17_wp]
+    d%vehicle%ring_mass = 8.0_wp
+    call halfpipe_water(d%water, 1.6707963267948966_wp, 1.4707963267948966_wp)
+    call ride('inputs/parts/ring_child_adult.nml', d)
+  end subroutine ring_child_adult
 
   !> inputs/parts/bowl_halfpipe_mat.nml, bowl_halfpipe_ring.nml: a mat or
   !> a ring with one rider down the half-pipe and bowl slide in its water,
