@@ -1,8 +1,9 @@
 !> Designs from standard parts (thesis 5: "standardmäßige Bauteile beziehungsweise
 !> sich wiederholende Bauteile zur Planung der Fertigung"): the design
 !> variables of an element design (design_slide_design: a curve's radius,
-!> turning angle, an element's slope or length) may take only the values of
-!> a catalogue, and the parts the chosen design is built from are counted.
+!> turning angle, an element's slope or length, a bowl's size, a funnel's, a
+!> drop's) may take only the values of a catalogue, and the parts the chosen
+!> design is built from are counted.
 !>
 !> The method, a heuristic (it proves no discrete optimum):
 !>  1. the continuous optimum x* (design_geometry_optimization) is snapped to

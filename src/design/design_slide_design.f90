@@ -3,8 +3,10 @@
 !> which are the design variables with their bounds (table 4.12's design), or
 !> around a chain of standard elements (geometry_slide_elements), some
 !> parameters of which are the design variables (a curve's radius, turning
-!> angle, an element's slope or length: the parts a slide is built from);
-!> the slide of a design; the starts of a multi-start.
+!> angle, an element's slope or length; a bowl's entry radius, wall slope
+!> and drop; a funnel's length, slope and widest radius; a drop's slope and
+!> curve-out radius: the parts a slide is built from); the slide of a
+!> design; the starts of a multi-start.
 module design_slide_design
   use base_kinds, only: wp
   use base_status, only: status_t, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
@@ -17,13 +19,17 @@ module design_slide_design
   private
   public :: slide_design_t, table_4_12_design, design_points, start_x, build_design_slide, start_points
   public :: design_elements, parameter_value, PARAMETER_LENGTH, PARAMETER_SLOPE, PARAMETER_RADIUS, &
-    PARAMETER_ANGLE, parameter_names, parameter_units
+    PARAMETER_ANGLE, PARAMETER_DROP, parameter_names, parameter_units
 
   !> The element parameters a design variable can be (slide_element_t's
-  !> length, slope_deg, radius, angle_deg), their names and units.
-  integer, parameter :: PARAMETER_LENGTH = 1, PARAMETER_SLOPE = 2, PARAMETER_RADIUS = 3, PARAMETER_ANGLE = 4
-  character(len=*), parameter :: parameter_names(4) = [character(len=6) :: 'length', 'slope', 'radius', 'angle']
-  character(len=*), parameter :: parameter_units(4) = [character(len=3) :: 'm', 'deg', 'm', 'deg']
+  !> length, slope_deg, radius, angle_deg, drop), their names (those of
+  !> &slide_elements, docs/geometry.md) and units. Which element kinds have
+  !> which as a design variable: io_element_design_config.
+  integer, parameter :: PARAMETER_LENGTH = 1, PARAMETER_SLOPE = 2, PARAMETER_RADIUS = 3, PARAMETER_ANGLE = 4, &
+                        PARAMETER_DROP = 5
+  character(len=*), parameter :: parameter_names(5) = [character(len=6) :: 'length', 'slope', 'radius', 'angle', &
+                                                       'drop']
+  character(len=*), parameter :: parameter_units(5) = [character(len=3) :: 'm', 'deg', 'm', 'deg', 'm']
 
   !> A tube slide around a spline through points, and which coordinates
   !> move; or around a chain of elements, and which parameters move.
@@ -89,6 +95,7 @@ contains
         case (PARAMETER_SLOPE); e%slope_deg = x(k)
         case (PARAMETER_RADIUS); e%radius = x(k)
         case (PARAMETER_ANGLE); e%angle_deg = x(k)
+        case (PARAMETER_DROP); e%drop = x(k)
         end select
       end associate
     end do
@@ -102,7 +109,8 @@ contains
     case (PARAMETER_LENGTH); value = e%length
     case (PARAMETER_SLOPE); value = e%slope_deg
     case (PARAMETER_RADIUS); value = e%radius
-    case default; value = e%angle_deg
+    case (PARAMETER_ANGLE); value = e%angle_deg
+    case default; value = e%drop
     end select
   end function parameter_value
 

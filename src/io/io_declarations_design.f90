@@ -168,8 +168,9 @@ module io_declarations_design
       unit='1', default='none', low=1.0_wp, high=40.0_wp, &
       meaning='the element of &slide_elements of each design variable (1 = the first)'), &
     declaration_t(groups='design_elements', name='parameter', kind=VALUE_WORDS, shape='per design variable', &
-      default='none', choices='length slope radius angle', meaning='its parameter: length (m; straight, '// &
-      'runout), slope (deg; straight, curve, runout), radius (m; curve, helix), angle (deg; curve)'), &
+      default='none', choices='length slope radius angle drop', meaning='its parameter, as &slide_elements '// &
+      'names it: length (m; straight, runout, funnel), slope (deg; straight, curve, runout, funnel, bowl, drop), '// &
+      'radius (m; curve, helix, bowl, funnel, drop), angle (deg; curve), drop (m; bowl)'), &
     declaration_t(groups='design_elements', name='lower', shape='per design variable', unit='m or deg', &
       default='none', low=-720.0_wp, high=1e4_wp, meaning='lower bound of each, in its parameter''s unit, held '// &
       'exactly, at most its start value (&slide_elements)'), &
@@ -178,7 +179,7 @@ module io_declarations_design
       'start value'), &
     ! ---- &catalogue: the standard parts (docs/design.md, "Designs from standard parts")
     declaration_t(groups='catalogue', name='radii', shape='list of at most 200', unit='m', default='none', &
-      low=0.0_wp, high=1e4_wp, open_low=.true., meaning='the radii made (increasing); or radius_step'), &
+      low=0.0_wp, high=1e4_wp, open_low=.true., meaning='the radii made (curve, helix; increasing); or radius_step'), &
     declaration_t(groups='catalogue', name='radius_step', unit='m', default='none', low=0.0_wp, high=1e4_wp, &
       open_low=.true., meaning='radii made: the whole multiples of it'), &
     declaration_t(groups='catalogue', name='angles_deg', shape='list of at most 200', unit='deg', default='none', &
@@ -186,13 +187,49 @@ module io_declarations_design
     declaration_t(groups='catalogue', name='angle_step_deg', unit='deg', default='none', low=0.0_wp, &
       high=720.0_wp, open_low=.true., meaning='turning angles made: the whole multiples of it'), &
     declaration_t(groups='catalogue', name='slopes_deg', shape='list of at most 200', unit='deg', default='none', &
-      low=-60.0_wp, high=60.0_wp, meaning='the slopes made (increasing); or slope_step_deg'), &
+      low=-60.0_wp, high=60.0_wp, meaning='the slopes made (straight, curve, runout, funnel; increasing); or '// &
+      'slope_step_deg'), &
     declaration_t(groups='catalogue', name='slope_step_deg', unit='deg', default='none', low=0.0_wp, &
       high=60.0_wp, open_low=.true., meaning='slopes made: the whole multiples of it'), &
     declaration_t(groups='catalogue', name='lengths', shape='list of at most 200', unit='m', default='none', &
       low=0.0_wp, high=1e4_wp, open_low=.true., meaning='the lengths made (increasing); or length_step'), &
     declaration_t(groups='catalogue', name='length_step', unit='m', default='none', low=0.0_wp, high=1e4_wp, &
       open_low=.true., meaning='lengths made: the whole multiples of it'), &
+    declaration_t(groups='catalogue', name='bowl_radii', shape='list of at most 200', unit='m', default='none', &
+      low=0.0_wp, high=1e4_wp, open_low=.true., meaning='the bowls made: their entry radii from the axis '// &
+      '(increasing); or bowl_radius_step'), &
+    declaration_t(groups='catalogue', name='bowl_radius_step', unit='m', default='none', low=0.0_wp, high=1e4_wp, &
+      open_low=.true., meaning='bowls'' entry radii made: the whole multiples of it'), &
+    declaration_t(groups='catalogue', name='bowl_slopes_deg', shape='list of at most 200', unit='deg', &
+      default='none', low=0.0_wp, high=85.0_wp, open_low=.true., meaning='the bowls made: their wall slopes at '// &
+      'the entry (increasing); or bowl_slope_step_deg'), &
+    declaration_t(groups='catalogue', name='bowl_slope_step_deg', unit='deg', default='none', low=0.0_wp, &
+      high=85.0_wp, open_low=.true., meaning='bowls'' wall slopes made: the whole multiples of it'), &
+    declaration_t(groups='catalogue', name='bowl_drops', shape='list of at most 200', unit='m', default='none', &
+      low=0.0_wp, high=1e4_wp, open_low=.true., meaning='the bowls made: their drops from the entry to the '// &
+      'outlet (increasing); or bowl_drop_step'), &
+    declaration_t(groups='catalogue', name='bowl_drop_step', unit='m', default='none', low=0.0_wp, high=1e4_wp, &
+      open_low=.true., meaning='bowls'' drops made: the whole multiples of it'), &
+    declaration_t(groups='catalogue', name='funnel_lengths', shape='list of at most 200', unit='m', &
+      default='none', low=0.0_wp, high=1e4_wp, open_low=.true., meaning='the funnels made: their lengths '// &
+      '(increasing); or funnel_length_step'), &
+    declaration_t(groups='catalogue', name='funnel_length_step', unit='m', default='none', low=0.0_wp, &
+      high=1e4_wp, open_low=.true., meaning='funnels'' lengths made: the whole multiples of it'), &
+    declaration_t(groups='catalogue', name='funnel_radii', shape='list of at most 200', unit='m', default='none', &
+      low=0.0_wp, high=1e4_wp, open_low=.true., meaning='the funnels made: their widest radii (increasing); or '// &
+      'funnel_radius_step'), &
+    declaration_t(groups='catalogue', name='funnel_radius_step', unit='m', default='none', low=0.0_wp, &
+      high=1e4_wp, open_low=.true., meaning='funnels'' widest radii made: the whole multiples of it'), &
+    declaration_t(groups='catalogue', name='drop_slopes_deg', shape='list of at most 200', unit='deg', &
+      default='none', low=45.0_wp, high=85.0_wp, meaning='the drops made: their fall''s slopes (increasing); or '// &
+      'drop_slope_step_deg'), &
+    declaration_t(groups='catalogue', name='drop_slope_step_deg', unit='deg', default='none', low=0.0_wp, &
+      high=85.0_wp, open_low=.true., meaning='drops'' fall slopes made: the whole multiples of it'), &
+    declaration_t(groups='catalogue', name='drop_radii', shape='list of at most 200', unit='m', default='none', &
+      low=0.0_wp, high=1e4_wp, open_low=.true., meaning='the drops made: their curve-out radii (increasing); or '// &
+      'drop_radius_step'), &
+    declaration_t(groups='catalogue', name='drop_radius_step', unit='m', default='none', low=0.0_wp, high=1e4_wp, &
+      open_low=.true., meaning='drops'' curve-out radii made: the whole multiples of it'), &
     declaration_t(groups='catalogue', name='max_designs', kind=VALUE_INTEGER, unit='1', default='64', &
       low=1.0_wp, high=100000.0_wp, meaning='designs of the neighbourhood of the nearest catalogue design '// &
       'ridden at most (3^n_design for all)')]

@@ -2,31 +2,51 @@
 !> parts"): &slide_elements (the start design, read as for the geometry),
 !> &design_elements (which element parameters are the design variables, and
 !> their bounds) and &catalogue (the values each may take in the end).
+!> A variable is a parameter of an element; which kinds have which, and the
+!> &catalogue list and step of each (a catalogue kind: a curve's radius and a
+!> bowl's entry radius are different parts), are the table below; the range
+!> of a variable is its catalogue list's declaration (io_declarations_design).
 !> Without &design_elements the design is &optimize's points, and
 !> &slide_elements and &catalogue are refused.
 module io_element_design_config
   use base_kinds, only: wp
-  use base_text, only: format_integer, format_short
+  use base_text, only: format_integer, format_short, append_item
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
   use design_slide_design, only: parameter_value, parameter_names, parameter_units, PARAMETER_LENGTH, &
-    PARAMETER_SLOPE, PARAMETER_RADIUS, PARAMETER_ANGLE
+    PARAMETER_SLOPE, PARAMETER_RADIUS, PARAMETER_ANGLE, PARAMETER_DROP
   use design_geometry_optimization, only: optimization_setup_t
   use design_catalogue, only: catalogue_t, allowed_in_list, allowed_by_step, step_indices
   use io_input, only: input_text_t, group_reader_t, open_group, group_present, format_real, indexed_name
   use io_slide_geometry_config, only: read_slide_elements
+  use io_declaration, only: declaration_t, in_groups, bound_text, words_joined
+  use io_input_declarations, only: find_declaration, declaration
   implicit none (type, external)
   private
   public :: read_element_design, refuse_point_design
 
-  !> The &catalogue names of each parameter kind (PARAMETER_*): a list and a step.
-  character(len=*), parameter :: list_names(4) = [character(len=10) :: 'lengths', 'slopes_deg', 'radii', &
-                                                  'angles_deg']
-  character(len=*), parameter :: step_names(4) = [character(len=14) :: 'length_step', 'slope_step_deg', &
-                                                  'radius_step', 'angle_step_deg']
-  !> The values a parameter can take at all (the element chain's own checks).
-  real(wp), parameter :: lowest(4) = [0.0_wp, -60.0_wp, 0.0_wp, 0.0_wp]
-  real(wp), parameter :: highest(4) = [1e4_wp, 60.0_wp, 1e4_wp, 720.0_wp]
-  logical, parameter :: open_high(4) = [.false., .true., .false., .false.]
+  !> The catalogue's kinds of parts: a parameter (PARAMETER_*) of the element
+  !> kinds named, its &catalogue list and step. A design variable is the
+  !> parameter of an element whose kind one of them names; its values lie in
+  !> its list's declared range. Not design variables: a helix's turns and
+  !> drop, a bowl's turns (the spiral's path in the same bowl, not its size),
+  !> a drop's drop (the height of the tower: an optimisation of the
+  !> accelerations would only ride it down to its lower bound), a patch's
+  !> values (its wall is a file of its own).
+  integer, parameter :: n_kinds = 11
+  integer, parameter :: kind_parameter(n_kinds) = [PARAMETER_LENGTH, PARAMETER_SLOPE, PARAMETER_RADIUS, &
+    PARAMETER_ANGLE, PARAMETER_RADIUS, PARAMETER_SLOPE, PARAMETER_DROP, PARAMETER_LENGTH, PARAMETER_RADIUS, &
+    PARAMETER_SLOPE, PARAMETER_RADIUS]
+  character(len=*), parameter :: kind_elements(n_kinds) = [character(len=28) :: 'straight runout', &
+    'straight curve runout funnel', 'curve helix', 'curve', 'bowl', 'bowl', 'bowl', 'funnel', 'funnel', 'drop', 'drop']
+  character(len=*), parameter :: list_names(n_kinds) = [character(len=15) :: 'lengths', 'slopes_deg', 'radii', &
+    'angles_deg', 'bowl_radii', 'bowl_slopes_deg', 'bowl_drops', 'funnel_lengths', 'funnel_radii', &
+    'drop_slopes_deg', 'drop_radii']
+  character(len=*), parameter :: step_names(n_kinds) = [character(len=19) :: 'length_step', 'slope_step_deg', &
+    'radius_step', 'angle_step_deg', 'bowl_radius_step', 'bowl_slope_step_deg', 'bowl_drop_step', &
+    'funnel_length_step', 'funnel_radius_step', 'drop_slope_step_deg', 'drop_radius_step']
+  !> Each in words: 'radius' (of a curve or helix), 'bowl radius', ...
+  character(len=*), parameter :: kind_nouns(n_kinds) = [character(len=13) :: 'length', 'slope', 'radius', 'angle', &
+    'bowl radius', 'bowl slope', 'bowl drop', 'funnel length', 'funnel radius', 'drop slope', 'drop radius']
   integer, parameter :: max_allowed = 10000   !< allowed values of one variable from a step
   integer, parameter :: max_list = 200        !< the declared length of a &catalogue list
 
@@ -44,7 +64,7 @@ contains
     character(len=*), parameter :: g = 'design_elements'
     character(len=8), allocatable :: parameter(:)
     real(wp), allocatable :: element_real(:), lower(:), upper(:)
-    integer :: n, i, p, k
+    integer :: n, i, p, k, c
     real(wp) :: x
 
     with_catalogue = .false.
@@ -91,7 +111,8 @@ contains
                          '&slide_elements, 1 to n_elements = '//format_integer(size(elements)), status)
           cycle
         end if
-        if (.not. uses(elements(d%element(i))%kind, p)) then
+        c = catalogue_kind(elements(d%element(i))%kind, p)
+        if (c == 0) then
           call r%invalid(indexed_name('parameter', i), ''''//trim(parameter(i))//'''', 'element '// &
                          format_integer(d%element(i))//' is a '//trim(elements(d%element(i))%kind)//', whose '// &
                          trim(parameter_names(p))//' is not a design variable ('//kinds_using(p)//')', status)
@@ -102,11 +123,11 @@ contains
                          format_real(lower(i)), status)
           cycle
         end if
-        if (.not. (lower(i) > lowest(p) .and. (upper(i) < highest(p) .or. &
-                                                (.not. open_high(p) .and. upper(i) == highest(p))))) then
+        if (.not. in_range(c, lower(i), upper(i))) then
           call r%invalid(indexed_name('lower', i)//', '//indexed_name('upper', i), &
                          format_real(lower(i))//', '//format_real(upper(i)), &
-                         'the '//trim(parameter_names(p))//' must lie in '//range_text(p), status)
+                         'the '//trim(kind_nouns(c))//' must lie in '//range_text(c)//' (the range of &catalogue '// &
+                         trim(list_names(c))//')', status)
           cycle
         end if
         x = parameter_value(elements(d%element(i)), p)
@@ -167,7 +188,7 @@ contains
                         status)
   end subroutine refuse_point_design
 
-  !> &catalogue: for each parameter kind of the design variables a list of
+  !> &catalogue: for each catalogue kind of the design variables a list of
   !> allowed values or a step; each variable may take those inside its bounds.
   subroutine read_catalogue(input, setup, catalogue, status)
     type(input_text_t), intent(in) :: input
@@ -177,32 +198,37 @@ contains
     type(group_reader_t) :: r
     real(wp), allocatable :: list(:), values(:)
     real(wp) :: step
-    integer :: p, i, k, first, last
+    integer :: c, i, k, first, last
+    integer, allocatable :: kind_of(:)                 ! the catalogue kind of each variable
     logical :: any_given
-    character(len=:), allocatable :: name, step_name   ! of the list and the step of parameter kind p
+    character(len=:), allocatable :: name, step_name   ! of the list and the step of catalogue kind c
     character(len=:), allocatable :: given             ! the one given
 
     call open_group(input, 'catalogue', r, status)
     call r%get('max_designs', catalogue%max_designs, status)
     if (.not. status%ok()) return
     allocate (catalogue%allowed(size(setup%design%lower)))
+    allocate (kind_of(size(setup%design%parameter)))
+    do i = 1, size(kind_of)
+      kind_of(i) = catalogue_kind(setup%design%chain%elements(setup%design%element(i))%kind, &
+                                  setup%design%parameter(i))
+    end do
     any_given = .false.
-    do p = 1, size(list_names)
-      any_given = any_given .or. r%has(trim(list_names(p))) .or. r%has(trim(step_names(p)))
+    do c = 1, n_kinds
+      any_given = any_given .or. r%has(trim(list_names(c))) .or. r%has(trim(step_names(c)))
     end do
     if (.not. any_given) then
       call set_status(status, STATUS_INVALID_INPUT, r%where('')//': &catalogue is empty: give the values made '// &
-                      'of each parameter of the design variables (radii or radius_step, angles_deg or '// &
-                      'angle_step_deg, slopes_deg or slope_step_deg, lengths or length_step)')
+                      'of each parameter of the design variables ('//all_kinds()//')')
       return
     end if
-    do p = 1, size(list_names)
-      name = trim(list_names(p))
-      step_name = trim(step_names(p))
+    do c = 1, n_kinds
+      name = trim(list_names(c))
+      step_name = trim(step_names(c))
       associate (d => setup%design)
         if (.not. (r%has(name) .or. r%has(step_name))) then
-          do i = 1, size(d%parameter)
-            if (d%parameter(i) == p) then
+          do i = 1, size(kind_of)
+            if (kind_of(i) == c) then
               call r%invalid(name, 'none', 'design variable '//format_integer(i)//' ('//variable_name(i)// &
                              ') needs its allowed values: give '//name//' or '//step_name, status)
               return
@@ -216,10 +242,12 @@ contains
         end if
         given = step_name
         if (r%has(name)) given = name
-        if (.not. any(d%parameter == p)) then
+        if (.not. any(kind_of == c)) then
           call r%invalid(given, r%written(given), &
                          'no design variable of &design_elements has parameter = '''// &
-                         trim(parameter_names(p))//''' (the catalogue is for the variables only)', status)
+                         trim(parameter_names(kind_parameter(c)))//''' on a '// &
+                         words_joined(trim(kind_elements(c)), ' or ')//' (the catalogue is for the variables '// &
+                         'only)', status)
           return
         end if
         if (r%has(name)) then
@@ -234,9 +262,9 @@ contains
             end if
           end do
           do k = 1, size(list)
-            if (.not. any(d%parameter == p .and. d%lower <= list(k) .and. list(k) <= d%upper)) then
+            if (.not. any(kind_of == c .and. d%lower <= list(k) .and. list(k) <= d%upper)) then
               call r%invalid(indexed_name(name, k), format_real(list(k)), 'lies outside the bounds '// &
-                             'of every '//trim(parameter_names(p))//' variable ('//bounds_of(p)//'): an unused '// &
+                             'of every '//trim(kind_nouns(c))//' variable ('//bounds_of(c)//'): an unused '// &
                              'part; leave it out or widen the bounds (&design_elements lower, upper)', status)
               return
             end if
@@ -245,8 +273,8 @@ contains
           call r%get(step_name, step, status)
           if (.not. status%ok()) return
         end if
-        do i = 1, size(d%parameter)
-          if (d%parameter(i) /= p) cycle
+        do i = 1, size(kind_of)
+          if (kind_of(i) /= c) cycle
           if (r%has(name)) then
             values = allowed_in_list(list, d%lower(i), d%upper(i))
           else
@@ -262,8 +290,8 @@ contains
           if (size(values) == 0) then
             call r%invalid(given, r%written(given), &
                            'holds no value inside the bounds '//format_short(d%lower(i))//' … '// &
-                           format_short(d%upper(i))//' '//trim(parameter_units(p))//' of design variable '// &
-                           format_integer(i)//' ('//variable_name(i)//')', status)
+                           format_short(d%upper(i))//' '//trim(parameter_units(d%parameter(i)))// &
+                           ' of design variable '//format_integer(i)//' ('//variable_name(i)//')', status)
             return
           end if
           catalogue%allowed(i)%values = values
@@ -281,48 +309,81 @@ contains
              trim(parameter_names(setup%design%parameter(i)))
     end function variable_name
 
-    !> The bounds of every variable of kind p, in words.
-    function bounds_of(p) result(text)
-      integer, intent(in) :: p
+    !> The bounds of every variable of catalogue kind c, in words.
+    function bounds_of(c) result(text)
+      integer, intent(in) :: c
       character(len=:), allocatable :: text
       integer :: j
       text = ''
-      do j = 1, size(setup%design%parameter)
-        if (setup%design%parameter(j) /= p) cycle
+      do j = 1, size(kind_of)
+        if (kind_of(j) /= c) cycle
         if (len(text) > 0) text = text//'; '
         text = text//variable_name(j)//' '//format_short(setup%design%lower(j))//' … '// &
-               format_short(setup%design%upper(j))//' '//trim(parameter_units(p))
+               format_short(setup%design%upper(j))//' '//trim(parameter_units(setup%design%parameter(j)))
       end do
     end function bounds_of
   end subroutine read_catalogue
 
-  !> Whether an element of `kind` has parameter p.
-  pure logical function uses(kind, p)
+  !> The catalogue kind of parameter p of an element of `kind` (0: p is not a
+  !> design variable of that kind).
+  pure integer function catalogue_kind(kind, p) result(c)
     character(len=*), intent(in) :: kind
     integer, intent(in) :: p
-    select case (p)
-    case (PARAMETER_LENGTH); uses = kind == 'straight' .or. kind == 'runout'
-    case (PARAMETER_SLOPE); uses = kind == 'straight' .or. kind == 'curve' .or. kind == 'runout'
-    case (PARAMETER_RADIUS); uses = kind == 'curve' .or. kind == 'helix'
-    case default; uses = kind == 'curve'
-    end select
-  end function uses
+    do c = 1, n_kinds
+      if (kind_parameter(c) == p .and. in_groups(trim(kind), kind_elements(c))) return
+    end do
+    c = 0
+  end function catalogue_kind
 
+  !> The element kinds that have parameter p as a design variable: 'a radius:
+  !> curve, helix, bowl, funnel, drop'.
   pure function kinds_using(p) result(text)
     integer, intent(in) :: p
     character(len=:), allocatable :: text
-    select case (p)
-    case (PARAMETER_LENGTH); text = 'a length: straight, runout'
-    case (PARAMETER_SLOPE); text = 'a slope: straight, curve, runout'
-    case (PARAMETER_RADIUS); text = 'a radius: curve, helix'
-    case default; text = 'an angle: curve'
-    end select
+    character(len=:), allocatable :: kinds
+    integer :: c
+    kinds = ''
+    do c = 1, n_kinds
+      if (kind_parameter(c) == p) kinds = kinds//' '//trim(kind_elements(c))
+    end do
+    text = 'a '
+    if (p == PARAMETER_ANGLE) text = 'an '
+    text = text//trim(parameter_names(p))//': '//words_joined(trim(kinds), ', ')
   end function kinds_using
 
-  function range_text(p) result(text)
-    integer, intent(in) :: p
+  !> Every list and step in words: 'lengths or length_step, ...'.
+  pure function all_kinds() result(text)
     character(len=:), allocatable :: text
-    text = '('//format_short(lowest(p))//', '//format_short(highest(p))//merge(')', ']', open_high(p))//' '// &
-           trim(parameter_units(p))
+    integer :: c
+    text = ''
+    do c = 1, n_kinds
+      call append_item(text, trim(list_names(c))//' or '//trim(step_names(c)), ', ')
+    end do
+  end function all_kinds
+
+  !> The declaration of catalogue kind c's list: its unit and range.
+  pure type(declaration_t) function kind_declaration(c) result(d)
+    integer, intent(in) :: c
+    d = declaration(find_declaration('catalogue', trim(list_names(c))))
+  end function kind_declaration
+
+  !> Whether bounds lower < upper lie in the range of catalogue kind c.
+  pure logical function in_range(c, lower, upper)
+    integer, intent(in) :: c
+    real(wp), intent(in) :: lower, upper
+    type(declaration_t) :: d
+    d = kind_declaration(c)
+    in_range = (lower > d%low .or. (.not. d%open_low .and. lower == d%low)) .and. upper <= d%high
+  end function in_range
+
+  !> '(0, 10000] m', '[-60, 60] deg'
+  pure function range_text(c) result(text)
+    integer, intent(in) :: c
+    character(len=:), allocatable :: text
+    type(declaration_t) :: d
+    d = kind_declaration(c)
+    text = '['
+    if (d%open_low) text = '('
+    text = text//bound_text(d%low)//', '//bound_text(d%high)//'] '//trim(d%unit)
   end function range_text
 end module io_element_design_config

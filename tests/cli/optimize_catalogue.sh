@@ -97,10 +97,10 @@ refuse list_and_step 'give radii or radius_step, not both' --set 'catalogue%radi
 refuse no_value_inside 'holds no value inside the bounds 4 … 12 deg of design variable 3' \
   --set 'catalogue%slope_step_deg=13' "$input"
 refuse empty '&catalogue is empty' --unset catalogue%radii --unset catalogue%slope_step_deg "$input"
-refuse wrong_parameter 'element 1 is a straight, whose radius is not a design variable (a radius: curve, helix)' \
+refuse wrong_parameter 'element 1 is a straight, whose radius is not a design variable (a radius: curve, helix, bowl, funnel, drop)' \
   --set 'design_elements%element=1,4,3' "$input"
 refuse start_outside 'must hold the start value 4 m of element 2' --set 'design_elements%lower=4.5,3,4' "$input"
-refuse out_of_range 'the slope must lie in (-60, 60) deg' --set 'design_elements%upper=8,8,70' "$input"
+refuse out_of_range 'the slope must lie in [-60, 60] deg (the range of &catalogue slopes_deg)' --set 'design_elements%upper=8,8,70' "$input"
 refuse no_element 'must be the number of an element of &slide_elements, 1 to n_elements = 6' \
   --set 'design_elements%element=2,9,3' "$input"
 refuse twice 'the radius of element 2 is already design variable 1' --set 'design_elements%element=2,2,3' "$input"

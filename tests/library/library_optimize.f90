@@ -25,12 +25,12 @@ program library_optimize
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_status, only: status_t
-  use base_text, only: format_integer
+  use base_text, only: format_integer, format_short
   use geometry_slide_builder, only: slide_elements_description_t
   use design_sweep, only: N_SWEPT, V_MASS, V_HEIGHT, V_V0, V_HEADING, V_SPEED, swept_values_t, sweep_rows
   use design_population, only: population_base, set_population
   use design_robust_cost, only: COST_WORST
-  use design_slide_design, only: table_4_12_design, start_x, PARAMETER_RADIUS, PARAMETER_SLOPE
+  use design_slide_design, only: table_4_12_design, start_x, PARAMETER_RADIUS, PARAMETER_SLOPE, PARAMETER_DROP
   use design_geometry_optimization, only: optimization_setup_t, optimization_result_t, thesis_start_angles, &
     outcome_names, CONSTRAINT_NONE, CONSTRAINT_PENALTY
   use design_catalogue, only: catalogue_t, allowed_in_list, allowed_by_step, part_text
@@ -45,6 +45,7 @@ program library_optimize
   call table_4_12('inputs/templates/optimize.nml', 0.1_wp, 0.1_wp, CONSTRAINT_NONE, 1)
   call robust()
   call standard_parts()
+  call bowl_parts()
 
 contains
 
@@ -141,11 +142,8 @@ contains
     type(optimization_job_t) :: job
     type(catalogue_t) :: catalogue
     type(slide_elements_description_t) :: chain
-    real(wp), allocatable :: x0(:), values(:)
     real(wp), parameter :: radii(5) = [3.0_wp, 4.0_wp, 5.0_wp, 6.0_wp, 8.0_wp]
-    real(wp) :: scale
-    integer :: k, j
-    character(len=:), allocatable :: line
+    integer :: k
     chain%start = [0.0_wp, 0.0_wp, 7.0_wp]
     chain%heading_deg = 0
     chain%transition_length = 2
@@ -176,10 +174,69 @@ contains
     end do
     catalogue%allowed(3)%values = allowed_by_step(2.0_wp, setup%design%lower(3), setup%design%upper(3))
     call optimize_and_print(input, setup, job, catalogue)
+    call print_catalogue(input, setup, job)
+  end subroutine standard_parts
+
+  !> inputs/design/optimize_bowl_parts.nml: a tube of radius 1 m around an
+  !> entry straight, a spherical bowl, an outlet straight and a run-out from
+  !> (0, 0, 10) heading 0, transitions 2 m; the bowl's entry radius, wall
+  !> slope and drop as the design, three rides from 1 m/s at -20, 0, 20 deg,
+  !> the penalty (limit 0.25 m), LMDER at 1e-4 and 1e-3, one thread; the
+  !> catalogue: entry radii 5, 6, 7, 8 m, wall slopes in steps of 5 deg,
+  !> drops 1.5, 2, 2.5 m, at most 64 designs of the neighbourhood.
+  subroutine bowl_parts()
+    character(len=*), parameter :: input = 'inputs/design/optimize_bowl_parts.nml'
+    type(optimization_setup_t) :: setup
+    type(optimization_job_t) :: job
+    type(catalogue_t) :: catalogue
+    type(slide_elements_description_t) :: chain
+    chain%start = [0.0_wp, 0.0_wp, 10.0_wp]
+    chain%heading_deg = 0
+    chain%transition_length = 2
+    chain%elements = [element('straight', 12.0_wp, 10.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
+                      element('bowl', 0.0_wp, 50.0_wp, 6.0_wp, 0.0_wp, 'left', 1.0_wp, 2.0_wp), &
+                      element('straight', 10.0_wp, 14.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp), &
+                      element('runout', 8.0_wp, 2.0_wp, 0.0_wp, 0.0_wp, 'left', 0.0_wp, 0.0_wp)]
+    setup%design%from_elements = .true.
+    setup%design%chain = chain
+    setup%design%radius = 1.0_wp
+    setup%design%element = [2, 2, 2]
+    setup%design%parameter = [PARAMETER_RADIUS, PARAMETER_SLOPE, PARAMETER_DROP]
+    setup%design%lower = [5.0_wp, 40.0_wp, 1.5_wp]
+    setup%design%upper = [8.0_wp, 55.0_wp, 2.5_wp]
+    setup%start_angles = [-20.0_wp, 0.0_wp, 20.0_wp]*pi/180
+    setup%start_speed = 1
+    setup%constraint = CONSTRAINT_PENALTY
+    setup%lever_limit = 0.25_wp
+    setup%solver%ftol = 1e-4_wp
+    setup%solver%xtol = 1e-3_wp
+    setup%threads = 1
+    allocate (catalogue%allowed(3))
+    catalogue%max_designs = 64
+    associate (lower => setup%design%lower, upper => setup%design%upper)
+      catalogue%allowed(1)%values = allowed_in_list([5.0_wp, 6.0_wp, 7.0_wp, 8.0_wp], lower(1), upper(1))
+      catalogue%allowed(2)%values = allowed_by_step(5.0_wp, lower(2), upper(2))
+      catalogue%allowed(3)%values = allowed_in_list([1.5_wp, 2.0_wp, 2.5_wp], lower(3), upper(3))
+    end associate
+    call optimize_and_print(input, setup, job, catalogue)
+    call print_catalogue(input, setup, job)
+  end subroutine bowl_parts
+
+  !> The summary's numbers and words of a design snapped to a catalogue: the
+  !> cost, each variable (start, optimum, nearest, catalogue), the verdict,
+  !> the catalogue design's costs and the parts list.
+  subroutine print_catalogue(input, setup, job)
+    character(len=*), intent(in) :: input
+    type(optimization_setup_t), intent(in) :: setup
+    type(optimization_job_t), intent(in) :: job
+    real(wp), allocatable :: x0(:), values(:)
+    real(wp) :: scale
+    integer :: k, j
+    character(len=:), allocatable :: line
     call put(input, 'acceleration_cost', job%result%after%acceleration_cost)
     ! each variable (start, optimum, nearest, catalogue) in SI: the slope in rad
     x0 = start_x(setup%design)
-    do k = 1, 3
+    do k = 1, size(x0)
       values = [x0(k), job%result%x(k), job%chosen%x_nearest(k), job%chosen%x(k)]
       scale = merge(degrees, 1.0_wp, setup%design%parameter(k) == PARAMETER_SLOPE)
       do j = 1, 4
@@ -187,7 +244,15 @@ contains
       end do
     end do
     call put_text(input, 'catalogue', job%chosen%verdict)
-    call put(input, 'nearest_acceleration_cost', job%chosen%acceleration_cost(1))
+    ! the nearest design's cost: a number when feasible, else in words (the summary's)
+    if (job%chosen%candidate_feasible(1)) then
+      call put(input, 'nearest_acceleration_cost', job%chosen%acceleration_cost(1))
+    else if (job%chosen%acceleration_cost(1) < huge(1.0_wp)) then
+      call put_text(input, 'nearest_acceleration_cost', format_short(job%chosen%acceleration_cost(1))// &
+                    ' m^2/s^4, infeasible')
+    else
+      call put_text(input, 'nearest_acceleration_cost', 'cannot be built or ridden')
+    end if
     call put(input, 'catalogue_acceleration_cost', job%chosen%chosen%acceleration_cost)
     call put(input, 'catalogue_max_lever_arm', job%chosen%chosen%max_lever_arm)
     call put(input, 'parts', real(size(job%chosen%parts), wp))
@@ -204,7 +269,7 @@ contains
         call put_text(input, 'line', line//')')
       end associate
     end do
-  end subroutine standard_parts
+  end subroutine print_catalogue
 
   !> The job of `setup` (with `catalogue`: snapped to it) and the summary's
   !> numbers of every optimisation: the outcome, the costs, the lever arms,
