@@ -43,10 +43,9 @@ program test_bodies_resting
   use contact_flight, only: flight_ode_t
   use contact_bodies, only: build_bodies, start_carriers
   use io_input, only: input_text_t, input_from_text
-  use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
   use testing, only: check, check_close, finish_tests
-  use scenario_fixtures, only: number, fly
+  use scenario_fixtures, only: number, fly, run_contact_text
   implicit none (type, external)
 
   character(len=*), parameter :: nl = new_line('a')
@@ -60,30 +59,18 @@ program test_bodies_resting
 
 contains
 
-  !> The contact scenario in `text` (named `label`) with its closed
-  !> contacts carrying their bodies from the start (contact_bodies), flown
-  !> for `duration` s at 1e-12, records every 0.01 s.
-  subroutine run(text, label, duration, flight, result, st)
+  !> The contact scenario in `text` (named `label`) run as the command
+  !> runs it (scenario_fixtures run_contact_text: its closed contacts
+  !> carrying their bodies from the start), checked to be built and to run
+  !> to its end.
+  subroutine run(text, label, flight, result, st)
     character(len=*), intent(in) :: text, label
-    real(wp), intent(in) :: duration
     type(flight_ode_t), intent(out), target :: flight
     type(driver_result_t), intent(out) :: result
     type(status_t), intent(out) :: st
-    type(input_text_t) :: input
-    type(solver_config_t) :: solver
-    type(contact_system_t) :: system
-    real(wp), allocatable :: q0(:), qd0(:)
-    integer, allocatable :: open(:, :)
-    character(len=8), allocatable :: units(:)
-    call input_from_text(label, text, input, st)
-    if (st%ok()) call read_solver_config(input, solver, st)
-    if (st%ok()) call read_contact_config(input, system, st)
-    if (st%ok()) call build_bodies(system, start_carriers(system), flight, q0, qd0, units, st, 0, .false.)
-    call check(st%ok(), label//': built: '//st%text())
-    if (.not. st%ok()) return
-    call fly(flight, q0, qd0, 1e-12_wp, duration, 400, result, st, open)
-    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, label//': runs to its end: '//st%text()//' '// &
-               flight%outcome)
+    call run_contact_text(text, label, flight, result, st)
+    call check(st%ok() .and. result%outcome == DRIVE_END_TIME, label//': built and runs to its end: '// &
+               st%text()//' '//flight%outcome)
   end subroutine run
 
   !> The bodies' energy at record i (J): kinetic (each body's mass, its
@@ -164,7 +151,7 @@ contains
            '&contact name = ''front_on_floor'', shape_1 = ''floor'', body_2 = ''box'', shape_2 = ''front'' /'//nl// &
            '&contact name = ''ball_on_box'', body_1 = ''box'', shape_1 = ''lid'', body_2 = ''ball'', '// &
            'shape_2 = ''ball'', start = ''open'', restitution = '//number(e)//', close_speed = 0.1 /'//nl
-    call run(text, 'box ride', duration, flight, result, st)
+    call run(text, 'box ride', flight, result, st)
     if (.not. st%ok()) return
     gp = g*cos(alpha)
     u = sqrt(2*gp*h0)
@@ -267,7 +254,7 @@ contains
            '&contact name = ''high_on_low'', body_1 = ''low'', shape_1 = ''low'', body_2 = ''high'', '// &
            'shape_2 = ''high'', may_open = .true. /'//nl// &
            '&contact name = ''low_on_floor'', shape_1 = ''floor'', body_2 = ''low'', shape_2 = ''low'' /'//nl
-    call run(text, 'slides off', duration, flight, result, st)
+    call run(text, 'slides off', flight, result, st)
     if (.not. st%ok()) return
     call check(index(flight%outcome, 'lift-off: the normal force of contact ''high_on_low'' fell to zero') > 0 .and. &
                index(flight%outcome, 'the contact opens (may_open), the body flies') > 0, 'slides off: the contact '// &
@@ -348,7 +335,7 @@ contains
            'shape_2 = ''ball'' /'//nl// &
            '&contact name = ''top_on_mid'', body_1 = ''mid'', shape_1 = ''ball'', body_2 = ''top'', '// &
            'shape_2 = ''top'', start = ''open'', restitution = '//number(e)//' /'//nl
-    call run(text, 'three stack', 0.3_wp, flight, result, st)
+    call run(text, 'three stack', flight, result, st)
     if (.not. st%ok()) return
     v = sqrt(2*g*h)
     call check(size(flight%impacts) == 3, 'three stack: one impact, at the hit and both closed contacts')

@@ -65,20 +65,15 @@ program test_body_impact
   use base_constants, only: standard_gravity
   use base_status, only: status_t, STATUS_DOMAIN
   use base_vector, only: cross
-  use numerics_event_driver, only: driver_result_t, driver_options_t, DRIVE_END_TIME, DRIVE_FAILED, RECORD_EVENT
+  use numerics_event_driver, only: driver_result_t, DRIVE_END_TIME, DRIVE_FAILED, RECORD_EVENT
   use kinetostatics_impact, only: impact_law_t
   use contact_body_impact, only: impact_body_t, collision_t, collide, collide_at_once, pair_delassus, &
     relative_velocity, apply_impulse
   use kinetostatics_recorder, only: mechanism_series_t
-  use contact_model, only: contact_system_t, contact_model_t, contact_convergence_coefficient, build_contact_model
-  use contact_flight, only: flight_ode_t, build_flight, carrying_contact, closed_part
-  use contact_closing, only: drive_flight, flight_after_closed
-  use contact_bodies, only: build_bodies, start_carriers
-  use io_input, only: input_text_t, input_from_text, load_input_file
-  use io_solver_config, only: solver_config_t, read_solver_config
-  use io_contact_config, only: read_contact_config
+  use contact_flight, only: flight_ode_t
+  use io_input, only: input_text_t, load_input_file
   use testing, only: check, check_close, finish_tests
-  use scenario_fixtures, only: number
+  use scenario_fixtures, only: number, run_contact_input, run_contact_text
   implicit none (type, external)
 
   character(len=*), parameter :: nl = new_line('a')
@@ -320,49 +315,6 @@ contains
            'start = ''open'', restitution = '//number(e)//' /'//nl
   end function pair_input
 
-  !> The contact scenario of `input` driven as the command would (its
-  !> solver's tolerances and output step): the flight, each contact's
-  !> open flags and the driver's result.
-  subroutine run_input(input, flight, result, st)
-    type(input_text_t), intent(in) :: input
-    type(flight_ode_t), intent(out), target :: flight
-    type(driver_result_t), intent(out) :: result
-    type(status_t), intent(out) :: st
-    type(solver_config_t) :: solver
-    type(contact_system_t) :: system
-    type(driver_options_t) :: options
-    type(contact_model_t) :: model
-    real(wp), allocatable :: q0(:), qd0(:)
-    integer, allocatable :: open(:, :)
-    character(len=8), allocatable :: units(:)
-    call read_solver_config(input, solver, st)
-    if (st%ok()) call read_contact_config(input, system, st)
-    if (.not. st%ok()) return
-    if (carrying_contact(system) == 0) then
-      call build_flight(system, flight, q0, qd0, units, st)
-    else
-      call build_bodies(system, start_carriers(system), flight, q0, qd0, units, st, 0, .false., model)
-    end if
-    if (.not. st%ok()) return
-    options%ode = solver%options
-    options%ode%convergence_coefficient = contact_convergence_coefficient
-    options%t_end = solver%duration
-    options%output_step = solver%output_step
-    options%progress_seconds = 0
-    call flight%start_series(400)
-    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, open)
-  end subroutine run_input
-
-  subroutine run_text(text, label, flight, result, st)
-    character(len=*), intent(in) :: text, label
-    type(flight_ode_t), intent(out), target :: flight
-    type(driver_result_t), intent(out) :: result
-    type(status_t), intent(out) :: st
-    type(input_text_t) :: input
-    call input_from_text(label, text, input, st)
-    if (st%ok()) call run_input(input, flight, result, st)
-  end subroutine run_text
-
   subroutine head_on_flight()
     real(wp), parameter :: e = 0.6_wp
     type(flight_ode_t), target :: flight
@@ -370,7 +322,7 @@ contains
     type(status_t) :: st
     real(wp) :: t_hit, after(2), gap, worst_gap, worst_p, worst_v, worst_spin, p0(3), p(3)
     integer :: i
-    call run_text(pair_input(0.0_wp, e), 'head on flight', flight, result, st)
+    call run_contact_text(pair_input(0.0_wp, e), 'head on flight', flight, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'head on flight: runs to its end: '//st%text()// &
                ' '//flight%outcome)
     if (.not. st%ok()) return
@@ -423,7 +375,7 @@ contains
     type(status_t) :: st
     real(wp) :: t_hit, n(3), after(2), va(3), vb(3), worst
     integer :: i
-    call run_text(pair_input(aside, e), 'oblique flight', flight, result, st)
+    call run_contact_text(pair_input(aside, e), 'oblique flight', flight, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'oblique flight: runs to its end: '//st%text())
     if (.not. st%ok()) return
     n = [sqrt((r1 + r2)**2 - aside**2), aside, 0.0_wp]/(r1 + r2)
@@ -466,7 +418,7 @@ contains
     integer :: i, k
     integer, allocatable :: hits(:)
     call load_input_file('inputs/contact/stacked_balls.nml', input, st)
-    if (st%ok()) call run_input(input, flight, result, st)
+    if (st%ok()) call run_contact_input(input, flight, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'stacked: runs to its end: '//st%text()//' '// &
                flight%outcome)
     if (.not. st%ok()) return
@@ -608,7 +560,7 @@ contains
     real(wp) :: v, t_k, v_k, worst_low, worst_n, worst_time, worst_speed, worst_p, worst_lost, worst_rest, &
                 worst_switch, worst_rise
     integer :: i, k, floor_c, hit_c, j, high, low
-    call run_text(carried_input(0.0_wp, e, 1.0_wp, ''), 'on carried', flight, result, st)
+    call run_contact_text(carried_input(0.0_wp, e, 1.0_wp, ''), 'on carried', flight, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'on carried: runs to its end: '//st%text()// &
                ' '//flight%outcome)
     call check(index(flight%outcome, 'body ''high'' lands on ''high_on_low'' at t = ') > 0 .and. &
@@ -718,7 +670,7 @@ contains
     type(status_t) :: st
     real(wp) :: v, e0, worst_e, worst_t, worst_v
     integer :: i, k
-    call run_text(carried_input(0.0_wp, 1.0_wp, 2.0_wp, ''), 'on carried elastic', flight, result, st)
+    call run_contact_text(carried_input(0.0_wp, 1.0_wp, 2.0_wp, ''), 'on carried elastic', flight, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'on carried elastic: runs to its end: '// &
                st%text()//' '//flight%outcome)
     if (.not. st%ok()) return
@@ -763,7 +715,7 @@ contains
     type(status_t) :: st
     real(wp) :: sin_a, cos_a, n(3), z_hit, v, t_hit, p, u, e0, worst_e, worst_low, worst_high, high_after(3)
     integer :: i, j
-    call run_text(carried_input(dx, e, 0.5_wp, ''), 'on carried oblique', flight, result, st)
+    call run_contact_text(carried_input(dx, e, 0.5_wp, ''), 'on carried oblique', flight, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'on carried oblique: runs to its end: '// &
                st%text()//' '//flight%outcome)
     if (.not. st%ok()) return
@@ -880,7 +832,7 @@ contains
            'may_open = .true. /'//nl// &
            '&contact name = ''high_on_low'', body_1 = ''low'', shape_1 = ''low'', body_2 = ''high'', '// &
            'shape_2 = ''high'', start = ''open'', restitution = '//number(e)//' /'//nl
-    call run_text(text, 'from below', flight, result, st)
+    call run_contact_text(text, 'from below', flight, result, st)
     call check(st%ok() .and. index(flight%outcome, 'one impact at them all, after it ''low_on_floor'', '// &
                '''high_on_low'' open') > 0 .and. index(flight%outcome, 'landing: the gap of contact '// &
                '''low_on_floor'' fell to zero') > 0, 'from below: both contacts open at the hit, each watched from '// &
@@ -1022,7 +974,7 @@ contains
     real(wp) :: c30, v0, v, t, worst_x, worst_spin, worst_n, rest
     integer :: k, i, j
     c30 = cos(angle*acos(-1.0_wp)/180)
-    call run_text(v_input(angle, z0, radius, e, 0.0_wp), 'two at once', flight, result, st)
+    call run_contact_text(v_input(angle, z0, radius, e, 0.0_wp), 'two at once', flight, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'two at once: runs to its end: '//st%text()//' '// &
                flight%outcome)
     if (.not. st%ok()) return
@@ -1081,7 +1033,7 @@ contains
     ! straight up at e v as without it, its contact points slipping up the
     ! planes after the impact; friction mu P against that slip: the vertical
     ! impulse 2 P (cos30 - mu sin30) = (1 + e) m v
-    call run_text(v_input(angle, z0, radius, e, mu), 'two at once, friction', flight, result, st)
+    call run_contact_text(v_input(angle, z0, radius, e, mu), 'two at once, friction', flight, result, st)
     call check(st%ok() .and. result%outcome == DRIVE_END_TIME, 'two at once, friction: runs to its end: '//st%text())
     call check(index(flight%outcome, 'contacts ''on_left'', ''on_right'' closed at the impact at several contacts '// &
                      'at once') > 0, 'two at once, friction: the fifth closes both: '//flight%outcome)

@@ -1,8 +1,9 @@
 !> Set-ups several tests share: a number as input text or in a message, the continuity of
 !> an element chain across its joints, a point mass built from input text
 !> and started, a ball over a floor built as a flight from input text, a
-!> flight driven to its end, the slides of the rider's flight tests and
-!> their rides without and with may_fly.
+!> flight driven to its end, a contact scenario's input run as the
+!> scenario runs it (its &solver's options), the slides of the rider's
+!> flight tests and their rides without and with may_fly.
 module scenario_fixtures
   use base_kinds, only: wp
   use base_status, only: status_t
@@ -12,12 +13,13 @@ module scenario_fixtures
   use geometry_slide_builder, only: section_part_description_t
   use geometry_description, only: geometry_description_t, build_geometry
   use geometry_slide_elements, only: element_chain_curve_t
-  use numerics_ode, only: ode_integrator_t
+  use numerics_ode, only: ode_integrator_t, ODE_ADAMS
   use numerics_event_driver, only: driver_options_t, driver_result_t
   use kinetostatics_point_mass, only: point_mass_t, point_mass_state_t
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, contact_convergence_coefficient
-  use contact_flight, only: flight_ode_t, build_flight
+  use contact_flight, only: flight_ode_t, build_flight, carrying_contact
   use contact_closing, only: drive_flight, flight_after_closed
+  use contact_bodies, only: build_bodies, start_carriers
   use io_input, only: input_text_t, input_from_text
   use io_solver_config, only: solver_config_t, read_solver_config
   use io_contact_config, only: read_contact_config
@@ -28,7 +30,7 @@ module scenario_fixtures
   implicit none (type, external)
   private
   public :: number, real_text, joint_jumps, start_point_mass, ball_over_floor, read_flight, fly, run_flight, &
-    read_closed_flight, crest_slide, element_slide, ride_stay_and_fly
+    read_closed_flight, run_contact_input, run_contact_text, crest_slide, element_slide, ride_stay_and_fly
 
   character(len=*), parameter :: nl = new_line('a')
 
@@ -148,6 +150,57 @@ contains
     call read_solver_config(input, solver, st)
     call read_contact_config(input, system, st)
   end subroutine read_system
+
+  !> The contact scenario of `input` run to its &solver's duration with
+  !> its options (with Adams the contact scenario's convergence coefficient, records
+  !> every output_step, room for 400 at the start): all bodies flying from
+  !> the start (build_flight), or its closed contacts carrying their bodies
+  !> (contact_bodies build_bodies), driven by drive_flight; open: each
+  !> contact's open (1) or closed (0) at each record.
+  subroutine run_contact_input(input, flight, result, st, open)
+    type(input_text_t), intent(in) :: input
+    type(flight_ode_t), intent(out), target :: flight
+    type(driver_result_t), intent(out) :: result
+    type(status_t), intent(out) :: st
+    integer, allocatable, intent(out), optional :: open(:, :)
+    type(solver_config_t) :: solver
+    type(contact_system_t) :: system
+    type(driver_options_t) :: options
+    real(wp), allocatable :: q0(:), qd0(:)
+    integer, allocatable :: opened(:, :)
+    character(len=8), allocatable :: units(:)
+    call read_solver_config(input, solver, st)
+    if (st%ok()) call read_contact_config(input, system, st)
+    if (.not. st%ok()) return
+    if (carrying_contact(system) == 0) then
+      call build_flight(system, flight, q0, qd0, units, st)
+    else
+      call build_bodies(system, start_carriers(system), flight, q0, qd0, units, st, 0, .false.)
+    end if
+    if (.not. st%ok()) return
+    options%ode = solver%options
+    ! as scenarios_contact: Adams' corrector to the contact scenario's coefficient, BDF's CVODE's own
+    if (solver%options%method == ODE_ADAMS) options%ode%convergence_coefficient = contact_convergence_coefficient
+    options%t_end = solver%duration
+    options%output_step = solver%output_step
+    options%progress_seconds = 0
+    call flight%start_series(400)
+    call drive_flight(flight, flight%initial_state(q0, qd0), options, result, st, opened)
+    if (present(open)) call move_alloc(opened, open)
+  end subroutine run_contact_input
+
+  !> run_contact_input of the contact scenario in `text` (named `label` in
+  !> its messages).
+  subroutine run_contact_text(text, label, flight, result, st, open)
+    character(len=*), intent(in) :: text, label
+    type(flight_ode_t), intent(out), target :: flight
+    type(driver_result_t), intent(out) :: result
+    type(status_t), intent(out) :: st
+    integer, allocatable, intent(out), optional :: open(:, :)
+    type(input_text_t) :: input
+    call input_from_text(label, text, input, st)
+    if (st%ok()) call run_contact_input(input, flight, result, st, open)
+  end subroutine run_contact_text
 
   !> The flight of the contact scenario in `text` (named `label`) that starts
   !> closed: the model of its whole system, closed, and the flight from its
