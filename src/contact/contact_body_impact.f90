@@ -102,6 +102,18 @@ contains
     if (body_1%mass > 0) v = v - (body_1%velocity + cross(body_1%omega, point_1 - body_1%origin))
   end function relative_velocity
 
+  !> The velocity of contact i's point on its body 2 relative to its point
+  !> on its body 1 (m/s), the bodies `set_of` (0: the ground), contact i
+  !> between set_of(pair(1, i)) and set_of(pair(2, i)) at points_1(:, i),
+  !> points_2(:, i).
+  pure function contact_velocity(set_of, pair, points_1, points_2, i) result(v)
+    type(impact_body_t), intent(in) :: set_of(0:)
+    integer, intent(in) :: pair(:, :), i
+    real(wp), intent(in) :: points_1(:, :), points_2(:, :)
+    real(wp) :: v(3)
+    v = relative_velocity(set_of(pair(1, i)), set_of(pair(2, i)), points_1(:, i), points_2(:, i))
+  end function contact_velocity
+
   !> The impulse `impulse` (N s) on `body` at `point`: its centre of mass
   !> speeds up by impulse/m, its angular velocity by I^-1 (arm x impulse);
   !> its twist becomes the new one (the origin's velocity from the centre's).
@@ -140,14 +152,16 @@ contains
   !> ground) at points_1(:, i), points_2(:, i) with normal normals(:, i) out
   !> of body 1; every body's twist is changed. Per contact: the normal
   !> impulse P_i, the tangential impulse's size, v-_i, v+_i and the energy it
-  !> took, -P_i.(v-_i + v+_i)/2 (their sum the kinetic energy's fall).
+  !> took, -P_i.(v-_i + v+_i)/2 (their sum the kinetic energy's fall);
+  !> `tangent`, if present, the tangential impulses (3 x contacts, N s).
   subroutine collide_at_once(restitution, mu, normals, points_1, points_2, pair, bodies, impulse, tangential, &
-                             speed_before, speed_after, energy_lost, status)
+                             speed_before, speed_after, energy_lost, status, tangent)
     real(wp), intent(in) :: restitution(:), mu(:), normals(:, :), points_1(:, :), points_2(:, :)
     integer, intent(in) :: pair(:, :)
     type(impact_body_t), intent(inout) :: bodies(0:)
     real(wp), intent(out) :: impulse(:), tangential(:), speed_before(:), speed_after(:), energy_lost(:)
     type(status_t), intent(inout) :: status
+    real(wp), intent(out), optional :: tangent(:, :)
     type(impact_body_t) :: pushed(0:ubound(bodies, 1))
     real(wp) :: w(size(restitution), size(restitution))
     real(wp), allocatable :: a(:, :), rhs(:)
@@ -157,6 +171,7 @@ contains
     type(status_t) :: solved
     m = size(restitution)
     tangential = 0
+    if (present(tangent)) tangent = 0
     if (any(mu > 0)) then
       call with_friction()
       return
@@ -226,14 +241,15 @@ contains
       speed_after = [(normal_speed(bodies, i), i = 1, m)]
       impulse = [(dot_product(normals(:, i), p(:, i)), i = 1, m)]
       tangential = [(norm2(p(:, i) - impulse(i)*normals(:, i)), i = 1, m)]
+      if (present(tangent)) tangent = p - spread(impulse, 1, 3)*normals
     end subroutine with_friction
 
-    !> The relative velocity of contact i (body 2's point relative to body 1's).
+    !> The relative velocity of contact i (contact_velocity).
     function relative(set_of, i) result(v)
       type(impact_body_t), intent(in) :: set_of(0:)
       integer, intent(in) :: i
       real(wp) :: v(3)
-      v = relative_velocity(set_of(pair(1, i)), set_of(pair(2, i)), points_1(:, i), points_2(:, i))
+      v = contact_velocity(set_of, pair, points_1, points_2, i)
     end function relative
 
     !> The normal speed of contact i (body 2's point relative to body 1's).
@@ -256,45 +272,64 @@ contains
 
   !> The contacts `closing` of an impact at several contacts at once
   !> (collide_at_once's, with the bodies after it) closed together: the
-  !> normal impulses P_S on them (frictionless, as closing_impulse's) that
-  !> take away their normal speeds v_S, W_SS P_S = -v_S (W the Delassus
-  !> matrix of the normals, each column a body's response at rest to a unit
-  !> impulse), applied to the bodies; a plastic impulse, its energy
-  !> v_S . W_SS^-1 v_S / 2 >= 0 taken, -P_i (v_i + v'_i)/2 at each contact
-  !> (every contact's speed after changes). Contact i's normal impulse,
-  !> speed after and energy lost are added to impulse(i), speed_after(i)
-  !> becomes the new speed, energy_lost(i) grows. A W_SS that is singular
-  !> (the closing contacts' normals dependent on the bodies) fails.
+  !> impulses P_S on them that take away their normal speeds v_S
+  !> (frictionless, along each normal, as closing_impulse's) and, at a
+  !> contact that `rolling` marks, its whole relative velocity (the
+  !> no-slip contact cannot start slipping: two more rows, along two
+  !> tangents), W_SS P_S = -v_S (W the Delassus matrix of those directions,
+  !> each column the bodies' response at rest to a unit impulse), applied
+  !> to the bodies; a plastic impulse, its energy v_S . W_SS^-1 v_S / 2 >= 0
+  !> taken, -P_i . (v_i + v'_i)/2 at each contact (every contact's velocity
+  !> after changes). Contact i's normal impulse is added to impulse(i),
+  !> speed_after(i) becomes its new normal speed, energy_lost(i) grows;
+  !> `tangent` (3 x contacts, N s), if present, gets the tangential part of
+  !> the closing's impulse added. A W_SS that is singular (the closing
+  !> contacts' directions dependent on the bodies) fails.
   subroutine close_at_once(closing, normals, points_1, points_2, pair, bodies, impulse, speed_after, energy_lost, &
-                           status)
+                           status, rolling, tangent)
     logical, intent(in) :: closing(:)
     real(wp), intent(in) :: normals(:, :), points_1(:, :), points_2(:, :)
     integer, intent(in) :: pair(:, :)
     type(impact_body_t), intent(inout) :: bodies(0:)
     real(wp), intent(inout) :: impulse(:), speed_after(:), energy_lost(:)
     type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: rolling(:)
+    real(wp), intent(inout), optional :: tangent(:, :)
     type(impact_body_t) :: pushed(0:ubound(bodies, 1))
-    real(wp) :: w(size(closing), size(closing)), v(size(closing)), p(size(closing))
-    real(wp), allocatable :: a(:, :), rhs(:)
-    integer, allocatable :: s(:), ipiv(:)
-    integer :: i, j, b, m
+    real(wp), allocatable :: a(:, :), rhs(:), dirs(:, :), v_before(:, :), p(:, :)
+    real(wp) :: pn(size(closing)), speed_before(size(closing))
+    logical :: slides(size(closing))
+    integer, allocatable :: at(:), ipiv(:)
+    integer :: i, j, b, m, n
     m = size(closing)
-    v = [(normal_speed(bodies, i), i = 1, m)]
-    do j = 1, m
+    ! the directions whose relative speeds the closing takes away: each closing contact's normal, a rolling one's
+    ! two tangents too
+    allocate (dirs(3, 0), at(0))
+    do i = 1, m
+      if (.not. closing(i)) cycle
+      dirs = reshape([dirs, normals(:, i)], [3, size(at) + 1])
+      at = [at, i]
+      if (.not. present(rolling)) cycle
+      if (.not. rolling(i)) cycle
+      dirs = reshape([dirs, tangents(normals(:, i))], [3, size(at) + 2])
+      at = [at, i, i]
+    end do
+    n = size(at)
+    v_before = reshape([(contact_velocity(bodies, pair, points_1, points_2, i), i = 1, m)], [3, m])
+    allocate (a(n, n))
+    rhs = [(-dot_product(dirs(:, j), v_before(:, at(j))), j = 1, n)]
+    do j = 1, n
       pushed = bodies
       do b = 0, ubound(bodies, 1)   ! at rest: W exactly
         pushed(b)%omega = 0
         pushed(b)%velocity = 0
       end do
-      call apply_impulse(pushed(pair(2, j)), points_2(:, j), normals(:, j), status)
-      call apply_impulse(pushed(pair(1, j)), points_1(:, j), -normals(:, j), status)
-      w(:, j) = [(normal_speed(pushed, i), i = 1, m)]
+      call apply_impulse(pushed(pair(2, at(j))), points_2(:, at(j)), dirs(:, j), status)
+      call apply_impulse(pushed(pair(1, at(j))), points_1(:, at(j)), -dirs(:, j), status)
+      a(:, j) = [(dot_product(dirs(:, i), contact_velocity(pushed, pair, points_1, points_2, at(i))), i = 1, n)]
     end do
     if (.not. status%ok()) return
-    s = pack([(i, i = 1, m)], closing)
-    a = w(s, s)
-    rhs = -v(s)
-    allocate (ipiv(size(s)))
+    allocate (ipiv(n))
     call lu_factor(a, ipiv, status)
     if (status%ok()) call lu_solve(a, ipiv, rhs, status)
     if (.not. status%ok()) then
@@ -302,23 +337,51 @@ contains
                       'the bodies (no impulses take away their normal speeds)')
       return
     end if
-    p = 0
-    p(s) = rhs
+    ! each contact's impulse: its normal row's along the normal, a rolling one's tangent rows' added
+    allocate (p(3, m), source=0.0_wp)
+    pn = 0
+    slides = .true.
+    do j = 1, n
+      if (j > 1) then
+        if (at(j) == at(j - 1)) then
+          p(:, at(j)) = p(:, at(j)) + rhs(j)*dirs(:, j)
+          slides(at(j)) = .false.
+          cycle
+        end if
+      end if
+      pn(at(j)) = rhs(j)
+      p(:, at(j)) = rhs(j)*dirs(:, j)
+    end do
     do j = 1, m
-      call apply_impulse(bodies(pair(2, j)), points_2(:, j), p(j)*normals(:, j), status)
-      call apply_impulse(bodies(pair(1, j)), points_1(:, j), -p(j)*normals(:, j), status)
+      call apply_impulse(bodies(pair(2, j)), points_2(:, j), p(:, j), status)
+      call apply_impulse(bodies(pair(1, j)), points_1(:, j), -p(:, j), status)
     end do
     if (.not. status%ok()) return
-    speed_after = [(normal_speed(bodies, i), i = 1, m)]
-    impulse = impulse + p
-    energy_lost = energy_lost - p*(v + speed_after)/2
+    speed_before = [(dot_product(normals(:, i), v_before(:, i)), i = 1, m)]
+    speed_after = [(dot_product(normals(:, i), contact_velocity(bodies, pair, points_1, points_2, i)), i = 1, m)]
+    impulse = impulse + pn
+    do i = 1, m
+      if (slides(i)) then
+        energy_lost(i) = energy_lost(i) - pn(i)*(speed_before(i) + speed_after(i))/2
+      else
+        energy_lost(i) = energy_lost(i) - dot_product(p(:, i), v_before(:, i) + &
+                                                      contact_velocity(bodies, pair, points_1, points_2, i))/2
+        if (present(tangent)) tangent(:, i) = tangent(:, i) + p(:, i) - pn(i)*normals(:, i)
+      end if
+    end do
   contains
-    real(wp) function normal_speed(set_of, i) result(speed)
-      type(impact_body_t), intent(in) :: set_of(0:)
-      integer, intent(in) :: i
-      speed = dot_product(normals(:, i), relative_velocity(set_of(pair(1, i)), set_of(pair(2, i)), points_1(:, i), &
-                                                          points_2(:, i)))
-    end function normal_speed
+    !> Two unit tangents of the unit normal n, with n a right-handed frame.
+    function tangents(n) result(t)
+      real(wp), intent(in) :: n(3)
+      real(wp) :: t(3, 2)
+      if (abs(n(1)) < 0.6_wp) then
+        t(:, 1) = cross(n, [1.0_wp, 0.0_wp, 0.0_wp])
+      else
+        t(:, 1) = cross(n, [0.0_wp, 1.0_wp, 0.0_wp])
+      end if
+      t(:, 1) = t(:, 1)/norm2(t(:, 1))
+      t(:, 2) = cross(n, t(:, 1))
+    end function tangents
   end subroutine close_at_once
 
   !> The impulse (on the body, N s) that closes a contact whose points move

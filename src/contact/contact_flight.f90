@@ -71,9 +71,11 @@
 !> contact_loops); the friction, rolling, level and chain of a contact that
 !> starts open are the closed contact's after closing, so they need
 !> restitution (without it the run ends at the landing and they would be
-!> unused). A contact between two bodies has no friction, rolling, level or
-!> chain (it closes frictionless by the open chain); anything else is
-!> refused.
+!> unused). A contact between two bodies closes at position level:
+!> sliding by the open chain, with its friction law if it has one (on the
+!> tangential slip of the two bodies' material points), or rolling by the
+!> loop (its closing takes away the whole relative velocity); it has no
+!> level or chain (not built); anything else is refused.
 !>
 !> The flight's construction (the checks, the free bodies, a restart, a
 !> twist's rates) is in the submodule contact_flight_build.

@@ -19,10 +19,11 @@ contains
   !> Refused unless every contact is between the ground or a body and a
   !> body (a body's several closed contacts carry it together,
   !> contact_loops; its open ones are surfaces it may land on; one between
-  !> two bodies without friction, rolling, level or chain: it closes by the
-  !> open chain), and unless a contact that starts open has restitution
-  !> where it has what only a closed contact uses (a description with a
-  !> contact that starts open or may open: a flight).
+  !> two bodies without level or chain: it closes by the open chain,
+  !> sliding, with its friction law if any, or rolling by the loop), and
+  !> unless a contact that starts open has restitution where it has what
+  !> only a closed contact uses (a description with a contact that starts
+  !> open or may open: a flight).
   module procedure check_flight_system
     integer :: k
     if (.not. status%ok()) return
@@ -37,11 +38,11 @@ contains
         if (body_index(system, c%body_1) <= 0) then
           call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_1 = '''//c%body_1// &
             ''' is not a body')
-        else if (closed_settings(c)) then
+        else if (c%level /= LEVEL_POSITION .or. c%chain /= CHAIN_AUTO) then
           call set_status(status, STATUS_INVALID_INPUT, 'contact '''//c%name//''': body_1 = '''//c%body_1// &
             ''': where contacts open and close (start = ''open'', may_open) a contact between two bodies closes '// &
-            'frictionless, at position level, by the open chain (friction, rolling, level and chain there are '// &
-            'not built): leave them out (impact_mu is the friction of its impacts)')
+            'at position level, sliding by the open chain or rolling by the loop (level and chain there are not '// &
+            'built): leave them out')
         end if
         if (.not. status%ok()) return
       end associate

@@ -139,7 +139,8 @@ contains
     integer, allocatable :: c(:), pair(:, :)
     real(wp), allocatable :: normals(:, :), points_1(:, :), points_2(:, :), e(:), close_speed(:)
     real(wp), allocatable, dimension(:) :: impulse, tangential, before, after, lost
-    logical, allocatable :: closing(:), carrying(:), both(:), joined(:)
+    real(wp), allocatable :: tangent(:, :)
+    logical, allocatable :: closing(:), carrying(:), both(:), joined(:), rolls(:), second(:)
     logical :: involved(0:size(self%body_frame)), carried(0:size(self%body_frame))
     character(len=:), allocatable :: why, carriers, head, left_open, hit
     integer :: i, m, k, b
@@ -206,7 +207,7 @@ contains
     c = pack([(i, i = 1, size(lands))], both)
     m = size(c)
     allocate (normals(3, m), points_1(3, m), points_2(3, m), impulse(m), tangential(m), before(m), after(m), &
-              lost(m), closing(m))
+              lost(m), closing(m), tangent(3, m))
     do i = 1, m
       if (joined(c(i))) then
         normals(:, i) = self%gaps%gap(c(i))%normal
@@ -228,7 +229,7 @@ contains
       if (involved(k)) bodies(k) = impact_body(self, k)
     end do
     call collide_at_once(e, self%system%contacts(c)%impact_mu, normals, points_1, points_2, pair, bodies, impulse, &
-                         tangential, before, after, lost, status)
+                         tangential, before, after, lost, status, tangent)
     if (.not. status%ok()) return
     closing = after < close_speed
     if (any(carrying(c) .and. .not. closing .and. .not. self%system%contacts(c)%may_open)) then
@@ -238,21 +239,27 @@ contains
                        not_built=.true.)
       return
     end if
+    ! a landed rolling contact that closes carries its body_2 alone (a second closed contact that rolls, a loop, is
+    ! not built): its closing takes away its whole relative velocity
+    rolls = joined(c) .and. self%system%contacts(c)%rolling
     if (any(closing)) then
       do i = 1, m
-        call close_at_once(closing, normals, points_1, points_2, pair, bodies, impulse, after, lost, status)
+        call close_at_once(closing, normals, points_1, points_2, pair, bodies, impulse, after, lost, status, rolls, &
+                           tangent)
         if (.not. status%ok()) return
         if (.not. any(after < close_speed .and. .not. closing)) exit
         closing = closing .or. after < close_speed
       end do
     end if
-    if (any(closing .and. joined(c) .and. self%system%contacts(c)%rolling)) then
+    second = [(closing(i) .and. rolls(i) .and. count(closing .and. pair(2, :) == pair(2, i)) > 1, i = 1, m)]
+    if (any(second)) then
       action = max(action, EVENT_STOP)
-      call add_outcome(self, head//': the impact would close '//landed_names(self, unpack(closing .and. joined(c) &
-                       .and. self%system%contacts(c)%rolling, both, .false.))//', which rolls (a second closed '// &
-                       'contact that rolls is not built): the run ends here', not_built=.true.)
+      call add_outcome(self, head//': the impact would close '//landed_names(self, unpack(second, both, .false.))// &
+                       ', which rolls, with another contact of its body (a second closed contact that rolls is not '// &
+                       'built): the run ends here', not_built=.true.)
       return
     end if
+    where (closing .and. rolls) tangential = norm2(tangent, dim=1)
     do i = 1, m
       self%impacts = [self%impacts, impact_record_t(time=t, contact=c(i), body_1=pair(1, i), body_2=pair(2, i), &
                       normal_speed_before=before(i), normal_speed_after=after(i), normal_impulse=impulse(i), &

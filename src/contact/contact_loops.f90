@@ -74,11 +74,6 @@ contains
     real(wp) :: unit(m%ns), w(3), omega(3), share, arm, saved(m%ns)
     integer :: k, best
     if (.not. status%ok()) return
-    if (m%ns /= m%f) then
-      call set_status(status, STATUS_INVALID_INPUT, 'contact '''//name//''': a second closed contact of a body '// &
-        'whose contacts roll (rate constraints) is not built')
-      return
-    end if
     gap = new_contact_gap(surface_1, side_1, surface_2, side_2, [0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp])
     associate (a => work%frames(frame_a), b => work%frames(frame_b))
       call gap%start_from_search(a%rot, a%r, b%rot, b%r, status)

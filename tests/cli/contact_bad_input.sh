@@ -9,7 +9,7 @@
 # chain that does not apply (the open chain with rolling, a chain at velocity
 # level) or is unknown; a friction law without mu; what several bodies in
 # flight cannot do yet (one closed beside a flight, a contact between two
-# bodies that may open or has friction: it never closes). A message about a contact
+# bodies that may open with a level or a chain). A message about a contact
 # or body names it once, by its place.
 set -u
 slidesim=$1
@@ -118,18 +118,20 @@ expect unknown_chain 1 'unknown_chain.nml:' '&contact' chain "'closed'" 'open lo
 # several bodies (issue 25): each carried by its closed contacts or flying,
 # so a body with two contacts that start closed on the same shapes among
 # several bodies (no degree of freedom for the second) is refused naming the
-# input, and so are a contact between two bodies that opens and closes with
-# rolling, or with friction (it closes frictionless by the open chain)
+# input, and so are a contact between two bodies that opens and closes at
+# velocity level, or with a chain (it closes by the open chain, sliding, or
+# by the loop, rolling)
 printf "%s\n%s\n&body name = 'other', mass = 1, solid_of = 'ball', position = 1, 0, 0.5 /\n&contact name = 'c', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n&contact name = 'c2', shape_1 = 'table', body_2 = 'other', shape_2 = 'ball', start = 'open', restitution = 0.5 /\n&contact name = 'c3', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', may_open = .true. /\n" \
   "$head" "$ball" > "$work/two_closed.nml"
 expect two_closed 1 'two_closed.nml:9:' "&contact name = 'c3'" 'no coordinate of the contact that carries its body moves it along its normal'
-printf "%s\n%s\n&body name = 'top', mass = 1, solid_of = 'ball', position = 0, 0, 0.4 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n&contact name = 'stack', body_1 = 'ball', shape_1 = 'ball', body_2 = 'top', shape_2 = 'ball', may_open = .true., rolling = .true. /\n" \
-  "$head" "$ball" > "$work/top_rolls.nml"
-expect top_rolls 1 'top_rolls.nml:8:' "&contact name = 'stack'" "body_1 = 'ball'" \
-  'a contact between two bodies closes frictionless, at position level, by the open chain' 'leave them out'
-printf "%s\n%s\n&body name = 'top', mass = 1, solid_of = 'ball', position = 0, 0, 0.6 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', start = 'open', restitution = 0.5 /\n&contact name = 'hit', body_1 = 'ball', shape_1 = 'ball', body_2 = 'top', shape_2 = 'ball', start = 'open', restitution = 0.5, friction = 'coulomb', mu = 0.3 /\n" \
-  "$head" "$ball" > "$work/pair_friction.nml"
-expect pair_friction 1 'pair_friction.nml:8:' "&contact name = 'hit'" '(friction, rolling, level and chain there are not built)' \
+printf "%s\n%s\n&body name = 'top', mass = 1, solid_of = 'ball', position = 0, 0, 0.4 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball' /\n&contact name = 'stack', body_1 = 'ball', shape_1 = 'ball', body_2 = 'top', shape_2 = 'ball', may_open = .true., level = 'velocity' /\n" \
+  "$head" "$ball" > "$work/top_velocity.nml"
+expect top_velocity 1 'top_velocity.nml:8:' "&contact name = 'stack'" "body_1 = 'ball'" \
+  'a contact between two bodies closes at position level, sliding by the open chain or rolling by the loop' \
+  'leave them out'
+printf "%s\n%s\n&body name = 'top', mass = 1, solid_of = 'ball', position = 0, 0, 0.6 /\n&contact name = 'c', body_1 = 'ground', shape_1 = 'table', body_2 = 'ball', shape_2 = 'ball', start = 'open', restitution = 0.5 /\n&contact name = 'hit', body_1 = 'ball', shape_1 = 'ball', body_2 = 'top', shape_2 = 'ball', start = 'open', restitution = 0.5, friction = 'coulomb', mu = 0.3, chain = 'open' /\n" \
+  "$head" "$ball" > "$work/pair_chain.nml"
+expect pair_chain 1 'pair_chain.nml:8:' "&contact name = 'hit'" '(level and chain there are not built)' \
   'leave them out'
 
 # a cup that cannot close in a B-spline bowl (table 3.2's paraboloids): which

@@ -100,6 +100,7 @@ program shipped_descriptions
   call contact_roll_beside_bounce()
   call contact_stacked_balls()
   call contact_box_landing()
+  call contact_ball_on_cart()
   call contact_ladder()
   if (failures > 0) error stop 1
 
@@ -777,6 +778,31 @@ contains
     call run_flying('inputs/contact/box_landing.nml', system, 1e-10_wp, 1e-10_wp, 0.005_wp, 1.0_wp)
   end subroutine contact_box_landing
 
+  subroutine contact_ball_on_cart()
+    type(contact_system_t) :: system
+    system%shapes = [spec_shape('floor', 'plane', [character(len=1) ::], [real(wp) ::]), &
+                     ball_shape('rear_left', 0.02_wp), ball_shape('rear_right', 0.02_wp), ball_shape('front', 0.02_wp), &
+                     spec_shape('lid', 'plane', [character(len=1) ::], [real(wp) ::]), ball_shape('ball', 0.05_wp)]
+    system%shapes(2)%description%origin = [-0.5_wp, 0.15_wp, -0.1_wp]
+    system%shapes(3)%description%origin = [-0.5_wp, -0.15_wp, -0.1_wp]
+    system%shapes(4)%description%origin = [0.5_wp, 0.0_wp, -0.1_wp]
+    system%shapes(5)%description%origin = [0.0_wp, 0.0_wp, 0.1_wp]
+    system%bodies = [given_body('cart', 4.0_wp, [0.0_wp, 0.0_wp, 0.0_wp], [0.0666666666666667_wp, 0.493333333333333_wp, &
+                                0.533333333333333_wp], [0.0_wp, 0.0_wp, 0.12_wp], [0.0_wp, 0.0_wp, 0.0_wp]), &
+                     solid_ball('ball', 0.2_wp, [-0.4_wp, 0.0_wp, 0.57_wp], [1.0_wp, 0.0_wp, 0.0_wp])]
+    system%bodies(1)%velocity = [1.0_wp, 0.0_wp, 0.0_wp]
+    system%bodies(2)%angular_velocity = [0.0_wp, 20.0_wp, 0.0_wp]
+    system%contacts = [contact('rear_left_on_floor', 'ground', 'floor', 1.0_wp, 'cart', 'rear_left', 1.0_wp, .false.), &
+                       contact('rear_right_on_floor', 'ground', 'floor', 1.0_wp, 'cart', 'rear_right', 1.0_wp, .false.), &
+                       contact('front_on_floor', 'ground', 'floor', 1.0_wp, 'cart', 'front', 1.0_wp, .false.), &
+                       contact('ball_on_cart', 'cart', 'lid', 1.0_wp, 'ball', 'ball', 1.0_wp, .false.)]
+    system%contacts(4)%start_open = .true.
+    system%contacts(4)%restitution = 0.6_wp
+    system%contacts(4)%close_speed = 0.1_wp
+    system%contacts(4)%friction = law_spec('coulomb', 'mu', 0.2_wp)
+    call run_flying('inputs/contact/ball_on_cart.nml', system, 1e-12_wp, 1e-12_wp, 0.005_wp, 2.0_wp, ODE_BDF)
+  end subroutine contact_ball_on_cart
+
   subroutine contact_ladder()
     type(contact_system_t) :: system
     system%shapes = [spec_shape('floor', 'plane', [character(len=1) ::], [real(wp) ::]), &
@@ -800,10 +826,11 @@ contains
   !> the input's own duration `seconds` (a fraction of a second each), not
   !> the program's, so that the landings, closings and lift-offs happen:
   !> the line `<input> duration <seconds>` tells compare_shipped.py.
-  subroutine run_flying(name, system, rtol, atol, output_step, seconds)
+  subroutine run_flying(name, system, rtol, atol, output_step, seconds, method)
     character(len=*), intent(in) :: name
     type(contact_system_t), intent(in) :: system
     real(wp), intent(in) :: rtol, atol, output_step, seconds
+    integer, intent(in), optional :: method   ! the input's &solver method (ODE_ADAMS unless given)
     type(flight_ode_t), target :: flight
     type(contact_model_t) :: model
     type(driver_options_t) :: options
@@ -836,9 +863,11 @@ contains
     call expect_ok(st, name//': start')
     if (.not. st%ok()) return
     options%ode%method = ODE_ADAMS
+    if (present(method)) options%ode%method = method
     options%ode%rtol = rtol
     options%ode%atol = atol
-    options%ode%convergence_coefficient = contact_convergence_coefficient
+    ! as scenarios_contact: Adams' corrector to the contact scenario's coefficient, BDF's CVODE's own
+    if (options%ode%method == ODE_ADAMS) options%ode%convergence_coefficient = contact_convergence_coefficient
     options%t_end = seconds
     options%output_step = output_step
     options%min_mean_step = min_mean_step
