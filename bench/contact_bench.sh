@@ -5,6 +5,7 @@
 # seconds; SLIDESIM_TOWER_MAX (default 12) and SLIDESIM_TOWER_SECONDS
 # (default 10) change N and T.
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/support/bench_program.sh"
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 towers=$(mktemp -d)
 trap 'rm -rf "$towers"' EXIT
@@ -15,4 +16,5 @@ for n in $(seq 1 "${SLIDESIM_TOWER_MAX:-12}"); do
   files+=("$towers/tower$n.nml")
 done
 cd "$root"
-"$1/bench/contact_bench" "${SLIDESIM_TOWER_SECONDS:-10}" "${files[@]}"
+contact_bench=$(bench_program "$1" contact_bench)
+"$contact_bench" "${SLIDESIM_TOWER_SECONDS:-10}" "${files[@]}"

@@ -10,8 +10,9 @@
 #    median and mean. Adams' step count at P1 is a lottery in such
 #    neighbours; median and mean are the typical cost.
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/support/bench_program.sh"
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-profile="$1/bench/contact_profile"
+profile=$(bench_program "$1" contact_profile)
 shift
 coefficients=("$@")
 if ((${#coefficients[@]} == 0)); then

@@ -4,7 +4,9 @@
 # identification and the optimisation of table 4.12 in 1 and 2 threads
 # (bench/design_bench.f90).
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/support/bench_program.sh"
 build=${1:?usage: design_bench.sh BUILD_DIR}
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
-"$build/bench/design_bench"
+design_bench=$(bench_program "$build" design_bench)
+"$design_bench"

@@ -9,10 +9,12 @@
 #    result and XDMF files), its process CPU time (user + system), median of
 #    11 runs. Goal: 0.2 s.
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/support/bench_program.sh"
 build=${1:?usage: ride_bench.sh BUILD_DIR}
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
-"$build/bench/ride_bench"
+ride_bench=$(bench_program "$build" ride_bench)
+"$ride_bench"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 slidesim=$(cd "$build" && pwd)/slidesim

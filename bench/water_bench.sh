@@ -9,10 +9,12 @@
 #    process CPU time (user + system), median of 21 runs, next to the
 #    start-up alone (`slidesim --version`).
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/support/bench_program.sh"
 build=${1:?usage: water_bench.sh BUILD_DIR}
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
-"$build/bench/water_bench" inputs/water/demo_slide.nml
+water_bench=$(bench_program "$build" water_bench)
+"$water_bench" inputs/water/demo_slide.nml
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 slidesim=$(cd "$build" && pwd)/slidesim

@@ -9,7 +9,8 @@
 # - CMake's side (configure only): SLIDESIM_PROGRAM_ONLY compiles the layers'
 #   link-time objects slim (no -ffat-lto-objects), has no test or benchmark
 #   targets and refuses to install; configured for everything again, the fat
-#   objects and the tests are back.
+#   objects and the tests are back, and the benchmarks a target of their own,
+#   with link-time optimisation outside `all` (built on demand).
 set -u
 root=$(pwd)
 work=$(mktemp -d)
@@ -83,6 +84,13 @@ if grep -q 'link-time optimisation of the program and benchmarks: ON' "$work/con
 fi
 cmake --build "$work/cmake" --target help >"$work/targets" 2>&1
 grep -q '\.\.\. test_base$' "$work/targets" || fail "full build after program only: no tests"
+# the benchmarks: a target of their own; with link-time optimisation on demand
+# only (not in `all`: each is a whole-program optimisation no test needs)
+grep -q '\.\.\. benchmarks$' "$work/targets" || fail "full build: no benchmarks target"
+if grep -q 'link-time optimisation of the program and benchmarks: ON' "$work/configure.log"; then
+  grep -qE '^bench/all: .*(_bench|contact_profile)' "$work/cmake/CMakeFiles/Makefile2" &&
+    fail "full build with LTO: the benchmarks are in all"
+fi
 
 echo "build scope: $failures failures"
 [ "$failures" = 0 ]
