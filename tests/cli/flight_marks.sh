@@ -17,6 +17,8 @@
 #   start to the closing impact), labels every impact with its approach speed
 #   and marks the landing points in 3-D, the legend naming the bodies that
 #   met ("ball on ground": /contact/impacts/body_1, body_2).
+# - an impact at several contacts at once (ball_on_cart: the hit and the
+#   cart's three feet) labelled once, with its fastest approach.
 set -u
 slidesim=$1
 root=$(pwd)
@@ -207,6 +209,37 @@ for line in failures:
     print('FAIL', line)
 print(f"plot: {len(time_axes)} time plots shaded, {len(labels)} impacts labelled, {len(failures)} failures")
 sys.exit(1 if failures else 0)
+EOF
+
+
+# An impact at several contacts at once is one label, its fastest approach:
+# the ball landing on the cart (inputs/contact/ball_on_cart.nml) is one row
+# for the hit and one for each of the cart's three feet (0 m/s); seven
+# landings, seven labels (each was four, written over each other).
+sed -e "s|output = 'ball_on_cart.h5'|output = 'cart.h5'|" "$root/inputs/contact/ball_on_cart.nml" >"$work/cart.nml"
+run_case cart 0
+(cd "$work" && "$python" "$root/scripts/plot_contact.py" cart.h5 -o cart.png) >"$work/cart_plot.out" 2>&1 ||
+  fail "plot_contact.py cart.h5: $(cat "$work/cart_plot.out")"
+"$python" - "$root/python" "$work/cart.h5" <<'EOF' || fail "plot_contact.py: one label per impact event"
+import sys
+sys.path.insert(0, sys.argv[1])
+import h5py
+import matplotlib
+matplotlib.use('Agg')
+import numpy as np
+from slidesim.plot import figure
+
+with h5py.File(sys.argv[2], 'r') as f:
+    times = f['contact/impacts/time'][:]
+    speeds = -f['contact/impacts/normal_speed_before'][:]
+fig = figure(sys.argv[2])
+labels = [a for ax in fig.axes for a in ax.texts if a.get_gid() == 'impact']
+events = np.unique(times)
+expected = [f"{speeds[times == t].max():.3g} m/s" for t in events]
+got = [a.get_text() for a in labels]
+ok = len(times) > len(events) == 7 and got == expected and np.allclose([a.xy[0] for a in labels], events)
+print(f"cart: {len(times)} impact rows at {len(events)} times, labels {got}")
+sys.exit(0 if ok else 1)
 EOF
 
 finish

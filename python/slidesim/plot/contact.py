@@ -93,8 +93,19 @@ def shade_flights(ax, phases, label=True):
                        label=f"in flight ({name} open)" if label and j == 0 else None)
 
 
+def impact_events(table):
+    """(time, approach speed) of each impact event: the table's rows of one
+    time are one impact at several contacts (a ball landing on a cart: the
+    hit and the cart's feet, which pass the impulse on at 0 m/s), labelled
+    once with its fastest approach."""
+    events = {}
+    for time, speed in zip(table.get("time", []), table.get("normal_speed_before", [])):
+        events[time] = max(events.get(time, 0.0), abs(speed))
+    return list(events.items())
+
+
 def mark_impact_times(ax, table):
-    for j, time in enumerate(table.get("time", [])):
+    for j, (time, _) in enumerate(impact_events(table)):
         ax.axvline(time, color=IMPACT_COLOUR, ls="--", lw=0.7, label="impact" if j == 0 else None)
 
 
@@ -108,10 +119,10 @@ def gaps(ax, r, g, t, phases, table, contacts):
         if path in r:
             ax.plot(t, r[path].values, lw=1, label=f"{name} gap")
     shade_flights(ax, phases)
-    for j, (time, speed) in enumerate(zip(table.get("time", []), table.get("normal_speed_before", []))):
+    for j, (time, speed) in enumerate(impact_events(table)):
         ax.plot(time, 0.0, "v", color=IMPACT_COLOUR, ms=6, label="impact (approach speed)" if j == 0 else None)
         # upright: impacts that follow closely (the last bounces) do not overlap
-        ax.annotate(f"{abs(speed):.3g} m/s", (time, 0.0), xytext=(0, 6), textcoords="offset points",
+        ax.annotate(f"{speed:.3g} m/s", (time, 0.0), xytext=(0, 6), textcoords="offset points",
                     ha="center", va="bottom", rotation=90, fontsize=7, color=IMPACT_COLOUR, gid="impact")
     ax.set_xlabel("time [s]")
     ax.set_ylabel("gap [m]")
