@@ -162,16 +162,22 @@ contains
     beyond_huge = digits > huge_digits   ! (equal length: lexical order is numeric order)
   end function beyond_huge
 
-  pure function format_vector(x) result(text)
+  !> '[x1, x2, ...]'; without the brackets (`brackets` = .false.) as a
+  !> namelist gives a vector in a message: 'x1, x2, ...'.
+  pure function format_vector(x, brackets) result(text)
     real(wp), intent(in) :: x(:)
+    logical, intent(in), optional :: brackets
     character(len=:), allocatable :: text
     integer :: i
-    text = '['
+    logical :: bracketed
+    bracketed = .true.
+    if (present(brackets)) bracketed = brackets
+    text = ''
     do i = 1, size(x)
       text = text//format_real(x(i))
       if (i < size(x)) text = text//', '
     end do
-    text = text//']'
+    if (bracketed) text = '['//text//']'
   end function format_vector
 
   pure function lower(text) result(low)

@@ -18,7 +18,7 @@ module design_slide_design
   implicit none (type, external)
   private
   public :: slide_design_t, table_4_12_design, design_points, start_x, build_design_slide, start_points
-  public :: design_elements, parameter_value, PARAMETER_LENGTH, PARAMETER_SLOPE, PARAMETER_RADIUS, &
+  public :: design_elements, parameter_value, set_parameter, PARAMETER_LENGTH, PARAMETER_SLOPE, PARAMETER_RADIUS, &
     PARAMETER_ANGLE, PARAMETER_DROP, parameter_names, parameter_units
 
   !> The element parameters a design variable can be (slide_element_t's
@@ -89,17 +89,23 @@ contains
     integer :: k
     elements = design%chain%elements
     do k = 1, size(x)
-      associate (e => elements(design%element(k)))
-        select case (design%parameter(k))
-        case (PARAMETER_LENGTH); e%length = x(k)
-        case (PARAMETER_SLOPE); e%slope_deg = x(k)
-        case (PARAMETER_RADIUS); e%radius = x(k)
-        case (PARAMETER_ANGLE); e%angle_deg = x(k)
-        case (PARAMETER_DROP); e%drop = x(k)
-        end select
-      end associate
+      call set_parameter(elements(design%element(k)), design%parameter(k), x(k))
     end do
   end function design_elements
+
+  !> Sets parameter `kind` (PARAMETER_*) of element e to `value`.
+  elemental subroutine set_parameter(e, kind, value)
+    type(slide_element_t), intent(inout) :: e
+    integer, intent(in) :: kind
+    real(wp), intent(in) :: value
+    select case (kind)
+    case (PARAMETER_LENGTH); e%length = value
+    case (PARAMETER_SLOPE); e%slope_deg = value
+    case (PARAMETER_RADIUS); e%radius = value
+    case (PARAMETER_ANGLE); e%angle_deg = value
+    case (PARAMETER_DROP); e%drop = value
+    end select
+  end subroutine set_parameter
 
   !> The value of parameter `kind` (PARAMETER_*) of element e.
   elemental real(wp) function parameter_value(e, kind) result(value)

@@ -173,10 +173,11 @@ module io_declarations_design
       'radius (m; curve, helix, bowl, funnel, drop), angle (deg; curve), drop (m; bowl)'), &
     declaration_t(groups='design_elements', name='lower', shape='per design variable', unit='m or deg', &
       default='none', low=-720.0_wp, high=1e4_wp, meaning='lower bound of each, in its parameter''s unit, held '// &
-      'exactly, at most its start value (&slide_elements)'), &
+      'exactly, at most its start value (&slide_elements), inside what its element''s kind allows (as '// &
+      '&slide_elements: a straight''s slope in [-45, 45] deg, ...)'), &
     declaration_t(groups='design_elements', name='upper', shape='per design variable', unit='m or deg', &
       default='none', low=-720.0_wp, high=1e4_wp, meaning='upper bound of each, above `lower`, at least its '// &
-      'start value'), &
+      'start value, inside what its element''s kind allows'), &
     ! ---- &catalogue: the standard parts (docs/design.md, "Designs from standard parts")
     declaration_t(groups='catalogue', name='radii', shape='list of at most 200', unit='m', default='none', &
       low=0.0_wp, high=1e4_wp, open_low=.true., meaning='the radii made (curve, helix; increasing); or radius_step'), &

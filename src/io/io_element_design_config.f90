@@ -5,19 +5,23 @@
 !> A variable is a parameter of an element; which kinds have which, and the
 !> &catalogue list and step of each (a catalogue kind: a curve's radius and a
 !> bowl's entry radius are different parts), are the table below; the range
-!> of a variable is its catalogue list's declaration (io_declarations_design).
+!> of a variable is what its element kind allows (&slide_elements' own check,
+!> io_element_table check_element) inside its catalogue list's declaration
+!> (io_declarations_design).
 !> Without &design_elements the design is &optimize's points, and
 !> &slide_elements and &catalogue are refused.
 module io_element_design_config
   use base_kinds, only: wp
   use base_text, only: format_integer, format_short, append_item
   use base_status, only: status_t, set_status, STATUS_INVALID_INPUT
-  use design_slide_design, only: parameter_value, parameter_names, parameter_units, PARAMETER_LENGTH, &
-    PARAMETER_SLOPE, PARAMETER_RADIUS, PARAMETER_ANGLE, PARAMETER_DROP
+  use design_slide_design, only: parameter_value, set_parameter, parameter_names, parameter_units, &
+    PARAMETER_LENGTH, PARAMETER_SLOPE, PARAMETER_RADIUS, PARAMETER_ANGLE, PARAMETER_DROP
   use design_geometry_optimization, only: optimization_setup_t
   use design_catalogue, only: catalogue_t, allowed_in_list, allowed_by_step, step_indices
   use io_input, only: input_text_t, group_reader_t, open_group, group_present, format_real, indexed_name
   use io_slide_geometry_config, only: read_slide_elements
+  use io_element_table, only: check_element
+  use geometry_slide_elements, only: slide_element_t
   use io_declaration, only: declaration_t, in_groups, bound_text, words_joined
   use io_input_declarations, only: find_declaration, declaration
   implicit none (type, external)
@@ -64,8 +68,10 @@ contains
     character(len=*), parameter :: g = 'design_elements'
     character(len=8), allocatable :: parameter(:)
     real(wp), allocatable :: element_real(:), lower(:), upper(:)
-    integer :: n, i, p, k, c
-    real(wp) :: x
+    integer :: n, i, p, k, c, b
+    real(wp) :: x, bound
+    character(len=:), allocatable :: why
+    character(len=*), parameter :: bound_names(2) = [character(len=5) :: 'lower', 'upper']
 
     with_catalogue = .false.
     if (.not. status%ok()) return
@@ -123,6 +129,16 @@ contains
                          format_real(lower(i)), status)
           cycle
         end if
+        why = ''
+        do b = 1, 2
+          bound = merge(lower(i), upper(i), b == 1)
+          why = element_refusal(elements(d%element(i)), d%element(i), p, bound)
+          if (len(why) > 0) exit
+        end do
+        if (len(why) > 0) then
+          call r%invalid(indexed_name(trim(bound_names(b)), i), format_real(bound), why, status)
+          cycle
+        end if
         if (.not. in_range(c, lower(i), upper(i))) then
           call r%invalid(indexed_name('lower', i)//', '//indexed_name('upper', i), &
                          format_real(lower(i))//', '//format_real(upper(i)), &
@@ -130,6 +146,7 @@ contains
                          trim(list_names(c))//')', status)
           cycle
         end if
+        ! the start value passed &slide_elements' own check when it was read
         x = parameter_value(elements(d%element(i)), p)
         if (x < lower(i) .or. x > upper(i)) then
           call r%invalid(indexed_name('lower', i)//', '//indexed_name('upper', i), &
@@ -323,6 +340,33 @@ contains
       end do
     end function bounds_of
   end subroutine read_catalogue
+
+  !> Why element e (number `number` of the chain) cannot be built with its
+  !> parameter p at x ('' when it can): &slide_elements' own check of an
+  !> element (check_element, the one statement of each kind's limits), so
+  !> that a variable's bounds hold only elements that can be built. Each
+  !> kind's limits on one parameter are an interval (given the others), so
+  !> bounds that pass hold only values that pass.
+  function element_refusal(e, number, p, x) result(why)
+    type(slide_element_t), intent(in) :: e
+    integer, intent(in) :: number, p
+    real(wp), intent(in) :: x
+    character(len=:), allocatable :: why
+    type(slide_element_t) :: moved
+    character(len=:), allocatable :: variable, value, allowed
+    moved = e
+    call set_parameter(moved, p, x)
+    call check_element(moved%kind, moved%length, moved%slope_deg, moved%radius, moved%angle_deg, moved%direction, &
+                       moved%turns, moved%drop, variable, value, allowed, moved%bowl_profile)
+    why = ''
+    if (len(variable) == 0) return
+    why = 'element '//format_integer(number)//' is a '//trim(e%kind)//', and '
+    ! a limit on another of its values that this one moves (a helix's drop by its radius)
+    if (variable /= trim(parameter_names(p)) .and. variable /= trim(parameter_names(p))//'_deg') &
+      why = why//'with '//trim(parameter_names(p))//' '//format_short(x)//' '//trim(parameter_units(p))// &
+            ' its '//variable//' = '//value//' is refused: '
+    why = why//allowed//' (&slide_elements): the bounds may hold only elements that can be built'
+  end function element_refusal
 
   !> The catalogue kind of parameter p of an element of `kind` (0: p is not a
   !> design variable of that kind).

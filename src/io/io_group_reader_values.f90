@@ -82,7 +82,7 @@ contains
             end if
             if (lo(d) < 1 .or. hi(d) > dims(d) .or. lo(d) > hi(d)) then
               call set_status(status, STATUS_INVALID_INPUT, here//': the subscript is not allowed: '// &
-                              'index '//format_integer(d)//' must lie in [1, '//format_integer(dims(d))//']')
+                              subscript_problem(item%name, item%rank, d, lo(d), hi(d), dims(d)))
               if (len(limit) > 0) status%message = status%message//' ('//limit//')'
               return
             end if
@@ -121,6 +121,27 @@ contains
     from = owner(positions)
     values = slot(positions)
   end subroutine gather
+
+  !> Why subscript d (lo:hi, one index when lo = hi) of `name` does not fit
+  !> its extent 1:n, naming the index given: 'index 2 of scales lies outside
+  !> [1, 1]'; of an array of rank 2 'the second index 4 of points ...'.
+  pure function subscript_problem(name, rank, d, lo, hi, n) result(text)
+    character(len=*), intent(in) :: name
+    integer, intent(in) :: rank, d, lo, hi, n
+    character(len=:), allocatable :: text
+    character(len=*), parameter :: ordinals(2) = [character(len=6) :: 'first', 'second']
+    integer :: given
+    if (lo >= 1 .and. hi <= n) then
+      text = 'the section '//format_integer(lo)//':'//format_integer(hi)//' of '//name//' is empty (its first '// &
+             'index exceeds its last)'
+      return
+    end if
+    given = hi
+    if (lo < 1) given = lo
+    text = 'index '
+    if (rank > 1) text = 'the '//trim(ordinals(min(d, 2)))//' index '
+    text = text//format_integer(given)//' of '//name//' lies outside [1, '//format_integer(n)//']'
+  end function subscript_problem
 
   !> 'x', 'x(3)' or 'x(1, 3)' for flat element p of a variable of extents dims.
   pure function element_name(name, dims, p) result(text)

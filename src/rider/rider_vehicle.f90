@@ -27,7 +27,7 @@ module rider_vehicle
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_INTERNAL
-  use base_text, only: format_real, format_integer
+  use base_text, only: format_real, format_integer, format_vector
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_slide_query, only: slide_surface_t, slide_bottom_v
   use base_vector, only: cross
@@ -195,7 +195,8 @@ contains
     select case (v%kind)
     case (VEHICLE_MAT)
       if (.not. all(v%mat_size > 0)) then
-        call found('mat_length, mat_width, mat_thickness', vector_text(v%mat_size), 'each must be > 0 (m)')
+        call found('mat_length, mat_width, mat_thickness', format_vector(v%mat_size, brackets=.false.), &
+                   'each must be > 0 (m)')
       else if (.not. v%mat_mass > 0) then
         call found('mat_mass', format_real(v%mat_mass), 'must be > 0 (kg)')
       end if
@@ -219,24 +220,14 @@ contains
       character(len=*), intent(in) :: part
       real(wp), intent(in) :: radii(2), mass
       if (.not. (radii(2) > 0 .and. radii(2) < radii(1))) then
-        call found(part//'_radii', vector_text(radii), 'the tube''s radius r (the second) must be > 0 and less '// &
-                   'than R (the first, from the '//part//'''s centre to the tube''s centre)')
+        call found(part//'_radii', format_vector(radii, brackets=.false.), 'the tube''s radius r (the second) '// &
+                   'must be > 0 and less than R (the first, from the '//part//'''s centre to the tube''s centre)')
       else if (.not. mass > 0) then
         call found(part//'_mass', format_real(mass), 'must be > 0 (kg)')
       end if
     end subroutine torus_problem
   end subroutine vehicle_problem
 
-  !> 'x1, x2, ...' as a message gives a vector.
-  pure function vector_text(x) result(text)
-    real(wp), intent(in) :: x(:)
-    character(len=:), allocatable :: text
-    integer :: k
-    text = format_real(x(1))
-    do k = 2, size(x)
-      text = text//', '//format_real(x(k))
-    end do
-  end function vector_text
 
   !> The vehicle `v` with its riders as one rigid body in V (see the header).
   subroutine vehicle_body(v, vb, status)

@@ -13,15 +13,12 @@
 #   list for a kind no variable has (the curves' radii with only a bowl's),
 #   a bowl variable without values, a list and a step, a step with no value
 #   inside the bounds, a list value outside the declared range, bounds
-#   outside the bowl slope's range, a drop on a straight and a drop's drop
+#   outside the range of a bowl's wall slope (&slide_elements' own limit), a drop on a straight and a drop's drop
 #   (not design variables), a bowl's turns (not a parameter).
 set -u
 slidesim=$1
 python=${SLIDESIM_PYTHON:-/usr/bin/python3}
-root=$(pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
+. "$(dirname "$0")/support/checks.sh"
 fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 input=$root/inputs/design/optimize_bowl_parts.nml
 
@@ -72,33 +69,24 @@ sys.exit(1 if bad else 0)
 PY
 fi
 
-# refuse NAME 'WORDS' ARGS...: --check with ARGS ends with exit status 1 and a message with WORDS
-refuse() {
-  local name=$1 words=$2
-  shift 2
-  (cd "$work" && "$slidesim" -q --check "$@" >"$name.out" 2>"$name.err")
-  local got=$?
-  [ "$got" = 1 ] || { fail "$name: exit status $got, expected 1: $(cat "$work/$name.err")"; return; }
-  grep -qF -- "$words" "$work/$name.err" || fail "$name: the message lacks '$words': $(cat "$work/$name.err")"
-}
-refuse outside '&catalogue: bowl_radii(3) = 12.0 is not allowed: lies outside the bounds of every bowl radius variable (element 2 radius 5 … 8 m)' \
+check_refused outside '&catalogue: bowl_radii(3) = 12.0 is not allowed: lies outside the bounds of every bowl radius variable (element 2 radius 5 … 8 m)' \
   --set 'catalogue%bowl_radii=5,6,12' "$input"
-refuse curve_radii "radii = 3, 4 is not allowed: no design variable of &design_elements has parameter = 'radius' on a curve or helix" \
+check_refused curve_radii "radii = 3, 4 is not allowed: no design variable of &design_elements has parameter = 'radius' on a curve or helix" \
   --set 'catalogue%radii=3,4' "$input"
-refuse no_values 'bowl_drops = none is not allowed: design variable 3 (element 2 drop) needs its allowed values: give bowl_drops or bowl_drop_step' \
+check_refused no_values 'bowl_drops = none is not allowed: design variable 3 (element 2 drop) needs its allowed values: give bowl_drops or bowl_drop_step' \
   --unset catalogue%bowl_drops "$input"
-refuse list_and_step 'give bowl_radii or bowl_radius_step, not both' --set 'catalogue%bowl_radius_step=1' "$input"
-refuse no_value_inside 'holds no value inside the bounds 40 … 55 deg of design variable 2 (element 2 slope)' \
+check_refused list_and_step 'give bowl_radii or bowl_radius_step, not both' --set 'catalogue%bowl_radius_step=1' "$input"
+check_refused no_value_inside 'holds no value inside the bounds 40 … 55 deg of design variable 2 (element 2 slope)' \
   --set 'catalogue%bowl_slope_step_deg=60' "$input"
-refuse declared_range 'bowl_slopes_deg' --unset catalogue%bowl_slope_step_deg --set 'catalogue%bowl_slopes_deg=45,90' \
+check_refused declared_range 'bowl_slopes_deg' --unset catalogue%bowl_slope_step_deg --set 'catalogue%bowl_slopes_deg=45,90' \
   "$input"
-refuse slope_range 'the bowl slope must lie in (0, 85] deg (the range of &catalogue bowl_slopes_deg)' \
+check_refused slope_range "upper(2) = 88.0 is not allowed: element 2 is a bowl, and a bowl's wall rises at its entry at a slope in (0, 85] (deg) (&slide_elements)" \
   --set 'design_elements%upper=8,88,2.5' "$input"
-refuse straight_drop "element 1 is a straight, whose drop is not a design variable (a drop: bowl)" \
+check_refused straight_drop "element 1 is a straight, whose drop is not a design variable (a drop: bowl)" \
   --set 'design_elements%element=2,2,1' "$input"
-refuse drop_drop "element 1 is a drop, whose drop is not a design variable (a drop: bowl)" \
+check_refused drop_drop "element 1 is a drop, whose drop is not a design variable (a drop: bowl)" \
   --set "slide_elements%kind='drop','bowl','straight','runout'" --set 'slide_elements%length=0,0,10,8' \
   --set 'slide_elements%slope_deg=80,50,14,2' --set 'slide_elements%radius=8,6,0,0' \
   --set 'slide_elements%drop=10,2,0,0' --set 'design_elements%element=2,2,1' "$input"
-refuse turns "parameter(3) = 'turns' is not allowed" --set "design_elements%parameter='radius','slope','turns'" "$input"
+check_refused turns "parameter(3) = 'turns' is not allowed" --set "design_elements%parameter='radius','slope','turns'" "$input"
 [ "$failures" = 0 ]

@@ -14,16 +14,13 @@
 #   value outside every bound, one for a parameter no variable has, a
 #   variable without values, a list not increasing, a list and a step, a
 #   step with no value inside the bounds; a parameter its element lacks,
-#   bounds that miss the start value or leave the parameter's range, an
+#   bounds that miss the start value or leave the range its element allows, an
 #   element that is not there, a variable given twice, a point variable of
 #   &optimize with an element design, too few rides, no chain to vary.
 set -u
 slidesim=$1
 python=${SLIDESIM_PYTHON:-/usr/bin/python3}
-root=$(pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
+. "$(dirname "$0")/support/checks.sh"
 fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 input=$root/inputs/design/optimize_standard_parts.nml
 
@@ -77,40 +74,32 @@ sys.exit(1 if bad else 0)
 PY
 fi
 
-# refuse NAME 'WORDS' ARGS...: --check with ARGS ends with exit status 1 and a message with WORDS
-refuse() {
-  local name=$1 words=$2
-  shift 2
-  (cd "$work" && "$slidesim" -q --check "$@" >"$name.out" 2>"$name.err")
-  local got=$?
-  [ "$got" = 1 ] || { fail "$name: exit status $got, expected 1: $(cat "$work/$name.err")"; return; }
-  grep -qF -- "$words" "$work/$name.err" || fail "$name: the message lacks '$words': $(cat "$work/$name.err")"
-}
-refuse outside 'radii(3) = 12.0 is not allowed: lies outside the bounds of every radius variable' \
+check_refused outside 'radii(3) = 12.0 is not allowed: lies outside the bounds of every radius variable' \
   --set 'catalogue%radii=3,4,12' "$input"
-refuse not_a_variable "no design variable of &design_elements has parameter = 'angle'" \
+check_refused not_a_variable "no design variable of &design_elements has parameter = 'angle'" \
   --set 'catalogue%angle_step_deg=15' "$input"
-refuse no_values 'design variable 3 (element 3 slope) needs its allowed values: give slopes_deg or slope_step_deg' \
+check_refused no_values 'design variable 3 (element 3 slope) needs its allowed values: give slopes_deg or slope_step_deg' \
   --unset catalogue%slope_step_deg "$input"
-refuse not_increasing 'radii(3) = 4.0 is not allowed: must exceed radii(2) = 5.0' --set 'catalogue%radii=3,5,4' "$input"
-refuse list_and_step 'give radii or radius_step, not both' --set 'catalogue%radius_step=1' "$input"
-refuse no_value_inside 'holds no value inside the bounds 4 … 12 deg of design variable 3' \
+check_refused not_increasing 'radii(3) = 4.0 is not allowed: must exceed radii(2) = 5.0' --set 'catalogue%radii=3,5,4' "$input"
+check_refused list_and_step 'give radii or radius_step, not both' --set 'catalogue%radius_step=1' "$input"
+check_refused no_value_inside 'holds no value inside the bounds 4 … 12 deg of design variable 3' \
   --set 'catalogue%slope_step_deg=13' "$input"
-refuse empty '&catalogue is empty' --unset catalogue%radii --unset catalogue%slope_step_deg "$input"
-refuse wrong_parameter 'element 1 is a straight, whose radius is not a design variable (a radius: curve, helix, bowl, funnel, drop)' \
+check_refused empty '&catalogue is empty' --unset catalogue%radii --unset catalogue%slope_step_deg "$input"
+check_refused wrong_parameter 'element 1 is a straight, whose radius is not a design variable (a radius: curve, helix, bowl, funnel, drop)' \
   --set 'design_elements%element=1,4,3' "$input"
-refuse start_outside 'must hold the start value 4 m of element 2' --set 'design_elements%lower=4.5,3,4' "$input"
-refuse out_of_range 'the slope must lie in [-60, 60] deg (the range of &catalogue slopes_deg)' --set 'design_elements%upper=8,8,70' "$input"
-refuse no_element 'must be the number of an element of &slide_elements, 1 to n_elements = 6' \
+check_refused start_outside 'must hold the start value 4 m of element 2' --set 'design_elements%lower=4.5,3,4' "$input"
+check_refused out_of_range "upper(3) = 70.0 is not allowed: element 3 is a straight, and a straight's slope must lie in [-45, 45]" \
+  --set 'design_elements%upper=8,8,70' "$input"
+check_refused no_element 'must be the number of an element of &slide_elements, 1 to n_elements = 6' \
   --set 'design_elements%element=2,9,3' "$input"
-refuse twice 'the radius of element 2 is already design variable 1' --set 'design_elements%element=2,2,3' "$input"
-refuse points 'n_points = 9 is not allowed: the design is the element chain of &slide_elements' \
+check_refused twice 'the radius of element 2 is already design variable 1' --set 'design_elements%element=2,2,3' "$input"
+check_refused points 'n_points = 9 is not allowed: the design is the element chain of &slide_elements' \
   --set 'optimize%n_points=9' "$input"
-refuse few_rides 'give at least 2 rides for 3 design variables' --set 'optimize%start_angles_deg=0' "$input"
+check_refused few_rides 'give at least 2 rides for 3 design variables' --set 'optimize%start_angles_deg=0' "$input"
 # a catalogue without an element design (and its elements)
 sed '/^&design_elements/,/^\//d; /^&slide_elements/,/^\//d' "$input" >"$work/no_design.nml"
-refuse no_design '&catalogue is not used: an optimisation of element parameters needs &design_elements' \
+check_refused no_design '&catalogue is not used: an optimisation of element parameters needs &design_elements' \
   "$work/no_design.nml"
 sed '/^&slide_elements/,/^\//d' "$input" >"$work/no_chain.nml"
-refuse no_chain '&design_elements varies the elements of &slide_elements, which is missing' "$work/no_chain.nml"
+check_refused no_chain '&design_elements varies the elements of &slide_elements, which is missing' "$work/no_chain.nml"
 [ "$failures" = 0 ]

@@ -51,6 +51,9 @@ refused child_too_small "&sled: scales(2) = 0.4 is not allowed" \
   "&sled vehicle = 'double_ring', riders = 2, scales = 1.0, 0.4, $start /"
 refused three_scales "&sled: scales" \
   "&sled vehicle = 'double_ring', riders = 2, scales = 1.0, 0.8, 0.7, $start /"
+# a subscript beyond the riders names the index given (was "index 1 must lie in [1, 1]")
+refused scales_index "&sled: scales(2): the subscript is not allowed: index 2 of scales lies outside [1, 1] (riders = 1)" \
+  "&sled vehicle = 'mat', scales(2) = 0.8, $start /"
 refused scale_unused "&sled: scale = 0.9 is not allowed: scales gives every rider's size (scale is for those it does not give)" \
   "&sled vehicle = 'double_ring', riders = 2, scale = 0.9, scales = 1.0, 0.6, $start /"
 # the width check follows the input's sizes: the half-pipe slide is 4 m

@@ -1,5 +1,5 @@
 !> Where the curve-entry term of (4.7) takes more of the water's speed than a
-!> splash could (water_curve_entry splash_bends, splash_note), on recorded
+!> splash could (water_curve_entry splash_bends, splash_note; curve_entry_note), on recorded
 !> curvatures of known shape: a bump chi = c sin^2(pi (s - s0)/L) between two
 !> straights rises by c and turns the centreline by c L/2 (the trapezoid rule
 !> is exact to rounding for it over the whole bump, sampled every 0.01 m);
@@ -19,13 +19,15 @@
 !>   counts (turn = 0.125 rad, not the 1 rad of the whole), and the rise is
 !>   the inner one's;
 !> - the note names every place (numbers below 1 with their 0) and is
-!>   empty without one.
+!>   empty without one;
+!> - curve_entry_note (a loss over 50 %) writes its rise and places below
+!>   1 with their 0.
 program test_water_splash
   use base_kinds, only: wp
   use base_constants, only: pi
   use testing, only: check, check_close, finish_tests
   use water_series, only: water_series_t
-  use water_curve_entry, only: curve_entry_t, splash_bends, splash_note
+  use water_curve_entry, only: curve_entry_t, splash_bends, splash_note, curve_entry_note
   implicit none (type, external)
   real(wp), parameter :: f3 = 0.979822_wp, h = 0.01_wp
   type(curve_entry_t), allocatable :: places(:)
@@ -52,6 +54,13 @@ program test_water_splash
   note = splash_note(s, f3)
   call check(index(note, 'at arc length 3.00 to 5.00 m (6.6 % in a bend of 4.0 deg, a splash 0.2 %)') > 0, &
              'a 4 deg bend: '//note)
+
+  ! curve_entry_note (the term takes 54 %, over its 50 %) over a bump of 0.8 1/m at 0.25 m: numbers below
+  ! 1 with their 0 (5aceca2; before it "rises by .800 1/m from arc length .25 to .50 m")
+  s = bumps([0.25_wp], [0.5_wp], [0.8_wp], 0.0_wp, 0.0_wp, 2.0_wp)
+  note = curve_entry_note(s, f3)
+  call check(index(note, 'the centreline''s curvature rises by 0.800 1/m from arc length 0.25 to 0.50 m: ') == 1 &
+             .and. index(note, 'alone takes 54 % of the water''s speed') > 0, 'the curve-entry note: '//note)
 
   ! the same rise over 10 m (turn 1.5 rad) is within a splash; over 4 m (0.6 rad) not
   s = bumps([2.0_wp, 20.0_wp], [10.0_wp, 4.0_wp], [0.3_wp, 0.3_wp], 0.0_wp, 0.0_wp, 30.0_wp)

@@ -9,6 +9,9 @@
 #             from the root) with those &rider limits into $work/NAME.h5,
 #             .json (--summary-json), .out and .err, NAME the input's base
 #             name, and checks its exit status 0 ($got)
+#   check_refused NAME WORDS ARGS...   `slidesim -q --check ARGS` (run in
+#             $work) ends with exit status 1 (bad input) and a message on
+#             stderr holding WORDS ($work/NAME.err)
 # The caller sets slidesim (the command) first.
 set -u
 root=$(pwd)
@@ -26,4 +29,12 @@ ride_with_limits() {
     --set "rider%limit_min=$4" --set "rider%limit_max=$5" \
     "$1" >"$work/$name.out" 2>"$work/$name.err"); got=$?
   check '[ $got = 0 ]' "$name: exit status $got ($(cat "$work/$name.err"))"
+}
+
+check_refused() {
+  local name=$1 words=$2 got
+  shift 2
+  (cd "$work" && "$slidesim" -q --check "$@" >"$name.out" 2>"$name.err"); got=$?
+  check '[ $got = 1 ]' "$name: exit status $got, expected 1: $(cat "$work/$name.err")"
+  check 'grep -qF -- "$words" "$work/$name.err"' "$name: the message lacks '$words': $(cat "$work/$name.err")"
 }
