@@ -16,7 +16,7 @@ module geometry_differential
   private
   public :: fundamental_forms_t, fundamental_forms
   public :: unit_normal, first_form, second_form, gauss_curvature, mean_curvature, &
-            principal_curvatures
+            principal_curvatures, radii_towards
 
   !> Everything at one surface point (needs a point of order >= 2).
   type :: fundamental_forms_t
@@ -103,4 +103,26 @@ contains
     ff%k1 = ff%mean + disc
     ff%k2 = ff%mean - disc
   end function fundamental_forms
+
+  !> The principal radii of curvature (m) whose centres of curvature lie on
+  !> the side of the surface that `side` points to (any vector off the
+  !> tangent plane): 1/k for each principal curvature k bending the surface
+  !> that way; huge where it bends away or not at all (or the point is
+  !> degenerate). A point at height h along that side's normal is a focal
+  !> point of the surface where h equals one of them: the map (u, v, h) ->
+  !> r + h n is singular there (its Jacobian det(I - h S)).
+  pure function radii_towards(p, side) result(rho)
+    type(surface_point_t), intent(in) :: p
+    real(wp), intent(in) :: side(3)
+    real(wp) :: rho(2), k(2)
+    type(fundamental_forms_t) :: ff
+    integer :: i
+    rho = huge(1.0_wp)
+    ff = fundamental_forms(p)
+    if (.not. ff%regular) return
+    k = [ff%k1, ff%k2]*sign(1.0_wp, dot_product(ff%normal, side))
+    do i = 1, 2
+      if (k(i) > 0) rho(i) = 1/k(i)
+    end do
+  end function radii_towards
 end module geometry_differential

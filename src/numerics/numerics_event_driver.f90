@@ -73,6 +73,7 @@ module numerics_event_driver
     procedure :: handle_event => default_handle_event
     procedure :: progress => default_progress
     procedure :: diagnose => default_diagnose
+    procedure :: stiffness_may_cause => default_stiffness_may_cause
   end type event_system_t
 
   abstract interface
@@ -208,6 +209,18 @@ contains
     end associate
     text = ''
   end function default_diagnose
+
+  !> Whether stiffness may be what makes the model hard to integrate at
+  !> (t, y), so that method = 'bdf' may help (the default: it may). A model
+  !> whose diagnose names a cause BDF cannot mend (a singular coordinate)
+  !> says no: the message then gives that cause alone.
+  logical function default_stiffness_may_cause(self, t, y) result(may)
+    class(event_system_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    associate (unused => self, unused_t => t, unused_y => y)
+    end associate
+    may = .true.
+  end function default_stiffness_may_cause
 
   !> Runs `system` from (t_start, y0). Returns with status ok when the run
   !> reached t_end or an event stopped it (result%outcome says which); with
@@ -392,14 +405,17 @@ contains
       end if
     end subroutine check_runaway
 
-    !> What the model knows about the trouble at (t, y), and for Adams the
-    !> stiffness hint.
+    !> What the model knows about the trouble at (t, y), and the stiffness
+    !> hint where BDF may help: the run is Adams and the model does not rule
+    !> stiffness out (stiffness_may_cause).
     function hint() result(text)
       character(len=:), allocatable :: text, stiff
       stiff = ''
-      if (options%ode%method == ODE_ADAMS) stiff = 'the model looks stiff (for example bodies at rest '// &
-        'under Coulomb friction): use method = ''bdf'' in &solver'
       text = system%diagnose(t, y)
+      if (options%ode%method == ODE_ADAMS) then
+        if (system%stiffness_may_cause(t, y)) stiff = 'the model looks stiff (for example bodies at rest '// &
+          'under Coulomb friction): use method = ''bdf'' in &solver'
+      end if
       if (len(text) > 0 .and. len(stiff) > 0) then
         text = '; '//text//'; if not that, '//stiff
       else if (len(text) + len(stiff) > 0) then

@@ -37,6 +37,12 @@
 !> the double ring in the bowl) the same open contacts go on in the other
 !> build (a switch as a take-off's, docs/vehicles.md).
 !>
+!> An open contact's end is placed by its foot point and its lift along the
+!> normal there, a chart singular at a centre of curvature of the surface
+!> (a tube's axis): a run whose steps collapse there fails by the runaway
+!> guard, and diagnose says so (focal_note; stiffness_may_cause: BDF does
+!> not help). Not built: a chart without a foot point.
+!>
 !> The ride itself, stretch by stretch between the switches (drive_vehicle,
 !> switch_build, press_or_open, the full layout's records), is the submodule
 !> rider_vehicle_flight_stretches; this module holds the integration's
@@ -46,7 +52,8 @@ module rider_vehicle_flight
   use base_text, only: format_short
   use base_vector, only: cross
   use base_status, only: status_t, prefix_status
-  use geometry_surface, only: surface_t
+  use geometry_surface, only: surface_t, surface_point_t
+  use geometry_differential, only: radii_towards
   use geometry_slide_query, only: slide_surface_t
   use numerics_event_driver, only: driver_options_t, driver_result_t, EVENT_STOP, EVENT_RESTART
   use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
@@ -97,7 +104,7 @@ module rider_vehicle_flight
     logical :: opened(2) = .false.       ! the gap has opened beyond opening_gap
     type(vehicle_t) :: vehicle           ! its landing law
     real(wp) :: gravity = 0              ! m/s^2, |g|
-    class(slide_surface_t), allocatable :: slide   ! where: arc lengths (none: the rear's u)
+    class(surface_t), allocatable :: ground  ! the surface ridden (a slide: arc lengths, else the rear's u)
     type(ride_flights_t) :: flights
     integer :: switch = SWITCH_NONE, switch_contact = 0, quick_landings = 0
     real(wp) :: switch_t = 0, take_off_time(2) = 0
@@ -112,6 +119,8 @@ module rider_vehicle_flight
     procedure :: root_count => flight_root_count
     procedure :: roots => flight_roots
     procedure :: handle_event => flight_handle_event
+    procedure :: diagnose => flight_diagnose
+    procedure :: stiffness_may_cause => flight_stiffness_may_cause
   end type vehicle_flight_ode_t
 
   interface
@@ -138,6 +147,14 @@ module rider_vehicle_flight
       real(wp), allocatable, intent(inout) :: y(:)
       type(status_t), intent(inout) :: status
     end subroutine press_or_open
+
+    !> Contact c's foot point's arc length on a slide (else its u), the
+    !> positions set.
+    module function where_foot(self, c) result(s)
+      class(vehicle_flight_ode_t), intent(in) :: self
+      integer, intent(in) :: c
+      real(wp) :: s
+    end function where_foot
   end interface
 
 contains
@@ -190,10 +207,7 @@ contains
     end associate
     sys%vehicle = v
     sys%gravity = norm2(d%params%gravity)
-    select type (surface)
-    class is (slide_surface_t)
-      allocate (sys%slide, source=surface)
-    end select
+    allocate (sys%ground, source=surface)
     sys%flights%watched = .true.
     sys%history = ''
   end subroutine build_vehicle_flight
@@ -306,6 +320,74 @@ contains
     c = solve_columns(work, self%heading, self%point(2), self%foot(2))
     margin = c(self%solved) - solve_ratio*c(3 - self%solved)
   end function solve_margin
+
+  !> For a run that fails by its step count: the mechanism's notes, then
+  !> each open contact's end near a centre of curvature (focal_note).
+  function flight_diagnose(self, t, y) result(text)
+    class(vehicle_flight_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    character(len=:), allocatable :: text, note
+    integer :: k
+    text = self%mechanism_ode_t%diagnose(t, y)   ! the positions at y set, where they can be
+    if (.not. self%work%converged) return
+    do k = 1, 2
+      note = focal_note(self, k)
+      if (len(note) == 0) cycle
+      if (len(text) > 0) text = text//'; '
+      text = text//note
+    end do
+  end function flight_diagnose
+
+  !> Stiffness may be the trouble unless an open contact's end is at a
+  !> centre of curvature (focal_note): BDF does not mend a singular chart.
+  logical function flight_stiffness_may_cause(self, t, y) result(may)
+    class(vehicle_flight_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    type(status_t) :: st
+    may = .true.
+    associate (unused_t => t)
+    end associate
+    self%cached = .false.
+    self%rhs_cached = .false.
+    call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), st)
+    if (.not. st%ok()) return
+    may = len(focal_note(self, 1)) == 0 .and. len(focal_note(self, 2)) == 0
+  end function flight_stiffness_may_cause
+
+  !> Where open contact c's end (positions set) is within 1e-3 of a
+  !> principal radius of curvature of the surface at its foot point, on its
+  !> side: a focal point, where the open contact's coordinates (the foot
+  !> point (u, v) and the lift along the normal there: p = r + h n) are
+  !> singular (det(I - h S) = 0): passing it the foot point swings round the
+  !> centre of curvature (by half a turn across a tube's axis), and the
+  !> steps shrink without end. Not built: a chart without a foot point for
+  !> an end that far off the slide. '' elsewhere (and for a closed contact).
+  function focal_note(self, c) result(text)
+    class(vehicle_flight_ode_t), intent(in) :: self
+    integer, intent(in) :: c
+    character(len=:), allocatable :: text
+    real(wp), parameter :: near = 1e-3_wp
+    type(surface_point_t) :: p
+    type(status_t) :: st
+    real(wp) :: h, rho(2), distance
+    text = ''
+    if (.not. btest(self%open_mask, c - 1) .or. .not. allocated(self%ground)) return
+    associate (m => self%mechanism, w => self%work)
+      call self%ground%evaluate(w%scalars(m%scalar_index(trim(merge('u ', 'u2', c == 1))))%q, &
+                                w%scalars(m%scalar_index(trim(merge('v ', 'v2', c == 1))))%q, 2, p, st)
+      if (.not. st%ok()) return
+      h = point_gap(w, self%point(c), self%foot(c))
+      rho = radii_towards(p, w%frames(self%foot(c))%rot(:, 3))
+    end associate
+    distance = minval(abs(rho - h))
+    if (.not. distance < near*minval(rho)) return
+    text = 'the '//trim(vehicle_contact_names(c))//' contact''s end flies '//format_short(distance)// &
+      ' m from a centre of curvature of the surface below it (its lift '//format_short(h)//' m, the radius of '// &
+      'curvature '//format_short(minval(rho))//' m at arc length '//format_short(where_foot(self, c))// &
+      ' m), where the coordinates of an open contact (its foot point and its lift along the normal there) are '// &
+      'singular: passing it the foot point swings round (not built: an open end at a centre of curvature of '// &
+      'the slide; method = ''bdf'' does not help)'
+  end function focal_note
 
   !> The mechanism's events; a lift-off of a contact asks for its take-off
   !> (a stop, then the switch); an open contact's gap root: it opened (watch

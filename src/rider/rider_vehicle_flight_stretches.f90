@@ -220,18 +220,17 @@ contains
   !> its u).
   real(wp) function where_now(self) result(s)
     class(vehicle_flight_ode_t), intent(in) :: self
-    s = self%work%scalars(self%full(1))%q
-    if (allocated(self%slide)) s = self%slide%arc_length(s)
+    s = where_foot(self, 1)
   end function where_now
 
-
-  !> Contact c's foot point's arc length on a slide (else its u).
-  real(wp) function where_foot(self, c) result(s)
-    type(vehicle_flight_ode_t), intent(in) :: self
-    integer, intent(in) :: c
+  module procedure where_foot
     s = self%work%scalars(self%mechanism%scalar_index(trim(merge('u ', 'u2', c == 1))))%q
-    if (allocated(self%slide)) s = self%slide%arc_length(s)
-  end function where_foot
+    if (.not. allocated(self%ground)) return
+    select type (g => self%ground)
+    class is (slide_surface_t)
+      s = g%arc_length(s)
+    end select
+  end procedure where_foot
 
   !> The full layout's state [q(N_FULL), q'(N_FULL), W] at state y of the
   !> build in use, its positions and velocities set (an evaluation at y).

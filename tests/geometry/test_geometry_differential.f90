@@ -9,7 +9,7 @@ program test_geometry_differential
   use geometry_placed_surface, only: placed_surface_t
   use geometry_differential, only: fundamental_forms_t, fundamental_forms, unit_normal, &
                                    first_form, second_form, gauss_curvature, mean_curvature, &
-                                   principal_curvatures
+                                   principal_curvatures, radii_towards
   use testing, only: check, check_close, check_close_array, finish_tests
   implicit none (type, external)
 
@@ -56,6 +56,9 @@ program test_geometry_differential
     call check_close(ff%mean, -1/radius, rtol, atol, 'sphere H = -1/R' // at)
     call check_close(ff%k1, -1/radius, 0.0_wp, 1e-6_wp, 'sphere k1' // at)  ! umbilic: sqrt of rounding ~1e-8
     call check_close(ff%k2, -1/radius, 0.0_wp, 1e-6_wp, 'sphere k2' // at)
+    call check_close_array(radii_towards(p, -p%r), [radius, radius], 1e-6_wp, 0.0_wp, &
+                           'sphere radii of curvature inside = R' // at)
+    call check(all(radii_towards(p, p%r) == huge(1.0_wp)), 'sphere no centre of curvature outside' // at)
     call check_close_array(first_form(p), [(radius*cos(v))**2, 0.0_wp, radius**2], rtol, atol, &
                            'sphere E, F, G' // at)
     call check_close_array(second_form(p), [-radius*cos(v)**2, 0.0_wp, -radius], rtol, atol, &
@@ -84,6 +87,14 @@ program test_geometry_differential
     call check_close(ff%mean, 1/(2*radius), rtol, atol, 'cylinder H = 1/(2R)' // at)
     call check_close(ff%k1, 1/radius, rtol, atol, 'cylinder k1 = 1/R' // at)
     call check_close(ff%k2, 0.0_wp, rtol, atol, 'cylinder k2 = 0' // at)
+    ! its centres of curvature: on the axis, R inside (towards the axis, the
+    ! side given by any vector off the tangent plane); none outside, none
+    ! along the straight generator (a radius beyond 1e10 R: k2 is 0 to
+    ! rounding)
+    call check_close(minval(radii_towards(p, -p%r + [0.0_wp, 0.0_wp, 7.0_wp])), radius, rtol, atol, &
+                     'cylinder radius of curvature inside = R' // at)
+    call check(maxval(radii_towards(p, -p%r)) > 1e10_wp*radius, 'cylinder straight along its axis' // at)
+    call check(minval(radii_towards(p, p%r)) > 1e10_wp*radius, 'cylinder no centre of curvature outside' // at)
 
     ! Paraboloids, graphs z = f(u, v): K = (f_uu f_vv - f_uv^2)/(1 + f_u^2 + f_v^2)^2,
     ! H = ((1 + f_v^2) f_uu + (1 + f_u^2) f_vv)/(2 (1 + f_u^2 + f_v^2)^(3/2)).
