@@ -98,6 +98,7 @@ module kinetostatics_mechanism_ode
     procedure :: record => mechanism_record
     procedure :: handle_event => mechanism_handle_event
     procedure :: diagnose => mechanism_diagnose
+    procedure :: stiffness_may_cause => mechanism_stiffness_may_cause
     procedure :: positions_at
   end type mechanism_ode_t
 
@@ -138,15 +139,16 @@ contains
   !> For a run that fails by its step count: the contact points at (t, y) that
   !> lie near a singular point of their surface's parametrisation (an
   !> ellipsoid's pole, an apex: |r_u x r_v| below 1e-2 (|r_u|^2 + |r_v|^2)),
-  !> where the rates of (u, v) grow without bound and the steps shrink.
+  !> where the rates of (u, v) grow without bound and the steps shrink; and
+  !> the one-sided contacts whose normal force has grown without bound (a
+  !> singular, conformal contact whose pole the steps close in on without
+  !> passing it, so that no lift-off root fires: unbounded_normals).
   function mechanism_diagnose(self, t, y) result(text)
     class(mechanism_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
     character(len=:), allocatable :: text, note
     type(status_t) :: st
     integer :: k
-    associate (unused => t)
-    end associate
     text = ''
     self%cached = .false.
     self%rhs_cached = .false.
@@ -158,7 +160,60 @@ contains
       if (len(text) > 0) text = text//'; '
       text = text//note
     end do
+    note = unbounded_normals(self, t, y)
+    if (len(note) > 0 .and. len(text) > 0) text = text//'; '
+    text = text//note
   end function mechanism_diagnose
+
+  !> Stiffness may be the trouble unless a normal force has grown without
+  !> bound (a pole of the dynamics: BDF's steps close in on it the same).
+  logical function mechanism_stiffness_may_cause(self, t, y) result(may)
+    class(mechanism_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    may = len(unbounded_normals(self, t, y)) == 0
+  end function mechanism_stiffness_may_cause
+
+  !> The one-sided contacts whose |N| at (t, y) exceeds 1/lift_off_tolerance
+  !> times the largest the contact carried at the start and the outputs
+  !> before (check_lift_off's scale: a lift-off's N is within
+  !> lift_off_tolerance of it, a pole's 1e3 times and more), in words; empty
+  !> if none, or if the dynamics cannot be evaluated there.
+  function unbounded_normals(self, t, y) result(text)
+    class(mechanism_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    character(len=:), allocatable :: text, which
+    type(status_t) :: st
+    integer :: f, n, k, j, count_unbounded
+    text = ''
+    if (.not. allocated(self%normal_reference)) return
+    f = self%mechanism%f
+    n = f + self%mechanism%ns
+    self%cached = .false.
+    self%rhs_cached = .false.
+    call self%mechanism%dynamics(self%work, t, y(1:f), y(f + 1:n), self%work_ydot(1:n - f), st)
+    self%cached = .false.
+    self%rhs_cached = .false.
+    if (.not. st%ok()) return
+    which = ''
+    count_unbounded = 0
+    j = 0
+    associate (m => self%mechanism)
+      do k = 1, size(m%contacts)
+        if (.not. m%contacts(k)%one_sided) cycle
+        j = j + 1
+        if (.not. self%normal_reference(j) > 0) cycle
+        if (abs(self%work%normal(k)) <= self%normal_reference(j)/lift_off_tolerance) cycle
+        if (count_unbounded > 0) which = which//', '
+        which = which//''''//m%contacts(k)%name//''' (N = '//format_short(self%work%normal(k))// &
+          ' N, at most '//format_short(self%normal_reference(j))//' N before)'
+        count_unbounded = count_unbounded + 1
+      end do
+    end associate
+    if (count_unbounded == 0) return
+    text = 'the normal force'//trim(merge('s of contacts', ' of contact  ', count_unbounded > 1))//' '//which// &
+      trim(merge(' grow  ', ' grows ', count_unbounded > 1))//' unbounded at t = '//format_short(t)// &
+      ' s: the contact is becoming singular, not a lift-off; '//singular_advice
+  end function unbounded_normals
 
   integer function state_size(self) result(n)
     class(mechanism_ode_t), intent(in) :: self
