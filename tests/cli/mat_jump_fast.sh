@@ -16,7 +16,8 @@
 # energy of the whole mat in each flight (both contacts open: dry, no
 # friction, no air drag) stays its value at the flight's start to 1e-8 of
 # the largest kinetic energy there (rtol 1e-10 per step over ~0.5 s: seen
-# 3.3e-9; a missing force or term would be O(1): gravity alone adds
+# 3.3e-9 in Debug, 7.8e-9 in Release, the bound's nearest; a missing force
+# or term would be O(1): gravity alone adds
 # 1400 J of kinetic energy in the first flight, 5661 -> 7061 J).
 slidesim=$1
 . "$(dirname "$0")/support/checks.sh"
