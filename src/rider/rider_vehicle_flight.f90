@@ -84,9 +84,12 @@ module rider_vehicle_flight
 
   !> The vehicle's integration with its four builds.
   type, extends(mechanism_ode_t) :: vehicle_flight_ode_t
-    type(mechanism_t) :: builds(0:3)
-    type(mechanism_t) :: yaw_builds(0:1)    ! masks 0, 1 with the front's closure solving the heading
-    type(mechanism_t) :: held(1:2)          ! masks 1, 2 with the roll held: the last open contact's landing
+    ! allocatable, not fixed-size: for a fixed-size array of mechanism_t gfortran
+    ! writes the type's finalizer element by element (4.2 MB of code at -O0; 200 s
+    ! of -O3 compile here and again in every type that holds this one)
+    type(mechanism_t), allocatable :: builds(:)       ! masks 0..3
+    type(mechanism_t), allocatable :: yaw_builds(:)   ! masks 0, 1 with the front's closure solving the heading
+    type(mechanism_t), allocatable :: held(:)         ! masks 1, 2 with the roll held: the last open contact's landing
     type(mechanism_t) :: held_yaw           ! mask 1 solving the heading, the roll held
     integer :: open_mask = 0
     integer :: solved = SOLVE_PITCH         ! the build in use's (masks 0, 1)
@@ -171,6 +174,9 @@ contains
     type(water_field_t), intent(in), optional, target :: water
     real(wp), allocatable :: q_open(:), qd_open(:)
     integer :: mask, k
+    if (.not. allocated(sys%builds)) allocate(sys%builds(0:3))
+    if (.not. allocated(sys%yaw_builds)) allocate(sys%yaw_builds(0:1))
+    if (.not. allocated(sys%held)) allocate(sys%held(1:2))
     if (.not. status%ok()) return
     call build_vehicle_model(v, d, surface, sys%held_yaw, q_open, qd_open, status, water, lift=.true., &
                              open=[.true., .false.], solve_yaw=.true.)
