@@ -68,6 +68,10 @@ module geometry_slide_elements
   private
   public :: slide_element_t, element_chain_curve_t, new_element_chain, slide_points
   public :: element_kinds
+  !> The steepest slope of a straight, curve, runout, funnel, patch or helix
+  !> (only a drop is steeper), the one limit the input tables check too; its
+  !> tangent exact for the helix's drop per horizontal length.
+  real(wp), parameter, public :: max_element_slope_deg = 45, max_element_slope_tan = 1
 
   character(len=*), parameter :: element_kinds(8) = [character(len=8) :: 'straight', 'curve', 'helix', 'runout', &
     'drop', 'bowl', 'funnel', 'patch']
@@ -196,8 +200,8 @@ contains
             call fail('length must be > 0 m')
             return
           end if
-          if (.not. abs(e%slope_deg) < 60) then
-            call fail('slope must lie in (-60, 60) deg')
+          if (.not. abs(e%slope_deg) <= max_element_slope_deg) then
+            call fail('slope must lie in [-'//steepest()//', '//steepest()//'] deg (only a drop is steeper)')
             return
           end if
           len_h(i) = e%length
@@ -208,8 +212,8 @@ contains
             call fail('turning angle must lie in (0, 720] deg')
             return
           end if
-          if (.not. abs(e%slope_deg) < 60) then
-            call fail('slope must lie in (-60, 60) deg')
+          if (.not. abs(e%slope_deg) <= max_element_slope_deg) then
+            call fail('slope must lie in [-'//steepest()//', '//steepest()//'] deg (only a drop is steeper)')
             return
           end if
           len_h(i) = e%radius*e%angle_deg*pi/180
@@ -223,8 +227,8 @@ contains
           len_h(i) = two_pi*e%radius*e%turns
           c%kappa(i) = sgn/e%radius
           c%grad(i) = e%drop/len_h(i)
-          if (.not. abs(c%grad(i)) < tan(60*pi/180)) then
-            call fail('drop per horizontal length must correspond to a slope below 60 deg')
+          if (.not. abs(e%drop) <= max_element_slope_tan*len_h(i)) then
+            call fail('drop per horizontal length must correspond to a slope of at most '//steepest()//' deg')
             return
           end if
         case ('drop')
@@ -346,6 +350,11 @@ contains
       call set_status(status, STATUS_INVALID_INPUT, 'slide element ' // trim(idx) // ' (' // &
                       trim(elements(i)%kind) // '): ' // what)
     end subroutine fail
+
+    function steepest() result(text)
+      character(len=:), allocatable :: text
+      text = format_integer(nint(max_element_slope_deg))
+    end function steepest
   end function new_element_chain
 
   !> psi, kappa and its derivatives (k(0:2)), g and its derivatives (g(0:3)),

@@ -20,6 +20,7 @@ module io_element_table
   use io_namelist, only: nml_value_t, read_real_token, NUMBER_OK
   use io_input, only: read_text_file, format_real
   use geometry_drop_profile, only: drop_min_slope_deg, drop_max_slope_deg
+  use geometry_slide_elements, only: max_element_slope_deg, max_element_slope_tan
   implicit none (type, external)
   private
   public :: element_table_t, read_element_table, check_element, table_columns
@@ -248,8 +249,9 @@ contains
       if (len(variable) == 0 .and. .not. radius > 0) call set('radius', format_real(radius), &
         'a helix needs a radius > 0 (m)')
       if (len(variable) == 0 .and. .not. turns > 0) call set('turns', format_real(turns), 'a helix needs turns > 0')
-      if (len(variable) == 0 .and. abs(drop) > two_pi*radius*turns) call set('drop', format_real(drop), &
-        'the helix would be steeper than 45 deg (|drop| <= 2 pi radius turns)')
+      if (len(variable) == 0 .and. .not. abs(drop) <= max_element_slope_tan*(two_pi*radius*turns)) &
+        call set('drop', format_real(drop), 'the helix would be steeper than '//format_integer(nint(max_element_slope_deg))// &
+                 ' deg (|drop| <= 2 pi radius turns)')
     case ('drop')
       call unused(length, 'length'); call unused(angle_deg, 'angle_deg'); call unused(turns, 'turns')
       if (len(variable) == 0 .and. direction /= 'left') call set('direction', ''''//trim(direction)//'''', &
@@ -288,11 +290,12 @@ contains
         'a bowl needs the turns of its spiral > 0')
     end select
   contains
-    !> Only a drop is steeper than 45 deg.
+    !> Only a drop is steeper than max_element_slope_deg (the geometry's limit).
     subroutine gentle(slope)
       real(wp), intent(in) :: slope
-      if (len(variable) == 0 .and. .not. abs(slope) <= 45) call set('slope_deg', format_real(slope), &
-        'a '//trim(kind)//'''s slope must lie in [-45, 45] (deg; only a drop is steeper)')
+      if (len(variable) == 0 .and. .not. abs(slope) <= max_element_slope_deg) call set('slope_deg', &
+        format_real(slope), 'a '//trim(kind)//'''s slope must lie in [-'//format_integer(nint(max_element_slope_deg))// &
+        ', '//format_integer(nint(max_element_slope_deg))//'] (deg; only a drop is steeper)')
     end subroutine gentle
 
     subroutine unused(x, name)

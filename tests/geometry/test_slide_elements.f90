@@ -4,7 +4,8 @@
 !> between the transitions); turning angle and height loss preserved by the
 !> transitions; helix curvature R/(R^2 + c^2); sharp joints that change the
 !> curvature refused; tube partials on the element centerline; bad elements
-!> rejected with their index.
+!> rejected with their index; the steepest element (45 deg) built, a rounding
+!> steeper refused.
 program test_slide_elements
   use base_kinds, only: wp
   use base_constants, only: pi, two_pi
@@ -15,7 +16,7 @@ program test_slide_elements
   use geometry_cross_section, only: circle_section_t
   use geometry_tube, only: tube_surface_t, new_tube_surface
   use geometry_slide_elements, only: slide_element_t, element_chain_curve_t, new_element_chain, &
-                                     slide_points
+                                     slide_points, max_element_slope_deg, max_element_slope_tan
   use testing, only: check, check_close, check_close_array, finish_tests
   implicit none (type, external)
 
@@ -122,10 +123,42 @@ program test_slide_elements
   chain = new_element_chain(e, [0.0_wp, 0.0_wp, 0.0_wp], 0.0_wp, 1.0_wp, st)
   call check(st%code == STATUS_INVALID_INPUT .and. index(st%text(), 'element 3') > 0, &
              'unknown kind rejected: ' // st%text())
+  call steepest_elements()
 
   call finish_tests('test_slide_elements')
 
 contains
+
+  !> The one slope limit the input tables check too (io_element_table): a
+  !> straight or a curve at max_element_slope_deg (45) is built, a rounding
+  !> steeper is refused naming the range; a helix whose drop is exactly its
+  !> horizontal length (45 deg) is built, one a rounding steeper refused.
+  subroutine steepest_elements()
+    type(slide_element_t) :: one(1)
+    type(element_chain_curve_t) :: c
+    real(wp) :: run
+    call check(max_element_slope_deg == 45 .and. max_element_slope_tan == 1, 'the steepest element: 45 deg')
+    one(1) = slide_element_t(kind='straight', length=5.0_wp, slope_deg=-max_element_slope_deg)
+    c = new_element_chain(one, [0.0_wp, 0.0_wp, 10.0_wp], 0.0_wp, 0.0_wp, st)
+    call check(st%ok(), 'a straight at -45 deg is built: ' // st%text())
+    one(1)%slope_deg = nearest(max_element_slope_deg, 1.0_wp)
+    c = new_element_chain(one, [0.0_wp, 0.0_wp, 10.0_wp], 0.0_wp, 0.0_wp, st)
+    call check(st%code == STATUS_INVALID_INPUT .and. &
+               index(st%text(), 'element 1 (straight): slope must lie in [-45, 45] deg') > 0, &
+               'a straight a rounding steeper than 45 deg is refused: ' // st%text())
+    one(1) = slide_element_t(kind='curve', radius=5.0_wp, angle_deg=30.0_wp, slope_deg=50.0_wp)
+    c = new_element_chain(one, [0.0_wp, 0.0_wp, 10.0_wp], 0.0_wp, 0.0_wp, st)
+    call check(st%code == STATUS_INVALID_INPUT .and. index(st%text(), '[-45, 45] deg') > 0, &
+               'a curve at 50 deg is refused (the geometry allowed 60 before): ' // st%text())
+    run = two_pi*4.0_wp*1.5_wp
+    one(1) = slide_element_t(kind='helix', radius=4.0_wp, turns=1.5_wp, drop=run, direction='right')
+    c = new_element_chain(one, [0.0_wp, 0.0_wp, 10.0_wp], 0.0_wp, 0.0_wp, st)
+    call check(st%ok(), 'a helix at 45 deg is built: ' // st%text())
+    one(1)%drop = nearest(run, 1.0_wp)
+    c = new_element_chain(one, [0.0_wp, 0.0_wp, 10.0_wp], 0.0_wp, 0.0_wp, st)
+    call check(st%code == STATUS_INVALID_INPUT .and. index(st%text(), 'a slope of at most 45 deg') > 0, &
+               'a helix a rounding steeper than 45 deg is refused: ' // st%text())
+  end subroutine steepest_elements
 
   subroutine fd_tube()
     type(surface_point_t) :: q0, qu1, qu0, qv1, qv0
