@@ -44,7 +44,7 @@
 !> its normal force 0.
 module contact_closing
   use base_kinds, only: wp
-  use base_text, only: format_short
+  use base_text, only: format_short, format_integer
   use base_status, only: status_t, set_status, prefix_status, STATUS_DOMAIN
   use numerics_event_driver, only: driver_options_t, driver_result_t, drive, add_driver_result, DRIVE_EVENT_STOP, &
     DRIVE_FAILED, RECORD_EVENT

@@ -105,8 +105,77 @@ contains
     call move_alloc(self%point, flight%gap_point)
     call move_alloc(self%velocity, flight%gap_velocity)
     flight%series = self%series
-    flight%outcome = self%history
+    flight%outcome = collapse_repeats(self%history)
   end procedure phases_finish
+
+  !> The phases' outcomes ('; '-separated) with each run of sentences that
+  !> differ only in their first time ("t = 0.247352 s") written once, with
+  !> the run's first and last time and its count: a body landing again and
+  !> again on a carried body (ball_on_cart: seven landings) is one sentence,
+  !> not one per landing (/contact/impacts has each).
+  function collapse_repeats(history) result(text)
+    character(len=*), intent(in) :: history
+    character(len=:), allocatable :: text
+    character(len=*), parameter :: marker = achar(1)
+    character(len=:), allocatable :: sentence, key, time, run_key, run_sentence, first, last
+    integer :: start, length, repeats
+    text = ''
+    run_key = ''
+    run_sentence = ''
+    first = ''
+    last = ''
+    repeats = 0
+    start = 1
+    do while (start <= len(history))
+      length = index(history(start:), '; ') - 1
+      if (length < 0) length = len(history) - start + 1
+      sentence = history(start:start + length - 1)
+      start = start + length + 2
+      call split_time(sentence, key, time)
+      if (repeats > 0 .and. len(key) > 0 .and. key == run_key) then
+        repeats = repeats + 1
+        last = time
+        cycle
+      end if
+      call flush_run()
+      run_key = key
+      run_sentence = sentence
+      first = time
+      last = time
+      repeats = 1
+    end do
+    call flush_run()
+  contains
+    !> key: the sentence with its first "t = <number> s" replaced by the
+    !> marker ('' without one); time: that number.
+    subroutine split_time(sentence, key, time)
+      character(len=*), intent(in) :: sentence
+      character(len=:), allocatable, intent(out) :: key, time
+      integer :: i, j
+      key = ''
+      time = ''
+      i = index(sentence, 't = ')
+      if (i == 0) return
+      j = index(sentence(i + 4:), ' ')
+      if (j < 2) return
+      if (sentence(i + 4 + j - 1:min(len(sentence), i + 4 + j)) /= ' s') return
+      time = sentence(i + 4:i + 4 + j - 2)
+      key = sentence(:i + 3)//marker//sentence(i + 4 + j + 1:)
+    end subroutine split_time
+
+    subroutine flush_run()
+      integer :: k
+      if (repeats == 0) return
+      if (len(text) > 0) text = text//'; '
+      if (repeats == 1) then
+        text = text//run_sentence
+      else
+        k = index(run_key, marker)
+        text = text//run_key(:k - 1)//first//' .. '//last//' s ('//format_integer(repeats)//' times)'// &
+               run_key(k + 1:)
+      end if
+    end subroutine flush_run
+  end function collapse_repeats
 
   !> The units of join_series's united names: a's, then those of b's names
   !> not in a.

@@ -438,7 +438,7 @@ contains
     logical, intent(in), optional :: closed(:, :)   ! (contact, record): closed there (a flight's); absent: always
     type(summary_t) :: summary
     real(wp) :: e0, scale
-    integer :: n, k, i
+    integer :: n, k, i, events
     character(len=:), allocatable :: q, u, note
     n = s%n
     if (n < 1) return
@@ -453,7 +453,11 @@ contains
       call add_body_terms(summary, s, m)
       call add_contact_terms(summary, s, m, carried_bodies, closed)
       if (size(impacts) > 0) then
-        call summary%add_count('impacts', 'impacts', size(impacts), '(landings, /contact/impacts)')
+        ! one impact at several contacts (a landing on a carried body): a row each, at one time
+        events = 1 + count(impacts(2:)%time /= impacts(:size(impacts) - 1)%time)
+        note = '(landings, /contact/impacts)'
+        if (events < size(impacts)) note = '(landings; '//format_integer(size(impacts))//' rows of /contact/impacts)'
+        call summary%add_count('impacts', 'impacts', events, note)
         call summary%add('impact_speed_max', 'impact speed max', maxval(-impacts%normal_speed_before), 'm/s', &
                          'm/s (the fastest approach)')
         call summary%add('impact_energy_lost', 'impacts energy lost', sum(impacts%energy_lost), 'J')
