@@ -194,14 +194,16 @@ contains
             return
           end if
         end if
+        if (any(e%kind == [character(len=8) :: 'straight', 'runout', 'funnel', 'patch', 'curve'])) then
+          if (.not. abs(e%slope_deg) <= max_element_slope_deg) then
+            call fail('slope must lie in [-'//steepest()//', '//steepest()//'] deg (only a drop is steeper)')
+            return
+          end if
+        end if
         select case (e%kind)
         case ('straight', 'runout', 'funnel', 'patch')
           if (.not. e%length > 0) then
             call fail('length must be > 0 m')
-            return
-          end if
-          if (.not. abs(e%slope_deg) <= max_element_slope_deg) then
-            call fail('slope must lie in [-'//steepest()//', '//steepest()//'] deg (only a drop is steeper)')
             return
           end if
           len_h(i) = e%length
@@ -210,10 +212,6 @@ contains
         case ('curve')
           if (.not. (e%angle_deg > 0 .and. e%angle_deg <= 720)) then
             call fail('turning angle must lie in (0, 720] deg')
-            return
-          end if
-          if (.not. abs(e%slope_deg) <= max_element_slope_deg) then
-            call fail('slope must lie in [-'//steepest()//', '//steepest()//'] deg (only a drop is steeper)')
             return
           end if
           len_h(i) = e%radius*e%angle_deg*pi/180

@@ -132,6 +132,19 @@ module kinetostatics_mechanism_ode
       integer, intent(out) :: action
       type(status_t), intent(inout) :: status
     end subroutine mechanism_handle_event
+
+    !> The one-sided contacts j with select(j) whose |N| (self%work's, when
+    !> `evaluated`) exceeds `factor` times the largest they carried before
+    !> (normal_reference), named with both forces, and their count; every
+    !> selected one, named alone, when the dynamics could not be evaluated.
+    !> unbounded_normals' and check_lift_off's walk.
+    module subroutine contacts_beyond(self, select, factor, evaluated, which, count)
+      class(mechanism_ode_t), intent(in) :: self
+      logical, intent(in) :: select(:), evaluated
+      real(wp), intent(in) :: factor
+      character(len=:), allocatable, intent(out) :: which
+      integer, intent(out) :: count
+    end subroutine contacts_beyond
   end interface
 
 contains
@@ -183,7 +196,7 @@ contains
     real(wp), intent(in) :: t, y(:)
     character(len=:), allocatable :: text, which
     type(status_t) :: st
-    integer :: f, n, k, j, count_unbounded
+    integer :: f, n, count_unbounded
     text = ''
     if (.not. allocated(self%normal_reference)) return
     f = self%mechanism%f
@@ -194,21 +207,7 @@ contains
     self%cached = .false.
     self%rhs_cached = .false.
     if (.not. st%ok()) return
-    which = ''
-    count_unbounded = 0
-    j = 0
-    associate (m => self%mechanism)
-      do k = 1, size(m%contacts)
-        if (.not. m%contacts(k)%one_sided) cycle
-        j = j + 1
-        if (.not. self%normal_reference(j) > 0) cycle
-        if (abs(self%work%normal(k)) <= self%normal_reference(j)/lift_off_tolerance) cycle
-        if (count_unbounded > 0) which = which//', '
-        which = which//''''//m%contacts(k)%name//''' (N = '//format_short(self%work%normal(k))// &
-          ' N, at most '//format_short(self%normal_reference(j))//' N before)'
-        count_unbounded = count_unbounded + 1
-      end do
-    end associate
+    call contacts_beyond(self, self%normal_reference > 0, 1/lift_off_tolerance, .true., which, count_unbounded)
     if (count_unbounded == 0) return
     text = 'the normal force'//trim(merge('s of contacts', ' of contact  ', count_unbounded > 1))//' '//which// &
       trim(merge(' grow  ', ' grows ', count_unbounded > 1))//' unbounded at t = '//format_short(t)// &

@@ -511,30 +511,13 @@ contains
     integer, intent(in) :: fired(:)
     type(status_t), intent(inout) :: status
     type(status_t) :: st
-    integer :: f, n, k, j, count_singular
+    integer :: f, n, count_singular
     character(len=:), allocatable :: which
     if (.not. any(fired == -1)) return
     f = self%mechanism%f
     n = f + self%mechanism%ns
     call self%mechanism%dynamics(self%work, t, y(1:f), y(f + 1:n), self%work_ydot(1:n - f), st)
-    which = ''
-    count_singular = 0
-    j = 0
-    associate (m => self%mechanism)
-      do k = 1, size(m%contacts)
-        if (.not. m%contacts(k)%one_sided) cycle
-        j = j + 1
-        if (fired(j) /= -1) cycle
-        if (st%ok()) then
-          if (abs(self%work%normal(k)) <= lift_off_tolerance*self%normal_reference(j)) cycle
-        end if
-        if (count_singular > 0) which = which//', '
-        which = which//''''//m%contacts(k)%name//''''
-        if (st%ok()) which = which//' (N = '//format_short(self%work%normal(k))//' N, at most '// &
-          format_short(self%normal_reference(j))//' N before)'
-        count_singular = count_singular + 1
-      end do
-    end associate
+    call contacts_beyond(self, fired == -1, lift_off_tolerance, st%ok(), which, count_singular)
     if (count_singular == 0) return
     if (.not. st%ok()) then
       call set_status(status, STATUS_DOMAIN, 'the contact became singular: where the normal force of contact'// &
@@ -548,6 +531,30 @@ contains
         which//' are unbounded where they change sign, not a lift-off; '//singular_advice)
     end if
   end subroutine check_lift_off
+
+  !> The walk over the one-sided contacts of unbounded_normals and
+  !> check_lift_off (the interface in kinetostatics_mechanism_ode).
+  module procedure contacts_beyond
+    integer :: k, j
+    which = ''
+    count = 0
+    j = 0
+    associate (m => self%mechanism)
+      do k = 1, size(m%contacts)
+        if (.not. m%contacts(k)%one_sided) cycle
+        j = j + 1
+        if (.not. select(j)) cycle
+        if (evaluated) then
+          if (abs(self%work%normal(k)) <= factor*self%normal_reference(j)) cycle
+        end if
+        if (count > 0) which = which//', '
+        which = which//''''//m%contacts(k)%name//''''
+        if (evaluated) which = which//' (N = '//format_short(self%work%normal(k))//' N, at most '// &
+          format_short(self%normal_reference(j))//' N before)'
+        count = count + 1
+      end do
+    end associate
+  end procedure contacts_beyond
 
   !> Re-bases the chart of element k on the current pose and writes the new
   !> coordinates and speeds into y.
