@@ -154,14 +154,19 @@ contains
   !> impulse P_i, the tangential impulse's size, v-_i, v+_i and the energy it
   !> took, -P_i.(v-_i + v+_i)/2 (their sum the kinetic energy's fall);
   !> `tangent`, if present, the tangential impulses (3 x contacts, N s).
+  !> The contacts `no_slip` marks, if present (rolling contacts that carry
+  !> a body through the impact), hold their whole relative velocity at zero
+  !> while they push, no cone (resolve_impacts' no-slip rows; their mu
+  !> unused): the friction's way then, whatever the mu.
   subroutine collide_at_once(restitution, mu, normals, points_1, points_2, pair, bodies, impulse, tangential, &
-                             speed_before, speed_after, energy_lost, status, tangent)
+                             speed_before, speed_after, energy_lost, status, tangent, no_slip)
     real(wp), intent(in) :: restitution(:), mu(:), normals(:, :), points_1(:, :), points_2(:, :)
     integer, intent(in) :: pair(:, :)
     type(impact_body_t), intent(inout) :: bodies(0:)
     real(wp), intent(out) :: impulse(:), tangential(:), speed_before(:), speed_after(:), energy_lost(:)
     type(status_t), intent(inout) :: status
     real(wp), intent(out), optional :: tangent(:, :)
+    logical, intent(in), optional :: no_slip(:)
     type(impact_body_t) :: pushed(0:ubound(bodies, 1))
     real(wp) :: w(size(restitution), size(restitution))
     real(wp), allocatable :: a(:, :), rhs(:)
@@ -175,6 +180,12 @@ contains
     if (any(mu > 0)) then
       call with_friction()
       return
+    end if
+    if (present(no_slip)) then
+      if (any(no_slip)) then
+        call with_friction()
+        return
+      end if
     end if
     speed_before = [(normal_speed(bodies, i), i = 1, m)]
     do j = 1, m
@@ -231,7 +242,7 @@ contains
       end do
       if (.not. status%ok()) return
       full = (full + transpose(full))/2
-      call resolve_impacts(full, normals, v_before, restitution, mu, p, v_after, energy_lost, status)
+      call resolve_impacts(full, normals, v_before, restitution, mu, p, v_after, energy_lost, status, no_slip)
       if (.not. status%ok()) return
       do j = 1, m
         call push(bodies, j, p(:, j), status)

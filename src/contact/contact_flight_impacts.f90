@@ -114,7 +114,9 @@ contains
   !> balls, the contact between them and the floor's) (collide_at_once; a
   !> carrying contact's normal speed before is 0, its restitution 0: it
   !> stays closed or is pushed open, P >= 0 either way;
-  !> its impact_mu during the impact), each body with its free mass
+  !> its impact_mu during the impact; a rolling one no-slip: while it pushes
+  !> its whole relative velocity after is 0, no cone, else it opens with no
+  !> impulse), each body with its free mass
   !> properties: the carrying contacts' impulses are the impact's own, so a
   !> carried body meets a hit with its effective mass through its closed
   !> contacts (a ball resting on the floor hit from above passes the
@@ -128,10 +130,10 @@ contains
   !> from there. A row per contact (the energies summing to the kinetic
   !> energy's fall). A landing without restitution ends the run there (the
   !> input's choice, as in flight). Not built, the run failing here, saying
-  !> so: rolling carrying contacts, landings the impact does not join in
-  !> the same event (bodies neither carried nor hitting a carried one), a
-  !> carrying contact that would open without may_open, a rolling landed
-  !> contact that would close.
+  !> so: landings the impact does not join in the same event (bodies
+  !> neither carried nor hitting a carried one), a carrying contact that
+  !> would open without may_open, a rolling contact closed after it beside
+  !> another closed contact of its body_2 (a rolling loop).
   !> A contact between two bodies left slower than its close_speed closes
   !> as the ground's do: body_1 carries body_2 from there.
   module procedure impact_on_carried
@@ -142,7 +144,7 @@ contains
     real(wp), allocatable :: tangent(:, :)
     logical, allocatable :: closing(:), carrying(:), both(:), joined(:), rolls(:), second(:)
     logical :: involved(0:size(self%body_frame)), carried(0:size(self%body_frame))
-    character(len=:), allocatable :: why, carriers, head, left_open, hit
+    character(len=:), allocatable :: carriers, head, left_open, hit
     integer :: i, m, k, b
     ! the bodies of closed contacts (carried, or carrying another)
     carried = .false.
@@ -193,15 +195,10 @@ contains
       call add_outcome(self, head//' (no restitution given: the run ends at the landing)')
       return
     end if
-    why = ''
     if (any(lands .and. .not. joined)) then
-      why = 'other bodies landing in the same instant are not built'
-    else if (any(carrying .and. self%system%contacts%rolling)) then
-      why = 'an impact through a rolling contact is not built'
-    end if
-    if (len(why) > 0) then
       action = max(action, EVENT_STOP)
-      call add_outcome(self, head//' ('//why//'): the run ends here', not_built=.true.)
+      call add_outcome(self, head//' (other bodies landing in the same instant are not built): the run ends here', &
+                       not_built=.true.)
       return
     end if
     c = pack([(i, i = 1, size(lands))], both)
@@ -228,8 +225,10 @@ contains
     do k = 1, size(self%body_frame)
       if (involved(k)) bodies(k) = impact_body(self, k)
     end do
+    ! a rolling carrying contact holds its whole relative velocity at zero while it pushes (no cone)
+    rolls = self%system%contacts(c)%rolling
     call collide_at_once(e, self%system%contacts(c)%impact_mu, normals, points_1, points_2, pair, bodies, impulse, &
-                         tangential, before, after, lost, status, tangent)
+                         tangential, before, after, lost, status, tangent, no_slip=rolls .and. carrying(c))
     if (.not. status%ok()) return
     closing = after < close_speed
     if (any(carrying(c) .and. .not. closing .and. .not. self%system%contacts(c)%may_open)) then
@@ -239,9 +238,9 @@ contains
                        not_built=.true.)
       return
     end if
-    ! a landed rolling contact that closes carries its body_2 alone (a second closed contact that rolls, a loop, is
-    ! not built): its closing takes away its whole relative velocity
-    rolls = joined(c) .and. self%system%contacts(c)%rolling
+    ! a rolling contact closed after the impact carries its body_2 alone (a second closed contact beside one that
+    ! rolls, a loop, is not built): its closing takes away its whole relative velocity (a carrying one's is 0 already
+    ! where it held)
     if (any(closing)) then
       do i = 1, m
         call close_at_once(closing, normals, points_1, points_2, pair, bodies, impulse, after, lost, status, rolls, &
@@ -254,9 +253,9 @@ contains
     second = [(closing(i) .and. rolls(i) .and. count(closing .and. pair(2, :) == pair(2, i)) > 1, i = 1, m)]
     if (any(second)) then
       action = max(action, EVENT_STOP)
-      call add_outcome(self, head//': the impact would close '//landed_names(self, unpack(second, both, .false.))// &
-                       ', which rolls, with another contact of its body (a second closed contact that rolls is not '// &
-                       'built): the run ends here', not_built=.true.)
+      call add_outcome(self, head//': the impact would leave '//landed_names(self, unpack(second, both, .false.))// &
+                       ', which rolls, closed with another contact of its body (a second closed contact beside one '// &
+                       'that rolls is not built): the run ends here', not_built=.true.)
       return
     end if
     where (closing .and. rolls) tangential = norm2(tangent, dim=1)

@@ -35,6 +35,15 @@
 !> the law. Newton's restitution at several contacts with friction can give
 !> energy back; the energy's fall, -P.(v- + v+)/2, is checked and an impact
 !> that would raise it is refused.
+!>
+!> A no-slip contact (a rolling contact that carries a body through the
+!> impact, `no_slip`) has no cone: while it pushes it holds its whole
+!> relative velocity at zero after the impact (its normal and both
+!> tangential rows, W_ii P_i = -c_i with the others' impulses fixed, as a
+!> rolling contact's closing in contact_body_impact close_at_once); where
+!> that impulse would pull (n.P_i < 0) it opens with no impulse at all if
+!> its points then move apart, and otherwise (it would have to pull, or to
+!> slip, which it cannot) the impact is refused.
 module kinetostatics_point_impacts
   use base_kinds, only: wp
   use base_constants, only: two_pi
@@ -59,13 +68,18 @@ contains
   !> each contact's share of the energy lost, -P_i.(v-_i + v+_i)/2 (J; their
   !> sum the kinetic energy's fall). w: 3m x 3m, symmetric positive
   !> semidefinite, its diagonal blocks positive definite; normals unit.
-  subroutine resolve_impacts(w, normals, v_before, restitution, mu, impulse, v_after, energy_lost, status)
+  !> no_slip, if present, marks the no-slip contacts (their mu unused).
+  subroutine resolve_impacts(w, normals, v_before, restitution, mu, impulse, v_after, energy_lost, status, no_slip)
     real(wp), intent(in) :: w(:, :), normals(:, :), v_before(:, :), restitution(:), mu(:)
     real(wp), intent(out) :: impulse(:, :), v_after(:, :), energy_lost(:)
     type(status_t), intent(inout) :: status
+    logical, intent(in), optional :: no_slip(:)
     real(wp) :: shifted(3, size(mu)), c(3), p(3), change, largest
+    logical :: holds(size(mu))
     integer :: i, m, sweep
     m = size(mu)
+    holds = .false.
+    if (present(no_slip)) holds = no_slip
     impulse = 0
     v_after = v_before
     energy_lost = 0
@@ -89,7 +103,11 @@ contains
       do i = 1, m
         associate (rows => block(i))
           c = shifted(:, i) + matmul(w(rows, :), reshape(impulse, [3*m])) - matmul(w(rows, rows), impulse(:, i))
-          call contact_impulse(w(rows, rows), c, normals(:, i), mu(i), p, status)
+          if (holds(i)) then
+            call no_slip_impulse(w(rows, rows), c, normals(:, i), p, status)
+          else
+            call contact_impulse(w(rows, rows), c, normals(:, i), mu(i), p, status)
+          end if
         end associate
         if (.not. status%ok()) return
         change = max(change, maxval(abs(p - impulse(:, i))))
@@ -165,6 +183,30 @@ contains
     end if
     call slip_impulse(a, c, n, t1, t2, mu, angle0, p, status)
   end subroutine contact_impulse
+
+  !> A no-slip contact's impulse p (N s) where its velocity after is a p + c
+  !> (as contact_impulse's): sticking, a p + c = 0, where that pushes (n.p
+  !> >= 0, to the rounding of p); else none, where c moves it apart. A
+  !> contact that would have to pull fails: it can neither stick nor slip.
+  subroutine no_slip_impulse(a, c, n, p, status)
+    real(wp), intent(in) :: a(3, 3), c(3), n(3)
+    real(wp), intent(out) :: p(3)
+    type(status_t), intent(inout) :: status
+    real(wp) :: factored(3, 3)
+    integer :: ipiv(3)
+    factored = a
+    p = -c
+    call lu_factor(factored, ipiv, status)
+    if (status%ok()) call lu_solve(factored, ipiv, p, status)
+    if (.not. status%ok()) return
+    ! a stick whose normal impulse is 0 but for rounding (a push across the contact) holds
+    if (dot_product(n, p) >= -edge_rounding*epsilon(1.0_wp)*norm2(p)) return
+    p = 0
+    if (dot_product(n, c) >= 0) return
+    call set_status(status, STATUS_DOMAIN, 'impact at several contacts: a no-slip (rolling) contact would have '// &
+                    'to pull to hold, and it can neither slip nor move apart (normal speed '// &
+                    format_short(dot_product(n, c))//' m/s without it)')
+  end subroutine no_slip_impulse
 
   !> The slipping impulse: the direction s = cos(x) t1 + sin(x) t2 where
   !> the tangential velocity v_t = p_n d_t + c_t (d = a (n - mu s), p_n =

@@ -256,7 +256,25 @@ grep -qE "on_floor normal force in weights +1.0000 / 1.0000 of ball's weight" "$
     "$work/walled.out")"
 sed -e "s/walled.h5/walled_rolling.h5/" -e "s/velocity = 1, 0, 0/velocity = 1, 0, 0, angular_velocity = 0, 10, 0/" \
   -e "s/start = 'closed' \//start = 'closed', rolling = .true. \//" "$work/walled.nml" > "$work/walled_rolling.nml"
-run_case walled_rolling 2 "body 'ball' lands on 'on_wall' at t = 0.7 s while 'on_floor' carries it" \
-  'an impact through a rolling contact is not built' '(the results up to here are kept)'
+# the same ball rolling on the floor (a rolling carrying contact) into the wall: one impact at the wall and
+# the floor, the floor's no-slip rows in it (exit 2 before: "an impact through a rolling contact is not
+# built"): the ball pivots about its floor point, its effective mass 7 m/5 at the centre, the wall's
+# impulse (1 + e) (7 m/5) v = 0.504 N s, the floor's tangential (2/5) (1 + e) m v = 0.144 N s, the ball
+# rolling back at e v = 0.8 m/s (test_rolling_impact checks the closed form to 1e-9)
+run_case walled_rolling 0
+grep -qE "impacts +2 " "$work/walled_rolling.out" || fail "walled_rolling: the summary does not count 2 impact rows"
+if [ -n "$h5python" ] && [ -f "$work/walled_rolling.h5" ]; then
+  "$h5python" - "$work/walled_rolling.h5" <<'EOF' || fail "walled_rolling: the impacts table"
+import sys, h5py, numpy as np
+t = h5py.File(sys.argv[1], 'r')['contact/impacts']
+ok = list(t['contact'][:]) == [1, 2]
+ok = ok and np.allclose(t['normal_impulse'][:], [0.504, 0], atol=1e-9)
+ok = ok and np.allclose(t['tangential_impulse'][:], [0, 0.144], atol=1e-9)
+ok = ok and np.allclose(t['normal_speed_after'][:], [0.8, 0], atol=1e-9)
+print('walled_rolling: impacts table', 'matches' if ok else 'differs', t['normal_impulse'][:],
+      t['tangential_impulse'][:], t['normal_speed_after'][:])
+sys.exit(0 if ok else 1)
+EOF
+fi
 
 finish

@@ -61,7 +61,7 @@ program test_impacts_at_once
   use contact_body_impact, only: impact_body_t, collide_at_once, relative_velocity
   use contact_flight, only: flight_ode_t
   use testing, only: check, check_close, finish_tests
-  use scenario_fixtures, only: number, run_flight
+  use scenario_fixtures, only: number, run_flight, random_impact
   implicit none (type, external)
 
   character(len=*), parameter :: nl = new_line('a')
@@ -471,8 +471,8 @@ contains
   subroutine law_conditions()
     real(wp), parameter :: tol = 1e-9_wp   ! relative to the speeds (the slip direction's bisection, the sweeps)
     integer, parameter :: cases = 400
-    real(wp), allocatable :: a(:, :), w(:, :), normals(:, :), v(:, :), p(:, :), after(:, :), lost(:), e(:), mu(:)
-    real(wp) :: x(3), vn, pn, pt(3), vt(3), scale, worst
+    real(wp), allocatable :: w(:, :), normals(:, :), v(:, :), p(:, :), after(:, :), lost(:), e(:), mu(:)
+    real(wp) :: vn, pn, pt(3), vt(3), scale, worst
     integer :: k, m, i, unresolved, seed_size
     integer, allocatable :: seed(:)
     type(status_t) :: st
@@ -483,25 +483,15 @@ contains
     worst = 0
     do k = 1, cases
       m = 2 + mod(k, 2)
-      allocate (a(3*m, 3*m), normals(3, m), v(3, m), p(3, m), after(3, m), lost(m), e(m), mu(m))
-      call random_number(a)
-      w = matmul(a - 0.5_wp, transpose(a - 0.5_wp))
-      do i = 1, 3*m
-        w(i, i) = w(i, i) + 0.1_wp
-      end do
-      do i = 1, m
-        call random_number(x)
-        normals(:, i) = (x - 0.5_wp)/norm2(x - 0.5_wp)
-        call random_number(x)
-        v(:, i) = 2*x - 1 - normals(:, i)*(0.2_wp + x(1))   ! mostly approaching
-      end do
+      allocate (p(3, m), after(3, m), lost(m), e(m), mu(m))
+      call random_impact(m, w, normals, v)
       call random_number(mu)
       e = merge(0.0_wp, 0.5_wp, k <= cases/2)
       st = status_t()
       call resolve_impacts(w, normals, v, e, mu, p, after, lost, st)
       if (.not. st%ok()) then
         unresolved = unresolved + 1
-        deallocate (a, normals, v, p, after, lost, e, mu)
+        deallocate (p, after, lost, e, mu)
         cycle
       end if
       scale = maxval(abs(v))
@@ -519,7 +509,7 @@ contains
         end if
       end do
       if (e(1) == 0) worst = max(worst, -sum(lost)/scale**2)
-      deallocate (a, normals, v, p, after, lost, e, mu)
+      deallocate (p, after, lost, e, mu)
     end do
     call check(worst <= tol, 'law conditions: at every contact after the impact (relative to the speeds): '// &
                number(worst))

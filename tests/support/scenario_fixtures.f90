@@ -3,7 +3,8 @@
 !> and started, a ball over a floor built as a flight from input text, a
 !> flight driven to its end, a contact scenario's input run as the
 !> scenario runs it (its &solver's options), the slides of the rider's
-!> flight tests and their rides without and with may_fly.
+!> flight tests and their rides without and with may_fly, a random
+!> impact at several contacts.
 module scenario_fixtures
   use base_kinds, only: wp
   use base_status, only: status_t
@@ -30,11 +31,36 @@ module scenario_fixtures
   implicit none (type, external)
   private
   public :: number, real_text, joint_jumps, start_point_mass, ball_over_floor, read_flight, fly, run_flight, &
-    read_closed_flight, run_contact_input, run_contact_text, crest_slide, element_slide, ride_stay_and_fly
+    read_closed_flight, run_contact_input, run_contact_text, crest_slide, element_slide, ride_stay_and_fly, &
+    random_impact
 
   character(len=*), parameter :: nl = new_line('a')
 
 contains
+
+  !> A random impact at m contacts (the law tests of resolve_impacts), from
+  !> the random_number sequence: W = A A^T + I/10 (A's entries in [-0.5,
+  !> 0.5), 3m x 3m: symmetric positive definite), unit normals of random
+  !> directions, velocities before in [-1, 1)^3 less 0.2 to 1.2 along the
+  !> normal (mostly approaching).
+  subroutine random_impact(m, w, normals, v)
+    integer, intent(in) :: m
+    real(wp), allocatable, intent(out) :: w(:, :), normals(:, :), v(:, :)
+    real(wp) :: a(3*m, 3*m), x(3)
+    integer :: i
+    allocate (normals(3, m), v(3, m))
+    call random_number(a)
+    w = matmul(a - 0.5_wp, transpose(a - 0.5_wp))
+    do i = 1, 3*m
+      w(i, i) = w(i, i) + 0.1_wp
+    end do
+    do i = 1, m
+      call random_number(x)
+      normals(:, i) = (x - 0.5_wp)/norm2(x - 0.5_wp)
+      call random_number(x)
+      v(:, i) = 2*x - 1 - normals(:, i)*(0.2_wp + x(1))
+    end do
+  end subroutine random_impact
 
   !> x as input text, all 17 digits (es24.17).
   function number(x) result(text)
