@@ -881,7 +881,8 @@ contains
       call put(name, 'energy_change_joules', s%kinetic(n) + s%potential(n) - (s%kinetic(1) + s%potential(1)))
     end associate
     if (size(flight%impacts) > 0) then
-      call put_count(name, 'impacts', size(flight%impacts))
+      ! the summary counts impacts: one at several contacts is a row each, all at its time
+      call put_count(name, 'impacts', 1 + count(flight%impacts(2:)%time /= flight%impacts(:size(flight%impacts) - 1)%time))
       call put(name, 'impact_speed_max', maxval(-flight%impacts%normal_speed_before))
       call put(name, 'impact_energy_lost', sum(flight%impacts%energy_lost))
     end if
