@@ -10,6 +10,7 @@
 !> test_input_declarations checks it).
 module io_declarations_design
   use base_kinds, only: wp
+  use geometry_slide_elements, only: max_element_slope_deg
   use io_declaration, only: declaration_t, VALUE_REAL, VALUE_INTEGER, VALUE_LOGICAL, VALUE_WORDS
   implicit none (type, external)
   private
@@ -188,10 +189,10 @@ module io_declarations_design
     declaration_t(groups='catalogue', name='angle_step_deg', unit='deg', default='none', low=0.0_wp, &
       high=720.0_wp, open_low=.true., meaning='turning angles made: the whole multiples of it'), &
     declaration_t(groups='catalogue', name='slopes_deg', shape='list of at most 200', unit='deg', default='none', &
-      low=-60.0_wp, high=60.0_wp, meaning='the slopes made (straight, curve, runout, funnel; increasing); or '// &
-      'slope_step_deg'), &
+      low=-max_element_slope_deg, high=max_element_slope_deg, meaning='the slopes made (straight, curve, '// &
+      'runout, funnel: the slope &slide_elements takes for them; increasing); or slope_step_deg'), &
     declaration_t(groups='catalogue', name='slope_step_deg', unit='deg', default='none', low=0.0_wp, &
-      high=60.0_wp, open_low=.true., meaning='slopes made: the whole multiples of it'), &
+      high=max_element_slope_deg, open_low=.true., meaning='slopes made: the whole multiples of it'), &
     declaration_t(groups='catalogue', name='lengths', shape='list of at most 200', unit='m', default='none', &
       low=0.0_wp, high=1e4_wp, open_low=.true., meaning='the lengths made (increasing); or length_step'), &
     declaration_t(groups='catalogue', name='length_step', unit='m', default='none', low=0.0_wp, high=1e4_wp, &

@@ -84,6 +84,11 @@ check_refused not_increasing 'radii(3) = 4.0 is not allowed: must exceed radii(2
 check_refused list_and_step 'give radii or radius_step, not both' --set 'catalogue%radius_step=1' "$input"
 check_refused no_value_inside 'holds no value inside the bounds 4 … 12 deg of design variable 3' \
   --set 'catalogue%slope_step_deg=13' "$input"
+# the list's range is the one &slide_elements takes for these slopes (was
+# [-60, 60] while no element could be built beyond 45 deg)
+check_refused steep_list 'slopes_deg(2) = 50 is not allowed: must be a finite number in [-45, 45] (deg)' --unset catalogue%slope_step_deg \
+  --set 'catalogue%slopes_deg=4,50' "$input"
+check_refused steep_step 'slope_step_deg = 50 is not allowed: must be a finite number > 0 and <= 45 (deg)' --set 'catalogue%slope_step_deg=50' "$input"
 check_refused empty '&catalogue is empty' --unset catalogue%radii --unset catalogue%slope_step_deg "$input"
 check_refused wrong_parameter 'element 1 is a straight, whose radius is not a design variable (a radius: curve, helix, bowl, funnel, drop)' \
   --set 'design_elements%element=1,4,3' "$input"
