@@ -78,15 +78,26 @@ contains
     class(spec_t), intent(inout) :: self
     character(len=*), intent(in) :: name
     real(wp), intent(in) :: values(:)
-    integer :: k
+    type(spec_value_t), allocatable :: grown(:)
+    integer :: k, n
     if (.not. allocated(self%values)) allocate (self%values(0))
-    do k = 1, size(self%values)
+    n = size(self%values)
+    do k = 1, n
       if (self%values(k)%name == name) then
         self%values(k)%values = values
         return
       end if
     end do
-    self%values = [self%values, spec_value_t(name, values)]
+    ! grown by hand: gfortran 12 leaks the allocatable components of a
+    ! structure constructor inside an array constructor ([a, t(...)])
+    allocate (grown(n + 1))
+    do k = 1, n
+      call move_alloc(self%values(k)%name, grown(k)%name)
+      call move_alloc(self%values(k)%values, grown(k)%values)
+    end do
+    grown(n + 1)%name = name
+    grown(n + 1)%values = values
+    call move_alloc(grown, self%values)
   end subroutine spec_set
 
   pure logical function spec_has(self, name) result(has)

@@ -562,8 +562,12 @@ contains
     real(wp), intent(in) :: weight   ! N, M g of body 2
     type(status_t), intent(inout) :: status
     class(force_law_t), allocatable :: law
+    type(law_place_t) :: place   ! set by component: gfortran 12 leaks a constructor's name
     if (.not. allocated(c%friction%kind)) return
-    call force_law_from_spec(c%friction, law_place_t(c%name//'.friction', link%contact, weight), law, status)
+    place%name = c%name//'.friction'
+    place%contact = link%contact
+    place%weight = weight
+    call force_law_from_spec(c%friction, place, law, status)
     if (.not. status%ok()) return
     call m%add_law(law)
     link%law = m%n_laws

@@ -461,11 +461,18 @@ contains
     subroutine add_at_both(law)
       type(spec_t), intent(in) :: law
       class(force_law_t), allocatable :: built
+      type(law_place_t) :: place   ! set by component: gfortran 12 leaks a constructor's name
       real(wp) :: half_weight
       half_weight = p%mass*norm2(p%gravity)/2
-      call force_law_from_spec(law, law_place_t('rear_'//law%kind, rear_contact, half_weight), built, status)
+      place%name = 'rear_'//law%kind
+      place%contact = rear_contact
+      place%weight = half_weight
+      call force_law_from_spec(law, place, built, status)
       if (status%ok()) call m%add_law(built)
-      call force_law_from_spec(law, law_place_t('front_'//law%kind, front_contact, half_weight), built, status)
+      place%name = 'front_'//law%kind
+      place%contact = front_contact
+      place%weight = half_weight
+      call force_law_from_spec(law, place, built, status)
       if (status%ok()) call m%add_law(built)
     end subroutine add_at_both
   end subroutine build_sled

@@ -123,6 +123,8 @@ contains
     real(wp), allocatable, intent(out) :: y0(:)
     type(status_t), intent(inout) :: status
     class(force_law_t), allocatable :: law
+    type(spec_t) :: friction
+    type(law_place_t) :: place
     y0 = [d%u0, d%v0, d%du0, d%dv0, 0.0_wp]
     if (d%drag_area > 0) y0 = [y0, 0.0_wp]
     if (.not. status%ok()) return
@@ -141,8 +143,13 @@ contains
       return
     end if
     if (.not. allocated(d%friction%kind)) return
-    call force_law_from_spec(point_mass_friction(d%friction), law_place_t('friction', 0, d%mass*norm2(d%gravity)), &
-                             law, status)
+    ! named and set by component: gfortran 12 leaks the allocatable components of a
+    ! function result or structure constructor passed as an argument
+    friction = point_mass_friction(d%friction)
+    place%name = 'friction'
+    place%contact = 0
+    place%weight = d%mass*norm2(d%gravity)
+    call force_law_from_spec(friction, place, law, status)
     if (.not. status%ok()) return
     select type (law)
     class is (friction_law_t)

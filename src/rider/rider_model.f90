@@ -150,6 +150,7 @@ contains
     logical :: chain
     integer, allocatable :: coordinates(:)
     type(spec_t) :: friction
+    type(law_place_t) :: place   ! set by component: gfortran 12 leaks a constructor's name
     class(force_law_t), allocatable :: law
     real(wp) :: segment_weight(N_CONTACTS)   ! N
 
@@ -245,8 +246,10 @@ contains
       layout%contact(k) = m%add_contact(trim(contact_names(k)), 1, layout%body_frame(k), layout%contact_frame(k), &
                                         one_sided=p%one_sided .and. .not. layout%open(k))
       if (friction%kind /= 'none') then   ! a law of the core's registry (kinetostatics_force_law_factory)
-        call force_law_from_spec(friction, law_place_t(trim(contact_names(k))//'_friction', layout%contact(k), &
-                                                       segment_weight(k)), law, status)
+        place%name = trim(contact_names(k))//'_friction'
+        place%contact = layout%contact(k)
+        place%weight = segment_weight(k)
+        call force_law_from_spec(friction, place, law, status)
         if (.not. status%ok()) return
         call m%add_law(law)
         layout%friction(k) = m%n_laws
