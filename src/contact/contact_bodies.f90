@@ -31,7 +31,7 @@ module contact_bodies
   use contact_open_gaps, only: start_open_gaps, touching_gap_limit
   implicit none (type, external)
   private
-  public :: build_bodies, start_carriers
+  public :: build_bodies, build_bodies_opening, start_carriers
 
 contains
 
@@ -54,7 +54,7 @@ contains
   !> else the run's start (checked as the input: check_flight_system;
   !> model, if present, is the built contact model, for the start's moves).
   subroutine build_bodies(system, closed, flight, q0, qd0, q_units, status, touching, restarting, model, &
-                          also_touching)
+                          also_touching, not_pressing)
     type(contact_system_t), intent(in) :: system
     logical, intent(in) :: closed(:)   ! each contact: closed
     type(flight_ode_t), intent(out) :: flight
@@ -65,6 +65,9 @@ contains
     logical, intent(in) :: restarting
     type(contact_model_t), intent(out), optional :: model
     logical, intent(in), optional :: also_touching(:)   ! each contact: it may touch too (left at gap 0)
+    !> where the build fails because a closed contact does not press at the
+    !> start: that contact (of system), else 0
+    integer, intent(out), optional :: not_pressing
     type(contact_model_t) :: built
     type(contact_system_t) :: part
     type(solid_properties_t) :: props
@@ -83,6 +86,7 @@ contains
       if (closed(c)) carrier(body_index(system, system%contacts(c)%body_2)) = c
     end do
     call build_contact_model(part, built, status, flying=.true.)
+    if (present(not_pressing)) not_pressing = built%not_pressing
     if (.not. status%ok()) return
     if (restarting) then
       do c = 1, nc
@@ -128,4 +132,61 @@ contains
                          carried=.not. part%contacts%start_open, also_touching=also_touching)
     if (present(model)) model = built
   end subroutine build_bodies
+
+  !> build_bodies where a closed contact that may open does not carry:
+  !> its normal force in the built phase at most 1e-9 of its body_2's
+  !> weight (two bodies on each other falling freely press with nothing, a
+  !> zero whose rounding has either sign; below it the contact would lift
+  !> off at once, which may_open allows) opens at gap 0, touching (watched
+  !> from its opening), and the phase is built again; `closed` and
+  !> `touching` are updated, `opened` lists those so opened (in order).
+  !> Where such a contact may not open the build fails as build_bodies'
+  !> does ("does not press").
+  subroutine build_bodies_opening(system, closed, touching, flight, q0, qd0, q_units, status, restarting, opened, &
+                                  model)
+    type(contact_system_t), intent(in) :: system
+    logical, intent(inout) :: closed(:), touching(:)
+    type(flight_ode_t), intent(out) :: flight
+    real(wp), allocatable, intent(out) :: q0(:), qd0(:)
+    character(len=8), allocatable, intent(out) :: q_units(:)
+    type(status_t), intent(inout) :: status
+    logical, intent(in) :: restarting
+    integer, allocatable, intent(out) :: opened(:)
+    type(contact_model_t), intent(out), optional :: model
+    integer :: quiet, attempt
+    allocate (opened(0))
+    if (.not. status%ok()) return
+    do attempt = 1, size(closed) + 1
+      call build_bodies(system, closed, flight, q0, qd0, q_units, status, 0, restarting, model, &
+                        also_touching=touching, not_pressing=quiet)
+      if (status%ok()) quiet = unloaded_contact(system, closed, flight)
+      if (quiet == 0) return
+      if (.not. (closed(quiet) .and. system%contacts(quiet)%may_open)) return
+      status = status_t()
+      closed(quiet) = .false.
+      touching(quiet) = .true.
+      opened = [opened, quiet]
+    end do
+  end subroutine build_bodies_opening
+
+  !> The first closed contact that may open and whose normal force in the
+  !> built phase is at most 1e-9 of its body_2's weight, else 0.
+  integer function unloaded_contact(system, closed, phase) result(quiet)
+    type(contact_system_t), intent(in) :: system
+    logical, intent(in) :: closed(:)
+    type(flight_ode_t), intent(in) :: phase
+    integer :: c, k
+    real(wp) :: weight
+    quiet = 0
+    do c = 1, size(closed)
+      if (.not. (closed(c) .and. system%contacts(c)%may_open)) cycle
+      k = phase%mechanism_contact(c)
+      if (k == 0) cycle
+      weight = system%bodies(body_index(system, system%contacts(c)%body_2))%mass*norm2(system%gravity)
+      if (phase%work%normal_force(k) <= 1e-9_wp*weight) then
+        quiet = c
+        return
+      end if
+    end do
+  end function unloaded_contact
 end module contact_bodies

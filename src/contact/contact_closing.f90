@@ -54,7 +54,7 @@ module contact_closing
   use contact_flight, only: flight_ode_t, build_flight, restart_flight, closed_part, carrying_contact, &
     impact_on_carried
   use contact_open_gaps, only: carried_ode_t, carry, touching_gap_limit
-  use contact_bodies, only: build_bodies
+  use contact_bodies, only: build_bodies, build_bodies_opening
   implicit none (type, external)
   private
   public :: drive_flight, close_contact, flight_after_closed
@@ -420,6 +420,7 @@ contains
     real(wp), allocatable :: y(:), q0(:), qd0(:)
     character(len=8), allocatable :: units(:)
     logical, allocatable :: closed(:), touching(:)
+    integer, allocatable :: opened(:)
     integer :: k, c
     logical :: next, lifted, starting
     p => flight
@@ -471,8 +472,14 @@ contains
           placed%bodies(k)%angular_velocity = p%twist_after(1:3, k)
           placed%bodies(k)%velocity = p%twist_after(4:6, k)
         end do
+        ! a closed contact that may open but carries nothing there (two bodies
+        ! on each other falling freely after an impact: N = 0) opens at gap 0
         allocate (next_phase)
-        call build_bodies(placed, closed, next_phase, q0, qd0, units, status, 0, .true., also_touching=touching)
+        call build_bodies_opening(placed, closed, touching, next_phase, q0, qd0, units, status, .true., opened)
+        do k = 1, size(opened)
+          run%history = run%history//': contact '''//trim(p%system%contacts(opened(k))%name)//''' carries '// &
+                        'nothing there (its bodies fall freely together, or it would pull): it opens at gap 0 (may_open)'
+        end do
         if (.not. status%ok()) call prefix_status(status, 'the switch at t = '//format_short(phase%t)//' s')
         if (status%ok()) then
           next_phase%impacts = p%impacts

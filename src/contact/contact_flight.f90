@@ -299,7 +299,7 @@ contains
       ! a touching contact opened: the root is the gap from here (opening_gap, nonzero, where CVODE looks again)
       if (lands(c) .and. self%gaps%touching(c)) lands(c) = .not. self%gaps%opened(c)
     end do
-    lands = self%gaps%together(lands, self%work, self%body_frame)
+    lands = self%gaps%together(lands, self%work, self%body_frame, self%system%contacts%close_speed)
     do c = 1, size(lands)
       if (.not. lands(c)) cycle
       if (.not. (of_closed(self%gaps%body(c)) .or. of_closed(self%gaps%body_1(c)))) cycle

@@ -24,7 +24,8 @@ contains
   !> fly on; those it leaves slower than their close_speed close together
   !> (close_at_once; the flight stops, `closings` them). Not built, the run
   !> ending here, saying so: such an impact without restitution, and one
-  !> that would close a contact between two bodies or a rolling one.
+  !> that would close a rolling contact, or a contact between two bodies
+  !> together with another.
   module procedure impact_at_once
     type(impact_body_t) :: bodies(0:size(self%body_frame))
     integer, allocatable :: c(:), pair(:, :)
@@ -53,11 +54,14 @@ contains
                          points_2, pair, bodies, impulse, tangential, before, after, lost, status)
     if (.not. status%ok()) return
     closing = after < self%system%contacts(c)%close_speed
-    if (any(closing .and. (pair(1, :) > 0 .or. self%system%contacts(c)%rolling))) then
+    ! a contact between two bodies may close alone (the next phase builds it,
+    ! or opens it touching where it carries nothing: contact_closing)
+    if (any(closing .and. self%system%contacts(c)%rolling) .or. &
+        (any(closing .and. pair(1, :) > 0) .and. count(closing) > 1)) then
       stopped = 'the impact at several contacts at once at t = '//format_short(t)//' s ('// &
                 landed_names(self, lands)//') leaves '//landed_names(self, unpack(closing, lands, .false.))// &
-                ' slower than close_speed (closing a contact between two bodies, or a rolling one, among several '// &
-                'at once is not built): the run ends here'
+                ' slower than close_speed (closing a rolling contact, or one between two bodies with another, '// &
+                'at an impact at several contacts at once is not built): the run ends here'
     else if (any(closing)) then
       ! those slower than close_speed close together; one the closing leaves slower closes with them
       do i = 1, m
@@ -85,6 +89,8 @@ contains
     else if (any(closing)) then
       action = max(action, EVENT_STOP)
       self%closings = [self%closings, pack(c, closing)]
+      ! a pair's contact closing alone: the others it bounced off are left at gap 0
+      if (any(closing .and. pair(1, :) > 0)) self%bounced = pack(c, .not. closing)
       self%landed = self%closings(size(self%closings))
       call add_outcome(self, 'contacts '//landed_names(self, unpack(closing, lands, .false.))//' closed at the '// &
                        'impact at several contacts at once at t = '//format_short(t)//' s: their rebounds are '// &

@@ -110,6 +110,9 @@ module contact_model
     integer, allocatable :: free(:, :)             ! 6 x bodies: a free body's scalars x, y, z, a1, a2, a3 (else 0)
     integer, allocatable :: rotation_element(:)    ! each free body's free rotation (else 0)
     integer, allocatable :: gap_monitors(:)        ! each contact's <name>.gap among the monitors (flights only)
+    !> where the build failed because a closed contact does not press at the
+    !> start: that contact (of the description), else 0
+    integer :: not_pressing = 0
   end type contact_model_t
 
 contains
@@ -160,16 +163,19 @@ contains
       end if
       ! velocity level and open chains: start from the closed configuration of the loops
       call build(system, closed, status, flies, all_position=.true.)
+      model%not_pressing = closed%not_pressing
       if (.not. status%ok()) return
       call build(system, model, status, flies, closed=closed)
       return
     end if
     if (staged) then
       call build(chains, closed, status, flies, all_position=.true.)
+      model%not_pressing = closed%not_pressing
       call build(chains, tree, status, flies, closed=closed)
     else
       call build(chains, tree, status, flies)
     end if
+    if (tree%not_pressing > 0) model%not_pressing = tree%not_pressing
     call start_loops(system, tree%ode%mechanism, tree%ode%work, tree%body_frame, loops, status)
     if (.not. status%ok()) return
     if (staged) then
@@ -632,6 +638,9 @@ contains
       if (.not. status%ok()) return
       model%y0 = model%ode%initial_state(q0, s0)
       call model%ode%check_start(model%y0, status)
+      if (model%ode%not_pressing > 0) model%not_pressing = &
+        findloc([(model%links(k)%contact == model%ode%not_pressing .and. .not. model%links(k)%apart, &
+                  k = 1, size(model%links))], .true., dim=1)
     end associate
   end subroutine start
 

@@ -237,13 +237,19 @@ contains
 
   !> The contacts that land at an event: those whose roots fired (`lands`)
   !> and the others of their bodies within together_gap and closing (the
-  !> gaps updated at the event's pose, the velocities set).
-  function gaps_together(self, lands, work, frames) result(together)
+  !> gaps updated at the event's pose, the velocities set); a touching one
+  !> (left at gap 0) also where it separates slower than its close_speed:
+  !> two bodies resting on each other while they fall freely land together
+  !> as they would on a closed contact (contact_closing: a closed contact
+  !> that carries nothing opens, touching).
+  function gaps_together(self, lands, work, frames, close_speed) result(together)
     class(open_gaps_t), intent(in) :: self
     logical, intent(in) :: lands(:)
     type(mechanism_workspace_t), intent(in) :: work
     integer, intent(in) :: frames(:)
+    real(wp), intent(in) :: close_speed(:)   ! m/s, each contact's
     logical :: together(size(lands))
+    real(wp) :: separating
     logical :: involved(0:size(frames))
     integer :: c
     involved = .false.
@@ -253,9 +259,14 @@ contains
     involved(0) = .false.
     together = lands
     do c = 1, size(lands)
-      if (lands(c) .or. self%carried(c) .or. self%touching(c)) cycle
-      if (involved(self%body(c)) .or. involved(self%body_1(c))) together(c) = self%gap(c)%gap <= together_gap &
-        .and. dot_product(self%gap(c)%normal, self%velocity(c, work, frames)) < 0
+      if (lands(c) .or. self%carried(c)) cycle
+      if (.not. (involved(self%body(c)) .or. involved(self%body_1(c)))) cycle
+      separating = dot_product(self%gap(c)%normal, self%velocity(c, work, frames))
+      if (self%touching(c)) then
+        together(c) = abs(self%gap(c)%gap) <= together_gap .and. separating < close_speed(c)
+      else
+        together(c) = self%gap(c)%gap <= together_gap .and. separating < 0
+      end if
     end do
   end function gaps_together
 

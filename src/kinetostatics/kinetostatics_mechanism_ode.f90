@@ -57,6 +57,9 @@ module kinetostatics_mechanism_ode
     integer :: stop_kind = STOP_NONE
     integer :: stop_element = 0
     integer :: stop_contact = 0
+    !> check_start's refusal: the one-sided contact that does not press (0:
+    !> none), for a caller that may open it instead (contact_closing)
+    integer :: not_pressing = 0
     integer :: rhs_count = 0
     integer :: n_roots = 0                     ! its own roots (not an extension's), counted in prepare
                                                ! (the right-hand side asks at every call)
@@ -242,6 +245,7 @@ contains
     type(status_t), intent(inout) :: status
     real(wp) :: residual
     integer :: f, k
+    self%not_pressing = 0
     if (.not. status%ok()) return
     f = self%mechanism%f
     call self%mechanism%check_start(self%work, y0(1:f), status)
@@ -251,6 +255,7 @@ contains
     do k = 1, size(self%mechanism%contacts)
       associate (c => self%mechanism%contacts(k))
         if (c%one_sided .and. .not. self%work%normal_force(k) > 0) then
+          self%not_pressing = k
           call set_status(status, STATUS_INVALID_INPUT, 'at the start contact '''//c%name// &
             ''' does not press (normal force '//format_short(self%work%normal_force(k))//' N): it would lift off at once')
           return

@@ -19,7 +19,7 @@ module scenarios_contact
   use scenarios_mechanism, only: run_mechanism
   use contact_flight, only: flight_ode_t, build_flight, starts_open, check_flight_system, carrying_contact, closed_part
   use contact_closing, only: flight_after_closed
-  use contact_bodies, only: build_bodies, start_carriers
+  use contact_bodies, only: build_bodies_opening, start_carriers
   use io_xdmf, only: body_shape_t
   use base_grid, only: evenly_spaced
   use numerics_ode, only: ODE_ADAMS
@@ -131,7 +131,19 @@ contains
     type(contact_model_t) :: model
     real(wp), allocatable :: q0(:), qd0(:), y0(:)
     character(len=8), allocatable :: q_units(:)
-    call build_bodies(system, start_carriers(system), flight, q0, qd0, q_units, status, 0, .false., model)
+    logical :: closed(size(system%contacts)), touching(size(system%contacts))
+    integer, allocatable :: opened(:)
+    integer :: k
+    ! a contact closed at the start that may open and carries nothing there
+    ! (a ball resting on another, both falling) starts open at gap 0
+    closed = start_carriers(system)
+    touching = .false.
+    call build_bodies_opening(system, closed, touching, flight, q0, qd0, q_units, status, .false., opened, model)
+    do k = 1, size(opened)
+      call log_info(input%name//': contact '''//trim(system%contacts(opened(k))%name)//''' (start = ''closed'') '// &
+                    'carries nothing at the start (its bodies fall freely together, or it would pull): it starts '// &
+                    'open at gap 0 (may_open)')
+    end do
     if (status%ok()) then
       y0 = flight%initial_state(q0, qd0)
       call flight%check_start(y0, status)
