@@ -8,7 +8,7 @@
 !> names its file; the values are copied from it, the defaults not given
 !> there are the types' own), built by their layers (build_contact_model,
 !> build_point_mass_model, build_pendulum_model, build_fourbar_model,
-!> build_sled_model; the flights by build_flight, build_bodies or
+!> build_sled_model; the flights by build_flight, build_bodies_opening or
 !> flight_after_closed) and run over
 !> `duration` s with the input's solver settings, as the command runs them
 !> (scenarios_mechanism, scenarios_point_mass, scenarios_contact,
@@ -50,7 +50,7 @@ program shipped_descriptions
     build_contact_model, contact_convergence_coefficient
   use contact_flight, only: flight_ode_t, build_flight, check_flight_system, carrying_contact, closed_part
   use contact_closing, only: drive_flight, flight_after_closed
-  use contact_bodies, only: build_bodies, start_carriers
+  use contact_bodies, only: build_bodies_opening, start_carriers
   use shipped_slides, only: demo_slide_description => demo_slide
   use library_lines, only: put, put_count, expect_ok, failures
   implicit none (type, external)
@@ -99,6 +99,7 @@ program shipped_descriptions
   call contact_loop()
   call contact_roll_beside_bounce()
   call contact_stacked_balls()
+  call contact_falling_pair()
   call contact_box_landing()
   call contact_ball_on_cart()
   call contact_ladder()
@@ -761,6 +762,19 @@ contains
     call run_flying('inputs/contact/stacked_balls.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 5.5_wp)
   end subroutine contact_stacked_balls
 
+  subroutine contact_falling_pair()
+    type(contact_system_t) :: system
+    system%shapes = [spec_shape('floor', 'plane', [character(len=1) ::], [real(wp) ::]), ball_shape('big', 0.12_wp), &
+                     ball_shape('small', 0.033_wp)]
+    system%bodies = [solid_ball('big', 0.6_wp, [0.0_wp, 0.0_wp, 1.12_wp], [0.0_wp, 0.0_wp, 0.0_wp]), &
+                     solid_ball('small', 0.057_wp, [0.0_wp, 0.0_wp, 1.273_wp], [0.0_wp, 0.0_wp, 0.0_wp])]
+    system%contacts = [landing('big_on_floor', 'floor', 'big', 0.8_wp, 0.1_wp), &
+                       contact('small_on_big', 'big', 'big', 1.0_wp, 'small', 'small', 1.0_wp, .false.)]
+    system%contacts(2)%may_open = .true.
+    system%contacts(2)%restitution = 0.9_wp   ! close_speed: the default
+    call run_flying('inputs/contact/falling_pair.nml', system, 1e-10_wp, 1e-10_wp, 0.01_wp, 3.5_wp)
+  end subroutine contact_falling_pair
+
   subroutine contact_box_landing()
     type(contact_system_t) :: system
     system%shapes = [spec_shape('floor', 'plane', [character(len=1) ::], [real(wp) ::]), ball_shape('rear', 0.02_wp), &
@@ -838,14 +852,17 @@ contains
     type(status_t) :: st
     real(wp), allocatable :: q0(:), qd0(:), y0(:)
     character(len=8), allocatable :: q_units(:)
-    integer, allocatable :: open(:, :)
+    integer, allocatable :: open(:, :), opened(:)
+    logical :: closed(size(system%contacts)), touching(size(system%contacts))
     integer :: f, ns
     call check_flight_system(system, st)
     if (carrying_contact(system) == 0) then
       call build_flight(system, flight, q0, qd0, q_units, st)
     else if (size(system%bodies) > 1 .or. count(.not. system%contacts%start_open) > 1) then
-      ! several bodies, or one on several closed contacts
-      call build_bodies(system, start_carriers(system), flight, q0, qd0, q_units, st, 0, .false., model)
+      ! several bodies, or one on several closed contacts (one that carries nothing starts open, as the command's)
+      closed = start_carriers(system)
+      touching = .false.
+      call build_bodies_opening(system, closed, touching, flight, q0, qd0, q_units, st, .false., opened, model)
     else
       call build_contact_model(closed_part(system, carrying_contact(system)), model, st)
       if (st%ok()) then
