@@ -104,6 +104,10 @@ module contact_flight
     real(wp) :: normal_impulse = 0         ! N s, on the body
     real(wp) :: tangential_impulse = 0     ! N s, its size
     real(wp) :: energy_lost = 0            ! J
+    !> the phase stopped before the impact's velocities were taken: the
+    !> record at its time holds the state before it, the next phase's first
+    !> record (at the same time) the state after (impact_on_carried)
+    logical :: after_switch = .false.
   end type impact_record_t
 
   !> The free body as a model of the integration driver: the mechanism's own

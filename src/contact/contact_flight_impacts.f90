@@ -268,7 +268,7 @@ contains
     do i = 1, m
       self%impacts = [self%impacts, impact_record_t(time=t, contact=c(i), body_1=pair(1, i), body_2=pair(2, i), &
                       normal_speed_before=before(i), normal_speed_after=after(i), normal_impulse=impulse(i), &
-                      tangential_impulse=tangential(i), energy_lost=lost(i))]
+                      tangential_impulse=tangential(i), energy_lost=lost(i), after_switch=.true.)]
     end do
     action = max(action, EVENT_STOP)
     left_open = landed_names(self, unpack(.not. closing, both, .false.))

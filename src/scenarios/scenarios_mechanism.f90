@@ -252,11 +252,16 @@ contains
   end function impacts_of
 
   !> The energy the impacts removed up to each record (J): a record at an
-  !> impact holds the state after it. Zero without impacts.
+  !> impact holds the state after it, but where the phase stopped before
+  !> the impact's velocities were taken (after_switch: an impact through a
+  !> carried body) the first record at its time holds the state before it
+  !> (the next phase's first, at the same time, after it; a switch that
+  !> failed has none). Zero without impacts.
   function impact_losses(sys) result(losses)
     class(mechanism_ode_t), intent(in) :: sys
     real(wp), allocatable :: losses(:)
     type(impact_record_t), allocatable :: impacts(:)
+    logical :: first_at_time
     integer :: i
     select type (sys)
     class is (vehicle_flight_ode_t)
@@ -264,7 +269,15 @@ contains
       return
     end select
     impacts = impacts_of(sys)
-    losses = [(sum(impacts%energy_lost, mask=impacts%time <= sys%series%time(i)), i = 1, sys%series%n)]
+    allocate (losses(sys%series%n))
+    do i = 1, sys%series%n
+      associate (t => sys%series%time)
+        first_at_time = .true.
+        if (i > 1) first_at_time = t(i - 1) /= t(i)
+        losses(i) = sum(impacts%energy_lost, mask=impacts%time < t(i) .or. (impacts%time == t(i) .and. &
+                        .not. (impacts%after_switch .and. first_at_time)))
+      end associate
+    end do
   end function impact_losses
 
   !> Per record and contact of a flight whether it was open (1, the body in
