@@ -6,7 +6,12 @@
 !> a periodic direction is sampled over one period) and then refine by the
 !> foot-point solver's Newton (geometry_foot_point) on the stationarity
 !> conditions, with steps clipped to the box. An unbounded direction (a
-!> plane) starts from 0, where Newton is exact for the plane.
+!> plane) starts from 0, where Newton is exact for the plane. Near a pole of
+!> the chart (a ball's lowest point where it rests on another ball a little
+!> off-centre: v -> -pi/2, where r_u vanishes) Newton runs into the box's
+!> edge; a surface with other charts is then searched again in the chart
+!> regular at the best sample (surface_t chart_toward, chart) and the point
+!> taken back to the surface's own (u, v) (chart_parameters).
 module contact_surface_search
   use base_kinds, only: wp
   use base_text, only: format_short
@@ -48,22 +53,27 @@ contains
     call search(surface, d, .false., u, v, status)
   end subroutine support_point
 
-  subroutine search(surface, x, nearest, u, v, status)
+  recursive subroutine search(surface, x, nearest, u, v, status, in_chart)
     class(surface_t), intent(in) :: surface
     real(wp), intent(in) :: x(3)
     logical, intent(in) :: nearest
     real(wp), intent(out) :: u, v
     type(status_t), intent(inout) :: status
-    real(wp) :: box(4), best, value, uu, vv
+    logical, intent(in), optional :: in_chart   ! searching a chart of the surface already (no further chart)
+    real(wp) :: box(4), best, value, uu, vv, p(3, 3), u_chart, v_chart, best_r(3)
     type(surface_point_t) :: pt
     type(status_t) :: local
     type(foot_point_options_t) :: options
     type(foot_point_t) :: foot
+    class(surface_t), allocatable :: other
     integer :: i, j
-    logical :: bounded(2)
+    logical :: bounded(2), charted
     u = 0
     v = 0
+    best_r = 0
     if (.not. status%ok()) return
+    charted = .false.
+    if (present(in_chart)) charted = in_chart
     call surface%domain(box(1), box(2), box(3), box(4))
     bounded = [max(abs(box(1)), abs(box(2))) < bounded_limit, max(abs(box(3)), abs(box(4))) < bounded_limit]
     if (bounded(1)) u = (box(1) + box(2))/2
@@ -81,6 +91,7 @@ contains
             best = value
             u = uu
             v = vv
+            best_r = pt%r
           end if
         end do
       end do
@@ -93,6 +104,14 @@ contains
     end if
     call find_foot_point(surface, x, u, v, options, foot, status)
     if (.not. status%ok()) return
+    if (foot%reason == FOOT_STEP_LIMIT .and. all(bounded) .and. .not. charted .and. surface%has_charts()) then
+      ! the chart regular at the best sample: r = P r', a point x = P x', a direction d.r = (P^T d).r'
+      call surface%chart(surface%chart_toward(best_r), other, p)
+      call search(other, matmul(transpose(p), x), nearest, u_chart, v_chart, status, in_chart=.true.)
+      if (status%ok()) call other%evaluate(u_chart, v_chart, 0, pt, status)
+      if (status%ok()) call surface%chart_parameters(matmul(p, pt%r), u, v, status)
+      return
+    end if
     if (foot%reason == FOOT_STEP_LIMIT) then
       if ((bounded(1) .and. (u <= box(1) .or. u >= box(2))) .or. (bounded(2) .and. (v <= box(3) .or. v >= box(4)))) then
         call set_status(status, STATUS_NOT_CONVERGED, 'the '//merge('nearest point', 'support point', nearest)// &

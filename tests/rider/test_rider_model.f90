@@ -297,7 +297,7 @@ contains
   !> components as an argument, base_spec's list grown in an array
   !> constructor; ~0.5 KB a build) until they were set by component and grown
   !> by hand. Resident memory over 4000 builds after a warm-up grows by less
-  !> than 512 KB (the leak: ~2 MB). Linux (/proc/self/status); skipped where
+  !> than 512 KB (the leak: 1248 KB on main 61e0b5e). Linux (/proc/self/status); skipped where
   !> that cannot be read.
   subroutine check_no_memory_lost_per_build()
     type(rider_params_t) :: p
