@@ -7,18 +7,20 @@
 !> foot-point solver's Newton (geometry_foot_point) on the stationarity
 !> conditions, with steps clipped to the box. An unbounded direction (a
 !> plane) starts from 0, where Newton is exact for the plane. Near a pole of
-!> the chart (a ball's lowest point where it rests on another ball a little
-!> off-centre: v -> -pi/2, where r_u vanishes) Newton runs into the box's
-!> edge; a surface with other charts is then searched again in the chart
-!> regular at the best sample (surface_t chart_toward, chart) and the point
-!> taken back to the surface's own (u, v) (chart_parameters).
+!> the chart (a ball resting on another a little off-centre: the points
+!> near both balls' poles, where r_u vanishes) Newton runs into the box's
+!> edge, or stops at the pole, where every u meets the tangency conditions
+!> (a ball 1 mm off the top was placed on the top, silently); a surface
+!> with other charts is then searched again in the chart regular at the
+!> best sample (surface_t chart_toward, chart) and the point taken back to
+!> the surface's own (u, v) (chart_parameters).
 module contact_surface_search
   use base_kinds, only: wp
   use base_text, only: format_short
   use base_status, only: status_t, set_status, STATUS_NOT_CONVERGED
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_foot_point, only: foot_point_options_t, foot_point_t, find_foot_point, FOOT_TANGENT, FOOT_SUPPORT, &
-    FOOT_STOP_PARAMETER, FOOT_DOMAIN_CLIP, FOOT_STEP_LIMIT
+    FOOT_STOP_PARAMETER, FOOT_DOMAIN_CLIP, FOOT_STEP_LIMIT, FOOT_SINGULAR
   implicit none (type, external)
   private
   public :: nearest_point, support_point
@@ -67,13 +69,14 @@ contains
     type(foot_point_t) :: foot
     class(surface_t), allocatable :: other
     integer :: i, j
-    logical :: bounded(2), charted
+    logical :: bounded(2), charted, redo
     u = 0
     v = 0
     best_r = 0
     if (.not. status%ok()) return
     charted = .false.
     if (present(in_chart)) charted = in_chart
+    redo = .false.
     call surface%domain(box(1), box(2), box(3), box(4))
     bounded = [max(abs(box(1)), abs(box(2))) < bounded_limit, max(abs(box(3)), abs(box(4))) < bounded_limit]
     if (bounded(1)) u = (box(1) + box(2))/2
@@ -104,8 +107,17 @@ contains
     end if
     call find_foot_point(surface, x, u, v, options, foot, status)
     if (.not. status%ok()) return
-    if (foot%reason == FOOT_STEP_LIMIT .and. all(bounded) .and. .not. charted .and. surface%has_charts()) then
-      ! the chart regular at the best sample: r = P r', a point x = P x', a direction d.r = (P^T d).r'
+    ! a surface with other charts: a search that ends at (or runs into) a pole
+    ! of its chart, where r_u vanishes and every u meets the tangency
+    ! conditions (a ball off-centre on a ball's top was placed at the top),
+    ! goes on in the chart regular there
+    if (all(bounded) .and. .not. charted .and. surface%has_charts()) redo = foot%reason == FOOT_STEP_LIMIT .or. &
+      foot%reason == FOOT_SINGULAR .or. surface%chart_margin(v) <= 0
+    if (redo) then
+      ! the chart regular where the search ended (else at the best sample): r = P r', a point x = P x', a
+      ! direction d.r = (P^T d).r'
+      call surface%evaluate(u, v, 0, pt, local)
+      if (local%ok()) best_r = pt%r
       call surface%chart(surface%chart_toward(best_r), other, p)
       call search(other, matmul(transpose(p), x), nearest, u_chart, v_chart, status, in_chart=.true.)
       if (status%ok()) call other%evaluate(u_chart, v_chart, 0, pt, status)
