@@ -107,12 +107,14 @@ contains
     end if
     call find_foot_point(surface, x, u, v, options, foot, status)
     if (.not. status%ok()) return
-    ! a surface with other charts: a search that ends at (or runs into) a pole
-    ! of its chart, where r_u vanishes and every u meets the tangency
-    ! conditions (a ball off-centre on a ball's top was placed at the top),
-    ! goes on in the chart regular there
+    ! a surface with other charts: a search that runs into the box's edge at
+    ! a pole of its chart, or a nearest point that ends at (or beyond) one,
+    ! where r_u vanishes and every u meets the tangency conditions (a ball
+    ! off-centre on a ball's top was placed at the top), goes on in the chart
+    ! regular there (a support point is not so fooled: d.r_v /= 0 at a pole
+    ! unless the pole is the answer)
     if (all(bounded) .and. .not. charted .and. surface%has_charts()) redo = foot%reason == FOOT_STEP_LIMIT .or. &
-      foot%reason == FOOT_SINGULAR .or. surface%chart_margin(v) <= 0
+      (nearest .and. (foot%reason == FOOT_SINGULAR .or. surface%chart_margin(v) <= 0))
     if (redo) then
       ! the chart regular where the search ended (else at the best sample): r = P r', a point x = P x', a
       ! direction d.r = (P^T d).r'
