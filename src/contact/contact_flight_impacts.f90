@@ -22,10 +22,11 @@ contains
   !> impact at all of them (contact_body_impact collide_at_once, Newton's
   !> restitution and impact_mu at each), a row per contact, and the bodies
   !> fly on; those it leaves slower than their close_speed close together
-  !> (close_at_once; the flight stops, `closings` them). Not built, the run
-  !> ending here, saying so: such an impact without restitution, and one
-  !> that would close a rolling contact, or a contact between two bodies
-  !> together with another.
+  !> (close_at_once; the flight stops, `closings` them; a contact between
+  !> two bodies among them: body_1 carries body_2 from there, or it opens
+  !> at gap 0 where it carries nothing). Not built, the run ending here,
+  !> saying so: such an impact without restitution, and one that would
+  !> close a rolling contact.
   module procedure impact_at_once
     type(impact_body_t) :: bodies(0:size(self%body_frame))
     integer, allocatable :: c(:), pair(:, :)
@@ -54,14 +55,13 @@ contains
                          points_2, pair, bodies, impulse, tangential, before, after, lost, status)
     if (.not. status%ok()) return
     closing = after < self%system%contacts(c)%close_speed
-    ! a contact between two bodies may close alone (the next phase builds it,
-    ! or opens it touching where it carries nothing: contact_closing)
-    if (any(closing .and. self%system%contacts(c)%rolling) .or. &
-        (any(closing .and. pair(1, :) > 0) .and. count(closing) > 1)) then
+    ! a contact between two bodies closes as the ground's (the next phase
+    ! builds it, or opens it touching where it carries nothing: contact_closing)
+    if (any(closing .and. self%system%contacts(c)%rolling)) then
       stopped = 'the impact at several contacts at once at t = '//format_short(t)//' s ('// &
                 landed_names(self, lands)//') leaves '//landed_names(self, unpack(closing, lands, .false.))// &
-                ' slower than close_speed (closing a rolling contact, or one between two bodies with another, '// &
-                'at an impact at several contacts at once is not built): the run ends here'
+                ' slower than close_speed (closing a rolling contact at an impact at several contacts at once is '// &
+                'not built): the run ends here'
     else if (any(closing)) then
       ! those slower than close_speed close together; one the closing leaves slower closes with them
       do i = 1, m
@@ -89,7 +89,7 @@ contains
     else if (any(closing)) then
       action = max(action, EVENT_STOP)
       self%closings = [self%closings, pack(c, closing)]
-      ! a pair's contact closing alone: the others it bounced off are left at gap 0
+      ! with a pair's contact closing: the others it bounced off are left at gap 0
       if (any(closing .and. pair(1, :) > 0)) self%bounced = pack(c, .not. closing)
       self%landed = self%closings(size(self%closings))
       call add_outcome(self, 'contacts '//landed_names(self, unpack(closing, lands, .false.))//' closed at the '// &
