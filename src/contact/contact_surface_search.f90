@@ -11,8 +11,8 @@
 !> near both balls' poles, where r_u vanishes) Newton runs into the box's
 !> edge, or stops at the pole, where every u meets the tangency conditions
 !> (a ball 1 mm off the top was placed on the top, silently); a surface
-!> with other charts is then searched again in the chart regular at the
-!> best sample (surface_t chart_toward, chart) and the point taken back to
+!> with other charts is then searched again in the chart regular where the
+!> search ended (surface_t chart_toward, chart) and the point taken back to
 !> the surface's own (u, v) (chart_parameters).
 module contact_surface_search
   use base_kinds, only: wp
