@@ -237,14 +237,16 @@ contains
     allocate (chart_surface, source=turned)
   end subroutine ellipsoid_pole_chart
 
-  !> (u, v) of the point r of the ellipsoid, the inverse of (3.57).
+  !> (u, v) of the point r of the ellipsoid, the inverse of (3.57). v by
+  !> atan2, not asin(z/c): near a pole asin loses v to sqrt(2 eps) ~ 1e-8
+  !> rad (a ball resting 1e-9 m off a ball's top was placed on the top).
   pure subroutine ellipsoid_chart_parameters(self, r, u, v, status)
     class(ellipsoid_t), intent(in) :: self
     real(wp), intent(in) :: r(3)
     real(wp), intent(out) :: u, v
     type(status_t), intent(out) :: status
     status%code = STATUS_OK
-    v = asin(max(-1.0_wp, min(1.0_wp, r(3)/self%c)))
+    v = atan2(r(3)/self%c, hypot(r(1)/self%a, r(2)/self%b))
     u = atan2(r(2)/self%b, r(1)/self%a)
   end subroutine ellipsoid_chart_parameters
 

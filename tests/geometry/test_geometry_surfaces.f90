@@ -122,7 +122,8 @@ contains
   !> The chart hooks (geometry_surface): the default has one chart and keeps
   !> it; each of an ellipsoid's three charts is the ellipsoid turned by P
   !> (its point r' at (u, v) is the ellipsoid's point P r', to rounding),
-  !> chart_parameters gives back (u, v) of a point, chart_toward picks the
+  !> chart_parameters gives back (u, v) of a point (v to rounding 1e-9 rad
+  !> from a pole, u there to 1e-6: r_u ~ 1e-9), chart_toward picks the
   !> axis along which the point lies least far out, and the margin is
   !> cos v - cos 1.4 (zero at |v| = 1.4 rad).
   subroutine check_charts()
@@ -156,6 +157,11 @@ contains
       call ellipsoid%evaluate(u, v, 0, q, st)
       call check_close_array(q%r, matmul(rot, p%r), 0.0_wp, 1e-14_wp, 'a chart''s point is the ellipsoid''s, turned')
       call check_close(rot(k, 3), 1.0_wp, 0.0_wp, 0.0_wp, 'chart k has its poles on axis k')
+      ! 1e-9 rad from a pole: v to rounding (asin(z/c) there is off by ~1e-8)
+      call turned%evaluate(0.7_wp, pi/2 - 1e-9_wp, 0, p, st)
+      call turned%chart_parameters(p%r, u, v, st)
+      call check(abs(v - (pi/2 - 1e-9_wp)) <= 1e-15_wp .and. abs(u - 0.7_wp) <= 1e-6_wp, &
+                 'chart_parameters near a pole gives back v to rounding')
     end do
   end subroutine check_charts
 
