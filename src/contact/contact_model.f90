@@ -41,7 +41,7 @@
 module contact_model
   use base_kinds, only: wp
   use base_text, only: format_short
-  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT
+  use base_status, only: status_t, set_status, prefix_status, STATUS_INVALID_INPUT, STATUS_DOMAIN
   use geometry_surface, only: surface_t
   use geometry_solid, only: solid_properties_t
   use numerics_linear_algebra, only: cholesky_factor, cholesky_solve
@@ -65,10 +65,14 @@ module contact_model
   implicit none (type, external)
   private
   public :: shape_t, body_spec_t, contact_spec_t, contact_system_t, contact_model_t, contact_link_t
-  public :: build_contact_model, contact_convergence_coefficient, body_size, build_system_shapes, body_index
+  public :: build_contact_model, contact_convergence_coefficient, body_size, build_system_shapes, body_index, &
+    check_placement
   public :: LEVEL_POSITION, LEVEL_VELOCITY, CHAIN_AUTO, CHAIN_OPEN, CHAIN_LOOP
 
   real(wp), parameter :: identity(3, 3) = reshape([1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 3])
+  !> m and rad: a start placement's move off its contact's normal, or turn
+  !> (check_placement); rounding of a closure is ~1e-15 of the poses
+  real(wp), parameter :: placement_limit = 1e-9_wp
   !> CVODE's nonlinear convergence coefficient for contact runs with Adams (its
   !> default 0.1). The corrector stops once its change is below this fraction of
   !> the error test; the rest of its error enters the differences CVODE
@@ -95,6 +99,7 @@ module contact_model
     integer :: rolling_outputs(2) = 0            ! no-slip outputs (rolling, position level)
     type(contact_pair_t) :: pair                 ! position level
     real(wp) :: start_gap = 0                    ! m, B moved along the normal to touch at the start
+    real(wp) :: start_normal(3) = 0              ! that normal (world)
   end type contact_link_t
 
   type :: contact_model_t
@@ -609,6 +614,7 @@ contains
             ! from the loop's closed configuration
             call place_open_contact_pair(m, link%pair, closed%ode%work, closed%links(k)%pair)
             link%start_gap = closed%links(k)%start_gap
+            link%start_normal = closed%links(k)%start_normal
           else if (link%level == LEVEL_POSITION) then
             b1 = body_index(system, c%body_1)
             rot_a = identity
@@ -618,10 +624,12 @@ contains
               r_a = system%bodies(b1)%position
             end if
             associate (b => system%bodies(body_index(system, c%body_2)))
-              call place_contact_pair(m, link%pair, rot_a, r_a, b%rotation, b%position, link%start_gap, status)
+              call place_contact_pair(m, link%pair, rot_a, r_a, b%rotation, b%position, link%start_gap, &
+                                      link%start_normal, status)
             end associate
           else   ! velocity level: from the closed configuration too
             link%start_gap = closed%links(k)%start_gap
+            link%start_normal = closed%links(k)%start_normal
           end if
         end associate
         if (.not. status%ok()) return
@@ -634,6 +642,8 @@ contains
           call check_contact_branch(model%ode%work, model%links(k)%pair, status)
       end do
       if (.not. status%ok()) return
+      call check_placement(system, model, carrier, status)
+      if (.not. status%ok()) return
       call start_speeds(system, model, carrier, s0, status)
       if (.not. status%ok()) return
       model%y0 = model%ode%initial_state(q0, s0)
@@ -643,6 +653,81 @@ contains
                   k = 1, size(model%links))], .true., dim=1)
     end associate
   end subroutine start
+
+  !> Each body where its given pose puts it, to rounding: a flying body
+  !> exactly, a body its contact placed moved along that contact's normal
+  !> only, with its carrier body's move (also where the placement is copied
+  !> from a closed configuration: velocity level, open chains). The move
+  !> along the normal is the closure's (start_gap is set to it: the
+  !> placement's own estimate is first order in the gap where the body's
+  !> support point is not below its origin). A placement that moved a body
+  !> sideways or turned it found the wrong contact point (a surface search
+  !> that ended elsewhere) and would start a different motion without a
+  !> word: refused. Bodies a second contact closes a loop on may be moved by
+  !> that closure (contact_loops): not checked.
+  subroutine check_placement(system, model, carrier, status)
+    type(contact_system_t), intent(in) :: system
+    type(contact_model_t), intent(inout) :: model
+    integer, intent(in) :: carrier(:)
+    type(status_t), intent(inout) :: status
+    real(wp) :: turn(3, 3), rot_ag(3, 3), r_ag(3), rot_ap(3, 3), r_ap(3), r_expected(3), rot_expected(3, 3)
+    real(wp) :: normal(3), off(3), along, moved, turned
+    character(len=:), allocatable :: where_from
+    integer :: b, b1, k
+    logical :: on_loop(size(system%bodies))
+    if (.not. status%ok()) return
+    on_loop = .false.
+    do k = 1, size(model%links)
+      if (model%links(k)%loop) on_loop(body_index(system, system%contacts(k)%body_2)) = .true.
+    end do
+    do b = 1, size(system%bodies)
+      if (on_loop(b)) cycle
+      k = carrier(b)
+      associate (given => system%bodies(b), placed => model%ode%work%frames(model%body_frame(b + 1)))
+        normal = 0
+        if (k <= 0) then   ! -1: free (add_free)
+          r_expected = given%position
+          rot_expected = given%rotation
+        else
+          if (model%links(k)%apart .or. model%links(k)%loop) cycle
+          b1 = body_index(system, system%contacts(k)%body_1)
+          rot_ag = identity
+          r_ag = 0
+          rot_ap = identity
+          r_ap = 0
+          if (b1 > 0) then
+            if (on_loop(b1)) cycle
+            rot_ag = system%bodies(b1)%rotation
+            r_ag = system%bodies(b1)%position
+            rot_ap = model%ode%work%frames(model%body_frame(b1 + 1))%rot
+            r_ap = model%ode%work%frames(model%body_frame(b1 + 1))%r
+          end if
+          turn = matmul(rot_ap, transpose(rot_ag))   ! the carrier body's own move
+          normal = matmul(turn, model%links(k)%start_normal)
+          r_expected = r_ap + matmul(turn, given%position - r_ag)
+          rot_expected = matmul(turn, given%rotation)
+        end if
+        off = placed%r - r_expected
+        along = dot_product(off, normal)
+        moved = norm2(off - along*normal)
+        ! the angle between the two rotations: |R - R'|_F = 2 sqrt(2) sin(angle/2)
+        turned = 2*asin(min(1.0_wp, norm2(placed%rot - rot_expected)/sqrt(8.0_wp)))
+        if (moved > placement_limit .or. turned > placement_limit) then
+          if (k > 0) then
+            where_from = 'where its position and the normal of contact '''//trim(system%contacts(k)%name)//''' put it'
+          else
+            where_from = 'its given pose (it flies)'
+          end if
+          call set_status(status, STATUS_DOMAIN, 'body '''//trim(given%name)//''': the start placement moved it '// &
+            format_short(moved)//' m from '//where_from//' and turned it by '//format_short(turned)// &
+            ' rad (limit '//format_short(placement_limit)//' m, rad): the contact point found is not the one '// &
+            'below the body (a surface search that ended elsewhere)')
+          return
+        end if
+        if (k > 0) model%links(k)%start_gap = -along
+      end associate
+    end do
+  end subroutine check_placement
 
   !> The speeds whose body twists are nearest (least squares) to the given
   !> ones; refused if the given twists miss by more than 1e-9 of their size

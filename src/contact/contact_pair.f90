@@ -348,19 +348,21 @@ contains
   !> and the contact points start at that point of S1 and at the support point
   !> of S2 against S1's normal there; z12 then puts that support point onto
   !> the tangent plane, i.e. moves B along the normal by `gap` (m, positive:
-  !> B was above the surface). The loop is closed afterwards by the mechanism
-  !> (set_positions / check_start), which makes the contact exact.
-  subroutine place_contact_pair(m, pair, rot_a, r_a, rot_b, r_b, gap, status)
+  !> B was above the surface; `normal`: that normal, world axes). The loop is
+  !> closed afterwards by the mechanism (set_positions / check_start), which
+  !> makes the contact exact.
+  subroutine place_contact_pair(m, pair, rot_a, r_a, rot_b, r_b, gap, normal, status)
     type(mechanism_t), intent(inout) :: m
     type(contact_pair_t), intent(in) :: pair
     real(wp), intent(in) :: rot_a(3, 3), r_a(3), rot_b(3, 3), r_b(3)
-    real(wp), intent(out) :: gap
+    real(wp), intent(out) :: gap, normal(3)
     type(status_t), intent(inout) :: status
     real(wp) :: p(3), rel(3, 3), n_b(3), u12, v12, u2, v2, c_b(3)
     type(surface_point_t) :: pt1, pt2
     type(darboux_frame_t) :: d12
     type(surface_chart_t) :: chart_1, chart_2
     gap = 0
+    normal = 0
     if (.not. status%ok()) return
     call m%elements(pair%element_s1)%e%surface_chart(chart_1)
     call m%elements(pair%element_s2)%e%surface_chart(chart_2)
@@ -385,6 +387,7 @@ contains
       if (.not. status%ok()) return
       c_b = matmul(rel, pt2%r)                                ! support point relative to B's origin, K_12 axes
       gap = dot_product(p - pt1%r, d12%r(:, 3)) + c_b(3)
+      normal = matmul(rot_a, d12%r(:, 3))
     end associate
     m%scalars(pair%u12)%q = u12
     m%scalars(pair%v12)%q = v12

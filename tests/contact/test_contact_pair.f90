@@ -81,13 +81,13 @@ contains
     type(mechanism_t) :: m
     type(contact_pair_t) :: pair
     type(status_t) :: st
-    real(wp) :: gap, height, q0(5), r0(3)
+    real(wp) :: gap, height, q0(5), r0(3), normal(3)
     integer :: trial
     type(mechanism_workspace_t) :: work
     call build_egg(m, pair, 1.0_wp, st)
     call check(st%ok(), 'egg on table built: '//st%text())
     r0 = [0.01_wp, -0.02_wp, 0.05_wp]
-    call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], egg_orientation(tilt), r0, gap, st)
+    call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], egg_orientation(tilt), r0, gap, normal, st)
     q0 = m%scalars(pair%coordinates())%q
     call m%check_start(work, q0, st)
     call check_contact_branch(work, pair, st)
@@ -97,6 +97,7 @@ contains
     call check_close(work%frames(pair%frame_b)%r(3), height, 0.0_wp, 1e-15_wp, &
                      'egg centre at its support height (exact to rounding)')
     call check_close(gap, r0(3) - height, 0.0_wp, 1e-15_wp, 'placement reports the gap it closed')
+    call check(maxval(abs(normal - [0.0_wp, 0.0_wp, 1.0_wp])) <= 1e-15_wp, 'placement reports the table''s normal')
     call check(maxval(abs(work%frames(pair%frame_b)%r(1:2) - r0(1:2))) <= 1e-15_wp, &
                'the closure moves the egg along the table normal only')
     call check(maxval(abs(work%frames(pair%frame_b)%rot - egg_orientation(tilt))) <= 1e-15_wp, &
@@ -120,7 +121,7 @@ contains
     type(status_t) :: st
     type(bspline_surface_t) :: big, small
     integer :: f2, s(4), trial
-    real(wp) :: gap, q0(9), qo(9)
+    real(wp) :: gap, q0(9), qo(9), normal(3), given(3), off(3)
     type(mechanism_workspace_t) :: work
     type(mechanism_workspace_t) :: work_mo
     big = quadratic_patch(3.0_wp, 2.0_wp, st)
@@ -138,13 +139,25 @@ contains
     call check(st%ok(), 'cup in bowl built: '//st%text())
     ! the bowl's pose at q0 (spherical x-y-z, then the rise along its z)
     associate (rb => matmul(rot_x(0.1_wp), matmul(rot_y(-0.2_wp), rot_z(0.3_wp))))
-      call place_contact_pair(m, pair, rb, 0.2_wp*rb(:, 3), matmul(rb, rot_x(0.15_wp)), &
-                              0.2_wp*rb(:, 3) + matmul(rb, [0.4_wp, -0.3_wp, 0.3_wp]), gap, st)
+      given = 0.2_wp*rb(:, 3) + matmul(rb, [0.4_wp, -0.3_wp, 0.3_wp])
+      call place_contact_pair(m, pair, rb, 0.2_wp*rb(:, 3), matmul(rb, rot_x(0.15_wp)), given, gap, normal, st)
+      q0 = m%scalars([s, pair%coordinates()])%q
+      call m%check_start(work, q0, st)
+      call check_contact_branch(work, pair, st)
+      call check(st%ok(), 'cup in bowl closes at the start: '//st%text())
+      ! the cup moved along the bowl's normal there (world axes), its
+      ! orientation kept (the closure moves only z12 from this placement);
+      ! by the gap to first order (the cup's support point is not below its
+      ! origin: the closure lowers it further)
+      off = work%frames(pair%frame_b)%r - given
+      print '(a, 3es12.4)', 'cup in bowl: gap, move along the normal, sideways ', gap, dot_product(off, normal), &
+        norm2(off - dot_product(off, normal)*normal)
+      call check(abs(norm2(normal) - 1) <= 1e-15_wp .and. abs(gap) > 1e-3_wp .and. &
+                 norm2(off - dot_product(off, normal)*normal) <= 1e-14_wp, &
+                 'cup in bowl: placed along the reported normal')
+      call check(maxval(abs(work%frames(pair%frame_b)%rot - matmul(rb, rot_x(0.15_wp)))) <= 1e-14_wp, &
+                 'cup in bowl: placement keeps the cup''s orientation')
     end associate
-    q0 = m%scalars([s, pair%coordinates()])%q
-    call m%check_start(work, q0, st)
-    call check_contact_branch(work, pair, st)
-    call check(st%ok(), 'cup in bowl closes at the start: '//st%text())
     ! the open chain, started from the closed loop
     call moving_bowl(mo, f2, s)
     call add_open_contact_pair(mo, 'cup_in_bowl', f2, big, 1.0_wp, 'cup', small, -1.0_wp, open, st)
@@ -198,11 +211,11 @@ contains
     type(mechanism_t) :: m
     type(contact_pair_t) :: pair
     type(status_t) :: st
-    real(wp) :: gap
+    real(wp) :: gap, normal(3)
     type(mechanism_workspace_t) :: work
     call build_egg(m, pair, -1.0_wp, st)
     call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], egg_orientation(tilt), &
-                            [0.0_wp, 0.0_wp, 0.03_wp], gap, st)
+                            [0.0_wp, 0.0_wp, 0.03_wp], gap, normal, st)
     call m%check_start(work, m%scalars(pair%coordinates())%q, st)
     call check(.not. st%ok() .and. index(st%text(), 'egg_on_table') > 0 .and. index(st%text(), 'parallel') > 0 &
                .and. index(st%text(), 'flip side_2') > 0, 'the parallel branch is refused naming the contact '// &
@@ -216,7 +229,7 @@ contains
     type(contact_pair_t) :: pair
     type(status_t) :: st
     type(bspline_surface_t) :: big, small
-    real(wp) :: gap
+    real(wp) :: gap, normal(3)
     type(mechanism_workspace_t) :: work, again   ! again: a fresh one takes the second placement
     big = quadratic_patch(3.0_wp, 2.0_wp, st)
     small = quadratic_patch(0.5_wp, 0.5_wp, st)
@@ -224,14 +237,14 @@ contains
     call m%set_coordinates(pair%coordinates())
     call m%finalize(st)
     call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], rot_x(1.2_wp), &
-                            [2.5_wp, 0.0_wp, 1.0_wp], gap, st)
+                            [2.5_wp, 0.0_wp, 1.0_wp], gap, normal, st)
     call m%check_start(work, m%scalars(pair%coordinates())%q, st)
     call check(.not. st%ok() .and. index(st%text(), 'cup_in_bowl') > 0 .and. index(st%text(), 'edge') > 0, &
                'a body not over surface 1 is refused naming the contact: '//st%text())
     ! over the rim: the closure runs off the bowl's patch
     st = status_t()
     call place_contact_pair(m, pair, identity, [0.0_wp, 0.0_wp, 0.0_wp], rot_y(-0.2_wp), &
-                            [1.74_wp, 0.0_wp, 1.3_wp], gap, st)
+                            [1.74_wp, 0.0_wp, 1.3_wp], gap, normal, st)
     call m%check_start(again, m%scalars(pair%coordinates())%q, st)
     call check(.not. st%ok() .and. index(st%text(), 'cup_in_bowl') > 0 .and. index(st%text(), 'off by') > 0, &
                'a contact that cannot close is refused naming it and by how much: '//st%text())
