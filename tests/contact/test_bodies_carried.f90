@@ -46,7 +46,7 @@ program test_bodies_carried
   use contact_flight, only: closed_part, carrying_contact
   use kinetostatics_recorder, only: mechanism_series_t
   use testing, only: check, check_close, finish_tests
-  use scenario_fixtures, only: number
+  use scenario_fixtures, only: number, vector_text
   implicit none (type, external)
 
   character(len=*), parameter :: nl = new_line('a')
@@ -79,7 +79,7 @@ contains
   function a_on_slope(rolling) result(text)
     logical, intent(in) :: rolling
     character(len=:), allocatable :: text
-    text = '&body name = ''a'', mass = '//number(ma)//', solid_of = ''a'', position = '//vector(ra*normal)// &
+    text = '&body name = ''a'', mass = '//number(ma)//', solid_of = ''a'', position = '//vector_text(ra*normal)// &
            trim(merge(', angles_deg = -90, 0, 0', '                        ', rolling))//' /'//nl// &
            '&contact name = ''a_slope'', shape_1 = ''slope'', body_2 = ''a'', shape_2 = ''a'''// &
            trim(merge(', rolling = .true.', '                  ', rolling))//' /'//nl
@@ -92,16 +92,10 @@ contains
     real(wp), intent(in) :: r, m, x, lowest, vx, e
     character(len=:), allocatable :: text
     text = '&body name = '''//name//''', mass = '//number(m)//', solid_of = '''//name//''', position = '// &
-           vector([x, 2.0_wp, r + lowest])//', velocity = '//vector([vx, 0.0_wp, 0.0_wp])//' /'//nl// &
+           vector_text([x, 2.0_wp, r + lowest])//', velocity = '//vector_text([vx, 0.0_wp, 0.0_wp])//' /'//nl// &
            '&contact name = '''//name//'_floor'', shape_1 = ''floor'', body_2 = '''//name//''', shape_2 = '''// &
            name//''', start = ''open'', restitution = '//number(e)//', close_speed = 0.1 /'//nl
   end function dropped
-
-  function vector(v) result(text)
-    real(wp), intent(in) :: v(3)
-    character(len=:), allocatable :: text
-    text = number(v(1))//', '//number(v(2))//', '//number(v(3))
-  end function vector
 
   function options_for(duration) result(options)
     real(wp), intent(in) :: duration

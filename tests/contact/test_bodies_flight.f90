@@ -35,7 +35,7 @@ program test_bodies_flight
   use numerics_event_driver, only: DRIVE_END_TIME, RECORD_OUTPUT
   use contact_flight, only: flight_ode_t, impact_record_t
   use testing, only: check, check_close, finish_tests
-  use scenario_fixtures, only: number, run_flight
+  use scenario_fixtures, only: number, vector_text, run_flight
   implicit none (type, external)
 
   character(len=*), parameter :: nl = new_line('a')
@@ -61,17 +61,11 @@ contains
     text = '&shape name = '''//names(k)//''', kind = ''sphere'', radius = '//number(radius(k))//' /'//nl// &
            '&body name = '''//names(k)//''', mass = '//number(mass(k))//', solid_of = '''//names(k)// &
            ''', position = '//number(real(k - 1, wp))//', 0, '//number(radius(k) + lowest)// &
-           ', velocity = '//vector(velocity(:, k))//', angular_velocity = '//vector(spin(:, k))//' /'//nl// &
+           ', velocity = '//vector_text(velocity(:, k))//', angular_velocity = '//vector_text(spin(:, k))//' /'//nl// &
            '&contact name = '''//names(k)//'_floor'', shape_1 = ''floor'', body_2 = '''//names(k)// &
            ''', shape_2 = '''//names(k)//''', start = ''open'', restitution = '//number(restitution(k))// &
            ', close_speed = '//number(close_speed)//' /'//nl
   end function ball_groups
-
-  function vector(v) result(text)
-    real(wp), intent(in) :: v(3)
-    character(len=:), allocatable :: text
-    text = number(v(1))//', '//number(v(2))//', '//number(v(3))
-  end function vector
 
   function floor_input(balls) result(text)
     character(len=*), intent(in) :: balls

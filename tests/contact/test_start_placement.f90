@@ -19,11 +19,10 @@ program test_start_placement
   use base_kinds, only: wp
   use base_constants, only: pi
   use base_status, only: status_t
-  use io_input, only: input_text_t, input_from_text
-  use io_contact_config, only: read_contact_config
+  use base_vector, only: rotation_xyz
   use contact_model, only: contact_system_t, contact_model_t, build_contact_model, check_placement
   use testing, only: check, check_close, finish_tests
-  use scenario_fixtures, only: number
+  use scenario_fixtures, only: number, vector_text, read_system
   implicit none (type, external)
 
   character(len=*), parameter :: nl = new_line('a')
@@ -48,35 +47,16 @@ contains
            '&shape name = ''small'', kind = ''sphere'', radius = 0.05 /'//nl
   end function head
 
-  function vector(v) result(text)
-    real(wp), intent(in) :: v(3)
-    character(len=:), allocatable :: text
-    text = number(v(1))//', '//number(v(2))//', '//number(v(3))
-  end function vector
-
-  subroutine read_system(text, label, system, ok)
+  !> The contact system of `text`, checked read.
+  subroutine read_checked(text, label, system, ok)
     character(len=*), intent(in) :: text, label
     type(contact_system_t), intent(out) :: system
     logical, intent(out) :: ok
-    type(input_text_t) :: input
     type(status_t) :: st
-    call input_from_text(label, text, input, st)
-    call read_contact_config(input, system, st)
+    call read_system(text, label, system, st)
     ok = st%ok()
     call check(ok, label//': read: '//st%text())
-  end subroutine read_system
-
-  !> Rotation by `angle` about the unit axis `k` (Rodrigues).
-  function turn_about(k, angle) result(r)
-    real(wp), intent(in) :: k(3), angle
-    real(wp) :: r(3, 3), kx(3, 3)
-    integer :: i
-    kx = reshape([0.0_wp, k(3), -k(2), -k(3), 0.0_wp, k(1), k(2), -k(1), 0.0_wp], [3, 3])
-    r = sin(angle)*kx + (1 - cos(angle))*matmul(kx, kx)
-    do i = 1, 3
-      r(i, i) = r(i, i) + 1
-    end do
-  end function turn_about
+  end subroutine read_checked
 
   subroutine lifted_on_slope()
     type(contact_system_t) :: system, moved
@@ -85,7 +65,7 @@ contains
     real(wp) :: given(3)
     logical :: ok
     given = (ra + 1e-3_wp)*normal + 0.3_wp*downhill + [0.0_wp, 0.2_wp, 0.0_wp]
-    call read_system(head()//'&body name = ''a'', mass = 0.2, solid_of = ''a'', position = '//vector(given)// &
+    call read_checked(head()//'&body name = ''a'', mass = 0.2, solid_of = ''a'', position = '//vector_text(given)// &
                      ', angles_deg = 10, 20, 30 /'//nl// &
                      '&contact name = ''a_slope'', shape_1 = ''slope'', body_2 = ''a'', shape_2 = ''a'' /'//nl, &
                      'lifted_on_slope', system, ok)
@@ -109,7 +89,7 @@ contains
                .and. index(st%text(), 'moved it 1') > 0, &
                'lifted_on_slope: a placement 1e-6 m sideways of its given pose is refused: '//st%text())
     moved = system
-    moved%bodies(1)%rotation = matmul(turn_about(normal, 1e-6_wp), system%bodies(1)%rotation)
+    moved%bodies(1)%rotation = matmul(rotation_xyz([0.0_wp, 0.0_wp, 1e-6_wp]), system%bodies(1)%rotation)
     st = status_t()
     call check_placement(moved, model, [1], st)
     call check(.not. st%ok() .and. index(st%text(), 'turned it by 1.0000') > 0 .and. index(st%text(), ' rad') > 0, &
@@ -130,9 +110,9 @@ contains
     big = [0.1_wp, -0.2_wp, 0.2_wp + 2e-3_wp]
     dir = [sin(0.3_wp)*cos(1.1_wp), sin(0.3_wp)*sin(1.1_wp), cos(0.3_wp)]   ! 0.3 rad off the top
     small = big + (0.2_wp + 0.05_wp)*dir
-    call read_system(head()// &
-                     '&body name = ''big'', mass = 1, solid_of = ''big'', position = '//vector(big)//' /'//nl// &
-                     '&body name = ''small'', mass = 0.1, solid_of = ''small'', position = '//vector(small)// &
+    call read_checked(head()// &
+                     '&body name = ''big'', mass = 1, solid_of = ''big'', position = '//vector_text(big)//' /'//nl// &
+                     '&body name = ''small'', mass = 0.1, solid_of = ''small'', position = '//vector_text(small)// &
                      ', angles_deg = 40, -10, 5 /'//nl// &
                      '&contact name = ''big_floor'', shape_1 = ''floor'', body_2 = ''big'', shape_2 = ''big'' /'//nl// &
                      '&contact name = ''small_big'', body_1 = ''big'', shape_1 = ''big'', body_2 = ''small'', '// &
@@ -155,7 +135,7 @@ contains
     real(wp) :: given(3)
     logical :: ok
     given = [0.3_wp, 0.1_wp, 0.5_wp]
-    call read_system(head()//'&body name = ''a'', mass = 0.2, solid_of = ''a'', position = '//vector(given)// &
+    call read_checked(head()//'&body name = ''a'', mass = 0.2, solid_of = ''a'', position = '//vector_text(given)// &
                      ', angles_deg = 10, 20, 30 /'//nl// &
                      '&contact name = ''a_floor'', shape_1 = ''floor'', body_2 = ''a'', shape_2 = ''a'', '// &
                      'start = ''open'' /'//nl, 'flying', system, ok)

@@ -1,8 +1,9 @@
-!> Set-ups several tests share: a number as input text or in a message, the continuity of
-!> an element chain across its joints, a point mass built from input text
-!> and started, a ball over a floor built as a flight from input text, a
-!> flight driven to its end, a contact scenario's input run as the
-!> scenario runs it (its &solver's options), the slides of the rider's
+!> Set-ups several tests share: a number or a vector as input text, a
+!> number in a message, the continuity of an element chain across its
+!> joints, a point mass built from input text and started, a ball over a
+!> floor built as a flight from input text, a contact system read from
+!> input text, a flight driven to its end, a contact scenario's input run
+!> as the scenario runs it (its &solver's options), the slides of the rider's
 !> flight tests and their rides without and with may_fly, a random
 !> impact at several contacts.
 module scenario_fixtures
@@ -30,9 +31,9 @@ module scenario_fixtures
   use testing, only: check
   implicit none (type, external)
   private
-  public :: number, real_text, joint_jumps, start_point_mass, ball_over_floor, read_flight, fly, run_flight, &
-    read_closed_flight, run_contact_input, run_contact_text, crest_slide, element_slide, ride_stay_and_fly, &
-    random_impact
+  public :: number, vector_text, real_text, joint_jumps, start_point_mass, ball_over_floor, read_flight, fly, &
+    run_flight, read_system, read_closed_flight, run_contact_input, run_contact_text, crest_slide, element_slide, &
+    ride_stay_and_fly, random_impact
 
   character(len=*), parameter :: nl = new_line('a')
 
@@ -70,6 +71,13 @@ contains
     write (buffer, '(es24.17)') x
     text = trim(adjustl(buffer))
   end function number
+
+  !> A 3-vector as input text (number's digits), e.g. a &body position.
+  function vector_text(v) result(text)
+    real(wp), intent(in) :: v(3)
+    character(len=:), allocatable :: text
+    text = number(v(1))//', '//number(v(2))//', '//number(v(3))
+  end function vector_text
 
   !> x in short (es10.3), for messages.
   function real_text(x) result(text)
