@@ -23,7 +23,11 @@
 !> impact in the build with the roll held (held, held_yaw).
 !>
 !> An open contact's gap (point_gap: the rear's lift, the front's front_z)
-!> is a root (gap_root); its zero a landing: kinetostatics_point_impact's
+!> is a root (gap_root); once it has opened, its rate is one too: where the
+!> rate falls through zero the gap is at an apex, kept as the flights'
+!> highest point if higher than any before (with the gaps at the records,
+!> where a stretch ends rising: the highest between the records, not only
+!> at them). The gap's zero is a landing: kinetostatics_point_impact's
 !> impact (&sled landing_restitution, landing_mu) with the effective mass
 !> of the whole vehicle there (J M^-1 J^T of the build in flight). A
 !> rebound slower than close_speed closes the contact (if it then presses;
@@ -55,11 +59,11 @@ module rider_vehicle_flight
   use geometry_surface, only: surface_t, surface_point_t
   use geometry_differential, only: radii_towards
   use geometry_slide_query, only: slide_surface_t
-  use numerics_event_driver, only: driver_options_t, driver_result_t, EVENT_STOP, EVENT_RESTART
+  use numerics_event_driver, only: driver_options_t, driver_result_t, EVENT_IGNORE, EVENT_STOP, EVENT_RESTART
   use kinetostatics_mechanism, only: mechanism_t, mechanism_workspace_t
   use kinetostatics_mechanism_ode, only: mechanism_ode_t, STOP_LIFT_OFF
   use kinetostatics_models, only: sled_description_t
-  use kinetostatics_point_impact, only: point_gap, gap_root
+  use kinetostatics_point_impact, only: point_gap, point_gap_rate, gap_root
   use rider_flight, only: ride_flights_t
   use rider_vehicle, only: vehicle_t, build_vehicle_model
   use rider_vehicle_layout, only: vehicle_contact_names, vehicle_units, N_FULL, full_names
@@ -79,8 +83,9 @@ module rider_vehicle_flight
   !> old one's: the way back needs the ratio of the two to change fourfold)
   real(wp), parameter :: solve_ratio = 0.5_wp
   !> the roots after the mechanism's: the rear's and the front's gap, the
-  !> solved coordinate's margin
-  integer, parameter :: N_OWN_ROOTS = 3
+  !> solved coordinate's margin, the rear's and the front's gap rate (the
+  !> apex of a flight: its highest point)
+  integer, parameter :: N_OWN_ROOTS = 5
 
   !> The vehicle's integration with its four builds.
   type, extends(mechanism_ode_t) :: vehicle_flight_ode_t
@@ -97,6 +102,9 @@ module rider_vehicle_flight
     integer :: heading = 0                  ! the heading's frame (its y the pitch's axis, z the yaw's)
     !> the positions of the margin's root (flight_roots), apart from the run's work
     type(mechanism_workspace_t) :: margin_work
+    !> the positions at an apex (flight_handle_event), apart from the run's
+    !> work: the run goes on as if the event had not been
+    type(mechanism_workspace_t) :: apex_work
     !> the margin at the last right-hand side's (t, y), the largest |margin| met
     logical :: margin_stored = .false.
     real(wp) :: margin_t = 0, margin_value = 0, margin_scale = 0
@@ -122,6 +130,7 @@ module rider_vehicle_flight
     procedure :: root_count => flight_root_count
     procedure :: roots => flight_roots
     procedure :: handle_event => flight_handle_event
+    procedure :: record => flight_record
     procedure :: diagnose => flight_diagnose
     procedure :: stiffness_may_cause => flight_stiffness_may_cause
   end type vehicle_flight_ode_t
@@ -152,10 +161,11 @@ module rider_vehicle_flight
     end subroutine press_or_open
 
     !> Contact c's foot point's arc length on a slide (else its u), the
-    !> positions set.
-    module function where_foot(self, c) result(s)
+    !> positions set (in `work`, else the run's).
+    module function where_foot(self, c, work) result(s)
       class(vehicle_flight_ode_t), intent(in) :: self
       integer, intent(in) :: c
+      type(mechanism_workspace_t), intent(in), optional :: work
       real(wp) :: s
     end function where_foot
   end interface
@@ -247,7 +257,7 @@ contains
   !> The mechanism's roots, then each open contact's gap root (a constant
   !> while it is closed), then, while the front is on, the margin of the
   !> coordinate its closure solves (solve_margin; a constant while it is
-  !> open).
+  !> open), then each opened contact's gap rate (a constant else).
   subroutine flight_roots(self, t, y, g)
     class(vehicle_flight_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t, y(:)
@@ -281,7 +291,47 @@ contains
       if (btest(self%open_mask, k - 1)) g(n + k) = gap_root(point_gap(self%work, self%point(k), self%foot(k)), &
                                                              self%opened(k))
     end do
+    if (.not. any([(btest(self%open_mask, k - 1) .and. self%opened(k), k = 1, 2)])) return
+    ! the velocities at y too (the run's work: the positions are y's, and a
+    ! right-hand side sets both again)
+    call self%mechanism%set_velocities(self%work, y(self%mechanism%f + 1:self%mechanism%f + self%mechanism%ns))
+    do k = 1, 2
+      if (btest(self%open_mask, k - 1) .and. self%opened(k)) &
+        g(n + 3 + k) = point_gap_rate(self%work, self%point(k), self%foot(k))
+    end do
   end subroutine flight_roots
+
+  !> The mechanism's record; in flight each open contact's gap there is a
+  !> candidate for the highest point (keep_highest): a stretch that ends
+  !> with a gap still rising has its highest there.
+  subroutine flight_record(self, t, y, kind, status)
+    class(vehicle_flight_ode_t), intent(inout) :: self
+    real(wp), intent(in) :: t, y(:)
+    integer, intent(in) :: kind
+    type(status_t), intent(inout) :: status
+    integer :: k
+    call self%mechanism_ode_t%record(t, y, kind, status)
+    if (.not. status%ok() .or. self%open_mask == 0) return
+    do k = 1, 2
+      if (btest(self%open_mask, k - 1)) call keep_highest(self, self%work, t, k)
+    end do
+  end subroutine flight_record
+
+  !> Contact c's gap (positions set in `work`, at time t) as the flights'
+  !> highest point if it is higher than the one kept.
+  subroutine keep_highest(self, work, t, c)
+    class(vehicle_flight_ode_t), intent(inout) :: self
+    type(mechanism_workspace_t), intent(in) :: work
+    real(wp), intent(in) :: t
+    integer, intent(in) :: c
+    real(wp) :: gap
+    gap = point_gap(work, self%point(c), self%foot(c))
+    if (.not. gap > self%flights%highest) return
+    self%flights%highest = gap
+    self%flights%highest_contact = c
+    self%flights%highest_time = t
+    self%flights%highest_arc_length = where_foot(self, c, work)
+  end subroutine keep_highest
 
   !> The margin stored by the last right-hand side serves at (t, y): the
   !> same t and y, or y within d <= 1e-5 of it (each entry relative to
@@ -398,7 +448,8 @@ contains
   !> The mechanism's events; a lift-off of a contact asks for its take-off
   !> (a stop, then the switch); an open contact's gap root: it opened (watch
   !> the landing from now on) or it landed (a stop that asks for the
-  !> landing's switch).
+  !> landing's switch); its gap rate falling through zero: an apex, a
+  !> candidate for the highest point (no record: the run goes on).
   subroutine flight_handle_event(self, t, y, fired, action, status)
     class(vehicle_flight_ode_t), intent(inout) :: self
     real(wp), intent(in) :: t
@@ -409,6 +460,19 @@ contains
     integer :: n, k
     n = size(fired) - N_OWN_ROOTS
     self%switch = SWITCH_NONE
+    ! an apex: the highest point kept from positions of its own; the run
+    ! goes on untouched (the mechanism's handling would reset its caches)
+    if (any(fired(n + 4:n + 5) < 0)) then
+      call self%mechanism%set_positions(self%apex_work, y(1:self%mechanism%f), status)
+      if (.not. status%ok()) return
+      do k = 1, 2
+        if (fired(n + 3 + k) < 0 .and. btest(self%open_mask, k - 1)) call keep_highest(self, self%apex_work, t, k)
+      end do
+    end if
+    if (all(fired(1:n + 3) == 0)) then
+      action = EVENT_IGNORE
+      return
+    end if
     call self%mechanism_ode_t%handle_event(t, y, fired(1:n), action, status)
     if (.not. status%ok()) return
     if (action == EVENT_STOP) then
@@ -421,7 +485,7 @@ contains
       self%switch_y = y
       return
     end if
-    if (all(fired(n + 1:) == 0)) return
+    if (all(fired(n + 1:n + 3) == 0)) return
     call self%mechanism%set_positions(self%work, y(1:self%mechanism%f), status)
     if (.not. status%ok()) return
     do k = 1, 2

@@ -224,7 +224,11 @@ contains
   end function where_now
 
   module procedure where_foot
-    s = self%work%scalars(self%mechanism%scalar_index(trim(merge('u ', 'u2', c == 1))))%q
+    if (present(work)) then
+      s = work%scalars(self%mechanism%scalar_index(trim(merge('u ', 'u2', c == 1))))%q
+    else
+      s = self%work%scalars(self%mechanism%scalar_index(trim(merge('u ', 'u2', c == 1))))%q
+    end if
     if (.not. allocated(self%ground)) return
     select type (g => self%ground)
     class is (slide_surface_t)
@@ -317,8 +321,9 @@ contains
     y(2*f + 1:) = full(2*N_FULL + 1:)
     call self%mechanism%set_positions(self%work, q, status)
     if (status%ok()) call self%mechanism%set_velocities(self%work, qd)
-    ! the margin's positions start from here (not from the build's start)
+    ! the margin's and the apexes' positions start from here (not from the build's start)
     if (status%ok() .and. mask < 2) self%margin_work = self%work
+    if (status%ok() .and. mask > 0) self%apex_work = self%work
   end subroutine use_build
 
   !> The stretch's records (sys%series, in its build's layout) in the full

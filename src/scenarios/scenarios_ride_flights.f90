@@ -25,7 +25,7 @@ module scenarios_ride_flights
 contains
 
   !> The flights into the ride report. `vehicle`: a vehicle's (&sled
-  !> may_fly: its contacts by these names, no highest point).
+  !> may_fly: its contacts by these names).
   subroutine add_flights(summary, flights, vehicle)
     type(summary_t), intent(inout) :: summary
     type(ride_flights_t), intent(in) :: flights
@@ -44,10 +44,8 @@ contains
     call summary%add('whole_airtime_longest', '    longest', flights%whole_longest, 's')
     call summary%add('whole_airtime_longest_arc_length', '    took off at arc length', &
                      flights%whole_longest_arc_length, 'm')
-    if (.not. present(vehicle)) then
-      call summary%add('highest', '  highest above the slide: '//highest_name(flights), flights%highest, 'm')
-      call summary%add('highest_arc_length', '    at arc length', flights%highest_arc_length, 'm')
-    end if
+    call summary%add('highest', '  highest above the slide: '//highest_name(flights, vehicle), flights%highest, 'm')
+    call summary%add('highest_arc_length', '    at arc length', flights%highest_arc_length, 'm')
     call highest_drop(flights, drop, drop_at)
     call summary%add_count('landings', '  landings', flights%landings, '')
     call summary%add('drop_height_max', '  largest drop height', drop, 'm')
@@ -66,7 +64,7 @@ contains
 
   !> The flights into /evaluation/flight/ (group `g`, ending in '/');
   !> `vehicle`: a vehicle's (/sled/vehicle/flight/: its contacts by these
-  !> names, no highest point).
+  !> names).
   subroutine write_flights(file, flights, g, status, vehicle)
     type(result_file_t), intent(inout) :: file
     type(ride_flights_t), intent(in) :: flights
@@ -81,14 +79,18 @@ contains
       'its part along the normal', 'normal_speed^2/(2 |g|): the equivalent drop height', &
       'kinetic energy the impact took', '1: the contact stayed closed, 0: it flew on', &
       'the contact that landed: 1 pelvis, 2 heels, 3 back']
-    character(len=:), allocatable :: body, took_off
+    character(len=:), allocatable :: body, took_off, which, located
     integer :: k
     body = 'rider'
     took_off = 'where it took off (pelvis arc length)'
+    which = 'which: 1 pelvis, 2 heels, 3 back (0: none)'
+    located = 'located on the integrator''s dense output'
     if (present(vehicle)) then
       body = 'vehicle'
       took_off = 'where it took off (the rear contact''s arc length)'
       meaning(9) = 'the contact that landed: 1 '//trim(vehicle(1))//', 2 '//trim(vehicle(2))
+      which = 'which: 1 '//trim(vehicle(1))//', 2 '//trim(vehicle(2))//' (0: none)'
+      located = 'at the roots of its gap rate and the records'
     end if
     call file%write_count(g//'flights', flights%flights, '1', 'flights: take-offs of a contact while all were '// &
                           'closed', status)
@@ -104,14 +106,11 @@ contains
     call file%write_scalar(g//'whole_airtime_longest', flights%whole_longest, 's', 'the longest such flight', status)
     call file%write_scalar(g//'whole_airtime_longest_arc_length', flights%whole_longest_arc_length, 'm', &
                            took_off, status)
-    if (.not. present(vehicle)) then
-      call file%write_scalar(g//'highest', flights%highest, 'm', &
-                             'largest gap of a contact point above the slide (at the records)', status)
-      call file%write_count(g//'highest_contact', flights%highest_contact, '1', &
-                            'which: 1 pelvis, 2 heels, 3 back (0: none)', status)
-      call file%write_scalar(g//'highest_arc_length', flights%highest_arc_length, 'm', &
-                             'where (the contact''s foot point)', status)
-    end if
+    call file%write_scalar(g//'highest', flights%highest, 'm', &
+                           'largest gap of a contact point above the slide ('//located//')', status)
+    call file%write_count(g//'highest_contact', flights%highest_contact, '1', which, status)
+    call file%write_scalar(g//'highest_arc_length', flights%highest_arc_length, 'm', &
+                           'where (the contact''s foot point)', status)
     call highest_drop(flights, drop, drop_at)
     call file%write_scalar(g//'drop_height_max', drop, 'm', 'largest drop height of the landings', status)
     call file%write_scalar(g//'drop_height_max_arc_length', drop_at, 'm', 'where', status)
@@ -140,11 +139,12 @@ contains
   end function contact_name
 
   !> Which contact rose highest ('none' if none).
-  pure function highest_name(flights) result(name)
+  pure function highest_name(flights, vehicle) result(name)
     type(ride_flights_t), intent(in) :: flights
+    character(len=*), intent(in), optional :: vehicle(:)
     character(len=:), allocatable :: name
     name = 'none'
-    if (flights%highest_contact > 0) name = trim(contact_names(flights%highest_contact))
+    if (flights%highest_contact > 0) name = contact_name(flights%highest_contact, vehicle)
   end function highest_name
 
   !> The landings as a table (column, landing).
