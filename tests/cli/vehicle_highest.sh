@@ -10,8 +10,9 @@
 #     located 0.15307 m), the rear's;
 #   - it is the same with both output steps to 1e-7 m: records alone would
 #     differ by 3.2e-4 m; another output step changes CVODE's steps and so
-#     the run by its integration error (seen 1.2e-8 m here; the landings
-#     move by 2e-9 s);
+#     the run by its integration error (seen 4.1e-9 m here in Release and
+#     4.5e-9 m in Debug; to 30 s, 1.9e-8 m, the landings moving by up to
+#     6e-9 s);
 #   - with the dense records it lies above their largest open gap by at most
 #     what 0.2 ms of sampling can miss at an apex, g dt^2/8 ~ 5e-8 m (seen
 #     7.7e-9 m);
