@@ -25,7 +25,8 @@ module contact_body_impact
   use kinetostatics_point_impacts, only: resolve_impacts
   implicit none (type, external)
   private
-  public :: impact_body_t, collision_t, collide, collide_at_once, close_at_once, pair_delassus, relative_velocity, apply_impulse
+  public :: impact_body_t, collision_t, collide, collide_at_once, close_at_once, pair_delassus, relative_velocity, &
+    apply_impulse, centre_speed
 
   !> A free rigid body at an impact (world): its pose's origin and centre of
   !> mass, its twist (omega and the origin's velocity), mass and inertia
@@ -47,6 +48,12 @@ module contact_body_impact
   end type collision_t
 
 contains
+
+  !> The speed of the body's centre of mass (m/s; 0 for the ground).
+  pure real(wp) function centre_speed(body) result(speed)
+    type(impact_body_t), intent(in) :: body
+    speed = norm2(body%velocity + cross(body%omega, body%centre - body%origin))
+  end function centre_speed
 
   !> The impact of body_2 on body_1 (the ground: mass 0) at their points
   !> point_1, point_2 with the common normal n (out of body 1), by `law`;

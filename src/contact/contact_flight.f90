@@ -88,7 +88,7 @@ module contact_flight
   use kinetostatics_impact, only: impact_law_t
   use contact_model, only: contact_system_t, contact_model_t
   use contact_open_gaps, only: open_gaps_t
-  use contact_body_impact, only: impact_body_t, collision_t, collide, collide_at_once, close_at_once
+  use contact_body_impact, only: impact_body_t, collision_t, collide, collide_at_once, close_at_once, centre_speed
   implicit none (type, external)
   private
   public :: flight_ode_t, impact_record_t, build_flight, starts_open, restart_flight, check_flight_system, &
@@ -104,6 +104,7 @@ module contact_flight
     real(wp) :: normal_impulse = 0         ! N s, on the body
     real(wp) :: tangential_impulse = 0     ! N s, its size
     real(wp) :: energy_lost = 0            ! J
+    real(wp) :: speed_before(2) = 0        ! m/s, body_1's and body_2's centre of mass before it (0: the ground)
     !> the phase stopped before the impact's velocities were taken: the
     !> record at its time holds the state before it, the next phase's first
     !> record (at the same time) the state after (impact_on_carried)
@@ -361,12 +362,14 @@ contains
     real(wp), allocatable :: rates(:)
     type(collision_t) :: hit
     type(impact_body_t) :: pair(2)
+    real(wp) :: speeds(2)
     integer :: f, b(2), i
     f = self%mechanism%f
     b = [self%gaps%body_1(c), self%gaps%body(c)]
     do i = 1, 2
       if (b(i) > 0) pair(i) = impact_body(self, b(i))
     end do
+    speeds = [centre_speed(pair(1)), centre_speed(pair(2))]
     associate (gap => self%gaps%gap(c), contact => self%system%contacts(c))
       call collide(impact_law_t(restitution=contact%restitution, mu=contact%impact_mu), gap%normal, gap%point_1, &
                    gap%point_2, pair(1), pair(2), contact%close_speed, contact%rolling, hit, status)
@@ -382,7 +385,7 @@ contains
                       normal_speed_after=dot_product(hit%velocity_after, gap%normal), &
                       normal_impulse=dot_product(hit%impulse, gap%normal), &
                       tangential_impulse=norm2(hit%impulse - dot_product(hit%impulse, gap%normal)*gap%normal), &
-                      energy_lost=hit%energy_lost)]
+                      energy_lost=hit%energy_lost, speed_before=speeds)]
       if (hit%closed .and. b(1) > 0) then
         ! two flying bodies (a hit on a body of closed contacts is impact_on_carried's)
         action = max(action, EVENT_STOP)

@@ -29,6 +29,7 @@ contains
   !> close a rolling contact.
   module procedure impact_at_once
     type(impact_body_t) :: bodies(0:size(self%body_frame))
+    real(wp) :: speeds(0:size(self%body_frame))   ! m/s, each body's centre of mass before the impact
     integer, allocatable :: c(:), pair(:, :)
     real(wp), allocatable :: normals(:, :), points_1(:, :), points_2(:, :), rates(:)
     real(wp), dimension(count(lands)) :: impulse, tangential, before, after, lost
@@ -48,6 +49,7 @@ contains
     do b = 1, size(self%body_frame)
       if (any(pair == b)) bodies(b) = impact_body(self, b)
     end do
+    speeds = [(centre_speed(bodies(b)), b = 0, size(self%body_frame))]
     normals = reshape([(self%gaps%gap(c(i))%normal, i = 1, m)], [3, m])
     points_1 = reshape([(self%gaps%gap(c(i))%point_1, i = 1, m)], [3, m])
     points_2 = reshape([(self%gaps%gap(c(i))%point_2, i = 1, m)], [3, m])
@@ -81,7 +83,7 @@ contains
     do i = 1, m
       self%impacts = [self%impacts, impact_record_t(time=t, contact=c(i), body_1=pair(1, i), body_2=pair(2, i), &
                       normal_speed_before=before(i), normal_speed_after=after(i), normal_impulse=impulse(i), &
-                      tangential_impulse=tangential(i), energy_lost=lost(i))]
+                      tangential_impulse=tangential(i), energy_lost=lost(i), speed_before=speeds(pair(:, i)))]
     end do
     if (allocated(stopped)) then
       action = max(action, EVENT_STOP)
@@ -144,6 +146,7 @@ contains
   !> as the ground's do: body_1 carries body_2 from there.
   module procedure impact_on_carried
     type(impact_body_t) :: bodies(0:size(self%body_frame))
+    real(wp) :: speeds(0:size(self%body_frame))   ! m/s, each body's centre of mass before the impact
     integer, allocatable :: c(:), pair(:, :)
     real(wp), allocatable :: normals(:, :), points_1(:, :), points_2(:, :), e(:), close_speed(:)
     real(wp), allocatable, dimension(:) :: impulse, tangential, before, after, lost
@@ -231,6 +234,7 @@ contains
     do k = 1, size(self%body_frame)
       if (involved(k)) bodies(k) = impact_body(self, k)
     end do
+    speeds = [(centre_speed(bodies(k)), k = 0, size(self%body_frame))]
     ! a rolling carrying contact holds its whole relative velocity at zero while it pushes (no cone)
     rolls = self%system%contacts(c)%rolling
     call collide_at_once(e, self%system%contacts(c)%impact_mu, normals, points_1, points_2, pair, bodies, impulse, &
@@ -268,7 +272,8 @@ contains
     do i = 1, m
       self%impacts = [self%impacts, impact_record_t(time=t, contact=c(i), body_1=pair(1, i), body_2=pair(2, i), &
                       normal_speed_before=before(i), normal_speed_after=after(i), normal_impulse=impulse(i), &
-                      tangential_impulse=tangential(i), energy_lost=lost(i), after_switch=.true.)]
+                      tangential_impulse=tangential(i), energy_lost=lost(i), speed_before=speeds(pair(:, i)), &
+                      after_switch=.true.)]
     end do
     action = max(action, EVENT_STOP)
     left_open = landed_names(self, unpack(.not. closing, both, .false.))

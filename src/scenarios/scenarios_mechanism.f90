@@ -226,11 +226,12 @@ contains
         ! the joined series' contacts and bodies are the closed contact's
         call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
                     message, outcome, sys%chart_changes, sys%closed%ode%mechanism, write_status, sys%impacts, losses, &
-                    closed=closed_records(sys, open))
+                    closed=closed_records(sys, open), body_names=description_bodies(sys))
       else
         call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
                     message, outcome, sys%chart_changes, sys%mechanism, write_status, sys%impacts, losses, &
-                    carried_bodies=carried_bodies(sys, open), closed=closed_records(sys, open))
+                    carried_bodies=carried_bodies(sys, open), closed=closed_records(sys, open), &
+                    body_names=description_bodies(sys))
       end if
     class default
       call report(scenario, sys%series, result%stats, result%cpu, units, file%final_path(), run, complete, &
@@ -433,7 +434,7 @@ contains
   !> The printed summary (angles in degrees) and, with --summary-json, the
   !> same numbers as JSON (SI).
   subroutine report(scenario, s, stats, cpu, q_units, path, run, complete, message, outcome, chart_changes, m, &
-                    status, impacts, losses, figures, carried_bodies, closed)
+                    status, impacts, losses, figures, carried_bodies, closed, body_names)
     character(len=*), intent(in) :: scenario, path, message, outcome
     integer, intent(in) :: chart_changes   ! coordinates re-based on a new chart (docs/multibody.md, events)
     type(mechanism_series_t), intent(in) :: s
@@ -449,6 +450,7 @@ contains
     class(run_figures_t), intent(in), optional :: figures
     character(len=*), intent(in), optional :: carried_bodies(:)   ! each contact's body_2 where it closed (else '')
     logical, intent(in), optional :: closed(:, :)   ! (contact, record): closed there (a flight's); absent: always
+    character(len=*), intent(in), optional :: body_names(:)   ! the &body groups' names (the impacts' body places)
     type(summary_t) :: summary
     real(wp) :: e0, scale
     integer :: n, k, i, events
@@ -463,7 +465,7 @@ contains
     if (scenario == 'contact') then
       ! bodies and contacts in engineering terms (docs/contact.md, Outputs)
       if (.not. complete) call summary%add_text('failure', 'stopped because', message)
-      call add_body_terms(summary, s, m)
+      call add_body_terms(summary, s, m, impacts, body_names)
       call add_contact_terms(summary, s, m, carried_bodies, closed)
       if (size(impacts) > 0) then
         ! one impact at several contacts (a landing on a carried body): a row each, at one time
@@ -528,18 +530,22 @@ contains
   !> Per body of the contact scenario: the height of its centre of mass, the
   !> tilt of its symmetry axis from the vertical and its spin about that axis
   !> (a body with two equal principal moments and a third apart; a sphere:
-  !> its angular speed; none: its angular speed), the speed of its centre.
+  !> its angular speed; none: its angular speed), the speed of its centre
+  !> (at the records and, with `body_names`, just before each impact it
+  !> takes part in: its peak, which the record after the impact misses).
   !> An angular speed below report_noise_floor of the body's turning scale
   !> (its largest centre speed over its radius of gyration, plus its largest
   !> angular speed) is rounding noise and prints as 0 (design_ride_evaluation
   !> noise_free: a ball that never spins shows no 5e-15 rad/s).
-  subroutine add_body_terms(summary, s, m)
+  subroutine add_body_terms(summary, s, m, impacts, body_names)
     type(summary_t), intent(inout) :: summary
     type(mechanism_series_t), intent(in) :: s
     type(mechanism_t), intent(in) :: m
+    type(impact_record_t), intent(in) :: impacts(:)
+    character(len=*), intent(in), optional :: body_names(:)
     real(wp) :: up(3), centre(3, s%n), speed(s%n), tilt(s%n), spin(s%n), mass, com(3), inertia(3, 3), gravity(3)
-    real(wp) :: gyration, turning
-    integer :: k, i, e, j, axis
+    real(wp) :: gyration, turning, peak
+    integer :: k, i, e, j, axis, place
     character(len=:), allocatable :: b, axis_name
     do k = 1, s%nb
       b = trim(s%body_names(k))
@@ -569,7 +575,16 @@ contains
                        'm (centre of mass, along the vertical)')
       call summary%add_range(b//'_height', b//' height min / max', minval(matmul(up, centre)), &
                              maxval(matmul(up, centre)), 'm')
-      call summary%add(b//'_speed_max', b//' speed max', maxval(speed), 'm/s', 'm/s (centre of mass)')
+      peak = maxval(speed)
+      place = 0
+      if (present(body_names)) place = findloc([(trim(body_names(j)) == b, j = 1, size(body_names))], .true., dim=1)
+      if (place > 0) then
+        do i = 1, size(impacts)
+          if (impacts(i)%body_1 == place) peak = max(peak, impacts(i)%speed_before(1))
+          if (impacts(i)%body_2 == place) peak = max(peak, impacts(i)%speed_before(2))
+        end do
+      end if
+      call summary%add(b//'_speed_max', b//' speed max', peak, 'm/s', 'm/s (centre of mass)')
       if (axis > 0) then
         axis_name = 'body '//'xyz'(axis:axis)
         call summary%add(b//'_tilt_start', b//' tilt start', tilt(1), 'rad', &
@@ -649,6 +664,18 @@ contains
                        'N'//while)
     end do
   end subroutine add_contact_terms
+
+  !> The names of a flight's &body groups, in their order (the places its
+  !> impacts name).
+  function description_bodies(flight) result(names)
+    type(flight_ode_t), intent(in) :: flight
+    character(len=32), allocatable :: names(:)
+    integer :: k
+    allocate (names(size(flight%system%bodies)))
+    do k = 1, size(names)
+      names(k) = flight%system%bodies(k)%name
+    end do
+  end function description_bodies
 
   !> Each series contact's body_2 (its name) where the contact was closed at
   !> some record (open(c, :) of the description's contact c has a 0), else

@@ -20,6 +20,9 @@
 # - the small ball on the big one's top at every record: centres 0.153 m
 #   apart vertically (1e-12 m); sideways within 1e-6 m (rounding, which
 #   each bounce amplifies: a ball on a ball is unstable; seen 3e-8 m);
+# - the summary's speed max of each ball is its speed just before the first
+#   landing, v_0 (1e-9 relative; seen 2.5e-13): the record before it, up to
+#   an output step early, has 4.4130 m/s, what the summary said before;
 # - run on to 5 s: at the 17th landing (t_17 = 3.962715 s) the floor's
 #   rebound falls below its close_speed (0.1 m/s) and both contacts close
 #   at once (a contact between two bodies closing with another was not
@@ -32,11 +35,12 @@
 #   is an unstable equilibrium, the stack's rounding its start.)
 slidesim=$1
 . "$(dirname "$0")/support/checks.sh"
-(cd "$root" && "$slidesim" -o "$work/pair.h5" inputs/contact/falling_pair.nml >"$work/pair.out" 2>"$work/pair.err"); got=$?
+(cd "$root" && "$slidesim" -o "$work/pair.h5" --summary-json "$work/pair.json" inputs/contact/falling_pair.nml \
+  >"$work/pair.out" 2>"$work/pair.err"); got=$?
 check '[ $got = 0 ]' "exit status $got, expected 0: $(cat "$work/pair.err")"
 if [ "$got" = 0 ]; then
-  out=$("$py" - "$work/pair.h5" <<'PY' 2>&1
-import sys
+  out=$("$py" - "$work/pair.h5" "$work/pair.json" <<'PY' 2>&1
+import json, sys
 import h5py
 import numpy as np
 f = h5py.File(sys.argv[1], "r")
@@ -68,6 +72,11 @@ else:
 pair = k == 2
 if np.count_nonzero(pair) != n or np.max(np.abs(np.concatenate([before[pair], after[pair]]))) > 1e-12:
     bad.append(f"the pair's rows: {np.count_nonzero(pair)}, speeds {before[pair]} -> {after[pair]}")
+values = json.load(open(sys.argv[2]))["values"]
+v_first = np.sqrt(2 * 9.80665 * 1.0)
+for ball in ("big", "small"):
+    if not abs(values[f"{ball}_speed_max"] / v_first - 1) <= 1e-9:
+        bad.append(f"{ball} speed max {values[f'{ball}_speed_max']} m/s, not its first landing's {v_first}")
 d = c["bodies/small/position"][:] - c["bodies/big/position"][:]
 if np.max(np.abs(d[:, 2] - 0.153)) > 1e-12 or np.max(np.abs(d[:, :2])) > 1e-6:
     bad.append(f"the small ball left the big one's top: vertical {np.max(np.abs(d[:, 2] - 0.153)):.3g} m off, "
