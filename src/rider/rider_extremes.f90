@@ -7,8 +7,9 @@
 !> or a widening section not where the angle is largest), the smallest
 !> normal force of each contact, the largest
 !> |tipping lever arm| and, with may_fly, each open contact's highest gap
-!> above the slide (the flight's highest point: on dense output, so it does
-!> not depend on the output step), each with where (the pelvis's arc
+!> above the slide (the flight's highest point: on dense output, so where
+!> the records fall does not limit it; docs/accuracy.md measures what the
+!> output step still moves), each with where (the pelvis's arc
 !> length; for a gap its contact's foot point's) and when.
 !>
 !> Also the two formulas of what a rider feels that they are made of (the
