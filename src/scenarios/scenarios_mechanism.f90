@@ -564,7 +564,8 @@ contains
           centre(:, i) = s%body_r(:, k, i) + matmul(rot, com)
           speed(i) = norm2(s%body_v(:, k, i) + cross(omega, matmul(rot, com)))
           if (axis > 0) then
-            tilt(i) = acos(max(-1.0_wp, min(1.0_wp, dot_product(rot(:, axis), up))))
+            ! atan2, not acos of the dot product: exact near upright (acos loses ~1e-8 rad there)
+            tilt(i) = atan2(norm2(cross(rot(:, axis), up)), dot_product(rot(:, axis), up))
             spin(i) = dot_product(omega, rot(:, axis))
           else
             spin(i) = norm2(omega)

@@ -4,7 +4,8 @@
 # start, the input's), its spin, height, the normal force in N and in the
 # egg's weights, the energy change in J; no coordinate lines
 # ('egg_on_table.phi final 89851 deg' before); a failed run says why it
-# stopped. The JSON numbers against the result file: cli_summary_json.
+# stopped. The JSON numbers against the result file: cli_summary_json. An
+# egg standing 1e-9 rad off upright reports that tilt.
 set -u
 slidesim=$1
 root=$(pwd)
@@ -23,6 +24,22 @@ for line in 'egg tilt start            77.000 deg (symmetry axis body y from the
 done
 checks=$((checks + 1))
 grep -q 'egg_on_table\.\(phi\|u1\|v1\|u2\|v2\)' "$work/egg.out" && fail "egg: coordinates in the summary: $(cat "$work/egg.out")"
+
+# the egg standing on the end of its long axis, tilted 1e-9 rad (angles_deg
+# -90, 0, -180 + 5.7296e-8): the tilt at the start is that angle (1e-6
+# relative; acos of the axis' dot product with the vertical, as before,
+# gave 0: cos(1e-9) rounds to 1)
+sed -e "s|output = .*|output = 'upright.h5'|" -e 's/duration = 10.0/duration = 0.01/' \
+  -e 's/angles_deg = -90.0, 0.0, -103.0/angles_deg = -90.0, 0.0, -179.99999994270422/' \
+  -e 's/angular_velocity = 0.0, 0.0, 150.0/angular_velocity = 0.0, 0.0, 0.0/' \
+  "$root/inputs/contact/egg.nml" > "$work/upright.nml"
+extra_args="--summary-json upright.json" run_case upright 0
+checks=$((checks + 1))
+"$h5python" -c '
+import json, sys
+tilt = json.load(open(sys.argv[1]))["values"]["egg_tilt_start"]
+sys.exit(0 if abs(tilt / 1e-9 - 1) <= 1e-6 else 1)' "$work/upright.json" ||
+  fail "upright: the tilt at the start is not 1e-9 rad: $(grep -o '"egg_tilt_start": [^,]*' "$work/upright.json")"
 
 # a failed run: why it stopped (the bowl's pole at velocity level, which
 # does not change charts; docs/contact.md, "Charts")
